@@ -1,0 +1,45 @@
+#pragma once
+// The engine's driver: refine topology level by level, build one stencil table per step,
+// interpolate any per-vertex data through the tables.
+#include <span>
+#include <string>
+#include <vector>
+
+#include "framework/refine/child_origins.h"
+#include "framework/stencil/stencil_table.h"
+#include "framework/topology/level.h"
+
+namespace subdiv {
+
+class Scheme;
+
+// OpenSubdiv's names (Sdc::Options::VtxBoundaryInterpolation).
+enum class BoundaryInterpolation { None, EdgesOnly, EdgesAndCorners };
+// OpenSubdiv's Sdc::Options::CreasingMethod.
+enum class CreaseMethod { Uniform, Chaikin };
+
+struct RefineOptions {
+  int levels = 1;
+  BoundaryInterpolation boundary = BoundaryInterpolation::EdgesAndCorners;
+  CreaseMethod crease_method = CreaseMethod::Uniform;
+  int threads = 0;  // 0: all cores
+};
+
+struct Hierarchy {
+  std::vector<Level> levels;           // levels[0] is the base mesh
+  std::vector<ChildOrigins> origins;   // origins[i] describes levels[i + 1]
+  std::vector<StencilTable> stencils;  // stencils[i] maps level i values to level i + 1
+};
+
+// Refines topology only (levels and origins), as OpenSubdiv's RefineUniform does.
+Hierarchy refine_topology(const Scheme& scheme, Level base, const RefineOptions& options);
+// Builds the stencil tables for a refined hierarchy.
+void build_stencils(const Scheme& scheme, Hierarchy& hierarchy, const RefineOptions& options);
+// Both of the above.
+Hierarchy refine(const Scheme& scheme, Level base, const RefineOptions& options);
+
+// Values (channels per vertex) of the base level carried to level `to_level`.
+std::vector<double> interpolate(const Hierarchy& hierarchy, int to_level,
+                                std::span<const double> base_values, int channels);
+
+}  // namespace subdiv
