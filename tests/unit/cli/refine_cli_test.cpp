@@ -1,0 +1,108 @@
+#include <doctest/doctest.h>
+
+#include <fstream>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include "support/cli_runner.h"
+
+using namespace subdiv::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+vtkSmartPointer<vtkPolyData> read_vtp(const fs::path& file) {
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  return reader->GetOutput();
+}
+
+// The error cases: non-zero exit, a message with the named place, nothing written.
+void check_refused(const std::string& args, const fs::path& out, const std::string& message) {
+  const CliResult r = run_subdiv(args + " -o " + out.string());
+  CHECK(r.exit_code != 0);
+  CHECK_MESSAGE(r.output.find(message) != std::string::npos, r.output);
+  CHECK_FALSE(fs::exists(out));
+}
+
+}  // namespace
+
+TEST_CASE("refine the bundled cube to .vtp and read it back: counts per level of the quad split") {
+  const auto dir = fresh_dir("cli-vtp");
+  const auto out = dir / "cube.vtp";
+  const CliResult r = run_subdiv("refine " + source_path("examples/meshes/cube.obj") +
+                                 " --scheme catmull-clark --levels 2 -o " + out.string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  const auto poly = read_vtp(out);
+  // Cube: V=8, E=12, F=6. Level 1: 26 vertices, 24 quads, 48 edges; level 2: 98 vertices, 96 quads.
+  CHECK(poly->GetNumberOfPoints() == 98);
+  CHECK(poly->GetNumberOfPolys() == 96);
+  CHECK(poly->GetPointData()->GetArray("origin") != nullptr);
+  CHECK(poly->GetPointData()->GetArray("valence") != nullptr);
+  CHECK(poly->GetCellData()->GetArray("parent_face") != nullptr);
+  // Catmull-Clark shrinks the cube [-0.5, 0.5]^3: every point lies strictly inside it.
+  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i) {
+    double p[3];
+    poly->GetPoint(i, p);
+    for (double c : p) CHECK((c > -0.5 && c < 0.5));
+  }
+}
+
+TEST_CASE("refine to .pvd writes one .vtp per level") {
+  const auto dir = fresh_dir("cli-pvd");
+  const auto out = dir / "oct.pvd";
+  const CliResult r = run_subdiv("refine " + source_path("examples/meshes/octahedron.obj") +
+                                 " --scheme loop --levels 2 -o " + out.string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  CHECK(fs::exists(out));
+  // Triangle split: F = 8, 32, 128.
+  const int faces[] = {8, 32, 128};
+  for (int l = 0; l <= 2; ++l) {
+    const auto level = dir / "oct_levels" / ("level_" + std::to_string(l) + ".vtp");
+    REQUIRE(fs::exists(level));
+    CHECK(read_vtp(level)->GetNumberOfPolys() == faces[l]);
+  }
+}
+
+TEST_CASE("--param and OBJ output") {
+  const auto dir = fresh_dir("cli-obj");
+  const auto out = dir / "oct.obj";
+  const CliResult r = run_subdiv("refine " + source_path("examples/meshes/octahedron.obj") +
+                                 " -s loop -l 1 --param beta=warren -o " + out.string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  std::ifstream in(out);
+  int v = 0, f = 0;
+  for (std::string line; std::getline(in, line);) v += line.rfind("v ", 0) == 0, f += line.rfind("f ", 0) == 0;
+  CHECK(v == 18);
+  CHECK(f == 32);
+}
+
+TEST_CASE("bad input: clear message, non-zero exit, no output file") {
+  const auto dir = fresh_dir("cli-bad");
+  const auto out = dir / "out.vtp";
+  check_refused("refine " + (dir / "missing.obj").string(), out, "missing.obj");
+  check_refused("refine " + source_path("examples/meshes/cube.obj") + " --scheme loop", out, "needs triangles");
+  check_refused("refine " + source_path("examples/meshes/cube.obj") + " --scheme nosuch", out, "unknown scheme 'nosuch'");
+  check_refused("refine " + source_path("examples/meshes/cube.obj") + " --param nope=1", out, "no parameter 'nope'");
+
+  std::ofstream(dir / "nan.obj") << "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n";
+  check_refused("refine " + (dir / "nan.obj").string(), out, "non-finite");
+
+  std::ofstream(dir / "nonmanifold.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\n"
+                                            "f 1 2 3\nf 2 1 4\nf 1 2 5\n";
+  check_refused("refine " + (dir / "nonmanifold.obj").string(), out, "non-manifold edge");
+
+  std::ofstream(dir / "broken.json") << "{ \"name\": \"b\", \"split\": \"quad\" \"rules\": {} }";
+  check_refused("refine " + source_path("examples/meshes/cube.obj") + " --scheme " + (dir / "broken.json").string(),
+                out, "broken.json:1:");
+
+  check_refused("refine " + source_path("examples/meshes/cube.obj") + " --levels 29", out, "fewer levels");
+  const CliResult r = run_subdiv("refine " + source_path("examples/meshes/cube.obj") + " -o " + (dir / "x.xyz").string());
+  CHECK(r.exit_code != 0);
+  CHECK(r.output.find("unknown output format") != std::string::npos);
+}
