@@ -3,6 +3,7 @@
 #include "framework/analysis/curve_integer.h"
 #include "framework/util/error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 
 namespace subdiv {
 
@@ -70,7 +71,11 @@ ContractivitySearch find_contractive_power(const LaurentPolynomial& q, int arity
       break;
     }
     q_L = next_iterate(q, q_L, arity);               // Step 5(c)
-    dilation *= arity;
+    // Past the coefficient count the exact dilation no longer matters (every coefficient
+    // is alone in its class), so saturate instead of overflowing.
+    dilation = dilation > std::numeric_limits<long long>::max() / arity
+                   ? std::numeric_limits<long long>::max()
+                   : dilation * arity;
   }
   return out;                                        // Step 6: not proven up to L
 }

@@ -29,6 +29,10 @@ struct LocalSubdivisionMatrix {
 // example): that set only sees the limit point, while the full neighbourhood also sees the
 // curve on both sides of it, which is what the eigen-analysis of seed 000 §3(c) needs.
 //
+// "Around old point 0" means around parameter t = 0 of the mask's own indexing. For a
+// mask centred on 0 (primal: (1,4,6,4,1)/8, 4-point) that is an old vertex; for a dual
+// mask such as (1,3,3,1)/4 on -1..2 it is the knot between old points -1 and 0.
+//
 // Zero coefficients at the ends of the mask are ignored. The result is empty when no
 // integer lies in the range (a degenerate mask, e.g. one coefficient at index 1, m = 3).
 LocalSubdivisionMatrix local_subdivision_matrix(const CurveMask& mask);

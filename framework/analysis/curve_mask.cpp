@@ -15,9 +15,9 @@ double CurveMask::at(int i) const {
 }
 
 void validate(const CurveMask& mask) {
-  if (mask.arity < 2)
-    throw Error(fmt::format("curve mask: arity {} is invalid; use 2 (binary), 3 (ternary) or more",
-                            mask.arity));
+  if (mask.arity < 2 || mask.arity > kMaxCurveArity)
+    throw Error(fmt::format("curve mask: arity {} is invalid; use 2 (binary), 3 (ternary) or more, "
+                            "at most {}", mask.arity, kMaxCurveArity));
   if (mask.coefficients.empty()) throw Error("curve mask: no coefficients; give at least one");
   for (std::size_t k = 0; k < mask.coefficients.size(); ++k)
     if (!std::isfinite(mask.coefficients[k]))
@@ -32,9 +32,9 @@ namespace {
 
 void check_rules(int arity, const std::vector<int>& starts,
                  const std::vector<std::vector<double>>& weights) {
-  if (arity < 2)
-    throw Error(fmt::format("curve rules: arity {} is invalid; use 2 (binary), 3 (ternary) or more",
-                            arity));
+  if (arity < 2 || arity > kMaxCurveArity)
+    throw Error(fmt::format("curve rules: arity {} is invalid; use 2 (binary), 3 (ternary) or more, "
+                            "at most {}", arity, kMaxCurveArity));
   if (starts.size() != static_cast<std::size_t>(arity) ||
       weights.size() != static_cast<std::size_t>(arity))
     throw Error(fmt::format("curve rules: arity {} needs {} rules (one per new point m*i + r), "

@@ -22,6 +22,10 @@
 
 namespace subdiv {
 
+// Larger arities are refused: no scheme in use comes near, and the analysis allocates
+// per residue class.
+inline constexpr int kMaxCurveArity = 64;
+
 struct CurveMask {
   int arity = 2;                      // m: new points per old point (2 binary, 3 ternary)
   int first = 0;                      // index of coefficients[0]
@@ -37,7 +41,8 @@ struct CurveRule {
   std::vector<double> weights;
 };
 
-// Throws subdiv::Error unless arity >= 2, the mask is non-empty, finite and not all zero.
+// Throws subdiv::Error unless 2 <= arity <= kMaxCurveArity and the mask is non-empty,
+// finite and not all zero.
 void validate(const CurveMask& mask);
 
 // Builds the mask from the rules (see the convention above): rule r has weights[r] on old

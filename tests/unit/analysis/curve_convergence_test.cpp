@@ -130,6 +130,15 @@ TEST_CASE("curve analysis: ternary B-splines of degree d are C^(d-1)") {
   }
 }
 
+TEST_CASE("curve analysis: quaternary B-splines of degree d are C^(d-1)") {
+  for (int d = 1; d <= 3; ++d) {
+    CAPTURE(d);
+    const CurveAnalysis r = analyse_curve(test::mary_bspline_mask(4, d));
+    CHECK(r.necessary_conditions_hold);
+    CHECK(r.smoothness == d - 1);
+  }
+}
+
 TEST_CASE("curve analysis: ternary 4-point scheme is C2 for 1/15 < mu < 1/9 (Hassan et al. 2002)") {
   for (double mu : {0.07, 1.0 / 11, 0.1, 0.11}) {
     CAPTURE(mu);

@@ -86,6 +86,7 @@ TEST_CASE("curve mask: invalid input throws subdiv::Error") {
   CHECK_THROWS_AS(validate(CurveMask{2, 0, {}}), Error);
   CHECK_THROWS_AS(validate(CurveMask{2, 0, {0.0, 0.0}}), Error);
   CHECK_THROWS_AS(validate(CurveMask{0, 0, {1.0}}), Error);
+  CHECK_THROWS_AS(validate(CurveMask{kMaxCurveArity + 1, 0, {1.0}}), Error);
   CHECK_THROWS_WITH_AS(mask_from_rules(3, {0, 0}, {{1.0}, {1.0}}),
                        doctest::Contains("needs 3 rules"), Error);
 }

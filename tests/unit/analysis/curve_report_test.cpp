@@ -73,3 +73,19 @@ TEST_CASE("curve report: JSON carries the verdicts and the numbers") {
   // Round trip through text.
   CHECK(nlohmann::json::parse(j.dump()) == j);
 }
+
+TEST_CASE("curve report: unproven convergence and a degenerate mask") {
+  CurveAnalysisOptions options;
+  options.contractivity.max_power = 1;  // w = 0.3 needs L = 2 (norm 1.1 at L = 1)
+  const std::string s = analyse_curve(test::four_point_mask(0.3), options).summary();
+  CAPTURE(s);
+  CHECK(has_line(s, "C0: difference scheme not contractive up to L=1 (last norm 1.1)"));
+  CHECK(has_line(s, "convergence not proven up to L=1"));
+
+  // One coefficient at index 1, arity 3: no control point has a basis function at t = 0.
+  const CurveAnalysis d = analyse_curve(CurveMask{3, 1, {3.0}});
+  CHECK(d.local_matrix.size() == 0);
+  CHECK(d.eigen.eigenvalues.empty());
+  CHECK_FALSE(d.necessary_conditions_hold);
+  CHECK(has_line(d.summary(), "no invariant neighbourhood (degenerate mask)"));
+}

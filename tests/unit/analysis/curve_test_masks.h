@@ -57,17 +57,19 @@ inline CurveMask ternary_linear_mask() {
   return CurveMask{3, -2, {1.0 / 3, 2.0 / 3, 1.0, 2.0 / 3, 1.0 / 3}};
 }
 
-// Ternary B-spline of degree d: symbol 3 ((1 + z + z^2)/3)^(d+1).
-inline CurveMask ternary_bspline_mask(int degree) {
+// B-spline of degree d and arity m: symbol m ((1 + z + ... + z^{m-1})/m)^(d+1).
+inline CurveMask mary_bspline_mask(int arity, int degree) {
   std::vector<double> c{1.0};
   for (int k = 0; k <= degree; ++k) {
-    std::vector<double> next(c.size() + 2, 0.0);
+    std::vector<double> next(c.size() + static_cast<std::size_t>(arity - 1), 0.0);
     for (std::size_t i = 0; i < c.size(); ++i)
-      for (std::size_t t = 0; t < 3; ++t) next[i + t] += c[i] / 3.0;
+      for (std::size_t t = 0; t < static_cast<std::size_t>(arity); ++t) next[i + t] += c[i] / arity;
     c = next;
   }
-  for (double& x : c) x *= 3.0;
-  return CurveMask{3, -static_cast<int>(c.size() - 1) / 2, c};
+  for (double& x : c) x *= arity;
+  return CurveMask{arity, -static_cast<int>(c.size() - 1) / 2, c};
 }
+
+inline CurveMask ternary_bspline_mask(int degree) { return mary_bspline_mask(3, degree); }
 
 }  // namespace subdiv::test
