@@ -6,17 +6,14 @@
 #include <vector>
 
 #include "framework/refine/child_origins.h"
+#include "framework/refine/child_tags.h"
+#include "framework/rules/feature_context.h"
 #include "framework/stencil/stencil_table.h"
 #include "framework/topology/level.h"
 
 namespace subdiv {
 
 class Scheme;
-
-// OpenSubdiv's names (Sdc::Options::VtxBoundaryInterpolation).
-enum class BoundaryInterpolation { None, EdgesOnly, EdgesAndCorners };
-// OpenSubdiv's Sdc::Options::CreasingMethod.
-enum class CreaseMethod { Uniform, Chaikin };
 
 struct RefineOptions {
   int levels = 1;

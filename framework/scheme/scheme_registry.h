@@ -16,7 +16,7 @@ std::shared_ptr<const Scheme> load_scheme(const std::string& name_or_path,
                                           const ParameterOverrides& overrides = {});
 
 struct SchemeListing {
-  std::string name, description, path;
+  std::string name, description, path, kind;  // kind: "surface" or "curve"
 };
 std::vector<SchemeListing> list_schemes();
 

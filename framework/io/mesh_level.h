@@ -1,0 +1,18 @@
+#pragma once
+// Between the file-level MeshData and the engine's Level: topology plus feature tags.
+#include <string>
+
+#include "framework/io/mesh_data.h"
+#include "framework/topology/level.h"
+
+namespace subdiv {
+
+// Builds the level and applies crease and corner tags. `source` (the file name) prefixes
+// every message; a crease naming a non-existent edge or a negative sharpness is refused.
+Level level_from_mesh(const MeshData& mesh, const std::string& source);
+
+// Positions, faces and the level's feature tags (sharp edges as creases, sharp vertices
+// as corners) as a MeshData for writing.
+MeshData mesh_from_level(const Level& level, std::vector<double> positions);
+
+}  // namespace subdiv

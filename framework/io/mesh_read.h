@@ -1,0 +1,19 @@
+#pragma once
+// Reading a mesh file into MeshData, with the file's vertex and face order kept exactly.
+#include <filesystem>
+
+#include "framework/io/mesh_data.h"
+
+namespace subdiv {
+
+// Reads .obj (with 'l' polylines and 't crease' / 't corner' tags), .off, .ply, .stl,
+// .om, .vtp and .vtk, chosen by the extension (any case). OBJ, OFF and PLY keep
+// non-manifold faces as written so that the engine can name the problem; STL and OM go
+// through OpenMesh, which cannot hold them, and are refused when OpenMesh had to split.
+//
+// Throws subdiv::Error naming the file and, for text formats, the line: missing file,
+// unknown extension, syntax errors, indices out of range, non-finite coordinates, faces
+// with fewer than 3 vertices, invalid crease or corner tags.
+MeshData read_mesh(const std::filesystem::path& file);
+
+}  // namespace subdiv

@@ -1,0 +1,89 @@
+#include "framework/io/mesh_validate.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+[[noreturn]] void fail(std::string_view context, const std::string& problem) {
+  throw Error(fmt::format("{}: {}", context, problem));
+}
+
+// `what` is "face" or "polyline"; min_size is 3 or 2.
+void check_csr(const std::vector<Index>& offsets, const std::vector<Index>& indices,
+               const char* what, int min_size, Index vertex_count, std::string_view context) {
+  if (offsets.empty() || offsets.front() != 0)
+    fail(context, fmt::format("{} offsets must start with 0", what));
+  if (size_t(offsets.back()) != indices.size())
+    fail(context, fmt::format("{} offsets end at {} but there are {} {} indices", what,
+                              offsets.back(), indices.size(), what));
+  for (size_t i = 0; i + 1 < offsets.size(); ++i) {
+    const Index size = offsets[i + 1] - offsets[i];
+    if (offsets[i + 1] > offsets.back())
+      fail(context, fmt::format("{} offsets are not increasing at {} {}", what, what, i));
+    if (size < min_size)
+      fail(context, fmt::format("{} {} has {} vertices; a {} needs at least {}", what, i, size,
+                                what, min_size));
+    for (Index k = offsets[i]; k < offsets[i + 1]; ++k)
+      if (indices[k] < 0 || indices[k] >= vertex_count)
+        fail(context, fmt::format("{} {} refers to vertex {}, but the mesh has {} vertices "
+                                  "(numbered from 0)",
+                                  what, i, indices[k], vertex_count));
+  }
+}
+
+void check_positions(const MeshData& mesh, std::string_view context) {
+  if (mesh.positions.size() % 3 != 0)
+    fail(context, fmt::format("{} coordinates is not a whole number of xyz triples",
+                              mesh.positions.size()));
+  for (size_t i = 0; i < mesh.positions.size(); ++i)
+    if (!std::isfinite(mesh.positions[i]))
+      fail(context, fmt::format("vertex {} has a non-finite coordinate ({}); fix or remove it",
+                                i / 3, mesh.positions[i]));
+}
+
+void check_sharpness(double s, std::string_view context, const std::string& tag) {
+  if (!std::isfinite(s) || s < 0)
+    fail(context, fmt::format("{} has sharpness {}; sharpness must be a finite number >= 0 "
+                              "(0 smooth, 10 or more infinitely sharp)",
+                              tag, s));
+}
+
+void check_tags(const MeshData& mesh, std::string_view context) {
+  const Index n = mesh.vertex_count();
+  auto missing = [n](Index v) { return v < 0 || v >= n; };
+  for (const CreaseTag& c : mesh.creases) {
+    const std::string tag = fmt::format("crease {}-{}", c.v0, c.v1);
+    if (missing(c.v0) || missing(c.v1))
+      fail(context, fmt::format("{} names a vertex that does not exist (the mesh has {} "
+                                "vertices, numbered from 0)",
+                                tag, n));
+    if (c.v0 == c.v1) fail(context, fmt::format("{} joins a vertex to itself", tag));
+    check_sharpness(c.sharpness, context, tag);
+  }
+  for (const CornerTag& c : mesh.corners) {
+    const std::string tag = fmt::format("corner {}", c.v);
+    if (missing(c.v))
+      fail(context, fmt::format("{} names a vertex that does not exist (the mesh has {} "
+                                "vertices, numbered from 0)",
+                                tag, n));
+    check_sharpness(c.sharpness, context, tag);
+  }
+}
+
+}  // namespace
+
+void validate_mesh_data(const MeshData& mesh, std::string_view context) {
+  check_positions(mesh, context);
+  check_csr(mesh.face_offsets, mesh.face_vertices, "face", 3, mesh.vertex_count(), context);
+  check_csr(mesh.line_offsets, mesh.line_vertices, "polyline", 2, mesh.vertex_count(), context);
+  check_tags(mesh, context);
+}
+
+}  // namespace subdiv

@@ -1,0 +1,33 @@
+#include "framework/io/mesh_write.h"
+
+#include <fmt/format.h>
+
+#include "framework/io/formats.h"
+#include "framework/io/mesh_validate.h"
+#include "framework/io/vtk_output.h"
+#include "framework/io/writers.h"
+#include "framework/util/atomic_file.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace fs = std::filesystem;
+
+void write_mesh(const fs::path& file, const MeshData& mesh) {
+  const std::string ext = lowercase_extension(file);
+  if (!is_supported_output(file))
+    throw Error(fmt::format("cannot write '{}': unknown mesh format '{}'; supported: {}",
+                            file.string(), ext.empty() ? "(no extension)" : ext,
+                            supported_output_formats()));
+  OutputLevel level;
+  level.mesh = &mesh;
+  if (ext == ".vtp") return write_vtp(file, level);
+  if (ext == ".pvd") return write_pvd(file, std::span(&level, 1));
+  validate_mesh_data(mesh, fmt::format("cannot write '{}'", file.string()));
+  const auto writer = ext == ".obj"   ? io_detail::write_obj
+                      : ext == ".off" ? io_detail::write_off
+                      : ext == ".ply" ? io_detail::write_ply
+                                      : io_detail::write_stl;
+  write_file_atomically(file, [&](const fs::path& tmp) { writer(tmp, file, mesh); });
+}
+
+}  // namespace subdiv

@@ -1,0 +1,337 @@
+// Wavefront OBJ with Pixar's subdivision tags. Hand-written rather than OpenMesh's reader
+// because that one drops or splits non-manifold faces and may reorder vertices; here every
+// vertex and face reaches the engine exactly as written, so the engine can judge the
+// topology and name the offending element.
+//
+// Read: v, f, l (any of the v, v/vt, v//vn, v/vt/vn forms; negative indices count back from
+// the last vertex), t crease / t corner (vertex indices from 0, as OpenSubdiv writes them).
+// Ignored: vt, vn, groups, materials, smoothing groups and other statements that do not
+// change the surface; t interpolateboundary and the face-varying options (the engine's
+// boundary rules come from the scheme).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "framework/io/readers.h"
+#include "framework/io/text_input.h"
+
+namespace subdiv::io_detail {
+namespace fs = std::filesystem;
+
+namespace {
+
+// A tag line "t name ints/floats/strings args...".
+struct Tag {
+  std::string_view name;
+  std::vector<long long> ints;
+  std::vector<double> floats;
+};
+
+class ObjReader {
+public:
+  explicit ObjReader(const fs::path& file) : file_(file) {}
+  MeshData read();
+
+private:
+  void statement(std::string_view keyword, Tokens& tokens);
+  void vertex(Tokens& tokens);
+  void face(Tokens& tokens);
+  void polyline(Tokens& tokens);
+  void tag(Tokens& tokens);
+  void crease_tag(const Tag& tag);
+  void corner_tag(const Tag& tag);
+  Tag parse_tag(Tokens& tokens);
+  Index vertex_reference(std::string_view token);
+  double sharpness(double s, std::string_view tag);
+  void check_forward_references() const;
+  void check_tag_vertices() const;
+  void check_creases_are_edges() const;
+  [[noreturn]] void fail(std::string_view message) const { fail_at(file_, line_, message); }
+
+  const fs::path& file_;
+  std::size_t line_ = 0;
+  MeshData mesh_;
+  // Positive references past the vertices defined so far: legal only if the vertex
+  // appears further down, which is known only at the end.
+  struct Reference {
+    std::size_t line;
+    long long index;
+  };
+  std::vector<Reference> forward_references_;
+  std::vector<std::size_t> crease_lines_, corner_lines_;  // for messages about tags
+};
+
+MeshData ObjReader::read() {
+  const std::string text = read_whole_file(file_);
+  LineCursor lines(text);
+  std::string_view raw;
+  std::string joined;  // a statement continued over several lines with '\'
+  bool continued = false;
+  while (lines.next(raw)) {
+    if (!continued) line_ = lines.line_number();  // messages name a statement's first line
+    std::string_view line = strip_comment(raw);
+    continued = !line.empty() && line.back() == '\\';
+    if (continued || !joined.empty()) {
+      joined.append(continued ? line.substr(0, line.size() - 1) : line).push_back(' ');
+      if (continued) continue;
+      line = joined;
+    }
+    Tokens tokens(line);
+    std::string_view keyword;
+    if (tokens.next(keyword)) statement(keyword, tokens);
+    joined.clear();
+  }
+  if (!joined.empty()) {  // the last line ended in '\'
+    Tokens tokens(joined);
+    std::string_view keyword;
+    if (tokens.next(keyword)) statement(keyword, tokens);
+  }
+  check_forward_references();
+  check_tag_vertices();
+  check_creases_are_edges();
+  return std::move(mesh_);
+}
+
+void ObjReader::statement(std::string_view keyword, Tokens& tokens) {
+  if (keyword == "v") return vertex(tokens);
+  if (keyword == "f") return face(tokens);
+  if (keyword == "l") return polyline(tokens);
+  if (keyword == "t") return tag(tokens);
+  // Everything else (vt, vn, g, o, s, usemtl, mtllib, free-form geometry) does not
+  // describe the polygonal surface; skipping it is what every OBJ consumer does.
+}
+
+void ObjReader::vertex(Tokens& tokens) {
+  double xyz[3];
+  std::string_view token;
+  int count = 0;
+  while (tokens.next(token)) {
+    double value;
+    if (!parse_double(token, value))
+      fail(fmt::format("expected a number in 'v x y z', got '{}'", token));
+    if (count < 3) xyz[count] = value;
+    ++count;  // a fourth value (w) or colours after xyz are allowed and ignored
+  }
+  if (count < 3) fail(fmt::format("a vertex needs 3 coordinates 'v x y z', this one has {}", count));
+  const Index number = mesh_.vertex_count() + 1;
+  for (double c : xyz)
+    if (!std::isfinite(c))
+      fail(fmt::format("vertex {} has a non-finite coordinate ({}); fix or remove it", number, c));
+  mesh_.positions.insert(mesh_.positions.end(), xyz, xyz + 3);
+}
+
+// "7", "7/2", "7//3", "7/2/3", "-1": OBJ numbers from 1, negatives count back from the
+// last vertex defined so far. Returns the 0-based index.
+Index ObjReader::vertex_reference(std::string_view token) {
+  const std::string_view head = token.substr(0, token.find('/'));
+  long long r;
+  if (!parse_integer(head, r))
+    fail(fmt::format("expected a vertex number like 7, 7/2, 7//3 or 7/2/3, got '{}'", token));
+  const long long known = mesh_.vertex_count();
+  if (r == 0) fail("vertex number 0 is invalid: OBJ numbers vertices from 1");
+  if (r < 0) {
+    if (known + r < 0)
+      fail(fmt::format("relative vertex number {} reaches before the first vertex: only {} "
+                       "vertices are defined above this line",
+                       r, known));
+    return Index(known + r);
+  }
+  if (r > std::numeric_limits<Index>::max())
+    fail(fmt::format("vertex number {} is too large (at most {})", r,
+                     std::numeric_limits<Index>::max()));
+  if (r > known) forward_references_.push_back({line_, r});
+  return Index(r - 1);
+}
+
+void ObjReader::face(Tokens& tokens) {
+  const std::size_t start = mesh_.face_vertices.size();
+  std::string_view token;
+  while (tokens.next(token)) mesh_.face_vertices.push_back(vertex_reference(token));
+  const std::size_t size = mesh_.face_vertices.size() - start;
+  if (size < 3)
+    fail(fmt::format("a face needs at least 3 vertices, this one has {}; remove the line or "
+                     "write an edge as 'l a b'",
+                     size));
+  mesh_.face_offsets.push_back(Index(mesh_.face_vertices.size()));
+}
+
+void ObjReader::polyline(Tokens& tokens) {
+  const std::size_t start = mesh_.line_vertices.size();
+  std::string_view token;
+  while (tokens.next(token)) mesh_.line_vertices.push_back(vertex_reference(token));
+  const std::size_t size = mesh_.line_vertices.size() - start;
+  if (size < 2)
+    fail(fmt::format("a polyline 'l' needs at least 2 vertices, this one has {}", size));
+  mesh_.line_offsets.push_back(Index(mesh_.line_vertices.size()));
+}
+
+// "t name i/f/s ints... floats... strings..." (Pixar's OBJ extension).
+Tag ObjReader::parse_tag(Tokens& tokens) {
+  Tag tag;
+  std::string_view counts;
+  if (!tokens.next(tag.name) || !tokens.next(counts))
+    fail("expected a tag 't name ints/floats/strings values...', e.g. 't crease 2/1/0 0 1 10'");
+  long long n[3] = {0, 0, 0};
+  std::size_t at = 0;
+  for (int k = 0; k < 3; ++k) {
+    const std::size_t slash = k < 2 ? counts.find('/', at) : counts.size();
+    if (slash == std::string_view::npos || !parse_integer(counts.substr(at, slash - at), n[k]) ||
+        n[k] < 0)
+      fail(fmt::format("tag '{}': expected the argument counts as ints/floats/strings, e.g. "
+                       "2/1/0, got '{}'",
+                       tag.name, counts));
+    at = slash + 1;
+  }
+  std::string_view token;
+  for (long long i = 0; i < n[0]; ++i) {
+    long long v;
+    if (!tokens.next(token) || !parse_integer(token, v))
+      fail(fmt::format("tag '{}' announces {} integers ({}) but integer {} is {}", tag.name, n[0],
+                       counts, i + 1, token.empty() ? "missing" : fmt::format("'{}'", token)));
+    tag.ints.push_back(v);
+    token = {};
+  }
+  for (long long i = 0; i < n[1]; ++i) {
+    double v;
+    if (!tokens.next(token) || !parse_double(token, v))
+      fail(fmt::format("tag '{}' announces {} numbers ({}) after its integers but number {} "
+                       "is {}",
+                       tag.name, n[1], counts, i + 1,
+                       token.empty() ? "missing" : fmt::format("'{}'", token)));
+    tag.floats.push_back(v);
+    token = {};
+  }
+  long long strings = 0;
+  while (tokens.next(token)) ++strings;
+  if (strings != n[2])
+    fail(fmt::format("tag '{}' announces {} strings ({}) after its numbers but has {}",
+                     tag.name, n[2], counts, strings));
+  return tag;
+}
+
+void ObjReader::tag(Tokens& tokens) {
+  const Tag tag = parse_tag(tokens);
+  if (tag.name == "crease") return crease_tag(tag);
+  if (tag.name == "corner") return corner_tag(tag);
+  if (tag.name == "interpolateboundary" || tag.name == "facevaryinginterpolateboundary" ||
+      tag.name == "facevaryingpropagatecorners")
+    return;  // options of a scheme, not of the surface: the scheme file decides them
+  fail(fmt::format("tag '{}' is not supported; supported tags are crease and corner "
+                   "(interpolateboundary is accepted and ignored); remove the line",
+                   tag.name));
+}
+
+double ObjReader::sharpness(double s, std::string_view tag) {
+  if (!std::isfinite(s) || s < 0)
+    fail(fmt::format("{} sharpness {} is invalid; use a number >= 0 (0 smooth, 10 or more "
+                     "infinitely sharp)",
+                     tag, s));
+  return s;
+}
+
+// Vertex pairs, as OpenSubdiv reads them: "t crease 2/1/0 a b s" or several pairs with
+// one sharpness for all or one per pair.
+void ObjReader::crease_tag(const Tag& tag) {
+  const std::size_t pairs = tag.ints.size() / 2;
+  if (tag.ints.empty() || tag.ints.size() % 2 != 0)
+    fail(fmt::format("a crease tag needs pairs of vertices, got {} vertices; write one edge "
+                     "per tag: 't crease 2/1/0 a b sharpness'",
+                     tag.ints.size()));
+  if (tag.floats.size() != 1 && tag.floats.size() != pairs)
+    fail(fmt::format("a crease tag with {} edges needs 1 sharpness or {}, got {}", pairs, pairs,
+                     tag.floats.size()));
+  for (std::size_t p = 0; p < pairs; ++p) {
+    const long long a = tag.ints[2 * p], b = tag.ints[2 * p + 1];
+    if (a == b) fail(fmt::format("crease {}-{} joins a vertex to itself", a, b));
+    const double s = sharpness(tag.floats[tag.floats.size() == 1 ? 0 : p], "crease");
+    // Range is checked at the end, when the vertex count is final; clamp to keep the
+    // value representable until then.
+    auto narrow = [](long long v) {
+      return Index(std::clamp<long long>(v, -1, std::numeric_limits<Index>::max()));
+    };
+    mesh_.creases.push_back({narrow(a), narrow(b), s});
+    crease_lines_.push_back(line_);
+  }
+}
+
+void ObjReader::corner_tag(const Tag& tag) {
+  if (tag.ints.empty()) fail("a corner tag needs at least one vertex: 't corner 1/1/0 v sharpness'");
+  if (tag.floats.size() != 1 && tag.floats.size() != tag.ints.size())
+    fail(fmt::format("a corner tag with {} vertices needs 1 sharpness or {}, got {}",
+                     tag.ints.size(), tag.ints.size(), tag.floats.size()));
+  for (std::size_t i = 0; i < tag.ints.size(); ++i) {
+    const double s = sharpness(tag.floats[tag.floats.size() == 1 ? 0 : i], "corner");
+    const long long v = std::clamp<long long>(tag.ints[i], -1, std::numeric_limits<Index>::max());
+    mesh_.corners.push_back({Index(v), s});
+    corner_lines_.push_back(line_);
+  }
+}
+
+void ObjReader::check_forward_references() const {
+  const long long known = mesh_.vertex_count();
+  for (const Reference& r : forward_references_)
+    if (r.index > known)
+      fail_at(file_, r.line,
+              fmt::format("refers to vertex {}, but the file defines only {} vertices "
+                          "(OBJ numbers them from 1)",
+                          r.index, known));
+}
+
+void ObjReader::check_tag_vertices() const {
+  const Index n = mesh_.vertex_count();
+  auto check = [&](Index v, std::size_t line, const char* what) {
+    if (v < 0 || v >= n)
+      fail_at(file_, line,
+              fmt::format("{} tag names vertex {}, which does not exist: the file has {} "
+                          "vertices and tags number them from 0 (0 to {})",
+                          what, v, n, n - 1));
+  };
+  for (std::size_t i = 0; i < mesh_.creases.size(); ++i) {
+    check(mesh_.creases[i].v0, crease_lines_[i], "crease");
+    check(mesh_.creases[i].v1, crease_lines_[i], "crease");
+  }
+  for (std::size_t i = 0; i < mesh_.corners.size(); ++i)
+    check(mesh_.corners[i].v, corner_lines_[i], "corner");
+}
+
+// A crease on a pair of vertices that no face or polyline joins would be silently
+// ignored by any refiner; this is almost always an off-by-one (1-based indices in tags).
+void ObjReader::check_creases_are_edges() const {
+  if (mesh_.creases.empty()) return;
+  auto key = [](Index a, Index b) {
+    return (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b));
+  };
+  std::unordered_map<std::uint64_t, bool> found;
+  for (const CreaseTag& c : mesh_.creases) found[key(c.v0, c.v1)] = false;
+  auto mark = [&](const std::vector<Index>& offsets, const std::vector<Index>& verts, bool closed) {
+    for (std::size_t f = 0; f + 1 < offsets.size(); ++f)
+      for (Index k = offsets[f]; k < offsets[f + 1]; ++k) {
+        const bool last = k + 1 == offsets[f + 1];
+        if (last && !closed) break;
+        const auto it = found.find(key(verts[k], verts[last ? offsets[f] : k + 1]));
+        if (it != found.end()) it->second = true;
+      }
+  };
+  mark(mesh_.face_offsets, mesh_.face_vertices, true);
+  mark(mesh_.line_offsets, mesh_.line_vertices, false);
+  for (std::size_t i = 0; i < mesh_.creases.size(); ++i) {
+    const CreaseTag& c = mesh_.creases[i];
+    if (!found[key(c.v0, c.v1)])
+      fail_at(file_, crease_lines_[i],
+              fmt::format("crease {}-{} is not an edge of any face or polyline; tags number "
+                          "vertices from 0 (OBJ faces from 1), so check for an off-by-one",
+                          c.v0, c.v1));
+  }
+}
+
+}  // namespace
+
+MeshData read_obj(const fs::path& file) { return ObjReader(file).read(); }
+
+}  // namespace subdiv::io_detail

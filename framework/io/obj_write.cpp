@@ -1,0 +1,37 @@
+// OBJ with polylines and Pixar's tags, readable by read_mesh and by OpenSubdiv's tools.
+// Coordinates are printed in their shortest form that reads back to the same double.
+#include "framework/io/writers.h"
+#include "framework/util/buffered_output.h"
+
+namespace subdiv::io_detail {
+
+namespace {
+
+// One CSR list as lines "<keyword> i j k" with OBJ's 1-based numbers.
+void write_lists(BufferedOutput& out, const char* keyword, const std::vector<Index>& offsets,
+                 const std::vector<Index>& indices) {
+  for (std::size_t f = 0; f + 1 < offsets.size(); ++f) {
+    out.print("{}", keyword);
+    for (Index k = offsets[f]; k < offsets[f + 1]; ++k) out.print(" {}", indices[k] + 1);
+    out.print("\n");
+  }
+}
+
+}  // namespace
+
+void write_obj(const path& file, const path& shown, const MeshData& mesh) {
+  BufferedOutput out(file, shown);
+  out.print("# SubdivKit: {} vertices, {} faces, {} polylines\n", mesh.vertex_count(),
+            mesh.face_count(), mesh.line_count());
+  const std::vector<double>& p = mesh.positions;
+  for (std::size_t i = 0; i < p.size(); i += 3) out.print("v {} {} {}\n", p[i], p[i + 1], p[i + 2]);
+  write_lists(out, "f", mesh.face_offsets, mesh.face_vertices);
+  write_lists(out, "l", mesh.line_offsets, mesh.line_vertices);
+  // Tags number vertices from 0, as OpenSubdiv reads them.
+  for (const CreaseTag& c : mesh.creases)
+    out.print("t crease 2/1/0 {} {} {}\n", c.v0, c.v1, c.sharpness);
+  for (const CornerTag& c : mesh.corners) out.print("t corner 1/1/0 {} {}\n", c.v, c.sharpness);
+  out.close();
+}
+
+}  // namespace subdiv::io_detail

@@ -1,0 +1,102 @@
+#include "framework/io/text_input.h"
+
+#include <cerrno>
+#include <charconv>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "framework/util/error.h"
+
+namespace subdiv::io_detail {
+namespace fs = std::filesystem;
+
+namespace {
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+}  // namespace
+
+void require_readable(const fs::path& file) {
+  std::error_code ec;
+  if (!fs::exists(file, ec))
+    throw Error(fmt::format("cannot open '{}': no such file", file.string()));
+  if (fs::is_directory(file, ec))
+    throw Error(fmt::format("cannot open '{}': it is a directory, not a mesh file", file.string()));
+  std::ifstream probe(file, std::ios::binary);
+  if (!probe)
+    throw Error(fmt::format("cannot open '{}': {}", file.string(), std::strerror(errno)));
+}
+
+std::string read_whole_file(const fs::path& file) {
+  require_readable(file);
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (in.bad()) throw Error(fmt::format("cannot read '{}': {}", file.string(), std::strerror(errno)));
+  return std::move(bytes).str();
+}
+
+bool LineCursor::next(std::string_view& line) {
+  if (rest_.empty()) return false;
+  const size_t end = rest_.find('\n');
+  line = rest_.substr(0, end);
+  rest_ = end == std::string_view::npos ? std::string_view() : rest_.substr(end + 1);
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  ++line_;
+  return true;
+}
+
+bool Tokens::next(std::string_view& token) {
+  size_t begin = 0;
+  while (begin < rest_.size() && is_space(rest_[begin])) ++begin;
+  if (begin == rest_.size()) return false;
+  size_t end = begin;
+  while (end < rest_.size() && !is_space(rest_[end])) ++end;
+  token = rest_.substr(begin, end - begin);
+  rest_ = rest_.substr(end);
+  return true;
+}
+
+bool Tokens::empty() { return trim(rest_).empty(); }
+
+bool parse_double(std::string_view token, double& value) {
+  // from_chars rejects a leading '+', which some exporters write.
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  const char* end = token.data() + token.size();
+  const auto [ptr, ec] = std::from_chars(token.data(), end, value);
+  if (ptr != end || token.empty()) return false;
+  if (ec == std::errc::result_out_of_range) {
+    // Overflow becomes +-inf (reported later as non-finite), underflow becomes 0 or a
+    // denormal: strtod gives exactly that, and this rare path may copy.
+    value = std::strtod(std::string(token).c_str(), nullptr);
+    return true;
+  }
+  return ec == std::errc();
+}
+
+bool parse_integer(std::string_view token, long long& value) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  const char* end = token.data() + token.size();
+  const auto [ptr, ec] = std::from_chars(token.data(), end, value);
+  return ec == std::errc() && ptr == end && !token.empty();
+}
+
+std::string_view strip_comment(std::string_view line) {
+  return trim(line.substr(0, line.find('#')));
+}
+
+void fail_at(const fs::path& file, size_t line, std::string_view message) {
+  throw Error(fmt::format("{}:{}: {}", file.string(), line, message));
+}
+
+}  // namespace subdiv::io_detail

@@ -1,0 +1,46 @@
+#pragma once
+// ParaView output: one mesh level as a .vtp file, and a series of levels as a .pvd
+// collection whose time steps are the levels, so that ParaView's time slider steps through
+// the refinement.
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "framework/io/mesh_data.h"
+
+namespace subdiv {
+
+// A named array of `components` values per tuple. Integer arrays are stored as
+// vtkIntArray (values must be whole numbers that fit an int), others as vtkDoubleArray.
+struct DataArray {
+  std::string name;
+  int components = 1;
+  std::vector<double> values;
+  bool integer = false;
+};
+
+// One level to write. point_data has one tuple per vertex. cell_data has either one tuple
+// per face, and line cells get -1 in every component, or one tuple per cell in the order
+// faces, polylines, crease edges.
+struct OutputLevel {
+  const MeshData* mesh = nullptr;
+  int level = 0;
+  std::vector<DataArray> point_data;
+  std::vector<DataArray> cell_data;
+};
+
+// Writes faces as polygons, polylines and crease edges as line cells, in binary appended
+// zlib-compressed VTK XML. Added arrays: cell "sharpness" (a crease's sharpness, 0 on
+// other cells), cell "cell_kind" (0 face, 1 polyline, 2 crease edge), point
+// "corner_sharpness" (0 where untagged), field "level" and "TimeValue" (the level).
+// Throws subdiv::Error, before creating any file, for an invalid mesh, arrays of the wrong
+// length, duplicate or reserved array names; atomic like write_mesh.
+void write_vtp(const std::filesystem::path& file, const OutputLevel& level);
+
+// Writes <dir>/<stem>_levels/level_<k>.vtp for every level k and then <dir>/<stem>.pvd
+// listing them with timestep k. All level files are complete before the .pvd appears; if
+// anything fails, no new file is left behind. Level numbers must be distinct.
+void write_pvd(const std::filesystem::path& pvd, std::span<const OutputLevel> levels);
+
+}  // namespace subdiv

@@ -1,0 +1,65 @@
+#pragma once
+// A geometry rule: the new point of one parent element (face, edge, vertex) as a weighted
+// sum over neighbourhood roles. A term names a role, optionally a kind of new point of the
+// same step (then each point of the role stands for that new point, expanded by the
+// engine), and a weight formula evaluated for every point j of the role.
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace subdiv {
+
+enum class Element : std::uint8_t { Face = 0, Edge = 1, Vertex = 2 };
+constexpr int kElementCount = 3;
+
+// Vertex contexts follow DeRose et al. 1998 / OpenSubdiv: by the number of sharp incident
+// edges (0 smooth, 1 dart, 2 crease, more: corner) or a sharp vertex (corner). An edge is
+// Smooth or Crease (sharp or boundary). Faces are always Smooth.
+enum class Context : std::uint8_t { Smooth = 0, Dart = 1, Crease = 2, Corner = 3 };
+constexpr int kContextCount = 4;
+
+enum class Role : std::uint8_t {
+  Self,      // vertex rule: the vertex itself
+  Ring,      // vertex rule: the other ends of the ring edges, CCW (j = 0..n-1)
+  Faces,     // vertex or edge rule: incident faces, CCW (used with new face points)
+  Edges,     // vertex or face rule: incident edges in ring/face order (new edge points)
+  Ends,      // edge rule: the two end points
+  Opposite,  // edge rule: in each incident triangle, the vertex off the edge
+  Vertices,  // face rule: the face's vertices in order
+  Curve,     // crease and boundary rules: points along the feature curve (from the curve scheme)
+};
+
+enum class NewPoint : std::uint8_t { None, Face, Edge, Vertex };
+
+struct Term {
+  Role role = Role::Self;
+  NewPoint new_point = NewPoint::None;
+  std::string weight;  // formula text
+  std::string where;   // place in the scheme file, for messages
+  // Role::Curve only: fixed weights on points at offsets curve_start, curve_start + 1, ...
+  // along the feature curve (vertex rules: 0 is the vertex; edge rules: 0 and 1 are the ends).
+  int curve_start = 0;
+  std::vector<std::string> curve_weights;
+};
+
+struct Rule {
+  std::vector<Term> terms;
+  std::string where;
+};
+
+// Rules by element and context; an empty optional means "use the engine default"
+// (dart: the smooth rule; crease: the curve scheme's rule; corner: the vertex stays).
+using RuleTable = std::array<std::array<std::optional<Rule>, kContextCount>, kElementCount>;
+
+std::string_view element_name(Element e);
+std::string_view context_name(Context c);
+std::string_view role_name(Role r);
+std::optional<Role> role_from_name(std::string_view name);
+std::optional<Context> context_from_name(std::string_view name);
+std::optional<NewPoint> new_point_from_name(std::string_view name);
+// Which roles a rule for this element may use.
+bool role_allowed(Element element, Role role);
+
+}  // namespace subdiv

@@ -1,0 +1,76 @@
+#include "framework/scheme/refiner.h"
+
+#include <fmt/format.h>
+
+#include "framework/rules/stencil_builder.h"
+#include "framework/rules/weight_tables.h"
+#include "framework/scheme/scheme.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+void check_face_sizes(const Scheme& scheme, const Level& base) {
+  const int needed = scheme.required_face_size ? scheme.required_face_size
+                     : scheme.split == SplitKind::Triangle ? 3 : 0;
+  if (!needed) return;
+  for (Index f = 0; f < base.face_count(); ++f)
+    if (base.face_size(f) != needed)
+      throw Error(fmt::format("{}: scheme '{}' needs {}, but face {} of the mesh has {} vertices; "
+                              "{} the mesh first or choose a scheme for any polygons (e.g. "
+                              "catmull-clark)",
+                              scheme.path, scheme.name, needed == 3 ? "triangles" : "quads", f,
+                              base.face_size(f), needed == 3 ? "triangulate" : "quadrangulate"));
+}
+
+int max_valence(const Level& level) {
+  int m = 0;
+  for (Index v = 0; v < level.vertex_count; ++v) m = std::max(m, level.valence(v));
+  return m;
+}
+
+FeatureOptions feature_options(const RefineOptions& options) {
+  return {options.boundary, options.crease_method};
+}
+
+}  // namespace
+
+Hierarchy refine_topology(const Scheme& scheme, Level base, const RefineOptions& options) {
+  if (options.levels < 0) throw Error(fmt::format("--levels must be 0 or more, not {}", options.levels));
+  check_face_sizes(scheme, base);
+  Hierarchy h;
+  h.levels.push_back(std::move(base));
+  for (int l = 0; l < options.levels; ++l) {
+    SplitResult step = split(scheme.split, h.levels.back());
+    propagate_tags(h.levels.back(), step, options.crease_method);
+    h.levels.push_back(std::move(step.child));
+    h.origins.push_back(std::move(step.origins));
+  }
+  return h;
+}
+
+void build_stencils(const Scheme& scheme, Hierarchy& h, const RefineOptions& options) {
+  h.stencils.clear();
+  for (size_t l = 0; l + 1 < h.levels.size(); ++l) {
+    const Level& parent = h.levels[l];
+    const WeightTables tables = prepare_weight_tables(scheme, max_valence(parent), parent.max_face_size(), int(l));
+    const FeatureContexts features = classify_features(parent, feature_options(options));
+    h.stencils.push_back(build_step_stencils(parent, primal_layout(parent, scheme.split), tables, features, scheme.path));
+  }
+}
+
+Hierarchy refine(const Scheme& scheme, Level base, const RefineOptions& options) {
+  Hierarchy h = refine_topology(scheme, std::move(base), options);
+  build_stencils(scheme, h, options);
+  return h;
+}
+
+std::vector<double> interpolate(const Hierarchy& h, int to_level, std::span<const double> base_values, int channels) {
+  if (to_level < 0 || to_level > int(h.stencils.size()))
+    throw Error(fmt::format("interpolate: level {} is not in 0..{}", to_level, h.stencils.size()));
+  std::vector<double> values(base_values.begin(), base_values.end());
+  for (int l = 0; l < to_level; ++l) values = h.stencils[l].apply(values, channels);
+  return values;
+}
+
+}  // namespace subdiv

@@ -1,0 +1,355 @@
+#include "framework/scheme/scheme_loader.h"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <set>
+
+#include "framework/scheme/json_source.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Messages name the file and the JSON path of the offending value.
+struct Place {
+  std::string file;
+  std::string path;
+  Place operator/(const std::string& key) const { return {file, path.empty() ? key : path + "." + key}; }
+  Place operator[](size_t i) const { return {file, fmt::format("{}[{}]", path, i)}; }
+  std::string str() const { return path.empty() ? file : file + ": " + path; }
+};
+
+[[noreturn]] void fail(const Place& at, const std::string& message) {
+  throw Error(fmt::format("{}: {}", at.str(), message));
+}
+
+const Json& require(const Json& object, const char* key, const Place& at) {
+  if (!object.is_object()) fail(at, "expected a JSON object");
+  auto it = object.find(key);
+  if (it == object.end()) fail(at, fmt::format("missing \"{}\"", key));
+  return *it;
+}
+
+std::string as_string(const Json& value, const Place& at) {
+  if (!value.is_string()) fail(at, fmt::format("expected a string, found {}", value.dump()));
+  return value.get<std::string>();
+}
+
+// Weights may be written as numbers or as formula text.
+std::string as_formula(const Json& value, const Place& at) {
+  if (value.is_number()) return fmt::format("{:.17g}", value.get<double>());
+  return as_string(value, at);
+}
+
+std::string optional_string(const Json& object, const char* key) {
+  auto it = object.find(key);
+  return it != object.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+void check_keys(const Json& object, const std::set<std::string>& allowed, const Place& at) {
+  for (auto it = object.begin(); it != object.end(); ++it)
+    if (!allowed.count(it.key())) {
+      std::string list;
+      for (auto& k : allowed) list += (list.empty() ? "" : ", ") + k;
+      fail(at, fmt::format("unknown key \"{}\"; the keys here are: {}", it.key(), list));
+    }
+}
+
+double parse_number(const std::string& text, const Place& at) {
+  try {
+    size_t used = 0;
+    double v = std::stod(text, &used);
+    if (used == text.size() && std::isfinite(v)) return v;
+  } catch (...) {
+  }
+  fail(at, fmt::format("'{}' is not a number", text));
+}
+
+ParameterSpec parse_parameter(const std::string& name, const Json& spec, const Place& at) {
+  check_keys(spec, {"default", "min", "max", "choices", "description"}, at);
+  ParameterSpec p;
+  p.name = name;
+  p.description = optional_string(spec, "description");
+  const Json& def = require(spec, "default", at);
+  if (spec.contains("choices")) {
+    p.is_choice = true;
+    for (const auto& c : spec["choices"]) p.choices.push_back(as_string(c, at / "choices"));
+    p.choice = as_string(def, at / "default");
+    return p;
+  }
+  if (!def.is_number()) fail(at / "default", "a numeric parameter needs a number as default");
+  p.value = def.get<double>();
+  if (spec.contains("min")) p.has_minimum = true, p.minimum = spec["min"].get<double>();
+  if (spec.contains("max")) p.has_maximum = true, p.maximum = spec["max"].get<double>();
+  return p;
+}
+
+void apply_override(ParameterSpec& p, const std::string& text, const std::string& file) {
+  const Place at{file, "parameters." + p.name};
+  if (p.is_choice) {
+    if (std::find(p.choices.begin(), p.choices.end(), text) == p.choices.end()) {
+      std::string list;
+      for (auto& c : p.choices) list += (list.empty() ? "" : ", ") + c;
+      fail(at, fmt::format("'{}' is not a choice of {}; choose one of: {}", text, p.name, list));
+    }
+    p.choice = text;
+    return;
+  }
+  p.value = parse_number(text, at);
+}
+
+void check_range(const ParameterSpec& p, const std::string& file) {
+  if (p.is_choice) {
+    if (std::find(p.choices.begin(), p.choices.end(), p.choice) == p.choices.end())
+      fail({file, "parameters." + p.name}, fmt::format("default '{}' is not among the choices", p.choice));
+    return;
+  }
+  if ((p.has_minimum && p.value < p.minimum) || (p.has_maximum && p.value > p.maximum))
+    fail({file, "parameters." + p.name},
+         fmt::format("{} = {} is outside its range [{}, {}]", p.name, p.value,
+                     p.has_minimum ? fmt::format("{}", p.minimum) : "-inf",
+                     p.has_maximum ? fmt::format("{}", p.maximum) : "inf"));
+}
+
+std::vector<ParameterSpec> parse_parameters(const Json& root, const Place& at,
+                                            const ParameterOverrides& overrides,
+                                            std::set<std::string>* used_overrides) {
+  std::vector<ParameterSpec> params;
+  if (!root.contains("parameters")) return params;
+  const Json& list = root["parameters"];
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    ParameterSpec p = parse_parameter(it.key(), it.value(), at / "parameters" / it.key());
+    if (auto o = overrides.find(p.name); o != overrides.end()) {
+      apply_override(p, o->second, at.file);
+      if (used_overrides) used_overrides->insert(p.name);
+    }
+    check_range(p, at.file);
+    params.push_back(std::move(p));
+  }
+  return params;
+}
+
+// Definitions: "name": "formula", or "name": {"select": param, "cases": {choice: formula}}.
+std::vector<NamedFormula> parse_definitions(const Json& root, const Place& at,
+                                            const std::vector<ParameterSpec>& params) {
+  std::vector<NamedFormula> defs;
+  if (!root.contains("definitions")) return defs;
+  const Json& list = root["definitions"];
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const Place here = at / "definitions" / it.key();
+    if (!it.value().is_object()) {
+      defs.push_back({it.key(), as_formula(it.value(), here), here.str()});
+      continue;
+    }
+    check_keys(it.value(), {"select", "cases"}, here);
+    const std::string select = as_string(require(it.value(), "select", here), here / "select");
+    auto p = std::find_if(params.begin(), params.end(),
+                          [&](const ParameterSpec& s) { return s.name == select && s.is_choice; });
+    if (p == params.end()) fail(here / "select", fmt::format("'{}' is not a choice parameter", select));
+    const Json& cases = require(it.value(), "cases", here);
+    for (const auto& choice : p->choices)
+      if (!cases.contains(choice)) fail(here / "cases", fmt::format("no case for choice '{}'", choice));
+    const Place chosen = here / "cases" / p->choice;
+    defs.push_back({it.key(), as_formula(cases[p->choice], chosen), chosen.str()});
+  }
+  return defs;
+}
+
+Term parse_term(const Json& j, Element element, const Place& at) {
+  check_keys(j, {"at", "sum", "new", "w"}, at);
+  Term t;
+  t.where = at.str();
+  const bool single = j.contains("at"), multi = j.contains("sum");
+  if (single == multi) fail(at, "a term needs exactly one of \"at\" (one point) or \"sum\" (all points of a role)");
+  const std::string name = as_string(single ? j["at"] : j["sum"], at / (single ? "at" : "sum"));
+  auto role = role_from_name(name);
+  if (!role || *role == Role::Curve)
+    fail(at, fmt::format("unknown role '{}'; {} rules may use: {}", name, element_name(element),
+                         element == Element::Vertex ? "self, ring, faces, edges"
+                         : element == Element::Edge ? "ends, faces, opposite"
+                                                    : "vertices, edges"));
+  if (!role_allowed(element, *role))
+    fail(at, fmt::format("role '{}' does not exist around a {}", name, element_name(element)));
+  if (single && *role != Role::Self) fail(at, fmt::format("role '{}' has several points: write \"sum\": \"{}\"", name, name));
+  if (multi && *role == Role::Self) fail(at, "role 'self' is one point: write \"at\": \"self\"");
+  t.role = *role;
+  if (j.contains("new")) {
+    const std::string np = as_string(j["new"], at / "new");
+    auto kind = new_point_from_name(np);
+    if (!kind) fail(at / "new", fmt::format("unknown new point '{}'; use face, edge or vertex", np));
+    t.new_point = *kind;
+  }
+  const bool needs_new = *role == Role::Faces || (*role == Role::Edges);
+  if (needs_new && t.new_point == NewPoint::None)
+    fail(at, fmt::format("role '{}' names {}, not points: add \"new\": \"{}\" to use their new points", name,
+                         name, *role == Role::Faces ? "face" : "edge"));
+  if (*role == Role::Faces && t.new_point != NewPoint::Face) fail(at / "new", "faces can only give new face points");
+  if (*role == Role::Edges && t.new_point != NewPoint::Edge) fail(at / "new", "edges can only give new edge points");
+  if (!needs_new && t.new_point != NewPoint::None && t.new_point != NewPoint::Vertex)
+    fail(at / "new", fmt::format("role '{}' holds vertices: the only new points it can give are new vertex points", name));
+  t.weight = as_formula(require(j, "w", at), at / "w");
+  return t;
+}
+
+Rule parse_rule(const Json& j, Element element, const Place& at) {
+  if (!j.is_array()) fail(at, "a rule is an array of terms");
+  Rule rule;
+  rule.where = at.str();
+  for (size_t i = 0; i < j.size(); ++i) rule.terms.push_back(parse_term(j[i], element, at[i]));
+  return rule;
+}
+
+RuleTable parse_rules(const Json& root, const Place& at) {
+  RuleTable table;
+  const Json& rules = require(root, "rules", at);
+  check_keys(rules, {"face", "edge", "vertex"}, at / "rules");
+  for (int e = 0; e < kElementCount; ++e) {
+    const std::string name(element_name(Element(e)));
+    if (!rules.contains(name)) continue;
+    const Json& r = rules[name];
+    const Place here = at / "rules" / name;
+    if (r.is_array()) {
+      table[e][int(Context::Smooth)] = parse_rule(r, Element(e), here);
+      continue;
+    }
+    if (!r.is_object()) fail(here, "expected an array of terms, or an object of contexts (smooth, dart, crease, corner)");
+    for (auto it = r.begin(); it != r.end(); ++it) {
+      auto ctx = context_from_name(it.key());
+      if (!ctx) fail(here, fmt::format("unknown context '{}'; use smooth, dart, crease or corner", it.key()));
+      table[e][int(*ctx)] = parse_rule(it.value(), Element(e), here / it.key());
+    }
+    if (!table[e][int(Context::Smooth)]) fail(here, "the smooth rule is required");
+  }
+  return table;
+}
+
+int parse_face_requirement(const Json& root, const Place& at) {
+  const std::string faces = root.contains("faces") ? as_string(root["faces"], at / "faces") : "any";
+  if (faces == "any") return 0;
+  if (faces == "triangles") return 3;
+  if (faces == "quads") return 4;
+  fail(at / "faces", fmt::format("'{}' is not one of: any, triangles, quads", faces));
+}
+
+// Compiles every formula once so syntax errors surface at load time with their place.
+void check_formulas(const Scheme& s) {
+  FormulaSet formulas(s.parameter_values(), s.definitions);
+  for (const auto& by_context : s.rules)
+    for (const auto& rule : by_context)
+      if (rule)
+        for (const auto& term : rule->terms) formulas.add(term.weight, term.where);
+}
+
+void check_unknown_overrides(const ParameterOverrides& overrides, const std::set<std::string>& used,
+                             const std::string& file) {
+  for (const auto& [name, value] : overrides)
+    if (!used.count(name))
+      throw Error(fmt::format("{}: the scheme has no parameter '{}' (from --param {}={}); "
+                              "`subdiv schemes` lists each scheme's parameters",
+                              file, name, name, value));
+}
+
+// Primal binary splits keep old vertices and add one point per edge, so the curve must
+// have a vertex rule centred on an old point and an edge rule centred on a segment.
+void check_curve_is_primal(const CurveScheme& c, const Place& at) {
+  const bool centred_vertex = c.arity == 2 && 2 * -c.starts[0] + 1 == int(c.weights[0].size());
+  const bool centred_edge = c.arity == 2 && 2 * -c.starts[1] + 2 == int(c.weights[1].size());
+  if (!centred_vertex || !centred_edge)
+    fail(at, fmt::format("curve scheme '{}' ({}) is not a primal binary scheme (rule 0 centred on an "
+                         "old point, rule 1 on a segment), so it cannot give the boundary rules of a "
+                         "primal split", c.name, c.path));
+}
+
+}  // namespace
+
+std::map<std::string, double> Scheme::parameter_values() const {
+  std::map<std::string, double> values;
+  for (const auto& p : parameters)
+    if (!p.is_choice) values[p.name] = p.value;
+  return values;
+}
+
+std::string scheme_file_kind(const std::filesystem::path& path) {
+  const Json root = read_json_file(path);
+  if (!root.is_object()) throw Error(fmt::format("{}: a scheme file holds a JSON object", path.string()));
+  std::string kind = root.contains("kind") && root["kind"].is_string() ? root["kind"].get<std::string>() : "surface";
+  if (kind != "surface" && kind != "curve")
+    throw Error(fmt::format("{}: kind: '{}' is not one of: surface, curve", path.string(), kind));
+  return kind;
+}
+
+std::shared_ptr<const CurveScheme> load_curve_scheme(const std::filesystem::path& path,
+                                                     const ParameterOverrides& overrides,
+                                                     std::set<std::string>* used) {
+  const Json root = read_json_file(path);
+  const Place at{path.string(), ""};
+  check_keys(root, {"$schema", "name", "kind", "description", "reference", "arity", "parameters", "definitions", "rules"}, at);
+  auto curve = std::make_shared<CurveScheme>();
+  curve->path = path.string();
+  curve->name = as_string(require(root, "name", at), at / "name");
+  curve->description = optional_string(root, "description");
+  curve->arity = root.value("arity", 2);
+  if (curve->arity != 2 && curve->arity != 3) fail(at / "arity", "arity must be 2 or 3");
+  const auto params = parse_parameters(root, at, overrides, used);
+  for (const auto& p : params)
+    if (!p.is_choice) curve->parameters[p.name] = p.value;
+  curve->definitions = parse_definitions(root, at, params);
+  const Json& rules = require(root, "rules", at);
+  if (!rules.is_array() || int(rules.size()) != curve->arity)
+    fail(at / "rules", fmt::format("a curve of arity {} needs {} rules, one per new point of each old point", curve->arity, curve->arity));
+  FormulaSet formulas(curve->parameters, curve->definitions);
+  for (size_t r = 0; r < rules.size(); ++r) {
+    const Place here = (at / "rules")[r];
+    check_keys(rules[r], {"start", "w"}, here);
+    curve->starts.push_back(require(rules[r], "start", here).get<int>());
+    std::vector<std::string> weights;
+    const Json& w = require(rules[r], "w", here);
+    if (!w.is_array() || w.empty()) fail(here / "w", "expected a non-empty array of weights");
+    for (size_t t = 0; t < w.size(); ++t) {
+      weights.push_back(as_formula(w[t], (here / "w")[t]));
+      formulas.add(weights.back(), ((here / "w")[t]).str());
+    }
+    curve->weights.push_back(std::move(weights));
+  }
+  return curve;
+}
+
+std::shared_ptr<const Scheme> load_surface_scheme(const std::filesystem::path& path,
+                                                  const ParameterOverrides& overrides,
+                                                  const CurveResolver& resolve_curve) {
+  const Json root = read_json_file(path);
+  const Place at{path.string(), ""};
+  check_keys(root, {"$schema", "name", "kind", "description", "reference", "split", "faces", "curve",
+                    "parameters", "definitions", "rules"}, at);
+  auto s = std::make_shared<Scheme>();
+  s->path = path.string();
+  s->name = as_string(require(root, "name", at), at / "name");
+  s->description = optional_string(root, "description");
+  try {
+    s->split = split_kind_from_name(as_string(require(root, "split", at), at / "split"));
+  } catch (const Error& e) {
+    fail(at / "split", e.what());
+  }
+  s->required_face_size = parse_face_requirement(root, at);
+  std::set<std::string> used;
+  s->parameters = parse_parameters(root, at, overrides, &used);
+  s->definitions = parse_definitions(root, at, s->parameters);
+  s->rules = parse_rules(root, at);
+  if (s->split == SplitKind::Triangle && s->rules[int(Element::Face)][int(Context::Smooth)])
+    fail(at / "rules" / "face", "the triangle split makes no face points; remove the face rule");
+  if (root.contains("curve")) {
+    // Overrides the surface scheme does not take go to its curve scheme (e.g. a tension).
+    ParameterOverrides curve_overrides;
+    for (const auto& [name, value] : overrides)
+      if (!used.count(name)) curve_overrides[name] = value;
+    s->curve = resolve_curve(as_string(root["curve"], at / "curve"), path, curve_overrides, &used);
+    check_curve_is_primal(*s->curve, at / "curve");
+  }
+  check_unknown_overrides(overrides, used, path.string());
+  check_formulas(*s);
+  return s;
+}
+
+}  // namespace subdiv

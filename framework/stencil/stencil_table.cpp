@@ -1,0 +1,97 @@
+#include "framework/stencil/stencil_table.h"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+// Rows per parallel task: large enough to amortise scheduling, small enough to balance.
+constexpr Index kGrain = 2048;
+
+template <int Channels>
+void apply_rows(const StencilTable& t, const double* src, double* dst, Index begin, Index end) {
+  for (Index r = begin; r < end; ++r) {
+    double sum[Channels] = {};
+    for (Index i = t.offsets[r]; i < t.offsets[r + 1]; ++i) {
+      const double w = t.weights[i];
+      const double* s = src + size_t(t.indices[i]) * Channels;
+      for (int c = 0; c < Channels; ++c) sum[c] += w * s[c];
+    }
+    std::copy(sum, sum + Channels, dst + size_t(r) * Channels);
+  }
+}
+
+void apply_rows_any(const StencilTable& t, const double* src, double* dst, int channels,
+                    Index begin, Index end) {
+  for (Index r = begin; r < end; ++r) {
+    double* out = dst + size_t(r) * channels;
+    std::fill(out, out + channels, 0.0);
+    for (Index i = t.offsets[r]; i < t.offsets[r + 1]; ++i) {
+      const double w = t.weights[i];
+      const double* s = src + size_t(t.indices[i]) * channels;
+      for (int c = 0; c < channels; ++c) out[c] += w * s[c];
+    }
+  }
+}
+
+}  // namespace
+
+void StencilTable::apply(std::span<const double> src, std::span<double> dst, int channels) const {
+  if (src.size() < size_t(source_count) * channels || dst.size() < size_t(row_count()) * channels)
+    throw Error(fmt::format("stencil apply: buffers of {} and {} values are too small for {} "
+                            "sources and {} rows of {} channels",
+                            src.size(), dst.size(), source_count, row_count(), channels));
+  tbb::parallel_for(tbb::blocked_range<Index>(0, row_count(), kGrain), [&](const auto& range) {
+    switch (channels) {
+      case 1: apply_rows<1>(*this, src.data(), dst.data(), range.begin(), range.end()); break;
+      case 3: apply_rows<3>(*this, src.data(), dst.data(), range.begin(), range.end()); break;
+      default: apply_rows_any(*this, src.data(), dst.data(), channels, range.begin(), range.end());
+    }
+  });
+}
+
+std::vector<double> StencilTable::apply(std::span<const double> src, int channels) const {
+  std::vector<double> dst(size_t(row_count()) * channels);
+  apply(src, dst, channels);
+  return dst;
+}
+
+StencilTable compose(const StencilTable& first, const StencilTable& second) {
+  if (second.source_count != first.row_count())
+    throw Error(fmt::format("cannot compose stencil tables: the second reads {} values but the "
+                            "first makes {}", second.source_count, first.row_count()));
+  StencilTable out;
+  out.source_count = first.source_count;
+  out.offsets.assign(second.row_count() + 1, 0);
+  // Dense scratch row with a touched list keeps each row's merge linear in its size.
+  std::vector<double> acc(first.source_count, 0.0);
+  std::vector<char> seen(first.source_count, 0);
+  std::vector<Index> touched;
+  for (Index r = 0; r < second.row_count(); ++r) {
+    touched.clear();
+    for (Index i = second.offsets[r]; i < second.offsets[r + 1]; ++i) {
+      const Index mid = second.indices[i];
+      const double w = second.weights[i];
+      for (Index j = first.offsets[mid]; j < first.offsets[mid + 1]; ++j) {
+        const Index s = first.indices[j];
+        if (!seen[s]) seen[s] = 1, touched.push_back(s);
+        acc[s] += w * first.weights[j];
+      }
+    }
+    std::sort(touched.begin(), touched.end());
+    for (Index s : touched) {
+      out.indices.push_back(s);
+      out.weights.push_back(acc[s]);
+      acc[s] = 0.0, seen[s] = 0;
+    }
+    out.offsets[r + 1] = Index(out.indices.size());
+  }
+  return out;
+}
+
+}  // namespace subdiv

@@ -1,0 +1,39 @@
+#pragma once
+// Writing files so that a reader never sees half of one: every file is written under a
+// temporary name in its target directory and renamed into place only when complete.
+// rename() within one directory is atomic on POSIX file systems, so a target is either
+// the old file or the complete new one, never a mix.
+#include <filesystem>
+#include <functional>
+#include <utility>
+#include <vector>
+
+namespace subdiv {
+
+// Writes one file: `writer` fills the temporary path it is given; on success the temporary
+// replaces `target`, on any exception it is removed and the exception propagates.
+// Throws subdiv::Error if the target's directory does not exist or the rename fails.
+void write_file_atomically(const std::filesystem::path& target,
+                           const std::function<void(const std::filesystem::path& tmp)>& writer);
+
+// Several files that must appear together (a .pvd and its level files). stage() hands
+// out temporary paths; commit() renames them all into place in the order staged. If the
+// object is destroyed without commit(), every temporary is removed.
+class StagedFiles {
+public:
+  StagedFiles() = default;
+  StagedFiles(const StagedFiles&) = delete;
+  StagedFiles& operator=(const StagedFiles&) = delete;
+  ~StagedFiles();
+
+  // A fresh temporary path next to `target`. Throws subdiv::Error if the directory of
+  // `target` does not exist.
+  std::filesystem::path stage(const std::filesystem::path& target);
+  void commit();
+  void discard() noexcept;
+
+private:
+  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> staged_;  // tmp, target
+};
+
+}  // namespace subdiv

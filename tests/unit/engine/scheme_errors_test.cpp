@@ -1,0 +1,72 @@
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "framework/util/error.h"
+#include "support/refine_helpers.h"
+
+using namespace subdiv;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path write_scheme(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::temp_directory_path() / "subdivkit-scheme-tests";
+  fs::create_directories(dir);
+  const fs::path file = dir / (name + ".json");
+  std::ofstream(file) << text;
+  return file;
+}
+
+std::string quad_scheme(const std::string& vertex_rule) {
+  return R"({"name": "t", "split": "quad", "curve": "cubic-bspline", "rules": {
+    "face": [{"sum": "vertices", "w": "1/k"}],
+    "edge": [{"sum": "ends", "w": "1/4"}, {"sum": "faces", "new": "face", "w": "1/4"}],
+    "vertex": )" + vertex_rule + "}}";
+}
+
+}  // namespace
+
+TEST_CASE("malformed JSON names the file, line and column") {
+  const auto f = write_scheme("malformed", "{\n  \"name\": \"x\",\n  \"split\": \"quad\"\n  \"rules\": {}\n}");
+  CHECK_THROWS_WITH_AS(load_scheme(f.string()), doctest::Contains("malformed.json:4:"), Error);
+}
+
+TEST_CASE("unknown role names the place and lists the roles") {
+  const auto f = write_scheme("role", quad_scheme(R"J([{"sum": "neighbours", "w": "1"}])J"));
+  CHECK_THROWS_WITH_AS(load_scheme(f.string()), doctest::Contains("rules.vertex[0]: unknown role 'neighbours'"), Error);
+}
+
+TEST_CASE("a formula that does not parse names its place") {
+  const auto f = write_scheme("formula", quad_scheme(R"J([{"at": "self", "w": "(n-2/n"}])J"));
+  CHECK_THROWS_WITH_AS(load_scheme(f.string()), doctest::Contains("rules.vertex[0]: formula '(n-2/n' does not parse"), Error);
+}
+
+TEST_CASE("weights that do not sum to one are refused when refining, with the valence") {
+  const auto f = write_scheme("affine", quad_scheme(R"J([{"at": "self", "w": "(n-2)/n"}, {"sum": "ring", "w": "1/n^2"}])J"));
+  auto scheme = load_scheme(f.string());
+  CHECK_THROWS_WITH_AS(refine(*scheme, test::cube().level(), {}), doctest::Contains("summing to"), Error);
+}
+
+TEST_CASE("a formula giving NaN is refused") {
+  const auto f = write_scheme("nan", quad_scheme(R"J([{"at": "self", "w": "sqrt(-n)"}, {"sum": "ring", "w": "0"}])J"));
+  auto scheme = load_scheme(f.string());
+  CHECK_THROWS_AS(refine(*scheme, test::cube().level(), {}), Error);
+}
+
+TEST_CASE("parameters: unknown names, bad choices and out-of-range values are refused") {
+  CHECK_THROWS_WITH_AS(load_scheme("loop", {{"gamma", "1"}}), doctest::Contains("no parameter 'gamma'"), Error);
+  CHECK_THROWS_WITH_AS(load_scheme("loop", {{"beta", "stam"}}), doctest::Contains("choose one of: loop, warren"), Error);
+  const auto f = write_scheme("range", R"({"name": "r", "split": "quad", "curve": "cubic-bspline",
+    "parameters": {"a": {"default": 0.5, "min": 0, "max": 1}},
+    "rules": {"face": [{"sum": "vertices", "w": "1/k"}], "edge": [{"sum": "ends", "w": "1/2"}],
+              "vertex": [{"at": "self", "w": "a"}, {"sum": "ring", "w": "(1-a)/n"}]}})");
+  CHECK_NOTHROW(load_scheme(f.string(), {{"a", "0.25"}}));
+  CHECK_THROWS_WITH_AS(load_scheme(f.string(), {{"a", "2"}}), doctest::Contains("outside its range [0, 1]"), Error);
+}
+
+TEST_CASE("unknown scheme names list the known ones; missing files are named") {
+  CHECK_THROWS_WITH_AS(load_scheme("catmul-clark"), doctest::Contains("catmull-clark"), Error);
+  CHECK_THROWS_WITH_AS(load_scheme("/nonexistent/x.json"), doctest::Contains("does not exist"), Error);
+}

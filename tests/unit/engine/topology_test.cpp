@@ -1,0 +1,123 @@
+#include <doctest/doctest.h>
+
+#include "framework/util/error.h"
+#include "support/test_meshes.h"
+
+using namespace subdiv;
+
+namespace {
+
+// Ring face i lies between ring edges i and i+1: both must be edges of the face.
+bool face_has_edge(const Level& L, Index f, Index e) {
+  for (Index x : L.face_edge_list(f))
+    if (x == e) return true;
+  return false;
+}
+
+void check_rings_consistent(const Level& L) {
+  for (Index v = 0; v < L.vertex_count; ++v) {
+    const auto edges = L.ring_edges(v);
+    const auto faces = L.ring_faces(v);
+    REQUIRE(edges.size() == faces.size() + (L.on_boundary(v) ? 1 : 0));
+    for (size_t i = 0; i < faces.size(); ++i) {
+      CHECK(face_has_edge(L, faces[i], edges[i]));
+      CHECK(face_has_edge(L, faces[i], edges[(i + 1) % edges.size()]));
+      // CCW: face i runs out of v along ring edge i.
+      const auto verts = L.face(faces[i]);
+      const int c = L.vertex_face_corner[L.vertex_face_offsets[v] + i];
+      CHECK(verts[c] == v);
+      CHECK(L.face_edge_list(faces[i])[c] == edges[i]);
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("cube: counts, Euler characteristic, closed rings") {
+  const Level L = test::cube().level();
+  CHECK(L.vertex_count == 8);
+  CHECK(L.edge_count() == 12);
+  CHECK(L.face_count() == 6);
+  CHECK(euler_characteristic(L) == 2);
+  for (Index v = 0; v < 8; ++v) {
+    CHECK(L.valence(v) == 3);
+    CHECK_FALSE(L.on_boundary(v));
+  }
+  for (Index e = 0; e < 12; ++e) CHECK_FALSE(L.edge_on_boundary(e));
+  check_rings_consistent(L);
+}
+
+TEST_CASE("open grid: boundary edges and vertices, boundary rings start and end on the boundary") {
+  const Level L = test::grid(3, 2).level();
+  CHECK(L.vertex_count == 12);
+  CHECK(L.face_count() == 6);
+  CHECK(L.edge_count() == 17);
+  CHECK(euler_characteristic(L) == 1);
+  int boundary_edges = 0;
+  for (Index e = 0; e < L.edge_count(); ++e) boundary_edges += L.edge_on_boundary(e);
+  CHECK(boundary_edges == 10);
+  CHECK(L.on_boundary(0));
+  CHECK(L.valence(0) == 2);
+  CHECK(L.incident_face_count(0) == 1);
+  CHECK_FALSE(L.on_boundary(5));  // (1,1) is interior
+  CHECK(L.valence(5) == 4);
+  for (Index v = 0; v < L.vertex_count; ++v)
+    if (L.on_boundary(v)) {
+      CHECK(L.edge_on_boundary(L.ring_edges(v).front()));
+      CHECK(L.edge_on_boundary(L.ring_edges(v).back()));
+    }
+  check_rings_consistent(L);
+}
+
+TEST_CASE("torus and pyramid: Euler characteristic 0 and 2") {
+  CHECK(euler_characteristic(test::torus(6, 4).level()) == 0);
+  CHECK(euler_characteristic(test::torus(5, 7, true).level()) == 0);
+  const Level P = test::pyramid().level();
+  CHECK(euler_characteristic(P) == 2);
+  check_rings_consistent(P);
+}
+
+TEST_CASE("two components, one with a hole") {
+  test::Mesh m = test::grid(3, 3);
+  // Remove the middle face (index 4) to make a hole, and add a separate triangle.
+  m.corners.erase(m.corners.begin() + 16, m.corners.begin() + 20);
+  m.offsets.erase(m.offsets.begin() + 5);
+  for (size_t i = 5; i < m.offsets.size(); ++i) m.offsets[i] -= 4;
+  m.add_vertex(10, 0, 0), m.add_vertex(11, 0, 0), m.add_vertex(10, 1, 0);
+  m.add_face({16, 17, 18});
+  const Level L = m.level();
+  CHECK(L.face_count() == 9);
+  CHECK(euler_characteristic(L) == 0 + 1);  // annulus (0) plus a disk (1)
+  check_rings_consistent(L);
+}
+
+TEST_CASE("non-manifold input is refused with the offending element named") {
+  SUBCASE("three faces on one edge") {
+    test::Mesh m;
+    for (int i = 0; i < 5; ++i) m.add_vertex(i, i * i, 0);
+    m.add_face({0, 1, 2}), m.add_face({1, 0, 3}), m.add_face({0, 1, 4});
+    CHECK_THROWS_WITH_AS(m.level(), doctest::Contains("non-manifold edge (0, 1)"), Error);
+  }
+  SUBCASE("bowtie vertex") {
+    test::Mesh m;
+    for (int i = 0; i < 5; ++i) m.add_vertex(i, i * i, 0);
+    m.add_face({0, 1, 2}), m.add_face({0, 3, 4});
+    CHECK_THROWS_WITH_AS(m.level(), doctest::Contains("non-manifold vertex 0"), Error);
+  }
+  SUBCASE("inconsistent orientation") {
+    test::Mesh m;
+    for (int i = 0; i < 4; ++i) m.add_vertex(i, i * i, 0);
+    m.add_face({0, 1, 2}), m.add_face({0, 1, 3});
+    CHECK_THROWS_WITH_AS(m.level(), doctest::Contains("inconsistently oriented"), Error);
+  }
+  SUBCASE("degenerate face and bad index") {
+    test::Mesh m;
+    for (int i = 0; i < 3; ++i) m.add_vertex(i, 0, 0);
+    m.add_face({0, 1, 1});
+    CHECK_THROWS_WITH_AS(m.level(), doctest::Contains("degenerate"), Error);
+    test::Mesh b;
+    for (int i = 0; i < 3; ++i) b.add_vertex(i, 0, 0);
+    b.add_face({0, 1, 7});
+    CHECK_THROWS_WITH_AS(b.level(), doctest::Contains("vertex 7"), Error);
+  }
+}

@@ -1,0 +1,75 @@
+#include "level_output.h"
+
+#include <fmt/format.h>
+
+#include "framework/io/mesh_level.h"
+#include "framework/io/mesh_write.h"
+#include "framework/io/vtk_output.h"
+#include "framework/util/error.h"
+
+namespace subdiv::cli {
+namespace {
+
+std::string extension_of(const std::filesystem::path& p) {
+  std::string ext = p.extension().string();
+  for (char& c : ext) c = char(std::tolower(c));
+  return ext;
+}
+
+// Per-point: how each vertex was made and its valence; per-cell: the face it lies in,
+// one level up and in the base mesh.
+OutputLevel describe_level(const Hierarchy& h, int l, const MeshData& mesh, std::vector<double>& base_face) {
+  const Level& L = h.levels[l];
+  OutputLevel out;
+  out.mesh = &mesh;
+  out.level = l;
+  DataArray origin{"origin", 1, std::vector<double>(L.vertex_count, 0.0), true};
+  DataArray valence{"valence", 1, std::vector<double>(L.vertex_count), true};
+  DataArray level{"level", 1, std::vector<double>(L.vertex_count, double(l)), true};
+  for (Index v = 0; v < L.vertex_count; ++v) valence.values[v] = L.valence(v);
+  DataArray parent{"parent_face", 1, std::vector<double>(L.face_count(), -1.0), true};
+  std::vector<double> next_base(L.face_count());
+  for (Index f = 0; f < L.face_count(); ++f) next_base[f] = f;
+  if (l > 0) {
+    const ChildOrigins& o = h.origins[l - 1];
+    for (Index v = 0; v < L.vertex_count; ++v) origin.values[v] = double(int(o.kind[v]));
+    for (Index f = 0; f < L.face_count(); ++f) {
+      parent.values[f] = o.parent_face[f];
+      next_base[f] = base_face[o.parent_face[f]];
+    }
+  }
+  base_face = std::move(next_base);
+  out.point_data = {std::move(origin), std::move(valence), std::move(level)};
+  out.cell_data = {std::move(parent), DataArray{"base_face", 1, base_face, true}};
+  return out;
+}
+
+}  // namespace
+
+void check_output_path(const std::filesystem::path& out) {
+  const std::string ext = extension_of(out);
+  if (ext == ".vtp" || ext == ".pvd" || ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl") return;
+  throw Error(fmt::format("cannot write '{}': unknown output format '{}'; use .vtp or .pvd (ParaView), "
+                          "or .obj, .off, .ply, .stl", out.string(), ext));
+}
+
+void write_levels(const std::filesystem::path& out, const Hierarchy& h,
+                  const std::vector<std::vector<double>>& positions) {
+  check_output_path(out);
+  const std::string ext = extension_of(out);
+  const int finest = int(h.levels.size()) - 1;
+  std::vector<MeshData> meshes;
+  meshes.reserve(h.levels.size());
+  for (int l = 0; l <= finest; ++l) meshes.push_back(mesh_from_level(h.levels[l], positions[l]));
+  if (ext != ".vtp" && ext != ".pvd") {
+    write_mesh(out, meshes[finest]);
+    return;
+  }
+  std::vector<OutputLevel> levels;
+  std::vector<double> base_face;
+  for (int l = 0; l <= finest; ++l) levels.push_back(describe_level(h, l, meshes[l], base_face));
+  if (ext == ".vtp") write_vtp(out, levels.back());
+  else write_pvd(out, levels);
+}
+
+}  // namespace subdiv::cli

@@ -1,0 +1,28 @@
+// The `subdiv` command line: refine meshes with any scheme, list schemes.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "framework/util/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"subdiv - define, run and analyse subdivision schemes (SubdivKit " SUBDIV_CLI_VERSION ")"};
+  app.set_version_flag("--version", "SubdivKit " SUBDIV_CLI_VERSION);
+  app.require_subcommand(1);
+  app.footer("Run `subdiv COMMAND --help` for each command's options.\n"
+             "Schemes are JSON files; see docs/scheme-format.md.");
+  subdiv::cli::add_refine_command(app);
+  subdiv::cli::add_schemes_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const subdiv::Error& e) {
+    fmt::print(stderr, "subdiv: error: {}\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "subdiv: internal error: {}\n", e.what());
+    return 2;
+  }
+  return 0;
+}

@@ -1,0 +1,50 @@
+// `subdiv schemes`: the built-in and user schemes with their descriptions and parameters.
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/util/error.h"
+
+namespace subdiv::cli {
+namespace {
+
+void print_parameters(const std::string& name) {
+  try {
+    const auto scheme = load_scheme(name);
+    for (const auto& p : scheme->parameters) {
+      if (p.is_choice) {
+        std::string list;
+        for (auto& c : p.choices) list += (list.empty() ? "" : "|") + c;
+        fmt::print("      --param {}={}  (default {}) {}\n", p.name, list, p.choice, p.description);
+      } else {
+        fmt::print("      --param {}=<number>  (default {}) {}\n", p.name, p.value, p.description);
+      }
+    }
+  } catch (const Error& e) {
+    fmt::print("      (cannot load: {})\n", e.what());
+  }
+}
+
+void run(bool verbose) {
+  for (const char* kind : {"surface", "curve"}) {
+    fmt::print("{} schemes:\n", kind);
+    for (const auto& s : list_schemes()) {
+      if (s.kind != kind) continue;
+      fmt::print("  {:<16} {}\n", s.name, s.description);
+      if (verbose) fmt::print("      file: {}\n", s.path);
+      if (s.kind == std::string("surface")) print_parameters(s.name);
+    }
+  }
+}
+
+}  // namespace
+
+void add_schemes_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("schemes", "List the schemes: built-in ones and those on SUBDIV_SCHEME_PATH");
+  auto verbose = std::make_shared<bool>(false);
+  cmd->add_flag("-v,--verbose", *verbose, "Also show where each scheme file is");
+  cmd->callback([verbose] { run(*verbose); });
+}
+
+}  // namespace subdiv::cli
