@@ -1,0 +1,133 @@
+// The OpenSubdiv side of subdiv-bench: Far's uniform refinement and primvar interpolation.
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#include <opensubdiv/far/topologyRefinerFactory.h>
+
+#include "bench_common.h"
+
+namespace subdiv_bench {
+namespace {
+
+using namespace OpenSubdiv;
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+// The vertex type PrimvarRefiner interpolates: xyz in doubles, laid out like our arrays,
+// so the base positions are used in place.
+struct Xyz {
+  double p[3];
+  void Clear(void* = nullptr) { p[0] = p[1] = p[2] = 0; }
+  void AddWithWeight(const Xyz& s, double w) {
+    p[0] += w * s.p[0];
+    p[1] += w * s.p[1];
+    p[2] += w * s.p[2];
+  }
+};
+static_assert(sizeof(Xyz) == 3 * sizeof(double));
+
+// Keys of level `l + 1` from keys of level `l`. OpenSubdiv numbers the child vertices of a
+// uniform refinement (UniformOptions::orderVerticesFromFacesFirst = false, the default)
+// as children of vertices [0, V), then of faces [V, V + F) -- none for Loop --, then of
+// edges, each block in parent index order (Vtr::Refinement::populateParentChildIndices).
+std::vector<std::uint64_t> child_keys(const Far::TopologyLevel& parent, int child_vertex_count,
+                                      bool face_children, const std::vector<std::uint64_t>& keys) {
+  const int V = parent.GetNumVertices(), E = parent.GetNumEdges(), F = parent.GetNumFaces();
+  const int FC = face_children ? F : 0;
+  if (child_vertex_count != V + FC + E)
+    throw std::runtime_error("OpenSubdiv child vertex count is not V + F + E as expected");
+  std::vector<std::uint64_t> out(static_cast<size_t>(child_vertex_count));
+  for (int v = 0; v < V; ++v) out[v] = key_of_vertex_child(keys[v]);
+  for (int f = 0; f < FC; ++f) {
+    auto fv = parent.GetFaceVertices(f);
+    std::uint64_t sum = 0;
+    for (int i = 0; i < fv.size(); ++i) sum += key_face_term(keys[fv[i]]);
+    out[V + f] = key_of_face_child(sum, fv.size());
+  }
+  for (int e = 0; e < E; ++e) {
+    auto ev = parent.GetEdgeVertices(e);
+    out[V + FC + e] = key_of_edge_child(keys[ev[0]], keys[ev[1]]);
+  }
+  return out;
+}
+
+}  // namespace
+
+WorkerReport run_osd(const Job& job, const Mesh& mesh) {
+  const bool loop = job.scheme == "loop";
+  if (!loop && job.scheme != "catmull-clark") throw std::runtime_error("OpenSubdiv side: unknown scheme " + job.scheme);
+
+  Far::TopologyDescriptor desc;
+  desc.numVertices = mesh.vertex_count;
+  desc.numFaces = mesh.face_count();
+  desc.numVertsPerFace = mesh.face_sizes.data();
+  desc.vertIndicesPerFace = mesh.face_vertices.data();
+
+  Sdc::Options sdc;
+  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+  sdc.SetCreasingMethod(Sdc::Options::CREASE_UNIFORM);
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  const Factory::Options factory_options(loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, sdc);
+
+  WorkerReport report;
+  bool have_best = false;
+  for (int rep = 0; rep < job.repeat; ++rep) {
+    Timings t;
+    auto t0 = Clock::now();
+    std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(desc, factory_options));
+    if (!refiner) throw std::runtime_error("OpenSubdiv could not build the base level");
+    t.setup_ms = ms_since(t0);
+
+    // SubdivKit builds full topology (edges, rings) at every level including the last,
+    // so OpenSubdiv is asked for the same.
+    Far::TopologyRefiner::UniformOptions uniform(job.level);
+    uniform.fullTopologyInLastLevel = true;
+    t0 = Clock::now();
+    refiner->RefineUniform(uniform);
+    t.topo_ms = ms_since(t0);
+
+    // Level by level, keeping only the current and next positions (as the SubdivKit side).
+    t0 = Clock::now();
+    Far::PrimvarRefinerReal<double> primvar(*refiner);
+    std::vector<Xyz> src, dst;
+    const Xyz* base = reinterpret_cast<const Xyz*>(mesh.xyz.data());
+    for (int l = 1; l <= job.level; ++l) {
+      dst.resize(size_t(refiner->GetLevel(l).GetNumVertices()));
+      if (l == 1)
+        primvar.Interpolate(1, base, dst);
+      else
+        primvar.Interpolate(l, src, dst);
+      std::swap(src, dst);
+      std::vector<Xyz>().swap(dst);
+    }
+    t.apply_ms = ms_since(t0);
+
+    if (!have_best || t.total_ms() < report.best.total_ms()) report.best = t;
+    have_best = true;
+    if (rep + 1 < job.repeat) continue;
+
+    // Last repetition: take the memory peak before anything else is allocated, then
+    // collect what the parent needs for the correctness check.
+    report.peak_rss_bytes = peak_rss_bytes();
+    const auto& last = refiner->GetLevel(job.level);
+    report.vertices = last.GetNumVertices();
+    report.faces = last.GetNumFaces();
+    report.digest = digest_of({&src[0].p[0], 3 * src.size()});
+    report.check_modulus = check_modulus_for(report.vertices, job.check_max);
+    if (report.check_modulus == 0) continue;
+    std::vector<std::uint64_t> keys(size_t(mesh.vertex_count));
+    for (std::int32_t v = 0; v < mesh.vertex_count; ++v) keys[v] = key_base(v);
+    for (int l = 0; l < job.level; ++l)
+      keys = child_keys(refiner->GetLevel(l), refiner->GetLevel(l + 1).GetNumVertices(), !loop, keys);
+    for (size_t i = 0; i < keys.size(); ++i)
+      if (keys[i] % report.check_modulus == 0)
+        report.records.push_back({keys[i], {src[i].p[0], src[i].p[1], src[i].p[2]}});
+  }
+  return report;
+}
+
+}  // namespace subdiv_bench

@@ -1,0 +1,103 @@
+// The SubdivKit side of subdiv-bench: the engine's topology refinement, stencil tables
+// and stencil application, timed separately.
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+
+#include <oneapi/tbb/global_control.h>
+
+#include "bench_common.h"
+#include "framework/scheme/refiner.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/topology/level.h"
+
+namespace subdiv_bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+// Keys of level i + 1 from keys of level i, through the engine's recorded origins.
+std::vector<std::uint64_t> child_keys(const subdiv::Level& parent, const subdiv::ChildOrigins& origins,
+                                      const std::vector<std::uint64_t>& keys) {
+  std::vector<std::uint64_t> out(origins.kind.size());
+  for (size_t c = 0; c < out.size(); ++c) {
+    const subdiv::Index p = origins.parent[c];
+    switch (origins.kind[c]) {
+      case subdiv::OriginKind::Vertex: out[c] = key_of_vertex_child(keys[p]); break;
+      case subdiv::OriginKind::Edge:
+        out[c] = key_of_edge_child(keys[parent.edge_vertices[2 * p]], keys[parent.edge_vertices[2 * p + 1]]);
+        break;
+      case subdiv::OriginKind::Face: {
+        std::uint64_t sum = 0;
+        for (subdiv::Index v : parent.face(p)) sum += key_face_term(keys[v]);
+        out[c] = key_of_face_child(sum, parent.face_size(p));
+        break;
+      }
+      default: throw std::runtime_error("SubdivKit side: unexpected child origin kind for " + std::string("CC/Loop"));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+WorkerReport run_subdivkit(const Job& job, const Mesh& mesh) {
+  // One TBB arena of the requested size for the whole worker, on top of the engine's own
+  // `threads` option.
+  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, size_t(std::max(1, job.threads)));
+  const auto scheme = subdiv::load_scheme(job.scheme);
+  subdiv::RefineOptions options;
+  options.levels = job.level;
+  options.threads = job.threads;
+
+  WorkerReport report;
+  bool have_best = false;
+  for (int rep = 0; rep < job.repeat; ++rep) {
+    Timings t;
+    auto t0 = Clock::now();
+    subdiv::Level base = subdiv::build_level(mesh.vertex_count, mesh.face_offsets, mesh.face_vertices);
+    t.setup_ms = ms_since(t0);
+
+    t0 = Clock::now();
+    subdiv::Hierarchy h = subdiv::refine_topology(*scheme, std::move(base), options);
+    t.topo_ms = ms_since(t0);
+
+    t0 = Clock::now();
+    subdiv::build_stencils(*scheme, h, options);
+    t.stencil_ms = ms_since(t0);
+
+    // Level by level, keeping only the current and next positions (as the OSD side).
+    t0 = Clock::now();
+    std::vector<double> src, dst;
+    for (int l = 0; l < job.level; ++l) {
+      const auto& table = h.stencils[size_t(l)];
+      dst.resize(3 * size_t(table.row_count()));
+      table.apply(l == 0 ? std::span<const double>(mesh.xyz) : std::span<const double>(src), dst, 3);
+      std::swap(src, dst);
+      std::vector<double>().swap(dst);
+    }
+    t.apply_ms = ms_since(t0);
+
+    if (!have_best || t.total_ms() < report.best.total_ms()) report.best = t;
+    have_best = true;
+    if (rep + 1 < job.repeat) continue;
+
+    report.peak_rss_bytes = peak_rss_bytes();
+    const auto& last = h.levels[size_t(job.level)];
+    report.vertices = last.vertex_count;
+    report.faces = last.face_count();
+    report.digest = digest_of(src);
+    report.check_modulus = check_modulus_for(report.vertices, job.check_max);
+    if (report.check_modulus == 0) continue;
+    std::vector<std::uint64_t> keys(size_t(mesh.vertex_count));
+    for (std::int32_t v = 0; v < mesh.vertex_count; ++v) keys[v] = key_base(v);
+    for (int l = 0; l < job.level; ++l) keys = child_keys(h.levels[size_t(l)], h.origins[size_t(l)], keys);
+    for (size_t i = 0; i < keys.size(); ++i)
+      if (keys[i] % report.check_modulus == 0)
+        report.records.push_back({keys[i], {src[3 * i], src[3 * i + 1], src[3 * i + 2]}});
+  }
+  return report;
+}
+
+}  // namespace subdiv_bench
