@@ -77,14 +77,5 @@ SplitResult split_triangle(const Level& parent) {
   return {build_level(V + E, offsets, corners), std::move(origins)};
 }
 
-SplitResult split(SplitKind kind, const Level& parent) {
-  return kind == SplitKind::Quad ? split_quad(parent) : split_triangle(parent);
-}
-
-SplitKind split_kind_from_name(std::string_view name) {
-  if (name == "quad") return SplitKind::Quad;
-  if (name == "triangle") return SplitKind::Triangle;
-  throw Error(fmt::format("unknown split '{}'; the splits are: quad, triangle", name));
-}
 
 }  // namespace subdiv

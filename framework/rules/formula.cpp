@@ -10,7 +10,7 @@ namespace subdiv {
 
 struct FormulaSet::Impl {
   // Variable storage must not move: muParser keeps pointers to it.
-  double n = 0, k = 0, j = 0, l = 0;
+  double n = 0, k = 0, j = 0, l = 0, n0 = 0, n1 = 0;
   std::map<std::string, double> parameters;
   std::deque<double> definition_values;
   std::vector<std::unique_ptr<mu::Parser>> definitions;
@@ -28,6 +28,8 @@ struct FormulaSet::Impl {
       parser->DefineVar("k", &k);
       parser->DefineVar("j", &j);
       parser->DefineVar("l", &l);
+      parser->DefineVar("n0", &n0);
+      parser->DefineVar("n1", &n1);
       parser->DefineConst("pi", 3.14159265358979323846);
       for (auto& [name, value] : parameters) parser->DefineVar(name, &value);
       for (size_t i = 0; i < visible_definitions; ++i)
@@ -35,10 +37,11 @@ struct FormulaSet::Impl {
       parser->SetExpr(expression);
       for (const auto& [name, ptr] : parser->GetUsedVar()) {
         uses.n |= name == "n", uses.k |= name == "k", uses.j |= name == "j", uses.l |= name == "l";
+        uses.n0 |= name == "n0", uses.n1 |= name == "n1";
         for (size_t i = 0; i < visible_definitions; ++i) {
           if (definition_names[i] != name) continue;
           const FormulaUses& d = definition_uses[i];
-          uses.n |= d.n, uses.k |= d.k, uses.j |= d.j, uses.l |= d.l;
+          uses.n |= d.n, uses.k |= d.k, uses.j |= d.j, uses.l |= d.l, uses.n0 |= d.n0, uses.n1 |= d.n1;
         }
       }
     } catch (const mu::Parser::exception_type& e) {
@@ -82,7 +85,7 @@ int FormulaSet::add(const std::string& expression, const std::string& where) {
 }
 
 double FormulaSet::evaluate(int id, const FormulaInputs& in) {
-  impl_->n = in.n, impl_->k = in.k, impl_->j = in.j, impl_->l = in.l;
+  impl_->n = in.n, impl_->k = in.k, impl_->j = in.j, impl_->l = in.l, impl_->n0 = in.n0, impl_->n1 = in.n1;
   try {
     impl_->evaluate_definitions();
     return impl_->formulas[id]->Eval();

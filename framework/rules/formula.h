@@ -1,6 +1,7 @@
 #pragma once
 // Weight formulas (muParser). A formula may use n (valence or face size), k (size of the
-// face the point belongs to), j (index of the point within its role), l (level), the
+// face the point belongs to), j (index of the point within its role), l (level), n0 and
+// n1 (valences of an edge's two ends, in edge rules), the
 // scheme's numeric parameters, and the scheme's named definitions. Formulas are evaluated
 // only while weight tables are prepared, never per vertex; a FormulaSet is not thread-safe.
 #include <map>
@@ -11,12 +12,12 @@
 namespace subdiv {
 
 struct FormulaInputs {
-  double n = 0, k = 0, j = 0, l = 0;
+  double n = 0, k = 0, j = 0, l = 0, n0 = 0, n1 = 0;
 };
 
-// Which of n, k, j, l a formula depends on (through definitions too).
+// Which of n, k, j, l, n0, n1 a formula depends on (through definitions too).
 struct FormulaUses {
-  bool n = false, k = false, j = false, l = false;
+  bool n = false, k = false, j = false, l = false, n0 = false, n1 = false;
 };
 
 struct NamedFormula {

@@ -11,12 +11,15 @@
 
 namespace subdiv {
 
-enum class Element : std::uint8_t { Face = 0, Edge = 1, Vertex = 2 };
-constexpr int kElementCount = 3;
+// The parent element a new point belongs to; numbered like OriginKind.
+enum class Element : std::uint8_t { Vertex = 0, Edge = 1, Face = 2, Corner = 3 };
+constexpr int kElementCount = 4;
 
 // Vertex contexts follow DeRose et al. 1998 / OpenSubdiv: by the number of sharp incident
 // edges (0 smooth, 1 dart, 2 crease, more: corner) or a sharp vertex (corner). An edge is
-// Smooth or Crease (sharp or boundary). Faces are always Smooth.
+// Smooth or Crease (sharp or boundary). Faces are always Smooth. A face corner (dual
+// schemes) is Smooth, Crease (one of its two face edges is sharp) or Corner (both are, or
+// its vertex is a corner).
 enum class Context : std::uint8_t { Smooth = 0, Dart = 1, Crease = 2, Corner = 3 };
 constexpr int kContextCount = 4;
 
@@ -27,7 +30,12 @@ enum class Role : std::uint8_t {
   Edges,     // vertex or face rule: incident edges in ring/face order (new edge points)
   Ends,      // edge rule: the two end points
   Opposite,  // edge rule: in each incident triangle, the vertex off the edge
-  Vertices,  // face rule: the face's vertices in order
+  Vertices,  // face rule: the face's vertices in order; corner rule: counted from the corner
+  FaceCentroids,  // vertex rule: the centroid of each incident face (averaging passes)
+  Wings,     // edge rule: in each incident triangle, the vertex off the edge (= opposite)
+  FarWings,  // edge rule: for each incident triangle (a, b, c), the vertices across (b, c) and (c, a)
+  EndRing0,  // edge rule: the ring of the edge's first end, counted CCW from the edge (j = 0 is the other end)
+  EndRing1,  // edge rule: the ring of the edge's second end, likewise
   Curve,     // crease and boundary rules: points along the feature curve (from the curve scheme)
 };
 

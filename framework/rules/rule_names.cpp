@@ -4,7 +4,7 @@
 namespace subdiv {
 namespace {
 
-constexpr std::array<std::pair<Role, std::string_view>, 8> kRoleNames{{
+constexpr std::array<std::pair<Role, std::string_view>, 13> kRoleNames{{
     {Role::Self, "self"},
     {Role::Ring, "ring"},
     {Role::Faces, "faces"},
@@ -12,13 +12,18 @@ constexpr std::array<std::pair<Role, std::string_view>, 8> kRoleNames{{
     {Role::Ends, "ends"},
     {Role::Opposite, "opposite"},
     {Role::Vertices, "vertices"},
+    {Role::FaceCentroids, "face-centroids"},
+    {Role::Wings, "wings"},
+    {Role::FarWings, "far-wings"},
+    {Role::EndRing0, "end-ring-0"},
+    {Role::EndRing1, "end-ring-1"},
     {Role::Curve, "curve"},
 }};
 
 }  // namespace
 
 std::string_view element_name(Element e) {
-  constexpr std::string_view names[] = {"face", "edge", "vertex"};
+  constexpr std::string_view names[] = {"vertex", "edge", "face", "corner"};
   return names[int(e)];
 }
 
@@ -56,12 +61,15 @@ bool role_allowed(Element element, Role role) {
   switch (element) {
     case Element::Vertex:
       return role == Role::Self || role == Role::Ring || role == Role::Faces ||
-             role == Role::Edges || role == Role::Curve;
+             role == Role::Edges || role == Role::FaceCentroids || role == Role::Curve;
     case Element::Edge:
       return role == Role::Ends || role == Role::Faces || role == Role::Opposite ||
-             role == Role::Curve;
+             role == Role::Wings || role == Role::FarWings || role == Role::EndRing0 ||
+             role == Role::EndRing1 || role == Role::Curve;
     case Element::Face:
       return role == Role::Vertices || role == Role::Edges;
+    case Element::Corner:
+      return role == Role::Self || role == Role::Vertices || role == Role::Curve;
   }
   return false;
 }

@@ -1,11 +1,12 @@
 #include "framework/rules/stencil_builder.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
-#include "framework/rules/feature_curve.h"
+#include "framework/rules/element_rules.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -14,144 +15,11 @@ namespace {
 constexpr double kSumTolerance = 1e-9;
 constexpr Index kChunk = 1024;
 
-struct StepInputs {
-  const Level& parent;
-  const WeightTables& tables;
-  const FeatureContexts& features;
-  const RowBlock* blocks[kElementCount] = {nullptr, nullptr, nullptr};
+// The child vertices of one element kind, and where each element's first child is.
+struct ChildGroup {
+  std::vector<Index> children;           // child vertex indices, in child order
+  std::vector<Index> row_of_element;     // element -> row in this group's block, or kNone
 };
-
-const RowBlock& new_points(const StepInputs& in, NewPoint kind, const CompiledTerm& term) {
-  const Element e = kind == NewPoint::Face ? Element::Face : kind == NewPoint::Edge ? Element::Edge
-                                                                                     : Element::Vertex;
-  const RowBlock* block = in.blocks[int(e)];
-  if (!block)
-    throw Error(fmt::format("{}: uses new {} points, which this step does not make", term.where,
-                            element_name(e)));
-  return *block;
-}
-
-// Adds a point of a role: a parent vertex, or (with "new") the new point of an element.
-void add_point(RowBuilder& row, const StepInputs& in, const CompiledTerm& term, Index element, double w) {
-  if (term.new_point == NewPoint::None) row.add(element, w);
-  else row.add_row(new_points(in, term.new_point, term), element, w);
-}
-
-void add_curve_term(RowBuilder& row, const StepInputs& in, const CompiledTerm& term, Index a,
-                    Index edge_back, Index edge_forward, int forward_origin, Index b, double scale) {
-  // Offsets <= 0 walk from a (back), offsets >= forward_origin walk from b (forward).
-  for (size_t t = 0; t < term.curve_weights.size(); ++t) {
-    const int offset = term.curve_start + int(t);
-    const double w = scale * term.curve_weights[t];
-    if (offset <= 0) add_curve_point(row, in.parent, in.features, a, edge_back, -offset, w);
-    else add_curve_point(row, in.parent, in.features, b, edge_forward, offset - forward_origin, w);
-  }
-}
-
-void apply_vertex_rule(RowBuilder& row, const StepInputs& in, Index v, const CompiledRule& rule,
-                       const std::array<std::uint16_t, 2>& crease, double scale) {
-  const Level& L = in.parent;
-  const auto ring = L.ring_edges(v);
-  const auto faces = L.ring_faces(v);
-  const int n = int(ring.size());
-  for (const CompiledTerm& t : rule.terms) {
-    switch (t.role) {
-      case Role::Self: row.add(v, scale * t.weight(n, 0, 0)); break;
-      case Role::Ring:
-        for (int j = 0; j < n; ++j) row.add(L.other_end(ring[j], v), scale * t.weight(n, 0, j));
-        break;
-      case Role::Faces:
-        for (int j = 0; j < int(faces.size()); ++j)
-          add_point(row, in, t, faces[j], scale * t.weight(n, L.face_size(faces[j]), j));
-        break;
-      case Role::Edges:
-        for (int j = 0; j < n; ++j) add_point(row, in, t, ring[j], scale * t.weight(n, 0, j));
-        break;
-      case Role::Curve:
-        add_curve_term(row, in, t, v, ring[crease[0]], ring[crease[1]], 0, v, scale);
-        break;
-      default: throw Error(fmt::format("{}: role '{}' is not a vertex role", t.where, role_name(t.role)));
-    }
-  }
-}
-
-Index opposite_vertex(const Level& L, Index f, Index a, Index b, const CompiledTerm& t) {
-  if (L.face_size(f) != 3)
-    throw Error(fmt::format("{}: role 'opposite' needs triangles, but face {} has {} vertices",
-                            t.where, f, L.face_size(f)));
-  for (Index u : L.face(f))
-    if (u != a && u != b) return u;
-  return kNone;
-}
-
-void apply_edge_rule(RowBuilder& row, const StepInputs& in, Index e, const CompiledRule& rule, double scale) {
-  const Level& L = in.parent;
-  const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
-  const Index face_of_edge[2] = {L.edge_faces[2 * e], L.edge_faces[2 * e + 1]};
-  const int face_count = face_of_edge[1] == kNone ? 1 : 2;
-  for (const CompiledTerm& t : rule.terms) {
-    switch (t.role) {
-      case Role::Ends:
-        row.add(a, scale * t.weight(2, 0, 0));
-        row.add(b, scale * t.weight(2, 0, 1));
-        break;
-      case Role::Faces:
-        for (int j = 0; j < face_count; ++j)
-          add_point(row, in, t, face_of_edge[j], scale * t.weight(2, L.face_size(face_of_edge[j]), j));
-        break;
-      case Role::Opposite:
-        for (int j = 0; j < face_count; ++j)
-          row.add(opposite_vertex(L, face_of_edge[j], a, b, t), scale * t.weight(2, 3, j));
-        break;
-      case Role::Curve: {
-        const auto& fa = in.features.vertices[a];
-        const auto& fb = in.features.vertices[b];
-        const Index back = fa.parent == Context::Crease ? L.ring_edges(a)[fa.parent_crease[0]] == e
-                                                              ? L.ring_edges(a)[fa.parent_crease[1]]
-                                                              : L.ring_edges(a)[fa.parent_crease[0]]
-                                                        : kNone;
-        const Index forward = fb.parent == Context::Crease ? L.ring_edges(b)[fb.parent_crease[0]] == e
-                                                                 ? L.ring_edges(b)[fb.parent_crease[1]]
-                                                                 : L.ring_edges(b)[fb.parent_crease[0]]
-                                                           : kNone;
-        // Walking back from a starts along `back`; offsets from b count from 1.
-        for (size_t i = 0; i < t.curve_weights.size(); ++i) {
-          const int offset = t.curve_start + int(i);
-          const double w = scale * t.curve_weights[i];
-          if (offset <= 0) {
-            if (offset == 0) row.add(a, w);
-            else if (back != kNone) add_curve_point(row, L, in.features, a, back, -offset, w);
-            else row.add(a, w * (1 - offset)), row.add(b, w * offset);  // extrapolate past a
-          } else {
-            if (offset == 1) row.add(b, w);
-            else if (forward != kNone) add_curve_point(row, L, in.features, b, forward, offset - 1, w);
-            else row.add(b, w * offset), row.add(a, -w * (offset - 1));  // extrapolate past b
-          }
-        }
-        break;
-      }
-      default: throw Error(fmt::format("{}: role '{}' is not an edge role", t.where, role_name(t.role)));
-    }
-  }
-}
-
-void apply_face_rule(RowBuilder& row, const StepInputs& in, Index f, const CompiledRule& rule) {
-  const Level& L = in.parent;
-  const auto verts = L.face(f);
-  const auto edges = L.face_edge_list(f);
-  const int k = int(verts.size());
-  for (const CompiledTerm& t : rule.terms) {
-    switch (t.role) {
-      case Role::Vertices:
-        for (int j = 0; j < k; ++j) add_point(row, in, t, verts[j], t.weight(k, k, j));
-        break;
-      case Role::Edges:
-        for (int j = 0; j < k; ++j) add_point(row, in, t, edges[j], t.weight(k, k, j));
-        break;
-      default: throw Error(fmt::format("{}: role '{}' is not a face role", t.where, role_name(t.role)));
-    }
-  }
-}
 
 const CompiledRule& needed_rule(const WeightTables& tables, Element e, Context c, const std::string& source) {
   const CompiledRule& rule = tables.rule(e, c);
@@ -163,51 +31,136 @@ const CompiledRule& needed_rule(const WeightTables& tables, Element e, Context c
   return rule;
 }
 
-void fill_row(RowBuilder& row, const StepInputs& in, Element element, Index id, const std::string& source) {
-  const WeightTables& T = in.tables;
-  if (element == Element::Face) {
-    apply_face_rule(row, in, id, needed_rule(T, Element::Face, Context::Smooth, source));
-  } else if (element == Element::Edge) {
-    const float cw = in.features.edges[id].crease_weight;
-    if (cw < 1.f) apply_edge_rule(row, in, id, needed_rule(T, Element::Edge, Context::Smooth, source), 1.0 - cw);
-    if (cw > 0.f) apply_edge_rule(row, in, id, needed_rule(T, Element::Edge, Context::Crease, source), cw);
-  } else {
-    const VertexContext& vc = in.features.vertices[id];
-    const double pw = vc.child == vc.parent ? 1.0 : vc.parent_weight;
-    if (pw > 0.0)
-      apply_vertex_rule(row, in, id, needed_rule(T, Element::Vertex, vc.parent, source), vc.parent_crease, pw);
-    if (pw < 1.0)
-      apply_vertex_rule(row, in, id, needed_rule(T, Element::Vertex, vc.child, source), vc.child_crease, 1.0 - pw);
+const CompiledRule& curve_rule(const StepContext& s, int r, Element e) {
+  if (r >= int(s.tables.curve_rules.size()))
+    throw Error(fmt::format("{}: the mesh has boundaries or creases, and the scheme has neither a {} crease "
+                            "rule nor a curve scheme (\"curve\") to give one",
+                            s.source, element_name(e)));
+  return s.tables.curve_rules[r];
+}
+
+void fill_vertex_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index v) {
+  const VertexContext& vc = s.features.vertices[v];
+  auto apply = [&](Context c, const std::array<std::uint16_t, 2>& crease, double w) {
+    if (c == Context::Crease && !s.tables.rule(Element::Vertex, c).defined) {
+      if (!s.features_refined) return row.add(v, w);  // feature curves wait for the next step
+      return apply_vertex_rule(row, in, v, curve_rule(s, 0, Element::Vertex), crease, w);
+    }
+    apply_vertex_rule(row, in, v, needed_rule(s.tables, Element::Vertex, c, s.source), crease, w);
+  };
+  const double pw = vc.child == vc.parent ? 1.0 : vc.parent_weight;
+  if (pw > 0.0) apply(vc.parent, vc.parent_crease, pw);
+  if (pw < 1.0) apply(vc.child, vc.child_crease, 1.0 - pw);
+}
+
+void fill_edge_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index e, int local) {
+  const float cw = s.features.edges[e].crease_weight;
+  if (cw < 1.f) apply_edge_rule(row, in, e, needed_rule(s.tables, Element::Edge, Context::Smooth, s.source), 1.0 - cw);
+  if (cw <= 0.f) return;
+  const CompiledRule& stated = s.tables.rule(Element::Edge, Context::Crease);
+  if (stated.defined && local == 0) return apply_edge_rule(row, in, e, stated, cw);
+  // The local-th new point along a crease edge is the curve scheme's rule local + 1.
+  const Index a = s.parent.edge_vertices[2 * e], b = s.parent.edge_vertices[2 * e + 1];
+  apply_segment_curve_rule(row, in, e, a, b, curve_rule(s, local + 1, Element::Edge), cw);
+}
+
+// A face corner beside a sharp face edge follows the (dual) curve scheme along that edge:
+// rule 0 for the point near the segment's start, rule 1 near its end (seed 000: "open
+// meshes use Chaikin"; our crease extension for dual schemes, docs/scheme-format.md).
+void fill_corner_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index f, int corner) {
+  const Level& L = s.parent;
+  const int k = L.face_size(f);
+  const Index v = L.face(f)[corner];
+  const Index out = L.face_edge_list(f)[corner], in_edge = L.face_edge_list(f)[(corner + k - 1) % k];
+  const float w_out = s.features.edges[out].crease_weight, w_in = s.features.edges[in_edge].crease_weight;
+  const bool corner_vertex = s.features.vertex_sharpness[v] > 0.f || (w_out > 0.f && w_in > 0.f);
+  const CompiledRule& smooth = needed_rule(s.tables, Element::Corner, Context::Smooth, s.source);
+  if (corner_vertex) {
+    const double w = s.features.vertex_sharpness[v] > 0.f ? 1.0 : std::min(w_out, w_in);
+    apply_corner_rule(row, in, f, corner, needed_rule(s.tables, Element::Corner, Context::Corner, s.source), w);
+    if (w < 1.0) apply_corner_rule(row, in, f, corner, smooth, 1.0 - w);
+    return;
+  }
+  const double w = std::max(w_out, w_in);
+  if (w < 1.0) apply_corner_rule(row, in, f, corner, smooth, 1.0 - w);
+  if (w <= 0.0) return;
+  const CompiledRule& stated = s.tables.rule(Element::Corner, Context::Crease);
+  if (stated.defined) return apply_corner_rule(row, in, f, corner, stated, w);
+  const Index next = L.face(f)[(corner + 1) % k], prev = L.face(f)[(corner + k - 1) % k];
+  if (w_out > 0.f) apply_segment_curve_rule(row, in, out, v, next, curve_rule(s, 0, Element::Corner), w);
+  else apply_segment_curve_rule(row, in, in_edge, prev, v, curve_rule(s, 1, Element::Corner), w);
+}
+
+void fill_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index child) {
+  const Index p = s.origins.parent[child];
+  switch (s.origins.kind[child]) {
+    case OriginKind::Vertex: return fill_vertex_row(row, s, in, p);
+    case OriginKind::Edge: return fill_edge_row(row, s, in, p, s.origins.local[child]);
+    case OriginKind::Face:
+      return apply_face_rule(row, in, p, needed_rule(s.tables, Element::Face, Context::Smooth, s.source));
+    case OriginKind::Corner: return fill_corner_row(row, s, in, p, s.origins.local[child]);
   }
 }
 
 Index element_count(const Level& L, Element e) {
-  return e == Element::Face ? L.face_count() : e == Element::Edge ? L.edge_count() : L.vertex_count;
+  switch (e) {
+    case Element::Vertex: return L.vertex_count;
+    case Element::Edge: return L.edge_count();
+    case Element::Face: return L.face_count();
+    case Element::Corner: return L.corner_count();
+  }
+  return 0;
 }
 
-// Rows of one element kind, built in parallel chunks and joined in order, so the result
-// does not depend on the thread count. Checks every row is finite and sums to one.
-RowBlock build_block(const StepInputs& in, Element element, const std::string& source) {
-  const Index count = element_count(in.parent, element);
+std::vector<ChildGroup> group_children(const StepContext& s) {
+  std::vector<ChildGroup> groups(kElementCount);
+  for (int e = 0; e < kElementCount; ++e)
+    groups[e].row_of_element.assign(element_count(s.parent, Element(e)), kNone);
+  for (Index c = 0; c < Index(s.origins.kind.size()); ++c) {
+    const int kind = int(s.origins.kind[c]);
+    Index element = s.origins.parent[c];
+    if (s.origins.kind[c] == OriginKind::Corner) element = s.parent.face_offsets[element] + s.origins.local[c];
+    if (groups[kind].row_of_element[element] == kNone)
+      groups[kind].row_of_element[element] = Index(groups[kind].children.size());
+    groups[kind].children.push_back(c);
+  }
+  return groups;
+}
+
+void report_bad_row(const StepContext& s, const RowBlock& block, const ChildGroup& group, Index r) {
+  double sum = 0.0;
+  for (Index i = block.offsets[r]; i < block.offsets[r + 1]; ++i) sum += block.weights[i];
+  const Index child = group.children[r];
+  const Index p = s.origins.parent[child];
+  const Element e = Element(int(s.origins.kind[child]));
+  const int size = e == Element::Vertex ? s.parent.valence(p) : e == Element::Edge ? 2 : s.parent.face_size(p);
+  throw Error(fmt::format(
+      "{}: the new point of {} {} has weights summing to {} instead of 1 ({} {}); every rule must "
+      "be affine and finite: check the weight formulas of the {} rules",
+      s.source, element_name(e), p, sum, e == Element::Vertex ? "valence" : "size", size, element_name(e)));
+}
+
+// Rows of one group, built in parallel chunks and joined in order, so the result does not
+// depend on the thread count. Checks every row is finite and sums to one.
+RowBlock build_block(const StepContext& s, const RuleInputs& in, const ChildGroup& group) {
+  const Index count = Index(group.children.size());
   const Index chunks = (count + kChunk - 1) / kChunk;
   std::vector<RowBlock> parts(chunks);
   std::atomic<Index> first_bad{count};
   tbb::parallel_for(Index(0), chunks, [&](Index c) {
     RowBuilder row;
     RowBlock& part = parts[c];
-    for (Index id = c * kChunk; id < std::min(count, (c + 1) * kChunk); ++id) {
+    for (Index r = c * kChunk; r < std::min(count, (c + 1) * kChunk); ++r) {
       row.clear();
-      fill_row(row, in, element, id, source);
+      fill_row(row, s, in, group.children[r]);
       double sum = 0.0;
-      for (size_t i = 0; i < row.indices().size(); ++i) {
-        sum += row.weights()[i];
-        part.indices.push_back(row.indices()[i]);
-        part.weights.push_back(row.weights()[i]);
-      }
+      for (size_t i = 0; i < row.indices().size(); ++i) sum += row.weights()[i];
+      part.indices.insert(part.indices.end(), row.indices().begin(), row.indices().end());
+      part.weights.insert(part.weights.end(), row.weights().begin(), row.weights().end());
       part.offsets.push_back(Index(part.indices.size()));
       if (!std::isfinite(sum) || std::abs(sum - 1.0) > kSumTolerance) {
         Index seen = first_bad.load();
-        while (id < seen && !first_bad.compare_exchange_weak(seen, id)) {}
+        while (r < seen && !first_bad.compare_exchange_weak(seen, r)) {}
       }
     }
   });
@@ -223,17 +176,7 @@ RowBlock build_block(const StepInputs& in, Element element, const std::string& s
     block.indices.insert(block.indices.end(), p.indices.begin(), p.indices.end());
     block.weights.insert(block.weights.end(), p.weights.begin(), p.weights.end());
   }
-  if (first_bad < count) {
-    const Index id = first_bad;
-    double sum = 0.0;
-    for (Index i = block.offsets[id]; i < block.offsets[id + 1]; ++i) sum += block.weights[i];
-    throw Error(fmt::format(
-        "{}: the new point of {} {} has weights summing to {} instead of 1 (valence {}); every "
-        "rule must be affine: check the weight formulas of the {} rules",
-        source, element_name(element), id, sum,
-        element == Element::Vertex ? in.parent.valence(id) : element == Element::Face ? in.parent.face_size(id) : 2,
-        element_name(element)));
-  }
+  if (first_bad < count) report_bad_row(s, block, group, first_bad);
   return block;
 }
 
@@ -245,62 +188,69 @@ bool references(const WeightTables& T, Element from, NewPoint to) {
 }
 
 // Element kinds in an order where referenced new points come first.
-std::vector<Element> build_order(const WeightTables& T, const ChildLayout& layout, const std::string& source) {
-  const NewPoint as_new[kElementCount] = {NewPoint::Face, NewPoint::Edge, NewPoint::Vertex};
+std::vector<Element> build_order(const StepContext& s, const std::vector<ChildGroup>& groups) {
+  const NewPoint as_new[kElementCount] = {NewPoint::Vertex, NewPoint::Edge, NewPoint::Face, NewPoint::None};
   std::vector<Element> order;
-  bool placed[kElementCount] = {false, false, false};
-  for (int round = 0; round < kElementCount; ++round) {
+  bool placed[kElementCount] = {};
+  for (int round = 0; round < kElementCount; ++round)
     for (int e = 0; e < kElementCount; ++e) {
-      if (placed[e] || layout.first[e] == kNone) continue;
+      if (placed[e] || groups[e].children.empty()) continue;
       bool ready = true;
       for (int d = 0; d < kElementCount; ++d)
-        if (d != e && !placed[d] && references(T, Element(e), as_new[d])) ready = false;
-      if (references(T, Element(e), as_new[e]))
-        throw Error(fmt::format("{}: the {} rules use new {} points, which they define", source,
+        if (d != e && !placed[d] && !groups[d].children.empty() && references(s.tables, Element(e), as_new[d]))
+          ready = false;
+      if (as_new[e] != NewPoint::None && references(s.tables, Element(e), as_new[e]))
+        throw Error(fmt::format("{}: the {} rules use new {} points, which they define", s.source,
                                 element_name(Element(e)), element_name(Element(e))));
       if (ready) placed[e] = true, order.push_back(Element(e));
     }
-  }
   for (int e = 0; e < kElementCount; ++e)
-    if (layout.first[e] != kNone && !placed[e])
-      throw Error(fmt::format("{}: the face, edge and vertex rules refer to each other's new points in a cycle", source));
+    if (!groups[e].children.empty() && !placed[e])
+      throw Error(fmt::format("{}: the rules refer to each other's new points in a cycle", s.source));
   return order;
 }
 
 }  // namespace
 
-ChildLayout primal_layout(const Level& parent, SplitKind split) {
-  ChildLayout layout;
-  layout.first[int(Element::Vertex)] = 0;
-  layout.first[int(Element::Edge)] = parent.vertex_count;
-  if (split == SplitKind::Quad) layout.first[int(Element::Face)] = parent.vertex_count + parent.edge_count();
-  return layout;
+ChildOrigins identity_origins(const Level& level) {
+  ChildOrigins o;
+  o.kind.assign(level.vertex_count, OriginKind::Vertex);
+  o.parent.resize(level.vertex_count);
+  for (Index v = 0; v < level.vertex_count; ++v) o.parent[v] = v;
+  o.local.assign(level.vertex_count, 0);
+  return o;
 }
 
-StencilTable build_step_stencils(const Level& parent, const ChildLayout& layout,
-                                 const WeightTables& tables, const FeatureContexts& features,
-                                 const std::string& source) {
-  StepInputs in{parent, tables, features};
-  RowBlock blocks[kElementCount];
-  for (Element e : build_order(tables, layout, source)) {
-    blocks[int(e)] = build_block(in, e, source);
+StencilTable build_step_stencils(const StepContext& s) {
+  const std::vector<ChildGroup> groups = group_children(s);
+  RuleInputs in{s.parent, s.features};
+  std::vector<RowBlock> blocks(kElementCount);
+  for (Element e : build_order(s, groups)) {
+    blocks[int(e)] = build_block(s, in, groups[int(e)]);
     in.blocks[int(e)] = &blocks[int(e)];
+    in.block_row_of_element[int(e)] = &groups[int(e)].row_of_element;
   }
-  // Join the blocks in child numbering order.
-  std::vector<Element> by_position;
-  for (int e = 0; e < kElementCount; ++e)
-    if (layout.first[e] != kNone) by_position.push_back(Element(e));
-  std::sort(by_position.begin(), by_position.end(),
-            [&](Element a, Element b) { return layout.first[int(a)] < layout.first[int(b)]; });
+  // Gather rows in child order: child c is row `position` of its group's block.
+  const Index child_count = Index(s.origins.kind.size());
+  std::vector<Index> position(child_count);
+  for (const auto& g : groups)
+    for (Index r = 0; r < Index(g.children.size()); ++r) position[g.children[r]] = r;
   StencilTable table;
-  table.source_count = parent.vertex_count;
-  for (Element e : by_position) {
-    const RowBlock& b = blocks[int(e)];
-    const Index base = table.offsets.back();
-    for (size_t r = 1; r < b.offsets.size(); ++r) table.offsets.push_back(base + b.offsets[r]);
-    table.indices.insert(table.indices.end(), b.indices.begin(), b.indices.end());
-    table.weights.insert(table.weights.end(), b.weights.begin(), b.weights.end());
+  table.source_count = s.parent.vertex_count;
+  table.offsets.resize(child_count + 1);
+  table.offsets[0] = 0;
+  for (Index c = 0; c < child_count; ++c) {
+    const RowBlock& b = blocks[int(s.origins.kind[c])];
+    table.offsets[c + 1] = table.offsets[c] + b.offsets[position[c] + 1] - b.offsets[position[c]];
   }
+  table.indices.resize(table.offsets.back());
+  table.weights.resize(table.offsets.back());
+  tbb::parallel_for(Index(0), child_count, [&](Index c) {
+    const RowBlock& b = blocks[int(s.origins.kind[c])];
+    const Index from = b.offsets[position[c]], to = b.offsets[position[c] + 1];
+    std::copy(b.indices.begin() + from, b.indices.begin() + to, table.indices.begin() + table.offsets[c]);
+    std::copy(b.weights.begin() + from, b.weights.begin() + to, table.weights.begin() + table.offsets[c]);
+  });
   return table;
 }
 

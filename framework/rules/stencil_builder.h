@@ -1,22 +1,30 @@
 #pragma once
 // Builds the stencil table of one refinement step: every child vertex as a weighted sum of
 // parent vertices, from the compiled rules, the parent's neighbourhoods and its features.
-#include "framework/refine/splitter.h"
+// Child vertices are found through their origins (parent vertex, edge, face or corner), so
+// any splitter that records origins works, and smoothing passes are steps whose origins
+// are the vertices themselves.
+#include <string>
+
+#include "framework/refine/child_origins.h"
 #include "framework/rules/feature_context.h"
 #include "framework/rules/weight_tables.h"
 #include "framework/stencil/stencil_table.h"
 
 namespace subdiv {
 
-// Where each element kind's new points start in the child numbering; kNone: none made.
-struct ChildLayout {
-  Index first[kElementCount] = {kNone, kNone, kNone};
+struct StepContext {
+  const Level& parent;
+  const ChildOrigins& origins;
+  const WeightTables& tables;
+  const FeatureContexts& features;
+  bool features_refined = true;  // false: crease vertices stay (odd sqrt3 steps)
+  std::string source;            // the scheme file, for messages
 };
-ChildLayout primal_layout(const Level& parent, SplitKind split);
 
-// `source` names the scheme file for error messages.
-StencilTable build_step_stencils(const Level& parent, const ChildLayout& layout,
-                                 const WeightTables& tables, const FeatureContexts& features,
-                                 const std::string& source);
+StencilTable build_step_stencils(const StepContext& step);
+
+// Origins of a smoothing pass: child vertex v is parent vertex v.
+ChildOrigins identity_origins(const Level& level);
 
 }  // namespace subdiv

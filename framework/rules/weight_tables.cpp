@@ -9,23 +9,44 @@
 namespace subdiv {
 namespace {
 
+// Sizes and strides of the dense table over the variables a formula uses.
+struct TableShape {
+  size_t size = 1;
+  int count[5] = {1, 1, 1, 1, 1};  // n, k, j, n0, n1
+  size_t stride[5] = {0, 0, 0, 0, 0};
+};
+
+TableShape table_shape(const FormulaUses& uses, int max_n, int max_k) {
+  TableShape s;
+  const bool used[5] = {uses.n, uses.k, uses.j, uses.n0, uses.n1};
+  const int range[5] = {max_n + 1, max_k + 1, std::max(max_n, max_k) + 1, max_n + 1, max_n + 1};
+  for (int v = 4; v >= 0; --v) {
+    if (!used[v]) continue;
+    s.count[v] = range[v];
+    s.stride[v] = s.size;
+    s.size *= size_t(range[v]);
+  }
+  return s;
+}
+
 CompiledTerm compile_term(const Term& term, FormulaSet& formulas, int max_n, int max_k, int level) {
   CompiledTerm out;
   out.role = term.role;
   out.new_point = term.new_point;
   out.where = term.where;
   const int id = formulas.add(term.weight, term.where);
-  const FormulaUses uses = formulas.uses(id);
-  out.uses_n = uses.n, out.uses_k = uses.k, out.uses_j = uses.j;
-  const int size_n = uses.n ? max_n + 1 : 1;
-  out.size_k = uses.k ? max_k + 1 : 1;
-  out.size_j = uses.j ? std::max(max_n, max_k) + 1 : 1;
-  out.table.resize(size_t(size_n) * out.size_k * out.size_j);
-  for (int n = 0; n < size_n; ++n)
-    for (int k = 0; k < out.size_k; ++k)
-      for (int j = 0; j < out.size_j; ++j)
-        out.table[(size_t(n) * out.size_k + k) * out.size_j + j] =
-            formulas.evaluate(id, {double(n), double(k), double(j), double(level)});
+  const TableShape shape = table_shape(formulas.uses(id), max_n, max_k);
+  out.stride_n = shape.stride[0], out.stride_k = shape.stride[1], out.stride_j = shape.stride[2];
+  out.stride_n0 = shape.stride[3], out.stride_n1 = shape.stride[4];
+  out.table.resize(shape.size);
+  const int* c = shape.count;
+  for (int n = 0; n < c[0]; ++n)
+    for (int k = 0; k < c[1]; ++k)
+      for (int j = 0; j < c[2]; ++j)
+        for (int n0 = 0; n0 < c[3]; ++n0)
+          for (int n1 = 0; n1 < c[4]; ++n1)
+            out.table[out.stride_n * n + out.stride_k * k + out.stride_j * j + out.stride_n0 * n0 + out.stride_n1 * n1] =
+                formulas.evaluate(id, {double(n), double(k), double(j), double(level), double(n0), double(n1)});
   return out;
 }
 
@@ -55,10 +76,10 @@ CompiledRule curve_rule(const CurveScheme& curve, int r, int level) {
   return out;
 }
 
-CompiledRule corner_rule() {
+CompiledRule stay_rule() {
   CompiledTerm self;
   self.role = Role::Self;
-  self.where = "engine default corner rule";
+  self.where = "engine default: the point stays";
   self.table = {1.0};
   CompiledRule out;
   out.where = self.where;
@@ -69,22 +90,27 @@ CompiledRule corner_rule() {
 
 }  // namespace
 
-WeightTables prepare_weight_tables(const Scheme& scheme, int max_n, int max_k, int level) {
+WeightTables prepare_weight_tables(const StepRules& step, const Scheme& scheme, int max_n, int max_k, int level) {
   WeightTables tables;
   tables.max_n = max_n, tables.max_k = max_k;
   FormulaSet formulas(scheme.parameter_values(), scheme.definitions);
   for (int e = 0; e < kElementCount; ++e)
     for (int c = 0; c < kContextCount; ++c)
-      if (scheme.rules[e][c])
-        tables.rules[e][c] = compile_rule(*scheme.rules[e][c], formulas, max_n, max_k, level);
+      if (step.rules[e][c]) tables.rules[e][c] = compile_rule(*step.rules[e][c], formulas, max_n, max_k, level);
 
-  auto& vertex = tables.rules[int(Element::Vertex)];
-  auto& edge = tables.rules[int(Element::Edge)];
-  if (!vertex[int(Context::Dart)].defined) vertex[int(Context::Dart)] = vertex[int(Context::Smooth)];
-  if (!vertex[int(Context::Corner)].defined) vertex[int(Context::Corner)] = corner_rule();
-  if (scheme.curve) {
-    if (!vertex[int(Context::Crease)].defined) vertex[int(Context::Crease)] = curve_rule(*scheme.curve, 0, level);
-    if (!edge[int(Context::Crease)].defined) edge[int(Context::Crease)] = curve_rule(*scheme.curve, 1, level);
+  for (Element e : {Element::Vertex, Element::Corner}) {
+    auto& r = tables.rules[int(e)];
+    if (!r[int(Context::Dart)].defined) r[int(Context::Dart)] = r[int(Context::Smooth)];
+    if (!r[int(Context::Corner)].defined) r[int(Context::Corner)] = stay_rule();
+  }
+  if (scheme.curve && step.curve_rules_apply) {
+    tables.curve_arity = scheme.curve->arity;
+    for (int r = 0; r < scheme.curve->arity; ++r) tables.curve_rules.push_back(curve_rule(*scheme.curve, r, level));
+  }
+  // Smoothing passes do not refine feature curves: without a stated rule, they stay.
+  if (!step.curve_rules_apply) {
+    auto& vertex = tables.rules[int(Element::Vertex)];
+    if (!vertex[int(Context::Crease)].defined) vertex[int(Context::Crease)] = stay_rule();
   }
   return tables;
 }

@@ -10,9 +10,14 @@
 namespace subdiv {
 namespace {
 
+int needed_face_size(const Scheme& scheme) {
+  if (scheme.required_face_size) return scheme.required_face_size;
+  const SplitKind split = scheme.split();
+  return split == SplitKind::Triangle || split == SplitKind::Sqrt3 ? 3 : 0;
+}
+
 void check_face_sizes(const Scheme& scheme, const Level& base) {
-  const int needed = scheme.required_face_size ? scheme.required_face_size
-                     : scheme.split == SplitKind::Triangle ? 3 : 0;
+  const int needed = needed_face_size(scheme);
   if (!needed) return;
   for (Index f = 0; f < base.face_count(); ++f)
     if (base.face_size(f) != needed)
@@ -29,8 +34,13 @@ int max_valence(const Level& level) {
   return m;
 }
 
-FeatureOptions feature_options(const RefineOptions& options) {
-  return {options.boundary, options.crease_method};
+// One step's stencils: `parent` values to the values of the step's output vertices.
+StencilTable step_stencils(const Scheme& scheme, const StepRules& step, const Level& parent,
+                           const ChildOrigins& origins, bool features_refined, int level,
+                           const RefineOptions& options) {
+  const WeightTables tables = prepare_weight_tables(step, scheme, max_valence(parent), parent.max_face_size(), level);
+  const FeatureContexts features = classify_features(parent, {options.boundary, options.crease_method});
+  return build_step_stencils({parent, origins, tables, features, features_refined, scheme.path});
 }
 
 }  // namespace
@@ -41,10 +51,12 @@ Hierarchy refine_topology(const Scheme& scheme, Level base, const RefineOptions&
   Hierarchy h;
   h.levels.push_back(std::move(base));
   for (int l = 0; l < options.levels; ++l) {
-    SplitResult step = split(scheme.split, h.levels.back());
-    propagate_tags(h.levels.back(), step, options.crease_method);
+    SplitResult step = split(scheme.split(), h.levels.back(), options.first_step + l);
+    if (scheme.split() == SplitKind::Quad || scheme.split() == SplitKind::Triangle)
+      propagate_tags(h.levels.back(), step, options.crease_method);
     h.levels.push_back(std::move(step.child));
     h.origins.push_back(std::move(step.origins));
+    h.features_refined.push_back(step.features_refined);
   }
   return h;
 }
@@ -52,10 +64,15 @@ Hierarchy refine_topology(const Scheme& scheme, Level base, const RefineOptions&
 void build_stencils(const Scheme& scheme, Hierarchy& h, const RefineOptions& options) {
   h.stencils.clear();
   for (size_t l = 0; l + 1 < h.levels.size(); ++l) {
-    const Level& parent = h.levels[l];
-    const WeightTables tables = prepare_weight_tables(scheme, max_valence(parent), parent.max_face_size(), int(l));
-    const FeatureContexts features = classify_features(parent, feature_options(options));
-    h.stencils.push_back(build_step_stencils(parent, primal_layout(parent, scheme.split), tables, features, scheme.path));
+    const int level = options.first_step + int(l);
+    StencilTable table = step_stencils(scheme, scheme.steps.front(), h.levels[l], h.origins[l],
+                                       h.features_refined[l], level, options);
+    // Smoothing passes move the new level's vertices; compose them into one table.
+    for (size_t s = 1; s < scheme.steps.size(); ++s) {
+      const Level& child = h.levels[l + 1];
+      table = compose(table, step_stencils(scheme, scheme.steps[s], child, identity_origins(child), true, level, options));
+    }
+    h.stencils.push_back(std::move(table));
   }
 }
 

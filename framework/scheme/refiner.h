@@ -20,12 +20,17 @@ struct RefineOptions {
   BoundaryInterpolation boundary = BoundaryInterpolation::EdgesAndCorners;
   CreaseMethod crease_method = CreaseMethod::Uniform;
   int threads = 0;  // 0: all cores
+  // How many steps the input mesh has already been through (schemes whose steps alternate,
+  // such as sqrt3's boundary trisection, count from the original mesh; also the level l
+  // seen by level-dependent formulas).
+  int first_step = 0;
 };
 
 struct Hierarchy {
   std::vector<Level> levels;           // levels[0] is the base mesh
   std::vector<ChildOrigins> origins;   // origins[i] describes levels[i + 1]
   std::vector<StencilTable> stencils;  // stencils[i] maps level i values to level i + 1
+  std::vector<bool> features_refined;  // per step: were boundaries and creases refined
 };
 
 // Refines topology only (levels and origins), as OpenSubdiv's RefineUniform does.

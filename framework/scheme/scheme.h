@@ -32,14 +32,25 @@ struct CurveScheme {
   std::vector<NamedFormula> definitions;
 };
 
+// One step of a scheme level: a split with its rules, or a smoothing pass that moves the
+// vertices of an unchanged mesh (refine-then-average schemes, seed 002 and seed 003).
+struct StepRules {
+  bool is_split = true;
+  SplitKind split = SplitKind::Quad;
+  RuleTable rules;
+  bool curve_rules_apply = true;  // smoothing passes do not refine feature curves
+  std::string where;
+};
+
 struct Scheme {
   std::string name, description, path;
-  SplitKind split = SplitKind::Quad;
   int required_face_size = 0;  // 0: any polygon
   std::vector<ParameterSpec> parameters;
   std::vector<NamedFormula> definitions;  // after choice parameters selected their cases
-  RuleTable rules;
+  std::vector<StepRules> steps;           // one level: a split, then any smoothing passes
   std::shared_ptr<const CurveScheme> curve;  // boundary and crease curves
+
+  SplitKind split() const { return steps.front().split; }
 
   // Numeric parameter values by name, as formulas see them.
   std::map<std::string, double> parameter_values() const;

@@ -201,15 +201,14 @@ Rule parse_rule(const Json& j, Element element, const Place& at) {
   return rule;
 }
 
-RuleTable parse_rules(const Json& root, const Place& at) {
+RuleTable parse_rules(const Json& rules, const Place& at, const std::set<std::string>& elements) {
   RuleTable table;
-  const Json& rules = require(root, "rules", at);
-  check_keys(rules, {"face", "edge", "vertex"}, at / "rules");
+  check_keys(rules, elements, at);
   for (int e = 0; e < kElementCount; ++e) {
     const std::string name(element_name(Element(e)));
     if (!rules.contains(name)) continue;
     const Json& r = rules[name];
-    const Place here = at / "rules" / name;
+    const Place here = at / name;
     if (r.is_array()) {
       table[e][int(Context::Smooth)] = parse_rule(r, Element(e), here);
       continue;
@@ -225,6 +224,63 @@ RuleTable parse_rules(const Json& root, const Place& at) {
   return table;
 }
 
+SplitKind parse_split(const Json& value, const Place& at) {
+  try {
+    return split_kind_from_name(as_string(value, at));
+  } catch (const Error& e) {
+    fail(at, e.what());
+  }
+}
+
+// Which elements make new points in each split (and so may have rules).
+std::set<std::string> elements_of_split(SplitKind split) {
+  switch (split) {
+    case SplitKind::Quad: return {"vertex", "edge", "face"};
+    case SplitKind::Triangle: return {"vertex", "edge"};
+    case SplitKind::Sqrt3: return {"vertex", "face"};
+    case SplitKind::Dual: return {"corner"};
+    case SplitKind::MidEdge: return {"edge"};
+  }
+  return {};
+}
+
+// Either "split" + "rules" (one step), or "steps": [{"split": .., "rules": ..},
+// {"smooth": {"vertex": ..}}, ...] with the split first.
+std::vector<StepRules> parse_steps(const Json& root, const Place& at) {
+  std::vector<StepRules> steps;
+  if (!root.contains("steps")) {
+    StepRules step;
+    step.split = parse_split(require(root, "split", at), at / "split");
+    step.rules = parse_rules(require(root, "rules", at), at / "rules", elements_of_split(step.split));
+    step.where = at.str();
+    steps.push_back(std::move(step));
+    return steps;
+  }
+  if (root.contains("split") || root.contains("rules"))
+    fail(at, "give either \"split\" and \"rules\", or \"steps\", not both");
+  const Json& list = root["steps"];
+  if (!list.is_array() || list.empty()) fail(at / "steps", "expected a non-empty array of steps");
+  for (size_t i = 0; i < list.size(); ++i) {
+    const Place here = (at / "steps")[i];
+    StepRules step;
+    step.where = here.str();
+    if (list[i].contains("smooth")) {
+      check_keys(list[i], {"smooth"}, here);
+      if (i == 0) fail(here, "the first step must be a split");
+      step.is_split = false;
+      step.curve_rules_apply = false;
+      step.rules = parse_rules(list[i]["smooth"], here / "smooth", {"vertex"});
+    } else {
+      check_keys(list[i], {"split", "rules"}, here);
+      if (i != 0) fail(here, "only the first step may be a split; later steps are smoothing passes");
+      step.split = parse_split(require(list[i], "split", here), here / "split");
+      step.rules = parse_rules(require(list[i], "rules", here), here / "rules", elements_of_split(step.split));
+    }
+    steps.push_back(std::move(step));
+  }
+  return steps;
+}
+
 int parse_face_requirement(const Json& root, const Place& at) {
   const std::string faces = root.contains("faces") ? as_string(root["faces"], at / "faces") : "any";
   if (faces == "any") return 0;
@@ -236,10 +292,11 @@ int parse_face_requirement(const Json& root, const Place& at) {
 // Compiles every formula once so syntax errors surface at load time with their place.
 void check_formulas(const Scheme& s) {
   FormulaSet formulas(s.parameter_values(), s.definitions);
-  for (const auto& by_context : s.rules)
-    for (const auto& rule : by_context)
-      if (rule)
-        for (const auto& term : rule->terms) formulas.add(term.weight, term.where);
+  for (const auto& step : s.steps)
+    for (const auto& by_context : step.rules)
+      for (const auto& rule : by_context)
+        if (rule)
+          for (const auto& term : rule->terms) formulas.add(term.weight, term.where);
 }
 
 void check_unknown_overrides(const ParameterOverrides& overrides, const std::set<std::string>& used,
@@ -251,15 +308,19 @@ void check_unknown_overrides(const ParameterOverrides& overrides, const std::set
                               file, name, name, value));
 }
 
-// Primal binary splits keep old vertices and add one point per edge, so the curve must
-// have a vertex rule centred on an old point and an edge rule centred on a segment.
-void check_curve_is_primal(const CurveScheme& c, const Place& at) {
-  const bool centred_vertex = c.arity == 2 && 2 * -c.starts[0] + 1 == int(c.weights[0].size());
-  const bool centred_edge = c.arity == 2 && 2 * -c.starts[1] + 2 == int(c.weights[1].size());
-  if (!centred_vertex || !centred_edge)
-    fail(at, fmt::format("curve scheme '{}' ({}) is not a primal binary scheme (rule 0 centred on an "
-                         "old point, rule 1 on a segment), so it cannot give the boundary rules of a "
-                         "primal split", c.name, c.path));
+// Primal splits keep old vertices and add points on edges, so the curve's rule 0 must be
+// centred on an old point; the arity must match how the split refines boundaries
+// (binary for quad, triangle and dual splits, ternary for sqrt3). Dual splits need a
+// dual binary curve (two new points per segment, none on old points).
+void check_curve_fits_split(const CurveScheme& c, SplitKind split, const Place& at) {
+  const int arity = split == SplitKind::Sqrt3 ? 3 : 2;
+  if (c.arity != arity)
+    fail(at, fmt::format("curve scheme '{}' has arity {}, but this split refines boundaries with arity {}",
+                         c.name, c.arity, arity));
+  if (split == SplitKind::Dual || split == SplitKind::MidEdge) return;
+  if (2 * -c.starts[0] + 1 != int(c.weights[0].size()))
+    fail(at, fmt::format("curve scheme '{}' ({}) is not primal: its rule 0 is not centred on an old "
+                         "point, so it cannot give the boundary rules of a primal split", c.name, c.path));
 }
 
 }  // namespace
@@ -322,30 +383,23 @@ std::shared_ptr<const Scheme> load_surface_scheme(const std::filesystem::path& p
   const Json root = read_json_file(path);
   const Place at{path.string(), ""};
   check_keys(root, {"$schema", "name", "kind", "description", "reference", "split", "faces", "curve",
-                    "parameters", "definitions", "rules"}, at);
+                    "parameters", "definitions", "rules", "steps"}, at);
   auto s = std::make_shared<Scheme>();
   s->path = path.string();
   s->name = as_string(require(root, "name", at), at / "name");
   s->description = optional_string(root, "description");
-  try {
-    s->split = split_kind_from_name(as_string(require(root, "split", at), at / "split"));
-  } catch (const Error& e) {
-    fail(at / "split", e.what());
-  }
   s->required_face_size = parse_face_requirement(root, at);
   std::set<std::string> used;
   s->parameters = parse_parameters(root, at, overrides, &used);
   s->definitions = parse_definitions(root, at, s->parameters);
-  s->rules = parse_rules(root, at);
-  if (s->split == SplitKind::Triangle && s->rules[int(Element::Face)][int(Context::Smooth)])
-    fail(at / "rules" / "face", "the triangle split makes no face points; remove the face rule");
+  s->steps = parse_steps(root, at);
   if (root.contains("curve")) {
     // Overrides the surface scheme does not take go to its curve scheme (e.g. a tension).
     ParameterOverrides curve_overrides;
     for (const auto& [name, value] : overrides)
       if (!used.count(name)) curve_overrides[name] = value;
     s->curve = resolve_curve(as_string(root["curve"], at / "curve"), path, curve_overrides, &used);
-    check_curve_is_primal(*s->curve, at / "curve");
+    check_curve_fits_split(*s->curve, s->split(), at / "curve");
   }
   check_unknown_overrides(overrides, used, path.string());
   check_formulas(*s);

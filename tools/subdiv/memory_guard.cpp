@@ -30,7 +30,7 @@ void check_fits_in_memory(const Scheme& scheme, const Level& base, int levels) {
   // A quad split turns the corners of a level into faces, then each quad into 4.
   double faces = base.face_count();
   for (int l = 0; l < levels; ++l)
-    faces = scheme.split == SplitKind::Quad && l == 0 ? double(base.corner_count()) : 4.0 * faces;
+    faces = scheme.split() == SplitKind::Quad && l == 0 ? double(base.corner_count()) : 4.0 * faces;
   const double need = faces * kBytesPerFace, have = available_bytes();
   if (need > have)
     throw Error(fmt::format("{} levels would make about {:.3g} faces and need about {:.1f} GiB, but "

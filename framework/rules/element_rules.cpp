@@ -1,0 +1,213 @@
+#include "framework/rules/element_rules.h"
+
+#include <fmt/format.h>
+
+#include "framework/rules/feature_curve.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+Element element_of(NewPoint kind) {
+  return kind == NewPoint::Face ? Element::Face : kind == NewPoint::Edge ? Element::Edge : Element::Vertex;
+}
+
+// Adds a point of a role: a parent vertex, or (with "new") the new point of an element.
+void add_point(RowBuilder& row, const RuleInputs& in, const CompiledTerm& term, Index element, double w) {
+  if (term.new_point == NewPoint::None) return row.add(element, w);
+  const Element kind = element_of(term.new_point);
+  const RowBlock* block = in.blocks[int(kind)];
+  if (!block)
+    throw Error(fmt::format("{}: uses new {} points, which this step does not make", term.where, element_name(kind)));
+  const Index r = (*in.block_row_of_element[int(kind)])[element];
+  if (r == kNone)
+    throw Error(fmt::format("{}: {} {} has no new point in this step", term.where, element_name(kind), element));
+  row.add_row(*block, r, w);
+}
+
+[[noreturn]] void wrong_role(const CompiledTerm& t, Element e) {
+  throw Error(fmt::format("{}: role '{}' is not a {} role", t.where, role_name(t.role), element_name(e)));
+}
+
+// The vertex of triangle f that is not a or b.
+Index third_vertex(const Level& L, Index f, Index a, Index b, const CompiledTerm& t) {
+  if (L.face_size(f) != 3)
+    throw Error(fmt::format("{}: role '{}' needs triangles, but face {} has {} vertices", t.where,
+                            role_name(t.role), f, L.face_size(f)));
+  for (Index u : L.face(f))
+    if (u != a && u != b) return u;
+  return kNone;
+}
+
+// Adds the vertex across edge (p, q) from r, in the triangle beyond; where there is none
+// (a boundary), the reflection p + q - r keeps linear precision.
+void add_across(RowBuilder& row, const Level& L, Index p, Index q, Index r, double w, const CompiledTerm& t) {
+  const Index e = find_edge(L, p, q);
+  const Index f0 = L.edge_faces[2 * e], f1 = L.edge_faces[2 * e + 1];
+  if (f1 == kNone) {
+    row.add(p, w), row.add(q, w), row.add(r, -w);
+    return;
+  }
+  const Index f = third_vertex(L, f0, p, q, t) == r ? f1 : f0;
+  row.add(third_vertex(L, f, p, q, t), w);
+}
+
+// The ring of `end`, counted CCW from edge e (j = 0 is the edge's other end).
+void add_end_ring(RowBuilder& row, const Level& L, Index e, Index end, const CompiledTerm& t, int n0, int n1,
+                  double scale) {
+  const auto ring = L.ring_edges(end);
+  const int n = int(ring.size());
+  int start = 0;
+  while (start < n && ring[start] != e) ++start;
+  for (int j = 0; j < n; ++j) row.add(L.other_end(ring[(start + j) % n], end), scale * t.weight(2, 0, j, n0, n1));
+}
+
+}  // namespace
+
+void apply_segment_curve_rule(RowBuilder& row, const RuleInputs& in, Index e, Index a, Index b,
+                              const CompiledRule& rule, double scale) {
+  const Level& L = in.parent;
+  // The curve edge beyond `end`, away from e, or kNone where the curve ends there.
+  auto beyond = [&](Index end) -> Index {
+    const VertexContext& vc = in.features.vertices[end];
+    if (vc.parent != Context::Crease) return kNone;
+    const auto ring = L.ring_edges(end);
+    const Index x = ring[vc.parent_crease[0]], y = ring[vc.parent_crease[1]];
+    return x == e ? y : x;
+  };
+  for (const CompiledTerm& t : rule.terms) {
+    for (size_t i = 0; i < t.curve_weights.size(); ++i) {
+      const int offset = t.curve_start + int(i);
+      const double w = scale * t.curve_weights[i];
+      if (offset == 0) row.add(a, w);
+      else if (offset == 1) row.add(b, w);
+      else if (offset < 0) {
+        const Index back = beyond(a);
+        if (back != kNone) add_curve_point(row, L, in.features, a, back, -offset, w);
+        else row.add(a, w * (1 - offset)), row.add(b, w * offset);  // extrapolate past a
+      } else {
+        const Index forward = beyond(b);
+        if (forward != kNone) add_curve_point(row, L, in.features, b, forward, offset - 1, w);
+        else row.add(b, w * offset), row.add(a, -w * (offset - 1));  // extrapolate past b
+      }
+    }
+  }
+}
+
+void apply_vertex_rule(RowBuilder& row, const RuleInputs& in, Index v, const CompiledRule& rule,
+                       const std::array<std::uint16_t, 2>& crease, double scale) {
+  const Level& L = in.parent;
+  const auto ring = L.ring_edges(v);
+  const auto faces = L.ring_faces(v);
+  const int n = int(ring.size());
+  for (const CompiledTerm& t : rule.terms) {
+    switch (t.role) {
+      case Role::Self: row.add(v, scale * t.weight(n, 0, 0)); break;
+      case Role::Ring:
+        for (int j = 0; j < n; ++j) row.add(L.other_end(ring[j], v), scale * t.weight(n, 0, j));
+        break;
+      case Role::Faces:
+        for (int j = 0; j < int(faces.size()); ++j)
+          add_point(row, in, t, faces[j], scale * t.weight(n, L.face_size(faces[j]), j));
+        break;
+      case Role::FaceCentroids:
+        for (int j = 0; j < int(faces.size()); ++j) {
+          const int k = L.face_size(faces[j]);
+          const double w = scale * t.weight(n, k, j) / k;
+          for (Index u : L.face(faces[j])) row.add(u, w);
+        }
+        break;
+      case Role::Edges:
+        for (int j = 0; j < n; ++j) add_point(row, in, t, ring[j], scale * t.weight(n, 0, j));
+        break;
+      case Role::Curve:
+        // Offsets <= 0 walk out along the first crease edge, > 0 along the second.
+        for (size_t i = 0; i < t.curve_weights.size(); ++i) {
+          const int offset = t.curve_start + int(i);
+          const double w = scale * t.curve_weights[i];
+          if (offset <= 0) add_curve_point(row, L, in.features, v, ring[crease[0]], -offset, w);
+          else add_curve_point(row, L, in.features, v, ring[crease[1]], offset, w);
+        }
+        break;
+      default: wrong_role(t, Element::Vertex);
+    }
+  }
+}
+
+void apply_edge_rule(RowBuilder& row, const RuleInputs& in, Index e, const CompiledRule& rule, double scale) {
+  const Level& L = in.parent;
+  const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
+  const Index faces[2] = {L.edge_faces[2 * e], L.edge_faces[2 * e + 1]};
+  const int face_count = faces[1] == kNone ? 1 : 2;
+  const int n0 = L.valence(a), n1 = L.valence(b);
+  for (const CompiledTerm& t : rule.terms) {
+    switch (t.role) {
+      case Role::Ends:
+        row.add(a, scale * t.weight(2, 0, 0, n0, n1));
+        row.add(b, scale * t.weight(2, 0, 1, n0, n1));
+        break;
+      case Role::Faces:
+        for (int j = 0; j < face_count; ++j)
+          add_point(row, in, t, faces[j], scale * t.weight(2, L.face_size(faces[j]), j, n0, n1));
+        break;
+      case Role::Opposite:
+      case Role::Wings:
+        for (int j = 0; j < face_count; ++j)
+          row.add(third_vertex(L, faces[j], a, b, t), scale * t.weight(2, 3, j, n0, n1));
+        break;
+      case Role::FarWings:
+        // Triangle j runs (p, q, c); its far wings lie across (q, c) and (c, p).
+        for (int j = 0; j < face_count; ++j) {
+          const Index p = j == 0 ? a : b, q = j == 0 ? b : a;
+          const Index c = third_vertex(L, faces[j], a, b, t);
+          add_across(row, L, q, c, p, scale * t.weight(2, 3, 2 * j, n0, n1), t);
+          add_across(row, L, c, p, q, scale * t.weight(2, 3, 2 * j + 1, n0, n1), t);
+        }
+        break;
+      case Role::EndRing0: add_end_ring(row, L, e, a, t, n0, n1, scale); break;
+      case Role::EndRing1: add_end_ring(row, L, e, b, t, n0, n1, scale); break;
+      case Role::Curve: {
+        CompiledRule single;
+        single.terms.push_back(t);
+        apply_segment_curve_rule(row, in, e, a, b, single, scale);
+        break;
+      }
+      default: wrong_role(t, Element::Edge);
+    }
+  }
+}
+
+void apply_face_rule(RowBuilder& row, const RuleInputs& in, Index f, const CompiledRule& rule) {
+  const Level& L = in.parent;
+  const auto verts = L.face(f);
+  const auto edges = L.face_edge_list(f);
+  const int k = int(verts.size());
+  for (const CompiledTerm& t : rule.terms) {
+    switch (t.role) {
+      case Role::Vertices:
+        for (int j = 0; j < k; ++j) add_point(row, in, t, verts[j], t.weight(k, k, j));
+        break;
+      case Role::Edges:
+        for (int j = 0; j < k; ++j) add_point(row, in, t, edges[j], t.weight(k, k, j));
+        break;
+      default: wrong_role(t, Element::Face);
+    }
+  }
+}
+
+void apply_corner_rule(RowBuilder& row, const RuleInputs& in, Index f, int corner, const CompiledRule& rule, double scale) {
+  const Level& L = in.parent;
+  const auto verts = L.face(f);
+  const int k = int(verts.size());
+  for (const CompiledTerm& t : rule.terms) {
+    switch (t.role) {
+      case Role::Self: row.add(verts[corner], scale * t.weight(k, k, 0)); break;
+      case Role::Vertices:
+        for (int j = 0; j < k; ++j) row.add(verts[(corner + j) % k], scale * t.weight(k, k, j));
+        break;
+      default: wrong_role(t, Element::Corner);
+    }
+  }
+}
+
+}  // namespace subdiv
