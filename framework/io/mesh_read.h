@@ -9,7 +9,9 @@ namespace subdiv {
 // Reads .obj (with 'l' polylines and 't crease' / 't corner' tags), .off, .ply, .stl,
 // .om, .vtp and .vtk, chosen by the extension (any case). OBJ, OFF and PLY keep
 // non-manifold faces as written so that the engine can name the problem; STL and OM go
-// through OpenMesh, which cannot hold them, and are refused when OpenMesh had to split.
+// through OpenMesh, which cannot hold them, and STL is refused when OpenMesh had to split.
+// VTK files give polygons as faces, lines as polylines, strips as triangles; files from
+// write_vtp also give back their crease and corner tags.
 //
 // Throws subdiv::Error naming the file and, for text formats, the line: missing file,
 // unknown extension, syntax errors, indices out of range, non-finite coordinates, faces
