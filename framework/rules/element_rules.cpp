@@ -120,6 +120,9 @@ void apply_vertex_rule(RowBuilder& row, const RuleInputs& in, Index v, const Com
       case Role::Edges:
         for (int j = 0; j < n; ++j) add_point(row, in, t, ring[j], scale * t.weight(n, 0, j));
         break;
+      case Role::CreaseNeighbours:
+        for (int j = 0; j < 2; ++j) row.add(L.other_end(ring[crease[j]], v), scale * t.weight(n, 0, j));
+        break;
       case Role::Curve:
         // Offsets <= 0 walk out along the first crease edge, > 0 along the second.
         for (size_t i = 0; i < t.curve_weights.size(); ++i) {

@@ -157,6 +157,14 @@ std::vector<NamedFormula> parse_definitions(const Json& root, const Place& at,
   return defs;
 }
 
+std::string roles_of(Element element) {
+  std::string list;
+  for (int r = 0; r <= int(Role::Curve); ++r)
+    if (Role(r) != Role::Curve && role_allowed(element, Role(r)))
+      list += (list.empty() ? "" : ", ") + std::string(role_name(Role(r)));
+  return list;
+}
+
 Term parse_term(const Json& j, Element element, const Place& at) {
   check_keys(j, {"at", "sum", "new", "w"}, at);
   Term t;
@@ -167,9 +175,7 @@ Term parse_term(const Json& j, Element element, const Place& at) {
   auto role = role_from_name(name);
   if (!role || *role == Role::Curve)
     fail(at, fmt::format("unknown role '{}'; {} rules may use: {}", name, element_name(element),
-                         element == Element::Vertex ? "self, ring, faces, edges"
-                         : element == Element::Edge ? "ends, faces, opposite"
-                                                    : "vertices, edges"));
+                         roles_of(element)));
   if (!role_allowed(element, *role))
     fail(at, fmt::format("role '{}' does not exist around a {}", name, element_name(element)));
   if (single && *role != Role::Self) fail(at, fmt::format("role '{}' has several points: write \"sum\": \"{}\"", name, name));
@@ -218,6 +224,9 @@ RuleTable parse_rules(const Json& rules, const Place& at, const std::set<std::st
       auto ctx = context_from_name(it.key());
       if (!ctx) fail(here, fmt::format("unknown context '{}'; use smooth, dart, crease or corner", it.key()));
       table[e][int(*ctx)] = parse_rule(it.value(), Element(e), here / it.key());
+      for (const Term& t : table[e][int(*ctx)]->terms)
+        if (t.role == Role::CreaseNeighbours && *ctx != Context::Crease)
+          fail(here / it.key(), "role 'crease-neighbours' exists only in crease rules");
     }
     if (!table[e][int(Context::Smooth)]) fail(here, "the smooth rule is required");
   }
@@ -246,7 +255,33 @@ std::set<std::string> elements_of_split(SplitKind split) {
 
 // Either "split" + "rules" (one step), or "steps": [{"split": .., "rules": ..},
 // {"smooth": {"vertex": ..}}, ...] with the split first.
-std::vector<StepRules> parse_steps(const Json& root, const Place& at) {
+struct Repeat {
+  size_t step;
+  std::string formula, where;
+};
+
+// A smoothing pass may repeat a number of times given by a formula of the parameters
+// (e.g. (d - 1)/2 for the degree-d quad B-spline); the passes are unrolled here.
+std::vector<StepRules> unroll_repeats(std::vector<StepRules> steps, const std::vector<Repeat>& repeats,
+                                      const Scheme& scheme) {
+  if (repeats.empty()) return steps;
+  FormulaSet formulas(scheme.parameter_values(), scheme.definitions);
+  std::vector<StepRules> out;
+  for (size_t i = 0; i < steps.size(); ++i) {
+    int count = 1;
+    for (const Repeat& r : repeats) {
+      if (r.step != i) continue;
+      const double v = formulas.evaluate(formulas.add(r.formula, r.where), {});
+      if (!(v >= 0) || v != std::floor(v) || v > 64)
+        throw Error(fmt::format("{}: repeat '{}' gives {}, not a whole number from 0 to 64", r.where, r.formula, v));
+      count = int(v);
+    }
+    for (int c = 0; c < count; ++c) out.push_back(steps[i]);
+  }
+  return out;
+}
+
+std::vector<StepRules> parse_steps(const Json& root, const Place& at, std::vector<Repeat>& repeats) {
   std::vector<StepRules> steps;
   if (!root.contains("steps")) {
     StepRules step;
@@ -265,11 +300,14 @@ std::vector<StepRules> parse_steps(const Json& root, const Place& at) {
     StepRules step;
     step.where = here.str();
     if (list[i].contains("smooth")) {
-      check_keys(list[i], {"smooth"}, here);
+      check_keys(list[i], {"smooth", "repeat"}, here);
       if (i == 0) fail(here, "the first step must be a split");
       step.is_split = false;
       step.curve_rules_apply = false;
       step.rules = parse_rules(list[i]["smooth"], here / "smooth", {"vertex"});
+      if (list[i].contains("repeat")) {
+        repeats.push_back({steps.size(), as_formula(list[i]["repeat"], here / "repeat"), (here / "repeat").str()});
+      }
     } else {
       check_keys(list[i], {"split", "rules"}, here);
       if (i != 0) fail(here, "only the first step may be a split; later steps are smoothing passes");
@@ -392,7 +430,9 @@ std::shared_ptr<const Scheme> load_surface_scheme(const std::filesystem::path& p
   std::set<std::string> used;
   s->parameters = parse_parameters(root, at, overrides, &used);
   s->definitions = parse_definitions(root, at, s->parameters);
-  s->steps = parse_steps(root, at);
+  std::vector<Repeat> repeats;
+  s->steps = parse_steps(root, at, repeats);
+  s->steps = unroll_repeats(std::move(s->steps), repeats, *s);
   if (root.contains("curve")) {
     // Overrides the surface scheme does not take go to its curve scheme (e.g. a tension).
     ParameterOverrides curve_overrides;

@@ -33,9 +33,11 @@ OutputLevel describe_level(const Hierarchy& h, int l, const MeshData& mesh, std:
   if (l > 0) {
     const ChildOrigins& o = h.origins[l - 1];
     for (Index v = 0; v < L.vertex_count; ++v) origin.values[v] = double(int(o.kind[v]));
+    // Faces made around edges and vertices (dual splits) lie in no single parent face: -1.
     for (Index f = 0; f < L.face_count(); ++f) {
-      parent.values[f] = o.parent_face[f];
-      next_base[f] = base_face[o.parent_face[f]];
+      const Index p = o.parent_face[f];
+      parent.values[f] = p;
+      next_base[f] = p == kNone ? -1.0 : base_face[p];
     }
   }
   base_face = std::move(next_base);
