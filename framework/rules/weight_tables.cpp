@@ -107,10 +107,15 @@ WeightTables prepare_weight_tables(const StepRules& step, const Scheme& scheme, 
     tables.curve_arity = scheme.curve->arity;
     for (int r = 0; r < scheme.curve->arity; ++r) tables.curve_rules.push_back(curve_rule(*scheme.curve, r, level));
   }
-  // Smoothing passes do not refine feature curves: without a stated rule, they stay.
+  // In schemes with smoothing passes the curve scheme describes the result of the whole
+  // level: the split's features follow its own (linear) smooth rules, and a smoothing pass
+  // without a stated crease rule leaves feature vertices where they are.
   if (!step.curve_rules_apply) {
-    auto& vertex = tables.rules[int(Element::Vertex)];
-    if (!vertex[int(Context::Crease)].defined) vertex[int(Context::Crease)] = stay_rule();
+    for (Element e : {Element::Vertex, Element::Edge, Element::Corner}) {
+      auto& r = tables.rules[int(e)];
+      if (r[int(Context::Crease)].defined) continue;
+      r[int(Context::Crease)] = step.is_split || e != Element::Vertex ? r[int(Context::Smooth)] : stay_rule();
+    }
   }
   return tables;
 }

@@ -38,7 +38,9 @@ struct StepRules {
   bool is_split = true;
   SplitKind split = SplitKind::Quad;
   RuleTable rules;
-  bool curve_rules_apply = true;  // smoothing passes do not refine feature curves
+  // Whether crease/boundary defaults come from the curve scheme: true for single-step
+  // schemes; in schemes with smoothing passes the passes shape the features instead.
+  bool curve_rules_apply = true;
   std::string where;
 };
 

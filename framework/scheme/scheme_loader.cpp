@@ -433,6 +433,7 @@ std::shared_ptr<const Scheme> load_surface_scheme(const std::filesystem::path& p
   std::vector<Repeat> repeats;
   s->steps = parse_steps(root, at, repeats);
   s->steps = unroll_repeats(std::move(s->steps), repeats, *s);
+  if (s->steps.size() > 1) s->steps.front().curve_rules_apply = false;
   if (root.contains("curve")) {
     // Overrides the surface scheme does not take go to its curve scheme (e.g. a tension).
     ParameterOverrides curve_overrides;
