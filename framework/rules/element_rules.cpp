@@ -120,6 +120,16 @@ void apply_vertex_rule(RowBuilder& row, const RuleInputs& in, Index v, const Com
       case Role::Edges:
         for (int j = 0; j < n; ++j) add_point(row, in, t, ring[j], scale * t.weight(n, 0, j));
         break;
+      case Role::Diagonals:
+        for (int j = 0; j < int(faces.size()); ++j) {
+          const Index f = faces[j];
+          if (L.face_size(f) != 4)
+            throw Error(fmt::format("{}: role 'diagonals' needs quads, but face {} has {} vertices", t.where, f,
+                                    L.face_size(f)));
+          const int c = L.vertex_face_corner[L.vertex_face_offsets[v] + j];
+          row.add(L.face(f)[(c + 2) % 4], scale * t.weight(n, 4, j));
+        }
+        break;
       case Role::CreaseNeighbours:
         for (int j = 0; j < 2; ++j) row.add(L.other_end(ring[crease[j]], v), scale * t.weight(n, 0, j));
         break;

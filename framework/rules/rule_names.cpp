@@ -4,7 +4,7 @@
 namespace subdiv {
 namespace {
 
-constexpr std::array<std::pair<Role, std::string_view>, 14> kRoleNames{{
+constexpr std::array<std::pair<Role, std::string_view>, 15> kRoleNames{{
     {Role::Self, "self"},
     {Role::Ring, "ring"},
     {Role::Faces, "faces"},
@@ -14,6 +14,7 @@ constexpr std::array<std::pair<Role, std::string_view>, 14> kRoleNames{{
     {Role::Vertices, "vertices"},
     {Role::FaceCentroids, "face-centroids"},
     {Role::CreaseNeighbours, "crease-neighbours"},
+    {Role::Diagonals, "diagonals"},
     {Role::Wings, "wings"},
     {Role::FarWings, "far-wings"},
     {Role::EndRing0, "end-ring-0"},
@@ -62,7 +63,7 @@ bool role_allowed(Element element, Role role) {
   switch (element) {
     case Element::Vertex:
       return role == Role::Self || role == Role::Ring || role == Role::Faces ||
-             role == Role::Edges || role == Role::FaceCentroids || role == Role::CreaseNeighbours ||
+             role == Role::Edges || role == Role::FaceCentroids || role == Role::CreaseNeighbours || role == Role::Diagonals ||
              role == Role::Curve;
     case Element::Edge:
       return role == Role::Ends || role == Role::Faces || role == Role::Opposite ||

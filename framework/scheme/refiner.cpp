@@ -43,15 +43,26 @@ StencilTable step_stencils(const Scheme& scheme, const StepRules& step, const Le
   return build_step_stencils({parent, origins, tables, features, features_refined, scheme.path});
 }
 
+// The scheme of each level, in order.
+std::vector<const Scheme*> schemes_per_level(std::span<const SchemeRun> runs) {
+  std::vector<const Scheme*> per_level;
+  for (const SchemeRun& run : runs) {
+    if (run.levels < 0) throw Error(fmt::format("scheme '{}' is given {} levels; give 0 or more", run.scheme->name, run.levels));
+    per_level.insert(per_level.end(), size_t(run.levels), run.scheme);
+  }
+  return per_level;
+}
+
 }  // namespace
 
-Hierarchy refine_topology(const Scheme& scheme, Level base, const RefineOptions& options) {
-  if (options.levels < 0) throw Error(fmt::format("--levels must be 0 or more, not {}", options.levels));
-  check_face_sizes(scheme, base);
+Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const RefineOptions& options) {
+  const std::vector<const Scheme*> per_level = schemes_per_level(runs);
   Hierarchy h;
   h.levels.push_back(std::move(base));
-  for (int l = 0; l < options.levels; ++l) {
-    SplitResult step = split(scheme.split(), h.levels.back(), options.first_step + l);
+  for (size_t l = 0; l < per_level.size(); ++l) {
+    const Scheme& scheme = *per_level[l];
+    if (l == 0 || per_level[l - 1] != per_level[l]) check_face_sizes(scheme, h.levels.back());
+    SplitResult step = split(scheme.split(), h.levels.back(), options.first_step + int(l));
     if (scheme.split() == SplitKind::Quad || scheme.split() == SplitKind::Triangle)
       propagate_tags(h.levels.back(), step, options.crease_method);
     h.levels.push_back(std::move(step.child));
@@ -61,9 +72,14 @@ Hierarchy refine_topology(const Scheme& scheme, Level base, const RefineOptions&
   return h;
 }
 
-void build_stencils(const Scheme& scheme, Hierarchy& h, const RefineOptions& options) {
+void build_stencils(std::span<const SchemeRun> runs, Hierarchy& h, const RefineOptions& options) {
+  const std::vector<const Scheme*> per_level = schemes_per_level(runs);
+  if (per_level.size() + 1 != h.levels.size())
+    throw Error(fmt::format("build_stencils: the runs give {} levels but the hierarchy has {}", per_level.size(),
+                            h.levels.size() - 1));
   h.stencils.clear();
-  for (size_t l = 0; l + 1 < h.levels.size(); ++l) {
+  for (size_t l = 0; l < per_level.size(); ++l) {
+    const Scheme& scheme = *per_level[l];
     const int level = options.first_step + int(l);
     StencilTable table = step_stencils(scheme, scheme.steps.front(), h.levels[l], h.origins[l],
                                        h.features_refined[l], level, options);
@@ -74,6 +90,23 @@ void build_stencils(const Scheme& scheme, Hierarchy& h, const RefineOptions& opt
     }
     h.stencils.push_back(std::move(table));
   }
+}
+
+Hierarchy refine(std::span<const SchemeRun> runs, Level base, const RefineOptions& options) {
+  Hierarchy h = refine_topology(runs, std::move(base), options);
+  build_stencils(runs, h, options);
+  return h;
+}
+
+Hierarchy refine_topology(const Scheme& scheme, Level base, const RefineOptions& options) {
+  if (options.levels < 0) throw Error(fmt::format("--levels must be 0 or more, not {}", options.levels));
+  const SchemeRun run{&scheme, options.levels};
+  return refine_topology(std::span(&run, 1), std::move(base), options);
+}
+
+void build_stencils(const Scheme& scheme, Hierarchy& h, const RefineOptions& options) {
+  const SchemeRun run{&scheme, int(h.levels.size()) - 1};
+  build_stencils(std::span(&run, 1), h, options);
 }
 
 Hierarchy refine(const Scheme& scheme, Level base, const RefineOptions& options) {

@@ -33,12 +33,22 @@ struct Hierarchy {
   std::vector<bool> features_refined;  // per step: were boundaries and creases refined
 };
 
+// A scheme applied for a number of levels. Runs apply in order, so seed 001's two-step
+// Catmull-Clark is {catmull-clark-shape, 1}, {catmull-clark, 3}.
+struct SchemeRun {
+  const Scheme* scheme = nullptr;
+  int levels = 0;
+};
+
 // Refines topology only (levels and origins), as OpenSubdiv's RefineUniform does.
 Hierarchy refine_topology(const Scheme& scheme, Level base, const RefineOptions& options);
+Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const RefineOptions& options);
 // Builds the stencil tables for a refined hierarchy.
 void build_stencils(const Scheme& scheme, Hierarchy& hierarchy, const RefineOptions& options);
-// Both of the above.
+void build_stencils(std::span<const SchemeRun> runs, Hierarchy& hierarchy, const RefineOptions& options);
+// Both of the above. With runs, options.levels is ignored: the runs say how many.
 Hierarchy refine(const Scheme& scheme, Level base, const RefineOptions& options);
+Hierarchy refine(std::span<const SchemeRun> runs, Level base, const RefineOptions& options);
 
 // Values (channels per vertex) of the base level carried to level `to_level`.
 std::vector<double> interpolate(const Hierarchy& hierarchy, int to_level,

@@ -18,6 +18,7 @@ struct ParameterSpec {
   bool is_choice = false;
   double value = 0, minimum = 0, maximum = 0;  // numeric parameters
   bool has_minimum = false, has_maximum = false;
+  bool minimum_exclusive = false, maximum_exclusive = false;
   std::string choice;                           // choice parameters: the chosen value
   std::vector<std::string> choices;
 };

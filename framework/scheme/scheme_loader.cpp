@@ -68,7 +68,7 @@ double parse_number(const std::string& text, const Place& at) {
 }
 
 ParameterSpec parse_parameter(const std::string& name, const Json& spec, const Place& at) {
-  check_keys(spec, {"default", "min", "max", "choices", "description"}, at);
+  check_keys(spec, {"default", "min", "max", "min_exclusive", "max_exclusive", "choices", "description"}, at);
   ParameterSpec p;
   p.name = name;
   p.description = optional_string(spec, "description");
@@ -83,6 +83,8 @@ ParameterSpec parse_parameter(const std::string& name, const Json& spec, const P
   p.value = def.get<double>();
   if (spec.contains("min")) p.has_minimum = true, p.minimum = spec["min"].get<double>();
   if (spec.contains("max")) p.has_maximum = true, p.maximum = spec["max"].get<double>();
+  p.minimum_exclusive = spec.value("min_exclusive", false);
+  p.maximum_exclusive = spec.value("max_exclusive", false);
   return p;
 }
 
@@ -106,11 +108,13 @@ void check_range(const ParameterSpec& p, const std::string& file) {
       fail({file, "parameters." + p.name}, fmt::format("default '{}' is not among the choices", p.choice));
     return;
   }
-  if ((p.has_minimum && p.value < p.minimum) || (p.has_maximum && p.value > p.maximum))
+  const bool below = p.has_minimum && (p.value < p.minimum || (p.minimum_exclusive && p.value == p.minimum));
+  const bool above = p.has_maximum && (p.value > p.maximum || (p.maximum_exclusive && p.value == p.maximum));
+  if (below || above)
     fail({file, "parameters." + p.name},
-         fmt::format("{} = {} is outside its range [{}, {}]", p.name, p.value,
+         fmt::format("{} = {} is outside its range {}{}, {}{}", p.name, p.value, p.minimum_exclusive ? "(" : "[",
                      p.has_minimum ? fmt::format("{}", p.minimum) : "-inf",
-                     p.has_maximum ? fmt::format("{}", p.maximum) : "inf"));
+                     p.has_maximum ? fmt::format("{}", p.maximum) : "inf", p.maximum_exclusive ? ")" : "]"));
 }
 
 std::vector<ParameterSpec> parse_parameters(const Json& root, const Place& at,

@@ -10,6 +10,7 @@
 #include "framework/scheme/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
+#include "framework/scheme/scheme_sequence.h"
 #include "framework/util/error.h"
 #include "level_output.h"
 #include "memory_guard.h"
@@ -24,6 +25,7 @@ struct RefineArgs {
   std::vector<std::string> params;
   std::string boundary = "edges-and-corners", crease_method = "uniform";
   int threads = 0;
+  int start_level = 0;
   bool quiet = false;
 };
 
@@ -46,6 +48,7 @@ RefineOptions refine_options(const RefineArgs& a) {
                : a.boundary == "edges" ? BoundaryInterpolation::EdgesOnly
                                        : BoundaryInterpolation::EdgesAndCorners;
   o.crease_method = a.crease_method == "chaikin" ? CreaseMethod::Chaikin : CreaseMethod::Uniform;
+  o.first_step = a.start_level;
   return o;
 }
 
@@ -59,22 +62,22 @@ void run(const RefineArgs& a) {
   std::unique_ptr<tbb::global_control> thread_limit;
   if (a.threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
-  const auto scheme = load_scheme(a.scheme, parse_params(a.params));
+  const SchemeSequence seq = load_scheme_sequence(a.scheme, a.levels, parse_params(a.params));
   const MeshData mesh = read_mesh(a.mesh);
   if (mesh.face_count() == 0)
     throw Error(fmt::format("{}: the mesh has no faces to refine", a.mesh));
   Level base = level_from_mesh(mesh, a.mesh);
-  check_fits_in_memory(*scheme, base, a.levels);
+  check_fits_in_memory(*seq.schemes.front(), base, seq.total_levels);
 
   const RefineOptions options = refine_options(a);
   Progress progress;
-  progress.say(fmt::format("refining topology: {} levels of {}", a.levels, scheme->name));
-  Hierarchy h = refine_topology(*scheme, std::move(base), options);
+  progress.say(fmt::format("refining topology: {} levels of {}", seq.total_levels, a.scheme));
+  Hierarchy h = refine_topology(seq.runs, std::move(base), options);
   progress.say("building stencils");
-  build_stencils(*scheme, h, options);
+  build_stencils(seq.runs, h, options);
   std::vector<std::vector<double>> positions{mesh.positions};
-  for (int l = 0; l < a.levels; ++l) {
-    progress.say(fmt::format("level {}/{}: {} faces", l + 1, a.levels, h.levels[l + 1].face_count()));
+  for (int l = 0; l < seq.total_levels; ++l) {
+    progress.say(fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
     positions.push_back(h.stencils[l].apply(positions.back(), 3));
   }
   progress.say(fmt::format("writing {}", a.output));
@@ -82,8 +85,8 @@ void run(const RefineArgs& a) {
   progress.done();
   if (!a.quiet) {
     const Level& fine = h.levels.back();
-    fmt::print("{}: {} level(s) of {} -> {} vertices, {} faces in {:.3f} s -> {}\n", a.mesh, a.levels,
-               scheme->name, fine.vertex_count, fine.face_count(), seconds_since(t0), a.output);
+    fmt::print("{}: {} level(s) of {} -> {} vertices, {} faces in {:.3f} s -> {}\n", a.mesh, seq.total_levels,
+               a.scheme, fine.vertex_count, fine.face_count(), seconds_since(t0), a.output);
   }
 }
 
@@ -93,7 +96,9 @@ void add_refine_command(CLI::App& app) {
   auto args = std::make_shared<RefineArgs>();
   auto* cmd = app.add_subcommand("refine", "Refine a mesh with a scheme and write the result");
   cmd->add_option("mesh", args->mesh, "Input mesh (" + supported_input_formats() + ")")->required();
-  cmd->add_option("-s,--scheme", args->scheme, "Scheme name (see `subdiv schemes`) or path to a .json file")
+  cmd->add_option("-s,--scheme", args->scheme,
+                  "Scheme name (see `subdiv schemes`) or path to a .json file; a sequence A:1,B:3 applies A "
+                  "for one level, then B for three (a name without :N takes the rest of --levels)")
       ->capture_default_str();
   cmd->add_option("-l,--levels", args->levels, "Number of refinement levels")->check(CLI::Range(0, 30))->capture_default_str();
   cmd->add_option("-o,--output", args->output,
@@ -109,6 +114,11 @@ void add_refine_command(CLI::App& app) {
       ->check(CLI::IsMember({"uniform", "chaikin"}))
       ->capture_default_str();
   cmd->add_option("-j,--threads", args->threads, "Worker threads (0: all cores); results are identical for any count")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--start-level", args->start_level,
+                  "How many steps the input has already been refined (schemes whose steps alternate, like "
+                  "sqrt3's boundary trisection, and level-dependent schemes count from the original mesh)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");

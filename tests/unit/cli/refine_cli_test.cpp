@@ -88,7 +88,7 @@ TEST_CASE("bad input: clear message, non-zero exit, no output file") {
   check_refused("refine " + (dir / "missing.obj").string(), out, "missing.obj");
   check_refused("refine " + source_path("examples/meshes/cube.obj") + " --scheme loop", out, "needs triangles");
   check_refused("refine " + source_path("examples/meshes/cube.obj") + " --scheme nosuch", out, "unknown scheme 'nosuch'");
-  check_refused("refine " + source_path("examples/meshes/cube.obj") + " --param nope=1", out, "no parameter 'nope'");
+  check_refused("refine " + source_path("examples/meshes/cube.obj") + " --param nope=1", out, "has a parameter 'nope'");
 
   std::ofstream(dir / "nan.obj") << "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n";
   check_refused("refine " + (dir / "nan.obj").string(), out, "non-finite");
