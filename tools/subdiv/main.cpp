@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
              "Schemes are JSON files; see docs/scheme-format.md.");
   subdiv::cli::add_refine_command(app);
   subdiv::cli::add_schemes_command(app);
+  subdiv::cli::add_validate_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

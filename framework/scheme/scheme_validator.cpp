@@ -1,0 +1,177 @@
+#include "framework/scheme/scheme_validator.h"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <sstream>
+
+#include "framework/rules/weight_tables.h"
+#include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_loader.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+constexpr double kTolerance = 1e-12;
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The line where a rule's text first appears, so editors can jump to it.
+int line_of(const std::string& text, const std::string& needle) {
+  const size_t at = needle.empty() ? std::string::npos : text.find(needle);
+  if (at == std::string::npos) return 0;
+  return 1 + int(std::count(text.begin(), text.begin() + at, '\n'));
+}
+
+// The number of points a role has around an element of the given sizes; new points count
+// as one each because their own rows sum to one.
+int role_size(Role role, int n, int k, int n0, int n1) {
+  switch (role) {
+    case Role::Self: return 1;
+    case Role::Ring: case Role::Faces: case Role::Edges: case Role::FaceCentroids: case Role::Diagonals: return n;
+    case Role::CreaseNeighbours: case Role::Ends: case Role::Opposite: case Role::Wings: return 2;
+    case Role::FarWings: return 4;
+    case Role::EndRing0: return n0;
+    case Role::EndRing1: return n1;
+    case Role::Vertices: return k;
+    case Role::Curve: return 0;
+  }
+  return 0;
+}
+
+struct Sizes {
+  int n, k, n0, n1;
+};
+
+double weight_at(const CompiledTerm& t, const Sizes& s, int j, Element e) {
+  if (e == Element::Edge) return t.weight(2, t.role == Role::Faces ? s.k : 3, j, s.n0, s.n1);
+  if (e == Element::Face || e == Element::Corner) return t.weight(s.k, s.k, j);
+  return t.weight(s.n, s.k, j);
+}
+
+double rule_sum(const CompiledRule& rule, const Sizes& s, Element e) {
+  double sum = 0;
+  for (const auto& t : rule.terms) {
+    if (t.role == Role::Curve) {
+      for (double w : t.curve_weights) sum += w;
+      continue;
+    }
+    const int count = role_size(t.role, s.n, s.k, s.n0, s.n1);
+    for (int j = 0; j < count; ++j) sum += weight_at(t, s, j, e);
+  }
+  return sum;
+}
+
+// Reflection symmetry of a cyclic role: w(j) == w(count - j) (j = 0 is on the axis).
+std::string asymmetry(const CompiledRule& rule, const Sizes& s, Element e) {
+  for (const auto& t : rule.terms) {
+    const bool cyclic = t.role == Role::Ring || t.role == Role::Vertices || t.role == Role::EndRing0 ||
+                        t.role == Role::EndRing1 || t.role == Role::Faces || t.role == Role::Edges;
+    if (!cyclic) continue;
+    if ((t.role == Role::Faces || t.role == Role::Edges) && e == Element::Vertex) continue;  // offset by half a step
+    const int count = role_size(t.role, s.n, s.k, s.n0, s.n1);
+    const bool from_axis = e == Element::Corner || t.role == Role::EndRing0 || t.role == Role::EndRing1;
+    for (int j = 1; j < count; ++j) {
+      const int mirror = from_axis ? count - j : (e == Element::Vertex ? (count - j) % count : count - 1 - j);
+      const double a = weight_at(t, s, j, e), b = weight_at(t, s, mirror, e);
+      if (std::abs(a - b) > kTolerance)
+        return fmt::format("role '{}' is not symmetric: w(j={}) = {} but its mirror w(j={}) = {}", role_name(t.role), j,
+                           a, mirror, b);
+    }
+  }
+  if (e == Element::Edge && s.n0 == s.n1)
+    for (const auto& t : rule.terms)
+      if (t.role == Role::Ends && std::abs(weight_at(t, s, 0, e) - weight_at(t, s, 1, e)) > kTolerance)
+        return "the two ends get different weights although the edge is symmetric";
+  return {};
+}
+
+std::vector<Sizes> sizes_to_check(Element e, int lo, int hi, int face_size) {
+  std::vector<Sizes> out;
+  const int k_lo = face_size ? face_size : 3, k_hi = face_size ? face_size : 8;
+  if (e == Element::Vertex)
+    for (int n = lo; n <= hi; ++n) out.push_back({n, face_size ? face_size : 4, 0, 0});
+  else if (e == Element::Edge)
+    for (int a = lo; a <= hi; ++a)
+      for (int b = lo; b <= hi; ++b) out.push_back({2, face_size ? face_size : 4, a, b});
+  else
+    for (int k = k_lo; k <= k_hi; ++k) out.push_back({k, k, 0, 0});
+  return out;
+}
+
+int natural_face_size(const Scheme& s) {
+  if (s.required_face_size) return s.required_face_size;
+  return s.split() == SplitKind::Triangle || s.split() == SplitKind::Sqrt3 ? 3 : 0;
+}
+
+void check_step(const Scheme& scheme, const StepRules& step, const std::string& text, int lo, int hi,
+                ValidationReport& report) {
+  const WeightTables tables = prepare_weight_tables(step, scheme, hi, 8, 0);
+  const int face_size = natural_face_size(scheme);
+  for (int e = 0; e < kElementCount; ++e)
+    for (int c = 0; c < kContextCount; ++c) {
+      if (!step.rules[e][c]) continue;  // engine defaults are affine by construction
+      const CompiledRule& rule = tables.rules[e][c];
+      const Rule& source = *step.rules[e][c];
+      const std::string where = fmt::format("{}:{}: {} ({})", scheme.path,
+                                            line_of(text, source.terms.empty() ? "" : source.terms[0].weight),
+                                            source.where.substr(source.where.find(": ") + 2), context_name(Context(c)));
+      bool reported = false;
+      for (const Sizes& s : sizes_to_check(Element(e), lo, hi, face_size)) {
+        ++report.checks;
+        if (reported) continue;
+        const double sum = rule_sum(rule, s, Element(e));
+        const std::string at = Element(e) == Element::Edge ? fmt::format("n0={}, n1={}", s.n0, s.n1)
+                               : Element(e) == Element::Vertex ? fmt::format("n={}", s.n)
+                                                               : fmt::format("k={}", s.k);
+        if (!std::isfinite(sum) || std::abs(sum - 1) > 1e-9) {
+          report.errors.push_back({fmt::format("{}: weights sum to {} at {}, not 1 (every rule must be affine)", where, sum, at)});
+          reported = true;
+        } else if (std::string why = asymmetry(rule, s, Element(e)); !why.empty()) {
+          report.errors.push_back({fmt::format("{}: {} at {}", where, why, at)});
+          reported = true;
+        }
+      }
+    }
+}
+
+}  // namespace
+
+ValidationReport validate_scheme_file(const std::string& path, int lo, int hi) {
+  ValidationReport report;
+  try {
+    report.kind = scheme_file_kind(path);
+    if (report.kind == "curve") {
+      const auto curve = load_curve_scheme(path, {});
+      report.scheme_name = curve->name;
+      // Each rule of a curve scheme must be affine too.
+      FormulaSet formulas(curve->parameters, curve->definitions);
+      for (size_t r = 0; r < curve->weights.size(); ++r) {
+        double sum = 0;
+        for (size_t t = 0; t < curve->weights[r].size(); ++t)
+          sum += formulas.evaluate(formulas.add(curve->weights[r][t], path), {0, 0, double(t)});
+        ++report.checks;
+        if (std::abs(sum - 1) > 1e-9)
+          report.errors.push_back({fmt::format("{}:{}: rules[{}]: weights sum to {}, not 1", path,
+                                               line_of(read_text(path), curve->weights[r][0]), r, sum)});
+      }
+      return report;
+    }
+    const auto scheme = load_scheme(path);
+    report.scheme_name = scheme->name;
+    const std::string text = read_text(path);
+    for (const auto& step : scheme->steps) check_step(*scheme, step, text, lo, hi, report);
+  } catch (const Error& e) {
+    report.errors.push_back({e.what()});
+  }
+  return report;
+}
+
+}  // namespace subdiv

@@ -1,0 +1,23 @@
+#pragma once
+// `subdiv validate`: structural checks (the loader), then semantic checks over valences:
+// each rule is affine (weights sum to one) and symmetric where its neighbourhood is.
+#include <string>
+#include <vector>
+
+namespace subdiv {
+
+struct ValidationIssue {
+  std::string message;  // "file:line: rules.vertex (smooth): ..."
+};
+
+struct ValidationReport {
+  std::string scheme_name, kind;
+  std::vector<ValidationIssue> errors;
+  int checks = 0;  // how many (rule, valence) combinations were checked
+  bool ok() const { return errors.empty(); }
+};
+
+// Loads and checks a scheme file; load errors become the report's single error.
+ValidationReport validate_scheme_file(const std::string& path, int min_valence = 3, int max_valence = 16);
+
+}  // namespace subdiv

@@ -1,0 +1,33 @@
+// `subdiv validate FILE.json...`: check scheme files before using them.
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "framework/scheme/scheme_validator.h"
+#include "framework/util/error.h"
+
+namespace subdiv::cli {
+
+void add_validate_command(CLI::App& app) {
+  auto files = std::make_shared<std::vector<std::string>>();
+  auto range = std::make_shared<std::pair<int, int>>(3, 16);
+  auto* cmd = app.add_subcommand("validate",
+                                 "Check scheme files: structure, formulas, affine weights and symmetry for every valence");
+  cmd->add_option("files", *files, "Scheme files (.json) or built-in scheme names")->required();
+  cmd->add_option("--min-valence", range->first, "Smallest valence to check")->capture_default_str();
+  cmd->add_option("--max-valence", range->second, "Largest valence to check")->capture_default_str();
+  cmd->callback([files, range] {
+    int failed = 0;
+    for (const auto& file : *files) {
+      const ValidationReport r = validate_scheme_file(file, range->first, range->second);
+      if (r.ok()) {
+        fmt::print("{}: ok ({} scheme '{}', {} checks)\n", file, r.kind, r.scheme_name, r.checks);
+        continue;
+      }
+      ++failed;
+      for (const auto& e : r.errors) fmt::print(stderr, "{}\n", e.message);
+    }
+    if (failed) throw Error(fmt::format("{} of {} scheme file(s) failed validation", failed, files->size()));
+  });
+}
+
+}  // namespace subdiv::cli
