@@ -21,7 +21,13 @@ struct Job {
   int threads = 1;
   int repeat = 1;
   std::int64_t check_max = 0;  // at most about this many vertices sent back for the check
+  bool cpu_clock = false;      // time with the process CPU clock instead of the wall clock
 };
+
+// Milliseconds on the wall clock (steady) or on the process CPU clock (user + system time
+// of all threads: on a shared machine it does not count time spent waiting for a core,
+// but it adds up the threads, so it only compares like with like at --threads 1).
+double now_ms(bool cpu_clock);
 
 // Milliseconds of the best repetition (the one with the smallest total), and memory.
 struct Timings {

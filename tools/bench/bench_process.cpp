@@ -1,4 +1,7 @@
 // Memory figures and small helpers shared by the sides.
+#include <time.h>
+
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -20,6 +23,15 @@ std::int64_t status_field_bytes(const char* field) {
 }
 
 }  // namespace
+
+double now_ms(bool cpu_clock) {
+  if (cpu_clock) {
+    timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) * 1e-6;
+  }
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 
 std::int64_t current_rss_bytes() { return status_field_bytes("VmRSS"); }
 std::int64_t peak_rss_bytes() { return status_field_bytes("VmHWM"); }

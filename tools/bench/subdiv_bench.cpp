@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -139,7 +140,8 @@ RunResult run_worker(const Job& job) {
                                    "--levels", std::to_string(job.level),
                                    "--threads", std::to_string(job.threads),
                                    "--repeat", std::to_string(job.repeat),
-                                   "--check-max", std::to_string(job.check_max)};
+                                   "--check-max", std::to_string(job.check_max),
+                                   "--clock", job.cpu_clock ? "cpu" : "wall"};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -328,8 +330,12 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
 #endif
   if (!want_subdivkit && !want_osd) return 1;
 
-  std::printf("# subdiv-bench: cpu=\"%s\" hardware_threads=%u threads=%d repeat=%d opensubdiv=%s\n",
-              cpu_name().c_str(), std::thread::hardware_concurrency(), base.threads, base.repeat, osd_version);
+  double load[3] = {0, 0, 0};
+  if (::getloadavg(load, 3) < 0) load[0] = -1;
+  std::printf("# subdiv-bench: cpu=\"%s\" hardware_threads=%u threads=%d repeat=%d clock=%s opensubdiv=%s "
+              "loadavg=%.2f\n",
+              cpu_name().c_str(), std::thread::hardware_concurrency(), base.threads, base.repeat,
+              base.cpu_clock ? "cpu" : "wall", osd_version, load[0]);
   std::fflush(stdout);
 
   struct Case {
@@ -444,7 +450,7 @@ int main(int argc, char** argv) {
   job.repeat = 1;
   job.check_max = 4'000'000;
   std::string levels_text = "1-3", schemes_text = "catmull-clark,loop", mesh_text = "torus", sides = "both";
-  std::string check_mode = "sample";
+  std::string check_mode = "sample", clock = "wall";
   std::string worker_side;
   int worker_fd = -1;
   std::int64_t max_refined = 16'000'000;
@@ -479,9 +485,17 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"sample", "full", "off"}));
   app.add_option("--check-max", job.check_max, "vertices compared per level with --check sample")
       ->capture_default_str();
+  app.add_option("--clock", clock,
+                 "wall: elapsed time; cpu: process CPU time (user + system), steadier on a shared "
+                 "machine, comparable only with --threads 1")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"wall", "cpu"}));
   app.add_option("--worker", worker_side)->group("");  // internal: run one measurement
   app.add_option("--worker-fd", worker_fd)->group("");
   CLI11_PARSE(app, argc, argv);
+  job.cpu_clock = clock == "cpu";
+  if (job.cpu_clock && job.threads > 1 && worker_side.empty())
+    std::fprintf(stderr, "subdiv-bench: note: --clock cpu adds up the CPU time of all %d threads\n", job.threads);
 
   try {
     if (!worker_side.empty()) {
