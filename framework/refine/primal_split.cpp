@@ -2,6 +2,7 @@
 // topology: new face point joined to the new edge points).
 #include <fmt/format.h>
 
+#include "framework/refine/primal_topology.h"
 #include "framework/refine/splitter.h"
 #include "framework/util/error.h"
 
@@ -23,59 +24,28 @@ ChildOrigins primal_origins(const Level& parent, bool with_face_points) {
   return o;
 }
 
+// Which parent face each child face lies in: quad children follow parent corners.
+std::vector<Index> quad_parent_faces(const Level& parent) {
+  std::vector<Index> out(parent.corner_count());
+  for (Index f = 0; f < parent.face_count(); ++f)
+    std::fill(out.begin() + parent.face_offsets[f], out.begin() + parent.face_offsets[f + 1], f);
+  return out;
+}
+
 }  // namespace
 
 SplitResult split_quad(const Level& parent) {
-  const Index V = parent.vertex_count, E = parent.edge_count(), F = parent.face_count();
-  const Index child_vertices = V + E + F;
-  std::vector<Index> offsets(parent.corner_count() + 1);
-  std::vector<Index> corners(4 * size_t(parent.corner_count()));
   ChildOrigins origins = primal_origins(parent, true);
-  origins.parent_face.resize(parent.corner_count());
-  Index q = 0;
-  for (Index f = 0; f < F; ++f) {
-    const auto verts = parent.face(f);
-    const auto edges = parent.face_edge_list(f);
-    const size_t k = verts.size();
-    for (size_t i = 0; i < k; ++i, ++q) {
-      // Child quad of corner i: (v_i, e_i, face point, e_{i-1}), CCW like its parent.
-      Index* quad = corners.data() + 4 * size_t(q);
-      quad[0] = verts[i];
-      quad[1] = V + edges[i];
-      quad[2] = V + E + f;
-      quad[3] = V + edges[(i + k - 1) % k];
-      offsets[q + 1] = 4 * (q + 1);
-      origins.parent_face[q] = f;
-    }
-  }
-  SplitResult result{build_level(child_vertices, offsets, corners), std::move(origins)};
-  return result;
+  origins.parent_face = quad_parent_faces(parent);
+  return {quad_split_topology(parent), std::move(origins)};
 }
 
 SplitResult split_triangle(const Level& parent) {
-  const Index V = parent.vertex_count, E = parent.edge_count(), F = parent.face_count();
-  std::vector<Index> offsets(4 * size_t(F) + 1);
-  std::vector<Index> corners(12 * size_t(F));
   ChildOrigins origins = primal_origins(parent, false);
-  origins.parent_face.resize(4 * size_t(F));
-  for (Index f = 0; f < F; ++f) {
-    const auto verts = parent.face(f);
-    const auto edges = parent.face_edge_list(f);
-    Index* out = corners.data() + 12 * size_t(f);
-    // Three corner triangles (v_i, e_i, e_{i-1}), then the middle one (e_0, e_1, e_2).
-    for (int i = 0; i < 3; ++i) {
-      out[3 * i + 0] = verts[i];
-      out[3 * i + 1] = V + edges[i];
-      out[3 * i + 2] = V + edges[(i + 2) % 3];
-    }
-    for (int i = 0; i < 3; ++i) out[9 + i] = V + edges[i];
-    for (int t = 0; t < 4; ++t) {
-      offsets[4 * f + t + 1] = 3 * (4 * f + t + 1);
-      origins.parent_face[4 * f + t] = f;
-    }
-  }
-  return {build_level(V + E, offsets, corners), std::move(origins)};
+  origins.parent_face.resize(4 * size_t(parent.face_count()));
+  for (Index f = 0; f < parent.face_count(); ++f)
+    for (int t = 0; t < 4; ++t) origins.parent_face[4 * f + t] = f;
+  return {triangle_split_topology(parent), std::move(origins)};
 }
-
 
 }  // namespace subdiv

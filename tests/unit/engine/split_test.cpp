@@ -43,3 +43,68 @@ TEST_CASE("boundary vertices stay on the boundary after splitting") {
   for (Index e = 0; e < L.edge_count(); ++e)
     CHECK(r.child.on_boundary(L.vertex_count + e) == L.edge_on_boundary(e));
 }
+
+namespace {
+
+// The child level built directly by a split must be the level the generic builder makes
+// from the same faces: same edges (as vertex pairs with the same faces), same CCW rings.
+void check_same_topology(const Level& direct) {
+  const Level generic = build_level(direct.vertex_count, direct.face_offsets, direct.face_vertices);
+  REQUIRE(direct.edge_count() == generic.edge_count());
+  for (Index e = 0; e < direct.edge_count(); ++e) {
+    const Index a = direct.edge_vertices[2 * e], b = direct.edge_vertices[2 * e + 1];
+    const Index g = find_edge(generic, a, b);
+    REQUIRE(g != kNone);
+    CHECK(direct.edge_on_boundary(e) == generic.edge_on_boundary(g));
+    // Slot 0 is the face running a -> b in both.
+    const bool same_direction = generic.edge_vertices[2 * g] == a;
+    CHECK(direct.edge_faces[2 * e] == generic.edge_faces[2 * g + (same_direction ? 0 : 1)]);
+  }
+  for (Index f = 0; f < direct.face_count(); ++f)
+    for (int i = 0; i < direct.face_size(f); ++i) {
+      const Index e = direct.face_edge_list(f)[i];
+      const Index a = direct.face(f)[i], b = direct.face(f)[(i + 1) % direct.face_size(f)];
+      CHECK(((direct.edge_vertices[2 * e] == a && direct.edge_vertices[2 * e + 1] == b) ||
+             (direct.edge_vertices[2 * e] == b && direct.edge_vertices[2 * e + 1] == a)));
+    }
+  for (Index v = 0; v < direct.vertex_count; ++v) {
+    CHECK(direct.on_boundary(v) == generic.on_boundary(v));
+    const auto df = direct.ring_faces(v), gf = generic.ring_faces(v);
+    REQUIRE(df.size() == gf.size());
+    // The same cyclic order (interior rings may start anywhere; boundary rings must agree).
+    size_t shift = 0;
+    while (shift < gf.size() && gf[shift] != df[0]) ++shift;
+    REQUIRE(shift < gf.size());
+    if (direct.on_boundary(v)) CHECK(shift == 0);
+    for (size_t i = 0; i < df.size(); ++i) {
+      CHECK(df[i] == gf[(i + shift) % gf.size()]);
+      CHECK(direct.vertex_face_corner[direct.vertex_face_offsets[v] + i] ==
+            generic.vertex_face_corner[generic.vertex_face_offsets[v] + (i + shift) % gf.size()]);
+    }
+    const auto de = direct.ring_edges(v), ge = generic.ring_edges(v);
+    REQUIRE(de.size() == ge.size());
+    for (size_t i = 0; i < de.size(); ++i)
+      CHECK(direct.other_end(de[i], v) == generic.other_end(ge[(i + shift) % ge.size()], v));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("direct child topology of the primal splits equals the generic builder's") {
+  for (const auto& mesh : {test::cube(), test::pyramid(), test::grid(3, 2), test::torus(5, 4)}) {
+    Level L = mesh.level();
+    for (int level = 0; level < 2; ++level) {
+      SplitResult r = split_quad(L);
+      check_same_topology(r.child);
+      L = std::move(r.child);
+    }
+  }
+  for (const auto& mesh : {test::octahedron(), test::grid(2, 3, true), test::torus(4, 5, true)}) {
+    Level L = mesh.level();
+    for (int level = 0; level < 2; ++level) {
+      SplitResult r = split_triangle(L);
+      check_same_topology(r.child);
+      L = std::move(r.child);
+    }
+  }
+}

@@ -31,13 +31,12 @@ TEST_CASE("a scheme sequence applies each scheme for its levels") {
   const auto got = interpolate(h, 3, m.positions, 3);
   // The same by hand: one shape step, then two Catmull-Clark levels on its result.
   const auto first = test::refine_mesh(m, "catmull-clark-shape", 1, {}, {{"lambda", "0.6"}});
-  test::Mesh mid;
-  const Level& L1 = first.hierarchy.levels[1];
-  mid.vertex_count = L1.vertex_count, mid.offsets = L1.face_offsets, mid.corners = L1.face_vertices;
-  mid.positions = first.positions;
-  const auto rest = test::refine_mesh(mid, "catmull-clark", 2);
-  REQUIRE(got.size() == rest.positions.size());
-  for (size_t i = 0; i < got.size(); ++i) CHECK(got[i] == doctest::Approx(rest.positions[i]).epsilon(1e-13));
+  RefineOptions two;
+  two.levels = 2;
+  const Hierarchy rest = refine(*load_scheme("catmull-clark"), first.hierarchy.levels[1], two);
+  const auto expected = interpolate(rest, 2, first.positions, 3);
+  REQUIRE(got.size() == expected.size());
+  for (size_t i = 0; i < got.size(); ++i) CHECK(got[i] == doctest::Approx(expected[i]).epsilon(1e-13));
   // A name without a count takes the remaining levels.
   CHECK(load_scheme_sequence("catmull-clark-shape:1,catmull-clark", 4, {}).runs[1].levels == 3);
   CHECK_THROWS_AS(load_scheme_sequence("catmull-clark:x", 1, {}), Error);

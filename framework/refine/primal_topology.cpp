@@ -1,0 +1,209 @@
+#include "framework/refine/primal_topology.h"
+
+#include <tbb/parallel_for.h>
+
+namespace subdiv {
+namespace {
+
+// The child half of parent edge e that touches its end v.
+inline Index half_at(const Level& P, Index e, Index v) { return 2 * e + (P.edge_vertices[2 * e] == v ? 0 : 1); }
+
+// Corner index (within face f) of vertex v.
+inline int local_corner(const Level& P, Index f, Index v) {
+  const Index* fv = P.face_vertices.data() + P.face_offsets[f];
+  int i = 0;
+  while (fv[i] != v) ++i;
+  return i;
+}
+
+// The parts shared by both splits: child vertices of parent vertices keep their rings,
+// with ring face i replaced by the child face at that corner and ring edges by halves.
+template <class ChildFaceAtCorner>
+void vertex_child_rings(const Level& P, Level& C, ChildFaceAtCorner child_face) {
+  tbb::parallel_for(Index(0), P.vertex_count, [&](Index v) {
+    const Index fo = P.vertex_face_offsets[v], ro = P.vertex_ring_offsets[v];
+    for (Index i = fo; i < P.vertex_face_offsets[v + 1]; ++i) {
+      C.vertex_faces[i] = child_face(P.vertex_faces[i], P.vertex_face_corner[i]);
+      C.vertex_face_corner[i] = 0;
+    }
+    for (Index i = ro; i < P.vertex_ring_offsets[v + 1]; ++i) C.vertex_edges[i] = half_at(P, P.vertex_edges[i], v);
+    C.vertex_on_boundary[v] = P.vertex_on_boundary[v];
+  });
+}
+
+void copy_vertex_offsets(const Level& P, Level& C) {
+  std::copy(P.vertex_face_offsets.begin(), P.vertex_face_offsets.end(), C.vertex_face_offsets.begin());
+  std::copy(P.vertex_ring_offsets.begin(), P.vertex_ring_offsets.end(), C.vertex_ring_offsets.begin());
+}
+
+void halves(const Level& P, Level& C, Index first_mid) {
+  tbb::parallel_for(Index(0), P.edge_count(), [&](Index e) {
+    const Index a = P.edge_vertices[2 * e], b = P.edge_vertices[2 * e + 1], m = first_mid + e;
+    C.edge_vertices[4 * e + 0] = a, C.edge_vertices[4 * e + 1] = m;
+    C.edge_vertices[4 * e + 2] = m, C.edge_vertices[4 * e + 3] = b;
+  });
+}
+
+}  // namespace
+
+Level quad_split_topology(const Level& P) {
+  const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count(), N = P.corner_count();
+  Level C;
+  C.vertex_count = V + E + F;
+  C.face_offsets.resize(N + 1);
+  C.face_vertices.resize(4 * size_t(N));
+  C.face_edges.resize(4 * size_t(N));
+  C.edge_vertices.resize(2 * size_t(2 * E + N));
+  C.edge_faces.resize(2 * size_t(2 * E + N));
+  // Faces: child face c = (v_i, mid(e_i), face point, mid(e_{i-1})) of parent corner c.
+  tbb::parallel_for(Index(0), F, [&](Index f) {
+    const Index o = P.face_offsets[f], k = P.face_size(f);
+    for (Index i = 0; i < k; ++i) {
+      const Index c = o + i, prev = o + (i + k - 1) % k, next = o + (i + 1) % k;
+      const Index v = P.face_vertices[c], e = P.face_edges[c], ep = P.face_edges[prev];
+      Index* fv = &C.face_vertices[4 * size_t(c)];
+      Index* fe = &C.face_edges[4 * size_t(c)];
+      fv[0] = v, fv[1] = V + e, fv[2] = V + E + f, fv[3] = V + ep;
+      fe[0] = half_at(P, e, v), fe[1] = 2 * E + c, fe[2] = 2 * E + prev, fe[3] = half_at(P, ep, v);
+      C.face_offsets[c + 1] = 4 * (c + 1);
+      // Inner edge of corner c: mid(e_i) -> face point; its reverse lies in the next corner's face.
+      C.edge_vertices[2 * (2 * size_t(E) + c)] = V + e, C.edge_vertices[2 * (2 * size_t(E) + c) + 1] = V + E + f;
+      C.edge_faces[2 * (2 * size_t(E) + c)] = c, C.edge_faces[2 * (2 * size_t(E) + c) + 1] = next;
+    }
+  });
+  C.face_offsets[0] = 0;
+  halves(P, C, V);
+  // Halves' faces: 2e (a -> mid) runs forward in f0's face at a, backwards in f1's face at a.
+  tbb::parallel_for(Index(0), E, [&](Index e) {
+    const Index a = P.edge_vertices[2 * e], b = P.edge_vertices[2 * e + 1];
+    const Index f0 = P.edge_faces[2 * e], f1 = P.edge_faces[2 * e + 1];
+    C.edge_faces[4 * e + 0] = P.face_offsets[f0] + local_corner(P, f0, a);
+    C.edge_faces[4 * e + 2] = P.face_offsets[f0] + local_corner(P, f0, b);
+    C.edge_faces[4 * e + 1] = f1 == kNone ? kNone : P.face_offsets[f1] + local_corner(P, f1, a);
+    C.edge_faces[4 * e + 3] = f1 == kNone ? kNone : P.face_offsets[f1] + local_corner(P, f1, b);
+  });
+  // Rings: vertex children as their parents; edge children have 4 faces (2 on a boundary);
+  // face children have one per corner.
+  C.vertex_face_offsets.resize(C.vertex_count + 1);
+  C.vertex_ring_offsets.resize(C.vertex_count + 1);
+  copy_vertex_offsets(P, C);
+  for (Index e = 0; e < E; ++e) {
+    const bool boundary = P.edge_on_boundary(e);
+    C.vertex_face_offsets[V + e + 1] = C.vertex_face_offsets[V + e] + (boundary ? 2 : 4);
+    C.vertex_ring_offsets[V + e + 1] = C.vertex_ring_offsets[V + e] + (boundary ? 3 : 4);
+  }
+  for (Index f = 0; f < F; ++f) {
+    C.vertex_face_offsets[V + E + f + 1] = C.vertex_face_offsets[V + E + f] + P.face_size(f);
+    C.vertex_ring_offsets[V + E + f + 1] = C.vertex_ring_offsets[V + E + f] + P.face_size(f);
+  }
+  C.vertex_faces.resize(C.vertex_face_offsets.back());
+  C.vertex_face_corner.resize(C.vertex_face_offsets.back());
+  C.vertex_edges.resize(C.vertex_ring_offsets.back());
+  C.vertex_on_boundary.assign(C.vertex_count, 0);
+  vertex_child_rings(P, C, [&](Index f, int corner) { return P.face_offsets[f] + corner; });
+  tbb::parallel_for(Index(0), E, [&](Index e) {
+    const Index a = P.edge_vertices[2 * e], b = P.edge_vertices[2 * e + 1];
+    const Index f0 = P.edge_faces[2 * e], f1 = P.edge_faces[2 * e + 1];
+    const Index c_a0 = P.face_offsets[f0] + local_corner(P, f0, a), c_b0 = P.face_offsets[f0] + local_corner(P, f0, b);
+    Index* rf = &C.vertex_faces[C.vertex_face_offsets[V + e]];
+    std::uint8_t* rc = &C.vertex_face_corner[C.vertex_face_offsets[V + e]];
+    Index* re = &C.vertex_edges[C.vertex_ring_offsets[V + e]];
+    if (f1 == kNone) {
+      // Starts on the boundary half towards b, ends on the half towards a.
+      rf[0] = c_b0, rf[1] = c_a0;
+      rc[0] = 3, rc[1] = 1;
+      re[0] = 2 * e + 1, re[1] = 2 * E + c_a0, re[2] = 2 * e;
+      C.vertex_on_boundary[V + e] = 1;
+      return;
+    }
+    const Index c_a1 = P.face_offsets[f1] + local_corner(P, f1, a), c_b1 = P.face_offsets[f1] + local_corner(P, f1, b);
+    rf[0] = c_a0, rf[1] = c_a1, rf[2] = c_b1, rf[3] = c_b0;
+    rc[0] = 1, rc[1] = 3, rc[2] = 1, rc[3] = 3;
+    re[0] = 2 * E + c_a0, re[1] = 2 * e, re[2] = 2 * E + c_b1, re[3] = 2 * e + 1;
+  });
+  tbb::parallel_for(Index(0), F, [&](Index f) {
+    const Index o = P.face_offsets[f], k = P.face_size(f);
+    Index* rf = &C.vertex_faces[C.vertex_face_offsets[V + E + f]];
+    std::uint8_t* rc = &C.vertex_face_corner[C.vertex_face_offsets[V + E + f]];
+    Index* re = &C.vertex_edges[C.vertex_ring_offsets[V + E + f]];
+    for (Index i = 0; i < k; ++i) rf[i] = o + i, rc[i] = 2, re[i] = 2 * E + o + (i + k - 1) % k;
+  });
+  return C;
+}
+
+Level triangle_split_topology(const Level& P) {
+  const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count();
+  Level C;
+  C.vertex_count = V + E;
+  C.face_offsets.resize(4 * size_t(F) + 1);
+  C.face_vertices.resize(12 * size_t(F));
+  C.face_edges.resize(12 * size_t(F));
+  C.edge_vertices.resize(2 * size_t(2 * E + 3 * F));
+  C.edge_faces.resize(2 * size_t(2 * E + 3 * F));
+  // Corner face 4f+i = (v_i, mid e_i, mid e_{i-1}); middle face 4f+3 = (mid e_0, mid e_1, mid e_2).
+  // Inner edge 2E+3f+i runs mid e_i -> mid e_{i-1}: forward in corner face i, backwards in the middle.
+  tbb::parallel_for(Index(0), F, [&](Index f) {
+    const Index o = P.face_offsets[f];
+    for (int i = 0; i < 3; ++i) {
+      const int ip = (i + 2) % 3;
+      const Index v = P.face_vertices[o + i], e = P.face_edges[o + i], ep = P.face_edges[o + ip];
+      const Index cf = 4 * f + i, inner = 2 * E + 3 * f + i;
+      Index* fv = &C.face_vertices[3 * size_t(cf)];
+      Index* fe = &C.face_edges[3 * size_t(cf)];
+      fv[0] = v, fv[1] = V + e, fv[2] = V + ep;
+      fe[0] = half_at(P, e, v), fe[1] = inner, fe[2] = half_at(P, ep, v);
+      C.face_vertices[3 * size_t(4 * f + 3) + i] = V + e;
+      C.face_edges[3 * size_t(4 * f + 3) + i] = 2 * E + 3 * f + (i + 1) % 3;
+      C.edge_vertices[2 * size_t(inner)] = V + e, C.edge_vertices[2 * size_t(inner) + 1] = V + ep;
+      C.edge_faces[2 * size_t(inner)] = cf, C.edge_faces[2 * size_t(inner) + 1] = 4 * f + 3;
+    }
+    for (int t = 0; t < 4; ++t) C.face_offsets[4 * f + t + 1] = 3 * (4 * f + t + 1);
+  });
+  C.face_offsets[0] = 0;
+  halves(P, C, V);
+  tbb::parallel_for(Index(0), E, [&](Index e) {
+    const Index a = P.edge_vertices[2 * e], b = P.edge_vertices[2 * e + 1];
+    const Index f0 = P.edge_faces[2 * e], f1 = P.edge_faces[2 * e + 1];
+    C.edge_faces[4 * e + 0] = 4 * f0 + local_corner(P, f0, a);
+    C.edge_faces[4 * e + 2] = 4 * f0 + local_corner(P, f0, b);
+    C.edge_faces[4 * e + 1] = f1 == kNone ? kNone : 4 * f1 + local_corner(P, f1, a);
+    C.edge_faces[4 * e + 3] = f1 == kNone ? kNone : 4 * f1 + local_corner(P, f1, b);
+  });
+  C.vertex_face_offsets.resize(C.vertex_count + 1);
+  C.vertex_ring_offsets.resize(C.vertex_count + 1);
+  copy_vertex_offsets(P, C);
+  for (Index e = 0; e < E; ++e) {
+    const bool boundary = P.edge_on_boundary(e);
+    C.vertex_face_offsets[V + e + 1] = C.vertex_face_offsets[V + e] + (boundary ? 3 : 6);
+    C.vertex_ring_offsets[V + e + 1] = C.vertex_ring_offsets[V + e] + (boundary ? 4 : 6);
+  }
+  C.vertex_faces.resize(C.vertex_face_offsets.back());
+  C.vertex_face_corner.resize(C.vertex_face_offsets.back());
+  C.vertex_edges.resize(C.vertex_ring_offsets.back());
+  C.vertex_on_boundary.assign(C.vertex_count, 0);
+  vertex_child_rings(P, C, [&](Index f, int corner) { return 4 * f + corner; });
+  tbb::parallel_for(Index(0), E, [&](Index e) {
+    const Index a = P.edge_vertices[2 * e], b = P.edge_vertices[2 * e + 1];
+    const Index f0 = P.edge_faces[2 * e], f1 = P.edge_faces[2 * e + 1];
+    const int ia0 = local_corner(P, f0, a), ib0 = local_corner(P, f0, b);
+    Index* rf = &C.vertex_faces[C.vertex_face_offsets[V + e]];
+    std::uint8_t* rc = &C.vertex_face_corner[C.vertex_face_offsets[V + e]];
+    Index* re = &C.vertex_edges[C.vertex_ring_offsets[V + e]];
+    const Index in0 = 2 * E + 3 * f0;
+    if (f1 == kNone) {
+      rf[0] = 4 * f0 + ib0, rf[1] = 4 * f0 + 3, rf[2] = 4 * f0 + ia0;
+      rc[0] = 2, rc[1] = std::uint8_t(ia0), rc[2] = 1;
+      re[0] = 2 * e + 1, re[1] = in0 + ib0, re[2] = in0 + ia0, re[3] = 2 * e;
+      C.vertex_on_boundary[V + e] = 1;
+      return;
+    }
+    const int ia1 = local_corner(P, f1, a), ib1 = local_corner(P, f1, b);
+    const Index in1 = 2 * E + 3 * f1;
+    rf[0] = 4 * f0 + ia0, rf[1] = 4 * f1 + ia1, rf[2] = 4 * f1 + 3, rf[3] = 4 * f1 + ib1, rf[4] = 4 * f0 + ib0, rf[5] = 4 * f0 + 3;
+    rc[0] = 1, rc[1] = 2, rc[2] = std::uint8_t(ib1), rc[3] = 1, rc[4] = 2, rc[5] = std::uint8_t(ia0);
+    re[0] = in0 + ia0, re[1] = 2 * e, re[2] = in1 + ia1, re[3] = in1 + ib1, re[4] = 2 * e + 1, re[5] = in0 + ib0;
+  });
+  return C;
+}
+
+}  // namespace subdiv
