@@ -16,7 +16,7 @@ Element element_of(NewPoint kind) {
 void add_point(RowBuilder& row, const RuleInputs& in, const CompiledTerm& term, Index element, double w) {
   if (term.new_point == NewPoint::None) return row.add(element, w);
   const Element kind = element_of(term.new_point);
-  const RowBlock* block = in.blocks[int(kind)];
+  const ChunkedRows* block = in.blocks[int(kind)];
   if (!block)
     throw Error(fmt::format("{}: uses new {} points, which this step does not make", term.where, element_name(kind)));
   const Index r = (*in.block_row_of_element[int(kind)])[element];

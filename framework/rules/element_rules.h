@@ -13,7 +13,7 @@ struct RuleInputs {
   const Level& parent;
   const FeatureContexts& features;
   // New points of element kind k: row of element e is rows[k]->row(child_of[k][e]).
-  const RowBlock* blocks[kElementCount] = {};
+  const ChunkedRows* blocks[kElementCount] = {};
   const std::vector<Index>* block_row_of_element[kElementCount] = {};
 };
 

@@ -7,11 +7,25 @@
 
 namespace subdiv {
 
-// A block of finished rows (CSR) that later rows may reference as "new points".
+// A run of finished rows (CSR).
 struct RowBlock {
   std::vector<Index> offsets{0};
   std::vector<Index> indices;
   std::vector<double> weights;
+};
+
+// Rows built in fixed-size chunks (one RowBlock each, filled in parallel); row r lives in
+// chunk r / chunk_rows. Later rows may reference these as "new points".
+struct ChunkedRows {
+  Index chunk_rows = 1;
+  std::vector<RowBlock> chunks;
+
+  const RowBlock& chunk_of(Index r) const { return chunks[r / chunk_rows]; }
+  Index local(Index r) const { return r % chunk_rows; }
+  Index row_size(Index r) const {
+    const RowBlock& b = chunk_of(r);
+    return b.offsets[local(r) + 1] - b.offsets[local(r)];
+  }
 };
 
 class RowBuilder {
@@ -26,9 +40,10 @@ public:
     indices_.push_back(source);
     weights_.push_back(weight);
   }
-  void add_row(const RowBlock& block, Index row, double scale) {
-    for (Index i = block.offsets[row]; i < block.offsets[row + 1]; ++i)
-      add(block.indices[i], scale * block.weights[i]);
+  void add_row(const ChunkedRows& rows, Index row, double scale) {
+    const RowBlock& block = rows.chunk_of(row);
+    const Index r = rows.local(row);
+    for (Index i = block.offsets[r]; i < block.offsets[r + 1]; ++i) add(block.indices[i], scale * block.weights[i]);
   }
   const std::vector<Index>& indices() const { return indices_; }
   const std::vector<double>& weights() const { return weights_; }

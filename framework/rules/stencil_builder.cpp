@@ -127,9 +127,10 @@ std::vector<ChildGroup> group_children(const StepContext& s) {
   return groups;
 }
 
-void report_bad_row(const StepContext& s, const RowBlock& block, const ChildGroup& group, Index r) {
+void report_bad_row(const StepContext& s, const ChunkedRows& rows, const ChildGroup& group, Index r) {
   double sum = 0.0;
-  for (Index i = block.offsets[r]; i < block.offsets[r + 1]; ++i) sum += block.weights[i];
+  const RowBlock& block = rows.chunk_of(r);
+  for (Index i = block.offsets[rows.local(r)]; i < block.offsets[rows.local(r) + 1]; ++i) sum += block.weights[i];
   const Index child = group.children[r];
   const Index p = s.origins.parent[child];
   const Element e = Element(int(s.origins.kind[child]));
@@ -140,17 +141,22 @@ void report_bad_row(const StepContext& s, const RowBlock& block, const ChildGrou
       s.source, element_name(e), p, sum, e == Element::Vertex ? "valence" : "size", size, element_name(e)));
 }
 
-// Rows of one group, built in parallel chunks and joined in order, so the result does not
-// depend on the thread count. Checks every row is finite and sums to one.
-RowBlock build_block(const StepContext& s, const RuleInputs& in, const ChildGroup& group) {
+// Rows of one group, built in parallel chunks; each row depends only on its element, so
+// the result does not depend on the thread count. Checks every row is finite and sums to one.
+ChunkedRows build_rows(const StepContext& s, const RuleInputs& in, const ChildGroup& group) {
   const Index count = Index(group.children.size());
-  const Index chunks = (count + kChunk - 1) / kChunk;
-  std::vector<RowBlock> parts(chunks);
+  ChunkedRows rows;
+  rows.chunk_rows = kChunk;
+  rows.chunks.resize((count + kChunk - 1) / kChunk);
   std::atomic<Index> first_bad{count};
-  tbb::parallel_for(Index(0), chunks, [&](Index c) {
+  tbb::parallel_for(Index(0), Index(rows.chunks.size()), [&](Index c) {
     RowBuilder row;
-    RowBlock& part = parts[c];
-    for (Index r = c * kChunk; r < std::min(count, (c + 1) * kChunk); ++r) {
+    RowBlock& part = rows.chunks[c];
+    const Index begin = c * kChunk, end = std::min(count, (c + 1) * kChunk);
+    part.offsets.reserve(end - begin + 1);
+    part.indices.reserve(size_t(end - begin) * 12);
+    part.weights.reserve(size_t(end - begin) * 12);
+    for (Index r = begin; r < end; ++r) {
       row.clear();
       fill_row(row, s, in, group.children[r]);
       double sum = 0.0;
@@ -164,20 +170,8 @@ RowBlock build_block(const StepContext& s, const RuleInputs& in, const ChildGrou
       }
     }
   });
-  RowBlock block;
-  size_t total = 0;
-  for (const auto& p : parts) total += p.indices.size();
-  block.offsets.reserve(count + 1);
-  block.indices.reserve(total);
-  block.weights.reserve(total);
-  for (const auto& p : parts) {
-    const Index base = block.offsets.back();
-    for (size_t r = 1; r < p.offsets.size(); ++r) block.offsets.push_back(base + p.offsets[r]);
-    block.indices.insert(block.indices.end(), p.indices.begin(), p.indices.end());
-    block.weights.insert(block.weights.end(), p.weights.begin(), p.weights.end());
-  }
-  if (first_bad < count) report_bad_row(s, block, group, first_bad);
-  return block;
+  if (first_bad < count) report_bad_row(s, rows, group, first_bad);
+  return rows;
 }
 
 bool references(const WeightTables& T, Element from, NewPoint to) {
@@ -224,9 +218,9 @@ ChildOrigins identity_origins(const Level& level) {
 StencilTable build_step_stencils(const StepContext& s) {
   const std::vector<ChildGroup> groups = group_children(s);
   RuleInputs in{s.parent, s.features};
-  std::vector<RowBlock> blocks(kElementCount);
+  std::vector<ChunkedRows> blocks(kElementCount);
   for (Element e : build_order(s, groups)) {
-    blocks[int(e)] = build_block(s, in, groups[int(e)]);
+    blocks[int(e)] = build_rows(s, in, groups[int(e)]);
     in.blocks[int(e)] = &blocks[int(e)];
     in.block_row_of_element[int(e)] = &groups[int(e)].row_of_element;
   }
@@ -239,15 +233,14 @@ StencilTable build_step_stencils(const StepContext& s) {
   table.source_count = s.parent.vertex_count;
   table.offsets.resize(child_count + 1);
   table.offsets[0] = 0;
-  for (Index c = 0; c < child_count; ++c) {
-    const RowBlock& b = blocks[int(s.origins.kind[c])];
-    table.offsets[c + 1] = table.offsets[c] + b.offsets[position[c] + 1] - b.offsets[position[c]];
-  }
+  for (Index c = 0; c < child_count; ++c)
+    table.offsets[c + 1] = table.offsets[c] + blocks[int(s.origins.kind[c])].row_size(position[c]);
   table.indices.resize(table.offsets.back());
   table.weights.resize(table.offsets.back());
   tbb::parallel_for(Index(0), child_count, [&](Index c) {
-    const RowBlock& b = blocks[int(s.origins.kind[c])];
-    const Index from = b.offsets[position[c]], to = b.offsets[position[c] + 1];
+    const ChunkedRows& rows = blocks[int(s.origins.kind[c])];
+    const RowBlock& b = rows.chunk_of(position[c]);
+    const Index from = b.offsets[rows.local(position[c])], to = b.offsets[rows.local(position[c]) + 1];
     std::copy(b.indices.begin() + from, b.indices.begin() + to, table.indices.begin() + table.offsets[c]);
     std::copy(b.weights.begin() + from, b.weights.begin() + to, table.weights.begin() + table.offsets[c]);
   });
