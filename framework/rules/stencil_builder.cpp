@@ -169,7 +169,8 @@ void fill_row(RowBuilder& row, const StepInputs& in, Element element, Index id, 
     apply_face_rule(row, in, id, needed_rule(T, Element::Face, Context::Smooth, source));
   } else if (element == Element::Edge) {
     const float cw = in.features.edges[id].crease_weight;
-    if (cw < 1.f) apply_edge_rule(row, in, id, needed_rule(T, Element::Edge, Context::Smooth, source), 1.0 - cw);
+    // cw may exceed 1 (OpenSubdiv's unclamped Chaikin transition, see classify_edge).
+    if (cw != 1.f) apply_edge_rule(row, in, id, needed_rule(T, Element::Edge, Context::Smooth, source), 1.0 - cw);
     if (cw > 0.f) apply_edge_rule(row, in, id, needed_rule(T, Element::Edge, Context::Crease, source), cw);
   } else {
     const VertexContext& vc = in.features.vertices[id];
