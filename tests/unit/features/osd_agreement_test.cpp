@@ -286,6 +286,26 @@ TEST_CASE("OpenSubdiv agreement: Loop octahedron with an equator crease and a co
   }
 }
 
+TEST_CASE("OpenSubdiv agreement: Catmull-Clark on triangles and mixed polygons with creases") {
+  const int nx = 5, ny = 4;
+  auto tris = named(grid(nx, ny, true), "catmull-clark on a triangle grid with creases");
+  tris.crease_path({grid_id(0, 2, nx), grid_id(1, 2, nx), grid_id(2, 2, nx), grid_id(3, 2, nx)}, 1.5);
+  tris.crease_path({grid_id(3, 0, nx), grid_id(3, 1, nx), grid_id(3, 2, nx)}, 10);
+  tris.corner(grid_id(1, 1, nx), 0.5);
+  check_all_setups(tris, "catmull-clark");
+
+  FeatureMesh pyramid{"pyramid with a creased base and a semi-sharp apex", {}};
+  pyramid.add_vertex(0, 0, 0), pyramid.add_vertex(1, 0, 0), pyramid.add_vertex(1, 1, 0), pyramid.add_vertex(0, 1, 0);
+  pyramid.add_vertex(0.5, 0.5, 1);
+  pyramid.add_face({0, 3, 2, 1});
+  pyramid.add_face({0, 1, 4}), pyramid.add_face({1, 2, 4}), pyramid.add_face({2, 3, 4}), pyramid.add_face({3, 0, 4});
+  pyramid.perturb(0.05);
+  pyramid.crease_path({0, 1, 2, 3, 0}, 2.7);
+  pyramid.crease(0, 4, 0.5);
+  pyramid.corner(4, 1.5);
+  check_all_setups(pyramid, "catmull-clark");
+}
+
 TEST_CASE("OpenSubdiv agreement: extraordinary vertices on creases (fans)") {
   for (int n : {3, 5, 6}) {
     auto m = named(fan(n), fmt::format("fan of {} with a crease through the centre", n));
