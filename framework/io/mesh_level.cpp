@@ -69,7 +69,7 @@ MeshData mesh_from_level(const Level& level, std::vector<double> positions) {
   mesh.face_offsets = level.face_offsets;
   mesh.face_vertices = level.face_vertices;
   for (Index e = 0; e < Index(level.edge_sharpness.size()); ++e)
-    if (level.edge_sharpness[e] > 0.f)
+    if (level.edge_sharpness[e] > 0.f && !level.edge_on_boundary(e))  // boundaries are sharp anyway
       mesh.creases.push_back({level.edge_vertices[2 * e], level.edge_vertices[2 * e + 1], level.edge_sharpness[e]});
   for (Index v = 0; v < Index(level.vertex_sharpness.size()); ++v)
     if (level.vertex_sharpness[v] > 0.f) mesh.corners.push_back({v, level.vertex_sharpness[v]});

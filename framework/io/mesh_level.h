@@ -11,8 +11,9 @@ namespace subdiv {
 // every message; a crease naming a non-existent edge or a negative sharpness is refused.
 Level level_from_mesh(const MeshData& mesh, const std::string& source);
 
-// Positions, faces and the level's feature tags (sharp edges as creases, sharp vertices
-// as corners) as a MeshData for writing.
+// Positions, faces and the level's feature tags (sharp interior edges as creases, sharp
+// vertices as corners) as a MeshData for writing. Boundary edges are sharp by topology and
+// are not written as creases.
 MeshData mesh_from_level(const Level& level, std::vector<double> positions);
 
 }  // namespace subdiv

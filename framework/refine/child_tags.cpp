@@ -4,32 +4,54 @@
 
 namespace subdiv {
 
-float decremented_sharpness(float s) { return s >= kInfinitelySharp ? s : std::max(0.f, s - 1.f); }
+float decremented_sharpness(float s) {
+  if (s <= 0.f) return 0.f;
+  if (s >= kInfinitelySharp) return kInfinitelySharp;
+  return s > 1.f ? s - 1.f : 0.f;
+}
 
 namespace {
 
-// OpenSubdiv's Chaikin rule (Sdc::Crease::SubdivideEdgeSharpnessAtVertex): the child
-// half of edge e next to vertex v takes the 3:1 average of e's sharpness and the mean
-// sharpness of v's other semi-sharp edges, minus one.
-float chaikin_half(const Level& parent, Index e, Index v) {
-  const float s = parent.edge_sharp(e);
-  if (s <= 0.f || s >= kInfinitelySharp) return decremented_sharpness(s);
-  float sum = 0.f;
-  int count = 0;
-  for (Index other : parent.ring_edges(v)) {
-    if (other == e) continue;
-    const float t = parent.edge_sharp(other);
-    if (t > 0.f) sum += t, ++count;  // OSD averages over the other creased edges
+// One semi-sharp edge of sharpness s among `count` semi-sharp edges whose sharpness sums to
+// `sum` (s included), with OpenSubdiv's float operations in its order.
+float chaikin(float s, float sum, int count) {
+  if (count > 1) {
+    const float others = (sum - s) / float(count - 1);
+    s = 0.75f * s + 0.25f * others;
   }
-  if (count == 0) return decremented_sharpness(s);
-  return std::max(0.f, (3.f * s + sum / float(count)) / 4.f - 1.f);
+  s -= 1.0f;
+  return s > 0.f ? s : 0.f;
+}
+
+float effective_sharpness(const Level& level, Index e) {
+  return level.edge_on_boundary(e) ? kInfinitelySharp : level.edge_sharp(e);
 }
 
 }  // namespace
 
+void subdivide_sharpness_around_vertex(std::span<const float> parent, std::span<float> child, CreaseMethod method) {
+  const size_t n = parent.size();
+  if (method == CreaseMethod::Uniform || n < 2) {
+    for (size_t i = 0; i < n; ++i) child[i] = decremented_sharpness(parent[i]);
+    return;
+  }
+  float sum = 0.f;
+  int count = 0;
+  for (float s : parent)
+    if (is_semi_sharp(s)) sum += s, ++count;
+  for (size_t i = 0; i < n; ++i)
+    child[i] = is_semi_sharp(parent[i]) ? chaikin(parent[i], sum, count) : decremented_sharpness(parent[i]);
+}
+
 float child_edge_sharpness(const Level& parent, Index e, Index v, CreaseMethod method) {
-  return method == CreaseMethod::Chaikin ? chaikin_half(parent, e, v)
-                                         : decremented_sharpness(parent.edge_sharp(e));
+  const float s = effective_sharpness(parent, e);
+  const auto ring = parent.ring_edges(v);
+  if (method == CreaseMethod::Uniform || ring.size() < 2 || !is_semi_sharp(s)) return decremented_sharpness(s);
+  float sum = 0.f;
+  int count = 0;
+  for (Index other : ring)
+    if (const float t = effective_sharpness(parent, other); is_semi_sharp(t)) sum += t, ++count;
+  return chaikin(s, sum, count);
 }
 
 void propagate_tags(const Level& parent, SplitResult& result, CreaseMethod method) {
@@ -43,7 +65,8 @@ void propagate_tags(const Level& parent, SplitResult& result, CreaseMethod metho
   child.edge_sharpness.assign(child.edge_count(), 0.f);
   const Index V = parent.vertex_count;
   for (Index e = 0; e < parent.edge_count(); ++e) {
-    if (parent.edge_sharpness[e] <= 0.f) continue;
+    // Boundary edges are sharp by topology at every level; their tags are not propagated.
+    if (parent.edge_sharpness[e] <= 0.f || parent.edge_on_boundary(e)) continue;
     for (int end = 0; end < 2; ++end) {
       const Index v = parent.edge_vertices[2 * e + end];
       const Index half = find_edge(child, v, V + e);

@@ -72,30 +72,30 @@ VertexContext classify_vertex(const Level& level, const FeatureContexts& fc, Ind
   vc.child = vc.parent, vc.child_crease = vc.parent_crease;
   if (vc.parent == Context::Smooth || vc.parent == Context::Dart) return vc;
 
+  // The rule the vertex has one level down (Sdc::Scheme::ComputeVertexVertexMask with the
+  // child's sharpness from Sdc::Crease::SubdivideEdgeSharpnessesAroundVertex).
   const float cv = decremented_sharpness(pv);
-  for (int i = 0; i < n; ++i)
-    ce[i] = level.edge_on_boundary(ring[i]) ? kInfinitelySharp
-            : method == CreaseMethod::Chaikin ? child_edge_sharpness(level, ring[i], v, method)
-                                              : decremented_sharpness(pe[i]);
+  subdivide_sharpness_around_vertex({pe, size_t(n)}, {ce, size_t(n)}, method);
   vc.child = vertex_rule(cv, ce, n);
   vc.child_crease = crease_pair(ce, n);
   if (vc.child != vc.parent) vc.parent_weight = fractional_weight(pv, cv, pe, ce, n);
   return vc;
 }
 
-// Sdc::Scheme::ComputeEdgeVertexMask: sharp edges (s >= 1) take the crease rule, smooth
-// ones the smooth rule, and 0 < s < 1 blends the two by s.
+// Sdc::Scheme::ComputeEdgeVertexMask as Far::PrimvarRefiner calls it: a smooth edge takes
+// the smooth rule; a sharp one the crease rule if the new vertex is a crease vertex one
+// level down (both child halves sharp), and otherwise the blend
+// s * (crease rule) + (1 - s) * (smooth rule) with s the edge's sharpness. Uniform
+// creasing reaches the blend only for s <= 1; Chaikin creasing can reach it for s > 1 too
+// (a child half next to a less sharp crease decays to 0), and OpenSubdiv then does not
+// clamp s, so neither do we.
 EdgeContext classify_edge(const Level& level, const FeatureContexts& fc, Index e, CreaseMethod method) {
   const float s = fc.edge_sharpness[e];
   if (s <= 0.f) return {0.f};
-  if (s >= 1.f) return {1.f};
-  if (method == CreaseMethod::Chaikin) {
-    const bool child_crease =
-        child_edge_sharpness(level, e, level.edge_vertices[2 * e], method) > 0.f &&
-        child_edge_sharpness(level, e, level.edge_vertices[2 * e + 1], method) > 0.f;
-    if (child_crease) return {1.f};
-  }
-  return {s};
+  if (s >= kInfinitelySharp) return {1.f};
+  const bool child_crease = child_edge_sharpness(level, e, level.edge_vertices[2 * e], method) > 0.f &&
+                            child_edge_sharpness(level, e, level.edge_vertices[2 * e + 1], method) > 0.f;
+  return {child_crease ? 1.f : s};
 }
 
 }  // namespace

@@ -19,6 +19,8 @@ struct FeatureOptions {
 };
 
 // An edge's new point is crease_weight * (crease rule) + (1 - crease_weight) * (smooth rule).
+// crease_weight is 0 (smooth), 1 (crease), or the edge's sharpness in a transition; that can
+// exceed 1 with Chaikin creasing, as in OpenSubdiv.
 struct EdgeContext {
   float crease_weight = 0.f;
 };

@@ -55,7 +55,8 @@ void fill_vertex_row(RowBuilder& row, const StepContext& s, const RuleInputs& in
 
 void fill_edge_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index e, int local) {
   const float cw = s.features.edges[e].crease_weight;
-  if (cw < 1.f) apply_edge_rule(row, in, e, needed_rule(s.tables, Element::Edge, Context::Smooth, s.source), 1.0 - cw);
+  // cw may exceed 1 (OpenSubdiv's unclamped Chaikin transition, see classify_edge).
+  if (cw != 1.f) apply_edge_rule(row, in, e, needed_rule(s.tables, Element::Edge, Context::Smooth, s.source), 1.0 - cw);
   if (cw <= 0.f) return;
   const CompiledRule& stated = s.tables.rule(Element::Edge, Context::Crease);
   if (stated.defined && local == 0) return apply_edge_rule(row, in, e, stated, cw);

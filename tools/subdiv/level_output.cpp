@@ -16,9 +16,10 @@ std::string extension_of(const std::filesystem::path& p) {
   return ext;
 }
 
-// Per-point: how each vertex was made and its valence; per-cell: the face it lies in,
-// one level up and in the base mesh.
-OutputLevel describe_level(const Hierarchy& h, int l, const MeshData& mesh, std::vector<double>& base_face) {
+// Per-point: how each vertex was made, its valence and its feature class; per-cell: the
+// face it lies in, one level up and in the base mesh.
+OutputLevel describe_level(const Hierarchy& h, int l, const MeshData& mesh, const FeatureOptions& features,
+                           std::vector<double>& base_face) {
   const Level& L = h.levels[l];
   OutputLevel out;
   out.mesh = &mesh;
@@ -27,6 +28,10 @@ OutputLevel describe_level(const Hierarchy& h, int l, const MeshData& mesh, std:
   DataArray valence{"valence", 1, std::vector<double>(L.vertex_count), true};
   DataArray level{"level", 1, std::vector<double>(L.vertex_count, double(l)), true};
   for (Index v = 0; v < L.vertex_count; ++v) valence.values[v] = L.valence(v);
+  // Context's values are the documented classes: 0 smooth, 1 dart, 2 crease, 3 corner.
+  DataArray vertex_class{"vertex_class", 1, std::vector<double>(L.vertex_count), true};
+  const FeatureContexts fc = classify_features(L, features);
+  for (Index v = 0; v < L.vertex_count; ++v) vertex_class.values[v] = double(int(fc.vertices[v].parent));
   DataArray parent{"parent_face", 1, std::vector<double>(L.face_count(), -1.0), true};
   std::vector<double> next_base(L.face_count());
   for (Index f = 0; f < L.face_count(); ++f) next_base[f] = f;
@@ -41,7 +46,7 @@ OutputLevel describe_level(const Hierarchy& h, int l, const MeshData& mesh, std:
     }
   }
   base_face = std::move(next_base);
-  out.point_data = {std::move(origin), std::move(valence), std::move(level)};
+  out.point_data = {std::move(origin), std::move(valence), std::move(level), std::move(vertex_class)};
   out.cell_data = {std::move(parent), DataArray{"base_face", 1, base_face, true}};
   return out;
 }
@@ -56,7 +61,7 @@ void check_output_path(const std::filesystem::path& out) {
 }
 
 void write_levels(const std::filesystem::path& out, const Hierarchy& h,
-                  const std::vector<std::vector<double>>& positions) {
+                  const std::vector<std::vector<double>>& positions, const FeatureOptions& features) {
   check_output_path(out);
   const std::string ext = extension_of(out);
   const int finest = int(h.levels.size()) - 1;
@@ -69,7 +74,7 @@ void write_levels(const std::filesystem::path& out, const Hierarchy& h,
   }
   std::vector<OutputLevel> levels;
   std::vector<double> base_face;
-  for (int l = 0; l <= finest; ++l) levels.push_back(describe_level(h, l, meshes[l], base_face));
+  for (int l = 0; l <= finest; ++l) levels.push_back(describe_level(h, l, meshes[l], features, base_face));
   if (ext == ".vtp") write_vtp(out, levels.back());
   else write_pvd(out, levels);
 }

@@ -8,9 +8,11 @@
 
 namespace subdiv::cli {
 
-// positions[l] holds level l's xyz.
+// positions[l] holds level l's xyz. `features` (the refinement's boundary mode and crease
+// method) classifies each vertex for the per-point "vertex_class" array of .vtp/.pvd
+// output: 0 smooth, 1 dart, 2 crease, 3 corner, the rule the vertex takes at its level.
 void write_levels(const std::filesystem::path& out, const Hierarchy& h,
-                  const std::vector<std::vector<double>>& positions);
+                  const std::vector<std::vector<double>>& positions, const FeatureOptions& features);
 
 // The output extensions write_levels accepts, for help texts and early checks.
 void check_output_path(const std::filesystem::path& out);

@@ -4,6 +4,8 @@
 #include <tbb/global_control.h>
 
 #include "commands.h"
+#include "framework/io/feature_angle.h"
+#include "framework/io/feature_file.h"
 #include "framework/io/formats.h"
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
@@ -24,6 +26,8 @@ struct RefineArgs {
   int levels = 1;
   std::vector<std::string> params;
   std::string boundary = "edges-and-corners", crease_method = "uniform";
+  std::string features;        // --features FILE.json
+  double feature_angle = -1;   // --feature-angle DEG; < 0: not given
   int threads = 0;
   int start_level = 0;
   bool quiet = false;
@@ -67,6 +71,16 @@ void run(const RefineArgs& a) {
   if (mesh.face_count() == 0)
     throw Error(fmt::format("{}: the mesh has no faces to refine", a.mesh));
   Level base = level_from_mesh(mesh, a.mesh);
+  std::vector<std::string> notes;
+  if (!a.features.empty()) {
+    const FeatureTags tags = read_feature_file(a.features);
+    apply_feature_tags(tags, base);
+    notes.push_back(fmt::format("{}: {} crease edge(s), {} corner(s)", a.features, tags.creases.size(), tags.corners.size()));
+  }
+  if (a.feature_angle >= 0) {
+    const Index sharp = tag_edges_sharper_than(base, mesh.positions, a.feature_angle);
+    notes.push_back(fmt::format("--feature-angle {}: {} edge(s) made infinitely sharp", a.feature_angle, sharp));
+  }
   check_fits_in_memory(*seq.schemes.front(), base, seq.total_levels);
 
   const RefineOptions options = refine_options(a);
@@ -81,9 +95,10 @@ void run(const RefineArgs& a) {
     positions.push_back(h.stencils[l].apply(positions.back(), 3));
   }
   progress.say(fmt::format("writing {}", a.output));
-  write_levels(a.output, h, positions);
+  write_levels(a.output, h, positions, {options.boundary, options.crease_method});
   progress.done();
   if (!a.quiet) {
+    for (const auto& note : notes) fmt::print("{}\n", note);
     const Level& fine = h.levels.back();
     fmt::print("{}: {} level(s) of {} -> {} vertices, {} faces in {:.3f} s -> {}\n", a.mesh, seq.total_levels,
                a.scheme, fine.vertex_count, fine.face_count(), seconds_since(t0), a.output);
@@ -113,6 +128,12 @@ void add_refine_command(CLI::App& app) {
   cmd->add_option("--crease-method", args->crease_method, "How semi-sharp crease sharpness decays: uniform or chaikin")
       ->check(CLI::IsMember({"uniform", "chaikin"}))
       ->capture_default_str();
+  cmd->add_option("--features", args->features,
+                  "Feature sidecar (JSON): creases by edge or vertex path and corners by vertex, 0-based, with "
+                  "sharpness; applied after the mesh file's own tags (see docs/features.md)");
+  cmd->add_option("--feature-angle", args->feature_angle,
+                  "Make every edge whose faces' normals differ by more than DEG degrees an infinitely sharp crease")
+      ->check(CLI::Range(0.0, 180.0));
   cmd->add_option("-j,--threads", args->threads, "Worker threads (0: all cores); results are identical for any count")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
