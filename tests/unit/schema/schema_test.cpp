@@ -1,0 +1,429 @@
+// schemes/scheme.schema.json against the shipped schemes, the engine and the docs.
+//
+// No JSON Schema library is packaged for C++ on Debian, so this file carries a small
+// validator for exactly the keywords the schema uses (and fails on any other keyword, so a
+// new keyword in the schema needs a line here). On top of validation it checks, by walking
+// the schema, that the names it lists (top-level keys, elements, contexts, roles, new
+// points, splits) are the names the engine accepts, and that every complete scheme file
+// shown in docs/scheme-format.md validates, loads and refines a bundled mesh.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "framework/io/mesh_level.h"
+#include "framework/io/mesh_read.h"
+#include "framework/refine/splitter.h"
+#include "framework/rules/rule.h"
+#include "framework/scheme/refiner.h"
+#include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_loader.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/util/error.h"
+
+using Json = nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path source(const std::string& relative) { return fs::path(SUBDIV_SOURCE_DIR) / relative; }
+
+Json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  REQUIRE_MESSAGE(in.good(), "cannot open " << file.string());
+  return Json::parse(in);
+}
+
+const Json& schema() {
+  static const Json s = read_json(source("schemes/scheme.schema.json"));
+  return s;
+}
+
+std::vector<fs::path> shipped_schemes() {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(source("schemes")))
+    if (entry.path().extension() == ".json" && entry.path().filename() != "scheme.schema.json")
+      files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// ---- a validator for the JSON Schema keywords scheme.schema.json uses -----------------
+
+const std::set<std::string> kAnnotations = {"$schema", "$id", "$defs", "title", "description", "default"};
+const std::set<std::string> kKeywords = {
+    "type", "enum", "const", "properties", "additionalProperties", "required", "propertyNames",
+    "pattern", "items", "minItems", "maxItems", "anyOf", "oneOf", "allOf", "not", "if", "then",
+    "else", "$ref"};
+
+// "#/$defs/name" -> the definition.
+const Json& resolve(const std::string& ref) {
+  const std::string prefix = "#/$defs/";
+  if (ref.rfind(prefix, 0) != 0) throw std::runtime_error("unsupported $ref " + ref);
+  const std::string name = ref.substr(prefix.size());
+  if (!schema().contains("$defs") || !schema()["$defs"].contains(name))
+    throw std::runtime_error("$ref to a missing definition: " + ref);
+  return schema()["$defs"][name];
+}
+
+bool has_type(const Json& value, const std::string& type) {
+  if (type == "object") return value.is_object();
+  if (type == "array") return value.is_array();
+  if (type == "string") return value.is_string();
+  if (type == "number") return value.is_number();
+  if (type == "integer") return value.is_number_integer() || (value.is_number_float() && value.get<double>() == std::floor(value.get<double>()));
+  if (type == "boolean") return value.is_boolean();
+  if (type == "null") return value.is_null();
+  throw std::runtime_error("unknown type " + type);
+}
+
+// Appends "path: problem" for every violation of `s` by `value`.
+void validate(const Json& s, const Json& value, const std::string& path, std::vector<std::string>& errors);
+
+bool valid(const Json& s, const Json& value) {
+  std::vector<std::string> errors;
+  validate(s, value, "", errors);
+  return errors.empty();
+}
+
+void validate(const Json& s, const Json& value, const std::string& path, std::vector<std::string>& errors) {
+  if (s.is_boolean()) {
+    if (!s.get<bool>()) errors.push_back(path + ": not allowed");
+    return;
+  }
+  for (auto it = s.begin(); it != s.end(); ++it)
+    if (!kKeywords.count(it.key()) && !kAnnotations.count(it.key()))
+      throw std::runtime_error("the test's validator does not know keyword '" + it.key() + "'");
+  const std::string at = path.empty() ? "(top)" : path;
+  auto fail = [&](const std::string& what) { errors.push_back(at + ": " + what); };
+
+  if (s.contains("$ref")) validate(resolve(s["$ref"]), value, path, errors);
+  if (s.contains("type")) {
+    const Json& t = s["type"];
+    bool ok = false;
+    if (t.is_string()) ok = has_type(value, t);
+    else for (const auto& one : t) ok = ok || has_type(value, one);
+    if (!ok) return fail("expected type " + t.dump() + ", found " + value.dump());
+  }
+  if (s.contains("enum")) {
+    bool found = false;
+    for (const auto& e : s["enum"]) found = found || e == value;
+    if (!found) fail(value.dump() + " is not one of " + s["enum"].dump());
+  }
+  if (s.contains("const") && s["const"] != value) fail(value.dump() + " is not " + s["const"].dump());
+  if (s.contains("pattern") && value.is_string() &&
+      !std::regex_search(value.get<std::string>(), std::regex(s["pattern"].get<std::string>())))
+    fail(value.dump() + " does not match " + s["pattern"].dump());
+  if (value.is_object()) {
+    if (s.contains("required"))
+      for (const auto& key : s["required"])
+        if (!value.contains(key.get<std::string>())) fail("missing \"" + key.get<std::string>() + "\"");
+    for (auto it = value.begin(); it != value.end(); ++it) {
+      const std::string child = path.empty() ? it.key() : path + "." + it.key();
+      if (s.contains("propertyNames")) validate(s["propertyNames"], Json(it.key()), child, errors);
+      if (s.contains("properties") && s["properties"].contains(it.key()))
+        validate(s["properties"][it.key()], it.value(), child, errors);
+      else if (s.contains("additionalProperties")) {
+        const Json& extra = s["additionalProperties"];
+        if (extra.is_boolean() && !extra.get<bool>()) fail("unknown key \"" + it.key() + "\"");
+        else validate(extra, it.value(), child, errors);
+      }
+    }
+  }
+  if (value.is_array()) {
+    if (s.contains("minItems") && value.size() < s["minItems"].get<size_t>())
+      fail("needs at least " + s["minItems"].dump() + " items");
+    if (s.contains("maxItems") && value.size() > s["maxItems"].get<size_t>())
+      fail("allows at most " + s["maxItems"].dump() + " items");
+    if (s.contains("items"))
+      for (size_t i = 0; i < value.size(); ++i)
+        validate(s["items"], value[i], path + "[" + std::to_string(i) + "]", errors);
+  }
+  if (s.contains("allOf"))
+    for (const auto& sub : s["allOf"]) validate(sub, value, path, errors);
+  if (s.contains("anyOf")) {
+    bool any = false;
+    for (const auto& sub : s["anyOf"]) any = any || valid(sub, value);
+    if (!any) fail("matches none of the allowed forms");
+  }
+  if (s.contains("oneOf")) {
+    int count = 0;
+    for (const auto& sub : s["oneOf"]) count += valid(sub, value);
+    if (count != 1) fail("must match exactly one form, matches " + std::to_string(count));
+  }
+  if (s.contains("not") && valid(s["not"], value)) fail("matches a form that is not allowed");
+  if (s.contains("if")) {
+    if (valid(s["if"], value)) {
+      if (s.contains("then")) validate(s["then"], value, path, errors);
+    } else if (s.contains("else")) {
+      validate(s["else"], value, path, errors);
+    }
+  }
+}
+
+std::string validation_report(const Json& document) {
+  std::vector<std::string> errors;
+  validate(schema(), document, "", errors);
+  std::string report;
+  for (const auto& e : errors) report += e + "\n";
+  return report;
+}
+
+// ---- reading names out of the schema ---------------------------------------------------
+
+const Json& def(const std::string& name) { return resolve("#/$defs/" + name); }
+
+std::set<std::string> property_names(const Json& s) {
+  std::set<std::string> names;
+  for (auto it = s["properties"].begin(); it != s["properties"].end(); ++it) names.insert(it.key());
+  return names;
+}
+
+std::set<std::string> enum_of(const Json& s) {
+  std::set<std::string> names;
+  for (const auto& e : s["enum"]) names.insert(e.get<std::string>());
+  return names;
+}
+
+// The contexts a rule of this element may name: the object form among the rule's anyOf.
+std::set<std::string> contexts_of(const std::string& rule_def) {
+  for (const auto& form : def(rule_def)["anyOf"])
+    if (form.contains("properties")) return property_names(form);
+  return {};
+}
+
+std::string term_def(subdiv::Element e) { return std::string(subdiv::element_name(e)) + "Term"; }
+
+// Roles a term of this element may name in the schema, "at" and "sum" together.
+std::set<std::string> roles_of(subdiv::Element e) {
+  const Json& term = def(term_def(e));
+  std::set<std::string> roles = enum_of(term["properties"]["sum"]);
+  if (term["properties"].contains("at")) roles.merge(enum_of(term["properties"]["at"]));
+  return roles;
+}
+
+// ---- the docs: complete scheme files in ```json blocks --------------------------------
+
+std::vector<std::string> json_blocks(const fs::path& markdown) {
+  std::ifstream in(markdown);
+  std::vector<std::string> blocks;
+  std::string line, block;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    if (!inside && line == "```json") inside = true, block.clear();
+    else if (inside && line.rfind("```", 0) == 0) inside = false, blocks.push_back(block);
+    else if (inside) block += line + "\n";
+  }
+  return blocks;
+}
+
+}  // namespace
+
+TEST_CASE("the schema parses and uses only what this test's validator understands") {
+  const Json& s = schema();
+  REQUIRE(s.is_object());
+  CHECK(s["$schema"] == "https://json-schema.org/draft/2020-12/schema");
+  CHECK(s["$defs"].contains("surfaceScheme"));
+  CHECK(s["$defs"].contains("curveScheme"));
+  // Walk every subschema: known keywords only, every $ref resolves.
+  std::vector<const Json*> todo{&s};
+  int visited = 0;
+  while (!todo.empty()) {
+    const Json& node = *todo.back();
+    todo.pop_back();
+    ++visited;
+    if (!node.is_object()) continue;
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      const std::string& key = it.key();
+      CHECK_MESSAGE((kKeywords.count(key) || kAnnotations.count(key)), "unknown keyword " << key);
+      if (key == "$ref") CHECK_NOTHROW(resolve(it.value()));
+      if (key == "properties" || key == "$defs")
+        for (const auto& sub : it.value()) todo.push_back(&sub);
+      else if (key == "anyOf" || key == "oneOf" || key == "allOf")
+        for (const auto& sub : it.value()) todo.push_back(&sub);
+      else if (key == "items" || key == "not" || key == "if" || key == "then" || key == "else" ||
+               key == "propertyNames" || (key == "additionalProperties" && it.value().is_object()))
+        todo.push_back(&it.value());
+    }
+  }
+  CHECK(visited > 50);
+}
+
+TEST_CASE("every shipped scheme validates against the schema and says where the schema is") {
+  const auto files = shipped_schemes();
+  REQUIRE(files.size() >= 6);
+  for (const auto& file : files) {
+    CAPTURE(file.string());
+    const Json scheme = read_json(file);
+    CHECK(scheme.value("$schema", "") == "./scheme.schema.json");
+    const std::string report = validation_report(scheme);
+    CHECK_MESSAGE(report.empty(), report);
+  }
+}
+
+TEST_CASE("every key, element, context and role a shipped scheme uses is listed in the schema") {
+  const std::set<std::string> surface_keys = property_names(def("surfaceScheme"));
+  const std::set<std::string> curve_keys = property_names(def("curveScheme"));
+  const std::set<std::string> elements = property_names(def("surfaceRules"));
+  for (const auto& file : shipped_schemes()) {
+    CAPTURE(file.string());
+    const Json scheme = read_json(file);
+    const bool curve = scheme.value("kind", "surface") == "curve";
+    for (auto it = scheme.begin(); it != scheme.end(); ++it)
+      CHECK_MESSAGE((curve ? curve_keys : surface_keys).count(it.key()), "top-level key " << it.key());
+    if (curve) {
+      for (const auto& rule : scheme["rules"])
+        for (auto it = rule.begin(); it != rule.end(); ++it)
+          CHECK_MESSAGE(property_names(def("curveRule")).count(it.key()), "curve rule key " << it.key());
+      continue;
+    }
+    for (auto it = scheme["rules"].begin(); it != scheme["rules"].end(); ++it) {
+      const std::string element = it.key();
+      REQUIRE_MESSAGE(elements.count(element), "element " << element);
+      const subdiv::Element e = element == "face" ? subdiv::Element::Face
+                                : element == "edge" ? subdiv::Element::Edge
+                                                    : subdiv::Element::Vertex;
+      const std::set<std::string> roles = roles_of(e);
+      const Json& term_schema = def(term_def(e));
+      std::vector<const Json*> rules;
+      if (it.value().is_array()) rules.push_back(&it.value());
+      else
+        for (auto c = it.value().begin(); c != it.value().end(); ++c) {
+          CHECK_MESSAGE(contexts_of(element + "Rule").count(c.key()), element << " context " << c.key());
+          rules.push_back(&c.value());
+        }
+      for (const Json* rule : rules)
+        for (const auto& term : *rule) {
+          for (auto k = term.begin(); k != term.end(); ++k)
+            CHECK_MESSAGE(term_schema["properties"].contains(k.key()), element << " term key " << k.key());
+          const std::string role = term.contains("at") ? term["at"] : term["sum"];
+          CHECK_MESSAGE(roles.count(role), element << " role " << role);
+          if (term.contains("new"))
+            CHECK_MESSAGE(enum_of(term_schema["properties"]["new"]).count(term["new"].get<std::string>()), "new " << term["new"]);
+        }
+    }
+  }
+}
+
+TEST_CASE("the schema's names are the engine's names") {
+  using namespace subdiv;
+  // Splits.
+  for (const auto& split : enum_of(def("surfaceScheme")["properties"]["split"]))
+    CHECK_NOTHROW(split_kind_from_name(split));
+  CHECK(enum_of(def("surfaceScheme")["properties"]["split"]) == std::set<std::string>{"quad", "triangle"});
+  // Elements.
+  std::set<std::string> engine_elements;
+  for (int e = 0; e < kElementCount; ++e) engine_elements.insert(std::string(element_name(Element(e))));
+  CHECK(property_names(def("surfaceRules")) == engine_elements);
+  // Contexts: the vertex rule may name all of them; every context named anywhere exists.
+  std::set<std::string> engine_contexts;
+  for (int c = 0; c < kContextCount; ++c) engine_contexts.insert(std::string(context_name(Context(c))));
+  CHECK(contexts_of("vertexRule") == engine_contexts);
+  for (const char* rule : {"faceRule", "edgeRule"})
+    for (const auto& c : contexts_of(rule)) CHECK_MESSAGE(context_from_name(c).has_value(), rule << " " << c);
+  // Roles: per element, the schema lists exactly the roles the engine allows there, except
+  // 'curve', which only the engine's crease defaults use and a file cannot name.
+  for (int e = 0; e < kElementCount; ++e) {
+    std::set<std::string> engine_roles;
+    for (const char* name : {"self", "ring", "faces", "edges", "ends", "opposite", "vertices"}) {
+      const auto role = role_from_name(name);
+      REQUIRE(role.has_value());
+      if (role_allowed(Element(e), *role)) engine_roles.insert(name);
+    }
+    CHECK_MESSAGE(roles_of(Element(e)) == engine_roles, element_name(Element(e)));
+    for (const auto& n : enum_of(def(term_def(Element(e)))["properties"]["new"]))
+      CHECK(new_point_from_name(n).has_value());
+  }
+  // Curve arities.
+  CHECK(def("curveScheme")["properties"]["arity"]["enum"] == Json::array({2, 3}));
+}
+
+TEST_CASE("the schema refuses what the loader refuses") {
+  const Json cc = read_json(source("schemes/catmull-clark.json"));
+  auto refused = [&](const std::string& what, const std::function<void(Json&)>& change) {
+    Json s = cc;
+    change(s);
+    CHECK_MESSAGE(!validation_report(s).empty(), what);
+  };
+  CHECK(validation_report(cc).empty());
+  refused("unknown role", [](Json& s) { s["rules"]["vertex"][1]["sum"] = "neighbours"; });
+  refused("unknown top-level key", [](Json& s) { s["splits"] = "quad"; });
+  refused("unknown split", [](Json& s) { s["split"] = "sqrt3"; });
+  refused("faces without new", [](Json& s) { s["rules"]["vertex"][2].erase("new"); });
+  refused("at with a role of several points", [](Json& s) { s["rules"]["vertex"][1] = {{"at", "ring"}, {"w", "1"}}; });
+  refused("both at and sum", [](Json& s) { s["rules"]["vertex"][0]["sum"] = "ring"; });
+  refused("a term without w", [](Json& s) { s["rules"]["vertex"][0].erase("w"); });
+  refused("contexts without smooth", [](Json& s) { s["rules"]["vertex"] = {{"corner", Json::array()}}; });
+  refused("unknown context", [](Json& s) {
+    s["rules"]["vertex"] = {{"smooth", s["rules"]["vertex"]}, {"boundary", Json::array()}};
+  });
+  refused("a vertex role in a face rule", [](Json& s) { s["rules"]["face"][0]["sum"] = "ring"; });
+  refused("a choice default that is a number", [](Json& s) {
+    s["parameters"] = {{"b", {{"default", 1}, {"choices", {"x", "y"}}}}};
+  });
+  Json curve = read_json(source("schemes/cubic-bspline.json"));
+  CHECK(validation_report(curve).empty());
+  curve["arity"] = 3;
+  CHECK_MESSAGE(!validation_report(curve).empty(), "arity 3 with 2 rules");
+}
+
+TEST_CASE("every complete scheme file in docs/scheme-format.md validates, loads and refines") {
+  const fs::path doc = source("docs/scheme-format.md");
+  REQUIRE(fs::exists(doc));
+  const auto blocks = json_blocks(doc);
+  REQUIRE(blocks.size() >= 4);
+  // Written under their names into one directory, in the order of the doc, and loaded at
+  // once: a surface example can refer to a curve example shown before it by file name.
+  const fs::path dir = fs::temp_directory_path() / "subdivkit-schema-doc-examples";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (const auto& text : blocks) {
+    CAPTURE(text);
+    Json scheme;
+    REQUIRE_NOTHROW(scheme = Json::parse(text));
+    const std::string report = validation_report(scheme);
+    CHECK_MESSAGE(report.empty(), report);
+    const fs::path file = dir / (scheme["name"].get<std::string>() + ".json");
+    std::ofstream(file) << text;
+    if (scheme.value("kind", "surface") == "curve") {
+      CHECK_NOTHROW(subdiv::load_curve_scheme(file, {}));
+      continue;
+    }
+    std::shared_ptr<const subdiv::Scheme> loaded;
+    try {
+      loaded = subdiv::load_scheme(file.string());
+    } catch (const subdiv::Error& e) {
+      FAIL(std::string(e.what()));
+    }
+    // Refine bundled meshes of the faces the scheme takes: closed, creased, with boundaries.
+    const bool triangles = scheme["split"] == "triangle" || scheme.value("faces", "any") == "triangles";
+    const bool quads = scheme.value("faces", "any") == "quads";
+    const std::vector<std::string> meshes =
+        triangles ? std::vector<std::string>{"octahedron.obj", "tetrahedron.obj"}
+        : quads   ? std::vector<std::string>{"cube.obj", "cube-creased.obj", "plane-with-hole.obj", "torus-quads.obj"}
+                  : std::vector<std::string>{"cube.obj", "cube-creased.obj", "plane-with-hole.obj", "pyramid.obj"};
+    for (const auto& name : meshes) {
+      CAPTURE(name);
+      const fs::path mesh_file = source("examples/meshes/" + name);
+      const subdiv::MeshData mesh = subdiv::read_mesh(mesh_file);
+      subdiv::RefineOptions options;
+      options.levels = 2;
+      try {
+        const auto h = subdiv::refine(*loaded, subdiv::level_from_mesh(mesh, mesh_file.string()), options);
+        CHECK(h.levels.size() == 3);
+      } catch (const subdiv::Error& e) {
+        FAIL(std::string(e.what()));
+      }
+    }
+  }
+  fs::remove_all(dir);
+}
