@@ -25,9 +25,10 @@ const CompiledRule& needed_rule(const WeightTables& tables, Element e, Context c
   const CompiledRule& rule = tables.rule(e, c);
   if (!rule.defined)
     throw Error(fmt::format(
-        "{}: the mesh needs a {} rule for the '{}' context, and the scheme has none; add "
-        "rules.{}.{} or name a boundary curve scheme with \"curve\"",
-        source, element_name(e), context_name(c), element_name(e), context_name(c)));
+        "{}: the mesh needs a rule for new {} points in the '{}' context, and the scheme has none; "
+        "add rules.{}.{}{}",
+        source, element_name(e), context_name(c), element_name(e), context_name(c),
+        c == Context::Crease ? " or name a boundary curve scheme with \"curve\"" : ""));
   return rule;
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <fmt/format.h>
 
-#include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -90,10 +89,11 @@ CompiledRule stay_rule() {
 
 }  // namespace
 
-WeightTables prepare_weight_tables(const StepRules& step, const Scheme& scheme, int max_n, int max_k, int level) {
+WeightTables prepare_weight_tables(const StepRules& step, const FormulaScope& scope, int max_n, int max_k, int level) {
   WeightTables tables;
   tables.max_n = max_n, tables.max_k = max_k;
-  FormulaSet formulas(scheme.parameter_values(), scheme.definitions);
+  static const std::vector<NamedFormula> none;
+  FormulaSet formulas(scope.parameters, scope.definitions ? *scope.definitions : none);
   for (int e = 0; e < kElementCount; ++e)
     for (int c = 0; c < kContextCount; ++c)
       if (step.rules[e][c]) tables.rules[e][c] = compile_rule(*step.rules[e][c], formulas, max_n, max_k, level);
@@ -103,9 +103,9 @@ WeightTables prepare_weight_tables(const StepRules& step, const Scheme& scheme, 
     if (!r[int(Context::Dart)].defined) r[int(Context::Dart)] = r[int(Context::Smooth)];
     if (!r[int(Context::Corner)].defined) r[int(Context::Corner)] = stay_rule();
   }
-  if (scheme.curve && step.curve_rules_apply) {
-    tables.curve_arity = scheme.curve->arity;
-    for (int r = 0; r < scheme.curve->arity; ++r) tables.curve_rules.push_back(curve_rule(*scheme.curve, r, level));
+  if (scope.curve && step.curve_rules_apply) {
+    tables.curve_arity = scope.curve->arity;
+    for (int r = 0; r < scope.curve->arity; ++r) tables.curve_rules.push_back(curve_rule(*scope.curve, r, level));
   }
   // In schemes with smoothing passes the curve scheme describes the result of the whole
   // level: the split's features follow its own (linear) smooth rules, and a smoothing pass

@@ -7,11 +7,9 @@
 #include <vector>
 
 #include "framework/rules/rule.h"
+#include "framework/rules/rule_set.h"
 
 namespace subdiv {
-
-struct Scheme;
-struct StepRules;
 
 struct CompiledTerm {
   Role role = Role::Self;
@@ -46,7 +44,15 @@ struct WeightTables {
   const CompiledRule& rule(Element e, Context c) const { return rules[int(e)][int(c)]; }
 };
 
+// What formulas may refer to besides n, k, j, l, n0, n1: the scheme's numeric parameters
+// and named definitions; and the curve scheme for boundaries and creases (may be null).
+struct FormulaScope {
+  std::map<std::string, double> parameters;
+  const std::vector<NamedFormula>* definitions = nullptr;
+  const CurveScheme* curve = nullptr;
+};
+
 // max_n: the largest valence, max_k: the largest face size on the level; level: l.
-WeightTables prepare_weight_tables(const StepRules& step, const Scheme& scheme, int max_n, int max_k, int level);
+WeightTables prepare_weight_tables(const StepRules& step, const FormulaScope& scope, int max_n, int max_k, int level);
 
 }  // namespace subdiv

@@ -38,7 +38,7 @@ int max_valence(const Level& level) {
 StencilTable step_stencils(const Scheme& scheme, const StepRules& step, const Level& parent,
                            const ChildOrigins& origins, bool features_refined, int level,
                            const RefineOptions& options) {
-  const WeightTables tables = prepare_weight_tables(step, scheme, max_valence(parent), parent.max_face_size(), level);
+  const WeightTables tables = prepare_weight_tables(step, scheme.formula_scope(), max_valence(parent), parent.max_face_size(), level);
   const FeatureContexts features = classify_features(parent, {options.boundary, options.crease_method});
   return build_step_stencils({parent, origins, tables, features, features_refined, scheme.path});
 }

@@ -10,6 +10,8 @@
 #include "framework/refine/splitter.h"
 #include "framework/rules/formula.h"
 #include "framework/rules/rule.h"
+#include "framework/rules/rule_set.h"
+#include "framework/rules/weight_tables.h"
 
 namespace subdiv {
 
@@ -21,28 +23,6 @@ struct ParameterSpec {
   bool minimum_exclusive = false, maximum_exclusive = false;
   std::string choice;                           // choice parameters: the chosen value
   std::vector<std::string> choices;
-};
-
-// A curve scheme of arity m: new point m*i + r = sum_t w[r][t] * old point (i + start[r] + t).
-struct CurveScheme {
-  std::string name, description, path;
-  int arity = 2;
-  std::vector<int> starts;
-  std::vector<std::vector<std::string>> weights;
-  std::map<std::string, double> parameters;
-  std::vector<NamedFormula> definitions;
-};
-
-// One step of a scheme level: a split with its rules, or a smoothing pass that moves the
-// vertices of an unchanged mesh (refine-then-average schemes, seed 002 and seed 003).
-struct StepRules {
-  bool is_split = true;
-  SplitKind split = SplitKind::Quad;
-  RuleTable rules;
-  // Whether crease/boundary defaults come from the curve scheme: true for single-step
-  // schemes; in schemes with smoothing passes the passes shape the features instead.
-  bool curve_rules_apply = true;
-  std::string where;
 };
 
 struct Scheme {
@@ -57,6 +37,8 @@ struct Scheme {
 
   // Numeric parameter values by name, as formulas see them.
   std::map<std::string, double> parameter_values() const;
+  // Parameters, definitions and curve, for compiling this scheme's rules.
+  FormulaScope formula_scope() const { return {parameter_values(), &definitions, curve.get()}; }
 };
 
 }  // namespace subdiv

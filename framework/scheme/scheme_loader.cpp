@@ -67,6 +67,13 @@ double parse_number(const std::string& text, const Place& at) {
   fail(at, fmt::format("'{}' is not a number", text));
 }
 
+// Names formulas already use for themselves.
+void check_not_reserved(const std::string& name, const Place& at) {
+  static const std::set<std::string> reserved{"n", "k", "j", "l", "n0", "n1", "pi"};
+  if (reserved.count(name))
+    fail(at, fmt::format("'{}' is a reserved name in formulas (n, k, j, l, n0, n1, pi); rename it", name));
+}
+
 ParameterSpec parse_parameter(const std::string& name, const Json& spec, const Place& at) {
   check_keys(spec, {"default", "min", "max", "min_exclusive", "max_exclusive", "choices", "description"}, at);
   ParameterSpec p;
@@ -124,6 +131,9 @@ std::vector<ParameterSpec> parse_parameters(const Json& root, const Place& at,
   if (!root.contains("parameters")) return params;
   const Json& list = root["parameters"];
   for (auto it = list.begin(); it != list.end(); ++it) {
+    check_not_reserved(it.key(), at / "parameters" / it.key());
+    if (!it.value().is_object())
+      fail(at / "parameters" / it.key(), "a parameter is an object such as {\"default\": 0.5, \"min\": 0, \"max\": 1}");
     ParameterSpec p = parse_parameter(it.key(), it.value(), at / "parameters" / it.key());
     if (auto o = overrides.find(p.name); o != overrides.end()) {
       apply_override(p, o->second, at.file);
@@ -143,6 +153,7 @@ std::vector<NamedFormula> parse_definitions(const Json& root, const Place& at,
   const Json& list = root["definitions"];
   for (auto it = list.begin(); it != list.end(); ++it) {
     const Place here = at / "definitions" / it.key();
+    check_not_reserved(it.key(), here);
     if (!it.value().is_object()) {
       defs.push_back({it.key(), as_formula(it.value(), here), here.str()});
       continue;
@@ -331,15 +342,18 @@ int parse_face_requirement(const Json& root, const Place& at) {
   fail(at / "faces", fmt::format("'{}' is not one of: any, triangles, quads", faces));
 }
 
-// Compiles every formula once so syntax errors surface at load time with their place.
+// Compiles and evaluates every formula once (at a regular valence) so syntax errors and
+// unknown names surface at load time with their place.
 void check_formulas(const Scheme& s) {
   FormulaSet formulas(s.parameter_values(), s.definitions);
+  const FormulaInputs sample{4, 4, 0, 0, 6, 6};
   for (const auto& step : s.steps)
     for (const auto& by_context : step.rules)
       for (const auto& rule : by_context)
         if (rule)
-          for (const auto& term : rule->terms) formulas.add(term.weight, term.where);
+          for (const auto& term : rule->terms) formulas.evaluate(formulas.add(term.weight, term.where), sample);
 }
+
 
 void check_unknown_overrides(const ParameterOverrides& overrides, const std::set<std::string>& used,
                              const std::string& file) {
@@ -383,9 +397,22 @@ std::string scheme_file_kind(const std::filesystem::path& path) {
   return kind;
 }
 
-std::shared_ptr<const CurveScheme> load_curve_scheme(const std::filesystem::path& path,
-                                                     const ParameterOverrides& overrides,
-                                                     std::set<std::string>* used) {
+// A value of the wrong JSON type (a string where a number belongs, ...) as a clear error.
+template <class Load>
+auto with_type_errors(const std::filesystem::path& path, Load load) {
+  try {
+    return load();
+  } catch (const nlohmann::json::exception& e) {
+    std::string what = e.what();
+    if (auto pos = what.find("] "); pos != std::string::npos) what = what.substr(pos + 2);
+    throw Error(fmt::format("{}: a value has the wrong JSON type ({}); docs/scheme-format.md shows each key's type",
+                            path.string(), what));
+  }
+}
+
+std::shared_ptr<const CurveScheme> load_curve_scheme_unchecked(const std::filesystem::path& path,
+                                                               const ParameterOverrides& overrides,
+                                                               std::set<std::string>* used) {
   const Json root = read_json_file(path);
   const Place at{path.string(), ""};
   check_keys(root, {"$schema", "name", "kind", "description", "reference", "arity", "parameters", "definitions", "rules"}, at);
@@ -419,9 +446,9 @@ std::shared_ptr<const CurveScheme> load_curve_scheme(const std::filesystem::path
   return curve;
 }
 
-std::shared_ptr<const Scheme> load_surface_scheme(const std::filesystem::path& path,
-                                                  const ParameterOverrides& overrides,
-                                                  const CurveResolver& resolve_curve) {
+std::shared_ptr<const Scheme> load_surface_scheme_unchecked(const std::filesystem::path& path,
+                                                            const ParameterOverrides& overrides,
+                                                            const CurveResolver& resolve_curve) {
   const Json root = read_json_file(path);
   const Place at{path.string(), ""};
   check_keys(root, {"$schema", "name", "kind", "description", "reference", "split", "faces", "curve",
@@ -449,6 +476,18 @@ std::shared_ptr<const Scheme> load_surface_scheme(const std::filesystem::path& p
   check_unknown_overrides(overrides, used, path.string());
   check_formulas(*s);
   return s;
+}
+
+std::shared_ptr<const CurveScheme> load_curve_scheme(const std::filesystem::path& path,
+                                                     const ParameterOverrides& overrides,
+                                                     std::set<std::string>* used) {
+  return with_type_errors(path, [&] { return load_curve_scheme_unchecked(path, overrides, used); });
+}
+
+std::shared_ptr<const Scheme> load_surface_scheme(const std::filesystem::path& path,
+                                                  const ParameterOverrides& overrides,
+                                                  const CurveResolver& resolve_curve) {
+  return with_type_errors(path, [&] { return load_surface_scheme_unchecked(path, overrides, resolve_curve); });
 }
 
 }  // namespace subdiv

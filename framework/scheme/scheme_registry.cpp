@@ -86,8 +86,10 @@ std::vector<SchemeListing> list_schemes() {
         const auto root = read_json_file(entry.path());
         listing.description = root.value("description", "");
         listing.kind = root.value("kind", "surface");
-      } catch (const Error& e) {
+      } catch (const std::exception& e) {
+        // One broken file must not hide the others: list it with the reason.
         listing.description = std::string("(unreadable: ") + e.what() + ")";
+        listing.kind = "surface";
       }
       found.push_back(std::move(listing));
     }

@@ -113,7 +113,7 @@ int natural_face_size(const Scheme& s) {
 
 void check_step(const Scheme& scheme, const StepRules& step, const std::string& text, int lo, int hi,
                 ValidationReport& report) {
-  const WeightTables tables = prepare_weight_tables(step, scheme, hi, 8, 0);
+  const WeightTables tables = prepare_weight_tables(step, scheme.formula_scope(), hi, 8, 0);
   const int face_size = natural_face_size(scheme);
   for (int e = 0; e < kElementCount; ++e)
     for (int c = 0; c < kContextCount; ++c) {

@@ -70,3 +70,20 @@ TEST_CASE("unknown scheme names list the known ones; missing files are named") {
   CHECK_THROWS_WITH_AS(load_scheme("catmul-clark"), doctest::Contains("catmull-clark"), Error);
   CHECK_THROWS_WITH_AS(load_scheme("/nonexistent/x.json"), doctest::Contains("does not exist"), Error);
 }
+
+TEST_CASE("load-time checks: unknown names in formulas, reserved names, wrong JSON types") {
+  const auto unknown = write_scheme("unknown-name", quad_scheme(R"J([{"at": "self", "w": "1 - alpha"}, {"sum": "ring", "w": "alpha/n"}])J"));
+  CHECK_THROWS_WITH_AS(load_scheme(unknown.string()), doctest::Contains("rules.vertex[0]"), Error);
+  const auto reserved = write_scheme("reserved", R"J({"name": "r", "split": "quad", "curve": "cubic-bspline",
+    "parameters": {"n": {"default": 1}},
+    "rules": {"face": [{"sum": "vertices", "w": "1/k"}], "edge": [{"sum": "ends", "w": "1/2"}], "vertex": [{"at": "self", "w": "1"}]}})J");
+  CHECK_THROWS_WITH_AS(load_scheme(reserved.string()), doctest::Contains("'n' is a reserved name"), Error);
+  const auto typed = write_scheme("typed", R"J({"name": "t", "split": "quad", "curve": "cubic-bspline",
+    "parameters": {"a": {"default": 0.5, "min": "zero"}},
+    "rules": {"face": [{"sum": "vertices", "w": "1/k"}], "edge": [{"sum": "ends", "w": "1/2"}], "vertex": [{"at": "self", "w": "1"}]}})J");
+  CHECK_THROWS_WITH_AS(load_scheme(typed.string()), doctest::Contains("wrong JSON type"), Error);
+  const auto bare = write_scheme("bare", R"J({"name": "t", "split": "quad", "curve": "cubic-bspline",
+    "parameters": {"a": 0.5},
+    "rules": {"face": [{"sum": "vertices", "w": "1/k"}], "edge": [{"sum": "ends", "w": "1/2"}], "vertex": [{"at": "self", "w": "1"}]}})J");
+  CHECK_THROWS_WITH_AS(load_scheme(bare.string()), doctest::Contains("a parameter is an object"), Error);
+}
