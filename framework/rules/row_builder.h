@@ -1,6 +1,9 @@
 #pragma once
-// Accumulates one stencil row, merging repeated sources. Rows are short (tens of entries),
-// so a linear search beats any map.
+// Accumulates one stencil row, merging repeated sources. Rows are short (tens of entries):
+// a small open-addressing table finds a repeated source in one or two probes, and rows too
+// long for it fall back to a linear search.
+#include <array>
+#include <cstdint>
 #include <vector>
 
 #include "framework/topology/level.h"
@@ -30,13 +33,21 @@ struct ChunkedRows {
 
 class RowBuilder {
 public:
-  void clear() { indices_.clear(), weights_.clear(); }
+  RowBuilder() { slots_.fill(kEmpty); }
+  void clear() {
+    for (std::uint8_t slot : used_slots_) slots_[slot] = kEmpty;
+    used_slots_.clear(), indices_.clear(), weights_.clear();
+  }
   void add(Index source, double weight) {
-    for (size_t i = 0; i < indices_.size(); ++i)
-      if (indices_[i] == source) {
-        weights_[i] += weight;
-        return;
-      }
+    if (indices_.size() >= kMaxHashed) return add_linear(source, weight);
+    const size_t at = find_slot(source);
+    std::int16_t& slot = slots_[at];
+    if (slot != kEmpty) {
+      weights_[slot] += weight;
+      return;
+    }
+    slot = std::int16_t(indices_.size());
+    used_slots_.push_back(std::uint8_t(at));
     indices_.push_back(source);
     weights_.push_back(weight);
   }
@@ -49,6 +60,28 @@ public:
   const std::vector<double>& weights() const { return weights_; }
 
 private:
+  static constexpr int kSlots = 128;  // power of two, well above kMaxHashed
+  static constexpr size_t kMaxHashed = 48;
+  static constexpr std::int16_t kEmpty = -1;
+
+  // Linear probing; only the first kMaxHashed sources are in the table.
+  size_t find_slot(Index source) const {
+    size_t h = (std::uint32_t(source) * 2654435761u) >> 25;
+    while (slots_[h] != kEmpty && indices_[slots_[h]] != source) h = (h + 1) & (kSlots - 1);
+    return h;
+  }
+  void add_linear(Index source, double weight) {
+    for (size_t i = 0; i < indices_.size(); ++i)
+      if (indices_[i] == source) {
+        weights_[i] += weight;
+        return;
+      }
+    indices_.push_back(source);
+    weights_.push_back(weight);
+  }
+
+  std::array<std::int16_t, kSlots> slots_;
+  std::vector<std::uint8_t> used_slots_;
   std::vector<Index> indices_;
   std::vector<double> weights_;
 };

@@ -13,7 +13,9 @@ namespace subdiv {
 namespace {
 
 constexpr double kSumTolerance = 1e-9;
-constexpr Index kChunk = 1024;
+// Rows per parallel chunk: small enough that a chunk's buffers stay under glibc's mmap
+// threshold (and so are reused instead of faulted in afresh), large enough to amortise tasks.
+constexpr Index kChunk = 512;
 
 // The child vertices of one element kind, and where each element's first child is.
 struct ChildGroup {
