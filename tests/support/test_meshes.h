@@ -78,6 +78,20 @@ inline Mesh torus(int nu, int nv, bool triangles = false, double R = 3.0, double
   return m;
 }
 
+// A double cone over a regular n-gon: apex n has valence n, apex n+1 too, the equator
+// vertices valence 4. Closed triangle mesh.
+inline Mesh bipyramid(int n) {
+  Mesh m;
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i < n; ++i) m.add_vertex(std::cos(2 * pi * i / n), std::sin(2 * pi * i / n), 0);
+  m.add_vertex(0, 0, 1), m.add_vertex(0, 0, -1);
+  for (int i = 0; i < n; ++i) {
+    m.add_face({Index(i), Index((i + 1) % n), Index(n)});
+    m.add_face({Index((i + 1) % n), Index(i), Index(n + 1)});
+  }
+  return m;
+}
+
 inline Mesh octahedron() {
   Mesh m;
   m.add_vertex(1, 0, 0), m.add_vertex(-1, 0, 0), m.add_vertex(0, 1, 0);

@@ -9,18 +9,12 @@
 #include <vtkXMLPolyDataReader.h>
 
 #include "support/cli_runner.h"
+#include "support/vtk_read.h"
 
 using namespace subdiv::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-vtkSmartPointer<vtkPolyData> read_vtp(const fs::path& file) {
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  return reader->GetOutput();
-}
 
 // The error cases: non-zero exit, a message with the named place, nothing written.
 void check_refused(const std::string& args, const fs::path& out, const std::string& message) {

@@ -16,23 +16,11 @@ double loop_beta(int n) {
 }
 double warren_beta(int n) { return n == 3 ? 3.0 / 16 : 3.0 / (8.0 * n); }
 
-// A closed triangle mesh with one vertex of every valence 3..8: a double cone (bipyramid).
-test::Mesh bipyramid(int n) {
-  test::Mesh m;
-  for (int i = 0; i < n; ++i) m.add_vertex(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), 0);
-  m.add_vertex(0, 0, 1), m.add_vertex(0, 0, -1);
-  for (int i = 0; i < n; ++i) {
-    m.add_face({Index(i), Index((i + 1) % n), Index(n)});
-    m.add_face({Index((i + 1) % n), Index(i), Index(n + 1)});
-  }
-  return m;
-}
-
 }  // namespace
 
 TEST_CASE("Loop vertex rule gives the seed's beta_n, both variants, valences 3..12") {
   for (int n = 3; n <= 12; ++n) {
-    const test::Mesh m = bipyramid(n);
+    const test::Mesh m = test::bipyramid(n);
     const Index apex = n;  // valence n
     for (const std::string variant : {"loop", "warren"}) {
       const auto r = test::refine_mesh(m, "loop", 1, {}, {{"beta", variant}});

@@ -13,18 +13,12 @@
 #include <vtkXMLPolyDataReader.h>
 
 #include "support/cli_runner.h"
+#include "support/vtk_read.h"
 
 using namespace subdiv::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-vtkSmartPointer<vtkPolyData> read_vtp(const fs::path& file) {
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  return reader->GetOutput();
-}
 
 fs::path level_file(const fs::path& pvd, int level) {
   return pvd.parent_path() / (pvd.stem().string() + "_levels") / ("level_" + std::to_string(level) + ".vtp");

@@ -11,22 +11,12 @@ namespace {
 
 const double kPi = std::acos(-1.0);
 
-test::Mesh bipyramid(int n) {
-  test::Mesh m;
-  for (int i = 0; i < n; ++i) m.add_vertex(std::cos(2 * kPi * i / n), std::sin(2 * kPi * i / n), 0);
-  m.add_vertex(0, 0, 1), m.add_vertex(0, 0, -1);
-  for (int i = 0; i < n; ++i) {
-    m.add_face({Index(i), Index((i + 1) % n), Index(n)});
-    m.add_face({Index((i + 1) % n), Index(i), Index(n + 1)});
-  }
-  return m;
-}
 
 }  // namespace
 
 TEST_CASE("sqrt3 vertex rule: (1 - alpha_n) p + alpha_n/n sum p_i, alpha_n = (4 - 2 cos(2 pi/n))/9") {
   for (int n = 3; n <= 10; ++n) {
-    const auto r = test::refine_mesh(bipyramid(n), "sqrt3", 1);
+    const auto r = test::refine_mesh(test::bipyramid(n), "sqrt3", 1);
     const double alpha = (4 - 2 * std::cos(2 * kPi / n)) / 9;
     const auto& S = r.hierarchy.stencils[0];
     CHECK(weight_of(S, n, n) == doctest::Approx(1 - alpha).epsilon(1e-14));
@@ -115,7 +105,7 @@ TEST_CASE("butterfly edge rule: 1/2 ends, 1/8 wings, -1/16 far wings") {
 
 TEST_CASE("modified butterfly next to an extraordinary vertex uses its s_j weights (valence 3, 4, 5+)") {
   for (int n : {3, 4, 5, 7}) {
-    const test::Mesh m = bipyramid(n);  // apex n has valence n; the equator vertices have valence 4
+    const test::Mesh m = test::bipyramid(n);  // apex n has valence n; the equator vertices have valence 4
     const auto r = test::refine_mesh(m, "modified-butterfly", 1);
     const Level& L = r.hierarchy.levels[0];
     const Index apex = n;
