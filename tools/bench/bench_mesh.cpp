@@ -49,9 +49,7 @@ void finish(Mesh& m, double spacing) {
     for (int c = 0; c < 3; ++c) m.xyz[3 * i + c] += amp * jitter(i, c);
 }
 
-Mesh make_torus(std::int64_t target_faces) {
-  int nu, nv;
-  torus_grid(target_faces, nu, nv);
+Mesh make_torus(int nu, int nv) {
   Mesh m;
   m.name = "torus";
   m.vertex_count = nu * nv;
@@ -69,11 +67,17 @@ Mesh make_torus(std::int64_t target_faces) {
   return m;
 }
 
+Mesh make_torus(std::int64_t target_faces) {
+  int nu, nv;
+  torus_grid(target_faces, nu, nv);
+  return make_torus(nu, nv);
+}
+
 // The torus grid cut into triangles along the (i, j)-(i+1, j+1) diagonals.
 Mesh make_tri_torus(std::int64_t target_faces) {
   int nu, nv;
   torus_grid((target_faces + 1) / 2, nu, nv);
-  Mesh m = make_torus(std::int64_t(nu) * nv);
+  Mesh m = make_torus(nu, nv);  // the same grid, its quads replaced below
   m.name = "tri-torus";
   m.face_vertices.clear();
   m.face_sizes.clear();

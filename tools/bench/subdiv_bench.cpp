@@ -329,6 +329,7 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
   const char* osd_version = osd_version_text.c_str();
 #endif
   if (!want_subdivkit && !want_osd) return 1;
+  if (!want_subdivkit || !want_osd) check = false;  // nothing to compare with
 
   double load[3] = {0, 0, 0};
   if (::getloadavg(load, 3) < 0) load[0] = -1;
