@@ -57,7 +57,10 @@ void fill_vertex_row(RowBuilder& row, const StepContext& s, const RuleInputs& in
 }
 
 void fill_edge_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index e, int local) {
-  const float cw = s.features.edges[e].crease_weight;
+  float cw = s.features.edges[e].crease_weight;
+  // Splits that make edge points only on features (sqrt3 trisection) have no smooth edge
+  // rule: there a semi-sharp feature edge is refined as a crease while it is one.
+  if (cw > 0.f && !s.tables.rule(Element::Edge, Context::Smooth).defined) cw = 1.f;
   // cw may exceed 1 (OpenSubdiv's unclamped Chaikin transition, see classify_edge).
   if (cw != 1.f) apply_edge_rule(row, in, e, needed_rule(s.tables, Element::Edge, Context::Smooth, s.source), 1.0 - cw);
   if (cw <= 0.f) return;

@@ -53,10 +53,24 @@ std::vector<const Scheme*> schemes_per_level(std::span<const SchemeRun> runs) {
   return per_level;
 }
 
+// With boundary corners kept (OpenSubdiv's VTX_BOUNDARY_EDGE_AND_CORNER), a boundary vertex
+// with one face becomes an infinitely sharp corner tag on the base level, as OpenSubdiv's
+// factory does, so the tag travels to finer levels even where a split gives the vertex
+// more faces (sqrt3).
+void tag_boundary_corners(Level& base, BoundaryInterpolation mode) {
+  if (mode != BoundaryInterpolation::EdgesAndCorners) return;
+  for (Index v = 0; v < base.vertex_count; ++v) {
+    if (!base.on_boundary(v) || base.incident_face_count(v) != 1) continue;
+    if (base.vertex_sharpness.empty()) base.vertex_sharpness.assign(base.vertex_count, 0.f);
+    base.vertex_sharpness[v] = kInfinitelySharp;
+  }
+}
+
 }  // namespace
 
 Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const RefineOptions& options) {
   const std::vector<const Scheme*> per_level = schemes_per_level(runs);
+  tag_boundary_corners(base, options.boundary);
   Hierarchy h;
   h.levels.push_back(std::move(base));
   for (size_t l = 0; l < per_level.size(); ++l) {

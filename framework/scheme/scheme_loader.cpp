@@ -232,6 +232,8 @@ RuleTable parse_rules(const Json& rules, const Place& at, const std::set<std::st
     const Place here = at / name;
     if (r.is_array()) {
       table[e][int(Context::Smooth)] = parse_rule(r, Element(e), here);
+      for (const Term& t : table[e][int(Context::Smooth)]->terms)
+        if (t.role == Role::CreaseNeighbours) fail(here, "role 'crease-neighbours' exists only in crease rules");
       continue;
     }
     if (!r.is_object()) fail(here, "expected an array of terms, or an object of contexts (smooth, dart, crease, corner)");
@@ -464,6 +466,9 @@ std::shared_ptr<const Scheme> load_surface_scheme_unchecked(const std::filesyste
   std::vector<Repeat> repeats;
   s->steps = parse_steps(root, at, repeats);
   s->steps = unroll_repeats(std::move(s->steps), repeats, *s);
+  const SplitKind split = s->split();
+  if (s->required_face_size == 4 && (split == SplitKind::Triangle || split == SplitKind::Sqrt3))
+    fail(at / "faces", "this split works on triangles; \"faces\" must be \"triangles\"");
   if (s->steps.size() > 1) s->steps.front().curve_rules_apply = false;
   if (root.contains("curve")) {
     // Overrides the surface scheme does not take go to its curve scheme (e.g. a tension).

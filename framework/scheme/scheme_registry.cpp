@@ -65,6 +65,8 @@ std::shared_ptr<const CurveScheme> resolve_curve(const std::string& name, const 
 
 }  // namespace
 
+std::string scheme_file_path(const std::string& name_or_path) { return find_scheme_file(name_or_path).string(); }
+
 std::shared_ptr<const Scheme> load_scheme(const std::string& name_or_path, const ParameterOverrides& overrides) {
   const fs::path file = find_scheme_file(name_or_path);
   if (scheme_file_kind(file) != "surface")

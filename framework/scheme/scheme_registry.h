@@ -15,6 +15,9 @@ using ParameterOverrides = std::map<std::string, std::string>;
 std::shared_ptr<const Scheme> load_scheme(const std::string& name_or_path,
                                           const ParameterOverrides& overrides = {});
 
+// The file a built-in name or a path stands for; throws with the known names if none.
+std::string scheme_file_path(const std::string& name_or_path);
+
 struct SchemeListing {
   std::string name, description, path, kind;  // kind: "surface" or "curve"
 };

@@ -144,9 +144,10 @@ void check_step(const Scheme& scheme, const StepRules& step, const std::string& 
 
 }  // namespace
 
-ValidationReport validate_scheme_file(const std::string& path, int lo, int hi) {
+ValidationReport validate_scheme_file(const std::string& name_or_path, int lo, int hi) {
   ValidationReport report;
   try {
+    const std::string path = scheme_file_path(name_or_path);
     report.kind = scheme_file_kind(path);
     if (report.kind == "curve") {
       const auto curve = load_curve_scheme(path, {});

@@ -1,4 +1,5 @@
 // `subdiv validate FILE.json...`: check scheme files before using them.
+#include <filesystem>
 #include <fmt/format.h>
 
 #include "commands.h"
@@ -18,6 +19,10 @@ void add_validate_command(CLI::App& app) {
   cmd->callback([files, range] {
     int failed = 0;
     for (const auto& file : *files) {
+      if (std::filesystem::path(file).filename() == "scheme.schema.json") {
+        fmt::print("{}: skipped (the JSON Schema, not a scheme)\n", file);
+        continue;
+      }
       const ValidationReport r = validate_scheme_file(file, range->first, range->second);
       if (r.ok()) {
         fmt::print("{}: ok ({} scheme '{}', {} checks)\n", file, r.kind, r.scheme_name, r.checks);

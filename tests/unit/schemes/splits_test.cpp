@@ -109,3 +109,13 @@ TEST_CASE("mid-edge split: V' = E, F' = F + V on closed meshes; the cube becomes
     CHECK(test::weight_of(r.hierarchy.stencils[0], e, L.edge_vertices[2 * e + 1]) == 0.5);
   }
 }
+
+TEST_CASE("sqrt3 keeps one-face boundary corners fixed at every level (edges-and-corners)") {
+  const test::Mesh m = test::grid(4, 3, true);
+  const Level L = m.level();
+  const auto r = test::refine_mesh(m, "sqrt3", 4);
+  for (Index v = 0; v < m.vertex_count; ++v) {
+    if (!L.on_boundary(v) || L.incident_face_count(v) != 1) continue;
+    for (int i = 0; i < 3; ++i) CHECK(r.positions[3 * v + i] == m.positions[3 * v + i]);
+  }
+}
