@@ -6,7 +6,9 @@
 // (a, b) between faces f and g is replaced by the quad (a, face point of g, b, face point
 // of f), so old edges are "flipped" and a quad mesh stays a quad mesh with twice the faces,
 // rotated by 45 degrees. A boundary edge gets a new edge point e and gives the triangles
-// (a, e, face point) and (e, b, face point), so boundaries are refined like binary curves.
+// (a, e, face point) and (e, b, face point), so boundaries are refined like binary curves;
+// at a boundary corner (a vertex in one face) the two triangles are one quad, so the corner
+// keeps valence 2 and stays a corner.
 // Works on any polygons. Crease tags on interior edges cannot follow (those edges are
 // gone); vertex sharpness is carried to the old vertices, one level less.
 //
@@ -47,15 +49,26 @@ subdiv::SplitResult split_sqrt2(const subdiv::Level& parent, int) {
     offsets.push_back(Index(corners.size()));
     o.parent_face.push_back(parent_face);
   };
+  // A boundary vertex in one face only (a corner of the boundary) gets one quad instead of
+  // two triangles, so it keeps valence 2 and stays a corner.
+  auto corner_vertex = [&](Index v) { return parent.on_boundary(v) && parent.incident_face_count(v) == 1; };
   for (Index e = 0; e < E; ++e) {
     const Index a = parent.edge_vertices[2 * e], b = parent.edge_vertices[2 * e + 1];
     const Index f = parent.edge_faces[2 * e], g = parent.edge_faces[2 * e + 1];  // f runs a -> b
     if (g == kNone) {
-      add_face({a, edge_point[e], first_face_point + f}, f);
-      add_face({edge_point[e], b, first_face_point + f}, f);
+      if (!corner_vertex(a)) add_face({a, edge_point[e], first_face_point + f}, f);
+      if (!corner_vertex(b)) add_face({edge_point[e], b, first_face_point + f}, f);
     } else {
       add_face({a, first_face_point + g, b, first_face_point + f}, kNone);
     }
+  }
+  for (Index v = 0; v < V; ++v) {
+    if (!corner_vertex(v)) continue;
+    const Index f = parent.ring_faces(v)[0];
+    const int k = parent.face_size(f);
+    const int c = parent.vertex_face_corner[parent.vertex_face_offsets[v]];
+    const Index out = parent.face_edge_list(f)[c], in = parent.face_edge_list(f)[(c + k - 1) % k];
+    add_face({edge_point[in], v, edge_point[out], first_face_point + f}, f);
   }
   result.child = subdiv::build_level(child_count, offsets, corners);
   if (!parent.vertex_sharpness.empty()) {
