@@ -1,29 +1,124 @@
-// Splits by name, for the scheme language.
+// Splits by name: the built-in splitters and those registered at run time (plugins).
+#include <deque>
 #include <fmt/format.h>
+#include <mutex>
 
 #include "framework/refine/splitter.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
+namespace {
+
+SplitterInfo builtin(std::string name, std::string description, SplitResult (*fn)(const Level&),
+                     std::vector<OriginKind> rule_elements) {
+  SplitterInfo info;
+  info.name = std::move(name);
+  info.description = std::move(description);
+  info.split = [fn](const Level& parent, int) { return fn(parent); };
+  info.rule_elements = std::move(rule_elements);
+  return info;
+}
+
+// Splitters by id: the built-in ones at their SplitKind values, registered ones from
+// kFirstRegisteredSplit. A deque keeps references stable while splitters are added.
+struct SplitterTable {
+  std::mutex mutex;
+  std::deque<SplitterInfo> builtins, registered;
+
+  SplitterTable() {
+    using O = OriginKind;
+    SplitterInfo quad = builtin("quad", "primal 1-to-k split of any polygon: new face and edge points", split_quad,
+                                {O::Vertex, O::Edge, O::Face});
+    quad.engine_propagates_tags = true;
+    SplitterInfo tri = builtin("triangle", "primal 1-to-4 split of triangles: new edge points", split_triangle,
+                               {O::Vertex, O::Edge});
+    tri.required_face_size = 3;
+    tri.engine_propagates_tags = true;
+    SplitterInfo sqrt3;
+    sqrt3.name = "sqrt3";
+    sqrt3.description = "Kobbelt's sqrt(3) split: face points, old edges flipped; boundaries trisected every second step";
+    sqrt3.split = split_sqrt3;
+    sqrt3.rule_elements = {O::Vertex, O::Face};
+    sqrt3.required_face_size = 3;
+    sqrt3.curve_arity = 3;
+    SplitterInfo dual = builtin("dual", "Doo-Sabin dual split: one new point per face corner", split_dual, {O::Corner});
+    dual.primal = false;
+    SplitterInfo mid = builtin("mid-edge", "Peters-Reif mid-edge split: one new point per edge", split_mid_edge, {O::Edge});
+    mid.primal = false;
+    for (SplitterInfo* info : {&quad, &tri, &sqrt3, &dual, &mid}) builtins.push_back(std::move(*info));
+  }
+
+  const SplitterInfo* find(std::string_view name, SplitKind* kind) {
+    for (size_t i = 0; i < builtins.size(); ++i)
+      if (builtins[i].name == name) return *kind = SplitKind(i), &builtins[i];
+    for (size_t i = 0; i < registered.size(); ++i)
+      if (registered[i].name == name) return *kind = SplitKind(kFirstRegisteredSplit + i), &registered[i];
+    return nullptr;
+  }
+};
+
+SplitterTable& table() {
+  static SplitterTable t;
+  return t;
+}
+
+}  // namespace
+
+const SplitterInfo& splitter_info(SplitKind kind) {
+  SplitterTable& t = table();
+  std::lock_guard lock(t.mutex);
+  const size_t id = size_t(kind);
+  if (id < t.builtins.size()) return t.builtins[id];
+  if (id >= kFirstRegisteredSplit && id - kFirstRegisteredSplit < t.registered.size())
+    return t.registered[id - kFirstRegisteredSplit];
+  throw Error(fmt::format("unknown split id {}", id));
+}
 
 SplitResult split(SplitKind kind, const Level& parent, int step_index) {
-  switch (kind) {
-    case SplitKind::Quad: return split_quad(parent);
-    case SplitKind::Triangle: return split_triangle(parent);
-    case SplitKind::Sqrt3: return split_sqrt3(parent, step_index);
-    case SplitKind::Dual: return split_dual(parent);
-    case SplitKind::MidEdge: return split_mid_edge(parent);
-  }
-  throw Error("unknown split");
+  return splitter_info(kind).split(parent, step_index);
 }
 
 SplitKind split_kind_from_name(std::string_view name) {
-  if (name == "quad") return SplitKind::Quad;
-  if (name == "triangle") return SplitKind::Triangle;
-  if (name == "sqrt3") return SplitKind::Sqrt3;
-  if (name == "dual") return SplitKind::Dual;
-  if (name == "mid-edge") return SplitKind::MidEdge;
-  throw Error(fmt::format("unknown split '{}'; the splits are: quad, triangle, sqrt3, dual, mid-edge", name));
+  SplitterTable& t = table();
+  std::lock_guard lock(t.mutex);
+  SplitKind kind{};
+  if (t.find(name, &kind)) return kind;
+  std::string known;
+  for (const auto* list : {&t.builtins, &t.registered})
+    for (const auto& info : *list) known += (known.empty() ? "" : ", ") + info.name;
+  throw Error(fmt::format("unknown split '{}'; the splits are: {}", name, known));
+}
+
+SplitKind register_splitter(SplitterInfo info) {
+  SplitterTable& t = table();
+  std::lock_guard lock(t.mutex);
+  if (info.name.empty()) throw Error("a splitter needs a name");
+  if (!info.split) throw Error(fmt::format("splitter '{}' has no split function", info.name));
+  if (info.curve_arity < 2) throw Error(fmt::format("splitter '{}': curve_arity must be 2 or more", info.name));
+  if (info.required_face_size != 0 && info.required_face_size < 3)
+    throw Error(fmt::format("splitter '{}': required_face_size must be 0 (any) or 3 or more", info.name));
+  SplitKind existing{};
+  if (const SplitterInfo* other = t.find(info.name, &existing))
+    throw Error(fmt::format("a splitter named '{}' already exists ({})", info.name, other->origin));
+  t.registered.push_back(std::move(info));
+  return SplitKind(kFirstRegisteredSplit + t.registered.size() - 1);
+}
+
+void unregister_splitter(SplitKind kind) {
+  SplitterTable& t = table();
+  std::lock_guard lock(t.mutex);
+  if (t.registered.empty() || size_t(kind) != kFirstRegisteredSplit + t.registered.size() - 1)
+    throw Error("unregister_splitter: only the most recently registered splitter can be removed");
+  t.registered.pop_back();
+}
+
+std::vector<const SplitterInfo*> list_splitters() {
+  SplitterTable& t = table();
+  std::lock_guard lock(t.mutex);
+  std::vector<const SplitterInfo*> out;
+  for (const auto* list : {&t.builtins, &t.registered})
+    for (const auto& info : *list) out.push_back(&info);
+  return out;
 }
 
 }  // namespace subdiv

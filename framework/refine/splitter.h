@@ -3,7 +3,11 @@
 // every child vertex came from. Child vertices are numbered by origin in blocks:
 // children of parent vertices, then of edges, then of faces (then of face corners),
 // each block in parent index order.
+#include <cstdint>
+#include <functional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "framework/refine/child_origins.h"
 #include "framework/topology/level.h"
@@ -32,9 +36,46 @@ SplitResult split_dual(const Level& parent);
 // Mid-edge (Peters-Reif 1997): one new point per edge; F-faces and V-faces.
 SplitResult split_mid_edge(const Level& parent);
 
-enum class SplitKind { Quad, Triangle, Sqrt3, Dual, MidEdge };
+// A splitter by id: the built-in ones below, and ids from kFirstRegisteredSplit up for
+// splitters registered at run time (plugins, framework/plugin).
+enum class SplitKind : std::uint16_t { Quad, Triangle, Sqrt3, Dual, MidEdge };
+constexpr std::uint16_t kFirstRegisteredSplit = 16;
+
+// A topology rule and what the engine needs to know about it. Built-in splitters are
+// described the same way, so the scheme loader and the refiner treat all of them alike.
+struct SplitterInfo {
+  std::string name, description;
+  std::function<SplitResult(const Level& parent, int step_index)> split;
+  // Faces it accepts: 0 any polygon, 3 triangles only, 4 quads only.
+  int required_face_size = 0;
+  // The parent elements whose new points a scheme gives rules for (a scheme file may have
+  // rules for these only), e.g. vertex, edge and face for the quad split. Other children
+  // (sqrt3's trisected boundary points) follow the boundary curve scheme.
+  std::vector<OriginKind> rule_elements;
+  // How the split refines boundaries and creases: the arity of the curve scheme that fits
+  // them, and whether old vertices stay on the curve (primal) or not (dual).
+  int curve_arity = 2;
+  bool primal = true;
+  // True when child vertex v is parent vertex v and each parent edge's children join its
+  // end's child to the edge's new point (the quad and triangle splits): the engine then
+  // carries crease sharpness to the child. Otherwise `split` fills the child's tags itself
+  // (or leaves them empty: all smooth).
+  bool engine_propagates_tags = false;
+  std::string origin = "built-in";  // or the plugin that registered it
+};
+
 SplitResult split(SplitKind kind, const Level& parent, int step_index);
-// "quad", "triangle", "sqrt3", "dual", "mid-edge"; throws for unknown names.
+// The built-in names ("quad", "triangle", "sqrt3", "dual", "mid-edge") and registered ones;
+// throws subdiv::Error listing the known names for an unknown one.
 SplitKind split_kind_from_name(std::string_view name);
+const SplitterInfo& splitter_info(SplitKind kind);
+// Adds a splitter; throws subdiv::Error if the name is taken or the function is missing.
+// Registered splitters live as long as the process.
+SplitKind register_splitter(SplitterInfo info);
+// Removes the most recently registered splitter, which must be `kind` (the plugin loader
+// undoes a refused plugin's registrations this way).
+void unregister_splitter(SplitKind kind);
+// Every splitter, built-in ones first.
+std::vector<const SplitterInfo*> list_splitters();
 
 }  // namespace subdiv

@@ -62,6 +62,28 @@ void add_end_ring(RowBuilder& row, const Level& L, Index e, Index end, const Com
   for (int j = 0; j < n; ++j) row.add(L.other_end(ring[(start + j) % n], end), scale * t.weight(2, 0, j, n0, n1));
 }
 
+// A registered role (plugins): its points around the element, point j weighted by the term's
+// formula at (n, k, j, n0, n1).
+template <typename WeightOf>
+bool add_registered_role(RowBuilder& row, const RuleInputs& in, const CompiledTerm& t, Index element, int corner,
+                         double scale, WeightOf weight_of) {
+  const RoleInfo* info = registered_role(t.role);
+  if (!info) return false;
+  thread_local std::vector<Index> points;
+  points.clear();
+  info->points(in.parent, element, corner, points);
+  if (int(points.size()) > t.max_j + 1)
+    throw Error(fmt::format("{}: role '{}' ({}) gave {} points, more than its max_points ({})", t.where, info->name,
+                            info->origin, points.size(), t.max_j + 1));
+  for (int j = 0; j < int(points.size()); ++j) {
+    if (points[j] < 0 || points[j] >= in.parent.vertex_count)
+      throw Error(fmt::format("{}: role '{}' ({}) gave vertex {}, not a vertex of the level", t.where, info->name,
+                              info->origin, points[j]));
+    add_point(row, in, t, points[j], scale * weight_of(j));
+  }
+  return true;
+}
+
 }  // namespace
 
 void apply_segment_curve_rule(RowBuilder& row, const RuleInputs& in, Index e, Index a, Index b,
@@ -142,7 +164,9 @@ void apply_vertex_rule(RowBuilder& row, const RuleInputs& in, Index v, const Com
           else add_curve_point(row, L, in.features, v, ring[crease[1]], offset, w);
         }
         break;
-      default: wrong_role(t, Element::Vertex);
+      default:
+        if (!add_registered_role(row, in, t, v, 0, scale, [&](int j) { return t.weight(n, 0, j); }))
+          wrong_role(t, Element::Vertex);
     }
   }
 }
@@ -185,7 +209,9 @@ void apply_edge_rule(RowBuilder& row, const RuleInputs& in, Index e, const Compi
         apply_segment_curve_rule(row, in, e, a, b, single, scale);
         break;
       }
-      default: wrong_role(t, Element::Edge);
+      default:
+        if (!add_registered_role(row, in, t, e, 0, scale, [&](int j) { return t.weight(2, 0, j, n0, n1); }))
+          wrong_role(t, Element::Edge);
     }
   }
 }
@@ -203,7 +229,9 @@ void apply_face_rule(RowBuilder& row, const RuleInputs& in, Index f, const Compi
       case Role::Edges:
         for (int j = 0; j < k; ++j) add_point(row, in, t, edges[j], t.weight(k, k, j));
         break;
-      default: wrong_role(t, Element::Face);
+      default:
+        if (!add_registered_role(row, in, t, f, 0, 1.0, [&](int j) { return t.weight(k, k, j); }))
+          wrong_role(t, Element::Face);
     }
   }
 }
@@ -218,7 +246,9 @@ void apply_corner_rule(RowBuilder& row, const RuleInputs& in, Index f, int corne
       case Role::Vertices:
         for (int j = 0; j < k; ++j) row.add(verts[(corner + j) % k], scale * t.weight(k, k, j));
         break;
-      default: wrong_role(t, Element::Corner);
+      default:
+        if (!add_registered_role(row, in, t, f, corner, scale, [&](int j) { return t.weight(k, k, j); }))
+          wrong_role(t, Element::Corner);
     }
   }
 }

@@ -4,12 +4,16 @@
 // same step (then each point of the role stands for that new point, expanded by the
 // engine), and a weight formula evaluated for every point j of the role.
 #include <array>
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace subdiv {
+
+using Index = std::int32_t;
 
 // The parent element a new point belongs to; numbered like OriginKind.
 enum class Element : std::uint8_t { Vertex = 0, Edge = 1, Face = 2, Corner = 3 };
@@ -62,6 +66,34 @@ struct Rule {
 // Rules by element and context; an empty optional means "use the engine default"
 // (dart: the smooth rule; crease: the curve scheme's rule; corner: the vertex stays).
 using RuleTable = std::array<std::array<std::optional<Rule>, kContextCount>, kElementCount>;
+
+// Roles registered at run time (plugins) take Role values from kFirstRegisteredRole up. A
+// registered role lists parent vertices around one element in a canonical order; a term
+// weights point j with its formula, like the built-in roles.
+constexpr std::uint8_t kFirstRegisteredRole = 64;
+
+struct Level;
+struct RoleInfo {
+  std::string name, description;
+  Element element = Element::Vertex;  // the rules that may use it
+  // Appends the role's points (parent vertex indices) around `element` of `level`: a vertex,
+  // an edge, a face, or for corner rules the face, with `corner` its corner (else 0).
+  std::function<void(const Level& level, Index element, int corner, std::vector<Index>& points)> points;
+  // How many points it gives (at most) around an element of valence n with faces of k
+  // sides; weight formulas are tabulated for j below max_points(largest n, largest k), and
+  // `subdiv validate` checks weight sums with this count.
+  std::function<int(int n, int k)> max_points;
+  std::string origin = "built-in";
+};
+
+// Adds a role; throws subdiv::Error when the name is taken (built-in or registered), a
+// function is missing or the roles run out (192 at most).
+Role register_role(RoleInfo info);
+// Removes the most recently registered role, which must be `role` (plugin loader rollback).
+void unregister_role(Role role);
+// The registered role, or null for a built-in one.
+const RoleInfo* registered_role(Role role);
+std::vector<const RoleInfo*> list_registered_roles();
 
 std::string_view element_name(Element e);
 std::string_view context_name(Context c);

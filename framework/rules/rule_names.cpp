@@ -1,5 +1,10 @@
 // The names the scheme language uses for elements, contexts, roles and new points.
+#include <deque>
+#include <fmt/format.h>
+#include <mutex>
+
 #include "framework/rules/rule.h"
+#include "framework/util/error.h"
 
 namespace subdiv {
 namespace {
@@ -22,7 +27,56 @@ constexpr std::array<std::pair<Role, std::string_view>, 15> kRoleNames{{
     {Role::Curve, "curve"},
 }};
 
+// Registered roles (plugins); a deque keeps references stable while roles are added.
+struct RoleTable {
+  std::mutex mutex;
+  std::deque<RoleInfo> roles;
+};
+
+RoleTable& role_table() {
+  static RoleTable t;
+  return t;
+}
+
 }  // namespace
+
+Role register_role(RoleInfo info) {
+  if (info.name.empty()) throw Error("a role needs a name");
+  if (!info.points || !info.max_points) throw Error(fmt::format("role '{}' needs both functions: points and max_points", info.name));
+  for (auto& [role, name] : kRoleNames)
+    if (name == info.name) throw Error(fmt::format("a role named '{}' is built in", info.name));
+  RoleTable& t = role_table();
+  std::lock_guard lock(t.mutex);
+  for (const auto& r : t.roles)
+    if (r.name == info.name) throw Error(fmt::format("a role named '{}' already exists ({})", info.name, r.origin));
+  if (t.roles.size() >= 256 - kFirstRegisteredRole) throw Error("too many registered roles");
+  t.roles.push_back(std::move(info));
+  return Role(kFirstRegisteredRole + t.roles.size() - 1);
+}
+
+void unregister_role(Role role) {
+  RoleTable& t = role_table();
+  std::lock_guard lock(t.mutex);
+  if (t.roles.empty() || size_t(std::uint8_t(role)) != kFirstRegisteredRole + t.roles.size() - 1)
+    throw Error("unregister_role: only the most recently registered role can be removed");
+  t.roles.pop_back();
+}
+
+const RoleInfo* registered_role(Role role) {
+  if (std::uint8_t(role) < kFirstRegisteredRole) return nullptr;
+  RoleTable& t = role_table();
+  std::lock_guard lock(t.mutex);
+  const size_t i = std::uint8_t(role) - kFirstRegisteredRole;
+  return i < t.roles.size() ? &t.roles[i] : nullptr;
+}
+
+std::vector<const RoleInfo*> list_registered_roles() {
+  RoleTable& t = role_table();
+  std::lock_guard lock(t.mutex);
+  std::vector<const RoleInfo*> out;
+  for (const auto& r : t.roles) out.push_back(&r);
+  return out;
+}
 
 std::string_view element_name(Element e) {
   constexpr std::string_view names[] = {"vertex", "edge", "face", "corner"};
@@ -37,12 +91,17 @@ std::string_view context_name(Context c) {
 std::string_view role_name(Role r) {
   for (auto& [role, name] : kRoleNames)
     if (role == r) return name;
+  if (const RoleInfo* info = registered_role(r)) return info->name;
   return "?";
 }
 
 std::optional<Role> role_from_name(std::string_view name) {
   for (auto& [role, n] : kRoleNames)
     if (n == name) return role;
+  RoleTable& t = role_table();
+  std::lock_guard lock(t.mutex);
+  for (size_t i = 0; i < t.roles.size(); ++i)
+    if (t.roles[i].name == name) return Role(kFirstRegisteredRole + i);
   return std::nullopt;
 }
 
@@ -60,6 +119,7 @@ std::optional<NewPoint> new_point_from_name(std::string_view name) {
 }
 
 bool role_allowed(Element element, Role role) {
+  if (const RoleInfo* info = registered_role(role)) return info->element == element;
   switch (element) {
     case Element::Vertex:
       return role == Role::Self || role == Role::Ring || role == Role::Faces ||

@@ -1,17 +1,28 @@
 #pragma once
 // The rule data one refinement step uses, and curve schemes as data: what the scheme
 // layer loads from JSON and the rules layer compiles into weight tables.
+#include <functional>
 #include <map>
+#include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "framework/refine/splitter.h"
+#include "framework/rules/code_rules.h"
 #include "framework/rules/formula.h"
 #include "framework/rules/rule.h"
 
 namespace subdiv {
 
+// A non-linear curve scheme (plugins): the points of one polyline, `dim` numbers per point,
+// to the points of the next level. `closed`: a closed polygon (the last point joins the
+// first); `level`: 0 for the input.
+using PolylineRule =
+    std::function<std::vector<double>(std::span<const double> points, int dim, bool closed, int level)>;
+
 // A curve scheme of arity m: new point m*i + r = sum_t w[r][t] * old point (i + start[r] + t).
+// A non-linear scheme has no weights; `nonlinear` maps a polyline to the next level.
 struct CurveScheme {
   std::string name, description, path;
   int arity = 2;
@@ -19,6 +30,7 @@ struct CurveScheme {
   std::vector<std::vector<std::string>> weights;
   std::map<std::string, double> parameters;
   std::vector<NamedFormula> definitions;
+  std::shared_ptr<const PolylineRule> nonlinear;
 };
 
 // One step of a scheme level: a split with its rules, or a smoothing pass that moves the
@@ -31,6 +43,10 @@ struct StepRules {
   // schemes; in schemes with smoothing passes the passes shape the features instead.
   bool curve_rules_apply = true;
   std::string where;
+  // Geometry written in C++ (plugin schemes, rules/code_rules.h): linear code rules give the
+  // stencil rows in place of `rules`; a non-linear rule replaces stencils altogether.
+  std::shared_ptr<const CodeRules> code;
+  std::shared_ptr<const NonlinearRule> nonlinear;
 };
 
 }  // namespace subdiv

@@ -42,9 +42,18 @@ const CompiledRule& curve_rule(const StepContext& s, int r, Element e) {
   return s.tables.curve_rules[r];
 }
 
+// Code rules (plugins) cover smooth contexts, or every context with handles_features.
+bool code_covers(const StepContext& s, bool has_function, Context c) {
+  return s.code && has_function && (s.code->handles_features || c == Context::Smooth || c == Context::Dart);
+}
+
 void fill_vertex_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index v) {
   const VertexContext& vc = s.features.vertices[v];
   auto apply = [&](Context c, const std::array<std::uint16_t, 2>& crease, double w) {
+    if (code_covers(s, s.code && s.code->vertex, c)) {
+      RowWriter writer(row, w);
+      return s.code->vertex({s.parent, s.features, s.level}, v, c, writer);
+    }
     if (c == Context::Crease && !s.tables.rule(Element::Vertex, c).defined) {
       if (!s.features_refined) return row.add(v, w);  // feature curves wait for the next step
       return apply_vertex_rule(row, in, v, curve_rule(s, 0, Element::Vertex), crease, w);
@@ -58,11 +67,21 @@ void fill_vertex_row(RowBuilder& row, const StepContext& s, const RuleInputs& in
 
 void fill_edge_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index e, int local) {
   float cw = s.features.edges[e].crease_weight;
+  const bool code = s.code && s.code->edge;
+  if (code && s.code->handles_features) {
+    RowWriter writer(row, 1.0);
+    return s.code->edge({s.parent, s.features, s.level}, e, local, cw > 0.f ? Context::Crease : Context::Smooth, writer);
+  }
   // Splits that make edge points only on features (sqrt3 trisection) have no smooth edge
   // rule: there a semi-sharp feature edge is refined as a crease while it is one.
-  if (cw > 0.f && !s.tables.rule(Element::Edge, Context::Smooth).defined) cw = 1.f;
+  if (!code && cw > 0.f && !s.tables.rule(Element::Edge, Context::Smooth).defined) cw = 1.f;
   // cw may exceed 1 (OpenSubdiv's unclamped Chaikin transition, see classify_edge).
-  if (cw != 1.f) apply_edge_rule(row, in, e, needed_rule(s.tables, Element::Edge, Context::Smooth, s.source), 1.0 - cw);
+  if (cw != 1.f && code) {
+    RowWriter writer(row, 1.0 - cw);
+    s.code->edge({s.parent, s.features, s.level}, e, local, Context::Smooth, writer);
+  } else if (cw != 1.f) {
+    apply_edge_rule(row, in, e, needed_rule(s.tables, Element::Edge, Context::Smooth, s.source), 1.0 - cw);
+  }
   if (cw <= 0.f) return;
   const CompiledRule& stated = s.tables.rule(Element::Edge, Context::Crease);
   if (stated.defined && local == 0) return apply_edge_rule(row, in, e, stated, cw);
@@ -81,15 +100,26 @@ void fill_corner_row(RowBuilder& row, const StepContext& s, const RuleInputs& in
   const Index out = L.face_edge_list(f)[corner], in_edge = L.face_edge_list(f)[(corner + k - 1) % k];
   const float w_out = s.features.edges[out].crease_weight, w_in = s.features.edges[in_edge].crease_weight;
   const bool corner_vertex = s.features.vertex_sharpness[v] > 0.f || (w_out > 0.f && w_in > 0.f);
-  const CompiledRule& smooth = needed_rule(s.tables, Element::Corner, Context::Smooth, s.source);
+  const bool code = s.code && s.code->corner;
+  if (code && s.code->handles_features) {
+    const Context c = corner_vertex ? Context::Corner : std::max(w_out, w_in) > 0.f ? Context::Crease : Context::Smooth;
+    RowWriter writer(row, 1.0);
+    return s.code->corner({s.parent, s.features, s.level}, f, corner, c, writer);
+  }
+  // The smooth part of the row: the code rule or the scheme's smooth corner rule.
+  auto smooth = [&](double scale) {
+    if (!code) return apply_corner_rule(row, in, f, corner, needed_rule(s.tables, Element::Corner, Context::Smooth, s.source), scale);
+    RowWriter writer(row, scale);
+    s.code->corner({s.parent, s.features, s.level}, f, corner, Context::Smooth, writer);
+  };
   if (corner_vertex) {
     const double w = s.features.vertex_sharpness[v] > 0.f ? 1.0 : std::min(w_out, w_in);
     apply_corner_rule(row, in, f, corner, needed_rule(s.tables, Element::Corner, Context::Corner, s.source), w);
-    if (w < 1.0) apply_corner_rule(row, in, f, corner, smooth, 1.0 - w);
+    if (w < 1.0) smooth(1.0 - w);
     return;
   }
   const double w = std::max(w_out, w_in);
-  if (w < 1.0) apply_corner_rule(row, in, f, corner, smooth, 1.0 - w);
+  if (w < 1.0) smooth(1.0 - w);
   if (w <= 0.0) return;
   const CompiledRule& stated = s.tables.rule(Element::Corner, Context::Crease);
   if (stated.defined) return apply_corner_rule(row, in, f, corner, stated, w);
@@ -104,6 +134,10 @@ void fill_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index
     case OriginKind::Vertex: return fill_vertex_row(row, s, in, p);
     case OriginKind::Edge: return fill_edge_row(row, s, in, p, s.origins.local[child]);
     case OriginKind::Face:
+      if (s.code && s.code->face) {
+        RowWriter writer(row, 1.0);
+        return s.code->face({s.parent, s.features, s.level}, p, writer);
+      }
       return apply_face_rule(row, in, p, needed_rule(s.tables, Element::Face, Context::Smooth, s.source));
     case OriginKind::Corner: return fill_corner_row(row, s, in, p, s.origins.local[child]);
   }

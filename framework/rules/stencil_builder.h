@@ -7,6 +7,7 @@
 #include <string>
 
 #include "framework/refine/child_origins.h"
+#include "framework/rules/code_rules.h"
 #include "framework/rules/feature_context.h"
 #include "framework/rules/weight_tables.h"
 #include "framework/stencil/stencil_table.h"
@@ -20,6 +21,8 @@ struct StepContext {
   const FeatureContexts& features;
   bool features_refined = true;  // false: crease vertices stay (odd sqrt3 steps)
   std::string source;            // the scheme file, for messages
+  const CodeRules* code = nullptr;  // rules written in C++ (plugins); they take precedence
+  int level = 0;                    // the level being refined, for code rules
 };
 
 StencilTable build_step_stencils(const StepContext& step);

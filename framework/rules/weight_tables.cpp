@@ -15,10 +15,10 @@ struct TableShape {
   size_t stride[5] = {0, 0, 0, 0, 0};
 };
 
-TableShape table_shape(const FormulaUses& uses, int max_n, int max_k) {
+TableShape table_shape(const FormulaUses& uses, int max_n, int max_k, int max_j) {
   TableShape s;
   const bool used[5] = {uses.n, uses.k, uses.j, uses.n0, uses.n1};
-  const int range[5] = {max_n + 1, max_k + 1, std::max(max_n, max_k) + 1, max_n + 1, max_n + 1};
+  const int range[5] = {max_n + 1, max_k + 1, max_j + 1, max_n + 1, max_n + 1};
   for (int v = 4; v >= 0; --v) {
     if (!used[v]) continue;
     s.count[v] = range[v];
@@ -34,7 +34,10 @@ CompiledTerm compile_term(const Term& term, FormulaSet& formulas, int max_n, int
   out.new_point = term.new_point;
   out.where = term.where;
   const int id = formulas.add(term.weight, term.where);
-  const TableShape shape = table_shape(formulas.uses(id), max_n, max_k);
+  int max_j = std::max(max_n, max_k);
+  if (const RoleInfo* role = registered_role(term.role)) max_j = std::max(max_j, role->max_points(max_n, max_k) - 1);
+  out.max_j = max_j;
+  const TableShape shape = table_shape(formulas.uses(id), max_n, max_k, max_j);
   out.stride_n = shape.stride[0], out.stride_k = shape.stride[1], out.stride_j = shape.stride[2];
   out.stride_n0 = shape.stride[3], out.stride_n1 = shape.stride[4];
   out.table.resize(shape.size);

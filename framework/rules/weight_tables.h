@@ -18,6 +18,7 @@ struct CompiledTerm {
   // Dense table; a variable the formula does not use has stride 0.
   std::vector<double> table;
   size_t stride_n = 0, stride_k = 0, stride_j = 0, stride_n0 = 0, stride_n1 = 0;
+  int max_j = 0;  // the largest point index j tabulated
   // Role::Curve: weights on feature-curve points at offsets curve_start, curve_start+1, ...
   int curve_start = 0;
   std::vector<double> curve_weights;

@@ -13,7 +13,10 @@ nlohmann::ordered_json read_json_file(const std::filesystem::path& path) {
   if (!in) throw Error(fmt::format("cannot open scheme file '{}': no such file or not readable", path.string()));
   std::stringstream buffer;
   buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  return parse_json_text(buffer.str(), path.string());
+}
+
+nlohmann::ordered_json parse_json_text(const std::string& text, const std::string& label) {
   try {
     return nlohmann::ordered_json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
@@ -25,7 +28,7 @@ nlohmann::ordered_json read_json_file(const std::filesystem::path& path) {
     }
     std::string what = e.what();
     if (auto pos = what.find("parse error"); pos != std::string::npos) what = what.substr(pos);
-    throw Error(fmt::format("{}:{}:{}: malformed JSON: {}", path.string(), line, column, what));
+    throw Error(fmt::format("{}:{}:{}: malformed JSON: {}", label, line, column, what));
   }
 }
 

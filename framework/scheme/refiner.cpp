@@ -1,6 +1,8 @@
 #include "framework/scheme/refiner.h"
 
+#include <cmath>
 #include <fmt/format.h>
+#include <limits>
 
 #include "framework/rules/stencil_builder.h"
 #include "framework/rules/weight_tables.h"
@@ -12,8 +14,7 @@ namespace {
 
 int needed_face_size(const Scheme& scheme) {
   if (scheme.required_face_size) return scheme.required_face_size;
-  const SplitKind split = scheme.split();
-  return split == SplitKind::Triangle || split == SplitKind::Sqrt3 ? 3 : 0;
+  return splitter_info(scheme.split()).required_face_size;
 }
 
 void check_face_sizes(const Scheme& scheme, const Level& base) {
@@ -24,8 +25,9 @@ void check_face_sizes(const Scheme& scheme, const Level& base) {
       throw Error(fmt::format("{}: scheme '{}' needs {}, but face {} of the mesh has {} vertices; "
                               "{} the mesh first or choose a scheme for any polygons (e.g. "
                               "catmull-clark)",
-                              scheme.path, scheme.name, needed == 3 ? "triangles" : "quads", f,
-                              base.face_size(f), needed == 3 ? "triangulate" : "quadrangulate"));
+                              scheme.path, scheme.name,
+                              needed == 3 ? "triangles" : needed == 4 ? "quads" : fmt::format("{}-gons", needed), f,
+                              base.face_size(f), needed == 3 ? "triangulate" : needed == 4 ? "quadrangulate" : "remesh"));
 }
 
 int max_valence(const Level& level) {
@@ -40,7 +42,7 @@ StencilTable step_stencils(const Scheme& scheme, const StepRules& step, const Le
                            const RefineOptions& options) {
   const WeightTables tables = prepare_weight_tables(step, scheme.formula_scope(), max_valence(parent), parent.max_face_size(), level);
   const FeatureContexts features = classify_features(parent, {options.boundary, options.crease_method});
-  return build_step_stencils({parent, origins, tables, features, features_refined, scheme.path});
+  return build_step_stencils({parent, origins, tables, features, features_refined, scheme.path, step.code.get(), level});
 }
 
 // The scheme of each level, in order.
@@ -77,7 +79,7 @@ Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const Ref
     const Scheme& scheme = *per_level[l];
     if (l == 0 || per_level[l - 1] != per_level[l]) check_face_sizes(scheme, h.levels.back());
     SplitResult step = split(scheme.split(), h.levels.back(), options.first_step + int(l));
-    if (scheme.split() == SplitKind::Quad || scheme.split() == SplitKind::Triangle)
+    if (splitter_info(scheme.split()).engine_propagates_tags)
       propagate_tags(h.levels.back(), step, options.crease_method);
     h.levels.push_back(std::move(step.child));
     h.origins.push_back(std::move(step.origins));
@@ -92,9 +94,24 @@ void build_stencils(std::span<const SchemeRun> runs, Hierarchy& h, const RefineO
     throw Error(fmt::format("build_stencils: the runs give {} levels but the hierarchy has {}", per_level.size(),
                             h.levels.size() - 1));
   h.stencils.clear();
+  h.direct.assign(per_level.size(), nullptr);
   for (size_t l = 0; l < per_level.size(); ++l) {
     const Scheme& scheme = *per_level[l];
     const int level = options.first_step + int(l);
+    if (scheme.steps.front().nonlinear) {
+      if (scheme.steps.size() != 1)
+        throw Error(fmt::format("{}: a non-linear scheme has one step (its rule does the whole level)", scheme.path));
+      auto direct = std::make_shared<DirectStep>();
+      direct->rule = scheme.steps.front().nonlinear;
+      direct->features = classify_features(h.levels[l], {options.boundary, options.crease_method});
+      direct->features_refined = h.features_refined[l];
+      direct->level = level;
+      h.direct[l] = std::move(direct);
+      StencilTable none;  // no rows: apply_step() runs the rule
+      none.source_count = h.levels[l].vertex_count;
+      h.stencils.push_back(std::move(none));
+      continue;
+    }
     StencilTable table = step_stencils(scheme, scheme.steps.front(), h.levels[l], h.origins[l],
                                        h.features_refined[l], level, options);
     // Smoothing passes move the new level's vertices; compose them into one table.
@@ -133,8 +150,28 @@ std::vector<double> interpolate(const Hierarchy& h, int to_level, std::span<cons
   if (to_level < 0 || to_level > int(h.stencils.size()))
     throw Error(fmt::format("interpolate: level {} is not in 0..{}", to_level, h.stencils.size()));
   std::vector<double> values(base_values.begin(), base_values.end());
-  for (int l = 0; l < to_level; ++l) values = h.stencils[l].apply(values, channels);
+  for (int l = 0; l < to_level; ++l) values = apply_step(h, l, values, channels);
   return values;
+}
+
+std::vector<double> apply_step(const Hierarchy& h, int step, std::span<const double> values, int channels) {
+  if (step < 0 || step >= int(h.stencils.size()))
+    throw Error(fmt::format("apply_step: step {} is not in 0..{}", step, int(h.stencils.size()) - 1));
+  const DirectStep* direct = size_t(step) < h.direct.size() ? h.direct[step].get() : nullptr;
+  if (!direct) return h.stencils[step].apply(values, channels);
+  const Level& parent = h.levels[step];
+  const Level& child = h.levels[step + 1];
+  if (values.size() != size_t(parent.vertex_count) * size_t(channels))
+    throw Error(fmt::format("apply_step: {} values for {} vertices of {} channels", values.size(), parent.vertex_count,
+                            channels));
+  std::vector<double> out(size_t(child.vertex_count) * size_t(channels), std::numeric_limits<double>::quiet_NaN());
+  (*direct->rule)({parent, child, h.origins[step], direct->features, direct->features_refined, direct->level}, values,
+                  out, channels);
+  for (size_t i = 0; i < out.size(); ++i)
+    if (!std::isfinite(out[i]))
+      throw Error(fmt::format("the non-linear rule of level {} left child vertex {} at {} (every child value must be "
+                              "set and finite)", direct->level, i / size_t(channels), out[i]));
+  return out;
 }
 
 }  // namespace subdiv

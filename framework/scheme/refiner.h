@@ -1,12 +1,14 @@
 #pragma once
 // The engine's driver: refine topology level by level, build one stencil table per step,
 // interpolate any per-vertex data through the tables.
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "framework/refine/child_origins.h"
 #include "framework/refine/child_tags.h"
+#include "framework/rules/code_rules.h"
 #include "framework/rules/feature_context.h"
 #include "framework/stencil/stencil_table.h"
 #include "framework/topology/level.h"
@@ -26,11 +28,29 @@ struct RefineOptions {
   int first_step = 0;
 };
 
+// A step of a non-linear scheme (plugins, rules/code_rules.h): applied to the values
+// directly, since no stencil table can say it.
+struct DirectStep {
+  std::shared_ptr<const NonlinearRule> rule;
+  FeatureContexts features;
+  bool features_refined = true;
+  int level = 0;
+};
+
 struct Hierarchy {
   std::vector<Level> levels;           // levels[0] is the base mesh
   std::vector<ChildOrigins> origins;   // origins[i] describes levels[i + 1]
   std::vector<StencilTable> stencils;  // stencils[i] maps level i values to level i + 1
   std::vector<bool> features_refined;  // per step: were boundaries and creases refined
+  // Per step: set when the step is non-linear; stencils[i] is then empty (no rows) and
+  // apply_step() runs the rule instead. Empty (or all null) for linear schemes.
+  std::vector<std::shared_ptr<const DirectStep>> direct;
+
+  bool linear() const {
+    for (const auto& d : direct)
+      if (d) return false;
+    return true;
+  }
 };
 
 // A scheme applied for a number of levels. Runs apply in order, so seed 001's two-step
@@ -49,6 +69,10 @@ void build_stencils(std::span<const SchemeRun> runs, Hierarchy& hierarchy, const
 // Both of the above. With runs, options.levels is ignored: the runs say how many.
 Hierarchy refine(const Scheme& scheme, Level base, const RefineOptions& options);
 Hierarchy refine(std::span<const SchemeRun> runs, Level base, const RefineOptions& options);
+
+// Values (channels per vertex) of level `step` carried to level step + 1: through the
+// stencil table, or the non-linear rule of a direct step.
+std::vector<double> apply_step(const Hierarchy& hierarchy, int step, std::span<const double> values, int channels);
 
 // Values (channels per vertex) of the base level carried to level `to_level`.
 std::vector<double> interpolate(const Hierarchy& hierarchy, int to_level,

@@ -177,6 +177,8 @@ std::string roles_of(Element element) {
   for (int r = 0; r <= int(Role::Curve); ++r)
     if (Role(r) != Role::Curve && role_allowed(element, Role(r)))
       list += (list.empty() ? "" : ", ") + std::string(role_name(Role(r)));
+  for (const RoleInfo* info : list_registered_roles())
+    if (info->element == element) list += fmt::format("{}{} ({})", list.empty() ? "" : ", ", info->name, info->origin);
   return list;
 }
 
@@ -260,14 +262,9 @@ SplitKind parse_split(const Json& value, const Place& at) {
 
 // Which elements make new points in each split (and so may have rules).
 std::set<std::string> elements_of_split(SplitKind split) {
-  switch (split) {
-    case SplitKind::Quad: return {"vertex", "edge", "face"};
-    case SplitKind::Triangle: return {"vertex", "edge"};
-    case SplitKind::Sqrt3: return {"vertex", "face"};
-    case SplitKind::Dual: return {"corner"};
-    case SplitKind::MidEdge: return {"edge"};
-  }
-  return {};
+  std::set<std::string> names;
+  for (OriginKind o : splitter_info(split).rule_elements) names.insert(std::string(element_name(Element(int(o)))));
+  return names;
 }
 
 // Either "split" + "rules" (one step), or "steps": [{"split": .., "rules": ..},
@@ -371,17 +368,30 @@ void check_unknown_overrides(const ParameterOverrides& overrides, const std::set
 // (binary for quad, triangle and dual splits, ternary for sqrt3). Dual splits need a
 // dual binary curve (two new points per segment, none on old points).
 void check_curve_fits_split(const CurveScheme& c, SplitKind split, const Place& at) {
-  const int arity = split == SplitKind::Sqrt3 ? 3 : 2;
-  if (c.arity != arity)
-    fail(at, fmt::format("curve scheme '{}' has arity {}, but this split refines boundaries with arity {}",
-                         c.name, c.arity, arity));
-  if (split == SplitKind::Dual || split == SplitKind::MidEdge) return;
+  const SplitterInfo& info = splitter_info(split);
+  if (c.nonlinear)
+    fail(at, fmt::format("curve scheme '{}' ({}) is non-linear; boundaries and creases need a linear curve scheme",
+                         c.name, c.path));
+  if (c.arity != info.curve_arity)
+    fail(at, fmt::format("curve scheme '{}' has arity {}, but the {} split refines boundaries with arity {}",
+                         c.name, c.arity, info.name, info.curve_arity));
+  if (!info.primal) return;
   if (2 * -c.starts[0] + 1 != int(c.weights[0].size()))
     fail(at, fmt::format("curve scheme '{}' ({}) is not primal: its rule 0 is not centred on an old "
                          "point, so it cannot give the boundary rules of a primal split", c.name, c.path));
 }
 
 }  // namespace
+
+// The loaders below share these, from a parsed file or from text (plugins); `label` stands
+// for the file in messages.
+std::string scheme_json_kind(const Json& root, const std::string& label);
+std::shared_ptr<const CurveScheme> curve_scheme_from_json(const Json& root, const std::string& label,
+                                                          const ParameterOverrides& overrides,
+                                                          std::set<std::string>* used);
+std::shared_ptr<const Scheme> surface_scheme_from_json(const Json& root, const std::string& label,
+                                                       const ParameterOverrides& overrides,
+                                                       const CurveResolver& resolve_curve);
 
 std::map<std::string, double> Scheme::parameter_values() const {
   std::map<std::string, double> values;
@@ -391,7 +401,15 @@ std::map<std::string, double> Scheme::parameter_values() const {
 }
 
 std::string scheme_file_kind(const std::filesystem::path& path) {
-  const Json root = read_json_file(path);
+  return scheme_json_kind(read_json_file(path), path.string());
+}
+
+std::string scheme_text_kind(const std::string& text, const std::string& label) {
+  return scheme_json_kind(parse_json_text(text, label), label);
+}
+
+std::string scheme_json_kind(const Json& root, const std::string& label) {
+  const std::filesystem::path path = label;
   if (!root.is_object()) throw Error(fmt::format("{}: a scheme file holds a JSON object", path.string()));
   std::string kind = root.contains("kind") && root["kind"].is_string() ? root["kind"].get<std::string>() : "surface";
   if (kind != "surface" && kind != "curve")
@@ -401,21 +419,35 @@ std::string scheme_file_kind(const std::filesystem::path& path) {
 
 // A value of the wrong JSON type (a string where a number belongs, ...) as a clear error.
 template <class Load>
-auto with_type_errors(const std::filesystem::path& path, Load load) {
+auto with_type_errors(const std::string& label, Load load) {
   try {
     return load();
   } catch (const nlohmann::json::exception& e) {
     std::string what = e.what();
     if (auto pos = what.find("] "); pos != std::string::npos) what = what.substr(pos + 2);
     throw Error(fmt::format("{}: a value has the wrong JSON type ({}); docs/scheme-format.md shows each key's type",
-                            path.string(), what));
+                            label, what));
   }
 }
 
-std::shared_ptr<const CurveScheme> load_curve_scheme_unchecked(const std::filesystem::path& path,
-                                                               const ParameterOverrides& overrides,
-                                                               std::set<std::string>* used) {
-  const Json root = read_json_file(path);
+std::shared_ptr<const CurveScheme> load_curve_scheme(const std::filesystem::path& path,
+                                                     const ParameterOverrides& overrides,
+                                                     std::set<std::string>* used) {
+  return with_type_errors(path.string(), [&] {
+    return curve_scheme_from_json(read_json_file(path), path.string(), overrides, used);
+  });
+}
+
+std::shared_ptr<const CurveScheme> load_curve_scheme_text(const std::string& text, const std::string& label,
+                                                          const ParameterOverrides& overrides,
+                                                          std::set<std::string>* used) {
+  return with_type_errors(label, [&] { return curve_scheme_from_json(parse_json_text(text, label), label, overrides, used); });
+}
+
+std::shared_ptr<const CurveScheme> curve_scheme_from_json(const Json& root, const std::string& label,
+                                                          const ParameterOverrides& overrides,
+                                                          std::set<std::string>* used) {
+  const std::filesystem::path path = label;
   const Place at{path.string(), ""};
   check_keys(root, {"$schema", "name", "kind", "description", "reference", "arity", "parameters", "definitions", "rules"}, at);
   auto curve = std::make_shared<CurveScheme>();
@@ -448,10 +480,27 @@ std::shared_ptr<const CurveScheme> load_curve_scheme_unchecked(const std::filesy
   return curve;
 }
 
-std::shared_ptr<const Scheme> load_surface_scheme_unchecked(const std::filesystem::path& path,
-                                                            const ParameterOverrides& overrides,
-                                                            const CurveResolver& resolve_curve) {
-  const Json root = read_json_file(path);
+std::shared_ptr<const Scheme> load_surface_scheme(const std::filesystem::path& path,
+                                                  const ParameterOverrides& overrides,
+                                                  const CurveResolver& resolve_curve) {
+  return with_type_errors(path.string(), [&] {
+    return surface_scheme_from_json(read_json_file(path), path.string(), overrides, resolve_curve);
+  });
+}
+
+std::shared_ptr<const Scheme> load_surface_scheme_text(const std::string& text, const std::string& label,
+                                                       const ParameterOverrides& overrides,
+                                                       const CurveResolver& resolve_curve) {
+  return with_type_errors(label, [&] {
+    return surface_scheme_from_json(parse_json_text(text, label), label, overrides, resolve_curve);
+  });
+}
+
+std::shared_ptr<const Scheme> surface_scheme_from_json(const Json& root, const std::string& label,
+                                                       const ParameterOverrides& overrides,
+                                                       const CurveResolver& resolve_curve) {
+  const std::filesystem::path path = label;
+  if (!root.is_object()) throw Error(fmt::format("{}: a scheme holds a JSON object", label));
   const Place at{path.string(), ""};
   check_keys(root, {"$schema", "name", "kind", "description", "reference", "split", "faces", "curve",
                     "parameters", "definitions", "rules", "steps"}, at);
@@ -483,16 +532,15 @@ std::shared_ptr<const Scheme> load_surface_scheme_unchecked(const std::filesyste
   return s;
 }
 
-std::shared_ptr<const CurveScheme> load_curve_scheme(const std::filesystem::path& path,
-                                                     const ParameterOverrides& overrides,
-                                                     std::set<std::string>* used) {
-  return with_type_errors(path, [&] { return load_curve_scheme_unchecked(path, overrides, used); });
-}
-
-std::shared_ptr<const Scheme> load_surface_scheme(const std::filesystem::path& path,
-                                                  const ParameterOverrides& overrides,
-                                                  const CurveResolver& resolve_curve) {
-  return with_type_errors(path, [&] { return load_surface_scheme_unchecked(path, overrides, resolve_curve); });
+void apply_parameter_overrides(std::vector<ParameterSpec>& params, const ParameterOverrides& overrides,
+                               const std::string& label, std::set<std::string>* used) {
+  for (ParameterSpec& p : params) {
+    if (auto o = overrides.find(p.name); o != overrides.end()) {
+      apply_override(p, o->second, label);
+      if (used) used->insert(p.name);
+    }
+    check_range(p, label);
+  }
 }
 
 }  // namespace subdiv

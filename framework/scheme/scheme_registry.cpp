@@ -2,16 +2,31 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <deque>
 #include <filesystem>
 #include <fmt/format.h>
+#include <mutex>
 
 #include "framework/scheme/json_source.h"
+#include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_loader.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
 namespace fs = std::filesystem;
 namespace {
+
+// Schemes registered in code (plugins). A deque keeps entries in place while others are
+// added; they are registered before any refinement starts.
+struct CodeSchemes {
+  std::mutex mutex;
+  std::deque<CodeSchemeEntry> entries;
+};
+
+CodeSchemes& code_schemes() {
+  static CodeSchemes c;
+  return c;
+}
 
 // Search order: $SUBDIV_SCHEME_PATH (':'-separated), the source tree's schemes/, the
 // installed share/subdivkit/schemes.
@@ -47,6 +62,8 @@ fs::path find_scheme_file(const std::string& name_or_path, const fs::path& relat
     fs::path candidate = dir / (name_or_path + ".json");
     if (fs::exists(candidate)) return candidate;
   }
+  if (find_code_scheme(name_or_path))
+    throw Error(fmt::format("scheme '{}' is defined by a plugin, not a file", name_or_path));
   std::string known;
   for (const auto& s : list_schemes()) known += (known.empty() ? "" : ", ") + s.name;
   throw Error(fmt::format("unknown scheme '{}'; the schemes are: {} (or give a path to a .json file)",
@@ -56,6 +73,12 @@ fs::path find_scheme_file(const std::string& name_or_path, const fs::path& relat
 std::shared_ptr<const CurveScheme> resolve_curve(const std::string& name, const fs::path& referring_file,
                                                  const ParameterOverrides& overrides,
                                                  std::set<std::string>* used) {
+  if (const CodeSchemeEntry* code = looks_like_path(name) ? nullptr : find_code_scheme(name)) {
+    if (code->kind != "curve")
+      throw Error(fmt::format("{}: \"curve\": '{}' is a surface scheme ({}); name a curve scheme",
+                              referring_file.string(), name, code->origin));
+    return code->make_curve(overrides, used);
+  }
   const fs::path file = find_scheme_file(name, referring_file.parent_path());
   if (scheme_file_kind(file) != "curve")
     throw Error(fmt::format("{}: \"curve\": '{}' is a surface scheme; name a curve scheme",
@@ -68,14 +91,106 @@ std::shared_ptr<const CurveScheme> resolve_curve(const std::string& name, const 
 std::string scheme_file_path(const std::string& name_or_path) { return find_scheme_file(name_or_path).string(); }
 
 std::shared_ptr<const Scheme> load_scheme(const std::string& name_or_path, const ParameterOverrides& overrides) {
+  if (const CodeSchemeEntry* code = looks_like_path(name_or_path) ? nullptr : find_code_scheme(name_or_path)) {
+    if (code->kind != "surface")
+      throw Error(fmt::format("'{}' is a curve scheme ({}); surface refinement needs a surface scheme", name_or_path,
+                              code->origin));
+    return code->make_surface(overrides);
+  }
   const fs::path file = find_scheme_file(name_or_path);
   if (scheme_file_kind(file) != "surface")
     throw Error(fmt::format("{} is a curve scheme; surface refinement needs a surface scheme", file.string()));
   return load_surface_scheme(file, overrides, resolve_curve);
 }
 
+std::shared_ptr<const CurveScheme> load_curve(const std::string& name_or_path, const ParameterOverrides& overrides,
+                                              std::set<std::string>* used) {
+  std::set<std::string> taken;
+  std::shared_ptr<const CurveScheme> curve;
+  if (const CodeSchemeEntry* code = looks_like_path(name_or_path) ? nullptr : find_code_scheme(name_or_path)) {
+    if (code->kind != "curve")
+      throw Error(fmt::format("'{}' is a surface scheme ({}); name a curve scheme", name_or_path, code->origin));
+    curve = code->make_curve(overrides, &taken);
+  } else {
+    const fs::path file = find_scheme_file(name_or_path);
+    if (scheme_file_kind(file) != "curve")
+      throw Error(fmt::format("{} is a surface scheme; name a curve scheme (`subdiv schemes` lists them)", file.string()));
+    curve = load_curve_scheme(file, overrides, &taken);
+  }
+  if (used) used->insert(taken.begin(), taken.end());
+  else
+    for (const auto& [name, value] : overrides)
+      if (!taken.count(name))
+        throw Error(fmt::format("{}: the scheme has no parameter '{}' (from --param {}={}); `subdiv schemes` lists "
+                                "each scheme's parameters", curve->path, name, name, value));
+  return curve;
+}
+
+std::shared_ptr<const Scheme> load_scheme_text(const std::string& text, const std::string& label,
+                                               const ParameterOverrides& overrides) {
+  if (scheme_text_kind(text, label) != "surface")
+    throw Error(fmt::format("{} is a curve scheme; surface refinement needs a surface scheme", label));
+  return load_surface_scheme_text(text, label, overrides, resolve_curve);
+}
+
+std::shared_ptr<const CurveScheme> load_curve_text(const std::string& text, const std::string& label,
+                                                   const ParameterOverrides& overrides, std::set<std::string>* used) {
+  if (scheme_text_kind(text, label) != "curve")
+    throw Error(fmt::format("{} is a surface scheme; name a curve scheme", label));
+  std::set<std::string> taken;
+  auto curve = load_curve_scheme_text(text, label, overrides, &taken);
+  if (used) used->insert(taken.begin(), taken.end());
+  else
+    for (const auto& [name, value] : overrides)
+      if (!taken.count(name))
+        throw Error(fmt::format("{}: the scheme has no parameter '{}' (from --param {}={})", label, name, name, value));
+  return curve;
+}
+
+void register_code_scheme(CodeSchemeEntry entry) {
+  if (entry.name.empty()) throw Error("a scheme needs a name");
+  if (entry.kind != "surface" && entry.kind != "curve")
+    throw Error(fmt::format("scheme '{}': kind '{}' is not one of: surface, curve", entry.name, entry.kind));
+  if ((entry.kind == "surface" && !entry.make_surface) || (entry.kind == "curve" && !entry.make_curve))
+    throw Error(fmt::format("scheme '{}' has no function that makes it", entry.name));
+  if (looks_like_path(entry.name) || entry.name.find_first_of(":, ") != std::string::npos)
+    throw Error(fmt::format("'{}' cannot be a scheme name: no '/', ':', ',' or spaces, no .json ending", entry.name));
+  if (const CodeSchemeEntry* other = find_code_scheme(entry.name))
+    throw Error(fmt::format("duplicate scheme name '{}': {} already defines it", entry.name, other->origin));
+  for (const auto& dir : scheme_directories())
+    if (fs::path file = dir / (entry.name + ".json"); fs::exists(file))
+      throw Error(fmt::format("duplicate scheme name '{}': the scheme file {} already defines it", entry.name,
+                              file.string()));
+  CodeSchemes& c = code_schemes();
+  std::lock_guard lock(c.mutex);
+  c.entries.push_back(std::move(entry));
+}
+
+void unregister_code_scheme(const std::string& name) {
+  CodeSchemes& c = code_schemes();
+  std::lock_guard lock(c.mutex);
+  // Only the last entry: erasing elsewhere would move the others, which callers point to.
+  if (c.entries.empty() || c.entries.back().name != name)
+    throw Error("unregister_code_scheme: only the most recently registered scheme can be removed");
+  c.entries.pop_back();
+}
+
+const CodeSchemeEntry* find_code_scheme(const std::string& name) {
+  CodeSchemes& c = code_schemes();
+  std::lock_guard lock(c.mutex);
+  for (const auto& e : c.entries)
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
 std::vector<SchemeListing> list_schemes() {
   std::vector<SchemeListing> found;
+  {
+    CodeSchemes& c = code_schemes();
+    std::lock_guard lock(c.mutex);
+    for (const auto& e : c.entries) found.push_back({e.name, e.description, e.path, e.kind, e.origin});
+  }
+  const fs::path builtin_dirs[] = {SUBDIV_SCHEME_DIR_BUILD, SUBDIV_SCHEME_DIR_INSTALL};
   for (const auto& dir : scheme_directories()) {
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) continue;
@@ -83,7 +198,8 @@ std::vector<SchemeListing> list_schemes() {
       if (entry.path().extension() != ".json" || entry.path().filename() == "scheme.schema.json") continue;
       const std::string name = entry.path().stem().string();
       if (std::any_of(found.begin(), found.end(), [&](auto& s) { return s.name == name; })) continue;
-      SchemeListing listing{name, "", entry.path().string(), "surface"};
+      const bool builtin = dir == builtin_dirs[0] || dir == builtin_dirs[1];
+      SchemeListing listing{name, "", entry.path().string(), "surface", builtin ? "built-in" : "SUBDIV_SCHEME_PATH"};
       try {
         const auto root = read_json_file(entry.path());
         listing.description = root.value("description", "");

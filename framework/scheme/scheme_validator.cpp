@@ -42,7 +42,9 @@ int role_size(Role role, int n, int k, int n0, int n1) {
     case Role::EndRing1: return n1;
     case Role::Vertices: return k;
     case Role::Curve: return 0;
+    default: break;
   }
+  if (const RoleInfo* info = registered_role(role)) return info->max_points(n, k);  // plugin roles
   return 0;
 }
 
@@ -108,7 +110,7 @@ std::vector<Sizes> sizes_to_check(Element e, int lo, int hi, int face_size) {
 
 int natural_face_size(const Scheme& s) {
   if (s.required_face_size) return s.required_face_size;
-  return s.split() == SplitKind::Triangle || s.split() == SplitKind::Sqrt3 ? 3 : 0;
+  return splitter_info(s.split()).required_face_size;
 }
 
 void check_step(const Scheme& scheme, const StepRules& step, const std::string& text, int lo, int hi,

@@ -10,10 +10,12 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "SubdivKit " SUBDIV_CLI_VERSION);
   app.require_subcommand(1);
   app.footer("Run `subdiv COMMAND --help` for each command's options.\n"
-             "Schemes are JSON files; see docs/scheme-format.md.");
+             "Schemes are JSON files (docs/scheme-format.md) or plugins (docs/plugins.md).");
   subdiv::cli::add_refine_command(app);
   subdiv::cli::add_schemes_command(app);
   subdiv::cli::add_validate_command(app);
+  subdiv::cli::add_plugins_command(app);
+  subdiv::cli::add_plugin_options(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -92,7 +92,7 @@ void run(const RefineArgs& a) {
   std::vector<std::vector<double>> positions{mesh.positions};
   for (int l = 0; l < seq.total_levels; ++l) {
     progress.say(fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
-    positions.push_back(h.stencils[l].apply(positions.back(), 3));
+    positions.push_back(apply_step(h, l, positions.back(), 3));  // stencils, or a non-linear plugin rule
   }
   progress.say(fmt::format("writing {}", a.output));
   write_levels(a.output, h, positions, {options.boundary, options.crease_method});

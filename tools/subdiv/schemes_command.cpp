@@ -31,7 +31,7 @@ void run(bool verbose) {
     fmt::print("{} schemes:\n", kind);
     for (const auto& s : list_schemes()) {
       if (s.kind != kind) continue;
-      fmt::print("  {:<16} {}\n", s.name, s.description);
+      fmt::print("  {:<22} {:<28} {}\n", s.name, "[" + s.origin + "]", s.description);
       if (verbose) fmt::print("      file: {}\n", s.path);
       if (s.kind == std::string("surface")) print_parameters(s.name);
     }
@@ -41,7 +41,8 @@ void run(bool verbose) {
 }  // namespace
 
 void add_schemes_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("schemes", "List the schemes: built-in ones and those on SUBDIV_SCHEME_PATH");
+  auto* cmd = app.add_subcommand("schemes", "List the schemes and where each comes from: built-in, SUBDIV_SCHEME_PATH, "
+                                            "or the plugin that registered it");
   auto verbose = std::make_shared<bool>(false);
   cmd->add_flag("-v,--verbose", *verbose, "Also show where each scheme file is");
   cmd->callback([verbose] { run(*verbose); });
