@@ -22,14 +22,28 @@ struct ParameterSpec {
   std::vector<std::string> choices;
 };
 
+// How a curve scheme treats the ends of an open polyline (docs/curves.md).
+enum class CurveEnds {
+  Interpolate,  // end points stay; missing points beyond an end are extrapolated linearly
+  Uniform,      // no end rule: only new points whose rule lies inside the polyline are made
+  Rules,        // explicit end rules (end_rules), missing points extrapolated linearly
+};
+
 // A curve scheme of arity m: new point m*i + r = sum_t w[r][t] * old point (i + start[r] + t).
+// Weight formulas see j = t, l, the parameters, state and definitions. A file that states
+// its mask instead of rules is loaded as the equivalent rules (numbers).
 struct CurveScheme {
   std::string name, description, path;
   int arity = 2;
   std::vector<int> starts;
   std::vector<std::vector<std::string>> weights;
   std::map<std::string, double> parameters;
-  std::vector<NamedFormula> definitions;
+  std::vector<ParameterSpec> parameter_specs;  // the same parameters with ranges and descriptions
+  std::vector<NamedFormula> definitions;       // state variables first, then definitions
+  CurveEnds ends = CurveEnds::Interpolate;
+  // CurveEnds::Rules: rule e gives the e-th new point from an end as weights on the old
+  // points 0, 1, ... counted from the same end (mirrored at the other end).
+  std::vector<std::vector<std::string>> end_rules;
 };
 
 struct Scheme {
@@ -37,7 +51,9 @@ struct Scheme {
   SplitKind split = SplitKind::Quad;
   int required_face_size = 0;  // 0: any polygon
   std::vector<ParameterSpec> parameters;
-  std::vector<NamedFormula> definitions;  // after choice parameters selected their cases
+  // State variables (level-dependent, NamedFormula::next set) first, then the definitions
+  // after choice parameters selected their cases.
+  std::vector<NamedFormula> definitions;
   RuleTable rules;
   std::shared_ptr<const CurveScheme> curve;  // boundary and crease curves
 

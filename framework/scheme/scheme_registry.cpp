@@ -72,6 +72,23 @@ std::shared_ptr<const Scheme> load_scheme(const std::string& name_or_path, const
   return load_surface_scheme(file, overrides, resolve_curve);
 }
 
+std::shared_ptr<const CurveScheme> load_curve(const std::string& name_or_path, const ParameterOverrides& overrides) {
+  const fs::path file = find_scheme_file(name_or_path);
+  if (scheme_file_kind(file) != "curve")
+    throw Error(fmt::format("{} is a surface scheme; polylines need a curve scheme (`subdiv schemes` lists them, "
+                            "e.g. chaikin, cubic-bspline, four-point)", file.string()));
+  std::set<std::string> used;
+  auto curve = load_curve_scheme(file, overrides, &used);
+  for (const auto& [name, value] : overrides)
+    if (!used.count(name))
+      throw Error(fmt::format("{}: the scheme has no parameter '{}' (from --param {}={}); `subdiv schemes` lists "
+                              "each scheme's parameters",
+                              file.string(), name, name, value));
+  return curve;
+}
+
+std::string scheme_kind(const std::string& name_or_path) { return scheme_file_kind(find_scheme_file(name_or_path)); }
+
 std::vector<SchemeListing> list_schemes() {
   std::vector<SchemeListing> found;
   for (const auto& dir : scheme_directories()) {

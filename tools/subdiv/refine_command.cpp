@@ -4,6 +4,7 @@
 #include <tbb/global_control.h>
 
 #include "commands.h"
+#include "curve_refine.h"
 #include "framework/io/formats.h"
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
@@ -59,10 +60,13 @@ void run(const RefineArgs& a) {
   std::unique_ptr<tbb::global_control> thread_limit;
   if (a.threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
+  if (is_curve_scheme(a.scheme))  // polylines: tools/subdiv/curve_refine.cpp
+    return refine_curves_command({a.mesh, a.scheme, a.output, a.levels, parse_params(a.params), a.quiet});
   const auto scheme = load_scheme(a.scheme, parse_params(a.params));
   const MeshData mesh = read_mesh(a.mesh);
   if (mesh.face_count() == 0)
-    throw Error(fmt::format("{}: the mesh has no faces to refine", a.mesh));
+    throw Error(fmt::format("{}: the mesh has no faces to refine{}", a.mesh,
+                            mesh.line_count() ? "; its polylines need a curve scheme (e.g. --scheme chaikin)" : ""));
   Level base = level_from_mesh(mesh, a.mesh);
   check_fits_in_memory(*scheme, base, a.levels);
 
