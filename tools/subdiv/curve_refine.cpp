@@ -56,14 +56,14 @@ void check_curve_size(const CurveLevel& base, int arity, int levels) {
                             levels, points, need / (1 << 30), have / (1 << 30)));
 }
 
-OutputLevel describe(const CurveHierarchy& h, int l, const MeshData& mesh) {
-  const CurveLevel& L = h.levels[l];
+// Point "rule" (the rule that made each point: r >= 0, or -1 - e for end rule e; 0 on
+// level 0) and "level"; cell "polyline" (its number in the input) and "closed".
+OutputLevel describe(const CurveLevel& L, const std::vector<std::int8_t>& rules, int l, const MeshData& mesh) {
   OutputLevel out;
   out.mesh = &mesh;
   out.level = l;
   DataArray rule{"rule", 1, std::vector<double>(L.vertex_count, 0.0), true};
-  if (l > 0)
-    for (Index v = 0; v < L.vertex_count; ++v) rule.values[v] = h.origins[l - 1].rule[v];
+  for (size_t v = 0; v < rules.size(); ++v) rule.values[v] = rules[v];
   DataArray level{"level", 1, std::vector<double>(L.vertex_count, double(l)), true};
   DataArray polyline{"polyline", 1, {}, true}, closed{"closed", 1, {}, true};
   for (Index p = 0; p < L.polyline_count(); ++p) {
@@ -91,28 +91,46 @@ void refine_curves_command(const CurveRefineRequest& a) {
   CurveLevel base = curve_level_from_mesh(mesh, a.mesh);
   check_curve_size(base, scheme->arity, a.levels);
 
+  // Level by level, keeping only what the output needs: every level for .pvd, else the
+  // finest. Each step's stencil table is dropped once applied.
   Progress progress;
-  progress.say(fmt::format("refining polylines: {} levels of {}", a.levels, scheme->name));
-  const CurveHierarchy h = refine_curves(*scheme, std::move(base), a.levels);
+  const std::string ext = extension_of(a.output);
+  const bool all_levels = ext == ".pvd";
   std::vector<MeshData> meshes;
+  std::vector<CurveLevel> levels_kept;
+  std::vector<std::vector<std::int8_t>> rules_kept;
+  if (all_levels || a.levels == 0) {
+    meshes.push_back(mesh_from_curve_level(base, mesh.positions));
+    levels_kept.push_back(base);
+    rules_kept.emplace_back();
+  }
+  CurveLevel current = std::move(base);
   std::vector<double> positions = mesh.positions;
-  for (int l = 0; l <= a.levels; ++l) {
-    if (l > 0) positions = h.stencils[l - 1].apply(positions, 3);
-    meshes.push_back(mesh_from_curve_level(h.levels[l], positions));
+  for (int l = 0; l < a.levels; ++l) {
+    progress.say(fmt::format("level {}/{} of {}", l + 1, a.levels, scheme->name));
+    CurveStep step = refine_curve_step(current, evaluate_curve_rules(*scheme, l), scheme->name);
+    positions = step.stencils.apply(positions, 3);
+    current = std::move(step.child);
+    if (all_levels || l + 1 == a.levels) {
+      meshes.push_back(mesh_from_curve_level(current, positions));
+      levels_kept.push_back(current);
+      rules_kept.push_back(std::move(step.origins.rule));
+    }
   }
   progress.say(fmt::format("writing {}", a.output));
-  const std::string ext = extension_of(a.output);
   if (ext == ".obj") {
     write_mesh(a.output, meshes.back());
   } else {
-    std::vector<OutputLevel> levels;
-    for (int l = 0; l <= a.levels; ++l) levels.push_back(describe(h, l, meshes[l]));
-    if (ext == ".vtp") write_vtp(a.output, levels.back());
-    else write_pvd(a.output, levels);
+    std::vector<OutputLevel> out;
+    const int first = a.levels + 1 - int(meshes.size());
+    for (size_t k = 0; k < meshes.size(); ++k)
+      out.push_back(describe(levels_kept[k], rules_kept[k], first + int(k), meshes[k]));
+    if (ext == ".vtp") write_vtp(a.output, out.back());
+    else write_pvd(a.output, out);
   }
   progress.done();
   if (!a.quiet) {
-    const CurveLevel& fine = h.levels.back();
+    const CurveLevel& fine = current;
     int closed = 0;
     for (auto c : fine.closed) closed += c;
     fmt::print("{}: {} level(s) of {} -> {} points on {} polylines ({} closed) in {:.3f} s -> {}\n", a.mesh,
