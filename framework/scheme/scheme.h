@@ -39,11 +39,13 @@ struct CurveScheme {
   std::vector<std::vector<std::string>> weights;
   std::map<std::string, double> parameters;
   std::vector<ParameterSpec> parameter_specs;  // the same parameters with ranges and descriptions
-  std::vector<NamedFormula> definitions;       // state variables first, then definitions
   CurveEnds ends = CurveEnds::Interpolate;
   // CurveEnds::Rules: rule e gives the e-th new point from an end as weights on the old
   // points 0, 1, ... counted from the same end (mirrored at the other end).
   std::vector<std::vector<std::string>> end_rules;
+  // State variables (NamedFormula::next set) first, then the definitions; the same holds
+  // for Scheme::definitions.
+  std::vector<NamedFormula> definitions;
 };
 
 struct Scheme {
@@ -51,9 +53,7 @@ struct Scheme {
   SplitKind split = SplitKind::Quad;
   int required_face_size = 0;  // 0: any polygon
   std::vector<ParameterSpec> parameters;
-  // State variables (level-dependent, NamedFormula::next set) first, then the definitions
-  // after choice parameters selected their cases.
-  std::vector<NamedFormula> definitions;
+  std::vector<NamedFormula> definitions;  // after choice parameters selected their cases
   RuleTable rules;
   std::shared_ptr<const CurveScheme> curve;  // boundary and crease curves
 

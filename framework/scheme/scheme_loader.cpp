@@ -81,9 +81,6 @@ ParameterSpec parse_parameter(const std::string& name, const Json& spec, const P
   }
   if (!def.is_number()) fail(at / "default", "a numeric parameter needs a number as default");
   p.value = def.get<double>();
-  for (const char* bound : {"min", "max"})
-    if (spec.contains(bound) && !spec[bound].is_number())
-      fail(at / bound, fmt::format("expected a number, found {}", spec[bound].dump()));
   if (spec.contains("min")) p.has_minimum = true, p.minimum = spec["min"].get<double>();
   if (spec.contains("max")) p.has_maximum = true, p.maximum = spec["max"].get<double>();
   return p;

@@ -93,31 +93,33 @@ TEST_CASE("bspline of degree d reproduces the uniform B-spline of degree d: clos
   for (int d = 1; d <= 7; ++d) {
     CAPTURE(d);
     const auto scheme = load_curve("bspline", {{"d", std::to_string(d)}});
-    // Mask first index -floor((d+1)/2): phi(t) = N_{d+1}(t + floor((d+1)/2)).
-    check_closed(*scheme, d, -double((d + 1) / 2), 9, 5);
+    // Mask first index -floor((d+2)/2): phi(t) = N_{d+1}(t + floor((d+2)/2)).
+    check_closed(*scheme, d, -double((d + 2) / 2), 9, 5);
   }
 }
 
 TEST_CASE("bspline of degree d reproduces the uniform B-spline on open polygons (ends uniform), d = 1..6") {
   for (int d = 1; d <= 6; ++d) {
     CAPTURE(d);
-    check_open_uniform(*load_curve("bspline", {{"d", std::to_string(d)}}), d, -double((d + 1) / 2), 12, 5);
+    check_open_uniform(*load_curve("bspline", {{"d", std::to_string(d)}}), d, -double((d + 2) / 2), 12, 5);
   }
 }
 
 TEST_CASE("Chaikin's limit is the uniform quadratic B-spline (seed 003)") {
   const auto chaikin = load_curve("chaikin");
-  check_closed(*chaikin, 2, -1.0, 7, 6);
-  check_open_uniform(*chaikin, 2, -1.0, 8, 6);
+  // Mask on -2..1: phi(t) = N_3(t + 2), support [-2, 1].
+  check_closed(*chaikin, 2, -2.0, 7, 6);
+  check_open_uniform(*chaikin, 2, -2.0, 8, 6);
   // The refined polygon converges to the curve: at level 10 every point is within
-  // O(4^-10) of the spline at its Greville abscissa (i + 1/2)/2^10.
+  // O(4^-10) of the spline at its Greville abscissa, the centre (c - 1/2)/2^10 of its
+  // basis function's support.
   const auto p = wiggly_points(7);
   const RefinedCurve r = refine_polyline(*chaikin, p, true, 10);
   const long count = long(r.positions[10].size() / 3);
   double worst = 0;
   for (long c = 0; c < count; ++c) {
-    const double t = (c + 0.5) / 1024.0;
-    const Vec3 on_curve = de_boor(2, -1.0, t, [&](long j) { return point(p, periodic(j, 7)); });
+    const double t = (c - 0.5) / 1024.0;
+    const Vec3 on_curve = de_boor(2, -2.0, t, [&](long j) { return point(p, periodic(j, 7)); });
     worst = std::max(worst, distance(on_curve, point(r.positions[10], c)));
   }
   CHECK(worst < 1e-5);

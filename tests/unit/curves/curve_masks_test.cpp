@@ -46,10 +46,14 @@ std::shared_ptr<const CurveScheme> curve(const std::string& name, const Paramete
 }  // namespace
 
 TEST_CASE("chaikin: rules equal the mask (1, 3, 3, 1)/4 of seeds 000 §2 and 003") {
-  check_same_mask(curve_mask(*curve("chaikin")), mask(2, -1, {1, 3, 3, 1}, 4));
+  // Seed 000 §2's numbering of the quadratic B-spline rules: P_2i = 3/4 P_i + 1/4 P_i+1,
+  // P_2i+1 = 1/4 P_i + 3/4 P_i+1 (both new points on segment (i, i+1)), so the mask
+  // a_{r - 2 s} sits on -2..1.
+  check_same_mask(curve_mask(*curve("chaikin")), mask(2, -2, {1, 3, 3, 1}, 4));
   const auto rules = evaluate_curve_rules(*curve("chaikin"), 0);
-  CHECK(rules.starts == std::vector<int>{-1, 0});
-  CHECK(rules.weights == std::vector<std::vector<double>>{{0.25, 0.75}, {0.75, 0.25}});
+  CHECK(rules.starts == std::vector<int>{0, 0});
+  CHECK(rules.weights == std::vector<std::vector<double>>{{0.75, 0.25}, {0.25, 0.75}});
+  CHECK(rules.offsets == std::vector<double>{0.25, 0.75});
 }
 
 TEST_CASE("cubic-bspline: rules equal the mask (1, 4, 6, 4, 1)/8 of seed 000 §2") {
@@ -61,8 +65,9 @@ TEST_CASE("bspline of degree d: the mask is c_i = 2^-d C(d+1, i) (seed 000 §2),
     CAPTURE(d);
     std::vector<double> c;
     for (int i = 0; i <= d + 1; ++i) c.push_back(pascal(d + 1, i) / std::pow(2.0, d));
-    // Centred: primal for odd d (symmetric about 0), dual for even d.
-    check_same_mask(curve_mask(*curve("bspline", {{"d", std::to_string(d)}})), mask(2, -((d + 1) / 2), c));
+    // Odd d: primal, symmetric about 0; even d: dual, both new points of old point i on
+    // segment (i, i+1) as in seed 000 §2's quadratic rules (symmetric about -1/2).
+    check_same_mask(curve_mask(*curve("bspline", {{"d", std::to_string(d)}})), mask(2, -((d + 2) / 2), c));
   }
   // d = 2 is Chaikin, d = 3 the cubic B-spline: same rules, number for number.
   const auto quad = evaluate_curve_rules(*curve("bspline", {{"d", "2"}}), 0);
@@ -81,7 +86,7 @@ TEST_CASE("two-point: mask (1, 2, 1)/2") {
 
 TEST_CASE("four-point: mask (-w, 0, 1/2 + w, 1, 1/2 + w, 0, -w); w = 1/16 gives (-1, 0, 9, 16, 9, 0, -1)/16") {
   check_same_mask(curve_mask(*curve("four-point")), mask(2, -3, {-1, 0, 9, 16, 9, 0, -1}, 16));
-  for (double w : {0.0, 0.03, 0.1, 0.125}) {
+  for (double w : {0.0, 0.03, 0.1, 0.125, 0.154508}) {
     CAPTURE(w);
     check_same_mask(curve_mask(*curve("four-point", {{"w", fmt::format("{:.17g}", w)}})),
                     mask(2, -3, {-w, 0, 0.5 + w, 1, 0.5 + w, 0, -w}));
@@ -137,9 +142,10 @@ TEST_CASE("the smoothness the scheme files state holds by the symbol analysis (s
   for (int d = 1; d <= 6; ++d) CHECK(smoothness(*curve("bspline", {{"d", std::to_string(d)}})) == d - 1);
   CHECK(smoothness(*curve("two-point")) == 0);
   CHECK(smoothness(*curve("ternary-bspline")) == 1);
-  // four-point: the range [0, 1/8] of seed 003; C1 for every w > 0 in it, C0 at w = 0.
+  // four-point: w in [0, 0.154508], just below (sqrt(5) - 1)/8 (Dyn, Levin, Gregory); seed
+  // 003 states smoothness for (0, 1/8). C1 for every w > 0 in the range, C0 at w = 0.
   CHECK(smoothness(*curve("four-point", {{"w", "0"}})) == 0);
-  for (const char* w : {"0.01", "0.0625", "0.1", "0.125"}) {
+  for (const char* w : {"0.01", "0.0625", "0.1", "0.125", "0.15", "0.154508"}) {
     CAPTURE(w);
     CHECK(smoothness(*curve("four-point", {{"w", w}})) == 1);
   }
