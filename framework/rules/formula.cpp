@@ -79,7 +79,6 @@ struct FormulaSet::Impl {
       parser->SetExpr(expression);
       for (const auto& [name, ptr] : parser->GetUsedVar()) {
         uses.n |= name == "n", uses.k |= name == "k", uses.j |= name == "j", uses.l |= name == "l";
-        for (size_t i = 0; i < visible_state; ++i) uses.l |= state_names[i] == name;
         for (size_t i = 0; i < visible_definitions; ++i) {
           if (definition_names[i] != name) continue;
           const FormulaUses& d = definition_uses[i];
@@ -90,6 +89,9 @@ struct FormulaSet::Impl {
       throw Error(fmt::format("{}: formula '{}' does not parse: {}. {}", where, expression, e.GetMsg(),
                               kFormulaHelp));
     }
+    // State variables change with the level: a formula that reads one depends on l.
+    for (const auto& [name, ptr] : parser->GetUsedVar())
+      for (size_t i = 0; i < visible_state; ++i) uses.l |= state_names[i] == name;
     return parser;
   }
 
@@ -173,6 +175,7 @@ struct FormulaSet::Impl {
   }
 
   void evaluate_definitions() {
+    load_state(l);
     for (size_t i = 0; i < definitions.size(); ++i) definition_values[i] = definitions[i]->Eval();
   }
 };
@@ -210,7 +213,6 @@ int FormulaSet::add(const std::string& expression, const std::string& where) {
 }
 
 double FormulaSet::evaluate(int id, const FormulaInputs& in) {
-  impl_->load_state(in.l);
   impl_->n = in.n, impl_->k = in.k, impl_->j = in.j, impl_->l = in.l;
   try {
     impl_->evaluate_definitions();

@@ -1,20 +1,8 @@
 #pragma once
 // Weight formulas (muParser). A formula may use n (valence or face size), k (size of the
 // face the point belongs to), j (index of the point within its role), l (level), the
-// scheme's numeric parameters, its level-dependent state variables and its named
-// definitions. Besides muParser's built-in functions (sin, cos, sqrt, exp, abs, min, max,
-// rint, ...) formulas may call binom(a, b), floor(x), ceil(x) and mod(a, b). Formulas are
-// evaluated only while weight tables are prepared, never per vertex; a FormulaSet is not
-// thread-safe.
-//
-// Level-dependent state (non-stationary schemes, e.g. the tension alpha_k of seed 000
-// §6(b)): a NamedFormula whose `next` is not empty is a state variable. Its value while
-// level l is refined (the step from level l to level l + 1) is
-//     x(0)     = expression, evaluated with l = 0,
-//     x(l + 1) = next, evaluated with l and every state variable at their step-l values.
-// State variables come before the plain definitions; `expression` may use parameters and
-// earlier state variables, `next` may use parameters, l and all state variables; neither
-// may use n, k or j. Every formula that uses a state variable counts as using l.
+// scheme's numeric parameters, and the scheme's named definitions. Formulas are evaluated
+// only while weight tables are prepared, never per vertex; a FormulaSet is not thread-safe.
 #include <map>
 #include <memory>
 #include <string>
@@ -26,11 +14,21 @@ struct FormulaInputs {
   double n = 0, k = 0, j = 0, l = 0;
 };
 
-// Which of n, k, j, l a formula depends on (through definitions and state too).
+// Which of n, k, j, l a formula depends on (through definitions too).
 struct FormulaUses {
   bool n = false, k = false, j = false, l = false;
 };
 
+// Besides muParser's built-in functions (sin, cos, sqrt, exp, abs, min, max, rint, ...)
+// formulas may call binom(a, b), floor(x), ceil(x) and mod(a, b), and use the scheme's
+// level-dependent state variables (non-stationary schemes, e.g. the tension alpha_k of
+// seed 000 §6(b)). A NamedFormula whose `next` is not empty is a state variable. Its value
+// while level l is refined (the step from level l to level l + 1) is
+//     x(0)     = expression, evaluated with l = 0,
+//     x(l + 1) = next, evaluated with l and every state variable at their step-l values.
+// State variables come before the plain definitions; `expression` may use parameters and
+// earlier state variables, `next` may use parameters, l and all state variables; neither
+// may use n, k or j. Every formula that uses a state variable counts as using l.
 struct NamedFormula {
   std::string name, expression, where;
   std::string next;        // state variables only: the recurrence (see above)

@@ -131,32 +131,6 @@ std::vector<ParameterSpec> parse_parameters(const Json& root, const Place& at,
   return params;
 }
 
-// Definitions: "name": "formula", or "name": {"select": param, "cases": {choice: formula}}.
-std::vector<NamedFormula> parse_definitions(const Json& root, const Place& at,
-                                            const std::vector<ParameterSpec>& params) {
-  std::vector<NamedFormula> defs;
-  if (!root.contains("definitions")) return defs;
-  const Json& list = root["definitions"];
-  for (auto it = list.begin(); it != list.end(); ++it) {
-    const Place here = at / "definitions" / it.key();
-    if (!it.value().is_object()) {
-      defs.push_back({it.key(), as_formula(it.value(), here), here.str(), "", ""});
-      continue;
-    }
-    check_keys(it.value(), {"select", "cases"}, here);
-    const std::string select = as_string(require(it.value(), "select", here), here / "select");
-    auto p = std::find_if(params.begin(), params.end(),
-                          [&](const ParameterSpec& s) { return s.name == select && s.is_choice; });
-    if (p == params.end()) fail(here / "select", fmt::format("'{}' is not a choice parameter", select));
-    const Json& cases = require(it.value(), "cases", here);
-    for (const auto& choice : p->choices)
-      if (!cases.contains(choice)) fail(here / "cases", fmt::format("no case for choice '{}'", choice));
-    const Place chosen = here / "cases" / p->choice;
-    defs.push_back({it.key(), as_formula(cases[p->choice], chosen), chosen.str(), "", ""});
-  }
-  return defs;
-}
-
 // Level-dependent state: "state": {"alpha": {"initial": "alpha0", "next": "sqrt((1 + alpha)/2)"}}.
 // The value while level l is refined is `next` applied l times to `initial` (formula.h).
 std::vector<NamedFormula> parse_state(const Json& root, const Place& at) {
@@ -201,6 +175,44 @@ void check_names(const std::vector<ParameterSpec>& params, const std::vector<Nam
   for (const auto& f : named)
     claim(f.name, f.is_state() ? "state variable" : "definition",
           at / (f.is_state() ? "state" : "definitions") / f.name);
+}
+
+std::vector<NamedFormula> parse_plain_definitions(const Json& root, const Place& at,
+                                                  const std::vector<ParameterSpec>& params);
+
+// The state variables first, then the definitions, with their names checked.
+std::vector<NamedFormula> parse_definitions(const Json& root, const Place& at,
+                                            const std::vector<ParameterSpec>& params) {
+  std::vector<NamedFormula> defs = parse_state(root, at);
+  for (auto& d : parse_plain_definitions(root, at, params)) defs.push_back(std::move(d));
+  check_names(params, defs, at);
+  return defs;
+}
+
+// Definitions: "name": "formula", or "name": {"select": param, "cases": {choice: formula}}.
+std::vector<NamedFormula> parse_plain_definitions(const Json& root, const Place& at,
+                                                  const std::vector<ParameterSpec>& params) {
+  std::vector<NamedFormula> defs;
+  if (!root.contains("definitions")) return defs;
+  const Json& list = root["definitions"];
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const Place here = at / "definitions" / it.key();
+    if (!it.value().is_object()) {
+      defs.push_back({it.key(), as_formula(it.value(), here), here.str(), "", ""});
+      continue;
+    }
+    check_keys(it.value(), {"select", "cases"}, here);
+    const std::string select = as_string(require(it.value(), "select", here), here / "select");
+    auto p = std::find_if(params.begin(), params.end(),
+                          [&](const ParameterSpec& s) { return s.name == select && s.is_choice; });
+    if (p == params.end()) fail(here / "select", fmt::format("'{}' is not a choice parameter", select));
+    const Json& cases = require(it.value(), "cases", here);
+    for (const auto& choice : p->choices)
+      if (!cases.contains(choice)) fail(here / "cases", fmt::format("no case for choice '{}'", choice));
+    const Place chosen = here / "cases" / p->choice;
+    defs.push_back({it.key(), as_formula(cases[p->choice], chosen), chosen.str(), "", ""});
+  }
+  return defs;
 }
 
 Term parse_term(const Json& j, Element element, const Place& at) {
@@ -488,9 +500,7 @@ std::shared_ptr<const CurveScheme> load_curve_scheme(const std::filesystem::path
   curve->parameter_specs = parse_parameters(root, at, overrides, used);
   for (const auto& p : curve->parameter_specs)
     if (!p.is_choice) curve->parameters[p.name] = p.value;
-  curve->definitions = parse_state(root, at);
-  for (auto& d : parse_definitions(root, at, curve->parameter_specs)) curve->definitions.push_back(std::move(d));
-  check_names(curve->parameter_specs, curve->definitions, at);
+  curve->definitions = parse_definitions(root, at, curve->parameter_specs);
   FormulaSet formulas(curve->parameters, curve->definitions);
 
   const bool has_rules = root.contains("rules"), has_mask = root.contains("mask");
@@ -525,8 +535,8 @@ std::shared_ptr<const Scheme> load_surface_scheme(const std::filesystem::path& p
                                                   const CurveResolver& resolve_curve) {
   const Json root = read_json_file(path);
   const Place at{path.string(), ""};
-  check_keys(root, {"$schema", "name", "kind", "description", "reference", "split", "faces", "curve",
-                    "parameters", "state", "definitions", "rules"}, at);
+  check_keys(root, {"$schema", "name", "kind", "description", "reference", "split", "faces", "curve", "state",
+                    "parameters", "definitions", "rules"}, at);
   auto s = std::make_shared<Scheme>();
   s->path = path.string();
   s->name = as_string(require(root, "name", at), at / "name");
@@ -539,9 +549,7 @@ std::shared_ptr<const Scheme> load_surface_scheme(const std::filesystem::path& p
   s->required_face_size = parse_face_requirement(root, at);
   std::set<std::string> used;
   s->parameters = parse_parameters(root, at, overrides, &used);
-  s->definitions = parse_state(root, at);
-  for (auto& d : parse_definitions(root, at, s->parameters)) s->definitions.push_back(std::move(d));
-  check_names(s->parameters, s->definitions, at);
+  s->definitions = parse_definitions(root, at, s->parameters);
   s->rules = parse_rules(root, at);
   if (s->split == SplitKind::Triangle && s->rules[int(Element::Face)][int(Context::Smooth)])
     fail(at / "rules" / "face", "the triangle split makes no face points; remove the face rule");

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <fstream>
+#include <memory>
+#include <tbb/global_control.h>
 
 #include "framework/curve/curve_refine.h"
 #include "framework/io/mesh_read.h"
@@ -81,11 +83,20 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
-bool is_curve_scheme(const std::string& scheme) { return scheme_kind(scheme) == "curve"; }
+bool is_curve_scheme(const std::string& scheme) {
+  try {
+    return scheme_kind(scheme) == "curve";
+  } catch (const Error&) {
+    return false;
+  }
+}
 
 void refine_curves_command(const CurveRefineRequest& a) {
   const auto t0 = std::chrono::steady_clock::now();
   check_curve_output(a.output);
+  std::unique_ptr<tbb::global_control> thread_limit;
+  if (a.threads > 0)
+    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
   const auto scheme = load_curve(a.scheme, a.params);
   const MeshData mesh = read_mesh(a.mesh);
   CurveLevel base = curve_level_from_mesh(mesh, a.mesh);

@@ -11,10 +11,12 @@ struct CurveRefineRequest {
   std::string mesh, scheme, output;
   int levels = 1;
   ParameterOverrides params;
+  int threads = 0;  // 0: all cores
   bool quiet = false;
 };
 
-// True when `scheme` (a name or a path) is a curve scheme.
+// True when `scheme` (a name or a path) is a curve scheme; false for surface schemes and for
+// anything else (the surface path reports unknown names and scheme sequences).
 bool is_curve_scheme(const std::string& scheme);
 
 void refine_curves_command(const CurveRefineRequest& request);

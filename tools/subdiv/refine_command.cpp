@@ -4,7 +4,6 @@
 #include <tbb/global_control.h>
 
 #include "commands.h"
-#include "curve_refine.h"
 #include "framework/io/formats.h"
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
@@ -15,6 +14,7 @@
 #include "level_output.h"
 #include "memory_guard.h"
 #include "progress.h"
+#include "curve_refine.h"
 
 namespace subdiv::cli {
 namespace {
@@ -56,12 +56,12 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 void run(const RefineArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
+  if (is_curve_scheme(a.scheme))  // polylines: tools/subdiv/curve_refine.cpp
+    return refine_curves_command({a.mesh, a.scheme, a.output, a.levels, parse_params(a.params), a.threads, a.quiet});
   check_output_path(a.output);
   std::unique_ptr<tbb::global_control> thread_limit;
   if (a.threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
-  if (is_curve_scheme(a.scheme))  // polylines: tools/subdiv/curve_refine.cpp
-    return refine_curves_command({a.mesh, a.scheme, a.output, a.levels, parse_params(a.params), a.quiet});
   const auto scheme = load_scheme(a.scheme, parse_params(a.params));
   const MeshData mesh = read_mesh(a.mesh);
   if (mesh.face_count() == 0)
