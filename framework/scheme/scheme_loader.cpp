@@ -156,12 +156,12 @@ std::vector<NamedFormula> parse_state(const Json& root, const Place& at) {
 }
 
 // Parameters, state variables and definitions share one namespace with the formula
-// variables n, k, j, l and the constant pi.
+// variables (n, k, j, l, and n0, n1 of edge rules), the constant pi and our functions.
 void check_names(const std::vector<ParameterSpec>& params, const std::vector<NamedFormula>& named,
                  const Place& at) {
-  std::map<std::string, std::string> seen{{"n", "a formula variable"}, {"k", "a formula variable"},
-                                          {"j", "a formula variable"}, {"l", "a formula variable"},
-                                          {"pi", "a constant"}};
+  std::map<std::string, std::string> seen{{"pi", "a constant"}};
+  for (const char* variable : {"n", "k", "j", "l", "n0", "n1"}) seen[variable] = "a formula variable";
+  for (const char* function : {"binom", "floor", "ceil", "mod"}) seen[function] = "a formula function";
   auto claim = [&](const std::string& name, const std::string& what, const Place& here) {
     if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') ||
         name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") !=

@@ -6,7 +6,6 @@
 
 #include "curve_test_support.h"
 #include "framework/rules/formula.h"
-#include "framework/rules/weight_tables.h"
 #include "support/refine_helpers.h"
 
 using namespace subdiv;
@@ -77,29 +76,35 @@ TEST_CASE("state errors: dependence on n, k or j, non-finite values, order, frac
 }
 
 TEST_CASE("state in a surface scheme: a Loop variant whose edge weights change per level") {
-  const auto file = write_temp_scheme("loop-with-state", R"({
+  // Edge rule (1/2 - s, 1/2 - s, s, s) with s = 1/8, 1/16, ...: Loop's rule at level 0.
+  const char* vertex_rule = R"([{"at": "self", "w": "1 - n*beta_n"}, {"sum": "ring", "w": "beta_n"}])";
+  const auto file = write_temp_scheme("loop-with-state", std::string(R"({
     "name": "loop-with-state", "split": "triangle", "faces": "triangles", "curve": "cubic-bspline",
     "state": {"s": {"initial": "1/8", "next": "s/2"}},
     "definitions": {"beta_n": "(5/8 - (3/8 + cos(2*pi/n)/4)^2) / n"},
-    "rules": {
-      "edge": [{"sum": "ends", "w": "1/2 - s"}, {"sum": "opposite", "w": "s"}],
-      "vertex": [{"at": "self", "w": "1 - n*beta_n"}, {"sum": "ring", "w": "beta_n"}]
-    }
-  })");
-  const auto scheme = load_scheme(file.string());
-  for (int l = 0; l < 4; ++l) {
-    CAPTURE(l);
-    const WeightTables tables = prepare_weight_tables(*scheme, 6, 3, l);
-    const CompiledRule& edge = tables.rule(Element::Edge, Context::Smooth);
-    REQUIRE(edge.terms.size() == 2);
-    const double s = 0.125 / std::pow(2.0, l);
-    CHECK(edge.terms[0].weight(0, 0, 0) == doctest::Approx(0.5 - s));
-    CHECK(edge.terms[1].weight(0, 0, 0) == doctest::Approx(s));
-  }
-  // Level 0 is Loop's edge rule: one step on the octahedron equals Loop's.
-  const auto mine = refine_mesh(octahedron(), file.string(), 1), loop = refine_mesh(octahedron(), "loop", 1);
-  REQUIRE(mine.positions.size() == loop.positions.size());
-  for (size_t i = 0; i < mine.positions.size(); ++i) CHECK(mine.positions[i] == doctest::Approx(loop.positions[i]));
+    "rules": {"edge": [{"sum": "ends", "w": "1/2 - s"}, {"sum": "opposite", "w": "s"}], "vertex": )") +
+                                                         vertex_rule + "}}");
+  // The same rules with s fixed at its level-1 value 1/16.
+  const auto fixed = write_temp_scheme("loop-edge-16th", std::string(R"({
+    "name": "loop-edge-16th", "split": "triangle", "faces": "triangles", "curve": "cubic-bspline",
+    "definitions": {"beta_n": "(5/8 - (3/8 + cos(2*pi/n)/4)^2) / n"},
+    "rules": {"edge": [{"sum": "ends", "w": "7/16"}, {"sum": "opposite", "w": "1/16"}], "vertex": )") +
+                                                         vertex_rule + "}}");
+  const Mesh mesh = octahedron();
+  const auto mine = refine_mesh(mesh, file.string(), 2);
+  // Level 0 is Loop's step; level 1 is the step with s = 1/16.
+  const auto loop = refine_mesh(mesh, "loop", 1);
+  RefineOptions one;
+  one.levels = 1;
+  const Hierarchy second = refine(*load_scheme(fixed.string()), loop.hierarchy.levels[1], one);
+  const auto expected = interpolate(second, 1, loop.positions, 3);
+  REQUIRE(mine.positions.size() == expected.size());
+  for (size_t i = 0; i < expected.size(); ++i) CHECK(mine.positions[i] == doctest::Approx(expected[i]).epsilon(1e-14));
+  // And it is not plain Loop at level 2.
+  const auto loop2 = refine_mesh(mesh, "loop", 2);
+  double difference = 0;
+  for (size_t i = 0; i < expected.size(); ++i) difference = std::max(difference, std::abs(loop2.positions[i] - mine.positions[i]));
+  CHECK(difference > 1e-3);
   // A state name that clashes with a parameter is refused.
   const auto clash = write_temp_scheme("state-clash", R"({
     "name": "clash", "kind": "curve", "parameters": {"a": {"default": 1}},
