@@ -14,7 +14,7 @@ std::vector<double> evaluate_rule(FormulaSet& formulas, const std::vector<std::s
   std::vector<double> out;
   double sum = 0, magnitude = 0;
   for (size_t t = 0; t < weights.size(); ++t) {
-    const std::string place = fmt::format("{}[{}]", where, t);
+    const std::string place = fmt::format("{}.w[{}]", where, t);
     const double w = formulas.evaluate(formulas.add(weights[t], place), {0, 0, double(t), double(level)});
     if (!std::isfinite(w))
       throw Error(fmt::format("{}: weight '{}' is {} at level {}", place, weights[t], w, level));
@@ -22,7 +22,7 @@ std::vector<double> evaluate_rule(FormulaSet& formulas, const std::vector<std::s
     sum += w, magnitude += std::abs(w);
   }
   if (std::abs(sum - 1.0) > 1e-9 * std::max(1.0, magnitude))
-    throw Error(fmt::format("{}: the weights sum to {} at level {}, not 1: a new point must be an affine "
+    throw Error(fmt::format("{}: weights sum to {} at level {}, not 1: a new point must be an affine "
                             "combination of old points", where, sum, level));
   return out;
 }
@@ -39,7 +39,7 @@ CurveRulesAtLevel evaluate_curve_rules(const CurveScheme& scheme, int level) {
   out.level = level;
   out.ends = scheme.ends;
   for (int r = 0; r < scheme.arity; ++r) {
-    const std::string where = fmt::format("{}: rules[{}].w", scheme.path, r);
+    const std::string where = fmt::format("{}: rules[{}]", scheme.path, r);
     std::vector<double> w = evaluate_rule(formulas, scheme.weights[r], where, level);
     int start = scheme.starts[r];
     size_t lo = 0, hi = w.size();
@@ -57,7 +57,7 @@ CurveRulesAtLevel evaluate_curve_rules(const CurveScheme& scheme, int level) {
   if (scheme.ends == CurveEnds::Interpolate) out.end_rules = {{1.0}};
   for (size_t e = 0; e < scheme.end_rules.size(); ++e)
     out.end_rules.push_back(
-        evaluate_rule(formulas, scheme.end_rules[e], fmt::format("{}: ends.rules[{}].w", scheme.path, e), level));
+        evaluate_rule(formulas, scheme.end_rules[e], fmt::format("{}: ends.rules[{}]", scheme.path, e), level));
   return out;
 }
 

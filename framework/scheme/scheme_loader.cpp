@@ -450,18 +450,20 @@ void check_curve_rules_at_level0(const CurveScheme& curve, const Place& at, bool
   auto check = [&](const std::vector<std::string>& weights, const Place& here) {
     double sum = 0, magnitude = 0;
     for (size_t t = 0; t < weights.size(); ++t) {
-      const double w = formulas.evaluate(formulas.add(weights[t], here[t].str()), {0, 0, double(t), 0});
+      const Place place = (here / "w")[t];
+      const double w = formulas.evaluate(formulas.add(weights[t], place.str()), {0, 0, double(t), 0});
       if (!std::isfinite(w))
-        fail(here[t], fmt::format("weight '{}' is {} at level 0{}", weights[t], w, parameter_note(curve)));
+        fail(place, fmt::format("weight '{}' is {} at level 0{}", weights[t], w, parameter_note(curve)));
       sum += w, magnitude += std::abs(w);
     }
     if (std::abs(sum - 1.0) > 1e-9 * std::max(1.0, magnitude))
-      fail(here, fmt::format("the weights sum to {} at level 0, not 1{}: a new point must be an affine "
+      fail(here, fmt::format("weights sum to {} at level 0, not 1{}: a new point must be an affine "
                              "combination of old points", sum, parameter_note(curve)));
   };
+  // Places name the rule ("rules[1]: weights sum to ..."), weights within it by index.
   for (size_t r = 0; r < curve.weights.size(); ++r)
-    check(curve.weights[r], from_mask ? at / fmt::format("mask (rule {} made from it)", r) : (at / "rules")[r] / "w");
-  for (size_t e = 0; e < curve.end_rules.size(); ++e) check(curve.end_rules[e], ((at / "ends" / "rules")[e]) / "w");
+    check(curve.weights[r], from_mask ? at / fmt::format("mask (rule {} made from it)", r) : (at / "rules")[r]);
+  for (size_t e = 0; e < curve.end_rules.size(); ++e) check(curve.end_rules[e], (at / "ends" / "rules")[e]);
 }
 
 }  // namespace
