@@ -1,17 +1,53 @@
 #include "framework/rules/formula.h"
 
+#include <cmath>
 #include <deque>
 #include <fmt/format.h>
+#include <limits>
 #include <muParser.h>
 
 #include "framework/util/error.h"
 
 namespace subdiv {
+namespace {
+
+constexpr const char* kFormulaHelp =
+    "Formulas may use n, k, j, l, the scheme's parameters, state and definitions, muParser "
+    "functions such as cos, sqrt, min, max, the functions binom(a, b), floor, ceil, mod(a, b), "
+    "and the constant pi";
+
+bool whole(double x) { return std::isfinite(x) && x == std::floor(x); }
+
+double floor_fn(double x) { return std::floor(x); }
+double ceil_fn(double x) { return std::ceil(x); }
+double mod_fn(double a, double b) { return a - b * std::floor(a / b); }
+double binom_fn(double a, double b) { return binomial_coefficient(a, b); }
+
+}  // namespace
+
+double binomial_coefficient(double a, double b) {
+  if (!whole(b) || !std::isfinite(a)) return std::numeric_limits<double>::quiet_NaN();
+  if (b < 0) return 0.0;
+  if (whole(a) && a >= 0 && b > a) return 0.0;
+  if (whole(a) && a >= 0 && b > a / 2) b = a - b;  // symmetry: fewer factors, same value
+  double c = 1.0;
+  for (double i = 1; i <= b; ++i) c = c * (a - b + i) / i;
+  // Whole arguments give whole coefficients; remove the round-off of the divisions.
+  return whole(a) ? std::round(c) : c;
+}
 
 struct FormulaSet::Impl {
   // Variable storage must not move: muParser keeps pointers to it.
   double n = 0, k = 0, j = 0, l = 0, n0 = 0, n1 = 0;
   std::map<std::string, double> parameters;
+
+  // State variables: initial and next parsers, the storage formulas read, and the values
+  // per level computed so far.
+  std::vector<std::string> state_names, state_wheres;
+  std::deque<double> state_storage;
+  std::vector<std::unique_ptr<mu::Parser>> state_initial, state_next;
+  std::vector<std::vector<double>> state_by_level;
+
   std::deque<double> definition_values;
   std::vector<std::unique_ptr<mu::Parser>> definitions;
   std::vector<FormulaUses> definition_uses;
@@ -20,8 +56,11 @@ struct FormulaSet::Impl {
   std::vector<FormulaUses> formula_uses;
   std::vector<std::string> wheres, expressions;
 
+  // visible_state: how many state variables the expression sees; visible_definitions
+  // likewise for plain definitions.
   std::unique_ptr<mu::Parser> compile(const std::string& expression, const std::string& where,
-                                      size_t visible_definitions, FormulaUses& uses) {
+                                      size_t visible_state, size_t visible_definitions,
+                                      FormulaUses& uses) {
     auto parser = std::make_unique<mu::Parser>();
     try {
       parser->DefineVar("n", &n);
@@ -31,7 +70,12 @@ struct FormulaSet::Impl {
       parser->DefineVar("n0", &n0);
       parser->DefineVar("n1", &n1);
       parser->DefineConst("pi", 3.14159265358979323846);
+      parser->DefineFun("binom", binom_fn);
+      parser->DefineFun("floor", floor_fn);
+      parser->DefineFun("ceil", ceil_fn);
+      parser->DefineFun("mod", mod_fn);
       for (auto& [name, value] : parameters) parser->DefineVar(name, &value);
+      for (size_t i = 0; i < visible_state; ++i) parser->DefineVar(state_names[i], &state_storage[i]);
       for (size_t i = 0; i < visible_definitions; ++i)
         parser->DefineVar(definition_names[i], &definition_values[i]);
       parser->SetExpr(expression);
@@ -45,15 +89,96 @@ struct FormulaSet::Impl {
         }
       }
     } catch (const mu::Parser::exception_type& e) {
-      throw Error(fmt::format("{}: formula '{}' does not parse: {}. Formulas may use n, k, j, l, "
-                              "the scheme's parameters and definitions, and muParser functions "
-                              "such as cos, sqrt, and the constant pi",
-                              where, expression, e.GetMsg()));
+      throw Error(fmt::format("{}: formula '{}' does not parse: {}. {}", where, expression, e.GetMsg(),
+                              kFormulaHelp));
     }
+    // State variables change with the level: a formula that reads one depends on l.
+    for (const auto& [name, ptr] : parser->GetUsedVar())
+      for (size_t i = 0; i < visible_state; ++i) uses.l |= state_names[i] == name;
     return parser;
   }
 
+  void add_state(const NamedFormula& d) {
+    if (!definitions.empty())
+      throw Error(fmt::format("{}: state variable '{}' comes after a plain definition; state must "
+                              "come first", d.where, d.name));
+    // The initial value sees the earlier state variables only.
+    FormulaUses uses;
+    auto initial = compile(d.expression, d.where, state_names.size(), 0, uses);
+    check_state_uses(uses, d.name, d.where);
+    state_names.push_back(d.name);
+    state_wheres.push_back(d.where);
+    state_storage.push_back(0.0);
+    state_initial.push_back(std::move(initial));
+    state_next.push_back(nullptr);
+    pending_next.push_back(d);
+  }
+
+  // Recurrences see every state variable, so they are compiled once all are declared.
+  std::vector<NamedFormula> pending_next;
+
+  void finish_state() {
+    for (const auto& d : pending_next) {
+      const size_t i = size_t(&d - pending_next.data()) + state_names.size() - pending_next.size();
+      const std::string& where = d.next_where.empty() ? d.where : d.next_where;
+      FormulaUses uses;
+      state_next[i] = compile(d.next, where, state_names.size(), 0, uses);
+      check_state_uses(uses, d.name, where);
+    }
+    pending_next.clear();
+  }
+
+  static void check_state_uses(const FormulaUses& uses, const std::string& name, const std::string& where) {
+    if (uses.n || uses.k || uses.j)
+      throw Error(fmt::format("{}: state variable '{}' depends on {}; state is one value per level and "
+                              "may use only parameters, l and state variables",
+                              where, name, uses.n ? "n" : uses.k ? "k" : "j"));
+  }
+
+  // Fills state_by_level up to `level` and loads that level's values into the storage.
+  void load_state(double level_value) {
+    if (state_names.empty()) return;
+    if (!whole(level_value) || level_value < 0)
+      throw Error(fmt::format("state variables are defined on whole levels l >= 0, not l = {}", level_value));
+    const size_t level = size_t(level_value);
+    const double saved_l = l;
+    try {
+      if (state_by_level.empty()) {
+        l = 0;
+        std::vector<double> initial(state_names.size());
+        for (size_t i = 0; i < state_names.size(); ++i) {
+          initial[i] = state_initial[i]->Eval();
+          state_storage[i] = initial[i];
+          check_finite(initial[i], i, 0);
+        }
+        state_by_level.push_back(std::move(initial));
+      }
+      while (state_by_level.size() <= level) {
+        const size_t from = state_by_level.size() - 1;
+        l = double(from);
+        for (size_t i = 0; i < state_names.size(); ++i) state_storage[i] = state_by_level[from][i];
+        std::vector<double> next(state_names.size());
+        for (size_t i = 0; i < state_names.size(); ++i) next[i] = state_next[i]->Eval();
+        for (size_t i = 0; i < state_names.size(); ++i) check_finite(next[i], i, from + 1);
+        state_by_level.push_back(std::move(next));
+      }
+    } catch (const mu::Parser::exception_type& e) {
+      l = saved_l;
+      throw Error(fmt::format("state variables fail to evaluate up to level {}: {}", level, e.GetMsg()));
+    }
+    l = saved_l;
+    for (size_t i = 0; i < state_names.size(); ++i) state_storage[i] = state_by_level[level][i];
+  }
+
+  void check_finite(double value, size_t i, size_t level) const {
+    if (!std::isfinite(value))
+      throw Error(fmt::format("{}: state variable '{}' is {} at level {}; check its initial value, its "
+                              "recurrence \"next\" and the parameters' ranges",
+                              state_wheres[i], state_names[i], value, level));
+  }
+
   void evaluate_definitions() {
+    load_state(l);
     for (size_t i = 0; i < definitions.size(); ++i) definition_values[i] = definitions[i]->Eval();
   }
 };
@@ -63,20 +188,26 @@ FormulaSet::FormulaSet(const std::map<std::string, double>& parameters,
     : impl_(std::make_unique<Impl>()) {
   impl_->parameters = parameters;
   for (const auto& d : definitions) {
+    if (d.is_state()) {
+      impl_->add_state(d);
+      continue;
+    }
+    impl_->finish_state();
     FormulaUses uses;
-    auto parser = impl_->compile(d.expression, d.where, impl_->definitions.size(), uses);
+    auto parser = impl_->compile(d.expression, d.where, impl_->state_names.size(), impl_->definitions.size(), uses);
     impl_->definitions.push_back(std::move(parser));
     impl_->definition_uses.push_back(uses);
     impl_->definition_names.push_back(d.name);
     impl_->definition_values.push_back(0.0);
   }
+  impl_->finish_state();
 }
 
 FormulaSet::~FormulaSet() = default;
 
 int FormulaSet::add(const std::string& expression, const std::string& where) {
   FormulaUses uses;
-  auto parser = impl_->compile(expression, where, impl_->definitions.size(), uses);
+  auto parser = impl_->compile(expression, where, impl_->state_names.size(), impl_->definitions.size(), uses);
   impl_->formulas.push_back(std::move(parser));
   impl_->formula_uses.push_back(uses);
   impl_->wheres.push_back(where);
@@ -94,6 +225,12 @@ double FormulaSet::evaluate(int id, const FormulaInputs& in) {
                             impl_->wheres[id], impl_->expressions[id], in.n, in.k, in.j, in.l,
                             e.GetMsg()));
   }
+}
+
+std::vector<double> FormulaSet::state_values(int level) {
+  impl_->load_state(double(level));
+  if (impl_->state_names.empty()) return {};
+  return impl_->state_by_level[size_t(level)];
 }
 
 FormulaUses FormulaSet::uses(int id) const { return impl_->formula_uses[id]; }

@@ -20,14 +20,33 @@ struct FormulaUses {
   bool n = false, k = false, j = false, l = false, n0 = false, n1 = false;
 };
 
+// Besides muParser's built-in functions (sin, cos, sqrt, exp, abs, min, max, rint, ...)
+// formulas may call binom(a, b), floor(x), ceil(x) and mod(a, b), and use the scheme's
+// level-dependent state variables (non-stationary schemes, e.g. the tension alpha_k of
+// seed 000 §6(b)). A NamedFormula whose `next` is not empty is a state variable. Its value
+// while level l is refined (the step from level l to level l + 1) is
+//     x(0)     = expression, evaluated with l = 0,
+//     x(l + 1) = next, evaluated with l and every state variable at their step-l values.
+// State variables come before the plain definitions; `expression` may use parameters and
+// earlier state variables, `next` may use parameters, l and all state variables; neither
+// may use n, k or j. Every formula that uses a state variable counts as using l.
 struct NamedFormula {
   std::string name, expression, where;
+  std::string next;        // state variables only: the recurrence (see above)
+  std::string next_where;  // its place in the scheme file
+  bool is_state() const { return !next.empty(); }
 };
+
+// binom(a, b): the binomial coefficient a(a-1)...(a-b+1)/b! for a whole number b >= 0
+// (any real a; 0 for whole 0 <= a < b); 0 for a whole b < 0; NaN when b is not whole.
+double binomial_coefficient(double a, double b);
 
 class FormulaSet {
 public:
   // `definitions` are evaluated in order before each formula; each may use the earlier ones.
-  // `where` strings name the place in the scheme file for error messages.
+  // `where` strings name the place in the scheme file for error messages. Throws
+  // subdiv::Error for a definition or state formula that does not parse, state after a
+  // plain definition, or state that depends on n, k or j.
   FormulaSet(const std::map<std::string, double>& parameters,
              const std::vector<NamedFormula>& definitions);
   ~FormulaSet();
@@ -37,10 +56,15 @@ public:
   // Compiles an expression; throws subdiv::Error naming `where` if it does not parse or
   // names an unknown variable.
   int add(const std::string& expression, const std::string& where);
+  // Throws subdiv::Error if evaluation fails or a state variable is not finite at level l
+  // (l must be a whole number >= 0). The result itself may be NaN: callers check.
   double evaluate(int id, const FormulaInputs& inputs);
   FormulaUses uses(int id) const;
   const std::string& where(int id) const;
   const std::string& expression(int id) const;
+
+  // The state variables' values while level `level` is refined, in declaration order.
+  std::vector<double> state_values(int level);
 
 private:
   struct Impl;

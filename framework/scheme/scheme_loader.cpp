@@ -145,9 +145,67 @@ std::vector<ParameterSpec> parse_parameters(const Json& root, const Place& at,
   return params;
 }
 
-// Definitions: "name": "formula", or "name": {"select": param, "cases": {choice: formula}}.
+// Level-dependent state: "state": {"alpha": {"initial": "alpha0", "next": "sqrt((1 + alpha)/2)"}}.
+// The value while level l is refined is `next` applied l times to `initial` (formula.h).
+std::vector<NamedFormula> parse_state(const Json& root, const Place& at) {
+  std::vector<NamedFormula> state;
+  if (!root.contains("state")) return state;
+  const Json& list = root["state"];
+  if (!list.is_object())
+    fail(at / "state", "expected an object of state variables, e.g. \"state\": {\"alpha\": "
+                       "{\"initial\": \"alpha0\", \"next\": \"sqrt((1 + alpha)/2)\"}}");
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const Place here = at / "state" / it.key();
+    check_keys(it.value(), {"initial", "next", "description"}, here);
+    NamedFormula f;
+    f.name = it.key();
+    f.expression = as_formula(require(it.value(), "initial", here), here / "initial");
+    f.where = (here / "initial").str();
+    f.next = as_formula(require(it.value(), "next", here), here / "next");
+    f.next_where = (here / "next").str();
+    if (f.next.find_first_not_of(" \t") == std::string::npos) fail(here / "next", "the recurrence is empty");
+    state.push_back(std::move(f));
+  }
+  return state;
+}
+
+// Parameters, state variables and definitions share one namespace with the formula
+// variables (n, k, j, l, and n0, n1 of edge rules), the constant pi and our functions.
+void check_names(const std::vector<ParameterSpec>& params, const std::vector<NamedFormula>& named,
+                 const Place& at) {
+  std::map<std::string, std::string> seen{{"pi", "a constant"}};
+  for (const char* variable : {"n", "k", "j", "l", "n0", "n1"}) seen[variable] = "a formula variable";
+  for (const char* function : {"binom", "floor", "ceil", "mod"}) seen[function] = "a formula function";
+  auto claim = [&](const std::string& name, const std::string& what, const Place& here) {
+    if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') ||
+        name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") !=
+            std::string::npos)
+      fail(here, fmt::format("'{}' is not a valid name: use letters, digits and _, starting with a letter", name));
+    if (auto it = seen.find(name); it != seen.end())
+      fail(here, fmt::format("the {} name '{}' is already {}; choose another name", what, name, it->second));
+    seen[name] = "the name of a " + what;
+  };
+  for (const auto& p : params) claim(p.name, "parameter", at / "parameters" / p.name);
+  for (const auto& f : named)
+    claim(f.name, f.is_state() ? "state variable" : "definition",
+          at / (f.is_state() ? "state" : "definitions") / f.name);
+}
+
+std::vector<NamedFormula> parse_plain_definitions(const Json& root, const Place& at,
+                                                  const std::vector<ParameterSpec>& params);
+
+// The state variables first, then the definitions, with their names checked.
 std::vector<NamedFormula> parse_definitions(const Json& root, const Place& at,
                                             const std::vector<ParameterSpec>& params) {
+  std::vector<NamedFormula> defs = parse_state(root, at);
+  for (auto& d : parse_plain_definitions(root, at, params)) defs.push_back(std::move(d));
+  check_names(params, defs, at);
+  return defs;
+}
+
+// Definitions: "name": "formula", or "name": {"select": param, "cases": {choice: formula}}.
+std::vector<NamedFormula> parse_plain_definitions(const Json& root, const Place& at,
+                                                  const std::vector<ParameterSpec>& params) {
   std::vector<NamedFormula> defs;
   if (!root.contains("definitions")) return defs;
   const Json& list = root["definitions"];
@@ -155,7 +213,7 @@ std::vector<NamedFormula> parse_definitions(const Json& root, const Place& at,
     const Place here = at / "definitions" / it.key();
     check_not_reserved(it.key(), here);
     if (!it.value().is_object()) {
-      defs.push_back({it.key(), as_formula(it.value(), here), here.str()});
+      defs.push_back({it.key(), as_formula(it.value(), here), here.str(), "", ""});
       continue;
     }
     check_keys(it.value(), {"select", "cases"}, here);
@@ -167,7 +225,7 @@ std::vector<NamedFormula> parse_definitions(const Json& root, const Place& at,
     for (const auto& choice : p->choices)
       if (!cases.contains(choice)) fail(here / "cases", fmt::format("no case for choice '{}'", choice));
     const Place chosen = here / "cases" / p->choice;
-    defs.push_back({it.key(), as_formula(cases[p->choice], chosen), chosen.str()});
+    defs.push_back({it.key(), as_formula(cases[p->choice], chosen), chosen.str(), "", ""});
   }
   return defs;
 }
@@ -381,6 +439,152 @@ void check_curve_fits_split(const CurveScheme& c, SplitKind split, const Place& 
                          "point, so it cannot give the boundary rules of a primal split", c.name, c.path));
 }
 
+// ---- curve schemes -------------------------------------------------------------------
+
+std::string parameter_note(const CurveScheme& curve) {
+  if (curve.parameters.empty()) return "";
+  std::string list;
+  for (const auto& [name, value] : curve.parameters) list += fmt::format("{}{} = {}", list.empty() ? "" : ", ", name, value);
+  return " (parameters: " + list + ")";
+}
+
+// Curve formulas see j (index of the weight), l, parameters, state and definitions.
+int add_curve_formula(FormulaSet& formulas, const std::string& text, const Place& here) {
+  const int id = formulas.add(text, here.str());
+  const FormulaUses u = formulas.uses(id);
+  if (u.n || u.k)
+    fail(here, fmt::format("formula '{}' uses {}; curve formulas may use j (the index of the weight in "
+                           "its rule), l, the parameters, state and definitions; n and k belong to "
+                           "surface rules", text, u.n ? "n" : "k"));
+  return id;
+}
+
+std::vector<std::string> parse_curve_weights(const Json& w, const Place& at, FormulaSet& formulas) {
+  if (!w.is_array() || w.empty()) fail(at, "expected a non-empty array of weights");
+  std::vector<std::string> weights;
+  for (size_t t = 0; t < w.size(); ++t) {
+    weights.push_back(as_formula(w[t], at[t]));
+    add_curve_formula(formulas, weights.back(), at[t]);
+  }
+  return weights;
+}
+
+long floor_div(long a, long b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
+
+// "mask": {"first": F, "size": S, "a": "formula of j"} or {"first": F, "a": [a_F, a_F+1, ...]}:
+// the coefficients a_i of P^{k+1}_i = sum_j a_{i - m j} P^k_j (seed 000 §2, §7), i from F.
+// They are evaluated once (they may not depend on l or state) and turned into the
+// equivalent rules: rule r has weight a_{r - m (start_r + t)} on old point i + start_r + t.
+void expand_mask(const Json& mask, const Place& at, FormulaSet& formulas, CurveScheme& curve) {
+  check_keys(mask, {"first", "size", "a"}, at);
+  const std::string note = parameter_note(curve);
+  auto stationary = [&](int id, const Place& here, bool j_allowed) {
+    const FormulaUses u = formulas.uses(id);
+    if (u.l)
+      fail(here, "mask coefficients are stationary: they may not use l or state variables; state a "
+                 "level-dependent scheme with \"rules\"");
+    if (u.j && !j_allowed) fail(here, "\"first\" and \"size\" may use only parameters and definitions, not j");
+  };
+  auto whole_value = [&](const Json& v, const Place& here, const char* what) -> long {
+    if (v.is_number_integer()) return v.get<long>();
+    const int id = add_curve_formula(formulas, as_formula(v, here), here);
+    stationary(id, here, false);
+    const double x = formulas.evaluate(id, {});
+    if (!std::isfinite(x) || x != std::floor(x) || std::abs(x) > 1e6)
+      fail(here, fmt::format("{} evaluates to {}, not a whole number{}", what, x, note));
+    return long(x);
+  };
+  const long first = whole_value(require(mask, "first", at), at / "first", "the index of the first coefficient");
+  const Json& a = require(mask, "a", at);
+  std::vector<double> coefficients;
+  if (a.is_array()) {
+    if (mask.contains("size")) fail(at / "size", "an array \"a\" gives the size itself; remove \"size\"");
+    if (a.empty()) fail(at / "a", "expected a non-empty array of coefficients");
+    for (size_t i = 0; i < a.size(); ++i) {
+      const int id = add_curve_formula(formulas, as_formula(a[i], (at / "a")[i]), (at / "a")[i]);
+      stationary(id, (at / "a")[i], true);
+      coefficients.push_back(formulas.evaluate(id, {0, 0, double(i), 0}));
+    }
+  } else {
+    const long size = whole_value(require(mask, "size", at), at / "size", "the number of coefficients");
+    if (size < 1 || size > 1024)
+      fail(at / "size", fmt::format("the mask has {} coefficients; it needs 1 to 1024{}", size, note));
+    const int id = add_curve_formula(formulas, as_formula(a, at / "a"), at / "a");
+    stationary(id, at / "a", true);
+    for (long j = 0; j < size; ++j) coefficients.push_back(formulas.evaluate(id, {0, 0, double(j), 0}));
+  }
+  for (size_t j = 0; j < coefficients.size(); ++j)
+    if (!std::isfinite(coefficients[j]))
+      fail(at / "a", fmt::format("coefficient j = {} (a_{}) is {}{}", j, first + long(j), coefficients[j], note));
+  const long last = first + long(coefficients.size()) - 1, m = curve.arity;
+  for (long r = 0; r < m; ++r) {
+    // Old points i + s with first <= r - m s <= last.
+    long s_lo = -floor_div(last - r, m), s_hi = floor_div(r - first, m);
+    auto coefficient = [&](long s) { return coefficients[size_t(r - m * s - first)]; };
+    while (s_lo <= s_hi && coefficient(s_lo) == 0.0) ++s_lo;  // trim zeros at both ends
+    while (s_hi >= s_lo && coefficient(s_hi) == 0.0) --s_hi;
+    if (s_lo > s_hi)
+      fail(at, fmt::format("the mask gives new point {} of each old point (a_i with i = {} mod {}) no "
+                           "non-zero coefficient{}", r, r, m, note));
+    curve.starts.push_back(int(s_lo));
+    std::vector<std::string> weights;
+    for (long s = s_lo; s <= s_hi; ++s) weights.push_back(fmt::format("{:.17g}", coefficient(s)));
+    curve.weights.push_back(std::move(weights));
+  }
+}
+
+// "ends": "interpolate" (default) | "uniform" | {"rules": [{"w": [...]}, ...]}.
+void parse_ends(const Json& root, const Place& at, FormulaSet& formulas, CurveScheme& curve) {
+  if (!root.contains("ends")) return;
+  const Json& ends = root["ends"];
+  const Place here = at / "ends";
+  if (ends.is_string()) {
+    const std::string mode = ends.get<std::string>();
+    if (mode == "interpolate") curve.ends = CurveEnds::Interpolate;
+    else if (mode == "uniform") curve.ends = CurveEnds::Uniform;
+    else
+      fail(here, fmt::format("'{}' is not one of: interpolate, uniform, or an object of end rules "
+                             "{{\"rules\": [{{\"w\": [...]}}, ...]}}", mode));
+    return;
+  }
+  if (!ends.is_object())
+    fail(here, "expected \"interpolate\", \"uniform\" or an object {\"rules\": [{\"w\": [...]}, ...]}");
+  check_keys(ends, {"rules"}, here);
+  const Json& rules = require(ends, "rules", here);
+  if (!rules.is_array() || rules.empty())
+    fail(here / "rules", "expected a non-empty array of end rules; rule 0 gives the end point itself");
+  for (size_t e = 0; e < rules.size(); ++e) {
+    check_keys(rules[e], {"w"}, (here / "rules")[e]);
+    curve.end_rules.push_back(parse_curve_weights(require(rules[e], "w", (here / "rules")[e]),
+                                                  (here / "rules")[e] / "w", formulas));
+  }
+  curve.ends = CurveEnds::Rules;
+}
+
+// Every rule must give an affine combination (weights summing to 1) with finite weights.
+// Checked here at level 0 so a bad file fails when loaded; the curve refiner checks every
+// level it builds.
+void check_curve_rules_at_level0(const CurveScheme& curve, const Place& at, bool from_mask) {
+  FormulaSet formulas(curve.parameters, curve.definitions);
+  auto check = [&](const std::vector<std::string>& weights, const Place& here) {
+    double sum = 0, magnitude = 0;
+    for (size_t t = 0; t < weights.size(); ++t) {
+      const Place place = (here / "w")[t];
+      const double w = formulas.evaluate(formulas.add(weights[t], place.str()), {0, 0, double(t), 0});
+      if (!std::isfinite(w))
+        fail(place, fmt::format("weight '{}' is {} at level 0{}", weights[t], w, parameter_note(curve)));
+      sum += w, magnitude += std::abs(w);
+    }
+    if (std::abs(sum - 1.0) > 1e-9 * std::max(1.0, magnitude))
+      fail(here, fmt::format("weights sum to {} at level 0, not 1{}: a new point must be an affine "
+                             "combination of old points", sum, parameter_note(curve)));
+  };
+  // Places name the rule ("rules[1]: weights sum to ..."), weights within it by index.
+  for (size_t r = 0; r < curve.weights.size(); ++r)
+    check(curve.weights[r], from_mask ? at / fmt::format("mask (rule {} made from it)", r) : (at / "rules")[r]);
+  for (size_t e = 0; e < curve.end_rules.size(); ++e) check(curve.end_rules[e], (at / "ends" / "rules")[e]);
+}
+
 }  // namespace
 
 // The loaders below share these, from a parsed file or from text (plugins); `label` stands
@@ -449,34 +653,46 @@ std::shared_ptr<const CurveScheme> curve_scheme_from_json(const Json& root, cons
                                                           std::set<std::string>* used) {
   const std::filesystem::path path = label;
   const Place at{path.string(), ""};
-  check_keys(root, {"$schema", "name", "kind", "description", "reference", "arity", "parameters", "definitions", "rules"}, at);
+  check_keys(root, {"$schema", "name", "kind", "description", "reference", "arity", "parameters", "state",
+                    "definitions", "rules", "mask", "ends"}, at);
   auto curve = std::make_shared<CurveScheme>();
   curve->path = path.string();
   curve->name = as_string(require(root, "name", at), at / "name");
   curve->description = optional_string(root, "description");
+  if (root.contains("arity") && !root["arity"].is_number_integer())
+    fail(at / "arity", fmt::format("expected 2 or 3, found {}", root["arity"].dump()));
   curve->arity = root.value("arity", 2);
   if (curve->arity != 2 && curve->arity != 3) fail(at / "arity", "arity must be 2 or 3");
-  const auto params = parse_parameters(root, at, overrides, used);
-  for (const auto& p : params)
+  curve->parameter_specs = parse_parameters(root, at, overrides, used);
+  for (const auto& p : curve->parameter_specs)
     if (!p.is_choice) curve->parameters[p.name] = p.value;
-  curve->definitions = parse_definitions(root, at, params);
-  const Json& rules = require(root, "rules", at);
-  if (!rules.is_array() || int(rules.size()) != curve->arity)
-    fail(at / "rules", fmt::format("a curve of arity {} needs {} rules, one per new point of each old point", curve->arity, curve->arity));
+  curve->definitions = parse_definitions(root, at, curve->parameter_specs);
   FormulaSet formulas(curve->parameters, curve->definitions);
-  for (size_t r = 0; r < rules.size(); ++r) {
-    const Place here = (at / "rules")[r];
-    check_keys(rules[r], {"start", "w"}, here);
-    curve->starts.push_back(require(rules[r], "start", here).get<int>());
-    std::vector<std::string> weights;
-    const Json& w = require(rules[r], "w", here);
-    if (!w.is_array() || w.empty()) fail(here / "w", "expected a non-empty array of weights");
-    for (size_t t = 0; t < w.size(); ++t) {
-      weights.push_back(as_formula(w[t], (here / "w")[t]));
-      formulas.add(weights.back(), ((here / "w")[t]).str());
+
+  const bool has_rules = root.contains("rules"), has_mask = root.contains("mask");
+  if (has_rules == has_mask)
+    fail(at, "a curve scheme states exactly one of \"rules\" (one rule per new point of each old "
+             "point) or \"mask\" (the coefficients a_i of the refinement equation)");
+  if (has_rules) {
+    const Json& rules = root["rules"];
+    if (!rules.is_array() || int(rules.size()) != curve->arity)
+      fail(at / "rules", fmt::format("a curve of arity {} needs {} rules, one per new point of each old point",
+                                     curve->arity, curve->arity));
+    for (size_t r = 0; r < rules.size(); ++r) {
+      const Place here = (at / "rules")[r];
+      check_keys(rules[r], {"start", "w"}, here);
+      const Json& start = require(rules[r], "start", here);
+      if (!start.is_number_integer())
+        fail(here / "start", fmt::format("expected a whole number (the offset of the first old point), found {}",
+                                         start.dump()));
+      curve->starts.push_back(start.get<int>());
+      curve->weights.push_back(parse_curve_weights(require(rules[r], "w", here), here / "w", formulas));
     }
-    curve->weights.push_back(std::move(weights));
+  } else {
+    expand_mask(root["mask"], at / "mask", formulas, *curve);
   }
+  parse_ends(root, at, formulas, *curve);
+  check_curve_rules_at_level0(*curve, at, has_mask);
   return curve;
 }
 
@@ -502,7 +718,7 @@ std::shared_ptr<const Scheme> surface_scheme_from_json(const Json& root, const s
   const std::filesystem::path path = label;
   if (!root.is_object()) throw Error(fmt::format("{}: a scheme holds a JSON object", label));
   const Place at{path.string(), ""};
-  check_keys(root, {"$schema", "name", "kind", "description", "reference", "split", "faces", "curve",
+  check_keys(root, {"$schema", "name", "kind", "description", "reference", "split", "faces", "curve", "state",
                     "parameters", "definitions", "rules", "steps"}, at);
   auto s = std::make_shared<Scheme>();
   s->path = path.string();

@@ -114,7 +114,7 @@ std::shared_ptr<const CurveScheme> load_curve(const std::string& name_or_path, c
   } else {
     const fs::path file = find_scheme_file(name_or_path);
     if (scheme_file_kind(file) != "curve")
-      throw Error(fmt::format("{} is a surface scheme; name a curve scheme (`subdiv schemes` lists them)", file.string()));
+      throw Error(fmt::format("{} is a surface scheme; polylines need a curve scheme (`subdiv schemes` lists them, e.g. chaikin, cubic-bspline, four-point)", file.string()));
     curve = load_curve_scheme(file, overrides, &taken);
   }
   if (used) used->insert(taken.begin(), taken.end());
@@ -181,6 +181,12 @@ const CodeSchemeEntry* find_code_scheme(const std::string& name) {
   for (const auto& e : c.entries)
     if (e.name == name) return &e;
   return nullptr;
+}
+
+std::string scheme_kind(const std::string& name_or_path) {
+  if (!looks_like_path(name_or_path))
+    if (const CodeSchemeEntry* code = find_code_scheme(name_or_path)) return code->kind;
+  return scheme_file_kind(find_scheme_file(name_or_path));
 }
 
 std::vector<SchemeListing> list_schemes() {

@@ -26,6 +26,9 @@ std::string scheme_file_path(const std::string& name_or_path);
 std::shared_ptr<const CurveScheme> load_curve(const std::string& name_or_path, const ParameterOverrides& overrides = {},
                                               std::set<std::string>* used = nullptr);
 
+// "surface" or "curve": the kind of the scheme a name or path finds.
+std::string scheme_kind(const std::string& name_or_path);
+
 struct SchemeListing {
   std::string name, description, path, kind;  // kind: "surface" or "curve"
   // Where it comes from: "built-in", "SUBDIV_SCHEME_PATH", or "plugin NAME" (then `path` is

@@ -17,6 +17,7 @@
 #include "level_output.h"
 #include "memory_guard.h"
 #include "progress.h"
+#include "curve_refine.h"
 
 namespace subdiv::cli {
 namespace {
@@ -62,6 +63,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 void run(const RefineArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
+  if (is_curve_scheme(a.scheme))  // polylines: tools/subdiv/curve_refine.cpp
+    return refine_curves_command({a.mesh, a.scheme, a.output, a.levels, parse_params(a.params), a.threads, a.quiet});
   check_output_path(a.output);
   std::unique_ptr<tbb::global_control> thread_limit;
   if (a.threads > 0)
@@ -69,7 +72,8 @@ void run(const RefineArgs& a) {
   const SchemeSequence seq = load_scheme_sequence(a.scheme, a.levels, parse_params(a.params));
   const MeshData mesh = read_mesh(a.mesh);
   if (mesh.face_count() == 0)
-    throw Error(fmt::format("{}: the mesh has no faces to refine", a.mesh));
+    throw Error(fmt::format("{}: the mesh has no faces to refine{}", a.mesh,
+                            mesh.line_count() ? "; its polylines need a curve scheme (e.g. --scheme chaikin)" : ""));
   Level base = level_from_mesh(mesh, a.mesh);
   std::vector<std::string> notes;
   if (!a.features.empty()) {

@@ -9,10 +9,10 @@
 namespace subdiv::cli {
 namespace {
 
-void print_parameters(const std::string& name) {
+void print_parameters(const std::string& name, const std::string& kind) {
   try {
-    const auto scheme = load_scheme(name);
-    for (const auto& p : scheme->parameters) {
+    const auto specs = kind == "curve" ? load_curve(name)->parameter_specs : load_scheme(name)->parameters;
+    for (const auto& p : specs) {
       if (p.is_choice) {
         std::string list;
         for (auto& c : p.choices) list += (list.empty() ? "" : "|") + c;
@@ -33,7 +33,7 @@ void run(bool verbose) {
       if (s.kind != kind) continue;
       fmt::print("  {:<22} {:<28} {}\n", s.name, "[" + s.origin + "]", s.description);
       if (verbose) fmt::print("      file: {}\n", s.path);
-      if (s.kind == std::string("surface")) print_parameters(s.name);
+      print_parameters(s.name, s.kind);
     }
   }
 }

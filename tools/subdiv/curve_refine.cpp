@@ -1,0 +1,153 @@
+#include "curve_refine.h"
+
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <memory>
+#include <tbb/global_control.h>
+
+#include "framework/curve/curve_refine.h"
+#include "framework/io/mesh_read.h"
+#include "framework/io/mesh_write.h"
+#include "framework/io/vtk_output.h"
+#include "framework/scheme/scheme.h"
+#include "framework/util/error.h"
+#include "progress.h"
+
+namespace subdiv::cli {
+namespace {
+
+std::string extension_of(const std::filesystem::path& p) {
+  std::string ext = p.extension().string();
+  for (char& c : ext) c = char(std::tolower(c));
+  return ext;
+}
+
+void check_curve_output(const std::filesystem::path& out) {
+  const std::string ext = extension_of(out);
+  if (ext == ".vtp" || ext == ".pvd" || ext == ".obj") return;
+  throw Error(fmt::format("cannot write polylines to '{}': use .vtp or .pvd (ParaView) or .obj ('l' lines); "
+                          ".off, .ply and .stl hold no polylines",
+                          out.string()));
+}
+
+// Bytes per point of the finest level: positions of every level, stencil rows, topology.
+constexpr double kBytesPerPoint = 160.0;
+
+double available_bytes() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  double kb = 0;
+  while (meminfo >> key >> kb) {
+    if (key == "MemAvailable:") return kb * 1024.0;
+    meminfo.ignore(256, '\n');
+  }
+  return 1e18;
+}
+
+void check_curve_size(const CurveLevel& base, int arity, int levels) {
+  const double points = double(base.vertices.size() + 2 * base.polyline_count()) * std::pow(double(arity), levels);
+  if (points > 2.0e9)
+    throw Error(fmt::format("{} levels would make about {:.3g} points, more than the 2^31 a level can index; "
+                            "ask for fewer levels", levels, points));
+  const double need = points * kBytesPerPoint, have = available_bytes();
+  if (need > have)
+    throw Error(fmt::format("{} levels would make about {:.3g} points and need about {:.1f} GiB, but only "
+                            "{:.1f} GiB of memory is available; ask for fewer levels",
+                            levels, points, need / (1 << 30), have / (1 << 30)));
+}
+
+// Point "rule" (the rule that made each point: r >= 0, or -1 - e for end rule e; 0 on
+// level 0) and "level"; cell "polyline" (its number in the input) and "closed".
+OutputLevel describe(const CurveLevel& L, const std::vector<std::int8_t>& rules, int l, const MeshData& mesh) {
+  OutputLevel out;
+  out.mesh = &mesh;
+  out.level = l;
+  DataArray rule{"rule", 1, std::vector<double>(L.vertex_count, 0.0), true};
+  for (size_t v = 0; v < rules.size(); ++v) rule.values[v] = rules[v];
+  DataArray level{"level", 1, std::vector<double>(L.vertex_count, double(l)), true};
+  DataArray polyline{"polyline", 1, {}, true}, closed{"closed", 1, {}, true};
+  for (Index p = 0; p < L.polyline_count(); ++p) {
+    polyline.values.push_back(p);
+    closed.values.push_back(L.closed[p]);
+  }
+  out.point_data = {std::move(rule), std::move(level)};
+  out.cell_data = {std::move(polyline), std::move(closed)};
+  return out;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+bool is_curve_scheme(const std::string& scheme) {
+  try {
+    return scheme_kind(scheme) == "curve";
+  } catch (const Error&) {
+    return false;
+  }
+}
+
+void refine_curves_command(const CurveRefineRequest& a) {
+  const auto t0 = std::chrono::steady_clock::now();
+  check_curve_output(a.output);
+  std::unique_ptr<tbb::global_control> thread_limit;
+  if (a.threads > 0)
+    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
+  const auto scheme = load_curve(a.scheme, a.params);
+  const MeshData mesh = read_mesh(a.mesh);
+  CurveLevel base = curve_level_from_mesh(mesh, a.mesh);
+  check_curve_size(base, scheme->arity, a.levels);
+
+  // Level by level, keeping only what the output needs: every level for .pvd, else the
+  // finest. Each step's stencil table is dropped once applied.
+  Progress progress;
+  const std::string ext = extension_of(a.output);
+  const bool all_levels = ext == ".pvd";
+  std::vector<MeshData> meshes;
+  std::vector<CurveLevel> levels_kept;
+  std::vector<std::vector<std::int8_t>> rules_kept;
+  if (all_levels || a.levels == 0) {
+    meshes.push_back(mesh_from_curve_level(base, mesh.positions));
+    levels_kept.push_back(base);
+    rules_kept.emplace_back();
+  }
+  CurveLevel current = std::move(base);
+  std::vector<double> positions = mesh.positions;
+  for (int l = 0; l < a.levels; ++l) {
+    progress.say(fmt::format("level {}/{} of {}", l + 1, a.levels, scheme->name));
+    CurveStep step = refine_curve_step(current, evaluate_curve_rules(*scheme, l), scheme->name);
+    positions = step.stencils.apply(positions, 3);
+    current = std::move(step.child);
+    if (all_levels || l + 1 == a.levels) {
+      meshes.push_back(mesh_from_curve_level(current, positions));
+      levels_kept.push_back(current);
+      rules_kept.push_back(std::move(step.origins.rule));
+    }
+  }
+  progress.say(fmt::format("writing {}", a.output));
+  if (ext == ".obj") {
+    write_mesh(a.output, meshes.back());
+  } else {
+    std::vector<OutputLevel> out;
+    const int first = a.levels + 1 - int(meshes.size());
+    for (size_t k = 0; k < meshes.size(); ++k)
+      out.push_back(describe(levels_kept[k], rules_kept[k], first + int(k), meshes[k]));
+    if (ext == ".vtp") write_vtp(a.output, out.back());
+    else write_pvd(a.output, out);
+  }
+  progress.done();
+  if (!a.quiet) {
+    const CurveLevel& fine = current;
+    int closed = 0;
+    for (auto c : fine.closed) closed += c;
+    fmt::print("{}: {} level(s) of {} -> {} points on {} polylines ({} closed) in {:.3f} s -> {}\n", a.mesh,
+               a.levels, scheme->name, fine.vertex_count, fine.polyline_count(), closed, seconds_since(t0),
+               a.output);
+  }
+}
+
+}  // namespace subdiv::cli
