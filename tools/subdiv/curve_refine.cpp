@@ -1,4 +1,5 @@
 #include "curve_refine.h"
+#include "nonlinear_curve.h"
 
 #include <chrono>
 #include <cmath>
@@ -98,6 +99,7 @@ void refine_curves_command(const CurveRefineRequest& a) {
   if (a.threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
   const auto scheme = load_curve(a.scheme, a.params);
+  if (scheme->nonlinear) return refine_nonlinear_curves(a, *scheme);
   const MeshData mesh = read_mesh(a.mesh);
   CurveLevel base = curve_level_from_mesh(mesh, a.mesh);
   check_curve_size(base, scheme->arity, a.levels);

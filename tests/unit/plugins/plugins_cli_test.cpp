@@ -157,3 +157,24 @@ TEST_CASE("refine a torus with the non-linear circle-quad: the output stays on t
   CHECK(tri.exit_code != 0);
   CHECK(contains(tri.output, "scheme 'circle-quad' needs quads"));
 }
+
+TEST_CASE("subdiv refine runs a non-linear plugin curve scheme on polylines: points stay on the circle") {
+  const auto dir = subdiv::test::fresh_dir("plugin-curve-cli");
+  const auto out = dir / "circle.obj";
+  const auto r = subdiv::test::run_subdiv("refine " + subdiv::test::source_path("examples/curves/circle8.obj") +
+                                          " --plugin " + plugin_path("subdiv_circle_preserving") +
+                                          " --scheme circle-four-point -l 6 -o " + out.string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  std::ifstream in(out);
+  int points = 0;
+  double worst = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("v ", 0) != 0) continue;
+    double x, y, z;
+    std::sscanf(line.c_str(), "v %lf %lf %lf", &x, &y, &z);
+    worst = std::max(worst, std::abs(std::sqrt(x * x + y * y + z * z) - 1.0));
+    ++points;
+  }
+  CHECK(points == 8 * 64);
+  CHECK(worst < 1e-12);
+}
