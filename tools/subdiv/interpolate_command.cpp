@@ -233,7 +233,17 @@ void run(const InterpolateArgs& a) {
 
   Progress progress;
   progress.say("finding the limit masks");
-  const LimitChoice choice = select_limit(seq, base, options);
+  LimitChoice choice;
+  try {
+    choice = select_limit(seq, base, options);
+  } catch (const Error& e) {
+    // A one-off first step on its own (seed 001's shape step) has no limit; say how to run it.
+    if (seq.runs.size() == 1 && has_lambda(seq))
+      throw Error(fmt::format("{}\n  '{}' has a shape parameter lambda: if it is a first step (seed 001), give the "
+                              "sequence --scheme {}:1,catmull-clark", e.what(), seq.schemes[0]->name,
+                              seq.schemes[0]->name));
+    throw;
+  }
   const StencilTable limit = choice.evaluator->limit_stencils(base);
   const Index moving_count = Index(std::count(moving.begin(), moving.end(), std::uint8_t(1)));
 

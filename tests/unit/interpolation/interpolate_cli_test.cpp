@@ -104,12 +104,26 @@ TEST_CASE("interpolate: Chen et al.'s global method on plain Catmull-Clark, and 
   for (Index v = 0; v < L.vertex_count; ++v) lambda << (v % 2 ? "0.4" : "0.9") << "\n";
   lambda.close();
   r = run_subdiv("interpolate " + torus + " " + kTwoStep + " --lambda " + (dir / "lambda.txt").string() +
-                 " --tol 1e-11 -o " + out.string());
+                 " --tol 1e-11 -o " + out.string() + " --refined " + (dir / "torus.pvd").string() + " --levels 7");
   REQUIRE_MESSAGE(r.exit_code == 0, r.output);
   CHECK(r.output.find("lambda per vertex") != std::string::npos);
   got = read_mesh(out);
   for (Index v = 0; v < L.vertex_count; ++v)
     CHECK(dist(two_step_limit_point(L, got.positions, v, v % 2 ? 0.4 : 0.9), at(in.positions, v)) < 1.1e-11);
+  // The refined output uses the same per-vertex first step: the base vertices' points close
+  // in on their targets level by level (Catmull-Clark's vertex points converge like 1/4^l).
+  double previous = 1e9;
+  for (int l = 1; l <= 7; ++l) {
+    const auto poly = read_vtp(dir / "torus_levels" / ("level_" + std::to_string(l) + ".vtp"));
+    auto* distance = poly->GetPointData()->GetArray("target_distance");
+    auto* base = poly->GetPointData()->GetArray("base_vertex");
+    double worst = 0;
+    for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i)
+      if (base->GetTuple1(i) >= 0) worst = std::max(worst, distance->GetTuple1(i));
+    CHECK(worst < previous / 3);
+    previous = worst;
+  }
+  CHECK(previous < 1e-4);
 }
 
 TEST_CASE("interpolate: bad input is refused, nothing is written") {

@@ -174,6 +174,7 @@ TEST_CASE("local interpolation: fixed vertices stay, moving ones are interpolate
       const ProgressiveResult r = shape_progressive_interpolation(L, mesh.positions, l, moving, o);
       REQUIRE(r.converged);
       for (size_t k = 1; k < r.history.size(); ++k) {
+        CHECK(r.history[k].max_residual < r.history[k - 1].max_residual);
         CHECK(r.history[k].rms_residual < r.history[k - 1].rms_residual);
         CHECK(c_norms[k] < c_norms[k - 1]);
       }
