@@ -7,6 +7,7 @@
 #include <mutex>
 
 #include "framework/interpolation/closed_form_limits.h"
+#include "framework/interpolation/dual_limits.h"
 #include "framework/interpolation/shape_two_step.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -153,9 +154,7 @@ std::vector<Index> vertex_descendants(const Hierarchy& h) {
       at[v] = child_of[at[v]];
       if (at[v] == kNone)
         throw Error(fmt::format("refinement step {} makes no vertex point for base vertex {} (a dual split such as "
-                                "Doo-Sabin's): control vertices have no limit points of their own, so they cannot "
-                                "be interpolated. Face-centroid targets for dual schemes are left to issue 6's limit "
-                                "masks", l + 1, v));
+                                "Doo-Sabin's)", l + 1, v));
     }
   }
   return at;
@@ -242,21 +241,37 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
   const RefineOptions step = refine_options(o, 1, o.first_step + prefix_levels);
   Hierarchy one_step = refine(tail, level, step);
   std::vector<Index> children;
-  try {
-    children = vertex_descendants(one_step);  // dual schemes stop here
-  } catch (const Error& e) {
-    throw Error(fmt::format("scheme '{}': {}", tail.name, e.what()));
-  }
   std::shared_ptr<const LimitEvaluator> tail_mask;
   std::vector<std::string> refused;
-  for (auto& candidate : candidates(tail, o.features)) {
-    std::string why = invariance_mismatch(*candidate, tail, one_step, children);
+  try {
+    children = vertex_descendants(one_step);
+  } catch (const Error& e) {
+    // A dual scheme: no vertex points, but V-faces whose centroids may be limit points.
+    auto dual = std::make_shared<DualCentroidLimit>(seq.schemes.back(), step);
+    std::string why = dual_centroid_mismatch(tail, level, step);
     if (why.empty()) {
-      tail_mask = candidate;
-      break;
+      try {
+        (void)dual->limit_stencils(level);
+      } catch (const Error& refused_here) {
+        why = refused_here.what();
+      }
     }
-    const std::string name = candidate->name();
-    refused.push_back(why.rfind(name, 0) == 0 ? why : fmt::format("{}: {}", name, why));
+    if (!why.empty())
+      throw Error(fmt::format("scheme '{}' makes no vertex points ({}); the limit point of a vertex is then the "
+                              "centroid of its V-face, but {}", tail.name, e.what(), why));
+    tail_mask = dual;
+  }
+  // Closed forms and providers, for schemes with vertex points.
+  if (!tail_mask) {
+    for (auto& candidate : candidates(tail, o.features)) {
+      std::string why = invariance_mismatch(*candidate, tail, one_step, children);
+      if (why.empty()) {
+        tail_mask = candidate;
+        break;
+      }
+      const std::string name = candidate->name();
+      refused.push_back(why.rfind(name, 0) == 0 ? why : fmt::format("{}: {}", name, why));
+    }
   }
   if (!tail_mask) {
     std::string list;
@@ -268,11 +283,12 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
                             "of any scheme) plugs in through register_limit_mask_provider."
                           : fmt::format("Registered providers ({}) had no mask either.", fmt::join(providers, ", "))));
   }
-  if (prefix.empty())
-    return {tail_mask, fmt::format("{} (checked: l S = l for one step of {} on this mesh)", tail_mask->name(), tail.name)};
+  const std::string checked = children.empty() ? "checked: every V-face keeps its centroid one step down"
+                                                : fmt::format("checked: l S = l for one step of {} on this mesh", tail.name);
+  if (prefix.empty()) return {tail_mask, fmt::format("{} ({})", tail_mask->name(), checked)};
 
   auto composite = std::make_shared<CompositeLimit>(prefix, tail_mask, o);
-  LimitChoice choice{composite, fmt::format("{} (tail checked: l S = l on the level after the prefix)", composite->name())};
+  LimitChoice choice{composite, fmt::format("{} (tail {}, on the level after the prefix)", composite->name(), checked)};
   // Seed 001's formula (2), when the prefix is one level of a scheme with a lambda and the
   // formula agrees with the composite on this mesh.
   const auto params = prefix.front().scheme->parameter_values();

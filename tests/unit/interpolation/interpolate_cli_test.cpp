@@ -137,7 +137,13 @@ TEST_CASE("interpolate: bad input is refused, nothing is written") {
   check_refused(kCross + " --select " + (dir / "ids.txt").string(), dir, "ids.txt line 4: vertex 123 does not exist");
   std::ofstream(dir / "lambda.txt") << "0.5\n0.2\n";
   check_refused(kCross + " " + kTwoStep + " --lambda " + (dir / "lambda.txt").string(), dir, "lambda.txt line 2");
-  check_refused(kCross + " --scheme doo-sabin", dir, "no vertex point");
+  check_refused(source_path("examples/meshes/plane-with-hole.obj") + " --scheme doo-sabin", dir,
+                "vertex 0 is on the boundary");
+  std::ofstream(dir / "cc-variant.json") << R"json({"name": "cc-variant", "split": "quad", "faces": "any",
+    "curve": "cubic-bspline", "rules": {"face": [{"sum": "vertices", "w": "1/k"}],
+    "edge": [{"sum": "ends", "w": "1/4"}, {"sum": "faces", "new": "face", "w": "1/4"}],
+    "vertex": [{"at": "self", "w": "1/2"}, {"sum": "ring", "w": "1/(2*n)"}]}})json";
+  check_refused(kCross + " --scheme " + (dir / "cc-variant.json").string(), dir, "scheme 'cc-variant' has no limit mask");
   check_refused(kCross + " --scheme catmull-clark-shape", dir, "scheme 'catmull-clark-shape' has no limit mask");
   check_refused(source_path("examples/meshes/cube.obj") + " --scheme loop", dir, "triangles");
   check_refused(kCross + " --refined " + (dir / "x.obj").string(), dir, "use .pvd", false);

@@ -1,13 +1,15 @@
 // The generic method: closed-form limit masks, their selection by l S = l, Chen et al.'s
-// progressive interpolation on plain Catmull-Clark, Loop, and the refusals.
+// progressive interpolation on plain Catmull-Clark, Loop, dual schemes, and the refusals.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
 
 #include "framework/interpolation/closed_form_limits.h"
+#include "framework/interpolation/dual_limits.h"
 #include "framework/interpolation/limit_selection.h"
 #include "framework/interpolation/progressive.h"
 #include "framework/scheme/scheme.h"
@@ -118,7 +120,6 @@ TEST_CASE("the generic method runs on Loop") {
 }
 
 TEST_CASE("refusals: schemes without limit masks, dual schemes, missing vertices") {
-  CHECK_THROWS_WITH_AS(choose("doo-sabin", cube()), doctest::Contains("no vertex point"), Error);
   // A user scheme: Catmull-Clark with a different vertex rule has no closed-form mask.
   const auto dir = std::filesystem::temp_directory_path() / "subdivkit-interp-user";
   std::filesystem::create_directories(dir);
@@ -175,4 +176,85 @@ TEST_CASE("creases and corners: cubic B-spline limits along infinitely sharp edg
     CHECK(t.row_size(c.v) == 1);
     CHECK(weight_of(t, c.v, c.v) == 1.0);
   }
+}
+
+namespace {
+
+// Seed 000 §4(b): Doo-Sabin's corner point of corner c in a k-gon, gamma_0 = (k+5)/(4k),
+// gamma_i = (3 + 2 cos(2 pi i/k))/(4k), i counted from the corner.
+P3 doo_sabin_corner(const Level& L, const std::vector<double>& x, Index f, int c) {
+  const auto face = L.face(f);
+  const int k = int(face.size());
+  P3 p{};
+  for (int i = 0; i < k; ++i) {
+    const double g = i == 0 ? (k + 5.0) / (4.0 * k) : (3 + 2 * std::cos(2 * std::numbers::pi * i / k)) / (4.0 * k);
+    p = p + g * at(x, face[(c + i) % k]);
+  }
+  return p;
+}
+
+// The centroid of v's V-face: the mean of its corner points over the faces around v.
+P3 doo_sabin_vface_centroid(const Level& L, const std::vector<double>& x, Index v) {
+  const auto faces = L.ring_faces(v);
+  P3 s{};
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const int c = L.vertex_face_corner[L.vertex_face_offsets[v] + i];
+    s = s + (1.0 / faces.size()) * doo_sabin_corner(L, x, faces[i], c);
+  }
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("dual schemes: a control vertex's limit point is its V-face's centroid (seed 000 §5)") {
+  for (const Mesh& mesh : {cross_mesh(), pyramid()}) {
+    const Level L = mesh.level();
+    const LimitChoice c = choose("doo-sabin", mesh);
+    CHECK(c.description.find("V-face") != std::string::npos);
+    std::vector<double> got(mesh.positions.size());
+    c.evaluator->limit_points(L, mesh.positions, got);
+    for (Index v = 0; v < L.vertex_count; ++v)
+      CHECK(dist(at(got, v), doo_sabin_vface_centroid(L, mesh.positions, v)) < 1e-14);
+    // Mid-edge: the V-face is the midpoints of v's edges.
+    choose("mid-edge", mesh).evaluator->limit_points(L, mesh.positions, got);
+    for (Index v = 0; v < L.vertex_count; ++v) {
+      P3 m{};
+      for (Index e : L.ring_edges(v)) m = m + (0.5 / L.valence(v)) * (at(mesh.positions, v) + at(mesh.positions, L.other_end(e, v)));
+      CHECK(dist(at(got, v), m) < 1e-14);
+    }
+  }
+  // The nested faces inside a V-face keep its centroid and shrink onto it: the limit point.
+  const Mesh mesh = pyramid();
+  const Level L = mesh.level();
+  const auto r = refine_mesh(mesh, "doo-sabin", 6);
+  std::vector<double> limit(mesh.positions.size());
+  choose("doo-sabin", mesh).evaluator->limit_points(L, mesh.positions, limit);
+  const std::vector<Index> vface = vertex_faces_after_step(r.hierarchy);
+  for (Index v = 0; v < L.vertex_count; ++v) {
+    Index g = vface[v];
+    std::vector<double> x = r.hierarchy.stencils[0].apply(mesh.positions, 3);
+    double radius = 0;
+    for (int l = 1; l <= 6; ++l) {
+      const auto face = r.hierarchy.levels[l].face(g);
+      P3 centre{};
+      radius = 0;
+      for (Index u : face) centre = centre + (1.0 / face.size()) * at(x, u);
+      for (Index u : face) radius = std::max(radius, dist(at(x, u), at(limit, v)));
+      CHECK(dist(centre, at(limit, v)) < 1e-13);
+      if (l == 6) break;
+      const auto& parents = r.hierarchy.origins[l].parent_face;
+      g = Index(std::find(parents.begin(), parents.end(), g) - parents.begin());
+      x = r.hierarchy.stencils[l].apply(x, 3);
+    }
+    CHECK(radius < 0.02);
+  }
+  // Interpolation with Doo-Sabin converges to the V-face centroids.
+  const Mesh cross = cross_mesh();
+  const Level C = cross.level();
+  const ProgressiveResult p = progressive_interpolation(*choose("doo-sabin", cross).evaluator, C, cross.positions, {});
+  REQUIRE(p.converged);
+  for (Index v = 0; v < C.vertex_count; ++v)
+    CHECK(dist(doo_sabin_vface_centroid(C, p.control, v), at(cross.positions, v)) < 1e-10 + 1e-14);
+  // A boundary vertex's V-face is open: refused with the vertex named.
+  CHECK_THROWS_WITH_AS(choose("doo-sabin", grid(2, 2)), doctest::Contains("vertex 0 is on the boundary"), Error);
 }
