@@ -3,8 +3,9 @@
 // control vertex, as a weighted sum of control points (a "limit mask" per vertex).
 //
 // Progressive interpolation (progressive.h) only needs this operator. The evaluators here
-// are closed forms (closed_form_limits.h, shape_two_step.h); issue 6's masks from the
-// eigen-analysis of any scheme plug in through limit_selection.h's provider hook. Refining
+// are closed forms (closed_form_limits.h, shape_two_step.h) and dual schemes' V-face
+// centroids (dual_limits.h); issue 6's masks from the eigen-analysis of any scheme plug in
+// through limit_selection.h's provider hook (register_limit_mask_provider). Refining
 // a few levels and taking the points as "nearly converged" is deliberately not offered:
 // an approximate limit would make the interpolation converge to the wrong surface.
 #include <span>

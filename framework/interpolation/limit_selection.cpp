@@ -245,7 +245,7 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
   std::vector<std::string> refused;
   try {
     children = vertex_descendants(one_step);
-  } catch (const Error& e) {
+  } catch (const Error&) {
     // A dual scheme: no vertex points, but V-faces whose centroids may be limit points.
     auto dual = std::make_shared<DualCentroidLimit>(seq.schemes.back(), step);
     std::string why = dual_centroid_mismatch(tail, level, step);
@@ -256,9 +256,12 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
         why = refused_here.what();
       }
     }
-    if (!why.empty())
-      throw Error(fmt::format("scheme '{}' makes no vertex points ({}); the limit point of a vertex is then the "
-                              "centroid of its V-face, but {}", tail.name, e.what(), why));
+    if (!why.empty()) {
+      const std::string prefix = dual->name() + ": ";
+      if (why.rfind(prefix, 0) == 0) why.erase(0, prefix.size());
+      throw Error(fmt::format("scheme '{}' is dual (its steps make no vertex points), so a control vertex's limit "
+                              "point is the centroid of its V-face; but {}", tail.name, why));
+    }
     tail_mask = dual;
   }
   // Closed forms and providers, for schemes with vertex points.
@@ -284,11 +287,11 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
                           : fmt::format("Registered providers ({}) had no mask either.", fmt::join(providers, ", "))));
   }
   const std::string checked = children.empty() ? "checked: every V-face keeps its centroid one step down"
-                                                : fmt::format("checked: l S = l for one step of {} on this mesh", tail.name);
-  if (prefix.empty()) return {tail_mask, fmt::format("{} ({})", tail_mask->name(), checked)};
+                                                : fmt::format("checked: l S = l for one step of {}", tail.name);
+  if (prefix.empty()) return {tail_mask, fmt::format("{} ({} on this mesh)", tail_mask->name(), checked)};
 
   auto composite = std::make_shared<CompositeLimit>(prefix, tail_mask, o);
-  LimitChoice choice{composite, fmt::format("{} (tail {}, on the level after the prefix)", composite->name(), checked)};
+  LimitChoice choice{composite, fmt::format("{} (tail {} on the level after the prefix)", composite->name(), checked)};
   // Seed 001's formula (2), when the prefix is one level of a scheme with a lambda and the
   // formula agrees with the composite on this mesh.
   const auto params = prefix.front().scheme->parameter_values();

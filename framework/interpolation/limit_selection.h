@@ -9,6 +9,9 @@
 // not change between levels, one step proves it for every level, and the limit point of a
 // convergent scheme is then l applied to the control points.
 //
+// Dual schemes (no vertex points) take dual_limits.h's V-face centroids, checked by their
+// own test (every V-face keeps its centroid one step down).
+//
 // Candidates, in order: the closed forms of closed_form_limits.h, then every provider
 // registered with register_limit_mask_provider. Issue 6 (limit masks from the
 // eigen-analysis of any scheme's local subdivision matrices) plugs in there; until it
