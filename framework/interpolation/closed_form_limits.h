@@ -44,6 +44,7 @@ public:
       : beta_(beta), features_(features) {}
   std::string name() const override;
   StencilTable limit_stencils(const Level& level) const override;
+  LoopBeta beta() const { return beta_; }
 
 private:
   LoopBeta beta_;

@@ -43,9 +43,6 @@ TEST_CASE("interpolate: seed 001's local method on the cross; the written mesh's
   const CliResult r = run_subdiv("interpolate " + kCross + " " + kTwoStep + " --lambda 0.5 --select 0,5,10,20,33 -v -o " +
                                  out.string() + " --refined " + refined.string() + " --levels 2");
   REQUIRE_MESSAGE(r.exit_code == 0, r.output);
-  CHECK(r.output.find("formula (2)") != std::string::npos);
-  CHECK(r.output.find("converged in") != std::string::npos);
-  CHECK(r.output.find("theorem 2") != std::string::npos);
   const MeshData in = read_mesh(kCross), got = read_mesh(out);
   const Level L = level_of(in);
   REQUIRE(got.vertex_count() == in.vertex_count());
@@ -106,7 +103,6 @@ TEST_CASE("interpolate: Chen et al.'s global method on plain Catmull-Clark, and 
   r = run_subdiv("interpolate " + torus + " " + kTwoStep + " --lambda " + (dir / "lambda.txt").string() +
                  " --tol 1e-11 -o " + out.string() + " --refined " + (dir / "torus.pvd").string() + " --levels 7");
   REQUIRE_MESSAGE(r.exit_code == 0, r.output);
-  CHECK(r.output.find("lambda per vertex") != std::string::npos);
   got = read_mesh(out);
   for (Index v = 0; v < L.vertex_count; ++v)
     CHECK(dist(two_step_limit_point(L, got.positions, v, v % 2 ? 0.4 : 0.9), at(in.positions, v)) < 1.1e-11);
