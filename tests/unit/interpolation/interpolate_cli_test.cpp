@@ -101,7 +101,7 @@ TEST_CASE("interpolate: Chen et al.'s global method on plain Catmull-Clark, and 
   for (Index v = 0; v < L.vertex_count; ++v) lambda << (v % 2 ? "0.4" : "0.9") << "\n";
   lambda.close();
   r = run_subdiv("interpolate " + torus + " " + kTwoStep + " --lambda " + (dir / "lambda.txt").string() +
-                 " --tol 1e-11 -o " + out.string() + " --refined " + (dir / "torus.pvd").string() + " --levels 7");
+                 " --tol 1e-11 -o " + out.string() + " --refined " + (dir / "torus.pvd").string() + " --levels 5");
   REQUIRE_MESSAGE(r.exit_code == 0, r.output);
   got = read_mesh(out);
   for (Index v = 0; v < L.vertex_count; ++v)
@@ -109,7 +109,7 @@ TEST_CASE("interpolate: Chen et al.'s global method on plain Catmull-Clark, and 
   // The refined output uses the same per-vertex first step: the base vertices' points close
   // in on their targets level by level (Catmull-Clark's vertex points converge like 1/4^l).
   double previous = 1e9;
-  for (int l = 1; l <= 7; ++l) {
+  for (int l = 1; l <= 5; ++l) {
     const auto poly = read_vtp(dir / "torus_levels" / ("level_" + std::to_string(l) + ".vtp"));
     auto* distance = poly->GetPointData()->GetArray("target_distance");
     auto* base = poly->GetPointData()->GetArray("base_vertex");
@@ -119,7 +119,7 @@ TEST_CASE("interpolate: Chen et al.'s global method on plain Catmull-Clark, and 
     CHECK(worst < previous / 3);
     previous = worst;
   }
-  CHECK(previous < 1e-4);
+  CHECK(previous < 1e-3);
 }
 
 TEST_CASE("interpolate: bad input is refused, nothing is written") {

@@ -51,13 +51,13 @@ TEST_CASE("the Catmull-Clark mask is seed 000's formula on quads, and the limit 
     std::vector<double> got(mesh.positions.size());
     CatmullClarkLimit().limit_points(L, mesh.positions, got);
     for (Index v = 0; v < L.vertex_count; ++v) CHECK(dist(at(got, v), cc_limit_point(L, mesh.positions, v)) < 1e-14);
-    // Vertex points of 3 and 9 levels: their distance to the limit falls like 1/4 per level.
-    const auto r3 = refine_mesh(mesh, "catmull-clark", 3), r9 = refine_mesh(mesh, "catmull-clark", 9);
-    const auto c3 = vertex_descendants(r3.hierarchy), c9 = vertex_descendants(r9.hierarchy);
+    // Vertex points of 2 and 6 levels: their distance to the limit falls geometrically.
+    const auto r2 = refine_mesh(mesh, "catmull-clark", 2), r6 = refine_mesh(mesh, "catmull-clark", 6);
+    const auto c2 = vertex_descendants(r2.hierarchy), c6 = vertex_descendants(r6.hierarchy);
     for (Index v = 0; v < L.vertex_count; ++v) {
-      const double e3 = dist(at(r3.positions, c3[v]), at(got, v)), e9 = dist(at(r9.positions, c9[v]), at(got, v));
-      CHECK(e9 < 1e-4);
-      CHECK(e9 < e3 * 1e-2);
+      const double e2 = dist(at(r2.positions, c2[v]), at(got, v)), e6 = dist(at(r6.positions, c6[v]), at(got, v));
+      CHECK(e6 < 1e-3);
+      CHECK(e6 < e2 / 50);  // valence 3 converges slowest: about 1/3 per level
     }
   }
 }
