@@ -1,0 +1,77 @@
+#pragma once
+// Closed-form limit masks (seed 000 §5) for schemes whose masks are known in closed form.
+// None of them knows a scheme by name: limit_selection.h accepts one for a scheme only
+// when its mask is invariant under that scheme's actual stencils (l S = l).
+//
+// Features follow the engine's classification (rules/feature_context.h, DeRose et al.
+// 1998): boundary edges and tags of sharpness >= 10 are infinitely sharp; a vertex on two
+// such edges is a crease vertex and its limit is the cubic B-spline's, (1/6, 2/3, 1/6)
+// along the crease; a corner (three or more sharp edges, a sharp vertex tag, a boundary
+// corner under edges-and-corners) stays where it is. Darts and semi-sharp features have
+// no closed form here; the evaluators refuse them with the vertex named.
+#include "framework/interpolation/limit_evaluator.h"
+#include "framework/rules/feature_context.h"
+
+namespace subdiv {
+
+// Catmull-Clark. Interior vertex of valence n among quads (seed 000 §5):
+//   v_inf = (n^2 v + 4 sum e_j + sum f_j) / (n (n + 5)),
+// e_j the edge neighbours, f_j the vertex opposite v in quad j. Among polygons of any
+// size, one Catmull-Clark step (face centroids c_j, edge points, vertex point) makes the
+// 1-ring quads and the same mask expands to
+//   v_inf = (n (n - 1) v + 2 sum e_j + 4 sum c_j) / (n (n + 5)),
+// which is the seed's formula when every face is a quad (4 c_j = v + e_j + e_{j+1} + f_j).
+class CatmullClarkLimit final : public LimitEvaluator {
+public:
+  explicit CatmullClarkLimit(FeatureOptions features = {}) : features_(features) {}
+  std::string name() const override { return "Catmull-Clark closed form (seed 000)"; }
+  StencilTable limit_stencils(const Level& level) const override;
+
+private:
+  FeatureOptions features_;
+};
+
+// Loop with vertex rule (1 - n beta_n) v + beta_n sum e_j. Seed 000 §5 writes the limit as
+//   v_inf = gamma_n v + (1 - gamma_n) (1/n) sum e_j,  gamma_n = 3 / (11 - 8 beta_bar_n),
+// beta_bar_n = 1 - n beta_n the vertex's own weight; equivalently gamma_n = 3 / (3 + 8 n beta_n).
+// Triangles only.
+enum class LoopBeta { Loop, Warren };  // Loop 1987's beta_n; Warren's 3/16 (n = 3), 3/(8n)
+double loop_beta(LoopBeta variant, int n);
+
+class LoopLimit final : public LimitEvaluator {
+public:
+  explicit LoopLimit(LoopBeta beta = LoopBeta::Loop, FeatureOptions features = {})
+      : beta_(beta), features_(features) {}
+  std::string name() const override;
+  StencilTable limit_stencils(const Level& level) const override;
+  LoopBeta beta() const { return beta_; }
+
+private:
+  LoopBeta beta_;
+  FeatureOptions features_;
+};
+
+// Kobbelt's sqrt(3) with vertex rule (1 - a_n) v + (a_n / n) sum e_j, a_n = (4 - 2 cos(2 pi/n))/9:
+//   v_inf = (1 - b_n) v + (b_n / n) sum e_j,  b_n = 3 a_n / (1 + 3 a_n)
+// (invariant because one step makes the ring out of the face points (v + e_j + e_{j+1})/3).
+// Interior vertices and corners only: sqrt(3)'s boundaries are trisected every second step
+// and their limit is left to issue 6's masks.
+class Sqrt3Limit final : public LimitEvaluator {
+public:
+  explicit Sqrt3Limit(FeatureOptions features = {}) : features_(features) {}
+  std::string name() const override { return "sqrt(3) closed form (Kobbelt 2000)"; }
+  StencilTable limit_stencils(const Level& level) const override;
+
+private:
+  FeatureOptions features_;
+};
+
+// Interpolatory schemes (butterfly, modified butterfly, bilinear, ...): old vertices never
+// move, so every vertex is its own limit point.
+class InterpolatoryLimit final : public LimitEvaluator {
+public:
+  std::string name() const override { return "interpolatory (vertices stay)"; }
+  StencilTable limit_stencils(const Level& level) const override;
+};
+
+}  // namespace subdiv

@@ -1,0 +1,315 @@
+#include "framework/interpolation/limit_selection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <mutex>
+
+#include "framework/interpolation/closed_form_limits.h"
+#include "framework/interpolation/dual_limits.h"
+#include "framework/interpolation/shape_two_step.h"
+#include "framework/scheme/scheme.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+constexpr double kMaskTolerance = 1e-12;
+
+struct Registry {
+  std::mutex mutex;
+  std::vector<std::pair<std::string, LimitMaskProvider>> providers;
+};
+Registry& registry() {
+  static Registry r;
+  return r;
+}
+
+RefineOptions refine_options(const LimitSelectionOptions& o, int levels, int first_step) {
+  RefineOptions r;
+  r.levels = levels;
+  r.boundary = o.features.boundary;
+  r.crease_method = o.features.crease_method;
+  r.first_step = first_step;
+  return r;
+}
+
+std::vector<std::pair<Index, double>> sorted_row(const StencilTable& t, Index r) {
+  std::vector<std::pair<Index, double>> row;
+  for (Index i = t.offsets[r]; i < t.offsets[r + 1]; ++i) row.emplace_back(t.indices[i], t.weights[i]);
+  std::sort(row.begin(), row.end());
+  // Merge repeats (compose keeps each source once, but be safe).
+  std::vector<std::pair<Index, double>> merged;
+  for (const auto& [s, w] : row) {
+    if (!merged.empty() && merged.back().first == s) merged.back().second += w;
+    else merged.emplace_back(s, w);
+  }
+  return merged;
+}
+
+// Empty when rows agree to kMaskTolerance; else the first source that differs.
+std::string row_mismatch(const StencilTable& a, Index ra, const StencilTable& b, Index rb) {
+  const auto x = sorted_row(a, ra), y = sorted_row(b, rb);
+  size_t i = 0, j = 0;
+  while (i < x.size() || j < y.size()) {
+    Index s;
+    double wa = 0, wb = 0;
+    if (j == y.size() || (i < x.size() && x[i].first < y[j].first)) s = x[i].first, wa = x[i++].second;
+    else if (i == x.size() || y[j].first < x[i].first) s = y[j].first, wb = y[j++].second;
+    else s = x[i].first, wa = x[i++].second, wb = y[j++].second;
+    if (std::abs(wa - wb) > kMaskTolerance)
+      return fmt::format("the weight of vertex {} is {:.15g} here but {:.15g} after one step", s, wa, wb);
+  }
+  return {};
+}
+
+// Rows `rows[i]` of `t`, in that order.
+StencilTable select_rows(const StencilTable& t, const std::vector<Index>& rows) {
+  StencilTable out;
+  out.source_count = t.source_count;
+  for (Index r : rows) {
+    out.indices.insert(out.indices.end(), t.indices.begin() + t.offsets[r], t.indices.begin() + t.offsets[r + 1]);
+    out.weights.insert(out.weights.end(), t.weights.begin() + t.offsets[r], t.weights.begin() + t.offsets[r + 1]);
+    out.offsets.push_back(Index(out.indices.size()));
+  }
+  return out;
+}
+
+std::vector<SchemeRun> as_runs(const std::vector<CompositeLimit::Run>& prefix) {
+  std::vector<SchemeRun> runs;
+  for (const auto& r : prefix) runs.push_back({r.scheme.get(), r.levels});
+  return runs;
+}
+
+// Seed 001's per-vertex lambda replaces the first step's vertex rows; the first step must
+// be one level of a scheme whose stencils at its own lambda are seed 001's shape rule.
+void apply_lambda(Hierarchy& h, const Scheme& first, const LimitSelectionOptions& o) {
+  if (o.lambda.empty()) return;
+  if (h.stencils.empty())
+    throw Error("a per-vertex lambda needs seed 001's shape step first: --scheme catmull-clark-shape:1,catmull-clark");
+  const auto params = first.parameter_values();
+  const auto it = params.find("lambda");
+  if (it == params.end())
+    throw Error(fmt::format("lambda per vertex: the first scheme '{}' has no parameter 'lambda'; seed 001's method "
+                            "is --scheme catmull-clark-shape:1,catmull-clark", first.name));
+  const Level& base = h.levels[0];
+  check_shape_lambda(o.lambda, base.vertex_count, "lambda");
+  const double own = it->second;
+  const StencilTable same = shape_first_step(base, h.origins[0], h.stencils[0], std::span(&own, 1), o.features);
+  for (Index r = 0; r < h.stencils[0].row_count(); ++r)
+    if (auto why = row_mismatch(h.stencils[0], r, same, r); !why.empty())
+      throw Error(fmt::format("lambda per vertex: the first scheme '{}' is not seed 001's shape step (new vertex {}: "
+                              "{}); use --scheme catmull-clark-shape:1,catmull-clark", first.name, r, why));
+  h.stencils[0] = shape_first_step(base, h.origins[0], h.stencils[0], o.lambda, o.features);
+}
+
+Hierarchy refine_prefix(const std::vector<CompositeLimit::Run>& prefix, const Level& level,
+                        const LimitSelectionOptions& o) {
+  const auto runs = as_runs(prefix);
+  Hierarchy h = refine(runs, level, refine_options(o, 0, o.first_step));
+  if (!prefix.empty()) apply_lambda(h, *prefix.front().scheme, o);
+  return h;
+}
+
+std::vector<std::shared_ptr<const LimitEvaluator>> candidates(const Scheme& scheme, const FeatureOptions& f) {
+  std::vector<std::shared_ptr<const LimitEvaluator>> c{
+      std::make_shared<CatmullClarkLimit>(f), std::make_shared<LoopLimit>(LoopBeta::Loop, f),
+      std::make_shared<LoopLimit>(LoopBeta::Warren, f), std::make_shared<Sqrt3Limit>(f),
+      std::make_shared<InterpolatoryLimit>()};
+  std::vector<std::pair<std::string, LimitMaskProvider>> providers;
+  {
+    std::lock_guard lock(registry().mutex);
+    providers = registry().providers;
+  }
+  for (const auto& [name, provider] : providers)
+    if (auto e = provider(scheme, f)) c.push_back(std::move(e));
+  return c;
+}
+
+}  // namespace
+
+void register_limit_mask_provider(const std::string& name, LimitMaskProvider provider) {
+  std::lock_guard lock(registry().mutex);
+  registry().providers.emplace_back(name, std::move(provider));
+}
+
+std::vector<std::string> limit_mask_provider_names() {
+  std::lock_guard lock(registry().mutex);
+  std::vector<std::string> names;
+  for (const auto& p : registry().providers) names.push_back(p.first);
+  return names;
+}
+
+std::vector<Index> vertex_descendants(const Hierarchy& h) {
+  const Index base_count = h.levels.front().vertex_count;
+  std::vector<Index> at(static_cast<size_t>(base_count));
+  for (Index v = 0; v < base_count; ++v) at[v] = v;
+  for (size_t l = 0; l < h.origins.size(); ++l) {
+    const ChildOrigins& o = h.origins[l];
+    std::vector<Index> child_of(size_t(h.levels[l].vertex_count), kNone);
+    for (size_t c = 0; c < o.kind.size(); ++c)
+      if (o.kind[c] == OriginKind::Vertex) child_of[o.parent[c]] = Index(c);
+    for (Index v = 0; v < base_count; ++v) {
+      at[v] = child_of[at[v]];
+      if (at[v] == kNone)
+        throw Error(fmt::format("refinement step {} makes no vertex point for base vertex {} (a dual split such as "
+                                "Doo-Sabin's)", l + 1, v));
+    }
+  }
+  return at;
+}
+
+namespace {
+
+// l S = l on one refinement step `h` (levels[0] -> levels[1]) of `scheme`.
+std::string invariance_mismatch(const LimitEvaluator& evaluator, const Scheme& scheme, const Hierarchy& h,
+                                const std::vector<Index>& children) {
+  const Level& level = h.levels[0];
+  StencilTable here, below;
+  try {
+    here = evaluator.limit_stencils(level);
+    below = evaluator.limit_stencils(h.levels[1]);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  const StencilTable after = compose(h.stencils[0], select_rows(below, children));
+  for (Index v = 0; v < level.vertex_count; ++v)
+    if (auto why = row_mismatch(here, v, after, v); !why.empty())
+      return fmt::format("not invariant under one step of '{}' (l S != l) at vertex {} of valence {}: {}", scheme.name,
+                         v, level.valence(v), why);
+  return {};
+}
+
+}  // namespace
+
+std::string invariance_mismatch(const LimitEvaluator& evaluator, const Scheme& scheme, const Level& level,
+                                const RefineOptions& options) {
+  RefineOptions one = options;
+  one.levels = 1;
+  const Hierarchy h = refine(scheme, level, one);
+  std::vector<Index> children;
+  try {
+    children = vertex_descendants(h);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return invariance_mismatch(evaluator, scheme, h, children);
+}
+
+CompositeLimit::CompositeLimit(std::vector<Run> prefix, std::shared_ptr<const LimitEvaluator> tail,
+                               LimitSelectionOptions options)
+    : prefix_(std::move(prefix)), tail_(std::move(tail)), options_(std::move(options)) {}
+
+std::string CompositeLimit::name() const {
+  std::string runs;
+  for (const auto& r : prefix_) runs += fmt::format("{}{}:{}", runs.empty() ? "" : ",", r.scheme->name, r.levels);
+  return fmt::format("{} after {}{}", tail_->name(), runs, options_.lambda.empty() ? "" : " (lambda per vertex)");
+}
+
+StencilTable CompositeLimit::limit_stencils(const Level& level) const {
+  const Hierarchy h = refine_prefix(prefix_, level, options_);
+  const StencilTable tail = tail_->limit_stencils(h.levels.back());
+  StencilTable rows = select_rows(tail, vertex_descendants(h));
+  for (size_t l = h.stencils.size(); l-- > 0;) rows = compose(h.stencils[l], rows);
+  return rows;
+}
+
+Hierarchy refine_for_limit(const SchemeSequence& seq, const Level& base, const LimitSelectionOptions& o) {
+  Hierarchy h = refine(seq.runs, base, refine_options(o, 0, o.first_step));
+  if (!o.lambda.empty() && !seq.runs.empty()) apply_lambda(h, *seq.runs.front().scheme, o);
+  return h;
+}
+
+LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const LimitSelectionOptions& o) {
+  if (seq.runs.empty()) throw Error("no scheme given");
+  std::vector<CompositeLimit::Run> prefix;
+  int prefix_levels = 0;
+  for (size_t i = 0; i + 1 < seq.runs.size(); ++i)
+    if (seq.runs[i].levels > 0) {
+      prefix.push_back({seq.schemes[i], seq.runs[i].levels});
+      prefix_levels += seq.runs[i].levels;
+    }
+  if (!o.lambda.empty() && (prefix.empty() || prefix.front().levels != 1))
+    throw Error("a per-vertex lambda is seed 001's: the first run must be one level of its shape step, "
+                "--scheme catmull-clark-shape:1,catmull-clark");
+  const Scheme& tail = *seq.schemes.back();
+
+  // The tail's mask on the level after the prefix, checked there.
+  const Hierarchy h = refine_prefix(prefix, base, o);
+  const Level& level = h.levels.back();
+  const RefineOptions step = refine_options(o, 1, o.first_step + prefix_levels);
+  Hierarchy one_step = refine(tail, level, step);
+  std::vector<Index> children;
+  std::shared_ptr<const LimitEvaluator> tail_mask;
+  std::vector<std::string> refused;
+  try {
+    children = vertex_descendants(one_step);
+  } catch (const Error&) {
+    // A dual scheme: no vertex points, but V-faces whose centroids may be limit points.
+    auto dual = std::make_shared<DualCentroidLimit>(seq.schemes.back(), step);
+    std::string why = dual_centroid_mismatch(tail, level, step);
+    if (why.empty()) {
+      try {
+        (void)dual->limit_stencils(level);
+      } catch (const Error& refused_here) {
+        why = refused_here.what();
+      }
+    }
+    if (!why.empty()) {
+      const std::string prefix = dual->name() + ": ";
+      if (why.rfind(prefix, 0) == 0) why.erase(0, prefix.size());
+      throw Error(fmt::format("scheme '{}' is dual (its steps make no vertex points), so a control vertex's limit "
+                              "point is the centroid of its V-face; but {}", tail.name, why));
+    }
+    tail_mask = dual;
+  }
+  // Closed forms and providers, for schemes with vertex points.
+  if (!tail_mask) {
+    for (auto& candidate : candidates(tail, o.features)) {
+      std::string why = invariance_mismatch(*candidate, tail, one_step, children);
+      if (why.empty()) {
+        tail_mask = candidate;
+        break;
+      }
+      const std::string name = candidate->name();
+      refused.push_back(why.rfind(name, 0) == 0 ? why : fmt::format("{}: {}", name, why));
+    }
+  }
+  if (!tail_mask) {
+    std::string list;
+    for (const auto& r : refused) list += "\n  - " + r;
+    const auto providers = limit_mask_provider_names();
+    throw Error(fmt::format(
+        "scheme '{}' has no limit mask for this mesh; every candidate was refused:{}\n  {}", tail.name, list,
+        providers.empty() ? "No generic mask provider is registered: issue 6 (limit masks from the eigen-analysis "
+                            "of any scheme) plugs in through register_limit_mask_provider."
+                          : fmt::format("Registered providers ({}) had no mask either.", fmt::join(providers, ", "))));
+  }
+  const std::string checked = children.empty() ? "checked: every V-face keeps its centroid one step down"
+                                                : fmt::format("checked: l S = l for one step of {}", tail.name);
+  if (prefix.empty()) return {tail_mask, fmt::format("{} ({} on this mesh)", tail_mask->name(), checked)};
+
+  auto composite = std::make_shared<CompositeLimit>(prefix, tail_mask, o);
+  LimitChoice choice{composite, fmt::format("{} (tail {} on the level after the prefix)", composite->name(), checked)};
+  // Seed 001's formula (2), when the prefix is one level of a scheme with a lambda and the
+  // formula agrees with the composite on this mesh.
+  const auto params = prefix.front().scheme->parameter_values();
+  const auto lambda = params.find("lambda");
+  if (prefix.size() == 1 && prefix.front().levels == 1 && (lambda != params.end() || !o.lambda.empty())) {
+    try {
+      auto formula = o.lambda.empty() ? std::make_shared<ShapeTwoStepLimit>(lambda->second)
+                                      : std::make_shared<ShapeTwoStepLimit>(o.lambda);
+      const StencilTable a = formula->limit_stencils(base), b = composite->limit_stencils(base);
+      bool same = true;
+      for (Index v = 0; v < base.vertex_count && same; ++v) same = row_mismatch(a, v, b, v).empty();
+      if (same)
+        return {formula, fmt::format("{} (equal to {} on this mesh)", formula->name(), composite->name())};
+    } catch (const Error&) {
+      // Not a closed quad mesh, or lambda outside the formula's range: the composite stands.
+    }
+  }
+  return choice;
+}
+
+}  // namespace subdiv

@@ -1,0 +1,363 @@
+// `subdiv interpolate MESH --scheme S [--select ...] [--lambda x] -o OUT`: progressive
+// interpolation, so that the limit surface passes through the chosen vertices.
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <tbb/global_control.h>
+
+#include "commands.h"
+#include "framework/interpolation/limit_selection.h"
+#include "framework/interpolation/progressive.h"
+#include "framework/interpolation/shape_two_step.h"
+#include "framework/io/formats.h"
+#include "framework/io/mesh_level.h"
+#include "framework/io/mesh_read.h"
+#include "framework/io/mesh_write.h"
+#include "framework/io/vtk_output.h"
+#include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_sequence.h"
+#include "framework/util/error.h"
+#include "level_output.h"
+#include "progress.h"
+
+namespace subdiv::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct InterpolateArgs {
+  std::string mesh, scheme = "catmull-clark", output, refined;
+  std::string select = "all", lambda;
+  std::vector<std::string> params;
+  std::string boundary = "edges-and-corners";
+  double tolerance = -1;  // < 0: 1e-10 times the bounding-box diagonal
+  int max_iterations = 1000;
+  int levels = 3;
+  int threads = 0;
+  bool verbose = false, quiet = false;
+};
+
+std::string lower_extension(const fs::path& p) {
+  std::string ext = p.extension().string();
+  for (char& c : ext) c = char(std::tolower(c));
+  return ext;
+}
+
+void check_directory(const fs::path& out) {
+  const fs::path dir = out.parent_path();
+  if (!dir.empty() && !fs::is_directory(dir))
+    throw Error(fmt::format("cannot write '{}': directory '{}' does not exist", out.string(), dir.string()));
+}
+
+std::string read_text(const fs::path& file, const std::string& what) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw Error(fmt::format("{}: cannot read '{}'", what, file.string()));
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::optional<double> parse_number(const std::string& text) {
+  double x = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), x);
+  if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return x;
+}
+
+// One lambda per vertex, white space or commas between values, '#' comments.
+std::vector<double> read_lambda_file(const fs::path& file, Index vertex_count) {
+  const std::string text = read_text(file, "--lambda");
+  std::vector<double> values;
+  std::istringstream lines(text);
+  std::string line;
+  for (int number = 1; std::getline(lines, line); ++number) {
+    if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+    for (char& c : line)
+      if (c == ',' || c == '\t' || c == '\r') c = ' ';
+    std::istringstream words(line);
+    std::string word;
+    while (words >> word) {
+      const auto x = parse_number(word);
+      const std::string where = fmt::format("{} line {}", file.string(), number);
+      if (!x) throw Error(fmt::format("{}: '{}' is not a number", where, word));
+      check_shape_lambda(std::span(&*x, 1), 1, fmt::format("{} (vertex {})", where, values.size()));
+      values.push_back(*x);
+    }
+  }
+  if (values.size() != size_t(vertex_count))
+    throw Error(fmt::format("{}: {} lambda values for a mesh of {} vertices; give one per vertex, in vertex order",
+                            file.string(), values.size(), vertex_count));
+  return values;
+}
+
+ParameterOverrides parse_params(const std::vector<std::string>& params) {
+  ParameterOverrides out;
+  for (const auto& p : params) {
+    const auto eq = p.find('=');
+    if (eq == std::string::npos || eq == 0) throw Error(fmt::format("--param '{}' must be written name=value", p));
+    out[p.substr(0, eq)] = p.substr(eq + 1);
+  }
+  return out;
+}
+
+bool has_lambda(const SchemeSequence& seq) {
+  for (const auto& s : seq.schemes)
+    for (const auto& p : s->parameters)
+      if (p.name == "lambda") return true;
+  return false;
+}
+
+std::vector<std::uint8_t> read_selection(const std::string& select, Index vertex_count) {
+  const bool inline_list =
+      select == "all" || select.find_first_not_of("0123456789, ") == std::string::npos;
+  if (inline_list) return parse_vertex_selection(select, vertex_count, "--select");
+  if (!fs::is_regular_file(select))
+    throw Error(fmt::format("--select '{}': no such file, and not 'all' or a comma list of 0-based vertex ids", select));
+  return parse_vertex_selection(read_text(select, "--select"), vertex_count, select);
+}
+
+double bounding_diagonal(const std::vector<double>& p) {
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (size_t i = 0; i < p.size(); ++i) lo[i % 3] = std::min(lo[i % 3], p[i]), hi[i % 3] = std::max(hi[i % 3], p[i]);
+  double d2 = 0;
+  for (int c = 0; c < 3; ++c) d2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+  return std::sqrt(d2);
+}
+
+double distance(const double* a, const double* b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// Per level, the vertex point of each base vertex.
+std::vector<std::vector<Index>> descendants_per_level(const Hierarchy& h) {
+  std::vector<std::vector<Index>> at(h.levels.size());
+  at[0].resize(h.levels[0].vertex_count);
+  for (Index v = 0; v < h.levels[0].vertex_count; ++v) at[0][v] = v;
+  for (size_t l = 0; l < h.origins.size(); ++l) {
+    std::vector<Index> child_of(size_t(h.levels[l].vertex_count), kNone);
+    for (size_t c = 0; c < h.origins[l].kind.size(); ++c)
+      if (h.origins[l].kind[c] == OriginKind::Vertex) child_of[h.origins[l].parent[c]] = Index(c);
+    at[l + 1].resize(at[l].size());
+    for (size_t v = 0; v < at[l].size(); ++v) at[l + 1][v] = at[l][v] == kNone ? kNone : child_of[at[l][v]];
+  }
+  return at;
+}
+
+void write_refined(const fs::path& out, const Hierarchy& h, const std::vector<double>& control,
+                   const std::vector<double>& targets, const std::vector<double>& limit,
+                   const std::vector<std::uint8_t>& moving) {
+  const auto at = descendants_per_level(h);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<MeshData> meshes;
+  meshes.reserve(h.levels.size());
+  std::vector<double> positions = control;
+  for (size_t l = 0; l < h.levels.size(); ++l) {
+    if (l > 0) positions = h.stencils[l - 1].apply(positions, 3);
+    meshes.push_back(mesh_from_level(h.levels[l], positions));
+  }
+  std::vector<OutputLevel> levels;
+  for (size_t l = 0; l < h.levels.size(); ++l) {
+    const Index count = h.levels[l].vertex_count;
+    DataArray base{"base_vertex", 1, std::vector<double>(count, -1.0), true};
+    DataArray role{"interpolated", 1, std::vector<double>(count, -1.0), true};
+    DataArray target_distance{"target_distance", 1, std::vector<double>(count, nan), false};
+    DataArray limit_residual{"limit_residual", 1, std::vector<double>(count, nan), false};
+    const std::vector<double>& p = meshes[l].positions;
+    for (size_t v = 0; v < at[l].size(); ++v) {
+      const Index c = at[l][v];
+      if (c == kNone) continue;
+      base.values[c] = double(v);
+      role.values[c] = moving[v] ? 1.0 : 0.0;
+      target_distance.values[c] = distance(&p[3 * size_t(c)], &targets[3 * v]);
+      limit_residual.values[c] = distance(&limit[3 * v], &targets[3 * v]);
+    }
+    OutputLevel level;
+    level.mesh = &meshes[l];
+    level.level = int(l);
+    level.point_data = {std::move(base), std::move(role), std::move(target_distance), std::move(limit_residual)};
+    levels.push_back(std::move(level));
+  }
+  if (lower_extension(out) == ".vtp") write_vtp(out, levels.back());
+  else write_pvd(out, levels);
+}
+
+void run(const InterpolateArgs& a) {
+  check_output_path(a.output);
+  check_directory(a.output);
+  if (!a.refined.empty()) {
+    const std::string ext = lower_extension(a.refined);
+    if (ext != ".pvd" && ext != ".vtp")
+      throw Error(fmt::format("--refined '{}': use .pvd (every level, for ParaView's time slider) or .vtp (the "
+                              "finest level); they carry the per-point residuals", a.refined));
+    check_directory(a.refined);
+    if (fs::absolute(a.refined) == fs::absolute(a.output))
+      throw Error("--refined and -o name the same file; give two names");
+  }
+  if (a.max_iterations < 0) throw Error("--max-iter must be 0 or more");
+  std::unique_ptr<tbb::global_control> thread_limit;
+  if (a.threads > 0)
+    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
+
+  // --lambda: one number (checked here, passed to the scheme as its parameter) or a file.
+  ParameterOverrides overrides = parse_params(a.params);
+  std::optional<double> lambda_value;
+  if (!a.lambda.empty()) {
+    lambda_value = parse_number(a.lambda);
+    if (lambda_value) check_shape_lambda(std::span(&*lambda_value, 1), 1, "--lambda");
+    else if (!fs::is_regular_file(a.lambda))
+      throw Error(fmt::format("--lambda '{}' is neither a number nor a file of per-vertex values", a.lambda));
+  }
+  SchemeSequence seq = load_scheme_sequence(a.scheme, a.levels, overrides);
+  if (!a.lambda.empty() && !has_lambda(seq))
+    throw Error(fmt::format("--lambda: no scheme in '{}' has a parameter lambda; seed 001's shape control is "
+                            "--scheme catmull-clark-shape:1,catmull-clark", a.scheme));
+  if (lambda_value) {
+    overrides["lambda"] = a.lambda;
+    seq = load_scheme_sequence(a.scheme, a.levels, overrides);
+  }
+
+  const MeshData mesh = read_mesh(a.mesh);
+  if (mesh.face_count() == 0) throw Error(fmt::format("{}: the mesh has no faces", a.mesh));
+  const Level base = level_from_mesh(mesh, a.mesh);
+  const std::vector<std::uint8_t> moving = read_selection(a.select, base.vertex_count);
+  LimitSelectionOptions options;
+  options.features.boundary = a.boundary == "none"    ? BoundaryInterpolation::None
+                              : a.boundary == "edges" ? BoundaryInterpolation::EdgesOnly
+                                                      : BoundaryInterpolation::EdgesAndCorners;
+  if (!a.lambda.empty() && !lambda_value) options.lambda = read_lambda_file(a.lambda, base.vertex_count);
+
+  Progress progress;
+  progress.say("finding the limit masks");
+  LimitChoice choice;
+  try {
+    choice = select_limit(seq, base, options);
+  } catch (const Error& e) {
+    // A one-off first step on its own (seed 001's shape step) has no limit; say how to run it.
+    if (seq.runs.size() == 1 && has_lambda(seq))
+      throw Error(fmt::format("{}\n  '{}' has a shape parameter lambda: if it is a first step (seed 001), give the "
+                              "sequence --scheme {}:1,catmull-clark", e.what(), seq.schemes[0]->name,
+                              seq.schemes[0]->name));
+    throw;
+  }
+  const StencilTable limit = choice.evaluator->limit_stencils(base);
+  const Index moving_count = Index(std::count(moving.begin(), moving.end(), std::uint8_t(1)));
+
+  ProgressiveOptions po;
+  po.tolerance = a.tolerance >= 0 ? a.tolerance : 1e-10 * std::max(bounding_diagonal(mesh.positions), 1e-300);
+  po.max_iterations = a.max_iterations;
+  std::vector<std::string> log;
+  po.observer = [&](const IterationState& s) {
+    progress.say(fmt::format("iteration {}: max residual {:.3e}, rms {:.3e}", s.record.iteration,
+                             s.record.max_residual, s.record.rms_residual));
+    if (a.verbose)
+      log.push_back(fmt::format("{:>9} {:>14.6e} {:>14.6e}", s.record.iteration, s.record.max_residual,
+                                s.record.rms_residual));
+  };
+  const ProgressiveResult r = progressive_interpolation(limit, mesh.positions, moving, po);
+
+  // Theorem 2: where the fixed vertices' limit points end.
+  std::string fixed_note;
+  if (moving_count < base.vertex_count) {
+    double offset = 0, gap = 0;
+    try {
+      const std::vector<double> predicted = predicted_fixed_offsets(limit, mesh.positions, moving);
+      for (Index v = 0; v < base.vertex_count; ++v) {
+        if (moving[v]) continue;
+        double d[3];
+        for (int c = 0; c < 3; ++c) d[c] = mesh.positions[3 * v + c] - r.limit[3 * v + c];
+        offset = std::max(offset, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+        gap = std::max(gap, distance(d, &predicted[3 * size_t(v)]));
+      }
+      fixed_note = fmt::format("fixed vertices: stay in place; their limit points end up to {:.6g} from them "
+                               "(theorem 2, D_Q = D_Q^0 - E M^-1 D_P^0, agrees to {:.1e})", offset, gap);
+    } catch (const Error& e) {
+      fixed_note = fmt::format("fixed vertices: stay in place; theorem 2 not evaluated: {}", e.what());
+    }
+  }
+
+  Hierarchy refined;
+  if (!a.refined.empty()) {
+    progress.say(fmt::format("refining {} levels", seq.total_levels));
+    refined = refine_for_limit(seq, base, options);
+  }
+  progress.say(fmt::format("writing {}", a.output));
+  MeshData out = mesh;
+  out.positions = r.control;
+  write_mesh(a.output, out);
+  if (!a.refined.empty()) {
+    progress.say(fmt::format("writing {}", a.refined));
+    write_refined(a.refined, refined, r.control, mesh.positions, r.limit, moving);
+  }
+  progress.done();
+
+  const IterationRecord& first = r.history.front();
+  const IterationRecord& last = r.history.back();
+  if (!r.converged)
+    fmt::print(stderr, "subdiv: warning: the residual {:.3e} is above the tolerance {:.3e} after {} iterations "
+               "(--max-iter); the control mesh written is the last iterate\n", last.max_residual, po.tolerance,
+               r.iterations);
+  if (a.quiet) return;
+  fmt::print("{}: {} vertices, {} faces; scheme {}\n", a.mesh, base.vertex_count, base.face_count(), a.scheme);
+  fmt::print("limit: {}\n", choice.description);
+  fmt::print("moving: {} of {} vertices ({}); tolerance {:.3e}\n", moving_count, base.vertex_count,
+             moving_count == base.vertex_count ? "global" : "local", po.tolerance);
+  if (a.verbose) {
+    fmt::print("{:>9} {:>14} {:>14}\n", "iteration", "max residual", "rms residual");
+    for (const auto& line : log) fmt::print("{}\n", line);
+  }
+  fmt::print("{} in {} iterations: max residual {:.3e}, rms {:.3e} (initially {:.3e}, {:.3e})\n",
+             r.converged ? "converged" : "stopped", r.iterations, last.max_residual, last.rms_residual,
+             first.max_residual, first.rms_residual);
+  if (!fixed_note.empty()) fmt::print("{}\n", fixed_note);
+  fmt::print("wrote {}", a.output);
+  if (!a.refined.empty()) fmt::print(" and {} ({} levels)", a.refined, seq.total_levels);
+  fmt::print("\n");
+}
+
+}  // namespace
+
+void add_interpolate_command(CLI::App& app) {
+  auto args = std::make_shared<InterpolateArgs>();
+  auto* cmd = app.add_subcommand("interpolate",
+                                 "Move control vertices so that the limit surface passes through them "
+                                 "(progressive interpolation, global or local)");
+  cmd->add_option("mesh", args->mesh, "Input mesh (" + supported_input_formats() + "); its vertices are the targets")
+      ->required();
+  cmd->add_option("-s,--scheme", args->scheme,
+                  "Scheme or sequence whose limit surface interpolates, e.g. catmull-clark, loop, or seed 001's "
+                  "catmull-clark-shape:1,catmull-clark (the last scheme repeats)")
+      ->capture_default_str();
+  cmd->add_option("--select", args->select,
+                  "Vertices to interpolate (the others stay fixed): all, a comma list of 0-based ids, or a file of "
+                  "ids ('#' comments)")
+      ->capture_default_str();
+  cmd->add_option("--lambda", args->lambda,
+                  "Seed 001's shape parameter in (7/20, 1]: one number, or a file with one value per vertex");
+  cmd->add_option("-p,--param", args->params, "Scheme parameter, name=value (repeatable)");
+  cmd->add_option("--tol", args->tolerance,
+                  "Stop when every selected vertex's limit point is this close to it (model units; default 1e-10 "
+                  "times the bounding-box diagonal)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--max-iter", args->max_iterations, "Iteration cap")->check(CLI::NonNegativeNumber)->capture_default_str();
+  cmd->add_option("-o,--output", args->output, "The new control mesh (.obj, .off, .ply, .stl, .vtp)")->required();
+  cmd->add_option("--refined", args->refined,
+                  "Also write the new control mesh refined --levels times (.pvd or .vtp) with per-point arrays "
+                  "target_distance, limit_residual, interpolated and base_vertex");
+  cmd->add_option("-l,--levels", args->levels, "Levels for --refined")->check(CLI::Range(1, 12))->capture_default_str();
+  cmd->add_option("--boundary", args->boundary, "Boundary interpolation: edges-and-corners, edges or none")
+      ->check(CLI::IsMember({"none", "edges", "edges-and-corners"}))
+      ->capture_default_str();
+  cmd->add_option("-j,--threads", args->threads, "Worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
+  cmd->add_flag("-v,--verbose", args->verbose, "Print the residuals of every iteration");
+  cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
+  cmd->footer("Example: subdiv interpolate examples/meshes/cross.obj --scheme catmull-clark-shape:1,catmull-clark "
+              "--lambda 0.5 --select 0,1,2,3 -o cross-interp.obj --refined cross-interp.pvd");
+  cmd->callback([args] { run(*args); });
+}
+
+}  // namespace subdiv::cli
