@@ -19,10 +19,32 @@ int ring_face_index(const Level& L, Index v, Index f) {
   return 0;
 }
 
-Labelling label(const Level& L, CentreKind kind, Index centre, int start, int radius, bool with_signature) {
-  Labelling out;
-  out.label_of.assign(size_t(L.vertex_count), kNone);
-  std::vector<int> entry;
+// Sharpness as signatures see it: infinitely sharp is one value, boundary edges -1.
+double sig_sharpness(float s) { return s >= kInfinitelySharp ? double(kInfinitelySharp) : double(s); }
+
+// Labels around the centre; with `expected`, compares the signature on the fly instead of
+// storing it and returns false at the first difference.
+bool label_into(Labelling& out, const Level& L, CentreKind kind, Index centre, int start, int radius,
+                bool with_signature, const std::vector<double>* expected = nullptr) {
+  if (out.label_of.size() != size_t(L.vertex_count)) out.label_of.assign(size_t(L.vertex_count), kNone);
+  else
+    for (Index v : out.vertices) out.label_of[size_t(v)] = kNone;
+  out.vertices.clear(), out.distance.clear(), out.signature.clear();
+  std::vector<int>& entry = out.entry;
+  entry.clear();
+  size_t checked = 0;
+  bool same = true;
+  struct Sink {
+    std::vector<double>& sig;
+    const std::vector<double>* expected;
+    size_t& checked;
+    bool& same;
+    void push_back(double x) {
+      if (!expected) return sig.push_back(x);
+      if (checked >= expected->size() || (*expected)[checked] != x) same = false;
+      ++checked;
+    }
+  };
   auto add = [&](Index v, int d, int e) {
     out.label_of[size_t(v)] = Index(out.vertices.size());
     out.vertices.push_back(v);
@@ -40,14 +62,14 @@ Labelling label(const Level& L, CentreKind kind, Index centre, int start, int ra
       add(v, 0, ring_face_index(L, v, centre));
     }
   }
-  auto& sig = out.signature;
-  for (size_t q = 0; q < out.vertices.size(); ++q) {
+  Sink sig{out.signature, expected, checked, same};
+  for (size_t q = 0; q < out.vertices.size() && same; ++q) {
     const Index v = out.vertices[q];
     const int d = out.distance[q];
     if (with_signature) {
       sig.push_back(L.valence(v));
       sig.push_back(L.on_boundary(v) ? 1 : 0);
-      sig.push_back(L.vertex_sharp(v));
+      sig.push_back(sig_sharpness(L.vertex_sharp(v)));
     }
     if (d >= radius) continue;
     const auto faces = L.ring_faces(v);
@@ -70,10 +92,16 @@ Labelling label(const Level& L, CentreKind kind, Index centre, int start, int ra
       if (with_signature)
         for (int i = 0; i < k; ++i) {
           const Index e = edges[size_t((c + i) % k)];
-          sig.push_back(L.edge_on_boundary(e) ? -1.0 : L.edge_sharp(e));
+          sig.push_back(L.edge_on_boundary(e) ? -1.0 : sig_sharpness(L.edge_sharp(e)));
         }
     }
   }
+  return same && (!expected || checked == expected->size());
+}
+
+Labelling label(const Level& L, CentreKind kind, Index centre, int start, int radius, bool with_signature) {
+  Labelling out;
+  label_into(out, L, kind, centre, start, radius, with_signature);
   return out;
 }
 
@@ -102,6 +130,15 @@ int Labelling::count_within(int k) const {
 
 Labelling label_neighbourhood(const Level& level, CentreKind kind, Index centre, int start, int radius) {
   return label(level, kind, centre, start, radius, true);
+}
+
+void label_neighbourhood(Labelling& reuse, const Level& level, CentreKind kind, Index centre, int start, int radius) {
+  label_into(reuse, level, kind, centre, start, radius, true);
+}
+
+bool matches_neighbourhood(Labelling& reuse, const Level& level, CentreKind kind, Index centre, int start, int radius,
+                           const std::vector<double>& signature) {
+  return label_into(reuse, level, kind, centre, start, radius, true, &signature);
 }
 
 Patch make_vertex_patch(PatchCells cells, const LocalConfig& c, int R) {
@@ -250,13 +287,45 @@ Extracted extract_neighbourhood(const Level& L, CentreKind kind, Index centre, i
   Extracted out;
   out.local_of.assign(size_t(L.vertex_count), kNone);
   std::vector<char> taken(size_t(L.face_count()), 0);
-  std::vector<Index> faces;
+  std::vector<Index> faces, extra_vertices;
   for (size_t q = 0; q < lab.vertices.size(); ++q) {
     if (lab.distance[q] >= radius) break;
     for (Index f : L.ring_faces(lab.vertices[q]))
       if (!taken[size_t(f)]) taken[size_t(f)] = 1, faces.push_back(f);
   }
   if (kind == CentreKind::Face && !taken[size_t(centre)]) taken[size_t(centre)] = 1, faces.push_back(centre);
+  // A vertex whose taken faces form two fans would be non-manifold: take all its faces,
+  // until no vertex is pinched.
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::vector<Index> corners_now;
+    for (Index f : faces)
+      for (Index v : L.face(f)) corners_now.push_back(v);
+    std::sort(corners_now.begin(), corners_now.end());
+    corners_now.erase(std::unique(corners_now.begin(), corners_now.end()), corners_now.end());
+    for (Index v : corners_now) {
+      const auto ring = L.ring_faces(v);
+      const int F = int(ring.size());
+      int runs = 0, missing = 0;
+      for (int i = 0; i < F; ++i) {
+        const bool in = taken[size_t(ring[size_t(i)])];
+        missing += in ? 0 : 1;
+        const bool prev_in = i > 0 ? bool(taken[size_t(ring[size_t(i - 1)])])
+                                   : (!L.on_boundary(v) && bool(taken[size_t(ring[size_t(F - 1)])]));
+        if (in && !prev_in) ++runs;
+      }
+      if (missing == 0 && !L.on_boundary(v)) runs = 1;
+      if (runs <= 1) continue;
+      for (Index f : ring)
+        if (!taken[size_t(f)]) taken[size_t(f)] = 1, faces.push_back(f), changed = true;
+    }
+  }
+  // Vertices of added faces that the labelling did not reach.
+  for (Index f : faces)
+    for (Index v : L.face(f))
+      if (lab.label_of[size_t(v)] == kNone) extra_vertices.push_back(v);
+  std::sort(extra_vertices.begin(), extra_vertices.end());
+  extra_vertices.erase(std::unique(extra_vertices.begin(), extra_vertices.end()), extra_vertices.end());
   // New vertices in label order, so the centre is vertex 0 (a face centre: its corners first).
   for (size_t q = 0; q < lab.vertices.size(); ++q) {
     const Index v = lab.vertices[q];
@@ -264,6 +333,10 @@ Extracted extract_neighbourhood(const Level& L, CentreKind kind, Index centre, i
     for (Index f : L.ring_faces(v))
       if (taken[size_t(f)]) { used = true; break; }
     if (!used) continue;
+    out.local_of[size_t(v)] = Index(out.original.size());
+    out.original.push_back(v);
+  }
+  for (Index v : extra_vertices) {
     out.local_of[size_t(v)] = Index(out.original.size());
     out.original.push_back(v);
   }

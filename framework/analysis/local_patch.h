@@ -65,6 +65,7 @@ struct Labelling {
   std::vector<int> distance;     // label -> face-ring distance from the centre
   std::vector<Index> label_of;   // vertex -> label, or kNone beyond the radius
   std::vector<double> signature; // the combinatorics and tags within the radius (see .cpp)
+  std::vector<int> entry;        // workspace: per label, the ring face its scan starts with
 
   int count_within(int k) const;  // labels at distance <= k (labels are sorted by distance)
 };
@@ -75,6 +76,14 @@ struct Labelling {
 // vertices at the radius, their valence, boundary flag and sharpness. Two neighbourhoods
 // with equal signatures are the same up to the radius.
 Labelling label_neighbourhood(const Level& level, CentreKind kind, Index centre, int start, int radius);
+// The same into a reused labelling (of the same level): only the entries set by its last
+// use are cleared, so labelling every vertex of a large level costs nothing per vertex
+// beyond its neighbourhood.
+void label_neighbourhood(Labelling& reuse, const Level& level, CentreKind kind, Index centre, int start, int radius);
+// Labels into `reuse` and compares with a signature as it goes (stopping at the first
+// difference; the labelling is then incomplete). True when the neighbourhood has it.
+bool matches_neighbourhood(Labelling& reuse, const Level& level, CentreKind kind, Index centre, int start, int radius,
+                           const std::vector<double>& signature);
 
 // Where the labelling of a vertex starts by convention: ring edge 0 on a boundary (the
 // boundary edge), the first infinitely sharp edge on a crease, dart or corner, else 0.

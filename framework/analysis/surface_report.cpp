@@ -210,4 +210,34 @@ std::string spectrum_svg(const std::vector<SurfaceAnalysis>& analyses, const std
   return s;
 }
 
+std::string eigenvalue_svg(const std::vector<std::complex<double>>& eigenvalues, const std::string& title) {
+  const double W = 520, H = 360, left = 60, right = 20, top = 40, bottom = 50;
+  const double pw = W - left - right, ph = H - top - bottom;
+  const int count = std::max<int>(2, int(eigenvalues.size()));
+  auto X = [&](double i) { return left + pw * (i + 0.5) / double(count); };
+  auto Y = [&](double v) { return top + ph * (1.0 - std::clamp(v, 0.0, 1.05) / 1.05); };
+  std::string s = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" viewBox=\"0 0 {} {}\" "
+      "font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
+      W, H, W, H);
+  s += fmt::format("<text x=\"{}\" y=\"22\" font-size=\"15\">{}</text>\n", left, xml_escape(title));
+  for (int t = 0; t <= 5; ++t) {
+    const double v = 0.2 * t, y = Y(v);
+    s += fmt::format("<line x1=\"{}\" y1=\"{:.1f}\" x2=\"{}\" y2=\"{:.1f}\" stroke=\"#ddd\"/>\n", left, y, left + pw, y);
+    s += fmt::format("<text x=\"{}\" y=\"{:.1f}\" text-anchor=\"end\">{:.1f}</text>\n", left - 6, y + 4, v);
+  }
+  s += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"black\"/>\n", left, top, pw, ph);
+  s += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">index i</text>\n", left + pw / 2, H - 12);
+  s += fmt::format("<text transform=\"translate(16,{}) rotate(-90)\" text-anchor=\"middle\">|lambda_i|</text>\n", top + ph / 2);
+  for (size_t i = 0; i < eigenvalues.size(); ++i) {
+    const double v = std::abs(eigenvalues[i]);
+    s += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#1f77b4\" stroke-width=\"6\"/>"
+                     "<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>"
+                     "<title>lambda_{} = {}</title>\n",
+                     X(double(i)), Y(0), X(double(i)), Y(v), X(double(i)), top + ph + 16, i, i, complex_text(eigenvalues[i]));
+  }
+  s += "</svg>\n";
+  return s;
+}
+
 }  // namespace subdiv

@@ -20,4 +20,7 @@ nlohmann::json surface_report_json(const std::vector<SurfaceAnalysis>& analyses)
 // dots (lambda_1 = lambda_2 highlighted, lambda_1^2 as a line), 0 <= |lambda| <= 1.
 std::string spectrum_svg(const std::vector<SurfaceAnalysis>& analyses, const std::string& title, int shown = 8);
 
+// A plot of one list of eigenvalues (modulus against index), for curve schemes.
+std::string eigenvalue_svg(const std::vector<std::complex<double>>& eigenvalues, const std::string& title);
+
 }  // namespace subdiv

@@ -7,5 +7,6 @@ namespace subdiv::cli {
 void add_refine_command(CLI::App& app);
 void add_schemes_command(CLI::App& app);
 void add_validate_command(CLI::App& app);
+void add_analyze_command(CLI::App& app);
 
 }  // namespace subdiv::cli

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   subdiv::cli::add_refine_command(app);
   subdiv::cli::add_schemes_command(app);
   subdiv::cli::add_validate_command(app);
+  subdiv::cli::add_analyze_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
