@@ -109,16 +109,25 @@ Limit approximate(const Level& L, std::span<const double> P, CentreKind kind, In
 
 Limit apply_mask(const LimitMask& m, const Labelling& lab, std::span<const double> P) {
   Limit out;
-  Vec3 tu{0, 0, 0}, tv{0, 0, 0};
   for (size_t t = 0; t < m.position.size(); ++t) {
     const Vec3 q = point(P, lab.vertices[t]);
-    for (int i = 0; i < 3; ++i) {
-      out.position[size_t(i)] += m.position[t] * q[size_t(i)];
-      if (m.has_tangents) tu[size_t(i)] += m.tangent_u[t] * q[size_t(i)], tv[size_t(i)] += m.tangent_v[t] * q[size_t(i)];
-    }
+    for (int i = 0; i < 3; ++i) out.position[size_t(i)] += m.position[t] * q[size_t(i)];
   }
   out.exact = true;
-  if (m.has_tangents) out.normal = normalised(cross(tu, tv));
+  const size_t k = m.directions.size();
+  if (k < 2) return out;
+  std::vector<Vec3> d(k, Vec3{0, 0, 0});
+  for (size_t j = 0; j < k; ++j)
+    for (size_t t = 0; t < m.directions[j].size(); ++t) {
+      const Vec3 q = point(P, lab.vertices[t]);
+      for (int i = 0; i < 3; ++i) d[j][size_t(i)] += m.directions[j][t] * q[size_t(i)];
+    }
+  Vec3 n{0, 0, 0};
+  for (size_t j = 0; j + (m.cyclic ? 0 : 1) < k; ++j) {
+    const Vec3 c = cross(d[j], d[(j + 1) % k]);
+    n[0] += c[0], n[1] += c[1], n[2] += c[2];
+  }
+  out.normal = normalised(n);
   return out;
 }
 
@@ -172,7 +181,8 @@ struct LimitEvaluator::Impl {
 
   // The ring the masks reach (they are trimmed to whole rings).
   static int support_ring(const SurfaceAnalysis& a, const LimitMask& m) {
-    const size_t size = std::max({m.position.size(), m.tangent_u.size(), m.tangent_v.size()});
+    size_t size = m.position.size();
+    for (const auto& d : m.directions) size = std::max(size, d.size());
     return size ? a.distance[size - 1] : 0;
   }
 
@@ -182,8 +192,8 @@ struct LimitEvaluator::Impl {
       return;
     }
     m.position = a.limit_mask;
-    m.has_tangents = a.has_tangent_masks;
-    if (m.has_tangents) m.tangent_u = a.tangent_u, m.tangent_v = a.tangent_v;
+    m.directions = a.direction_masks;
+    m.cyclic = a.directions_cyclic;
     m.ok = true;
   }
 
@@ -237,35 +247,42 @@ struct LimitEvaluator::Impl {
         return m;
       }
       const StencilTable& t = h.stencils[0];
-      std::map<Index, std::array<double, 3>> pulled;
-      for (size_t i = 0; i < face.position.size(); ++i) {
-        const Index cv = a.label_vertices[i];
-        for (Index e = t.offsets[size_t(cv)]; e < t.offsets[size_t(cv) + 1]; ++e) {
-          auto& w = pulled[t.indices[size_t(e)]];
-          w[0] += face.position[i] * t.weights[size_t(e)];
-          if (face.has_tangents) {
-            w[1] += face.tangent_u[i] * t.weights[size_t(e)];
-            w[2] += face.tangent_v[i] * t.weights[size_t(e)];
+      const size_t k = face.directions.size();
+      // Per parent vertex: weight in the position mask, then in each direction mask.
+      std::map<Index, std::vector<double>> pulled;
+      auto pull = [&](size_t slot, const std::vector<double>& mask) {
+        for (size_t i = 0; i < mask.size(); ++i) {
+          if (mask[i] == 0.0) continue;
+          const Index cv = a.label_vertices[i];
+          for (Index e = t.offsets[size_t(cv)]; e < t.offsets[size_t(cv) + 1]; ++e) {
+            auto& w = pulled[t.indices[size_t(e)]];
+            w.resize(k + 1, 0.0);
+            w[slot] += mask[i] * t.weights[size_t(e)];
           }
         }
-      }
+      };
+      pull(0, face.position);
+      for (size_t j = 0; j < k; ++j) pull(j + 1, face.directions[j]);
       Labelling lab = label_neighbourhood(p.level, CentreKind::Vertex, p.centre, p.start, a.ring + 3);
       size_t size = 0;
       for (const auto& [v, w] : pulled) {
         const Index l = lab.label_of[size_t(v)];
+        bool nonzero = false;
+        for (double x : w) nonzero |= x != 0.0;
+        if (!nonzero) continue;
         if (l == kNone) throw Error("a V-face mask reaches beyond the labelled neighbourhood");
-        if (w[0] != 0.0 || w[1] != 0.0 || w[2] != 0.0) size = std::max(size, size_t(l) + 1);
+        size = std::max(size, size_t(l) + 1);
       }
       m.radius = (size ? lab.distance[size - 1] : 0) + 1;
       lab = label_neighbourhood(p.level, CentreKind::Vertex, p.centre, p.start, m.radius);
       m.position.assign(size, 0.0);
-      m.has_tangents = face.has_tangents;
-      if (m.has_tangents) m.tangent_u.assign(size, 0.0), m.tangent_v.assign(size, 0.0);
+      m.directions.assign(k, std::vector<double>(size, 0.0));
+      m.cyclic = true;
       for (const auto& [v, w] : pulled) {
-        const size_t l = size_t(lab.label_of[size_t(v)]);
-        if (l >= size) continue;
-        m.position[l] = w[0];
-        if (m.has_tangents) m.tangent_u[l] = w[1], m.tangent_v[l] = w[2];
+        const Index l = lab.label_of[size_t(v)];
+        if (l == kNone || size_t(l) >= size) continue;
+        m.position[size_t(l)] = w[0];
+        for (size_t j = 0; j < k; ++j) m.directions[j][size_t(l)] = w[j + 1];
       }
       m.signature = lab.signature;
       m.ok = true;
@@ -317,10 +334,11 @@ struct LimitEvaluator::Impl {
     if (!m.ok) return false;
     if (!matches_neighbourhood(lab, L, kind, c, start, m.radius, m.signature)) return false;
     out = apply_mask(m, lab, P);
-    if (!m.has_tangents) {
+    if (m.directions.size() < 2) {
       out.normal = approximate(L, P, kind, c, "").normal;
       out.exact = false;
-      out.reason = "no tangent masks (no real subdominant pair): the normal is the mean face normal";
+      out.reason = "no tangent plane (the subdominant eigenvalues are not real, semi-simple and dominant): the "
+                   "position is exact, the normal is the mean face normal";
     }
     return true;
   }
@@ -426,6 +444,25 @@ struct LimitEvaluator::Impl {
     if (try_mask(L, P, kind, c, step, lab, out, &m)) return out;
     if (kind == CentreKind::Vertex && L.valence(c) == 0)
       return approximate(L, P, kind, c, "isolated vertex: no faces");
+    if (kind == CentreKind::Face) {
+      // A face on the boundary stays on it in every dual step: its limit lies on the
+      // boundary curve, at the middle of its boundary edge for Chaikin curves.
+      std::vector<Index> boundary_edges;
+      for (Index e : L.face_edge_list(c))
+        if (L.edge_on_boundary(e)) boundary_edges.push_back(e);
+      if (!boundary_edges.empty()) {
+        Limit b = approximate(L, P, kind, c,
+                              "dual scheme, face on the boundary: the middle of its boundary edge (the limit for a "
+                              "Chaikin boundary curve), normal of the face");
+        b.position = {0, 0, 0};
+        for (Index e : boundary_edges)
+          for (int end = 0; end < 2; ++end) {
+            const Vec3 q = point(P, L.edge_vertices[size_t(2 * e + end)]);
+            for (int i = 0; i < 3; ++i) b.position[size_t(i)] += q[size_t(i)] / double(2 * boundary_edges.size());
+          }
+        return b;
+      }
+    }
     if (depth >= options.max_steps)
       return approximate(L, P, kind, c,
                          fmt::format("no analysable neighbourhood after {} refinements{}", depth,

@@ -47,8 +47,10 @@ struct LimitMask {
   int radius = 0;                   // labelling radius of the signature
   std::vector<double> signature;
   std::vector<double> position;     // sums to 1
-  bool has_tangents = false;
-  std::vector<double> tangent_u, tangent_v;
+  // Directions towards the ring neighbours (SurfaceAnalysis::direction_masks); the normal
+  // is the sum of the sector normals. Empty: no tangent plane was found.
+  std::vector<std::vector<double>> directions;
+  bool cyclic = true;
 };
 
 struct LimitResult {

@@ -415,6 +415,64 @@ void finish_verdict(SurfaceAnalysis& r) {
   }
 }
 
+// Direction masks: the subdominant eigenspace (lambda_1's cluster, and lambda_2's when
+// lambda_1 is simple, semi-simple, real, positive, strictly above the rest) written as, for
+// each ring neighbour q of the centre in ring order (each corner of a face centre), the
+// mask d_q = sum_k r_k(q) t_k, with t_k the left eigenvectors dual to the right ones r_k.
+// d_q . P is the direction in which q's descendants approach the limit point: the sector
+// normals d_q x d_{q+1} add up to the limit normal, also at creases and corners, where the
+// eigenspace has more than two dimensions and each sector has its own tangent plane.
+void add_direction_masks(const Matrix& s, const std::vector<Complex>& ev, const AnalysisRun& cx, SurfaceAnalysis& out) {
+  const Eigen::Index n = s.rows();
+  Matrix lb(n, 0), rb(n, 0);
+  size_t i = 1;
+  double last = 0;
+  while (lb.cols() < 2 && i < ev.size()) {
+    size_t j = i + 1;
+    while (j < ev.size() && std::abs(ev[j] - ev[i]) <= kClusterTolerance * std::max(1.0, std::abs(ev[i]))) ++j;
+    Complex z = 0;
+    for (size_t k = i; k < j; ++k) z += ev[k];
+    z /= double(j - i);
+    if (!is_real(z) || z.real() <= 0) return;
+    const Matrix a = left_null(s, z.real()), b = right_null(s, z.real());
+    if (a.cols() != Eigen::Index(j - i) || b.cols() != Eigen::Index(j - i)) return;  // defective
+    Matrix l2(n, lb.cols() + a.cols()), r2(n, rb.cols() + b.cols());
+    l2 << lb, a;
+    r2 << rb, b;
+    lb = l2, rb = r2;
+    last = z.real();
+    i = j;
+  }
+  if (lb.cols() < 2) return;
+  if (i < ev.size() && std::abs(ev[i]) >= last * (1 - kClusterTolerance)) return;
+  const Matrix g = lb.transpose() * rb;
+  Eigen::FullPivLU<Matrix> lu(g);
+  if (!lu.isInvertible()) return;
+  const Matrix t = lu.inverse() * lb.transpose();  // rows dual to the columns of rb
+  const Patch& p = cx.patch;
+  std::vector<Index> ring;
+  if (p.centre_kind == CentreKind::Vertex) {
+    const auto edges = p.level.ring_edges(p.centre);
+    for (size_t k = 0; k < edges.size(); ++k)
+      ring.push_back(p.level.other_end(edges[(size_t(p.start) + k) % edges.size()], p.centre));
+  } else {
+    const auto corners = p.level.face(p.centre);
+    for (size_t k = 0; k < corners.size(); ++k) ring.push_back(corners[(size_t(p.start) + k) % corners.size()]);
+  }
+  out.direction_masks.clear();
+  for (Index q : ring) {
+    const Index label = cx.parent.label_of[size_t(q)];
+    if (label == kNone || label >= n) {
+      out.direction_masks.clear();
+      return;
+    }
+    const Vector d = t.transpose() * rb.row(label).transpose();
+    out.direction_masks.emplace_back(d.data(), d.data() + d.size());
+  }
+  out.directions_cyclic = p.centre_kind == CentreKind::Face || !p.level.on_boundary(p.centre);
+  out.tangent_dimension = int(lb.cols());
+}
+
 void analyse(AnalysisRun& cx, SurfaceAnalysis& out) {
   const Scheme& scheme = cx.scheme;
   const Patch& p = cx.patch;
@@ -523,6 +581,7 @@ void analyse(AnalysisRun& cx, SurfaceAnalysis& out) {
     out.limit_mask.assign(l.data(), l.data() + l.size());
     out.has_limit_mask = true;
   }
+  add_direction_masks(s, ev, cx, out);
   // Tangent masks: left eigenvectors of lambda_1, lambda_2, normalised against the right
   // eigenvectors (the characteristic map) so that the first neighbour sits at (1, 0) and the
   // next at (cos phi, sin phi), phi being their angle in the patch.
@@ -584,6 +643,7 @@ void trim_masks(SurfaceAnalysis& r) {
   int used = 0;
   if (r.has_limit_mask) used = std::max(used, extent(r.limit_mask));
   if (r.has_tangent_masks) used = std::max({used, extent(r.tangent_u), extent(r.tangent_v)});
+  for (const auto& d : r.direction_masks) used = std::max(used, extent(d));
   if (used == 0) return;
   const int d = r.distance[size_t(used - 1)];
   int size = 0;
@@ -597,6 +657,7 @@ void trim_masks(SurfaceAnalysis& r) {
       if (std::abs(w) <= 1e-15 * largest) w = 0.0;
   };
   cut(r.limit_mask), cut(r.tangent_u), cut(r.tangent_v);
+  for (auto& d : r.direction_masks) cut(d);
 }
 
 }  // namespace

@@ -87,6 +87,15 @@ struct SurfaceAnalysis {
   bool has_limit_mask = false, has_tangent_masks = false;
   std::vector<double> limit_mask;          // sums to 1
   std::vector<double> tangent_u, tangent_v;  // the limit normal is (t_u . P) x (t_v . P)
+  // For each ring neighbour of the centre in ring order from the start (each corner of a
+  // face centre): the direction its descendants approach the limit point from, d . P. The
+  // limit normal is the sum of d_q x d_{q+1} over the sectors (cyclic unless the centre is
+  // on a boundary); at creases and corners each sector has its own tangent plane and the sum
+  // averages them. Empty when the subdominant eigenspace is not real, semi-simple and
+  // strictly dominant.
+  std::vector<std::vector<double>> direction_masks;
+  bool directions_cyclic = true;
+  int tangent_dimension = 0;  // dimension of that eigenspace: 2 where smooth, 3 on a crease...
 
   std::vector<std::string> summary_lines() const;
   nlohmann::json to_json() const;
