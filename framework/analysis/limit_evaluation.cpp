@@ -32,8 +32,9 @@ Vec3 point(std::span<const double> p, Index v) { return {p[size_t(3 * v)], p[siz
 
 struct Limit {
   Vec3 position{}, normal{};
-  bool exact = false;
-  std::string reason;  // when not exact
+  bool exact = false;         // the position (and, unless normal_exact is false, the normal)
+  bool normal_exact = true;   // false: the normal is estimated
+  std::string reason;         // when not exact
 };
 
 Index child_vertex(const ChildOrigins& o, Index v) {
@@ -336,9 +337,9 @@ struct LimitEvaluator::Impl {
     out = apply_mask(m, lab, P);
     if (m.directions.size() < 2) {
       out.normal = approximate(L, P, kind, c, "").normal;
-      out.exact = false;
-      out.reason = "no tangent plane (the subdominant eigenvalues are not real, semi-simple and dominant): the "
-                   "position is exact, the normal is the mean face normal";
+      out.normal_exact = false;
+      out.reason = "no tangent plane from the eigenvectors (the subdominant eigenvalues are not real, semi-simple "
+                   "and dominant): the normal is estimated from the limit points around the vertex";
     }
     return true;
   }
@@ -520,6 +521,7 @@ LimitResult LimitEvaluator::evaluate(const Level& level, std::span<const double>
   r.positions.assign(size_t(3 * V), 0.0);
   r.normals.assign(size_t(3 * V), 0.0);
   r.exact.assign(size_t(V), 0);
+  r.normal_exact.assign(size_t(V), 0);
   for (Index v = 0; v < V; ++v) {
     const Limit& l = limits[size_t(v)];
     for (int i = 0; i < 3; ++i) {
@@ -527,11 +529,30 @@ LimitResult LimitEvaluator::evaluate(const Level& level, std::span<const double>
       r.normals[size_t(3 * v + i)] = l.normal[size_t(i)];
     }
     r.exact[size_t(v)] = l.exact ? 1 : 0;
-    if (!l.exact) {
-      ++r.approximate;
-      I.note(l.reason);
-    }
+    r.normal_exact[size_t(v)] = l.exact && l.normal_exact ? 1 : 0;
+    if (!l.exact) ++r.approximate;
+    if (l.exact && !l.normal_exact) ++r.approximate_normals;
+    if (!l.exact || !l.normal_exact) I.note(l.reason);
     r.refined_vertices += refined[size_t(v)];
+  }
+  // Estimated normals: from the limit points of the vertex and its neighbours, sector by
+  // sector, which is closer to the limit surface than the control points.
+  for (Index v = 0; v < V; ++v) {
+    if (r.normal_exact[size_t(v)] || level.incident_face_count(v) == 0) continue;
+    Vec3 n{0, 0, 0};
+    const Vec3 c = point(r.positions, v);
+    const auto faces = level.ring_faces(v);
+    for (size_t i = 0; i < faces.size(); ++i) {
+      const auto corners = level.face(faces[i]);
+      const int k = int(corners.size());
+      const int at = level.vertex_face_corner[size_t(level.vertex_face_offsets[v]) + i];
+      const Vec3 a = point(r.positions, corners[size_t((at + 1) % k)]), b = point(r.positions, corners[size_t((at + k - 1) % k)]);
+      const Vec3 x = cross({a[0] - c[0], a[1] - c[1], a[2] - c[2]}, {b[0] - c[0], b[1] - c[1], b[2] - c[2]});
+      n[0] += x[0], n[1] += x[1], n[2] += x[2];
+    }
+    const Vec3 u = normalised(n);
+    if (u[0] != 0 || u[1] != 0 || u[2] != 0)
+      for (int i = 0; i < 3; ++i) r.normals[size_t(3 * v + i)] = u[size_t(i)];
   }
   r.configurations = int(I.cache.size());
   r.approximate_reasons = I.reasons;

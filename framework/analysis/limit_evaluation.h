@@ -56,10 +56,12 @@ struct LimitMask {
 struct LimitResult {
   std::vector<double> positions;  // xyz per vertex
   std::vector<double> normals;    // unit xyz per vertex (0 where none exists)
-  std::vector<std::uint8_t> exact;  // 1: from exact masks; 0: approximated (see approximate_reasons)
+  std::vector<std::uint8_t> exact;         // 1: the position is exact; 0: approximated
+  std::vector<std::uint8_t> normal_exact;  // 1: the normal comes from exact tangent masks
   int configurations = 0;         // masks computed
   int refined_vertices = 0;       // vertices whose neighbourhood was refined first
-  int approximate = 0;
+  int approximate = 0;            // positions approximated
+  int approximate_normals = 0;    // exact positions whose normal is estimated from nearby limit points
   std::vector<std::string> approximate_reasons;  // distinct reasons, for messages
 };
 

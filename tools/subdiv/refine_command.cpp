@@ -94,11 +94,15 @@ void run(const RefineArgs& a) {
     const LimitResult limit = limit_positions(*seq.schemes.back(), h.levels.back(), positions.back(), lo);
     positions.back() = limit.positions;
     limit_data.push_back(DataArray{"normal", 3, limit.normals, false});
-    std::vector<double> exact(limit.exact.begin(), limit.exact.end());
-    limit_data.push_back(DataArray{"limit_exact", 1, std::move(exact), true});
-    if (limit.approximate > 0 && !a.quiet)
-      fmt::print(stderr, "subdiv: note: --limit approximates {} of {} vertices (point data limit_exact = 0): {}\n",
-                 limit.approximate, limit.exact.size(), fmt::join(limit.approximate_reasons, "; "));
+    limit_data.push_back(DataArray{"limit_exact", 1, std::vector<double>(limit.exact.begin(), limit.exact.end()), true});
+    limit_data.push_back(
+        DataArray{"normal_exact", 1, std::vector<double>(limit.normal_exact.begin(), limit.normal_exact.end()), true});
+    if ((limit.approximate > 0 || limit.approximate_normals > 0) && !a.quiet)
+      fmt::print(stderr,
+                 "subdiv: note: --limit approximates {} position(s) and {} more normal(s) of {} vertices (point data "
+                 "limit_exact, normal_exact): {}\n",
+                 limit.approximate, limit.approximate_normals, limit.exact.size(),
+                 fmt::join(limit.approximate_reasons, "; "));
   }
   progress.say(fmt::format("writing {}", a.output));
   write_levels(a.output, h, positions, limit_data);
