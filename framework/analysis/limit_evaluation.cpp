@@ -464,6 +464,10 @@ struct LimitEvaluator::Impl {
         return b;
       }
     }
+    // A vertex scheme keeps the configuration from level to level: if its analysis failed,
+    // refining will not help.
+    if (centre == CentreKind::Vertex && kind == CentreKind::Vertex && m && !m->ok)
+      return approximate(L, P, kind, c, "no limit mask: " + m->error);
     if (depth >= options.max_steps)
       return approximate(L, P, kind, c,
                          fmt::format("no analysable neighbourhood after {} refinements{}", depth,

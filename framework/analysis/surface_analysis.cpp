@@ -328,10 +328,16 @@ void check_characteristic_map(const AnalysisRun& cx, int K, const Matrix& rp, do
     total += std::abs(a);
     min_area = std::min(min_area, a);
   }
+  // Regular: the Jacobian keeps one sign, so every face has the orientation of the majority
+  // (a map may mirror the patch; the normalisation fixes only two points).
   const double mean = kept.empty() ? 1.0 : total / double(kept.size());
-  for (double a : areas)
-    if (a <= 1e-9 * mean) ++cm.folded;
-  cm.min_area_ratio = kept.empty() ? 0.0 : min_area / mean;
+  int positive = 0, negative = 0;
+  for (double a : areas) positive += a > 1e-9 * mean, negative += a < -1e-9 * mean;
+  const int sign = positive >= negative ? 1 : -1;
+  cm.folded = int(kept.size()) - (sign > 0 ? positive : negative);
+  double max_area = -1e300;
+  for (double a : areas) max_area = std::max(max_area, a);
+  cm.min_area_ratio = kept.empty() ? 0.0 : (sign > 0 ? min_area : -max_area) / mean;
   cm.regular = !kept.empty() && cm.folded == 0;
   // Winding of the region's boundary around the limit point (the origin).
   if (!out.config.boundary) {
@@ -357,7 +363,7 @@ void check_characteristic_map(const AnalysisRun& cx, int K, const Matrix& rp, do
     }
     cm.winding = int(std::lround(turns / (2 * kPi)));
     cm.winding_checked = true;
-    cm.injective = cm.regular && cm.winding == 1;
+    cm.injective = cm.regular && std::abs(cm.winding) == 1;
   } else {
     cm.injective = cm.regular;
     cm.note += cm.note.empty() ? "" : "; ";
@@ -400,6 +406,9 @@ void finish_verdict(SurfaceAnalysis& r) {
                             number(r.lambda1), r.subdominant_multiplicity);
   else if (!r.subdominant_dominates) r.verdict = fmt::format("fails: |lambda_3| = {} is not below lambda_2 = {}", number(r.lambda3), number(r.lambda2));
   else if (!r.subdominant_semisimple) r.verdict = "fails: lambda_1 = lambda_2 has one eigenvector only (Jordan block)";
+  else if (r.boundary_collapses)
+    r.verdict = "fails: the boundary's tangent is not in the subdominant pair (interior eigenvalues exceed the boundary "
+                "curve's 1/2; the characteristic map collapses the boundary)";
   else if (!r.characteristic_map.computed) {
     r.c1 = false;
     r.verdict = fmt::format("eigenvalue conditions hold at {}; characteristic map not checked{}", where,
@@ -490,6 +499,12 @@ void analyse(AnalysisRun& cx, SurfaceAnalysis& out) {
     xy = level_positions(h, p.xy, 2);
     cc = follow_centre(h, xy, p.centre_kind, p.centre, 2);
     if (cc == kNone) throw Error("the centre has no counterpart after refinement (is this the right kind of centre for the split?)");
+    if (p.centre_kind == CentreKind::Vertex &&
+        (h.levels.back().valence(cc) != p.level.valence(p.centre) ||
+         h.levels.back().on_boundary(cc) != p.level.on_boundary(p.centre)))
+      throw Error(fmt::format("after {} step(s) the centre has valence {} where it had {}: the split does not "
+                              "reproduce the neighbourhood, so there is no local subdivision matrix",
+                              cx.steps, h.levels.back().valence(cc), p.level.valence(p.centre)));
     double offset = 0;
     child_start = aligned_start(parent_axis, h.levels.back(), xy.back(), p.centre_kind, cc, &offset);
     const int count = p.centre_kind == CentreKind::Vertex ? p.level.valence(p.centre) : p.level.face_size(p.centre);
@@ -609,6 +624,16 @@ void analyse(AnalysisRun& cx, SurfaceAnalysis& out) {
     second = corners[size_t((p.start + 1) % int(corners.size()))];
   }
   const Index la = cx.parent.label_of[size_t(first_neighbour)], lbl = cx.parent.label_of[size_t(second)];
+  // On a boundary the boundary curve refines on its own: eigenvectors of the interior's
+  // eigenvalues vanish on it. If the subdominant pair has no component on the boundary
+  // neighbours, the characteristic map collapses the boundary and there is no C1 limit there.
+  if (p.centre_kind == CentreKind::Vertex && p.level.on_boundary(p.centre)) {
+    const auto ring = p.level.ring_edges(p.centre);
+    const Index last = cx.parent.label_of[size_t(p.level.other_end(ring.back(), p.centre))];
+    double largest = 0;
+    for (Eigen::Index i = 0; i < rb.rows(); ++i) largest = std::max(largest, rb.row(i).norm());
+    out.boundary_collapses = rb.row(la).norm() <= 1e-9 * largest && rb.row(last).norm() <= 1e-9 * largest;
+  }
   double cxp = parent_axis.cx, cyp = parent_axis.cy;
   double phi = std::atan2(p.xy[size_t(2 * second + 1)] - cyp, p.xy[size_t(2 * second)] - cxp) -
                std::atan2(parent_axis.ay, parent_axis.ax);

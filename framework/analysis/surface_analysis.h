@@ -76,6 +76,7 @@ struct SurfaceAnalysis {
   bool subdominant_semisimple = false; // two independent eigenvectors
   bool subdominant_dominates = false;  // |lambda_3| < lambda_2
   int subdominant_multiplicity = 0;    // of lambda_1 (1 when lambda_1 != lambda_2)
+  bool boundary_collapses = false;     // boundary centre: the subdominant pair misses the boundary curve
   double lambda1 = 0, lambda2 = 0, lambda3 = 0;  // lambda_1, lambda_2 (real parts), |lambda_3|
   std::string curvature;               // seed 000 §3 condition, as text
 

@@ -125,7 +125,10 @@ void run_surface(const AnalyzeArgs& a) {
   options.characteristic_map = true;
   const CentreKind centre = analysis_centre(*scheme);
   std::vector<SurfaceAnalysis> interior, boundary;
-  for (int n : parse_valences(a.valence, 3)) {
+  // Valence 2 exists on boundaries only.
+  const std::vector<int> valences = parse_valences(a.valence, a.boundary ? 2 : 3);
+  for (int n : valences) {
+    if (n < 3) continue;
     LocalConfig c;
     c.centre = centre;
     c.valence = n;
@@ -138,7 +141,7 @@ void run_surface(const AnalyzeArgs& a) {
                                         : "a vertex of valence n");
   fmt::print("\n{}", surface_table(interior));
   if (a.boundary && centre == CentreKind::Vertex) {
-    for (int n : parse_valences(a.valence, 2)) {
+    for (int n : valences) {
       LocalConfig c;
       c.valence = n, c.boundary = true, c.first_step = a.level;
       boundary.push_back(analyse_configuration(*scheme, c, options));
