@@ -204,7 +204,7 @@ bool ties(double a, double b, double tol) { return std::abs(a - b) <= tol * std:
 
 std::string number(double x) { return fmt::format("{:.6g}", std::abs(x) < 5e-13 ? 0.0 : x); }
 std::string complex_text(Complex z) {
-  if (std::abs(z.imag()) < 1e-9) return number(z.real());
+  if (std::abs(z.imag()) < 1e-7 * std::max(1.0, std::abs(z))) return number(z.real());
   return fmt::format("{}{}{}i", number(z.real()), z.imag() < 0 ? "-" : "+", number(std::abs(z.imag())));
 }
 
@@ -219,9 +219,9 @@ std::string curvature_text(const std::vector<Complex>& ev, double l1) {
     if (mult == 3 && next < sq)
       return "lambda_1^2 = lambda_3 = lambda_4 = lambda_5 > |lambda_6|: curvature bounded, can be continuous "
              "(seed 000 §3 case 3: C2 possible)";
-    return fmt::format("lambda_1^2 = |lambda_3| ({} eigenvalues of that modulus): curvature bounded but may "
+    return fmt::format("lambda_1^2 = |lambda_3| ({} eigenvalue{} of that modulus): curvature bounded but may "
                        "split (seed 000 §3 case 2)",
-                       mult);
+                       mult, mult == 1 ? "" : "s");
   }
   if (sq < l3) return "lambda_1^2 < |lambda_3|: curvature unbounded (seed 000 §3 case 1: C1 at best)";
   return "lambda_1^2 > |lambda_3|: curvature tends to zero (seed 000 §3 case 4: a flat spot)";

@@ -11,12 +11,12 @@ namespace {
 std::string number(double x) { return fmt::format("{:.6g}", std::abs(x) < 5e-13 ? 0.0 : x); }
 
 std::string complex_text(std::complex<double> z) {
-  if (std::abs(z.imag()) < 1e-9) return number(z.real());
+  if (std::abs(z.imag()) < 1e-7 * std::max(1.0, std::abs(z))) return number(z.real());
   return fmt::format("{}{}{}i", number(z.real()), z.imag() < 0 ? "-" : "+", number(std::abs(z.imag())));
 }
 
 nlohmann::json complex_json(std::complex<double> z) {
-  if (std::abs(z.imag()) < 1e-9) return z.real();
+  if (std::abs(z.imag()) < 1e-7 * std::max(1.0, std::abs(z))) return z.real();
   return nlohmann::json{{"re", z.real()}, {"im", z.imag()}};
 }
 

@@ -57,6 +57,12 @@ TEST_CASE("sqrt3: spectrum of R S^2 on the 1-ring is the seed's, n = 3..12") {
     // The seed's choice of alpha_n: (2 - 3 alpha)^2 / 9 = lambda^2.
     CHECK((2 - 3 * alpha) * (2 - 3 * alpha) / 9 == doctest::Approx(lambda * lambda).epsilon(1e-12));
     CHECK(a.c1);
+    // The limit point, from the seed's S: the vertex and the mean of its ring map by
+    // [[1 - alpha, alpha], [1/3, 2/3]] (new ring points (P + P_i + P_{i+1})/3), whose left
+    // eigenvector of 1 gives the centre the weight 1/(1 + 3 alpha_n).
+    REQUIRE(a.has_limit_mask);
+    CHECK(std::abs(a.limit_mask[0] - 1 / (1 + 3 * alpha)) < 1e-12);
+    for (int j = 1; j <= n; ++j) CHECK(std::abs(a.limit_mask[size_t(j)] - 3 * alpha / (1 + 3 * alpha) / n) < 1e-12);
   }
 }
 
