@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "framework/analysis/curve_scheme_analysis.h"
 #include "framework/analysis/surface_analysis.h"
@@ -296,12 +297,17 @@ struct LimitEvaluator::Impl {
 
   std::shared_ptr<const LimitMask> get(const LocalConfig& config) {
     const LocalConfig k = key(config);
+    {
+      std::lock_guard lock(mutex);
+      auto it = cache.find(k);
+      if (it != cache.end()) return it->second;
+    }
+    // Computed without the lock (the engine runs parallel loops inside, and a thread waiting
+    // in one may pick up another vertex that needs the cache) and in an isolated arena.
+    std::shared_ptr<const LimitMask> m;
+    tbb::this_task_arena::isolate([&] { m = std::make_shared<const LimitMask>(compute(config)); });
     std::lock_guard lock(mutex);
-    auto it = cache.find(k);
-    if (it != cache.end()) return it->second;
-    auto m = std::make_shared<const LimitMask>(compute(config));
-    cache.emplace(k, m);
-    return m;
+    return cache.emplace(k, m).first->second;
   }
 
   void note(const std::string& reason) {

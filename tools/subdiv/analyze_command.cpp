@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "framework/analysis/curve_scheme_analysis.h"
+#include "framework/analysis/limit_evaluation.h"
 #include "framework/analysis/surface_analysis.h"
 #include "framework/analysis/surface_report.h"
 #include "framework/io/vtk_output.h"
@@ -136,6 +137,11 @@ void run_surface(const AnalyzeArgs& a) {
     interior.push_back(analyse_configuration(*scheme, c, options));
   }
   fmt::print("scheme {} ({})\n", scheme->name, scheme->path);
+  const bool level_dependent = scheme_is_level_dependent(*scheme);
+  if (level_dependent)
+    fmt::print("non-stationary: weights depend on the level l; analysed with the weights of level {} (--level), "
+               "as if every step used them\n",
+               a.level);
   fmt::print("analysed at {} (the centre of the invariant neighbourhood); S on the k-ring that maps to itself\n",
              centre == CentreKind::Face ? "an n-gon face: a dual scheme turns a valence-n vertex into one"
                                         : "a vertex of valence n");
@@ -171,6 +177,8 @@ void run_surface(const AnalyzeArgs& a) {
       j["boundary_analyses"] = nlohmann::json::array();
       for (const auto& r : boundary) j["boundary_analyses"].push_back(r.to_json());
     }
+    j["stationary"] = !level_dependent;
+    j["level"] = a.level;
     j["parameters"] = nlohmann::json::object();
     for (const auto& [k, v] : overrides_of(a.params)) j["parameters"][k] = v;
     write_text(a.json_file, j.dump(2) + "\n");

@@ -15,12 +15,18 @@ using namespace subdiv::test;
 
 namespace {
 
-void check_invariance(const std::string& scheme, const Mesh& mesh, int levels, double tolerance = 1e-12) {
+void check_invariance(const std::string& scheme, const Mesh& mesh, int levels, double tolerance = 1e-12,
+                      const std::vector<std::pair<Index, Index>>& sharp = {}) {
   CAPTURE(scheme);
   const auto s = load_scheme(scheme);
   RefineOptions o;
   o.levels = levels + 1;
-  const Hierarchy h = refine(*s, mesh.level(), o);
+  Level base = mesh.level();
+  if (!sharp.empty()) {
+    base.edge_sharpness.assign(size_t(base.edge_count()), 0.f);
+    for (auto [a, b] : sharp) base.edge_sharpness[size_t(find_edge(base, a, b))] = 10.f;
+  }
+  const Hierarchy h = refine(*s, base, o);
   std::vector<std::vector<double>> P{mesh.positions};
   for (const auto& t : h.stencils) P.push_back(t.apply(P.back(), 3));
   std::vector<LimitResult> r;
@@ -52,6 +58,8 @@ TEST_CASE("limit positions are invariant under refinement: Catmull-Clark") {
   check_invariance("catmull-clark", test::torus(8, 6), 2);
   check_invariance("catmull-clark", test::pyramid(), 2);  // triangles in the control mesh
   check_invariance("catmull-clark", test::grid(3, 2), 2);   // boundaries and corners
+  check_invariance("catmull-clark", test::torus(8, 6), 2, 1e-12, {{0, 1}});  // two darts, creases between
+  check_invariance("loop", test::torus(8, 6, true), 2, 1e-12, {{0, 1}, {1, 2}, {2, 3}});
 }
 
 TEST_CASE("limit positions are invariant under refinement: Loop, sqrt3, butterflies, composites") {
