@@ -7,6 +7,7 @@ namespace subdiv::cli {
 void add_refine_command(CLI::App& app);
 void add_schemes_command(CLI::App& app);
 void add_validate_command(CLI::App& app);
+void add_analyze_command(CLI::App& app);
 void add_interpolate_command(CLI::App& app);
 void add_plugins_command(CLI::App& app);
 // --plugin on the app and every subcommand (call after adding them); loads the plugins

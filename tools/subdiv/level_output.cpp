@@ -61,7 +61,8 @@ void check_output_path(const std::filesystem::path& out) {
 }
 
 void write_levels(const std::filesystem::path& out, const Hierarchy& h,
-                  const std::vector<std::vector<double>>& positions, const FeatureOptions& features) {
+                  const std::vector<std::vector<double>>& positions, const FeatureOptions& features,
+                  const std::vector<DataArray>& finest_point_data) {
   check_output_path(out);
   const std::string ext = extension_of(out);
   const int finest = int(h.levels.size()) - 1;
@@ -75,6 +76,7 @@ void write_levels(const std::filesystem::path& out, const Hierarchy& h,
   std::vector<OutputLevel> levels;
   std::vector<double> base_face;
   for (int l = 0; l <= finest; ++l) levels.push_back(describe_level(h, l, meshes[l], features, base_face));
+  for (const auto& a : finest_point_data) levels.back().point_data.push_back(a);
   if (ext == ".vtp") write_vtp(out, levels.back());
   else write_pvd(out, levels);
 }

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "framework/io/vtk_output.h"
 #include "framework/scheme/refiner.h"
 
 namespace subdiv::cli {
@@ -11,8 +12,10 @@ namespace subdiv::cli {
 // positions[l] holds level l's xyz. `features` (the refinement's boundary mode and crease
 // method) classifies each vertex for the per-point "vertex_class" array of .vtp/.pvd
 // output: 0 smooth, 1 dart, 2 crease, 3 corner, the rule the vertex takes at its level.
+// finest_point_data is added to the finest level's point data (e.g. limit normals).
 void write_levels(const std::filesystem::path& out, const Hierarchy& h,
-                  const std::vector<std::vector<double>>& positions, const FeatureOptions& features);
+                  const std::vector<std::vector<double>>& positions, const FeatureOptions& features,
+                  const std::vector<DataArray>& finest_point_data = {});
 
 // The output extensions write_levels accepts, for help texts and early checks.
 void check_output_path(const std::filesystem::path& out);

@@ -1,11 +1,13 @@
 // `subdiv refine MESH --scheme S --levels L -o OUT`: the main job.
 #include <chrono>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <tbb/global_control.h>
 
 #include "commands.h"
 #include "framework/io/feature_angle.h"
 #include "framework/io/feature_file.h"
+#include "framework/analysis/limit_evaluation.h"
 #include "framework/io/formats.h"
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
@@ -32,6 +34,7 @@ struct RefineArgs {
   int threads = 0;
   int start_level = 0;
   bool quiet = false;
+  bool limit = false;
 };
 
 ParameterOverrides parse_params(const std::vector<std::string>& params) {
@@ -98,8 +101,29 @@ void run(const RefineArgs& a) {
     progress.say(fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
     positions.push_back(apply_step(h, l, positions.back(), 3));  // stencils, or a non-linear plugin rule
   }
+  std::vector<DataArray> limit_data;
+  if (a.limit) {
+    // The finest level's vertices moved to their limit points, with limit normals
+    // (framework/analysis/limit_evaluation.h); the scheme that would refine it next decides.
+    progress.say("limit positions and normals");
+    LimitOptions lo;
+    lo.boundary = options.boundary, lo.crease_method = options.crease_method;
+    lo.first_step = options.first_step + seq.total_levels;
+    const LimitResult limit = limit_positions(*seq.schemes.back(), h.levels.back(), positions.back(), lo);
+    positions.back() = limit.positions;
+    limit_data.push_back(DataArray{"normal", 3, limit.normals, false});
+    limit_data.push_back(DataArray{"limit_exact", 1, std::vector<double>(limit.exact.begin(), limit.exact.end()), true});
+    limit_data.push_back(
+        DataArray{"normal_exact", 1, std::vector<double>(limit.normal_exact.begin(), limit.normal_exact.end()), true});
+    if ((limit.approximate > 0 || limit.approximate_normals > 0) && !a.quiet)
+      fmt::print(stderr,
+                 "subdiv: note: --limit approximates {} position(s) and {} more normal(s) of {} vertices (point data "
+                 "limit_exact, normal_exact): {}\n",
+                 limit.approximate, limit.approximate_normals, limit.exact.size(),
+                 fmt::join(limit.approximate_reasons, "; "));
+  }
   progress.say(fmt::format("writing {}", a.output));
-  write_levels(a.output, h, positions, {options.boundary, options.crease_method});
+  write_levels(a.output, h, positions, {options.boundary, options.crease_method}, limit_data);
   progress.done();
   if (!a.quiet) {
     for (const auto& note : notes) fmt::print("{}\n", note);
@@ -146,6 +170,9 @@ void add_refine_command(CLI::App& app) {
                   "sqrt3's boundary trisection, and level-dependent schemes count from the original mesh)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  cmd->add_flag("--limit", args->limit,
+                "Move the finest level's vertices to their limit positions and write limit normals as point data "
+                "'normal' (with --levels 0: the limit points of the input's own vertices)");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   cmd->footer("Example: subdiv refine examples/meshes/cube.obj --scheme catmull-clark --levels 3 -o cube.pvd");
   cmd->callback([args] { run(*args); });

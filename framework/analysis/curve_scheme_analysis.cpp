@@ -1,0 +1,105 @@
+#include "framework/analysis/curve_scheme_analysis.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "framework/rules/formula.h"
+#include "framework/scheme/scheme_loader.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace fs = std::filesystem;
+
+namespace {
+
+bool looks_like_path(const std::string& s) {
+  return s.find('/') != std::string::npos || (s.size() > 5 && s.ends_with(".json"));
+}
+
+// A built-in scheme file by name (the registry's listing), or the path itself.
+fs::path scheme_file(const std::string& name_or_path) {
+  if (looks_like_path(name_or_path)) {
+    if (!fs::exists(name_or_path)) throw Error(fmt::format("scheme file '{}' does not exist", name_or_path));
+    return name_or_path;
+  }
+  std::string known;
+  for (const auto& s : list_schemes()) {
+    if (s.name == name_or_path) return s.path;
+    known += (known.empty() ? "" : ", ") + s.name;
+  }
+  throw Error(fmt::format("unknown scheme '{}'; the schemes are: {} (or give a path to a .json file)", name_or_path,
+                          known));
+}
+
+}  // namespace
+
+CurveMask curve_mask_from_scheme(const CurveScheme& curve, int level) {
+  FormulaSet formulas(curve.parameters, curve.definitions);
+  std::vector<std::vector<double>> weights(curve.weights.size());
+  for (size_t r = 0; r < curve.weights.size(); ++r)
+    for (size_t t = 0; t < curve.weights[r].size(); ++t) {
+      const std::string where = fmt::format("{}: rules[{}].w[{}]", curve.path, r, t);
+      const int id = formulas.add(curve.weights[r][t], where);
+      const double w = formulas.evaluate(id, {0, 0, double(t), double(level)});
+      if (!std::isfinite(w)) throw Error(fmt::format("{}: '{}' is not finite ({})", where, curve.weights[r][t], w));
+      weights[r].push_back(w);
+    }
+  return mask_from_rules(curve.arity, curve.starts, weights);
+}
+
+bool curve_scheme_is_level_dependent(const CurveScheme& curve) {
+  FormulaSet formulas(curve.parameters, curve.definitions);
+  for (size_t r = 0; r < curve.weights.size(); ++r)
+    for (size_t t = 0; t < curve.weights[r].size(); ++t)
+      if (formulas.uses(formulas.add(curve.weights[r][t], curve.path)).l) return true;
+  return false;
+}
+
+CurveSchemeAnalysis analyse_curve_scheme(const CurveScheme& curve, int level, const CurveAnalysisOptions& options) {
+  CurveSchemeAnalysis out;
+  out.name = curve.name;
+  out.path = curve.path;
+  out.level = level;
+  out.level_dependent = curve_scheme_is_level_dependent(curve);
+  out.analysis = analyse_curve(curve_mask_from_scheme(curve, level), options);
+  return out;
+}
+
+std::string CurveSchemeAnalysis::summary() const {
+  std::string out = fmt::format("curve scheme {} ({})\n", name, path);
+  if (level_dependent)
+    out += fmt::format("non-stationary: the weights depend on the level l; analysed with the weights of level {} "
+                       "(the symbol analysis proves nothing about the level-dependent scheme itself)\n",
+                       level);
+  return out + analysis.summary();
+}
+
+nlohmann::json CurveSchemeAnalysis::to_json() const {
+  nlohmann::json j = analysis.to_json();
+  j["scheme"] = name;
+  j["path"] = path;
+  j["kind"] = "curve";
+  j["level"] = level;
+  j["stationary"] = !level_dependent;
+  return j;
+}
+
+std::string scheme_kind_of(const std::string& name_or_path) { return scheme_file_kind(scheme_file(name_or_path)); }
+
+std::shared_ptr<const CurveScheme> load_curve_scheme_named(const std::string& name_or_path,
+                                                           const ParameterOverrides& overrides) {
+  const fs::path file = scheme_file(name_or_path);
+  if (scheme_file_kind(file) != "curve")
+    throw Error(fmt::format("{} is a surface scheme, not a curve scheme", file.string()));
+  std::set<std::string> used;
+  auto curve = load_curve_scheme(file, overrides, &used);
+  for (const auto& [name, value] : overrides)
+    if (!used.count(name))
+      throw Error(fmt::format("{}: --param {}={}: the scheme has no parameter '{}'", file.string(), name, value, name));
+  return curve;
+}
+
+}  // namespace subdiv

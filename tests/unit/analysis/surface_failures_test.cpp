@@ -1,0 +1,87 @@
+// Schemes that must be reported as failing, with the reason: rules that break the
+// rotational symmetry (lambda_1 != lambda_2), weights that are not affine, the classic
+// butterfly at valence 3; and schemes the seeds call C1 (the modified butterfly
+// everywhere, the butterfly at regular vertices).
+#include <doctest/doctest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "framework/analysis/surface_analysis.h"
+#include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_registry.h"
+#include "unit/analysis/surface_test_support.h"
+
+using namespace subdiv;
+using namespace subdiv::test;
+
+namespace {
+
+std::string catmull_clark_with(const std::string& self, const std::string& ring) {
+  return R"({"name": "broken", "split": "quad", "faces": "any", "curve": "cubic-bspline", "rules": {
+    "face": [{"sum": "vertices", "w": "1/k"}],
+    "edge": [{"sum": "ends", "w": "1/4"}, {"sum": "faces", "new": "face", "w": "1/4"}],
+    "vertex": [{"at": "self", "w": ")" + self + R"("}, {"sum": "ring", "w": ")" + ring + R"("},
+               {"sum": "faces", "new": "face", "w": "1/n^2"}]}})";
+}
+
+}  // namespace
+
+TEST_CASE("a vertex rule that keeps too much of the old vertex: lambda_1 != lambda_2") {
+  // Affine, symmetric, but the centre keeps 0.5 more of itself: the radial eigenvalue of the
+  // vertex and its ring (Fourier mode 0, simple) overtakes the tangent pair (modes +-1).
+  const auto file = write_temp("heavy-centre.json", catmull_clark_with("(n-2)/n + 0.5", "1/n^2 - 0.5/n"));
+  const auto s = load_scheme(file.string());
+  for (int n : {3, 5, 7}) {
+    CAPTURE(n);
+    const SurfaceAnalysis a = analyse_valence(*s, n);
+    CAPTURE(a.verdict);
+    CHECK(a.affine);
+    CHECK(a.lambda0_one);
+    CHECK_FALSE(a.subdominant_equal);
+    CHECK_FALSE(a.c1);
+    CHECK(a.verdict.rfind("fails: lambda_1 != lambda_2", 0) == 0);
+  }
+}
+
+TEST_CASE("weights that do not sum to one are reported, not refined") {
+  const auto file = write_temp("not-affine.json", catmull_clark_with("(n-2)/n + 0.1", "1/n^2"));
+  const auto s = load_scheme(file.string());
+  const SurfaceAnalysis a = analyse_valence(*s, 5);
+  CAPTURE(a.verdict);
+  CHECK_FALSE(a.c1);
+  CHECK(a.verdict.rfind("fails: ", 0) == 0);
+  CHECK(a.verdict.find("affine") != std::string::npos);
+  CHECK(a.verdict.find("1.1") != std::string::npos);  // the row sum
+}
+
+TEST_CASE("butterfly: C1 at regular vertices (seed 000 §4(d)), not at valence 3; modified butterfly C1 everywhere") {
+  const auto b = load_scheme("butterfly");
+  CHECK(analyse_valence(*b, 6).c1);
+  const SurfaceAnalysis three = analyse_valence(*b, 3);
+  CAPTURE(three.verdict);
+  CHECK_FALSE(three.c1);
+  CHECK(three.verdict.rfind("fails: ", 0) == 0);
+  const auto mb = load_scheme("modified-butterfly");
+  for (int n = 3; n <= 12; ++n) {
+    CAPTURE(n);
+    const SurfaceAnalysis a = analyse_valence(*mb, n);
+    CHECK(a.c1);
+    CHECK(a.has_limit_mask);
+    CHECK(a.limit_mask[0] == doctest::Approx(1.0));  // interpolating: the limit is the vertex
+  }
+}
+
+TEST_CASE("a report for every shipped surface scheme, without errors") {
+  for (const auto& listing : list_schemes()) {
+    if (listing.kind != "surface") continue;
+    CAPTURE(listing.name);
+    const auto s = load_scheme(listing.name);
+    for (int n : {3, 5}) {
+      const SurfaceAnalysis a = analyse_valence(*s, n);
+      CAPTURE(a.verdict);
+      CHECK(a.error.empty());
+      CHECK_FALSE(a.verdict.empty());
+      CHECK(a.to_json()["verdict"] == a.verdict);
+    }
+  }
+}

@@ -1,0 +1,82 @@
+#pragma once
+// Helpers for the surface analysis tests: a mesh with one vertex of valence n (the
+// analysis' own synthetic patch, so the rest is regular) with random 3D positions, and its
+// ring read off the mesh the way the seeds write it (e_j: edge neighbours CCW, f_j: the
+// face-diagonal points between e_j and e_{j+1}).
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "framework/analysis/local_patch.h"
+#include "framework/topology/level.h"
+
+namespace subdiv::test {
+
+using Vec3 = std::array<double, 3>;
+
+inline const double kPi = std::acos(-1.0);
+
+struct RandomPatch {
+  Level level;
+  std::vector<double> positions;  // xyz
+};
+
+// The synthetic patch of valence n with the plane positions perturbed in 3D.
+inline RandomPatch random_patch(PatchCells cells, int n, unsigned seed, int rings = 5, bool boundary = false) {
+  LocalConfig c;
+  c.valence = n;
+  c.boundary = boundary;
+  Patch p = make_vertex_patch(cells, c, rings);
+  RandomPatch r{p.level, {}};
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-0.3, 0.3);
+  for (Index v = 0; v < p.level.vertex_count; ++v)
+    r.positions.insert(r.positions.end(), {p.xy[size_t(2 * v)] + u(rng), p.xy[size_t(2 * v + 1)] + u(rng), u(rng)});
+  return r;
+}
+
+inline Vec3 at(const std::vector<double>& p, Index v) { return {p[size_t(3 * v)], p[size_t(3 * v + 1)], p[size_t(3 * v + 2)]}; }
+
+inline Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3 unit(const Vec3& a) {
+  const double l = std::sqrt(dot(a, a));
+  return {a[0] / l, a[1] / l, a[2] / l};
+}
+inline double distance(const Vec3& a, const Vec3& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// e_j: the other end of ring edge j; f_j: in ring face j (between ring edges j and j+1) of
+// a quad, the corner opposite v.
+inline std::vector<Index> ring_neighbours(const Level& L, Index v) {
+  std::vector<Index> out;
+  for (Index e : L.ring_edges(v)) out.push_back(L.other_end(e, v));
+  return out;
+}
+inline std::vector<Index> face_diagonals(const Level& L, Index v) {
+  std::vector<Index> out;
+  const auto faces = L.ring_faces(v);
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const auto corners = L.face(faces[i]);
+    const int c = L.vertex_face_corner[size_t(L.vertex_face_offsets[v]) + i];
+    out.push_back(corners[size_t((c + 2) % int(corners.size()))]);
+  }
+  return out;
+}
+
+inline std::filesystem::path write_temp(const std::string& name, const std::string& text) {
+  const auto dir = std::filesystem::temp_directory_path() / "subdivkit-analysis-tests";
+  std::filesystem::create_directories(dir);
+  const auto file = dir / name;
+  std::ofstream(file) << text;
+  return file;
+}
+
+}  // namespace subdiv::test

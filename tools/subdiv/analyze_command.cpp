@@ -1,0 +1,225 @@
+// `subdiv analyze SCHEME`: convergence and smoothness of a scheme. Surface schemes: the
+// eigen-analysis at extraordinary vertices (faces, for dual schemes) for a range of
+// valences; curve schemes: the symbol analysis. Reports as a table, JSON and SVG.
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "framework/analysis/curve_scheme_analysis.h"
+#include "framework/analysis/limit_evaluation.h"
+#include "framework/analysis/surface_analysis.h"
+#include "framework/analysis/surface_report.h"
+#include "framework/io/vtk_output.h"
+#include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/util/atomic_file.h"
+#include "framework/util/error.h"
+
+namespace subdiv::cli {
+namespace {
+
+struct AnalyzeArgs {
+  std::string scheme;
+  std::string valence = "3..12";
+  std::string vtk_dir, json_file, svg_file;
+  std::vector<std::string> params;
+  std::string boundary_mode = "edges-and-corners";
+  bool boundary = false;
+  bool details = false;
+  int level = 0;
+  int max_ring = 5;
+};
+
+ParameterOverrides overrides_of(const std::vector<std::string>& params) {
+  ParameterOverrides out;
+  for (const auto& p : params) {
+    const auto eq = p.find('=');
+    if (eq == std::string::npos || eq == 0) throw Error(fmt::format("--param '{}' must be written name=value", p));
+    out[p.substr(0, eq)] = p.substr(eq + 1);
+  }
+  return out;
+}
+
+int parse_int(const std::string& text, const std::string& what) {
+  try {
+    size_t used = 0;
+    const int v = std::stoi(text, &used);
+    if (used == text.size()) return v;
+  } catch (...) {
+  }
+  throw Error(fmt::format("--valence: '{}' in '{}' is not a whole number", text, what));
+}
+
+// "3..12", "5", "3,5,8".
+std::vector<int> parse_valences(const std::string& text, int lowest) {
+  std::vector<int> out;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t end = text.find(',', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string part = text.substr(start, end - start);
+    const size_t dots = part.find("..");
+    if (dots != std::string::npos) {
+      const int a = parse_int(part.substr(0, dots), text), b = parse_int(part.substr(dots + 2), text);
+      if (a > b) throw Error(fmt::format("--valence {}: the range is empty", text));
+      for (int n = a; n <= b; ++n) out.push_back(n);
+    } else if (!part.empty()) {
+      out.push_back(parse_int(part, text));
+    }
+    start = end + 1;
+  }
+  if (out.empty()) throw Error("--valence: give a valence, a range a..b or a list a,b,c");
+  for (int n : out)
+    if (n < lowest || n > 64) throw Error(fmt::format("--valence {}: valences must lie in {}..64", n, lowest));
+  return out;
+}
+
+void write_text(const std::filesystem::path& file, const std::string& text) {
+  write_file_atomically(file, [&](const std::filesystem::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    if (!out) throw Error(fmt::format("cannot write '{}'", file.string()));
+  });
+}
+
+void write_characteristic_maps(const std::filesystem::path& dir, const std::string& scheme,
+                               const std::vector<SurfaceAnalysis>& analyses, const char* prefix) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (!std::filesystem::is_directory(dir))
+    throw Error(fmt::format("--vtk {}: cannot create the directory", dir.string()));
+  for (const auto& a : analyses) {
+    const auto& cm = a.characteristic_map;
+    if (!cm.computed || cm.mesh.face_count() == 0) continue;
+    OutputLevel out;
+    out.mesh = &cm.mesh;
+    out.level = cm.refinement_steps;
+    out.point_data.push_back(DataArray{"ring", 1, cm.ring, true});
+    std::vector<double> radius(size_t(cm.mesh.vertex_count()));
+    for (Index v = 0; v < cm.mesh.vertex_count(); ++v)
+      radius[size_t(v)] = std::hypot(cm.mesh.positions[size_t(3 * v)], cm.mesh.positions[size_t(3 * v + 1)]);
+    out.point_data.push_back(DataArray{"radius", 1, radius, false});
+    write_vtp(dir / fmt::format("{}_{}characteristic_n{}.vtp", scheme, prefix, a.config.valence), out);
+  }
+}
+
+void run_curve(const AnalyzeArgs& a) {
+  const auto curve = load_curve_scheme_named(a.scheme, overrides_of(a.params));
+  const CurveSchemeAnalysis r = analyse_curve_scheme(*curve, a.level);
+  fmt::print("{}", r.summary());
+  if (!a.json_file.empty()) write_text(a.json_file, r.to_json().dump(2) + "\n");
+  if (!a.svg_file.empty())
+    write_text(a.svg_file, eigenvalue_svg(r.analysis.eigen.eigenvalues,
+                                          fmt::format("{}: local subdivision matrix eigenvalues", curve->name)));
+  if (!a.vtk_dir.empty()) fmt::print("(--vtk: curve schemes have no characteristic map to write)\n");
+}
+
+void run_surface(const AnalyzeArgs& a) {
+  const auto scheme = load_scheme(a.scheme, overrides_of(a.params));
+  SurfaceAnalysisOptions options;
+  options.boundary = a.boundary_mode == "none"    ? BoundaryInterpolation::None
+                     : a.boundary_mode == "edges" ? BoundaryInterpolation::EdgesOnly
+                                                  : BoundaryInterpolation::EdgesAndCorners;
+  options.max_ring = a.max_ring;
+  options.characteristic_map = true;
+  const CentreKind centre = analysis_centre(*scheme);
+  std::vector<SurfaceAnalysis> interior, boundary;
+  // Valence 2 exists on boundaries only.
+  const std::vector<int> valences = parse_valences(a.valence, a.boundary ? 2 : 3);
+  for (int n : valences) {
+    if (n < 3) continue;
+    LocalConfig c;
+    c.centre = centre;
+    c.valence = n;
+    c.first_step = a.level;
+    interior.push_back(analyse_configuration(*scheme, c, options));
+  }
+  fmt::print("scheme {} ({})\n", scheme->name, scheme->path);
+  const bool level_dependent = scheme_is_level_dependent(*scheme);
+  if (level_dependent)
+    fmt::print("non-stationary: weights depend on the level l; analysed with the weights of level {} (--level), "
+               "as if every step used them\n",
+               a.level);
+  fmt::print("analysed at {} (the centre of the invariant neighbourhood); S on the k-ring that maps to itself\n",
+             centre == CentreKind::Face ? "an n-gon face: a dual scheme turns a valence-n vertex into one"
+                                        : "a vertex of valence n");
+  fmt::print("\n{}", surface_table(interior));
+  if (a.boundary && centre == CentreKind::Vertex) {
+    for (int n : valences) {
+      LocalConfig c;
+      c.valence = n, c.boundary = true, c.first_step = a.level;
+      boundary.push_back(analyse_configuration(*scheme, c, options));
+    }
+    fmt::print("\nboundary vertices (n ring edges, n - 1 faces):\n{}", surface_table(boundary));
+  } else if (a.boundary) {
+    fmt::print("\n(--boundary: boundary analysis is done for vertex-centred schemes only)\n");
+  }
+  if (a.details) {
+    for (const auto* list : {&interior, &boundary})
+      for (const auto& r : *list) {
+        fmt::print("\n");
+        for (const auto& line : r.summary_lines()) fmt::print("  {}\n", line);
+      }
+  } else {
+    fmt::print("\ncurvature (seed 000 §3, lambda_1^2 against |lambda_3|):\n");
+    for (const auto& r : interior)
+      if (!r.curvature.empty()) fmt::print("  n = {:>2}: {}\n", r.config.valence, r.curvature);
+  }
+  int c1 = 0;
+  for (const auto& r : interior) c1 += r.c1;
+  fmt::print("\n{} of {} valences C1 (eigenvalue conditions and a regular, injective characteristic map)\n", c1,
+             interior.size());
+  if (!a.json_file.empty()) {
+    nlohmann::json j = surface_report_json(interior);
+    if (!boundary.empty()) {
+      j["boundary_analyses"] = nlohmann::json::array();
+      for (const auto& r : boundary) j["boundary_analyses"].push_back(r.to_json());
+    }
+    j["stationary"] = !level_dependent;
+    j["level"] = a.level;
+    j["parameters"] = nlohmann::json::object();
+    for (const auto& [k, v] : overrides_of(a.params)) j["parameters"][k] = v;
+    write_text(a.json_file, j.dump(2) + "\n");
+  }
+  if (!a.svg_file.empty())
+    write_text(a.svg_file, spectrum_svg(interior, fmt::format("{}: eigenvalue moduli by valence", scheme->name)));
+  if (!a.vtk_dir.empty()) {
+    write_characteristic_maps(a.vtk_dir, scheme->name, interior, "");
+    write_characteristic_maps(a.vtk_dir, scheme->name, boundary, "boundary_");
+  }
+}
+
+}  // namespace
+
+void add_analyze_command(CLI::App& app) {
+  auto args = std::make_shared<AnalyzeArgs>();
+  auto* cmd = app.add_subcommand("analyze", "Convergence and smoothness of a scheme: eigen-analysis at extraordinary "
+                                            "vertices, or the symbol analysis of a curve scheme");
+  cmd->add_option("scheme", args->scheme, "Scheme name (see `subdiv schemes`) or path to a .json file")->required();
+  cmd->add_option("--valence", args->valence, "Valences to analyse: a..b, n, or a list a,b,c")->capture_default_str();
+  cmd->add_option("--vtk", args->vtk_dir, "Write each valence's characteristic map as a .vtp file into this directory");
+  cmd->add_option("--json", args->json_file, "Write the report as JSON");
+  cmd->add_option("--svg", args->svg_file, "Write the spectrum (eigenvalue moduli against valence) as an SVG plot");
+  cmd->add_option("-p,--param", args->params, "Scheme parameter, name=value (repeatable), e.g. --param beta=warren");
+  cmd->add_flag("--boundary", args->boundary, "Also analyse boundary vertices of each valence");
+  cmd->add_option("--boundary-interpolation", args->boundary_mode, "As in refine's --boundary")
+      ->check(CLI::IsMember({"none", "edges", "edges-and-corners"}))
+      ->capture_default_str();
+  cmd->add_flag("--details", args->details, "Print every valence's full analysis (eigenvalues, checks, masks)");
+  cmd->add_option("--level", args->level, "Level whose weights are analysed (level-dependent schemes)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--max-ring", args->max_ring, "Largest k-ring tried as the invariant neighbourhood")
+      ->check(CLI::Range(1, 8))
+      ->capture_default_str();
+  cmd->footer("Examples:\n  subdiv analyze catmull-clark --valence 3..12 --svg cc.svg --json cc.json\n"
+              "  subdiv analyze loop --param beta=warren --vtk maps/\n  subdiv analyze four-point --param w=0.0625");
+  cmd->callback([args] {
+    if (scheme_kind_of(args->scheme) == "curve") run_curve(*args);
+    else run_surface(*args);
+  });
+}
+
+}  // namespace subdiv::cli
