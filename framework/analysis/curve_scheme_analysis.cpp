@@ -13,28 +13,6 @@
 namespace subdiv {
 namespace fs = std::filesystem;
 
-namespace {
-
-bool looks_like_path(const std::string& s) {
-  return s.find('/') != std::string::npos || (s.size() > 5 && s.ends_with(".json"));
-}
-
-// A built-in scheme file by name (the registry's listing), or the path itself.
-fs::path scheme_file(const std::string& name_or_path) {
-  if (looks_like_path(name_or_path)) {
-    if (!fs::exists(name_or_path)) throw Error(fmt::format("scheme file '{}' does not exist", name_or_path));
-    return name_or_path;
-  }
-  std::string known;
-  for (const auto& s : list_schemes()) {
-    if (s.name == name_or_path) return s.path;
-    known += (known.empty() ? "" : ", ") + s.name;
-  }
-  throw Error(fmt::format("unknown scheme '{}'; the schemes are: {} (or give a path to a .json file)", name_or_path,
-                          known));
-}
-
-}  // namespace
 
 CurveMask curve_mask_from_scheme(const CurveScheme& curve, int level) {
   FormulaSet formulas(curve.parameters, curve.definitions);
@@ -87,19 +65,12 @@ nlohmann::json CurveSchemeAnalysis::to_json() const {
   return j;
 }
 
-std::string scheme_kind_of(const std::string& name_or_path) { return scheme_file_kind(scheme_file(name_or_path)); }
+// Both go through the scheme registry, so plugin schemes are found as well as files.
+std::string scheme_kind_of(const std::string& name_or_path) { return scheme_kind(name_or_path); }
 
 std::shared_ptr<const CurveScheme> load_curve_scheme_named(const std::string& name_or_path,
                                                            const ParameterOverrides& overrides) {
-  const fs::path file = scheme_file(name_or_path);
-  if (scheme_file_kind(file) != "curve")
-    throw Error(fmt::format("{} is a surface scheme, not a curve scheme", file.string()));
-  std::set<std::string> used;
-  auto curve = load_curve_scheme(file, overrides, &used);
-  for (const auto& [name, value] : overrides)
-    if (!used.count(name))
-      throw Error(fmt::format("{}: --param {}={}: the scheme has no parameter '{}'", file.string(), name, value, name));
-  return curve;
+  return load_curve(name_or_path, overrides);
 }
 
 }  // namespace subdiv
