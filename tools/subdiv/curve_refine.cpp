@@ -1,4 +1,5 @@
 #include "curve_refine.h"
+#include "memory_guard.h"
 #include "nonlinear_curve.h"
 
 #include <chrono>
@@ -36,23 +37,12 @@ void check_curve_output(const std::filesystem::path& out) {
 // Bytes per point of the finest level: positions of every level, stencil rows, topology.
 constexpr double kBytesPerPoint = 160.0;
 
-double available_bytes() {
-  std::ifstream meminfo("/proc/meminfo");
-  std::string key;
-  double kb = 0;
-  while (meminfo >> key >> kb) {
-    if (key == "MemAvailable:") return kb * 1024.0;
-    meminfo.ignore(256, '\n');
-  }
-  return 1e18;
-}
-
 void check_curve_size(const CurveLevel& base, int arity, int levels) {
   const double points = double(base.vertices.size() + 2 * base.polyline_count()) * std::pow(double(arity), levels);
   if (points > 2.0e9)
     throw Error(fmt::format("{} levels would make about {:.3g} points, more than the 2^31 a level can index; "
                             "ask for fewer levels", levels, points));
-  const double need = points * kBytesPerPoint, have = available_bytes();
+  const double need = points * kBytesPerPoint, have = available_memory_bytes();
   if (need > have)
     throw Error(fmt::format("{} levels would make about {:.3g} points and need about {:.1f} GiB, but only "
                             "{:.1f} GiB of memory is available; ask for fewer levels",

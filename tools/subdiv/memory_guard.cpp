@@ -13,7 +13,9 @@ namespace {
 // rings), the stencil table and positions, measured at about 250 B on quad meshes.
 constexpr double kBytesPerFace = 300.0;
 
-double available_bytes() {
+}  // namespace
+
+double available_memory_bytes() {
   std::ifstream meminfo("/proc/meminfo");
   std::string key;
   double kb = 0;
@@ -24,14 +26,12 @@ double available_bytes() {
   return 1e18;  // unknown: do not refuse
 }
 
-}  // namespace
-
 void check_fits_in_memory(const Scheme& scheme, const Level& base, int levels) {
   // A quad split turns the corners of a level into faces, then each quad into 4.
   double faces = base.face_count();
   for (int l = 0; l < levels; ++l)
     faces = scheme.split() == SplitKind::Quad && l == 0 ? double(base.corner_count()) : 4.0 * faces;
-  const double need = faces * kBytesPerFace, have = available_bytes();
+  const double need = faces * kBytesPerFace, have = available_memory_bytes();
   if (need > have)
     throw Error(fmt::format("{} levels would make about {:.3g} faces and need about {:.1f} GiB, but "
                             "only {:.1f} GiB of memory is available; ask for fewer levels",

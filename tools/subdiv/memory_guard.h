@@ -7,4 +7,7 @@ namespace subdiv::cli {
 
 void check_fits_in_memory(const Scheme& scheme, const Level& base, int levels);
 
+// MemAvailable from /proc/meminfo, in bytes (very large when unknown: do not refuse then).
+double available_memory_bytes();
+
 }  // namespace subdiv::cli

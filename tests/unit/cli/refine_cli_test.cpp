@@ -8,6 +8,7 @@
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include "support/cli_checks.h"
 #include "support/cli_runner.h"
 #include "support/vtk_read.h"
 
@@ -16,13 +17,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The error cases: non-zero exit, a message with the named place, nothing written.
-void check_refused(const std::string& args, const fs::path& out, const std::string& message) {
-  const CliResult r = run_subdiv(args + " -o " + out.string());
-  CHECK(r.exit_code != 0);
-  CHECK_MESSAGE(r.output.find(message) != std::string::npos, r.output);
-  CHECK_FALSE(fs::exists(out));
-}
 
 }  // namespace
 

@@ -15,6 +15,7 @@
 #include "curve_test_support.h"
 #include "framework/curve/curve_level.h"
 #include "framework/io/mesh_read.h"
+#include "support/cli_checks.h"
 #include "support/cli_runner.h"
 
 using namespace subdiv;
@@ -39,12 +40,6 @@ std::vector<vtkIdType> line_ids(vtkPolyData* poly, vtkIdType cell) {
   return out;
 }
 
-void check_refused(const std::string& args, const fs::path& out, const std::string& message) {
-  const CliResult r = run_subdiv(args + " -o " + out.string());
-  CHECK(r.exit_code != 0);
-  CHECK_MESSAGE(r.output.find(message) != std::string::npos, r.output);
-  CHECK_FALSE(fs::exists(out));
-}
 
 }  // namespace
 
