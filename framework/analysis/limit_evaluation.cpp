@@ -9,6 +9,7 @@
 #include <tbb/task_arena.h>
 
 #include "framework/analysis/curve_scheme_analysis.h"
+#include "framework/analysis/sparse_rows.h"
 #include "framework/analysis/surface_analysis.h"
 #include "framework/refine/child_tags.h"
 #include "framework/rules/formula.h"
@@ -31,12 +32,27 @@ Vec3 normalised(const Vec3& a) {
 }
 Vec3 point(std::span<const double> p, Index v) { return {p[size_t(3 * v)], p[size_t(3 * v + 1)], p[size_t(3 * v + 2)]}; }
 
-struct Limit {
-  Vec3 position{}, normal{};
-  bool exact = false;         // the position (and, unless normal_exact is false, the normal)
-  bool normal_exact = true;   // false: the normal is estimated
+// A vertex's (or a dual face's) limit as rows over the level's vertices.
+struct LimitRows {
+  SparseRow position;
+  std::vector<SparseRow> directions;  // towards the ring neighbours; < 2: no tangent plane
+  bool cyclic = true;
+  bool exact = false;         // the position is exact
+  bool normal_exact = true;   // false: the normal is to be estimated
   std::string reason;         // when not exact
 };
+
+LimitRows pulled_back(LimitRows r, const StencilTable& step) {
+  r.position = pull_back(r.position, step);
+  for (auto& d : r.directions) d = pull_back(d, step);
+  return r;
+}
+
+LimitRows renumbered(LimitRows r, const std::vector<Index>& original) {
+  r.position = renumber(r.position, original);
+  for (auto& d : r.directions) d = renumber(d, original);
+  return r;
+}
 
 Index child_vertex(const ChildOrigins& o, Index v) {
   for (size_t c = 0; c < o.kind.size(); ++c)
@@ -75,62 +91,55 @@ Index face_face(const Level& parent, const Level& child, const ChildOrigins& o, 
   return kNone;
 }
 
-// A normal from the polygon(s) around a vertex or of a face, for approximations.
-Vec3 polygon_normal(const Level& L, std::span<const double> P, Index f) {
-  Vec3 n{0, 0, 0};
-  const auto vs = L.face(f);
-  for (size_t i = 0; i < vs.size(); ++i) {
-    const Vec3 a = point(P, vs[i]), b = point(P, vs[(i + 1) % vs.size()]);
-    const Vec3 c = cross(a, b);
-    n[0] += c[0], n[1] += c[1], n[2] += c[2];
-  }
-  return n;
-}
-
-Limit approximate(const Level& L, std::span<const double> P, CentreKind kind, Index c, std::string reason) {
-  Limit out;
+// The control point itself, or the face's centroid: what an approximation falls back on.
+LimitRows approximate(const Level& L, CentreKind kind, Index c, std::string reason) {
+  LimitRows out;
   out.exact = false;
+  out.normal_exact = false;
   out.reason = std::move(reason);
-  Vec3 n{0, 0, 0};
   if (kind == CentreKind::Vertex) {
-    out.position = point(P, c);
-    for (Index f : L.ring_faces(c)) {
-      const Vec3 m = polygon_normal(L, P, f);
-      n[0] += m[0], n[1] += m[1], n[2] += m[2];
-    }
+    out.position = {{c, 1.0}};
   } else {
-    for (Index v : L.face(c)) {
-      const Vec3 q = point(P, v);
-      for (int i = 0; i < 3; ++i) out.position[size_t(i)] += q[size_t(i)] / L.face_size(c);
-    }
-    n = polygon_normal(L, P, c);
+    const auto vs = L.face(c);
+    for (Index v : vs) out.position.emplace_back(v, 1.0 / double(vs.size()));
+    normalise_row(out.position);
   }
-  out.normal = normalised(n);
   return out;
 }
 
-Limit apply_mask(const LimitMask& m, const Labelling& lab, std::span<const double> P) {
-  Limit out;
-  for (size_t t = 0; t < m.position.size(); ++t) {
-    const Vec3 q = point(P, lab.vertices[t]);
-    for (int i = 0; i < 3; ++i) out.position[size_t(i)] += m.position[t] * q[size_t(i)];
-  }
+LimitRows mask_rows(const LimitMask& m, const Labelling& lab) {
+  auto row = [&](const std::vector<double>& mask) {
+    SparseRow r;
+    for (size_t t = 0; t < mask.size(); ++t)
+      if (mask[t] != 0.0) r.emplace_back(lab.vertices[t], mask[t]);
+    normalise_row(r);
+    return r;
+  };
+  LimitRows out;
+  out.position = row(m.position);
+  for (const auto& d : m.directions) out.directions.push_back(row(d));
+  out.cyclic = m.cyclic;
   out.exact = true;
-  const size_t k = m.directions.size();
-  if (k < 2) return out;
-  std::vector<Vec3> d(k, Vec3{0, 0, 0});
-  for (size_t j = 0; j < k; ++j)
-    for (size_t t = 0; t < m.directions[j].size(); ++t) {
-      const Vec3 q = point(P, lab.vertices[t]);
-      for (int i = 0; i < 3; ++i) d[j][size_t(i)] += m.directions[j][t] * q[size_t(i)];
-    }
+  return out;
+}
+
+Vec3 applied(const SparseRow& row, std::span<const double> P) {
+  Vec3 q{0, 0, 0};
+  apply_row(row, P, 3, q);
+  return q;
+}
+
+// The normal from the direction rows: the sum of the sector normals.
+Vec3 normal_of(const LimitRows& r, std::span<const double> P) {
+  const size_t k = r.directions.size();
+  std::vector<Vec3> d(k);
+  for (size_t j = 0; j < k; ++j) d[j] = applied(r.directions[j], P);
   Vec3 n{0, 0, 0};
-  for (size_t j = 0; j + (m.cyclic ? 0 : 1) < k; ++j) {
+  for (size_t j = 0; j + (r.cyclic ? 0 : 1) < k; ++j) {
     const Vec3 c = cross(d[j], d[(j + 1) % k]);
     n[0] += c[0], n[1] += c[1], n[2] += c[2];
   }
-  out.normal = normalised(n);
-  return out;
+  return normalised(n);
 }
 
 }  // namespace
@@ -150,7 +159,7 @@ bool scheme_is_level_dependent(const Scheme& scheme) {
   return scheme.curve && curve_scheme_is_level_dependent(*scheme.curve);
 }
 
-struct LimitEvaluator::Impl {
+struct SchemeLimits::Impl {
   const Scheme& scheme;
   LimitOptions options;
   CentreKind centre;
@@ -316,8 +325,8 @@ struct LimitEvaluator::Impl {
   }
 
   // The mask of the centre, if its neighbourhood is the configuration's.
-  bool try_mask(const Level& L, std::span<const double> P, CentreKind kind, Index c, int step, Labelling& lab,
-                Limit& out, std::shared_ptr<const LimitMask>* found = nullptr) {
+  bool try_mask(const Level& L, CentreKind kind, Index c, int step, Labelling& lab, LimitRows& out,
+                std::shared_ptr<const LimitMask>* found = nullptr) {
     LocalConfig cfg;
     int start = 0;
     bool semi = false;
@@ -333,16 +342,15 @@ struct LimitEvaluator::Impl {
     if (semi) return false;
     auto m = get(cfg);
     if (found) *found = m;
-    return apply_if_matching(*m, L, P, kind, c, start, lab, out);
+    return apply_if_matching(*m, L, kind, c, start, lab, out);
   }
 
-  static bool apply_if_matching(const LimitMask& m, const Level& L, std::span<const double> P, CentreKind kind,
-                                Index c, int start, Labelling& lab, Limit& out) {
+  static bool apply_if_matching(const LimitMask& m, const Level& L, CentreKind kind, Index c, int start,
+                                Labelling& lab, LimitRows& out) {
     if (!m.ok) return false;
     if (!matches_neighbourhood(lab, L, kind, c, start, m.radius, m.signature)) return false;
-    out = apply_mask(m, lab, P);
+    out = mask_rows(m, lab);
     if (m.directions.size() < 2) {
-      out.normal = approximate(L, P, kind, c, "").normal;
       out.normal_exact = false;
       out.reason = "no tangent plane from the eigenvectors (the subdominant eigenvalues are not real, semi-simple "
                    "and dominant): the normal is estimated from the limit points around the vertex";
@@ -350,33 +358,37 @@ struct LimitEvaluator::Impl {
     return true;
   }
 
-  Limit boundary_dual(const Level& L, std::span<const double> P, const Hierarchy& h, const std::vector<double>& child,
-                      Index v) {
-    // The vertex's children on the refined boundary; for Chaikin boundaries the middle of
-    // the two is on the limit curve.
+  // A boundary vertex of a dual scheme has no V-face. Its children on the refined boundary
+  // straddle it; for Chaikin boundaries the middle of the two is on the limit curve.
+  static LimitRows boundary_dual(const Level& L, const Hierarchy& h, Index v) {
     const Level& C = h.levels[1];
     std::vector<Index> kids;
     for (Index c = 0; c < C.vertex_count; ++c)
       if (C.on_boundary(c) && descends_from(L, h.origins[0], c, v)) kids.push_back(c);
-    Limit out = approximate(L, P, CentreKind::Vertex, v,
-                            "dual scheme, boundary vertex without a V-face: the midpoint of its refined boundary "
-                            "points, normal from its faces");
+    LimitRows out = approximate(L, CentreKind::Vertex, v,
+                                "dual scheme, boundary vertex without a V-face: the midpoint of its refined "
+                                "boundary points, normal from its faces");
     if (kids.empty()) return out;
-    Vec3 q{0, 0, 0};
-    for (Index c : kids)
-      for (int i = 0; i < 3; ++i) q[size_t(i)] += child[size_t(3 * c + i)] / double(kids.size());
-    out.position = q;
+    SparseRow middle;
+    for (Index c : kids) middle.emplace_back(c, 1.0 / double(kids.size()));
+    out.position = pull_back(middle, h.stencils[0]);
     return out;
   }
 
-  // Limits of the vertices `which` of a level. Vertices whose neighbourhood is not a known
-  // configuration are refined first: the whole level at once when they are many (vertex
-  // schemes: the limit of a vertex is the limit of its child), else each neighbourhood
-  // cut out on its own.
-  std::vector<Limit> evaluate(const Level& level, std::span<const double> positions, int step, int depth,
-                              const std::vector<Index>& which, std::vector<std::uint8_t>* refined) {
+  RefineOptions one_step(int step) const {
+    RefineOptions ro;
+    ro.levels = 1, ro.first_step = step, ro.boundary = options.boundary, ro.crease_method = options.crease_method;
+    return ro;
+  }
+
+  // Limit rows of the vertices `which` of a level. Vertices whose neighbourhood is not a
+  // known configuration are refined first: the whole level at once when they are many
+  // (vertex schemes: the limit of a vertex is the limit of its child), else each
+  // neighbourhood cut out on its own.
+  std::vector<LimitRows> rows(const Level& level, int step, int depth, const std::vector<Index>& which,
+                              std::vector<std::uint8_t>* refined) {
     const size_t count = which.size();
-    std::vector<Limit> out(count);
+    std::vector<LimitRows> out(count);
     std::vector<const LimitMask*> masks(count, nullptr);
     std::vector<std::shared_ptr<const LimitMask>> keep;
     {
@@ -402,7 +414,7 @@ struct LimitEvaluator::Impl {
       for (size_t i = range.begin(); i != range.end(); ++i) {
         const LimitMask* m = masks[i];
         const Index v = which[i];
-        if (m && apply_if_matching(*m, level, positions, CentreKind::Vertex, v, conventional_start(level, v), lab, out[i]))
+        if (m && apply_if_matching(*m, level, CentreKind::Vertex, v, conventional_start(level, v), lab, out[i]))
           matched[i] = 1;
       }
     });
@@ -414,10 +426,7 @@ struct LimitEvaluator::Impl {
       for (size_t i : rest) (*refined)[size_t(which[i])] = 1;
     const bool many = rest.size() * 300 >= size_t(level.vertex_count);
     if (centre == CentreKind::Vertex && many && depth < options.max_steps) {
-      RefineOptions ro;
-      ro.levels = 1, ro.first_step = step, ro.boundary = options.boundary, ro.crease_method = options.crease_method;
-      const Hierarchy h = refine(scheme, level, ro);
-      const std::vector<double> child = h.stencils[0].apply(positions, 3);
+      const Hierarchy h = refine(scheme, level, one_step(step));
       std::vector<Index> child_of(size_t(level.vertex_count), kNone);
       const ChildOrigins& o = h.origins[0];
       for (size_t c = 0; c < o.kind.size(); ++c)
@@ -427,30 +436,29 @@ struct LimitEvaluator::Impl {
       for (size_t i : rest) {
         const Index c = child_of[size_t(which[i])];
         if (c == kNone) {
-          out[i] = approximate(level, positions, CentreKind::Vertex, which[i], "the vertex has no child vertex");
+          out[i] = approximate(level, CentreKind::Vertex, which[i], "the vertex has no child vertex");
           continue;
         }
         next.push_back(c), where.push_back(i);
       }
-      const std::vector<Limit> deeper = evaluate(h.levels[1], child, step + 1, depth + 1, next, nullptr);
-      for (size_t k = 0; k < where.size(); ++k) out[where[k]] = deeper[k];
+      const std::vector<LimitRows> deeper = rows(h.levels[1], step + 1, depth + 1, next, nullptr);
+      tbb::parallel_for(size_t(0), where.size(),
+                        [&](size_t k) { out[where[k]] = pulled_back(deeper[k], h.stencils[0]); });
       return out;
     }
     tbb::parallel_for(size_t(0), rest.size(), [&](size_t k) {
       const size_t i = rest[k];
       Labelling local;
-      out[i] = limit_at(level, positions, CentreKind::Vertex, which[i], step, depth, local);
+      out[i] = limit_at(level, CentreKind::Vertex, which[i], step, depth, local);
     });
     return out;
   }
 
-  Limit limit_at(const Level& L, std::span<const double> P, CentreKind kind, Index c, int step, int depth,
-                 Labelling& lab) {
-    Limit out;
+  LimitRows limit_at(const Level& L, CentreKind kind, Index c, int step, int depth, Labelling& lab) {
+    LimitRows out;
     std::shared_ptr<const LimitMask> m;
-    if (try_mask(L, P, kind, c, step, lab, out, &m)) return out;
-    if (kind == CentreKind::Vertex && L.valence(c) == 0)
-      return approximate(L, P, kind, c, "isolated vertex: no faces");
+    if (try_mask(L, kind, c, step, lab, out, &m)) return out;
+    if (kind == CentreKind::Vertex && L.valence(c) == 0) return approximate(L, kind, c, "isolated vertex: no faces");
     if (kind == CentreKind::Face) {
       // A face on the boundary stays on it in every dual step: its limit lies on the
       // boundary curve, at the middle of its boundary edge for Chaikin curves.
@@ -458,91 +466,115 @@ struct LimitEvaluator::Impl {
       for (Index e : L.face_edge_list(c))
         if (L.edge_on_boundary(e)) boundary_edges.push_back(e);
       if (!boundary_edges.empty()) {
-        Limit b = approximate(L, P, kind, c,
-                              "dual scheme, face on the boundary: the middle of its boundary edge (the limit for a "
-                              "Chaikin boundary curve), normal of the face");
-        b.position = {0, 0, 0};
+        LimitRows b = approximate(L, kind, c,
+                                  "dual scheme, face on the boundary: the middle of its boundary edge (the limit "
+                                  "for a Chaikin boundary curve), normal of the face");
+        b.position.clear();
         for (Index e : boundary_edges)
-          for (int end = 0; end < 2; ++end) {
-            const Vec3 q = point(P, L.edge_vertices[size_t(2 * e + end)]);
-            for (int i = 0; i < 3; ++i) b.position[size_t(i)] += q[size_t(i)] / double(2 * boundary_edges.size());
-          }
+          for (int end = 0; end < 2; ++end)
+            b.position.emplace_back(L.edge_vertices[size_t(2 * e + end)], 1.0 / double(2 * boundary_edges.size()));
+        normalise_row(b.position);
         return b;
       }
     }
     // A vertex scheme keeps the configuration from level to level: if its analysis failed,
     // refining will not help.
     if (centre == CentreKind::Vertex && kind == CentreKind::Vertex && m && !m->ok)
-      return approximate(L, P, kind, c, "no limit mask: " + m->error);
+      return approximate(L, kind, c, "no limit mask: " + m->error);
     if (depth >= options.max_steps)
-      return approximate(L, P, kind, c,
+      return approximate(L, kind, c,
                          fmt::format("no analysable neighbourhood after {} refinements{}", depth,
                                      m && !m->ok ? " (" + m->error + ")" : ""));
     const int radius = (m && m->ok ? m->radius : 4) + 3;
     const Extracted e = extract_neighbourhood(L, kind, c, radius);
-    std::vector<double> pe(size_t(3 * e.level.vertex_count));
-    for (Index v = 0; v < e.level.vertex_count; ++v)
-      for (int i = 0; i < 3; ++i) pe[size_t(3 * v + i)] = P[size_t(3 * e.original[size_t(v)] + i)];
-    RefineOptions ro;
-    ro.levels = 1, ro.first_step = step, ro.boundary = options.boundary, ro.crease_method = options.crease_method;
+    RefineOptions ro = one_step(step);
     ro.threads = 1;
     const Hierarchy h = refine(scheme, e.level, ro);
-    const std::vector<double> child = h.stencils[0].apply(pe, 3);
+    auto back = [&](const LimitRows& deeper) { return renumbered(pulled_back(deeper, h.stencils[0]), e.original); };
     Labelling child_lab;
     if (kind == CentreKind::Vertex) {
       const Index local = e.local_of[size_t(c)];
       if (centre == CentreKind::Vertex) {
         const Index cc = child_vertex(h.origins[0], local);
-        if (cc == kNone) return approximate(L, P, kind, c, "the vertex has no child vertex");
-        return limit_at(h.levels[1], child, CentreKind::Vertex, cc, step + 1, depth + 1, child_lab);
+        if (cc == kNone) return approximate(L, kind, c, "the vertex has no child vertex");
+        return back(limit_at(h.levels[1], CentreKind::Vertex, cc, step + 1, depth + 1, child_lab));
       }
       const Index g = vertex_face(e.level, h.levels[1], h.origins[0], local);
-      if (g == kNone) {
-        Limit b = boundary_dual(e.level, pe, h, child, local);
-        return b;
-      }
-      return limit_at(h.levels[1], child, CentreKind::Face, g, step + 1, depth + 1, child_lab);
+      if (g == kNone) return renumbered(boundary_dual(e.level, h, local), e.original);
+      return back(limit_at(h.levels[1], CentreKind::Face, g, step + 1, depth + 1, child_lab));
     }
     Index fe = kNone;
     for (size_t f = 0; f < e.face_original.size(); ++f)
       if (e.face_original[f] == c) fe = Index(f);
     const Index g = fe == kNone ? kNone : face_face(e.level, h.levels[1], h.origins[0], fe);
-    if (g == kNone) return approximate(L, P, kind, c, "the face has no child face");
-    return limit_at(h.levels[1], child, CentreKind::Face, g, step + 1, depth + 1, child_lab);
+    if (g == kNone) return approximate(L, kind, c, "the face has no child face");
+    return back(limit_at(h.levels[1], CentreKind::Face, g, step + 1, depth + 1, child_lab));
+  }
+
+  // Rows of every vertex of the level, with the approximations noted.
+  std::vector<LimitRows> all_rows(const Level& level, int step, std::vector<std::uint8_t>* refined) {
+    std::vector<Index> all(static_cast<size_t>(level.vertex_count));
+    for (Index v = 0; v < level.vertex_count; ++v) all[size_t(v)] = v;
+    std::vector<LimitRows> r = rows(level, step, 0, all, refined);
+    for (const LimitRows& l : r)
+      if (!l.exact || !l.normal_exact) note(l.reason);
+    return r;
   }
 };
 
-LimitEvaluator::LimitEvaluator(const Scheme& scheme, const LimitOptions& options)
+SchemeLimits::SchemeLimits(const Scheme& scheme, const LimitOptions& options)
     : impl_(std::make_unique<Impl>(scheme, options)) {}
-LimitEvaluator::~LimitEvaluator() = default;
+SchemeLimits::~SchemeLimits() = default;
 
-std::shared_ptr<const LimitMask> LimitEvaluator::mask(const LocalConfig& config) { return impl_->get(config); }
+std::shared_ptr<const LimitMask> SchemeLimits::mask(const LocalConfig& config) { return impl_->get(config); }
 
-LimitResult LimitEvaluator::evaluate(const Level& level, std::span<const double> positions) {
+LimitStencils SchemeLimits::stencils(const Level& level) { return stencils(level, impl_->options.first_step); }
+
+LimitStencils SchemeLimits::stencils(const Level& level, int step) {
+  const std::vector<LimitRows> rows = impl_->all_rows(level, step, nullptr);
+  LimitStencils out;
+  out.position.source_count = level.vertex_count;
+  out.exact.assign(rows.size(), 0);
+  for (size_t v = 0; v < rows.size(); ++v) {
+    for (const auto& [s, w] : rows[v].position) out.position.indices.push_back(s), out.position.weights.push_back(w);
+    out.position.offsets.push_back(Index(out.position.indices.size()));
+    out.exact[v] = rows[v].exact ? 1 : 0;
+    if (!rows[v].exact && out.first_approximate == kNone) {
+      out.first_approximate = Index(v);
+      out.first_reason = rows[v].reason;
+    }
+    out.approximate += rows[v].exact ? 0 : 1;
+  }
+  return out;
+}
+
+LimitResult SchemeLimits::evaluate(const Level& level, std::span<const double> positions) {
   Impl& I = *impl_;
   const Index V = level.vertex_count;
   if (positions.size() != size_t(3 * V))
     throw Error(fmt::format("limit positions: {} coordinates given for {} vertices", positions.size(), V));
-  std::vector<Index> all(static_cast<size_t>(V));
-  for (Index v = 0; v < V; ++v) all[size_t(v)] = v;
   std::vector<std::uint8_t> refined(size_t(V), 0);
-  const std::vector<Limit> limits = I.evaluate(level, positions, I.options.first_step, 0, all, &refined);
+  const std::vector<LimitRows> rows = I.all_rows(level, I.options.first_step, &refined);
   LimitResult r;
   r.positions.assign(size_t(3 * V), 0.0);
   r.normals.assign(size_t(3 * V), 0.0);
   r.exact.assign(size_t(V), 0);
   r.normal_exact.assign(size_t(V), 0);
-  for (Index v = 0; v < V; ++v) {
-    const Limit& l = limits[size_t(v)];
+  tbb::parallel_for(Index(0), V, [&](Index v) {
+    const LimitRows& l = rows[size_t(v)];
+    const Vec3 p = applied(l.position, positions);
+    const bool normal_exact = l.exact && l.normal_exact && l.directions.size() >= 2;
+    const Vec3 n = normal_exact ? normal_of(l, positions) : Vec3{0, 0, 0};
     for (int i = 0; i < 3; ++i) {
-      r.positions[size_t(3 * v + i)] = l.position[size_t(i)];
-      r.normals[size_t(3 * v + i)] = l.normal[size_t(i)];
+      r.positions[size_t(3 * v + i)] = p[size_t(i)];
+      r.normals[size_t(3 * v + i)] = n[size_t(i)];
     }
     r.exact[size_t(v)] = l.exact ? 1 : 0;
-    r.normal_exact[size_t(v)] = l.exact && l.normal_exact ? 1 : 0;
-    if (!l.exact) ++r.approximate;
-    if (l.exact && !l.normal_exact) ++r.approximate_normals;
-    if (!l.exact || !l.normal_exact) I.note(l.reason);
+    r.normal_exact[size_t(v)] = normal_exact ? 1 : 0;
+  });
+  for (Index v = 0; v < V; ++v) {
+    if (!r.exact[size_t(v)]) ++r.approximate;
+    if (r.exact[size_t(v)] && !r.normal_exact[size_t(v)]) ++r.approximate_normals;
     r.refined_vertices += refined[size_t(v)];
   }
   // Estimated normals: from the limit points of the vertex and its neighbours, sector by
@@ -571,7 +603,7 @@ LimitResult LimitEvaluator::evaluate(const Level& level, std::span<const double>
 
 LimitResult limit_positions(const Scheme& scheme, const Level& level, std::span<const double> positions,
                             const LimitOptions& options) {
-  LimitEvaluator e(scheme, options);
+  SchemeLimits e(scheme, options);
   return e.evaluate(level, positions);
 }
 

@@ -26,6 +26,7 @@
 
 #include "framework/analysis/local_patch.h"
 #include "framework/rules/feature_context.h"
+#include "framework/stencil/stencil_table.h"
 
 namespace subdiv {
 
@@ -65,12 +66,25 @@ struct LimitResult {
   std::vector<std::string> approximate_reasons;  // distinct reasons, for messages
 };
 
-class LimitEvaluator {
+// The limit points as a linear operator: row v is vertex v's limit point over the level's
+// control points (progressive interpolation iterates with it).
+struct LimitStencils {
+  StencilTable position;
+  std::vector<std::uint8_t> exact;  // 1: row v is the exact limit mask
+  int approximate = 0;              // rows that are approximations
+  Index first_approximate = kNone;  // the lowest such vertex, and why
+  std::string first_reason;
+};
+
+// The limits of one scheme on any mesh level; masks are cached across levels and calls.
+class SchemeLimits {
 public:
-  LimitEvaluator(const Scheme& scheme, const LimitOptions& options = {});
-  ~LimitEvaluator();
+  explicit SchemeLimits(const Scheme& scheme, const LimitOptions& options = {});
+  ~SchemeLimits();
 
   LimitResult evaluate(const Level& level, std::span<const double> positions);
+  LimitStencils stencils(const Level& level);            // the level made by options.first_step steps
+  LimitStencils stencils(const Level& level, int step);  // ... by `step` steps
 
   // The mask of a configuration (cached). For dual schemes a vertex configuration's mask
   // is that of its V-face, written over the vertex's own neighbourhood.

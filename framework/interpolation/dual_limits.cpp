@@ -66,15 +66,17 @@ DualCentroidLimit::DualCentroidLimit(std::shared_ptr<const Scheme> scheme, Refin
 
 std::string DualCentroidLimit::name() const { return fmt::format("V-face centroids of {} (seed 000 §5)", scheme_->name); }
 
-StencilTable DualCentroidLimit::limit_stencils(const Level& level) const {
-  const Hierarchy h = refine(*scheme_, level, with_levels(options_, 1, 0));
+StencilTable DualCentroidLimit::stencils_at(const Level& level, int step) const {
+  RefineOptions one = options_;
+  one.first_step = step;
+  const Hierarchy h = refine(*scheme_, level, with_levels(one, 1, 0));
   const std::vector<Index> vface = vertex_faces_after_step(h);
   const StencilTable& s = h.stencils[0];
   const std::string who = name();
   return detail::build_limit_rows(level.vertex_count, level.vertex_count, [&](Index v, detail::LimitRow& row) -> std::string {
     if (level.on_boundary(v))
-      return fmt::format("{}: vertex {} is on the boundary, where a dual scheme's V-face is open; its limit is left "
-                         "to issue 6's masks", who, v);
+      return fmt::format("{}: vertex {} is on the boundary, where a dual scheme's V-face is open and no exact "
+                         "mask is known; interpolate a closed mesh with it", who, v);
     if (vface[v] == kNone) return fmt::format("{}: vertex {} gets no V-face from one step of {}", who, v, scheme_->name);
     for (const auto& [source, w] : mean_row(s, h.levels[1].face(vface[v]))) row.add(source, w);
     return {};

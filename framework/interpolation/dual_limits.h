@@ -11,7 +11,7 @@
 // The masks are read from the scheme's own first-step stencils, so no weights are assumed;
 // dual_centroid_mismatch checks the centroid property on the mesh one step further down.
 // Interior vertices only: a boundary vertex's V-face is open and follows the boundary
-// curve; its limit is left to issue 6's masks.
+// curve, and no exact mask is known for it: such vertices are refused.
 #include <memory>
 #include <string>
 
@@ -24,7 +24,9 @@ class DualCentroidLimit final : public LimitEvaluator {
 public:
   DualCentroidLimit(std::shared_ptr<const Scheme> scheme, RefineOptions options);
   std::string name() const override;
-  StencilTable limit_stencils(const Level& level) const override;
+
+protected:
+  StencilTable stencils_at(const Level& level, int step) const override;
 
 private:
   std::shared_ptr<const Scheme> scheme_;

@@ -6,8 +6,9 @@
 #include <fmt/ranges.h>
 #include <mutex>
 
-#include "framework/interpolation/closed_form_limits.h"
+#include "framework/interpolation/analysed_limit.h"
 #include "framework/interpolation/dual_limits.h"
+#include "framework/interpolation/interpolatory_limit.h"
 #include "framework/interpolation/shape_two_step.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -105,25 +106,26 @@ void apply_lambda(Hierarchy& h, const Scheme& first, const LimitSelectionOptions
 }
 
 Hierarchy refine_prefix(const std::vector<CompositeLimit::Run>& prefix, const Level& level,
-                        const LimitSelectionOptions& o) {
+                        const LimitSelectionOptions& o, int step) {
   const auto runs = as_runs(prefix);
-  Hierarchy h = refine(runs, level, refine_options(o, 0, o.first_step));
+  Hierarchy h = refine(runs, level, refine_options(o, 0, step));
   if (!prefix.empty()) apply_lambda(h, *prefix.front().scheme, o);
   return h;
 }
 
-std::vector<std::shared_ptr<const LimitEvaluator>> candidates(const Scheme& scheme, const FeatureOptions& f) {
-  std::vector<std::shared_ptr<const LimitEvaluator>> c{
-      std::make_shared<CatmullClarkLimit>(f), std::make_shared<LoopLimit>(LoopBeta::Loop, f),
-      std::make_shared<LoopLimit>(LoopBeta::Warren, f), std::make_shared<Sqrt3Limit>(f),
-      std::make_shared<InterpolatoryLimit>()};
+// The identity first (cheap, and exact for interpolatory schemes), then the scheme's own
+// eigen-analysis, then what plugins registered.
+std::vector<std::shared_ptr<const LimitEvaluator>> candidates(const std::shared_ptr<const Scheme>& scheme,
+                                                              const FeatureOptions& f) {
+  std::vector<std::shared_ptr<const LimitEvaluator>> c{std::make_shared<InterpolatoryLimit>(),
+                                                       std::make_shared<AnalysedLimit>(scheme, f)};
   std::vector<std::pair<std::string, LimitMaskProvider>> providers;
   {
     std::lock_guard lock(registry().mutex);
     providers = registry().providers;
   }
   for (const auto& [name, provider] : providers)
-    if (auto e = provider(scheme, f)) c.push_back(std::move(e));
+    if (auto e = provider(*scheme, f)) c.push_back(std::move(e));
   return c;
 }
 
@@ -164,12 +166,12 @@ namespace {
 
 // l S = l on one refinement step `h` (levels[0] -> levels[1]) of `scheme`.
 std::string invariance_mismatch(const LimitEvaluator& evaluator, const Scheme& scheme, const Hierarchy& h,
-                                const std::vector<Index>& children) {
+                                const std::vector<Index>& children, int step) {
   const Level& level = h.levels[0];
   StencilTable here, below;
   try {
-    here = evaluator.limit_stencils(level);
-    below = evaluator.limit_stencils(h.levels[1]);
+    here = evaluator.limit_stencils(level, step);
+    below = evaluator.limit_stencils(h.levels[1], step + 1);
   } catch (const Error& e) {
     return e.what();
   }
@@ -194,7 +196,7 @@ std::string invariance_mismatch(const LimitEvaluator& evaluator, const Scheme& s
   } catch (const Error& e) {
     return e.what();
   }
-  return invariance_mismatch(evaluator, scheme, h, children);
+  return invariance_mismatch(evaluator, scheme, h, children, options.first_step);
 }
 
 CompositeLimit::CompositeLimit(std::vector<Run> prefix, std::shared_ptr<const LimitEvaluator> tail,
@@ -207,9 +209,9 @@ std::string CompositeLimit::name() const {
   return fmt::format("{} after {}{}", tail_->name(), runs, options_.lambda.empty() ? "" : " (lambda per vertex)");
 }
 
-StencilTable CompositeLimit::limit_stencils(const Level& level) const {
-  const Hierarchy h = refine_prefix(prefix_, level, options_);
-  const StencilTable tail = tail_->limit_stencils(h.levels.back());
+StencilTable CompositeLimit::stencils_at(const Level& level, int step) const {
+  const Hierarchy h = refine_prefix(prefix_, level, options_, step);
+  const StencilTable tail = tail_->limit_stencils(h.levels.back(), step + int(h.stencils.size()));
   StencilTable rows = select_rows(tail, vertex_descendants(h));
   for (size_t l = h.stencils.size(); l-- > 0;) rows = compose(h.stencils[l], rows);
   return rows;
@@ -236,9 +238,10 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
   const Scheme& tail = *seq.schemes.back();
 
   // The tail's mask on the level after the prefix, checked there.
-  const Hierarchy h = refine_prefix(prefix, base, o);
+  const Hierarchy h = refine_prefix(prefix, base, o, o.first_step);
   const Level& level = h.levels.back();
-  const RefineOptions step = refine_options(o, 1, o.first_step + prefix_levels);
+  const int tail_step = o.first_step + prefix_levels;
+  const RefineOptions step = refine_options(o, 1, tail_step);
   Hierarchy one_step = refine(tail, level, step);
   std::vector<Index> children;
   std::shared_ptr<const LimitEvaluator> tail_mask;
@@ -251,7 +254,7 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
     std::string why = dual_centroid_mismatch(tail, level, step);
     if (why.empty()) {
       try {
-        (void)dual->limit_stencils(level);
+        (void)dual->limit_stencils(level, tail_step);
       } catch (const Error& refused_here) {
         why = refused_here.what();
       }
@@ -264,10 +267,10 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
     }
     tail_mask = dual;
   }
-  // Closed forms and providers, for schemes with vertex points.
+  // Schemes with vertex points.
   if (!tail_mask) {
-    for (auto& candidate : candidates(tail, o.features)) {
-      std::string why = invariance_mismatch(*candidate, tail, one_step, children);
+    for (auto& candidate : candidates(seq.schemes.back(), o.features)) {
+      std::string why = invariance_mismatch(*candidate, tail, one_step, children, tail_step);
       if (why.empty()) {
         tail_mask = candidate;
         break;
@@ -281,10 +284,10 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
     for (const auto& r : refused) list += "\n  - " + r;
     const auto providers = limit_mask_provider_names();
     throw Error(fmt::format(
-        "scheme '{}' has no limit mask for this mesh; every candidate was refused:{}\n  {}", tail.name, list,
-        providers.empty() ? "No generic mask provider is registered: issue 6 (limit masks from the eigen-analysis "
-                            "of any scheme) plugs in through register_limit_mask_provider."
-                          : fmt::format("Registered providers ({}) had no mask either.", fmt::join(providers, ", "))));
+        "scheme '{}' has no limit mask for this mesh; every candidate was refused:{}\n  {}`subdiv analyze --scheme {}` "
+        "shows the eigenvalues behind this.", tail.name, list,
+        providers.empty() ? "" : fmt::format("Registered providers ({}) had no mask either. ", fmt::join(providers, ", ")),
+        tail.name));
   }
   const std::string checked = children.empty() ? "checked: every V-face keeps its centroid one step down"
                                                 : fmt::format("checked: l S = l for one step of {}", tail.name);
@@ -300,7 +303,7 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
     try {
       auto formula = o.lambda.empty() ? std::make_shared<ShapeTwoStepLimit>(lambda->second)
                                       : std::make_shared<ShapeTwoStepLimit>(o.lambda);
-      const StencilTable a = formula->limit_stencils(base), b = composite->limit_stencils(base);
+      const StencilTable a = formula->limit_stencils(base), b = composite->limit_stencils(base, o.first_step);
       bool same = true;
       for (Index v = 0; v < base.vertex_count && same; ++v) same = row_mismatch(a, v, b, v).empty();
       if (same)

@@ -12,10 +12,11 @@
 // Dual schemes (no vertex points) take dual_limits.h's V-face centroids, checked by their
 // own test (every V-face keeps its centroid one step down).
 //
-// Candidates, in order: the closed forms of closed_form_limits.h, then every provider
-// registered with register_limit_mask_provider. Issue 6 (limit masks from the
-// eigen-analysis of any scheme's local subdivision matrices) plugs in there; until it
-// does, a scheme none of the closed forms fits is refused with each candidate's reason.
+// Candidates, in order: the identity (interpolatory schemes), the masks of the scheme's own
+// eigen-analysis (analysed_limit.h), then every provider registered with
+// register_limit_mask_provider (a plugin's closed forms, say). A scheme none fits (its
+// local subdivision matrices have no convergent eigenvector of 1) is refused with each
+// candidate's reason.
 //
 // Sequences "A:k,...,B" (seed 001's "catmull-clark-shape:1,catmull-clark"): the prefix
 // runs are applied once and B forever after, so the limit is B's mask on the level after
@@ -33,8 +34,8 @@
 
 namespace subdiv {
 
-// Issue 6's hook: return an evaluator for `scheme` (or nullptr when the provider has no
-// mask for it). Providers are tried after the closed forms and are checked like them.
+// A plugin's hook: return an evaluator for `scheme` (or nullptr when the provider has no
+// mask for it). Providers are tried after the built-in candidates and checked like them.
 using LimitMaskProvider =
     std::function<std::shared_ptr<const LimitEvaluator>(const Scheme& scheme, const FeatureOptions& features)>;
 void register_limit_mask_provider(const std::string& name, LimitMaskProvider provider);
@@ -80,7 +81,9 @@ public:
   };
   CompositeLimit(std::vector<Run> prefix, std::shared_ptr<const LimitEvaluator> tail, LimitSelectionOptions options);
   std::string name() const override;
-  StencilTable limit_stencils(const Level& level) const override;
+
+protected:
+  StencilTable stencils_at(const Level& level, int step) const override;
 
 private:
   std::vector<Run> prefix_;

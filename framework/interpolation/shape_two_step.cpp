@@ -62,7 +62,7 @@ std::string ShapeTwoStepLimit::name() const {
   return "seed 001 formula (2), two-step Catmull-Clark, lambda per vertex";
 }
 
-StencilTable ShapeTwoStepLimit::limit_stencils(const Level& level) const {
+StencilTable ShapeTwoStepLimit::stencils_at(const Level& level, int) const {
   if (lambda_.size() != 1 && lambda_.size() != size_t(level.vertex_count))
     throw Error(fmt::format("seed 001 formula (2): {} lambda values for a mesh of {} vertices", lambda_.size(),
                             level.vertex_count));

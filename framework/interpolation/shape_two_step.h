@@ -51,8 +51,10 @@ public:
   explicit ShapeTwoStepLimit(double lambda);
   explicit ShapeTwoStepLimit(std::vector<double> lambda_per_vertex);
   std::string name() const override;
-  StencilTable limit_stencils(const Level& level) const override;
   double lambda(Index v) const { return lambda_.size() == 1 ? lambda_[0] : lambda_[v]; }
+
+protected:
+  StencilTable stencils_at(const Level& level, int step) const override;  // the base mesh (step ignored)
 
 private:
   std::vector<double> lambda_;

@@ -1,15 +1,20 @@
-// The generic method: closed-form limit masks, their selection by l S = l, Chen et al.'s
-// progressive interpolation on plain Catmull-Clark, Loop, dual schemes, and the refusals.
+// The generic method: limit masks from each scheme's eigen-analysis checked against the
+// seeds' closed forms (written out by hand in closed_form_limits.h), their selection by
+// l S = l, Chen et al.'s progressive interpolation on plain Catmull-Clark, Loop, sqrt(3),
+// user schemes, features, dual schemes, and the refusals.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <numbers>
 
-#include "framework/interpolation/closed_form_limits.h"
+#include "closed_form_limits.h"
+#include "framework/interpolation/analysed_limit.h"
 #include "framework/interpolation/dual_limits.h"
+#include "framework/interpolation/interpolatory_limit.h"
 #include "framework/interpolation/limit_selection.h"
 #include "framework/interpolation/progressive.h"
 #include "framework/scheme/scheme.h"
@@ -34,8 +39,50 @@ P3 loop_limit_point(const Level& L, const std::vector<double>& x, Index v) {
   return s;
 }
 
+LimitChoice choose(const std::string& scheme, const Level& L, const ParameterOverrides& p = {}) {
+  return select_limit(load_scheme_sequence(scheme, 1, p), L);
+}
 LimitChoice choose(const std::string& scheme, const Mesh& m, const ParameterOverrides& p = {}) {
-  return select_limit(load_scheme_sequence(scheme, 1, p), m.level());
+  return choose(scheme, m.level(), p);
+}
+
+// The largest difference between two limit operators, weight by weight.
+double max_row_difference(const StencilTable& a, const StencilTable& b) {
+  REQUIRE(a.row_count() == b.row_count());
+  double worst = 0;
+  for (Index r = 0; r < a.row_count(); ++r) {
+    std::map<Index, double> w;
+    for (Index i = a.offsets[r]; i < a.offsets[r + 1]; ++i) w[a.indices[i]] += a.weights[i];
+    for (Index i = b.offsets[r]; i < b.offsets[r + 1]; ++i) w[b.indices[i]] -= b.weights[i];
+    for (const auto& [s, d] : w) worst = std::max(worst, std::abs(d));
+  }
+  return worst;
+}
+
+// The analysed operator a scheme gets on a level (after the l S = l check).
+StencilTable analysed(const std::string& scheme, const Level& L, const ParameterOverrides& p = {}) {
+  const LimitChoice c = choose(scheme, L, p);
+  REQUIRE(dynamic_cast<const AnalysedLimit*>(c.evaluator.get()) != nullptr);
+  return c.evaluator->limit_stencils(L);
+}
+
+// Vertex points after `levels` steps approach the limit: the distance falls geometrically.
+void check_refinement_approaches(const std::string& scheme, const Level& L, const std::vector<double>& x,
+                                 const StencilTable& limit) {
+  const std::vector<double> l = limit.apply(x, 3);
+  RefineOptions o;
+  o.levels = 7;
+  const Hierarchy h = refine(*load_scheme(scheme), L, o);
+  std::vector<std::vector<double>> points{x};
+  for (const auto& s : h.stencils) points.push_back(s.apply(points.back(), 3));
+  Hierarchy two = h, seven = h;
+  two.levels.resize(3), two.origins.resize(2), two.stencils.resize(2);
+  const auto c2 = vertex_descendants(two), c7 = vertex_descendants(seven);
+  for (Index v = 0; v < L.vertex_count; ++v) {
+    const double e2 = dist(at(points[2], c2[v]), at(l, v)), e7 = dist(at(points[7], c7[v]), at(l, v));
+    CHECK(e7 < 1e-3);
+    CHECK(e7 <= e2 / 20 + 1e-14);
+  }
 }
 
 template <class T>
@@ -45,46 +92,45 @@ bool uses(const LimitChoice& c) {
 
 }  // namespace
 
-TEST_CASE("the Catmull-Clark mask is seed 000's formula on quads, and the limit of deep refinement") {
-  for (const Mesh& mesh : {cross_mesh(), torus(6, 5)}) {
+TEST_CASE("Catmull-Clark's analysed masks are seed 000's formula, and the limit of deep refinement") {
+  for (const Mesh& mesh : {cross_mesh(), torus(6, 5), pyramid(), cube()}) {
     const Level L = mesh.level();
-    std::vector<double> got(mesh.positions.size());
-    CatmullClarkLimit().limit_points(L, mesh.positions, got);
-    for (Index v = 0; v < L.vertex_count; ++v) CHECK(dist(at(got, v), cc_limit_point(L, mesh.positions, v)) < 1e-14);
-    // Vertex points of 2 and 6 levels: their distance to the limit falls geometrically.
-    const auto r2 = refine_mesh(mesh, "catmull-clark", 2), r6 = refine_mesh(mesh, "catmull-clark", 6);
-    const auto c2 = vertex_descendants(r2.hierarchy), c6 = vertex_descendants(r6.hierarchy);
-    for (Index v = 0; v < L.vertex_count; ++v) {
-      const double e2 = dist(at(r2.positions, c2[v]), at(got, v)), e6 = dist(at(r6.positions, c6[v]), at(got, v));
-      CHECK(e6 < 1e-3);
-      CHECK(e6 < e2 / 50);  // valence 3 converges slowest: about 1/3 per level
-    }
+    const StencilTable t = analysed("catmull-clark", L);
+    CHECK(max_row_difference(t, CatmullClarkLimit().limit_stencils(L)) < 1e-12);
+    const std::vector<double> got = t.apply(mesh.positions, 3);
+    bool quads = true;
+    for (Index f = 0; f < L.face_count(); ++f) quads &= L.face_size(f) == 4;
+    if (quads)
+      for (Index v = 0; v < L.vertex_count; ++v) CHECK(dist(at(got, v), cc_limit_point(L, mesh.positions, v)) < 1e-12);
+    check_refinement_approaches("catmull-clark", L, mesh.positions, t);
   }
 }
 
-TEST_CASE("the Loop mask is seed 000's gamma_n form") {
-  const Mesh mesh = bipyramid(7);
-  const Level L = mesh.level();
-  std::vector<double> got(mesh.positions.size());
-  LoopLimit().limit_points(L, mesh.positions, got);
-  for (Index v = 0; v < L.vertex_count; ++v) CHECK(dist(at(got, v), loop_limit_point(L, mesh.positions, v)) < 1e-14);
+TEST_CASE("Loop's and sqrt(3)'s analysed masks are seed 000's gamma_n and Kobbelt's b_n forms") {
+  for (const Mesh& mesh : {bipyramid(7), octahedron(), bipyramid(3)}) {
+    const Level L = mesh.level();
+    const StencilTable t = analysed("loop", L);
+    const std::vector<double> got = t.apply(mesh.positions, 3);
+    for (Index v = 0; v < L.vertex_count; ++v) CHECK(dist(at(got, v), loop_limit_point(L, mesh.positions, v)) < 1e-12);
+    CHECK(max_row_difference(analysed("loop", L, {{"beta", "warren"}}), LoopLimit(LoopBeta::Warren).limit_stencils(L)) <
+          1e-12);
+    CHECK(max_row_difference(analysed("sqrt3", L), Sqrt3Limit().limit_stencils(L)) < 1e-12);
+    check_refinement_approaches("loop", L, mesh.positions, t);
+  }
 }
 
 TEST_CASE("masks are chosen by l S = l on the mesh, not by name") {
-  CHECK(uses<CatmullClarkLimit>(choose("catmull-clark", cross_mesh())));
-  CHECK(uses<CatmullClarkLimit>(choose("catmull-clark", pyramid())));
-  CHECK(uses<CatmullClarkLimit>(choose("catmull-clark", grid(3, 2))));
-  auto loop_beta_of = [](const LimitChoice& c) { return dynamic_cast<const LoopLimit&>(*c.evaluator).beta(); };
-  CHECK(loop_beta_of(choose("loop", bipyramid(5))) == LoopBeta::Loop);
-  CHECK(loop_beta_of(choose("loop", bipyramid(5), {{"beta", "warren"}})) == LoopBeta::Warren);
-  CHECK(loop_beta_of(choose("loop", grid(3, 2, true))) == LoopBeta::Loop);
-  CHECK(uses<Sqrt3Limit>(choose("sqrt3", octahedron())));
+  CHECK(uses<AnalysedLimit>(choose("catmull-clark", grid(3, 2))));
+  CHECK(uses<AnalysedLimit>(choose("loop", grid(3, 2, true))));
+  CHECK(uses<AnalysedLimit>(choose("quad-bspline", cross_mesh())));
   CHECK(uses<InterpolatoryLimit>(choose("butterfly", octahedron())));
+  CHECK(uses<InterpolatoryLimit>(choose("modified-butterfly", octahedron())));
   CHECK(uses<InterpolatoryLimit>(choose("bilinear", cube())));
-  // Every candidate's mask passes or fails the test on its own merits.
+  // The checker refuses a wrong mask on its own merits: Warren's weights are not Loop's.
   const Level L = octahedron().level();
   CHECK_FALSE(invariance_mismatch(LoopLimit(LoopBeta::Warren), *load_scheme("loop"), L, {}).empty());
   CHECK(invariance_mismatch(LoopLimit(LoopBeta::Loop), *load_scheme("loop"), L, {}).empty());
+  CHECK_FALSE(invariance_mismatch(InterpolatoryLimit(), *load_scheme("loop"), L, {}).empty());
 }
 
 TEST_CASE("Chen et al. 2008: progressive interpolation on plain Catmull-Clark converges on the cross and the torus") {
@@ -117,7 +163,16 @@ TEST_CASE("Chen et al. 2008: progressive interpolation on plain Catmull-Clark co
   }
 }
 
-TEST_CASE("the generic method runs on Loop") {
+TEST_CASE("the generic method runs on Loop and sqrt(3)") {
+  for (const Mesh& mesh : {octahedron(), bipyramid(5)}) {
+    const Level L = mesh.level();
+    const LimitChoice c = choose("sqrt3", mesh);
+    const ProgressiveResult r = progressive_interpolation(*c.evaluator, L, mesh.positions, {});
+    REQUIRE(r.converged);
+    const StencilTable kobbelt = Sqrt3Limit().limit_stencils(L);
+    const std::vector<double> reached = kobbelt.apply(r.control, 3);
+    for (Index v = 0; v < L.vertex_count; ++v) CHECK(dist(at(reached, v), at(mesh.positions, v)) < 1e-10);
+  }
   const Mesh mesh = bipyramid(6);
   const Level L = mesh.level();
   const ProgressiveResult r = progressive_interpolation(*choose("loop", mesh).evaluator, L, mesh.positions, {});
@@ -126,26 +181,47 @@ TEST_CASE("the generic method runs on Loop") {
     CHECK(dist(loop_limit_point(L, r.control, v), at(mesh.positions, v)) < 1e-10 + 1e-14);
 }
 
-TEST_CASE("refusals: schemes without limit masks, dual schemes, missing vertices") {
-  // A user scheme: Catmull-Clark with a different vertex rule has no closed-form mask.
+TEST_CASE("user schemes get their masks from the analysis; divergent ones are refused") {
   const auto dir = std::filesystem::temp_directory_path() / "subdivkit-interp-user";
   std::filesystem::create_directories(dir);
-  const auto json = dir / "cc-variant.json";
-  std::ofstream(json) << R"json({"name": "cc-variant", "split": "quad", "faces": "any", "curve": "cubic-bspline",
+  // Catmull-Clark's face and edge points with a different vertex rule: no closed form is
+  // known to us, the analysis finds the mask, and deep refinement agrees with it.
+  const auto variant = dir / "cc-variant.json";
+  std::ofstream(variant) << R"json({"name": "cc-variant", "split": "quad", "faces": "any", "curve": "cubic-bspline",
     "rules": {"face": [{"sum": "vertices", "w": "1/k"}],
               "edge": [{"sum": "ends", "w": "1/4"}, {"sum": "faces", "new": "face", "w": "1/4"}],
               "vertex": [{"at": "self", "w": "1/2"}, {"sum": "ring", "w": "1/(2*n)"}]}})json";
-  CHECK_THROWS_WITH_AS(choose(json.string(), cube()), doctest::Contains("has no limit mask"), Error);
-  CHECK_THROWS_WITH_AS(choose(json.string(), cube()), doctest::Contains("issue 6"), Error);
-  // A provider (issue 6's hook) is consulted and checked like the closed forms.
+  const Mesh cross = cross_mesh();
+  const LimitChoice c = choose(variant.string(), cross);
+  CHECK(uses<AnalysedLimit>(c));
+  const StencilTable t = c.evaluator->limit_stencils(cross.level());
+  check_refinement_approaches(variant.string(), cross.level(), cross.positions, t);
+  const ProgressiveResult r = progressive_interpolation(t, cross.positions, {}, {});
+  REQUIRE(r.converged);
+  const std::vector<double> reached = t.apply(r.control, 3);
+  for (Index v = 0; v < cross.level().vertex_count; ++v) CHECK(dist(at(reached, v), at(cross.positions, v)) < 1e-10);
+
+  // v' = 2 v - mean(ring) over bilinear edge points: v - mean(e) grows by 3/2 per step, so
+  // 1 is not the dominant eigenvalue and no limit exists.
+  const auto divergent = dir / "divergent.json";
+  std::ofstream(divergent) << R"json({"name": "divergent", "split": "quad", "faces": "any", "curve": "cubic-bspline",
+    "rules": {"face": [{"sum": "vertices", "w": "1/k"}],
+              "edge": [{"sum": "ends", "w": "1/2"}],
+              "vertex": [{"at": "self", "w": "2"}, {"sum": "ring", "w": "-1/n"}]}})json";
+  CHECK_THROWS_WITH_AS(choose(divergent.string(), cube()), doctest::Contains("has no limit mask"), Error);
+  CHECK_THROWS_WITH_AS(choose(divergent.string(), cube()), doctest::Contains("subdiv analyze --scheme divergent"), Error);
+  // A provider (a plugin's hook) is consulted after the analysis and checked like it.
   int asked = 0;
   register_limit_mask_provider("test provider", [&](const Scheme& s, const FeatureOptions&) {
     ++asked;
-    return s.name == "cc-variant" ? std::make_shared<CatmullClarkLimit>() : nullptr;
+    return s.name == "divergent" ? std::make_shared<CatmullClarkLimit>() : nullptr;
   });
-  CHECK_THROWS_WITH_AS(choose(json.string(), cube()), doctest::Contains("Registered providers (test provider)"), Error);
+  CHECK_THROWS_WITH_AS(choose(divergent.string(), cube()), doctest::Contains("Registered providers (test provider)"),
+                       Error);
   CHECK(asked > 0);
-  // Selections.
+}
+
+TEST_CASE("refusals: missing vertices in a selection") {
   CHECK_THROWS_WITH_AS(parse_vertex_selection("0,1,40", 40, "--select"), doctest::Contains("vertex 40 does not exist"), Error);
   CHECK_THROWS_WITH_AS(parse_vertex_selection("0,-1", 40, "--select"), doctest::Contains("does not exist"), Error);
   CHECK_THROWS_WITH_AS(parse_vertex_selection("0,x", 40, "--select"), doctest::Contains("'x' is not a vertex id"), Error);
@@ -154,13 +230,21 @@ TEST_CASE("refusals: schemes without limit masks, dual schemes, missing vertices
   const auto s = parse_vertex_selection("3, 1 # a comment 7\n3\n", 5, "ids.txt");
   CHECK(s == std::vector<std::uint8_t>{0, 1, 0, 1, 0});
   CHECK(parse_vertex_selection("all", 3, "--select") == std::vector<std::uint8_t>{1, 1, 1});
-  // A dart has no closed-form mask; the vertex is named.
-  Level dart = torus(4, 4).level();
-  dart.edge_sharpness.assign(size_t(dart.edge_count()), 0.f);
-  dart.edge_sharpness[0] = 10.f;
-  CHECK_THROWS_WITH_AS(CatmullClarkLimit().limit_stencils(dart), doctest::Contains("is a dart"), Error);
-  dart.edge_sharpness[0] = 2.f;
-  CHECK_THROWS_WITH_AS(CatmullClarkLimit().limit_stencils(dart), doctest::Contains("semi-sharp"), Error);
+}
+
+TEST_CASE("darts and semi-sharp creases: exact masks through refinement, and interpolation converges") {
+  const Mesh mesh = torus(6, 5);
+  for (float sharpness : {10.f, 2.f, 1.5f}) {
+    Level L = mesh.level();
+    L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
+    L.edge_sharpness[0] = sharpness;  // one sharp edge: two darts, or a fading crease
+    const StencilTable t = analysed("catmull-clark", L);  // l S = l checked on this mesh
+    check_refinement_approaches("catmull-clark", L, mesh.positions, t);
+    const ProgressiveResult r = progressive_interpolation(t, mesh.positions, {}, {});
+    REQUIRE(r.converged);
+    const std::vector<double> reached = t.apply(r.control, 3);
+    for (Index v = 0; v < L.vertex_count; ++v) CHECK(dist(at(reached, v), at(mesh.positions, v)) < 1e-10);
+  }
 }
 
 TEST_CASE("creases and corners: cubic B-spline limits along infinitely sharp edges, corners stay") {
@@ -177,11 +261,14 @@ TEST_CASE("creases and corners: cubic B-spline limits along infinitely sharp edg
     if (L.vertex_sharpness.empty()) L.vertex_sharpness.assign(size_t(L.vertex_count), 0.f);
     L.vertex_sharpness[c.v] = float(c.sharpness);
   }
+  // The hand-written closed form (crease vertices (1/6, 2/3, 1/6), corners fixed) passes
+  // l S = l, and the analysed masks are it.
   CHECK(invariance_mismatch(CatmullClarkLimit(), *load_scheme("catmull-clark"), L, {}).empty());
-  const StencilTable t = CatmullClarkLimit().limit_stencils(L);
+  const StencilTable t = analysed("catmull-clark", L);
+  CHECK(max_row_difference(t, CatmullClarkLimit().limit_stencils(L)) < 1e-12);
   for (const auto& c : d.corners) {
     CHECK(t.row_size(c.v) == 1);
-    CHECK(weight_of(t, c.v, c.v) == 1.0);
+    CHECK(std::abs(weight_of(t, c.v, c.v) - 1.0) < 1e-12);
   }
 }
 

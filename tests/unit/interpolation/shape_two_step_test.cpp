@@ -6,7 +6,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "framework/interpolation/closed_form_limits.h"
+#include "closed_form_limits.h"
 #include "framework/interpolation/limit_selection.h"
 #include "framework/interpolation/shape_two_step.h"
 #include "framework/scheme/scheme_sequence.h"

@@ -1,7 +1,7 @@
 #pragma once
-// Closed-form limit masks (seed 000 §5) for schemes whose masks are known in closed form.
-// None of them knows a scheme by name: limit_selection.h accepts one for a scheme only
-// when its mask is invariant under that scheme's actual stencils (l S = l).
+// Test references: closed-form limit masks (seed 000 §5, Kobbelt 2000) written out by hand,
+// to check the masks the engine derives from each scheme's eigen-analysis
+// (framework/interpolation/analysed_limit.h) against formulas computed elsewhere.
 //
 // Features follow the engine's classification (rules/feature_context.h, DeRose et al.
 // 1998): boundary edges and tags of sharpness >= 10 are infinitely sharp; a vertex on two
@@ -12,7 +12,7 @@
 #include "framework/interpolation/limit_evaluator.h"
 #include "framework/rules/feature_context.h"
 
-namespace subdiv {
+namespace subdiv::test {
 
 // Catmull-Clark. Interior vertex of valence n among quads (seed 000 §5):
 //   v_inf = (n^2 v + 4 sum e_j + sum f_j) / (n (n + 5)),
@@ -25,7 +25,9 @@ class CatmullClarkLimit final : public LimitEvaluator {
 public:
   explicit CatmullClarkLimit(FeatureOptions features = {}) : features_(features) {}
   std::string name() const override { return "Catmull-Clark closed form (seed 000)"; }
-  StencilTable limit_stencils(const Level& level) const override;
+
+protected:
+  StencilTable stencils_at(const Level& level, int step) const override;
 
 private:
   FeatureOptions features_;
@@ -43,8 +45,10 @@ public:
   explicit LoopLimit(LoopBeta beta = LoopBeta::Loop, FeatureOptions features = {})
       : beta_(beta), features_(features) {}
   std::string name() const override;
-  StencilTable limit_stencils(const Level& level) const override;
   LoopBeta beta() const { return beta_; }
+
+protected:
+  StencilTable stencils_at(const Level& level, int step) const override;
 
 private:
   LoopBeta beta_;
@@ -55,23 +59,17 @@ private:
 //   v_inf = (1 - b_n) v + (b_n / n) sum e_j,  b_n = 3 a_n / (1 + 3 a_n)
 // (invariant because one step makes the ring out of the face points (v + e_j + e_{j+1})/3).
 // Interior vertices and corners only: sqrt(3)'s boundaries are trisected every second step
-// and their limit is left to issue 6's masks.
+// and are left to the engine's analysed masks.
 class Sqrt3Limit final : public LimitEvaluator {
 public:
   explicit Sqrt3Limit(FeatureOptions features = {}) : features_(features) {}
   std::string name() const override { return "sqrt(3) closed form (Kobbelt 2000)"; }
-  StencilTable limit_stencils(const Level& level) const override;
+
+protected:
+  StencilTable stencils_at(const Level& level, int step) const override;
 
 private:
   FeatureOptions features_;
 };
 
-// Interpolatory schemes (butterfly, modified butterfly, bilinear, ...): old vertices never
-// move, so every vertex is its own limit point.
-class InterpolatoryLimit final : public LimitEvaluator {
-public:
-  std::string name() const override { return "interpolatory (vertices stay)"; }
-  StencilTable limit_stencils(const Level& level) const override;
-};
-
-}  // namespace subdiv
+}  // namespace subdiv::test

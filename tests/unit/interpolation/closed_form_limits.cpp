@@ -1,4 +1,4 @@
-#include "framework/interpolation/closed_form_limits.h"
+#include "closed_form_limits.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -7,7 +7,7 @@
 #include "framework/interpolation/limit_rows.h"
 #include "framework/refine/child_tags.h"
 
-namespace subdiv {
+namespace subdiv::test {
 namespace {
 
 using detail::LimitRow;
@@ -59,12 +59,12 @@ std::string boundary_none(const Level& level, const FeatureOptions& o, const std
 
 std::string dart_message(const std::string& who, Index v) {
   return fmt::format("{}: vertex {} is a dart (one sharp edge); its limit has no closed form here. "
-                     "Generic masks from the scheme's eigen-analysis (issue 6) will cover it", who, v);
+                     "The engine's analysed masks cover it", who, v);
 }
 
 }  // namespace
 
-StencilTable CatmullClarkLimit::limit_stencils(const Level& level) const {
+StencilTable CatmullClarkLimit::stencils_at(const Level& level, int) const {
   const std::string who = name();
   if (auto why = boundary_none(level, features_, who); !why.empty()) throw Error(why);
   const FeatureView view(level, features_);
@@ -95,7 +95,7 @@ std::string LoopLimit::name() const {
   return beta_ == LoopBeta::Loop ? "Loop closed form (seed 000, Loop's beta)" : "Loop closed form (Warren's beta)";
 }
 
-StencilTable LoopLimit::limit_stencils(const Level& level) const {
+StencilTable LoopLimit::stencils_at(const Level& level, int) const {
   const std::string who = name();
   if (auto why = boundary_none(level, features_, who); !why.empty()) throw Error(why);
   const FeatureView view(level, features_);
@@ -115,7 +115,7 @@ StencilTable LoopLimit::limit_stencils(const Level& level) const {
   });
 }
 
-StencilTable Sqrt3Limit::limit_stencils(const Level& level) const {
+StencilTable Sqrt3Limit::stencils_at(const Level& level, int) const {
   const std::string who = name();
   const FeatureView view(level, features_);
   return detail::build_limit_rows(level.vertex_count, level.vertex_count, [&](Index v, LimitRow& row) -> std::string {
@@ -131,7 +131,7 @@ StencilTable Sqrt3Limit::limit_stencils(const Level& level) const {
     }
     if (c != Context::Smooth)
       return fmt::format("{}: vertex {} is on a boundary or crease; sqrt(3)'s curve limit (trisected every "
-                         "second step) is left to issue 6's generic masks", who, v);
+                         "second step) is left to the engine's analysed masks", who, v);
     const int n = level.valence(v);
     const double a = (4 - 2 * std::cos(2 * std::numbers::pi / n)) / 9, b = 3 * a / (1 + 3 * a);
     row.add(v, 1 - b);
@@ -140,11 +140,4 @@ StencilTable Sqrt3Limit::limit_stencils(const Level& level) const {
   });
 }
 
-StencilTable InterpolatoryLimit::limit_stencils(const Level& level) const {
-  return detail::build_limit_rows(level.vertex_count, level.vertex_count, [](Index v, LimitRow& row) -> std::string {
-    row.add(v, 1.0);
-    return {};
-  });
-}
-
-}  // namespace subdiv
+}  // namespace subdiv::test
