@@ -1,8 +1,23 @@
-// sqrt(3) split (Kobbelt 2000; seed 000 §4): a new point in every face, joined to the face's
-// corners; every old interior edge is flipped to join the two new points beside it.
-// Boundary and sharp edges are not flipped: in odd steps (counted from 1 at the input) the
-// triangle beside them is kept whole, in even steps the edge is trisected, so two steps
-// give a 1-to-9 split of boundary triangles as well (Kobbelt's boundary rule).
+// sqrt(3) split (Kobbelt 2000, section 5; seed 000 §4): a new point in every face, joined to
+// the face's corners; every old interior edge is flipped to join the two new points beside it.
+// Boundary and sharp ("feature") edges are never flipped; Kobbelt's boundary rule alternates:
+//
+//  - odd steps (the 1st, 3rd, ... counted from the input): the triangle beside a feature
+//    edge gets its face point like any other, joined to the edge's two ends, and the
+//    triangle (a, b, face point) is kept whole;
+//  - even steps: the feature edge a-b is trisected (a, p_a, p_b, b) and the triangle
+//    (a, b, c) beside it gets NO face point: it becomes the middle triangle (p_a, p_b, c),
+//    and its two other edges are flipped to the trisection point at their end, a-c to
+//    p_a-x and b-c to p_b-y, x and y being the new points beside a-c and b-c in the
+//    neighbouring triangles.
+//
+// Two steps therefore make a 1-to-9 split of every triangle, boundary triangles included,
+// the boundary has 3x the edges, F' = 3F in every step, and a boundary vertex with k faces
+// gets k+1 faces in the odd step and k again in the even one (so regular boundary
+// vertices keep valence 4 at even levels). After an odd step every triangle has at most
+// one feature edge; a triangle with two or three in an even step (its input did not come
+// from an odd sqrt3 step: --start-level 1 on another mesh, or a scheme sequence) keeps its
+// face point, joined to its corners and trisection points.
 #include <fmt/format.h>
 
 #include "framework/refine/child_tags.h"
@@ -19,8 +34,10 @@ bool is_feature_edge(const Level& L, Index e) {
 struct Sqrt3Builder {
   const Level& L;
   bool trisect;
-  Index face_point_base;
-  std::vector<Index> trisection_base;  // per edge: first of its two new points, or kNone
+  std::vector<Index> face_point;        // per face: its new point, or kNone (even steps:
+                                        // a triangle with exactly one feature edge)
+  std::vector<Index> face_feature_edge;  // per face without a face point: its feature edge
+  std::vector<Index> trisection_base;    // per edge: first of its two new points, or kNone
   std::vector<Index> offsets{0}, corners;
   std::vector<Index> parent_face;
 
@@ -30,17 +47,41 @@ struct Sqrt3Builder {
     parent_face.push_back(f);
   }
 
-  // The triangles between face f's new point and its feature edge e, run by f from a to b.
+  // The trisection point of feature edge e next to its end v.
+  Index trisection_point(Index e, Index v) const {
+    return trisection_base[e] + (L.edge_vertices[2 * e] == v ? 0 : 1);
+  }
+
+  // The new point that stands for face f across its (non-feature) edge e: the face point,
+  // or, in a triangle without one, the trisection point of its feature edge at the end the
+  // two edges share.
+  Index representative(Index f, Index e) const {
+    if (face_point[f] != kNone) return face_point[f];
+    const Index fe = face_feature_edge[f];
+    const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
+    const Index shared = (a == L.edge_vertices[2 * fe] || a == L.edge_vertices[2 * fe + 1]) ? a : b;
+    return trisection_point(fe, shared);
+  }
+
+  // The triangles of face f beside its feature edge e, run by f from a to b.
   void add_feature_side(Index e, Index f, Index a, Index b) {
-    const Index c = face_point_base + f;
+    if (face_point[f] == kNone) {
+      // The middle triangle (p_a, p_b, c) of a triangle without a face point.
+      const Index c = third_vertex(f, a, b);
+      return add_triangle(trisection_point(e, a), trisection_point(e, b), c, f);
+    }
+    const Index c = face_point[f];
     if (!trisect) return add_triangle(a, b, c, f);
-    // New points sit at 1/3 and 2/3 along the edge's own direction.
-    const bool forward = L.edge_vertices[2 * e] == a;
-    const Index p_near_a = trisection_base[e] + (forward ? 0 : 1);
-    const Index p_near_b = trisection_base[e] + (forward ? 1 : 0);
+    const Index p_near_a = trisection_point(e, a), p_near_b = trisection_point(e, b);
     add_triangle(a, p_near_a, c, f);
     add_triangle(p_near_a, p_near_b, c, f);
     add_triangle(p_near_b, b, c, f);
+  }
+
+  Index third_vertex(Index f, Index a, Index b) const {
+    for (Index i = L.face_offsets[f]; i < L.face_offsets[f + 1]; ++i)
+      if (L.face_vertices[i] != a && L.face_vertices[i] != b) return L.face_vertices[i];
+    return kNone;
   }
 
   void add_edge(Index e) {
@@ -52,7 +93,7 @@ struct Sqrt3Builder {
       return;
     }
     // f0 lies left of a->b: the flipped edge joins c0 (left) and c1 (right).
-    const Index c0 = face_point_base + f0, c1 = face_point_base + f1;
+    const Index c0 = representative(f0, e), c1 = representative(f1, e);
     add_triangle(a, c1, c0, f0);
     add_triangle(b, c0, c1, f1);
   }
@@ -61,28 +102,39 @@ struct Sqrt3Builder {
 }  // namespace
 
 SplitResult split_sqrt3(const Level& parent, int step_index) {
-  const Index V = parent.vertex_count, F = parent.face_count();
+  const Index V = parent.vertex_count, F = parent.face_count(), E = parent.edge_count();
   for (Index f = 0; f < F; ++f)
     if (parent.face_size(f) != 3)
       throw Error(fmt::format("the sqrt3 split needs triangles, but face {} has {} vertices", f, parent.face_size(f)));
-  Sqrt3Builder b{parent, step_index % 2 == 1, V, std::vector<Index>(parent.edge_count(), kNone), {0}, {}, {}};
+  const bool trisect = step_index % 2 == 1;
+  Sqrt3Builder b{parent, trisect, std::vector<Index>(F, kNone), std::vector<Index>(F, kNone),
+                 std::vector<Index>(E, kNone), {0}, {}, {}};
   ChildOrigins o;
   auto add_origin = [&](OriginKind kind, Index p, std::uint8_t local) {
     o.kind.push_back(kind), o.parent.push_back(p), o.local.push_back(local);
   };
   for (Index v = 0; v < V; ++v) add_origin(OriginKind::Vertex, v, 0);
-  for (Index f = 0; f < F; ++f) add_origin(OriginKind::Face, f, 0);
-  Index next = V + F;
-  if (b.trisect)
-    for (Index e = 0; e < parent.edge_count(); ++e)
+  // In trisecting steps a triangle with exactly one feature edge gets no face point.
+  if (trisect)
+    for (Index f = 0; f < F; ++f) {
+      int features = 0;
+      for (Index i = parent.face_offsets[f]; i < parent.face_offsets[f + 1]; ++i)
+        if (is_feature_edge(parent, parent.face_edges[i])) ++features, b.face_feature_edge[f] = parent.face_edges[i];
+      if (features != 1) b.face_feature_edge[f] = kNone;
+    }
+  Index next = V;
+  for (Index f = 0; f < F; ++f)
+    if (b.face_feature_edge[f] == kNone) b.face_point[f] = next++, add_origin(OriginKind::Face, f, 0);
+  if (trisect)
+    for (Index e = 0; e < E; ++e)
       if (is_feature_edge(parent, e)) {
         b.trisection_base[e] = next;
         next += 2;
         add_origin(OriginKind::Edge, e, 0), add_origin(OriginKind::Edge, e, 1);
       }
-  for (Index e = 0; e < parent.edge_count(); ++e) b.add_edge(e);
+  for (Index e = 0; e < E; ++e) b.add_edge(e);
   o.parent_face = std::move(b.parent_face);
-  SplitResult result{build_level(next, b.offsets, b.corners), std::move(o), b.trisect};
+  SplitResult result{build_level(next, b.offsets, b.corners), std::move(o), trisect};
 
   // Feature tags: a sharp edge's pieces keep its (decremented) sharpness.
   Level& child = result.child;
@@ -97,7 +149,7 @@ SplitResult split_sqrt3(const Level& parent, int step_index) {
       const float s = decremented_sharpness(parent.edge_sharpness[e]);
       const Index a = parent.edge_vertices[2 * e], bb = parent.edge_vertices[2 * e + 1];
       std::vector<Index> chain{a};
-      if (b.trisect) chain.insert(chain.end(), {b.trisection_base[e], b.trisection_base[e] + 1});
+      if (trisect) chain.insert(chain.end(), {b.trisection_base[e], b.trisection_base[e] + 1});
       chain.push_back(bb);
       for (size_t i = 0; i + 1 < chain.size(); ++i)
         child.edge_sharpness[find_edge(child, chain[i], chain[i + 1])] = s;

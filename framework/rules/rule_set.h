@@ -68,6 +68,9 @@ struct StepRules {
   // Whether crease/boundary defaults come from the curve scheme: true for single-step
   // schemes; in schemes with smoothing passes the passes shape the features instead.
   bool curve_rules_apply = true;
+  // A split's own curve scheme ("curve" in a split step): its crease and boundary rules come
+  // from this curve, with or without smoothing passes after it; null: the scheme's curve.
+  std::shared_ptr<const CurveScheme> curve;
   std::string where;
   // Geometry written in C++ (plugin schemes, rules/code_rules.h): linear code rules give the
   // stencil rows in place of `rules`; a non-linear rule replaces stencils altogether.

@@ -106,14 +106,18 @@ WeightTables prepare_weight_tables(const StepRules& step, const FormulaScope& sc
     if (!r[int(Context::Dart)].defined) r[int(Context::Dart)] = r[int(Context::Smooth)];
     if (!r[int(Context::Corner)].defined) r[int(Context::Corner)] = stay_rule();
   }
-  if (scope.curve && step.curve_rules_apply) {
-    tables.curve_arity = scope.curve->arity;
-    for (int r = 0; r < scope.curve->arity; ++r) tables.curve_rules.push_back(curve_rule(*scope.curve, r, level));
+  // A split that names its own curve follows it; otherwise the scheme's curve, in one-step
+  // schemes only.
+  const CurveScheme* curve = step.curve ? step.curve.get() : step.curve_rules_apply ? scope.curve : nullptr;
+  if (curve) {
+    tables.curve_arity = curve->arity;
+    for (int r = 0; r < curve->arity; ++r) tables.curve_rules.push_back(curve_rule(*curve, r, level));
   }
   // In schemes with smoothing passes the curve scheme describes the result of the whole
-  // level: the split's features follow its own (linear) smooth rules, and a smoothing pass
-  // without a stated crease rule leaves feature vertices where they are.
-  if (!step.curve_rules_apply) {
+  // level: the split's features follow its own (linear) smooth rules unless it names its own
+  // curve, and a smoothing pass without a stated crease rule leaves feature vertices where
+  // they are.
+  if (!step.curve_rules_apply && !step.curve) {
     for (Element e : {Element::Vertex, Element::Edge, Element::Corner}) {
       auto& r = tables.rules[int(e)];
       if (r[int(Context::Crease)].defined) continue;

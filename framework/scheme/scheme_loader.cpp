@@ -326,69 +326,97 @@ std::set<std::string> elements_of_split(SplitKind split) {
 }
 
 // Either "split" + "rules" (one step), or "steps": [{"split": .., "rules": ..},
-// {"smooth": {"vertex": ..}}, ...] with the split first.
+// {"smooth": {"vertex": ..}}, ...] with the split first. Any step may carry "when" (kept
+// only where the formula is non-zero) and a pass "repeat"; a split may name its own "curve".
 struct Repeat {
   size_t step;
   std::string formula, where;
 };
 
-// A smoothing pass may repeat a number of times given by a formula of the parameters
-// (e.g. (d - 1)/2 for the degree-d quad B-spline); the passes are unrolled here.
-std::vector<StepRules> unroll_repeats(std::vector<StepRules> steps, const std::vector<Repeat>& repeats,
-                                      const Scheme& scheme) {
-  if (repeats.empty()) return steps;
+struct ParsedSteps {
+  std::vector<StepRules> steps;
+  std::vector<Repeat> repeats, whens;
+  std::vector<std::string> curves;  // per step: the split's own curve scheme, or ""
+  std::vector<Place> curve_places;
+};
+
+// Unrolls "repeat" and drops the steps whose "when" is zero, both evaluated once from the
+// parameters and definitions (e.g. (d - 1)/2 passes for the degree-d quad B-spline). Returns
+// the indices of the kept steps, in order.
+std::vector<size_t> unroll_steps(const ParsedSteps& parsed, const Scheme& scheme, const Place& at) {
   FormulaSet formulas(scheme.parameter_values(), scheme.definitions);
-  std::vector<StepRules> out;
-  for (size_t i = 0; i < steps.size(); ++i) {
+  auto value_of = [&](const Repeat& r) { return formulas.evaluate(formulas.add(r.formula, r.where), {}); };
+  std::vector<size_t> out;
+  for (size_t i = 0; i < parsed.steps.size(); ++i) {
     int count = 1;
-    for (const Repeat& r : repeats) {
+    for (const Repeat& r : parsed.whens) {
       if (r.step != i) continue;
-      const double v = formulas.evaluate(formulas.add(r.formula, r.where), {});
+      const double v = value_of(r);
+      if (!std::isfinite(v))
+        throw Error(fmt::format("{}: when '{}' gives {}; it must give a number (0: leave the step out)", r.where, r.formula, v));
+      if (v == 0) count = 0;
+    }
+    for (const Repeat& r : parsed.repeats) {
+      if (r.step != i || count == 0) continue;
+      const double v = value_of(r);
       if (!(v >= 0) || v != std::floor(v) || v > 64)
         throw Error(fmt::format("{}: repeat '{}' gives {}, not a whole number from 0 to 64", r.where, r.formula, v));
       count = int(v);
     }
-    for (int c = 0; c < count; ++c) out.push_back(steps[i]);
+    for (int c = 0; c < count; ++c) out.push_back(i);
   }
+  int splits = 0;
+  for (size_t i : out) splits += parsed.steps[i].is_split;
+  if (splits != 1 || !parsed.steps[out.front()].is_split)
+    fail(at / "steps", fmt::format("with these parameters {} split step(s) remain after \"when\"; exactly one must "
+                                   "remain (the first step of every level is its split)", splits));
   return out;
 }
 
-std::vector<StepRules> parse_steps(const Json& root, const Place& at, std::vector<Repeat>& repeats) {
-  std::vector<StepRules> steps;
+ParsedSteps parse_steps(const Json& root, const Place& at) {
+  ParsedSteps p;
   if (!root.contains("steps")) {
     StepRules step;
     step.split = parse_split(require(root, "split", at), at / "split");
     step.rules = parse_rules(require(root, "rules", at), at / "rules", elements_of_split(step.split));
     step.where = at.str();
-    steps.push_back(std::move(step));
-    return steps;
+    p.steps.push_back(std::move(step));
+    p.curves.emplace_back(), p.curve_places.push_back(at / "curve");
+    return p;
   }
   if (root.contains("split") || root.contains("rules"))
     fail(at, "give either \"split\" and \"rules\", or \"steps\", not both");
   const Json& list = root["steps"];
   if (!list.is_array() || list.empty()) fail(at / "steps", "expected a non-empty array of steps");
+  bool seen_pass = false;
   for (size_t i = 0; i < list.size(); ++i) {
     const Place here = (at / "steps")[i];
     StepRules step;
     step.where = here.str();
+    std::string curve;
     if (list[i].contains("smooth")) {
-      check_keys(list[i], {"smooth", "repeat"}, here);
+      check_keys(list[i], {"smooth", "repeat", "when"}, here);
       if (i == 0) fail(here, "the first step must be a split");
+      seen_pass = true;
       step.is_split = false;
       step.curve_rules_apply = false;
       step.rules = parse_rules(list[i]["smooth"], here / "smooth", {"vertex"});
-      if (list[i].contains("repeat")) {
-        repeats.push_back({steps.size(), as_formula(list[i]["repeat"], here / "repeat"), (here / "repeat").str()});
-      }
+      if (list[i].contains("repeat"))
+        p.repeats.push_back({p.steps.size(), as_formula(list[i]["repeat"], here / "repeat"), (here / "repeat").str()});
     } else {
-      check_keys(list[i], {"split", "rules"}, here);
-      if (i != 0) fail(here, "only the first step may be a split; later steps are smoothing passes");
+      check_keys(list[i], {"split", "rules", "curve", "when"}, here);
+      if (seen_pass)
+        fail(here, "splits come first: a later step is a smoothing pass (choose between splits with \"when\")");
       step.split = parse_split(require(list[i], "split", here), here / "split");
       step.rules = parse_rules(require(list[i], "rules", here), here / "rules", elements_of_split(step.split));
+      if (list[i].contains("curve")) curve = as_string(list[i]["curve"], here / "curve");
     }
-    steps.push_back(std::move(step));
+    if (list[i].contains("when"))
+      p.whens.push_back({p.steps.size(), as_formula(list[i]["when"], here / "when"), (here / "when").str()});
+    p.curves.push_back(curve), p.curve_places.push_back(here / "curve");
+    p.steps.push_back(std::move(step));
   }
-  return steps;
+  return p;
 }
 
 int parse_face_requirement(const Json& root, const Place& at) {
@@ -728,9 +756,9 @@ std::shared_ptr<const Scheme> surface_scheme_from_json(const Json& root, const s
   std::set<std::string> used;
   s->parameters = parse_parameters(root, at, overrides, &used);
   s->definitions = parse_definitions(root, at, s->parameters);
-  std::vector<Repeat> repeats;
-  s->steps = parse_steps(root, at, repeats);
-  s->steps = unroll_repeats(std::move(s->steps), repeats, *s);
+  const ParsedSteps parsed = parse_steps(root, at);
+  const std::vector<size_t> kept = unroll_steps(parsed, *s, at);
+  for (size_t i : kept) s->steps.push_back(parsed.steps[i]);
   const SplitKind split = s->split();
   if (s->required_face_size == 4 && (split == SplitKind::Triangle || split == SplitKind::Sqrt3))
     fail(at / "faces", "this split works on triangles; \"faces\" must be \"triangles\"");
@@ -742,6 +770,18 @@ std::shared_ptr<const Scheme> surface_scheme_from_json(const Json& root, const s
       if (!used.count(name)) curve_overrides[name] = value;
     s->curve = resolve_curve(as_string(root["curve"], at / "curve"), path, curve_overrides, &used);
     check_curve_fits_split(*s->curve, s->split(), at / "curve");
+  }
+  // A split's own curve scheme: its boundaries and creases follow it even when smoothing
+  // passes come after it (a dual split in a composite scheme cuts features like Chaikin).
+  // Every split's curve is checked, whether or not "when" keeps the split.
+  ParameterOverrides curve_overrides;
+  for (const auto& [name, value] : overrides)
+    if (!used.count(name)) curve_overrides[name] = value;
+  for (size_t i = 0; i < parsed.steps.size(); ++i) {
+    if (parsed.curves[i].empty()) continue;
+    auto curve = resolve_curve(parsed.curves[i], path, curve_overrides, &used);
+    check_curve_fits_split(*curve, parsed.steps[i].split, parsed.curve_places[i]);
+    if (i == kept.front()) s->steps.front().curve = std::move(curve);
   }
   check_unknown_overrides(overrides, used, path.string());
   check_formulas(*s);

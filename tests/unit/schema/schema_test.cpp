@@ -478,12 +478,30 @@ TEST_CASE("the schema refuses what the loader refuses") {
   CHECK(validation_report(qb).empty());
   CHECK(loader_accepts(qb));
   refused("no steps", qb, [](Json& s) { s["steps"] = Json::array(); });
-  refused("a smoothing pass first", qb, [](Json& s) { std::swap(s["steps"][0], s["steps"][1]); });
-  refused("a second split", qb, [](Json& s) { s["steps"][1] = s["steps"][0]; });
-  refused("an edge rule in a smoothing pass", qb, [](Json& s) {
-    s["steps"][1]["smooth"]["edge"] = Json::array({simple_term(subdiv::Element::Edge)});
+  // quad-bspline: steps[0] and steps[1] are splits chosen by "when", steps[2] the pass.
+  refused("a smoothing pass first", qb, [](Json& s) { std::swap(s["steps"][0], s["steps"][2]); });
+  refused("a second split without when", qb, [](Json& s) {
+    s["steps"][1] = s["steps"][0];
+    s["steps"][1].erase("when");
   });
-  refused("an unknown key in a step", qb, [](Json& s) { s["steps"][1]["repeats"] = 2; });
+  refused("a curve that is not a string", qb, [](Json& s) { s["steps"][1]["curve"] = 2; });
+  refused("an edge rule in a smoothing pass", qb, [](Json& s) {
+    s["steps"][2]["smooth"]["edge"] = Json::array({simple_term(subdiv::Element::Edge)});
+  });
+  refused("an unknown key in a step", qb, [](Json& s) { s["steps"][2]["repeats"] = 2; });
+  // What only the loader can see: "when" leaving two splits (or a split after a pass), and
+  // a split's own curve that does not fit it, even where "when" drops that split.
+  auto loader_refuses = [&](const std::string& what, const std::function<void(Json&)>& change) {
+    Json s = qb;
+    change(s);
+    CHECK_MESSAGE(!loader_accepts(s), what);
+  };
+  loader_refuses("two splits left by when", [](Json& s) { s["steps"][1]["when"] = "1"; });
+  loader_refuses("no split left by when", [](Json& s) { s["steps"][0]["when"] = "0"; });
+  loader_refuses("a split after a pass", [](Json& s) {
+    s["steps"] = Json::array({s["steps"][0], s["steps"][2], s["steps"][1]});
+  });
+  loader_refuses("a ternary curve on a dual split", [](Json& s) { s["steps"][1]["curve"] = "ternary-cubic-bspline"; });
   refused("a face rule in the triangle split of a composite scheme", read_json(source("schemes/loop-composite.json")),
           [](Json& s) { s["steps"][0]["rules"]["face"] = Json::array({simple_term(subdiv::Element::Face)}); });
   Json curve = read_json(source("schemes/cubic-bspline.json"));

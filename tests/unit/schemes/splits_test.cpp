@@ -38,9 +38,9 @@ TEST_CASE("sqrt3 on an open grid: boundary kept in odd steps, trisected in even 
   const int b0 = boundary_edge_count(r.hierarchy.levels[0]);
   CHECK(boundary_edge_count(r.hierarchy.levels[1]) == b0);
   CHECK(boundary_edge_count(r.hierarchy.levels[2]) == 3 * b0);
-  // Two steps: each interior side of an edge gives 2 triangles per step, a boundary side 1
-  // in odd steps and 3 (trisected) in even ones: 9F interior-style plus 2 per boundary edge.
-  CHECK(r.hierarchy.levels[2].face_count() == 9 * m.level().face_count() + 2 * b0);
+  // Two steps are a 1-to-9 split everywhere, boundary triangles included (Kobbelt's
+  // boundary rule: no face point beside a boundary edge in the trisecting step).
+  CHECK(r.hierarchy.levels[2].face_count() == 9 * m.level().face_count());
   check_manifold_counts(r.hierarchy.levels[2], 1);
   // Odd step: boundary vertices stay.
   const auto& S = r.hierarchy.stencils[0];
