@@ -165,8 +165,8 @@ std::vector<Index> vertex_descendants(const Hierarchy& h) {
 namespace {
 
 // l S = l on one refinement step `h` (levels[0] -> levels[1]) of `scheme`.
-std::string invariance_mismatch(const LimitEvaluator& evaluator, const Scheme& scheme, const Hierarchy& h,
-                                const std::vector<Index>& children, int step) {
+std::string step_mismatch(const LimitEvaluator& evaluator, const Scheme& scheme, const Hierarchy& h,
+                          const std::vector<Index>& children, int step) {
   const Level& level = h.levels[0];
   StencilTable here, below;
   try {
@@ -178,25 +178,55 @@ std::string invariance_mismatch(const LimitEvaluator& evaluator, const Scheme& s
   const StencilTable after = compose(h.stencils[0], select_rows(below, children));
   for (Index v = 0; v < level.vertex_count; ++v)
     if (auto why = row_mismatch(here, v, after, v); !why.empty())
-      return fmt::format("not invariant under one step of '{}' (l S != l) at vertex {} of valence {}: {}", scheme.name,
-                         v, level.valence(v), why);
+      return fmt::format("not invariant under step {} of '{}' (l S != l) at {}vertex {} of valence {}: {}", step + 1,
+                         scheme.name, step > 0 ? "refined " : "", v, level.valence(v), why);
   return {};
+}
+
+// The two steps the invariance is checked on. Two, not one: a split may alternate between
+// levels (sqrt3 trisects boundaries only every other step, Kobbelt 2000), so a mask that
+// survives one step can fail the next. Rules that depend on the level in other ways are
+// non-stationary and have no fixed mask at all.
+struct CheckSteps {
+  Hierarchy first, second;
+  std::vector<Index> first_children, second_children;  // empty: a dual split
+};
+
+CheckSteps check_steps(const Scheme& scheme, const Level& level, const RefineOptions& options) {
+  RefineOptions one = options;
+  one.levels = 1;
+  CheckSteps c;
+  c.first = refine(scheme, level, one);
+  try {
+    c.first_children = vertex_descendants(c.first);
+  } catch (const Error&) {
+    return c;
+  }
+  one.first_step = options.first_step + 1;
+  c.second = refine(scheme, c.first.levels[1], one);
+  c.second_children = vertex_descendants(c.second);
+  return c;
+}
+
+std::string two_step_mismatch(const LimitEvaluator& evaluator, const Scheme& scheme, const CheckSteps& c, int step) {
+  std::string why = step_mismatch(evaluator, scheme, c.first, c.first_children, step);
+  if (why.empty()) why = step_mismatch(evaluator, scheme, c.second, c.second_children, step + 1);
+  return why;
 }
 
 }  // namespace
 
 std::string invariance_mismatch(const LimitEvaluator& evaluator, const Scheme& scheme, const Level& level,
                                 const RefineOptions& options) {
-  RefineOptions one = options;
-  one.levels = 1;
-  const Hierarchy h = refine(scheme, level, one);
-  std::vector<Index> children;
+  CheckSteps c;
   try {
-    children = vertex_descendants(h);
+    c = check_steps(scheme, level, options);
   } catch (const Error& e) {
     return e.what();
   }
-  return invariance_mismatch(evaluator, scheme, h, children, options.first_step);
+  if (c.first_children.empty())
+    return fmt::format("'{}' makes no vertex points (a dual split), so it has no vertex limit masks", scheme.name);
+  return two_step_mismatch(evaluator, scheme, c, options.first_step);
 }
 
 CompositeLimit::CompositeLimit(std::vector<Run> prefix, std::shared_ptr<const LimitEvaluator> tail,
@@ -242,13 +272,10 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
   const Level& level = h.levels.back();
   const int tail_step = o.first_step + prefix_levels;
   const RefineOptions step = refine_options(o, 1, tail_step);
-  Hierarchy one_step = refine(tail, level, step);
-  std::vector<Index> children;
+  const CheckSteps check = check_steps(tail, level, step);
   std::shared_ptr<const LimitEvaluator> tail_mask;
   std::vector<std::string> refused;
-  try {
-    children = vertex_descendants(one_step);
-  } catch (const Error&) {
+  if (check.first_children.empty()) {
     // A dual scheme: no vertex points, but V-faces whose centroids may be limit points.
     auto dual = std::make_shared<DualCentroidLimit>(seq.schemes.back(), step);
     std::string why = dual_centroid_mismatch(tail, level, step);
@@ -270,7 +297,7 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
   // Schemes with vertex points.
   if (!tail_mask) {
     for (auto& candidate : candidates(seq.schemes.back(), o.features)) {
-      std::string why = invariance_mismatch(*candidate, tail, one_step, children, tail_step);
+      std::string why = two_step_mismatch(*candidate, tail, check, tail_step);
       if (why.empty()) {
         tail_mask = candidate;
         break;
@@ -289,8 +316,9 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
         providers.empty() ? "" : fmt::format("Registered providers ({}) had no mask either. ", fmt::join(providers, ", ")),
         tail.name));
   }
-  const std::string checked = children.empty() ? "checked: every V-face keeps its centroid one step down"
-                                                : fmt::format("checked: l S = l for one step of {}", tail.name);
+  const std::string checked = check.first_children.empty()
+                                  ? "checked: every V-face keeps its centroid one step down"
+                                  : fmt::format("checked: l S = l for two steps of {}", tail.name);
   if (prefix.empty()) return {tail_mask, fmt::format("{} ({} on this mesh)", tail_mask->name(), checked)};
 
   auto composite = std::make_shared<CompositeLimit>(prefix, tail_mask, o);

@@ -5,9 +5,10 @@
 // subdivision matrix: l S = l. A candidate mask is accepted for a scheme when it passes
 // that test on the very mesh being interpolated: the masks of the vertex points one step
 // down, composed with the step's stencils, give back the masks on the mesh (to 1e-12 per
-// weight). Because a vertex point has its parent's valence and context and the rules do
-// not change between levels, one step proves it for every level, and the limit point of a
-// convergent scheme is then l applied to the control points.
+// weight), and the same again one level further down. A vertex point has its parent's
+// valence and context, so for rules that repeat with period one or two (sqrt3's split
+// alternates between levels) two steps prove it for every level, and the limit point of
+// a convergent scheme is then l applied to the control points.
 //
 // Dual schemes (no vertex points) take dual_limits.h's V-face centroids, checked by their
 // own test (every V-face keeps its centroid one step down).
@@ -62,7 +63,7 @@ LimitChoice select_limit(const SchemeSequence& sequence, const Level& base, cons
 // first step's stencils rewritten when options.lambda is given.
 Hierarchy refine_for_limit(const SchemeSequence& sequence, const Level& base, const LimitSelectionOptions& options);
 
-// Empty when `evaluator` satisfies l S = l for one step of `scheme` from `level`; else the
+// Empty when `evaluator` satisfies l S = l for two steps of `scheme` from `level`; else the
 // first mismatch (or why the evaluator cannot run there).
 std::string invariance_mismatch(const LimitEvaluator& evaluator, const Scheme& scheme, const Level& level,
                                 const RefineOptions& options);

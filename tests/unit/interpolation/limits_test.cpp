@@ -181,6 +181,38 @@ TEST_CASE("the generic method runs on Loop and sqrt(3)") {
     CHECK(dist(loop_limit_point(L, r.control, v), at(mesh.positions, v)) < 1e-10 + 1e-14);
 }
 
+TEST_CASE("sqrt(3) with boundaries: the check spans two steps, boundary limits are the cubic B-spline's") {
+  // Kobbelt 2000: boundary vertices stay in even steps and move in odd ones, so the identity
+  // survives the first step on a strip whose every vertex is on the boundary, and only the
+  // second step shows it is not sqrt(3)'s limit.
+  const Mesh strip = grid(4, 1, true);
+  const Level L = strip.level();
+  CHECK_FALSE(invariance_mismatch(InterpolatoryLimit(), *load_scheme("sqrt3"), L, {}).empty());
+  const LimitChoice c = choose("sqrt3", strip);
+  REQUIRE(uses<AnalysedLimit>(c));
+  const StencilTable t = c.evaluator->limit_stencils(L);
+  // Along the boundary the limit is the uniform cubic B-spline's at its knots, (1, 4, 1)/6,
+  // whatever the arity of the curve scheme; corners (one face) stay.
+  int checked = 0;
+  for (Index v = 0; v < L.vertex_count; ++v) {
+    std::vector<Index> along;
+    for (Index e : L.ring_edges(v))
+      if (L.edge_on_boundary(e)) along.push_back(L.other_end(e, v));
+    if (L.ring_faces(v).size() == 1) {
+      CHECK(std::abs(weight_of(t, v, v) - 1.0) < 1e-12);
+      continue;
+    }
+    REQUIRE(along.size() == 2);
+    CHECK(std::abs(weight_of(t, v, v) - 4.0 / 6) < 1e-12);
+    for (Index u : along) CHECK(std::abs(weight_of(t, v, u) - 1.0 / 6) < 1e-12);
+    ++checked;
+  }
+  CHECK(checked > 0);
+  check_refinement_approaches("sqrt3", L, strip.positions, t);
+  const ProgressiveResult r = progressive_interpolation(*c.evaluator, L, strip.positions, {});
+  CHECK(r.converged);
+}
+
 TEST_CASE("user schemes get their masks from the analysis; divergent ones are refused") {
   const auto dir = std::filesystem::temp_directory_path() / "subdivkit-interp-user";
   std::filesystem::create_directories(dir);
