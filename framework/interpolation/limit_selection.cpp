@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <mutex>
@@ -11,6 +12,7 @@
 #include "framework/interpolation/interpolatory_limit.h"
 #include "framework/interpolation/shape_two_step.h"
 #include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -208,6 +210,18 @@ CheckSteps check_steps(const Scheme& scheme, const Level& level, const RefineOpt
   return c;
 }
 
+// What to give `subdiv analyze` to find this scheme: its name when the name finds this very
+// file (or it has no file), else the file's path.
+std::string analyze_argument(const Scheme& scheme) {
+  if (scheme.path.empty() || std::filesystem::path(scheme.path).extension() != ".json") return scheme.name;
+  try {
+    if (std::filesystem::equivalent(scheme_file_path(scheme.name), scheme.path)) return scheme.name;
+  } catch (const std::exception&) {
+    // The name finds no file: a user's scheme, known by its path only.
+  }
+  return scheme.path;
+}
+
 std::string two_step_mismatch(const LimitEvaluator& evaluator, const Scheme& scheme, const CheckSteps& c, int step) {
   std::string why = step_mismatch(evaluator, scheme, c.first, c.first_children, step);
   if (why.empty()) why = step_mismatch(evaluator, scheme, c.second, c.second_children, step + 1);
@@ -311,10 +325,10 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
     for (const auto& r : refused) list += "\n  - " + r;
     const auto providers = limit_mask_provider_names();
     throw Error(fmt::format(
-        "scheme '{}' has no limit mask for this mesh; every candidate was refused:{}\n  {}`subdiv analyze --scheme {}` "
+        "scheme '{}' has no limit mask for this mesh; every candidate was refused:{}\n  {}`subdiv analyze {}` "
         "shows the eigenvalues behind this.", tail.name, list,
         providers.empty() ? "" : fmt::format("Registered providers ({}) had no mask either. ", fmt::join(providers, ", ")),
-        tail.name));
+        analyze_argument(tail)));
   }
   const std::string checked = check.first_children.empty()
                                   ? "checked: every V-face keeps its centroid one step down"
