@@ -9,8 +9,8 @@ namespace subdiv {
 CurveLevel curve_level_from_mesh(const MeshData& mesh, const std::string& source) {
   if (mesh.face_count() > 0)
     throw Error(fmt::format("{}: the mesh has {} faces, but a curve scheme refines polylines only (OBJ 'l' "
-                            "lines, VTK line cells); refine this mesh with a surface scheme (e.g. "
-                            "--scheme catmull-clark), or give a file of polylines",
+                            "lines, VTK line cells); refine this mesh with a surface scheme "
+                            "(`subdiv schemes` lists them), or give a file of polylines",
                             source, mesh.face_count()));
   if (mesh.line_count() == 0)
     throw Error(fmt::format("{}: the mesh has no polylines to refine; a curve scheme needs OBJ 'l' lines "

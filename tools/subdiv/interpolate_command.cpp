@@ -20,6 +20,7 @@
 #include "framework/io/mesh_write.h"
 #include "framework/io/vtk_output.h"
 #include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_registry.h"
 #include "framework/scheme/scheme_sequence.h"
 #include "framework/util/error.h"
 #include "level_output.h"
@@ -60,6 +61,26 @@ std::string read_text(const fs::path& file, const std::string& what) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+// Progressive interpolation here is for surfaces; a curve scheme gets a clear refusal
+// instead of the surface loader's.
+void refuse_curve_schemes(const std::string& sequence) {
+  std::string name;
+  std::istringstream runs(sequence);
+  while (std::getline(runs, name, ',')) {
+    name = name.substr(0, name.find(':'));
+    bool curve = false;
+    try {
+      curve = scheme_kind(name) == "curve";
+    } catch (const Error&) {
+      // Unknown names are reported by the loader, with the known ones.
+    }
+    if (curve)
+      throw Error(fmt::format("--scheme: '{}' is a curve scheme; subdiv interpolate interpolates surfaces "
+                              "(progressive interpolation of polylines is not available yet); subdiv refine "
+                              "refines polylines with it", name));
+  }
 }
 
 std::optional<double> parse_number(const std::string& text) {
@@ -212,6 +233,7 @@ void run(const InterpolateArgs& a) {
     else if (!fs::is_regular_file(a.lambda))
       throw Error(fmt::format("--lambda '{}' is neither a number nor a file of per-vertex values", a.lambda));
   }
+  refuse_curve_schemes(a.scheme);
   SchemeSequence seq = load_scheme_sequence(a.scheme, a.levels, overrides);
   if (!a.lambda.empty() && !has_lambda(seq))
     throw Error(fmt::format("--lambda: no scheme in '{}' has a parameter lambda; seed 001's shape control is "
@@ -222,7 +244,9 @@ void run(const InterpolateArgs& a) {
   }
 
   const MeshData mesh = read_mesh(a.mesh);
-  if (mesh.face_count() == 0) throw Error(fmt::format("{}: the mesh has no faces", a.mesh));
+  if (mesh.face_count() == 0)
+    throw Error(fmt::format("{}: the mesh has no faces{}; subdiv interpolate works on surface meshes", a.mesh,
+                            mesh.line_count() > 0 ? fmt::format(" (it has {} polyline{})", mesh.line_count(), mesh.line_count() == 1 ? "" : "s") : ""));
   const Level base = level_from_mesh(mesh, a.mesh);
   const std::vector<std::uint8_t> moving = read_selection(a.select, base.vertex_count);
   LimitSelectionOptions options;

@@ -141,6 +141,8 @@ TEST_CASE("interpolate: bad input is refused, nothing is written") {
     "edge": [{"sum": "ends", "w": "1/2"}], "vertex": [{"at": "self", "w": "2"}, {"sum": "ring", "w": "-1/n"}]}})json";
   check_refused(kCross + " --scheme " + (dir / "divergent.json").string(), dir, "scheme 'divergent' has no limit mask");
   check_refused(source_path("examples/meshes/cube.obj") + " --scheme loop", dir, "triangles");
+  check_refused(kCross + " --scheme cubic-bspline", dir, "'cubic-bspline' is a curve scheme");
+  check_refused(source_path("examples/curves/circle8.obj"), dir, "has no faces (it has 1 polyline)");
   check_refused(kCross + " --refined " + (dir / "x.obj").string(), dir, "use .pvd", false);
   CHECK_FALSE(fs::exists(dir / "x.obj"));
 }
