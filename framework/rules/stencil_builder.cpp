@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "framework/rules/element_rules.h"
+#include "framework/rules/row_plans.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -183,8 +184,10 @@ void report_bad_row(const StepContext& s, const ChunkedRows& rows, const ChildGr
 }
 
 // Rows of one group, built in parallel chunks; each row depends only on its element, so
-// the result does not depend on the thread count. Checks every row is finite and sums to one.
-ChunkedRows build_rows(const StepContext& s, const RuleInputs& in, const ChildGroup& group) {
+// the result does not depend on the thread count. Smooth interior rows replay a plan
+// (row_plans.h) when one fits, which gives the same row. Checks every row is finite and
+// sums to one.
+ChunkedRows build_rows(const StepContext& s, const RuleInputs& in, const ChildGroup& group, RowPlanStore& plans) {
   const Index count = Index(group.children.size());
   ChunkedRows rows;
   rows.chunk_rows = kChunk;
@@ -192,19 +195,26 @@ ChunkedRows build_rows(const StepContext& s, const RuleInputs& in, const ChildGr
   std::atomic<Index> first_bad{count};
   tbb::parallel_for(Index(0), Index(rows.chunks.size()), [&](Index c) {
     RowBuilder row;
+    RowPlanner planner(plans);
     RowBlock& part = rows.chunks[c];
     const Index begin = c * kChunk, end = std::min(count, (c + 1) * kChunk);
     part.offsets.reserve(end - begin + 1);
     part.indices.reserve(size_t(end - begin) * 12);
     part.weights.reserve(size_t(end - begin) * 12);
     for (Index r = begin; r < end; ++r) {
-      row.clear();
-      fill_row(row, s, in, group.children[r]);
-      double sum = 0.0;
-      for (size_t i = 0; i < row.indices().size(); ++i) sum += row.weights()[i];
-      part.indices.insert(part.indices.end(), row.indices().begin(), row.indices().end());
-      part.weights.insert(part.weights.end(), row.weights().begin(), row.weights().end());
+      const Index child = group.children[r];
+      const auto outcome = s.use_row_plans ? planner.try_append(child, part) : RowPlanner::Outcome::Generic;
+      if (outcome != RowPlanner::Outcome::Appended) {
+        row.clear();
+        fill_row(row, s, in, child);
+        if (outcome == RowPlanner::Outcome::Learn) planner.learn(row, plans);
+        part.indices.insert(part.indices.end(), row.indices().begin(), row.indices().end());
+        part.weights.insert(part.weights.end(), row.weights().begin(), row.weights().end());
+      }
+      const Index from = part.offsets.back();
       part.offsets.push_back(Index(part.indices.size()));
+      double sum = 0.0;
+      for (Index i = from; i < part.offsets.back(); ++i) sum += part.weights[i];
       if (!std::isfinite(sum) || std::abs(sum - 1.0) > kSumTolerance) {
         Index seen = first_bad.load();
         while (r < seen && !first_bad.compare_exchange_weak(seen, r)) {}
@@ -260,8 +270,9 @@ StencilTable build_step_stencils(const StepContext& s) {
   const std::vector<ChildGroup> groups = group_children(s);
   RuleInputs in{s.parent, s.features};
   std::vector<ChunkedRows> blocks(kElementCount);
+  RowPlanStore plans(s.parent, s.origins, s.tables, s.features, s.code != nullptr);
   for (Element e : build_order(s, groups)) {
-    blocks[int(e)] = build_rows(s, in, groups[int(e)]);
+    blocks[int(e)] = build_rows(s, in, groups[int(e)], plans);
     in.blocks[int(e)] = &blocks[int(e)];
     in.block_row_of_element[int(e)] = &groups[int(e)].row_of_element;
   }

@@ -23,6 +23,9 @@ struct StepContext {
   std::string source;            // the scheme file, for messages
   const CodeRules* code = nullptr;  // rules written in C++ (plugins); they take precedence
   int level = 0;                    // the level being refined, for code rules
+  // Replay learnt rows for smooth interior elements (row_plans.h); the rows are the same
+  // either way, false is for tests and measurements.
+  bool use_row_plans = true;
 };
 
 StencilTable build_step_stencils(const StepContext& step);

@@ -42,7 +42,8 @@ StencilTable step_stencils(const Scheme& scheme, const StepRules& step, const Le
                            const RefineOptions& options) {
   const WeightTables tables = prepare_weight_tables(step, scheme.formula_scope(), max_valence(parent), parent.max_face_size(), level);
   const FeatureContexts features = classify_features(parent, {options.boundary, options.crease_method});
-  return build_step_stencils({parent, origins, tables, features, features_refined, scheme.path, step.code.get(), level});
+  return build_step_stencils({parent, origins, tables, features, features_refined, scheme.path, step.code.get(), level,
+                              options.use_row_plans});
 }
 
 // The scheme of each level, in order.

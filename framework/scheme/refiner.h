@@ -26,6 +26,9 @@ struct RefineOptions {
   // such as sqrt3's boundary trisection, count from the original mesh; also the level l
   // seen by level-dependent formulas).
   int first_step = 0;
+  // Smooth interior rows replayed from learnt plans (rules/row_plans.h): the same rows,
+  // faster; off only to compare or measure.
+  bool use_row_plans = true;
 };
 
 // A step of a non-linear scheme (plugins, rules/code_rules.h): applied to the values

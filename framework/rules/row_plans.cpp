@@ -1,0 +1,156 @@
+#include "framework/rules/row_plans.h"
+
+#include <algorithm>
+
+namespace subdiv {
+namespace {
+
+// Enumerations longer than this (valences in the twenties and up) take the generic path:
+// the distinctness check is quadratic, and such vertices are rare.
+constexpr size_t kMaxAround = 64;
+
+// Roles whose points lie inside the element's enumeration (row_plans.h).
+bool vertex_role_inside(Role r) {
+  return r == Role::Self || r == Role::Ring || r == Role::Faces || r == Role::Edges || r == Role::FaceCentroids ||
+         r == Role::Diagonals;
+}
+bool edge_role_inside(Role r) { return r == Role::Ends || r == Role::Opposite || r == Role::Wings || r == Role::Faces; }
+bool face_role_inside(Role r) { return r == Role::Vertices; }
+
+template <class Inside>
+bool rule_inside(const CompiledRule& rule, Inside inside, const bool new_point_ok[4]) {
+  if (!rule.defined) return false;
+  for (const CompiledTerm& t : rule.terms)
+    if (!inside(t.role) || !new_point_ok[int(t.new_point)]) return false;
+  return true;
+}
+
+}  // namespace
+
+RowPlanStore::RowPlanStore(const Level& parent_level, const ChildOrigins& child_origins, const WeightTables& tables,
+                           const FeatureContexts& feature_contexts, bool code_rules)
+    : parent(parent_level), origins(child_origins), features(feature_contexts) {
+  if (code_rules) return;
+  // Indexed by NewPoint: None, Face, Edge, Vertex. A face row reads its own face only; an
+  // edge row its two faces, inside a vertex's ring; a vertex row reaches past any edge's.
+  const bool plain[4] = {true, false, false, false};
+  enabled[int(Element::Face)] = rule_inside(tables.rule(Element::Face, Context::Smooth), face_role_inside, plain);
+  const bool faces[4] = {true, enabled[int(Element::Face)], false, false};
+  enabled[int(Element::Edge)] = rule_inside(tables.rule(Element::Edge, Context::Smooth), edge_role_inside, faces);
+  const bool faces_edges[4] = {true, enabled[int(Element::Face)], enabled[int(Element::Edge)], false};
+  enabled[int(Element::Vertex)] =
+      rule_inside(tables.rule(Element::Vertex, Context::Smooth), vertex_role_inside, faces_edges);
+}
+
+const RowPlan* RowPlanStore::find(const std::vector<std::int32_t>& key) const {
+  std::lock_guard lock(mutex_);
+  const auto it = plans_.find(key);
+  return it == plans_.end() ? nullptr : it->second.get();
+}
+
+const RowPlan* RowPlanStore::add(const std::vector<std::int32_t>& key, RowPlan plan) {
+  std::lock_guard lock(mutex_);
+  auto& slot = plans_[key];
+  if (!slot) slot = std::make_unique<RowPlan>(std::move(plan));  // else another thread learnt it first
+  return slot.get();
+}
+
+// key_: the element kind and everything its row depends on (valences, face sizes in ring
+// order, where each face starts, since a new face point lists its face from corner 0, the
+// point's index along an edge); around_: its neighbourhood, canonically.
+bool RowPlanner::describe(Index child) {
+  const Level& L = store_.parent;
+  const FeatureContexts& F = store_.features;
+  const OriginKind kind = store_.origins.kind[child];
+  const Index p = store_.origins.parent[child];
+  if (!store_.enabled[int(kind)]) return false;
+  key_.clear(), around_.clear();
+  key_.push_back(std::int32_t(kind));
+  switch (kind) {
+    case OriginKind::Vertex: {
+      const VertexContext& vc = F.vertices[p];
+      if (L.on_boundary(p) || vc.parent != Context::Smooth || vc.child != Context::Smooth) return false;
+      for (Index e : L.ring_edges(p))
+        if (F.edges[e].crease_weight != 0.f) return false;
+      // v, then in each ring face the corners after v except the last (the next edge
+      // neighbour, listed by the face that has it right after v).
+      around_.push_back(p);
+      key_.push_back(L.valence(p));
+      const Index first = L.vertex_face_offsets[p];
+      for (Index i = first; i < L.vertex_face_offsets[p + 1]; ++i) {
+        const auto face = L.face(L.vertex_faces[i]);
+        const int k = int(face.size()), c = L.vertex_face_corner[i];
+        key_.push_back(k), key_.push_back(c);  // c: new face points list the face from its corner 0
+        for (int d = 1; d + 1 < k; ++d) around_.push_back(face[(c + d) % k]);
+      }
+      break;
+    }
+    case OriginKind::Edge: {
+      if (L.edge_on_boundary(p) || F.edges[p].crease_weight != 0.f) return false;
+      const Index a = L.edge_vertices[2 * p], b = L.edge_vertices[2 * p + 1];
+      around_.push_back(a), around_.push_back(b);
+      key_.push_back(store_.origins.local[child]);
+      key_.push_back(L.valence(a)), key_.push_back(L.valence(b));
+      for (int side = 0; side < 2; ++side) {
+        const Index f = L.edge_faces[2 * p + side];
+        const auto face = L.face(f), edges = L.face_edge_list(f);
+        const int k = int(face.size());
+        const int c = int(std::find(edges.begin(), edges.end(), p) - edges.begin());
+        key_.push_back(k), key_.push_back(c);
+        for (int d = 2; d < k; ++d) around_.push_back(face[(c + d) % k]);
+      }
+      break;
+    }
+    case OriginKind::Face: {
+      const auto face = L.face(p);
+      key_.push_back(int(face.size()));
+      around_.assign(face.begin(), face.end());
+      break;
+    }
+    case OriginKind::Corner:
+      return false;
+  }
+  return around_.size() <= kMaxAround;
+}
+
+bool RowPlanner::distinct() const {
+  for (size_t i = 1; i < around_.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (around_[i] == around_[j]) return false;
+  return true;
+}
+
+RowPlanner::Outcome RowPlanner::try_append(Index child, RowBlock& out) {
+  if (!describe(child)) return Outcome::Generic;
+  const RowPlan* plan = nullptr;
+  if (const auto known = local_.find(key_); known != local_.end()) {
+    plan = known->second;
+  } else {
+    plan = store_.find(key_);
+    if (plan) local_.emplace(key_, plan);
+  }
+  if (!distinct()) return Outcome::Generic;
+  if (!plan) return Outcome::Learn;
+  if (!plan->usable) return Outcome::Generic;
+  for (std::uint16_t position : plan->positions) out.indices.push_back(around_[position]);
+  out.weights.insert(out.weights.end(), plan->weights.begin(), plan->weights.end());
+  return Outcome::Appended;
+}
+
+void RowPlanner::learn(const RowBuilder& row, RowPlanStore& store) {
+  RowPlan plan;
+  plan.usable = true;
+  for (Index source : row.indices()) {
+    const auto at = std::find(around_.begin(), around_.end(), source);
+    if (at == around_.end()) {
+      plan.usable = false;
+      break;
+    }
+    plan.positions.push_back(std::uint16_t(at - around_.begin()));
+  }
+  if (plan.usable) plan.weights = row.weights();
+  else plan.positions.clear();
+  local_.emplace(key_, store.add(key_, std::move(plan)));
+}
+
+}  // namespace subdiv

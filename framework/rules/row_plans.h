@@ -1,0 +1,88 @@
+#pragma once
+// Row plans: the stencil row of a smooth interior element, learnt once per neighbourhood
+// shape and replayed for every element of that shape.
+//
+// Away from features and boundaries a rule's row depends only on the shape of the
+// element's neighbourhood: the valence, the sizes of the faces around it in ring order,
+// the valences at an edge's ends. Listing the neighbourhood's vertices in a canonical
+// order (the element's "enumeration"), the row is a fixed list of (position, weight)
+// pairs. The first element of each shape is built by the generic rule interpreter and its
+// row is recorded against its enumeration; later elements of that shape copy the weights
+// and look the indices up, with no formula tables and no merging of repeated sources.
+// Rows come out identical to the generic ones, entries in the same order.
+//
+// A plan is used only where that argument holds: smooth, interior, featureless elements
+// whose rules read roles inside the enumeration (and new points whose rows do too), no
+// rules written in C++, and neighbourhoods whose enumerated vertices are distinct (on a
+// tiny closed mesh a ring can meet itself; such elements take the generic path).
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <unordered_map>
+#include <vector>
+
+#include "framework/refine/child_origins.h"
+#include "framework/rules/feature_context.h"
+#include "framework/rules/row_builder.h"
+#include "framework/rules/weight_tables.h"
+
+namespace subdiv {
+
+struct RowPlan {
+  bool usable = false;  // false: the rule reads outside the enumeration; use the generic path
+  std::vector<std::uint16_t> positions;  // into the element's enumeration
+  std::vector<double> weights;
+};
+
+// Which kinds of element can use plans in one step, and the plans learnt so far (shared by
+// the threads building the step's rows).
+class RowPlanStore {
+public:
+  RowPlanStore(const Level& parent, const ChildOrigins& origins, const WeightTables& tables,
+               const FeatureContexts& features, bool code_rules);
+
+  const Level& parent;
+  const ChildOrigins& origins;
+  const FeatureContexts& features;
+  bool enabled[kElementCount] = {};
+
+  const RowPlan* find(const std::vector<std::int32_t>& key) const;
+  const RowPlan* add(const std::vector<std::int32_t>& key, RowPlan plan);
+
+private:
+  mutable std::mutex mutex_;
+  std::map<std::vector<std::int32_t>, std::unique_ptr<RowPlan>> plans_;
+};
+
+// One thread's use of the store: remembers the plans it has used (a mesh has few shapes)
+// and the enumeration of the element being built.
+class RowPlanner {
+public:
+  explicit RowPlanner(const RowPlanStore& store) : store_(store) {}
+
+  enum class Outcome { Appended, Learn, Generic };
+  // Appends child's row to `out` from a plan (Appended); or says the row must be built
+  // generically, then passed to learn() (Learn) or not (Generic).
+  Outcome try_append(Index child, RowBlock& out);
+  // Records the generic row of the child try_append last answered Learn for.
+  void learn(const RowBuilder& row, RowPlanStore& store);
+
+private:
+  bool describe(Index child);  // fills key_ and around_; false: not eligible
+  bool distinct() const;
+
+  const RowPlanStore& store_;
+  std::vector<std::int32_t> key_;
+  std::vector<Index> around_;
+  struct KeyHash {
+    size_t operator()(const std::vector<std::int32_t>& key) const {
+      size_t h = key.size();
+      for (std::int32_t x : key) h = h * 1000003u ^ std::uint32_t(x);
+      return h;
+    }
+  };
+  std::unordered_map<std::vector<std::int32_t>, const RowPlan*, KeyHash> local_;
+};
+
+}  // namespace subdiv
