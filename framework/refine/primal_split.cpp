@@ -5,6 +5,7 @@
 #include "framework/refine/primal_topology.h"
 #include "framework/refine/splitter.h"
 #include "framework/util/error.h"
+#include "framework/util/bulk_memory.h"
 
 namespace subdiv {
 namespace {
@@ -14,9 +15,9 @@ ChildOrigins primal_origins(const Level& parent, bool with_face_points) {
   const Index v = parent.vertex_count, e = parent.edge_count(), f = parent.face_count();
   const Index total = v + e + (with_face_points ? f : 0);
   ChildOrigins o;
-  o.kind.resize(total);
-  o.parent.resize(total);
-  o.local.assign(total, 0);
+  resize_bulk(o.kind, size_t(total));
+  resize_bulk(o.parent, size_t(total));
+  assign_bulk(o.local, size_t(total), std::uint8_t(0));
   for (Index i = 0; i < v; ++i) o.kind[i] = OriginKind::Vertex, o.parent[i] = i;
   for (Index i = 0; i < e; ++i) o.kind[v + i] = OriginKind::Edge, o.parent[v + i] = i;
   if (with_face_points)
@@ -42,7 +43,7 @@ SplitResult split_quad(const Level& parent) {
 
 SplitResult split_triangle(const Level& parent) {
   ChildOrigins origins = primal_origins(parent, false);
-  origins.parent_face.resize(4 * size_t(parent.face_count()));
+  resize_bulk(origins.parent_face, 4 * size_t(parent.face_count()));
   for (Index f = 0; f < parent.face_count(); ++f)
     for (int t = 0; t < 4; ++t) origins.parent_face[4 * f + t] = f;
   return {triangle_split_topology(parent), std::move(origins)};

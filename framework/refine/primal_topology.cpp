@@ -1,4 +1,5 @@
 #include "framework/refine/primal_topology.h"
+#include "framework/util/bulk_memory.h"
 
 #include <tbb/parallel_for.h>
 
@@ -50,11 +51,11 @@ Level quad_split_topology(const Level& P) {
   const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count(), N = P.corner_count();
   Level C;
   C.vertex_count = V + E + F;
-  C.face_offsets.resize(N + 1);
-  C.face_vertices.resize(4 * size_t(N));
-  C.face_edges.resize(4 * size_t(N));
-  C.edge_vertices.resize(2 * size_t(2 * E + N));
-  C.edge_faces.resize(2 * size_t(2 * E + N));
+  resize_bulk(C.face_offsets, N + 1);
+  resize_bulk(C.face_vertices, 4 * size_t(N));
+  resize_bulk(C.face_edges, 4 * size_t(N));
+  resize_bulk(C.edge_vertices, 2 * size_t(2 * E + N));
+  resize_bulk(C.edge_faces, 2 * size_t(2 * E + N));
   // Faces: child face c = (v_i, mid(e_i), face point, mid(e_{i-1})) of parent corner c.
   tbb::parallel_for(Index(0), F, [&](Index f) {
     const Index o = P.face_offsets[f], k = P.face_size(f);
@@ -84,8 +85,8 @@ Level quad_split_topology(const Level& P) {
   });
   // Rings: vertex children as their parents; edge children have 4 faces (2 on a boundary);
   // face children have one per corner.
-  C.vertex_face_offsets.resize(C.vertex_count + 1);
-  C.vertex_ring_offsets.resize(C.vertex_count + 1);
+  resize_bulk(C.vertex_face_offsets, C.vertex_count + 1);
+  resize_bulk(C.vertex_ring_offsets, C.vertex_count + 1);
   copy_vertex_offsets(P, C);
   for (Index e = 0; e < E; ++e) {
     const bool boundary = P.edge_on_boundary(e);
@@ -96,10 +97,10 @@ Level quad_split_topology(const Level& P) {
     C.vertex_face_offsets[V + E + f + 1] = C.vertex_face_offsets[V + E + f] + P.face_size(f);
     C.vertex_ring_offsets[V + E + f + 1] = C.vertex_ring_offsets[V + E + f] + P.face_size(f);
   }
-  C.vertex_faces.resize(C.vertex_face_offsets.back());
-  C.vertex_face_corner.resize(C.vertex_face_offsets.back());
-  C.vertex_edges.resize(C.vertex_ring_offsets.back());
-  C.vertex_on_boundary.assign(C.vertex_count, 0);
+  resize_bulk(C.vertex_faces, C.vertex_face_offsets.back());
+  resize_bulk(C.vertex_face_corner, C.vertex_face_offsets.back());
+  resize_bulk(C.vertex_edges, C.vertex_ring_offsets.back());
+  assign_bulk(C.vertex_on_boundary, C.vertex_count, 0);
   vertex_child_rings(P, C, [&](Index f, int corner) { return P.face_offsets[f] + corner; });
   tbb::parallel_for(Index(0), E, [&](Index e) {
     const Index a = P.edge_vertices[2 * e], b = P.edge_vertices[2 * e + 1];
@@ -135,11 +136,11 @@ Level triangle_split_topology(const Level& P) {
   const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count();
   Level C;
   C.vertex_count = V + E;
-  C.face_offsets.resize(4 * size_t(F) + 1);
-  C.face_vertices.resize(12 * size_t(F));
-  C.face_edges.resize(12 * size_t(F));
-  C.edge_vertices.resize(2 * size_t(2 * E + 3 * F));
-  C.edge_faces.resize(2 * size_t(2 * E + 3 * F));
+  resize_bulk(C.face_offsets, 4 * size_t(F) + 1);
+  resize_bulk(C.face_vertices, 12 * size_t(F));
+  resize_bulk(C.face_edges, 12 * size_t(F));
+  resize_bulk(C.edge_vertices, 2 * size_t(2 * E + 3 * F));
+  resize_bulk(C.edge_faces, 2 * size_t(2 * E + 3 * F));
   // Corner face 4f+i = (v_i, mid e_i, mid e_{i-1}); middle face 4f+3 = (mid e_0, mid e_1, mid e_2).
   // Inner edge 2E+3f+i runs mid e_i -> mid e_{i-1}: forward in corner face i, backwards in the middle.
   tbb::parallel_for(Index(0), F, [&](Index f) {
@@ -169,18 +170,18 @@ Level triangle_split_topology(const Level& P) {
     C.edge_faces[4 * e + 1] = f1 == kNone ? kNone : 4 * f1 + local_corner(P, f1, a);
     C.edge_faces[4 * e + 3] = f1 == kNone ? kNone : 4 * f1 + local_corner(P, f1, b);
   });
-  C.vertex_face_offsets.resize(C.vertex_count + 1);
-  C.vertex_ring_offsets.resize(C.vertex_count + 1);
+  resize_bulk(C.vertex_face_offsets, C.vertex_count + 1);
+  resize_bulk(C.vertex_ring_offsets, C.vertex_count + 1);
   copy_vertex_offsets(P, C);
   for (Index e = 0; e < E; ++e) {
     const bool boundary = P.edge_on_boundary(e);
     C.vertex_face_offsets[V + e + 1] = C.vertex_face_offsets[V + e] + (boundary ? 3 : 6);
     C.vertex_ring_offsets[V + e + 1] = C.vertex_ring_offsets[V + e] + (boundary ? 4 : 6);
   }
-  C.vertex_faces.resize(C.vertex_face_offsets.back());
-  C.vertex_face_corner.resize(C.vertex_face_offsets.back());
-  C.vertex_edges.resize(C.vertex_ring_offsets.back());
-  C.vertex_on_boundary.assign(C.vertex_count, 0);
+  resize_bulk(C.vertex_faces, C.vertex_face_offsets.back());
+  resize_bulk(C.vertex_face_corner, C.vertex_face_offsets.back());
+  resize_bulk(C.vertex_edges, C.vertex_ring_offsets.back());
+  assign_bulk(C.vertex_on_boundary, C.vertex_count, 0);
   vertex_child_rings(P, C, [&](Index f, int corner) { return 4 * f + corner; });
   tbb::parallel_for(Index(0), E, [&](Index e) {
     const Index a = P.edge_vertices[2 * e], b = P.edge_vertices[2 * e + 1];

@@ -9,14 +9,16 @@
 #include "framework/rules/element_rules.h"
 #include "framework/rules/row_plans.h"
 #include "framework/util/error.h"
+#include "framework/util/bulk_memory.h"
 
 namespace subdiv {
 namespace {
 
 constexpr double kSumTolerance = 1e-9;
-// Rows per parallel chunk: small enough that a chunk's buffers stay under glibc's mmap
-// threshold (and so are reused instead of faulted in afresh), large enough to amortise tasks.
-constexpr Index kChunk = 512;
+// Rows per parallel chunk: large enough that a chunk's buffers (all alive until the rows
+// are gathered) are big arrays on huge pages (util/bulk_memory.h) rather than thousands of
+// small heap blocks faulted in 4 KB at a time; small enough to share out among threads.
+constexpr Index kChunk = Index(1) << 17;
 
 // The child vertices of one element kind, and where each element's first child is.
 struct ChildGroup {
@@ -198,9 +200,9 @@ ChunkedRows build_rows(const StepContext& s, const RuleInputs& in, const ChildGr
     RowPlanner planner(plans);
     RowBlock& part = rows.chunks[c];
     const Index begin = c * kChunk, end = std::min(count, (c + 1) * kChunk);
-    part.offsets.reserve(end - begin + 1);
-    part.indices.reserve(size_t(end - begin) * 12);
-    part.weights.reserve(size_t(end - begin) * 12);
+    reserve_bulk(part.offsets, size_t(end - begin) + 1);
+    reserve_bulk(part.indices, size_t(end - begin) * 12);
+    reserve_bulk(part.weights, size_t(end - begin) * 12);
     for (Index r = begin; r < end; ++r) {
       const Index child = group.children[r];
       const auto outcome = s.use_row_plans ? planner.try_append(child, part) : RowPlanner::Outcome::Generic;
@@ -283,12 +285,12 @@ StencilTable build_step_stencils(const StepContext& s) {
     for (Index r = 0; r < Index(g.children.size()); ++r) position[g.children[r]] = r;
   StencilTable table;
   table.source_count = s.parent.vertex_count;
-  table.offsets.resize(child_count + 1);
+  resize_bulk(table.offsets, size_t(child_count) + 1);
   table.offsets[0] = 0;
   for (Index c = 0; c < child_count; ++c)
     table.offsets[c + 1] = table.offsets[c] + blocks[int(s.origins.kind[c])].row_size(position[c]);
-  table.indices.resize(table.offsets.back());
-  table.weights.resize(table.offsets.back());
+  resize_bulk(table.indices, size_t(table.offsets.back()));
+  resize_bulk(table.weights, size_t(table.offsets.back()));
   tbb::parallel_for(Index(0), child_count, [&](Index c) {
     const ChunkedRows& rows = blocks[int(s.origins.kind[c])];
     const RowBlock& b = rows.chunk_of(position[c]);

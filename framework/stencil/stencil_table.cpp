@@ -5,6 +5,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "framework/util/bulk_memory.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -56,7 +57,8 @@ void StencilTable::apply(std::span<const double> src, std::span<double> dst, int
 }
 
 std::vector<double> StencilTable::apply(std::span<const double> src, int channels) const {
-  std::vector<double> dst(size_t(row_count()) * channels);
+  std::vector<double> dst;
+  resize_bulk(dst, size_t(row_count()) * channels);
   apply(src, dst, channels);
   return dst;
 }

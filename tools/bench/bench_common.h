@@ -22,6 +22,7 @@ struct Job {
   int repeat = 1;
   std::int64_t check_max = 0;  // at most about this many vertices sent back for the check
   bool cpu_clock = false;      // time with the process CPU clock instead of the wall clock
+  bool row_plans = true;       // SubdivKit: replay learnt stencil rows (rules/row_plans.h)
 };
 
 // Milliseconds on the wall clock (steady) or on the process CPU clock (user + system time

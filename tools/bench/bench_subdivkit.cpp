@@ -9,6 +9,7 @@
 #include "framework/scheme/refiner.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/topology/level.h"
+#include "framework/util/bulk_memory.h"
 
 namespace subdiv_bench {
 namespace {
@@ -47,6 +48,7 @@ WorkerReport run_subdivkit(const Job& job, const Mesh& mesh) {
   subdiv::RefineOptions options;
   options.levels = job.level;
   options.threads = job.threads;
+  options.use_row_plans = job.row_plans;
 
   WorkerReport report;
   bool have_best = false;
@@ -69,7 +71,7 @@ WorkerReport run_subdivkit(const Job& job, const Mesh& mesh) {
     std::vector<double> src, dst;
     for (int l = 0; l < job.level; ++l) {
       const auto& table = h.stencils[size_t(l)];
-      dst.resize(3 * size_t(table.row_count()));
+      subdiv::resize_bulk(dst, 3 * size_t(table.row_count()));  // as StencilTable::apply(src, channels) does
       table.apply(l == 0 ? std::span<const double>(mesh.xyz) : std::span<const double>(src), dst, 3);
       std::swap(src, dst);
       std::vector<double>().swap(dst);

@@ -141,7 +141,8 @@ RunResult run_worker(const Job& job) {
                                    "--threads", std::to_string(job.threads),
                                    "--repeat", std::to_string(job.repeat),
                                    "--check-max", std::to_string(job.check_max),
-                                   "--clock", job.cpu_clock ? "cpu" : "wall"};
+                                   "--clock", job.cpu_clock ? "cpu" : "wall",
+                                   "--row-plans", job.row_plans ? "on" : "off"};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -491,10 +492,16 @@ int main(int argc, char** argv) {
                  "machine, comparable only with --threads 1")
       ->capture_default_str()
       ->check(CLI::IsMember({"wall", "cpu"}));
+  std::string row_plans = "on";
+  app.add_option("--row-plans", row_plans, "SubdivKit: replay learnt stencil rows for smooth interior elements (off: "
+                                           "the generic rule interpreter for every row, to measure what plans give)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
   app.add_option("--worker", worker_side)->group("");  // internal: run one measurement
   app.add_option("--worker-fd", worker_fd)->group("");
   CLI11_PARSE(app, argc, argv);
   job.cpu_clock = clock == "cpu";
+  job.row_plans = row_plans == "on";
   if (job.cpu_clock && job.threads > 1 && worker_side.empty())
     std::fprintf(stderr, "subdiv-bench: note: --clock cpu adds up the CPU time of all %d threads\n", job.threads);
 
