@@ -7,14 +7,16 @@
 #include <vector>
 
 #include "framework/topology/level.h"
+#include "framework/util/bulk_memory.h"
 
 namespace subdiv {
 
-// A run of finished rows (CSR).
+// A run of finished rows (CSR). Chunks of rows are large and live only until the step's
+// table is assembled, so they take bulk memory, which is returned at once when freed.
 struct RowBlock {
-  std::vector<Index> offsets{0};
-  std::vector<Index> indices;
-  std::vector<double> weights;
+  BulkVector<Index> offsets{0};
+  BulkVector<Index> indices;
+  BulkVector<double> weights;
 };
 
 // Rows built in fixed-size chunks (one RowBlock each, filled in parallel); row r lives in

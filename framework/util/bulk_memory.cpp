@@ -1,11 +1,31 @@
 #include "framework/util/bulk_memory.h"
 
 #include <cstdint>
+#include <cstdlib>
+#include <new>
+#include <string_view>
 #include <sys/mman.h>
 
 namespace subdiv {
 
+namespace {
+
+// Off unless SUBDIV_HUGE_PAGES=1: with the kernel's THP defrag mode `madvise`, advised
+// ranges wait for direct compaction when memory is fragmented, and on the benchmark
+// machine that cost more than the page faults it saved as often as not
+// (docs/benchmarks.md).
+bool huge_pages_wanted() {
+  static const bool wanted = [] {
+    const char* setting = std::getenv("SUBDIV_HUGE_PAGES");
+    return setting && std::string_view(setting) == "1";
+  }();
+  return wanted;
+}
+
+}  // namespace
+
 void advise_huge_pages(void* data, std::size_t bytes) {
+  if (!huge_pages_wanted()) return;
 #ifdef MADV_HUGEPAGE
   constexpr std::uintptr_t kHuge = std::uintptr_t(2) << 20;
   const auto begin = (reinterpret_cast<std::uintptr_t>(data) + kHuge - 1) & ~(kHuge - 1);
@@ -15,5 +35,14 @@ void advise_huge_pages(void* data, std::size_t bytes) {
   (void)data, (void)bytes;
 #endif
 }
+
+void* allocate_bulk(std::size_t bytes) {
+  void* data = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (data == MAP_FAILED) throw std::bad_alloc();
+  advise_huge_pages(data, bytes);
+  return data;
+}
+
+void release_bulk(void* data, std::size_t bytes) { munmap(data, bytes); }
 
 }  // namespace subdiv

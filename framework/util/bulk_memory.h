@@ -3,13 +3,15 @@
 //
 // Refining a million-face mesh writes gigabytes of fresh memory: topology, stencil tables,
 // positions. With 4 KB pages every 4 KB of it costs a page fault, and on virtual machines
-// the faults, not the arithmetic, dominate (measured in docs/benchmarks.md: system time
-// several times the user time). Linux's default THP mode is often `madvise`, which gives
-// 2 MB pages only to ranges that ask for them. These helpers reserve an array's memory,
-// ask for huge pages, and only then touch it. Small arrays, and systems without THP, take
-// the ordinary path; the contents are the same either way.
+// the faults, not the arithmetic, can dominate (docs/benchmarks.md). Linux's THP mode is
+// often `madvise`, which gives 2 MB pages only to ranges that ask for them. These helpers
+// reserve an array's memory and, when SUBDIV_HUGE_PAGES=1 is set, ask for huge pages before
+// it is first touched (off by default: see bulk_memory.cpp). Bulk memory for short-lived
+// arrays comes straight from mmap and goes back at once when freed, which keeps the peak
+// down. The contents are the same either way.
 #include <algorithm>
 #include <cstddef>
+#include <memory>
 #include <type_traits>
 #include <vector>
 
@@ -21,6 +23,35 @@ constexpr std::size_t kBulkBytes = std::size_t(4) << 20;
 // Asks for huge pages on the 2 MB-aligned part of [data, data + bytes); a no-op where
 // madvise or THP is not available.
 void advise_huge_pages(void* data, std::size_t bytes);
+
+// Memory of `bytes` straight from the system (mmap) with huge pages advised, and back to
+// it on release: unlike heap blocks, freed bulk memory leaves the process at once, so
+// arrays that replace each other do not add up in the peak. Throws std::bad_alloc.
+void* allocate_bulk(std::size_t bytes);
+void release_bulk(void* data, std::size_t bytes);
+
+// An allocator for vectors that grow large and die young (per-chunk buffers): bulk memory
+// from kBulkBytes up, the ordinary heap below.
+template <class T>
+struct BulkAllocator {
+  using value_type = T;
+  BulkAllocator() = default;
+  template <class U>
+  BulkAllocator(const BulkAllocator<U>&) {}
+  T* allocate(std::size_t n) {
+    if (n * sizeof(T) < kBulkBytes) return std::allocator<T>().allocate(n);
+    return static_cast<T*>(allocate_bulk(n * sizeof(T)));
+  }
+  void deallocate(T* p, std::size_t n) {
+    if (n * sizeof(T) < kBulkBytes) return std::allocator<T>().deallocate(p, n);
+    release_bulk(p, n * sizeof(T));
+  }
+  template <class U>
+  bool operator==(const BulkAllocator<U>&) const { return true; }
+};
+
+template <class T>
+using BulkVector = std::vector<T, BulkAllocator<T>>;
 
 // v.resize(n), with huge pages advised before the new memory is first touched.
 template <class T>

@@ -91,8 +91,10 @@ int learn_and_replay(const Level& L) {
     REQUIRE(outcome == RowPlanner::Outcome::Appended);
     ++replayed;
     const auto from = generic.offsets[child], to = generic.offsets[child + 1];
-    CHECK(out.indices == std::vector<Index>(generic.indices.begin() + from, generic.indices.begin() + to));
-    CHECK(out.weights == std::vector<double>(generic.weights.begin() + from, generic.weights.begin() + to));
+    CHECK(std::vector<Index>(out.indices.begin(), out.indices.end()) ==
+          std::vector<Index>(generic.indices.begin() + from, generic.indices.begin() + to));
+    CHECK(std::vector<double>(out.weights.begin(), out.weights.end()) ==
+          std::vector<double>(generic.weights.begin() + from, generic.weights.begin() + to));
   }
   CHECK(learnt + replayed == generic.row_count());
   return learnt;
