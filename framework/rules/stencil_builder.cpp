@@ -16,9 +16,10 @@ namespace {
 
 constexpr double kSumTolerance = 1e-9;
 // Rows per parallel chunk: large enough that a chunk's buffers (all alive until the rows
-// are gathered) are big arrays on huge pages (util/bulk_memory.h) rather than thousands of
-// small heap blocks faulted in 4 KB at a time; small enough to share out among threads.
-constexpr Index kChunk = Index(1) << 17;
+// are gathered) are bulk memory (util/bulk_memory.h), returned to the system as soon as
+// they are copied, rather than heap blocks that stay; small enough to share out among
+// threads on meshes of some 100k elements.
+constexpr Index kChunk = Index(1) << 16;
 
 // The child vertices of one element kind, and where each element's first child is.
 struct ChildGroup {

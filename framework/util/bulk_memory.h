@@ -18,7 +18,7 @@
 namespace subdiv {
 
 // Below this many bytes an array is left to the allocator's usual pages.
-constexpr std::size_t kBulkBytes = std::size_t(4) << 20;
+constexpr std::size_t kBulkBytes = std::size_t(1) << 20;
 
 // Asks for huge pages on the 2 MB-aligned part of [data, data + bytes); a no-op where
 // madvise or THP is not available.
