@@ -16,13 +16,14 @@ Element element_of(NewPoint kind) {
 void add_point(RowBuilder& row, const RuleInputs& in, const CompiledTerm& term, Index element, double w) {
   if (term.new_point == NewPoint::None) return row.add(element, w);
   const Element kind = element_of(term.new_point);
-  const ChunkedRows* block = in.blocks[int(kind)];
-  if (!block)
+  const std::vector<Index>* rows = in.block_row_of_element[int(kind)];
+  if (!rows)
     throw Error(fmt::format("{}: uses new {} points, which this step does not make", term.where, element_name(kind)));
-  const Index r = (*in.block_row_of_element[int(kind)])[element];
+  const Index r = (*rows)[element];
   if (r == kNone)
     throw Error(fmt::format("{}: {} {} has no new point in this step", term.where, element_name(kind), element));
-  row.add_row(*block, r, w);
+  if (const ChunkedRows* block = in.blocks[int(kind)]) return row.add_row(*block, r, w);
+  in.on_demand->add(row, kind, r, w);
 }
 
 [[noreturn]] void wrong_role(const CompiledTerm& t, Element e) {

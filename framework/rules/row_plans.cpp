@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "framework/rules/step_rows.h"
+
 namespace subdiv {
 namespace {
 
@@ -120,18 +122,30 @@ bool RowPlanner::distinct() const {
   return true;
 }
 
-RowPlanner::Outcome RowPlanner::try_append(Index child, RowBlock& out) {
-  if (!describe(child)) return Outcome::Generic;
+const RowPlan* RowPlanner::find(Index child, Outcome& outcome) {
+  outcome = Outcome::Generic;
+  if (!describe(child)) return nullptr;
   const RowPlan* plan = nullptr;
-  if (const auto known = local_.find(key_); known != local_.end()) {
+  if (last_plan_ && key_ == last_key_) {
+    plan = last_plan_;
+  } else if (const auto known = local_.find(key_); known != local_.end()) {
     plan = known->second;
   } else {
     plan = store_.find(key_);
     if (plan) local_.emplace(key_, plan);
   }
-  if (!distinct()) return Outcome::Generic;
-  if (!plan) return Outcome::Learn;
-  if (!plan->usable) return Outcome::Generic;
+  if (plan) last_key_ = key_, last_plan_ = plan;
+  if (!distinct()) return nullptr;
+  if (!plan) outcome = Outcome::Learn;
+  if (!plan || !plan->usable) return nullptr;
+  outcome = Outcome::Appended;
+  return plan;
+}
+
+RowPlanner::Outcome RowPlanner::try_append(Index child, RowBlock& out) {
+  Outcome outcome;
+  const RowPlan* plan = find(child, outcome);
+  if (!plan) return outcome;
   for (std::uint16_t position : plan->positions) out.indices.push_back(around_[position]);
   out.weights.insert(out.weights.end(), plan->weights.begin(), plan->weights.end());
   return Outcome::Appended;
@@ -148,7 +162,12 @@ void RowPlanner::learn(const RowBuilder& row, RowPlanStore& store) {
     }
     plan.positions.push_back(std::uint16_t(at - around_.begin()));
   }
-  if (plan.usable) plan.weights = row.weights();
+  if (plan.usable) {
+    plan.weights = row.weights();
+    double sum = 0.0;
+    for (double w : plan.weights) sum += w;
+    plan.sum_ok = row_sum_ok(sum);
+  }
   else plan.positions.clear();
   local_.emplace(key_, store.add(key_, std::move(plan)));
 }

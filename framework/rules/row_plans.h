@@ -33,6 +33,7 @@ struct RowPlan {
   bool usable = false;  // false: the rule reads outside the enumeration; use the generic path
   std::vector<std::uint16_t> positions;  // into the element's enumeration
   std::vector<double> weights;
+  bool sum_ok = true;  // the learnt row is affine and finite (step_rows.h: row_sum_ok)
 };
 
 // Which kinds of element can use plans in one step, and the plans learnt so far (shared by
@@ -62,8 +63,13 @@ public:
   explicit RowPlanner(const RowPlanStore& store) : store_(store) {}
 
   enum class Outcome { Appended, Learn, Generic };
-  // Appends child's row to `out` from a plan (Appended); or says the row must be built
-  // generically, then passed to learn() (Learn) or not (Generic).
+  // The plan for child's row (Appended: the row is plan->weights over
+  // around()[plan->positions]); or null, and the row must be built generically, then passed
+  // to learn() (Learn) or not (Generic).
+  const RowPlan* find(Index child, Outcome& outcome);
+  // Child's neighbourhood, as enumerated by the last find().
+  const std::vector<Index>& around() const { return around_; }
+  // Appends child's row to `out` from a plan (Appended), or answers as find() does.
   Outcome try_append(Index child, RowBlock& out);
   // Records the generic row of the child try_append last answered Learn for.
   void learn(const RowBuilder& row, RowPlanStore& store);
@@ -75,6 +81,10 @@ private:
   const RowPlanStore& store_;
   std::vector<std::int32_t> key_;
   std::vector<Index> around_;
+  // Neighbouring elements mostly have the same shape: the last key and its plan are
+  // checked before the hash map.
+  std::vector<std::int32_t> last_key_;
+  const RowPlan* last_plan_ = nullptr;
   struct KeyHash {
     size_t operator()(const std::vector<std::int32_t>& key) const {
       size_t h = key.size();

@@ -5,8 +5,10 @@
 #include <limits>
 
 #include "framework/rules/stencil_builder.h"
+#include "framework/rules/step_evaluator.h"
 #include "framework/rules/weight_tables.h"
 #include "framework/scheme/scheme.h"
+#include "framework/util/bulk_memory.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -36,14 +38,42 @@ int max_valence(const Level& level) {
   return m;
 }
 
+// What one step's rows need besides the topology: its weight tables and feature contexts.
+struct StepInputs {
+  WeightTables tables;
+  FeatureContexts features;
+};
+
+StepInputs prepare_step(const Scheme& scheme, const StepRules& step, const Level& parent, int level,
+                        const RefineOptions& options) {
+  return {prepare_weight_tables(step, scheme.formula_scope(), max_valence(parent), parent.max_face_size(), level),
+          classify_features(parent, {options.boundary, options.crease_method})};
+}
+
+StepContext step_context(const Scheme& scheme, const StepRules& step, const StepInputs& inputs, const Level& parent,
+                         const ChildOrigins& origins, bool features_refined, int level, const RefineOptions& options) {
+  return {parent,      origins,           inputs.tables, inputs.features,       features_refined,
+          scheme.path, step.code.get(),   level,         options.use_row_plans};
+}
+
 // One step's stencils: `parent` values to the values of the step's output vertices.
 StencilTable step_stencils(const Scheme& scheme, const StepRules& step, const Level& parent,
                            const ChildOrigins& origins, bool features_refined, int level,
                            const RefineOptions& options) {
-  const WeightTables tables = prepare_weight_tables(step, scheme.formula_scope(), max_valence(parent), parent.max_face_size(), level);
-  const FeatureContexts features = classify_features(parent, {options.boundary, options.crease_method});
-  return build_step_stencils({parent, origins, tables, features, features_refined, scheme.path, step.code.get(), level,
-                              options.use_row_plans});
+  const StepInputs inputs = prepare_step(scheme, step, parent, level, options);
+  return build_step_stencils(step_context(scheme, step, inputs, parent, origins, features_refined, level, options));
+}
+
+// One step applied to values without a table (rules/step_evaluator.h).
+std::vector<double> step_rows_applied(const Scheme& scheme, const StepRules& step, const Level& parent,
+                                      const ChildOrigins& origins, bool features_refined, int level,
+                                      const RefineOptions& options, std::span<const double> values, int channels) {
+  const StepInputs inputs = prepare_step(scheme, step, parent, level, options);
+  std::vector<double> out;
+  resize_bulk(out, origins.kind.size() * size_t(channels));
+  apply_step_rows(step_context(scheme, step, inputs, parent, origins, features_refined, level, options), values, out,
+                  channels);
+  return out;
 }
 
 // The scheme of each level, in order.
@@ -67,6 +97,36 @@ void tag_boundary_corners(Level& base, BoundaryInterpolation mode) {
     if (base.vertex_sharpness.empty()) base.vertex_sharpness.assign(base.vertex_count, 0.f);
     base.vertex_sharpness[v] = kInfinitelySharp;
   }
+}
+
+// A non-linear step (plugins): no table says it, its rule is run on the values.
+std::shared_ptr<DirectStep> direct_step(const Scheme& scheme, const Hierarchy& h, size_t l, int level,
+                                        const RefineOptions& options) {
+  if (scheme.steps.size() != 1)
+    throw Error(fmt::format("{}: a non-linear scheme has one step (its rule does the whole level)", scheme.path));
+  auto direct = std::make_shared<DirectStep>();
+  direct->rule = scheme.steps.front().nonlinear;
+  direct->features = classify_features(h.levels[l], {options.boundary, options.crease_method});
+  direct->features_refined = h.features_refined[l];
+  direct->level = level;
+  return direct;
+}
+
+std::vector<double> run_direct_step(const DirectStep& direct, const Hierarchy& h, int step,
+                                    std::span<const double> values, int channels) {
+  const Level& parent = h.levels[step];
+  const Level& child = h.levels[step + 1];
+  if (values.size() != size_t(parent.vertex_count) * size_t(channels))
+    throw Error(fmt::format("apply_step: {} values for {} vertices of {} channels", values.size(), parent.vertex_count,
+                            channels));
+  std::vector<double> out(size_t(child.vertex_count) * size_t(channels), std::numeric_limits<double>::quiet_NaN());
+  (*direct.rule)({parent, child, h.origins[step], direct.features, direct.features_refined, direct.level}, values,
+                 out, channels);
+  for (size_t i = 0; i < out.size(); ++i)
+    if (!std::isfinite(out[i]))
+      throw Error(fmt::format("the non-linear rule of level {} left child vertex {} at {} (every child value must be "
+                              "set and finite)", direct.level, i / size_t(channels), out[i]));
+  return out;
 }
 
 }  // namespace
@@ -100,14 +160,7 @@ void build_stencils(std::span<const SchemeRun> runs, Hierarchy& h, const RefineO
     const Scheme& scheme = *per_level[l];
     const int level = options.first_step + int(l);
     if (scheme.steps.front().nonlinear) {
-      if (scheme.steps.size() != 1)
-        throw Error(fmt::format("{}: a non-linear scheme has one step (its rule does the whole level)", scheme.path));
-      auto direct = std::make_shared<DirectStep>();
-      direct->rule = scheme.steps.front().nonlinear;
-      direct->features = classify_features(h.levels[l], {options.boundary, options.crease_method});
-      direct->features_refined = h.features_refined[l];
-      direct->level = level;
-      h.direct[l] = std::move(direct);
+      h.direct[l] = direct_step(scheme, h, l, level, options);
       StencilTable none;  // no rows: apply_step() runs the rule
       none.source_count = h.levels[l].vertex_count;
       h.stencils.push_back(std::move(none));
@@ -160,19 +213,39 @@ std::vector<double> apply_step(const Hierarchy& h, int step, std::span<const dou
     throw Error(fmt::format("apply_step: step {} is not in 0..{}", step, int(h.stencils.size()) - 1));
   const DirectStep* direct = size_t(step) < h.direct.size() ? h.direct[step].get() : nullptr;
   if (!direct) return h.stencils[step].apply(values, channels);
-  const Level& parent = h.levels[step];
+  return run_direct_step(*direct, h, step, values, channels);
+}
+
+std::vector<double> step_values(std::span<const SchemeRun> runs, const Hierarchy& h, int step,
+                                std::span<const double> values, int channels, const RefineOptions& options) {
+  const std::vector<const Scheme*> per_level = schemes_per_level(runs);
+  if (per_level.size() + 1 != h.levels.size() || h.origins.size() != per_level.size())
+    throw Error(fmt::format("step_values: the runs give {} levels but the hierarchy has {}", per_level.size(),
+                            h.levels.size() - 1));
+  if (step < 0 || step >= int(per_level.size()))
+    throw Error(fmt::format("step_values: step {} is not in 0..{}", step, int(per_level.size()) - 1));
+  if (values.size() != size_t(h.levels[step].vertex_count) * size_t(channels))
+    throw Error(fmt::format("step_values: {} values for {} vertices of {} channels", values.size(),
+                            h.levels[step].vertex_count, channels));
+  const Scheme& scheme = *per_level[step];
+  const int level = options.first_step + step;
+  if (scheme.steps.front().nonlinear)
+    return run_direct_step(*direct_step(scheme, h, size_t(step), level, options), h, step, values, channels);
+  std::vector<double> out = step_rows_applied(scheme, scheme.steps.front(), h.levels[step], h.origins[step],
+                                              h.features_refined[step], level, options, values, channels);
+  // Smoothing passes, one after another (build_stencils composes their tables instead, so
+  // the last bits may differ).
   const Level& child = h.levels[step + 1];
-  if (values.size() != size_t(parent.vertex_count) * size_t(channels))
-    throw Error(fmt::format("apply_step: {} values for {} vertices of {} channels", values.size(), parent.vertex_count,
-                            channels));
-  std::vector<double> out(size_t(child.vertex_count) * size_t(channels), std::numeric_limits<double>::quiet_NaN());
-  (*direct->rule)({parent, child, h.origins[step], direct->features, direct->features_refined, direct->level}, values,
-                  out, channels);
-  for (size_t i = 0; i < out.size(); ++i)
-    if (!std::isfinite(out[i]))
-      throw Error(fmt::format("the non-linear rule of level {} left child vertex {} at {} (every child value must be "
-                              "set and finite)", direct->level, i / size_t(channels), out[i]));
+  const ChildOrigins same = scheme.steps.size() > 1 ? identity_origins(child) : ChildOrigins{};
+  for (size_t s = 1; s < scheme.steps.size(); ++s)
+    out = step_rows_applied(scheme, scheme.steps[s], child, same, true, level, options, out, channels);
   return out;
+}
+
+std::vector<double> step_values(const Scheme& scheme, const Hierarchy& h, int step, std::span<const double> values,
+                                int channels, const RefineOptions& options) {
+  const SchemeRun run{&scheme, int(h.levels.size()) - 1};
+  return step_values(std::span(&run, 1), h, step, values, channels, options);
 }
 
 }  // namespace subdiv

@@ -1,6 +1,6 @@
 #pragma once
-// The engine's driver: refine topology level by level, build one stencil table per step,
-// interpolate any per-vertex data through the tables.
+// The engine's driver: refine topology level by level, then carry any per-vertex data to
+// the finer levels, through one stencil table per step or straight from the rules.
 #include <memory>
 #include <span>
 #include <string>
@@ -76,6 +76,16 @@ Hierarchy refine(std::span<const SchemeRun> runs, Level base, const RefineOption
 // Values (channels per vertex) of level `step` carried to level step + 1: through the
 // stencil table, or the non-linear rule of a direct step.
 std::vector<double> apply_step(const Hierarchy& hierarchy, int step, std::span<const double> values, int channels);
+
+// Values of level `step` carried to level step + 1 straight from the rules, with no stencil
+// table (rules/step_evaluator.h): needs only refine_topology's hierarchy, and is faster
+// and smaller than build_stencils + apply_step. Same values: the same bits for schemes of
+// one step; smoothing passes are applied one after another rather than composed, which may
+// change the last bits.
+std::vector<double> step_values(std::span<const SchemeRun> runs, const Hierarchy& topology, int step,
+                                std::span<const double> values, int channels, const RefineOptions& options);
+std::vector<double> step_values(const Scheme& scheme, const Hierarchy& topology, int step,
+                                std::span<const double> values, int channels, const RefineOptions& options);
 
 // Values (channels per vertex) of the base level carried to level `to_level`.
 std::vector<double> interpolate(const Hierarchy& hierarchy, int to_level,

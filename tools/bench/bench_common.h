@@ -23,6 +23,7 @@ struct Job {
   std::int64_t check_max = 0;  // at most about this many vertices sent back for the check
   bool cpu_clock = false;      // time with the process CPU clock instead of the wall clock
   bool row_plans = true;       // SubdivKit: replay learnt stencil rows (rules/row_plans.h)
+  bool tables = false;         // SubdivKit: build stencil tables and apply them, instead of step_values
 };
 
 // Milliseconds on the wall clock (steady) or on the process CPU clock (user + system time
@@ -34,7 +35,7 @@ double now_ms(bool cpu_clock);
 struct Timings {
   double setup_ms = 0;    // base-level topology from the face arrays
   double topo_ms = 0;     // uniform refinement of the topology to the level
-  double stencil_ms = 0;  // SubdivKit: building the stencil tables (OSD: 0)
+  double stencil_ms = 0;  // SubdivKit with --geometry tables: building the stencil tables (else and OSD: 0)
   double apply_ms = 0;    // interpolating xyz level by level
   double total_ms() const { return setup_ms + topo_ms + stencil_ms + apply_ms; }
   double geom_ms() const { return stencil_ms + apply_ms; }

@@ -62,17 +62,23 @@ WorkerReport run_subdivkit(const Job& job, const Mesh& mesh) {
     subdiv::Hierarchy h = subdiv::refine_topology(*scheme, std::move(base), options);
     t.topo_ms = now_ms(job.cpu_clock) - t0;
 
-    t0 = now_ms(job.cpu_clock);
-    subdiv::build_stencils(*scheme, h, options);
-    t.stencil_ms = now_ms(job.cpu_clock) - t0;
-
+    std::vector<double> src, dst;
+    if (job.tables) {
+      t0 = now_ms(job.cpu_clock);
+      subdiv::build_stencils(*scheme, h, options);
+      t.stencil_ms = now_ms(job.cpu_clock) - t0;
+    }
     // Level by level, keeping only the current and next positions (as the OSD side).
     t0 = now_ms(job.cpu_clock);
-    std::vector<double> src, dst;
     for (int l = 0; l < job.level; ++l) {
-      const auto& table = h.stencils[size_t(l)];
-      subdiv::resize_bulk(dst, 3 * size_t(table.row_count()));  // as StencilTable::apply(src, channels) does
-      table.apply(l == 0 ? std::span<const double>(mesh.xyz) : std::span<const double>(src), dst, 3);
+      const std::span<const double> from = l == 0 ? std::span<const double>(mesh.xyz) : std::span<const double>(src);
+      if (job.tables) {
+        const auto& table = h.stencils[size_t(l)];
+        subdiv::resize_bulk(dst, 3 * size_t(table.row_count()));  // as StencilTable::apply(src, channels) does
+        table.apply(from, dst, 3);
+      } else {
+        dst = subdiv::step_values(*scheme, h, l, from, 3, options);
+      }
       std::swap(src, dst);
       std::vector<double>().swap(dst);
     }

@@ -142,7 +142,8 @@ RunResult run_worker(const Job& job) {
                                    "--repeat", std::to_string(job.repeat),
                                    "--check-max", std::to_string(job.check_max),
                                    "--clock", job.cpu_clock ? "cpu" : "wall",
-                                   "--row-plans", job.row_plans ? "on" : "off"};
+                                   "--row-plans", job.row_plans ? "on" : "off",
+                                   "--geometry", job.tables ? "tables" : "direct"};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -497,11 +498,18 @@ int main(int argc, char** argv) {
                                            "the generic rule interpreter for every row, to measure what plans give)")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
+  std::string geometry = "direct";
+  app.add_option("--geometry", geometry,
+                 "SubdivKit: direct (each level's positions straight from the rules, step_values) or tables "
+                 "(build the stencil tables, then apply them)")
+      ->check(CLI::IsMember({"direct", "tables"}))
+      ->capture_default_str();
   app.add_option("--worker", worker_side)->group("");  // internal: run one measurement
   app.add_option("--worker-fd", worker_fd)->group("");
   CLI11_PARSE(app, argc, argv);
   job.cpu_clock = clock == "cpu";
   job.row_plans = row_plans == "on";
+  job.tables = geometry == "tables";
   if (job.cpu_clock && job.threads > 1 && worker_side.empty())
     std::fprintf(stderr, "subdiv-bench: note: --clock cpu adds up the CPU time of all %d threads\n", job.threads);
 

@@ -94,12 +94,11 @@ void run(const RefineArgs& a) {
   Progress progress;
   progress.say(fmt::format("refining topology: {} levels of {}", seq.total_levels, a.scheme));
   Hierarchy h = refine_topology(seq.runs, std::move(base), options);
-  progress.say("building stencils");
-  build_stencils(seq.runs, h, options);
   std::vector<std::vector<double>> positions{mesh.positions};
   for (int l = 0; l < seq.total_levels; ++l) {
     progress.say(fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
-    positions.push_back(apply_step(h, l, positions.back(), 3));  // stencils, or a non-linear plugin rule
+    // Straight from the rules (no stencil tables), or a non-linear plugin rule.
+    positions.push_back(step_values(seq.runs, h, l, positions.back(), 3, options));
   }
   std::vector<DataArray> limit_data;
   if (a.limit) {

@@ -87,3 +87,23 @@ TEST_CASE("load-time checks: unknown names in formulas, reserved names, wrong JS
     "rules": {"face": [{"sum": "vertices", "w": "1/k"}], "edge": [{"sum": "ends", "w": "1/2"}], "vertex": [{"at": "self", "w": "1"}]}})J");
   CHECK_THROWS_WITH_AS(load_scheme(bare.string()), doctest::Contains("a parameter is an object"), Error);
 }
+
+TEST_CASE("weights that do not sum to one are refused the same way without stencil tables") {
+  const auto f = write_scheme("affine-direct", quad_scheme(R"J([{"at": "self", "w": "(n-2)/n"}, {"sum": "ring", "w": "1/n^2"}])J"));
+  auto scheme = load_scheme(f.string());
+  RefineOptions o;
+  o.levels = 1;
+  const test::Mesh cube = test::cube();
+  const Hierarchy h = refine_topology(*scheme, cube.level(), o);
+  std::string with_tables;
+  try {
+    refine(*scheme, cube.level(), o);
+  } catch (const Error& e) {
+    with_tables = e.what();
+  }
+  REQUIRE(with_tables.find("summing to") != std::string::npos);
+  for (bool plans : {true, false}) {
+    o.use_row_plans = plans;
+    CHECK_THROWS_WITH_AS(step_values(*scheme, h, 0, cube.positions, 3, o), with_tables.c_str(), Error);
+  }
+}

@@ -180,3 +180,16 @@ TEST_CASE("a JSON scheme file uses the plugin's role 'line'") {
   CHECK_THROWS_WITH_AS(load_scheme((dir / "bad.json").string()), doctest::Contains("role 'line' does not exist around a vertex"),
                        Error);
 }
+
+TEST_CASE("kobbelt-quad (rules in C++, no row plans) gives the same bits with and without stencil tables") {
+  load_example_plugins();
+  const auto scheme = load_scheme("kobbelt-quad");
+  const Mesh g = grid(6, 5);
+  RefineOptions options;
+  options.levels = 2;
+  const Hierarchy topology = refine_topology(*scheme, g.level(), options);
+  const Hierarchy tables = refine(*scheme, g.level(), options);
+  std::vector<double> direct = g.positions;
+  for (int l = 0; l < 2; ++l) direct = step_values(*scheme, topology, l, direct, 3, options);
+  CHECK(direct == interpolate(tables, 2, g.positions, 3));
+}

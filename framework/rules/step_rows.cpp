@@ -1,0 +1,253 @@
+#include "framework/rules/step_rows.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include "framework/rules/row_plans.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+constexpr double kSumTolerance = 1e-9;
+
+const CompiledRule& needed_rule(const WeightTables& tables, Element e, Context c, const std::string& source) {
+  const CompiledRule& rule = tables.rule(e, c);
+  if (!rule.defined)
+    throw Error(fmt::format(
+        "{}: the mesh needs a rule for new {} points in the '{}' context, and the scheme has none; "
+        "add rules.{}.{}{}",
+        source, element_name(e), context_name(c), element_name(e), context_name(c),
+        c == Context::Crease ? " or name a boundary curve scheme with \"curve\"" : ""));
+  return rule;
+}
+
+const CompiledRule& curve_rule(const StepContext& s, int r, Element e) {
+  if (r >= int(s.tables.curve_rules.size()))
+    throw Error(fmt::format("{}: the mesh has boundaries or creases, and the scheme has neither a {} crease "
+                            "rule nor a curve scheme (\"curve\") to give one",
+                            s.source, element_name(e)));
+  return s.tables.curve_rules[r];
+}
+
+// Code rules (plugins) cover smooth contexts, or every context with handles_features.
+bool code_covers(const StepContext& s, bool has_function, Context c) {
+  return s.code && has_function && (s.code->handles_features || c == Context::Smooth || c == Context::Dart);
+}
+
+void fill_vertex_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index v) {
+  const VertexContext& vc = s.features.vertices[v];
+  auto apply = [&](Context c, const std::array<std::uint16_t, 2>& crease, double w) {
+    if (code_covers(s, s.code && s.code->vertex, c)) {
+      RowWriter writer(row, w);
+      return s.code->vertex({s.parent, s.features, s.level}, v, c, writer);
+    }
+    if (c == Context::Crease && !s.tables.rule(Element::Vertex, c).defined) {
+      if (!s.features_refined) return row.add(v, w);  // feature curves wait for the next step
+      return apply_vertex_rule(row, in, v, curve_rule(s, 0, Element::Vertex), crease, w);
+    }
+    apply_vertex_rule(row, in, v, needed_rule(s.tables, Element::Vertex, c, s.source), crease, w);
+  };
+  const double pw = vc.child == vc.parent ? 1.0 : vc.parent_weight;
+  if (pw > 0.0) apply(vc.parent, vc.parent_crease, pw);
+  if (pw < 1.0) apply(vc.child, vc.child_crease, 1.0 - pw);
+}
+
+void fill_edge_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index e, int local) {
+  float cw = s.features.edges[e].crease_weight;
+  const bool code = s.code && s.code->edge;
+  if (code && s.code->handles_features) {
+    RowWriter writer(row, 1.0);
+    return s.code->edge({s.parent, s.features, s.level}, e, local, cw > 0.f ? Context::Crease : Context::Smooth, writer);
+  }
+  // Splits that make edge points only on features (sqrt3 trisection) have no smooth edge
+  // rule: there a semi-sharp feature edge is refined as a crease while it is one.
+  if (!code && cw > 0.f && !s.tables.rule(Element::Edge, Context::Smooth).defined) cw = 1.f;
+  // cw may exceed 1 (OpenSubdiv's unclamped Chaikin transition, see classify_edge).
+  if (cw != 1.f && code) {
+    RowWriter writer(row, 1.0 - cw);
+    s.code->edge({s.parent, s.features, s.level}, e, local, Context::Smooth, writer);
+  } else if (cw != 1.f) {
+    apply_edge_rule(row, in, e, needed_rule(s.tables, Element::Edge, Context::Smooth, s.source), 1.0 - cw);
+  }
+  if (cw <= 0.f) return;
+  const CompiledRule& stated = s.tables.rule(Element::Edge, Context::Crease);
+  if (stated.defined && local == 0) return apply_edge_rule(row, in, e, stated, cw);
+  // The local-th new point along a crease edge is the curve scheme's rule local + 1.
+  const Index a = s.parent.edge_vertices[2 * e], b = s.parent.edge_vertices[2 * e + 1];
+  apply_segment_curve_rule(row, in, e, a, b, curve_rule(s, local + 1, Element::Edge), cw);
+}
+
+// A face corner beside a sharp face edge follows the (dual) curve scheme along that edge:
+// rule 0 for the point near the segment's start, rule 1 near its end (seed 000: "open
+// meshes use Chaikin"; our crease extension for dual schemes, docs/scheme-format.md).
+void fill_corner_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index f, int corner) {
+  const Level& L = s.parent;
+  const int k = L.face_size(f);
+  const Index v = L.face(f)[corner];
+  const Index out = L.face_edge_list(f)[corner], in_edge = L.face_edge_list(f)[(corner + k - 1) % k];
+  const float w_out = s.features.edges[out].crease_weight, w_in = s.features.edges[in_edge].crease_weight;
+  const bool corner_vertex = s.features.vertex_sharpness[v] > 0.f || (w_out > 0.f && w_in > 0.f);
+  const bool code = s.code && s.code->corner;
+  if (code && s.code->handles_features) {
+    const Context c = corner_vertex ? Context::Corner : std::max(w_out, w_in) > 0.f ? Context::Crease : Context::Smooth;
+    RowWriter writer(row, 1.0);
+    return s.code->corner({s.parent, s.features, s.level}, f, corner, c, writer);
+  }
+  // The smooth part of the row: the code rule or the scheme's smooth corner rule.
+  auto smooth = [&](double scale) {
+    if (!code) return apply_corner_rule(row, in, f, corner, needed_rule(s.tables, Element::Corner, Context::Smooth, s.source), scale);
+    RowWriter writer(row, scale);
+    s.code->corner({s.parent, s.features, s.level}, f, corner, Context::Smooth, writer);
+  };
+  if (corner_vertex) {
+    const double w = s.features.vertex_sharpness[v] > 0.f ? 1.0 : std::min(w_out, w_in);
+    apply_corner_rule(row, in, f, corner, needed_rule(s.tables, Element::Corner, Context::Corner, s.source), w);
+    if (w < 1.0) smooth(1.0 - w);
+    return;
+  }
+  const double w = std::max(w_out, w_in);
+  if (w < 1.0) smooth(1.0 - w);
+  if (w <= 0.0) return;
+  const CompiledRule& stated = s.tables.rule(Element::Corner, Context::Crease);
+  if (stated.defined) return apply_corner_rule(row, in, f, corner, stated, w);
+  const Index next = L.face(f)[(corner + 1) % k], prev = L.face(f)[(corner + k - 1) % k];
+  if (w_out > 0.f) apply_segment_curve_rule(row, in, out, v, next, curve_rule(s, 0, Element::Corner), w);
+  else apply_segment_curve_rule(row, in, in_edge, prev, v, curve_rule(s, 1, Element::Corner), w);
+}
+
+Index element_count(const Level& L, Element e) {
+  switch (e) {
+    case Element::Vertex: return L.vertex_count;
+    case Element::Edge: return L.edge_count();
+    case Element::Face: return L.face_count();
+    case Element::Corner: return L.corner_count();
+  }
+  return 0;
+}
+
+bool references(const WeightTables& T, Element from, NewPoint to) {
+  for (const auto& rule : T.rules[int(from)])
+    for (const auto& term : rule.terms)
+      if (term.new_point == to) return true;
+  return false;
+}
+
+}  // namespace
+
+void fill_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index child) {
+  const Index p = s.origins.parent[child];
+  switch (s.origins.kind[child]) {
+    case OriginKind::Vertex: return fill_vertex_row(row, s, in, p);
+    case OriginKind::Edge: return fill_edge_row(row, s, in, p, s.origins.local[child]);
+    case OriginKind::Face:
+      if (s.code && s.code->face) {
+        RowWriter writer(row, 1.0);
+        return s.code->face({s.parent, s.features, s.level}, p, writer);
+      }
+      return apply_face_rule(row, in, p, needed_rule(s.tables, Element::Face, Context::Smooth, s.source));
+    case OriginKind::Corner: return fill_corner_row(row, s, in, p, s.origins.local[child]);
+  }
+}
+
+std::vector<ChildGroup> group_children(const StepContext& s) {
+  std::vector<ChildGroup> groups(kElementCount);
+  for (int e = 0; e < kElementCount; ++e)
+    groups[e].row_of_element.assign(element_count(s.parent, Element(e)), kNone);
+  for (Index c = 0; c < Index(s.origins.kind.size()); ++c) {
+    const int kind = int(s.origins.kind[c]);
+    Index element = s.origins.parent[c];
+    if (s.origins.kind[c] == OriginKind::Corner) element = s.parent.face_offsets[element] + s.origins.local[c];
+    if (groups[kind].row_of_element[element] == kNone)
+      groups[kind].row_of_element[element] = Index(groups[kind].children.size());
+    groups[kind].children.push_back(c);
+  }
+  return groups;
+}
+std::vector<Element> build_order(const StepContext& s, const std::vector<ChildGroup>& groups) {
+  const NewPoint as_new[kElementCount] = {NewPoint::Vertex, NewPoint::Edge, NewPoint::Face, NewPoint::None};
+  std::vector<Element> order;
+  bool placed[kElementCount] = {};
+  for (int round = 0; round < kElementCount; ++round)
+    for (int e = 0; e < kElementCount; ++e) {
+      if (placed[e] || groups[e].children.empty()) continue;
+      bool ready = true;
+      for (int d = 0; d < kElementCount; ++d)
+        if (d != e && !placed[d] && !groups[d].children.empty() && references(s.tables, Element(e), as_new[d]))
+          ready = false;
+      if (as_new[e] != NewPoint::None && references(s.tables, Element(e), as_new[e]))
+        throw Error(fmt::format("{}: the {} rules use new {} points, which they define", s.source,
+                                element_name(Element(e)), element_name(Element(e))));
+      if (ready) placed[e] = true, order.push_back(Element(e));
+    }
+  for (int e = 0; e < kElementCount; ++e)
+    if (!groups[e].children.empty() && !placed[e])
+      throw Error(fmt::format("{}: the rules refer to each other's new points in a cycle", s.source));
+  return order;
+}
+bool uses_new_points(const WeightTables& tables, Element from, Element to) {
+  const NewPoint as_new[kElementCount] = {NewPoint::Vertex, NewPoint::Edge, NewPoint::Face, NewPoint::None};
+  return as_new[int(to)] != NewPoint::None && references(tables, from, as_new[int(to)]);
+}
+
+bool row_sum_ok(double sum) { return std::isfinite(sum) && std::abs(sum - 1.0) <= kSumTolerance; }
+
+void report_bad_row(const StepContext& s, Index child, double sum) {
+  const Index p = s.origins.parent[child];
+  const Element e = Element(int(s.origins.kind[child]));
+  const int size = e == Element::Vertex ? s.parent.valence(p) : e == Element::Edge ? 2 : s.parent.face_size(p);
+  throw Error(fmt::format(
+      "{}: the new point of {} {} has weights summing to {} instead of 1 ({} {}); every rule must "
+      "be affine and finite: check the weight formulas of the {} rules",
+      s.source, element_name(e), p, sum, e == Element::Vertex ? "valence" : "size", size, element_name(e)));
+}
+
+ChunkedRows build_rows(const StepContext& s, const RuleInputs& in, const ChildGroup& group, RowPlanStore& plans) {
+  const Index count = Index(group.children.size());
+  ChunkedRows rows;
+  rows.chunk_rows = kRowChunk;
+  rows.chunks.resize((count + kRowChunk - 1) / kRowChunk);
+  std::atomic<Index> first_bad{count};
+  tbb::parallel_for(Index(0), Index(rows.chunks.size()), [&](Index c) {
+    RowBuilder row;
+    RowPlanner planner(plans);
+    RowBlock& part = rows.chunks[c];
+    const Index begin = c * kRowChunk, end = std::min(count, (c + 1) * kRowChunk);
+    part.offsets.reserve(size_t(end - begin) + 1);
+    part.indices.reserve(size_t(end - begin) * 12);
+    part.weights.reserve(size_t(end - begin) * 12);
+    for (Index r = begin; r < end; ++r) {
+      const Index child = group.children[r];
+      const auto outcome = s.use_row_plans ? planner.try_append(child, part) : RowPlanner::Outcome::Generic;
+      if (outcome != RowPlanner::Outcome::Appended) {
+        row.clear();
+        fill_row(row, s, in, child);
+        if (outcome == RowPlanner::Outcome::Learn) planner.learn(row, plans);
+        part.indices.insert(part.indices.end(), row.indices().begin(), row.indices().end());
+        part.weights.insert(part.weights.end(), row.weights().begin(), row.weights().end());
+      }
+      const Index from = part.offsets.back();
+      part.offsets.push_back(Index(part.indices.size()));
+      double sum = 0.0;
+      for (Index i = from; i < part.offsets.back(); ++i) sum += part.weights[i];
+      if (!row_sum_ok(sum)) {
+        Index seen = first_bad.load();
+        while (r < seen && !first_bad.compare_exchange_weak(seen, r)) {}
+      }
+    }
+  });
+  if (first_bad < count) {
+    const Index child = group.children[first_bad];
+    RowBuilder row;
+    fill_row(row, s, in, child);
+    double sum = 0.0;
+    for (double w : row.weights()) sum += w;
+    report_bad_row(s, child, sum);
+  }
+  return rows;
+}
+
+}  // namespace subdiv

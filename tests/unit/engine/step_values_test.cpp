@@ -1,0 +1,124 @@
+// step_values (framework/scheme/refiner.h, rules/step_evaluator.h) carries values to the
+// next level straight from the rules, with no stencil table. It must give exactly what the
+// tables give: the same bits for one-step schemes, for any channel count, thread count,
+// with or without row plans, on meshes with boundaries, features and tiny closed rings.
+#include <cmath>
+#include <doctest/doctest.h>
+#include <tbb/global_control.h>
+
+#include "framework/util/error.h"
+#include "support/refine_helpers.h"
+
+using namespace subdiv;
+using namespace subdiv::test;
+
+namespace {
+
+struct Case {
+  Level level;
+  std::vector<double> positions;
+};
+
+Case of(const Mesh& m) { return {m.level(), m.positions}; }
+
+// A cube with a sharp edge, a semi-sharp edge and a sharp corner (features beside smooth
+// vertices, so plans and the generic path meet).
+Case creased_cube() {
+  Case c = of(cube());
+  c.level.edge_sharpness.assign(size_t(c.level.edge_count()), 0.f);
+  c.level.edge_sharpness[0] = 10.f;
+  c.level.edge_sharpness[5] = 1.5f;
+  c.level.vertex_sharpness.assign(size_t(c.level.vertex_count), 0.f);
+  c.level.vertex_sharpness[6] = 3.f;
+  return c;
+}
+
+// Per-vertex data of `channels` values that are not just positions (and differ per channel).
+std::vector<double> data_for(const Case& c, int channels) {
+  std::vector<double> d(size_t(c.level.vertex_count) * channels);
+  for (size_t i = 0; i < d.size(); ++i) d[i] = c.positions[i % c.positions.size()] * (1.0 + 0.1 * double(i % 7)) + 0.01 * double(i);
+  return d;
+}
+
+// Level by level, through the tables and through step_values; `exact`: bit for bit.
+void check_same_values(const std::string& name, const Case& c, int levels, bool plans, int channels, bool exact) {
+  CAPTURE(name);
+  CAPTURE(levels);
+  CAPTURE(plans);
+  CAPTURE(channels);
+  const auto scheme = load_scheme(name);
+  RefineOptions o;
+  o.levels = levels;
+  o.use_row_plans = plans;
+  const Hierarchy topology = refine_topology(*scheme, c.level, o);
+  const Hierarchy tables = refine(*scheme, c.level, o);
+  std::vector<double> direct = data_for(c, channels), through_tables = direct;
+  for (int l = 0; l < levels; ++l) {
+    CAPTURE(l);
+    direct = step_values(*scheme, topology, l, direct, channels, o);
+    through_tables = apply_step(tables, l, through_tables, channels);
+    REQUIRE(direct.size() == through_tables.size());
+    if (exact) {
+      CHECK(direct == through_tables);
+      continue;
+    }
+    double worst = 0.0;
+    for (size_t i = 0; i < direct.size(); ++i) worst = std::max(worst, std::abs(direct[i] - through_tables[i]));
+    CHECK(worst < 1e-12);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("step_values equals the stencil tables bit for bit, for every one-step scheme") {
+  const std::vector<Case> quads = {of(torus(6, 5)), of(cube()), of(grid(4, 3)), creased_cube(), of(torus(3, 3))};
+  const std::vector<Case> triangles = {of(torus(6, 5, true)), of(octahedron()), of(grid(4, 3, true)),
+                                       of(bipyramid(7)), of(torus(3, 3, true))};
+  for (bool plans : {true, false})
+    for (int channels : {3, 1, 2}) {
+      for (const char* scheme : {"catmull-clark", "catmull-clark-shape", "bilinear", "doo-sabin", "doo-sabin-centroid", "mid-edge"})
+        for (const Case& c : quads) check_same_values(scheme, c, 2, plans, channels, true);
+      for (const char* scheme : {"catmull-clark", "doo-sabin", "mid-edge"})
+        check_same_values(scheme, of(pyramid()), 2, plans, channels, true);  // a quad among triangles
+      for (const char* scheme : {"loop", "butterfly", "modified-butterfly", "midpoint"})
+        for (const Case& c : triangles) check_same_values(scheme, c, 2, plans, channels, true);
+      for (const Case& c : triangles) check_same_values("sqrt3", c, 3, plans, channels, true);
+    }
+  check_same_values("catmull-clark", creased_cube(), 4, true, 3, true);  // semi-sharp decays over levels
+}
+
+TEST_CASE("step_values applies smoothing passes one after another, equal to the composed tables") {
+  const std::vector<Case> triangles = {of(torus(6, 5, true)), of(grid(4, 3, true)), of(bipyramid(7))};
+  for (const Case& c : triangles) check_same_values("loop-composite", c, 2, true, 3, false);
+  for (const Case& c : {of(torus(6, 5)), of(grid(4, 3)), creased_cube()}) check_same_values("quad-bspline", c, 2, true, 3, false);
+}
+
+TEST_CASE("step_values gives the same bits on one thread and on two") {
+  const Case c = of(torus(300, 200));  // 60k faces: several parallel tasks per group
+  const auto scheme = load_scheme("catmull-clark");
+  RefineOptions o;
+  o.levels = 1;
+  const Hierarchy h = refine_topology(*scheme, c.level, o);
+  std::vector<double> one, two;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    one = step_values(*scheme, h, 0, c.positions, 3, o);
+  }
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+    two = step_values(*scheme, h, 0, c.positions, 3, o);
+  }
+  CHECK(one == two);
+  CHECK(one == interpolate(refine(*scheme, c.level, o), 1, c.positions, 3));
+}
+
+TEST_CASE("step_values refuses wrong buffers and steps with a message") {
+  const auto scheme = load_scheme("catmull-clark");
+  RefineOptions o;
+  o.levels = 1;
+  const Case c = of(cube());
+  const Hierarchy h = refine_topology(*scheme, c.level, o);
+  CHECK_THROWS_WITH_AS(step_values(*scheme, h, 1, c.positions, 3, o), doctest::Contains("step 1 is not in 0..0"), Error);
+  CHECK_THROWS_WITH_AS(step_values(*scheme, h, 0, std::vector<double>(5), 3, o),
+                       doctest::Contains("5 values for 8 vertices of 3 channels"), Error);
+}
