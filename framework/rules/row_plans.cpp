@@ -83,7 +83,7 @@ bool RowPlanner::describe(Index child) {
         const auto face = L.face(L.vertex_faces[i]);
         const int k = int(face.size()), c = L.vertex_face_corner[i];
         key_.push_back(k), key_.push_back(c);  // c: new face points list the face from its corner 0
-        for (int d = 1; d + 1 < k; ++d) around_.push_back(face[(c + d) % k]);
+        for (int d = c + 1; d < c + k - 1; ++d) around_.push_back(face[d < k ? d : d - k]);
       }
       break;
     }
@@ -99,7 +99,7 @@ bool RowPlanner::describe(Index child) {
         const int k = int(face.size());
         const int c = int(std::find(edges.begin(), edges.end(), p) - edges.begin());
         key_.push_back(k), key_.push_back(c);
-        for (int d = 2; d < k; ++d) around_.push_back(face[(c + d) % k]);
+        for (int d = c + 2; d < c + k; ++d) around_.push_back(face[d < k ? d : d - k]);
       }
       break;
     }
@@ -115,10 +115,15 @@ bool RowPlanner::describe(Index child) {
   return around_.size() <= kMaxAround;
 }
 
+// All pairs, without branches in the inner loop (so the compiler can vectorise it).
 bool RowPlanner::distinct() const {
-  for (size_t i = 1; i < around_.size(); ++i)
-    for (size_t j = 0; j < i; ++j)
-      if (around_[i] == around_[j]) return false;
+  const Index* a = around_.data();
+  for (size_t i = 1; i < around_.size(); ++i) {
+    const Index v = a[i];
+    int repeated = 0;
+    for (size_t j = 0; j < i; ++j) repeated |= int(a[j] == v);
+    if (repeated) return false;
+  }
   return true;
 }
 

@@ -12,6 +12,9 @@
 
 namespace subdiv_bench {
 
+enum class Clock { Wall, Cpu, User };
+const char* clock_name(Clock clock);
+
 struct Job {
   std::string side;    // "subdivkit" or "osd"
   std::string scheme;  // "catmull-clark" or "loop"
@@ -21,15 +24,17 @@ struct Job {
   int threads = 1;
   int repeat = 1;
   std::int64_t check_max = 0;  // at most about this many vertices sent back for the check
-  bool cpu_clock = false;      // time with the process CPU clock instead of the wall clock
+  Clock clock = Clock::Wall;
   bool row_plans = true;       // SubdivKit: replay learnt stencil rows (rules/row_plans.h)
   bool tables = false;         // SubdivKit: build stencil tables and apply them, instead of step_values
 };
 
-// Milliseconds on the wall clock (steady) or on the process CPU clock (user + system time
-// of all threads: on a shared machine it does not count time spent waiting for a core,
-// but it adds up the threads, so it only compares like with like at --threads 1).
-double now_ms(bool cpu_clock);
+// Milliseconds on the wall clock (steady), on the process CPU clock (user + system time of
+// all threads: on a shared machine it does not count time spent waiting for a core, but it
+// adds up the threads, so it only compares like with like at --threads 1), or of user time
+// alone (leaves out the kernel's work, mostly zeroing fresh pages, whose cost on a virtual
+// machine depends on the host).
+double now_ms(Clock clock);
 
 // Milliseconds of the best repetition (the one with the smallest total), and memory.
 struct Timings {

@@ -1,4 +1,5 @@
 // Memory figures and small helpers shared by the sides.
+#include <sys/resource.h>
 #include <time.h>
 
 #include <chrono>
@@ -24,8 +25,15 @@ std::int64_t status_field_bytes(const char* field) {
 
 }  // namespace
 
-double now_ms(bool cpu_clock) {
-  if (cpu_clock) {
+const char* clock_name(Clock clock) { return clock == Clock::Wall ? "wall" : clock == Clock::Cpu ? "cpu" : "user"; }
+
+double now_ms(Clock clock) {
+  if (clock == Clock::User) {
+    rusage usage;
+    getrusage(RUSAGE_SELF, &usage);
+    return double(usage.ru_utime.tv_sec) * 1e3 + double(usage.ru_utime.tv_usec) * 1e-3;
+  }
+  if (clock == Clock::Cpu) {
     timespec ts;
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
     return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) * 1e-6;
