@@ -115,15 +115,10 @@ bool RowPlanner::describe(Index child) {
   return around_.size() <= kMaxAround;
 }
 
-// All pairs, without branches in the inner loop (so the compiler can vectorise it).
 bool RowPlanner::distinct() const {
-  const Index* a = around_.data();
-  for (size_t i = 1; i < around_.size(); ++i) {
-    const Index v = a[i];
-    int repeated = 0;
-    for (size_t j = 0; j < i; ++j) repeated |= int(a[j] == v);
-    if (repeated) return false;
-  }
+  for (size_t i = 1; i < around_.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (around_[i] == around_[j]) return false;
   return true;
 }
 
