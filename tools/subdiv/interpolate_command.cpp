@@ -11,6 +11,9 @@
 #include <tbb/global_control.h>
 
 #include "commands.h"
+#include "curve_interpolate.h"
+#include "curve_refine.h"
+#include "interpolate_inputs.h"
 #include "framework/interpolation/limit_selection.h"
 #include "framework/interpolation/progressive.h"
 #include "framework/interpolation/shape_two_step.h"
@@ -63,8 +66,8 @@ std::string read_text(const fs::path& file, const std::string& what) {
   return s.str();
 }
 
-// Progressive interpolation here is for surfaces; a curve scheme gets a clear refusal
-// instead of the surface loader's.
+// Sequences are for surfaces; a curve scheme inside one gets a clear refusal instead of
+// the surface loader's.
 void refuse_curve_schemes(const std::string& sequence) {
   std::string name;
   std::istringstream runs(sequence);
@@ -77,9 +80,8 @@ void refuse_curve_schemes(const std::string& sequence) {
       // Unknown names are reported by the loader, with the known ones.
     }
     if (curve)
-      throw Error(fmt::format("--scheme: '{}' is a curve scheme; subdiv interpolate interpolates surfaces "
-                              "(progressive interpolation of polylines is not available yet); subdiv refine "
-                              "refines polylines with it", name));
+      throw Error(fmt::format("--scheme: '{}' is a curve scheme inside a sequence; polylines are interpolated "
+                              "with one curve scheme (--scheme {})", name, name));
   }
 }
 
@@ -131,23 +133,6 @@ bool has_lambda(const SchemeSequence& seq) {
     for (const auto& p : s->parameters)
       if (p.name == "lambda") return true;
   return false;
-}
-
-std::vector<std::uint8_t> read_selection(const std::string& select, Index vertex_count) {
-  const bool inline_list =
-      select == "all" || select.find_first_not_of("0123456789, ") == std::string::npos;
-  if (inline_list) return parse_vertex_selection(select, vertex_count, "--select");
-  if (!fs::is_regular_file(select))
-    throw Error(fmt::format("--select '{}': no such file, and not 'all' or a comma list of 0-based vertex ids", select));
-  return parse_vertex_selection(read_text(select, "--select"), vertex_count, select);
-}
-
-double bounding_diagonal(const std::vector<double>& p) {
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-  for (size_t i = 0; i < p.size(); ++i) lo[i % 3] = std::min(lo[i % 3], p[i]), hi[i % 3] = std::max(hi[i % 3], p[i]);
-  double d2 = 0;
-  for (int c = 0; c < 3; ++c) d2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
-  return std::sqrt(d2);
 }
 
 double distance(const double* a, const double* b) {
@@ -233,6 +218,12 @@ void run(const InterpolateArgs& a) {
     else if (!fs::is_regular_file(a.lambda))
       throw Error(fmt::format("--lambda '{}' is neither a number nor a file of per-vertex values", a.lambda));
   }
+  if (is_curve_scheme(a.scheme)) {
+    if (!a.lambda.empty())
+      throw Error(fmt::format("--lambda: '{}' is a curve scheme; seed 001's shape parameter is for surfaces", a.scheme));
+    return interpolate_curves_command({a.mesh, a.scheme, a.output, a.refined, a.select, parse_params(a.params),
+                                       a.tolerance, a.max_iterations, a.levels, a.verbose, a.quiet});
+  }
   refuse_curve_schemes(a.scheme);
   SchemeSequence seq = load_scheme_sequence(a.scheme, a.levels, overrides);
   if (!a.lambda.empty() && !has_lambda(seq))
@@ -245,8 +236,9 @@ void run(const InterpolateArgs& a) {
 
   const MeshData mesh = read_mesh(a.mesh);
   if (mesh.face_count() == 0)
-    throw Error(fmt::format("{}: the mesh has no faces{}; subdiv interpolate works on surface meshes", a.mesh,
-                            mesh.line_count() > 0 ? fmt::format(" (it has {} polyline{})", mesh.line_count(), mesh.line_count() == 1 ? "" : "s") : ""));
+    throw Error(fmt::format("{}: the mesh has no faces{}; surface schemes interpolate surface meshes{}", a.mesh,
+                            mesh.line_count() > 0 ? fmt::format(" (it has {} polyline{})", mesh.line_count(), mesh.line_count() == 1 ? "" : "s") : "",
+                            mesh.line_count() > 0 ? ", polylines take a curve scheme (e.g. --scheme cubic-bspline)" : ""));
   const Level base = level_from_mesh(mesh, a.mesh);
   const std::vector<std::uint8_t> moving = read_selection(a.select, base.vertex_count);
   LimitSelectionOptions options;
@@ -345,16 +337,34 @@ void run(const InterpolateArgs& a) {
 
 }  // namespace
 
+std::vector<std::uint8_t> read_selection(const std::string& select, Index vertex_count) {
+  const bool inline_list =
+      select == "all" || select.find_first_not_of("0123456789, ") == std::string::npos;
+  if (inline_list) return parse_vertex_selection(select, vertex_count, "--select");
+  if (!fs::is_regular_file(select))
+    throw Error(fmt::format("--select '{}': no such file, and not 'all' or a comma list of 0-based vertex ids", select));
+  return parse_vertex_selection(read_text(select, "--select"), vertex_count, select);
+}
+
+double bounding_diagonal(const std::vector<double>& p) {
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (size_t i = 0; i < p.size(); ++i) lo[i % 3] = std::min(lo[i % 3], p[i]), hi[i % 3] = std::max(hi[i % 3], p[i]);
+  double d2 = 0;
+  for (int c = 0; c < 3; ++c) d2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+  return std::sqrt(d2);
+}
+
 void add_interpolate_command(CLI::App& app) {
   auto args = std::make_shared<InterpolateArgs>();
   auto* cmd = app.add_subcommand("interpolate",
-                                 "Move control vertices so that the limit surface passes through them "
-                                 "(progressive interpolation, global or local)");
+                                 "Move control vertices so that the limit surface (or, for polylines, the limit "
+                                 "curve) passes through them (progressive interpolation, global or local)");
   cmd->add_option("mesh", args->mesh, "Input mesh (" + supported_input_formats() + "); its vertices are the targets")
       ->required();
   cmd->add_option("-s,--scheme", args->scheme,
                   "Scheme or sequence whose limit surface interpolates, e.g. catmull-clark, loop, or seed 001's "
-                  "catmull-clark-shape:1,catmull-clark (the last scheme repeats)")
+                  "catmull-clark-shape:1,catmull-clark (the last scheme repeats); for polylines a curve scheme, "
+                  "e.g. cubic-bspline or chaikin")
       ->capture_default_str();
   cmd->add_option("--select", args->select,
                   "Vertices to interpolate (the others stay fixed): all, a comma list of 0-based ids, or a file of "
@@ -368,7 +378,8 @@ void add_interpolate_command(CLI::App& app) {
                   "times the bounding-box diagonal)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-iter", args->max_iterations, "Iteration cap")->check(CLI::NonNegativeNumber)->capture_default_str();
-  cmd->add_option("-o,--output", args->output, "The new control mesh (.obj, .off, .ply, .stl, .vtp)")->required();
+  cmd->add_option("-o,--output", args->output,
+                  "The new control mesh (.obj, .off, .ply, .stl, .vtp; polylines: .obj or .vtp)")->required();
   cmd->add_option("--refined", args->refined,
                   "Also write the new control mesh refined --levels times (.pvd or .vtp) with per-point arrays "
                   "target_distance, limit_residual, interpolated and base_vertex");
@@ -380,7 +391,8 @@ void add_interpolate_command(CLI::App& app) {
   cmd->add_flag("-v,--verbose", args->verbose, "Print the residuals of every iteration");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   cmd->footer("Example: subdiv interpolate examples/meshes/cross.obj --scheme catmull-clark-shape:1,catmull-clark "
-              "--lambda 0.5 --select 0,1,2,3 -o cross-interp.obj --refined cross-interp.pvd");
+              "--lambda 0.5 --select 0,1,2,3 -o cross-interp.obj --refined cross-interp.pvd\n"
+              "Polylines: subdiv interpolate examples/curves/open-zigzag.obj --scheme cubic-bspline -o zigzag-interp.obj");
   cmd->callback([args] { run(*args); });
 }
 

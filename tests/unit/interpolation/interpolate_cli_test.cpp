@@ -24,8 +24,9 @@ const std::string kTwoStep = "--scheme catmull-clark-shape:1,catmull-clark";
 
 Level level_of(const MeshData& d) { return build_level(d.vertex_count(), d.face_offsets, d.face_vertices); }
 
-void check_refused(const std::string& args, const fs::path& dir, const std::string& message, bool refine = true) {
-  const fs::path out = dir / "out.obj", refined = dir / "out.pvd";
+void check_refused(const std::string& args, const fs::path& dir, const std::string& message, bool refine = true,
+                   const std::string& extension = "obj") {
+  const fs::path out = dir / ("out." + extension), refined = dir / "out.pvd";
   const CliResult r =
       run_subdiv("interpolate " + args + " -o " + out.string() + (refine ? " --refined " + refined.string() : ""));
   CHECK(r.exit_code != 0);
@@ -141,8 +142,49 @@ TEST_CASE("interpolate: bad input is refused, nothing is written") {
     "edge": [{"sum": "ends", "w": "1/2"}], "vertex": [{"at": "self", "w": "2"}, {"sum": "ring", "w": "-1/n"}]}})json";
   check_refused(kCross + " --scheme " + (dir / "divergent.json").string(), dir, "scheme 'divergent' has no limit mask");
   check_refused(source_path("examples/meshes/cube.obj") + " --scheme loop", dir, "triangles");
-  check_refused(kCross + " --scheme cubic-bspline", dir, "'cubic-bspline' is a curve scheme");
+  check_refused(kCross + " --scheme cubic-bspline", dir, "a curve scheme refines polylines only");
+  check_refused(kCross + " --scheme chaikin:1,cubic-bspline", dir, "'chaikin' is a curve scheme inside a sequence");
   check_refused(source_path("examples/curves/circle8.obj"), dir, "has no faces (it has 1 polyline)");
+  check_refused(source_path("examples/curves/circle8.obj") + " --scheme cubic-bspline --lambda 0.5", dir,
+                "seed 001's shape parameter is for surfaces");
+  check_refused(source_path("examples/curves/open-zigzag.obj") + " --scheme cubic-bspline", dir, "hold no polylines",
+                false, "off");
+  check_refused(source_path("examples/curves/circle8.obj") + " --scheme tension-bspline", dir, "stationary");
   check_refused(kCross + " --refined " + (dir / "x.obj").string(), dir, "use .pvd", false);
   CHECK_FALSE(fs::exists(dir / "x.obj"));
+}
+
+TEST_CASE("interpolate: polylines with a curve scheme; the written points' limits are the targets") {
+  const auto dir = fresh_dir("interp-cli-curves");
+  for (const char* file : {"examples/curves/circle8.obj", "examples/curves/open-zigzag.obj"}) {
+    CAPTURE(file);
+    const fs::path out = dir / "curve.obj", refined = dir / "curve.pvd";
+    const CliResult r = run_subdiv("interpolate " + source_path(file) + " --scheme cubic-bspline --tol 1e-12 -o " +
+                                   out.string() + " --refined " + refined.string() + " --levels 2");
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    CHECK(r.output.find("converged") != std::string::npos);
+    const MeshData in = read_mesh(source_path(file)), got = read_mesh(out);
+    REQUIRE(got.vertex_count() == in.vertex_count());
+    CHECK(got.line_count() == in.line_count());
+    // The cubic B-spline's limit point (P_{j-1} + 4 P_j + P_{j+1}) / 6 of the written
+    // points, computed here, is the input point (open ends: the end point itself).
+    const auto& lines = got.line_offsets;
+    for (size_t l = 0; l + 1 < lines.size(); ++l) {
+      const Index first = lines[l], last = lines[l + 1];
+      const bool closed = got.line_vertices[size_t(first)] == got.line_vertices[size_t(last - 1)];
+      const Index n = last - first - (closed ? 1 : 0);
+      for (Index j = 0; j < n; ++j) {
+        const Index v = got.line_vertices[size_t(first + j)];
+        std::array<double, 3> limit = at(got.positions, v);
+        if (closed || (j > 0 && j + 1 < n)) {
+          const Index prev = got.line_vertices[size_t(first + (j + n - 1) % n)];
+          const Index next = got.line_vertices[size_t(first + (j + 1) % n)];
+          for (int c = 0; c < 3; ++c)
+            limit[c] = (got.positions[3 * prev + c] + 4 * got.positions[3 * v + c] + got.positions[3 * next + c]) / 6;
+        }
+        CHECK(dist(limit, at(in.positions, v)) < 1e-11);
+      }
+    }
+    CHECK(fs::exists(refined));
+  }
 }

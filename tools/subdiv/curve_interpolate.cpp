@@ -1,0 +1,141 @@
+#include "curve_interpolate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "framework/curve/curve_refine.h"
+#include "framework/interpolation/curve_limits.h"
+#include "framework/interpolation/progressive.h"
+#include "framework/io/mesh_read.h"
+#include "framework/io/mesh_write.h"
+#include "framework/io/vtk_output.h"
+#include "framework/util/error.h"
+#include "interpolate_inputs.h"
+#include "level_output.h"
+#include "progress.h"
+
+namespace subdiv::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string extension_of(const fs::path& p) {
+  std::string ext = p.extension().string();
+  for (char& c : ext) c = char(std::tolower(c));
+  return ext;
+}
+
+void check_outputs(const CurveInterpolateRequest& a) {
+  const std::string ext = extension_of(a.output);
+  if (ext != ".obj" && ext != ".vtp")
+    throw Error(fmt::format("-o '{}': polylines are written as .obj ('l' lines) or .vtp; .off, .ply and .stl hold "
+                            "no polylines", a.output));
+  if (!a.refined.empty() && extension_of(a.refined) != ".pvd" && extension_of(a.refined) != ".vtp")
+    throw Error(fmt::format("--refined '{}': use .pvd (every level) or .vtp (the finest level)", a.refined));
+}
+
+// Level 0 carries which points were interpolated and how far each limit point ended from
+// its target; finer levels carry the curve only.
+void write_refined(const fs::path& out, const CurveScheme& scheme, const CurveLevel& base,
+                   const ProgressiveResult& r, const std::vector<double>& targets,
+                   const std::vector<std::uint8_t>& moving, int levels) {
+  const CurveHierarchy h = refine_curves(scheme, base, levels);
+  std::vector<MeshData> meshes;
+  std::vector<double> positions = r.control;
+  for (int l = 0; l <= levels; ++l) {
+    if (l > 0) positions = h.stencils[size_t(l - 1)].apply(positions, 3);
+    meshes.push_back(mesh_from_curve_level(h.levels[size_t(l)], positions));
+  }
+  std::vector<OutputLevel> out_levels;
+  for (int l = 0; l <= levels; ++l) out_levels.push_back({&meshes[size_t(l)], l, {}, {}});
+  DataArray interpolated{"interpolated", 1, {}, true}, residual{"limit_residual", 1, {}, false};
+  for (Index v = 0; v < base.vertex_count; ++v) {
+    interpolated.values.push_back(moving[size_t(v)] ? 1.0 : 0.0);
+    double d2 = 0;
+    for (int c = 0; c < 3; ++c) d2 += std::pow(r.limit[3 * size_t(v) + c] - targets[3 * size_t(v) + c], 2);
+    residual.values.push_back(std::sqrt(d2));
+  }
+  out_levels.front().point_data = {std::move(interpolated), std::move(residual)};
+  if (extension_of(out) == ".vtp") write_vtp(out, out_levels.back());
+  else write_pvd(out, out_levels);
+}
+
+std::string describe_limit(const StencilTable& limit, const CurveLevel& level) {
+  // The row of a vertex in the middle of the longest polyline shows the interior weights.
+  Index longest = 0;
+  for (Index p = 1; p < level.polyline_count(); ++p)
+    if (level.size(p) > level.size(longest)) longest = p;
+  const Index v = level.polyline(longest)[size_t(level.size(longest) / 2)];
+  std::vector<std::string> terms;
+  for (Index i = limit.offsets[v]; i < limit.offsets[v + 1]; ++i) terms.push_back(fmt::format("{:.6g}", limit.weights[i]));
+  return fmt::format("the limit curve at each point's parameter; inside a polyline the weights ({})", fmt::join(terms, ", "));
+}
+
+}  // namespace
+
+void interpolate_curves_command(const CurveInterpolateRequest& a) {
+  check_output_path(a.output);
+  check_outputs(a);
+  if (a.max_iterations < 0) throw Error("--max-iter must be 0 or more");
+  const auto scheme = load_curve(a.scheme, a.params);
+  const MeshData mesh = read_mesh(a.mesh);
+  const CurveLevel base = curve_level_from_mesh(mesh, a.mesh);
+  const std::vector<std::uint8_t> moving = read_selection(a.select, base.vertex_count);
+
+  Progress progress;
+  progress.say("finding the limit points");
+  const StencilTable limit = curve_limit_stencils(*scheme, base);
+  ProgressiveOptions po;
+  po.tolerance = a.tolerance >= 0 ? a.tolerance : 1e-10 * std::max(bounding_diagonal(mesh.positions), 1e-300);
+  po.max_iterations = a.max_iterations;
+  std::vector<std::string> log;
+  po.observer = [&](const IterationState& s) {
+    progress.say(fmt::format("iteration {}: max residual {:.3e}", s.record.iteration, s.record.max_residual));
+    if (a.verbose)
+      log.push_back(fmt::format("{:>9} {:>14.6e} {:>14.6e}", s.record.iteration, s.record.max_residual,
+                                s.record.rms_residual));
+  };
+  const ProgressiveResult r = progressive_interpolation(limit, mesh.positions, moving, po);
+
+  progress.say(fmt::format("writing {}", a.output));
+  const MeshData control = mesh_from_curve_level(base, r.control);
+  if (extension_of(a.output) == ".vtp") {
+    const OutputLevel level{&control, 0, {}, {}};
+    write_vtp(a.output, level);
+  } else {
+    write_mesh(a.output, control);
+  }
+  if (!a.refined.empty()) {
+    progress.say(fmt::format("writing {}", a.refined));
+    write_refined(a.refined, *scheme, base, r, mesh.positions, moving, a.levels);
+  }
+  progress.done();
+
+  const IterationRecord& first = r.history.front();
+  const IterationRecord& last = r.history.back();
+  if (!r.converged)
+    fmt::print(stderr, "subdiv: warning: the residual {:.3e} is above the tolerance {:.3e} after {} iterations "
+               "(--max-iter); the polylines written are the last iterate\n", last.max_residual, po.tolerance,
+               r.iterations);
+  if (a.quiet) return;
+  const Index moving_count = Index(std::count(moving.begin(), moving.end(), std::uint8_t(1)));
+  fmt::print("{}: {} points on {} polylines; curve scheme {}\n", a.mesh, base.vertex_count, base.polyline_count(),
+             scheme->name);
+  fmt::print("limit: {}\n", describe_limit(limit, base));
+  fmt::print("moving: {} of {} points ({}); tolerance {:.3e}\n", moving_count, base.vertex_count,
+             moving_count == base.vertex_count ? "global" : "local", po.tolerance);
+  if (a.verbose) {
+    fmt::print("{:>9} {:>14} {:>14}\n", "iteration", "max residual", "rms residual");
+    for (const auto& line : log) fmt::print("{}\n", line);
+  }
+  fmt::print("{} in {} iterations: max residual {:.3e}, rms {:.3e} (initially {:.3e}, {:.3e})\n",
+             r.converged ? "converged" : "stopped", r.iterations, last.max_residual, last.rms_residual,
+             first.max_residual, first.rms_residual);
+  fmt::print("wrote {}", a.output);
+  if (!a.refined.empty()) fmt::print(" and {} ({} levels)", a.refined, a.levels);
+  fmt::print("\n");
+}
+
+}  // namespace subdiv::cli
