@@ -121,8 +121,8 @@ void interpolate_curves_command(const CurveInterpolateRequest& a) {
                r.iterations);
   if (a.quiet) return;
   const Index moving_count = Index(std::count(moving.begin(), moving.end(), std::uint8_t(1)));
-  fmt::print("{}: {} points on {} polylines; curve scheme {}\n", a.mesh, base.vertex_count, base.polyline_count(),
-             scheme->name);
+  fmt::print("{}: {} points on {} polyline{}; curve scheme {}\n", a.mesh, base.vertex_count, base.polyline_count(),
+             base.polyline_count() == 1 ? "" : "s", scheme->name);
   fmt::print("limit: {}\n", describe_limit(limit, base));
   fmt::print("moving: {} of {} points ({}); tolerance {:.3e}\n", moving_count, base.vertex_count,
              moving_count == base.vertex_count ? "global" : "local", po.tolerance);
