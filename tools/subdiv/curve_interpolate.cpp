@@ -12,7 +12,7 @@
 #include "framework/io/mesh_write.h"
 #include "framework/io/vtk_output.h"
 #include "framework/util/error.h"
-#include "interpolate_inputs.h"
+#include "interpolate_common.h"
 #include "level_output.h"
 #include "progress.h"
 
@@ -87,17 +87,9 @@ void interpolate_curves_command(const CurveInterpolateRequest& a) {
   Progress progress;
   progress.say("finding the limit points");
   const StencilTable limit = curve_limit_stencils(*scheme, base);
-  ProgressiveOptions po;
-  po.tolerance = a.tolerance >= 0 ? a.tolerance : 1e-10 * std::max(bounding_diagonal(mesh.positions), 1e-300);
-  po.max_iterations = a.max_iterations;
-  std::vector<std::string> log;
-  po.observer = [&](const IterationState& s) {
-    progress.say(fmt::format("iteration {}: max residual {:.3e}", s.record.iteration, s.record.max_residual));
-    if (a.verbose)
-      log.push_back(fmt::format("{:>9} {:>14.6e} {:>14.6e}", s.record.iteration, s.record.max_residual,
-                                s.record.rms_residual));
-  };
-  const ProgressiveResult r = progressive_interpolation(limit, mesh.positions, moving, po);
+  const IterationRun run = run_iterations(limit, mesh.positions, moving, {a.tolerance, a.max_iterations, a.verbose},
+                                          progress);
+  const ProgressiveResult& r = run.result;
 
   progress.say(fmt::format("writing {}", a.output));
   const MeshData control = mesh_from_curve_level(base, r.control);
@@ -113,26 +105,12 @@ void interpolate_curves_command(const CurveInterpolateRequest& a) {
   }
   progress.done();
 
-  const IterationRecord& first = r.history.front();
-  const IterationRecord& last = r.history.back();
-  if (!r.converged)
-    fmt::print(stderr, "subdiv: warning: the residual {:.3e} is above the tolerance {:.3e} after {} iterations "
-               "(--max-iter); the polylines written are the last iterate\n", last.max_residual, po.tolerance,
-               r.iterations);
+  warn_if_stopped(run, "the polylines written are");
   if (a.quiet) return;
-  const Index moving_count = Index(std::count(moving.begin(), moving.end(), std::uint8_t(1)));
   fmt::print("{}: {} points on {} polyline{}; curve scheme {}\n", a.mesh, base.vertex_count, base.polyline_count(),
              base.polyline_count() == 1 ? "" : "s", scheme->name);
   fmt::print("limit: {}\n", describe_limit(limit, base));
-  fmt::print("moving: {} of {} points ({}); tolerance {:.3e}\n", moving_count, base.vertex_count,
-             moving_count == base.vertex_count ? "global" : "local", po.tolerance);
-  if (a.verbose) {
-    fmt::print("{:>9} {:>14} {:>14}\n", "iteration", "max residual", "rms residual");
-    for (const auto& line : log) fmt::print("{}\n", line);
-  }
-  fmt::print("{} in {} iterations: max residual {:.3e}, rms {:.3e} (initially {:.3e}, {:.3e})\n",
-             r.converged ? "converged" : "stopped", r.iterations, last.max_residual, last.rms_residual,
-             first.max_residual, first.rms_residual);
+  print_iterations(run, "points", a.verbose);
   fmt::print("wrote {}", a.output);
   if (!a.refined.empty()) fmt::print(" and {} ({} levels)", a.refined, a.levels);
   fmt::print("\n");

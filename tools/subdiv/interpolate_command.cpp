@@ -13,7 +13,7 @@
 #include "commands.h"
 #include "curve_interpolate.h"
 #include "curve_refine.h"
-#include "interpolate_inputs.h"
+#include "interpolate_common.h"
 #include "framework/interpolation/limit_selection.h"
 #include "framework/interpolation/progressive.h"
 #include "framework/interpolation/shape_two_step.h"
@@ -56,14 +56,6 @@ void check_directory(const fs::path& out) {
   const fs::path dir = out.parent_path();
   if (!dir.empty() && !fs::is_directory(dir))
     throw Error(fmt::format("cannot write '{}': directory '{}' does not exist", out.string(), dir.string()));
-}
-
-std::string read_text(const fs::path& file, const std::string& what) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw Error(fmt::format("{}: cannot read '{}'", what, file.string()));
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // Sequences are for surfaces; a curve scheme inside one gets a clear refusal instead of
@@ -261,40 +253,10 @@ void run(const InterpolateArgs& a) {
     throw;
   }
   const StencilTable limit = choice.evaluator->limit_stencils(base);
-  const Index moving_count = Index(std::count(moving.begin(), moving.end(), std::uint8_t(1)));
 
-  ProgressiveOptions po;
-  po.tolerance = a.tolerance >= 0 ? a.tolerance : 1e-10 * std::max(bounding_diagonal(mesh.positions), 1e-300);
-  po.max_iterations = a.max_iterations;
-  std::vector<std::string> log;
-  po.observer = [&](const IterationState& s) {
-    progress.say(fmt::format("iteration {}: max residual {:.3e}, rms {:.3e}", s.record.iteration,
-                             s.record.max_residual, s.record.rms_residual));
-    if (a.verbose)
-      log.push_back(fmt::format("{:>9} {:>14.6e} {:>14.6e}", s.record.iteration, s.record.max_residual,
-                                s.record.rms_residual));
-  };
-  const ProgressiveResult r = progressive_interpolation(limit, mesh.positions, moving, po);
-
-  // Theorem 2: where the fixed vertices' limit points end.
-  std::string fixed_note;
-  if (moving_count < base.vertex_count) {
-    double offset = 0, gap = 0;
-    try {
-      const std::vector<double> predicted = predicted_fixed_offsets(limit, mesh.positions, moving);
-      for (Index v = 0; v < base.vertex_count; ++v) {
-        if (moving[v]) continue;
-        double d[3];
-        for (int c = 0; c < 3; ++c) d[c] = mesh.positions[3 * v + c] - r.limit[3 * v + c];
-        offset = std::max(offset, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
-        gap = std::max(gap, distance(d, &predicted[3 * size_t(v)]));
-      }
-      fixed_note = fmt::format("fixed vertices: stay in place; their limit points end up to {:.6g} from them "
-                               "(theorem 2, D_Q = D_Q^0 - E M^-1 D_P^0, agrees to {:.1e})", offset, gap);
-    } catch (const Error& e) {
-      fixed_note = fmt::format("fixed vertices: stay in place; theorem 2 not evaluated: {}", e.what());
-    }
-  }
+  const IterationRun run = run_iterations(limit, mesh.positions, moving, {a.tolerance, a.max_iterations, a.verbose},
+                                          progress);
+  const ProgressiveResult& r = run.result;
 
   Hierarchy refined;
   if (!a.refined.empty()) {
@@ -311,48 +273,17 @@ void run(const InterpolateArgs& a) {
   }
   progress.done();
 
-  const IterationRecord& first = r.history.front();
-  const IterationRecord& last = r.history.back();
-  if (!r.converged)
-    fmt::print(stderr, "subdiv: warning: the residual {:.3e} is above the tolerance {:.3e} after {} iterations "
-               "(--max-iter); the control mesh written is the last iterate\n", last.max_residual, po.tolerance,
-               r.iterations);
+  warn_if_stopped(run, "the control mesh written is");
   if (a.quiet) return;
   fmt::print("{}: {} vertices, {} faces; scheme {}\n", a.mesh, base.vertex_count, base.face_count(), a.scheme);
   fmt::print("limit: {}\n", choice.description);
-  fmt::print("moving: {} of {} vertices ({}); tolerance {:.3e}\n", moving_count, base.vertex_count,
-             moving_count == base.vertex_count ? "global" : "local", po.tolerance);
-  if (a.verbose) {
-    fmt::print("{:>9} {:>14} {:>14}\n", "iteration", "max residual", "rms residual");
-    for (const auto& line : log) fmt::print("{}\n", line);
-  }
-  fmt::print("{} in {} iterations: max residual {:.3e}, rms {:.3e} (initially {:.3e}, {:.3e})\n",
-             r.converged ? "converged" : "stopped", r.iterations, last.max_residual, last.rms_residual,
-             first.max_residual, first.rms_residual);
-  if (!fixed_note.empty()) fmt::print("{}\n", fixed_note);
+  print_iterations(run, "vertices", a.verbose);
   fmt::print("wrote {}", a.output);
   if (!a.refined.empty()) fmt::print(" and {} ({} levels)", a.refined, seq.total_levels);
   fmt::print("\n");
 }
 
 }  // namespace
-
-std::vector<std::uint8_t> read_selection(const std::string& select, Index vertex_count) {
-  const bool inline_list =
-      select == "all" || select.find_first_not_of("0123456789, ") == std::string::npos;
-  if (inline_list) return parse_vertex_selection(select, vertex_count, "--select");
-  if (!fs::is_regular_file(select))
-    throw Error(fmt::format("--select '{}': no such file, and not 'all' or a comma list of 0-based vertex ids", select));
-  return parse_vertex_selection(read_text(select, "--select"), vertex_count, select);
-}
-
-double bounding_diagonal(const std::vector<double>& p) {
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-  for (size_t i = 0; i < p.size(); ++i) lo[i % 3] = std::min(lo[i % 3], p[i]), hi[i % 3] = std::max(hi[i % 3], p[i]);
-  double d2 = 0;
-  for (int c = 0; c < 3; ++c) d2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
-  return std::sqrt(d2);
-}
 
 void add_interpolate_command(CLI::App& app) {
   auto args = std::make_shared<InterpolateArgs>();
