@@ -22,8 +22,8 @@ void add_point(RowBuilder& row, const RuleInputs& in, const CompiledTerm& term, 
   const Index r = (*rows)[element];
   if (r == kNone)
     throw Error(fmt::format("{}: {} {} has no new point in this step", term.where, element_name(kind), element));
-  if (const ChunkedRows* block = in.blocks[int(kind)]) return row.add_row(*block, r, w);
-  in.on_demand->add(row, kind, r, w);
+  if (in.new_point_base >= 0) return row.add(in.new_point_base + (*in.children[int(kind)])[r], w);
+  row.add_row(*in.blocks[int(kind)], r, w);
 }
 
 [[noreturn]] void wrong_role(const CompiledTerm& t, Element e) {

@@ -7,25 +7,20 @@
 
 namespace subdiv {
 
-// Rows of new points built when asked, for steps that store no rows (step_evaluator.h).
-class NewPointRows {
-public:
-  virtual ~NewPointRows() = default;
-  // Adds `scale` times row `r` of element kind `kind`'s new points to `row`.
-  virtual void add(RowBuilder& row, Element kind, Index r, double scale) const = 0;
-};
-
-// What the rules of one step can see: the parent level, its features, and the rows of
-// new points (for terms with "new").
+// What the rules of one step can see: the parent level, its features, and the new points
+// of the step (for terms with "new").
 struct RuleInputs {
   const Level& parent;
   const FeatureContexts& features;
   // New points of element kind k exist where block_row_of_element[k] is set: the new point
-  // of element e is row r = (*block_row_of_element[k])[e], stored in blocks[k] or, where
-  // that is null, built by on_demand.
+  // of element e is row r = (*block_row_of_element[k])[e] of that kind's rows, stored in
+  // blocks[k], whose rows a term adds expanded into parent vertices.
   const ChunkedRows* blocks[kElementCount] = {};
   const std::vector<Index>* block_row_of_element[kElementCount] = {};
-  const NewPointRows* on_demand = nullptr;
+  // Or, where new points are sources themselves (the step evaluator, which computes them
+  // first): a term adds child vertex (*children[k])[r] as source new_point_base + child.
+  Index new_point_base = -1;
+  const std::vector<Index>* children[kElementCount] = {};
 };
 
 void apply_vertex_rule(RowBuilder& row, const RuleInputs& in, Index v, const CompiledRule& rule,

@@ -18,6 +18,9 @@ bool vertex_role_inside(Role r) {
 }
 bool edge_role_inside(Role r) { return r == Role::Ends || r == Role::Opposite || r == Role::Wings || r == Role::Faces; }
 bool face_role_inside(Role r) { return r == Role::Vertices; }
+// Roles a light enumeration holds (RowPlanStore): no face corners.
+bool vertex_role_light(Role r) { return r == Role::Self || r == Role::Ring || r == Role::Faces || r == Role::Edges; }
+bool edge_role_light(Role r) { return r == Role::Ends || r == Role::Faces; }
 
 template <class Inside>
 bool rule_inside(const CompiledRule& rule, Inside inside, const bool new_point_ok[4]) {
@@ -27,21 +30,44 @@ bool rule_inside(const CompiledRule& rule, Inside inside, const bool new_point_o
   return true;
 }
 
+// Element e's only child is children.front() + e, for every element.
+bool one_child_each_in_order(const ChildGroup& g) {
+  if (g.children.empty() || g.children.size() != g.row_of_element.size()) return false;
+  for (size_t e = 0; e < g.children.size(); ++e)
+    if (g.row_of_element[e] != Index(e) || g.children[e] != g.children.front() + Index(e)) return false;
+  return true;
+}
+
 }  // namespace
 
 RowPlanStore::RowPlanStore(const Level& parent_level, const ChildOrigins& child_origins, const WeightTables& tables,
-                           const FeatureContexts& feature_contexts, bool code_rules)
-    : parent(parent_level), origins(child_origins), features(feature_contexts) {
+                           const FeatureContexts& feature_contexts, bool code_rules,
+                           const std::vector<ChildGroup>* new_point_sources)
+    : parent(parent_level), origins(child_origins), features(feature_contexts), sources(new_point_sources) {
   if (code_rules) return;
+  const CompiledRule& face = tables.rule(Element::Face, Context::Smooth);
+  const CompiledRule& edge = tables.rule(Element::Edge, Context::Smooth);
+  const CompiledRule& vertex = tables.rule(Element::Vertex, Context::Smooth);
   // Indexed by NewPoint: None, Face, Edge, Vertex. A face row reads its own face only; an
   // edge row its two faces, inside a vertex's ring; a vertex row reaches past any edge's.
   const bool plain[4] = {true, false, false, false};
-  enabled[int(Element::Face)] = rule_inside(tables.rule(Element::Face, Context::Smooth), face_role_inside, plain);
+  enabled[int(Element::Face)] = rule_inside(face, face_role_inside, plain);
+  if (sources) {
+    // New face points are sources in the edge's and vertex's enumerations, new edge points
+    // in the vertex's.
+    const bool faces[4] = {true, true, false, false}, faces_edges[4] = {true, true, true, false};
+    enabled[int(Element::Edge)] = rule_inside(edge, edge_role_inside, faces);
+    enabled[int(Element::Vertex)] = rule_inside(vertex, vertex_role_inside, faces_edges);
+    light[int(Element::Edge)] = rule_inside(edge, edge_role_light, faces);
+    light[int(Element::Vertex)] = rule_inside(vertex, vertex_role_light, faces_edges);
+    for (int k = 0; k < kElementCount; ++k)
+      if (one_child_each_in_order((*sources)[k])) first_child_[k] = (*sources)[k].children.front();
+    return;
+  }
   const bool faces[4] = {true, enabled[int(Element::Face)], false, false};
-  enabled[int(Element::Edge)] = rule_inside(tables.rule(Element::Edge, Context::Smooth), edge_role_inside, faces);
+  enabled[int(Element::Edge)] = rule_inside(edge, edge_role_inside, faces);
   const bool faces_edges[4] = {true, enabled[int(Element::Face)], enabled[int(Element::Edge)], false};
-  enabled[int(Element::Vertex)] =
-      rule_inside(tables.rule(Element::Vertex, Context::Smooth), vertex_role_inside, faces_edges);
+  enabled[int(Element::Vertex)] = rule_inside(vertex, vertex_role_inside, faces_edges);
 }
 
 const RowPlan* RowPlanStore::find(const std::vector<std::int32_t>& key) const {
@@ -58,8 +84,9 @@ const RowPlan* RowPlanStore::add(const std::vector<std::int32_t>& key, RowPlan p
 }
 
 // key_: the element kind and everything its row depends on (valences, face sizes in ring
-// order, where each face starts, since a new face point lists its face from corner 0, the
-// point's index along an edge); around_: its neighbourhood, canonically.
+// order, the point's index along an edge, and where each face starts when the faces'
+// corners are listed, since a new face point lists its face from corner 0); around_: its
+// neighbourhood, canonically.
 bool RowPlanner::describe(Index child) {
   const Level& L = store_.parent;
   const FeatureContexts& F = store_.features;
@@ -74,35 +101,13 @@ bool RowPlanner::describe(Index child) {
       if (L.on_boundary(p) || vc.parent != Context::Smooth || vc.child != Context::Smooth) return false;
       for (Index e : L.ring_edges(p))
         if (F.edges[e].crease_weight != 0.f) return false;
-      // v, then in each ring face the corners after v except the last (the next edge
-      // neighbour, listed by the face that has it right after v).
-      around_.push_back(p);
-      key_.push_back(L.valence(p));
-      const Index first = L.vertex_face_offsets[p];
-      for (Index i = first; i < L.vertex_face_offsets[p + 1]; ++i) {
-        const auto face = L.face(L.vertex_faces[i]);
-        const int k = int(face.size()), c = L.vertex_face_corner[i];
-        key_.push_back(k), key_.push_back(c);  // c: new face points list the face from its corner 0
-        for (int d = c + 1; d < c + k - 1; ++d) around_.push_back(face[d < k ? d : d - k]);
-      }
+      describe_vertex(p);
       break;
     }
-    case OriginKind::Edge: {
+    case OriginKind::Edge:
       if (L.edge_on_boundary(p) || F.edges[p].crease_weight != 0.f) return false;
-      const Index a = L.edge_vertices[2 * p], b = L.edge_vertices[2 * p + 1];
-      around_.push_back(a), around_.push_back(b);
-      key_.push_back(store_.origins.local[child]);
-      key_.push_back(L.valence(a)), key_.push_back(L.valence(b));
-      for (int side = 0; side < 2; ++side) {
-        const Index f = L.edge_faces[2 * p + side];
-        const auto face = L.face(f), edges = L.face_edge_list(f);
-        const int k = int(face.size());
-        const int c = int(std::find(edges.begin(), edges.end(), p) - edges.begin());
-        key_.push_back(k), key_.push_back(c);
-        for (int d = c + 2; d < c + k; ++d) around_.push_back(face[d < k ? d : d - k]);
-      }
+      describe_edge(p, store_.origins.local[child]);
       break;
-    }
     case OriginKind::Face: {
       const auto face = L.face(p);
       key_.push_back(int(face.size()));
@@ -112,7 +117,57 @@ bool RowPlanner::describe(Index child) {
     case OriginKind::Corner:
       return false;
   }
+  for (Index a : around_)
+    if (a == kNone) return false;  // a new point the element does not have
   return around_.size() <= kMaxAround;
+}
+
+// v; then its ring (light) or, in each ring face, the corners after v except the last (the
+// next edge neighbour, listed by the face that has it right after v); then, as sources,
+// the new points of the ring faces and edges.
+void RowPlanner::describe_vertex(Index v) {
+  const Level& L = store_.parent;
+  const bool light = store_.sources && store_.light[int(Element::Vertex)];
+  around_.push_back(v);
+  key_.push_back(L.valence(v));
+  const Index first = L.vertex_face_offsets[v];
+  for (Index i = first; i < L.vertex_face_offsets[v + 1]; ++i) {
+    const auto face = L.face(L.vertex_faces[i]);
+    const int k = int(face.size()), c = L.vertex_face_corner[i];
+    key_.push_back(k);
+    if (light) continue;
+    key_.push_back(c);
+    for (int d = c + 1; d < c + k - 1; ++d) around_.push_back(face[d < k ? d : d - k]);
+  }
+  if (light)
+    for (Index e : L.ring_edges(v)) around_.push_back(L.other_end(e, v));
+  if (!store_.sources) return;
+  for (Index f : L.ring_faces(v)) around_.push_back(store_.new_point(Element::Face, f));
+  for (Index e : L.ring_edges(v)) around_.push_back(store_.new_point(Element::Edge, e));
+}
+
+// Its ends; then (unless light) in each face the corners off the edge; then, as sources,
+// the new points of its faces.
+void RowPlanner::describe_edge(Index e, int local) {
+  const Level& L = store_.parent;
+  const bool light = store_.sources && store_.light[int(Element::Edge)];
+  const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
+  around_.push_back(a), around_.push_back(b);
+  key_.push_back(local);
+  key_.push_back(L.valence(a)), key_.push_back(L.valence(b));
+  for (int side = 0; side < 2; ++side) {
+    const Index f = L.edge_faces[2 * e + side];
+    const auto face = L.face(f);
+    const int k = int(face.size());
+    key_.push_back(k);
+    if (light) continue;
+    const auto edges = L.face_edge_list(f);
+    const int c = int(std::find(edges.begin(), edges.end(), e) - edges.begin());
+    key_.push_back(c);
+    for (int d = c + 2; d < c + k; ++d) around_.push_back(face[d < k ? d : d - k]);
+  }
+  if (!store_.sources) return;
+  for (int side = 0; side < 2; ++side) around_.push_back(store_.new_point(Element::Face, L.edge_faces[2 * e + side]));
 }
 
 bool RowPlanner::distinct() const {
@@ -135,7 +190,10 @@ const RowPlan* RowPlanner::find(Index child, Outcome& outcome) {
     if (plan) local_.emplace(key_, plan);
   }
   if (plan) last_key_ = key_, last_plan_ = plan;
-  if (!distinct()) return nullptr;
+  // Learning needs distinct points (positions are found by value). Replaying onto repeated
+  // points is the same sum; only stored tables, which must equal the interpreter's merged
+  // rows entry for entry, need them distinct too.
+  if ((!plan || !store_.sources) && !distinct()) return nullptr;
   if (!plan) outcome = Outcome::Learn;
   if (!plan || !plan->usable) return nullptr;
   outcome = Outcome::Appended;

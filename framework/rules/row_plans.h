@@ -25,6 +25,7 @@
 #include "framework/refine/child_origins.h"
 #include "framework/rules/feature_context.h"
 #include "framework/rules/row_builder.h"
+#include "framework/rules/step_rows.h"
 #include "framework/rules/weight_tables.h"
 
 namespace subdiv {
@@ -38,20 +39,41 @@ struct RowPlan {
 
 // Which kinds of element can use plans in one step, and the plans learnt so far (shared by
 // the threads building the step's rows).
+//
+// With `new_point_sources` (the step evaluator, RuleInputs::new_point_base), new points are
+// sources of their own, numbered parent.vertex_count + child: the enumeration then ends
+// with the new face and edge points the rules read, and where the rules read nothing but the
+// element's own vertices, ring and new points ("light" kinds) it skips the faces' corners.
+// Such rows are the same values as the expanded ones, summed differently.
 class RowPlanStore {
 public:
   RowPlanStore(const Level& parent, const ChildOrigins& origins, const WeightTables& tables,
-               const FeatureContexts& features, bool code_rules);
+               const FeatureContexts& features, bool code_rules,
+               const std::vector<ChildGroup>* new_point_sources = nullptr);
 
   const Level& parent;
   const ChildOrigins& origins;
   const FeatureContexts& features;
+  const std::vector<ChildGroup>* sources = nullptr;  // new_point_sources
   bool enabled[kElementCount] = {};
+  bool light[kElementCount] = {};
+
+  // The source number of element e's new point (kind k), or kNone.
+  Index new_point(Element k, Index e) const {
+    if (first_child_[int(k)] != kNone) return parent.vertex_count + first_child_[int(k)] + e;
+    const ChildGroup& g = (*sources)[int(k)];
+    if (g.row_of_element.empty()) return kNone;
+    const Index r = g.row_of_element[e];
+    return r == kNone ? kNone : parent.vertex_count + g.children[r];
+  }
 
   const RowPlan* find(const std::vector<std::int32_t>& key) const;
   const RowPlan* add(const std::vector<std::int32_t>& key, RowPlan plan);
 
 private:
+  // Kinds whose element e has the one new point first + e (the primal splits number them
+  // so): found without reading the group's arrays. kNone: look them up.
+  Index first_child_[kElementCount] = {kNone, kNone, kNone, kNone};
   mutable std::mutex mutex_;
   std::map<std::vector<std::int32_t>, std::unique_ptr<RowPlan>> plans_;
 };
@@ -76,6 +98,8 @@ public:
 
 private:
   bool describe(Index child);  // fills key_ and around_; false: not eligible
+  void describe_vertex(Index v);
+  void describe_edge(Index e, int local);
   bool distinct() const;
 
   const RowPlanStore& store_;

@@ -16,32 +16,38 @@ namespace {
 // balance.
 constexpr Index kGrain = 4096;
 
-// out = sum_i weights[i] * src[source_of(i)], summed from zero in row order as
-// StencilTable::apply does, so the bits are the same.
+// Where a row's sources live: parent vertices in src, then (numbered from the parent's
+// vertex count) the step's own new points, already written to dst.
+struct Sources {
+  const double* parent;
+  const double* children;
+  Index parent_count;
+  int channels;
+  const double* at(Index source) const {
+    return source < parent_count ? parent + size_t(source) * channels
+                                 : children + size_t(source - parent_count) * channels;
+  }
+};
+
+// out = sum_i weights[i] * value of source_of(i), summed from zero in row order.
 template <class SourceOf>
-void weighted_sum(size_t count, SourceOf source_of, const double* weights, const double* src, double* out,
-                  int channels) {
-  if (channels == 3) {
+void weighted_sum(size_t count, SourceOf source_of, const double* weights, const Sources& in, double* out) {
+  if (in.channels == 3) {
     double sum[3] = {};
     for (size_t i = 0; i < count; ++i) {
       const double w = weights[i];
-      const double* p = src + 3 * size_t(source_of(i));
+      const double* p = in.at(source_of(i));
       sum[0] += w * p[0], sum[1] += w * p[1], sum[2] += w * p[2];
     }
     std::copy(sum, sum + 3, out);
     return;
   }
-  std::fill(out, out + channels, 0.0);
+  std::fill(out, out + in.channels, 0.0);
   for (size_t i = 0; i < count; ++i) {
     const double w = weights[i];
-    const double* p = src + size_t(channels) * size_t(source_of(i));
-    for (int c = 0; c < channels; ++c) out[c] += w * p[c];
+    const double* p = in.at(source_of(i));
+    for (int c = 0; c < in.channels; ++c) out[c] += w * p[c];
   }
-}
-
-void apply_row(const RowBuilder& row, const double* src, double* out, int channels) {
-  const auto& indices = row.indices();
-  weighted_sum(indices.size(), [&](size_t i) { return indices[i]; }, row.weights().data(), src, out, channels);
 }
 
 double row_sum(const RowBuilder& row) {
@@ -50,49 +56,12 @@ double row_sum(const RowBuilder& row) {
   return sum;
 }
 
-// New points that a rule reads, rebuilt where they are read: the row a stored table would
-// hold, added entry by entry as RowBuilder::add_row adds a stored row.
-class RowsOnDemand final : public NewPointRows {
-public:
-  RowsOnDemand(const StepContext& s, const RuleInputs& in, const std::vector<ChildGroup>& groups)
-      : s_(s), in_(in), groups_(groups) {}
-  void add(RowBuilder& row, Element kind, Index r, double scale) const override {
-    RowBuilder point;
-    fill_row(point, s_, in_, groups_[int(kind)].children[r]);
-    for (size_t i = 0; i < point.indices().size(); ++i) row.add(point.indices()[i], scale * point.weights()[i]);
-  }
-
-private:
-  const StepContext& s_;
-  const RuleInputs& in_;
-  const std::vector<ChildGroup>& groups_;
-};
-
-// Group order[at]'s rows are stored when a later group's rules read its new points and
-// take no plans (every row of theirs would rebuild them).
-bool store_rows(const StepContext& s, const RowPlanStore& plans, const std::vector<Element>& order, size_t at) {
-  for (size_t later = at + 1; later < order.size(); ++later)
-    if (uses_new_points(s.tables, order[later], order[at]) && !(s.use_row_plans && plans.enabled[int(order[later])]))
-      return true;
-  return false;
-}
-
-void apply_stored_rows(const ChunkedRows& rows, const ChildGroup& group, const double* src, double* dst, int channels) {
-  tbb::parallel_for(tbb::blocked_range<Index>(0, Index(group.children.size()), kGrain), [&](const auto& range) {
-    for (Index r = range.begin(); r < range.end(); ++r) {
-      const RowBlock& b = rows.chunk_of(r);
-      const Index from = b.offsets[rows.local(r)], to = b.offsets[rows.local(r) + 1];
-      weighted_sum(size_t(to - from), [&](size_t i) { return b.indices[from + Index(i)]; }, b.weights.data() + from,
-                   src, dst + size_t(group.children[r]) * channels, channels);
-    }
-  });
-}
-
 // Each row of the group applied as soon as it is known. Rows are checked as build_rows
 // checks them, and the first bad row in group order is reported, whatever the threads.
 void apply_group_rows(const StepContext& s, const RuleInputs& in, const ChildGroup& group, RowPlanStore& plans,
-                      const double* src, double* dst, int channels) {
+                      const Sources& sources, double* dst) {
   const Index count = Index(group.children.size());
+  const int channels = sources.channels;
   std::atomic<Index> first_bad{count};
   auto mark_bad = [&](Index r) {
     Index seen = first_bad.load();
@@ -109,7 +78,7 @@ void apply_group_rows(const StepContext& s, const RuleInputs& in, const ChildGro
         if (const RowPlan* plan = planner.find(child, outcome)) {
           const std::vector<Index>& around = planner.around();
           weighted_sum(plan->positions.size(), [&](size_t i) { return around[plan->positions[i]]; },
-                       plan->weights.data(), src, out, channels);
+                       plan->weights.data(), sources, out);
           if (!plan->sum_ok) mark_bad(r);
           continue;
         }
@@ -117,7 +86,8 @@ void apply_group_rows(const StepContext& s, const RuleInputs& in, const ChildGro
       fill_row(row, s, in, child);
       if (outcome == RowPlanner::Outcome::Learn) planner.learn(row, plans);
       if (!row_sum_ok(row_sum(row))) mark_bad(r);
-      apply_row(row, src, out, channels);
+      const auto& indices = row.indices();
+      weighted_sum(indices.size(), [&](size_t i) { return indices[i]; }, row.weights().data(), sources, out);
     }
   });
   if (first_bad == count) return;
@@ -135,24 +105,18 @@ void apply_step_rows(const StepContext& s, std::span<const double> src, std::spa
                             "of {} channels",
                             src.size(), dst.size(), s.parent.vertex_count, child_count, channels));
   const std::vector<ChildGroup> groups = group_children(s);
-  RowPlanStore plans(s.parent, s.origins, s.tables, s.features, s.code != nullptr);
+  RowPlanStore plans(s.parent, s.origins, s.tables, s.features, s.code != nullptr, &groups);
+  // New points are sources: the groups run in build order, so a rule reads new points that
+  // are already in dst.
   RuleInputs in{s.parent, s.features};
-  const RowsOnDemand on_demand(s, in, groups);
-  in.on_demand = &on_demand;
+  in.new_point_base = s.parent.vertex_count;
   for (int e = 0; e < kElementCount; ++e)
-    if (!groups[e].children.empty()) in.block_row_of_element[e] = &groups[e].row_of_element;
-  std::vector<ChunkedRows> stored(kElementCount);
-  const std::vector<Element> order = build_order(s, groups);
-  for (size_t at = 0; at < order.size(); ++at) {
-    const int e = int(order[at]);
-    if (!store_rows(s, plans, order, at)) {
-      apply_group_rows(s, in, groups[e], plans, src.data(), dst.data(), channels);
-      continue;
+    if (!groups[e].children.empty()) {
+      in.block_row_of_element[e] = &groups[e].row_of_element;
+      in.children[e] = &groups[e].children;
     }
-    stored[e] = build_rows(s, in, groups[e], plans);
-    in.blocks[e] = &stored[e];
-    apply_stored_rows(stored[e], groups[e], src.data(), dst.data(), channels);
-  }
+  const Sources sources{src.data(), dst.data(), s.parent.vertex_count, channels};
+  for (Element e : build_order(s, groups)) apply_group_rows(s, in, groups[int(e)], plans, sources, dst.data());
 }
 
 }  // namespace subdiv

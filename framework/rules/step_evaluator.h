@@ -4,9 +4,13 @@
 // interior rows come straight from their plans (row_plans.h), other rows from the rule
 // interpreter (step_rows.h), so nothing of the size of a table is built or stored.
 //
-// The result is bit for bit that of build_step_stencils(step).apply(src, channels): the
-// same rows, summed in the same order. Rows of new points that other rules read are built
-// again where they are read, or, for rules that take no plans, stored for the step.
+// New points a rule uses (Catmull-Clark's vertex and edge rules read the new face points)
+// are read back from the output, computed first in the rules' dependency order, instead of
+// being expanded into parent vertices: fewer terms, and neighbourhoods that never list the
+// faces' corners. The values are those of build_step_stencils(step).apply(src, channels)
+// up to round-off, and bit for bit the same for schemes whose rules use no new points
+// (the rows are then the same, summed in the same order). Any thread count gives the same
+// bits.
 #include <span>
 
 #include "framework/rules/step_rows.h"

@@ -188,11 +188,6 @@ std::vector<Element> build_order(const StepContext& s, const std::vector<ChildGr
       throw Error(fmt::format("{}: the rules refer to each other's new points in a cycle", s.source));
   return order;
 }
-bool uses_new_points(const WeightTables& tables, Element from, Element to) {
-  const NewPoint as_new[kElementCount] = {NewPoint::Vertex, NewPoint::Edge, NewPoint::Face, NewPoint::None};
-  return as_new[int(to)] != NewPoint::None && references(tables, from, as_new[int(to)]);
-}
-
 bool row_sum_ok(double sum) { return std::isfinite(sum) && std::abs(sum - 1.0) <= kSumTolerance; }
 
 void report_bad_row(const StepContext& s, Index child, double sum) {

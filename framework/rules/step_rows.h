@@ -45,9 +45,6 @@ std::vector<ChildGroup> group_children(const StepContext& s);
 // Element kinds with children, in an order where new points a rule uses come before it.
 std::vector<Element> build_order(const StepContext& s, const std::vector<ChildGroup>& groups);
 
-// Do the rules for `from` points use the new points of `to` elements?
-bool uses_new_points(const WeightTables& tables, Element from, Element to);
-
 // Fills child's row (`row` must be clear). New points the rules use come from `in`.
 void fill_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index child);
 

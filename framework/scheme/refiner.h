@@ -79,9 +79,10 @@ std::vector<double> apply_step(const Hierarchy& hierarchy, int step, std::span<c
 
 // Values of level `step` carried to level step + 1 straight from the rules, with no stencil
 // table (rules/step_evaluator.h): needs only refine_topology's hierarchy, and is faster
-// and smaller than build_stencils + apply_step. Same values: the same bits for schemes of
-// one step; smoothing passes are applied one after another rather than composed, which may
-// change the last bits.
+// and smaller than build_stencils + apply_step. The same values to round-off: the same
+// bits where the rules use no new points; new points a rule uses are read back rather than
+// expanded, and smoothing passes are applied one after another rather than composed, which
+// changes the last bits. The same bits for any thread count.
 std::vector<double> step_values(std::span<const SchemeRun> runs, const Hierarchy& topology, int step,
                                 std::span<const double> values, int channels, const RefineOptions& options);
 std::vector<double> step_values(const Scheme& scheme, const Hierarchy& topology, int step,

@@ -1,7 +1,9 @@
 // step_values (framework/scheme/refiner.h, rules/step_evaluator.h) carries values to the
-// next level straight from the rules, with no stencil table. It must give exactly what the
-// tables give: the same bits for one-step schemes, for any channel count, thread count,
-// with or without row plans, on meshes with boundaries, features and tiny closed rings.
+// next level straight from the rules, with no stencil table. It must give what the tables
+// give, for any channel count, with or without row plans, on meshes with boundaries,
+// features and tiny closed rings: the same bits where the rules use no new points (the
+// rows are the same), the same values to round-off where they do (Catmull-Clark reads its
+// new face points back instead of expanding them); and the same bits for any thread count.
 #include <cmath>
 #include <doctest/doctest.h>
 #include <tbb/global_control.h>
@@ -68,23 +70,27 @@ void check_same_values(const std::string& name, const Case& c, int levels, bool 
   }
 }
 
+// Catmull-Clark's rules use new face points; step_values reads them back (round-off).
+bool exact_for(const std::string& scheme) { return scheme != "catmull-clark" && scheme != "catmull-clark-shape"; }
+
 }  // namespace
 
-TEST_CASE("step_values equals the stencil tables bit for bit, for every one-step scheme") {
+TEST_CASE("step_values equals the stencil tables, bit for bit where the rules use no new points") {
   const std::vector<Case> quads = {of(torus(6, 5)), of(cube()), of(grid(4, 3)), creased_cube(), of(torus(3, 3))};
   const std::vector<Case> triangles = {of(torus(6, 5, true)), of(octahedron()), of(grid(4, 3, true)),
                                        of(bipyramid(7)), of(torus(3, 3, true))};
   for (bool plans : {true, false})
     for (int channels : {3, 1, 2}) {
       for (const char* scheme : {"catmull-clark", "catmull-clark-shape", "bilinear", "doo-sabin", "doo-sabin-centroid", "mid-edge"})
-        for (const Case& c : quads) check_same_values(scheme, c, 2, plans, channels, true);
+        for (const Case& c : quads) check_same_values(scheme, c, 2, plans, channels, exact_for(scheme));
       for (const char* scheme : {"catmull-clark", "doo-sabin", "mid-edge"})
-        check_same_values(scheme, of(pyramid()), 2, plans, channels, true);  // a quad among triangles
+        check_same_values(scheme, of(pyramid()), 2, plans, channels, exact_for(scheme));  // a quad among triangles
       for (const char* scheme : {"loop", "butterfly", "modified-butterfly", "midpoint"})
         for (const Case& c : triangles) check_same_values(scheme, c, 2, plans, channels, true);
       for (const Case& c : triangles) check_same_values("sqrt3", c, 3, plans, channels, true);
     }
-  check_same_values("catmull-clark", creased_cube(), 4, true, 3, true);  // semi-sharp decays over levels
+  check_same_values("catmull-clark", creased_cube(), 4, true, 3, false);  // semi-sharp decays over levels
+  check_same_values("loop", of(torus(6, 5, true)), 3, true, 3, true);
 }
 
 TEST_CASE("step_values applies smoothing passes one after another, equal to the composed tables") {
@@ -109,7 +115,10 @@ TEST_CASE("step_values gives the same bits on one thread and on two") {
     two = step_values(*scheme, h, 0, c.positions, 3, o);
   }
   CHECK(one == two);
-  CHECK(one == interpolate(refine(*scheme, c.level, o), 1, c.positions, 3));
+  const std::vector<double> tables = interpolate(refine(*scheme, c.level, o), 1, c.positions, 3);
+  double worst = 0.0;
+  for (size_t i = 0; i < one.size(); ++i) worst = std::max(worst, std::abs(one[i] - tables[i]));
+  CHECK(worst < 1e-12);
 }
 
 TEST_CASE("step_values refuses wrong buffers and steps with a message") {
