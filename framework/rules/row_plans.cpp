@@ -60,8 +60,13 @@ RowPlanStore::RowPlanStore(const Level& parent_level, const ChildOrigins& child_
     enabled[int(Element::Vertex)] = rule_inside(vertex, vertex_role_inside, faces_edges);
     light[int(Element::Edge)] = rule_inside(edge, edge_role_light, faces);
     light[int(Element::Vertex)] = rule_inside(vertex, vertex_role_light, faces_edges);
-    for (int k = 0; k < kElementCount; ++k)
+    for (int k = 0; k < kElementCount; ++k) {
       if (one_child_each_in_order((*sources)[k])) first_child_[k] = (*sources)[k].children.front();
+      for (const CompiledTerm& t : tables.rule(Element(k), Context::Smooth).terms) {
+        reads_face_points[k] |= t.new_point == NewPoint::Face;
+        reads_edge_points[k] |= t.new_point == NewPoint::Edge;
+      }
+    }
     return;
   }
   const bool faces[4] = {true, enabled[int(Element::Face)], false, false};
@@ -142,8 +147,10 @@ void RowPlanner::describe_vertex(Index v) {
   if (light)
     for (Index e : L.ring_edges(v)) around_.push_back(L.other_end(e, v));
   if (!store_.sources) return;
-  for (Index f : L.ring_faces(v)) around_.push_back(store_.new_point(Element::Face, f));
-  for (Index e : L.ring_edges(v)) around_.push_back(store_.new_point(Element::Edge, e));
+  if (store_.reads_face_points[int(Element::Vertex)])
+    for (Index f : L.ring_faces(v)) around_.push_back(store_.new_point(Element::Face, f));
+  if (store_.reads_edge_points[int(Element::Vertex)])
+    for (Index e : L.ring_edges(v)) around_.push_back(store_.new_point(Element::Edge, e));
 }
 
 // Its ends; then (unless light) in each face the corners off the edge; then, as sources,
@@ -166,7 +173,7 @@ void RowPlanner::describe_edge(Index e, int local) {
     key_.push_back(c);
     for (int d = c + 2; d < c + k; ++d) around_.push_back(face[d < k ? d : d - k]);
   }
-  if (!store_.sources) return;
+  if (!store_.sources || !store_.reads_face_points[int(Element::Edge)]) return;
   for (int side = 0; side < 2; ++side) around_.push_back(store_.new_point(Element::Face, L.edge_faces[2 * e + side]));
 }
 

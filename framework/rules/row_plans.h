@@ -57,6 +57,8 @@ public:
   const std::vector<ChildGroup>* sources = nullptr;  // new_point_sources
   bool enabled[kElementCount] = {};
   bool light[kElementCount] = {};
+  // With sources: whether the smooth rule of an element kind reads new face / edge points.
+  bool reads_face_points[kElementCount] = {}, reads_edge_points[kElementCount] = {};
 
   // The source number of element e's new point (kind k), or kNone.
   Index new_point(Element k, Index e) const {
