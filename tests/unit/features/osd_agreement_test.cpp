@@ -117,9 +117,12 @@ void check_agreement(const FeatureMesh& fm, const std::string& scheme_name, cons
   options.crease_method = setup.method;
   const Hierarchy h = refine(*scheme, level_from_mesh(fm.mesh, fm.name), options);
   const auto osd = subdiv_test::osd_refine(to_osd(fm.mesh), osd_options(scheme_name, setup), kLevels);
+  std::vector<double> direct = fm.mesh.positions;  // step_values: no stencil tables
   for (int l = 1; l <= kLevels; ++l) {
     const auto ours = interpolate(h, l, fm.mesh.positions, 3);
     const auto expected = subdiv_test::osd_in_our_order(osd, h, l);
+    direct = step_values(*scheme, h, l - 1, direct, 3, options);
+    CHECK(subdiv_test::max_abs_difference(direct, expected) < kTolerance);
     double worst = 0;
     size_t at = 0;
     for (size_t i = 0; i < ours.size(); ++i)
