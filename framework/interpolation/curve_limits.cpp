@@ -13,7 +13,10 @@
 namespace subdiv {
 namespace {
 
+// A window is refined until its points near the ends are in the uniform part: a handful of
+// levels for any mask; these bounds stop a scheme that never gets there.
 constexpr int kMaxWindowLevels = 16;
+constexpr Index kMaxWindowPoints = 4'000'000;
 constexpr long kUnknown = LONG_MIN;
 
 using Row = std::map<Index, double>;  // a limit row while it is assembled (rows are short)
@@ -84,7 +87,8 @@ std::map<long, Row> window_rows(const CurveScheme& scheme, const BasisSamples& p
   std::vector<std::vector<long>> u{std::vector<long>(size_t(n))};
   for (long i = 0; i < n; ++i) u[0][size_t(i)] = i;
   long scale = 1;  // m^level
-  for (int level = 1; level <= kMaxWindowLevels && !pending.empty(); ++level) {
+  for (int level = 1; level <= kMaxWindowLevels && !pending.empty() && h.levels.back().vertex_count < kMaxWindowPoints;
+       ++level) {
     CurveStep step = refine_curve_step(h.levels.back(), evaluate_curve_rules(scheme, level - 1), scheme.name);
     u.push_back(uniform_indices(u.back(), step.origins, m));
     h.levels.push_back(std::move(step.child));
@@ -122,8 +126,8 @@ std::map<long, Row> window_rows(const CurveScheme& scheme, const BasisSamples& p
   }
   if (!pending.empty())
     throw Error(fmt::format("curve scheme '{}': the limit point of vertex {} near the end of an open polyline "
-                            "was not found after {} levels",
-                            scheme.name, g[size_t(pending.front())], kMaxWindowLevels));
+                            "was not found after refining a window of the polyline {} levels",
+                            scheme.name, g[size_t(pending.front())], h.levels.size() - 1));
   return rows;
 }
 
