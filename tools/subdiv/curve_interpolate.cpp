@@ -12,6 +12,7 @@
 #include "framework/io/mesh_write.h"
 #include "framework/io/vtk_output.h"
 #include "framework/util/error.h"
+#include "curve_refine.h"
 #include "interpolate_common.h"
 #include "level_output.h"
 #include "progress.h"
@@ -83,6 +84,7 @@ void interpolate_curves_command(const CurveInterpolateRequest& a) {
   const MeshData mesh = read_mesh(a.mesh);
   const CurveLevel base = curve_level_from_mesh(mesh, a.mesh);
   const std::vector<std::uint8_t> moving = read_selection(a.select, base.vertex_count);
+  if (!a.refined.empty()) check_curve_size(base, scheme->arity, a.levels);
 
   Progress progress;
   progress.say("finding the limit points");

@@ -34,21 +34,6 @@ void check_curve_output(const std::filesystem::path& out) {
                           out.string()));
 }
 
-// Bytes per point of the finest level: positions of every level, stencil rows, topology.
-constexpr double kBytesPerPoint = 160.0;
-
-void check_curve_size(const CurveLevel& base, int arity, int levels) {
-  const double points = double(base.vertices.size() + 2 * base.polyline_count()) * std::pow(double(arity), levels);
-  if (points > 2.0e9)
-    throw Error(fmt::format("{} levels would make about {:.3g} points, more than the 2^31 a level can index; "
-                            "ask for fewer levels", levels, points));
-  const double need = points * kBytesPerPoint, have = available_memory_bytes();
-  if (need > have)
-    throw Error(fmt::format("{} levels would make about {:.3g} points and need about {:.1f} GiB, but only "
-                            "{:.1f} GiB of memory is available; ask for fewer levels",
-                            levels, points, need / (1 << 30), have / (1 << 30)));
-}
-
 // Point "rule" (the rule that made each point: r >= 0, or -1 - e for end rule e; 0 on
 // level 0) and "level"; cell "polyline" (its number in the input) and "closed".
 OutputLevel describe(const CurveLevel& L, const std::vector<std::int8_t>& rules, int l, const MeshData& mesh) {
@@ -80,6 +65,21 @@ bool is_curve_scheme(const std::string& scheme) {
   } catch (const Error&) {
     return false;
   }
+}
+
+// Bytes per point of the finest level: positions of every level, stencil rows, topology.
+constexpr double kBytesPerPoint = 160.0;
+
+void check_curve_size(const CurveLevel& base, int arity, int levels) {
+  const double points = double(base.vertices.size() + 2 * base.polyline_count()) * std::pow(double(arity), levels);
+  if (points > 2.0e9)
+    throw Error(fmt::format("{} levels would make about {:.3g} points, more than the 2^31 a level can index; "
+                            "ask for fewer levels", levels, points));
+  const double need = points * kBytesPerPoint, have = available_memory_bytes();
+  if (need > have)
+    throw Error(fmt::format("{} levels would make about {:.3g} points and need about {:.1f} GiB, but only "
+                            "{:.1f} GiB of memory is available; ask for fewer levels",
+                            levels, points, need / (1 << 30), have / (1 << 30)));
 }
 
 void refine_curves_command(const CurveRefineRequest& a) {

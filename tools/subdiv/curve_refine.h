@@ -3,6 +3,7 @@
 // curve scheme, written as .vtp (finest level), .pvd (all levels) or .obj ('l' lines).
 #include <string>
 
+#include "framework/curve/curve_level.h"
 #include "framework/scheme/scheme_registry.h"
 
 namespace subdiv::cli {
@@ -20,5 +21,9 @@ struct CurveRefineRequest {
 bool is_curve_scheme(const std::string& scheme);
 
 void refine_curves_command(const CurveRefineRequest& request);
+
+// Refuses, with the numbers, `levels` steps of arity `arity` that would not fit in memory
+// or in 32-bit indices.
+void check_curve_size(const CurveLevel& base, int arity, int levels);
 
 }  // namespace subdiv::cli
