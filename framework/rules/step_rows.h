@@ -1,8 +1,9 @@
 #pragma once
 // The rows of one refinement step, child vertex by child vertex: every child as a weighted
-// sum of parent vertices, from the compiled rules, the parent's neighbourhoods and its
-// features. The stencil builder (stencil_builder.h) stores them as a table; the step
-// evaluator (step_evaluator.h) applies each row as soon as it is built.
+// sum of parent vertices (or, in the step evaluator, of parent vertices and the step's own
+// new points, RuleInputs::new_point_base), from the compiled rules, the parent's
+// neighbourhoods and its features. The stencil builder (stencil_builder.h) stores them as a
+// table; the step evaluator (step_evaluator.h) applies each row as soon as it is built.
 // Child vertices are found through their origins (parent vertex, edge, face or corner), so
 // any splitter that records origins works, and smoothing passes are steps whose origins
 // are the vertices themselves.
