@@ -16,13 +16,14 @@ Element element_of(NewPoint kind) {
 void add_point(RowBuilder& row, const RuleInputs& in, const CompiledTerm& term, Index element, double w) {
   if (term.new_point == NewPoint::None) return row.add(element, w);
   const Element kind = element_of(term.new_point);
-  const std::vector<Index>* rows = in.block_row_of_element[int(kind)];
-  if (!rows)
+  const ChildGroup* group = in.groups ? &(*in.groups)[int(kind)] : nullptr;
+  const bool as_source = in.new_point_base >= 0;
+  if (!group || group->children.empty() || (!as_source && !in.blocks[int(kind)]))
     throw Error(fmt::format("{}: uses new {} points, which this step does not make", term.where, element_name(kind)));
-  const Index r = (*rows)[element];
+  const Index r = group->row_of_element[element];
   if (r == kNone)
     throw Error(fmt::format("{}: {} {} has no new point in this step", term.where, element_name(kind), element));
-  if (in.new_point_base >= 0) return row.add(in.new_point_base + (*in.children[int(kind)])[r], w);
+  if (as_source) return row.add(in.new_point_base + group->children[r], w);
   row.add_row(*in.blocks[int(kind)], r, w);
 }
 

@@ -7,20 +7,25 @@
 
 namespace subdiv {
 
+// The child vertices of one element kind, and where each element's first child is.
+struct ChildGroup {
+  std::vector<Index> children;        // child vertex indices, in child order
+  std::vector<Index> row_of_element;  // element -> row in this group (index into children), or kNone
+};
+
 // What the rules of one step can see: the parent level, its features, and the new points
 // of the step (for terms with "new").
 struct RuleInputs {
   const Level& parent;
   const FeatureContexts& features;
-  // New points of element kind k exist where block_row_of_element[k] is set: the new point
-  // of element e is row r = (*block_row_of_element[k])[e] of that kind's rows, stored in
-  // blocks[k], whose rows a term adds expanded into parent vertices.
+  // The step's children by element kind (step_rows.h: group_children): the new point of
+  // element e of kind k is row (*groups)[k].row_of_element[e] of that kind. A term adds it
+  // expanded into parent vertices, from the rows stored in blocks[k] (the stencil builder),
+  // or, with new_point_base >= 0, as a source of its own, new_point_base + child (the step
+  // evaluator, which computes new points before the rules that read them).
+  const std::vector<ChildGroup>* groups = nullptr;
   const ChunkedRows* blocks[kElementCount] = {};
-  const std::vector<Index>* block_row_of_element[kElementCount] = {};
-  // Or, where new points are sources themselves (the step evaluator, which computes them
-  // first): a term adds child vertex (*children[k])[r] as source new_point_base + child.
   Index new_point_base = -1;
-  const std::vector<Index>* children[kElementCount] = {};
 };
 
 void apply_vertex_rule(RowBuilder& row, const RuleInputs& in, Index v, const CompiledRule& rule,

@@ -122,8 +122,8 @@ bool RowPlanner::describe(Index child) {
     case OriginKind::Corner:
       return false;
   }
-  for (Index a : around_)
-    if (a == kNone) return false;  // a new point the element does not have
+  if (store_.sources && std::find(around_.begin(), around_.end(), kNone) != around_.end())
+    return false;  // a new point the element does not have
   return around_.size() <= kMaxAround;
 }
 
@@ -229,9 +229,7 @@ void RowPlanner::learn(const RowBuilder& row, RowPlanStore& store) {
   }
   if (plan.usable) {
     plan.weights = row.weights();
-    double sum = 0.0;
-    for (double w : plan.weights) sum += w;
-    plan.sum_ok = row_sum_ok(sum);
+    plan.sum_ok = row_sum_ok(weight_sum(plan.weights));
   }
   else plan.positions.clear();
   local_.emplace(key_, store.add(key_, std::move(plan)));

@@ -64,7 +64,7 @@ public:
   Index new_point(Element k, Index e) const {
     if (first_child_[int(k)] != kNone) return parent.vertex_count + first_child_[int(k)] + e;
     const ChildGroup& g = (*sources)[int(k)];
-    if (g.row_of_element.empty()) return kNone;
+    if (g.children.empty()) return kNone;
     const Index r = g.row_of_element[e];
     return r == kNone ? kNone : parent.vertex_count + g.children[r];
   }

@@ -92,12 +92,12 @@ ChildOrigins identity_origins(const Level& level) {
 StencilTable build_step_stencils(const StepContext& s) {
   const std::vector<ChildGroup> groups = group_children(s);
   RuleInputs in{s.parent, s.features};
+  in.groups = &groups;
   std::vector<ChunkedRows> blocks(kElementCount);
   RowPlanStore plans(s.parent, s.origins, s.tables, s.features, s.code != nullptr);
   for (Element e : build_order(s, groups)) {
     blocks[int(e)] = build_rows(s, in, groups[int(e)], plans);
     in.blocks[int(e)] = &blocks[int(e)];
-    in.block_row_of_element[int(e)] = &groups[int(e)].row_of_element;
   }
   const std::vector<int> order = contiguous_group_order(groups, Index(s.origins.kind.size()));
   if (!order.empty()) return concatenate_rows(s.parent.vertex_count, order, blocks);

@@ -1,7 +1,6 @@
 #include "framework/rules/step_evaluator.h"
 
 #include <algorithm>
-#include <atomic>
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -50,23 +49,13 @@ void weighted_sum(size_t count, SourceOf source_of, const double* weights, const
   }
 }
 
-double row_sum(const RowBuilder& row) {
-  double sum = 0.0;
-  for (double w : row.weights()) sum += w;
-  return sum;
-}
-
 // Each row of the group applied as soon as it is known. Rows are checked as build_rows
 // checks them, and the first bad row in group order is reported, whatever the threads.
 void apply_group_rows(const StepContext& s, const RuleInputs& in, const ChildGroup& group, RowPlanStore& plans,
                       const Sources& sources, double* dst) {
   const Index count = Index(group.children.size());
   const int channels = sources.channels;
-  std::atomic<Index> first_bad{count};
-  auto mark_bad = [&](Index r) {
-    Index seen = first_bad.load();
-    while (r < seen && !first_bad.compare_exchange_weak(seen, r)) {}
-  };
+  FirstBadRow first_bad(count);
   tbb::parallel_for(tbb::blocked_range<Index>(0, count, kGrain), [&](const auto& range) {
     RowBuilder row;
     RowPlanner planner(plans);
@@ -79,21 +68,18 @@ void apply_group_rows(const StepContext& s, const RuleInputs& in, const ChildGro
           const std::vector<Index>& around = planner.around();
           weighted_sum(plan->positions.size(), [&](size_t i) { return around[plan->positions[i]]; },
                        plan->weights.data(), sources, out);
-          if (!plan->sum_ok) mark_bad(r);
+          if (!plan->sum_ok) first_bad.mark(r);
           continue;
         }
       row.clear();
       fill_row(row, s, in, child);
       if (outcome == RowPlanner::Outcome::Learn) planner.learn(row, plans);
-      if (!row_sum_ok(row_sum(row))) mark_bad(r);
+      if (!row_sum_ok(weight_sum(row.weights()))) first_bad.mark(r);
       const auto& indices = row.indices();
       weighted_sum(indices.size(), [&](size_t i) { return indices[i]; }, row.weights().data(), sources, out);
     }
   });
-  if (first_bad == count) return;
-  RowBuilder row;
-  fill_row(row, s, in, group.children[first_bad]);
-  report_bad_row(s, group.children[first_bad], row_sum(row));
+  first_bad.report_if_any(s, in, group);
 }
 
 }  // namespace
@@ -109,12 +95,8 @@ void apply_step_rows(const StepContext& s, std::span<const double> src, std::spa
   // New points are sources: the groups run in build order, so a rule reads new points that
   // are already in dst.
   RuleInputs in{s.parent, s.features};
+  in.groups = &groups;
   in.new_point_base = s.parent.vertex_count;
-  for (int e = 0; e < kElementCount; ++e)
-    if (!groups[e].children.empty()) {
-      in.block_row_of_element[e] = &groups[e].row_of_element;
-      in.children[e] = &groups[e].children;
-    }
   const Sources sources{src.data(), dst.data(), s.parent.vertex_count, channels};
   for (Element e : build_order(s, groups)) apply_group_rows(s, in, groups[int(e)], plans, sources, dst.data());
 }

@@ -190,7 +190,19 @@ std::vector<Element> build_order(const StepContext& s, const std::vector<ChildGr
 }
 bool row_sum_ok(double sum) { return std::isfinite(sum) && std::abs(sum - 1.0) <= kSumTolerance; }
 
-void report_bad_row(const StepContext& s, Index child, double sum) {
+double weight_sum(std::span<const double> weights) {
+  double sum = 0.0;
+  for (double w : weights) sum += w;
+  return sum;
+}
+
+void FirstBadRow::report_if_any(const StepContext& s, const RuleInputs& in, const ChildGroup& group) const {
+  const Index r = first_.load();
+  if (r == count_) return;
+  const Index child = group.children[r];
+  RowBuilder row;
+  fill_row(row, s, in, child);
+  const double sum = weight_sum(row.weights());
   const Index p = s.origins.parent[child];
   const Element e = Element(int(s.origins.kind[child]));
   const int size = e == Element::Vertex ? s.parent.valence(p) : e == Element::Edge ? 2 : s.parent.face_size(p);
@@ -205,7 +217,7 @@ ChunkedRows build_rows(const StepContext& s, const RuleInputs& in, const ChildGr
   ChunkedRows rows;
   rows.chunk_rows = kRowChunk;
   rows.chunks.resize((count + kRowChunk - 1) / kRowChunk);
-  std::atomic<Index> first_bad{count};
+  FirstBadRow first_bad(count);
   tbb::parallel_for(Index(0), Index(rows.chunks.size()), [&](Index c) {
     RowBuilder row;
     RowPlanner planner(plans);
@@ -226,22 +238,10 @@ ChunkedRows build_rows(const StepContext& s, const RuleInputs& in, const ChildGr
       }
       const Index from = part.offsets.back();
       part.offsets.push_back(Index(part.indices.size()));
-      double sum = 0.0;
-      for (Index i = from; i < part.offsets.back(); ++i) sum += part.weights[i];
-      if (!row_sum_ok(sum)) {
-        Index seen = first_bad.load();
-        while (r < seen && !first_bad.compare_exchange_weak(seen, r)) {}
-      }
+      if (!row_sum_ok(weight_sum({part.weights.data() + from, size_t(part.offsets.back() - from)}))) first_bad.mark(r);
     }
   });
-  if (first_bad < count) {
-    const Index child = group.children[first_bad];
-    RowBuilder row;
-    fill_row(row, s, in, child);
-    double sum = 0.0;
-    for (double w : row.weights()) sum += w;
-    report_bad_row(s, child, sum);
-  }
+  first_bad.report_if_any(s, in, group);
   return rows;
 }
 

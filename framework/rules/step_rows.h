@@ -7,6 +7,8 @@
 // Child vertices are found through their origins (parent vertex, edge, face or corner), so
 // any splitter that records origins works, and smoothing passes are steps whose origins
 // are the vertices themselves.
+#include <atomic>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -34,13 +36,7 @@ struct StepContext {
   bool use_row_plans = true;
 };
 
-// The child vertices of one element kind, and where each element's first child is.
-struct ChildGroup {
-  std::vector<Index> children;        // child vertex indices, in child order
-  std::vector<Index> row_of_element;  // element -> row in this group (index into children), or kNone
-};
-
-// One group per element kind (indexed by Element).
+// One ChildGroup (element_rules.h) per element kind (indexed by Element).
 std::vector<ChildGroup> group_children(const StepContext& s);
 
 // Element kinds with children, in an order where new points a rule uses come before it.
@@ -50,8 +46,24 @@ std::vector<Element> build_order(const StepContext& s, const std::vector<ChildGr
 void fill_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index child);
 
 // Rows must be affine and finite.
+double weight_sum(std::span<const double> weights);
 bool row_sum_ok(double sum);
-[[noreturn]] void report_bad_row(const StepContext& s, Index child, double sum);
+
+// The first row of a group, in group order, that failed row_sum_ok, whatever the threads
+// that built the rows; report() rebuilds that row and throws the message naming it.
+class FirstBadRow {
+public:
+  explicit FirstBadRow(Index count) : count_(count), first_(count) {}
+  void mark(Index r) {
+    Index seen = first_.load();
+    while (r < seen && !first_.compare_exchange_weak(seen, r)) {}
+  }
+  void report_if_any(const StepContext& s, const RuleInputs& in, const ChildGroup& group) const;
+
+private:
+  Index count_;
+  std::atomic<Index> first_;
+};
 
 // Rows per chunk of parallel work: large enough that a chunk's buffers are bulk memory
 // (util/bulk_memory.h), returned to the system as soon as they are freed, rather than

@@ -141,9 +141,8 @@ int generic_rows_with_sources(const std::string& name, const Level& L) {
   const std::vector<ChildGroup> groups = group_children(step);
   RowPlanStore store(L, split.origins, tables, features, false, &groups);
   RuleInputs in{L, features};
+  in.groups = &groups;
   in.new_point_base = L.vertex_count;
-  for (int e = 0; e < kElementCount; ++e)
-    if (!groups[e].children.empty()) in.block_row_of_element[e] = &groups[e].row_of_element, in.children[e] = &groups[e].children;
   RowPlanner planner(store);
   int generic = 0;
   for (Index child = 0; child < Index(split.origins.kind.size()); ++child) {
