@@ -1,17 +1,16 @@
 #include "framework/analysis/curve_basis.h"
 
-#include <Eigen/Dense>
 #include <cmath>
+#include <numeric>
 #include <fmt/format.h>
 
+#include "framework/analysis/curve_eigen.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
 namespace {
 
-constexpr double kResidualTolerance = 1e-9;
 constexpr int kMaxCentreSteps = 6;
-constexpr double kRoundOff = 1e-13;
 
 long floor_div(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 long ceil_div(long a, long b) { return -floor_div(-a, b); }
@@ -34,34 +33,22 @@ BasisSamples sample_basis(const CurveMask& raw, const std::string& scheme) {
   const CurveMask mask = trimmed(raw);
   const long m = mask.arity, first = mask.first, last = mask.last();
   BasisSamples s;
-  // Integers inside the support [first, last] / (m - 1).
-  s.integers_first = int(ceil_div(first, m - 1));
-  const int count = int(floor_div(last, m - 1)) - s.integers_first + 1;
-  if (count <= 0) throw Error(fmt::format("curve scheme '{}': its mask has no integer in its support", scheme));
-  // (A - I) phi = 0 and sum phi = 1, solved together in the least-squares sense.
-  Eigen::MatrixXd system = Eigen::MatrixXd::Zero(count + 1, count);
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(count + 1);
-  for (int k = 0; k < count; ++k) {
-    for (int l = 0; l < count; ++l)
-      system(k, l) = mask.at(int(m * (k + s.integers_first) - (l + s.integers_first)));
-    system(k, k) -= 1.0;
-  }
-  system.row(count).setOnes();
-  rhs(count) = 1.0;
-  const Eigen::VectorXd phi = system.colPivHouseholderQr().solve(rhs);
-  if (!phi.allFinite() || (system * phi - rhs).norm() > kResidualTolerance)
-    throw Error(fmt::format("curve scheme '{}': its limit function has no values at the integers (the system "
-                            "phi(k) = sum a_(m k - l) phi(l) has no solution summing to one), so the scheme has no "
-                            "limit points; check it with `subdiv analyze {}`",
+  // phi at the integers is the limit mask at t = 0 (seed 000 §3(d)): the left eigenvector
+  // of 1 of the local subdivision matrix, whose neighbourhood j holds weight phi(-j).
+  const LocalSubdivisionMatrix local = local_subdivision_matrix(mask);
+  if (local.size() == 0) throw Error(fmt::format("curve scheme '{}': its mask has no integer in its support", scheme));
+  const LocalEigenAnalysis eigen = analyse_local_matrix(local);
+  if (!eigen.has_limit_mask)
+    throw Error(fmt::format("curve scheme '{}': its limit function has no values at the integers (1 is not the "
+                            "simple dominant eigenvalue of its local subdivision matrix), so the scheme has no limit "
+                            "points; check it with `subdiv analyze {}`",
                             scheme, scheme));
-  // Values that are zero in exact arithmetic (interpolatory schemes: phi(k) = 0 for k != 0)
-  // come back as round-off; clean them so the rows have no 1e-19 terms.
-  double sum = 0.0;
-  for (int k = 0; k < count; ++k) {
-    const double v = std::abs(phi(k)) < kRoundOff ? 0.0 : phi(k);
-    s.at_integers.push_back(v);
-    sum += v;
-  }
+  const int count = local.size();
+  s.integers_first = -(local.first_index + count - 1);
+  s.at_integers.assign(eigen.limit_mask.rbegin(), eigen.limit_mask.rend());
+  // The mask's round-off is snapped to zero; divide by what is left, so that an
+  // interpolatory scheme's phi(0) is exactly 1.
+  const double sum = std::accumulate(s.at_integers.begin(), s.at_integers.end(), 0.0);
   for (double& v : s.at_integers) v /= sum;
 
   // The centre c = (first + last) / (2 (m - 1)) = num / den.

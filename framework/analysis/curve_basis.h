@@ -1,8 +1,8 @@
 #pragma once
 // Samples of a curve scheme's refinable function phi (curve_mask.h: the limit curve is
 // sum_j P_j phi(t - j), phi(t) = sum_i a_i phi(m t - i)), exact up to round-off:
-//   - at the integers: phi(k) = sum_l a_{m k - l} phi(l), the eigenvector of eigenvalue 1
-//     of that finite system with sum_k phi(k) = 1 (seed 000 §3(d): the limit mask);
+//   - at the integers: the limit mask of the local subdivision matrix (curve_eigen.h, seed
+//     000 §3(d)), since the limit at t = 0 is sum_j phi(-j) P_j;
 //   - at the centre c of phi's support, [first, last] / (m - 1), shifted by integers, from
 //     the integer values through the refinement equation (c is a multiple of 1/(2(m-1)),
 //     reached after a few steps whenever m^r c is an integer).
@@ -24,8 +24,8 @@ struct BasisSamples {
   std::vector<double> at_centre;
 };
 
-// Throws subdiv::Error (naming `scheme`) when the system has no solution summing to one
-// (the scheme does not converge) or when c cannot be reached in a few steps.
+// Throws subdiv::Error (naming `scheme`) when the scheme has no limit mask (1 is not the
+// simple dominant eigenvalue) or when c cannot be reached in a few steps.
 BasisSamples sample_basis(const CurveMask& mask, const std::string& scheme);
 
 }  // namespace subdiv

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <map>
+#include <unordered_map>
 
 #include "framework/analysis/curve_basis.h"
 #include "framework/curve/curve_refine.h"
@@ -22,7 +23,7 @@ constexpr long kUnknown = LONG_MIN;
 using Row = std::map<Index, double>;  // a limit row while it is assembled (rows are short)
 
 void check_stationary(const CurveScheme& scheme, const CurveMask& mask) {
-  const CurveMask next = curve_mask(scheme, 1);
+  const CurveMask next = trimmed(curve_mask(scheme, 1));
   if (next.first != mask.first || next.coefficients != mask.coefficients)
     throw Error(fmt::format("curve scheme '{}' changes its rules from level to level; limit points (and so "
                             "progressive interpolation) need a stationary scheme",
@@ -70,54 +71,53 @@ bool in_uniform_part(const std::vector<long>& u, long p, long reach) {
   return true;
 }
 
+// x S: a row over a step's child points carried back to its parent points.
+std::vector<double> carry_back(const std::vector<double>& x, const StencilTable& S) {
+  std::vector<double> y(size_t(S.source_count), 0.0);
+  for (Index r = 0; r < S.row_count(); ++r)
+    if (x[size_t(r)] != 0.0)
+      for (Index e = S.offsets[r]; e < S.offsets[r + 1]; ++e) y[size_t(S.indices[e])] += x[size_t(r)] * S.weights[e];
+  return y;
+}
+
 // The limit rows of the window's vertices `targets` (0-based in the window `g`, an open
 // polyline), from a deep enough refinement of the window.
 std::map<long, Row> window_rows(const CurveScheme& scheme, const BasisSamples& phi, std::span<const Index> g,
                                 const std::vector<long>& targets, long reach) {
   const long n = long(g.size());
-  CurveLevel window;
-  window.vertex_count = Index(n);
-  for (long i = 0; i < n; ++i) window.vertices.push_back(Index(i));
-  window.offsets.push_back(Index(n));
-  window.closed.push_back(0);
-  const long m = scheme.arity;
+  CurveLevel level;  // the window as a polyline of its own, points 0 .. n-1
+  level.vertex_count = Index(n);
+  for (long i = 0; i < n; ++i) level.vertices.push_back(Index(i));
+  level.offsets.push_back(Index(n));
+  level.closed.push_back(0);
+  std::vector<long> u(level.vertices.begin(), level.vertices.end());  // uniform indices of the level's points
+  std::vector<StencilTable> stencils;
   std::map<long, Row> rows;
   std::vector<long> pending = targets;
-  CurveHierarchy h{{window}, {}, {}};
-  std::vector<std::vector<long>> u{std::vector<long>(size_t(n))};
-  for (long i = 0; i < n; ++i) u[0][size_t(i)] = i;
   long scale = 1;  // m^level
-  for (int level = 1; level <= kMaxWindowLevels && !pending.empty() && h.levels.back().vertex_count < kMaxWindowPoints;
-       ++level) {
-    CurveStep step = refine_curve_step(h.levels.back(), evaluate_curve_rules(scheme, level - 1), scheme.name);
-    u.push_back(uniform_indices(u.back(), step.origins, m));
-    h.levels.push_back(std::move(step.child));
-    h.stencils.push_back(std::move(step.stencils));
-    scale *= m;
+  while (!pending.empty() && int(stencils.size()) < kMaxWindowLevels && level.vertex_count < kMaxWindowPoints) {
+    CurveStep step = refine_curve_step(level, evaluate_curve_rules(scheme, int(stencils.size())), scheme.name);
+    u = uniform_indices(u, step.origins, scheme.arity);
+    level = std::move(step.child);
+    stencils.push_back(std::move(step.stencils));
+    scale *= scheme.arity;
+    std::unordered_map<long, long> point_of;  // uniform index -> point
+    for (size_t q = 0; q < u.size(); ++q)
+      if (u[q] != kUnknown) point_of.emplace(u[q], long(q));
     std::vector<long> still;
     for (long j : pending) {
       // The point at j's centre, parameter j + c, has uniform index (j + c) m^level.
       const double at = (double(j) + phi.centre) * double(scale);
-      const long target = std::lround(at);
-      long p = -1;
-      if (std::abs(at - double(target)) < 1e-9)
-        for (size_t q = 0; q < u.back().size(); ++q)
-          if (u.back()[q] == target) p = long(q);
-      if (p < 0 || !in_uniform_part(u.back(), p, reach)) {
+      const auto found = std::abs(at - std::round(at)) < 1e-9 ? point_of.find(std::lround(at)) : point_of.end();
+      if (found == point_of.end() || !in_uniform_part(u, found->second, reach)) {
         still.push_back(j);
         continue;
       }
-      // The uniform limit row at level `level`, carried back to the window's vertices.
-      std::vector<double> x(u.back().size(), 0.0);
-      for (size_t i = 0; i < phi.at_integers.size(); ++i) x[size_t(p - (phi.integers_first + long(i)))] += phi.at_integers[i];
-      for (int l = level - 1; l >= 0; --l) {
-        const StencilTable& S = h.stencils[size_t(l)];
-        std::vector<double> y(size_t(S.source_count), 0.0);
-        for (Index r = 0; r < S.row_count(); ++r)
-          if (x[size_t(r)] != 0.0)
-            for (Index e = S.offsets[r]; e < S.offsets[r + 1]; ++e) y[size_t(S.indices[e])] += x[size_t(r)] * S.weights[e];
-        x = std::move(y);
-      }
+      // The uniform limit row at this level, carried back to the window's vertices.
+      std::vector<double> x(u.size(), 0.0);
+      for (size_t i = 0; i < phi.at_integers.size(); ++i)
+        x[size_t(found->second - (phi.integers_first + long(i)))] += phi.at_integers[i];
+      for (size_t l = stencils.size(); l-- > 0;) x = carry_back(x, stencils[l]);
       Row& row = rows[j];
       for (long i = 0; i < n; ++i)
         if (x[size_t(i)] != 0.0) row[g[size_t(i)]] += x[size_t(i)];
@@ -127,13 +127,13 @@ std::map<long, Row> window_rows(const CurveScheme& scheme, const BasisSamples& p
   if (!pending.empty())
     throw Error(fmt::format("curve scheme '{}': the limit point of vertex {} near the end of an open polyline "
                             "was not found after refining a window of the polyline {} levels",
-                            scheme.name, g[size_t(pending.front())], h.levels.size() - 1));
+                            scheme.name, g[size_t(pending.front())], stencils.size()));
   return rows;
 }
 
 // A point on several polylines (where they meet) must get the same limit from each.
-void set_row(std::vector<Row>& rows, std::vector<std::uint8_t>& done, Index v, Row row, const std::string& scheme) {
-  if (done[size_t(v)]) {
+void set_row(std::vector<Row>& rows, Index v, Row row, const std::string& scheme) {
+  if (!rows[size_t(v)].empty()) {
     double gap = 0;
     for (const auto& [index, weight] : row) gap = std::max(gap, std::abs(rows[size_t(v)][index] - weight));
     for (const auto& [index, weight] : rows[size_t(v)]) gap = std::max(gap, std::abs(row[index] - weight));
@@ -143,7 +143,6 @@ void set_row(std::vector<Row>& rows, std::vector<std::uint8_t>& done, Index v, R
                               scheme, v));
   }
   rows[size_t(v)] = std::move(row);
-  done[size_t(v)] = 1;
 }
 
 void append(StencilTable& table, const Row& row) {
@@ -165,13 +164,12 @@ StencilTable curve_limit_stencils(const CurveScheme& scheme, const CurveLevel& l
   const long width = long(mask.coefficients.size());
   const long reach = 3 * width + 2, near_end = 2 * width + 2;
 
-  std::vector<Row> rows(size_t(level.vertex_count));
-  std::vector<std::uint8_t> done(size_t(level.vertex_count), 0);
+  std::vector<Row> rows(size_t(level.vertex_count));  // empty: on no polyline
   for (Index p = 0; p < level.polyline_count(); ++p) {
     const auto g = level.polyline(p);
     const long n = long(g.size());
     if (level.is_closed(p)) {
-      for (long j = 0; j < n; ++j) set_row(rows, done, g[size_t(j)], uniform_row(phi, g, j, true), scheme.name);
+      for (long j = 0; j < n; ++j) set_row(rows, g[size_t(j)], uniform_row(phi, g, j, true), scheme.name);
       continue;
     }
     if (!ends_keep_end_points(rules))
@@ -183,27 +181,29 @@ StencilTable curve_limit_stencils(const CurveScheme& scheme, const CurveLevel& l
     std::vector<long> near_start, near_finish;
     for (long j = 0; j < n; ++j) {
       const Index v = g[size_t(j)];
-      if (j == 0 || j == n - 1) set_row(rows, done, v, {{v, 1.0}}, scheme.name);
-      else if (j >= near_end && n - 1 - j >= near_end) set_row(rows, done, v, uniform_row(phi, g, j, false), scheme.name);
+      if (j == 0 || j == n - 1) set_row(rows, v, {{v, 1.0}}, scheme.name);
+      else if (j >= near_end && n - 1 - j >= near_end) set_row(rows, v, uniform_row(phi, g, j, false), scheme.name);
       else (j < n / 2 ? near_start : near_finish).push_back(j);
     }
+    // The rows of vertices `near` from a window of `length` points starting at `from`.
+    auto from_window = [&](long from, long length, const std::vector<long>& near) {
+      std::vector<long> local;
+      for (long j : near) local.push_back(j - from);
+      for (auto& [j, row] : window_rows(scheme, phi, g.subspan(size_t(from), size_t(length)), local, reach))
+        set_row(rows, g[size_t(j + from)], std::move(row), scheme.name);
+    };
     const long span = near_end + reach + width;  // window length: the near points and room beyond them
     if (n <= 2 * span) {
-      std::vector<long> all = near_start;
-      all.insert(all.end(), near_finish.begin(), near_finish.end());
-      for (auto& [j, row] : window_rows(scheme, phi, g, all, reach)) set_row(rows, done, g[size_t(j)], row, scheme.name);
-      continue;
+      near_start.insert(near_start.end(), near_finish.begin(), near_finish.end());
+      from_window(0, n, near_start);
+    } else {
+      from_window(0, span, near_start);
+      from_window(n - span, span, near_finish);
     }
-    for (auto& [j, row] : window_rows(scheme, phi, g.subspan(0, size_t(span)), near_start, reach))
-      set_row(rows, done, g[size_t(j)], row, scheme.name);
-    std::vector<long> local;
-    for (long j : near_finish) local.push_back(j - (n - span));
-    for (auto& [j, row] : window_rows(scheme, phi, g.subspan(size_t(n - span)), local, reach))
-      set_row(rows, done, g[size_t(j + n - span)], row, scheme.name);
   }
   StencilTable table;
   table.source_count = level.vertex_count;
-  for (Index v = 0; v < level.vertex_count; ++v) append(table, done[size_t(v)] ? rows[size_t(v)] : Row{{v, 1.0}});
+  for (Index v = 0; v < level.vertex_count; ++v) append(table, rows[size_t(v)].empty() ? Row{{v, 1.0}} : rows[size_t(v)]);
   return table;
 }
 
