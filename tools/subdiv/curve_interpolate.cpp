@@ -8,6 +8,7 @@
 #include "framework/curve/curve_refine.h"
 #include "framework/interpolation/curve_limits.h"
 #include "framework/interpolation/progressive.h"
+#include "framework/io/formats.h"
 #include "framework/io/mesh_read.h"
 #include "framework/io/mesh_write.h"
 #include "framework/io/vtk_output.h"
@@ -22,18 +23,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string extension_of(const fs::path& p) {
-  std::string ext = p.extension().string();
-  for (char& c : ext) c = char(std::tolower(c));
-  return ext;
-}
-
 void check_outputs(const CurveInterpolateRequest& a) {
-  const std::string ext = extension_of(a.output);
+  const std::string ext = lowercase_extension(a.output);
   if (ext != ".obj" && ext != ".vtp")
     throw Error(fmt::format("-o '{}': polylines are written as .obj ('l' lines) or .vtp; .off, .ply and .stl hold "
                             "no polylines", a.output));
-  if (!a.refined.empty() && extension_of(a.refined) != ".pvd" && extension_of(a.refined) != ".vtp")
+  if (!a.refined.empty() && lowercase_extension(a.refined) != ".pvd" && lowercase_extension(a.refined) != ".vtp")
     throw Error(fmt::format("--refined '{}': use .pvd (every level) or .vtp (the finest level)", a.refined));
 }
 
@@ -59,7 +54,7 @@ void write_refined(const fs::path& out, const CurveScheme& scheme, const CurveLe
     residual.values.push_back(std::sqrt(d2));
   }
   out_levels.front().point_data = {std::move(interpolated), std::move(residual)};
-  if (extension_of(out) == ".vtp") write_vtp(out, out_levels.back());
+  if (lowercase_extension(out) == ".vtp") write_vtp(out, out_levels.back());
   else write_pvd(out, out_levels);
 }
 
@@ -79,7 +74,6 @@ std::string describe_limit(const StencilTable& limit, const CurveLevel& level) {
 void interpolate_curves_command(const CurveInterpolateRequest& a) {
   check_output_path(a.output);
   check_outputs(a);
-  if (a.max_iterations < 0) throw Error("--max-iter must be 0 or more");
   const auto scheme = load_curve(a.scheme, a.params);
   const MeshData mesh = read_mesh(a.mesh);
   const CurveLevel base = curve_level_from_mesh(mesh, a.mesh);
@@ -95,7 +89,7 @@ void interpolate_curves_command(const CurveInterpolateRequest& a) {
 
   progress.say(fmt::format("writing {}", a.output));
   const MeshData control = mesh_from_curve_level(base, r.control);
-  if (extension_of(a.output) == ".vtp") {
+  if (lowercase_extension(a.output) == ".vtp") {
     const OutputLevel level{&control, 0, {}, {}};
     write_vtp(a.output, level);
   } else {

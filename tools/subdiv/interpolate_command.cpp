@@ -46,12 +46,6 @@ struct InterpolateArgs {
   bool verbose = false, quiet = false;
 };
 
-std::string lower_extension(const fs::path& p) {
-  std::string ext = p.extension().string();
-  for (char& c : ext) c = char(std::tolower(c));
-  return ext;
-}
-
 void check_directory(const fs::path& out) {
   const fs::path dir = out.parent_path();
   if (!dir.empty() && !fs::is_directory(dir))
@@ -180,7 +174,7 @@ void write_refined(const fs::path& out, const Hierarchy& h, const std::vector<do
     level.point_data = {std::move(base), std::move(role), std::move(target_distance), std::move(limit_residual)};
     levels.push_back(std::move(level));
   }
-  if (lower_extension(out) == ".vtp") write_vtp(out, levels.back());
+  if (lowercase_extension(out) == ".vtp") write_vtp(out, levels.back());
   else write_pvd(out, levels);
 }
 
@@ -188,7 +182,7 @@ void run(const InterpolateArgs& a) {
   check_output_path(a.output);
   check_directory(a.output);
   if (!a.refined.empty()) {
-    const std::string ext = lower_extension(a.refined);
+    const std::string ext = lowercase_extension(a.refined);
     if (ext != ".pvd" && ext != ".vtp")
       throw Error(fmt::format("--refined '{}': use .pvd (every level, for ParaView's time slider) or .vtp (the "
                               "finest level); they carry the per-point residuals", a.refined));
