@@ -90,12 +90,13 @@ std::vector<SchemeRun> as_runs(const std::vector<CompositeLimit::Run>& prefix) {
 void apply_lambda(Hierarchy& h, const Scheme& first, const LimitSelectionOptions& o) {
   if (o.lambda.empty()) return;
   if (h.stencils.empty())
-    throw Error("a per-vertex lambda needs seed 001's shape step first: --scheme catmull-clark-shape:1,catmull-clark");
+    throw Error("a per-vertex lambda needs seed 001's shape step first: a sequence whose first scheme, run for one "
+                "level, has a parameter 'lambda' (SHAPE:1,REPEAT)");
   const auto params = first.parameter_values();
   const auto it = params.find("lambda");
   if (it == params.end())
     throw Error(fmt::format("lambda per vertex: the first scheme '{}' has no parameter 'lambda'; seed 001's method "
-                            "is --scheme catmull-clark-shape:1,catmull-clark", first.name));
+                            "starts with a shape step that has one (a sequence SHAPE:1,REPEAT)", first.name));
   const Level& base = h.levels[0];
   check_shape_lambda(o.lambda, base.vertex_count, "lambda");
   const double own = it->second;
@@ -103,7 +104,7 @@ void apply_lambda(Hierarchy& h, const Scheme& first, const LimitSelectionOptions
   for (Index r = 0; r < h.stencils[0].row_count(); ++r)
     if (auto why = row_mismatch(h.stencils[0], r, same, r); !why.empty())
       throw Error(fmt::format("lambda per vertex: the first scheme '{}' is not seed 001's shape step (new vertex {}: "
-                              "{}); use --scheme catmull-clark-shape:1,catmull-clark", first.name, r, why));
+                              "{}); start the sequence with a shape step, SHAPE:1,REPEAT", first.name, r, why));
   h.stencils[0] = shape_first_step(base, h.origins[0], h.stencils[0], o.lambda, o.features);
 }
 
@@ -277,8 +278,8 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
       prefix_levels += seq.runs[i].levels;
     }
   if (!o.lambda.empty() && (prefix.empty() || prefix.front().levels != 1))
-    throw Error("a per-vertex lambda is seed 001's: the first run must be one level of its shape step, "
-                "--scheme catmull-clark-shape:1,catmull-clark");
+    throw Error("a per-vertex lambda is seed 001's: the first run must be one level of its shape step "
+                "(a sequence SHAPE:1,REPEAT)");
   const Scheme& tail = *seq.schemes.back();
 
   // The tail's mask on the level after the prefix, checked there.

@@ -36,14 +36,14 @@ struct SplitterTable {
     tri.engine_propagates_tags = true;
     SplitterInfo sqrt3;
     sqrt3.name = "sqrt3";
-    sqrt3.description = "Kobbelt's sqrt(3) split: face points, old edges flipped; boundaries trisected every second step";
+    sqrt3.description = "sqrt(3) split (Kobbelt 2000): face points, old edges flipped; boundaries trisected every second step";
     sqrt3.split = split_sqrt3;
     sqrt3.rule_elements = {O::Vertex, O::Face};
     sqrt3.required_face_size = 3;
     sqrt3.curve_arity = 3;
-    SplitterInfo dual = builtin("dual", "Doo-Sabin dual split: one new point per face corner", split_dual, {O::Corner});
+    SplitterInfo dual = builtin("dual", "dual split (Doo and Sabin 1978): one new point per face corner", split_dual, {O::Corner});
     dual.primal = false;
-    SplitterInfo mid = builtin("mid-edge", "Peters-Reif mid-edge split: one new point per edge", split_mid_edge, {O::Edge});
+    SplitterInfo mid = builtin("mid-edge", "mid-edge split (Peters and Reif 1997): one new point per edge", split_mid_edge, {O::Edge});
     mid.primal = false;
     for (SplitterInfo* info : {&quad, &tri, &sqrt3, &dual, &mid}) builtins.push_back(std::move(*info));
   }
