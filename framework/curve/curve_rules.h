@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/analysis/curve_mask.h"
+#include "framework/analysis/curve/curve_mask.h"
 #include "framework/scheme/scheme.h"
 
 namespace subdiv {

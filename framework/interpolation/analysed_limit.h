@@ -1,5 +1,5 @@
 #pragma once
-// Limit masks from the scheme's own eigen-analysis (framework/analysis/limit_evaluation.h,
+// Limit masks from the scheme's own eigen-analysis (framework/analysis/surface/limit_evaluation.h,
 // seed 000 §5 proposition 1: the left eigenvector of eigenvalue 1 of the local subdivision
 // matrix), for any linear scheme with vertex points: the shipped ones, JSON schemes users
 // write and plugin schemes alike. Darts, creases, corners and semi-sharp features are
@@ -11,7 +11,7 @@
 // make the interpolation converge to the wrong surface.
 #include <memory>
 
-#include "framework/analysis/limit_evaluation.h"
+#include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/interpolation/limit_evaluator.h"
 
 namespace subdiv {

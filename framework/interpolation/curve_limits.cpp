@@ -6,7 +6,7 @@
 #include <map>
 #include <unordered_map>
 
-#include "framework/analysis/curve_basis.h"
+#include "framework/analysis/curve/curve_basis.h"
 #include "framework/curve/curve_refine.h"
 #include "framework/curve/curve_rules.h"
 #include "framework/util/error.h"

@@ -18,7 +18,7 @@
 //   - Ends "uniform" (open polylines shrink) and other end rules have no limit point at the
 //     end vertices: refused with a message, as are non-stationary schemes.
 #include "framework/curve/curve_level.h"
-#include "framework/rules/rule_set.h"
+#include "framework/scheme/curve_scheme.h"
 #include "framework/stencil/stencil_table.h"
 
 namespace subdiv {

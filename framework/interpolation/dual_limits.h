@@ -16,7 +16,7 @@
 #include <string>
 
 #include "framework/interpolation/limit_evaluator.h"
-#include "framework/scheme/refiner.h"
+#include "framework/engine/refiner.h"
 
 namespace subdiv {
 

@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "framework/interpolation/limit_evaluator.h"
-#include "framework/scheme/refiner.h"
+#include "framework/engine/refiner.h"
 #include "framework/scheme/scheme_sequence.h"
 
 namespace subdiv {

@@ -31,7 +31,7 @@
 #include "framework/interpolation/limit_evaluator.h"
 #include "framework/interpolation/progressive.h"
 #include "framework/refine/child_origins.h"
-#include "framework/rules/feature_context.h"
+#include "framework/features/feature_context.h"
 
 namespace subdiv {
 

@@ -1,25 +1,36 @@
 #include "framework/io/formats.h"
 
 #include <algorithm>
-#include <array>
+#include <vector>
 #include <cctype>
 #include <string_view>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "framework/io/format_registry.h"
+
 namespace subdiv {
 namespace {
 
-constexpr std::array<std::string_view, 7> kInputs = {".obj", ".off", ".ply", ".stl",
-                                                     ".om",  ".vtp", ".vtk"};
-constexpr std::array<std::string_view, 6> kOutputs = {".obj", ".off", ".ply",
-                                                      ".stl", ".vtp", ".pvd"};
+// What io/ reads and writes itself; more come from format_registry.h (VTK's).
+const std::vector<std::string> kBuiltInInputs = {".obj", ".off", ".ply", ".stl", ".om"};
+const std::vector<std::string> kBuiltInOutputs = {".obj", ".off", ".ply", ".stl"};
+// Formats of SubdivKit's VTK file IO, named in the message when it is not linked in.
+const std::vector<std::string> kVtkFormats = {".vtp", ".vtk", ".pvd"};
 
-template <size_t N>
-bool contains(const std::array<std::string_view, N>& list, const std::string& ext) {
+bool contains(const std::vector<std::string>& list, const std::string& ext) {
   return std::find(list.begin(), list.end(), ext) != list.end();
 }
+
+std::vector<std::string> joined(std::vector<std::string> a, const std::vector<std::string>& b) {
+  for (const auto& x : b)
+    if (!contains(a, x)) a.push_back(x);
+  return a;
+}
+
+std::vector<std::string> inputs() { return joined(kBuiltInInputs, registered_input_extensions()); }
+std::vector<std::string> outputs() { return joined(kBuiltInOutputs, registered_output_extensions()); }
 
 }  // namespace
 
@@ -30,12 +41,14 @@ std::string lowercase_extension(const std::filesystem::path& file) {
   return ext;
 }
 
-bool is_supported_input(const std::filesystem::path& file) {
-  return contains(kInputs, lowercase_extension(file));
-}
+bool is_supported_input(const std::filesystem::path& file) { return contains(inputs(), lowercase_extension(file)); }
 
-bool is_supported_output(const std::filesystem::path& file) {
-  return contains(kOutputs, lowercase_extension(file));
+bool is_supported_output(const std::filesystem::path& file) { return contains(outputs(), lowercase_extension(file)); }
+
+std::string unsupported_format_hint(const std::filesystem::path& file) {
+  if (!contains(kVtkFormats, lowercase_extension(file))) return "";
+  return "; VTK formats need SubdivKit's VTK file IO, which this program was built without (link SubdivKit::vtkio "
+         "and call register_vtk_formats())";
 }
 
 bool is_vtk_output(const std::filesystem::path& file) {
@@ -43,7 +56,7 @@ bool is_vtk_output(const std::filesystem::path& file) {
   return ext == ".vtp" || ext == ".pvd";
 }
 
-std::string supported_input_formats() { return fmt::format("{}", fmt::join(kInputs, ", ")); }
-std::string supported_output_formats() { return fmt::format("{}", fmt::join(kOutputs, ", ")); }
+std::string supported_input_formats() { return fmt::format("{}", fmt::join(inputs(), ", ")); }
+std::string supported_output_formats() { return fmt::format("{}", fmt::join(outputs(), ", ")); }
 
 }  // namespace subdiv

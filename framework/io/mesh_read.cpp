@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "framework/io/format_registry.h"
 #include "framework/io/formats.h"
 #include "framework/io/mesh_validate.h"
 #include "framework/io/readers.h"
@@ -12,16 +13,17 @@ namespace subdiv {
 MeshData read_mesh(const std::filesystem::path& file) {
   const std::string ext = lowercase_extension(file);
   if (!is_supported_input(file))
-    throw Error(fmt::format("cannot read '{}': unknown mesh format '{}'; supported: {}",
+    throw Error(fmt::format("cannot read '{}': unknown mesh format '{}'; supported: {}{}",
                             file.string(), ext.empty() ? "(no extension)" : ext,
-                            supported_input_formats()));
-  MeshData mesh = ext == ".obj"   ? io_detail::read_obj(file)
-                  : ext == ".off" ? io_detail::read_off(file)
-                  : ext == ".ply" ? io_detail::read_ply(file)
-                  : ext == ".vtp" || ext == ".vtk" ? io_detail::read_vtk_polydata(file)
-                                                   : io_detail::read_with_openmesh(file);
-  // The text readers already check with line numbers; this catches the rest (VTK and
-  // OpenMesh data) with the same rules.
+                            supported_input_formats(), unsupported_format_hint(file)));
+  const MeshFileReader* registered = registered_mesh_reader(ext);
+  MeshData mesh = registered        ? (*registered)(file)
+                  : ext == ".obj"   ? io_detail::read_obj(file)
+                  : ext == ".off"   ? io_detail::read_off(file)
+                  : ext == ".ply"   ? io_detail::read_ply(file)
+                                    : io_detail::read_with_openmesh(file);
+  // The text readers already check with line numbers; this catches the rest (registered
+  // formats' and OpenMesh data) with the same rules.
   validate_mesh_data(mesh, file.string());
   return mesh;
 }

@@ -4,7 +4,7 @@
 
 #include "framework/io/formats.h"
 #include "framework/io/mesh_validate.h"
-#include "framework/io/vtk_output.h"
+#include "framework/io/format_registry.h"
 #include "framework/io/writers.h"
 #include "framework/util/atomic_file.h"
 #include "framework/util/error.h"
@@ -15,13 +15,10 @@ namespace fs = std::filesystem;
 void write_mesh(const fs::path& file, const MeshData& mesh) {
   const std::string ext = lowercase_extension(file);
   if (!is_supported_output(file))
-    throw Error(fmt::format("cannot write '{}': unknown mesh format '{}'; supported: {}",
+    throw Error(fmt::format("cannot write '{}': unknown mesh format '{}'; supported: {}{}",
                             file.string(), ext.empty() ? "(no extension)" : ext,
-                            supported_output_formats()));
-  OutputLevel level;
-  level.mesh = &mesh;
-  if (ext == ".vtp") return write_vtp(file, level);
-  if (ext == ".pvd") return write_pvd(file, std::span(&level, 1));
+                            supported_output_formats(), unsupported_format_hint(file)));
+  if (const MeshFileWriter* registered = registered_mesh_writer(ext)) return (*registered)(file, mesh);
   validate_mesh_data(mesh, fmt::format("cannot write '{}'", file.string()));
   const auto writer = ext == ".obj"   ? io_detail::write_obj
                       : ext == ".off" ? io_detail::write_off

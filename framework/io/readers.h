@@ -12,6 +12,5 @@ MeshData read_obj(const std::filesystem::path& file);
 MeshData read_off(const std::filesystem::path& file);
 MeshData read_ply(const std::filesystem::path& file);
 MeshData read_with_openmesh(const std::filesystem::path& file);  // .stl, .om
-MeshData read_vtk_polydata(const std::filesystem::path& file);   // .vtp, .vtk
 
 }  // namespace subdiv::io_detail

@@ -2,7 +2,7 @@
 // Mesh lines for plugin rules on quad meshes: the straight lines of a regular grid,
 // continued through regular vertices and along boundaries and creases. Rules such as
 // four-point schemes on quad meshes (Kobbelt 1996) walk them.
-#include "framework/rules/feature_context.h"
+#include "framework/features/feature_context.h"
 #include "framework/topology/level.h"
 
 namespace subdiv {

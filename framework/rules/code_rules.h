@@ -10,10 +10,11 @@
 #include <span>
 
 #include "framework/refine/child_origins.h"
-#include "framework/rules/feature_context.h"
-#include "framework/rules/row_builder.h"
+#include "framework/features/feature_context.h"
 
 namespace subdiv {
+
+class RowBuilder;  // rules/row_builder.h, internal
 
 // What a code rule sees: the parent level, its feature contexts (boundaries, creases,
 // corners after the --boundary options) and the level being refined (0 for the input).
@@ -29,7 +30,7 @@ struct CodeRuleInput {
 class RowWriter {
 public:
   RowWriter(RowBuilder& row, double scale) : row_(row), scale_(scale) {}
-  void add(Index parent_vertex, double weight) { row_.add(parent_vertex, scale_ * weight); }
+  void add(Index parent_vertex, double weight);  // out of line: RowBuilder stays internal
 
 private:
   RowBuilder& row_;

@@ -1,7 +1,7 @@
 #pragma once
 // Applying one compiled rule to one parent element: gathers the points of each role in
 // canonical order and adds them, with their weights, to a stencil row.
-#include "framework/rules/feature_context.h"
+#include "framework/features/feature_context.h"
 #include "framework/rules/row_builder.h"
 #include "framework/rules/weight_tables.h"
 

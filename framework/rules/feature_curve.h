@@ -2,7 +2,7 @@
 // Points along a feature curve (boundary or crease polyline) for curve-scheme rules.
 // Where the curve ends before the mask does, missing points are extrapolated linearly
 // from the last two (P_{m+d} = P_m + d (P_m - P_{m-1})), which keeps linear precision.
-#include "framework/rules/feature_context.h"
+#include "framework/features/feature_context.h"
 #include "framework/rules/row_builder.h"
 
 namespace subdiv {

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "framework/refine/child_origins.h"
-#include "framework/rules/feature_context.h"
+#include "framework/features/feature_context.h"
 #include "framework/rules/row_builder.h"
 #include "framework/rules/step_rows.h"
 #include "framework/rules/weight_tables.h"

@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "framework/features/context.h"
+
 namespace subdiv {
 
 using Index = std::int32_t;
@@ -18,14 +20,6 @@ using Index = std::int32_t;
 // The parent element a new point belongs to; numbered like OriginKind.
 enum class Element : std::uint8_t { Vertex = 0, Edge = 1, Face = 2, Corner = 3 };
 constexpr int kElementCount = 4;
-
-// Vertex contexts follow DeRose et al. 1998 / OpenSubdiv: by the number of sharp incident
-// edges (0 smooth, 1 dart, 2 crease, more: corner) or a sharp vertex (corner). An edge is
-// Smooth or Crease (sharp or boundary). Faces are always Smooth. A face corner (dual
-// schemes) is Smooth, Crease (one of its two face edges is sharp) or Corner (both are, or
-// its vertex is a corner).
-enum class Context : std::uint8_t { Smooth = 0, Dart = 1, Crease = 2, Corner = 3 };
-constexpr int kContextCount = 4;
 
 enum class Role : std::uint8_t {
   Self,      // vertex rule: the vertex itself

@@ -15,7 +15,7 @@
 #include "framework/refine/child_origins.h"
 #include "framework/rules/code_rules.h"
 #include "framework/rules/element_rules.h"
-#include "framework/rules/feature_context.h"
+#include "framework/features/feature_context.h"
 #include "framework/rules/weight_tables.h"
 
 namespace subdiv {

@@ -60,15 +60,17 @@ CompiledRule compile_rule(const Rule& rule, FormulaSet& formulas, int max_n, int
   return out;
 }
 
-// The curve scheme's rule r as a Role::Curve term, evaluated at this level.
-CompiledRule curve_rule(const CurveScheme& curve, int r, int level) {
-  FormulaSet formulas(curve.parameters, curve.definitions);
+}  // namespace
+
+CompiledRule compile_curve_rule(const CurveRuleText& rule, const FormulaScope& scope, int level) {
+  static const std::vector<NamedFormula> none;
+  FormulaSet formulas(scope.parameters, scope.definitions ? *scope.definitions : none);
   CompiledTerm term;
   term.role = Role::Curve;
-  term.where = fmt::format("{}: rules[{}]", curve.path, r);
-  term.curve_start = curve.starts[r];
-  for (size_t t = 0; t < curve.weights[r].size(); ++t) {
-    const int id = formulas.add(curve.weights[r][t], fmt::format("{}[{}]", term.where, t));
+  term.where = rule.where;
+  term.curve_start = rule.start;
+  for (size_t t = 0; t < rule.weights.size(); ++t) {
+    const int id = formulas.add(rule.weights[t], fmt::format("{}[{}]", term.where, t));
     term.curve_weights.push_back(formulas.evaluate(id, {0, 0, double(t), double(level)}));
   }
   CompiledRule out;
@@ -90,39 +92,19 @@ CompiledRule stay_rule() {
   return out;
 }
 
-}  // namespace
-
-WeightTables prepare_weight_tables(const StepRules& step, const FormulaScope& scope, int max_n, int max_k, int level) {
+WeightTables compile_rule_table(const RuleTable& rules, const FormulaScope& scope, int max_n, int max_k, int level) {
   WeightTables tables;
   tables.max_n = max_n, tables.max_k = max_k;
   static const std::vector<NamedFormula> none;
   FormulaSet formulas(scope.parameters, scope.definitions ? *scope.definitions : none);
   for (int e = 0; e < kElementCount; ++e)
     for (int c = 0; c < kContextCount; ++c)
-      if (step.rules[e][c]) tables.rules[e][c] = compile_rule(*step.rules[e][c], formulas, max_n, max_k, level);
+      if (rules[e][c]) tables.rules[e][c] = compile_rule(*rules[e][c], formulas, max_n, max_k, level);
 
   for (Element e : {Element::Vertex, Element::Corner}) {
     auto& r = tables.rules[int(e)];
     if (!r[int(Context::Dart)].defined) r[int(Context::Dart)] = r[int(Context::Smooth)];
     if (!r[int(Context::Corner)].defined) r[int(Context::Corner)] = stay_rule();
-  }
-  // A split that names its own curve follows it; otherwise the scheme's curve, in one-step
-  // schemes only.
-  const CurveScheme* curve = step.curve ? step.curve.get() : step.curve_rules_apply ? scope.curve : nullptr;
-  if (curve) {
-    tables.curve_arity = curve->arity;
-    for (int r = 0; r < curve->arity; ++r) tables.curve_rules.push_back(curve_rule(*curve, r, level));
-  }
-  // In schemes with smoothing passes the curve scheme describes the result of the whole
-  // level: the split's features follow its own (linear) smooth rules unless it names its own
-  // curve, and a smoothing pass without a stated crease rule leaves feature vertices where
-  // they are.
-  if (!step.curve_rules_apply && !step.curve) {
-    for (Element e : {Element::Vertex, Element::Edge, Element::Corner}) {
-      auto& r = tables.rules[int(e)];
-      if (r[int(Context::Crease)].defined) continue;
-      r[int(Context::Crease)] = step.is_split || e != Element::Vertex ? r[int(Context::Smooth)] : stay_rule();
-    }
   }
   return tables;
 }

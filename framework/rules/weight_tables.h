@@ -6,8 +6,10 @@
 #include <string>
 #include <vector>
 
+#include <map>
+
+#include "framework/rules/formula.h"
 #include "framework/rules/rule.h"
-#include "framework/rules/rule_set.h"
 
 namespace subdiv {
 
@@ -45,15 +47,28 @@ struct WeightTables {
   const CompiledRule& rule(Element e, Context c) const { return rules[int(e)][int(c)]; }
 };
 
-// What formulas may refer to besides n, k, j, l, n0, n1: the scheme's numeric parameters
-// and named definitions; and the curve scheme for boundaries and creases (may be null).
+// What formulas may refer to besides n, k, j, l, n0, n1: numeric parameters and named
+// definitions.
 struct FormulaScope {
   std::map<std::string, double> parameters;
   const std::vector<NamedFormula>* definitions = nullptr;
-  const CurveScheme* curve = nullptr;
 };
 
-// max_n: the largest valence, max_k: the largest face size on the level; level: l.
-WeightTables prepare_weight_tables(const StepRules& step, const FormulaScope& scope, int max_n, int max_k, int level);
+// A rule table's formulas evaluated for every n < max_n + 1 (the largest valence) and
+// k < max_k + 1 (the largest face size) at level l, with the engine's defaults for
+// vertices and face corners: dart = smooth, corner = the point stays.
+WeightTables compile_rule_table(const RuleTable& rules, const FormulaScope& scope, int max_n, int max_k, int level);
+
+// Rule r of a curve scheme of arity `starts.size()`: new point m*i + r = sum_t w[r][t] *
+// old point (i + start[r] + t), as a Role::Curve rule; `where` names it in messages.
+struct CurveRuleText {
+  int start = 0;
+  std::vector<std::string> weights;
+  std::string where;
+};
+CompiledRule compile_curve_rule(const CurveRuleText& rule, const FormulaScope& scope, int level);
+
+// The rule that keeps a point where it is.
+CompiledRule stay_rule();
 
 }  // namespace subdiv

@@ -13,11 +13,11 @@
 #include "framework/rules/code_rules.h"
 #include "framework/rules/formula.h"
 #include "framework/rules/rule.h"
-#include "framework/rules/rule_set.h"
-#include "framework/rules/weight_tables.h"
+#include "framework/scheme/curve_scheme.h"
+#include "framework/scheme/parameter_spec.h"
+#include "framework/scheme/step_rules.h"
 
 namespace subdiv {
-
 
 struct Scheme {
   std::string name, description, path;
@@ -37,8 +37,6 @@ struct Scheme {
 
   // Numeric parameter values by name, as formulas see them.
   std::map<std::string, double> parameter_values() const;
-  // Parameters, definitions and curve, for compiling this scheme's rules.
-  FormulaScope formula_scope() const { return {parameter_values(), &definitions, curve.get()}; }
 };
 
 }  // namespace subdiv

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/scheme/refiner.h"
+#include "framework/scheme/scheme_run.h"
 #include "framework/scheme/scheme_registry.h"
 
 namespace subdiv {

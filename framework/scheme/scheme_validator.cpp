@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "framework/rules/weight_tables.h"
+#include "framework/scheme/step_tables.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_loader.h"
 #include "framework/scheme/scheme_registry.h"
@@ -115,7 +115,7 @@ int natural_face_size(const Scheme& s) {
 
 void check_step(const Scheme& scheme, const StepRules& step, const std::string& text, int lo, int hi,
                 ValidationReport& report) {
-  const WeightTables tables = prepare_weight_tables(step, scheme.formula_scope(), hi, 8, 0);
+  const WeightTables tables = step_weight_tables(scheme, step, hi, 8, 0);
   const int face_size = natural_face_size(scheme);
   for (int e = 0; e < kElementCount; ++e)
     for (int c = 0; c < kContextCount; ++c) {

@@ -44,7 +44,7 @@
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefinerFactory.h>
 
-#include "framework/scheme/refiner.h"
+#include "framework/engine/refiner.h"
 
 namespace subdiv_test {
 

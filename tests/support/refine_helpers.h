@@ -1,6 +1,6 @@
 #pragma once
 // One-call refinement for tests.
-#include "framework/scheme/refiner.h"
+#include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "support/test_meshes.h"

@@ -6,7 +6,7 @@
 #include <oneapi/tbb/global_control.h>
 
 #include "bench_common.h"
-#include "framework/scheme/refiner.h"
+#include "framework/engine/refiner.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/topology/level.h"
 #include "framework/util/bulk_memory.h"

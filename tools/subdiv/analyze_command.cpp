@@ -7,11 +7,12 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
-#include "framework/analysis/curve_scheme_analysis.h"
-#include "framework/analysis/limit_evaluation.h"
-#include "framework/analysis/surface_analysis.h"
-#include "framework/analysis/surface_report.h"
-#include "framework/io/vtk_output.h"
+#include "curve_report.h"
+#include "surface_report.h"
+#include "framework/analysis/curve/curve_scheme_analysis.h"
+#include "framework/analysis/surface/limit_evaluation.h"
+#include "framework/analysis/surface/surface_analysis.h"
+#include "framework/io/vtk/vtk_output.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/atomic_file.h"
@@ -108,8 +109,8 @@ void write_characteristic_maps(const std::filesystem::path& dir, const std::stri
 void run_curve(const AnalyzeArgs& a) {
   const auto curve = load_curve_scheme_named(a.scheme, overrides_of(a.params));
   const CurveSchemeAnalysis r = analyse_curve_scheme(*curve, a.level);
-  fmt::print("{}", r.summary());
-  if (!a.json_file.empty()) write_text(a.json_file, r.to_json().dump(2) + "\n");
+  fmt::print("{}", curve_scheme_summary(r));
+  if (!a.json_file.empty()) write_text(a.json_file, curve_scheme_json(r).dump(2) + "\n");
   if (!a.svg_file.empty())
     write_text(a.svg_file, eigenvalue_svg(r.analysis.eigen.eigenvalues,
                                           fmt::format("{}: local subdivision matrix eigenvalues", curve->name)));
@@ -160,7 +161,7 @@ void run_surface(const AnalyzeArgs& a) {
     for (const auto* list : {&interior, &boundary})
       for (const auto& r : *list) {
         fmt::print("\n");
-        for (const auto& line : r.summary_lines()) fmt::print("  {}\n", line);
+        for (const auto& line : surface_summary_lines(r)) fmt::print("  {}\n", line);
       }
   } else {
     fmt::print("\ncurvature (seed 000 §3, lambda_1^2 against |lambda_3|):\n");
@@ -175,7 +176,7 @@ void run_surface(const AnalyzeArgs& a) {
     nlohmann::json j = surface_report_json(interior);
     if (!boundary.empty()) {
       j["boundary_analyses"] = nlohmann::json::array();
-      for (const auto& r : boundary) j["boundary_analyses"].push_back(r.to_json());
+      for (const auto& r : boundary) j["boundary_analyses"].push_back(surface_json(r));
     }
     j["stationary"] = !level_dependent;
     j["level"] = a.level;

@@ -11,7 +11,7 @@
 #include "framework/io/formats.h"
 #include "framework/io/mesh_read.h"
 #include "framework/io/mesh_write.h"
-#include "framework/io/vtk_output.h"
+#include "framework/io/vtk/vtk_output.h"
 #include "framework/util/error.h"
 #include "curve_refine.h"
 #include "interpolate_common.h"

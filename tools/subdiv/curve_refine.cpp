@@ -12,7 +12,7 @@
 #include "framework/curve/curve_refine.h"
 #include "framework/io/mesh_read.h"
 #include "framework/io/mesh_write.h"
-#include "framework/io/vtk_output.h"
+#include "framework/io/vtk/vtk_output.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
 #include "progress.h"

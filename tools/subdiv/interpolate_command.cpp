@@ -21,7 +21,7 @@
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
 #include "framework/io/mesh_write.h"
-#include "framework/io/vtk_output.h"
+#include "framework/io/vtk/vtk_output.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/scheme/scheme_sequence.h"

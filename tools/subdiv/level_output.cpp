@@ -4,7 +4,7 @@
 
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_write.h"
-#include "framework/io/vtk_output.h"
+#include "framework/io/vtk/vtk_output.h"
 #include "framework/util/error.h"
 
 namespace subdiv::cli {

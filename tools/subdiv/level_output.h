@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <vector>
 
-#include "framework/io/vtk_output.h"
-#include "framework/scheme/refiner.h"
+#include "framework/io/vtk/vtk_output.h"
+#include "framework/engine/refiner.h"
 
 namespace subdiv::cli {
 

@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "framework/io/vtk/vtk_formats.h"
 #include "framework/util/error.h"
 
 int main(int argc, char** argv) {
+  subdiv::register_vtk_formats();  // before the help texts list the formats
   CLI::App app{"subdiv - define, run and analyse subdivision schemes (SubdivKit " SUBDIV_CLI_VERSION ")"};
   app.set_version_flag("--version", "SubdivKit " SUBDIV_CLI_VERSION);
   app.require_subcommand(1);

@@ -6,7 +6,7 @@
 #include "framework/io/formats.h"
 #include "framework/io/mesh_read.h"
 #include "framework/io/mesh_write.h"
-#include "framework/io/vtk_output.h"
+#include "framework/io/vtk/vtk_output.h"
 #include "framework/plugin/polyline_refine.h"
 #include "framework/util/error.h"
 #include "progress.h"

@@ -7,11 +7,11 @@
 #include "commands.h"
 #include "framework/io/feature_angle.h"
 #include "framework/io/feature_file.h"
-#include "framework/analysis/limit_evaluation.h"
+#include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/io/formats.h"
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
-#include "framework/scheme/refiner.h"
+#include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/scheme/scheme_sequence.h"
@@ -103,7 +103,7 @@ void run(const RefineArgs& a) {
   std::vector<DataArray> limit_data;
   if (a.limit) {
     // The finest level's vertices moved to their limit points, with limit normals
-    // (framework/analysis/limit_evaluation.h); the scheme that would refine it next decides.
+    // (framework/analysis/surface/limit_evaluation.h); the scheme that would refine it next decides.
     progress.say("limit positions and normals");
     LimitOptions lo;
     lo.boundary = options.boundary, lo.crease_method = options.crease_method;

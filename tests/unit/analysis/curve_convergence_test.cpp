@@ -1,6 +1,6 @@
 // Convergence and smoothness verdicts of analyse_curve against known mathematics
 // (seed 000 §7, seed 003, Dyn-Levin 2002, Hassan et al. 2002).
-#include "framework/analysis/curve_analysis.h"
+#include "framework/analysis/curve/curve_analysis.h"
 #include "framework/util/error.h"
 #include "unit/analysis/curve_test_masks.h"
 

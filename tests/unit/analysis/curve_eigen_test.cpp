@@ -1,7 +1,7 @@
 // Local subdivision matrices and their eigen-analysis (seed 000 §3).
-#include "framework/analysis/curve_analysis.h"
-#include "framework/analysis/curve_eigen.h"
-#include "framework/analysis/curve_local_matrix.h"
+#include "framework/analysis/curve/curve_analysis.h"
+#include "framework/analysis/curve/curve_eigen.h"
+#include "framework/analysis/curve/curve_local_matrix.h"
 #include "unit/analysis/curve_test_masks.h"
 
 #include <doctest/doctest.h>

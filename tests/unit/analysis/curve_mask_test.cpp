@@ -1,5 +1,5 @@
 // Mask <-> rules conversion and its index convention (curve_mask.h).
-#include "framework/analysis/curve_mask.h"
+#include "framework/analysis/curve/curve_mask.h"
 #include "framework/util/error.h"
 #include "unit/analysis/curve_test_masks.h"
 

@@ -1,5 +1,6 @@
 // The text summary and the JSON form of a curve analysis.
-#include "framework/analysis/curve_analysis.h"
+#include "framework/analysis/curve/curve_analysis.h"
+#include "curve_report.h"
 #include "unit/analysis/curve_test_masks.h"
 
 #include <doctest/doctest.h>
@@ -16,7 +17,7 @@ bool has_line(const std::string& text, const std::string& line) {
 }  // namespace
 
 TEST_CASE("curve report: cubic B-spline summary states one fact per line") {
-  const std::string s = analyse_curve(test::cubic_bspline_mask()).summary();
+  const std::string s = curve_summary(analyse_curve(test::cubic_bspline_mask()));
   CAPTURE(s);
   CHECK(has_line(s, "a(1) = 2 ok"));
   CHECK(has_line(s, "a(-1) = 0 ok"));
@@ -28,24 +29,24 @@ TEST_CASE("curve report: cubic B-spline summary states one fact per line") {
 }
 
 TEST_CASE("curve report: 4-point summary and a failing mask") {
-  const std::string s = analyse_curve(test::four_point_mask(1.0 / 16)).summary();
+  const std::string s = curve_summary(analyse_curve(test::four_point_mask(1.0 / 16)));
   CAPTURE(s);
   CHECK(has_line(s, "C1 proven (L=2); C2 not proven up to L=10"));
   CHECK(has_line(s, "eigenvalues: 1, 0.5, 0.25, 0.25, 0.125, -0.0625, -0.0625"));
 
-  const std::string bad = analyse_curve(CurveMask{2, 0, {0.6, 0.5, 0.6, 0.3}}).summary();
+  const std::string bad = curve_summary(analyse_curve(CurveMask{2, 0, {0.6, 0.5, 0.6, 0.3}}));
   CAPTURE(bad);
   CHECK(has_line(bad, "a(-1) = 0.4 FAILS (must be 0)"));
   CHECK(has_line(bad, "not convergent: necessary condition a(-1) = 0 fails"));
 
-  const std::string linear = analyse_curve(test::four_point_mask(0.0)).summary();
+  const std::string linear = curve_summary(analyse_curve(test::four_point_mask(0.0)));
   CAPTURE(linear);
   CHECK(has_line(linear, "C0 proven (L=1); C1 not proven up to L=10"));
   CHECK(has_line(linear, "C2: symbol has no factor (1+z)^3 (relative remainder 1)"));
 }
 
 TEST_CASE("curve report: ternary summary names the roots of unity") {
-  const std::string s = analyse_curve(test::ternary_linear_mask()).summary();
+  const std::string s = curve_summary(analyse_curve(test::ternary_linear_mask()));
   CAPTURE(s);
   CHECK(has_line(s, "w = exp(2 pi i/3)"));
   CHECK(has_line(s, "a(1) = 3 ok"));
@@ -55,7 +56,7 @@ TEST_CASE("curve report: ternary summary names the roots of unity") {
 }
 
 TEST_CASE("curve report: JSON carries the verdicts and the numbers") {
-  const nlohmann::json j = analyse_curve(test::four_point_mask(1.0 / 16)).to_json();
+  const nlohmann::json j = curve_json(analyse_curve(test::four_point_mask(1.0 / 16)));
   CHECK(j["arity"] == 2);
   CHECK(j["mask"]["first"] == -3);
   CHECK(j["convergent"] == true);
@@ -77,7 +78,7 @@ TEST_CASE("curve report: JSON carries the verdicts and the numbers") {
 TEST_CASE("curve report: unproven convergence and a degenerate mask") {
   CurveAnalysisOptions options;
   options.contractivity.max_power = 1;  // w = 0.3 needs L = 2 (norm 1.1 at L = 1)
-  const std::string s = analyse_curve(test::four_point_mask(0.3), options).summary();
+  const std::string s = curve_summary(analyse_curve(test::four_point_mask(0.3), options));
   CAPTURE(s);
   CHECK(has_line(s, "C0: difference scheme not contractive up to L=1 (last norm 1.1)"));
   CHECK(has_line(s, "convergence not proven up to L=1"));
@@ -87,5 +88,5 @@ TEST_CASE("curve report: unproven convergence and a degenerate mask") {
   CHECK(d.local_matrix.size() == 0);
   CHECK(d.eigen.eigenvalues.empty());
   CHECK_FALSE(d.necessary_conditions_hold);
-  CHECK(has_line(d.summary(), "no invariant neighbourhood (degenerate mask)"));
+  CHECK(has_line(curve_summary(d), "no invariant neighbourhood (degenerate mask)"));
 }

@@ -4,13 +4,14 @@
 // scheme are the seed's.
 #include <doctest/doctest.h>
 
-#include "framework/analysis/curve_analysis.h"
-#include "framework/analysis/curve_mask.h"
+#include "framework/analysis/curve/curve_analysis.h"
+#include "framework/analysis/curve/curve_mask.h"
 #include "framework/util/error.h"
 
 #include <nlohmann/json.hpp>
 
-#include "framework/analysis/curve_scheme_analysis.h"
+#include "framework/analysis/curve/curve_scheme_analysis.h"
+#include "curve_report.h"
 #include "unit/analysis/surface_test_support.h"
 
 using namespace subdiv;
@@ -58,7 +59,7 @@ TEST_CASE("curve schemes from JSON: a user file with a(-1) != 0 does not converg
   const CurveAnalysis r = analyse_curve(mask_from_rules(2, {-1, 0}, {{0.3, 0.9}, {0.4, 0.4}}));
   CHECK_FALSE(r.necessary_conditions_hold);
   CHECK_FALSE(r.convergent);
-  CHECK(r.summary().find("not convergent: necessary condition a(-1) = 0 fails") != std::string::npos);
+  CHECK(curve_summary(r).find("not convergent: necessary condition a(-1) = 0 fails") != std::string::npos);
 }
 
 TEST_CASE("curve schemes from JSON: level-dependent weights are flagged non-stationary") {
@@ -72,6 +73,6 @@ TEST_CASE("curve schemes from JSON: level-dependent weights are flagged non-stat
   CHECK(r0.analysis.mask.at(-3) == doctest::Approx(-1.0 / 16));
   const auto r1 = analyse_curve_scheme(*curve, 1);
   CHECK(r1.analysis.mask.at(-3) == doctest::Approx(-1.0 / 32));
-  CHECK(r0.summary().find("non-stationary") != std::string::npos);
-  CHECK(r0.to_json()["stationary"] == false);
+  CHECK(curve_scheme_summary(r0).find("non-stationary") != std::string::npos);
+  CHECK(curve_scheme_json(r0)["stationary"] == false);
 }

@@ -1,6 +1,6 @@
 // Laurent polynomials and the norms of iterated difference schemes (seed 000 §7).
-#include "framework/analysis/curve_contractivity.h"
-#include "framework/analysis/curve_laurent.h"
+#include "framework/analysis/curve/curve_contractivity.h"
+#include "framework/analysis/curve/curve_laurent.h"
 #include "unit/analysis/curve_test_masks.h"
 
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 // Masks of known curve schemes for the analysis tests, built from their rules as the
 // literature writes them (seed 000 §2, §3; seed 003; Hassan et al. 2002).
-#include "framework/analysis/curve_mask.h"
+#include "framework/analysis/curve/curve_mask.h"
 
 #include <cmath>
 #include <vector>

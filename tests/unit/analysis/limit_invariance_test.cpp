@@ -3,8 +3,8 @@
 // the same surface). Closed meshes, boundaries, creases, irregular control meshes.
 #include <doctest/doctest.h>
 
-#include "framework/analysis/limit_evaluation.h"
-#include "framework/scheme/refiner.h"
+#include "framework/analysis/surface/limit_evaluation.h"
+#include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "support/test_meshes.h"

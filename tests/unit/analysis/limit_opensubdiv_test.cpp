@@ -14,8 +14,8 @@
 
 #ifdef SUBDIV_HAVE_OPENSUBDIV
 
-#include "framework/analysis/limit_evaluation.h"
-#include "framework/scheme/refiner.h"
+#include "framework/analysis/surface/limit_evaluation.h"
+#include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "support/test_meshes.h"

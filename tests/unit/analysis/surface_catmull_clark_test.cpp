@@ -5,9 +5,9 @@
 // (P_{i-1} + 4 P_i + P_{i+1})/6 (seed 000 §3(d)).
 #include <doctest/doctest.h>
 
-#include "framework/analysis/limit_evaluation.h"
-#include "framework/analysis/surface_analysis.h"
-#include "framework/scheme/refiner.h"
+#include "framework/analysis/surface/limit_evaluation.h"
+#include "framework/analysis/surface/surface_analysis.h"
+#include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "support/test_meshes.h"

@@ -6,7 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "framework/analysis/surface_analysis.h"
+#include "framework/analysis/surface/surface_analysis.h"
+#include "surface_report.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "unit/analysis/surface_test_support.h"
@@ -81,7 +82,7 @@ TEST_CASE("a report for every shipped surface scheme, without errors") {
       CAPTURE(a.verdict);
       CHECK(a.error.empty());
       CHECK_FALSE(a.verdict.empty());
-      CHECK(a.to_json()["verdict"] == a.verdict);
+      CHECK(surface_json(a)["verdict"] == a.verdict);
     }
   }
 }

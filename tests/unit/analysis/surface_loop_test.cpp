@@ -7,8 +7,8 @@
 // n = 3, 1/2 for n > 3). The seed states it with Loop's beta_bar = 3/8 + (3/8 + cos/4)^2.
 #include <doctest/doctest.h>
 
-#include "framework/analysis/limit_evaluation.h"
-#include "framework/analysis/surface_analysis.h"
+#include "framework/analysis/surface/limit_evaluation.h"
+#include "framework/analysis/surface/surface_analysis.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "unit/analysis/surface_test_support.h"

@@ -10,9 +10,9 @@
 
 #include <algorithm>
 
-#include "framework/analysis/limit_evaluation.h"
-#include "framework/analysis/surface_analysis.h"
-#include "framework/scheme/refiner.h"
+#include "framework/analysis/surface/limit_evaluation.h"
+#include "framework/analysis/surface/surface_analysis.h"
+#include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "support/test_meshes.h"

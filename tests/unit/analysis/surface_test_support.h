@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/analysis/local_patch.h"
+#include "framework/analysis/surface/local_patch.h"
 #include "framework/topology/level.h"
 
 namespace subdiv::test {

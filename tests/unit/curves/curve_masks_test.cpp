@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "curve_test_support.h"
-#include "framework/analysis/curve_analysis.h"
+#include "framework/analysis/curve/curve_analysis.h"
 #include "framework/curve/curve_rules.h"
 
 using namespace subdiv;

@@ -7,6 +7,7 @@
 #include "framework/rules/row_plans.h"
 #include "framework/rules/step_rows.h"
 #include "framework/scheme/scheme.h"
+#include "framework/scheme/step_tables.h"
 #include "support/refine_helpers.h"
 
 using namespace subdiv;
@@ -69,7 +70,7 @@ namespace {
 int learn_and_replay(const Level& L) {
   const auto scheme = load_scheme("catmull-clark");
   const SplitResult split = split_quad(L);
-  const WeightTables tables = prepare_weight_tables(scheme->steps.front(), scheme->formula_scope(), 8, 4, 0);
+  const WeightTables tables = step_weight_tables(*scheme, scheme->steps.front(), 8, 4, 0);
   const FeatureContexts features = classify_features(L, {});
   RowPlanStore store(L, split.origins, tables, features, false);
   REQUIRE(store.enabled[int(Element::Vertex)]);
@@ -113,7 +114,7 @@ TEST_CASE("row plans are learnt once per shape and replayed everywhere else") {
   const auto scheme = load_scheme("catmull-clark");
   const Level L = torus(8, 6).level();
   const SplitResult split = split_quad(L);
-  const WeightTables tables = prepare_weight_tables(scheme->steps.front(), scheme->formula_scope(), 8, 4, 0);
+  const WeightTables tables = step_weight_tables(*scheme, scheme->steps.front(), 8, 4, 0);
   const RowPlanStore code(L, split.origins, tables, classify_features(L, {}), true);
   CHECK_FALSE(code.enabled[int(Element::Vertex)]);
 }
@@ -123,7 +124,7 @@ TEST_CASE("row plans stay off where a rule reads past the element's neighbourhoo
   const auto scheme = load_scheme("butterfly");
   const Level L = torus(6, 5, true).level();
   const SplitResult split = split_triangle(L);
-  const WeightTables tables = prepare_weight_tables(scheme->steps.front(), scheme->formula_scope(), 6, 3, 0);
+  const WeightTables tables = step_weight_tables(*scheme, scheme->steps.front(), 6, 3, 0);
   const RowPlanStore store(L, split.origins, tables, classify_features(L, {}), false);
   CHECK_FALSE(store.enabled[int(Element::Edge)]);
 }
@@ -135,7 +136,7 @@ namespace {
 int generic_rows_with_sources(const std::string& name, const Level& L) {
   const auto scheme = load_scheme(name);
   const SplitResult split = L.face_size(0) == 3 ? split_triangle(L) : split_quad(L);
-  const WeightTables tables = prepare_weight_tables(scheme->steps.front(), scheme->formula_scope(), 8, 4, 0);
+  const WeightTables tables = step_weight_tables(*scheme, scheme->steps.front(), 8, 4, 0);
   const FeatureContexts features = classify_features(L, {});
   const StepContext step{L, split.origins, tables, features};
   const std::vector<ChildGroup> groups = group_children(step);

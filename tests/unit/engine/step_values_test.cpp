@@ -1,4 +1,4 @@
-// step_values (framework/scheme/refiner.h, rules/step_evaluator.h) carries values to the
+// step_values (framework/engine/refiner.h, rules/step_evaluator.h) carries values to the
 // next level straight from the rules, with no stencil table. It must give what the tables
 // give, for any channel count, with or without row plans, on meshes with boundaries,
 // features and tiny closed rings: the same bits where the rules use no new points (the

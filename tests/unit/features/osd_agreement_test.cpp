@@ -13,8 +13,8 @@
 #include <fmt/format.h>
 
 #include "framework/io/mesh_level.h"
-#include "framework/rules/feature_context.h"
-#include "framework/scheme/refiner.h"
+#include "framework/features/feature_context.h"
+#include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 

@@ -10,7 +10,7 @@
 // corner under edges-and-corners) stays where it is. Darts and semi-sharp features have
 // no closed form here; the evaluators refuse them with the vertex named.
 #include "framework/interpolation/limit_evaluator.h"
-#include "framework/rules/feature_context.h"
+#include "framework/features/feature_context.h"
 
 namespace subdiv::test {
 

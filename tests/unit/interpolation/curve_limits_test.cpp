@@ -4,7 +4,7 @@
 // the cubic B-spline with the ends' linear extrapolation, and deep refinement.
 #include <doctest/doctest.h>
 
-#include "framework/analysis/curve_basis.h"
+#include "framework/analysis/curve/curve_basis.h"
 #include "framework/curve/curve_rules.h"
 #include "framework/interpolation/curve_limits.h"
 #include "framework/interpolation/progressive.h"

@@ -11,7 +11,7 @@
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUtilities.h>
 
-#include "framework/io/vtk_output.h"
+#include "framework/io/vtk/vtk_output.h"
 #include "io_test_support.h"
 
 using namespace subdiv;

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "framework/plugin/polyline_refine.h"
-#include "framework/scheme/refiner.h"
+#include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"

@@ -5,8 +5,8 @@
 #include <fstream>
 #include <string>
 
-#include "framework/analysis/curve_analysis.h"
-#include "framework/scheme/refiner.h"
+#include "framework/analysis/curve/curve_analysis.h"
+#include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/scheme/scheme_validator.h"

@@ -7,7 +7,7 @@
 #include "framework/plugin/plugin_loader.h"
 #include "framework/refine/splitter.h"
 #include "framework/rules/rule.h"
-#include "framework/scheme/refiner.h"
+#include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"

@@ -4,7 +4,7 @@
 #include <fstream>
 
 #include "framework/refine/splitter.h"
-#include "framework/scheme/refiner.h"
+#include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"

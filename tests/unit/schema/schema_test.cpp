@@ -27,7 +27,7 @@
 #include "framework/io/mesh_read.h"
 #include "framework/refine/splitter.h"
 #include "framework/rules/rule.h"
-#include "framework/scheme/refiner.h"
+#include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_loader.h"
 #include "framework/scheme/scheme_registry.h"

@@ -1,0 +1,757 @@
+#include "framework/analysis/surface/surface_analysis.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+
+#include "framework/engine/refiner.h"
+#include "framework/scheme/scheme.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+using Matrix = Eigen::MatrixXd;
+using Vector = Eigen::VectorXd;
+using Complex = std::complex<double>;
+
+const double kPi = std::acos(-1.0);
+constexpr double kWeightZero = 1e-14;   // stencil weights below this are no dependence
+constexpr double kRealTolerance = 1e-7; // relative: imaginary parts below this are real
+constexpr double kClusterTolerance = 1e-5;  // relative: equal eigenvalues (defective ones carry ~eps^(1/k))
+constexpr double kCurvatureTie = 1e-6;  // lambda_1^2 against |lambda_3| (defective ones carry ~1e-8)
+constexpr double kNullTolerance = 1e-9; // singular values below this (relative) span a null space
+constexpr double kMaskZero = 1e-11;     // relative: mask entries below this are zero
+
+// ---------------------------------------------------------------------------------------------
+// Refinement of a patch and the correspondence of its centre.
+
+StencilTable composed_table(const Hierarchy& h) {
+  StencilTable t = h.stencils.front();
+  for (size_t i = 1; i < h.stencils.size(); ++i) t = compose(t, h.stencils[i]);
+  return t;
+}
+
+Index child_of_vertex(const ChildOrigins& o, Index v) {
+  for (size_t c = 0; c < o.kind.size(); ++c)
+    if (o.kind[c] == OriginKind::Vertex && o.parent[c] == v) return Index(c);
+  return kNone;
+}
+
+void centroid(const Level& L, const std::vector<double>& xy, Index f, double& x, double& y) {
+  x = y = 0;
+  for (Index v : L.face(f)) x += xy[size_t(2 * v)], y += xy[size_t(2 * v + 1)];
+  x /= L.face_size(f), y /= L.face_size(f);
+}
+
+// The child face at the same place as face f: same size, made inside f, nearest centroid.
+Index child_of_face(const Level& parent, const std::vector<double>& pxy, const ChildOrigins& o, const Level& child,
+                    const std::vector<double>& cxy, Index f) {
+  double px, py;
+  centroid(parent, pxy, f, px, py);
+  Index best = kNone;
+  double best_d = 0;
+  for (Index g = 0; g < child.face_count(); ++g) {
+    if (o.parent_face[size_t(g)] != f || child.face_size(g) != parent.face_size(f)) continue;
+    double x, y;
+    centroid(child, cxy, g, x, y);
+    const double d = std::hypot(x - px, y - py);
+    if (best == kNone || d < best_d) best = g, best_d = d;
+  }
+  return best;
+}
+
+// Positions (2 channels) of every level of a hierarchy.
+std::vector<std::vector<double>> level_positions(const Hierarchy& h, const std::vector<double>& xy, int channels) {
+  std::vector<std::vector<double>> out{xy};
+  for (const auto& t : h.stencils) out.push_back(t.apply(out.back(), channels));
+  return out;
+}
+
+// The centre after all steps of the hierarchy (kNone if it has none).
+Index follow_centre(const Hierarchy& h, const std::vector<std::vector<double>>& xy, CentreKind kind, Index c,
+                    int channels) {
+  for (size_t s = 0; s < h.origins.size() && c != kNone; ++s) {
+    if (kind == CentreKind::Vertex) {
+      c = child_of_vertex(h.origins[s], c);
+      continue;
+    }
+    // child_of_face works on 2D positions; take x, y of each point.
+    auto planar = [&](const std::vector<double>& p) {
+      if (channels == 2) return p;
+      std::vector<double> q(p.size() / size_t(channels) * 2);
+      for (size_t i = 0; i < q.size() / 2; ++i) q[2 * i] = p[size_t(channels) * i], q[2 * i + 1] = p[size_t(channels) * i + 1];
+      return q;
+    };
+    c = child_of_face(h.levels[s], planar(xy[s]), h.origins[s], h.levels[s + 1], planar(xy[s + 1]), c);
+  }
+  return c;
+}
+
+double angle_between(double ax, double ay, double bx, double by) {
+  double d = std::atan2(by, bx) - std::atan2(ay, ax);
+  while (d <= -kPi) d += 2 * kPi;
+  while (d > kPi) d -= 2 * kPi;
+  return d;
+}
+
+struct Axis {
+  double cx = 0, cy = 0;  // centre point
+  double ax = 0, ay = 0;  // direction of the first labelled neighbour (or corner)
+};
+
+Axis axis_of(const Level& L, const std::vector<double>& xy, CentreKind kind, Index c, int start, Index* first) {
+  Axis a;
+  Index p;
+  if (kind == CentreKind::Vertex) {
+    a.cx = xy[size_t(2 * c)], a.cy = xy[size_t(2 * c + 1)];
+    p = L.other_end(L.ring_edges(c)[size_t(start)], c);
+  } else {
+    centroid(L, xy, c, a.cx, a.cy);
+    p = L.face(c)[size_t(start)];
+  }
+  a.ax = xy[size_t(2 * p)] - a.cx, a.ay = xy[size_t(2 * p + 1)] - a.cy;
+  if (first) *first = p;
+  return a;
+}
+
+// The ring edge (or corner) of the child centre nearest in direction to the parent's start.
+int aligned_start(const Axis& parent, const Level& C, const std::vector<double>& cxy, CentreKind kind, Index cc,
+                  double* offset) {
+  const int count = kind == CentreKind::Vertex ? C.valence(cc) : C.face_size(cc);
+  int best = 0;
+  double best_angle = 1e9;
+  for (int i = 0; i < count; ++i) {
+    const Axis a = axis_of(C, cxy, kind, cc, i, nullptr);
+    const double d = std::abs(angle_between(parent.ax, parent.ay, a.ax, a.ay));
+    if (d < best_angle) best = i, best_angle = d;
+  }
+  if (offset) *offset = best_angle;
+  return best;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Invariant neighbourhoods.
+
+bool maps_to_itself(const StencilTable& t, const Labelling& parent, const Labelling& child, int k) {
+  const int cp = parent.count_within(k), cc = child.count_within(k);
+  if (cp != cc || cp == 0) return false;
+  for (int i = 0; i < cc; ++i) {
+    const Index row = child.vertices[size_t(i)];
+    for (Index e = t.offsets[size_t(row)]; e < t.offsets[size_t(row) + 1]; ++e) {
+      if (std::abs(t.weights[size_t(e)]) <= kWeightZero) continue;
+      const Index label = parent.label_of[size_t(t.indices[size_t(e)])];
+      if (label == kNone || label >= cp) return false;
+    }
+  }
+  return true;
+}
+
+Matrix local_matrix(const StencilTable& t, const Labelling& parent, const Labelling& child, int m) {
+  Matrix s = Matrix::Zero(m, m);
+  for (int i = 0; i < m; ++i) {
+    const Index row = child.vertices[size_t(i)];
+    for (Index e = t.offsets[size_t(row)]; e < t.offsets[size_t(row) + 1]; ++e) {
+      const Index label = parent.label_of[size_t(t.indices[size_t(e)])];
+      if (label != kNone && label < m) s(i, label) += t.weights[size_t(e)];
+    }
+  }
+  return s;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Eigen structure.
+
+std::vector<Complex> sorted_eigenvalues(const Matrix& s) {
+  Eigen::EigenSolver<Matrix> solver(s, false);
+  if (solver.info() != Eigen::Success) throw Error("the eigenvalue solver did not converge on the local subdivision matrix");
+  std::vector<Complex> v(solver.eigenvalues().data(), solver.eigenvalues().data() + solver.eigenvalues().size());
+  for (auto& z : v)
+    if (std::abs(z.imag()) < 1e-13) z = Complex(z.real(), 0.0);
+  std::stable_sort(v.begin(), v.end(), [](Complex x, Complex y) {
+    const double ax = std::abs(x), ay = std::abs(y);
+    if (std::abs(ax - ay) > 1e-12 * std::max(1.0, ax)) return ax > ay;
+    if (std::abs(x.real() - y.real()) > 1e-12) return x.real() > y.real();
+    return x.imag() > y.imag();
+  });
+  return v;
+}
+
+// Orthonormal basis of the null space of a (columns), by SVD.
+Matrix null_space(const Matrix& a) {
+  Eigen::BDCSVD<Matrix> svd(a, Eigen::ComputeFullV);
+  const Vector& sigma = svd.singularValues();
+  const Eigen::Index n = a.cols();
+  const double scale = std::max(1.0, sigma.size() ? sigma(0) : 0.0);
+  Eigen::Index dim = 0;
+  for (Eigen::Index i = sigma.size() - 1; i >= 0 && sigma(i) <= kNullTolerance * scale; --i) ++dim;
+  dim += n - sigma.size();
+  return svd.matrixV().rightCols(dim);
+}
+
+Matrix left_null(const Matrix& s, double lambda) {
+  return null_space(s.transpose() - lambda * Matrix::Identity(s.rows(), s.cols()));
+}
+Matrix right_null(const Matrix& s, double lambda) {
+  return null_space(s - lambda * Matrix::Identity(s.rows(), s.cols()));
+}
+
+bool is_real(Complex z) { return std::abs(z.imag()) <= kRealTolerance * std::max(1.0, std::abs(z)); }
+bool ties(double a, double b, double tol);
+bool ties(double a, double b, double tol) { return std::abs(a - b) <= tol * std::max(1.0, std::abs(a)); }
+
+std::string number(double x) { return fmt::format("{:.6g}", std::abs(x) < 5e-13 ? 0.0 : x); }
+std::string complex_text(Complex z) {
+  if (std::abs(z.imag()) < 1e-7 * std::max(1.0, std::abs(z))) return number(z.real());
+  return fmt::format("{}{}{}i", number(z.real()), z.imag() < 0 ? "-" : "+", number(std::abs(z.imag())));
+}
+
+std::string curvature_text(const std::vector<Complex>& ev, double l1) {
+  const double sq = l1 * l1;
+  const double l3 = ev.size() > 3 ? std::abs(ev[3]) : 0.0;
+  int mult = 0;
+  for (size_t i = 3; i < ev.size(); ++i)
+    if (ties(std::abs(ev[i]), sq, kCurvatureTie)) ++mult;
+  if (ties(sq, l3, kCurvatureTie)) {
+    const double next = ev.size() > 3 + size_t(mult) ? std::abs(ev[3 + size_t(mult)]) : 0.0;
+    if (mult == 3 && next < sq)
+      return "lambda_1^2 = lambda_3 = lambda_4 = lambda_5 > |lambda_6|: curvature bounded, can be continuous "
+             "(seed 000 §3 case 3: C2 possible)";
+    return fmt::format("lambda_1^2 = |lambda_3| ({} eigenvalue{} of that modulus): curvature bounded but may "
+                       "split (seed 000 §3 case 2)",
+                       mult, mult == 1 ? "" : "s");
+  }
+  if (sq < l3) return "lambda_1^2 < |lambda_3|: curvature unbounded (seed 000 §3 case 1: C1 at best)";
+  return "lambda_1^2 > |lambda_3|: curvature tends to zero (seed 000 §3 case 4: a flat spot)";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Characteristic map.
+
+double split_scale(SplitKind k) {
+  switch (k) {
+    case SplitKind::Sqrt3: return std::sqrt(3.0);
+    case SplitKind::MidEdge: return std::sqrt(2.0);
+    default: return 2.0;
+  }
+}
+
+struct AnalysisRun {
+  const Scheme& scheme;
+  const Patch& patch;
+  const LocalConfig& config;
+  const SurfaceAnalysisOptions& options;
+  RefineOptions refine;
+  int steps = 1;
+  StencilTable table;
+  Labelling parent, child;
+};
+
+void check_characteristic_map(const AnalysisRun& cx, int K, const Matrix& rp, double l1, double l2, bool equal,
+                              SurfaceAnalysis& out) {
+  CharacteristicMap& cm = out.characteristic_map;
+  // A wider invariant ring, so the refined region near the centre is exact.
+  int big = K;
+  while (big < K + 2 && big < cx.options.max_ring && maps_to_itself(cx.table, cx.parent, cx.child, big + 1)) ++big;
+  const int mb = cx.parent.count_within(big);
+  const Matrix sb = local_matrix(cx.table, cx.parent, cx.child, mb);
+  Matrix n1 = right_null(sb, l1);
+  Matrix basis = n1;
+  if (!equal) {
+    const Matrix n2 = right_null(sb, l2);
+    basis.resize(mb, n1.cols() + n2.cols());
+    basis << n1, n2;
+  }
+  const int m = int(rp.rows());
+  Matrix values = Matrix::Zero(mb, 2);
+  values.topRows(m) = rp;
+  if (basis.cols() >= 2) {
+    const Matrix fit = basis.topRows(m).colPivHouseholderQr().solve(rp);
+    if ((basis.topRows(m) * fit - rp).norm() <= 1e-7 * std::max(1.0, rp.norm())) values = basis * fit;
+    else cm.note = "wider eigenvectors did not match; the map uses the analysed ring only";
+  }
+  // Refine a neighbourhood of the centre carrying the eigenvector net.
+  const Patch& p = cx.patch;
+  Extracted e = extract_neighbourhood(p.level, p.centre_kind, p.centre, big + 1);
+  std::vector<double> pos(size_t(3 * e.level.vertex_count), 0.0);
+  for (Index v = 0; v < e.level.vertex_count; ++v) {
+    const Index label = cx.parent.label_of[size_t(e.original[size_t(v)])];
+    if (label != kNone && label < mb) pos[size_t(3 * v)] = values(label, 0), pos[size_t(3 * v + 1)] = values(label, 1);
+  }
+  Index centre = kNone;
+  if (p.centre_kind == CentreKind::Vertex) centre = e.local_of[size_t(p.centre)];
+  else
+    for (size_t f = 0; f < e.face_original.size(); ++f)
+      if (e.face_original[f] == p.centre) centre = Index(f);
+  const double s = split_scale(cx.scheme.split());
+  int T = cx.steps;
+  while (std::pow(s, T) < cx.options.characteristic_scale - 1e-9) T += cx.steps;
+  RefineOptions ro = cx.refine;
+  ro.levels = T;
+  const Hierarchy h = refine(cx.scheme, e.level, ro);
+  const auto positions = level_positions(h, pos, 3);
+  const Index c = follow_centre(h, positions, p.centre_kind, centre, 3);
+  if (c == kNone) {
+    cm.note = "the centre could not be followed through the refinement";
+    return;
+  }
+  const Level& L = h.levels.back();
+  const std::vector<double>& X = positions.back();
+  const int D = std::max(1, int(std::floor(std::pow(s, T) + 1e-9)));
+  const Labelling lab = label_neighbourhood(L, p.centre_kind, c, 0, D);
+  // Faces with every corner within D.
+  std::vector<Index> kept;
+  for (Index f = 0; f < L.face_count(); ++f) {
+    bool inside = true;
+    for (Index v : L.face(f)) {
+      const Index l = lab.label_of[size_t(v)];
+      if (l == kNone) { inside = false; break; }
+    }
+    if (inside) kept.push_back(f);
+  }
+  cm.computed = true;
+  cm.refinement_steps = T;
+  cm.faces = int(kept.size());
+  double total = 0, min_area = 1e300;
+  std::vector<double> areas;
+  for (Index f : kept) {
+    double a = 0;
+    const auto vs = L.face(f);
+    for (size_t i = 0; i < vs.size(); ++i) {
+      const Index u = vs[i], w = vs[(i + 1) % vs.size()];
+      a += X[size_t(3 * u)] * X[size_t(3 * w + 1)] - X[size_t(3 * w)] * X[size_t(3 * u + 1)];
+    }
+    a *= 0.5;
+    areas.push_back(a);
+    total += std::abs(a);
+    min_area = std::min(min_area, a);
+  }
+  // Regular: the Jacobian keeps one sign, so every face has the orientation of the majority
+  // (a map may mirror the patch; the normalisation fixes only two points).
+  const double mean = kept.empty() ? 1.0 : total / double(kept.size());
+  int positive = 0, negative = 0;
+  for (double a : areas) positive += a > 1e-9 * mean, negative += a < -1e-9 * mean;
+  const int sign = positive >= negative ? 1 : -1;
+  cm.folded = int(kept.size()) - (sign > 0 ? positive : negative);
+  double max_area = -1e300;
+  for (double a : areas) max_area = std::max(max_area, a);
+  cm.min_area_ratio = kept.empty() ? 0.0 : (sign > 0 ? min_area : -max_area) / mean;
+  cm.regular = !kept.empty() && cm.folded == 0;
+  // Winding of the region's boundary around the limit point (the origin).
+  if (!out.config.boundary) {
+    std::map<std::pair<Index, Index>, int> directed;
+    for (Index f : kept) {
+      const auto vs = L.face(f);
+      for (size_t i = 0; i < vs.size(); ++i) directed[{vs[i], vs[(i + 1) % vs.size()]}]++;
+    }
+    std::map<Index, Index> next;
+    for (const auto& [edge, count] : directed)
+      if (!directed.count({edge.second, edge.first})) next[edge.first] = edge.second;
+    double turns = 0;
+    std::map<Index, bool> seen;
+    for (const auto& [a0, b0] : next) {
+      if (seen[a0]) continue;
+      Index a = a0;
+      for (size_t guard = 0; guard <= next.size() && !seen[a]; ++guard) {
+        seen[a] = true;
+        const Index b = next[a];
+        turns += angle_between(X[size_t(3 * a)], X[size_t(3 * a + 1)], X[size_t(3 * b)], X[size_t(3 * b + 1)]);
+        a = b;
+      }
+    }
+    cm.winding = int(std::lround(turns / (2 * kPi)));
+    cm.winding_checked = true;
+    cm.injective = cm.regular && std::abs(cm.winding) == 1;
+  } else {
+    cm.injective = cm.regular;
+    cm.note += cm.note.empty() ? "" : "; ";
+    cm.note += "boundary centre: injectivity taken from regularity (the centre lies on the rim)";
+  }
+  // The refined map as a mesh.
+  std::vector<Index> index(size_t(L.vertex_count), kNone);
+  MeshData& mesh = cm.mesh;
+  for (Index f : kept) {
+    for (Index v : L.face(f)) {
+      if (index[size_t(v)] == kNone) {
+        index[size_t(v)] = mesh.vertex_count();
+        mesh.positions.insert(mesh.positions.end(), {X[size_t(3 * v)], X[size_t(3 * v + 1)], 0.0});
+        cm.ring.push_back(lab.distance[size_t(lab.label_of[size_t(v)])]);
+      }
+      mesh.face_vertices.push_back(index[size_t(v)]);
+    }
+    mesh.face_offsets.push_back(Index(mesh.face_vertices.size()));
+  }
+  (void)l2;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+void finish_verdict(SurfaceAnalysis& r) {
+  const std::string where = r.config.centre == CentreKind::Face ? fmt::format("faces of size {}", r.config.valence)
+                            : r.config.boundary || !r.config.sharp.empty() || r.config.corner
+                                ? r.config.describe()
+                                : fmt::format("valence {}", r.config.valence);
+  const bool interior = !r.config.boundary && r.config.sharp.empty() && !r.config.corner;
+  auto ev = [&](size_t i) { return i < r.eigenvalues.size() ? complex_text(r.eigenvalues[i]) : std::string("-"); };
+  r.c1 = false;
+  if (!r.error.empty()) r.verdict = "fails: " + r.error;
+  else if (!r.affine) r.verdict = fmt::format("fails: weights not affine (a row of S sums to 1 {:+.3g})", r.max_row_error);
+  else if (!r.lambda0_one) r.verdict = fmt::format("fails: lambda_0 = 1 is not the simple dominant eigenvalue (lambda_0 = {}, lambda_1 = {})", ev(0), ev(1));
+  else if (!r.subdominant_real) r.verdict = fmt::format("fails: lambda_1, lambda_2 are not real and positive ({}, {})", ev(1), ev(2));
+  else if (interior && !r.subdominant_equal) r.verdict = fmt::format("fails: lambda_1 != lambda_2 ({} vs {})", ev(1), ev(2));
+  else if (!r.subdominant_dominates && r.subdominant_equal)
+    r.verdict = fmt::format("fails: lambda_1 = lambda_2 = |lambda_3| = {}: the subdominant eigenvalue has multiplicity {} (more than 2)",
+                            number(r.lambda1), r.subdominant_multiplicity);
+  else if (!r.subdominant_dominates) r.verdict = fmt::format("fails: |lambda_3| = {} is not below lambda_2 = {}", number(r.lambda3), number(r.lambda2));
+  else if (!r.subdominant_semisimple) r.verdict = "fails: lambda_1 = lambda_2 has one eigenvector only (Jordan block)";
+  else if (r.boundary_collapses)
+    r.verdict = "fails: the boundary's tangent is not in the subdominant pair (interior eigenvalues exceed the boundary "
+                "curve's 1/2; the characteristic map collapses the boundary)";
+  else if (!r.characteristic_map.computed) {
+    r.c1 = false;
+    r.verdict = fmt::format("eigenvalue conditions hold at {}; characteristic map not checked{}", where,
+                            r.characteristic_map.note.empty() ? "" : " (" + r.characteristic_map.note + ")");
+  } else if (!r.characteristic_map.regular)
+    r.verdict = fmt::format("fails: characteristic map not regular ({} of {} faces folded)", r.characteristic_map.folded,
+                            r.characteristic_map.faces);
+  else if (!r.characteristic_map.injective)
+    r.verdict = fmt::format("fails: characteristic map not injective (winding number {})", r.characteristic_map.winding);
+  else {
+    r.c1 = true;
+    r.verdict = fmt::format("C1 at {}", where);
+  }
+}
+
+// Direction masks: the subdominant eigenspace (lambda_1's cluster, and lambda_2's when
+// lambda_1 is simple, semi-simple, real, positive, strictly above the rest) written as, for
+// each ring neighbour q of the centre in ring order (each corner of a face centre), the
+// mask d_q = sum_k r_k(q) t_k, with t_k the left eigenvectors dual to the right ones r_k.
+// d_q . P is the direction in which q's descendants approach the limit point: the sector
+// normals d_q x d_{q+1} add up to the limit normal, also at creases and corners, where the
+// eigenspace has more than two dimensions and each sector has its own tangent plane.
+void add_direction_masks(const Matrix& s, const std::vector<Complex>& ev, const AnalysisRun& cx, SurfaceAnalysis& out) {
+  const Eigen::Index n = s.rows();
+  Matrix lb(n, 0), rb(n, 0);
+  size_t i = 1;
+  double last = 0;
+  while (lb.cols() < 2 && i < ev.size()) {
+    size_t j = i + 1;
+    while (j < ev.size() && std::abs(ev[j] - ev[i]) <= kClusterTolerance * std::max(1.0, std::abs(ev[i]))) ++j;
+    Complex z = 0;
+    for (size_t k = i; k < j; ++k) z += ev[k];
+    z /= double(j - i);
+    if (!is_real(z) || z.real() <= 0) return;
+    const Matrix a = left_null(s, z.real()), b = right_null(s, z.real());
+    if (a.cols() != Eigen::Index(j - i) || b.cols() != Eigen::Index(j - i)) return;  // defective
+    Matrix l2(n, lb.cols() + a.cols()), r2(n, rb.cols() + b.cols());
+    l2 << lb, a;
+    r2 << rb, b;
+    lb = l2, rb = r2;
+    last = z.real();
+    i = j;
+  }
+  if (lb.cols() < 2) return;
+  if (i < ev.size() && std::abs(ev[i]) >= last * (1 - kClusterTolerance)) return;
+  const Matrix g = lb.transpose() * rb;
+  Eigen::FullPivLU<Matrix> lu(g);
+  if (!lu.isInvertible()) return;
+  const Matrix t = lu.inverse() * lb.transpose();  // rows dual to the columns of rb
+  const Patch& p = cx.patch;
+  std::vector<Index> ring;
+  if (p.centre_kind == CentreKind::Vertex) {
+    const auto edges = p.level.ring_edges(p.centre);
+    for (size_t k = 0; k < edges.size(); ++k)
+      ring.push_back(p.level.other_end(edges[(size_t(p.start) + k) % edges.size()], p.centre));
+  } else {
+    const auto corners = p.level.face(p.centre);
+    for (size_t k = 0; k < corners.size(); ++k) ring.push_back(corners[(size_t(p.start) + k) % corners.size()]);
+  }
+  out.direction_masks.clear();
+  for (Index q : ring) {
+    const Index label = cx.parent.label_of[size_t(q)];
+    if (label == kNone || label >= n) {
+      out.direction_masks.clear();
+      return;
+    }
+    const Vector d = t.transpose() * rb.row(label).transpose();
+    out.direction_masks.emplace_back(d.data(), d.data() + d.size());
+  }
+  out.directions_cyclic = p.centre_kind == CentreKind::Face || !p.level.on_boundary(p.centre);
+  out.tangent_dimension = int(lb.cols());
+}
+
+void analyse(AnalysisRun& cx, SurfaceAnalysis& out) {
+  const Scheme& scheme = cx.scheme;
+  const Patch& p = cx.patch;
+  const int radius = cx.options.max_ring + 2;
+  // Refine; a step that leaves the centre's ring turned by about half a sector is repeated.
+  Index first_neighbour = kNone;
+  const Axis parent_axis = axis_of(p.level, p.xy, p.centre_kind, p.centre, p.start, &first_neighbour);
+  Hierarchy h;
+  std::vector<std::vector<double>> xy;
+  Index cc = kNone;
+  int child_start = 0;
+  for (;;) {
+    cx.refine.levels = cx.steps;
+    h = refine(scheme, p.level, cx.refine);
+    xy = level_positions(h, p.xy, 2);
+    cc = follow_centre(h, xy, p.centre_kind, p.centre, 2);
+    if (cc == kNone) throw Error("the centre has no counterpart after refinement (is this the right kind of centre for the split?)");
+    if (p.centre_kind == CentreKind::Vertex &&
+        (h.levels.back().valence(cc) != p.level.valence(p.centre) ||
+         h.levels.back().on_boundary(cc) != p.level.on_boundary(p.centre)))
+      throw Error(fmt::format("after {} step(s) the centre has valence {} where it had {}: the split does not "
+                              "reproduce the neighbourhood, so there is no local subdivision matrix",
+                              cx.steps, h.levels.back().valence(cc), p.level.valence(p.centre)));
+    double offset = 0;
+    child_start = aligned_start(parent_axis, h.levels.back(), xy.back(), p.centre_kind, cc, &offset);
+    const int count = p.centre_kind == CentreKind::Vertex ? p.level.valence(p.centre) : p.level.face_size(p.centre);
+    const double sector = 2 * kPi / std::max(count, 1);
+    if (offset < 0.25 * sector || cx.steps >= 2) break;
+    cx.steps = 2;
+  }
+  out.steps = cx.steps;
+  cx.table = composed_table(h);
+  cx.parent = label_neighbourhood(p.level, p.centre_kind, p.centre, p.start, radius);
+  cx.child = label_neighbourhood(h.levels.back(), p.centre_kind, cc, child_start, radius);
+
+  int k0 = -1, K = -1;
+  for (int k = 0; k <= cx.options.max_ring; ++k) {
+    if (!maps_to_itself(cx.table, cx.parent, cx.child, k)) continue;
+    if (k0 < 0) k0 = k;
+    // The analysed ring also sees the surface around the centre: at least the 2-ring of a
+    // vertex (the support of the regular basis functions over the faces at the centre for
+    // Catmull-Clark and Loop), the 1-ring of a face.
+    const int k_min = std::max(k0 + 1, p.centre_kind == CentreKind::Vertex ? 2 : 1);
+    if (k >= k_min) {
+      K = k;
+      break;
+    }
+  }
+  if (k0 < 0) throw Error(fmt::format("no k-ring (k <= {}) around the centre maps to itself", cx.options.max_ring));
+  if (K < 0) K = k0;
+  out.minimal_ring = k0, out.ring = K;
+  out.minimal_size = cx.parent.count_within(k0);
+  const int m = out.size = cx.parent.count_within(K);
+  const Matrix s = local_matrix(cx.table, cx.parent, cx.child, m);
+  out.matrix.assign(size_t(m), std::vector<double>(size_t(m)));
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j) out.matrix[size_t(i)][size_t(j)] = s(i, j);
+  out.distance.assign(cx.parent.distance.begin(), cx.parent.distance.begin() + m);
+  out.label_vertices.assign(cx.parent.vertices.begin(), cx.parent.vertices.begin() + m);
+
+  // Checks.
+  out.max_row_error = 0;
+  for (int i = 0; i < m; ++i) {
+    const double e = s.row(i).sum() - 1.0;
+    if (std::abs(e) > std::abs(out.max_row_error)) out.max_row_error = e;
+  }
+  out.affine = std::abs(out.max_row_error) <= 1e-9;
+  const auto& ev = out.eigenvalues = sorted_eigenvalues(s);
+  out.minimal_eigenvalues = sorted_eigenvalues(s.topLeftCorner(out.minimal_size, out.minimal_size));
+  out.lambda0_one = !ev.empty() && std::abs(ev[0] - 1.0) <= 1e-9 && (ev.size() < 2 || std::abs(ev[1]) < 1.0 - 1e-9);
+  if (ev.size() < 3) return;
+  // Eigenvalues within kClusterTolerance of each other are one (a defective eigenvalue of
+  // multiplicity k is computed only to about eps^(1/k)).
+  auto cluster = [&](size_t first) {
+    size_t end = first + 1;
+    while (end < ev.size() && std::abs(ev[end] - ev[first]) <= kClusterTolerance * std::max(1.0, std::abs(ev[first]))) ++end;
+    return end;
+  };
+  auto mean_of = [&](size_t a, size_t b) {
+    Complex z = 0;
+    for (size_t i = a; i < b; ++i) z += ev[i];
+    return z / double(b - a);
+  };
+  const size_t c1 = cluster(1);
+  const Complex z1 = mean_of(1, c1);
+  size_t after = c1;
+  Complex z2 = z1;
+  if (c1 - 1 >= 2) {
+    out.subdominant_equal = true;
+  } else {
+    const size_t c2 = cluster(2);
+    z2 = mean_of(2, c2);
+    after = c2;
+  }
+  out.lambda1 = z1.real(), out.lambda2 = z2.real();
+  out.lambda3 = after < ev.size() ? std::abs(ev[after]) : 0.0;
+  out.subdominant_real = is_real(z1) && is_real(z2) && z1.real() > 0 && z2.real() > 0;
+  if (!out.subdominant_real) out.subdominant_equal = false;
+  // Two eigenvalues exactly: lambda_1 = lambda_2 of multiplicity 2, or two simple ones.
+  const size_t subdominant_count = out.subdominant_equal ? c1 - 1 : after - 1;
+  out.subdominant_multiplicity = int(out.subdominant_equal ? c1 - 1 : c1 - 1 == 1 && after - 2 > 1 ? after - 2 : 1);
+  if (subdominant_count > 2) out.lambda3 = std::abs(ev[3]);
+  out.subdominant_dominates = subdominant_count == 2 && out.lambda3 < std::abs(z2) * (1 - kClusterTolerance);
+  if (out.subdominant_real && out.subdominant_equal && out.subdominant_dominates)
+    out.curvature = curvature_text(ev, out.lambda1);
+  if (!out.lambda0_one || !out.subdominant_real) return;
+
+  // Limit mask: left eigenvector of 1, scaled to sum 1 (seed 000 §5 proposition 1).
+  const Matrix l0 = left_null(s, 1.0);
+  if (l0.cols() == 1 && std::abs(l0.col(0).sum()) > 1e-12) {
+    const Vector l = l0.col(0) / l0.col(0).sum();
+    out.limit_mask.assign(l.data(), l.data() + l.size());
+    out.has_limit_mask = true;
+  }
+  add_direction_masks(s, ev, cx, out);
+  // Tangent masks: left eigenvectors of lambda_1, lambda_2, normalised against the right
+  // eigenvectors (the characteristic map) so that the first neighbour sits at (1, 0) and the
+  // next at (cos phi, sin phi), phi being their angle in the patch.
+  Matrix lb, rb;
+  const double l1 = out.lambda1, l2 = out.lambda2;
+  if (out.subdominant_equal) {
+    const double lambda = 0.5 * (l1 + l2);
+    lb = left_null(s, lambda), rb = right_null(s, lambda);
+  } else {
+    const Matrix a = left_null(s, l1), b = left_null(s, l2), c = right_null(s, l1), d = right_null(s, l2);
+    if (a.cols() == 1 && b.cols() == 1 && c.cols() == 1 && d.cols() == 1) {
+      lb.resize(m, 2), rb.resize(m, 2);
+      lb << a, b;
+      rb << c, d;
+    }
+  }
+  out.subdominant_semisimple = lb.cols() == 2 && rb.cols() == 2;
+  if (!out.subdominant_semisimple) return;
+  Index second = kNone;
+  if (p.centre_kind == CentreKind::Vertex) {
+    const auto ring = p.level.ring_edges(p.centre);
+    second = p.level.other_end(ring[size_t((p.start + 1) % int(ring.size()))], p.centre);
+  } else {
+    const auto corners = p.level.face(p.centre);
+    second = corners[size_t((p.start + 1) % int(corners.size()))];
+  }
+  const Index la = cx.parent.label_of[size_t(first_neighbour)], lbl = cx.parent.label_of[size_t(second)];
+  // On a boundary the boundary curve refines on its own: eigenvectors of the interior's
+  // eigenvalues vanish on it. If the subdominant pair has no component on the boundary
+  // neighbours, the characteristic map collapses the boundary and there is no C1 limit there.
+  if (p.centre_kind == CentreKind::Vertex && p.level.on_boundary(p.centre)) {
+    const auto ring = p.level.ring_edges(p.centre);
+    const Index last = cx.parent.label_of[size_t(p.level.other_end(ring.back(), p.centre))];
+    double largest = 0;
+    for (Eigen::Index i = 0; i < rb.rows(); ++i) largest = std::max(largest, rb.row(i).norm());
+    out.boundary_collapses = rb.row(la).norm() <= 1e-9 * largest && rb.row(last).norm() <= 1e-9 * largest;
+  }
+  double cxp = parent_axis.cx, cyp = parent_axis.cy;
+  double phi = std::atan2(p.xy[size_t(2 * second + 1)] - cyp, p.xy[size_t(2 * second)] - cxp) -
+               std::atan2(parent_axis.ay, parent_axis.ax);
+  while (phi <= 0) phi += 2 * kPi;
+  while (phi > 2 * kPi) phi -= 2 * kPi;
+  Eigen::Matrix2d at, want;
+  at << rb(la, 0), rb(la, 1), rb(lbl, 0), rb(lbl, 1);
+  want << 1, 0, std::cos(phi), std::sin(phi);
+  Matrix rp = rb;
+  if (std::abs(at.determinant()) > 1e-12 * std::max(1.0, at.norm() * at.norm())) rp = rb * (at.inverse() * want);
+  const Eigen::Matrix2d g = lb.transpose() * rp;
+  if (std::abs(g.determinant()) < 1e-14) return;
+  const Matrix t = g.inverse() * lb.transpose();  // 2 x m, t * rp = I
+  out.tangent_u.assign(size_t(m), 0.0), out.tangent_v.assign(size_t(m), 0.0);
+  for (int j = 0; j < m; ++j) out.tangent_u[size_t(j)] = t(0, j), out.tangent_v[size_t(j)] = t(1, j);
+  out.has_tangent_masks = true;
+  if (cx.options.characteristic_map && out.subdominant_dominates)
+    check_characteristic_map(cx, K, rp, l1, l2, out.subdominant_equal, out);
+}
+
+// Masks are left eigenvectors of the K-ring matrix; they vanish beyond the minimal ring
+// for any sensible scheme. Trim them to the smallest ring that holds them.
+void trim_masks(SurfaceAnalysis& r) {
+  auto extent = [&](const std::vector<double>& mask) {
+    double largest = 0;
+    for (double w : mask) largest = std::max(largest, std::abs(w));
+    int last = -1;
+    for (int i = 0; i < int(mask.size()); ++i)
+      if (std::abs(mask[size_t(i)]) > kMaskZero * largest) last = i;
+    return last + 1;
+  };
+  int used = 0;
+  if (r.has_limit_mask) used = std::max(used, extent(r.limit_mask));
+  if (r.has_tangent_masks) used = std::max({used, extent(r.tangent_u), extent(r.tangent_v)});
+  for (const auto& d : r.direction_masks) used = std::max(used, extent(d));
+  if (used == 0) return;
+  const int d = r.distance[size_t(used - 1)];
+  int size = 0;
+  while (size < int(r.distance.size()) && r.distance[size_t(size)] <= d) ++size;
+  auto cut = [&](std::vector<double>& mask) {
+    if (mask.empty()) return;
+    double largest = 0;
+    for (double w : mask) largest = std::max(largest, std::abs(w));
+    mask.resize(size_t(size));
+    for (double& w : mask)
+      if (std::abs(w) <= 1e-15 * largest) w = 0.0;
+  };
+  cut(r.limit_mask), cut(r.tangent_u), cut(r.tangent_v);
+  for (auto& d : r.direction_masks) cut(d);
+}
+
+}  // namespace
+
+CentreKind analysis_centre(const Scheme& scheme) {
+  const SplitKind k = scheme.split();
+  return k == SplitKind::Dual || k == SplitKind::MidEdge ? CentreKind::Face : CentreKind::Vertex;
+}
+
+PatchCells analysis_cells(const Scheme& scheme) {
+  const SplitKind k = scheme.split();
+  if (k == SplitKind::Triangle || k == SplitKind::Sqrt3 || scheme.required_face_size == 3) return PatchCells::Triangles;
+  return PatchCells::Quads;
+}
+
+int analysis_steps(const Scheme& scheme) {
+  const SplitKind k = scheme.split();
+  return k == SplitKind::Sqrt3 || k == SplitKind::MidEdge ? 2 : 1;
+}
+
+SurfaceAnalysis analyse_patch(const Scheme& scheme, const Patch& patch, const LocalConfig& config,
+                              const SurfaceAnalysisOptions& options) {
+  SurfaceAnalysis out;
+  out.scheme = scheme.name;
+  out.path = scheme.path;
+  out.config = config;
+  AnalysisRun cx{scheme, patch, config, options, {}, analysis_steps(scheme), {}, {}, {}};
+  cx.refine.boundary = options.boundary;
+  cx.refine.crease_method = options.crease_method;
+  cx.refine.first_step = config.first_step;
+  cx.refine.threads = 1;
+  out.steps = cx.steps;
+  try {
+    analyse(cx, out);
+    trim_masks(out);
+  } catch (const Error& e) {
+    out.error = e.what();
+  }
+  finish_verdict(out);
+  return out;
+}
+
+SurfaceAnalysis analyse_configuration(const Scheme& scheme, const LocalConfig& config,
+                                      const SurfaceAnalysisOptions& options) {
+  const int rings = options.patch_rings > 0 ? options.patch_rings : options.max_ring + 3;
+  try {
+    if (config.centre == CentreKind::Face) {
+      if (analysis_cells(scheme) != PatchCells::Quads)
+        throw Error("face-centred analysis needs a scheme for quads");
+      return analyse_patch(scheme, make_face_patch(config.valence, rings), config, options);
+    }
+    if (analysis_centre(scheme) == CentreKind::Face)
+      throw Error(fmt::format("scheme '{}' is dual: a vertex of valence n becomes an n-gon face; analyse faces",
+                              scheme.name));
+    return analyse_patch(scheme, make_vertex_patch(analysis_cells(scheme), config, rings), config, options);
+  } catch (const Error& e) {
+    SurfaceAnalysis out;
+    out.scheme = scheme.name, out.path = scheme.path, out.config = config;
+    out.error = e.what();
+    finish_verdict(out);
+    return out;
+  }
+}
+
+SurfaceAnalysis analyse_valence(const Scheme& scheme, int n, const SurfaceAnalysisOptions& options) {
+  LocalConfig c;
+  c.centre = analysis_centre(scheme);
+  c.valence = n;
+  return analyse_configuration(scheme, c, options);
+}
+
+}  // namespace subdiv

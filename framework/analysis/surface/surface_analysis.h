@@ -1,0 +1,122 @@
+#pragma once
+// Eigen-analysis of a surface scheme at an extraordinary vertex (or face, for dual
+// schemes), done with the engine itself (seed 000 §3 and §5, seed 004):
+//
+// 1. a synthetic patch around the centre (local_patch.h) is refined by the scheme's own
+//    stencils, one step, or two for schemes whose step rotates the mesh (sqrt(3), mid-edge:
+//    the second step undoes the rotation, seed 000's R S^2);
+// 2. the refined centre and its first ring neighbour are matched to the parent's by
+//    position (the patch is symmetric), both neighbourhoods are labelled canonically, and
+//    the k-ring that maps to itself is found from the stencils' supports: the minimal one
+//    (k0; it carries the limit and tangent masks) and the next one (K), which also sees the
+//    surface around the centre and is the one analysed, as in the curve case;
+// 3. S (rows: children, columns: parents, in matching label order) is analysed with Eigen:
+//    spectrum sorted by modulus; lambda_0 = 1 simple; lambda_1 = lambda_2 real, with two
+//    eigenvectors, |lambda_3| < lambda_1; seed 000 §3's condition on lambda_1^2 against
+//    |lambda_3|; limit mask (left eigenvector of 1) and tangent masks (left eigenvectors of
+//    lambda_1, lambda_2), seed 000 §5 propositions 1 and 2;
+// 4. the characteristic map (control points from the right eigenvectors of lambda_1,
+//    lambda_2, refined a few levels) is checked to be regular (every face keeps its
+//    orientation) and injective (the boundary of the region winds once around the centre).
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "framework/analysis/surface/local_patch.h"
+#include "framework/io/mesh_data.h"
+#include "framework/features/feature_context.h"
+
+namespace subdiv {
+
+struct Scheme;
+
+struct SurfaceAnalysisOptions {
+  BoundaryInterpolation boundary = BoundaryInterpolation::EdgesAndCorners;
+  CreaseMethod crease_method = CreaseMethod::Uniform;
+  int max_ring = 5;                   // largest k-ring tried as invariant neighbourhood
+  int patch_rings = 0;                // rings of the synthetic patch; 0: max_ring + 3
+  bool characteristic_map = true;     // compute and check it
+  double characteristic_scale = 8.0;  // refine until the mesh is this much finer
+};
+
+struct CharacteristicMap {
+  bool computed = false;
+  std::string note;               // why it was not computed, or remarks
+  bool regular = false;           // every face of the refined map has positive area
+  bool injective = false;         // regular, and the boundary winds once around the centre
+  bool winding_checked = false;   // interior centres only (a boundary centre lies on the rim)
+  int winding = 0;
+  int faces = 0, folded = 0;
+  double min_area_ratio = 0;      // smallest signed area / mean area
+  int refinement_steps = 0;
+  MeshData mesh;                  // the refined map, z = 0, faces around the centre
+  std::vector<double> ring;       // per point: face-ring distance from the centre
+};
+
+struct SurfaceAnalysis {
+  std::string scheme, path;
+  LocalConfig config;
+  int steps = 1;                  // refinement steps per analysed step (2: R S^2)
+  std::string error;              // the analysis could not run: why (rules fail, no invariant ring)
+
+  int minimal_ring = -1, ring = -1;   // k0 and K
+  int minimal_size = 0, size = 0;     // their numbers of points
+  std::vector<std::vector<double>> matrix;   // S on the K-ring, label order
+  std::vector<int> distance;                 // label -> ring distance
+  std::vector<Index> label_vertices;         // label -> vertex of the analysed patch
+  std::vector<std::complex<double>> eigenvalues;          // of S, sorted by modulus
+  std::vector<std::complex<double>> minimal_eigenvalues;  // on the k0-ring
+
+  bool affine = false;                 // every row sums to 1
+  double max_row_error = 0;
+  bool lambda0_one = false;            // lambda_0 = 1, simple
+  bool subdominant_real = false;       // lambda_1, lambda_2 real and positive
+  bool subdominant_equal = false;      // lambda_1 = lambda_2
+  bool subdominant_semisimple = false; // two independent eigenvectors
+  bool subdominant_dominates = false;  // |lambda_3| < lambda_2
+  int subdominant_multiplicity = 0;    // of lambda_1 (1 when lambda_1 != lambda_2)
+  bool boundary_collapses = false;     // boundary centre: the subdominant pair misses the boundary curve
+  double lambda1 = 0, lambda2 = 0, lambda3 = 0;  // lambda_1, lambda_2 (real parts), |lambda_3|
+  std::string curvature;               // seed 000 §3 condition, as text
+
+  CharacteristicMap characteristic_map;
+  bool c1 = false;
+  std::string verdict;                 // "C1 at valence 5", "fails: lambda_1 != lambda_2 (...)"
+
+  // Masks over labels 0 .. mask size - 1 (the labelled patch vertices, see label_vertices).
+  bool has_limit_mask = false, has_tangent_masks = false;
+  std::vector<double> limit_mask;          // sums to 1
+  std::vector<double> tangent_u, tangent_v;  // the limit normal is (t_u . P) x (t_v . P)
+  // For each ring neighbour of the centre in ring order from the start (each corner of a
+  // face centre): the direction its descendants approach the limit point from, d . P. The
+  // limit normal is the sum of d_q x d_{q+1} over the sectors (cyclic unless the centre is
+  // on a boundary); at creases and corners each sector has its own tangent plane and the sum
+  // averages them. Empty when the subdominant eigenspace is not real, semi-simple and
+  // strictly dominant.
+  std::vector<std::vector<double>> direction_masks;
+  bool directions_cyclic = true;
+  int tangent_dimension = 0;  // dimension of that eigenspace: 2 where smooth, 3 on a crease...
+
+};
+
+// Vertex for primal and sqrt(3) splits, Face for dual and mid-edge splits.
+CentreKind analysis_centre(const Scheme& scheme);
+// Quads unless the scheme refines triangles.
+PatchCells analysis_cells(const Scheme& scheme);
+// 2 for splits that rotate the mesh (sqrt3, mid-edge), else 1.
+int analysis_steps(const Scheme& scheme);
+
+// Analyses the scheme on a given patch (centre and start set in the patch).
+SurfaceAnalysis analyse_patch(const Scheme& scheme, const Patch& patch, const LocalConfig& config,
+                              const SurfaceAnalysisOptions& options = {});
+
+// Builds the synthetic patch for the configuration (vertex or face centred as the
+// configuration says) and analyses it. Never throws for a failing scheme: the reason is
+// in `error` and `verdict`.
+SurfaceAnalysis analyse_configuration(const Scheme& scheme, const LocalConfig& config,
+                                      const SurfaceAnalysisOptions& options = {});
+
+// The usual question: interior valence n (a vertex, or an n-gon face for dual schemes).
+SurfaceAnalysis analyse_valence(const Scheme& scheme, int n, const SurfaceAnalysisOptions& options = {});
+
+}  // namespace subdiv

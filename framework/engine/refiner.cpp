@@ -1,0 +1,251 @@
+#include "framework/engine/refiner.h"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+#include "framework/rules/stencil_builder.h"
+#include "framework/rules/step_evaluator.h"
+#include "framework/scheme/step_tables.h"
+#include "framework/scheme/scheme.h"
+#include "framework/util/bulk_memory.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+int needed_face_size(const Scheme& scheme) {
+  if (scheme.required_face_size) return scheme.required_face_size;
+  return splitter_info(scheme.split()).required_face_size;
+}
+
+void check_face_sizes(const Scheme& scheme, const Level& base) {
+  const int needed = needed_face_size(scheme);
+  if (!needed) return;
+  for (Index f = 0; f < base.face_count(); ++f)
+    if (base.face_size(f) != needed)
+      throw Error(fmt::format("{}: scheme '{}' needs {}, but face {} of the mesh has {} vertices; "
+                              "{} the mesh first or choose a scheme for any polygons (`subdiv schemes` "
+                              "lists them)",
+                              scheme.path, scheme.name,
+                              needed == 3 ? "triangles" : needed == 4 ? "quads" : fmt::format("{}-gons", needed), f,
+                              base.face_size(f), needed == 3 ? "triangulate" : needed == 4 ? "quadrangulate" : "remesh"));
+}
+
+int max_valence(const Level& level) {
+  int m = 0;
+  for (Index v = 0; v < level.vertex_count; ++v) m = std::max(m, level.valence(v));
+  return m;
+}
+
+// What one step's rows need besides the topology: its weight tables and feature contexts.
+struct StepInputs {
+  WeightTables tables;
+  FeatureContexts features;
+};
+
+StepInputs prepare_step(const Scheme& scheme, const StepRules& step, const Level& parent, int level,
+                        const RefineOptions& options) {
+  return {step_weight_tables(scheme, step, max_valence(parent), parent.max_face_size(), level),
+          classify_features(parent, {options.boundary, options.crease_method})};
+}
+
+StepContext step_context(const Scheme& scheme, const StepRules& step, const StepInputs& inputs, const Level& parent,
+                         const ChildOrigins& origins, bool features_refined, int level, const RefineOptions& options) {
+  return {parent,      origins,           inputs.tables, inputs.features,       features_refined,
+          scheme.path, step.code.get(),   level,         options.use_row_plans};
+}
+
+// One step's stencils: `parent` values to the values of the step's output vertices.
+StencilTable step_stencils(const Scheme& scheme, const StepRules& step, const Level& parent,
+                           const ChildOrigins& origins, bool features_refined, int level,
+                           const RefineOptions& options) {
+  const StepInputs inputs = prepare_step(scheme, step, parent, level, options);
+  return build_step_stencils(step_context(scheme, step, inputs, parent, origins, features_refined, level, options));
+}
+
+// One step applied to values without a table (rules/step_evaluator.h).
+std::vector<double> step_rows_applied(const Scheme& scheme, const StepRules& step, const Level& parent,
+                                      const ChildOrigins& origins, bool features_refined, int level,
+                                      const RefineOptions& options, std::span<const double> values, int channels) {
+  const StepInputs inputs = prepare_step(scheme, step, parent, level, options);
+  std::vector<double> out;
+  resize_bulk(out, origins.kind.size() * size_t(channels));
+  apply_step_rows(step_context(scheme, step, inputs, parent, origins, features_refined, level, options), values, out,
+                  channels);
+  return out;
+}
+
+// The scheme of each level, in order.
+std::vector<const Scheme*> schemes_per_level(std::span<const SchemeRun> runs) {
+  std::vector<const Scheme*> per_level;
+  for (const SchemeRun& run : runs) {
+    if (run.levels < 0) throw Error(fmt::format("scheme '{}' is given {} levels; give 0 or more", run.scheme->name, run.levels));
+    per_level.insert(per_level.end(), size_t(run.levels), run.scheme);
+  }
+  return per_level;
+}
+
+// With boundary corners kept (OpenSubdiv's VTX_BOUNDARY_EDGE_AND_CORNER), a boundary vertex
+// with one face becomes an infinitely sharp corner tag on the base level, as OpenSubdiv's
+// factory does, so the tag travels to finer levels even where a split gives the vertex
+// more faces (sqrt3).
+void tag_boundary_corners(Level& base, BoundaryInterpolation mode) {
+  if (mode != BoundaryInterpolation::EdgesAndCorners) return;
+  for (Index v = 0; v < base.vertex_count; ++v) {
+    if (!base.on_boundary(v) || base.incident_face_count(v) != 1) continue;
+    if (base.vertex_sharpness.empty()) base.vertex_sharpness.assign(base.vertex_count, 0.f);
+    base.vertex_sharpness[v] = kInfinitelySharp;
+  }
+}
+
+// A non-linear step (plugins): no table says it, its rule is run on the values.
+std::shared_ptr<DirectStep> direct_step(const Scheme& scheme, const Hierarchy& h, size_t l, int level,
+                                        const RefineOptions& options) {
+  if (scheme.steps.size() != 1)
+    throw Error(fmt::format("{}: a non-linear scheme has one step (its rule does the whole level)", scheme.path));
+  auto direct = std::make_shared<DirectStep>();
+  direct->rule = scheme.steps.front().nonlinear;
+  direct->features = classify_features(h.levels[l], {options.boundary, options.crease_method});
+  direct->features_refined = h.features_refined[l];
+  direct->level = level;
+  return direct;
+}
+
+std::vector<double> run_direct_step(const DirectStep& direct, const Hierarchy& h, int step,
+                                    std::span<const double> values, int channels) {
+  const Level& parent = h.levels[step];
+  const Level& child = h.levels[step + 1];
+  if (values.size() != size_t(parent.vertex_count) * size_t(channels))
+    throw Error(fmt::format("apply_step: {} values for {} vertices of {} channels", values.size(), parent.vertex_count,
+                            channels));
+  std::vector<double> out(size_t(child.vertex_count) * size_t(channels), std::numeric_limits<double>::quiet_NaN());
+  (*direct.rule)({parent, child, h.origins[step], direct.features, direct.features_refined, direct.level}, values,
+                 out, channels);
+  for (size_t i = 0; i < out.size(); ++i)
+    if (!std::isfinite(out[i]))
+      throw Error(fmt::format("the non-linear rule of level {} left child vertex {} at {} (every child value must be "
+                              "set and finite)", direct.level, i / size_t(channels), out[i]));
+  return out;
+}
+
+}  // namespace
+
+Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const RefineOptions& options) {
+  const std::vector<const Scheme*> per_level = schemes_per_level(runs);
+  tag_boundary_corners(base, options.boundary);
+  Hierarchy h;
+  h.levels.push_back(std::move(base));
+  for (size_t l = 0; l < per_level.size(); ++l) {
+    const Scheme& scheme = *per_level[l];
+    if (l == 0 || per_level[l - 1] != per_level[l]) check_face_sizes(scheme, h.levels.back());
+    SplitResult step = split(scheme.split(), h.levels.back(), options.first_step + int(l));
+    if (splitter_info(scheme.split()).engine_propagates_tags)
+      propagate_tags(h.levels.back(), step, options.crease_method);
+    h.levels.push_back(std::move(step.child));
+    h.origins.push_back(std::move(step.origins));
+    h.features_refined.push_back(step.features_refined);
+  }
+  return h;
+}
+
+void build_stencils(std::span<const SchemeRun> runs, Hierarchy& h, const RefineOptions& options) {
+  const std::vector<const Scheme*> per_level = schemes_per_level(runs);
+  if (per_level.size() + 1 != h.levels.size())
+    throw Error(fmt::format("build_stencils: the runs give {} levels but the hierarchy has {}", per_level.size(),
+                            h.levels.size() - 1));
+  h.stencils.clear();
+  h.direct.assign(per_level.size(), nullptr);
+  for (size_t l = 0; l < per_level.size(); ++l) {
+    const Scheme& scheme = *per_level[l];
+    const int level = options.first_step + int(l);
+    if (scheme.steps.front().nonlinear) {
+      h.direct[l] = direct_step(scheme, h, l, level, options);
+      StencilTable none;  // no rows: apply_step() runs the rule
+      none.source_count = h.levels[l].vertex_count;
+      h.stencils.push_back(std::move(none));
+      continue;
+    }
+    StencilTable table = step_stencils(scheme, scheme.steps.front(), h.levels[l], h.origins[l],
+                                       h.features_refined[l], level, options);
+    // Smoothing passes move the new level's vertices; compose them into one table.
+    for (size_t s = 1; s < scheme.steps.size(); ++s) {
+      const Level& child = h.levels[l + 1];
+      table = compose(table, step_stencils(scheme, scheme.steps[s], child, identity_origins(child), true, level, options));
+    }
+    h.stencils.push_back(std::move(table));
+  }
+}
+
+Hierarchy refine(std::span<const SchemeRun> runs, Level base, const RefineOptions& options) {
+  Hierarchy h = refine_topology(runs, std::move(base), options);
+  build_stencils(runs, h, options);
+  return h;
+}
+
+Hierarchy refine_topology(const Scheme& scheme, Level base, const RefineOptions& options) {
+  if (options.levels < 0) throw Error(fmt::format("--levels must be 0 or more, not {}", options.levels));
+  const SchemeRun run{&scheme, options.levels};
+  return refine_topology(std::span(&run, 1), std::move(base), options);
+}
+
+void build_stencils(const Scheme& scheme, Hierarchy& h, const RefineOptions& options) {
+  const SchemeRun run{&scheme, int(h.levels.size()) - 1};
+  build_stencils(std::span(&run, 1), h, options);
+}
+
+Hierarchy refine(const Scheme& scheme, Level base, const RefineOptions& options) {
+  Hierarchy h = refine_topology(scheme, std::move(base), options);
+  build_stencils(scheme, h, options);
+  return h;
+}
+
+std::vector<double> interpolate(const Hierarchy& h, int to_level, std::span<const double> base_values, int channels) {
+  if (to_level < 0 || to_level > int(h.stencils.size()))
+    throw Error(fmt::format("interpolate: level {} is not in 0..{}", to_level, h.stencils.size()));
+  std::vector<double> values(base_values.begin(), base_values.end());
+  for (int l = 0; l < to_level; ++l) values = apply_step(h, l, values, channels);
+  return values;
+}
+
+std::vector<double> apply_step(const Hierarchy& h, int step, std::span<const double> values, int channels) {
+  if (step < 0 || step >= int(h.stencils.size()))
+    throw Error(fmt::format("apply_step: step {} is not in 0..{}", step, int(h.stencils.size()) - 1));
+  const DirectStep* direct = size_t(step) < h.direct.size() ? h.direct[step].get() : nullptr;
+  if (!direct) return h.stencils[step].apply(values, channels);
+  return run_direct_step(*direct, h, step, values, channels);
+}
+
+std::vector<double> step_values(std::span<const SchemeRun> runs, const Hierarchy& h, int step,
+                                std::span<const double> values, int channels, const RefineOptions& options) {
+  const std::vector<const Scheme*> per_level = schemes_per_level(runs);
+  if (per_level.size() + 1 != h.levels.size() || h.origins.size() != per_level.size())
+    throw Error(fmt::format("step_values: the runs give {} levels but the hierarchy has {}", per_level.size(),
+                            h.levels.size() - 1));
+  if (step < 0 || step >= int(per_level.size()))
+    throw Error(fmt::format("step_values: step {} is not in 0..{}", step, int(per_level.size()) - 1));
+  if (values.size() != size_t(h.levels[step].vertex_count) * size_t(channels))
+    throw Error(fmt::format("step_values: {} values for {} vertices of {} channels", values.size(),
+                            h.levels[step].vertex_count, channels));
+  const Scheme& scheme = *per_level[step];
+  const int level = options.first_step + step;
+  if (scheme.steps.front().nonlinear)
+    return run_direct_step(*direct_step(scheme, h, size_t(step), level, options), h, step, values, channels);
+  std::vector<double> out = step_rows_applied(scheme, scheme.steps.front(), h.levels[step], h.origins[step],
+                                              h.features_refined[step], level, options, values, channels);
+  // Smoothing passes, one after another (build_stencils composes their tables instead, so
+  // the last bits may differ).
+  const Level& child = h.levels[step + 1];
+  const ChildOrigins same = scheme.steps.size() > 1 ? identity_origins(child) : ChildOrigins{};
+  for (size_t s = 1; s < scheme.steps.size(); ++s)
+    out = step_rows_applied(scheme, scheme.steps[s], child, same, true, level, options, out, channels);
+  return out;
+}
+
+std::vector<double> step_values(const Scheme& scheme, const Hierarchy& h, int step, std::span<const double> values,
+                                int channels, const RefineOptions& options) {
+  const SchemeRun run{&scheme, int(h.levels.size()) - 1};
+  return step_values(std::span(&run, 1), h, step, values, channels, options);
+}
+
+}  // namespace subdiv

@@ -1,0 +1,87 @@
+#pragma once
+// The engine's driver: refine topology level by level, then carry any per-vertex data to
+// the finer levels, through one stencil table per step or straight from the rules.
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "framework/refine/child_origins.h"
+#include "framework/refine/child_tags.h"
+#include "framework/rules/code_rules.h"
+#include "framework/features/feature_context.h"
+#include "framework/scheme/scheme_run.h"
+#include "framework/stencil/stencil_table.h"
+#include "framework/topology/level.h"
+
+namespace subdiv {
+
+struct RefineOptions {
+  int levels = 1;
+  BoundaryInterpolation boundary = BoundaryInterpolation::EdgesAndCorners;
+  CreaseMethod crease_method = CreaseMethod::Uniform;
+  int threads = 0;  // 0: all cores
+  // How many steps the input mesh has already been through (schemes whose steps alternate,
+  // such as sqrt3's boundary trisection, count from the original mesh; also the level l
+  // seen by level-dependent formulas).
+  int first_step = 0;
+  // Smooth interior rows replayed from learnt plans (rules/row_plans.h): the same rows,
+  // faster; off only to compare or measure.
+  bool use_row_plans = true;
+};
+
+// A step of a non-linear scheme (plugins, rules/code_rules.h): applied to the values
+// directly, since no stencil table can say it.
+struct DirectStep {
+  std::shared_ptr<const NonlinearRule> rule;
+  FeatureContexts features;
+  bool features_refined = true;
+  int level = 0;
+};
+
+struct Hierarchy {
+  std::vector<Level> levels;           // levels[0] is the base mesh
+  std::vector<ChildOrigins> origins;   // origins[i] describes levels[i + 1]
+  std::vector<StencilTable> stencils;  // stencils[i] maps level i values to level i + 1
+  std::vector<bool> features_refined;  // per step: were boundaries and creases refined
+  // Per step: set when the step is non-linear; stencils[i] is then empty (no rows) and
+  // apply_step() runs the rule instead. Empty (or all null) for linear schemes.
+  std::vector<std::shared_ptr<const DirectStep>> direct;
+
+  bool linear() const {
+    for (const auto& d : direct)
+      if (d) return false;
+    return true;
+  }
+};
+
+// Refines topology only (levels and origins), as OpenSubdiv's RefineUniform does.
+Hierarchy refine_topology(const Scheme& scheme, Level base, const RefineOptions& options);
+Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const RefineOptions& options);
+// Builds the stencil tables for a refined hierarchy.
+void build_stencils(const Scheme& scheme, Hierarchy& hierarchy, const RefineOptions& options);
+void build_stencils(std::span<const SchemeRun> runs, Hierarchy& hierarchy, const RefineOptions& options);
+// Both of the above. With runs, options.levels is ignored: the runs say how many.
+Hierarchy refine(const Scheme& scheme, Level base, const RefineOptions& options);
+Hierarchy refine(std::span<const SchemeRun> runs, Level base, const RefineOptions& options);
+
+// Values (channels per vertex) of level `step` carried to level step + 1: through the
+// stencil table, or the non-linear rule of a direct step.
+std::vector<double> apply_step(const Hierarchy& hierarchy, int step, std::span<const double> values, int channels);
+
+// Values of level `step` carried to level step + 1 straight from the rules, with no stencil
+// table (rules/step_evaluator.h): needs only refine_topology's hierarchy, and is faster
+// and smaller than build_stencils + apply_step. The same values to round-off: the same
+// bits where the rules use no new points; new points a rule uses are read back rather than
+// expanded, and smoothing passes are applied one after another rather than composed, which
+// changes the last bits. The same bits for any thread count.
+std::vector<double> step_values(std::span<const SchemeRun> runs, const Hierarchy& topology, int step,
+                                std::span<const double> values, int channels, const RefineOptions& options);
+std::vector<double> step_values(const Scheme& scheme, const Hierarchy& topology, int step,
+                                std::span<const double> values, int channels, const RefineOptions& options);
+
+// Values (channels per vertex) of the base level carried to level `to_level`.
+std::vector<double> interpolate(const Hierarchy& hierarchy, int to_level,
+                                std::span<const double> base_values, int channels);
+
+}  // namespace subdiv

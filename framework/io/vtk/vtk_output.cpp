@@ -1,0 +1,113 @@
+#include "framework/io/vtk/vtk_output.h"
+
+#include <set>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+#include <vtkPolyData.h>
+
+#include "framework/io/vtk/vtk_polydata.h"
+#include "framework/util/atomic_file.h"
+#include "framework/util/buffered_output.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string xml_escaped(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+struct Entry {
+  int level;
+  std::string file;  // relative to the .pvd, with '/' separators
+};
+
+void write_collection(const fs::path& file, const fs::path& shown, const std::vector<Entry>& entries) {
+  BufferedOutput out(file, shown);
+  out.print("<?xml version=\"1.0\"?>\n"
+            "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+            "  <Collection>\n");
+  for (const Entry& e : entries)
+    out.print("    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n", e.level,
+              xml_escaped(e.file));
+  out.print("  </Collection>\n</VTKFile>\n");
+  out.close();
+}
+
+void check_levels(std::span<const OutputLevel> levels, std::string_view context) {
+  if (levels.empty()) throw Error(fmt::format("{}: there are no levels to write", context));
+  std::set<int> seen;
+  for (const OutputLevel& level : levels) {
+    if (!seen.insert(level.level).second)
+      throw Error(fmt::format("{}: level {} appears twice; every level needs its own number",
+                              context, level.level));
+    io_detail::check_output_level(level, fmt::format("{} (level {})", context, level.level));
+  }
+}
+
+// Creates the level directory if needed; returns whether it did, so that a failed write
+// can remove it again.
+bool make_directory(const fs::path& dir, std::string_view context) {
+  std::error_code ec;
+  const bool created = fs::create_directory(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw Error(fmt::format("{}: cannot create directory '{}' ({})", context, dir.string(),
+                            ec ? ec.message() : "a file of that name exists"));
+  return created;
+}
+
+}  // namespace
+
+void write_vtp(const fs::path& file, const OutputLevel& level) {
+  io_detail::check_output_level(level, fmt::format("cannot write '{}'", file.string()));
+  const auto poly = io_detail::make_polydata(level);
+  write_file_atomically(file, [&](const fs::path& tmp) {
+    io_detail::write_polydata_file(*poly, tmp, file);
+  });
+}
+
+void write_pvd(const fs::path& pvd, std::span<const OutputLevel> levels) {
+  const std::string context = fmt::format("cannot write '{}'", pvd.string());
+  check_levels(levels, context);
+  const fs::path parent = pvd.parent_path().empty() ? fs::path(".") : pvd.parent_path();
+  std::error_code ec;
+  if (!fs::is_directory(parent, ec))
+    throw Error(fmt::format("{}: directory '{}' does not exist; create it first", context,
+                            parent.string()));
+  const std::string folder = pvd.stem().string() + "_levels";
+  const fs::path dir = parent / folder;
+  const bool created = make_directory(dir, context);
+  try {
+    StagedFiles staged;  // removes every temporary if anything below throws
+    std::vector<Entry> entries;
+    for (const OutputLevel& level : levels) {
+      const std::string name = fmt::format("level_{}.vtp", level.level);
+      const fs::path target = dir / name;
+      io_detail::write_polydata_file(*io_detail::make_polydata(level), staged.stage(target), target);
+      entries.push_back({level.level, folder + "/" + name});
+    }
+    write_collection(staged.stage(pvd), pvd, entries);
+    staged.commit();  // level files first, the .pvd last
+  } catch (...) {
+    if (created) fs::remove(dir, ec);  // only removes it if still empty
+    throw;
+  }
+}
+
+}  // namespace subdiv

@@ -1,0 +1,233 @@
+#include "framework/io/vtk/vtk_polydata.h"
+
+#include <cmath>
+#include <limits>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCommand.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include "framework/io/mesh_validate.h"
+#include "framework/util/error.h"
+
+namespace subdiv::io_detail {
+namespace fs = std::filesystem;
+
+namespace {
+
+// Arrays write_vtp adds itself; user arrays may not take these names.
+const std::set<std::string> kReservedCellArrays = {"sharpness", "cell_kind"};
+const std::set<std::string> kReservedPointArrays = {"corner_sharpness"};
+
+// VTK numbers the cells of a vtkPolyData lines first, then polygons; callers give cell
+// values faces first. Cell data is reordered here so that every value lands on its cell.
+struct CellCounts {
+  std::size_t faces, polylines, creases;
+  std::size_t lines() const { return polylines + creases; }
+  std::size_t total() const { return faces + lines(); }
+};
+
+CellCounts cell_counts(const MeshData& mesh) {
+  return {std::size_t(mesh.face_count()), std::size_t(mesh.line_count()), mesh.creases.size()};
+}
+
+void check_array(const DataArray& a, std::size_t tuples, const char* per, std::string_view context) {
+  if (a.name.empty()) throw Error(fmt::format("{}: a {} data array has no name", context, per));
+  if (a.components < 1)
+    throw Error(fmt::format("{}: array '{}' has {} components; it needs at least 1", context,
+                            a.name, a.components));
+  if (a.values.size() != tuples * std::size_t(a.components))
+    throw Error(fmt::format("{}: array '{}' has {} values, expected {} ({} {}s x {} "
+                            "components)",
+                            context, a.name, a.values.size(), tuples * a.components, tuples,
+                            per, a.components));
+  if (!a.integer) return;
+  for (std::size_t i = 0; i < a.values.size(); ++i) {
+    const double v = a.values[i];
+    if (v != std::floor(v) || v < std::numeric_limits<int>::min() ||
+        v > std::numeric_limits<int>::max())
+      throw Error(fmt::format("{}: integer array '{}' holds {} at position {}, which is not a "
+                              "whole number that fits an int; mark the array as not integer",
+                              context, a.name, v, i));
+  }
+}
+
+void check_arrays(const std::vector<DataArray>& arrays, const std::set<std::string>& reserved,
+                  const char* per, std::size_t tuples, std::size_t alternative_tuples,
+                  std::string_view context) {
+  std::set<std::string> names;
+  for (const DataArray& a : arrays) {
+    if (reserved.count(a.name))
+      throw Error(fmt::format("{}: array name '{}' is reserved for the array write_vtp adds; "
+                              "rename it",
+                              context, a.name));
+    if (!names.insert(a.name).second)
+      throw Error(fmt::format("{}: two {} data arrays are named '{}'", context, per, a.name));
+    const bool alternative = a.components > 0 &&
+                             a.values.size() == alternative_tuples * std::size_t(a.components);
+    check_array(a, alternative ? alternative_tuples : tuples, per, context);
+  }
+}
+
+template <typename Array>
+vtkSmartPointer<Array> new_array(const std::string& name, int components, std::size_t tuples) {
+  auto array = vtkSmartPointer<Array>::New();
+  array->SetName(name.c_str());
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(vtkIdType(tuples));
+  return array;
+}
+
+// `values` is already in VTK's cell or point order.
+vtkSmartPointer<vtkDataArray> to_vtk(const DataArray& a, const std::vector<double>& values) {
+  const std::size_t tuples = values.size() / a.components;
+  if (a.integer) {
+    auto array = new_array<vtkIntArray>(a.name, a.components, tuples);
+    for (std::size_t i = 0; i < values.size(); ++i) array->SetValue(vtkIdType(i), int(values[i]));
+    return array;
+  }
+  auto array = new_array<vtkDoubleArray>(a.name, a.components, tuples);
+  std::copy(values.begin(), values.end(), array->GetPointer(0));
+  return array;
+}
+
+// Cell values in VTK order: line cells first (padded with -1 for per-face arrays).
+std::vector<double> cell_order(const DataArray& a, const CellCounts& cells) {
+  const std::size_t c = std::size_t(a.components);
+  const auto faces_end = a.values.begin() + std::ptrdiff_t(cells.faces * c);
+  std::vector<double> out;
+  out.reserve(cells.total() * c);
+  if (a.values.size() == cells.total() * c && cells.lines() > 0)
+    out.insert(out.end(), faces_end, a.values.end());
+  else
+    out.insert(out.end(), cells.lines() * c, -1.0);
+  out.insert(out.end(), a.values.begin(), faces_end);
+  return out;
+}
+
+vtkSmartPointer<vtkIdTypeArray> id_array(const std::vector<vtkIdType>& ids) {
+  auto array = vtkSmartPointer<vtkIdTypeArray>::New();
+  array->SetNumberOfValues(vtkIdType(ids.size()));
+  std::copy(ids.begin(), ids.end(), array->GetPointer(0));
+  return array;
+}
+
+vtkSmartPointer<vtkCellArray> cell_array(const std::vector<vtkIdType>& offsets,
+                                         const std::vector<vtkIdType>& connectivity) {
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(id_array(offsets), id_array(connectivity));
+  return cells;
+}
+
+vtkSmartPointer<vtkPoints> points(const MeshData& mesh) {
+  auto coords = new_array<vtkDoubleArray>("Points", 3, std::size_t(mesh.vertex_count()));
+  std::copy(mesh.positions.begin(), mesh.positions.end(), coords->GetPointer(0));
+  auto pts = vtkSmartPointer<vtkPoints>::New();
+  pts->SetData(coords);
+  return pts;
+}
+
+// Polylines, then one two-point line per crease edge.
+vtkSmartPointer<vtkCellArray> lines(const MeshData& mesh) {
+  std::vector<vtkIdType> offsets(mesh.line_offsets.begin(), mesh.line_offsets.end());
+  std::vector<vtkIdType> connectivity(mesh.line_vertices.begin(), mesh.line_vertices.end());
+  for (const CreaseTag& c : mesh.creases) {
+    connectivity.insert(connectivity.end(), {c.v0, c.v1});
+    offsets.push_back(vtkIdType(connectivity.size()));
+  }
+  return cell_array(offsets, connectivity);
+}
+
+void add_feature_arrays(vtkPolyData& poly, const MeshData& mesh, const CellCounts& cells) {
+  auto sharpness = new_array<vtkDoubleArray>("sharpness", 1, cells.total());
+  auto kind = new_array<vtkIntArray>("cell_kind", 1, cells.total());
+  sharpness->FillValue(0.0);
+  kind->FillValue(0);  // faces, which come after the line cells
+  for (std::size_t i = 0; i < cells.polylines; ++i) kind->SetValue(vtkIdType(i), 1);
+  for (std::size_t i = 0; i < cells.creases; ++i) {
+    const vtkIdType cell = vtkIdType(cells.polylines + i);
+    kind->SetValue(cell, 2);
+    sharpness->SetValue(cell, mesh.creases[i].sharpness);
+  }
+  poly.GetCellData()->AddArray(sharpness);
+  poly.GetCellData()->AddArray(kind);
+
+  auto corners = new_array<vtkDoubleArray>("corner_sharpness", 1, std::size_t(mesh.vertex_count()));
+  corners->FillValue(0.0);
+  for (const CornerTag& c : mesh.corners) corners->SetValue(c.v, c.sharpness);
+  poly.GetPointData()->AddArray(corners);
+}
+
+// ParaView reads "TimeValue" as the time of a single file; "level" says it plainly.
+void add_level_fields(vtkPolyData& poly, int level) {
+  auto level_array = new_array<vtkIntArray>("level", 1, 1);
+  level_array->SetValue(0, level);
+  auto time = new_array<vtkDoubleArray>("TimeValue", 1, 1);
+  time->SetValue(0, level);
+  poly.GetFieldData()->AddArray(level_array);
+  poly.GetFieldData()->AddArray(time);
+}
+
+}  // namespace
+
+void check_output_level(const OutputLevel& level, std::string_view context) {
+  if (!level.mesh) throw Error(fmt::format("{}: level {} has no mesh", context, level.level));
+  validate_mesh_data(*level.mesh, context);
+  const CellCounts cells = cell_counts(*level.mesh);
+  const std::size_t vertices = std::size_t(level.mesh->vertex_count());
+  check_arrays(level.point_data, kReservedPointArrays, "point", vertices, vertices, context);
+  check_arrays(level.cell_data, kReservedCellArrays, "face", cells.faces, cells.total(), context);
+}
+
+vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level) {
+  const MeshData& mesh = *level.mesh;
+  const CellCounts cells = cell_counts(mesh);
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points(mesh));
+  poly->SetPolys(cell_array({mesh.face_offsets.begin(), mesh.face_offsets.end()},
+                            {mesh.face_vertices.begin(), mesh.face_vertices.end()}));
+  poly->SetLines(lines(mesh));
+  for (const DataArray& a : level.point_data) poly->GetPointData()->AddArray(to_vtk(a, a.values));
+  for (const DataArray& a : level.cell_data)
+    poly->GetCellData()->AddArray(to_vtk(a, cell_order(a, cells)));
+  add_feature_arrays(*poly, mesh, cells);
+  add_level_fields(*poly, level.level);
+  return poly;
+}
+
+void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path& shown) {
+  std::string errors;
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetClientData(&errors);
+  observer->SetCallback([](vtkObject*, unsigned long, void* text, void* message) {
+    auto& errors = *static_cast<std::string*>(text);
+    if (errors.empty() && message) errors = static_cast<const char*>(message);
+  });
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->AddObserver(vtkCommand::ErrorEvent, observer);
+  writer->SetInputData(&poly);
+  writer->SetFileName(file.c_str());
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();  // raw binary, not base64
+  writer->SetCompressorTypeToZLib();
+  writer->SetHeaderTypeToUInt64();  // blocks over 4 GB on large levels
+  if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors.empty())
+    throw Error(fmt::format("cannot write '{}': VTK reports: {}", shown.string(),
+                            errors.empty() ? "an unknown error" : errors));
+}
+
+}  // namespace subdiv::io_detail

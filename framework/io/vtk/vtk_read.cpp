@@ -1,0 +1,184 @@
+// VTK PolyData: XML (.vtp) and legacy (.vtk). Polygons become faces, lines become
+// polylines, triangle strips are split into triangles; vertex cells carry no surface and
+// are skipped. Points keep their order. Crease and corner tags come back from the arrays
+// write_vtp adds (cell_kind, sharpness, corner_sharpness).
+#include <algorithm>
+#include <cctype>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataReader.h>
+#include <vtkSmartPointer.h>
+#include <vtkExecutive.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include "framework/io/formats.h"
+#include "framework/io/vtk/vtk_read.h"
+#include "framework/io/text_input.h"
+#include "framework/util/error.h"
+
+namespace subdiv::io_detail {
+namespace fs = std::filesystem;
+
+namespace {
+
+// VTK reports failures through events, not return values. The observer collects the
+// first message from the reader, its pipeline executive and its XML parser, so that the
+// caller can report it (and the console stays free of VTK's raw output).
+class ErrorObserver {
+public:
+  explicit ErrorObserver(vtkAlgorithm& reader) {
+    callback_->SetClientData(this);
+    callback_->SetCallback([](vtkObject*, unsigned long, void* self, void* message) {
+      auto& text = static_cast<ErrorObserver*>(self)->text_;
+      if (text.empty() && message) text = readable(static_cast<const char*>(message));
+    });
+    for (vtkObject* object : {static_cast<vtkObject*>(&reader),
+                              static_cast<vtkObject*>(reader.GetExecutive())}) {
+      object->AddObserver(vtkCommand::ErrorEvent, callback_);
+      object->AddObserver(vtkCommand::WarningEvent, callback_);
+    }
+    if (auto* xml = vtkXMLReader::SafeDownCast(&reader)) xml->SetParserErrorObserver(callback_);
+  }
+  const std::string& text() const { return text_; }
+
+private:
+  // "ERROR: In file.cxx, line 12\nvtkClass (0x1234): what went wrong\n\n" -> "what went wrong"
+  static std::string readable(std::string message) {
+    if (message.rfind("ERROR: In ", 0) == 0 || message.rfind("Warning: In ", 0) == 0)
+      message.erase(0, message.find('\n') + 1);
+    if (const std::size_t object_end = message.find("): "); object_end != std::string::npos)
+      message.erase(0, object_end + 3);
+    while (!message.empty() && std::isspace(static_cast<unsigned char>(message.back())))
+      message.pop_back();
+    std::replace(message.begin(), message.end(), '\n', ' ');
+    return message;
+  }
+
+  vtkNew<vtkCallbackCommand> callback_;
+  std::string text_;
+};
+
+[[noreturn]] void fail(const fs::path& file, std::string_view problem) {
+  throw Error(fmt::format("cannot read '{}': {}", file.string(), problem));
+}
+
+vtkSmartPointer<vtkPolyData> load_xml(const fs::path& file) {
+  vtkNew<vtkXMLPolyDataReader> reader;
+  if (!reader->CanReadFile(file.c_str()))
+    fail(file, "it is not a VTK XML PolyData file (expected <VTKFile type=\"PolyData\">)");
+  ErrorObserver errors(*reader);
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  if (!errors.text().empty() || reader->GetErrorCode() != 0)
+    fail(file, fmt::format("VTK reports: {}", errors.text()));
+  return reader->GetOutput();
+}
+
+vtkSmartPointer<vtkPolyData> load_legacy(const fs::path& file) {
+  vtkNew<vtkPolyDataReader> reader;
+  ErrorObserver errors(*reader);
+  reader->SetFileName(file.c_str());
+  if (!reader->IsFilePolyData())
+    fail(file, "it is not a legacy VTK file with POLYDATA (other dataset types are not "
+               "surfaces this tool refines)");
+  reader->Update();
+  if (!errors.text().empty() || reader->GetErrorCode() != 0)
+    fail(file, fmt::format("VTK reports: {}", errors.text()));
+  return reader->GetOutput();
+}
+
+// Appends every cell of `cells` to a CSR pair.
+void append_cells(vtkCellArray* cells, std::vector<Index>& offsets, std::vector<Index>& indices) {
+  auto it = vtk::TakeSmartPointer(cells->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
+    vtkIdType size;
+    const vtkIdType* ids;
+    it->GetCurrentCell(size, ids);
+    indices.insert(indices.end(), ids, ids + size);
+    offsets.push_back(Index(indices.size()));
+  }
+}
+
+// Strip p0 p1 p2 p3 ... gives triangles (p0 p1 p2), (p2 p1 p3), ...: every second one is
+// flipped so that all keep the strip's orientation.
+void append_strips(vtkCellArray* strips, MeshData& mesh) {
+  auto it = vtk::TakeSmartPointer(strips->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
+    vtkIdType size;
+    const vtkIdType* ids;
+    it->GetCurrentCell(size, ids);
+    for (vtkIdType i = 0; i + 2 < size; ++i) {
+      const bool odd = i % 2 != 0;
+      mesh.face_vertices.insert(mesh.face_vertices.end(),
+                                {Index(ids[odd ? i + 1 : i]), Index(ids[odd ? i : i + 1]),
+                                 Index(ids[i + 2])});
+      mesh.face_offsets.push_back(Index(mesh.face_vertices.size()));
+    }
+  }
+}
+
+// Line cells are polylines, except in files from write_vtp, which marks crease edges with
+// cell_kind 2 and stores their sharpness; reading those back keeps .vtp lossless.
+void append_lines(vtkPolyData& poly, MeshData& mesh) {
+  vtkDataArray* kind = poly.GetCellData()->GetArray("cell_kind");
+  vtkDataArray* sharpness = poly.GetCellData()->GetArray("sharpness");
+  const bool tagged = kind && sharpness;
+  vtkIdType cell = poly.GetNumberOfVerts();  // VTK numbers cells: verts, lines, polys, strips
+  auto it = vtk::TakeSmartPointer(poly.GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell) {
+    vtkIdType size;
+    const vtkIdType* ids;
+    it->GetCurrentCell(size, ids);
+    if (tagged && size == 2 && kind->GetTuple1(cell) == 2) {
+      mesh.creases.push_back({Index(ids[0]), Index(ids[1]), sharpness->GetTuple1(cell)});
+      continue;
+    }
+    mesh.line_vertices.insert(mesh.line_vertices.end(), ids, ids + size);
+    mesh.line_offsets.push_back(Index(mesh.line_vertices.size()));
+  }
+}
+
+void restore_corners(vtkPolyData& poly, MeshData& mesh) {
+  vtkDataArray* corners = poly.GetPointData()->GetArray("corner_sharpness");
+  if (!corners) return;
+  for (vtkIdType v = 0; v < poly.GetNumberOfPoints(); ++v)
+    if (const double s = corners->GetTuple1(v); s != 0) mesh.corners.push_back({Index(v), s});
+}
+
+MeshData to_mesh_data(vtkPolyData& poly) {
+  MeshData mesh;
+  const vtkIdType n = poly.GetNumberOfPoints();
+  mesh.positions.resize(std::size_t(n) * 3);
+  for (vtkIdType v = 0; v < n; ++v) poly.GetPoint(v, &mesh.positions[3 * v]);
+  append_cells(poly.GetPolys(), mesh.face_offsets, mesh.face_vertices);
+  append_strips(poly.GetStrips(), mesh);
+  append_lines(poly, mesh);
+  restore_corners(poly, mesh);
+  return mesh;
+}
+
+}  // namespace
+
+MeshData read_vtk_polydata(const fs::path& file) {
+  require_readable(file);
+  const auto poly = lowercase_extension(file) == ".vtp" ? load_xml(file) : load_legacy(file);
+  if (!poly) fail(file, "VTK produced no data");
+  if (poly->GetNumberOfPoints() > std::numeric_limits<Index>::max())
+    fail(file, "it has more points than SubdivKit's 32-bit indices hold");
+  return to_mesh_data(*poly);
+}
+
+}  // namespace subdiv::io_detail

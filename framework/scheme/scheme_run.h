@@ -1,0 +1,14 @@
+#pragma once
+// A scheme applied for a number of levels: what `--scheme a:1,b:3` says, and what the
+// engine refines with. Runs apply in order, so seed 001's two-step Catmull-Clark is
+// {catmull-clark-shape, 1}, {catmull-clark, 3}.
+namespace subdiv {
+
+struct Scheme;
+
+struct SchemeRun {
+  const Scheme* scheme = nullptr;
+  int levels = 0;
+};
+
+}  // namespace subdiv

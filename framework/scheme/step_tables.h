@@ -1,0 +1,13 @@
+#pragma once
+// A scheme step's rules ready for the engine: its rule table compiled (rules/weight_tables.h)
+// and the scheme's decisions about boundaries and creases applied — which curve scheme they
+// follow, and what smoothing passes do with them.
+#include "framework/rules/weight_tables.h"
+#include "framework/scheme/scheme.h"
+
+namespace subdiv {
+
+// max_n: the largest valence, max_k: the largest face size on the level; level: l.
+WeightTables step_weight_tables(const Scheme& scheme, const StepRules& step, int max_n, int max_k, int level);
+
+}  // namespace subdiv
