@@ -1,16 +1,47 @@
 #!/usr/bin/env bash
 # Installs every Debian package SubdivKit needs to build, test and benchmark.
 # Run as root on Debian 12. Safe to run again: apt skips what is installed.
+#
+# VTK (for .vtp/.vtk/.pvd files) comes from one of two packages, and this script picks the
+# one that does not break what is installed: Debian's VTK (libvtk9-dev) depends on
+# python3-vtk9, which conflicts with ParaView's Python (python3-paraview, what pvpython and
+# pvbatch need). On a machine with ParaView, SubdivKit builds against the VTK inside
+# ParaView's development files (paraview-dev) instead. Force a choice with
+# SUBDIV_VTK=debian or SUBDIV_VTK=paraview.
 set -euo pipefail
+
+installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
+
+vtk_package() {
+  case "${SUBDIV_VTK:-auto}" in
+    debian) echo libvtk9-dev; return ;;
+    paraview) echo paraview-dev; return ;;
+    auto) ;;
+    *) echo "install-deps.sh: SUBDIV_VTK must be debian, paraview or auto (got '${SUBDIV_VTK}')" >&2; exit 2 ;;
+  esac
+  if installed libvtk9-dev; then echo libvtk9-dev
+  elif installed python3-paraview || installed paraview || installed paraview-dev; then echo paraview-dev
+  else echo libvtk9-dev
+  fi
+}
+
+vtk=$(vtk_package)
+if [ "$vtk" = libvtk9-dev ] && installed python3-paraview; then
+  echo "install-deps.sh: SUBDIV_VTK=debian would remove ParaView's Python (python3-paraview conflicts with" \
+       "python3-vtk9, which libvtk9-dev needs); use SUBDIV_VTK=paraview or leave it unset" >&2
+  exit 2
+fi
+echo "VTK: $vtk"
+
 packages=(
   build-essential cmake ninja-build pkg-config
   libopenmesh-dev nlohmann-json3-dev libfmt-dev doctest-dev
-  libvtk9-dev libeigen3-dev libmuparser-dev libcli11-dev libtbb-dev
+  "$vtk" libeigen3-dev libmuparser-dev libcli11-dev libtbb-dev
   libosd-dev
 )
 missing=()
 for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  installed "$p" || missing+=("$p")
 done
 if [ ${#missing[@]} -gt 0 ]; then
   echo "installing: ${missing[*]}"
