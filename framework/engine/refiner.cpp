@@ -47,7 +47,7 @@ struct StepInputs {
 StepInputs prepare_step(const Scheme& scheme, const StepRules& step, const Level& parent, int level,
                         const RefineOptions& options) {
   return {step_weight_tables(scheme, step, max_valence(parent), parent.max_face_size(), level),
-          classify_features(parent, {options.boundary, options.crease_method})};
+          classify_features(parent, options.features)};
 }
 
 StepContext step_context(const Scheme& scheme, const StepRules& step, const StepInputs& inputs, const Level& parent,
@@ -106,7 +106,7 @@ std::shared_ptr<DirectStep> direct_step(const Scheme& scheme, const Hierarchy& h
     throw Error(fmt::format("{}: a non-linear scheme has one step (its rule does the whole level)", scheme.path));
   auto direct = std::make_shared<DirectStep>();
   direct->rule = scheme.steps.front().nonlinear;
-  direct->features = classify_features(h.levels[l], {options.boundary, options.crease_method});
+  direct->features = classify_features(h.levels[l], options.features);
   direct->features_refined = h.features_refined[l];
   direct->level = level;
   return direct;
@@ -133,7 +133,7 @@ std::vector<double> run_direct_step(const DirectStep& direct, const Hierarchy& h
 
 Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const RefineOptions& options) {
   const std::vector<const Scheme*> per_level = schemes_per_level(runs);
-  tag_boundary_corners(base, options.boundary);
+  tag_boundary_corners(base, options.features.boundary);
   Hierarchy h;
   h.levels.push_back(std::move(base));
   for (size_t l = 0; l < per_level.size(); ++l) {
@@ -141,7 +141,7 @@ Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const Ref
     if (l == 0 || per_level[l - 1] != per_level[l]) check_face_sizes(scheme, h.levels.back());
     SplitResult step = split(scheme.split(), h.levels.back(), options.first_step + int(l));
     if (splitter_info(scheme.split()).engine_propagates_tags)
-      propagate_tags(h.levels.back(), step, options.crease_method);
+      propagate_tags(h.levels.back(), step, options.features.crease_method);
     h.levels.push_back(std::move(step.child));
     h.origins.push_back(std::move(step.origins));
     h.features_refined.push_back(step.features_refined);

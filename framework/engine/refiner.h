@@ -18,8 +18,7 @@ namespace subdiv {
 
 struct RefineOptions {
   int levels = 1;
-  BoundaryInterpolation boundary = BoundaryInterpolation::EdgesAndCorners;
-  CreaseMethod crease_method = CreaseMethod::Uniform;
+  FeatureOptions features;  // boundary interpolation and crease method, as in OpenSubdiv
   int threads = 0;  // 0: all cores
   // How many steps the input mesh has already been through (schemes whose steps alternate,
   // such as sqrt3's boundary trisection, count from the original mesh; also the level l

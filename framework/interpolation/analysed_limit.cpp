@@ -10,8 +10,7 @@ namespace subdiv {
 AnalysedLimit::AnalysedLimit(std::shared_ptr<const Scheme> scheme, const FeatureOptions& features)
     : scheme_(std::move(scheme)) {
   LimitOptions o;
-  o.boundary = features.boundary;
-  o.crease_method = features.crease_method;
+  o.features = features;
   limits_ = std::make_shared<SchemeLimits>(*scheme_, o);
 }
 

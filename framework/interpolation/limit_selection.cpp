@@ -32,8 +32,7 @@ Registry& registry() {
 RefineOptions refine_options(const LimitSelectionOptions& o, int levels, int first_step) {
   RefineOptions r;
   r.levels = levels;
-  r.boundary = o.features.boundary;
-  r.crease_method = o.features.crease_method;
+  r.features = o.features;
   r.first_step = first_step;
   return r;
 }

@@ -120,7 +120,7 @@ void run_curve(const AnalyzeArgs& a) {
 void run_surface(const AnalyzeArgs& a) {
   const auto scheme = load_scheme(a.scheme, overrides_of(a.params));
   SurfaceAnalysisOptions options;
-  options.boundary = a.boundary_mode == "none"    ? BoundaryInterpolation::None
+  options.features.boundary = a.boundary_mode == "none"    ? BoundaryInterpolation::None
                      : a.boundary_mode == "edges" ? BoundaryInterpolation::EdgesOnly
                                                   : BoundaryInterpolation::EdgesAndCorners;
   options.max_ring = a.max_ring;

@@ -52,10 +52,10 @@ RefineOptions refine_options(const RefineArgs& a) {
   RefineOptions o;
   o.levels = a.levels;
   o.threads = a.threads;
-  o.boundary = a.boundary == "none" ? BoundaryInterpolation::None
+  o.features.boundary = a.boundary == "none" ? BoundaryInterpolation::None
                : a.boundary == "edges" ? BoundaryInterpolation::EdgesOnly
                                        : BoundaryInterpolation::EdgesAndCorners;
-  o.crease_method = a.crease_method == "chaikin" ? CreaseMethod::Chaikin : CreaseMethod::Uniform;
+  o.features.crease_method = a.crease_method == "chaikin" ? CreaseMethod::Chaikin : CreaseMethod::Uniform;
   o.first_step = a.start_level;
   return o;
 }
@@ -106,7 +106,7 @@ void run(const RefineArgs& a) {
     // (framework/analysis/surface/limit_evaluation.h); the scheme that would refine it next decides.
     progress.say("limit positions and normals");
     LimitOptions lo;
-    lo.boundary = options.boundary, lo.crease_method = options.crease_method;
+    lo.features = options.features;
     lo.first_step = options.first_step + seq.total_levels;
     const LimitResult limit = limit_positions(*seq.schemes.back(), h.levels.back(), positions.back(), lo);
     positions.back() = limit.positions;
@@ -122,7 +122,7 @@ void run(const RefineArgs& a) {
                  fmt::join(limit.approximate_reasons, "; "));
   }
   progress.say(fmt::format("writing {}", a.output));
-  write_levels(a.output, h, positions, {options.boundary, options.crease_method}, limit_data);
+  write_levels(a.output, h, positions, options.features, limit_data);
   progress.done();
   if (!a.quiet) {
     for (const auto& note : notes) fmt::print("{}\n", note);

@@ -179,8 +179,7 @@ struct SchemeLimits::Impl {
 
   SurfaceAnalysisOptions analysis_options() const {
     SurfaceAnalysisOptions so;
-    so.boundary = options.boundary;
-    so.crease_method = options.crease_method;
+    so.features = options.features;
     so.characteristic_map = false;
     return so;
   }
@@ -236,7 +235,7 @@ struct SchemeLimits::Impl {
       // Dual scheme: one step turns the vertex into its V-face; analyse that face in the
       // refined patch and pull its masks back through the step's stencils.
       RefineOptions ro;
-      ro.levels = 1, ro.first_step = c.first_step, ro.boundary = options.boundary, ro.crease_method = options.crease_method;
+      ro.levels = 1, ro.first_step = c.first_step, ro.features = options.features;
       const Hierarchy h = refine(scheme, p.level, ro);
       const Index g = vertex_face(p.level, h.levels[1], h.origins[0], p.centre);
       if (g == kNone) throw Error(fmt::format("the {} becomes no face in a dual step", c.describe()));
@@ -377,7 +376,7 @@ struct SchemeLimits::Impl {
 
   RefineOptions one_step(int step) const {
     RefineOptions ro;
-    ro.levels = 1, ro.first_step = step, ro.boundary = options.boundary, ro.crease_method = options.crease_method;
+    ro.levels = 1, ro.first_step = step, ro.features = options.features;
     return ro;
   }
 

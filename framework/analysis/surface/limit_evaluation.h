@@ -33,8 +33,7 @@ namespace subdiv {
 struct Scheme;
 
 struct LimitOptions {
-  BoundaryInterpolation boundary = BoundaryInterpolation::EdgesAndCorners;
-  CreaseMethod crease_method = CreaseMethod::Uniform;
+  FeatureOptions features;  // boundary interpolation and crease method, as in OpenSubdiv
   int first_step = 0;  // how many steps made the level (sqrt3's alternation, formulas' l)
   int max_steps = 12;  // refinements tried before a vertex is given an approximation
 };

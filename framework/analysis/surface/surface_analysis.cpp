@@ -710,8 +710,7 @@ SurfaceAnalysis analyse_patch(const Scheme& scheme, const Patch& patch, const Lo
   out.path = scheme.path;
   out.config = config;
   AnalysisRun cx{scheme, patch, config, options, {}, analysis_steps(scheme), {}, {}, {}};
-  cx.refine.boundary = options.boundary;
-  cx.refine.crease_method = options.crease_method;
+  cx.refine.features = options.features;
   cx.refine.first_step = config.first_step;
   cx.refine.threads = 1;
   out.steps = cx.steps;

@@ -31,8 +31,7 @@ namespace subdiv {
 struct Scheme;
 
 struct SurfaceAnalysisOptions {
-  BoundaryInterpolation boundary = BoundaryInterpolation::EdgesAndCorners;
-  CreaseMethod crease_method = CreaseMethod::Uniform;
+  FeatureOptions features;  // boundary interpolation and crease method, as in OpenSubdiv
   int max_ring = 5;                   // largest k-ring tried as invariant neighbourhood
   int patch_rings = 0;                // rings of the synthetic patch; 0: max_ring + 3
   bool characteristic_map = true;     // compute and check it

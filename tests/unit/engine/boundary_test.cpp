@@ -33,7 +33,7 @@ TEST_CASE("boundaries follow the cubic B-spline: vertex 1/8, 3/4, 1/8; edge 1/2,
 
 TEST_CASE("--boundary edges: one-face boundary corners follow the curve rule") {
   RefineOptions options;
-  options.boundary = BoundaryInterpolation::EdgesOnly;
+  options.features.boundary = BoundaryInterpolation::EdgesOnly;
   const auto r = test::refine_mesh(test::grid(2, 2), "catmull-clark", 1, options);
   const auto& t = r.hierarchy.stencils[0];
   const Index corner = gid(0, 0, 2);

@@ -30,7 +30,7 @@ Hierarchy refine_features(const FeatureMesh& m, int levels, CreaseMethod method 
                           const std::string& scheme = "catmull-clark") {
   RefineOptions o;
   o.levels = levels;
-  o.crease_method = method;
+  o.features.crease_method = method;
   return refine(*load_scheme(scheme), level_from_mesh(m.mesh, m.name), o);
 }
 
@@ -221,7 +221,7 @@ TEST_CASE("sharpness decrement and the Chaikin rule match Sdc::Crease's formulas
     // Propagated to the child level: the half of edge e3 next to (3, 3).
     RefineOptions o;
     o.levels = 1;
-    o.crease_method = chaikin;
+    o.features.crease_method = chaikin;
     const Hierarchy h = refine_topology(*load_scheme("catmull-clark"), L, o);
     CHECK(h.levels[1].edge_sharp(find_edge(h.levels[1], at(3, 3), L.vertex_count + e3)) ==
           child_edge_sharpness(L, e3, at(3, 3), chaikin));

@@ -113,8 +113,7 @@ void check_agreement(const FeatureMesh& fm, const std::string& scheme_name, cons
   const auto scheme = load_scheme(scheme_name);
   RefineOptions options;
   options.levels = kLevels;
-  options.boundary = setup.boundary;
-  options.crease_method = setup.method;
+  options.features = {setup.boundary, setup.method};
   const Hierarchy h = refine(*scheme, level_from_mesh(fm.mesh, fm.name), options);
   const auto osd = subdiv_test::osd_refine(to_osd(fm.mesh), osd_options(scheme_name, setup), kLevels);
   std::vector<double> direct = fm.mesh.positions;  // step_values: no stencil tables
