@@ -21,17 +21,29 @@ if(SUBDIV_VTK_PROVIDER STREQUAL "auto" OR SUBDIV_VTK_PROVIDER STREQUAL "debian")
   endif()
 endif()
 if(NOT SUBDIV_VTK_PROVIDER_FOUND AND (SUBDIV_VTK_PROVIDER STREQUAL "auto" OR SUBDIV_VTK_PROVIDER STREQUAL "paraview"))
-  # ParaView exports its VTK modules as VTK::* targets from its own package config.
-  find_package(ParaView QUIET)
-  if(ParaView_FOUND AND TARGET VTK::CommonCore AND TARGET VTK::IOXML AND TARGET VTK::IOLegacy)
-    set(SUBDIV_VTK_PROVIDER_FOUND paraview)
+  # ParaView ships its VTK's package config in cmake/paraview-<version>/vtk. Asking that
+  # config for our four modules (rather than find_package(ParaView), which looks for the
+  # dependencies of every ParaView module: Qt, MPI, HDF5, ...) needs only their few
+  # dependencies' -dev packages (scripts/install-deps.sh installs them).
+  file(GLOB subdiv_paraview_vtk_dirs
+    ${ParaView_DIR}/vtk
+    /usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/paraview-*/vtk
+    /usr/local/lib/cmake/paraview-*/vtk /usr/local/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/paraview-*/vtk)
+  if(subdiv_paraview_vtk_dirs)
+    list(SORT subdiv_paraview_vtk_dirs COMPARE NATURAL ORDER DESCENDING)  # the newest ParaView
+    list(GET subdiv_paraview_vtk_dirs 0 subdiv_paraview_vtk_dir)
+    find_package(VTK CONFIG QUIET PATHS ${subdiv_paraview_vtk_dir} NO_DEFAULT_PATH
+      COMPONENTS ${subdiv_vtk_components})
+    if(VTK_FOUND)
+      set(SUBDIV_VTK_PROVIDER_FOUND paraview)
+    endif()
   endif()
 endif()
 
 if(SUBDIV_VTK_PROVIDER_FOUND)
   set(SUBDIV_HAVE_VTK TRUE)
   set(SUBDIV_VTK_LIBRARIES VTK::CommonCore VTK::CommonDataModel VTK::IOXML VTK::IOLegacy)
-  message(STATUS "VTK file IO against ${SUBDIV_VTK_PROVIDER_FOUND}'s VTK")
+  message(STATUS "VTK file IO against ${SUBDIV_VTK_PROVIDER_FOUND}'s VTK ${VTK_VERSION} (${VTK_DIR})")
 else()
   message(FATAL_ERROR
     "No VTK found (SUBDIV_VTK_PROVIDER=${SUBDIV_VTK_PROVIDER}). Install one of them: "

@@ -32,11 +32,15 @@ if [ "$vtk" = libvtk9-dev ] && installed python3-paraview; then
   exit 2
 fi
 echo "VTK: $vtk"
+vtk_packages=("$vtk")
+# ParaView's VTK config looks for the libraries its IO modules were built with; Debian's
+# libvtk9-dev pulls them in itself.
+[ "$vtk" = paraview-dev ] && vtk_packages+=(libutfcpp-dev liblzma-dev liblz4-dev libdouble-conversion-dev zlib1g-dev libexpat1-dev)
 
 packages=(
   build-essential cmake ninja-build pkg-config
   libopenmesh-dev nlohmann-json3-dev libfmt-dev doctest-dev
-  "$vtk" libeigen3-dev libmuparser-dev libcli11-dev libtbb-dev
+  "${vtk_packages[@]}" libeigen3-dev libmuparser-dev libcli11-dev libtbb-dev
   libosd-dev
 )
 missing=()
