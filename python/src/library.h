@@ -20,6 +20,7 @@
 #include "framework/plugin/plugin_loader.h"
 #include "framework/scheme/refiner.h"
 #include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_loader.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/scheme/scheme_sequence.h"
 #include "framework/stencil/stencil_table.h"

@@ -37,7 +37,7 @@ subdiv::ParameterOverrides overrides_from(const py::kwargs& kwargs) {
     } else {
       // Floats (and NumPy scalars) at full precision: repr() round-trips a double.
       try {
-        out[name] = py::repr(py::float_(value));
+        out[name] = py::repr(py::float_(py::reinterpret_borrow<py::object>(value)));
       } catch (const py::error_already_set&) {
         throw subdiv::Error(fmt::format("parameter {}={}: give a number or a string", name,
                                         std::string(py::repr(value))));
