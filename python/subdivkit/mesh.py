@@ -67,17 +67,17 @@ def _as_sharpness(values, count, what):
     return np.ascontiguousarray(a, dtype=np.float64)
 
 
-def _as_cells(cells, offsets, what):
+def _as_cells(cells, offsets, what, offsets_name):
     """Polygons or polylines as CSR (indices, offsets) from any of the accepted forms."""
     if cells is None:
         if offsets is not None:
-            raise Error(f"{what}_offsets given without {what}")
+            raise Error(f"{offsets_name} given without {what}")
         return np.zeros(0, dtype=np.int32), np.zeros(1, dtype=np.int32)
     if offsets is not None:  # flat indices + offsets
         indices = _as_indices(cells, what, "flat indices with offsets")
-        offsets = _as_indices(offsets, f"{what}_offsets")
+        offsets = _as_indices(offsets, offsets_name)
         if offsets.size == 0 or offsets[0] != 0 or offsets[-1] != indices.size or np.any(np.diff(offsets) < 0):
-            raise Error(f"{what}_offsets: expected a rising sequence from 0 to {indices.size} "
+            raise Error(f"{offsets_name}: expected a rising sequence from 0 to {indices.size} "
                         f"(the number of indices)")
         return indices, offsets
     a = cells if isinstance(cells, np.ndarray) else None
@@ -133,8 +133,8 @@ class Mesh:
                  name="mesh"):
         self.name = str(name)
         self.points = _as_points(points, f"{self.name}.points")
-        self.face_indices, self.face_offsets = _as_cells(faces, face_offsets, "faces")
-        self.line_indices, self.line_offsets = _as_cells(lines, line_offsets, "lines")
+        self.face_indices, self.face_offsets = _as_cells(faces, face_offsets, "faces", "face_offsets")
+        self.line_indices, self.line_offsets = _as_cells(lines, line_offsets, "lines", "line_offsets")
         pairs = np.zeros((0, 2), dtype=np.int32) if creases is None else np.asarray(creases)
         if pairs.size == 0:
             pairs = np.zeros((0, 2), dtype=np.int32)
