@@ -78,7 +78,7 @@ def main(png):
         moduli = a.spectrum(6)
         for j in range(1, moduli.shape[1]):
             ax.plot(a.valences, moduli[:, j], "o", ms=4, color="C0" if j <= 2 else "0.55",
-                    label="$|\\lambda_1| = |\\lambda_2|$" if j == 1 else ("$|\\lambda_j|, j \\geq 3$" if j == 3 else None))
+                    label="$|\\lambda_1|, |\\lambda_2|$" if j == 1 else ("$|\\lambda_j|, j \\geq 3$" if j == 3 else None))
         ax.plot(a.valences, a.subdominant ** 2, "-", color="C3", label="$\\lambda_1^2$")
         for n in a.valences[~a.c1]:
             ax.axvspan(n - 0.5, n + 0.5, color="C1", alpha=0.15, lw=0)
