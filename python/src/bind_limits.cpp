@@ -32,11 +32,11 @@ LimitOperator limit_operator(const subdiv::MeshData& mesh, const std::string& na
   return {choice.evaluator->limit_stencils(base, start_level), choice.description};
 }
 
-py::dict limit_positions(py::handle mesh, py::handle scheme, const std::string& boundary,
+py::dict limit_positions(py::handle mesh, py::handle scheme, py::handle params, const std::string& boundary,
                          const std::string& crease_method, int start_level) {
   subdiv::MeshData m = mesh_from_python(mesh);
   const std::string name = mesh_name(mesh);
-  const SchemeChoice c = scheme_choice_from(scheme, 1);
+  const SchemeChoice c = scheme_choice_from(scheme, 1, params);
   py::dict out;
   if (c.is_curve()) {
     std::vector<double> points;
@@ -76,11 +76,11 @@ double bounding_diagonal(const std::vector<double>& p) {
   return std::sqrt(d2);
 }
 
-py::dict interpolate(py::handle mesh, py::handle scheme, py::handle moving_mask, double tolerance,
+py::dict interpolate(py::handle mesh, py::handle scheme, py::handle params, py::handle moving_mask, double tolerance,
                      int max_iterations, const std::string& boundary, int threads) {
   subdiv::MeshData m = mesh_from_python(mesh);
   const std::string name = mesh_name(mesh);
-  const SchemeChoice c = scheme_choice_from(scheme, 1);
+  const SchemeChoice c = scheme_choice_from(scheme, 1, params);
   std::vector<std::uint8_t> moving;
   if (!moving_mask.is_none()) {
     for (Index v : indices_from(moving_mask, "select")) moving.push_back(v != 0);
@@ -119,9 +119,9 @@ py::dict interpolate(py::handle mesh, py::handle scheme, py::handle moving_mask,
 }  // namespace
 
 void bind_limits(py::module_& m) {
-  m.def("_limit_positions", &limit_positions, py::arg("mesh"), py::arg("scheme"), py::arg("boundary"),
+  m.def("_limit_positions", &limit_positions, py::arg("mesh"), py::arg("scheme"), py::arg("params"), py::arg("boundary"),
         py::arg("crease_method"), py::arg("start_level"), "Limit points (and normals) as arrays.");
-  m.def("_interpolate", &interpolate, py::arg("mesh"), py::arg("scheme"), py::arg("moving"), py::arg("tolerance"),
+  m.def("_interpolate", &interpolate, py::arg("mesh"), py::arg("scheme"), py::arg("params"), py::arg("moving"), py::arg("tolerance"),
         py::arg("max_iterations"), py::arg("boundary"), py::arg("threads"),
         "Progressive interpolation as arrays (subdivkit.interpolate wraps them).");
 }

@@ -114,13 +114,13 @@ std::vector<RefinedLevel> refine_curve(RefineInput& in, const subdiv::CurveSchem
   return out;
 }
 
-py::list refine(py::handle mesh, py::handle scheme, int levels, const std::string& boundary,
+py::list refine(py::handle mesh, py::handle scheme, py::handle params, int levels, const std::string& boundary,
                 const std::string& crease_method, int threads, bool all_levels, int start_level,
                 py::handle point_data, py::handle cell_data) {
   check_levels(levels);
   const subdiv::RefineOptions options = refine_options(boundary, crease_method, threads, start_level);
   RefineInput in = input_from(mesh, point_data, cell_data);
-  const SchemeChoice choice = scheme_choice_from(scheme, levels);
+  const SchemeChoice choice = scheme_choice_from(scheme, levels, params);
   std::vector<RefinedLevel> result;
   {
     py::gil_scoped_release unlocked;
@@ -148,12 +148,12 @@ py::dict table_to_python(subdiv::StencilTable&& t) {
   return d;
 }
 
-py::list stencils(py::handle mesh, py::handle scheme, int levels, bool composed, const std::string& boundary,
+py::list stencils(py::handle mesh, py::handle scheme, py::handle params, int levels, bool composed, const std::string& boundary,
                   const std::string& crease_method, int threads, int start_level) {
   check_levels(levels);
   const subdiv::RefineOptions options = refine_options(boundary, crease_method, threads, start_level);
   RefineInput in = input_from(mesh, py::none(), py::none());
-  const SchemeChoice choice = scheme_choice_from(scheme, levels);
+  const SchemeChoice choice = scheme_choice_from(scheme, levels, params);
   std::vector<subdiv::StencilTable> tables;
   {
     py::gil_scoped_release unlocked;
@@ -191,11 +191,11 @@ py::list stencils(py::handle mesh, py::handle scheme, int levels, bool composed,
 }  // namespace
 
 void bind_refine(py::module_& m) {
-  m.def("_refine", &refine, py::arg("mesh"), py::arg("scheme"), py::arg("levels"), py::arg("boundary"),
+  m.def("_refine", &refine, py::arg("mesh"), py::arg("scheme"), py::arg("params"), py::arg("levels"), py::arg("boundary"),
         py::arg("crease_method"), py::arg("threads"), py::arg("all_levels"), py::arg("start_level"),
         py::arg("point_data"), py::arg("cell_data"),
         "Refined levels as dicts of arrays (subdivkit.refine wraps them in Meshes).");
-  m.def("_stencils", &stencils, py::arg("mesh"), py::arg("scheme"), py::arg("levels"), py::arg("composed"),
+  m.def("_stencils", &stencils, py::arg("mesh"), py::arg("scheme"), py::arg("params"), py::arg("levels"), py::arg("composed"),
         py::arg("boundary"), py::arg("crease_method"), py::arg("threads"), py::arg("start_level"),
         "Stencil tables as CSR arrays (subdivkit.stencils makes scipy.sparse.csr_matrix of them).");
 }

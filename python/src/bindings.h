@@ -84,17 +84,19 @@ struct SchemeHandle {
 SchemeHandle load_scheme_handle(const std::string& source, bool from_text, const std::string& label,
                                 const subdiv::ParameterOverrides& overrides);
 // Keyword arguments to --param style overrides: numbers at full precision, strings as given.
-subdiv::ParameterOverrides overrides_from(const py::kwargs& kwargs);
+subdiv::ParameterOverrides overrides_from(py::handle kwargs);  // a dict, or None
 
 // What refine and stencils run: a Scheme, or a string naming a scheme, a .json path or a
-// sequence "A:1,B:3" (then `levels` completes it, as --levels does).
+// sequence "A:1,B:3" (then `levels` completes it, as --levels does). `params` (a dict or
+// None) are parameter values as --param gives them: to the Scheme, or to every scheme of a
+// sequence that has the parameter.
 struct SchemeChoice {
   std::shared_ptr<const SchemeHandle> single;  // set for one scheme (surface or curve)
   subdiv::SchemeSequence sequence;             // surface schemes
   std::string label;                           // for messages
   bool is_curve() const { return single && single->kind == "curve"; }
 };
-SchemeChoice scheme_choice_from(py::handle scheme, int levels);
+SchemeChoice scheme_choice_from(py::handle scheme, int levels, py::handle params);
 
 // ---- bind_*.cpp ---------------------------------------------------------------------------
 void bind_schemes(py::module_& m);

@@ -24,9 +24,11 @@ SchemeHandle load_scheme_handle(const std::string& source, bool from_text, const
   return h;
 }
 
-subdiv::ParameterOverrides overrides_from(const py::kwargs& kwargs) {
+subdiv::ParameterOverrides overrides_from(py::handle kwargs) {
   subdiv::ParameterOverrides out;
-  for (auto [key, value] : kwargs) {
+  if (kwargs.is_none()) return out;
+  if (!py::isinstance<py::dict>(kwargs)) throw subdiv::Error("params: give a dict of parameter values");
+  for (auto [key, value] : py::reinterpret_borrow<py::dict>(kwargs)) {
     const std::string name = py::str(key);
     if (py::isinstance<py::str>(value)) {
       out[name] = py::str(value);
@@ -47,10 +49,15 @@ subdiv::ParameterOverrides overrides_from(const py::kwargs& kwargs) {
   return out;
 }
 
-SchemeChoice scheme_choice_from(py::handle scheme, int levels) {
+SchemeChoice scheme_choice_from(py::handle scheme, int levels, py::handle params) {
   SchemeChoice c;
+  const subdiv::ParameterOverrides overrides = overrides_from(params);
   if (py::isinstance<SchemeHandle>(scheme)) {
-    c.single = std::make_shared<SchemeHandle>(scheme.cast<SchemeHandle>());
+    const auto& h = scheme.cast<const SchemeHandle&>();
+    subdiv::ParameterOverrides merged = h.overrides;
+    for (const auto& [k, v] : overrides) merged[k] = v;
+    c.single = std::make_shared<SchemeHandle>(overrides.empty() ? h
+                                                                : load_scheme_handle(h.source, h.from_text, h.label, merged));
   } else if (py::isinstance<py::str>(scheme)) {
     const std::string spec = py::str(scheme);
     // A single curve scheme refines polylines; anything else is a surface sequence, which
@@ -60,8 +67,8 @@ SchemeChoice scheme_choice_from(py::handle scheme, int levels) {
       curve = spec.find_first_of(",:") == std::string::npos && subdiv::scheme_kind(spec) == "curve";
     } catch (const subdiv::Error&) {
     }
-    if (curve) c.single = std::make_shared<SchemeHandle>(load_scheme_handle(spec, false, spec, {}));
-    else c.sequence = subdiv::load_scheme_sequence(spec, levels, {});
+    if (curve) c.single = std::make_shared<SchemeHandle>(load_scheme_handle(spec, false, spec, overrides));
+    else c.sequence = subdiv::load_scheme_sequence(spec, levels, overrides);
     c.label = spec;
     return c;
   } else {

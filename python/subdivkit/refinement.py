@@ -22,8 +22,8 @@ def _check_levels(levels):
     return int(levels)
 
 
-def refine(mesh, scheme="catmull-clark", levels=1, *, boundary="edges-and-corners", crease_method="uniform",
-           threads=0, all_levels=False, start_level=0):
+def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edges-and-corners",
+           crease_method="uniform", threads=0, all_levels=False, start_level=0):
     """Refine a mesh ``levels`` times with a scheme; return the finest level as a Mesh.
 
     Parameters
@@ -35,6 +35,10 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, boundary="edges-and-corner
         then B; a name without ":N" takes the rest of ``levels``), as ``--scheme``.
     levels : int
         Refinement steps, 0 to 30.
+    params : dict, optional
+        Parameter values, as ``--param``: for a Scheme they replace its own; for a
+        sequence they go to every scheme that has the parameter, e.g.
+        ``refine(mesh, "catmull-clark-shape:1,catmull-clark", 3, params={"lambda": 0.8})``.
     boundary : str
         'edges-and-corners' (boundary corners stay; the default), 'edges' or 'none', as
         OpenSubdiv's boundary interpolation.
@@ -54,7 +58,7 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, boundary="edges-and-corner
     """
     _check_mesh(mesh, "refine")
     levels = _check_levels(levels)
-    refined = _subdivkit._refine(mesh, scheme, levels, boundary, crease_method, int(threads), bool(all_levels),
+    refined = _subdivkit._refine(mesh, scheme, params, levels, boundary, crease_method, int(threads), bool(all_levels),
                                  int(start_level), _data_pairs(mesh.point_data, mesh.n_points, "point data"),
                                  _data_pairs(mesh.cell_data, mesh.n_faces, "cell data"))
     meshes = [Mesh._from_arrays(level, name=mesh.name,
@@ -73,7 +77,7 @@ def _scipy_sparse():
     return scipy.sparse
 
 
-def stencils(mesh, scheme="catmull-clark", levels=1, *, composed=False, boundary="edges-and-corners",
+def stencils(mesh, scheme="catmull-clark", levels=1, *, composed=False, params=None, boundary="edges-and-corners",
              crease_method="uniform", threads=0, start_level=0):
     """The subdivision matrices of a mesh: ``P_fine = S @ P``.
 
@@ -83,12 +87,12 @@ def stencils(mesh, scheme="catmull-clark", levels=1, *, composed=False, boundary
     once; new positions (animation, editing, fitting) then cost one product. The rows
     are the engine's stencil tables and sum to 1.
 
-    Arguments as refine(). Needs SciPy (imported on first use). Non-linear schemes
+    Arguments as refine() (``params`` too). Needs SciPy (imported on first use). Non-linear schemes
     (plugin rules) have no matrix and raise subdivkit.Error.
     """
     _check_mesh(mesh, "stencils")
     levels = _check_levels(levels)
-    tables = _subdivkit._stencils(mesh, scheme, levels, bool(composed), boundary, crease_method, int(threads),
+    tables = _subdivkit._stencils(mesh, scheme, params, levels, bool(composed), boundary, crease_method, int(threads),
                                   int(start_level))
     sparse = _scipy_sparse()
     matrices = [sparse.csr_matrix((t["data"], t["indices"], t["indptr"]), shape=t["shape"]) for t in tables]
@@ -110,17 +114,17 @@ class LimitPoints:
     approximate_reasons: list = field(default_factory=list)
 
 
-def limit_positions(mesh, scheme="catmull-clark", *, boundary="edges-and-corners", crease_method="uniform",
-                    start_level=0):
+def limit_positions(mesh, scheme="catmull-clark", *, params=None, boundary="edges-and-corners",
+                    crease_method="uniform", start_level=0):
     """Where each vertex of the mesh ends up on the limit surface, with limit normals.
 
     The masks come from the scheme's own eigen-analysis (left eigenvectors of the local
     subdivision matrix), as ``subdiv refine --limit``; vertices whose neighbourhood is
     unusual are refined locally first. For curve schemes and polylines, the limit points of
-    the control points (no normals). Returns a LimitPoints.
+    the control points (no normals). ``params`` as in refine(). Returns a LimitPoints.
     """
     _check_mesh(mesh, "limit_positions")
-    r = _subdivkit._limit_positions(mesh, scheme, boundary, crease_method, int(start_level))
+    r = _subdivkit._limit_positions(mesh, scheme, params, boundary, crease_method, int(start_level))
     if "normals" not in r:
         return LimitPoints(points=r["points"])
     return LimitPoints(points=r["points"], normals=r["normals"], exact=r["exact"].astype(bool),
@@ -171,7 +175,7 @@ def _moving_mask(select, n):
     return mask
 
 
-def interpolate(mesh, scheme="catmull-clark", *, select=None, tolerance=None, max_iterations=1000,
+def interpolate(mesh, scheme="catmull-clark", *, select=None, tolerance=None, max_iterations=1000, params=None,
                 boundary="edges-and-corners", threads=0):
     """Progressive interpolation: move control points until the limit surface passes
     through the mesh's vertices (as ``subdiv interpolate``).
@@ -188,13 +192,16 @@ def interpolate(mesh, scheme="catmull-clark", *, select=None, tolerance=None, ma
     scheme : Scheme or str
         A surface scheme or sequence such as "catmull-clark-shape:1,catmull-clark", or a
         curve scheme for polylines.
+    params : dict, optional
+        Parameter values, as in refine(); seed 001's shape parameter is
+        ``params={"lambda": 0.5}`` with "catmull-clark-shape:1,catmull-clark".
 
     Returns an Interpolation. Raises subdivkit.Error when the scheme has no checked limit
     operator or the iteration diverges.
     """
     _check_mesh(mesh, "interpolate")
     moving = _moving_mask(select, mesh.n_points)
-    r = _subdivkit._interpolate(mesh, scheme, moving, -1.0 if tolerance is None else float(tolerance),
+    r = _subdivkit._interpolate(mesh, scheme, params, moving, -1.0 if tolerance is None else float(tolerance),
                                 int(max_iterations), boundary, int(threads))
     return Interpolation(mesh=mesh.with_points(r["points"]), limit=r["limit"], iterations=r["iterations"],
                          converged=r["converged"], max_residual=r["max_residual"], rms_residual=r["rms_residual"],

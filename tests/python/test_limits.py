@@ -80,3 +80,11 @@ def test_local_interpolation_moves_only_the_selected_vertices():
     mask[[0, 3]] = True
     assert np.array_equal(sk.interpolate(cube, "catmull-clark", select=mask, tolerance=1e-12).mesh.points,
                           result.mesh.points)
+
+
+def test_seed_001_two_step_interpolation_with_a_shape_parameter():
+    cross = sk.read_mesh(MESHES / "cross.obj")
+    result = sk.interpolate(cross, "catmull-clark-shape:1,catmull-clark", params={"lambda": 0.5},
+                            select=[0, 1, 2, 3], tolerance=1e-12)
+    assert result.converged
+    assert np.abs(result.limit[:4] - cross.points[:4]).max() <= 1e-12

@@ -95,6 +95,21 @@ def test_a_sequence_string_runs_each_scheme_for_its_levels(tmp_path):
     assert np.abs(fine.points - expected).max() <= 1e-15
 
 
+def test_params_reach_every_scheme_of_a_sequence_as_with_the_command_line(tmp_path):
+    path = str(MESHES / "cube.obj")
+    out = tmp_path / "seq.obj"
+    run_cli("refine", path, "-s", "catmull-clark-shape:1,catmull-clark", "-l", 3, "-p", "lambda=0.8", "-o", out, "-q")
+    expected, _ = parse_obj(out)
+    mesh = sk.read_mesh(path)
+    fine = sk.refine(mesh, "catmull-clark-shape:1,catmull-clark", 3, params={"lambda": 0.8})
+    assert np.abs(fine.points - expected).max() <= 1e-15
+    default = sk.refine(mesh, "catmull-clark-shape:1,catmull-clark", 3)
+    assert np.abs(default.points - expected).max() > 1e-3  # the parameter did something
+    shape = sk.Scheme.load("catmull-clark-shape")
+    assert np.array_equal(sk.refine(mesh, shape, 1, params={"lambda": 0.8}).points,
+                          sk.refine(mesh, shape.with_params(**{"lambda": 0.8}), 1).points)
+
+
 def test_point_data_is_refined_like_the_points_and_cell_data_follows_faces():
     cube = sk.read_mesh(MESHES / "cube.obj")
     cube.point_data["xyz"] = cube.points.copy()
