@@ -17,10 +17,12 @@ void write(const std::string& path, py::handle mesh, py::handle point_data, py::
   auto cells = named_values_from(cell_data, data.face_count(), "cell data");
   const std::string ext = subdiv::lowercase_extension(path);
   if (!subdiv::is_vtk_output(path)) {
-    if (!points.empty() || !cells.empty())
-      PyErr_WarnEx(PyExc_UserWarning,
-                   fmt::format("write_mesh('{}'): {} files hold no point or cell data; use .vtp or .pvd to keep it",
-                               path, ext).c_str(), 1);
+    // A warning, not an error: writing the geometry to .obj is a common, deliberate step.
+    if ((!points.empty() || !cells.empty()) &&
+        PyErr_WarnEx(PyExc_UserWarning,
+                     fmt::format("write_mesh('{}'): {} files hold no point or cell data; use .vtp or .pvd to keep it",
+                                 path, ext).c_str(), 1) < 0)
+      throw py::error_already_set();  // warnings filtered into errors
     py::gil_scoped_release unlocked;
     subdiv::write_mesh(path, data);
     return;
