@@ -105,7 +105,7 @@ def analyze(scheme, valences=range(3, 13), *, boundary=False, boundary_interpola
     if not isinstance(scheme, Scheme):
         raise Error(f"analyze: expected a subdivkit.Scheme or a scheme name, got {type(scheme).__name__}")
     try:
-        valence_list = [int(n) for n in np.atleast_1d(np.asarray(list(valences)))]
+        valence_list = [int(n) for n in np.atleast_1d(np.asarray(valences)).reshape(-1)]
     except (TypeError, ValueError):
         raise Error(f"valences={valences!r}: give whole numbers, e.g. range(3, 13)") from None
     result = _subdivkit._analyze(scheme, valence_list, bool(boundary), boundary_interpolation, int(level),

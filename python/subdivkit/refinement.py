@@ -157,6 +157,8 @@ def _moving_mask(select, n):
     if isinstance(select, str):
         raise Error(f"select={select!r}: give 'all', a list of vertex ids or a boolean mask")
     a = np.asarray(select)
+    if a.size == 0:
+        raise Error("select: no vertex selected; select at least one vertex to move")
     if a.dtype == bool:
         if a.shape != (n,):
             raise Error(f"select: a boolean mask needs one flag per vertex ({n}), got shape {a.shape}")

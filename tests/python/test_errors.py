@@ -105,6 +105,10 @@ def test_bad_options_are_refused():
         sk.analyze("catmull-clark", valences=[2])
     with pytest.raises(sk.Error, match="parameter"):
         sk.Scheme.load("four-point", w=True)
+    with pytest.raises(sk.Error, match="no vertex selected"):
+        sk.interpolate(cube, select=[])
+    with pytest.raises(sk.Error, match="curve scheme refines polylines only"):
+        sk.refine(cube, "chaikin", 1)
 
 
 def test_missing_and_foreign_plugins_are_refused():
