@@ -1,0 +1,59 @@
+// Mesh files: the library's readers and writers (framework/io), chosen by extension.
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "bindings.h"
+
+namespace subdivkit {
+namespace {
+
+subdiv::DataArray data_array(NamedValues&& v) {
+  return subdiv::DataArray{std::move(v.name), v.columns, std::move(v.values), false};
+}
+
+void write(const std::string& path, py::handle mesh, py::handle point_data, py::handle cell_data) {
+  subdiv::MeshData data = mesh_from_python(mesh);
+  auto points = named_values_from(point_data, data.vertex_count(), "point data");
+  auto cells = named_values_from(cell_data, data.face_count(), "cell data");
+  const std::string ext = subdiv::lowercase_extension(path);
+  if (!subdiv::is_vtk_output(path)) {
+    // A warning, not an error: writing the geometry to .obj is a common, deliberate step.
+    if ((!points.empty() || !cells.empty()) &&
+        PyErr_WarnEx(PyExc_UserWarning,
+                     fmt::format("write_mesh('{}'): {} files hold no point or cell data; use .vtp or .pvd to keep it",
+                                 path, ext).c_str(), 1) < 0)
+      throw py::error_already_set();  // warnings filtered into errors
+    py::gil_scoped_release unlocked;
+    subdiv::write_mesh(path, data);
+    return;
+  }
+  subdiv::OutputLevel level;
+  level.mesh = &data;
+  for (auto& v : points) level.point_data.push_back(data_array(std::move(v)));
+  for (auto& v : cells) level.cell_data.push_back(data_array(std::move(v)));
+  py::gil_scoped_release unlocked;
+  if (ext == ".vtp") subdiv::write_vtp(path, level);
+  else subdiv::write_pvd(path, std::span(&level, 1));
+}
+
+}  // namespace
+
+void bind_mesh_io(py::module_& m) {
+  m.def(
+      "_read_mesh",
+      [](const std::string& path) {
+        subdiv::MeshData data;
+        {
+          py::gil_scoped_release unlocked;
+          data = subdiv::read_mesh(path);
+        }
+        return mesh_to_python(std::move(data));
+      },
+      py::arg("path"), "The arrays of a mesh file (subdivkit.read_mesh wraps them in a Mesh).");
+  m.def("_write_mesh", &write, py::arg("path"), py::arg("mesh"), py::arg("point_data"), py::arg("cell_data"),
+        "Writes a Mesh (subdivkit.write_mesh checks the arguments first).");
+  m.def("_input_formats", &subdiv::supported_input_formats, "The extensions read_mesh reads.");
+  m.def("_output_formats", &subdiv::supported_output_formats, "The extensions write_mesh writes.");
+}
+
+}  // namespace subdivkit

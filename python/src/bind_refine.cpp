@@ -1,0 +1,203 @@
+// refine and stencils: the engine's refinement (topology once, then values per level) for
+// surface meshes and, with curve schemes, for polylines. The GIL is released while the
+// library works, so other Python threads run meanwhile.
+#include <cmath>
+#include <fmt/format.h>
+#include <optional>
+#include <tbb/global_control.h>
+
+#include "bindings.h"
+
+namespace subdivkit {
+namespace {
+
+struct RefinedLevel {
+  subdiv::MeshData mesh;
+  std::vector<NamedValues> point_data, cell_data;
+};
+
+struct RefineInput {
+  subdiv::MeshData mesh;
+  std::string name;
+  std::vector<NamedValues> point_data, cell_data;
+};
+
+RefineInput input_from(py::handle mesh, py::handle point_data, py::handle cell_data) {
+  RefineInput in;
+  in.mesh = mesh_from_python(mesh);
+  in.name = mesh_name(mesh);
+  in.point_data = named_values_from(point_data, in.mesh.vertex_count(), "point data");
+  in.cell_data = named_values_from(cell_data, in.mesh.face_count(), "cell data");
+  return in;
+}
+
+// The `threads` limit for the duration of a call (0: all cores), as `subdiv -j` does.
+std::optional<tbb::global_control> thread_limit(int threads) {
+  std::optional<tbb::global_control> limit;
+  if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(threads));
+  return limit;
+}
+
+subdiv::Level surface_base(const RefineInput& in, const SchemeChoice& c) {
+  if (in.mesh.face_count() == 0)
+    throw subdiv::Error(fmt::format("{}: the mesh has no faces to refine{}", in.name,
+                                    in.mesh.line_count() ? "; its polylines need a curve scheme (e.g. 'chaikin')"
+                                                         : ""));
+  subdiv::Level base = subdiv::level_from_mesh(in.mesh, in.name);
+  subdiv::cli::check_fits_in_memory(*c.sequence.schemes.front(), base, c.sequence.total_levels);
+  return base;
+}
+
+subdiv::CurveLevel curve_base(const RefineInput& in, const subdiv::CurveScheme& curve, int levels) {
+  if (curve.nonlinear)
+    throw subdiv::Error(fmt::format("'{}' is a non-linear curve scheme (a plugin rule); the Python module refines "
+                                    "polylines with linear curve schemes only (use `subdiv refine` for this one)",
+                                    curve.name));
+  subdiv::CurveLevel base = subdiv::curve_level_from_mesh(in.mesh, in.name);
+  const double points = double(base.vertices.size() + 2 * size_t(base.polyline_count())) *
+                        std::pow(double(curve.arity), levels);
+  if (points > 2.0e9)
+    throw subdiv::Error(fmt::format("{} levels would make about {:.3g} points, more than the 2^31 a level can "
+                                    "index; ask for fewer levels", levels, points));
+  return base;
+}
+
+// Cell values follow their faces: a child face takes its parent face's values (NaN for
+// faces that lie in no single parent face, such as a dual split's vertex faces).
+std::vector<NamedValues> cells_to_children(const std::vector<NamedValues>& parent, const subdiv::ChildOrigins& o) {
+  std::vector<NamedValues> out;
+  for (const auto& a : parent) {
+    NamedValues c{a.name, std::vector<double>(o.parent_face.size() * size_t(a.columns), std::nan("")), a.columns};
+    for (size_t f = 0; f < o.parent_face.size(); ++f)
+      if (const Index p = o.parent_face[f]; p != subdiv::kNone)
+        for (int k = 0; k < a.columns; ++k) c.values[f * a.columns + k] = a.values[size_t(p) * a.columns + k];
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+std::vector<RefinedLevel> refine_surface(RefineInput& in, const SchemeChoice& c, const subdiv::RefineOptions& o,
+                                         bool all_levels) {
+  const subdiv::SchemeSequence& seq = c.sequence;
+  subdiv::Hierarchy h = subdiv::refine_topology(seq.runs, surface_base(in, c), o);
+  std::vector<double> positions = std::move(in.mesh.positions);
+  std::vector<NamedValues> points = std::move(in.point_data), cells = std::move(in.cell_data);
+  std::vector<RefinedLevel> out;
+  auto keep = [&](int l) {
+    out.push_back({subdiv::mesh_from_level(h.levels[l], positions), points, cells});
+  };
+  if (all_levels || seq.total_levels == 0) keep(0);
+  for (int l = 0; l < seq.total_levels; ++l) {
+    positions = subdiv::step_values(seq.runs, h, l, positions, 3, o);
+    for (auto& p : points) p.values = subdiv::step_values(seq.runs, h, l, p.values, p.columns, o);
+    cells = cells_to_children(cells, h.origins[l]);
+    if (all_levels || l + 1 == seq.total_levels) keep(l + 1);
+  }
+  return out;
+}
+
+std::vector<RefinedLevel> refine_curve(RefineInput& in, const subdiv::CurveScheme& curve, int levels,
+                                       bool all_levels) {
+  if (!in.cell_data.empty())
+    throw subdiv::Error("cell data: curve refinement carries point data only (polylines have no faces)");
+  subdiv::CurveHierarchy h = subdiv::refine_curves(curve, curve_base(in, curve, levels), levels);
+  std::vector<double> positions = std::move(in.mesh.positions);
+  std::vector<NamedValues> points = std::move(in.point_data);
+  std::vector<RefinedLevel> out;
+  auto keep = [&](int l) { out.push_back({subdiv::mesh_from_curve_level(h.levels[l], positions), points, {}}); };
+  if (all_levels || levels == 0) keep(0);
+  for (int l = 0; l < levels; ++l) {
+    positions = h.stencils[l].apply(positions, 3);
+    for (auto& p : points) p.values = h.stencils[l].apply(p.values, p.columns);
+    if (all_levels || l + 1 == levels) keep(l + 1);
+  }
+  return out;
+}
+
+py::list refine(py::handle mesh, py::handle scheme, py::handle params, int levels, const std::string& boundary,
+                const std::string& crease_method, int threads, bool all_levels, int start_level,
+                py::handle point_data, py::handle cell_data) {
+  check_levels(levels);
+  const subdiv::RefineOptions options = refine_options(boundary, crease_method, threads, start_level);
+  RefineInput in = input_from(mesh, point_data, cell_data);
+  const SchemeChoice choice = scheme_choice_from(scheme, levels, params);
+  std::vector<RefinedLevel> result;
+  {
+    py::gil_scoped_release unlocked;
+    const auto limit = thread_limit(threads);
+    result = choice.is_curve() ? refine_curve(in, *choice.single->curve, levels, all_levels)
+                               : refine_surface(in, choice, options, all_levels);
+  }
+  py::list out;
+  for (auto& level : result) {
+    py::dict d = mesh_to_python(std::move(level.mesh));
+    d["point_data"] = named_values_to_python(std::move(level.point_data));
+    d["cell_data"] = named_values_to_python(std::move(level.cell_data));
+    out.append(d);
+  }
+  return out;
+}
+
+py::dict table_to_python(subdiv::StencilTable&& t) {
+  py::dict d;
+  const auto rows = py::ssize_t(t.row_count()), entries = py::ssize_t(t.weights.size());
+  d["shape"] = py::make_tuple(rows, py::ssize_t(t.source_count));
+  d["indptr"] = adopt(std::move(t.offsets), {rows + 1});
+  d["indices"] = adopt(std::move(t.indices), {entries});
+  d["data"] = adopt(std::move(t.weights), {entries});
+  return d;
+}
+
+py::list stencils(py::handle mesh, py::handle scheme, py::handle params, int levels, bool composed, const std::string& boundary,
+                  const std::string& crease_method, int threads, int start_level) {
+  check_levels(levels);
+  const subdiv::RefineOptions options = refine_options(boundary, crease_method, threads, start_level);
+  RefineInput in = input_from(mesh, py::none(), py::none());
+  const SchemeChoice choice = scheme_choice_from(scheme, levels, params);
+  std::vector<subdiv::StencilTable> tables;
+  {
+    py::gil_scoped_release unlocked;
+    const auto limit = thread_limit(threads);
+    if (choice.is_curve()) {
+      tables = subdiv::refine_curves(*choice.single->curve, curve_base(in, *choice.single->curve, levels), levels)
+                   .stencils;
+    } else {
+      subdiv::Hierarchy h = subdiv::refine(choice.sequence.runs, surface_base(in, choice), options);
+      if (!h.linear())
+        throw subdiv::Error(fmt::format("'{}' has a non-linear step (a plugin rule): no matrix can say it; use "
+                                        "refine() instead", choice.label));
+      tables = std::move(h.stencils);
+    }
+    if (composed && !tables.empty()) {
+      subdiv::StencilTable total = std::move(tables.front());
+      for (size_t l = 1; l < tables.size(); ++l) total = subdiv::compose(total, tables[l]);
+      tables = {std::move(total)};
+    }
+    if (composed && tables.empty()) {  // zero levels: the identity
+      subdiv::StencilTable identity;
+      identity.source_count = in.mesh.vertex_count();
+      for (Index v = 0; v < identity.source_count; ++v) {
+        identity.indices.push_back(v), identity.weights.push_back(1.0);
+        identity.offsets.push_back(v + 1);
+      }
+      tables = {std::move(identity)};
+    }
+  }
+  py::list out;
+  for (auto& t : tables) out.append(table_to_python(std::move(t)));
+  return out;
+}
+
+}  // namespace
+
+void bind_refine(py::module_& m) {
+  m.def("_refine", &refine, py::arg("mesh"), py::arg("scheme"), py::arg("params"), py::arg("levels"), py::arg("boundary"),
+        py::arg("crease_method"), py::arg("threads"), py::arg("all_levels"), py::arg("start_level"),
+        py::arg("point_data"), py::arg("cell_data"),
+        "Refined levels as dicts of arrays (subdivkit.refine wraps them in Meshes).");
+  m.def("_stencils", &stencils, py::arg("mesh"), py::arg("scheme"), py::arg("params"), py::arg("levels"), py::arg("composed"),
+        py::arg("boundary"), py::arg("crease_method"), py::arg("threads"), py::arg("start_level"),
+        "Stencil tables as CSR arrays (subdivkit.stencils makes scipy.sparse.csr_matrix of them).");
+}
+
+}  // namespace subdivkit

@@ -1,0 +1,115 @@
+// subdivkit.Mesh (python/subdivkit/mesh.py) to the library's MeshData and back. The Python
+// class has already made its arrays C-contiguous with the right types; the arrays are read
+// again here with conversion so that a hand-made object cannot crash the interpreter.
+#include <fmt/format.h>
+
+#include "bindings.h"
+
+namespace subdivkit {
+
+std::string mesh_name(py::handle mesh) {
+  if (py::hasattr(mesh, "name")) {
+    py::object name = mesh.attr("name");
+    if (!name.is_none()) return py::str(name);
+  }
+  return "mesh";
+}
+
+subdiv::MeshData mesh_from_python(py::handle mesh) {
+  for (const char* attr : {"points", "face_indices", "face_offsets"})
+    if (!py::hasattr(mesh, attr))
+      throw subdiv::Error(fmt::format("expected a subdivkit.Mesh, got {} (it has no '{}')",
+                                      std::string(py::str(py::type::of(mesh))), attr));
+  const std::string name = mesh_name(mesh);
+  subdiv::MeshData m;
+  m.positions = doubles_from(mesh.attr("points"), name + ".points");
+  m.face_vertices = indices_from(mesh.attr("face_indices"), name + ".face_indices");
+  m.face_offsets = indices_from(mesh.attr("face_offsets"), name + ".face_offsets");
+  if (m.face_offsets.empty()) m.face_offsets = {0};
+  if (py::hasattr(mesh, "line_indices")) {
+    m.line_vertices = indices_from(mesh.attr("line_indices"), name + ".line_indices");
+    m.line_offsets = indices_from(mesh.attr("line_offsets"), name + ".line_offsets");
+    if (m.line_offsets.empty()) m.line_offsets = {0};
+  }
+  if (py::hasattr(mesh, "creases")) {
+    const auto pairs = indices_from(mesh.attr("creases"), name + ".creases");
+    const auto sharpness = doubles_from(mesh.attr("crease_sharpness"), name + ".crease_sharpness");
+    if (pairs.size() != 2 * sharpness.size())
+      throw subdiv::Error(fmt::format("{}: {} crease edges but {} crease sharpness values; give one per edge",
+                                      name, pairs.size() / 2, sharpness.size()));
+    for (size_t i = 0; i < sharpness.size(); ++i) m.creases.push_back({pairs[2 * i], pairs[2 * i + 1], sharpness[i]});
+  }
+  if (py::hasattr(mesh, "corners")) {
+    const auto vertices = indices_from(mesh.attr("corners"), name + ".corners");
+    const auto sharpness = doubles_from(mesh.attr("corner_sharpness"), name + ".corner_sharpness");
+    if (vertices.size() != sharpness.size())
+      throw subdiv::Error(fmt::format("{}: {} corners but {} corner sharpness values; give one per corner", name,
+                                      vertices.size(), sharpness.size()));
+    for (size_t i = 0; i < vertices.size(); ++i) m.corners.push_back({vertices[i], sharpness[i]});
+  }
+  if (m.positions.size() % 3 != 0)
+    throw subdiv::Error(fmt::format("{}: points must have 3 coordinates per vertex", name));
+  subdiv::validate_mesh_data(m, name);
+  return m;
+}
+
+py::dict mesh_to_python(subdiv::MeshData&& mesh) {
+  py::dict out;
+  const auto n = py::ssize_t(mesh.vertex_count());
+  std::vector<Index> crease_pairs;
+  std::vector<double> crease_sharpness;
+  for (const auto& c : mesh.creases) {
+    crease_pairs.push_back(c.v0), crease_pairs.push_back(c.v1);
+    crease_sharpness.push_back(c.sharpness);
+  }
+  std::vector<Index> corners;
+  std::vector<double> corner_sharpness;
+  for (const auto& c : mesh.corners) corners.push_back(c.v), corner_sharpness.push_back(c.sharpness);
+  const auto creases = py::ssize_t(crease_sharpness.size()), corner_count = py::ssize_t(corners.size());
+  const auto corner_total = py::ssize_t(mesh.face_vertices.size()), line_total = py::ssize_t(mesh.line_vertices.size());
+  const auto faces = py::ssize_t(mesh.face_offsets.size()), lines = py::ssize_t(mesh.line_offsets.size());
+  out["points"] = adopt(std::move(mesh.positions), {n, 3});
+  out["face_indices"] = adopt(std::move(mesh.face_vertices), {corner_total});
+  out["face_offsets"] = adopt(std::move(mesh.face_offsets), {faces});
+  out["line_indices"] = adopt(std::move(mesh.line_vertices), {line_total});
+  out["line_offsets"] = adopt(std::move(mesh.line_offsets), {lines});
+  out["creases"] = adopt(std::move(crease_pairs), {creases, 2});
+  out["crease_sharpness"] = adopt(std::move(crease_sharpness), {creases});
+  out["corners"] = adopt(std::move(corners), {corner_count});
+  out["corner_sharpness"] = adopt(std::move(corner_sharpness), {corner_count});
+  return out;
+}
+
+std::vector<NamedValues> named_values_from(py::handle pairs, Index rows, const std::string& what) {
+  std::vector<NamedValues> out;
+  if (pairs.is_none()) return out;
+  for (py::handle item : pairs) {
+    auto pair = py::reinterpret_borrow<py::tuple>(item);
+    NamedValues v;
+    v.name = py::str(pair[0]);
+    auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(pair[1]);
+    if (!a) {
+      PyErr_Clear();
+      throw subdiv::Error(fmt::format("{} '{}': cannot be read as float64 values", what, v.name));
+    }
+    if (a.ndim() < 1 || a.ndim() > 2 || a.shape(0) != rows)
+      throw subdiv::Error(fmt::format("{} '{}': expected {} rows (one per {}), got shape {}", what, v.name, rows,
+                                      what == "point data" ? "point" : "face",
+                                      std::string(py::str(py::tuple(a.attr("shape"))))));
+    v.columns = a.ndim() == 2 ? int(a.shape(1)) : 1;
+    v.values.assign(a.data(), a.data() + a.size());
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
+py::dict named_values_to_python(std::vector<NamedValues>&& arrays) {
+  py::dict out;
+  for (auto& a : arrays) {
+    const auto rows = py::ssize_t(a.values.size() / size_t(std::max(a.columns, 1)));
+    out[py::str(a.name)] = adopt(std::move(a.values), {rows, py::ssize_t(a.columns)});
+  }
+  return out;
+}
+
+}  // namespace subdivkit

@@ -1,0 +1,32 @@
+// The _subdivkit extension module: SubdivKit's engine, scheme language and analysis over
+// NumPy arrays. The public API is the `subdivkit` package (python/subdivkit/), which adds
+// the Mesh class and SciPy matrices on top of what is bound here.
+#include "bindings.h"
+#include "framework/io/vtk/vtk_formats.h"
+
+PYBIND11_MODULE(_subdivkit, m) {
+  namespace py = pybind11;
+  m.doc() = "SubdivKit's C++ engine for the subdivkit package; use `import subdivkit`.";
+  // Every user-facing failure of the library (bad files, schemes, parameters, meshes) is a
+  // subdiv::Error whose message names the place and the fix: the same text as the CLI's.
+  static py::exception<subdiv::Error> error(m, "Error", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const subdiv::Error& e) {
+      error(e.what());
+    }
+  });
+  error.attr("__doc__") =
+      "A SubdivKit error: a bad file, scheme, parameter or mesh. The message is the one the `subdiv` command line "
+      "prints, naming the place and the fix. A subclass of ValueError.";
+  error.attr("__module__") = "subdivkit";
+  m.attr("__version__") = SUBDIV_VERSION;
+  subdiv::register_vtk_formats();  // read_mesh/write_mesh handle .vtp, .vtk and .pvd
+  subdivkit::bind_schemes(m);
+  subdivkit::bind_mesh_io(m);
+  subdivkit::bind_refine(m);
+  subdivkit::bind_analysis(m);
+  subdivkit::bind_limits(m);
+  subdivkit::bind_plugins(m);
+}

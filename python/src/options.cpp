@@ -1,0 +1,63 @@
+// The keyword arguments boundary=, crease_method=, threads= as the library's option
+// structs: the command line's names and values, checked with its messages.
+#include <fmt/format.h>
+
+#include "bindings.h"
+
+namespace subdivkit {
+
+subdiv::BoundaryInterpolation boundary_from(const std::string& text) {
+  if (text == "edges-and-corners") return subdiv::BoundaryInterpolation::EdgesAndCorners;
+  if (text == "edges") return subdiv::BoundaryInterpolation::EdgesOnly;
+  if (text == "none") return subdiv::BoundaryInterpolation::None;
+  throw subdiv::Error(fmt::format("boundary='{}': use 'edges-and-corners' (boundary corners stay), 'edges' "
+                                  "(corners follow the boundary curve) or 'none'", text));
+}
+
+subdiv::CreaseMethod crease_method_from(const std::string& text) {
+  if (text == "uniform") return subdiv::CreaseMethod::Uniform;
+  if (text == "chaikin") return subdiv::CreaseMethod::Chaikin;
+  throw subdiv::Error(fmt::format("crease_method='{}': use 'uniform' or 'chaikin'", text));
+}
+
+void check_levels(int levels) {
+  if (levels < 0 || levels > 30) throw subdiv::Error(fmt::format("levels={}: give 0 to 30 levels", levels));
+}
+
+subdiv::RefineOptions refine_options(const std::string& boundary, const std::string& crease_method, int threads,
+                                     int first_step) {
+  if (threads < 0) throw subdiv::Error(fmt::format("threads={}: give 0 (all cores) or more", threads));
+  if (first_step < 0) throw subdiv::Error(fmt::format("start_level={}: give 0 or more", first_step));
+  subdiv::RefineOptions o;
+  o.features.boundary = boundary_from(boundary);
+  o.features.crease_method = crease_method_from(crease_method);
+  o.threads = threads;
+  o.first_step = first_step;
+  return o;
+}
+
+subdiv::SurfaceAnalysisOptions analysis_options(const std::string& boundary, int max_ring, bool characteristic_map) {
+  if (max_ring < 1 || max_ring > 8) throw subdiv::Error(fmt::format("max_ring={}: give 1 to 8", max_ring));
+  subdiv::SurfaceAnalysisOptions o;
+  o.features.boundary = boundary_from(boundary);
+  o.max_ring = max_ring;
+  o.characteristic_map = characteristic_map;
+  return o;
+}
+
+subdiv::LimitOptions limit_options(const std::string& boundary, const std::string& crease_method, int first_step) {
+  subdiv::LimitOptions o;
+  o.features.boundary = boundary_from(boundary);
+  o.features.crease_method = crease_method_from(crease_method);
+  o.first_step = first_step;
+  return o;
+}
+
+subdiv::LimitSelectionOptions limit_selection_options(const std::string& boundary, int first_step) {
+  subdiv::LimitSelectionOptions o;
+  o.features.boundary = boundary_from(boundary);
+  o.first_step = first_step;
+  return o;
+}
+
+}  // namespace subdivkit

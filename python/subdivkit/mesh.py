@@ -1,0 +1,272 @@
+"""The Mesh class and mesh files.
+
+A Mesh holds NumPy arrays in the layout the C++ library uses, so that passing one to
+refine() or writing it converts nothing:
+
+* ``points``: (n, 3) float64, C-contiguous;
+* faces as CSR: ``face_indices`` (all corners, int32) and ``face_offsets`` (m + 1 int32,
+  face f is ``face_indices[face_offsets[f]:face_offsets[f + 1]]``); ``faces`` is the same
+  data as an (m, k) view when every face has k corners;
+* polylines the same way (``line_indices``, ``line_offsets``);
+* creases: ``creases`` (c, 2) vertex pairs with ``crease_sharpness`` (c,); corners:
+  ``corners`` (k,) vertex ids with ``corner_sharpness`` (k,). Sharpness follows OpenSubdiv:
+  0 smooth, 10 or more infinitely sharp;
+* ``point_data`` and ``cell_data``: dicts of arrays with one row per point or per face,
+  carried through refine() and written to .vtp files.
+
+Arrays given in another layout (float32 or integer points, Fortran order, strided views)
+are converted once, here; arrays that cannot mean what is asked (float face indices,
+negative indices, wrong shapes) are refused with a subdivkit.Error that says why.
+"""
+
+import os
+
+import numpy as np
+
+from . import _subdivkit
+from ._subdivkit import Error
+
+_INT32_MAX = np.iinfo(np.int32).max
+INFINITELY_SHARP = 10.0
+
+
+def _as_points(points, what="points"):
+    a = np.asarray(points)
+    if a.dtype.kind not in "fiu":
+        raise Error(f"{what}: expected numbers, got an array of dtype {a.dtype}")
+    if a.ndim != 2 or a.shape[1] != 3:
+        raise Error(f"{what}: expected shape (n, 3), got {a.shape}")
+    return np.ascontiguousarray(a, dtype=np.float64)
+
+
+def _as_indices(values, what, shape_hint="a 1-d array"):
+    a = np.asarray(values)
+    if a.size == 0:
+        return np.zeros(0, dtype=np.int32)
+    if a.dtype.kind not in "iu":
+        raise Error(f"{what}: expected integer indices, got dtype {a.dtype}"
+                    + ("; convert whole numbers with .astype(int)" if a.dtype.kind == "f" else ""))
+    if a.ndim != 1:
+        raise Error(f"{what}: expected {shape_hint}, got shape {a.shape}")
+    if a.min() < 0 or a.max() > _INT32_MAX:
+        bad = a.min() if a.min() < 0 else a.max()
+        raise Error(f"{what}: index {bad} is out of range (0-based indices that fit in 32 bits)")
+    return np.ascontiguousarray(a, dtype=np.int32)
+
+
+def _as_sharpness(values, count, what):
+    if values is None:
+        values = INFINITELY_SHARP
+    a = np.asarray(values)
+    if a.dtype.kind not in "fiu":
+        raise Error(f"{what}: expected numbers, got dtype {a.dtype}")
+    if a.ndim == 0:
+        a = np.full(count, float(a))
+    if a.shape != (count,):
+        raise Error(f"{what}: expected one value per entry ({count}), got shape {a.shape}")
+    return np.ascontiguousarray(a, dtype=np.float64)
+
+
+def _as_cells(cells, offsets, what, offsets_name):
+    """Polygons or polylines as CSR (indices, offsets) from any of the accepted forms."""
+    if cells is None:
+        if offsets is not None:
+            raise Error(f"{offsets_name} given without {what}")
+        return np.zeros(0, dtype=np.int32), np.zeros(1, dtype=np.int32)
+    if offsets is not None:  # flat indices + offsets
+        indices = _as_indices(cells, what, "flat indices with offsets")
+        offsets = _as_indices(offsets, offsets_name)
+        if offsets.size == 0 or offsets[0] != 0 or offsets[-1] != indices.size or np.any(np.diff(offsets) < 0):
+            raise Error(f"{offsets_name}: expected a rising sequence from 0 to {indices.size} "
+                        f"(the number of indices)")
+        return indices, offsets
+    a = cells if isinstance(cells, np.ndarray) else None
+    if a is None:
+        try:
+            a = np.asarray(cells)
+        except ValueError:  # ragged nested lists in newer NumPy
+            a = np.asarray(cells, dtype=object)
+    if a.dtype != object and a.ndim == 2:  # (m, k): uniform
+        m, k = a.shape
+        return _as_indices(a.reshape(-1), what), np.arange(m + 1, dtype=np.int32) * np.int32(k)
+    if a.dtype != object and a.ndim != 1:
+        raise Error(f"{what}: expected an (m, k) array or a list of index lists, got shape {a.shape}")
+    rows = [np.asarray(c).reshape(-1) for c in cells]
+    sizes = np.array([r.size for r in rows], dtype=np.int64)
+    offsets = np.zeros(len(rows) + 1, dtype=np.int32)
+    np.cumsum(sizes, out=offsets[1:])
+    flat = np.concatenate(rows) if rows else np.zeros(0, dtype=np.int32)
+    return _as_indices(flat, what), offsets
+
+
+class Mesh:
+    """A polygon mesh (and/or polylines) with creases, corners and per-point/per-face data.
+
+    Parameters
+    ----------
+    points : array-like, shape (n, 3)
+        Vertex positions; converted to C-contiguous float64 if needed.
+    faces : array-like, optional
+        An (m, k) integer array (every face a k-gon), a list of index lists (any sizes),
+        or flat indices when ``face_offsets`` is given. Faces are CCW seen from outside.
+    face_offsets : array-like, optional
+        CSR offsets (m + 1 values, from 0 to len(faces)) for flat ``faces``.
+    lines, line_offsets : optional
+        Polylines, in the same forms as faces (for curve schemes). A polyline whose last
+        index repeats its first is a closed polygon.
+    creases : array-like, shape (c, 2), optional
+        Vertex pairs of creased edges.
+    crease_sharpness : float or array-like (c,), optional
+        Sharpness per crease (default 10: infinitely sharp).
+    corners : array-like (k,), optional
+        Vertex ids tagged as corners.
+    corner_sharpness : float or array-like (k,), optional
+        Sharpness per corner (default 10).
+    point_data, cell_data : dict, optional
+        Arrays with one row per point / per face, carried through refine().
+    name : str
+        How error messages name this mesh (read_mesh sets the file name).
+    """
+
+    def __init__(self, points, faces=None, *, face_offsets=None, lines=None, line_offsets=None, creases=None,
+                 crease_sharpness=None, corners=None, corner_sharpness=None, point_data=None, cell_data=None,
+                 name="mesh"):
+        self.name = str(name)
+        self.points = _as_points(points, f"{self.name}.points")
+        self.face_indices, self.face_offsets = _as_cells(faces, face_offsets, "faces", "face_offsets")
+        self.line_indices, self.line_offsets = _as_cells(lines, line_offsets, "lines", "line_offsets")
+        pairs = np.zeros((0, 2), dtype=np.int32) if creases is None else np.asarray(creases)
+        if pairs.size == 0:
+            pairs = np.zeros((0, 2), dtype=np.int32)
+        if pairs.ndim != 2 or pairs.shape[1] != 2:
+            raise Error(f"creases: expected (c, 2) vertex pairs, got shape {pairs.shape}")
+        self.creases = _as_indices(pairs.reshape(-1), "creases").reshape(-1, 2)
+        self.crease_sharpness = _as_sharpness(crease_sharpness, len(self.creases), "crease_sharpness")
+        self.corners = _as_indices(np.zeros(0, dtype=np.int32) if corners is None else corners, "corners")
+        self.corner_sharpness = _as_sharpness(corner_sharpness, len(self.corners), "corner_sharpness")
+        self.point_data = dict(point_data or {})
+        self.cell_data = dict(cell_data or {})
+
+    @classmethod
+    def _from_arrays(cls, arrays, name="mesh", point_data=None, cell_data=None):
+        """A Mesh around arrays the extension made (already in the right layout: no copies)."""
+        mesh = cls.__new__(cls)
+        mesh.name = name
+        for key in ("points", "face_indices", "face_offsets", "line_indices", "line_offsets", "creases",
+                    "crease_sharpness", "corners", "corner_sharpness"):
+            setattr(mesh, key, arrays[key])
+        mesh.point_data = dict(point_data or {})
+        mesh.cell_data = dict(cell_data or {})
+        return mesh
+
+    @property
+    def n_points(self):
+        """Number of vertices."""
+        return len(self.points)
+
+    @property
+    def n_faces(self):
+        """Number of faces."""
+        return len(self.face_offsets) - 1
+
+    @property
+    def n_lines(self):
+        """Number of polylines."""
+        return len(self.line_offsets) - 1
+
+    @property
+    def face_sizes(self):
+        """Corners per face, (m,) int32."""
+        return np.diff(self.face_offsets)
+
+    @property
+    def faces(self):
+        """The faces as an (m, k) int32 view of ``face_indices`` (no copy) when all are k-gons.
+
+        Raises subdivkit.Error for meshes with mixed face sizes; use ``face_indices`` and
+        ``face_offsets`` (or ``face_list()``) for those.
+        """
+        sizes = self.face_sizes
+        if len(sizes) == 0:
+            return self.face_indices.reshape(0, 0)
+        if np.any(sizes != sizes[0]):
+            raise Error(f"{self.name}: faces have {len(np.unique(sizes))} different sizes "
+                        f"({', '.join(map(str, np.unique(sizes)[:5]))}); an (m, k) array needs one size: "
+                        "use face_indices and face_offsets, or face_list()")
+        return self.face_indices.reshape(-1, int(sizes[0]))
+
+    def face_list(self):
+        """The faces as a list of index arrays (views into ``face_indices``)."""
+        return np.split(self.face_indices, self.face_offsets[1:-1])
+
+    def line_list(self):
+        """The polylines as a list of index arrays (views into ``line_indices``)."""
+        return np.split(self.line_indices, self.line_offsets[1:-1])
+
+    def with_points(self, points):
+        """The same topology, tags and data with new positions (for instance after ``S @ P``)."""
+        mesh = Mesh._from_arrays(self.__dict__, name=self.name, point_data=self.point_data,
+                                 cell_data=self.cell_data)
+        mesh.points = _as_points(points, f"{self.name}.points")
+        if len(mesh.points) != self.n_points:
+            raise Error(f"with_points: {len(mesh.points)} points for a mesh of {self.n_points}")
+        return mesh
+
+    def __repr__(self):
+        parts = [f"{self.n_points} points", f"{self.n_faces} faces"]
+        if self.n_lines:
+            parts.append(f"{self.n_lines} polylines")
+        if len(self.creases):
+            parts.append(f"{len(self.creases)} creases")
+        if len(self.corners):
+            parts.append(f"{len(self.corners)} corners")
+        for label, data in (("point data", self.point_data), ("cell data", self.cell_data)):
+            if data:
+                parts.append(f"{label} {sorted(data)}")
+        return f"<subdivkit.Mesh '{self.name}': {', '.join(parts)}>"
+
+
+def _data_pairs(data, rows, what):
+    """A data dict as (name, 2-d float64 array) pairs for the extension, checked."""
+    pairs = []
+    for key, values in (data or {}).items():
+        a = np.asarray(values)
+        if a.dtype.kind not in "fiub":
+            raise Error(f"{what} '{key}': expected numbers, got dtype {a.dtype}")
+        if a.ndim not in (1, 2) or a.shape[0] != rows:
+            raise Error(f"{what} '{key}': expected {rows} rows, got shape {a.shape}")
+        pairs.append((str(key), np.ascontiguousarray(a.reshape(rows, -1), dtype=np.float64)))
+    return pairs
+
+
+def _data_shapes_like(refined, original):
+    """Refined data arrays back in the shapes they came in: 1-d stays 1-d."""
+    return {key: (refined[key].reshape(-1) if np.ndim(original[key]) == 1 else refined[key]) for key in refined}
+
+
+def read_mesh(path):
+    """Read a mesh file: .obj (with 'l' polylines and 't crease'/'t corner' tags), .off, .ply,
+    .stl, .om, .vtp or .vtk, chosen by the extension.
+
+    Returns a Mesh named after the file. Raises subdivkit.Error with the command line's
+    message (naming the file and line) for missing files, unknown formats and bad content.
+    """
+    path = os.fspath(path)
+    return Mesh._from_arrays(_subdivkit._read_mesh(path), name=path)
+
+
+def write_mesh(path, mesh, point_data=None, cell_data=None):
+    """Write a Mesh by extension: .obj (exact doubles, polylines, crease and corner tags),
+    .off, .ply, .stl, or .vtp / .pvd for ParaView.
+
+    ``point_data`` and ``cell_data`` default to the mesh's own dicts; only .vtp and .pvd
+    hold them (other formats warn and leave them out). The file is written atomically: it
+    is either complete or left as it was. Raises subdivkit.Error before creating anything
+    for an unknown extension, a missing directory or an invalid mesh.
+    """
+    if not isinstance(mesh, Mesh):
+        raise Error(f"write_mesh: expected a subdivkit.Mesh, got {type(mesh).__name__}")
+    point_data = mesh.point_data if point_data is None else point_data
+    cell_data = mesh.cell_data if cell_data is None else cell_data
+    _subdivkit._write_mesh(os.fspath(path), mesh, _data_pairs(point_data, mesh.n_points, "point data"),
+                           _data_pairs(cell_data, mesh.n_faces, "cell data"))

@@ -1,0 +1,213 @@
+"""Refinement, stencil matrices, limit points and progressive interpolation."""
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import _subdivkit
+from ._subdivkit import Error, Scheme
+from .mesh import Mesh, _data_pairs, _data_shapes_like
+
+BOUNDARY_MODES = ("edges-and-corners", "edges", "none")
+
+
+def _check_mesh(mesh, what):
+    if not isinstance(mesh, Mesh):
+        raise Error(f"{what}: expected a subdivkit.Mesh (read_mesh or Mesh(points, faces)), got {type(mesh).__name__}")
+
+
+def _check_levels(levels):
+    if isinstance(levels, bool) or not isinstance(levels, (int, np.integer)):
+        raise Error(f"levels={levels!r}: give a whole number of levels")
+    return int(levels)
+
+
+def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edges-and-corners",
+           crease_method="uniform", threads=0, all_levels=False, start_level=0):
+    """Refine a mesh ``levels`` times with a scheme; return the finest level as a Mesh.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        Polygons for a surface scheme, polylines for a curve scheme.
+    scheme : Scheme or str
+        A Scheme, a built-in name, a .json path, or a sequence "A:1,B:3" (A for one level,
+        then B; a name without ":N" takes the rest of ``levels``), as ``--scheme``.
+    levels : int
+        Refinement steps, 0 to 30.
+    params : dict, optional
+        Parameter values, as ``--param``: for a Scheme they replace its own; for a
+        sequence they go to every scheme that has the parameter, e.g.
+        ``refine(mesh, "catmull-clark-shape:1,catmull-clark", 3, params={"lambda": 0.8})``.
+    boundary : str
+        'edges-and-corners' (boundary corners stay; the default), 'edges' or 'none', as
+        OpenSubdiv's boundary interpolation.
+    crease_method : str
+        How semi-sharp creases decay: 'uniform' or 'chaikin'.
+    threads : int
+        Worker threads, 0 for all cores. Results are the same bits for any count.
+    all_levels : bool
+        Return the list of every level, the input first, instead of the finest.
+    start_level : int
+        How many steps made the input already (sqrt3's alternating boundary rule and
+        level-dependent formulas count from the original mesh).
+
+    The mesh's point_data is refined with the same rules as the points (any number of
+    columns); cell_data follows each face into its children. Crease sharpness decays
+    per level as in OpenSubdiv. The GIL is released while the engine works.
+    """
+    _check_mesh(mesh, "refine")
+    levels = _check_levels(levels)
+    refined = _subdivkit._refine(mesh, scheme, params, levels, boundary, crease_method, int(threads), bool(all_levels),
+                                 int(start_level), _data_pairs(mesh.point_data, mesh.n_points, "point data"),
+                                 _data_pairs(mesh.cell_data, mesh.n_faces, "cell data"))
+    meshes = [Mesh._from_arrays(level, name=mesh.name,
+                                point_data=_data_shapes_like(level["point_data"], mesh.point_data),
+                                cell_data=_data_shapes_like(level["cell_data"], mesh.cell_data))
+              for level in refined]
+    return meshes if all_levels else meshes[-1]
+
+
+def _scipy_sparse():
+    try:
+        import scipy.sparse
+    except ImportError as e:  # SciPy is optional for everything but matrices
+        raise ImportError("subdivkit.stencils returns scipy.sparse matrices and needs SciPy: install it "
+                          "(Debian: apt-get install python3-scipy; pip: pip install scipy)") from e
+    return scipy.sparse
+
+
+def stencils(mesh, scheme="catmull-clark", levels=1, *, composed=False, params=None, boundary="edges-and-corners",
+             crease_method="uniform", threads=0, start_level=0):
+    """The subdivision matrices of a mesh: ``P_fine = S @ P``.
+
+    Returns a list of ``scipy.sparse.csr_matrix``, one per level (level l's rows are the
+    points of level l + 1, its columns those of level l), or, with ``composed=True``, one
+    matrix from the input's points straight to the finest level's. Topology is refined
+    once; new positions (animation, editing, fitting) then cost one product. The rows
+    are the engine's stencil tables and sum to 1.
+
+    Arguments as refine() (``params`` too). Needs SciPy (imported on first use). Non-linear schemes
+    (plugin rules) have no matrix and raise subdivkit.Error.
+    """
+    _check_mesh(mesh, "stencils")
+    levels = _check_levels(levels)
+    tables = _subdivkit._stencils(mesh, scheme, params, levels, bool(composed), boundary, crease_method, int(threads),
+                                  int(start_level))
+    sparse = _scipy_sparse()
+    matrices = [sparse.csr_matrix((t["data"], t["indices"], t["indptr"]), shape=t["shape"]) for t in tables]
+    return matrices[0] if composed else matrices
+
+
+@dataclass
+class LimitPoints:
+    """Limit positions of a mesh's vertices (limit_positions' result).
+
+    ``points`` (n, 3): each vertex's point on the limit surface (or curve); ``normals`` (n, 3):
+    unit limit normals (surfaces; zero where none exists, None for curves); ``exact`` (n,)
+    bool: False where the position had to be approximated (reasons in ``approximate_reasons``).
+    """
+    points: np.ndarray
+    normals: np.ndarray = None
+    exact: np.ndarray = None
+    normal_exact: np.ndarray = None
+    approximate_reasons: list = field(default_factory=list)
+
+
+def limit_positions(mesh, scheme="catmull-clark", *, params=None, boundary="edges-and-corners",
+                    crease_method="uniform", start_level=0):
+    """Where each vertex of the mesh ends up on the limit surface, with limit normals.
+
+    The masks come from the scheme's own eigen-analysis (left eigenvectors of the local
+    subdivision matrix), as ``subdiv refine --limit``; vertices whose neighbourhood is
+    unusual are refined locally first. For curve schemes and polylines, the limit points of
+    the control points (no normals). ``params`` as in refine(). Returns a LimitPoints.
+    """
+    _check_mesh(mesh, "limit_positions")
+    r = _subdivkit._limit_positions(mesh, scheme, params, boundary, crease_method, int(start_level))
+    if "normals" not in r:
+        return LimitPoints(points=r["points"])
+    return LimitPoints(points=r["points"], normals=r["normals"], exact=r["exact"].astype(bool),
+                       normal_exact=r["normal_exact"].astype(bool), approximate_reasons=list(r["approximate_reasons"]))
+
+
+@dataclass
+class Interpolation:
+    """The result of interpolate().
+
+    ``mesh``: the new control mesh (same topology, moved points); ``limit`` (n, 3): its limit
+    points; ``iterations`` and ``converged``; ``max_residual`` and ``rms_residual``: per
+    iteration k, the distance between the targets and the limit points of the moving
+    vertices; ``tolerance``: the stopping distance used; ``limit_description``: which limit
+    operator was used and how it was checked.
+    """
+    mesh: Mesh
+    limit: np.ndarray
+    iterations: int
+    converged: bool
+    max_residual: np.ndarray
+    rms_residual: np.ndarray
+    tolerance: float
+    limit_description: str
+
+
+def _moving_mask(select, n):
+    if select is None or (isinstance(select, str) and select == "all"):
+        return None
+    if isinstance(select, str):
+        raise Error(f"select={select!r}: give 'all', a list of vertex ids or a boolean mask")
+    a = np.asarray(select)
+    if a.size == 0:
+        raise Error("select: no vertex selected; select at least one vertex to move")
+    if a.dtype == bool:
+        if a.shape != (n,):
+            raise Error(f"select: a boolean mask needs one flag per vertex ({n}), got shape {a.shape}")
+        mask = a.astype(np.int32)
+    else:
+        if a.dtype.kind not in "iu":
+            raise Error(f"select: expected vertex ids (integers) or a boolean mask, got dtype {a.dtype}")
+        a = a.reshape(-1)
+        if a.size and (a.min() < 0 or a.max() >= n):
+            bad = a.min() if a.min() < 0 else a.max()
+            raise Error(f"select: vertex {bad} does not exist; the mesh has {n} vertices (0-based ids)")
+        mask = np.zeros(n, dtype=np.int32)
+        mask[a] = 1
+    if not mask.any():
+        raise Error("select: no vertex selected; select at least one vertex to move")
+    return mask
+
+
+def interpolate(mesh, scheme="catmull-clark", *, select=None, tolerance=None, max_iterations=1000, params=None,
+                boundary="edges-and-corners", threads=0):
+    """Progressive interpolation: move control points until the limit surface passes
+    through the mesh's vertices (as ``subdiv interpolate``).
+
+    Parameters
+    ----------
+    select : None, 'all', list of vertex ids, or boolean mask
+        The vertices to interpolate; the others stay where they are (local interpolation).
+    tolerance : float, optional
+        Stop once every selected vertex's limit point is this close (default 1e-10 times
+        the bounding-box diagonal).
+    max_iterations : int
+        Iteration cap; the result says whether it converged.
+    scheme : Scheme or str
+        A surface scheme or sequence such as "catmull-clark-shape:1,catmull-clark", or a
+        curve scheme for polylines.
+    params : dict, optional
+        Parameter values, as in refine(); seed 001's shape parameter is
+        ``params={"lambda": 0.5}`` with "catmull-clark-shape:1,catmull-clark".
+
+    Returns an Interpolation. Raises subdivkit.Error when the scheme has no checked limit
+    operator or the iteration diverges.
+    """
+    _check_mesh(mesh, "interpolate")
+    moving = _moving_mask(select, mesh.n_points)
+    r = _subdivkit._interpolate(mesh, scheme, params, moving, -1.0 if tolerance is None else float(tolerance),
+                                int(max_iterations), boundary, int(threads))
+    return Interpolation(mesh=mesh.with_points(r["points"]), limit=r["limit"], iterations=r["iterations"],
+                         converged=r["converged"], max_residual=r["max_residual"], rms_residual=r["rms_residual"],
+                         tolerance=r["tolerance"], limit_description=r["limit_description"])
+
+
+__all__ = ["refine", "stencils", "limit_positions", "interpolate", "LimitPoints", "Interpolation", "Scheme"]

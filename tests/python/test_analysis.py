@@ -1,0 +1,75 @@
+"""analyze() against closed forms from the literature (seed 000)."""
+import numpy as np
+import pytest
+
+import subdivkit as sk
+
+VALENCES = np.arange(3, 13)
+
+
+def catmull_clark_subdominant(n):
+    """Seed 000 §5: lambda = (4 + A_n)/16,
+    A_n = 1 + cos(2 pi/n) + cos(pi/n) sqrt(2 (9 + cos(2 pi/n)))."""
+    c = np.cos(2 * np.pi / n)
+    return (4 + 1 + c + np.cos(np.pi / n) * np.sqrt(2 * (9 + c))) / 16
+
+
+def test_catmull_clark_subdominant_eigenvalue_is_the_closed_form():
+    a = sk.analyze("catmull-clark", valences=range(3, 13))
+    assert list(a.valences) == list(VALENCES)
+    expected = catmull_clark_subdominant(VALENCES)
+    assert np.abs(a.subdominant - expected).max() <= 1e-10
+    assert np.abs(a.lambda2 - expected).max() <= 1e-10  # a double eigenvalue
+    assert a.c1.all()
+    for values in a.eigenvalues:
+        assert abs(values[0] - 1) <= 1e-12  # affine invariance
+        assert abs(values[1]) == pytest.approx(abs(values[2]))
+
+
+def test_loop_subdominant_eigenvalue_is_three_eighths_plus_a_quarter_cosine():
+    # Loop 1987: the edge rule gives lambda_1 = 3/8 + cos(2 pi/n)/4 for every valence.
+    a = sk.analyze("loop", valences=VALENCES)
+    assert np.abs(a.subdominant - (3 / 8 + np.cos(2 * np.pi / VALENCES) / 4)).max() <= 1e-10
+
+
+def test_limit_masks_are_left_eigenvectors_of_one():
+    a = sk.analyze("catmull-clark", valences=[4])
+    mask = a.limit_masks[0]
+    assert mask.sum() == pytest.approx(1, abs=1e-12)
+    # The bicubic B-spline's limit point: 4/9 on the vertex, 1/9 on its 4 edge neighbours,
+    # 1/36 on its 4 diagonal neighbours.
+    nonzero = np.sort(mask[np.abs(mask) > 1e-12])
+    assert np.allclose(nonzero, sorted([4 / 9] + [1 / 9] * 4 + [1 / 36] * 4), atol=1e-12)
+    # Tangent masks annihilate constants (two rows).
+    assert a.tangent_masks[0].shape[0] == 2
+    assert np.abs(a.tangent_masks[0].sum(axis=1)).max() <= 1e-12
+
+
+def test_spectrum_is_a_padded_array_of_moduli():
+    a = sk.analyze("catmull-clark", valences=[3, 5])
+    s = a.spectrum(6)
+    assert s.shape == (2, 6)
+    assert s[:, 0] == pytest.approx([1, 1])
+    assert s[:, 1] == pytest.approx(catmull_clark_subdominant(np.array([3, 5])))
+
+
+def test_curve_schemes_give_their_symbol_and_spectrum():
+    b = sk.analyze("cubic-bspline")
+    assert isinstance(b, sk.CurveAnalysis)
+    # Mask (1, 4, 6, 4, 1)/8 on -2..2; C2; eigenvalues 1, 1/2, 1/4, 1/8, 1/8 (seed 000 §3).
+    assert b.mask_first == -2 and np.allclose(b.mask, np.array([1, 4, 6, 4, 1]) / 8)
+    assert b.convergent and b.smoothness == 2
+    assert np.allclose(np.sort(np.abs(b.eigenvalues))[::-1], [1, 1 / 2, 1 / 4, 1 / 8, 1 / 8])
+    assert np.allclose(b.limit_mask[np.abs(b.limit_mask) > 1e-12], [1 / 6, 4 / 6, 1 / 6])
+    fp = sk.analyze(sk.Scheme.load("four-point", w=1 / 16))
+    assert fp.convergent and fp.smoothness == 1  # C1, not C2 (Dyn, Levin, Gregory 1987)
+
+
+def test_a_scheme_that_fails_says_why():
+    # Bilinear subdivision keeps the control mesh (piecewise linear): at a vertex of valence
+    # n the eigenvalue 1/2 has multiplicity n (every ring edge is its own linear piece), so
+    # the subdominant pair does not dominate and there is no tangent plane.
+    a = sk.analyze("bilinear", valences=[3, 5])
+    assert not a.c1.any()
+    assert np.allclose(a.subdominant, 0.5) and np.allclose(a.lambda3, 0.5)
+    assert all(v.startswith("fails:") and "multiplicity" in v for v in a.verdicts)

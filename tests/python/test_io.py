@@ -1,0 +1,68 @@
+"""read_mesh / write_mesh round trips, tags, and data arrays in .vtp files."""
+import warnings
+
+import numpy as np
+import pytest
+
+import subdivkit as sk
+from conftest import MESHES, parse_obj
+
+
+def test_obj_round_trip_is_exact_with_creases_and_corners(tmp_path):
+    mesh = sk.read_mesh(MESHES / "cube.obj")
+    rng = np.random.default_rng(7)
+    tagged = sk.Mesh(mesh.points + rng.standard_normal(mesh.points.shape) * 1e-3, mesh.faces,
+                     creases=[[0, 1], [1, 2]], crease_sharpness=[2.5, 10], corners=[5], corner_sharpness=3)
+    path = tmp_path / "tagged.obj"
+    sk.write_mesh(path, tagged)
+    back = sk.read_mesh(path)
+    assert np.array_equal(back.points, tagged.points)  # OBJ is written with exact doubles
+    assert np.array_equal(back.faces, tagged.faces)
+    assert {tuple(sorted(c)) for c in back.creases} == {(0, 1), (1, 2)}
+    assert sorted(back.crease_sharpness) == [2.5, 10]
+    assert list(back.corners) == [5] and list(back.corner_sharpness) == [3]
+    points, faces = parse_obj(path)  # and an independent reader agrees
+    assert np.array_equal(points, tagged.points)
+
+
+def test_refined_creases_keep_their_decayed_sharpness():
+    mesh = sk.read_mesh(MESHES / "cube.obj")
+    creased = sk.Mesh(mesh.points, mesh.faces, creases=[mesh.faces[0][:2]], crease_sharpness=2)
+    one = sk.refine(creased, "catmull-clark", 1)
+    assert len(one.creases) == 2 and np.allclose(one.crease_sharpness, 1)  # split in two, sharpness - 1
+
+
+@pytest.mark.parametrize("extension", [".off", ".ply", ".vtp"])
+def test_other_formats_round_trip(tmp_path, extension):
+    mesh = sk.refine(sk.read_mesh(MESHES / "cube.obj"), "catmull-clark", 1)
+    path = tmp_path / f"mesh{extension}"
+    sk.write_mesh(path, mesh)
+    back = sk.read_mesh(path)
+    assert np.array_equal(back.points, mesh.points)
+    assert np.array_equal(back.faces, mesh.faces)
+
+
+def test_point_and_cell_data_go_to_vtp_and_warn_elsewhere(tmp_path):
+    mesh = sk.read_mesh(MESHES / "cube.obj")
+    mesh.point_data["height"] = mesh.points[:, 2].copy()
+    mesh.cell_data["id"] = np.arange(6.0)
+    sk.write_mesh(tmp_path / "data.vtp", mesh)
+    text = (tmp_path / "data.vtp").read_bytes()
+    assert b'Name="height"' in text and b'Name="id"' in text
+    with pytest.warns(UserWarning, match="no point or cell data"):
+        sk.write_mesh(tmp_path / "data.obj", mesh)
+
+
+def test_writing_refuses_before_creating_anything(tmp_path):
+    mesh = sk.read_mesh(MESHES / "cube.obj")
+    with pytest.raises(sk.Error, match="unknown|extension|format"):
+        sk.write_mesh(tmp_path / "mesh.xyz", mesh)
+    with pytest.raises(sk.Error):
+        sk.write_mesh(tmp_path / "missing-dir" / "mesh.obj", mesh)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_polylines_are_read_as_lines():
+    curve = sk.read_mesh(MESHES.parent / "curves" / "two-strokes.obj")
+    assert curve.n_faces == 0 and curve.n_lines == 3  # three 'l' records
+    assert len(curve.line_list()) == 3
