@@ -1,4 +1,5 @@
 // Splits by name: the built-in splitters and those registered at run time (plugins).
+#include <cmath>
 #include <deque>
 #include <fmt/format.h>
 #include <mutex>
@@ -41,10 +42,15 @@ struct SplitterTable {
     sqrt3.rule_elements = {O::Vertex, O::Face};
     sqrt3.required_face_size = 3;
     sqrt3.curve_arity = 3;
+    sqrt3.scale = std::sqrt(3.0);
+    sqrt3.period = 2;          // the split turns the mesh by 30 degrees
+    sqrt3.feature_period = 2;  // boundaries are trisected every second step
     SplitterInfo dual = builtin("dual", "dual split (Doo and Sabin 1978): one new point per face corner", split_dual, {O::Corner});
     dual.primal = false;
     SplitterInfo mid = builtin("mid-edge", "mid-edge split (Peters and Reif 1997): one new point per edge", split_mid_edge, {O::Edge});
     mid.primal = false;
+    mid.scale = std::sqrt(2.0);
+    mid.period = 2;  // the split turns the mesh by 45 degrees
     for (SplitterInfo* info : {&quad, &tri, &sqrt3, &dual, &mid}) builtins.push_back(std::move(*info));
   }
 

@@ -61,6 +61,17 @@ struct SplitterInfo {
   // carries crease sharpness to the child. Otherwise `split` fills the child's tags itself
   // (or leaves them empty: all smooth).
   bool engine_propagates_tags = false;
+  // What analysis and limit evaluation ask of a split (analysis/surface), so that a
+  // plugin's split is analysed like a built-in one. `scale`: how much one step shrinks the
+  // mesh around a fixed point (2 for binary splits, sqrt 3 for sqrt3, sqrt 2 for mid-edge).
+  // `period`: after how many steps the split's pattern repeats; 2 for splits that rotate
+  // the mesh, which the analysis then studies as S^2 (the rotation undone). Fixed points sit
+  // on vertices for primal splits and at face centres otherwise (`primal`).
+  double scale = 2.0;
+  int period = 1;
+  // Steps between refinements of boundaries and creases: sqrt3 trisects them every second
+  // step (2); SplitResult::features_refined says which steps do.
+  int feature_period = 1;
   std::string origin = "built-in";  // or the plugin that registered it
 };
 

@@ -760,7 +760,7 @@ std::shared_ptr<const Scheme> surface_scheme_from_json(const Json& root, const s
   const std::vector<size_t> kept = unroll_steps(parsed, *s, at);
   for (size_t i : kept) s->steps.push_back(parsed.steps[i]);
   const SplitKind split = s->split();
-  if (s->required_face_size == 4 && (split == SplitKind::Triangle || split == SplitKind::Sqrt3))
+  if (s->required_face_size == 4 && splitter_info(split).required_face_size == 3)
     fail(at / "faces", "this split works on triangles; \"faces\" must be \"triangles\"");
   if (s->steps.size() > 1) s->steps.front().curve_rules_apply = false;
   if (root.contains("curve")) {

@@ -19,6 +19,8 @@
 #include "framework/refine/child_tags.h"
 #include "framework/util/error.h"
 
+#include <cmath>
+
 namespace {
 
 using subdiv::Index;
@@ -99,6 +101,10 @@ void register_sqrt2(subdiv::PluginRegistry& registry) {
   split.rule_elements = {subdiv::OriginKind::Vertex, subdiv::OriginKind::Edge, subdiv::OriginKind::Face};
   split.curve_arity = 2;
   split.primal = true;
+  // Each step shrinks the grid by sqrt 2 and turns it by 45 degrees; two steps are one
+  // dyadic refinement, so the analysis studies S^2 at scale 2.
+  split.scale = std::sqrt(2.0);
+  split.period = 2;
   registry.add_splitter(std::move(split));
   registry.add_json_scheme(kSqrt2Scheme);
 }

@@ -174,7 +174,7 @@ struct SchemeLimits::Impl {
     centre = analysis_centre(s);
     cells = analysis_cells(s);
     level_dependent = scheme_is_level_dependent(s);
-    alternating = s.split() == SplitKind::Sqrt3;
+    alternating = splitter_info(s.split()).feature_period > 1;
   }
 
   SurfaceAnalysisOptions analysis_options() const {

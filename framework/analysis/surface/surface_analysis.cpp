@@ -230,14 +230,6 @@ std::string curvature_text(const std::vector<Complex>& ev, double l1) {
 // ---------------------------------------------------------------------------------------------
 // Characteristic map.
 
-double split_scale(SplitKind k) {
-  switch (k) {
-    case SplitKind::Sqrt3: return std::sqrt(3.0);
-    case SplitKind::MidEdge: return std::sqrt(2.0);
-    default: return 2.0;
-  }
-}
-
 struct AnalysisRun {
   const Scheme& scheme;
   const Patch& patch;
@@ -285,7 +277,7 @@ void check_characteristic_map(const AnalysisRun& cx, int K, const Matrix& rp, do
   else
     for (size_t f = 0; f < e.face_original.size(); ++f)
       if (e.face_original[f] == p.centre) centre = Index(f);
-  const double s = split_scale(cx.scheme.split());
+  const double s = splitter_info(cx.scheme.split()).scale;
   int T = cx.steps;
   while (std::pow(s, T) < cx.options.characteristic_scale - 1e-9) T += cx.steps;
   RefineOptions ro = cx.refine;
@@ -687,21 +679,17 @@ void trim_masks(SurfaceAnalysis& r) {
 
 }  // namespace
 
+// What the split says of itself (SplitterInfo), so that plugin splits are analysed alike.
 CentreKind analysis_centre(const Scheme& scheme) {
-  const SplitKind k = scheme.split();
-  return k == SplitKind::Dual || k == SplitKind::MidEdge ? CentreKind::Face : CentreKind::Vertex;
+  return splitter_info(scheme.split()).primal ? CentreKind::Vertex : CentreKind::Face;
 }
 
 PatchCells analysis_cells(const Scheme& scheme) {
-  const SplitKind k = scheme.split();
-  if (k == SplitKind::Triangle || k == SplitKind::Sqrt3 || scheme.required_face_size == 3) return PatchCells::Triangles;
-  return PatchCells::Quads;
+  const bool triangles = splitter_info(scheme.split()).required_face_size == 3 || scheme.required_face_size == 3;
+  return triangles ? PatchCells::Triangles : PatchCells::Quads;
 }
 
-int analysis_steps(const Scheme& scheme) {
-  const SplitKind k = scheme.split();
-  return k == SplitKind::Sqrt3 || k == SplitKind::MidEdge ? 2 : 1;
-}
+int analysis_steps(const Scheme& scheme) { return splitter_info(scheme.split()).period; }
 
 SurfaceAnalysis analyse_patch(const Scheme& scheme, const Patch& patch, const LocalConfig& config,
                               const SurfaceAnalysisOptions& options) {

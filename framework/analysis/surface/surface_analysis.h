@@ -98,11 +98,11 @@ struct SurfaceAnalysis {
 
 };
 
-// Vertex for primal and sqrt(3) splits, Face for dual and mid-edge splits.
+// Vertex for primal splits (quad, triangle, sqrt3), Face for dual ones (dual, mid-edge).
 CentreKind analysis_centre(const Scheme& scheme);
 // Quads unless the scheme refines triangles.
 PatchCells analysis_cells(const Scheme& scheme);
-// 2 for splits that rotate the mesh (sqrt3, mid-edge), else 1.
+// The split's period: 2 for splits that rotate the mesh (sqrt3, mid-edge), else 1.
 int analysis_steps(const Scheme& scheme);
 
 // Analyses the scheme on a given patch (centre and start set in the patch).
