@@ -221,8 +221,10 @@ void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path
   writer->AddObserver(vtkCommand::ErrorEvent, observer);
   writer->SetInputData(&poly);
   writer->SetFileName(file.c_str());
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();  // raw binary, not base64
+  // Inline binary (base64 inside each DataArray), not raw appended data: the file is then
+  // well-formed XML, which every ParaView reads, including Debian 12's ParaView 5.11 whose
+  // VTK fails on appended data with the system's Expat (see expat_reparse_fix.cpp).
+  writer->SetDataModeToBinary();
   writer->SetCompressorTypeToZLib();
   writer->SetHeaderTypeToUInt64();  // blocks over 4 GB on large levels
   if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors.empty())
