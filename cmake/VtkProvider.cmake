@@ -10,6 +10,7 @@
 set(SUBDIV_VTK_PROVIDER auto CACHE STRING "VTK to build the VTK file IO against: auto, debian or paraview")
 set_property(CACHE SUBDIV_VTK_PROVIDER PROPERTY STRINGS auto debian paraview)
 set(subdiv_vtk_components CommonCore CommonDataModel IOXML IOLegacy)
+unset(SUBDIV_VTK_PROVIDER_FOUND CACHE)  # decided afresh at every configure
 
 if(SUBDIV_VTK_PROVIDER STREQUAL "auto" OR SUBDIV_VTK_PROVIDER STREQUAL "debian")
   # Debian's VTK installs its package config under cmake/vtk-9.1; ParaView's VTK is not on
@@ -41,6 +42,7 @@ if(NOT SUBDIV_VTK_PROVIDER_FOUND AND (SUBDIV_VTK_PROVIDER STREQUAL "auto" OR SUB
 endif()
 
 if(SUBDIV_VTK_PROVIDER_FOUND)
+  set(SUBDIV_VTK_PROVIDER_FOUND ${SUBDIV_VTK_PROVIDER_FOUND} CACHE INTERNAL "the VTK the build uses")
   set(SUBDIV_HAVE_VTK TRUE)
   set(SUBDIV_VTK_LIBRARIES VTK::CommonCore VTK::CommonDataModel VTK::IOXML VTK::IOLegacy)
   message(STATUS "VTK file IO against ${SUBDIV_VTK_PROVIDER_FOUND}'s VTK ${VTK_VERSION} (${VTK_DIR})")

@@ -41,7 +41,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libopenmesh-dev nlohmann-json3-dev libfmt-dev doctest-dev
   "${vtk_packages[@]}" libeigen3-dev libmuparser-dev libcli11-dev libtbb-dev
-  libosd-dev
+  libosd-dev ccache
   pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib
 )
 missing=()

@@ -2,8 +2,7 @@
 # Builds (if needed) and runs the whole test suite with ctest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-if [ ! -f build/build.ninja ]; then
-  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
-fi
+export CCACHE_BASEDIR="$PWD"  # clones of the checkout share ccache's objects
+bash scripts/configure.sh
 cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure -j"$(nproc)"

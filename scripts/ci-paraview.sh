@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# CI stage: the README's two commands on a machine where a user already has Debian's
+# ParaView and its Python (paraview, python3-paraview). python3-paraview conflicts with
+# python3-vtk9, which Debian's libvtk9-dev needs, so installing them removes Debian's VTK;
+# setup.sh must then build against ParaView's VTK (paraview-dev) instead. Runs on a clean
+# clone of this checkout, as a user would. Run as root, after the default stage.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export DEBIAN_FRONTEND=noninteractive
+echo "== ParaView stage: installing paraview and python3-paraview (removes Debian's VTK)"
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends paraview python3-paraview > /dev/null
+if dpkg-query -W -f='${Status}' libvtk9-dev 2>/dev/null | grep -q "install ok installed"; then
+  echo "ci-paraview.sh: libvtk9-dev is still installed; this stage would not test ParaView's VTK" >&2
+  exit 1
+fi
+work=$(mktemp -d "${TMPDIR:-/tmp}/subdivkit-paraview.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+git clone -q . "$work/subdivkit"
+cd "$work/subdivkit"
+bash scripts/setup.sh
+grep -q "SUBDIV_VTK_PROVIDER_FOUND:INTERNAL=paraview" build/CMakeCache.txt ||
+  { echo "ci-paraview.sh: the build did not use ParaView's VTK" >&2; exit 1; }
+bash scripts/test.sh
+# ParaView itself opens what `subdiv` wrote (its reader, its Expat).
+pvpython -c "
+from paraview.simple import OpenDataFile
+r = OpenDataFile('out/cube_levels/level_3.vtp'); r.UpdatePipeline()
+n = r.GetDataInformation().GetNumberOfCells()
+assert n == 384, n
+print('pvpython reads out/cube_levels/level_3.vtp:', n, 'cells')
+"

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Configures build/ (Release, Ninja) unless it is configured already; compiles through
+# ccache when it is installed (scripts/install-deps.sh installs it), with paths relative
+# to the checkout so that clones share the cache.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ -f build/build.ninja ] && exit 0
+launcher=()
+if command -v ccache > /dev/null; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "${launcher[@]}"
