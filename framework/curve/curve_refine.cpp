@@ -189,13 +189,4 @@ CurveHierarchy refine_curves(const CurveScheme& scheme, CurveLevel base, int lev
   return h;
 }
 
-std::vector<double> interpolate_curves(const CurveHierarchy& h, int to_level, std::span<const double> base_values,
-                                       int channels) {
-  if (to_level < 0 || to_level > int(h.stencils.size()))
-    throw Error(fmt::format("interpolate: level {} is not in 0..{}", to_level, h.stencils.size()));
-  std::vector<double> values(base_values.begin(), base_values.end());
-  for (int l = 0; l < to_level; ++l) values = h.stencils[l].apply(values, channels);
-  return values;
-}
-
 }  // namespace subdiv

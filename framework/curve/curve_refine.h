@@ -56,8 +56,4 @@ struct CurveHierarchy {
 // `levels` steps, the rules evaluated at each level (non-stationary schemes change).
 CurveHierarchy refine_curves(const CurveScheme& scheme, CurveLevel base, int levels);
 
-// Values (channels per vertex) of the base level carried to level `to_level`.
-std::vector<double> interpolate_curves(const CurveHierarchy& hierarchy, int to_level,
-                                       std::span<const double> base_values, int channels);
-
 }  // namespace subdiv

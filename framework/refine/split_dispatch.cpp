@@ -118,13 +118,4 @@ void unregister_splitter(SplitKind kind) {
   t.registered.pop_back();
 }
 
-std::vector<const SplitterInfo*> list_splitters() {
-  SplitterTable& t = table();
-  std::lock_guard lock(t.mutex);
-  std::vector<const SplitterInfo*> out;
-  for (const auto* list : {&t.builtins, &t.registered})
-    for (const auto& info : *list) out.push_back(&info);
-  return out;
-}
-
 }  // namespace subdiv

@@ -86,7 +86,5 @@ SplitKind register_splitter(SplitterInfo info);
 // Removes the most recently registered splitter, which must be `kind` (the plugin loader
 // undoes a refused plugin's registrations this way).
 void unregister_splitter(SplitKind kind);
-// Every splitter, built-in ones first.
-std::vector<const SplitterInfo*> list_splitters();
 
 }  // namespace subdiv

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "shared_options.h"
 #include "curve_report.h"
 #include "surface_report.h"
 #include "framework/analysis/curve/curve_scheme_analysis.h"
@@ -33,15 +34,6 @@ struct AnalyzeArgs {
   int max_ring = 5;
 };
 
-ParameterOverrides overrides_of(const std::vector<std::string>& params) {
-  ParameterOverrides out;
-  for (const auto& p : params) {
-    const auto eq = p.find('=');
-    if (eq == std::string::npos || eq == 0) throw Error(fmt::format("--param '{}' must be written name=value", p));
-    out[p.substr(0, eq)] = p.substr(eq + 1);
-  }
-  return out;
-}
 
 int parse_int(const std::string& text, const std::string& what) {
   try {
@@ -107,7 +99,7 @@ void write_characteristic_maps(const std::filesystem::path& dir, const std::stri
 }
 
 void run_curve(const AnalyzeArgs& a) {
-  const auto curve = load_curve_scheme_named(a.scheme, overrides_of(a.params));
+  const auto curve = load_curve_scheme_named(a.scheme, parse_params(a.params));
   const CurveSchemeAnalysis r = analyse_curve_scheme(*curve, a.level);
   fmt::print("{}", curve_scheme_summary(r));
   if (!a.json_file.empty()) write_text(a.json_file, curve_scheme_json(r).dump(2) + "\n");
@@ -118,11 +110,9 @@ void run_curve(const AnalyzeArgs& a) {
 }
 
 void run_surface(const AnalyzeArgs& a) {
-  const auto scheme = load_scheme(a.scheme, overrides_of(a.params));
+  const auto scheme = load_scheme(a.scheme, parse_params(a.params));
   SurfaceAnalysisOptions options;
-  options.features.boundary = a.boundary_mode == "none"    ? BoundaryInterpolation::None
-                     : a.boundary_mode == "edges" ? BoundaryInterpolation::EdgesOnly
-                                                  : BoundaryInterpolation::EdgesAndCorners;
+  options.features.boundary = boundary_from_name(a.boundary_mode);
   options.max_ring = a.max_ring;
   options.characteristic_map = true;
   const CentreKind centre = analysis_centre(*scheme);
@@ -181,7 +171,7 @@ void run_surface(const AnalyzeArgs& a) {
     j["stationary"] = !level_dependent;
     j["level"] = a.level;
     j["parameters"] = nlohmann::json::object();
-    for (const auto& [k, v] : overrides_of(a.params)) j["parameters"][k] = v;
+    for (const auto& [k, v] : parse_params(a.params)) j["parameters"][k] = v;
     write_text(a.json_file, j.dump(2) + "\n");
   }
   if (!a.svg_file.empty())
@@ -203,11 +193,9 @@ void add_analyze_command(CLI::App& app) {
   cmd->add_option("--vtk", args->vtk_dir, "Write each valence's characteristic map as a .vtp file into this directory");
   cmd->add_option("--json", args->json_file, "Write the report as JSON");
   cmd->add_option("--svg", args->svg_file, "Write the spectrum (eigenvalue moduli against valence) as an SVG plot");
-  cmd->add_option("-p,--param", args->params, "Scheme parameter, name=value (repeatable), e.g. --param beta=warren");
+  add_param_option(cmd, args->params);
   cmd->add_flag("--boundary", args->boundary, "Also analyse boundary vertices of each valence");
-  cmd->add_option("--boundary-interpolation", args->boundary_mode, "As in refine's --boundary")
-      ->check(CLI::IsMember({"none", "edges", "edges-and-corners"}))
-      ->capture_default_str();
+  add_boundary_option(cmd, "--boundary-interpolation", args->boundary_mode);
   cmd->add_flag("--details", args->details, "Print every valence's full analysis (eigenvalues, checks, masks)");
   cmd->add_option("--level", args->level, "Level whose weights are analysed (level-dependent schemes)")
       ->check(CLI::NonNegativeNumber)

@@ -9,6 +9,7 @@
 #include <memory>
 #include <tbb/global_control.h>
 
+#include "framework/io/formats.h"
 #include "framework/curve/curve_refine.h"
 #include "framework/io/mesh_read.h"
 #include "framework/io/mesh_write.h"
@@ -20,14 +21,8 @@
 namespace subdiv::cli {
 namespace {
 
-std::string extension_of(const std::filesystem::path& p) {
-  std::string ext = p.extension().string();
-  for (char& c : ext) c = char(std::tolower(c));
-  return ext;
-}
-
 void check_curve_output(const std::filesystem::path& out) {
-  const std::string ext = extension_of(out);
+  const std::string ext = lowercase_extension(out);
   if (ext == ".vtp" || ext == ".pvd" || ext == ".obj") return;
   throw Error(fmt::format("cannot write polylines to '{}': use .vtp or .pvd (ParaView) or .obj ('l' lines); "
                           ".off, .ply and .stl hold no polylines",
@@ -97,7 +92,7 @@ void refine_curves_command(const CurveRefineRequest& a) {
   // Level by level, keeping only what the output needs: every level for .pvd, else the
   // finest. Each step's stencil table is dropped once applied.
   Progress progress;
-  const std::string ext = extension_of(a.output);
+  const std::string ext = lowercase_extension(a.output);
   const bool all_levels = ext == ".pvd";
   std::vector<MeshData> meshes;
   std::vector<CurveLevel> levels_kept;

@@ -11,6 +11,7 @@
 #include <tbb/global_control.h>
 
 #include "commands.h"
+#include "shared_options.h"
 #include "curve_interpolate.h"
 #include "curve_refine.h"
 #include "interpolate_common.h"
@@ -102,16 +103,6 @@ std::vector<double> read_lambda_file(const fs::path& file, Index vertex_count) {
     throw Error(fmt::format("{}: {} lambda values for a mesh of {} vertices; give one per vertex, in vertex order",
                             file.string(), values.size(), vertex_count));
   return values;
-}
-
-ParameterOverrides parse_params(const std::vector<std::string>& params) {
-  ParameterOverrides out;
-  for (const auto& p : params) {
-    const auto eq = p.find('=');
-    if (eq == std::string::npos || eq == 0) throw Error(fmt::format("--param '{}' must be written name=value", p));
-    out[p.substr(0, eq)] = p.substr(eq + 1);
-  }
-  return out;
 }
 
 bool has_lambda(const SchemeSequence& seq) {
@@ -228,9 +219,7 @@ void run(const InterpolateArgs& a) {
   const Level base = level_from_mesh(mesh, a.mesh);
   const std::vector<std::uint8_t> moving = read_selection(a.select, base.vertex_count);
   LimitSelectionOptions options;
-  options.features.boundary = a.boundary == "none"    ? BoundaryInterpolation::None
-                              : a.boundary == "edges" ? BoundaryInterpolation::EdgesOnly
-                                                      : BoundaryInterpolation::EdgesAndCorners;
+  options.features.boundary = boundary_from_name(a.boundary);
   if (!a.lambda.empty() && !lambda_value) options.lambda = read_lambda_file(a.lambda, base.vertex_count);
 
   Progress progress;
@@ -297,7 +286,7 @@ void add_interpolate_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--lambda", args->lambda,
                   "Seed 001's shape parameter in (7/20, 1]: one number, or a file with one value per vertex");
-  cmd->add_option("-p,--param", args->params, "Scheme parameter, name=value (repeatable)");
+  add_param_option(cmd, args->params);
   cmd->add_option("--tol", args->tolerance,
                   "Stop when every selected vertex's limit point is this close to it (model units; default 1e-10 "
                   "times the bounding-box diagonal)")
@@ -309,9 +298,7 @@ void add_interpolate_command(CLI::App& app) {
                   "Also write the new control mesh refined --levels times (.pvd or .vtp) with per-point arrays "
                   "target_distance, limit_residual, interpolated and base_vertex");
   cmd->add_option("-l,--levels", args->levels, "Levels for --refined")->check(CLI::Range(1, 12))->capture_default_str();
-  cmd->add_option("--boundary", args->boundary, "Boundary interpolation: edges-and-corners, edges or none")
-      ->check(CLI::IsMember({"none", "edges", "edges-and-corners"}))
-      ->capture_default_str();
+  add_boundary_option(cmd, "--boundary", args->boundary);
   cmd->add_option("-j,--threads", args->threads, "Worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
   cmd->add_flag("-v,--verbose", args->verbose, "Print the residuals of every iteration");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "framework/io/formats.h"
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_write.h"
 #include "framework/io/vtk/vtk_output.h"
@@ -9,12 +10,6 @@
 
 namespace subdiv::cli {
 namespace {
-
-std::string extension_of(const std::filesystem::path& p) {
-  std::string ext = p.extension().string();
-  for (char& c : ext) c = char(std::tolower(c));
-  return ext;
-}
 
 // Per-point: how each vertex was made, its valence and its feature class; per-cell: the
 // face it lies in, one level up and in the base mesh.
@@ -54,7 +49,7 @@ OutputLevel describe_level(const Hierarchy& h, int l, const MeshData& mesh, cons
 }  // namespace
 
 void check_output_path(const std::filesystem::path& out) {
-  const std::string ext = extension_of(out);
+  const std::string ext = lowercase_extension(out);
   if (ext == ".vtp" || ext == ".pvd" || ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl") return;
   throw Error(fmt::format("cannot write '{}': unknown output format '{}'; use .vtp or .pvd (ParaView), "
                           "or .obj, .off, .ply, .stl", out.string(), ext));
@@ -64,7 +59,7 @@ void write_levels(const std::filesystem::path& out, const Hierarchy& h,
                   const std::vector<std::vector<double>>& positions, const FeatureOptions& features,
                   const std::vector<DataArray>& finest_point_data) {
   check_output_path(out);
-  const std::string ext = extension_of(out);
+  const std::string ext = lowercase_extension(out);
   const int finest = int(h.levels.size()) - 1;
   std::vector<MeshData> meshes;
   meshes.reserve(h.levels.size());

@@ -5,6 +5,7 @@
 #include <tbb/global_control.h>
 
 #include "commands.h"
+#include "shared_options.h"
 #include "framework/io/feature_angle.h"
 #include "framework/io/feature_file.h"
 #include "framework/analysis/surface/limit_evaluation.h"
@@ -37,25 +38,11 @@ struct RefineArgs {
   bool limit = false;
 };
 
-ParameterOverrides parse_params(const std::vector<std::string>& params) {
-  ParameterOverrides out;
-  for (const auto& p : params) {
-    const auto eq = p.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw Error(fmt::format("--param '{}' must be written name=value", p));
-    out[p.substr(0, eq)] = p.substr(eq + 1);
-  }
-  return out;
-}
-
 RefineOptions refine_options(const RefineArgs& a) {
   RefineOptions o;
   o.levels = a.levels;
   o.threads = a.threads;
-  o.features.boundary = a.boundary == "none" ? BoundaryInterpolation::None
-               : a.boundary == "edges" ? BoundaryInterpolation::EdgesOnly
-                                       : BoundaryInterpolation::EdgesAndCorners;
-  o.features.crease_method = a.crease_method == "chaikin" ? CreaseMethod::Chaikin : CreaseMethod::Uniform;
+  o.features = {boundary_from_name(a.boundary), crease_method_from_name(a.crease_method)};
   o.first_step = a.start_level;
   return o;
 }
@@ -146,15 +133,9 @@ void add_refine_command(CLI::App& app) {
   cmd->add_option("-o,--output", args->output,
                   "Output file: .vtp (finest level) or .pvd (all levels) for ParaView, or .obj, .off, .ply, .stl")
       ->required();
-  cmd->add_option("-p,--param", args->params, "Scheme parameter, name=value (repeatable), e.g. --param beta=warren");
-  cmd->add_option("--boundary", args->boundary,
-                  "Boundary interpolation, as OpenSubdiv names it: edges-and-corners (boundary corners stay), "
-                  "edges (corners follow the boundary curve), none")
-      ->check(CLI::IsMember({"none", "edges", "edges-and-corners"}))
-      ->capture_default_str();
-  cmd->add_option("--crease-method", args->crease_method, "How semi-sharp crease sharpness decays: uniform or chaikin")
-      ->check(CLI::IsMember({"uniform", "chaikin"}))
-      ->capture_default_str();
+  add_param_option(cmd, args->params);
+  add_boundary_option(cmd, "--boundary", args->boundary);
+  add_crease_method_option(cmd, args->crease_method);
   cmd->add_option("--features", args->features,
                   "Feature sidecar (JSON): creases by edge or vertex path and corners by vertex, 0-based, with "
                   "sharpness; applied after the mesh file's own tags (see docs/features.md)");

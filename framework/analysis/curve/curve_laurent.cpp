@@ -57,11 +57,6 @@ LaurentPolynomial upsampled(const LaurentPolynomial& p, int m) {
   return r;
 }
 
-LaurentPolynomial difference_factor(int arity) {
-  if (arity < 2) throw Error(fmt::format("difference factor: arity {} is invalid", arity));
-  return LaurentPolynomial{0, std::vector<double>(static_cast<std::size_t>(arity), 1.0)};
-}
-
 ExactDivision divide_by_difference_factor(const LaurentPolynomial& p, int arity,
                                           double relative_tolerance) {
   const std::size_t d = static_cast<std::size_t>(arity - 1);  // degree of the divisor

@@ -27,10 +27,9 @@ LaurentPolynomial scaled(const LaurentPolynomial& p, double factor);
 // p(z^m): the symbol of a scheme applied on a grid m times coarser.
 LaurentPolynomial upsampled(const LaurentPolynomial& p, int m);
 
-// 1 + z + ... + z^{m-1}: the factor that links a scheme of arity m to its difference
-// scheme, since (1 - z^m) = (1 - z)(1 + z + ... + z^{m-1}) (seed 000 §7 Theorem 2 for m = 2).
-LaurentPolynomial difference_factor(int arity);
-
+// Division by 1 + z + ... + z^{m-1}, the factor that links a scheme of arity m to its
+// difference scheme, since (1 - z^m) = (1 - z)(1 + z + ... + z^{m-1}) (seed 000 §7
+// Theorem 2 for m = 2).
 struct ExactDivision {
   bool exact = false;                 // remainder within tolerance
   double remainder = 0.0;             // max |remainder coefficient| / p.abs_sum()
