@@ -474,49 +474,51 @@ void add_direction_masks(const Matrix& s, const std::vector<Complex>& ev, const 
   out.tangent_dimension = int(lb.cols());
 }
 
-void analyse(AnalysisRun& cx, SurfaceAnalysis& out) {
-  const Scheme& scheme = cx.scheme;
-  const Patch& p = cx.patch;
-  const int radius = cx.options.max_ring + 2;
-  // Refine; a step that leaves the centre's ring turned by about half a sector is repeated.
+// Stage 1: refine the patch until the centre's neighbourhood repeats. A step that leaves
+// the centre's ring turned by about half a sector (sqrt3, mid-edge, plugin splits with a
+// period) is repeated; the split's own period is the first guess.
+struct RefinedPatch {
+  Hierarchy hierarchy;
+  Index centre = kNone;  // the centre's counterpart on the finest level
+  int start = 0;         // its ring position aligned with the patch's start
+  Axis parent_axis;
   Index first_neighbour = kNone;
-  const Axis parent_axis = axis_of(p.level, p.xy, p.centre_kind, p.centre, p.start, &first_neighbour);
-  Hierarchy h;
-  std::vector<std::vector<double>> xy;
-  Index cc = kNone;
-  int child_start = 0;
+};
+
+RefinedPatch refine_patch(AnalysisRun& cx) {
+  const Patch& p = cx.patch;
+  RefinedPatch r;
+  r.parent_axis = axis_of(p.level, p.xy, p.centre_kind, p.centre, p.start, &r.first_neighbour);
   for (;;) {
     cx.refine.levels = cx.steps;
-    h = refine(scheme, p.level, cx.refine);
-    xy = level_positions(h, p.xy, 2);
-    cc = follow_centre(h, xy, p.centre_kind, p.centre, 2);
-    if (cc == kNone) throw Error("the centre has no counterpart after refinement (is this the right kind of centre for the split?)");
+    r.hierarchy = refine(cx.scheme, p.level, cx.refine);
+    const auto xy = level_positions(r.hierarchy, p.xy, 2);
+    r.centre = follow_centre(r.hierarchy, xy, p.centre_kind, p.centre, 2);
+    const Level& fine = r.hierarchy.levels.back();
+    if (r.centre == kNone) throw Error("the centre has no counterpart after refinement (is this the right kind of centre for the split?)");
     if (p.centre_kind == CentreKind::Vertex &&
-        (h.levels.back().valence(cc) != p.level.valence(p.centre) ||
-         h.levels.back().on_boundary(cc) != p.level.on_boundary(p.centre)))
+        (fine.valence(r.centre) != p.level.valence(p.centre) || fine.on_boundary(r.centre) != p.level.on_boundary(p.centre)))
       throw Error(fmt::format("after {} step(s) the centre has valence {} where it had {}: the split does not "
                               "reproduce the neighbourhood, so there is no local subdivision matrix",
-                              cx.steps, h.levels.back().valence(cc), p.level.valence(p.centre)));
+                              cx.steps, fine.valence(r.centre), p.level.valence(p.centre)));
     double offset = 0;
-    child_start = aligned_start(parent_axis, h.levels.back(), xy.back(), p.centre_kind, cc, &offset);
+    r.start = aligned_start(r.parent_axis, fine, xy.back(), p.centre_kind, r.centre, &offset);
     const int count = p.centre_kind == CentreKind::Vertex ? p.level.valence(p.centre) : p.level.face_size(p.centre);
     const double sector = 2 * kPi / std::max(count, 1);
-    if (offset < 0.25 * sector || cx.steps >= 2) break;
+    if (offset < 0.25 * sector || cx.steps >= 2) return r;
     cx.steps = 2;
   }
-  out.steps = cx.steps;
-  cx.table = composed_table(h);
-  cx.parent = label_neighbourhood(p.level, p.centre_kind, p.centre, p.start, radius);
-  cx.child = label_neighbourhood(h.levels.back(), p.centre_kind, cc, child_start, radius);
+}
 
+// Stage 2: the smallest k-ring that maps to itself (k0), and the ring analysed (K): at least
+// the 2-ring of a vertex (the support of the regular basis functions over the faces at the
+// centre for Catmull-Clark and Loop), the 1-ring of a face.
+void choose_rings(const AnalysisRun& cx, SurfaceAnalysis& out) {
   int k0 = -1, K = -1;
   for (int k = 0; k <= cx.options.max_ring; ++k) {
     if (!maps_to_itself(cx.table, cx.parent, cx.child, k)) continue;
     if (k0 < 0) k0 = k;
-    // The analysed ring also sees the surface around the centre: at least the 2-ring of a
-    // vertex (the support of the regular basis functions over the faces at the centre for
-    // Catmull-Clark and Loop), the 1-ring of a face.
-    const int k_min = std::max(k0 + 1, p.centre_kind == CentreKind::Vertex ? 2 : 1);
+    const int k_min = std::max(k0 + 1, cx.patch.centre_kind == CentreKind::Vertex ? 2 : 1);
     if (k >= k_min) {
       K = k;
       break;
@@ -526,17 +528,28 @@ void analyse(AnalysisRun& cx, SurfaceAnalysis& out) {
   if (K < 0) K = k0;
   out.minimal_ring = k0, out.ring = K;
   out.minimal_size = cx.parent.count_within(k0);
-  const int m = out.size = cx.parent.count_within(K);
+  out.size = cx.parent.count_within(K);
+}
+
+// Stage 3: S on the K-ring, in label order.
+Matrix record_local_matrix(const AnalysisRun& cx, SurfaceAnalysis& out) {
+  const int m = out.size;
   const Matrix s = local_matrix(cx.table, cx.parent, cx.child, m);
   out.matrix.assign(size_t(m), std::vector<double>(size_t(m)));
   for (int i = 0; i < m; ++i)
     for (int j = 0; j < m; ++j) out.matrix[size_t(i)][size_t(j)] = s(i, j);
   out.distance.assign(cx.parent.distance.begin(), cx.parent.distance.begin() + m);
   out.label_vertices.assign(cx.parent.vertices.begin(), cx.parent.vertices.begin() + m);
+  return s;
+}
 
-  // Checks.
+// Stage 4: affinity and the eigenvalue conditions (seed 000 §3): lambda_0 = 1 simple,
+// lambda_1 = lambda_2 real, |lambda_3| below them. Eigenvalues within kClusterTolerance of
+// each other are one (a defective eigenvalue of multiplicity k is computed only to about
+// eps^(1/k)).
+void check_eigenvalues(const Matrix& s, SurfaceAnalysis& out) {
   out.max_row_error = 0;
-  for (int i = 0; i < m; ++i) {
+  for (Eigen::Index i = 0; i < s.rows(); ++i) {
     const double e = s.row(i).sum() - 1.0;
     if (std::abs(e) > std::abs(out.max_row_error)) out.max_row_error = e;
   }
@@ -545,8 +558,6 @@ void analyse(AnalysisRun& cx, SurfaceAnalysis& out) {
   out.minimal_eigenvalues = sorted_eigenvalues(s.topLeftCorner(out.minimal_size, out.minimal_size));
   out.lambda0_one = !ev.empty() && std::abs(ev[0] - 1.0) <= 1e-9 && (ev.size() < 2 || std::abs(ev[1]) < 1.0 - 1e-9);
   if (ev.size() < 3) return;
-  // Eigenvalues within kClusterTolerance of each other are one (a defective eigenvalue of
-  // multiplicity k is computed only to about eps^(1/k)).
   auto cluster = [&](size_t first) {
     size_t end = first + 1;
     while (end < ev.size() && std::abs(ev[end] - ev[first]) <= kClusterTolerance * std::max(1.0, std::abs(ev[first]))) ++end;
@@ -579,71 +590,116 @@ void analyse(AnalysisRun& cx, SurfaceAnalysis& out) {
   out.subdominant_dominates = subdominant_count == 2 && out.lambda3 < std::abs(z2) * (1 - kClusterTolerance);
   if (out.subdominant_real && out.subdominant_equal && out.subdominant_dominates)
     out.curvature = curvature_text(ev, out.lambda1);
-  if (!out.lambda0_one || !out.subdominant_real) return;
+}
 
-  // Limit mask: left eigenvector of 1, scaled to sum 1 (seed 000 §5 proposition 1).
+// Stage 5: the limit mask, the left eigenvector of 1 scaled to sum 1 (seed 000 §5
+// proposition 1).
+void add_limit_mask(const Matrix& s, SurfaceAnalysis& out) {
   const Matrix l0 = left_null(s, 1.0);
-  if (l0.cols() == 1 && std::abs(l0.col(0).sum()) > 1e-12) {
-    const Vector l = l0.col(0) / l0.col(0).sum();
-    out.limit_mask.assign(l.data(), l.data() + l.size());
-    out.has_limit_mask = true;
-  }
-  add_direction_masks(s, ev, cx, out);
-  // Tangent masks: left eigenvectors of lambda_1, lambda_2, normalised against the right
-  // eigenvectors (the characteristic map) so that the first neighbour sits at (1, 0) and the
-  // next at (cos phi, sin phi), phi being their angle in the patch.
-  Matrix lb, rb;
+  if (l0.cols() != 1 || std::abs(l0.col(0).sum()) <= 1e-12) return;
+  const Vector l = l0.col(0) / l0.col(0).sum();
+  out.limit_mask.assign(l.data(), l.data() + l.size());
+  out.has_limit_mask = true;
+}
+
+// Stage 6: left and right eigenvectors of lambda_1 and lambda_2 (two columns each), or
+// empty matrices when the subdominant pair is not semi-simple.
+struct SubdominantBases {
+  Matrix left, right;
+};
+
+SubdominantBases subdominant_bases(const Matrix& s, const SurfaceAnalysis& out) {
+  SubdominantBases b;
   const double l1 = out.lambda1, l2 = out.lambda2;
   if (out.subdominant_equal) {
     const double lambda = 0.5 * (l1 + l2);
-    lb = left_null(s, lambda), rb = right_null(s, lambda);
-  } else {
-    const Matrix a = left_null(s, l1), b = left_null(s, l2), c = right_null(s, l1), d = right_null(s, l2);
-    if (a.cols() == 1 && b.cols() == 1 && c.cols() == 1 && d.cols() == 1) {
-      lb.resize(m, 2), rb.resize(m, 2);
-      lb << a, b;
-      rb << c, d;
-    }
+    b.left = left_null(s, lambda), b.right = right_null(s, lambda);
+    return b;
   }
-  out.subdominant_semisimple = lb.cols() == 2 && rb.cols() == 2;
-  if (!out.subdominant_semisimple) return;
-  Index second = kNone;
+  const Matrix a = left_null(s, l1), c = left_null(s, l2), d = right_null(s, l1), e = right_null(s, l2);
+  if (a.cols() == 1 && c.cols() == 1 && d.cols() == 1 && e.cols() == 1) {
+    b.left.resize(s.rows(), 2), b.right.resize(s.rows(), 2);
+    b.left << a, c;
+    b.right << d, e;
+  }
+  return b;
+}
+
+// The patch's second labelled neighbour (after the start): with the first it fixes the
+// characteristic map's orientation.
+Index second_neighbour(const Patch& p) {
   if (p.centre_kind == CentreKind::Vertex) {
     const auto ring = p.level.ring_edges(p.centre);
-    second = p.level.other_end(ring[size_t((p.start + 1) % int(ring.size()))], p.centre);
-  } else {
-    const auto corners = p.level.face(p.centre);
-    second = corners[size_t((p.start + 1) % int(corners.size()))];
+    return p.level.other_end(ring[size_t((p.start + 1) % int(ring.size()))], p.centre);
   }
-  const Index la = cx.parent.label_of[size_t(first_neighbour)], lbl = cx.parent.label_of[size_t(second)];
-  // On a boundary the boundary curve refines on its own: eigenvectors of the interior's
-  // eigenvalues vanish on it. If the subdominant pair has no component on the boundary
-  // neighbours, the characteristic map collapses the boundary and there is no C1 limit there.
-  if (p.centre_kind == CentreKind::Vertex && p.level.on_boundary(p.centre)) {
-    const auto ring = p.level.ring_edges(p.centre);
-    const Index last = cx.parent.label_of[size_t(p.level.other_end(ring.back(), p.centre))];
-    double largest = 0;
-    for (Eigen::Index i = 0; i < rb.rows(); ++i) largest = std::max(largest, rb.row(i).norm());
-    out.boundary_collapses = rb.row(la).norm() <= 1e-9 * largest && rb.row(last).norm() <= 1e-9 * largest;
-  }
-  double cxp = parent_axis.cx, cyp = parent_axis.cy;
-  double phi = std::atan2(p.xy[size_t(2 * second + 1)] - cyp, p.xy[size_t(2 * second)] - cxp) -
-               std::atan2(parent_axis.ay, parent_axis.ax);
+  const auto corners = p.level.face(p.centre);
+  return corners[size_t((p.start + 1) % int(corners.size()))];
+}
+
+// On a boundary the boundary curve refines on its own: eigenvectors of the interior's
+// eigenvalues vanish on it. If the subdominant pair has no component on the boundary
+// neighbours, the characteristic map collapses the boundary and there is no C1 limit there.
+bool boundary_collapses(const AnalysisRun& cx, const Matrix& right, Index first_label) {
+  const Patch& p = cx.patch;
+  const auto ring = p.level.ring_edges(p.centre);
+  const Index last = cx.parent.label_of[size_t(p.level.other_end(ring.back(), p.centre))];
+  double largest = 0;
+  for (Eigen::Index i = 0; i < right.rows(); ++i) largest = std::max(largest, right.row(i).norm());
+  return right.row(first_label).norm() <= 1e-9 * largest && right.row(last).norm() <= 1e-9 * largest;
+}
+
+// Stage 7: tangent masks, the left eigenvectors of lambda_1, lambda_2 normalised against the
+// right eigenvectors (the characteristic map) so that the first neighbour sits at (1, 0)
+// and the next at (cos phi, sin phi), phi being their angle in the patch. Returns the
+// normalised right eigenvectors (the characteristic map's coordinates), or an empty matrix.
+Matrix add_tangent_masks(const AnalysisRun& cx, const RefinedPatch& refined, const SubdominantBases& b,
+                         SurfaceAnalysis& out) {
+  const Patch& p = cx.patch;
+  const int m = out.size;
+  const Index second = second_neighbour(p);
+  const Index la = cx.parent.label_of[size_t(refined.first_neighbour)], lbl = cx.parent.label_of[size_t(second)];
+  if (p.centre_kind == CentreKind::Vertex && p.level.on_boundary(p.centre))
+    out.boundary_collapses = boundary_collapses(cx, b.right, la);
+  const Axis& axis = refined.parent_axis;
+  double phi = std::atan2(p.xy[size_t(2 * second + 1)] - axis.cy, p.xy[size_t(2 * second)] - axis.cx) -
+               std::atan2(axis.ay, axis.ax);
   while (phi <= 0) phi += 2 * kPi;
   while (phi > 2 * kPi) phi -= 2 * kPi;
   Eigen::Matrix2d at, want;
-  at << rb(la, 0), rb(la, 1), rb(lbl, 0), rb(lbl, 1);
+  at << b.right(la, 0), b.right(la, 1), b.right(lbl, 0), b.right(lbl, 1);
   want << 1, 0, std::cos(phi), std::sin(phi);
-  Matrix rp = rb;
-  if (std::abs(at.determinant()) > 1e-12 * std::max(1.0, at.norm() * at.norm())) rp = rb * (at.inverse() * want);
-  const Eigen::Matrix2d g = lb.transpose() * rp;
-  if (std::abs(g.determinant()) < 1e-14) return;
-  const Matrix t = g.inverse() * lb.transpose();  // 2 x m, t * rp = I
+  Matrix rp = b.right;
+  if (std::abs(at.determinant()) > 1e-12 * std::max(1.0, at.norm() * at.norm())) rp = b.right * (at.inverse() * want);
+  const Eigen::Matrix2d g = b.left.transpose() * rp;
+  if (std::abs(g.determinant()) < 1e-14) return {};
+  const Matrix t = g.inverse() * b.left.transpose();  // 2 x m, t * rp = I
   out.tangent_u.assign(size_t(m), 0.0), out.tangent_v.assign(size_t(m), 0.0);
   for (int j = 0; j < m; ++j) out.tangent_u[size_t(j)] = t(0, j), out.tangent_v[size_t(j)] = t(1, j);
   out.has_tangent_masks = true;
-  if (cx.options.characteristic_map && out.subdominant_dominates)
-    check_characteristic_map(cx, K, rp, l1, l2, out.subdominant_equal, out);
+  return rp;
+}
+
+void analyse(AnalysisRun& cx, SurfaceAnalysis& out) {
+  const Patch& p = cx.patch;
+  const int radius = cx.options.max_ring + 2;
+  const RefinedPatch refined = refine_patch(cx);
+  out.steps = cx.steps;
+  cx.table = composed_table(refined.hierarchy);
+  cx.parent = label_neighbourhood(p.level, p.centre_kind, p.centre, p.start, radius);
+  cx.child = label_neighbourhood(refined.hierarchy.levels.back(), p.centre_kind, refined.centre, refined.start, radius);
+
+  choose_rings(cx, out);
+  const Matrix s = record_local_matrix(cx, out);
+  check_eigenvalues(s, out);
+  if (out.eigenvalues.size() < 3 || !out.lambda0_one || !out.subdominant_real) return;
+  add_limit_mask(s, out);
+  add_direction_masks(s, out.eigenvalues, cx, out);
+  const SubdominantBases bases = subdominant_bases(s, out);
+  out.subdominant_semisimple = bases.left.cols() == 2 && bases.right.cols() == 2;
+  if (!out.subdominant_semisimple) return;
+  const Matrix rp = add_tangent_masks(cx, refined, bases, out);
+  if (rp.size() > 0 && cx.options.characteristic_map && out.subdominant_dominates)
+    check_characteristic_map(cx, out.ring, rp, out.lambda1, out.lambda2, out.subdominant_equal, out);
 }
 
 // Masks are left eigenvectors of the K-ring matrix; they vanish beyond the minimal ring
