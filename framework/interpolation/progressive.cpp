@@ -2,6 +2,7 @@
 
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fmt/format.h>
@@ -33,6 +34,15 @@ void check_sizes(const StencilTable& limit, std::span<const double> targets, int
 }
 
 }  // namespace
+
+double default_interpolation_tolerance(std::span<const double> targets) {
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (size_t i = 0; i < targets.size(); ++i)
+    lo[i % 3] = std::min(lo[i % 3], targets[i]), hi[i % 3] = std::max(hi[i % 3], targets[i]);
+  double d2 = 0;
+  for (int c = 0; c < 3; ++c) d2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+  return 1e-10 * std::max(std::sqrt(d2), 1e-300);
+}
 
 ProgressiveResult progressive_interpolation(const StencilTable& limit, std::span<const double> targets,
                                             std::span<const std::uint8_t> moving_flags,

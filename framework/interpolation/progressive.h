@@ -64,6 +64,10 @@ ProgressiveResult progressive_interpolation(const LimitEvaluator& evaluator, con
 std::vector<double> predicted_fixed_offsets(const StencilTable& limit, std::span<const double> targets,
                                             std::span<const std::uint8_t> moving, int channels = 3);
 
+// The tolerance used when none is given: 1e-10 of the diagonal of the targets' bounding
+// box (xyz per vertex), so that it scales with the model's units.
+double default_interpolation_tolerance(std::span<const double> targets);
+
 // The moving set from a user's text: "all", a list of 0-based ids separated by commas or
 // white space, '#' starting a comment. Repeated ids count once. Throws subdiv::Error naming
 // `source` and the bad entry: not a number, negative, or >= vertex_count.

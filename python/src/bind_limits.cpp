@@ -68,14 +68,6 @@ py::dict limit_positions(py::handle mesh, py::handle scheme, py::handle params, 
   return out;
 }
 
-double bounding_diagonal(const std::vector<double>& p) {
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-  for (size_t i = 0; i < p.size(); ++i) lo[i % 3] = std::min(lo[i % 3], p[i]), hi[i % 3] = std::max(hi[i % 3], p[i]);
-  double d2 = 0;
-  for (int c = 0; c < 3; ++c) d2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
-  return std::sqrt(d2);
-}
-
 py::dict interpolate(py::handle mesh, py::handle scheme, py::handle params, py::handle moving_mask, double tolerance,
                      int max_iterations, const std::string& boundary, int threads) {
   subdiv::MeshData m = mesh_from_python(mesh);
@@ -89,7 +81,7 @@ py::dict interpolate(py::handle mesh, py::handle scheme, py::handle params, py::
   }
   if (max_iterations < 0) throw subdiv::Error("max_iterations must be 0 or more");
   subdiv::ProgressiveOptions po;
-  po.tolerance = tolerance >= 0 ? tolerance : 1e-10 * std::max(bounding_diagonal(m.positions), 1e-300);
+  po.tolerance = tolerance >= 0 ? tolerance : subdiv::default_interpolation_tolerance(m.positions);
   po.max_iterations = max_iterations;
   LimitOperator limit;
   subdiv::ProgressiveResult r;

@@ -13,14 +13,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-double bounding_diagonal(const std::vector<double>& p) {
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-  for (size_t i = 0; i < p.size(); ++i) lo[i % 3] = std::min(lo[i % 3], p[i]), hi[i % 3] = std::max(hi[i % 3], p[i]);
-  double d2 = 0;
-  for (int c = 0; c < 3; ++c) d2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
-  return std::sqrt(d2);
-}
-
 // Theorem 2 (seed 001) for any limit operator: where the fixed vertices' limit points end.
 std::string theorem_two_note(const StencilTable& limit, const std::vector<double>& targets,
                              const std::vector<std::uint8_t>& moving, const ProgressiveResult& r) {
@@ -69,7 +61,7 @@ IterationRun run_iterations(const StencilTable& limit, const std::vector<double>
   run.moving = Index(std::count(moving.begin(), moving.end(), std::uint8_t(1)));
   ProgressiveOptions po;
   po.tolerance = settings.tolerance >= 0 ? settings.tolerance
-                                         : 1e-10 * std::max(bounding_diagonal(targets), 1e-300);
+                                         : default_interpolation_tolerance(targets);
   po.max_iterations = settings.max_iterations;
   po.observer = [&](const IterationState& s) {
     progress.say(fmt::format("iteration {}: max residual {:.3e}, rms {:.3e}", s.record.iteration,
