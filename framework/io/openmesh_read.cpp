@@ -20,6 +20,7 @@
 
 #include "framework/io/formats.h"
 #include "framework/io/readers.h"
+#include "framework/io/stl_check.h"
 #include "framework/io/text_input.h"
 #include "framework/util/error.h"
 
@@ -90,6 +91,7 @@ std::size_t duplicated_positions(const MeshData& mesh) {
 
 MeshData read_with_openmesh(const fs::path& file) {
   require_readable(file);
+  if (lowercase_extension(file) == ".stl") check_stl_file(file);  // lines and NaN, which OpenMesh does not report
   PolyMesh mesh;
   OpenMesh::IO::Options options;
   std::string errors;
