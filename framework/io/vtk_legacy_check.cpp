@@ -157,9 +157,9 @@ private:
       for (std::uint64_t i = 0; i < n; ++i) token(what);
       return;
     }
+    if (binary_) end_of_line();  // binary data starts on the next line: count only its bytes
     require_room(n, size, what);
     if (binary_) {
-      end_of_line();
       in_binary_data_ = true;
       for (std::uint64_t i = 0; i < n; ++i) visit(binary_value(type, size));
       in_binary_data_ = false;

@@ -10,6 +10,7 @@
 
 #include "support/cli_checks.h"
 #include "support/cli_runner.h"
+#include "support/sanitizers.h"
 
 using namespace subdiv::test;
 namespace fs = std::filesystem;
@@ -90,7 +91,7 @@ TEST_CASE("VTK's own output never reaches the terminal; the message is ours and 
 }
 
 TEST_CASE("a process memory limit (ulimit -v) is honoured by the memory guard") {
-#if defined(__SANITIZE_ADDRESS__)
+#if SUBDIV_TEST_ASAN
   MESSAGE("skipped: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");
 #else
   const auto dir = fresh_dir("hostile-memory");
