@@ -36,23 +36,31 @@ struct DoubleTraits : OpenMesh::DefaultTraits {
 using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits>;
 
 // OpenMesh reports problems on its global error stream; collect them for our message
-// instead of letting them interleave with the tool's own output.
+// instead of letting them interleave with the tool's own output. The stream is connected
+// once for the life of the process: OpenMesh's connect() allocates a wrapper that its
+// disconnect() never frees, so connecting per read leaked on every file (found by
+// fuzz_read_stl under LeakSanitizer).
+std::ostringstream& openmesh_error_text() {
+  static std::ostringstream* text = [] {
+    auto* stream = new std::ostringstream;  // lives as long as omerr() may write to it
+    ::omerr().disconnect(std::cerr);
+    ::omerr().connect(*stream);
+    return stream;
+  }();
+  return *text;
+}
+
 class CapturedErrors {
 public:
-  CapturedErrors() : had_stderr_(::omerr().disconnect(std::cerr)) { ::omerr().connect(text_); }
-  ~CapturedErrors() {
-    ::omerr().disconnect(text_);
-    if (had_stderr_) ::omerr().connect(std::cerr);
+  CapturedErrors() {
+    openmesh_error_text().str("");
+    openmesh_error_text().clear();
   }
   std::string text() const {
-    std::string s = text_.str();
+    std::string s = openmesh_error_text().str();
     std::replace(s.begin(), s.end(), '\n', ' ');
     return s;
   }
-
-private:
-  bool had_stderr_;
-  std::ostringstream text_;
 };
 
 MeshData to_mesh_data(const PolyMesh& mesh) {

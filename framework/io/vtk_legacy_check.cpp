@@ -116,8 +116,16 @@ private:
 
   void header() {
     const std::string_view first = raw_line();
-    if (first.rfind("# vtk DataFile Version", 0) != 0)
+    constexpr std::string_view kMagic = "# vtk DataFile Version";
+    if (first.rfind(kMagic, 0) != 0)
       line_ = 1, fail("not a legacy VTK file: the first line must be '# vtk DataFile Version x.y'");
+    // VTK lays cells out as OFFSETS + CONNECTIVITY from major version 5 on, as it reads
+    // the version (an integer before the dot), and as the old counted lists before.
+    Tokens version(first.substr(kMagic.size()));
+    std::string_view number;
+    long long major = 0;
+    if (version.next(number)) parse_integer(number.substr(0, number.find('.')), major);
+    offsets_layout_ = major >= 5;
     raw_line();  // the title: any text
     const std::string format = lower(token("ASCII or BINARY"));
     if (format != "ascii" && format != "binary")
@@ -225,10 +233,7 @@ private:
                        : keyword == "vertices" ? "VERTICES" : "TRIANGLE_STRIPS";
     const std::uint64_t first = count("the number of cells"), second = count("the size of the cell list");
     cells_ += first;
-    const std::size_t mark = pos_, mark_line = line_;
-    const auto next = next_token();
-    pos_ = mark, line_ = mark_line;
-    if (next && lower(*next) == "offsets") return cells_51(what, first, second);
+    if (offsets_layout_) return cells_51(what, first, second);
     // Before VTK 5.1: `second` integers, each cell its size and then its point ids.
     std::uint64_t left_in_cell = 0, cells_done = 0;
     values(second, "int", what, [&](double v) {
@@ -251,7 +256,9 @@ private:
   // VTK 5.1: OFFSETS (cells + 1 of them) and CONNECTIVITY, each with its own type.
   void cells_51(const char* what, std::uint64_t offsets, std::uint64_t connectivity) {
     if (offsets > 0) --cells_;  // counted as cells by the caller; there is one offset more than cells
-    token("OFFSETS");
+    if (lower(token("OFFSETS")) != "offsets")
+      fail(fmt::format("{}: expected OFFSETS (files of version 5 and later list cells as OFFSETS and "
+                       "CONNECTIVITY)", what));
     const std::string offset_type = lower(token("the offsets' data type"));
     std::uint64_t i = 0;
     double previous = 0;
@@ -373,7 +380,7 @@ private:
   const fs::path& file_;
   std::string_view bytes_;
   std::size_t pos_ = 0, line_ = 1;
-  bool binary_ = false, in_binary_data_ = false, seen_points_ = false;
+  bool binary_ = false, in_binary_data_ = false, seen_points_ = false, offsets_layout_ = false;
   std::uint64_t points_ = 0, cells_ = 0;
 };
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "framework/io/text_input.h"
+#include "framework/io/vtk_xml_blocks.h"
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
 #include "framework/util/short_text.h"
@@ -109,7 +110,10 @@ private:
 
 }  // namespace
 
-void check_vtp_text(const fs::path& file, std::string_view bytes) { XmlChecker(file, bytes).run(); }
+void check_vtp_text(const fs::path& file, std::string_view bytes) {
+  XmlChecker(file, bytes).run();
+  check_vtp_data_headers(file, bytes);
+}
 
 void check_vtp_file(const fs::path& file) { check_vtp_text(file, read_whole_file(file)); }
 

@@ -17,7 +17,10 @@ constexpr int kLevels = 2;
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const auto [scheme_text, mesh_text] = subdiv::fuzz::split_at(data, size, "\n---\n");
+  // Not a structured binding: clang 14 cannot capture those in the lambda below.
+  const std::pair<std::string, std::string> texts = subdiv::fuzz::split_at(data, size, "\n---\n");
+  const std::string& scheme_text = texts.first;
+  const std::string& mesh_text = texts.second;
   static const std::string file = subdiv::fuzz::scratch_file(".obj");
   subdiv::fuzz::write_file(file, reinterpret_cast<const std::uint8_t*>(mesh_text.data()), mesh_text.size());
   subdiv::fuzz::expect_only_subdiv_errors([&] {

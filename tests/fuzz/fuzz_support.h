@@ -30,9 +30,14 @@ void expect_only_subdiv_errors(Body&& body) {
 
 // A file in /dev/shm (or /tmp) private to this process, rewritten for every input: the
 // readers under test take paths, and the extension picks the format.
+// The file is removed when the process exits normally (after a crash it stays, next to
+// the artifact libFuzzer keeps).
 inline std::string scratch_file(const char* extension) {
   const char* dir = access("/dev/shm", W_OK) == 0 ? "/dev/shm" : "/tmp";
-  return std::string(dir) + "/subdiv-fuzz-" + std::to_string(getpid()) + extension;
+  static std::string path;
+  path = std::string(dir) + "/subdiv-fuzz-" + std::to_string(getpid()) + extension;
+  std::atexit([] { std::remove(path.c_str()); });
+  return path;
 }
 
 inline void write_file(const std::string& path, const std::uint8_t* data, std::size_t size) {

@@ -186,9 +186,21 @@ TEST_CASE(".vtp with absurd sizes or a corrupt compression header: a subdiv::Err
   write_text(dir / "beyond.vtp", beyond);
   CHECK(contains(error_of([&] { read_mesh(dir / "beyond.vtp"); }), "is more than SubdivKit's 32-bit indices hold"));
 
-  // Flip every byte of the appended data's start (the compression headers) in turn.
+  // A block size no compressor can produce from the bytes there (200 GB asked of VTK before).
   const size_t data = good.find('_', good.find("<AppendedData")) + 1;
   REQUIRE(data > 0);
+  const size_t word = contains(good, "header_type=\"UInt64\"") ? 8 : 4;
+  std::string huge_block = good;
+  huge_block[data + 2 * word - 1] = char(0x30);  // most significant byte of the block size
+  write_text(dir / "huge-block.vtp", huge_block);
+  CHECK(contains(error_of([&] { read_mesh(dir / "huge-block.vtp"); }),
+                 "more than vtkZLibDataCompressor can produce; the header is damaged"));
+  std::string many_blocks = good;
+  many_blocks[data + word - 1] = char(0x7f);  // most significant byte of the block count
+  write_text(dir / "many-blocks.vtp", many_blocks);
+  CHECK(contains(error_of([&] { read_mesh(dir / "many-blocks.vtp"); }), "compressed blocks, more than the rest of the file"));
+
+  // Flip every byte of the appended data's start (the compression headers) in turn.
   for (size_t at = data; at < data + 64 && at < good.size(); ++at) {
     std::string corrupt = good;
     corrupt[at] = char(~corrupt[at]);
