@@ -20,6 +20,7 @@
 
 #include "framework/io/formats.h"
 #include "framework/io/readers.h"
+#include "framework/io/om_check.h"
 #include "framework/io/stl_check.h"
 #include "framework/io/text_input.h"
 #include "framework/util/error.h"
@@ -36,31 +37,25 @@ struct DoubleTraits : OpenMesh::DefaultTraits {
 using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits>;
 
 // OpenMesh reports problems on its global error stream; collect them for our message
-// instead of letting them interleave with the tool's own output. The stream is connected
-// once for the life of the process: OpenMesh's connect() allocates a wrapper that its
-// disconnect() never frees, so connecting per read leaked on every file (found by
-// fuzz_read_stl under LeakSanitizer).
-std::ostringstream& openmesh_error_text() {
-  static std::ostringstream* text = [] {
-    auto* stream = new std::ostringstream;  // lives as long as omerr() may write to it
-    ::omerr().disconnect(std::cerr);
-    ::omerr().connect(*stream);
-    return stream;
-  }();
-  return *text;
-}
-
+// instead of letting them interleave with the tool's own output. The stream's buffer is
+// swapped for ours while a file is read: OpenMesh's own connect()/disconnect() would leak
+// a wrapper object on every call (found by fuzz_read_stl under LeakSanitizer).
 class CapturedErrors {
 public:
-  CapturedErrors() {
-    openmesh_error_text().str("");
-    openmesh_error_text().clear();
-  }
-  std::string text() const {
-    std::string s = openmesh_error_text().str();
+  CapturedErrors() : previous_(::omerr().rdbuf(text_.rdbuf())) {}
+  ~CapturedErrors() { ::omerr().rdbuf(previous_); }
+  CapturedErrors(const CapturedErrors&) = delete;
+  CapturedErrors& operator=(const CapturedErrors&) = delete;
+  std::string text() {
+    ::omerr().flush();
+    std::string s = text_.str();
     std::replace(s.begin(), s.end(), '\n', ' ');
     return s;
   }
+
+private:
+  std::ostringstream text_;  // before previous_: constructed first
+  std::streambuf* previous_;
 };
 
 MeshData to_mesh_data(const PolyMesh& mesh) {
@@ -100,6 +95,7 @@ std::size_t duplicated_positions(const MeshData& mesh) {
 MeshData read_with_openmesh(const fs::path& file) {
   require_readable(file);
   if (lowercase_extension(file) == ".stl") check_stl_file(file);  // lines and NaN, which OpenMesh does not report
+  if (lowercase_extension(file) == ".om") check_om_file(file);    // OpenMesh trusts every count and id in it
   PolyMesh mesh;
   OpenMesh::IO::Options options;
   std::string errors;

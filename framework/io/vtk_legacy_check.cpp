@@ -121,10 +121,14 @@ private:
       line_ = 1, fail("not a legacy VTK file: the first line must be '# vtk DataFile Version x.y'");
     // VTK lays cells out as OFFSETS + CONNECTIVITY from major version 5 on, as it reads
     // the version (an integer before the dot), and as the old counted lists before.
+    // Both numbers must be there: VTK falls back to old rules when it cannot read them.
     Tokens version(first.substr(kMagic.size()));
     std::string_view number;
-    long long major = 0;
-    if (version.next(number)) parse_integer(number.substr(0, number.find('.')), major);
+    long long major = -1, minor = -1;
+    const std::size_t dot = version.next(number) ? number.find('.') : std::string_view::npos;
+    if (dot == std::string_view::npos || !parse_integer(number.substr(0, dot), major) ||
+        !parse_integer(number.substr(dot + 1), minor) || major < 0 || minor < 0 || !version.empty())
+      line_ = 1, fail("the first line must be '# vtk DataFile Version x.y' with a version such as 3.0 or 5.1");
     offsets_layout_ = major >= 5;
     raw_line();  // the title: any text
     const std::string format = lower(token("ASCII or BINARY"));

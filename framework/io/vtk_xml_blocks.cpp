@@ -164,6 +164,11 @@ private:
       return;
     }
     const std::uint64_t blocks = word(data, at, name), block_size = word(data, at, name), last = word(data, at, name);
+    // VTK divides by the block size, and takes the last block as no larger than the others.
+    if (blocks > 0 && (block_size == 0 || last > block_size))
+      fail(at, fmt::format("array '{}': its data header gives blocks of {} bytes and a last block of {}; the "
+                           "header is damaged",
+                           shortened(name), block_size, last));
     if (double(blocks) * double(word_size_) > data.remaining())
       fail(at, fmt::format("array '{}' says {} compressed blocks, more than the rest of the file can hold; its data "
                            "header is damaged",

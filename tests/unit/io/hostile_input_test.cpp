@@ -234,3 +234,33 @@ TEST_CASE("any standard exception while reading becomes a subdiv::Error naming t
   CHECK(contains(memory, "cannot read 'm.ply': out of memory while reading it"));
   CHECK(contains(memory, "raise the limit"));
 }
+
+TEST_CASE("OpenMesh .om: cut off anywhere or with damaged chunks, a subdiv::Error and never an abort") {
+  TempDir dir;
+  const std::string good = read_text(fs::path(SUBDIV_SOURCE_DIR) / "tests/fuzz/seeds/om/cube.om");
+  write_text(dir / "cube.om", good);
+  REQUIRE(read_mesh(dir / "cube.om").face_count() == 6);
+  for (size_t cut = 0; cut < good.size(); ++cut) {
+    write_text(dir / "cut.om", good.substr(0, cut));
+    std::string message;
+    CHECK_MESSAGE(reads_or_refuses_cleanly(dir / "cut.om", message), message);
+  }
+  // The first chunk (vertex positions) with two components: OpenMesh would assert() and abort.
+  std::string flat = good;
+  flat[16 + 1] = char(flat[16 + 1] & ~0x38);  // the chunk header's dimension bits (11..13)
+  write_text(dir / "flat.om", flat);
+  CHECK(contains(error_of([&] { read_mesh(dir / "flat.om"); }), (dir / "flat.om").string() + ": byte 16: a chunk"));
+  // A vertex count beyond the file.
+  std::string many = good;
+  many[7] = char(0x7f);
+  write_text(dir / "many.om", many);
+  CHECK(contains(error_of([&] { read_mesh(dir / "many.om"); }), "more than the file's"));
+}
+
+TEST_CASE("legacy .vtk: a version VTK cannot read is refused, not guessed") {
+  TempDir dir;
+  std::string v = kLegacyAscii;
+  v.replace(v.find("3.0"), 3, "5.");
+  write_text(dir / "v.vtk", v);
+  CHECK(contains(error_of([&] { read_mesh(dir / "v.vtk"); }), (dir / "v.vtk").string() + ":1: the first line must be"));
+}
