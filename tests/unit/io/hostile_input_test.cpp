@@ -181,6 +181,14 @@ TEST_CASE(".vtp with absurd sizes or a corrupt compression header: a subdiv::Err
   CHECK(contains(m, "cannot read '" + (dir / "absurd.vtp").string() + "'"));
   CHECK(contains(m, "GiB of memory is available"));
 
+  // Field data without NumberOfTuples made VTK's reader leak the array: refused first.
+  std::string untold = good;
+  const size_t tuples = untold.find("NumberOfTuples=", untold.find("<FieldData"));
+  REQUIRE(tuples != std::string::npos);
+  untold.replace(tuples, 6, "Nymber");
+  write_text(dir / "untold.vtp", untold);
+  CHECK(contains(error_of([&] { read_mesh(dir / "untold.vtp"); }), "a field data array needs NumberOfTuples"));
+
   std::string beyond = good;
   beyond.replace(beyond.find("NumberOfPoints=\"8\""), 18, "NumberOfPoints=\"99999999999\"");
   write_text(dir / "beyond.vtp", beyond);
