@@ -131,11 +131,11 @@ private:
         require_float(chunk, at);
         return skip(vertices_, element_size(chunk), at);
       case om::Chunk::Type_Texcoord:
-        if (om::dimensions(chunk) > 3) require_dim(chunk, 2, at);
+        require_dim(chunk, 2, at);  // the reader assert()s two (found by fuzz_read_om)
         require_float(chunk, at);
         return skip(vertices_, element_size(chunk), at);
       case om::Chunk::Type_Color:
-        if (om::dimensions(chunk) != 4) require_dim(chunk, 3, at);
+        require_dim(chunk, 3, at);
         return skip(vertices_, element_size(chunk), at);
       case om::Chunk::Type_Status: require_dim(chunk, 1, at); return skip(vertices_, kStatusBytes, at);
       case om::Chunk::Type_Topology:
@@ -158,7 +158,7 @@ private:
         require_float(chunk, at);
         return skip(faces_, element_size(chunk), at);
       case om::Chunk::Type_Color:
-        if (om::dimensions(chunk) != 4) require_dim(chunk, 3, at);
+        require_dim(chunk, 3, at);
         return skip(faces_, element_size(chunk), at);
       case om::Chunk::Type_Status: require_dim(chunk, 1, at); return skip(faces_, kStatusBytes, at);
       default: return skip(faces_, om::vector_size(chunk), at);

@@ -65,6 +65,13 @@ public:
     for (std::size_t at = head.find("<DataArray"); at != std::string_view::npos;
          at = head.find("<DataArray", at + 1)) {
       const std::string_view tag = tag_at(head, at);
+      // An unknown type makes VTK's reader dereference a null array (found by fuzz_read_vtp).
+      static constexpr std::string_view kTypes[] = {"Int8",   "UInt8",  "Int16", "UInt16",  "Int32",  "UInt32",
+                                                    "Int64",  "UInt64", "Float32", "Float64", "String"};
+      const auto type = attribute(tag, "type");
+      if (!type || std::find(std::begin(kTypes), std::end(kTypes), *type) == std::end(kTypes))
+        fail(at, fmt::format("DataArray type=\"{}\" is not a VTK type (Int8 ... UInt64, Float32, Float64, String)",
+                             shortened(type.value_or(""))));
       if (const auto c = attribute(tag, "NumberOfComponents")) {
         long long v;
         if (!parse_integer(*c, v) || v < 1 || v > kMaxComponents)

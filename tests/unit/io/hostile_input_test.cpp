@@ -272,3 +272,21 @@ TEST_CASE("legacy .vtk: a version VTK cannot read is refused, not guessed") {
   write_text(dir / "v.vtk", v);
   CHECK(contains(error_of([&] { read_mesh(dir / "v.vtk"); }), (dir / "v.vtk").string() + ":1: the first line must be"));
 }
+
+TEST_CASE("fuzz findings stay fixed: PLY elements without properties, unknown VTK array types") {
+  TempDir dir;
+  // 5e14 entries of nothing: the reader looped over them for days.
+  write_text(dir / "empty-element.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                        "property float z\nelement nothing 555555555555555\nend_header\n0 0 0\n1 0 0\n0 1 0\n");
+  CHECK(contains(error_of([&] { read_mesh(dir / "empty-element.ply"); }),
+                 "element 'nothing' has 555555555555555 entries but no properties"));
+  // type="Int31" made VTK's XML reader dereference a null array.
+  const MeshData cube = cube_mesh();
+  OutputLevel level;
+  level.mesh = &cube;
+  write_vtp(dir / "cube.vtp", level);
+  std::string typo = read_text(dir / "cube.vtp");
+  typo.replace(typo.find("type=\"Int32\""), 12, "type=\"Int31\"");
+  write_text(dir / "typo.vtp", typo);
+  CHECK(contains(error_of([&] { read_mesh(dir / "typo.vtp"); }), "DataArray type=\"Int31\" is not a VTK type"));
+}
