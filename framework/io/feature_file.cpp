@@ -7,6 +7,9 @@
 
 #include "framework/io/text_input.h"
 #include "framework/util/error.h"
+#include "framework/util/input_errors.h"
+#include "framework/util/input_file.h"
+#include "framework/util/json_text_check.h"
 
 namespace subdiv {
 namespace {
@@ -146,6 +149,7 @@ private:
 }  // namespace
 
 FeatureTags parse_feature_json(const std::string& text, const std::string& source) {
+  check_json_text(text, source);  // depth and number range, with their places
   Json root;
   try {
     root = Json::parse(text);
@@ -162,12 +166,15 @@ FeatureTags parse_feature_json(const std::string& text, const std::string& sourc
     if (const auto pos = what.find(": "); what.rfind("parse error", 0) == 0 && pos != std::string::npos)
       what = what.substr(pos + 2);
     throw Error(fmt::format("{}:{}:{}: malformed JSON in the feature file: {}", source, line, column, what));
+  } catch (const Json::exception& e) {  // anything check_json_text did not foresee
+    throw Error(fmt::format("{}: JSON the parser refuses in the feature file: {}", source, e.what()));
   }
   return Parser(source).parse(root);
 }
 
 FeatureTags read_feature_file(const std::filesystem::path& file) {
-  return parse_feature_json(io_detail::read_whole_file(file), file.string());
+  return naming_file_on_failure(file.string(),
+                                [&] { return parse_feature_json(read_input_file(file, "feature"), file.string()); });
 }
 
 void apply_feature_tags(const FeatureTags& tags, Level& level) {

@@ -7,6 +7,7 @@
 #include "framework/io/mesh_validate.h"
 #include "framework/io/readers.h"
 #include "framework/util/error.h"
+#include "framework/util/input_errors.h"
 
 namespace subdiv {
 
@@ -17,15 +18,17 @@ MeshData read_mesh(const std::filesystem::path& file) {
                             file.string(), ext.empty() ? "(no extension)" : ext,
                             supported_input_formats(), unsupported_format_hint(file)));
   const MeshFileReader* registered = registered_mesh_reader(ext);
-  MeshData mesh = registered        ? (*registered)(file)
-                  : ext == ".obj"   ? io_detail::read_obj(file)
-                  : ext == ".off"   ? io_detail::read_off(file)
-                  : ext == ".ply"   ? io_detail::read_ply(file)
-                                    : io_detail::read_with_openmesh(file);
-  // The text readers already check with line numbers; this catches the rest (registered
-  // formats' and OpenMesh data) with the same rules.
-  validate_mesh_data(mesh, file.string());
-  return mesh;
+  return naming_file_on_failure(file.string(), [&] {
+    MeshData mesh = registered        ? (*registered)(file)
+                    : ext == ".obj"   ? io_detail::read_obj(file)
+                    : ext == ".off"   ? io_detail::read_off(file)
+                    : ext == ".ply"   ? io_detail::read_ply(file)
+                                      : io_detail::read_with_openmesh(file);
+    // The text readers already check with line numbers; this catches the rest (registered
+    // formats' and OpenMesh data) with the same rules.
+    validate_mesh_data(mesh, file.string());
+    return mesh;
+  });
 }
 
 }  // namespace subdiv

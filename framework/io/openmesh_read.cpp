@@ -20,6 +20,8 @@
 
 #include "framework/io/formats.h"
 #include "framework/io/readers.h"
+#include "framework/io/om_check.h"
+#include "framework/io/stl_check.h"
 #include "framework/io/text_input.h"
 #include "framework/util/error.h"
 
@@ -35,23 +37,25 @@ struct DoubleTraits : OpenMesh::DefaultTraits {
 using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits>;
 
 // OpenMesh reports problems on its global error stream; collect them for our message
-// instead of letting them interleave with the tool's own output.
+// instead of letting them interleave with the tool's own output. The stream's buffer is
+// swapped for ours while a file is read: OpenMesh's own connect()/disconnect() would leak
+// a wrapper object on every call (found by fuzz_read_stl under LeakSanitizer).
 class CapturedErrors {
 public:
-  CapturedErrors() : had_stderr_(::omerr().disconnect(std::cerr)) { ::omerr().connect(text_); }
-  ~CapturedErrors() {
-    ::omerr().disconnect(text_);
-    if (had_stderr_) ::omerr().connect(std::cerr);
-  }
-  std::string text() const {
+  CapturedErrors() : previous_(::omerr().rdbuf(text_.rdbuf())) {}
+  ~CapturedErrors() { ::omerr().rdbuf(previous_); }
+  CapturedErrors(const CapturedErrors&) = delete;
+  CapturedErrors& operator=(const CapturedErrors&) = delete;
+  std::string text() {
+    ::omerr().flush();
     std::string s = text_.str();
     std::replace(s.begin(), s.end(), '\n', ' ');
     return s;
   }
 
 private:
-  bool had_stderr_;
-  std::ostringstream text_;
+  std::ostringstream text_;  // before previous_: constructed first
+  std::streambuf* previous_;
 };
 
 MeshData to_mesh_data(const PolyMesh& mesh) {
@@ -90,6 +94,8 @@ std::size_t duplicated_positions(const MeshData& mesh) {
 
 MeshData read_with_openmesh(const fs::path& file) {
   require_readable(file);
+  if (lowercase_extension(file) == ".stl") check_stl_file(file);  // lines and NaN, which OpenMesh does not report
+  if (lowercase_extension(file) == ".om") check_om_file(file);    // OpenMesh trusts every count and id in it
   PolyMesh mesh;
   OpenMesh::IO::Options options;
   std::string errors;

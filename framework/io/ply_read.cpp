@@ -104,6 +104,12 @@ Header HeaderParser::parse() {
     if (!tokens.next(keyword) || keyword == "comment" || keyword == "obj_info") continue;
     if (keyword == "end_header") {
       if (!have_format_) fail("the header has no 'format' line");
+      // Elements without properties take no bytes, so nothing bounds their count: a
+      // count of 5e14 kept the reader busy for days (found by fuzz_read_ply).
+      for (const Element& e : header_.elements)
+        if (e.count > 0 && e.properties.empty())
+          fail(fmt::format("element '{}' has {} entries but no properties; give its properties or leave it out",
+                           e.name, e.count));
       return std::move(header_);
     }
     if (keyword == "format") format_line(tokens);

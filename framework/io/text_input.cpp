@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "framework/util/error.h"
+#include "framework/util/input_file.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
@@ -26,32 +27,18 @@ std::string_view trim(std::string_view s) {
 
 }  // namespace
 
-void require_readable(const fs::path& file) {
-  std::error_code ec;
-  if (!fs::exists(file, ec))
-    throw Error(fmt::format("cannot open '{}': no such file", file.string()));
-  if (fs::is_directory(file, ec))
-    throw Error(fmt::format("cannot open '{}': it is a directory, not a mesh file", file.string()));
-  std::ifstream probe(file, std::ios::binary);
-  if (!probe)
-    throw Error(fmt::format("cannot open '{}': {}", file.string(), std::strerror(errno)));
-}
+void require_readable(const fs::path& file) { check_input_file(file, "mesh"); }
 
-std::string read_whole_file(const fs::path& file) {
-  require_readable(file);
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (in.bad()) throw Error(fmt::format("cannot read '{}': {}", file.string(), std::strerror(errno)));
-  return std::move(bytes).str();
-}
+std::string read_whole_file(const fs::path& file) { return read_input_file(file, "mesh"); }
 
 bool LineCursor::next(std::string_view& line) {
   if (rest_.empty()) return false;
-  const size_t end = rest_.find('\n');
+  // "\n", "\r\n" and a lone "\r" (classic Mac OS files) all end a line.
+  const size_t end = rest_.find_first_of("\r\n");
   line = rest_.substr(0, end);
-  rest_ = end == std::string_view::npos ? std::string_view() : rest_.substr(end + 1);
-  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  size_t next = end == std::string_view::npos ? rest_.size() : end + 1;
+  if (end != std::string_view::npos && rest_[end] == '\r' && next < rest_.size() && rest_[next] == '\n') ++next;
+  rest_ = rest_.substr(next);
   ++line_;
   return true;
 }

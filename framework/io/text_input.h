@@ -10,14 +10,15 @@
 
 namespace subdiv::io_detail {
 
-// Throws subdiv::Error "cannot open '<file>': no such file" (or: is a directory, or the
-// system's reason) unless `file` can be opened for reading.
+// Throws subdiv::Error "cannot open '<file>': no such file" (or: is a directory, a FIFO or
+// a device, too large for memory, or the system's reason) unless `file` can be read
+// (framework/util/input_file.h).
 void require_readable(const std::filesystem::path& file);
 
 // The whole file as bytes; throws like require_readable.
 std::string read_whole_file(const std::filesystem::path& file);
 
-// Lines of a text, numbered from 1, without their line ending ("\n" or "\r\n").
+// Lines of a text, numbered from 1, without their line ending ("\n", "\r\n" or a lone "\r").
 class LineCursor {
 public:
   explicit LineCursor(std::string_view text) : rest_(text) {}

@@ -6,7 +6,9 @@
 #include <limits>
 #include <muParser.h>
 
+#include "framework/rules/definition_order.h"
 #include "framework/util/error.h"
+#include "framework/util/short_text.h"
 
 namespace subdiv {
 namespace {
@@ -89,7 +91,8 @@ struct FormulaSet::Impl {
         }
       }
     } catch (const mu::Parser::exception_type& e) {
-      throw Error(fmt::format("{}: formula '{}' does not parse: {}. {}", where, expression, e.GetMsg(),
+      throw Error(fmt::format("{}: formula '{}' does not parse: {}. {}", where, shortened(expression),
+                              shortened(e.GetMsg(), 2 * kQuotedTextChars),
                               kFormulaHelp));
     }
     // State variables change with the level: a formula that reads one depends on l.
@@ -164,7 +167,8 @@ struct FormulaSet::Impl {
       }
     } catch (const mu::Parser::exception_type& e) {
       l = saved_l;
-      throw Error(fmt::format("state variables fail to evaluate up to level {}: {}", level, e.GetMsg()));
+      throw Error(fmt::format("state variables fail to evaluate up to level {}: {}", level,
+                              shortened(e.GetMsg(), 2 * kQuotedTextChars)));
     }
     l = saved_l;
     for (size_t i = 0; i < state_names.size(); ++i) state_storage[i] = state_by_level[level][i];
@@ -187,6 +191,7 @@ FormulaSet::FormulaSet(const std::map<std::string, double>& parameters,
                        const std::vector<NamedFormula>& definitions)
     : impl_(std::make_unique<Impl>()) {
   impl_->parameters = parameters;
+  check_definition_order(definitions);  // cycles and forward uses, named as such
   for (const auto& d : definitions) {
     if (d.is_state()) {
       impl_->add_state(d);
@@ -222,8 +227,8 @@ double FormulaSet::evaluate(int id, const FormulaInputs& in) {
     return impl_->formulas[id]->Eval();
   } catch (const mu::Parser::exception_type& e) {
     throw Error(fmt::format("{}: formula '{}' fails to evaluate at n={}, k={}, j={}, l={}: {}",
-                            impl_->wheres[id], impl_->expressions[id], in.n, in.k, in.j, in.l,
-                            e.GetMsg()));
+                            impl_->wheres[id], shortened(impl_->expressions[id]), in.n, in.k, in.j, in.l,
+                            shortened(e.GetMsg(), 2 * kQuotedTextChars)));
   }
 }
 

@@ -5,18 +5,17 @@
 #include <sstream>
 
 #include "framework/util/error.h"
+#include "framework/util/input_file.h"
+#include "framework/util/json_text_check.h"
 
 namespace subdiv {
 
 nlohmann::ordered_json read_json_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(fmt::format("cannot open scheme file '{}': no such file or not readable", path.string()));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parse_json_text(buffer.str(), path.string());
+  return parse_json_text(read_input_file(path, "scheme"), path.string());
 }
 
 nlohmann::ordered_json parse_json_text(const std::string& text, const std::string& label) {
+  check_json_text(text, label);  // depth and number range, with their places
   try {
     return nlohmann::ordered_json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
@@ -29,6 +28,8 @@ nlohmann::ordered_json parse_json_text(const std::string& text, const std::strin
     std::string what = e.what();
     if (auto pos = what.find("parse error"); pos != std::string::npos) what = what.substr(pos);
     throw Error(fmt::format("{}:{}:{}: malformed JSON: {}", label, line, column, what));
+  } catch (const nlohmann::json::exception& e) {  // anything check_json_text did not foresee
+    throw Error(fmt::format("{}: JSON the parser refuses: {}", label, e.what()));
   }
 }
 

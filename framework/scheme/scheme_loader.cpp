@@ -6,6 +6,8 @@
 
 #include "framework/scheme/json_source.h"
 #include "framework/util/error.h"
+#include "framework/util/input_errors.h"
+#include "framework/util/short_text.h"
 
 namespace subdiv {
 namespace {
@@ -33,7 +35,7 @@ const Json& require(const Json& object, const char* key, const Place& at) {
 }
 
 std::string as_string(const Json& value, const Place& at) {
-  if (!value.is_string()) fail(at, fmt::format("expected a string, found {}", value.dump()));
+  if (!value.is_string()) fail(at, fmt::format("expected a string, found {}", shortened(value.dump())));
   return value.get<std::string>();
 }
 
@@ -64,7 +66,7 @@ double parse_number(const std::string& text, const Place& at) {
     if (used == text.size() && std::isfinite(v)) return v;
   } catch (...) {
   }
-  fail(at, fmt::format("'{}' is not a number", text));
+  fail(at, fmt::format("'{}' is not a number", shortened(text)));
 }
 
 // Names formulas already use for themselves.
@@ -180,7 +182,7 @@ void check_names(const std::vector<ParameterSpec>& params, const std::vector<Nam
     if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') ||
         name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") !=
             std::string::npos)
-      fail(here, fmt::format("'{}' is not a valid name: use letters, digits and _, starting with a letter", name));
+      fail(here, fmt::format("'{}' is not a valid name: use letters, digits and _, starting with a letter", shortened(name)));
     if (auto it = seen.find(name); it != seen.end())
       fail(here, fmt::format("the {} name '{}' is already {}; choose another name", what, name, it->second));
     seen[name] = "the name of a " + what;
@@ -252,7 +254,7 @@ Term parse_term(const Json& j, Element element, const Place& at) {
     fail(at, fmt::format("unknown role '{}'; {} rules may use: {}", name, element_name(element),
                          roles_of(element)));
   if (!role_allowed(element, *role))
-    fail(at, fmt::format("role '{}' does not exist around a {}", name, element_name(element)));
+    fail(at, fmt::format("role '{}' does not exist around a {}", shortened(name), element_name(element)));
   if (single && *role != Role::Self) fail(at, fmt::format("role '{}' has several points: write \"sum\": \"{}\"", name, name));
   if (multi && *role == Role::Self) fail(at, "role 'self' is one point: write \"at\": \"self\"");
   t.role = *role;
@@ -353,14 +355,14 @@ std::vector<size_t> unroll_steps(const ParsedSteps& parsed, const Scheme& scheme
       if (r.step != i) continue;
       const double v = value_of(r);
       if (!std::isfinite(v))
-        throw Error(fmt::format("{}: when '{}' gives {}; it must give a number (0: leave the step out)", r.where, r.formula, v));
+        throw Error(fmt::format("{}: when '{}' gives {}; it must give a number (0: leave the step out)", r.where, shortened(r.formula), v));
       if (v == 0) count = 0;
     }
     for (const Repeat& r : parsed.repeats) {
       if (r.step != i || count == 0) continue;
       const double v = value_of(r);
       if (!(v >= 0) || v != std::floor(v) || v > 64)
-        throw Error(fmt::format("{}: repeat '{}' gives {}, not a whole number from 0 to 64", r.where, r.formula, v));
+        throw Error(fmt::format("{}: repeat '{}' gives {}, not a whole number from 0 to 64", r.where, shortened(r.formula), v));
       count = int(v);
     }
     for (int c = 0; c < count; ++c) out.push_back(i);
@@ -649,17 +651,20 @@ std::string scheme_json_kind(const Json& root, const std::string& label) {
   return kind;
 }
 
-// A value of the wrong JSON type (a string where a number belongs, ...) as a clear error.
+// A value of the wrong JSON type (a string where a number belongs, ...) as a clear error;
+// any other exception (bad_alloc, length_error, ...) as an error naming the file.
 template <class Load>
 auto with_type_errors(const std::string& label, Load load) {
-  try {
-    return load();
-  } catch (const nlohmann::json::exception& e) {
-    std::string what = e.what();
-    if (auto pos = what.find("] "); pos != std::string::npos) what = what.substr(pos + 2);
-    throw Error(fmt::format("{}: a value has the wrong JSON type ({}); docs/scheme-format.md shows each key's type",
-                            label, what));
-  }
+  return naming_file_on_failure(label, [&] {
+    try {
+      return load();
+    } catch (const nlohmann::json::exception& e) {
+      std::string what = e.what();
+      if (auto pos = what.find("] "); pos != std::string::npos) what = what.substr(pos + 2);
+      throw Error(fmt::format("{}: a value has the wrong JSON type ({}); docs/scheme-format.md shows each key's type",
+                              label, shortened(what, 2 * kQuotedTextChars)));
+    }
+  });
 }
 
 std::shared_ptr<const CurveScheme> load_curve_scheme(const std::filesystem::path& path,
@@ -688,7 +693,7 @@ std::shared_ptr<const CurveScheme> curve_scheme_from_json(const Json& root, cons
   curve->name = as_string(require(root, "name", at), at / "name");
   curve->description = optional_string(root, "description");
   if (root.contains("arity") && !root["arity"].is_number_integer())
-    fail(at / "arity", fmt::format("expected 2 or 3, found {}", root["arity"].dump()));
+    fail(at / "arity", fmt::format("expected 2 or 3, found {}", shortened(root["arity"].dump())));
   curve->arity = root.value("arity", 2);
   if (curve->arity != 2 && curve->arity != 3) fail(at / "arity", "arity must be 2 or 3");
   curve->parameter_specs = parse_parameters(root, at, overrides, used);
@@ -712,7 +717,7 @@ std::shared_ptr<const CurveScheme> curve_scheme_from_json(const Json& root, cons
       const Json& start = require(rules[r], "start", here);
       if (!start.is_number_integer())
         fail(here / "start", fmt::format("expected a whole number (the offset of the first old point), found {}",
-                                         start.dump()));
+                                         shortened(start.dump())));
       curve->starts.push_back(start.get<int>());
       curve->weights.push_back(parse_curve_weights(require(rules[r], "w", here), here / "w", formulas));
     }

@@ -5,9 +5,14 @@
 
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
+#include "framework/util/short_text.h"
 
 namespace subdiv {
 namespace {
+
+// As many levels as `subdiv refine --levels` allows; more could not fit in memory anyway,
+// and a sum of unbounded counts would overflow.
+constexpr int kMaxLevelsPerPart = 30;
 
 struct Part {
   std::string name;
@@ -28,9 +33,11 @@ std::vector<Part> split_spec(const std::string& spec) {
       try {
         size_t used = 0;
         part.levels = std::stoi(item.substr(colon + 1), &used);
-        if (used != item.size() - colon - 1 || part.levels < 0) throw std::invalid_argument("");
+        if (used != item.size() - colon - 1 || part.levels < 0 || part.levels > kMaxLevelsPerPart)
+          throw std::invalid_argument("");
       } catch (...) {
-        throw Error(fmt::format("--scheme '{}': '{}' should be NAME:LEVELS with LEVELS a whole number >= 0", spec, item));
+        throw Error(fmt::format("--scheme '{}': '{}' should be NAME:LEVELS with LEVELS a whole number from 0 to {}",
+                                shortened(spec), shortened(item), kMaxLevelsPerPart));
       }
     }
     if (part.name.empty()) throw Error(fmt::format("--scheme '{}': empty scheme name", spec));

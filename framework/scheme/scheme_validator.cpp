@@ -147,6 +147,9 @@ void check_step(const Scheme& scheme, const StepRules& step, const std::string& 
 }  // namespace
 
 ValidationReport validate_scheme_file(const std::string& name_or_path, int lo, int hi) {
+  if (lo < kMinCheckedValence || hi > kMaxCheckedValence || lo > hi)
+    throw Error(fmt::format("valences {}..{} cannot be checked: give {} <= --min-valence <= --max-valence <= {}", lo,
+                            hi, kMinCheckedValence, kMaxCheckedValence));
   ValidationReport report;
   try {
     const std::string path = scheme_file_path(name_or_path);

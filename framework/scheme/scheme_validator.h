@@ -17,7 +17,13 @@ struct ValidationReport {
   bool ok() const { return errors.empty(); }
 };
 
-// Loads and checks a scheme file; load errors become the report's single error.
+// The valences validation may check. Edge rules are checked for every pair of end
+// valences, so the work grows with the square of the range: the bound keeps it to seconds.
+constexpr int kMinCheckedValence = 2;
+constexpr int kMaxCheckedValence = 128;
+
+// Loads and checks a scheme file; load errors become the report's single error. Throws
+// subdiv::Error unless kMinCheckedValence <= min_valence <= max_valence <= kMaxCheckedValence.
 ValidationReport validate_scheme_file(const std::string& path, int min_valence = 3, int max_valence = 16);
 
 }  // namespace subdiv

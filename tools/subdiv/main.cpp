@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "framework/io/vtk/vtk_formats.h"
 #include "framework/util/error.h"
+#include "framework/util/memory_limit.h"
 
 int main(int argc, char** argv) {
   subdiv::register_vtk_formats();  // before the help texts list the formats
@@ -26,6 +27,9 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const subdiv::Error& e) {
     fmt::print(stderr, "subdiv: error: {}\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {  // the memory guard's words, never "internal error"
+    fmt::print(stderr, "subdiv: error: {}\n", subdiv::out_of_memory_message("running the command"));
     return 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "subdiv: internal error: {}\n", e.what());

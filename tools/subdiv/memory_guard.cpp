@@ -5,6 +5,7 @@
 #include <string>
 
 #include "framework/util/error.h"
+#include "framework/util/memory_limit.h"
 
 namespace subdiv::cli {
 namespace {
@@ -15,27 +16,19 @@ constexpr double kBytesPerFace = 300.0;
 
 }  // namespace
 
-double available_memory_bytes() {
-  std::ifstream meminfo("/proc/meminfo");
-  std::string key;
-  double kb = 0;
-  while (meminfo >> key >> kb) {
-    if (key == "MemAvailable:") return kb * 1024.0;
-    meminfo.ignore(256, '\n');
-  }
-  return 1e18;  // unknown: do not refuse
-}
+double available_memory_bytes() { return available_memory().bytes; }
 
 void check_fits_in_memory(const Scheme& scheme, const Level& base, int levels) {
   // A quad split turns the corners of a level into faces, then each quad into 4.
   double faces = base.face_count();
   for (int l = 0; l < levels; ++l)
     faces = scheme.split() == SplitKind::Quad && l == 0 ? double(base.corner_count()) : 4.0 * faces;
-  const double need = faces * kBytesPerFace, have = available_memory_bytes();
-  if (need > have)
+  const MemoryBudget have = available_memory();
+  const double need = faces * kBytesPerFace;
+  if (need > have.bytes)
     throw Error(fmt::format("{} levels would make about {:.3g} faces and need about {:.1f} GiB, but "
-                            "only {:.1f} GiB of memory is available; ask for fewer levels",
-                            levels, faces, need / (1 << 30), have / (1 << 30)));
+                            "only {:.1f} GiB of memory is available (limited by {}); ask for fewer levels",
+                            levels, faces, need / (1 << 30), have.bytes / (1 << 30), have.source));
 }
 
 }  // namespace subdiv::cli

@@ -7,7 +7,8 @@ namespace subdiv::cli {
 
 void check_fits_in_memory(const Scheme& scheme, const Level& base, int levels);
 
-// MemAvailable from /proc/meminfo, in bytes (very large when unknown: do not refuse then).
+// What this process may still allocate, in bytes: MemAvailable, ulimits and the cgroup's
+// limit (framework/util/memory_limit.h); very large when unknown: do not refuse then.
 double available_memory_bytes();
 
 }  // namespace subdiv::cli

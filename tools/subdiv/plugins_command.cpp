@@ -26,6 +26,20 @@ void print_status(const PluginStatus& s) {
   }
 }
 
+// A plugin the user named with --plugin and that was refused: the run cannot be what they
+// asked for. Plugins found by search (SUBDIV_PLUGIN_PATH, installed) only warn.
+bool explicitly_requested(const PluginStatus& s) { return s.found_by == "--plugin"; }
+
+void refuse_requested_plugins(const std::vector<PluginStatus>& statuses) {
+  std::string refused;
+  for (const auto& s : statuses)
+    if (!s.loaded && explicitly_requested(s)) refused += fmt::format("\n  {}: {}", s.file, s.reason);
+  if (!refused.empty())
+    throw Error(fmt::format("a plugin given with --plugin was refused:{}\nfix or rebuild it, or leave out its "
+                            "--plugin option",
+                            refused));
+}
+
 void run_plugins_command(bool verbose) {
   const auto statuses = plugin_statuses();
   if (verbose) {
@@ -40,6 +54,7 @@ void run_plugins_command(bool verbose) {
     return;
   }
   for (const auto& s : statuses) print_status(s);
+  refuse_requested_plugins(statuses);
 }
 
 }  // namespace
@@ -58,7 +73,8 @@ void add_plugin_options(CLI::App& app) {
   // Runs after every option is parsed and before the chosen subcommand's callback.
   app.parse_complete_callback([&app, paths] {
     const auto statuses = load_plugins({*paths});
-    if (app.got_subcommand("plugins")) return;  // it lists them itself
+    if (app.got_subcommand("plugins")) return;  // it lists them itself, then refuses
+    refuse_requested_plugins(statuses);
     for (const auto& s : statuses)
       if (!s.loaded)
         fmt::print(stderr, "subdiv: warning: plugin {} refused: {}\n", s.file, s.reason);

@@ -1,5 +1,6 @@
 // `subdiv refine MESH --scheme S --levels L -o OUT`: the main job.
 #include <chrono>
+#include <cmath>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <tbb/global_control.h>
@@ -34,6 +35,7 @@ struct RefineArgs {
   double feature_angle = -1;   // --feature-angle DEG; < 0: not given
   int threads = 0;
   int start_level = 0;
+  bool levels_given = false;  // -l on the command line (a sequence A:1,B:3 sets its own total otherwise)
   bool quiet = false;
   bool limit = false;
 };
@@ -47,6 +49,10 @@ RefineOptions refine_options(const RefineArgs& a) {
   return o;
 }
 
+// Level-dependent state is computed level by level up to the start level: a bound keeps
+// that finite, and no refinement history is longer than this.
+constexpr int kMaxStartLevel = 100;
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -56,10 +62,17 @@ void run(const RefineArgs& a) {
   if (is_curve_scheme(a.scheme))  // polylines: tools/subdiv/curve_refine.cpp
     return refine_curves_command({a.mesh, a.scheme, a.output, a.levels, parse_params(a.params), a.threads, a.quiet});
   check_output_path(a.output);
+  // CLI11's range check lets NaN through (every comparison with it is false).
+  if (std::isnan(a.feature_angle))
+    throw Error("--feature-angle nan is not an angle; give degrees from 0 to 180");
   std::unique_ptr<tbb::global_control> thread_limit;
   if (a.threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
   const SchemeSequence seq = load_scheme_sequence(a.scheme, a.levels, parse_params(a.params));
+  if (a.levels_given && seq.total_levels != a.levels)
+    throw Error(fmt::format("--scheme '{}' runs {} level(s), but --levels asks for {}; make the counts add up to {}, "
+                            "leave one scheme without :N to take the rest, or drop --levels",
+                            a.scheme, seq.total_levels, a.levels, a.levels));
   const MeshData mesh = read_mesh(a.mesh);
   if (mesh.face_count() == 0)
     throw Error(fmt::format("{}: the mesh has no faces to refine{}", a.mesh,
@@ -129,7 +142,8 @@ void add_refine_command(CLI::App& app) {
                   "Scheme name (see `subdiv schemes`) or path to a .json file; a sequence A:1,B:3 applies A "
                   "for one level, then B for three (a name without :N takes the rest of --levels)")
       ->capture_default_str();
-  cmd->add_option("-l,--levels", args->levels, "Number of refinement levels")->check(CLI::Range(0, 30))->capture_default_str();
+  CLI::Option* levels =
+      cmd->add_option("-l,--levels", args->levels, "Number of refinement levels")->check(CLI::Range(0, 30))->capture_default_str();
   cmd->add_option("-o,--output", args->output,
                   "Output file: .vtp (finest level) or .pvd (all levels) for ParaView, or .obj, .off, .ply, .stl")
       ->required();
@@ -148,14 +162,17 @@ void add_refine_command(CLI::App& app) {
   cmd->add_option("--start-level", args->start_level,
                   "How many steps the input has already been refined (schemes whose steps alternate, like "
                   "sqrt3's boundary trisection, and level-dependent schemes count from the original mesh)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(CLI::Range(0, kMaxStartLevel))
       ->capture_default_str();
   cmd->add_flag("--limit", args->limit,
                 "Move the finest level's vertices to their limit positions and write limit normals as point data "
                 "'normal' (with --levels 0: the limit points of the input's own vertices)");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   cmd->footer("Example: subdiv refine examples/meshes/cube.obj --scheme catmull-clark --levels 3 -o cube.pvd");
-  cmd->callback([args] { run(*args); });
+  cmd->callback([args, levels] {
+    args->levels_given = levels->count() > 0;
+    run(*args);
+  });
 }
 
 }  // namespace subdiv::cli

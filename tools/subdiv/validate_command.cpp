@@ -14,9 +14,13 @@ void add_validate_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("validate",
                                  "Check scheme files: structure, formulas, affine weights and symmetry for every valence");
   cmd->add_option("files", *files, "Scheme files (.json) or built-in scheme names")->required();
-  cmd->add_option("--min-valence", range->first, "Smallest valence to check")->capture_default_str();
-  cmd->add_option("--max-valence", range->second, "Largest valence to check")->capture_default_str();
+  const auto valences = CLI::Range(kMinCheckedValence, kMaxCheckedValence);
+  cmd->add_option("--min-valence", range->first, "Smallest valence to check")->check(valences)->capture_default_str();
+  cmd->add_option("--max-valence", range->second, "Largest valence to check")->check(valences)->capture_default_str();
   cmd->callback([files, range] {
+    if (range->first > range->second)  // would check nothing and say "ok"
+      throw Error(fmt::format("--min-valence {} is larger than --max-valence {}; give a range with min <= max",
+                              range->first, range->second));
     int failed = 0;
     for (const auto& file : *files) {
       if (std::filesystem::path(file).filename() == "scheme.schema.json") {

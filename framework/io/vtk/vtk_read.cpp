@@ -27,6 +27,9 @@
 #include "framework/io/formats.h"
 #include "framework/io/vtk/vtk_read.h"
 #include "framework/io/text_input.h"
+#include "framework/io/vtk/vtk_legacy_check.h"
+#include "framework/io/vtk/vtk_messages.h"
+#include "framework/io/vtk/vtk_xml_check.h"
 #include "framework/util/error.h"
 
 namespace subdiv::io_detail {
@@ -43,7 +46,7 @@ public:
     callback_->SetClientData(this);
     callback_->SetCallback([](vtkObject*, unsigned long, void* self, void* message) {
       auto& text = static_cast<ErrorObserver*>(self)->text_;
-      if (text.empty() && message) text = readable(static_cast<const char*>(message));
+      if (text.empty() && message) text = vtk_readable_message(static_cast<const char*>(message));
     });
     for (vtkObject* object : {static_cast<vtkObject*>(&reader),
                               static_cast<vtkObject*>(reader.GetExecutive())}) {
@@ -55,18 +58,6 @@ public:
   const std::string& text() const { return text_; }
 
 private:
-  // "ERROR: In file.cxx, line 12\nvtkClass (0x1234): what went wrong\n\n" -> "what went wrong"
-  static std::string readable(std::string message) {
-    if (message.rfind("ERROR: In ", 0) == 0 || message.rfind("Warning: In ", 0) == 0)
-      message.erase(0, message.find('\n') + 1);
-    if (const std::size_t object_end = message.find("): "); object_end != std::string::npos)
-      message.erase(0, object_end + 3);
-    while (!message.empty() && std::isspace(static_cast<unsigned char>(message.back())))
-      message.pop_back();
-    std::replace(message.begin(), message.end(), '\n', ' ');
-    return message;
-  }
-
   vtkNew<vtkCallbackCommand> callback_;
   std::string text_;
 };
@@ -75,19 +66,31 @@ private:
   throw Error(fmt::format("cannot read '{}': {}", file.string(), problem));
 }
 
+// What VTK said went wrong: the reader's own message, else whatever it printed.
+std::string vtk_reason(const ErrorObserver& observed, const VtkMessageCapture& printed) {
+  if (!observed.text().empty()) return observed.text();
+  if (!printed.first_error().empty()) return printed.first_error();
+  if (!printed.first_message().empty()) return printed.first_message();
+  return "no reason given; the file is damaged or not VTK PolyData";
+}
+
 vtkSmartPointer<vtkPolyData> load_xml(const fs::path& file) {
   vtkNew<vtkXMLPolyDataReader> reader;
   if (!reader->CanReadFile(file.c_str()))
     fail(file, "it is not a VTK XML PolyData file (expected <VTKFile type=\"PolyData\">)");
+  check_vtp_file(file);  // sizes VTK would allocate from, before it does
+  VtkMessageCapture printed;
   ErrorObserver errors(*reader);
   reader->SetFileName(file.c_str());
   reader->Update();
-  if (!errors.text().empty() || reader->GetErrorCode() != 0)
-    fail(file, fmt::format("VTK reports: {}", errors.text()));
+  if (!errors.text().empty() || reader->GetErrorCode() != 0 || !printed.first_error().empty())
+    fail(file, fmt::format("VTK reports: {}", vtk_reason(errors, printed)));
   return reader->GetOutput();
 }
 
 vtkSmartPointer<vtkPolyData> load_legacy(const fs::path& file) {
+  check_legacy_vtk_file(file);  // VTK's legacy reader trusts every count: a cut-off file crashes it
+  VtkMessageCapture printed;
   vtkNew<vtkPolyDataReader> reader;
   ErrorObserver errors(*reader);
   reader->SetFileName(file.c_str());
@@ -95,8 +98,8 @@ vtkSmartPointer<vtkPolyData> load_legacy(const fs::path& file) {
     fail(file, "it is not a legacy VTK file with POLYDATA (other dataset types are not "
                "surfaces this tool refines)");
   reader->Update();
-  if (!errors.text().empty() || reader->GetErrorCode() != 0)
-    fail(file, fmt::format("VTK reports: {}", errors.text()));
+  if (!errors.text().empty() || reader->GetErrorCode() != 0 || !printed.first_error().empty())
+    fail(file, fmt::format("VTK reports: {}", vtk_reason(errors, printed)));
   return reader->GetOutput();
 }
 
@@ -135,7 +138,9 @@ void append_strips(vtkCellArray* strips, MeshData& mesh) {
 void append_lines(vtkPolyData& poly, MeshData& mesh) {
   vtkDataArray* kind = poly.GetCellData()->GetArray("cell_kind");
   vtkDataArray* sharpness = poly.GetCellData()->GetArray("sharpness");
-  const bool tagged = kind && sharpness;
+  // Arrays shorter than the cells (a damaged file) would be read past their end.
+  const vtkIdType cells = poly.GetNumberOfCells();
+  const bool tagged = kind && sharpness && kind->GetNumberOfTuples() >= cells && sharpness->GetNumberOfTuples() >= cells;
   vtkIdType cell = poly.GetNumberOfVerts();  // VTK numbers cells: verts, lines, polys, strips
   auto it = vtk::TakeSmartPointer(poly.GetLines()->NewIterator());
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell) {
@@ -153,7 +158,7 @@ void append_lines(vtkPolyData& poly, MeshData& mesh) {
 
 void restore_corners(vtkPolyData& poly, MeshData& mesh) {
   vtkDataArray* corners = poly.GetPointData()->GetArray("corner_sharpness");
-  if (!corners) return;
+  if (!corners || corners->GetNumberOfTuples() < poly.GetNumberOfPoints()) return;
   for (vtkIdType v = 0; v < poly.GetNumberOfPoints(); ++v)
     if (const double s = corners->GetTuple1(v); s != 0) mesh.corners.push_back({Index(v), s});
 }

@@ -121,7 +121,8 @@ TEST_CASE("limit normals agree with OpenSubdiv at smooth vertices") {
        {std::tuple{"catmull-clark", subdiv_test::OsdScheme::CatmullClark, test::cube()},
         std::tuple{"catmull-clark", subdiv_test::OsdScheme::CatmullClark, test::pyramid()},
         std::tuple{"loop", subdiv_test::OsdScheme::Loop, test::octahedron()}}) {
-    CAPTURE(scheme);
+    const char* scheme_name = scheme;  // clang 14 cannot capture a structured binding in CAPTURE's lambda
+    CAPTURE(scheme_name);
     subdiv_test::OsdMesh om;
     om.vertex_count = mesh.vertex_count;
     om.face_offsets.assign(mesh.offsets.begin(), mesh.offsets.end());

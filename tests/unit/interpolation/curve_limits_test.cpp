@@ -154,8 +154,11 @@ TEST_CASE("interpolatory curve schemes: every point is its own limit, ends and w
 }
 
 TEST_CASE("every stationary shipped curve scheme: limit points lie on the limit curve, and interpolation converges") {
-  for (const auto& [name, params] : kStationary)
+  for (const auto& stationary : kStationary)
     for (bool closed : {false, true}) {
+      // References, not a structured binding: clang 14 cannot capture those in lambdas (CAPTURE).
+      const auto& name = stationary.first;
+      const auto& params = stationary.second;
       CAPTURE(name);
       CAPTURE(params.size() ? params.begin()->second : std::string("default"));
       CAPTURE(closed);

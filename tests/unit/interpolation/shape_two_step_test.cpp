@@ -70,7 +70,10 @@ TEST_CASE("the cross is a closed, consistently oriented quad mesh with valences 
 }
 
 TEST_CASE("formula (2) equals Catmull-Clark's limit (seed 000) of the engine's catmull-clark-shape step") {
-  for (const auto& [name, mesh] : paper_meshes()) {
+  for (const auto& named : paper_meshes()) {
+    // References, not a structured binding: clang 14 cannot capture those in lambdas (CAPTURE).
+    const auto& name = named.name;
+    const auto& mesh = named.mesh;
     const Level L = mesh.level();
     for (double lambda : kLambdas) {
       CAPTURE(name);
@@ -90,7 +93,10 @@ TEST_CASE("formula (2) equals Catmull-Clark's limit (seed 000) of the engine's c
 }
 
 TEST_CASE("global interpolation converges for lambda in (7/20, 1]: limits reach the targets, residuals decrease") {
-  for (const auto& [name, mesh] : paper_meshes()) {
+  for (const auto& named : paper_meshes()) {
+    // References, not a structured binding: clang 14 cannot capture those in lambdas (CAPTURE).
+    const auto& name = named.name;
+    const auto& mesh = named.mesh;
     const Level L = mesh.level();
     for (double lambda : kLambdas) {
       CAPTURE(name);
@@ -130,7 +136,10 @@ TEST_CASE("global interpolation converges for lambda in (7/20, 1]: limits reach 
 }
 
 TEST_CASE("per-vertex lambda: formula (2) with each vertex's own lambda, and the iteration converges") {
-  for (const auto& [name, mesh] : paper_meshes()) {
+  for (const auto& named : paper_meshes()) {
+    // References, not a structured binding: clang 14 cannot capture those in lambdas (CAPTURE).
+    const auto& name = named.name;
+    const auto& mesh = named.mesh;
     CAPTURE(name);
     const Level L = mesh.level();
     std::vector<double> lambda(size_t(L.vertex_count));
@@ -160,7 +169,10 @@ TEST_CASE("per-vertex lambda: formula (2) with each vertex's own lambda, and the
 }
 
 TEST_CASE("local interpolation: fixed vertices stay, moving ones are interpolated, theorem 2 gives the rest") {
-  for (const auto& [name, mesh] : paper_meshes()) {
+  for (const auto& named : paper_meshes()) {
+    // References, not a structured binding: clang 14 cannot capture those in lambdas (CAPTURE).
+    const auto& name = named.name;
+    const auto& mesh = named.mesh;
     const Level L = mesh.level();
     const std::vector<std::uint8_t> moving = every_third(L.vertex_count);
     for (double lambda : kLambdas) {

@@ -141,7 +141,7 @@ TEST_CASE("vtk: a file that is not PolyData is refused with its name") {
   CHECK(contains(legacy, "POLYDATA"));
 }
 
-TEST_CASE("vtk: a truncated .vtp is refused with VTK's reason, without its boilerplate") {
+TEST_CASE("vtk: a truncated .vtp is refused with the reason, without VTK's boilerplate") {
   TempDir dir;
   MeshData big;
   for (int i = 0; i < 3000; ++i) {
@@ -153,8 +153,9 @@ TEST_CASE("vtk: a truncated .vtp is refused with VTK's reason, without its boile
   const std::string bytes = read_text(dir / "whole.vtp");
   write_text(dir / "cut.vtp", bytes.substr(0, bytes.size() / 2));
   const std::string e = error_of([&] { read_mesh(dir / "cut.vtp"); });
-  CHECK(contains(e, "cannot read '"));
-  CHECK(contains(e, "cut.vtp': VTK reports: "));
+  // The data headers are checked before VTK reads (vtk_xml_blocks.h): the place is named.
+  CHECK(contains(e, "cut.vtp:"));
+  CHECK(contains(e, "the file is cut off"));
   CHECK_FALSE(contains(e, "ERROR: In"));
   CHECK_FALSE(contains(e, "\n"));
 }

@@ -50,8 +50,10 @@ TEST_CASE("subdiv plugins: nothing found, then loaded and refused plugins with t
                           plugin("test_plugin_wrong_version") + plugin("test_plugin_throws") +
                           plugin("test_plugin_duplicate_scheme") + plugin("test_plugin_clash") +
                           plugin("subdiv_sqrt2"));
-  CHECK(r.exit_code == 0);
+  // Everything is listed, and the refusal of plugins the user named makes the exit non-zero.
+  CHECK(r.exit_code == 1);
   INFO(r.output);
+  CHECK(contains(r.output, "a plugin given with --plugin was refused"));
   CHECK(contains(r.output, "loaded   circle-preserving 1.0.0  " + plugin_path("subdiv_circle_preserving") + " (--plugin)"));
   CHECK(contains(r.output, "curve scheme circle-four-point (non-linear, C++)"));
   CHECK(contains(r.output, "loaded   sqrt2 1.0.0  " + plugin_path("subdiv_sqrt2")));
@@ -95,7 +97,7 @@ TEST_CASE("SUBDIV_PLUGIN_PATH: files and folders are searched") {
   CHECK(contains(r.output, "loaded   kobbelt-quad 1.0.0  " + plugin_path("subdiv_kobbelt_quad") + " (SUBDIV_PLUGIN_PATH)"));
 }
 
-TEST_CASE("refine with plugin schemes; a refused plugin is a warning and the others work") {
+TEST_CASE("refine with plugin schemes; a refused plugin found by search is a warning and the others work") {
   const auto dir = fresh_dir("cli-plugin-refine");
   const std::string cube = source_path("examples/meshes/cube.obj");
 
@@ -104,8 +106,10 @@ TEST_CASE("refine with plugin schemes; a refused plugin is a warning and the oth
   CHECK(contains(missing.output, "unknown scheme 'sqrt2'"));
 
   const auto out = dir / "cube-sqrt2.obj";
-  const CliResult r = run("refine " + cube + plugin("test_plugin_throws") + plugin("subdiv_sqrt2") +
-                          " --scheme sqrt2 --levels 3 -o " + out.string());
+  ::setenv("SUBDIV_NO_INSTALLED_PLUGINS", "1", 1);
+  ::setenv("SUBDIV_PLUGIN_PATH", plugin_path("test_plugin_throws").c_str(), 1);
+  const CliResult r = run_subdiv("refine " + cube + plugin("subdiv_sqrt2") + " --scheme sqrt2 --levels 3 -o " + out.string());
+  ::unsetenv("SUBDIV_PLUGIN_PATH");
   INFO(r.output);
   CHECK(r.exit_code == 0);
   CHECK(contains(r.output, "subdiv: warning: plugin " + plugin_path("test_plugin_throws") +

@@ -1,0 +1,203 @@
+#include "framework/io/vtk/vtk_xml_blocks.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <fmt/format.h>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "framework/io/text_input.h"
+#include "framework/util/error.h"
+#include "framework/util/memory_limit.h"
+#include "framework/util/short_text.h"
+
+namespace subdiv::io_detail {
+namespace fs = std::filesystem;
+
+namespace {
+
+// How much larger than its compressed form data can become: zlib's limit is about 1032:1,
+// LZ4's about 255:1; LZMA has no small limit, so its bound is generous.
+double expansion_limit(std::string_view compressor) {
+  if (compressor == "vtkZLibDataCompressor") return 1100;
+  if (compressor == "vtkLZ4DataCompressor") return 300;
+  return 1e5;
+}
+
+std::optional<std::string_view> attribute(std::string_view tag, std::string_view name) {
+  for (std::size_t at = tag.find(name); at != std::string_view::npos; at = tag.find(name, at + 1)) {
+    const std::size_t eq = at + name.size();
+    const bool starts = at > 0 && (tag[at - 1] == ' ' || tag[at - 1] == '\t' || tag[at - 1] == '\n' || tag[at - 1] == '\r');
+    if (!starts || eq + 1 >= tag.size() || tag[eq] != '=' || (tag[eq + 1] != '"' && tag[eq + 1] != '\'')) continue;
+    const std::size_t end = tag.find(tag[eq + 1], eq + 2);
+    return tag.substr(eq + 2, end == std::string_view::npos ? std::string_view::npos : end - eq - 2);
+  }
+  return std::nullopt;
+}
+
+int base64_value(char c) {
+  if (c >= 'A' && c <= 'Z') return c - 'A';
+  if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+  if (c >= '0' && c <= '9') return c - '0' + 52;
+  if (c == '+') return 62;
+  if (c == '/') return 63;
+  return -1;
+}
+
+// Reads the data that starts at `at`: raw bytes, or base64 text decoded on the way.
+class DataReader {
+public:
+  DataReader(std::string_view bytes, std::size_t at, bool base64) : bytes_(bytes), pos_(at), base64_(base64) {}
+
+  // The next `n` bytes of data, or nullopt if the file ends first.
+  std::optional<std::string> take(std::size_t n) {
+    std::string out;
+    while (out.size() < n) {
+      if (!base64_) {
+        if (pos_ >= bytes_.size()) return std::nullopt;
+        out.push_back(bytes_[pos_++]);
+        continue;
+      }
+      if (pending_.empty() && !decode_group()) return std::nullopt;
+      out.push_back(pending_.front());
+      pending_.erase(pending_.begin());
+    }
+    return out;
+  }
+
+  // Data bytes left in the file from here (base64: what the text decodes to, at most).
+  double remaining() const {
+    const double left = double(bytes_.size() - std::min(pos_, bytes_.size()));
+    return base64_ ? left * 3 / 4 + double(pending_.size()) : left;
+  }
+
+private:
+  bool decode_group() {
+    int values[4], n = 0;
+    while (n < 4 && pos_ < bytes_.size()) {
+      const char c = bytes_[pos_++];
+      if (c == '=') values[n++] = 0;
+      else if (const int v = base64_value(c); v >= 0) values[n++] = v;
+      else if (c == '<') return false;  // the element ended
+    }
+    if (n < 4) return false;
+    const std::uint32_t bits = (values[0] << 18) | (values[1] << 12) | (values[2] << 6) | values[3];
+    for (int i = 2; i >= 0; --i) pending_.push_back(char((bits >> (8 * i)) & 0xFF));
+    return true;
+  }
+
+  std::string_view bytes_;
+  std::size_t pos_;
+  bool base64_;
+  std::vector<char> pending_;
+};
+
+class HeaderChecker {
+public:
+  HeaderChecker(const fs::path& file, std::string_view bytes) : file_(file), bytes_(bytes) {}
+
+  void run() {
+    const std::size_t root = bytes_.find("<VTKFile");
+    if (root == std::string_view::npos) return;  // VTK's own check reports it
+    const std::string_view tag = tag_at(root);
+    word_size_ = attribute(tag, "header_type").value_or("UInt32") == "UInt64" ? 8 : 4;
+    big_endian_ = attribute(tag, "byte_order").value_or("LittleEndian") == "BigEndian";
+    compressor_ = attribute(tag, "compressor").value_or("");
+    const std::size_t appended = bytes_.find("<AppendedData");
+    std::size_t data_start = std::string_view::npos;
+    bool appended_base64 = true;
+    if (appended != std::string_view::npos) {
+      appended_base64 = attribute(tag_at(appended), "encoding").value_or("base64") != "raw";
+      data_start = bytes_.find('_', appended);
+      if (data_start != std::string_view::npos) ++data_start;
+    }
+    const std::string_view head = bytes_.substr(0, appended);
+    for (std::size_t at = head.find("<DataArray"); at != std::string_view::npos; at = head.find("<DataArray", at + 1)) {
+      const std::string_view array = tag_at(at);
+      const std::string_view format = attribute(array, "format").value_or("ascii");
+      const std::string name(attribute(array, "Name").value_or("(unnamed)"));
+      if (format == "binary") {
+        check_header(DataReader(bytes_, at + array.size() + 1, true), at, name);
+      } else if (format == "appended") {
+        long long offset;
+        if (!parse_integer(attribute(array, "offset").value_or(""), offset) || offset < 0 ||
+            data_start == std::string_view::npos || std::size_t(offset) > bytes_.size() - data_start)
+          fail(at, fmt::format("array '{}': its offset=\"{}\" does not point into the appended data", shortened(name),
+                               shortened(attribute(array, "offset").value_or(""))));
+        check_header(DataReader(bytes_, data_start + std::size_t(offset), appended_base64), at, name);
+      }
+    }
+  }
+
+private:
+  [[noreturn]] void fail(std::size_t at, const std::string& problem) const {
+    const std::size_t line = 1 + std::size_t(std::count(bytes_.begin(), bytes_.begin() + std::min(at, bytes_.size()), '\n'));
+    throw Error(fmt::format("{}:{}: {}", file_.string(), line, problem));
+  }
+
+  std::string_view tag_at(std::size_t at) const {
+    const std::size_t end = bytes_.find('>', at);
+    if (end == std::string_view::npos) fail(at, "the tag is not closed with '>'; the file is cut off or damaged");
+    return bytes_.substr(at, end - at);
+  }
+
+  std::uint64_t word(DataReader& data, std::size_t at, const std::string& name) const {
+    const auto raw = data.take(word_size_);
+    if (!raw) fail(at, fmt::format("array '{}': the file ends inside its data header; it is cut off", shortened(name)));
+    std::uint64_t v = 0;
+    for (std::size_t i = 0; i < word_size_; ++i) {
+      const std::size_t k = big_endian_ ? i : word_size_ - 1 - i;
+      v = (v << 8) | static_cast<unsigned char>((*raw)[k]);
+    }
+    return v;
+  }
+
+  void check_header(DataReader data, std::size_t at, const std::string& name) const {
+    const double budget = available_memory().bytes;
+    if (compressor_.empty()) {
+      const std::uint64_t size = word(data, at, name);
+      if (double(size) > data.remaining())
+        fail(at, fmt::format("array '{}' says {} bytes of data, but only {:.0f} follow; the file is cut off or its "
+                             "header is damaged",
+                             shortened(name), size, data.remaining()));
+      return;
+    }
+    const std::uint64_t blocks = word(data, at, name), block_size = word(data, at, name), last = word(data, at, name);
+    // VTK divides by the block size, and takes the last block as no larger than the others.
+    if (blocks > 0 && (block_size == 0 || last > block_size))
+      fail(at, fmt::format("array '{}': its data header gives blocks of {} bytes and a last block of {}; the "
+                           "header is damaged",
+                           shortened(name), block_size, last));
+    if (double(blocks) * double(word_size_) > data.remaining())
+      fail(at, fmt::format("array '{}' says {} compressed blocks, more than the rest of the file can hold; its data "
+                           "header is damaged",
+                           shortened(name), blocks));
+    double compressed = 0;
+    for (std::uint64_t b = 0; b < blocks; ++b) compressed += double(word(data, at, name));
+    const double expanded = blocks == 0 ? 0 : double(blocks - 1) * double(block_size) + double(last ? last : block_size);
+    const double possible = compressed * expansion_limit(compressor_) + 65536;
+    if (compressed > data.remaining())
+      fail(at, fmt::format("array '{}' has {:.0f} compressed bytes, but only {:.0f} follow; the file is cut off",
+                           shortened(name), compressed, data.remaining()));
+    if (double(block_size) > possible || double(last) > possible || expanded > possible)
+      fail(at, fmt::format("array '{}': its data header claims {} blocks of {} bytes from {:.0f} compressed bytes, "
+                           "more than {} can produce; the header is damaged",
+                           shortened(name), blocks, block_size, compressed, compressor_));
+    if (expanded > budget)
+      fail(at, fmt::format("array '{}' decompresses to {:.1f} GiB, more than the {:.1f} GiB of memory available",
+                           shortened(name), expanded / (1 << 30), budget / (1 << 30)));
+  }
+
+  const fs::path& file_;
+  std::string_view bytes_;
+  std::size_t word_size_ = 4;
+  bool big_endian_ = false;
+  std::string compressor_;
+};
+
+}  // namespace
+
+void check_vtp_data_headers(const fs::path& file, std::string_view bytes) { HeaderChecker(file, bytes).run(); }
+
+}  // namespace subdiv::io_detail

@@ -1,0 +1,62 @@
+#include "framework/util/input_file.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fmt/format.h>
+#include <fstream>
+#include <sstream>
+
+#include "framework/util/error.h"
+#include "framework/util/memory_limit.h"
+
+namespace subdiv {
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* kind_of(fs::file_type type) {
+  switch (type) {
+    case fs::file_type::fifo: return "a FIFO (named pipe)";
+    case fs::file_type::character: return "a character device";
+    case fs::file_type::block: return "a block device";
+    case fs::file_type::socket: return "a socket";
+    default: return "not a regular file";
+  }
+}
+
+}  // namespace
+
+void check_input_file(const fs::path& file, std::string_view what) {
+  std::error_code ec;
+  // status() follows symlinks: a link to /dev/zero is judged by what it points to.
+  const fs::file_status status = fs::status(file, ec);
+  if (status.type() == fs::file_type::not_found)
+    throw Error(fmt::format("cannot open '{}': no such file", file.string()));
+  if (ec) throw Error(fmt::format("cannot open '{}': {}", file.string(), ec.message()));
+  if (status.type() == fs::file_type::directory)
+    throw Error(fmt::format("cannot open '{}': it is a directory, not a {} file", file.string(), what));
+  if (status.type() != fs::file_type::regular)
+    throw Error(fmt::format("cannot open '{}': it is {}; give the path of a regular {} file", file.string(),
+                            kind_of(status.type()), what));
+  const auto size = fs::file_size(file, ec);
+  if (ec) throw Error(fmt::format("cannot open '{}': {}", file.string(), ec.message()));
+  // Readers hold at least the whole text; a file larger than the memory left cannot be read.
+  const MemoryBudget budget = available_memory();
+  if (double(size) > budget.bytes)
+    throw Error(fmt::format("cannot read '{}': it is {:.2f} GiB, more than the {:.2f} GiB of memory this process "
+                            "may still use ({}); split the {} file or raise the limit",
+                            file.string(), double(size) / (1 << 30), budget.bytes / (1 << 30), budget.source, what));
+  std::ifstream probe(file, std::ios::binary);
+  if (!probe) throw Error(fmt::format("cannot open '{}': {}", file.string(), std::strerror(errno)));
+}
+
+std::string read_input_file(const fs::path& file, std::string_view what) {
+  check_input_file(file, what);
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (in.bad()) throw Error(fmt::format("cannot read '{}': {}", file.string(), std::strerror(errno)));
+  return std::move(bytes).str();
+}
+
+}  // namespace subdiv

@@ -1,0 +1,35 @@
+#pragma once
+// How much more memory this process may use: the least of the machine's MemAvailable, the
+// process's own limits (ulimit -v / -d: RLIMIT_AS, RLIMIT_DATA) and its cgroup's memory
+// limit (v2 memory.max, v1 memory.limit_in_bytes, each minus what the group already uses).
+// A run that fits the machine but not its container or ulimit would otherwise end in
+// std::bad_alloc, or in the kernel's OOM killer, half-way through.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace subdiv {
+
+struct MemoryBudget {
+  double bytes = 1e18;             // very large when nothing is known: never refuse then
+  std::string source = "unknown";  // which limit is the tightest, for messages
+};
+
+MemoryBudget available_memory();
+
+// The parts, separately, with their files as parameters so that tests can give fakes.
+// MemAvailable from a /proc/meminfo-format file.
+std::optional<double> meminfo_available(const std::filesystem::path& meminfo = "/proc/meminfo");
+// What the process's cgroup (and its ancestors) still allow: limit minus usage, the least
+// over the hierarchy; nullopt when no limit is set or the files are not there.
+// `self_cgroup` is a /proc/self/cgroup-format file, `cgroup_root` the cgroup mount point.
+std::optional<MemoryBudget> cgroup_remaining(const std::filesystem::path& cgroup_root = "/sys/fs/cgroup",
+                                             const std::filesystem::path& self_cgroup = "/proc/self/cgroup");
+// What RLIMIT_AS and RLIMIT_DATA still allow, from the process's current sizes.
+std::optional<MemoryBudget> rlimit_remaining();
+
+// The message for a std::bad_alloc: what ran out while doing `during`, the budget and the
+// fix. Every allocation failure the tool reports says this, never "internal error".
+std::string out_of_memory_message(const std::string& during);
+
+}  // namespace subdiv

@@ -1,0 +1,108 @@
+// `subdiv refine` options and inputs a hostile or unlucky user gives (issue 15): NaN angles,
+// absurd start levels, sequences that do not add up to --levels, input paths that are
+// FIFOs or devices, VTK files that make VTK print, and process memory limits. Each run
+// must exit non-zero with a message naming the problem, and leave no output file.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sys/stat.h>
+
+#include "support/cli_checks.h"
+#include "support/cli_runner.h"
+#include "support/sanitizers.h"
+
+using namespace subdiv::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kCube = source_path("examples/meshes/cube.obj");
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// `timeout` so that a regression to a hang fails the test instead of stalling the suite.
+CliResult run_bounded(const std::string& args) { return run_subdiv_with_prefix("timeout 60 ", args); }
+
+}  // namespace
+
+TEST_CASE("--feature-angle nan and --start-level 2147483647 are refused") {
+  const auto dir = fresh_dir("hostile-options");
+  check_refused("refine " + kCube + " --feature-angle nan", dir / "a.obj", "--feature-angle nan is not an angle");
+  check_refused("refine " + kCube + " --start-level 2147483647", dir / "b.obj", "--start-level");
+  check_refused("refine " + kCube + " --start-level 101", dir / "c.obj", "--start-level");
+  CHECK(run_subdiv("refine " + kCube + " --start-level 2 -q -o " + (dir / "ok.obj").string()).exit_code == 0);
+}
+
+TEST_CASE("a scheme sequence that does not add up to an explicit --levels is refused") {
+  const auto dir = fresh_dir("hostile-sequence");
+  check_refused("refine " + kCube + " -s catmull-clark:1,catmull-clark:2 -l 2", dir / "a.obj",
+                "--scheme 'catmull-clark:1,catmull-clark:2' runs 3 level(s), but --levels asks for 2");
+  check_refused("refine " + kCube + " -s catmull-clark:1 -l 3", dir / "b.obj", "runs 1 level(s), but --levels asks for 3");
+  check_refused("refine " + kCube + " -s catmull-clark:99999999999,catmull-clark:1", dir / "c.obj",
+                "should be NAME:LEVELS with LEVELS a whole number from 0 to 30");
+  check_refused("refine " + kCube + " -s catmull-clark:2147483647,catmull-clark:2147483647", dir / "d.obj",
+                "a whole number from 0 to 30");
+  // Without -l the sequence sets the total, as docs/scheme-format.md shows; with a matching -l too.
+  CHECK(run_subdiv("refine " + kCube + " -s catmull-clark:1,catmull-clark:1 -q -o " + (dir / "ok.obj").string()).exit_code == 0);
+  CHECK(run_subdiv("refine " + kCube + " -s catmull-clark:1,catmull-clark -l 3 -q -o " + (dir / "ok.obj").string())
+            .exit_code == 0);
+}
+
+TEST_CASE("input paths that are FIFOs or symlinks to devices are refused at once") {
+  const auto dir = fresh_dir("hostile-paths");
+  const fs::path fifo = dir / "pipe.obj";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  const CliResult r = run_bounded("refine " + fifo.string() + " -o " + (dir / "a.obj").string());
+  CHECK(r.exit_code == 1);
+  CHECK(contains(r.output, "cannot open '" + fifo.string() + "': it is a FIFO (named pipe)"));
+  CHECK_FALSE(fs::exists(dir / "a.obj"));
+
+  fs::create_symlink("/dev/zero", dir / "zero.obj");
+  const CliResult zero = run_bounded("refine " + (dir / "zero.obj").string() + " -o " + (dir / "b.obj").string());
+  CHECK(zero.exit_code == 1);
+  CHECK(contains(zero.output, "it is a character device"));
+  fs::create_symlink("/dev/zero", dir / "zero.json");
+  const CliResult scheme = run_bounded("refine " + kCube + " -s " + (dir / "zero.json").string() + " -o " +
+                                       (dir / "c.obj").string());
+  CHECK(scheme.exit_code == 1);
+  CHECK(contains(scheme.output, "regular scheme file"));
+  const CliResult features = run_bounded("refine " + kCube + " --features " + fifo.string() + " -o " +
+                                         (dir / "d.obj").string());
+  CHECK(features.exit_code == 1);
+  CHECK(contains(features.output, "regular feature file"));
+}
+
+TEST_CASE("VTK's own output never reaches the terminal; the message is ours and names the file") {
+  const auto dir = fresh_dir("hostile-vtk");
+  std::ofstream(dir / "bad.vtp") << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\">\n"
+                                    "<PolyData><Piece NumberOfPoints=\"3\" NumberOfPolys=\"1\">\n<Points>"
+                                    "<DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1"
+                                    "</DataArray></Points>\n</Piece></PolyData></VTKFile>\n";
+  const CliResult r = run_bounded("refine " + (dir / "bad.vtp").string() + " -o " + (dir / "a.obj").string());
+  INFO(r.output);
+  CHECK(r.exit_code == 1);
+  CHECK(contains(r.output, "subdiv: error: cannot read '" + (dir / "bad.vtp").string() + "'"));
+  CHECK_FALSE(contains(r.output, "\x1b["));       // ANSI colours
+  CHECK_FALSE(contains(r.output, "ERROR: In "));  // VTK's source-file prefix
+  CHECK_FALSE(contains(r.output, "vtkInformation"));
+  CHECK_FALSE(contains(r.output, "internal error"));
+  CHECK_FALSE(fs::exists(dir / "a.obj"));
+}
+
+TEST_CASE("a process memory limit (ulimit -v) is honoured by the memory guard") {
+#if SUBDIV_TEST_ASAN
+  MESSAGE("skipped: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");
+#else
+  const auto dir = fresh_dir("hostile-memory");
+  // 9 levels of Catmull-Clark on the cube: 1.6 million faces, about 0.5 GB; the limit is 0.4 GB.
+  const CliResult r = run_subdiv_with_prefix("ulimit -v 400000; ",
+                                             "refine " + kCube + " -l 9 -o " + (dir / "big.obj").string());
+  INFO(r.output);
+  CHECK(r.exit_code == 1);
+  CHECK(contains(r.output, "9 levels would make about"));
+  CHECK(contains(r.output, "RLIMIT_AS (ulimit -v)"));
+  CHECK_FALSE(contains(r.output, "internal error"));
+  CHECK_FALSE(fs::exists(dir / "big.obj"));
+#endif
+}
