@@ -48,6 +48,18 @@ void apply_corners(const MeshData& mesh, Level& level, const std::string& source
   }
 }
 
+void apply_holes(const MeshData& mesh, Level& level, const std::string& source) {
+  if (mesh.holes.empty()) return;
+  level.face_hole.assign(level.face_count(), 0);
+  for (size_t i = 0; i < mesh.holes.size(); ++i) {
+    const Index f = mesh.holes[i];
+    if (f < 0 || f >= level.face_count())
+      throw Error(fmt::format("{}: hole {} names face {}, but the mesh has {} faces (holes number faces from 0)",
+                              source, i, f, level.face_count()));
+    level.face_hole[f] = 1;
+  }
+}
+
 }  // namespace
 
 Level level_from_mesh(const MeshData& mesh, const std::string& source) {
@@ -60,6 +72,7 @@ Level level_from_mesh(const MeshData& mesh, const std::string& source) {
   }
   apply_creases(mesh, level, source);
   apply_corners(mesh, level, source);
+  apply_holes(mesh, level, source);
   return level;
 }
 

@@ -30,10 +30,12 @@ struct SplitterTable {
     SplitterInfo quad = builtin("quad", "primal 1-to-k split of any polygon: new face and edge points", split_quad,
                                 {O::Vertex, O::Edge, O::Face});
     quad.engine_propagates_tags = true;
+    quad.handles_non_manifold = true;
     SplitterInfo tri = builtin("triangle", "primal 1-to-4 split of triangles: new edge points", split_triangle,
                                {O::Vertex, O::Edge});
     tri.required_face_size = 3;
     tri.engine_propagates_tags = true;
+    tri.handles_non_manifold = true;
     SplitterInfo sqrt3;
     sqrt3.name = "sqrt3";
     sqrt3.description = "sqrt(3) split (Kobbelt 2000): face points, old edges flipped; boundaries trisected every second step";

@@ -61,6 +61,9 @@ struct SplitterInfo {
   // carries crease sharpness to the child. Otherwise `split` fills the child's tags itself
   // (or leaves them empty: all smooth).
   bool engine_propagates_tags = false;
+  // True when `split` accepts non-manifold levels (topology/level.h) and passes their marks
+  // down; the engine refuses non-manifold meshes for the others, naming the splitter.
+  bool handles_non_manifold = false;
   std::string origin = "built-in";  // or the plugin that registered it
 };
 
