@@ -11,7 +11,8 @@
 namespace subdiv {
 namespace {
 
-// Range and size checks; returns false if a face repeats a vertex (the general path's job).
+// Range and size checks, and faces with fewer than 3 distinct vertices refused; returns
+// false if a face repeats a vertex (the general path's job).
 bool check_faces(const Level& level) {
   bool simple = true;
   for (Index f = 0; f < level.face_count(); ++f) {
@@ -22,9 +23,18 @@ bool check_faces(const Level& level) {
       if (verts[i] < 0 || verts[i] >= level.vertex_count)
         throw Error(fmt::format("face {} names vertex {}, but the mesh has {} vertices", f,
                                 verts[i], level.vertex_count));
-      for (size_t j = 0; j < i && simple; ++j)
-        if (verts[i] == verts[j]) simple = false;
     }
+    int distinct = 0;
+    for (size_t i = 0; i < verts.size(); ++i) {
+      bool repeat = false;
+      for (size_t j = 0; j < i && !repeat; ++j) repeat = verts[i] == verts[j];
+      distinct += !repeat;
+    }
+    if (distinct < 3)
+      throw Error(fmt::format("face {} is degenerate: it has only {} distinct vertices, fewer than 3; remove it "
+                              "(`subdiv refine` drops such faces with a warning)",
+                              f, distinct));
+    simple = simple && distinct == int(verts.size());
   }
   return simple;
 }

@@ -150,9 +150,6 @@ inline int matching_edge(const subdiv::Level& ours, const OpenSubdiv::Far::Topol
                          const std::vector<int>& vmap, subdiv::Index e) {
   const subdiv::Index a = ours.edge_vertices[2 * e], b = ours.edge_vertices[2 * e + 1];
   auto joins = [](int x0, int x1, int a0, int b0) { return (x0 == a0 && x1 == b0) || (x0 == b0 && x1 == a0); };
-  int k = 0;
-  for (subdiv::Index other : ours.ring_edges(a))
-    if (other < e && joins(ours.edge_vertices[2 * other], ours.edge_vertices[2 * other + 1], a, b)) ++k;
   std::vector<int> candidates;
   const auto edges = osd.GetVertexEdges(vmap[size_t(a)]);
   for (int i = 0; i < edges.size(); ++i) {
@@ -161,6 +158,10 @@ inline int matching_edge(const subdiv::Level& ours, const OpenSubdiv::Far::Topol
   }
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  if (candidates.size() < 2) return candidates.empty() ? OpenSubdiv::Far::INDEX_INVALID : candidates.front();
+  int k = 0;  // only where edges repeat: how many of ours join a and b before e
+  for (subdiv::Index other = 0; other < e; ++other)
+    if (joins(ours.edge_vertices[2 * other], ours.edge_vertices[2 * other + 1], a, b)) ++k;
   return k < int(candidates.size()) ? candidates[size_t(k)] : OpenSubdiv::Far::INDEX_INVALID;
 }
 

@@ -9,6 +9,7 @@
 #include "framework/io/feature_file.h"
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/io/formats.h"
+#include "framework/io/mesh_cleanup.h"
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
 #include "framework/engine/refiner.h"
@@ -35,6 +36,8 @@ struct RefineArgs {
   int start_level = 0;
   bool quiet = false;
   bool limit = false;
+  // Set when given on the command line, which then wins over the mesh file's option tags.
+  bool boundary_given = false, crease_method_given = false;
 };
 
 ParameterOverrides parse_params(const std::vector<std::string>& params) {
@@ -60,6 +63,25 @@ RefineOptions refine_options(const RefineArgs& a) {
   return o;
 }
 
+// The mesh file's option tags (OBJ t interpolateboundary, t creasemethod), where the
+// command line does not say otherwise.
+RefineArgs with_mesh_options(RefineArgs a, const MeshOptions& tags) {
+  if (!a.boundary_given && tags.interpolate_boundary)
+    a.boundary = *tags.interpolate_boundary == 0 ? "none" : *tags.interpolate_boundary == 2 ? "edges" : "edges-and-corners";
+  if (!a.crease_method_given && tags.crease_method) a.crease_method = *tags.crease_method == "chaikin" ? "chaikin" : "uniform";
+  return a;
+}
+
+// The options the refinement used, as tags for an OBJ output (a round trip keeps them).
+MeshOptions used_options(const RefineOptions& o, const MeshOptions& tags) {
+  MeshOptions used = tags;
+  used.interpolate_boundary = o.features.boundary == BoundaryInterpolation::None        ? 0
+                              : o.features.boundary == BoundaryInterpolation::EdgesOnly ? 2
+                                                                                          : 1;
+  used.crease_method = o.features.crease_method == CreaseMethod::Chaikin ? "chaikin" : "normal";
+  return used;
+}
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -73,7 +95,9 @@ void run(const RefineArgs& a) {
   if (a.threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
   const SchemeSequence seq = load_scheme_sequence(a.scheme, a.levels, parse_params(a.params));
-  const MeshData mesh = read_mesh(a.mesh);
+  MeshCleanup cleanup;
+  const MeshData mesh = drop_unrefinable(read_mesh(a.mesh), cleanup);
+  for (const auto& w : cleanup.warnings(a.mesh)) fmt::print(stderr, "subdiv: warning: {}\n", w);
   if (mesh.face_count() == 0)
     throw Error(fmt::format("{}: the mesh has no faces to refine{}", a.mesh,
                             mesh.line_count() ? "; its polylines need a curve scheme (e.g. --scheme chaikin)" : ""));
@@ -90,7 +114,7 @@ void run(const RefineArgs& a) {
   }
   check_fits_in_memory(*seq.schemes.front(), base, seq.total_levels);
 
-  const RefineOptions options = refine_options(a);
+  const RefineOptions options = refine_options(with_mesh_options(a, mesh.options));
   Progress progress;
   progress.say(fmt::format("refining topology: {} levels of {}", seq.total_levels, a.scheme));
   Hierarchy h = refine_topology(seq.runs, std::move(base), options);
@@ -122,7 +146,8 @@ void run(const RefineArgs& a) {
                  fmt::join(limit.approximate_reasons, "; "));
   }
   progress.say(fmt::format("writing {}", a.output));
-  write_levels(a.output, h, positions, options.features, limit_data);
+  write_levels(a.output, h, positions, options.features, limit_data,
+               used_options(options, mesh.options));
   progress.done();
   if (!a.quiet) {
     for (const auto& note : notes) fmt::print("{}\n", note);
@@ -174,7 +199,11 @@ void add_refine_command(CLI::App& app) {
                 "'normal' (with --levels 0: the limit points of the input's own vertices)");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   cmd->footer("Example: subdiv refine examples/meshes/cube.obj --scheme catmull-clark --levels 3 -o cube.pvd");
-  cmd->callback([args] { run(*args); });
+  cmd->callback([args, cmd] {
+    args->boundary_given = cmd->count("--boundary") > 0;
+    args->crease_method_given = cmd->count("--crease-method") > 0;
+    run(*args);
+  });
 }
 
 }  // namespace subdiv::cli
