@@ -38,6 +38,7 @@ struct RefineArgs {
   bool limit = false;
   // Set when given on the command line, which then wins over the mesh file's option tags.
   bool boundary_given = false, crease_method_given = false;
+  bool smooth_triangles = false;  // --smooth-triangles
 };
 
 ParameterOverrides parse_params(const std::vector<std::string>& params) {
@@ -72,9 +73,42 @@ RefineArgs with_mesh_options(RefineArgs a, const MeshOptions& tags) {
   return a;
 }
 
+bool has_parameter(const SchemeSequence& seq, const std::string& name) {
+  for (const auto& scheme : seq.schemes)
+    for (const auto& p : scheme->parameters)
+      if (p.name == name) return true;
+  return false;
+}
+
+// OpenSubdiv's smooth triangles (TRI_SUB_SMOOTH) are the scheme parameter "triangles"
+// (schemes/catmull-clark.json): --smooth-triangles, or the mesh's t smoothtriangles tag,
+// set it unless --param does. "" when nothing changes.
+std::string triangles_choice(const RefineArgs& a, const MeshOptions& tags, const SchemeSequence& given) {
+  for (const auto& p : a.params)
+    if (p.rfind("triangles=", 0) == 0) return "";
+  if (a.smooth_triangles) {
+    if (!has_parameter(given, "triangles"))
+      throw Error(fmt::format("--smooth-triangles: scheme '{}' has no 'triangles' parameter; smooth triangles are a "
+                              "Catmull-Clark option (OpenSubdiv's TRI_SUB_SMOOTH), e.g. --scheme catmull-clark",
+                              a.scheme));
+    return "smooth";
+  }
+  // As OpenSubdiv, a tag for a scheme without the option is ignored.
+  return tags.smooth_triangles && has_parameter(given, "triangles") ? *tags.smooth_triangles : "";
+}
+
+ParameterOverrides with_triangles(const RefineArgs& a, const std::string& triangles) {
+  ParameterOverrides params = parse_params(a.params);
+  params["triangles"] = triangles;
+  return params;
+}
+
 // The options the refinement used, as tags for an OBJ output (a round trip keeps them).
-MeshOptions used_options(const RefineOptions& o, const MeshOptions& tags) {
+MeshOptions used_options(const RefineOptions& o, const MeshOptions& tags, const SchemeSequence& seq) {
   MeshOptions used = tags;
+  for (const auto& scheme : seq.schemes)
+    for (const auto& p : scheme->parameters)
+      if (p.name == "triangles") used.smooth_triangles = p.choice;
   used.interpolate_boundary = o.features.boundary == BoundaryInterpolation::None        ? 0
                               : o.features.boundary == BoundaryInterpolation::EdgesOnly ? 2
                                                                                           : 1;
@@ -94,10 +128,12 @@ void run(const RefineArgs& a) {
   std::unique_ptr<tbb::global_control> thread_limit;
   if (a.threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
-  const SchemeSequence seq = load_scheme_sequence(a.scheme, a.levels, parse_params(a.params));
+  const SchemeSequence given = load_scheme_sequence(a.scheme, a.levels, parse_params(a.params));
   MeshCleanup cleanup;
   const MeshData mesh = drop_unrefinable(read_mesh(a.mesh), cleanup);
   for (const auto& w : cleanup.warnings(a.mesh)) fmt::print(stderr, "subdiv: warning: {}\n", w);
+  const std::string triangles = triangles_choice(a, mesh.options, given);
+  const SchemeSequence seq = triangles.empty() ? given : load_scheme_sequence(a.scheme, a.levels, with_triangles(a, triangles));
   if (mesh.face_count() == 0)
     throw Error(fmt::format("{}: the mesh has no faces to refine{}", a.mesh,
                             mesh.line_count() ? "; its polylines need a curve scheme (e.g. --scheme chaikin)" : ""));
@@ -147,7 +183,7 @@ void run(const RefineArgs& a) {
   }
   progress.say(fmt::format("writing {}", a.output));
   write_levels(a.output, h, positions, options.features, limit_data,
-               used_options(options, mesh.options));
+               used_options(options, mesh.options, seq));
   progress.done();
   if (!a.quiet) {
     for (const auto& note : notes) fmt::print("{}\n", note);
@@ -199,6 +235,9 @@ void add_refine_command(CLI::App& app) {
                 "'normal' (with --levels 0: the limit points of the input's own vertices)");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   cmd->footer("Example: subdiv refine examples/meshes/cube.obj --scheme catmull-clark --levels 3 -o cube.pvd");
+  cmd->add_flag("--smooth-triangles", args->smooth_triangles,
+                "Catmull-Clark: OpenSubdiv's smooth triangles (TRI_SUB_SMOOTH), the same as --param "
+                "triangles=smooth; a mesh's 't smoothtriangles' tag does the same unless --param says otherwise");
   cmd->callback([args, cmd] {
     args->boundary_given = cmd->count("--boundary") > 0;
     args->crease_method_given = cmd->count("--crease-method") > 0;
