@@ -45,7 +45,7 @@ void check_manifold_for(const Scheme& scheme, const Level& level) {
                                               level.edge_face_count(e))
                                 : fmt::format("the faces around vertex {} form more than one fan", v);
   throw Error(fmt::format("{}: scheme '{}' uses the '{}' split, which needs a manifold mesh, but {}; use a primal "
-                          "scheme (catmull-clark, loop, ...) or split the mesh there",
+                          "scheme (catmull-clark, loop, doo-sabin, ...) or split the mesh there",
                           scheme.path, scheme.name, splitter_info(scheme.split()).name, where));
 }
 
@@ -161,6 +161,7 @@ Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const Ref
     if (splitter_info(scheme.split()).engine_propagates_tags)
       propagate_tags(h.levels.back(), step, options.features.crease_method);
     pass_holes_down(h.levels.back(), step);
+    if (!step.warning.empty()) h.warnings.push_back(fmt::format("level {}: {}", l + 1, step.warning));
     h.levels.push_back(std::move(step.child));
     h.origins.push_back(std::move(step.origins));
     h.features_refined.push_back(step.features_refined);

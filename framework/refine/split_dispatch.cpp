@@ -45,8 +45,10 @@ struct SplitterTable {
     sqrt3.curve_arity = 3;
     SplitterInfo dual = builtin("dual", "dual split (Doo and Sabin 1978): one new point per face corner", split_dual, {O::Corner});
     dual.primal = false;
+    dual.handles_non_manifold = true;  // with a gap and a warning (dual_split.cpp)
     SplitterInfo mid = builtin("mid-edge", "mid-edge split (Peters and Reif 1997): one new point per edge", split_mid_edge, {O::Edge});
     mid.primal = false;
+    mid.handles_non_manifold = true;
     for (SplitterInfo* info : {&quad, &tri, &sqrt3, &dual, &mid}) builtins.push_back(std::move(*info));
   }
 

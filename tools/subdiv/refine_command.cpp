@@ -154,6 +154,7 @@ void run(const RefineArgs& a) {
   Progress progress;
   progress.say(fmt::format("refining topology: {} levels of {}", seq.total_levels, a.scheme));
   Hierarchy h = refine_topology(seq.runs, std::move(base), options);
+  for (const auto& w : h.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
   std::vector<std::vector<double>> positions{mesh.positions};
   for (int l = 0; l < seq.total_levels; ++l) {
     progress.say(fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
