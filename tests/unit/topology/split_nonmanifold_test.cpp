@@ -70,3 +70,26 @@ TEST_CASE("sqrt3 refuses non-manifold input, naming the edge") {
   CHECK_THROWS_WITH_AS(refined(m, "sqrt3", 1), doctest::Contains("needs a manifold mesh, but edge (0, 1) has 3 faces"),
                        Error);
 }
+
+// Every shipped surface scheme on every kind of non-manifold input it accepts the faces of:
+// refined with finite positions (and, for the dual splits, a warning), or refused with a
+// message that names the manifold requirement; never a crash.
+TEST_CASE("every shipped surface scheme on non-manifold input: a valid result or a clear refusal") {
+  for (const SchemeListing& listing : list_schemes()) {
+    if (listing.kind != "surface" || listing.origin != "built-in") continue;
+    const auto scheme = load_scheme(listing.name);
+    const bool triangles = scheme->required_face_size == 3 || splitter_info(scheme->split()).required_face_size == 3;
+    for (const auto& m : {flap_fan(3, triangles), flap_fan(4, triangles), bow_tie(triangles), flipped_face(triangles)}) {
+      CAPTURE(listing.name);
+      CAPTURE(m.name);
+      RefineOptions options;
+      options.levels = 2;
+      try {
+        const Hierarchy h = refine(*scheme, level_from_mesh(m.mesh, m.name), options);
+        CHECK(all_finite(interpolate(h, 2, m.mesh.positions, 3)));
+      } catch (const Error& e) {
+        CHECK_MESSAGE(std::string(e.what()).find("needs a manifold mesh") != std::string::npos, e.what());
+      }
+    }
+  }
+}
