@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <limits>
 
+#include "framework/features/base_tags.h"
 #include "framework/rules/stencil_builder.h"
 #include "framework/rules/step_evaluator.h"
 #include "framework/scheme/step_tables.h"
@@ -30,6 +31,22 @@ void check_face_sizes(const Scheme& scheme, const Level& base) {
                               scheme.path, scheme.name,
                               needed == 3 ? "triangles" : needed == 4 ? "quads" : fmt::format("{}-gons", needed), f,
                               base.face_size(f), needed == 3 ? "triangulate" : needed == 4 ? "quadrangulate" : "remesh"));
+}
+
+// Splits that do not handle non-manifold levels (sqrt3, dual, mid-edge) refuse them clearly.
+void check_manifold_for(const Scheme& scheme, const Level& level) {
+  if (level.manifold() || splitter_info(scheme.split()).handles_non_manifold) return;
+  Index e = 0, v = 0;
+  while (e < level.edge_count() && !level.non_manifold_edge(e)) ++e;
+  while (v < level.vertex_count && !level.non_manifold_vertex(v)) ++v;
+  const std::string where = e < level.edge_count()
+                                ? fmt::format("edge ({}, {}) has {} faces or faces of opposite orientation",
+                                              level.edge_vertices[2 * e], level.edge_vertices[2 * e + 1],
+                                              level.edge_face_count(e))
+                                : fmt::format("the faces around vertex {} form more than one fan", v);
+  throw Error(fmt::format("{}: scheme '{}' uses the '{}' split, which needs a manifold mesh, but {}; use a primal "
+                          "scheme (catmull-clark, loop, doo-sabin, ...) or split the mesh there",
+                          scheme.path, scheme.name, splitter_info(scheme.split()).name, where));
 }
 
 int max_valence(const Level& level) {
@@ -86,17 +103,14 @@ std::vector<const Scheme*> schemes_per_level(std::span<const SchemeRun> runs) {
   return per_level;
 }
 
-// With boundary corners kept (OpenSubdiv's VTX_BOUNDARY_EDGE_AND_CORNER), a boundary vertex
-// with one face becomes an infinitely sharp corner tag on the base level, as OpenSubdiv's
-// factory does, so the tag travels to finer levels even where a split gives the vertex
-// more faces (sqrt3).
-void tag_boundary_corners(Level& base, BoundaryInterpolation mode) {
-  if (mode != BoundaryInterpolation::EdgesAndCorners) return;
-  for (Index v = 0; v < base.vertex_count; ++v) {
-    if (!base.on_boundary(v) || base.incident_face_count(v) != 1) continue;
-    if (base.vertex_sharpness.empty()) base.vertex_sharpness.assign(base.vertex_count, 0.f);
-    base.vertex_sharpness[v] = kInfinitelySharp;
-  }
+// A child face inside a hole is a hole (OpenSubdiv's Vtr::Refinement passes the face tag on).
+void pass_holes_down(const Level& parent, SplitResult& step) {
+  if (parent.face_hole.empty()) return;
+  const std::vector<Index>& from = step.origins.parent_face;
+  Level& child = step.child;
+  child.face_hole.assign(child.face_count(), 0);
+  for (Index f = 0; f < child.face_count() && size_t(f) < from.size(); ++f)
+    child.face_hole[f] = from[f] != kNone && parent.face_hole[from[f]];
 }
 
 // A non-linear step (plugins): no table says it, its rule is run on the values.
@@ -133,15 +147,21 @@ std::vector<double> run_direct_step(const DirectStep& direct, const Hierarchy& h
 
 Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const RefineOptions& options) {
   const std::vector<const Scheme*> per_level = schemes_per_level(runs);
+  // The base level's topological tags, in OpenSubdiv's order (features/base_tags.h).
+  tag_boundary_holes(base, options.features.boundary);
+  sharpen_non_manifold(base);
   tag_boundary_corners(base, options.features.boundary);
   Hierarchy h;
   h.levels.push_back(std::move(base));
   for (size_t l = 0; l < per_level.size(); ++l) {
     const Scheme& scheme = *per_level[l];
     if (l == 0 || per_level[l - 1] != per_level[l]) check_face_sizes(scheme, h.levels.back());
+    check_manifold_for(scheme, h.levels.back());
     SplitResult step = split(scheme.split(), h.levels.back(), options.first_step + int(l));
     if (splitter_info(scheme.split()).engine_propagates_tags)
       propagate_tags(h.levels.back(), step, options.features.crease_method);
+    pass_holes_down(h.levels.back(), step);
+    if (!step.warning.empty()) h.warnings.push_back(fmt::format("level {}: {}", l + 1, step.warning));
     h.levels.push_back(std::move(step.child));
     h.origins.push_back(std::move(step.origins));
     h.features_refined.push_back(step.features_refined);

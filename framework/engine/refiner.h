@@ -46,6 +46,8 @@ struct Hierarchy {
   // Per step: set when the step is non-linear; stencils[i] is then empty (no rows) and
   // apply_step() runs the rule instead. Empty (or all null) for linear schemes.
   std::vector<std::shared_ptr<const DirectStep>> direct;
+  // What steps did differently from their usual result (SplitResult::warning), one line each.
+  std::vector<std::string> warnings;
 
   bool linear() const {
     for (const auto& d : direct)

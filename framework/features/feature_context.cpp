@@ -47,8 +47,9 @@ std::vector<float> effective_vertex_sharpness(const Level& level, BoundaryInterp
   std::vector<float> s(level.vertex_count);
   for (Index v = 0; v < level.vertex_count; ++v) {
     s[v] = level.vertex_sharp(v);
+    // A topological corner: one face, two edges (Far's isTopologicalCorner).
     const bool boundary_corner = mode == BoundaryInterpolation::EdgesAndCorners &&
-                                 level.on_boundary(v) && level.incident_face_count(v) == 1;
+                                 level.incident_face_count(v) == 1 && level.valence(v) == 2;
     if (boundary_corner || level.valence(v) == 0) s[v] = kInfinitelySharp;
   }
   return s;

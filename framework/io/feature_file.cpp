@@ -29,8 +29,9 @@ public:
     for (const auto& [key, value] : root.items()) {
       if (key == "creases") creases(value);
       else if (key == "corners") corners(value);
+      else if (key == "holes") holes(value);
       else if (key != "description" && key != "$schema")
-        fail(key, "unknown key; a feature file has \"creases\" and \"corners\" (and optionally \"description\")");
+        fail(key, "unknown key; a feature file has \"creases\", \"corners\" and \"holes\" (and optionally \"description\")");
     }
     return std::move(tags_);
   }
@@ -143,6 +144,15 @@ private:
     }
   }
 
+  // "holes": [3, 7]: faces, 0-based, that shape their neighbours but are left out of the surface.
+  void holes(const Json& value) {
+    if (!value.is_array()) fail("holes", fmt::format("expected a list of face indices, got {}", describe(value)));
+    for (size_t i = 0; i < value.size(); ++i) {
+      const std::string where = fmt::format("holes[{}]", i);
+      tags_.holes.push_back({vertex(value[i], where), where});
+    }
+  }
+
   FeatureTags tags_;
 };
 
@@ -196,10 +206,16 @@ void apply_feature_tags(const FeatureTags& tags, Level& level) {
     if (c.v >= level.vertex_count)
       throw Error(fmt::format("{}: {}: vertex {} does not exist; the mesh has {} vertices, numbered from 0",
                               tags.source, c.where, c.v, level.vertex_count));
+  for (const auto& h : tags.holes)
+    if (h.face >= level.face_count())
+      throw Error(fmt::format("{}: {}: face {} does not exist; the mesh has {} faces, numbered from 0", tags.source,
+                              h.where, h.face, level.face_count()));
   if (!tags.creases.empty() && level.edge_sharpness.empty()) level.edge_sharpness.assign(level.edge_count(), 0.f);
   for (size_t i = 0; i < tags.creases.size(); ++i) level.edge_sharpness[edges[i]] = tags.creases[i].sharpness;
   if (!tags.corners.empty() && level.vertex_sharpness.empty()) level.vertex_sharpness.assign(level.vertex_count, 0.f);
   for (const auto& c : tags.corners) level.vertex_sharpness[c.v] = c.sharpness;
+  if (!tags.holes.empty() && level.face_hole.empty()) level.face_hole.assign(level.face_count(), 0);
+  for (const auto& h : tags.holes) level.face_hole[h.face] = 1;
 }
 
 }  // namespace subdiv

@@ -12,12 +12,15 @@
 //     "corners": [
 //       {"vertex": 3, "sharpness": 10},
 //       {"vertices": [11, 12], "sharpness": 0.5}
-//     ]
+//     ],
+//     "holes": [3, 7]
 //   }
 //
 // - "edge" names one edge by its two end points; "path" names the edges between
 //   consecutive vertices of a walk along the mesh (repeat the first vertex to close a loop).
 // - "vertex" tags one vertex, "vertices" several.
+// - "holes" lists faces (0-based) that are refined and shape their neighbours but are left
+//   out of the surface, as OpenSubdiv's hole tag.
 // - "sharpness" is a number >= 0 (0 smooth, 10 or more infinitely sharp) or the string
 //   "infinite"; it may be left out and then means infinitely sharp.
 // - Both lists are optional; "description" and "$schema" are allowed for humans and editors.
@@ -46,6 +49,11 @@ struct FeatureTags {
   std::string source;  // the file, for messages
   std::vector<Crease> creases;
   std::vector<Corner> corners;
+  struct Hole {
+    Index face;
+    std::string where;
+  };
+  std::vector<Hole> holes;
 };
 
 // Reads and checks a feature file. Throws subdiv::Error naming the file: "FILE:LINE:COL:

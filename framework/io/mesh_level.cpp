@@ -48,6 +48,18 @@ void apply_corners(const MeshData& mesh, Level& level, const std::string& source
   }
 }
 
+void apply_holes(const MeshData& mesh, Level& level, const std::string& source) {
+  if (mesh.holes.empty()) return;
+  level.face_hole.assign(level.face_count(), 0);
+  for (size_t i = 0; i < mesh.holes.size(); ++i) {
+    const Index f = mesh.holes[i];
+    if (f < 0 || f >= level.face_count())
+      throw Error(fmt::format("{}: hole {} names face {}, but the mesh has {} faces (holes number faces from 0)",
+                              source, i, f, level.face_count()));
+    level.face_hole[f] = 1;
+  }
+}
+
 }  // namespace
 
 Level level_from_mesh(const MeshData& mesh, const std::string& source) {
@@ -60,14 +72,25 @@ Level level_from_mesh(const MeshData& mesh, const std::string& source) {
   }
   apply_creases(mesh, level, source);
   apply_corners(mesh, level, source);
+  apply_holes(mesh, level, source);
   return level;
 }
 
 MeshData mesh_from_level(const Level& level, std::vector<double> positions) {
   MeshData mesh;
   mesh.positions = std::move(positions);
-  mesh.face_offsets = level.face_offsets;
-  mesh.face_vertices = level.face_vertices;
+  if (level.face_hole.empty()) {
+    mesh.face_offsets = level.face_offsets;
+    mesh.face_vertices = level.face_vertices;
+  } else {
+    // Holes are not part of the surface (OpenSubdiv's hole tag): left out.
+    for (Index f = 0; f < level.face_count(); ++f) {
+      if (level.is_hole(f)) continue;
+      const auto corners = level.face(f);
+      mesh.face_vertices.insert(mesh.face_vertices.end(), corners.begin(), corners.end());
+      mesh.face_offsets.push_back(Index(mesh.face_vertices.size()));
+    }
+  }
   for (Index e = 0; e < Index(level.edge_sharpness.size()); ++e)
     if (level.edge_sharpness[e] > 0.f && !level.edge_on_boundary(e))  // boundaries are sharp anyway
       mesh.creases.push_back({level.edge_vertices[2 * e], level.edge_vertices[2 * e + 1], level.edge_sharpness[e]});

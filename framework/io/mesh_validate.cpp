@@ -75,6 +75,10 @@ void check_tags(const MeshData& mesh, std::string_view context) {
                                 tag, n));
     check_sharpness(c.sharpness, context, tag);
   }
+  for (Index f : mesh.holes)
+    if (f < 0 || f >= mesh.face_count())
+      fail(context, fmt::format("hole {} names a face that does not exist (the mesh has {} faces, numbered from 0)",
+                                f, mesh.face_count()));
 }
 
 }  // namespace

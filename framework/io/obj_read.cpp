@@ -4,10 +4,14 @@
 // topology and name the offending element.
 //
 // Read: v, f, l (any of the v, v/vt, v//vn, v/vt/vn forms; negative indices count back from
-// the last vertex), t crease / t corner (vertex indices from 0, as OpenSubdiv writes them).
+// the last vertex), and every tag of OpenSubdiv's OBJ files (regression/common/
+// shape_utils.cpp, far/vtr tests' GetSdcOptions): t crease / t corner (vertex indices from
+// 0), t hole (face indices from 0), and the options t interpolateboundary,
+// t creasemethod, t smoothtriangles, t facevaryinginterpolateboundary and
+// t facevaryingpropagatecorners, kept in MeshData::options. Hierarchical edits (t vertexedit,
+// edgeedit, faceedit; gone from OpenSubdiv 3) are refused.
 // Ignored: vt, vn, groups, materials, smoothing groups and other statements that do not
-// change the surface; t interpolateboundary and the face-varying options (the engine's
-// boundary rules come from the scheme).
+// change the surface.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -31,6 +35,7 @@ struct Tag {
   std::string_view name;
   std::vector<long long> ints;
   std::vector<double> floats;
+  std::vector<std::string_view> strings;
 };
 
 class ObjReader {
@@ -46,6 +51,9 @@ private:
   void tag(Tokens& tokens);
   void crease_tag(const Tag& tag);
   void corner_tag(const Tag& tag);
+  void hole_tag(const Tag& tag);
+  void option_tag(const Tag& tag);
+  void check_holes() const;
   Tag parse_tag(Tokens& tokens);
   Index vertex_reference(std::string_view token);
   double sharpness(double s, std::string_view tag);
@@ -64,7 +72,7 @@ private:
     long long index;
   };
   std::vector<Reference> forward_references_;
-  std::vector<std::size_t> crease_lines_, corner_lines_;  // for messages about tags
+  std::vector<std::size_t> crease_lines_, corner_lines_, hole_lines_;  // for messages about tags
 };
 
 MeshData ObjReader::read() {
@@ -95,6 +103,7 @@ MeshData ObjReader::read() {
   check_forward_references();
   check_tag_vertices();
   check_creases_are_edges();
+  check_holes();
   return std::move(mesh_);
 }
 
@@ -208,7 +217,7 @@ Tag ObjReader::parse_tag(Tokens& tokens) {
     token = {};
   }
   long long strings = 0;
-  while (tokens.next(token)) ++strings;
+  while (tokens.next(token)) ++strings, tag.strings.push_back(token);
   if (strings != n[2])
     fail(fmt::format("tag '{}' announces {} strings ({}) after its numbers but has {}",
                      tag.name, n[2], counts, strings));
@@ -219,12 +228,59 @@ void ObjReader::tag(Tokens& tokens) {
   const Tag tag = parse_tag(tokens);
   if (tag.name == "crease") return crease_tag(tag);
   if (tag.name == "corner") return corner_tag(tag);
-  if (tag.name == "interpolateboundary" || tag.name == "facevaryinginterpolateboundary" ||
-      tag.name == "facevaryingpropagatecorners")
-    return;  // options of a scheme, not of the surface: the scheme file decides them
-  fail(fmt::format("tag '{}' is not supported; supported tags are crease and corner "
-                   "(interpolateboundary is accepted and ignored); remove the line",
-                   tag.name));
+  if (tag.name == "hole") return hole_tag(tag);
+  if (tag.name == "vertexedit" || tag.name == "edgeedit" || tag.name == "faceedit")
+    fail(fmt::format("tag '{}' is a hierarchical edit, which OpenSubdiv 3 no longer supports and SubdivKit "
+                     "does not either; remove the line (or apply the edit to the mesh itself)",
+                     tag.name));
+  option_tag(tag);
+}
+
+// "t hole 1/0/0 f ...": faces numbered from 0, as OpenSubdiv's shape_utils reads them.
+void ObjReader::hole_tag(const Tag& tag) {
+  if (tag.ints.empty()) fail("a hole tag needs at least one face: 't hole 1/0/0 face' (faces numbered from 0)");
+  for (long long f : tag.ints) {
+    mesh_.holes.push_back(Index(std::clamp<long long>(f, -1, std::numeric_limits<Index>::max())));
+    hole_lines_.push_back(line_);
+  }
+}
+
+// The option tags, with the values OpenSubdiv's shape_utils accepts.
+void ObjReader::option_tag(const Tag& tag) {
+  auto one_int = [&](long long lo, long long hi, const char* meaning) {
+    if (tag.ints.size() != 1 || tag.ints[0] < lo || tag.ints[0] > hi)
+      fail(fmt::format("tag '{}' takes one integer from {} to {} ({}), e.g. 't {} 1/0/0 {}'", tag.name, lo, hi,
+                       meaning, tag.name, lo));
+    return int(tag.ints[0]);
+  };
+  auto one_string = [&](std::initializer_list<std::string_view> allowed) -> std::string {
+    std::string names;
+    for (auto a : allowed) names += (names.empty() ? "" : " or ") + std::string(a);
+    if (tag.strings.size() == 1)
+      for (auto a : allowed)
+        if (tag.strings[0] == a) return std::string(a);
+    fail(fmt::format("tag '{}' takes one string, {}, e.g. 't {} 0/0/1 {}'", tag.name, names, tag.name,
+                     *allowed.begin()));
+  };
+  MeshOptions& o = mesh_.options;
+  if (tag.name == "interpolateboundary") {
+    o.interpolate_boundary = one_int(0, 2, "0 none, 1 edges and corners, 2 edges only");
+  } else if (tag.name == "facevaryinginterpolateboundary") {
+    o.fvar_interpolate_boundary = one_int(0, 5, "OpenSubdiv's face-varying linear interpolation, 0 none to 5 all");
+  } else if (tag.name == "facevaryingpropagatecorners") {
+    o.fvar_propagate_corners = one_int(0, 1, "0 or 1");
+  } else if (tag.name == "creasemethod") {
+    o.crease_method = one_string({"normal", "chaikin"});
+  } else if (tag.name == "smoothtriangles") {
+    // OpenSubdiv 3 writes a string; Hbr-era files an integer (1: smooth).
+    if (tag.strings.empty() && tag.ints.size() == 1) o.smooth_triangles = tag.ints[0] ? "smooth" : "catmark";
+    else o.smooth_triangles = one_string({"smooth", "catmark"});
+  } else {
+    fail(fmt::format("tag '{}' is not one of OpenSubdiv's tags (crease, corner, hole, interpolateboundary, "
+                     "creasemethod, smoothtriangles, facevaryinginterpolateboundary, facevaryingpropagatecorners); "
+                     "remove the line",
+                     tag.name));
+  }
 }
 
 double ObjReader::sharpness(double s, std::string_view tag) {
@@ -298,6 +354,15 @@ void ObjReader::check_tag_vertices() const {
   }
   for (std::size_t i = 0; i < mesh_.corners.size(); ++i)
     check(mesh_.corners[i].v, corner_lines_[i], "corner");
+}
+
+void ObjReader::check_holes() const {
+  for (std::size_t i = 0; i < mesh_.holes.size(); ++i)
+    if (mesh_.holes[i] < 0 || mesh_.holes[i] >= mesh_.face_count())
+      fail_at(file_, hole_lines_[i],
+              fmt::format("hole tag names face {}, which does not exist: the file has {} faces and tags number "
+                          "them from 0 (0 to {})",
+                          mesh_.holes[i], mesh_.face_count(), mesh_.face_count() - 1));
 }
 
 // A crease on a pair of vertices that no face or polyline joins would be silently

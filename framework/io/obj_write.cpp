@@ -31,6 +31,15 @@ void write_obj(const path& file, const path& shown, const MeshData& mesh) {
   for (const CreaseTag& c : mesh.creases)
     out.print("t crease 2/1/0 {} {} {}\n", c.v0, c.v1, c.sharpness);
   for (const CornerTag& c : mesh.corners) out.print("t corner 1/1/0 {} {}\n", c.v, c.sharpness);
+  for (Index f : mesh.holes) out.print("t hole 1/0/0 {}\n", f);
+  // The options, as OpenSubdiv's shape_utils reads them, so a round trip keeps them.
+  const MeshOptions& o = mesh.options;
+  if (o.interpolate_boundary) out.print("t interpolateboundary 1/0/0 {}\n", *o.interpolate_boundary);
+  if (o.crease_method) out.print("t creasemethod 0/0/1 {}\n", *o.crease_method);
+  if (o.smooth_triangles) out.print("t smoothtriangles 0/0/1 {}\n", *o.smooth_triangles);
+  if (o.fvar_interpolate_boundary)
+    out.print("t facevaryinginterpolateboundary 1/0/0 {}\n", *o.fvar_interpolate_boundary);
+  if (o.fvar_propagate_corners) out.print("t facevaryingpropagatecorners 1/0/0 {}\n", *o.fvar_propagate_corners);
   out.close();
 }
 

@@ -19,8 +19,10 @@ void propagate_tags(const Level& parent, SplitResult& result, CreaseMethod metho
     if (parent.edge_sharpness[e] <= 0.f || parent.edge_on_boundary(e)) continue;
     for (int end = 0; end < 2; ++end) {
       const Index v = parent.edge_vertices[2 * e + end];
-      const Index half = find_edge(child, v, V + e);
-      child.edge_sharpness[half] = child_edge_sharpness(parent, e, v, method);
+      // Every child edge joining v to e's new point: one, or both halves of an edge from a
+      // vertex to itself.
+      for (Index half : child.ring_edges(v))
+        if (child.other_end(half, v) == V + e) child.edge_sharpness[half] = child_edge_sharpness(parent, e, v, method);
     }
   }
 }

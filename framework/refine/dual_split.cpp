@@ -2,6 +2,13 @@
 // faces are F-faces (one per old face), E-faces (one per interior edge) and V-faces (one
 // per vertex whose faces close around it, or per boundary vertex with three or more
 // faces). Mid-edge (Peters-Reif 1997): a new point per edge; F-faces and V-faces.
+//
+// Non-manifold levels (topology/level.h): a dual face needs a CCW cycle around its edge or
+// vertex, which a non-manifold edge or vertex does not have, so neither split makes one
+// there; the result is a valid mesh with a gap at each such element, and the split says so
+// in its warning.
+#include <fmt/format.h>
+
 #include "framework/refine/child_tags.h"
 #include "framework/refine/splitter.h"
 
@@ -46,14 +53,23 @@ SplitResult split_dual(const Level& L) {
     faces.add_range(own.begin(), own.end(), f);
   }
   // E-faces: f0 lies left of a->b, so (f1@a, f1@b, f0@b, f0@a) runs CCW.
+  Index skipped_edges = 0, skipped_vertices = 0;
   for (Index e = 0; e < L.edge_count(); ++e) {
     if (L.edge_on_boundary(e)) continue;
+    if (L.non_manifold_edge(e)) {
+      ++skipped_edges;
+      continue;
+    }
     const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
     const Index f0 = L.edge_faces[2 * e], f1 = L.edge_faces[2 * e + 1];
     faces.add({corner_of(L, f1, a), corner_of(L, f1, b), corner_of(L, f0, b), corner_of(L, f0, a)}, kNone);
   }
   // V-faces: the corners around each vertex, in its CCW ring order.
   for (Index v = 0; v < L.vertex_count; ++v) {
+    if (L.non_manifold_vertex(v)) {
+      ++skipped_vertices;
+      continue;
+    }
     const Index first = L.vertex_face_offsets[v];
     add_vertex_face(faces, [&](int i) { return L.face_offsets[L.vertex_faces[first + i]] + L.vertex_face_corner[first + i]; },
                     L.incident_face_count(v));
@@ -67,6 +83,10 @@ SplitResult split_dual(const Level& L) {
     for (int i = 0; i < L.face_size(f); ++i) o.parent[L.face_offsets[f] + i] = f, o.local[L.face_offsets[f] + i] = std::uint8_t(i);
   o.parent_face = faces.parent_face;
   SplitResult result{build_level(n, faces.offsets, faces.corners), std::move(o), true};
+  if (skipped_edges || skipped_vertices)
+    result.warning = fmt::format("the dual split made no face for {} non-manifold edge(s) and {} non-manifold "
+                                 "vertex/vertices (they have no cycle of faces around them); the surface has a gap there",
+                                 skipped_edges, skipped_vertices);
 
   // A sharp edge's E-face keeps the sharpness on its two long sides (the F-face edges
   // along the old edge), so the crease stays a crease in the dual mesh.
@@ -77,8 +97,10 @@ SplitResult split_dual(const Level& L) {
       if (L.edge_sharpness[e] <= 0.f || L.edge_on_boundary(e)) continue;
       const float s = decremented_sharpness(L.edge_sharpness[e]);
       const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
-      for (Index f : {L.edge_faces[2 * e], L.edge_faces[2 * e + 1]})
-        child.edge_sharpness[find_edge(child, corner_of(L, f, a), corner_of(L, f, b))] = s;
+      for (Index f : {L.edge_faces[2 * e], L.edge_faces[2 * e + 1]}) {
+        const Index half = find_edge(child, corner_of(L, f, a), corner_of(L, f, b));
+        if (half != kNone) child.edge_sharpness[half] = s;
+      }
     }
   }
   return result;
@@ -90,7 +112,12 @@ SplitResult split_mid_edge(const Level& L) {
     const auto edges = L.face_edge_list(f);
     faces.add_range(edges.begin(), edges.end(), f);
   }
+  Index skipped = 0;
   for (Index v = 0; v < L.vertex_count; ++v) {
+    if (L.non_manifold_vertex(v)) {
+      ++skipped;
+      continue;
+    }
     const auto ring = L.ring_edges(v);
     add_vertex_face(faces, [&](int i) { return ring[i]; }, int(ring.size()));
   }
@@ -101,7 +128,12 @@ SplitResult split_mid_edge(const Level& L) {
   o.local.assign(n, 0);
   for (Index e = 0; e < n; ++e) o.parent[e] = e;
   o.parent_face = faces.parent_face;
-  return {build_level(n, faces.offsets, faces.corners), std::move(o), true};
+  SplitResult result{build_level(n, faces.offsets, faces.corners), std::move(o), true};
+  if (skipped)
+    result.warning = fmt::format("the mid-edge split made no face for {} non-manifold vertex/vertices (they have no "
+                                 "cycle of edges around them); the surface has a gap there",
+                                 skipped);
+  return result;
 }
 
 }  // namespace subdiv

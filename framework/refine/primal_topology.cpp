@@ -8,6 +8,22 @@ namespace {
 
 // The child half of parent edge e that touches its end v.
 inline Index half_at(const Level& P, Index e, Index v) { return 2 * e + (P.edge_vertices[2 * e] == v ? 0 : 1); }
+// The same for an edge that enters v in a face. They differ only on an edge from a vertex to
+// itself (a face that repeats a vertex): the face leaves along its first half and comes back
+// along its second, as in OpenSubdiv's Vtr::QuadRefinement.
+inline Index half_in(const Level& P, Index e, Index v) { return 2 * e + (P.edge_vertices[2 * e + 1] == v ? 1 : 0); }
+
+// The child of a non-manifold level. OpenSubdiv's Vtr::Refinement passes the marks down
+// (the halves of a non-manifold edge, the child of a non-manifold vertex and the new point
+// of a non-manifold edge are non-manifold); the general builder does the rest.
+void complete_non_manifold_child(const Level& P, Level& C) {
+  C.edge_non_manifold.assign(C.edge_count(), 0);
+  C.vertex_non_manifold.assign(C.vertex_count, 0);
+  for (Index e = 0; e < P.edge_count(); ++e)
+    if (P.non_manifold_edge(e)) C.edge_non_manifold[2 * e] = C.edge_non_manifold[2 * e + 1] = C.vertex_non_manifold[P.vertex_count + e] = 1;
+  for (Index v = 0; v < P.vertex_count; ++v) C.vertex_non_manifold[v] = P.non_manifold_vertex(v);
+  complete_general_level(C);
+}
 
 // Corner index (within face f) of vertex v.
 inline int local_corner(const Level& P, Index f, Index v) {
@@ -65,7 +81,7 @@ Level quad_split_topology(const Level& P) {
       Index* fv = &C.face_vertices[4 * size_t(c)];
       Index* fe = &C.face_edges[4 * size_t(c)];
       fv[0] = v, fv[1] = V + e, fv[2] = V + E + f, fv[3] = V + ep;
-      fe[0] = half_at(P, e, v), fe[1] = 2 * E + c, fe[2] = 2 * E + prev, fe[3] = half_at(P, ep, v);
+      fe[0] = half_at(P, e, v), fe[1] = 2 * E + c, fe[2] = 2 * E + prev, fe[3] = half_in(P, ep, v);
       C.face_offsets[c + 1] = 4 * (c + 1);
       // Inner edge of corner c: mid(e_i) -> face point; its reverse lies in the next corner's face.
       C.edge_vertices[2 * (2 * size_t(E) + c)] = V + e, C.edge_vertices[2 * (2 * size_t(E) + c) + 1] = V + E + f;
@@ -74,6 +90,10 @@ Level quad_split_topology(const Level& P) {
   });
   C.face_offsets[0] = 0;
   halves(P, C, V);
+  if (!P.manifold()) {
+    complete_non_manifold_child(P, C);
+    return C;
+  }
   // Halves' faces: 2e (a -> mid) runs forward in f0's face at a, backwards in f1's face at a.
   tbb::parallel_for(Index(0), E, [&](Index e) {
     const Index a = P.edge_vertices[2 * e], b = P.edge_vertices[2 * e + 1];
@@ -152,7 +172,7 @@ Level triangle_split_topology(const Level& P) {
       Index* fv = &C.face_vertices[3 * size_t(cf)];
       Index* fe = &C.face_edges[3 * size_t(cf)];
       fv[0] = v, fv[1] = V + e, fv[2] = V + ep;
-      fe[0] = half_at(P, e, v), fe[1] = inner, fe[2] = half_at(P, ep, v);
+      fe[0] = half_at(P, e, v), fe[1] = inner, fe[2] = half_in(P, ep, v);
       C.face_vertices[3 * size_t(4 * f + 3) + i] = V + e;
       C.face_edges[3 * size_t(4 * f + 3) + i] = 2 * E + 3 * f + (i + 1) % 3;
       C.edge_vertices[2 * size_t(inner)] = V + e, C.edge_vertices[2 * size_t(inner) + 1] = V + ep;
@@ -162,6 +182,10 @@ Level triangle_split_topology(const Level& P) {
   });
   C.face_offsets[0] = 0;
   halves(P, C, V);
+  if (!P.manifold()) {
+    complete_non_manifold_child(P, C);
+    return C;
+  }
   tbb::parallel_for(Index(0), E, [&](Index e) {
     const Index a = P.edge_vertices[2 * e], b = P.edge_vertices[2 * e + 1];
     const Index f0 = P.edge_faces[2 * e], f1 = P.edge_faces[2 * e + 1];

@@ -31,10 +31,12 @@ struct SplitterTable {
     SplitterInfo quad = builtin("quad", "primal 1-to-k split of any polygon: new face and edge points", split_quad,
                                 {O::Vertex, O::Edge, O::Face});
     quad.engine_propagates_tags = true;
+    quad.handles_non_manifold = true;
     SplitterInfo tri = builtin("triangle", "primal 1-to-4 split of triangles: new edge points", split_triangle,
                                {O::Vertex, O::Edge});
     tri.required_face_size = 3;
     tri.engine_propagates_tags = true;
+    tri.handles_non_manifold = true;
     SplitterInfo sqrt3;
     sqrt3.name = "sqrt3";
     sqrt3.description = "sqrt(3) split (Kobbelt 2000): face points, old edges flipped; boundaries trisected every second step";
@@ -47,10 +49,12 @@ struct SplitterTable {
     sqrt3.feature_period = 2;  // boundaries are trisected every second step
     SplitterInfo dual = builtin("dual", "dual split (Doo and Sabin 1978): one new point per face corner", split_dual, {O::Corner});
     dual.primal = false;
+    dual.handles_non_manifold = true;  // with a gap and a warning (dual_split.cpp)
     SplitterInfo mid = builtin("mid-edge", "mid-edge split (Peters and Reif 1997): one new point per edge", split_mid_edge, {O::Edge});
     mid.primal = false;
     mid.scale = std::sqrt(2.0);
     mid.period = 2;  // the split turns the mesh by 45 degrees
+    mid.handles_non_manifold = true;
     for (SplitterInfo* info : {&quad, &tri, &sqrt3, &dual, &mid}) builtins.push_back(std::move(*info));
   }
 

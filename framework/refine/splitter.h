@@ -20,6 +20,9 @@ struct SplitResult {
   // False when this step leaves boundaries and creases unrefined (odd sqrt3 steps):
   // their vertices then stay where they are.
   bool features_refined = true;
+  // What the split did differently from its usual result, for the user (one sentence), or
+  // empty: e.g. the faces a dual split leaves out around non-manifold edges and vertices.
+  std::string warning;
 };
 
 // Primal 1-to-k split of any polygon: a k-gon becomes k quads around a new face point.
@@ -72,6 +75,11 @@ struct SplitterInfo {
   // Steps between refinements of boundaries and creases: sqrt3 trisects them every second
   // step (2); SplitResult::features_refined says which steps do.
   int feature_period = 1;
+  // True when `split` accepts non-manifold levels (topology/level.h): the primal splits refine
+  // them as OpenSubdiv does; the dual ones leave a gap there and say so in
+  // SplitResult::warning. The engine refuses non-manifold meshes for the others (sqrt3,
+  // plugins that do not opt in), naming the splitter.
+  bool handles_non_manifold = false;
   std::string origin = "built-in";  // or the plugin that registered it
 };
 

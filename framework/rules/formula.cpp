@@ -14,7 +14,7 @@ namespace subdiv {
 namespace {
 
 constexpr const char* kFormulaHelp =
-    "Formulas may use n, k, j, l, the scheme's parameters, state and definitions, muParser "
+    "Formulas may use n, k, j, l (edge rules also n0, n1, k0, k1), the scheme's parameters, state and definitions, muParser "
     "functions such as cos, sqrt, min, max, the functions binom(a, b), floor, ceil, mod(a, b), "
     "and the constant pi";
 
@@ -40,7 +40,7 @@ double binomial_coefficient(double a, double b) {
 
 struct FormulaSet::Impl {
   // Variable storage must not move: muParser keeps pointers to it.
-  double n = 0, k = 0, j = 0, l = 0, n0 = 0, n1 = 0;
+  double n = 0, k = 0, j = 0, l = 0, n0 = 0, n1 = 0, k0 = 0, k1 = 0;
   std::map<std::string, double> parameters;
 
   // State variables: initial and next parsers, the storage formulas read, and the values
@@ -71,6 +71,8 @@ struct FormulaSet::Impl {
       parser->DefineVar("l", &l);
       parser->DefineVar("n0", &n0);
       parser->DefineVar("n1", &n1);
+      parser->DefineVar("k0", &k0);
+      parser->DefineVar("k1", &k1);
       parser->DefineConst("pi", 3.14159265358979323846);
       parser->DefineFun("binom", binom_fn);
       parser->DefineFun("floor", floor_fn);
@@ -83,11 +85,12 @@ struct FormulaSet::Impl {
       parser->SetExpr(expression);
       for (const auto& [name, ptr] : parser->GetUsedVar()) {
         uses.n |= name == "n", uses.k |= name == "k", uses.j |= name == "j", uses.l |= name == "l";
-        uses.n0 |= name == "n0", uses.n1 |= name == "n1";
+        uses.n0 |= name == "n0", uses.n1 |= name == "n1", uses.k0 |= name == "k0", uses.k1 |= name == "k1";
         for (size_t i = 0; i < visible_definitions; ++i) {
           if (definition_names[i] != name) continue;
           const FormulaUses& d = definition_uses[i];
           uses.n |= d.n, uses.k |= d.k, uses.j |= d.j, uses.l |= d.l, uses.n0 |= d.n0, uses.n1 |= d.n1;
+          uses.k0 |= d.k0, uses.k1 |= d.k1;
         }
       }
     } catch (const mu::Parser::exception_type& e) {
@@ -222,6 +225,7 @@ int FormulaSet::add(const std::string& expression, const std::string& where) {
 
 double FormulaSet::evaluate(int id, const FormulaInputs& in) {
   impl_->n = in.n, impl_->k = in.k, impl_->j = in.j, impl_->l = in.l, impl_->n0 = in.n0, impl_->n1 = in.n1;
+  impl_->k0 = in.k0, impl_->k1 = in.k1;
   try {
     impl_->evaluate_definitions();
     return impl_->formulas[id]->Eval();

@@ -1,7 +1,8 @@
 #pragma once
 // Weight formulas (muParser). A formula may use n (valence or face size), k (size of the
 // face the point belongs to), j (index of the point within its role), l (level), n0 and
-// n1 (valences of an edge's two ends, in edge rules), the
+// n1 (valences of an edge's two ends, in edge rules), k0 and k1 (sizes of an edge's two
+// faces, 0 where there is none, in edge rules: OpenSubdiv's smooth-triangle weights), the
 // scheme's numeric parameters, and the scheme's named definitions. Formulas are evaluated
 // only while weight tables are prepared, never per vertex; a FormulaSet is not thread-safe.
 #include <map>
@@ -12,12 +13,12 @@
 namespace subdiv {
 
 struct FormulaInputs {
-  double n = 0, k = 0, j = 0, l = 0, n0 = 0, n1 = 0;
+  double n = 0, k = 0, j = 0, l = 0, n0 = 0, n1 = 0, k0 = 0, k1 = 0;
 };
 
-// Which of n, k, j, l, n0, n1 a formula depends on (through definitions too).
+// Which of n, k, j, l, n0, n1, k0, k1 a formula depends on (through definitions too).
 struct FormulaUses {
-  bool n = false, k = false, j = false, l = false, n0 = false, n1 = false;
+  bool n = false, k = false, j = false, l = false, n0 = false, n1 = false, k0 = false, k1 = false;
 };
 
 // Besides muParser's built-in functions (sin, cos, sqrt, exp, abs, min, max, rint, ...)

@@ -11,15 +11,15 @@ namespace {
 // Sizes and strides of the dense table over the variables a formula uses.
 struct TableShape {
   size_t size = 1;
-  int count[5] = {1, 1, 1, 1, 1};  // n, k, j, n0, n1
-  size_t stride[5] = {0, 0, 0, 0, 0};
+  int count[7] = {1, 1, 1, 1, 1, 1, 1};  // n, k, j, n0, n1, k0, k1
+  size_t stride[7] = {0, 0, 0, 0, 0, 0, 0};
 };
 
 TableShape table_shape(const FormulaUses& uses, int max_n, int max_k, int max_j) {
   TableShape s;
-  const bool used[5] = {uses.n, uses.k, uses.j, uses.n0, uses.n1};
-  const int range[5] = {max_n + 1, max_k + 1, max_j + 1, max_n + 1, max_n + 1};
-  for (int v = 4; v >= 0; --v) {
+  const bool used[7] = {uses.n, uses.k, uses.j, uses.n0, uses.n1, uses.k0, uses.k1};
+  const int range[7] = {max_n + 1, max_k + 1, max_j + 1, max_n + 1, max_n + 1, max_k + 1, max_k + 1};
+  for (int v = 6; v >= 0; --v) {
     if (!used[v]) continue;
     s.count[v] = range[v];
     s.stride[v] = s.size;
@@ -40,6 +40,7 @@ CompiledTerm compile_term(const Term& term, FormulaSet& formulas, int max_n, int
   const TableShape shape = table_shape(formulas.uses(id), max_n, max_k, max_j);
   out.stride_n = shape.stride[0], out.stride_k = shape.stride[1], out.stride_j = shape.stride[2];
   out.stride_n0 = shape.stride[3], out.stride_n1 = shape.stride[4];
+  out.stride_k0 = shape.stride[5], out.stride_k1 = shape.stride[6];
   out.table.resize(shape.size);
   const int* c = shape.count;
   for (int n = 0; n < c[0]; ++n)
@@ -47,8 +48,12 @@ CompiledTerm compile_term(const Term& term, FormulaSet& formulas, int max_n, int
       for (int j = 0; j < c[2]; ++j)
         for (int n0 = 0; n0 < c[3]; ++n0)
           for (int n1 = 0; n1 < c[4]; ++n1)
-            out.table[out.stride_n * n + out.stride_k * k + out.stride_j * j + out.stride_n0 * n0 + out.stride_n1 * n1] =
-                formulas.evaluate(id, {double(n), double(k), double(j), double(level), double(n0), double(n1)});
+            for (int k0 = 0; k0 < c[5]; ++k0)
+              for (int k1 = 0; k1 < c[6]; ++k1)
+                out.table[out.stride_n * n + out.stride_k * k + out.stride_j * j + out.stride_n0 * n0 +
+                          out.stride_n1 * n1 + out.stride_k0 * k0 + out.stride_k1 * k1] =
+                    formulas.evaluate(id, {double(n), double(k), double(j), double(level), double(n0), double(n1),
+                                           double(k0), double(k1)});
   return out;
 }
 

@@ -19,14 +19,15 @@ struct CompiledTerm {
   std::string where;
   // Dense table; a variable the formula does not use has stride 0.
   std::vector<double> table;
-  size_t stride_n = 0, stride_k = 0, stride_j = 0, stride_n0 = 0, stride_n1 = 0;
+  size_t stride_n = 0, stride_k = 0, stride_j = 0, stride_n0 = 0, stride_n1 = 0, stride_k0 = 0, stride_k1 = 0;
   int max_j = 0;  // the largest point index j tabulated
   // Role::Curve: weights on feature-curve points at offsets curve_start, curve_start+1, ...
   int curve_start = 0;
   std::vector<double> curve_weights;
 
-  double weight(int n, int k, int j, int n0 = 0, int n1 = 0) const {
-    return table[n * stride_n + k * stride_k + j * stride_j + n0 * stride_n0 + n1 * stride_n1];
+  double weight(int n, int k, int j, int n0 = 0, int n1 = 0, int k0 = 0, int k1 = 0) const {
+    return table[n * stride_n + k * stride_k + j * stride_j + n0 * stride_n0 + n1 * stride_n1 + k0 * stride_k0 +
+                 k1 * stride_k1];
   }
 };
 
@@ -47,7 +48,7 @@ struct WeightTables {
   const CompiledRule& rule(Element e, Context c) const { return rules[int(e)][int(c)]; }
 };
 
-// What formulas may refer to besides n, k, j, l, n0, n1: numeric parameters and named
+// What formulas may refer to besides n, k, j, l, n0, n1, k0, k1: numeric parameters and named
 // definitions.
 struct FormulaScope {
   std::map<std::string, double> parameters;

@@ -53,7 +53,7 @@ struct Sizes {
 };
 
 double weight_at(const CompiledTerm& t, const Sizes& s, int j, Element e) {
-  if (e == Element::Edge) return t.weight(2, t.role == Role::Faces ? s.k : 3, j, s.n0, s.n1);
+  if (e == Element::Edge) return t.weight(2, t.role == Role::Faces ? s.k : 3, j, s.n0, s.n1, s.k, s.k);
   if (e == Element::Face || e == Element::Corner) return t.weight(s.k, s.k, j);
   return t.weight(s.n, s.k, j);
 }

@@ -39,6 +39,27 @@ struct Level {
   std::vector<std::uint8_t> vertex_face_corner;  // corner of v within vertex_faces[i]
   std::vector<std::uint8_t> vertex_on_boundary;
 
+  // Non-manifold topology, marked as OpenSubdiv's Vtr marks it (vtr/level.cpp,
+  // completeTopologyFromFaceVertices): an edge with more than two faces, with two faces
+  // that run it in the same direction (inconsistent orientation), used twice by one face or
+  // joining a vertex to itself; a vertex on such an edge, or whose faces form more than one
+  // fan. All empty on a manifold level (the fast path). On a non-manifold level:
+  // - edge_faces holds an edge's first two faces (slot 1 kNone if it has one), and
+  //   edge_face_offsets / edge_face_list (CSR) all of them;
+  // - a non-manifold vertex's ring_edges and ring_faces list its edges and faces in no
+  //   particular order (there is no CCW order), and vertex_on_boundary says whether one of
+  //   its edges has a single face.
+  // Manifold elements of a non-manifold level follow every convention above.
+  std::vector<std::uint8_t> edge_non_manifold;    // per edge, or empty
+  std::vector<std::uint8_t> vertex_non_manifold;  // per vertex, or empty
+  std::vector<Index> edge_face_offsets;           // CSR over edge_face_list, or empty
+  std::vector<Index> edge_face_list;
+
+  // Holes (OpenSubdiv's face tag `hole`, OBJ `t hole`): faces that are refined and shape
+  // their neighbours but are not part of the surface, so writers leave them out. Per face,
+  // or empty when there are none.
+  std::vector<std::uint8_t> face_hole;
+
   // Feature tags (DeRose et al. 1998 semantics): 0 smooth, >= 10 infinitely sharp.
   std::vector<float> edge_sharpness;    // empty means all smooth
   std::vector<float> vertex_sharpness;  // empty means all smooth
@@ -70,14 +91,39 @@ struct Level {
   }
   float edge_sharp(Index e) const { return edge_sharpness.empty() ? 0.f : edge_sharpness[e]; }
   float vertex_sharp(Index v) const { return vertex_sharpness.empty() ? 0.f : vertex_sharpness[v]; }
+  bool manifold() const { return edge_non_manifold.empty() && vertex_non_manifold.empty(); }
+  bool non_manifold_edge(Index e) const { return !edge_non_manifold.empty() && edge_non_manifold[e]; }
+  bool non_manifold_vertex(Index v) const { return !vertex_non_manifold.empty() && vertex_non_manifold[v]; }
+  // Number of faces of edge e (any number on a non-manifold level).
+  int edge_face_count(Index e) const {
+    if (!edge_face_offsets.empty()) return edge_face_offsets[e + 1] - edge_face_offsets[e];
+    return edge_faces[2 * e + 1] == kNone ? 1 : 2;
+  }
+  // All faces of edge e: a face that uses the edge twice appears twice.
+  std::span<const Index> faces_of_edge(Index e) const {
+    if (!edge_face_offsets.empty())
+      return {edge_face_list.data() + edge_face_offsets[e], size_t(edge_face_count(e))};
+    return {edge_faces.data() + 2 * e, size_t(edge_face_count(e))};
+  }
+  bool is_hole(Index f) const { return !face_hole.empty() && face_hole[f]; }
   bool all_faces_have_size(int k) const;
   int max_face_size() const;
 };
 
-// Builds edges, face-edges and CCW vertex rings from polygons. Throws subdiv::Error naming
-// the first non-manifold edge or vertex, a degenerate face, or an out-of-range index.
+// Builds edges, face-edges and CCW vertex rings from polygons. Manifold input takes the
+// fast path; non-manifold edges and vertices, inconsistently oriented neighbours and faces
+// that repeat a vertex are marked as OpenSubdiv marks them (see above). Throws
+// subdiv::Error for a face with fewer than 3 vertices or an out-of-range index.
 Level build_level(Index vertex_count, std::span<const Index> face_offsets,
                   std::span<const Index> face_vertices);
+
+// Completes a level whose faces and face-edges are known (face_offsets, face_vertices,
+// face_edges, edge_vertices): edge faces, non-manifold marks and vertex rings, for levels
+// that may be non-manifold. Marks given in edge_non_manifold / vertex_non_manifold (sized
+// or empty) are kept, as OpenSubdiv's refinement passes them from parent to child; more
+// are added where the topology shows them. If no element is non-manifold the result is an
+// ordinary manifold level (the marks and edge_face_offsets / edge_face_list left empty).
+void complete_general_level(Level& level);
 
 // Finds the edge joining a and b, or kNone.
 Index find_edge(const Level& level, Index a, Index b);

@@ -1,28 +1,20 @@
-// Builds a Level's edges and CCW vertex rings from polygons, refusing non-manifold input.
+// Builds a Level's edges and CCW vertex rings from polygons. Manifold input (the common
+// case) takes the fast path below; anything else is handed to the general builder
+// (level_general.cpp), which marks non-manifold elements as OpenSubdiv's Vtr does.
 #include <algorithm>
 #include <fmt/format.h>
 
 #include "framework/topology/level.h"
+#include "framework/topology/level_rings.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
 namespace {
 
-// Corner arrays the builder works with: for every corner, its face and the next corner.
-struct CornerIndex {
-  std::vector<Index> face;          // per corner
-  std::vector<Index> vertex_offsets;  // CSR: corners around each vertex (unordered)
-  std::vector<Index> vertex_corners;
-};
-
-Index next_corner(const Level& level, Index face, Index corner) {
-  return corner + 1 == level.face_offsets[face + 1] ? level.face_offsets[face] : corner + 1;
-}
-Index prev_corner(const Level& level, Index face, Index corner) {
-  return corner == level.face_offsets[face] ? level.face_offsets[face + 1] - 1 : corner - 1;
-}
-
-void check_faces(const Level& level) {
+// Range and size checks, and faces with fewer than 3 distinct vertices refused; returns
+// false if a face repeats a vertex (the general path's job).
+bool check_faces(const Level& level) {
+  bool simple = true;
   for (Index f = 0; f < level.face_count(); ++f) {
     auto verts = level.face(f);
     if (verts.size() < 3)
@@ -31,47 +23,39 @@ void check_faces(const Level& level) {
       if (verts[i] < 0 || verts[i] >= level.vertex_count)
         throw Error(fmt::format("face {} names vertex {}, but the mesh has {} vertices", f,
                                 verts[i], level.vertex_count));
-      for (size_t j = 0; j < i; ++j)
-        if (verts[i] == verts[j])
-          throw Error(fmt::format("face {} is degenerate: it uses vertex {} twice; remove or fix it", f,
-                                  verts[i]));
     }
+    int distinct = 0;
+    for (size_t i = 0; i < verts.size(); ++i) {
+      bool repeat = false;
+      for (size_t j = 0; j < i && !repeat; ++j) repeat = verts[i] == verts[j];
+      distinct += !repeat;
+    }
+    if (distinct < 3)
+      throw Error(fmt::format("face {} is degenerate: it has only {} distinct vertices, fewer than 3; remove it "
+                              "(`subdiv refine` drops such faces with a warning)",
+                              f, distinct));
+    simple = simple && distinct == int(verts.size());
   }
+  return simple;
 }
 
-CornerIndex index_corners(const Level& level) {
-  CornerIndex ci;
-  const Index corners = level.corner_count();
-  ci.face.resize(corners);
-  for (Index f = 0; f < level.face_count(); ++f)
-    std::fill(ci.face.begin() + level.face_offsets[f], ci.face.begin() + level.face_offsets[f + 1], f);
-  ci.vertex_offsets.assign(level.vertex_count + 1, 0);
-  for (Index v : level.face_vertices) ++ci.vertex_offsets[v + 1];
-  for (Index v = 0; v < level.vertex_count; ++v) ci.vertex_offsets[v + 1] += ci.vertex_offsets[v];
-  ci.vertex_corners.resize(corners);
-  std::vector<Index> fill(ci.vertex_offsets.begin(), ci.vertex_offsets.end() - 1);
-  for (Index c = 0; c < corners; ++c) ci.vertex_corners[fill[level.face_vertices[c]]++] = c;
-  return ci;
-}
+constexpr Index kConflict = -2;
 
-// Corner around `from` whose face runs from -> to, or kNone; throws if two faces do.
+// Corner around `from` whose face runs from -> to, or kNone; kConflict if a second corner
+// (other than `skip`) does too: the edge is non-manifold or its faces disagree in orientation.
 Index find_half_edge(const Level& level, const CornerIndex& ci, Index from, Index to, Index skip) {
   Index found = kNone;
   for (Index i = ci.vertex_offsets[from]; i < ci.vertex_offsets[from + 1]; ++i) {
     Index c = ci.vertex_corners[i];
     if (c == skip || level.face_vertices[next_corner(level, ci.face[c], c)] != to) continue;
-    if (found != kNone || skip != kNone)
-      throw Error(fmt::format(
-          "non-manifold edge ({}, {}): faces {} and {} both run it in the same direction "
-          "(the edge has more than two faces, or the faces are inconsistently oriented); "
-          "fix the mesh, for example by splitting the edge or reorienting faces",
-          from, to, ci.face[c], ci.face[skip != kNone ? skip : found]));
+    if (found != kNone || skip != kNone) return kConflict;
     found = c;
   }
   return found;
 }
 
-void build_edges(Level& level, const CornerIndex& ci) {
+// Manifold edges; false as soon as an edge is not (the general builder then starts over).
+bool build_manifold_edges(Level& level, const CornerIndex& ci) {
   const Index corners = level.corner_count();
   level.face_edges.assign(corners, kNone);
   level.edge_vertices.clear();
@@ -82,12 +66,12 @@ void build_edges(Level& level, const CornerIndex& ci) {
     const Index f = ci.face[c];
     const Index from = level.face_vertices[c];
     const Index to = level.face_vertices[next_corner(level, f, c)];
-    find_half_edge(level, ci, from, to, c);  // refuses a second face running from -> to
+    if (find_half_edge(level, ci, from, to, c) == kConflict) return false;
     const Index twin = find_half_edge(level, ci, to, from, kNone);
+    if (twin == kConflict) return false;
     if (twin != kNone && twin < c) {
       const Index e = level.face_edges[twin];
-      if (ci.face[twin] == f)
-        throw Error(fmt::format("face {} uses edge ({}, {}) twice; fix the face", f, from, to));
+      if (ci.face[twin] == f) return false;  // a face using an edge twice
       level.face_edges[c] = e;
       level.edge_faces[2 * e + 1] = f;
       continue;
@@ -97,61 +81,23 @@ void build_edges(Level& level, const CornerIndex& ci) {
     level.edge_vertices.insert(level.edge_vertices.end(), {from, to});
     level.edge_faces.insert(level.edge_faces.end(), {f, kNone});
   }
+  return true;
 }
 
-// The corner of vertex v in face f.
-Index corner_of(const Level& level, Index f, Index v) {
-  for (Index c = level.face_offsets[f]; c < level.face_offsets[f + 1]; ++c)
-    if (level.face_vertices[c] == v) return c;
-  return kNone;
-}
-
-Index other_face(const Level& level, Index e, Index f) {
-  return level.edge_faces[2 * e] == f ? level.edge_faces[2 * e + 1] : level.edge_faces[2 * e];
-}
-
-// Orders the corners around v CCW: the next face CCW lies across the edge entering v.
-void build_ring(Level& level, const CornerIndex& ci, Index v) {
-  const Index begin = ci.vertex_offsets[v], end = ci.vertex_offsets[v + 1];
-  const Index count = end - begin;
-  Index start = count ? ci.vertex_corners[begin] : kNone;
-  bool boundary = false;
-  for (Index i = begin; i < end; ++i) {
-    const Index c = ci.vertex_corners[i];
-    if (!level.edge_on_boundary(level.face_edges[c])) continue;
-    if (boundary)
-      throw Error(fmt::format(
-          "non-manifold vertex {}: its faces form more than one fan (two boundaries meet "
-          "there); split the vertex so each fan has its own",
-          v));
-    boundary = true;
-    start = c;
-  }
-  level.vertex_on_boundary[v] = boundary;
-  Index c = start;
-  for (Index visited = 0; visited < count; ++visited) {
-    const Index f = ci.face[c];
-    level.vertex_faces.push_back(f);
-    level.vertex_face_corner.push_back(std::uint8_t(c - level.face_offsets[f]));
-    level.vertex_edges.push_back(level.face_edges[c]);
-    const Index in_edge = level.face_edges[prev_corner(level, f, c)];
-    const Index g = other_face(level, in_edge, f);
-    if (g == kNone) {
-      level.vertex_edges.push_back(in_edge);
-      if (visited + 1 != count) break;
-    } else {
-      c = corner_of(level, g, v);
-      if (c == start && visited + 1 != count) break;
-    }
-  }
-  const Index placed = Index(level.vertex_faces.size()) - level.vertex_face_offsets[v];
-  if (placed != count)
-    throw Error(fmt::format(
-        "non-manifold vertex {}: its {} faces form more than one fan around it; split the "
-        "vertex so each fan has its own",
-        v, count));
-  level.vertex_face_offsets.push_back(Index(level.vertex_faces.size()));
-  level.vertex_ring_offsets.push_back(Index(level.vertex_edges.size()));
+// The fast path: false (level half built) if the mesh turns out not to be manifold.
+bool build_manifold_level(Level& level) {
+  const CornerIndex ci = index_corners(level);
+  if (!build_manifold_edges(level, ci)) return false;
+  const Index vertex_count = level.vertex_count;
+  level.vertex_on_boundary.assign(vertex_count, 0);
+  level.vertex_faces.reserve(level.corner_count());
+  level.vertex_face_corner.reserve(level.corner_count());
+  level.vertex_edges.reserve(level.corner_count() + vertex_count);
+  level.vertex_face_offsets.reserve(vertex_count + 1);
+  level.vertex_ring_offsets.reserve(vertex_count + 1);
+  for (Index v = 0; v < vertex_count; ++v)
+    if (!build_ordered_ring(level, ci, v)) return false;
+  return true;
 }
 
 }  // namespace
@@ -163,17 +109,15 @@ Level build_level(Index vertex_count, std::span<const Index> face_offsets,
   level.face_offsets.assign(face_offsets.begin(), face_offsets.end());
   level.face_vertices.assign(face_vertices.begin(), face_vertices.end());
   if (level.face_offsets.empty()) level.face_offsets.push_back(0);
-  check_faces(level);
-  const CornerIndex ci = index_corners(level);
-  build_edges(level, ci);
-  level.vertex_on_boundary.assign(vertex_count, 0);
-  level.vertex_faces.reserve(level.corner_count());
-  level.vertex_face_corner.reserve(level.corner_count());
-  level.vertex_edges.reserve(level.corner_count() + vertex_count);
-  level.vertex_face_offsets.reserve(vertex_count + 1);
-  level.vertex_ring_offsets.reserve(vertex_count + 1);
-  for (Index v = 0; v < vertex_count; ++v) build_ring(level, ci, v);
-  return level;
+  if (check_faces(level) && build_manifold_level(level)) return level;
+  // Not manifold: start again from the faces, identifying edges as OpenSubdiv does.
+  Level general;
+  general.vertex_count = vertex_count;
+  general.face_offsets = std::move(level.face_offsets);
+  general.face_vertices = std::move(level.face_vertices);
+  identify_edges_general(general);
+  complete_general_level(general);
+  return general;
 }
 
 Index find_edge(const Level& level, Index a, Index b) {

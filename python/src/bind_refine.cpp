@@ -84,7 +84,20 @@ std::vector<RefinedLevel> refine_surface(RefineInput& in, const SchemeChoice& c,
   std::vector<NamedValues> points = std::move(in.point_data), cells = std::move(in.cell_data);
   std::vector<RefinedLevel> out;
   auto keep = [&](int l) {
-    out.push_back({subdiv::mesh_from_level(h.levels[l], positions), points, cells});
+    // mesh_from_level leaves hole faces out (OpenSubdiv's holes, --boundary none); so do their cell values.
+    const subdiv::Level& L = h.levels[l];
+    std::vector<NamedValues> kept = cells;
+    if (!L.face_hole.empty())
+      for (auto& a : kept) {
+        size_t row = 0;
+        for (Index f = 0; f < L.face_count(); ++f) {
+          if (L.is_hole(f)) continue;
+          for (int k = 0; k < a.columns; ++k) a.values[row * a.columns + k] = a.values[size_t(f) * a.columns + k];
+          ++row;
+        }
+        a.values.resize(row * a.columns);
+      }
+    out.push_back({subdiv::mesh_from_level(L, positions), points, std::move(kept)});
   };
   if (all_levels || seq.total_levels == 0) keep(0);
   for (int l = 0; l < seq.total_levels; ++l) {

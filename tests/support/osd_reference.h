@@ -68,12 +68,14 @@ struct OsdMesh {
   std::vector<double> xyz;  // 3 per vertex
   std::vector<OsdCrease> creases;
   std::vector<OsdCorner> corners;
+  std::vector<int> holes;  // faces tagged as holes
 };
 
 struct OsdOptions {
   OsdScheme scheme = OsdScheme::CatmullClark;
   OsdBoundary boundary = OsdBoundary::EdgesAndCorners;  // SubdivKit's default
   OsdCreasing creasing = OsdCreasing::Uniform;
+  bool smooth_triangles = false;  // Sdc::Options::TRI_SUB_SMOOTH (Catmull-Clark only)
 };
 
 // Which parent component an OpenSubdiv child vertex came from.
@@ -84,6 +86,7 @@ struct OsdLevel {
   std::vector<int> face_offsets{0}, face_vertices;  // OpenSubdiv's numbering
   std::vector<int> edge_vertices;                   // 2 per edge
   std::vector<double> xyz;                          // 3 per vertex, OpenSubdiv's order
+  std::vector<char> face_hole;                      // per face: TopologyLevel::IsFaceHole
   // Empty at level 0; else per vertex: origin kind and parent index in the level before.
   std::vector<OsdOrigin> origin_kind;
   std::vector<int> origin_parent;
@@ -140,6 +143,28 @@ inline std::vector<int> match_faces(const subdiv::Level& ours, const OpenSubdiv:
   return fmap;
 }
 
+// OpenSubdiv's edge for our edge e. Where several edges join the same two vertices (non-
+// manifold input: a face that comes back to an edge, an edge from a vertex to itself and its
+// halves), the k-th of ours, by index, is paired with the k-th of OpenSubdiv's.
+inline int matching_edge(const subdiv::Level& ours, const OpenSubdiv::Far::TopologyLevel& osd,
+                         const std::vector<int>& vmap, subdiv::Index e) {
+  const subdiv::Index a = ours.edge_vertices[2 * e], b = ours.edge_vertices[2 * e + 1];
+  auto joins = [](int x0, int x1, int a0, int b0) { return (x0 == a0 && x1 == b0) || (x0 == b0 && x1 == a0); };
+  std::vector<int> candidates;
+  const auto edges = osd.GetVertexEdges(vmap[size_t(a)]);
+  for (int i = 0; i < edges.size(); ++i) {
+    const auto ev = osd.GetEdgeVertices(edges[i]);
+    if (joins(ev[0], ev[1], vmap[size_t(a)], vmap[size_t(b)])) candidates.push_back(edges[i]);
+  }
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  if (candidates.size() < 2) return candidates.empty() ? OpenSubdiv::Far::INDEX_INVALID : candidates.front();
+  int k = 0;  // only where edges repeat: how many of ours join a and b before e
+  for (subdiv::Index other = 0; other < e; ++other)
+    if (joins(ours.edge_vertices[2 * other], ours.edge_vertices[2 * other + 1], a, b)) ++k;
+  return k < int(candidates.size()) ? candidates[size_t(k)] : OpenSubdiv::Far::INDEX_INVALID;
+}
+
 }  // namespace detail
 
 // Uniform refinement of `mesh` to `levels` levels with OpenSubdiv's Far (full topology at
@@ -177,6 +202,8 @@ inline OsdRefinement osd_refine(const OsdMesh& mesh, const OsdOptions& options, 
   desc.numCorners = int(corner_weights.size());
   desc.cornerVertexIndices = corner_vertices.data();
   desc.cornerWeights = corner_weights.data();
+  desc.numHoles = int(mesh.holes.size());
+  desc.holeIndices = mesh.holes.data();
 
   Sdc::Options sdc;
   sdc.SetVtxBoundaryInterpolation(options.boundary == OsdBoundary::None        ? Sdc::Options::VTX_BOUNDARY_NONE
@@ -184,6 +211,7 @@ inline OsdRefinement osd_refine(const OsdMesh& mesh, const OsdOptions& options, 
                                                                                : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
   sdc.SetCreasingMethod(options.creasing == OsdCreasing::Chaikin ? Sdc::Options::CREASE_CHAIKIN
                                                                   : Sdc::Options::CREASE_UNIFORM);
+  if (options.smooth_triangles) sdc.SetTriangleSubdivision(Sdc::Options::TRI_SUB_SMOOTH);
   const Sdc::SchemeType type = options.scheme == OsdScheme::Loop       ? Sdc::SCHEME_LOOP
                                : options.scheme == OsdScheme::Bilinear ? Sdc::SCHEME_BILINEAR
                                                                        : Sdc::SCHEME_CATMARK;
@@ -205,6 +233,7 @@ inline OsdRefinement osd_refine(const OsdMesh& mesh, const OsdOptions& options, 
     OsdLevel& out = result.levels[size_t(l)];
     out.vertex_count = tl.GetNumVertices();
     for (int f = 0; f < tl.GetNumFaces(); ++f) {
+      out.face_hole.push_back(char(tl.IsFaceHole(f)));
       auto fv = tl.GetFaceVertices(f);
       for (int i = 0; i < fv.size(); ++i) out.face_vertices.push_back(fv[i]);
       out.face_offsets.push_back(int(out.face_vertices.size()));
@@ -277,7 +306,7 @@ inline std::vector<int> our_to_osd_vertices(const OsdRefinement& osd, const subd
       switch (origins.kind[size_t(c)]) {
         case subdiv::OriginKind::Vertex: next[c] = vmap[p]; break;
         case subdiv::OriginKind::Edge: {
-          const int e = op.FindEdge(vmap[parent.edge_vertices[2 * p]], vmap[parent.edge_vertices[2 * p + 1]]);
+          const int e = detail::matching_edge(parent, op, vmap, p);
           if (e == INDEX_INVALID)
             throw std::runtime_error("our_to_osd_vertices: our edge " + std::to_string(p) + " has no OpenSubdiv edge" + at);
           next[c] = V + F + e;

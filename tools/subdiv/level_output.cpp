@@ -41,8 +41,20 @@ OutputLevel describe_level(const Hierarchy& h, int l, const MeshData& mesh, cons
     }
   }
   base_face = std::move(next_base);
+  DataArray base{"base_face", 1, base_face, true};
+  if (!L.face_hole.empty()) {
+    // The mesh leaves hole faces out (mesh_from_level); so do its cell arrays.
+    auto drop_holes = [&](std::vector<double>& values) {
+      size_t kept = 0;
+      for (Index f = 0; f < L.face_count(); ++f)
+        if (!L.is_hole(f)) values[kept++] = values[f];
+      values.resize(kept);
+    };
+    drop_holes(parent.values);
+    drop_holes(base.values);
+  }
   out.point_data = {std::move(origin), std::move(valence), std::move(level), std::move(vertex_class)};
-  out.cell_data = {std::move(parent), DataArray{"base_face", 1, base_face, true}};
+  out.cell_data = {std::move(parent), std::move(base)};
   return out;
 }
 
@@ -57,7 +69,7 @@ void check_output_path(const std::filesystem::path& out) {
 
 void write_levels(const std::filesystem::path& out, const Hierarchy& h,
                   const std::vector<std::vector<double>>& positions, const FeatureOptions& features,
-                  const std::vector<DataArray>& finest_point_data) {
+                  const std::vector<DataArray>& finest_point_data, const MeshOptions& obj_tags) {
   check_output_path(out);
   const std::string ext = lowercase_extension(out);
   const int finest = int(h.levels.size()) - 1;
@@ -65,6 +77,7 @@ void write_levels(const std::filesystem::path& out, const Hierarchy& h,
   meshes.reserve(h.levels.size());
   for (int l = 0; l <= finest; ++l) meshes.push_back(mesh_from_level(h.levels[l], positions[l]));
   if (ext != ".vtp" && ext != ".pvd") {
+    meshes[finest].options = obj_tags;
     write_mesh(out, meshes[finest]);
     return;
   }

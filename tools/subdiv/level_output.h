@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "framework/io/mesh_data.h"
 #include "framework/io/vtk/vtk_output.h"
 #include "framework/engine/refiner.h"
 
@@ -13,9 +14,11 @@ namespace subdiv::cli {
 // method) classifies each vertex for the per-point "vertex_class" array of .vtp/.pvd
 // output: 0 smooth, 1 dart, 2 crease, 3 corner, the rule the vertex takes at its level.
 // finest_point_data is added to the finest level's point data (e.g. limit normals).
+// obj_tags: the options written back as OpenSubdiv's tags into .obj output. Hole faces
+// (Level::face_hole) are left out of every output, as OpenSubdiv leaves them out.
 void write_levels(const std::filesystem::path& out, const Hierarchy& h,
                   const std::vector<std::vector<double>>& positions, const FeatureOptions& features,
-                  const std::vector<DataArray>& finest_point_data = {});
+                  const std::vector<DataArray>& finest_point_data = {}, const MeshOptions& obj_tags = {});
 
 // The output extensions write_levels accepts, for help texts and early checks.
 void check_output_path(const std::filesystem::path& out);

@@ -11,6 +11,7 @@
 #include "framework/io/feature_file.h"
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/io/formats.h"
+#include "framework/io/mesh_cleanup.h"
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
 #include "framework/engine/refiner.h"
@@ -38,6 +39,9 @@ struct RefineArgs {
   bool levels_given = false;  // -l on the command line (a sequence A:1,B:3 sets its own total otherwise)
   bool quiet = false;
   bool limit = false;
+  // Set when given on the command line, which then wins over the mesh file's option tags.
+  bool boundary_given = false, crease_method_given = false;
+  bool smooth_triangles = false;  // --smooth-triangles
 };
 
 RefineOptions refine_options(const RefineArgs& a) {
@@ -52,6 +56,58 @@ RefineOptions refine_options(const RefineArgs& a) {
 // Level-dependent state is computed level by level up to the start level: a bound keeps
 // that finite, and no refinement history is longer than this.
 constexpr int kMaxStartLevel = 100;
+
+// The mesh file's option tags (OBJ t interpolateboundary, t creasemethod), where the
+// command line does not say otherwise.
+RefineArgs with_mesh_options(RefineArgs a, const MeshOptions& tags) {
+  if (!a.boundary_given && tags.interpolate_boundary)
+    a.boundary = *tags.interpolate_boundary == 0 ? "none" : *tags.interpolate_boundary == 2 ? "edges" : "edges-and-corners";
+  if (!a.crease_method_given && tags.crease_method) a.crease_method = *tags.crease_method == "chaikin" ? "chaikin" : "uniform";
+  return a;
+}
+
+bool has_parameter(const SchemeSequence& seq, const std::string& name) {
+  for (const auto& scheme : seq.schemes)
+    for (const auto& p : scheme->parameters)
+      if (p.name == name) return true;
+  return false;
+}
+
+// OpenSubdiv's smooth triangles (TRI_SUB_SMOOTH) are the scheme parameter "triangles"
+// (schemes/catmull-clark.json): --smooth-triangles, or the mesh's t smoothtriangles tag,
+// set it unless --param does. "" when nothing changes.
+std::string triangles_choice(const RefineArgs& a, const MeshOptions& tags, const SchemeSequence& given) {
+  for (const auto& p : a.params)
+    if (p.rfind("triangles=", 0) == 0) return "";
+  if (a.smooth_triangles) {
+    if (!has_parameter(given, "triangles"))
+      throw Error(fmt::format("--smooth-triangles: scheme '{}' has no 'triangles' parameter; smooth triangles are a "
+                              "Catmull-Clark option (OpenSubdiv's TRI_SUB_SMOOTH), e.g. --scheme catmull-clark",
+                              a.scheme));
+    return "smooth";
+  }
+  // As OpenSubdiv, a tag for a scheme without the option is ignored.
+  return tags.smooth_triangles && has_parameter(given, "triangles") ? *tags.smooth_triangles : "";
+}
+
+ParameterOverrides with_triangles(const RefineArgs& a, const std::string& triangles) {
+  ParameterOverrides params = parse_params(a.params);
+  params["triangles"] = triangles;
+  return params;
+}
+
+// The options the refinement used, as tags for an OBJ output (a round trip keeps them).
+MeshOptions used_options(const RefineOptions& o, const MeshOptions& tags, const SchemeSequence& seq) {
+  MeshOptions used = tags;
+  for (const auto& scheme : seq.schemes)
+    for (const auto& p : scheme->parameters)
+      if (p.name == "triangles") used.smooth_triangles = p.choice;
+  used.interpolate_boundary = o.features.boundary == BoundaryInterpolation::None        ? 0
+                              : o.features.boundary == BoundaryInterpolation::EdgesOnly ? 2
+                                                                                          : 1;
+  used.crease_method = o.features.crease_method == CreaseMethod::Chaikin ? "chaikin" : "normal";
+  return used;
+}
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -68,12 +124,16 @@ void run(const RefineArgs& a) {
   std::unique_ptr<tbb::global_control> thread_limit;
   if (a.threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
-  const SchemeSequence seq = load_scheme_sequence(a.scheme, a.levels, parse_params(a.params));
-  if (a.levels_given && seq.total_levels != a.levels)
+  const SchemeSequence given = load_scheme_sequence(a.scheme, a.levels, parse_params(a.params));
+  if (a.levels_given && given.total_levels != a.levels)
     throw Error(fmt::format("--scheme '{}' runs {} level(s), but --levels asks for {}; make the counts add up to {}, "
                             "leave one scheme without :N to take the rest, or drop --levels",
-                            a.scheme, seq.total_levels, a.levels, a.levels));
-  const MeshData mesh = read_mesh(a.mesh);
+                            a.scheme, given.total_levels, a.levels, a.levels));
+  MeshCleanup cleanup;
+  const MeshData mesh = drop_unrefinable(read_mesh(a.mesh), cleanup);
+  for (const auto& w : cleanup.warnings(a.mesh)) fmt::print(stderr, "subdiv: warning: {}\n", w);
+  const std::string triangles = triangles_choice(a, mesh.options, given);
+  const SchemeSequence seq = triangles.empty() ? given : load_scheme_sequence(a.scheme, a.levels, with_triangles(a, triangles));
   if (mesh.face_count() == 0)
     throw Error(fmt::format("{}: the mesh has no faces to refine{}", a.mesh,
                             mesh.line_count() ? "; its polylines need a curve scheme (e.g. --scheme chaikin)" : ""));
@@ -90,10 +150,11 @@ void run(const RefineArgs& a) {
   }
   check_fits_in_memory(*seq.schemes.front(), base, seq.total_levels);
 
-  const RefineOptions options = refine_options(a);
+  const RefineOptions options = refine_options(with_mesh_options(a, mesh.options));
   Progress progress;
   progress.say(fmt::format("refining topology: {} levels of {}", seq.total_levels, a.scheme));
   Hierarchy h = refine_topology(seq.runs, std::move(base), options);
+  for (const auto& w : h.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
   std::vector<std::vector<double>> positions{mesh.positions};
   for (int l = 0; l < seq.total_levels; ++l) {
     progress.say(fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
@@ -122,7 +183,8 @@ void run(const RefineArgs& a) {
                  fmt::join(limit.approximate_reasons, "; "));
   }
   progress.say(fmt::format("writing {}", a.output));
-  write_levels(a.output, h, positions, options.features, limit_data);
+  write_levels(a.output, h, positions, options.features, limit_data,
+               used_options(options, mesh.options, seq));
   progress.done();
   if (!a.quiet) {
     for (const auto& note : notes) fmt::print("{}\n", note);
@@ -169,8 +231,13 @@ void add_refine_command(CLI::App& app) {
                 "'normal' (with --levels 0: the limit points of the input's own vertices)");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   cmd->footer("Example: subdiv refine examples/meshes/cube.obj --scheme catmull-clark --levels 3 -o cube.pvd");
-  cmd->callback([args, levels] {
+  cmd->add_flag("--smooth-triangles", args->smooth_triangles,
+                "Catmull-Clark: OpenSubdiv's smooth triangles (TRI_SUB_SMOOTH), the same as --param "
+                "triangles=smooth; a mesh's 't smoothtriangles' tag does the same unless --param says otherwise");
+  cmd->callback([args, cmd, levels] {
     args->levels_given = levels->count() > 0;
+    args->boundary_given = cmd->count("--boundary") > 0;
+    args->crease_method_given = cmd->count("--crease-method") > 0;
     run(*args);
   });
 }

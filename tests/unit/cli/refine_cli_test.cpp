@@ -83,7 +83,12 @@ TEST_CASE("bad input: clear message, non-zero exit, no output file") {
 
   std::ofstream(dir / "nonmanifold.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\n"
                                             "f 1 2 3\nf 2 1 4\nf 1 2 5\n";
-  check_refused("refine " + (dir / "nonmanifold.obj").string(), out, "non-manifold edge");
+  // Primal schemes refine it as OpenSubdiv does, dual ones with a gap; sqrt3 needs a manifold mesh.
+  check_refused("refine " + (dir / "nonmanifold.obj").string() + " --scheme sqrt3", out, "needs a manifold mesh");
+  std::ofstream(dir / "onevertex.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1\n";
+  check_refused("refine " + (dir / "onevertex.obj").string(), out, "a face needs at least 3 vertices");
+  std::ofstream(dir / "range.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n";
+  check_refused("refine " + (dir / "range.obj").string(), out, "vertex 9");
 
   std::ofstream(dir / "broken.json") << "{ \"name\": \"b\", \"split\": \"quad\" \"rules\": {} }";
   check_refused("refine " + source_path("examples/meshes/cube.obj") + " --scheme " + (dir / "broken.json").string(),

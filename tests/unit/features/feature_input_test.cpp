@@ -160,3 +160,15 @@ TEST_CASE("dihedral angles: a flat grid has none, a folded one has exactly the f
   CHECK(contains(error_of([&] { edges_sharper_than(L, g.positions, 181); }), "between 0 and 180"));
   CHECK(contains(error_of([&] { edges_sharper_than(L, g.positions, NAN); }), "between 0 and 180"));
 }
+
+TEST_CASE("feature file: holes name faces, 0-based; a face that does not exist is refused") {
+  Level cube = test::cube().level();
+  apply_feature_tags(parse_feature_json(R"({"holes": [2, 5]})", "f"), cube);
+  REQUIRE(cube.face_hole.size() == size_t(cube.face_count()));
+  for (Index f = 0; f < cube.face_count(); ++f) CHECK(cube.is_hole(f) == (f == 2 || f == 5));
+  Level other = test::cube().level();
+  CHECK_THROWS_WITH_AS(apply_feature_tags(parse_feature_json(R"({"holes": [6]})", "f.json"), other),
+                       doctest::Contains("f.json: holes[0]: face 6 does not exist"), Error);
+  CHECK(other.face_hole.empty());  // refused before anything changed
+  CHECK_THROWS_WITH_AS(parse_feature_json(R"({"holes": [-1]})", "f.json"), doctest::Contains("holes[0]"), Error);
+}

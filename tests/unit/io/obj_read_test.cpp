@@ -184,9 +184,13 @@ TEST_CASE("obj: errors name the file, the line and the problem") {
     CHECK(contains(e, "bad.obj:5:"));
     CHECK(contains(e, "missing"));
   }
-  SUBCASE("an unsupported tag") {
-    const std::string e = obj_error(dir, t + "f 1 2 3\nt hole 1/0/0 0\n");
-    CHECK(contains(e, "bad.obj:5: tag 'hole' is not supported"));
+  SUBCASE("a hierarchical edit (gone from OpenSubdiv 3)") {
+    const std::string e = obj_error(dir, t + "f 1 2 3\nt vertexedit 1/0/0 0\n");
+    CHECK(contains(e, "bad.obj:5: tag 'vertexedit' is a hierarchical edit"));
+  }
+  SUBCASE("a tag OpenSubdiv does not know") {
+    const std::string e = obj_error(dir, t + "f 1 2 3\nt sparkle 1/0/0 0\n");
+    CHECK(contains(e, "bad.obj:5: tag 'sparkle' is not one of OpenSubdiv's tags"));
   }
   SUBCASE("a forward reference that never gets its vertex") {
     const std::string e = obj_error(dir, "f 1 2 4\n" + t);

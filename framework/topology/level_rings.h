@@ -1,0 +1,39 @@
+#pragma once
+// Helpers shared by the two level builders (level_builder.cpp: the manifold fast path;
+// level_general.cpp: non-manifold input and the children of non-manifold levels).
+#include <vector>
+
+#include "framework/topology/level.h"
+
+namespace subdiv {
+
+// Corner arrays the builders work with: for every corner, its face; corners around each vertex.
+struct CornerIndex {
+  std::vector<Index> face;            // per corner
+  std::vector<Index> vertex_offsets;  // CSR: corners around each vertex (in corner order)
+  std::vector<Index> vertex_corners;
+};
+
+inline Index next_corner(const Level& level, Index face, Index corner) {
+  return corner + 1 == level.face_offsets[face + 1] ? level.face_offsets[face] : corner + 1;
+}
+inline Index prev_corner(const Level& level, Index face, Index corner) {
+  return corner == level.face_offsets[face] ? level.face_offsets[face + 1] - 1 : corner - 1;
+}
+
+CornerIndex index_corners(const Level& level);
+
+// Appends vertex v's ring in CCW order (faces, corners, edges, offsets, boundary flag).
+// Needs edge_faces with the manifold conventions around v. Returns false, with the level's
+// ring arrays as they were, if v's faces do not form a single fan.
+bool build_ordered_ring(Level& level, const CornerIndex& ci, Index v);
+
+// face_edges and edge_vertices from faces, as OpenSubdiv's Vtr::Level::
+// completeTopologyFromFaceVertices finds them: an edge joins two vertices whatever the
+// direction its faces run it; a face that comes back to an edge it already uses, and an
+// edge from a vertex to itself, get an edge of their own. Edges with more than two faces,
+// two faces running the same way, or made by those two cases are marked in
+// edge_non_manifold.
+void identify_edges_general(Level& level);
+
+}  // namespace subdiv

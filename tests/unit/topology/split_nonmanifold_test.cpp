@@ -1,0 +1,95 @@
+// Every built-in split on non-manifold input: the primal ones refine it (their agreement with
+// OpenSubdiv is in osd_*_test.cpp) and keep the marks; the dual ones give a valid mesh with
+// one warning saying where they left a gap; sqrt3 refuses it naming the element.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "framework/engine/refiner.h"
+#include "framework/io/mesh_level.h"
+#include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/util/error.h"
+#include "unit/topology/nonmanifold_meshes.h"
+
+using namespace subdiv;
+using namespace subdiv::nonmanifold_test;
+
+namespace {
+
+Hierarchy refined(const feature_test::FeatureMesh& m, const std::string& scheme, int levels) {
+  RefineOptions options;
+  options.levels = levels;
+  return refine(*load_scheme(scheme), level_from_mesh(m.mesh, m.name), options);
+}
+
+bool all_finite(const std::vector<double>& v) {
+  for (double x : v)
+    if (!std::isfinite(x)) return false;
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("primal splits keep a non-manifold edge non-manifold, with its faces' children on its halves") {
+  const auto m = flap_fan(3, false);
+  const Hierarchy h = refined(m, "catmull-clark", 2);
+  for (int l = 1; l <= 2; ++l) {
+    const Level& L = h.levels[size_t(l)];
+    CHECK_FALSE(L.manifold());
+    // The hinge from vertex 0 to vertex 1 is cut in 2^l pieces, each with 3 faces.
+    int hinge_pieces = 0;
+    for (Index e = 0; e < L.edge_count(); ++e)
+      if (L.non_manifold_edge(e)) {
+        CHECK(L.edge_face_count(e) == 3);
+        ++hinge_pieces;
+      }
+    CHECK(hinge_pieces == (1 << l));
+  }
+  CHECK(h.warnings.empty());
+}
+
+TEST_CASE("dual splits on non-manifold input: a valid mesh and one warning") {
+  for (const std::string scheme : {"doo-sabin", "mid-edge"}) {
+    CAPTURE(scheme);
+    for (const auto& m : {flap_fan(3, false), bow_tie(false)}) {
+      const Hierarchy h = refined(m, scheme, 2);
+      // One warning per level that met non-manifold elements (at most one per level).
+      REQUIRE(!h.warnings.empty());
+      CHECK(h.warnings.size() <= 2);
+      CHECK(h.warnings[0].find("level 1: ") == 0);
+      for (const auto& w : h.warnings) CHECK(w.find("non-manifold") != std::string::npos);
+      CHECK(all_finite(interpolate(h, 2, m.mesh.positions, 3)));
+      CHECK(h.levels[2].face_count() > 0);
+    }
+  }
+}
+
+TEST_CASE("sqrt3 refuses non-manifold input, naming the edge") {
+  const auto m = flap_fan(3, true);
+  CHECK_THROWS_WITH_AS(refined(m, "sqrt3", 1), doctest::Contains("needs a manifold mesh, but edge (0, 1) has 3 faces"),
+                       Error);
+}
+
+// Every shipped surface scheme on every kind of non-manifold input it accepts the faces of:
+// refined with finite positions (and, for the dual splits, a warning), or refused with a
+// message that names the manifold requirement; never a crash.
+TEST_CASE("every shipped surface scheme on non-manifold input: a valid result or a clear refusal") {
+  for (const SchemeListing& listing : list_schemes()) {
+    if (listing.kind != "surface" || listing.origin != "built-in") continue;
+    const auto scheme = load_scheme(listing.name);
+    const bool triangles = scheme->required_face_size == 3 || splitter_info(scheme->split()).required_face_size == 3;
+    for (const auto& m : {flap_fan(3, triangles), flap_fan(4, triangles), bow_tie(triangles), flipped_face(triangles)}) {
+      CAPTURE(listing.name);
+      CAPTURE(m.name);
+      RefineOptions options;
+      options.levels = 2;
+      try {
+        const Hierarchy h = refine(*scheme, level_from_mesh(m.mesh, m.name), options);
+        CHECK(all_finite(interpolate(h, 2, m.mesh.positions, 3)));
+      } catch (const Error& e) {
+        CHECK_MESSAGE(std::string(e.what()).find("needs a manifold mesh") != std::string::npos, e.what());
+      }
+    }
+  }
+}

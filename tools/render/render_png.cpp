@@ -1,0 +1,178 @@
+// subdiv-render MESH OUT.png [--azimuth DEG] [--elevation DEG] [--size PIXELS] [--cage MESH]
+//
+// Draws a mesh (any format `subdiv` reads) into a PNG with a small software rasterizer:
+// orthographic view, two-sided flat shading, face edges in a darker tone, and optionally a
+// control cage as thick lines. It needs no display and no GPU, so the figures in docs/ can
+// be rendered on a headless build machine (Debian's VTK renders only through X or OSMesa).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+#include <zlib.h>
+
+#include <fmt/format.h>
+
+#include "framework/io/mesh_read.h"
+#include "framework/util/error.h"
+
+namespace {
+
+struct Image {
+  int size;
+  std::vector<std::uint8_t> rgb;
+  std::vector<double> depth;
+  explicit Image(int n) : size(n), rgb(3 * size_t(n) * n, 255), depth(size_t(n) * n, -1e300) {}
+  void put(int x, int y, double z, std::array<std::uint8_t, 3> c) {
+    if (x < 0 || y < 0 || x >= size || y >= size) return;
+    const size_t i = size_t(y) * size + x;
+    if (z < depth[i]) return;
+    depth[i] = z;
+    std::copy(c.begin(), c.end(), rgb.begin() + 3 * i);
+  }
+};
+
+using Vec = std::array<double, 3>;
+
+// View space: x right, y up, z towards the viewer.
+std::vector<Vec> view(const std::vector<double>& p, double azimuth, double elevation) {
+  const double a = azimuth * M_PI / 180, e = elevation * M_PI / 180;
+  std::vector<Vec> out(p.size() / 3);
+  for (size_t i = 0; i < out.size(); ++i) {
+    const double x = p[3 * i], y = p[3 * i + 1], z = p[3 * i + 2];
+    const double x1 = std::cos(a) * x + std::sin(a) * z, z1 = -std::sin(a) * x + std::cos(a) * z;
+    out[i] = {x1, std::cos(e) * y - std::sin(e) * z1, std::sin(e) * y + std::cos(e) * z1};
+  }
+  return out;
+}
+
+void triangle(Image& img, const Vec& a, const Vec& b, const Vec& c, std::array<std::uint8_t, 3> colour) {
+  const int x0 = std::max(0, int(std::floor(std::min({a[0], b[0], c[0]})))),
+            x1 = std::min(img.size - 1, int(std::ceil(std::max({a[0], b[0], c[0]}))));
+  const int y0 = std::max(0, int(std::floor(std::min({a[1], b[1], c[1]})))),
+            y1 = std::min(img.size - 1, int(std::ceil(std::max({a[1], b[1], c[1]}))));
+  const double area = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+  if (std::abs(area) < 1e-12) return;
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      const double px = x + 0.5, py = y + 0.5;
+      const double w0 = ((b[0] - px) * (c[1] - py) - (c[0] - px) * (b[1] - py)) / area;
+      const double w1 = ((c[0] - px) * (a[1] - py) - (a[0] - px) * (c[1] - py)) / area;
+      const double w2 = 1 - w0 - w1;
+      if (w0 < 0 || w1 < 0 || w2 < 0) continue;
+      img.put(x, y, w0 * a[2] + w1 * b[2] + w2 * c[2], colour);
+    }
+}
+
+void line(Image& img, const Vec& a, const Vec& b, std::array<std::uint8_t, 3> colour, int width, double bias) {
+  const int steps = int(std::max(std::abs(b[0] - a[0]), std::abs(b[1] - a[1]))) + 1;
+  for (int s = 0; s <= steps; ++s) {
+    const double t = double(s) / steps;
+    const double x = a[0] + t * (b[0] - a[0]), y = a[1] + t * (b[1] - a[1]), z = a[2] + t * (b[2] - a[2]) + bias;
+    for (int dy = -width / 2; dy <= width / 2; ++dy)
+      for (int dx = -width / 2; dx <= width / 2; ++dx) img.put(int(x) + dx, int(y) + dy, z, colour);
+  }
+}
+
+void chunk(std::ofstream& out, const char* type, const std::vector<std::uint8_t>& data) {
+  const std::uint32_t n = std::uint32_t(data.size());
+  const std::uint8_t len[4] = {std::uint8_t(n >> 24), std::uint8_t(n >> 16), std::uint8_t(n >> 8), std::uint8_t(n)};
+  out.write(reinterpret_cast<const char*>(len), 4);
+  out.write(type, 4);
+  out.write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size()));
+  uLong crc = crc32(0, reinterpret_cast<const Bytef*>(type), 4);
+  crc = crc32(crc, data.data(), uInt(data.size()));
+  const std::uint8_t c[4] = {std::uint8_t(crc >> 24), std::uint8_t(crc >> 16), std::uint8_t(crc >> 8), std::uint8_t(crc)};
+  out.write(reinterpret_cast<const char*>(c), 4);
+}
+
+// PNG (RFC 2083): 8-bit RGB, no filtering, one zlib stream.
+void write_png(const std::string& file, const Image& img) {
+  std::vector<std::uint8_t> raw;
+  for (int y = img.size - 1; y >= 0; --y) {  // image rows top first; our y points up
+    raw.push_back(0);
+    raw.insert(raw.end(), img.rgb.begin() + 3 * size_t(y) * img.size, img.rgb.begin() + 3 * size_t(y + 1) * img.size);
+  }
+  uLongf packed_size = compressBound(uLong(raw.size()));
+  std::vector<std::uint8_t> packed(packed_size);
+  if (compress2(packed.data(), &packed_size, raw.data(), uLong(raw.size()), 9) != Z_OK)
+    throw subdiv::Error("zlib could not compress the image");
+  packed.resize(packed_size);
+  std::ofstream out(file, std::ios::binary);
+  if (!out) throw subdiv::Error(fmt::format("cannot write '{}'", file));
+  out.write("\x89PNG\r\n\x1a\n", 8);
+  const std::uint32_t n = std::uint32_t(img.size);
+  std::vector<std::uint8_t> header = {std::uint8_t(n >> 24), std::uint8_t(n >> 16), std::uint8_t(n >> 8), std::uint8_t(n),
+                                      std::uint8_t(n >> 24), std::uint8_t(n >> 16), std::uint8_t(n >> 8), std::uint8_t(n),
+                                      8, 2, 0, 0, 0};
+  chunk(out, "IHDR", header);
+  chunk(out, "IDAT", packed);
+  chunk(out, "IEND", {});
+}
+
+}  // namespace
+
+int main(int argc, char** argv) try {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: subdiv-render MESH OUT.png [--azimuth DEG] [--elevation DEG] [--size PIXELS] [--cage MESH]\n");
+    return 2;
+  }
+  double azimuth = 30, elevation = 25;
+  int size = 640;
+  std::string cage_file;
+  for (int i = 3; i + 1 < argc; i += 2) {
+    const std::string o = argv[i];
+    if (o == "--azimuth") azimuth = std::stod(argv[i + 1]);
+    else if (o == "--elevation") elevation = std::stod(argv[i + 1]);
+    else if (o == "--size") size = std::stoi(argv[i + 1]);
+    else if (o == "--cage") cage_file = argv[i + 1];
+    else throw subdiv::Error(fmt::format("unknown option '{}'", o));
+  }
+  const subdiv::MeshData mesh = subdiv::read_mesh(argv[1]);
+  std::vector<Vec> p = view(mesh.positions, azimuth, elevation);
+  subdiv::MeshData cage;
+  std::vector<Vec> q;
+  if (!cage_file.empty()) cage = subdiv::read_mesh(cage_file), q = view(cage.positions, azimuth, elevation);
+  // Fit the picture: the same scale and offset for the mesh and its cage.
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  for (const auto* points : {&p, &q})
+    for (const Vec& v : *points)
+      for (int c = 0; c < 2; ++c) lo[c] = std::min(lo[c], v[c]), hi[c] = std::max(hi[c], v[c]);
+  const double scale = 0.9 * size / std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  auto to_pixels = [&](std::vector<Vec>& points) {
+    for (Vec& v : points)
+      for (int c = 0; c < 3; ++c) v[c] = (c < 2 ? (v[c] - 0.5 * (lo[c] + hi[c])) * scale + 0.5 * size : v[c] * scale);
+  };
+  to_pixels(p), to_pixels(q);
+  Image img(size);
+  for (subdiv::Index f = 0; f < mesh.face_count(); ++f) {
+    const subdiv::Index o = mesh.face_offsets[f], k = mesh.face_offsets[f + 1] - o;
+    const Vec &a = p[mesh.face_vertices[o]], &b = p[mesh.face_vertices[o + 1]], &c = p[mesh.face_vertices[o + 2]];
+    const Vec u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    Vec n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) + 1e-300;
+    const double light = std::abs((0.3 * n[0] + 0.5 * n[1] + 0.81 * n[2]) / len);  // two-sided
+    const double shade = 0.3 + 0.7 * light;
+    const std::array<std::uint8_t, 3> colour{std::uint8_t(90 * shade), std::uint8_t(150 * shade), std::uint8_t(220 * shade)};
+    for (subdiv::Index i = 1; i + 1 < k; ++i)
+      triangle(img, p[mesh.face_vertices[o]], p[mesh.face_vertices[o + i]], p[mesh.face_vertices[o + i + 1]], colour);
+  }
+  for (subdiv::Index f = 0; f < mesh.face_count(); ++f)
+    for (subdiv::Index c = mesh.face_offsets[f]; c < mesh.face_offsets[f + 1]; ++c) {
+      const subdiv::Index next = c + 1 == mesh.face_offsets[f + 1] ? mesh.face_offsets[f] : c + 1;
+      line(img, p[mesh.face_vertices[c]], p[mesh.face_vertices[next]], {40, 60, 90}, 1, 0.5);
+    }
+  for (subdiv::Index f = 0; f < cage.face_count(); ++f)
+    for (subdiv::Index c = cage.face_offsets[f]; c < cage.face_offsets[f + 1]; ++c) {
+      const subdiv::Index next = c + 1 == cage.face_offsets[f + 1] ? cage.face_offsets[f] : c + 1;
+      line(img, q[cage.face_vertices[c]], q[cage.face_vertices[next]], {200, 60, 40}, 3, 1e6);  // always in front
+    }
+  write_png(argv[2], img);
+  return 0;
+} catch (const std::exception& e) {
+  std::fprintf(stderr, "subdiv-render: error: %s\n", e.what());
+  return 1;
+}
