@@ -12,7 +12,7 @@ configure_sanitized_build() {
   if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
   if [ ! -f "$SUBDIV_ASAN_DIR/build.ninja" ]; then
     CXX=clang++-14 CC=clang-14 cmake -S . -B "$SUBDIV_ASAN_DIR" -G Ninja \
-      -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSUBDIV_BUILD_FUZZERS=ON -DSUBDIV_BUILD_BENCH=OFF "${launcher[@]}"
+      -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSUBDIV_BUILD_FUZZERS=ON -DSUBDIV_BUILD_BENCH=OFF -DSUBDIV_BUILD_PYTHON=OFF "${launcher[@]}"
   fi
 }
 
