@@ -44,8 +44,8 @@ void check_manifold_for(const Scheme& scheme, const Level& level) {
                                               level.edge_vertices[2 * e], level.edge_vertices[2 * e + 1],
                                               level.edge_face_count(e))
                                 : fmt::format("the faces around vertex {} form more than one fan", v);
-  throw Error(fmt::format("{}: scheme '{}' uses the '{}' split, which needs a manifold mesh, but {}; use a primal "
-                          "scheme (catmull-clark, loop, doo-sabin, ...) or split the mesh there",
+  throw Error(fmt::format("{}: scheme '{}' uses the '{}' split, which needs a manifold mesh, but {}; use a scheme "
+                          "with the quad or triangle split, which refine non-manifold meshes, or split the mesh there",
                           scheme.path, scheme.name, splitter_info(scheme.split()).name, where));
 }
 
