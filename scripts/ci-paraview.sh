@@ -10,7 +10,8 @@ export DEBIAN_FRONTEND=noninteractive
 echo "== ParaView stage: installing paraview and python3-paraview (removes Debian's VTK)"
 apt-get update -qq
 apt-get install -y -qq --no-install-recommends paraview python3-paraview > /dev/null
-if dpkg-query -W -f='${Status}' libvtk9-dev 2>/dev/null | grep -q "install ok installed"; then
+source scripts/apt-packages.sh
+if installed libvtk9-dev; then
   echo "ci-paraview.sh: libvtk9-dev is still installed; this stage would not test ParaView's VTK" >&2
   exit 1
 fi

@@ -10,7 +10,7 @@
 # SUBDIV_VTK=debian or SUBDIV_VTK=paraview.
 set -euo pipefail
 
-installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
+source "$(dirname "$0")/apt-packages.sh"
 
 vtk_package() {
   case "${SUBDIV_VTK:-auto}" in
@@ -44,13 +44,4 @@ packages=(
   libosd-dev ccache
   pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib
 )
-missing=()
-for p in "${packages[@]}"; do
-  installed "$p" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "installing: ${missing[*]}"
-  export DEBIAN_FRONTEND=noninteractive
-  apt-get update -qq
-  apt-get install -y -qq --no-install-recommends "${missing[@]}"
-fi
+install_missing "${packages[@]}"
