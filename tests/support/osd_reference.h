@@ -341,6 +341,20 @@ inline std::vector<double> osd_in_our_order(const OsdRefinement& osd, const subd
 }
 
 // Largest |a_i - b_i|; infinity when the sizes differ or a value is NaN.
+// The vertex (xyz triples) where a and b differ most, and by how much; a NaN counts as an
+// infinite difference.
+struct WorstVertex {
+  double difference = 0;
+  size_t vertex = 0;
+};
+inline WorstVertex worst_vertex(std::span<const double> a, std::span<const double> b) {
+  WorstVertex w;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
+    if (double d = std::abs(a[i] - b[i]); !(d <= w.difference))
+      w.difference = std::isnan(d) ? INFINITY : d, w.vertex = i / 3;
+  return w;
+}
+
 inline double max_abs_difference(std::span<const double> a, std::span<const double> b) {
   if (a.size() != b.size()) return std::numeric_limits<double>::infinity();
   double m = 0;

@@ -122,10 +122,9 @@ void check_agreement(const FeatureMesh& fm, const std::string& scheme_name, cons
     const auto expected = subdiv_test::osd_in_our_order(osd, h, l);
     direct = step_values(*scheme, h, l - 1, direct, 3, options);
     CHECK(subdiv_test::max_abs_difference(direct, expected) < kTolerance);
-    double worst = 0;
-    size_t at = 0;
-    for (size_t i = 0; i < ours.size(); ++i)
-      if (double d = std::abs(ours[i] - expected[i]); !(d <= worst)) worst = std::isnan(d) ? INFINITY : d, at = i / 3;
+    const subdiv_test::WorstVertex w = subdiv_test::worst_vertex(ours, expected);
+    const double worst = w.difference;  // named copies: clang 14 cannot capture bindings in INFO
+    const size_t at = w.vertex;
     const auto& origin = h.origins[size_t(l) - 1];
     INFO(fmt::format("{} with {}, {}, level {}: worst vertex {} (child of {} {}) differs by {:.3e}", fm.name,
                      scheme_name, setup.name(), l, at, origin_name(origin.kind[at]), origin.parent[at], worst));

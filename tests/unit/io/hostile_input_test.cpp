@@ -13,33 +13,14 @@
 #include "framework/io/feature_file.h"
 #include "framework/io/mesh_read.h"
 #include "framework/io/vtk/vtk_output.h"
-#include "framework/io/vtk/vtk_polydata.h"
-
-#include <vtkNew.h>
-#include <vtkPolyData.h>
-#include <vtkXMLPolyDataWriter.h>
 #include "framework/util/input_errors.h"
 #include "unit/io/io_test_support.h"
+#include "unit/io/appended_vtp.h"
 
 using namespace subdiv;
 using namespace subdiv::test;
 
 namespace {
-
-// `subdiv` writes inline binary; ParaView and other tools write raw appended data, whose
-// compression headers these tests damage: written here with VTK's writer in that mode.
-void write_appended_vtp(const fs::path& file, const MeshData& mesh) {
-  OutputLevel level;
-  level.mesh = &mesh;
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetInputData(io_detail::make_polydata(level));
-  writer->SetFileName(file.c_str());
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();
-  writer->SetCompressorTypeToZLib();
-  writer->SetHeaderTypeToUInt64();
-  if (writer->Write() != 1) throw std::runtime_error("test: VTK could not write " + file.string());
-}
 
 // Reading must either succeed or throw subdiv::Error; anything else fails the test.
 bool reads_or_refuses_cleanly(const fs::path& file, std::string& message) {
@@ -188,6 +169,7 @@ TEST_CASE("legacy .vtk cut off at every byte: never a crash, always a subdiv::Er
 TEST_CASE(".vtp with absurd sizes or a corrupt compression header: a subdiv::Error naming the file") {
   TempDir dir;
   const MeshData cube = cube_mesh();
+  // Raw appended data, as ParaView writes it: its compression headers are damaged below.
   write_appended_vtp(dir / "cube.vtp", cube);
   const std::string good = read_text(dir / "cube.vtp");
   REQUIRE(read_mesh(dir / "cube.vtp").face_count() == 6);

@@ -9,13 +9,12 @@
 #include <vtkSmartPointer.h>
 #include <vtkXMLDataElement.h>
 #include <vtkXMLPolyDataReader.h>
-#include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUtilities.h>
 
 #include "framework/io/mesh_read.h"
 #include "framework/io/vtk/vtk_output.h"
-#include "framework/io/vtk/vtk_polydata.h"
 #include "io_test_support.h"
+#include "unit/io/appended_vtp.h"
 
 using namespace subdiv;
 using namespace subdiv::test;
@@ -136,16 +135,7 @@ TEST_CASE("read_mesh reads .vtp files with raw appended data, as ParaView writes
       grid.face_vertices.insert(grid.face_vertices.end(), {a, a + 1, a + n + 2, a + n + 1});
       grid.face_offsets.push_back(Index(grid.face_vertices.size()));
     }
-  OutputLevel level;
-  level.mesh = &grid;
-  vtkSmartPointer<vtkPolyData> poly = io_detail::make_polydata(level);
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetInputData(poly);
-  writer->SetFileName((dir / "appended.vtp").c_str());
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();
-  writer->SetCompressorTypeToZLib();
-  REQUIRE(writer->Write() == 1);
+  write_appended_vtp(dir / "appended.vtp", grid);
   REQUIRE(contains(read_text(dir / "appended.vtp"), "<AppendedData encoding=\"raw\">"));
   const MeshData back = read_mesh(dir / "appended.vtp");
   CHECK(back.vertex_count() == (n + 1) * (n + 1));

@@ -73,10 +73,9 @@ inline void check_agreement(const feature_test::FeatureMesh& fm, const std::stri
     const auto ours = interpolate(h, l, fm.mesh.positions, 3);
     const auto expected = subdiv_test::osd_in_our_order(osd, h, l);
     direct = step_values(*scheme, h, l - 1, direct, 3, options);
-    double worst = 0;
-    size_t at = 0;
-    for (size_t i = 0; i < ours.size(); ++i)
-      if (double d = std::abs(ours[i] - expected[i]); !(d <= worst)) worst = std::isnan(d) ? INFINITY : d, at = i / 3;
+    const subdiv_test::WorstVertex w = subdiv_test::worst_vertex(ours, expected);
+    const double worst = w.difference;  // named copies: clang 14 cannot capture bindings in INFO
+    const size_t at = w.vertex;
     const auto& origin = h.origins[size_t(l) - 1];
     INFO(fmt::format("{} with {}, {}, level {}: worst vertex {} (origin kind {} parent {}) differs by {:.3e}", fm.name,
                      scheme_name, setup.name(), l, at, int(origin.kind[at]), origin.parent[at], worst));
