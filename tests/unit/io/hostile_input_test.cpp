@@ -290,3 +290,11 @@ TEST_CASE("fuzz findings stay fixed: PLY elements without properties, unknown VT
   write_text(dir / "typo.vtp", typo);
   CHECK(contains(error_of([&] { read_mesh(dir / "typo.vtp"); }), "DataArray type=\"Int31\" is not a VTK type"));
 }
+
+TEST_CASE("legacy .vtk BINARY: text after a keyword line, or no line end, is refused before VTK's getline fails") {
+  TempDir dir;
+  write_text(dir / "unterminated.vtk", legacy_binary() + "VERTICES 0 0 1");
+  CHECK(contains(error_of([&] { read_mesh(dir / "unterminated.vtk"); }), "the file ends before the binary data"));
+  write_text(dir / "junk.vtk", legacy_binary() + "VERTICES 0 0 junk\n");
+  CHECK(contains(error_of([&] { read_mesh(dir / "junk.vtk"); }), "unexpected text after the keyword line"));
+}
