@@ -258,6 +258,11 @@ TEST_CASE("OpenMesh .om: cut off anywhere or with damaged chunks, a subdiv::Erro
   flat[16 + 1] = char(flat[16 + 1] & ~0x38);  // the chunk header's dimension bits (11..13)
   write_text(dir / "flat.om", flat);
   CHECK(contains(error_of([&] { read_mesh(dir / "flat.om"); }), (dir / "flat.om").string() + ": byte 16: a chunk"));
+  // A colour chunk: how OpenMesh 9 reads it is not documented, so it is refused, not guessed.
+  std::string coloured = good;
+  coloured[16] = char(coloured[16] | 0x80);  // type bits 5..8: 4, colours
+  write_text(dir / "coloured.om", coloured);
+  CHECK(contains(error_of([&] { read_mesh(dir / "coloured.om"); }), "positions and connectivity only"));
   // A vertex count beyond the file.
   std::string many = good;
   many[7] = char(0x7f);
