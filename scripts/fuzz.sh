@@ -74,9 +74,16 @@ run_one() {
       *) if [ -f "$s" ]; then cp -n "$s" "$corpus"/; fi ;;
     esac
   done
-  "$bin/$name" "$corpus" -dict="tests/fuzz/dict/$dict.dict" -max_len="$max_len" -max_total_time="$seconds" \
+  # The exit status goes to a file: bash forgets finished background jobs once `jobs` has
+  # reported them, so `wait PID` cannot be trusted for it.
+  local status=0 lsan=$LSAN_OPTIONS
+  case $name in  # VTK's leaks on its own error paths: see the suppression file
+    fuzz_read_vtp | fuzz_read_vtk) lsan="suppressions=$PWD/tests/sanitizers/lsan-vtk-readers.supp:print_suppressions=0" ;;
+  esac
+  LSAN_OPTIONS=$lsan "$bin/$name" "$corpus" -dict="tests/fuzz/dict/$dict.dict" -max_len="$max_len" -max_total_time="$seconds" \
     -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -close_fd_mask=1 \
-    -artifact_prefix="$artifacts/$name-" >"$logs/$name.log" 2>&1
+    -artifact_prefix="$artifacts/$name-" >"$logs/$name.log" 2>&1 || status=$?
+  echo "$status" >"$logs/$name.status"
 }
 
 pids=()
@@ -86,6 +93,7 @@ for entry in "${fuzzers[@]}"; do
   IFS='|' read -r name dict max_len seeds <<<"$entry"
   selected "$name" || continue
   echo "fuzzing $name for ${seconds}s"
+  rm -f "$logs/$name.status"
   run_one "$name" "$dict" "$max_len" "$seeds" &
   pids+=($!)
   names+=("$name")
@@ -97,12 +105,13 @@ report=$SUBDIV_ASAN_DIR/fuzz-report.txt
 printf '%-22s %8s %12s %10s %8s %8s %s\n' fuzzer seconds executions exec/s cov ft corpus >"$report"
 for i in "${!pids[@]}"; do
   name=${names[$i]}
+  wait "${pids[$i]}" 2>/dev/null || true
   status=ok
-  wait "${pids[$i]}" || status=FAILED
+  [ "$(cat "$logs/$name.status" 2>/dev/null || echo missing)" = 0 ] || status=FAILED
   log=$logs/$name.log
   # (|| true: a fuzzer that crashed at once prints no statistics)
-  execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | awk '{print $2}' | tail -1 || true)
-  rate=$(grep -o 'stat::average_exec_per_sec: [0-9]*' "$log" | awk '{print $2}' | tail -1 || true)
+  execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | awk '{print $2}' | tail -1 || true)
+  rate=$(grep -o 'stat::average_exec_per_sec: *[0-9]*' "$log" | awk '{print $2}' | tail -1 || true)
   cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | awk '{print $2}' || true)
   ft=$(grep -o 'ft: [0-9]*' "$log" | tail -1 | awk '{print $2}' || true)
   files=$(find "$corpora/$name" -type f | wc -l)

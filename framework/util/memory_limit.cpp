@@ -1,5 +1,6 @@
 #include "framework/util/memory_limit.h"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <fstream>
 #include <sstream>
@@ -30,6 +31,19 @@ std::optional<double> read_number(const fs::path& file) {
   }
 }
 
+// Page cache the kernel reclaims before it refuses memory: the group's usage counts it,
+// and after a big build it can fill the group up to its limit without being in anyone's way.
+double reclaimable_cache(const fs::path& dir) {
+  std::ifstream stat(dir / "memory.stat");
+  std::string key;
+  double value = 0, own = 0, total = 0;  // v1 also gives total_* (with the child groups), v2 does not
+  while (stat >> key >> value) {
+    if (key == "inactive_file" || key == "active_file") own += value;
+    if (key == "total_inactive_file" || key == "total_active_file") total += value;
+  }
+  return total > 0 ? total : own;
+}
+
 void keep_least(std::optional<MemoryBudget>& best, double bytes, std::string source) {
   if (bytes < 0) bytes = 0;
   if (!best || bytes < best->bytes) best = MemoryBudget{bytes, std::move(source)};
@@ -43,7 +57,7 @@ void walk_up(const fs::path& root, const fs::path& path, const char* limit_file,
   for (fs::path relative = path.relative_path();; relative = relative.parent_path()) {
     const fs::path dir = relative.empty() ? root : root / relative;
     if (const auto limit = read_number(dir / limit_file)) {
-      const double used = read_number(dir / usage_file).value_or(0.0);
+      const double used = std::max(0.0, read_number(dir / usage_file).value_or(0.0) - reclaimable_cache(dir));
       keep_least(best, *limit - used,
                  fmt::format("the cgroup limit {} = {:.2f} GiB", (dir / limit_file).string(), *limit / (1 << 30)));
     }

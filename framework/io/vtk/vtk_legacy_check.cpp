@@ -107,10 +107,15 @@ private:
     return std::uint64_t(v);
   }
 
-  // The rest of the keyword line; binary data starts after it.
+  // The end of the keyword line; binary data starts after it. VTK skips the rest of the
+  // line with getline() into a 256-byte buffer, which fails on longer or unterminated
+  // lines and then crashes the reader (found by fuzz_read_vtk): only blanks may follow.
   void end_of_line() {
     const std::size_t end = bytes_.find('\n', pos_);
-    pos_ = end == std::string_view::npos ? bytes_.size() : end + 1;
+    if (end == std::string_view::npos) fail("the file ends before the binary data that should follow; it is cut off");
+    if (bytes_.substr(pos_, end - pos_).find_first_not_of(" \t\r") != std::string_view::npos)
+      fail("unexpected text after the keyword line; binary data must start on the next line");
+    pos_ = end + 1;
     ++line_;
   }
 

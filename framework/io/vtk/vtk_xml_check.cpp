@@ -72,6 +72,9 @@ public:
       if (!type || std::find(std::begin(kTypes), std::end(kTypes), *type) == std::end(kTypes))
         fail(at, fmt::format("DataArray type=\"{}\" is not a VTK type (Int8 ... UInt64, Float32, Float64, String)",
                              shortened(type.value_or(""))));
+      // Points need their three components said: VTK reads one otherwise, fails and leaks.
+      if (attribute(tag, "Name").value_or("") == "Points" && !attribute(tag, "NumberOfComponents"))
+        fail(at, "the Points array needs NumberOfComponents=\"3\"");
       if (const auto c = attribute(tag, "NumberOfComponents")) {
         long long v;
         if (!parse_integer(*c, v) || v < 1 || v > kMaxComponents)

@@ -44,6 +44,11 @@ TEST_CASE("cgroup v2: the least of limit minus usage over the group and its pare
 
   write(root / "fs/user.slice/job/memory.max", std::to_string(1ull << 29) + "\n");
   CHECK(cgroup_remaining(root / "fs", root / "self")->bytes == doctest::Approx(0.5 * GiB));
+
+  // Page cache counts in memory.current but the kernel reclaims it first: not in the way.
+  write(root / "fs/user.slice/memory.stat", "anon 1000\nfile 1073741824\nactive_file 536870912\ninactive_file 536870912\n");
+  write(root / "fs/user.slice/job/memory.max", "max\n");
+  CHECK(cgroup_remaining(root / "fs", root / "self")->bytes == doctest::Approx(3 * GiB));
 }
 
 TEST_CASE("cgroup v1: memory.limit_in_bytes, with the huge 'unlimited' value ignored") {

@@ -258,6 +258,11 @@ TEST_CASE("OpenMesh .om: cut off anywhere or with damaged chunks, a subdiv::Erro
   flat[16 + 1] = char(flat[16 + 1] & ~0x38);  // the chunk header's dimension bits (11..13)
   write_text(dir / "flat.om", flat);
   CHECK(contains(error_of([&] { read_mesh(dir / "flat.om"); }), (dir / "flat.om").string() + ": byte 16: a chunk"));
+  // A colour chunk: how OpenMesh 9 reads it is not documented, so it is refused, not guessed.
+  std::string coloured = good;
+  coloured[16] = char(coloured[16] | 0x80);  // type bits 5..8: 4, colours
+  write_text(dir / "coloured.om", coloured);
+  CHECK(contains(error_of([&] { read_mesh(dir / "coloured.om"); }), "positions and connectivity only"));
   // A vertex count beyond the file.
   std::string many = good;
   many[7] = char(0x7f);
@@ -289,4 +294,12 @@ TEST_CASE("fuzz findings stay fixed: PLY elements without properties, unknown VT
   typo.replace(typo.find("type=\"Int32\""), 12, "type=\"Int31\"");
   write_text(dir / "typo.vtp", typo);
   CHECK(contains(error_of([&] { read_mesh(dir / "typo.vtp"); }), "DataArray type=\"Int31\" is not a VTK type"));
+}
+
+TEST_CASE("legacy .vtk BINARY: text after a keyword line, or no line end, is refused before VTK's getline fails") {
+  TempDir dir;
+  write_text(dir / "unterminated.vtk", legacy_binary() + "VERTICES 0 0 1");
+  CHECK(contains(error_of([&] { read_mesh(dir / "unterminated.vtk"); }), "the file ends before the binary data"));
+  write_text(dir / "junk.vtk", legacy_binary() + "VERTICES 0 0 junk\n");
+  CHECK(contains(error_of([&] { read_mesh(dir / "junk.vtk"); }), "unexpected text after the keyword line"));
 }
