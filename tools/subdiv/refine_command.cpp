@@ -30,7 +30,7 @@ namespace {
 struct RefineArgs {
   std::string mesh, scheme = "catmull-clark", output;
   int levels = 1;
-  std::vector<std::string> params;
+  std::vector<std::string> params, vertex_params;
   std::string boundary = "edges-and-corners", crease_method = "uniform";
   std::string features;        // --features FILE.json
   double feature_angle = -1;   // --feature-angle DEG; < 0: not given
@@ -150,7 +150,12 @@ void run(const RefineArgs& a) {
   }
   check_fits_in_memory(*seq.schemes.front(), base, seq.total_levels);
 
-  const RefineOptions options = refine_options(with_mesh_options(a, mesh.options));
+  RefineOptions options = refine_options(with_mesh_options(a, mesh.options));
+  if (!a.vertex_params.empty() && cleanup.dropped_vertices > 0)
+    throw Error(fmt::format("{}: --vertex-param gives values in the file's vertex order, but unused vertices were "
+                            "dropped (see the warning) and the rest renumbered; remove them from the mesh first",
+                            a.mesh));
+  options.vertex_parameters = read_vertex_params(a.vertex_params, base.vertex_count);
   Progress progress;
   progress.say(fmt::format("refining topology: {} levels of {}", seq.total_levels, a.scheme));
   Hierarchy h = refine_topology(seq.runs, std::move(base), options);
@@ -210,6 +215,7 @@ void add_refine_command(CLI::App& app) {
                   "Output file: .vtp (finest level) or .pvd (all levels) for ParaView, or .obj, .off, .ply, .stl")
       ->required();
   add_param_option(cmd, args->params);
+  add_vertex_param_option(cmd, args->vertex_params);
   add_boundary_option(cmd, "--boundary", args->boundary);
   add_crease_method_option(cmd, args->crease_method);
   cmd->add_option("--features", args->features,
