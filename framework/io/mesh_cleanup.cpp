@@ -23,6 +23,16 @@ int distinct_count(const Index* first, const Index* last) {
   return n;
 }
 
+// The tuples of `a` whose new number (new_index[i]) is not kNone, in order.
+DataArray kept_tuples(const DataArray& a, const std::vector<Index>& new_index) {
+  DataArray out = a;
+  out.values.clear();
+  const size_t c = size_t(a.components);
+  for (size_t i = 0; i < new_index.size(); ++i)
+    if (new_index[i] != kNone) out.values.insert(out.values.end(), a.values.begin() + i * c, a.values.begin() + (i + 1) * c);
+  return out;
+}
+
 }  // namespace
 
 MeshData drop_unrefinable(const MeshData& mesh, MeshCleanup& report) {
@@ -72,6 +82,8 @@ MeshData drop_unrefinable(const MeshData& mesh, MeshCleanup& report) {
   for (Index f : mesh.holes)
     if (new_face[f] != kNone) out.holes.push_back(new_face[f]);
   out.options = mesh.options;
+  for (const DataArray& a : mesh.point_data) out.point_data.push_back(kept_tuples(a, new_vertex));
+  for (const DataArray& a : mesh.cell_data) out.cell_data.push_back(kept_tuples(a, new_face));
   return out;
 }
 
