@@ -45,6 +45,7 @@ MeshData drop_unrefinable(const MeshData& mesh, MeshCleanup& report) {
     if (f < 0 || f >= mesh.face_count()) return mesh;
   // Faces: keep those with 3 or more distinct vertices; remember new face numbers for holes.
   std::vector<Index> new_face(size_t(mesh.face_count()), kNone);
+  std::vector<Index> kept_corners;  // [begin, end) pairs of the kept faces' corners
   MeshData out;
   for (Index f = 0; f < mesh.face_count(); ++f) {
     const Index* first = mesh.face_vertices.data() + mesh.face_offsets[f];
@@ -54,6 +55,7 @@ MeshData drop_unrefinable(const MeshData& mesh, MeshCleanup& report) {
       continue;
     }
     new_face[f] = out.face_count();
+    kept_corners.insert(kept_corners.end(), {mesh.face_offsets[f], mesh.face_offsets[f + 1]});
     out.face_vertices.insert(out.face_vertices.end(), first, last);
     out.face_offsets.push_back(Index(out.face_vertices.size()));
   }
@@ -82,8 +84,16 @@ MeshData drop_unrefinable(const MeshData& mesh, MeshCleanup& report) {
   for (Index f : mesh.holes)
     if (new_face[f] != kNone) out.holes.push_back(new_face[f]);
   out.options = mesh.options;
+  out.warnings = mesh.warnings;
   for (const DataArray& a : mesh.point_data) out.point_data.push_back(kept_tuples(a, new_vertex));
   for (const DataArray& a : mesh.cell_data) out.cell_data.push_back(kept_tuples(a, new_face));
+  for (const FaceVaryingArray& a : mesh.face_varying) {
+    FaceVaryingArray kept = a;
+    kept.indices.clear();
+    for (size_t i = 0; i < kept_corners.size(); i += 2)
+      kept.indices.insert(kept.indices.end(), a.indices.begin() + kept_corners[i], a.indices.begin() + kept_corners[i + 1]);
+    out.face_varying.push_back(std::move(kept));
+  }
   return out;
 }
 

@@ -47,6 +47,17 @@ struct DataArray {
   ArrayRole role = ArrayRole::Data;
 };
 
+// Face-varying data (OBJ's vt and vn): values with their own index per face corner, so that
+// neighbouring faces may disagree at a vertex (a UV seam).
+struct FaceVaryingArray {
+  std::string name;
+  int components = 2;
+  std::vector<double> values;  // components per value
+  std::vector<Index> indices;  // one per face corner, in face_vertices order
+  ArrayRole role = ArrayRole::Data;
+  Index value_count() const { return Index(values.size() / size_t(components)); }
+};
+
 struct MeshData {
   std::vector<double> positions;  // xyz per vertex
   std::vector<Index> face_offsets{0};
@@ -59,6 +70,8 @@ struct MeshData {
   MeshOptions options;             // OBJ option tags
   std::vector<DataArray> point_data;  // one tuple per vertex (the user's arrays)
   std::vector<DataArray> cell_data;   // one tuple per face
+  std::vector<FaceVaryingArray> face_varying;
+  std::vector<std::string> warnings;  // what a reader left out or changed, one line each
 
   Index vertex_count() const { return Index(positions.size() / 3); }
   Index face_count() const { return Index(face_offsets.size()) - 1; }

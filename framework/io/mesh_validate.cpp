@@ -104,6 +104,21 @@ void check_data_arrays(const std::vector<DataArray>& arrays, Index tuples, const
   }
 }
 
+void check_face_varying(const MeshData& mesh, std::string_view context) {
+  for (const FaceVaryingArray& a : mesh.face_varying) {
+    if (a.components < 1 || a.values.size() % size_t(a.components) != 0)
+      fail(context, fmt::format("face-varying array '{}' has {} values, not a whole number of {}-component tuples",
+                                a.name, a.values.size(), a.components));
+    if (a.indices.size() != mesh.face_vertices.size())
+      fail(context, fmt::format("face-varying array '{}' has {} corner indices for {} face corners", a.name,
+                                a.indices.size(), mesh.face_vertices.size()));
+    for (size_t c = 0; c < a.indices.size(); ++c)
+      if (a.indices[c] < 0 || a.indices[c] >= a.value_count())
+        fail(context, fmt::format("face-varying array '{}': face corner {} uses value {}, but there are {} values",
+                                  a.name, c, a.indices[c], a.value_count()));
+  }
+}
+
 }  // namespace
 
 void validate_mesh_data(const MeshData& mesh, std::string_view context) {
@@ -113,6 +128,7 @@ void validate_mesh_data(const MeshData& mesh, std::string_view context) {
   check_tags(mesh, context);
   check_data_arrays(mesh.point_data, mesh.vertex_count(), "point", context);
   check_data_arrays(mesh.cell_data, mesh.face_count(), "face", context);
+  check_face_varying(mesh, context);
 }
 
 }  // namespace subdiv

@@ -9,9 +9,11 @@
 // 0), t hole (face indices from 0), and the options t interpolateboundary,
 // t creasemethod, t smoothtriangles, t facevaryinginterpolateboundary and
 // t facevaryingpropagatecorners, kept in MeshData::options. Hierarchical edits (t vertexedit,
-// edgeedit, faceedit; gone from OpenSubdiv 3) are refused.
-// Ignored: vt, vn, groups, materials, smoothing groups and other statements that do not
-// change the surface.
+// edgeedit, faceedit; gone from OpenSubdiv 3) are refused. Texture coordinates (vt) and
+// normals (vn) with their own indices per face corner become face-varying arrays "uv" and
+// "normal" (every face must then give them, as OpenSubdiv's channels require).
+// Ignored: groups, materials, smoothing groups and other statements that do not change the
+// surface.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -48,6 +50,9 @@ private:
   void vertex(Tokens& tokens);
   void face(Tokens& tokens);
   void polyline(Tokens& tokens);
+  void attribute(Tokens& tokens, int slot);
+  void corner_attributes(std::string_view token);
+  void finish_face_varying();
   void tag(Tokens& tokens);
   void crease_tag(const Tag& tag);
   void corner_tag(const Tag& tag);
@@ -73,6 +78,16 @@ private:
   };
   std::vector<Reference> forward_references_;
   std::vector<std::size_t> crease_lines_, corner_lines_, hole_lines_;  // for messages about tags
+  // vt (slot 0) and vn (slot 1): the values, and per face corner the 0-based index or -1.
+  struct Attribute {
+    std::vector<double> values;
+    int components = 0;
+    std::vector<long long> corners;
+    std::size_t line_with = 0, line_without = 0;  // a face line that gives it, one that does not
+    long long largest = -1;                        // the largest index used, and where
+    std::size_t largest_line = 0;
+  };
+  Attribute attributes_[2];
 };
 
 MeshData ObjReader::read() {
@@ -104,6 +119,7 @@ MeshData ObjReader::read() {
   check_tag_vertices();
   check_creases_are_edges();
   check_holes();
+  finish_face_varying();
   return std::move(mesh_);
 }
 
@@ -112,7 +128,9 @@ void ObjReader::statement(std::string_view keyword, Tokens& tokens) {
   if (keyword == "f") return face(tokens);
   if (keyword == "l") return polyline(tokens);
   if (keyword == "t") return tag(tokens);
-  // Everything else (vt, vn, g, o, s, usemtl, mtllib, free-form geometry) does not
+  if (keyword == "vt") return attribute(tokens, 0);
+  if (keyword == "vn") return attribute(tokens, 1);
+  // Everything else (g, o, s, usemtl, mtllib, free-form geometry) does not
   // describe the polygonal surface; skipping it is what every OBJ consumer does.
 }
 
@@ -158,10 +176,80 @@ Index ObjReader::vertex_reference(std::string_view token) {
   return Index(r - 1);
 }
 
+// "vt u [v [w]]" (slot 0) or "vn x y z" (slot 1): every line of a kind must have as many
+// numbers as the first.
+void ObjReader::attribute(Tokens& tokens, int slot) {
+  Attribute& a = attributes_[slot];
+  const char* keyword = slot == 0 ? "vt" : "vn";
+  std::string_view token;
+  int count = 0;
+  while (tokens.next(token)) {
+    double value;
+    if (!parse_double(token, value) || !std::isfinite(value))
+      fail(fmt::format("expected a finite number in '{}', got '{}'", keyword, token));
+    a.values.push_back(value);
+    ++count;
+  }
+  if (count < 1 || count > 3) fail(fmt::format("'{}' takes 1 to 3 numbers, this one has {}", keyword, count));
+  if (a.components == 0) a.components = count;
+  if (count != a.components)
+    fail(fmt::format("this '{}' has {} numbers, the first one {}; give every {} the same count", keyword, count,
+                     a.components, keyword));
+}
+
+// The vt and vn numbers of a face corner "v/vt/vn" (either may be absent), 0-based.
+void ObjReader::corner_attributes(std::string_view token) {
+  for (int slot = 0; slot < 2; ++slot) {
+    std::size_t at = token.find('/');
+    for (int skip = 0; skip < slot && at != std::string_view::npos; ++skip) at = token.find('/', at + 1);
+    std::string_view part = at == std::string_view::npos ? std::string_view() : token.substr(at + 1);
+    part = part.substr(0, part.find('/'));
+    Attribute& a = attributes_[slot];
+    long long r = -1;
+    if (!part.empty()) {
+      if (!parse_integer(part, r) || r == 0)
+        fail(fmt::format("'{}': expected a {} number after the vertex number", token, slot == 0 ? "vt" : "vn"));
+      const long long known = (long long)(a.values.size() / std::max(1, a.components));
+      r = r < 0 ? known + r : r - 1;
+      if (r < 0) fail(fmt::format("'{}': a relative {} number reaches before the first one", token, slot == 0 ? "vt" : "vn"));
+    }
+    a.corners.push_back(r);
+    std::size_t& seen = r >= 0 ? a.line_with : a.line_without;
+    if (!seen) seen = line_;
+    if (r > a.largest) a.largest = r, a.largest_line = line_;
+  }
+}
+
+void ObjReader::finish_face_varying() {
+  const char* names[2] = {"uv", "normal"};
+  const ArrayRole roles[2] = {ArrayRole::TextureCoordinates, ArrayRole::Normals};
+  for (int slot = 0; slot < 2; ++slot) {
+    Attribute& a = attributes_[slot];
+    if (!a.line_with) continue;
+    const char* keyword = slot == 0 ? "vt" : "vn";
+    if (a.line_without) {
+      // A channel needs a value at every corner; a file that gives some only is still a mesh.
+      mesh_.warnings.push_back(fmt::format("{}:{}: this face gives no {} number while the face on line {} does; the "
+                                           "file's {} are left out (give every face one to keep them)",
+                                           file_.string(), a.line_without, keyword, a.line_with, keyword));
+      continue;
+    }
+    FaceVaryingArray f{names[slot], a.components, std::move(a.values), {}, roles[slot]};
+    if (a.largest >= f.value_count())
+      fail_at(file_, a.largest_line, fmt::format("this face uses {} number {}, but the file has {}", keyword,
+                                                 a.largest + 1, f.value_count()));
+    for (long long r : a.corners) f.indices.push_back(Index(r));
+    mesh_.face_varying.push_back(std::move(f));
+  }
+}
+
 void ObjReader::face(Tokens& tokens) {
   const std::size_t start = mesh_.face_vertices.size();
   std::string_view token;
-  while (tokens.next(token)) mesh_.face_vertices.push_back(vertex_reference(token));
+  while (tokens.next(token)) {
+    mesh_.face_vertices.push_back(vertex_reference(token));
+    corner_attributes(token);
+  }
   const std::size_t size = mesh_.face_vertices.size() - start;
   if (size < 3)
     fail(fmt::format("a face needs at least 3 vertices, this one has {}; remove the line or "

@@ -1,4 +1,5 @@
-// OBJ with polylines and Pixar's tags, readable by read_mesh and by OpenSubdiv's tools.
+// OBJ with polylines and Pixar's tags, readable by read_mesh and by OpenSubdiv's tools;
+// texture coordinates (face-varying or per vertex) as vt with their indices in the faces.
 // Coordinates are printed in their shortest form that reads back to the same double.
 #include "framework/io/writers.h"
 #include "framework/util/buffered_output.h"
@@ -17,6 +18,26 @@ void write_lists(BufferedOutput& out, const char* keyword, const std::vector<Ind
   }
 }
 
+// The texture coordinates to write as vt: a face-varying UV array, else per-vertex UVs
+// (indexed like the vertices); none when the mesh has neither.
+FaceVaryingArray texture_coordinates(const MeshData& mesh) {
+  for (const FaceVaryingArray& a : mesh.face_varying)
+    if (a.role == ArrayRole::TextureCoordinates && a.components <= 3) return a;
+  for (const DataArray& a : mesh.point_data)
+    if (a.role == ArrayRole::TextureCoordinates && a.components <= 3)
+      return {a.name, a.components, a.values, mesh.face_vertices, a.role};
+  return {};
+}
+
+void write_faces_with_uv(BufferedOutput& out, const MeshData& mesh, const std::vector<Index>& uv) {
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    out.print("f");
+    for (Index k = mesh.face_offsets[f]; k < mesh.face_offsets[f + 1]; ++k)
+      out.print(" {}/{}", mesh.face_vertices[k] + 1, uv[k] + 1);
+    out.print("\n");
+  }
+}
+
 }  // namespace
 
 void write_obj(const path& file, const path& shown, const MeshData& mesh) {
@@ -25,7 +46,14 @@ void write_obj(const path& file, const path& shown, const MeshData& mesh) {
             mesh.face_count(), mesh.line_count());
   const std::vector<double>& p = mesh.positions;
   for (std::size_t i = 0; i < p.size(); i += 3) out.print("v {} {} {}\n", p[i], p[i + 1], p[i + 2]);
-  write_lists(out, "f", mesh.face_offsets, mesh.face_vertices);
+  const FaceVaryingArray uv = texture_coordinates(mesh);
+  for (std::size_t i = 0; i < uv.values.size(); i += std::size_t(uv.components)) {
+    out.print("vt");
+    for (int c = 0; c < uv.components; ++c) out.print(" {}", uv.values[i + std::size_t(c)]);
+    out.print("\n");
+  }
+  if (uv.indices.empty()) write_lists(out, "f", mesh.face_offsets, mesh.face_vertices);
+  else write_faces_with_uv(out, mesh, uv.indices);
   write_lists(out, "l", mesh.line_offsets, mesh.line_vertices);
   // Tags number vertices from 0, as OpenSubdiv reads them.
   for (const CreaseTag& c : mesh.creases)

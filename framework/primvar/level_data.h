@@ -24,6 +24,7 @@ namespace subdiv {
 struct LevelData {
   std::vector<double> positions;  // xyz per vertex
   std::vector<DataArray> point_data, cell_data;
+  std::vector<FaceVaryingArray> face_varying;  // refined by face_varying.h, level by level
 };
 
 // The arrays a refinement carries: all but normals. The names of the arrays left out are

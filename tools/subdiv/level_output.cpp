@@ -5,6 +5,7 @@
 
 #include "framework/io/formats.h"
 #include "framework/io/mesh_level.h"
+#include "framework/io/mesh_seams.h"
 #include "framework/io/mesh_write.h"
 #include "framework/io/vtk/vtk_output.h"
 #include "framework/util/error.h"
@@ -68,12 +69,23 @@ OutputLevel describe_level(const Hierarchy& h, int l, const MeshData& mesh, cons
   return out;
 }
 
+// The face-varying indices of the faces that are not holes.
+std::vector<Index> corners_outside_holes(const Level& L, const std::vector<Index>& indices) {
+  if (L.face_hole.empty()) return indices;
+  std::vector<Index> kept;
+  for (Index f = 0; f < L.face_count(); ++f)
+    if (!L.is_hole(f)) kept.insert(kept.end(), indices.begin() + L.face_offsets[f], indices.begin() + L.face_offsets[f + 1]);
+  return kept;
+}
+
 // Level l as a mesh with the user's arrays; hole faces and their cell tuples left out.
 MeshData level_mesh(const Level& L, const LevelData& data) {
   MeshData mesh = mesh_from_level(L, data.positions);
   mesh.point_data = data.point_data;
   mesh.cell_data = data.cell_data;
   for (DataArray& a : mesh.cell_data) drop_hole_tuples(L, a);
+  mesh.face_varying = data.face_varying;
+  for (FaceVaryingArray& a : mesh.face_varying) a.indices = corners_outside_holes(L, a.indices);
   return mesh;
 }
 
@@ -95,16 +107,24 @@ void write_levels(const std::filesystem::path& out, const Hierarchy& h, const st
   std::vector<MeshData> meshes;
   meshes.reserve(h.levels.size());
   for (int l = 0; l <= finest; ++l) meshes.push_back(level_mesh(h.levels[l], data[l]));
+  for (const auto& a : finest_point_data) meshes[finest].point_data.push_back(a);
   if (ext != ".vtp" && ext != ".pvd") {
     meshes[finest].options = obj_tags;
-    for (const auto& a : finest_point_data) meshes[finest].point_data.push_back(a);
-    write_mesh(out, meshes[finest]);
+    // OBJ holds face-varying data as vt; the other formats get a point per side of a seam.
+    write_mesh(out, ext == ".obj" ? meshes[finest] : split_at_seams(meshes[finest]));
     return;
   }
   std::vector<OutputLevel> levels;
   std::vector<double> base_face;
-  for (int l = 0; l <= finest; ++l) levels.push_back(describe_level(h, l, meshes[l], features, base_face));
-  for (const auto& a : finest_point_data) levels.back().point_data.push_back(a);
+  for (int l = 0; l <= finest; ++l) {
+    const OutputLevel described = describe_level(h, l, meshes[l], features, base_face);
+    meshes[l].point_data = described.point_data;
+    meshes[l].cell_data = described.cell_data;
+    meshes[l] = split_at_seams(meshes[l]);  // ParaView shows per-point data only
+    OutputLevel level{&meshes[l], l, std::move(meshes[l].point_data), std::move(meshes[l].cell_data)};
+    meshes[l].point_data.clear(), meshes[l].cell_data.clear();
+    levels.push_back(std::move(level));
+  }
   if (ext == ".vtp") write_vtp(out, levels.back());
   else write_pvd(out, levels);
 }

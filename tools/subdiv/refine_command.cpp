@@ -15,6 +15,7 @@
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
 #include "framework/engine/refiner.h"
+#include "framework/primvar/face_varying.h"
 #include "framework/primvar/level_data.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
@@ -42,7 +43,8 @@ struct RefineArgs {
   bool limit = false;
   bool normals = false;  // --normals: limit normals without moving the points
   // Set when given on the command line, which then wins over the mesh file's option tags.
-  bool boundary_given = false, crease_method_given = false;
+  bool boundary_given = false, crease_method_given = false, fvar_boundary_given = false;
+  std::string fvar_boundary = "all";  // OpenSubdiv's default (Sdc::Options::FVAR_LINEAR_ALL)
   bool smooth_triangles = false;  // --smooth-triangles
 };
 
@@ -65,6 +67,13 @@ RefineArgs with_mesh_options(RefineArgs a, const MeshOptions& tags) {
   if (!a.boundary_given && tags.interpolate_boundary)
     a.boundary = *tags.interpolate_boundary == 0 ? "none" : *tags.interpolate_boundary == 2 ? "edges" : "edges-and-corners";
   if (!a.crease_method_given && tags.crease_method) a.crease_method = *tags.crease_method == "chaikin" ? "chaikin" : "uniform";
+  if (!a.fvar_boundary_given && tags.fvar_interpolate_boundary) {
+    FaceVaryingLinear mode = face_varying_linear_from_tag(*tags.fvar_interpolate_boundary);
+    // OpenSubdiv 2's "propagate corners" is what corners-plus2 adds to corners-plus1.
+    if (mode == FaceVaryingLinear::CornersPlus1 && tags.fvar_propagate_corners.value_or(0))
+      mode = FaceVaryingLinear::CornersPlus2;
+    a.fvar_boundary = face_varying_linear_name(mode);
+  }
   return a;
 }
 
@@ -113,6 +122,30 @@ MeshOptions used_options(const RefineOptions& o, const MeshOptions& tags, const 
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+FaceVaryingLinear fvar_mode(const RefineArgs& a) {
+  for (FaceVaryingLinear m : {FaceVaryingLinear::None, FaceVaryingLinear::CornersOnly, FaceVaryingLinear::CornersPlus1,
+                              FaceVaryingLinear::CornersPlus2, FaceVaryingLinear::Boundaries, FaceVaryingLinear::All})
+    if (a.fvar_boundary == face_varying_linear_name(m)) return m;
+  return FaceVaryingLinear::All;  // the option's check allows nothing else
+}
+
+// The mesh's face-varying arrays (OBJ vt) refined with the levels (framework/primvar/
+// face_varying.h); normals are left out, as for point data.
+void refine_face_varying_arrays(const SchemeSequence& seq, const Hierarchy& h, const MeshData& mesh,
+                                const RefineOptions& options, FaceVaryingLinear mode, std::vector<LevelData>& levels,
+                                std::vector<std::string>& notes) {
+  for (const FaceVaryingArray& a : mesh.face_varying) {
+    if (a.role == ArrayRole::Normals) {
+      notes.push_back(fmt::format("face-varying array '{}' holds normals, which refinement does not carry; "
+                                  "--normals writes the exact limit normals", a.name));
+      continue;
+    }
+    const auto refined = refine_face_varying(seq.runs, h, {a.values, a.indices}, a.components, mode, options);
+    for (size_t l = 0; l < levels.size(); ++l)
+      levels[l].face_varying.push_back({a.name, a.components, refined[l].values, refined[l].indices, a.role});
+  }
 }
 
 // --limit and --normals: limit normals (point data "normal"), and with --limit the finest
@@ -167,6 +200,7 @@ void run(const RefineArgs& a) {
                             a.scheme, given.total_levels, a.levels, a.levels));
   MeshCleanup cleanup;
   const MeshData mesh = drop_unrefinable(read_mesh(a.mesh), cleanup);
+  for (const auto& w : mesh.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
   for (const auto& w : cleanup.warnings(a.mesh)) fmt::print(stderr, "subdiv: warning: {}\n", w);
   const std::string triangles = triangles_choice(a, mesh.options, given);
   const SchemeSequence seq = triangles.empty() ? given : load_scheme_sequence(a.scheme, a.levels, with_triangles(a, triangles));
@@ -208,6 +242,7 @@ void run(const RefineArgs& a) {
     // Straight from the rules (no stencil tables), or a non-linear plugin rule.
     levels.push_back(next_level_data(seq.runs, h, l, levels.back(), options));
   }
+  refine_face_varying_arrays(seq, h, mesh, options, fvar_mode(with_mesh_options(a, mesh.options)), levels, notes);
   std::vector<double>& finest = levels.back().positions;
   std::vector<DataArray> limit_data;
   if (a.limit || a.normals) {
@@ -215,8 +250,12 @@ void run(const RefineArgs& a) {
     limit_data = apply_limits(a, seq, h, options, levels.back());
   }
   progress.say(fmt::format("writing {}", a.output));
-  write_levels(a.output, h, levels, options.features, limit_data,
-               used_options(options, mesh.options, seq));
+  MeshOptions used = used_options(options, mesh.options, seq);
+  if (!mesh.face_varying.empty() || used.fvar_interpolate_boundary) {
+    used.fvar_interpolate_boundary = int(fvar_mode(with_mesh_options(a, mesh.options)));
+    used.fvar_propagate_corners.reset();  // said by the mode written
+  }
+  write_levels(a.output, h, levels, options.features, limit_data, used);
   progress.done();
   if (!a.quiet) {
     for (const auto& note : notes) fmt::print("{}\n", note);
@@ -267,6 +306,13 @@ void add_refine_command(CLI::App& app) {
                 "Write the exact limit normals of the finest level's vertices as point data 'normal' (the vertices "
                 "stay where refinement put them). Normals in the input are not refined: a mix of unit normals is "
                 "no normal, so they are left out with a note");
+  cmd->add_option("--fvar-boundary", args->fvar_boundary,
+                  "Face-varying data (OBJ vt: UVs with seams), as OpenSubdiv's linear-interpolation modes: none "
+                  "(smooth everywhere), corners-only, corners-plus1, corners-plus2, boundaries (linear along seams "
+                  "and boundaries), all (bilinear, OpenSubdiv's default); a mesh's 't facevaryinginterpolateboundary' "
+                  "tag does the same unless this option is given")
+      ->check(CLI::IsMember({"none", "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"}))
+      ->capture_default_str();
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   cmd->footer("Example: subdiv refine examples/meshes/cube.obj --scheme catmull-clark --levels 3 -o cube.pvd");
   cmd->add_flag("--smooth-triangles", args->smooth_triangles,
@@ -276,6 +322,7 @@ void add_refine_command(CLI::App& app) {
     args->levels_given = levels->count() > 0;
     args->boundary_given = cmd->count("--boundary") > 0;
     args->crease_method_given = cmd->count("--crease-method") > 0;
+    args->fvar_boundary_given = cmd->count("--fvar-boundary") > 0;
     run(*args);
   });
 }
