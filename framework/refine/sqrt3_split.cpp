@@ -18,6 +18,16 @@
 // one feature edge; a triangle with two or three in an even step (its input did not come
 // from an odd sqrt3 step: --start-level 1 on another mesh, or a scheme sequence) keeps its
 // face point, joined to its corners and trisection points.
+//
+// Non-manifold levels (topology/level.h): the flip is defined for an edge with exactly two
+// faces that run it in opposite directions, the two triangles it turns into two others.
+// An edge with three or more faces, or two that run it the same way, has no such pair, so
+// it is treated like the boundary edges of Kobbelt's rule (section 5): kept, as a feature
+// edge, each of its faces gets the triangle(s) beside it that a boundary triangle gets, and
+// it is trisected in even steps. This matches what the rules already do at such an edge
+// (features/base_tags.h makes it infinitely sharp, as OpenSubdiv does), so the result is a
+// valid mesh with the same topology (Euler characteristic) as the input; the split says in
+// its warning how many non-manifold edges and vertices it met.
 #include <fmt/format.h>
 
 #include "framework/refine/child_tags.h"
@@ -28,7 +38,27 @@ namespace subdiv {
 namespace {
 
 bool is_feature_edge(const Level& L, Index e) {
-  return L.edge_on_boundary(e) || L.edge_sharp(e) > 0.f;
+  return L.edge_on_boundary(e) || L.edge_sharp(e) > 0.f || L.non_manifold_edge(e);
+}
+
+// True when face f runs edge e from its first vertex to its second. On a manifold level the
+// slot in edge_faces says it; the faces of a non-manifold edge are in no particular order.
+bool runs_forward(const Level& L, Index f, Index e) {
+  for (Index i = L.face_offsets[f]; i < L.face_offsets[f + 1]; ++i)
+    if (L.face_edges[i] == e) return L.face_vertices[i] == L.edge_vertices[2 * e];
+  return false;
+}
+
+// The warning of a non-manifold level, or empty.
+std::string non_manifold_warning(const Level& L) {
+  if (L.manifold()) return {};
+  Index edges = 0, vertices = 0;
+  for (Index e = 0; e < L.edge_count(); ++e) edges += L.non_manifold_edge(e);
+  for (Index v = 0; v < L.vertex_count; ++v) vertices += L.non_manifold_vertex(v);
+  return fmt::format("the sqrt3 split does not flip an edge without two consistently oriented faces, so it kept "
+                     "{} non-manifold edge(s) as sharp creases (trisected every second step, like a boundary); "
+                     "{} non-manifold vertex/vertices took the corner or crease rule",
+                     edges, vertices);
 }
 
 struct Sqrt3Builder {
@@ -87,6 +117,10 @@ struct Sqrt3Builder {
   void add_edge(Index e) {
     const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
     const Index f0 = L.edge_faces[2 * e], f1 = L.edge_faces[2 * e + 1];
+    if (L.non_manifold_edge(e)) {
+      for (Index f : L.faces_of_edge(e)) runs_forward(L, f, e) ? add_feature_side(e, f, a, b) : add_feature_side(e, f, b, a);
+      return;
+    }
     if (is_feature_edge(L, e)) {
       add_feature_side(e, f0, a, b);
       if (f1 != kNone) add_feature_side(e, f1, b, a);
@@ -134,7 +168,7 @@ SplitResult split_sqrt3(const Level& parent, int step_index) {
       }
   for (Index e = 0; e < E; ++e) b.add_edge(e);
   o.parent_face = std::move(b.parent_face);
-  SplitResult result{build_level(next, b.offsets, b.corners), std::move(o), trisect};
+  SplitResult result{build_level(next, b.offsets, b.corners), std::move(o), trisect, non_manifold_warning(parent)};
 
   // Feature tags: a sharp edge's pieces keep its (decremented) sharpness.
   Level& child = result.child;
