@@ -30,6 +30,7 @@
 // its warning how many non-manifold edges and vertices it met.
 #include <fmt/format.h>
 
+#include "framework/features/sharpness.h"
 #include "framework/refine/child_tags.h"
 #include "framework/refine/splitter.h"
 #include "framework/util/error.h"
@@ -47,6 +48,19 @@ bool runs_forward(const Level& L, Index f, Index e) {
   for (Index i = L.face_offsets[f]; i < L.face_offsets[f + 1]; ++i)
     if (L.face_edges[i] == e) return L.face_vertices[i] == L.edge_vertices[2 * e];
   return false;
+}
+
+// Every non-manifold edge is infinitely sharp (features/base_tags.h). The pieces of a parent's
+// non-manifold edge inherit that above; a collapsed face ((a, b, b), topology/level_builder.cpp)
+// also gives non-manifold edges with no such parent, from its face point to its corners, and
+// those get it here, so that the rules find them a crease rule.
+void sharpen_new_non_manifold_edges(Level& child) {
+  if (child.manifold()) return;
+  for (Index e = 0; e < child.edge_count(); ++e) {
+    if (!child.non_manifold_edge(e) || child.edge_sharp(e) >= kInfinitelySharp) continue;
+    if (child.edge_sharpness.empty()) child.edge_sharpness.assign(child.edge_count(), 0.f);
+    child.edge_sharpness[e] = kInfinitelySharp;
+  }
 }
 
 // The warning of a non-manifold level, or empty.
@@ -186,9 +200,10 @@ SplitResult split_sqrt3(const Level& parent, int step_index) {
       if (trisect) chain.insert(chain.end(), {b.trisection_base[e], b.trisection_base[e] + 1});
       chain.push_back(bb);
       for (size_t i = 0; i + 1 < chain.size(); ++i)
-        child.edge_sharpness[find_edge(child, chain[i], chain[i + 1])] = s;
+        if (const Index piece = find_edge(child, chain[i], chain[i + 1]); piece != kNone) child.edge_sharpness[piece] = s;
     }
   }
+  sharpen_new_non_manifold_edges(child);
   return result;
 }
 
