@@ -28,6 +28,7 @@
 // (features/base_tags.h makes it infinitely sharp, as OpenSubdiv does), so the result is a
 // valid mesh with the same topology (Euler characteristic) as the input; the split says in
 // its warning how many non-manifold edges and vertices it met.
+#include <algorithm>
 #include <fmt/format.h>
 
 #include "framework/features/sharpness.h"
@@ -42,11 +43,12 @@ bool is_feature_edge(const Level& L, Index e) {
   return L.edge_on_boundary(e) || L.edge_sharp(e) > 0.f || L.non_manifold_edge(e);
 }
 
-// True when face f runs edge e from its first vertex to its second. On a manifold level the
-// slot in edge_faces says it; the faces of a non-manifold edge are in no particular order.
-bool runs_forward(const Level& L, Index f, Index e) {
+// True when face f, at its `occurrence`-th use of edge e (a collapsed face (a, b, b) runs
+// a-b twice, once each way), runs e from its first vertex to its second. On a manifold level
+// the slot in edge_faces says it; the faces of a non-manifold edge are in no particular order.
+bool runs_forward(const Level& L, Index f, Index e, int occurrence) {
   for (Index i = L.face_offsets[f]; i < L.face_offsets[f + 1]; ++i)
-    if (L.face_edges[i] == e) return L.face_vertices[i] == L.edge_vertices[2 * e];
+    if (L.face_edges[i] == e && occurrence-- == 0) return L.face_vertices[i] == L.edge_vertices[2 * e];
   return false;
 }
 
@@ -116,7 +118,11 @@ struct Sqrt3Builder {
     }
     const Index c = face_point[f];
     if (!trisect) return add_triangle(a, b, c, f);
-    const Index p_near_a = trisection_point(e, a), p_near_b = trisection_point(e, b);
+    // An edge from a vertex to itself (a collapsed face's) is run from its first point to its
+    // second: its two ends cannot tell them apart.
+    const bool loop = a == b;
+    const Index p_near_a = loop ? trisection_base[e] : trisection_point(e, a);
+    const Index p_near_b = loop ? trisection_base[e] + 1 : trisection_point(e, b);
     add_triangle(a, p_near_a, c, f);
     add_triangle(p_near_a, p_near_b, c, f);
     add_triangle(p_near_b, b, c, f);
@@ -132,7 +138,11 @@ struct Sqrt3Builder {
     const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
     const Index f0 = L.edge_faces[2 * e], f1 = L.edge_faces[2 * e + 1];
     if (L.non_manifold_edge(e)) {
-      for (Index f : L.faces_of_edge(e)) runs_forward(L, f, e) ? add_feature_side(e, f, a, b) : add_feature_side(e, f, b, a);
+      const auto faces = L.faces_of_edge(e);  // a face that uses e twice is listed twice
+      for (size_t i = 0; i < faces.size(); ++i) {
+        const int occurrence = int(std::count(faces.begin(), faces.begin() + i, faces[i]));
+        runs_forward(L, faces[i], e, occurrence) ? add_feature_side(e, faces[i], a, b) : add_feature_side(e, faces[i], b, a);
+      }
       return;
     }
     if (is_feature_edge(L, e)) {

@@ -5,6 +5,7 @@
 // mesh away from the non-manifold edge refines as it would without it.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -130,4 +131,39 @@ TEST_CASE("sqrt3: the mesh away from a non-manifold edge refines as without it")
     }
   CHECK(compared > 20);
   CHECK(near_moved > 0);  // the crease does change the surface near it
+}
+
+TEST_CASE("sqrt3 on faces with fewer than 3 distinct vertices: every new point used, a warning per level") {
+  // No Euler characteristic here: the split rebuilds each level's edges from its faces, and
+  // the parallel edges of a collapsed face (a-b run twice) become one, so the count of edges
+  // is not the input's. What must hold: a valid level with no stray vertex (each of an edge
+  // from a vertex to itself gets both its trisection points) and finite positions.
+  const auto m = collapsed_faces(true);
+  const Hierarchy h = sqrt3_refined(m, 3);
+  for (int l = 1; l <= 3; ++l) {
+    CAPTURE(l);
+    const Level& L = h.levels[size_t(l)];
+    std::vector<char> used(size_t(L.vertex_count), 0);
+    for (Index v : L.face_vertices) used[size_t(v)] = 1;
+    CHECK(std::count(used.begin(), used.end(), 0) == 0);
+    for (double x : interpolate(h, l, m.mesh.positions, 3)) REQUIRE(std::isfinite(x));
+  }
+  CHECK(h.warnings.size() == 3);
+  // The collapsed triangle (a, b, b) runs a-b once each way, so its face point p gets one
+  // child triangle each way: (a, b, p) and (b, a, p).
+  const Level& base = h.levels[0];
+  const Index collapsed = base.face_count() - 2;
+  const Index a = base.face(collapsed)[0], b = base.face(collapsed)[1];
+  int forward = 0, backward = 0;
+  const Level& child = h.levels[1];
+  for (Index f = 0; f < child.face_count(); ++f) {
+    if (h.origins[0].parent_face[size_t(f)] != collapsed) continue;
+    const auto c = child.face(f);
+    for (int i = 0; i < 3; ++i) {
+      forward += c[i] == a && c[(i + 1) % 3] == b;
+      backward += c[i] == b && c[(i + 1) % 3] == a;
+    }
+  }
+  CHECK(forward == 1);
+  CHECK(backward == 1);
 }
