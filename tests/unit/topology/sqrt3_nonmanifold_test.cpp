@@ -134,10 +134,11 @@ TEST_CASE("sqrt3: the mesh away from a non-manifold edge refines as without it")
 }
 
 TEST_CASE("sqrt3 on faces with fewer than 3 distinct vertices: every new point used, a warning per level") {
-  // No Euler characteristic here: the split rebuilds each level's edges from its faces, and
-  // the parallel edges of a collapsed face (a-b run twice) become one, so the count of edges
-  // is not the input's. What must hold: a valid level with no stray vertex (each of an edge
-  // from a vertex to itself gets both its trisection points) and finite positions.
+  // No Euler characteristic here: it changes in the first trisecting step, where the edges
+  // from a vertex to itself are cut (the split rebuilds each level's edges from its faces,
+  // which need not count such edges as the input did). What must hold: a valid level with
+  // no stray vertex (an edge from a vertex to itself uses both its trisection points) and
+  // finite positions.
   const auto m = collapsed_faces(true);
   const Hierarchy h = sqrt3_refined(m, 3);
   for (int l = 1; l <= 3; ++l) {
