@@ -2,7 +2,7 @@
 # always). framework/CMakeLists.txt builds one object library per layer from this table,
 # and tests/architecture checks every #include "framework/..." against it, so a file in a
 # lower layer cannot include a higher one. docs/architecture.md draws the same table.
-set(SUBDIV_LAYERS util topology features stencil refine rules scheme engine io analysis curve
+set(SUBDIV_LAYERS util topology features stencil refine rules scheme engine io primvar analysis curve
     interpolation plugin)
 set(SUBDIV_LAYER_USES_util "")
 set(SUBDIV_LAYER_USES_topology util)
@@ -13,6 +13,7 @@ set(SUBDIV_LAYER_USES_rules util topology features stencil refine)
 set(SUBDIV_LAYER_USES_scheme util topology features refine rules)
 set(SUBDIV_LAYER_USES_engine util topology features stencil refine rules scheme)
 set(SUBDIV_LAYER_USES_io util topology)
+set(SUBDIV_LAYER_USES_primvar util topology refine scheme engine io)
 set(SUBDIV_LAYER_USES_analysis util topology features stencil refine rules scheme engine io)
 set(SUBDIV_LAYER_USES_curve util topology stencil rules scheme io analysis)
 set(SUBDIV_LAYER_USES_interpolation util topology features stencil refine rules scheme engine analysis curve)

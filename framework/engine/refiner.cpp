@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <limits>
 
+#include "framework/engine/vertex_parameters.h"
 #include "framework/features/base_tags.h"
 #include "framework/rules/stencil_builder.h"
 #include "framework/rules/step_evaluator.h"
@@ -56,37 +57,47 @@ int max_valence(const Level& level) {
   return m;
 }
 
-// What one step's rows need besides the topology: its weight tables and feature contexts.
+// What one step's rows need besides the topology: its weight tables (and, with per-vertex
+// parameters, its vertex rules per vertex) and feature contexts.
 struct StepInputs {
   WeightTables tables;
+  std::unique_ptr<PerVertexTables> per_vertex;
   FeatureContexts features;
 };
 
+// `values`: the per-vertex parameters on `parent`.
 StepInputs prepare_step(const Scheme& scheme, const StepRules& step, const Level& parent, int level,
-                        const RefineOptions& options) {
-  return {step_weight_tables(scheme, step, max_valence(parent), parent.max_face_size(), level),
+                        const RefineOptions& options, const VertexParameters& values) {
+  const int max_n = max_valence(parent), max_k = parent.max_face_size();
+  return {step_weight_tables(scheme, step, max_n, max_k, level),
+          per_vertex_tables(scheme, step, parent, values, max_n, max_k, level),
           classify_features(parent, options.features)};
 }
 
 StepContext step_context(const Scheme& scheme, const StepRules& step, const StepInputs& inputs, const Level& parent,
                          const ChildOrigins& origins, bool features_refined, int level, const RefineOptions& options) {
-  return {parent,      origins,           inputs.tables, inputs.features,       features_refined,
-          scheme.path, step.code.get(),   level,         options.use_row_plans};
+  // Row plans replay one vertex's row for another of the same shape: not when their rules differ.
+  const bool plans = options.use_row_plans && !inputs.per_vertex;
+  StepContext s{parent,      origins,         inputs.tables, inputs.features, features_refined,
+                scheme.path, step.code.get(), level,         plans};
+  s.per_vertex = inputs.per_vertex.get();
+  return s;
 }
 
 // One step's stencils: `parent` values to the values of the step's output vertices.
 StencilTable step_stencils(const Scheme& scheme, const StepRules& step, const Level& parent,
                            const ChildOrigins& origins, bool features_refined, int level,
-                           const RefineOptions& options) {
-  const StepInputs inputs = prepare_step(scheme, step, parent, level, options);
+                           const RefineOptions& options, const VertexParameters& values) {
+  const StepInputs inputs = prepare_step(scheme, step, parent, level, options, values);
   return build_step_stencils(step_context(scheme, step, inputs, parent, origins, features_refined, level, options));
 }
 
 // One step applied to values without a table (rules/step_evaluator.h).
 std::vector<double> step_rows_applied(const Scheme& scheme, const StepRules& step, const Level& parent,
                                       const ChildOrigins& origins, bool features_refined, int level,
-                                      const RefineOptions& options, std::span<const double> values, int channels) {
-  const StepInputs inputs = prepare_step(scheme, step, parent, level, options);
+                                      const RefineOptions& options, const VertexParameters& parameters,
+                                      std::span<const double> values, int channels) {
+  const StepInputs inputs = prepare_step(scheme, step, parent, level, options, parameters);
   std::vector<double> out;
   resize_bulk(out, origins.kind.size() * size_t(channels));
   apply_step_rows(step_context(scheme, step, inputs, parent, origins, features_refined, level, options), values, out,
@@ -175,9 +186,12 @@ void build_stencils(std::span<const SchemeRun> runs, Hierarchy& h, const RefineO
   if (per_level.size() + 1 != h.levels.size())
     throw Error(fmt::format("build_stencils: the runs give {} levels but the hierarchy has {}", per_level.size(),
                             h.levels.size() - 1));
+  check_vertex_parameters(runs, h.levels[0], options.vertex_parameters);
   h.stencils.clear();
   h.direct.assign(per_level.size(), nullptr);
+  VertexParameters parameters = options.vertex_parameters;  // on level l
   for (size_t l = 0; l < per_level.size(); ++l) {
+    if (l > 0) parameters = carry_vertex_parameters(h.levels[l - 1], h.origins[l - 1], parameters);
     const Scheme& scheme = *per_level[l];
     const int level = options.first_step + int(l);
     if (scheme.steps.front().nonlinear) {
@@ -188,11 +202,14 @@ void build_stencils(std::span<const SchemeRun> runs, Hierarchy& h, const RefineO
       continue;
     }
     StencilTable table = step_stencils(scheme, scheme.steps.front(), h.levels[l], h.origins[l],
-                                       h.features_refined[l], level, options);
+                                       h.features_refined[l], level, options, parameters);
     // Smoothing passes move the new level's vertices; compose them into one table.
+    const VertexParameters on_child =
+        scheme.steps.size() > 1 ? carry_vertex_parameters(h.levels[l], h.origins[l], parameters) : VertexParameters{};
     for (size_t s = 1; s < scheme.steps.size(); ++s) {
       const Level& child = h.levels[l + 1];
-      table = compose(table, step_stencils(scheme, scheme.steps[s], child, identity_origins(child), true, level, options));
+      table = compose(table, step_stencils(scheme, scheme.steps[s], child, identity_origins(child), true, level,
+                                           options, on_child));
     }
     h.stencils.push_back(std::move(table));
   }
@@ -252,14 +269,21 @@ std::vector<double> step_values(std::span<const SchemeRun> runs, const Hierarchy
   const int level = options.first_step + step;
   if (scheme.steps.front().nonlinear)
     return run_direct_step(*direct_step(scheme, h, size_t(step), level, options), h, step, values, channels);
+  check_vertex_parameters(runs, h.levels[0], options.vertex_parameters);
+  VertexParameters parameters = options.vertex_parameters;
+  for (int l = 0; l < step && !parameters.empty(); ++l)
+    parameters = carry_vertex_parameters(h.levels[l], h.origins[l], parameters);
   std::vector<double> out = step_rows_applied(scheme, scheme.steps.front(), h.levels[step], h.origins[step],
-                                              h.features_refined[step], level, options, values, channels);
+                                              h.features_refined[step], level, options, parameters, values, channels);
   // Smoothing passes, one after another (build_stencils composes their tables instead, so
   // the last bits may differ).
   const Level& child = h.levels[step + 1];
   const ChildOrigins same = scheme.steps.size() > 1 ? identity_origins(child) : ChildOrigins{};
+  const VertexParameters on_child = scheme.steps.size() > 1 && !parameters.empty()
+                                        ? carry_vertex_parameters(h.levels[step], h.origins[step], parameters)
+                                        : VertexParameters{};
   for (size_t s = 1; s < scheme.steps.size(); ++s)
-    out = step_rows_applied(scheme, scheme.steps[s], child, same, true, level, options, out, channels);
+    out = step_rows_applied(scheme, scheme.steps[s], child, same, true, level, options, on_child, out, channels);
   return out;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The engine's driver: refine topology level by level, then carry any per-vertex data to
 // the finer levels, through one stencil table per step or straight from the rules.
+#include <map>
 #include <memory>
 #include <span>
 #include <string>
@@ -16,6 +17,9 @@
 
 namespace subdiv {
 
+// Parameter name -> one value per vertex of the base mesh.
+using VertexParameters = std::map<std::string, std::vector<double>>;
+
 struct RefineOptions {
   int levels = 1;
   FeatureOptions features;  // boundary interpolation and crease method, as in OpenSubdiv
@@ -27,6 +31,11 @@ struct RefineOptions {
   // Smooth interior rows replayed from learnt plans (rules/row_plans.h): the same rows,
   // faster; off only to compare or measure.
   bool use_row_plans = true;
+  // Values of the schemes' per-vertex parameters ("per_vertex": true in the scheme file,
+  // e.g. seed 001's lambda), one per base vertex: a vertex rule reads the value at its
+  // vertex; later levels carry them linearly (engine/vertex_parameters.h). Schemes that
+  // do not declare a name ignore it; a name no scheme of the run declares is an error.
+  VertexParameters vertex_parameters;
 };
 
 // A step of a non-linear scheme (plugins, rules/code_rules.h): applied to the values

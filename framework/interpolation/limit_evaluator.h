@@ -5,7 +5,7 @@
 // Progressive interpolation (progressive.h) only needs this operator. The evaluators are
 // the masks of the scheme's own eigen-analysis (analysed_limit.h, any linear scheme with
 // vertex points), dual schemes' V-face centroids (dual_limits.h), interpolatory schemes'
-// identity (interpolatory_limit.h), seed 001's closed form (shape_two_step.h), and any a
+// identity (interpolatory_limit.h), the composite of a sequence (limit_selection.h), and any a
 // plugin registers (limit_selection.h). Refining a few levels and taking the points as
 // "nearly converged" is deliberately not offered: an approximate limit would make the
 // interpolation converge to the wrong surface.

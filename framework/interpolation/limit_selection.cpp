@@ -10,7 +10,6 @@
 #include "framework/interpolation/analysed_limit.h"
 #include "framework/interpolation/dual_limits.h"
 #include "framework/interpolation/interpolatory_limit.h"
-#include "framework/interpolation/shape_two_step.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
@@ -29,11 +28,14 @@ Registry& registry() {
   return r;
 }
 
-RefineOptions refine_options(const LimitSelectionOptions& o, int levels, int first_step) {
+// The options of a refinement from the base mesh (with the per-vertex parameters) or, with
+// from_base false, from a level further down (which the base's values do not fit).
+RefineOptions refine_options(const LimitSelectionOptions& o, int levels, int first_step, bool from_base) {
   RefineOptions r;
   r.levels = levels;
   r.features = o.features;
   r.first_step = first_step;
+  if (from_base) r.vertex_parameters = o.vertex_parameters;
   return r;
 }
 
@@ -84,35 +86,26 @@ std::vector<SchemeRun> as_runs(const std::vector<CompositeLimit::Run>& prefix) {
   return runs;
 }
 
-// Seed 001's per-vertex lambda replaces the first step's vertex rows; the first step must
-// be one level of a scheme whose stencils at its own lambda are seed 001's shape rule.
-void apply_lambda(Hierarchy& h, const Scheme& first, const LimitSelectionOptions& o) {
-  if (o.lambda.empty()) return;
-  if (h.stencils.empty())
-    throw Error("a per-vertex lambda needs seed 001's shape step first: a sequence whose first scheme, run for one "
-                "level, has a parameter 'lambda' (SHAPE:1,REPEAT)");
-  const auto params = first.parameter_values();
-  const auto it = params.find("lambda");
-  if (it == params.end())
-    throw Error(fmt::format("lambda per vertex: the first scheme '{}' has no parameter 'lambda'; seed 001's method "
-                            "starts with a shape step that has one (a sequence SHAPE:1,REPEAT)", first.name));
-  const Level& base = h.levels[0];
-  check_shape_lambda(o.lambda, base.vertex_count, "lambda");
-  const double own = it->second;
-  const StencilTable same = shape_first_step(base, h.origins[0], h.stencils[0], std::span(&own, 1), o.features);
-  for (Index r = 0; r < h.stencils[0].row_count(); ++r)
-    if (auto why = row_mismatch(h.stencils[0], r, same, r); !why.empty())
-      throw Error(fmt::format("lambda per vertex: the first scheme '{}' is not seed 001's shape step (new vertex {}: "
-                              "{}); start the sequence with a shape step, SHAPE:1,REPEAT", first.name, r, why));
-  h.stencils[0] = shape_first_step(base, h.origins[0], h.stencils[0], o.lambda, o.features);
-}
-
 Hierarchy refine_prefix(const std::vector<CompositeLimit::Run>& prefix, const Level& level,
                         const LimitSelectionOptions& o, int step) {
   const auto runs = as_runs(prefix);
-  Hierarchy h = refine(runs, level, refine_options(o, 0, step));
-  if (!prefix.empty()) apply_lambda(h, *prefix.front().scheme, o);
-  return h;
+  return refine(runs, level, refine_options(o, 0, step, !prefix.empty()));
+}
+
+// Per-vertex parameters shape the prefix only: the tail's mask comes from its
+// eigen-analysis at one value of each parameter, which per-vertex values would break.
+void check_vertex_parameters_in_prefix(const SchemeSequence& seq, const LimitSelectionOptions& o) {
+  const Scheme& tail = *seq.schemes.back();
+  for (const auto& [name, values] : o.vertex_parameters) {
+    for (const ParameterSpec& p : tail.parameters)
+      if (p.name == name && p.per_vertex)
+        throw Error(fmt::format("per-vertex parameter '{}': '{}' is applied forever (the last scheme of the sequence), "
+                                "and limit masks are known for one value of '{}' only; give it per vertex to a first "
+                                "run (e.g. {}:1,...) or give one value with --param", name, tail.name, name, tail.name));
+    if (seq.runs.size() < 2)
+      throw Error(fmt::format("per-vertex parameter '{}': the sequence has no first run that reads it (a sequence "
+                              "SHAPE:1,REPEAT)", name));
+  }
 }
 
 // The identity first (cheap, and exact for interpolatory schemes), then the scheme's own
@@ -250,7 +243,9 @@ CompositeLimit::CompositeLimit(std::vector<Run> prefix, std::shared_ptr<const Li
 std::string CompositeLimit::name() const {
   std::string runs;
   for (const auto& r : prefix_) runs += fmt::format("{}{}:{}", runs.empty() ? "" : ",", r.scheme->name, r.levels);
-  return fmt::format("{} after {}{}", tail_->name(), runs, options_.lambda.empty() ? "" : " (lambda per vertex)");
+  std::string per_vertex;
+  for (const auto& [name, values] : options_.vertex_parameters) per_vertex += fmt::format(", {} per vertex", name);
+  return fmt::format("{} after {}{}", tail_->name(), runs, per_vertex);
 }
 
 StencilTable CompositeLimit::stencils_at(const Level& level, int step) const {
@@ -262,9 +257,7 @@ StencilTable CompositeLimit::stencils_at(const Level& level, int step) const {
 }
 
 Hierarchy refine_for_limit(const SchemeSequence& seq, const Level& base, const LimitSelectionOptions& o) {
-  Hierarchy h = refine(seq.runs, base, refine_options(o, 0, o.first_step));
-  if (!o.lambda.empty() && !seq.runs.empty()) apply_lambda(h, *seq.runs.front().scheme, o);
-  return h;
+  return refine(seq.runs, base, refine_options(o, 0, o.first_step, true));
 }
 
 LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const LimitSelectionOptions& o) {
@@ -276,16 +269,14 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
       prefix.push_back({seq.schemes[i], seq.runs[i].levels});
       prefix_levels += seq.runs[i].levels;
     }
-  if (!o.lambda.empty() && (prefix.empty() || prefix.front().levels != 1))
-    throw Error("a per-vertex lambda is seed 001's: the first run must be one level of its shape step "
-                "(a sequence SHAPE:1,REPEAT)");
+  if (!o.vertex_parameters.empty()) check_vertex_parameters_in_prefix(seq, o);
   const Scheme& tail = *seq.schemes.back();
 
   // The tail's mask on the level after the prefix, checked there.
   const Hierarchy h = refine_prefix(prefix, base, o, o.first_step);
   const Level& level = h.levels.back();
   const int tail_step = o.first_step + prefix_levels;
-  const RefineOptions step = refine_options(o, 1, tail_step);
+  const RefineOptions step = refine_options(o, 1, tail_step, false);
   const CheckSteps check = check_steps(tail, level, step);
   std::shared_ptr<const LimitEvaluator> tail_mask;
   std::vector<std::string> refused;
@@ -336,25 +327,7 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
   if (prefix.empty()) return {tail_mask, fmt::format("{} ({} on this mesh)", tail_mask->name(), checked)};
 
   auto composite = std::make_shared<CompositeLimit>(prefix, tail_mask, o);
-  LimitChoice choice{composite, fmt::format("{} (tail {} on the level after the prefix)", composite->name(), checked)};
-  // Seed 001's formula (2), when the prefix is one level of a scheme with a lambda and the
-  // formula agrees with the composite on this mesh.
-  const auto params = prefix.front().scheme->parameter_values();
-  const auto lambda = params.find("lambda");
-  if (prefix.size() == 1 && prefix.front().levels == 1 && (lambda != params.end() || !o.lambda.empty())) {
-    try {
-      auto formula = o.lambda.empty() ? std::make_shared<ShapeTwoStepLimit>(lambda->second)
-                                      : std::make_shared<ShapeTwoStepLimit>(o.lambda);
-      const StencilTable a = formula->limit_stencils(base), b = composite->limit_stencils(base, o.first_step);
-      bool same = true;
-      for (Index v = 0; v < base.vertex_count && same; ++v) same = row_mismatch(a, v, b, v).empty();
-      if (same)
-        return {formula, fmt::format("{} (equal to {} on this mesh)", formula->name(), composite->name())};
-    } catch (const Error&) {
-      // Not a closed quad mesh, or lambda outside the formula's range: the composite stands.
-    }
-  }
-  return choice;
+  return {composite, fmt::format("{} (tail {} on the level after the prefix)", composite->name(), checked)};
 }
 
 }  // namespace subdiv

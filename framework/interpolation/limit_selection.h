@@ -19,11 +19,11 @@
 // local subdivision matrices have no convergent eigenvector of 1) is refused with each
 // candidate's reason.
 //
-// Sequences "A:k,...,B" (seed 001's "catmull-clark-shape:1,catmull-clark"): the prefix
+// Sequences "A:k,...,B" (seed 001's two-step scheme is "shape step:1, then Catmull-Clark"): the prefix
 // runs are applied once and B forever after, so the limit is B's mask on the level after
 // the prefix composed with the prefix's stencils (CompositeLimit), read at the base
-// vertices' vertex points. Closed forms for whole sequences (seed 001's formula (2)) are
-// tried against that composite and used when they agree.
+// vertices' vertex points. Seed 001's closed form (2) is this composite for its two-step
+// sequence (tests/unit/interpolation/shape_two_step_test.cpp checks them against each other).
 #include <functional>
 #include <memory>
 #include <string>
@@ -45,10 +45,9 @@ std::vector<std::string> limit_mask_provider_names();
 struct LimitSelectionOptions {
   FeatureOptions features;
   int first_step = 0;  // as RefineOptions::first_step
-  // Seed 001's lambda per vertex (or one value) for the first run, which must be one level
-  // of a scheme whose vertex rule is seed 001's shape rule (checked against its stencils at
-  // its own lambda). Empty: the schemes' own parameters.
-  std::vector<double> lambda;
+  // Per-vertex parameters of the sequence's first runs (RefineOptions::vertex_parameters),
+  // e.g. seed 001's lambda; the last scheme, applied forever, must not read them per vertex.
+  VertexParameters vertex_parameters;
 };
 
 struct LimitChoice {
@@ -60,7 +59,7 @@ struct LimitChoice {
 LimitChoice select_limit(const SchemeSequence& sequence, const Level& base, const LimitSelectionOptions& options = {});
 
 // The refinement the interpolated control mesh is shown with: the sequence's runs, with the
-// first step's stencils rewritten when options.lambda is given.
+// per-vertex parameters.
 Hierarchy refine_for_limit(const SchemeSequence& sequence, const Level& base, const LimitSelectionOptions& options);
 
 // Empty when `evaluator` satisfies l S = l for two steps of `scheme` from `level`; else the

@@ -11,6 +11,20 @@ std::vector<std::string> MeshCleanup::warnings(const std::string& source) const 
   return out;
 }
 
+namespace {
+
+// The tuples of `a` whose new number (new_index[i]) is not kNone, in order.
+DataArray kept_tuples(const DataArray& a, const std::vector<Index>& new_index) {
+  DataArray out = a;
+  out.values.clear();
+  const size_t c = size_t(a.components);
+  for (size_t i = 0; i < new_index.size(); ++i)
+    if (new_index[i] != kNone) out.values.insert(out.values.end(), a.values.begin() + i * c, a.values.begin() + (i + 1) * c);
+  return out;
+}
+
+}  // namespace
+
 MeshData drop_unrefinable(const MeshData& mesh, MeshCleanup& report) {
   report = {};
   // Indices out of range are the validator's and the level builder's to refuse, by name.
@@ -42,6 +56,8 @@ MeshData drop_unrefinable(const MeshData& mesh, MeshCleanup& report) {
     if (new_vertex[c.v] != kNone) out.corners.push_back({new_vertex[c.v], c.sharpness});
   out.holes = mesh.holes;
   out.options = mesh.options;
+  for (const DataArray& a : mesh.point_data) out.point_data.push_back(kept_tuples(a, new_vertex));
+  out.cell_data = mesh.cell_data;  // every face is kept
   return out;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // A mesh as read from or written to a file: positions, polygons, polylines and feature tags.
 // This is the exchange type between io/ and the engine; it knows nothing of refinement.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,21 @@ struct MeshOptions {
   }
 };
 
+// What an array means, where a format says it (VTK's active attributes, PLY's property
+// names): texture coordinates and colours are refined like any data; normals are not
+// (a linear combination of unit normals is not a normal), they are dropped on refinement.
+enum class ArrayRole : std::uint8_t { Data, Normals, TextureCoordinates, Color };
+
+// A named array of `components` values per tuple (a vertex, a face). Integer arrays hold
+// whole numbers that fit an int (vtkIntArray in .vtp); the others are doubles.
+struct DataArray {
+  std::string name;
+  int components = 1;
+  std::vector<double> values;
+  bool integer = false;
+  ArrayRole role = ArrayRole::Data;
+};
+
 struct MeshData {
   std::vector<double> positions;  // xyz per vertex
   std::vector<Index> face_offsets{0};
@@ -41,6 +57,8 @@ struct MeshData {
   std::vector<CornerTag> corners;  // OBJ 't corner'
   std::vector<Index> holes;        // OBJ 't hole', feature sidecar "holes": faces left out of the surface
   MeshOptions options;             // OBJ option tags
+  std::vector<DataArray> point_data;  // one tuple per vertex (the user's arrays)
+  std::vector<DataArray> cell_data;   // one tuple per face
 
   Index vertex_count() const { return Index(positions.size() / 3); }
   Index face_count() const { return Index(face_offsets.size()) - 1; }

@@ -81,6 +81,29 @@ void check_tags(const MeshData& mesh, std::string_view context) {
                                 f, mesh.face_count()));
 }
 
+// Names unique per kind, one tuple per element, integer arrays whole.
+void check_data_arrays(const std::vector<DataArray>& arrays, Index tuples, const char* per,
+                       std::string_view context) {
+  for (size_t i = 0; i < arrays.size(); ++i) {
+    const DataArray& a = arrays[i];
+    if (a.name.empty()) fail(context, fmt::format("a {} data array has no name", per));
+    for (size_t j = 0; j < i; ++j)
+      if (arrays[j].name == a.name) fail(context, fmt::format("two {} data arrays are named '{}'", per, a.name));
+    if (a.components < 1)
+      fail(context, fmt::format("{} data array '{}' has {} components; it needs at least 1", per, a.name, a.components));
+    if (a.values.size() != size_t(tuples) * size_t(a.components))
+      fail(context, fmt::format("{} data array '{}' has {} values, but {} {}s x {} components need {}", per, a.name,
+                                a.values.size(), tuples, per, a.components, size_t(tuples) * size_t(a.components)));
+    if (!a.integer) continue;
+    for (size_t k = 0; k < a.values.size(); ++k) {
+      const double v = a.values[k];
+      if (v != std::floor(v) || std::abs(v) > 2147483647.0)
+        fail(context, fmt::format("integer {} data array '{}' holds {} at {} {}, which is not a whole number that "
+                                  "fits an int", per, a.name, v, per, k / size_t(a.components)));
+    }
+  }
+}
+
 }  // namespace
 
 void validate_mesh_data(const MeshData& mesh, std::string_view context) {
@@ -88,6 +111,8 @@ void validate_mesh_data(const MeshData& mesh, std::string_view context) {
   check_csr(mesh.face_offsets, mesh.face_vertices, "face", 3, mesh.vertex_count(), context);
   check_csr(mesh.line_offsets, mesh.line_vertices, "polyline", 2, mesh.vertex_count(), context);
   check_tags(mesh, context);
+  check_data_arrays(mesh.point_data, mesh.vertex_count(), "point", context);
+  check_data_arrays(mesh.cell_data, mesh.face_count(), "face", context);
 }
 
 }  // namespace subdiv

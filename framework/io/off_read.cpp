@@ -1,9 +1,12 @@
 // Object File Format (ASCII). Hand-written for the same reason as the OBJ reader: vertex
 // and face order and non-manifold faces must reach the engine untouched.
 //
-// Layout: a header keyword ending in OFF (ST, C and N prefixes announce extra values per
-// vertex, which are ignored), the counts "V F E" (on the keyword's line or the next), V
-// vertex lines "x y z ...", F face lines "n i0 ... i(n-1) [colour]" with 0-based indices.
+// Layout: a header keyword ending in OFF, the counts "V F E" (on the keyword's line or the
+// next), V vertex lines, F face lines "n i0 ... i(n-1) [colour]" with 0-based indices. The
+// keyword's prefixes announce extra values per vertex, after x y z in Geomview's order:
+// N a normal (nx ny nz), C a colour (r g b [a]), ST texture coordinates (s t); they become
+// point arrays "normal", "color" and "uv". Face colours (3 or 4 values after the indices,
+// on every face) become the cell array "color".
 // '#' starts a comment. One vertex or face per line, as every writer produces, so that
 // messages can name the line.
 #include <algorithm>
@@ -35,11 +38,17 @@ private:
   long long integer(Tokens& tokens, std::string_view what);
   [[noreturn]] void fail(std::string_view message) const { fail_at(file_, line_, message); }
 
+  void finish_arrays();
+
   const fs::path& file_;
   std::string text_;
   LineCursor lines_{std::string_view()};
   std::size_t line_ = 0;
   long long vertex_count_ = 0, face_count_ = 0;
+  bool normals_ = false, colors_ = false, uvs_ = false;  // the keyword's N, C, ST
+  std::vector<double> normal_, color_, uv_, face_color_;
+  int color_components_ = 0, face_color_components_ = -1;  // -1: not seen yet
+  bool face_colors_ = true;
   MeshData mesh_;
 };
 
@@ -74,6 +83,10 @@ void OffReader::header() {
     fail(fmt::format("'{}' (homogeneous or n-dimensional OFF) is not supported; write plain "
                      "3D OFF",
                      keyword));
+  const std::string_view prefix = keyword.substr(0, keyword.size() - 3);
+  normals_ = prefix.find('N') != std::string_view::npos;
+  colors_ = prefix.find('C') != std::string_view::npos;
+  uvs_ = prefix.find("ST") != std::string_view::npos;
   std::string_view token;
   Tokens counts = tokens;
   if (counts.empty() && !next_line(counts)) fail("expected the counts 'vertices faces edges'");
@@ -99,6 +112,28 @@ void OffReader::vertex(Tokens& tokens, Index number) {
     if (!std::isfinite(c))
       fail(fmt::format("vertex {} has a non-finite coordinate ({}); fix or remove it", number, c));
   mesh_.positions.insert(mesh_.positions.end(), xyz, xyz + 3);
+  if (!normals_ && !colors_ && !uvs_) return;
+  std::vector<double> extra;
+  while (tokens.next(token)) {
+    double x;
+    if (!parse_double(token, x)) fail(fmt::format("vertex {}: expected a number, got '{}'", number, token));
+    extra.push_back(x);
+  }
+  const std::size_t needed = (normals_ ? 3 : 0) + (colors_ ? 3 : 0) + (uvs_ ? 2 : 0);
+  if (extra.size() < needed || extra.size() > needed + (colors_ ? 1 : 0))
+    fail(fmt::format("vertex {} has {} values after x y z; the keyword announces {}{}{}", number, extra.size(),
+                     normals_ ? "a normal (3) " : "", colors_ ? "a colour (3 or 4) " : "", uvs_ ? "s t (2)" : ""));
+  auto at = extra.begin();
+  if (normals_) normal_.insert(normal_.end(), at, at + 3), at += 3;
+  if (colors_) {
+    const int components = int(extra.end() - at) - (uvs_ ? 2 : 0);
+    if (color_components_ && components != color_components_)
+      fail(fmt::format("vertex {} has a colour of {} values, the vertices before it {}", number, components,
+                       color_components_));
+    color_components_ = components;
+    color_.insert(color_.end(), at, at + components), at += components;
+  }
+  if (uvs_) uv_.insert(uv_.end(), at, at + 2);
 }
 
 void OffReader::face(Tokens& tokens) {
@@ -113,8 +148,34 @@ void OffReader::face(Tokens& tokens) {
                        v, vertex_count_));
     mesh_.face_vertices.push_back(Index(v));
   }
-  // Anything after the indices is a colour, which the engine does not use.
   mesh_.face_offsets.push_back(Index(mesh_.face_vertices.size()));
+  // After the indices: a colour (r g b [a]) when every face has one; else nothing is kept.
+  std::vector<double> colour;
+  std::string_view token;
+  double x;
+  while (tokens.next(token) && parse_double(token, x)) colour.push_back(x);
+  const int components = colour.size() == 3 || colour.size() == 4 ? int(colour.size()) : 0;
+  if (face_color_components_ < 0) face_color_components_ = components;
+  face_colors_ = face_colors_ && components > 0 && components == face_color_components_;
+  if (face_colors_) face_color_.insert(face_color_.end(), colour.begin(), colour.end());
+}
+
+bool integer_colours(const std::vector<double>& values) {
+  bool whole = true, above_one = false;
+  for (double c : values) whole = whole && c == std::floor(c), above_one = above_one || c > 1;
+  return whole && above_one;
+}
+
+void OffReader::finish_arrays() {
+  if (normals_) mesh_.point_data.push_back({"normal", 3, std::move(normal_), false, ArrayRole::Normals});
+  if (colors_) {
+    const bool integer = integer_colours(color_);
+    mesh_.point_data.push_back({"color", color_components_, std::move(color_), integer, ArrayRole::Color});
+  }
+  if (uvs_) mesh_.point_data.push_back({"uv", 2, std::move(uv_), false, ArrayRole::TextureCoordinates});
+  if (face_colors_ && face_count_ > 0)
+    mesh_.cell_data.push_back({"color", face_color_components_, face_color_, integer_colours(face_color_),
+                               ArrayRole::Color});
 }
 
 MeshData OffReader::read() {
@@ -138,6 +199,7 @@ MeshData OffReader::read() {
                           face_count_));
     face(tokens);
   }
+  finish_arrays();
   return std::move(mesh_);
 }
 

@@ -4,7 +4,9 @@
 // doubles and faces stay as written.
 //
 // Read: element vertex (x, y, z of any numeric type), element face (list property
-// vertex_indices or vertex_index). Other properties and elements are skipped.
+// vertex_indices or vertex_index); the other scalar properties of vertices and faces become
+// point and cell arrays (ply_properties.h: normals, colours, texture coordinates, name_k
+// components). List properties besides the faces' indices, and other elements, are skipped.
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -16,6 +18,7 @@
 
 #include <fmt/format.h>
 
+#include "framework/io/ply_properties.h"
 #include "framework/io/readers.h"
 #include "framework/io/text_input.h"
 #include "framework/util/error.h"
@@ -251,6 +254,37 @@ double Values::next_binary(Type type) {
   return 0;
 }
 
+// The scalar properties of an element that become arrays: their values as read, per
+// property, then grouped into DataArrays.
+class PropertyColumns {
+public:
+  PropertyColumns(const Element& e, const std::vector<bool>& skip) : element_(e), skip_(skip), columns_(skip.size()) {}
+  void add(std::size_t property, double value) {
+    if (!skip_[property]) columns_[property].push_back(value);
+  }
+  std::vector<DataArray> arrays(long long count) const;
+
+private:
+  const Element& element_;
+  std::vector<bool> skip_;
+  std::vector<std::vector<double>> columns_;
+};
+
+std::vector<DataArray> PropertyColumns::arrays(long long count) const {
+  std::vector<std::string> names;
+  for (const Property& p : element_.properties) names.push_back(p.name);
+  std::vector<DataArray> out;
+  for (const PropertyGroup& g : group_properties(names, skip_)) {
+    DataArray a{g.name, int(g.properties.size()), {}, true, g.role};
+    for (int p : g.properties) a.integer = a.integer && is_integer_type(element_.properties[size_t(p)].type);
+    a.values.resize(std::size_t(count) * g.properties.size());
+    for (std::size_t k = 0; k < g.properties.size(); ++k)
+      for (long long i = 0; i < count; ++i) a.values[std::size_t(i) * g.properties.size() + k] = columns_[std::size_t(g.properties[k])][std::size_t(i)];
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
 class PlyReader {
 public:
   explicit PlyReader(const fs::path& file) : file_(file) {}
@@ -284,6 +318,10 @@ void PlyReader::read_vertices(Values& values, const Element& e) {
     if (a < 0)
       throw Error(fmt::format("{}: element vertex lacks one of the properties x, y, z",
                               file_.string()));
+  std::vector<bool> not_data(e.properties.size());
+  for (std::size_t i = 0; i < e.properties.size(); ++i)
+    not_data[i] = e.properties[i].list || int(i) == axis[0] || int(i) == axis[1] || int(i) == axis[2];
+  PropertyColumns data(e, not_data);
   for (long long v = 0; v < e.count; ++v) {
     values.set_context(e, v);
     double xyz[3] = {0, 0, 0};
@@ -291,6 +329,7 @@ void PlyReader::read_vertices(Values& values, const Element& e) {
       const Property& p = e.properties[i];
       if (p.list) { skip_property(values, p); continue; }
       const double value = values.next(p.type);
+      data.add(i, value);
       for (int k = 0; k < 3; ++k)
         if (axis[k] == int(i)) xyz[k] = value;
     }
@@ -300,6 +339,7 @@ void PlyReader::read_vertices(Values& values, const Element& e) {
                                 v, c));
     mesh_.positions.insert(mesh_.positions.end(), xyz, xyz + 3);
   }
+  mesh_.point_data = data.arrays(e.count);
 }
 
 void PlyReader::read_faces(Values& values, const Element& e) {
@@ -308,10 +348,14 @@ void PlyReader::read_faces(Values& values, const Element& e) {
   if (list < 0)
     throw Error(fmt::format("{}: element face lacks the list property vertex_indices",
                             file_.string()));
+  std::vector<bool> not_data(e.properties.size());
+  for (std::size_t i = 0; i < e.properties.size(); ++i) not_data[i] = e.properties[i].list;
+  PropertyColumns data(e, not_data);
   for (long long f = 0; f < e.count; ++f) {
     values.set_context(e, f);
     for (std::size_t i = 0; i < e.properties.size(); ++i) {
       const Property& p = e.properties[i];
+      if (!p.list) { data.add(i, values.next(p.type)); continue; }
       if (int(i) != list) { skip_property(values, p); continue; }
       const long long size = (long long)values.next(p.count_type);
       if (size < 3)
@@ -326,6 +370,7 @@ void PlyReader::read_faces(Values& values, const Element& e) {
       mesh_.face_offsets.push_back(Index(mesh_.face_vertices.size()));
     }
   }
+  mesh_.cell_data = data.arrays(e.count);
 }
 
 void PlyReader::skip(Values& values, const Element& e) {

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "framework/rules/formula.h"
 
 #include <cmath>
@@ -46,6 +47,7 @@ struct FormulaSet::Impl {
   // State variables: initial and next parsers, the storage formulas read, and the values
   // per level computed so far.
   std::vector<std::string> state_names, state_wheres;
+  std::vector<FormulaUses> state_uses;  // what each state variable's formulas read
   std::deque<double> state_storage;
   std::vector<std::unique_ptr<mu::Parser>> state_initial, state_next;
   std::vector<std::vector<double>> state_by_level;
@@ -86,12 +88,11 @@ struct FormulaSet::Impl {
       for (const auto& [name, ptr] : parser->GetUsedVar()) {
         uses.n |= name == "n", uses.k |= name == "k", uses.j |= name == "j", uses.l |= name == "l";
         uses.n0 |= name == "n0", uses.n1 |= name == "n1", uses.k0 |= name == "k0", uses.k1 |= name == "k1";
-        for (size_t i = 0; i < visible_definitions; ++i) {
-          if (definition_names[i] != name) continue;
-          const FormulaUses& d = definition_uses[i];
-          uses.n |= d.n, uses.k |= d.k, uses.j |= d.j, uses.l |= d.l, uses.n0 |= d.n0, uses.n1 |= d.n1;
-          uses.k0 |= d.k0, uses.k1 |= d.k1;
-        }
+        if (parameters.count(name) && !uses.reads(name)) uses.parameters.push_back(name);
+        for (size_t i = 0; i < visible_definitions; ++i)
+          if (definition_names[i] == name) uses.merge(definition_uses[i]);
+        for (size_t i = 0; i < visible_state && i < state_uses.size(); ++i)
+          if (state_names[i] == name) uses.merge(state_uses[i]);
       }
     } catch (const mu::Parser::exception_type& e) {
       throw Error(fmt::format("{}: formula '{}' does not parse: {}. {}", where, shortened(expression),
@@ -112,6 +113,7 @@ struct FormulaSet::Impl {
     FormulaUses uses;
     auto initial = compile(d.expression, d.where, state_names.size(), 0, uses);
     check_state_uses(uses, d.name, d.where);
+    state_uses.push_back(uses);
     state_names.push_back(d.name);
     state_wheres.push_back(d.where);
     state_storage.push_back(0.0);
@@ -130,6 +132,7 @@ struct FormulaSet::Impl {
       FormulaUses uses;
       state_next[i] = compile(d.next, where, state_names.size(), 0, uses);
       check_state_uses(uses, d.name, where);
+      state_uses[i].merge(uses);
     }
     pending_next.clear();
   }
@@ -240,6 +243,16 @@ std::vector<double> FormulaSet::state_values(int level) {
   impl_->load_state(double(level));
   if (impl_->state_names.empty()) return {};
   return impl_->state_by_level[size_t(level)];
+}
+
+void FormulaUses::merge(const FormulaUses& o) {
+  n |= o.n, k |= o.k, j |= o.j, l |= o.l, n0 |= o.n0, n1 |= o.n1, k0 |= o.k0, k1 |= o.k1;
+  for (const std::string& p : o.parameters)
+    if (!reads(p)) parameters.push_back(p);
+}
+
+bool FormulaUses::reads(const std::string& parameter) const {
+  return std::find(parameters.begin(), parameters.end(), parameter) != parameters.end();
 }
 
 FormulaUses FormulaSet::uses(int id) const { return impl_->formula_uses[id]; }

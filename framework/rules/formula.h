@@ -19,6 +19,12 @@ struct FormulaInputs {
 // Which of n, k, j, l, n0, n1, k0, k1 a formula depends on (through definitions too).
 struct FormulaUses {
   bool n = false, k = false, j = false, l = false, n0 = false, n1 = false, k0 = false, k1 = false;
+  // The scheme parameters it reads, directly or through definitions and state variables
+  // (per-vertex parameters may only be read by vertex rules: scheme_loader.cpp).
+  std::vector<std::string> parameters;
+
+  void merge(const FormulaUses& other);
+  bool reads(const std::string& parameter) const;
 };
 
 // Besides muParser's built-in functions (sin, cos, sqrt, exp, abs, min, max, rint, ...)

@@ -25,13 +25,15 @@ const CompiledRule& needed_rule(const WeightTables& tables, Element e, Context c
   return rule;
 }
 
-const CompiledRule& curve_rule(const StepContext& s, int r, Element e) {
-  if (r >= int(s.tables.curve_rules.size()))
+const CompiledRule& curve_rule(const StepContext& s, int r, Element e, const WeightTables& tables) {
+  if (r >= int(tables.curve_rules.size()))
     throw Error(fmt::format("{}: the mesh has boundaries or creases, and the scheme has neither a {} crease "
                             "rule nor a curve scheme (\"curve\") to give one",
                             s.source, element_name(e)));
-  return s.tables.curve_rules[r];
+  return tables.curve_rules[r];
 }
+
+const CompiledRule& curve_rule(const StepContext& s, int r, Element e) { return curve_rule(s, r, e, s.tables); }
 
 // Code rules (plugins) cover smooth contexts, or every context with handles_features.
 bool code_covers(const StepContext& s, bool has_function, Context c) {
@@ -40,16 +42,17 @@ bool code_covers(const StepContext& s, bool has_function, Context c) {
 
 void fill_vertex_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index v) {
   const VertexContext& vc = s.features.vertices[v];
+  const WeightTables& tables = s.vertex_tables(v);
   auto apply = [&](Context c, const std::array<std::uint16_t, 2>& crease, double w) {
     if (code_covers(s, s.code && s.code->vertex, c)) {
       RowWriter writer(row, w);
       return s.code->vertex({s.parent, s.features, s.level}, v, c, writer);
     }
-    if (c == Context::Crease && !s.tables.rule(Element::Vertex, c).defined) {
+    if (c == Context::Crease && !tables.rule(Element::Vertex, c).defined) {
       if (!s.features_refined) return row.add(v, w);  // feature curves wait for the next step
-      return apply_vertex_rule(row, in, v, curve_rule(s, 0, Element::Vertex), crease, w);
+      return apply_vertex_rule(row, in, v, curve_rule(s, 0, Element::Vertex, tables), crease, w);
     }
-    apply_vertex_rule(row, in, v, needed_rule(s.tables, Element::Vertex, c, s.source), crease, w);
+    apply_vertex_rule(row, in, v, needed_rule(tables, Element::Vertex, c, s.source), crease, w);
   };
   const double pw = vc.child == vc.parent ? 1.0 : vc.parent_weight;
   if (pw > 0.0) apply(vc.parent, vc.parent_crease, pw);

@@ -22,6 +22,13 @@ namespace subdiv {
 
 class RowPlanStore;
 
+// Vertex rules whose weights differ from vertex to vertex (a scheme's per-vertex
+// parameters): vertex v's rules come from tables[group[v]], one table per distinct value.
+struct PerVertexTables {
+  std::vector<WeightTables> tables;
+  std::vector<std::uint32_t> group;  // per parent vertex
+};
+
 struct StepContext {
   const Level& parent;
   const ChildOrigins& origins;
@@ -34,6 +41,10 @@ struct StepContext {
   // Replay learnt rows for smooth interior elements (row_plans.h); the rows are the same
   // either way, false is for tests and measurements.
   bool use_row_plans = true;
+  // Set when vertex rules differ per vertex; `tables` then serves the other elements.
+  const PerVertexTables* per_vertex = nullptr;
+
+  const WeightTables& vertex_tables(Index v) const { return per_vertex ? per_vertex->tables[per_vertex->group[v]] : tables; }
 };
 
 // One ChildGroup (element_rules.h) per element kind (indexed by Element).

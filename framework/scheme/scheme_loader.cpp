@@ -77,11 +77,17 @@ void check_not_reserved(const std::string& name, const Place& at) {
 }
 
 ParameterSpec parse_parameter(const std::string& name, const Json& spec, const Place& at) {
-  check_keys(spec, {"default", "min", "max", "min_exclusive", "max_exclusive", "choices", "description"}, at);
+  check_keys(spec, {"default", "min", "max", "min_exclusive", "max_exclusive", "choices", "per_vertex", "description"}, at);
   ParameterSpec p;
   p.name = name;
   p.description = optional_string(spec, "description");
   const Json& def = require(spec, "default", at);
+  if (spec.contains("per_vertex")) {
+    if (!spec["per_vertex"].is_boolean()) fail(at / "per_vertex", "expected true or false");
+    p.per_vertex = spec["per_vertex"].get<bool>();
+    if (p.per_vertex && spec.contains("choices"))
+      fail(at / "per_vertex", "a choice parameter selects definitions once per scheme; only numeric parameters can be per vertex");
+  }
   if (spec.contains("choices")) {
     p.is_choice = true;
     for (const auto& c : spec["choices"]) p.choices.push_back(as_string(c, at / "choices"));
@@ -117,13 +123,7 @@ void check_range(const ParameterSpec& p, const std::string& file) {
       fail({file, "parameters." + p.name}, fmt::format("default '{}' is not among the choices", p.choice));
     return;
   }
-  const bool below = p.has_minimum && (p.value < p.minimum || (p.minimum_exclusive && p.value == p.minimum));
-  const bool above = p.has_maximum && (p.value > p.maximum || (p.maximum_exclusive && p.value == p.maximum));
-  if (below || above)
-    fail({file, "parameters." + p.name},
-         fmt::format("{} = {} is outside its range {}{}, {}{}", p.name, p.value, p.minimum_exclusive ? "(" : "[",
-                     p.has_minimum ? fmt::format("{}", p.minimum) : "-inf",
-                     p.has_maximum ? fmt::format("{}", p.maximum) : "inf", p.maximum_exclusive ? ")" : "]"));
+  if (auto why = range_violation(p, p.value); !why.empty()) fail({file, "parameters." + p.name}, why);
 }
 
 std::vector<ParameterSpec> parse_parameters(const Json& root, const Place& at,
@@ -347,7 +347,14 @@ struct ParsedSteps {
 // the indices of the kept steps, in order.
 std::vector<size_t> unroll_steps(const ParsedSteps& parsed, const Scheme& scheme, const Place& at) {
   FormulaSet formulas(scheme.parameter_values(), scheme.definitions);
-  auto value_of = [&](const Repeat& r) { return formulas.evaluate(formulas.add(r.formula, r.where), {}); };
+  auto value_of = [&](const Repeat& r) {
+    const int id = formulas.add(r.formula, r.where);
+    for (const ParameterSpec& p : scheme.parameters)
+      if (p.per_vertex && formulas.uses(id).reads(p.name))
+        throw Error(fmt::format("{}: reads parameter '{}', which is per vertex; \"when\" and \"repeat\" are decided "
+                                "once for the whole mesh", r.where, p.name));
+    return formulas.evaluate(id, {});
+  };
   std::vector<size_t> out;
   for (size_t i = 0; i < parsed.steps.size(); ++i) {
     int count = 1;
@@ -429,16 +436,31 @@ int parse_face_requirement(const Json& root, const Place& at) {
   fail(at / "faces", fmt::format("'{}' is not one of: any, triangles, quads", faces));
 }
 
+// A per-vertex parameter has a value at each vertex, so only a vertex rule (which has one
+// vertex) can read it; an edge or face rule would not know whose value to take.
+void check_per_vertex_reads(const Scheme& s, const FormulaUses& uses, Element element, const std::string& where) {
+  if (element == Element::Vertex) return;
+  for (const ParameterSpec& p : s.parameters)
+    if (p.per_vertex && uses.reads(p.name))
+      throw Error(fmt::format("{}: reads parameter '{}', which is per vertex (\"per_vertex\": true); only vertex "
+                              "rules can read it, at their own vertex. Read it in a vertex rule, or drop "
+                              "\"per_vertex\"", where, p.name));
+}
+
 // Compiles and evaluates every formula once (at a regular valence) so syntax errors and
 // unknown names surface at load time with their place.
 void check_formulas(const Scheme& s) {
   FormulaSet formulas(s.parameter_values(), s.definitions);
   const FormulaInputs sample{4, 4, 0, 0, 6, 6};
   for (const auto& step : s.steps)
-    for (const auto& by_context : step.rules)
-      for (const auto& rule : by_context)
+    for (int e = 0; e < kElementCount; ++e)
+      for (const auto& rule : step.rules[e])
         if (rule)
-          for (const auto& term : rule->terms) formulas.evaluate(formulas.add(term.weight, term.where), sample);
+          for (const auto& term : rule->terms) {
+            const int id = formulas.add(term.weight, term.where);
+            formulas.evaluate(id, sample);
+            check_per_vertex_reads(s, formulas.uses(id), Element(e), term.where);
+          }
 }
 
 

@@ -1,7 +1,7 @@
 #pragma once
 // A scheme applied for a number of levels: what `--scheme a:1,b:3` says, and what the
-// engine refines with. Runs apply in order, so seed 001's two-step Catmull-Clark is
-// {catmull-clark-shape, 1}, {catmull-clark, 3}.
+// engine refines with. Runs apply in order (seed 001's two-step scheme is a shape step
+// for one level, then Catmull-Clark).
 namespace subdiv {
 
 struct Scheme;

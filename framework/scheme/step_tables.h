@@ -8,6 +8,8 @@
 namespace subdiv {
 
 // max_n: the largest valence, max_k: the largest face size on the level; level: l.
-WeightTables step_weight_tables(const Scheme& scheme, const StepRules& step, int max_n, int max_k, int level);
+// `parameters`: the values formulas see, when not the scheme's own (per-vertex parameters).
+WeightTables step_weight_tables(const Scheme& scheme, const StepRules& step, int max_n, int max_k, int level,
+                                const std::map<std::string, double>* parameters = nullptr);
 
 }  // namespace subdiv

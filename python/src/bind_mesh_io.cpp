@@ -11,18 +11,30 @@ subdiv::DataArray data_array(NamedValues&& v) {
   return subdiv::DataArray{std::move(v.name), v.columns, std::move(v.values), false};
 }
 
+std::vector<NamedValues> named_values(std::vector<subdiv::DataArray>&& arrays) {
+  std::vector<NamedValues> out;
+  for (auto& a : arrays) out.push_back({std::move(a.name), std::move(a.values), a.components});
+  return out;
+}
+
 void write(const std::string& path, py::handle mesh, py::handle point_data, py::handle cell_data) {
   subdiv::MeshData data = mesh_from_python(mesh);
   auto points = named_values_from(point_data, data.vertex_count(), "point data");
   auto cells = named_values_from(cell_data, data.face_count(), "cell data");
   const std::string ext = subdiv::lowercase_extension(path);
   if (!subdiv::is_vtk_output(path)) {
-    // A warning, not an error: writing the geometry to .obj is a common, deliberate step.
-    if ((!points.empty() || !cells.empty()) &&
-        PyErr_WarnEx(PyExc_UserWarning,
-                     fmt::format("write_mesh('{}'): {} files hold no point or cell data; use .vtp or .pvd to keep it",
-                                 path, ext).c_str(), 1) < 0)
+    // PLY holds every array; the others hold none (OFF only colours, normals and UVs, which
+    // Python's plain arrays do not mark). A warning, not an error: writing the geometry to
+    // .obj is a common, deliberate step.
+    if (ext == ".ply") {
+      for (auto& v : points) data.point_data.push_back(data_array(std::move(v)));
+      for (auto& v : cells) data.cell_data.push_back(data_array(std::move(v)));
+    } else if ((!points.empty() || !cells.empty()) &&
+               PyErr_WarnEx(PyExc_UserWarning,
+                            fmt::format("write_mesh('{}'): {} files hold no point or cell data; use .ply, .vtp or "
+                                        ".pvd to keep it", path, ext).c_str(), 1) < 0) {
       throw py::error_already_set();  // warnings filtered into errors
+    }
     py::gil_scoped_release unlocked;
     subdiv::write_mesh(path, data);
     return;
@@ -47,7 +59,12 @@ void bind_mesh_io(py::module_& m) {
           py::gil_scoped_release unlocked;
           data = subdiv::read_mesh(path);
         }
-        return mesh_to_python(std::move(data));
+        py::dict point_data = named_values_to_python(named_values(std::move(data.point_data)));
+        py::dict cell_data = named_values_to_python(named_values(std::move(data.cell_data)));
+        py::dict out = mesh_to_python(std::move(data));
+        out["point_data"] = point_data;
+        out["cell_data"] = cell_data;
+        return out;
       },
       py::arg("path"), "The arrays of a mesh file (subdivkit.read_mesh wraps them in a Mesh).");
   m.def("_write_mesh", &write, py::arg("path"), py::arg("mesh"), py::arg("point_data"), py::arg("cell_data"),

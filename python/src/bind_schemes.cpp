@@ -19,6 +19,7 @@ py::dict parameter_info(const subdiv::ParameterSpec& p) {
     d["maximum"] = p.has_maximum ? py::object(py::float_(p.maximum)) : py::object(py::none());
     d["minimum_exclusive"] = p.minimum_exclusive;
     d["maximum_exclusive"] = p.maximum_exclusive;
+    d["per_vertex"] = p.per_vertex;
   }
   return d;
 }

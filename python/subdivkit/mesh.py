@@ -248,18 +248,22 @@ def read_mesh(path):
     """Read a mesh file: .obj (with 'l' polylines and 't crease'/'t corner' tags), .off, .ply,
     .stl, .om, .vtp or .vtk, chosen by the extension.
 
-    Returns a Mesh named after the file. Raises subdivkit.Error with the command line's
+    Returns a Mesh named after the file, with the file's point and cell arrays in
+    ``point_data`` and ``cell_data`` (.vtp/.vtk arrays, PLY properties, OFF colours,
+    normals and texture coordinates; integer arrays come as float64). Raises
+    subdivkit.Error with the command line's
     message (naming the file and line) for missing files, unknown formats and bad content.
     """
     path = os.fspath(path)
-    return Mesh._from_arrays(_subdivkit._read_mesh(path), name=path)
+    arrays = _subdivkit._read_mesh(path)
+    return Mesh._from_arrays(arrays, name=path, point_data=arrays["point_data"], cell_data=arrays["cell_data"])
 
 
 def write_mesh(path, mesh, point_data=None, cell_data=None):
     """Write a Mesh by extension: .obj (exact doubles, polylines, crease and corner tags),
     .off, .ply, .stl, or .vtp / .pvd for ParaView.
 
-    ``point_data`` and ``cell_data`` default to the mesh's own dicts; only .vtp and .pvd
+    ``point_data`` and ``cell_data`` default to the mesh's own dicts; .vtp, .pvd and .ply
     hold them (other formats warn and leave them out). The file is written atomically: it
     is either complete or left as it was. Raises subdivkit.Error before creating anything
     for an unknown extension, a missing directory or an invalid mesh.

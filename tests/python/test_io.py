@@ -53,6 +53,22 @@ def test_point_and_cell_data_go_to_vtp_and_warn_elsewhere(tmp_path):
         sk.write_mesh(tmp_path / "data.obj", mesh)
 
 
+@pytest.mark.parametrize("extension", [".vtp", ".ply"])
+def test_point_and_cell_data_come_back_from_the_file(tmp_path, extension):
+    mesh = sk.read_mesh(MESHES / "cube.obj")
+    mesh.point_data["height"] = mesh.points[:, 2].copy()
+    mesh.point_data["seven"] = np.arange(8 * 7, dtype=float).reshape(8, 7)
+    mesh.cell_data["id"] = np.arange(6.0)
+    sk.write_mesh(tmp_path / f"data{extension}", mesh)
+    back = sk.read_mesh(tmp_path / f"data{extension}")
+    assert np.array_equal(back.point_data["height"].reshape(-1), mesh.points[:, 2])
+    assert np.array_equal(back.point_data["seven"], mesh.point_data["seven"])
+    assert np.array_equal(back.cell_data["id"].reshape(-1), np.arange(6.0))
+    # Read data refines like any other: the height of a refined cube is its z coordinate.
+    refined = sk.refine(back, "catmull-clark", 2)
+    assert np.allclose(refined.point_data["height"].reshape(-1), refined.points[:, 2], atol=1e-14)
+
+
 def test_writing_refuses_before_creating_anything(tmp_path):
     mesh = sk.read_mesh(MESHES / "cube.obj")
     with pytest.raises(sk.Error, match="unknown|extension|format"):

@@ -17,7 +17,6 @@
 #include "interpolate_common.h"
 #include "framework/interpolation/limit_selection.h"
 #include "framework/interpolation/progressive.h"
-#include "framework/interpolation/shape_two_step.h"
 #include "framework/io/formats.h"
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
@@ -38,7 +37,7 @@ namespace fs = std::filesystem;
 struct InterpolateArgs {
   std::string mesh, scheme = "catmull-clark", output, refined;
   std::string select = "all", lambda;
-  std::vector<std::string> params;
+  std::vector<std::string> params, vertex_params;
   std::string boundary = "edges-and-corners";
   double tolerance = -1;  // < 0: 1e-10 times the bounding-box diagonal
   int max_iterations = 1000;
@@ -77,32 +76,6 @@ std::optional<double> parse_number(const std::string& text) {
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), x);
   if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
   return x;
-}
-
-// One lambda per vertex, white space or commas between values, '#' comments.
-std::vector<double> read_lambda_file(const fs::path& file, Index vertex_count) {
-  const std::string text = read_text(file, "--lambda");
-  std::vector<double> values;
-  std::istringstream lines(text);
-  std::string line;
-  for (int number = 1; std::getline(lines, line); ++number) {
-    if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
-    for (char& c : line)
-      if (c == ',' || c == '\t' || c == '\r') c = ' ';
-    std::istringstream words(line);
-    std::string word;
-    while (words >> word) {
-      const auto x = parse_number(word);
-      const std::string where = fmt::format("{} line {}", file.string(), number);
-      if (!x) throw Error(fmt::format("{}: '{}' is not a number", where, word));
-      check_shape_lambda(std::span(&*x, 1), 1, fmt::format("{} (vertex {})", where, values.size()));
-      values.push_back(*x);
-    }
-  }
-  if (values.size() != size_t(vertex_count))
-    throw Error(fmt::format("{}: {} lambda values for a mesh of {} vertices; give one per vertex, in vertex order",
-                            file.string(), values.size(), vertex_count));
-  return values;
 }
 
 bool has_lambda(const SchemeSequence& seq) {
@@ -186,13 +159,13 @@ void run(const InterpolateArgs& a) {
   if (a.threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
 
-  // --lambda: one number (checked here, passed to the scheme as its parameter) or a file.
+  // --lambda: one number (the scheme's parameter, range-checked by the loader) or a file of
+  // per-vertex values (--vertex-param lambda=FILE).
   ParameterOverrides overrides = parse_params(a.params);
   std::optional<double> lambda_value;
   if (!a.lambda.empty()) {
     lambda_value = parse_number(a.lambda);
-    if (lambda_value) check_shape_lambda(std::span(&*lambda_value, 1), 1, "--lambda");
-    else if (!fs::is_regular_file(a.lambda))
+    if (!lambda_value && !fs::is_regular_file(a.lambda))
       throw Error(fmt::format("--lambda '{}' is neither a number nor a file of per-vertex values", a.lambda));
   }
   if (is_curve_scheme(a.scheme)) {
@@ -220,7 +193,11 @@ void run(const InterpolateArgs& a) {
   const std::vector<std::uint8_t> moving = read_selection(a.select, base.vertex_count);
   LimitSelectionOptions options;
   options.features.boundary = boundary_from_name(a.boundary);
-  if (!a.lambda.empty() && !lambda_value) options.lambda = read_lambda_file(a.lambda, base.vertex_count);
+  options.vertex_parameters = read_vertex_params(a.vertex_params, base.vertex_count);
+  if (!a.lambda.empty() && !lambda_value) {
+    if (options.vertex_parameters.count("lambda")) throw Error("--lambda FILE and --vertex-param lambda=...: give one");
+    options.vertex_parameters["lambda"] = read_vertex_values(a.lambda, "lambda", base.vertex_count);
+  }
 
   Progress progress;
   progress.say("finding the limit masks");
@@ -285,8 +262,10 @@ void add_interpolate_command(CLI::App& app) {
                   "ids ('#' comments)")
       ->capture_default_str();
   cmd->add_option("--lambda", args->lambda,
-                  "Seed 001's shape parameter in (7/20, 1]: one number, or a file with one value per vertex");
+                  "Seed 001's shape parameter in (7/20, 1]: one number (as --param lambda=x), or a file with one "
+                  "value per vertex (as --vertex-param lambda=FILE)");
   add_param_option(cmd, args->params);
+  add_vertex_param_option(cmd, args->vertex_params);
   cmd->add_option("--tol", args->tolerance,
                   "Stop when every selected vertex's limit point is this close to it (model units; default 1e-10 "
                   "times the bounding-box diagonal)")

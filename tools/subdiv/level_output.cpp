@@ -1,5 +1,6 @@
 #include "level_output.h"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 #include "framework/io/formats.h"
@@ -10,6 +11,16 @@
 
 namespace subdiv::cli {
 namespace {
+
+// The mesh leaves hole faces out (mesh_from_level); so do its cell arrays.
+void drop_hole_tuples(const Level& L, DataArray& a) {
+  if (L.face_hole.empty()) return;
+  const size_t c = size_t(a.components);
+  size_t kept = 0;
+  for (Index f = 0; f < L.face_count(); ++f)
+    if (!L.is_hole(f)) std::copy_n(&a.values[size_t(f) * c], c, &a.values[kept++ * c]);
+  a.values.resize(kept * c);
+}
 
 // Per-point: how each vertex was made, its valence and its feature class; per-cell: the
 // face it lies in, one level up and in the base mesh.
@@ -42,20 +53,28 @@ OutputLevel describe_level(const Hierarchy& h, int l, const MeshData& mesh, cons
   }
   base_face = std::move(next_base);
   DataArray base{"base_face", 1, base_face, true};
-  if (!L.face_hole.empty()) {
-    // The mesh leaves hole faces out (mesh_from_level); so do its cell arrays.
-    auto drop_holes = [&](std::vector<double>& values) {
-      size_t kept = 0;
-      for (Index f = 0; f < L.face_count(); ++f)
-        if (!L.is_hole(f)) values[kept++] = values[f];
-      values.resize(kept);
-    };
-    drop_holes(parent.values);
-    drop_holes(base.values);
-  }
-  out.point_data = {std::move(origin), std::move(valence), std::move(level), std::move(vertex_class)};
-  out.cell_data = {std::move(parent), std::move(base)};
+  drop_hole_tuples(L, parent);
+  drop_hole_tuples(L, base);
+  // The user's arrays (already in the mesh) first; SubdivKit's where no user array has the name.
+  out.point_data = mesh.point_data;
+  out.cell_data = mesh.cell_data;
+  auto add = [](std::vector<DataArray>& to, DataArray&& a) {
+    for (const DataArray& b : to)
+      if (b.name == a.name) return;
+    to.push_back(std::move(a));
+  };
+  for (DataArray* a : {&origin, &valence, &level, &vertex_class}) add(out.point_data, std::move(*a));
+  for (DataArray* a : {&parent, &base}) add(out.cell_data, std::move(*a));
   return out;
+}
+
+// Level l as a mesh with the user's arrays; hole faces and their cell tuples left out.
+MeshData level_mesh(const Level& L, const LevelData& data) {
+  MeshData mesh = mesh_from_level(L, data.positions);
+  mesh.point_data = data.point_data;
+  mesh.cell_data = data.cell_data;
+  for (DataArray& a : mesh.cell_data) drop_hole_tuples(L, a);
+  return mesh;
 }
 
 }  // namespace
@@ -67,17 +86,18 @@ void check_output_path(const std::filesystem::path& out) {
                           "or .obj, .off, .ply, .stl", out.string(), ext));
 }
 
-void write_levels(const std::filesystem::path& out, const Hierarchy& h,
-                  const std::vector<std::vector<double>>& positions, const FeatureOptions& features,
-                  const std::vector<DataArray>& finest_point_data, const MeshOptions& obj_tags) {
+void write_levels(const std::filesystem::path& out, const Hierarchy& h, const std::vector<LevelData>& data,
+                  const FeatureOptions& features, const std::vector<DataArray>& finest_point_data,
+                  const MeshOptions& obj_tags) {
   check_output_path(out);
   const std::string ext = lowercase_extension(out);
   const int finest = int(h.levels.size()) - 1;
   std::vector<MeshData> meshes;
   meshes.reserve(h.levels.size());
-  for (int l = 0; l <= finest; ++l) meshes.push_back(mesh_from_level(h.levels[l], positions[l]));
+  for (int l = 0; l <= finest; ++l) meshes.push_back(level_mesh(h.levels[l], data[l]));
   if (ext != ".vtp" && ext != ".pvd") {
     meshes[finest].options = obj_tags;
+    for (const auto& a : finest_point_data) meshes[finest].point_data.push_back(a);
     write_mesh(out, meshes[finest]);
     return;
   }

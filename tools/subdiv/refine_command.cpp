@@ -15,6 +15,7 @@
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
 #include "framework/engine/refiner.h"
+#include "framework/primvar/level_data.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/scheme/scheme_sequence.h"
@@ -30,7 +31,7 @@ namespace {
 struct RefineArgs {
   std::string mesh, scheme = "catmull-clark", output;
   int levels = 1;
-  std::vector<std::string> params;
+  std::vector<std::string> params, vertex_params;
   std::string boundary = "edges-and-corners", crease_method = "uniform";
   std::string features;        // --features FILE.json
   double feature_angle = -1;   // --feature-angle DEG; < 0: not given
@@ -39,6 +40,7 @@ struct RefineArgs {
   bool levels_given = false;  // -l on the command line (a sequence A:1,B:3 sets its own total otherwise)
   bool quiet = false;
   bool limit = false;
+  bool normals = false;  // --normals: limit normals without moving the points
   // Set when given on the command line, which then wins over the mesh file's option tags.
   bool boundary_given = false, crease_method_given = false;
   bool smooth_triangles = false;  // --smooth-triangles
@@ -113,6 +115,40 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// --limit and --normals: limit normals (point data "normal"), and with --limit the finest
+// level's positions and interpolated point arrays moved to their limits with the same masks
+// (framework/analysis/surface/limit_evaluation.h); the scheme that would refine it next decides.
+std::vector<DataArray> apply_limits(const RefineArgs& a, const SchemeSequence& seq, const Hierarchy& h,
+                                    const RefineOptions& options, LevelData& finest) {
+  LimitOptions lo;
+  lo.features = options.features;
+  lo.first_step = options.first_step + seq.total_levels;
+  SchemeLimits limits(*seq.schemes.back(), lo);
+  const Level& level = h.levels.back();
+  const LimitResult limit = limits.evaluate(level, finest.positions);
+  if (a.limit) {
+    finest.positions = limit.positions;
+    bool data = false;
+    for (const DataArray& d : finest.point_data) data = data || !d.integer;
+    if (data) {
+      const StencilTable masks = limits.stencils(level).position;
+      for (DataArray& d : finest.point_data)
+        if (!d.integer) d.values = masks.apply(d.values, d.components);
+    }
+  }
+  std::vector<DataArray> out;
+  out.push_back(DataArray{"normal", 3, limit.normals, false, ArrayRole::Normals});
+  out.push_back(DataArray{"limit_exact", 1, std::vector<double>(limit.exact.begin(), limit.exact.end()), true});
+  out.push_back(DataArray{"normal_exact", 1, std::vector<double>(limit.normal_exact.begin(), limit.normal_exact.end()), true});
+  if ((limit.approximate > 0 || limit.approximate_normals > 0) && !a.quiet)
+    fmt::print(stderr,
+               "subdiv: note: {} approximates {} position(s) and {} more normal(s) of {} vertices (point data "
+               "limit_exact, normal_exact): {}\n",
+               a.limit ? "--limit" : "--normals", limit.approximate, limit.approximate_normals, limit.exact.size(),
+               fmt::join(limit.approximate_reasons, "; "));
+  return out;
+}
+
 void run(const RefineArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   if (is_curve_scheme(a.scheme))  // polylines: tools/subdiv/curve_refine.cpp
@@ -150,40 +186,36 @@ void run(const RefineArgs& a) {
   }
   check_fits_in_memory(*seq.schemes.front(), base, seq.total_levels);
 
-  const RefineOptions options = refine_options(with_mesh_options(a, mesh.options));
+  RefineOptions options = refine_options(with_mesh_options(a, mesh.options));
+  if (!a.vertex_params.empty() && cleanup.dropped_vertices > 0)
+    throw Error(fmt::format("{}: --vertex-param gives values in the file's vertex order, but unused vertices were "
+                            "dropped (see the warning) and the rest renumbered; remove them from the mesh first",
+                            a.mesh));
+  options.vertex_parameters = read_vertex_params(a.vertex_params, base.vertex_count);
   Progress progress;
   progress.say(fmt::format("refining topology: {} levels of {}", seq.total_levels, a.scheme));
   Hierarchy h = refine_topology(seq.runs, std::move(base), options);
   for (const auto& w : h.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
-  std::vector<std::vector<double>> positions{mesh.positions};
+  // The positions and the user's arrays, level by level (framework/primvar/level_data.h).
+  std::vector<std::string> dropped;
+  std::vector<LevelData> levels{{mesh.positions, carried_point_arrays(mesh.point_data, &dropped), mesh.cell_data}};
+  check_finite_arrays(levels.front(), a.mesh);
+  for (const auto& name : dropped)
+    notes.push_back(fmt::format("point array '{}' holds normals, which refinement does not carry (a mix of unit "
+                                "normals is no normal); --normals writes the exact limit normals", name));
   for (int l = 0; l < seq.total_levels; ++l) {
     progress.say(fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
     // Straight from the rules (no stencil tables), or a non-linear plugin rule.
-    positions.push_back(step_values(seq.runs, h, l, positions.back(), 3, options));
+    levels.push_back(next_level_data(seq.runs, h, l, levels.back(), options));
   }
+  std::vector<double>& finest = levels.back().positions;
   std::vector<DataArray> limit_data;
-  if (a.limit) {
-    // The finest level's vertices moved to their limit points, with limit normals
-    // (framework/analysis/surface/limit_evaluation.h); the scheme that would refine it next decides.
-    progress.say("limit positions and normals");
-    LimitOptions lo;
-    lo.features = options.features;
-    lo.first_step = options.first_step + seq.total_levels;
-    const LimitResult limit = limit_positions(*seq.schemes.back(), h.levels.back(), positions.back(), lo);
-    positions.back() = limit.positions;
-    limit_data.push_back(DataArray{"normal", 3, limit.normals, false});
-    limit_data.push_back(DataArray{"limit_exact", 1, std::vector<double>(limit.exact.begin(), limit.exact.end()), true});
-    limit_data.push_back(
-        DataArray{"normal_exact", 1, std::vector<double>(limit.normal_exact.begin(), limit.normal_exact.end()), true});
-    if ((limit.approximate > 0 || limit.approximate_normals > 0) && !a.quiet)
-      fmt::print(stderr,
-                 "subdiv: note: --limit approximates {} position(s) and {} more normal(s) of {} vertices (point data "
-                 "limit_exact, normal_exact): {}\n",
-                 limit.approximate, limit.approximate_normals, limit.exact.size(),
-                 fmt::join(limit.approximate_reasons, "; "));
+  if (a.limit || a.normals) {
+    progress.say(a.limit ? "limit positions and normals" : "limit normals");
+    limit_data = apply_limits(a, seq, h, options, levels.back());
   }
   progress.say(fmt::format("writing {}", a.output));
-  write_levels(a.output, h, positions, options.features, limit_data,
+  write_levels(a.output, h, levels, options.features, limit_data,
                used_options(options, mesh.options, seq));
   progress.done();
   if (!a.quiet) {
@@ -210,6 +242,7 @@ void add_refine_command(CLI::App& app) {
                   "Output file: .vtp (finest level) or .pvd (all levels) for ParaView, or .obj, .off, .ply, .stl")
       ->required();
   add_param_option(cmd, args->params);
+  add_vertex_param_option(cmd, args->vertex_params);
   add_boundary_option(cmd, "--boundary", args->boundary);
   add_crease_method_option(cmd, args->crease_method);
   cmd->add_option("--features", args->features,
@@ -227,8 +260,13 @@ void add_refine_command(CLI::App& app) {
       ->check(CLI::Range(0, kMaxStartLevel))
       ->capture_default_str();
   cmd->add_flag("--limit", args->limit,
-                "Move the finest level's vertices to their limit positions and write limit normals as point data "
-                "'normal' (with --levels 0: the limit points of the input's own vertices)");
+                "Move the finest level's vertices, and the input's interpolated point arrays, to their limit values "
+                "and write limit normals as point data 'normal' (with --levels 0: the limits of the input's own "
+                "vertices)");
+  cmd->add_flag("--normals", args->normals,
+                "Write the exact limit normals of the finest level's vertices as point data 'normal' (the vertices "
+                "stay where refinement put them). Normals in the input are not refined: a mix of unit normals is "
+                "no normal, so they are left out with a note");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   cmd->footer("Example: subdiv refine examples/meshes/cube.obj --scheme catmull-clark --levels 3 -o cube.pvd");
   cmd->add_flag("--smooth-triangles", args->smooth_triangles,

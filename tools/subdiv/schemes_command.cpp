@@ -18,7 +18,8 @@ void print_parameters(const std::string& name, const std::string& kind) {
         for (auto& c : p.choices) list += (list.empty() ? "" : "|") + c;
         fmt::print("      --param {}={}  (default {}) {}\n", p.name, list, p.choice, p.description);
       } else {
-        fmt::print("      --param {}=<number>  (default {}) {}\n", p.name, p.value, p.description);
+        fmt::print("      --param {}=<number>  (default {}) {}{}\n", p.name, p.value, p.description,
+                   p.per_vertex ? fmt::format(" [per vertex: --vertex-param {}=FILE]", p.name) : "");
       }
     }
   } catch (const Error& e) {

@@ -207,100 +207,119 @@ struct SchemeLimits::Impl {
     m.ok = true;
   }
 
-  LimitMask compute(const LocalConfig& c) const {
+  // The masks the analysis finds at the centre of patch p (a vertex or a face), labelled
+  // around that centre.
+  LimitMask analysed_mask(const Patch& p, const LocalConfig& c) const {
     LimitMask m;
     m.centre = c.centre;
-    const SurfaceAnalysisOptions so = analysis_options();
-    const int rings = so.max_ring + 3;
+    const SurfaceAnalysis a = analyse_patch(scheme, p, c, analysis_options());
+    take_masks(a, m);
+    if (!m.ok) return m;
+    m.radius = support_ring(a, m) + 1;
+    m.signature = label_neighbourhood(p.level, p.centre_kind, p.centre, p.start, m.radius).signature;
+    return m;
+  }
+
+  // Masks over a step's child vertices pulled back through the step's stencils `t` onto the
+  // parent vertices: per parent vertex, its weight in the position mask, then in each
+  // direction mask.
+  static std::map<Index, std::vector<double>> pull_back_masks(const LimitMask& child, const std::vector<Index>& child_vertex,
+                                                        const StencilTable& t) {
+    const size_t k = child.directions.size();
+    std::map<Index, std::vector<double>> pulled;
+    auto pull = [&](size_t slot, const std::vector<double>& mask) {
+      for (size_t i = 0; i < mask.size(); ++i) {
+        if (mask[i] == 0.0) continue;
+        const Index cv = child_vertex[i];
+        for (Index e = t.offsets[size_t(cv)]; e < t.offsets[size_t(cv) + 1]; ++e) {
+          auto& w = pulled[t.indices[size_t(e)]];
+          w.resize(k + 1, 0.0);
+          w[slot] += mask[i] * t.weights[size_t(e)];
+        }
+      }
+    };
+    pull(0, child.position);
+    for (size_t j = 0; j < k; ++j) pull(j + 1, child.directions[j]);
+    return pulled;
+  }
+
+  // Pulled weights laid out by the labels around vertex p.centre, trimmed to whole rings.
+  static void store_pulled(const Patch& p, const std::map<Index, std::vector<double>>& pulled, size_t directions,
+                           int reach, LimitMask& m) {
+    Labelling lab = label_neighbourhood(p.level, CentreKind::Vertex, p.centre, p.start, reach);
+    size_t size = 0;
+    for (const auto& [v, w] : pulled) {
+      bool nonzero = false;
+      for (double x : w) nonzero |= x != 0.0;
+      if (!nonzero) continue;
+      const Index l = lab.label_of[size_t(v)];
+      if (l == kNone) throw Error("a V-face mask reaches beyond the labelled neighbourhood");
+      size = std::max(size, size_t(l) + 1);
+    }
+    m.radius = (size ? lab.distance[size - 1] : 0) + 1;
+    lab = label_neighbourhood(p.level, CentreKind::Vertex, p.centre, p.start, m.radius);
+    m.position.assign(size, 0.0);
+    m.directions.assign(directions, std::vector<double>(size, 0.0));
+    m.cyclic = true;
+    for (const auto& [v, w] : pulled) {
+      const Index l = lab.label_of[size_t(v)];
+      if (l == kNone || size_t(l) >= size) continue;
+      m.position[size_t(l)] = w[0];
+      for (size_t j = 0; j < directions; ++j) m.directions[j][size_t(l)] = w[j + 1];
+    }
+    m.signature = lab.signature;
+    m.ok = true;
+  }
+
+  // Dual schemes: one step turns the vertex into its V-face; analyse that face in the
+  // refined patch and pull its masks back through the step's stencils.
+  LimitMask dual_vertex_mask(const Patch& p, const LocalConfig& c) const {
+    LimitMask m;
+    m.centre = c.centre;
+    RefineOptions ro;
+    ro.levels = 1, ro.first_step = c.first_step, ro.features = options.features;
+    const Hierarchy h = refine(scheme, p.level, ro);
+    const Index g = vertex_face(p.level, h.levels[1], h.origins[0], p.centre);
+    if (g == kNone) throw Error(fmt::format("the {} becomes no face in a dual step", c.describe()));
+    Patch child;
+    child.level = h.levels[1];
+    child.xy = h.stencils[0].apply(p.xy, 2);
+    child.centre_kind = CentreKind::Face;
+    child.centre = g;
+    child.start = 0;
+    LocalConfig fc;
+    fc.centre = CentreKind::Face;
+    fc.valence = child.level.face_size(g);
+    fc.first_step = c.first_step + 1;
+    const SurfaceAnalysis a = analyse_patch(scheme, child, fc, analysis_options());
+    LimitMask face;
+    take_masks(a, face);
+    if (!face.ok) {
+      m.error = face.error;
+      return m;
+    }
+    store_pulled(p, pull_back_masks(face, a.label_vertices, h.stencils[0]), face.directions.size(), a.ring + 3, m);
+    return m;
+  }
+
+  // The masks of configuration c: analysed at a face or vertex centre, or (dual schemes)
+  // pulled back from the vertex's V-face.
+  LimitMask compute(const LocalConfig& c) const {
+    const int rings = analysis_options().max_ring + 3;
     try {
       if (c.centre == CentreKind::Face) {
         if (c.boundary || !c.sharp.empty() || c.corner) throw Error("faces are analysed in the interior only");
-        const Patch p = make_face_patch(c.valence, rings);
-        const SurfaceAnalysis a = analyse_patch(scheme, p, c, so);
-        take_masks(a, m);
-        if (!m.ok) return m;
-        m.radius = support_ring(a, m) + 1;
-        m.signature = label_neighbourhood(p.level, CentreKind::Face, p.centre, p.start, m.radius).signature;
-        return m;
+        return analysed_mask(make_face_patch(c.valence, rings), c);
       }
       const Patch p = make_vertex_patch(centre == CentreKind::Face ? PatchCells::Quads : cells, c, rings);
-      if (centre == CentreKind::Vertex) {
-        const SurfaceAnalysis a = analyse_patch(scheme, p, c, so);
-        take_masks(a, m);
-        if (!m.ok) return m;
-        m.radius = support_ring(a, m) + 1;
-        m.signature = label_neighbourhood(p.level, CentreKind::Vertex, p.centre, p.start, m.radius).signature;
-        return m;
-      }
-      // Dual scheme: one step turns the vertex into its V-face; analyse that face in the
-      // refined patch and pull its masks back through the step's stencils.
-      RefineOptions ro;
-      ro.levels = 1, ro.first_step = c.first_step, ro.features = options.features;
-      const Hierarchy h = refine(scheme, p.level, ro);
-      const Index g = vertex_face(p.level, h.levels[1], h.origins[0], p.centre);
-      if (g == kNone) throw Error(fmt::format("the {} becomes no face in a dual step", c.describe()));
-      Patch child;
-      child.level = h.levels[1];
-      child.xy = h.stencils[0].apply(p.xy, 2);
-      child.centre_kind = CentreKind::Face;
-      child.centre = g;
-      child.start = 0;
-      LocalConfig fc;
-      fc.centre = CentreKind::Face;
-      fc.valence = child.level.face_size(g);
-      fc.first_step = c.first_step + 1;
-      const SurfaceAnalysis a = analyse_patch(scheme, child, fc, so);
-      LimitMask face;
-      take_masks(a, face);
-      if (!face.ok) {
-        m.error = face.error;
-        return m;
-      }
-      const StencilTable& t = h.stencils[0];
-      const size_t k = face.directions.size();
-      // Per parent vertex: weight in the position mask, then in each direction mask.
-      std::map<Index, std::vector<double>> pulled;
-      auto pull = [&](size_t slot, const std::vector<double>& mask) {
-        for (size_t i = 0; i < mask.size(); ++i) {
-          if (mask[i] == 0.0) continue;
-          const Index cv = a.label_vertices[i];
-          for (Index e = t.offsets[size_t(cv)]; e < t.offsets[size_t(cv) + 1]; ++e) {
-            auto& w = pulled[t.indices[size_t(e)]];
-            w.resize(k + 1, 0.0);
-            w[slot] += mask[i] * t.weights[size_t(e)];
-          }
-        }
-      };
-      pull(0, face.position);
-      for (size_t j = 0; j < k; ++j) pull(j + 1, face.directions[j]);
-      Labelling lab = label_neighbourhood(p.level, CentreKind::Vertex, p.centre, p.start, a.ring + 3);
-      size_t size = 0;
-      for (const auto& [v, w] : pulled) {
-        const Index l = lab.label_of[size_t(v)];
-        bool nonzero = false;
-        for (double x : w) nonzero |= x != 0.0;
-        if (!nonzero) continue;
-        if (l == kNone) throw Error("a V-face mask reaches beyond the labelled neighbourhood");
-        size = std::max(size, size_t(l) + 1);
-      }
-      m.radius = (size ? lab.distance[size - 1] : 0) + 1;
-      lab = label_neighbourhood(p.level, CentreKind::Vertex, p.centre, p.start, m.radius);
-      m.position.assign(size, 0.0);
-      m.directions.assign(k, std::vector<double>(size, 0.0));
-      m.cyclic = true;
-      for (const auto& [v, w] : pulled) {
-        const Index l = lab.label_of[size_t(v)];
-        if (l == kNone || size_t(l) >= size) continue;
-        m.position[size_t(l)] = w[0];
-        for (size_t j = 0; j < k; ++j) m.directions[j][size_t(l)] = w[j + 1];
-      }
-      m.signature = lab.signature;
-      m.ok = true;
+      return centre == CentreKind::Vertex ? analysed_mask(p, c) : dual_vertex_mask(p, c);
     } catch (const Error& e) {
+      LimitMask m;
+      m.centre = c.centre;
       m.ok = false;
       m.error = e.what();
+      return m;
     }
-    return m;
   }
 
   std::shared_ptr<const LimitMask> get(const LocalConfig& config) {

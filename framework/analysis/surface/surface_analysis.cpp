@@ -241,36 +241,57 @@ struct AnalysisRun {
   Labelling parent, child;
 };
 
-void check_characteristic_map(const AnalysisRun& cx, int K, const Matrix& rp, double l1, double l2, bool equal,
-                              SurfaceAnalysis& out) {
-  CharacteristicMap& cm = out.characteristic_map;
-  // A wider invariant ring, so the refined region near the centre is exact.
-  int big = K;
-  while (big < K + 2 && big < cx.options.max_ring && maps_to_itself(cx.table, cx.parent, cx.child, big + 1)) ++big;
-  const int mb = cx.parent.count_within(big);
+// The subdominant eigenvectors on a ring wider than the analysed one (so that the refined
+// region near the centre is exact), fitted to the analysed ring's eigenvectors `rp`.
+struct EigenvectorNet {
+  Matrix values;  // two columns: the map's x and y per label
+  int ring = 0;   // the ring the net covers
+};
+
+EigenvectorNet widen_eigenvectors(const AnalysisRun& cx, int K, const Matrix& rp, double l1, double l2, bool equal,
+                                  CharacteristicMap& cm) {
+  EigenvectorNet net;
+  net.ring = K;
+  while (net.ring < K + 2 && net.ring < cx.options.max_ring &&
+         maps_to_itself(cx.table, cx.parent, cx.child, net.ring + 1))
+    ++net.ring;
+  const int mb = cx.parent.count_within(net.ring);
   const Matrix sb = local_matrix(cx.table, cx.parent, cx.child, mb);
-  Matrix n1 = right_null(sb, l1);
-  Matrix basis = n1;
+  Matrix basis = right_null(sb, l1);
   if (!equal) {
-    const Matrix n2 = right_null(sb, l2);
+    const Matrix n1 = basis, n2 = right_null(sb, l2);
     basis.resize(mb, n1.cols() + n2.cols());
     basis << n1, n2;
   }
   const int m = int(rp.rows());
-  Matrix values = Matrix::Zero(mb, 2);
-  values.topRows(m) = rp;
+  net.values = Matrix::Zero(mb, 2);
+  net.values.topRows(m) = rp;
   if (basis.cols() >= 2) {
     const Matrix fit = basis.topRows(m).colPivHouseholderQr().solve(rp);
-    if ((basis.topRows(m) * fit - rp).norm() <= 1e-7 * std::max(1.0, rp.norm())) values = basis * fit;
+    if ((basis.topRows(m) * fit - rp).norm() <= 1e-7 * std::max(1.0, rp.norm())) net.values = basis * fit;
     else cm.note = "wider eigenvectors did not match; the map uses the analysed ring only";
   }
-  // Refine a neighbourhood of the centre carrying the eigenvector net.
+  return net;
+}
+
+// The net refined until the region around the centre has grown by the split's scale to
+// options.characteristic_scale; `centre` is kNone when it could not be followed.
+struct RefinedNet {
+  Hierarchy hierarchy;
+  std::vector<double> positions;  // the finest level, xyz with z = 0
+  Index centre = kNone;
+  int steps = 0;
+  int rings = 0;  // the refined region's ring count around the centre
+};
+
+RefinedNet refine_net(const AnalysisRun& cx, const EigenvectorNet& net) {
   const Patch& p = cx.patch;
-  Extracted e = extract_neighbourhood(p.level, p.centre_kind, p.centre, big + 1);
+  const int mb = int(net.values.rows());
+  Extracted e = extract_neighbourhood(p.level, p.centre_kind, p.centre, net.ring + 1);
   std::vector<double> pos(size_t(3 * e.level.vertex_count), 0.0);
   for (Index v = 0; v < e.level.vertex_count; ++v) {
     const Index label = cx.parent.label_of[size_t(e.original[size_t(v)])];
-    if (label != kNone && label < mb) pos[size_t(3 * v)] = values(label, 0), pos[size_t(3 * v + 1)] = values(label, 1);
+    if (label != kNone && label < mb) pos[size_t(3 * v)] = net.values(label, 0), pos[size_t(3 * v + 1)] = net.values(label, 1);
   }
   Index centre = kNone;
   if (p.centre_kind == CentreKind::Vertex) centre = e.local_of[size_t(p.centre)];
@@ -278,90 +299,86 @@ void check_characteristic_map(const AnalysisRun& cx, int K, const Matrix& rp, do
     for (size_t f = 0; f < e.face_original.size(); ++f)
       if (e.face_original[f] == p.centre) centre = Index(f);
   const double s = splitter_info(cx.scheme.split()).scale;
-  int T = cx.steps;
-  while (std::pow(s, T) < cx.options.characteristic_scale - 1e-9) T += cx.steps;
+  RefinedNet out;
+  out.steps = cx.steps;
+  while (std::pow(s, out.steps) < cx.options.characteristic_scale - 1e-9) out.steps += cx.steps;
+  out.rings = std::max(1, int(std::floor(std::pow(s, out.steps) + 1e-9)));
   RefineOptions ro = cx.refine;
-  ro.levels = T;
-  const Hierarchy h = refine(cx.scheme, e.level, ro);
-  const auto positions = level_positions(h, pos, 3);
-  const Index c = follow_centre(h, positions, p.centre_kind, centre, 3);
-  if (c == kNone) {
-    cm.note = "the centre could not be followed through the refinement";
-    return;
-  }
-  const Level& L = h.levels.back();
-  const std::vector<double>& X = positions.back();
-  const int D = std::max(1, int(std::floor(std::pow(s, T) + 1e-9)));
-  const Labelling lab = label_neighbourhood(L, p.centre_kind, c, 0, D);
-  // Faces with every corner within D.
+  ro.levels = out.steps;
+  out.hierarchy = refine(cx.scheme, e.level, ro);
+  auto positions = level_positions(out.hierarchy, pos, 3);
+  out.centre = follow_centre(out.hierarchy, positions, p.centre_kind, centre, 3);
+  out.positions = std::move(positions.back());
+  return out;
+}
+
+// Faces with every corner labelled (within the region).
+std::vector<Index> faces_within(const Level& L, const Labelling& lab) {
   std::vector<Index> kept;
   for (Index f = 0; f < L.face_count(); ++f) {
     bool inside = true;
-    for (Index v : L.face(f)) {
-      const Index l = lab.label_of[size_t(v)];
-      if (l == kNone) { inside = false; break; }
-    }
+    for (Index v : L.face(f)) inside = inside && lab.label_of[size_t(v)] != kNone;
     if (inside) kept.push_back(f);
   }
-  cm.computed = true;
-  cm.refinement_steps = T;
-  cm.faces = int(kept.size());
-  double total = 0, min_area = 1e300;
-  std::vector<double> areas;
-  for (Index f : kept) {
-    double a = 0;
-    const auto vs = L.face(f);
-    for (size_t i = 0; i < vs.size(); ++i) {
-      const Index u = vs[i], w = vs[(i + 1) % vs.size()];
-      a += X[size_t(3 * u)] * X[size_t(3 * w + 1)] - X[size_t(3 * w)] * X[size_t(3 * u + 1)];
-    }
-    a *= 0.5;
-    areas.push_back(a);
-    total += std::abs(a);
-    min_area = std::min(min_area, a);
+  return kept;
+}
+
+double signed_area(const Level& L, const std::vector<double>& X, Index f) {
+  double a = 0;
+  const auto vs = L.face(f);
+  for (size_t i = 0; i < vs.size(); ++i) {
+    const Index u = vs[i], w = vs[(i + 1) % vs.size()];
+    a += X[size_t(3 * u)] * X[size_t(3 * w + 1)] - X[size_t(3 * w)] * X[size_t(3 * u + 1)];
   }
-  // Regular: the Jacobian keeps one sign, so every face has the orientation of the majority
-  // (a map may mirror the patch; the normalisation fixes only two points).
+  return 0.5 * a;
+}
+
+// Regular: the Jacobian keeps one sign, so every face has the orientation of the majority
+// (a map may mirror the patch; the normalisation fixes only two points).
+void measure_orientation(const Level& L, const std::vector<double>& X, const std::vector<Index>& kept,
+                         CharacteristicMap& cm) {
+  std::vector<double> areas;
+  double total = 0;
+  for (Index f : kept) areas.push_back(signed_area(L, X, f)), total += std::abs(areas.back());
   const double mean = kept.empty() ? 1.0 : total / double(kept.size());
   int positive = 0, negative = 0;
   for (double a : areas) positive += a > 1e-9 * mean, negative += a < -1e-9 * mean;
   const int sign = positive >= negative ? 1 : -1;
   cm.folded = int(kept.size()) - (sign > 0 ? positive : negative);
-  double max_area = -1e300;
-  for (double a : areas) max_area = std::max(max_area, a);
-  cm.min_area_ratio = kept.empty() ? 0.0 : (sign > 0 ? min_area : -max_area) / mean;
+  double smallest = 1e300;  // in the majority's orientation
+  for (double a : areas) smallest = std::min(smallest, sign * a);
+  cm.min_area_ratio = kept.empty() ? 0.0 : smallest / mean;
   cm.regular = !kept.empty() && cm.folded == 0;
-  // Winding of the region's boundary around the limit point (the origin).
-  if (!out.config.boundary) {
-    std::map<std::pair<Index, Index>, int> directed;
-    for (Index f : kept) {
-      const auto vs = L.face(f);
-      for (size_t i = 0; i < vs.size(); ++i) directed[{vs[i], vs[(i + 1) % vs.size()]}]++;
-    }
-    std::map<Index, Index> next;
-    for (const auto& [edge, count] : directed)
-      if (!directed.count({edge.second, edge.first})) next[edge.first] = edge.second;
-    double turns = 0;
-    std::map<Index, bool> seen;
-    for (const auto& [a0, b0] : next) {
-      if (seen[a0]) continue;
-      Index a = a0;
-      for (size_t guard = 0; guard <= next.size() && !seen[a]; ++guard) {
-        seen[a] = true;
-        const Index b = next[a];
-        turns += angle_between(X[size_t(3 * a)], X[size_t(3 * a + 1)], X[size_t(3 * b)], X[size_t(3 * b + 1)]);
-        a = b;
-      }
-    }
-    cm.winding = int(std::lround(turns / (2 * kPi)));
-    cm.winding_checked = true;
-    cm.injective = cm.regular && std::abs(cm.winding) == 1;
-  } else {
-    cm.injective = cm.regular;
-    cm.note += cm.note.empty() ? "" : "; ";
-    cm.note += "boundary centre: injectivity taken from regularity (the centre lies on the rim)";
+}
+
+// How many times the region's boundary winds around the limit point (the origin).
+int boundary_winding(const Level& L, const std::vector<double>& X, const std::vector<Index>& kept) {
+  std::map<std::pair<Index, Index>, int> directed;
+  for (Index f : kept) {
+    const auto vs = L.face(f);
+    for (size_t i = 0; i < vs.size(); ++i) directed[{vs[i], vs[(i + 1) % vs.size()]}]++;
   }
-  // The refined map as a mesh.
+  std::map<Index, Index> next;
+  for (const auto& [edge, count] : directed)
+    if (!directed.count({edge.second, edge.first})) next[edge.first] = edge.second;
+  double turns = 0;
+  std::map<Index, bool> seen;
+  for (const auto& [a0, b0] : next) {
+    if (seen[a0]) continue;
+    Index a = a0;
+    for (size_t guard = 0; guard <= next.size() && !seen[a]; ++guard) {
+      seen[a] = true;
+      const Index b = next[a];
+      turns += angle_between(X[size_t(3 * a)], X[size_t(3 * a + 1)], X[size_t(3 * b)], X[size_t(3 * b + 1)]);
+      a = b;
+    }
+  }
+  return int(std::lround(turns / (2 * kPi)));
+}
+
+// The refined map as a planar mesh, with each vertex's ring distance from the centre.
+void store_map_mesh(const Level& L, const std::vector<double>& X, const std::vector<Index>& kept, const Labelling& lab,
+                    CharacteristicMap& cm) {
   std::vector<Index> index(size_t(L.vertex_count), kNone);
   MeshData& mesh = cm.mesh;
   for (Index f : kept) {
@@ -375,7 +392,38 @@ void check_characteristic_map(const AnalysisRun& cx, int K, const Matrix& rp, do
     }
     mesh.face_offsets.push_back(Index(mesh.face_vertices.size()));
   }
-  (void)l2;
+}
+
+// Seed 000 §4 (Reif): the characteristic map of the subdominant eigenvectors must be regular
+// and injective. Stages: widen the eigenvectors, refine them as a net, keep the region
+// around the centre, measure its orientation and winding, store it as a mesh.
+void check_characteristic_map(const AnalysisRun& cx, int K, const Matrix& rp, double l1, double l2, bool equal,
+                              SurfaceAnalysis& out) {
+  CharacteristicMap& cm = out.characteristic_map;
+  const EigenvectorNet net = widen_eigenvectors(cx, K, rp, l1, l2, equal, cm);
+  const RefinedNet refined = refine_net(cx, net);
+  if (refined.centre == kNone) {
+    cm.note = "the centre could not be followed through the refinement";
+    return;
+  }
+  const Level& L = refined.hierarchy.levels.back();
+  const std::vector<double>& X = refined.positions;
+  const Labelling lab = label_neighbourhood(L, cx.patch.centre_kind, refined.centre, 0, refined.rings);
+  const std::vector<Index> kept = faces_within(L, lab);
+  cm.computed = true;
+  cm.refinement_steps = refined.steps;
+  cm.faces = int(kept.size());
+  measure_orientation(L, X, kept, cm);
+  if (!out.config.boundary) {
+    cm.winding = boundary_winding(L, X, kept);
+    cm.winding_checked = true;
+    cm.injective = cm.regular && std::abs(cm.winding) == 1;
+  } else {
+    cm.injective = cm.regular;
+    cm.note += cm.note.empty() ? "" : "; ";
+    cm.note += "boundary centre: injectivity taken from regularity (the centre lies on the rim)";
+  }
+  store_map_mesh(L, X, kept, lab, cm);
 }
 
 // ---------------------------------------------------------------------------------------------

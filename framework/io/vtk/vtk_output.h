@@ -11,15 +11,6 @@
 
 namespace subdiv {
 
-// A named array of `components` values per tuple. Integer arrays are stored as
-// vtkIntArray (values must be whole numbers that fit an int), others as vtkDoubleArray.
-struct DataArray {
-  std::string name;
-  int components = 1;
-  std::vector<double> values;
-  bool integer = false;
-};
-
 // One level to write. point_data has one tuple per vertex. cell_data has either one tuple
 // per face, and line cells get -1 in every component, or one tuple per cell in the order
 // faces, polylines, crease edges.

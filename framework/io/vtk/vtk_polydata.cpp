@@ -201,7 +201,14 @@ vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level) {
   poly->SetPolys(cell_array({mesh.face_offsets.begin(), mesh.face_offsets.end()},
                             {mesh.face_vertices.begin(), mesh.face_vertices.end()}));
   poly->SetLines(lines(mesh));
-  for (const DataArray& a : level.point_data) poly->GetPointData()->AddArray(to_vtk(a, a.values));
+  for (const DataArray& a : level.point_data) {
+    const auto array = to_vtk(a, a.values);
+    poly->GetPointData()->AddArray(array);
+    // Active attributes, so that ParaView shades with the normals and textures with the UVs.
+    if (a.role == ArrayRole::Normals && a.components == 3) poly->GetPointData()->SetNormals(array);
+    if (a.role == ArrayRole::TextureCoordinates && a.components <= 3) poly->GetPointData()->SetTCoords(array);
+    if (a.role == ArrayRole::Color) poly->GetPointData()->SetScalars(array);
+  }
   for (const DataArray& a : level.cell_data)
     poly->GetCellData()->AddArray(to_vtk(a, cell_order(a, cells)));
   add_feature_arrays(*poly, mesh, cells);

@@ -3,7 +3,9 @@
 // are skipped. Points keep their order. Crease and corner tags come back from the arrays
 // write_vtp adds (cell_kind, sharpness, corner_sharpness).
 #include <algorithm>
+#include <set>
 #include <cctype>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -15,6 +17,8 @@
 #include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
+#include <vtkDataSetAttributes.h>
+#include <vtkType.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -163,7 +167,87 @@ void restore_corners(vtkPolyData& poly, MeshData& mesh) {
     if (const double s = corners->GetTuple1(v); s != 0) mesh.corners.push_back({Index(v), s});
 }
 
-MeshData to_mesh_data(vtkPolyData& poly) {
+// Arrays SubdivKit writes about its own refinement (vtk_polydata.cpp and the CLI's level
+// output): read back as tags (cell_kind, sharpness, corner_sharpness) or recomputed by the
+// next refinement, so they are not the user's data.
+bool subdivkit_array(const char* name, bool point) {
+  static const std::set<std::string> points = {"corner_sharpness", "origin", "valence", "level", "vertex_class",
+                                               "limit_exact", "normal_exact"};
+  static const std::set<std::string> cells = {"cell_kind", "sharpness", "parent_face", "base_face"};
+  return name && (point ? points : cells).count(name) > 0;
+}
+
+ArrayRole role_of(vtkDataSetAttributes& attributes, vtkDataArray* array) {
+  if (array == attributes.GetNormals()) return ArrayRole::Normals;
+  if (array == attributes.GetTCoords()) return ArrayRole::TextureCoordinates;
+  if (array == attributes.GetScalars() && array->GetDataType() == VTK_UNSIGNED_CHAR) return ArrayRole::Color;
+  return ArrayRole::Data;
+}
+
+// Every numeric array of `attributes`, with the tuples `pick(i)` for i < count (point data:
+// every point; cell data: the cells that became faces).
+template <typename Pick>
+std::vector<DataArray> read_arrays(vtkDataSetAttributes& attributes, bool point, vtkIdType count, Pick pick,
+                                   const fs::path& file) {
+  std::vector<DataArray> out;
+  for (int i = 0; i < attributes.GetNumberOfArrays(); ++i) {
+    vtkAbstractArray* abstract = attributes.GetAbstractArray(i);
+    const char* name = abstract ? abstract->GetName() : nullptr;
+    if (subdivkit_array(name, point)) continue;
+    const std::string shown = name && *name ? name : fmt::format("#{}", i);
+    auto* array = vtkDataArray::SafeDownCast(abstract);
+    if (!array)
+      fail(file, fmt::format("{} array '{}' is not numeric ({}); SubdivKit refines numbers only: remove it or "
+                             "convert it", point ? "point" : "cell", shown, abstract->GetClassName()));
+    DataArray a;
+    a.name = name && *name ? name : fmt::format("array_{}", i);
+    a.components = array->GetNumberOfComponents();
+    a.integer = array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE;
+    a.role = role_of(attributes, array);
+    a.values.reserve(size_t(count) * size_t(a.components));
+    for (vtkIdType t = 0; t < count; ++t)
+      for (int c = 0; c < a.components; ++c) a.values.push_back(array->GetComponent(pick(t), c));
+    // 64-bit ids beyond an int are carried as doubles rather than refused.
+    for (double x : a.values) a.integer = a.integer && std::abs(x) <= 2147483647.0;
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
+// Cell tuples for the faces: each polygon's own, and each strip's for every triangle cut from it.
+std::vector<vtkIdType> face_cells(vtkPolyData& poly) {
+  std::vector<vtkIdType> cells;
+  const vtkIdType first_poly = poly.GetNumberOfVerts() + poly.GetNumberOfLines();
+  for (vtkIdType i = 0; i < poly.GetNumberOfPolys(); ++i) cells.push_back(first_poly + i);
+  const vtkIdType first_strip = first_poly + poly.GetNumberOfPolys();
+  auto it = vtk::TakeSmartPointer(poly.GetStrips()->NewIterator());
+  vtkIdType strip = first_strip;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++strip) {
+    vtkIdType size;
+    const vtkIdType* ids;
+    it->GetCurrentCell(size, ids);
+    for (vtkIdType i = 0; i + 2 < size; ++i) cells.push_back(strip);
+  }
+  return cells;
+}
+
+void read_user_arrays(vtkPolyData& poly, MeshData& mesh, const fs::path& file) {
+  const vtkIdType points = poly.GetNumberOfPoints();
+  for (int i = 0; i < poly.GetPointData()->GetNumberOfArrays(); ++i)
+    if (auto* a = poly.GetPointData()->GetAbstractArray(i); a && a->GetNumberOfTuples() < points)
+      fail(file, fmt::format("point array '{}' has {} tuples for {} points", a->GetName() ? a->GetName() : "",
+                             a->GetNumberOfTuples(), points));
+  mesh.point_data = read_arrays(*poly.GetPointData(), true, points, [](vtkIdType t) { return t; }, file);
+  const std::vector<vtkIdType> cells = face_cells(poly);
+  for (int i = 0; i < poly.GetCellData()->GetNumberOfArrays(); ++i)
+    if (auto* a = poly.GetCellData()->GetAbstractArray(i); a && a->GetNumberOfTuples() < poly.GetNumberOfCells())
+      fail(file, fmt::format("cell array '{}' has {} tuples for {} cells", a->GetName() ? a->GetName() : "",
+                             a->GetNumberOfTuples(), poly.GetNumberOfCells()));
+  mesh.cell_data = read_arrays(*poly.GetCellData(), false, vtkIdType(cells.size()),
+                               [&](vtkIdType t) { return cells[size_t(t)]; }, file);
+}
+
+MeshData to_mesh_data(vtkPolyData& poly, const fs::path& file) {
   MeshData mesh;
   const vtkIdType n = poly.GetNumberOfPoints();
   mesh.positions.resize(std::size_t(n) * 3);
@@ -172,6 +256,7 @@ MeshData to_mesh_data(vtkPolyData& poly) {
   append_strips(poly.GetStrips(), mesh);
   append_lines(poly, mesh);
   restore_corners(poly, mesh);
+  read_user_arrays(poly, mesh, file);
   return mesh;
 }
 
@@ -183,7 +268,7 @@ MeshData read_vtk_polydata(const fs::path& file) {
   if (!poly) fail(file, "VTK produced no data");
   if (poly->GetNumberOfPoints() > std::numeric_limits<Index>::max())
     fail(file, "it has more points than SubdivKit's 32-bit indices hold");
-  return to_mesh_data(*poly);
+  return to_mesh_data(*poly, file);
 }
 
 }  // namespace subdiv::io_detail

@@ -104,3 +104,32 @@ TEST_CASE("bad input: clear message, non-zero exit, no output file") {
   CHECK(r.exit_code != 0);
   CHECK(r.output.find("unknown output format") != std::string::npos);
 }
+
+TEST_CASE("--vertex-param: one value at every vertex writes what --param writes; a vertex's own value moves only its point") {
+  const auto dir = fresh_dir("cli-vertex-param");
+  const std::string cube = source_path("examples/meshes/cube.obj");
+  auto values = [&](const std::string& name, double first) {
+    std::ofstream f(dir / name);
+    f << "# lambda per vertex\n" << first << "\n";
+    for (int v = 1; v < 8; ++v) f << "0.6\n";
+    return (dir / name).string();
+  };
+  auto refine = [&](const std::string& options, const std::string& out) {
+    const CliResult r = run_subdiv("refine " + cube + " --scheme catmull-clark-shape -l 1 " + options + " -o " +
+                                   (dir / out).string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    std::ifstream in(dir / out);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  CHECK(refine("--vertex-param lambda=" + values("same.txt", 0.6), "a.obj") == refine("--param lambda=0.6", "b.obj"));
+  // Vertex 0 at lambda = 1 stays where it is (v' = v; its vertex point is the first vertex
+  // written); with lambda = 0.6 everywhere it moves inside the cube.
+  auto first_vertex = [](const std::string& obj) { return obj.substr(obj.find("\nv ") + 1, obj.find('\n', obj.find("\nv ") + 1) - obj.find("\nv ") - 1); };
+  std::ifstream in(cube);
+  const std::string original(std::istreambuf_iterator<char>(in), {});
+  CHECK(first_vertex(refine("--vertex-param lambda=" + values("one.txt", 1.0), "c.obj")) == first_vertex(original));
+  CHECK(first_vertex(refine("--param lambda=0.6", "d.obj")) != first_vertex(original));
+  check_refused("refine " + cube + " --scheme catmull-clark --vertex-param lambda=" + values("e.txt", 0.6), dir / "e.obj",
+                "no scheme of the run reads it per vertex");
+  check_refused("refine " + cube + " --scheme catmull-clark-shape --vertex-param lambda", dir / "f.obj", "must be written name=FILE");
+}

@@ -125,15 +125,29 @@ TEST_CASE("interpolate: Chen et al.'s global method on plain Catmull-Clark, and 
 
 TEST_CASE("interpolate: bad input is refused, nothing is written") {
   const auto dir = fresh_dir("interp-cli-errors");
-  check_refused(kCross + " " + kTwoStep + " --lambda 0.35", dir, "outside (7/20, 1]");
-  check_refused(kCross + " " + kTwoStep + " --lambda 1.5", dir, "outside (7/20, 1]");
+  check_refused(kCross + " " + kTwoStep + " --lambda 0.35", dir, "lambda = 0.35 is outside its range (0.35, 1]");
+  check_refused(kCross + " " + kTwoStep + " --lambda 1.5", dir, "lambda = 1.5 is outside its range (0.35, 1]");
   check_refused(kCross + " --scheme catmull-clark --lambda 0.5", dir, "no scheme in 'catmull-clark' has a parameter lambda");
   check_refused(kCross + " --select 0,3,40", dir, "vertex 40 does not exist; the mesh has 40 vertices");
   check_refused(kCross + " --select " + (dir / "missing.txt").string(), dir, "no such file");
   std::ofstream(dir / "ids.txt") << "1\n2\n# then\n7 123\n";
   check_refused(kCross + " --select " + (dir / "ids.txt").string(), dir, "ids.txt line 4: vertex 123 does not exist");
-  std::ofstream(dir / "lambda.txt") << "0.5\n0.2\n";
-  check_refused(kCross + " " + kTwoStep + " --lambda " + (dir / "lambda.txt").string(), dir, "lambda.txt line 2");
+  // Per-vertex values (the cross has 40 vertices): a value out of range names its vertex, a
+  // word that is not a number its line, a wrong count the count.
+  auto lambda_file = [&](const std::string& name, const std::string& second, int count) {
+    std::ofstream f(dir / name);
+    f << "0.5\n" << second << "\n";
+    for (int v = 2; v < count; ++v) f << "0.5\n";
+    return (dir / name).string();
+  };
+  check_refused(kCross + " " + kTwoStep + " --lambda " + lambda_file("range.txt", "0.2", 40), dir,
+                "per-vertex parameter 'lambda' (vertex 1): lambda = 0.2 is outside its range (0.35, 1]");
+  check_refused(kCross + " " + kTwoStep + " --lambda " + lambda_file("word.txt", "0.5x", 40), dir,
+                "word.txt line 2: '0.5x' is not a finite number");
+  check_refused(kCross + " " + kTwoStep + " --lambda " + lambda_file("count.txt", "0.5", 39), dir,
+                "39 values of 'lambda' for a mesh of 40 vertices");
+  check_refused(kCross + " " + kTwoStep + " --vertex-param beta=" + lambda_file("beta.txt", "0.5", 40), dir,
+                "per-vertex parameter 'beta': no scheme of the run reads it per vertex");
   check_refused(source_path("examples/meshes/plane-with-hole.obj") + " --scheme doo-sabin", dir,
                 "vertex 0 is on the boundary");
   // v' = 2 v - mean(ring) over bilinear edge points diverges: no eigenvector of 1 dominates.

@@ -1,5 +1,8 @@
 // Seed 001's claims: formula (2), convergence for lambda in (7/20, 1] on the paper's two
-// closed quad meshes (a cross and a torus), local interpolation and theorem 2.
+// closed quad meshes (a cross and a torus), local interpolation and theorem 2. The library
+// has no code of its own for seed 001: the two-step scheme is schemes/catmull-clark-shape.json
+// (lambda declared per vertex) followed by catmull-clark, and its limit is the sequence's
+// composite limit; formula (2) is written here only, as the reference (interp_reference.h).
 #include <doctest/doctest.h>
 
 #include <Eigen/Dense>
@@ -8,7 +11,7 @@
 
 #include "closed_form_limits.h"
 #include "framework/interpolation/limit_selection.h"
-#include "framework/interpolation/shape_two_step.h"
+#include "framework/interpolation/progressive.h"
 #include "framework/scheme/scheme_sequence.h"
 #include "framework/util/error.h"
 #include "interp_reference.h"
@@ -50,6 +53,24 @@ double c_norm(const Level& L, const std::vector<double>& targets, std::span<cons
   return std::sqrt(s);
 }
 
+// Seed 001's two-step limit as the library gives it: the limit selected for the sequence
+// catmull-clark-shape:1,catmull-clark, with one lambda (the scheme's parameter) or one per
+// vertex (RefineOptions::vertex_parameters).
+std::shared_ptr<const LimitEvaluator> two_step_limit(const Level& L, const std::vector<double>& lambda) {
+  LimitSelectionOptions o;
+  ParameterOverrides params;
+  if (lambda.size() == 1) params["lambda"] = fmt::format("{:.17g}", lambda[0]);
+  else o.vertex_parameters["lambda"] = lambda;
+  const SchemeSequence seq = load_scheme_sequence("catmull-clark-shape:1,catmull-clark", 2, params);
+  return select_limit(seq, L, o).evaluator;
+}
+
+ProgressiveResult two_step_interpolation(const Level& L, const std::vector<double>& targets,
+                                         const std::vector<double>& lambda, const std::vector<std::uint8_t>& moving,
+                                         const ProgressiveOptions& o) {
+  return progressive_interpolation(*two_step_limit(L, lambda), L, targets, moving, o);
+}
+
 }  // namespace
 
 TEST_CASE("the cross is a closed, consistently oriented quad mesh with valences 3, 4 and 5") {
@@ -69,7 +90,7 @@ TEST_CASE("the cross is a closed, consistently oriented quad mesh with valences 
   CHECK(by_valence[5] == 8);
 }
 
-TEST_CASE("formula (2) equals Catmull-Clark's limit (seed 000) of the engine's catmull-clark-shape step") {
+TEST_CASE("the library's two-step limit equals formula (2) and Catmull-Clark's limit (seed 000) of the shape step") {
   for (const auto& named : paper_meshes()) {
     // References, not a structured binding: clang 14 cannot capture those in lambdas (CAPTURE).
     const auto& name = named.name;
@@ -82,7 +103,7 @@ TEST_CASE("formula (2) equals Catmull-Clark's limit (seed 000) of the engine's c
       const Level& L1 = step.hierarchy.levels[1];
       const auto child = vertex_descendants(step.hierarchy);
       std::vector<double> got(mesh.positions.size());
-      ShapeTwoStepLimit(lambda).limit_points(L, mesh.positions, got);
+      two_step_limit(L, {lambda})->limit_points(L, mesh.positions, got);
       for (Index v = 0; v < L.vertex_count; ++v) {
         const P3 expected = cc_limit_point(L1, step.positions, child[v]);
         CHECK(dist(at(got, v), expected) < 1e-14);
@@ -118,8 +139,7 @@ TEST_CASE("global interpolation converges for lambda in (7/20, 1]: limits reach 
         c_norms.push_back(c_norm(L, mesh.positions, s.limit, std::vector<std::uint8_t>(L.vertex_count, 1), {lambda}));
         ++checked;
       };
-      const double l[] = {lambda};
-      const ProgressiveResult r = shape_progressive_interpolation(L, mesh.positions, l, {}, o);
+      const ProgressiveResult r = two_step_interpolation(L, mesh.positions, {lambda}, {}, o);
       REQUIRE(r.converged);
       CHECK(checked == r.iterations + 1);
       MESSAGE(name, " lambda ", lambda, ": ", r.iterations, " iterations");
@@ -144,24 +164,16 @@ TEST_CASE("per-vertex lambda: formula (2) with each vertex's own lambda, and the
     const Level L = mesh.level();
     std::vector<double> lambda(size_t(L.vertex_count));
     for (Index v = 0; v < L.vertex_count; ++v) lambda[v] = 0.36 + 0.64 * double((v * 7) % 11) / 10.0;
-    const ShapeTwoStepLimit limit(lambda);
+    // The engine's first step reads each vertex's own lambda (catmull-clark-shape.json
+    // declares it per vertex); Catmull-Clark's mask, selected by l S = l, follows on level 1.
     std::vector<double> got(mesh.positions.size());
-    limit.limit_points(L, mesh.positions, got);
+    two_step_limit(L, lambda)->limit_points(L, mesh.positions, got);
     for (Index v = 0; v < L.vertex_count; ++v)
       CHECK(dist(at(got, v), two_step_limit_point(L, mesh.positions, v, lambda[v])) < 1e-14);
-    // The same limit through the engine: its first step with the vertex rows rewritten per
-    // vertex, then Catmull-Clark's mask (selected by l S = l) on level 1.
-    const SchemeSequence seq = load_scheme_sequence("catmull-clark-shape:1,catmull-clark", 2, {});
-    LimitSelectionOptions so;
-    so.lambda = lambda;
-    const CompositeLimit composite({{seq.schemes[0], 1}}, std::make_shared<CatmullClarkLimit>(), so);
-    std::vector<double> via_engine(mesh.positions.size());
-    composite.limit_points(L, mesh.positions, via_engine);
-    for (size_t i = 0; i < got.size(); ++i) CHECK(via_engine[i] == doctest::Approx(got[i]).epsilon(1e-13));
 
     ProgressiveOptions o;
     o.max_iterations = 5000;
-    const ProgressiveResult r = shape_progressive_interpolation(L, mesh.positions, lambda, {}, o);
+    const ProgressiveResult r = two_step_interpolation(L, mesh.positions, lambda, {}, o);
     REQUIRE(r.converged);
     for (Index v = 0; v < L.vertex_count; ++v)
       CHECK(dist(two_step_limit_point(L, r.control, v, lambda[v]), at(mesh.positions, v)) < 1e-10 + 1e-14);
@@ -182,8 +194,7 @@ TEST_CASE("local interpolation: fixed vertices stay, moving ones are interpolate
       ProgressiveOptions o;
       o.max_iterations = 5000;
       o.observer = [&](const IterationState& s) { c_norms.push_back(c_norm(L, mesh.positions, s.limit, moving, {lambda})); };
-      const double l[] = {lambda};
-      const ProgressiveResult r = shape_progressive_interpolation(L, mesh.positions, l, moving, o);
+      const ProgressiveResult r = two_step_interpolation(L, mesh.positions, {lambda}, moving, o);
       REQUIRE(r.converged);
       for (size_t k = 1; k < r.history.size(); ++k) {
         CHECK(r.history[k].max_residual < r.history[k - 1].max_residual);
@@ -221,7 +232,7 @@ TEST_CASE("local interpolation: fixed vertices stay, moving ones are interpolate
         CHECK(dist(two_step_limit_point(L, r.control, p, lambda), at(mesh.positions, p)) < 1e-10 + 1e-14);
       // The library's general form of theorem 2 agrees with the paper's matrices.
       const std::vector<double> predicted =
-          predicted_fixed_offsets(ShapeTwoStepLimit(lambda).limit_stencils(L), mesh.positions, moving);
+          predicted_fixed_offsets(two_step_limit(L, {lambda})->limit_stencils(L), mesh.positions, moving);
       for (size_t i = 0; i < pm.Q.size(); ++i)
         for (int c = 0; c < 3; ++c)
           CHECK(predicted[3 * pm.Q[i] + c] == doctest::Approx(dq(Eigen::Index(i), c)).epsilon(1e-9).scale(1));
@@ -252,30 +263,37 @@ TEST_CASE("seed 001's matrices: M = C D with C diagonal positive and D symmetric
   }
 }
 
-TEST_CASE("selection picks formula (2) for catmull-clark-shape:1,catmull-clark on closed quads") {
+TEST_CASE("the limit selected for catmull-clark-shape:1,catmull-clark is formula (2) on closed quads, and exists on open grids") {
   const Mesh mesh = cross_mesh();
+  const Level L = mesh.level();
   const SchemeSequence seq = load_scheme_sequence("catmull-clark-shape:1,catmull-clark", 3, {{"lambda", "0.6"}});
-  const LimitChoice c = select_limit(seq, mesh.level());
-  const auto* formula = dynamic_cast<const ShapeTwoStepLimit*>(c.evaluator.get());
-  REQUIRE(formula != nullptr);
-  CHECK(formula->lambda(0) == 0.6);
-  // On an open quad grid formula (2) does not apply; the composite limit does.
+  const LimitChoice c = select_limit(seq, L);
+  std::vector<double> got(mesh.positions.size());
+  c.evaluator->limit_points(L, mesh.positions, got);
+  for (Index v = 0; v < L.vertex_count; ++v)
+    CHECK(dist(at(got, v), two_step_limit_point(L, mesh.positions, v, 0.6)) < 1e-14);
+  // Formula (2) needs closed quad meshes; the composite limit covers an open grid too, and
+  // is a limit: l S = l holds for it one level down (checked by selection for the tail).
   const Mesh open = grid(4, 3);
-  const LimitChoice g = select_limit(seq, open.level());
-  CHECK(dynamic_cast<const CompositeLimit*>(g.evaluator.get()) != nullptr);
+  CHECK_NOTHROW(select_limit(seq, open.level()).evaluator->limit_stencils(open.level()));
 }
 
-TEST_CASE("bad lambda is refused with the range named") {
-  CHECK_THROWS_WITH_AS(ShapeTwoStepLimit(0.35), doctest::Contains("outside (7/20, 1]"), Error);
-  CHECK_THROWS_WITH_AS(ShapeTwoStepLimit(1.0000001), doctest::Contains("outside (7/20, 1]"), Error);
-  CHECK_THROWS_WITH_AS(ShapeTwoStepLimit(std::vector<double>{0.5, 0.2}), doctest::Contains("vertex 1"), Error);
-  CHECK_NOTHROW(ShapeTwoStepLimit(0.3500001));
-  CHECK_NOTHROW(ShapeTwoStepLimit(1.0));
+TEST_CASE("bad lambda is refused with the range and the vertex named") {
+  CHECK_THROWS_WITH_AS(load_scheme_sequence("catmull-clark-shape:1,catmull-clark", 2, {{"lambda", "0.35"}}),
+                       doctest::Contains("outside its range (0.35, 1]"), Error);
+  CHECK_THROWS_WITH_AS(load_scheme_sequence("catmull-clark-shape:1,catmull-clark", 2, {{"lambda", "1.0000001"}}),
+                       doctest::Contains("outside its range (0.35, 1]"), Error);
   const Mesh mesh = torus(4, 4);
-  const double few[] = {0.5, 0.5};
-  CHECK_THROWS_WITH_AS(shape_progressive_interpolation(mesh.level(), mesh.positions, few, {}),
-                       doctest::Contains("one value or one per vertex"), Error);
-  // Formula (2) names what it does not cover.
-  CHECK_THROWS_WITH_AS(ShapeTwoStepLimit(0.5).limit_stencils(grid(2, 2).level()),
-                       doctest::Contains("on the boundary"), Error);
+  const Level L = mesh.level();
+  std::vector<double> lambda(size_t(L.vertex_count), 0.5);
+  lambda[7] = 0.2;
+  CHECK_THROWS_WITH_AS(two_step_limit(L, lambda), doctest::Contains("(vertex 7)"), Error);
+  CHECK_THROWS_WITH_AS(two_step_limit(L, {0.5, 0.5}), doctest::Contains("2 values for a mesh of 16 vertices"), Error);
+  // The scheme applied forever must not read lambda per vertex: no limit mask is known then.
+  LimitSelectionOptions o;
+  o.vertex_parameters["lambda"] = std::vector<double>(size_t(L.vertex_count), 0.5);
+  const SchemeSequence forever = load_scheme_sequence("catmull-clark-shape", 2, {});
+  CHECK_THROWS_WITH_AS(select_limit(forever, L, o), doctest::Contains("applied forever"), Error);
+  const SchemeSequence plain = load_scheme_sequence("catmull-clark:1,catmull-clark", 2, {});
+  CHECK_THROWS_WITH_AS(select_limit(plain, L, o), doctest::Contains("no scheme of the run reads it per vertex"), Error);
 }

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "framework/io/mesh_read.h"
+#include "framework/io/mesh_write.h"
 #include "io_test_support.h"
 
 using namespace subdiv;
@@ -34,7 +35,7 @@ TEST_CASE("off: polygons of any size in file order, comments, counts on the keyw
   CHECK(m.face_vertices == std::vector<Index>{3, 2, 1, 0, 0, 1, 2, 3, 4});
 }
 
-TEST_CASE("off: COFF extra vertex values and face colours are ignored") {
+TEST_CASE("off: COFF vertex colours and face colours become colour arrays") {
   TempDir dir;
   write_text(dir / "m.off",
              "COFF\n3 1 3\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n"
@@ -42,6 +43,68 @@ TEST_CASE("off: COFF extra vertex values and face colours are ignored") {
   const MeshData m = read_mesh(dir / "m.off");
   CHECK(m.positions == std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0});
   CHECK(m.face_vertices == std::vector<Index>{0, 1, 2});
+  REQUIRE(m.point_data.size() == 1);
+  CHECK(m.point_data[0].name == "color");
+  CHECK(m.point_data[0].role == ArrayRole::Color);
+  CHECK(m.point_data[0].components == 4);
+  CHECK(m.point_data[0].integer);  // whole numbers beyond 1: 0..255 colours
+  CHECK(m.point_data[0].values == std::vector<double>{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255});
+  REQUIRE(m.cell_data.size() == 1);
+  CHECK_FALSE(m.cell_data[0].integer);  // 0..1 floats
+  CHECK(m.cell_data[0].values == std::vector<double>{0.5, 0.5, 0.5});
+}
+
+TEST_CASE("off: NOFF normals and STOFF texture coordinates, in Geomview's order; a short line is refused") {
+  TempDir dir;
+  write_text(dir / "m.off", "STCNOFF\n3 1 0\n0 0 0 0 0 1 1 0 0 0.25 0.5\n1 0 0 0 0 1 0 1 0 0.75 0.5\n"
+                            "0 1 0 0 0 1 0 0 1 0.5 1\n3 0 1 2\n");
+  const MeshData m = read_mesh(dir / "m.off");
+  REQUIRE(m.point_data.size() == 3);
+  CHECK(m.point_data[0].role == ArrayRole::Normals);
+  CHECK(m.point_data[1].role == ArrayRole::Color);
+  CHECK(m.point_data[1].components == 3);
+  CHECK(m.point_data[2].role == ArrayRole::TextureCoordinates);
+  CHECK(m.point_data[2].values == std::vector<double>{0.25, 0.5, 0.75, 0.5, 0.5, 1});
+  CHECK(m.cell_data.empty());
+  CHECK(contains(error_reading(dir, "s.off", "COFF\n3 1 0\n0 0 0 1 0\n1 0 0 1 0 0\n0 1 0 1 0 0\n3 0 1 2\n"),
+                 "s.off:3: vertex 0 has 2 values after x y z"));
+}
+
+TEST_CASE("ply and off: point and cell arrays survive a write and a read") {
+  TempDir dir;
+  MeshData m;
+  m.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  m.face_offsets = {0, 4};
+  m.face_vertices = {0, 1, 2, 3};
+  m.point_data = {{"temperature", 1, {1.5, -2, 3.25, 1e-300}, false},
+                  {"seven", 7, std::vector<double>(28, 0.125), false},
+                  {"uv", 2, {0, 0, 1, 0, 1, 1, 0, 1}, false, ArrayRole::TextureCoordinates},
+                  {"color", 3, {255, 0, 0, 0, 255, 0, 0, 0, 255, 9, 9, 9}, true, ArrayRole::Color},
+                  {"label", 1, {-7, 0, 7, 100000}, true}};
+  m.cell_data = {{"material", 1, {12}, true}, {"weight", 2, {0.5, 0.25}, false}};
+  write_mesh(dir / "m.ply", m);
+  const MeshData p = read_mesh(dir / "m.ply");
+  REQUIRE(p.point_data.size() == m.point_data.size());
+  for (size_t i = 0; i < m.point_data.size(); ++i) {
+    CAPTURE(m.point_data[i].name);
+    CHECK(p.point_data[i].name == m.point_data[i].name);
+    CHECK(p.point_data[i].components == m.point_data[i].components);
+    CHECK(p.point_data[i].values == m.point_data[i].values);
+    CHECK(p.point_data[i].integer == m.point_data[i].integer);
+    CHECK(p.point_data[i].role == m.point_data[i].role);
+  }
+  REQUIRE(p.cell_data.size() == 2);
+  CHECK(p.cell_data[0].values == m.cell_data[0].values);
+  CHECK(p.cell_data[1].name == "weight");
+  CHECK(p.cell_data[1].values == m.cell_data[1].values);
+  // OFF holds colours, normals and texture coordinates only.
+  write_mesh(dir / "m.off", m);
+  const MeshData o = read_mesh(dir / "m.off");
+  REQUIRE(o.point_data.size() == 2);
+  CHECK(o.point_data[0].name == "color");
+  CHECK(o.point_data[0].values == m.point_data[3].values);
+  CHECK(o.point_data[1].name == "uv");
+  CHECK(o.point_data[1].values == m.point_data[2].values);
 }
 
 TEST_CASE("off: errors name file and line") {

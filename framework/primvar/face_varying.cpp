@@ -1,0 +1,202 @@
+#include "framework/primvar/face_varying.h"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <map>
+
+#include "framework/engine/vertex_parameters.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+constexpr float kInfinitelySharp = 10.f;
+
+// The channel with one value per (vertex, value) pair, and each value's vertex.
+struct Renumbered {
+  FaceVaryingLevel level;
+  std::vector<Index> vertex_of;  // per value
+};
+
+Renumbered renumber(const Level& vertices, const FaceVaryingLevel& base, int components) {
+  if (base.indices.size() != vertices.face_vertices.size())
+    throw Error(fmt::format("face-varying data: {} corner indices for {} face corners", base.indices.size(),
+                            vertices.face_vertices.size()));
+  const Index count = Index(base.values.size() / size_t(components));
+  Renumbered out;
+  std::map<std::pair<Index, Index>, Index> index_of;
+  for (size_t c = 0; c < base.indices.size(); ++c) {
+    const Index value = base.indices[c], vertex = vertices.face_vertices[c];
+    if (value < 0 || value >= count)
+      throw Error(fmt::format("face-varying data: face corner {} uses value {}, but there are {} values", c, value,
+                              count));
+    auto [it, added] = index_of.emplace(std::pair(vertex, value), Index(out.vertex_of.size()));
+    if (added) {
+      out.vertex_of.push_back(vertex);
+      out.level.values.insert(out.level.values.end(), base.values.begin() + size_t(value) * components,
+                              base.values.begin() + size_t(value + 1) * components);
+    }
+    out.level.indices.push_back(it->second);
+  }
+  return out;
+}
+
+// The face-varying mesh: the vertex level's faces over the values.
+Level value_mesh(const Level& vertices, const std::vector<Index>& indices, Index value_count) {
+  Level level = build_level(value_count, vertices.face_offsets, indices);
+  level.face_hole = vertices.face_hole;
+  return level;
+}
+
+// The vertex mesh's sharpness on the value mesh: each face corner's edge and vertex.
+void copy_sharpness(const Level& vertices, Level& values) {
+  values.edge_sharpness.assign(size_t(values.edge_count()), 0.f);
+  values.vertex_sharpness.assign(size_t(values.vertex_count), 0.f);
+  for (Index f = 0; f < vertices.face_count(); ++f)
+    for (int k = 0; k < vertices.face_size(f); ++k) {
+      const Index e = vertices.face_edge_list(f)[k], fe = values.face_edge_list(f)[k];
+      values.edge_sharpness[fe] = std::max(values.edge_sharpness[fe], vertices.edge_sharp(e));
+      const Index v = vertices.face(f)[k], fv = values.face(f)[k];
+      values.vertex_sharpness[fv] = std::max(values.vertex_sharpness[fv], vertices.vertex_sharp(v));
+    }
+}
+
+// Vertices with a seam (an edge whose two faces use different values) at them.
+std::vector<std::uint8_t> seam_vertices(const Level& vertices, const Level& values) {
+  std::vector<Index> value_edge(size_t(vertices.edge_count()), kNone);
+  std::vector<std::uint8_t> seam(size_t(vertices.vertex_count), 0);
+  for (Index f = 0; f < vertices.face_count(); ++f)
+    for (int k = 0; k < vertices.face_size(f); ++k) {
+      const Index e = vertices.face_edge_list(f)[k], fe = values.face_edge_list(f)[k];
+      if (value_edge[e] == kNone) value_edge[e] = fe;
+      else if (value_edge[e] != fe)
+        seam[vertices.edge_vertices[2 * e]] = seam[vertices.edge_vertices[2 * e + 1]] = 1;
+    }
+  return seam;
+}
+
+// The sharp corners the mode makes at the base level (see face_varying.h; OpenSubdiv's
+// FVarLevel::completeTopologyFromFaceValues). Values of non-manifold spans are made sharp
+// by the value mesh's own non-manifold tags.
+void tag_base_corners(const Level& vertices, Level& values, FaceVaryingLinear mode, BoundaryInterpolation boundary) {
+  const std::vector<std::uint8_t> seam = seam_vertices(vertices, values);
+  const bool corners_sharp = mode != FaceVaryingLinear::None;
+  const bool plus = mode == FaceVaryingLinear::CornersPlus1 || mode == FaceVaryingLinear::CornersPlus2;
+  const bool plus2 = mode == FaceVaryingLinear::CornersPlus2;
+  const bool vertex_corners_smooth = boundary != BoundaryInterpolation::EdgesAndCorners;
+  auto sharpen = [&](Index value) { values.vertex_sharpness[value] = kInfinitelySharp; };
+  for (Index v = 0; v < vertices.vertex_count; ++v) {
+    // The values at v and how many of v's faces each spans.
+    std::vector<std::pair<Index, int>> spans;
+    for (int i = 0; i < vertices.incident_face_count(v); ++i) {
+      const Index f = vertices.ring_faces(v)[i];
+      const int corner = vertices.vertex_face_corner[vertices.vertex_face_offsets[v] + i];
+      const Index value = values.face(f)[corner];
+      auto it = std::find_if(spans.begin(), spans.end(), [&](const auto& s) { return s.first == value; });
+      if (it == spans.end()) spans.emplace_back(value, 1);
+      else ++it->second;
+    }
+    if (spans.empty()) continue;
+    const bool boundary_vertex = vertices.on_boundary(v);
+    if (!seam[v]) {
+      // Matching values follow the vertex, except a corner the vertex rule leaves smooth.
+      if (boundary_vertex && spans.size() == 1 && spans[0].second == 1 && vertex_corners_smooth && corners_sharp)
+        sharpen(spans[0].first);
+      continue;
+    }
+    const bool all = (plus && spans.size() > 2) || (plus2 && spans.size() == 1 && !boundary_vertex) ||
+                     (plus2 && spans.size() == 2 && (spans[0].second == 1 || spans[1].second == 1)) ||
+                     (plus && spans.size() == 2 && (values.non_manifold_vertex(spans[0].first) ||
+                                                    values.non_manifold_vertex(spans[1].first)));
+    for (const auto& [value, faces] : spans)
+      if (all || (faces == 1 && corners_sharp)) sharpen(value);
+  }
+}
+
+// Modes that stay linear at every level: Boundaries (every value on the value mesh's
+// boundary), All (every value and edge).
+void tag_linear(Level& values, FaceVaryingLinear mode) {
+  if (mode != FaceVaryingLinear::Boundaries && mode != FaceVaryingLinear::All) return;
+  values.vertex_sharpness.resize(size_t(values.vertex_count), 0.f);
+  values.edge_sharpness.resize(size_t(values.edge_count()), 0.f);
+  for (Index u = 0; u < values.vertex_count; ++u)
+    if (mode == FaceVaryingLinear::All || values.on_boundary(u)) values.vertex_sharpness[u] = kInfinitelySharp;
+  if (mode == FaceVaryingLinear::All) std::fill(values.edge_sharpness.begin(), values.edge_sharpness.end(), kInfinitelySharp);
+}
+
+void check_split(const Scheme& scheme, const Level& vertex_child, const Level& value_child) {
+  bool same = vertex_child.face_count() == value_child.face_count();
+  for (Index f = 0; same && f < vertex_child.face_count(); ++f) same = vertex_child.face_size(f) == value_child.face_size(f);
+  if (!same)
+    throw Error(fmt::format("{}: face-varying data (e.g. UVs with seams) is refined only by splits whose new faces lie "
+                            "each in one old face (quad and triangle splits); scheme '{}' uses the '{}' split. Drop "
+                            "the face-varying data or choose such a scheme", scheme.path, scheme.name,
+                            splitter_info(scheme.split()).name));
+}
+
+// Per-vertex scheme parameters on the values: each value takes its vertex's.
+VertexParameters parameters_on_values(const VertexParameters& on_vertices, const std::vector<Index>& vertex_of) {
+  VertexParameters out;
+  for (const auto& [name, per_vertex] : on_vertices) {
+    std::vector<double>& values = out[name];
+    for (Index v : vertex_of) values.push_back(per_vertex[v]);
+  }
+  return out;
+}
+
+}  // namespace
+
+const char* face_varying_linear_name(FaceVaryingLinear mode) {
+  switch (mode) {
+    case FaceVaryingLinear::None: return "none";
+    case FaceVaryingLinear::CornersOnly: return "corners-only";
+    case FaceVaryingLinear::CornersPlus1: return "corners-plus1";
+    case FaceVaryingLinear::CornersPlus2: return "corners-plus2";
+    case FaceVaryingLinear::Boundaries: return "boundaries";
+    case FaceVaryingLinear::All: return "all";
+  }
+  return "";
+}
+
+FaceVaryingLinear face_varying_linear_from_tag(int value) {
+  if (value < 0 || value > 5)
+    throw Error(fmt::format("face-varying interpolation {} is not one of OpenSubdiv's 0..5 (none, corners-only, "
+                            "corners-plus1, corners-plus2, boundaries, all)", value));
+  return FaceVaryingLinear(value);
+}
+
+std::vector<FaceVaryingLevel> refine_face_varying(std::span<const SchemeRun> runs, const Hierarchy& h,
+                                                  const FaceVaryingLevel& base, int components,
+                                                  FaceVaryingLinear mode, const RefineOptions& options) {
+  if (components < 1) throw Error("face-varying data needs at least one component per value");
+  Renumbered start = renumber(h.levels[0], base, components);
+  std::vector<FaceVaryingLevel> out{start.level};
+  std::vector<Index> vertex_of = std::move(start.vertex_of);
+  Level current = value_mesh(h.levels[0], start.level.indices, Index(vertex_of.size()));
+  copy_sharpness(h.levels[0], current);
+  tag_base_corners(h.levels[0], current, mode, options.features.boundary);
+  std::vector<const Scheme*> per_level;
+  for (const SchemeRun& run : runs) per_level.insert(per_level.end(), size_t(run.levels), run.scheme);
+  VertexParameters parameters = options.vertex_parameters;
+  for (size_t l = 0; l + 1 < h.levels.size() && l < per_level.size(); ++l) {
+    if (l > 0) parameters = carry_vertex_parameters(h.levels[l - 1], h.origins[l - 1], parameters);
+    tag_linear(current, mode);
+    const SchemeRun run{per_level[l], 1};
+    RefineOptions step = options;
+    step.first_step = options.first_step + int(l);
+    step.features.boundary = BoundaryInterpolation::EdgesOnly;  // corners were tagged above
+    step.vertex_parameters = parameters_on_values(parameters, vertex_of);
+    const Hierarchy values = refine_topology(std::span(&run, 1), current, step);
+    check_split(*per_level[l], h.levels[l + 1], values.levels[1]);
+    FaceVaryingLevel next{step_values(std::span(&run, 1), values, 0, out.back().values, components, step),
+                          values.levels[1].face_vertices};
+    // Each child value's vertex, from the corners the two children share.
+    vertex_of.assign(size_t(values.levels[1].vertex_count), kNone);
+    for (size_t c = 0; c < next.indices.size(); ++c) vertex_of[next.indices[c]] = h.levels[l + 1].face_vertices[c];
+    current = values.levels[1];
+    out.push_back(std::move(next));
+  }
+  return out;
+}
+
+}  // namespace subdiv
