@@ -34,7 +34,8 @@ void check_face_sizes(const Scheme& scheme, const Level& base) {
                               base.face_size(f), needed == 3 ? "triangulate" : needed == 4 ? "quadrangulate" : "remesh"));
 }
 
-// Splits that do not handle non-manifold levels (sqrt3, dual, mid-edge) refuse them clearly.
+// Splits that do not handle non-manifold levels (a plugin's that does not opt in through
+// SplitterInfo::handles_non_manifold) refuse them clearly; every built-in split handles them.
 void check_manifold_for(const Scheme& scheme, const Level& level) {
   if (level.manifold() || splitter_info(scheme.split()).handles_non_manifold) return;
   Index e = 0, v = 0;
@@ -46,7 +47,7 @@ void check_manifold_for(const Scheme& scheme, const Level& level) {
                                               level.edge_face_count(e))
                                 : fmt::format("the faces around vertex {} form more than one fan", v);
   throw Error(fmt::format("{}: scheme '{}' uses the '{}' split, which needs a manifold mesh, but {}; use a scheme "
-                          "with the quad or triangle split, which refine non-manifold meshes, or split the mesh there",
+                          "with a built-in split, which refine non-manifold meshes, or split the mesh there",
                           scheme.path, scheme.name, splitter_info(scheme.split()).name, where));
 }
 

@@ -1,9 +1,9 @@
 #pragma once
-// Elements no refiner can use, dropped before refinement with a count for a warning:
-// faces with fewer than 3 distinct vertices (they enclose no area; a face that repeats a
-// vertex but keeps 3 or more distinct ones, such as a quad pole, stays: OpenSubdiv refines
-// it), and vertices that no face or polyline uses (OpenSubdiv ignores them too). Tags are
-// renumbered; tags on dropped elements go with them.
+// Vertices that no face or polyline uses, dropped before refinement with a count for a
+// warning (OpenSubdiv leaves them alone too: they have no neighbours and no children worth
+// writing). Tags are renumbered; tags on dropped vertices go with them. Faces are all kept,
+// those that repeat a vertex included, even with fewer than 3 distinct vertices ((a, a, b, b)):
+// OpenSubdiv refines them, and so does the level builder (topology/level_builder.cpp).
 #include <string>
 #include <vector>
 
@@ -12,12 +12,12 @@
 namespace subdiv {
 
 struct MeshCleanup {
-  Index dropped_faces = 0, dropped_vertices = 0;
-  // One warning per kind of element dropped, naming how many; empty when nothing was.
+  Index dropped_vertices = 0;
+  // One warning naming how many vertices were dropped; empty when none were.
   std::vector<std::string> warnings(const std::string& source) const;
 };
 
-// `mesh` without those elements; `report` says how many went.
+// `mesh` without those vertices; `report` says how many went.
 MeshData drop_unrefinable(const MeshData& mesh, MeshCleanup& report);
 
 }  // namespace subdiv

@@ -47,6 +47,7 @@ struct SplitterTable {
     sqrt3.scale = std::sqrt(3.0);
     sqrt3.period = 2;          // the split turns the mesh by 30 degrees
     sqrt3.feature_period = 2;  // boundaries are trisected every second step
+    sqrt3.handles_non_manifold = true;  // non-manifold edges kept as creases, with a warning (sqrt3_split.cpp)
     SplitterInfo dual = builtin("dual", "dual split (Doo and Sabin 1978): one new point per face corner", split_dual, {O::Corner});
     dual.primal = false;
     dual.handles_non_manifold = true;  // with a gap and a warning (dual_split.cpp)

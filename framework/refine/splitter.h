@@ -76,9 +76,9 @@ struct SplitterInfo {
   // step (2); SplitResult::features_refined says which steps do.
   int feature_period = 1;
   // True when `split` accepts non-manifold levels (topology/level.h): the primal splits refine
-  // them as OpenSubdiv does; the dual ones leave a gap there and say so in
-  // SplitResult::warning. The engine refuses non-manifold meshes for the others (sqrt3,
-  // plugins that do not opt in), naming the splitter.
+  // them as OpenSubdiv does; sqrt3 keeps non-manifold edges unflipped, as creases, and the
+  // dual ones leave a gap there, both saying so in SplitResult::warning. The engine refuses
+  // non-manifold meshes for the others (plugins that do not opt in), naming the splitter.
   bool handles_non_manifold = false;
   std::string origin = "built-in";  // or the plugin that registered it
 };

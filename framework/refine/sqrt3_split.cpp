@@ -18,8 +18,20 @@
 // one feature edge; a triangle with two or three in an even step (its input did not come
 // from an odd sqrt3 step: --start-level 1 on another mesh, or a scheme sequence) keeps its
 // face point, joined to its corners and trisection points.
+//
+// Non-manifold levels (topology/level.h): the flip is defined for an edge with exactly two
+// faces that run it in opposite directions, the two triangles it turns into two others.
+// An edge with three or more faces, or two that run it the same way, has no such pair, so
+// it is treated like the boundary edges of Kobbelt's rule (section 5): kept, as a feature
+// edge, each of its faces gets the triangle(s) beside it that a boundary triangle gets, and
+// it is trisected in even steps. This matches what the rules already do at such an edge
+// (features/base_tags.h makes it infinitely sharp, as OpenSubdiv does), so the result is a
+// valid mesh with the same topology (Euler characteristic) as the input; the split says in
+// its warning how many non-manifold edges and vertices it met.
+#include <algorithm>
 #include <fmt/format.h>
 
+#include "framework/features/sharpness.h"
 #include "framework/refine/child_tags.h"
 #include "framework/refine/splitter.h"
 #include "framework/util/error.h"
@@ -28,7 +40,41 @@ namespace subdiv {
 namespace {
 
 bool is_feature_edge(const Level& L, Index e) {
-  return L.edge_on_boundary(e) || L.edge_sharp(e) > 0.f;
+  return L.edge_on_boundary(e) || L.edge_sharp(e) > 0.f || L.non_manifold_edge(e);
+}
+
+// True when face f, at its `occurrence`-th use of edge e (a collapsed face (a, b, b) runs
+// a-b twice, once each way), runs e from its first vertex to its second. On a manifold level
+// the slot in edge_faces says it; the faces of a non-manifold edge are in no particular order.
+bool runs_forward(const Level& L, Index f, Index e, int occurrence) {
+  for (Index i = L.face_offsets[f]; i < L.face_offsets[f + 1]; ++i)
+    if (L.face_edges[i] == e && occurrence-- == 0) return L.face_vertices[i] == L.edge_vertices[2 * e];
+  return false;
+}
+
+// Every non-manifold edge is infinitely sharp (features/base_tags.h). The pieces of a parent's
+// non-manifold edge inherit that above; a collapsed face ((a, b, b), topology/level_builder.cpp)
+// also gives non-manifold edges with no such parent, from its face point to its corners, and
+// those get it here, so that the rules find them a crease rule.
+void sharpen_new_non_manifold_edges(Level& child) {
+  if (child.manifold()) return;
+  for (Index e = 0; e < child.edge_count(); ++e) {
+    if (!child.non_manifold_edge(e) || child.edge_sharp(e) >= kInfinitelySharp) continue;
+    if (child.edge_sharpness.empty()) child.edge_sharpness.assign(child.edge_count(), 0.f);
+    child.edge_sharpness[e] = kInfinitelySharp;
+  }
+}
+
+// The warning of a non-manifold level, or empty.
+std::string non_manifold_warning(const Level& L) {
+  if (L.manifold()) return {};
+  Index edges = 0, vertices = 0;
+  for (Index e = 0; e < L.edge_count(); ++e) edges += L.non_manifold_edge(e);
+  for (Index v = 0; v < L.vertex_count; ++v) vertices += L.non_manifold_vertex(v);
+  return fmt::format("the sqrt3 split does not flip an edge without two consistently oriented faces, so it kept "
+                     "{} non-manifold edge(s) as sharp creases (trisected every second step, like a boundary); "
+                     "{} non-manifold vertex/vertices took the corner or crease rule",
+                     edges, vertices);
 }
 
 struct Sqrt3Builder {
@@ -72,7 +118,11 @@ struct Sqrt3Builder {
     }
     const Index c = face_point[f];
     if (!trisect) return add_triangle(a, b, c, f);
-    const Index p_near_a = trisection_point(e, a), p_near_b = trisection_point(e, b);
+    // An edge from a vertex to itself (a collapsed face's) is run from its first point to its
+    // second: its two ends cannot tell them apart.
+    const bool loop = a == b;
+    const Index p_near_a = loop ? trisection_base[e] : trisection_point(e, a);
+    const Index p_near_b = loop ? trisection_base[e] + 1 : trisection_point(e, b);
     add_triangle(a, p_near_a, c, f);
     add_triangle(p_near_a, p_near_b, c, f);
     add_triangle(p_near_b, b, c, f);
@@ -87,6 +137,14 @@ struct Sqrt3Builder {
   void add_edge(Index e) {
     const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
     const Index f0 = L.edge_faces[2 * e], f1 = L.edge_faces[2 * e + 1];
+    if (L.non_manifold_edge(e)) {
+      const auto faces = L.faces_of_edge(e);  // a face that uses e twice is listed twice
+      for (size_t i = 0; i < faces.size(); ++i) {
+        const int occurrence = int(std::count(faces.begin(), faces.begin() + i, faces[i]));
+        runs_forward(L, faces[i], e, occurrence) ? add_feature_side(e, faces[i], a, b) : add_feature_side(e, faces[i], b, a);
+      }
+      return;
+    }
     if (is_feature_edge(L, e)) {
       add_feature_side(e, f0, a, b);
       if (f1 != kNone) add_feature_side(e, f1, b, a);
@@ -134,7 +192,7 @@ SplitResult split_sqrt3(const Level& parent, int step_index) {
       }
   for (Index e = 0; e < E; ++e) b.add_edge(e);
   o.parent_face = std::move(b.parent_face);
-  SplitResult result{build_level(next, b.offsets, b.corners), std::move(o), trisect};
+  SplitResult result{build_level(next, b.offsets, b.corners), std::move(o), trisect, non_manifold_warning(parent)};
 
   // Feature tags: a sharp edge's pieces keep its (decremented) sharpness.
   Level& child = result.child;
@@ -152,9 +210,10 @@ SplitResult split_sqrt3(const Level& parent, int step_index) {
       if (trisect) chain.insert(chain.end(), {b.trisection_base[e], b.trisection_base[e] + 1});
       chain.push_back(bb);
       for (size_t i = 0; i + 1 < chain.size(); ++i)
-        child.edge_sharpness[find_edge(child, chain[i], chain[i + 1])] = s;
+        if (const Index piece = find_edge(child, chain[i], chain[i + 1]); piece != kNone) child.edge_sharpness[piece] = s;
     }
   }
+  sharpen_new_non_manifold_edges(child);
   return result;
 }
 

@@ -11,8 +11,11 @@
 namespace subdiv {
 namespace {
 
-// Range and size checks, and faces with fewer than 3 distinct vertices refused; returns
-// false if a face repeats a vertex (the general path's job).
+// Range and size checks; returns false if a face repeats a vertex (the general path's job).
+// A face of 3 or more corners with fewer than 3 distinct vertices ((a, a, b, b), (a, a, a))
+// is kept: OpenSubdiv's Vtr refines it (its edges from a vertex to itself and the edge it
+// runs twice are non-manifold), and so does the general path, to the same result
+// (tests/unit/osd/osd_shapes_test.cpp, catmark_nonman_edges and loop_nonman_edges).
 bool check_faces(const Level& level) {
   bool simple = true;
   for (Index f = 0; f < level.face_count(); ++f) {
@@ -30,10 +33,6 @@ bool check_faces(const Level& level) {
       for (size_t j = 0; j < i && !repeat; ++j) repeat = verts[i] == verts[j];
       distinct += !repeat;
     }
-    if (distinct < 3)
-      throw Error(fmt::format("face {} is degenerate: it has only {} distinct vertices, fewer than 3; remove it "
-                              "(`subdiv refine` drops such faces with a warning)",
-                              f, distinct));
     simple = simple && distinct == int(verts.size());
   }
   return simple;

@@ -79,13 +79,12 @@ def test_bad_meshes_are_refused_with_the_reason():
         sk.refine(sk.Mesh(square, [[0, 1, 2, 7]]), "catmull-clark", 1)
     with pytest.raises(sk.Error, match="non-finite"):
         sk.refine(sk.Mesh([[0, 0, np.nan], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]]), "catmull-clark", 1)
-    # Three faces on one edge: refined as OpenSubdiv does by primal schemes; sqrt3 needs a
-    # manifold mesh.
+    # Three faces on one edge: refined as OpenSubdiv does by primal schemes, and by sqrt3
+    # with the edge kept as a crease (three triangles per face).
     points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1]]
     flaps = sk.Mesh(points, [[0, 1, 2], [1, 0, 3], [0, 1, 4]])
     assert len(sk.refine(flaps, "loop", 1).faces) == 12
-    with pytest.raises(sk.Error, match="needs a manifold mesh"):
-        sk.refine(flaps, "sqrt3", 1)
+    assert len(sk.refine(flaps, "sqrt3", 1).faces) == 9
     with pytest.raises(sk.Error, match="no faces"):
         sk.refine(sk.Mesh(square), "catmull-clark", 1)
     with pytest.raises(sk.Error, match="crease"):

@@ -116,28 +116,46 @@ struct OsdXyz {
 
 inline bool quad_split(OsdScheme s) { return s != OsdScheme::Loop; }
 
+// True when OpenSubdiv face `fv` has our corners (through the vertex map): as a set, and
+// with `in_order` also in the same cyclic order (the same orientation).
+template <class OsdFace>
+bool same_corners(std::span<const subdiv::Index> corners, const OsdFace& fv, const std::vector<int>& vmap,
+                  bool in_order) {
+  const int n = int(corners.size());
+  if (fv.size() != n) return false;
+  for (int start = 0; start < n && in_order; ++start) {
+    bool same = true;
+    for (int i = 0; i < n && same; ++i) same = fv[(start + i) % n] == vmap[size_t(corners[size_t(i)])];
+    if (same) return true;
+  }
+  if (in_order) return false;
+  for (subdiv::Index v : corners) {
+    bool in = false;
+    for (int k = 0; k < n; ++k) in = in || fv[k] == vmap[size_t(v)];
+    if (!in) return false;
+  }
+  return true;
+}
+
 // For each of our faces, the OpenSubdiv face with the same corners (through the vertex map).
+// Faces with the same corners (two faces back to back) are told apart by orientation, and
+// each OpenSubdiv face is taken once.
 inline std::vector<int> match_faces(const subdiv::Level& ours, const OpenSubdiv::Far::TopologyLevel& osd,
                                     const std::vector<int>& vmap, int level) {
   std::vector<int> fmap(size_t(ours.face_count()));
+  std::vector<char> taken(size_t(osd.GetNumFaces()), 0);
   for (subdiv::Index f = 0; f < ours.face_count(); ++f) {
     const auto corners = ours.face(f);
     int found = OpenSubdiv::Far::INDEX_INVALID;
     const auto candidates = osd.GetVertexFaces(vmap[size_t(corners[0])]);
-    for (int i = 0; i < candidates.size() && found == OpenSubdiv::Far::INDEX_INVALID; ++i) {
-      const auto fv = osd.GetFaceVertices(candidates[i]);
-      if (fv.size() != int(corners.size())) continue;
-      bool same = true;
-      for (subdiv::Index v : corners) {
-        bool in = false;
-        for (int k = 0; k < fv.size(); ++k) in = in || fv[k] == vmap[size_t(v)];
-        same = same && in;
-      }
-      if (same) found = candidates[i];
-    }
+    for (bool in_order : {true, false})
+      for (int i = 0; i < candidates.size() && found == OpenSubdiv::Far::INDEX_INVALID; ++i)
+        if (!taken[size_t(candidates[i])] && same_corners(corners, osd.GetFaceVertices(candidates[i]), vmap, in_order))
+          found = candidates[i];
     if (found == OpenSubdiv::Far::INDEX_INVALID)
       throw std::runtime_error("our_to_osd_vertices: our face " + std::to_string(f) + " has no OpenSubdiv face (level " +
                                std::to_string(level) + ")");
+    taken[size_t(found)] = 1;
     fmap[size_t(f)] = found;
   }
   return fmap;

@@ -94,3 +94,23 @@ TEST_CASE("a JSON file on disk can name the plugin's split") {
   std::ofstream(dir / "bad.json") << R"({"name": "bad", "split": "sqrt2", "rules": {"corner": [{"at": "self", "w": "1"}]}})";
   CHECK_THROWS_WITH_AS(load_scheme((dir / "bad.json").string()), doctest::Contains("unknown key \"corner\""), Error);
 }
+
+// Every built-in split refines non-manifold meshes; a plugin's split that does not say it can
+// (SplitterInfo::handles_non_manifold, which sqrt2 leaves false) is refused them by the engine,
+// naming the split and the edge.
+TEST_CASE("a plugin's split that does not opt in refuses a non-manifold mesh, naming the edge") {
+  load_example_plugins();
+  const auto scheme = load_scheme("sqrt2");
+  REQUIRE_FALSE(splitter_info(scheme->split()).handles_non_manifold);
+  // Three quads hinged on the edge (0, 1).
+  test::Mesh m;
+  m.add_vertex(0, 0, 0), m.add_vertex(0, 1, 0);
+  m.add_vertex(1, 0, 0), m.add_vertex(1, 1, 0), m.add_vertex(-1, 0, 0), m.add_vertex(-1, 1, 0);
+  m.add_vertex(0, 0, 1), m.add_vertex(0, 1, 1);
+  m.add_face({0, 1, 3, 2}), m.add_face({1, 0, 4, 5}), m.add_face({0, 1, 7, 6});
+  RefineOptions options;
+  options.levels = 1;
+  CHECK_THROWS_WITH_AS(refine(*scheme, m.level(), options),
+                       doctest::Contains("uses the 'sqrt2' split, which needs a manifold mesh, but edge (0, 1) has 3 faces"),
+                       Error);
+}

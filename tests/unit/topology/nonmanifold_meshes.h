@@ -79,5 +79,17 @@ inline FeatureMesh quad_pole() {
   return m;
 }
 
+// A grid with faces of fewer than 3 distinct vertices, as in OpenSubdiv's regression shapes
+// catmark_nonman_edges and loop_nonman_edges: one on an edge of the grid that repeats both
+// its ends ((a, a, b, b), or (a, b, b) for triangles), one that is a single vertex four
+// (three) times over. Far refines them; so does SubdivKit.
+inline FeatureMesh collapsed_faces(bool triangles) {
+  FeatureMesh m = feature_test::grid(3, 3, triangles);
+  m.name = triangles ? "triangle grid with collapsed faces" : "grid with collapsed faces";
+  const Index a = feature_test::grid_id(1, 1, 3), b = feature_test::grid_id(2, 1, 3), c = feature_test::grid_id(2, 2, 3);
+  if (triangles) m.add_face({a, b, b}), m.add_face({c, c, c});
+  else m.add_face({a, a, b, b}), m.add_face({c, c, c, c});
+  return m;
+}
 
 }  // namespace subdiv::nonmanifold_test

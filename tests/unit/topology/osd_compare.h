@@ -1,6 +1,7 @@
 #pragma once
 // Refines a FeatureMesh with SubdivKit and with OpenSubdiv's Far and compares positions at
 // every level, for the non-manifold, hole and option tests of this folder.
+#include <algorithm>
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
@@ -49,7 +50,9 @@ inline subdiv_test::OsdMesh to_osd(const MeshData& m) {
 
 inline subdiv_test::OsdOptions osd_options(const std::string& scheme, const Setup& s, bool smooth_triangles = false) {
   subdiv_test::OsdOptions o;
-  o.scheme = scheme == "loop" ? subdiv_test::OsdScheme::Loop : subdiv_test::OsdScheme::CatmullClark;
+  o.scheme = scheme == "loop"       ? subdiv_test::OsdScheme::Loop
+             : scheme == "bilinear" ? subdiv_test::OsdScheme::Bilinear
+                                    : subdiv_test::OsdScheme::CatmullClark;
   o.boundary = s.boundary == BoundaryInterpolation::None        ? subdiv_test::OsdBoundary::None
                : s.boundary == BoundaryInterpolation::EdgesOnly ? subdiv_test::OsdBoundary::EdgesOnly
                                                                 : subdiv_test::OsdBoundary::EdgesAndCorners;
@@ -60,7 +63,8 @@ inline subdiv_test::OsdOptions osd_options(const std::string& scheme, const Setu
 
 // Positions at levels 1..levels equal OpenSubdiv's to kTolerance (through stencil tables
 // and straight from the rules), and every face is a hole exactly where OpenSubdiv's is.
-inline void check_agreement(const feature_test::FeatureMesh& fm, const std::string& scheme_name, const Setup& setup,
+// Returns the largest difference of the tables' positions from OpenSubdiv's.
+inline double check_agreement(const feature_test::FeatureMesh& fm, const std::string& scheme_name, const Setup& setup,
                             int levels = 3, const ParameterOverrides& params = {}, bool smooth_triangles = false) {
   const auto scheme = load_scheme(scheme_name, params);
   RefineOptions options;
@@ -69,19 +73,21 @@ inline void check_agreement(const feature_test::FeatureMesh& fm, const std::stri
   const Hierarchy h = refine(*scheme, level_from_mesh(fm.mesh, fm.name), options);
   const auto osd = subdiv_test::osd_refine(to_osd(fm.mesh), osd_options(scheme_name, setup, smooth_triangles), levels);
   std::vector<double> direct = fm.mesh.positions;
+  double largest = 0;
   for (int l = 1; l <= levels; ++l) {
     const auto ours = interpolate(h, l, fm.mesh.positions, 3);
     const auto expected = subdiv_test::osd_in_our_order(osd, h, l);
     direct = step_values(*scheme, h, l - 1, direct, 3, options);
     const subdiv_test::WorstVertex w = subdiv_test::worst_vertex(ours, expected);
     const double worst = w.difference;  // named copies: clang 14 cannot capture bindings in INFO
+    largest = std::max(largest, worst);
     const size_t at = w.vertex;
     const auto& origin = h.origins[size_t(l) - 1];
     INFO(fmt::format("{} with {}, {}, level {}: worst vertex {} (origin kind {} parent {}) differs by {:.3e}", fm.name,
                      scheme_name, setup.name(), l, at, int(origin.kind[at]), origin.parent[at], worst));
     CHECK(worst < kTolerance);
     CHECK(subdiv_test::max_abs_difference(direct, expected) < kTolerance);
-    if (worst >= kTolerance) return;  // later levels inherit the difference
+    if (worst >= kTolerance) return largest;  // later levels inherit the difference
   }
   // Holes: ours per face against OpenSubdiv's, faces matched by their corners.
   for (int l = 0; l <= levels; ++l) {
@@ -93,6 +99,7 @@ inline void check_agreement(const feature_test::FeatureMesh& fm, const std::stri
     INFO(fmt::format("{} with {}, {}, level {}: {} faces are holes on one side only", fm.name, scheme_name, setup.name(), l, differ));
     CHECK(differ == 0);
   }
+  return largest;
 }
 
 inline void check_all_setups(const feature_test::FeatureMesh& fm, const std::string& scheme) {

@@ -30,6 +30,11 @@ TEST_CASE("OpenSubdiv agreement: a quad that repeats a vertex (quad pole)") {
   check_all_setups(quad_pole(), "catmull-clark");
 }
 
+TEST_CASE("OpenSubdiv agreement: faces with fewer than 3 distinct vertices") {
+  check_all_setups(collapsed_faces(false), "catmull-clark");
+  check_all_setups(collapsed_faces(true), "loop");
+}
+
 TEST_CASE("OpenSubdiv agreement: a fan of flaps with a semi-sharp crease across the hinge") {
   auto m = flap_fan(3, false);
   m.name += ", creased";
