@@ -124,8 +124,12 @@ void tag_linear(Level& values, FaceVaryingLinear mode) {
   if (mode == FaceVaryingLinear::All) std::fill(values.edge_sharpness.begin(), values.edge_sharpness.end(), kInfinitelySharp);
 }
 
-void check_split(const Scheme& scheme, const Level& vertex_child, const Level& value_child) {
+// The children of a face must be faces of its own (not faces across edges or around
+// vertices), listed in the same order for the two meshes.
+void check_split(const Scheme& scheme, const ChildOrigins& origins, const Level& vertex_child, const Level& value_child) {
   bool same = vertex_child.face_count() == value_child.face_count();
+  for (Index f = 0; same && f < vertex_child.face_count(); ++f)
+    same = size_t(f) < origins.parent_face.size() && origins.parent_face[f] != kNone;
   for (Index f = 0; same && f < vertex_child.face_count(); ++f) same = vertex_child.face_size(f) == value_child.face_size(f);
   if (!same)
     throw Error(fmt::format("{}: face-varying data (e.g. UVs with seams) is refined only by splits whose new faces lie "
@@ -187,7 +191,7 @@ std::vector<FaceVaryingLevel> refine_face_varying(std::span<const SchemeRun> run
     step.features.boundary = BoundaryInterpolation::EdgesOnly;  // corners were tagged above
     step.vertex_parameters = parameters_on_values(parameters, vertex_of);
     const Hierarchy values = refine_topology(std::span(&run, 1), current, step);
-    check_split(*per_level[l], h.levels[l + 1], values.levels[1]);
+    check_split(*per_level[l], h.origins[l], h.levels[l + 1], values.levels[1]);
     FaceVaryingLevel next{step_values(std::span(&run, 1), values, 0, out.back().values, components, step),
                           values.levels[1].face_vertices};
     // Each child value's vertex, from the corners the two children share.

@@ -1,15 +1,19 @@
 // subdiv-render MESH OUT.png [--azimuth DEG] [--elevation DEG] [--size PIXELS] [--cage MESH]
+//               [--checker N]
 //
 // Draws a mesh (any format `subdiv` reads) into a PNG with a small software rasterizer:
 // orthographic view, two-sided flat shading, face edges in a darker tone, and optionally a
 // control cage as thick lines. It needs no display and no GPU, so the figures in docs/ can
 // be rendered on a headless build machine (Debian's VTK renders only through X or OSMesa).
+// --checker N paints the mesh's texture coordinates (face-varying, e.g. OBJ vt, or per
+// point) as an N x N checkerboard, interpolated across each triangle, to show UVs and seams.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 #include <zlib.h>
@@ -49,7 +53,10 @@ std::vector<Vec> view(const std::vector<double>& p, double azimuth, double eleva
   return out;
 }
 
-void triangle(Image& img, const Vec& a, const Vec& b, const Vec& c, std::array<std::uint8_t, 3> colour) {
+// The colour at barycentric weights (w0, w1, w2) of a triangle's corners.
+using Shader = std::function<std::array<std::uint8_t, 3>(double, double, double)>;
+
+void triangle(Image& img, const Vec& a, const Vec& b, const Vec& c, const Shader& colour) {
   const int x0 = std::max(0, int(std::floor(std::min({a[0], b[0], c[0]})))),
             x1 = std::min(img.size - 1, int(std::ceil(std::max({a[0], b[0], c[0]}))));
   const int y0 = std::max(0, int(std::floor(std::min({a[1], b[1], c[1]})))),
@@ -63,7 +70,7 @@ void triangle(Image& img, const Vec& a, const Vec& b, const Vec& c, std::array<s
       const double w1 = ((c[0] - px) * (a[1] - py) - (a[0] - px) * (c[1] - py)) / area;
       const double w2 = 1 - w0 - w1;
       if (w0 < 0 || w1 < 0 || w2 < 0) continue;
-      img.put(x, y, w0 * a[2] + w1 * b[2] + w2 * c[2], colour);
+      img.put(x, y, w0 * a[2] + w1 * b[2] + w2 * c[2], colour(w0, w1, w2));
     }
 }
 
@@ -113,15 +120,33 @@ void write_png(const std::string& file, const Image& img) {
   chunk(out, "IEND", {});
 }
 
+// (u, v) per face corner: the first face-varying texture coordinates, else per-point ones;
+// empty when the mesh has none.
+std::vector<double> corner_uvs(const subdiv::MeshData& mesh) {
+  std::vector<double> out;
+  for (const auto& a : mesh.face_varying)
+    if (a.role == subdiv::ArrayRole::TextureCoordinates && a.components >= 2) {
+      for (subdiv::Index i : a.indices) out.insert(out.end(), {a.values[i * a.components], a.values[i * a.components + 1]});
+      return out;
+    }
+  for (const auto& a : mesh.point_data)
+    if (a.role == subdiv::ArrayRole::TextureCoordinates && a.components >= 2) {
+      for (subdiv::Index v : mesh.face_vertices) out.insert(out.end(), {a.values[v * a.components], a.values[v * a.components + 1]});
+      return out;
+    }
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) try {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: subdiv-render MESH OUT.png [--azimuth DEG] [--elevation DEG] [--size PIXELS] [--cage MESH]\n");
+    std::fprintf(stderr, "usage: subdiv-render MESH OUT.png [--azimuth DEG] [--elevation DEG] [--size PIXELS] [--cage MESH] "
+                         "[--checker N]\n");
     return 2;
   }
   double azimuth = 30, elevation = 25;
-  int size = 640;
+  int size = 640, checker = 0;
   std::string cage_file;
   for (int i = 3; i + 1 < argc; i += 2) {
     const std::string o = argv[i];
@@ -129,6 +154,7 @@ int main(int argc, char** argv) try {
     else if (o == "--elevation") elevation = std::stod(argv[i + 1]);
     else if (o == "--size") size = std::stoi(argv[i + 1]);
     else if (o == "--cage") cage_file = argv[i + 1];
+    else if (o == "--checker") checker = std::stoi(argv[i + 1]);
     else throw subdiv::Error(fmt::format("unknown option '{}'", o));
   }
   const subdiv::MeshData mesh = subdiv::read_mesh(argv[1]);
@@ -147,6 +173,8 @@ int main(int argc, char** argv) try {
       for (int c = 0; c < 3; ++c) v[c] = (c < 2 ? (v[c] - 0.5 * (lo[c] + hi[c])) * scale + 0.5 * size : v[c] * scale);
   };
   to_pixels(p), to_pixels(q);
+  const std::vector<double> uv = corner_uvs(mesh);
+  if (checker > 0 && uv.empty()) throw subdiv::Error(fmt::format("--checker: '{}' has no texture coordinates", argv[1]));
   Image img(size);
   for (subdiv::Index f = 0; f < mesh.face_count(); ++f) {
     const subdiv::Index o = mesh.face_offsets[f], k = mesh.face_offsets[f + 1] - o;
@@ -157,8 +185,21 @@ int main(int argc, char** argv) try {
     const double light = std::abs((0.3 * n[0] + 0.5 * n[1] + 0.81 * n[2]) / len);  // two-sided
     const double shade = 0.3 + 0.7 * light;
     const std::array<std::uint8_t, 3> colour{std::uint8_t(90 * shade), std::uint8_t(150 * shade), std::uint8_t(220 * shade)};
-    for (subdiv::Index i = 1; i + 1 < k; ++i)
-      triangle(img, p[mesh.face_vertices[o]], p[mesh.face_vertices[o + i]], p[mesh.face_vertices[o + i + 1]], colour);
+    for (subdiv::Index i = 1; i + 1 < k; ++i) {
+      const subdiv::Index corners[3] = {o, o + i, o + i + 1};
+      const Shader plain = [&](double, double, double) { return colour; };
+      const Shader squares = [&](double w0, double w1, double w2) {
+        double t[2];
+        for (int d = 0; d < 2; ++d)
+          t[d] = w0 * uv[2 * corners[0] + d] + w1 * uv[2 * corners[1] + d] + w2 * uv[2 * corners[2] + d];
+        const bool dark = (int(std::floor(t[0] * checker)) + int(std::floor(t[1] * checker))) % 2 != 0;
+        const double tone = dark ? 0.35 : 1.0;
+        return std::array<std::uint8_t, 3>{std::uint8_t(240 * shade * tone), std::uint8_t(200 * shade * tone),
+                                           std::uint8_t(120 * shade * tone)};
+      };
+      triangle(img, p[mesh.face_vertices[corners[0]]], p[mesh.face_vertices[corners[1]]],
+               p[mesh.face_vertices[corners[2]]], checker > 0 ? squares : plain);
+    }
   }
   for (subdiv::Index f = 0; f < mesh.face_count(); ++f)
     for (subdiv::Index c = mesh.face_offsets[f]; c < mesh.face_offsets[f + 1]; ++c) {
