@@ -117,3 +117,31 @@ TEST_CASE("round trip: VTP keeps polylines, creases and corners through write_me
   CHECK(m.corners[0].v == 4);
   CHECK(m.corners[0].sharpness == 2.25);
 }
+
+TEST_CASE("round trip: OBJ keeps texture coordinates with their seams; arrays of the wrong length are refused") {
+  TempDir dir;
+  // Two quads sharing the edge 1-4, cut along it in UV space (vertices 1 and 4 have two vt).
+  MeshData m;
+  m.positions = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0};
+  m.face_offsets = {0, 4, 8};
+  m.face_vertices = {0, 1, 4, 3, 1, 2, 5, 4};
+  m.face_varying.push_back({"uv", 2, {0, 0, .5, 0, .5, 1, 0, 1, .6, 0, 1, 0, 1, 1, .6, 1},
+                            {0, 1, 2, 3, 4, 5, 6, 7}, ArrayRole::TextureCoordinates});
+  write_mesh(dir / "uv.obj", m);
+  const MeshData back = read_mesh(dir / "uv.obj");
+  REQUIRE(back.face_varying.size() == 1);
+  CHECK(back.face_varying[0].role == ArrayRole::TextureCoordinates);
+  CHECK(back.face_varying[0].indices == m.face_varying[0].indices);
+  CHECK(back.face_varying[0].values == m.face_varying[0].values);
+  // The seam: the corners of vertex 1 in the two faces use different values.
+  CHECK(back.face_varying[0].indices[1] != back.face_varying[0].indices[4]);
+
+  MeshData bad = m;
+  bad.point_data.push_back({"t", 1, {1, 2, 3}, false});
+  CHECK_THROWS_WITH_AS(write_mesh(dir / "bad.ply", bad), doctest::Contains("point data array 't' has 3 values"), Error);
+  CHECK_FALSE(std::filesystem::exists(dir / "bad.ply"));
+  bad = m;
+  bad.face_varying[0].indices.pop_back();
+  CHECK_THROWS_WITH_AS(write_mesh(dir / "bad.obj", bad), doctest::Contains("has 7 corner indices for 8 face corners"),
+                       Error);
+}
