@@ -133,9 +133,38 @@ void check_split(const Scheme& scheme, const ChildOrigins& origins, const Level&
   for (Index f = 0; same && f < vertex_child.face_count(); ++f) same = vertex_child.face_size(f) == value_child.face_size(f);
   if (!same)
     throw Error(fmt::format("{}: face-varying data (e.g. UVs with seams) is refined only by splits whose new faces lie "
-                            "each in one old face (quad and triangle splits); scheme '{}' uses the '{}' split. Drop "
-                            "the face-varying data or choose such a scheme", scheme.path, scheme.name,
+                            "each in one old face (quad and triangle splits) and by dual splits; scheme '{}' uses the "
+                            "'{}' split, whose new points on a seam would need a value from both sides. Drop the "
+                            "face-varying data or choose such a scheme", scheme.path, scheme.name,
                             splitter_info(scheme.split()).name));
+}
+
+// Dual splits make every new point from a face corner (OriginKind::Corner).
+bool makes_corner_points_only(const ChildOrigins& o) {
+  return !o.kind.empty() &&
+         std::all_of(o.kind.begin(), o.kind.end(), [](OriginKind k) { return k == OriginKind::Corner; });
+}
+
+// A dual step: every new point is a face corner, and its value is the dual rule applied to
+// that corner in its own island (the value mesh, whose corner points are the same face
+// corners). Each point then has one value: the data has no seams after the step, and the
+// faces a dual split makes across a seam (E-faces) or around a seam vertex (V-faces) join
+// values of two islands. `vertex_of` becomes the new values' vertices.
+FaceVaryingLevel dual_step_values(const Level& parent, const ChildOrigins& vertex_origins, const Level& child,
+                                  const ChildOrigins& value_origins, std::vector<double> values,
+                                  std::vector<Index>& vertex_of) {
+  std::vector<Index> value_at_corner(parent.face_vertices.size(), kNone);
+  for (size_t c = 0; c < value_origins.kind.size(); ++c)
+    value_at_corner[size_t(parent.face_offsets[value_origins.parent[c]]) + value_origins.local[c]] = Index(c);
+  std::vector<Index> value_of_vertex(size_t(child.vertex_count));
+  vertex_of.assign(value_origins.kind.size(), kNone);
+  for (Index v = 0; v < child.vertex_count; ++v) {
+    value_of_vertex[v] = value_at_corner[size_t(parent.face_offsets[vertex_origins.parent[v]]) + vertex_origins.local[v]];
+    vertex_of[value_of_vertex[v]] = v;
+  }
+  FaceVaryingLevel out{std::move(values), {}};
+  for (Index v : child.face_vertices) out.indices.push_back(value_of_vertex[v]);
+  return out;
 }
 
 // Per-vertex scheme parameters on the values: each value takes its vertex's.
@@ -191,12 +220,19 @@ std::vector<FaceVaryingLevel> refine_face_varying(std::span<const SchemeRun> run
     step.features.boundary = BoundaryInterpolation::EdgesOnly;  // corners were tagged above
     step.vertex_parameters = parameters_on_values(parameters, vertex_of);
     const Hierarchy values = refine_topology(std::span(&run, 1), current, step);
-    check_split(*per_level[l], h.origins[l], h.levels[l + 1], values.levels[1]);
-    FaceVaryingLevel next{step_values(std::span(&run, 1), values, 0, out.back().values, components, step),
-                          values.levels[1].face_vertices};
+    std::vector<double> refined = step_values(std::span(&run, 1), values, 0, out.back().values, components, step);
+    const Level& child = h.levels[l + 1];
+    if (makes_corner_points_only(h.origins[l])) {
+      out.push_back(dual_step_values(h.levels[l], h.origins[l], child, values.origins[0], std::move(refined), vertex_of));
+      current = value_mesh(child, out.back().indices, Index(vertex_of.size()));
+      copy_sharpness(child, current);
+      continue;
+    }
+    check_split(*per_level[l], h.origins[l], child, values.levels[1]);
+    FaceVaryingLevel next{std::move(refined), values.levels[1].face_vertices};
     // Each child value's vertex, from the corners the two children share.
     vertex_of.assign(size_t(values.levels[1].vertex_count), kNone);
-    for (size_t c = 0; c < next.indices.size(); ++c) vertex_of[next.indices[c]] = h.levels[l + 1].face_vertices[c];
+    for (size_t c = 0; c < next.indices.size(); ++c) vertex_of[next.indices[c]] = child.face_vertices[c];
     current = values.levels[1];
     out.push_back(std::move(next));
   }

@@ -22,6 +22,11 @@
 //   All             linear everywhere (bilinear in the face).
 // Values that are sharp corners keep that tag at finer levels; with Boundaries every value
 // on a seam is a corner at every level, with All every value and edge.
+//
+// Dual splits (every new point a face corner; OpenSubdiv has none): a new point's value is
+// the dual rule applied to its corner in its own island; each point then has one value, so
+// the faces a dual step makes across a seam or around a seam vertex join two islands.
+// Splits whose new points lie on edges shared across a seam (sqrt3, mid-edge) are refused.
 #include <span>
 #include <string>
 #include <vector>
@@ -47,8 +52,7 @@ struct FaceVaryingLevel {
 // levels[0] is `base`, renumbered so that each value belongs to one vertex (a value index
 // a file uses at two vertices becomes two values). `h` comes from refine_topology with the
 // same runs and options. Throws subdiv::Error for indices that do not fit the base level
-// and for splits whose child faces do not lie each in one parent face (dual and sqrt3
-// splits: their face-varying refinement is not implemented).
+// and for the sqrt3 and mid-edge splits (see above).
 std::vector<FaceVaryingLevel> refine_face_varying(std::span<const SchemeRun> runs, const Hierarchy& h,
                                                   const FaceVaryingLevel& base, int components,
                                                   FaceVaryingLinear mode, const RefineOptions& options);

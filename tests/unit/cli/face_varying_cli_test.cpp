@@ -97,7 +97,7 @@ TEST_CASE("--fvar-boundary is checked, and a vt number out of range is refused w
   check_refused("refine " + (dir / "grid.obj").string() + " --fvar-boundary sideways", dir / "o.obj", "--fvar-boundary");
   std::ofstream(dir / "bad.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/7\n";
   check_refused("refine " + (dir / "bad.obj").string() + " --scheme loop", dir / "o.obj", "bad.obj:5: this face uses vt number 7");
-  // Dual splits make faces around vertices and across edges: no face-varying refinement.
-  check_refused("refine " + (dir / "grid.obj").string() + " --scheme doo-sabin", dir / "o.obj",
+  // Mid-edge points on a seam would need a value from both sides: no face-varying refinement.
+  check_refused("refine " + (dir / "grid.obj").string() + " --scheme mid-edge", dir / "o.obj",
                 "face-varying data (e.g. UVs with seams) is refined only by splits whose new faces lie each in one old face");
 }
