@@ -75,41 +75,75 @@ std::vector<std::uint8_t> seam_vertices(const Level& vertices, const Level& valu
   return seam;
 }
 
+// What OpenSubdiv calls a value's span: the faces around its vertex that use it, and the
+// edges inside that span (the value mesh's interior edges at the value).
+struct Span {
+  Index value = kNone;
+  int faces = 0;
+  bool disjoint = false;  // two separate fans, or cut by an infinitely sharp edge
+  float semi_sharp = 0;   // the sharpest semi-sharp edge inside, 0 if none
+};
+
+Span span_of(const Level& values, Index value, int faces) {
+  Span s{value, faces, values.non_manifold_vertex(value), 0.f};
+  for (Index e : values.ring_edges(value)) {
+    if (values.edge_face_count(e) < 2) continue;  // a seam or the boundary
+    const float sharpness = values.edge_sharp(e);
+    if (sharpness >= kInfinitelySharp) s.disjoint = true;
+    else s.semi_sharp = std::max(s.semi_sharp, sharpness);
+  }
+  return s;
+}
+
+// The values at vertex v, in the order of v's faces, with their spans.
+std::vector<Span> spans_at(const Level& vertices, const Level& values, Index v) {
+  std::vector<std::pair<Index, int>> counts;
+  for (int i = 0; i < vertices.incident_face_count(v); ++i) {
+    const Index f = vertices.ring_faces(v)[i];
+    const Index value = values.face(f)[vertices.vertex_face_corner[vertices.vertex_face_offsets[v] + i]];
+    auto it = std::find_if(counts.begin(), counts.end(), [&](const auto& c) { return c.first == value; });
+    if (it == counts.end()) counts.emplace_back(value, 1);
+    else ++it->second;
+  }
+  std::vector<Span> spans;
+  for (const auto& [value, faces] : counts) spans.push_back(span_of(values, value, faces));
+  return spans;
+}
+
 // The sharp corners the mode makes at the base level (see face_varying.h; OpenSubdiv's
-// FVarLevel::completeTopologyFromFaceValues). Values of non-manifold spans are made sharp
-// by the value mesh's own non-manifold tags.
+// FVarLevel::completeTopologyFromFaceValues and gatherValueSpans). Values whose span is
+// disjoint or cut by an infinitely sharp edge are corners through the value mesh's own
+// tags; so are semi-sharp ones while their edges are sharp.
 void tag_base_corners(const Level& vertices, Level& values, FaceVaryingLinear mode, BoundaryInterpolation boundary) {
   const std::vector<std::uint8_t> seam = seam_vertices(vertices, values);
   const bool corners_sharp = mode != FaceVaryingLinear::None;
   const bool plus = mode == FaceVaryingLinear::CornersPlus1 || mode == FaceVaryingLinear::CornersPlus2;
   const bool plus2 = mode == FaceVaryingLinear::CornersPlus2;
   const bool vertex_corners_smooth = boundary != BoundaryInterpolation::EdgesAndCorners;
-  auto sharpen = [&](Index value) { values.vertex_sharpness[value] = kInfinitelySharp; };
+  auto sharpen = [&](Index value, float sharpness = kInfinitelySharp) {
+    values.vertex_sharpness[value] = std::max(values.vertex_sharpness[value], sharpness);
+  };
   for (Index v = 0; v < vertices.vertex_count; ++v) {
-    // The values at v and how many of v's faces each spans.
-    std::vector<std::pair<Index, int>> spans;
-    for (int i = 0; i < vertices.incident_face_count(v); ++i) {
-      const Index f = vertices.ring_faces(v)[i];
-      const int corner = vertices.vertex_face_corner[vertices.vertex_face_offsets[v] + i];
-      const Index value = values.face(f)[corner];
-      auto it = std::find_if(spans.begin(), spans.end(), [&](const auto& s) { return s.first == value; });
-      if (it == spans.end()) spans.emplace_back(value, 1);
-      else ++it->second;
-    }
+    const std::vector<Span> spans = spans_at(vertices, values, v);
     if (spans.empty()) continue;
     const bool boundary_vertex = vertices.on_boundary(v);
     if (!seam[v]) {
       // Matching values follow the vertex, except a corner the vertex rule leaves smooth.
-      if (boundary_vertex && spans.size() == 1 && spans[0].second == 1 && vertex_corners_smooth && corners_sharp)
-        sharpen(spans[0].first);
+      if (boundary_vertex && spans.size() == 1 && spans[0].faces == 1 && vertex_corners_smooth && corners_sharp)
+        sharpen(spans[0].value);
       continue;
     }
-    const bool all = (plus && spans.size() > 2) || (plus2 && spans.size() == 1 && !boundary_vertex) ||
-                     (plus2 && spans.size() == 2 && (spans[0].second == 1 || spans[1].second == 1)) ||
-                     (plus && spans.size() == 2 && (values.non_manifold_vertex(spans[0].first) ||
-                                                    values.non_manifold_vertex(spans[1].first)));
-    for (const auto& [value, faces] : spans)
-      if (all || (faces == 1 && corners_sharp)) sharpen(value);
+    bool all = vertices.non_manifold_vertex(v) || (plus && spans.size() > 2) ||
+               (plus2 && spans.size() == 1 && !boundary_vertex);
+    if (plus && spans.size() == 2) {
+      all = all || spans[0].disjoint || spans[1].disjoint || (plus2 && (spans[0].faces == 1 || spans[1].faces == 1));
+      // Dependent sharpness: where one of two values is semi-sharp, the other is sharp as long
+      // as it (OpenSubdiv's depSharp; its sharpness stands in for the span's edges).
+      for (int k = 0; k < 2 && !all; ++k)
+        if (spans[k].semi_sharp > 0 && spans[1 - k].semi_sharp == 0) sharpen(spans[1 - k].value, spans[k].semi_sharp);
+    }
+    for (const Span& s : spans)
+      if (all || (s.faces == 1 && corners_sharp)) sharpen(s.value);
   }
 }
 

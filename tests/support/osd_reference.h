@@ -69,6 +69,11 @@ struct OsdMesh {
   std::vector<OsdCrease> creases;
   std::vector<OsdCorner> corners;
   std::vector<int> holes;  // faces tagged as holes
+  // One face-varying channel (optional): values (fvar_components each, at most 3) and one
+  // value index per face corner.
+  int fvar_components = 0;
+  std::vector<double> fvar_values;
+  std::vector<int> fvar_indices;
 };
 
 struct OsdOptions {
@@ -76,6 +81,7 @@ struct OsdOptions {
   OsdBoundary boundary = OsdBoundary::EdgesAndCorners;  // SubdivKit's default
   OsdCreasing creasing = OsdCreasing::Uniform;
   bool smooth_triangles = false;  // Sdc::Options::TRI_SUB_SMOOTH (Catmull-Clark only)
+  int fvar_linear = 5;            // Sdc::Options::FVarLinearInterpolation, 0 none .. 5 all (Sdc's default)
 };
 
 // Which parent component an OpenSubdiv child vertex came from.
@@ -90,6 +96,10 @@ struct OsdLevel {
   // Empty at level 0; else per vertex: origin kind and parent index in the level before.
   std::vector<OsdOrigin> origin_kind;
   std::vector<int> origin_parent;
+  // The face-varying channel, when the mesh has one: values (3 per value, padded) and
+  // per face corner its value, in OpenSubdiv's face order.
+  std::vector<double> fvar_values;
+  std::vector<int> fvar_corner_values;
 
   int face_count() const { return int(face_offsets.size()) - 1; }
   int edge_count() const { return int(edge_vertices.size() / 2); }
@@ -222,6 +232,13 @@ inline OsdRefinement osd_refine(const OsdMesh& mesh, const OsdOptions& options, 
   desc.cornerWeights = corner_weights.data();
   desc.numHoles = int(mesh.holes.size());
   desc.holeIndices = mesh.holes.data();
+  Far::TopologyDescriptor::FVarChannel channel;
+  if (mesh.fvar_components > 0) {
+    channel.numValues = int(mesh.fvar_values.size()) / mesh.fvar_components;
+    channel.valueIndices = mesh.fvar_indices.data();
+    desc.numFVarChannels = 1;
+    desc.fvarChannels = &channel;
+  }
 
   Sdc::Options sdc;
   sdc.SetVtxBoundaryInterpolation(options.boundary == OsdBoundary::None        ? Sdc::Options::VTX_BOUNDARY_NONE
@@ -230,6 +247,7 @@ inline OsdRefinement osd_refine(const OsdMesh& mesh, const OsdOptions& options, 
   sdc.SetCreasingMethod(options.creasing == OsdCreasing::Chaikin ? Sdc::Options::CREASE_CHAIKIN
                                                                   : Sdc::Options::CREASE_UNIFORM);
   if (options.smooth_triangles) sdc.SetTriangleSubdivision(Sdc::Options::TRI_SUB_SMOOTH);
+  sdc.SetFVarLinearInterpolation(Sdc::Options::FVarLinearInterpolation(options.fvar_linear));
   const Sdc::SchemeType type = options.scheme == OsdScheme::Loop       ? Sdc::SCHEME_LOOP
                                : options.scheme == OsdScheme::Bilinear ? Sdc::SCHEME_BILINEAR
                                                                        : Sdc::SCHEME_CATMARK;
@@ -262,6 +280,21 @@ inline OsdRefinement osd_refine(const OsdMesh& mesh, const OsdOptions& options, 
       out.edge_vertices.push_back(ev[1]);
     }
     out.xyz.resize(3 * size_t(out.vertex_count));
+    if (mesh.fvar_components > 0) {
+      for (int f = 0; f < tl.GetNumFaces(); ++f) {
+        const auto fv = tl.GetFaceFVarValues(f, 0);
+        for (int i = 0; i < fv.size(); ++i) out.fvar_corner_values.push_back(fv[i]);
+      }
+      out.fvar_values.assign(3 * size_t(tl.GetNumFVarValues(0)), 0.0);
+      if (l == 0) {
+        for (size_t i = 0; i < mesh.fvar_values.size(); ++i)
+          out.fvar_values[3 * (i / mesh.fvar_components) + i % mesh.fvar_components] = mesh.fvar_values[i];
+      } else {
+        const auto* from = reinterpret_cast<const detail::OsdXyz*>(result.levels[size_t(l) - 1].fvar_values.data());
+        auto* to = reinterpret_cast<detail::OsdXyz*>(out.fvar_values.data());
+        primvar.InterpolateFaceVarying(l, from, to, 0);
+      }
+    }
     if (l == 0) {
       out.xyz = mesh.xyz;
       continue;
@@ -371,6 +404,37 @@ inline WorstVertex worst_vertex(std::span<const double> a, std::span<const doubl
     if (double d = std::abs(a[i] - b[i]); !(d <= w.difference))
       w.difference = std::isnan(d) ? INFINITY : d, w.vertex = i / 3;
   return w;
+}
+
+// The largest difference between our face-varying values and OpenSubdiv's at any face
+// corner of levels 1..levels. `values[l]` and `corner_values[l]` are ours at level l
+// (`components` per value, one index per corner of ours.levels[l]); faces are paired by
+// their corners through our_to_osd_vertices.
+inline double max_face_varying_difference(const OsdRefinement& osd, const subdiv::Hierarchy& ours,
+                                          const std::vector<std::vector<double>>& values,
+                                          const std::vector<std::vector<subdiv::Index>>& corner_values,
+                                          int components, int levels) {
+  double worst = 0;
+  for (int l = 1; l <= levels; ++l) {
+    const auto vmap = our_to_osd_vertices(osd, ours, l);
+    const auto& tl = osd.refiner->GetLevel(l);
+    const subdiv::Level& L = ours.levels[size_t(l)];
+    const auto fmap = detail::match_faces(L, tl, vmap, l);
+    const OsdLevel& far = osd.levels[size_t(l)];
+    for (subdiv::Index f = 0; f < L.face_count(); ++f) {
+      const auto fv = tl.GetFaceVertices(fmap[size_t(f)]);
+      for (int k = 0; k < L.face_size(f); ++k) {
+        int j = 0;
+        while (fv[j] != vmap[size_t(L.face(f)[k])]) ++j;
+        const int theirs = far.fvar_corner_values[size_t(far.face_offsets[size_t(fmap[size_t(f)])] + j)];
+        const subdiv::Index mine = corner_values[size_t(l)][size_t(L.face_offsets[f] + k)];
+        for (int c = 0; c < components; ++c)
+          worst = std::max(worst, std::abs(values[size_t(l)][size_t(mine) * components + c] -
+                                           far.fvar_values[3 * size_t(theirs) + c]));
+      }
+    }
+  }
+  return worst;
 }
 
 inline double max_abs_difference(std::span<const double> a, std::span<const double> b) {
