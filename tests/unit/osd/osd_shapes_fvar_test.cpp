@@ -12,6 +12,7 @@
 #include <doctest/doctest.h>
 
 #include "support/osd_reference.h"
+#include "unit/osd/osd_shapes.h"
 #include "unit/topology/osd_compare.h"
 
 #ifdef SUBDIV_HAVE_OPENSUBDIV
@@ -30,18 +31,6 @@ namespace {
 // Shape and mode pairs with the known difference described above.
 bool known_difference(const std::string& shape, FaceVaryingLinear mode) {
   return mode == FaceVaryingLinear::None && (shape == "catmark_bishop" || shape == "catmark_car" || shape == "catmark_rook");
-}
-
-const std::filesystem::path kShapes = std::filesystem::path(SUBDIV_SOURCE_DIR) / "tests/data/osd-shapes";
-
-Setup setup_of(const MeshOptions& tags) {
-  Setup s{BoundaryInterpolation::EdgesOnly, CreaseMethod::Uniform};
-  if (tags.interpolate_boundary)
-    s.boundary = *tags.interpolate_boundary == 0   ? BoundaryInterpolation::None
-                 : *tags.interpolate_boundary == 1 ? BoundaryInterpolation::EdgesAndCorners
-                                                   : BoundaryInterpolation::EdgesOnly;
-  if (tags.crease_method == "chaikin") s.method = CreaseMethod::Chaikin;
-  return s;
 }
 
 // Ours against Far for one shape, one mode; the largest difference.
@@ -72,10 +61,7 @@ double compare(const std::string& shape, const MeshData& mesh, const std::string
 }  // namespace
 
 TEST_CASE("OpenSubdiv's regression shapes with texture coordinates: face-varying values agree with Far in every mode") {
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(kShapes))
-    if (entry.path().extension() == ".obj") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
+  const auto files = shape_files();
   int shapes = 0;
   double largest = 0;
   std::string at;
@@ -83,7 +69,7 @@ TEST_CASE("OpenSubdiv's regression shapes with texture coordinates: face-varying
     const std::string shape = file.stem().string();
     const MeshData mesh = read_mesh(file);
     if (mesh.face_varying.empty() || mesh.face_varying.front().role != ArrayRole::TextureCoordinates) continue;
-    const std::string scheme = shape.starts_with("loop_") ? "loop" : shape.starts_with("bilinear_") ? "bilinear" : "catmull-clark";
+    const std::string scheme = scheme_of(shape);
     ++shapes;
     for (FaceVaryingLinear mode : {FaceVaryingLinear::None, FaceVaryingLinear::CornersOnly, FaceVaryingLinear::CornersPlus1,
                                    FaceVaryingLinear::CornersPlus2, FaceVaryingLinear::Boundaries, FaceVaryingLinear::All}) {

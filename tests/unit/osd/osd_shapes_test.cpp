@@ -10,6 +10,7 @@
 #include <doctest/doctest.h>
 
 #include "support/osd_reference.h"
+#include "unit/osd/osd_shapes.h"
 #include "unit/topology/osd_compare.h"
 
 #ifdef SUBDIV_HAVE_OPENSUBDIV
@@ -22,37 +23,6 @@
 using namespace subdiv;
 using namespace subdiv::nonmanifold_test;
 
-namespace {
-
-const std::filesystem::path kShapes = std::filesystem::path(SUBDIV_SOURCE_DIR) / "tests/data/osd-shapes";
-
-std::vector<std::filesystem::path> shape_files() {
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(kShapes))
-    if (entry.path().extension() == ".obj") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-// The scheme far_regression gives a shape: the prefix of its name.
-std::string scheme_of(const std::string& shape) {
-  if (shape.starts_with("loop_")) return "loop";
-  if (shape.starts_with("bilinear_")) return "bilinear";
-  return "catmull-clark";
-}
-
-// GetSdcOptions: the tags, else edges only and uniform creases.
-Setup setup_of(const MeshOptions& tags) {
-  Setup s{BoundaryInterpolation::EdgesOnly, CreaseMethod::Uniform};
-  if (tags.interpolate_boundary)
-    s.boundary = *tags.interpolate_boundary == 0   ? BoundaryInterpolation::None
-                 : *tags.interpolate_boundary == 1 ? BoundaryInterpolation::EdgesAndCorners
-                                                   : BoundaryInterpolation::EdgesOnly;
-  if (tags.crease_method == "chaikin") s.method = CreaseMethod::Chaikin;
-  return s;
-}
-
-}  // namespace
 
 TEST_CASE("OpenSubdiv's regression shapes agree with Far at levels 1-3") {
   const auto files = shape_files();
