@@ -126,8 +126,11 @@ LevelData next_level_data(std::span<const SchemeRun> runs, const Hierarchy& h, i
   LevelData out;
   out.point_data = level.point_data;
   const int channels = packed_channels(level);
-  unpack(step_values(runs, h, step, pack(level, parent.vertex_count, channels), channels, options), channels,
-         child.vertex_count, out);
+  if (channels == 3)  // positions alone: no copy into a packed buffer
+    out.positions = step_values(runs, h, step, level.positions, 3, options);
+  else
+    unpack(step_values(runs, h, step, pack(level, parent.vertex_count, channels), channels, options), channels,
+           child.vertex_count, out);
   for (DataArray& a : out.point_data)
     if (!interpolated(a)) a.values = carry_integer_tuples(parent, origins, a.values, a.components);
   for (const DataArray& a : level.cell_data) {
