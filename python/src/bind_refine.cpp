@@ -14,21 +14,48 @@ namespace {
 struct RefinedLevel {
   subdiv::MeshData mesh;
   std::vector<NamedValues> point_data, cell_data;
+  std::vector<subdiv::FaceVaryingArray> face_varying;
 };
 
 struct RefineInput {
   subdiv::MeshData mesh;
   std::string name;
   std::vector<NamedValues> point_data, cell_data;
+  std::vector<subdiv::FaceVaryingArray> face_varying;
+  subdiv::FaceVaryingLinear fvar_mode = subdiv::FaceVaryingLinear::All;
 };
 
-RefineInput input_from(py::handle mesh, py::handle point_data, py::handle cell_data) {
+subdiv::FaceVaryingLinear fvar_mode_from(const std::string& name) {
+  for (int m = 0; m <= 5; ++m)
+    if (name == subdiv::face_varying_linear_name(subdiv::FaceVaryingLinear(m))) return subdiv::FaceVaryingLinear(m);
+  throw subdiv::Error(fmt::format("fvar_boundary='{}': choose one of none, corners-only, corners-plus1, "
+                                  "corners-plus2, boundaries, all", name));
+}
+
+RefineInput input_from(py::handle mesh, py::handle point_data, py::handle cell_data, py::handle face_varying = py::none(),
+                       const std::string& fvar_boundary = "all") {
   RefineInput in;
   in.mesh = mesh_from_python(mesh);
   in.name = mesh_name(mesh);
   in.point_data = named_values_from(point_data, in.mesh.vertex_count(), "point data");
   in.cell_data = named_values_from(cell_data, in.mesh.face_count(), "cell data");
+  in.face_varying = face_varying_from(face_varying, Index(in.mesh.face_vertices.size()));
+  in.fvar_mode = fvar_mode_from(fvar_boundary);
+  for (const auto& a : in.face_varying)
+    for (size_t c = 0; c < a.indices.size(); ++c)
+      if (a.indices[c] < 0 || a.indices[c] >= a.value_count())
+        throw subdiv::Error(fmt::format("face-varying '{}': face corner {} uses value {}, but there are {} values",
+                                        a.name, c, a.indices[c], a.value_count()));
   return in;
+}
+
+// The corners of the faces that are not holes (mesh_from_level leaves hole faces out).
+std::vector<Index> corners_outside_holes(const subdiv::Level& L, const std::vector<Index>& indices) {
+  if (L.face_hole.empty()) return indices;
+  std::vector<Index> kept;
+  for (Index f = 0; f < L.face_count(); ++f)
+    if (!L.is_hole(f)) kept.insert(kept.end(), indices.begin() + L.face_offsets[f], indices.begin() + L.face_offsets[f + 1]);
+  return kept;
 }
 
 // The `threads` limit for the duration of a call (0: all cores), as `subdiv -j` does.
@@ -82,6 +109,10 @@ std::vector<RefinedLevel> refine_surface(RefineInput& in, const SchemeChoice& c,
   subdiv::Hierarchy h = subdiv::refine_topology(seq.runs, surface_base(in, c), o);
   std::vector<double> positions = std::move(in.mesh.positions);
   std::vector<NamedValues> points = std::move(in.point_data), cells = std::move(in.cell_data);
+  // Face-varying arrays, every level at once (framework/primvar/face_varying.h).
+  std::vector<std::vector<subdiv::FaceVaryingLevel>> fvar;
+  for (const auto& a : in.face_varying)
+    fvar.push_back(subdiv::refine_face_varying(seq.runs, h, {a.values, a.indices}, a.components, in.fvar_mode, o));
   std::vector<RefinedLevel> out;
   auto keep = [&](int l) {
     // mesh_from_level leaves hole faces out (OpenSubdiv's holes, --boundary none); so do their cell values.
@@ -97,7 +128,13 @@ std::vector<RefinedLevel> refine_surface(RefineInput& in, const SchemeChoice& c,
         }
         a.values.resize(row * a.columns);
       }
-    out.push_back({subdiv::mesh_from_level(L, positions), points, std::move(kept)});
+    std::vector<subdiv::FaceVaryingArray> uv;
+    for (size_t k = 0; k < fvar.size(); ++k) {
+      const auto& a = in.face_varying[k];
+      uv.push_back({a.name, a.components, fvar[k][size_t(l)].values, corners_outside_holes(L, fvar[k][size_t(l)].indices),
+                    a.role});
+    }
+    out.push_back({subdiv::mesh_from_level(L, positions), points, std::move(kept), std::move(uv)});
   };
   if (all_levels || seq.total_levels == 0) keep(0);
   for (int l = 0; l < seq.total_levels; ++l) {
@@ -116,6 +153,8 @@ std::vector<RefinedLevel> refine_curve(RefineInput& in, const subdiv::CurveSchem
   subdiv::CurveHierarchy h = subdiv::refine_curves(curve, curve_base(in, curve, levels), levels);
   std::vector<double> positions = std::move(in.mesh.positions);
   std::vector<NamedValues> points = std::move(in.point_data);
+  if (!in.face_varying.empty())
+    throw subdiv::Error("face-varying data: polylines have no faces to carry it; curve refinement carries point data");
   std::vector<RefinedLevel> out;
   auto keep = [&](int l) { out.push_back({subdiv::mesh_from_curve_level(h.levels[l], positions), points, {}}); };
   if (all_levels || levels == 0) keep(0);
@@ -129,10 +168,10 @@ std::vector<RefinedLevel> refine_curve(RefineInput& in, const subdiv::CurveSchem
 
 py::list refine(py::handle mesh, py::handle scheme, py::handle params, int levels, const std::string& boundary,
                 const std::string& crease_method, int threads, bool all_levels, int start_level,
-                py::handle point_data, py::handle cell_data) {
+                py::handle point_data, py::handle cell_data, py::handle face_varying, const std::string& fvar_boundary) {
   check_levels(levels);
   const subdiv::RefineOptions options = refine_options(boundary, crease_method, threads, start_level);
-  RefineInput in = input_from(mesh, point_data, cell_data);
+  RefineInput in = input_from(mesh, point_data, cell_data, face_varying, fvar_boundary);
   const SchemeChoice choice = scheme_choice_from(scheme, levels, params);
   std::vector<RefinedLevel> result;
   {
@@ -146,6 +185,7 @@ py::list refine(py::handle mesh, py::handle scheme, py::handle params, int level
     py::dict d = mesh_to_python(std::move(level.mesh));
     d["point_data"] = named_values_to_python(std::move(level.point_data));
     d["cell_data"] = named_values_to_python(std::move(level.cell_data));
+    d["face_varying"] = face_varying_to_python(std::move(level.face_varying));
     out.append(d);
   }
   return out;
@@ -206,7 +246,7 @@ py::list stencils(py::handle mesh, py::handle scheme, py::handle params, int lev
 void bind_refine(py::module_& m) {
   m.def("_refine", &refine, py::arg("mesh"), py::arg("scheme"), py::arg("params"), py::arg("levels"), py::arg("boundary"),
         py::arg("crease_method"), py::arg("threads"), py::arg("all_levels"), py::arg("start_level"),
-        py::arg("point_data"), py::arg("cell_data"),
+        py::arg("point_data"), py::arg("cell_data"), py::arg("face_varying"), py::arg("fvar_boundary"),
         "Refined levels as dicts of arrays (subdivkit.refine wraps them in Meshes).");
   m.def("_stencils", &stencils, py::arg("mesh"), py::arg("scheme"), py::arg("params"), py::arg("levels"), py::arg("composed"),
         py::arg("boundary"), py::arg("crease_method"), py::arg("threads"), py::arg("start_level"),

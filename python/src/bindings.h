@@ -52,6 +52,11 @@ std::vector<NamedValues> named_values_from(py::handle pairs, Index rows, const s
 // A dict name -> (rows, columns) array.
 py::dict named_values_to_python(std::vector<NamedValues>&& arrays);
 
+// Face-varying arrays from (name, (m, k) float64 values, corner indices) triples, checked
+// against the mesh's corner count; and back as a dict name -> (values, indices).
+std::vector<subdiv::FaceVaryingArray> face_varying_from(py::handle triples, Index corners);
+py::dict face_varying_to_python(std::vector<subdiv::FaceVaryingArray>&& arrays);
+
 // ---- options.cpp: the keyword arguments the library's option structs are made from ------
 // (Keeping them here means one file to touch when the option structs change.)
 

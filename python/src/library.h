@@ -17,6 +17,7 @@
 #include "framework/io/mesh_validate.h"
 #include "framework/io/mesh_write.h"
 #include "framework/io/vtk/vtk_output.h"
+#include "framework/primvar/face_varying.h"
 #include "framework/plugin/plugin_loader.h"
 #include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"

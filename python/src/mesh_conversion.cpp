@@ -113,3 +113,47 @@ py::dict named_values_to_python(std::vector<NamedValues>&& arrays) {
 }
 
 }  // namespace subdivkit
+
+namespace subdivkit {
+
+std::vector<subdiv::FaceVaryingArray> face_varying_from(py::handle triples, Index corners) {
+  std::vector<subdiv::FaceVaryingArray> out;
+  if (triples.is_none()) return out;
+  for (py::handle item : triples) {
+    auto triple = py::reinterpret_borrow<py::tuple>(item);
+    subdiv::FaceVaryingArray a;
+    a.name = py::str(triple[0]);
+    auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(triple[1]);
+    auto indices = py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>::ensure(triple[2]);
+    if (!values || !indices) {
+      PyErr_Clear();
+      throw subdiv::Error(fmt::format("face-varying '{}': expected float64 values and int32 corner indices", a.name));
+    }
+    if (values.ndim() != 2 || indices.ndim() != 1 || indices.shape(0) != corners)
+      throw subdiv::Error(fmt::format("face-varying '{}': expected values of shape (m, k) and {} corner indices (one "
+                                      "per face corner), got shapes {} and {}", a.name, corners,
+                                      std::string(py::str(py::tuple(values.attr("shape")))),
+                                      std::string(py::str(py::tuple(indices.attr("shape"))))));
+    a.components = int(values.shape(1));
+    a.values.assign(values.data(), values.data() + values.size());
+    a.indices.assign(indices.data(), indices.data() + indices.size());
+    // A channel of 2 or 3 numbers named as read_mesh names OBJ's vt is texture coordinates.
+    if (a.name == "uv" && a.components <= 3) a.role = subdiv::ArrayRole::TextureCoordinates;
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
+py::dict face_varying_to_python(std::vector<subdiv::FaceVaryingArray>&& arrays) {
+  py::dict out;
+  for (auto& a : arrays) {
+    const auto rows = py::ssize_t(a.values.size() / size_t(std::max(a.components, 1)));
+    std::vector<std::int32_t> indices(a.indices.begin(), a.indices.end());
+    const auto corners = py::ssize_t(indices.size());
+    out[py::str(a.name)] = py::make_tuple(adopt(std::move(a.values), {rows, py::ssize_t(a.components)}),
+                                          adopt(std::move(indices), {corners}));
+  }
+  return out;
+}
+
+}  // namespace subdivkit

@@ -12,7 +12,12 @@ refine() or writing it converts nothing:
   ``corners`` (k,) vertex ids with ``corner_sharpness`` (k,). Sharpness follows OpenSubdiv:
   0 smooth, 10 or more infinitely sharp;
 * ``point_data`` and ``cell_data``: dicts of arrays with one row per point or per face,
-  carried through refine() and written to .vtp files.
+  carried through refine() and written to .vtp files;
+* ``face_varying``: a dict name -> (values, indices) of face-varying data, e.g. UVs with
+  seams (OBJ ``vt``, read as "uv"): values (m, k) float64 and one int32 value index per
+  face corner (in ``face_indices`` order). refine() carries it as OpenSubdiv does (its
+  ``fvar_boundary`` argument); write_mesh writes "uv" as OBJ ``vt``, and .vtp/.ply with a
+  point per side of a seam.
 
 Arrays given in another layout (float32 or integer points, Fortran order, strided views)
 are converted once, here; arrays that cannot mean what is asked (float face indices,
@@ -123,6 +128,8 @@ class Mesh:
     corner_sharpness : float or array-like (k,), optional
         Sharpness per corner (default 10).
     point_data, cell_data : dict, optional
+    face_varying : dict, optional
+        name -> (values (m, k), corner indices), e.g. {"uv": (uv, uv_index)}.
         Arrays with one row per point / per face, carried through refine().
     name : str
         How error messages name this mesh (read_mesh sets the file name).
@@ -130,6 +137,7 @@ class Mesh:
 
     def __init__(self, points, faces=None, *, face_offsets=None, lines=None, line_offsets=None, creases=None,
                  crease_sharpness=None, corners=None, corner_sharpness=None, point_data=None, cell_data=None,
+                 face_varying=None,
                  name="mesh"):
         self.name = str(name)
         self.points = _as_points(points, f"{self.name}.points")
@@ -146,9 +154,10 @@ class Mesh:
         self.corner_sharpness = _as_sharpness(corner_sharpness, len(self.corners), "corner_sharpness")
         self.point_data = dict(point_data or {})
         self.cell_data = dict(cell_data or {})
+        self.face_varying = dict(face_varying or {})
 
     @classmethod
-    def _from_arrays(cls, arrays, name="mesh", point_data=None, cell_data=None):
+    def _from_arrays(cls, arrays, name="mesh", point_data=None, cell_data=None, face_varying=None):
         """A Mesh around arrays the extension made (already in the right layout: no copies)."""
         mesh = cls.__new__(cls)
         mesh.name = name
@@ -157,6 +166,7 @@ class Mesh:
             setattr(mesh, key, arrays[key])
         mesh.point_data = dict(point_data or {})
         mesh.cell_data = dict(cell_data or {})
+        mesh.face_varying = dict(face_varying or {})
         return mesh
 
     @property
@@ -239,6 +249,21 @@ def _data_pairs(data, rows, what):
     return pairs
 
 
+def _face_varying_triples(mesh):
+    """The mesh's face-varying dict as (name, (m, k) float64 values, int32 indices) triples, checked."""
+    triples = []
+    for key, pair in (mesh.face_varying or {}).items():
+        if not isinstance(pair, (tuple, list)) or len(pair) != 2:
+            raise Error(f"face_varying '{key}': expected a pair (values, indices)")
+        values = np.asarray(pair[0])
+        if values.dtype.kind not in "fiu":
+            raise Error(f"face_varying '{key}': expected numbers, got dtype {values.dtype}")
+        values = np.ascontiguousarray(values.reshape(len(values), -1), dtype=np.float64)
+        indices = _as_indices(pair[1], f"face_varying '{key}' indices")
+        triples.append((str(key), values, indices))
+    return triples
+
+
 def _data_shapes_like(refined, original):
     """Refined data arrays back in the shapes they came in: 1-d stays 1-d."""
     return {key: (refined[key].reshape(-1) if np.ndim(original[key]) == 1 else refined[key]) for key in refined}
@@ -256,7 +281,8 @@ def read_mesh(path):
     """
     path = os.fspath(path)
     arrays = _subdivkit._read_mesh(path)
-    return Mesh._from_arrays(arrays, name=path, point_data=arrays["point_data"], cell_data=arrays["cell_data"])
+    return Mesh._from_arrays(arrays, name=path, point_data=arrays["point_data"], cell_data=arrays["cell_data"],
+                             face_varying=arrays["face_varying"])
 
 
 def write_mesh(path, mesh, point_data=None, cell_data=None):
@@ -273,4 +299,4 @@ def write_mesh(path, mesh, point_data=None, cell_data=None):
     point_data = mesh.point_data if point_data is None else point_data
     cell_data = mesh.cell_data if cell_data is None else cell_data
     _subdivkit._write_mesh(os.fspath(path), mesh, _data_pairs(point_data, mesh.n_points, "point data"),
-                           _data_pairs(cell_data, mesh.n_faces, "cell data"))
+                           _data_pairs(cell_data, mesh.n_faces, "cell data"), _face_varying_triples(mesh))

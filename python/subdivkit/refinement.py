@@ -6,7 +6,7 @@ import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error, Scheme
-from .mesh import Mesh, _data_pairs, _data_shapes_like
+from .mesh import Mesh, _data_pairs, _data_shapes_like, _face_varying_triples
 
 BOUNDARY_MODES = ("edges-and-corners", "edges", "none")
 
@@ -23,7 +23,7 @@ def _check_levels(levels):
 
 
 def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edges-and-corners",
-           crease_method="uniform", threads=0, all_levels=False, start_level=0):
+           crease_method="uniform", threads=0, all_levels=False, start_level=0, fvar_boundary="all"):
     """Refine a mesh ``levels`` times with a scheme; return the finest level as a Mesh.
 
     Parameters
@@ -51,6 +51,10 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
     start_level : int
         How many steps made the input already (sqrt3's alternating boundary rule and
         level-dependent formulas count from the original mesh).
+    fvar_boundary : str
+        How face-varying data (``mesh.face_varying``, e.g. UVs with seams) is refined, as
+        OpenSubdiv's FVarLinearInterpolation: 'none', 'corners-only', 'corners-plus1',
+        'corners-plus2', 'boundaries' or 'all' (OpenSubdiv's default), as ``--fvar-boundary``.
 
     The mesh's point_data is refined with the same rules as the points (any number of
     columns); cell_data follows each face into its children. Crease sharpness decays
@@ -60,10 +64,12 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
     levels = _check_levels(levels)
     refined = _subdivkit._refine(mesh, scheme, params, levels, boundary, crease_method, int(threads), bool(all_levels),
                                  int(start_level), _data_pairs(mesh.point_data, mesh.n_points, "point data"),
-                                 _data_pairs(mesh.cell_data, mesh.n_faces, "cell data"))
+                                 _data_pairs(mesh.cell_data, mesh.n_faces, "cell data"), _face_varying_triples(mesh),
+                                 str(fvar_boundary))
     meshes = [Mesh._from_arrays(level, name=mesh.name,
                                 point_data=_data_shapes_like(level["point_data"], mesh.point_data),
-                                cell_data=_data_shapes_like(level["cell_data"], mesh.cell_data))
+                                cell_data=_data_shapes_like(level["cell_data"], mesh.cell_data),
+                                face_varying=level["face_varying"])
               for level in refined]
     return meshes if all_levels else meshes[-1]
 

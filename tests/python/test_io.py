@@ -82,3 +82,27 @@ def test_polylines_are_read_as_lines():
     curve = sk.read_mesh(MESHES.parent / "curves" / "two-strokes.obj")
     assert curve.n_faces == 0 and curve.n_lines == 3  # three 'l' records
     assert len(curve.line_list()) == 3
+
+
+def test_face_varying_uvs_come_from_obj_and_refine_with_their_seam(tmp_path):
+    tube = sk.read_mesh(MESHES / "textured-tube.obj")
+    assert set(tube.face_varying) == {"uv"}
+    uv, index = tube.face_varying["uv"]
+    assert uv.shape == (36, 2) and index.shape == (tube.n_faces * 4,)  # 9 columns of vt: the seam twice
+    fine = sk.refine(tube, "catmull-clark", 2)
+    fine_uv, fine_index = fine.face_varying["uv"]
+    assert fine_index.shape == (fine.n_faces * 4,)
+    # The seam stays: the vertices where u wraps have two values, one at u = 0 and one at u = 1.
+    corners = fine.face_indices
+    seam = [v for v in np.unique(corners) if len(np.unique(fine_uv[fine_index[corners == v]][:, 0].round(12))) > 1]
+    assert len(seam) == 4 * 3 + 1  # the seam column's vertices after two levels
+    # "all" (the default) is linear in every face: the UVs of the rows stay at v = k/12.
+    assert np.allclose(np.unique(fine_uv[:, 1].round(12)), np.arange(13) / 12)
+    sk.write_mesh(tmp_path / "tube.obj", fine)
+    back = sk.read_mesh(tmp_path / "tube.obj")
+    assert np.array_equal(back.face_varying["uv"][1], fine_index)
+    assert np.allclose(back.face_varying["uv"][0], fine_uv)
+    with pytest.raises(sk.Error, match="fvar_boundary='sideways'"):
+        sk.refine(tube, "catmull-clark", 1, fvar_boundary="sideways")
+    with pytest.raises(sk.Error, match="corner indices"):
+        sk.refine(sk.Mesh(tube.points, tube.faces, face_varying={"uv": (uv, index[:-1])}), "catmull-clark", 1)
