@@ -2,15 +2,14 @@
 
 #include <algorithm>
 #include <fmt/format.h>
-#include <map>
+#include <unordered_map>
 
 #include "framework/engine/vertex_parameters.h"
+#include "framework/features/sharpness.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
 namespace {
-
-constexpr float kInfinitelySharp = 10.f;
 
 // The channel with one value per (vertex, value) pair, and each value's vertex.
 struct Renumbered {
@@ -24,13 +23,15 @@ Renumbered renumber(const Level& vertices, const FaceVaryingLevel& base, int com
                             vertices.face_vertices.size()));
   const Index count = Index(base.values.size() / size_t(components));
   Renumbered out;
-  std::map<std::pair<Index, Index>, Index> index_of;
+  std::unordered_map<std::uint64_t, Index> index_of;  // (vertex << 32 | value) -> new value
+  index_of.reserve(base.indices.size());
   for (size_t c = 0; c < base.indices.size(); ++c) {
     const Index value = base.indices[c], vertex = vertices.face_vertices[c];
     if (value < 0 || value >= count)
       throw Error(fmt::format("face-varying data: face corner {} uses value {}, but there are {} values", c, value,
                               count));
-    auto [it, added] = index_of.emplace(std::pair(vertex, value), Index(out.vertex_of.size()));
+    const std::uint64_t key = std::uint64_t(std::uint32_t(vertex)) << 32 | std::uint32_t(value);
+    auto [it, added] = index_of.emplace(key, Index(out.vertex_of.size()));
     if (added) {
       out.vertex_of.push_back(vertex);
       out.level.values.insert(out.level.values.end(), base.values.begin() + size_t(value) * components,
