@@ -27,7 +27,7 @@ mkdir -p "$corpora" "$artifacts" "$logs"
 # name | dictionary | largest input | seed files
 fuzzers=(
   "fuzz_read_obj|obj|4096|examples/meshes/*.obj examples/curves/*.obj"
-  "fuzz_read_off|off|4096|@off"
+  "fuzz_read_off|off|4096|@off tests/fuzz/seeds/off/*"
   "fuzz_read_ply|ply|4096|@ply tests/fuzz/seeds/ply/*"
   "fuzz_read_stl|stl|4096|@stl tests/fuzz/seeds/stl/*"
   "fuzz_read_vtp|vtp|16384|@vtp"
