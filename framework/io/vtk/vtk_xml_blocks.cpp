@@ -108,9 +108,9 @@ public:
     std::size_t data_start = std::string_view::npos;
     bool appended_base64 = true;
     if (appended != std::string_view::npos) {
-      appended_base64 = attribute(tag_at(appended), "encoding").value_or("base64") != "raw";
-      data_start = bytes_.find('_', appended);
-      if (data_start != std::string_view::npos) ++data_start;
+      const std::string_view element = tag_at(appended);
+      appended_base64 = attribute(element, "encoding").value_or("base64") != "raw";
+      data_start = appended_data_start(appended + element.size() + 1);
     }
     const std::string_view head = bytes_.substr(0, appended);
     for (std::size_t at = head.find("<DataArray"); at != std::string_view::npos; at = head.find("<DataArray", at + 1)) {
@@ -134,6 +134,18 @@ private:
   [[noreturn]] void fail(std::size_t at, const std::string& problem) const {
     const std::size_t line = 1 + std::size_t(std::count(bytes_.begin(), bytes_.begin() + std::min(at, bytes_.size()), '\n'));
     throw Error(fmt::format("{}:{}: {}", file_.string(), line, problem));
+  }
+
+  // Where VTK's vtkXMLDataParser::FindAppendedDataPosition puts the data: after the
+  // blanks that follow the element's '>', and after the '_' that should come first (VTK
+  // takes a first character other than '_' as data). Searching for the first '_' instead
+  // read the headers at another place than VTK did, which then allocated 2^52 bytes
+  // (found by fuzz_read_vtp).
+  std::size_t appended_data_start(std::size_t after_tag) const {
+    std::size_t at = after_tag;
+    while (at < bytes_.size() && (bytes_[at] == ' ' || bytes_[at] == '\t' || bytes_[at] == '\n' || bytes_[at] == '\r')) ++at;
+    if (at < bytes_.size() && bytes_[at] == '_') ++at;
+    return at;
   }
 
   std::string_view tag_at(std::size_t at) const {
