@@ -181,6 +181,13 @@ private:
       fail(at, fmt::format("array '{}': its data header gives blocks of {} bytes and a last block of {}; the "
                            "header is damaged",
                            shortened(name), block_size, last));
+    // With a partial last block VTK takes the data's size as blocks x block size, less one
+    // block, plus the last block: with no blocks that wraps round to about 2^64, and VTK
+    // read block sizes that do not exist (a null dereference, found by fuzz_read_vtp).
+    if (blocks == 0 && last != 0)
+      fail(at, fmt::format("array '{}': its data header gives no compressed blocks but a last block of {} bytes; "
+                           "the header is damaged",
+                           shortened(name), last));
     if (double(blocks) * double(word_size_) > data.remaining())
       fail(at, fmt::format("array '{}' says {} compressed blocks, more than the rest of the file can hold; its data "
                            "header is damaged",

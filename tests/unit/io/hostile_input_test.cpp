@@ -79,6 +79,11 @@ std::string legacy_binary() {
   return s;
 }
 
+// The line (from 1) that byte `at` of `text` is on.
+std::size_t line_of(const std::string& text, std::size_t at) {
+  return 1 + std::size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(at), '\n'));
+}
+
 }  // namespace
 
 TEST_CASE("a FIFO, a character device and a symlink to /dev/zero are refused at once, naming the file") {
@@ -218,6 +223,16 @@ TEST_CASE(".vtp with absurd sizes or a corrupt compression header: a subdiv::Err
   write_text(dir / "many-blocks.vtp", many_blocks);
   CHECK(contains(error_of([&] { read_mesh(dir / "many-blocks.vtp"); }), "compressed blocks, more than the rest of the file"));
 
+  // No blocks but a partial last block: VTK computed the data's size as 0 - block size +
+  // last block, wrapped round, and read the size of a block that does not exist.
+  std::string no_blocks = good;
+  REQUIRE(no_blocks[data] == char(1));  // the first array: one block, least significant byte first
+  no_blocks[data] = char(0);
+  write_text(dir / "no-blocks.vtp", no_blocks);
+  const std::string first_array = std::to_string(line_of(good, good.find("<DataArray")));
+  CHECK(contains(error_of([&] { read_mesh(dir / "no-blocks.vtp"); }),
+                 (dir / "no-blocks.vtp").string() + ":" + first_array + ": array 'level': its data header gives no compressed blocks but a last block"));
+
   // Flip every byte of the appended data's start (the compression headers) in turn.
   for (size_t at = data; at < data + 64 && at < good.size(); ++at) {
     std::string corrupt = good;
@@ -333,10 +348,6 @@ void write_legacy_with_metadata(const fs::path& file, const MeshData& mesh, bool
   if (binary) writer->SetFileTypeToBinary();
   else writer->SetFileTypeToASCII();
   REQUIRE(writer->Write() == 1);
-}
-
-std::size_t line_of(const std::string& text, std::size_t at) {
-  return 1 + std::size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(at), '\n'));
 }
 
 }  // namespace
