@@ -104,6 +104,11 @@ private:
     if (pos_ >= bytes_.size()) return std::nullopt;
     const std::size_t begin = pos_;
     while (pos_ < bytes_.size() && !std::isspace(static_cast<unsigned char>(bytes_[pos_]))) ++pos_;
+    // VTK reads words into 256-byte buffers: a longer one is split in two, and the reader
+    // takes its second half for the next word while this check would not.
+    if (pos_ - begin > 255)
+      fail(fmt::format("a word of {} characters ('{}'); VTK's reader reads words of at most 255 and would split it",
+                       pos_ - begin, shortened(bytes_.substr(begin, pos_ - begin))));
     return bytes_.substr(begin, pos_ - begin);
   }
 

@@ -222,6 +222,15 @@ TEST_CASE(".vtp with absurd sizes or a corrupt compression header: a subdiv::Err
   many_blocks[data + word - 1] = char(0x7f);  // most significant byte of the block count
   write_text(dir / "many-blocks.vtp", many_blocks);
   CHECK(contains(error_of([&] { read_mesh(dir / "many-blocks.vtp"); }), "compressed blocks, more than the rest of the file"));
+  // The same in an <Array> element, which VTK reads as it reads <DataArray> (the check
+  // looked at <DataArray> only, and VTK asked for 14 GB: found by fuzz_read_vtp).
+  std::string renamed = many_blocks;
+  const std::size_t first = renamed.find("<DataArray");
+  renamed.replace(first, 10, "<Array");
+  write_text(dir / "array-element.vtp", renamed);
+  CHECK(contains(error_of([&] { read_mesh(dir / "array-element.vtp"); }),
+                 (dir / "array-element.vtp").string() + ":" + std::to_string(line_of(renamed, first)) +
+                     ": array 'level' says 9151314442816847873 compressed blocks"));
 
   // No blocks but a partial last block: VTK computed the data's size as 0 - block size +
   // last block, wrapped round, and read the size of a block that does not exist.
@@ -434,4 +443,13 @@ TEST_CASE(".om: vertex topology before the vertex positions is refused (OpenMesh
                  (dir / "early.om").string() + ": byte 16: the vertex topology chunk comes before the vertex positions"));
   check_refused("refine " + (dir / "early.om").string() + " -l 1 -q", dir / "early-out.obj",
                 "the vertex topology chunk comes before the vertex positions");
+}
+
+TEST_CASE("legacy .vtk: a word longer than VTK's 255-character buffer is refused, not split") {
+  TempDir dir;
+  std::string named = kLegacyAscii;
+  named.replace(named.find("corner_sharpness"), 16, std::string(300, 'n'));
+  write_text(dir / "long-name.vtk", named);
+  CHECK(contains(error_of([&] { read_mesh(dir / "long-name.vtk"); }),
+                 (dir / "long-name.vtk").string() + ":10: a word of 300 characters"));
 }
