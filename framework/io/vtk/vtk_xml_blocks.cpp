@@ -224,13 +224,16 @@ std::optional<std::string_view> xml_attribute(std::string_view tag, std::string_
 }
 
 std::vector<std::size_t> xml_array_elements(std::string_view head) {
+  // The file's structure, and what VTK writes inside an array (its information keys).
+  static constexpr std::string_view kNotArrays[] = {"VTKFile",   "PolyData", "Piece",  "FieldData", "PointData",
+                                                    "CellData",  "Points",   "Verts",  "Lines",     "Strips",
+                                                    "Polys",     "InformationKey", "Value"};
   std::vector<std::size_t> out;
   for (std::size_t at = head.find('<'); at != std::string_view::npos; at = head.find('<', at + 1)) {
     if (at + 1 >= head.size() || head[at + 1] == '/' || head[at + 1] == '!' || head[at + 1] == '?') continue;
-    if (head.substr(at, 8) == "<VTKFile") continue;
-    const std::size_t end = head.find('>', at);
-    if (xml_attribute(head.substr(at, end == std::string_view::npos ? std::string_view::npos : end - at), "type"))
-      out.push_back(at);
+    const std::string_view rest = head.substr(at + 1, 32);  // bounded: no rescan of a long run without '>'
+    const std::string_view name = rest.substr(0, rest.find_first_of(" \t\r\n/>"));
+    if (std::find(std::begin(kNotArrays), std::end(kNotArrays), name) == std::end(kNotArrays)) out.push_back(at);
   }
   return out;
 }

@@ -18,10 +18,11 @@ namespace subdiv::io_detail {
 std::optional<std::string_view> xml_attribute(std::string_view tag, std::string_view name);
 
 // Where each element VTK may read as an array starts in `head` (the file before
-// <AppendedData>): every start tag with a type attribute but the root's. VTK reads the
-// arrays of field, point and cell data from nested elements of any name (<Array>, not only
-// <DataArray>); checking only <DataArray> let an <Array> ask VTK for 14 GB (found by
-// fuzz_read_vtp).
+// <AppendedData>): every start tag but those of the file's structure (VTKFile, Piece,
+// PointData, ...) and of information keys. VTK reads every element nested in field, point
+// and cell data as an array, whatever its name: checking only <DataArray> let an <Array>
+// ask VTK for 14 GB, and one without a type attribute made it dereference a null array
+// (both found by fuzz_read_vtp).
 std::vector<std::size_t> xml_array_elements(std::string_view head);
 
 // Throws subdiv::Error "<file>:<line>: ..." naming the array and the problem.

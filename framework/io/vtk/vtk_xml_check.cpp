@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "framework/io/text_input.h"
 #include "framework/io/vtk/vtk_xml_blocks.h"
@@ -45,7 +46,8 @@ public:
       for (const char* c : {"NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys"})
         cells += count(tag, at, c);
     }
-    for (const std::size_t at : xml_array_elements(head)) {
+    const std::vector<std::size_t> arrays = xml_array_elements(head);
+    for (const std::size_t at : arrays) {
       const std::string_view tag = tag_at(head, at);
       // An unknown type makes VTK's reader dereference a null array (found by fuzz_read_vtp).
       static constexpr std::string_view kTypes[] = {"Int8",   "UInt8",  "Int16", "UInt16",  "Int32",  "UInt32",
@@ -64,7 +66,7 @@ public:
                                kMaxComponents));
       }
     }
-    field_data(head);
+    field_data(head, arrays);
     const double need = points * kBytesPerPoint + cells * kBytesPerCell;
     const MemoryBudget budget = available_memory();
     if (need > budget.bytes)
@@ -82,17 +84,18 @@ private:
 
   // Field data arrays are sized by their own NumberOfTuples; VTK's reader leaks the array
   // when it is missing (found by fuzz_read_vtp under LeakSanitizer), so it is required.
-  void field_data(std::string_view head) const {
-    for (std::size_t at = head.find("<FieldData"); at != std::string_view::npos; at = head.find("<FieldData", at + 1)) {
+  // One pass: each search starts where the last field data ended.
+  void field_data(std::string_view head, const std::vector<std::size_t>& arrays) const {
+    for (std::size_t at = head.find("<FieldData"); at != std::string_view::npos;) {
       const std::size_t end = std::min(head.find("</FieldData", at), head.size());
-      for (const std::size_t a : xml_array_elements(head.substr(0, end))) {
-        if (a < at) continue;
-        const std::string_view tag = tag_at(head, a);
+      for (auto a = std::lower_bound(arrays.begin(), arrays.end(), at); a != arrays.end() && *a < end; ++a) {
+        const std::string_view tag = tag_at(head, *a);
         const auto tuples = xml_attribute(tag, "NumberOfTuples");
         long long v;
         if (!tuples || !parse_integer(*tuples, v) || v < 0 || v > kMaxCount)
-          fail(a, fmt::format("a field data array needs NumberOfTuples, a whole number from 0 to {}", kMaxCount));
+          fail(*a, fmt::format("a field data array needs NumberOfTuples, a whole number from 0 to {}", kMaxCount));
       }
+      at = end < head.size() ? head.find("<FieldData", end) : std::string_view::npos;
     }
   }
 

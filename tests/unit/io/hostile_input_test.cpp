@@ -242,6 +242,16 @@ TEST_CASE(".vtp with absurd sizes or a corrupt compression header: a subdiv::Err
   CHECK(contains(error_of([&] { read_mesh(dir / "no-blocks.vtp"); }),
                  (dir / "no-blocks.vtp").string() + ":" + first_array + ": array 'level': its data header gives no compressed blocks but a last block"));
 
+  // A field data array without a type: VTK reads it all the same, gets no array and
+  // dereferences it (found by fuzz_read_vtp once only <DataArray>s with a type were checked).
+  std::string untyped = good;
+  const std::size_t type = untyped.find(" type=", untyped.find("<FieldData"));
+  untyped.replace(type, 6, " typj=");
+  write_text(dir / "untyped.vtp", untyped);
+  CHECK(contains(error_of([&] { read_mesh(dir / "untyped.vtp"); }),
+                 (dir / "untyped.vtp").string() + ":" + std::to_string(line_of(untyped, type)) +
+                     ": DataArray type=\"\" is not a VTK type"));
+
   // Flip every byte of the appended data's start (the compression headers) in turn.
   for (size_t at = data; at < data + 64 && at < good.size(); ++at) {
     std::string corrupt = good;
