@@ -134,6 +134,12 @@ private:
       return skip(vertices_, position_size(chunk), at);
     }
     if (chunk.type_ != om::Chunk::Type_Topology) unsupported(chunk, at);
+    // The reader sets each vertex's halfedge on the vertices the positions chunk created;
+    // before it there are none, and OpenMesh wrote through a null pointer (found by
+    // fuzz_read_om).
+    if (!has_positions_)
+      fail(at, "the vertex topology chunk comes before the vertex positions, so it refers to vertices that do not "
+               "exist yet; the file is damaged (OpenMesh writes positions first)");
     if (!vertex_halfedges_.empty()) fail(at, "a second chunk of vertex topology");
     vertex_halfedges_ = ids(vertices_, chunk, at);
   }

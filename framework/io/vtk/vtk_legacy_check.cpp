@@ -9,6 +9,8 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "framework/io/text_input.h"
 #include "framework/util/error.h"
@@ -44,6 +46,9 @@ class LegacyChecker {
 public:
   LegacyChecker(const fs::path& file, std::string_view bytes) : file_(file), bytes_(bytes) {}
 
+  // Byte ranges of the METADATA blocks, for blanking.
+  const std::vector<std::pair<std::size_t, std::size_t>>& metadata_blocks() const { return metadata_; }
+
   void run() {
     header();
     while (auto keyword = next_token()) {
@@ -68,6 +73,15 @@ private:
     throw Error(fmt::format("{}:{}: {}", file_.string(), line_, problem));
   }
 
+  // Past binary data, line ends in the data make line numbers useless: binary files are
+  // named by byte.
+  [[noreturn]] void fail_at(std::size_t byte, std::size_t line, const std::string& problem) {
+    in_binary_data_ = binary_;
+    pos_ = byte;
+    line_ = line;
+    fail(problem);
+  }
+
   std::size_t remaining() const { return bytes_.size() - pos_; }
 
   // One raw line (the header's first lines may hold anything).
@@ -90,6 +104,11 @@ private:
     if (pos_ >= bytes_.size()) return std::nullopt;
     const std::size_t begin = pos_;
     while (pos_ < bytes_.size() && !std::isspace(static_cast<unsigned char>(bytes_[pos_]))) ++pos_;
+    // VTK reads words into 256-byte buffers: a longer one is split in two, and the reader
+    // takes its second half for the next word while this check would not.
+    if (pos_ - begin > 255)
+      fail(fmt::format("a word of {} characters ('{}'); VTK's reader reads words of at most 255 and would split it",
+                       pos_ - begin, shortened(bytes_.substr(begin, pos_ - begin))));
     return bytes_.substr(begin, pos_ - begin);
   }
 
@@ -168,10 +187,11 @@ private:
       if (binary_) {
         end_of_line();
         skip_bytes((n + 7) / 8, what);
-        return;
+      } else {
+        require_room(n, 1, what);
+        for (std::uint64_t i = 0; i < n; ++i) token(what);
       }
-      require_room(n, 1, what);
-      for (std::uint64_t i = 0; i < n; ++i) token(what);
+      blanks_after_data();
       return;
     }
     if (binary_) end_of_line();  // binary data starts on the next line: count only its bytes
@@ -180,6 +200,7 @@ private:
       in_binary_data_ = true;
       for (std::uint64_t i = 0; i < n; ++i) visit(binary_value(type, size));
       in_binary_data_ = false;
+      blanks_after_data();
       return;
     }
     for (std::uint64_t i = 0; i < n; ++i) {
@@ -188,6 +209,7 @@ private:
       if (!parse_double(t, v)) fail(fmt::format("{}: '{}' is not a number", what, shortened(t)));
       visit(v);
     }
+    blanks_after_data();
   }
 
   void skip_bytes(std::uint64_t n, const char* what) {
@@ -377,17 +399,51 @@ private:
     }
   }
 
-  // METADATA blocks end with an empty line.
+  // METADATA blocks (component names, information keys) are text lines ended by an empty
+  // line, as VTK writes and reads them. Inside, VTK's reader follows rules of its own:
+  // lines cut at 255 bytes, a line starting with a 0 byte taken as the end, information
+  // keys read word by word across lines by key types known only at run time. A check
+  // cannot follow all that (a block it ended elsewhere than VTK let VTK read cells past
+  // the end of the file: found by fuzz_read_vtk), so SubdivKit, which uses none of it,
+  // records the block here and gives VTK the file with the block blanked out
+  // (check_legacy_vtk_text). Blocks without their empty line or holding 0 bytes, which
+  // VTK would read differently, are refused.
   void metadata() {
+    const std::size_t start = pos_ - std::strlen("metadata"), start_line = line_;  // the keyword was just read
+    constexpr const char* kUnended = "the METADATA block has no empty line to end it; the file is cut off or damaged";
+    if (bytes_.find('\n', pos_) == std::string_view::npos) fail_at(start, start_line, kUnended);
     end_of_line();
-    while (pos_ < bytes_.size()) {
-      const std::string_view line = raw_line();
-      if (line.find_first_not_of(" \t") == std::string_view::npos) return;
+    for (;;) {
+      if (pos_ >= bytes_.size()) fail_at(start, start_line, kUnended);
+      const std::size_t at = pos_, line = line_;
+      const std::string_view text = raw_line();
+      if (text.find('\0') != std::string_view::npos)
+        fail_at(at, line, "a METADATA line holds a 0 byte; METADATA is text (component names, information keys)");
+      if (text.empty()) break;
+    }
+    metadata_.emplace_back(start, pos_);
+    blanks_after_data();
+  }
+
+  // After an array's data, VTK's reader skips spaces, '\r' and line ends while it looks
+  // for METADATA, 256 bytes at a time: 256 spaces or '\r' without a line end in between
+  // never end that loop (a hang in VTK 9.1).
+  void blanks_after_data() {
+    std::size_t run = 0, lines = 0;
+    for (std::size_t at = pos_; at < bytes_.size(); ++at) {
+      const char c = bytes_[at];
+      if (c == '\n') run = 0, ++lines;
+      else if (c == ' ' || c == '\r') ++run;
+      else break;
+      if (run >= 256)
+        fail_at(at + 1 - run, line_ + lines,
+                "256 or more blanks after an array's data: VTK's reader never gets past them (a hang); remove them");
     }
   }
 
   const fs::path& file_;
   std::string_view bytes_;
+  std::vector<std::pair<std::size_t, std::size_t>> metadata_;
   std::size_t pos_ = 0, line_ = 1;
   bool binary_ = false, in_binary_data_ = false, seen_points_ = false, offsets_layout_ = false;
   std::uint64_t points_ = 0, cells_ = 0;
@@ -395,8 +451,19 @@ private:
 
 }  // namespace
 
-void check_legacy_vtk_text(const fs::path& file, std::string_view bytes) { LegacyChecker(file, bytes).run(); }
+std::optional<std::string> check_legacy_vtk_text(const fs::path& file, std::string_view bytes) {
+  LegacyChecker checker(file, bytes);
+  checker.run();
+  if (checker.metadata_blocks().empty()) return std::nullopt;
+  // Line ends in place of each block: VTK sees empty lines there, and every byte and line
+  // after the block stays where the check found it.
+  std::string text(bytes);
+  for (const auto& [begin, end] : checker.metadata_blocks()) std::fill(text.begin() + begin, text.begin() + end, '\n');
+  return text;
+}
 
-void check_legacy_vtk_file(const fs::path& file) { check_legacy_vtk_text(file, read_whole_file(file)); }
+std::optional<std::string> check_legacy_vtk_file(const fs::path& file) {
+  return check_legacy_vtk_text(file, read_whole_file(file));
+}
 
 }  // namespace subdiv::io_detail

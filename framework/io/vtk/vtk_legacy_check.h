@@ -6,12 +6,18 @@
 // point index against the points, and names the line (or byte) of the first problem.
 // Internal to io/.
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <string_view>
 
 namespace subdiv::io_detail {
 
 // Throws subdiv::Error "<file>:<line>: ..." (ASCII) or "<file>: byte N: ..." (binary).
-void check_legacy_vtk_text(const std::filesystem::path& file, std::string_view bytes);
-void check_legacy_vtk_file(const std::filesystem::path& file);
+// METADATA blocks (component names, information keys: nothing SubdivKit uses) are not
+// left to VTK, which parses them by rules no check can follow: when the file has any, the
+// result is its bytes with each block turned into line ends, for VTK to read instead of
+// the file; otherwise it is empty and VTK reads the file itself.
+std::optional<std::string> check_legacy_vtk_text(const std::filesystem::path& file, std::string_view bytes);
+std::optional<std::string> check_legacy_vtk_file(const std::filesystem::path& file);
 
 }  // namespace subdiv::io_detail

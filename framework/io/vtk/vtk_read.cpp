@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
+#include <vtkCharArray.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkDataSetAttributes.h>
@@ -93,11 +95,20 @@ vtkSmartPointer<vtkPolyData> load_xml(const fs::path& file) {
 }
 
 vtkSmartPointer<vtkPolyData> load_legacy(const fs::path& file) {
-  check_legacy_vtk_file(file);  // VTK's legacy reader trusts every count: a cut-off file crashes it
+  // VTK's legacy reader trusts every count: a cut-off file crashes it. A file with METADATA
+  // blocks comes back with them blanked; VTK reads that text instead of the file.
+  std::optional<std::string> checked = check_legacy_vtk_file(file);
   VtkMessageCapture printed;
   vtkNew<vtkPolyDataReader> reader;
   ErrorObserver errors(*reader);
-  reader->SetFileName(file.c_str());
+  vtkNew<vtkCharArray> text;
+  if (checked) {
+    text->SetArray(checked->data(), vtkIdType(checked->size()), 1);  // 1: the string keeps its bytes
+    reader->SetInputArray(text);
+    reader->ReadFromInputStringOn();
+  } else {
+    reader->SetFileName(file.c_str());
+  }
   if (!reader->IsFilePolyData())
     fail(file, "it is not a legacy VTK file with POLYDATA (other dataset types are not "
                "surfaces this tool refines)");

@@ -25,17 +25,6 @@ double expansion_limit(std::string_view compressor) {
   return 1e5;
 }
 
-std::optional<std::string_view> attribute(std::string_view tag, std::string_view name) {
-  for (std::size_t at = tag.find(name); at != std::string_view::npos; at = tag.find(name, at + 1)) {
-    const std::size_t eq = at + name.size();
-    const bool starts = at > 0 && (tag[at - 1] == ' ' || tag[at - 1] == '\t' || tag[at - 1] == '\n' || tag[at - 1] == '\r');
-    if (!starts || eq + 1 >= tag.size() || tag[eq] != '=' || (tag[eq + 1] != '"' && tag[eq + 1] != '\'')) continue;
-    const std::size_t end = tag.find(tag[eq + 1], eq + 2);
-    return tag.substr(eq + 2, end == std::string_view::npos ? std::string_view::npos : end - eq - 2);
-  }
-  return std::nullopt;
-}
-
 int base64_value(char c) {
   if (c >= 'A' && c <= 'Z') return c - 'A';
   if (c >= 'a' && c <= 'z') return c - 'a' + 26;
@@ -101,30 +90,30 @@ public:
     const std::size_t root = bytes_.find("<VTKFile");
     if (root == std::string_view::npos) return;  // VTK's own check reports it
     const std::string_view tag = tag_at(root);
-    word_size_ = attribute(tag, "header_type").value_or("UInt32") == "UInt64" ? 8 : 4;
-    big_endian_ = attribute(tag, "byte_order").value_or("LittleEndian") == "BigEndian";
-    compressor_ = attribute(tag, "compressor").value_or("");
+    word_size_ = xml_attribute(tag, "header_type").value_or("UInt32") == "UInt64" ? 8 : 4;
+    big_endian_ = xml_attribute(tag, "byte_order").value_or("LittleEndian") == "BigEndian";
+    compressor_ = xml_attribute(tag, "compressor").value_or("");
     const std::size_t appended = bytes_.find("<AppendedData");
     std::size_t data_start = std::string_view::npos;
     bool appended_base64 = true;
     if (appended != std::string_view::npos) {
-      appended_base64 = attribute(tag_at(appended), "encoding").value_or("base64") != "raw";
-      data_start = bytes_.find('_', appended);
-      if (data_start != std::string_view::npos) ++data_start;
+      const std::string_view element = tag_at(appended);
+      appended_base64 = xml_attribute(element, "encoding").value_or("base64") != "raw";
+      data_start = appended_data_start(appended + element.size() + 1);
     }
     const std::string_view head = bytes_.substr(0, appended);
-    for (std::size_t at = head.find("<DataArray"); at != std::string_view::npos; at = head.find("<DataArray", at + 1)) {
+    for (const std::size_t at : xml_array_elements(head)) {
       const std::string_view array = tag_at(at);
-      const std::string_view format = attribute(array, "format").value_or("ascii");
-      const std::string name(attribute(array, "Name").value_or("(unnamed)"));
+      const std::string_view format = xml_attribute(array, "format").value_or("ascii");
+      const std::string name(xml_attribute(array, "Name").value_or("(unnamed)"));
       if (format == "binary") {
         check_header(DataReader(bytes_, at + array.size() + 1, true), at, name);
       } else if (format == "appended") {
         long long offset;
-        if (!parse_integer(attribute(array, "offset").value_or(""), offset) || offset < 0 ||
+        if (!parse_integer(xml_attribute(array, "offset").value_or(""), offset) || offset < 0 ||
             data_start == std::string_view::npos || std::size_t(offset) > bytes_.size() - data_start)
           fail(at, fmt::format("array '{}': its offset=\"{}\" does not point into the appended data", shortened(name),
-                               shortened(attribute(array, "offset").value_or(""))));
+                               shortened(xml_attribute(array, "offset").value_or(""))));
         check_header(DataReader(bytes_, data_start + std::size_t(offset), appended_base64), at, name);
       }
     }
@@ -134,6 +123,18 @@ private:
   [[noreturn]] void fail(std::size_t at, const std::string& problem) const {
     const std::size_t line = 1 + std::size_t(std::count(bytes_.begin(), bytes_.begin() + std::min(at, bytes_.size()), '\n'));
     throw Error(fmt::format("{}:{}: {}", file_.string(), line, problem));
+  }
+
+  // Where VTK's vtkXMLDataParser::FindAppendedDataPosition puts the data: after the
+  // blanks that follow the element's '>', and after the '_' that should come first (VTK
+  // takes a first character other than '_' as data). Searching for the first '_' instead
+  // read the headers at another place than VTK did, which then allocated 2^52 bytes
+  // (found by fuzz_read_vtp).
+  std::size_t appended_data_start(std::size_t after_tag) const {
+    std::size_t at = after_tag;
+    while (at < bytes_.size() && (bytes_[at] == ' ' || bytes_[at] == '\t' || bytes_[at] == '\n' || bytes_[at] == '\r')) ++at;
+    if (at < bytes_.size() && bytes_[at] == '_') ++at;
+    return at;
   }
 
   std::string_view tag_at(std::size_t at) const {
@@ -169,6 +170,13 @@ private:
       fail(at, fmt::format("array '{}': its data header gives blocks of {} bytes and a last block of {}; the "
                            "header is damaged",
                            shortened(name), block_size, last));
+    // With a partial last block VTK takes the data's size as blocks x block size, less one
+    // block, plus the last block: with no blocks that wraps round to about 2^64, and VTK
+    // read block sizes that do not exist (a null dereference, found by fuzz_read_vtp).
+    if (blocks == 0 && last != 0)
+      fail(at, fmt::format("array '{}': its data header gives no compressed blocks but a last block of {} bytes; "
+                           "the header is damaged",
+                           shortened(name), last));
     if (double(blocks) * double(word_size_) > data.remaining())
       fail(at, fmt::format("array '{}' says {} compressed blocks, more than the rest of the file can hold; its data "
                            "header is damaged",
@@ -197,6 +205,38 @@ private:
 };
 
 }  // namespace
+
+std::optional<std::string_view> xml_attribute(std::string_view tag, std::string_view name) {
+  for (std::size_t at = tag.find(name); at != std::string_view::npos; at = tag.find(name, at + 1)) {
+    const bool starts = at > 0 && (tag[at - 1] == ' ' || tag[at - 1] == '\t' || tag[at - 1] == '\n' || tag[at - 1] == '\r');
+    std::size_t p = at + name.size();
+    while (p < tag.size() && (tag[p] == ' ' || tag[p] == '\t')) ++p;
+    if (!starts || p >= tag.size() || tag[p] != '=') continue;
+    ++p;
+    while (p < tag.size() && (tag[p] == ' ' || tag[p] == '\t')) ++p;
+    if (p >= tag.size() || (tag[p] != '"' && tag[p] != '\'')) return std::string_view();
+    const char quote = tag[p];
+    const std::size_t end = tag.find(quote, p + 1);
+    if (end == std::string_view::npos) return tag.substr(p + 1);
+    return tag.substr(p + 1, end - p - 1);
+  }
+  return std::nullopt;
+}
+
+std::vector<std::size_t> xml_array_elements(std::string_view head) {
+  // The file's structure, and what VTK writes inside an array (its information keys).
+  static constexpr std::string_view kNotArrays[] = {"VTKFile",   "PolyData", "Piece",  "FieldData", "PointData",
+                                                    "CellData",  "Points",   "Verts",  "Lines",     "Strips",
+                                                    "Polys",     "InformationKey", "Value"};
+  std::vector<std::size_t> out;
+  for (std::size_t at = head.find('<'); at != std::string_view::npos; at = head.find('<', at + 1)) {
+    if (at + 1 >= head.size() || head[at + 1] == '/' || head[at + 1] == '!' || head[at + 1] == '?') continue;
+    const std::string_view rest = head.substr(at + 1, 32);  // bounded: no rescan of a long run without '>'
+    const std::string_view name = rest.substr(0, rest.find_first_of(" \t\r\n/>"));
+    if (std::find(std::begin(kNotArrays), std::end(kNotArrays), name) == std::end(kNotArrays)) out.push_back(at);
+  }
+  return out;
+}
 
 void check_vtp_data_headers(const fs::path& file, std::string_view bytes) { HeaderChecker(file, bytes).run(); }
 

@@ -6,10 +6,24 @@
 // say; a damaged header asked it for 200 GB (found by fuzz_read_vtp). Here every size
 // must fit in the file, and what the blocks decompress to must be possible for the
 // compressor and fit in memory. Internal to io/.
+#include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string_view>
+#include <vector>
 
 namespace subdiv::io_detail {
+
+// The value of attribute `name` in the text of a start tag, if present.
+std::optional<std::string_view> xml_attribute(std::string_view tag, std::string_view name);
+
+// Where each element VTK may read as an array starts in `head` (the file before
+// <AppendedData>): every start tag but those of the file's structure (VTKFile, Piece,
+// PointData, ...) and of information keys. VTK reads every element nested in field, point
+// and cell data as an array, whatever its name: checking only <DataArray> let an <Array>
+// ask VTK for 14 GB, and one without a type attribute made it dereference a null array
+// (both found by fuzz_read_vtp).
+std::vector<std::size_t> xml_array_elements(std::string_view head);
 
 // Throws subdiv::Error "<file>:<line>: ..." naming the array and the problem.
 void check_vtp_data_headers(const std::filesystem::path& file, std::string_view bytes);

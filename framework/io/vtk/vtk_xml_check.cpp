@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "framework/io/text_input.h"
 #include "framework/io/vtk/vtk_xml_blocks.h"
@@ -29,23 +30,6 @@ std::size_t line_of(std::string_view text, std::size_t at) {
   return 1 + std::size_t(std::count(text.begin(), text.begin() + std::min(at, text.size()), '\n'));
 }
 
-// The value of attribute `name` inside the tag text, if present.
-std::optional<std::string_view> attribute(std::string_view tag, std::string_view name) {
-  for (std::size_t at = tag.find(name); at != std::string_view::npos; at = tag.find(name, at + 1)) {
-    const bool starts = at > 0 && (tag[at - 1] == ' ' || tag[at - 1] == '\t' || tag[at - 1] == '\n' || tag[at - 1] == '\r');
-    std::size_t p = at + name.size();
-    while (p < tag.size() && (tag[p] == ' ' || tag[p] == '\t')) ++p;
-    if (!starts || p >= tag.size() || tag[p] != '=') continue;
-    ++p;
-    while (p < tag.size() && (tag[p] == ' ' || tag[p] == '\t')) ++p;
-    if (p >= tag.size() || (tag[p] != '"' && tag[p] != '\'')) return std::string_view();
-    const char quote = tag[p];
-    const std::size_t end = tag.find(quote, p + 1);
-    if (end == std::string_view::npos) return tag.substr(p + 1);
-    return tag.substr(p + 1, end - p - 1);
-  }
-  return std::nullopt;
-}
 
 class XmlChecker {
 public:
@@ -62,27 +46,27 @@ public:
       for (const char* c : {"NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys"})
         cells += count(tag, at, c);
     }
-    for (std::size_t at = head.find("<DataArray"); at != std::string_view::npos;
-         at = head.find("<DataArray", at + 1)) {
+    const std::vector<std::size_t> arrays = xml_array_elements(head);
+    for (const std::size_t at : arrays) {
       const std::string_view tag = tag_at(head, at);
       // An unknown type makes VTK's reader dereference a null array (found by fuzz_read_vtp).
       static constexpr std::string_view kTypes[] = {"Int8",   "UInt8",  "Int16", "UInt16",  "Int32",  "UInt32",
                                                     "Int64",  "UInt64", "Float32", "Float64", "String"};
-      const auto type = attribute(tag, "type");
+      const auto type = xml_attribute(tag, "type");
       if (!type || std::find(std::begin(kTypes), std::end(kTypes), *type) == std::end(kTypes))
         fail(at, fmt::format("DataArray type=\"{}\" is not a VTK type (Int8 ... UInt64, Float32, Float64, String)",
                              shortened(type.value_or(""))));
       // Points need their three components said: VTK reads one otherwise, fails and leaks.
-      if (attribute(tag, "Name").value_or("") == "Points" && !attribute(tag, "NumberOfComponents"))
+      if (xml_attribute(tag, "Name").value_or("") == "Points" && !xml_attribute(tag, "NumberOfComponents"))
         fail(at, "the Points array needs NumberOfComponents=\"3\"");
-      if (const auto c = attribute(tag, "NumberOfComponents")) {
+      if (const auto c = xml_attribute(tag, "NumberOfComponents")) {
         long long v;
         if (!parse_integer(*c, v) || v < 1 || v > kMaxComponents)
           fail(at, fmt::format("NumberOfComponents=\"{}\" must be a whole number from 1 to {}", shortened(*c),
                                kMaxComponents));
       }
     }
-    field_data(head);
+    field_data(head, arrays);
     const double need = points * kBytesPerPoint + cells * kBytesPerCell;
     const MemoryBudget budget = available_memory();
     if (need > budget.bytes)
@@ -100,16 +84,18 @@ private:
 
   // Field data arrays are sized by their own NumberOfTuples; VTK's reader leaks the array
   // when it is missing (found by fuzz_read_vtp under LeakSanitizer), so it is required.
-  void field_data(std::string_view head) const {
-    for (std::size_t at = head.find("<FieldData"); at != std::string_view::npos; at = head.find("<FieldData", at + 1)) {
+  // One pass: each search starts where the last field data ended.
+  void field_data(std::string_view head, const std::vector<std::size_t>& arrays) const {
+    for (std::size_t at = head.find("<FieldData"); at != std::string_view::npos;) {
       const std::size_t end = std::min(head.find("</FieldData", at), head.size());
-      for (std::size_t a = head.find("<DataArray", at); a < end; a = head.find("<DataArray", a + 1)) {
-        const std::string_view tag = tag_at(head, a);
-        const auto tuples = attribute(tag, "NumberOfTuples");
+      for (auto a = std::lower_bound(arrays.begin(), arrays.end(), at); a != arrays.end() && *a < end; ++a) {
+        const std::string_view tag = tag_at(head, *a);
+        const auto tuples = xml_attribute(tag, "NumberOfTuples");
         long long v;
         if (!tuples || !parse_integer(*tuples, v) || v < 0 || v > kMaxCount)
-          fail(a, fmt::format("a field data array needs NumberOfTuples, a whole number from 0 to {}", kMaxCount));
+          fail(*a, fmt::format("a field data array needs NumberOfTuples, a whole number from 0 to {}", kMaxCount));
       }
+      at = end < head.size() ? head.find("<FieldData", end) : std::string_view::npos;
     }
   }
 
@@ -120,7 +106,7 @@ private:
   }
 
   double count(std::string_view tag, std::size_t at, const char* name) const {
-    const auto value = attribute(tag, name);
+    const auto value = xml_attribute(tag, name);
     if (!value) return 0;
     long long v;
     if (!parse_integer(*value, v) || v < 0)

@@ -4,18 +4,28 @@
 // (and the place), never a crash, a hang, another exception type, or silently bad data.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <OpenMesh/Core/IO/OMFormat.hh>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataWriter.h>
+
 #include "framework/io/feature_file.h"
 #include "framework/io/mesh_read.h"
 #include "framework/io/vtk/vtk_output.h"
+#include "framework/io/vtk/vtk_polydata.h"
 #include "framework/util/input_errors.h"
 #include "unit/io/io_test_support.h"
 #include "unit/io/appended_vtp.h"
+#include "support/cli_checks.h"
 
 using namespace subdiv;
 using namespace subdiv::test;
@@ -67,6 +77,11 @@ std::string legacy_binary() {
   for (std::uint32_t v : {4u, 0u, 1u, 2u, 3u}) put32(v);
   s += "\n";
   return s;
+}
+
+// The line (from 1) that byte `at` of `text` is on.
+std::size_t line_of(const std::string& text, std::size_t at) {
+  return 1 + std::size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(at), '\n'));
 }
 
 }  // namespace
@@ -207,6 +222,35 @@ TEST_CASE(".vtp with absurd sizes or a corrupt compression header: a subdiv::Err
   many_blocks[data + word - 1] = char(0x7f);  // most significant byte of the block count
   write_text(dir / "many-blocks.vtp", many_blocks);
   CHECK(contains(error_of([&] { read_mesh(dir / "many-blocks.vtp"); }), "compressed blocks, more than the rest of the file"));
+  // The same in an <Array> element, which VTK reads as it reads <DataArray> (the check
+  // looked at <DataArray> only, and VTK asked for 14 GB: found by fuzz_read_vtp).
+  std::string renamed = many_blocks;
+  const std::size_t first = renamed.find("<DataArray");
+  renamed.replace(first, 10, "<Array");
+  write_text(dir / "array-element.vtp", renamed);
+  CHECK(contains(error_of([&] { read_mesh(dir / "array-element.vtp"); }),
+                 (dir / "array-element.vtp").string() + ":" + std::to_string(line_of(renamed, first)) +
+                     ": array 'level' says 9151314442816847873 compressed blocks"));
+
+  // No blocks but a partial last block: VTK computed the data's size as 0 - block size +
+  // last block, wrapped round, and read the size of a block that does not exist.
+  std::string no_blocks = good;
+  REQUIRE(no_blocks[data] == char(1));  // the first array: one block, least significant byte first
+  no_blocks[data] = char(0);
+  write_text(dir / "no-blocks.vtp", no_blocks);
+  const std::string first_array = std::to_string(line_of(good, good.find("<DataArray")));
+  CHECK(contains(error_of([&] { read_mesh(dir / "no-blocks.vtp"); }),
+                 (dir / "no-blocks.vtp").string() + ":" + first_array + ": array 'level': its data header gives no compressed blocks but a last block"));
+
+  // A field data array without a type: VTK reads it all the same, gets no array and
+  // dereferences it (found by fuzz_read_vtp once only <DataArray>s with a type were checked).
+  std::string untyped = good;
+  const std::size_t type = untyped.find(" type=", untyped.find("<FieldData"));
+  untyped.replace(type, 6, " typj=");
+  write_text(dir / "untyped.vtp", untyped);
+  CHECK(contains(error_of([&] { read_mesh(dir / "untyped.vtp"); }),
+                 (dir / "untyped.vtp").string() + ":" + std::to_string(line_of(untyped, type)) +
+                     ": DataArray type=\"\" is not a VTK type"));
 
   // Flip every byte of the appended data's start (the compression headers) in turn.
   for (size_t at = data; at < data + 64 && at < good.size(); ++at) {
@@ -302,4 +346,120 @@ TEST_CASE("legacy .vtk BINARY: text after a keyword line, or no line end, is ref
   CHECK(contains(error_of([&] { read_mesh(dir / "unterminated.vtk"); }), "the file ends before the binary data"));
   write_text(dir / "junk.vtk", legacy_binary() + "VERTICES 0 0 junk\n");
   CHECK(contains(error_of([&] { read_mesh(dir / "junk.vtk"); }), "unexpected text after the keyword line"));
+}
+
+namespace {
+
+// A legacy .vtk file as VTK's own writer makes it, METADATA blocks included: component
+// names, and the coordinate range VTK caches in the array's information and writes as an
+// INFORMATION key.
+void write_legacy_with_metadata(const fs::path& file, const MeshData& mesh, bool binary) {
+  OutputLevel level;
+  level.mesh = &mesh;
+  vtkSmartPointer<vtkPolyData> poly = io_detail::make_polydata(level);
+  vtkDataArray* points = poly->GetPoints()->GetData();
+  for (int c = 0; c < 3; ++c) points->SetComponentName(c, c == 0 ? "x" : c == 1 ? "y" : "z");
+  double range[2];
+  points->GetRange(range, -1);
+  vtkNew<vtkPolyDataWriter> writer;
+  writer->SetInputData(poly);
+  writer->SetFileName(file.c_str());
+  if (binary) writer->SetFileTypeToBinary();
+  else writer->SetFileTypeToASCII();
+  REQUIRE(writer->Write() == 1);
+}
+
+}  // namespace
+
+TEST_CASE("legacy .vtk METADATA: read as VTK writes it, and never parsed by VTK where the check could disagree") {
+  TempDir dir;
+  const MeshData cube = cube_mesh();
+  for (const bool binary : {false, true}) {
+    const fs::path file = dir / (binary ? "binary.vtk" : "ascii.vtk");
+    write_legacy_with_metadata(file, cube, binary);
+    const std::string text = read_text(file);
+    REQUIRE(contains(text, "METADATA\nCOMPONENT_NAMES\n"));
+    REQUIRE(contains(text, "INFORMATION"));
+    const MeshData read = read_mesh(file);
+    CHECK(read.face_count() == cube.face_count());
+    REQUIRE(read.vertex_count() == cube.vertex_count());
+    for (std::size_t v = 0; v < cube.vertex_count(); ++v)
+      for (int c = 0; c < 3; ++c) CHECK(read.positions[3 * v + c] == doctest::Approx(cube.positions[3 * v + c]));
+  }
+
+  // The fuzz finding: in a METADATA block, a line starting with a 0 byte ends the block for
+  // VTK but was a line like any other for the check, so VTK went on to read cells the
+  // check had never seen, past the end of the file, and crashed.
+  std::string zero = legacy_binary();
+  const std::size_t cells = zero.find("POLYGONS");
+  zero.insert(cells, std::string("METADATA\nCOMPONENT_NAMES\n") + '\0' + "x\nPOLYGONS 1 5\n" + std::string(8, '\0') + "\n\n");
+  write_text(dir / "zero.vtk", zero);
+  CHECK(contains(error_of([&] { read_mesh(dir / "zero.vtk"); }),
+                 (dir / "zero.vtk").string() + ": byte " + std::to_string(cells + 25) + ": a METADATA line holds a 0 byte"));
+  check_refused("refine " + (dir / "zero.vtk").string() + " -l 1 -q", dir / "zero-out.obj", "a METADATA line holds a 0 byte");
+
+  // A block VTK would end at the end of the file, the check nowhere: refused.
+  write_text(dir / "unended.vtk", std::string(kLegacyAscii) + "METADATA\nINFORMATION 1\n");
+  CHECK(contains(error_of([&] { read_mesh(dir / "unended.vtk"); }),
+                 (dir / "unended.vtk").string() + ":13: the METADATA block has no empty line to end it"));
+
+  // 256 spaces after an array's data: VTK's search for METADATA never ends (a hang).
+  std::string spaces = kLegacyAscii;
+  spaces.insert(spaces.find("\nPOLYGONS"), std::string(300, ' '));
+  write_text(dir / "spaces.vtk", spaces);
+  CHECK(contains(error_of([&] { read_mesh(dir / "spaces.vtk"); }),
+                 (dir / "spaces.vtk").string() + ":6: 256 or more blanks after an array's data"));
+  const CliResult hang = run_subdiv_with_prefix("timeout 60 ", "refine " + (dir / "spaces.vtk").string() + " -l 1 -q -o " +
+                                                                   (dir / "spaces-out.obj").string());
+  CHECK(hang.exit_code == 1);
+  CHECK_FALSE(fs::exists(dir / "spaces-out.obj"));
+}
+
+TEST_CASE(".vtp: the appended data starts where VTK starts it, not at the first '_' in the file") {
+  TempDir dir;
+  write_appended_vtp(dir / "cube.vtp", cube_mesh());
+  std::string vtp = read_text(dir / "cube.vtp");
+  // VTK takes the first character after the blanks as the data when it is not '_'. Eight
+  // bytes there say 2^49 compressed blocks: VTK allocated 2^52 bytes for their sizes, as
+  // the check read the headers after the '_' that followed (found by fuzz_read_vtp).
+  const std::size_t underscore = vtp.find('_', vtp.find("<AppendedData"));
+  REQUIRE(underscore != std::string::npos);
+  vtp.insert(underscore, "\xff\xff\xff\xff\xff\xff\x01\x00");
+  write_text(dir / "shifted.vtp", vtp);
+  const std::string first_array = std::to_string(line_of(vtp, vtp.find("<DataArray")));
+  const std::string m = error_of([&] { read_mesh(dir / "shifted.vtp"); });
+  CHECK_MESSAGE(contains(m, (dir / "shifted.vtp").string() + ":" + first_array + ": array '"), m);
+  CHECK_MESSAGE(contains(m, "header is damaged"), m);
+  check_refused("refine " + (dir / "shifted.vtp").string() + " -l 1 -q", dir / "shifted-out.obj", "header is damaged");
+}
+
+TEST_CASE(".om: vertex topology before the vertex positions is refused (OpenMesh wrote through a null pointer)") {
+  TempDir dir;
+  const std::string good = read_text(fs::path(SUBDIV_SOURCE_DIR) / "tests/fuzz/seeds/om/cube.om");
+  // The first chunk (the positions) relabelled as vertex topology with 32-bit ids: the
+  // reader would set the halfedge of vertices that do not exist yet.
+  namespace omf = OpenMesh::IO::OMFormat;
+  omf::Chunk::Header chunk{};
+  chunk.entity_ = omf::Chunk::Entity_Vertex;
+  chunk.type_ = omf::Chunk::Type_Topology;
+  chunk.bits_ = omf::Chunk::Integer_32;
+  omf::uint16 word = 0;
+  word << chunk;
+  std::string early = good;
+  early[16] = char(word & 0xFF);
+  early[17] = char(word >> 8);
+  write_text(dir / "early.om", early);
+  CHECK(contains(error_of([&] { read_mesh(dir / "early.om"); }),
+                 (dir / "early.om").string() + ": byte 16: the vertex topology chunk comes before the vertex positions"));
+  check_refused("refine " + (dir / "early.om").string() + " -l 1 -q", dir / "early-out.obj",
+                "the vertex topology chunk comes before the vertex positions");
+}
+
+TEST_CASE("legacy .vtk: a word longer than VTK's 255-character buffer is refused, not split") {
+  TempDir dir;
+  std::string named = kLegacyAscii;
+  named.replace(named.find("corner_sharpness"), 16, std::string(300, 'n'));
+  write_text(dir / "long-name.vtk", named);
+  CHECK(contains(error_of([&] { read_mesh(dir / "long-name.vtk"); }),
+                 (dir / "long-name.vtk").string() + ":10: a word of 300 characters"));
 }
