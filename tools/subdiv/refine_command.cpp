@@ -148,6 +148,38 @@ void refine_face_varying_arrays(const SchemeSequence& seq, const Hierarchy& h, c
   }
 }
 
+// The positions and the user's arrays, level by level (framework/primvar/level_data.h):
+// point arrays but normals (a note says so), cell arrays, face-varying arrays.
+std::vector<LevelData> refine_data(const RefineArgs& a, const SchemeSequence& seq, const Hierarchy& h,
+                                   const MeshData& mesh, const RefineOptions& options, Progress& progress,
+                                   std::vector<std::string>& notes) {
+  std::vector<std::string> dropped;
+  std::vector<LevelData> levels{{mesh.positions, carried_point_arrays(mesh.point_data, &dropped), mesh.cell_data}};
+  check_finite_arrays(levels.front(), a.mesh);
+  for (const auto& name : dropped)
+    notes.push_back(fmt::format("point array '{}' holds normals, which refinement does not carry (a mix of unit "
+                                "normals is no normal); --normals writes the exact limit normals", name));
+  for (int l = 0; l < seq.total_levels; ++l) {
+    progress.say(fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
+    // Straight from the rules (no stencil tables), or a non-linear plugin rule.
+    levels.push_back(next_level_data(seq.runs, h, l, levels.back(), options));
+  }
+  refine_face_varying_arrays(seq, h, mesh, options, fvar_mode(with_mesh_options(a, mesh.options)), levels, notes);
+  return levels;
+}
+
+// The options written back as OpenSubdiv's tags into OBJ output, the face-varying mode
+// among them when the mesh has face-varying data or said one.
+MeshOptions tags_to_write(const RefineArgs& a, const RefineOptions& options, const MeshData& mesh,
+                          const SchemeSequence& seq) {
+  MeshOptions used = used_options(options, mesh.options, seq);
+  if (!mesh.face_varying.empty() || used.fvar_interpolate_boundary) {
+    used.fvar_interpolate_boundary = int(fvar_mode(with_mesh_options(a, mesh.options)));
+    used.fvar_propagate_corners.reset();  // said by the mode written
+  }
+  return used;
+}
+
 // --limit and --normals: limit normals (point data "normal"), and with --limit the finest
 // level's positions and interpolated point arrays moved to their limits with the same masks
 // (framework/analysis/surface/limit_evaluation.h); the scheme that would refine it next decides.
@@ -230,32 +262,14 @@ void run(const RefineArgs& a) {
   progress.say(fmt::format("refining topology: {} levels of {}", seq.total_levels, a.scheme));
   Hierarchy h = refine_topology(seq.runs, std::move(base), options);
   for (const auto& w : h.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
-  // The positions and the user's arrays, level by level (framework/primvar/level_data.h).
-  std::vector<std::string> dropped;
-  std::vector<LevelData> levels{{mesh.positions, carried_point_arrays(mesh.point_data, &dropped), mesh.cell_data}};
-  check_finite_arrays(levels.front(), a.mesh);
-  for (const auto& name : dropped)
-    notes.push_back(fmt::format("point array '{}' holds normals, which refinement does not carry (a mix of unit "
-                                "normals is no normal); --normals writes the exact limit normals", name));
-  for (int l = 0; l < seq.total_levels; ++l) {
-    progress.say(fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
-    // Straight from the rules (no stencil tables), or a non-linear plugin rule.
-    levels.push_back(next_level_data(seq.runs, h, l, levels.back(), options));
-  }
-  refine_face_varying_arrays(seq, h, mesh, options, fvar_mode(with_mesh_options(a, mesh.options)), levels, notes);
-  std::vector<double>& finest = levels.back().positions;
+  std::vector<LevelData> levels = refine_data(a, seq, h, mesh, options, progress, notes);
   std::vector<DataArray> limit_data;
   if (a.limit || a.normals) {
     progress.say(a.limit ? "limit positions and normals" : "limit normals");
     limit_data = apply_limits(a, seq, h, options, levels.back());
   }
   progress.say(fmt::format("writing {}", a.output));
-  MeshOptions used = used_options(options, mesh.options, seq);
-  if (!mesh.face_varying.empty() || used.fvar_interpolate_boundary) {
-    used.fvar_interpolate_boundary = int(fvar_mode(with_mesh_options(a, mesh.options)));
-    used.fvar_propagate_corners.reset();  // said by the mode written
-  }
-  write_levels(a.output, h, levels, options.features, limit_data, used);
+  write_levels(a.output, h, levels, options.features, limit_data, tags_to_write(a, options, mesh, seq));
   progress.done();
   if (!a.quiet) {
     for (const auto& note : notes) fmt::print("{}\n", note);
