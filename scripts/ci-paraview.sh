@@ -31,3 +31,6 @@ n = r.GetDataInformation().GetNumberOfCells()
 assert n == 384, n
 print('pvpython reads out/cube_levels/level_3.vtp:', n, 'cells')
 "
+# The ParaView plugin (python/subdivkit/paraview_plugin.py): loaded into pvpython, refining
+# ParaView's own sources (tests/paraview/plugin_test.py).
+PYTHONPATH=build/python pvpython tests/paraview/plugin_test.py
