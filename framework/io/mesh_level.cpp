@@ -99,4 +99,13 @@ MeshData mesh_from_level(const Level& level, std::vector<double> positions) {
   return mesh;
 }
 
+std::vector<Index> corners_outside_holes(const Level& level, const std::vector<Index>& per_corner) {
+  if (level.face_hole.empty()) return per_corner;
+  std::vector<Index> kept;
+  for (Index f = 0; f < level.face_count(); ++f)
+    if (!level.is_hole(f))
+      kept.insert(kept.end(), per_corner.begin() + level.face_offsets[f], per_corner.begin() + level.face_offsets[f + 1]);
+  return kept;
+}
+
 }  // namespace subdiv

@@ -49,15 +49,6 @@ RefineInput input_from(py::handle mesh, py::handle point_data, py::handle cell_d
   return in;
 }
 
-// The corners of the faces that are not holes (mesh_from_level leaves hole faces out).
-std::vector<Index> corners_outside_holes(const subdiv::Level& L, const std::vector<Index>& indices) {
-  if (L.face_hole.empty()) return indices;
-  std::vector<Index> kept;
-  for (Index f = 0; f < L.face_count(); ++f)
-    if (!L.is_hole(f)) kept.insert(kept.end(), indices.begin() + L.face_offsets[f], indices.begin() + L.face_offsets[f + 1]);
-  return kept;
-}
-
 // The `threads` limit for the duration of a call (0: all cores), as `subdiv -j` does.
 std::optional<tbb::global_control> thread_limit(int threads) {
   std::optional<tbb::global_control> limit;

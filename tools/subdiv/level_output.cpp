@@ -69,15 +69,6 @@ OutputLevel describe_level(const Hierarchy& h, int l, const MeshData& mesh, cons
   return out;
 }
 
-// The face-varying indices of the faces that are not holes.
-std::vector<Index> corners_outside_holes(const Level& L, const std::vector<Index>& indices) {
-  if (L.face_hole.empty()) return indices;
-  std::vector<Index> kept;
-  for (Index f = 0; f < L.face_count(); ++f)
-    if (!L.is_hole(f)) kept.insert(kept.end(), indices.begin() + L.face_offsets[f], indices.begin() + L.face_offsets[f + 1]);
-  return kept;
-}
-
 // Level l as a mesh with the user's arrays; hole faces and their cell tuples left out.
 MeshData level_mesh(const Level& L, const LevelData& data) {
   MeshData mesh = mesh_from_level(L, data.positions);
