@@ -264,6 +264,16 @@ TEST_CASE(".vtp with absurd sizes or a corrupt compression header: a subdiv::Err
                                           ": a second array named 'sharpness' in the same <CellData>"),
                 twice_error);
 
+  // VTK reads an array with an offset from the appended data whatever its format says:
+  // a damaged header there is refused even when the format is not "appended".
+  std::string misnamed = huge_block;
+  const std::size_t format = misnamed.find("format=\"appended\"");
+  misnamed.replace(format, 18, "format=\"appendedJ\"");
+  write_text(dir / "misnamed.vtp", misnamed);
+  CHECK(contains(error_of([&] { read_mesh(dir / "misnamed.vtp"); }),
+                 (dir / "misnamed.vtp").string() + ":" + std::to_string(line_of(misnamed, format)) +
+                     ": array 'level': its data header claims"));
+
   // Flip every byte of the appended data's start (the compression headers) in turn.
   for (size_t at = data; at < data + 64 && at < good.size(); ++at) {
     std::string corrupt = good;
