@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <limits>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -66,7 +67,7 @@ public:
                                kMaxComponents));
       }
     }
-    field_data(head, arrays);
+    sections(head, arrays);
     const double need = points * kBytesPerPoint + cells * kBytesPerCell;
     const MemoryBudget budget = available_memory();
     if (need > budget.bytes)
@@ -82,20 +83,44 @@ private:
     throw Error(fmt::format("{}:{}: {}", file_.string(), line_of(bytes_, at), problem));
   }
 
-  // Field data arrays are sized by their own NumberOfTuples; VTK's reader leaks the array
-  // when it is missing (found by fuzz_read_vtp under LeakSanitizer), so it is required.
-  // One pass: each search starts where the last field data ended.
-  void field_data(std::string_view head, const std::vector<std::size_t>& arrays) const {
-    for (std::size_t at = head.find("<FieldData"); at != std::string_view::npos;) {
-      const std::size_t end = std::min(head.find("</FieldData", at), head.size());
-      for (auto a = std::lower_bound(arrays.begin(), arrays.end(), at); a != arrays.end() && *a < end; ++a) {
-        const std::string_view tag = tag_at(head, *a);
-        const auto tuples = xml_attribute(tag, "NumberOfTuples");
-        long long v;
-        if (!tuples || !parse_integer(*tuples, v) || v < 0 || v > kMaxCount)
-          fail(*a, fmt::format("a field data array needs NumberOfTuples, a whole number from 0 to {}", kMaxCount));
-      }
-      at = end < head.size() ? head.find("<FieldData", end) : std::string_view::npos;
+  // Calls visit(section_start, array_start) for each array element inside each
+  // <section ...> ... </section> of `head`. One pass: each search starts where the last
+  // section ended.
+  template <class Visit>
+  void for_each_array_in(std::string_view head, const std::vector<std::size_t>& arrays, std::string_view section,
+                         Visit visit) const {
+    const std::string open = fmt::format("<{}", section), close = fmt::format("</{}", section);
+    for (std::size_t at = head.find(open); at != std::string_view::npos;) {
+      const std::size_t end = std::min(head.find(close, at), head.size());
+      for (auto a = std::lower_bound(arrays.begin(), arrays.end(), at); a != arrays.end() && *a < end; ++a)
+        visit(at, *a);
+      at = end < head.size() ? head.find(open, end) : std::string_view::npos;
+    }
+  }
+
+  void sections(std::string_view head, const std::vector<std::size_t>& arrays) const {
+    // Field data arrays are sized by their own NumberOfTuples; VTK's reader leaks the array
+    // when it is missing (found by fuzz_read_vtp under LeakSanitizer), so it is required.
+    for_each_array_in(head, arrays, "FieldData", [&](std::size_t, std::size_t a) {
+      const auto tuples = xml_attribute(tag_at(head, a), "NumberOfTuples");
+      long long v;
+      if (!tuples || !parse_integer(*tuples, v) || v < 0 || v > kMaxCount)
+        fail(a, fmt::format("a field data array needs NumberOfTuples, a whole number from 0 to {}", kMaxCount));
+    });
+    // VTK creates one array per name but reads every element: a second array of the same
+    // name in one section made it read into an array it never created (a null
+    // dereference, found by fuzz_read_vtp).
+    for (const std::string_view section : {"FieldData", "PointData", "CellData"}) {
+      std::size_t current = std::string_view::npos;
+      std::set<std::string_view> names;
+      for_each_array_in(head, arrays, section, [&](std::size_t section_at, std::size_t a) {
+        if (section_at != current) current = section_at, names.clear();
+        const auto name = xml_attribute(tag_at(head, a), "Name");
+        if (!name) return;
+        if (!names.insert(*name).second)
+          fail(a, fmt::format("a second array named '{}' in the same <{}>; array names must differ",
+                              shortened(*name), section));
+      });
     }
   }
 

@@ -252,6 +252,28 @@ TEST_CASE(".vtp with absurd sizes or a corrupt compression header: a subdiv::Err
                  (dir / "untyped.vtp").string() + ":" + std::to_string(line_of(untyped, type)) +
                      ": DataArray type=\"\" is not a VTK type"));
 
+  // Two cell arrays of one name: VTK created one and read both, the second into an array
+  // it never made (a null dereference, found by fuzz_read_vtp).
+  std::string twice = good;
+  const std::size_t second = twice.find("Name=\"cell_kind\"");
+  REQUIRE(twice.find("Name=\"sharpness\"") < second);  // the cell array before it
+  twice.replace(second, 16, "Name=\"sharpness\"");
+  write_text(dir / "twice.vtp", twice);
+  const std::string twice_error = error_of([&] { read_mesh(dir / "twice.vtp"); });
+  CHECK_MESSAGE(contains(twice_error, (dir / "twice.vtp").string() + ":" + std::to_string(line_of(twice, second)) +
+                                          ": a second array named 'sharpness' in the same <CellData>"),
+                twice_error);
+
+  // VTK reads an array with an offset from the appended data whatever its format says:
+  // a damaged header there is refused even when the format is not "appended".
+  std::string misnamed = huge_block;
+  const std::size_t format = misnamed.find("format=\"appended\"");
+  misnamed.replace(format, 18, "format=\"appendedJ\"");
+  write_text(dir / "misnamed.vtp", misnamed);
+  CHECK(contains(error_of([&] { read_mesh(dir / "misnamed.vtp"); }),
+                 (dir / "misnamed.vtp").string() + ":" + std::to_string(line_of(misnamed, format)) +
+                     ": array 'level': its data header claims"));
+
   // Flip every byte of the appended data's start (the compression headers) in turn.
   for (size_t at = data; at < data + 64 && at < good.size(); ++at) {
     std::string corrupt = good;
