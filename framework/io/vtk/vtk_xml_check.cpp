@@ -31,7 +31,6 @@ std::size_t line_of(std::string_view text, std::size_t at) {
   return 1 + std::size_t(std::count(text.begin(), text.begin() + std::min(at, text.size()), '\n'));
 }
 
-
 class XmlChecker {
 public:
   XmlChecker(const fs::path& file, std::string_view bytes) : file_(file), bytes_(bytes) {}
