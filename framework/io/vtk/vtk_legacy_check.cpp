@@ -189,7 +189,13 @@ private:
         skip_bytes((n + 7) / 8, what);
       } else {
         require_room(n, 1, what);
-        for (std::uint64_t i = 0; i < n; ++i) token(what);
+        // VTK reads each as an integer; one that is not fails the array, and a failed FIELD
+        // array made VTK dereference a null pointer (found by fuzz_read_vtk).
+        for (std::uint64_t i = 0; i < n; ++i) {
+          const std::string_view t = token(what);
+          long long v;
+          if (!parse_integer(t, v)) fail(fmt::format("{}: '{}' is not a bit (0 or 1)", what, shortened(t)));
+        }
       }
       blanks_after_data();
       return;

@@ -485,3 +485,9 @@ TEST_CASE("legacy .vtk: a word longer than VTK's 255-character buffer is refused
   CHECK(contains(error_of([&] { read_mesh(dir / "long-name.vtk"); }),
                  (dir / "long-name.vtk").string() + ":10: a word of 300 characters"));
 }
+
+TEST_CASE("legacy .vtk: a FIELD bit array whose values are not numbers is refused (VTK crashed on it)") {
+  TempDir dir;
+  write_text(dir / "bits.vtk", std::string(kLegacyAscii) + "FIELD FieldData 1\nlevel 2 2 bit\n0\nr\n1 0\n");
+  CHECK(contains(error_of([&] { read_mesh(dir / "bits.vtk"); }), (dir / "bits.vtk").string() + ":16: FIELD array: 'r' is not a bit"));
+}
