@@ -150,8 +150,8 @@ std::vector<Index> vertex_descendants(const Hierarchy& h) {
     for (Index v = 0; v < base_count; ++v) {
       at[v] = child_of[at[v]];
       if (at[v] == kNone)
-        throw Error(fmt::format("refinement step {} makes no vertex point for base vertex {} (a dual split such as "
-                                "Doo-Sabin's)", l + 1, v));
+        throw Error(fmt::format("refinement step {} makes no vertex point for base vertex {} (a dual split)", l + 1,
+                                v));
     }
   }
   return at;

@@ -40,6 +40,28 @@ std::string xml_escape(const std::string& s) {
   return out;
 }
 
+// An SVG document's opening: size, white background, the title at the top left.
+std::string svg_start(int W, int H, double left, const std::string& title) {
+  std::string s = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" viewBox=\"0 0 {} {}\" "
+      "font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
+      W, H, W, H);
+  s += fmt::format("<text x=\"{}\" y=\"22\" font-size=\"15\">{}</text>\n", left, xml_escape(title));
+  return s;
+}
+
+// Horizontal grid lines and labels at moduli 0, 0.2, ..., 1; Y maps a modulus to a row.
+template <typename RowOf>
+std::string modulus_grid(double left, double pw, RowOf Y) {
+  std::string s;
+  for (int t = 0; t <= 5; ++t) {
+    const double v = 0.2 * t, y = Y(v);
+    s += fmt::format("<line x1=\"{}\" y1=\"{:.1f}\" x2=\"{}\" y2=\"{:.1f}\" stroke=\"#ddd\"/>\n", left, y, left + pw, y);
+    s += fmt::format("<text x=\"{}\" y=\"{:.1f}\" text-anchor=\"end\">{:.1f}</text>\n", left - 6, y + 4, v);
+  }
+  return s;
+}
+
 }  // namespace
 
 std::vector<std::string> surface_summary_lines(const SurfaceAnalysis& a) {
@@ -161,17 +183,9 @@ std::string spectrum_svg(const std::vector<SurfaceAnalysis>& analyses, const std
   if (hi == lo) --lo, ++hi;
   auto X = [&](double n) { return left + pw * (n - lo) / double(hi - lo); };
   auto Y = [&](double v) { return top + ph * (1.0 - std::clamp(v, 0.0, 1.05) / 1.05); };
-  std::string s = fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" viewBox=\"0 0 {} {}\" "
-      "font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
-      W, H, W, H);
-  s += fmt::format("<text x=\"{}\" y=\"22\" font-size=\"15\">{}</text>\n", left, xml_escape(title));
+  std::string s = svg_start(W, H, left, title);
   // Axes and grid.
-  for (int t = 0; t <= 5; ++t) {
-    const double v = 0.2 * t, y = Y(v);
-    s += fmt::format("<line x1=\"{}\" y1=\"{:.1f}\" x2=\"{}\" y2=\"{:.1f}\" stroke=\"#ddd\"/>\n", left, y, left + pw, y);
-    s += fmt::format("<text x=\"{}\" y=\"{:.1f}\" text-anchor=\"end\">{:.1f}</text>\n", left - 6, y + 4, v);
-  }
+  s += modulus_grid(left, pw, Y);
   for (int n = lo; n <= hi; ++n) {
     const double x = X(n);
     s += fmt::format("<line x1=\"{:.1f}\" y1=\"{}\" x2=\"{:.1f}\" y2=\"{}\" stroke=\"#eee\"/>\n", x, top, x, top + ph);
@@ -216,16 +230,8 @@ std::string eigenvalue_svg(const std::vector<std::complex<double>>& eigenvalues,
   const int count = std::max<int>(2, int(eigenvalues.size()));
   auto X = [&](double i) { return left + pw * (i + 0.5) / double(count); };
   auto Y = [&](double v) { return top + ph * (1.0 - std::clamp(v, 0.0, 1.05) / 1.05); };
-  std::string s = fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" viewBox=\"0 0 {} {}\" "
-      "font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
-      W, H, W, H);
-  s += fmt::format("<text x=\"{}\" y=\"22\" font-size=\"15\">{}</text>\n", left, xml_escape(title));
-  for (int t = 0; t <= 5; ++t) {
-    const double v = 0.2 * t, y = Y(v);
-    s += fmt::format("<line x1=\"{}\" y1=\"{:.1f}\" x2=\"{}\" y2=\"{:.1f}\" stroke=\"#ddd\"/>\n", left, y, left + pw, y);
-    s += fmt::format("<text x=\"{}\" y=\"{:.1f}\" text-anchor=\"end\">{:.1f}</text>\n", left - 6, y + 4, v);
-  }
+  std::string s = svg_start(W, H, left, title);
+  s += modulus_grid(left, pw, Y);
   s += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"black\"/>\n", left, top, pw, ph);
   s += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">index i</text>\n", left + pw / 2, H - 12);
   s += fmt::format("<text transform=\"translate(16,{}) rotate(-90)\" text-anchor=\"middle\">|lambda_i|</text>\n", top + ph / 2);
