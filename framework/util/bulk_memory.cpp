@@ -1,5 +1,6 @@
 #include "framework/util/bulk_memory.h"
 
+#include <atomic>
 #include <cstdint>
 #include <cstdlib>
 #include <new>
@@ -22,7 +23,14 @@ bool huge_pages_wanted() {
   return wanted;
 }
 
+std::atomic<bool> reuse_heap{false};
+
+constexpr std::size_t kPage = 4096;
+std::size_t whole_pages(std::size_t bytes) { return (bytes + kPage - 1) / kPage * kPage; }
+
 }  // namespace
+
+void reuse_bulk_memory(bool reuse) { reuse_heap.store(reuse); }
 
 void advise_huge_pages(void* data, std::size_t bytes) {
   if (!huge_pages_wanted()) return;
@@ -37,12 +45,20 @@ void advise_huge_pages(void* data, std::size_t bytes) {
 }
 
 void* allocate_bulk(std::size_t bytes) {
+  if (reuse_heap.load(std::memory_order_relaxed)) {
+    void* data = std::aligned_alloc(kPage, whole_pages(bytes));
+    if (!data) throw std::bad_alloc();
+    return data;
+  }
   void* data = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (data == MAP_FAILED) throw std::bad_alloc();
   advise_huge_pages(data, bytes);
   return data;
 }
 
-void release_bulk(void* data, std::size_t bytes) { munmap(data, bytes); }
+void release_bulk(void* data, std::size_t bytes) {
+  if (reuse_heap.load(std::memory_order_relaxed)) return std::free(data);
+  munmap(data, bytes);
+}
 
 }  // namespace subdiv

@@ -30,6 +30,13 @@ void advise_huge_pages(void* data, std::size_t bytes);
 void* allocate_bulk(std::size_t bytes);
 void release_bulk(void* data, std::size_t bytes);
 
+// For programs that refine again and again (animation, interactive editing, benchmarks):
+// with `reuse` on, bulk memory comes from the heap and goes back to it, so the next
+// refinement finds pages already touched instead of faulting in fresh ones (pair it with
+// mallopt(M_TRIM_THRESHOLD) and mallopt(M_MMAP_MAX) so the heap keeps them). Off by default:
+// the peak is lower when freed arrays leave the process. Set it while no bulk memory is live.
+void reuse_bulk_memory(bool reuse);
+
 // An allocator for vectors that grow large and die young (per-chunk buffers): bulk memory
 // from kBulkBytes up, the ordinary heap below.
 template <class T>

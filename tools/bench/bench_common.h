@@ -12,9 +12,6 @@
 
 namespace subdiv_bench {
 
-enum class Clock { Wall, Cpu, User };
-const char* clock_name(Clock clock);
-
 struct Job {
   std::string side;    // "subdivkit" or "osd"
   std::string scheme;  // "catmull-clark" or "loop"
@@ -22,28 +19,39 @@ struct Job {
   std::int64_t faces = 0;
   int level = 1;
   int threads = 1;
-  int repeat = 1;
+  int repeat = 2;  // warm repetitions, after the cold one (bench_memory.h)
   std::int64_t check_max = 0;  // at most about this many vertices sent back for the check
-  Clock clock = Clock::Wall;
+  bool osd_full_topology = false;  // OpenSubdiv: full topology in the last level (not its default)
   bool row_plans = true;       // SubdivKit: replay learnt stencil rows (rules/row_plans.h)
   bool tables = false;         // SubdivKit: build stencil tables and apply them, instead of step_values
 };
 
-// Milliseconds on the wall clock (steady), on the process CPU clock (user + system time of
-// all threads: on a shared machine it does not count time spent waiting for a core, but it
-// adds up the threads, so it only compares like with like at --threads 1), or of user time
-// alone (leaves out the kernel's work, mostly zeroing fresh pages, whose cost on a virtual
-// machine depends on the host).
-double now_ms(Clock clock);
+// A stage's time on two clocks: elapsed (wall) and the process's user time, which leaves
+// out the kernel's work (mostly zeroing fresh pages, whose cost on a virtual machine
+// depends on the host) and, single-threaded, waiting for a core on a busy machine.
+struct Clocks {
+  double wall_ms = 0, user_ms = 0;
+  Clocks operator+(const Clocks& o) const { return {wall_ms + o.wall_ms, user_ms + o.user_ms}; }
+};
 
-// Milliseconds of the best repetition (the one with the smallest total), and memory.
+// Times stages one after the other: each lap() returns the time since the previous one.
+class Stopwatch {
+public:
+  Stopwatch();
+  Clocks lap();
+
+private:
+  Clocks last_;
+};
+
+// One repetition's stages.
 struct Timings {
-  double setup_ms = 0;    // base-level topology from the face arrays
-  double topo_ms = 0;     // uniform refinement of the topology to the level
-  double stencil_ms = 0;  // SubdivKit with --geometry tables: building the stencil tables (else and OSD: 0)
-  double apply_ms = 0;    // interpolating xyz level by level
-  double total_ms() const { return setup_ms + topo_ms + stencil_ms + apply_ms; }
-  double geom_ms() const { return stencil_ms + apply_ms; }
+  Clocks setup;    // base-level topology from the face arrays
+  Clocks topo;     // uniform refinement of the topology to the level
+  Clocks stencil;  // SubdivKit with --geometry tables: building the stencil tables (else and OSD: 0)
+  Clocks apply;    // interpolating xyz level by level
+  Clocks total() const { return setup + topo + stencil + apply; }
+  Clocks geom() const { return stencil + apply; }
 };
 
 struct CheckRecord {
@@ -52,8 +60,10 @@ struct CheckRecord {
 };
 
 struct WorkerReport {
-  Timings best;
-  std::int64_t peak_rss_bytes = 0;  // the side: peak RSS right after its last repetition
+  Timings cold;  // the first repetition, in fresh process memory
+  Timings warm;  // the best (by wall-clock total) of the warm repetitions
+  bool warm_digest_same = true;  // every warm repetition gave the cold one's bits
+  std::int64_t peak_rss_bytes = 0;  // the side: peak RSS right after its cold repetition
   double peak_mb = 0;          // the worker: that peak minus the RSS after making the mesh
   std::int64_t base_faces = 0;  // of the generated mesh
   std::int64_t vertices = 0;   // at the refined level
@@ -107,8 +117,9 @@ bool reset_peak_rss();
 // none (modulus 0) when check_max < 0.
 std::uint64_t check_modulus_for(std::int64_t count, std::int64_t check_max);
 
-// The sides. Each runs job.repeat times inside the calling (worker) process and reports
-// the best repetition. run_osd exists only when built with OpenSubdiv.
+// The sides. Each runs once cold, then job.repeat times warm inside the calling (worker)
+// process (repeat_cold_and_warm, bench_memory.h). run_osd exists only when built with
+// OpenSubdiv.
 WorkerReport run_subdivkit(const Job& job, const Mesh& mesh);
 WorkerReport run_osd(const Job& job, const Mesh& mesh);
 

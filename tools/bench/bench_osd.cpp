@@ -8,6 +8,7 @@
 #include <opensubdiv/far/topologyRefinerFactory.h>
 
 #include "bench_common.h"
+#include "bench_memory.h"
 
 namespace subdiv_bench {
 namespace {
@@ -52,6 +53,26 @@ std::vector<std::uint64_t> child_keys(const Far::TopologyLevel& parent, int chil
   return out;
 }
 
+// The cold repetition's results: memory peak (before anything else is allocated), counts,
+// and origin-keyed positions for the parent's check.
+void report_results(const Job& job, const Mesh& mesh, const Far::TopologyRefiner& refiner, bool loop,
+                    const std::vector<Xyz>& xyz, std::uint64_t digest, WorkerReport& report) {
+  report.peak_rss_bytes = peak_rss_bytes();
+  const auto& last = refiner.GetLevel(job.level);
+  report.vertices = last.GetNumVertices();
+  report.faces = last.GetNumFaces();
+  report.digest = digest;
+  report.check_modulus = check_modulus_for(report.vertices, job.check_max);
+  if (report.check_modulus == 0) return;
+  std::vector<std::uint64_t> keys(size_t(mesh.vertex_count));
+  for (std::int32_t v = 0; v < mesh.vertex_count; ++v) keys[v] = key_base(v);
+  for (int l = 0; l < job.level; ++l)
+    keys = child_keys(refiner.GetLevel(l), refiner.GetLevel(l + 1).GetNumVertices(), !loop, keys);
+  for (size_t i = 0; i < keys.size(); ++i)
+    if (keys[i] % report.check_modulus == 0)
+      report.records.push_back({keys[i], {xyz[i].p[0], xyz[i].p[1], xyz[i].p[2]}});
+}
+
 }  // namespace
 
 WorkerReport run_osd(const Job& job, const Mesh& mesh) {
@@ -70,25 +91,18 @@ WorkerReport run_osd(const Job& job, const Mesh& mesh) {
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   const Factory::Options factory_options(loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, sdc);
 
-  WorkerReport report;
-  bool have_best = false;
-  for (int rep = 0; rep < job.repeat; ++rep) {
-    Timings t;
-    double t0 = now_ms(job.clock);
+  return repeat_cold_and_warm(job, [&](Timings& t, WorkerReport* report) {
+    Stopwatch clock;
     std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(desc, factory_options));
     if (!refiner) throw std::runtime_error("OpenSubdiv could not build the base level");
-    t.setup_ms = now_ms(job.clock) - t0;
-
-    // SubdivKit builds full topology (edges, rings) at every level including the last,
-    // so OpenSubdiv is asked for the same.
+    t.setup = clock.lap();
+    // OpenSubdiv's default leaves out the last level's edges and vertex rings, which
+    // Interpolate does not need; --osd-full-topology asks for them.
     Far::TopologyRefiner::UniformOptions uniform(job.level);
-    uniform.fullTopologyInLastLevel = true;
-    t0 = now_ms(job.clock);
+    uniform.fullTopologyInLastLevel = job.osd_full_topology;
     refiner->RefineUniform(uniform);
-    t.topo_ms = now_ms(job.clock) - t0;
-
+    t.topo = clock.lap();
     // Level by level, keeping only the current and next positions (as the SubdivKit side).
-    t0 = now_ms(job.clock);
     Far::PrimvarRefinerReal<double> primvar(*refiner);
     std::vector<Xyz> src, dst;
     const Xyz* base = reinterpret_cast<const Xyz*>(mesh.xyz.data());
@@ -101,30 +115,11 @@ WorkerReport run_osd(const Job& job, const Mesh& mesh) {
       std::swap(src, dst);
       std::vector<Xyz>().swap(dst);
     }
-    t.apply_ms = now_ms(job.clock) - t0;
-
-    if (!have_best || t.total_ms() < report.best.total_ms()) report.best = t;
-    have_best = true;
-    if (rep + 1 < job.repeat) continue;
-
-    // Last repetition: take the memory peak before anything else is allocated, then
-    // collect what the parent needs for the correctness check.
-    report.peak_rss_bytes = peak_rss_bytes();
-    const auto& last = refiner->GetLevel(job.level);
-    report.vertices = last.GetNumVertices();
-    report.faces = last.GetNumFaces();
-    report.digest = digest_of({&src[0].p[0], 3 * src.size()});
-    report.check_modulus = check_modulus_for(report.vertices, job.check_max);
-    if (report.check_modulus == 0) continue;
-    std::vector<std::uint64_t> keys(size_t(mesh.vertex_count));
-    for (std::int32_t v = 0; v < mesh.vertex_count; ++v) keys[v] = key_base(v);
-    for (int l = 0; l < job.level; ++l)
-      keys = child_keys(refiner->GetLevel(l), refiner->GetLevel(l + 1).GetNumVertices(), !loop, keys);
-    for (size_t i = 0; i < keys.size(); ++i)
-      if (keys[i] % report.check_modulus == 0)
-        report.records.push_back({keys[i], {src[i].p[0], src[i].p[1], src[i].p[2]}});
-  }
-  return report;
+    t.apply = clock.lap();
+    const std::uint64_t digest = digest_of({&src[0].p[0], 3 * src.size()});
+    if (report) report_results(job, mesh, *refiner, loop, src, digest, *report);
+    return digest;
+  });
 }
 
 }  // namespace subdiv_bench

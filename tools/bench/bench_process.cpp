@@ -1,6 +1,5 @@
 // Memory figures and small helpers shared by the sides.
 #include <sys/resource.h>
-#include <time.h>
 
 #include <chrono>
 #include <cstdio>
@@ -25,20 +24,26 @@ std::int64_t status_field_bytes(const char* field) {
 
 }  // namespace
 
-const char* clock_name(Clock clock) { return clock == Clock::Wall ? "wall" : clock == Clock::Cpu ? "cpu" : "user"; }
+namespace {
 
-double now_ms(Clock clock) {
-  if (clock == Clock::User) {
-    rusage usage;
-    getrusage(RUSAGE_SELF, &usage);
-    return double(usage.ru_utime.tv_sec) * 1e3 + double(usage.ru_utime.tv_usec) * 1e-3;
-  }
-  if (clock == Clock::Cpu) {
-    timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) * 1e-6;
-  }
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+Clocks read_clocks() {
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  const double user = double(usage.ru_utime.tv_sec) * 1e3 + double(usage.ru_utime.tv_usec) * 1e-3;
+  const double wall =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  return {wall, user};
+}
+
+}  // namespace
+
+Stopwatch::Stopwatch() : last_(read_clocks()) {}
+
+Clocks Stopwatch::lap() {
+  const Clocks now = read_clocks();
+  const Clocks since{now.wall_ms - last_.wall_ms, now.user_ms - last_.user_ms};
+  last_ = now;
+  return since;
 }
 
 std::int64_t current_rss_bytes() { return status_field_bytes("VmRSS"); }

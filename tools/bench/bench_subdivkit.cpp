@@ -6,6 +6,7 @@
 #include <oneapi/tbb/global_control.h>
 
 #include "bench_common.h"
+#include "bench_memory.h"
 #include "framework/engine/refiner.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/topology/level.h"
@@ -13,7 +14,6 @@
 
 namespace subdiv_bench {
 namespace {
-
 
 // Keys of level i + 1 from keys of level i, through the engine's recorded origins.
 std::vector<std::uint64_t> child_keys(const subdiv::Level& parent, const subdiv::ChildOrigins& origins,
@@ -38,6 +38,24 @@ std::vector<std::uint64_t> child_keys(const subdiv::Level& parent, const subdiv:
   return out;
 }
 
+// The cold repetition's results: memory peak (before anything else is allocated), counts,
+// and origin-keyed positions for the parent's check.
+void report_results(const Job& job, const Mesh& mesh, const subdiv::Hierarchy& h, const std::vector<double>& xyz,
+                    std::uint64_t digest, WorkerReport& report) {
+  report.peak_rss_bytes = peak_rss_bytes();
+  const auto& last = h.levels[size_t(job.level)];
+  report.vertices = last.vertex_count;
+  report.faces = last.face_count();
+  report.digest = digest;
+  report.check_modulus = check_modulus_for(report.vertices, job.check_max);
+  if (report.check_modulus == 0) return;
+  std::vector<std::uint64_t> keys(size_t(mesh.vertex_count));
+  for (std::int32_t v = 0; v < mesh.vertex_count; ++v) keys[v] = key_base(v);
+  for (int l = 0; l < job.level; ++l) keys = child_keys(h.levels[size_t(l)], h.origins[size_t(l)], keys);
+  for (size_t i = 0; i < keys.size(); ++i)
+    if (keys[i] % report.check_modulus == 0) report.records.push_back({keys[i], {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}});
+}
+
 }  // namespace
 
 WorkerReport run_subdivkit(const Job& job, const Mesh& mesh) {
@@ -50,26 +68,18 @@ WorkerReport run_subdivkit(const Job& job, const Mesh& mesh) {
   options.threads = job.threads;
   options.use_row_plans = job.row_plans;
 
-  WorkerReport report;
-  bool have_best = false;
-  for (int rep = 0; rep < job.repeat; ++rep) {
-    Timings t;
-    double t0 = now_ms(job.clock);
+  return repeat_cold_and_warm(job, [&](Timings& t, WorkerReport* report) {
+    Stopwatch clock;
     subdiv::Level base = subdiv::build_level(mesh.vertex_count, mesh.face_offsets, mesh.face_vertices);
-    t.setup_ms = now_ms(job.clock) - t0;
-
-    t0 = now_ms(job.clock);
+    t.setup = clock.lap();
     subdiv::Hierarchy h = subdiv::refine_topology(*scheme, std::move(base), options);
-    t.topo_ms = now_ms(job.clock) - t0;
-
-    std::vector<double> src, dst;
+    t.topo = clock.lap();
     if (job.tables) {
-      t0 = now_ms(job.clock);
       subdiv::build_stencils(*scheme, h, options);
-      t.stencil_ms = now_ms(job.clock) - t0;
+      t.stencil = clock.lap();
     }
     // Level by level, keeping only the current and next positions (as the OSD side).
-    t0 = now_ms(job.clock);
+    std::vector<double> src, dst;
     for (int l = 0; l < job.level; ++l) {
       const std::span<const double> from = l == 0 ? std::span<const double>(mesh.xyz) : std::span<const double>(src);
       if (job.tables) {
@@ -82,27 +92,11 @@ WorkerReport run_subdivkit(const Job& job, const Mesh& mesh) {
       std::swap(src, dst);
       std::vector<double>().swap(dst);
     }
-    t.apply_ms = now_ms(job.clock) - t0;
-
-    if (!have_best || t.total_ms() < report.best.total_ms()) report.best = t;
-    have_best = true;
-    if (rep + 1 < job.repeat) continue;
-
-    report.peak_rss_bytes = peak_rss_bytes();
-    const auto& last = h.levels[size_t(job.level)];
-    report.vertices = last.vertex_count;
-    report.faces = last.face_count();
-    report.digest = digest_of(src);
-    report.check_modulus = check_modulus_for(report.vertices, job.check_max);
-    if (report.check_modulus == 0) continue;
-    std::vector<std::uint64_t> keys(size_t(mesh.vertex_count));
-    for (std::int32_t v = 0; v < mesh.vertex_count; ++v) keys[v] = key_base(v);
-    for (int l = 0; l < job.level; ++l) keys = child_keys(h.levels[size_t(l)], h.origins[size_t(l)], keys);
-    for (size_t i = 0; i < keys.size(); ++i)
-      if (keys[i] % report.check_modulus == 0)
-        report.records.push_back({keys[i], {src[3 * i], src[3 * i + 1], src[3 * i + 2]}});
-  }
-  return report;
+    t.apply = clock.lap();
+    const std::uint64_t digest = digest_of(src);
+    if (report) report_results(job, mesh, h, src, digest, *report);
+    return digest;
+  });
 }
 
 }  // namespace subdiv_bench

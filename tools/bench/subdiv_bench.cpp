@@ -2,9 +2,10 @@
 //
 // For every scheme and level the parent process starts one worker process per library
 // (this program again, with the hidden --worker option). A worker builds the mesh, marks
-// its memory baseline, runs the refinement --repeat times and sends back the best times,
-// its peak memory above the baseline, and origin-keyed positions for the correctness
-// check. Separate processes keep the two libraries' memory peaks apart.
+// its memory baseline, runs the refinement once cold and --repeat times warm
+// (bench_memory.h) and sends back both times, its peak memory above the baseline, and
+// origin-keyed positions for the correctness check. Separate processes keep the two
+// libraries' memory peaks apart.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -42,7 +43,8 @@ constexpr std::uint64_t kMagic = 0x53444b42454e4348ull;  // "SDKBENCH"
 
 struct WireHeader {
   std::uint64_t magic;
-  Timings best;
+  Timings cold, warm;
+  bool warm_digest_same;
   double peak_mb;
   std::int64_t base_faces, vertices, faces;
   std::uint64_t digest, check_modulus, record_count;
@@ -60,7 +62,7 @@ void write_all(int fd, const void* data, size_t size) {
 }
 
 void send_report(int fd, const WorkerReport& r) {
-  const WireHeader h{kMagic, r.best, r.peak_mb, r.base_faces, r.vertices, r.faces, r.digest, r.check_modulus, r.records.size()};
+  const WireHeader h{kMagic, r.cold, r.warm, r.warm_digest_same, r.peak_mb, r.base_faces, r.vertices, r.faces, r.digest, r.check_modulus, r.records.size()};
   write_all(fd, &h, sizeof h);
   if (!r.records.empty()) write_all(fd, r.records.data(), r.records.size() * sizeof(CheckRecord));
 }
@@ -70,7 +72,9 @@ bool parse_report(const std::string& bytes, WorkerReport& r) {
   if (bytes.size() < sizeof h) return false;
   std::memcpy(&h, bytes.data(), sizeof h);
   if (h.magic != kMagic || bytes.size() != sizeof h + h.record_count * sizeof(CheckRecord)) return false;
-  r.best = h.best;
+  r.cold = h.cold;
+  r.warm = h.warm;
+  r.warm_digest_same = h.warm_digest_same;
   r.peak_mb = h.peak_mb;
   r.base_faces = h.base_faces;
   r.vertices = h.vertices;
@@ -141,7 +145,7 @@ RunResult run_worker(const Job& job) {
                                    "--threads", std::to_string(job.threads),
                                    "--repeat", std::to_string(job.repeat),
                                    "--check-max", std::to_string(job.check_max),
-                                   "--clock", clock_name(job.clock),
+                                   "--osd-topology", job.osd_full_topology ? "full" : "default",
                                    "--row-plans", job.row_plans ? "on" : "off",
                                    "--geometry", job.tables ? "tables" : "direct"};
   std::vector<char*> argv;
@@ -312,9 +316,36 @@ std::int64_t base_faces_for(std::int64_t faces, int level, std::int64_t max_refi
   return std::max<std::int64_t>(1, std::min(faces, max_refined >> (2 * level)));
 }
 
+// One clock's times of one repetition kind: totals, stages and ratios (SubdivKit / OSD).
+std::string timing_fields(const RunResult& ours, const RunResult& theirs, bool warm, bool user) {
+  auto pick = [&](const Clocks& c) { return user ? c.user_ms : c.wall_ms; };
+  const Timings& a = warm ? ours.report.warm : ours.report.cold;
+  const Timings& b = warm ? theirs.report.warm : theirs.report.cold;
+  std::string out;
+  auto field = [&](const std::string& name, bool ok, double ms) { out += " " + name + "=" + (ok ? fmt_ms(ms) : "n/a"); };
+  auto ratio = [&](const std::string& name, double x, double y) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", x / y);
+    out += " " + name + "=" + (ours.ok && theirs.ok && y > 0 ? std::string(text) : "n/a");
+  };
+  field("subdivkit_ms", ours.ok, pick(a.total()));
+  field("osd_ms", theirs.ok, pick(b.total()));
+  ratio("ratio", pick(a.total()), pick(b.total()));
+  field("setup_ms", ours.ok, pick(a.setup));
+  field("osd_setup_ms", theirs.ok, pick(b.setup));
+  field("topo_ms", ours.ok, pick(a.topo));
+  field("osd_topo_ms", theirs.ok, pick(b.topo));
+  ratio("topo_ratio", pick(a.topo), pick(b.topo));
+  field("geom_ms", ours.ok, pick(a.geom()));
+  field("osd_geom_ms", theirs.ok, pick(b.geom()));
+  ratio("geom_ratio", pick(a.geom()), pick(b.geom()));
+  if (ours.ok && pick(a.stencil) > 0) field("stencil_ms", true, pick(a.stencil));
+  return out;
+}
+
 int parent_main(const std::vector<std::string>& schemes, const std::vector<std::string>& meshes,
                 const std::vector<int>& levels, Job base, const std::string& sides, bool check,
-                std::int64_t max_refined) {
+                std::int64_t max_refined, const std::vector<bool>& osd_topologies) {
   const bool want_subdivkit = sides == "both" || sides == "subdivkit";
   bool want_osd = sides == "both" || sides == "osd";
 #ifndef SUBDIV_BENCH_HAVE_OPENSUBDIV
@@ -335,10 +366,10 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
 
   double load[3] = {0, 0, 0};
   if (::getloadavg(load, 3) < 0) load[0] = -1;
-  std::printf("# subdiv-bench: cpu=\"%s\" hardware_threads=%u threads=%d repeat=%d clock=%s opensubdiv=%s "
-              "loadavg=%.2f\n",
-              cpu_name().c_str(), std::thread::hardware_concurrency(), base.threads, base.repeat,
-              clock_name(base.clock), osd_version, load[0]);
+  std::printf("# subdiv-bench: cpu=\"%s\" hardware_threads=%u threads=%d warm_repeat=%d opensubdiv=%s "
+              "loadavg=%.2f %.2f %.2f\n",
+              cpu_name().c_str(), std::thread::hardware_concurrency(), base.threads, base.repeat, osd_version,
+              load[0], load[1], load[2]);
   std::fflush(stdout);
 
   struct Case {
@@ -355,7 +386,8 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
     }
   }
 
-  const int steps = int(cases.size()) * (int(want_subdivkit) + int(want_osd));
+  const int osd_variants = int(osd_topologies.size());
+  const int steps = int(cases.size()) * (int(want_subdivkit) + int(want_osd) * osd_variants);
   Progress progress(steps);
   int step = 0, failures = 0;
   for (const auto& c : cases) {
@@ -365,50 +397,56 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
     job.level = c.level;
     job.faces = base_faces_for(base.faces, c.level, max_refined);
     if (!check) job.check_max = -1;  // the workers send no positions back
-    RunResult ours, theirs;
+    const std::string what = c.scheme + " " + c.mesh + " level " + std::to_string(c.level);
+    RunResult ours;
+    std::vector<RunResult> theirs;  // one per OpenSubdiv topology variant
     if (want_subdivkit) {
-      progress.show(++step, c.scheme + " " + c.mesh + " level " + std::to_string(c.level) + ": SubdivKit");
+      progress.show(++step, what + ": SubdivKit");
       job.side = "subdivkit";
       ours = run_worker(job);
     }
-    if (want_osd) {
-      progress.show(++step, c.scheme + " " + c.mesh + " level " + std::to_string(c.level) + ": OpenSubdiv");
-      job.side = "osd";
-      theirs = run_worker(job);
-    }
+    if (want_osd)
+      for (bool full : osd_topologies) {
+        progress.show(++step, what + ": OpenSubdiv" + (full ? " (full topology)" : ""));
+        job.side = "osd";
+        job.osd_full_topology = full;
+        theirs.push_back(run_worker(job));
+      }
     progress.clear();
 
-    const RunResult* any = ours.ok ? &ours : (theirs.ok ? &theirs : nullptr);
-    std::string line = c.scheme + " level=" + std::to_string(c.level) +
-                       " faces=" + std::to_string(any ? any->report.base_faces : job.faces);
+    const std::string head = c.scheme + " mesh=" + c.mesh + " level=" + std::to_string(c.level);
+    for (size_t v = 0; v < (want_osd ? theirs.size() : 1); ++v)
+      for (bool warm : {false, true})
+        for (bool user : {false, true}) {
+          const RunResult none;
+          const RunResult& osd = want_osd ? theirs[v] : none;
+          std::string line = head + " memory=" + (warm ? "warm" : "cold") + " clock=" + (user ? "user" : "wall");
+          if (want_osd) line += std::string(" osd_topology=") + (osd_topologies[v] ? "full" : "default");
+          line += timing_fields(ours, osd, warm, user);
+          std::printf("%s\n", line.c_str());
+        }
+
+    std::string line = head + " faces=" + std::to_string(ours.ok ? ours.report.base_faces : job.faces);
     auto field = [&](const std::string& name, const std::string& value) { line += " " + name + "=" + value; };
+    const RunResult* any = ours.ok ? &ours : nullptr;
+    for (const auto& t : theirs) any = any ? any : (t.ok ? &t : nullptr);
     if (any) field("refined_faces", std::to_string(any->report.faces));
-    const auto& a = ours.report.best;
-    const auto& b = theirs.report.best;
-    auto na = [](bool ok, double v) { return ok ? fmt_ms(v) : std::string("n/a"); };
-    field("subdivkit_ms", na(ours.ok, a.total_ms()));
-    field("osd_ms", na(theirs.ok, b.total_ms()));
-    field("topo_ms", na(ours.ok, a.topo_ms));
-    field("osd_topo_ms", na(theirs.ok, b.topo_ms));
-    field("geom_ms", na(ours.ok, a.geom_ms()));
-    field("osd_geom_ms", na(theirs.ok, b.geom_ms()));
-    field("subdivkit_peak_mb", na(ours.ok, ours.report.peak_mb));
-    field("osd_peak_mb", na(theirs.ok, theirs.report.peak_mb));
-    field("setup_ms", na(ours.ok, a.setup_ms));
-    field("osd_setup_ms", na(theirs.ok, b.setup_ms));
-    field("stencil_ms", na(ours.ok, a.stencil_ms));
-    field("apply_ms", na(ours.ok, a.apply_ms));
-    field("mesh", c.mesh);
     field("threads", std::to_string(base.threads));
+    field("subdivkit_peak_mb", ours.ok ? fmt_ms(ours.report.peak_mb) : "n/a");
+    for (size_t v = 0; v < theirs.size(); ++v)
+      field(osd_topologies[v] ? "osd_full_peak_mb" : "osd_peak_mb", theirs[v].ok ? fmt_ms(theirs[v].report.peak_mb) : "n/a");
     if (ours.ok) {
       char digest[24];
       std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(ours.report.digest));
       field("digest", digest);
+      field("warm_bits", ours.report.warm_digest_same ? "same" : "DIFFERENT");
+      if (!ours.report.warm_digest_same) ++failures;
     }
     if (!ours.ok && want_subdivkit) field("subdivkit_error", "\"" + ours.error + "\""), ++failures;
-    if (!theirs.ok && want_osd) field("osd_error", "\"" + theirs.error + "\""), ++failures;
-    if (ours.ok && theirs.ok && check) {
-      const CheckResult r = compare(ours.report, theirs.report);
+    for (const auto& t : theirs)
+      if (!t.ok) field("osd_error", "\"" + t.error + "\""), ++failures;
+    if (check && ours.ok && !theirs.empty() && theirs[0].ok) {
+      const CheckResult r = compare(ours.report, theirs[0].report);
       char diff[32];
       std::snprintf(diff, sizeof diff, "%.3g", r.maxdiff);
       if (r.ok) {
@@ -421,15 +459,8 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
         if (r.problem.empty()) field("maxdiff", diff);
         else field("reason", "\"" + r.problem + "\"");
       }
-    } else if (ours.ok && theirs.ok) {
-      field("check", "off");
-    }
-    if (ours.ok && theirs.ok) {
-      char ratio[32];
-      std::snprintf(ratio, sizeof ratio, "%.2f", a.total_ms() / b.total_ms());
-      field("ratio", ratio);
     } else {
-      field("ratio", "n/a");
+      field("check", "off");
     }
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);
@@ -445,15 +476,17 @@ int main(int argc, char** argv) {
   CLI::App app{
       "subdiv-bench: times SubdivKit against OpenSubdiv (Far uniform refinement + primvar interpolation)\n"
       "on large generated meshes, per scheme and level, with each library's peak memory measured in its\n"
-      "own process and the two results checked against each other. Prints one line per scheme and level,\n"
-      "ending in ratio=R (SubdivKit time / OpenSubdiv time)."};
+      "own process and the two results checked against each other. Each library runs once cold (fresh\n"
+      "memory) and --repeat times warm (memory kept); both wall and user time are printed, one line\n"
+      "per scheme, level, memory and clock with ratio=R (SubdivKit time / OpenSubdiv time), then one\n"
+      "line of memory peaks and the check."};
   Job job;
   job.faces = 1'000'000;
   job.threads = 1;
-  job.repeat = 1;
+  job.repeat = 2;
   job.check_max = 4'000'000;
   std::string levels_text = "1-3", schemes_text = "catmull-clark,loop", mesh_text = "torus", sides = "both";
-  std::string check_mode = "sample", clock = "wall";
+  std::string check_mode = "sample", osd_topology = "default";
   std::string worker_side;
   int worker_fd = -1;
   std::int64_t max_refined = 16'000'000;
@@ -475,7 +508,9 @@ int main(int argc, char** argv) {
   app.add_option("--threads", job.threads, "SubdivKit threads (OpenSubdiv Far is single-threaded)")
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
-  app.add_option("--repeat", job.repeat, "repetitions per measurement; the best is reported")
+  app.add_option("--repeat", job.repeat,
+                 "warm repetitions per measurement, after the cold one and one unmeasured warm-up; the "
+                 "best is reported (see docs/benchmarks.md, \"Cold and warm\")")
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
   app.add_option("--side", sides, "both, subdivkit or osd")
@@ -488,12 +523,12 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"sample", "full", "off"}));
   app.add_option("--check-max", job.check_max, "vertices compared per level with --check sample")
       ->capture_default_str();
-  app.add_option("--clock", clock,
-                 "wall: elapsed time; cpu: process CPU time (user + system), steadier on a shared "
-                 "machine, comparable only with --threads 1; user: user time only (leaves out the kernel's "
-                 "page zeroing, whose cost on a virtual machine depends on the host)")
+  app.add_option("--osd-topology", osd_topology,
+                 "OpenSubdiv's last level: default (UniformOptions as they are: no edges or vertex rings "
+                 "in the last level, as its users run it), full (fullTopologyInLastLevel), or both (a "
+                 "second set of lines)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"wall", "cpu", "user"}));
+      ->check(CLI::IsMember({"default", "full", "both"}));
   std::string row_plans = "on";
   app.add_option("--row-plans", row_plans, "SubdivKit: replay learnt stencil rows for smooth interior elements (off: "
                                            "the generic rule interpreter for every row, to measure what plans give)")
@@ -508,11 +543,8 @@ int main(int argc, char** argv) {
   app.add_option("--worker", worker_side)->group("");  // internal: run one measurement
   app.add_option("--worker-fd", worker_fd)->group("");
   CLI11_PARSE(app, argc, argv);
-  job.clock = clock == "cpu" ? Clock::Cpu : clock == "user" ? Clock::User : Clock::Wall;
   job.row_plans = row_plans == "on";
   job.tables = geometry == "tables";
-  if (job.clock != Clock::Wall && job.threads > 1 && worker_side.empty())
-    std::fprintf(stderr, "subdiv-bench: note: --clock %s adds up the CPU time of all %d threads\n", clock.c_str(), job.threads);
 
   try {
     if (!worker_side.empty()) {
@@ -520,6 +552,7 @@ int main(int argc, char** argv) {
       job.scheme = schemes_text;
       job.mesh = mesh_text;
       job.level = std::stoi(levels_text);
+      job.osd_full_topology = osd_topology == "full";
       return worker_main(job, worker_fd);
     }
     const auto schemes = split_list(schemes_text);
@@ -531,8 +564,11 @@ int main(int argc, char** argv) {
       if (m != "torus" && m != "torus-ev" && m != "cube-sphere")
         throw std::invalid_argument("--mesh: unknown mesh '" + m + "' (torus, torus-ev, cube-sphere)");
     if (check_mode == "full") job.check_max = 0;
+    const std::vector<bool> osd_topologies = osd_topology == "both"   ? std::vector<bool>{false, true}
+                                             : osd_topology == "full" ? std::vector<bool>{true}
+                                                                      : std::vector<bool>{false};
     return parent_main(schemes, meshes, parse_levels(levels_text), job, sides, check_mode != "off",
-                       max_refined);
+                       max_refined, osd_topologies);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "subdiv-bench: %s\n", e.what());
     return 2;
