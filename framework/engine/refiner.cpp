@@ -81,6 +81,7 @@ StepContext step_context(const Scheme& scheme, const StepRules& step, const Step
   StepContext s{parent,      origins,         inputs.tables, inputs.features, features_refined,
                 scheme.path, step.code.get(), level,         plans};
   s.per_vertex = inputs.per_vertex.get();
+  s.use_kernels = options.use_kernels;
   return s;
 }
 
@@ -101,7 +102,7 @@ std::vector<double> step_rows_applied(const Scheme& scheme, const StepRules& ste
   std::vector<double> out;
   resize_bulk(out, origins.kind.size() * size_t(channels));
   apply_step_rows(step_context(scheme, step, inputs, parent, origins, features_refined, level, options), values, out,
-                  channels);
+                  channels, options.row_paths);
   return out;
 }
 

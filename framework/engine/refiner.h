@@ -10,6 +10,7 @@
 #include "framework/refine/child_origins.h"
 #include "framework/refine/child_tags.h"
 #include "framework/rules/code_rules.h"
+#include "framework/rules/row_paths.h"
 #include "framework/features/feature_context.h"
 #include "framework/scheme/scheme_run.h"
 #include "framework/stencil/stencil_table.h"
@@ -31,6 +32,12 @@ struct RefineOptions {
   // Smooth interior rows replayed from learnt plans (rules/row_plans.h): the same rows,
   // faster; off only to compare or measure.
   bool use_row_plans = true;
+  // step_values: smooth interior elements computed by the compiled kernels
+  // (rules/smooth_kernels.h); off only to compare or measure.
+  bool use_kernels = true;
+  // step_values: where to count the children computed by kernels, plans and the generic
+  // interpreter (rules/step_evaluator.h), or null.
+  RowPaths* row_paths = nullptr;
   // Values of the schemes' per-vertex parameters ("per_vertex": true in the scheme file,
   // e.g. seed 001's lambda), one per base vertex: a vertex rule reads the value at its
   // vertex; later levels carry them linearly (engine/vertex_parameters.h). Schemes that

@@ -110,7 +110,11 @@ FeatureContexts classify_features(const Level& level, const FeatureOptions& opti
   tbb::parallel_for(Index(0), level.edge_count(), [&](Index e) {
     fc.edges[e] = classify_edge(level, fc, e, options.crease_method);
   });
+  // Without sharpness tags, an interior vertex that is not sharp has no sharp edge: smooth
+  // (the default context), found without reading its ring.
+  const bool untagged = level.edge_sharpness.empty();
   tbb::parallel_for(Index(0), level.vertex_count, [&](Index v) {
+    if (untagged && !level.on_boundary(v) && fc.vertex_sharpness[v] <= 0.f) return;
     fc.vertices[v] = classify_vertex(level, fc, v, options.crease_method);
   });
   return fc;

@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "framework/rules/row_plans.h"
+#include "framework/rules/smooth_kernels.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -15,22 +16,9 @@ namespace {
 // balance.
 constexpr Index kGrain = 4096;
 
-// Where a row's sources live: parent vertices in src, then (numbered from the parent's
-// vertex count) the step's own new points, already written to dst.
-struct Sources {
-  const double* parent;
-  const double* children;
-  Index parent_count;
-  int channels;
-  const double* at(Index source) const {
-    return source < parent_count ? parent + size_t(source) * channels
-                                 : children + size_t(source - parent_count) * channels;
-  }
-};
-
 // out = sum_i weights[i] * value of source_of(i), summed from zero in row order.
 template <class SourceOf>
-void weighted_sum(size_t count, SourceOf source_of, const double* weights, const Sources& in, double* out) {
+void weighted_sum(size_t count, SourceOf source_of, const double* weights, const StepSources& in, double* out) {
   if (in.channels == 3) {
     double sum[3] = {};
     for (size_t i = 0; i < count; ++i) {
@@ -49,17 +37,29 @@ void weighted_sum(size_t count, SourceOf source_of, const double* weights, const
   }
 }
 
-// Each row of the group applied as soon as it is known. Rows are checked as build_rows
-// checks them, and the first bad row in group order is reported, whatever the threads.
-void apply_group_rows(const StepContext& s, const RuleInputs& in, const ChildGroup& group, RowPlanStore& plans,
-                      const Sources& sources, double* dst) {
+// Each row of the group applied as soon as it is known: smooth interior elements through
+// the kernels (smooth_kernels.h), others from a learnt plan or the rule interpreter. Rows
+// are checked as build_rows checks them, and the first bad row in group order is reported,
+// whatever the threads.
+void apply_group_rows(const StepContext& s, const RuleInputs& in, Element kind, const ChildGroup& group,
+                      const SmoothKernels& kernels, RowPlanStore& plans, const StepSources& sources, double* dst,
+                      RowPaths* paths) {
   const Index count = Index(group.children.size());
   const int channels = sources.channels;
+  const bool use_kernels = s.use_kernels && kernels.covers(kind);
   FirstBadRow first_bad(count);
   tbb::parallel_for(tbb::blocked_range<Index>(0, count, kGrain), [&](const auto& range) {
     RowBuilder row;
     RowPlanner planner(plans);
-    for (Index r = range.begin(); r < range.end(); ++r) {
+    RowPaths::Counts counted;
+    // The kernels first; the rows they leave (and all rows without them) by plan or rule.
+    std::vector<Index> left;
+    if (use_kernels) {
+      counted.kernel = kernels.run(kind, group, range.begin(), range.end(), sources, dst, left, first_bad);
+    } else {
+      for (Index r = range.begin(); r < range.end(); ++r) left.push_back(r);
+    }
+    for (Index r : left) {
       const Index child = group.children[r];
       double* out = dst + size_t(child) * channels;
       RowPlanner::Outcome outcome = RowPlanner::Outcome::Generic;
@@ -69,6 +69,7 @@ void apply_group_rows(const StepContext& s, const RuleInputs& in, const ChildGro
           weighted_sum(plan->positions.size(), [&](size_t i) { return around[plan->positions[i]]; },
                        plan->weights.data(), sources, out);
           if (!plan->sum_ok) first_bad.mark(r);
+          ++counted.plan;
           continue;
         }
       row.clear();
@@ -77,14 +78,17 @@ void apply_group_rows(const StepContext& s, const RuleInputs& in, const ChildGro
       if (!row_sum_ok(weight_sum(row.weights()))) first_bad.mark(r);
       const auto& indices = row.indices();
       weighted_sum(indices.size(), [&](size_t i) { return indices[i]; }, row.weights().data(), sources, out);
+      ++counted.generic;
     }
+    if (paths) paths->add(counted);
   });
   first_bad.report_if_any(s, in, group);
 }
 
 }  // namespace
 
-void apply_step_rows(const StepContext& s, std::span<const double> src, std::span<double> dst, int channels) {
+void apply_step_rows(const StepContext& s, std::span<const double> src, std::span<double> dst, int channels,
+                     RowPaths* paths) {
   const Index child_count = Index(s.origins.kind.size());
   if (channels < 1 || src.size() < size_t(s.parent.vertex_count) * channels || dst.size() < size_t(child_count) * channels)
     throw Error(fmt::format("apply_step_rows: buffers of {} and {} values do not fit {} parent and {} child vertices "
@@ -97,8 +101,10 @@ void apply_step_rows(const StepContext& s, std::span<const double> src, std::spa
   RuleInputs in{s.parent, s.features};
   in.groups = &groups;
   in.new_point_base = s.parent.vertex_count;
-  const Sources sources{src.data(), dst.data(), s.parent.vertex_count, channels};
-  for (Element e : build_order(s, groups)) apply_group_rows(s, in, groups[int(e)], plans, sources, dst.data());
+  const StepSources sources{src.data(), dst.data(), s.parent.vertex_count, channels};
+  const SmoothKernels kernels(s, groups);
+  for (Element e : build_order(s, groups))
+    apply_group_rows(s, in, e, groups[int(e)], kernels, plans, sources, dst.data(), paths);
 }
 
 }  // namespace subdiv

@@ -12,8 +12,6 @@
 namespace subdiv {
 namespace {
 
-constexpr double kSumTolerance = 1e-9;
-
 const CompiledRule& needed_rule(const WeightTables& tables, Element e, Context c, const std::string& source) {
   const CompiledRule& rule = tables.rule(e, c);
   if (!rule.defined)
@@ -158,8 +156,12 @@ void fill_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index
 
 std::vector<ChildGroup> group_children(const StepContext& s) {
   std::vector<ChildGroup> groups(kElementCount);
-  for (int e = 0; e < kElementCount; ++e)
+  Index sizes[kElementCount] = {};
+  for (OriginKind kind : s.origins.kind) ++sizes[int(kind)];
+  for (int e = 0; e < kElementCount; ++e) {
     groups[e].row_of_element.assign(element_count(s.parent, Element(e)), kNone);
+    groups[e].children.reserve(size_t(sizes[e]));
+  }
   for (Index c = 0; c < Index(s.origins.kind.size()); ++c) {
     const int kind = int(s.origins.kind[c]);
     Index element = s.origins.parent[c];
@@ -191,7 +193,6 @@ std::vector<Element> build_order(const StepContext& s, const std::vector<ChildGr
       throw Error(fmt::format("{}: the rules refer to each other's new points in a cycle", s.source));
   return order;
 }
-bool row_sum_ok(double sum) { return std::isfinite(sum) && std::abs(sum - 1.0) <= kSumTolerance; }
 
 double weight_sum(std::span<const double> weights) {
   double sum = 0.0;

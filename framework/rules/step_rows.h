@@ -41,6 +41,9 @@ struct StepContext {
   // Replay learnt rows for smooth interior elements (row_plans.h); the rows are the same
   // either way, false is for tests and measurements.
   bool use_row_plans = true;
+  // Compute smooth interior elements with the compiled kernels (smooth_kernels.h) in the
+  // step evaluator; false is for tests and measurements.
+  bool use_kernels = true;
   // Set when vertex rules differ per vertex; `tables` then serves the other elements.
   const PerVertexTables* per_vertex = nullptr;
 
@@ -58,7 +61,8 @@ void fill_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index
 
 // Rows must be affine and finite.
 double weight_sum(std::span<const double> weights);
-bool row_sum_ok(double sum);
+constexpr double kRowSumTolerance = 1e-9;
+inline bool row_sum_ok(double sum) { return sum - 1.0 <= kRowSumTolerance && 1.0 - sum <= kRowSumTolerance; }
 
 // The first row of a group, in group order, that failed row_sum_ok, whatever the threads
 // that built the rows; report() rebuilds that row and throws the message naming it.

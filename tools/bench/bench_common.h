@@ -23,6 +23,7 @@ struct Job {
   std::int64_t check_max = 0;  // at most about this many vertices sent back for the check
   bool osd_full_topology = false;  // OpenSubdiv: full topology in the last level (not its default)
   bool row_plans = true;       // SubdivKit: replay learnt stencil rows (rules/row_plans.h)
+  bool kernels = true;         // SubdivKit: compiled smooth kernels (rules/smooth_kernels.h)
   bool tables = false;         // SubdivKit: build stencil tables and apply them, instead of step_values
 };
 
@@ -69,6 +70,8 @@ struct WorkerReport {
   std::int64_t vertices = 0;   // at the refined level
   std::int64_t faces = 0;      // at the refined level
   std::uint64_t digest = 0;    // hash of the refined positions' bits in the side's own order
+  // SubdivKit, cold repetition: new points computed by each path of step_values.
+  std::int64_t kernel_points = 0, plan_points = 0, generic_points = 0;
   std::uint64_t check_modulus = 1;  // records kept: key % modulus == 0 (none if 0)
   std::vector<CheckRecord> records;
 };

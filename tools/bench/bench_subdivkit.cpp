@@ -67,8 +67,11 @@ WorkerReport run_subdivkit(const Job& job, const Mesh& mesh) {
   options.levels = job.level;
   options.threads = job.threads;
   options.use_row_plans = job.row_plans;
+  options.use_kernels = job.kernels;
 
   return repeat_cold_and_warm(job, [&](Timings& t, WorkerReport* report) {
+    subdiv::RowPaths paths;  // counted in the cold repetition
+    options.row_paths = report ? &paths : nullptr;
     Stopwatch clock;
     subdiv::Level base = subdiv::build_level(mesh.vertex_count, mesh.face_offsets, mesh.face_vertices);
     t.setup = clock.lap();
@@ -94,7 +97,10 @@ WorkerReport run_subdivkit(const Job& job, const Mesh& mesh) {
     }
     t.apply = clock.lap();
     const std::uint64_t digest = digest_of(src);
-    if (report) report_results(job, mesh, h, src, digest, *report);
+    if (report) {
+      report_results(job, mesh, h, src, digest, *report);
+      report->kernel_points = paths.kernel, report->plan_points = paths.plan, report->generic_points = paths.generic;
+    }
     return digest;
   });
 }

@@ -48,6 +48,7 @@ struct WireHeader {
   double peak_mb;
   std::int64_t base_faces, vertices, faces;
   std::uint64_t digest, check_modulus, record_count;
+  std::int64_t kernel_points, plan_points, generic_points;
 };
 
 void write_all(int fd, const void* data, size_t size) {
@@ -62,7 +63,8 @@ void write_all(int fd, const void* data, size_t size) {
 }
 
 void send_report(int fd, const WorkerReport& r) {
-  const WireHeader h{kMagic, r.cold, r.warm, r.warm_digest_same, r.peak_mb, r.base_faces, r.vertices, r.faces, r.digest, r.check_modulus, r.records.size()};
+  const WireHeader h{kMagic, r.cold, r.warm, r.warm_digest_same, r.peak_mb, r.base_faces, r.vertices, r.faces, r.digest, r.check_modulus, r.records.size(),
+                     r.kernel_points, r.plan_points, r.generic_points};
   write_all(fd, &h, sizeof h);
   if (!r.records.empty()) write_all(fd, r.records.data(), r.records.size() * sizeof(CheckRecord));
 }
@@ -81,6 +83,9 @@ bool parse_report(const std::string& bytes, WorkerReport& r) {
   r.faces = h.faces;
   r.digest = h.digest;
   r.check_modulus = h.check_modulus;
+  r.kernel_points = h.kernel_points;
+  r.plan_points = h.plan_points;
+  r.generic_points = h.generic_points;
   r.records.resize(h.record_count);
   if (h.record_count) std::memcpy(r.records.data(), bytes.data() + sizeof h, h.record_count * sizeof(CheckRecord));
   return true;
@@ -147,6 +152,7 @@ RunResult run_worker(const Job& job) {
                                    "--check-max", std::to_string(job.check_max),
                                    "--osd-topology", job.osd_full_topology ? "full" : "default",
                                    "--row-plans", job.row_plans ? "on" : "off",
+                                   "--kernels", job.kernels ? "on" : "off",
                                    "--geometry", job.tables ? "tables" : "direct"};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
@@ -440,6 +446,11 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
       std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(ours.report.digest));
       field("digest", digest);
       field("warm_bits", ours.report.warm_digest_same ? "same" : "DIFFERENT");
+      if (!job.tables) {
+        field("kernel_points", std::to_string(ours.report.kernel_points));
+        field("plan_points", std::to_string(ours.report.plan_points));
+        field("generic_points", std::to_string(ours.report.generic_points));
+      }
       if (!ours.report.warm_digest_same) ++failures;
     }
     if (!ours.ok && want_subdivkit) field("subdivkit_error", "\"" + ours.error + "\""), ++failures;
@@ -534,6 +545,12 @@ int main(int argc, char** argv) {
                                            "the generic rule interpreter for every row, to measure what plans give)")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
+  std::string kernels = "on";
+  app.add_option("--kernels", kernels,
+                 "SubdivKit: compute smooth interior points with the compiled kernels (off: plans and the rule "
+                 "interpreter, to measure what kernels give; the points are the same to round-off)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
   std::string geometry = "direct";
   app.add_option("--geometry", geometry,
                  "SubdivKit: direct (each level's positions straight from the rules, step_values) or tables "
@@ -544,6 +561,7 @@ int main(int argc, char** argv) {
   app.add_option("--worker-fd", worker_fd)->group("");
   CLI11_PARSE(app, argc, argv);
   job.row_plans = row_plans == "on";
+  job.kernels = kernels == "on";
   job.tables = geometry == "tables";
 
   try {

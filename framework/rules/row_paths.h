@@ -1,0 +1,18 @@
+#pragma once
+// How many new points of a step each path of the step evaluator computed
+// (rules/step_evaluator.h): the compiled smooth kernels, learnt row plans, or the generic
+// rule interpreter. For benchmarks and tests; adding is thread-safe.
+#include <atomic>
+#include <cstdint>
+
+namespace subdiv {
+
+struct RowPaths {
+  std::atomic<std::int64_t> kernel{0}, plan{0}, generic{0};
+  struct Counts {
+    std::int64_t kernel = 0, plan = 0, generic = 0;
+  };
+  void add(const Counts& c) { kernel += c.kernel, plan += c.plan, generic += c.generic; }
+};
+
+}  // namespace subdiv

@@ -1,0 +1,306 @@
+#include "framework/rules/smooth_kernels.h"
+
+namespace subdiv {
+namespace {
+
+using Gather = SmoothKernels::Gather;
+
+// The gather of a term of `element`'s smooth rule, or false when the kernels have none.
+// The roles and their point order are element_rules.cpp's, which the kernels mirror.
+bool gather_of(Element element, const CompiledTerm& t, Gather& gather) {
+  const bool plain = t.new_point == NewPoint::None;
+  switch (element) {
+    case Element::Vertex:
+      if (t.role == Role::Self && plain) return gather = Gather::Self, true;
+      if (t.role == Role::Ring && plain) return gather = Gather::Ring, true;
+      if (t.role == Role::Faces && t.new_point == NewPoint::Face) return gather = Gather::FacePoints, true;
+      if (t.role == Role::Edges && t.new_point == NewPoint::Edge) return gather = Gather::EdgePoints, true;
+      return false;
+    case Element::Edge:
+      if (t.role == Role::Ends && plain) return gather = Gather::Ends, true;
+      if (t.role == Role::Faces && t.new_point == NewPoint::Face) return gather = Gather::FacePoints, true;
+      if ((t.role == Role::Opposite || t.role == Role::Wings) && plain) return gather = Gather::Opposite, true;
+      return false;
+    case Element::Face:
+      if (t.role == Role::Vertices && plain) return gather = Gather::Corners, true;
+      if (t.role == Role::Edges && t.new_point == NewPoint::Edge) return gather = Gather::EdgePoints, true;
+      return false;
+    case Element::Corner:
+      if (t.role == Role::Self && plain) return gather = Gather::Self, true;
+      if (t.role == Role::Vertices && plain) return gather = Gather::Corners, true;
+      return false;
+  }
+  return false;
+}
+
+// Whether C++ rules (plugins) take the smooth rule of `element`.
+bool code_rule_for(const CodeRules* code, Element element) {
+  if (!code) return false;
+  switch (element) {
+    case Element::Vertex: return bool(code->vertex);
+    case Element::Edge: return bool(code->edge);
+    case Element::Face: return bool(code->face);
+    case Element::Corner: return bool(code->corner);
+  }
+  return true;
+}
+
+std::vector<SmoothKernels::Term> compile_kernel(const StepContext& s, Element element) {
+  if (code_rule_for(s.code, element) || (element == Element::Vertex && s.per_vertex)) return {};
+  const CompiledRule& rule = s.tables.rule(element, Context::Smooth);
+  if (!rule.defined) return {};
+  std::vector<SmoothKernels::Term> terms;
+  for (const CompiledTerm& t : rule.terms) {
+    Gather gather;
+    if (!gather_of(element, t, gather)) return {};
+    // Face points are weighed by their face's size k (element_rules.cpp), so k varies too.
+    const bool varies = t.stride_j != 0 || (gather == Gather::FacePoints && t.stride_k != 0);
+    const bool more = t.stride_k || t.stride_j || t.stride_n0 || t.stride_n1 || t.stride_k0 || t.stride_k1;
+    const auto reads = more ? SmoothKernels::Term::Reads::More
+                       : t.stride_n ? SmoothKernels::Term::Reads::N
+                                    : SmoothKernels::Term::Reads::Nothing;
+    terms.push_back({gather, &t, varies, reads});
+  }
+  return terms;
+}
+
+// out += w * p, over every channel (C of them, or `channels` when C is 0).
+template <int C>
+inline void add_point(double* out, const double* p, double w, int channels) {
+  const int count = C > 0 ? C : channels;
+  for (int c = 0; c < count; ++c) out[c] += w * p[c];
+}
+
+template <int C>
+inline void clear(double* out, int channels) {
+  const int count = C > 0 ? C : channels;
+  for (int c = 0; c < count; ++c) out[c] = 0.0;
+}
+
+// The vertex of triangle f that is not a or b, or kNone if f is not a triangle.
+Index third_corner(const Level& L, Index f, Index a, Index b) {
+  if (L.face_size(f) != 3) return kNone;
+  for (Index u : L.face(f))
+    if (u != a && u != b) return u;
+  return kNone;
+}
+
+}  // namespace
+
+SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGroup>& groups)
+    : step_(step), groups_(groups) {
+  for (int k = 0; k < kElementCount; ++k) {
+    kernels_[k] = compile_kernel(step, Element(k));
+    // Primal splits number a kind's new points element by element: found without lookup.
+    const ChildGroup& g = groups[k];
+    bool in_order = !g.children.empty() && g.children.size() == g.row_of_element.size();
+    for (size_t e = 0; in_order && e < g.children.size(); ++e)
+      in_order = g.row_of_element[e] == Index(e) && g.children[e] == g.children.front() + Index(e);
+    if (in_order) first_child_[k] = g.children.front();
+  }
+}
+
+Index SmoothKernels::new_point(Element kind, Index e) const {
+  if (first_child_[int(kind)] != kNone) return first_child_[int(kind)] + e;
+  const ChildGroup& g = groups_[int(kind)];
+  if (g.children.empty()) return kNone;
+  const Index r = g.row_of_element[e];
+  return r == kNone ? kNone : g.children[r];
+}
+
+Index SmoothKernels::run(Element kind, const ChildGroup& group, Index begin, Index end, const StepSources& in,
+                        double* dst, std::vector<Index>& left, FirstBadRow& bad) const {
+  if (in.channels == 3) return run_rows<3>(kind, group, begin, end, in, dst, left, bad);
+  return run_rows<0>(kind, group, begin, end, in, dst, left, bad);
+}
+
+// The loop over rows, one per kind, so each element's kernel is inlined into it.
+template <int C>
+Index SmoothKernels::run_rows(Element kind, const ChildGroup& group, Index begin, Index end, const StepSources& in,
+                              double* dst, std::vector<Index>& left, FirstBadRow& bad) const {
+  const ChildOrigins& origins = step_.origins;
+  // In a primal split, row r of a kind is the new point of element r (a corner's element
+  // is its face, with the corner in `local`).
+  const bool in_order = kind != Element::Corner && first_child_[int(kind)] != kNone;
+  Index done = 0;
+  auto each_row = [&](auto point) {
+    for (Index r = begin; r < end; ++r) {
+      const Index child = group.children[r];
+      const Index element = in_order ? r : origins.parent[child];
+      double sum;
+      if (!point(element, child, dst + size_t(child) * in.channels, sum)) {
+        left.push_back(r);
+        continue;
+      }
+      ++done;
+      if (!row_sum_ok(sum)) bad.mark(r);
+    }
+  };
+  switch (kind) {
+    case Element::Vertex:
+      each_row([&](Index v, Index, double* out, double& sum) { return vertex_point<C>(v, in, out, sum); });
+      break;
+    case Element::Edge:
+      each_row([&](Index e, Index, double* out, double& sum) { return edge_point<C>(e, in, out, sum); });
+      break;
+    case Element::Face:
+      each_row([&](Index f, Index, double* out, double& sum) { return face_point<C>(f, in, out, sum); });
+      break;
+    case Element::Corner:
+      each_row([&](Index f, Index child, double* out, double& sum) {
+        return corner_point<C>(f, origins.local[child], in, out, sum);
+      });
+      break;
+  }
+  return done;
+}
+
+// element_rules.cpp, apply_vertex_rule: weights at (n, 0, j), face points at (n, k_j, j).
+template <int C>
+bool SmoothKernels::vertex_point(Index v, const StepSources& in, double* out, double& weight_sum) const {
+  const Level& L = step_.parent;
+  const VertexContext& vc = step_.features.vertices[v];
+  if (L.on_boundary(v) || L.non_manifold_vertex(v) || vc.parent != Context::Smooth || vc.child != Context::Smooth)
+    return false;
+  const auto ring = L.ring_edges(v);
+  const auto faces = L.ring_faces(v);
+  const int n = int(ring.size()), channels = in.channels;
+  clear<C>(out, channels);
+  double sum = 0.0;
+  for (const Term& term : kernels_[int(Element::Vertex)]) {
+    const double w0 = term.weight_at(n, 0, 0);
+    switch (term.gather) {
+      case Gather::Self:
+        add_point<C>(out, in.vertex(v), w0, channels), sum += w0;
+        break;
+      case Gather::Ring:
+        for (int j = 0; j < n; ++j) {
+          const double w = term.varies ? term.weight_at(n, 0, j) : w0;
+          add_point<C>(out, in.vertex(L.other_end(ring[j], v)), w, channels), sum += w;
+        }
+        break;
+      case Gather::FacePoints:
+        for (int j = 0; j < int(faces.size()); ++j) {
+          const Index c = new_point(Element::Face, faces[j]);
+          if (c == kNone) return false;
+          const double w = term.varies ? term.weight_at(n, L.face_size(faces[j]), j) : w0;
+          add_point<C>(out, in.child(c), w, channels), sum += w;
+        }
+        break;
+      case Gather::EdgePoints:
+        for (int j = 0; j < n; ++j) {
+          const Index c = new_point(Element::Edge, ring[j]);
+          if (c == kNone) return false;
+          const double w = term.varies ? term.weight_at(n, 0, j) : w0;
+          add_point<C>(out, in.child(c), w, channels), sum += w;
+        }
+        break;
+      default: return false;
+    }
+  }
+  weight_sum = sum;
+  return true;
+}
+
+// element_rules.cpp, apply_edge_rule: weights at (2, k, j, n0, n1, k0, k1).
+template <int C>
+bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, double& weight_sum) const {
+  const Level& L = step_.parent;
+  if (L.edge_on_boundary(e) || L.non_manifold_edge(e) || step_.features.edges[e].crease_weight != 0.f) return false;
+  const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
+  const Index faces[2] = {L.edge_faces[2 * e], L.edge_faces[2 * e + 1]};
+  const int n0 = L.valence(a), n1 = L.valence(b);
+  const int k0 = L.face_size(faces[0]), k1 = L.face_size(faces[1]);
+  const int channels = in.channels;
+  clear<C>(out, channels);
+  double sum = 0.0;
+  for (const Term& term : kernels_[int(Element::Edge)]) {
+    auto weight = [&](int k, int j) { return term.weight_at(2, k, j, n0, n1, k0, k1); };
+    switch (term.gather) {
+      case Gather::Ends: {
+        const double wa = weight(0, 0), wb = term.varies ? weight(0, 1) : wa;
+        add_point<C>(out, in.vertex(a), wa, channels), add_point<C>(out, in.vertex(b), wb, channels), sum += wa + wb;
+        break;
+      }
+      case Gather::FacePoints:
+        for (int j = 0; j < 2; ++j) {
+          const Index c = new_point(Element::Face, faces[j]);
+          if (c == kNone) return false;
+          const double w = weight(j == 0 ? k0 : k1, j);
+          add_point<C>(out, in.child(c), w, channels), sum += w;
+        }
+        break;
+      case Gather::Opposite:
+        for (int j = 0; j < 2; ++j) {
+          const Index u = third_corner(L, faces[j], a, b);
+          if (u == kNone) return false;
+          const double w = weight(3, j);
+          add_point<C>(out, in.vertex(u), w, channels), sum += w;
+        }
+        break;
+      default: return false;
+    }
+  }
+  weight_sum = sum;
+  return true;
+}
+
+// element_rules.cpp, apply_face_rule: weights at (k, k, j).
+template <int C>
+bool SmoothKernels::face_point(Index f, const StepSources& in, double* out, double& weight_sum) const {
+  const Level& L = step_.parent;
+  const auto corners = L.face(f);
+  const int k = int(corners.size()), channels = in.channels;
+  clear<C>(out, channels);
+  double sum = 0.0;
+  for (const Term& term : kernels_[int(Element::Face)]) {
+    const double w0 = term.weight_at(k, k, 0);
+    if (term.gather == Gather::Corners) {
+      for (int j = 0; j < k; ++j) {
+        const double w = term.varies ? term.weight_at(k, k, j) : w0;
+        add_point<C>(out, in.vertex(corners[j]), w, channels), sum += w;
+      }
+    } else {  // Gather::EdgePoints
+      const auto edges = L.face_edge_list(f);
+      for (int j = 0; j < k; ++j) {
+        const Index c = new_point(Element::Edge, edges[j]);
+        if (c == kNone) return false;
+        const double w = term.varies ? term.weight_at(k, k, j) : w0;
+        add_point<C>(out, in.child(c), w, channels), sum += w;
+      }
+    }
+  }
+  weight_sum = sum;
+  return true;
+}
+
+// step_rows.cpp, fill_corner_row away from features: the smooth corner rule alone;
+// element_rules.cpp, apply_corner_rule: weights at (k, k, j), corners counted from `corner`.
+template <int C>
+bool SmoothKernels::corner_point(Index f, int corner, const StepSources& in, double* out, double& weight_sum) const {
+  const Level& L = step_.parent;
+  const auto corners = L.face(f);
+  const auto edges = L.face_edge_list(f);
+  const int k = int(corners.size()), channels = in.channels;
+  const FeatureContexts& F = step_.features;
+  if (F.vertex_sharpness[corners[corner]] > 0.f || F.edges[edges[corner]].crease_weight != 0.f ||
+      F.edges[edges[(corner + k - 1) % k]].crease_weight != 0.f)
+    return false;
+  clear<C>(out, channels);
+  double sum = 0.0;
+  for (const Term& term : kernels_[int(Element::Corner)]) {
+    const double w0 = term.weight_at(k, k, 0);
+    if (term.gather == Gather::Self) {
+      add_point<C>(out, in.vertex(corners[corner]), w0, channels), sum += w0;
+      continue;
+    }
+    for (int j = 0; j < k; ++j) {  // Gather::Corners
+      const double w = term.varies ? term.weight_at(k, k, j) : w0;
+      add_point<C>(out, in.vertex(corners[(corner + j) % k]), w, channels), sum += w;
+    }
+  }
+  weight_sum = sum;
+  return true;
+}
+
+}  // namespace subdiv

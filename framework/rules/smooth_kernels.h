@@ -1,0 +1,89 @@
+#pragma once
+// Smooth kernels: a step's rules for smooth interior elements compiled to flat gathers.
+//
+// Away from boundaries and features, a rule's new point is a sum over a few roles of its
+// element (a vertex: itself, its ring, the new points of its faces and edges; an edge: its
+// ends, the new points of its two faces, the vertices opposite it; a face: its corners; a
+// face corner: its face's corners from it), each point weighted by the rule's tabulated
+// formula (weight_tables.h). Once per step, each element kind's smooth rule is checked
+// term by term against those roles; if every term is one of them, the kind's new points
+// are computed by reading the roles' points straight off the level's arrays, weights
+// looked up per element (once per term when the formula does not vary along the role), and
+// every channel accumulated in the same pass, with no row built, planned or interpreted.
+// This is what OpenSubdiv's hand-written masks do, for any scheme written as data.
+//
+// A kind whose rule uses another role (a plugin's, the butterfly's far wings, a curve), C++
+// rules (plugins) or per-vertex parameters is not covered; neither is an element on a
+// boundary, a feature or non-manifold topology, nor one whose new point the step does not
+// make: step_evaluator.cpp builds those rows with the generic interpreter and counts them.
+// Values equal the interpreter's rows to round-off (the same terms, summed in role order);
+// each element is computed on its own, so any thread count gives the same bits.
+#include <cstdint>
+#include <vector>
+
+#include "framework/rules/element_rules.h"
+#include "framework/rules/step_rows.h"
+#include "framework/rules/step_sources.h"
+
+namespace subdiv {
+
+class SmoothKernels {
+public:
+  SmoothKernels(const StepContext& step, const std::vector<ChildGroup>& groups);
+
+  // Whether `kind`'s smooth rule compiled to a kernel.
+  bool covers(Element kind) const { return !kernels_[int(kind)].empty(); }
+  // Computes the new points of rows [begin, end) of `kind`'s group into dst (child-major,
+  // in.channels values each). Rows whose element is not a smooth interior one are appended
+  // to `left` for the generic path; rows whose weights do not sum to 1 are marked in
+  // `bad`. Returns how many rows it computed.
+  Index run(Element kind, const ChildGroup& group, Index begin, Index end, const StepSources& in, double* dst,
+            std::vector<Index>& left, FirstBadRow& bad) const;
+
+  // How a term gathers its points.
+  enum class Gather : std::uint8_t {
+    Self,        // vertex: v
+    Ring,        // vertex: the other ends of its ring edges
+    FacePoints,  // vertex or edge: the new points of its faces
+    EdgePoints,  // vertex or face: the new points of its edges
+    Ends,        // edge: its two ends
+    Opposite,    // edge: in each of its two triangles, the vertex off the edge
+    Corners,     // face: its corners in order; face corner: its face's corners from it
+  };
+  struct Term {
+    Gather gather;
+    const CompiledTerm* weights;
+    bool varies;  // the weight depends on the point's place j along the role
+    // Most formulas read n alone, or nothing: their weight is one load.
+    enum class Reads : std::uint8_t { Nothing, N, More } reads;
+    double weight_at(int n, int k, int j, int n0 = 0, int n1 = 0, int k0 = 0, int k1 = 0) const {
+      if (reads == Reads::Nothing) return weights->table[0];
+      if (reads == Reads::N) return weights->table[size_t(n) * weights->stride_n];
+      return weights->weight(n, k, j, n0, n1, k0, k1);
+    }
+  };
+
+private:
+  // One element's new point into out and its weight sum; false when the element is not a
+  // smooth interior one (out is then undefined). C: the channel count, or 0 for in.channels.
+  template <int C>
+  bool vertex_point(Index v, const StepSources& in, double* out, double& weight_sum) const;
+  template <int C>
+  bool edge_point(Index e, const StepSources& in, double* out, double& weight_sum) const;
+  template <int C>
+  bool face_point(Index f, const StepSources& in, double* out, double& weight_sum) const;
+  template <int C>
+  bool corner_point(Index f, int corner, const StepSources& in, double* out, double& weight_sum) const;
+  template <int C>
+  Index run_rows(Element kind, const ChildGroup& group, Index begin, Index end, const StepSources& in, double* dst,
+                 std::vector<Index>& left, FirstBadRow& bad) const;
+  // The child vertex made for element e of a kind (face or edge) in this step, or kNone.
+  Index new_point(Element kind, Index e) const;
+
+  const StepContext& step_;
+  const std::vector<ChildGroup>& groups_;
+  std::vector<Term> kernels_[kElementCount];  // empty: not covered
+  Index first_child_[kElementCount] = {kNone, kNone, kNone, kNone};
+};
+
+}  // namespace subdiv
