@@ -55,7 +55,7 @@ struct FaceVaryingArray {
   std::vector<double> values;  // components per value
   std::vector<Index> indices;  // one per face corner, in face_vertices order
   ArrayRole role = ArrayRole::Data;
-  Index value_count() const { return Index(values.size() / size_t(components)); }
+  Index value_count() const { return components > 0 ? Index(values.size() / size_t(components)) : 0; }
 };
 
 struct MeshData {

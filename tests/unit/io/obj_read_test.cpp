@@ -122,6 +122,10 @@ TEST_CASE("obj: errors name the file, the line and the problem") {
   SUBCASE("a vertex with two coordinates") {
     CHECK(contains(obj_error(dir, "v 1 2\n"), "bad.obj:1: a vertex needs 3 coordinates"));
   }
+  SUBCASE("faces that use vt numbers in a file with no vt (found by fuzz_read_obj: a division by zero)") {
+    const std::string e = obj_error(dir, t + "f 1/1 2/2 3/3\n");
+    CHECK(contains(e, "bad.obj:4: this face uses vt number 3, but the file has 0"));
+  }
   SUBCASE("a face index beyond the last vertex") {
     const std::string e = obj_error(dir, t + "f 1 2 9\n");
     CHECK(contains(e, "bad.obj:4:"));
