@@ -1,5 +1,6 @@
 #include "framework/io/vtk/vtk_polydata.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -19,6 +20,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include "framework/io/mesh_validate.h"
@@ -95,6 +97,14 @@ vtkSmartPointer<Array> new_array(const std::string& name, int components, std::s
 // `values` is already in VTK's cell or point order.
 vtkSmartPointer<vtkDataArray> to_vtk(const DataArray& a, const std::vector<double>& values) {
   const std::size_t tuples = values.size() / a.components;
+  // Integer colours within 0..255 as bytes, as PLY stores them: ParaView shows byte scalars
+  // as colours directly, and the reader (vtk_read.cpp role_of) knows them for colours again.
+  const bool bytes = std::all_of(values.begin(), values.end(), [](double x) { return x >= 0 && x <= 255; });
+  if (a.integer && a.role == ArrayRole::Color && bytes) {
+    auto array = new_array<vtkUnsignedCharArray>(a.name, a.components, tuples);
+    for (std::size_t i = 0; i < values.size(); ++i) array->SetValue(vtkIdType(i), static_cast<unsigned char>(values[i]));
+    return array;
+  }
   if (a.integer) {
     auto array = new_array<vtkIntArray>(a.name, a.components, tuples);
     for (std::size_t i = 0; i < values.size(); ++i) array->SetValue(vtkIdType(i), int(values[i]));
