@@ -115,9 +115,10 @@ def _polydata_from_mesh(mesh, out):
             array = numpy_support.numpy_to_vtk(np.ascontiguousarray(values), deep=True)
             array.SetName(name)
             kind.AddArray(array)
-            if role == "texture_coordinates":
+            # The first array of a role is the active one (setting another would drop the first).
+            if role == "texture_coordinates" and kind.GetTCoords() is None:
                 kind.SetTCoords(array)
-            elif role == "color":
+            elif role == "color" and kind.GetScalars() is None:
                 kind.SetScalars(array)
 
 

@@ -211,13 +211,17 @@ vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level) {
   poly->SetPolys(cell_array({mesh.face_offsets.begin(), mesh.face_offsets.end()},
                             {mesh.face_vertices.begin(), mesh.face_vertices.end()}));
   poly->SetLines(lines(mesh));
+  vtkPointData& point_data = *poly->GetPointData();
   for (const DataArray& a : level.point_data) {
     const auto array = to_vtk(a, a.values);
-    poly->GetPointData()->AddArray(array);
+    point_data.AddArray(array);
     // Active attributes, so that ParaView shades with the normals and textures with the UVs.
-    if (a.role == ArrayRole::Normals && a.components == 3) poly->GetPointData()->SetNormals(array);
-    if (a.role == ArrayRole::TextureCoordinates && a.components <= 3) poly->GetPointData()->SetTCoords(array);
-    if (a.role == ArrayRole::Color) poly->GetPointData()->SetScalars(array);
+    // Only the first array of each role: setting another would drop the first from the
+    // file (vtkDataSetAttributes::SetAttribute removes the array it replaces).
+    if (a.role == ArrayRole::Normals && a.components == 3 && !point_data.GetNormals()) point_data.SetNormals(array);
+    if (a.role == ArrayRole::TextureCoordinates && a.components <= 3 && !point_data.GetTCoords())
+      point_data.SetTCoords(array);
+    if (a.role == ArrayRole::Color && !point_data.GetScalars()) point_data.SetScalars(array);
   }
   for (const DataArray& a : level.cell_data)
     poly->GetCellData()->AddArray(to_vtk(a, cell_order(a, cells)));
