@@ -75,16 +75,19 @@ struct Places {
   // The parent face that holds both new points, on the left of a -> b (a new face's side of
   // its edge a -> b, faces being CCW) when they lie on a common parent edge; kNone if none.
   Index face_holding_both(Index a, Index b) const {
-    std::vector<Index> both;
+    Index first = kNone;
+    bool several = false;
     for (Index f : faces_holding(a))
-      if (holds(f, b) && std::find(both.begin(), both.end(), f) == both.end()) both.push_back(f);
-    if (both.size() < 2) return both.empty() ? kNone : both[0];
-    const Index e = common_edge(a, b);
-    if (e == kNone) return both[0];
+      if (holds(f, b)) {
+        several = several || (first != kNone && f != first);
+        if (first == kNone) first = f;
+      }
+    const Index e = several ? common_edge(a, b) : kNone;
+    if (e == kNone) return first;
     const bool forward = place_along(b, e) > place_along(a, e);
-    for (Index f : both)
-      if (runs_forward(f, e) == forward) return f;
-    return both[0];
+    for (Index f : faces_holding(a))
+      if (holds(f, b) && runs_forward(f, e) == forward) return f;
+    return first;
   }
 };
 
