@@ -162,7 +162,8 @@ CrossingStep crossing_step(const SchemeRun& run, const Level& vertices, Level va
     const std::uint64_t key = std::uint64_t(o.kind) << 56 | std::uint64_t(o.local) << 40 | std::uint32_t(o.parent);
     auto [it, added] = index_of.emplace(key, Index(out.vertex_of.size()));
     if (added) {
-      value_origins.kind.push_back(o.kind), value_origins.parent.push_back(o.parent), value_origins.local.push_back(o.local);
+      value_origins.kind.push_back(o.kind), value_origins.parent.push_back(o.parent);
+      value_origins.local.push_back(o.local);
       out.vertex_of.push_back(x);
       out.value_of_vertex_origin.push_back(o.kind == OriginKind::Vertex ? o.parent : kNone);
     }

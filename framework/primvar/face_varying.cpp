@@ -207,8 +207,10 @@ void inherit_corner_tags(const std::vector<float>& parent_tags, const std::vecto
   if (parent_tags.empty()) return;
   values.vertex_sharpness.resize(size_t(values.vertex_count), 0.f);
   for (size_t u = 0; u < moved_value.size(); ++u)
-    if (moved_value[u] != kNone)
-      values.vertex_sharpness[u] = std::max(values.vertex_sharpness[u], decremented_sharpness(parent_tags[moved_value[u]]));
+    if (moved_value[u] != kNone) {
+      const float inherited = decremented_sharpness(parent_tags[moved_value[u]]);
+      values.vertex_sharpness[u] = std::max(values.vertex_sharpness[u], inherited);
+    }
 }
 
 // Per-vertex scheme parameters on the values: each value takes its vertex's.

@@ -23,7 +23,8 @@ bool format_holds(const std::string& ext, const subdiv::DataArray& a, bool per_p
 }
 
 // The arrays of `arrays` a format other than .vtp/.pvd/.ply leaves out, named for the warning.
-std::vector<std::string> left_out(const std::string& ext, const std::vector<subdiv::DataArray>& arrays, bool per_point) {
+std::vector<std::string> left_out(const std::string& ext, const std::vector<subdiv::DataArray>& arrays,
+                                  bool per_point) {
   std::vector<std::string> names;
   for (const auto& a : arrays)
     if (!format_holds(ext, a, per_point)) names.push_back(fmt::format("'{}'", a.name));
@@ -45,8 +46,8 @@ void write(const std::string& path, py::handle mesh, py::handle point_data, py::
       for (auto& name : left_out(ext, data.cell_data, false)) lost.push_back(std::move(name));
       if (!lost.empty() &&
           PyErr_WarnEx(PyExc_UserWarning,
-                       fmt::format("write_mesh('{}'): {} files have no place for point or cell data {}; use .ply, .vtp or "
-                                   ".pvd to keep it", path, ext, fmt::join(lost, ", ")).c_str(), 1) < 0)
+                       fmt::format("write_mesh('{}'): {} files have no place for point or cell data {}; use .ply, "
+                                   ".vtp or .pvd to keep it", path, ext, fmt::join(lost, ", ")).c_str(), 1) < 0)
         throw py::error_already_set();  // warnings filtered into errors
     }
     // OBJ holds face-varying data as vt; the other formats get a point per side of a seam.

@@ -122,8 +122,8 @@ std::vector<RefinedLevel> refine_surface(RefineInput& in, const SchemeChoice& c,
     std::vector<subdiv::FaceVaryingArray> uv;
     for (size_t k = 0; k < fvar.size(); ++k) {
       const auto& a = carried[k];
-      uv.push_back({a.name, a.components, fvar[k][size_t(l)].values, corners_outside_holes(L, fvar[k][size_t(l)].indices),
-                    a.role});
+      const subdiv::FaceVaryingLevel& at = fvar[k][size_t(l)];
+      uv.push_back({a.name, a.components, at.values, corners_outside_holes(L, at.indices), a.role});
     }
     out.push_back({subdiv::mesh_from_level(L, level.positions), level.point_data, cells_outside_holes(L, level.cell_data),
                    std::move(uv)});

@@ -102,7 +102,8 @@ vtkSmartPointer<vtkDataArray> to_vtk(const DataArray& a, const std::vector<doubl
   const bool bytes = std::all_of(values.begin(), values.end(), [](double x) { return x >= 0 && x <= 255; });
   if (a.integer && a.role == ArrayRole::Color && bytes) {
     auto array = new_array<vtkUnsignedCharArray>(a.name, a.components, tuples);
-    for (std::size_t i = 0; i < values.size(); ++i) array->SetValue(vtkIdType(i), static_cast<unsigned char>(values[i]));
+    for (std::size_t i = 0; i < values.size(); ++i)
+      array->SetValue(vtkIdType(i), static_cast<unsigned char>(values[i]));
     return array;
   }
   if (a.integer) {
