@@ -6,6 +6,7 @@
 
 #include "framework/engine/vertex_parameters.h"
 #include "framework/features/sharpness.h"
+#include "framework/primvar/crossing_step.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -159,19 +160,17 @@ void tag_linear(Level& values, FaceVaryingLinear mode) {
   if (mode == FaceVaryingLinear::All) std::fill(values.edge_sharpness.begin(), values.edge_sharpness.end(), kInfinitelySharp);
 }
 
-// The children of a face must be faces of its own (not faces across edges or around
-// vertices), listed in the same order for the two meshes.
-void check_split(const Scheme& scheme, const ChildOrigins& origins, const Level& vertex_child, const Level& value_child) {
+// A split whose new faces each lie in one old face refines the islands one by one: that
+// must give the mesh's own faces, in the same order (a split whose faces depend on where
+// the boundaries are may not; crossing_step.h handles the built-in ones that differ).
+void check_split(const Scheme& scheme, const Level& vertex_child, const Level& value_child) {
   bool same = vertex_child.face_count() == value_child.face_count();
-  for (Index f = 0; same && f < vertex_child.face_count(); ++f)
-    same = size_t(f) < origins.parent_face.size() && origins.parent_face[f] != kNone;
   for (Index f = 0; same && f < vertex_child.face_count(); ++f) same = vertex_child.face_size(f) == value_child.face_size(f);
   if (!same)
-    throw Error(fmt::format("{}: face-varying data (e.g. UVs with seams) is refined only by splits whose new faces lie "
-                            "each in one old face (quad and triangle splits) and by dual splits; scheme '{}' uses the "
-                            "'{}' split, whose new points on a seam would need a value from both sides. Drop the "
-                            "face-varying data or choose such a scheme", scheme.path, scheme.name,
-                            splitter_info(scheme.split()).name));
+    throw Error(fmt::format("{}: scheme '{}' uses the '{}' split, which splits the UV islands (seams as boundaries) "
+                            "into other faces than the mesh, so face-varying data (e.g. UVs with seams) cannot follow "
+                            "it. Drop the face-varying data or choose a scheme with another split", scheme.path,
+                            scheme.name, splitter_info(scheme.split()).name));
 }
 
 // Dual splits make every new point from a face corner (OriginKind::Corner).
@@ -200,6 +199,18 @@ FaceVaryingLevel dual_step_values(const Level& parent, const ChildOrigins& verte
   FaceVaryingLevel out{std::move(values), {}};
   for (Index v : child.face_vertices) out.indices.push_back(value_of_vertex[v]);
   return out;
+}
+
+// Values that stay old values (a vertex's new point in its face's island) keep the sharp
+// corner tags the mode gave them, as the primal splits' children do (framework/refine).
+void inherit_corner_tags(const std::vector<float>& parent_tags, const std::vector<Index>& moved_value, Level& values) {
+  if (parent_tags.empty()) return;
+  values.vertex_sharpness.resize(size_t(values.vertex_count), 0.f);
+  for (size_t u = 0; u < moved_value.size(); ++u)
+    if (moved_value[u] != kNone) {
+      const float inherited = decremented_sharpness(parent_tags[moved_value[u]]);
+      values.vertex_sharpness[u] = std::max(values.vertex_sharpness[u], inherited);
+    }
 }
 
 // Per-vertex scheme parameters on the values: each value takes its vertex's.
@@ -254,16 +265,29 @@ std::vector<FaceVaryingLevel> refine_face_varying(std::span<const SchemeRun> run
     step.first_step = options.first_step + int(l);
     step.features.boundary = BoundaryInterpolation::EdgesOnly;  // corners were tagged above
     step.vertex_parameters = parameters_on_values(parameters, vertex_of);
+    const Level& parent = h.levels[l];
+    const Level& child = h.levels[l + 1];
+    if (!makes_corner_points_only(h.origins[l]) && !corners_in_parent_faces(parent, h.origins[l], child)) {
+      // New faces across old edges (crossing_step.h): the data follows the vertex split.
+      const std::vector<float> corner_tags = current.vertex_sharpness;
+      CrossingStep next = crossing_step(run, parent, std::move(current), h.origins[l], child, h.features_refined[l],
+                                        out.back().values, components, step);
+      current = std::move(next.values);
+      copy_sharpness(child, current);
+      inherit_corner_tags(corner_tags, next.value_of_vertex_origin, current);
+      vertex_of = std::move(next.vertex_of);
+      out.push_back(std::move(next.level));
+      continue;
+    }
     const Hierarchy values = refine_topology(std::span(&run, 1), current, step);
     std::vector<double> refined = step_values(std::span(&run, 1), values, 0, out.back().values, components, step);
-    const Level& child = h.levels[l + 1];
     if (makes_corner_points_only(h.origins[l])) {
-      out.push_back(dual_step_values(h.levels[l], h.origins[l], child, values.origins[0], std::move(refined), vertex_of));
+      out.push_back(dual_step_values(parent, h.origins[l], child, values.origins[0], std::move(refined), vertex_of));
       current = value_mesh(child, out.back().indices, Index(vertex_of.size()));
       copy_sharpness(child, current);
       continue;
     }
-    check_split(*per_level[l], h.origins[l], child, values.levels[1]);
+    check_split(*per_level[l], child, values.levels[1]);
     FaceVaryingLevel next{std::move(refined), values.levels[1].face_vertices};
     // Each child value's vertex, from the corners the two children share.
     vertex_of.assign(size_t(values.levels[1].vertex_count), kNone);

@@ -26,7 +26,11 @@
 // Dual splits (every new point a face corner; OpenSubdiv has none): a new point's value is
 // the dual rule applied to its corner in its own island; each point then has one value, so
 // the faces a dual step makes across a seam or around a seam vertex join two islands.
-// Splits whose new points lie on edges shared across a seam (sqrt3, mid-edge) are refused.
+//
+// Splits whose new faces cross old edges (sqrt3's flipped triangles, mid-edge's vertex
+// faces): the data follows the vertex mesh's new faces, each corner valued in one old face
+// (so in one island) by the scheme's rule for its point on the value mesh
+// (primvar/crossing_step.h says which face and why).
 #include <span>
 #include <string>
 #include <vector>
@@ -51,8 +55,9 @@ struct FaceVaryingLevel {
 // Levels 0..h.levels.size()-1 of one face-varying channel, with `components` per value;
 // levels[0] is `base`, renumbered so that each value belongs to one vertex (a value index
 // a file uses at two vertices becomes two values). `h` comes from refine_topology with the
-// same runs and options. Throws subdiv::Error for indices that do not fit the base level
-// and for the sqrt3 and mid-edge splits (see above).
+// same runs and options. Throws subdiv::Error for indices that do not fit the base level,
+// and for a split whose new faces lie each in one old face but that splits the islands
+// into other faces than the mesh (none of the built-in ones).
 std::vector<FaceVaryingLevel> refine_face_varying(std::span<const SchemeRun> runs, const Hierarchy& h,
                                                   const FaceVaryingLevel& base, int components,
                                                   FaceVaryingLinear mode, const RefineOptions& options);

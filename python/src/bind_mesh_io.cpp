@@ -1,6 +1,7 @@
 // Mesh files: the library's readers and writers (framework/io), chosen by extension.
 #include <filesystem>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "bindings.h"
 #include "framework/io/mesh_seams.h"
@@ -8,35 +9,46 @@
 namespace subdivkit {
 namespace {
 
-subdiv::DataArray data_array(NamedValues&& v) {
-  return subdiv::DataArray{std::move(v.name), v.columns, std::move(v.values), false};
+// Whether a format other than .vtp/.pvd/.ply holds an array (the writers in framework/io:
+// OFF takes normals, colours and UVs of points and colours of faces, OBJ per-point UVs as vt).
+bool format_holds(const std::string& ext, const subdiv::DataArray& a, bool per_point) {
+  using subdiv::ArrayRole;
+  if (ext == ".off")
+    return per_point ? (a.role == ArrayRole::Normals && a.components == 3) ||
+                           (a.role == ArrayRole::Color && a.components >= 3 && a.components <= 4) ||
+                           (a.role == ArrayRole::TextureCoordinates && a.components == 2)
+                     : a.role == ArrayRole::Color && a.components >= 3 && a.components <= 4;
+  if (ext == ".obj") return per_point && a.role == ArrayRole::TextureCoordinates && a.components <= 3;
+  return false;
 }
 
-std::vector<NamedValues> named_values(std::vector<subdiv::DataArray>&& arrays) {
-  std::vector<NamedValues> out;
-  for (auto& a : arrays) out.push_back({std::move(a.name), std::move(a.values), a.components});
-  return out;
+// The arrays of `arrays` a format other than .vtp/.pvd/.ply leaves out, named for the warning.
+std::vector<std::string> left_out(const std::string& ext, const std::vector<subdiv::DataArray>& arrays,
+                                  bool per_point) {
+  std::vector<std::string> names;
+  for (const auto& a : arrays)
+    if (!format_holds(ext, a, per_point)) names.push_back(fmt::format("'{}'", a.name));
+  return names;
 }
 
 void write(const std::string& path, py::handle mesh, py::handle point_data, py::handle cell_data,
            py::handle face_varying) {
   subdiv::MeshData data = mesh_from_python(mesh);
   data.face_varying = face_varying_from(face_varying, Index(data.face_vertices.size()));
-  auto points = named_values_from(point_data, data.vertex_count(), "point data");
-  auto cells = named_values_from(cell_data, data.face_count(), "cell data");
+  data.point_data = data_arrays_from(point_data, data.vertex_count(), "point data");
+  data.cell_data = data_arrays_from(cell_data, data.face_count(), "cell data");
   const std::string ext = subdiv::lowercase_extension(path);
   if (!subdiv::is_vtk_output(path)) {
-    // PLY holds every array; the others hold none (OFF only colours, normals and UVs, which
-    // Python's plain arrays do not mark). A warning, not an error: writing the geometry to
-    // .obj is a common, deliberate step.
-    if (ext == ".ply") {
-      for (auto& v : points) data.point_data.push_back(data_array(std::move(v)));
-      for (auto& v : cells) data.cell_data.push_back(data_array(std::move(v)));
-    } else if ((!points.empty() || !cells.empty()) &&
-               PyErr_WarnEx(PyExc_UserWarning,
-                            fmt::format("write_mesh('{}'): {} files hold no point or cell data; use .ply, .vtp or "
-                                        ".pvd to keep it", path, ext).c_str(), 1) < 0) {
-      throw py::error_already_set();  // warnings filtered into errors
+    // PLY holds every array; OFF and OBJ those their roles fit (format_holds); the others
+    // none. A warning, not an error: writing the geometry to .obj is a common, deliberate step.
+    if (ext != ".ply") {
+      std::vector<std::string> lost = left_out(ext, data.point_data, true);
+      for (auto& name : left_out(ext, data.cell_data, false)) lost.push_back(std::move(name));
+      if (!lost.empty() &&
+          PyErr_WarnEx(PyExc_UserWarning,
+                       fmt::format("write_mesh('{}'): {} files have no place for point or cell data {}; use .ply, "
+                                   ".vtp or .pvd to keep it", path, ext, fmt::join(lost, ", ")).c_str(), 1) < 0)
+        throw py::error_already_set();  // warnings filtered into errors
     }
     // OBJ holds face-varying data as vt; the other formats get a point per side of a seam.
     if (ext != ".obj") data = subdiv::split_at_seams(data);
@@ -44,8 +56,6 @@ void write(const std::string& path, py::handle mesh, py::handle point_data, py::
     subdiv::write_mesh(path, data);
     return;
   }
-  for (auto& v : points) data.point_data.push_back(data_array(std::move(v)));
-  for (auto& v : cells) data.cell_data.push_back(data_array(std::move(v)));
   data = subdiv::split_at_seams(data);  // VTK holds per-point data: a point per side of a seam
   subdiv::OutputLevel level;
   level.mesh = &data;
@@ -68,12 +78,15 @@ void bind_mesh_io(py::module_& m) {
           py::gil_scoped_release unlocked;
           data = subdiv::read_mesh(path);
         }
-        py::dict point_data = named_values_to_python(named_values(std::move(data.point_data)));
-        py::dict cell_data = named_values_to_python(named_values(std::move(data.cell_data)));
+        py::dict point_roles = roles_to_python(data.point_data), cell_roles = roles_to_python(data.cell_data);
+        py::dict point_data = data_arrays_to_python(std::move(data.point_data));
+        py::dict cell_data = data_arrays_to_python(std::move(data.cell_data));
         py::dict face_varying = face_varying_to_python(std::move(data.face_varying));
         py::dict out = mesh_to_python(std::move(data));
         out["point_data"] = point_data;
         out["cell_data"] = cell_data;
+        out["point_roles"] = point_roles;
+        out["cell_roles"] = cell_roles;
         out["face_varying"] = face_varying;
         return out;
       },

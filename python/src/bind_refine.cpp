@@ -13,14 +13,14 @@ namespace {
 
 struct RefinedLevel {
   subdiv::MeshData mesh;
-  std::vector<NamedValues> point_data, cell_data;
+  std::vector<subdiv::DataArray> point_data, cell_data;
   std::vector<subdiv::FaceVaryingArray> face_varying;
 };
 
 struct RefineInput {
   subdiv::MeshData mesh;
   std::string name;
-  std::vector<NamedValues> point_data, cell_data;
+  std::vector<subdiv::DataArray> point_data, cell_data;
   std::vector<subdiv::FaceVaryingArray> face_varying;
   subdiv::FaceVaryingLinear fvar_mode = subdiv::FaceVaryingLinear::All;
 };
@@ -37,8 +37,8 @@ RefineInput input_from(py::handle mesh, py::handle point_data, py::handle cell_d
   RefineInput in;
   in.mesh = mesh_from_python(mesh);
   in.name = mesh_name(mesh);
-  in.point_data = named_values_from(point_data, in.mesh.vertex_count(), "point data");
-  in.cell_data = named_values_from(cell_data, in.mesh.face_count(), "cell data");
+  in.point_data = data_arrays_from(point_data, in.mesh.vertex_count(), "point data");
+  in.cell_data = data_arrays_from(cell_data, in.mesh.face_count(), "cell data");
   in.face_varying = face_varying_from(face_varying, Index(in.mesh.face_vertices.size()));
   in.fvar_mode = fvar_mode_from(fvar_boundary);
   for (const auto& a : in.face_varying)
@@ -80,58 +80,57 @@ subdiv::CurveLevel curve_base(const RefineInput& in, const subdiv::CurveScheme& 
   return base;
 }
 
-// Cell values follow their faces: a child face takes its parent face's values (NaN for
-// faces that lie in no single parent face, such as a dual split's vertex faces).
-std::vector<NamedValues> cells_to_children(const std::vector<NamedValues>& parent, const subdiv::ChildOrigins& o) {
-  std::vector<NamedValues> out;
-  for (const auto& a : parent) {
-    NamedValues c{a.name, std::vector<double>(o.parent_face.size() * size_t(a.columns), std::nan("")), a.columns};
-    for (size_t f = 0; f < o.parent_face.size(); ++f)
-      if (const Index p = o.parent_face[f]; p != subdiv::kNone)
-        for (int k = 0; k < a.columns; ++k) c.values[f * a.columns + k] = a.values[size_t(p) * a.columns + k];
-    out.push_back(std::move(c));
+// Hole faces are left out of the output (mesh_from_level, OpenSubdiv's holes): so are their cell values.
+std::vector<subdiv::DataArray> cells_outside_holes(const subdiv::Level& L, std::vector<subdiv::DataArray> cells) {
+  if (L.face_hole.empty()) return cells;
+  for (auto& a : cells) {
+    size_t row = 0;
+    for (Index f = 0; f < L.face_count(); ++f) {
+      if (L.is_hole(f)) continue;
+      std::copy_n(&a.values[size_t(f) * a.components], a.components, &a.values[row * a.components]);
+      ++row;
+    }
+    a.values.resize(row * a.components);
   }
-  return out;
+  return cells;
 }
 
+// The user's arrays through the levels as the command line carries them (framework/primvar):
+// point arrays with the positions by the scheme's rules, integer ones by origin, normals
+// left out (named in `dropped`), cell arrays inherited, face-varying arrays by
+// refine_face_varying.
 std::vector<RefinedLevel> refine_surface(RefineInput& in, const SchemeChoice& c, const subdiv::RefineOptions& o,
-                                         bool all_levels) {
+                                         bool all_levels, std::vector<std::string>& dropped) {
   const subdiv::SchemeSequence& seq = c.sequence;
   subdiv::Hierarchy h = subdiv::refine_topology(seq.runs, surface_base(in, c), o);
-  std::vector<double> positions = std::move(in.mesh.positions);
-  std::vector<NamedValues> points = std::move(in.point_data), cells = std::move(in.cell_data);
-  // Face-varying arrays, every level at once (framework/primvar/face_varying.h).
+  subdiv::LevelData level{std::move(in.mesh.positions), subdiv::carried_point_arrays(in.point_data, &dropped),
+                          std::move(in.cell_data)};
+  subdiv::check_finite_arrays(level, in.name);
+  std::vector<subdiv::FaceVaryingArray> carried;
   std::vector<std::vector<subdiv::FaceVaryingLevel>> fvar;
-  for (const auto& a : in.face_varying)
+  for (auto& a : in.face_varying) {
+    if (a.role == subdiv::ArrayRole::Normals) {
+      dropped.push_back(a.name);
+      continue;
+    }
     fvar.push_back(subdiv::refine_face_varying(seq.runs, h, {a.values, a.indices}, a.components, in.fvar_mode, o));
+    carried.push_back(std::move(a));
+  }
   std::vector<RefinedLevel> out;
   auto keep = [&](int l) {
-    // mesh_from_level leaves hole faces out (OpenSubdiv's holes, --boundary none); so do their cell values.
     const subdiv::Level& L = h.levels[l];
-    std::vector<NamedValues> kept = cells;
-    if (!L.face_hole.empty())
-      for (auto& a : kept) {
-        size_t row = 0;
-        for (Index f = 0; f < L.face_count(); ++f) {
-          if (L.is_hole(f)) continue;
-          for (int k = 0; k < a.columns; ++k) a.values[row * a.columns + k] = a.values[size_t(f) * a.columns + k];
-          ++row;
-        }
-        a.values.resize(row * a.columns);
-      }
     std::vector<subdiv::FaceVaryingArray> uv;
     for (size_t k = 0; k < fvar.size(); ++k) {
-      const auto& a = in.face_varying[k];
-      uv.push_back({a.name, a.components, fvar[k][size_t(l)].values, corners_outside_holes(L, fvar[k][size_t(l)].indices),
-                    a.role});
+      const auto& a = carried[k];
+      const subdiv::FaceVaryingLevel& at = fvar[k][size_t(l)];
+      uv.push_back({a.name, a.components, at.values, corners_outside_holes(L, at.indices), a.role});
     }
-    out.push_back({subdiv::mesh_from_level(L, positions), points, std::move(kept), std::move(uv)});
+    out.push_back({subdiv::mesh_from_level(L, level.positions), level.point_data, cells_outside_holes(L, level.cell_data),
+                   std::move(uv)});
   };
   if (all_levels || seq.total_levels == 0) keep(0);
   for (int l = 0; l < seq.total_levels; ++l) {
-    positions = subdiv::step_values(seq.runs, h, l, positions, 3, o);
-    for (auto& p : points) p.values = subdiv::step_values(seq.runs, h, l, p.values, p.columns, o);
-    cells = cells_to_children(cells, h.origins[l]);
+    level = subdiv::next_level_data(seq.runs, h, l, level, o);
     if (all_levels || l + 1 == seq.total_levels) keep(l + 1);
   }
   return out;
@@ -143,7 +142,9 @@ std::vector<RefinedLevel> refine_curve(RefineInput& in, const subdiv::CurveSchem
     throw subdiv::Error("cell data: curve refinement carries point data only (polylines have no faces)");
   subdiv::CurveHierarchy h = subdiv::refine_curves(curve, curve_base(in, curve, levels), levels);
   std::vector<double> positions = std::move(in.mesh.positions);
-  std::vector<NamedValues> points = std::move(in.point_data);
+  std::vector<subdiv::DataArray> points = std::move(in.point_data);
+  // Polylines have no element origins to take labels by: every point array is interpolated.
+  for (auto& p : points) p.integer = false;
   if (!in.face_varying.empty())
     throw subdiv::Error("face-varying data: polylines have no faces to carry it; curve refinement carries point data");
   std::vector<RefinedLevel> out;
@@ -151,7 +152,7 @@ std::vector<RefinedLevel> refine_curve(RefineInput& in, const subdiv::CurveSchem
   if (all_levels || levels == 0) keep(0);
   for (int l = 0; l < levels; ++l) {
     positions = h.stencils[l].apply(positions, 3);
-    for (auto& p : points) p.values = h.stencils[l].apply(p.values, p.columns);
+    for (auto& p : points) p.values = h.stencils[l].apply(p.values, p.components);
     if (all_levels || l + 1 == levels) keep(l + 1);
   }
   return out;
@@ -165,18 +166,22 @@ py::list refine(py::handle mesh, py::handle scheme, py::handle params, int level
   RefineInput in = input_from(mesh, point_data, cell_data, face_varying, fvar_boundary);
   const SchemeChoice choice = scheme_choice_from(scheme, levels, params);
   std::vector<RefinedLevel> result;
+  std::vector<std::string> dropped;
   {
     py::gil_scoped_release unlocked;
     const auto limit = thread_limit(threads);
     result = choice.is_curve() ? refine_curve(in, *choice.single->curve, levels, all_levels)
-                               : refine_surface(in, choice, options, all_levels);
+                               : refine_surface(in, choice, options, all_levels, dropped);
   }
   py::list out;
   for (auto& level : result) {
     py::dict d = mesh_to_python(std::move(level.mesh));
-    d["point_data"] = named_values_to_python(std::move(level.point_data));
-    d["cell_data"] = named_values_to_python(std::move(level.cell_data));
+    d["point_roles"] = roles_to_python(level.point_data);
+    d["cell_roles"] = roles_to_python(level.cell_data);
+    d["point_data"] = data_arrays_to_python(std::move(level.point_data));
+    d["cell_data"] = data_arrays_to_python(std::move(level.cell_data));
     d["face_varying"] = face_varying_to_python(std::move(level.face_varying));
+    d["dropped"] = dropped;
     out.append(d);
   }
   return out;

@@ -42,15 +42,17 @@ std::string mesh_name(py::handle mesh);
 py::dict mesh_to_python(subdiv::MeshData&& mesh);
 
 // Per-vertex (or per-face) arrays riding along with a mesh: name, values, columns.
-struct NamedValues {
-  std::string name;
-  std::vector<double> values;
-  int columns = 1;
-};
-// From a list of (name, 2-d float64 array) pairs.
-std::vector<NamedValues> named_values_from(py::handle pairs, Index rows, const std::string& what);
-// A dict name -> (rows, columns) array.
-py::dict named_values_to_python(std::vector<NamedValues>&& arrays);
+// A point or cell array's role as Python names it ("data", "normals",
+// "texture_coordinates", "color"), and back; an unknown name is refused with the list.
+const char* role_name(subdiv::ArrayRole role);
+subdiv::ArrayRole role_from_name(const std::string& name, const std::string& array);
+// Point or cell arrays from (name, 2-d float64 array, integer, role name) tuples, as
+// subdivkit/mesh.py's _data_arrays makes them; `rows` tuples each.
+std::vector<subdiv::DataArray> data_arrays_from(py::handle items, Index rows, const std::string& what);
+// A dict name -> (rows, components) array: int32 for integer arrays, else float64.
+py::dict data_arrays_to_python(std::vector<subdiv::DataArray>&& arrays);
+// A dict name -> role name of the arrays whose role is not plain data.
+py::dict roles_to_python(const std::vector<subdiv::DataArray>& arrays);
 
 // Face-varying arrays from (name, (m, k) float64 values, corner indices) triples, checked
 // against the mesh's corner count; and back as a dict name -> (values, indices).

@@ -18,6 +18,7 @@
 #include "framework/io/mesh_write.h"
 #include "framework/io/vtk/vtk_output.h"
 #include "framework/primvar/face_varying.h"
+#include "framework/primvar/level_data.h"
 #include "framework/plugin/plugin_loader.h"
 #include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"

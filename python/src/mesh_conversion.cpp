@@ -80,35 +80,66 @@ py::dict mesh_to_python(subdiv::MeshData&& mesh) {
   return out;
 }
 
-std::vector<NamedValues> named_values_from(py::handle pairs, Index rows, const std::string& what) {
-  std::vector<NamedValues> out;
-  if (pairs.is_none()) return out;
-  for (py::handle item : pairs) {
-    auto pair = py::reinterpret_borrow<py::tuple>(item);
-    NamedValues v;
-    v.name = py::str(pair[0]);
-    auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(pair[1]);
-    if (!a) {
+const char* role_name(subdiv::ArrayRole role) {
+  switch (role) {
+    case subdiv::ArrayRole::Normals: return "normals";
+    case subdiv::ArrayRole::TextureCoordinates: return "texture_coordinates";
+    case subdiv::ArrayRole::Color: return "color";
+    case subdiv::ArrayRole::Data: break;
+  }
+  return "data";
+}
+
+subdiv::ArrayRole role_from_name(const std::string& name, const std::string& array) {
+  for (auto role : {subdiv::ArrayRole::Data, subdiv::ArrayRole::Normals, subdiv::ArrayRole::TextureCoordinates,
+                    subdiv::ArrayRole::Color})
+    if (name == role_name(role)) return role;
+  throw subdiv::Error(fmt::format("{}: role '{}' is not one of data, normals, texture_coordinates, color", array, name));
+}
+
+std::vector<subdiv::DataArray> data_arrays_from(py::handle items, Index rows, const std::string& what) {
+  std::vector<subdiv::DataArray> out;
+  if (items.is_none()) return out;
+  for (py::handle item : items) {
+    auto tuple = py::reinterpret_borrow<py::tuple>(item);
+    subdiv::DataArray a;
+    a.name = py::str(tuple[0]);
+    auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(tuple[1]);
+    if (!values) {
       PyErr_Clear();
-      throw subdiv::Error(fmt::format("{} '{}': cannot be read as float64 values", what, v.name));
+      throw subdiv::Error(fmt::format("{} '{}': cannot be read as float64 values", what, a.name));
     }
-    if (a.ndim() < 1 || a.ndim() > 2 || a.shape(0) != rows)
-      throw subdiv::Error(fmt::format("{} '{}': expected {} rows (one per {}), got shape {}", what, v.name, rows,
+    if (values.ndim() < 1 || values.ndim() > 2 || values.shape(0) != rows)
+      throw subdiv::Error(fmt::format("{} '{}': expected {} rows (one per {}), got shape {}", what, a.name, rows,
                                       what == "point data" ? "point" : "face",
-                                      std::string(py::str(py::tuple(a.attr("shape"))))));
-    v.columns = a.ndim() == 2 ? int(a.shape(1)) : 1;
-    v.values.assign(a.data(), a.data() + a.size());
-    out.push_back(std::move(v));
+                                      std::string(py::str(py::tuple(values.attr("shape"))))));
+    a.components = values.ndim() == 2 ? int(values.shape(1)) : 1;
+    a.values.assign(values.data(), values.data() + values.size());
+    a.integer = tuple.size() > 2 && py::bool_(tuple[2]);
+    a.role = tuple.size() > 3 ? role_from_name(py::str(tuple[3]), what + " '" + a.name + "'") : subdiv::ArrayRole::Data;
+    out.push_back(std::move(a));
   }
   return out;
 }
 
-py::dict named_values_to_python(std::vector<NamedValues>&& arrays) {
+py::dict data_arrays_to_python(std::vector<subdiv::DataArray>&& arrays) {
   py::dict out;
   for (auto& a : arrays) {
-    const auto rows = py::ssize_t(a.values.size() / size_t(std::max(a.columns, 1)));
-    out[py::str(a.name)] = adopt(std::move(a.values), {rows, py::ssize_t(a.columns)});
+    const auto rows = py::ssize_t(a.values.size() / size_t(std::max(a.components, 1)));
+    if (a.integer) {
+      std::vector<std::int32_t> whole(a.values.begin(), a.values.end());  // whole numbers that fit (mesh_data.h)
+      out[py::str(a.name)] = adopt(std::move(whole), {rows, py::ssize_t(a.components)});
+    } else {
+      out[py::str(a.name)] = adopt(std::move(a.values), {rows, py::ssize_t(a.components)});
+    }
   }
+  return out;
+}
+
+py::dict roles_to_python(const std::vector<subdiv::DataArray>& arrays) {
+  py::dict out;
+  for (const auto& a : arrays)
+    if (a.role != subdiv::ArrayRole::Data) out[py::str(a.name)] = role_name(a.role);
   return out;
 }
 
@@ -137,8 +168,9 @@ std::vector<subdiv::FaceVaryingArray> face_varying_from(py::handle triples, Inde
     a.components = int(values.shape(1));
     a.values.assign(values.data(), values.data() + values.size());
     a.indices.assign(indices.data(), indices.data() + indices.size());
-    // A channel of 2 or 3 numbers named as read_mesh names OBJ's vt is texture coordinates.
+    // Named as read_mesh names OBJ's vt and vn: texture coordinates and normals.
     if (a.name == "uv" && a.components <= 3) a.role = subdiv::ArrayRole::TextureCoordinates;
+    if (a.name == "normal" && a.components == 3) a.role = subdiv::ArrayRole::Normals;
     out.push_back(std::move(a));
   }
   return out;

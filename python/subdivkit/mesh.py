@@ -12,7 +12,15 @@ refine() or writing it converts nothing:
   ``corners`` (k,) vertex ids with ``corner_sharpness`` (k,). Sharpness follows OpenSubdiv:
   0 smooth, 10 or more infinitely sharp;
 * ``point_data`` and ``cell_data``: dicts of arrays with one row per point or per face,
-  carried through refine() and written to .vtp files;
+  carried through refine() and written to .vtp files. Float arrays are interpolated like
+  the points; integer arrays (any integer or bool dtype; they come back as int32) are
+  labels: a new point takes its vertex's value, or the one its element's vertices share
+  (the smallest where they differ), never an average;
+* ``point_roles`` and ``cell_roles``: dicts name -> role for the arrays that are more than
+  data, as the C++ library's ``ArrayRole``: "normals" (not refined: refine() leaves them
+  out with a warning), "texture_coordinates" (the active TCoords in .vtp, ``vt`` in OBJ),
+  "color" (the active scalars in .vtp, ``red green blue`` in PLY). read_mesh fills them
+  from the file, refine() and write_mesh keep them;
 * ``face_varying``: a dict name -> (values, indices) of face-varying data, e.g. UVs with
   seams (OBJ ``vt``, read as "uv"): values (m, k) float64 and one int32 value index per
   face corner (in ``face_indices`` order). refine() carries it as OpenSubdiv does (its
@@ -33,6 +41,7 @@ from ._subdivkit import Error
 
 _INT32_MAX = np.iinfo(np.int32).max
 INFINITELY_SHARP = 10.0
+ROLES = ("data", "normals", "texture_coordinates", "color")
 
 
 def _as_points(points, what="points"):
@@ -128,17 +137,20 @@ class Mesh:
     corner_sharpness : float or array-like (k,), optional
         Sharpness per corner (default 10).
     point_data, cell_data : dict, optional
+        Arrays with one row per point / per face, carried through refine(); integer
+        arrays are labels (taken, not averaged).
+    point_roles, cell_roles : dict, optional
+        name -> "normals", "texture_coordinates", "color" or "data" for those arrays,
+        e.g. {"normal": "normals"}.
     face_varying : dict, optional
         name -> (values (m, k), corner indices), e.g. {"uv": (uv, uv_index)}.
-        Arrays with one row per point / per face, carried through refine().
     name : str
         How error messages name this mesh (read_mesh sets the file name).
     """
 
     def __init__(self, points, faces=None, *, face_offsets=None, lines=None, line_offsets=None, creases=None,
                  crease_sharpness=None, corners=None, corner_sharpness=None, point_data=None, cell_data=None,
-                 face_varying=None,
-                 name="mesh"):
+                 face_varying=None, point_roles=None, cell_roles=None, name="mesh"):
         self.name = str(name)
         self.points = _as_points(points, f"{self.name}.points")
         self.face_indices, self.face_offsets = _as_cells(faces, face_offsets, "faces", "face_offsets")
@@ -155,9 +167,12 @@ class Mesh:
         self.point_data = dict(point_data or {})
         self.cell_data = dict(cell_data or {})
         self.face_varying = dict(face_varying or {})
+        self.point_roles = dict(point_roles or {})
+        self.cell_roles = dict(cell_roles or {})
 
     @classmethod
-    def _from_arrays(cls, arrays, name="mesh", point_data=None, cell_data=None, face_varying=None):
+    def _from_arrays(cls, arrays, name="mesh", point_data=None, cell_data=None, face_varying=None, point_roles=None,
+                     cell_roles=None):
         """A Mesh around arrays the extension made (already in the right layout: no copies)."""
         mesh = cls.__new__(cls)
         mesh.name = name
@@ -167,6 +182,8 @@ class Mesh:
         mesh.point_data = dict(point_data or {})
         mesh.cell_data = dict(cell_data or {})
         mesh.face_varying = dict(face_varying or {})
+        mesh.point_roles = dict(point_roles or {})
+        mesh.cell_roles = dict(cell_roles or {})
         return mesh
 
     @property
@@ -216,7 +233,8 @@ class Mesh:
     def with_points(self, points):
         """The same topology, tags and data with new positions (for instance after ``S @ P``)."""
         mesh = Mesh._from_arrays(self.__dict__, name=self.name, point_data=self.point_data,
-                                 cell_data=self.cell_data)
+                                 cell_data=self.cell_data, face_varying=self.face_varying,
+                                 point_roles=self.point_roles, cell_roles=self.cell_roles)
         mesh.points = _as_points(points, f"{self.name}.points")
         if len(mesh.points) != self.n_points:
             raise Error(f"with_points: {len(mesh.points)} points for a mesh of {self.n_points}")
@@ -236,17 +254,33 @@ class Mesh:
         return f"<subdivkit.Mesh '{self.name}': {', '.join(parts)}>"
 
 
-def _data_pairs(data, rows, what):
-    """A data dict as (name, 2-d float64 array) pairs for the extension, checked."""
-    pairs = []
+def _role(roles, key, what):
+    role = str((roles or {}).get(key, "data"))
+    if role not in ROLES:
+        raise Error(f"{what} '{key}': role {role!r} is not one of {', '.join(ROLES)}")
+    return role
+
+
+def _data_arrays(data, roles, rows, what):
+    """A data dict as (name, 2-d float64 array, integer, role) tuples for the extension, checked.
+
+    Integer and bool arrays travel as float64 (the library's DataArray holds doubles) marked
+    integer; their values must fit an int32, as in a .vtp's vtkIntArray.
+    """
+    arrays = []
     for key, values in (data or {}).items():
         a = np.asarray(values)
         if a.dtype.kind not in "fiub":
             raise Error(f"{what} '{key}': expected numbers, got dtype {a.dtype}")
         if a.ndim not in (1, 2) or a.shape[0] != rows:
             raise Error(f"{what} '{key}': expected {rows} rows, got shape {a.shape}")
-        pairs.append((str(key), np.ascontiguousarray(a.reshape(rows, -1), dtype=np.float64)))
-    return pairs
+        integer = a.dtype.kind in "iub"
+        if integer and a.size and (a.min() < np.iinfo(np.int32).min or a.max() > _INT32_MAX):
+            raise Error(f"{what} '{key}': integer values must fit in 32 bits (labels); "
+                        f"convert the array to float to interpolate it")
+        arrays.append((str(key), np.ascontiguousarray(a.reshape(rows, -1), dtype=np.float64), integer,
+                       _role(roles, key, what)))
+    return arrays
 
 
 def _face_varying_triples(mesh):
@@ -275,22 +309,28 @@ def read_mesh(path):
 
     Returns a Mesh named after the file, with the file's point and cell arrays in
     ``point_data`` and ``cell_data`` (.vtp/.vtk arrays, PLY properties, OFF colours,
-    normals and texture coordinates; integer arrays come as float64). Raises
-    subdivkit.Error with the command line's
-    message (naming the file and line) for missing files, unknown formats and bad content.
+    normals and texture coordinates; integer arrays as int32), their roles in
+    ``point_roles`` and ``cell_roles`` (the active normals, texture coordinates and colours
+    of a .vtp, PLY's ``nx ny nz``, ``s t`` and ``red green blue``), and OBJ's ``vt`` in
+    ``face_varying["uv"]``. Raises subdivkit.Error with the command line's message (naming
+    the file and line) for missing files, unknown formats and bad content.
     """
     path = os.fspath(path)
     arrays = _subdivkit._read_mesh(path)
     return Mesh._from_arrays(arrays, name=path, point_data=arrays["point_data"], cell_data=arrays["cell_data"],
-                             face_varying=arrays["face_varying"])
+                             face_varying=arrays["face_varying"], point_roles=arrays["point_roles"],
+                             cell_roles=arrays["cell_roles"])
 
 
 def write_mesh(path, mesh, point_data=None, cell_data=None):
     """Write a Mesh by extension: .obj (exact doubles, polylines, crease and corner tags),
     .off, .ply, .stl, or .vtp / .pvd for ParaView.
 
-    ``point_data`` and ``cell_data`` default to the mesh's own dicts; .vtp, .pvd and .ply
-    hold them (other formats warn and leave them out). The file is written atomically: it
+    ``point_data`` and ``cell_data`` default to the mesh's own dicts, their roles are the
+    mesh's ``point_roles`` and ``cell_roles``; .vtp, .pvd and .ply hold them all, integer
+    arrays as integers; OFF holds normals, colours and texture coordinates, OBJ per-point
+    texture coordinates (as ``vt``); what a format cannot hold is left out with a warning
+    naming it. The file is written atomically: it
     is either complete or left as it was. Raises subdivkit.Error before creating anything
     for an unknown extension, a missing directory or an invalid mesh.
     """
@@ -298,5 +338,7 @@ def write_mesh(path, mesh, point_data=None, cell_data=None):
         raise Error(f"write_mesh: expected a subdivkit.Mesh, got {type(mesh).__name__}")
     point_data = mesh.point_data if point_data is None else point_data
     cell_data = mesh.cell_data if cell_data is None else cell_data
-    _subdivkit._write_mesh(os.fspath(path), mesh, _data_pairs(point_data, mesh.n_points, "point data"),
-                           _data_pairs(cell_data, mesh.n_faces, "cell data"), _face_varying_triples(mesh))
+    _subdivkit._write_mesh(os.fspath(path), mesh,
+                           _data_arrays(point_data, mesh.point_roles, mesh.n_points, "point data"),
+                           _data_arrays(cell_data, mesh.cell_roles, mesh.n_faces, "cell data"),
+                           _face_varying_triples(mesh))

@@ -59,6 +59,23 @@ def _parse_params(text):
     return params
 
 
+def _as_data(values):
+    """A VTK array's values as refine() reads them: integer arrays stay integers (labels)."""
+    a = np.asarray(values)
+    return a if a.dtype.kind in "iub" else a.astype(np.float64)
+
+
+def _point_roles(attributes):
+    """The roles of the active texture coordinates and byte colours (as the C++ reader, vtk_read.cpp)."""
+    roles = {}
+    tcoords, scalars = attributes.GetTCoords(), attributes.GetScalars()
+    if tcoords is not None and tcoords.GetName():
+        roles[tcoords.GetName()] = "texture_coordinates"
+    if scalars is not None and scalars.GetName() and scalars.GetDataTypeAsString() == "unsigned_char":
+        roles[scalars.GetName()] = "color"
+    return roles
+
+
 def _mesh_from_polydata(poly):
     """The polygons of a vtkPolyData, with its point and polygon-cell arrays."""
     points = numpy_support.vtk_to_numpy(poly.GetPoints().GetData()).astype(np.float64) if poly.GetPoints() else \
@@ -68,15 +85,16 @@ def _mesh_from_polydata(poly):
     connectivity = numpy_support.vtk_to_numpy(polys.GetConnectivityArray()).astype(np.int64)
     wrapped = dsa.WrapDataObject(poly)
     normals = poly.GetPointData().GetNormals()
-    point_data = {name: np.asarray(wrapped.PointData[name], dtype=np.float64)
+    point_data = {name: _as_data(wrapped.PointData[name])
                   for name in wrapped.PointData.keys()
                   if wrapped.PointData[name] is not None and not (normals and name == normals.GetName())}
     # Cells are numbered vertices, lines, polygons, strips: the polygons' tuples follow the first two.
     first = poly.GetNumberOfVerts() + poly.GetNumberOfLines()
     count = poly.GetNumberOfPolys()
-    cell_data = {name: np.asarray(wrapped.CellData[name], dtype=np.float64)[first:first + count]
+    cell_data = {name: _as_data(wrapped.CellData[name])[first:first + count]
                  for name in wrapped.CellData.keys() if wrapped.CellData[name] is not None}
-    return sk.Mesh(points, connectivity, face_offsets=offsets, point_data=point_data, cell_data=cell_data)
+    return sk.Mesh(points, connectivity, face_offsets=offsets, point_data=point_data, cell_data=cell_data,
+                   point_roles=_point_roles(poly.GetPointData()))
 
 
 def _polydata_from_mesh(mesh, out):
@@ -88,11 +106,20 @@ def _polydata_from_mesh(mesh, out):
     cells.SetData(numpy_support.numpy_to_vtkIdTypeArray(mesh.face_offsets.astype(np.int64), deep=True),
                   numpy_support.numpy_to_vtkIdTypeArray(mesh.face_indices.astype(np.int64), deep=True))
     out.SetPolys(cells)
-    for kind, data in ((out.GetPointData(), mesh.point_data), (out.GetCellData(), mesh.cell_data)):
+    for kind, data, roles in ((out.GetPointData(), mesh.point_data, mesh.point_roles),
+                              (out.GetCellData(), mesh.cell_data, mesh.cell_roles)):
         for name, values in data.items():
+            role = roles.get(name)
+            if role == "color" and values.dtype.kind in "iu" and values.min() >= 0 and values.max() <= 255:
+                values = values.astype(np.uint8)  # byte colours, shown as they are
             array = numpy_support.numpy_to_vtk(np.ascontiguousarray(values), deep=True)
             array.SetName(name)
             kind.AddArray(array)
+            # The first array of a role is the active one (setting another would drop the first).
+            if role == "texture_coordinates" and kind.GetTCoords() is None:
+                kind.SetTCoords(array)
+            elif role == "color" and kind.GetScalars() is None:
+                kind.SetScalars(array)
 
 
 @smproxy.filter(name="SubdivKitRefine", label="SubdivKit Refine")

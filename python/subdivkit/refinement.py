@@ -1,12 +1,13 @@
 """Refinement, stencil matrices, limit points and progressive interpolation."""
 
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error, Scheme
-from .mesh import Mesh, _data_pairs, _data_shapes_like, _face_varying_triples
+from .mesh import Mesh, _data_arrays, _data_shapes_like, _face_varying_triples
 
 BOUNDARY_MODES = ("edges-and-corners", "edges", "none")
 
@@ -56,20 +57,31 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
         OpenSubdiv's FVarLinearInterpolation: 'none', 'corners-only', 'corners-plus1',
         'corners-plus2', 'boundaries' or 'all' (OpenSubdiv's default), as ``--fvar-boundary``.
 
-    The mesh's point_data is refined with the same rules as the points (any number of
-    columns); cell_data follows each face into its children. Crease sharpness decays
-    per level as in OpenSubdiv. The GIL is released while the engine works.
+    The mesh's float point_data is refined with the same rules as the points (any number
+    of columns), in the same pass; integer point_data (labels) is taken by origin, never
+    averaged; arrays whose ``point_roles`` entry is "normals" (and a face-varying "normal")
+    are left out with a UserWarning. cell_data follows each face into its children (the
+    faces a dual split makes around vertices and across edges take the value of their
+    first corner's face). Every split carries face_varying data, sqrt3 and mid-edge included
+    (docs/primvars.md says how). The roles come back with the arrays. Crease sharpness
+    decays per level as in OpenSubdiv. The GIL is released while the engine works.
     """
     _check_mesh(mesh, "refine")
     levels = _check_levels(levels)
     refined = _subdivkit._refine(mesh, scheme, params, levels, boundary, crease_method, int(threads), bool(all_levels),
-                                 int(start_level), _data_pairs(mesh.point_data, mesh.n_points, "point data"),
-                                 _data_pairs(mesh.cell_data, mesh.n_faces, "cell data"), _face_varying_triples(mesh),
-                                 str(fvar_boundary))
+                                 int(start_level),
+                                 _data_arrays(mesh.point_data, mesh.point_roles, mesh.n_points, "point data"),
+                                 _data_arrays(mesh.cell_data, mesh.cell_roles, mesh.n_faces, "cell data"),
+                                 _face_varying_triples(mesh), str(fvar_boundary))
+    if refined and refined[0]["dropped"]:
+        warnings.warn(f"refine: {', '.join(repr(n) for n in refined[0]['dropped'])} hold(s) normals, which refinement "
+                      "does not carry (a mix of unit normals is no normal); limit_positions() gives the exact limit "
+                      "normals", UserWarning, stacklevel=2)
     meshes = [Mesh._from_arrays(level, name=mesh.name,
                                 point_data=_data_shapes_like(level["point_data"], mesh.point_data),
                                 cell_data=_data_shapes_like(level["cell_data"], mesh.cell_data),
-                                face_varying=level["face_varying"])
+                                face_varying=level["face_varying"], point_roles=level["point_roles"],
+                                cell_roles=level["cell_roles"])
               for level in refined]
     return meshes if all_levels else meshes[-1]
 

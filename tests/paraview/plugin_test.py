@@ -4,7 +4,7 @@ subdivkit module. Checks face counts against the splits' arithmetic, that point 
 refined like the points (an affine function of the position stays one), and that an
 error leaves an empty output instead of stopping ParaView."""
 
-from paraview.simple import Box, Clean, PythonCalculator, Sphere
+from paraview.simple import Box, Clean, PythonCalculator, Sphere, TextureMaptoPlane
 from paraview import servermanager as sm
 
 import subdivkit
@@ -35,8 +35,21 @@ for i in range(data.GetNumberOfPoints()):
     assert abs(h.GetValue(i) - (2 * x + 3 * y - z + 1)) < 1e-5, (i, h.GetValue(i))
 assert data.GetPointData().GetArray("Normals") is None  # normals are left out
 
+# Integer arrays are labels (taken, never averaged) and the active texture coordinates stay
+# active: ParaView's Texture property works on the refined mesh.
+textured = TextureMaptoPlane(Input=sphere)
+labelled = PythonCalculator(Input=textured, Expression="(inputs[0].Points[:, 2] > 0) + 3", ArrayName="label")
+tri = SubdivKitRefine(Input=labelled, Scheme="loop", Levels=1)  # noqa: F821
+tri.UpdatePipeline()
+data = sm.Fetch(tri)
+label = data.GetPointData().GetArray("label")
+assert label.GetDataTypeAsString() == "int", label.GetDataTypeAsString()  # int32, as the library's integer arrays
+assert {label.GetValue(i) for i in range(data.GetNumberOfPoints())} == {3, 4}
+assert data.GetPointData().GetTCoords() is not None
+
 # A triangle scheme on quads: SubdivKit's message, an empty output, ParaView goes on.
 wrong = SubdivKitRefine(Input=cube, Scheme="loop", Levels=1)  # noqa: F821
 wrong.UpdatePipeline()
 assert wrong.GetDataInformation().GetNumberOfCells() == 0
-print("ParaView plugin: SubdivKit Refine ok (cube 96 quads, sphere Loop with point data, error gives empty output)")
+print("ParaView plugin: SubdivKit Refine ok (cube 96 quads, sphere Loop with point data, labels and texture "
+      "coordinates, error gives empty output)")

@@ -49,7 +49,7 @@ def test_point_and_cell_data_go_to_vtp_and_warn_elsewhere(tmp_path):
     sk.write_mesh(tmp_path / "data.vtp", mesh)
     text = (tmp_path / "data.vtp").read_bytes()
     assert b'Name="height"' in text and b'Name="id"' in text
-    with pytest.warns(UserWarning, match="no point or cell data"):
+    with pytest.warns(UserWarning, match="no place for point or cell data 'height', 'id'"):
         sk.write_mesh(tmp_path / "data.obj", mesh)
 
 

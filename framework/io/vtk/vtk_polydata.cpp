@@ -1,5 +1,6 @@
 #include "framework/io/vtk/vtk_polydata.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -19,6 +20,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include "framework/io/mesh_validate.h"
@@ -95,6 +97,15 @@ vtkSmartPointer<Array> new_array(const std::string& name, int components, std::s
 // `values` is already in VTK's cell or point order.
 vtkSmartPointer<vtkDataArray> to_vtk(const DataArray& a, const std::vector<double>& values) {
   const std::size_t tuples = values.size() / a.components;
+  // Integer colours within 0..255 as bytes, as PLY stores them: ParaView shows byte scalars
+  // as colours directly, and the reader (vtk_read.cpp role_of) knows them for colours again.
+  const bool bytes = std::all_of(values.begin(), values.end(), [](double x) { return x >= 0 && x <= 255; });
+  if (a.integer && a.role == ArrayRole::Color && bytes) {
+    auto array = new_array<vtkUnsignedCharArray>(a.name, a.components, tuples);
+    for (std::size_t i = 0; i < values.size(); ++i)
+      array->SetValue(vtkIdType(i), static_cast<unsigned char>(values[i]));
+    return array;
+  }
   if (a.integer) {
     auto array = new_array<vtkIntArray>(a.name, a.components, tuples);
     for (std::size_t i = 0; i < values.size(); ++i) array->SetValue(vtkIdType(i), int(values[i]));
@@ -201,13 +212,17 @@ vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level) {
   poly->SetPolys(cell_array({mesh.face_offsets.begin(), mesh.face_offsets.end()},
                             {mesh.face_vertices.begin(), mesh.face_vertices.end()}));
   poly->SetLines(lines(mesh));
+  vtkPointData& point_data = *poly->GetPointData();
   for (const DataArray& a : level.point_data) {
     const auto array = to_vtk(a, a.values);
-    poly->GetPointData()->AddArray(array);
+    point_data.AddArray(array);
     // Active attributes, so that ParaView shades with the normals and textures with the UVs.
-    if (a.role == ArrayRole::Normals && a.components == 3) poly->GetPointData()->SetNormals(array);
-    if (a.role == ArrayRole::TextureCoordinates && a.components <= 3) poly->GetPointData()->SetTCoords(array);
-    if (a.role == ArrayRole::Color) poly->GetPointData()->SetScalars(array);
+    // Only the first array of each role: setting another would drop the first from the
+    // file (vtkDataSetAttributes::SetAttribute removes the array it replaces).
+    if (a.role == ArrayRole::Normals && a.components == 3 && !point_data.GetNormals()) point_data.SetNormals(array);
+    if (a.role == ArrayRole::TextureCoordinates && a.components <= 3 && !point_data.GetTCoords())
+      point_data.SetTCoords(array);
+    if (a.role == ArrayRole::Color && !point_data.GetScalars()) point_data.SetScalars(array);
   }
   for (const DataArray& a : level.cell_data)
     poly->GetCellData()->AddArray(to_vtk(a, cell_order(a, cells)));

@@ -8,6 +8,7 @@
 
 #include <fstream>
 #include <map>
+#include <set>
 #include <vtkDataArray.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -23,8 +24,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A 4 x 2 grid of unit quads; UVs (x, y) left of x = 2, (x + 1, y) right of it.
-void write_seamed_grid(const fs::path& file) {
+// A 4 x 2 grid of unit quads (with `triangles`, each cut along a diagonal); UVs (x, y) left
+// of x = 2, (x + 1, y) right of it.
+void write_seamed_grid(const fs::path& file, bool triangles = false) {
   std::ofstream out(file);
   for (int j = 0; j <= 2; ++j)
     for (int i = 0; i <= 4; ++i) out << "v " << i << " " << j << " 0\n";
@@ -40,9 +42,13 @@ void write_seamed_grid(const fs::path& file) {
       const int corners[4] = {v, v + 1, v + 6, v + 5};
       int t[4];
       for (int k = 0; k < 4; ++k) t[k] = uv(corners[k], side);
-      out << "f";
-      for (int k = 0; k < 4; ++k) out << " " << corners[k] + 1 << "/" << t[k];
-      out << "\n";
+      auto face = [&](std::initializer_list<int> ks) {
+        out << "f";
+        for (int k : ks) out << " " << corners[k] + 1 << "/" << t[k];
+        out << "\n";
+      };
+      if (triangles) face({0, 1, 2}), face({0, 2, 3});
+      else face({0, 1, 2, 3});
     }
 }
 
@@ -97,7 +103,35 @@ TEST_CASE("--fvar-boundary is checked, and a vt number out of range is refused w
   check_refused("refine " + (dir / "grid.obj").string() + " --fvar-boundary sideways", dir / "o.obj", "--fvar-boundary");
   std::ofstream(dir / "bad.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/7\n";
   check_refused("refine " + (dir / "bad.obj").string() + " --scheme loop", dir / "o.obj", "bad.obj:5: this face uses vt number 7");
-  // Mid-edge points on a seam would need a value from both sides: no face-varying refinement.
-  check_refused("refine " + (dir / "grid.obj").string() + " --scheme mid-edge", dir / "o.obj",
-                "face-varying data (e.g. UVs with seams) is refined only by splits whose new faces lie each in one old face");
+}
+
+TEST_CASE("sqrt3 and mid-edge refine UVs with a seam: every vt is one side's UV map at its point") {
+  // Both splits make faces across the seam (docs/primvars.md, "Which splits"); each corner
+  // takes its value on one side. Mid-edge points are edge midpoints, so the affine UVs stay
+  // exactly (x, y) or (x + 1, y). sqrt3 in the default mode "all" keeps old values and puts
+  // face points at their face's centroid, which is where the face point is; the old
+  // vertices of this flat grid stay too (each ring is centrally symmetric, boundaries wait
+  // in the first step), so the same holds.
+  const auto dir = fresh_dir("cli-fvar-crossing");
+  write_seamed_grid(dir / "quads.obj");
+  write_seamed_grid(dir / "triangles.obj", true);
+  for (const auto& [scheme, input] : {std::pair<std::string, std::string>{"mid-edge", "quads.obj"},
+                                      std::pair<std::string, std::string>{"sqrt3", "triangles.obj"}}) {
+    const CliResult r = run_subdiv("refine " + (dir / input).string() + " --scheme " + scheme + " -l 1 -o " +
+                                   (dir / "out.obj").string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    const MeshData m = read_mesh(dir / "out.obj");
+    REQUIRE(m.face_varying.size() == 1);
+    const FaceVaryingArray& uv = m.face_varying[0];
+    std::set<int> sides;
+    for (size_t c = 0; c < m.face_vertices.size(); ++c) {
+      const Index v = m.face_vertices[c], t = uv.indices[c];
+      const double x = m.positions[3 * v], y = m.positions[3 * v + 1];
+      const int side = std::abs(uv.values[2 * t] - x) < 1e-9 ? 0 : std::abs(uv.values[2 * t] - x - 1) < 1e-9 ? 1 : -1;
+      CHECK_MESSAGE(side >= 0, scheme, ": vt ", t, " (", uv.values[2 * t], ") at x = ", x);
+      CHECK(uv.values[2 * t + 1] == doctest::Approx(y).epsilon(1e-9));
+      sides.insert(side);
+    }
+    CHECK(sides.size() == 2);
+  }
 }

@@ -268,3 +268,35 @@ TEST_CASE("write_pvd: rewriting replaces the levels in place and leaves no tempo
         std::vector<std::string>{"run.pvd", "run_levels", "run_levels/level_0.vtp"});
   CHECK(read_vtp(dir / "run_levels" / "level_0.vtp")->GetNumberOfPoints() == sample.vertex_count());
 }
+
+TEST_CASE("write_vtp: integer colours within 0..255 as bytes, the active scalars, read back as colours") {
+  TempDir dir;
+  const MeshData mesh = sample_mesh();
+  OutputLevel level;
+  level.mesh = &mesh;
+  DataArray colour{"color", 3, {}, true, ArrayRole::Color}, wide{"wide", 3, {}, true, ArrayRole::Color};
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    colour.values.insert(colour.values.end(), {255.0, double(v), 0.0});
+    wide.values.insert(wide.values.end(), {1000.0, double(v), 0.0});  // no byte: an int array
+  }
+  // Two arrays of one role: the first is the active one, and both are in the file.
+  level.point_data = {colour, wide};
+  write_vtp(dir / "colours.vtp", level);
+  const auto poly = read_vtp(dir / "colours.vtp");
+  REQUIRE(poly->GetPointData()->GetScalars());
+  CHECK(std::string(poly->GetPointData()->GetScalars()->GetName()) == "color");
+  REQUIRE(poly->GetPointData()->GetArray("color"));
+  REQUIRE(poly->GetPointData()->GetArray("wide"));
+  CHECK(poly->GetPointData()->GetArray("color")->GetDataType() == VTK_UNSIGNED_CHAR);
+  CHECK(poly->GetPointData()->GetArray("wide")->GetDataType() == VTK_INT);
+  const MeshData back = read_mesh(dir / "colours.vtp");
+  bool found = false;
+  for (const DataArray& a : back.point_data)
+    if (a.name == "color") {
+      found = true;
+      CHECK(a.role == ArrayRole::Color);
+      CHECK(a.integer);
+      CHECK(a.values == colour.values);
+    }
+  CHECK(found);
+}
