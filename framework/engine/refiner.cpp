@@ -170,8 +170,13 @@ Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const Ref
     const Scheme& scheme = *per_level[l];
     if (l == 0 || per_level[l - 1] != per_level[l]) check_face_sizes(scheme, h.levels.back());
     check_manifold_for(scheme, h.levels.back());
-    SplitResult step = split(scheme.split(), h.levels.back(), options.first_step + int(l));
-    if (splitter_info(scheme.split()).engine_propagates_tags)
+    // The last level may be faces only (RefineOptions::faces_only_last_level): then it
+    // has no edges to carry tags to.
+    const bool faces_only = options.faces_only_last_level && l + 1 == per_level.size() &&
+                            scheme.steps.size() == 1 && !scheme.steps.front().nonlinear &&
+                            splitter_info(scheme.split()).split_faces_only;
+    SplitResult step = split(scheme.split(), h.levels.back(), options.first_step + int(l), faces_only);
+    if (splitter_info(scheme.split()).engine_propagates_tags && !faces_only)
       propagate_tags(h.levels.back(), step, options.features.crease_method);
     pass_holes_down(h.levels.back(), step);
     if (!step.warning.empty()) h.warnings.push_back(fmt::format("level {}: {}", l + 1, step.warning));

@@ -29,6 +29,13 @@ struct RefineOptions {
   // such as sqrt3's boundary trisection, count from the original mesh; also the level l
   // seen by level-dependent formulas).
   int first_step = 0;
+  // Build the last level's faces only (no edges, vertex rings or feature tags), as
+  // OpenSubdiv's default UniformOptions does: enough for step_values, the level's data
+  // (primvar/level_data.h) and writing the mesh, not for analysis, limit positions,
+  // normals or refining further. Taken only where it is safe: the built-in primal splits,
+  // with one step and linear rules (smoothing passes and non-linear rules read the new
+  // level's rings); otherwise the last level is complete anyway.
+  bool faces_only_last_level = false;
   // Smooth interior rows replayed from learnt plans (rules/row_plans.h): the same rows,
   // faster; off only to compare or measure.
   bool use_row_plans = true;

@@ -33,20 +33,27 @@ std::vector<Index> quad_parent_faces(const Level& parent) {
   return out;
 }
 
-}  // namespace
-
-SplitResult split_quad(const Level& parent) {
-  ChildOrigins origins = primal_origins(parent, true);
-  origins.parent_face = quad_parent_faces(parent);
-  return {quad_split_topology(parent), std::move(origins)};
-}
-
-SplitResult split_triangle(const Level& parent) {
+ChildOrigins triangle_origins(const Level& parent) {
   ChildOrigins origins = primal_origins(parent, false);
   resize_bulk(origins.parent_face, 4 * size_t(parent.face_count()));
   for (Index f = 0; f < parent.face_count(); ++f)
     for (int t = 0; t < 4; ++t) origins.parent_face[4 * f + t] = f;
-  return {triangle_split_topology(parent), std::move(origins)};
+  return origins;
+}
+
+ChildOrigins quad_origins(const Level& parent) {
+  ChildOrigins origins = primal_origins(parent, true);
+  origins.parent_face = quad_parent_faces(parent);
+  return origins;
+}
+
+}  // namespace
+
+SplitResult split_quad(const Level& parent) { return {quad_split_topology(parent), quad_origins(parent)}; }
+SplitResult split_quad_faces(const Level& parent) { return {quad_split_faces(parent), quad_origins(parent)}; }
+SplitResult split_triangle(const Level& parent) { return {triangle_split_topology(parent), triangle_origins(parent)}; }
+SplitResult split_triangle_faces(const Level& parent) {
+  return {triangle_split_faces(parent), triangle_origins(parent)};
 }
 
 }  // namespace subdiv

@@ -63,32 +63,47 @@ void halves(const Level& P, Level& C, Index first_mid) {
 
 }  // namespace
 
-Level quad_split_topology(const Level& P) {
+namespace {
+
+// Child faces (and, with `edges`, their edges and the edges inside parent faces): child
+// face c = (v_i, mid(e_i), face point, mid(e_{i-1})) of parent corner c.
+template <bool edges>
+Level quad_children(const Level& P) {
   const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count(), N = P.corner_count();
   Level C;
   C.vertex_count = V + E + F;
   resize_bulk(C.face_offsets, N + 1);
   resize_bulk(C.face_vertices, 4 * size_t(N));
-  resize_bulk(C.face_edges, 4 * size_t(N));
-  resize_bulk(C.edge_vertices, 2 * size_t(2 * E + N));
-  resize_bulk(C.edge_faces, 2 * size_t(2 * E + N));
-  // Faces: child face c = (v_i, mid(e_i), face point, mid(e_{i-1})) of parent corner c.
+  if (edges) {
+    resize_bulk(C.face_edges, 4 * size_t(N));
+    resize_bulk(C.edge_vertices, 2 * size_t(2 * E + N));
+    resize_bulk(C.edge_faces, 2 * size_t(2 * E + N));
+  }
   tbb::parallel_for(Index(0), F, [&](Index f) {
     const Index o = P.face_offsets[f], k = P.face_size(f);
     for (Index i = 0; i < k; ++i) {
       const Index c = o + i, prev = o + (i + k - 1) % k, next = o + (i + 1) % k;
       const Index v = P.face_vertices[c], e = P.face_edges[c], ep = P.face_edges[prev];
       Index* fv = &C.face_vertices[4 * size_t(c)];
-      Index* fe = &C.face_edges[4 * size_t(c)];
       fv[0] = v, fv[1] = V + e, fv[2] = V + E + f, fv[3] = V + ep;
-      fe[0] = half_at(P, e, v), fe[1] = 2 * E + c, fe[2] = 2 * E + prev, fe[3] = half_in(P, ep, v);
       C.face_offsets[c + 1] = 4 * (c + 1);
+      if (!edges) continue;
+      Index* fe = &C.face_edges[4 * size_t(c)];
+      fe[0] = half_at(P, e, v), fe[1] = 2 * E + c, fe[2] = 2 * E + prev, fe[3] = half_in(P, ep, v);
       // Inner edge of corner c: mid(e_i) -> face point; its reverse lies in the next corner's face.
       C.edge_vertices[2 * (2 * size_t(E) + c)] = V + e, C.edge_vertices[2 * (2 * size_t(E) + c) + 1] = V + E + f;
       C.edge_faces[2 * (2 * size_t(E) + c)] = c, C.edge_faces[2 * (2 * size_t(E) + c) + 1] = next;
     }
   });
   C.face_offsets[0] = 0;
+  return C;
+}
+
+}  // namespace
+
+Level quad_split_topology(const Level& P) {
+  const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count();
+  Level C = quad_children<true>(P);
   halves(P, C, V);
   if (!P.manifold()) {
     complete_non_manifold_child(P, C);
@@ -152,17 +167,23 @@ Level quad_split_topology(const Level& P) {
   return C;
 }
 
-Level triangle_split_topology(const Level& P) {
+namespace {
+
+// Child faces (and, with `edges`, their edges and the edges inside parent faces): corner
+// face 4f+i = (v_i, mid e_i, mid e_{i-1}); middle face 4f+3 = (mid e_0, mid e_1, mid e_2).
+// Inner edge 2E+3f+i runs mid e_i -> mid e_{i-1}: forward in corner face i, backwards in the middle.
+template <bool edges>
+Level triangle_children(const Level& P) {
   const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count();
   Level C;
   C.vertex_count = V + E;
   resize_bulk(C.face_offsets, 4 * size_t(F) + 1);
   resize_bulk(C.face_vertices, 12 * size_t(F));
-  resize_bulk(C.face_edges, 12 * size_t(F));
-  resize_bulk(C.edge_vertices, 2 * size_t(2 * E + 3 * F));
-  resize_bulk(C.edge_faces, 2 * size_t(2 * E + 3 * F));
-  // Corner face 4f+i = (v_i, mid e_i, mid e_{i-1}); middle face 4f+3 = (mid e_0, mid e_1, mid e_2).
-  // Inner edge 2E+3f+i runs mid e_i -> mid e_{i-1}: forward in corner face i, backwards in the middle.
+  if (edges) {
+    resize_bulk(C.face_edges, 12 * size_t(F));
+    resize_bulk(C.edge_vertices, 2 * size_t(2 * E + 3 * F));
+    resize_bulk(C.edge_faces, 2 * size_t(2 * E + 3 * F));
+  }
   tbb::parallel_for(Index(0), F, [&](Index f) {
     const Index o = P.face_offsets[f];
     for (int i = 0; i < 3; ++i) {
@@ -170,10 +191,11 @@ Level triangle_split_topology(const Level& P) {
       const Index v = P.face_vertices[o + i], e = P.face_edges[o + i], ep = P.face_edges[o + ip];
       const Index cf = 4 * f + i, inner = 2 * E + 3 * f + i;
       Index* fv = &C.face_vertices[3 * size_t(cf)];
-      Index* fe = &C.face_edges[3 * size_t(cf)];
       fv[0] = v, fv[1] = V + e, fv[2] = V + ep;
-      fe[0] = half_at(P, e, v), fe[1] = inner, fe[2] = half_in(P, ep, v);
       C.face_vertices[3 * size_t(4 * f + 3) + i] = V + e;
+      if (!edges) continue;
+      Index* fe = &C.face_edges[3 * size_t(cf)];
+      fe[0] = half_at(P, e, v), fe[1] = inner, fe[2] = half_in(P, ep, v);
       C.face_edges[3 * size_t(4 * f + 3) + i] = 2 * E + 3 * f + (i + 1) % 3;
       C.edge_vertices[2 * size_t(inner)] = V + e, C.edge_vertices[2 * size_t(inner) + 1] = V + ep;
       C.edge_faces[2 * size_t(inner)] = cf, C.edge_faces[2 * size_t(inner) + 1] = 4 * f + 3;
@@ -181,6 +203,14 @@ Level triangle_split_topology(const Level& P) {
     for (int t = 0; t < 4; ++t) C.face_offsets[4 * f + t + 1] = 3 * (4 * f + t + 1);
   });
   C.face_offsets[0] = 0;
+  return C;
+}
+
+}  // namespace
+
+Level triangle_split_topology(const Level& P) {
+  const Index V = P.vertex_count, E = P.edge_count();
+  Level C = triangle_children<true>(P);
   halves(P, C, V);
   if (!P.manifold()) {
     complete_non_manifold_child(P, C);
@@ -230,5 +260,8 @@ Level triangle_split_topology(const Level& P) {
   });
   return C;
 }
+
+Level quad_split_faces(const Level& P) { return quad_children<false>(P); }
+Level triangle_split_faces(const Level& P) { return triangle_children<false>(P); }
 
 }  // namespace subdiv

@@ -15,4 +15,9 @@ namespace subdiv {
 Level quad_split_topology(const Level& parent);
 Level triangle_split_topology(const Level& parent);
 
+// The child's faces only (vertex_count, face_offsets, face_vertices; no edges or rings):
+// for a last level that nothing refines further, as OpenSubdiv's default UniformOptions.
+Level quad_split_faces(const Level& parent);
+Level triangle_split_faces(const Level& parent);
+
 }  // namespace subdiv

@@ -30,10 +30,12 @@ struct SplitterTable {
     using O = OriginKind;
     SplitterInfo quad = builtin("quad", "primal 1-to-k split of any polygon: new face and edge points", split_quad,
                                 {O::Vertex, O::Edge, O::Face});
+    quad.split_faces_only = [](const Level& parent, int) { return split_quad_faces(parent); };
     quad.engine_propagates_tags = true;
     quad.handles_non_manifold = true;
     SplitterInfo tri = builtin("triangle", "primal 1-to-4 split of triangles: new edge points", split_triangle,
                                {O::Vertex, O::Edge});
+    tri.split_faces_only = [](const Level& parent, int) { return split_triangle_faces(parent); };
     tri.required_face_size = 3;
     tri.engine_propagates_tags = true;
     tri.handles_non_manifold = true;
@@ -85,8 +87,10 @@ const SplitterInfo& splitter_info(SplitKind kind) {
   throw Error(fmt::format("unknown split id {}", id));
 }
 
-SplitResult split(SplitKind kind, const Level& parent, int step_index) {
-  return splitter_info(kind).split(parent, step_index);
+SplitResult split(SplitKind kind, const Level& parent, int step_index, bool faces_only) {
+  const SplitterInfo& info = splitter_info(kind);
+  if (faces_only && info.split_faces_only) return info.split_faces_only(parent, step_index);
+  return info.split(parent, step_index);
 }
 
 SplitKind split_kind_from_name(std::string_view name) {

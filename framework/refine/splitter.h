@@ -29,6 +29,10 @@ struct SplitResult {
 SplitResult split_quad(const Level& parent);
 // Primal 1-to-4 split of triangles; the caller checks that all faces are triangles.
 SplitResult split_triangle(const Level& parent);
+// The same two splits with the child's faces only (primal_topology.h: no edges or rings),
+// for a last level that nothing refines further.
+SplitResult split_quad_faces(const Level& parent);
+SplitResult split_triangle_faces(const Level& parent);
 
 // sqrt(3) (Kobbelt 2000): one new point per face, old edges flipped; boundaries and sharp
 // edges are trisected every second step (step_index odd, counted from 0 at the input).
@@ -49,6 +53,10 @@ constexpr std::uint16_t kFirstRegisteredSplit = 16;
 struct SplitterInfo {
   std::string name, description;
   std::function<SplitResult(const Level& parent, int step_index)> split;
+  // Optional: the same split giving the child's faces only (vertex_count, face_offsets,
+  // face_vertices; no edges, rings or tags), for a last level that nothing refines further
+  // (RefineOptions::faces_only_last_level). Null: `split` is used.
+  std::function<SplitResult(const Level& parent, int step_index)> split_faces_only;
   // Faces it accepts: 0 any polygon, 3 triangles only, 4 quads only.
   int required_face_size = 0;
   // The parent elements whose new points a scheme gives rules for (a scheme file may have
@@ -83,7 +91,8 @@ struct SplitterInfo {
   std::string origin = "built-in";  // or the plugin that registered it
 };
 
-SplitResult split(SplitKind kind, const Level& parent, int step_index);
+// With `faces_only`, the splitter's split_faces_only where it has one.
+SplitResult split(SplitKind kind, const Level& parent, int step_index, bool faces_only = false);
 // The built-in names ("quad", "triangle", "sqrt3", "dual", "mid-edge") and registered ones;
 // throws subdiv::Error listing the known names for an unknown one.
 SplitKind split_kind_from_name(std::string_view name);

@@ -68,6 +68,8 @@ WorkerReport run_subdivkit(const Job& job, const Mesh& mesh) {
   options.threads = job.threads;
   options.use_row_plans = job.row_plans;
   options.use_kernels = job.kernels;
+  // As OpenSubdiv's default UniformOptions: the last level's faces only (full with --osd-topology full).
+  options.faces_only_last_level = !job.osd_full_topology;
 
   return repeat_cold_and_warm(job, [&](Timings& t, WorkerReport* report) {
     subdiv::RowPaths paths;  // counted in the cold repetition

@@ -393,7 +393,7 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
   }
 
   const int osd_variants = int(osd_topologies.size());
-  const int steps = int(cases.size()) * (int(want_subdivkit) + int(want_osd) * osd_variants);
+  const int steps = int(cases.size()) * osd_variants * (int(want_subdivkit) + int(want_osd));
   Progress progress(steps);
   int step = 0, failures = 0;
   for (const auto& c : cases) {
@@ -404,66 +404,71 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
     job.faces = base_faces_for(base.faces, c.level, max_refined);
     if (!check) job.check_max = -1;  // the workers send no positions back
     const std::string what = c.scheme + " " + c.mesh + " level " + std::to_string(c.level);
-    RunResult ours;
-    std::vector<RunResult> theirs;  // one per OpenSubdiv topology variant
-    if (want_subdivkit) {
-      progress.show(++step, what + ": SubdivKit");
-      job.side = "subdivkit";
-      ours = run_worker(job);
-    }
-    if (want_osd)
-      for (bool full : osd_topologies) {
-        progress.show(++step, what + ": OpenSubdiv" + (full ? " (full topology)" : ""));
+    // One run per topology variant on each side: the last level's faces only as
+    // OpenSubdiv's default, and full topology (--osd-topology full or both) on both sides.
+    std::vector<RunResult> ours, theirs;
+    for (bool full : osd_topologies) {
+      const std::string variant = full ? " (full topology)" : "";
+      job.osd_full_topology = full;
+      if (want_subdivkit) {
+        progress.show(++step, what + ": SubdivKit" + variant);
+        job.side = "subdivkit";
+        ours.push_back(run_worker(job));
+      }
+      if (want_osd) {
+        progress.show(++step, what + ": OpenSubdiv" + variant);
         job.side = "osd";
-        job.osd_full_topology = full;
         theirs.push_back(run_worker(job));
       }
+    }
     progress.clear();
 
     const std::string head = c.scheme + " mesh=" + c.mesh + " level=" + std::to_string(c.level);
-    for (size_t v = 0; v < (want_osd ? theirs.size() : 1); ++v)
+    RunResult none;
+    for (size_t v = 0; v < osd_topologies.size(); ++v)
       for (bool warm : {false, true})
         for (bool user : {false, true}) {
-          const RunResult none;
-          const RunResult& osd = want_osd ? theirs[v] : none;
           std::string line = head + " memory=" + (warm ? "warm" : "cold") + " clock=" + (user ? "user" : "wall");
-          if (want_osd) line += std::string(" osd_topology=") + (osd_topologies[v] ? "full" : "default");
-          line += timing_fields(ours, osd, warm, user);
+          line += std::string(" topology=") + (osd_topologies[v] ? "full" : "default");
+          line += timing_fields(want_subdivkit ? ours[v] : none, want_osd ? theirs[v] : none, warm, user);
           std::printf("%s\n", line.c_str());
         }
 
-    std::string line = head + " faces=" + std::to_string(ours.ok ? ours.report.base_faces : job.faces);
+    RunResult& first = want_subdivkit ? ours[0] : none;  // the headline variant
+    std::string line = head + " faces=" + std::to_string(first.ok ? first.report.base_faces : job.faces);
     auto field = [&](const std::string& name, const std::string& value) { line += " " + name + "=" + value; };
-    const RunResult* any = ours.ok ? &ours : nullptr;
+    const RunResult* any = first.ok ? &first : nullptr;
     for (const auto& t : theirs) any = any ? any : (t.ok ? &t : nullptr);
     if (any) field("refined_faces", std::to_string(any->report.faces));
     field("threads", std::to_string(base.threads));
-    field("subdivkit_peak_mb", ours.ok ? fmt_ms(ours.report.peak_mb) : "n/a");
+    for (size_t v = 0; v < ours.size(); ++v)
+      field(osd_topologies[v] ? "subdivkit_full_peak_mb" : "subdivkit_peak_mb", ours[v].ok ? fmt_ms(ours[v].report.peak_mb) : "n/a");
     for (size_t v = 0; v < theirs.size(); ++v)
       field(osd_topologies[v] ? "osd_full_peak_mb" : "osd_peak_mb", theirs[v].ok ? fmt_ms(theirs[v].report.peak_mb) : "n/a");
-    if (ours.ok) {
+    if (first.ok) {
       char digest[24];
-      std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(ours.report.digest));
+      std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(first.report.digest));
       field("digest", digest);
-      field("warm_bits", ours.report.warm_digest_same ? "same" : "DIFFERENT");
+      field("warm_bits", first.report.warm_digest_same ? "same" : "DIFFERENT");
       if (!job.tables) {
-        field("kernel_points", std::to_string(ours.report.kernel_points));
-        field("plan_points", std::to_string(ours.report.plan_points));
-        field("generic_points", std::to_string(ours.report.generic_points));
+        field("kernel_points", std::to_string(first.report.kernel_points));
+        field("plan_points", std::to_string(first.report.plan_points));
+        field("generic_points", std::to_string(first.report.generic_points));
       }
-      if (!ours.report.warm_digest_same) ++failures;
+      if (!first.report.warm_digest_same) ++failures;
     }
-    if (!ours.ok && want_subdivkit) field("subdivkit_error", "\"" + ours.error + "\""), ++failures;
+    for (const auto& r : ours)
+      if (!r.ok) field("subdivkit_error", "\"" + r.error + "\""), ++failures;
     for (const auto& t : theirs)
       if (!t.ok) field("osd_error", "\"" + t.error + "\""), ++failures;
-    if (check && ours.ok && !theirs.empty() && theirs[0].ok) {
-      const CheckResult r = compare(ours.report, theirs[0].report);
+    if (check && first.ok && !theirs.empty() && theirs[0].ok) {
+      const CheckResult r = compare(first.report, theirs[0].report);
       char diff[32];
       std::snprintf(diff, sizeof diff, "%.3g", r.maxdiff);
       if (r.ok) {
         field("check", "ok");
         field("maxdiff", diff);
-        field("checked", std::to_string(r.compared) + "/" + std::to_string(ours.report.vertices));
+        field("checked", std::to_string(r.compared) + "/" + std::to_string(first.report.vertices));
       } else {
         ++failures;
         field("check", "FAIL");
@@ -535,9 +540,9 @@ int main(int argc, char** argv) {
   app.add_option("--check-max", job.check_max, "vertices compared per level with --check sample")
       ->capture_default_str();
   app.add_option("--osd-topology", osd_topology,
-                 "OpenSubdiv's last level: default (UniformOptions as they are: no edges or vertex rings "
-                 "in the last level, as its users run it), full (fullTopologyInLastLevel), or both (a "
-                 "second set of lines)")
+                 "the last level's topology, on both sides: default (faces only, OpenSubdiv's UniformOptions "
+                 "as its users run it, and RefineOptions::faces_only_last_level), full (edges and vertex "
+                 "rings too: fullTopologyInLastLevel), or both (a second set of lines)")
       ->capture_default_str()
       ->check(CLI::IsMember({"default", "full", "both"}));
   std::string row_plans = "on";

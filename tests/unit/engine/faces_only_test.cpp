@@ -1,0 +1,37 @@
+// RefineOptions::faces_only_last_level (framework/engine/refiner.h): the last level built as
+// OpenSubdiv's default UniformOptions builds it, faces only.
+#include <doctest/doctest.h>
+
+#include "support/refine_helpers.h"
+
+using namespace subdiv;
+using namespace subdiv::test;
+
+// RefineOptions::faces_only_last_level: the last level's faces, vertex count and origins as
+// with full topology, and the same values from step_values; other splits and smoothing
+// passes keep full topology.
+TEST_CASE("a faces-only last level has the full level's faces and gives the same values") {
+  for (const auto& [name, mesh] : {std::pair{"catmull-clark", torus(6, 5)}, std::pair{"catmull-clark", pyramid()},
+                                   std::pair{"loop", grid(4, 3, true)}, std::pair{"sqrt3", torus(6, 5, true)},
+                                   std::pair{"loop-composite", torus(6, 5, true)}}) {
+    CAPTURE(name);
+    const auto scheme = load_scheme(name);
+    RefineOptions full, faces;
+    full.levels = faces.levels = 2;
+    faces.faces_only_last_level = true;
+    const Hierarchy a = refine_topology(*scheme, mesh.level(), full);
+    const Hierarchy b = refine_topology(*scheme, mesh.level(), faces);
+    const Level &la = a.levels.back(), &lb = b.levels.back();
+    CHECK(la.vertex_count == lb.vertex_count);
+    CHECK(la.face_offsets == lb.face_offsets);
+    CHECK(la.face_vertices == lb.face_vertices);
+    CHECK(a.origins.back().kind == b.origins.back().kind);
+    CHECK(a.origins.back().parent == b.origins.back().parent);
+    const bool primal_one_step = std::string(name) == "catmull-clark" || std::string(name) == "loop";
+    CHECK(lb.edge_count() == (primal_one_step ? 0 : la.edge_count()));
+    std::vector<double> va = mesh.positions, vb = mesh.positions;
+    for (int l = 0; l < 2; ++l) va = step_values(*scheme, a, l, va, 3, full), vb = step_values(*scheme, b, l, vb, 3, faces);
+    CHECK(va == vb);
+    CHECK(a.levels[1].edge_count() == b.levels[1].edge_count());  // only the last level is cut short
+  }
+}
