@@ -1,0 +1,63 @@
+"""pvbatch: "SubdivKit Refine" on ParaView's own sources (a cube and a sphere with an
+Elevation array) agrees with `subdiv refine` on the same input, written to a file: counts,
+positions, the input's point and cell arrays and SubdivKit's (origin, valence, level,
+vertex_class, parent_face, base_face), for two schemes (and a scheme file), two levels;
+changing Levels 2 -> 3 re-executes; AllLevels gives every level as a multiblock."""
+
+import os
+
+from paraview.simple import Box, Clean, Elevation, GenerateIds, Sphere
+
+import pv_support as pv
+
+pv.load_plugin(globals())
+
+# Inputs: a closed quad cube (Box keeps a copy of each corner per face; Clean merges them) and
+# a triangulated sphere, both with ParaView's Elevation point array; the cube also with a cell
+# array (GenerateIds' cell ids), which must follow the faces.
+cube = Elevation(Input=GenerateIds(Input=Clean(Input=Box())), LowPoint=[-0.5, -0.5, -0.5], HighPoint=[0.5, 0.5, 0.5])
+sphere = Elevation(Input=Sphere(ThetaResolution=12, PhiResolution=8), LowPoint=[0, 0, -0.5], HighPoint=[0, 0, 0.5])
+inputs = {"cube": (cube, pv.write_input(cube, "cube.vtp")), "sphere": (sphere, pv.write_input(sphere, "sphere.vtp"))}
+butterfly_file = os.path.join(pv.SOURCE_DIR, "schemes", "butterfly.json")
+
+cases = [("cube", "catmull-clark", "", 1), ("cube", "catmull-clark", "", 2),
+         ("sphere", "loop", "", 1), ("sphere", "loop", "", 2),
+         ("sphere", "", butterfly_file, 2)]  # a scheme given as a .json file
+for name, scheme, scheme_file, levels in cases:
+    source, path = inputs[name]
+    refine = SubdivKitRefine(Input=source, Scheme=scheme or "catmull-clark", SchemeFile=scheme_file,  # noqa: F821
+                             Levels=levels)
+    refine.UpdatePipeline()
+    got = pv.fetch(refine)
+    want = pv.cli_refine(path, f"{name}-{scheme}-{levels}", "-s", scheme_file or scheme, "-l", levels)
+    pv.assert_same_polydata(got, want, (name, scheme or scheme_file, levels))
+    names = pv.arrays(got.GetPointData())
+    assert {"Elevation", "origin", "valence", "level", "vertex_class"} <= set(names), sorted(names)
+    assert got.GetPointData().GetArray("level").GetRange() == (levels, levels)
+    print(f"{name} {scheme or os.path.basename(scheme_file)} level {levels}: {got.GetNumberOfPoints()} points, "
+          f"{got.GetNumberOfPolys()} faces, as subdiv refine")
+
+# Levels 2 -> 3 on the same proxy: the filter runs again and gives level 3's counts.
+refine = SubdivKitRefine(Input=cube, Scheme="catmull-clark", Levels=2)  # noqa: F821
+refine.UpdatePipeline()
+before = refine.GetDataInformation().GetNumberOfCells()
+refine.Levels = 3
+refine.UpdatePipeline()
+got = pv.fetch(refine)
+want = pv.cli_refine(inputs["cube"][1], "cube-cc-3", "-s", "catmull-clark", "-l", 3)
+pv.assert_same_polydata(got, want, "levels 2 -> 3")
+assert got.GetNumberOfPolys() == 4 * before, (before, got.GetNumberOfPolys())
+print(f"Levels 2 -> 3: re-executed, {before} -> {got.GetNumberOfPolys()} faces")
+
+# Every level as a multiblock: block k is `subdiv refine -o X.pvd`'s level_k.vtp.
+refine.AllLevels = 1
+refine.UpdatePipeline()
+blocks = pv.fetch(refine)
+assert blocks.IsA("vtkMultiBlockDataSet") and blocks.GetNumberOfBlocks() == 4, blocks.GetClassName()
+pvd = os.path.join(pv.WORK, "cube-levels.pvd")
+pv.cli("refine", inputs["cube"][1], "-q", "-s", "catmull-clark", "-l", 3, "-o", pvd)
+for k in range(4):
+    pv.assert_same_polydata(blocks.GetBlock(k), pv.read_vtp(os.path.join(pv.WORK, "cube-levels_levels", f"level_{k}.vtp")),
+                            f"multiblock level {k}")
+print("AllLevels: 4 blocks, each as subdiv refine's .pvd level")
+print("refine_test: ok")
