@@ -2,7 +2,8 @@
 # The installed plugin loads where ParaView looks for plugins: `cmake --install` into a
 # temporary prefix, then pvbatch finds "SubdivKit Refine" without LoadPlugin, through
 # PV_PLUGIN_PATH (the plugin's folder) and through PV_PLUGIN_CONFIG_FILE (the installed
-# subdivkit.plugins.xml, which also lists it in the GUI's plugin manager). The installed
+# subdivkit.plugins.xml, which also lists it in the GUI's plugin manager), and the GUI
+# under Xvfb where xvfb-run is installed. The installed
 # plugin links the installed libsubdiv and ParaView's VTK only: one VTK in the process.
 # Environment: SUBDIV_BUILD_DIR, SUBDIV_PARAVIEW_PLUGIN_SUBDIR (lib/paraview-X.Y/plugins
 # under the prefix), PVBATCH, CMAKE_COMMAND.
@@ -31,4 +32,12 @@ PV_PLUGIN_PATH="$plugins/SubdivKit" "$PVBATCH" "$script"
 echo "PV_PLUGIN_PATH=$plugins/SubdivKit: SubdivKit Refine found without LoadPlugin"
 PV_PLUGIN_CONFIG_FILE="$plugins/subdivkit.plugins.xml" "$PVBATCH" "$script"
 echo "PV_PLUGIN_CONFIG_FILE=$plugins/subdivkit.plugins.xml: found too"
+# The GUI the same way, under Xvfb (ParaView's --script runs the check after the plugins load).
+if command -v xvfb-run > /dev/null && command -v paraview > /dev/null; then
+  gui_script="$prefix/gui_check.py"
+  sed "s|^assert .*|open('$gui_script.ok', 'w').write('ok')|" "$script" > "$gui_script"
+  PV_PLUGIN_PATH="$plugins/SubdivKit" xvfb-run -a paraview --script="$gui_script" --exit > "$prefix/gui.log" 2>&1 || true
+  test -f "$gui_script.ok" || { echo "the ParaView GUI did not run SubdivKit Refine:" >&2; cat "$prefix/gui.log" >&2; exit 1; }
+  echo "the ParaView GUI (under Xvfb) found it through PV_PLUGIN_PATH too"
+fi
 echo "install_test: ok"

@@ -1,0 +1,166 @@
+"""The screenshots of docs/paraview.md, rendered headless:
+
+    xvfb-run -a pvbatch plugins/paraview/examples/screenshots.py docs/images
+
+with the plugin found through PV_PLUGIN_PATH, SUBDIV_PARAVIEW_PLUGIN or the subdivkit module
+(PYTHONPATH=build/python). Writes paraview-creased-cube.png (one cube refined three ways:
+smooth, creases from a cell array on line cells, creases from the feature angle; coloured
+by vertex_class) and paraview-textured-sphere.png (a coarse sphere with texture coordinates,
+and Loop's refinement of it carrying them), and paraview-spectrum.png (SubdivKit Analyze's
+spectrum in a line chart)."""
+
+import os
+import sys
+
+from paraview import simple as pv
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkImageData, vtkPolyData
+from vtkmodules.vtkIOImage import vtkPNGWriter
+
+out_dir = sys.argv[1] if len(sys.argv) > 1 else "."
+if not hasattr(pv, "SubdivKitRefine"):  # not loaded at start through PV_PLUGIN_PATH
+    if os.environ.get("SUBDIV_PARAVIEW_PLUGIN"):
+        pv.LoadPlugin(os.environ["SUBDIV_PARAVIEW_PLUGIN"], remote=False, ns=vars(pv))
+    else:
+        import subdivkit
+        subdivkit.load_paraview_plugin(vars(pv))
+
+
+def cube_with_crease_lines():
+    """A unit cube of 6 quads plus two line cells, its top rim and its bottom rim; cell
+    array "sharpness_in": 10 (infinitely sharp) on the top rim, 2 (semi-sharp: sharp for
+    two levels, then smooth) on the bottom one, 0 on the faces."""
+    corners = [(x - 0.5, y - 0.5, z - 0.5) for x, y, z in
+               [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]]
+    faces = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
+    lines = [((4, 5, 6, 7, 4), 10.0), ((0, 1, 2, 3, 0), 2.0)]
+    poly, points, line_cells, face_cells = vtkPolyData(), vtkPoints(), vtkCellArray(), vtkCellArray()
+    for p in corners:
+        points.InsertNextPoint(p)
+    for ids, _ in lines:
+        line_cells.InsertNextCell(len(ids), ids)
+    for f in faces:
+        face_cells.InsertNextCell(4, f)
+    poly.SetPoints(points)
+    poly.SetLines(line_cells)
+    poly.SetPolys(face_cells)
+    sharpness = vtkDoubleArray()
+    sharpness.SetName("sharpness_in")
+    for v in [s for _, s in lines] + [0.0] * len(faces):
+        sharpness.InsertNextValue(v)
+    poly.GetCellData().AddArray(sharpness)
+    source = pv.PVTrivialProducer()
+    source.GetClientSideObject().SetOutput(poly)
+    return source
+
+
+def checker_png(path, squares=8, size=256):
+    image = vtkImageData()
+    image.SetDimensions(size, size, 1)
+    image.AllocateScalars(3, 3)  # unsigned char RGB
+    cell = size // squares
+    for y in range(size):
+        for x in range(size):
+            dark = ((x // cell) + (y // cell)) % 2
+            for c, (a, b) in enumerate(((230, 40), (200, 90), (120, 160))):
+                image.SetScalarComponentFromDouble(x, y, 0, c, b if dark else a)
+    writer = vtkPNGWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(image)
+    writer.Write()
+
+
+def render_view(size):
+    view = pv.CreateView("RenderView")
+    view.ViewSize = size
+    view.OrientationAxesVisibility = 0
+    view.Background = [1, 1, 1]
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    return view
+
+
+def show(source, view, x, colour_by=None, representation="Surface With Edges"):
+    moved = pv.Transform(Input=source)
+    moved.Transform.Translate = [x, 0, 0]
+    display = pv.Show(moved, view)
+    display.SetRepresentationType(representation)
+    if colour_by:
+        pv.ColorBy(display, ("POINTS", colour_by))
+        display.LookupTable = pv.GetColorTransferFunction(colour_by)
+        display.LookupTable.ApplyPreset("Rainbow Uniform", True)
+        display.LookupTable.RescaleTransferFunction(0, 3)
+    return display
+
+
+def creased_cube(path):
+    view = render_view([1200, 500])
+    cube = pv.Clean(Input=pv.Box())
+    lines = cube_with_crease_lines()
+    smooth = pv.SubdivKitRefine(Input=cube, Scheme="catmull-clark", Levels=3)
+    by_array = pv.SubdivKitRefine(Input=lines, Scheme="catmull-clark", Levels=3, CreaseArray="sharpness_in")
+    by_angle = pv.SubdivKitRefine(Input=cube, Scheme="catmull-clark", Levels=3, UseFeatureAngle=1, FeatureAngle=40)
+    for i, refined in enumerate((smooth, by_array, by_angle)):
+        display = show(refined, view, 1.6 * i, "vertex_class")
+    display.SetScalarBarVisibility(view, True)
+    bar = pv.GetScalarBar(display.LookupTable, view)
+    bar.Title = "vertex_class: 0 smooth, 1 dart, 2 crease, 3 corner"
+    bar.ComponentTitle = ""
+    bar.TitleColor = bar.LabelColor = [0, 0, 0]
+    bar.Orientation = "Horizontal"
+    bar.WindowLocation = "Lower Center"
+    bar.ScalarBarLength = 0.4
+    bar.AutomaticLabelFormat = 0
+    bar.LabelFormat = bar.RangeLabelFormat = "%.0f"
+    bar.UseCustomLabels = 1
+    bar.CustomLabels = [0, 1, 2, 3]
+    view.CameraParallelProjection = 1
+    view.CameraPosition = [1.6 + 2.0, -5.0, 3.0]
+    view.CameraFocalPoint = [1.6, 0, 0]
+    view.CameraViewUp = [0, 0, 1]
+    view.ResetCamera()
+    view.CameraParallelScale *= 0.75
+    view.CameraFocalPoint = [1.6, 0, -0.25]  # room below for the colour bar
+    pv.SaveScreenshot(path, view, ImageResolution=[1200, 500])
+
+
+def textured_sphere(path, texture_png):
+    view = render_view([900, 450])
+    coarse = pv.TextureMaptoSphere(Input=pv.Sphere(ThetaResolution=8, PhiResolution=6), PreventSeam=1)
+    fine = pv.SubdivKitRefine(Input=coarse, Scheme="loop", Levels=3)
+    texture = pv.CreateTexture(texture_png)
+    for i, source in enumerate((coarse, fine)):
+        display = show(source, view, 1.3 * i, representation="Surface" if i else "Surface With Edges")
+        display.Texture = texture
+    view.CameraParallelProjection = 1
+    view.CameraPosition = [0.65, -3.2, 0.8]
+    view.CameraFocalPoint = [0.65, 0, 0]
+    view.CameraViewUp = [0, 0, 1]
+    view.ResetCamera()
+    view.CameraParallelScale *= 0.7
+    pv.SaveScreenshot(path, view, ImageResolution=[900, 450])
+
+
+def spectrum_chart(path):
+    analyze = pv.SubdivKitAnalyze(Scheme="loop", Valences=[3, 12], Eigenvalues=6)
+    chart = pv.CreateView("XYChartView")
+    chart.ViewSize = [800, 450]
+    display = pv.Show(pv.OutputPort(analyze, 1), chart)
+    display.UseIndexForXAxis = 0
+    display.XArrayName = "valence"
+    display.SeriesVisibility = ["lambda_1", "lambda_2", "lambda_3", "lambda_4", "lambda_1^2"]
+    chart.LeftAxisTitle = "eigenvalue modulus"
+    chart.BottomAxisTitle = "valence"
+    chart.ChartTitle = "Loop: leading eigenvalues of the subdivision matrix (SubdivKit Analyze)"
+    pv.SaveScreenshot(path, chart, ImageResolution=[800, 450])
+
+
+os.makedirs(out_dir, exist_ok=True)
+creased_cube(os.path.join(out_dir, "paraview-creased-cube.png"))
+texture = os.path.join(os.environ.get("TMPDIR", "/tmp"), "subdivkit-checker.png")
+checker_png(texture)
+textured_sphere(os.path.join(out_dir, "paraview-textured-sphere.png"), texture)
+spectrum_chart(os.path.join(out_dir, "paraview-spectrum.png"))
+print("wrote", ", ".join(f"{out_dir}/paraview-{n}.png" for n in ("creased-cube", "textured-sphere", "spectrum")))
