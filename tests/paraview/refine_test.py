@@ -2,7 +2,8 @@
 Elevation array) agrees with `subdiv refine` on the same input, written to a file: counts,
 positions, the input's point and cell arrays and SubdivKit's (origin, valence, level,
 vertex_class, parent_face, base_face), for two schemes (and a scheme file), two levels;
-changing Levels 2 -> 3 re-executes; AllLevels gives every level as a multiblock."""
+the typed parameter widgets and the Parameters field act as --param; changing Levels
+2 -> 3 re-executes; AllLevels gives every level as a multiblock."""
 
 import os
 
@@ -36,6 +37,20 @@ for name, scheme, scheme_file, levels in cases:
     assert got.GetPointData().GetArray("level").GetRange() == (levels, levels)
     print(f"{name} {scheme or os.path.basename(scheme_file)} level {levels}: {got.GetNumberOfPoints()} points, "
           f"{got.GetNumberOfPolys()} faces, as subdiv refine")
+
+# The typed widgets of the schemes' parameters (the panel shows the chosen scheme's) act as
+# --param; the Parameters text field wins over them.
+typed = [("butterfly", "butterfly_w", 0.1, "", ["-p", "w=0.1"]),
+         ("loop", "loop_beta", "warren", "", ["-p", "beta=warren"]),
+         ("butterfly", "butterfly_w", 0.1, "w=0.05", ["-p", "w=0.05"])]
+for scheme, widget, value, text, options in typed:
+    refine = SubdivKitRefine(Input=sphere, Scheme=scheme, Levels=1, Parameters=text)  # noqa: F821
+    refine.SetPropertyWithName(widget, value)
+    refine.UpdatePipeline()
+    want = pv.cli_refine(inputs["sphere"][1], f"typed-{widget}-{text}", "-s", scheme, "-l", 1, *options)
+    pv.assert_same_polydata(pv.fetch(refine), want, (widget, value, text))
+    print(f"{scheme}: widget {widget}={value}{' and Parameters ' + repr(text) if text else ''}: as subdiv refine "
+          f"{' '.join(options)}")
 
 # Levels 2 -> 3 on the same proxy: the filter runs again and gives level 3's counts.
 refine = SubdivKitRefine(Input=cube, Scheme="catmull-clark", Levels=2)  # noqa: F821

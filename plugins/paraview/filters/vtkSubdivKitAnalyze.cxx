@@ -1,6 +1,7 @@
 #include "vtkSubdivKitAnalyze.h"
 
 #include <exception>
+#include <fmt/format.h>
 
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -46,7 +47,9 @@ int vtkSubdivKitAnalyze::RequestData(vtkInformation*, vtkInformationVector**, vt
   try {
     subdiv::paraview::AnalyzeRequest request;
     request.scheme = subdiv::paraview::chosen_scheme(this->Scheme, this->SchemeFile);
-    request.parameters = this->Parameters;
+    // The widgets belong to the drop-down's scheme; a scheme file takes the text field only.
+    request.parameters =
+        (this->SchemeFile.empty() ? this->TypedParameters.words_for(this->Scheme) : "") + this->Parameters;
     request.min_valence = this->Valences[0];
     request.max_valence = this->Valences[1];
     const auto analyses = subdiv::paraview::analyze_valences(request, kSource);
@@ -58,6 +61,18 @@ int vtkSubdivKitAnalyze::RequestData(vtkInformation*, vtkInformationVector**, vt
     spectrum->Initialize();
   }
   return 1;
+}
+
+void vtkSubdivKitAnalyze::SetSchemeParameter(const char* key, double value) {
+  if (this->TypedParameters.set(key ? key : "", fmt::format("{}", value))) this->Modified();
+}
+
+void vtkSubdivKitAnalyze::SetSchemeWholeParameter(const char* key, int value) {
+  if (this->TypedParameters.set(key ? key : "", std::to_string(value))) this->Modified();
+}
+
+void vtkSubdivKitAnalyze::SetSchemeChoice(const char* key, const char* value) {
+  if (this->TypedParameters.set(key ? key : "", value ? value : "")) this->Modified();
 }
 
 void vtkSubdivKitAnalyze::PrintSelf(ostream& os, vtkIndent indent) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "SubdivKitParaViewFiltersModule.h"
+#include "typed_parameters.h"
 #include "vtkPolyDataAlgorithm.h"
 
 class vtkStringArray;
@@ -22,8 +23,12 @@ public:
   vtkGetCharFromStdStringMacro(Scheme);
   vtkSetStdStringFromCharMacro(SchemeFile);  // a .json scheme; wins over Scheme when set
   vtkGetCharFromStdStringMacro(SchemeFile);
-  vtkSetStdStringFromCharMacro(Parameters);  // "name=value ...", as --param
+  vtkSetStdStringFromCharMacro(Parameters);  // "name=value ...", as --param; wins over the widgets'
   vtkGetCharFromStdStringMacro(Parameters);
+  // The typed widgets of the built-in schemes' parameters; key "scheme:name".
+  void SetSchemeParameter(const char* key, double value);
+  void SetSchemeWholeParameter(const char* key, int value);
+  void SetSchemeChoice(const char* key, const char* value);
   vtkSetVector2Macro(Valences, int);         // first and last valence
   vtkGetVector2Macro(Valences, int);
   vtkSetClampMacro(Eigenvalues, int, 1, 64);  // leading moduli in the table
@@ -44,6 +49,7 @@ private:
   std::string Scheme = "catmull-clark";
   std::string SchemeFile;
   std::string Parameters;
+  subdiv::paraview::TypedParameters TypedParameters;
   int Valences[2] = {3, 12};
   int Eigenvalues = 8;
   vtkStringArray* SchemeNames;

@@ -1,6 +1,7 @@
 #include "vtkSubdivKitRefine.h"
 
 #include <exception>
+#include <fmt/format.h>
 
 #include <vtkCompositeDataSet.h>
 #include <vtkInformation.h>
@@ -93,7 +94,9 @@ int vtkSubdivKitRefine::RequestData(vtkInformation*, vtkInformationVector** in, 
     subdiv::paraview::RefineRequest request;
     request.scheme = subdiv::paraview::chosen_scheme(this->Scheme, this->SchemeFile);
     request.levels = this->Levels;
-    request.parameters = this->Parameters;
+    // The widgets belong to the drop-down's scheme; a scheme file takes the text field only.
+    request.parameters =
+        (this->SchemeFile.empty() ? this->TypedParameters.words_for(this->Scheme) : "") + this->Parameters;
     request.features = {boundary_mode(this->BoundaryInterpolation),
                         this->CreaseMethod == 1 ? subdiv::CreaseMethod::Chaikin : subdiv::CreaseMethod::Uniform};
     request.feature_angle = this->UseFeatureAngle ? this->FeatureAngle : -1.0;
@@ -118,6 +121,18 @@ int vtkSubdivKitRefine::RequestData(vtkInformation*, vtkInformationVector** in, 
     output->Initialize();
   }
   return 1;
+}
+
+void vtkSubdivKitRefine::SetSchemeParameter(const char* key, double value) {
+  if (this->TypedParameters.set(key ? key : "", fmt::format("{}", value))) this->Modified();
+}
+
+void vtkSubdivKitRefine::SetSchemeWholeParameter(const char* key, int value) {
+  if (this->TypedParameters.set(key ? key : "", std::to_string(value))) this->Modified();
+}
+
+void vtkSubdivKitRefine::SetSchemeChoice(const char* key, const char* value) {
+  if (this->TypedParameters.set(key ? key : "", value ? value : "")) this->Modified();
 }
 
 void vtkSubdivKitRefine::PrintSelf(ostream& os, vtkIndent indent) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "SubdivKitParaViewFiltersModule.h"
+#include "typed_parameters.h"
 #include "vtkDataObjectAlgorithm.h"
 
 class vtkStringArray;
@@ -24,8 +25,12 @@ public:
   vtkGetCharFromStdStringMacro(SchemeFile);
   vtkSetClampMacro(Levels, int, 0, 30);
   vtkGetMacro(Levels, int);
-  vtkSetStdStringFromCharMacro(Parameters);  // "name=value ...", as --param
+  vtkSetStdStringFromCharMacro(Parameters);  // "name=value ...", as --param; wins over the widgets'
   vtkGetCharFromStdStringMacro(Parameters);
+  // The typed widgets of the built-in schemes' parameters; key "scheme:name".
+  void SetSchemeParameter(const char* key, double value);
+  void SetSchemeWholeParameter(const char* key, int value);
+  void SetSchemeChoice(const char* key, const char* value);
   vtkSetClampMacro(BoundaryInterpolation, int, 0, 2);  // 0 edges-and-corners, 1 edges, 2 none
   vtkGetMacro(BoundaryInterpolation, int);
   vtkSetClampMacro(CreaseMethod, int, 0, 1);  // 0 uniform, 1 chaikin
@@ -62,6 +67,7 @@ private:
   std::string SchemeFile;
   int Levels = 2;
   std::string Parameters;
+  subdiv::paraview::TypedParameters TypedParameters;
   int BoundaryInterpolation = 0;
   int CreaseMethod = 0;
   std::string CreaseArray;
