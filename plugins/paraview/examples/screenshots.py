@@ -13,9 +13,11 @@ import os
 import sys
 
 from paraview import simple as pv
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkImageData, vtkPolyData
+from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkIOImage import vtkPNGWriter
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cube_with_lines import FACES, cube_with_lines  # noqa: E402 (beside this script)
 
 out_dir = sys.argv[1] if len(sys.argv) > 1 else "."
 if not hasattr(pv, "SubdivKitRefine"):  # not loaded at start through PV_PLUGIN_PATH
@@ -27,31 +29,10 @@ if not hasattr(pv, "SubdivKitRefine"):  # not loaded at start through PV_PLUGIN_
 
 
 def cube_with_crease_lines():
-    """A unit cube of 6 quads plus two line cells, its top rim and its bottom rim; cell
-    array "sharpness_in": 10 (infinitely sharp) on the top rim, 2 (semi-sharp: sharp for
-    two levels, then smooth) on the bottom one, 0 on the faces."""
-    corners = [(x - 0.5, y - 0.5, z - 0.5) for x, y, z in
-               [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]]
-    faces = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
-    lines = [((4, 5, 6, 7, 4), 10.0), ((0, 1, 2, 3, 0), 2.0)]
-    poly, points, line_cells, face_cells = vtkPolyData(), vtkPoints(), vtkCellArray(), vtkCellArray()
-    for p in corners:
-        points.InsertNextPoint(p)
-    for ids, _ in lines:
-        line_cells.InsertNextCell(len(ids), ids)
-    for f in faces:
-        face_cells.InsertNextCell(4, f)
-    poly.SetPoints(points)
-    poly.SetLines(line_cells)
-    poly.SetPolys(face_cells)
-    sharpness = vtkDoubleArray()
-    sharpness.SetName("sharpness_in")
-    for v in [s for _, s in lines] + [0.0] * len(faces):
-        sharpness.InsertNextValue(v)
-    poly.GetCellData().AddArray(sharpness)
-    source = pv.PVTrivialProducer()
-    source.GetClientSideObject().SetOutput(poly)
-    return source
+    """The cube's top rim infinitely sharp (10), its bottom rim semi-sharp (2: sharp for two
+    levels, then smooth), in the cell array "sharpness_in" (0 on the faces)."""
+    rims = [(4, 5, 6, 7, 4), (0, 1, 2, 3, 0)]
+    return cube_with_lines(rims, {"sharpness_in": [10.0, 2.0] + [0.0] * len(FACES)}, offset=(-0.5, -0.5, -0.5))
 
 
 def checker_png(path, squares=8, size=256):

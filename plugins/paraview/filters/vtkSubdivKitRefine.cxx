@@ -1,7 +1,6 @@
 #include "vtkSubdivKitRefine.h"
 
 #include <exception>
-#include <fmt/format.h>
 
 #include <vtkCompositeDataSet.h>
 #include <vtkInformation.h>
@@ -9,15 +8,12 @@
 #include <vtkMultiBlockDataSet.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
-#include <vtkStringArray.h>
 
 #include "framework/io/vtk/vtk_polydata.h"
 #include "framework/io/vtk/vtk_read.h"
 #include "framework/util/error.h"
 #include "polydata_creases.h"
 #include "refine_job.h"
-#include "scheme_choice.h"
-#include "scheme_name_array.h"
 
 namespace {
 
@@ -50,17 +46,9 @@ vtkSmartPointer<vtkPolyData> level_polydata(const subdiv::OutputLevel& level) {
 
 vtkStandardNewMacro(vtkSubdivKitRefine);
 
-vtkSubdivKitRefine::vtkSubdivKitRefine() : SchemeNames(vtkStringArray::New()) {
+vtkSubdivKitRefine::vtkSubdivKitRefine() : vtkSubdivKitSchemeAlgorithm(kSource) {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(1);
-}
-
-vtkSubdivKitRefine::~vtkSubdivKitRefine() { this->SchemeNames->Delete(); }
-
-vtkStringArray* vtkSubdivKitRefine::GetSchemeNames() {
-  if (const std::string failed = subdiv::paraview::fill_scheme_names(*this->SchemeNames); !failed.empty())
-    vtkErrorMacro(<< kSource << ": listing the schemes: " << failed);
-  return this->SchemeNames;
 }
 
 int vtkSubdivKitRefine::FillInputPortInformation(int, vtkInformation* info) {
@@ -92,11 +80,9 @@ int vtkSubdivKitRefine::RequestData(vtkInformation*, vtkInformationVector** in, 
   if (!input) return 1;
   try {
     subdiv::paraview::RefineRequest request;
-    request.scheme = subdiv::paraview::chosen_scheme(this->Scheme, this->SchemeFile);
+    request.scheme = this->SchemeToRun();
     request.levels = this->Levels;
-    // The widgets belong to the drop-down's scheme; a scheme file takes the text field only.
-    request.parameters =
-        (this->SchemeFile.empty() ? this->TypedParameters.words_for(this->Scheme) : "") + this->Parameters;
+    request.parameters = this->ParametersToRun();
     request.features = {boundary_mode(this->BoundaryInterpolation),
                         this->CreaseMethod == 1 ? subdiv::CreaseMethod::Chaikin : subdiv::CreaseMethod::Uniform};
     request.feature_angle = this->UseFeatureAngle ? this->FeatureAngle : -1.0;
@@ -123,20 +109,7 @@ int vtkSubdivKitRefine::RequestData(vtkInformation*, vtkInformationVector** in, 
   return 1;
 }
 
-void vtkSubdivKitRefine::SetSchemeParameter(const char* key, double value) {
-  if (this->TypedParameters.set(key ? key : "", fmt::format("{}", value))) this->Modified();
-}
-
-void vtkSubdivKitRefine::SetSchemeWholeParameter(const char* key, int value) {
-  if (this->TypedParameters.set(key ? key : "", std::to_string(value))) this->Modified();
-}
-
-void vtkSubdivKitRefine::SetSchemeChoice(const char* key, const char* value) {
-  if (this->TypedParameters.set(key ? key : "", value ? value : "")) this->Modified();
-}
-
 void vtkSubdivKitRefine::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Scheme: " << this->Scheme << "\n" << indent << "SchemeFile: " << this->SchemeFile << "\n"
-     << indent << "Levels: " << this->Levels << "\n" << indent << "Parameters: " << this->Parameters << "\n";
+  os << indent << "Levels: " << this->Levels << "\n" << indent << "AllLevels: " << this->AllLevels << "\n";
 }

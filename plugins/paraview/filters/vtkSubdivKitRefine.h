@@ -8,29 +8,16 @@
 #include <string>
 
 #include "SubdivKitParaViewFiltersModule.h"
-#include "typed_parameters.h"
-#include "vtkDataObjectAlgorithm.h"
+#include "vtkSubdivKitSchemeAlgorithm.h"
 
-class vtkStringArray;
-
-class SUBDIVKITPARAVIEWFILTERS_EXPORT vtkSubdivKitRefine : public vtkDataObjectAlgorithm {
+class SUBDIVKITPARAVIEWFILTERS_EXPORT vtkSubdivKitRefine : public vtkSubdivKitSchemeAlgorithm {
 public:
   static vtkSubdivKitRefine* New();
-  vtkTypeMacro(vtkSubdivKitRefine, vtkDataObjectAlgorithm);
+  vtkTypeMacro(vtkSubdivKitRefine, vtkSubdivKitSchemeAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  vtkSetStdStringFromCharMacro(Scheme);
-  vtkGetCharFromStdStringMacro(Scheme);
-  vtkSetStdStringFromCharMacro(SchemeFile);  // a .json scheme; wins over Scheme when set
-  vtkGetCharFromStdStringMacro(SchemeFile);
   vtkSetClampMacro(Levels, int, 0, 30);
   vtkGetMacro(Levels, int);
-  vtkSetStdStringFromCharMacro(Parameters);  // "name=value ...", as --param; wins over the widgets'
-  vtkGetCharFromStdStringMacro(Parameters);
-  // The typed widgets of the built-in schemes' parameters; key "scheme:name".
-  void SetSchemeParameter(const char* key, double value);
-  void SetSchemeWholeParameter(const char* key, int value);
-  void SetSchemeChoice(const char* key, const char* value);
   vtkSetClampMacro(BoundaryInterpolation, int, 0, 2);  // 0 edges-and-corners, 1 edges, 2 none
   vtkGetMacro(BoundaryInterpolation, int);
   vtkSetClampMacro(CreaseMethod, int, 0, 1);  // 0 uniform, 1 chaikin
@@ -48,12 +35,9 @@ public:
   vtkSetMacro(AllLevels, bool);
   vtkGetMacro(AllLevels, bool);
 
-  // Every registered surface scheme, for the Scheme drop-down.
-  vtkStringArray* GetSchemeNames();
-
 protected:
   vtkSubdivKitRefine();
-  ~vtkSubdivKitRefine() override;
+  ~vtkSubdivKitRefine() override = default;
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -63,11 +47,7 @@ private:
   vtkSubdivKitRefine(const vtkSubdivKitRefine&) = delete;
   void operator=(const vtkSubdivKitRefine&) = delete;
 
-  std::string Scheme = "catmull-clark";
-  std::string SchemeFile;
   int Levels = 2;
-  std::string Parameters;
-  subdiv::paraview::TypedParameters TypedParameters;
   int BoundaryInterpolation = 0;
   int CreaseMethod = 0;
   std::string CreaseArray;
@@ -76,5 +56,4 @@ private:
   int Threads = 0;
   bool LimitPositions = false;
   bool AllLevels = false;
-  vtkStringArray* SchemeNames;
 };
