@@ -2,7 +2,8 @@
 Elevation array) agrees with `subdiv refine` on the same input, written to a file: counts,
 positions, the input's point and cell arrays and SubdivKit's (origin, valence, level,
 vertex_class, parent_face, base_face), for two schemes (and a scheme file), two levels;
-the typed parameter widgets and the Parameters field act as --param; changing Levels
+LimitPositions acts as --limit; the typed parameter widgets and the Parameters field act
+as --param; changing Levels
 2 -> 3 re-executes; AllLevels gives every level as a multiblock."""
 
 import os
@@ -37,6 +38,16 @@ for name, scheme, scheme_file, levels in cases:
     assert got.GetPointData().GetArray("level").GetRange() == (levels, levels)
     print(f"{name} {scheme or os.path.basename(scheme_file)} level {levels}: {got.GetNumberOfPoints()} points, "
           f"{got.GetNumberOfPolys()} faces, as subdiv refine")
+
+# Limit positions: the finest level on the limit surface, with the limit normals, as --limit.
+for name, scheme in (("cube", "catmull-clark"), ("sphere", "loop")):
+    refine = SubdivKitRefine(Input=inputs[name][0], Scheme=scheme, Levels=2, LimitPositions=1)  # noqa: F821
+    refine.UpdatePipeline()
+    got = pv.fetch(refine)
+    want = pv.cli_refine(inputs[name][1], f"{name}-{scheme}-limit", "-s", scheme, "-l", 2, "--limit")
+    pv.assert_same_polydata(got, want, (name, scheme, "limit"))
+    assert got.GetPointData().GetNormals() is not None and got.GetPointData().GetNormals().GetName() == "normal"
+    print(f"{name} {scheme} LimitPositions: as subdiv refine --limit (points, arrays, limit normals)")
 
 # The typed widgets of the schemes' parameters (the panel shows the chosen scheme's) act as
 # --param; the Parameters text field wins over them.

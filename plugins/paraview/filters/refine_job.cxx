@@ -4,7 +4,6 @@
 #include <memory>
 #include <tbb/global_control.h>
 
-#include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/engine/refiner.h"
 #include "framework/io/feature_angle.h"
 #include "framework/io/mesh_cleanup.h"
@@ -14,6 +13,7 @@
 #include "framework/scheme/scheme_sequence.h"
 #include "framework/util/error.h"
 #include "level_output.h"
+#include "limit_output.h"
 #include "memory_guard.h"
 #include "scheme_choice.h"
 
@@ -36,23 +36,6 @@ std::vector<LevelData> refine_data(const SchemeSequence& seq, const Hierarchy& h
   // warning on every refinement would bury the ones that matter (docs/paraview.md says so).
   for (int l = 0; l < seq.total_levels; ++l) data.push_back(next_level_data(seq.runs, h, l, data.back(), options));
   return data;
-}
-
-// "Limit positions": the finest level's points and double point arrays moved to the limit
-// with the same masks (as --limit).
-void move_to_limit(const SchemeSequence& seq, const Hierarchy& h, const RefineOptions& options, LevelData& finest,
-                   std::vector<std::string>& notes) {
-  LimitOptions lo;
-  lo.features = options.features;
-  lo.first_step = options.first_step + seq.total_levels;
-  SchemeLimits limits(*seq.schemes.back(), lo);
-  const LimitResult limit = limits.evaluate(h.levels.back(), finest.positions);
-  finest.positions = limit.positions;
-  const StencilTable masks = limits.stencils(h.levels.back()).position;
-  for (DataArray& d : finest.point_data)
-    if (!d.integer) d.values = masks.apply(d.values, d.components);
-  if (limit.approximate > 0)
-    notes.push_back(fmt::format("limit positions: {} of {} approximated", limit.approximate, limit.exact.size()));
 }
 
 }  // namespace
@@ -79,8 +62,15 @@ RefinedLevels refine_levels(const MeshData& input, const RefineRequest& r, const
   Hierarchy h = refine_topology(seq.runs, std::move(base), options);
   out.notes.insert(out.notes.end(), h.warnings.begin(), h.warnings.end());
   std::vector<LevelData> data = refine_data(seq, h, mesh, options, source);
-  if (r.limit) move_to_limit(seq, h, options, data.back(), out.notes);
-  out.levels = cli::describe_levels(h, data, options.features, {}, out.meshes);
+  std::vector<DataArray> limit_data;
+  if (r.limit) {  // as --limit: the limit normals come along, as point data "normal"
+    cli::LimitArrays limits = cli::limit_arrays(seq, h, options, data.back(), true);
+    if (limits.result.approximate > 0)
+      out.notes.push_back(fmt::format("Limit Positions: {} of {} positions approximated (point data limit_exact)",
+                                      limits.result.approximate, limits.result.exact.size()));
+    limit_data = std::move(limits.point_data);
+  }
+  out.levels = cli::describe_levels(h, data, options.features, limit_data, out.meshes);
   return out;
 }
 

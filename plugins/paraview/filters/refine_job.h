@@ -18,7 +18,7 @@ struct RefineRequest {
   FeatureOptions features;               // --boundary, --crease-method
   double feature_angle = -1;             // --feature-angle DEG; < 0: off
   int threads = 0;                       // 0: all cores
-  bool limit = false;                    // --limit: the finest level moved to the limit surface
+  bool limit = false;                    // --limit: the finest level moved to the limit surface, with limit normals
 };
 
 struct RefinedLevels {
