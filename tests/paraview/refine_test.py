@@ -4,7 +4,7 @@ positions, the input's point and cell arrays and SubdivKit's (origin, valence, l
 vertex_class, parent_face, base_face), for two schemes (and a scheme file), two levels;
 LimitPositions acts as --limit; the typed parameter widgets and the Parameters field act
 as --param; changing Levels
-2 -> 3 re-executes; AllLevels gives every level as a multiblock."""
+2 -> 3 re-executes; AllLevels gives every level as a multiblock, LevelSpacing side by side."""
 
 import os
 
@@ -86,4 +86,15 @@ for k in range(4):
     pv.assert_same_polydata(blocks.GetBlock(k), pv.read_vtp(os.path.join(pv.WORK, "cube-levels_levels", f"level_{k}.vtp")),
                             f"multiblock level {k}")
 print("AllLevels: 4 blocks, each as subdiv refine's .pvd level")
+
+# LevelSpacing puts the levels side by side: level k moves k x spacing x the input's diagonal along x.
+refine.LevelSpacing = 1.5
+refine.UpdatePipeline()
+spread = pv.fetch(refine)
+diagonal = pv.fetch(cube).GetLength()
+for k in range(4):
+    level, there = blocks.GetBlock(k), spread.GetBlock(k)
+    moved = [there.GetPoint(i)[0] - level.GetPoint(i)[0] for i in range(level.GetNumberOfPoints())]
+    assert max(abs(m - 1.5 * k * diagonal) for m in moved) < 1e-12, (k, moved[:3])
+print("LevelSpacing 1.5: level k moved by 1.5 k diagonals along x")
 print("refine_test: ok")

@@ -6,8 +6,9 @@ with the plugin found through PV_PLUGIN_PATH, SUBDIV_PARAVIEW_PLUGIN or the subd
 (PYTHONPATH=build/python). Writes paraview-creased-cube.png (one cube refined three ways:
 smooth, creases from a cell array on line cells, creases from the feature angle; coloured
 by vertex_class) and paraview-textured-sphere.png (a coarse sphere with texture coordinates,
-and Loop's refinement of it carrying them), and paraview-spectrum.png (SubdivKit Analyze's
-spectrum in a line chart)."""
+and Loop's refinement of it carrying them), paraview-spectrum.png (SubdivKit Analyze's
+spectrum in a line chart) and paraview-levels.png (a cube's levels 0 to 3 side by side,
+All Levels with Level Spacing, coloured by origin)."""
 
 import os
 import sys
@@ -124,6 +125,25 @@ def textured_sphere(path, texture_png):
     pv.SaveScreenshot(path, view, ImageResolution=[900, 450])
 
 
+def levels_side_by_side(path):
+    view = render_view([1200, 360])
+    levels = pv.SubdivKitRefine(Input=pv.Clean(Input=pv.Box()), Scheme="catmull-clark", Levels=3, AllLevels=1,
+                                LevelSpacing=0.8)
+    display = pv.Show(levels, view)
+    display.SetRepresentationType("Surface With Edges")
+    pv.ColorBy(display, ("POINTS", "origin"))
+    display.LookupTable = pv.GetColorTransferFunction("origin")
+    display.LookupTable.ApplyPreset("Rainbow Uniform", True)
+    display.LookupTable.RescaleTransferFunction(0, 2)
+    view.CameraParallelProjection = 1
+    view.CameraPosition = [2.1 + 1.0, -5.0, 1.5]
+    view.CameraFocalPoint = [2.1, 0, 0]
+    view.CameraViewUp = [0, 0, 1]
+    view.ResetCamera()
+    view.CameraParallelScale *= 0.8
+    pv.SaveScreenshot(path, view, ImageResolution=[1200, 360])
+
+
 def spectrum_chart(path):
     analyze = pv.SubdivKitAnalyze(Scheme="loop", Valences=[3, 12], Eigenvalues=6)
     chart = pv.CreateView("XYChartView")
@@ -144,4 +164,5 @@ texture = os.path.join(os.environ.get("TMPDIR", "/tmp"), "subdivkit-checker.png"
 checker_png(texture)
 textured_sphere(os.path.join(out_dir, "paraview-textured-sphere.png"), texture)
 spectrum_chart(os.path.join(out_dir, "paraview-spectrum.png"))
-print("wrote", ", ".join(f"{out_dir}/paraview-{n}.png" for n in ("creased-cube", "textured-sphere", "spectrum")))
+levels_side_by_side(os.path.join(out_dir, "paraview-levels.png"))
+print("wrote", ", ".join(f"{out_dir}/paraview-{n}.png" for n in ("creased-cube", "textured-sphere", "spectrum", "levels")))

@@ -7,6 +7,7 @@
 #include <vtkInformationVector.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkObjectFactory.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 
 #include "framework/io/vtk/vtk_polydata.h"
@@ -42,6 +43,29 @@ vtkSmartPointer<vtkPolyData> level_polydata(const subdiv::OutputLevel& level) {
   return subdiv::io_detail::make_polydata(level);
 }
 
+// Level l moved by l * dx along x, so that the levels stand side by side.
+void move_along_x(vtkPolyData& level, double dx) {
+  vtkPoints* points = level.GetPoints();
+  if (!points || dx == 0) return;
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i) {
+    double p[3];
+    points->GetPoint(i, p);
+    p[0] += dx;
+    points->SetPoint(i, p);
+  }
+}
+
+// Block l: level l, named "level l"; `spacing` apart along x.
+void set_level_blocks(vtkMultiBlockDataSet& blocks, const subdiv::paraview::RefinedLevels& refined, double spacing) {
+  blocks.SetNumberOfBlocks(unsigned(refined.levels.size()));
+  for (unsigned l = 0; l < refined.levels.size(); ++l) {
+    vtkSmartPointer<vtkPolyData> level = level_polydata(refined.levels[l]);
+    move_along_x(*level, l * spacing);
+    blocks.SetBlock(l, level);
+    blocks.GetMetaData(l)->Set(vtkCompositeDataSet::NAME(), ("level " + std::to_string(l)).c_str());
+  }
+}
+
 }  // namespace
 
 vtkStandardNewMacro(vtkSubdivKitRefine);
@@ -73,33 +97,32 @@ int vtkSubdivKitRefine::RequestDataObject(vtkInformation*, vtkInformationVector*
   return 1;
 }
 
+subdiv::paraview::RefineRequest vtkSubdivKitRefine::Request() const {
+  subdiv::paraview::RefineRequest request;
+  request.scheme = this->SchemeToRun();
+  request.levels = this->Levels;
+  request.parameters = this->ParametersToRun();
+  request.features = {boundary_mode(this->BoundaryInterpolation),
+                      this->CreaseMethod == 1 ? subdiv::CreaseMethod::Chaikin : subdiv::CreaseMethod::Uniform};
+  request.feature_angle = this->UseFeatureAngle ? this->FeatureAngle : -1.0;
+  request.threads = this->Threads;
+  request.limit = this->LimitPositions;
+  return request;
+}
+
 int vtkSubdivKitRefine::RequestData(vtkInformation*, vtkInformationVector** in, vtkInformationVector* out) {
   vtkPolyData* input = vtkPolyData::GetData(in[0], 0);
   vtkDataObject* output = vtkDataObject::GetData(out, 0);
   output->Initialize();
   if (!input) return 1;
   try {
-    subdiv::paraview::RefineRequest request;
-    request.scheme = this->SchemeToRun();
-    request.levels = this->Levels;
-    request.parameters = this->ParametersToRun();
-    request.features = {boundary_mode(this->BoundaryInterpolation),
-                        this->CreaseMethod == 1 ? subdiv::CreaseMethod::Chaikin : subdiv::CreaseMethod::Uniform};
-    request.feature_angle = this->UseFeatureAngle ? this->FeatureAngle : -1.0;
-    request.threads = this->Threads;
-    request.limit = this->LimitPositions;
     const subdiv::paraview::RefinedLevels refined =
-        subdiv::paraview::refine_levels(input_mesh(*input, this->CreaseArray), request, kSource);
+        subdiv::paraview::refine_levels(input_mesh(*input, this->CreaseArray), this->Request(), kSource);
     for (const std::string& note : refined.notes) vtkWarningMacro(<< kSource << ": " << note);
-    if (auto* blocks = vtkMultiBlockDataSet::SafeDownCast(output)) {
-      blocks->SetNumberOfBlocks(unsigned(refined.levels.size()));
-      for (unsigned l = 0; l < refined.levels.size(); ++l) {
-        blocks->SetBlock(l, level_polydata(refined.levels[l]));
-        blocks->GetMetaData(l)->Set(vtkCompositeDataSet::NAME(), ("level " + std::to_string(l)).c_str());
-      }
-    } else {
+    if (auto* blocks = vtkMultiBlockDataSet::SafeDownCast(output))
+      set_level_blocks(*blocks, refined, this->LevelSpacing * input->GetLength());
+    else
       output->ShallowCopy(level_polydata(refined.levels.back()));
-    }
   } catch (const std::exception& e) {
     // SubdivKit's message, as `subdiv refine` prints it; the output stays empty and the
     // pipeline goes on (returning 0 would also stop the filters downstream with a second message).
@@ -111,5 +134,6 @@ int vtkSubdivKitRefine::RequestData(vtkInformation*, vtkInformationVector** in, 
 
 void vtkSubdivKitRefine::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Levels: " << this->Levels << "\n" << indent << "AllLevels: " << this->AllLevels << "\n";
+  os << indent << "Levels: " << this->Levels << "\n" << indent << "AllLevels: " << this->AllLevels << "\n"
+     << indent << "LevelSpacing: " << this->LevelSpacing << "\n";
 }

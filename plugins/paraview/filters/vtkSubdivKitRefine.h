@@ -10,6 +10,12 @@
 #include "SubdivKitParaViewFiltersModule.h"
 #include "vtkSubdivKitSchemeAlgorithm.h"
 
+namespace subdiv {
+namespace paraview {  // (VTK's wrapper tools read this header: no C++17 nested namespaces)
+struct RefineRequest;  // refine_job.h
+}  // namespace paraview
+}  // namespace subdiv
+
 class SUBDIVKITPARAVIEWFILTERS_EXPORT vtkSubdivKitRefine : public vtkSubdivKitSchemeAlgorithm {
 public:
   static vtkSubdivKitRefine* New();
@@ -34,6 +40,9 @@ public:
   vtkGetMacro(LimitPositions, bool);
   vtkSetMacro(AllLevels, bool);
   vtkGetMacro(AllLevels, bool);
+  // With AllLevels: level l moved by l x LevelSpacing x the input's diagonal along x (0: in place).
+  vtkSetClampMacro(LevelSpacing, double, 0.0, 100.0);
+  vtkGetMacro(LevelSpacing, double);
 
 protected:
   vtkSubdivKitRefine();
@@ -42,6 +51,8 @@ protected:
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The properties as the refinement's options.
+  subdiv::paraview::RefineRequest Request() const;
 
 private:
   vtkSubdivKitRefine(const vtkSubdivKitRefine&) = delete;
@@ -56,4 +67,5 @@ private:
   int Threads = 0;
   bool LimitPositions = false;
   bool AllLevels = false;
+  double LevelSpacing = 0.0;
 };
