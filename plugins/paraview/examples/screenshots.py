@@ -64,17 +64,32 @@ def render_view(size):
     return view
 
 
-def show(source, view, x, colour_by=None, representation="Surface With Edges"):
+def colour_by(display, array, top):
+    pv.ColorBy(display, ("POINTS", array))
+    display.LookupTable = pv.GetColorTransferFunction(array)
+    display.LookupTable.ApplyPreset("Rainbow Uniform", True)
+    display.LookupTable.RescaleTransferFunction(0, top)
+
+
+def show(source, view, x, colour=None, representation="Surface With Edges"):
+    """source moved by x along x, shown with edges (and coloured by point array `colour`, 0..3)."""
     moved = pv.Transform(Input=source)
     moved.Transform.Translate = [x, 0, 0]
     display = pv.Show(moved, view)
     display.SetRepresentationType(representation)
-    if colour_by:
-        pv.ColorBy(display, ("POINTS", colour_by))
-        display.LookupTable = pv.GetColorTransferFunction(colour_by)
-        display.LookupTable.ApplyPreset("Rainbow Uniform", True)
-        display.LookupTable.RescaleTransferFunction(0, 3)
+    if colour:
+        colour_by(display, colour, 3)
     return display
+
+
+def look_from_front(view, centre_x, eye, zoom):
+    """A parallel projection of a row of objects along x, from eye = (dx, dy, dz) off (centre_x, 0, 0)."""
+    view.CameraParallelProjection = 1
+    view.CameraPosition = [centre_x + eye[0], eye[1], eye[2]]
+    view.CameraFocalPoint = [centre_x, 0, 0]
+    view.CameraViewUp = [0, 0, 1]
+    view.ResetCamera()
+    view.CameraParallelScale *= zoom
 
 
 def creased_cube(path):
@@ -98,12 +113,7 @@ def creased_cube(path):
     bar.LabelFormat = bar.RangeLabelFormat = "%.0f"
     bar.UseCustomLabels = 1
     bar.CustomLabels = [0, 1, 2, 3]
-    view.CameraParallelProjection = 1
-    view.CameraPosition = [1.6 + 2.0, -5.0, 3.0]
-    view.CameraFocalPoint = [1.6, 0, 0]
-    view.CameraViewUp = [0, 0, 1]
-    view.ResetCamera()
-    view.CameraParallelScale *= 0.75
+    look_from_front(view, 1.6, (2.0, -5.0, 3.0), 0.75)
     view.CameraFocalPoint = [1.6, 0, -0.25]  # room below for the colour bar
     pv.SaveScreenshot(path, view, ImageResolution=[1200, 500])
 
@@ -116,12 +126,7 @@ def textured_sphere(path, texture_png):
     for i, source in enumerate((coarse, fine)):
         display = show(source, view, 1.3 * i, representation="Surface" if i else "Surface With Edges")
         display.Texture = texture
-    view.CameraParallelProjection = 1
-    view.CameraPosition = [0.65, -3.2, 0.8]
-    view.CameraFocalPoint = [0.65, 0, 0]
-    view.CameraViewUp = [0, 0, 1]
-    view.ResetCamera()
-    view.CameraParallelScale *= 0.7
+    look_from_front(view, 0.65, (0.0, -3.2, 0.8), 0.7)
     pv.SaveScreenshot(path, view, ImageResolution=[900, 450])
 
 
@@ -131,16 +136,8 @@ def levels_side_by_side(path):
                                 LevelSpacing=0.8)
     display = pv.Show(levels, view)
     display.SetRepresentationType("Surface With Edges")
-    pv.ColorBy(display, ("POINTS", "origin"))
-    display.LookupTable = pv.GetColorTransferFunction("origin")
-    display.LookupTable.ApplyPreset("Rainbow Uniform", True)
-    display.LookupTable.RescaleTransferFunction(0, 2)
-    view.CameraParallelProjection = 1
-    view.CameraPosition = [2.1 + 1.0, -5.0, 1.5]
-    view.CameraFocalPoint = [2.1, 0, 0]
-    view.CameraViewUp = [0, 0, 1]
-    view.ResetCamera()
-    view.CameraParallelScale *= 0.8
+    colour_by(display, "origin", 2)
+    look_from_front(view, 2.1, (1.0, -5.0, 1.5), 0.8)
     pv.SaveScreenshot(path, view, ImageResolution=[1200, 360])
 
 
