@@ -5,9 +5,11 @@ Environment (set by ctest, see plugins/paraview/CMakeLists.txt): SUBDIV_PARAVIEW
 the plugin's SubdivKit.so; SUBDIV_CLI, the `subdiv` program; SUBDIV_SOURCE_DIR, the source tree.
 """
 
+import atexit
 import json
 import math
 import os
+import shutil
 import subprocess
 import tempfile
 
@@ -20,6 +22,7 @@ PLUGIN = os.environ["SUBDIV_PARAVIEW_PLUGIN"]
 CLI = os.environ["SUBDIV_CLI"]
 SOURCE_DIR = os.environ.get("SUBDIV_SOURCE_DIR", os.getcwd())
 WORK = tempfile.mkdtemp(prefix="subdivkit-paraview-")
+atexit.register(shutil.rmtree, WORK, ignore_errors=True)
 
 
 def load_plugin(ns):
