@@ -17,7 +17,11 @@ if(SUBDIV_VTK_PROVIDER STREQUAL "auto" OR SUBDIV_VTK_PROVIDER STREQUAL "debian")
   # the default search path (it lives under cmake/paraview-5.11/vtk), so this finds only
   # Debian's.
   find_package(VTK 9 QUIET COMPONENTS ${subdiv_vtk_components})
-  if(VTK_FOUND)
+  # A build dir configured before with ParaView's VTK keeps that VTK_DIR in its cache, and
+  # the search above then finds it again: the folder says whose VTK it is.
+  if(VTK_FOUND AND VTK_DIR MATCHES "/paraview-[0-9.]+/vtk/?$")
+    set(SUBDIV_VTK_PROVIDER_FOUND paraview)
+  elseif(VTK_FOUND)
     set(SUBDIV_VTK_PROVIDER_FOUND debian)
   endif()
 endif()

@@ -36,6 +36,10 @@ vtk_packages=("$vtk")
 # ParaView's VTK config looks for the libraries its IO modules were built with; Debian's
 # libvtk9-dev pulls them in itself.
 [ "$vtk" = paraview-dev ] && vtk_packages+=(libutfcpp-dev liblzma-dev liblz4-dev libdouble-conversion-dev zlib1g-dev libexpat1-dev)
+# The ParaView plugin (plugins/paraview): ParaView's VTK links MPI, whose development files
+# find_package(ParaView) needs; xvfb (with xauth, which xvfb-run uses) renders the docs'
+# screenshots headless (docs/paraview.md).
+[ "$vtk" = paraview-dev ] && vtk_packages+=(libopenmpi-dev xvfb xauth)
 
 packages=(
   build-essential cmake ninja-build pkg-config

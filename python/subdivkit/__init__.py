@@ -21,24 +21,33 @@ from .refinement import Interpolation, LimitPoints, interpolate, limit_positions
 
 
 def paraview_plugin_path():
-    """The ParaView plugin file (the "SubdivKit Refine" filter): load it in ParaView with
-    Tools > Manage Plugins > Load New, or call load_paraview_plugin() from ParaView's Python."""
+    """The ParaView plugin SubdivKit.so (filters "SubdivKit Refine" and "SubdivKit Analyze",
+    plugins/paraview): $SUBDIV_PARAVIEW_PLUGIN, else the one beside this package (a build
+    tree's, or an installed tree's in <libdir>/paraview-X.Y/plugins/SubdivKit). Raises
+    Error when there is none: the plugin is built only against ParaView's development files."""
+    import glob
     import os
-    return os.path.join(os.path.dirname(__file__), "paraview_plugin.py")
+    if os.environ.get("SUBDIV_PARAVIEW_PLUGIN"):
+        return os.environ["SUBDIV_PARAVIEW_PLUGIN"]
+    here = os.path.dirname(os.path.abspath(__file__))
+    patterns = ("../../lib*/paraview-*/plugins/SubdivKit/SubdivKit.so",         # <build>/python/subdivkit
+                "../../../../lib*/paraview-*/plugins/SubdivKit/SubdivKit.so",   # <prefix>/lib/python3/...
+                "../../../../lib/*/paraview-*/plugins/SubdivKit/SubdivKit.so")  # ... with lib/<arch>
+    for pattern in patterns:
+        found = sorted(glob.glob(os.path.join(here, pattern)))
+        if found:
+            return os.path.normpath(found[-1])
+    raise Error("no ParaView plugin SubdivKit.so beside this subdivkit package: build SubdivKit beside ParaView "
+                "(paraview-dev; scripts/install-deps.sh installs it) or set SUBDIV_PARAVIEW_PLUGIN to the plugin's path")
 
 
 def load_paraview_plugin(ns=None):
-    """Load the ParaView plugin into the running ParaView (pvpython, pvbatch or the GUI's
-    Python Shell); ``ns=globals()`` makes ``SubdivKitRefine`` callable there.
-
-    Debian 12's ParaView 5.11 cannot load any Python plugin as shipped (its loader imports
-    ``inspect.getargspec``, which Python 3.11 removed); this function puts the function back
-    first, so use it rather than Tools > Manage Plugins on such a system."""
-    import inspect
-    if not hasattr(inspect, "getargspec"):
-        inspect.getargspec = inspect.getfullargspec  # ParaView only reads .args
+    """Load the ParaView plugin (paraview_plugin_path()) into the running ParaView (pvpython,
+    pvbatch or the GUI's Python Shell); ``ns=globals()`` makes ``SubdivKitRefine`` and
+    ``SubdivKitAnalyze`` callable there. The same as ParaView's
+    ``LoadPlugin(subdivkit.paraview_plugin_path(), remote=False, ns=globals())``."""
     from paraview.simple import LoadPlugin
-    return LoadPlugin(paraview_plugin_path(), ns=ns)
+    return LoadPlugin(paraview_plugin_path(), remote=False, ns=ns)
 
 
 __all__ = [

@@ -80,6 +80,17 @@ MeshData level_mesh(const Level& L, const LevelData& data) {
   return mesh;
 }
 
+// Level by level: the mesh with the user's arrays (hole faces left out), the finest with
+// finest_point_data added.
+std::vector<MeshData> level_meshes(const Hierarchy& h, const std::vector<LevelData>& data,
+                                   const std::vector<DataArray>& finest_point_data) {
+  std::vector<MeshData> meshes;
+  meshes.reserve(h.levels.size());
+  for (size_t l = 0; l < h.levels.size(); ++l) meshes.push_back(level_mesh(h.levels[l], data[l]));
+  for (const auto& a : finest_point_data) meshes.back().point_data.push_back(a);
+  return meshes;
+}
+
 }  // namespace
 
 void check_output_path(const std::filesystem::path& out) {
@@ -89,25 +100,14 @@ void check_output_path(const std::filesystem::path& out) {
                           "or .obj, .off, .ply, .stl", out.string(), ext));
 }
 
-void write_levels(const std::filesystem::path& out, const Hierarchy& h, const std::vector<LevelData>& data,
-                  const FeatureOptions& features, const std::vector<DataArray>& finest_point_data,
-                  const MeshOptions& obj_tags) {
-  check_output_path(out);
-  const std::string ext = lowercase_extension(out);
-  const int finest = int(h.levels.size()) - 1;
-  std::vector<MeshData> meshes;
-  meshes.reserve(h.levels.size());
-  for (int l = 0; l <= finest; ++l) meshes.push_back(level_mesh(h.levels[l], data[l]));
-  for (const auto& a : finest_point_data) meshes[finest].point_data.push_back(a);
-  if (ext != ".vtp" && ext != ".pvd") {
-    meshes[finest].options = obj_tags;
-    // OBJ holds face-varying data as vt; the other formats get a point per side of a seam.
-    write_mesh(out, ext == ".obj" ? meshes[finest] : split_at_seams(meshes[finest]));
-    return;
-  }
+std::vector<OutputLevel> describe_levels(const Hierarchy& h, const std::vector<LevelData>& data,
+                                         const FeatureOptions& features,
+                                         const std::vector<DataArray>& finest_point_data,
+                                         std::vector<MeshData>& meshes) {
+  meshes = level_meshes(h, data, finest_point_data);
   std::vector<OutputLevel> levels;
   std::vector<double> base_face;
-  for (int l = 0; l <= finest; ++l) {
+  for (int l = 0; l < int(meshes.size()); ++l) {
     const OutputLevel described = describe_level(h, l, meshes[l], features, base_face);
     meshes[l].point_data = described.point_data;
     meshes[l].cell_data = described.cell_data;
@@ -116,6 +116,23 @@ void write_levels(const std::filesystem::path& out, const Hierarchy& h, const st
     meshes[l].point_data.clear(), meshes[l].cell_data.clear();
     levels.push_back(std::move(level));
   }
+  return levels;
+}
+
+void write_levels(const std::filesystem::path& out, const Hierarchy& h, const std::vector<LevelData>& data,
+                  const FeatureOptions& features, const std::vector<DataArray>& finest_point_data,
+                  const MeshOptions& obj_tags) {
+  check_output_path(out);
+  const std::string ext = lowercase_extension(out);
+  if (ext != ".vtp" && ext != ".pvd") {
+    MeshData finest = std::move(level_meshes(h, data, finest_point_data).back());
+    finest.options = obj_tags;
+    // OBJ holds face-varying data as vt; the other formats get a point per side of a seam.
+    write_mesh(out, ext == ".obj" ? finest : split_at_seams(finest));
+    return;
+  }
+  std::vector<MeshData> meshes;
+  const std::vector<OutputLevel> levels = describe_levels(h, data, features, finest_point_data, meshes);
   if (ext == ".vtp") write_vtp(out, levels.back());
   else write_pvd(out, levels);
 }

@@ -24,6 +24,14 @@ void write_levels(const std::filesystem::path& out, const Hierarchy& h, const st
                   const FeatureOptions& features, const std::vector<DataArray>& finest_point_data = {},
                   const MeshOptions& obj_tags = {});
 
+// What write_levels writes to .vtp/.pvd, without a file: every level with the user's arrays
+// and SubdivKit's (as write_levels says), split at face-varying seams. The OutputLevels point
+// into `meshes`, which must outlive them. The ParaView plugin (plugins/paraview) shows these.
+std::vector<OutputLevel> describe_levels(const Hierarchy& h, const std::vector<LevelData>& data,
+                                         const FeatureOptions& features,
+                                         const std::vector<DataArray>& finest_point_data,
+                                         std::vector<MeshData>& meshes);
+
 // The output extensions write_levels accepts, for help texts and early checks.
 void check_output_path(const std::filesystem::path& out);
 

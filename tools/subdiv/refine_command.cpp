@@ -22,6 +22,7 @@
 #include "framework/scheme/scheme_sequence.h"
 #include "framework/util/error.h"
 #include "level_output.h"
+#include "limit_output.h"
 #include "memory_guard.h"
 #include "progress.h"
 #include "curve_refine.h"
@@ -180,38 +181,18 @@ MeshOptions tags_to_write(const RefineArgs& a, const RefineOptions& options, con
   return used;
 }
 
-// --limit and --normals: limit normals (point data "normal"), and with --limit the finest
-// level's positions and interpolated point arrays moved to their limits with the same masks
-// (framework/analysis/surface/limit_evaluation.h); the scheme that would refine it next decides.
+// --limit and --normals (limit_output.h), with a note on what had to be approximated.
 std::vector<DataArray> apply_limits(const RefineArgs& a, const SchemeSequence& seq, const Hierarchy& h,
                                     const RefineOptions& options, LevelData& finest) {
-  LimitOptions lo;
-  lo.features = options.features;
-  lo.first_step = options.first_step + seq.total_levels;
-  SchemeLimits limits(*seq.schemes.back(), lo);
-  const Level& level = h.levels.back();
-  const LimitResult limit = limits.evaluate(level, finest.positions);
-  if (a.limit) {
-    finest.positions = limit.positions;
-    bool data = false;
-    for (const DataArray& d : finest.point_data) data = data || !d.integer;
-    if (data) {
-      const StencilTable masks = limits.stencils(level).position;
-      for (DataArray& d : finest.point_data)
-        if (!d.integer) d.values = masks.apply(d.values, d.components);
-    }
-  }
-  std::vector<DataArray> out;
-  out.push_back(DataArray{"normal", 3, limit.normals, false, ArrayRole::Normals});
-  out.push_back(DataArray{"limit_exact", 1, std::vector<double>(limit.exact.begin(), limit.exact.end()), true});
-  out.push_back(DataArray{"normal_exact", 1, std::vector<double>(limit.normal_exact.begin(), limit.normal_exact.end()), true});
+  LimitArrays limits = limit_arrays(seq, h, options, finest, a.limit);
+  const LimitResult& limit = limits.result;
   if ((limit.approximate > 0 || limit.approximate_normals > 0) && !a.quiet)
     fmt::print(stderr,
                "subdiv: note: {} approximates {} position(s) and {} more normal(s) of {} vertices (point data "
                "limit_exact, normal_exact): {}\n",
                a.limit ? "--limit" : "--normals", limit.approximate, limit.approximate_normals, limit.exact.size(),
                fmt::join(limit.approximate_reasons, "; "));
-  return out;
+  return std::move(limits.point_data);
 }
 
 void run(const RefineArgs& a) {

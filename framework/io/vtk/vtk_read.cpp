@@ -258,7 +258,9 @@ void read_user_arrays(vtkPolyData& poly, MeshData& mesh, const fs::path& file) {
                                [&](vtkIdType t) { return cells[size_t(t)]; }, file);
 }
 
-MeshData to_mesh_data(vtkPolyData& poly, const fs::path& file) {
+}  // namespace
+
+MeshData polydata_to_mesh_data(vtkPolyData& poly, const fs::path& file) {
   MeshData mesh;
   const vtkIdType n = poly.GetNumberOfPoints();
   mesh.positions.resize(std::size_t(n) * 3);
@@ -271,15 +273,13 @@ MeshData to_mesh_data(vtkPolyData& poly, const fs::path& file) {
   return mesh;
 }
 
-}  // namespace
-
 MeshData read_vtk_polydata(const fs::path& file) {
   require_readable(file);
   const auto poly = lowercase_extension(file) == ".vtp" ? load_xml(file) : load_legacy(file);
   if (!poly) fail(file, "VTK produced no data");
   if (poly->GetNumberOfPoints() > std::numeric_limits<Index>::max())
     fail(file, "it has more points than SubdivKit's 32-bit indices hold");
-  return to_mesh_data(*poly, file);
+  return polydata_to_mesh_data(*poly, file);
 }
 
 }  // namespace subdiv::io_detail

@@ -1,0 +1,41 @@
+#include "analyze_job.h"
+
+#include <fmt/format.h>
+
+#include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/util/error.h"
+#include "scheme_choice.h"
+
+namespace subdiv::paraview {
+namespace {
+
+void check_valences(const AnalyzeRequest& r, const std::string& source) {
+  if (r.min_valence < 3 || r.max_valence > 64 || r.min_valence > r.max_valence)
+    throw Error(fmt::format("{}: Valences {}..{}: give a range from 3 to 64 with the first no larger than the "
+                            "last", source, r.min_valence, r.max_valence));
+}
+
+}  // namespace
+
+std::vector<SurfaceAnalysis> analyze_valences(const AnalyzeRequest& r, const std::string& source) {
+  check_valences(r, source);
+  if (scheme_kind(r.scheme) != "surface")
+    throw Error(fmt::format("{}: '{}' is a curve scheme; the characteristic map and the spectrum at extraordinary "
+                            "vertices belong to surface schemes (`subdiv analyze {}` analyses curve schemes)",
+                            source, r.scheme, r.scheme));
+  const auto scheme = load_scheme(r.scheme, parameter_overrides(r.parameters));
+  SurfaceAnalysisOptions options;
+  options.features.boundary = r.boundary;
+  options.characteristic_map = true;
+  std::vector<SurfaceAnalysis> analyses;
+  for (int n = r.min_valence; n <= r.max_valence; ++n) {
+    LocalConfig config;
+    config.centre = analysis_centre(*scheme);
+    config.valence = n;
+    analyses.push_back(analyse_configuration(*scheme, config, options));
+  }
+  return analyses;
+}
+
+}  // namespace subdiv::paraview

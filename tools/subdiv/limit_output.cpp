@@ -1,0 +1,33 @@
+#include "limit_output.h"
+
+namespace subdiv::cli {
+
+LimitArrays limit_arrays(const SchemeSequence& seq, const Hierarchy& h, const RefineOptions& options,
+                         LevelData& finest, bool move_to_limit) {
+  LimitOptions lo;
+  lo.features = options.features;
+  lo.first_step = options.first_step + seq.total_levels;
+  SchemeLimits limits(*seq.schemes.back(), lo);
+  const Level& level = h.levels.back();
+  LimitArrays out;
+  out.result = limits.evaluate(level, finest.positions);
+  const LimitResult& limit = out.result;
+  if (move_to_limit) {
+    finest.positions = limit.positions;
+    bool data = false;
+    for (const DataArray& d : finest.point_data) data = data || !d.integer;
+    if (data) {
+      const StencilTable masks = limits.stencils(level).position;
+      for (DataArray& d : finest.point_data)
+        if (!d.integer) d.values = masks.apply(d.values, d.components);
+    }
+  }
+  out.point_data.push_back(DataArray{"normal", 3, limit.normals, false, ArrayRole::Normals});
+  out.point_data.push_back(
+      DataArray{"limit_exact", 1, std::vector<double>(limit.exact.begin(), limit.exact.end()), true});
+  out.point_data.push_back(
+      DataArray{"normal_exact", 1, std::vector<double>(limit.normal_exact.begin(), limit.normal_exact.end()), true});
+  return out;
+}
+
+}  // namespace subdiv::cli

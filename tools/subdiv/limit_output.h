@@ -1,0 +1,25 @@
+#pragma once
+// --limit and --normals: the finest level's limit normals as point arrays, and with --limit
+// its positions and double point arrays moved to their limits with the same masks
+// (framework/analysis/surface/limit_evaluation.h); the scheme that would refine it next
+// decides. Shared by `subdiv refine` and the ParaView plugin's "Limit positions".
+#include <vector>
+
+#include "framework/analysis/surface/limit_evaluation.h"
+#include "framework/engine/refiner.h"
+#include "framework/primvar/level_data.h"
+#include "framework/scheme/scheme_sequence.h"
+
+namespace subdiv::cli {
+
+struct LimitArrays {
+  std::vector<DataArray> point_data;  // "normal" (the role Normals), "limit_exact", "normal_exact"
+  LimitResult result;                 // counts and reasons of what was approximated
+};
+
+// `finest` is level h.levels.back()'s data; with move_to_limit its positions and double point
+// arrays are replaced by their limits.
+LimitArrays limit_arrays(const SchemeSequence& seq, const Hierarchy& h, const RefineOptions& options,
+                         LevelData& finest, bool move_to_limit);
+
+}  // namespace subdiv::cli
