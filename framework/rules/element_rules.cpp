@@ -18,12 +18,12 @@ void add_point(RowBuilder& row, const RuleInputs& in, const CompiledTerm& term, 
   const Element kind = element_of(term.new_point);
   const ChildGroup* group = in.groups ? &(*in.groups)[int(kind)] : nullptr;
   const bool as_source = in.new_point_base >= 0;
-  if (!group || group->children.empty() || (!as_source && !in.blocks[int(kind)]))
+  if (!group || group->empty() || (!as_source && !in.blocks[int(kind)]))
     throw Error(fmt::format("{}: uses new {} points, which this step does not make", term.where, element_name(kind)));
-  const Index r = group->row_of_element[element];
+  const Index r = group->row_of(element);
   if (r == kNone)
     throw Error(fmt::format("{}: {} {} has no new point in this step", term.where, element_name(kind), element));
-  if (as_source) return row.add(in.new_point_base + group->children[r], w);
+  if (as_source) return row.add(in.new_point_base + group->child(r), w);
   row.add_row(*in.blocks[int(kind)], r, w);
 }
 

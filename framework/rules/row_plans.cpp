@@ -30,14 +30,6 @@ bool rule_inside(const CompiledRule& rule, Inside inside, const bool new_point_o
   return true;
 }
 
-// Element e's only child is children.front() + e, for every element.
-bool one_child_each_in_order(const ChildGroup& g) {
-  if (g.children.empty() || g.children.size() != g.row_of_element.size()) return false;
-  for (size_t e = 0; e < g.children.size(); ++e)
-    if (g.row_of_element[e] != Index(e) || g.children[e] != g.children.front() + Index(e)) return false;
-  return true;
-}
-
 }  // namespace
 
 RowPlanStore::RowPlanStore(const Level& parent_level, const ChildOrigins& child_origins, const WeightTables& tables,
@@ -61,7 +53,7 @@ RowPlanStore::RowPlanStore(const Level& parent_level, const ChildOrigins& child_
     light[int(Element::Edge)] = rule_inside(edge, edge_role_light, faces);
     light[int(Element::Vertex)] = rule_inside(vertex, vertex_role_light, faces_edges);
     for (int k = 0; k < kElementCount; ++k) {
-      if (one_child_each_in_order((*sources)[k])) first_child_[k] = (*sources)[k].children.front();
+      first_child_[k] = (*sources)[k].first_of_run();
       for (const CompiledTerm& t : tables.rule(Element(k), Context::Smooth).terms) {
         reads_face_points[k] |= t.new_point == NewPoint::Face;
         reads_edge_points[k] |= t.new_point == NewPoint::Edge;

@@ -64,9 +64,9 @@ public:
   Index new_point(Element k, Index e) const {
     if (first_child_[int(k)] != kNone) return parent.vertex_count + first_child_[int(k)] + e;
     const ChildGroup& g = (*sources)[int(k)];
-    if (g.children.empty()) return kNone;
-    const Index r = g.row_of_element[e];
-    return r == kNone ? kNone : parent.vertex_count + g.children[r];
+    if (g.empty()) return kNone;
+    const Index r = g.row_of(e);
+    return r == kNone ? kNone : parent.vertex_count + g.child(r);
   }
 
   const RowPlan* find(const std::vector<std::int32_t>& key) const;

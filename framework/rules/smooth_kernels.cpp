@@ -1,5 +1,7 @@
 #include "framework/rules/smooth_kernels.h"
 
+#include <algorithm>
+
 namespace subdiv {
 namespace {
 
@@ -55,27 +57,48 @@ std::vector<SmoothKernels::Term> compile_kernel(const StepContext& s, Element el
     if (!gather_of(element, t, gather)) return {};
     // Face points are weighed by their face's size k (element_rules.cpp), so k varies too.
     const bool varies = t.stride_j != 0 || (gather == Gather::FacePoints && t.stride_k != 0);
-    const bool more = t.stride_k || t.stride_j || t.stride_n0 || t.stride_n1 || t.stride_k0 || t.stride_k1;
-    const auto reads = more ? SmoothKernels::Term::Reads::More
-                       : t.stride_n ? SmoothKernels::Term::Reads::N
-                                    : SmoothKernels::Term::Reads::Nothing;
+    using Reads = SmoothKernels::Term::Reads;
+    const bool others = t.stride_j || t.stride_n0 || t.stride_n1 || t.stride_k0 || t.stride_k1;
+    const auto reads = others || (t.stride_n && t.stride_k) ? Reads::More
+                       : t.stride_n                         ? Reads::N
+                       : t.stride_k                         ? Reads::K
+                                                            : Reads::Nothing;
     terms.push_back({gather, &t, varies, reads});
   }
   return terms;
 }
 
-// out += w * p, over every channel (C of them, or `channels` when C is 0).
+// A new point's sum, over C channels in registers (so the compiler need not assume that
+// the output aliases the points it reads), or over any number straight in the output (C = 0).
 template <int C>
-inline void add_point(double* out, const double* p, double w, int channels) {
-  const int count = C > 0 ? C : channels;
-  for (int c = 0; c < count; ++c) out[c] += w * p[c];
-}
+class Accumulator {
+public:
+  Accumulator(double* out, int) : out_(out) {}
+  void add(const double* p, double w) {
+    for (int c = 0; c < C; ++c) sum_[c] += w * p[c];
+  }
+  void store() const {
+    for (int c = 0; c < C; ++c) out_[c] = sum_[c];
+  }
 
-template <int C>
-inline void clear(double* out, int channels) {
-  const int count = C > 0 ? C : channels;
-  for (int c = 0; c < count; ++c) out[c] = 0.0;
-}
+private:
+  double* out_;
+  double sum_[C] = {};
+};
+
+template <>
+class Accumulator<0> {
+public:
+  Accumulator(double* out, int channels) : out_(out), channels_(channels) { std::fill(out, out + channels, 0.0); }
+  void add(const double* p, double w) {
+    for (int c = 0; c < channels_; ++c) out_[c] += w * p[c];
+  }
+  void store() const {}
+
+private:
+  double* out_;
+  int channels_;
+};
 
 // The vertex of triangle f that is not a or b, or kNone if f is not a triangle.
 Index third_corner(const Level& L, Index f, Index a, Index b) {
@@ -91,21 +114,19 @@ SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGro
     : step_(step), groups_(groups) {
   for (int k = 0; k < kElementCount; ++k) {
     kernels_[k] = compile_kernel(step, Element(k));
+    for (const Term& t : kernels_[k])
+      if (k == int(Element::Edge) && (t.reads == Term::Reads::More || t.gather == Gather::Opposite)) edge_reads_shape_ = true;
     // Primal splits number a kind's new points element by element: found without lookup.
-    const ChildGroup& g = groups[k];
-    bool in_order = !g.children.empty() && g.children.size() == g.row_of_element.size();
-    for (size_t e = 0; in_order && e < g.children.size(); ++e)
-      in_order = g.row_of_element[e] == Index(e) && g.children[e] == g.children.front() + Index(e);
-    if (in_order) first_child_[k] = g.children.front();
+    first_child_[k] = groups[k].first_of_run();
   }
 }
 
 Index SmoothKernels::new_point(Element kind, Index e) const {
   if (first_child_[int(kind)] != kNone) return first_child_[int(kind)] + e;
   const ChildGroup& g = groups_[int(kind)];
-  if (g.children.empty()) return kNone;
-  const Index r = g.row_of_element[e];
-  return r == kNone ? kNone : g.children[r];
+  if (g.empty()) return kNone;
+  const Index r = g.row_of(e);
+  return r == kNone ? kNone : g.child(r);
 }
 
 Index SmoothKernels::run(Element kind, const ChildGroup& group, Index begin, Index end, const StepSources& in,
@@ -125,7 +146,7 @@ Index SmoothKernels::run_rows(Element kind, const ChildGroup& group, Index begin
   Index done = 0;
   auto each_row = [&](auto point) {
     for (Index r = begin; r < end; ++r) {
-      const Index child = group.children[r];
+      const Index child = group.child(r);
       const Index element = in_order ? r : origins.parent[child];
       double sum;
       if (!point(element, child, dst + size_t(child) * in.channels, sum)) {
@@ -165,18 +186,18 @@ bool SmoothKernels::vertex_point(Index v, const StepSources& in, double* out, do
   const auto ring = L.ring_edges(v);
   const auto faces = L.ring_faces(v);
   const int n = int(ring.size()), channels = in.channels;
-  clear<C>(out, channels);
+  Accumulator<C> acc(out, channels);
   double sum = 0.0;
   for (const Term& term : kernels_[int(Element::Vertex)]) {
     const double w0 = term.weight_at(n, 0, 0);
     switch (term.gather) {
       case Gather::Self:
-        add_point<C>(out, in.vertex(v), w0, channels), sum += w0;
+        acc.add(in.vertex(v), w0), sum += w0;
         break;
       case Gather::Ring:
         for (int j = 0; j < n; ++j) {
           const double w = term.varies ? term.weight_at(n, 0, j) : w0;
-          add_point<C>(out, in.vertex(L.other_end(ring[j], v)), w, channels), sum += w;
+          acc.add(in.vertex(L.other_end(ring[j], v)), w), sum += w;
         }
         break;
       case Gather::FacePoints:
@@ -184,7 +205,7 @@ bool SmoothKernels::vertex_point(Index v, const StepSources& in, double* out, do
           const Index c = new_point(Element::Face, faces[j]);
           if (c == kNone) return false;
           const double w = term.varies ? term.weight_at(n, L.face_size(faces[j]), j) : w0;
-          add_point<C>(out, in.child(c), w, channels), sum += w;
+          acc.add(in.child(c), w), sum += w;
         }
         break;
       case Gather::EdgePoints:
@@ -192,12 +213,13 @@ bool SmoothKernels::vertex_point(Index v, const StepSources& in, double* out, do
           const Index c = new_point(Element::Edge, ring[j]);
           if (c == kNone) return false;
           const double w = term.varies ? term.weight_at(n, 0, j) : w0;
-          add_point<C>(out, in.child(c), w, channels), sum += w;
+          acc.add(in.child(c), w), sum += w;
         }
         break;
       default: return false;
     }
   }
+  acc.store();
   weight_sum = sum;
   return true;
 }
@@ -209,25 +231,28 @@ bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, doub
   if (L.edge_on_boundary(e) || L.non_manifold_edge(e) || step_.features.edges[e].crease_weight != 0.f) return false;
   const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
   const Index faces[2] = {L.edge_faces[2 * e], L.edge_faces[2 * e + 1]};
-  const int n0 = L.valence(a), n1 = L.valence(b);
-  const int k0 = L.face_size(faces[0]), k1 = L.face_size(faces[1]);
+  // The ends' valences and the faces' sizes only for formulas that read them: four random
+  // reads an edge otherwise.
+  const bool shape = edge_reads_shape_;
+  const int n0 = shape ? L.valence(a) : 0, n1 = shape ? L.valence(b) : 0;
+  const int k0 = shape ? L.face_size(faces[0]) : 0, k1 = shape ? L.face_size(faces[1]) : 0;
   const int channels = in.channels;
-  clear<C>(out, channels);
+  Accumulator<C> acc(out, channels);
   double sum = 0.0;
   for (const Term& term : kernels_[int(Element::Edge)]) {
     auto weight = [&](int k, int j) { return term.weight_at(2, k, j, n0, n1, k0, k1); };
     switch (term.gather) {
       case Gather::Ends: {
         const double wa = weight(0, 0), wb = term.varies ? weight(0, 1) : wa;
-        add_point<C>(out, in.vertex(a), wa, channels), add_point<C>(out, in.vertex(b), wb, channels), sum += wa + wb;
+        acc.add(in.vertex(a), wa), acc.add(in.vertex(b), wb), sum += wa + wb;
         break;
       }
       case Gather::FacePoints:
         for (int j = 0; j < 2; ++j) {
           const Index c = new_point(Element::Face, faces[j]);
           if (c == kNone) return false;
-          const double w = weight(j == 0 ? k0 : k1, j);
-          add_point<C>(out, in.child(c), w, channels), sum += w;
+          const double w = weight(shape ? (j == 0 ? k0 : k1) : 0, j);
+          acc.add(in.child(c), w), sum += w;
         }
         break;
       case Gather::Opposite:
@@ -235,12 +260,13 @@ bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, doub
           const Index u = third_corner(L, faces[j], a, b);
           if (u == kNone) return false;
           const double w = weight(3, j);
-          add_point<C>(out, in.vertex(u), w, channels), sum += w;
+          acc.add(in.vertex(u), w), sum += w;
         }
         break;
       default: return false;
     }
   }
+  acc.store();
   weight_sum = sum;
   return true;
 }
@@ -251,14 +277,14 @@ bool SmoothKernels::face_point(Index f, const StepSources& in, double* out, doub
   const Level& L = step_.parent;
   const auto corners = L.face(f);
   const int k = int(corners.size()), channels = in.channels;
-  clear<C>(out, channels);
+  Accumulator<C> acc(out, channels);
   double sum = 0.0;
   for (const Term& term : kernels_[int(Element::Face)]) {
     const double w0 = term.weight_at(k, k, 0);
     if (term.gather == Gather::Corners) {
       for (int j = 0; j < k; ++j) {
         const double w = term.varies ? term.weight_at(k, k, j) : w0;
-        add_point<C>(out, in.vertex(corners[j]), w, channels), sum += w;
+        acc.add(in.vertex(corners[j]), w), sum += w;
       }
     } else {  // Gather::EdgePoints
       const auto edges = L.face_edge_list(f);
@@ -266,10 +292,11 @@ bool SmoothKernels::face_point(Index f, const StepSources& in, double* out, doub
         const Index c = new_point(Element::Edge, edges[j]);
         if (c == kNone) return false;
         const double w = term.varies ? term.weight_at(k, k, j) : w0;
-        add_point<C>(out, in.child(c), w, channels), sum += w;
+        acc.add(in.child(c), w), sum += w;
       }
     }
   }
+  acc.store();
   weight_sum = sum;
   return true;
 }
@@ -286,19 +313,20 @@ bool SmoothKernels::corner_point(Index f, int corner, const StepSources& in, dou
   if (F.vertex_sharpness[corners[corner]] > 0.f || F.edges[edges[corner]].crease_weight != 0.f ||
       F.edges[edges[(corner + k - 1) % k]].crease_weight != 0.f)
     return false;
-  clear<C>(out, channels);
+  Accumulator<C> acc(out, channels);
   double sum = 0.0;
   for (const Term& term : kernels_[int(Element::Corner)]) {
     const double w0 = term.weight_at(k, k, 0);
     if (term.gather == Gather::Self) {
-      add_point<C>(out, in.vertex(corners[corner]), w0, channels), sum += w0;
+      acc.add(in.vertex(corners[corner]), w0), sum += w0;
       continue;
     }
     for (int j = 0; j < k; ++j) {  // Gather::Corners
       const double w = term.varies ? term.weight_at(k, k, j) : w0;
-      add_point<C>(out, in.vertex(corners[(corner + j) % k]), w, channels), sum += w;
+      acc.add(in.vertex(corners[(corner + j) % k]), w), sum += w;
     }
   }
+  acc.store();
   weight_sum = sum;
   return true;
 }

@@ -54,11 +54,12 @@ public:
     Gather gather;
     const CompiledTerm* weights;
     bool varies;  // the weight depends on the point's place j along the role
-    // Most formulas read n alone, or nothing: their weight is one load.
-    enum class Reads : std::uint8_t { Nothing, N, More } reads;
+    // Most formulas read n or k alone, or nothing: their weight is one load.
+    enum class Reads : std::uint8_t { Nothing, N, K, More } reads;
     double weight_at(int n, int k, int j, int n0 = 0, int n1 = 0, int k0 = 0, int k1 = 0) const {
       if (reads == Reads::Nothing) return weights->table[0];
       if (reads == Reads::N) return weights->table[size_t(n) * weights->stride_n];
+      if (reads == Reads::K) return weights->table[size_t(k) * weights->stride_k];
       return weights->weight(n, k, j, n0, n1, k0, k1);
     }
   };
@@ -84,6 +85,7 @@ private:
   const std::vector<ChildGroup>& groups_;
   std::vector<Term> kernels_[kElementCount];  // empty: not covered
   Index first_child_[kElementCount] = {kNone, kNone, kNone, kNone};
+  bool edge_reads_shape_ = false;  // an edge term reads n0, n1, k0, k1 or needs triangles
 };
 
 }  // namespace subdiv

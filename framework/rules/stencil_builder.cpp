@@ -15,17 +15,16 @@ namespace {
 std::vector<int> contiguous_group_order(const std::vector<ChildGroup>& groups, Index child_count) {
   std::vector<int> order;
   for (int g = 0; g < int(groups.size()); ++g) {
-    const auto& children = groups[g].children;
-    if (children.empty()) continue;
-    if (children.back() - children.front() + 1 != Index(children.size())) return {};
+    const ChildGroup& group = groups[g];
+    if (group.empty()) continue;
+    if (group.child(group.size() - 1) - group.child(0) + 1 != group.size()) return {};
     order.push_back(g);
   }
-  std::sort(order.begin(), order.end(),
-            [&](int a, int b) { return groups[a].children.front() < groups[b].children.front(); });
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return groups[a].child(0) < groups[b].child(0); });
   Index next = 0;
   for (int g : order) {
-    if (groups[g].children.front() != next) return {};
-    next += Index(groups[g].children.size());
+    if (groups[g].child(0) != next) return {};
+    next += groups[g].size();
   }
   return next == child_count ? order : std::vector<int>{};
 }
@@ -59,7 +58,7 @@ StencilTable gather_rows(const StepContext& s, const std::vector<ChildGroup>& gr
   const Index child_count = Index(s.origins.kind.size());
   std::vector<Index> position(child_count);
   for (const auto& g : groups)
-    for (Index r = 0; r < Index(g.children.size()); ++r) position[g.children[r]] = r;
+    for (Index r = 0; r < g.size(); ++r) position[g.child(r)] = r;
   StencilTable table;
   table.source_count = s.parent.vertex_count;
   resize_bulk(table.offsets, size_t(child_count) + 1);

@@ -44,7 +44,7 @@ void weighted_sum(size_t count, SourceOf source_of, const double* weights, const
 void apply_group_rows(const StepContext& s, const RuleInputs& in, Element kind, const ChildGroup& group,
                       const SmoothKernels& kernels, RowPlanStore& plans, const StepSources& sources, double* dst,
                       RowPaths* paths) {
-  const Index count = Index(group.children.size());
+  const Index count = group.size();
   const int channels = sources.channels;
   const bool use_kernels = s.use_kernels && kernels.covers(kind);
   FirstBadRow first_bad(count);
@@ -60,7 +60,7 @@ void apply_group_rows(const StepContext& s, const RuleInputs& in, Element kind, 
       for (Index r = range.begin(); r < range.end(); ++r) left.push_back(r);
     }
     for (Index r : left) {
-      const Index child = group.children[r];
+      const Index child = group.child(r);
       double* out = dst + size_t(child) * channels;
       RowPlanner::Outcome outcome = RowPlanner::Outcome::Generic;
       if (s.use_row_plans)

@@ -154,34 +154,62 @@ void fill_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index
   }
 }
 
-std::vector<ChildGroup> group_children(const StepContext& s) {
-  std::vector<ChildGroup> groups(kElementCount);
-  Index sizes[kElementCount] = {};
-  for (OriginKind kind : s.origins.kind) ++sizes[int(kind)];
-  for (int e = 0; e < kElementCount; ++e) {
-    groups[e].row_of_element.assign(element_count(s.parent, Element(e)), kNone);
-    groups[e].children.reserve(size_t(sizes[e]));
-  }
+namespace {
+
+// The parent element a child hangs off in its kind's group: a corner is numbered over all
+// face corners.
+Index group_element(const StepContext& s, Index c) {
+  const Index p = s.origins.parent[c];
+  return s.origins.kind[c] == OriginKind::Corner ? s.parent.face_offsets[p] + s.origins.local[c] : p;
+}
+
+// Per kind: whether its children are one run (ChildGroup::run), where it starts, and how
+// many children it has.
+struct KindRuns {
+  bool run[kElementCount] = {true, true, true, true};
+  Index first[kElementCount] = {kNone, kNone, kNone, kNone};
+  Index count[kElementCount] = {};
+};
+
+KindRuns find_runs(const StepContext& s) {
+  KindRuns k;
   for (Index c = 0; c < Index(s.origins.kind.size()); ++c) {
     const int kind = int(s.origins.kind[c]);
-    Index element = s.origins.parent[c];
-    if (s.origins.kind[c] == OriginKind::Corner) element = s.parent.face_offsets[element] + s.origins.local[c];
-    if (groups[kind].row_of_element[element] == kNone)
-      groups[kind].row_of_element[element] = Index(groups[kind].children.size());
-    groups[kind].children.push_back(c);
+    if (k.first[kind] == kNone) k.first[kind] = c;
+    if (c != k.first[kind] + k.count[kind] || group_element(s, c) != k.count[kind]) k.run[kind] = false;
+    ++k.count[kind];
+  }
+  for (int e = 0; e < kElementCount; ++e)
+    if (k.count[e] != element_count(s.parent, Element(e))) k.run[e] = false;
+  return k;
+}
+
+}  // namespace
+
+std::vector<ChildGroup> group_children(const StepContext& s) {
+  const KindRuns runs = find_runs(s);
+  std::vector<ChildGroup> groups;
+  for (int e = 0; e < kElementCount; ++e)
+    groups.push_back(runs.count[e] == 0 ? ChildGroup()
+                     : runs.run[e]      ? ChildGroup::run(runs.first[e], runs.count[e])
+                                        : ChildGroup(element_count(s.parent, Element(e)), runs.count[e]));
+  for (Index c = 0; c < Index(s.origins.kind.size()); ++c) {
+    const int kind = int(s.origins.kind[c]);
+    if (!runs.run[kind]) groups[kind].add(group_element(s, c), c);
   }
   return groups;
 }
+
 std::vector<Element> build_order(const StepContext& s, const std::vector<ChildGroup>& groups) {
   const NewPoint as_new[kElementCount] = {NewPoint::Vertex, NewPoint::Edge, NewPoint::Face, NewPoint::None};
   std::vector<Element> order;
   bool placed[kElementCount] = {};
   for (int round = 0; round < kElementCount; ++round)
     for (int e = 0; e < kElementCount; ++e) {
-      if (placed[e] || groups[e].children.empty()) continue;
+      if (placed[e] || groups[e].empty()) continue;
       bool ready = true;
       for (int d = 0; d < kElementCount; ++d)
-        if (d != e && !placed[d] && !groups[d].children.empty() && references(s.tables, Element(e), as_new[d]))
+        if (d != e && !placed[d] && !groups[d].empty() && references(s.tables, Element(e), as_new[d]))
           ready = false;
       if (as_new[e] != NewPoint::None && references(s.tables, Element(e), as_new[e]))
         throw Error(fmt::format("{}: the {} rules use new {} points, which they define", s.source,
@@ -189,7 +217,7 @@ std::vector<Element> build_order(const StepContext& s, const std::vector<ChildGr
       if (ready) placed[e] = true, order.push_back(Element(e));
     }
   for (int e = 0; e < kElementCount; ++e)
-    if (!groups[e].children.empty() && !placed[e])
+    if (!groups[e].empty() && !placed[e])
       throw Error(fmt::format("{}: the rules refer to each other's new points in a cycle", s.source));
   return order;
 }
@@ -203,7 +231,7 @@ double weight_sum(std::span<const double> weights) {
 void FirstBadRow::report_if_any(const StepContext& s, const RuleInputs& in, const ChildGroup& group) const {
   const Index r = first_.load();
   if (r == count_) return;
-  const Index child = group.children[r];
+  const Index child = group.child(r);
   RowBuilder row;
   fill_row(row, s, in, child);
   const double sum = weight_sum(row.weights());
@@ -217,7 +245,7 @@ void FirstBadRow::report_if_any(const StepContext& s, const RuleInputs& in, cons
 }
 
 ChunkedRows build_rows(const StepContext& s, const RuleInputs& in, const ChildGroup& group, RowPlanStore& plans) {
-  const Index count = Index(group.children.size());
+  const Index count = group.size();
   ChunkedRows rows;
   rows.chunk_rows = kRowChunk;
   rows.chunks.resize((count + kRowChunk - 1) / kRowChunk);
@@ -231,7 +259,7 @@ ChunkedRows build_rows(const StepContext& s, const RuleInputs& in, const ChildGr
     part.indices.reserve(size_t(end - begin) * 12);
     part.weights.reserve(size_t(end - begin) * 12);
     for (Index r = begin; r < end; ++r) {
-      const Index child = group.children[r];
+      const Index child = group.child(r);
       const auto outcome = s.use_row_plans ? planner.try_append(child, part) : RowPlanner::Outcome::Generic;
       if (outcome != RowPlanner::Outcome::Appended) {
         row.clear();

@@ -28,6 +28,58 @@ TableShape table_shape(const FormulaUses& uses, int max_n, int max_k, int max_j)
   return s;
 }
 
+// Calls visit(index into the table, coordinates) for every entry of a table of this shape.
+template <class Visit>
+void for_each_entry(const int count[7], const size_t stride[7], Visit visit) {
+  int x[7];
+  for (x[0] = 0; x[0] < count[0]; ++x[0])
+    for (x[1] = 0; x[1] < count[1]; ++x[1])
+      for (x[2] = 0; x[2] < count[2]; ++x[2])
+        for (x[3] = 0; x[3] < count[3]; ++x[3])
+          for (x[4] = 0; x[4] < count[4]; ++x[4])
+            for (x[5] = 0; x[5] < count[5]; ++x[5])
+              for (x[6] = 0; x[6] < count[6]; ++x[6]) {
+                size_t i = 0;
+                for (int v = 0; v < 7; ++v) i += stride[v] * size_t(x[v]);
+                visit(i, x);
+              }
+}
+
+// A formula may name a variable its value does not depend on (a definition that selects
+// between cases by a parameter reads the variables of every case): such a dimension is
+// dropped from the table, so that the kernels (smooth_kernels.h) see a weight that depends
+// on n alone as such. The values stay the same.
+void drop_constant_dimensions(CompiledTerm& t, const int count[7]) {
+  size_t* strides[7] = {&t.stride_n, &t.stride_k, &t.stride_j, &t.stride_n0, &t.stride_n1, &t.stride_k0, &t.stride_k1};
+  size_t stride[7];
+  for (int v = 0; v < 7; ++v) stride[v] = *strides[v];
+  bool constant[7];
+  for (int v = 0; v < 7; ++v) {
+    constant[v] = stride[v] != 0;
+    if (!constant[v]) continue;
+    for_each_entry(count, stride, [&](size_t i, const int* x) {
+      if (x[v] != 0 && t.table[i] != t.table[i - stride[v] * size_t(x[v])]) constant[v] = false;
+    });
+  }
+  if (std::none_of(constant, constant + 7, [](bool c) { return c; })) return;
+  int kept_count[7];
+  size_t kept_stride[7] = {}, size = 1;
+  for (int v = 6; v >= 0; --v) {
+    const bool keep = stride[v] != 0 && !constant[v];
+    kept_count[v] = keep ? count[v] : 1;
+    kept_stride[v] = keep ? size : 0;
+    if (keep) size *= size_t(count[v]);
+  }
+  std::vector<double> kept(size);
+  for_each_entry(kept_count, kept_stride, [&](size_t i, const int* x) {
+    size_t from = 0;
+    for (int v = 0; v < 7; ++v) from += stride[v] * size_t(x[v]);
+    kept[i] = t.table[from];
+  });
+  t.table = std::move(kept);
+  for (int v = 0; v < 7; ++v) *strides[v] = kept_stride[v];
+}
+
 CompiledTerm compile_term(const Term& term, FormulaSet& formulas, int max_n, int max_k, int level) {
   CompiledTerm out;
   out.role = term.role;
@@ -42,18 +94,11 @@ CompiledTerm compile_term(const Term& term, FormulaSet& formulas, int max_n, int
   out.stride_n0 = shape.stride[3], out.stride_n1 = shape.stride[4];
   out.stride_k0 = shape.stride[5], out.stride_k1 = shape.stride[6];
   out.table.resize(shape.size);
-  const int* c = shape.count;
-  for (int n = 0; n < c[0]; ++n)
-    for (int k = 0; k < c[1]; ++k)
-      for (int j = 0; j < c[2]; ++j)
-        for (int n0 = 0; n0 < c[3]; ++n0)
-          for (int n1 = 0; n1 < c[4]; ++n1)
-            for (int k0 = 0; k0 < c[5]; ++k0)
-              for (int k1 = 0; k1 < c[6]; ++k1)
-                out.table[out.stride_n * n + out.stride_k * k + out.stride_j * j + out.stride_n0 * n0 +
-                          out.stride_n1 * n1 + out.stride_k0 * k0 + out.stride_k1 * k1] =
-                    formulas.evaluate(id, {double(n), double(k), double(j), double(level), double(n0), double(n1),
-                                           double(k0), double(k1)});
+  for_each_entry(shape.count, shape.stride, [&](size_t i, const int* x) {
+    out.table[i] = formulas.evaluate(id, {double(x[0]), double(x[1]), double(x[2]), double(level), double(x[3]),
+                                          double(x[4]), double(x[5]), double(x[6])});
+  });
+  drop_constant_dimensions(out, shape.count);
   return out;
 }
 
