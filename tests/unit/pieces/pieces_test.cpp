@@ -1,0 +1,130 @@
+// Refinement in pieces (engine/mesh_pieces.h, engine/ghost_rings.h): every shipped surface
+// scheme, with boundaries, creases, a corner and a hole, refined in 1 to 7 pieces with the
+// ghost rings the engine derives, gives the whole mesh's refinement bit for bit; one ring
+// less does not.
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+
+#include "framework/engine/face_partition.h"
+#include "framework/engine/ghost_rings.h"
+#include "framework/scheme/scheme_registry.h"
+#include "piece_meshes.h"
+
+using namespace subdiv;
+using namespace subdiv::test;
+
+namespace {
+
+constexpr int kSheet = 8;
+
+struct TestBase {
+  Level level;
+  std::vector<double> positions;
+};
+
+// The featured sheet in the faces the scheme takes; quads-only schemes get it after one
+// Catmull-Clark step (valence 3 and 5 vertices, creases and the hole carried along).
+TestBase base_for(const Scheme& s) {
+  const int need = s.required_face_size ? s.required_face_size : splitter_info(s.split()).required_face_size;
+  const Mesh m = bumpy_sheet(kSheet, need == 3);
+  Level L = featured_level(m, kSheet);
+  if (need != 4) return {L, m.positions};
+  auto cc = load_scheme("catmull-clark");
+  RefineOptions o;
+  const Hierarchy h = refine_topology(*cc, L, o);
+  // Rebuilt from its faces, as a mesh read from a file is (rings start where build_level starts them).
+  const std::vector<int> one_piece(h.levels[1].face_count(), 0);
+  return {cut_piece(h.levels[1], one_piece, 0, 0).level, step_values(*cc, h, 0, m.positions, 3, o)};
+}
+
+int rings_for(const Scheme& s, int levels) {
+  const SchemeRun run{&s, levels};
+  return ghost_rings(std::span<const SchemeRun>(&run, 1));
+}
+
+std::vector<SchemeListing> surface_schemes() {
+  std::vector<SchemeListing> out;
+  for (const SchemeListing& listing : list_schemes())
+    if (listing.kind == "surface" && listing.origin == "built-in") out.push_back(listing);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("every shipped surface scheme in 1 to 7 pieces gives the whole mesh's refinement bit for bit") {
+  const auto schemes = surface_schemes();
+  REQUIRE(schemes.size() >= 10);
+  for (const SchemeListing& listing : schemes) {
+    const auto s = load_scheme(listing.name);
+    const TestBase base = base_for(*s);
+    for (int levels = 1; levels <= 3; ++levels) {
+      RefineOptions o;
+      o.levels = levels;
+      const std::vector<Face> serial = serial_faces(*s, base.level, base.positions, o);
+      const int rings = rings_for(*s, levels);
+      for (int pieces = 1; pieces <= 7; ++pieces) {
+        CAPTURE(listing.name);
+        CAPTURE(levels);
+        CAPTURE(pieces);
+        CAPTURE(rings);
+        const std::vector<int> owner = partition_faces(base.level, base.positions, pieces).face_piece;
+        CHECK(merged_pieces(*s, base.level, base.positions, owner, pieces, rings, o) == serial);
+      }
+    }
+  }
+}
+
+TEST_CASE("one ghost ring less than derived changes the result") {
+  for (const SchemeListing& listing : surface_schemes()) {
+    const auto s = load_scheme(listing.name);
+    const TestBase base = base_for(*s);
+    for (int levels = 1; levels <= 3; ++levels) {
+      const int rings = rings_for(*s, levels);
+      if (rings == 0) continue;  // nothing is read beyond a face (linear splits): no ring to take away
+      RefineOptions o;
+      o.levels = levels;
+      const std::vector<int> owner = partition_faces(base.level, base.positions, 4).face_piece;
+      CAPTURE(listing.name);
+      CAPTURE(levels);
+      CAPTURE(rings);
+      CHECK(merged_pieces(*s, base.level, base.positions, owner, 4, rings - 1, o) !=
+            serial_faces(*s, base.level, base.positions, o));
+    }
+  }
+}
+
+TEST_CASE("schemes whose children read nothing beyond their parent face need no ghost rings") {
+  // Bilinear and midpoint rules: vertices stay, new points are means of an edge's or a
+  // face's own vertices, so a piece alone refines as in the whole mesh.
+  for (const char* name : {"bilinear", "midpoint"}) {
+    const auto s = load_scheme(name);
+    for (int levels = 1; levels <= 4; ++levels) CHECK(rings_for(*s, levels) == 0);
+  }
+}
+
+TEST_CASE("ghost rings grow with the levels and stay bounded by the split's shrinking") {
+  // sum_l loss / scale^l converges: for a binary split at most twice the loss of a level.
+  for (const SchemeListing& listing : surface_schemes()) {
+    const auto s = load_scheme(listing.name);
+    const SchemeRun one{s.get(), 1};
+    const double loss = ring_loss_per_level(std::span<const SchemeRun>(&one, 1))[0];
+    const double scale = splitter_info(s->split()).scale;
+    int previous = 0;
+    for (int levels = 1; levels <= 12; ++levels) {
+      const int rings = rings_for(*s, levels);
+      CAPTURE(listing.name);
+    CAPTURE(levels);
+      CHECK(rings >= previous);
+      CHECK(rings <= int(std::ceil(loss * scale / (scale - 1) - 1e-9)));
+      previous = rings;
+    }
+  }
+}
+
+TEST_CASE("a scheme sequence adds its schemes' losses, each shrunk by the splits before it") {
+  const auto shape = load_scheme("catmull-clark-shape"), cc = load_scheme("catmull-clark");
+  const std::vector<SchemeRun> runs{{shape.get(), 1}, {cc.get(), 2}};
+  const std::vector<double> loss = ring_loss_per_level(runs);
+  REQUIRE(loss.size() == 3);
+  CHECK(ghost_rings(runs) == int(std::ceil(loss[0] + loss[1] / 2 + loss[2] / 4 - 1e-9)));
+}
