@@ -77,6 +77,11 @@ MeshPiece cut_piece(const Level& base, std::span<const int> face_owner, int piec
   return p;
 }
 
+Index piece_face_count(const Level& base, std::span<const int> face_owner, int piece, int ghost_rings) {
+  const std::vector<std::uint8_t> in = faces_with_ghosts(base, face_owner, piece, ghost_rings);
+  return Index(std::count(in.begin(), in.end(), 1));
+}
+
 namespace {
 
 // The smallest owner among the faces around a parent element a child vertex comes from.

@@ -25,6 +25,9 @@ struct MeshPiece {
 // each row is summed in the same order. Throws subdiv::Error when the piece has no face.
 MeshPiece cut_piece(const Level& base, std::span<const int> face_owner, int piece, int ghost_rings);
 
+// How many faces cut_piece's level would have, without building it.
+Index piece_face_count(const Level& base, std::span<const int> face_owner, int piece, int ghost_rings);
+
 // Per face of every level of `h` (refined from a piece's level), the piece that owns it: a
 // child face lying in a parent face is owned by that face's owner; a face lying in none (the
 // faces a dual split makes around edges and vertices) by the smallest owner among the parent
