@@ -128,6 +128,8 @@ PieceSummary refine_in_pieces(const PieceJob& job, const SchemeSequence& seq, co
   }
   if (!group.all(failure.empty())) {
     staged.discard();
+    std::error_code ec;
+    std::filesystem::remove(piece_file(job.output, 0).parent_path(), ec);  // only if no earlier run's pieces are in it
     throw Error(failure.empty() ? "another rank failed (its message is above); no piece was written" : failure);
   }
   staged.commit();
