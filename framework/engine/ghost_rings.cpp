@@ -99,7 +99,7 @@ double level_loss(const Scheme& scheme) {
   for (size_t i = 0; i < scheme.steps.size(); ++i) {
     const double reach = step_rules_reach(scheme, scheme.steps[i]);
     if (i == 0) loss = std::max(0.0, std::max(reach, split.topology_reach) - 0.5);
-    else loss += reach / split.scale;
+    else loss += reach / (split.ring_scale > 0 ? split.ring_scale : split.scale);
   }
   return loss;
 }
@@ -122,7 +122,8 @@ int ghost_rings(std::span<const SchemeRun> runs) {
   for (const SchemeRun& run : runs)
     for (int l = 0; l < run.levels; ++l, ++level) {
       rings += loss[level] / shrink;
-      shrink *= splitter_info(run.scheme->split()).scale;
+      const SplitterInfo& split = splitter_info(run.scheme->split());
+      shrink *= split.ring_scale > 0 ? split.ring_scale : split.scale;
     }
   // Rounding: a sum that is a whole number up to round-off is that number.
   return int(std::ceil(rings - 1e-9));

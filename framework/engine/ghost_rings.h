@@ -10,7 +10,7 @@
 // curve scheme's support (table in docs/scale.md). A piece whose points are right up to m
 // parent rings beyond its faces has right child points up to m - (R - 1/2) parent rings
 // beyond them (children lie on the half rings), which is s (m - R + 1/2) rings of the child
-// level, s the split's scale; a smoothing pass of reach R takes R rings of its own level.
+// level, s the split's ring scale (SplitterInfo::ring_scale); a smoothing pass of reach R takes R rings of its own level.
 // Starting from the ghost rings g, the last level must still be right on the piece:
 // g >= sum over levels l of rho_l / (s_0 ... s_{l-1}), rho_l the level's loss in its parent's
 // rings, and the smallest such whole g is the width.

@@ -9,6 +9,36 @@
 namespace subdiv {
 namespace {
 
+// True when the faces of v that are in the piece form more than one fan around it: the
+// piece would be pinched there, a non-manifold vertex (topology/level.h), and a level with
+// one is refined on the general path, whose rings start elsewhere (round-off apart from the
+// whole mesh's sums). Only for manifold vertices: a non-manifold one has no fans to follow.
+bool pinched(const Level& base, const std::vector<std::uint8_t>& in, Index v) {
+  if (base.non_manifold_vertex(v)) return false;
+  const auto faces = base.ring_faces(v);
+  const size_t n = faces.size();
+  int runs = 0;
+  for (size_t i = 0; i < n; ++i) {
+    // A run starts at a face in the piece whose predecessor (around v) is not.
+    const bool has_before = i > 0 || !base.on_boundary(v);
+    if (in[faces[i]] && !(has_before && in[faces[(i + n - 1) % n]])) ++runs;
+  }
+  return runs > 1;
+}
+
+// Fills every pinch with the faces around its vertex, until none is left: a few more
+// ghost faces, and a manifold piece of a manifold mesh.
+void fill_pinches(const Level& base, std::vector<std::uint8_t>& in) {
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (Index v = 0; v < base.vertex_count; ++v)
+      if (pinched(base, in, v)) {
+        for (Index f : base.ring_faces(v)) in[f] = 1;
+        changed = true;
+      }
+  }
+}
+
 // The piece's faces grown by `rings` rings of faces sharing a vertex, as a mask over faces.
 std::vector<std::uint8_t> faces_with_ghosts(const Level& base, std::span<const int> face_owner, int piece, int rings) {
   std::vector<std::uint8_t> in(base.face_count(), 0);
@@ -27,6 +57,7 @@ std::vector<std::uint8_t> faces_with_ghosts(const Level& base, std::span<const i
       }
     frontier = std::move(next);
   }
+  fill_pinches(base, in);
   return in;
 }
 

@@ -20,7 +20,8 @@ struct MeshPiece {
 };
 
 // The faces of `piece` (face_owner[f] == piece) and every face within `ghost_rings` rings
-// of them (ring k: the faces sharing a vertex with ring k - 1). Faces and vertices keep the
+// of them (ring k: the faces sharing a vertex with ring k - 1), plus the faces around any
+// vertex where those would form two fans (a pinch). Faces and vertices keep the
 // base mesh's relative order, so every ring starts where it starts in the whole mesh and
 // each row is summed in the same order. Throws subdiv::Error when the piece has no face.
 MeshPiece cut_piece(const Level& base, std::span<const int> face_owner, int piece, int ghost_rings);

@@ -88,6 +88,11 @@ struct SplitterInfo {
   // made only where the element is interior, which depends on the faces one ring beyond it.
   // Negative: not known (a plugin's split that does not say), and pieces are refused.
   double topology_reach = -1;
+  // How many rings of the child level one ring of the parent becomes, in the direction where
+  // they are fewest: `scale` for splits whose child rings follow the parent's, 1 for a split
+  // that turns the mesh by 45 degrees (a parent ring along an edge is one child ring across
+  // its diagonal). 0: the same as `scale`.
+  double ring_scale = 0;
 };
 
 SplitResult split(SplitKind kind, const Level& parent, int step_index);
