@@ -34,3 +34,9 @@ print('pvpython reads out/cube_levels/level_3.vtp:', n, 'cells')
 # The ParaView plugin (python/subdivkit/paraview_plugin.py): loaded into pvpython, refining
 # ParaView's own sources (tests/paraview/plugin_test.py).
 PYTHONPATH=build/python pvpython tests/paraview/plugin_test.py
+# A refinement in pieces opened by ParaView as one dataset, by one pvbatch and by two under
+# MPI (tests/paraview/pieces_check.py); mpirun runs as root in CI.
+build/tools/subdiv/subdiv refine examples/meshes/torus-quads.obj -l 3 -q -o out/torus.vtp
+build/tools/subdiv/subdiv refine examples/meshes/torus-quads.obj -l 3 --pieces 4 -q -o out/torus.pvtp
+pvbatch tests/paraview/pieces_check.py out/torus.pvtp out/torus.vtp
+mpirun --allow-run-as-root --oversubscribe -n 2 pvbatch tests/paraview/pieces_check.py out/torus.pvtp out/torus.vtp
