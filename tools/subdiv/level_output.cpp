@@ -9,7 +9,7 @@
 #include "framework/io/mesh_write.h"
 #include "framework/io/vtk/vtk_output.h"
 #include "framework/io/vtk/vtk_pieces.h"
-#include "framework/engine/mesh_pieces.h"
+#include "mesh_subset.h"
 #include "framework/util/error.h"
 
 namespace subdiv::cli {
@@ -82,40 +82,15 @@ MeshData level_mesh(const Level& L, const LevelData& data) {
   return mesh;
 }
 
-// The faces of `mesh` at `kept` with the vertices they use (in their old order), the arrays
-// and tags that go with them.
+// The faces of `mesh` at `kept` with the vertices they use, in their old order.
 MeshData keep_faces(const MeshData& mesh, const std::vector<Index>& kept, std::vector<Index>& new_vertex) {
-  MeshData out;
   new_vertex.assign(mesh.vertex_count(), kNone);
   for (Index f : kept)
     for (Index i = mesh.face_offsets[f]; i < mesh.face_offsets[f + 1]; ++i) new_vertex[mesh.face_vertices[i]] = 0;
   std::vector<Index> used;
   for (Index v = 0; v < mesh.vertex_count(); ++v)
     if (new_vertex[v] == 0) new_vertex[v] = Index(used.size()), used.push_back(v);
-  out.positions = gather_tuples(mesh.positions, 3, used);
-  for (Index f : kept) {
-    for (Index i = mesh.face_offsets[f]; i < mesh.face_offsets[f + 1]; ++i)
-      out.face_vertices.push_back(new_vertex[mesh.face_vertices[i]]);
-    out.face_offsets.push_back(Index(out.face_vertices.size()));
-  }
-  for (const DataArray& a : mesh.point_data) {
-    out.point_data.push_back(a);
-    out.point_data.back().values = gather_tuples(a.values, a.components, used);
-  }
-  for (const DataArray& a : mesh.cell_data) {
-    out.cell_data.push_back(a);
-    out.cell_data.back().values = gather_tuples(a.values, a.components, kept);
-  }
-  for (const FaceVaryingArray& a : mesh.face_varying) {
-    FaceVaryingArray k = a;
-    k.indices.clear();
-    for (Index f : kept)
-      k.indices.insert(k.indices.end(), a.indices.begin() + mesh.face_offsets[f], a.indices.begin() + mesh.face_offsets[f + 1]);
-    out.face_varying.push_back(std::move(k));
-  }
-  for (const CornerTag& c : mesh.corners)
-    if (new_vertex[c.v] != kNone) out.corners.push_back({new_vertex[c.v], c.sharpness});
-  return out;
+  return mesh_subset(mesh, used, kept, new_vertex);
 }
 
 }  // namespace

@@ -4,7 +4,9 @@
 #include <charconv>
 #include <cmath>
 #include <fmt/format.h>
+#include <fstream>
 #include <string>
+#include <unistd.h>
 
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
@@ -45,6 +47,13 @@ void check_fits_in_memory(const Scheme& scheme, const Level& base, int levels, d
                             "available (limited by {}); {}",
                             levels, finest_faces(scheme, base, levels), size_text(need), size_text(have.bytes),
                             have.source, fix));
+}
+
+double resident_bytes() {
+  std::ifstream statm("/proc/self/statm");
+  double size = 0, resident = 0;
+  if (!(statm >> size >> resident)) return 0;
+  return resident * double(sysconf(_SC_PAGESIZE));
 }
 
 double parse_memory_size(const std::string& text, const std::string& option) {

@@ -19,6 +19,9 @@ void check_fits_in_memory(const Scheme& scheme, const Level& base, int levels, d
 // limit (framework/util/memory_limit.h); very large when unknown: do not refuse then.
 double available_memory_bytes();
 
+// Bytes this process holds now (resident set, /proc/self/statm); 0 where unknown.
+double resident_bytes();
+
 // "8G", "512M", "100k" or plain bytes (binary units); throws subdiv::Error naming `option`.
 double parse_memory_size(const std::string& text, const std::string& option);
 

@@ -133,7 +133,7 @@ TEST_CASE("pieces merged are the whole refinement: faces, points bit for bit, po
 TEST_CASE("--max-memory picks enough pieces for each to fit") {
   const auto dir = fresh_dir("cli-pieces-memory");
   const fs::path out = dir / "torus.pvtp";
-  const CliResult r = run_subdiv("refine " + source_path("examples/meshes/torus-quads.obj") + " -l 5 --max-memory 4M -o " +
+  const CliResult r = run_subdiv("refine " + source_path("examples/meshes/torus-quads.obj") + " -l 6 --max-memory 64M -o " +
                                  out.string());
   REQUIRE_MESSAGE(r.exit_code == 0, r.output);
   CHECK(piece_entries(out) > 1);
