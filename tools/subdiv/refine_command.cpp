@@ -367,8 +367,8 @@ void add_refine_command(CLI::App& app) {
                       "refinement. Writes OUT_pieces/piece_<i>.vtp and OUT.pvtp; see docs/scale.md")
       ;
   cmd->add_option("--max-memory", args->max_memory,
-                  "Memory one piece may use, e.g. 8G or 512M: picks --pieces when it is not given (and with it, "
-                  "refuses a piece that would not fit)");
+                  "Memory each process may use, e.g. 8G or 512M: picks --pieces so that the base mesh and one piece "
+                  "at a time fit (with --pieces given, refuses a piece that would not)");
   add_param_option(cmd, args->params);
   add_vertex_param_option(cmd, args->vertex_params);
   add_boundary_option(cmd, "--boundary", args->boundary);
