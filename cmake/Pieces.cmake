@@ -4,9 +4,12 @@
 #  - MPI (Debian's libopenmpi-dev) lets `subdiv refine --pieces` spread the pieces over the
 #    ranks of mpirun; without it the pieces are refined one after another in one process.
 #    Only the subdiv tool links MPI, never libsubdiv. Sets SUBDIV_HAVE_MPI.
-find_path(METIS_INCLUDE_DIR metis.h)
-find_library(METIS_LIBRARY metis)
-if(METIS_INCLUDE_DIR AND METIS_LIBRARY)
+option(SUBDIV_WITH_METIS "Partition pieces with METIS when it is found" ON)
+if(SUBDIV_WITH_METIS)
+  find_path(METIS_INCLUDE_DIR metis.h)
+  find_library(METIS_LIBRARY metis)
+endif()
+if(SUBDIV_WITH_METIS AND METIS_INCLUDE_DIR AND METIS_LIBRARY)
   add_library(subdiv_metis INTERFACE IMPORTED)
   target_include_directories(subdiv_metis INTERFACE ${METIS_INCLUDE_DIR})
   target_link_libraries(subdiv_metis INTERFACE ${METIS_LIBRARY})
