@@ -11,6 +11,7 @@
 #include <set>
 #include <tuple>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkIdList.h>
 #include <vtkPointData.h>
@@ -38,14 +39,25 @@ struct Surface {
   std::vector<std::vector<Point>> faces;
   // (array, point, tuple): a point on a UV seam is written once per side, with its tuple.
   std::set<std::tuple<std::string, Point, std::vector<double>>> point_values;
+  std::set<std::tuple<std::string, std::vector<Point>, std::vector<double>>> cell_values;  // by face
 
   void add(vtkPolyData& poly) {
     vtkCellArray* polys = poly.GetPolys();
     vtkNew<vtkIdList> ids;
-    for (polys->InitTraversal(); polys->GetNextCell(ids);) {
+    vtkCellData* cd = poly.GetCellData();
+    // VTK numbers cells vertices first, then lines (crease edges), then polygons.
+    vtkIdType cell = poly.GetNumberOfVerts() + poly.GetNumberOfLines();
+    for (polys->InitTraversal(); polys->GetNextCell(ids); ++cell) {
       std::vector<Point> f;
       for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i) f.push_back(point_bits(poly, ids->GetId(i)));
       std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+      for (int a = 0; a < cd->GetNumberOfArrays(); ++a) {
+        vtkDataArray* array = cd->GetArray(a);
+        if (std::string(array->GetName()) == "parent_face") continue;  // numbers the piece's own faces
+        std::vector<double> tuple(array->GetNumberOfComponents());
+        array->GetTuple(cell, tuple.data());
+        cell_values.insert({array->GetName(), f, tuple});
+      }
       faces.push_back(std::move(f));
     }
     vtkPointData* pd = poly.GetPointData();
@@ -127,6 +139,8 @@ TEST_CASE("pieces merged are the whole refinement: faces, points bit for bit, po
       // (points shared by two pieces carry the same tuples in both).
       CHECK(parts.point_values.size() == reference.point_values.size());
       CHECK(parts.point_values == reference.point_values);
+      CHECK(!parts.cell_values.empty());
+      CHECK(parts.cell_values == reference.cell_values);
     }
   }
 }
