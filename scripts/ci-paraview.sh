@@ -38,3 +38,9 @@ ls build/lib*/paraview-*/plugins/SubdivKit/SubdivKit.so ||
   { echo "ci-paraview.sh: the ParaView plugin was not built (see the configure output of plugins/paraview)" >&2; exit 1; }
 grep -q "paraview_refine" build/plugins/paraview/CTestTestfile.cmake ||
   { echo "ci-paraview.sh: the plugin's pvbatch tests are not registered with ctest" >&2; exit 1; }
+# A refinement in pieces opened by ParaView as one dataset, by one pvbatch and by two under
+# MPI (tests/paraview/pieces_check.py); mpirun runs as root in CI.
+build/tools/subdiv/subdiv refine examples/meshes/torus-quads.obj -l 3 -q -o out/torus.vtp
+build/tools/subdiv/subdiv refine examples/meshes/torus-quads.obj -l 3 --pieces 4 -q -o out/torus.pvtp
+pvbatch tests/paraview/pieces_check.py out/torus.pvtp out/torus.vtp
+mpirun --allow-run-as-root --oversubscribe -n 2 pvbatch tests/paraview/pieces_check.py out/torus.pvtp out/torus.vtp

@@ -46,6 +46,7 @@ packages=(
   libopenmesh-dev nlohmann-json3-dev libfmt-dev doctest-dev
   "${vtk_packages[@]}" libeigen3-dev libmuparser-dev libcli11-dev libtbb-dev
   libosd-dev ccache
+  libmetis-dev openmpi-bin libopenmpi-dev
   pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib
 )
 install_missing "${packages[@]}"

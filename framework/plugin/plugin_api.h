@@ -33,7 +33,7 @@
 // Raised whenever anything a plugin sees changes incompatibly: this record, PluginRegistry,
 // the specs it takes, or the engine types they expose (Level, ChildOrigins, SplitResult,
 // FeatureContexts, RowWriter, ...).
-#define SUBDIV_PLUGIN_INTERFACE_VERSION 2u
+#define SUBDIV_PLUGIN_INTERFACE_VERSION 3u  // 3: SplitterInfo::topology_reach, ring_scale (pieces)
 // The SubdivKit release these headers belong to (checked against the build at compile
 // time in plugin_loader.cpp).
 #define SUBDIVKIT_VERSION_STRING "0.1.0"

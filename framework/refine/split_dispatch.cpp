@@ -58,6 +58,9 @@ struct SplitterTable {
     mid.scale = std::sqrt(2.0);
     mid.period = 2;  // the split turns the mesh by 45 degrees
     mid.handles_non_manifold = true;
+    quad.topology_reach = tri.topology_reach = 0.5;
+    sqrt3.topology_reach = dual.topology_reach = mid.topology_reach = 1.5;
+    mid.ring_scale = 1.0;
     for (SplitterInfo* info : {&quad, &tri, &sqrt3, &dual, &mid}) builtins.push_back(std::move(*info));
   }
 

@@ -89,6 +89,18 @@ struct SplitterInfo {
   // non-manifold meshes for the others (plugins that do not opt in), naming the splitter.
   bool handles_non_manifold = false;
   std::string origin = "built-in";  // or the plugin that registered it
+  // Refinement in pieces (engine/ghost_rings.h): how far a child face's topology reaches,
+  // in rings of the parent level measured from the child's own place. 1/2 when every child
+  // face lies in one parent face (the primal splits); 3/2 when the split also makes faces
+  // around vertices or across edges (faces of corner or edge points, flipped edges): such a face is
+  // made only where the element is interior, which depends on the faces one ring beyond it.
+  // Negative: not known (a plugin's split that does not say), and pieces are refused.
+  double topology_reach = -1;
+  // How many rings of the child level one ring of the parent becomes, in the direction where
+  // they are fewest: `scale` for splits whose child rings follow the parent's, 1 for a split
+  // that turns the mesh by 45 degrees (a parent ring along an edge is one child ring across
+  // its diagonal). 0: the same as `scale`.
+  double ring_scale = 0;
 };
 
 // With `faces_only`, the splitter's split_faces_only where it has one.

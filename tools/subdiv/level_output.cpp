@@ -8,6 +8,8 @@
 #include "framework/io/mesh_seams.h"
 #include "framework/io/mesh_write.h"
 #include "framework/io/vtk/vtk_output.h"
+#include "framework/io/vtk/vtk_pieces.h"
+#include "mesh_subset.h"
 #include "framework/util/error.h"
 
 namespace subdiv::cli {
@@ -91,7 +93,54 @@ std::vector<MeshData> level_meshes(const Hierarchy& h, const std::vector<LevelDa
   return meshes;
 }
 
+// The faces of `mesh` at `kept` with the vertices they use, in their old order.
+MeshData keep_faces(const MeshData& mesh, const std::vector<Index>& kept, std::vector<Index>& new_vertex) {
+  new_vertex.assign(mesh.vertex_count(), kNone);
+  for (Index f : kept)
+    for (Index i = mesh.face_offsets[f]; i < mesh.face_offsets[f + 1]; ++i) new_vertex[mesh.face_vertices[i]] = 0;
+  std::vector<Index> used;
+  for (Index v = 0; v < mesh.vertex_count(); ++v)
+    if (new_vertex[v] == 0) new_vertex[v] = Index(used.size()), used.push_back(v);
+  return mesh_subset(mesh, used, kept, new_vertex);
+}
+
 }  // namespace
+
+void write_piece(StagedFiles& staged, const std::filesystem::path& target, const Hierarchy& h,
+                 const std::vector<LevelData>& data, const FeatureOptions& features,
+                 const std::vector<Index>& base_faces, const std::vector<int>& finest_owner, int piece) {
+  const int finest = int(h.levels.size()) - 1;
+  const Level& L = h.levels[finest];
+  MeshData whole = level_mesh(L, data[finest]);
+  // The arrays SubdivKit adds, base_face through every level, then numbered in the whole mesh.
+  std::vector<double> base_face;
+  const MeshData none;
+  for (int l = 0; l < finest; ++l) describe_level(h, l, none, features, base_face);
+  OutputLevel described = describe_level(h, finest, whole, features, base_face);
+  for (DataArray& a : described.cell_data)
+    if (a.name == "base_face")
+      for (double& b : a.values) b = b < 0 ? b : double(base_faces[size_t(b)]);
+  whole.point_data = std::move(described.point_data);
+  whole.cell_data = std::move(described.cell_data);
+  // The piece's own faces, numbered as `whole` numbers them (holes left out).
+  std::vector<Index> kept;
+  for (Index f = 0, written = 0; f < L.face_count(); ++f) {
+    if (L.is_hole(f)) continue;
+    if (finest_owner[f] == piece) kept.push_back(written);
+    ++written;
+  }
+  std::vector<Index> new_vertex;
+  MeshData mine = keep_faces(whole, kept, new_vertex);
+  for (const CreaseTag& c : whole.creases) {
+    const Index e = find_edge(L, c.v0, c.v1);
+    if (e != kNone && finest_owner[L.edge_faces[2 * e]] == piece && new_vertex[c.v0] != kNone && new_vertex[c.v1] != kNone)
+      mine.creases.push_back({new_vertex[c.v0], new_vertex[c.v1], c.sharpness});
+  }
+  mine = split_at_seams(mine);  // ParaView shows per-point data only
+  OutputLevel level{&mine, finest, std::move(mine.point_data), std::move(mine.cell_data)};
+  mine.point_data.clear(), mine.cell_data.clear();
+  write_piece_vtp(staged, target, level);
+}
 
 void check_output_path(const std::filesystem::path& out) {
   const std::string ext = lowercase_extension(out);

@@ -6,6 +6,7 @@
 
 #include "framework/io/mesh_data.h"
 #include "framework/io/vtk/vtk_output.h"
+#include "framework/util/atomic_file.h"
 #include "framework/engine/refiner.h"
 #include "framework/primvar/level_data.h"
 
@@ -31,6 +32,15 @@ std::vector<OutputLevel> describe_levels(const Hierarchy& h, const std::vector<L
                                          const FeatureOptions& features,
                                          const std::vector<DataArray>& finest_point_data,
                                          std::vector<MeshData>& meshes);
+
+// One piece of a refinement in pieces (engine/mesh_pieces.h), as write_levels writes a .vtp:
+// the finest level of the piece's hierarchy `h` with only the faces `piece` owns
+// (finest_owner, per face) and their vertices; crease edges where the piece owns the face
+// in their first slot, so that no crease is written twice. "base_face" numbers the whole
+// mesh's faces (base_faces: per face of the piece's base level). Staged in `staged`.
+void write_piece(StagedFiles& staged, const std::filesystem::path& target, const Hierarchy& h,
+                 const std::vector<LevelData>& data, const FeatureOptions& features,
+                 const std::vector<Index>& base_faces, const std::vector<int>& finest_owner, int piece);
 
 // The output extensions write_levels accepts, for help texts and early checks.
 void check_output_path(const std::filesystem::path& out);

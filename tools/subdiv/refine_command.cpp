@@ -26,6 +26,8 @@
 #include "memory_guard.h"
 #include "progress.h"
 #include "curve_refine.h"
+#include "piece_refine.h"
+#include "process_group.h"
 
 namespace subdiv::cli {
 namespace {
@@ -47,6 +49,10 @@ struct RefineArgs {
   bool boundary_given = false, crease_method_given = false, fvar_boundary_given = false;
   std::string fvar_boundary = "all";  // OpenSubdiv's default (Sdc::Options::FVAR_LINEAR_ALL)
   bool smooth_triangles = false;  // --smooth-triangles
+  int pieces = 0;                 // --pieces N; 0: not given
+  std::string max_memory;         // --max-memory SIZE; empty: not given
+  bool pieces_given = false;
+  bool in_pieces() const { return pieces_given || !max_memory.empty(); }
 };
 
 RefineOptions refine_options(const RefineArgs& a) {
@@ -195,11 +201,66 @@ std::vector<DataArray> apply_limits(const RefineArgs& a, const SchemeSequence& s
   return std::move(limits.point_data);
 }
 
+// --pieces and --max-memory write a .pvtp, and only a .pvtp comes from them; what a piece
+// cannot do yet is refused before any work.
+void check_piece_options(const RefineArgs& a) {
+  const bool pvtp = lowercase_extension(a.output) == ".pvtp";
+  if (!a.in_pieces()) {
+    if (pvtp)
+      throw Error(fmt::format("cannot write '{}': a .pvtp holds a refinement in pieces; add --pieces N (or "
+                              "--max-memory SIZE), or write .vtp or .pvd",
+                              a.output));
+    return;
+  }
+  if (!pvtp)
+    throw Error(fmt::format("--pieces and --max-memory write one .vtp per piece and a .pvtp that lists them, but -o "
+                            "'{}' is not a .pvtp; write -o {}.pvtp",
+                            a.output, std::filesystem::path(a.output).replace_extension().string()));
+  if (a.limit || a.normals)
+    throw Error(fmt::format("{} cannot be combined with --pieces or --max-memory yet (limit masks read a ring "
+                            "beyond a piece); refine whole, or leave out {}",
+                            a.limit ? "--limit" : "--normals", a.limit ? "--limit" : "--normals"));
+}
+
+// --pieces N or --max-memory SIZE: see piece_refine.h.
+void run_in_pieces(const RefineArgs& a, const SchemeSequence& seq, const MeshData& mesh, const Level& base,
+                   const RefineOptions& options, std::chrono::steady_clock::time_point t0) {
+  PieceJob job{a.output, a.pieces, a.max_memory.empty() ? 0.0 : parse_memory_size(a.max_memory, "--max-memory")};
+  if (a.pieces_given && a.pieces < 1)
+    throw Error(fmt::format("--pieces {}: a refinement needs at least one piece; ask for 1 to {} pieces", a.pieces,
+                            base.face_count()));
+  if (a.pieces > base.face_count())
+    throw Error(fmt::format("--pieces {}: the mesh has only {} faces to share out; ask for 1 to {} pieces", a.pieces,
+                            base.face_count(), base.face_count()));
+  std::vector<std::string> notes;
+  bool first = true;
+  Progress progress;
+  const RefinePieceData refine = [&](const Hierarchy& h, const MeshData& piece, const RefineOptions& o) {
+    std::vector<std::string> piece_notes;  // every piece would say the same: the first one's
+    auto levels = refine_data(a, seq, h, piece, o, progress, piece_notes);
+    if (first) notes = piece_notes, first = false;
+    return levels;
+  };
+  const PieceSummary done = refine_in_pieces(job, seq, mesh, base, options, refine);
+  progress.done();
+  if (a.quiet) return;
+  for (const auto& note : notes) fmt::print("{}\n", note);
+  fmt::print("{}: {} level(s) of {} in {} piece(s) ({}, {} ghost ring(s)){} -> {} faces in {:.3f} s -> {}\n", a.mesh,
+             seq.total_levels, a.scheme, done.pieces, done.method, done.rings,
+             done.ranks > 1 ? fmt::format(" on {} ranks, this rank", done.ranks) : "", done.faces,
+             seconds_since(t0), a.output);
+}
+
 void run(const RefineArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
+  if (is_curve_scheme(a.scheme) && a.in_pieces())
+    throw Error(fmt::format("--pieces: '{}' is a curve scheme; refinement in pieces is for surfaces, refine "
+                            "polylines whole (leave out --pieces and --max-memory)",
+                            a.scheme));
   if (is_curve_scheme(a.scheme))  // polylines: tools/subdiv/curve_refine.cpp
     return refine_curves_command({a.mesh, a.scheme, a.output, a.levels, parse_params(a.params), a.threads, a.quiet});
-  check_output_path(a.output);
+  check_piece_options(a);
+  if (!a.in_pieces()) check_output_path(a.output);
   // CLI11's range check lets NaN through (every comparison with it is false).
   if (std::isnan(a.feature_angle))
     throw Error("--feature-angle nan is not an angle; give degrees from 0 to 180");
@@ -231,7 +292,9 @@ void run(const RefineArgs& a) {
     const Index sharp = tag_edges_sharper_than(base, mesh.positions, a.feature_angle);
     notes.push_back(fmt::format("--feature-angle {}: {} edge(s) made infinitely sharp", a.feature_angle, sharp));
   }
-  check_fits_in_memory(*seq.schemes.front(), base, seq.total_levels);
+  if (!a.in_pieces())
+    check_fits_in_memory(*seq.schemes.front(), base, seq.total_levels, 0,
+                         "ask for fewer levels, or refine in pieces (--pieces N or --max-memory SIZE, -o OUT.pvtp)");
 
   RefineOptions options = refine_options(with_mesh_options(a, mesh.options));
   if (!a.vertex_params.empty() && cleanup.dropped_vertices > 0)
@@ -239,6 +302,7 @@ void run(const RefineArgs& a) {
                             "dropped (see the warning) and the rest renumbered; remove them from the mesh first",
                             a.mesh));
   options.vertex_parameters = read_vertex_params(a.vertex_params, base.vertex_count);
+  if (a.in_pieces()) return run_in_pieces(a, seq, mesh, base, options, t0);
   Progress progress;
   progress.say(fmt::format("refining topology: {} levels of {}", seq.total_levels, a.scheme));
   Hierarchy h = refine_topology(seq.runs, std::move(base), options);
@@ -273,8 +337,19 @@ void add_refine_command(CLI::App& app) {
   CLI::Option* levels =
       cmd->add_option("-l,--levels", args->levels, "Number of refinement levels")->check(CLI::Range(0, 30))->capture_default_str();
   cmd->add_option("-o,--output", args->output,
-                  "Output file: .vtp (finest level) or .pvd (all levels) for ParaView, or .obj, .off, .ply, .stl")
+                  "Output file: .vtp (finest level) or .pvd (all levels) for ParaView, or .obj, .off, .ply, .stl; "
+                  ".pvtp with --pieces")
       ->required();
+  cmd->add_option("--pieces", args->pieces,
+                  std::string("Refine in N pieces, one after another (only one in memory), or spread over the ranks "
+                              "of mpirun (this build: ") +
+                      process_group_kind() +
+                      "); each piece gets the ghost rings its scheme needs, so the result equals the whole "
+                      "refinement. Writes OUT_pieces/piece_<i>.vtp and OUT.pvtp; see docs/scale.md")
+      ;
+  cmd->add_option("--max-memory", args->max_memory,
+                  "Memory each process may use, e.g. 8G or 512M: picks --pieces so that the base mesh and one piece "
+                  "at a time fit (with --pieces given, refuses a piece that would not)");
   add_param_option(cmd, args->params);
   add_vertex_param_option(cmd, args->vertex_params);
   add_boundary_option(cmd, "--boundary", args->boundary);
@@ -318,6 +393,7 @@ void add_refine_command(CLI::App& app) {
     args->boundary_given = cmd->count("--boundary") > 0;
     args->crease_method_given = cmd->count("--crease-method") > 0;
     args->fvar_boundary_given = cmd->count("--fvar-boundary") > 0;
+    args->pieces_given = cmd->count("--pieces") > 0;
     run(*args);
   });
 }

@@ -1,0 +1,22 @@
+# Refines MESH in 5 pieces serially and on 2 MPI ranks; every piece file and the .pvtp must
+# be byte for byte the same.
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK}/serial ${WORK}/mpi)
+set(args refine ${MESH} --scheme catmull-clark -l 3 --pieces 5 -q)
+execute_process(COMMAND ${SUBDIV} ${args} -o ${WORK}/serial/out.pvtp RESULT_VARIABLE serial_rc)
+execute_process(COMMAND ${MPIEXEC} --allow-run-as-root --oversubscribe -n 2 ${SUBDIV} ${args} -o ${WORK}/mpi/out.pvtp
+                RESULT_VARIABLE mpi_rc)
+if(NOT serial_rc EQUAL 0 OR NOT mpi_rc EQUAL 0)
+  message(FATAL_ERROR "serial run exited with ${serial_rc}, mpirun -n 2 with ${mpi_rc}")
+endif()
+set(files out.pvtp)
+foreach(i RANGE 4)
+  list(APPEND files out_pieces/piece_${i}.vtp)
+endforeach()
+foreach(f IN LISTS files)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/serial/${f} ${WORK}/mpi/${f} RESULT_VARIABLE differ)
+  if(differ)
+    message(FATAL_ERROR "${f} differs between the serial run and mpirun -n 2")
+  endif()
+endforeach()
+message(STATUS "serial and mpirun -n 2: ${files} identical")
