@@ -25,6 +25,10 @@ struct Job {
   bool row_plans = true;       // SubdivKit: replay learnt stencil rows (rules/row_plans.h)
   bool kernels = true;         // SubdivKit: compiled smooth kernels (rules/smooth_kernels.h)
   bool tables = false;         // SubdivKit: build stencil tables and apply them, instead of step_values
+  // Repeated evaluation (--mode update): topology (and tables) once, outside the
+  // repetitions, then only the positions re-evaluated: OpenSubdiv's StencilTableFactory +
+  // UpdateValues against step_values (or, with tables, one composed table).
+  bool update = false;
 };
 
 // A stage's time on two clocks: elapsed (wall) and the process's user time, which leaves
@@ -50,7 +54,7 @@ struct Timings {
   Clocks setup;    // base-level topology from the face arrays
   Clocks topo;     // uniform refinement of the topology to the level
   Clocks stencil;  // SubdivKit with --geometry tables: building the stencil tables (else and OSD: 0)
-  Clocks apply;    // interpolating xyz level by level
+  Clocks apply;    // interpolating xyz level by level (--mode update: one re-evaluation)
   Clocks total() const { return setup + topo + stencil + apply; }
   Clocks geom() const { return stencil + apply; }
 };

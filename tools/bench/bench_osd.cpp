@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/stencilTableFactory.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefinerFactory.h>
 
@@ -73,6 +74,40 @@ void report_results(const Job& job, const Mesh& mesh, const Far::TopologyRefiner
       report.records.push_back({keys[i], {xyz[i].p[0], xyz[i].p[1], xyz[i].p[2]}});
 }
 
+using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+
+// --mode update: RefineUniform and StencilTableFactory once (the table from the base
+// vertices straight to the last level, OpenSubdiv's way to re-evaluate an animated mesh);
+// each repetition is one UpdateValues.
+WorkerReport run_osd_updates(const Job& job, const Mesh& mesh, const Far::TopologyDescriptor& desc,
+                             const Factory::Options& factory_options, bool loop) {
+  Timings once;
+  Stopwatch clock;
+  std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(desc, factory_options));
+  if (!refiner) throw std::runtime_error("OpenSubdiv could not build the base level");
+  Far::TopologyRefiner::UniformOptions uniform(job.level);
+  uniform.fullTopologyInLastLevel = job.osd_full_topology;
+  refiner->RefineUniform(uniform);
+  once.topo = clock.lap();
+  Far::StencilTableFactoryReal<double>::Options options;
+  options.generateIntermediateLevels = false;
+  options.generateOffsets = true;
+  std::unique_ptr<const Far::StencilTableReal<double>> table(
+      Far::StencilTableFactoryReal<double>::Create(*refiner, options));
+  once.stencil = clock.lap();
+  const Xyz* base = reinterpret_cast<const Xyz*>(mesh.xyz.data());
+  return repeat_cold_and_warm(job, [&](Timings& t, WorkerReport* report) {
+    t = once;
+    Stopwatch evaluation;
+    std::vector<Xyz> values(size_t(table->GetNumStencils()));
+    table->UpdateValues(base, values.data());
+    t.apply = evaluation.lap();
+    const std::uint64_t digest = digest_of({&values[0].p[0], 3 * values.size()});
+    if (report) report_results(job, mesh, *refiner, loop, values, digest, *report);
+    return digest;
+  });
+}
+
 }  // namespace
 
 WorkerReport run_osd(const Job& job, const Mesh& mesh) {
@@ -88,9 +123,9 @@ WorkerReport run_osd(const Job& job, const Mesh& mesh) {
   Sdc::Options sdc;
   sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
   sdc.SetCreasingMethod(Sdc::Options::CREASE_UNIFORM);
-  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   const Factory::Options factory_options(loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, sdc);
 
+  if (job.update) return run_osd_updates(job, mesh, desc, factory_options, loop);
   return repeat_cold_and_warm(job, [&](Timings& t, WorkerReport* report) {
     Stopwatch clock;
     std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(desc, factory_options));

@@ -58,6 +58,49 @@ void report_results(const Job& job, const Mesh& mesh, const subdiv::Hierarchy& h
 
 }  // namespace
 
+namespace {
+
+// --mode update: the topology (and with --geometry tables one table composed over the
+// levels) once; each repetition re-evaluates the positions only.
+WorkerReport run_subdivkit_updates(const Job& job, const Mesh& mesh, const subdiv::Scheme& scheme,
+                                   subdiv::RefineOptions options) {
+  Timings once;
+  Stopwatch clock;
+  subdiv::Hierarchy h = subdiv::refine_topology(
+      scheme, subdiv::build_level(mesh.vertex_count, mesh.face_offsets, mesh.face_vertices), options);
+  once.topo = clock.lap();
+  subdiv::StencilTable composed;
+  if (job.tables) {
+    subdiv::build_stencils(scheme, h, options);
+    composed = h.stencils[0];
+    for (int l = 1; l < job.level; ++l) composed = subdiv::compose(composed, h.stencils[size_t(l)]);
+    h.stencils.clear();
+    once.stencil = clock.lap();
+  }
+  return repeat_cold_and_warm(job, [&](Timings& t, WorkerReport* report) {
+    t = once;
+    subdiv::RowPaths paths;  // counted in the cold repetition
+    options.row_paths = report ? &paths : nullptr;
+    Stopwatch evaluation;
+    std::vector<double> values;
+    if (job.tables) {
+      values = composed.apply(mesh.xyz, 3);
+    } else {
+      values = mesh.xyz;
+      for (int l = 0; l < job.level; ++l) values = subdiv::step_values(scheme, h, l, values, 3, options);
+    }
+    t.apply = evaluation.lap();
+    const std::uint64_t digest = digest_of(values);
+    if (report) {
+      report_results(job, mesh, h, values, digest, *report);
+      report->kernel_points = paths.kernel, report->plan_points = paths.plan, report->generic_points = paths.generic;
+    }
+    return digest;
+  });
+}
+
+}  // namespace
+
 WorkerReport run_subdivkit(const Job& job, const Mesh& mesh) {
   // One TBB arena of the requested size for the whole worker, on top of the engine's own
   // `threads` option.
@@ -70,6 +113,7 @@ WorkerReport run_subdivkit(const Job& job, const Mesh& mesh) {
   options.use_kernels = job.kernels;
   // As OpenSubdiv's default UniformOptions: the last level's faces only (full with --osd-topology full).
   options.faces_only_last_level = !job.osd_full_topology;
+  if (job.update) return run_subdivkit_updates(job, mesh, *scheme, options);
 
   return repeat_cold_and_warm(job, [&](Timings& t, WorkerReport* report) {
     subdiv::RowPaths paths;  // counted in the cold repetition

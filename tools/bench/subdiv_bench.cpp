@@ -153,7 +153,8 @@ RunResult run_worker(const Job& job) {
                                    "--osd-topology", job.osd_full_topology ? "full" : "default",
                                    "--row-plans", job.row_plans ? "on" : "off",
                                    "--kernels", job.kernels ? "on" : "off",
-                                   "--geometry", job.tables ? "tables" : "direct"};
+                                   "--geometry", job.tables ? "tables" : "direct",
+                                   "--mode", job.update ? "update" : "refine"};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -323,7 +324,7 @@ std::int64_t base_faces_for(std::int64_t faces, int level, std::int64_t max_refi
 }
 
 // One clock's times of one repetition kind: totals, stages and ratios (SubdivKit / OSD).
-std::string timing_fields(const RunResult& ours, const RunResult& theirs, bool warm, bool user) {
+std::string timing_fields(const RunResult& ours, const RunResult& theirs, bool warm, bool user, bool update) {
   auto pick = [&](const Clocks& c) { return user ? c.user_ms : c.wall_ms; };
   const Timings& a = warm ? ours.report.warm : ours.report.cold;
   const Timings& b = warm ? theirs.report.warm : theirs.report.cold;
@@ -346,6 +347,12 @@ std::string timing_fields(const RunResult& ours, const RunResult& theirs, bool w
   field("osd_geom_ms", theirs.ok, pick(b.geom()));
   ratio("geom_ratio", pick(a.geom()), pick(b.geom()));
   if (ours.ok && pick(a.stencil) > 0) field("stencil_ms", true, pick(a.stencil));
+  if (theirs.ok && pick(b.stencil) > 0) field("osd_stencil_ms", true, pick(b.stencil));
+  if (update) {  // one re-evaluation of the positions, the topology and tables already made
+    field("update_ms", ours.ok, pick(a.apply));
+    field("osd_update_ms", theirs.ok, pick(b.apply));
+    ratio("update_ratio", pick(a.apply), pick(b.apply));
+  }
   return out;
 }
 
@@ -430,7 +437,8 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
         for (bool user : {false, true}) {
           std::string line = head + " memory=" + (warm ? "warm" : "cold") + " clock=" + (user ? "user" : "wall");
           line += std::string(" topology=") + (osd_topologies[v] ? "full" : "default");
-          line += timing_fields(want_subdivkit ? ours[v] : none, want_osd ? theirs[v] : none, warm, user);
+          if (job.update) line += " mode=update";
+          line += timing_fields(want_subdivkit ? ours[v] : none, want_osd ? theirs[v] : none, warm, user, job.update);
           std::printf("%s\n", line.c_str());
         }
 
@@ -556,6 +564,14 @@ int main(int argc, char** argv) {
                  "interpreter, to measure what kernels give; the points are the same to round-off)")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
+  std::string mode = "refine";
+  app.add_option("--mode", mode,
+                 "refine: topology and positions every repetition; update: repeated evaluation (animation, "
+                 "editing): topology (and tables) once, then each repetition re-evaluates the positions only, "
+                 "SubdivKit's step_values (or one composed table with --geometry tables) against OpenSubdiv's "
+                 "StencilTableFactory + UpdateValues; update_ms is one re-evaluation")
+      ->check(CLI::IsMember({"refine", "update"}))
+      ->capture_default_str();
   std::string geometry = "direct";
   app.add_option("--geometry", geometry,
                  "SubdivKit: direct (each level's positions straight from the rules, step_values) or tables "
@@ -568,6 +584,7 @@ int main(int argc, char** argv) {
   job.row_plans = row_plans == "on";
   job.kernels = kernels == "on";
   job.tables = geometry == "tables";
+  job.update = mode == "update";
 
   try {
     if (!worker_side.empty()) {
