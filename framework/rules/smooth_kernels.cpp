@@ -129,6 +129,18 @@ Index SmoothKernels::new_point(Element kind, Index e) const {
   return r == kNone ? kNone : g.child(r);
 }
 
+template <class Accumulator, class Weight>
+bool SmoothKernels::add_new_points(Accumulator& acc, double& sum, Element kind, std::span<const Index> elements,
+                                   const StepSources& in, Weight weight) const {
+  for (int j = 0; j < int(elements.size()); ++j) {
+    const Index c = new_point(kind, elements[j]);
+    if (c == kNone) return false;
+    const double w = weight(j);
+    acc.add(in.child(c), w), sum += w;
+  }
+  return true;
+}
+
 Index SmoothKernels::run(Element kind, const ChildGroup& group, Index begin, Index end, const StepSources& in,
                         double* dst, std::vector<Index>& left, FirstBadRow& bad) const {
   if (in.channels == 3) return run_rows<3>(kind, group, begin, end, in, dst, left, bad);
@@ -201,20 +213,15 @@ bool SmoothKernels::vertex_point(Index v, const StepSources& in, double* out, do
         }
         break;
       case Gather::FacePoints:
-        for (int j = 0; j < int(faces.size()); ++j) {
-          const Index c = new_point(Element::Face, faces[j]);
-          if (c == kNone) return false;
-          const double w = term.varies ? term.weight_at(n, L.face_size(faces[j]), j) : w0;
-          acc.add(in.child(c), w), sum += w;
-        }
+        if (!add_new_points(acc, sum, Element::Face, faces, in, [&](int j) {
+              return term.varies ? term.weight_at(n, L.face_size(faces[j]), j) : w0;
+            }))
+          return false;
         break;
       case Gather::EdgePoints:
-        for (int j = 0; j < n; ++j) {
-          const Index c = new_point(Element::Edge, ring[j]);
-          if (c == kNone) return false;
-          const double w = term.varies ? term.weight_at(n, 0, j) : w0;
-          acc.add(in.child(c), w), sum += w;
-        }
+        if (!add_new_points(acc, sum, Element::Edge, ring, in,
+                            [&](int j) { return term.varies ? term.weight_at(n, 0, j) : w0; }))
+          return false;
         break;
       default: return false;
     }
@@ -248,12 +255,9 @@ bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, doub
         break;
       }
       case Gather::FacePoints:
-        for (int j = 0; j < 2; ++j) {
-          const Index c = new_point(Element::Face, faces[j]);
-          if (c == kNone) return false;
-          const double w = weight(shape ? (j == 0 ? k0 : k1) : 0, j);
-          acc.add(in.child(c), w), sum += w;
-        }
+        if (!add_new_points(acc, sum, Element::Face, faces, in,
+                            [&](int j) { return weight(shape ? (j == 0 ? k0 : k1) : 0, j); }))
+          return false;
         break;
       case Gather::Opposite:
         for (int j = 0; j < 2; ++j) {
@@ -286,14 +290,9 @@ bool SmoothKernels::face_point(Index f, const StepSources& in, double* out, doub
         const double w = term.varies ? term.weight_at(k, k, j) : w0;
         acc.add(in.vertex(corners[j]), w), sum += w;
       }
-    } else {  // Gather::EdgePoints
-      const auto edges = L.face_edge_list(f);
-      for (int j = 0; j < k; ++j) {
-        const Index c = new_point(Element::Edge, edges[j]);
-        if (c == kNone) return false;
-        const double w = term.varies ? term.weight_at(k, k, j) : w0;
-        acc.add(in.child(c), w), sum += w;
-      }
+    } else if (!add_new_points(acc, sum, Element::Edge, L.face_edge_list(f), in,  // Gather::EdgePoints
+                               [&](int j) { return term.varies ? term.weight_at(k, k, j) : w0; })) {
+      return false;
     }
   }
   acc.store();

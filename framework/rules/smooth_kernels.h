@@ -19,6 +19,7 @@
 // Values equal the interpreter's rows to round-off (the same terms, summed in role order);
 // each element is computed on its own, so any thread count gives the same bits.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "framework/rules/element_rules.h"
@@ -80,6 +81,11 @@ private:
                  std::vector<Index>& left, FirstBadRow& bad) const;
   // The child vertex made for element e of a kind (face or edge) in this step, or kNone.
   Index new_point(Element kind, Index e) const;
+  // Adds the new points of `elements` (of `kind`), point j weighted by weight(j), to acc and
+  // the weights to sum; false when one of them has no new point in this step.
+  template <class Accumulator, class Weight>
+  bool add_new_points(Accumulator& acc, double& sum, Element kind, std::span<const Index> elements,
+                      const StepSources& in, Weight weight) const;
 
   const StepContext& step_;
   const std::vector<ChildGroup>& groups_;

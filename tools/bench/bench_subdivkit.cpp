@@ -39,10 +39,11 @@ std::vector<std::uint64_t> child_keys(const subdiv::Level& parent, const subdiv:
 }
 
 // The cold repetition's results: memory peak (before anything else is allocated), counts,
-// and origin-keyed positions for the parent's check.
+// the new points by path, and origin-keyed positions for the parent's check.
 void report_results(const Job& job, const Mesh& mesh, const subdiv::Hierarchy& h, const std::vector<double>& xyz,
-                    std::uint64_t digest, WorkerReport& report) {
+                    std::uint64_t digest, const subdiv::RowPaths& paths, WorkerReport& report) {
   report.peak_rss_bytes = peak_rss_bytes();
+  report.kernel_points = paths.kernel, report.plan_points = paths.plan, report.generic_points = paths.generic;
   const auto& last = h.levels[size_t(job.level)];
   report.vertices = last.vertex_count;
   report.faces = last.face_count();
@@ -91,10 +92,7 @@ WorkerReport run_subdivkit_updates(const Job& job, const Mesh& mesh, const subdi
     }
     t.apply = evaluation.lap();
     const std::uint64_t digest = digest_of(values);
-    if (report) {
-      report_results(job, mesh, h, values, digest, *report);
-      report->kernel_points = paths.kernel, report->plan_points = paths.plan, report->generic_points = paths.generic;
-    }
+    if (report) report_results(job, mesh, h, values, digest, paths, *report);
     return digest;
   });
 }
@@ -143,10 +141,7 @@ WorkerReport run_subdivkit(const Job& job, const Mesh& mesh) {
     }
     t.apply = clock.lap();
     const std::uint64_t digest = digest_of(src);
-    if (report) {
-      report_results(job, mesh, h, src, digest, *report);
-      report->kernel_points = paths.kernel, report->plan_points = paths.plan, report->generic_points = paths.generic;
-    }
+    if (report) report_results(job, mesh, h, src, digest, paths, *report);
     return digest;
   });
 }
