@@ -115,8 +115,11 @@ TEST_CASE("sqrt3 and mid-edge refine UVs with a seam: every vt is one side's UV 
   const auto dir = fresh_dir("cli-fvar-crossing");
   write_seamed_grid(dir / "quads.obj");
   write_seamed_grid(dir / "triangles.obj", true);
-  for (const auto& [scheme, input] : {std::pair<std::string, std::string>{"mid-edge", "quads.obj"},
-                                      std::pair<std::string, std::string>{"sqrt3", "triangles.obj"}}) {
+  for (const auto& scheme_and_input : {std::pair<std::string, std::string>{"mid-edge", "quads.obj"},
+                                       std::pair<std::string, std::string>{"sqrt3", "triangles.obj"}}) {
+    // Named copies: doctest's CHECK_MESSAGE captures them in a lambda, which clang does not
+    // allow for structured bindings.
+    const std::string scheme = scheme_and_input.first, input = scheme_and_input.second;
     const CliResult r = run_subdiv("refine " + (dir / input).string() + " --scheme " + scheme + " -l 1 -o " +
                                    (dir / "out.obj").string());
     REQUIRE_MESSAGE(r.exit_code == 0, r.output);

@@ -11,10 +11,12 @@ using namespace subdiv::test;
 // with full topology, and the same values from step_values; other splits and smoothing
 // passes keep full topology.
 TEST_CASE("a faces-only last level has the full level's faces and gives the same values") {
-  for (const auto& [name, mesh] : {std::pair{"catmull-clark", torus(6, 5)}, std::pair{"catmull-clark", pyramid()},
+  for (const auto& case_ : {std::pair{"catmull-clark", torus(6, 5)}, std::pair{"catmull-clark", pyramid()},
                                    std::pair{"loop", grid(4, 3, true)}, std::pair{"sqrt3", torus(6, 5, true)},
                                    std::pair{"loop-composite", torus(6, 5, true)}}) {
-    CAPTURE(name);
+    const auto& [name, mesh] = case_;
+    const std::string scheme_name = name;  // clang 14 cannot capture a structured binding in CAPTURE's lambda
+    CAPTURE(scheme_name);
     const auto scheme = load_scheme(name);
     RefineOptions full, faces;
     full.levels = faces.levels = 2;

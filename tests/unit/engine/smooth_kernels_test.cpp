@@ -193,9 +193,11 @@ TEST_CASE("the kernels take every point of a closed smooth mesh, and leave featu
 }
 
 TEST_CASE("the kernels give the same bits on one thread and on two") {
-  for (const auto& [name, mesh] : {std::pair{"loop", torus(300, 200, true)}, std::pair{"doo-sabin", torus(300, 200)},
+  for (const auto& case_ : {std::pair{"loop", torus(300, 200, true)}, std::pair{"doo-sabin", torus(300, 200)},
                                    std::pair{"catmull-clark", torus(300, 200)}}) {
-    CAPTURE(name);
+    const auto& [name, mesh] = case_;
+    const std::string scheme_name = name;  // clang 14 cannot capture a structured binding in CAPTURE's lambda
+    CAPTURE(scheme_name);
     const auto scheme = load_scheme(name);
     RefineOptions o;
     o.levels = 1;
