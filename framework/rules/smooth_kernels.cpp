@@ -115,7 +115,8 @@ SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGro
   for (int k = 0; k < kElementCount; ++k) {
     kernels_[k] = compile_kernel(step, Element(k));
     for (const Term& t : kernels_[k])
-      if (k == int(Element::Edge) && (t.reads == Term::Reads::More || t.gather == Gather::Opposite)) edge_reads_shape_ = true;
+      if (k == int(Element::Edge) && (t.reads == Term::Reads::More || t.reads == Term::Reads::K || t.gather == Gather::Opposite))
+        edge_reads_shape_ = true;
     // Primal splits number a kind's new points element by element: found without lookup.
     first_child_[k] = groups[k].first_of_run();
   }

@@ -91,7 +91,7 @@ private:
   const std::vector<ChildGroup>& groups_;
   std::vector<Term> kernels_[kElementCount];  // empty: not covered
   Index first_child_[kElementCount] = {kNone, kNone, kNone, kNone};
-  bool edge_reads_shape_ = false;  // an edge term reads n0, n1, k0, k1 or needs triangles
+  bool edge_reads_shape_ = false;  // an edge term reads k, n0, n1, k0, k1 or needs triangles
 };
 
 }  // namespace subdiv

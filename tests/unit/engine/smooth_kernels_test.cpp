@@ -214,3 +214,25 @@ TEST_CASE("the kernels give the same bits on one thread and on two") {
     CHECK(one == two);
   }
 }
+
+// A weight that reads the face size k of the face point it weighs (element_rules.cpp passes
+// each face's own k): on quads this scheme is Catmull-Clark, so kernels, interpreter and the
+// shipped file must agree.
+TEST_CASE("the kernels weigh an edge's face points by their own face's size") {
+  const auto path = std::filesystem::temp_directory_path() / "subdivkit-kernels-k-weighted.json";
+  std::ofstream(path) << R"({"name": "k-weighted", "split": "quad", "faces": "any", "curve": "cubic-bspline",
+    "rules": {"face": [{"sum": "vertices", "w": "1/k"}],
+              "edge": [{"sum": "ends", "w": "1/4"}, {"sum": "faces", "new": "face", "w": "1/k"}],
+              "vertex": [{"at": "self", "w": "(n-2)/n"}, {"sum": "ring", "w": "1/n^2"},
+                         {"sum": "faces", "new": "face", "w": "1/n^2"}]}})";
+  const Case c = of("torus", torus(6, 5));
+  const Run k_weighted = run(*load_scheme(path.string()), c, 2, true);
+  const Run interpreter = run(*load_scheme(path.string()), c, 2, false);
+  const Run shipped = run(*load_scheme("catmull-clark"), c, 2, true);
+  CHECK(k_weighted.kernel > 0);
+  for (size_t l = 0; l < 2; ++l) {
+    CHECK(largest_difference(k_weighted.levels[l], interpreter.levels[l]) < 1e-13);
+    CHECK(largest_difference(k_weighted.levels[l], shipped.levels[l]) < 1e-13);
+  }
+  std::filesystem::remove(path);
+}
