@@ -16,6 +16,9 @@ configure_sanitized_build() {
     CXX=clang++-14 CC=clang-14 cmake -S . -B "$SUBDIV_ASAN_DIR" -G Ninja \
       -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSUBDIV_BUILD_FUZZERS=ON -DSUBDIV_BUILD_BENCH=OFF -DSUBDIV_BUILD_PYTHON=OFF \
       -DSUBDIV_WITH_MPI=OFF "${launcher[@]}"
+  elif grep -q "^SUBDIV_WITH_MPI:BOOL=ON" "$SUBDIV_ASAN_DIR/CMakeCache.txt" 2>/dev/null; then
+    # A directory configured before MPI was left out of sanitized builds.
+    cmake -S . -B "$SUBDIV_ASAN_DIR" -DSUBDIV_WITH_MPI=OFF > /dev/null
   fi
 }
 
