@@ -37,6 +37,11 @@ public:
     if (first_ != kNone) return e < count_ ? e : kNone;
     return e < Index(row_of_element_.size()) ? row_of_element_[e] : kNone;
   }
+  // Element e's (first) child vertex, or kNone.
+  Index child_of(Index e) const {
+    const Index r = row_of(e);
+    return r == kNone ? kNone : child(r);
+  }
   // The first child of a run (row r is element r's only child, first_of_run() + r), or kNone.
   Index first_of_run() const { return first_; }
 

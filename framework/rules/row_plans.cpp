@@ -53,7 +53,6 @@ RowPlanStore::RowPlanStore(const Level& parent_level, const ChildOrigins& child_
     light[int(Element::Edge)] = rule_inside(edge, edge_role_light, faces);
     light[int(Element::Vertex)] = rule_inside(vertex, vertex_role_light, faces_edges);
     for (int k = 0; k < kElementCount; ++k) {
-      first_child_[k] = (*sources)[k].first_of_run();
       for (const CompiledTerm& t : tables.rule(Element(k), Context::Smooth).terms) {
         reads_face_points[k] |= t.new_point == NewPoint::Face;
         reads_edge_points[k] |= t.new_point == NewPoint::Edge;

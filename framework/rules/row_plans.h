@@ -62,20 +62,14 @@ public:
 
   // The source number of element e's new point (kind k), or kNone.
   Index new_point(Element k, Index e) const {
-    if (first_child_[int(k)] != kNone) return parent.vertex_count + first_child_[int(k)] + e;
-    const ChildGroup& g = (*sources)[int(k)];
-    if (g.empty()) return kNone;
-    const Index r = g.row_of(e);
-    return r == kNone ? kNone : parent.vertex_count + g.child(r);
+    const Index c = (*sources)[int(k)].child_of(e);
+    return c == kNone ? kNone : parent.vertex_count + c;
   }
 
   const RowPlan* find(const std::vector<std::int32_t>& key) const;
   const RowPlan* add(const std::vector<std::int32_t>& key, RowPlan plan);
 
 private:
-  // Kinds whose element e has the one new point first + e (the primal splits number them
-  // so): found without reading the group's arrays. kNone: look them up.
-  Index first_child_[kElementCount] = {kNone, kNone, kNone, kNone};
   mutable std::mutex mutex_;
   std::map<std::vector<std::int32_t>, std::unique_ptr<RowPlan>> plans_;
 };

@@ -117,18 +117,10 @@ SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGro
     for (const Term& t : kernels_[k])
       if (k == int(Element::Edge) && (t.reads == Term::Reads::More || t.reads == Term::Reads::K || t.gather == Gather::Opposite))
         edge_reads_shape_ = true;
-    // Primal splits number a kind's new points element by element: found without lookup.
-    first_child_[k] = groups[k].first_of_run();
   }
 }
 
-Index SmoothKernels::new_point(Element kind, Index e) const {
-  if (first_child_[int(kind)] != kNone) return first_child_[int(kind)] + e;
-  const ChildGroup& g = groups_[int(kind)];
-  if (g.empty()) return kNone;
-  const Index r = g.row_of(e);
-  return r == kNone ? kNone : g.child(r);
-}
+Index SmoothKernels::new_point(Element kind, Index e) const { return groups_[int(kind)].child_of(e); }
 
 template <class Accumulator, class Weight>
 bool SmoothKernels::add_new_points(Accumulator& acc, double& sum, Element kind, std::span<const Index> elements,
@@ -155,7 +147,7 @@ Index SmoothKernels::run_rows(Element kind, const ChildGroup& group, Index begin
   const ChildOrigins& origins = step_.origins;
   // In a primal split, row r of a kind is the new point of element r (a corner's element
   // is its face, with the corner in `local`).
-  const bool in_order = kind != Element::Corner && first_child_[int(kind)] != kNone;
+  const bool in_order = kind != Element::Corner && group.first_of_run() != kNone;
   Index done = 0;
   auto each_row = [&](auto point) {
     for (Index r = begin; r < end; ++r) {

@@ -90,7 +90,6 @@ private:
   const StepContext& step_;
   const std::vector<ChildGroup>& groups_;
   std::vector<Term> kernels_[kElementCount];  // empty: not covered
-  Index first_child_[kElementCount] = {kNone, kNone, kNone, kNone};
   bool edge_reads_shape_ = false;  // an edge term reads k, n0, n1, k0, k1 or needs triangles
 };
 
