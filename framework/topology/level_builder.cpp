@@ -1,6 +1,7 @@
 // Builds a Level's edges and CCW vertex rings from polygons. Manifold input (the common
-// case) takes the fast path below; anything else is handed to the general builder
-// (level_general.cpp), which marks non-manifold elements as OpenSubdiv's Vtr does.
+// case) takes the parallel fast path (level_manifold.cpp); anything else is handed to the
+// general builder (level_general.cpp), which marks non-manifold elements as OpenSubdiv's
+// Vtr does.
 #include <algorithm>
 #include <fmt/format.h>
 
@@ -36,67 +37,6 @@ bool check_faces(const Level& level) {
     simple = simple && distinct == int(verts.size());
   }
   return simple;
-}
-
-constexpr Index kConflict = -2;
-
-// Corner around `from` whose face runs from -> to, or kNone; kConflict if a second corner
-// (other than `skip`) does too: the edge is non-manifold or its faces disagree in orientation.
-Index find_half_edge(const Level& level, const CornerIndex& ci, Index from, Index to, Index skip) {
-  Index found = kNone;
-  for (Index i = ci.vertex_offsets[from]; i < ci.vertex_offsets[from + 1]; ++i) {
-    Index c = ci.vertex_corners[i];
-    if (c == skip || level.face_vertices[next_corner(level, ci.face[c], c)] != to) continue;
-    if (found != kNone || skip != kNone) return kConflict;
-    found = c;
-  }
-  return found;
-}
-
-// Manifold edges; false as soon as an edge is not (the general builder then starts over).
-bool build_manifold_edges(Level& level, const CornerIndex& ci) {
-  const Index corners = level.corner_count();
-  level.face_edges.assign(corners, kNone);
-  level.edge_vertices.clear();
-  level.edge_faces.clear();
-  level.edge_vertices.reserve(corners);
-  level.edge_faces.reserve(corners);
-  for (Index c = 0; c < corners; ++c) {
-    const Index f = ci.face[c];
-    const Index from = level.face_vertices[c];
-    const Index to = level.face_vertices[next_corner(level, f, c)];
-    if (find_half_edge(level, ci, from, to, c) == kConflict) return false;
-    const Index twin = find_half_edge(level, ci, to, from, kNone);
-    if (twin == kConflict) return false;
-    if (twin != kNone && twin < c) {
-      const Index e = level.face_edges[twin];
-      if (ci.face[twin] == f) return false;  // a face using an edge twice
-      level.face_edges[c] = e;
-      level.edge_faces[2 * e + 1] = f;
-      continue;
-    }
-    const Index e = level.edge_count();
-    level.face_edges[c] = e;
-    level.edge_vertices.insert(level.edge_vertices.end(), {from, to});
-    level.edge_faces.insert(level.edge_faces.end(), {f, kNone});
-  }
-  return true;
-}
-
-// The fast path: false (level half built) if the mesh turns out not to be manifold.
-bool build_manifold_level(Level& level) {
-  const CornerIndex ci = index_corners(level);
-  if (!build_manifold_edges(level, ci)) return false;
-  const Index vertex_count = level.vertex_count;
-  level.vertex_on_boundary.assign(vertex_count, 0);
-  level.vertex_faces.reserve(level.corner_count());
-  level.vertex_face_corner.reserve(level.corner_count());
-  level.vertex_edges.reserve(level.corner_count() + vertex_count);
-  level.vertex_face_offsets.reserve(vertex_count + 1);
-  level.vertex_ring_offsets.reserve(vertex_count + 1);
-  for (Index v = 0; v < vertex_count; ++v)
-    if (!build_ordered_ring(level, ci, v)) return false;
-  return true;
 }
 
 }  // namespace

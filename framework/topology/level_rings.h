@@ -23,6 +23,10 @@ inline Index prev_corner(const Level& level, Index face, Index corner) {
 
 CornerIndex index_corners(const Level& level);
 
+// Edges and CCW rings of a level whose faces are set, when every edge and vertex is
+// manifold (level_manifold.cpp); false, with the level half built, as soon as one is not.
+bool build_manifold_level(Level& level);
+
 // Appends vertex v's ring in CCW order (faces, corners, edges, offsets, boundary flag).
 // Needs edge_faces with the manifold conventions around v. Returns false, with the level's
 // ring arrays as they were, if v's faces do not form a single fan.

@@ -1,5 +1,7 @@
 #include <doctest/doctest.h>
+#include <tbb/global_control.h>
 
+#include "framework/topology/level_rings.h"
 #include "framework/util/error.h"
 #include "support/test_meshes.h"
 
@@ -130,5 +132,68 @@ TEST_CASE("non-manifold input is marked, faces of fewer than 3 corners and bad i
     for (int i = 0; i < 3; ++i) b.add_vertex(i, 0, 0);
     b.add_face({0, 1, 7});
     CHECK_THROWS_WITH_AS(b.level(), doctest::Contains("vertex 7"), Error);
+  }
+}
+
+namespace {
+
+// The general builder (level_general.cpp) on the same faces: for a manifold mesh it numbers
+// edges as the fast path must (in order of each edge's first corner) and orders rings alike.
+Level general_level(const test::Mesh& m) {
+  Level L;
+  L.vertex_count = m.vertex_count;
+  L.face_offsets = m.offsets;
+  L.face_vertices = m.corners;
+  identify_edges_general(L);
+  complete_general_level(L);
+  return L;
+}
+
+void check_same_level(const Level& a, const Level& b) {
+  CHECK(a.face_edges == b.face_edges);
+  CHECK(a.edge_vertices == b.edge_vertices);
+  CHECK(a.edge_faces == b.edge_faces);
+  CHECK(a.vertex_ring_offsets == b.vertex_ring_offsets);
+  CHECK(a.vertex_edges == b.vertex_edges);
+  CHECK(a.vertex_face_offsets == b.vertex_face_offsets);
+  CHECK(a.vertex_faces == b.vertex_faces);
+  CHECK(a.vertex_face_corner == b.vertex_face_corner);
+  CHECK(a.vertex_on_boundary == b.vertex_on_boundary);
+  CHECK(a.edge_non_manifold.empty());
+  CHECK(a.vertex_non_manifold.empty());
+}
+
+// A mesh large enough for several parallel chunks (level_manifold.cpp): boundaries, holes,
+// triangles and quads, vertices of valence 2 to 8.
+test::Mesh holed_grid(int n) {
+  test::Mesh m = test::grid(n, n, false);
+  test::Mesh out;
+  out.vertex_count = m.vertex_count, out.positions = m.positions;
+  for (Index f = 0; f + 1 < Index(m.offsets.size()); ++f) {
+    const int i = f % n, j = f / n;
+    if (i % 7 == 3 && j % 5 == 2) continue;  // a hole
+    std::vector<Index> q(m.corners.begin() + m.offsets[f], m.corners.begin() + m.offsets[f + 1]);
+    if ((i + j) % 3 == 0) {
+      out.add_face({q[0], q[1], q[2]}), out.add_face({q[0], q[2], q[3]});
+    } else {
+      out.add_face({q[0], q[1], q[2], q[3]});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("the parallel manifold builder equals the general builder, on one thread and on two") {
+  const test::Mesh meshes[] = {test::cube(), test::grid(3, 2), test::torus(150, 120), test::torus(90, 70, true),
+                               holed_grid(160)};
+  for (const test::Mesh& m : meshes) {
+    const Level reference = general_level(m);
+    REQUIRE(reference.edge_non_manifold.empty());
+    for (int threads : {1, 2}) {
+      CAPTURE(threads);
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+      check_same_level(m.level(), reference);
+    }
   }
 }

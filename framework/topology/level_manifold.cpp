@@ -1,0 +1,207 @@
+// The manifold fast path of build_level: edges and CCW vertex rings from polygons, in
+// parallel stages over corners and vertices (the role of OpenSubdiv's Vtr::Level::
+// completeTopologyFromFaceVertices for manifold meshes).
+//
+// Every corner's edge is found once by its twin (the corner that runs the same edge
+// backwards), which also gives the ring walk its next corner without searching a face.
+// Edges are numbered as a serial pass in corner order would number them (an edge belongs
+// to the lower of its two corners), so the level does not depend on the thread count.
+#include <algorithm>
+#include <atomic>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "framework/topology/level.h"
+#include "framework/topology/level_rings.h"
+#include "framework/util/bulk_memory.h"
+
+namespace subdiv {
+namespace {
+
+// Elements per parallel task.
+constexpr Index kGrain = 1 << 14;
+
+template <class Body>
+void parallel_ranges(Index count, Body body) {
+  tbb::parallel_for(tbb::blocked_range<Index>(0, count, kGrain),
+                    [&](const tbb::blocked_range<Index>& r) { body(r.begin(), r.end()); });
+}
+
+// What the stages share: the corners around each vertex and, per corner, its twin.
+struct Corners {
+  CornerIndex index;
+  std::vector<Index> head;  // per slot of index.vertex_corners: the vertex its corner's edge runs to
+  std::vector<Index> twin;  // per corner: the corner that runs its edge backwards, or kNone (boundary)
+};
+
+// The vertex each corner around each vertex runs to, stored beside it: the twin search
+// then reads one vertex's slots, not the faces.
+std::vector<Index> slot_heads(const Level& level, const CornerIndex& ci) {
+  std::vector<Index> head;
+  resize_bulk(head, ci.vertex_corners.size());
+  parallel_ranges(Index(head.size()), [&](Index begin, Index end) {
+    for (Index i = begin; i < end; ++i) {
+      const Index c = ci.vertex_corners[i];
+      head[i] = level.face_vertices[next_corner(level, ci.face[c], c)];
+    }
+  });
+  return head;
+}
+
+// Twins of every corner; false when an edge is not manifold: two corners run it the same
+// way (a third face or faces of opposite orientation), three run it, or one face runs it
+// twice.
+bool find_twins(const Level& level, Corners& k) {
+  const CornerIndex& ci = k.index;
+  resize_bulk(k.twin, ci.face.size());
+  std::atomic<bool> manifold{true};
+  parallel_ranges(level.vertex_count, [&](Index begin, Index end) {
+    for (Index v = begin; v < end && manifold.load(std::memory_order_relaxed); ++v) {
+      const Index first = ci.vertex_offsets[v], last = ci.vertex_offsets[v + 1];
+      for (Index i = first; i < last; ++i) {
+        const Index to = k.head[i], c = ci.vertex_corners[i];
+        bool ok = std::count(k.head.begin() + first, k.head.begin() + last, to) == 1;
+        Index twin = kNone;
+        for (Index j = ci.vertex_offsets[to]; ok && j < ci.vertex_offsets[to + 1]; ++j) {
+          if (k.head[j] != v) continue;
+          ok = twin == kNone && ci.face[ci.vertex_corners[j]] != ci.face[c];
+          twin = ci.vertex_corners[j];
+        }
+        if (!ok) manifold = false;
+        k.twin[c] = twin;
+      }
+    }
+  });
+  return manifold;
+}
+
+// An edge belongs to the lower corner of its pair (or its only corner).
+bool owns_edge(const Corners& k, Index c) { return k.twin[c] == kNone || k.twin[c] > c; }
+
+// face_edges, edge_vertices, edge_faces. Edge ids follow the owning corners in order: each
+// chunk of corners counts its owners, the counts are summed in chunk order, then each chunk
+// numbers its own.
+void number_edges(Level& level, const Corners& k) {
+  const Index corners = level.corner_count();
+  const Index chunks = (corners + kGrain - 1) / kGrain;
+  std::vector<Index> first_edge(size_t(chunks) + 1, 0);
+  tbb::parallel_for(Index(0), chunks, [&](Index chunk) {
+    const Index begin = chunk * kGrain, end = std::min(corners, begin + kGrain);
+    Index owned = 0;
+    for (Index c = begin; c < end; ++c) owned += owns_edge(k, c);
+    first_edge[chunk + 1] = owned;
+  });
+  for (Index chunk = 0; chunk < chunks; ++chunk) first_edge[chunk + 1] += first_edge[chunk];
+  resize_bulk(level.face_edges, size_t(corners));
+  resize_bulk(level.edge_vertices, 2 * size_t(first_edge.back()));
+  resize_bulk(level.edge_faces, 2 * size_t(first_edge.back()));
+  tbb::parallel_for(Index(0), chunks, [&](Index chunk) {
+    const Index begin = chunk * kGrain, end = std::min(corners, begin + kGrain);
+    Index e = first_edge[chunk];
+    for (Index c = begin; c < end; ++c) {
+      if (!owns_edge(k, c)) continue;
+      const Index f = k.index.face[c], twin = k.twin[c];
+      level.face_edges[c] = e;
+      level.edge_vertices[2 * e] = level.face_vertices[c];
+      level.edge_vertices[2 * e + 1] = level.face_vertices[next_corner(level, f, c)];
+      level.edge_faces[2 * e] = f;
+      level.edge_faces[2 * e + 1] = twin == kNone ? kNone : k.index.face[twin];
+      ++e;
+    }
+  });
+  // The other corner of each interior edge takes its owner's edge.
+  parallel_ranges(corners, [&](Index begin, Index end) {
+    for (Index c = begin; c < end; ++c)
+      if (!owns_edge(k, c)) level.face_edges[c] = level.face_edges[k.twin[c]];
+  });
+}
+
+// Where v's ring starts: its corner whose edge leaves along the boundary, if any (then its
+// ring has one edge more than faces), else its first corner; kConflict when two of its
+// edges leave along the boundary (two fans meet at v).
+constexpr Index kConflict = -2;
+Index ring_start(const Corners& k, Index v) {
+  const CornerIndex& ci = k.index;
+  Index start = ci.vertex_offsets[v] < ci.vertex_offsets[v + 1] ? ci.vertex_corners[ci.vertex_offsets[v]] : kNone;
+  bool boundary = false;
+  for (Index i = ci.vertex_offsets[v]; i < ci.vertex_offsets[v + 1]; ++i) {
+    const Index c = ci.vertex_corners[i];
+    if (k.twin[c] != kNone) continue;
+    if (boundary) return kConflict;
+    boundary = true;
+    start = c;
+  }
+  return start;
+}
+
+// Walks v's corners CCW from `start` into its ring slots: the next face CCW lies across
+// the edge entering v, and the twin of that edge's corner is v's corner in that face.
+// False if the walk does not visit every corner of v once (more than one fan).
+bool walk_ring(Level& level, const Corners& k, Index v, Index start) {
+  const CornerIndex& ci = k.index;
+  const Index count = ci.vertex_offsets[v + 1] - ci.vertex_offsets[v];
+  Index face_slot = level.vertex_face_offsets[v], edge_slot = level.vertex_ring_offsets[v];
+  Index c = start;
+  for (Index visited = 0; visited < count; ++visited) {
+    const Index f = ci.face[c];
+    level.vertex_faces[face_slot] = f;
+    level.vertex_face_corner[face_slot++] = std::uint8_t(c - level.face_offsets[f]);
+    level.vertex_edges[edge_slot++] = level.face_edges[c];
+    const Index entering = prev_corner(level, f, c);
+    const Index next = k.twin[entering];
+    const bool last = visited + 1 == count;
+    if (next == kNone) {
+      level.vertex_edges[edge_slot++] = level.face_edges[entering];
+      if (!last) return false;
+    } else if (next == start && !last) {
+      return false;
+    }
+    c = next;
+  }
+  return true;
+}
+
+// Vertex rings (offsets, faces, corners, edges) and boundary flags.
+bool build_rings(Level& level, const Corners& k) {
+  const CornerIndex& ci = k.index;
+  const Index V = level.vertex_count;
+  std::vector<Index> start;
+  resize_bulk(start, size_t(V));
+  resize_bulk(level.vertex_on_boundary, size_t(V));
+  std::atomic<bool> fans{true};
+  parallel_ranges(V, [&](Index begin, Index end) {
+    for (Index v = begin; v < end; ++v) {
+      start[v] = ring_start(k, v);
+      if (start[v] == kConflict) fans = false;
+      level.vertex_on_boundary[v] = start[v] != kNone && k.twin[start[v]] == kNone;
+    }
+  });
+  if (!fans) return false;
+  level.vertex_face_offsets = ci.vertex_offsets;
+  resize_bulk(level.vertex_ring_offsets, size_t(V) + 1);
+  level.vertex_ring_offsets[0] = 0;
+  for (Index v = 0; v < V; ++v)
+    level.vertex_ring_offsets[v + 1] =
+        level.vertex_ring_offsets[v] + (ci.vertex_offsets[v + 1] - ci.vertex_offsets[v]) + level.vertex_on_boundary[v];
+  resize_bulk(level.vertex_faces, ci.vertex_corners.size());
+  resize_bulk(level.vertex_face_corner, ci.vertex_corners.size());
+  resize_bulk(level.vertex_edges, size_t(level.vertex_ring_offsets.back()));
+  parallel_ranges(V, [&](Index begin, Index end) {
+    for (Index v = begin; v < end && fans.load(std::memory_order_relaxed); ++v)
+      if (!walk_ring(level, k, v, start[v])) fans = false;
+  });
+  return fans;
+}
+
+}  // namespace
+
+bool build_manifold_level(Level& level) {
+  Corners k;
+  k.index = index_corners(level);
+  k.head = slot_heads(level, k.index);
+  if (!find_twins(level, k)) return false;
+  number_edges(level, k);
+  return build_rings(level, k);
+}
+
+}  // namespace subdiv
