@@ -1,6 +1,7 @@
 #pragma once
 // Where each child vertex of a refinement step came from.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "framework/topology/level.h"
@@ -14,6 +15,16 @@ struct ChildOrigins {
   std::vector<Index> parent;      // parent vertex, edge or face (for Corner: the face)
   std::vector<std::uint8_t> local;  // Corner: corner index within the face; else 0
   std::vector<Index> parent_face;   // per child face: the parent face it lies in (kNone if none)
+
+  // Set by a split that lays out each kind's children as one run in element order (element
+  // i's only child is first[kind] + i; a kind with no children has count 0), so the rules
+  // need not scan the arrays above to group the children (rules/step_rows.cpp,
+  // group_children). Empty when the layout is another.
+  struct Runs {
+    Index first[4] = {kNone, kNone, kNone, kNone};
+    Index count[4] = {};
+  };
+  std::optional<Runs> runs;
 };
 
 }  // namespace subdiv

@@ -22,6 +22,13 @@ ChildOrigins primal_origins(const Level& parent, bool with_face_points) {
   for (Index i = 0; i < e; ++i) o.kind[v + i] = OriginKind::Edge, o.parent[v + i] = i;
   if (with_face_points)
     for (Index i = 0; i < f; ++i) o.kind[v + e + i] = OriginKind::Face, o.parent[v + e + i] = i;
+  o.runs.emplace();
+  auto declare = [&](OriginKind kind, Index first, Index count) {
+    if (count > 0) o.runs->first[int(kind)] = first, o.runs->count[int(kind)] = count;
+  };
+  declare(OriginKind::Vertex, 0, v);
+  declare(OriginKind::Edge, v, e);
+  if (with_face_points) declare(OriginKind::Face, v + e, f);
   return o;
 }
 

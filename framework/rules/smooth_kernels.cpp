@@ -120,8 +120,6 @@ SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGro
   }
 }
 
-Index SmoothKernels::new_point(Element kind, Index e) const { return groups_[int(kind)].child_of(e); }
-
 template <class Accumulator, class Weight>
 bool SmoothKernels::add_new_points(Accumulator& acc, double& sum, Element kind, std::span<const Index> elements,
                                    const StepSources& in, Weight weight) const {

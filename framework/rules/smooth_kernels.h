@@ -80,7 +80,7 @@ private:
   Index run_rows(Element kind, const ChildGroup& group, Index begin, Index end, const StepSources& in, double* dst,
                  std::vector<Index>& left, FirstBadRow& bad) const;
   // The child vertex made for element e of a kind (face or edge) in this step, or kNone.
-  Index new_point(Element kind, Index e) const;
+  Index new_point(Element kind, Index e) const { return groups_[int(kind)].child_of(e); }
   // Adds the new points of `elements` (of `kind`), point j weighted by weight(j), to acc and
   // the weights to sum; false when one of them has no new point in this step.
   template <class Accumulator, class Weight>

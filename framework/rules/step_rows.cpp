@@ -186,13 +186,21 @@ KindRuns find_runs(const StepContext& s) {
 
 }  // namespace
 
+// The runs the split declared (child_origins.h): no scan.
+KindRuns declared_runs(const ChildOrigins::Runs& declared) {
+  KindRuns k;
+  for (int e = 0; e < kElementCount; ++e) k.first[e] = declared.first[e], k.count[e] = declared.count[e];
+  return k;
+}
+
 std::vector<ChildGroup> group_children(const StepContext& s) {
-  const KindRuns runs = find_runs(s);
+  const KindRuns runs = s.origins.runs ? declared_runs(*s.origins.runs) : find_runs(s);
   std::vector<ChildGroup> groups;
   for (int e = 0; e < kElementCount; ++e)
     groups.push_back(runs.count[e] == 0 ? ChildGroup()
                      : runs.run[e]      ? ChildGroup::run(runs.first[e], runs.count[e])
                                         : ChildGroup(element_count(s.parent, Element(e)), runs.count[e]));
+  if (std::all_of(std::begin(runs.run), std::end(runs.run), [](bool run) { return run; })) return groups;
   for (Index c = 0; c < Index(s.origins.kind.size()); ++c) {
     const int kind = int(s.origins.kind[c]);
     if (!runs.run[kind]) groups[kind].add(group_element(s, c), c);

@@ -108,3 +108,38 @@ TEST_CASE("direct child topology of the primal splits equals the generic builder
     }
   }
 }
+
+namespace {
+
+// The runs a split declares (ChildOrigins::runs) must be what its origin arrays say: every
+// child of a kind is first + its element, and every element of the kind has one.
+void check_declared_runs(const Level& parent, const ChildOrigins& o) {
+  REQUIRE(o.runs.has_value());
+  const Index elements[4] = {parent.vertex_count, parent.edge_count(), parent.face_count(), parent.corner_count()};
+  Index seen[4] = {};
+  for (Index c = 0; c < Index(o.kind.size()); ++c) {
+    const int kind = int(o.kind[c]);
+    REQUIRE(o.runs->first[kind] != kNone);
+    CHECK(c == o.runs->first[kind] + o.parent[c]);
+    ++seen[kind];
+  }
+  for (int kind = 0; kind < 4; ++kind) {
+    CHECK(seen[kind] == o.runs->count[kind]);
+    CHECK((seen[kind] == 0 || seen[kind] == elements[kind]));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("the primal splits declare their children's runs as their origins lay them out") {
+  for (const auto& mesh : {test::cube(), test::grid(3, 2), test::torus(5, 4)}) {
+    const Level L = mesh.level();
+    check_declared_runs(L, split_quad(L).origins);
+    check_declared_runs(L, split_quad_faces(L).origins);
+  }
+  for (const auto& mesh : {test::octahedron(), test::grid(2, 3, true)}) {
+    const Level L = mesh.level();
+    check_declared_runs(L, split_triangle(L).origins);
+    check_declared_runs(L, split_triangle_faces(L).origins);
+  }
+}
