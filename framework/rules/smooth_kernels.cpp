@@ -100,6 +100,8 @@ private:
   int channels_;
 };
 
+bool smooth(const VertexContext& vc) { return vc.parent == Context::Smooth && vc.child == Context::Smooth; }
+
 // The vertex of triangle f that is not a or b, or kNone if f is not a triangle.
 Index third_corner(const Level& L, Index f, Index a, Index b) {
   if (L.face_size(f) != 3) return kNone;
@@ -111,7 +113,7 @@ Index third_corner(const Level& L, Index f, Index a, Index b) {
 }  // namespace
 
 SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGroup>& groups)
-    : step_(step), groups_(groups) {
+    : step_(step), groups_(groups), untagged_(step.parent.edge_sharpness.empty() && step.parent.vertex_sharpness.empty()) {
   for (int k = 0; k < kElementCount; ++k) {
     kernels_[k] = compile_kernel(step, Element(k));
     for (const Term& t : kernels_[k])
@@ -181,14 +183,16 @@ Index SmoothKernels::run_rows(Element kind, const ChildGroup& group, Index begin
 
 // element_rules.cpp, apply_vertex_rule: weights at (n, 0, j), face points at (n, k_j, j).
 template <int C>
+[[gnu::always_inline]] inline  // into run_rows' loop
 bool SmoothKernels::vertex_point(Index v, const StepSources& in, double* out, double& weight_sum) const {
   const Level& L = step_.parent;
-  const VertexContext& vc = step_.features.vertices[v];
-  if (L.on_boundary(v) || L.non_manifold_vertex(v) || vc.parent != Context::Smooth || vc.child != Context::Smooth)
-    return false;
+  if (L.on_boundary(v) || L.non_manifold_vertex(v)) return false;
   const auto ring = L.ring_edges(v);
   const auto faces = L.ring_faces(v);
   const int n = int(ring.size()), channels = in.channels;
+  // Untagged, an interior vertex with edges is smooth (feature_context.cpp): its context
+  // need not be read.
+  if (untagged_ ? n == 0 : !smooth(step_.features.vertices[v])) return false;
   Accumulator<C> acc(out, channels);
   double sum = 0.0;
   for (const Term& term : kernels_[int(Element::Vertex)]) {
@@ -224,9 +228,11 @@ bool SmoothKernels::vertex_point(Index v, const StepSources& in, double* out, do
 
 // element_rules.cpp, apply_edge_rule: weights at (2, k, j, n0, n1, k0, k1).
 template <int C>
+[[gnu::always_inline]] inline  // into run_rows' loop
 bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, double& weight_sum) const {
   const Level& L = step_.parent;
-  if (L.edge_on_boundary(e) || L.non_manifold_edge(e) || step_.features.edges[e].crease_weight != 0.f) return false;
+  if (L.edge_on_boundary(e) || L.non_manifold_edge(e) || (!untagged_ && step_.features.edges[e].crease_weight != 0.f))
+    return false;
   const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
   const Index faces[2] = {L.edge_faces[2 * e], L.edge_faces[2 * e + 1]};
   // The ends' valences and the faces' sizes only for formulas that read them: four random
@@ -268,6 +274,7 @@ bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, doub
 
 // element_rules.cpp, apply_face_rule: weights at (k, k, j).
 template <int C>
+[[gnu::always_inline]] inline  // into run_rows' loop
 bool SmoothKernels::face_point(Index f, const StepSources& in, double* out, double& weight_sum) const {
   const Level& L = step_.parent;
   const auto corners = L.face(f);
@@ -294,6 +301,7 @@ bool SmoothKernels::face_point(Index f, const StepSources& in, double* out, doub
 // step_rows.cpp, fill_corner_row away from features: the smooth corner rule alone;
 // element_rules.cpp, apply_corner_rule: weights at (k, k, j), corners counted from `corner`.
 template <int C>
+[[gnu::always_inline]] inline  // into run_rows' loop
 bool SmoothKernels::corner_point(Index f, int corner, const StepSources& in, double* out, double& weight_sum) const {
   const Level& L = step_.parent;
   const auto corners = L.face(f);

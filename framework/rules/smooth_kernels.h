@@ -28,7 +28,9 @@
 
 namespace subdiv {
 
-class SmoothKernels {
+// Hidden: the per-element kernels are member templates, which a shared library would
+// otherwise call through the PLT (vague linkage), one call per new point.
+class [[gnu::visibility("hidden")]] SmoothKernels {
 public:
   SmoothKernels(const StepContext& step, const std::vector<ChildGroup>& groups);
 
@@ -91,6 +93,8 @@ private:
   const std::vector<ChildGroup>& groups_;
   std::vector<Term> kernels_[kElementCount];  // empty: not covered
   bool edge_reads_shape_ = false;  // an edge term reads k, n0, n1, k0, k1 or needs triangles
+  // The parent level has no sharpness tags: its interior vertices and edges are smooth.
+  const bool untagged_;
 };
 
 }  // namespace subdiv
