@@ -38,20 +38,21 @@ float fractional_weight(float pv, float cv, const float* pe, const float* ce, in
 
 std::vector<float> effective_edge_sharpness(const Level& level) {
   std::vector<float> s(level.edge_count());
-  for (Index e = 0; e < level.edge_count(); ++e)
+  tbb::parallel_for(Index(0), level.edge_count(), [&](Index e) {
     s[e] = level.edge_on_boundary(e) ? kInfinitelySharp : level.edge_sharp(e);
+  });
   return s;
 }
 
 std::vector<float> effective_vertex_sharpness(const Level& level, BoundaryInterpolation mode) {
   std::vector<float> s(level.vertex_count);
-  for (Index v = 0; v < level.vertex_count; ++v) {
+  tbb::parallel_for(Index(0), level.vertex_count, [&](Index v) {
     s[v] = level.vertex_sharp(v);
     // A topological corner: one face, two edges (Far's isTopologicalCorner).
     const bool boundary_corner = mode == BoundaryInterpolation::EdgesAndCorners &&
                                  level.incident_face_count(v) == 1 && level.valence(v) == 2;
     if (boundary_corner || level.valence(v) == 0) s[v] = kInfinitelySharp;
-  }
+  });
   return s;
 }
 

@@ -3,7 +3,10 @@
 // general builder (level_general.cpp), which marks non-manifold elements as OpenSubdiv's
 // Vtr does.
 #include <algorithm>
+#include <atomic>
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "framework/topology/level.h"
 #include "framework/topology/level_rings.h"
@@ -12,30 +15,53 @@
 namespace subdiv {
 namespace {
 
-// Range and size checks; returns false if a face repeats a vertex (the general path's job).
+// Whether a face repeats a vertex: small faces pairwise, large ones sorted (a hostile file's
+// face of 10^5 corners must not take 10^10 steps).
+bool repeats_vertex(std::span<const Index> verts) {
+  if (verts.size() > 16) {
+    std::vector<Index> sorted(verts.begin(), verts.end());
+    std::sort(sorted.begin(), sorted.end());
+    return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+  }
+  for (size_t i = 0; i < verts.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (verts[i] == verts[j]) return true;
+  return false;
+}
+
+// Throws if no builder can take face f: fewer than 3 corners, or a vertex out of range.
+void check_face(const Level& level, Index f) {
+  auto verts = level.face(f);
+  if (verts.size() < 3) throw Error(fmt::format("face {} has {} vertices; a face needs at least 3", f, verts.size()));
+  for (Index v : verts)
+    if (v < 0 || v >= level.vertex_count)
+      throw Error(fmt::format("face {} names vertex {}, but the mesh has {} vertices", f, v, level.vertex_count));
+}
+
+// Range and size checks (the first bad face in order is reported, whatever the threads);
+// returns false if a face repeats a vertex (the general path's job).
 // A face of 3 or more corners with fewer than 3 distinct vertices ((a, a, b, b), (a, a, a))
 // is kept: OpenSubdiv's Vtr refines it (its edges from a vertex to itself and the edge it
 // runs twice are non-manifold), and so does the general path, to the same result
 // (tests/unit/osd/osd_shapes_test.cpp, catmark_nonman_edges and loop_nonman_edges).
 bool check_faces(const Level& level) {
-  bool simple = true;
-  for (Index f = 0; f < level.face_count(); ++f) {
-    auto verts = level.face(f);
-    if (verts.size() < 3)
-      throw Error(fmt::format("face {} has {} vertices; a face needs at least 3", f, verts.size()));
-    for (size_t i = 0; i < verts.size(); ++i) {
-      if (verts[i] < 0 || verts[i] >= level.vertex_count)
-        throw Error(fmt::format("face {} names vertex {}, but the mesh has {} vertices", f,
-                                verts[i], level.vertex_count));
+  const Index faces = level.face_count();
+  std::atomic<Index> first_bad{faces};
+  std::atomic<bool> simple{true};
+  tbb::parallel_for(tbb::blocked_range<Index>(0, faces, 1 << 14), [&](const tbb::blocked_range<Index>& r) {
+    for (Index f = r.begin(); f < r.end(); ++f) {
+      auto verts = level.face(f);
+      bool bad = verts.size() < 3;
+      for (Index v : verts) bad = bad || v < 0 || v >= level.vertex_count;
+      if (bad) {
+        Index seen = first_bad.load();
+        while (f < seen && !first_bad.compare_exchange_weak(seen, f)) {}
+        return;
+      }
+      if (repeats_vertex(verts)) simple = false;
     }
-    int distinct = 0;
-    for (size_t i = 0; i < verts.size(); ++i) {
-      bool repeat = false;
-      for (size_t j = 0; j < i && !repeat; ++j) repeat = verts[i] == verts[j];
-      distinct += !repeat;
-    }
-    simple = simple && distinct == int(verts.size());
-  }
+  });
+  if (first_bad < faces) check_face(level, first_bad);
   return simple;
 }
 

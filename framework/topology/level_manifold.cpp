@@ -49,8 +49,8 @@ std::vector<Index> slot_heads(const Level& level, const CornerIndex& ci) {
 }
 
 // Twins of every corner; false when an edge is not manifold: two corners run it the same
-// way (a third face or faces of opposite orientation), three run it, or one face runs it
-// twice.
+// way (a third face or faces of opposite orientation) or three run it. (No face runs an
+// edge both ways here: faces that repeat a vertex went to the general builder.)
 bool find_twins(const Level& level, Corners& k) {
   const CornerIndex& ci = k.index;
   resize_bulk(k.twin, ci.face.size());
@@ -64,7 +64,7 @@ bool find_twins(const Level& level, Corners& k) {
         Index twin = kNone;
         for (Index j = ci.vertex_offsets[to]; ok && j < ci.vertex_offsets[to + 1]; ++j) {
           if (k.head[j] != v) continue;
-          ok = twin == kNone && ci.face[ci.vertex_corners[j]] != ci.face[c];
+          ok = twin == kNone;
           twin = ci.vertex_corners[j];
         }
         if (!ok) manifold = false;

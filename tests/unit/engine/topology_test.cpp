@@ -197,3 +197,27 @@ TEST_CASE("the parallel manifold builder equals the general builder, on one thre
     }
   }
 }
+
+// A hostile file's single face of 10^5 corners: checking it for repeated vertices must not
+// take 10^10 steps (this test would hang), and its topology is a disk's (two of them back to
+// back: a sphere's).
+TEST_CASE("a face of 200,000 corners: a disk, and a repeated vertex among them is found") {
+  constexpr Index n = 200000;
+  std::vector<Index> offsets{0, n}, corners(n);
+  for (Index i = 0; i < n; ++i) corners[i] = i;
+  const Level disk = build_level(n, offsets, corners);
+  CHECK(disk.edge_count() == n);
+  CHECK(euler_characteristic(disk) == 1);
+  CHECK(disk.on_boundary(n / 2));
+  CHECK(disk.valence(n / 2) == 2);
+  // Two such faces back to back: a sphere, every vertex of valence 2 between the two faces.
+  std::vector<Index> both_offsets{0, n, 2 * n}, both(corners);
+  both.insert(both.end(), corners.rbegin(), corners.rend());
+  const Level pillow = build_level(n, both_offsets, both);
+  CHECK(euler_characteristic(pillow) == 2);
+  CHECK_FALSE(pillow.on_boundary(n / 2));
+  CHECK(pillow.incident_face_count(n / 2) == 2);
+  corners[n - 1] = n / 2;  // vertex n/2 twice: the general builder marks it
+  const Level pinched = build_level(n, offsets, corners);
+  CHECK(pinched.non_manifold_vertex(n / 2));
+}
