@@ -51,12 +51,6 @@ void check_manifold_for(const Scheme& scheme, const Level& level) {
                           scheme.path, scheme.name, splitter_info(scheme.split()).name, where));
 }
 
-int max_valence(const Level& level) {
-  int m = 0;
-  for (Index v = 0; v < level.vertex_count; ++v) m = std::max(m, level.valence(v));
-  return m;
-}
-
 // What one step's rows need besides the topology: its weight tables (and, with per-vertex
 // parameters, its vertex rules per vertex) and feature contexts.
 struct StepInputs {
@@ -68,7 +62,7 @@ struct StepInputs {
 // `values`: the per-vertex parameters on `parent`.
 StepInputs prepare_step(const Scheme& scheme, const StepRules& step, const Level& parent, int level,
                         const RefineOptions& options, const VertexParameters& values) {
-  const int max_n = max_valence(parent), max_k = parent.max_face_size();
+  const int max_n = parent.max_valence(), max_k = parent.max_face_size();
   return {step_weight_tables(scheme, step, max_n, max_k, level),
           per_vertex_tables(scheme, step, parent, values, max_n, max_k, level),
           classify_features(parent, options.features)};

@@ -108,6 +108,7 @@ struct Level {
   bool is_hole(Index f) const { return !face_hole.empty() && face_hole[f]; }
   bool all_faces_have_size(int k) const;
   int max_face_size() const;
+  int max_valence() const;  // the largest ring (0 without vertices)
 };
 
 // Builds edges, face-edges and CCW vertex rings from polygons. Manifold input takes the

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include "framework/topology/level.h"
 #include "framework/topology/level_rings.h"
@@ -102,9 +103,23 @@ bool Level::all_faces_have_size(int k) const {
 }
 
 int Level::max_face_size() const {
-  int m = 0;
-  for (Index f = 0; f < face_count(); ++f) m = std::max(m, face_size(f));
-  return m;
+  return tbb::parallel_reduce(
+      tbb::blocked_range<Index>(0, face_count(), 1 << 16), 0,
+      [&](const tbb::blocked_range<Index>& r, int m) {
+        for (Index f = r.begin(); f < r.end(); ++f) m = std::max(m, face_size(f));
+        return m;
+      },
+      [](int a, int b) { return std::max(a, b); });
+}
+
+int Level::max_valence() const {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<Index>(0, vertex_count, 1 << 16), 0,
+      [&](const tbb::blocked_range<Index>& r, int m) {
+        for (Index v = r.begin(); v < r.end(); ++v) m = std::max(m, valence(v));
+        return m;
+      },
+      [](int a, int b) { return std::max(a, b); });
 }
 
 }  // namespace subdiv
