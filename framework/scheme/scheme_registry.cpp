@@ -47,6 +47,13 @@ std::vector<fs::path> scheme_directories() {
   return dirs;
 }
 
+// Whether anything is at p; false also for a path the system cannot look up (a name longer
+// than the file system allows, a loop of links), which then reads as "no such scheme".
+bool path_exists(const fs::path& p) {
+  std::error_code ec;
+  return fs::exists(p, ec);
+}
+
 bool looks_like_path(const std::string& s) {
   return s.find('/') != std::string::npos || (s.size() > 5 && s.ends_with(".json"));
 }
@@ -54,13 +61,13 @@ bool looks_like_path(const std::string& s) {
 fs::path find_scheme_file(const std::string& name_or_path, const fs::path& relative_to = {}) {
   if (looks_like_path(name_or_path)) {
     fs::path p = name_or_path;
-    if (p.is_relative() && !relative_to.empty() && fs::exists(relative_to / p)) p = relative_to / p;
-    if (!fs::exists(p)) throw Error(fmt::format("scheme file '{}' does not exist", name_or_path));
+    if (p.is_relative() && !relative_to.empty() && path_exists(relative_to / p)) p = relative_to / p;
+    if (!path_exists(p)) throw Error(fmt::format("scheme file '{}' does not exist", name_or_path));
     return p;
   }
   for (const auto& dir : scheme_directories()) {
     fs::path candidate = dir / (name_or_path + ".json");
-    if (fs::exists(candidate)) return candidate;
+    if (path_exists(candidate)) return candidate;
   }
   if (find_code_scheme(name_or_path))
     throw Error(fmt::format("scheme '{}' is defined by a plugin, not a file", name_or_path));
@@ -158,7 +165,7 @@ void register_code_scheme(CodeSchemeEntry entry) {
   if (const CodeSchemeEntry* other = find_code_scheme(entry.name))
     throw Error(fmt::format("duplicate scheme name '{}': {} already defines it", entry.name, other->origin));
   for (const auto& dir : scheme_directories())
-    if (fs::path file = dir / (entry.name + ".json"); fs::exists(file))
+    if (fs::path file = dir / (entry.name + ".json"); path_exists(file))
       throw Error(fmt::format("duplicate scheme name '{}': the scheme file {} already defines it", entry.name,
                               file.string()));
   CodeSchemes& c = code_schemes();

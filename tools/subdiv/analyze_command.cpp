@@ -81,7 +81,7 @@ void write_characteristic_maps(const std::filesystem::path& dir, const std::stri
                                const std::vector<SurfaceAnalysis>& analyses, const char* prefix) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (!std::filesystem::is_directory(dir))
+  if (!std::filesystem::is_directory(dir, ec))
     throw Error(fmt::format("--vtk {}: cannot create the directory", dir.string()));
   for (const auto& a : analyses) {
     const auto& cm = a.characteristic_map;

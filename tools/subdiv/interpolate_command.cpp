@@ -48,7 +48,8 @@ struct InterpolateArgs {
 
 void check_directory(const fs::path& out) {
   const fs::path dir = out.parent_path();
-  if (!dir.empty() && !fs::is_directory(dir))
+  std::error_code ec;  // (a name too long to look up is "does not exist" too)
+  if (!dir.empty() && !fs::is_directory(dir, ec))
     throw Error(fmt::format("cannot write '{}': directory '{}' does not exist", out.string(), dir.string()));
 }
 
@@ -165,7 +166,8 @@ void run(const InterpolateArgs& a) {
   std::optional<double> lambda_value;
   if (!a.lambda.empty()) {
     lambda_value = parse_number(a.lambda);
-    if (!lambda_value && !fs::is_regular_file(a.lambda))
+    std::error_code ec;
+    if (!lambda_value && !fs::is_regular_file(a.lambda, ec))
       throw Error(fmt::format("--lambda '{}' is neither a number nor a file of per-vertex values", a.lambda));
   }
   if (is_curve_scheme(a.scheme)) {

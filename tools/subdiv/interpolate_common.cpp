@@ -48,7 +48,8 @@ std::string read_text(const fs::path& file, const std::string& what) {
 std::vector<std::uint8_t> read_selection(const std::string& select, Index vertex_count) {
   const bool inline_list = select == "all" || select.find_first_not_of("0123456789, ") == std::string::npos;
   if (inline_list) return parse_vertex_selection(select, vertex_count, "--select");
-  if (!fs::is_regular_file(select))
+  std::error_code ec;
+  if (!fs::is_regular_file(select, ec))
     throw Error(fmt::format("--select '{}': no such file, and not 'all' or a comma list of 0-based vertex ids", select));
   return parse_vertex_selection(read_text(select, "--select"), vertex_count, select);
 }

@@ -66,7 +66,7 @@ void check_levels(std::span<const OutputLevel> levels, std::string_view context)
 bool make_directory(const fs::path& dir, std::string_view context) {
   std::error_code ec;
   const bool created = fs::create_directory(dir, ec);
-  if (ec || !fs::is_directory(dir))
+  if (ec || !fs::is_directory(dir, ec))
     throw Error(fmt::format("{}: cannot create directory '{}' ({})", context, dir.string(),
                             ec ? ec.message() : "a file of that name exists"));
   return created;

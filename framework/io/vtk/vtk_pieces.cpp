@@ -61,7 +61,7 @@ void make_piece_folder(const fs::path& pvtp) {
   const fs::path dir = piece_file(pvtp, 0).parent_path();
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (!fs::is_directory(dir))
+  if (!fs::is_directory(dir, ec))
     throw Error(fmt::format("cannot write '{}': cannot create the pieces' folder '{}' ({}); check the path and its "
                             "permissions",
                             pvtp.string(), dir.string(), ec ? ec.message() : "a file of that name exists"));

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "framework/scheme/scheme_sequence.h"
 #include "framework/util/error.h"
 #include "support/refine_helpers.h"
 
@@ -69,6 +70,12 @@ TEST_CASE("parameters: unknown names, bad choices and out-of-range values are re
 TEST_CASE("unknown scheme names list the known ones; missing files are named") {
   CHECK_THROWS_WITH_AS(load_scheme("catmul-clark"), doctest::Contains("catmull-clark"), Error);
   CHECK_THROWS_WITH_AS(load_scheme("/nonexistent/x.json"), doctest::Contains("does not exist"), Error);
+  // A name longer than a file name may be (fuzz_scheme_sequence): the file system's error
+  // escaped as an internal one.
+  const std::string too_long = "doo-sabin" + std::string(300, 'x');
+  CHECK_THROWS_WITH_AS(load_scheme(too_long), doctest::Contains("unknown scheme"), Error);
+  CHECK_THROWS_WITH_AS(load_scheme(too_long + ".json"), doctest::Contains("does not exist"), Error);
+  CHECK_THROWS_WITH_AS(load_scheme_sequence(too_long + ":1", 1, {}), doctest::Contains("unknown scheme"), Error);
 }
 
 TEST_CASE("load-time checks: unknown names in formulas, reserved names, wrong JSON types") {

@@ -17,6 +17,20 @@ TEST_CASE("write_mesh: a missing directory is reported and nothing is created") 
   CHECK(dir.entries().empty());
 }
 
+TEST_CASE("write_mesh: a file name longer than the file system allows is refused by name, nothing created") {
+  TempDir dir;
+  for (const char* ext : {".obj", ".vtp"}) {
+    const fs::path target = dir / (std::string(300, 'x') + ext);
+    const std::string e = error_of([&] { write_mesh(target, cube_mesh()); });
+    CHECK(contains(e, "file name is 304 bytes long"));
+    CHECK(dir.entries().empty());
+  }
+  // A name that fits must not fail because its temporary name (longer) would not.
+  const fs::path fits = dir / (std::string(250, 'y') + ".obj");
+  write_mesh(fits, cube_mesh());
+  CHECK(fs::exists(fits));
+}
+
 TEST_CASE("write_mesh: invalid meshes are refused before any file exists") {
   TempDir dir;
   MeshData bad = cube_mesh();
