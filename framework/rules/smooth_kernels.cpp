@@ -22,6 +22,9 @@ bool gather_of(Element element, const CompiledTerm& t, Gather& gather) {
       if (t.role == Role::Ends && plain) return gather = Gather::Ends, true;
       if (t.role == Role::Faces && t.new_point == NewPoint::Face) return gather = Gather::FacePoints, true;
       if ((t.role == Role::Opposite || t.role == Role::Wings) && plain) return gather = Gather::Opposite, true;
+      if (t.role == Role::FarWings && plain) return gather = Gather::FarWings, true;
+      if (t.role == Role::EndRing0 && plain) return gather = Gather::EndRing0, true;
+      if (t.role == Role::EndRing1 && plain) return gather = Gather::EndRing1, true;
       return false;
     case Element::Face:
       if (t.role == Role::Vertices && plain) return gather = Gather::Corners, true;
@@ -110,6 +113,20 @@ Index third_corner(const Level& L, Index f, Index a, Index b) {
   return kNone;
 }
 
+// In triangle f, the vertex across its edge (x, y): the third vertex of the triangle on the
+// other side, or kNone where there is none to read plainly (a boundary, a non-manifold edge,
+// a face that is not a triangle: the interpreter's cases). element_rules.cpp, add_across.
+Index across(const Level& L, Index f, Index x, Index y) {
+  for (Index e : L.face_edge_list(f)) {
+    const Index u = L.edge_vertices[2 * e], w = L.edge_vertices[2 * e + 1];
+    if (!((u == x && w == y) || (u == y && w == x))) continue;
+    if (L.edge_on_boundary(e) || L.non_manifold_edge(e)) return kNone;
+    const Index g = L.edge_faces[2 * e] == f ? L.edge_faces[2 * e + 1] : L.edge_faces[2 * e];
+    return third_corner(L, g, x, y);
+  }
+  return kNone;
+}
+
 }  // namespace
 
 SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGroup>& groups)
@@ -117,7 +134,8 @@ SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGro
   for (int k = 0; k < kElementCount; ++k) {
     kernels_[k] = compile_kernel(step, Element(k));
     for (const Term& t : kernels_[k])
-      if (k == int(Element::Edge) && (t.reads == Term::Reads::More || t.reads == Term::Reads::K || t.gather == Gather::Opposite))
+      if (k == int(Element::Edge) && (t.reads == Term::Reads::More || t.reads == Term::Reads::K ||
+                                      (t.gather != Gather::Ends && t.gather != Gather::FacePoints)))
         edge_reads_shape_ = true;
   }
 }
@@ -264,6 +282,34 @@ bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, doub
           acc.add(in.vertex(u), w), sum += w;
         }
         break;
+      case Gather::FarWings:
+        // Triangle j runs (p, q, c); its far wings lie across (q, c) and (c, p).
+        for (int j = 0; j < 2; ++j) {
+          const Index p = j == 0 ? a : b, q = j == 0 ? b : a;
+          const Index c = third_corner(L, faces[j], a, b);
+          if (c == kNone) return false;
+          const Index far[2] = {across(L, faces[j], q, c), across(L, faces[j], c, p)};
+          for (int i = 0; i < 2; ++i) {
+            if (far[i] == kNone) return false;
+            const double w = weight(3, 2 * j + i);
+            acc.add(in.vertex(far[i]), w), sum += w;
+          }
+        }
+        break;
+      case Gather::EndRing0:
+      case Gather::EndRing1: {
+        // element_rules.cpp, add_end_ring: j = 0 is the edge's other end.
+        const Index end = term.gather == Gather::EndRing0 ? a : b;
+        const auto ring = L.ring_edges(end);
+        const int n = int(ring.size());
+        int start = 0;
+        while (start < n && ring[start] != e) ++start;
+        for (int j = 0; j < n; ++j) {
+          const double w = weight(0, j);
+          acc.add(in.vertex(L.other_end(ring[(start + j) % n], end)), w), sum += w;
+        }
+        break;
+      }
       default: return false;
     }
   }

@@ -51,6 +51,9 @@ public:
     EdgePoints,  // vertex or face: the new points of its edges
     Ends,        // edge: its two ends
     Opposite,    // edge: in each of its two triangles, the vertex off the edge
+    FarWings,    // edge: for each of its triangles, the vertices across the triangle's other two edges
+    EndRing0,    // edge: the ring of its first end, counted CCW from the edge
+    EndRing1,    // edge: likewise for its second end
     Corners,     // face: its corners in order; face corner: its face's corners from it
   };
   struct Term {
@@ -92,7 +95,7 @@ private:
   const StepContext& step_;
   const std::vector<ChildGroup>& groups_;
   std::vector<Term> kernels_[kElementCount];  // empty: not covered
-  bool edge_reads_shape_ = false;  // an edge term reads k, n0, n1, k0, k1 or needs triangles
+  bool edge_reads_shape_ = false;  // an edge term reads k, n0, n1, k0, k1 or needs triangles or rings
   // The parent level has no sharpness tags: its interior vertices and edges are smooth.
   const bool untagged_;
 };

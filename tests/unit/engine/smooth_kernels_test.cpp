@@ -173,6 +173,8 @@ TEST_CASE("the kernels take every point of a closed smooth mesh, and leave featu
   const std::vector<Expect> all_smooth = {{"catmull-clark", of("torus", torus(8, 6))},
                                           {"catmull-clark", of("prism 5", prism(5))},
                                           {"loop", of("triangle torus", torus(8, 6, true))},
+                                          {"butterfly", of("triangle torus", torus(8, 6, true))},
+                                          {"modified-butterfly", of("triangle torus", torus(8, 6, true))},
                                           {"doo-sabin", of("torus", torus(8, 6))},
                                           {"bilinear", of("torus", torus(8, 6))}};
   for (const Expect& e : all_smooth) {
