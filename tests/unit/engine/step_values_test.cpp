@@ -70,12 +70,17 @@ void check_same_values(const std::string& name, const Case& c, int levels, bool 
   }
 }
 
-// Catmull-Clark's rules use new face points; step_values reads them back (round-off).
-bool exact_for(const std::string& scheme) { return scheme != "catmull-clark" && scheme != "catmull-clark-shape"; }
+// Catmull-Clark's rules use new face points; step_values reads them back (round-off). The
+// butterflies' roles overlap (an end's ring holds the other end and the wings): a table row
+// merges a point's weights before summing, the compiled kernels sum term by term (round-off).
+bool exact_for(const std::string& scheme) {
+  return scheme != "catmull-clark" && scheme != "catmull-clark-shape" && scheme != "butterfly" &&
+         scheme != "modified-butterfly";
+}
 
 }  // namespace
 
-TEST_CASE("step_values equals the stencil tables, bit for bit where the rules use no new points") {
+TEST_CASE("step_values equals the stencil tables, bit for bit where the rules use no new points and no point twice") {
   const std::vector<Case> quads = {of(torus(6, 5)), of(cube()), of(grid(4, 3)), creased_cube(), of(torus(3, 3))};
   const std::vector<Case> triangles = {of(torus(6, 5, true)), of(octahedron()), of(grid(4, 3, true)),
                                        of(bipyramid(7)), of(torus(3, 3, true))};
@@ -86,7 +91,7 @@ TEST_CASE("step_values equals the stencil tables, bit for bit where the rules us
       for (const char* scheme : {"catmull-clark", "doo-sabin", "mid-edge"})
         check_same_values(scheme, of(pyramid()), 2, plans, channels, exact_for(scheme));  // a quad among triangles
       for (const char* scheme : {"loop", "butterfly", "modified-butterfly", "midpoint"})
-        for (const Case& c : triangles) check_same_values(scheme, c, 2, plans, channels, true);
+        for (const Case& c : triangles) check_same_values(scheme, c, 2, plans, channels, exact_for(scheme));
       for (const Case& c : triangles) check_same_values("sqrt3", c, 3, plans, channels, true);
     }
   check_same_values("catmull-clark", creased_cube(), 4, true, 3, false);  // semi-sharp decays over levels
