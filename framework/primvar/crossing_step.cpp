@@ -117,13 +117,13 @@ std::vector<Index> corner_faces(const Places& places, const Level& child) {
 struct ValueOrigin {
   OriginKind kind;
   Index parent;
-  std::uint8_t local;
+  LocalIndex local;
 };
 
 ValueOrigin value_origin(const Places& places, const Level& values, Index x, Index f) {
   const OriginKind kind = places.origins.kind[x];
   const Index p = places.origins.parent[x];
-  const std::uint8_t local = places.origins.local[x];
+  const LocalIndex local = places.origins.local[x];
   if (kind == OriginKind::Vertex) return {kind, values.face(f)[places.vertex_slot(f, p)], 0};
   if (kind != OriginKind::Edge) return {kind, p, local};
   // The same place along the value edge, whose first vertex may be the other end.
@@ -133,7 +133,7 @@ ValueOrigin value_origin(const Places& places, const Level& values, Index x, Ind
   const bool face_runs_forward = L.face(f)[slot] == L.edge_vertices[2 * p];
   const Index value_at_first = values.face(f)[face_runs_forward ? slot : (slot + 1) % L.face_size(f)];
   const bool same_way = values.edge_vertices[2 * value_edge] == value_at_first;
-  return {kind, value_edge, same_way ? local : std::uint8_t(places.points_per_edge[p] - 1 - local)};
+  return {kind, value_edge, same_way ? local : LocalIndex(places.points_per_edge[p] - 1 - local)};
 }
 
 }  // namespace

@@ -13,7 +13,7 @@ enum class OriginKind : std::uint8_t { Vertex = 0, Edge = 1, Face = 2, Corner = 
 struct ChildOrigins {
   std::vector<OriginKind> kind;   // per child vertex
   std::vector<Index> parent;      // parent vertex, edge or face (for Corner: the face)
-  std::vector<std::uint8_t> local;  // Corner: corner index within the face; else 0
+  std::vector<LocalIndex> local;  // Corner: corner index within the face; Edge: point along it; else 0
   std::vector<Index> parent_face;   // per child face: the parent face it lies in (kNone if none)
 
   // Set by a split that lays out each kind's children as one run in element order (element

@@ -80,7 +80,7 @@ SplitResult split_dual(const Level& L) {
   o.parent.resize(n);
   o.local.resize(n);
   for (Index f = 0; f < L.face_count(); ++f)
-    for (int i = 0; i < L.face_size(f); ++i) o.parent[L.face_offsets[f] + i] = f, o.local[L.face_offsets[f] + i] = std::uint8_t(i);
+    for (int i = 0; i < L.face_size(f); ++i) o.parent[L.face_offsets[f] + i] = f, o.local[L.face_offsets[f] + i] = LocalIndex(i);
   o.parent_face = faces.parent_face;
   SplitResult result{build_level(n, faces.offsets, faces.corners), std::move(o), true};
   if (skipped_edges || skipped_vertices)

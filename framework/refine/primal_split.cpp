@@ -17,7 +17,7 @@ ChildOrigins primal_origins(const Level& parent, bool with_face_points) {
   ChildOrigins o;
   resize_bulk(o.kind, size_t(total));
   resize_bulk(o.parent, size_t(total));
-  assign_bulk(o.local, size_t(total), std::uint8_t(0));
+  assign_bulk(o.local, size_t(total), LocalIndex(0));
   for (Index i = 0; i < v; ++i) o.kind[i] = OriginKind::Vertex, o.parent[i] = i;
   for (Index i = 0; i < e; ++i) o.kind[v + i] = OriginKind::Edge, o.parent[v + i] = i;
   if (with_face_points)

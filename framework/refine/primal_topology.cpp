@@ -142,7 +142,7 @@ Level quad_split_topology(const Level& P) {
     const Index f0 = P.edge_faces[2 * e], f1 = P.edge_faces[2 * e + 1];
     const Index c_a0 = P.face_offsets[f0] + local_corner(P, f0, a), c_b0 = P.face_offsets[f0] + local_corner(P, f0, b);
     Index* rf = &C.vertex_faces[C.vertex_face_offsets[V + e]];
-    std::uint8_t* rc = &C.vertex_face_corner[C.vertex_face_offsets[V + e]];
+    LocalIndex* rc = &C.vertex_face_corner[C.vertex_face_offsets[V + e]];
     Index* re = &C.vertex_edges[C.vertex_ring_offsets[V + e]];
     if (f1 == kNone) {
       // Starts on the boundary half towards b, ends on the half towards a.
@@ -160,7 +160,7 @@ Level quad_split_topology(const Level& P) {
   tbb::parallel_for(Index(0), F, [&](Index f) {
     const Index o = P.face_offsets[f], k = P.face_size(f);
     Index* rf = &C.vertex_faces[C.vertex_face_offsets[V + E + f]];
-    std::uint8_t* rc = &C.vertex_face_corner[C.vertex_face_offsets[V + E + f]];
+    LocalIndex* rc = &C.vertex_face_corner[C.vertex_face_offsets[V + E + f]];
     Index* re = &C.vertex_edges[C.vertex_ring_offsets[V + E + f]];
     for (Index i = 0; i < k; ++i) rf[i] = o + i, rc[i] = 2, re[i] = 2 * E + o + (i + k - 1) % k;
   });
@@ -242,12 +242,12 @@ Level triangle_split_topology(const Level& P) {
     const Index f0 = P.edge_faces[2 * e], f1 = P.edge_faces[2 * e + 1];
     const int ia0 = local_corner(P, f0, a), ib0 = local_corner(P, f0, b);
     Index* rf = &C.vertex_faces[C.vertex_face_offsets[V + e]];
-    std::uint8_t* rc = &C.vertex_face_corner[C.vertex_face_offsets[V + e]];
+    LocalIndex* rc = &C.vertex_face_corner[C.vertex_face_offsets[V + e]];
     Index* re = &C.vertex_edges[C.vertex_ring_offsets[V + e]];
     const Index in0 = 2 * E + 3 * f0;
     if (f1 == kNone) {
       rf[0] = 4 * f0 + ib0, rf[1] = 4 * f0 + 3, rf[2] = 4 * f0 + ia0;
-      rc[0] = 2, rc[1] = std::uint8_t(ia0), rc[2] = 1;
+      rc[0] = 2, rc[1] = LocalIndex(ia0), rc[2] = 1;
       re[0] = 2 * e + 1, re[1] = in0 + ib0, re[2] = in0 + ia0, re[3] = 2 * e;
       C.vertex_on_boundary[V + e] = 1;
       return;
@@ -255,7 +255,7 @@ Level triangle_split_topology(const Level& P) {
     const int ia1 = local_corner(P, f1, a), ib1 = local_corner(P, f1, b);
     const Index in1 = 2 * E + 3 * f1;
     rf[0] = 4 * f0 + ia0, rf[1] = 4 * f1 + ia1, rf[2] = 4 * f1 + 3, rf[3] = 4 * f1 + ib1, rf[4] = 4 * f0 + ib0, rf[5] = 4 * f0 + 3;
-    rc[0] = 1, rc[1] = 2, rc[2] = std::uint8_t(ib1), rc[3] = 1, rc[4] = 2, rc[5] = std::uint8_t(ia0);
+    rc[0] = 1, rc[1] = 2, rc[2] = LocalIndex(ib1), rc[3] = 1, rc[4] = 2, rc[5] = LocalIndex(ia0);
     re[0] = in0 + ia0, re[1] = 2 * e, re[2] = in1 + ia1, re[3] = in1 + ib1, re[4] = 2 * e + 1, re[5] = in0 + ib0;
   });
   return C;

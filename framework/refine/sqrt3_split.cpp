@@ -168,7 +168,7 @@ SplitResult split_sqrt3(const Level& parent, int step_index) {
   Sqrt3Builder b{parent, trisect, std::vector<Index>(F, kNone), std::vector<Index>(F, kNone),
                  std::vector<Index>(E, kNone), {0}, {}, {}};
   ChildOrigins o;
-  auto add_origin = [&](OriginKind kind, Index p, std::uint8_t local) {
+  auto add_origin = [&](OriginKind kind, Index p, LocalIndex local) {
     o.kind.push_back(kind), o.parent.push_back(p), o.local.push_back(local);
   };
   for (Index v = 0; v < V; ++v) add_origin(OriginKind::Vertex, v, 0);

@@ -21,6 +21,10 @@ namespace subdiv {
 
 using Index = std::int32_t;
 constexpr Index kNone = -1;
+// A corner's place within its face (OpenSubdiv's Vtr::LocalIndex), so faces have at most
+// kMaxFaceSize corners, as in OpenSubdiv (build_level refuses larger ones).
+using LocalIndex = std::uint16_t;
+constexpr int kMaxFaceSize = 65535;
 
 struct Level {
   Index vertex_count = 0;
@@ -36,7 +40,7 @@ struct Level {
   std::vector<Index> vertex_edges;            // CCW ring edges
   std::vector<Index> vertex_face_offsets{0};  // CSR over vertex_faces
   std::vector<Index> vertex_faces;            // CCW ring faces
-  std::vector<std::uint8_t> vertex_face_corner;  // corner of v within vertex_faces[i]
+  std::vector<LocalIndex> vertex_face_corner;  // corner of v within vertex_faces[i]
   std::vector<std::uint8_t> vertex_on_boundary;
 
   // Non-manifold topology, marked as OpenSubdiv's Vtr marks it (vtr/level.cpp,

@@ -30,10 +30,14 @@ bool repeats_vertex(std::span<const Index> verts) {
   return false;
 }
 
-// Throws if no builder can take face f: fewer than 3 corners, or a vertex out of range.
+// Throws if no builder can take face f: fewer than 3 corners or more than kMaxFaceSize, or
+// a vertex out of range.
 void check_face(const Level& level, Index f) {
   auto verts = level.face(f);
   if (verts.size() < 3) throw Error(fmt::format("face {} has {} vertices; a face needs at least 3", f, verts.size()));
+  if (verts.size() > size_t(kMaxFaceSize))
+    throw Error(fmt::format("face {} has {} vertices; faces may have at most {} (as in OpenSubdiv); split it", f,
+                            verts.size(), kMaxFaceSize));
   for (Index v : verts)
     if (v < 0 || v >= level.vertex_count)
       throw Error(fmt::format("face {} names vertex {}, but the mesh has {} vertices", f, v, level.vertex_count));
@@ -52,7 +56,7 @@ bool check_faces(const Level& level) {
   tbb::parallel_for(tbb::blocked_range<Index>(0, faces, 1 << 14), [&](const tbb::blocked_range<Index>& r) {
     for (Index f = r.begin(); f < r.end(); ++f) {
       auto verts = level.face(f);
-      bool bad = verts.size() < 3;
+      bool bad = verts.size() < 3 || verts.size() > size_t(kMaxFaceSize);
       for (Index v : verts) bad = bad || v < 0 || v >= level.vertex_count;
       if (bad) {
         Index seen = first_bad.load();

@@ -66,7 +66,7 @@ bool build_ordered_ring(Level& level, const CornerIndex& ci, Index v) {
   for (Index visited = 0; visited < count; ++visited) {
     const Index f = ci.face[c];
     level.vertex_faces.push_back(f);
-    level.vertex_face_corner.push_back(std::uint8_t(c - level.face_offsets[f]));
+    level.vertex_face_corner.push_back(LocalIndex(c - level.face_offsets[f]));
     level.vertex_edges.push_back(level.face_edges[c]);
     const Index in_edge = level.face_edges[prev_corner(level, f, c)];
     const Index g = other_face(level, in_edge, f);
@@ -170,7 +170,7 @@ void build_unordered_ring(Level& L, const CornerIndex& ci, Index v) {
   for (Index i = ci.vertex_offsets[v]; i < ci.vertex_offsets[v + 1]; ++i) {
     const Index c = ci.vertex_corners[i], f = ci.face[c];
     L.vertex_faces.push_back(f);
-    L.vertex_face_corner.push_back(std::uint8_t(c - L.face_offsets[f]));
+    L.vertex_face_corner.push_back(LocalIndex(c - L.face_offsets[f]));
     add_edge(L.face_edges[c]);
     add_edge(L.face_edges[prev_corner(L, f, c)]);
   }

@@ -145,7 +145,7 @@ bool walk_ring(Level& level, const Corners& k, Index v, Index start) {
   for (Index visited = 0; visited < count; ++visited) {
     const Index f = ci.face[c];
     level.vertex_faces[face_slot] = f;
-    level.vertex_face_corner[face_slot++] = std::uint8_t(c - level.face_offsets[f]);
+    level.vertex_face_corner[face_slot++] = LocalIndex(c - level.face_offsets[f]);
     level.vertex_edges[edge_slot++] = level.face_edges[c];
     const Index entering = prev_corner(level, f, c);
     const Index next = k.twin[entering];

@@ -1,4 +1,6 @@
+#include <cmath>
 #include <doctest/doctest.h>
+#include <set>
 
 #include "framework/refine/splitter.h"
 #include "support/test_meshes.h"
@@ -142,4 +144,38 @@ TEST_CASE("the primal splits declare their children's runs as their origins lay 
     check_declared_runs(L, split_triangle(L).origins);
     check_declared_runs(L, split_triangle_faces(L).origins);
   }
+}
+
+namespace {
+
+// A 300-gon capping a prism (a CAD cylinder's end): more corners than 8 bits can number.
+test::Mesh capped_prism(int k) {
+  test::Mesh m;
+  for (int ring = 0; ring < 2; ++ring)
+    for (int i = 0; i < k; ++i) m.add_vertex(std::cos(2 * M_PI * i / k), std::sin(2 * M_PI * i / k), ring);
+  std::vector<Index> bottom(k), top(k);
+  for (int i = 0; i < k; ++i) bottom[i] = k - 1 - i, top[i] = k + i;
+  m.corners.insert(m.corners.end(), bottom.begin(), bottom.end()), m.offsets.push_back(Index(m.corners.size()));
+  m.corners.insert(m.corners.end(), top.begin(), top.end()), m.offsets.push_back(Index(m.corners.size()));
+  for (int i = 0; i < k; ++i) m.add_face({i, (i + 1) % k, k + (i + 1) % k, k + i});
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("faces of more than 256 corners: ring corners and corner origins keep their place") {
+  const Level L = capped_prism(300).level();
+  for (Index v = 0; v < L.vertex_count; ++v)
+    for (int i = 0; i < L.incident_face_count(v); ++i)
+      CHECK(L.face(L.ring_faces(v)[i])[L.vertex_face_corner[L.vertex_face_offsets[v] + i]] == v);
+  check_same_topology(split_quad(L).child);
+  // The dual split makes one child per corner, named by (face, corner): all distinct.
+  const ChildOrigins o = split_dual(L).origins;
+  std::set<std::pair<Index, int>> corners;
+  for (size_t c = 0; c < o.kind.size(); ++c) {
+    REQUIRE(o.kind[c] == OriginKind::Corner);
+    CHECK(o.local[c] < L.face_size(o.parent[c]));
+    corners.insert({o.parent[c], o.local[c]});
+  }
+  CHECK(corners.size() == size_t(L.corner_count()));
 }

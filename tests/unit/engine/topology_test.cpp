@@ -198,11 +198,11 @@ TEST_CASE("the parallel manifold builder equals the general builder, on one thre
   }
 }
 
-// A hostile file's single face of 10^5 corners: checking it for repeated vertices must not
-// take 10^10 steps (this test would hang), and its topology is a disk's (two of them back to
-// back: a sphere's).
-TEST_CASE("a face of 200,000 corners: a disk, and a repeated vertex among them is found") {
-  constexpr Index n = 200000;
+// A hostile file's single face of the largest size (OpenSubdiv's limit, 65,535 corners):
+// checking it for repeated vertices must not take k^2 steps, and its topology is a disk's
+// (two of them back to back: a sphere's). One corner more is refused by name.
+TEST_CASE("a face of 65,535 corners: a disk, and a repeated vertex among them is found; larger ones refused") {
+  constexpr Index n = kMaxFaceSize;
   std::vector<Index> offsets{0, n}, corners(n);
   for (Index i = 0; i < n; ++i) corners[i] = i;
   const Level disk = build_level(n, offsets, corners);
@@ -220,4 +220,8 @@ TEST_CASE("a face of 200,000 corners: a disk, and a repeated vertex among them i
   corners[n - 1] = n / 2;  // vertex n/2 twice: the general builder marks it
   const Level pinched = build_level(n, offsets, corners);
   CHECK(pinched.non_manifold_vertex(n / 2));
+  corners.push_back(n - 1);
+  offsets.back() = n + 1;
+  CHECK_THROWS_WITH_AS(build_level(n, offsets, corners),
+                       doctest::Contains("face 0 has 65536 vertices; faces may have at most 65535"), Error);
 }
