@@ -1,0 +1,112 @@
+#include "framework/io/vtk/vtk_fast_xml_writer.h"
+
+#include <string>
+#include <utility>
+
+#include <vtkCellArray.h>
+#include <vtkErrorCode.h>
+#include <vtkNew.h>
+#include <vtkOutputStream.h>
+#include <vtkPolyData.h>
+
+#include "framework/io/vtk/vtk_array_ranges.h"
+
+namespace subdiv::io_detail {
+namespace {
+
+constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+
+// Base64 as vtkBase64OutputStream writes it (each StartWriting..EndWriting run padded with
+// '=' on its own), a whole Write at a time.
+class Base64Stream : public vtkOutputStream {
+public:
+  static Base64Stream* create() {
+    auto* stream = new Base64Stream;
+    stream->InitializeObjectBase();
+    return stream;
+  }
+
+  int StartWriting() override {
+    pending_size_ = 0;
+    return vtkOutputStream::StartWriting();
+  }
+
+  int Write(void const* data, size_t length) override {
+    const auto* in = static_cast<const unsigned char*>(data);
+    text_.clear();
+    text_.reserve((length + pending_size_) / 3 * 4 + 4);
+    // Complete the triplet a previous Write left open.
+    while (pending_size_ > 0 && pending_size_ < 3 && length > 0) pending_[pending_size_++] = *in++, --length;
+    if (pending_size_ == 3) encode(pending_[0], pending_[1], pending_[2]), pending_size_ = 0;
+    for (; length >= 3; in += 3, length -= 3) encode(in[0], in[1], in[2]);
+    while (length > 0) pending_[pending_size_++] = *in++, --length;
+    return put();
+  }
+
+  int EndWriting() override {
+    text_.clear();
+    if (pending_size_ == 1) {
+      text_ += kAlphabet[pending_[0] >> 2];
+      text_ += kAlphabet[(pending_[0] & 0x03) << 4];
+      text_ += "==";
+    } else if (pending_size_ == 2) {
+      text_ += kAlphabet[pending_[0] >> 2];
+      text_ += kAlphabet[((pending_[0] & 0x03) << 4) | (pending_[1] >> 4)];
+      text_ += kAlphabet[(pending_[1] & 0x0F) << 2];
+      text_ += '=';
+    }
+    pending_size_ = 0;
+    return put() && vtkOutputStream::EndWriting();
+  }
+
+private:
+  void encode(unsigned char a, unsigned char b, unsigned char c) {
+    const char quad[4] = {kAlphabet[a >> 2], kAlphabet[((a & 0x03) << 4) | (b >> 4)],
+                          kAlphabet[((b & 0x0F) << 2) | (c >> 6)], kAlphabet[c & 0x3F]};
+    text_.append(quad, 4);
+  }
+
+  int put() {
+    if (text_.empty()) return 1;
+    return this->Stream->write(text_.data(), std::streamsize(text_.size())) ? 1 : 0;
+  }
+
+  unsigned char pending_[3] = {};
+  unsigned pending_size_ = 0;
+  std::string text_;
+};
+
+}  // namespace
+
+FastXMLPolyDataWriter* FastXMLPolyDataWriter::New() {
+  auto* writer = new FastXMLPolyDataWriter;
+  writer->InitializeObjectBase();
+  return writer;
+}
+
+FastXMLPolyDataWriter::FastXMLPolyDataWriter() {
+  Base64Stream* stream = Base64Stream::create();
+  this->SetDataStream(stream);  // registers it
+  stream->Delete();
+}
+
+// As vtkXMLPolyDataWriter::WriteInlinePiece (points and data, then the four cell kinds),
+// without its progress reports, and with the cell arrays' ranges cached before they are written.
+void FastXMLPolyDataWriter::WriteInlinePiece(vtkIndent indent) {
+  vtkXMLUnstructuredDataWriter::WriteInlinePiece(indent);
+  vtkPolyData* input = this->GetInput();
+  const std::pair<const char*, vtkCellArray*> kinds[] = {{"Verts", input->GetVerts()},
+                                                         {"Lines", input->GetLines()},
+                                                         {"Strips", input->GetStrips()},
+                                                         {"Polys", input->GetPolys()}};
+  for (const auto& [name, cells] : kinds) {
+    if (this->GetErrorCode() == vtkErrorCode::OutOfDiskSpaceError) return;
+    if (cells) this->ConvertCells(cells);
+    this->ConvertFaces(nullptr, nullptr);
+    cache_array_range(this->CellPoints);
+    cache_array_range(this->CellOffsets);
+    this->WriteCellsInlineWorker(name, nullptr, indent);
+  }
+}
+
+}  // namespace subdiv::io_detail
