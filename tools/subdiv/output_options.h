@@ -41,7 +41,7 @@ const std::vector<std::string>& output_array_names();
 
 struct OutputArgs {
   std::string arrays = "default";
-  std::string compression = "zlib";
+  std::string compression = "lz4";
   int compression_level = 1;
 };
 

@@ -53,35 +53,40 @@ private:
   std::size_t block_bytes(std::size_t word) const { return std::max<std::size_t>(1, block_size_ / word) * word; }
 
   // The compressed block that starts at `in`, if it belongs to a known array; compresses the
-  // whole array first when `in` is its start.
+  // next run of the array's blocks first when `in` is the array's start or past the run done.
   const std::vector<unsigned char>* precompressed(unsigned char const* in, std::size_t size) {
     if (const auto it = by_start_.find(in); it != by_start_.end() && it->second != current_) {
       const ArrayBytes& a = arrays_[it->second];
       if (size != std::min(a.size, block_bytes(a.word))) return nullptr;
-      compress_all(a);
       current_ = it->second;
+      compress_run(a, 0);
     }
     if (current_ == kNone) return nullptr;
     const ArrayBytes& a = arrays_[current_];
     if (in < a.data || in >= a.data + a.size) return nullptr;
     const std::size_t offset = std::size_t(in - a.data), length = block_bytes(a.word);
     if (offset % length != 0 || size != std::min(length, a.size - offset)) return nullptr;
-    const std::vector<unsigned char>& block = blocks_[offset / length];
+    const std::size_t k = offset / length;
+    if (k < first_ || k >= first_ + blocks_.size()) compress_run(a, k);
+    const std::vector<unsigned char>& block = blocks_[k - first_];
     return block.empty() ? nullptr : &block;  // empty: that block failed; VTK's own call reports it
   }
 
-  // Every block of `a`, each by a compressor of this one's kind and level: the same bytes as
-  // one compressor block after block.
-  void compress_all(const ArrayBytes& a) {
+  // Blocks `first` on of `a`, kRunBlocks of them, each by a compressor of this one's kind and
+  // level: the same bytes as one compressor block after block. A run at a time bounds the
+  // memory the compressed blocks take to kRunBlocks blocks.
+  void compress_run(const ArrayBytes& a, std::size_t first) {
     const std::size_t length = block_bytes(a.word), count = (a.size + length - 1) / length;
-    blocks_.assign(count, {});
+    first_ = first;
+    blocks_.assign(std::min(kRunBlocks, count - first), {});
     const int level = this->GetCompressionLevel();
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count), [&](const tbb::blocked_range<std::size_t>& r) {
+    const tbb::blocked_range<std::size_t> all(0, blocks_.size());
+    tbb::parallel_for(all, [&](const tbb::blocked_range<std::size_t>& r) {
       vtkSmartPointer<Base> compressor = vtkSmartPointer<Base>::New();
       compressor->SetCompressionLevel(level);
-      for (std::size_t k = r.begin(); k != r.end(); ++k) {
-        const std::size_t size = std::min(length, a.size - k * length);
-        std::vector<unsigned char>& block = blocks_[k];
+      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+        const std::size_t k = first + i, size = std::min(length, a.size - k * length);
+        std::vector<unsigned char>& block = blocks_[i];
         block.resize(compressor->GetMaximumCompressionSpace(size));
         block.resize(compressor->Compress(a.data + k * length, size, block.data(), block.size()));
       }
@@ -89,10 +94,12 @@ private:
   }
 
   static constexpr std::size_t kNone = std::size_t(-1);
+  static constexpr std::size_t kRunBlocks = 64;
   std::size_t block_size_ = 0;
   std::vector<ArrayBytes> arrays_;
   std::map<const unsigned char*, std::size_t> by_start_;
-  std::size_t current_ = kNone;  // the array blocks_ holds
+  std::size_t current_ = kNone;  // the array blocks_ belongs to
+  std::size_t first_ = 0;        // the block of that array blocks_ starts with
   std::vector<std::vector<unsigned char>> blocks_;
   BlockCounts* counts_ = nullptr;
 };

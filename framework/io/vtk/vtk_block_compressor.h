@@ -7,9 +7,9 @@
 // block loop and the stream are protected and not virtual. What the API does allow is a
 // compressor of one's own (vtkXMLWriter::SetCompressor). This one is told beforehand where
 // the arrays of the dataset lie in memory. When the writer hands it the first block of one
-// of them, it compresses all of that array's blocks at once, in parallel (TBB), with fresh
-// instances of VTK's own compressor at the same level, and then answers the writer's calls
-// for the following blocks from those results. A block it was not told about (VTK copied
+// of them, it compresses that block and the next ones (64 at a time) at once, in parallel
+// (TBB), with fresh instances of VTK's own compressor at the same level, and then answers
+// the writer's calls for them from those results. A block it was not told about (VTK copied
 // the data first, e.g. to convert it) is compressed on the spot, as VTK would.
 //
 // Each block is compressed on its own by the same code at the same level as VTK's serial

@@ -4,6 +4,8 @@
 #include <utility>
 
 #include <vtkCellArray.h>
+#include <vtkCellType.h>
+#include <vtkCellTypes.h>
 #include <vtkErrorCode.h>
 #include <vtkNew.h>
 #include <vtkOutputStream.h>
@@ -77,6 +79,36 @@ private:
 };
 
 }  // namespace
+
+FastCellTypesPolyData* FastCellTypesPolyData::New() {
+  auto* poly = new FastCellTypesPolyData;
+  poly->InitializeObjectBase();
+  return poly;
+}
+
+void FastCellTypesPolyData::GetCellTypes(vtkCellTypes* types) {
+  types->Reset();
+  // vtkPolyData's cell order (verts, lines, polys, strips) and its type for each cell size.
+  const auto vertex = [](vtkIdType n) { return n == 1 ? VTK_VERTEX : VTK_POLY_VERTEX; };
+  const auto line = [](vtkIdType n) { return n == 2 ? VTK_LINE : VTK_POLY_LINE; };
+  const auto polygon = [](vtkIdType n) { return n == 3 ? VTK_TRIANGLE : n == 4 ? VTK_QUAD : VTK_POLYGON; };
+  const auto strip = [](vtkIdType) { return VTK_TRIANGLE_STRIP; };
+  const auto add = [&](vtkCellArray* cells, auto type_of) {
+    if (!cells) return;
+    vtkIdType last_size = -1;
+    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c) {
+      const vtkIdType size = cells->GetCellSize(c);
+      if (size == last_size) continue;  // most cells: the size of the one before
+      last_size = size;
+      const auto type = static_cast<unsigned char>(size == 0 ? VTK_EMPTY_CELL : type_of(size));
+      if (!types->IsType(type)) types->InsertNextType(type);
+    }
+  };
+  add(this->GetVerts(), vertex);
+  add(this->GetLines(), line);
+  add(this->GetPolys(), polygon);
+  add(this->GetStrips(), strip);
+}
 
 FastXMLPolyDataWriter* FastXMLPolyDataWriter::New() {
   auto* writer = new FastXMLPolyDataWriter;

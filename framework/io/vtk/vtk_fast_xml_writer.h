@@ -12,9 +12,21 @@
 // It also writes the cells as vtkXMLPolyDataWriter does, but with the value ranges of the
 // connectivity and offsets arrays it makes (ConvertCells) computed in parallel
 // (vtk_array_ranges.h): VTK's own sequential range took seconds on a 16M-face level.
+#include <vtkPolyData.h>
 #include <vtkXMLPolyDataWriter.h>
 
 namespace subdiv::io_detail {
+
+// Polydata whose GetCellTypes reads the cell sizes instead of building the cell map.
+// vtkXMLUnstructuredDataWriter::ProcessRequest asks its input for GetCellTypes, which for
+// vtkPolyData goes through vtkDataSet's cell by cell GetCellType and so builds vtkPolyData's
+// cell map: seconds and hundreds of megabytes on a 16M-face level, for a list of a few types.
+// The types are those vtkPolyData gives, in the same order.
+class FastCellTypesPolyData : public vtkPolyData {
+public:
+  static FastCellTypesPolyData* New();
+  void GetCellTypes(vtkCellTypes* types) override;
+};
 
 class FastXMLPolyDataWriter : public vtkXMLPolyDataWriter {
 public:

@@ -14,10 +14,11 @@ namespace subdiv {
 // How write_vtp, write_pvd and the pieces' .vtp files are written.
 enum class VtkCompressor { None, ZLib, LZ4, LZMA };  // VTK's vtkXMLWriter compressor types
 struct VtkWriteOptions {
-  VtkCompressor compressor = VtkCompressor::ZLib;
-  // 1 (fastest) to 9 (smallest), as vtkXMLWriter::SetCompressionLevel takes it (LZ4 maps it
-  // to its acceleration). zlib's level 1 wrote the 16M-face torus several times faster than
-  // VTK's default 5 for a file a few per cent larger (docs/benchmarks.md).
+  // LZ4 at its fastest wrote the 16M-face torus in a third of zlib's (level 1) time, in a
+  // file 2.6 times as large (docs/benchmarks.md, "End to end").
+  VtkCompressor compressor = VtkCompressor::LZ4;
+  // 1 (fastest) to 9 (smallest), as vtkXMLWriter::SetCompressionLevel takes it (LZ4: its
+  // acceleration is 10 - level).
   int compression_level = 1;
   // The arrays write_vtp adds itself (see write_vtp); each can be left out.
   bool sharpness = true, cell_kind = true, corner_sharpness = true;

@@ -239,7 +239,7 @@ vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level, const VtkWr
   const bool share = memory == LevelMemory::Share;
   const MeshData& mesh = *level.mesh;
   const CellCounts cells = cell_counts(mesh);
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  vtkSmartPointer<vtkPolyData> poly = vtkSmartPointer<FastCellTypesPolyData>::New();
   poly->SetPoints(points(mesh, share));
   poly->SetPolys(cell_array(mesh.face_offsets, mesh.face_vertices, share));
   poly->SetLines(lines(mesh));

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <tbb/global_control.h>
+#include <vtkDataCompressor.h>
 #include <vtkLZ4DataCompressor.h>
 #include <vtkLZMADataCompressor.h>
 #include <vtkNew.h>
@@ -101,5 +102,32 @@ TEST_CASE("write_polydata_file writes VTK's own file, byte for byte, on any numb
       }
     }
   }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("the block compressor in small blocks: many runs of parallel blocks, VTK's bytes") {
+  const fs::path dir = fs::temp_directory_path() / "subdiv_parallel_blocks_test";
+  fs::create_directories(dir);
+  const MeshData mesh = grid(120);  // 14641 points: 343 blocks of 1 KB of coordinates, runs of 64
+  OutputLevel level{&mesh, 0, mesh.point_data, mesh.cell_data};
+  const auto poly = io_detail::make_polydata(level);
+  const auto write = [&](const fs::path& file, vtkDataCompressor* compressor) {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputData(poly);
+    writer->SetFileName(file.c_str());
+    writer->SetDataModeToBinary();
+    writer->SetBlockSize(1024);
+    writer->SetHeaderTypeToUInt64();
+    if (compressor) writer->SetCompressor(compressor);
+    else writer->SetCompressorTypeToZLib(), writer->SetCompressionLevel(3);
+    REQUIRE(writer->Write() == 1);
+  };
+  write(dir / "vtk.vtp", nullptr);
+  io_detail::BlockCounts counts;
+  write(dir / "ours.vtp",
+        io_detail::make_block_compressor(VtkCompressor::ZLib, 3, 1024, io_detail::contiguous_arrays(*poly), &counts));
+  CHECK(file_text(dir / "ours.vtp") == file_text(dir / "vtk.vtp"));
+  CHECK(counts.parallel > 343);
+  CHECK(counts.serial < counts.parallel / 2);  // the offsets, which VTK copies
   fs::remove_all(dir);
 }
