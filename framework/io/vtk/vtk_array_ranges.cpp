@@ -36,11 +36,17 @@ Range range_of(const T* values, std::size_t tuples, int components) {
   return tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, tuples, 1 << 16), Range{},
       [&](const tbb::blocked_range<std::size_t>& r, Range range) {
+        if (components == 1) {  // apart, so that the compiler vectorises it
+          T lo = std::numeric_limits<T>::max(), hi = std::numeric_limits<T>::lowest();
+          for (std::size_t t = r.begin(); t != r.end(); ++t) {
+            lo = values[t] < lo ? values[t] : lo;  // false for NaN: skipped
+            hi = values[t] > hi ? values[t] : hi;
+          }
+          return lo > hi ? range : range.join({double(lo), double(hi)});  // lo > hi: only NaN
+        }
         for (std::size_t t = r.begin(); t != r.end(); ++t) {
           double v = 0;
-          if (components == 1) {
-            v = double(values[t]);
-          } else {
+          {
             for (int c = 0; c < components; ++c) {
               const double x = double(values[t * std::size_t(components) + std::size_t(c)]);
               v += x * x;

@@ -78,7 +78,9 @@ private:
   void compress_run(const ArrayBytes& a, std::size_t first) {
     const std::size_t length = block_bytes(a.word), count = (a.size + length - 1) / length;
     first_ = first;
-    blocks_.assign(std::min(kRunBlocks, count - first), {});
+    // The buffers are kept from run to run: fresh ones would be fresh pages, each first
+    // touched (and zeroed by the kernel) again.
+    blocks_.resize(std::min(kRunBlocks, count - first));
     const int level = this->GetCompressionLevel();
     const tbb::blocked_range<std::size_t> all(0, blocks_.size());
     tbb::parallel_for(all, [&](const tbb::blocked_range<std::size_t>& r) {
