@@ -176,7 +176,10 @@ std::vector<OutputLevel> describe_levels(const Hierarchy& h, std::vector<LevelDa
   std::vector<double> base_face;  // of level l, while asked for
   for (int l = 0; l < levels; ++l) {
     if (arrays.has("base_face")) base_face = base_faces_of(h, l, base_face);
-    if (l < first) continue;
+    if (l < first) {
+      data[l] = {};  // not written: its memory back before the finest level's output is made
+      continue;
+    }
     meshes.push_back(level_mesh(h.levels[l], std::move(data[l])));
     MeshData& mesh = meshes.back();
     if (l + 1 == levels)
