@@ -23,19 +23,22 @@ namespace subdiv::cli {
 // obj_tags: the options written back as OpenSubdiv's tags into .obj output. Hole faces
 // (Level::face_hole) are left out of every output, as OpenSubdiv leaves them out.
 // `choice`: which of SubdivKit's arrays .vtp/.pvd hold and how they are compressed
-// (output_options.h). `data` is used up: its values move into the output.
-void write_levels(const std::filesystem::path& out, const Hierarchy& h, std::vector<LevelData> data,
+// (output_options.h). `h` and `data` are used up: the written levels' faces and values move
+// into the output instead of being copied.
+void write_levels(const std::filesystem::path& out, Hierarchy&& h, std::vector<LevelData> data,
                   const FeatureOptions& features, const std::vector<DataArray>& finest_point_data = {},
                   const MeshOptions& obj_tags = {}, const OutputChoice& choice = {});
 
 // What write_levels writes to .vtp/.pvd, without a file: levels `first` to the finest with
 // the user's arrays and SubdivKit's that `arrays` asks for (as write_levels says), split at
 // face-varying seams. The OutputLevels point into `meshes`, which must outlive them. The
-// ParaView plugin (plugins/paraview) shows these.
+// ParaView plugin (plugins/paraview) shows these. `consumed`, if given, is `h`, which may
+// then give the written levels' faces to `meshes` (h is of no use afterwards).
 std::vector<OutputLevel> describe_levels(const Hierarchy& h, std::vector<LevelData> data,
                                          const FeatureOptions& features,
                                          const std::vector<DataArray>& finest_point_data, std::vector<MeshData>& meshes,
-                                         const ArraySelection& arrays = ArraySelection::all(), int first = 0);
+                                         const ArraySelection& arrays = ArraySelection::all(), int first = 0,
+                                         Hierarchy* consumed = nullptr);
 
 // One piece of a refinement in pieces (engine/mesh_pieces.h), as write_levels writes a .vtp:
 // the finest level of the piece's hierarchy `h` with only the faces `piece` owns

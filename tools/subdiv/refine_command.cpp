@@ -347,14 +347,14 @@ void run(const RefineArgs& a) {
     limit_data = apply_limits(a, seq, h, options, levels.back());
   }
   progress.say(fmt::format("writing {}", a.output));
-  write_levels(a.output, h, std::move(levels), options.features, limit_data, tags_to_write(a, options, mesh, seq),
-               output);
+  const Index fine_vertices = h.levels.back().vertex_count, fine_faces = h.levels.back().face_count();
+  write_levels(a.output, std::move(h), std::move(levels), options.features, limit_data,
+               tags_to_write(a, options, mesh, seq), output);
   progress.done();
   if (!a.quiet) {
     for (const auto& note : notes) fmt::print("{}\n", note);
-    const Level& fine = h.levels.back();
     fmt::print("{}: {} level(s) of {} -> {} vertices, {} faces in {:.3f} s -> {}\n", a.mesh, seq.total_levels,
-               a.scheme, fine.vertex_count, fine.face_count(), seconds_since(t0), a.output);
+               a.scheme, fine_vertices, fine_faces, seconds_since(t0), a.output);
   }
 }
 
