@@ -103,7 +103,6 @@ vtkSmartPointer<Array> new_array(const std::string& name, int components, std::s
   return array;
 }
 
-// `values` is already in VTK's cell or point order.
 // `values` as a VTK array of the same type: their own memory, handed over without a copy
 // (`share`, see make_polydata), or a copy.
 template <typename Array, typename T>
@@ -118,6 +117,7 @@ vtkSmartPointer<Array> wrap(const std::vector<T>& values, bool share) {
   return array;
 }
 
+// `values` is already in VTK's cell or point order.
 vtkSmartPointer<vtkDataArray> to_vtk(const DataArray& a, const std::vector<double>& values, bool share) {
   const std::size_t tuples = values.size() / a.components;
   // Integer colours within 0..255 as bytes, as PLY stores them: ParaView shows byte scalars
