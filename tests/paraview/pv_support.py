@@ -52,9 +52,9 @@ def read_vtp(path):
 
 
 def cli_refine(input_path, name, *options):
-    """`subdiv refine INPUT OPTIONS -o NAME.vtp`, read back."""
+    """`subdiv refine INPUT OPTIONS -o NAME.vtp` with every array the plugin shows, read back."""
     out = os.path.join(WORK, name + ".vtp")
-    cli("refine", input_path, "-q", "-o", out, *options)
+    cli("refine", input_path, "-q", "--arrays", "all", "-o", out, *options)
     return read_vtp(out)
 
 

@@ -94,7 +94,7 @@ refine.UpdatePipeline()
 blocks = pv.fetch(refine)
 assert blocks.IsA("vtkMultiBlockDataSet") and blocks.GetNumberOfBlocks() == 4, blocks.GetClassName()
 pvd = os.path.join(pv.WORK, "cube-levels.pvd")
-pv.cli("refine", inputs["cube"][1], "-q", "-s", "catmull-clark", "-l", 3, "-o", pvd)
+pv.cli("refine", inputs["cube"][1], "-q", "-s", "catmull-clark", "-l", 3, "--arrays", "all", "-o", pvd)
 for k in range(4):
     pv.assert_same_polydata(blocks.GetBlock(k), pv.read_vtp(os.path.join(pv.WORK, "cube-levels_levels", f"level_{k}.vtp")),
                             f"multiblock level {k}")

@@ -9,6 +9,7 @@
 #include "framework/util/atomic_file.h"
 #include "framework/engine/refiner.h"
 #include "framework/primvar/level_data.h"
+#include "output_options.h"
 
 namespace subdiv::cli {
 
@@ -21,17 +22,23 @@ namespace subdiv::cli {
 // finest_point_data is added to the finest level's point data (e.g. limit normals).
 // obj_tags: the options written back as OpenSubdiv's tags into .obj output. Hole faces
 // (Level::face_hole) are left out of every output, as OpenSubdiv leaves them out.
-void write_levels(const std::filesystem::path& out, const Hierarchy& h, const std::vector<LevelData>& data,
+// `choice`: which of SubdivKit's arrays .vtp/.pvd hold and how they are compressed
+// (output_options.h). `h` and `data` are used up: the written levels' faces and values move
+// into the output instead of being copied.
+void write_levels(const std::filesystem::path& out, Hierarchy&& h, std::vector<LevelData> data,
                   const FeatureOptions& features, const std::vector<DataArray>& finest_point_data = {},
-                  const MeshOptions& obj_tags = {});
+                  const MeshOptions& obj_tags = {}, const OutputChoice& choice = {});
 
-// What write_levels writes to .vtp/.pvd, without a file: every level with the user's arrays
-// and SubdivKit's (as write_levels says), split at face-varying seams. The OutputLevels point
-// into `meshes`, which must outlive them. The ParaView plugin (plugins/paraview) shows these.
-std::vector<OutputLevel> describe_levels(const Hierarchy& h, const std::vector<LevelData>& data,
+// What write_levels writes to .vtp/.pvd, without a file: levels `first` to the finest with
+// the user's arrays and SubdivKit's that `arrays` asks for (as write_levels says), split at
+// face-varying seams. The OutputLevels point into `meshes`, which must outlive them. The
+// ParaView plugin (plugins/paraview) shows these. `consumed`, if given, is `h`, which may
+// then give the written levels' faces to `meshes` (h is of no use afterwards).
+std::vector<OutputLevel> describe_levels(const Hierarchy& h, std::vector<LevelData> data,
                                          const FeatureOptions& features,
-                                         const std::vector<DataArray>& finest_point_data,
-                                         std::vector<MeshData>& meshes);
+                                         const std::vector<DataArray>& finest_point_data, std::vector<MeshData>& meshes,
+                                         const ArraySelection& arrays = ArraySelection::all(), int first = 0,
+                                         Hierarchy* consumed = nullptr);
 
 // One piece of a refinement in pieces (engine/mesh_pieces.h), as write_levels writes a .vtp:
 // the finest level of the piece's hierarchy `h` with only the faces `piece` owns
@@ -39,8 +46,8 @@ std::vector<OutputLevel> describe_levels(const Hierarchy& h, const std::vector<L
 // in their first slot, so that no crease is written twice. "base_face" numbers the whole
 // mesh's faces (base_faces: per face of the piece's base level). Staged in `staged`.
 void write_piece(StagedFiles& staged, const std::filesystem::path& target, const Hierarchy& h,
-                 const std::vector<LevelData>& data, const FeatureOptions& features,
-                 const std::vector<Index>& base_faces, const std::vector<int>& finest_owner, int piece);
+                 std::vector<LevelData> data, const FeatureOptions& features, const std::vector<Index>& base_faces,
+                 const std::vector<int>& finest_owner, int piece, const OutputChoice& choice = {});
 
 // The output extensions write_levels accepts, for help texts and early checks.
 void check_output_path(const std::filesystem::path& out);

@@ -52,9 +52,10 @@ PieceCounts refine_piece(const PieceJob& job, const SchemeSequence& seq, const M
                                    piece, rings, cut.level.face_count()));
   const RefineOptions o = piece_options(options, cut);
   const Hierarchy h = refine_topology(seq.runs, cut.level, o);
-  const std::vector<LevelData> levels = refine_data(h, piece_data(mesh, cut), o);
+  std::vector<LevelData> levels = refine_data(h, piece_data(mesh, cut), o);
   const std::vector<int> finest_owner = finest_face_owners(h, cut.face_owner);
-  write_piece(staged, piece_file(job.output, piece), h, levels, o.features, cut.base_face, finest_owner, piece);
+  write_piece(staged, piece_file(job.output, piece), h, std::move(levels), o.features, cut.base_face, finest_owner,
+              piece, job.format);
   PieceCounts counts;
   const Level& fine = h.levels.back();
   for (Index f = 0; f < fine.face_count(); ++f) counts.faces += finest_owner[f] == piece && !fine.is_hole(f);

@@ -13,6 +13,7 @@
 #include "framework/io/mesh_data.h"
 #include "framework/primvar/level_data.h"
 #include "framework/scheme/scheme_sequence.h"
+#include "output_options.h"
 
 namespace subdiv::cli {
 
@@ -20,6 +21,7 @@ struct PieceJob {
   std::filesystem::path output;  // the .pvtp
   int pieces = 0;                // 0: as many as --max-memory needs
   double max_memory = 0;         // bytes per piece, 0: what the machine has
+  OutputChoice format;           // the pieces' arrays and compression (refine --arrays, --compression)
 };
 
 // A piece's mesh data refined through its hierarchy, level by level (refine_command.cpp).

@@ -1,4 +1,5 @@
 // `subdiv refine MESH --scheme S --levels L -o OUT`: the main job.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
@@ -24,6 +25,7 @@
 #include "level_output.h"
 #include "limit_output.h"
 #include "memory_guard.h"
+#include "output_options.h"
 #include "progress.h"
 #include "curve_refine.h"
 #include "piece_refine.h"
@@ -52,6 +54,8 @@ struct RefineArgs {
   int pieces = 0;                 // --pieces N; 0: not given
   std::string max_memory;         // --max-memory SIZE; empty: not given
   bool pieces_given = false;
+  OutputArgs output_format;  // --arrays, --compression, --compression-level
+  bool timings = false;      // --timings
   bool in_pieces() const { return pieces_given || !max_memory.empty(); }
 };
 
@@ -201,6 +205,27 @@ std::vector<DataArray> apply_limits(const RefineArgs& a, const SchemeSequence& s
   return std::move(limits.point_data);
 }
 
+// Whether the last level can be built with its faces only (RefineOptions::faces_only_last_level),
+// as OpenSubdiv builds it by default, for the same output: nothing written reads its edges
+// or vertex rings. Those are read by the valence and vertex_class arrays, --limit and
+// --normals, face-varying data, and the creases and corners written from the level's
+// sharpness tags, which live on its edges and vertices; so a base mesh with any tag,
+// boundary (boundary corners are tagged), hole or non-manifold edge keeps full topology.
+bool last_level_faces_suffice(const RefineArgs& a, const ArraySelection& arrays, const MeshData& mesh,
+                              const Level& base) {
+  const std::string ext = lowercase_extension(a.output);
+  const bool paraview = ext == ".vtp" || ext == ".pvd";
+  if ((paraview && arrays.needs_last_level_edges()) || a.limit || a.normals || !mesh.face_varying.empty())
+    return false;
+  const auto tagged = [](const std::vector<float>& sharpness) {
+    return std::any_of(sharpness.begin(), sharpness.end(), [](float s) { return s > 0.f; });
+  };
+  const bool boundary = std::any_of(base.vertex_on_boundary.begin(), base.vertex_on_boundary.end(),
+                                    [](std::uint8_t b) { return b != 0; });
+  return !tagged(base.edge_sharpness) && !tagged(base.vertex_sharpness) && !boundary && base.manifold() &&
+         base.face_hole.empty();
+}
+
 // --pieces and --max-memory write a .pvtp, and only a .pvtp comes from them; what a piece
 // cannot do yet is refused before any work.
 void check_piece_options(const RefineArgs& a) {
@@ -225,7 +250,8 @@ void check_piece_options(const RefineArgs& a) {
 // --pieces N or --max-memory SIZE: see piece_refine.h.
 void run_in_pieces(const RefineArgs& a, const SchemeSequence& seq, const MeshData& mesh, const Level& base,
                    const RefineOptions& options, std::chrono::steady_clock::time_point t0) {
-  PieceJob job{a.output, a.pieces, a.max_memory.empty() ? 0.0 : parse_memory_size(a.max_memory, "--max-memory")};
+  PieceJob job{a.output, a.pieces, a.max_memory.empty() ? 0.0 : parse_memory_size(a.max_memory, "--max-memory"),
+               output_choice(a.output_format)};
   if (a.pieces_given && a.pieces < 1)
     throw Error(fmt::format("--pieces {}: a refinement needs at least one piece; ask for 1 to {} pieces", a.pieces,
                             base.face_count()));
@@ -234,7 +260,7 @@ void run_in_pieces(const RefineArgs& a, const SchemeSequence& seq, const MeshDat
                             base.face_count(), base.face_count()));
   std::vector<std::string> notes;
   bool first = true;
-  Progress progress;
+  Progress progress(a.timings);
   const RefinePieceData refine = [&](const Hierarchy& h, const MeshData& piece, const RefineOptions& o) {
     std::vector<std::string> piece_notes;  // every piece would say the same: the first one's
     auto levels = refine_data(a, seq, h, piece, o, progress, piece_notes);
@@ -261,6 +287,7 @@ void run(const RefineArgs& a) {
     return refine_curves_command({a.mesh, a.scheme, a.output, a.levels, parse_params(a.params), a.threads, a.quiet});
   check_piece_options(a);
   if (!a.in_pieces()) check_output_path(a.output);
+  const OutputChoice output = output_choice(a.output_format);  // a bad --arrays is refused before any work
   // CLI11's range check lets NaN through (every comparison with it is false).
   if (std::isnan(a.feature_angle))
     throw Error("--feature-angle nan is not an angle; give degrees from 0 to 180");
@@ -272,6 +299,8 @@ void run(const RefineArgs& a) {
     throw Error(fmt::format("--scheme '{}' runs {} level(s), but --levels asks for {}; make the counts add up to {}, "
                             "leave one scheme without :N to take the rest, or drop --levels",
                             a.scheme, given.total_levels, a.levels, a.levels));
+  Progress progress(a.timings);
+  progress.say(fmt::format("reading {}", a.mesh));
   MeshCleanup cleanup;
   const MeshData mesh = drop_unrefinable(read_mesh(a.mesh), cleanup);
   for (const auto& w : mesh.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
@@ -302,9 +331,13 @@ void run(const RefineArgs& a) {
                             "dropped (see the warning) and the rest renumbered; remove them from the mesh first",
                             a.mesh));
   options.vertex_parameters = read_vertex_params(a.vertex_params, base.vertex_count);
-  if (a.in_pieces()) return run_in_pieces(a, seq, mesh, base, options, t0);
-  Progress progress;
-  progress.say(fmt::format("refining topology: {} levels of {}", seq.total_levels, a.scheme));
+  if (a.in_pieces()) {
+    progress.done();
+    return run_in_pieces(a, seq, mesh, base, options, t0);
+  }
+  options.faces_only_last_level = last_level_faces_suffice(a, output.arrays, mesh, base);
+  progress.say(fmt::format("refining topology: {} levels of {}{}", seq.total_levels, a.scheme,
+                           options.faces_only_last_level ? " (last level: faces only)" : ""));
   Hierarchy h = refine_topology(seq.runs, std::move(base), options);
   for (const auto& w : h.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
   std::vector<LevelData> levels = refine_data(a, seq, h, mesh, options, progress, notes);
@@ -314,13 +347,14 @@ void run(const RefineArgs& a) {
     limit_data = apply_limits(a, seq, h, options, levels.back());
   }
   progress.say(fmt::format("writing {}", a.output));
-  write_levels(a.output, h, levels, options.features, limit_data, tags_to_write(a, options, mesh, seq));
+  const Index fine_vertices = h.levels.back().vertex_count, fine_faces = h.levels.back().face_count();
+  write_levels(a.output, std::move(h), std::move(levels), options.features, limit_data,
+               tags_to_write(a, options, mesh, seq), output);
   progress.done();
   if (!a.quiet) {
     for (const auto& note : notes) fmt::print("{}\n", note);
-    const Level& fine = h.levels.back();
     fmt::print("{}: {} level(s) of {} -> {} vertices, {} faces in {:.3f} s -> {}\n", a.mesh, seq.total_levels,
-               a.scheme, fine.vertex_count, fine.face_count(), seconds_since(t0), a.output);
+               a.scheme, fine_vertices, fine_faces, seconds_since(t0), a.output);
   }
 }
 
@@ -384,6 +418,10 @@ void add_refine_command(CLI::App& app) {
       ->check(CLI::IsMember({"none", "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"}))
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
+  add_output_options(cmd, args->output_format);
+  cmd->add_flag("--timings", args->timings,
+                "Print each step's wall time and the peak memory so far on stderr (reading, topology, each "
+                "level's values, writing)");
   cmd->footer("Example: subdiv refine examples/meshes/cube.obj --scheme catmull-clark --levels 3 -o cube.pvd");
   cmd->add_flag("--smooth-triangles", args->smooth_triangles,
                 "Catmull-Clark: OpenSubdiv's smooth triangles (TRI_SUB_SMOOTH), the same as --param "

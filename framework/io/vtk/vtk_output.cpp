@@ -74,15 +74,15 @@ bool make_directory(const fs::path& dir, std::string_view context) {
 
 }  // namespace
 
-void write_vtp(const fs::path& file, const OutputLevel& level) {
+void write_vtp(const fs::path& file, const OutputLevel& level, const VtkWriteOptions& options) {
   io_detail::check_output_level(level, fmt::format("cannot write '{}'", file.string()));
-  const auto poly = io_detail::make_polydata(level);
+  const auto poly = io_detail::make_polydata(level, options, io_detail::LevelMemory::Share);
   write_file_atomically(file, [&](const fs::path& tmp) {
-    io_detail::write_polydata_file(*poly, tmp, file);
+    io_detail::write_polydata_file(*poly, tmp, file, options);
   });
 }
 
-void write_pvd(const fs::path& pvd, std::span<const OutputLevel> levels) {
+void write_pvd(const fs::path& pvd, std::span<const OutputLevel> levels, const VtkWriteOptions& options) {
   const std::string context = fmt::format("cannot write '{}'", pvd.string());
   check_levels(levels, context);
   const fs::path parent = pvd.parent_path().empty() ? fs::path(".") : pvd.parent_path();
@@ -99,7 +99,8 @@ void write_pvd(const fs::path& pvd, std::span<const OutputLevel> levels) {
     for (const OutputLevel& level : levels) {
       const std::string name = fmt::format("level_{}.vtp", level.level);
       const fs::path target = dir / name;
-      io_detail::write_polydata_file(*io_detail::make_polydata(level), staged.stage(target), target);
+      const auto poly = io_detail::make_polydata(level, options, io_detail::LevelMemory::Share);
+      io_detail::write_polydata_file(*poly, staged.stage(target), target, options);
       entries.push_back({level.level, folder + "/" + name});
     }
     write_collection(staged.stage(pvd), pvd, entries);

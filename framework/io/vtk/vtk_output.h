@@ -11,6 +11,19 @@
 
 namespace subdiv {
 
+// How write_vtp, write_pvd and the pieces' .vtp files are written.
+enum class VtkCompressor { None, ZLib, LZ4, LZMA };  // VTK's vtkXMLWriter compressor types
+struct VtkWriteOptions {
+  // LZ4 at its fastest wrote the 16M-face torus in a third of zlib's (level 1) time, in a
+  // file 2.6 times as large (docs/benchmarks.md, "End to end").
+  VtkCompressor compressor = VtkCompressor::LZ4;
+  // 1 (fastest) to 9 (smallest), as vtkXMLWriter::SetCompressionLevel takes it (LZ4: its
+  // acceleration is 10 - level).
+  int compression_level = 1;
+  // The arrays write_vtp adds itself (see write_vtp); each can be left out.
+  bool sharpness = true, cell_kind = true, corner_sharpness = true;
+};
+
 // One level to write. point_data has one tuple per vertex. cell_data has either one tuple
 // per face, and line cells get -1 in every component, or one tuple per cell in the order
 // faces, polylines, crease edges.
@@ -21,17 +34,20 @@ struct OutputLevel {
   std::vector<DataArray> cell_data;
 };
 
-// Writes faces as polygons, polylines and crease edges as line cells, in binary appended
-// zlib-compressed VTK XML. Added arrays: cell "sharpness" (a crease's sharpness, 0 on
-// other cells), cell "cell_kind" (0 face, 1 polyline, 2 crease edge), point
-// "corner_sharpness" (0 where untagged), field "level" and "TimeValue" (the level).
+// Writes faces as polygons, polylines and crease edges as line cells, in inline binary VTK
+// XML, compressed as `options` say; the blocks of each array are compressed on every core
+// TBB may use, and the file is the same for any thread count (vtk_block_compressor.h).
+// Added arrays (each can be left out, see VtkWriteOptions): cell "sharpness" (a crease's
+// sharpness, 0 on other cells), cell "cell_kind" (0 face, 1 polyline, 2 crease edge), point
+// "corner_sharpness" (0 where untagged); always field "level" and "TimeValue" (the level).
 // Throws subdiv::Error, before creating any file, for an invalid mesh, arrays of the wrong
 // length, duplicate or reserved array names; atomic like write_mesh.
-void write_vtp(const std::filesystem::path& file, const OutputLevel& level);
+void write_vtp(const std::filesystem::path& file, const OutputLevel& level, const VtkWriteOptions& options = {});
 
 // Writes <dir>/<stem>_levels/level_<k>.vtp for every level k and then <dir>/<stem>.pvd
 // listing them with timestep k. All level files are complete before the .pvd appears; if
 // anything fails, no new file is left behind. Level numbers must be distinct.
-void write_pvd(const std::filesystem::path& pvd, std::span<const OutputLevel> levels);
+void write_pvd(const std::filesystem::path& pvd, std::span<const OutputLevel> levels,
+               const VtkWriteOptions& options = {});
 
 }  // namespace subdiv

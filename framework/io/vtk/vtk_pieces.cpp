@@ -67,9 +67,11 @@ void make_piece_folder(const fs::path& pvtp) {
                             pvtp.string(), dir.string(), ec ? ec.message() : "a file of that name exists"));
 }
 
-void write_piece_vtp(StagedFiles& staged, const fs::path& target, const OutputLevel& level) {
+void write_piece_vtp(StagedFiles& staged, const fs::path& target, const OutputLevel& level,
+                     const VtkWriteOptions& options) {
   io_detail::check_output_level(level, fmt::format("cannot write '{}'", target.string()));
-  io_detail::write_polydata_file(*io_detail::make_polydata(level), staged.stage(target), target);
+  const auto poly = io_detail::make_polydata(level, options, io_detail::LevelMemory::Share);
+  io_detail::write_polydata_file(*poly, staged.stage(target), target, options);
 }
 
 void write_pvtp(const fs::path& pvtp, int pieces) {

@@ -21,7 +21,8 @@ void make_piece_folder(const std::filesystem::path& pvtp);
 
 // Writes one piece like write_vtp, under a temporary name staged in `staged`: it appears
 // under its own name only when the caller commits, so that a failed run leaves no piece.
-void write_piece_vtp(StagedFiles& staged, const std::filesystem::path& target, const OutputLevel& level);
+void write_piece_vtp(StagedFiles& staged, const std::filesystem::path& target, const OutputLevel& level,
+                     const VtkWriteOptions& options = {});
 
 // Writes the .pvtp (atomically) listing `pieces` pieces, its array declarations read from
 // piece 0's file, which must exist: every piece of a refinement carries the same arrays.

@@ -12,24 +12,33 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCommand.h>
+#include <vtkDataCompressor.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
-#include <vtkIdTypeArray.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkTypeInt32Array.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include "framework/io/mesh_validate.h"
+#include "framework/io/vtk/vtk_array_ranges.h"
+#include "framework/io/vtk/vtk_block_compressor.h"
+#include "framework/io/vtk/vtk_fast_xml_writer.h"
 #include "framework/util/error.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
 
 namespace {
+
+// Bytes per compressed block. VTK's default, 32 KB, costs a compressor set-up and a flush of
+// the stream per block (vtkXMLWriter::WriteCompressionBlock); larger blocks wrote the
+// 16M-face torus faster and no larger (docs/benchmarks.md). Readers take the size from the file.
+constexpr int kBlockSize = 1 << 20;
 
 // Arrays write_vtp adds itself; user arrays may not take these names.
 const std::set<std::string> kReservedCellArrays = {"sharpness", "cell_kind"};
@@ -94,8 +103,22 @@ vtkSmartPointer<Array> new_array(const std::string& name, int components, std::s
   return array;
 }
 
+// `values` as a VTK array of the same type: their own memory, handed over without a copy
+// (`share`, see make_polydata), or a copy.
+template <typename Array, typename T>
+vtkSmartPointer<Array> wrap(const std::vector<T>& values, bool share) {
+  auto array = vtkSmartPointer<Array>::New();
+  if (share) {
+    array->SetArray(const_cast<T*>(values.data()), vtkIdType(values.size()), 1);  // 1: VTK does not free it
+  } else {
+    array->SetNumberOfValues(vtkIdType(values.size()));
+    std::copy(values.begin(), values.end(), array->GetPointer(0));
+  }
+  return array;
+}
+
 // `values` is already in VTK's cell or point order.
-vtkSmartPointer<vtkDataArray> to_vtk(const DataArray& a, const std::vector<double>& values) {
+vtkSmartPointer<vtkDataArray> to_vtk(const DataArray& a, const std::vector<double>& values, bool share) {
   const std::size_t tuples = values.size() / a.components;
   // Integer colours within 0..255 as bytes, as PLY stores them: ParaView shows byte scalars
   // as colours directly, and the reader (vtk_read.cpp role_of) knows them for colours again.
@@ -111,8 +134,9 @@ vtkSmartPointer<vtkDataArray> to_vtk(const DataArray& a, const std::vector<doubl
     for (std::size_t i = 0; i < values.size(); ++i) array->SetValue(vtkIdType(i), int(values[i]));
     return array;
   }
-  auto array = new_array<vtkDoubleArray>(a.name, a.components, tuples);
-  std::copy(values.begin(), values.end(), array->GetPointer(0));
+  auto array = wrap<vtkDoubleArray>(values, share);
+  array->SetName(a.name.c_str());
+  array->SetNumberOfComponents(a.components);
   return array;
 }
 
@@ -130,57 +154,63 @@ std::vector<double> cell_order(const DataArray& a, const CellCounts& cells) {
   return out;
 }
 
-vtkSmartPointer<vtkIdTypeArray> id_array(const std::vector<vtkIdType>& ids) {
-  auto array = vtkSmartPointer<vtkIdTypeArray>::New();
-  array->SetNumberOfValues(vtkIdType(ids.size()));
-  std::copy(ids.begin(), ids.end(), array->GetPointer(0));
-  return array;
-}
-
-vtkSmartPointer<vtkCellArray> cell_array(const std::vector<vtkIdType>& offsets,
-                                         const std::vector<vtkIdType>& connectivity) {
+// The mesh's indices as they are (32 bits), which vtkCellArray stores and the writer
+// writes as they are (connectivity and offsets as Int32 in the file): no 64-bit copy.
+vtkSmartPointer<vtkCellArray> cell_array(const std::vector<Index>& offsets, const std::vector<Index>& connectivity,
+                                         bool share) {
+  static_assert(sizeof(Index) == sizeof(vtkTypeInt32));
   auto cells = vtkSmartPointer<vtkCellArray>::New();
-  cells->SetData(id_array(offsets), id_array(connectivity));
+  if (offsets.empty()) return cells;  // no cells (VTK wants the leading 0 otherwise)
+  cells->SetData(wrap<vtkTypeInt32Array>(offsets, share), wrap<vtkTypeInt32Array>(connectivity, share));
   return cells;
 }
 
-vtkSmartPointer<vtkPoints> points(const MeshData& mesh) {
-  auto coords = new_array<vtkDoubleArray>("Points", 3, std::size_t(mesh.vertex_count()));
-  std::copy(mesh.positions.begin(), mesh.positions.end(), coords->GetPointer(0));
+vtkSmartPointer<vtkPoints> points(const MeshData& mesh, bool share) {
+  auto coords = wrap<vtkDoubleArray>(mesh.positions, share);
+  coords->SetName("Points");
+  coords->SetNumberOfComponents(3);
   auto pts = vtkSmartPointer<vtkPoints>::New();
   pts->SetData(coords);
   return pts;
 }
 
-// Polylines, then one two-point line per crease edge.
+// Polylines, then one two-point line per crease edge: a few cells, made and owned by VTK.
 vtkSmartPointer<vtkCellArray> lines(const MeshData& mesh) {
-  std::vector<vtkIdType> offsets(mesh.line_offsets.begin(), mesh.line_offsets.end());
-  std::vector<vtkIdType> connectivity(mesh.line_vertices.begin(), mesh.line_vertices.end());
-  for (const CreaseTag& c : mesh.creases) {
-    connectivity.insert(connectivity.end(), {c.v0, c.v1});
-    offsets.push_back(vtkIdType(connectivity.size()));
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  for (Index l = 0; l < mesh.line_count(); ++l) {
+    cells->InsertNextCell(mesh.line_offsets[l + 1] - mesh.line_offsets[l]);
+    for (Index i = mesh.line_offsets[l]; i < mesh.line_offsets[l + 1]; ++i)
+      cells->InsertCellPoint(mesh.line_vertices[i]);
   }
-  return cell_array(offsets, connectivity);
+  for (const CreaseTag& c : mesh.creases) {
+    const vtkIdType ends[2] = {c.v0, c.v1};
+    cells->InsertNextCell(2, ends);
+  }
+  return cells;
 }
 
-void add_feature_arrays(vtkPolyData& poly, const MeshData& mesh, const CellCounts& cells) {
-  auto sharpness = new_array<vtkDoubleArray>("sharpness", 1, cells.total());
-  auto kind = new_array<vtkIntArray>("cell_kind", 1, cells.total());
-  sharpness->FillValue(0.0);
-  kind->FillValue(0);  // faces, which come after the line cells
-  for (std::size_t i = 0; i < cells.polylines; ++i) kind->SetValue(vtkIdType(i), 1);
-  for (std::size_t i = 0; i < cells.creases; ++i) {
-    const vtkIdType cell = vtkIdType(cells.polylines + i);
-    kind->SetValue(cell, 2);
-    sharpness->SetValue(cell, mesh.creases[i].sharpness);
+void add_feature_arrays(vtkPolyData& poly, const MeshData& mesh, const CellCounts& cells,
+                        const VtkWriteOptions& options) {
+  if (options.sharpness) {
+    auto sharpness = new_array<vtkDoubleArray>("sharpness", 1, cells.total());
+    sharpness->FillValue(0.0);
+    for (std::size_t i = 0; i < cells.creases; ++i)
+      sharpness->SetValue(vtkIdType(cells.polylines + i), mesh.creases[i].sharpness);
+    poly.GetCellData()->AddArray(sharpness);
   }
-  poly.GetCellData()->AddArray(sharpness);
-  poly.GetCellData()->AddArray(kind);
-
-  auto corners = new_array<vtkDoubleArray>("corner_sharpness", 1, std::size_t(mesh.vertex_count()));
-  corners->FillValue(0.0);
-  for (const CornerTag& c : mesh.corners) corners->SetValue(c.v, c.sharpness);
-  poly.GetPointData()->AddArray(corners);
+  if (options.cell_kind) {
+    auto kind = new_array<vtkIntArray>("cell_kind", 1, cells.total());
+    kind->FillValue(0);  // faces, which come after the line cells
+    for (std::size_t i = 0; i < cells.polylines; ++i) kind->SetValue(vtkIdType(i), 1);
+    for (std::size_t i = 0; i < cells.creases; ++i) kind->SetValue(vtkIdType(cells.polylines + i), 2);
+    poly.GetCellData()->AddArray(kind);
+  }
+  if (options.corner_sharpness) {
+    auto corners = new_array<vtkDoubleArray>("corner_sharpness", 1, std::size_t(mesh.vertex_count()));
+    corners->FillValue(0.0);
+    for (const CornerTag& c : mesh.corners) corners->SetValue(c.v, c.sharpness);
+    poly.GetPointData()->AddArray(corners);
+  }
 }
 
 // ParaView reads "TimeValue" as the time of a single file; "level" says it plainly.
@@ -204,17 +234,18 @@ void check_output_level(const OutputLevel& level, std::string_view context) {
   check_arrays(level.cell_data, kReservedCellArrays, "face", cells.faces, cells.total(), context);
 }
 
-vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level) {
+vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level, const VtkWriteOptions& options,
+                                           LevelMemory memory) {
+  const bool share = memory == LevelMemory::Share;
   const MeshData& mesh = *level.mesh;
   const CellCounts cells = cell_counts(mesh);
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(points(mesh));
-  poly->SetPolys(cell_array({mesh.face_offsets.begin(), mesh.face_offsets.end()},
-                            {mesh.face_vertices.begin(), mesh.face_vertices.end()}));
+  vtkSmartPointer<vtkPolyData> poly = vtkSmartPointer<FastCellTypesPolyData>::New();
+  poly->SetPoints(points(mesh, share));
+  poly->SetPolys(cell_array(mesh.face_offsets, mesh.face_vertices, share));
   poly->SetLines(lines(mesh));
   vtkPointData& point_data = *poly->GetPointData();
   for (const DataArray& a : level.point_data) {
-    const auto array = to_vtk(a, a.values);
+    const auto array = to_vtk(a, a.values, share);
     point_data.AddArray(array);
     // Active attributes, so that ParaView shades with the normals and textures with the UVs.
     // Only the first array of each role: setting another would drop the first from the
@@ -224,14 +255,17 @@ vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level) {
       point_data.SetTCoords(array);
     if (a.role == ArrayRole::Color && !point_data.GetScalars()) point_data.SetScalars(array);
   }
-  for (const DataArray& a : level.cell_data)
-    poly->GetCellData()->AddArray(to_vtk(a, cell_order(a, cells)));
-  add_feature_arrays(*poly, mesh, cells);
+  for (const DataArray& a : level.cell_data)  // already in VTK's order without line cells
+    poly->GetCellData()->AddArray(cells.lines() == 0 ? to_vtk(a, a.values, share)
+                                                     : to_vtk(a, cell_order(a, cells), false));  // a temporary
+  add_feature_arrays(*poly, mesh, cells, options);
   add_level_fields(*poly, level.level);
+  cache_array_ranges(*poly);
   return poly;
 }
 
-void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path& shown) {
+void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path& shown,
+                         const VtkWriteOptions& options, BlockCounts* counts) {
   std::string errors;
   vtkNew<vtkCallbackCommand> observer;
   observer->SetClientData(&errors);
@@ -239,7 +273,7 @@ void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path
     auto& errors = *static_cast<std::string*>(text);
     if (errors.empty() && message) errors = static_cast<const char*>(message);
   });
-  vtkNew<vtkXMLPolyDataWriter> writer;
+  vtkNew<FastXMLPolyDataWriter> writer;
   writer->AddObserver(vtkCommand::ErrorEvent, observer);
   writer->SetInputData(&poly);
   writer->SetFileName(file.c_str());
@@ -247,10 +281,9 @@ void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path
   // well-formed XML, which every ParaView reads, including Debian 12's ParaView 5.11 whose
   // VTK fails on appended data with the system's Expat (see expat_reparse_fix.cpp).
   writer->SetDataModeToBinary();
-  writer->SetCompressorTypeToZLib();
-  // zlib's fastest level: the 1M-quad torus at level 2 (16M faces) wrote in 29 s instead of
-  // 43 s end to end, the file 2 % larger (issue 18); LZ4 was slower here and 80 % larger.
-  writer->SetCompressionLevel(1);
+  writer->SetBlockSize(kBlockSize);
+  writer->SetCompressor(make_block_compressor(options.compressor, options.compression_level, kBlockSize,
+                                              contiguous_arrays(poly), counts));
   writer->SetHeaderTypeToUInt64();  // blocks over 4 GB on large levels
   if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors.empty())
     throw Error(fmt::format("cannot write '{}': VTK reports: {}", shown.string(),

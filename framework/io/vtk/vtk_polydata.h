@@ -16,11 +16,20 @@ namespace subdiv::io_detail {
 // "<context>: <problem>".
 void check_output_level(const OutputLevel& level, std::string_view context);
 
-// Assumes check_output_level passed.
-vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level);
+// Share: the polydata's points, faces and double arrays are the level's own memory, handed
+// over without a copy (a 16M-face level is gigabytes), for a polydata written at once while
+// `level`, its mesh and arrays live. Copy: the polydata owns all its data (ParaView's plugin).
+enum class LevelMemory { Copy, Share };
 
-// Binary, appended, zlib-compressed VTK XML into `file`; `shown` names it in messages.
-void write_polydata_file(vtkPolyData& poly, const std::filesystem::path& file,
-                         const std::filesystem::path& shown);
+// Assumes check_output_level passed. Adds the arrays write_vtp adds that `options` asks for.
+vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level, const VtkWriteOptions& options = {},
+                                           LevelMemory memory = LevelMemory::Copy);
+
+struct BlockCounts;
+
+// Inline binary VTK XML into `file`, compressed as `options` say on every core TBB may use;
+// `shown` names it in messages. `counts`, if given, counts how the blocks were compressed.
+void write_polydata_file(vtkPolyData& poly, const std::filesystem::path& file, const std::filesystem::path& shown,
+                         const VtkWriteOptions& options = {}, BlockCounts* counts = nullptr);
 
 }  // namespace subdiv::io_detail

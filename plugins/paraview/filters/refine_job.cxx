@@ -70,7 +70,7 @@ RefinedLevels refine_levels(const MeshData& input, const RefineRequest& r, const
                                       limits.result.approximate, limits.result.exact.size()));
     limit_data = std::move(limits.point_data);
   }
-  out.levels = cli::describe_levels(h, data, options.features, limit_data, out.meshes);
+  out.levels = cli::describe_levels(h, std::move(data), options.features, limit_data, out.meshes);
   return out;
 }
 

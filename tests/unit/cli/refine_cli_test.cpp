@@ -24,7 +24,7 @@ TEST_CASE("refine the bundled cube to .vtp and read it back: counts per level of
   const auto dir = fresh_dir("cli-vtp");
   const auto out = dir / "cube.vtp";
   const CliResult r = run_subdiv("refine " + source_path("examples/meshes/cube.obj") +
-                                 " --scheme catmull-clark --levels 2 -o " + out.string());
+                                 " --scheme catmull-clark --levels 2 --arrays all -o " + out.string());
   REQUIRE_MESSAGE(r.exit_code == 0, r.output);
   const auto poly = read_vtp(out);
   // Cube: V=8, E=12, F=6. Level 1: 26 vertices, 24 quads, 48 edges; level 2: 98 vertices, 96 quads.

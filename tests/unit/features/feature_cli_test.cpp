@@ -80,7 +80,7 @@ TEST_CASE("--features: a semi-sharp crease of sharpness 2 shows for two levels; 
                                        "corners": [{"vertex": 16}]})";
   const auto out = dir / "grid.pvd";
   const CliResult r = run_subdiv("refine " + grid.string() + " --features " + (dir / "f.json").string() +
-                                 " --levels 3 -o " + out.string());
+                                 " --levels 3 --arrays default,vertex_class -o " + out.string());
   REQUIRE_MESSAGE(r.exit_code == 0, r.output);
   CHECK(r.output.find("3 crease edge(s), 1 corner(s)") != std::string::npos);
 
@@ -126,7 +126,7 @@ TEST_CASE("--feature-angle: a cube's twelve edges become sharp; its corners stay
   const auto dir = fresh_dir("features-angle");
   const auto out = dir / "cube.pvd";
   const CliResult r = run_subdiv("refine " + source_path("examples/meshes/cube.obj") +
-                                 " --feature-angle 30 --levels 2 -o " + out.string());
+                                 " --feature-angle 30 --levels 2 --arrays all -o " + out.string());
   REQUIRE_MESSAGE(r.exit_code == 0, r.output);
   CHECK(r.output.find("12 edge(s) made infinitely sharp") != std::string::npos);
   const auto base = read_vtp(level_file(out, 0));
@@ -164,8 +164,8 @@ TEST_CASE("--feature-angle: a cube's twelve edges become sharp; its corners stay
 TEST_CASE("OBJ crease and corner tags show in the output") {
   const auto dir = fresh_dir("features-obj");
   const auto out = dir / "cube.vtp";
-  const CliResult r = run_subdiv("refine " + source_path("examples/meshes/cube-creased.obj") + " --levels 0 -o " +
-                                 out.string());
+  const CliResult r = run_subdiv("refine " + source_path("examples/meshes/cube-creased.obj") +
+                                 " --levels 0 --arrays all -o " + out.string());
   REQUIRE_MESSAGE(r.exit_code == 0, r.output);
   const auto poly = read_vtp(out);
   // Four sharp top edges; the top vertices 4..7 each have two: crease vertices; vertex 0

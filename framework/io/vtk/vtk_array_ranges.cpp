@@ -1,0 +1,113 @@
+#include "framework/io/vtk/vtk_array_ranges.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationDoubleVectorKey.h>
+#include <vtkInformationInformationVectorKey.h>
+#include <vtkInformationVector.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkType.h>
+
+namespace subdiv::io_detail {
+namespace {
+
+struct Range {
+  double min = std::numeric_limits<double>::max(), max = std::numeric_limits<double>::lowest();
+  Range join(const Range& o) const { return {std::min(min, o.min), std::max(max, o.max)}; }
+};
+
+// Over `tuples` tuples of `components` values: of the values (one component) or of the
+// tuples' Euclidean norms (several), as vtkDataArray::GetRange(-1) defines it. NaN is
+// skipped, as VTK skips it.
+template <typename T>
+Range range_of(const T* values, std::size_t tuples, int components) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, tuples, 1 << 16), Range{},
+      [&](const tbb::blocked_range<std::size_t>& r, Range range) {
+        if (components == 1) {  // apart, so that the compiler vectorises it
+          T lo = std::numeric_limits<T>::max(), hi = std::numeric_limits<T>::lowest();
+          for (std::size_t t = r.begin(); t != r.end(); ++t) {
+            lo = values[t] < lo ? values[t] : lo;  // false for NaN: skipped
+            hi = values[t] > hi ? values[t] : hi;
+          }
+          return lo > hi ? range : range.join({double(lo), double(hi)});  // lo > hi: only NaN
+        }
+        for (std::size_t t = r.begin(); t != r.end(); ++t) {
+          double v = 0;
+          {
+            for (int c = 0; c < components; ++c) {
+              const double x = double(values[t * std::size_t(components) + std::size_t(c)]);
+              v += x * x;
+            }
+            v = std::sqrt(v);
+          }
+          if (v < range.min) range.min = v;
+          if (v > range.max) range.max = v;
+        }
+        return range;
+      },
+      [](const Range& a, const Range& b) { return a.join(b); });
+}
+
+void store(vtkDataArray& array, const Range& range) {
+  const double values[2] = {range.min, range.max};
+  vtkInformation* info = array.GetInformation();
+  if (array.GetNumberOfComponents() == 1) {
+    vtkNew<vtkInformationVector> per_component;
+    per_component->SetNumberOfInformationObjects(1);
+    per_component->GetInformationObject(0)->Set(vtkDataArray::COMPONENT_RANGE(), values, 2);
+    info->Set(vtkDataArray::PER_COMPONENT(), per_component);
+  } else {
+    info->Set(vtkDataArray::L2_NORM_RANGE(), values, 2);
+  }
+}
+
+}  // namespace
+
+void cache_array_range(vtkDataArray* array) {
+  if (!array || !array->HasStandardMemoryLayout() || array->GetNumberOfTuples() == 0) return;
+  const std::size_t tuples = std::size_t(array->GetNumberOfTuples());
+  const int components = array->GetNumberOfComponents();
+  const void* data = array->GetVoidPointer(0);
+  switch (array->GetDataType()) {  // the types write_vtp makes; VTK computes the others
+    case VTK_DOUBLE: store(*array, range_of(static_cast<const double*>(data), tuples, components)); break;
+    case VTK_INT: store(*array, range_of(static_cast<const int*>(data), tuples, components)); break;
+    case VTK_UNSIGNED_CHAR: store(*array, range_of(static_cast<const unsigned char*>(data), tuples, components)); break;
+    case VTK_ID_TYPE: store(*array, range_of(static_cast<const vtkIdType*>(data), tuples, components)); break;
+    case VTK_LONG: store(*array, range_of(static_cast<const long*>(data), tuples, components)); break;
+    case VTK_LONG_LONG: store(*array, range_of(static_cast<const long long*>(data), tuples, components)); break;
+    default: break;
+  }
+}
+
+namespace {
+
+void cache(vtkFieldData* data) {
+  if (!data) return;
+  for (int i = 0; i < data->GetNumberOfArrays(); ++i) cache_array_range(data->GetArray(i));
+}
+
+}  // namespace
+
+void cache_array_ranges(vtkPolyData& poly) {
+  if (poly.GetPoints()) cache_array_range(poly.GetPoints()->GetData());
+  cache(poly.GetPointData());
+  cache(poly.GetCellData());
+  cache(poly.GetFieldData());
+  for (vtkCellArray* cells : {poly.GetVerts(), poly.GetLines(), poly.GetStrips(), poly.GetPolys()})
+    if (cells) cache_array_range(cells->GetConnectivityArray());
+}
+
+}  // namespace subdiv::io_detail

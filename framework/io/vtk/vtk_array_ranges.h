@@ -1,0 +1,23 @@
+#pragma once
+// The value ranges VTK's XML writer puts into every array's header (RangeMin, RangeMax),
+// computed on every core TBB may use and handed to VTK's range cache. Internal to io/.
+//
+// vtkXMLWriter asks each array for GetRange(-1); VTK computes it with vtkSMPTools, which in
+// ParaView 5.11's build runs sequentially and took more time than compressing the arrays
+// on a 16M-face level. VTK keeps a computed range in the array's information
+// (vtkDataArray::PER_COMPONENT with COMPONENT_RANGE, L2_NORM_RANGE for vectors) until the
+// array changes; ranges stored there the same way are what the writer then reads. The
+// values are the same min and max VTK would find, so the file does not change.
+class vtkDataArray;
+class vtkPolyData;
+
+namespace subdiv::io_detail {
+
+// For the points, point, cell and field data and the cells' connectivity of `poly`; call
+// when they are final (changing an array drops its range again).
+void cache_array_ranges(vtkPolyData& poly);
+
+// For one array (doubles and integers of the kinds write_vtp makes; others are left to VTK).
+void cache_array_range(vtkDataArray* array);
+
+}  // namespace subdiv::io_detail

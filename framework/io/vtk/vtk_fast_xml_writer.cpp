@@ -1,0 +1,160 @@
+#include "framework/io/vtk/vtk_fast_xml_writer.h"
+
+#include <string>
+#include <utility>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <vtkCellArray.h>
+#include <vtkCellType.h>
+#include <vtkCellTypes.h>
+#include <vtkErrorCode.h>
+#include <vtkNew.h>
+#include <vtkOutputStream.h>
+#include <vtkPolyData.h>
+
+#include "framework/io/vtk/vtk_array_ranges.h"
+
+namespace subdiv::io_detail {
+namespace {
+
+constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+
+// Base64 as vtkBase64OutputStream writes it (each StartWriting..EndWriting run padded with
+// '=' on its own), a whole Write at a time.
+class Base64Stream : public vtkOutputStream {
+public:
+  static Base64Stream* create() {
+    auto* stream = new Base64Stream;
+    stream->InitializeObjectBase();
+    return stream;
+  }
+
+  int StartWriting() override {
+    pending_size_ = 0;
+    return vtkOutputStream::StartWriting();
+  }
+
+  int Write(void const* data, size_t length) override {
+    const auto* in = static_cast<const unsigned char*>(data);
+    text_.clear();
+    // Complete the triplet a previous Write left open.
+    while (pending_size_ > 0 && pending_size_ < 3 && length > 0) pending_[pending_size_++] = *in++, --length;
+    if (pending_size_ == 3) {
+      text_.resize(4);
+      encode(pending_, text_.data());
+      pending_size_ = 0;
+    }
+    const size_t triplets = length / 3, start = text_.size();
+    text_.resize(start + 4 * triplets);
+    char* out = text_.data() + start;
+    // Large writes (compressed blocks of up to a megabyte) in parallel pieces, each its own
+    // whole triplets: the same text for any thread count.
+    constexpr size_t kPiece = 1 << 16;  // triplets
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, triplets, kPiece), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t t = r.begin(); t != r.end(); ++t) encode(in + 3 * t, out + 4 * t);
+    });
+    in += 3 * triplets, length -= 3 * triplets;
+    while (length > 0) pending_[pending_size_++] = *in++, --length;
+    return put();
+  }
+
+  int EndWriting() override {
+    text_.clear();
+    if (pending_size_ == 1) {
+      text_ += kAlphabet[pending_[0] >> 2];
+      text_ += kAlphabet[(pending_[0] & 0x03) << 4];
+      text_ += "==";
+    } else if (pending_size_ == 2) {
+      text_ += kAlphabet[pending_[0] >> 2];
+      text_ += kAlphabet[((pending_[0] & 0x03) << 4) | (pending_[1] >> 4)];
+      text_ += kAlphabet[(pending_[1] & 0x0F) << 2];
+      text_ += '=';
+    }
+    pending_size_ = 0;
+    return put() && vtkOutputStream::EndWriting();
+  }
+
+private:
+  static void encode(const unsigned char* in, char* out) {
+    const unsigned a = in[0], b = in[1], c = in[2];
+    out[0] = kAlphabet[a >> 2];
+    out[1] = kAlphabet[((a & 0x03) << 4) | (b >> 4)];
+    out[2] = kAlphabet[((b & 0x0F) << 2) | (c >> 6)];
+    out[3] = kAlphabet[c & 0x3F];
+  }
+
+  int put() {
+    if (text_.empty()) return 1;
+    return this->Stream->write(text_.data(), std::streamsize(text_.size())) ? 1 : 0;
+  }
+
+  unsigned char pending_[3] = {};
+  unsigned pending_size_ = 0;
+  std::string text_;
+};
+
+}  // namespace
+
+FastCellTypesPolyData* FastCellTypesPolyData::New() {
+  auto* poly = new FastCellTypesPolyData;
+  poly->InitializeObjectBase();
+  return poly;
+}
+
+void FastCellTypesPolyData::GetCellTypes(vtkCellTypes* types) {
+  types->Reset();
+  // vtkPolyData's cell order (verts, lines, polys, strips) and its type for each cell size.
+  const auto vertex = [](vtkIdType n) { return n == 1 ? VTK_VERTEX : VTK_POLY_VERTEX; };
+  const auto line = [](vtkIdType n) { return n == 2 ? VTK_LINE : VTK_POLY_LINE; };
+  const auto polygon = [](vtkIdType n) { return n == 3 ? VTK_TRIANGLE : n == 4 ? VTK_QUAD : VTK_POLYGON; };
+  const auto strip = [](vtkIdType) { return VTK_TRIANGLE_STRIP; };
+  const auto add = [&](vtkCellArray* cells, auto type_of) {
+    if (!cells) return;
+    vtkIdType last_size = -1;
+    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c) {
+      const vtkIdType size = cells->GetCellSize(c);
+      if (size == last_size) continue;  // most cells: the size of the one before
+      last_size = size;
+      const auto type = static_cast<unsigned char>(size == 0 ? VTK_EMPTY_CELL : type_of(size));
+      if (!types->IsType(type)) types->InsertNextType(type);
+    }
+  };
+  add(this->GetVerts(), vertex);
+  add(this->GetLines(), line);
+  add(this->GetPolys(), polygon);
+  add(this->GetStrips(), strip);
+}
+
+FastXMLPolyDataWriter* FastXMLPolyDataWriter::New() {
+  auto* writer = new FastXMLPolyDataWriter;
+  writer->InitializeObjectBase();
+  return writer;
+}
+
+FastXMLPolyDataWriter::FastXMLPolyDataWriter() {
+  Base64Stream* stream = Base64Stream::create();
+  this->SetDataStream(stream);  // registers it
+  stream->Delete();
+}
+
+// As vtkXMLPolyDataWriter::WriteInlinePiece (points and data, then the four cell kinds),
+// without its progress reports, and with the cell arrays' ranges cached before they are written.
+void FastXMLPolyDataWriter::WriteInlinePiece(vtkIndent indent) {
+  vtkXMLUnstructuredDataWriter::WriteInlinePiece(indent);
+  vtkPolyData* input = this->GetInput();
+  const std::pair<const char*, vtkCellArray*> kinds[] = {{"Verts", input->GetVerts()},
+                                                         {"Lines", input->GetLines()},
+                                                         {"Strips", input->GetStrips()},
+                                                         {"Polys", input->GetPolys()}};
+  for (const auto& [name, cells] : kinds) {
+    if (this->GetErrorCode() == vtkErrorCode::OutOfDiskSpaceError) return;
+    if (cells) this->ConvertCells(cells);
+    this->ConvertFaces(nullptr, nullptr);
+    cache_array_range(this->CellPoints);
+    cache_array_range(this->CellOffsets);
+    this->WriteCellsInlineWorker(name, nullptr, indent);
+  }
+}
+
+}  // namespace subdiv::io_detail

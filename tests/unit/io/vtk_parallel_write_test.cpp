@@ -1,0 +1,133 @@
+// write_polydata_file (framework/io/vtk/vtk_polydata.h): the parallel block compressor,
+// the fast base64 stream and the cached ranges write exactly the file VTK's own
+// vtkXMLPolyDataWriter writes with the same settings, for any thread count.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <tbb/global_control.h>
+#include <vtkDataCompressor.h>
+#include <vtkLZ4DataCompressor.h>
+#include <vtkLZMADataCompressor.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtkZLibDataCompressor.h>
+
+#include "framework/io/vtk/vtk_block_compressor.h"
+#include "framework/io/vtk/vtk_output.h"
+#include "framework/io/vtk/vtk_polydata.h"
+
+using namespace subdiv;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A grid of n x n quads with a bumpy height, a double and an integer point array, an
+// integer cell array and a crease line: arrays of several blocks of 1 MB each.
+MeshData grid(int n) {
+  MeshData m;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) m.positions.insert(m.positions.end(), {double(i), double(j), std::sin(0.1 * i * j)});
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Index v = j * (n + 1) + i;
+      m.face_vertices.insert(m.face_vertices.end(), {v, v + 1, v + n + 2, v + n + 1});
+      m.face_offsets.push_back(Index(m.face_vertices.size()));
+    }
+  DataArray heat{"heat", 1, {}, false}, id{"id", 1, {}, true}, face{"face", 1, {}, true};
+  for (Index v = 0; v < m.vertex_count(); ++v) heat.values.push_back(std::cos(0.01 * v)), id.values.push_back(v % 977);
+  for (Index f = 0; f < m.face_count(); ++f) face.values.push_back(f);
+  m.point_data = {heat, id};
+  m.cell_data = {face};
+  m.creases.push_back({0, 1, 2.5f});
+  return m;
+}
+
+std::string file_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// VTK's own writer with the settings write_polydata_file uses.
+void write_with_vtk(vtkPolyData& poly, const fs::path& file, VtkCompressor type, int level) {
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(&poly);
+  writer->SetFileName(file.c_str());
+  writer->SetDataModeToBinary();
+  writer->SetBlockSize(1 << 20);
+  writer->SetHeaderTypeToUInt64();
+  switch (type) {
+    case VtkCompressor::None: writer->SetCompressorTypeToNone(); break;
+    case VtkCompressor::ZLib: writer->SetCompressorTypeToZLib(); break;
+    case VtkCompressor::LZ4: writer->SetCompressorTypeToLZ4(); break;
+    case VtkCompressor::LZMA: writer->SetCompressorTypeToLZMA(); break;
+  }
+  writer->SetCompressionLevel(level);
+  REQUIRE(writer->Write() == 1);
+}
+
+}  // namespace
+
+TEST_CASE("write_polydata_file writes VTK's own file, byte for byte, on any number of threads") {
+  const fs::path dir = fs::temp_directory_path() / "subdiv_parallel_write_test";
+  fs::create_directories(dir);
+  const MeshData mesh = grid(300);  // 90601 points: 2.2 MB of coordinates
+  OutputLevel level{&mesh, 2, mesh.point_data, mesh.cell_data};
+  const auto poly = io_detail::make_polydata(level);
+  for (VtkCompressor type : {VtkCompressor::ZLib, VtkCompressor::LZ4, VtkCompressor::LZMA, VtkCompressor::None}) {
+    for (int compression_level : {1, 6}) {
+      CAPTURE(int(type));
+      CAPTURE(compression_level);
+      write_with_vtk(*poly, dir / "vtk.vtp", type, compression_level);
+      const std::string expected = file_text(dir / "vtk.vtp");
+      for (int threads : {1, 2, 3}) {
+        CAPTURE(threads);
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        io_detail::BlockCounts counts;
+        VtkWriteOptions options;
+        options.compressor = type;
+        options.compression_level = compression_level;
+        io_detail::write_polydata_file(*poly, dir / "ours.vtp", dir / "ours.vtp", options, &counts);
+        CHECK(file_text(dir / "ours.vtp") == expected);
+        if (type == VtkCompressor::None) continue;
+        // Points, the point and cell arrays and the faces' connectivity come from the parallel
+        // pass; VTK copies the offsets (without their leading 0) before writing them.
+        CHECK(counts.parallel >= 3 + 3 + 1);
+        CHECK(counts.serial <= 4);
+      }
+    }
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("the block compressor in small blocks: many runs of parallel blocks, VTK's bytes") {
+  const fs::path dir = fs::temp_directory_path() / "subdiv_parallel_blocks_test";
+  fs::create_directories(dir);
+  const MeshData mesh = grid(120);  // 14641 points: 343 blocks of 1 KB of coordinates, runs of 64
+  OutputLevel level{&mesh, 0, mesh.point_data, mesh.cell_data};
+  const auto poly = io_detail::make_polydata(level);
+  const auto write = [&](const fs::path& file, vtkDataCompressor* compressor) {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputData(poly);
+    writer->SetFileName(file.c_str());
+    writer->SetDataModeToBinary();
+    writer->SetBlockSize(1024);
+    writer->SetHeaderTypeToUInt64();
+    if (compressor) writer->SetCompressor(compressor);
+    else writer->SetCompressorTypeToZLib(), writer->SetCompressionLevel(3);
+    REQUIRE(writer->Write() == 1);
+  };
+  write(dir / "vtk.vtp", nullptr);
+  io_detail::BlockCounts counts;
+  write(dir / "ours.vtp",
+        io_detail::make_block_compressor(VtkCompressor::ZLib, 3, 1024, io_detail::contiguous_arrays(*poly), &counts));
+  CHECK(file_text(dir / "ours.vtp") == file_text(dir / "vtk.vtp"));
+  CHECK(counts.parallel > 343);
+  CHECK(counts.serial < counts.parallel / 2);  // the offsets, which VTK copies
+  fs::remove_all(dir);
+}

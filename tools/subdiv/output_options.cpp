@@ -1,0 +1,111 @@
+#include "output_options.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <sstream>
+
+#include "framework/util/error.h"
+
+namespace subdiv::cli {
+namespace {
+
+const std::vector<std::string> kDefaultArrays = {"base_face", "cell_kind", "sharpness", "corner_sharpness"};
+
+struct CompressorName {
+  const char* name;
+  VtkCompressor type;
+};
+const CompressorName kCompressors[] = {{"zlib", VtkCompressor::ZLib},
+                                       {"lz4", VtkCompressor::LZ4},
+                                       {"lzma", VtkCompressor::LZMA},
+                                       {"none", VtkCompressor::None}};
+
+std::string compressor_names() {
+  std::vector<std::string> names;
+  for (const auto& c : kCompressors) names.push_back(c.name);
+  return fmt::format("{}", fmt::join(names, ", "));
+}
+
+VtkCompressor compressor_from_name(const std::string& name) {
+  for (const auto& c : kCompressors)
+    if (name == c.name) return c.type;
+  throw Error(fmt::format("--compression '{}' is not a compressor; use one of {}", name, compressor_names()));
+}
+
+}  // namespace
+
+const std::vector<std::string>& output_array_names() {
+  static const std::vector<std::string> names = {"origin",      "valence",   "level",     "vertex_class",
+                                                 "corner_sharpness", "parent_face", "base_face", "sharpness",
+                                                 "cell_kind"};
+  return names;
+}
+
+ArraySelection ArraySelection::all() {
+  ArraySelection s;
+  s.names_.insert(output_array_names().begin(), output_array_names().end());
+  return s;
+}
+
+ArraySelection ArraySelection::defaults() {
+  ArraySelection s;
+  s.names_.insert(kDefaultArrays.begin(), kDefaultArrays.end());
+  return s;
+}
+
+ArraySelection ArraySelection::parse(const std::string& text) {
+  const std::string valid = fmt::format("{}, or default, all, none", fmt::join(output_array_names(), ", "));
+  if (text == "none") return {};
+  ArraySelection s;
+  std::stringstream items(text);
+  for (std::string item; std::getline(items, item, ',');) {
+    if (item == "all") s.names_.insert(output_array_names().begin(), output_array_names().end());
+    else if (item == "default") s.names_.insert(kDefaultArrays.begin(), kDefaultArrays.end());
+    else if (item == "none") throw Error(fmt::format("--arrays '{}': 'none' stands alone (no array at all)", text));
+    else if (std::find(output_array_names().begin(), output_array_names().end(), item) != output_array_names().end())
+      s.names_.insert(item);
+    else
+      throw Error(fmt::format("--arrays '{}': unknown array '{}'; give a comma list of {}", text, item, valid));
+  }
+  if (text.empty() || text.back() == ',')
+    throw Error(fmt::format("--arrays '{}': an empty name; give a comma list of {}", text, valid));
+  return s;
+}
+
+VtkWriteOptions ArraySelection::vtk_options(VtkWriteOptions options) const {
+  options.sharpness = has("sharpness");
+  options.cell_kind = has("cell_kind");
+  options.corner_sharpness = has("corner_sharpness");
+  return options;
+}
+
+void add_output_options(CLI::App* cmd, OutputArgs& args) {
+  cmd->add_option("--arrays", args.arrays,
+                  fmt::format("SubdivKit's arrays in .vtp/.pvd/.pvtp output: a comma list of {}; or default ({}: they "
+                              "need only the last level's faces, which is faster), all, none. The mesh's own arrays "
+                              "are always written; .obj/.off/.ply/.stl hold none of these",
+                              fmt::join(output_array_names(), ", "), fmt::join(kDefaultArrays, ",")))
+      ->capture_default_str();
+  cmd->add_option("--compression", args.compression,
+                  fmt::format("Compressor of .vtp/.pvd/.pvtp output: {} (VTK's; ParaView reads them all). lz4, the "
+                              "default, writes fastest; zlib files are about 2.6 times smaller and take 3 times as "
+                              "long to write; lzma smaller still and much slower; none is no faster than lz4 and "
+                              "the largest",
+                              compressor_names()))
+      ->capture_default_str();
+  cmd->add_option("--compression-level", args.compression_level,
+                  "1 (fastest) to 9 (smallest), as VTK takes it (lz4: acceleration 10 - level)")
+      ->check(CLI::Range(1, 9))
+      ->capture_default_str();
+}
+
+OutputChoice output_choice(const OutputArgs& args) {
+  OutputChoice choice;
+  choice.arrays = ArraySelection::parse(args.arrays);
+  choice.vtk.compressor = compressor_from_name(args.compression);
+  choice.vtk.compression_level = args.compression_level;
+  choice.vtk = choice.arrays.vtk_options(choice.vtk);
+  return choice;
+}
+
+}  // namespace subdiv::cli
