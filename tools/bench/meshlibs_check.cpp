@@ -61,24 +61,28 @@ private:
   std::vector<std::pair<std::uint64_t, std::uint32_t>> cells_;
 };
 
-// Every strict point of `from` against `to`: adds to `m`, false on the first failure.
+// Every strict point of `from` against `to`, all of them (so that maxdiff says how far
+// apart the two sides are, not only that they are): adds to `m`, false if any failed.
 bool match_one_way(const std::vector<CheckRecord>& from, const std::vector<CheckRecord>& to, double tolerance,
                    PointSetMatch& m) {
   const PointGrid grid(to);
   std::vector<bool> claimed(to.size(), false);
+  bool ok = true;
   for (const CheckRecord& r : from) {
     if (r.key != 1) continue;
     const auto [partner, diff] = grid.nearest(r.xyz);
     m.maxdiff = std::max(m.maxdiff, partner < 0 || std::isnan(diff) ? INFINITY : diff);
-    if (partner < 0 || !(diff <= tolerance)) return false;
-    if (claimed[size_t(partner)]) {
-      m.problem = "two points share one partner";
-      return false;
-    }
-    claimed[size_t(partner)] = true;
     ++m.compared;
+    if (partner < 0 || !(diff <= tolerance)) {
+      ok = false;
+    } else if (claimed[size_t(partner)]) {
+      m.problem = "two points share one partner";
+      ok = false;
+    } else {
+      claimed[size_t(partner)] = true;
+    }
   }
-  return true;
+  return ok;
 }
 
 }  // namespace
@@ -102,7 +106,8 @@ std::vector<CheckRecord> sample_points(const std::vector<double>& xyz, std::uint
 
 PointSetMatch match_point_sets(const std::vector<CheckRecord>& a, const std::vector<CheckRecord>& b, double tolerance) {
   PointSetMatch m;
-  m.ok = match_one_way(a, b, tolerance, m) && match_one_way(b, a, tolerance, m);
+  const bool a_in_b = match_one_way(a, b, tolerance, m);
+  m.ok = match_one_way(b, a, tolerance, m) && a_in_b;
   return m;
 }
 

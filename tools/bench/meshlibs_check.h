@@ -26,8 +26,8 @@ std::vector<CheckRecord> sample_points(const std::vector<double>& xyz, std::uint
 
 struct PointSetMatch {
   bool ok = false;
-  std::int64_t compared = 0;  // strict points matched, both directions together
-  double maxdiff = 0;         // largest coordinate difference to the nearest partner
+  std::int64_t compared = 0;  // strict points looked up, both directions together
+  double maxdiff = 0;         // largest coordinate difference to the nearest partner (inf: none near)
   std::string problem;        // why not ok, when it is not a distance
 };
 

@@ -133,7 +133,7 @@ std::string result_line(const MeshlibsJob& job, const WorkerOutcome& ours, const
     if (!match.ok) problem = match.problem.empty() ? "points further apart than " + number(options.tolerance, "%.3g") : match.problem;
   }
   field("check", problem.empty() ? "ok" : "FAIL");
-  if (problem.empty() || match.compared > 0) field("maxdiff", number(match.maxdiff, "%.3g"));
+  if (match.compared > 0) field("maxdiff", number(match.maxdiff, "%.3g"));
   if (problem.empty()) field("checked", std::to_string(match.compared) + "/" + std::to_string(2 * a.vertices));
   else field("reason", "\"" + problem + "\""), failed = true;
   return line;
