@@ -107,6 +107,9 @@ std::string result_line(const MeshlibsJob& job, const WorkerOutcome& ours, const
   times("subdivkit_setup_ms", ours.ok, a.warm.setup, false);
   times("other_setup_ms", theirs.ok, b.warm.setup, false);
   ratio("refine_ratio", (a.warm.total().wall_ms - a.warm.setup.wall_ms), (b.warm.total().wall_ms - b.warm.setup.wall_ms));
+  // SubdivKit's refinement in its two parts (the others refine topology and points in one pass).
+  times("subdivkit_topo_ms", ours.ok, a.warm.topo, false);
+  times("subdivkit_geom_ms", ours.ok, a.warm.geom(), false);
   times("subdivkit_user_ms", ours.ok, a.warm.total(), true);
   times("other_user_ms", theirs.ok, b.warm.total(), true);
   ratio("user_ratio", a.warm.total().user_ms, b.warm.total().user_ms);
