@@ -18,6 +18,9 @@ struct Refined {
   // Peak RSS read right after the refinement, before `xyz` is copied out of OpenMesh's or
   // CGAL's mesh (SubdivKit's result is `xyz` itself, moved in).
   std::int64_t peak_rss_bytes = 0;
+  // SubdivKit: new points computed by the compiled kernels, by learnt row plans and by the
+  // generic rule interpreter (rules/row_paths.h), which says where its time goes.
+  std::int64_t kernel_points = 0, plan_points = 0, generic_points = 0;
 };
 
 // Scheme names are SubdivKit's (schemes/*.json): sqrt3, doo-sabin, modified-butterfly,

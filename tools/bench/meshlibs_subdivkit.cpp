@@ -4,6 +4,7 @@
 #include <span>
 
 #include "framework/engine/refiner.h"
+#include "framework/rules/row_paths.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/topology/level.h"
 #include "meshlibs_sides.h"
@@ -16,7 +17,9 @@ SideRun subdivkit_side(const SideRequest& request) {
   options.levels = request.level;
   options.threads = 1;
   options.faces_only_last_level = !request.last_level_full;
-  return [scheme, options, level = request.level](const Mesh& mesh, Timings& t, Refined& out) {
+  return [scheme, options, level = request.level](const Mesh& mesh, Timings& t, Refined& out) mutable {
+    subdiv::RowPaths paths;
+    options.row_paths = &paths;
     Stopwatch clock;
     subdiv::Level base = subdiv::build_level(mesh.vertex_count, mesh.face_offsets, mesh.face_vertices);
     t.setup = clock.lap();
@@ -31,6 +34,7 @@ SideRun subdivkit_side(const SideRequest& request) {
     out.peak_rss_bytes = peak_rss_bytes();
     out.faces = h.levels[size_t(level)].face_count();
     out.xyz = std::move(values);
+    out.kernel_points = paths.kernel, out.plan_points = paths.plan, out.generic_points = paths.generic;
   };
 }
 

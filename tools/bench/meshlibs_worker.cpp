@@ -29,6 +29,7 @@ struct ReportHeader {
   double peak_mb;
   std::int64_t base_faces, vertices, faces;
   std::uint64_t digest, check_modulus, record_count;
+  std::int64_t kernel_points, plan_points, generic_points;
 };
 
 void write_fully(int fd, const void* data, size_t size) {
@@ -59,6 +60,7 @@ bool decode_report(const std::string& bytes, WorkerReport& r) {
   r.cold = h.cold, r.warm = h.warm, r.warm_digest_same = h.warm_digest_same, r.peak_mb = h.peak_mb;
   r.base_faces = h.base_faces, r.vertices = h.vertices, r.faces = h.faces;
   r.digest = h.digest, r.check_modulus = h.check_modulus;
+  r.kernel_points = h.kernel_points, r.plan_points = h.plan_points, r.generic_points = h.generic_points;
   r.records.resize(h.record_count);
   if (h.record_count) std::memcpy(r.records.data(), bytes.data() + sizeof h, h.record_count * sizeof(CheckRecord));
   return true;
@@ -111,6 +113,8 @@ int meshlibs_worker_main(const MeshlibsJob& job, int fd) {
         cold->digest = digest;
         cold->check_modulus = check_modulus_for(cold->vertices, job.check_max);
         cold->records = sample_points(refined.xyz, cold->check_modulus);
+        cold->kernel_points = refined.kernel_points, cold->plan_points = refined.plan_points;
+        cold->generic_points = refined.generic_points;
       }
       return digest;
     });
@@ -118,7 +122,8 @@ int meshlibs_worker_main(const MeshlibsJob& job, int fd) {
     report.base_faces = mesh.face_count();
     const ReportHeader h{kReportMagic,  report.cold,     report.warm,   report.warm_digest_same,
                          report.peak_mb, report.base_faces, report.vertices, report.faces,
-                         report.digest,  report.check_modulus, report.records.size()};
+                         report.digest,  report.check_modulus, report.records.size(),
+                         report.kernel_points, report.plan_points, report.generic_points};
     write_fully(fd, &h, sizeof h);
     if (!report.records.empty()) write_fully(fd, report.records.data(), report.records.size() * sizeof(CheckRecord));
     ::close(fd);

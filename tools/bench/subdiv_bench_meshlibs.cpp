@@ -110,6 +110,9 @@ std::string result_line(const MeshlibsJob& job, const WorkerOutcome& ours, const
   // SubdivKit's refinement in its two parts (the others refine topology and points in one pass).
   times("subdivkit_topo_ms", ours.ok, a.warm.topo, false);
   times("subdivkit_geom_ms", ours.ok, a.warm.geom(), false);
+  if (ours.ok)
+    field("subdivkit_points", "kernel:" + std::to_string(a.kernel_points) + ",plan:" + std::to_string(a.plan_points) +
+                                  ",generic:" + std::to_string(a.generic_points));
   times("subdivkit_user_ms", ours.ok, a.warm.total(), true);
   times("other_user_ms", theirs.ok, b.warm.total(), true);
   ratio("user_ratio", a.warm.total().user_ms, b.warm.total().user_ms);
@@ -118,7 +121,9 @@ std::string result_line(const MeshlibsJob& job, const WorkerOutcome& ours, const
   ratio("cold_ratio", a.cold.total().wall_ms, b.cold.total().wall_ms);
   field("subdivkit_peak_mb", ours.ok ? number(a.peak_mb) : "n/a");
   field("other_peak_mb", theirs.ok ? number(b.peak_mb) : "n/a");
+  // On a busy machine wall-clock time includes waiting for a core; user time does not.
   if (both) field("target_3x", a.warm.total().wall_ms <= kTargetRatio * b.warm.total().wall_ms ? "met" : "not_met");
+  if (both) field("target_3x_user", a.warm.total().user_ms <= kTargetRatio * b.warm.total().user_ms ? "met" : "not_met");
   if (!ours.ok) field("subdivkit_error", "\"" + ours.error + "\""), failed = true;
   if (!theirs.ok) field("other_error", "\"" + theirs.error + "\""), failed = true;
   for (const WorkerOutcome* o : {&ours, &theirs})
@@ -155,7 +160,7 @@ int run(const Options& options) {
               cpu_name().c_str(), options.base.repeat, openmesh_version().c_str(), cgal_version().c_str(),
               options.base.last_level_full ? "full" : "faces", load[0], load[1], load[2]);
   std::printf("# times: warm wall-clock totals (setup + refinement), ratio = subdivkit_ms / other_ms, "
-              "target_3x: ratio <= 0.33\n");
+              "target_3x: ratio <= 0.33 (target_3x_user: the same in user time)\n");
   std::fflush(stdout);
   bool failed = false;
   for (const std::string& scheme : options.schemes) {
