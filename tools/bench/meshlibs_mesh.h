@@ -10,7 +10,7 @@ namespace subdiv_bench {
 
 // The mesh a scheme runs on. `extraordinary` false: "tri-torus" (every vertex valence 6)
 // for the triangle schemes, "torus" (valence 4) for the others. True: "tri-torus-ev"
-// (valences 3 to 12, see the .cpp) for the triangle schemes, "torus-ev" for the others.
+// (valences 3 to 8, see the .cpp) for the triangle schemes, "torus-ev" for the others.
 std::string mesh_kind_for(const std::string& scheme, bool extraordinary);
 
 // bench_mesh.h's make_mesh, and "tri-torus-ev".

@@ -231,7 +231,7 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
   app.add_option("--mesh", mesh, "regular (tri-torus: valence 6; torus: valence 4), extraordinary (tri-torus-ev: "
-                                 "valences 3 to 12; torus-ev: 3, 4 and 6), or both")
+                                 "valences 3 to 8; torus-ev: 3, 4 and 6), or both")
       ->capture_default_str()
       ->check(CLI::IsMember({"regular", "extraordinary", "both"}));
   app.add_option("--check", check, "compare the libraries' points: sample (about --check-max points), full, or off")
