@@ -41,11 +41,16 @@ vtk_packages=("$vtk")
 # screenshots headless (docs/paraview.md).
 [ "$vtk" = paraview-dev ] && vtk_packages+=(libopenmpi-dev xvfb xauth)
 
+# CGAL (subdiv-bench-meshlibs only; optional there): Debian 12's libcgal-dev is CGAL 5.5,
+# header-only; it pulls in libgmp-dev, libmpfr-dev and a few Boost -dev packages, and
+# neither needs nor removes VTK or ParaView (checked with apt-get -s on a machine with
+# python3-paraview).
 packages=(
   build-essential cmake ninja-build pkg-config
   libopenmesh-dev nlohmann-json3-dev libfmt-dev doctest-dev
   "${vtk_packages[@]}" libeigen3-dev libmuparser-dev libcli11-dev libtbb-dev
   libosd-dev ccache
+  libcgal-dev
   libmetis-dev openmpi-bin libopenmpi-dev
   pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib
 )
