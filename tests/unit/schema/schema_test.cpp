@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <functional>
 #include <fstream>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
@@ -391,9 +392,17 @@ namespace {
 
 // Loads a scheme text with the engine's loader: true if it loads.
 bool loader_accepts(const Json& scheme) {
-  const fs::path dir = fs::temp_directory_path() / "subdivkit-schema-loader";
-  fs::create_directories(dir);
-  const fs::path file = dir / "probe.json";
+  // One directory per process (test runs in other checkouts share /tmp), removed at exit.
+  struct ProbeDir {
+    fs::path path = fs::temp_directory_path() / ("subdivkit-schema-loader-" + std::to_string(getpid()));
+    ProbeDir() { fs::create_directories(path); }
+    ~ProbeDir() {
+      std::error_code ec;
+      fs::remove_all(path, ec);
+    }
+  };
+  static const ProbeDir dir;
+  const fs::path file = dir.path / "probe.json";
   std::ofstream(file) << scheme.dump(2);
   try {
     subdiv::load_scheme(file.string());
