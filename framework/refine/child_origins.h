@@ -10,21 +10,20 @@ namespace subdiv {
 
 enum class OriginKind : std::uint8_t { Vertex = 0, Edge = 1, Face = 2, Corner = 3 };
 
+// Set by a split that lays out each kind's children as one run in element order (element
+// i's only child is first[kind] + i; a kind with no children has count 0), so the rules
+// need not scan the origins to group the children (rules/step_rows.cpp, group_children).
+struct ChildRuns {
+  Index first[4] = {kNone, kNone, kNone, kNone};
+  Index count[4] = {};
+};
+
 struct ChildOrigins {
   std::vector<OriginKind> kind;   // per child vertex
   std::vector<Index> parent;      // parent vertex, edge or face (for Corner: the face)
   std::vector<LocalIndex> local;  // Corner: corner index within the face; Edge: point along it; else 0
   std::vector<Index> parent_face;   // per child face: the parent face it lies in (kNone if none)
-
-  // Set by a split that lays out each kind's children as one run in element order (element
-  // i's only child is first[kind] + i; a kind with no children has count 0), so the rules
-  // need not scan the arrays above to group the children (rules/step_rows.cpp,
-  // group_children). Empty when the layout is another.
-  struct Runs {
-    Index first[4] = {kNone, kNone, kNone, kNone};
-    Index count[4] = {};
-  };
-  std::optional<Runs> runs;
+  std::optional<ChildRuns> runs;  // empty when the layout is another
 };
 
 }  // namespace subdiv

@@ -187,7 +187,7 @@ KindRuns find_runs(const StepContext& s) {
 }  // namespace
 
 // The runs the split declared (child_origins.h): no scan.
-KindRuns declared_runs(const ChildOrigins::Runs& declared) {
+KindRuns declared_runs(const ChildRuns& declared) {
   KindRuns k;
   for (int e = 0; e < kElementCount; ++e) k.first[e] = declared.first[e], k.count[e] = declared.count[e];
   return k;
