@@ -12,59 +12,13 @@
 #include <oneapi/tbb/global_control.h>
 
 #include "bench_memory.h"
+#include "bench_report_wire.h"
 #include "meshlibs_check.h"
 #include "meshlibs_mesh.h"
 #include "meshlibs_sides.h"
 
 namespace subdiv_bench {
 namespace {
-
-constexpr std::uint64_t kReportMagic = 0x4d4c494242454e43ull;  // "MLIBBENC"
-
-// The report's fixed part; the sampled points follow it.
-struct ReportHeader {
-  std::uint64_t magic;
-  Timings cold, warm;
-  bool warm_digest_same;
-  double peak_mb;
-  std::int64_t base_faces, vertices, faces;
-  std::uint64_t digest, check_modulus, record_count;
-  std::int64_t kernel_points, plan_points, generic_points;
-};
-
-void write_fully(int fd, const void* data, size_t size) {
-  for (const char* p = static_cast<const char*>(data); size > 0;) {
-    const ssize_t n = ::write(fd, p, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw std::runtime_error(std::string("cannot write the report: ") + std::strerror(errno));
-    p += n, size -= size_t(n);
-  }
-}
-
-std::string read_until_closed(int fd) {
-  std::string bytes;
-  char buffer[1 << 16];
-  for (;;) {
-    const ssize_t n = ::read(fd, buffer, sizeof buffer);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return bytes;
-    bytes.append(buffer, size_t(n));
-  }
-}
-
-bool decode_report(const std::string& bytes, WorkerReport& r) {
-  ReportHeader h;
-  if (bytes.size() < sizeof h) return false;
-  std::memcpy(&h, bytes.data(), sizeof h);
-  if (h.magic != kReportMagic || bytes.size() != sizeof h + h.record_count * sizeof(CheckRecord)) return false;
-  r.cold = h.cold, r.warm = h.warm, r.warm_digest_same = h.warm_digest_same, r.peak_mb = h.peak_mb;
-  r.base_faces = h.base_faces, r.vertices = h.vertices, r.faces = h.faces;
-  r.digest = h.digest, r.check_modulus = h.check_modulus;
-  r.kernel_points = h.kernel_points, r.plan_points = h.plan_points, r.generic_points = h.generic_points;
-  r.records.resize(h.record_count);
-  if (h.record_count) std::memcpy(r.records.data(), bytes.data() + sizeof h, h.record_count * sizeof(CheckRecord));
-  return true;
-}
 
 SideRun side_for(const MeshlibsJob& job) {
   const SideRequest request{job.scheme, job.level, job.last_level_full};
@@ -120,12 +74,7 @@ int meshlibs_worker_main(const MeshlibsJob& job, int fd) {
     });
     report.peak_mb = double(std::max<std::int64_t>(0, report.peak_rss_bytes - baseline)) / (1024.0 * 1024.0);
     report.base_faces = mesh.face_count();
-    const ReportHeader h{kReportMagic,  report.cold,     report.warm,   report.warm_digest_same,
-                         report.peak_mb, report.base_faces, report.vertices, report.faces,
-                         report.digest,  report.check_modulus, report.records.size(),
-                         report.kernel_points, report.plan_points, report.generic_points};
-    write_fully(fd, &h, sizeof h);
-    if (!report.records.empty()) write_fully(fd, report.records.data(), report.records.size() * sizeof(CheckRecord));
+    send_report(fd, report);
     ::close(fd);
     return 0;
   } catch (const std::exception& e) {
@@ -168,7 +117,7 @@ WorkerOutcome run_meshlibs_worker(const MeshlibsJob& job) {
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) outcome.error = describe_exit(status);
-  else if (!decode_report(bytes, outcome.report)) outcome.error = "worker sent a malformed report";
+  else if (!parse_report(bytes, outcome.report)) outcome.error = "worker sent a malformed report";
   else outcome.ok = true;
   return outcome;
 }

@@ -26,6 +26,7 @@
 #include <CLI/CLI.hpp>
 
 #include "bench_common.h"
+#include "bench_report_wire.h"
 
 #ifdef SUBDIV_BENCH_HAVE_OPENSUBDIV
 #include <opensubdiv/version.h>
@@ -36,60 +37,6 @@ namespace {
 
 constexpr double kMiB = 1024.0 * 1024.0;
 constexpr double kTolerance = 1e-9;
-
-// ---- worker <-> parent wire format (a pipe; both ends are this same binary) ----------
-
-constexpr std::uint64_t kMagic = 0x53444b42454e4348ull;  // "SDKBENCH"
-
-struct WireHeader {
-  std::uint64_t magic;
-  Timings cold, warm;
-  bool warm_digest_same;
-  double peak_mb;
-  std::int64_t base_faces, vertices, faces;
-  std::uint64_t digest, check_modulus, record_count;
-  std::int64_t kernel_points, plan_points, generic_points;
-};
-
-void write_all(int fd, const void* data, size_t size) {
-  const char* p = static_cast<const char*>(data);
-  while (size > 0) {
-    const ssize_t n = ::write(fd, p, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw std::runtime_error(std::string("worker: write to parent failed: ") + std::strerror(errno));
-    p += n;
-    size -= size_t(n);
-  }
-}
-
-void send_report(int fd, const WorkerReport& r) {
-  const WireHeader h{kMagic, r.cold, r.warm, r.warm_digest_same, r.peak_mb, r.base_faces, r.vertices, r.faces, r.digest, r.check_modulus, r.records.size(),
-                     r.kernel_points, r.plan_points, r.generic_points};
-  write_all(fd, &h, sizeof h);
-  if (!r.records.empty()) write_all(fd, r.records.data(), r.records.size() * sizeof(CheckRecord));
-}
-
-bool parse_report(const std::string& bytes, WorkerReport& r) {
-  WireHeader h;
-  if (bytes.size() < sizeof h) return false;
-  std::memcpy(&h, bytes.data(), sizeof h);
-  if (h.magic != kMagic || bytes.size() != sizeof h + h.record_count * sizeof(CheckRecord)) return false;
-  r.cold = h.cold;
-  r.warm = h.warm;
-  r.warm_digest_same = h.warm_digest_same;
-  r.peak_mb = h.peak_mb;
-  r.base_faces = h.base_faces;
-  r.vertices = h.vertices;
-  r.faces = h.faces;
-  r.digest = h.digest;
-  r.check_modulus = h.check_modulus;
-  r.kernel_points = h.kernel_points;
-  r.plan_points = h.plan_points;
-  r.generic_points = h.generic_points;
-  r.records.resize(h.record_count);
-  if (h.record_count) std::memcpy(r.records.data(), bytes.data() + sizeof h, h.record_count * sizeof(CheckRecord));
-  return true;
-}
 
 // ---- worker ---------------------------------------------------------------------------
 
@@ -178,14 +125,7 @@ RunResult run_worker(const Job& job) {
     ::_exit(127);
   }
   ::close(fds[1]);
-  std::string bytes;
-  char buffer[1 << 16];
-  for (;;) {
-    const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    bytes.append(buffer, size_t(n));
-  }
+  const std::string bytes = read_until_closed(fds[0]);
   ::close(fds[0]);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {

@@ -150,7 +150,10 @@ TEST_CASE("every compressor and level writes the same data, named in the file; V
                                                        {"lz4", "vtkLZ4DataCompressor"},
                                                        {"lzma", "vtkLZMADataCompressor"},
                                                        {"none", ""}};
-  for (const auto& [name, compressor] : cases) {
+  for (const auto& named : cases) {
+    // (No structured binding: clang 14 cannot capture one in doctest's CAPTURE.)
+    const std::string& name = named.first;
+    const std::string& compressor = named.second;
     for (const char* level : {"1", "5"}) {
       CAPTURE(name);
       CAPTURE(level);
