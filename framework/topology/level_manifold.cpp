@@ -172,7 +172,10 @@ bool build_rings(Level& level, const Corners& k) {
   parallel_ranges(V, [&](Index begin, Index end) {
     for (Index v = begin; v < end; ++v) {
       start[v] = ring_start(k, v);
-      if (start[v] == kConflict) fans = false;
+      if (start[v] == kConflict) {
+        fans = false;
+        continue;
+      }
       level.vertex_on_boundary[v] = start[v] != kNone && k.twin[start[v]] == kNone;
     }
   });
