@@ -130,7 +130,9 @@ Index across(const Level& L, Index f, Index x, Index y) {
 }  // namespace
 
 SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGroup>& groups)
-    : step_(step), groups_(groups), untagged_(step.parent.edge_sharpness.empty() && step.parent.vertex_sharpness.empty()) {
+    : step_(step),
+      groups_(groups),
+      untagged_(step.parent.edge_sharpness.empty() && step.parent.vertex_sharpness.empty()) {
   for (int k = 0; k < kElementCount; ++k) {
     kernels_[k] = compile_kernel(step, Element(k));
     for (const Term& t : kernels_[k])
