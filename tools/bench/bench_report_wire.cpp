@@ -1,8 +1,11 @@
 #include "bench_report_wire.h"
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
@@ -28,6 +31,13 @@ void write_all(int fd, const void* data, size_t size) {
     if (n <= 0) throw std::runtime_error(std::string("worker: write to parent failed: ") + std::strerror(errno));
     p += n, size -= size_t(n);
   }
+}
+
+std::string describe_exit(int status) {
+  if (WIFSIGNALED(status))
+    return "worker killed by signal " + std::to_string(WTERMSIG(status)) +
+           (WTERMSIG(status) == SIGKILL ? " (out of memory?)" : "");
+  return "worker failed (exit " + std::to_string(WEXITSTATUS(status)) + ")";
 }
 
 }  // namespace
@@ -63,6 +73,36 @@ bool parse_report(const std::string& bytes, WorkerReport& r) {
   r.records.resize(h.record_count);
   if (h.record_count) std::memcpy(r.records.data(), bytes.data() + sizeof h, h.record_count * sizeof(CheckRecord));
   return true;
+}
+
+std::string run_self_as_worker(std::vector<std::string> args, WorkerReport& report) {
+  int fds[2];
+  if (::pipe(fds) != 0) return std::string("pipe: ") + std::strerror(errno);
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid == 0) {  // the child: the report goes to fd 3
+    ::close(fds[0]);
+    if (fds[1] != 3) ::dup2(fds[1], 3), ::close(fds[1]);
+    ::execv("/proc/self/exe", argv.data());
+    std::fprintf(stderr, "%s: cannot run itself: %s\n", args[0].c_str(), std::strerror(errno));
+    ::_exit(127);
+  }
+  ::close(fds[1]);
+  if (pid < 0) {
+    ::close(fds[0]);
+    return std::string("fork: ") + std::strerror(errno);
+  }
+  const std::string bytes = read_until_closed(fds[0]);
+  ::close(fds[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return describe_exit(status);
+  if (!parse_report(bytes, report)) return "worker sent a malformed report";
+  return "";
 }
 
 }  // namespace subdiv_bench

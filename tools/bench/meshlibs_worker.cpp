@@ -30,13 +30,6 @@ SideRun side_for(const MeshlibsJob& job) {
   return run;
 }
 
-std::string describe_exit(int status) {
-  if (WIFSIGNALED(status))
-    return "worker killed by signal " + std::to_string(WTERMSIG(status)) +
-           (WTERMSIG(status) == SIGKILL ? " (out of memory?)" : "");
-  return "worker failed (exit " + std::to_string(WEXITSTATUS(status)) + ")";
-}
-
 }  // namespace
 
 std::vector<std::string> MeshlibsJob::worker_args() const {
@@ -86,39 +79,10 @@ int meshlibs_worker_main(const MeshlibsJob& job, int fd) {
 
 WorkerOutcome run_meshlibs_worker(const MeshlibsJob& job) {
   WorkerOutcome outcome;
-  int fds[2];
-  if (::pipe(fds) != 0) {
-    outcome.error = std::string("pipe: ") + std::strerror(errno);
-    return outcome;
-  }
   std::vector<std::string> args = job.worker_args();
   args.insert(args.begin(), "subdiv-bench-meshlibs");
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  std::fflush(nullptr);
-  const pid_t pid = ::fork();
-  if (pid == 0) {  // the child: the report goes to fd 3
-    ::close(fds[0]);
-    if (fds[1] != 3) ::dup2(fds[1], 3), ::close(fds[1]);
-    ::execv("/proc/self/exe", argv.data());
-    std::fprintf(stderr, "subdiv-bench-meshlibs: cannot run itself: %s\n", std::strerror(errno));
-    ::_exit(127);
-  }
-  ::close(fds[1]);
-  if (pid < 0) {
-    outcome.error = std::string("fork: ") + std::strerror(errno);
-    ::close(fds[0]);
-    return outcome;
-  }
-  const std::string bytes = read_until_closed(fds[0]);
-  ::close(fds[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) outcome.error = describe_exit(status);
-  else if (!parse_report(bytes, outcome.report)) outcome.error = "worker sent a malformed report";
-  else outcome.ok = true;
+  outcome.error = run_self_as_worker(std::move(args), outcome.report);
+  outcome.ok = outcome.error.empty();
   return outcome;
 }
 

@@ -82,65 +82,23 @@ struct RunResult {
 // Runs `job` in a fresh process: this executable with the hidden worker options.
 RunResult run_worker(const Job& job) {
   RunResult result;
-  int fds[2];
-  if (::pipe(fds) != 0) {
-    result.error = std::string("pipe: ") + std::strerror(errno);
-    return result;
-  }
-  std::vector<std::string> args = {"subdiv-bench",
-                                   "--worker", job.side,
-                                   "--worker-fd", "3",
-                                   "--schemes", job.scheme,
-                                   "--mesh", job.mesh,
-                                   "--faces", std::to_string(job.faces),
-                                   "--levels", std::to_string(job.level),
-                                   "--threads", std::to_string(job.threads),
-                                   "--repeat", std::to_string(job.repeat),
-                                   "--check-max", std::to_string(job.check_max),
-                                   "--osd-topology", job.osd_full_topology ? "full" : "default",
-                                   "--row-plans", job.row_plans ? "on" : "off",
-                                   "--kernels", job.kernels ? "on" : "off",
-                                   "--geometry", job.tables ? "tables" : "direct",
-                                   "--mode", job.update ? "update" : "refine"};
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-
-  std::fflush(nullptr);
-  const pid_t pid = ::fork();
-  if (pid < 0) {
-    result.error = std::string("fork: ") + std::strerror(errno);
-    ::close(fds[0]);
-    ::close(fds[1]);
-    return result;
-  }
-  if (pid == 0) {
-    ::close(fds[0]);
-    if (fds[1] != 3) {
-      ::dup2(fds[1], 3);
-      ::close(fds[1]);
-    }
-    ::execv("/proc/self/exe", argv.data());
-    std::fprintf(stderr, "subdiv-bench: cannot re-run itself: %s\n", std::strerror(errno));
-    ::_exit(127);
-  }
-  ::close(fds[1]);
-  const std::string bytes = read_until_closed(fds[0]);
-  ::close(fds[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    result.error = WIFSIGNALED(status) ? "worker killed by signal " + std::to_string(WTERMSIG(status)) +
-                                             (WTERMSIG(status) == SIGKILL ? " (out of memory?)" : "")
-                                       : "worker failed (exit " + std::to_string(WEXITSTATUS(status)) + ")";
-    return result;
-  }
-  if (!parse_report(bytes, result.report)) {
-    result.error = "worker sent a malformed report";
-    return result;
-  }
-  result.ok = true;
+  result.error = run_self_as_worker({"subdiv-bench",
+                                     "--worker", job.side,
+                                     "--worker-fd", "3",
+                                     "--schemes", job.scheme,
+                                     "--mesh", job.mesh,
+                                     "--faces", std::to_string(job.faces),
+                                     "--levels", std::to_string(job.level),
+                                     "--threads", std::to_string(job.threads),
+                                     "--repeat", std::to_string(job.repeat),
+                                     "--check-max", std::to_string(job.check_max),
+                                     "--osd-topology", job.osd_full_topology ? "full" : "default",
+                                     "--row-plans", job.row_plans ? "on" : "off",
+                                     "--kernels", job.kernels ? "on" : "off",
+                                     "--geometry", job.tables ? "tables" : "direct",
+                                     "--mode", job.update ? "update" : "refine"},
+                                    result.report);
+  result.ok = result.error.empty();
   return result;
 }
 
