@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "framework/rules/flat_kernels.h"
+#include "framework/rules/point_accumulator.h"
+
 namespace subdiv {
 namespace {
 
@@ -71,38 +74,6 @@ std::vector<SmoothKernels::Term> compile_kernel(const StepContext& s, Element el
   return terms;
 }
 
-// A new point's sum, over C channels in registers (so the compiler need not assume that
-// the output aliases the points it reads), or over any number straight in the output (C = 0).
-template <int C>
-class Accumulator {
-public:
-  Accumulator(double* out, int) : out_(out) {}
-  void add(const double* p, double w) {
-    for (int c = 0; c < C; ++c) sum_[c] += w * p[c];
-  }
-  void store() const {
-    for (int c = 0; c < C; ++c) out_[c] = sum_[c];
-  }
-
-private:
-  double* out_;
-  double sum_[C] = {};
-};
-
-template <>
-class Accumulator<0> {
-public:
-  Accumulator(double* out, int channels) : out_(out), channels_(channels) { std::fill(out, out + channels, 0.0); }
-  void add(const double* p, double w) {
-    for (int c = 0; c < channels_; ++c) out_[c] += w * p[c];
-  }
-  void store() const {}
-
-private:
-  double* out_;
-  int channels_;
-};
-
 bool smooth(const VertexContext& vc) { return vc.parent == Context::Smooth && vc.child == Context::Smooth; }
 
 // The vertex of triangle f that is not a or b, or kNone if f is not a triangle.
@@ -127,20 +98,47 @@ Index across(const Level& L, Index f, Index x, Index y) {
   return kNone;
 }
 
+// A term as the flat kernels see it: the points it gathers, and whether its weight reads
+// more than the element's own size (a vertex's n; a face's k, which it reads as n and k; an
+// edge's n, always 2). Faces of a vertex are weighed at their own k (`varies`).
+FlatKernels::TermShape flat_shape(Element element, const SmoothKernels::Term& t) {
+  using Points = FlatKernels::Points;
+  using Reads = SmoothKernels::Term::Reads;
+  Points points = Points::Other;
+  switch (t.gather) {
+    case Gather::Self: points = Points::Self; break;
+    case Gather::Ring: points = Points::Ring; break;
+    case Gather::FacePoints: points = Points::FacePoints; break;
+    case Gather::EdgePoints: points = Points::EdgePoints; break;
+    case Gather::Ends: points = Points::Ends; break;
+    case Gather::Opposite: points = Points::Opposite; break;
+    case Gather::Corners: points = element == Element::Face ? Points::Corners : Points::Other; break;
+    default: break;
+  }
+  const bool reads_shape = t.reads == Reads::More || (element != Element::Face && t.reads == Reads::K);
+  return {points, t.weights, t.varies, reads_shape};
+}
+
 }  // namespace
 
 SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGroup>& groups)
     : step_(step),
       groups_(groups),
       untagged_(step.parent.edge_sharpness.empty() && step.parent.vertex_sharpness.empty()) {
+  std::vector<FlatKernels::TermShape> shapes[kElementCount];
   for (int k = 0; k < kElementCount; ++k) {
     kernels_[k] = compile_kernel(step, Element(k));
-    for (const Term& t : kernels_[k])
+    for (const Term& t : kernels_[k]) {
       if (k == int(Element::Edge) && (t.reads == Term::Reads::More || t.reads == Term::Reads::K ||
                                       (t.gather != Gather::Ends && t.gather != Gather::FacePoints)))
         edge_reads_shape_ = true;
+      shapes[k].push_back(flat_shape(Element(k), t));
+    }
   }
+  flat_ = std::make_unique<const FlatKernels>(step, groups, shapes);
 }
+
+SmoothKernels::~SmoothKernels() = default;
 
 template <class Accumulator, class Weight>
 bool SmoothKernels::add_new_points(Accumulator& acc, double& sum, Element kind, std::span<const Index> elements,
@@ -155,7 +153,9 @@ bool SmoothKernels::add_new_points(Accumulator& acc, double& sum, Element kind, 
 }
 
 Index SmoothKernels::run(Element kind, const ChildGroup& group, Index begin, Index end, const StepSources& in,
-                        double* dst, std::vector<Index>& left, FirstBadRow& bad) const {
+                        double* dst, std::vector<Index>& left, FirstBadRow& bad, Index& flat) const {
+  flat = 0;
+  if (flat_->covers(kind) && group.first_of_run() != kNone) return flat = flat_->run(kind, begin, end, in, dst, left, bad);
   if (in.channels == 3) return run_rows<3>(kind, group, begin, end, in, dst, left, bad);
   return run_rows<0>(kind, group, begin, end, in, dst, left, bad);
 }
@@ -213,7 +213,7 @@ bool SmoothKernels::vertex_point(Index v, const StepSources& in, double* out, do
   // Untagged, an interior vertex with edges is smooth (feature_context.cpp): its context
   // need not be read.
   if (untagged_ ? n == 0 : !smooth(step_.features.vertices[v])) return false;
-  Accumulator<C> acc(out, channels);
+  PointAccumulator<C> acc(out, channels);
   double sum = 0.0;
   for (const Term& term : kernels_[int(Element::Vertex)]) {
     const double w0 = term.weight_at(n, 0, 0);
@@ -261,7 +261,7 @@ bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, doub
   const int n0 = shape ? L.valence(a) : 0, n1 = shape ? L.valence(b) : 0;
   const int k0 = shape ? L.face_size(faces[0]) : 0, k1 = shape ? L.face_size(faces[1]) : 0;
   const int channels = in.channels;
-  Accumulator<C> acc(out, channels);
+  PointAccumulator<C> acc(out, channels);
   double sum = 0.0;
   for (const Term& term : kernels_[int(Element::Edge)]) {
     auto weight = [&](int k, int j) { return term.weight_at(2, k, j, n0, n1, k0, k1); };
@@ -327,7 +327,7 @@ bool SmoothKernels::face_point(Index f, const StepSources& in, double* out, doub
   const Level& L = step_.parent;
   const auto corners = L.face(f);
   const int k = int(corners.size()), channels = in.channels;
-  Accumulator<C> acc(out, channels);
+  PointAccumulator<C> acc(out, channels);
   double sum = 0.0;
   for (const Term& term : kernels_[int(Element::Face)]) {
     const double w0 = term.weight_at(k, k, 0);
@@ -359,7 +359,7 @@ bool SmoothKernels::corner_point(Index f, int corner, const StepSources& in, dou
   if (F.vertex_sharpness[corners[corner]] > 0.f || F.edges[edges[corner]].crease_weight != 0.f ||
       F.edges[edges[(corner + k - 1) % k]].crease_weight != 0.f)
     return false;
-  Accumulator<C> acc(out, channels);
+  PointAccumulator<C> acc(out, channels);
   double sum = 0.0;
   for (const Term& term : kernels_[int(Element::Corner)]) {
     const double w0 = term.weight_at(k, k, 0);

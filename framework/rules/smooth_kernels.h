@@ -19,6 +19,7 @@
 // Values equal the interpreter's rows to round-off (the same terms, summed in role order);
 // each element is computed on its own, so any thread count gives the same bits.
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -28,20 +29,24 @@
 
 namespace subdiv {
 
+class FlatKernels;
+
 // Hidden: the per-element kernels are member templates, which a shared library would
 // otherwise call through the PLT (vague linkage), one call per new point.
 class [[gnu::visibility("hidden")]] SmoothKernels {
 public:
   SmoothKernels(const StepContext& step, const std::vector<ChildGroup>& groups);
+  ~SmoothKernels();
 
   // Whether `kind`'s smooth rule compiled to a kernel.
   bool covers(Element kind) const { return !kernels_[int(kind)].empty(); }
   // Computes the new points of rows [begin, end) of `kind`'s group into dst (child-major,
   // in.channels values each). Rows whose element is not a smooth interior one are appended
   // to `left` for the generic path; rows whose weights do not sum to 1 are marked in
-  // `bad`. Returns how many rows it computed.
+  // `bad`. Returns how many rows it computed, and in `flat` how many of them by the flat
+  // kernels (flat_kernels.h), which take the kinds whose rule has one of their shapes.
   Index run(Element kind, const ChildGroup& group, Index begin, Index end, const StepSources& in, double* dst,
-            std::vector<Index>& left, FirstBadRow& bad) const;
+            std::vector<Index>& left, FirstBadRow& bad, Index& flat) const;
 
   // How a term gathers its points.
   enum class Gather : std::uint8_t {
@@ -98,6 +103,7 @@ private:
   bool edge_reads_shape_ = false;  // an edge term reads k, n0, n1, k0, k1 or needs triangles or rings
   // The parent level has no sharpness tags: its interior vertices and edges are smooth.
   const bool untagged_;
+  std::unique_ptr<const FlatKernels> flat_;
 };
 
 }  // namespace subdiv

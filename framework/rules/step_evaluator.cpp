@@ -55,7 +55,9 @@ void apply_group_rows(const StepContext& s, const RuleInputs& in, Element kind, 
     // The kernels first; the rows they leave (and all rows without them) by plan or rule.
     std::vector<Index> left;
     if (use_kernels) {
-      counted.kernel = kernels.run(kind, group, range.begin(), range.end(), sources, dst, left, first_bad);
+      Index flat = 0;
+      counted.kernel = kernels.run(kind, group, range.begin(), range.end(), sources, dst, left, first_bad, flat);
+      counted.flat = flat;
     } else {
       for (Index r = range.begin(); r < range.end(); ++r) left.push_back(r);
     }

@@ -75,7 +75,7 @@ struct WorkerReport {
   std::int64_t faces = 0;      // at the refined level
   std::uint64_t digest = 0;    // hash of the refined positions' bits in the side's own order
   // SubdivKit, cold repetition: new points computed by each path of step_values.
-  std::int64_t kernel_points = 0, plan_points = 0, generic_points = 0;
+  std::int64_t kernel_points = 0, plan_points = 0, generic_points = 0, flat_points = 0;  // flat: of the kernel points
   std::uint64_t check_modulus = 1;  // records kept: key % modulus == 0 (none if 0)
   std::vector<CheckRecord> records;
 };

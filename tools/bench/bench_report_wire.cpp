@@ -21,7 +21,7 @@ struct WireHeader {
   double peak_mb;
   std::int64_t base_faces, vertices, faces;
   std::uint64_t digest, check_modulus, record_count;
-  std::int64_t kernel_points, plan_points, generic_points;
+  std::int64_t kernel_points, plan_points, generic_points, flat_points;
 };
 
 void write_all(int fd, const void* data, size_t size) {
@@ -45,7 +45,7 @@ std::string describe_exit(int status) {
 void send_report(int fd, const WorkerReport& r) {
   const WireHeader h{kMagic,   r.cold,          r.warm,           r.warm_digest_same, r.peak_mb,
                      r.base_faces, r.vertices,  r.faces,          r.digest,           r.check_modulus,
-                     r.records.size(), r.kernel_points, r.plan_points, r.generic_points};
+                     r.records.size(), r.kernel_points, r.plan_points, r.generic_points, r.flat_points};
   write_all(fd, &h, sizeof h);
   if (!r.records.empty()) write_all(fd, r.records.data(), r.records.size() * sizeof(CheckRecord));
 }
@@ -70,6 +70,7 @@ bool parse_report(const std::string& bytes, WorkerReport& r) {
   r.base_faces = h.base_faces, r.vertices = h.vertices, r.faces = h.faces;
   r.digest = h.digest, r.check_modulus = h.check_modulus;
   r.kernel_points = h.kernel_points, r.plan_points = h.plan_points, r.generic_points = h.generic_points;
+  r.flat_points = h.flat_points;
   r.records.resize(h.record_count);
   if (h.record_count) std::memcpy(r.records.data(), bytes.data() + sizeof h, h.record_count * sizeof(CheckRecord));
   return true;

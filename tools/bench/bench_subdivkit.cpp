@@ -44,6 +44,7 @@ void report_results(const Job& job, const Mesh& mesh, const subdiv::Hierarchy& h
                     std::uint64_t digest, const subdiv::RowPaths& paths, WorkerReport& report) {
   report.peak_rss_bytes = peak_rss_bytes();
   report.kernel_points = paths.kernel, report.plan_points = paths.plan, report.generic_points = paths.generic;
+  report.flat_points = paths.flat;
   const auto& last = h.levels[size_t(job.level)];
   report.vertices = last.vertex_count;
   report.faces = last.face_count();

@@ -20,7 +20,7 @@ struct Refined {
   std::int64_t peak_rss_bytes = 0;
   // SubdivKit: new points computed by the compiled kernels, by learnt row plans and by the
   // generic rule interpreter (rules/row_paths.h), which says where its time goes.
-  std::int64_t kernel_points = 0, plan_points = 0, generic_points = 0;
+  std::int64_t kernel_points = 0, plan_points = 0, generic_points = 0, flat_points = 0;  // flat: of the kernel points
 };
 
 // Scheme names are SubdivKit's (schemes/*.json): sqrt3, doo-sabin, modified-butterfly,

@@ -35,6 +35,7 @@ SideRun subdivkit_side(const SideRequest& request) {
     out.faces = h.levels[size_t(level)].face_count();
     out.xyz = std::move(values);
     out.kernel_points = paths.kernel, out.plan_points = paths.plan, out.generic_points = paths.generic;
+    out.flat_points = paths.flat;
   };
 }
 

@@ -61,7 +61,7 @@ int meshlibs_worker_main(const MeshlibsJob& job, int fd) {
         cold->check_modulus = check_modulus_for(cold->vertices, job.check_max);
         cold->records = sample_points(refined.xyz, cold->check_modulus);
         cold->kernel_points = refined.kernel_points, cold->plan_points = refined.plan_points;
-        cold->generic_points = refined.generic_points;
+        cold->generic_points = refined.generic_points, cold->flat_points = refined.flat_points;
       }
       return digest;
     });

@@ -358,6 +358,7 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
       field("warm_bits", first.report.warm_digest_same ? "same" : "DIFFERENT");
       if (!job.tables) {
         field("kernel_points", std::to_string(first.report.kernel_points));
+        field("flat_points", std::to_string(first.report.flat_points));
         field("plan_points", std::to_string(first.report.plan_points));
         field("generic_points", std::to_string(first.report.generic_points));
       }

@@ -112,7 +112,8 @@ std::string result_line(const MeshlibsJob& job, const WorkerOutcome& ours, const
   times("subdivkit_geom_ms", ours.ok, a.warm.geom(), false);
   if (ours.ok)
     field("subdivkit_points", "kernel:" + std::to_string(a.kernel_points) + ",plan:" + std::to_string(a.plan_points) +
-                                  ",generic:" + std::to_string(a.generic_points));
+                                  ",generic:" + std::to_string(a.generic_points) +
+                                  ",flat:" + std::to_string(a.flat_points));
   times("subdivkit_user_ms", ours.ok, a.warm.total(), true);
   times("other_user_ms", theirs.ok, b.warm.total(), true);
   ratio("user_ratio", a.warm.total().user_ms, b.warm.total().user_ms);

@@ -1,0 +1,235 @@
+#include "framework/rules/flat_kernels.h"
+
+#include <algorithm>
+#include <initializer_list>
+
+#include "framework/rules/point_accumulator.h"
+#include "framework/rules/weight_tables.h"
+
+namespace subdiv {
+namespace {
+
+using Points = FlatKernels::Points;
+using TermShape = FlatKernels::TermShape;
+
+bool smooth(const VertexContext& vc) { return vc.parent == Context::Smooth && vc.child == Context::Smooth; }
+
+// Whether every term gathers one of `allowed` with a weight that is the same for every
+// point of the role and reads at most the element's own n (or k).
+bool fits(const std::vector<TermShape>& terms, std::initializer_list<Points> allowed) {
+  if (terms.empty()) return false;
+  for (const TermShape& t : terms) {
+    if (t.varies || t.reads_shape) return false;
+    if (std::find(allowed.begin(), allowed.end(), t.points) == allowed.end()) return false;
+  }
+  return true;
+}
+
+bool uses(const std::vector<TermShape>& terms, Points points) {
+  return std::any_of(terms.begin(), terms.end(), [&](const TermShape& t) { return t.points == points; });
+}
+
+// The merged weight of the terms gathering `points`, at (n, k): the element_rules.cpp
+// arguments of a vertex of valence n (n, 0), an edge (2, 0: its terms read no k here) and
+// a face of size k (k, k).
+double weight_of(const std::vector<TermShape>& terms, Points points, int n, int k) {
+  double w = 0.0;
+  for (const TermShape& t : terms)
+    if (t.points == points) w += t.weights->weight(n, k, 0);
+  return w;
+}
+
+}  // namespace
+
+FlatKernels::FlatKernels(const StepContext& step, const std::vector<ChildGroup>& groups,
+                         const std::vector<TermShape> (&terms)[kElementCount])
+    : step_(step), untagged_(step.parent.edge_sharpness.empty() && step.parent.vertex_sharpness.empty()) {
+  const Level& L = step.parent;
+  const Index element_count[kElementCount] = {L.vertex_count, L.edge_count(), L.face_count(), L.corner_count()};
+  for (int k = 0; k < kElementCount; ++k) {
+    const ChildGroup& g = groups[k];
+    first_child_[k] = g.first_of_run() != kNone && g.size() == element_count[k] ? g.first_of_run() : kNone;
+  }
+  const bool face_points = first_child_[int(Element::Face)] != kNone;
+  const bool edge_points = first_child_[int(Element::Edge)] != kNone;
+  auto new_points_available = [&](const std::vector<TermShape>& t) {
+    return (!uses(t, Points::FacePoints) || face_points) && (!uses(t, Points::EdgePoints) || edge_points);
+  };
+  const WeightTables& tables = step.tables;
+
+  // Vertices: weights per valence n, up to the tables' largest n.
+  const auto& vt = terms[int(Element::Vertex)];
+  if (first_child_[int(Element::Vertex)] != kNone &&
+      fits(vt, {Points::Self, Points::Ring, Points::FacePoints, Points::EdgePoints}) && new_points_available(vt)) {
+    PerSize& p = vertex_;
+    p.uses_face_points = uses(vt, Points::FacePoints), p.uses_edge_points = uses(vt, Points::EdgePoints);
+    for (int n = 0; n <= tables.max_n; ++n) {
+      p.self.push_back(weight_of(vt, Points::Self, n, 0));
+      p.ring.push_back(weight_of(vt, Points::Ring, n, 0));
+      p.face_points.push_back(weight_of(vt, Points::FacePoints, n, 0));
+      p.edge_points.push_back(weight_of(vt, Points::EdgePoints, n, 0));
+      p.sum_ok.push_back(row_sum_ok(p.self[n] + n * (p.ring[n] + p.face_points[n] + p.edge_points[n])));
+    }
+    covers_[int(Element::Vertex)] = true;
+  }
+  // Edges: constant weights.
+  const auto& et = terms[int(Element::Edge)];
+  if (first_child_[int(Element::Edge)] != kNone && fits(et, {Points::Ends, Points::FacePoints, Points::Opposite}) &&
+      new_points_available(et)) {
+    EdgeWeights& w = edge_;
+    w.uses_face_points = uses(et, Points::FacePoints), w.uses_opposite = uses(et, Points::Opposite);
+    w.ends = weight_of(et, Points::Ends, 2, 0), w.face_points = weight_of(et, Points::FacePoints, 2, 0);
+    w.opposite = weight_of(et, Points::Opposite, 2, 0);
+    w.sum_ok = row_sum_ok(2 * (w.ends + w.face_points + w.opposite));
+    covers_[int(Element::Edge)] = true;
+  }
+  // Faces: weights per face size k (the rule reads k as n and k).
+  const auto& ft = terms[int(Element::Face)];
+  if (first_child_[int(Element::Face)] != kNone && fits(ft, {Points::Corners, Points::EdgePoints}) &&
+      new_points_available(ft)) {
+    PerSize& p = face_;
+    p.uses_edge_points = uses(ft, Points::EdgePoints);
+    // Face weights are read at (n, k) = (k, k); the tables reach n up to the largest valence
+    // only, which a face may exceed (a pentagon among valence-3 vertices).
+    const bool reads_n = std::any_of(ft.begin(), ft.end(), [](const TermShape& t) { return t.weights->stride_n != 0; });
+    const int max_k = reads_n ? std::min(tables.max_n, tables.max_k) : tables.max_k;
+    for (int k = 0; k <= max_k; ++k) {
+      p.corners.push_back(weight_of(ft, Points::Corners, k, k));
+      p.edge_points.push_back(weight_of(ft, Points::EdgePoints, k, k));
+      p.sum_ok.push_back(row_sum_ok(k * (p.corners[k] + p.edge_points[k])));
+    }
+    covers_[int(Element::Face)] = true;
+  }
+}
+
+bool FlatKernels::covers(Element kind) const { return covers_[int(kind)]; }
+
+Index FlatKernels::run(Element kind, Index begin, Index end, const StepSources& in, double* dst,
+                       std::vector<Index>& left, FirstBadRow& bad) const {
+  const bool three = in.channels == 3;
+  switch (kind) {
+    case Element::Vertex:
+      return three ? run_vertices<3>(begin, end, in, dst, left, bad) : run_vertices<0>(begin, end, in, dst, left, bad);
+    case Element::Edge:
+      return three ? run_edges<3>(begin, end, in, dst, left, bad) : run_edges<0>(begin, end, in, dst, left, bad);
+    case Element::Face:
+      return three ? run_faces<3>(begin, end, in, dst, left, bad) : run_faces<0>(begin, end, in, dst, left, bad);
+    case Element::Corner: break;
+  }
+  return 0;
+}
+
+// Row r is vertex r; the smooth interior ones (the smooth kernels' vertex_point conditions).
+template <int C>
+Index FlatKernels::run_vertices(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
+                                FirstBadRow& bad) const {
+  const Level& L = step_.parent;
+  const PerSize& w = vertex_;
+  const int max_n = int(w.self.size()) - 1;
+  const Index first = first_child_[int(Element::Vertex)];
+  const double* face_points = w.uses_face_points ? in.child(first_child_[int(Element::Face)]) : nullptr;
+  const double* edge_points = w.uses_edge_points ? in.child(first_child_[int(Element::Edge)]) : nullptr;
+  const int channels = in.channels;
+  const bool manifold = L.manifold();
+  Index done = 0;
+  for (Index v = begin; v < end; ++v) {
+    const Index ring_begin = L.vertex_ring_offsets[v], n = L.vertex_ring_offsets[v + 1] - ring_begin;
+    if (L.vertex_on_boundary[v] || (!manifold && L.non_manifold_vertex(v)) || n > max_n ||
+        (untagged_ ? n == 0 : !smooth(step_.features.vertices[v])) || L.incident_face_count(v) != n) {
+      left.push_back(v);
+      continue;
+    }
+    const Index* ring = L.vertex_edges.data() + ring_begin;
+    PointAccumulator<C> acc(dst + size_t(first + v) * channels, channels);
+    acc.add(in.vertex(v), w.self[n]);
+    const double w_ring = w.ring[n];
+    for (Index j = 0; j < n; ++j) acc.add(in.vertex(L.other_end(ring[j], v)), w_ring);
+    if (face_points) {
+      const Index* faces = L.vertex_faces.data() + L.vertex_face_offsets[v];
+      const double w_face = w.face_points[n];
+      for (Index j = 0; j < n; ++j) acc.add(face_points + size_t(faces[j]) * channels, w_face);
+    }
+    if (edge_points) {
+      const double w_edge = w.edge_points[n];
+      for (Index j = 0; j < n; ++j) acc.add(edge_points + size_t(ring[j]) * channels, w_edge);
+    }
+    acc.store();
+    ++done;
+    if (!w.sum_ok[n]) bad.mark(v);
+  }
+  return done;
+}
+
+// Row r is edge r; the interior smooth ones, and for the opposite vertices only edges
+// between two triangles.
+template <int C>
+Index FlatKernels::run_edges(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
+                             FirstBadRow& bad) const {
+  const Level& L = step_.parent;
+  const EdgeWeights& w = edge_;
+  const Index first = first_child_[int(Element::Edge)];
+  const double* face_points = w.uses_face_points ? in.child(first_child_[int(Element::Face)]) : nullptr;
+  const int channels = in.channels;
+  const bool manifold = L.manifold();
+  // The corner of triangle f that is not a or b (face_vertices of a triangle: 3 in a row).
+  auto third = [&](Index f, Index a, Index b) {
+    const Index* c = L.face_vertices.data() + L.face_offsets[f];
+    return c[0] != a && c[0] != b ? c[0] : c[1] != a && c[1] != b ? c[1] : c[2];
+  };
+  Index done = 0;
+  for (Index e = begin; e < end; ++e) {
+    const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
+    const Index f0 = L.edge_faces[2 * e], f1 = L.edge_faces[2 * e + 1];
+    if (f1 == kNone || (!manifold && L.non_manifold_edge(e)) ||
+        (!untagged_ && step_.features.edges[e].crease_weight != 0.f) ||
+        (w.uses_opposite && (L.face_size(f0) != 3 || L.face_size(f1) != 3))) {
+      left.push_back(e);
+      continue;
+    }
+    PointAccumulator<C> acc(dst + size_t(first + e) * channels, channels);
+    acc.add(in.vertex(a), w.ends), acc.add(in.vertex(b), w.ends);
+    if (face_points)
+      acc.add(face_points + size_t(f0) * channels, w.face_points), acc.add(face_points + size_t(f1) * channels, w.face_points);
+    if (w.uses_opposite)
+      acc.add(in.vertex(third(f0, a, b)), w.opposite), acc.add(in.vertex(third(f1, a, b)), w.opposite);
+    acc.store();
+    ++done;
+    if (!w.sum_ok) bad.mark(e);
+  }
+  return done;
+}
+
+// Row r is face r; every face whose size the tables reach.
+template <int C>
+Index FlatKernels::run_faces(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
+                             FirstBadRow& bad) const {
+  const Level& L = step_.parent;
+  const PerSize& w = face_;
+  const int max_k = int(w.corners.size()) - 1;
+  const Index first = first_child_[int(Element::Face)];
+  const double* edge_points = w.uses_edge_points ? in.child(first_child_[int(Element::Edge)]) : nullptr;
+  const int channels = in.channels;
+  Index done = 0;
+  for (Index f = begin; f < end; ++f) {
+    const Index corner_begin = L.face_offsets[f], k = L.face_offsets[f + 1] - corner_begin;
+    if (k > max_k) {
+      left.push_back(f);
+      continue;
+    }
+    PointAccumulator<C> acc(dst + size_t(first + f) * channels, channels);
+    const Index* corners = L.face_vertices.data() + corner_begin;
+    const double w_corner = w.corners[k];
+    for (Index j = 0; j < k; ++j) acc.add(in.vertex(corners[j]), w_corner);
+    if (edge_points) {
+      const Index* edges = L.face_edges.data() + corner_begin;
+      const double w_edge = w.edge_points[k];
+      for (Index j = 0; j < k; ++j) acc.add(edge_points + size_t(edges[j]) * channels, w_edge);
+    }
+    acc.store();
+    ++done;
+    if (!w.sum_ok[k]) bad.mark(f);
+  }
+  return done;
+}
+
+}  // namespace subdiv

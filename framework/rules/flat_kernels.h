@@ -1,0 +1,94 @@
+#pragma once
+// Flat kernels: the three shapes most smooth rules take, run as straight loops.
+//
+// The smooth kernels (smooth_kernels.h) run any rule written with their roles, one term at
+// a time, each term's weight looked up for the element at hand. Most shipped schemes'
+// rules are simpler than that allows, and their shape can be seen once per step:
+//
+//  - a face point:   w(k) times each corner, plus w'(k) times each edge point
+//                    (k the face size);
+//  - an edge point:  constant weights on its two ends, the new points of its two faces and
+//                    the vertices opposite it in its two triangles;
+//  - a vertex point: w_self(n) times itself, w_ring(n) times each ring vertex, w_face(n)
+//                    times each face point, w_edge(n) times each edge point (n the valence).
+//
+// A kind whose compiled terms fit its shape has its weights tabulated per valence or face
+// size (summed over terms that gather the same points), and its new points are computed by
+// a loop that reads the topology arrays and the points directly, as a hand-written
+// subdivision loop would (OpenSubdiv's Far::PrimvarRefiner): no term list, no per-term
+// lookup, the row's weight sum checked once per valence instead of once per point. This
+// halves the time of the smooth kernels for Catmull-Clark and Loop. Nothing here knows a
+// scheme: the shapes are read off the terms.
+//
+// Elements the loop cannot take (boundaries, features, non-manifold topology, a valence
+// or face size beyond the tables) are left to the smooth kernels and the interpreter
+// behind them. The values equal the smooth kernels' to round-off (a term's weight is
+// applied to each point as there; terms gathering the same points are merged); each point
+// is computed on its own, so any thread count gives the same bits.
+#include <cstdint>
+#include <vector>
+
+#include "framework/rules/element_rules.h"
+#include "framework/rules/step_rows.h"
+#include "framework/rules/step_sources.h"
+
+namespace subdiv {
+
+struct CompiledTerm;
+
+class [[gnu::visibility("hidden")]] FlatKernels {
+public:
+  // What a term of a smooth rule gathers, as far as the flat shapes are concerned.
+  enum class Points : std::uint8_t { Self, Ring, FacePoints, EdgePoints, Ends, Opposite, Corners, Other };
+  struct TermShape {
+    Points points;
+    const CompiledTerm* weights;
+    bool varies;       // the weight changes along the role (point j)
+    bool reads_shape;  // the weight reads more than the element's own n (or k)
+  };
+
+  // terms[kind]: the kind's smooth terms, or empty when the smooth kernels do not cover it.
+  FlatKernels(const StepContext& step, const std::vector<ChildGroup>& groups,
+              const std::vector<TermShape> (&terms)[kElementCount]);
+
+  bool covers(Element kind) const;
+  // Computes rows [begin, end) of `kind`'s group into dst as SmoothKernels::run does
+  // (rows it cannot take go to `left`, rows whose weights do not sum to 1 are marked in
+  // `bad`) and returns how many it computed. Only for kinds it covers.
+  Index run(Element kind, Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
+            FirstBadRow& bad) const;
+
+private:
+  // Weights per valence (vertex) or face size (face), indexed by n; `sum_ok[n]` is false
+  // where the row's weights would not sum to 1.
+  struct PerSize {
+    std::vector<double> self, ring, face_points, edge_points, corners;
+    std::vector<std::uint8_t> sum_ok;
+    bool uses_face_points = false, uses_edge_points = false;
+  };
+  struct EdgeWeights {
+    double ends = 0, face_points = 0, opposite = 0;
+    bool uses_face_points = false, uses_opposite = false, sum_ok = true;
+  };
+
+  template <int C>
+  Index run_vertices(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
+                     FirstBadRow& bad) const;
+  template <int C>
+  Index run_edges(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
+                  FirstBadRow& bad) const;
+  template <int C>
+  Index run_faces(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
+                  FirstBadRow& bad) const;
+
+  const StepContext& step_;
+  const bool untagged_;
+  // The first child of each kind's run (primal splits: element e's new point is first + e),
+  // or kNone when the kind's children are not one run over all its elements.
+  Index first_child_[kElementCount];
+  bool covers_[kElementCount] = {};
+  PerSize vertex_, face_;
+  EdgeWeights edge_;
+};
+
+}  // namespace subdiv
