@@ -2,7 +2,10 @@
 
 #include <cmath>
 #include <fmt/format.h>
+#include <functional>
 #include <limits>
+#include <mutex>
+#include <tbb/task_arena.h>
 
 #include "framework/engine/vertex_parameters.h"
 #include "framework/features/base_tags.h"
@@ -56,26 +59,50 @@ void check_manifold_for(const Scheme& scheme, const Level& level) {
 struct StepInputs {
   WeightTables tables;
   std::unique_ptr<PerVertexTables> per_vertex;
-  FeatureContexts features;
+  std::unique_ptr<FeatureContexts> features;  // on the heap: `classify` fills it in place
+  // Set when `features` are left for the first row that needs them (StepContext::classify).
+  std::unique_ptr<std::function<void()>> classify;
+  std::unique_ptr<std::once_flag> classified;
 };
 
-// `values`: the per-vertex parameters on `parent`.
+// `values`: the per-vertex parameters on `parent`. With `lazy_features`, a level without
+// sharpness tags gets its feature contexts only when a row first needs them: the kernels
+// compute its smooth points from topology alone, so a closed manifold mesh never does, and
+// classifying every vertex and edge is a tenth of a step.
 StepInputs prepare_step(const Scheme& scheme, const StepRules& step, const Level& parent, int level,
-                        const RefineOptions& options, const VertexParameters& values) {
+                        const RefineOptions& options, const VertexParameters& values, bool lazy_features = false) {
   const int max_n = parent.max_valence(), max_k = parent.max_face_size();
-  return {step_weight_tables(scheme, step, max_n, max_k, level),
-          per_vertex_tables(scheme, step, parent, values, max_n, max_k, level),
-          classify_features(parent, options.features)};
+  StepInputs inputs{step_weight_tables(scheme, step, max_n, max_k, level),
+                    per_vertex_tables(scheme, step, parent, values, max_n, max_k, level),
+                    std::make_unique<FeatureContexts>(),
+                    nullptr,
+                    nullptr};
+  const bool untagged = parent.edge_sharpness.empty() && parent.vertex_sharpness.empty();
+  if (!lazy_features || !untagged) {
+    *inputs.features = classify_features(parent, options.features);
+    return inputs;
+  }
+  inputs.classified = std::make_unique<std::once_flag>();
+  inputs.classify = std::make_unique<std::function<void()>>(
+      [&parent, &options, features = inputs.features.get(), once = inputs.classified.get()] {
+        // Isolated: while this thread classifies, it must not pick up another row task of
+        // the step, which would wait on the same once_flag.
+        std::call_once(*once, [&] {
+          tbb::this_task_arena::isolate([&] { *features = classify_features(parent, options.features); });
+        });
+      });
+  return inputs;
 }
 
 StepContext step_context(const Scheme& scheme, const StepRules& step, const StepInputs& inputs, const Level& parent,
                          const ChildOrigins& origins, bool features_refined, int level, const RefineOptions& options) {
   // Row plans replay one vertex's row for another of the same shape: not when their rules differ.
   const bool plans = options.use_row_plans && !inputs.per_vertex;
-  StepContext s{parent,      origins,         inputs.tables, inputs.features, features_refined,
+  StepContext s{parent,      origins,         inputs.tables, *inputs.features, features_refined,
                 scheme.path, step.code.get(), level,         plans};
   s.per_vertex = inputs.per_vertex.get();
   s.use_kernels = options.use_kernels;
+  s.classify = inputs.classify.get();
   return s;
 }
 
@@ -92,7 +119,7 @@ std::vector<double> step_rows_applied(const Scheme& scheme, const StepRules& ste
                                       const ChildOrigins& origins, bool features_refined, int level,
                                       const RefineOptions& options, const VertexParameters& parameters,
                                       std::span<const double> values, int channels) {
-  const StepInputs inputs = prepare_step(scheme, step, parent, level, options, parameters);
+  const StepInputs inputs = prepare_step(scheme, step, parent, level, options, parameters, /*lazy_features=*/true);
   std::vector<double> out;
   resize_bulk(out, origins.kind.size() * size_t(channels));
   apply_step_rows(step_context(scheme, step, inputs, parent, origins, features_refined, level, options), values, out,

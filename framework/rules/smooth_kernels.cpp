@@ -355,10 +355,19 @@ bool SmoothKernels::corner_point(Index f, int corner, const StepSources& in, dou
   const auto corners = L.face(f);
   const auto edges = L.face_edge_list(f);
   const int k = int(corners.size()), channels = in.channels;
-  const FeatureContexts& F = step_.features;
-  if (F.vertex_sharpness[corners[corner]] > 0.f || F.edges[edges[corner]].crease_weight != 0.f ||
-      F.edges[edges[(corner + k - 1) % k]].crease_weight != 0.f)
-    return false;
+  const Index out_edge = edges[corner], in_edge = edges[(corner + k - 1) % k];
+  if (untagged_) {
+    // Untagged, only boundary edges are sharp (feature_context.cpp), and a vertex is sharp
+    // only as a boundary corner, whose two edges are boundary edges.
+    if (L.edge_on_boundary(out_edge) || L.edge_on_boundary(in_edge) || L.non_manifold_edge(out_edge) ||
+        L.non_manifold_edge(in_edge))
+      return false;
+  } else {
+    const FeatureContexts& F = step_.features;
+    if (F.vertex_sharpness[corners[corner]] > 0.f || F.edges[out_edge].crease_weight != 0.f ||
+        F.edges[in_edge].crease_weight != 0.f)
+      return false;
+  }
   PointAccumulator<C> acc(out, channels);
   double sum = 0.0;
   for (const Term& term : kernels_[int(Element::Corner)]) {

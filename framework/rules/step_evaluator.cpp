@@ -61,6 +61,7 @@ void apply_group_rows(const StepContext& s, const RuleInputs& in, Element kind, 
     } else {
       for (Index r = range.begin(); r < range.end(); ++r) left.push_back(r);
     }
+    if (!left.empty()) s.need_features();
     for (Index r : left) {
       const Index child = group.child(r);
       double* out = dst + size_t(child) * channels;

@@ -239,6 +239,7 @@ double weight_sum(std::span<const double> weights) {
 void FirstBadRow::report_if_any(const StepContext& s, const RuleInputs& in, const ChildGroup& group) const {
   const Index r = first_.load();
   if (r == count_) return;
+  s.need_features();
   const Index child = group.child(r);
   RowBuilder row;
   fill_row(row, s, in, child);

@@ -8,6 +8,7 @@
 // any splitter that records origins works, and smoothing passes are steps whose origins
 // are the vertices themselves.
 #include <atomic>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -46,6 +47,13 @@ struct StepContext {
   bool use_kernels = true;
   // Set when vertex rules differ per vertex; `tables` then serves the other elements.
   const PerVertexTables* per_vertex = nullptr;
+  // Set when `features` are computed on first use (the step evaluator on a level without
+  // sharpness tags: its kernels read the topology alone, so on a closed manifold mesh no
+  // row ever needs the contexts). Rows built by the rules call need_features() first.
+  const std::function<void()>* classify = nullptr;
+  void need_features() const {
+    if (classify) (*classify)();
+  }
 
   const WeightTables& vertex_tables(Index v) const { return per_vertex ? per_vertex->tables[per_vertex->group[v]] : tables; }
 };
