@@ -84,18 +84,23 @@ Index third_corner(const Level& L, Index f, Index a, Index b) {
   return kNone;
 }
 
-// In triangle f, the vertex across its edge (x, y): the third vertex of the triangle on the
-// other side, or kNone where there is none to read plainly (a boundary, a non-manifold edge,
-// a face that is not a triangle: the interpreter's cases). element_rules.cpp, add_across.
-Index across(const Level& L, Index f, Index x, Index y) {
-  for (Index e : L.face_edge_list(f)) {
-    const Index u = L.edge_vertices[2 * e], w = L.edge_vertices[2 * e + 1];
-    if (!((u == x && w == y) || (u == y && w == x))) continue;
-    if (L.edge_on_boundary(e) || L.non_manifold_edge(e)) return kNone;
-    const Index g = L.edge_faces[2 * e] == f ? L.edge_faces[2 * e + 1] : L.edge_faces[2 * e];
-    return third_corner(L, g, x, y);
-  }
-  return kNone;
+// The place of edge e in triangle f's edges (edge i runs from corner i to corner i + 1, so
+// corner i + 2 is opposite it), or -1 when f is not a triangle holding e.
+int place_in_triangle(const Level& L, Index f, Index e) {
+  const Index o = L.face_offsets[f];
+  if (L.face_offsets[f + 1] - o != 3) return -1;
+  const Index* edges = L.face_edges.data() + o;
+  return edges[0] == e ? 0 : edges[1] == e ? 1 : edges[2] == e ? 2 : -1;
+}
+
+// Across edge e of triangle f: the corner opposite e in the triangle on e's other side, or
+// kNone where there is none to read plainly (a boundary, a non-manifold edge, a face that
+// is not a triangle: the interpreter's cases). element_rules.cpp, add_across.
+Index across(const Level& L, Index f, Index e) {
+  if (L.edge_on_boundary(e) || L.non_manifold_edge(e)) return kNone;
+  const Index g = L.edge_faces[2 * e] == f ? L.edge_faces[2 * e + 1] : L.edge_faces[2 * e];
+  const int i = place_in_triangle(L, g, e);
+  return i < 0 ? kNone : L.face_vertices[L.face_offsets[g] + (i + 2) % 3];
 }
 
 // A term as the flat kernels see it: the points it gathers, and whether its weight reads
@@ -285,12 +290,17 @@ bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, doub
         }
         break;
       case Gather::FarWings:
-        // Triangle j runs (p, q, c); its far wings lie across (q, c) and (c, p).
+        // Most edges of a scheme that switches stencils by its ends' valences give the other
+        // stencil's points weight 0 (the modified butterfly: far wings only between two
+        // regular ends, end rings only at an extraordinary one): their gathers are skipped.
+        if (weight(3, 0) == 0.0 && weight(3, 1) == 0.0 && weight(3, 2) == 0.0 && weight(3, 3) == 0.0) break;
+        // Triangle j runs (p, q, c), e being its edge i from p to q; its far wings lie across
+        // (q, c) and (c, p), its edges i + 1 and i + 2.
         for (int j = 0; j < 2; ++j) {
-          const Index p = j == 0 ? a : b, q = j == 0 ? b : a;
-          const Index c = third_corner(L, faces[j], a, b);
-          if (c == kNone) return false;
-          const Index far[2] = {across(L, faces[j], q, c), across(L, faces[j], c, p)};
+          const int i = place_in_triangle(L, faces[j], e);
+          if (i < 0) return false;
+          const Index* edges = L.face_edges.data() + L.face_offsets[faces[j]];
+          const Index far[2] = {across(L, faces[j], edges[(i + 1) % 3]), across(L, faces[j], edges[(i + 2) % 3])};
           for (int i = 0; i < 2; ++i) {
             if (far[i] == kNone) return false;
             const double w = weight(3, 2 * j + i);
@@ -304,6 +314,9 @@ bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, doub
         const Index end = term.gather == Gather::EndRing0 ? a : b;
         const auto ring = L.ring_edges(end);
         const int n = int(ring.size());
+        bool any = false;
+        for (int j = 0; j < n && !any; ++j) any = weight(0, j) != 0.0;
+        if (!any) break;  // as the far wings above
         int start = 0;
         while (start < n && ring[start] != e) ++start;
         for (int j = 0; j < n; ++j) {
