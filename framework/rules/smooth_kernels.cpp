@@ -124,6 +124,21 @@ FlatKernels::TermShape flat_shape(Element element, const SmoothKernels::Term& t)
   return {points, t.weights, t.varies, reads_shape};
 }
 
+// Term::zero_by_ends for an edge's far-wing and end-ring terms whose weights read no face
+// size: every tabulated j at each (n0, n1), at the k the kernel passes (3 for far wings, 0
+// for end rings; unread here).
+void tabulate_zero_weights(SmoothKernels::Term& t, int max_n) {
+  const bool gathers_many = t.gather == Gather::FarWings || t.gather == Gather::EndRing0 || t.gather == Gather::EndRing1;
+  const CompiledTerm& w = *t.weights;
+  if (!gathers_many || w.stride_k || w.stride_k0 || w.stride_k1 || max_n > 64) return;
+  t.max_n = max_n;
+  t.zero_by_ends.assign(size_t(max_n + 1) * size_t(max_n + 1), 1);
+  for (int n0 = 0; n0 <= max_n; ++n0)
+    for (int n1 = 0; n1 <= max_n; ++n1)
+      for (int j = 0; j <= (w.stride_j ? w.max_j : 0); ++j)
+        if (w.weight(2, 0, j, n0, n1) != 0.0) t.zero_by_ends[size_t(n0) * size_t(max_n + 1) + size_t(n1)] = 0;
+}
+
 }  // namespace
 
 SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGroup>& groups)
@@ -140,6 +155,7 @@ SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGro
       shapes[k].push_back(flat_shape(Element(k), t));
     }
   }
+  for (Term& t : kernels_[int(Element::Edge)]) tabulate_zero_weights(t, step.tables.max_n);
   flat_ = std::make_unique<const FlatKernels>(step, groups, shapes);
 }
 
@@ -293,7 +309,10 @@ bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, doub
         // Most edges of a scheme that switches stencils by its ends' valences give the other
         // stencil's points weight 0 (the modified butterfly: far wings only between two
         // regular ends, end rings only at an extraordinary one): their gathers are skipped.
-        if (weight(3, 0) == 0.0 && weight(3, 1) == 0.0 && weight(3, 2) == 0.0 && weight(3, 3) == 0.0) break;
+        if (const auto zero = term.zero_at(n0, n1); zero == Term::Zero::Yes ||
+            (zero == Term::Zero::Unknown && weight(3, 0) == 0.0 && weight(3, 1) == 0.0 && weight(3, 2) == 0.0 &&
+             weight(3, 3) == 0.0))
+          break;
         // Triangle j runs (p, q, c), e being its edge i from p to q; its far wings lie across
         // (q, c) and (c, p), its edges i + 1 and i + 2.
         for (int j = 0; j < 2; ++j) {
@@ -314,9 +333,12 @@ bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, doub
         const Index end = term.gather == Gather::EndRing0 ? a : b;
         const auto ring = L.ring_edges(end);
         const int n = int(ring.size());
-        bool any = false;
+        // As the far wings above.
+        const auto zero = term.zero_at(n0, n1);
+        if (zero == Term::Zero::Yes) break;
+        bool any = zero == Term::Zero::No;
         for (int j = 0; j < n && !any; ++j) any = weight(0, j) != 0.0;
-        if (!any) break;  // as the far wings above
+        if (!any) break;
         int start = 0;
         while (start < n && ring[start] != e) ++start;
         for (int j = 0; j < n; ++j) {

@@ -73,6 +73,17 @@ public:
       if (reads == Reads::K) return weights->table[size_t(k) * weights->stride_k];
       return weights->weight(n, k, j, n0, n1, k0, k1);
     }
+    // For an edge's far wings and end rings, whose weights often vanish by the ends'
+    // valences (one stencil or another): per (n0, n1), whether every weight of the term is
+    // 0 (its points are then not gathered). Empty when the weights read more than n0 and n1.
+    std::vector<std::uint8_t> zero_by_ends;
+    int max_n = 0;
+    // True / false when the table says so; nullopt-like `unknown` otherwise.
+    enum class Zero : std::uint8_t { Unknown, Yes, No };
+    Zero zero_at(int n0, int n1) const {
+      if (zero_by_ends.empty() || n0 > max_n || n1 > max_n) return Zero::Unknown;
+      return zero_by_ends[size_t(n0) * size_t(max_n + 1) + size_t(n1)] ? Zero::Yes : Zero::No;
+    }
   };
 
 private:
