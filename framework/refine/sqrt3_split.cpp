@@ -157,9 +157,9 @@ struct Sqrt3Builder {
   }
 };
 
-}  // namespace
-
-SplitResult split_sqrt3(const Level& parent, int step_index) {
+// The child's faces and origins, and (with `full`) its edges and rings; the trisection
+// points' first index per feature edge in *trisection_base.
+SplitResult sqrt3_children(const Level& parent, int step_index, bool full, std::vector<Index>* trisection_base) {
   const Index V = parent.vertex_count, F = parent.face_count(), E = parent.edge_count();
   for (Index f = 0; f < F; ++f)
     if (parent.face_size(f) != 3)
@@ -192,7 +192,30 @@ SplitResult split_sqrt3(const Level& parent, int step_index) {
       }
   for (Index e = 0; e < E; ++e) b.add_edge(e);
   o.parent_face = std::move(b.parent_face);
-  SplitResult result{build_level(next, b.offsets, b.corners), std::move(o), trisect, non_manifold_warning(parent)};
+  Level child;
+  if (full) {
+    child = build_level(next, b.offsets, b.corners);
+  } else {
+    child.vertex_count = next;
+    child.face_offsets = std::move(b.offsets);
+    child.face_vertices = std::move(b.corners);
+  }
+  *trisection_base = std::move(b.trisection_base);
+  return {std::move(child), std::move(o), trisect, non_manifold_warning(parent)};
+}
+
+}  // namespace
+
+SplitResult split_sqrt3_faces(const Level& parent, int step_index) {
+  std::vector<Index> trisection_base;
+  return sqrt3_children(parent, step_index, false, &trisection_base);
+}
+
+SplitResult split_sqrt3(const Level& parent, int step_index) {
+  const Index V = parent.vertex_count;
+  const bool trisect = step_index % 2 == 1;
+  std::vector<Index> trisection_base;
+  SplitResult result = sqrt3_children(parent, step_index, true, &trisection_base);
 
   // Feature tags: a sharp edge's pieces keep its (decremented) sharpness.
   Level& child = result.child;
@@ -207,7 +230,7 @@ SplitResult split_sqrt3(const Level& parent, int step_index) {
       const float s = decremented_sharpness(parent.edge_sharpness[e]);
       const Index a = parent.edge_vertices[2 * e], bb = parent.edge_vertices[2 * e + 1];
       std::vector<Index> chain{a};
-      if (trisect) chain.insert(chain.end(), {b.trisection_base[e], b.trisection_base[e] + 1});
+      if (trisect) chain.insert(chain.end(), {trisection_base[e], trisection_base[e] + 1});
       chain.push_back(bb);
       for (size_t i = 0; i + 1 < chain.size(); ++i)
         if (const Index piece = find_edge(child, chain[i], chain[i + 1]); piece != kNone) child.edge_sharpness[piece] = s;
