@@ -30,10 +30,13 @@
 // its warning how many non-manifold edges and vertices it met.
 #include <algorithm>
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include "framework/features/sharpness.h"
 #include "framework/refine/child_tags.h"
 #include "framework/refine/splitter.h"
+#include "framework/refine/sqrt3_topology.h"
+#include "framework/util/bulk_memory.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -157,6 +160,25 @@ struct Sqrt3Builder {
   }
 };
 
+// The common case (sqrt3_topology.h): every edge flipped, children laid out in runs.
+SplitResult flip_children(const Level& parent, bool trisect, bool full, std::vector<Index>* trisection_base) {
+  const Index V = parent.vertex_count, F = parent.face_count();
+  ChildOrigins o;
+  resize_bulk(o.kind, size_t(V + F));
+  resize_bulk(o.parent, size_t(V + F));
+  assign_bulk(o.local, size_t(V + F), LocalIndex(0));
+  tbb::parallel_for(Index(0), V + F, [&](Index i) {
+    o.kind[i] = i < V ? OriginKind::Vertex : OriginKind::Face;
+    o.parent[i] = i < V ? i : i - V;
+  });
+  o.runs.emplace();
+  if (V > 0) o.runs->first[int(OriginKind::Vertex)] = 0, o.runs->count[int(OriginKind::Vertex)] = V;
+  if (F > 0) o.runs->first[int(OriginKind::Face)] = V, o.runs->count[int(OriginKind::Face)] = F;
+  Level child = sqrt3_flip_topology(parent, full, &o.parent_face);
+  trisection_base->assign(parent.edge_count(), kNone);
+  return {std::move(child), std::move(o), trisect};
+}
+
 // The child's faces and origins, and (with `full`) its edges and rings; the trisection
 // points' first index per feature edge in *trisection_base.
 SplitResult sqrt3_children(const Level& parent, int step_index, bool full, std::vector<Index>* trisection_base) {
@@ -165,6 +187,7 @@ SplitResult sqrt3_children(const Level& parent, int step_index, bool full, std::
     if (parent.face_size(f) != 3)
       throw Error(fmt::format("the sqrt3 split needs triangles, but face {} has {} vertices", f, parent.face_size(f)));
   const bool trisect = step_index % 2 == 1;
+  if (sqrt3_flips_every_edge(parent)) return flip_children(parent, trisect, full, trisection_base);
   Sqrt3Builder b{parent, trisect, std::vector<Index>(F, kNone), std::vector<Index>(F, kNone),
                  std::vector<Index>(E, kNone), {0}, {}, {}};
   ChildOrigins o;
