@@ -13,6 +13,8 @@ using namespace subdiv::test;
 TEST_CASE("a faces-only last level has the full level's faces and gives the same values") {
   for (const auto& case_ : {std::pair{"catmull-clark", torus(6, 5)}, std::pair{"catmull-clark", pyramid()},
                                    std::pair{"loop", grid(4, 3, true)}, std::pair{"sqrt3", torus(6, 5, true)},
+                                   std::pair{"sqrt3", grid(4, 3, true)}, std::pair{"doo-sabin", torus(6, 5)},
+                                   std::pair{"doo-sabin", pyramid()}, std::pair{"mid-edge", grid(4, 3)},
                                    std::pair{"loop-composite", torus(6, 5, true)}}) {
     const auto& [name, mesh] = case_;
     const std::string scheme_name = name;  // clang 14 cannot capture a structured binding in CAPTURE's lambda
