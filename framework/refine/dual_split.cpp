@@ -8,23 +8,15 @@
 // there; the result is a valid mesh with a gap at each such element, and the split says so
 // in its warning.
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
-#include "framework/refine/child_tags.h"
+#include "framework/features/sharpness.h"
+#include "framework/refine/dual_topology.h"
 #include "framework/refine/splitter.h"
+#include "framework/util/bulk_memory.h"
 
 namespace subdiv {
 namespace {
-
-struct FaceList {
-  std::vector<Index> offsets{0}, corners, parent_face;
-  void add(std::initializer_list<Index> vs, Index f) { add_range(vs.begin(), vs.end(), f); }
-  template <class It>
-  void add_range(It begin, It end, Index f) {
-    corners.insert(corners.end(), begin, end);
-    offsets.push_back(Index(corners.size()));
-    parent_face.push_back(f);
-  }
-};
 
 // The corner index (into face_vertices) of vertex v in face f.
 Index corner_of(const Level& L, Index f, Index v) {
@@ -33,61 +25,55 @@ Index corner_of(const Level& L, Index f, Index v) {
   return kNone;
 }
 
-// V-face points around v, CCW; empty when they would not make a polygon.
-template <class PointOfRing>
-void add_vertex_face(FaceList& faces, PointOfRing point, int count) {
-  if (count < 3) return;
-  std::vector<Index> ring(count);
-  for (int i = 0; i < count; ++i) ring[i] = point(i);
-  faces.add_range(ring.begin(), ring.end(), kNone);
+// Child vertex i comes from element i of `kind` (a corner: its face and place in it; an edge).
+// Child faces after the F-faces lie in no single parent face.
+ChildOrigins dual_origins(const Level& L, OriginKind kind, Index child_faces) {
+  ChildOrigins o;
+  const Index n = kind == OriginKind::Corner ? L.corner_count() : L.edge_count();
+  const Index F = L.face_count();
+  assign_bulk(o.kind, size_t(n), kind);
+  resize_bulk(o.parent, size_t(n));
+  assign_bulk(o.local, size_t(n), LocalIndex(0));
+  assign_bulk(o.parent_face, size_t(child_faces), kNone);
+  tbb::parallel_for(Index(0), F, [&](Index f) { o.parent_face[f] = f; });
+  if (kind == OriginKind::Corner)
+    tbb::parallel_for(Index(0), F, [&](Index f) {
+      for (Index c = L.face_offsets[f]; c < L.face_offsets[f + 1]; ++c)
+        o.parent[c] = f, o.local[c] = LocalIndex(c - L.face_offsets[f]);
+    });
+  else
+    tbb::parallel_for(Index(0), n, [&](Index e) { o.parent[e] = e; });
+  return o;
+}
+
+SplitResult dual_result(const Level& L, bool full) {
+  DualSkipped skipped;
+  Level child = dual_split_topology(L, full, &skipped);
+  const Index child_faces = child.face_count();
+  SplitResult result{std::move(child), dual_origins(L, OriginKind::Corner, child_faces), true};
+  if (skipped.edges || skipped.vertices)
+    result.warning = fmt::format("the dual split made no face for {} non-manifold edge(s) and {} non-manifold "
+                                 "vertex/vertices (they have no cycle of faces around them); the surface has a gap there",
+                                 skipped.edges, skipped.vertices);
+  return result;
+}
+
+SplitResult mid_edge_result(const Level& L, bool full) {
+  DualSkipped skipped;
+  Level child = mid_edge_split_topology(L, full, &skipped);
+  const Index child_faces = child.face_count();
+  SplitResult result{std::move(child), dual_origins(L, OriginKind::Edge, child_faces), true};
+  if (skipped.vertices)
+    result.warning = fmt::format("the mid-edge split made no face for {} non-manifold vertex/vertices (they have no "
+                                 "cycle of edges around them); the surface has a gap there",
+                                 skipped.vertices);
+  return result;
 }
 
 }  // namespace
 
 SplitResult split_dual(const Level& L) {
-  FaceList faces;
-  // F-faces: the face's own corners (child vertex c is parent corner c).
-  for (Index f = 0; f < L.face_count(); ++f) {
-    std::vector<Index> own(L.face_size(f));
-    for (int i = 0; i < L.face_size(f); ++i) own[i] = L.face_offsets[f] + i;
-    faces.add_range(own.begin(), own.end(), f);
-  }
-  // E-faces: f0 lies left of a->b, so (f1@a, f1@b, f0@b, f0@a) runs CCW.
-  Index skipped_edges = 0, skipped_vertices = 0;
-  for (Index e = 0; e < L.edge_count(); ++e) {
-    if (L.edge_on_boundary(e)) continue;
-    if (L.non_manifold_edge(e)) {
-      ++skipped_edges;
-      continue;
-    }
-    const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
-    const Index f0 = L.edge_faces[2 * e], f1 = L.edge_faces[2 * e + 1];
-    faces.add({corner_of(L, f1, a), corner_of(L, f1, b), corner_of(L, f0, b), corner_of(L, f0, a)}, kNone);
-  }
-  // V-faces: the corners around each vertex, in its CCW ring order.
-  for (Index v = 0; v < L.vertex_count; ++v) {
-    if (L.non_manifold_vertex(v)) {
-      ++skipped_vertices;
-      continue;
-    }
-    const Index first = L.vertex_face_offsets[v];
-    add_vertex_face(faces, [&](int i) { return L.face_offsets[L.vertex_faces[first + i]] + L.vertex_face_corner[first + i]; },
-                    L.incident_face_count(v));
-  }
-  ChildOrigins o;
-  const Index n = L.corner_count();
-  o.kind.assign(n, OriginKind::Corner);
-  o.parent.resize(n);
-  o.local.resize(n);
-  for (Index f = 0; f < L.face_count(); ++f)
-    for (int i = 0; i < L.face_size(f); ++i) o.parent[L.face_offsets[f] + i] = f, o.local[L.face_offsets[f] + i] = LocalIndex(i);
-  o.parent_face = faces.parent_face;
-  SplitResult result{build_level(n, faces.offsets, faces.corners), std::move(o), true};
-  if (skipped_edges || skipped_vertices)
-    result.warning = fmt::format("the dual split made no face for {} non-manifold edge(s) and {} non-manifold "
-                                 "vertex/vertices (they have no cycle of faces around them); the surface has a gap there",
-                                 skipped_edges, skipped_vertices);
-
+  SplitResult result = dual_result(L, true);
   // A sharp edge's E-face keeps the sharpness on its two long sides (the F-face edges
   // along the old edge), so the crease stays a crease in the dual mesh.
   if (!L.edge_sharpness.empty()) {
@@ -106,34 +92,9 @@ SplitResult split_dual(const Level& L) {
   return result;
 }
 
-SplitResult split_mid_edge(const Level& L) {
-  FaceList faces;
-  for (Index f = 0; f < L.face_count(); ++f) {
-    const auto edges = L.face_edge_list(f);
-    faces.add_range(edges.begin(), edges.end(), f);
-  }
-  Index skipped = 0;
-  for (Index v = 0; v < L.vertex_count; ++v) {
-    if (L.non_manifold_vertex(v)) {
-      ++skipped;
-      continue;
-    }
-    const auto ring = L.ring_edges(v);
-    add_vertex_face(faces, [&](int i) { return ring[i]; }, int(ring.size()));
-  }
-  ChildOrigins o;
-  const Index n = L.edge_count();
-  o.kind.assign(n, OriginKind::Edge);
-  o.parent.resize(n);
-  o.local.assign(n, 0);
-  for (Index e = 0; e < n; ++e) o.parent[e] = e;
-  o.parent_face = faces.parent_face;
-  SplitResult result{build_level(n, faces.offsets, faces.corners), std::move(o), true};
-  if (skipped)
-    result.warning = fmt::format("the mid-edge split made no face for {} non-manifold vertex/vertices (they have no "
-                                 "cycle of edges around them); the surface has a gap there",
-                                 skipped);
-  return result;
-}
+SplitResult split_dual_faces(const Level& L) { return dual_result(L, false); }
+
+SplitResult split_mid_edge(const Level& L) { return mid_edge_result(L, true); }
+SplitResult split_mid_edge_faces(const Level& L) { return mid_edge_result(L, false); }
 
 }  // namespace subdiv

@@ -43,6 +43,7 @@ struct SplitterTable {
     sqrt3.name = "sqrt3";
     sqrt3.description = "sqrt(3) split (Kobbelt 2000): face points, old edges flipped; boundaries trisected every second step";
     sqrt3.split = split_sqrt3;
+    sqrt3.split_faces_only = split_sqrt3_faces;
     sqrt3.rule_elements = {O::Vertex, O::Face};
     sqrt3.required_face_size = 3;
     sqrt3.curve_arity = 3;
@@ -51,9 +52,11 @@ struct SplitterTable {
     sqrt3.feature_period = 2;  // boundaries are trisected every second step
     sqrt3.handles_non_manifold = true;  // non-manifold edges kept as creases, with a warning (sqrt3_split.cpp)
     SplitterInfo dual = builtin("dual", "dual split (Doo and Sabin 1978): one new point per face corner", split_dual, {O::Corner});
+    dual.split_faces_only = [](const Level& parent, int) { return split_dual_faces(parent); };
     dual.primal = false;
     dual.handles_non_manifold = true;  // with a gap and a warning (dual_split.cpp)
     SplitterInfo mid = builtin("mid-edge", "mid-edge split (Peters and Reif 1997): one new point per edge", split_mid_edge, {O::Edge});
+    mid.split_faces_only = [](const Level& parent, int) { return split_mid_edge_faces(parent); };
     mid.primal = false;
     mid.scale = std::sqrt(2.0);
     mid.period = 2;  // the split turns the mesh by 45 degrees

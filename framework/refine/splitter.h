@@ -42,6 +42,10 @@ SplitResult split_sqrt3(const Level& parent, int step_index);
 SplitResult split_dual(const Level& parent);
 // Mid-edge (Peters-Reif 1997): one new point per edge; F-faces and V-faces.
 SplitResult split_mid_edge(const Level& parent);
+// The same splits with the child's faces only (no edges, rings or tags), for a last level.
+SplitResult split_sqrt3_faces(const Level& parent, int step_index);
+SplitResult split_dual_faces(const Level& parent);
+SplitResult split_mid_edge_faces(const Level& parent);
 
 // A splitter by id: the built-in ones below, and ids from kFirstRegisteredSplit up for
 // splitters registered at run time (plugins, framework/plugin).

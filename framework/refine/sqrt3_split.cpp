@@ -30,10 +30,13 @@
 // its warning how many non-manifold edges and vertices it met.
 #include <algorithm>
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include "framework/features/sharpness.h"
 #include "framework/refine/child_tags.h"
 #include "framework/refine/splitter.h"
+#include "framework/refine/sqrt3_topology.h"
+#include "framework/util/bulk_memory.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -157,14 +160,34 @@ struct Sqrt3Builder {
   }
 };
 
-}  // namespace
+// The common case (sqrt3_topology.h): every edge flipped, children laid out in runs.
+SplitResult flip_children(const Level& parent, bool trisect, bool full, std::vector<Index>* trisection_base) {
+  const Index V = parent.vertex_count, F = parent.face_count();
+  ChildOrigins o;
+  resize_bulk(o.kind, size_t(V + F));
+  resize_bulk(o.parent, size_t(V + F));
+  assign_bulk(o.local, size_t(V + F), LocalIndex(0));
+  tbb::parallel_for(Index(0), V + F, [&](Index i) {
+    o.kind[i] = i < V ? OriginKind::Vertex : OriginKind::Face;
+    o.parent[i] = i < V ? i : i - V;
+  });
+  o.runs.emplace();
+  if (V > 0) o.runs->first[int(OriginKind::Vertex)] = 0, o.runs->count[int(OriginKind::Vertex)] = V;
+  if (F > 0) o.runs->first[int(OriginKind::Face)] = V, o.runs->count[int(OriginKind::Face)] = F;
+  Level child = sqrt3_flip_topology(parent, full, &o.parent_face);
+  trisection_base->assign(parent.edge_count(), kNone);
+  return {std::move(child), std::move(o), trisect};
+}
 
-SplitResult split_sqrt3(const Level& parent, int step_index) {
+// The child's faces and origins, and (with `full`) its edges and rings; the trisection
+// points' first index per feature edge in *trisection_base.
+SplitResult sqrt3_children(const Level& parent, int step_index, bool full, std::vector<Index>* trisection_base) {
   const Index V = parent.vertex_count, F = parent.face_count(), E = parent.edge_count();
   for (Index f = 0; f < F; ++f)
     if (parent.face_size(f) != 3)
       throw Error(fmt::format("the sqrt3 split needs triangles, but face {} has {} vertices", f, parent.face_size(f)));
   const bool trisect = step_index % 2 == 1;
+  if (sqrt3_flips_every_edge(parent)) return flip_children(parent, trisect, full, trisection_base);
   Sqrt3Builder b{parent, trisect, std::vector<Index>(F, kNone), std::vector<Index>(F, kNone),
                  std::vector<Index>(E, kNone), {0}, {}, {}};
   ChildOrigins o;
@@ -192,7 +215,30 @@ SplitResult split_sqrt3(const Level& parent, int step_index) {
       }
   for (Index e = 0; e < E; ++e) b.add_edge(e);
   o.parent_face = std::move(b.parent_face);
-  SplitResult result{build_level(next, b.offsets, b.corners), std::move(o), trisect, non_manifold_warning(parent)};
+  Level child;
+  if (full) {
+    child = build_level(next, b.offsets, b.corners);
+  } else {
+    child.vertex_count = next;
+    child.face_offsets = std::move(b.offsets);
+    child.face_vertices = std::move(b.corners);
+  }
+  *trisection_base = std::move(b.trisection_base);
+  return {std::move(child), std::move(o), trisect, non_manifold_warning(parent)};
+}
+
+}  // namespace
+
+SplitResult split_sqrt3_faces(const Level& parent, int step_index) {
+  std::vector<Index> trisection_base;
+  return sqrt3_children(parent, step_index, false, &trisection_base);
+}
+
+SplitResult split_sqrt3(const Level& parent, int step_index) {
+  const Index V = parent.vertex_count;
+  const bool trisect = step_index % 2 == 1;
+  std::vector<Index> trisection_base;
+  SplitResult result = sqrt3_children(parent, step_index, true, &trisection_base);
 
   // Feature tags: a sharp edge's pieces keep its (decremented) sharpness.
   Level& child = result.child;
@@ -207,7 +253,7 @@ SplitResult split_sqrt3(const Level& parent, int step_index) {
       const float s = decremented_sharpness(parent.edge_sharpness[e]);
       const Index a = parent.edge_vertices[2 * e], bb = parent.edge_vertices[2 * e + 1];
       std::vector<Index> chain{a};
-      if (trisect) chain.insert(chain.end(), {b.trisection_base[e], b.trisection_base[e] + 1});
+      if (trisect) chain.insert(chain.end(), {trisection_base[e], trisection_base[e] + 1});
       chain.push_back(bb);
       for (size_t i = 0; i + 1 < chain.size(); ++i)
         if (const Index piece = find_edge(child, chain[i], chain[i + 1]); piece != kNone) child.edge_sharpness[piece] = s;
