@@ -43,6 +43,9 @@ ChildOrigins dual_origins(const Level& L, OriginKind kind, Index child_faces) {
     });
   else
     tbb::parallel_for(Index(0), n, [&](Index e) { o.parent[e] = e; });
+  // One run: child i is element i's (so the rules need not scan the origins to see it).
+  o.runs.emplace();
+  if (n > 0) o.runs->first[int(kind)] = 0, o.runs->count[int(kind)] = n;
   return o;
 }
 

@@ -14,12 +14,12 @@ using TermShape = FlatKernels::TermShape;
 
 bool smooth(const VertexContext& vc) { return vc.parent == Context::Smooth && vc.child == Context::Smooth; }
 
-// Whether every term gathers one of `allowed` with a weight that is the same for every
-// point of the role and reads at most the element's own n (or k).
-bool fits(const std::vector<TermShape>& terms, std::initializer_list<Points> allowed) {
+// Whether every term gathers one of `allowed` with a weight that reads at most the
+// element's own n (or k), and (unless `along_role`) is the same for every point of the role.
+bool fits(const std::vector<TermShape>& terms, std::initializer_list<Points> allowed, bool along_role = false) {
   if (terms.empty()) return false;
   for (const TermShape& t : terms) {
-    if (t.varies || t.reads_shape) return false;
+    if ((t.varies && !along_role) || t.reads_shape) return false;
     if (std::find(allowed.begin(), allowed.end(), t.points) == allowed.end()) return false;
   }
   return true;
@@ -100,6 +100,27 @@ FlatKernels::FlatKernels(const StepContext& step, const std::vector<ChildGroup>&
     }
     covers_[int(Element::Face)] = true;
   }
+  // Face corners: weights per face size k and place j, read at (k, k, j) as
+  // element_rules.cpp's apply_corner_rule does.
+  const auto& ct = terms[int(Element::Corner)];
+  if (first_child_[int(Element::Corner)] != kNone && fits(ct, {Points::Self, Points::Corners}, true)) {
+    CornerWeights& p = corner_;
+    for (int k = 0; k <= tables.max_k && k <= tables.max_n; ++k) {
+      p.row_start.push_back(Index(p.around.size()));
+      double self = 0.0, sum = 0.0;
+      for (const TermShape& t : ct)
+        if (t.points == Points::Self) self += t.weights->weight(k, k, 0);
+      p.self.push_back(self), sum += self;
+      for (int j = 0; j < k; ++j) {
+        double w = 0.0;
+        for (const TermShape& t : ct)
+          if (t.points == Points::Corners) w += t.weights->weight(k, k, j);
+        p.around.push_back(w), sum += w;
+      }
+      p.sum_ok.push_back(row_sum_ok(sum));
+    }
+    covers_[int(Element::Corner)] = true;
+  }
 }
 
 bool FlatKernels::covers(Element kind) const { return covers_[int(kind)]; }
@@ -114,7 +135,8 @@ Index FlatKernels::run(Element kind, Index begin, Index end, const StepSources& 
       return three ? run_edges<3>(begin, end, in, dst, left, bad) : run_edges<0>(begin, end, in, dst, left, bad);
     case Element::Face:
       return three ? run_faces<3>(begin, end, in, dst, left, bad) : run_faces<0>(begin, end, in, dst, left, bad);
-    case Element::Corner: break;
+    case Element::Corner:
+      return three ? run_corners<3>(begin, end, in, dst, left, bad) : run_corners<0>(begin, end, in, dst, left, bad);
   }
   return 0;
 }
@@ -195,6 +217,46 @@ Index FlatKernels::run_edges(Index begin, Index end, const StepSources& in, doub
     acc.store();
     ++done;
     if (!w.sum_ok) bad.mark(e);
+  }
+  return done;
+}
+
+// Row r is the corner made child first + r; its face and place come from the origins. The
+// smooth kernels' corner_point conditions: neither edge of the corner sharp, its vertex not.
+template <int C>
+Index FlatKernels::run_corners(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
+                               FirstBadRow& bad) const {
+  const Level& L = step_.parent;
+  const CornerWeights& w = corner_;
+  const int max_k = int(w.self.size()) - 1;
+  const Index first = first_child_[int(Element::Corner)];
+  const ChildOrigins& origins = step_.origins;
+  const FeatureContexts& F = step_.features;
+  const int channels = in.channels;
+  Index done = 0;
+  for (Index r = begin; r < end; ++r) {
+    const Index child = first + r, f = origins.parent[child];
+    const int i = origins.local[child];
+    const Index corner_begin = L.face_offsets[f], k = L.face_offsets[f + 1] - corner_begin;
+    const Index out_edge = L.face_edges[corner_begin + i], in_edge = L.face_edges[corner_begin + (i + k - 1) % k];
+    const bool sharp = untagged_ ? L.edge_on_boundary(out_edge) || L.edge_on_boundary(in_edge) ||
+                                       L.non_manifold_edge(out_edge) || L.non_manifold_edge(in_edge)
+                                 : F.vertex_sharpness[L.face_vertices[corner_begin + i]] > 0.f ||
+                                       F.edges[out_edge].crease_weight != 0.f || F.edges[in_edge].crease_weight != 0.f;
+    if (sharp || k > max_k) {
+      left.push_back(r);
+      continue;
+    }
+    const Index* corners = L.face_vertices.data() + corner_begin;
+    const double* around = w.around.data() + w.row_start[k];
+    PointAccumulator<C> acc(dst + size_t(child) * channels, channels);
+    acc.add(in.vertex(corners[i]), w.self[k]);
+    // Corner j places on from i, without a modulo per point.
+    for (Index j = 0; j < k - i; ++j) acc.add(in.vertex(corners[i + j]), around[j]);
+    for (Index j = k - i; j < k; ++j) acc.add(in.vertex(corners[i + j - k]), around[j]);
+    acc.store();
+    ++done;
+    if (!w.sum_ok[k]) bad.mark(r);
   }
   return done;
 }

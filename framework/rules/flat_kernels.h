@@ -10,7 +10,9 @@
 //  - an edge point:  constant weights on its two ends, the new points of its two faces and
 //                    the vertices opposite it in its two triangles;
 //  - a vertex point: w_self(n) times itself, w_ring(n) times each ring vertex, w_face(n)
-//                    times each face point, w_edge(n) times each edge point (n the valence).
+//                    times each face point, w_edge(n) times each edge point (n the valence);
+//  - a face corner's point (dual schemes): w(k, j) times the face's corner j places on from
+//                    it, plus w_self(k) times the corner itself.
 //
 // A kind whose compiled terms fit its shape has its weights tabulated per valence or face
 // size (summed over terms that gather the same points), and its new points are computed by
@@ -43,7 +45,7 @@ public:
   struct TermShape {
     Points points;
     const CompiledTerm* weights;
-    bool varies;       // the weight changes along the role (point j)
+    bool varies;       // the weight changes along the role (point j); allowed for corners only
     bool reads_shape;  // the weight reads more than the element's own n (or k)
   };
 
@@ -66,6 +68,12 @@ private:
     std::vector<std::uint8_t> sum_ok;
     bool uses_face_points = false, uses_edge_points = false;
   };
+  // Per face size k, the weights of the corners j = 0 .. k-1 places on (at row_start[k]).
+  struct CornerWeights {
+    std::vector<double> self, around;
+    std::vector<Index> row_start;
+    std::vector<std::uint8_t> sum_ok;
+  };
   struct EdgeWeights {
     double ends = 0, face_points = 0, opposite = 0;
     bool uses_face_points = false, uses_opposite = false, sum_ok = true;
@@ -78,6 +86,9 @@ private:
   Index run_edges(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
                   FirstBadRow& bad) const;
   template <int C>
+  Index run_corners(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
+                    FirstBadRow& bad) const;
+  template <int C>
   Index run_faces(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
                   FirstBadRow& bad) const;
 
@@ -89,6 +100,7 @@ private:
   bool covers_[kElementCount] = {};
   PerSize vertex_, face_;
   EdgeWeights edge_;
+  CornerWeights corner_;
 };
 
 }  // namespace subdiv

@@ -104,8 +104,8 @@ Index across(const Level& L, Index f, Index e) {
 }
 
 // A term as the flat kernels see it: the points it gathers, and whether its weight reads
-// more than the element's own size (a vertex's n; a face's k, which it reads as n and k; an
-// edge's n, always 2). Faces of a vertex are weighed at their own k (`varies`).
+// more than the element's own size (a vertex's n; a face's or a corner's k, which it reads
+// as n and k; an edge's n, always 2). Faces of a vertex are weighed at their own k (`varies`).
 FlatKernels::TermShape flat_shape(Element element, const SmoothKernels::Term& t) {
   using Points = FlatKernels::Points;
   using Reads = SmoothKernels::Term::Reads;
@@ -117,10 +117,14 @@ FlatKernels::TermShape flat_shape(Element element, const SmoothKernels::Term& t)
     case Gather::EdgePoints: points = Points::EdgePoints; break;
     case Gather::Ends: points = Points::Ends; break;
     case Gather::Opposite: points = Points::Opposite; break;
-    case Gather::Corners: points = element == Element::Face ? Points::Corners : Points::Other; break;
+    case Gather::Corners: points = Points::Corners; break;
     default: break;
   }
-  const bool reads_shape = t.reads == Reads::More || (element != Element::Face && t.reads == Reads::K);
+  // A corner's weights are read at (k, k, j): they may read n, k and j.
+  const CompiledTerm& w = *t.weights;
+  const bool reads_neighbours = w.stride_n0 || w.stride_n1 || w.stride_k0 || w.stride_k1;
+  const bool reads_shape = element == Element::Corner ? reads_neighbours
+                                                      : t.reads == Reads::More || (element != Element::Face && t.reads == Reads::K);
   return {points, t.weights, t.varies, reads_shape};
 }
 
