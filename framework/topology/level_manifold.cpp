@@ -30,15 +30,14 @@ void parallel_ranges(Index count, Body body) {
 // What the stages share: the corners around each vertex and, per corner, its twin.
 struct Corners {
   CornerIndex index;
-  std::vector<Index> head;  // per slot of index.vertex_corners: the vertex its corner's edge runs to
-  std::vector<Index> twin;  // per corner: the corner that runs its edge backwards, or kNone (boundary)
+  ScratchVector<Index> head;  // per slot of index.vertex_corners: the vertex its corner's edge runs to
+  ScratchVector<Index> twin;  // per corner: the corner that runs its edge backwards, or kNone (boundary)
 };
 
 // The vertex each corner around each vertex runs to, stored beside it: the twin search
 // then reads one vertex's slots, not the faces.
-std::vector<Index> slot_heads(const Level& level, const CornerIndex& ci) {
-  std::vector<Index> head;
-  resize_bulk(head, ci.vertex_corners.size());
+ScratchVector<Index> slot_heads(const Level& level, const CornerIndex& ci) {
+  ScratchVector<Index> head(ci.vertex_corners.size());
   parallel_ranges(Index(head.size()), [&](Index begin, Index end) {
     for (Index i = begin; i < end; ++i) {
       const Index c = ci.vertex_corners[i];
@@ -51,24 +50,33 @@ std::vector<Index> slot_heads(const Level& level, const CornerIndex& ci) {
 // Twins of every corner; false when an edge is not manifold: two corners run it the same
 // way (a third face or faces of opposite orientation) or three run it. (No face runs an
 // edge both ways here: faces that repeat a vertex went to the general builder.)
+// Each pair is found once, from its lower vertex, which sets both corners (the other
+// vertex's thread writes neither); corners whose pair no one finds keep kNone. A vertex's
+// slots running to the same vertex twice are refused at that vertex, so a twin found is
+// the only one.
 bool find_twins(const Level& level, Corners& k) {
   const CornerIndex& ci = k.index;
-  resize_bulk(k.twin, ci.face.size());
+  const Index corners = Index(ci.face.size());
+  k.twin.resize(size_t(corners));
+  parallel_ranges(corners, [&](Index begin, Index end) { std::fill(k.twin.begin() + begin, k.twin.begin() + end, kNone); });
   std::atomic<bool> manifold{true};
   parallel_ranges(level.vertex_count, [&](Index begin, Index end) {
+    const Index* offset = ci.vertex_offsets.data();
+    const Index* head = k.head.data();
+    const Index* corner = ci.vertex_corners.data();
+    Index* twin = k.twin.data();
     for (Index v = begin; v < end && manifold.load(std::memory_order_relaxed); ++v) {
-      const Index first = ci.vertex_offsets[v], last = ci.vertex_offsets[v + 1];
+      const Index first = offset[v], last = offset[v + 1];
       for (Index i = first; i < last; ++i) {
-        const Index to = k.head[i], c = ci.vertex_corners[i];
-        bool ok = std::count(k.head.begin() + first, k.head.begin() + last, to) == 1;
-        Index twin = kNone;
-        for (Index j = ci.vertex_offsets[to]; ok && j < ci.vertex_offsets[to + 1]; ++j) {
-          if (k.head[j] != v) continue;
-          ok = twin == kNone;
-          twin = ci.vertex_corners[j];
+        const Index to = head[i];
+        if (std::count(head + first, head + last, to) != 1) manifold = false;
+        if (to < v) continue;
+        for (Index j = offset[to]; j < offset[to + 1]; ++j) {
+          if (head[j] != v) continue;
+          twin[corner[i]] = corner[j];
+          twin[corner[j]] = corner[i];
+          break;
         }
-        if (!ok) manifold = false;
-        k.twin[c] = twin;
       }
     }
   });
@@ -165,8 +173,7 @@ bool walk_ring(Level& level, const Corners& k, Index v, Index start) {
 bool build_rings(Level& level, const Corners& k) {
   const CornerIndex& ci = k.index;
   const Index V = level.vertex_count;
-  std::vector<Index> start;
-  resize_bulk(start, size_t(V));
+  ScratchVector<Index> start(static_cast<size_t>(V));
   resize_bulk(level.vertex_on_boundary, size_t(V));
   std::atomic<bool> fans{true};
   parallel_ranges(V, [&](Index begin, Index end) {
