@@ -10,6 +10,7 @@
 #include <atomic>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include "framework/topology/level.h"
 #include "framework/topology/level_rings.h"
@@ -86,10 +87,10 @@ bool find_twins(const Level& level, Corners& k) {
 // An edge belongs to the lower corner of its pair (or its only corner).
 bool owns_edge(const Corners& k, Index c) { return k.twin[c] == kNone || k.twin[c] > c; }
 
-// face_edges, edge_vertices, edge_faces. Edge ids follow the owning corners in order: each
-// chunk of corners counts its owners, the counts are summed in chunk order, then each chunk
-// numbers its own.
-void number_edges(Level& level, const Corners& k) {
+// Edge ids follow the owning corners in order: each chunk of corners counts its owners and
+// the counts are summed in chunk order; returns where each chunk's edges start (the last
+// entry is the edge count).
+std::vector<Index> first_edges(const Level& level, const Corners& k) {
   const Index corners = level.corner_count();
   const Index chunks = (corners + kGrain - 1) / kGrain;
   std::vector<Index> first_edge(size_t(chunks) + 1, 0);
@@ -100,9 +101,34 @@ void number_edges(Level& level, const Corners& k) {
     first_edge[chunk + 1] = owned;
   });
   for (Index chunk = 0; chunk < chunks; ++chunk) first_edge[chunk + 1] += first_edge[chunk];
-  resize_bulk(level.face_edges, size_t(corners));
-  resize_bulk(level.edge_vertices, 2 * size_t(first_edge.back()));
-  resize_bulk(level.edge_faces, 2 * size_t(first_edge.back()));
+  return first_edge;
+}
+
+// Sizes every array the stages below fill, side by side: resize zero-fills in the calling
+// thread, and for a million faces that is some 90 MB (a sixth of the builder's time on one
+// thread, all of it serial when the arrays are sized one after another). A manifold level
+// with `edges` edges has 2 * edges ring edges: every corner gives one, and every boundary
+// vertex one more, as many as the boundary edges (sizes for a level whose fans meet at no
+// vertex; build_rings gives up before writing otherwise).
+void size_level(Level& level, Index edges) {
+  const size_t corners = size_t(level.corner_count()), V = size_t(level.vertex_count);
+  tbb::parallel_invoke([&] { resize_bulk(level.face_edges, corners); },
+                       [&] { resize_bulk(level.edge_vertices, 2 * size_t(edges)); },
+                       [&] { resize_bulk(level.edge_faces, 2 * size_t(edges)); },
+                       [&] { resize_bulk(level.vertex_faces, corners); },
+                       [&] { resize_bulk(level.vertex_face_corner, corners); },
+                       [&] { resize_bulk(level.vertex_edges, 2 * size_t(edges)); },
+                       [&] {
+                         resize_bulk(level.vertex_ring_offsets, V + 1);
+                         resize_bulk(level.vertex_on_boundary, V);
+                       });
+}
+
+// face_edges, edge_vertices, edge_faces: each chunk numbers its owning corners' edges from
+// its first edge.
+void number_edges(Level& level, const Corners& k, const std::vector<Index>& first_edge) {
+  const Index corners = level.corner_count();
+  const Index chunks = Index(first_edge.size()) - 1;
   tbb::parallel_for(Index(0), chunks, [&](Index chunk) {
     const Index begin = chunk * kGrain, end = std::min(corners, begin + kGrain);
     Index e = first_edge[chunk];
@@ -145,10 +171,10 @@ Index ring_start(const Corners& k, Index v) {
 // Walks v's corners CCW from `start` into its ring slots: the next face CCW lies across
 // the edge entering v, and the twin of that edge's corner is v's corner in that face.
 // False if the walk does not visit every corner of v once (more than one fan).
-bool walk_ring(Level& level, const Corners& k, Index v, Index start) {
+bool walk_ring(Level& level, const Corners& k, Index v, Index start, Index edge_slot) {
   const CornerIndex& ci = k.index;
   const Index count = ci.vertex_offsets[v + 1] - ci.vertex_offsets[v];
-  Index face_slot = level.vertex_face_offsets[v], edge_slot = level.vertex_ring_offsets[v];
+  Index face_slot = ci.vertex_offsets[v];
   Index c = start;
   for (Index visited = 0; visited < count; ++visited) {
     const Index f = ci.face[c];
@@ -169,36 +195,41 @@ bool walk_ring(Level& level, const Corners& k, Index v, Index start) {
   return true;
 }
 
-// Vertex rings (offsets, faces, corners, edges) and boundary flags.
+// Vertex rings (offsets, faces, corners, edges) and boundary flags, in fixed blocks of
+// vertices: each block finds its vertices' ring starts and counts its boundary vertices, the
+// counts are summed in block order (a boundary vertex has one ring edge more than faces),
+// then each block writes its ring offsets and walks its rings.
 bool build_rings(Level& level, const Corners& k) {
   const CornerIndex& ci = k.index;
   const Index V = level.vertex_count;
+  const Index blocks = (V + kGrain - 1) / kGrain;
   ScratchVector<Index> start(static_cast<size_t>(V));
-  resize_bulk(level.vertex_on_boundary, size_t(V));
+  std::vector<Index> boundary_before(size_t(blocks) + 1, 0);
   std::atomic<bool> fans{true};
-  parallel_ranges(V, [&](Index begin, Index end) {
-    for (Index v = begin; v < end; ++v) {
+  tbb::parallel_for(Index(0), blocks, [&](Index b) {
+    Index boundary = 0;
+    for (Index v = b * kGrain; v < std::min(V, (b + 1) * kGrain); ++v) {
       start[v] = ring_start(k, v);
       if (start[v] == kConflict) {
         fans = false;
         continue;
       }
       level.vertex_on_boundary[v] = start[v] != kNone && k.twin[start[v]] == kNone;
+      boundary += level.vertex_on_boundary[v];
     }
+    boundary_before[b + 1] = boundary;
   });
   if (!fans) return false;
-  level.vertex_face_offsets = ci.vertex_offsets;
-  resize_bulk(level.vertex_ring_offsets, size_t(V) + 1);
+  for (Index b = 0; b < blocks; ++b) boundary_before[b + 1] += boundary_before[b];
   level.vertex_ring_offsets[0] = 0;
-  for (Index v = 0; v < V; ++v)
-    level.vertex_ring_offsets[v + 1] =
-        level.vertex_ring_offsets[v] + (ci.vertex_offsets[v + 1] - ci.vertex_offsets[v]) + level.vertex_on_boundary[v];
-  resize_bulk(level.vertex_faces, ci.vertex_corners.size());
-  resize_bulk(level.vertex_face_corner, ci.vertex_corners.size());
-  resize_bulk(level.vertex_edges, size_t(level.vertex_ring_offsets.back()));
-  parallel_ranges(V, [&](Index begin, Index end) {
-    for (Index v = begin; v < end && fans.load(std::memory_order_relaxed); ++v)
-      if (!walk_ring(level, k, v, start[v])) fans = false;
+  tbb::parallel_for(Index(0), blocks, [&](Index b) {
+    Index boundary = boundary_before[b];  // boundary vertices before v
+    for (Index v = b * kGrain; v < std::min(V, (b + 1) * kGrain) && fans.load(std::memory_order_relaxed); ++v) {
+      const Index ring_begin = ci.vertex_offsets[v] + boundary;
+      boundary += level.vertex_on_boundary[v];
+      level.vertex_ring_offsets[v + 1] = ci.vertex_offsets[v + 1] + boundary;
+      if (!walk_ring(level, k, v, start[v], ring_begin)) fans = false;
+    }
   });
   return fans;
 }
@@ -210,8 +241,12 @@ bool build_manifold_level(Level& level) {
   k.index = index_corners(level);
   k.head = slot_heads(level, k.index);
   if (!find_twins(level, k)) return false;
-  number_edges(level, k);
-  return build_rings(level, k);
+  const std::vector<Index> first_edge = first_edges(level, k);
+  size_level(level, first_edge.back());
+  number_edges(level, k, first_edge);
+  if (!build_rings(level, k)) return false;
+  level.vertex_face_offsets = std::move(k.index.vertex_offsets);  // a ring face per corner
+  return true;
 }
 
 }  // namespace subdiv
