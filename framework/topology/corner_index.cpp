@@ -5,6 +5,7 @@
 // the index is the same whatever the thread count: corners are cut into a few chunks, each
 // chunk counts its corners per vertex, the counts are summed per vertex in chunk order and
 // scanned over the vertices, and each chunk then places its corners from its own cursors.
+// With slot heads asked for, each placed corner also gets the vertex its edge runs to.
 // The level builders read this order (rings start from a vertex's first corner; the general
 // builder lists a non-manifold vertex's faces in it), so it must not depend on the threads.
 #include <algorithm>
@@ -39,11 +40,11 @@ void parallel_ranges(Index count, Body body) {
 
 }  // namespace
 
-CornerIndex index_corners(const Level& level) {
-  return index_corners(level, chunk_count(level.corner_count(), level.vertex_count));
+CornerIndex index_corners(const Level& level, SlotHeads heads) {
+  return index_corners(level, chunk_count(level.corner_count(), level.vertex_count), heads);
 }
 
-CornerIndex index_corners(const Level& level, Index chunks) {
+CornerIndex index_corners(const Level& level, Index chunks, SlotHeads heads) {
   chunks = std::max<Index>(chunks, 1);
   CornerIndex ci;
   const Index corners = level.corner_count(), V = level.vertex_count, faces = level.face_count();
@@ -103,11 +104,24 @@ CornerIndex index_corners(const Level& level, Index chunks) {
     }
   });
   ci.vertex_corners.resize(size_t(corners));
+  if (heads == SlotHeads::kYes) ci.heads.resize(size_t(corners));
   tbb::parallel_for(Index(0), chunks, [&](Index k) {
     Index* place = counts[size_t(k)];
     Index* sorted = ci.vertex_corners.data();
     const Index begin = chunk_begin(k), end = chunk_begin(k + 1);
-    for (Index c = begin; c < end; ++c) sorted[place[face_vertex[c]]++] = c;
+    if (heads == SlotHeads::kNo) {
+      for (Index c = begin; c < end; ++c) sorted[place[face_vertex[c]]++] = c;
+      return;
+    }
+    Index* head = ci.heads.data();
+    const Index* offset = level.face_offsets.data();
+    const Index* face = ci.face.data();
+    for (Index c = begin; c < end; ++c) {
+      const Index f = face[c], next = c + 1 == offset[f + 1] ? offset[f] : c + 1;
+      const Index slot = place[face_vertex[c]]++;
+      sorted[slot] = c;
+      head[slot] = face_vertex[next];
+    }
   });
   return ci;
 }

@@ -28,25 +28,13 @@ void parallel_ranges(Index count, Body body) {
                     [&](const tbb::blocked_range<Index>& r) { body(r.begin(), r.end()); });
 }
 
-// What the stages share: the corners around each vertex and, per corner, its twin.
+// What the stages share: the corners around each vertex, with the vertex each one's edge
+// runs to (the twin search then reads one vertex's slots, not the faces) and, per corner,
+// its twin.
 struct Corners {
   CornerIndex index;
-  ScratchVector<Index> head;  // per slot of index.vertex_corners: the vertex its corner's edge runs to
   ScratchVector<Index> twin;  // per corner: the corner that runs its edge backwards, or kNone (boundary)
 };
-
-// The vertex each corner around each vertex runs to, stored beside it: the twin search
-// then reads one vertex's slots, not the faces.
-ScratchVector<Index> slot_heads(const Level& level, const CornerIndex& ci) {
-  ScratchVector<Index> head(ci.vertex_corners.size());
-  parallel_ranges(Index(head.size()), [&](Index begin, Index end) {
-    for (Index i = begin; i < end; ++i) {
-      const Index c = ci.vertex_corners[i];
-      head[i] = level.face_vertices[next_corner(level, ci.face[c], c)];
-    }
-  });
-  return head;
-}
 
 // Twins of every corner; false when an edge is not manifold: two corners run it the same
 // way (a third face or faces of opposite orientation) or three run it. (No face runs an
@@ -63,7 +51,7 @@ bool find_twins(const Level& level, Corners& k) {
   std::atomic<bool> manifold{true};
   parallel_ranges(level.vertex_count, [&](Index begin, Index end) {
     const Index* offset = ci.vertex_offsets.data();
-    const Index* head = k.head.data();
+    const Index* head = k.index.heads.data();
     const Index* corner = ci.vertex_corners.data();
     Index* twin = k.twin.data();
     for (Index v = begin; v < end && manifold.load(std::memory_order_relaxed); ++v) {
@@ -238,8 +226,7 @@ bool build_rings(Level& level, const Corners& k) {
 
 bool build_manifold_level(Level& level) {
   Corners k;
-  k.index = index_corners(level);
-  k.head = slot_heads(level, k.index);
+  k.index = index_corners(level, SlotHeads::kYes);
   if (!find_twins(level, k)) return false;
   const std::vector<Index> first_edge = first_edges(level, k);
   size_level(level, first_edge.back());

@@ -13,6 +13,10 @@ struct CornerIndex {
   ScratchVector<Index> face;          // per corner
   std::vector<Index> vertex_offsets;  // CSR: corners around each vertex (in corner order)
   ScratchVector<Index> vertex_corners;
+  // Beside vertex_corners, if asked for: the vertex each corner's edge runs to (the next
+  // corner's vertex). Placed with the corners, where the faces are read in order; found
+  // afterwards it would take a scattered read per corner.
+  ScratchVector<Index> heads;
 };
 
 inline Index next_corner(const Level& level, Index face, Index corner) {
@@ -24,10 +28,11 @@ inline Index prev_corner(const Level& level, Index face, Index corner) {
 
 // Every corner's face, and the corners around each vertex in corner order, the same for
 // any number of threads (corner_index.cpp).
-CornerIndex index_corners(const Level& level);
+enum class SlotHeads : bool { kNo, kYes };
+CornerIndex index_corners(const Level& level, SlotHeads heads = SlotHeads::kNo);
 // The same, sorted in `chunks` chunks whatever the threads (for tests: the result must not
 // depend on them).
-CornerIndex index_corners(const Level& level, Index chunks);
+CornerIndex index_corners(const Level& level, Index chunks, SlotHeads heads = SlotHeads::kNo);
 
 // Edges and CCW rings of a level whose faces are set, when every edge and vertex is
 // manifold (level_manifold.cpp); false, with the level half built, as soon as one is not.

@@ -1,6 +1,7 @@
 // index_corners (framework/topology/corner_index.cpp) sorts corners by vertex in parallel
 // chunks; both level builders read its order, so it must equal a plain serial counting sort
-// for any number of chunks and threads.
+// for any number of chunks and threads, and the slot heads the manifold builder asks for
+// must be each corner's next vertex.
 #include <doctest/doctest.h>
 #include <tbb/global_control.h>
 
@@ -36,6 +37,15 @@ void check_against_serial(const Level& L, const CornerIndex& ci) {
     same = same && std::equal(around[v].begin(), around[v].end(), ci.vertex_corners.begin() + ci.vertex_offsets[v]);
   }
   CHECK(same);
+  // With slot heads: each slot's corner's edge runs to the next corner's vertex.
+  if (ci.heads.empty()) return;
+  REQUIRE(ci.heads.size() == size_t(L.corner_count()));
+  bool heads_right = true;
+  for (size_t i = 0; i < ci.heads.size(); ++i) {
+    const Index c = ci.vertex_corners[i];
+    heads_right = heads_right && ci.heads[i] == L.face_vertices[next_corner(L, face[c], c)];
+  }
+  CHECK(heads_right);
 }
 
 // Meshes with what a counting sort can get wrong: boundaries, a vertex with two fans and
@@ -64,17 +74,21 @@ std::vector<Level> meshes() {
 
 }  // namespace
 
-TEST_CASE("index_corners equals a serial counting sort for any number of chunks and threads") {
+TEST_CASE("index_corners equals a serial counting sort for any number of chunks and threads, slot heads included") {
   for (const Level& L : meshes()) {
     CAPTURE(L.corner_count());
     for (Index chunks : {1, 2, 3, 5, 64}) {
       CAPTURE(chunks);
       check_against_serial(L, index_corners(L, chunks));
+      const CornerIndex with_heads = index_corners(L, chunks, SlotHeads::kYes);
+      CHECK(with_heads.heads.size() == size_t(L.corner_count()));
+      check_against_serial(L, with_heads);
     }
     for (int threads : {1, 2, 3}) {
       CAPTURE(threads);
       tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
       check_against_serial(L, index_corners(L));
+      check_against_serial(L, index_corners(L, SlotHeads::kYes));
     }
   }
 }
