@@ -1,7 +1,11 @@
 #include "framework/refine/primal_topology.h"
 #include "framework/util/bulk_memory.h"
 
+#include <functional>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+#include <tbb/parallel_scan.h>
 
 namespace subdiv {
 namespace {
@@ -48,9 +52,51 @@ void vertex_child_rings(const Level& P, Level& C, ChildFaceAtCorner child_face) 
   });
 }
 
-void copy_vertex_offsets(const Level& P, Level& C) {
-  std::copy(P.vertex_face_offsets.begin(), P.vertex_face_offsets.end(), C.vertex_face_offsets.begin());
-  std::copy(P.vertex_ring_offsets.begin(), P.vertex_ring_offsets.end(), C.vertex_ring_offsets.begin());
+// Ring offsets of the child level and its ring arrays, sized. Vertex children keep their
+// parents' rings; an edge child has ring faces and edges as given, interior or on the
+// boundary; the child of face f (quad split) has a ring face and edge per corner of f. The offsets are closed forms of the boundary edges counted before each edge
+// (a parallel scan), so no stage runs over the edges or faces alone, and the arrays' zero-
+// fills run side by side.
+struct EdgeChildRing {
+  Index faces, edges;                    // of an interior edge's child
+  Index boundary_faces, boundary_edges;  // of a boundary edge's child
+};
+void child_ring_offsets(const Level& P, Level& C, EdgeChildRing ring, bool face_children) {
+  const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count();
+  tbb::parallel_invoke([&] { resize_bulk(C.vertex_face_offsets, C.vertex_count + 1); },
+                       [&] { resize_bulk(C.vertex_ring_offsets, C.vertex_count + 1); });
+  tbb::parallel_for(tbb::blocked_range<Index>(0, V + 1, 1 << 14), [&](const tbb::blocked_range<Index>& r) {
+    for (Index v = r.begin(); v < r.end(); ++v) {
+      C.vertex_face_offsets[v] = P.vertex_face_offsets[v];
+      C.vertex_ring_offsets[v] = P.vertex_ring_offsets[v];
+    }
+  });
+  const Index face_base = P.vertex_face_offsets[V], ring_base = P.vertex_ring_offsets[V];
+  tbb::parallel_scan(
+      tbb::blocked_range<Index>(0, E, 1 << 14), Index(0),
+      [&](const tbb::blocked_range<Index>& r, Index boundary, bool final) {
+        for (Index e = r.begin(); e < r.end(); ++e) {
+          boundary += P.edge_on_boundary(e);  // boundary edges up to e
+          if (!final) continue;
+          C.vertex_face_offsets[V + e + 1] = face_base + ring.faces * (e + 1) - (ring.faces - ring.boundary_faces) * boundary;
+          C.vertex_ring_offsets[V + e + 1] = ring_base + ring.edges * (e + 1) - (ring.edges - ring.boundary_edges) * boundary;
+        }
+        return boundary;
+      },
+      std::plus<Index>());
+  if (face_children) {
+    const Index face_start = C.vertex_face_offsets[V + E], ring_start = C.vertex_ring_offsets[V + E];
+    tbb::parallel_for(tbb::blocked_range<Index>(0, F, 1 << 14), [&](const tbb::blocked_range<Index>& r) {
+      for (Index f = r.begin(); f < r.end(); ++f) {
+        C.vertex_face_offsets[V + E + f + 1] = face_start + P.face_offsets[f + 1];
+        C.vertex_ring_offsets[V + E + f + 1] = ring_start + P.face_offsets[f + 1];
+      }
+    });
+  }
+  tbb::parallel_invoke([&] { resize_bulk(C.vertex_faces, C.vertex_face_offsets.back()); },
+                       [&] { resize_bulk(C.vertex_face_corner, C.vertex_face_offsets.back()); },
+                       [&] { resize_bulk(C.vertex_edges, C.vertex_ring_offsets.back()); },
+                       [&] { assign_bulk(C.vertex_on_boundary, C.vertex_count, 0); });
 }
 
 void halves(const Level& P, Level& C, Index first_mid) {
@@ -72,13 +118,11 @@ Level quad_children(const Level& P) {
   const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count(), N = P.corner_count();
   Level C;
   C.vertex_count = V + E + F;
-  resize_bulk(C.face_offsets, N + 1);
-  resize_bulk(C.face_vertices, 4 * size_t(N));
-  if (edges) {
-    resize_bulk(C.face_edges, 4 * size_t(N));
-    resize_bulk(C.edge_vertices, 2 * size_t(2 * E + N));
-    resize_bulk(C.edge_faces, 2 * size_t(2 * E + N));
-  }
+  // Side by side: each resize zero-fills in its own thread.
+  tbb::parallel_invoke([&] { resize_bulk(C.face_offsets, N + 1); }, [&] { resize_bulk(C.face_vertices, 4 * size_t(N)); },
+                       [&] { if (edges) resize_bulk(C.face_edges, 4 * size_t(N)); },
+                       [&] { if (edges) resize_bulk(C.edge_vertices, 2 * size_t(2 * E + N)); },
+                       [&] { if (edges) resize_bulk(C.edge_faces, 2 * size_t(2 * E + N)); });
   tbb::parallel_for(Index(0), F, [&](Index f) {
     const Index o = P.face_offsets[f], k = P.face_size(f);
     for (Index i = 0; i < k; ++i) {
@@ -120,22 +164,7 @@ Level quad_split_topology(const Level& P) {
   });
   // Rings: vertex children as their parents; edge children have 4 faces (2 on a boundary);
   // face children have one per corner.
-  resize_bulk(C.vertex_face_offsets, C.vertex_count + 1);
-  resize_bulk(C.vertex_ring_offsets, C.vertex_count + 1);
-  copy_vertex_offsets(P, C);
-  for (Index e = 0; e < E; ++e) {
-    const bool boundary = P.edge_on_boundary(e);
-    C.vertex_face_offsets[V + e + 1] = C.vertex_face_offsets[V + e] + (boundary ? 2 : 4);
-    C.vertex_ring_offsets[V + e + 1] = C.vertex_ring_offsets[V + e] + (boundary ? 3 : 4);
-  }
-  for (Index f = 0; f < F; ++f) {
-    C.vertex_face_offsets[V + E + f + 1] = C.vertex_face_offsets[V + E + f] + P.face_size(f);
-    C.vertex_ring_offsets[V + E + f + 1] = C.vertex_ring_offsets[V + E + f] + P.face_size(f);
-  }
-  resize_bulk(C.vertex_faces, C.vertex_face_offsets.back());
-  resize_bulk(C.vertex_face_corner, C.vertex_face_offsets.back());
-  resize_bulk(C.vertex_edges, C.vertex_ring_offsets.back());
-  assign_bulk(C.vertex_on_boundary, C.vertex_count, 0);
+  child_ring_offsets(P, C, {4, 4, 2, 3}, true);
   vertex_child_rings(P, C, [&](Index f, int corner) { return P.face_offsets[f] + corner; });
   tbb::parallel_for(Index(0), E, [&](Index e) {
     const Index a = P.edge_vertices[2 * e], b = P.edge_vertices[2 * e + 1];
@@ -177,13 +206,12 @@ Level triangle_children(const Level& P) {
   const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count();
   Level C;
   C.vertex_count = V + E;
-  resize_bulk(C.face_offsets, 4 * size_t(F) + 1);
-  resize_bulk(C.face_vertices, 12 * size_t(F));
-  if (edges) {
-    resize_bulk(C.face_edges, 12 * size_t(F));
-    resize_bulk(C.edge_vertices, 2 * size_t(2 * E + 3 * F));
-    resize_bulk(C.edge_faces, 2 * size_t(2 * E + 3 * F));
-  }
+  // Side by side: each resize zero-fills in its own thread.
+  tbb::parallel_invoke([&] { resize_bulk(C.face_offsets, 4 * size_t(F) + 1); },
+                       [&] { resize_bulk(C.face_vertices, 12 * size_t(F)); },
+                       [&] { if (edges) resize_bulk(C.face_edges, 12 * size_t(F)); },
+                       [&] { if (edges) resize_bulk(C.edge_vertices, 2 * size_t(2 * E + 3 * F)); },
+                       [&] { if (edges) resize_bulk(C.edge_faces, 2 * size_t(2 * E + 3 * F)); });
   tbb::parallel_for(Index(0), F, [&](Index f) {
     const Index o = P.face_offsets[f];
     for (int i = 0; i < 3; ++i) {
@@ -224,18 +252,7 @@ Level triangle_split_topology(const Level& P) {
     C.edge_faces[4 * e + 1] = f1 == kNone ? kNone : 4 * f1 + local_corner(P, f1, a);
     C.edge_faces[4 * e + 3] = f1 == kNone ? kNone : 4 * f1 + local_corner(P, f1, b);
   });
-  resize_bulk(C.vertex_face_offsets, C.vertex_count + 1);
-  resize_bulk(C.vertex_ring_offsets, C.vertex_count + 1);
-  copy_vertex_offsets(P, C);
-  for (Index e = 0; e < E; ++e) {
-    const bool boundary = P.edge_on_boundary(e);
-    C.vertex_face_offsets[V + e + 1] = C.vertex_face_offsets[V + e] + (boundary ? 3 : 6);
-    C.vertex_ring_offsets[V + e + 1] = C.vertex_ring_offsets[V + e] + (boundary ? 4 : 6);
-  }
-  resize_bulk(C.vertex_faces, C.vertex_face_offsets.back());
-  resize_bulk(C.vertex_face_corner, C.vertex_face_offsets.back());
-  resize_bulk(C.vertex_edges, C.vertex_ring_offsets.back());
-  assign_bulk(C.vertex_on_boundary, C.vertex_count, 0);
+  child_ring_offsets(P, C, {6, 6, 3, 4}, false);
   vertex_child_rings(P, C, [&](Index f, int corner) { return 4 * f + corner; });
   tbb::parallel_for(Index(0), E, [&](Index e) {
     const Index a = P.edge_vertices[2 * e], b = P.edge_vertices[2 * e + 1];
