@@ -1,6 +1,9 @@
 // Primal quad and triangle splits (seed 000 §4: "a triangle is split into 4"; Catmull-Clark's
 // topology: new face point joined to the new edge points).
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include "framework/refine/primal_topology.h"
 #include "framework/refine/splitter.h"
@@ -15,13 +18,16 @@ ChildOrigins primal_origins(const Level& parent, bool with_face_points) {
   const Index v = parent.vertex_count, e = parent.edge_count(), f = parent.face_count();
   const Index total = v + e + (with_face_points ? f : 0);
   ChildOrigins o;
-  resize_bulk(o.kind, size_t(total));
-  resize_bulk(o.parent, size_t(total));
-  assign_bulk(o.local, size_t(total), LocalIndex(0));
-  for (Index i = 0; i < v; ++i) o.kind[i] = OriginKind::Vertex, o.parent[i] = i;
-  for (Index i = 0; i < e; ++i) o.kind[v + i] = OriginKind::Edge, o.parent[v + i] = i;
-  if (with_face_points)
-    for (Index i = 0; i < f; ++i) o.kind[v + e + i] = OriginKind::Face, o.parent[v + e + i] = i;
+  // Sized side by side (each resize zero-fills in its own thread), filled in parallel.
+  tbb::parallel_invoke([&] { resize_bulk(o.kind, size_t(total)); }, [&] { resize_bulk(o.parent, size_t(total)); },
+                       [&] { assign_bulk(o.local, size_t(total), LocalIndex(0)); });
+  tbb::parallel_for(tbb::blocked_range<Index>(0, total, 1 << 14), [&](const tbb::blocked_range<Index>& r) {
+    for (Index i = r.begin(); i < r.end(); ++i) {
+      const OriginKind kind = i < v ? OriginKind::Vertex : i < v + e ? OriginKind::Edge : OriginKind::Face;
+      o.kind[i] = kind;
+      o.parent[i] = i < v ? i : i < v + e ? i - v : i - v - e;
+    }
+  });
   o.runs.emplace();
   auto declare = [&](OriginKind kind, Index first, Index count) {
     if (count > 0) o.runs->first[int(kind)] = first, o.runs->count[int(kind)] = count;
@@ -34,17 +40,22 @@ ChildOrigins primal_origins(const Level& parent, bool with_face_points) {
 
 // Which parent face each child face lies in: quad children follow parent corners.
 std::vector<Index> quad_parent_faces(const Level& parent) {
-  std::vector<Index> out(parent.corner_count());
-  for (Index f = 0; f < parent.face_count(); ++f)
-    std::fill(out.begin() + parent.face_offsets[f], out.begin() + parent.face_offsets[f + 1], f);
+  std::vector<Index> out;
+  resize_bulk(out, size_t(parent.corner_count()));
+  tbb::parallel_for(tbb::blocked_range<Index>(0, parent.face_count(), 1 << 12), [&](const tbb::blocked_range<Index>& r) {
+    for (Index f = r.begin(); f < r.end(); ++f)
+      std::fill(out.begin() + parent.face_offsets[f], out.begin() + parent.face_offsets[f + 1], f);
+  });
   return out;
 }
 
 ChildOrigins triangle_origins(const Level& parent) {
   ChildOrigins origins = primal_origins(parent, false);
   resize_bulk(origins.parent_face, 4 * size_t(parent.face_count()));
-  for (Index f = 0; f < parent.face_count(); ++f)
-    for (int t = 0; t < 4; ++t) origins.parent_face[4 * f + t] = f;
+  tbb::parallel_for(tbb::blocked_range<Index>(0, parent.face_count(), 1 << 14), [&](const tbb::blocked_range<Index>& r) {
+    for (Index f = r.begin(); f < r.end(); ++f)
+      for (int t = 0; t < 4; ++t) origins.parent_face[4 * size_t(f) + t] = f;
+  });
   return origins;
 }
 
