@@ -34,6 +34,8 @@ void parallel_ranges(Index count, Body body) {
 struct Corners {
   CornerIndex index;
   ScratchVector<Index> twin;  // per corner: the corner that runs its edge backwards, or kNone (boundary)
+  // Per vertex: its corner whose edge leaves along the boundary, or kNone (see number_edges).
+  ScratchVector<Index> boundary_corner;
 };
 
 // Twins of every corner; false when an edge is not manifold: two corners run it the same
@@ -113,10 +115,14 @@ void size_level(Level& level, Index edges) {
 }
 
 // face_edges, edge_vertices, edge_faces: each chunk numbers its owning corners' edges from
-// its first edge.
-void number_edges(Level& level, const Corners& k, const std::vector<Index>& first_edge) {
+// its first edge, and gives each edge to its owner's twin too; boundary corners per vertex.
+void number_edges(Level& level, Corners& k, const std::vector<Index>& first_edge) {
   const Index corners = level.corner_count();
   const Index chunks = Index(first_edge.size()) - 1;
+  k.boundary_corner.resize(size_t(level.vertex_count));
+  parallel_ranges(level.vertex_count, [&](Index begin, Index end) {
+    std::fill(k.boundary_corner.begin() + begin, k.boundary_corner.begin() + end, kNone);
+  });
   tbb::parallel_for(Index(0), chunks, [&](Index chunk) {
     const Index begin = chunk * kGrain, end = std::min(corners, begin + kGrain);
     Index e = first_edge[chunk];
@@ -124,6 +130,10 @@ void number_edges(Level& level, const Corners& k, const std::vector<Index>& firs
       if (!owns_edge(k, c)) continue;
       const Index f = k.index.face[c], twin = k.twin[c];
       level.face_edges[c] = e;
+      if (twin != kNone) level.face_edges[twin] = e;  // no other chunk writes there: twin is not an owner
+      // A boundary edge marks the vertex it leaves, for its ring start. Two chunks write
+      // the same vertex only where two boundaries leave it (two fans: the walk refuses it).
+      if (twin == kNone) std::atomic_ref<Index>(k.boundary_corner[level.face_vertices[c]]).store(c, std::memory_order_relaxed);
       level.edge_vertices[2 * e] = level.face_vertices[c];
       level.edge_vertices[2 * e + 1] = level.face_vertices[next_corner(level, f, c)];
       level.edge_faces[2 * e] = f;
@@ -131,29 +141,6 @@ void number_edges(Level& level, const Corners& k, const std::vector<Index>& firs
       ++e;
     }
   });
-  // The other corner of each interior edge takes its owner's edge.
-  parallel_ranges(corners, [&](Index begin, Index end) {
-    for (Index c = begin; c < end; ++c)
-      if (!owns_edge(k, c)) level.face_edges[c] = level.face_edges[k.twin[c]];
-  });
-}
-
-// Where v's ring starts: its corner whose edge leaves along the boundary, if any (then its
-// ring has one edge more than faces), else its first corner; kConflict when two of its
-// edges leave along the boundary (two fans meet at v).
-constexpr Index kConflict = -2;
-Index ring_start(const Corners& k, Index v) {
-  const CornerIndex& ci = k.index;
-  Index start = ci.vertex_offsets[v] < ci.vertex_offsets[v + 1] ? ci.vertex_corners[ci.vertex_offsets[v]] : kNone;
-  bool boundary = false;
-  for (Index i = ci.vertex_offsets[v]; i < ci.vertex_offsets[v + 1]; ++i) {
-    const Index c = ci.vertex_corners[i];
-    if (k.twin[c] != kNone) continue;
-    if (boundary) return kConflict;
-    boundary = true;
-    start = c;
-  }
-  return start;
 }
 
 // Walks v's corners CCW from `start` into its ring slots: the next face CCW lies across
@@ -184,39 +171,36 @@ bool walk_ring(Level& level, const Corners& k, Index v, Index start, Index edge_
 }
 
 // Vertex rings (offsets, faces, corners, edges) and boundary flags, in fixed blocks of
-// vertices: each block finds its vertices' ring starts and counts its boundary vertices, the
-// counts are summed in block order (a boundary vertex has one ring edge more than faces),
-// then each block writes its ring offsets and walks its rings.
+// vertices: each block counts its boundary vertices, the counts are summed in block order
+// (a boundary vertex has one ring edge more than faces), then each block writes its ring
+// offsets and walks its rings. A ring starts at the vertex's boundary corner, if any, else
+// at its first corner. A vertex where two fans meet is found by the walk: from either start
+// it comes back, or to the boundary, before it has visited every corner.
 bool build_rings(Level& level, const Corners& k) {
   const CornerIndex& ci = k.index;
   const Index V = level.vertex_count;
   const Index blocks = (V + kGrain - 1) / kGrain;
-  ScratchVector<Index> start(static_cast<size_t>(V));
   std::vector<Index> boundary_before(size_t(blocks) + 1, 0);
-  std::atomic<bool> fans{true};
   tbb::parallel_for(Index(0), blocks, [&](Index b) {
     Index boundary = 0;
     for (Index v = b * kGrain; v < std::min(V, (b + 1) * kGrain); ++v) {
-      start[v] = ring_start(k, v);
-      if (start[v] == kConflict) {
-        fans = false;
-        continue;
-      }
-      level.vertex_on_boundary[v] = start[v] != kNone && k.twin[start[v]] == kNone;
+      level.vertex_on_boundary[v] = k.boundary_corner[v] != kNone;
       boundary += level.vertex_on_boundary[v];
     }
     boundary_before[b + 1] = boundary;
   });
-  if (!fans) return false;
   for (Index b = 0; b < blocks; ++b) boundary_before[b + 1] += boundary_before[b];
   level.vertex_ring_offsets[0] = 0;
+  std::atomic<bool> fans{true};
   tbb::parallel_for(Index(0), blocks, [&](Index b) {
     Index boundary = boundary_before[b];  // boundary vertices before v
     for (Index v = b * kGrain; v < std::min(V, (b + 1) * kGrain) && fans.load(std::memory_order_relaxed); ++v) {
       const Index ring_begin = ci.vertex_offsets[v] + boundary;
       boundary += level.vertex_on_boundary[v];
       level.vertex_ring_offsets[v + 1] = ci.vertex_offsets[v + 1] + boundary;
-      if (!walk_ring(level, k, v, start[v], ring_begin)) fans = false;
+      const Index first = ci.vertex_offsets[v] < ci.vertex_offsets[v + 1] ? ci.vertex_corners[ci.vertex_offsets[v]] : kNone;
+      const Index start = level.vertex_on_boundary[v] ? k.boundary_corner[v] : first;
+      if (!walk_ring(level, k, v, start, ring_begin)) fans = false;
     }
   });
   return fans;
