@@ -1,11 +1,10 @@
 #include "framework/refine/primal_topology.h"
 #include "framework/util/bulk_memory.h"
 
-#include <functional>
+#include <algorithm>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
-#include <tbb/parallel_scan.h>
 
 namespace subdiv {
 namespace {
@@ -72,18 +71,28 @@ void child_ring_offsets(const Level& P, Level& C, EdgeChildRing ring, bool face_
     }
   });
   const Index face_base = P.vertex_face_offsets[V], ring_base = P.vertex_ring_offsets[V];
-  tbb::parallel_scan(
-      tbb::blocked_range<Index>(0, E, 1 << 14), Index(0),
-      [&](const tbb::blocked_range<Index>& r, Index boundary, bool final) {
-        for (Index e = r.begin(); e < r.end(); ++e) {
-          boundary += P.edge_on_boundary(e);  // boundary edges up to e
-          if (!final) continue;
-          C.vertex_face_offsets[V + e + 1] = face_base + ring.faces * (e + 1) - (ring.faces - ring.boundary_faces) * boundary;
-          C.vertex_ring_offsets[V + e + 1] = ring_base + ring.edges * (e + 1) - (ring.edges - ring.boundary_edges) * boundary;
-        }
-        return boundary;
-      },
-      std::plus<Index>());
+  // Boundary edges counted per block of edges, the counts summed in block order, then each
+  // block writes its offsets (a two-pass scan; the same for any thread count).
+  constexpr Index kBlock = 1 << 16;
+  const Index blocks = (E + kBlock - 1) / kBlock;
+  std::vector<Index> boundary_before(size_t(blocks) + 1, 0);
+  const Index* edge_face = P.edge_faces.data();
+  tbb::parallel_for(Index(0), blocks, [&](Index b) {
+    Index boundary = 0;
+    for (Index e = b * kBlock, end = std::min(E, e + kBlock); e < end; ++e) boundary += edge_face[2 * e + 1] == kNone;
+    boundary_before[b + 1] = boundary;
+  });
+  for (Index b = 0; b < blocks; ++b) boundary_before[b + 1] += boundary_before[b];
+  tbb::parallel_for(Index(0), blocks, [&](Index b) {
+    Index* face_offset = C.vertex_face_offsets.data() + V + 1;
+    Index* ring_offset = C.vertex_ring_offsets.data() + V + 1;
+    Index boundary = boundary_before[b];  // boundary edges up to e
+    for (Index e = b * kBlock, end = std::min(E, e + kBlock); e < end; ++e) {
+      boundary += edge_face[2 * e + 1] == kNone;
+      face_offset[e] = face_base + ring.faces * (e + 1) - (ring.faces - ring.boundary_faces) * boundary;
+      ring_offset[e] = ring_base + ring.edges * (e + 1) - (ring.edges - ring.boundary_edges) * boundary;
+    }
+  });
   if (face_children) {
     const Index face_start = C.vertex_face_offsets[V + E], ring_start = C.vertex_ring_offsets[V + E];
     tbb::parallel_for(tbb::blocked_range<Index>(0, F, 1 << 14), [&](const tbb::blocked_range<Index>& r) {
