@@ -3,12 +3,12 @@
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 
 #include "framework/refine/primal_topology.h"
 #include "framework/refine/splitter.h"
 #include "framework/util/error.h"
 #include "framework/util/bulk_memory.h"
+#include "framework/util/resize_side_by_side.h"
 
 namespace subdiv {
 namespace {
@@ -18,9 +18,8 @@ ChildOrigins primal_origins(const Level& parent, bool with_face_points) {
   const Index v = parent.vertex_count, e = parent.edge_count(), f = parent.face_count();
   const Index total = v + e + (with_face_points ? f : 0);
   ChildOrigins o;
-  // Sized side by side (each resize zero-fills in its own thread), filled in parallel.
-  tbb::parallel_invoke([&] { resize_bulk(o.kind, size_t(total)); }, [&] { resize_bulk(o.parent, size_t(total)); },
-                       [&] { assign_bulk(o.local, size_t(total), LocalIndex(0)); });
+  // Sized side by side (local stays 0), filled in parallel.
+  resize_side_by_side(Sized{o.kind, size_t(total)}, Sized{o.parent, size_t(total)}, Sized{o.local, size_t(total)});
   // One straight loop per block of children (they vectorise; a kind test per child did not).
   const auto fill = [&](OriginKind kind, Index first, Index count) {
     tbb::parallel_for(tbb::blocked_range<Index>(0, count, 1 << 14), [&](const tbb::blocked_range<Index>& r) {

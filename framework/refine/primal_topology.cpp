@@ -1,10 +1,9 @@
 #include "framework/refine/primal_topology.h"
-#include "framework/util/bulk_memory.h"
+#include "framework/util/resize_side_by_side.h"
 
 #include <algorithm>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 
 namespace subdiv {
 namespace {
@@ -62,8 +61,8 @@ struct EdgeChildRing {
 };
 void child_ring_offsets(const Level& P, Level& C, EdgeChildRing ring, bool face_children) {
   const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count();
-  tbb::parallel_invoke([&] { resize_bulk(C.vertex_face_offsets, C.vertex_count + 1); },
-                       [&] { resize_bulk(C.vertex_ring_offsets, C.vertex_count + 1); });
+  resize_side_by_side(Sized{C.vertex_face_offsets, size_t(C.vertex_count) + 1},
+                      Sized{C.vertex_ring_offsets, size_t(C.vertex_count) + 1});
   tbb::parallel_for(tbb::blocked_range<Index>(0, V + 1, 1 << 14), [&](const tbb::blocked_range<Index>& r) {
     for (Index v = r.begin(); v < r.end(); ++v) {
       C.vertex_face_offsets[v] = P.vertex_face_offsets[v];
@@ -102,10 +101,10 @@ void child_ring_offsets(const Level& P, Level& C, EdgeChildRing ring, bool face_
       }
     });
   }
-  tbb::parallel_invoke([&] { resize_bulk(C.vertex_faces, C.vertex_face_offsets.back()); },
-                       [&] { resize_bulk(C.vertex_face_corner, C.vertex_face_offsets.back()); },
-                       [&] { resize_bulk(C.vertex_edges, C.vertex_ring_offsets.back()); },
-                       [&] { assign_bulk(C.vertex_on_boundary, C.vertex_count, 0); });
+  resize_side_by_side(Sized{C.vertex_faces, size_t(C.vertex_face_offsets.back())},
+                      Sized{C.vertex_face_corner, size_t(C.vertex_face_offsets.back())},
+                      Sized{C.vertex_edges, size_t(C.vertex_ring_offsets.back())},
+                      Sized{C.vertex_on_boundary, size_t(C.vertex_count)});
 }
 
 void halves(const Level& P, Level& C, Index first_mid) {
@@ -127,11 +126,12 @@ Level quad_children(const Level& P) {
   const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count(), N = P.corner_count();
   Level C;
   C.vertex_count = V + E + F;
-  // Side by side: each resize zero-fills in its own thread.
-  tbb::parallel_invoke([&] { resize_bulk(C.face_offsets, N + 1); }, [&] { resize_bulk(C.face_vertices, 4 * size_t(N)); },
-                       [&] { if (edges) resize_bulk(C.face_edges, 4 * size_t(N)); },
-                       [&] { if (edges) resize_bulk(C.edge_vertices, 2 * size_t(2 * E + N)); },
-                       [&] { if (edges) resize_bulk(C.edge_faces, 2 * size_t(2 * E + N)); });
+  if (edges)
+    resize_side_by_side(Sized{C.face_offsets, size_t(N) + 1}, Sized{C.face_vertices, 4 * size_t(N)},
+                        Sized{C.face_edges, 4 * size_t(N)}, Sized{C.edge_vertices, 2 * size_t(2 * E + N)},
+                        Sized{C.edge_faces, 2 * size_t(2 * E + N)});
+  else
+    resize_side_by_side(Sized{C.face_offsets, size_t(N) + 1}, Sized{C.face_vertices, 4 * size_t(N)});
   tbb::parallel_for(Index(0), F, [&](Index f) {
     const Index o = P.face_offsets[f], k = P.face_size(f);
     for (Index i = 0; i < k; ++i) {
@@ -215,12 +215,12 @@ Level triangle_children(const Level& P) {
   const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count();
   Level C;
   C.vertex_count = V + E;
-  // Side by side: each resize zero-fills in its own thread.
-  tbb::parallel_invoke([&] { resize_bulk(C.face_offsets, 4 * size_t(F) + 1); },
-                       [&] { resize_bulk(C.face_vertices, 12 * size_t(F)); },
-                       [&] { if (edges) resize_bulk(C.face_edges, 12 * size_t(F)); },
-                       [&] { if (edges) resize_bulk(C.edge_vertices, 2 * size_t(2 * E + 3 * F)); },
-                       [&] { if (edges) resize_bulk(C.edge_faces, 2 * size_t(2 * E + 3 * F)); });
+  if (edges)
+    resize_side_by_side(Sized{C.face_offsets, 4 * size_t(F) + 1}, Sized{C.face_vertices, 12 * size_t(F)},
+                        Sized{C.face_edges, 12 * size_t(F)}, Sized{C.edge_vertices, 2 * size_t(2 * E + 3 * F)},
+                        Sized{C.edge_faces, 2 * size_t(2 * E + 3 * F)});
+  else
+    resize_side_by_side(Sized{C.face_offsets, 4 * size_t(F) + 1}, Sized{C.face_vertices, 12 * size_t(F)});
   tbb::parallel_for(Index(0), F, [&](Index f) {
     const Index o = P.face_offsets[f];
     for (int i = 0; i < 3; ++i) {

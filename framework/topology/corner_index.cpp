@@ -58,6 +58,7 @@ CornerIndex index_corners(const Level& level, Index chunks, SlotHeads heads) {
   // Each chunk's corners per vertex; then, per vertex, where each chunk's first corner goes.
   const auto chunk_begin = [&](Index k) { return Index(std::int64_t(corners) * k / chunks); };
   std::vector<ScratchVector<Index>> cursor(static_cast<size_t>(chunks));
+  for (auto& counts : cursor) counts.reserve(size_t(V));  // in this thread's heap (util/resize_side_by_side.h)
   tbb::parallel_for(Index(0), chunks, [&](Index k) {
     ScratchVector<Index>& counts = cursor[size_t(k)];
     counts.assign(size_t(V), 0);

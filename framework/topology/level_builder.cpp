@@ -88,7 +88,10 @@ Level build_level(Index vertex_count, std::span<const Index> face_offsets,
   level.vertex_count = vertex_count;
   static const Index kNoFaces[] = {0};
   if (face_offsets.empty()) face_offsets = kNoFaces;
-  // The copy (serial memory traffic) beside the parallel check of the caller's arrays.
+  // The copy (serial memory traffic) beside the parallel check of the caller's arrays; the
+  // memory reserved in this thread (util/resize_side_by_side.h says why).
+  level.face_offsets.reserve(face_offsets.size());
+  level.face_vertices.reserve(face_vertices.size());
   bool simple = true;
   tbb::parallel_invoke(
       [&] {

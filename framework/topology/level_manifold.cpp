@@ -10,11 +10,10 @@
 #include <atomic>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 
 #include "framework/topology/level.h"
 #include "framework/topology/level_rings.h"
-#include "framework/util/bulk_memory.h"
+#include "framework/util/resize_side_by_side.h"
 
 namespace subdiv {
 namespace {
@@ -94,24 +93,17 @@ std::vector<Index> first_edges(const Level& level, const Corners& k) {
   return first_edge;
 }
 
-// Sizes every array the stages below fill, side by side: resize zero-fills in the calling
-// thread, and for a million faces that is some 90 MB (a sixth of the builder's time on one
-// thread, all of it serial when the arrays are sized one after another). A manifold level
+// Sizes every array the stages below fill, side by side (util/resize_side_by_side.h: their
+// zero-fill was a sixth of the builder's time on one thread, all of it serial). A manifold level
 // with `edges` edges has 2 * edges ring edges: every corner gives one, and every boundary
 // vertex one more, as many as the boundary edges (sizes for a level whose fans meet at no
 // vertex; build_rings gives up before writing otherwise).
 void size_level(Level& level, Index edges) {
   const size_t corners = size_t(level.corner_count()), V = size_t(level.vertex_count);
-  tbb::parallel_invoke([&] { resize_bulk(level.face_edges, corners); },
-                       [&] { resize_bulk(level.edge_vertices, 2 * size_t(edges)); },
-                       [&] { resize_bulk(level.edge_faces, 2 * size_t(edges)); },
-                       [&] { resize_bulk(level.vertex_faces, corners); },
-                       [&] { resize_bulk(level.vertex_face_corner, corners); },
-                       [&] { resize_bulk(level.vertex_edges, 2 * size_t(edges)); },
-                       [&] {
-                         resize_bulk(level.vertex_ring_offsets, V + 1);
-                         resize_bulk(level.vertex_on_boundary, V);
-                       });
+  resize_side_by_side(Sized{level.face_edges, corners}, Sized{level.edge_vertices, 2 * size_t(edges)},
+                      Sized{level.edge_faces, 2 * size_t(edges)}, Sized{level.vertex_faces, corners},
+                      Sized{level.vertex_face_corner, corners}, Sized{level.vertex_edges, 2 * size_t(edges)},
+                      Sized{level.vertex_ring_offsets, V + 1}, Sized{level.vertex_on_boundary, V});
 }
 
 // face_edges, edge_vertices, edge_faces: each chunk numbers its owning corners' edges from
