@@ -49,14 +49,12 @@ CornerIndex index_corners(const Level& level, Index chunks, SlotHeads heads) {
   CornerIndex ci;
   const Index corners = level.corner_count(), V = level.vertex_count, faces = level.face_count();
   const Index* face_vertex = level.face_vertices.data();
-  ci.face.resize(size_t(corners));
-  tbb::parallel_for(tbb::blocked_range<Index>(0, faces, kGrain / 4), [&](const tbb::blocked_range<Index>& r) {
-    for (Index f = r.begin(); f < r.end(); ++f)
-      std::fill(ci.face.begin() + level.face_offsets[f], ci.face.begin() + level.face_offsets[f + 1], f);
-  });
+  const Index* face_offset = level.face_offsets.data();
 
+  // Chunks of whole faces, so that the placing pass below also writes each corner's face.
   // Each chunk's corners per vertex; then, per vertex, where each chunk's first corner goes.
-  const auto chunk_begin = [&](Index k) { return Index(std::int64_t(corners) * k / chunks); };
+  const auto first_face = [&](Index k) { return Index(std::int64_t(faces) * k / chunks); };
+  const auto chunk_begin = [&](Index k) { return face_offset[first_face(k)]; };
   std::vector<ScratchVector<Index>> cursor(static_cast<size_t>(chunks));
   for (auto& counts : cursor) counts.reserve(size_t(V));  // in this thread's heap (util/resize_side_by_side.h)
   tbb::parallel_for(Index(0), chunks, [&](Index k) {
@@ -104,24 +102,23 @@ CornerIndex index_corners(const Level& level, Index chunks, SlotHeads heads) {
       offset[v + 1] = next;
     }
   });
+  ci.face.resize(size_t(corners));
   ci.vertex_corners.resize(size_t(corners));
   if (heads == SlotHeads::kYes) ci.heads.resize(size_t(corners));
   tbb::parallel_for(Index(0), chunks, [&](Index k) {
     Index* place = counts[size_t(k)];
     Index* sorted = ci.vertex_corners.data();
-    const Index begin = chunk_begin(k), end = chunk_begin(k + 1);
-    if (heads == SlotHeads::kNo) {
-      for (Index c = begin; c < end; ++c) sorted[place[face_vertex[c]]++] = c;
-      return;
-    }
+    Index* face = ci.face.data();
     Index* head = ci.heads.data();
-    const Index* offset = level.face_offsets.data();
-    const Index* face = ci.face.data();
-    for (Index c = begin; c < end; ++c) {
-      const Index f = face[c], next = c + 1 == offset[f + 1] ? offset[f] : c + 1;
-      const Index slot = place[face_vertex[c]]++;
-      sorted[slot] = c;
-      head[slot] = face_vertex[next];
+    const bool with_heads = heads == SlotHeads::kYes;
+    for (Index f = first_face(k), end = first_face(k + 1); f < end; ++f) {
+      const Index first = face_offset[f], last = face_offset[f + 1];
+      for (Index c = first; c < last; ++c) {
+        const Index slot = place[face_vertex[c]]++;
+        face[c] = f;
+        sorted[slot] = c;
+        if (with_heads) head[slot] = face_vertex[c + 1 == last ? first : c + 1];
+      }
     }
   });
   return ci;
