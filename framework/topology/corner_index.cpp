@@ -2,7 +2,7 @@
 // builders.
 //
 // The corners around a vertex come in corner order (a stable counting sort by vertex), so
-// the index is the same whatever the thread count: corners are cut into a few chunks, each
+// the index is the same whatever the thread count: faces are cut into a few chunks, each
 // chunk counts its corners per vertex, the counts are summed per vertex in chunk order and
 // scanned over the vertices, and each chunk then places its corners from its own cursors.
 // With slot heads asked for, each placed corner also gets the vertex its edge runs to.

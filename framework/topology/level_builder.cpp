@@ -4,6 +4,7 @@
 // Vtr does.
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -64,17 +65,26 @@ bool check_faces(const Faces& faces) {
   std::atomic<Index> first_bad{faces.count()};
   std::atomic<bool> simple{true};
   tbb::parallel_for(tbb::blocked_range<Index>(0, faces.count(), 1 << 14), [&](const tbb::blocked_range<Index>& r) {
+    const Index* offset = faces.offsets.data();
+    const std::uint32_t vertex_count = std::uint32_t(faces.vertex_count);
+    bool repeats = false;
     for (Index f = r.begin(); f < r.end(); ++f) {
-      auto verts = faces.face(f);
-      bool bad = verts.size() < 3 || verts.size() > size_t(kMaxFaceSize);
-      for (Index v : verts) bad = bad || v < 0 || v >= faces.vertex_count;
+      const Index n = offset[f + 1] - offset[f];
+      const Index* v = faces.vertices.data() + offset[f];
+      bool bad = n < 3 || n > kMaxFaceSize;
+      // Without early exits (one unsigned test catches negative indices too).
+      for (Index i = 0; i < n && !bad; ++i) bad = std::uint32_t(v[i]) >= vertex_count;
       if (bad) {
         Index seen = first_bad.load();
         while (f < seen && !first_bad.compare_exchange_weak(seen, f)) {}
-        return;
+        break;
       }
-      if (repeats_vertex(verts)) simple = false;
+      // Triangles and quads, the common faces, pairwise without a loop.
+      if (n == 3) repeats = repeats || v[0] == v[1] || v[1] == v[2] || v[2] == v[0];
+      else if (n == 4) repeats = repeats || v[0] == v[1] || v[0] == v[2] || v[0] == v[3] || v[1] == v[2] || v[1] == v[3] || v[2] == v[3];
+      else repeats = repeats || repeats_vertex({v, size_t(n)});
     }
+    if (repeats) simple = false;
   });
   if (first_bad < faces.count()) check_face(faces, first_bad);
   return simple;
