@@ -131,9 +131,13 @@ long euler_characteristic(const Level& level) {
 }
 
 bool Level::all_faces_have_size(int k) const {
-  for (Index f = 0; f < face_count(); ++f)
-    if (face_size(f) != k) return false;
-  return true;
+  return tbb::parallel_reduce(
+      tbb::blocked_range<Index>(0, face_count(), 1 << 16), true,
+      [&](const tbb::blocked_range<Index>& r, bool all) {
+        for (Index f = r.begin(); f < r.end() && all; ++f) all = face_size(f) == k;
+        return all;
+      },
+      [](bool a, bool b) { return a && b; });
 }
 
 int Level::max_face_size() const {
