@@ -1,5 +1,9 @@
 #include "framework/features/base_tags.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
 #include "framework/features/sharpness.h"
 
 namespace subdiv {
@@ -48,11 +52,23 @@ void sharpen_non_manifold(Level& L) {
 
 void tag_boundary_corners(Level& L, BoundaryInterpolation mode) {
   if (mode != BoundaryInterpolation::EdgesAndCorners) return;
-  for (Index v = 0; v < L.vertex_count; ++v) {
-    if (L.incident_face_count(v) != 1 || L.valence(v) != 2) continue;
-    ensure_vertex_tags(L);
-    L.vertex_sharpness[v] = kInfinitelySharp;
-  }
+  // In parallel (every vertex of the base level is read): whether there is a corner, then
+  // the tags.
+  const auto is_corner = [&](Index v) { return L.incident_face_count(v) == 1 && L.valence(v) == 2; };
+  const tbb::blocked_range<Index> vertices(0, L.vertex_count, 1 << 16);
+  const bool any = tbb::parallel_reduce(
+      vertices, false,
+      [&](const tbb::blocked_range<Index>& r, bool found) {
+        for (Index v = r.begin(); v < r.end() && !found; ++v) found = is_corner(v);
+        return found;
+      },
+      [](bool a, bool b) { return a || b; });
+  if (!any) return;
+  ensure_vertex_tags(L);
+  tbb::parallel_for(vertices, [&](const tbb::blocked_range<Index>& r) {
+    for (Index v = r.begin(); v < r.end(); ++v)
+      if (is_corner(v)) L.vertex_sharpness[v] = kInfinitelySharp;
+  });
 }
 
 }  // namespace subdiv

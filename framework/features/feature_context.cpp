@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <tbb/parallel_for.h>
 
+#include "framework/util/resize_side_by_side.h"
+
 namespace subdiv {
 namespace {
 
@@ -106,8 +108,7 @@ FeatureContexts classify_features(const Level& level, const FeatureOptions& opti
   FeatureContexts fc;
   fc.edge_sharpness = effective_edge_sharpness(level);
   fc.vertex_sharpness = effective_vertex_sharpness(level, options.boundary);
-  fc.edges.resize(level.edge_count());
-  fc.vertices.resize(level.vertex_count);
+  resize_side_by_side(Sized{fc.edges, size_t(level.edge_count())}, Sized{fc.vertices, size_t(level.vertex_count)});
   tbb::parallel_for(Index(0), level.edge_count(), [&](Index e) {
     fc.edges[e] = classify_edge(level, fc, e, options.crease_method);
   });

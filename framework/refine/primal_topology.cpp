@@ -1,6 +1,8 @@
 #include "framework/refine/primal_topology.h"
-#include "framework/util/bulk_memory.h"
+#include "framework/util/resize_side_by_side.h"
 
+#include <algorithm>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 namespace subdiv {
@@ -48,9 +50,61 @@ void vertex_child_rings(const Level& P, Level& C, ChildFaceAtCorner child_face) 
   });
 }
 
-void copy_vertex_offsets(const Level& P, Level& C) {
-  std::copy(P.vertex_face_offsets.begin(), P.vertex_face_offsets.end(), C.vertex_face_offsets.begin());
-  std::copy(P.vertex_ring_offsets.begin(), P.vertex_ring_offsets.end(), C.vertex_ring_offsets.begin());
+// Ring offsets of the child level and its ring arrays, sized. Vertex children keep their
+// parents' rings; an edge child has ring faces and edges as given, interior or on the
+// boundary; the child of face f (quad split) has a ring face and edge per corner of f. The offsets are closed forms of the boundary edges counted before each edge
+// (a parallel scan), so no stage runs over the edges or faces alone, and the arrays' zero-
+// fills run side by side.
+struct EdgeChildRing {
+  Index faces, edges;                    // of an interior edge's child
+  Index boundary_faces, boundary_edges;  // of a boundary edge's child
+};
+void child_ring_offsets(const Level& P, Level& C, EdgeChildRing ring, bool face_children) {
+  const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count();
+  resize_side_by_side(Sized{C.vertex_face_offsets, size_t(C.vertex_count) + 1},
+                      Sized{C.vertex_ring_offsets, size_t(C.vertex_count) + 1});
+  tbb::parallel_for(tbb::blocked_range<Index>(0, V + 1, 1 << 14), [&](const tbb::blocked_range<Index>& r) {
+    for (Index v = r.begin(); v < r.end(); ++v) {
+      C.vertex_face_offsets[v] = P.vertex_face_offsets[v];
+      C.vertex_ring_offsets[v] = P.vertex_ring_offsets[v];
+    }
+  });
+  const Index face_base = P.vertex_face_offsets[V], ring_base = P.vertex_ring_offsets[V];
+  // Boundary edges counted per block of edges, the counts summed in block order, then each
+  // block writes its offsets (a two-pass scan; the same for any thread count).
+  constexpr Index kBlock = 1 << 16;
+  const Index blocks = (E + kBlock - 1) / kBlock;
+  std::vector<Index> boundary_before(size_t(blocks) + 1, 0);
+  const Index* edge_face = P.edge_faces.data();
+  tbb::parallel_for(Index(0), blocks, [&](Index b) {
+    Index boundary = 0;
+    for (Index e = b * kBlock, end = std::min(E, e + kBlock); e < end; ++e) boundary += edge_face[2 * e + 1] == kNone;
+    boundary_before[b + 1] = boundary;
+  });
+  for (Index b = 0; b < blocks; ++b) boundary_before[b + 1] += boundary_before[b];
+  tbb::parallel_for(Index(0), blocks, [&](Index b) {
+    Index* face_offset = C.vertex_face_offsets.data() + V + 1;
+    Index* ring_offset = C.vertex_ring_offsets.data() + V + 1;
+    Index boundary = boundary_before[b];  // boundary edges up to e
+    for (Index e = b * kBlock, end = std::min(E, e + kBlock); e < end; ++e) {
+      boundary += edge_face[2 * e + 1] == kNone;
+      face_offset[e] = face_base + ring.faces * (e + 1) - (ring.faces - ring.boundary_faces) * boundary;
+      ring_offset[e] = ring_base + ring.edges * (e + 1) - (ring.edges - ring.boundary_edges) * boundary;
+    }
+  });
+  if (face_children) {
+    const Index face_start = C.vertex_face_offsets[V + E], ring_start = C.vertex_ring_offsets[V + E];
+    tbb::parallel_for(tbb::blocked_range<Index>(0, F, 1 << 14), [&](const tbb::blocked_range<Index>& r) {
+      for (Index f = r.begin(); f < r.end(); ++f) {
+        C.vertex_face_offsets[V + E + f + 1] = face_start + P.face_offsets[f + 1];
+        C.vertex_ring_offsets[V + E + f + 1] = ring_start + P.face_offsets[f + 1];
+      }
+    });
+  }
+  resize_side_by_side(Sized{C.vertex_faces, size_t(C.vertex_face_offsets.back())},
+                      Sized{C.vertex_face_corner, size_t(C.vertex_face_offsets.back())},
+                      Sized{C.vertex_edges, size_t(C.vertex_ring_offsets.back())},
+                      Sized{C.vertex_on_boundary, size_t(C.vertex_count)});
 }
 
 void halves(const Level& P, Level& C, Index first_mid) {
@@ -72,13 +126,12 @@ Level quad_children(const Level& P) {
   const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count(), N = P.corner_count();
   Level C;
   C.vertex_count = V + E + F;
-  resize_bulk(C.face_offsets, N + 1);
-  resize_bulk(C.face_vertices, 4 * size_t(N));
-  if (edges) {
-    resize_bulk(C.face_edges, 4 * size_t(N));
-    resize_bulk(C.edge_vertices, 2 * size_t(2 * E + N));
-    resize_bulk(C.edge_faces, 2 * size_t(2 * E + N));
-  }
+  if (edges)
+    resize_side_by_side(Sized{C.face_offsets, size_t(N) + 1}, Sized{C.face_vertices, 4 * size_t(N)},
+                        Sized{C.face_edges, 4 * size_t(N)}, Sized{C.edge_vertices, 2 * size_t(2 * E + N)},
+                        Sized{C.edge_faces, 2 * size_t(2 * E + N)});
+  else
+    resize_side_by_side(Sized{C.face_offsets, size_t(N) + 1}, Sized{C.face_vertices, 4 * size_t(N)});
   tbb::parallel_for(Index(0), F, [&](Index f) {
     const Index o = P.face_offsets[f], k = P.face_size(f);
     for (Index i = 0; i < k; ++i) {
@@ -120,22 +173,7 @@ Level quad_split_topology(const Level& P) {
   });
   // Rings: vertex children as their parents; edge children have 4 faces (2 on a boundary);
   // face children have one per corner.
-  resize_bulk(C.vertex_face_offsets, C.vertex_count + 1);
-  resize_bulk(C.vertex_ring_offsets, C.vertex_count + 1);
-  copy_vertex_offsets(P, C);
-  for (Index e = 0; e < E; ++e) {
-    const bool boundary = P.edge_on_boundary(e);
-    C.vertex_face_offsets[V + e + 1] = C.vertex_face_offsets[V + e] + (boundary ? 2 : 4);
-    C.vertex_ring_offsets[V + e + 1] = C.vertex_ring_offsets[V + e] + (boundary ? 3 : 4);
-  }
-  for (Index f = 0; f < F; ++f) {
-    C.vertex_face_offsets[V + E + f + 1] = C.vertex_face_offsets[V + E + f] + P.face_size(f);
-    C.vertex_ring_offsets[V + E + f + 1] = C.vertex_ring_offsets[V + E + f] + P.face_size(f);
-  }
-  resize_bulk(C.vertex_faces, C.vertex_face_offsets.back());
-  resize_bulk(C.vertex_face_corner, C.vertex_face_offsets.back());
-  resize_bulk(C.vertex_edges, C.vertex_ring_offsets.back());
-  assign_bulk(C.vertex_on_boundary, C.vertex_count, 0);
+  child_ring_offsets(P, C, {4, 4, 2, 3}, true);
   vertex_child_rings(P, C, [&](Index f, int corner) { return P.face_offsets[f] + corner; });
   tbb::parallel_for(Index(0), E, [&](Index e) {
     const Index a = P.edge_vertices[2 * e], b = P.edge_vertices[2 * e + 1];
@@ -177,13 +215,12 @@ Level triangle_children(const Level& P) {
   const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count();
   Level C;
   C.vertex_count = V + E;
-  resize_bulk(C.face_offsets, 4 * size_t(F) + 1);
-  resize_bulk(C.face_vertices, 12 * size_t(F));
-  if (edges) {
-    resize_bulk(C.face_edges, 12 * size_t(F));
-    resize_bulk(C.edge_vertices, 2 * size_t(2 * E + 3 * F));
-    resize_bulk(C.edge_faces, 2 * size_t(2 * E + 3 * F));
-  }
+  if (edges)
+    resize_side_by_side(Sized{C.face_offsets, 4 * size_t(F) + 1}, Sized{C.face_vertices, 12 * size_t(F)},
+                        Sized{C.face_edges, 12 * size_t(F)}, Sized{C.edge_vertices, 2 * size_t(2 * E + 3 * F)},
+                        Sized{C.edge_faces, 2 * size_t(2 * E + 3 * F)});
+  else
+    resize_side_by_side(Sized{C.face_offsets, 4 * size_t(F) + 1}, Sized{C.face_vertices, 12 * size_t(F)});
   tbb::parallel_for(Index(0), F, [&](Index f) {
     const Index o = P.face_offsets[f];
     for (int i = 0; i < 3; ++i) {
@@ -224,18 +261,7 @@ Level triangle_split_topology(const Level& P) {
     C.edge_faces[4 * e + 1] = f1 == kNone ? kNone : 4 * f1 + local_corner(P, f1, a);
     C.edge_faces[4 * e + 3] = f1 == kNone ? kNone : 4 * f1 + local_corner(P, f1, b);
   });
-  resize_bulk(C.vertex_face_offsets, C.vertex_count + 1);
-  resize_bulk(C.vertex_ring_offsets, C.vertex_count + 1);
-  copy_vertex_offsets(P, C);
-  for (Index e = 0; e < E; ++e) {
-    const bool boundary = P.edge_on_boundary(e);
-    C.vertex_face_offsets[V + e + 1] = C.vertex_face_offsets[V + e] + (boundary ? 3 : 6);
-    C.vertex_ring_offsets[V + e + 1] = C.vertex_ring_offsets[V + e] + (boundary ? 4 : 6);
-  }
-  resize_bulk(C.vertex_faces, C.vertex_face_offsets.back());
-  resize_bulk(C.vertex_face_corner, C.vertex_face_offsets.back());
-  resize_bulk(C.vertex_edges, C.vertex_ring_offsets.back());
-  assign_bulk(C.vertex_on_boundary, C.vertex_count, 0);
+  child_ring_offsets(P, C, {6, 6, 3, 4}, false);
   vertex_child_rings(P, C, [&](Index f, int corner) { return 4 * f + corner; });
   tbb::parallel_for(Index(0), E, [&](Index e) {
     const Index a = P.edge_vertices[2 * e], b = P.edge_vertices[2 * e + 1];

@@ -4,9 +4,11 @@
 // Vtr does.
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_reduce.h>
 
 #include "framework/topology/level.h"
@@ -30,17 +32,27 @@ bool repeats_vertex(std::span<const Index> verts) {
   return false;
 }
 
+// The faces as given to build_level, before they are copied into the level.
+struct Faces {
+  Index vertex_count;
+  std::span<const Index> offsets, vertices;
+  Index count() const { return Index(offsets.size()) - 1; }
+  std::span<const Index> face(Index f) const {
+    return {vertices.data() + offsets[f], size_t(offsets[f + 1] - offsets[f])};
+  }
+};
+
 // Throws if no builder can take face f: fewer than 3 corners or more than kMaxFaceSize, or
 // a vertex out of range.
-void check_face(const Level& level, Index f) {
-  auto verts = level.face(f);
+void check_face(const Faces& faces, Index f) {
+  auto verts = faces.face(f);
   if (verts.size() < 3) throw Error(fmt::format("face {} has {} vertices; a face needs at least 3", f, verts.size()));
   if (verts.size() > size_t(kMaxFaceSize))
     throw Error(fmt::format("face {} has {} vertices; faces may have at most {} (as in OpenSubdiv); split it", f,
                             verts.size(), kMaxFaceSize));
   for (Index v : verts)
-    if (v < 0 || v >= level.vertex_count)
-      throw Error(fmt::format("face {} names vertex {}, but the mesh has {} vertices", f, v, level.vertex_count));
+    if (v < 0 || v >= faces.vertex_count)
+      throw Error(fmt::format("face {} names vertex {}, but the mesh has {} vertices", f, v, faces.vertex_count));
 }
 
 // Range and size checks (the first bad face in order is reported, whatever the threads);
@@ -49,24 +61,32 @@ void check_face(const Level& level, Index f) {
 // is kept: OpenSubdiv's Vtr refines it (its edges from a vertex to itself and the edge it
 // runs twice are non-manifold), and so does the general path, to the same result
 // (tests/unit/osd/osd_shapes_test.cpp, catmark_nonman_edges and loop_nonman_edges).
-bool check_faces(const Level& level) {
-  const Index faces = level.face_count();
-  std::atomic<Index> first_bad{faces};
+bool check_faces(const Faces& faces) {
+  std::atomic<Index> first_bad{faces.count()};
   std::atomic<bool> simple{true};
-  tbb::parallel_for(tbb::blocked_range<Index>(0, faces, 1 << 14), [&](const tbb::blocked_range<Index>& r) {
+  tbb::parallel_for(tbb::blocked_range<Index>(0, faces.count(), 1 << 14), [&](const tbb::blocked_range<Index>& r) {
+    const Index* offset = faces.offsets.data();
+    const std::uint32_t vertex_count = std::uint32_t(faces.vertex_count);
+    bool repeats = false;
     for (Index f = r.begin(); f < r.end(); ++f) {
-      auto verts = level.face(f);
-      bool bad = verts.size() < 3 || verts.size() > size_t(kMaxFaceSize);
-      for (Index v : verts) bad = bad || v < 0 || v >= level.vertex_count;
+      const Index n = offset[f + 1] - offset[f];
+      const Index* v = faces.vertices.data() + offset[f];
+      bool bad = n < 3 || n > kMaxFaceSize;
+      // Without early exits (one unsigned test catches negative indices too).
+      for (Index i = 0; i < n && !bad; ++i) bad = std::uint32_t(v[i]) >= vertex_count;
       if (bad) {
         Index seen = first_bad.load();
         while (f < seen && !first_bad.compare_exchange_weak(seen, f)) {}
-        return;
+        break;
       }
-      if (repeats_vertex(verts)) simple = false;
+      // Triangles and quads, the common faces, pairwise without a loop.
+      if (n == 3) repeats = repeats || v[0] == v[1] || v[1] == v[2] || v[2] == v[0];
+      else if (n == 4) repeats = repeats || v[0] == v[1] || v[0] == v[2] || v[0] == v[3] || v[1] == v[2] || v[1] == v[3] || v[2] == v[3];
+      else repeats = repeats || repeats_vertex({v, size_t(n)});
     }
+    if (repeats) simple = false;
   });
-  if (first_bad < faces) check_face(level, first_bad);
+  if (first_bad < faces.count()) check_face(faces, first_bad);
   return simple;
 }
 
@@ -76,10 +96,20 @@ Level build_level(Index vertex_count, std::span<const Index> face_offsets,
                   std::span<const Index> face_vertices) {
   Level level;
   level.vertex_count = vertex_count;
-  level.face_offsets.assign(face_offsets.begin(), face_offsets.end());
-  level.face_vertices.assign(face_vertices.begin(), face_vertices.end());
-  if (level.face_offsets.empty()) level.face_offsets.push_back(0);
-  if (check_faces(level) && build_manifold_level(level)) return level;
+  static const Index kNoFaces[] = {0};
+  if (face_offsets.empty()) face_offsets = kNoFaces;
+  // The copy (serial memory traffic) beside the parallel check of the caller's arrays; the
+  // memory reserved in this thread (util/resize_side_by_side.h says why).
+  level.face_offsets.reserve(face_offsets.size());
+  level.face_vertices.reserve(face_vertices.size());
+  bool simple = true;
+  tbb::parallel_invoke(
+      [&] {
+        level.face_offsets.assign(face_offsets.begin(), face_offsets.end());
+        level.face_vertices.assign(face_vertices.begin(), face_vertices.end());
+      },
+      [&] { simple = check_faces(Faces{vertex_count, face_offsets, face_vertices}); });
+  if (simple && build_manifold_level(level)) return level;
   // Not manifold: start again from the faces, identifying edges as OpenSubdiv does.
   Level general;
   general.vertex_count = vertex_count;
@@ -101,9 +131,13 @@ long euler_characteristic(const Level& level) {
 }
 
 bool Level::all_faces_have_size(int k) const {
-  for (Index f = 0; f < face_count(); ++f)
-    if (face_size(f) != k) return false;
-  return true;
+  return tbb::parallel_reduce(
+      tbb::blocked_range<Index>(0, face_count(), 1 << 16), true,
+      [&](const tbb::blocked_range<Index>& r, bool all) {
+        for (Index f = r.begin(); f < r.end() && all; ++f) all = face_size(f) == k;
+        return all;
+      },
+      [](bool a, bool b) { return a && b; });
 }
 
 int Level::max_face_size() const {

@@ -7,25 +7,8 @@
 
 #include "framework/topology/level.h"
 #include "framework/topology/level_rings.h"
-#include "framework/util/bulk_memory.h"
 
 namespace subdiv {
-
-CornerIndex index_corners(const Level& level) {
-  CornerIndex ci;
-  const Index corners = level.corner_count();
-  resize_bulk(ci.face, size_t(corners));
-  tbb::parallel_for(Index(0), level.face_count(), [&](Index f) {
-    std::fill(ci.face.begin() + level.face_offsets[f], ci.face.begin() + level.face_offsets[f + 1], f);
-  });
-  ci.vertex_offsets.assign(level.vertex_count + 1, 0);
-  for (Index v : level.face_vertices) ++ci.vertex_offsets[v + 1];
-  for (Index v = 0; v < level.vertex_count; ++v) ci.vertex_offsets[v + 1] += ci.vertex_offsets[v];
-  ci.vertex_corners.resize(corners);
-  std::vector<Index> fill(ci.vertex_offsets.begin(), ci.vertex_offsets.end() - 1);
-  for (Index c = 0; c < corners; ++c) ci.vertex_corners[fill[level.face_vertices[c]]++] = c;
-  return ci;
-}
 
 namespace {
 

@@ -4,14 +4,19 @@
 #include <vector>
 
 #include "framework/topology/level.h"
+#include "framework/util/scratch_vector.h"
 
 namespace subdiv {
 
 // Corner arrays the builders work with: for every corner, its face; corners around each vertex.
 struct CornerIndex {
-  std::vector<Index> face;            // per corner
+  ScratchVector<Index> face;          // per corner
   std::vector<Index> vertex_offsets;  // CSR: corners around each vertex (in corner order)
-  std::vector<Index> vertex_corners;
+  ScratchVector<Index> vertex_corners;
+  // Beside vertex_corners, if asked for: the vertex each corner's edge runs to (the next
+  // corner's vertex). Placed with the corners, where the faces are read in order; found
+  // afterwards it would take a scattered read per corner.
+  ScratchVector<Index> heads;
 };
 
 inline Index next_corner(const Level& level, Index face, Index corner) {
@@ -21,7 +26,13 @@ inline Index prev_corner(const Level& level, Index face, Index corner) {
   return corner == level.face_offsets[face] ? level.face_offsets[face + 1] - 1 : corner - 1;
 }
 
-CornerIndex index_corners(const Level& level);
+// Every corner's face, and the corners around each vertex in corner order, the same for
+// any number of threads (corner_index.cpp).
+enum class SlotHeads : bool { kNo, kYes };
+CornerIndex index_corners(const Level& level, SlotHeads heads = SlotHeads::kNo);
+// The same, sorted in `chunks` chunks whatever the threads (for tests: the result must not
+// depend on them).
+CornerIndex index_corners(const Level& level, Index chunks, SlotHeads heads = SlotHeads::kNo);
 
 // Edges and CCW rings of a level whose faces are set, when every edge and vertex is
 // manifold (level_manifold.cpp); false, with the level half built, as soon as one is not.

@@ -1,5 +1,6 @@
 #include <cmath>
 #include <doctest/doctest.h>
+#include <tbb/global_control.h>
 #include <set>
 
 #include "framework/refine/splitter.h"
@@ -108,6 +109,17 @@ TEST_CASE("direct child topology of the primal splits equals the generic builder
       check_same_topology(r.child);
       L = std::move(r.child);
     }
+  }
+}
+
+// Child ring offsets are counted in blocks of 65,536 edges (primal_topology.cpp): grids
+// with over 100,000 edges, whose boundary edges fall in several blocks.
+TEST_CASE("direct child topology of the primal splits equals the generic builder's on meshes of several blocks, 1 and 2 threads") {
+  for (int threads : {1, 2}) {
+    CAPTURE(threads);
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    check_same_topology(split_quad(test::grid(260, 200).level()).child);
+    check_same_topology(split_triangle(test::grid(200, 200, true).level()).child);
   }
 }
 

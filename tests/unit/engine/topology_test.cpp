@@ -198,6 +198,63 @@ TEST_CASE("the parallel manifold builder equals the general builder, on one thre
   }
 }
 
+namespace {
+
+// Two meshes joined at one vertex: b's vertex `b_shared` becomes a's `a_shared`.
+test::Mesh joined_at_vertex(const test::Mesh& a, Index a_shared, const test::Mesh& b, Index b_shared) {
+  test::Mesh out = a;
+  auto id = [&](Index v) { return v == b_shared ? a_shared : a.vertex_count + v - (v > b_shared ? 1 : 0); };
+  for (Index v = 0; v < b.vertex_count; ++v)
+    if (v != b_shared) out.add_vertex(b.positions[3 * v], b.positions[3 * v + 1], b.positions[3 * v + 2]);
+  for (size_t f = 0; f + 1 < b.offsets.size(); ++f) {
+    for (Index c = b.offsets[f]; c < b.offsets[f + 1]; ++c) out.corners.push_back(id(b.corners[c]));
+    out.offsets.push_back(Index(out.corners.size()));
+  }
+  return out;
+}
+
+void check_same_marks(const Level& a, const Level& b) {
+  CHECK(a.edge_non_manifold == b.edge_non_manifold);
+  CHECK(a.vertex_non_manifold == b.vertex_non_manifold);
+  CHECK(a.edge_face_offsets == b.edge_face_offsets);
+  CHECK(a.edge_face_list == b.edge_face_list);
+}
+
+}  // namespace
+
+// The fast path leaves a vertex with more than one fan to the general builder: its ring
+// walk comes back to its start (closed fans) or reaches the boundary (open fans) before it
+// has seen every corner. Large grids put the two boundary corners of the shared vertex in
+// different parallel chunks.
+TEST_CASE("vertices where fans meet go to the general builder, on one thread and on two") {
+  const test::Mesh grid = test::grid(200, 200), octahedron = test::octahedron();
+  const Index grid_corner = 200 * 201 + 200;  // the far corner, on the boundary
+  test::Mesh flap;
+  for (int i = 0; i < 3; ++i) flap.add_vertex(i, 1 + i, 2);
+  flap.add_face({0, 1, 2});
+  const test::Mesh cases[] = {joined_at_vertex(grid, grid_corner, grid, 0),           // two open fans
+                              joined_at_vertex(octahedron, 4, octahedron, 5),         // two closed fans
+                              joined_at_vertex(octahedron, 4, flap, 0),               // closed and open
+                              joined_at_vertex(grid, grid_corner, octahedron, 0)};
+  const Index shared[] = {grid_corner, 4, 4, grid_corner};
+  for (size_t i = 0; i < std::size(cases); ++i) {
+    CAPTURE(i);
+    const Level reference = general_level(cases[i]);
+    REQUIRE(reference.non_manifold_vertex(shared[i]));
+    for (int threads : {1, 2}) {
+      CAPTURE(threads);
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+      const Level L = cases[i].level();
+      CHECK(L.non_manifold_vertex(shared[i]));
+      CHECK(L.face_edges == reference.face_edges);
+      CHECK(L.vertex_edges == reference.vertex_edges);
+      CHECK(L.vertex_faces == reference.vertex_faces);
+      CHECK(L.vertex_on_boundary == reference.vertex_on_boundary);
+      check_same_marks(L, reference);
+    }
+  }
+}
+
 // A hostile file's single face of the largest size (OpenSubdiv's limit, 65,535 corners):
 // checking it for repeated vertices must not take k^2 steps, and its topology is a disk's
 // (two of them back to back: a sphere's). One corner more is refused by name.
