@@ -24,6 +24,7 @@
 #include <tbb/parallel_for.h>
 
 #include "framework/util/bulk_memory.h"
+#include "framework/util/parallel_ranges.h"
 
 namespace subdiv {
 namespace {
@@ -32,8 +33,7 @@ constexpr Index kGrain = 1 << 13;
 
 template <class Body>
 void parallel_ranges(Index count, Body body) {
-  tbb::parallel_for(tbb::blocked_range<Index>(0, count, kGrain),
-                    [&](const tbb::blocked_range<Index>& r) { body(r.begin(), r.end()); });
+  subdiv::parallel_ranges(count, kGrain, body);
 }
 
 // Faces by parent face, with the face in hand (corners of face f run off[f] .. off[f+1]).

@@ -14,6 +14,7 @@
 #include <tbb/task_arena.h>
 
 #include "framework/topology/level_rings.h"
+#include "framework/util/parallel_ranges.h"
 
 namespace subdiv {
 namespace {
@@ -34,8 +35,7 @@ Index chunk_count(Index corners, Index vertices) {
 
 template <class Body>
 void parallel_ranges(Index count, Body body) {
-  tbb::parallel_for(tbb::blocked_range<Index>(0, count, kGrain),
-                    [&](const tbb::blocked_range<Index>& r) { body(r.begin(), r.end()); });
+  subdiv::parallel_ranges(count, kGrain, body);
 }
 
 }  // namespace

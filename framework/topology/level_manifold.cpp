@@ -13,6 +13,7 @@
 
 #include "framework/topology/level.h"
 #include "framework/topology/level_rings.h"
+#include "framework/util/parallel_ranges.h"
 #include "framework/util/resize_side_by_side.h"
 
 namespace subdiv {
@@ -23,8 +24,7 @@ constexpr Index kGrain = 1 << 14;
 
 template <class Body>
 void parallel_ranges(Index count, Body body) {
-  tbb::parallel_for(tbb::blocked_range<Index>(0, count, kGrain),
-                    [&](const tbb::blocked_range<Index>& r) { body(r.begin(), r.end()); });
+  subdiv::parallel_ranges(count, kGrain, body);
 }
 
 // What the stages share: the corners around each vertex, with the vertex each one's edge
