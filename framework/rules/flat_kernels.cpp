@@ -39,6 +39,14 @@ double weight_of(const std::vector<TermShape>& terms, Points points, int n, int 
   return w;
 }
 
+// The largest face size a face's or corner's weights can be read at: they are read at
+// (n, k) = (k, k), and the tables reach n up to the largest valence only, which a face may
+// exceed (a heptagon among valence-3 vertices).
+int largest_face_size(const std::vector<TermShape>& terms, const WeightTables& tables) {
+  const bool reads_n = std::any_of(terms.begin(), terms.end(), [](const TermShape& t) { return t.weights->stride_n != 0; });
+  return reads_n ? std::min(tables.max_n, tables.max_k) : tables.max_k;
+}
+
 }  // namespace
 
 FlatKernels::FlatKernels(const StepContext& step, const std::vector<ChildGroup>& groups,
@@ -89,10 +97,7 @@ FlatKernels::FlatKernels(const StepContext& step, const std::vector<ChildGroup>&
       new_points_available(ft)) {
     PerSize& p = face_;
     p.uses_edge_points = uses(ft, Points::EdgePoints);
-    // Face weights are read at (n, k) = (k, k); the tables reach n up to the largest valence
-    // only, which a face may exceed (a pentagon among valence-3 vertices).
-    const bool reads_n = std::any_of(ft.begin(), ft.end(), [](const TermShape& t) { return t.weights->stride_n != 0; });
-    const int max_k = reads_n ? std::min(tables.max_n, tables.max_k) : tables.max_k;
+    const int max_k = largest_face_size(ft, tables);
     for (int k = 0; k <= max_k; ++k) {
       p.corners.push_back(weight_of(ft, Points::Corners, k, k));
       p.edge_points.push_back(weight_of(ft, Points::EdgePoints, k, k));
@@ -105,7 +110,8 @@ FlatKernels::FlatKernels(const StepContext& step, const std::vector<ChildGroup>&
   const auto& ct = terms[int(Element::Corner)];
   if (first_child_[int(Element::Corner)] != kNone && fits(ct, {Points::Self, Points::Corners}, true)) {
     CornerWeights& p = corner_;
-    for (int k = 0; k <= tables.max_k && k <= tables.max_n; ++k) {
+    const int max_k = largest_face_size(ct, tables);
+    for (int k = 0; k <= max_k; ++k) {
       p.row_start.push_back(Index(p.around.size()));
       double self = 0.0, sum = 0.0;
       for (const TermShape& t : ct)

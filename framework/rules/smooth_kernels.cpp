@@ -320,10 +320,10 @@ bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, doub
         // Triangle j runs (p, q, c), e being its edge i from p to q; its far wings lie across
         // (q, c) and (c, p), its edges i + 1 and i + 2.
         for (int j = 0; j < 2; ++j) {
-          const int i = place_in_triangle(L, faces[j], e);
-          if (i < 0) return false;
+          const int place = place_in_triangle(L, faces[j], e);
+          if (place < 0) return false;
           const Index* edges = L.face_edges.data() + L.face_offsets[faces[j]];
-          const Index far[2] = {across(L, faces[j], edges[(i + 1) % 3]), across(L, faces[j], edges[(i + 2) % 3])};
+          const Index far[2] = {across(L, faces[j], edges[(place + 1) % 3]), across(L, faces[j], edges[(place + 2) % 3])};
           for (int i = 0; i < 2; ++i) {
             if (far[i] == kNone) return false;
             const double w = weight(3, 2 * j + i);

@@ -78,7 +78,7 @@ public:
     // 0 (its points are then not gathered). Empty when the weights read more than n0 and n1.
     std::vector<std::uint8_t> zero_by_ends;
     int max_n = 0;
-    // True / false when the table says so; nullopt-like `unknown` otherwise.
+    // Yes or No from the table; Unknown without one (or beyond it): the kernel then checks.
     enum class Zero : std::uint8_t { Unknown, Yes, No };
     Zero zero_at(int n0, int n1) const {
       if (zero_by_ends.empty() || n0 > max_n || n1 > max_n) return Zero::Unknown;

@@ -259,6 +259,7 @@ TEST_CASE("the flat kernels take Catmull-Clark's, Loop's and Doo-Sabin's smooth 
     const Run r = run(*load_scheme(name), mesh, 2, true);
     CHECK(r.kernel > 0);
     CHECK(r.flat == r.kernel);
+    CHECK(r.plan + r.generic == 0);  // faces larger than every valence (the prisms' caps) too
   }
   // The butterfly's vertices stay where they are (the flat vertex shape, weight 1) and its
   // edges read far wings (not a flat shape).
