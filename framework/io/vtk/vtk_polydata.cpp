@@ -277,10 +277,15 @@ void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path
   writer->AddObserver(vtkCommand::ErrorEvent, observer);
   writer->SetInputData(&poly);
   writer->SetFileName(file.c_str());
-  // Inline binary (base64 inside each DataArray), not raw appended data: the file is then
-  // well-formed XML, which every ParaView reads, including Debian 12's ParaView 5.11 whose
-  // VTK fails on appended data with the system's Expat (see expat_reparse_fix.cpp).
-  writer->SetDataModeToBinary();
+  // By default inline binary (base64 inside each DataArray), not raw appended data: the file
+  // is then well-formed XML, which every ParaView reads, including Debian 12's ParaView 5.11
+  // whose VTK fails on appended data with the system's Expat (see expat_reparse_fix.cpp).
+  if (options.encoding == VtkEncoding::Raw) {
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
+  } else {
+    writer->SetDataModeToBinary();
+  }
   writer->SetBlockSize(kBlockSize);
   writer->SetCompressor(make_block_compressor(options.compressor, options.compression_level, kBlockSize,
                                               contiguous_arrays(poly), counts));

@@ -54,11 +54,17 @@ std::string file_text(const fs::path& file) {
 }
 
 // VTK's own writer with the settings write_polydata_file uses.
-void write_with_vtk(vtkPolyData& poly, const fs::path& file, VtkCompressor type, int level) {
+void write_with_vtk(vtkPolyData& poly, const fs::path& file, VtkCompressor type, int level,
+                    VtkEncoding encoding = VtkEncoding::Base64) {
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetInputData(&poly);
   writer->SetFileName(file.c_str());
-  writer->SetDataModeToBinary();
+  if (encoding == VtkEncoding::Raw) {
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
+  } else {
+    writer->SetDataModeToBinary();
+  }
   writer->SetBlockSize(1 << 20);
   writer->SetHeaderTypeToUInt64();
   switch (type) {
@@ -100,6 +106,30 @@ TEST_CASE("write_polydata_file writes VTK's own file, byte for byte, on any numb
         CHECK(counts.parallel >= 3 + 3 + 1);
         CHECK(counts.serial <= 4);
       }
+    }
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("write_polydata_file with raw appended data writes VTK's own file, byte for byte, on any number of threads") {
+  const fs::path dir = fs::temp_directory_path() / "subdiv_parallel_write_raw_test";
+  fs::create_directories(dir);
+  const MeshData mesh = grid(300);
+  OutputLevel level{&mesh, 2, mesh.point_data, mesh.cell_data};
+  const auto poly = io_detail::make_polydata(level);
+  for (VtkCompressor type : {VtkCompressor::ZLib, VtkCompressor::LZ4, VtkCompressor::None}) {
+    CAPTURE(int(type));
+    write_with_vtk(*poly, dir / "vtk.vtp", type, 1, VtkEncoding::Raw);
+    const std::string expected = file_text(dir / "vtk.vtp");
+    REQUIRE(expected.find("<AppendedData encoding=\"raw\">") != std::string::npos);
+    for (int threads : {1, 2, 3}) {
+      CAPTURE(threads);
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+      VtkWriteOptions options;
+      options.compressor = type;
+      options.encoding = VtkEncoding::Raw;
+      io_detail::write_polydata_file(*poly, dir / "ours.vtp", dir / "ours.vtp", options);
+      CHECK(file_text(dir / "ours.vtp") == expected);
     }
   }
   fs::remove_all(dir);
