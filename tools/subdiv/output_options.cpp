@@ -106,8 +106,8 @@ void add_output_options(CLI::App* cmd, OutputArgs& args) {
   cmd->add_option("--vtp-encoding", args.vtp_encoding,
                   "How .vtp/.pvd/.pvtp output holds its arrays: base64 (inline base64 text, the default: every "
                   "ParaView reads it) or raw (raw appended binary after the XML: a quarter smaller and faster to "
-                  "write, but VTK before 9.3, e.g. Debian 12's ParaView 5.11, cannot read it; ParaView 5.12 and "
-                  "later, VTK 9.3 and later, and SubdivKit's own readers and ParaView plugin can)")
+                  "write, but VTK before 9.3, e.g. Debian 12's ParaView 5.11, cannot read it; VTK 9.3 and later and "
+                  "SubdivKit's own readers, subdiv included, can)")
       ->capture_default_str();
 }
 

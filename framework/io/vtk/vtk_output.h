@@ -17,7 +17,7 @@ enum class VtkCompressor { None, ZLib, LZ4, LZMA };  // VTK's vtkXMLWriter compr
 // well-formed XML that every ParaView reads. Raw: after the XML as raw appended data, a third
 // smaller and written without encoding, but VTK before 9.3 fails on it with Expat 2.6's
 // reparse deferral (Debian 12's ParaView 5.11 among them; see expat_reparse_fix.cpp, which
-// makes SubdivKit's own readers and ParaView plugin read it).
+// makes SubdivKit's own readers read it).
 enum class VtkEncoding { Base64, Raw };
 struct VtkWriteOptions {
   // LZ4 at its fastest wrote the 16M-face torus in a third of zlib's (level 1) time, in a
