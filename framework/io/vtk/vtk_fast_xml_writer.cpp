@@ -15,22 +15,14 @@
 #include <vtkOutputStream.h>
 #include <vtkPolyData.h>
 
+#include "framework/io/vtk/base64_encode.h"
 #include "framework/io/vtk/vtk_array_ranges.h"
 
 namespace subdiv::io_detail {
 namespace {
 
+// For the padded tail of a run (the whole triplets go through base64_encode.h).
 constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-
-// The two characters of every 12 bits: a triplet is two look-ups instead of four (the
-// encoder was a tenth of the samples of a 16M-face write with one look-up per 6 bits).
-struct CharPairs {
-  char pairs[4096][2];
-  constexpr CharPairs() : pairs() {
-    for (int i = 0; i < 4096; ++i) pairs[i][0] = kAlphabet[i >> 6], pairs[i][1] = kAlphabet[i & 63];
-  }
-};
-constexpr CharPairs kPairs;
 
 // Base64 as vtkBase64OutputStream writes it (each StartWriting..EndWriting run padded with
 // '=' on its own), a whole Write at a time.
@@ -55,7 +47,7 @@ public:
     const size_t triplets = length / 3;
     char* out = reserve(4 + 4 * triplets);
     if (pending_size_ == 3) {
-      encode(pending_, out);
+      encode_base64_triplets(pending_, 1, out);
       pending_size_ = 0;
       start = 4;
     }
@@ -64,7 +56,7 @@ public:
     // whole triplets: the same text for any thread count.
     constexpr size_t kPiece = 1 << 16;  // triplets
     tbb::parallel_for(tbb::blocked_range<size_t>(0, triplets, kPiece), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t t = r.begin(); t != r.end(); ++t) encode(in + 3 * t, out + 4 * t);
+      encode_base64_triplets(in + 3 * r.begin(), r.size(), out + 4 * r.begin());
     });
     in += 3 * triplets, length -= 3 * triplets;
     while (length > 0) pending_[pending_size_++] = *in++, --length;
@@ -91,12 +83,6 @@ public:
   }
 
 private:
-  static void encode(const unsigned char* in, char* out) {
-    const unsigned bits = unsigned(in[0]) << 16 | unsigned(in[1]) << 8 | in[2];
-    std::memcpy(out, kPairs.pairs[bits >> 12], 2);
-    std::memcpy(out + 2, kPairs.pairs[bits & 0xFFF], 2);
-  }
-
   // The text buffer, at least `size` characters, kept from write to write (a std::string
   // resized each time would write zeros over it first).
   char* reserve(size_t size) {
