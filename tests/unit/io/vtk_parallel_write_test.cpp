@@ -19,6 +19,7 @@
 #include "framework/io/vtk/vtk_block_compressor.h"
 #include "framework/io/vtk/vtk_output.h"
 #include "framework/io/vtk/vtk_polydata.h"
+#include "io_test_support.h"
 
 using namespace subdiv;
 namespace fs = std::filesystem;
@@ -80,8 +81,8 @@ void write_with_vtk(vtkPolyData& poly, const fs::path& file, VtkCompressor type,
 }  // namespace
 
 TEST_CASE("write_polydata_file writes VTK's own file, byte for byte, on any number of threads") {
-  const fs::path dir = fs::temp_directory_path() / "subdiv_parallel_write_test";
-  fs::create_directories(dir);
+  const subdiv::test::TempDir scratch;  // its own folder: other test runs may be writing at the same time
+  const fs::path& dir = scratch.path();
   const MeshData mesh = grid(300);  // 90601 points: 2.2 MB of coordinates
   OutputLevel level{&mesh, 2, mesh.point_data, mesh.cell_data};
   const auto poly = io_detail::make_polydata(level);
@@ -108,12 +109,11 @@ TEST_CASE("write_polydata_file writes VTK's own file, byte for byte, on any numb
       }
     }
   }
-  fs::remove_all(dir);
 }
 
 TEST_CASE("write_polydata_file with raw appended data writes VTK's own file, byte for byte, on any number of threads") {
-  const fs::path dir = fs::temp_directory_path() / "subdiv_parallel_write_raw_test";
-  fs::create_directories(dir);
+  const subdiv::test::TempDir scratch;  // its own folder: other test runs may be writing at the same time
+  const fs::path& dir = scratch.path();
   const MeshData mesh = grid(300);
   OutputLevel level{&mesh, 2, mesh.point_data, mesh.cell_data};
   const auto poly = io_detail::make_polydata(level);
@@ -132,12 +132,11 @@ TEST_CASE("write_polydata_file with raw appended data writes VTK's own file, byt
       CHECK(file_text(dir / "ours.vtp") == expected);
     }
   }
-  fs::remove_all(dir);
 }
 
 TEST_CASE("the block compressor in small blocks: many runs of parallel blocks, VTK's bytes") {
-  const fs::path dir = fs::temp_directory_path() / "subdiv_parallel_blocks_test";
-  fs::create_directories(dir);
+  const subdiv::test::TempDir scratch;  // its own folder: other test runs may be writing at the same time
+  const fs::path& dir = scratch.path();
   const MeshData mesh = grid(120);  // 14641 points: 343 blocks of 1 KB of coordinates, runs of 64
   OutputLevel level{&mesh, 0, mesh.point_data, mesh.cell_data};
   const auto poly = io_detail::make_polydata(level);
@@ -159,5 +158,4 @@ TEST_CASE("the block compressor in small blocks: many runs of parallel blocks, V
   CHECK(file_text(dir / "ours.vtp") == file_text(dir / "vtk.vtp"));
   CHECK(counts.parallel > 343);
   CHECK(counts.serial < counts.parallel / 2);  // the offsets, which VTK copies
-  fs::remove_all(dir);
 }
