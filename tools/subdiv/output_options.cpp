@@ -94,9 +94,10 @@ void add_output_options(CLI::App* cmd, OutputArgs& args) {
       ->capture_default_str();
   cmd->add_option("--compression", args.compression,
                   fmt::format("Compressor of .vtp/.pvd/.pvtp output: {} (VTK's; ParaView reads them all). lz4, the "
-                              "default, writes fastest; zlib files are about 2.6 times smaller and take 3 times as "
-                              "long to write; lzma smaller still and much slower; none is no faster than lz4 and "
-                              "the largest",
+                              "default, is fast with files half the size of none's; none writes fastest (about "
+                              "two thirds of lz4's time) but the largest files; zlib files are about 2.6 times "
+                              "smaller than lz4's and take 3 times as long to write; lzma smaller still and much "
+                              "slower",
                               compressor_names()))
       ->capture_default_str();
   cmd->add_option("--compression-level", args.compression_level,
