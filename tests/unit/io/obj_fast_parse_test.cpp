@@ -3,7 +3,9 @@
 // else it declines, so that read_obj's result and error messages (file and line) are the
 // line-by-line reader's.
 #include <algorithm>
+#include <iterator>
 #include <optional>
+#include <random>
 #include <string>
 
 #include <fmt/format.h>
@@ -165,4 +167,43 @@ TEST_CASE("obj fast path: an error deep in a large file names its line, whatever
   const std::string message = error_of([&] { io_detail::read_obj(dir / "bad.obj"); });
   CHECK(message.find(fmt::format("bad.obj:{}:", lines + 2)) != std::string::npos);
   CHECK(message.find("'bad'") != std::string::npos);
+}
+
+TEST_CASE("obj fast path: random files from valid and broken lines, against the line-by-line reader") {
+  // Lines the fast path takes, lines it declines, and errors; joined in random order with
+  // "\n" or "\r\n", cut into random chunk counts. Whenever the fast path answers, it must
+  // be the line-by-line reader's mesh; read_obj must always give that reader's result.
+  const char* pool[] = {"v 1 2 3",       "v -1e5 +2 3.25 1", "v 0 0 0",         "vt 0.5 0.25",   "vt 1",
+                        "vn 0 0 1",      "f 1 2 3",          "f -1 -2 -3",      "f 1/1 2/2 3/3", "f 1//1 2//1 3//1",
+                        "f 1/1/1 2/-1/1 3/1/1", "f 4 5 6 7",  "# comment",       "g a b",         "",
+                        "   ",           "s off",            "v 1 2",           "f 1 2",         "f 1/0 2 3",
+                        "v nan 0 0",     "f 99 1 2",         "vt 1 2 3",        "f 1 2 3 \\",    "t crease 2/1/0 0 1 1",
+                        "l 1 2",         "f 0 1 2",          "v 1 2 3 # c",     "f 1 2 3#c",     "v 1\r2 3"};
+  // Every other file from plain-geometry lines only, so that the fast path answers often.
+  const char* plain[] = {"v 1 2 3", "v -1e5 +2 3.25 1", "v 0 0 0", "# comment", "g a b", "", "   ", "s off",
+                         "f 1 2 3", "f -1 -2 -3", "f 1 2 3#c", "v 1 2 3 # c", "vt 0.5 0.25", "vn 0 0 1"};
+  std::mt19937 random(6);
+  TempDir dir;
+  int answered = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    std::string text;
+    const int lines = 1 + int(random() % 30);
+    const char* eol = random() % 4 == 0 ? "\r\n" : "\n";
+    for (int i = 0; i < lines; ++i)
+      text += std::string(trial % 2 ? pool[random() % std::size(pool)] : plain[random() % std::size(plain)]) + eol;
+    CAPTURE(text);
+    write_text(dir / "r.obj", text);
+    std::optional<MeshData> reference;
+    const std::string error = error_of([&] { reference = io_detail::read_obj_line_by_line(dir / "r.obj"); });
+    const std::size_t chunks = 1 + random() % 5;
+    if (const std::optional<MeshData> fast = io_detail::parse_obj_fast(text, chunks)) {
+      ++answered;
+      REQUIRE(reference.has_value());
+      CHECK(reference->warnings.empty());
+      check_same(*fast, *reference);
+    }
+    if (reference) check_same(io_detail::read_obj(dir / "r.obj"), *reference);
+    else CHECK(error_of([&] { io_detail::read_obj(dir / "r.obj"); }) == error);
+  }
+  CHECK(answered > 100);
 }
