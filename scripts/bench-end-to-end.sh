@@ -7,9 +7,10 @@
 # Environment: NU, NV (1000 x 1000: 1M faces), LEVELS (2), WORK (a scratch folder, which
 # must hold the torus and ~2 GB of output), BEFORE (optional: another `subdiv` binary, e.g.
 # an older build, timed first with the same input), RUNS (the option sets to time, one per
-# line; default: the defaults, then lz4, none, and every array). For every run it prints wall, user and system time and peak memory
-# (GNU time), the load average before and after, and, from `subdiv refine --timings` in the
-# same process, the time reading the mesh, refining (topology and every level's values:
+# line; default: the defaults (LZ4, base64), then no compression, raw appended data with LZ4
+# and without compression, and every array). For every run it prints wall, user and system
+# time and peak memory (GNU time), the load average before and after, and, from
+# `subdiv refine --timings` in the same process (BEFORE too, if it has the option), the time reading the mesh, refining (topology and every level's values:
 # the refinement alone) and writing, and end to end / refinement.
 set -eu
 BUILD=${1:-build}
@@ -19,8 +20,9 @@ NV=${NV:-1000}
 LEVELS=${LEVELS:-2}
 WORK=${WORK:-/tmp/subdiv-bench-e2e}
 RUNS=${RUNS:-"
---compression lz4
 --compression none
+--vtp-encoding raw
+--vtp-encoding raw --compression none
 --arrays all"}
 here=$(cd "$(dirname "$0")/.." && pwd)
 [ -x "$SUBDIV" ] || { echo "bench-end-to-end: no $SUBDIV; build the subdiv_cli target first" >&2; exit 1; }
@@ -62,7 +64,11 @@ run() {
 
 echo "subdiv refine $(basename "$mesh") ($NU x $NV quads) -l $LEVELS -o .vtp, $(nproc) cores"
 if [ -n "${BEFORE:-}" ]; then
-  LD_LIBRARY_PATH="$(dirname "$BEFORE")${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" run "before: $BEFORE" "$BEFORE"
+  libs="$(dirname "$BEFORE")${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"  # its own libraries next to it, if copied there
+  timings=
+  LD_LIBRARY_PATH="$libs" "$BEFORE" refine --help 2>/dev/null | grep -q -- --timings && timings=--timings
+  # shellcheck disable=SC2086  # no word, or one
+  LD_LIBRARY_PATH="$libs" run "before: $BEFORE" "$BEFORE" $timings
 fi
 printf '%s\n' "$RUNS" | while IFS= read -r options; do
   # shellcheck disable=SC2086  # the options are words

@@ -25,26 +25,25 @@ DataArray kept_tuples(const DataArray& a, const std::vector<Index>& new_index) {
 
 }  // namespace
 
-MeshData drop_unrefinable(const MeshData& mesh, MeshCleanup& report) {
+MeshData drop_unrefinable(MeshData&& mesh, MeshCleanup& report) {
   report = {};
-  // Indices out of range are the validator's and the level builder's to refuse, by name.
-  for (const auto* list : {&mesh.face_vertices, &mesh.line_vertices})
-    for (Index v : *list)
-      if (v < 0 || v >= mesh.vertex_count()) return mesh;
+  // One pass marks the vertices in use. Indices out of range are the validator's and the
+  // level builder's to refuse, by name.
   std::vector<Index> new_vertex(size_t(mesh.vertex_count()), kNone);
   for (const auto* list : {&mesh.face_vertices, &mesh.line_vertices})
-    for (Index v : *list) new_vertex[v] = 0;
+    for (Index v : *list) {
+      if (v < 0 || v >= mesh.vertex_count()) return std::move(mesh);
+      new_vertex[v] = 0;
+    }
+  for (Index v = 0; v < mesh.vertex_count(); ++v) report.dropped_vertices += new_vertex[v] == kNone;
+  if (!report.dropped_vertices) return std::move(mesh);  // the usual case: no copy
   MeshData out;
   Index next = 0;
   for (Index v = 0; v < mesh.vertex_count(); ++v) {
-    if (new_vertex[v] == kNone) {
-      ++report.dropped_vertices;
-      continue;
-    }
+    if (new_vertex[v] == kNone) continue;
     new_vertex[v] = next++;
     out.positions.insert(out.positions.end(), mesh.positions.begin() + 3 * v, mesh.positions.begin() + 3 * v + 3);
   }
-  if (!report.dropped_vertices) return mesh;
   out.face_offsets = mesh.face_offsets;
   for (Index v : mesh.face_vertices) out.face_vertices.push_back(new_vertex[v]);
   out.line_offsets = mesh.line_offsets;
@@ -62,5 +61,7 @@ MeshData drop_unrefinable(const MeshData& mesh, MeshCleanup& report) {
   out.face_varying = mesh.face_varying;  // every face is kept, with its corners
   return out;
 }
+
+MeshData drop_unrefinable(const MeshData& mesh, MeshCleanup& report) { return drop_unrefinable(MeshData(mesh), report); }
 
 }  // namespace subdiv

@@ -5,6 +5,8 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 
 #include "framework/util/error.h"
 
@@ -15,6 +17,20 @@ namespace {
   throw Error(fmt::format("{}: {}", context, problem));
 }
 
+// Whether `good(i)` holds for every i < n, on every core. The checks below run this first
+// and walk the elements in order only when something is wrong, so that the message names
+// the first problem, as before; a 16M-face level is checked before each write.
+template <class Good>
+bool all_of_parallel(std::size_t n, const Good& good) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, n, 1 << 14), true,
+      [&](const tbb::blocked_range<std::size_t>& r, bool ok) {
+        for (std::size_t i = r.begin(); ok && i != r.end(); ++i) ok = good(i);
+        return ok;
+      },
+      [](bool a, bool b) { return a && b; });
+}
+
 // `what` is "face" or "polyline"; min_size is 3 or 2.
 void check_csr(const std::vector<Index>& offsets, const std::vector<Index>& indices,
                const char* what, int min_size, Index vertex_count, std::string_view context) {
@@ -23,6 +39,14 @@ void check_csr(const std::vector<Index>& offsets, const std::vector<Index>& indi
   if (size_t(offsets.back()) != indices.size())
     fail(context, fmt::format("{} offsets end at {} but there are {} {} indices", what,
                               offsets.back(), indices.size(), what));
+  // Each element on its own: its offsets within the indices before any index is read.
+  const auto good = [&](size_t i) {
+    if (offsets[i] < 0 || offsets[i + 1] > offsets.back() || offsets[i + 1] - offsets[i] < min_size) return false;
+    for (Index k = offsets[i]; k < offsets[i + 1]; ++k)
+      if (indices[k] < 0 || indices[k] >= vertex_count) return false;
+    return true;
+  };
+  if (all_of_parallel(offsets.size() - 1, good)) return;
   for (size_t i = 0; i + 1 < offsets.size(); ++i) {
     const Index size = offsets[i + 1] - offsets[i];
     if (offsets[i + 1] > offsets.back())
@@ -42,6 +66,7 @@ void check_positions(const MeshData& mesh, std::string_view context) {
   if (mesh.positions.size() % 3 != 0)
     fail(context, fmt::format("{} coordinates is not a whole number of xyz triples",
                               mesh.positions.size()));
+  if (all_of_parallel(mesh.positions.size(), [&](size_t i) { return std::isfinite(mesh.positions[i]); })) return;
   for (size_t i = 0; i < mesh.positions.size(); ++i)
     if (!std::isfinite(mesh.positions[i]))
       fail(context, fmt::format("vertex {} has a non-finite coordinate ({}); fix or remove it",
@@ -95,6 +120,8 @@ void check_data_arrays(const std::vector<DataArray>& arrays, Index tuples, const
       fail(context, fmt::format("{} data array '{}' has {} values, but {} {}s x {} components need {}", per, a.name,
                                 a.values.size(), tuples, per, a.components, size_t(tuples) * size_t(a.components)));
     if (!a.integer) continue;
+    const auto whole = [&](size_t k) { return a.values[k] == std::floor(a.values[k]) && std::abs(a.values[k]) <= 2147483647.0; };
+    if (all_of_parallel(a.values.size(), whole)) continue;
     for (size_t k = 0; k < a.values.size(); ++k) {
       const double v = a.values[k];
       if (v != std::floor(v) || std::abs(v) > 2147483647.0)

@@ -14,6 +14,10 @@
 // "normal" (every face must then give them, as OpenSubdiv's channels require).
 // Ignored: groups, materials, smoothing groups and other statements that do not change the
 // surface.
+//
+// Large meshes (v, vt, vn and f only) go through the parallel fast path (obj_fast_parse.h),
+// which gives the same MeshData; whatever it declines, errors included, is read here line by
+// line, so every message names its file and line as before.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -24,6 +28,7 @@
 
 #include <fmt/format.h>
 
+#include "framework/io/obj_fast_parse.h"
 #include "framework/io/readers.h"
 #include "framework/io/text_input.h"
 
@@ -43,7 +48,7 @@ struct Tag {
 class ObjReader {
 public:
   explicit ObjReader(const fs::path& file) : file_(file) {}
-  MeshData read();
+  MeshData read(std::string_view text);
 
 private:
   void statement(std::string_view keyword, Tokens& tokens);
@@ -90,8 +95,7 @@ private:
   Attribute attributes_[2];
 };
 
-MeshData ObjReader::read() {
-  const std::string text = read_whole_file(file_);
+MeshData ObjReader::read(std::string_view text) {
   LineCursor lines(text);
   std::string_view raw;
   std::string joined;  // a statement continued over several lines with '\'
@@ -485,6 +489,12 @@ void ObjReader::check_creases_are_edges() const {
 
 }  // namespace
 
-MeshData read_obj(const fs::path& file) { return ObjReader(file).read(); }
+MeshData read_obj(const fs::path& file) {
+  const std::string text = read_whole_file(file);
+  if (std::optional<MeshData> mesh = parse_obj_fast(text, obj_chunks_for(text.size()))) return std::move(*mesh);
+  return ObjReader(file).read(text);
+}
+
+MeshData read_obj_line_by_line(const fs::path& file) { return ObjReader(file).read(read_whole_file(file)); }
 
 }  // namespace subdiv::io_detail

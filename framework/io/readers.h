@@ -9,6 +9,8 @@
 namespace subdiv::io_detail {
 
 MeshData read_obj(const std::filesystem::path& file);
+// The OBJ reader without its parallel fast path: the reference the fast path must match (tests).
+MeshData read_obj_line_by_line(const std::filesystem::path& file);
 MeshData read_off(const std::filesystem::path& file);
 MeshData read_ply(const std::filesystem::path& file);
 MeshData read_with_openmesh(const std::filesystem::path& file);  // .stl, .om

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include "framework/io/formats.h"
 #include "framework/io/mesh_level.h"
@@ -31,11 +32,14 @@ void drop_hole_tuples(const Level& L, DataArray& a) {
 std::vector<double> base_faces_of(const Hierarchy& h, int l, const std::vector<double>& above) {
   const Level& L = h.levels[l];
   std::vector<double> base(size_t(L.face_count()));
-  for (Index f = 0; f < L.face_count(); ++f) {
-    // Faces made around edges and vertices (dual splits) lie in no single parent face: -1.
-    const Index p = l == 0 ? f : h.origins[l - 1].parent_face[f];
-    base[f] = p == kNone ? -1.0 : l == 0 ? double(f) : above[p];
-  }
+  // On every core: 16M faces at level 2 of a 1M-face mesh, part of the writing time.
+  tbb::parallel_for(tbb::blocked_range<Index>(0, L.face_count(), 1 << 16), [&](const tbb::blocked_range<Index>& r) {
+    for (Index f = r.begin(); f != r.end(); ++f) {
+      // Faces made around edges and vertices (dual splits) lie in no single parent face: -1.
+      const Index p = l == 0 ? f : h.origins[l - 1].parent_face[f];
+      base[f] = p == kNone ? -1.0 : l == 0 ? double(f) : above[p];
+    }
+  });
   return base;
 }
 

@@ -43,11 +43,12 @@ struct OutputArgs {
   std::string arrays = "default";
   std::string compression = "lz4";
   int compression_level = 1;
+  std::string vtp_encoding = "base64";
 };
 
 void add_output_options(CLI::App* cmd, OutputArgs& args);
 
-// Throws subdiv::Error naming the option for a bad --arrays or --compression.
+// Throws subdiv::Error naming the option for a bad --arrays, --compression or --vtp-encoding.
 struct OutputChoice {
   ArraySelection arrays = ArraySelection::all();
   VtkWriteOptions vtk;  // compression, and write_vtp's own arrays as `arrays` says

@@ -1,5 +1,7 @@
 #include "framework/io/vtk/vtk_fast_xml_writer.h"
 
+#include <cstring>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -13,11 +15,13 @@
 #include <vtkOutputStream.h>
 #include <vtkPolyData.h>
 
+#include "framework/io/vtk/base64_encode.h"
 #include "framework/io/vtk/vtk_array_ranges.h"
 
 namespace subdiv::io_detail {
 namespace {
 
+// For the padded tail of a run (the whole triplets go through base64_encode.h).
 constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
 
 // Base64 as vtkBase64OutputStream writes it (each StartWriting..EndWriting run padded with
@@ -37,61 +41,64 @@ public:
 
   int Write(void const* data, size_t length) override {
     const auto* in = static_cast<const unsigned char*>(data);
-    text_.clear();
+    size_t start = 0;
     // Complete the triplet a previous Write left open.
     while (pending_size_ > 0 && pending_size_ < 3 && length > 0) pending_[pending_size_++] = *in++, --length;
+    const size_t triplets = length / 3;
+    char* out = reserve(4 + 4 * triplets);
     if (pending_size_ == 3) {
-      text_.resize(4);
-      encode(pending_, text_.data());
+      encode_base64_triplets(pending_, 1, out);
       pending_size_ = 0;
+      start = 4;
     }
-    const size_t triplets = length / 3, start = text_.size();
-    text_.resize(start + 4 * triplets);
-    char* out = text_.data() + start;
+    out += start;
     // Large writes (compressed blocks of up to a megabyte) in parallel pieces, each its own
     // whole triplets: the same text for any thread count.
     constexpr size_t kPiece = 1 << 16;  // triplets
     tbb::parallel_for(tbb::blocked_range<size_t>(0, triplets, kPiece), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t t = r.begin(); t != r.end(); ++t) encode(in + 3 * t, out + 4 * t);
+      encode_base64_triplets(in + 3 * r.begin(), r.size(), out + 4 * r.begin());
     });
     in += 3 * triplets, length -= 3 * triplets;
     while (length > 0) pending_[pending_size_++] = *in++, --length;
-    return put();
+    return put(start + 4 * triplets);
   }
 
   int EndWriting() override {
-    text_.clear();
+    char* out = reserve(4);
+    size_t size = 0;
     if (pending_size_ == 1) {
-      text_ += kAlphabet[pending_[0] >> 2];
-      text_ += kAlphabet[(pending_[0] & 0x03) << 4];
-      text_ += "==";
+      out[0] = kAlphabet[pending_[0] >> 2];
+      out[1] = kAlphabet[(pending_[0] & 0x03) << 4];
+      out[2] = out[3] = '=';
+      size = 4;
     } else if (pending_size_ == 2) {
-      text_ += kAlphabet[pending_[0] >> 2];
-      text_ += kAlphabet[((pending_[0] & 0x03) << 4) | (pending_[1] >> 4)];
-      text_ += kAlphabet[(pending_[1] & 0x0F) << 2];
-      text_ += '=';
+      out[0] = kAlphabet[pending_[0] >> 2];
+      out[1] = kAlphabet[((pending_[0] & 0x03) << 4) | (pending_[1] >> 4)];
+      out[2] = kAlphabet[(pending_[1] & 0x0F) << 2];
+      out[3] = '=';
+      size = 4;
     }
     pending_size_ = 0;
-    return put() && vtkOutputStream::EndWriting();
+    return put(size) && vtkOutputStream::EndWriting();
   }
 
 private:
-  static void encode(const unsigned char* in, char* out) {
-    const unsigned a = in[0], b = in[1], c = in[2];
-    out[0] = kAlphabet[a >> 2];
-    out[1] = kAlphabet[((a & 0x03) << 4) | (b >> 4)];
-    out[2] = kAlphabet[((b & 0x0F) << 2) | (c >> 6)];
-    out[3] = kAlphabet[c & 0x3F];
+  // The text buffer, at least `size` characters, kept from write to write (a std::string
+  // resized each time would write zeros over it first).
+  char* reserve(size_t size) {
+    if (size > capacity_) text_.reset(new char[size]), capacity_ = size;
+    return text_.get();
   }
 
-  int put() {
-    if (text_.empty()) return 1;
-    return this->Stream->write(text_.data(), std::streamsize(text_.size())) ? 1 : 0;
+  int put(size_t size) {
+    if (size == 0) return 1;
+    return this->Stream->write(text_.get(), std::streamsize(size)) ? 1 : 0;
   }
 
   unsigned char pending_[3] = {};
   unsigned pending_size_ = 0;
-  std::string text_;
+  std::unique_ptr<char[]> text_;
+  size_t capacity_ = 0;
 };
 
 }  // namespace

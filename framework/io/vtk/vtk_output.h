@@ -13,6 +13,12 @@ namespace subdiv {
 
 // How write_vtp, write_pvd and the pieces' .vtp files are written.
 enum class VtkCompressor { None, ZLib, LZ4, LZMA };  // VTK's vtkXMLWriter compressor types
+// Where the arrays' bytes go. Base64: inside each DataArray as base64 text (inline binary),
+// well-formed XML that every ParaView reads. Raw: after the XML as raw appended data, a third
+// smaller and written without encoding, but VTK before 9.3 fails on it with Expat 2.6's
+// reparse deferral (Debian 12's ParaView 5.11 among them; see expat_reparse_fix.cpp, which
+// makes SubdivKit's own readers read it).
+enum class VtkEncoding { Base64, Raw };
 struct VtkWriteOptions {
   // LZ4 at its fastest wrote the 16M-face torus in a third of zlib's (level 1) time, in a
   // file 2.6 times as large (docs/benchmarks.md, "End to end").
@@ -20,6 +26,7 @@ struct VtkWriteOptions {
   // 1 (fastest) to 9 (smallest), as vtkXMLWriter::SetCompressionLevel takes it (LZ4: its
   // acceleration is 10 - level).
   int compression_level = 1;
+  VtkEncoding encoding = VtkEncoding::Base64;
   // The arrays write_vtp adds itself (see write_vtp); each can be left out.
   bool sharpness = true, cell_kind = true, corner_sharpness = true;
 };
@@ -34,8 +41,8 @@ struct OutputLevel {
   std::vector<DataArray> cell_data;
 };
 
-// Writes faces as polygons, polylines and crease edges as line cells, in inline binary VTK
-// XML, compressed as `options` say; the blocks of each array are compressed on every core
+// Writes faces as polygons, polylines and crease edges as line cells, in VTK XML with the
+// arrays inline in base64 or raw appended (`options.encoding`), compressed as `options` say; the blocks of each array are compressed on every core
 // TBB may use, and the file is the same for any thread count (vtk_block_compressor.h).
 // Added arrays (each can be left out, see VtkWriteOptions): cell "sharpness" (a crease's
 // sharpness, 0 on other cells), cell "cell_kind" (0 face, 1 polyline, 2 crease edge), point

@@ -27,7 +27,7 @@ vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level, const VtkWr
 
 struct BlockCounts;
 
-// Inline binary VTK XML into `file`, compressed as `options` say on every core TBB may use;
+// VTK XML into `file` (inline base64 or raw appended, as `options` say), compressed as `options` say on every core TBB may use;
 // `shown` names it in messages. `counts`, if given, counts how the blocks were compressed.
 void write_polydata_file(vtkPolyData& poly, const std::filesystem::path& file, const std::filesystem::path& shown,
                          const VtkWriteOptions& options = {}, BlockCounts* counts = nullptr);

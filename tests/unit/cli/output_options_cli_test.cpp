@@ -135,6 +135,7 @@ TEST_CASE("--arrays, --compression and --compression-level: bad values are refus
     check_refused(cube + " --compression lz5", out,
                   "--compression 'lz5' is not a compressor; use one of zlib, lz4, lzma, none");
     check_refused(cube + " --compression-level 10", out, "--compression-level");
+    check_refused(cube + " --vtp-encoding hex", out, "--vtp-encoding 'hex' is not an encoding; use base64 or raw");
     CHECK_FALSE(fs::exists(dir / "out_levels"));
   }
 }
@@ -167,6 +168,27 @@ TEST_CASE("every compressor and level writes the same data, named in the file; V
       check_same_data(*read_vtp(out), *expected);
     }
   }
+}
+
+TEST_CASE("--vtp-encoding raw: raw appended data, the same data as base64, in .vtp and .pvd") {
+  const auto dir = fresh_dir("cli-vtp-encoding");
+  const auto mesh = torus_obj(dir, 40, 30);
+  const auto reference = dir / "base64.vtp";
+  REQUIRE(run_subdiv("refine " + mesh.string() + " -l 2 --arrays all -o " + reference.string()).exit_code == 0);
+  CHECK(file_text(reference).find("<AppendedData") == std::string::npos);
+  const auto expected = read_vtp(reference);
+  for (const char* compression : {"lz4", "zlib", "none"}) {
+    CAPTURE(compression);
+    const auto out = dir / (std::string("raw-") + compression + ".vtp");
+    const CliResult r = run_subdiv("refine " + mesh.string() + " -l 2 --arrays all --vtp-encoding raw --compression " +
+                                   compression + " -o " + out.string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    CHECK(file_text(out).find("<AppendedData encoding=\"raw\">") != std::string::npos);
+    check_same_data(*read_vtp(out), *expected);
+  }
+  const CliResult r = run_subdiv("refine " + mesh.string() + " -l 2 --vtp-encoding raw -o " + (dir / "all.pvd").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  CHECK(file_text(dir / "all_levels" / "level_2.vtp").find("<AppendedData encoding=\"raw\">") != std::string::npos);
 }
 
 TEST_CASE("the file is the same byte for byte for any thread count") {

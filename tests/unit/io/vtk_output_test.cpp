@@ -120,6 +120,41 @@ TEST_CASE("write_vtp: inline binary data compressed with LZ4 by default, a well-
   CHECK(std::string(root->GetName()) == "VTKFile");
 }
 
+TEST_CASE("write_vtp: raw appended data on request, read back as the base64 file is") {
+  TempDir dir;
+  const MeshData mesh = sample_mesh();
+  VtkWriteOptions raw;
+  raw.encoding = VtkEncoding::Raw;
+  for (VtkCompressor type : {VtkCompressor::LZ4, VtkCompressor::ZLib, VtkCompressor::None}) {
+    CAPTURE(int(type));
+    raw.compressor = type;
+    VtkWriteOptions base64 = raw;
+    base64.encoding = VtkEncoding::Base64;
+    write_vtp(dir / "raw.vtp", sample_level(mesh), raw);
+    write_vtp(dir / "base64.vtp", sample_level(mesh), base64);
+    const std::string text = read_text(dir / "raw.vtp");
+    CHECK(contains(text, "<AppendedData encoding=\"raw\">"));
+    CHECK_FALSE(contains(text, "format=\"binary\""));
+    const MeshData a = read_mesh(dir / "raw.vtp"), b = read_mesh(dir / "base64.vtp");
+    CHECK(a.positions == mesh.positions);
+    CHECK(a.positions == b.positions);
+    CHECK(a.face_offsets == b.face_offsets);
+    CHECK(a.face_vertices == b.face_vertices);
+    CHECK(a.line_offsets == b.line_offsets);
+    CHECK(a.line_vertices == b.line_vertices);
+    REQUIRE(a.point_data.size() == b.point_data.size());
+    for (std::size_t i = 0; i < a.point_data.size(); ++i) {
+      CHECK(a.point_data[i].name == b.point_data[i].name);
+      CHECK(a.point_data[i].values == b.point_data[i].values);
+    }
+    REQUIRE(a.cell_data.size() == b.cell_data.size());
+    for (std::size_t i = 0; i < a.cell_data.size(); ++i) {
+      CHECK(a.cell_data[i].name == b.cell_data[i].name);
+      CHECK(a.cell_data[i].values == b.cell_data[i].values);
+    }
+  }
+}
+
 TEST_CASE("read_mesh reads .vtp files with raw appended data, as ParaView writes them") {
   // With VTK < 9.3 and Expat >= 2.6 (ParaView 5.11 on Debian 12) VTK's reader fails on them
   // unless reparse deferral is turned off (framework/io/vtk/expat_reparse_fix.cpp). A file

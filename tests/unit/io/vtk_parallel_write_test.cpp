@@ -19,6 +19,7 @@
 #include "framework/io/vtk/vtk_block_compressor.h"
 #include "framework/io/vtk/vtk_output.h"
 #include "framework/io/vtk/vtk_polydata.h"
+#include "io_test_support.h"
 
 using namespace subdiv;
 namespace fs = std::filesystem;
@@ -54,11 +55,17 @@ std::string file_text(const fs::path& file) {
 }
 
 // VTK's own writer with the settings write_polydata_file uses.
-void write_with_vtk(vtkPolyData& poly, const fs::path& file, VtkCompressor type, int level) {
+void write_with_vtk(vtkPolyData& poly, const fs::path& file, VtkCompressor type, int level,
+                    VtkEncoding encoding = VtkEncoding::Base64) {
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetInputData(&poly);
   writer->SetFileName(file.c_str());
-  writer->SetDataModeToBinary();
+  if (encoding == VtkEncoding::Raw) {
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
+  } else {
+    writer->SetDataModeToBinary();
+  }
   writer->SetBlockSize(1 << 20);
   writer->SetHeaderTypeToUInt64();
   switch (type) {
@@ -74,8 +81,8 @@ void write_with_vtk(vtkPolyData& poly, const fs::path& file, VtkCompressor type,
 }  // namespace
 
 TEST_CASE("write_polydata_file writes VTK's own file, byte for byte, on any number of threads") {
-  const fs::path dir = fs::temp_directory_path() / "subdiv_parallel_write_test";
-  fs::create_directories(dir);
+  const subdiv::test::TempDir scratch;  // its own folder: other test runs may be writing at the same time
+  const fs::path& dir = scratch.path();
   const MeshData mesh = grid(300);  // 90601 points: 2.2 MB of coordinates
   OutputLevel level{&mesh, 2, mesh.point_data, mesh.cell_data};
   const auto poly = io_detail::make_polydata(level);
@@ -102,12 +109,34 @@ TEST_CASE("write_polydata_file writes VTK's own file, byte for byte, on any numb
       }
     }
   }
-  fs::remove_all(dir);
+}
+
+TEST_CASE("write_polydata_file with raw appended data writes VTK's own file, byte for byte, on any number of threads") {
+  const subdiv::test::TempDir scratch;  // its own folder: other test runs may be writing at the same time
+  const fs::path& dir = scratch.path();
+  const MeshData mesh = grid(300);
+  OutputLevel level{&mesh, 2, mesh.point_data, mesh.cell_data};
+  const auto poly = io_detail::make_polydata(level);
+  for (VtkCompressor type : {VtkCompressor::ZLib, VtkCompressor::LZ4, VtkCompressor::None}) {
+    CAPTURE(int(type));
+    write_with_vtk(*poly, dir / "vtk.vtp", type, 1, VtkEncoding::Raw);
+    const std::string expected = file_text(dir / "vtk.vtp");
+    REQUIRE(expected.find("<AppendedData encoding=\"raw\">") != std::string::npos);
+    for (int threads : {1, 2, 3}) {
+      CAPTURE(threads);
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+      VtkWriteOptions options;
+      options.compressor = type;
+      options.encoding = VtkEncoding::Raw;
+      io_detail::write_polydata_file(*poly, dir / "ours.vtp", dir / "ours.vtp", options);
+      CHECK(file_text(dir / "ours.vtp") == expected);
+    }
+  }
 }
 
 TEST_CASE("the block compressor in small blocks: many runs of parallel blocks, VTK's bytes") {
-  const fs::path dir = fs::temp_directory_path() / "subdiv_parallel_blocks_test";
-  fs::create_directories(dir);
+  const subdiv::test::TempDir scratch;  // its own folder: other test runs may be writing at the same time
+  const fs::path& dir = scratch.path();
   const MeshData mesh = grid(120);  // 14641 points: 343 blocks of 1 KB of coordinates, runs of 64
   OutputLevel level{&mesh, 0, mesh.point_data, mesh.cell_data};
   const auto poly = io_detail::make_polydata(level);
@@ -129,5 +158,4 @@ TEST_CASE("the block compressor in small blocks: many runs of parallel blocks, V
   CHECK(file_text(dir / "ours.vtp") == file_text(dir / "vtk.vtp"));
   CHECK(counts.parallel > 343);
   CHECK(counts.serial < counts.parallel / 2);  // the offsets, which VTK copies
-  fs::remove_all(dir);
 }
