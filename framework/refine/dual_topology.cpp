@@ -31,15 +31,10 @@ namespace {
 
 constexpr Index kGrain = 1 << 13;
 
-template <class Body>
-void parallel_ranges(Index count, Body body) {
-  subdiv::parallel_ranges(count, kGrain, body);
-}
-
 // Faces by parent face, with the face in hand (corners of face f run off[f] .. off[f+1]).
 template <class Body>
 void for_faces(const Level& L, Body body) {
-  parallel_ranges(L.face_count(), [&](Index begin, Index end) {
+  parallel_ranges(L.face_count(), kGrain, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f) body(f);
   });
 }
@@ -125,7 +120,7 @@ Level child_faces(const Level& L, const DualPlan& p, Index vertex_count, FCorner
     for (Index c = L.face_offsets[f]; c < L.face_offsets[f + 1]; ++c) C.face_vertices[c] = f_corner(c);
   });
   if (EF > 0)
-    parallel_ranges(L.edge_count(), [&](Index begin, Index end) {
+    parallel_ranges(L.edge_count(), kGrain, [&](Index begin, Index end) {
       for (Index e = begin; e < end; ++e) {
         const Index k = p.edge_face[e];
         if (k == kNone) continue;
@@ -138,7 +133,7 @@ Level child_faces(const Level& L, const DualPlan& p, Index vertex_count, FCorner
       }
     });
   const Index v_block = N + 4 * EF;
-  parallel_ranges(L.vertex_count, [&](Index begin, Index end) {
+  parallel_ranges(L.vertex_count, kGrain, [&](Index begin, Index end) {
     for (Index v = begin; v < end; ++v) {
       const Index m = p.vertex_face[v];
       if (m == kNone) continue;
@@ -189,7 +184,7 @@ void child_rings(Level& C, Slots slots) {
   resize_bulk(C.vertex_face_offsets, size_t(V) + 1);
   resize_bulk(C.vertex_ring_offsets, size_t(V) + 1);
   resize_bulk(C.vertex_on_boundary, size_t(V));
-  parallel_ranges(V, [&](Index begin, Index end) {
+  parallel_ranges(V, kGrain, [&](Index begin, Index end) {
     Ring4 s;
     for (Index v = begin; v < end; ++v) {
       slots(v, s);
@@ -206,7 +201,7 @@ void child_rings(Level& C, Slots slots) {
   resize_bulk(C.vertex_faces, size_t(C.vertex_face_offsets[V]));
   resize_bulk(C.vertex_face_corner, size_t(C.vertex_face_offsets[V]));
   resize_bulk(C.vertex_edges, size_t(C.vertex_ring_offsets[V]));
-  parallel_ranges(V, [&](Index begin, Index end) {
+  parallel_ranges(V, kGrain, [&](Index begin, Index end) {
     Ring4 s;
     for (Index v = begin; v < end; ++v) write_ring(C, v, s, slots(v, s));
   });
@@ -216,7 +211,7 @@ void child_rings(Level& C, Slots slots) {
 std::vector<Index> ring_positions(const Level& L) {
   std::vector<Index> pos;
   resize_bulk(pos, size_t(L.corner_count()));
-  parallel_ranges(L.vertex_count, [&](Index begin, Index end) {
+  parallel_ranges(L.vertex_count, kGrain, [&](Index begin, Index end) {
     for (Index v = begin; v < end; ++v)
       for (Index i = L.vertex_face_offsets[v]; i < L.vertex_face_offsets[v + 1]; ++i)
         pos[L.face_offsets[L.vertex_faces[i]] + L.vertex_face_corner[i]] = i - L.vertex_face_offsets[v];
@@ -247,7 +242,7 @@ void complete_dual(const Level& L, const DualPlan& p, Level& C) {
       C.edge_faces[2 * c] = f, C.edge_faces[2 * c + 1] = k == kNone ? kNone : F + k;
     }
   });
-  parallel_ranges(L.edge_count(), [&](Index begin, Index end) {
+  parallel_ranges(L.edge_count(), kGrain, [&](Index begin, Index end) {
     for (Index e = begin; e < end; ++e) {
       const Index k = p.edge_face[e];
       if (k == kNone) continue;
@@ -261,7 +256,7 @@ void complete_dual(const Level& L, const DualPlan& p, Level& C) {
       C.edge_faces[2 * (N + 2 * k) + 1] = v_face(b), C.edge_faces[2 * (N + 2 * k + 1) + 1] = v_face(a);
     }
   });
-  parallel_ranges(L.vertex_count, [&](Index begin, Index end) {
+  parallel_ranges(L.vertex_count, kGrain, [&](Index begin, Index end) {
     for (Index v = begin; v < end; ++v) {
       if (p.vertex_face[v] == kNone) continue;
       const Index base = v_block + p.vertex_base[v], n = L.incident_face_count(v);
@@ -310,7 +305,7 @@ void complete_mid_edge(const Level& L, const DualPlan& p, Level& C) {
       C.edge_faces[2 * c] = f, C.edge_faces[2 * c + 1] = v_face(L.face_vertices[next]);
     }
   });
-  parallel_ranges(L.vertex_count, [&](Index begin, Index end) {
+  parallel_ranges(L.vertex_count, kGrain, [&](Index begin, Index end) {
     for (Index v = begin; v < end; ++v) {
       if (p.vertex_face[v] == kNone) continue;
       const Index base = N + p.vertex_base[v], fo = L.vertex_face_offsets[v], n = L.incident_face_count(v);

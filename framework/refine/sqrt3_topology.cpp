@@ -25,11 +25,6 @@ namespace {
 
 constexpr Index kGrain = 1 << 13;
 
-template <class Body>
-void parallel_ranges(Index count, Body body) {
-  subdiv::parallel_ranges(count, kGrain, body);
-}
-
 // The corner of triangle f at vertex v.
 inline Index corner_of(const Level& P, Index f, Index v) {
   const Index o = 3 * f;
@@ -68,7 +63,7 @@ Level sqrt3_flip_topology(const Level& P, bool full, std::vector<Index>* parent_
   resize_bulk(C.face_offsets, 2 * size_t(E) + 1);
   resize_bulk(C.face_vertices, 6 * size_t(E));
   resize_bulk(*parent_face, 2 * size_t(E));
-  parallel_ranges(E, [&](Index begin, Index end) {
+  parallel_ranges(E, kGrain, [&](Index begin, Index end) {
     for (Index e = begin; e < end; ++e) {
       const Index a = P.edge_vertices[2 * e], b = P.edge_vertices[2 * e + 1];
       const Index f0 = P.edge_faces[2 * e], f1 = P.edge_faces[2 * e + 1];
@@ -145,7 +140,7 @@ Level sqrt3_flip_topology(const Level& P, bool full, std::vector<Index>* parent_
     }
   });
   resize_bulk(C.face_edges, 6 * size_t(E));
-  parallel_ranges(E, [&](Index begin, Index end) {
+  parallel_ranges(E, kGrain, [&](Index begin, Index end) {
     Index c[4];
     for (Index e = begin; e < end; ++e) {
       corner_spokes(e, c);
@@ -159,7 +154,7 @@ Level sqrt3_flip_topology(const Level& P, bool full, std::vector<Index>* parent_
   const Index parent_ring = P.vertex_face_offsets[V];
   resize_bulk(C.vertex_face_offsets, size_t(V + F) + 1);
   std::copy(P.vertex_face_offsets.begin(), P.vertex_face_offsets.end(), C.vertex_face_offsets.begin());
-  parallel_ranges(F, [&](Index begin, Index end) {
+  parallel_ranges(F, kGrain, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f) C.vertex_face_offsets[V + f + 1] = parent_ring + 6 * (f + 1);
   });
   C.vertex_ring_offsets = C.vertex_face_offsets;  // closed: as many ring edges as faces
@@ -168,7 +163,7 @@ Level sqrt3_flip_topology(const Level& P, bool full, std::vector<Index>* parent_
   resize_bulk(C.vertex_face_corner, slots);
   resize_bulk(C.vertex_edges, slots);
   assign_bulk(C.vertex_on_boundary, size_t(V + F), std::uint8_t(0));
-  parallel_ranges(V, [&](Index begin, Index end) {
+  parallel_ranges(V, kGrain, [&](Index begin, Index end) {
     for (Index v = begin; v < end; ++v) {
       const Index o = P.vertex_face_offsets[v], n = P.vertex_face_offsets[v + 1] - o;
       if (n == 0) continue;
@@ -184,7 +179,7 @@ Level sqrt3_flip_topology(const Level& P, bool full, std::vector<Index>* parent_
       }
     }
   });
-  parallel_ranges(F, [&](Index begin, Index end) {
+  parallel_ranges(F, kGrain, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f) {
       Index face[6], corner[6], edge[6];
       for (int k = 0; k < 3; ++k) {

@@ -14,7 +14,6 @@
 #include <tbb/task_arena.h>
 
 #include "framework/topology/level_rings.h"
-#include "framework/util/parallel_ranges.h"
 
 namespace subdiv {
 namespace {
@@ -31,11 +30,6 @@ Index chunk_count(Index corners, Index vertices) {
   const Index by_corners = corners / kChunkCorners;
   const Index by_memory = Index(4 * std::int64_t(corners) / std::max<Index>(vertices, 1));
   return std::max<Index>(1, std::min({threads, by_corners, by_memory}));
-}
-
-template <class Body>
-void parallel_ranges(Index count, Body body) {
-  subdiv::parallel_ranges(count, kGrain, body);
 }
 
 }  // namespace

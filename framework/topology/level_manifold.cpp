@@ -22,11 +22,6 @@ namespace {
 // Elements per parallel task.
 constexpr Index kGrain = 1 << 14;
 
-template <class Body>
-void parallel_ranges(Index count, Body body) {
-  subdiv::parallel_ranges(count, kGrain, body);
-}
-
 // What the stages share: the corners around each vertex, with the vertex each one's edge
 // runs to (the twin search then reads one vertex's slots, not the faces) and, per corner,
 // its twin.
@@ -48,9 +43,9 @@ bool find_twins(const Level& level, Corners& k) {
   const CornerIndex& ci = k.index;
   const Index corners = Index(ci.face.size());
   k.twin.resize(size_t(corners));
-  parallel_ranges(corners, [&](Index begin, Index end) { std::fill(k.twin.begin() + begin, k.twin.begin() + end, kNone); });
+  parallel_ranges(corners, kGrain, [&](Index begin, Index end) { std::fill(k.twin.begin() + begin, k.twin.begin() + end, kNone); });
   std::atomic<bool> manifold{true};
-  parallel_ranges(level.vertex_count, [&](Index begin, Index end) {
+  parallel_ranges(level.vertex_count, kGrain, [&](Index begin, Index end) {
     const Index* offset = ci.vertex_offsets.data();
     const Index* head = k.index.heads.data();
     const Index* corner = ci.vertex_corners.data();
@@ -112,7 +107,7 @@ void number_edges(Level& level, Corners& k, const std::vector<Index>& first_edge
   const Index corners = level.corner_count();
   const Index chunks = Index(first_edge.size()) - 1;
   k.boundary_corner.resize(size_t(level.vertex_count));
-  parallel_ranges(level.vertex_count, [&](Index begin, Index end) {
+  parallel_ranges(level.vertex_count, kGrain, [&](Index begin, Index end) {
     std::fill(k.boundary_corner.begin() + begin, k.boundary_corner.begin() + end, kNone);
   });
   tbb::parallel_for(Index(0), chunks, [&](Index chunk) {
