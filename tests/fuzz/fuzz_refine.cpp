@@ -1,5 +1,6 @@
-// A fuzzed scheme refining a fuzzed small mesh for two levels: JSON scheme text, a line
-// "---", then an OBJ mesh (with crease and corner tags). Sizes are bounded so that every
+// A fuzzed scheme refining a fuzzed small mesh for two levels, through the stencil tables
+// and through step_values: JSON scheme text, a line "---", then an OBJ mesh (with crease and
+// corner tags). Sizes are bounded so that every
 // input runs in milliseconds: the point is the engine's handling of odd topology and odd
 // rules, not memory exhaustion (which the memory guard handles before refining).
 #include "fuzz_support.h"
@@ -34,6 +35,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     options.threads = 1;
     const subdiv::Hierarchy h = subdiv::refine(*scheme, subdiv::level_from_mesh(mesh, file), options);
     (void)subdiv::interpolate(h, kLevels, mesh.positions, 3);
+    // The same levels without tables, as step_values computes them (flat and smooth kernels,
+    // feature contexts classified on first use, the interpreter for the rest).
+    std::vector<double> values = mesh.positions;
+    for (int l = 0; l < kLevels; ++l) values = subdiv::step_values(*scheme, h, l, values, 3, options);
   });
   return 0;
 }
