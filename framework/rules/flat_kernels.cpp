@@ -70,6 +70,8 @@ FlatKernels::FlatKernels(const StepContext& step, const std::vector<ChildGroup>&
   if (first_child_[int(Element::Vertex)] != kNone &&
       fits(vt, {Points::Self, Points::Ring, Points::FacePoints, Points::EdgePoints}) && new_points_available(vt)) {
     PerSize& p = vertex_;
+    // A rule without a ring term (the butterflies keep their vertices) gathers no ring.
+    p.uses_ring = uses(vt, Points::Ring);
     p.uses_face_points = uses(vt, Points::FacePoints), p.uses_edge_points = uses(vt, Points::EdgePoints);
     for (int n = 0; n <= tables.max_n; ++n) {
       p.self.push_back(weight_of(vt, Points::Self, n, 0));
@@ -170,8 +172,10 @@ Index FlatKernels::run_vertices(Index begin, Index end, const StepSources& in, d
     const Index* ring = L.vertex_edges.data() + ring_begin;
     PointAccumulator<C> acc(dst + size_t(first + v) * channels, channels);
     acc.add(in.vertex(v), w.self[n]);
-    const double w_ring = w.ring[n];
-    for (Index j = 0; j < n; ++j) acc.add(in.vertex(L.other_end(ring[j], v)), w_ring);
+    if (w.uses_ring) {
+      const double w_ring = w.ring[n];
+      for (Index j = 0; j < n; ++j) acc.add(in.vertex(L.other_end(ring[j], v)), w_ring);
+    }
     if (face_points) {
       const Index* faces = L.vertex_faces.data() + L.vertex_face_offsets[v];
       const double w_face = w.face_points[n];

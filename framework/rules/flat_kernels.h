@@ -66,7 +66,7 @@ private:
   struct PerSize {
     std::vector<double> self, ring, face_points, edge_points, corners;
     std::vector<std::uint8_t> sum_ok;
-    bool uses_face_points = false, uses_edge_points = false;
+    bool uses_ring = false, uses_face_points = false, uses_edge_points = false;
   };
   // Per face size k, the weights of the corners j = 0 .. k-1 places on (at row_start[k]).
   struct CornerWeights {
