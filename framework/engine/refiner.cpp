@@ -9,6 +9,7 @@
 
 #include "framework/engine/vertex_parameters.h"
 #include "framework/features/base_tags.h"
+#include "framework/rules/kernel_contexts.h"
 #include "framework/rules/stencil_builder.h"
 #include "framework/rules/step_evaluator.h"
 #include "framework/scheme/step_tables.h"
@@ -77,8 +78,7 @@ StepInputs prepare_step(const Scheme& scheme, const StepRules& step, const Level
                     std::make_unique<FeatureContexts>(),
                     nullptr,
                     nullptr};
-  const bool untagged = parent.edge_sharpness.empty() && parent.vertex_sharpness.empty();
-  if (!lazy_features || !untagged) {
+  if (!lazy_features || !without_sharpness_tags(parent)) {
     *inputs.features = classify_features(parent, options.features);
     return inputs;
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <initializer_list>
 
+#include "framework/rules/kernel_contexts.h"
 #include "framework/rules/point_accumulator.h"
 #include "framework/rules/weight_tables.h"
 
@@ -11,8 +12,6 @@ namespace {
 
 using Points = FlatKernels::Points;
 using TermShape = FlatKernels::TermShape;
-
-bool smooth(const VertexContext& vc) { return vc.parent == Context::Smooth && vc.child == Context::Smooth; }
 
 // Whether every term gathers one of `allowed` with a weight that reads at most the
 // element's own n (or k), and (unless `along_role`) is the same for every point of the role.
@@ -51,7 +50,7 @@ int largest_face_size(const std::vector<TermShape>& terms, const WeightTables& t
 
 FlatKernels::FlatKernels(const StepContext& step, const std::vector<ChildGroup>& groups,
                          const std::vector<TermShape> (&terms)[kElementCount])
-    : step_(step), untagged_(step.parent.edge_sharpness.empty() && step.parent.vertex_sharpness.empty()) {
+    : step_(step), untagged_(without_sharpness_tags(step.parent)) {
   const Level& L = step.parent;
   const Index element_count[kElementCount] = {L.vertex_count, L.edge_count(), L.face_count(), L.corner_count()};
   for (int k = 0; k < kElementCount; ++k) {
@@ -165,7 +164,7 @@ Index FlatKernels::run_vertices(Index begin, Index end, const StepSources& in, d
   for (Index v = begin; v < end; ++v) {
     const Index ring_begin = L.vertex_ring_offsets[v], n = L.vertex_ring_offsets[v + 1] - ring_begin;
     if (L.vertex_on_boundary[v] || (!manifold && L.non_manifold_vertex(v)) || n > max_n ||
-        (untagged_ ? n == 0 : !smooth(step_.features.vertices[v])) || L.incident_face_count(v) != n) {
+        !smooth_vertex(step_.features, untagged_, v, n) || L.incident_face_count(v) != n) {
       left.push_back(v);
       continue;
     }
@@ -213,7 +212,7 @@ Index FlatKernels::run_edges(Index begin, Index end, const StepSources& in, doub
     const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
     const Index f0 = L.edge_faces[2 * e], f1 = L.edge_faces[2 * e + 1];
     if (f1 == kNone || (!manifold && L.non_manifold_edge(e)) ||
-        (!untagged_ && step_.features.edges[e].crease_weight != 0.f) ||
+        !smooth_edge(step_.features, untagged_, e) ||
         (w.uses_opposite && (L.face_size(f0) != 3 || L.face_size(f1) != 3))) {
       left.push_back(e);
       continue;
@@ -249,11 +248,7 @@ Index FlatKernels::run_corners(Index begin, Index end, const StepSources& in, do
     const int i = origins.local[child];
     const Index corner_begin = L.face_offsets[f], k = L.face_offsets[f + 1] - corner_begin;
     const Index out_edge = L.face_edges[corner_begin + i], in_edge = L.face_edges[corner_begin + (i + k - 1) % k];
-    const bool sharp = untagged_ ? L.edge_on_boundary(out_edge) || L.edge_on_boundary(in_edge) ||
-                                       L.non_manifold_edge(out_edge) || L.non_manifold_edge(in_edge)
-                                 : F.vertex_sharpness[L.face_vertices[corner_begin + i]] > 0.f ||
-                                       F.edges[out_edge].crease_weight != 0.f || F.edges[in_edge].crease_weight != 0.f;
-    if (sharp || k > max_k) {
+    if (sharp_corner(L, F, untagged_, L.face_vertices[corner_begin + i], out_edge, in_edge) || k > max_k) {
       left.push_back(r);
       continue;
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "framework/rules/flat_kernels.h"
+#include "framework/rules/kernel_contexts.h"
 #include "framework/rules/point_accumulator.h"
 
 namespace subdiv {
@@ -73,8 +74,6 @@ std::vector<SmoothKernels::Term> compile_kernel(const StepContext& s, Element el
   }
   return terms;
 }
-
-bool smooth(const VertexContext& vc) { return vc.parent == Context::Smooth && vc.child == Context::Smooth; }
 
 // The vertex of triangle f that is not a or b, or kNone if f is not a triangle.
 Index third_corner(const Level& L, Index f, Index a, Index b) {
@@ -148,7 +147,7 @@ void tabulate_zero_weights(SmoothKernels::Term& t, int max_n) {
 SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGroup>& groups)
     : step_(step),
       groups_(groups),
-      untagged_(step.parent.edge_sharpness.empty() && step.parent.vertex_sharpness.empty()) {
+      untagged_(without_sharpness_tags(step.parent)) {
   std::vector<FlatKernels::TermShape> shapes[kElementCount];
   for (int k = 0; k < kElementCount; ++k) {
     kernels_[k] = compile_kernel(step, Element(k));
@@ -180,7 +179,8 @@ bool SmoothKernels::add_new_points(Accumulator& acc, double& sum, Element kind, 
 Index SmoothKernels::run(Element kind, const ChildGroup& group, Index begin, Index end, const StepSources& in,
                         double* dst, std::vector<Index>& left, FirstBadRow& bad, Index& flat) const {
   flat = 0;
-  if (flat_->covers(kind) && group.first_of_run() != kNone) return flat = flat_->run(kind, begin, end, in, dst, left, bad);
+  // The flat kernels cover a kind only when its children are one run over its elements.
+  if (flat_->covers(kind)) return flat = flat_->run(kind, begin, end, in, dst, left, bad);
   if (in.channels == 3) return run_rows<3>(kind, group, begin, end, in, dst, left, bad);
   return run_rows<0>(kind, group, begin, end, in, dst, left, bad);
 }
@@ -235,9 +235,7 @@ bool SmoothKernels::vertex_point(Index v, const StepSources& in, double* out, do
   const auto ring = L.ring_edges(v);
   const auto faces = L.ring_faces(v);
   const int n = int(ring.size()), channels = in.channels;
-  // Untagged, an interior vertex with edges is smooth (feature_context.cpp): its context
-  // need not be read.
-  if (untagged_ ? n == 0 : !smooth(step_.features.vertices[v])) return false;
+  if (!smooth_vertex(step_.features, untagged_, v, n)) return false;
   PointAccumulator<C> acc(out, channels);
   double sum = 0.0;
   for (const Term& term : kernels_[int(Element::Vertex)]) {
@@ -276,7 +274,7 @@ template <int C>
 [[gnu::always_inline]] inline  // into run_rows' loop
 bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, double& weight_sum) const {
   const Level& L = step_.parent;
-  if (L.edge_on_boundary(e) || L.non_manifold_edge(e) || (!untagged_ && step_.features.edges[e].crease_weight != 0.f))
+  if (L.edge_on_boundary(e) || L.non_manifold_edge(e) || !smooth_edge(step_.features, untagged_, e))
     return false;
   const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
   const Index faces[2] = {L.edge_faces[2 * e], L.edge_faces[2 * e + 1]};
@@ -394,19 +392,8 @@ bool SmoothKernels::corner_point(Index f, int corner, const StepSources& in, dou
   const auto corners = L.face(f);
   const auto edges = L.face_edge_list(f);
   const int k = int(corners.size()), channels = in.channels;
-  const Index out_edge = edges[corner], in_edge = edges[(corner + k - 1) % k];
-  if (untagged_) {
-    // Untagged, only boundary edges are sharp (feature_context.cpp), and a vertex is sharp
-    // only as a boundary corner, whose two edges are boundary edges.
-    if (L.edge_on_boundary(out_edge) || L.edge_on_boundary(in_edge) || L.non_manifold_edge(out_edge) ||
-        L.non_manifold_edge(in_edge))
-      return false;
-  } else {
-    const FeatureContexts& F = step_.features;
-    if (F.vertex_sharpness[corners[corner]] > 0.f || F.edges[out_edge].crease_weight != 0.f ||
-        F.edges[in_edge].crease_weight != 0.f)
-      return false;
-  }
+  if (sharp_corner(L, step_.features, untagged_, corners[corner], edges[corner], edges[(corner + k - 1) % k]))
+    return false;
   PointAccumulator<C> acc(out, channels);
   double sum = 0.0;
   for (const Term& term : kernels_[int(Element::Corner)]) {
