@@ -57,13 +57,19 @@ void check_manifold_for(const Scheme& scheme, const Level& level) {
 
 // What one step's rows need besides the topology: its weight tables (and, with per-vertex
 // parameters, its vertex rules per vertex) and feature contexts.
+// The step's feature contexts, and (when they are left for the first row that needs them,
+// StepContext::classify) what computes them in place, once. Held on the heap: the step's
+// context points into it while StepInputs moves.
+struct StepFeatures {
+  FeatureContexts contexts;
+  std::once_flag classified;
+  std::function<void()> classify;  // empty: `contexts` are ready
+};
+
 struct StepInputs {
   WeightTables tables;
   std::unique_ptr<PerVertexTables> per_vertex;
-  std::unique_ptr<FeatureContexts> features;  // on the heap: `classify` fills it in place
-  // Set when `features` are left for the first row that needs them (StepContext::classify).
-  std::unique_ptr<std::function<void()>> classify;
-  std::unique_ptr<std::once_flag> classified;
+  std::unique_ptr<StepFeatures> features;
 };
 
 // `values`: the per-vertex parameters on `parent`. With `lazy_features`, a level without
@@ -75,22 +81,19 @@ StepInputs prepare_step(const Scheme& scheme, const StepRules& step, const Level
   const int max_n = parent.max_valence(), max_k = parent.max_face_size();
   StepInputs inputs{step_weight_tables(scheme, step, max_n, max_k, level),
                     per_vertex_tables(scheme, step, parent, values, max_n, max_k, level),
-                    std::make_unique<FeatureContexts>(),
-                    nullptr,
-                    nullptr};
+                    std::make_unique<StepFeatures>()};
+  StepFeatures& f = *inputs.features;
   if (!lazy_features || !without_sharpness_tags(parent)) {
-    *inputs.features = classify_features(parent, options.features);
+    f.contexts = classify_features(parent, options.features);
     return inputs;
   }
-  inputs.classified = std::make_unique<std::once_flag>();
-  inputs.classify = std::make_unique<std::function<void()>>(
-      [&parent, &options, features = inputs.features.get(), once = inputs.classified.get()] {
-        // Isolated: while this thread classifies, it must not pick up another row task of
-        // the step, which would wait on the same once_flag.
-        std::call_once(*once, [&] {
-          tbb::this_task_arena::isolate([&] { *features = classify_features(parent, options.features); });
-        });
-      });
+  f.classify = [&parent, &options, &f] {
+    // Isolated: while this thread classifies, it must not pick up another row task of the
+    // step, which would wait on the same once_flag.
+    std::call_once(f.classified, [&] {
+      tbb::this_task_arena::isolate([&] { f.contexts = classify_features(parent, options.features); });
+    });
+  };
   return inputs;
 }
 
@@ -98,11 +101,11 @@ StepContext step_context(const Scheme& scheme, const StepRules& step, const Step
                          const ChildOrigins& origins, bool features_refined, int level, const RefineOptions& options) {
   // Row plans replay one vertex's row for another of the same shape: not when their rules differ.
   const bool plans = options.use_row_plans && !inputs.per_vertex;
-  StepContext s{parent,      origins,         inputs.tables, *inputs.features, features_refined,
+  StepContext s{parent,      origins,         inputs.tables, inputs.features->contexts, features_refined,
                 scheme.path, step.code.get(), level,         plans};
   s.per_vertex = inputs.per_vertex.get();
   s.use_kernels = options.use_kernels;
-  s.classify = inputs.classify.get();
+  s.classify = inputs.features->classify ? &inputs.features->classify : nullptr;
   return s;
 }
 
