@@ -90,24 +90,48 @@ void apply_group_rows(const StepContext& s, const RuleInputs& in, Element kind, 
 
 }  // namespace
 
-void apply_step_rows(const StepContext& s, std::span<const double> src, std::span<double> dst, int channels,
-                     RowPaths* paths) {
-  const Index child_count = Index(s.origins.kind.size());
-  if (channels < 1 || src.size() < size_t(s.parent.vertex_count) * channels || dst.size() < size_t(child_count) * channels)
+// What a step needs besides its values, made once: the children by element kind, the
+// order the kinds are built in, the row plans and the compiled kernels (which keep
+// references to the groups, so the whole is held in place on the heap).
+// Hidden, as the kernels it holds (smooth_kernels.h).
+struct [[gnu::visibility("hidden")]] StepEvaluator::Prepared {
+  explicit Prepared(const StepContext& s)
+      : groups(group_children(s)),
+        order(build_order(s, groups)),
+        plans(s.parent, s.origins, s.tables, s.features, s.code != nullptr, &groups),
+        kernels(s, groups) {}
+  const std::vector<ChildGroup> groups;
+  const std::vector<Element> order;
+  RowPlanStore plans;
+  const SmoothKernels kernels;
+};
+
+StepEvaluator::StepEvaluator(const StepContext& step) : step_(step), prepared_(std::make_unique<Prepared>(step)) {}
+
+StepEvaluator::~StepEvaluator() = default;
+
+Index StepEvaluator::child_count() const { return Index(step_.origins.kind.size()); }
+
+void StepEvaluator::apply(std::span<const double> src, std::span<double> dst, int channels, RowPaths* paths) {
+  const StepContext& s = step_;
+  if (channels < 1 || src.size() < size_t(s.parent.vertex_count) * channels || dst.size() < size_t(child_count()) * channels)
     throw Error(fmt::format("apply_step_rows: buffers of {} and {} values do not fit {} parent and {} child vertices "
                             "of {} channels",
-                            src.size(), dst.size(), s.parent.vertex_count, child_count, channels));
-  const std::vector<ChildGroup> groups = group_children(s);
-  RowPlanStore plans(s.parent, s.origins, s.tables, s.features, s.code != nullptr, &groups);
+                            src.size(), dst.size(), s.parent.vertex_count, child_count(), channels));
+  Prepared& p = *prepared_;
   // New points are sources: the groups run in build order, so a rule reads new points that
   // are already in dst.
   RuleInputs in{s.parent, s.features};
-  in.groups = &groups;
+  in.groups = &p.groups;
   in.new_point_base = s.parent.vertex_count;
   const StepSources sources{src.data(), dst.data(), s.parent.vertex_count, channels};
-  const SmoothKernels kernels(s, groups);
-  for (Element e : build_order(s, groups))
-    apply_group_rows(s, in, e, groups[int(e)], kernels, plans, sources, dst.data(), paths);
+  for (Element e : p.order)
+    apply_group_rows(s, in, e, p.groups[int(e)], p.kernels, p.plans, sources, dst.data(), paths);
+}
+
+void apply_step_rows(const StepContext& s, std::span<const double> src, std::span<double> dst, int channels,
+                     RowPaths* paths) {
+  StepEvaluator(s).apply(src, dst, channels, paths);
 }
 
 }  // namespace subdiv

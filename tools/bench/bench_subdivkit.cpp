@@ -7,6 +7,7 @@
 
 #include "bench_common.h"
 #include "bench_memory.h"
+#include "framework/engine/evaluator.h"
 #include "framework/engine/refiner.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/topology/level.h"
@@ -62,8 +63,10 @@ void report_results(const Job& job, const Mesh& mesh, const subdiv::Hierarchy& h
 
 namespace {
 
-// --mode update: the topology (and with --geometry tables one table composed over the
-// levels) once; each repetition re-evaluates the positions only.
+// --mode update: the topology once, and either one table composed over the levels
+// (--geometry tables) or an Evaluator with every step made ready (--geometry direct,
+// engine/evaluator.h); each repetition re-evaluates the positions only, into a buffer kept
+// between repetitions (as OpenSubdiv's side keeps its table).
 WorkerReport run_subdivkit_updates(const Job& job, const Mesh& mesh, const subdiv::Scheme& scheme,
                                    subdiv::RefineOptions options) {
   Timings once;
@@ -72,25 +75,26 @@ WorkerReport run_subdivkit_updates(const Job& job, const Mesh& mesh, const subdi
       scheme, subdiv::build_level(mesh.vertex_count, mesh.face_offsets, mesh.face_vertices), options);
   once.topo = clock.lap();
   subdiv::StencilTable composed;
+  std::unique_ptr<subdiv::Evaluator> evaluator;
+  subdiv::RowPaths paths;  // counted by the evaluator from the first evaluation, the cold one, which reports
   if (job.tables) {
     subdiv::build_stencils(scheme, h, options);
     composed = h.stencils[0];
     for (int l = 1; l < job.level; ++l) composed = subdiv::compose(composed, h.stencils[size_t(l)]);
     h.stencils.clear();
-    once.stencil = clock.lap();
+  } else {
+    options.row_paths = &paths;
+    evaluator = std::make_unique<subdiv::Evaluator>(scheme, h, options);
   }
+  once.stencil = clock.lap();
+  std::vector<double> values(size_t(h.levels.back().vertex_count) * 3);
   return repeat_cold_and_warm(job, [&](Timings& t, WorkerReport* report) {
     t = once;
-    subdiv::RowPaths paths;  // counted in the cold repetition
-    options.row_paths = report ? &paths : nullptr;
     Stopwatch evaluation;
-    std::vector<double> values;
-    if (job.tables) {
-      values = composed.apply(mesh.xyz, 3);
-    } else {
-      values = mesh.xyz;
-      for (int l = 0; l < job.level; ++l) values = subdiv::step_values(scheme, h, l, values, 3, options);
-    }
+    if (job.tables)
+      composed.apply(mesh.xyz, values, 3);
+    else
+      evaluator->evaluate(mesh.xyz, values, 3);
     t.apply = evaluation.lap();
     const std::uint64_t digest = digest_of(values);
     if (report) report_results(job, mesh, h, values, digest, paths, *report);

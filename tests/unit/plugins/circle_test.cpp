@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "framework/plugin/polyline_refine.h"
+#include "framework/engine/evaluator.h"
 #include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
@@ -121,6 +122,22 @@ TEST_CASE("circle-quad is non-linear: no stencils, applied directly; a regularly
     linear_worst = std::max(linear_worst, torus_error(&linear_positions[i], R, r));
   MESSAGE("distance from the torus at level 4: circle-quad ", worst, ", kobbelt-quad ", linear_worst);
   CHECK(linear_worst > 1e-4);
+}
+
+TEST_CASE("circle-quad through an Evaluator (engine/evaluator.h): every frame as interpolate gives it") {
+  load_example_plugins();
+  const Mesh torus12 = torus(12, 8, false, 3.0, 1.0);
+  const auto scheme = load_scheme("circle-quad");
+  RefineOptions options;
+  options.levels = 2;
+  const Hierarchy h = refine(*scheme, torus12.level(), options);
+  Evaluator evaluator(*scheme, h, options);
+  for (double scale : {1.0, 2.5, 0.5}) {  // frames: the torus grows and shrinks
+    CAPTURE(scale);
+    std::vector<double> frame = torus12.positions;
+    for (double& x : frame) x *= scale;
+    CHECK(evaluator.evaluate(frame, 3) == interpolate(h, 2, frame, 3));
+  }
 }
 
 TEST_CASE("circle-quad on an open planar grid: interpolatory, flat, boundaries refined along their lines") {
