@@ -1,5 +1,6 @@
 #include "framework/engine/refiner.h"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 #include "framework/engine/step_preparation.h"
@@ -10,6 +11,7 @@
 #include "framework/scheme/scheme.h"
 #include "framework/util/bulk_memory.h"
 #include "framework/util/error.h"
+#include "framework/util/scratch_vector.h"
 
 namespace subdiv {
 namespace {
@@ -57,17 +59,14 @@ StencilTable step_stencils(const Scheme& scheme, const StepRules& step, const Le
   return build_step_stencils(step_context(scheme, step, inputs, parent, origins, features_refined, level, options));
 }
 
-// One step applied to values without a table (rules/step_evaluator.h).
-std::vector<double> step_rows_applied(const Scheme& scheme, const StepRules& step, const Level& parent,
-                                      const ChildOrigins& origins, bool features_refined, int level,
-                                      const RefineOptions& options, const VertexParameters& parameters,
-                                      std::span<const double> values, int channels) {
+// One step applied to values without a table (rules/step_evaluator.h), into `out`.
+void step_rows_applied(const Scheme& scheme, const StepRules& step, const Level& parent, const ChildOrigins& origins,
+                       bool features_refined, int level, const RefineOptions& options,
+                       const VertexParameters& parameters, std::span<const double> values, std::span<double> out,
+                       int channels) {
   const StepInputs inputs = prepare_step(scheme, step, parent, level, options, parameters, /*lazy_features=*/true);
-  std::vector<double> out;
-  resize_bulk(out, origins.kind.size() * size_t(channels));
   apply_step_rows(step_context(scheme, step, inputs, parent, origins, features_refined, level, options), values, out,
                   channels, options.row_paths);
-  return out;
 }
 
 // A child face inside a hole is a hole (OpenSubdiv's Vtr::Refinement passes the face tag on).
@@ -184,8 +183,8 @@ std::vector<double> apply_step(const Hierarchy& h, int step, std::span<const dou
   return run_direct_step(*direct, h, step, values, channels);
 }
 
-std::vector<double> step_values(std::span<const SchemeRun> runs, const Hierarchy& h, int step,
-                                std::span<const double> values, int channels, const RefineOptions& options) {
+void step_values(std::span<const SchemeRun> runs, const Hierarchy& h, int step, std::span<const double> values,
+                 std::span<double> out, int channels, const RefineOptions& options) {
   const std::vector<const Scheme*> per_level = schemes_per_level(runs);
   if (per_level.size() + 1 != h.levels.size() || h.origins.size() != per_level.size())
     throw Error(fmt::format("step_values: the runs give {} levels but the hierarchy has {}", per_level.size(),
@@ -195,25 +194,51 @@ std::vector<double> step_values(std::span<const SchemeRun> runs, const Hierarchy
   if (values.size() != size_t(h.levels[step].vertex_count) * size_t(channels))
     throw Error(fmt::format("step_values: {} values for {} vertices of {} channels", values.size(),
                             h.levels[step].vertex_count, channels));
+  const Level& child = h.levels[step + 1];
+  if (out.size() != size_t(child.vertex_count) * size_t(channels))
+    throw Error(fmt::format("step_values: room for {} values, but level {} has {} vertices of {} channels", out.size(),
+                            step + 1, child.vertex_count, channels));
   const Scheme& scheme = *per_level[step];
   const int level = options.first_step + step;
-  if (scheme.steps.front().nonlinear)
-    return run_direct_step(*direct_step(scheme, h, size_t(step), level, options), h, step, values, channels);
+  if (scheme.steps.front().nonlinear) {
+    const std::vector<double> direct =
+        run_direct_step(*direct_step(scheme, h, size_t(step), level, options), h, step, values, channels);
+    std::copy(direct.begin(), direct.end(), out.begin());
+    return;
+  }
   check_vertex_parameters(runs, h.levels[0], options.vertex_parameters);
   VertexParameters parameters = options.vertex_parameters;
   for (int l = 0; l < step && !parameters.empty(); ++l)
     parameters = carry_vertex_parameters(h.levels[l], h.origins[l], parameters);
-  std::vector<double> out = step_rows_applied(scheme, scheme.steps.front(), h.levels[step], h.origins[step],
-                                              h.features_refined[step], level, options, parameters, values, channels);
+  const size_t passes = scheme.steps.size();
   // Smoothing passes, one after another (build_stencils composes their tables instead, so
-  // the last bits may differ).
-  const Level& child = h.levels[step + 1];
-  const ChildOrigins same = scheme.steps.size() > 1 ? identity_origins(child) : ChildOrigins{};
-  const VertexParameters on_child = scheme.steps.size() > 1 && !parameters.empty()
-                                        ? carry_vertex_parameters(h.levels[step], h.origins[step], parameters)
-                                        : VertexParameters{};
-  for (size_t s = 1; s < scheme.steps.size(); ++s)
-    out = step_rows_applied(scheme, scheme.steps[s], child, same, true, level, options, on_child, out, channels);
+  // the last bits may differ), between `out` and one scratch level: the last pass writes `out`.
+  ScratchVector<double> scratch(passes > 1 ? out.size() : 0);
+  const auto target = [&](size_t s) { return (passes - 1 - s) % 2 == 0 ? out : std::span<double>(scratch); };
+  step_rows_applied(scheme, scheme.steps.front(), h.levels[step], h.origins[step], h.features_refined[step], level,
+                    options, parameters, values, target(0), channels);
+  if (passes == 1) return;
+  const ChildOrigins same = identity_origins(child);
+  const VertexParameters on_child =
+      parameters.empty() ? VertexParameters{} : carry_vertex_parameters(h.levels[step], h.origins[step], parameters);
+  for (size_t s = 1; s < passes; ++s)
+    step_rows_applied(scheme, scheme.steps[s], child, same, true, level, options, on_child, target(s - 1), target(s),
+                      channels);
+}
+
+void step_values(const Scheme& scheme, const Hierarchy& h, int step, std::span<const double> values,
+                 std::span<double> out, int channels, const RefineOptions& options) {
+  const SchemeRun run{&scheme, int(h.levels.size()) - 1};
+  step_values(std::span(&run, 1), h, step, values, out, channels, options);
+}
+
+std::vector<double> step_values(std::span<const SchemeRun> runs, const Hierarchy& h, int step,
+                                std::span<const double> values, int channels, const RefineOptions& options) {
+  if (step < 0 || step + 1 >= int(h.levels.size()))
+    throw Error(fmt::format("step_values: step {} is not in 0..{}", step, int(h.levels.size()) - 2));
+  std::vector<double> out;
+  resize_bulk(out, size_t(h.levels[size_t(step) + 1].vertex_count) * size_t(std::max(channels, 0)));
+  step_values(runs, h, step, values, out, channels, options);
   return out;
 }
 

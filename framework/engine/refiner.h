@@ -103,6 +103,14 @@ std::vector<double> step_values(std::span<const SchemeRun> runs, const Hierarchy
                                 std::span<const double> values, int channels, const RefineOptions& options);
 std::vector<double> step_values(const Scheme& scheme, const Hierarchy& topology, int step,
                                 std::span<const double> values, int channels, const RefineOptions& options);
+// The same into `out` (the next level's vertex count x channels), memory the caller owns and
+// may reuse: every value is written, so it need not be zero-filled first (an
+// std::vector's resize fills it on one thread; subdiv::ScratchVector, util/scratch_vector.h,
+// leaves it to the step's parallel loops to touch first).
+void step_values(std::span<const SchemeRun> runs, const Hierarchy& topology, int step, std::span<const double> values,
+                 std::span<double> out, int channels, const RefineOptions& options);
+void step_values(const Scheme& scheme, const Hierarchy& topology, int step, std::span<const double> values,
+                 std::span<double> out, int channels, const RefineOptions& options);
 
 // Values (channels per vertex) of the base level carried to level `to_level`.
 std::vector<double> interpolate(const Hierarchy& hierarchy, int to_level,

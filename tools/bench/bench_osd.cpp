@@ -10,6 +10,7 @@
 
 #include "bench_common.h"
 #include "bench_memory.h"
+#include "framework/util/scratch_vector.h"
 
 namespace subdiv_bench {
 namespace {
@@ -57,7 +58,7 @@ std::vector<std::uint64_t> child_keys(const Far::TopologyLevel& parent, int chil
 // The cold repetition's results: memory peak (before anything else is allocated), counts,
 // and origin-keyed positions for the parent's check.
 void report_results(const Job& job, const Mesh& mesh, const Far::TopologyRefiner& refiner, bool loop,
-                    const std::vector<Xyz>& xyz, std::uint64_t digest, WorkerReport& report) {
+                    std::span<const Xyz> xyz, std::uint64_t digest, WorkerReport& report) {
   report.peak_rss_bytes = peak_rss_bytes();
   const auto& last = refiner.GetLevel(job.level);
   report.vertices = last.GetNumVertices();
@@ -138,9 +139,10 @@ WorkerReport run_osd(const Job& job, const Mesh& mesh) {
     uniform.fullTopologyInLastLevel = job.osd_full_topology;
     refiner->RefineUniform(uniform);
     t.topo = clock.lap();
-    // Level by level, keeping only the current and next positions (as the SubdivKit side).
+    // Level by level, keeping only the current and next positions (as the SubdivKit side),
+    // in vectors that do not zero-fill what Interpolate writes.
     Far::PrimvarRefinerReal<double> primvar(*refiner);
-    std::vector<Xyz> src, dst;
+    subdiv::ScratchVector<Xyz> src, dst;
     const Xyz* base = reinterpret_cast<const Xyz*>(mesh.xyz.data());
     for (int l = 1; l <= job.level; ++l) {
       dst.resize(size_t(refiner->GetLevel(l).GetNumVertices()));
@@ -149,7 +151,7 @@ WorkerReport run_osd(const Job& job, const Mesh& mesh) {
       else
         primvar.Interpolate(l, src, dst);
       std::swap(src, dst);
-      std::vector<Xyz>().swap(dst);
+      subdiv::ScratchVector<Xyz>().swap(dst);
     }
     t.apply = clock.lap();
     const std::uint64_t digest = digest_of({&src[0].p[0], 3 * src.size()});

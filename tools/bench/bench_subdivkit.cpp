@@ -12,6 +12,7 @@
 #include "framework/scheme/scheme_registry.h"
 #include "framework/topology/level.h"
 #include "framework/util/bulk_memory.h"
+#include "framework/util/scratch_vector.h"
 
 namespace subdiv_bench {
 namespace {
@@ -41,7 +42,7 @@ std::vector<std::uint64_t> child_keys(const subdiv::Level& parent, const subdiv:
 
 // The cold repetition's results: memory peak (before anything else is allocated), counts,
 // the new points by path, and origin-keyed positions for the parent's check.
-void report_results(const Job& job, const Mesh& mesh, const subdiv::Hierarchy& h, const std::vector<double>& xyz,
+void report_results(const Job& job, const Mesh& mesh, const subdiv::Hierarchy& h, std::span<const double> xyz,
                     std::uint64_t digest, const subdiv::RowPaths& paths, WorkerReport& report) {
   report.peak_rss_bytes = peak_rss_bytes();
   report.kernel_points = paths.kernel, report.plan_points = paths.plan, report.generic_points = paths.generic;
@@ -130,19 +131,18 @@ WorkerReport run_subdivkit(const Job& job, const Mesh& mesh) {
       subdiv::build_stencils(*scheme, h, options);
       t.stencil = clock.lap();
     }
-    // Level by level, keeping only the current and next positions (as the OSD side).
-    std::vector<double> src, dst;
+    // Level by level, keeping only the current and next positions (as the OSD side), in
+    // buffers the step's parallel loops touch first (no zero-fill: on both sides).
+    subdiv::ScratchVector<double> src, dst;
     for (int l = 0; l < job.level; ++l) {
       const std::span<const double> from = l == 0 ? std::span<const double>(mesh.xyz) : std::span<const double>(src);
-      if (job.tables) {
-        const auto& table = h.stencils[size_t(l)];
-        subdiv::resize_bulk(dst, 3 * size_t(table.row_count()));  // as StencilTable::apply(src, channels) does
-        table.apply(from, dst, 3);
-      } else {
-        dst = subdiv::step_values(*scheme, h, l, from, 3, options);
-      }
+      dst.resize(3 * size_t(h.levels[size_t(l) + 1].vertex_count));
+      if (job.tables)
+        h.stencils[size_t(l)].apply(from, dst, 3);
+      else
+        subdiv::step_values(*scheme, h, l, from, dst, 3, options);
       std::swap(src, dst);
-      std::vector<double>().swap(dst);
+      subdiv::ScratchVector<double>().swap(dst);
     }
     t.apply = clock.lap();
     const std::uint64_t digest = digest_of(src);

@@ -5,6 +5,7 @@
 // rows are the same), the same values to round-off where they do (Catmull-Clark reads its
 // new face points back instead of expanding them); and the same bits for any thread count.
 #include <cmath>
+#include <limits>
 #include <doctest/doctest.h>
 #include <tbb/global_control.h>
 
@@ -135,4 +136,33 @@ TEST_CASE("step_values refuses wrong buffers and steps with a message") {
   CHECK_THROWS_WITH_AS(step_values(*scheme, h, 1, c.positions, 3, o), doctest::Contains("step 1 is not in 0..0"), Error);
   CHECK_THROWS_WITH_AS(step_values(*scheme, h, 0, std::vector<double>(5), 3, o),
                        doctest::Contains("5 values for 8 vertices of 3 channels"), Error);
+}
+
+TEST_CASE("step_values into the caller's memory: every value written, the same bits as the returned vector") {
+  // quad-bspline has two smoothing passes after its split (they alternate between the
+  // output and one scratch level), loop-composite one, catmull-clark none.
+  const std::vector<std::pair<const char*, Case>> cases = {
+      {"catmull-clark", creased_cube()}, {"quad-bspline", of(grid(4, 3))}, {"loop-composite", of(bipyramid(7))}};
+  for (const auto& [name, c] : cases) {
+    CAPTURE(name);
+    const auto scheme = load_scheme(name);
+    RefineOptions o;
+    o.levels = 2;
+    const Hierarchy h = refine_topology(*scheme, c.level, o);
+    std::vector<double> values = c.positions;
+    for (int l = 0; l < 2; ++l) {
+      const std::vector<double> returned = step_values(*scheme, h, l, values, 3, o);
+      std::vector<double> into(returned.size(), std::numeric_limits<double>::quiet_NaN());  // a value left unwritten shows
+      step_values(*scheme, h, l, values, into, 3, o);
+      CHECK(into == returned);
+      values = returned;
+    }
+  }
+  const Case c = of(cube());
+  const auto scheme = load_scheme("catmull-clark");
+  RefineOptions o;
+  const Hierarchy h = refine_topology(*scheme, c.level, o);
+  std::vector<double> small(10);
+  CHECK_THROWS_WITH_AS(step_values(*scheme, h, 0, c.positions, small, 3, o),
+                       doctest::Contains("room for 10 values, but level 1 has 26 vertices of 3 channels"), Error);
 }
