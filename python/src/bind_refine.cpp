@@ -4,7 +4,6 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <optional>
-#include <tbb/global_control.h>
 
 #include "bindings.h"
 
@@ -49,22 +48,24 @@ RefineInput input_from(py::handle mesh, py::handle point_data, py::handle cell_d
   return in;
 }
 
-// The `threads` limit for the duration of a call (0: all cores), as `subdiv -j` does.
+}  // namespace
+
 std::optional<tbb::global_control> thread_limit(int threads) {
   std::optional<tbb::global_control> limit;
   if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(threads));
   return limit;
 }
 
-subdiv::Level surface_base(const RefineInput& in, const SchemeChoice& c) {
-  if (in.mesh.face_count() == 0)
-    throw subdiv::Error(fmt::format("{}: the mesh has no faces to refine{}", in.name,
-                                    in.mesh.line_count() ? "; its polylines need a curve scheme (e.g. 'chaikin')"
-                                                         : ""));
-  subdiv::Level base = subdiv::level_from_mesh(in.mesh, in.name);
+subdiv::Level surface_base(const subdiv::MeshData& mesh, const std::string& name, const SchemeChoice& c) {
+  if (mesh.face_count() == 0)
+    throw subdiv::Error(fmt::format("{}: the mesh has no faces to refine{}", name,
+                                    mesh.line_count() ? "; its polylines need a curve scheme (e.g. 'chaikin')" : ""));
+  subdiv::Level base = subdiv::level_from_mesh(mesh, name);
   subdiv::cli::check_fits_in_memory(*c.sequence.schemes.front(), base, c.sequence.total_levels);
   return base;
 }
+
+namespace {
 
 subdiv::CurveLevel curve_base(const RefineInput& in, const subdiv::CurveScheme& curve, int levels) {
   if (curve.nonlinear)
@@ -102,7 +103,7 @@ std::vector<subdiv::DataArray> cells_outside_holes(const subdiv::Level& L, std::
 std::vector<RefinedLevel> refine_surface(RefineInput& in, const SchemeChoice& c, const subdiv::RefineOptions& o,
                                          bool all_levels, std::vector<std::string>& dropped) {
   const subdiv::SchemeSequence& seq = c.sequence;
-  subdiv::Hierarchy h = subdiv::refine_topology(seq.runs, surface_base(in, c), o);
+  subdiv::Hierarchy h = subdiv::refine_topology(seq.runs, surface_base(in.mesh, in.name, c), o);
   subdiv::LevelData level{std::move(in.mesh.positions), subdiv::carried_point_arrays(in.point_data, &dropped),
                           std::move(in.cell_data)};
   subdiv::check_finite_arrays(level, in.name);
@@ -211,7 +212,7 @@ py::list stencils(py::handle mesh, py::handle scheme, py::handle params, int lev
       tables = subdiv::refine_curves(*choice.single->curve, curve_base(in, *choice.single->curve, levels), levels)
                    .stencils;
     } else {
-      subdiv::Hierarchy h = subdiv::refine(choice.sequence.runs, surface_base(in, choice), options);
+      subdiv::Hierarchy h = subdiv::refine(choice.sequence.runs, surface_base(in.mesh, in.name, choice), options);
       if (!h.linear())
         throw subdiv::Error(fmt::format("'{}' has a non-linear step (a plugin rule): no matrix can say it; use "
                                         "refine() instead", choice.label));

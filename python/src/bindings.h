@@ -8,7 +8,9 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
+#include <tbb/global_control.h>
 #include <vector>
 
 #include "library.h"
@@ -105,10 +107,19 @@ struct SchemeChoice {
 };
 SchemeChoice scheme_choice_from(py::handle scheme, int levels, py::handle params);
 
+// ---- bind_refine.cpp: what refine and the Evaluator share ----------------------------------
+
+// The `threads` limit for the duration of a call (0: all cores), as `subdiv -j` does.
+std::optional<tbb::global_control> thread_limit(int threads);
+// The base level of a surface refinement, refused as `subdiv refine` refuses it (no faces,
+// more levels than fit in memory). Call it without the GIL: it builds the level's topology.
+subdiv::Level surface_base(const subdiv::MeshData& mesh, const std::string& name, const SchemeChoice& c);
+
 // ---- bind_*.cpp ---------------------------------------------------------------------------
 void bind_schemes(py::module_& m);
 void bind_mesh_io(py::module_& m);
 void bind_refine(py::module_& m);
+void bind_evaluator(py::module_& m);
 void bind_analysis(py::module_& m);
 void bind_limits(py::module_& m);
 void bind_plugins(py::module_& m);

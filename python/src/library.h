@@ -20,6 +20,7 @@
 #include "framework/primvar/face_varying.h"
 #include "framework/primvar/level_data.h"
 #include "framework/plugin/plugin_loader.h"
+#include "framework/engine/evaluator.h"
 #include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_loader.h"

@@ -26,6 +26,7 @@ PYBIND11_MODULE(_subdivkit, m) {
   subdivkit::bind_schemes(m);
   subdivkit::bind_mesh_io(m);
   subdivkit::bind_refine(m);
+  subdivkit::bind_evaluator(m);
   subdivkit::bind_analysis(m);
   subdivkit::bind_limits(m);
   subdivkit::bind_plugins(m);

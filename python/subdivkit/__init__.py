@@ -5,6 +5,7 @@
     fine = sk.refine(cube, "catmull-clark", 3)            # a Mesh: fine.points (n, 3), fine.faces (m, 4)
     S = sk.stencils(cube, "catmull-clark", 3, composed=True)
     assert abs(S @ cube.points - fine.points).max() < 1e-12
+    ev = sk.Evaluator(cube, "catmull-clark", 3)           # topology once, then ev.evaluate(P) per frame
     print(sk.analyze("loop").subdominant)                  # lambda_1 per valence 3..12
 
     mine = sk.Scheme.from_dict({...})                       # a scheme written inline (docs/scheme-format.md)
@@ -17,7 +18,7 @@ See docs/python.md.
 from ._subdivkit import Error, Scheme, __version__, load_plugin, schemes
 from .analysis import CurveAnalysis, SurfaceAnalysis, analyze
 from .mesh import Mesh, read_mesh, write_mesh
-from .refinement import Interpolation, LimitPoints, interpolate, limit_positions, refine, stencils
+from .refinement import Evaluator, Interpolation, LimitPoints, interpolate, limit_positions, refine, stencils
 
 
 def paraview_plugin_path():
@@ -53,6 +54,6 @@ def load_paraview_plugin(ns=None):
 __all__ = [
     "Error", "Scheme", "schemes", "load_plugin", "__version__", "paraview_plugin_path", "load_paraview_plugin",
     "Mesh", "read_mesh", "write_mesh",
-    "refine", "stencils", "limit_positions", "interpolate", "LimitPoints", "Interpolation",
+    "refine", "Evaluator", "stencils", "limit_positions", "interpolate", "LimitPoints", "Interpolation",
     "analyze", "SurfaceAnalysis", "CurveAnalysis",
 ]

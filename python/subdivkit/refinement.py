@@ -86,6 +86,167 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
     return meshes if all_levels else meshes[-1]
 
 
+class Evaluator:
+    """A mesh's refinement prepared once, to evaluate for many point sets.
+
+    ``Evaluator(mesh, scheme, levels)`` refines the topology of ``mesh`` once and makes every
+    step ready (weight tables, per-vertex rules, creases and corners, the order of the
+    work); each ``evaluate(points)`` then only computes points, level after level. Use it
+    when the connectivity stays and the points move: animation frames, interactive editing,
+    fitting. ``evaluate(p)`` gives the same bits as
+    ``refine(mesh.with_points(p), scheme, levels, ...).points`` with the same arguments, for
+    any thread count, without building a matrix (``stencils`` does that).
+
+    Parameters
+    ----------
+    mesh : Mesh
+        Polygons for a surface scheme; its faces, creases and corners (with their
+        sharpness) are refined once. Its point_data, cell_data and face_varying data are not
+        carried (``evaluate`` carries any per-point array).
+    scheme : Scheme or str
+        A surface Scheme, a built-in name, a .json path, or a sequence "A:1,B:3", as in
+        refine(). Curve schemes are refused: ``stencils(..., composed=True)`` serves polylines.
+    levels : int
+        Refinement steps, 0 to 30.
+    params, boundary, crease_method, start_level
+        As in refine().
+    threads : int
+        Worker threads for the preparation and every ``evaluate``, 0 for all cores.
+
+    Raises subdivkit.Error as refine() does for bad meshes, schemes and options.
+
+    Examples
+    --------
+    >>> ev = sk.Evaluator(cube, "catmull-clark", 3)
+    >>> for frame in frames:                      # each (8, 3): the cube's points, moved
+    ...     fine = ev.evaluate(frame)             # (386, 3)
+    >>> ev.mesh(frames[0])                        # the finest level as a Mesh
+
+    ``evaluate`` takes any number of columns (positions, colours, several frames side by
+    side: the rules are linear, so each column is refined on its own) and releases the GIL,
+    so frames can be evaluated from several Python threads (the calls on one Evaluator take
+    turns; use one Evaluator per thread to run them at once).
+    """
+
+    def __init__(self, mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edges-and-corners",
+                 crease_method="uniform", threads=0, start_level=0):
+        _check_mesh(mesh, "Evaluator")
+        levels = _check_levels(levels)
+        self._prepared = _subdivkit._Evaluator(mesh, scheme, params, levels, boundary, crease_method, int(threads),
+                                               int(start_level))
+        self.name = mesh.name
+        self.scheme = scheme.name if isinstance(scheme, Scheme) else str(scheme)
+        # mesh() without points refines the points the mesh had when the evaluator was made.
+        self._base_points = mesh.points.copy()
+        # The finest level's faces and tags, read-only: mesh() hands out copies.
+        topology = self._prepared.topology()
+        for a in topology.values():
+            a.setflags(write=False)
+        self._finest = Mesh._from_arrays(topology, name=mesh.name)
+
+    @property
+    def levels(self):
+        """Refinement steps from the base mesh to the finest level."""
+        return self._prepared.levels
+
+    @property
+    def n_base_points(self):
+        """Rows ``evaluate`` takes: the base mesh's points."""
+        return self._prepared.n_base_points
+
+    @property
+    def n_points(self):
+        """Rows ``evaluate`` returns: the finest level's points."""
+        return self._prepared.n_points
+
+    @property
+    def n_faces(self):
+        """The finest level's faces (holes left out, as refine() leaves them out)."""
+        return self._finest.n_faces
+
+    @property
+    def face_indices(self):
+        """The finest level's face corners, int32 (read-only; with ``face_offsets``, CSR as in Mesh)."""
+        return self._finest.face_indices
+
+    @property
+    def face_offsets(self):
+        """The finest level's face offsets (m + 1 values, read-only)."""
+        return self._finest.face_offsets
+
+    @property
+    def face_sizes(self):
+        """Corners per finest face, (m,) int32."""
+        return self._finest.face_sizes
+
+    @property
+    def faces(self):
+        """The finest level's faces as an (m, k) read-only view when all are k-gons (as Mesh.faces)."""
+        return self._finest.faces
+
+    def face_list(self):
+        """The finest level's faces as a list of index arrays."""
+        return self._finest.face_list()
+
+    @property
+    def creases(self):
+        """The finest level's creased vertex pairs (c, 2), with ``crease_sharpness`` (decayed per level)."""
+        return self._finest.creases
+
+    @property
+    def crease_sharpness(self):
+        return self._finest.crease_sharpness
+
+    @property
+    def corners(self):
+        """The finest level's corner vertices, with ``corner_sharpness``."""
+        return self._finest.corners
+
+    @property
+    def corner_sharpness(self):
+        return self._finest.corner_sharpness
+
+    def evaluate(self, points):
+        """Values at the base mesh's points carried to the finest level's points.
+
+        ``points``: (n_base_points, c) numbers, c >= 1 (positions, or any per-point data),
+        or (n_base_points,) for one column. Returns a new float64 array of shape
+        (n_points, c), or (n_points,). Raises subdivkit.Error for other shapes and for NaN
+        or infinite values (which refinement would spread to the neighbours).
+        """
+        a = np.asarray(points)
+        what = "Evaluator.evaluate"
+        if a.dtype.kind not in "fiu":
+            raise Error(f"{what}: expected numbers, got an array of dtype {a.dtype}")
+        if a.ndim not in (1, 2) or (a.ndim == 2 and a.shape[1] == 0):
+            raise Error(f"{what}: expected shape ({self.n_base_points}, c) with c >= 1 columns, or "
+                        f"({self.n_base_points},), got {a.shape}")
+        if a.shape[0] != self.n_base_points:
+            raise Error(f"{what}: {a.shape[0]} rows for a base mesh of {self.n_base_points} points; give one row per "
+                        f"point of the mesh the Evaluator was made for")
+        values = self._prepared.evaluate(np.ascontiguousarray(a.reshape(len(a), -1), dtype=np.float64))
+        return values.reshape(-1) if a.ndim == 1 else values
+
+    def mesh(self, points=None):
+        """The finest level as a Mesh: its faces, creases and corners, with ``evaluate(points)``
+        as points (``points`` (n_base_points, 3)), or the refined points of the mesh the
+        Evaluator was made with when ``points`` is None. The same as refine()'s Mesh but for
+        point, cell and face-varying data, which it does not carry."""
+        if points is None:
+            points = self._base_points
+        shape = np.shape(points)
+        if len(shape) != 2 or shape[1] != 3:
+            raise Error(f"Evaluator.mesh: a Mesh needs points of shape ({self.n_base_points}, 3), got {shape}; "
+                        "evaluate() carries other data")
+        arrays = {key: np.array(value) for key, value in self._finest.__dict__.items() if isinstance(value, np.ndarray)}
+        arrays["points"] = self.evaluate(points)
+        return Mesh._from_arrays(arrays, name=self.name)
+
+    def __repr__(self):
+        return (f"<subdivkit.Evaluator '{self.name}': {self.levels} level(s) of {self.scheme}, "
+                f"{self.n_base_points} -> {self.n_points} points, {self.n_faces} faces>")
+
+
 def _scipy_sparse():
     try:
         import scipy.sparse
@@ -228,4 +389,4 @@ def interpolate(mesh, scheme="catmull-clark", *, select=None, tolerance=None, ma
                          tolerance=r["tolerance"], limit_description=r["limit_description"])
 
 
-__all__ = ["refine", "stencils", "limit_positions", "interpolate", "LimitPoints", "Interpolation", "Scheme"]
+__all__ = ["refine", "Evaluator", "stencils", "limit_positions", "interpolate", "LimitPoints", "Interpolation", "Scheme"]
