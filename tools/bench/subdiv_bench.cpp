@@ -473,8 +473,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   std::string geometry = "direct";
   app.add_option("--geometry", geometry,
-                 "SubdivKit: direct (each level's positions straight from the rules, step_values) or tables "
-                 "(build the stencil tables, then apply them)")
+                 "SubdivKit: direct (each level's positions straight from the rules, step_values; with --mode "
+                 "update an Evaluator made once) or tables (build the stencil tables, then apply them; with "
+                 "--mode update one table composed over the levels)")
       ->check(CLI::IsMember({"direct", "tables"}))
       ->capture_default_str();
   app.add_option("--worker", worker_side)->group("");  // internal: run one measurement
