@@ -21,6 +21,27 @@ inline Refined refine_mesh(const Mesh& mesh, const std::string& scheme, int leve
   return r;
 }
 
+// A base level and its positions, as the engine's tests of step_values and the Evaluator
+// take them (the level may carry sharpness tags the Mesh has not).
+struct LevelCase {
+  Level level;
+  std::vector<double> positions;
+};
+
+inline LevelCase level_case(const Mesh& m) { return {m.level(), m.positions}; }
+
+// A cube with a sharp edge, a semi-sharp edge and a sharp corner (features beside smooth
+// vertices, so the kernels, plans and the generic path meet).
+inline LevelCase creased_cube_case() {
+  LevelCase c = level_case(cube());
+  c.level.edge_sharpness.assign(size_t(c.level.edge_count()), 0.f);
+  c.level.edge_sharpness[0] = 10.f;
+  c.level.edge_sharpness[5] = 1.5f;
+  c.level.vertex_sharpness.assign(size_t(c.level.vertex_count), 0.f);
+  c.level.vertex_sharpness[6] = 3.f;
+  return c;
+}
+
 // Weight of source `s` in row `r` (0 when absent).
 inline double weight_of(const StencilTable& t, Index r, Index s) {
   for (Index i = t.offsets[r]; i < t.offsets[r + 1]; ++i)

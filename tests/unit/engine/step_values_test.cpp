@@ -17,34 +17,15 @@ using namespace subdiv::test;
 
 namespace {
 
-struct Case {
-  Level level;
-  std::vector<double> positions;
-};
-
-Case of(const Mesh& m) { return {m.level(), m.positions}; }
-
-// A cube with a sharp edge, a semi-sharp edge and a sharp corner (features beside smooth
-// vertices, so plans and the generic path meet).
-Case creased_cube() {
-  Case c = of(cube());
-  c.level.edge_sharpness.assign(size_t(c.level.edge_count()), 0.f);
-  c.level.edge_sharpness[0] = 10.f;
-  c.level.edge_sharpness[5] = 1.5f;
-  c.level.vertex_sharpness.assign(size_t(c.level.vertex_count), 0.f);
-  c.level.vertex_sharpness[6] = 3.f;
-  return c;
-}
-
 // Per-vertex data of `channels` values that are not just positions (and differ per channel).
-std::vector<double> data_for(const Case& c, int channels) {
+std::vector<double> data_for(const LevelCase& c, int channels) {
   std::vector<double> d(size_t(c.level.vertex_count) * channels);
   for (size_t i = 0; i < d.size(); ++i) d[i] = c.positions[i % c.positions.size()] * (1.0 + 0.1 * double(i % 7)) + 0.01 * double(i);
   return d;
 }
 
 // Level by level, through the tables and through step_values; `exact`: bit for bit.
-void check_same_values(const std::string& name, const Case& c, int levels, bool plans, int channels, bool exact) {
+void check_same_values(const std::string& name, const LevelCase& c, int levels, bool plans, int channels, bool exact) {
   CAPTURE(name);
   CAPTURE(levels);
   CAPTURE(plans);
@@ -82,31 +63,33 @@ bool exact_for(const std::string& scheme) {
 }  // namespace
 
 TEST_CASE("step_values equals the stencil tables, bit for bit where the rules use no new points and no point twice") {
-  const std::vector<Case> quads = {of(torus(6, 5)), of(cube()), of(grid(4, 3)), creased_cube(), of(torus(3, 3))};
-  const std::vector<Case> triangles = {of(torus(6, 5, true)), of(octahedron()), of(grid(4, 3, true)),
-                                       of(bipyramid(7)), of(torus(3, 3, true))};
+  const std::vector<LevelCase> quads = {level_case(torus(6, 5)), level_case(cube()), level_case(grid(4, 3)),
+                                        creased_cube_case(), level_case(torus(3, 3))};
+  const std::vector<LevelCase> triangles = {level_case(torus(6, 5, true)), level_case(octahedron()),
+                                            level_case(grid(4, 3, true)), level_case(bipyramid(7)),
+                                            level_case(torus(3, 3, true))};
   for (bool plans : {true, false})
     for (int channels : {3, 1, 2}) {
       for (const char* scheme : {"catmull-clark", "catmull-clark-shape", "bilinear", "doo-sabin", "doo-sabin-centroid", "mid-edge"})
-        for (const Case& c : quads) check_same_values(scheme, c, 2, plans, channels, exact_for(scheme));
+        for (const LevelCase& c : quads) check_same_values(scheme, c, 2, plans, channels, exact_for(scheme));
       for (const char* scheme : {"catmull-clark", "doo-sabin", "mid-edge"})
-        check_same_values(scheme, of(pyramid()), 2, plans, channels, exact_for(scheme));  // a quad among triangles
+        check_same_values(scheme, level_case(pyramid()), 2, plans, channels, exact_for(scheme));  // a quad among triangles
       for (const char* scheme : {"loop", "butterfly", "modified-butterfly", "midpoint"})
-        for (const Case& c : triangles) check_same_values(scheme, c, 2, plans, channels, exact_for(scheme));
-      for (const Case& c : triangles) check_same_values("sqrt3", c, 3, plans, channels, true);
+        for (const LevelCase& c : triangles) check_same_values(scheme, c, 2, plans, channels, exact_for(scheme));
+      for (const LevelCase& c : triangles) check_same_values("sqrt3", c, 3, plans, channels, true);
     }
-  check_same_values("catmull-clark", creased_cube(), 4, true, 3, false);  // semi-sharp decays over levels
-  check_same_values("loop", of(torus(6, 5, true)), 3, true, 3, true);
+  check_same_values("catmull-clark", creased_cube_case(), 4, true, 3, false);  // semi-sharp decays over levels
+  check_same_values("loop", level_case(torus(6, 5, true)), 3, true, 3, true);
 }
 
 TEST_CASE("step_values applies smoothing passes one after another, equal to the composed tables") {
-  const std::vector<Case> triangles = {of(torus(6, 5, true)), of(grid(4, 3, true)), of(bipyramid(7))};
-  for (const Case& c : triangles) check_same_values("loop-composite", c, 2, true, 3, false);
-  for (const Case& c : {of(torus(6, 5)), of(grid(4, 3)), creased_cube()}) check_same_values("quad-bspline", c, 2, true, 3, false);
+  const std::vector<LevelCase> triangles = {level_case(torus(6, 5, true)), level_case(grid(4, 3, true)), level_case(bipyramid(7))};
+  for (const LevelCase& c : triangles) check_same_values("loop-composite", c, 2, true, 3, false);
+  for (const LevelCase& c : {level_case(torus(6, 5)), level_case(grid(4, 3)), creased_cube_case()}) check_same_values("quad-bspline", c, 2, true, 3, false);
 }
 
 TEST_CASE("step_values gives the same bits on one thread and on two") {
-  const Case c = of(torus(300, 200));  // 60k faces: several parallel tasks per group
+  const LevelCase c = level_case(torus(300, 200));  // 60k faces: several parallel tasks per group
   const auto scheme = load_scheme("catmull-clark");
   RefineOptions o;
   o.levels = 1;
@@ -131,7 +114,7 @@ TEST_CASE("step_values refuses wrong buffers and steps with a message") {
   const auto scheme = load_scheme("catmull-clark");
   RefineOptions o;
   o.levels = 1;
-  const Case c = of(cube());
+  const LevelCase c = level_case(cube());
   const Hierarchy h = refine_topology(*scheme, c.level, o);
   CHECK_THROWS_WITH_AS(step_values(*scheme, h, 1, c.positions, 3, o), doctest::Contains("step 1 is not in 0..0"), Error);
   CHECK_THROWS_WITH_AS(step_values(*scheme, h, 0, std::vector<double>(5), 3, o),
@@ -141,9 +124,12 @@ TEST_CASE("step_values refuses wrong buffers and steps with a message") {
 TEST_CASE("step_values into the caller's memory: every value written, the same bits as the returned vector") {
   // quad-bspline has two smoothing passes after its split (they alternate between the
   // output and one scratch level), loop-composite one, catmull-clark none.
-  const std::vector<std::pair<const char*, Case>> cases = {
-      {"catmull-clark", creased_cube()}, {"quad-bspline", of(grid(4, 3))}, {"loop-composite", of(bipyramid(7))}};
-  for (const auto& [name, c] : cases) {
+  const std::vector<std::pair<const char*, LevelCase>> cases = {
+      {"catmull-clark", creased_cube_case()}, {"quad-bspline", level_case(grid(4, 3))}, {"loop-composite", level_case(bipyramid(7))}};
+  for (const auto& named_case : cases) {
+    // Not a structured binding: clang 14 cannot capture one in CAPTURE's lambda.
+    const char* name = named_case.first;
+    const LevelCase& c = named_case.second;
     CAPTURE(name);
     const auto scheme = load_scheme(name);
     RefineOptions o;
@@ -158,7 +144,7 @@ TEST_CASE("step_values into the caller's memory: every value written, the same b
       values = returned;
     }
   }
-  const Case c = of(cube());
+  const LevelCase c = level_case(cube());
   const auto scheme = load_scheme("catmull-clark");
   RefineOptions o;
   const Hierarchy h = refine_topology(*scheme, c.level, o);
