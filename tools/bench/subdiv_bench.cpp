@@ -77,6 +77,7 @@ struct RunResult {
   bool ok = false;
   std::string error;
   WorkerReport report;
+  std::vector<double> round_warm_ms;  // each round's best warm wall ms (total; update: one re-evaluation)
 };
 
 // Runs `job` in a fresh process: this executable with the hidden worker options.
@@ -100,6 +101,32 @@ RunResult run_worker(const Job& job) {
                                     result.report);
   result.ok = result.error.empty();
   return result;
+}
+
+// One more round of a side's worker folded into `best` (the first round's result): the
+// faster warm and the faster cold repetition are kept apart, by wall-clock total (update:
+// one re-evaluation); peak, digest, counts and check records stay the first round's, and
+// every round must give its digest.
+void fold_round(RunResult& best, RunResult next, bool update) {
+  const auto measure = [update](const Timings& t) { return update ? t.apply.wall_ms : t.total().wall_ms; };
+  if (best.round_warm_ms.empty()) {
+    best = std::move(next);
+    best.round_warm_ms = {measure(best.report.warm)};
+    return;
+  }
+  if (!best.ok) return;
+  if (!next.ok) {
+    best.ok = false, best.error = next.error;
+    return;
+  }
+  if (next.report.digest != best.report.digest) {
+    best.ok = false, best.error = "round " + std::to_string(best.round_warm_ms.size() + 1) + " gave other positions";
+    return;
+  }
+  best.report.warm_digest_same &= next.report.warm_digest_same;
+  best.round_warm_ms.push_back(measure(next.report.warm));
+  if (measure(next.report.warm) < measure(best.report.warm)) best.report.warm = next.report.warm;
+  if (measure(next.report.cold) < measure(best.report.cold)) best.report.cold = next.report.cold;
 }
 
 struct CheckResult {
@@ -197,6 +224,13 @@ std::string fmt_ms(double ms) {
   return buf;
 }
 
+// "a/b/c": each round's best warm wall ms.
+std::string round_list(const RunResult& r) {
+  std::string out;
+  for (double ms : r.round_warm_ms) out += (out.empty() ? "" : "/") + fmt_ms(ms);
+  return out;
+}
+
 class Progress {
 public:
   explicit Progress(int total) : total_(total), tty_(::isatty(2) != 0) {}
@@ -256,7 +290,7 @@ std::string timing_fields(const RunResult& ours, const RunResult& theirs, bool w
 
 int parent_main(const std::vector<std::string>& schemes, const std::vector<std::string>& meshes,
                 const std::vector<int>& levels, Job base, const std::string& sides, bool check,
-                std::int64_t max_refined, const std::vector<bool>& osd_topologies) {
+                std::int64_t max_refined, const std::vector<bool>& osd_topologies, int rounds) {
   const bool want_subdivkit = sides == "both" || sides == "subdivkit";
   bool want_osd = sides == "both" || sides == "osd";
 #ifndef SUBDIV_BENCH_HAVE_OPENSUBDIV
@@ -277,10 +311,10 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
 
   double load[3] = {0, 0, 0};
   if (::getloadavg(load, 3) < 0) load[0] = -1;
-  std::printf("# subdiv-bench: cpu=\"%s\" hardware_threads=%u threads=%d warm_repeat=%d opensubdiv=%s "
+  std::printf("# subdiv-bench: cpu=\"%s\" hardware_threads=%u threads=%d warm_repeat=%d rounds=%d opensubdiv=%s "
               "loadavg=%.2f %.2f %.2f\n",
-              cpu_name().c_str(), std::thread::hardware_concurrency(), base.threads, base.repeat, osd_version,
-              load[0], load[1], load[2]);
+              cpu_name().c_str(), std::thread::hardware_concurrency(), base.threads, base.repeat, rounds,
+              osd_version, load[0], load[1], load[2]);
   std::fflush(stdout);
 
   struct Case {
@@ -298,7 +332,7 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
   }
 
   const int osd_variants = int(osd_topologies.size());
-  const int steps = int(cases.size()) * osd_variants * (int(want_subdivkit) + int(want_osd));
+  const int steps = int(cases.size()) * osd_variants * (int(want_subdivkit) + int(want_osd)) * rounds;
   Progress progress(steps);
   int step = 0, failures = 0;
   for (const auto& c : cases) {
@@ -309,21 +343,26 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
     job.faces = base_faces_for(base.faces, c.level, max_refined);
     if (!check) job.check_max = -1;  // the workers send no positions back
     const std::string what = c.scheme + " " + c.mesh + " level " + std::to_string(c.level);
-    // One run per topology variant on each side: the last level's faces only as
-    // OpenSubdiv's default, and full topology (--osd-topology full or both) on both sides.
-    std::vector<RunResult> ours, theirs;
-    for (bool full : osd_topologies) {
-      const std::string variant = full ? " (full topology)" : "";
-      job.osd_full_topology = full;
-      if (want_subdivkit) {
-        progress.show(++step, what + ": SubdivKit" + variant);
-        job.side = "subdivkit";
-        ours.push_back(run_worker(job));
-      }
-      if (want_osd) {
-        progress.show(++step, what + ": OpenSubdiv" + variant);
-        job.side = "osd";
-        theirs.push_back(run_worker(job));
+    // Per topology variant (the last level's faces only as OpenSubdiv's default, and full
+    // topology with --osd-topology full or both, on both sides), --rounds runs of each side,
+    // alternating, so that both see the same moments of a noisy machine.
+    std::vector<RunResult> ours(want_subdivkit ? osd_topologies.size() : 0);
+    std::vector<RunResult> theirs(want_osd ? osd_topologies.size() : 0);
+    for (size_t v = 0; v < osd_topologies.size(); ++v) {
+      const std::string variant = osd_topologies[v] ? " (full topology)" : "";
+      job.osd_full_topology = osd_topologies[v];
+      for (int round = 1; round <= rounds; ++round) {
+        const std::string which = rounds > 1 ? ", round " + std::to_string(round) : "";
+        if (want_subdivkit) {
+          progress.show(++step, what + ": SubdivKit" + variant + which);
+          job.side = "subdivkit";
+          fold_round(ours[v], run_worker(job), job.update);
+        }
+        if (want_osd) {
+          progress.show(++step, what + ": OpenSubdiv" + variant + which);
+          job.side = "osd";
+          fold_round(theirs[v], run_worker(job), job.update);
+        }
       }
     }
     progress.clear();
@@ -347,6 +386,10 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
     for (const auto& t : theirs) any = any ? any : (t.ok ? &t : nullptr);
     if (any) field("refined_faces", std::to_string(any->report.faces));
     field("threads", std::to_string(base.threads));
+    if (rounds > 1) {
+      if (first.ok) field("subdivkit_round_ms", round_list(first));
+      if (!theirs.empty() && theirs[0].ok) field("osd_round_ms", round_list(theirs[0]));
+    }
     for (size_t v = 0; v < ours.size(); ++v)
       field(osd_topologies[v] ? "subdivkit_full_peak_mb" : "subdivkit_peak_mb", ours[v].ok ? fmt_ms(ours[v].report.peak_mb) : "n/a");
     for (size_t v = 0; v < theirs.size(); ++v)
@@ -413,6 +456,7 @@ int main(int argc, char** argv) {
   std::string worker_side;
   int worker_fd = -1;
   std::int64_t max_refined = 16'000'000;
+  int rounds = 1;
 
   app.add_option("--faces", job.faces, "approximate face count of the generated base mesh")
       ->capture_default_str()
@@ -436,6 +480,12 @@ int main(int argc, char** argv) {
                  "best is reported (see docs/benchmarks.md, \"Cold and warm\")")
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
+  app.add_option("--rounds", rounds,
+                 "runs of each side's worker process, alternating SubdivKit and OpenSubdiv, so both meet "
+                 "the same moments of a noisy machine; the best warm and the best cold of all rounds are "
+                 "reported, and each round's warm time as subdivkit_round_ms / osd_round_ms")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 20));
   app.add_option("--side", sides, "both, subdivkit or osd")
       ->capture_default_str()
       ->check(CLI::IsMember({"both", "subdivkit", "osd"}));
@@ -467,7 +517,7 @@ int main(int argc, char** argv) {
   app.add_option("--mode", mode,
                  "refine: topology and positions every repetition; update: repeated evaluation (animation, "
                  "editing): topology (and tables) once, then each repetition re-evaluates the positions only, "
-                 "SubdivKit's step_values (or one composed table with --geometry tables) against OpenSubdiv's "
+                 "SubdivKit's Evaluator (or one composed table with --geometry tables) against OpenSubdiv's "
                  "StencilTableFactory + UpdateValues; update_ms is one re-evaluation")
       ->check(CLI::IsMember({"refine", "update"}))
       ->capture_default_str();
@@ -508,7 +558,7 @@ int main(int argc, char** argv) {
                                              : osd_topology == "full" ? std::vector<bool>{true}
                                                                       : std::vector<bool>{false};
     return parent_main(schemes, meshes, parse_levels(levels_text), job, sides, check_mode != "off",
-                       max_refined, osd_topologies);
+                       max_refined, osd_topologies, rounds);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "subdiv-bench: %s\n", e.what());
     return 2;
