@@ -50,7 +50,7 @@ struct Evaluator::Prepared {
     pass->inputs = prepare_step(scheme, rules, parent, level, options, parameters, /*lazy_features=*/true);
     pass->context = std::make_unique<StepContext>(
         step_context(scheme, rules, pass->inputs, parent, origins, features_refined, level, options));
-    pass->rows = std::make_unique<StepEvaluator>(*pass->context);
+    pass->rows = std::make_unique<StepEvaluator>(*pass->context, /*repeated=*/true);
     passes.push_back(std::move(pass));
   }
 

@@ -6,6 +6,7 @@
 #include "framework/rules/kernel_contexts.h"
 #include "framework/rules/point_accumulator.h"
 #include "framework/rules/weight_tables.h"
+#include "framework/util/parallel_ranges.h"
 
 namespace subdiv {
 namespace {
@@ -36,6 +37,12 @@ double weight_of(const std::vector<TermShape>& terms, Points points, int n, int 
   for (const TermShape& t : terms)
     if (t.points == points) w += t.weights->weight(n, k, 0);
   return w;
+}
+
+// The corner of triangle f that is not a or b (face_vertices of a triangle: 3 in a row).
+Index third_corner(const Level& L, Index f, Index a, Index b) {
+  const Index* c = L.face_vertices.data() + L.face_offsets[f];
+  return c[0] != a && c[0] != b ? c[0] : c[1] != a && c[1] != b ? c[1] : c[2];
 }
 
 // The largest face size a face's or corner's weights can be read at: they are read at
@@ -135,11 +142,15 @@ bool FlatKernels::covers(Element kind) const { return covers_[int(kind)]; }
 Index FlatKernels::run(Element kind, Index begin, Index end, const StepSources& in, double* dst,
                        std::vector<Index>& left, FirstBadRow& bad) const {
   const bool three = in.channels == 3;
+  // One loop per channel count (3, or any) and neighbourhoods (resolved or walked).
+  const bool resolved = resolved_ != nullptr;
   switch (kind) {
     case Element::Vertex:
-      return three ? run_vertices<3>(begin, end, in, dst, left, bad) : run_vertices<0>(begin, end, in, dst, left, bad);
+      if (resolved) return three ? run_vertices<3, true>(begin, end, in, dst, left, bad) : run_vertices<0, true>(begin, end, in, dst, left, bad);
+      return three ? run_vertices<3, false>(begin, end, in, dst, left, bad) : run_vertices<0, false>(begin, end, in, dst, left, bad);
     case Element::Edge:
-      return three ? run_edges<3>(begin, end, in, dst, left, bad) : run_edges<0>(begin, end, in, dst, left, bad);
+      if (resolved) return three ? run_edges<3, true>(begin, end, in, dst, left, bad) : run_edges<0, true>(begin, end, in, dst, left, bad);
+      return three ? run_edges<3, false>(begin, end, in, dst, left, bad) : run_edges<0, false>(begin, end, in, dst, left, bad);
     case Element::Face:
       return three ? run_faces<3>(begin, end, in, dst, left, bad) : run_faces<0>(begin, end, in, dst, left, bad);
     case Element::Corner:
@@ -148,23 +159,72 @@ Index FlatKernels::run(Element kind, Index begin, Index end, const StepSources& 
   return 0;
 }
 
-// Row r is vertex r; the smooth interior ones (the smooth kernels' vertex_point conditions).
-template <int C>
+bool FlatKernels::takes_vertex(Index v, Index n) const {
+  const Level& L = step_.parent;
+  return !L.vertex_on_boundary[v] && (L.manifold() || !L.non_manifold_vertex(v)) && n < Index(vertex_.self.size()) &&
+         smooth_vertex(step_.features, untagged_, v, n) && L.incident_face_count(v) == n;
+}
+
+// Edges between two faces, and between two triangles when the rule reads the opposite
+// vertices.
+bool FlatKernels::takes_edge(Index e) const {
+  const Level& L = step_.parent;
+  const Index f0 = L.edge_faces[2 * e], f1 = L.edge_faces[2 * e + 1];
+  return f1 != kNone && (L.manifold() || !L.non_manifold_edge(e)) && smooth_edge(step_.features, untagged_, e) &&
+         (!edge_.uses_opposite || (L.face_size(f0) == 3 && L.face_size(f1) == 3));
+}
+
+void FlatKernels::resolve_neighbourhoods() {
+  const Level& L = step_.parent;
+  auto r = std::make_unique<Resolved>();
+  if (covers_[int(Element::Vertex)]) {
+    r->vertex_taken.resize(size_t(L.vertex_count));
+    if (vertex_.uses_ring) r->ring_ends.resize(L.vertex_edges.size());
+    parallel_ranges(L.vertex_count, Index(4096), [&](Index begin, Index end) {
+      for (Index v = begin; v < end; ++v) {
+        const Index ring_begin = L.vertex_ring_offsets[v], n = L.vertex_ring_offsets[v + 1] - ring_begin;
+        r->vertex_taken[v] = takes_vertex(v, n);
+        if (r->vertex_taken[v] && vertex_.uses_ring)
+          for (Index j = ring_begin; j < ring_begin + n; ++j) r->ring_ends[j] = L.other_end(L.vertex_edges[j], v);
+      }
+    });
+  }
+  if (covers_[int(Element::Edge)]) {
+    const int stride = r->edge_stride = edge_.uses_opposite ? 4 : 2;
+    r->edge_gathers.resize(size_t(L.edge_count()) * stride);
+    parallel_ranges(L.edge_count(), Index(4096), [&](Index begin, Index end) {
+      for (Index e = begin; e < end; ++e) {
+        Index* gathers = r->edge_gathers.data() + size_t(e) * stride;
+        if (!takes_edge(e)) {
+          gathers[0] = kNone;
+          continue;
+        }
+        const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
+        gathers[0] = a, gathers[1] = b;
+        if (stride == 4)
+          gathers[2] = third_corner(L, L.edge_faces[2 * e], a, b),
+          gathers[3] = third_corner(L, L.edge_faces[2 * e + 1], a, b);
+      }
+    });
+  }
+  resolved_ = std::move(r);
+}
+
+// Row r is vertex r; the smooth interior ones.
+template <int C, bool IsResolved>
 Index FlatKernels::run_vertices(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
                                 FirstBadRow& bad) const {
   const Level& L = step_.parent;
   const PerSize& w = vertex_;
-  const int max_n = int(w.self.size()) - 1;
   const Index first = first_child_[int(Element::Vertex)];
   const double* face_points = w.uses_face_points ? in.child(first_child_[int(Element::Face)]) : nullptr;
   const double* edge_points = w.uses_edge_points ? in.child(first_child_[int(Element::Edge)]) : nullptr;
   const int channels = in.channels;
-  const bool manifold = L.manifold();
   Index done = 0;
   for (Index v = begin; v < end; ++v) {
     const Index ring_begin = L.vertex_ring_offsets[v], n = L.vertex_ring_offsets[v + 1] - ring_begin;
-    if (L.vertex_on_boundary[v] || (!manifold && L.non_manifold_vertex(v)) || n > max_n ||
-        !smooth_vertex(step_.features, untagged_, v, n) || L.incident_face_count(v) != n) {
+    const bool taken = IsResolved ? resolved_->vertex_taken[v] != 0 : takes_vertex(v, n);
+    if (!taken) {
       left.push_back(v);
       continue;
     }
@@ -173,7 +233,12 @@ Index FlatKernels::run_vertices(Index begin, Index end, const StepSources& in, d
     acc.add(in.vertex(v), w.self[n]);
     if (w.uses_ring) {
       const double w_ring = w.ring[n];
-      for (Index j = 0; j < n; ++j) acc.add(in.vertex(L.other_end(ring[j], v)), w_ring);
+      if constexpr (IsResolved) {
+        const Index* far_ends = resolved_->ring_ends.data() + ring_begin;
+        for (Index j = 0; j < n; ++j) acc.add(in.vertex(far_ends[j]), w_ring);
+      } else {
+        for (Index j = 0; j < n; ++j) acc.add(in.vertex(L.other_end(ring[j], v)), w_ring);
+      }
     }
     if (face_points) {
       const Index* faces = L.vertex_faces.data() + L.vertex_face_offsets[v];
@@ -191,9 +256,8 @@ Index FlatKernels::run_vertices(Index begin, Index end, const StepSources& in, d
   return done;
 }
 
-// Row r is edge r; the interior smooth ones, and for the opposite vertices only edges
-// between two triangles.
-template <int C>
+// Row r is edge r; the interior smooth ones (takes_edge).
+template <int C, bool IsResolved>
 Index FlatKernels::run_edges(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
                              FirstBadRow& bad) const {
   const Level& L = step_.parent;
@@ -201,28 +265,25 @@ Index FlatKernels::run_edges(Index begin, Index end, const StepSources& in, doub
   const Index first = first_child_[int(Element::Edge)];
   const double* face_points = w.uses_face_points ? in.child(first_child_[int(Element::Face)]) : nullptr;
   const int channels = in.channels;
-  const bool manifold = L.manifold();
-  // The corner of triangle f that is not a or b (face_vertices of a triangle: 3 in a row).
-  auto third = [&](Index f, Index a, Index b) {
-    const Index* c = L.face_vertices.data() + L.face_offsets[f];
-    return c[0] != a && c[0] != b ? c[0] : c[1] != a && c[1] != b ? c[1] : c[2];
-  };
   Index done = 0;
   for (Index e = begin; e < end; ++e) {
-    const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
-    const Index f0 = L.edge_faces[2 * e], f1 = L.edge_faces[2 * e + 1];
-    if (f1 == kNone || (!manifold && L.non_manifold_edge(e)) ||
-        !smooth_edge(step_.features, untagged_, e) ||
-        (w.uses_opposite && (L.face_size(f0) != 3 || L.face_size(f1) != 3))) {
+    const Index* gathers = IsResolved ? resolved_->edge_gathers.data() + size_t(e) * resolved_->edge_stride : nullptr;
+    if (IsResolved ? gathers[0] == kNone : !takes_edge(e)) {
       left.push_back(e);
       continue;
     }
+    const Index a = IsResolved ? gathers[0] : L.edge_vertices[2 * e];
+    const Index b = IsResolved ? gathers[1] : L.edge_vertices[2 * e + 1];
+    const Index f0 = L.edge_faces[2 * e], f1 = L.edge_faces[2 * e + 1];
     PointAccumulator<C> acc(dst + size_t(first + e) * channels, channels);
     acc.add(in.vertex(a), w.ends), acc.add(in.vertex(b), w.ends);
     if (face_points)
       acc.add(face_points + size_t(f0) * channels, w.face_points), acc.add(face_points + size_t(f1) * channels, w.face_points);
-    if (w.uses_opposite)
-      acc.add(in.vertex(third(f0, a, b)), w.opposite), acc.add(in.vertex(third(f1, a, b)), w.opposite);
+    if (w.uses_opposite) {
+      const Index c = IsResolved ? gathers[2] : third_corner(L, f0, a, b);
+      const Index d = IsResolved ? gathers[3] : third_corner(L, f1, a, b);
+      acc.add(in.vertex(c), w.opposite), acc.add(in.vertex(d), w.opposite);
+    }
     acc.store();
     ++done;
     if (!w.sum_ok) bad.mark(e);

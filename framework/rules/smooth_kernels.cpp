@@ -159,10 +159,12 @@ SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGro
     }
   }
   for (Term& t : kernels_[int(Element::Edge)]) tabulate_zero_weights(t, step.tables.max_n);
-  flat_ = std::make_unique<const FlatKernels>(step, groups, shapes);
+  flat_ = std::make_unique<FlatKernels>(step, groups, shapes);
 }
 
 SmoothKernels::~SmoothKernels() = default;
+
+void SmoothKernels::resolve_neighbourhoods() { flat_->resolve_neighbourhoods(); }
 
 template <class Accumulator, class Weight>
 bool SmoothKernels::add_new_points(Accumulator& acc, double& sum, Element kind, std::span<const Index> elements,

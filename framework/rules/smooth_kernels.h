@@ -48,6 +48,10 @@ public:
   Index run(Element kind, const ChildGroup& group, Index begin, Index end, const StepSources& in, double* dst,
             std::vector<Index>& left, FirstBadRow& bad, Index& flat) const;
 
+  // For repeated evaluation: the flat kernels' neighbourhoods read off the topology once
+  // (FlatKernels::resolve_neighbourhoods); the values stay the same bits.
+  void resolve_neighbourhoods();
+
   // How a term gathers its points.
   enum class Gather : std::uint8_t {
     Self,        // vertex: v
@@ -114,7 +118,7 @@ private:
   bool edge_reads_shape_ = false;  // an edge term reads k, n0, n1, k0, k1 or needs triangles or rings
   // The parent level has no sharpness tags: its interior vertices and edges are smooth.
   const bool untagged_;
-  std::unique_ptr<const FlatKernels> flat_;
+  std::unique_ptr<FlatKernels> flat_;
 };
 
 }  // namespace subdiv

@@ -103,10 +103,13 @@ struct [[gnu::visibility("hidden")]] StepEvaluator::Prepared {
   const std::vector<ChildGroup> groups;
   const std::vector<Element> order;
   RowPlanStore plans;
-  const SmoothKernels kernels;
+  SmoothKernels kernels;
 };
 
-StepEvaluator::StepEvaluator(const StepContext& step) : step_(step), prepared_(std::make_unique<Prepared>(step)) {}
+StepEvaluator::StepEvaluator(const StepContext& step, bool repeated)
+    : step_(step), prepared_(std::make_unique<Prepared>(step)) {
+  if (repeated && step.use_kernels) prepared_->kernels.resolve_neighbourhoods();
+}
 
 StepEvaluator::~StepEvaluator() = default;
 

@@ -30,10 +30,11 @@ struct LevelCase {
 
 inline LevelCase level_case(const Mesh& m) { return {m.level(), m.positions}; }
 
-// A cube with a sharp edge, a semi-sharp edge and a sharp corner (features beside smooth
-// vertices, so the kernels, plans and the generic path meet).
-inline LevelCase creased_cube_case() {
-  LevelCase c = level_case(cube());
+// `m` with a sharp edge, a semi-sharp edge and a sharp corner (features beside smooth
+// vertices, so the kernels, plans and the generic path meet; a tagged level, whose feature
+// contexts are classified before any row).
+inline LevelCase creased_case(const Mesh& m) {
+  LevelCase c = level_case(m);
   c.level.edge_sharpness.assign(size_t(c.level.edge_count()), 0.f);
   c.level.edge_sharpness[0] = 10.f;
   c.level.edge_sharpness[5] = 1.5f;
@@ -41,6 +42,8 @@ inline LevelCase creased_cube_case() {
   c.level.vertex_sharpness[6] = 3.f;
   return c;
 }
+
+inline LevelCase creased_cube_case() { return creased_case(cube()); }
 
 // Weight of source `s` in row `r` (0 when absent).
 inline double weight_of(const StencilTable& t, Index r, Index s) {

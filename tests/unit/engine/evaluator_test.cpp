@@ -1,6 +1,7 @@
 // Repeated evaluation (framework/engine/evaluator.h): an Evaluator made once carries any
 // number of value sets through the levels. Each evaluation must be what step_values gives
-// level by level (the same bits: the same kernels, plans and rules, made ready once), also
+// level by level (the same bits: the same kernels, plans and rules, made ready once, the
+// flat kernels' neighbourhoods read off the topology once instead of walked each time), also
 // on a second and third evaluation with other values (plans learnt by the first serve the
 // next); the rules are affine, so moving the base values by any affine map moves the
 // result by the same map; the same bits for any thread count; sequences of schemes,
@@ -64,7 +65,8 @@ TEST_CASE("each evaluation equals step_values level by level, bit for bit, for e
   const std::vector<LevelCase> quads = {level_case(torus(6, 5)), level_case(grid(4, 3)), creased_cube_case(),
                                         level_case(torus(3, 3))};
   const std::vector<LevelCase> triangles = {level_case(torus(6, 5, true)), level_case(grid(4, 3, true)),
-                                            level_case(bipyramid(7)), level_case(octahedron())};
+                                            level_case(bipyramid(7)), level_case(octahedron()),
+                                            creased_case(torus(6, 5, true))};
   for (const char* name : {"catmull-clark", "catmull-clark-shape", "bilinear", "doo-sabin", "doo-sabin-centroid",
                            "mid-edge", "quad-bspline"})
     check_scheme(name, quads, 2);
@@ -72,6 +74,34 @@ TEST_CASE("each evaluation equals step_values level by level, bit for bit, for e
     check_scheme(name, triangles, 2);
   check_scheme("sqrt3", triangles, 3);  // boundaries trisected every second step
   check_scheme("catmull-clark", {level_case(pyramid())}, 3);  // a quad among triangles
+}
+
+TEST_CASE("an evaluator computes each point by the path step_values takes (flat kernels, kernels, plans, rules)") {
+  // Its flat kernels read neighbourhoods resolved once; they must take the same elements as
+  // the kernels that walk the topology, and leave the same ones (features, boundaries) to
+  // the slower paths.
+  for (const char* name : {"loop", "catmull-clark"}) {
+    CAPTURE(name);
+    const auto scheme = load_scheme(name);
+    const bool triangles = std::string(name) == "loop";
+    for (const LevelCase& c : {creased_case(torus(8, 6, triangles)), level_case(grid(5, 4, triangles))}) {
+      RowPaths walked, resolved;
+      RefineOptions o;
+      o.levels = 2;
+      const Hierarchy h = refine_topology(*scheme, c.level, o);
+      o.row_paths = &walked;
+      const SchemeRun run{scheme.get(), 2};
+      stepped(std::span(&run, 1), h, c.positions, 3, o);
+      o.row_paths = &resolved;
+      Evaluator(*scheme, h, o).evaluate(c.positions, 3);
+      CHECK(resolved.flat.load() == walked.flat.load());
+      CHECK(resolved.kernel.load() == walked.kernel.load());
+      CHECK(resolved.plan.load() == walked.plan.load());
+      CHECK(resolved.generic.load() == walked.generic.load());
+      CHECK(walked.flat.load() > 0);
+      CHECK(walked.plan.load() + walked.generic.load() + walked.kernel.load() > walked.flat.load());
+    }
+  }
 }
 
 TEST_CASE("a sequence of schemes and per-vertex parameters evaluate as step_values takes them") {
