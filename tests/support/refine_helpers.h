@@ -1,5 +1,8 @@
 #pragma once
 // One-call refinement for tests.
+#include <doctest/doctest.h>
+#include <utility>
+
 #include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
@@ -44,6 +47,21 @@ inline LevelCase creased_case(const Mesh& m) {
 }
 
 inline LevelCase creased_cube_case() { return creased_case(cube()); }
+
+// For each (scheme name, case): the scheme loaded and the case's level refined `levels`
+// deep, handed to body(scheme, case, hierarchy, options) with the name captured.
+template <class Body>
+void for_each_refined_case(const std::vector<std::pair<const char*, LevelCase>>& cases, int levels, Body body) {
+  for (const auto& named_case : cases) {
+    const char* name = named_case.first;  // not a structured binding: clang 14 cannot capture one in CAPTURE
+    CAPTURE(name);
+    const auto scheme = load_scheme(name);
+    RefineOptions o;
+    o.levels = levels;
+    const Hierarchy h = refine_topology(*scheme, named_case.second.level, o);
+    body(*scheme, named_case.second, h, o);
+  }
+}
 
 // Weight of source `s` in row `r` (0 when absent).
 inline double weight_of(const StencilTable& t, Index r, Index s) {

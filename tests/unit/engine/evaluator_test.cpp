@@ -127,23 +127,15 @@ TEST_CASE("the rules are affine: an affine map of the base values maps the evalu
   const std::vector<std::pair<const char*, LevelCase>> cases = {
       {"catmull-clark", creased_cube_case()}, {"loop", level_case(grid(4, 3, true))}, {"doo-sabin", level_case(grid(4, 3))},
       {"sqrt3", level_case(torus(6, 5, true))}, {"modified-butterfly", level_case(bipyramid(7))}};
-  for (const auto& named_case : cases) {
-    // Not a structured binding: clang 14 cannot capture one in CAPTURE's lambda.
-    const char* name = named_case.first;
-    const LevelCase& c = named_case.second;
-    CAPTURE(name);
-    const auto scheme = load_scheme(name);
-    RefineOptions o;
-    o.levels = 2;
-    const Hierarchy h = refine_topology(*scheme, c.level, o);
-    Evaluator evaluator(*scheme, h, o);
+  for_each_refined_case(cases, 2, [&](const Scheme& scheme, const LevelCase& c, const Hierarchy& h, const RefineOptions& o) {
+    Evaluator evaluator(scheme, h, o);
     const std::vector<double> moved_first = evaluator.evaluate(mapped(c.positions), 3);
     const std::vector<double> moved_after = mapped(evaluator.evaluate(c.positions, 3));
     REQUIRE(moved_first.size() == moved_after.size());
     double worst = 0.0;
     for (size_t i = 0; i < moved_first.size(); ++i) worst = std::max(worst, std::abs(moved_first[i] - moved_after[i]));
     CHECK(worst < 1e-12);
-  }
+  });
 }
 
 TEST_CASE("an evaluator gives the same bits on one thread and on two") {

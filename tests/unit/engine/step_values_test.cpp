@@ -126,24 +126,16 @@ TEST_CASE("step_values into the caller's memory: every value written, the same b
   // output and one scratch level), loop-composite one, catmull-clark none.
   const std::vector<std::pair<const char*, LevelCase>> cases = {
       {"catmull-clark", creased_cube_case()}, {"quad-bspline", level_case(grid(4, 3))}, {"loop-composite", level_case(bipyramid(7))}};
-  for (const auto& named_case : cases) {
-    // Not a structured binding: clang 14 cannot capture one in CAPTURE's lambda.
-    const char* name = named_case.first;
-    const LevelCase& c = named_case.second;
-    CAPTURE(name);
-    const auto scheme = load_scheme(name);
-    RefineOptions o;
-    o.levels = 2;
-    const Hierarchy h = refine_topology(*scheme, c.level, o);
+  for_each_refined_case(cases, 2, [&](const Scheme& scheme, const LevelCase& c, const Hierarchy& h, const RefineOptions& o) {
     std::vector<double> values = c.positions;
     for (int l = 0; l < 2; ++l) {
-      const std::vector<double> returned = step_values(*scheme, h, l, values, 3, o);
+      const std::vector<double> returned = step_values(scheme, h, l, values, 3, o);
       std::vector<double> into(returned.size(), std::numeric_limits<double>::quiet_NaN());  // a value left unwritten shows
-      step_values(*scheme, h, l, values, into, 3, o);
+      step_values(scheme, h, l, values, into, 3, o);
       CHECK(into == returned);
       values = returned;
     }
-  }
+  });
   const LevelCase c = level_case(cube());
   const auto scheme = load_scheme("catmull-clark");
   RefineOptions o;
