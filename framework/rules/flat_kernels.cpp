@@ -274,14 +274,15 @@ Index FlatKernels::run_edges(Index begin, Index end, const StepSources& in, doub
     }
     const Index a = IsResolved ? gathers[0] : L.edge_vertices[2 * e];
     const Index b = IsResolved ? gathers[1] : L.edge_vertices[2 * e + 1];
-    const Index f0 = L.edge_faces[2 * e], f1 = L.edge_faces[2 * e + 1];
+    const Index* faces = L.edge_faces.data() + 2 * size_t(e);  // read only for face points or a walk
     PointAccumulator<C> acc(dst + size_t(first + e) * channels, channels);
     acc.add(in.vertex(a), w.ends), acc.add(in.vertex(b), w.ends);
     if (face_points)
-      acc.add(face_points + size_t(f0) * channels, w.face_points), acc.add(face_points + size_t(f1) * channels, w.face_points);
+      acc.add(face_points + size_t(faces[0]) * channels, w.face_points),
+          acc.add(face_points + size_t(faces[1]) * channels, w.face_points);
     if (w.uses_opposite) {
-      const Index c = IsResolved ? gathers[2] : third_corner(L, f0, a, b);
-      const Index d = IsResolved ? gathers[3] : third_corner(L, f1, a, b);
+      const Index c = IsResolved ? gathers[2] : third_corner(L, faces[0], a, b);
+      const Index d = IsResolved ? gathers[3] : third_corner(L, faces[1], a, b);
       acc.add(in.vertex(c), w.opposite), acc.add(in.vertex(d), w.opposite);
     }
     acc.store();

@@ -34,6 +34,7 @@
 #include "framework/rules/element_rules.h"
 #include "framework/rules/step_rows.h"
 #include "framework/rules/step_sources.h"
+#include "framework/util/scratch_vector.h"
 
 namespace subdiv {
 
@@ -93,11 +94,12 @@ private:
   // What resolve_neighbourhoods keeps. edge_gathers: per edge, `edge_stride` points (its
   // ends, then its opposite vertices when the rule reads them), or kNone first when the
   // loop leaves the edge; ring_ends: the far end of each vertex_edges entry; vertex_taken:
-  // whether the loop takes the vertex.
+  // whether the loop takes the vertex. Not zero-filled: resolve_neighbourhoods' parallel
+  // passes write every entry a run reads.
   struct Resolved {
     int edge_stride = 2;
-    std::vector<Index> edge_gathers, ring_ends;
-    std::vector<std::uint8_t> vertex_taken;
+    ScratchVector<Index> edge_gathers, ring_ends;
+    ScratchVector<std::uint8_t> vertex_taken;
   };
 
   // Whether the loops take vertex v (of valence n) and edge e: smooth interior elements the
