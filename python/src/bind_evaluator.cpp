@@ -46,7 +46,7 @@ public:
   // several Python threads take turns (the GIL is released first: waiting for a turn must
   // not hold it).
   std::vector<double> evaluate(std::span<const double> base, int channels) {
-    const auto limit = thread_limit(threads_);
+    const subdiv::ThreadLimit limit(threads_);
     const std::lock_guard<std::mutex> turn(busy_);
     return evaluator_.evaluate(base, channels);
   }
@@ -83,7 +83,7 @@ std::unique_ptr<PreparedRefinement> make_evaluator(py::handle mesh, py::handle s
                                     "polylines, stencils(mesh, '{}', {}, composed=True) gives the matrix to reuse",
                                     choice.label, choice.label, levels));
   py::gil_scoped_release unlocked;
-  const auto limit = thread_limit(threads);
+  const subdiv::ThreadLimit limit(threads);
   return std::make_unique<PreparedRefinement>(std::move(choice), base, name, options);
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
-#include <tbb/global_control.h>
 
 #include "bindings.h"
 
@@ -87,8 +86,7 @@ py::dict interpolate(py::handle mesh, py::handle scheme, py::handle params, py::
   subdiv::ProgressiveResult r;
   {
     py::gil_scoped_release unlocked;
-    std::optional<tbb::global_control> thread_limit;
-    if (threads > 0) thread_limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    const subdiv::ThreadLimit thread_limit(threads);
     limit = limit_operator(m, name, c, boundary, 0);
     r = subdiv::progressive_interpolation(limit.table, m.positions, moving, po);
   }

@@ -11,9 +11,9 @@ namespace subdivkit {
 namespace {
 
 struct RefinedLevel {
-  subdiv::MeshData mesh;
   std::vector<subdiv::DataArray> point_data, cell_data;
   std::vector<subdiv::FaceVaryingArray> face_varying;
+  subdiv::MeshData mesh;  // faces and positions (the arrays are above)
 };
 
 struct RefineInput {
@@ -24,13 +24,6 @@ struct RefineInput {
   subdiv::FaceVaryingLinear fvar_mode = subdiv::FaceVaryingLinear::All;
 };
 
-subdiv::FaceVaryingLinear fvar_mode_from(const std::string& name) {
-  for (int m = 0; m <= 5; ++m)
-    if (name == subdiv::face_varying_linear_name(subdiv::FaceVaryingLinear(m))) return subdiv::FaceVaryingLinear(m);
-  throw subdiv::Error(fmt::format("fvar_boundary='{}': choose one of none, corners-only, corners-plus1, "
-                                  "corners-plus2, boundaries, all", name));
-}
-
 RefineInput input_from(py::handle mesh, py::handle point_data, py::handle cell_data, py::handle face_varying = py::none(),
                        const std::string& fvar_boundary = "all") {
   RefineInput in;
@@ -39,7 +32,7 @@ RefineInput input_from(py::handle mesh, py::handle point_data, py::handle cell_d
   in.point_data = data_arrays_from(point_data, in.mesh.vertex_count(), "point data");
   in.cell_data = data_arrays_from(cell_data, in.mesh.face_count(), "cell data");
   in.face_varying = face_varying_from(face_varying, Index(in.mesh.face_vertices.size()));
-  in.fvar_mode = fvar_mode_from(fvar_boundary);
+  in.fvar_mode = subdiv::face_varying_from_name(fvar_boundary, "fvar_boundary=");
   for (const auto& a : in.face_varying)
     for (size_t c = 0; c < a.indices.size(); ++c)
       if (a.indices[c] < 0 || a.indices[c] >= a.value_count())
@@ -50,18 +43,12 @@ RefineInput input_from(py::handle mesh, py::handle point_data, py::handle cell_d
 
 }  // namespace
 
-std::optional<tbb::global_control> thread_limit(int threads) {
-  std::optional<tbb::global_control> limit;
-  if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(threads));
-  return limit;
-}
-
 subdiv::Level surface_base(const subdiv::MeshData& mesh, const std::string& name, const SchemeChoice& c) {
   if (mesh.face_count() == 0)
     throw subdiv::Error(fmt::format("{}: the mesh has no faces to refine{}", name,
                                     mesh.line_count() ? "; its polylines need a curve scheme (e.g. 'chaikin')" : ""));
   subdiv::Level base = subdiv::level_from_mesh(mesh, name);
-  subdiv::cli::check_fits_in_memory(*c.sequence.schemes.front(), base, c.sequence.total_levels);
+  subdiv::check_fits_in_memory(*c.sequence.schemes.front(), base, c.sequence.total_levels);
   return base;
 }
 
@@ -81,58 +68,28 @@ subdiv::CurveLevel curve_base(const RefineInput& in, const subdiv::CurveScheme& 
   return base;
 }
 
-// Hole faces are left out of the output (mesh_from_level, OpenSubdiv's holes): so are their cell values.
-std::vector<subdiv::DataArray> cells_outside_holes(const subdiv::Level& L, std::vector<subdiv::DataArray> cells) {
-  if (L.face_hole.empty()) return cells;
-  for (auto& a : cells) {
-    size_t row = 0;
-    for (Index f = 0; f < L.face_count(); ++f) {
-      if (L.is_hole(f)) continue;
-      std::copy_n(&a.values[size_t(f) * a.components], a.components, &a.values[row * a.components]);
-      ++row;
-    }
-    a.values.resize(row * a.components);
-  }
-  return cells;
-}
-
-// The user's arrays through the levels as the command line carries them (framework/primvar):
-// point arrays with the positions by the scheme's rules, integer ones by origin, normals
-// left out (named in `dropped`), cell arrays inherited, face-varying arrays by
-// refine_face_varying.
-std::vector<RefinedLevel> refine_surface(RefineInput& in, const SchemeChoice& c, const subdiv::RefineOptions& o,
-                                         bool all_levels, std::vector<std::string>& dropped) {
-  const subdiv::SchemeSequence& seq = c.sequence;
-  subdiv::Hierarchy h = subdiv::refine_topology(seq.runs, surface_base(in.mesh, in.name, c), o);
-  subdiv::LevelData level{std::move(in.mesh.positions), subdiv::carried_point_arrays(in.point_data, &dropped),
-                          std::move(in.cell_data)};
-  subdiv::check_finite_arrays(level, in.name);
-  std::vector<subdiv::FaceVaryingArray> carried;
-  std::vector<std::vector<subdiv::FaceVaryingLevel>> fvar;
-  for (auto& a : in.face_varying) {
-    if (a.role == subdiv::ArrayRole::Normals) {
-      dropped.push_back(a.name);
-      continue;
-    }
-    fvar.push_back(subdiv::refine_face_varying(seq.runs, h, {a.values, a.indices}, a.components, in.fvar_mode, o));
-    carried.push_back(std::move(a));
-  }
+// The user's arrays through the levels as the command line carries them: one pipeline
+// request (framework/pipeline/refine_pipeline.h), each kept level described as a mesh with
+// its arrays (hole faces left out, as OpenSubdiv leaves them out).
+std::vector<RefinedLevel> refine_surface(RefineInput& in, subdiv::RefineRequest request,
+                                         std::vector<std::string>& dropped, std::vector<std::string>& warnings) {
+  request.mesh = std::move(in.mesh);
+  request.mesh.point_data = std::move(in.point_data);
+  request.mesh.cell_data = std::move(in.cell_data);
+  request.mesh.face_varying = std::move(in.face_varying);
+  request.mesh_name = in.name;
+  request.shape.face_varying = in.fvar_mode;
+  subdiv::RefineResult result = subdiv::refine_mesh(std::move(request));
+  dropped = std::move(result.dropped_arrays);
+  warnings = std::move(result.warnings);
   std::vector<RefinedLevel> out;
-  auto keep = [&](int l) {
-    const subdiv::Level& L = h.levels[l];
-    std::vector<subdiv::FaceVaryingArray> uv;
-    for (size_t k = 0; k < fvar.size(); ++k) {
-      const auto& a = carried[k];
-      const subdiv::FaceVaryingLevel& at = fvar[k][size_t(l)];
-      uv.push_back({a.name, a.components, at.values, corners_outside_holes(L, at.indices), a.role});
-    }
-    out.push_back({subdiv::mesh_from_level(L, level.positions), level.point_data, cells_outside_holes(L, level.cell_data),
-                   std::move(uv)});
-  };
-  if (all_levels || seq.total_levels == 0) keep(0);
-  for (int l = 0; l < seq.total_levels; ++l) {
-    level = subdiv::next_level_data(seq.runs, h, l, level, o);
-    if (all_levels || l + 1 == seq.total_levels) keep(l + 1);
+  for (size_t l = 0; l < result.levels.size(); ++l) {
+    if (result.levels[l].positions.empty() && l + 1 < result.levels.size()) continue;  // not kept
+    subdiv::MeshData mesh = subdiv::level_mesh(result.hierarchy.levels[l], std::move(result.levels[l]));
+    RefinedLevel level{std::move(mesh.point_data), std::move(mesh.cell_data), std::move(mesh.face_varying), {}};
+    mesh.point_data.clear(), mesh.cell_data.clear(), mesh.face_varying.clear();
+    level.mesh = std::move(mesh);
+    out.push_back(std::move(level));
   }
   return out;
 }
@@ -149,7 +106,7 @@ std::vector<RefinedLevel> refine_curve(RefineInput& in, const subdiv::CurveSchem
   if (!in.face_varying.empty())
     throw subdiv::Error("face-varying data: polylines have no faces to carry it; curve refinement carries point data");
   std::vector<RefinedLevel> out;
-  auto keep = [&](int l) { out.push_back({subdiv::mesh_from_curve_level(h.levels[l], positions), points, {}}); };
+  auto keep = [&](int l) { out.push_back({points, {}, {}, subdiv::mesh_from_curve_level(h.levels[l], positions)}); };
   if (all_levels || levels == 0) keep(0);
   for (int l = 0; l < levels; ++l) {
     positions = h.stencils[l].apply(positions, 3);
@@ -166,13 +123,20 @@ py::list refine(py::handle mesh, py::handle scheme, py::handle params, int level
   const subdiv::RefineOptions options = refine_options(boundary, crease_method, threads, start_level);
   RefineInput in = input_from(mesh, point_data, cell_data, face_varying, fvar_boundary);
   const SchemeChoice choice = scheme_choice_from(scheme, levels, params);
+  subdiv::RefineRequest request;
+  request.scheme = scheme_source_from(scheme, params);
+  request.levels = levels;
+  request.start_level = start_level;
+  request.shape.boundary = options.features.boundary;
+  request.shape.crease_method = options.features.crease_method;
+  request.keep_all_levels = all_levels;
   std::vector<RefinedLevel> result;
-  std::vector<std::string> dropped;
+  std::vector<std::string> dropped, warnings;
   {
     py::gil_scoped_release unlocked;
-    const auto limit = thread_limit(threads);
+    const subdiv::ThreadLimit limit(threads);
     result = choice.is_curve() ? refine_curve(in, *choice.single->curve, levels, all_levels)
-                               : refine_surface(in, choice, options, all_levels, dropped);
+                               : refine_surface(in, std::move(request), dropped, warnings);
   }
   py::list out;
   for (auto& level : result) {
@@ -183,6 +147,7 @@ py::list refine(py::handle mesh, py::handle scheme, py::handle params, int level
     d["cell_data"] = data_arrays_to_python(std::move(level.cell_data));
     d["face_varying"] = face_varying_to_python(std::move(level.face_varying));
     d["dropped"] = dropped;
+    d["warnings"] = warnings;
     out.append(d);
   }
   return out;
@@ -207,7 +172,7 @@ py::list stencils(py::handle mesh, py::handle scheme, py::handle params, int lev
   std::vector<subdiv::StencilTable> tables;
   {
     py::gil_scoped_release unlocked;
-    const auto limit = thread_limit(threads);
+    const subdiv::ThreadLimit limit(threads);
     if (choice.is_curve()) {
       tables = subdiv::refine_curves(*choice.single->curve, curve_base(in, *choice.single->curve, levels), levels)
                    .stencils;

@@ -10,7 +10,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <tbb/global_control.h>
 #include <vector>
 
 #include "library.h"
@@ -64,6 +63,8 @@ py::dict face_varying_to_python(std::vector<subdiv::FaceVaryingArray>&& arrays);
 // ---- options.cpp: the keyword arguments the library's option structs are made from ------
 // (Keeping them here means one file to touch when the option structs change.)
 
+// Python's spelling of the pipeline's option names in messages ("{levels}" reads "levels=").
+const subdiv::OptionSpelling& python_option_spelling();
 subdiv::BoundaryInterpolation boundary_from(const std::string& text);
 subdiv::CreaseMethod crease_method_from(const std::string& text);
 subdiv::RefineOptions refine_options(const std::string& boundary, const std::string& crease_method, int threads,
@@ -106,11 +107,11 @@ struct SchemeChoice {
   bool is_curve() const { return single && single->kind == "curve"; }
 };
 SchemeChoice scheme_choice_from(py::handle scheme, int levels, py::handle params);
+// The same scheme as the pipeline's SchemeSource (framework/pipeline/refine_request.h).
+subdiv::SchemeSource scheme_source_from(py::handle scheme, py::handle params);
 
 // ---- bind_refine.cpp: what refine and the Evaluator share ----------------------------------
 
-// The `threads` limit for the duration of a call (0: all cores), as `subdiv -j` does.
-std::optional<tbb::global_control> thread_limit(int threads);
 // The base level of a surface refinement, refused as `subdiv refine` refuses it (no faces,
 // more levels than fit in memory). Call it without the GIL: it builds the level's topology.
 subdiv::Level surface_base(const subdiv::MeshData& mesh, const std::string& name, const SchemeChoice& c);

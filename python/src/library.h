@@ -1,7 +1,6 @@
 #pragma once
-// Every SubdivKit header the Python module uses, in one place: when the library's folders
-// move (framework/engine/refiner.h to framework/engine/, the analysis and VTK files into
-// their own folders), this list is the one to fix.
+// Every SubdivKit header the Python module uses, in one place: the pipeline
+// (framework/pipeline) and the library's public headers, never a file of another front-end.
 #include "framework/analysis/curve/curve_scheme_analysis.h"
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/analysis/surface/surface_analysis.h"
@@ -29,4 +28,9 @@
 #include "framework/stencil/stencil_table.h"
 #include "framework/topology/level.h"
 #include "framework/util/error.h"
-#include "memory_guard.h"  // tools/subdiv: the command line's check that a refinement fits in memory
+#include "framework/pipeline/level_description.h"
+#include "framework/pipeline/memory_guard.h"
+#include "framework/pipeline/option_names.h"
+#include "framework/pipeline/option_spelling.h"
+#include "framework/pipeline/refine_pipeline.h"
+#include "framework/pipeline/thread_limit.h"

@@ -13,6 +13,8 @@ PYBIND11_MODULE(_subdivkit, m) {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const subdiv::OptionError& e) {  // the pipeline's words, spelled as Python's keywords
+      error(e.spelled(subdivkit::python_option_spelling()).c_str());
     } catch (const subdiv::Error& e) {
       error(e.what());
     }

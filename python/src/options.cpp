@@ -1,23 +1,27 @@
 // The keyword arguments boundary=, crease_method=, threads= as the library's option
-// structs: the command line's names and values, checked with its messages.
+// structs: the names of framework/pipeline/option_names.h, spelled as Python's keywords.
 #include <fmt/format.h>
 
 #include "bindings.h"
 
 namespace subdivkit {
 
+const subdiv::OptionSpelling& python_option_spelling() {
+  static const subdiv::OptionSpelling spelling = {
+      {"scheme", "scheme="},           {"levels", "levels="},
+      {"start_level", "start_level="}, {"boundary", "boundary="},
+      {"crease_method", "crease_method="}, {"fvar_boundary", "fvar_boundary="},
+      {"smooth_triangles", "params={'triangles': 'smooth'}"}, {"threads", "threads="},
+      {"normals", "limit_positions()"}, {"limit", "limit_positions()"}};
+  return spelling;
+}
+
 subdiv::BoundaryInterpolation boundary_from(const std::string& text) {
-  if (text == "edges-and-corners") return subdiv::BoundaryInterpolation::EdgesAndCorners;
-  if (text == "edges") return subdiv::BoundaryInterpolation::EdgesOnly;
-  if (text == "none") return subdiv::BoundaryInterpolation::None;
-  throw subdiv::Error(fmt::format("boundary='{}': use 'edges-and-corners' (boundary corners stay), 'edges' "
-                                  "(corners follow the boundary curve) or 'none'", text));
+  return subdiv::boundary_from_name(text, "boundary=");
 }
 
 subdiv::CreaseMethod crease_method_from(const std::string& text) {
-  if (text == "uniform") return subdiv::CreaseMethod::Uniform;
-  if (text == "chaikin") return subdiv::CreaseMethod::Chaikin;
-  throw subdiv::Error(fmt::format("crease_method='{}': use 'uniform' or 'chaikin'", text));
+  return subdiv::crease_method_from_name(text, "crease_method=");
 }
 
 void check_levels(int levels) {

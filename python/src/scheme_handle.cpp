@@ -84,4 +84,18 @@ SchemeChoice scheme_choice_from(py::handle scheme, int levels, py::handle params
   return c;
 }
 
+subdiv::SchemeSource scheme_source_from(py::handle scheme, py::handle params) {
+  subdiv::SchemeSource source;
+  const subdiv::ParameterOverrides overrides = overrides_from(params);
+  if (py::isinstance<SchemeHandle>(scheme)) {
+    const auto& h = scheme.cast<const SchemeHandle&>();
+    source.text = h.source, source.is_json_text = h.from_text, source.label = h.label;
+    source.parameters = h.overrides;
+  } else {
+    source.text = py::str(scheme);
+  }
+  for (const auto& [k, v] : overrides) source.parameters[k] = v;
+  return source;
+}
+
 }  // namespace subdivkit

@@ -73,6 +73,8 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
                                  _data_arrays(mesh.point_data, mesh.point_roles, mesh.n_points, "point data"),
                                  _data_arrays(mesh.cell_data, mesh.cell_roles, mesh.n_faces, "cell data"),
                                  _face_varying_triples(mesh), str(fvar_boundary))
+    for warning in refined[0]["warnings"] if refined else []:
+        warnings.warn(f"refine: {warning}", UserWarning, stacklevel=2)
     if refined and refined[0]["dropped"]:
         warnings.warn(f"refine: {', '.join(repr(n) for n in refined[0]['dropped'])} hold(s) normals, which refinement "
                       "does not carry (a mix of unit normals is no normal); limit_positions() gives the exact limit "

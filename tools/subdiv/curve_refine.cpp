@@ -1,5 +1,5 @@
 #include "curve_refine.h"
-#include "memory_guard.h"
+#include "framework/pipeline/memory_guard.h"
 #include "nonlinear_curve.h"
 
 #include <chrono>

@@ -19,6 +19,7 @@
 #include "framework/interpolation/progressive.h"
 #include "framework/io/formats.h"
 #include "framework/io/mesh_level.h"
+#include "framework/io/vertex_values.h"
 #include "framework/io/mesh_read.h"
 #include "framework/io/mesh_write.h"
 #include "framework/io/vtk/vtk_output.h"
@@ -195,7 +196,7 @@ void run(const InterpolateArgs& a) {
   const std::vector<std::uint8_t> moving = read_selection(a.select, base.vertex_count);
   LimitSelectionOptions options;
   options.features.boundary = boundary_from_name(a.boundary);
-  options.vertex_parameters = read_vertex_params(a.vertex_params, base.vertex_count);
+  options.vertex_parameters = read_vertex_parameter_files(vertex_param_files(a.vertex_params), base.vertex_count);
   if (!a.lambda.empty() && !lambda_value) {
     if (options.vertex_parameters.count("lambda")) throw Error("--lambda FILE and --vertex-param lambda=...: give one");
     options.vertex_parameters["lambda"] = read_vertex_values(a.lambda, "lambda", base.vertex_count);

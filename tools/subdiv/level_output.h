@@ -1,6 +1,7 @@
 #pragma once
 // Writes refined levels: .vtp (finest level), .pvd (every level, for ParaView's time
 // slider), or a mesh format (.obj, .off, .ply, .stl: finest level, creases kept in .obj).
+// The levels are described by the pipeline (framework/pipeline/level_description.h).
 #include <filesystem>
 #include <vector>
 
@@ -8,6 +9,7 @@
 #include "framework/io/vtk/vtk_output.h"
 #include "framework/util/atomic_file.h"
 #include "framework/engine/refiner.h"
+#include "framework/pipeline/level_description.h"
 #include "framework/primvar/level_data.h"
 #include "output_options.h"
 
@@ -28,17 +30,6 @@ namespace subdiv::cli {
 void write_levels(const std::filesystem::path& out, Hierarchy&& h, std::vector<LevelData> data,
                   const FeatureOptions& features, const std::vector<DataArray>& finest_point_data = {},
                   const MeshOptions& obj_tags = {}, const OutputChoice& choice = {});
-
-// What write_levels writes to .vtp/.pvd, without a file: levels `first` to the finest with
-// the user's arrays and SubdivKit's that `arrays` asks for (as write_levels says), split at
-// face-varying seams. The OutputLevels point into `meshes`, which must outlive them. The
-// ParaView plugin (plugins/paraview) shows these. `consumed`, if given, is `h`, which may
-// then give the written levels' faces to `meshes` (h is of no use afterwards).
-std::vector<OutputLevel> describe_levels(const Hierarchy& h, std::vector<LevelData> data,
-                                         const FeatureOptions& features,
-                                         const std::vector<DataArray>& finest_point_data, std::vector<MeshData>& meshes,
-                                         const ArraySelection& arrays = ArraySelection::all(), int first = 0,
-                                         Hierarchy* consumed = nullptr);
 
 // One piece of a refinement in pieces (engine/mesh_pieces.h), as write_levels writes a .vtp:
 // the finest level of the piece's hierarchy `h` with only the faces `piece` owns

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "shared_options.h"
 #include "framework/io/vtk/vtk_formats.h"
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
@@ -25,6 +26,9 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const subdiv::OptionError& e) {  // the pipeline's words, spelled as our options
+    fmt::print(stderr, "subdiv: error: {}\n", e.spelled(subdiv::cli::cli_option_spelling()));
+    return 1;
   } catch (const subdiv::Error& e) {
     fmt::print(stderr, "subdiv: error: {}\n", e.what());
     return 1;

@@ -2,14 +2,11 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
-#include <sstream>
 
 #include "framework/util/error.h"
 
 namespace subdiv::cli {
 namespace {
-
-const std::vector<std::string> kDefaultArrays = {"base_face", "cell_kind", "sharpness", "corner_sharpness"};
 
 struct CompressorName {
   const char* name;
@@ -38,59 +35,22 @@ VtkEncoding encoding_from_name(const std::string& name) {
   throw Error(fmt::format("--vtp-encoding '{}' is not an encoding; use base64 or raw", name));
 }
 
-}  // namespace
-
-const std::vector<std::string>& output_array_names() {
-  static const std::vector<std::string> names = {"origin",      "valence",   "level",     "vertex_class",
-                                                 "corner_sharpness", "parent_face", "base_face", "sharpness",
-                                                 "cell_kind"};
-  return names;
-}
-
-ArraySelection ArraySelection::all() {
-  ArraySelection s;
-  s.names_.insert(output_array_names().begin(), output_array_names().end());
-  return s;
-}
-
-ArraySelection ArraySelection::defaults() {
-  ArraySelection s;
-  s.names_.insert(kDefaultArrays.begin(), kDefaultArrays.end());
-  return s;
-}
-
-ArraySelection ArraySelection::parse(const std::string& text) {
-  const std::string valid = fmt::format("{}, or default, all, none", fmt::join(output_array_names(), ", "));
-  if (text == "none") return {};
-  ArraySelection s;
-  std::stringstream items(text);
-  for (std::string item; std::getline(items, item, ',');) {
-    if (item == "all") s.names_.insert(output_array_names().begin(), output_array_names().end());
-    else if (item == "default") s.names_.insert(kDefaultArrays.begin(), kDefaultArrays.end());
-    else if (item == "none") throw Error(fmt::format("--arrays '{}': 'none' stands alone (no array at all)", text));
-    else if (std::find(output_array_names().begin(), output_array_names().end(), item) != output_array_names().end())
-      s.names_.insert(item);
-    else
-      throw Error(fmt::format("--arrays '{}': unknown array '{}'; give a comma list of {}", text, item, valid));
-  }
-  if (text.empty() || text.back() == ',')
-    throw Error(fmt::format("--arrays '{}': an empty name; give a comma list of {}", text, valid));
-  return s;
-}
-
-VtkWriteOptions ArraySelection::vtk_options(VtkWriteOptions options) const {
-  options.sharpness = has("sharpness");
-  options.cell_kind = has("cell_kind");
-  options.corner_sharpness = has("corner_sharpness");
+// The arrays write_vtp adds itself (sharpness, cell_kind, corner_sharpness) as `arrays` chooses.
+VtkWriteOptions vtk_options(const ArraySelection& arrays, VtkWriteOptions options) {
+  options.sharpness = arrays.has("sharpness");
+  options.cell_kind = arrays.has("cell_kind");
+  options.corner_sharpness = arrays.has("corner_sharpness");
   return options;
 }
+
+}  // namespace
 
 void add_output_options(CLI::App* cmd, OutputArgs& args) {
   cmd->add_option("--arrays", args.arrays,
                   fmt::format("SubdivKit's arrays in .vtp/.pvd/.pvtp output: a comma list of {}; or default ({}: they "
                               "need only the last level's faces, which is faster), all, none. The mesh's own arrays "
                               "are always written; .obj/.off/.ply/.stl hold none of these",
-                              fmt::join(output_array_names(), ", "), fmt::join(kDefaultArrays, ",")))
+                              fmt::join(output_array_names(), ", "), fmt::join(default_array_names(), ",")))
       ->capture_default_str();
   cmd->add_option("--compression", args.compression,
                   fmt::format("Compressor of .vtp/.pvd/.pvtp output: {} (VTK's; ParaView reads them all). lz4, the "
@@ -114,11 +74,15 @@ void add_output_options(CLI::App* cmd, OutputArgs& args) {
 
 OutputChoice output_choice(const OutputArgs& args) {
   OutputChoice choice;
-  choice.arrays = ArraySelection::parse(args.arrays);
+  try {
+    choice.arrays = ArraySelection::parse(args.arrays);
+  } catch (const Error& e) {
+    throw Error(fmt::format("--{}", e.what()));  // the library names the option "arrays"
+  }
   choice.vtk.compressor = compressor_from_name(args.compression);
   choice.vtk.compression_level = args.compression_level;
   choice.vtk.encoding = encoding_from_name(args.vtp_encoding);
-  choice.vtk = choice.arrays.vtk_options(choice.vtk);
+  choice.vtk = vtk_options(choice.arrays, choice.vtk);
   return choice;
 }
 

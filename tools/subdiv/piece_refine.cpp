@@ -13,7 +13,7 @@
 #include "framework/util/atomic_file.h"
 #include "framework/util/error.h"
 #include "level_output.h"
-#include "memory_guard.h"
+#include "framework/pipeline/memory_guard.h"
 #include "mesh_subset.h"
 #include "process_group.h"
 

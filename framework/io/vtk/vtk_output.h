@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "framework/io/mesh_data.h"
+#include "framework/io/output_level.h"
 
 namespace subdiv {
 
@@ -29,16 +30,6 @@ struct VtkWriteOptions {
   VtkEncoding encoding = VtkEncoding::Base64;
   // The arrays write_vtp adds itself (see write_vtp); each can be left out.
   bool sharpness = true, cell_kind = true, corner_sharpness = true;
-};
-
-// One level to write. point_data has one tuple per vertex. cell_data has either one tuple
-// per face, and line cells get -1 in every component, or one tuple per cell in the order
-// faces, polylines, crease edges.
-struct OutputLevel {
-  const MeshData* mesh = nullptr;
-  int level = 0;
-  std::vector<DataArray> point_data;
-  std::vector<DataArray> cell_data;
 };
 
 // Writes faces as polygons, polylines and crease edges as line cells, in VTK XML with the

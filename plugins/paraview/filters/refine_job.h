@@ -1,17 +1,18 @@
 #pragma once
-// What "SubdivKit Refine" does once its input is a MeshData: the steps of `subdiv refine`
-// (tools/subdiv/refine_command.cpp) without files, ending in the levels `subdiv refine -o
-// X.pvd` would write, with the same arrays. VTK-free; vtkSubdivKitRefine converts.
+// What "SubdivKit Refine" does once its input is a MeshData: its properties translated into
+// the library's pipeline request (framework/pipeline/refine_pipeline.h), as `subdiv refine`
+// and Python's refine() translate theirs, ending in the levels `subdiv refine -o X.pvd`
+// would write, with the same arrays. VTK-free; vtkSubdivKitRefine converts.
 #include <string>
 #include <vector>
 
 #include "framework/features/feature_options.h"
 #include "framework/io/mesh_data.h"
-#include "framework/io/vtk/vtk_output.h"
+#include "framework/io/output_level.h"
 
 namespace subdiv::paraview {
 
-struct RefineRequest {
+struct RefineSettings {
   std::string scheme = "catmull-clark";  // a registered name or a .json path
   int levels = 2;
   std::string parameters;                // "name=value ...", as --param
@@ -27,8 +28,8 @@ struct RefinedLevels {
   std::vector<std::string> notes;   // warnings (vertices dropped, limits approximated) for ParaView's output window
 };
 
-// Throws subdiv::Error with the message `subdiv refine` would print; `source` names the
-// input in it (the filter's name).
-RefinedLevels refine_levels(const MeshData& mesh, const RefineRequest& request, const std::string& source);
+// Throws subdiv::Error with the message `subdiv refine` would print, options named as the
+// filter's properties; `source` names the input in it (the filter's name).
+RefinedLevels refine_levels(const MeshData& mesh, const RefineSettings& settings, const std::string& source);
 
 }  // namespace subdiv::paraview

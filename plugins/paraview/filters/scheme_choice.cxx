@@ -3,9 +3,9 @@
 #include <mutex>
 #include <sstream>
 
+#include "framework/pipeline/parameter_text.h"
 #include "framework/plugin/plugin_loader.h"
 #include "framework/scheme/scheme_registry.h"
-#include "shared_options.h"
 
 namespace subdiv::paraview {
 namespace {
@@ -35,7 +35,7 @@ ParameterOverrides parameter_overrides(const std::string& text) {
   std::istringstream words(text);
   std::vector<std::string> params;
   for (std::string word; words >> word;) params.push_back(word);
-  return cli::parse_params(params);
+  return parse_parameter_assignments(params, "Parameters");
 }
 
 }  // namespace subdiv::paraview

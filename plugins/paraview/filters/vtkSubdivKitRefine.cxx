@@ -97,8 +97,8 @@ int vtkSubdivKitRefine::RequestDataObject(vtkInformation*, vtkInformationVector*
   return 1;
 }
 
-subdiv::paraview::RefineRequest vtkSubdivKitRefine::Request() const {
-  subdiv::paraview::RefineRequest request;
+subdiv::paraview::RefineSettings vtkSubdivKitRefine::Request() const {
+  subdiv::paraview::RefineSettings request;
   request.scheme = this->SchemeToRun();
   request.levels = this->Levels;
   request.parameters = this->ParametersToRun();

@@ -12,7 +12,7 @@
 
 namespace subdiv {
 namespace paraview {  // (VTK's wrapper tools read this header: no C++17 nested namespaces)
-struct RefineRequest;  // refine_job.h
+struct RefineSettings;  // refine_job.h
 }  // namespace paraview
 }  // namespace subdiv
 
@@ -52,7 +52,7 @@ protected:
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   // The properties as the refinement's options.
-  subdiv::paraview::RefineRequest Request() const;
+  subdiv::paraview::RefineSettings Request() const;
 
 private:
   vtkSubdivKitRefine(const vtkSubdivKitRefine&) = delete;

@@ -10,7 +10,7 @@
 #include "framework/primvar/level_data.h"
 #include "framework/scheme/scheme_sequence.h"
 
-namespace subdiv::cli {
+namespace subdiv {
 
 struct LimitArrays {
   std::vector<DataArray> point_data;  // "normal" (the role Normals), "limit_exact", "normal_exact"
@@ -22,4 +22,4 @@ struct LimitArrays {
 LimitArrays limit_arrays(const SchemeSequence& seq, const Hierarchy& h, const RefineOptions& options,
                          LevelData& finest, bool move_to_limit);
 
-}  // namespace subdiv::cli
+}  // namespace subdiv

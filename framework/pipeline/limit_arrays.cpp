@@ -1,6 +1,6 @@
-#include "limit_output.h"
+#include "framework/pipeline/limit_arrays.h"
 
-namespace subdiv::cli {
+namespace subdiv {
 
 LimitArrays limit_arrays(const SchemeSequence& seq, const Hierarchy& h, const RefineOptions& options,
                          LevelData& finest, bool move_to_limit) {
@@ -30,4 +30,4 @@ LimitArrays limit_arrays(const SchemeSequence& seq, const Hierarchy& h, const Re
   return out;
 }
 
-}  // namespace subdiv::cli
+}  // namespace subdiv

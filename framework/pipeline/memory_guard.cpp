@@ -1,4 +1,4 @@
-#include "memory_guard.h"
+#include "framework/pipeline/memory_guard.h"
 
 #include <cctype>
 #include <charconv>
@@ -11,7 +11,7 @@
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
 
-namespace subdiv::cli {
+namespace subdiv {
 namespace {
 
 // Bytes per face of the finest level kept by a refinement: topology (faces, edges,
@@ -40,7 +40,7 @@ double refinement_bytes(const Scheme& scheme, const Level& base, int levels) {
 
 void check_fits_in_memory(const Scheme& scheme, const Level& base, int levels, double limit, const std::string& fix) {
   MemoryBudget have = available_memory();
-  if (limit > 0 && limit < have.bytes) have = {limit, "--max-memory"};
+  if (limit > 0 && limit < have.bytes) have = {limit, "the memory budget asked for"};
   const double need = refinement_bytes(scheme, base, levels);
   if (need > have.bytes)
     throw Error(fmt::format("{} levels would make about {:.3g} faces and need about {}, but only {} of memory is "
@@ -70,4 +70,4 @@ double parse_memory_size(const std::string& text, const std::string& option) {
   return number * scale;
 }
 
-}  // namespace subdiv::cli
+}  // namespace subdiv

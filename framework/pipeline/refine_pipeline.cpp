@@ -1,0 +1,281 @@
+#include "framework/pipeline/refine_pipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "framework/io/feature_angle.h"
+#include "framework/io/feature_file.h"
+#include "framework/io/mesh_cleanup.h"
+#include "framework/io/mesh_level.h"
+#include "framework/io/mesh_read.h"
+#include "framework/io/vertex_values.h"
+#include "framework/pipeline/limit_arrays.h"
+#include "framework/pipeline/memory_guard.h"
+#include "framework/pipeline/option_names.h"
+#include "framework/pipeline/option_spelling.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+// Level-dependent state is computed level by level up to the start level: a bound keeps
+// that finite, and no refinement history is longer than this.
+constexpr int kMaxStartLevel = 100;
+
+void say(const RefineRequest& r, const std::string& phase) {
+  if (r.progress) r.progress(phase);
+}
+
+// ---- the scheme ----------------------------------------------------------------------------
+
+SchemeSequence load_sequence(const RefineRequest& r, const ParameterOverrides& parameters) {
+  if (!r.scheme.is_json_text) return load_scheme_sequence(r.scheme.text, r.levels, parameters);
+  SchemeSequence seq;
+  seq.schemes = {load_scheme_text(r.scheme.text, r.scheme.label, parameters)};
+  seq.runs = {{seq.schemes.front().get(), r.levels}};
+  seq.total_levels = r.levels;
+  return seq;
+}
+
+bool has_parameter(const SchemeSequence& seq, const std::string& name) {
+  for (const auto& scheme : seq.schemes)
+    for (const auto& p : scheme->parameters)
+      if (p.name == name) return true;
+  return false;
+}
+
+// OpenSubdiv's smooth triangles (TRI_SUB_SMOOTH) are the scheme parameter "triangles"
+// (schemes/catmull-clark.json): asked for, or the mesh's `t smoothtriangles` tag, sets it
+// unless the request's parameters do. "" when nothing changes.
+std::string triangles_choice(const RefineRequest& r, const SchemeSequence& given, const std::string& label) {
+  if (r.scheme.parameters.count("triangles")) return "";
+  if (r.shape.smooth_triangles) {
+    if (!has_parameter(given, "triangles"))
+      throw OptionError(fmt::format("{{smooth_triangles}}: scheme '{}' has no 'triangles' parameter; smooth "
+                                    "triangles are a Catmull-Clark option (OpenSubdiv's TRI_SUB_SMOOTH), e.g. "
+                                    "{{scheme}} catmull-clark",
+                                    label));
+    return "smooth";
+  }
+  // As OpenSubdiv, a tag for a scheme without the option is ignored.
+  const auto& tag = r.mesh.options.smooth_triangles;
+  return tag && has_parameter(given, "triangles") ? *tag : "";
+}
+
+SchemeSequence load_request_scheme(const RefineRequest& r, std::string& label) {
+  label = r.scheme.is_json_text ? r.scheme.label : r.scheme.text;
+  const SchemeSequence given = load_sequence(r, r.scheme.parameters);
+  if (r.levels_given && given.total_levels != r.levels)
+    throw OptionError(fmt::format("{{scheme}} '{}' runs {} level(s), but {{levels}} asks for {}; make the counts add "
+                                  "up to {}, leave one scheme without :N to take the rest, or drop {{levels}}",
+                                  label, given.total_levels, r.levels, r.levels));
+  const std::string triangles = triangles_choice(r, given, label);
+  if (triangles.empty()) return given;
+  ParameterOverrides with_triangles = r.scheme.parameters;
+  with_triangles["triangles"] = triangles;
+  return load_sequence(r, with_triangles);
+}
+
+// ---- shape options: the request's, else the mesh's tags, else the defaults -------------------
+
+FeatureOptions feature_options(const ShapeChoices& shape, const MeshOptions& tags) {
+  FeatureOptions o;
+  if (shape.boundary) o.boundary = *shape.boundary;
+  else if (tags.interpolate_boundary)
+    o.boundary = *tags.interpolate_boundary == 0   ? BoundaryInterpolation::None
+                 : *tags.interpolate_boundary == 2 ? BoundaryInterpolation::EdgesOnly
+                                                   : BoundaryInterpolation::EdgesAndCorners;
+  if (shape.crease_method) o.crease_method = *shape.crease_method;
+  else if (tags.crease_method) o.crease_method = *tags.crease_method == "chaikin" ? CreaseMethod::Chaikin : CreaseMethod::Uniform;
+  return o;
+}
+
+FaceVaryingLinear face_varying_mode(const ShapeChoices& shape, const MeshOptions& tags) {
+  if (shape.face_varying) return *shape.face_varying;
+  if (!tags.fvar_interpolate_boundary) return FaceVaryingLinear::All;
+  const FaceVaryingLinear mode = face_varying_linear_from_tag(*tags.fvar_interpolate_boundary);
+  // OpenSubdiv 2's "propagate corners" is what corners-plus2 adds to corners-plus1.
+  if (mode == FaceVaryingLinear::CornersPlus1 && tags.fvar_propagate_corners.value_or(0))
+    return FaceVaryingLinear::CornersPlus2;
+  return mode;
+}
+
+// The options in force as OpenSubdiv's tags, for OBJ output (a round trip keeps them); the
+// face-varying mode among them when the mesh has face-varying data or said one.
+MeshOptions tags_in_force(const PreparedRefinement& p) {
+  MeshOptions used = p.mesh.options;
+  for (const auto& scheme : p.sequence.schemes)
+    for (const auto& parameter : scheme->parameters)
+      if (parameter.name == "triangles") used.smooth_triangles = parameter.choice;
+  const BoundaryInterpolation b = p.options.features.boundary;
+  used.interpolate_boundary = b == BoundaryInterpolation::None ? 0 : b == BoundaryInterpolation::EdgesOnly ? 2 : 1;
+  used.crease_method = p.options.features.crease_method == CreaseMethod::Chaikin ? "chaikin" : "normal";
+  if (!p.mesh.face_varying.empty() || used.fvar_interpolate_boundary) {
+    used.fvar_interpolate_boundary = int(p.face_varying);
+    used.fvar_propagate_corners.reset();  // said by the mode written
+  }
+  return used;
+}
+
+// ---- the mesh ---------------------------------------------------------------------------------
+
+void check_request(const RefineRequest& r) {
+  if (r.levels < 0 || r.levels > 30) throw OptionError(fmt::format("{{levels}} {}: give 0 to 30 levels", r.levels));
+  if (r.start_level < 0 || r.start_level > kMaxStartLevel)
+    throw OptionError(fmt::format("{{start_level}} {}: give 0 to {}", r.start_level, kMaxStartLevel));
+  // NaN passes range checks (every comparison with it is false): refused by name.
+  if (std::isnan(r.feature_angle) || r.feature_angle > 180)
+    throw OptionError(fmt::format("{{feature_angle}} {} is not an angle; give degrees from 0 to 180", r.feature_angle));
+}
+
+Level tagged_base(const RefineRequest& r, const MeshData& mesh, std::vector<std::string>& notes) {
+  if (mesh.face_count() == 0)
+    throw Error(fmt::format("{}: the mesh has no faces to refine{}", r.mesh_name,
+                            mesh.line_count() ? "; its polylines need a curve scheme (e.g. chaikin)" : ""));
+  Level base = level_from_mesh(mesh, r.mesh_name);
+  if (!r.feature_file.empty()) {
+    const FeatureTags tags = read_feature_file(r.feature_file);
+    apply_feature_tags(tags, base);
+    notes.push_back(fmt::format("{}: {} crease edge(s), {} corner(s)", r.feature_file, tags.creases.size(),
+                                tags.corners.size()));
+  }
+  if (r.feature_angle >= 0) {
+    const Index sharp = tag_edges_sharper_than(base, mesh.positions, r.feature_angle);
+    notes.push_back(fmt::format("{{feature_angle}} {}: {} edge(s) made infinitely sharp", r.feature_angle, sharp));
+  }
+  return base;
+}
+
+// Whether the last level can be built with its faces only (RefineOptions::
+// faces_only_last_level), as OpenSubdiv builds it by default, for the same result: nothing
+// asked for reads its edges or vertex rings. Those are read by the valence and vertex_class
+// arrays, limit positions and normals, face-varying data, and the creases and corners taken
+// from the level's sharpness tags, which live on its edges and vertices; so a base mesh with
+// any tag, boundary (boundary corners are tagged), hole or non-manifold edge keeps them.
+bool last_level_faces_suffice(const RefineRequest& r, const MeshData& mesh, const Level& base) {
+  if ((r.described_arrays && r.described_arrays->needs_last_level_edges()) || r.limit_positions || r.limit_normals ||
+      !mesh.face_varying.empty())
+    return false;
+  const auto tagged = [](const std::vector<float>& sharpness) {
+    return std::any_of(sharpness.begin(), sharpness.end(), [](float s) { return s > 0.f; });
+  };
+  const bool boundary = std::any_of(base.vertex_on_boundary.begin(), base.vertex_on_boundary.end(),
+                                    [](std::uint8_t b) { return b != 0; });
+  return !tagged(base.edge_sharpness) && !tagged(base.vertex_sharpness) && !boundary && base.manifold() &&
+         base.face_hole.empty();
+}
+
+// ---- limits -----------------------------------------------------------------------------------
+
+std::string limit_note(const RefineRequest& r, const LimitResult& limit) {
+  if (limit.approximate == 0 && limit.approximate_normals == 0) return "";
+  return fmt::format("{} approximates {} position(s) and {} more normal(s) of {} vertices (point data limit_exact, "
+                     "normal_exact): {}",
+                     r.limit_positions ? "{limit}" : "{normals}", limit.approximate,
+                     limit.approximate_normals, limit.exact.size(), fmt::join(limit.approximate_reasons, "; "));
+}
+
+}  // namespace
+
+PreparedRefinement prepare_refinement(RefineRequest& r) {
+  check_request(r);
+  PreparedRefinement p;
+  p.sequence = load_request_scheme(r, p.scheme_label);
+  if (!r.mesh_file.empty()) {
+    say(r, fmt::format("reading {}", r.mesh_file));
+    r.mesh = read_mesh(r.mesh_file);
+    if (r.mesh_name.empty()) r.mesh_name = r.mesh_file;
+  }
+  MeshCleanup cleanup;
+  p.mesh = drop_unrefinable(std::move(r.mesh), cleanup);
+  p.warnings = p.mesh.warnings;
+  for (auto& w : cleanup.warnings(r.mesh_name)) p.warnings.push_back(std::move(w));
+  const bool per_vertex = !r.vertex_parameters.empty() || !r.vertex_parameter_files.empty();
+  if (per_vertex && cleanup.dropped_vertices > 0)
+    throw OptionError(fmt::format("{}: {{vertex_param}} gives values in the input's vertex order, but unused "
+                                  "vertices were dropped (see the warning) and the rest renumbered; remove them from "
+                                  "the mesh first",
+                                  r.mesh_name));
+  p.base = tagged_base(r, p.mesh, p.notes);
+  p.options.levels = p.sequence.total_levels;
+  p.options.features = feature_options(r.shape, p.mesh.options);
+  p.options.first_step = r.start_level;
+  p.options.vertex_parameters = r.vertex_parameters;
+  for (auto& [name, values] : read_vertex_parameter_files(r.vertex_parameter_files, p.base.vertex_count))
+    p.options.vertex_parameters[name] = std::move(values);
+  p.face_varying = face_varying_mode(r.shape, p.mesh.options);
+  p.tags = tags_in_force(p);
+  return p;
+}
+
+std::vector<LevelData> refine_level_data(const PreparedRefinement& p, const Hierarchy& h, const MeshData& mesh,
+                                         const RefineOptions& options, const RefineRequest& r, LevelDataNotes& said) {
+  const SchemeSequence& seq = p.sequence;
+  std::vector<std::string> dropped;
+  std::vector<LevelData> levels{{mesh.positions, carried_point_arrays(mesh.point_data, &dropped), mesh.cell_data, {}}};
+  check_finite_arrays(levels.front(), r.mesh_name);
+  for (const auto& name : dropped)
+    said.notes.push_back(fmt::format("point array '{}' holds normals, which refinement does not carry (a mix of unit "
+                                     "normals is no normal); {{normals}} writes the exact limit normals",
+                                     name));
+  said.dropped_arrays.insert(said.dropped_arrays.end(), dropped.begin(), dropped.end());
+  for (int l = 0; l < seq.total_levels; ++l) {
+    say(r, fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
+    levels.push_back(next_level_data(seq.runs, h, l, levels.back(), options));
+    if (!r.keep_all_levels) levels[size_t(l)] = {};
+  }
+  for (const FaceVaryingArray& a : mesh.face_varying) {
+    if (a.role == ArrayRole::Normals) {
+      said.dropped_arrays.push_back(a.name);
+      said.notes.push_back(fmt::format("face-varying array '{}' holds normals, which refinement does not carry; "
+                                       "{{normals}} writes the exact limit normals",
+                                       a.name));
+      continue;
+    }
+    const auto refined = refine_face_varying(seq.runs, h, {a.values, a.indices}, a.components, p.face_varying, options);
+    for (size_t l = 0; l < levels.size(); ++l)
+      if (r.keep_all_levels || l + 1 == levels.size())
+        levels[l].face_varying.push_back({a.name, a.components, refined[l].values, refined[l].indices, a.role});
+  }
+  return levels;
+}
+
+RefineResult run_refinement(PreparedRefinement&& p, const RefineRequest& r) {
+  check_fits_in_memory(*p.sequence.schemes.front(), p.base, p.sequence.total_levels, r.memory_budget,
+                       r.memory_advice);
+  RefineResult out;
+  p.options.faces_only_last_level = last_level_faces_suffice(r, p.mesh, p.base);
+  say(r, fmt::format("refining topology: {} levels of {}{}", p.sequence.total_levels, p.scheme_label,
+                     p.options.faces_only_last_level ? " (last level: faces only)" : ""));
+  out.hierarchy = refine_topology(p.sequence.runs, std::move(p.base), p.options);
+  out.warnings = std::move(p.warnings);
+  out.warnings.insert(out.warnings.end(), out.hierarchy.warnings.begin(), out.hierarchy.warnings.end());
+  out.notes = std::move(p.notes);
+  LevelDataNotes said;
+  out.levels = refine_level_data(p, out.hierarchy, p.mesh, p.options, r, said);
+  out.notes.insert(out.notes.end(), said.notes.begin(), said.notes.end());
+  out.dropped_arrays = std::move(said.dropped_arrays);
+  if (r.limit_positions || r.limit_normals) {
+    say(r, r.limit_positions ? "limit positions and normals" : "limit normals");
+    LimitArrays limits = limit_arrays(p.sequence, out.hierarchy, p.options, out.levels.back(), r.limit_positions);
+    out.finest_point_data = std::move(limits.point_data);
+    limits.result.positions.clear(), limits.result.normals.clear();
+    out.limit_note = limit_note(r, limits.result);
+    out.limit = std::move(limits.result);
+  }
+  out.sequence = std::move(p.sequence);
+  out.scheme_label = std::move(p.scheme_label);
+  out.features = p.options.features;
+  out.tags = std::move(p.tags);
+  return out;
+}
+
+RefineResult refine_mesh(RefineRequest request) {
+  PreparedRefinement prepared = prepare_refinement(request);
+  return run_refinement(std::move(prepared), request);
+}
+
+}  // namespace subdiv
