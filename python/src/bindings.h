@@ -63,7 +63,7 @@ py::dict face_varying_to_python(std::vector<subdiv::FaceVaryingArray>&& arrays);
 // ---- options.cpp: the keyword arguments the library's option structs are made from ------
 // (Keeping them here means one file to touch when the option structs change.)
 
-// Python's spelling of the pipeline's option names in messages ("{levels}" reads "levels=").
+// Python's spelling of the pipeline's option names in messages: its keywords ("{levels}" reads "levels").
 const subdiv::OptionSpelling& python_option_spelling();
 subdiv::BoundaryInterpolation boundary_from(const std::string& text);
 subdiv::CreaseMethod crease_method_from(const std::string& text);

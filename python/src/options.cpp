@@ -8,10 +8,10 @@ namespace subdivkit {
 
 const subdiv::OptionSpelling& python_option_spelling() {
   static const subdiv::OptionSpelling spelling = {
-      {"scheme", "scheme="},           {"levels", "levels="},
-      {"start_level", "start_level="}, {"boundary", "boundary="},
-      {"crease_method", "crease_method="}, {"fvar_boundary", "fvar_boundary="},
-      {"smooth_triangles", "params={'triangles': 'smooth'}"}, {"threads", "threads="},
+      {"scheme", "scheme"},           {"levels", "levels"},
+      {"start_level", "start_level"}, {"boundary", "boundary"},
+      {"crease_method", "crease_method"}, {"fvar_boundary", "fvar_boundary"},
+      {"smooth_triangles", "params={'triangles': 'smooth'}"}, {"threads", "threads"},
       {"normals", "limit_positions()"}, {"limit", "limit_positions()"}};
   return spelling;
 }

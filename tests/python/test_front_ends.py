@@ -1,0 +1,94 @@
+"""The command line and the Python module are two translations of one pipeline
+(framework/pipeline): for the same request they give the same levels — points, faces, the
+user's point, cell and face-varying arrays, hole faces left out — on meshes with boundaries
+and holes, creases and corners, a non-manifold edge, UV seams, point and cell data. The CLI's
+output is written to a file and read back; the ParaView filter is compared with the CLI in
+tests/paraview/refine_test.py."""
+import numpy as np
+import pytest
+
+import subdivkit as sk
+from conftest import MESHES, cli_error, run_cli
+
+
+def with_data(mesh):
+    """`mesh` with a float point array (a smooth function of position, 2 columns), an integer
+    point label and a cell array, so that each kind of array goes through both front-ends."""
+    p = mesh.points
+    point_data = {"field": np.column_stack([p[:, 0] * p[:, 1] + p[:, 2], np.sin(p[:, 0])]),
+                  "label": np.arange(mesh.n_points, dtype=np.int32) % 3}
+    cell_data = {"face_id": np.arange(mesh.n_faces, dtype=float)}
+    out = sk.Mesh(mesh.points, face_offsets=mesh.face_offsets, faces=mesh.face_indices, creases=mesh.creases,
+                  crease_sharpness=mesh.crease_sharpness, corners=mesh.corners, corner_sharpness=mesh.corner_sharpness,
+                  point_data=point_data, cell_data=cell_data)
+    return out
+
+
+CASES = [  # mesh, scheme, levels, CLI options, Python keywords
+    ("plane-with-hole.obj", "catmull-clark", 2, ["--boundary", "edges"], {"boundary": "edges"}),
+    ("plane-with-hole.obj", "catmull-clark", 1, ["--boundary", "none"], {"boundary": "none"}),  # hole faces
+    ("cube-creased.obj", "catmull-clark", 2, ["--crease-method", "chaikin"], {"crease_method": "chaikin"}),
+    ("flap-fan.obj", "catmull-clark", 2, [], {}),  # a non-manifold edge
+    ("octahedron.obj", "loop", 2, [], {}),
+    ("octahedron.obj", "sqrt3", 3, [], {}),  # boundary-free; trisection steps alternate
+    ("cube.obj", "doo-sabin", 2, [], {}),
+]
+
+
+@pytest.mark.parametrize("mesh_name,scheme,levels,cli_options,keywords", CASES)
+def test_cli_and_python_give_the_same_level_with_its_arrays(tmp_path, mesh_name, scheme, levels, cli_options,
+                                                             keywords):
+    mesh = with_data(sk.read_mesh(str(MESHES / mesh_name)))
+    source = tmp_path / "in.vtp"
+    sk.write_mesh(str(source), mesh)
+    out = tmp_path / "out.vtp"
+    run_cli("refine", source, "-s", scheme, "-l", levels, "--arrays", "none", "-o", out, "-q", *cli_options)
+    cli = sk.read_mesh(str(out))
+    python = sk.refine(mesh, scheme, levels, **keywords)
+
+    assert python.points.shape == cli.points.shape
+    assert np.abs(python.points - cli.points).max() <= 1e-14
+    assert [list(f) for f in python.face_list()] == [list(f) for f in cli.face_list()]
+    for name in ("field", "label"):
+        assert np.abs(np.asarray(python.point_data[name], float).reshape(cli.point_data[name].shape)
+                      - cli.point_data[name]).max() <= 1e-14, name
+    assert np.array_equal(np.asarray(python.cell_data["face_id"]).ravel(), np.asarray(cli.cell_data["face_id"]).ravel())
+
+
+@pytest.mark.parametrize("mesh_name,scheme,mode", [("textured-tube.obj", "catmull-clark", "corners-only"),
+                                                   ("textured-tube.obj", "catmull-clark", "all"),
+                                                   ("textured-tube-triangles-creased.obj", "loop", "none")])
+def test_cli_and_python_carry_the_same_face_varying_data(tmp_path, mesh_name, scheme, mode):
+    path = str(MESHES / mesh_name)
+    out = tmp_path / "out.obj"  # OBJ keeps face-varying data as vt with its own indices
+    run_cli("refine", path, "-s", scheme, "-l", 2, "--fvar-boundary", mode, "-o", out, "-q")
+    cli = sk.read_mesh(str(out))
+    python = sk.refine(sk.read_mesh(path), scheme, 2, fvar_boundary=mode)
+    assert np.abs(python.points - cli.points).max() <= 1e-14
+    (name, (values, indices)), = python.face_varying.items()
+    cli_values, cli_indices = cli.face_varying[name]
+    # Same UV at every face corner (OBJ may number the values differently).
+    assert np.abs(np.asarray(values)[np.asarray(indices)] - np.asarray(cli_values)[np.asarray(cli_indices)]).max() <= 1e-14
+
+
+def test_unused_vertices_are_dropped_by_both_front_ends_with_a_warning(tmp_path):
+    cube = sk.read_mesh(str(MESHES / "cube.obj"))
+    lonely = sk.Mesh(np.vstack([cube.points, [[5.0, 5.0, 5.0]]]), face_offsets=cube.face_offsets, faces=cube.face_indices)
+    source = tmp_path / "lonely.obj"
+    sk.write_mesh(str(source), lonely)
+    result = run_cli("refine", source, "-l", 1, "-o", tmp_path / "out.obj")
+    assert "warning" in result.stderr and "1 vert" in result.stderr
+    with pytest.warns(UserWarning, match="1 vert"):
+        fine = sk.refine(lonely, "catmull-clark", 1)
+    assert fine.n_points == 26  # the cube's 8 + 12 + 6, without the unused vertex
+
+
+def test_option_errors_speak_each_front_ends_language():
+    cube = sk.read_mesh(str(MESHES / "cube.obj"))
+    # The pipeline refuses the start level; Python names its keyword, not the CLI's option.
+    with pytest.raises(sk.Error, match="start_level 200: give 0 to 100") as python_error:
+        sk.refine(cube, "catmull-clark", 1, start_level=200)
+    assert "--" not in str(python_error.value)
+    # A level-count mismatch of a sequence: the CLI names its options.
+    message = cli_error("refine", MESHES / "cube.obj", "-s", "catmull-clark:1,loop:1", "-l", 3, "-o", "x.obj")
+    assert "--scheme 'catmull-clark:1,loop:1' runs 2 level(s), but --levels asks for 3" in message
