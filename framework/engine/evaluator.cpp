@@ -142,7 +142,7 @@ void Evaluator::evaluate(std::span<const double> base_values, std::span<double> 
     const std::span<double> to = i + 1 == p.passes.size()
                                      ? finest
                                      : std::span<double>(p.buffers[i % 2]).first(size_t(pass.target_count) * channels);
-    pass.apply(p.topology, from, to, channels, p.options.row_paths);
+    pass.apply(p.topology, from, to, channels, p.options.evaluation.row_paths);
     from = to;
   }
 }

@@ -66,7 +66,7 @@ void step_rows_applied(const Scheme& scheme, const StepRules& step, const Level&
                        int channels) {
   const StepInputs inputs = prepare_step(scheme, step, parent, level, options, parameters, /*lazy_features=*/true);
   apply_step_rows(step_context(scheme, step, inputs, parent, origins, features_refined, level, options), values, out,
-                  channels, options.row_paths);
+                  channels, options.evaluation.row_paths);
 }
 
 // A child face inside a hole is a hole (OpenSubdiv's Vtr::Refinement passes the face tag on).

@@ -21,10 +21,28 @@ namespace subdiv {
 // Parameter name -> one value per vertex of the base mesh.
 using VertexParameters = std::map<std::string, std::vector<double>>;
 
+// How step_values and the Evaluator compute values, never what they are: switches for tests
+// and benchmarks that compare the engine's evaluation paths or count them. Every setting
+// gives the same values; the defaults are the fastest. (The number of threads is the
+// caller's: a scoped limit, pipeline/thread_limit.h, or TBB's own global_control.)
+struct EvaluationSwitches {
+  // Smooth interior rows replayed from learnt plans (rules/row_plans.h): the same rows,
+  // faster; off only to compare or measure.
+  bool use_row_plans = true;
+  // Smooth interior elements computed by the compiled kernels (rules/smooth_kernels.h); off
+  // only to compare or measure.
+  bool use_kernels = true;
+  // Where to count the children computed by kernels, plans and the generic interpreter
+  // (rules/row_paths.h), or null.
+  RowPaths* row_paths = nullptr;
+};
+
+// How to refine: the surface's shape (features: boundary interpolation and crease method, as
+// OpenSubdiv's Sdc::Options), how many levels from which step, what the last level needs,
+// and per-vertex parameters.
 struct RefineOptions {
   int levels = 1;
   FeatureOptions features;  // boundary interpolation and crease method, as in OpenSubdiv
-  int threads = 0;  // 0: all cores
   // How many steps the input mesh has already been through (schemes whose steps alternate,
   // such as sqrt3's boundary trisection, count from the original mesh; also the level l
   // seen by level-dependent formulas).
@@ -36,15 +54,8 @@ struct RefineOptions {
   // with one step and linear rules (smoothing passes and non-linear rules read the new
   // level's rings); otherwise the last level is complete anyway.
   bool faces_only_last_level = false;
-  // Smooth interior rows replayed from learnt plans (rules/row_plans.h): the same rows,
-  // faster; off only to compare or measure.
-  bool use_row_plans = true;
-  // step_values: smooth interior elements computed by the compiled kernels
-  // (rules/smooth_kernels.h); off only to compare or measure.
-  bool use_kernels = true;
-  // step_values: where to count the children computed by kernels, plans and the generic
-  // interpreter (rules/step_evaluator.h), or null.
-  RowPaths* row_paths = nullptr;
+  // How values are computed, for tests and benchmarks (see EvaluationSwitches).
+  EvaluationSwitches evaluation;
   // Values of the schemes' per-vertex parameters ("per_vertex": true in the scheme file,
   // e.g. seed 001's lambda), one per base vertex: a vertex rule reads the value at its
   // vertex; later levels carry them linearly (engine/vertex_parameters.h). Schemes that

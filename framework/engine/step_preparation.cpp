@@ -36,11 +36,11 @@ StepInputs prepare_step(const Scheme& scheme, const StepRules& step, const Level
 StepContext step_context(const Scheme& scheme, const StepRules& step, const StepInputs& inputs, const Level& parent,
                          const ChildOrigins& origins, bool features_refined, int level, const RefineOptions& options) {
   // Row plans replay one vertex's row for another of the same shape: not when their rules differ.
-  const bool plans = options.use_row_plans && !inputs.per_vertex;
+  const bool plans = options.evaluation.use_row_plans && !inputs.per_vertex;
   StepContext s{parent,      origins,         inputs.tables, inputs.features->contexts, features_refined,
                 scheme.path, step.code.get(), level,         plans};
   s.per_vertex = inputs.per_vertex.get();
-  s.use_kernels = options.use_kernels;
+  s.use_kernels = options.evaluation.use_kernels;
   s.classify = inputs.features->classify ? &inputs.features->classify : nullptr;
   return s;
 }

@@ -21,8 +21,8 @@ class PreparedRefinement {
 public:
   // Builds the hierarchy and prepares every step: call it without the GIL.
   PreparedRefinement(SchemeChoice choice, const subdiv::MeshData& base, const std::string& name,
-                     const subdiv::RefineOptions& options)
-      : threads_(options.threads),
+                     const subdiv::RefineOptions& options, int threads)
+      : threads_(threads),
         choice_(std::move(choice)),
         topology_(subdiv::refine_topology(choice_.sequence.runs, surface_base(base, name, choice_), options)),
         finest_(subdiv::mesh_from_level(topology_.levels.back(), {})),
@@ -84,7 +84,7 @@ std::unique_ptr<PreparedRefinement> make_evaluator(py::handle mesh, py::handle s
                                     choice.label, choice.label, levels));
   py::gil_scoped_release unlocked;
   const subdiv::ThreadLimit limit(threads);
-  return std::make_unique<PreparedRefinement>(std::move(choice), base, name, options);
+  return std::make_unique<PreparedRefinement>(std::move(choice), base, name, options, threads);
 }
 
 py::array_t<double> evaluate(PreparedRefinement& e, py::handle points) {

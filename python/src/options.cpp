@@ -35,7 +35,6 @@ subdiv::RefineOptions refine_options(const std::string& boundary, const std::str
   subdiv::RefineOptions o;
   o.features.boundary = boundary_from(boundary);
   o.features.crease_method = crease_method_from(crease_method);
-  o.threads = threads;
   o.first_step = first_step;
   return o;
 }

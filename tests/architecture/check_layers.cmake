@@ -5,7 +5,9 @@
 #     rooms before it;
 #  3. framework/io/vtk (library subdiv_vtkio) uses only its own layers;
 #  4. no VTK header is included outside framework/io/vtk (libsubdiv is VTK-free);
-#  5. no installed (public) header includes an internal one.
+#  5. no installed (public) header includes an internal one;
+#  6. a front-end (tools/subdiv, python/src, plugins/paraview/filters) includes no file of
+#     another front-end.
 # Run: cmake -DSOURCE_DIR=<repo> "-DINTERNAL_HEADERS=a.h;b.h" -P check_layers.cmake
 include(${SOURCE_DIR}/cmake/SubdivLayers.cmake)
 set(problems "")
@@ -86,6 +88,27 @@ foreach(folder IN LISTS top_folders)
       list(APPEND problems "framework/${name}/ is not a layer of cmake/SubdivLayers.cmake: add it there with the layers it uses")
     endif()
   endif()
+endforeach()
+
+# 6. The front-ends (the command line, the Python module, the ParaView filters) stand side by
+#    side on the library: each includes framework/ headers, the reports library and its own
+#    folder's files, never a file of another front-end (they share framework/pipeline).
+foreach(front_end tools/subdiv python/src plugins/paraview/filters)
+  file(GLOB files ${SOURCE_DIR}/${front_end}/*.h ${SOURCE_DIR}/${front_end}/*.cpp ${SOURCE_DIR}/${front_end}/*.cxx)
+  foreach(file IN LISTS files)
+    file(STRINGS ${file} lines REGEX "^[ \t]*#[ \t]*include[ \t]+\"")
+    foreach(line IN LISTS lines)
+      string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]+\"([^\"]+)\".*" "\\1" path "${line}")
+      # Also allowed: the reports library all three may use (tools/reports: text, JSON, SVG of
+      # analysis results), VTK's headers and the module header VTK generates for the filters.
+      if(path MATCHES "^framework/" OR EXISTS ${SOURCE_DIR}/${front_end}/${path} OR
+         EXISTS ${SOURCE_DIR}/tools/reports/${path} OR path MATCHES "^vtk" OR path MATCHES "Module\\.h$")
+        continue()
+      endif()
+      file(RELATIVE_PATH rel ${SOURCE_DIR} ${file})
+      list(APPEND problems "${rel} includes \"${path}\", which is neither framework/ nor a file of ${front_end}: front-ends share only the library (framework/pipeline)")
+    endforeach()
+  endforeach()
 endforeach()
 
 if(problems)

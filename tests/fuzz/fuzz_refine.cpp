@@ -32,7 +32,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto scheme = subdiv::load_scheme_text(scheme_text, "fuzz.json");
     subdiv::RefineOptions options;
     options.levels = kLevels;
-    options.threads = 1;
     const subdiv::Hierarchy h = subdiv::refine(*scheme, subdiv::level_from_mesh(mesh, file), options);
     (void)subdiv::interpolate(h, kLevels, mesh.positions, 3);
     // The same levels without tables, as step_values computes them (flat and smooth kernels,

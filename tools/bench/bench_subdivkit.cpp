@@ -84,7 +84,7 @@ WorkerReport run_subdivkit_updates(const Job& job, const Mesh& mesh, const subdi
     for (int l = 1; l < job.level; ++l) composed = subdiv::compose(composed, h.stencils[size_t(l)]);
     h.stencils.clear();
   } else {
-    options.row_paths = &paths;
+    options.evaluation.row_paths = &paths;
     evaluator = std::make_unique<subdiv::Evaluator>(scheme, h, options);
   }
   once.stencil = clock.lap();
@@ -112,16 +112,15 @@ WorkerReport run_subdivkit(const Job& job, const Mesh& mesh) {
   const auto scheme = subdiv::load_scheme(job.scheme);
   subdiv::RefineOptions options;
   options.levels = job.level;
-  options.threads = job.threads;
-  options.use_row_plans = job.row_plans;
-  options.use_kernels = job.kernels;
+  options.evaluation.use_row_plans = job.row_plans;
+  options.evaluation.use_kernels = job.kernels;
   // As OpenSubdiv's default UniformOptions: the last level's faces only (full with --osd-topology full).
   options.faces_only_last_level = !job.osd_full_topology;
   if (job.update) return run_subdivkit_updates(job, mesh, *scheme, options);
 
   return repeat_cold_and_warm(job, [&](Timings& t, WorkerReport* report) {
     subdiv::RowPaths paths;  // counted in the cold repetition
-    options.row_paths = report ? &paths : nullptr;
+    options.evaluation.row_paths = report ? &paths : nullptr;
     Stopwatch clock;
     subdiv::Level base = subdiv::build_level(mesh.vertex_count, mesh.face_offsets, mesh.face_vertices);
     t.setup = clock.lap();

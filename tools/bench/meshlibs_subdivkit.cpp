@@ -15,11 +15,10 @@ SideRun subdivkit_side(const SideRequest& request) {
   std::shared_ptr<const subdiv::Scheme> scheme = subdiv::load_scheme(request.scheme);
   subdiv::RefineOptions options;
   options.levels = request.level;
-  options.threads = 1;
   options.faces_only_last_level = !request.last_level_full;
   return [scheme, options, level = request.level](const Mesh& mesh, Timings& t, Refined& out) mutable {
     subdiv::RowPaths paths;
-    options.row_paths = &paths;
+    options.evaluation.row_paths = &paths;
     Stopwatch clock;
     subdiv::Level base = subdiv::build_level(mesh.vertex_count, mesh.face_offsets, mesh.face_vertices);
     t.setup = clock.lap();

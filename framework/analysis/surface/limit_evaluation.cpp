@@ -506,7 +506,6 @@ struct SchemeLimits::Impl {
     const int radius = (m && m->ok ? m->radius : 4) + 3;
     const Extracted e = extract_neighbourhood(L, kind, c, radius);
     RefineOptions ro = one_step(step);
-    ro.threads = 1;
     const Hierarchy h = refine(scheme, e.level, ro);
     auto back = [&](const LimitRows& deeper) { return renumbered(pulled_back(deeper, h.stencils[0]), e.original); };
     Labelling child_lab;

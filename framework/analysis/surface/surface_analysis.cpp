@@ -804,7 +804,6 @@ SurfaceAnalysis analyse_patch(const Scheme& scheme, const Patch& patch, const Lo
   AnalysisRun cx{scheme, patch, config, options, {}, analysis_steps(scheme), {}, {}, {}};
   cx.refine.features = options.features;
   cx.refine.first_step = config.first_step;
-  cx.refine.threads = 1;
   out.steps = cx.steps;
   try {
     analyse(cx, out);

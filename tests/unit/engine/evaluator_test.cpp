@@ -89,10 +89,10 @@ TEST_CASE("an evaluator computes each point by the path step_values takes (flat 
       RefineOptions o;
       o.levels = 2;
       const Hierarchy h = refine_topology(*scheme, c.level, o);
-      o.row_paths = &walked;
+      o.evaluation.row_paths = &walked;
       const SchemeRun run{scheme.get(), 2};
       stepped(std::span(&run, 1), h, c.positions, 3, o);
-      o.row_paths = &resolved;
+      o.evaluation.row_paths = &resolved;
       Evaluator(*scheme, h, o).evaluate(c.positions, 3);
       CHECK(resolved.flat.load() == walked.flat.load());
       CHECK(resolved.kernel.load() == walked.kernel.load());

@@ -110,7 +110,7 @@ TEST_CASE("weights that do not sum to one are refused the same way without stenc
   }
   REQUIRE(with_tables.find("summing to") != std::string::npos);
   for (bool plans : {true, false}) {
-    o.use_row_plans = plans;
+    o.evaluation.use_row_plans = plans;
     CHECK_THROWS_WITH_AS(step_values(*scheme, h, 0, cube.positions, 3, o), with_tables.c_str(), Error);
   }
 }

@@ -33,7 +33,7 @@ void check_same_values(const std::string& name, const LevelCase& c, int levels, 
   const auto scheme = load_scheme(name);
   RefineOptions o;
   o.levels = levels;
-  o.use_row_plans = plans;
+  o.evaluation.use_row_plans = plans;
   const Hierarchy topology = refine_topology(*scheme, c.level, o);
   const Hierarchy tables = refine(*scheme, c.level, o);
   std::vector<double> direct = data_for(c, channels), through_tables = direct;

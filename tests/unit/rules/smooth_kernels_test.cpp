@@ -119,10 +119,10 @@ struct Run {
 Run run(const Scheme& scheme, const Case& c, int levels, bool kernels) {
   RefineOptions o;
   o.levels = levels;
-  o.use_kernels = kernels;
-  o.use_row_plans = kernels;
+  o.evaluation.use_kernels = kernels;
+  o.evaluation.use_row_plans = kernels;
   RowPaths paths;
-  o.row_paths = &paths;
+  o.evaluation.row_paths = &paths;
   const Hierarchy h = refine_topology(scheme, c.level, o);
   Run r;
   std::vector<double> values = c.positions;

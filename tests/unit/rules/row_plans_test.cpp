@@ -18,7 +18,7 @@ namespace {
 Hierarchy refine_with(const std::string& scheme, const Level& level, bool plans, int levels = 2) {
   RefineOptions o;
   o.levels = levels;
-  o.use_row_plans = plans;
+  o.evaluation.use_row_plans = plans;
   return refine(*load_scheme(scheme), level, o);
 }
 
