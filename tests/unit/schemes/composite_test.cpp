@@ -34,7 +34,7 @@ TEST_CASE("quad-bspline of degree 3 equals catmull-clark on a regular quad torus
 }
 
 TEST_CASE("quad-bspline differs from catmull-clark at an extraordinary vertex exactly as the vertex rules predict") {
-  // Catmull-Clark: (n-3)/n v + 2/n R + 1/n Q; plain averaging: v/4 + R/2 + Q/4 (issue 4).
+  // Catmull-Clark: (n-3)/n v + 2/n R + 1/n Q; plain averaging: v/4 + R/2 + Q/4.
   const test::Mesh m = test::cube();  // valence 3 everywhere, quads only
   const auto cc = test::refine_mesh(m, "catmull-clark", 1);
   const auto qb = test::refine_mesh(m, "quad-bspline", 1);
