@@ -17,7 +17,7 @@ void check_same(const std::vector<double>& a, const std::vector<double>& b, doub
 
 }  // namespace
 
-TEST_CASE("loop-composite (linear split + seed 002's alpha(k) averaging) equals loop, boundaries included") {
+TEST_CASE("loop-composite (linear split + Loop's averaging mask alpha(k)) equals loop, boundaries included") {
   for (const auto& m : {test::octahedron(), test::torus(6, 5, true), test::grid(4, 3, true)}) {
     const auto a = test::refine_mesh(m, "loop", 3);
     const auto b = test::refine_mesh(m, "loop-composite", 3);
