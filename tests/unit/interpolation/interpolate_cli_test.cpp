@@ -160,7 +160,7 @@ TEST_CASE("interpolate: bad input is refused, nothing is written") {
   check_refused(kCross + " --scheme chaikin:1,cubic-bspline", dir, "'chaikin' is a curve scheme inside a sequence");
   check_refused(source_path("examples/curves/circle8.obj"), dir, "has no faces (it has 1 polyline)");
   check_refused(source_path("examples/curves/circle8.obj") + " --scheme cubic-bspline --lambda 0.5", dir,
-                "seed 001's shape parameter is for surfaces");
+                "Lin et al. 2015's shape parameter is for surfaces");
   check_refused(source_path("examples/curves/open-zigzag.obj") + " --scheme cubic-bspline", dir, "hold no polylines",
                 false, "off");
   check_refused(source_path("examples/curves/circle8.obj") + " --scheme tension-bspline", dir, "stationary");
