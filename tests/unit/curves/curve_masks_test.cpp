@@ -142,8 +142,8 @@ TEST_CASE("the smoothness the scheme files state holds by the symbol analysis (D
   for (int d = 1; d <= 6; ++d) CHECK(smoothness(*curve("bspline", {{"d", std::to_string(d)}})) == d - 1);
   CHECK(smoothness(*curve("two-point")) == 0);
   CHECK(smoothness(*curve("ternary-bspline")) == 1);
-  // four-point: w in [0, 0.154508], just below (sqrt(5) - 1)/8 (Dyn, Levin, Gregory); seed
-  // 003 states smoothness for (0, 1/8). C1 for every w > 0 in the range, C0 at w = 0.
+  // four-point: w in [0, 0.154508], just below (sqrt(5) - 1)/8 (Dyn, Gregory, Levin 1991); the
+  // 1987 paper states smoothness for (0, 1/8). C1 for every w > 0 in the range, C0 at w = 0.
   CHECK(smoothness(*curve("four-point", {{"w", "0"}})) == 0);
   for (const char* w : {"0.01", "0.0625", "0.1", "0.125", "0.15", "0.154508"}) {
     CAPTURE(w);
