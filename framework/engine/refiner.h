@@ -57,7 +57,7 @@ struct RefineOptions {
   // How values are computed, for tests and benchmarks (see EvaluationSwitches).
   EvaluationSwitches evaluation;
   // Values of the schemes' per-vertex parameters ("per_vertex": true in the scheme file,
-  // e.g. seed 001's lambda), one per base vertex: a vertex rule reads the value at its
+  // e.g. Lin et al. 2015's lambda), one per base vertex: a vertex rule reads the value at its
   // vertex; later levels carry them linearly (engine/vertex_parameters.h). Schemes that
   // do not declare a name ignore it; a name no scheme of the run declares is an error.
   VertexParameters vertex_parameters;

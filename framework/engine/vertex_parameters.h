@@ -1,6 +1,6 @@
 #pragma once
-// Scheme parameters given per vertex (a parameter declared "per_vertex": true, e.g. seed
-// 001's shape parameter lambda): the values are checked against every scheme of the run
+// Scheme parameters given per vertex (a parameter declared "per_vertex": true, e.g. Lin
+// et al. 2015's shape parameter lambda): the values are checked against every scheme of the run
 // that declares them, carried down the levels, and turned into one weight table per
 // distinct value for the vertex rules of a step (rules/step_rows.h: PerVertexTables).
 #include <map>

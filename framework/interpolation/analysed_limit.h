@@ -1,6 +1,6 @@
 #pragma once
 // Limit masks from the scheme's own eigen-analysis (framework/analysis/surface/limit_evaluation.h,
-// seed 000 §5 proposition 1: the left eigenvector of eigenvalue 1 of the local subdivision
+// Halstead, Kass & DeRose 1993: the left eigenvector of eigenvalue 1 of the local subdivision
 // matrix), for any linear scheme with vertex points: the shipped ones, JSON schemes users
 // write and plugin schemes alike. Darts, creases, corners and semi-sharp features are
 // covered: a vertex whose neighbourhood is not a known configuration is refined until it

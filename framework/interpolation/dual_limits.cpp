@@ -64,7 +64,7 @@ std::vector<Index> vertex_faces_after_step(const Hierarchy& h) {
 DualCentroidLimit::DualCentroidLimit(std::shared_ptr<const Scheme> scheme, RefineOptions options)
     : scheme_(std::move(scheme)), options_(options) {}
 
-std::string DualCentroidLimit::name() const { return fmt::format("V-face centroids of {} (seed 000 §5)", scheme_->name); }
+std::string DualCentroidLimit::name() const { return fmt::format("V-face centroids of {} (Doo & Sabin 1978)", scheme_->name); }
 
 StencilTable DualCentroidLimit::stencils_at(const Level& level, int step) const {
   RefineOptions one = options_;

@@ -1,8 +1,8 @@
 #pragma once
 // Limit points of control vertices under dual schemes (Doo-Sabin, its centroid variant,
 // mid-edge). A dual step makes no vertex points, but it makes a V-face around every
-// vertex v. When the scheme's face rules keep each face's centroid (seed 000 §5: "Doo-Sabin
-// interpolates the centroid of every face": the child F-face of a face has the same
+// vertex v. When the scheme's face rules keep each face's centroid (Doo & Sabin 1978: Doo-Sabin
+// interpolates the centroid of every face: the child F-face of a face has the same
 // centroid and the nested F-faces shrink to one limit point), the limit point of v's V-face
 // is its centroid, which is the point of the limit surface that belongs to v:
 //

@@ -19,10 +19,10 @@
 // local subdivision matrices have no convergent eigenvector of 1) is refused with each
 // candidate's reason.
 //
-// Sequences "A:k,...,B" (seed 001's two-step scheme is "shape step:1, then Catmull-Clark"): the prefix
+// Sequences "A:k,...,B" (Lin et al. 2015's two-step scheme is "shape step:1, then Catmull-Clark"): the prefix
 // runs are applied once and B forever after, so the limit is B's mask on the level after
 // the prefix composed with the prefix's stencils (CompositeLimit), read at the base
-// vertices' vertex points. Seed 001's closed form (2) is this composite for its two-step
+// vertices' vertex points. Lin et al. 2015's closed form (2) is this composite for its two-step
 // sequence (tests/unit/interpolation/shape_two_step_test.cpp checks them against each other).
 #include <functional>
 #include <memory>
@@ -46,7 +46,7 @@ struct LimitSelectionOptions {
   FeatureOptions features;
   int first_step = 0;  // as RefineOptions::first_step
   // Per-vertex parameters of the sequence's first runs (RefineOptions::vertex_parameters),
-  // e.g. seed 001's lambda; the last scheme, applied forever, must not read them per vertex.
+  // e.g. Lin et al. 2015's lambda; the last scheme, applied forever, must not read them per vertex.
   VertexParameters vertex_parameters;
 };
 

@@ -1,12 +1,12 @@
 #pragma once
 // Progressive iterative interpolation (Chen et al. 2008 for Catmull-Clark; local form:
-// Zhao, Lin, Bao 2012; with shape control: seed 001) for any linear limit operator L:
+// Zhao, Lin, Bao 2012; with shape control: Lin et al. 2015) for any linear limit operator L:
 //
 //   D^k = V^0 - L V^k                    (targets V^0 are the initial control points)
 //   V_P^{k+1} = V_P^k + D_P^k,  V_Q^{k+1} = V_Q^k
 //
 // P the moving vertices, Q the fixed ones. It converges when the eigenvalues of L_PP lie in
-// (0, 2); for Catmull-Clark, Loop and seed 001's two-step scheme (lambda in (7/20, 1]) they
+// (0, 2); for Catmull-Clark, Loop and Lin et al. 2015's two-step scheme (lambda in (7/20, 1]) they
 // lie in (0, 1] (L_PP = C D, C diagonal positive, D symmetric positive definite). The
 // residual reported is |D_v^k| over the moving vertices.
 #include <cstdint>
@@ -58,7 +58,7 @@ ProgressiveResult progressive_interpolation(const LimitEvaluator& evaluator, con
                                             std::span<const double> targets, std::span<const std::uint8_t> moving,
                                             const ProgressiveOptions& options = {});
 
-// Theorem 2 of seed 001 for any limit operator: the final offsets of the fixed vertices,
+// Theorem 2 of Lin et al. 2015 for any limit operator: the final offsets of the fixed vertices,
 //   D_Q^inf = D_Q^0 - L_QP L_PP^-1 D_P^0,  D^0 = V^0 - L V^0,
 // channels per vertex (zeros on moving vertices). Throws subdiv::Error when L_PP is singular.
 std::vector<double> predicted_fixed_offsets(const StencilTable& limit, std::span<const double> targets,

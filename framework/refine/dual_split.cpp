@@ -1,4 +1,4 @@
-// Dual splits. Doo-Sabin (seed 000 §4(b), seed 004): a new point per face corner; the new
+// Dual splits. Doo-Sabin (Doo & Sabin 1978; boundaries: Nasri 1987): a new point per face corner; the new
 // faces are F-faces (one per old face), E-faces (one per interior edge) and V-faces (one
 // per vertex whose faces close around it, or per boundary vertex with three or more
 // faces). Mid-edge (Peters-Reif 1997): a new point per edge; F-faces and V-faces.

@@ -1,4 +1,4 @@
-// Primal quad and triangle splits (seed 000 §4: "a triangle is split into 4"; Catmull-Clark's
+// Primal quad and triangle splits (Loop 1987: a triangle is split into 4; Catmull & Clark 1978's
 // topology: new face point joined to the new edge points).
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>

@@ -1,4 +1,4 @@
-// sqrt(3) split (Kobbelt 2000, section 5; seed 000 §4): a new point in every face, joined to
+// sqrt(3) split (Kobbelt 2000, section 5): a new point in every face, joined to
 // the face's corners; every old interior edge is flipped to join the two new points beside it.
 // Boundary and sharp ("feature") edges are never flipped; Kobbelt's boundary rule alternates:
 //

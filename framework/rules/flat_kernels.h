@@ -65,9 +65,8 @@ public:
   // For repeated evaluation (engine/evaluator.h): which vertices and edges the loops take,
   // and the points they gather (a ring's far ends, a triangle pair's opposite vertices),
   // read off the topology once. Each later run reads flat index lists, as a stencil table
-  // does, instead of walking rings and triangles and testing each element again: Loop's
-  // level-1 update of a 1M-triangle torus about 21 -> 15 ms on one thread, level 2
-  // 104 -> 71 ms (docs/benchmarks.md, issue 18 session 7).
+  // does, instead of walking rings and triangles and testing each element again
+  // (docs/benchmarks.md has the times).
   // The same points are added in the same order: the same bits. Costs one index per ring
   // entry, two or four per edge and a byte per vertex, for the evaluator's lifetime.
   void resolve_neighbourhoods();

@@ -30,7 +30,7 @@ struct FormulaUses {
 // Besides muParser's built-in functions (sin, cos, sqrt, exp, abs, min, max, rint, ...)
 // formulas may call binom(a, b), floor(x), ceil(x) and mod(a, b), and use the scheme's
 // level-dependent state variables (non-stationary schemes, e.g. the tension alpha_k of
-// seed 000 §6(b)). A NamedFormula whose `next` is not empty is a state variable. Its value
+// Morin, Warren & Weimer 2001). A NamedFormula whose `next` is not empty is a state variable. Its value
 // while level l is refined (the step from level l to level l + 1) is
 //     x(0)     = expression, evaluated with l = 0,
 //     x(l + 1) = next, evaluated with l and every state variable at their step-l values.

@@ -31,7 +31,7 @@ enum class Role : std::uint8_t {
   Vertices,  // face rule: the face's vertices in order; corner rule: counted from the corner
   FaceCentroids,  // vertex rule: the centroid of each incident face (averaging passes)
   CreaseNeighbours,  // vertex crease rule: the vertices across the two sharp (or boundary) edges
-  Diagonals,  // vertex rule: in each incident quad, the vertex opposite (seed 001's f_i)
+  Diagonals,  // vertex rule: in each incident quad, the vertex opposite (f_i of Lin et al. 2015)
   Wings,     // edge rule: in each incident triangle, the vertex off the edge (= opposite)
   FarWings,  // edge rule: for each incident triangle (a, b, c), the vertices across (b, c) and (c, a)
   EndRing0,  // edge rule: the ring of the edge's first end, counted CCW from the edge (j = 0 is the other end)

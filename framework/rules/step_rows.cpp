@@ -83,8 +83,8 @@ void fill_edge_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, 
 }
 
 // A face corner beside a sharp face edge follows the (dual) curve scheme along that edge:
-// rule 0 for the point near the segment's start, rule 1 near its end (seed 000: "open
-// meshes use Chaikin"; our crease extension for dual schemes, docs/scheme-format.md).
+// rule 0 for the point near the segment's start, rule 1 near its end (Nasri 1987: the
+// boundary follows Chaikin; our crease extension for dual schemes, docs/scheme-format.md).
 void fill_corner_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index f, int corner) {
   const Level& L = s.parent;
   const int k = L.face_size(f);

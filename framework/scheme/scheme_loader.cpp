@@ -524,7 +524,7 @@ std::vector<std::string> parse_curve_weights(const Json& w, const Place& at, For
 long floor_div(long a, long b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
 
 // "mask": {"first": F, "size": S, "a": "formula of j"} or {"first": F, "a": [a_F, a_F+1, ...]}:
-// the coefficients a_i of P^{k+1}_i = sum_j a_{i - m j} P^k_j (seed 000 §2, §7), i from F.
+// the coefficients a_i of P^{k+1}_i = sum_j a_{i - m j} P^k_j (Dyn, Gregory & Levin 1991), i from F.
 // They are evaluated once (they may not depend on l or state) and turned into the
 // equivalent rules: rule r has weight a_{r - m (start_r + t)} on old point i + start_r + t.
 void expand_mask(const Json& mask, const Place& at, FormulaSet& formulas, CurveScheme& curve) {

@@ -1,6 +1,6 @@
 #pragma once
 // A scheme applied for a number of levels: what `--scheme a:1,b:3` says, and what the
-// engine refines with. Runs apply in order (seed 001's two-step scheme is a shape step
+// engine refines with. Runs apply in order (Lin et al. 2015's two-step scheme is a shape step
 // for one level, then Catmull-Clark).
 namespace subdiv {
 

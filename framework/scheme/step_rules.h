@@ -12,7 +12,7 @@
 namespace subdiv {
 
 // One step of a scheme level: a split with its rules, or a smoothing pass that moves the
-// vertices of an unchanged mesh (refine-then-average schemes, seed 002 and seed 003).
+// vertices of an unchanged mesh (refine-then-average schemes: Lane & Riesenfeld 1980, Stam 2001).
 struct StepRules {
   bool is_split = true;
   SplitKind split = SplitKind::Quad;

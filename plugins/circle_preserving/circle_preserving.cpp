@@ -1,9 +1,9 @@
 // Circle-preserving four-point subdivision (M. Sabin, N. Dodgson, "A circle-preserving variant
 // of the four-point subdivision scheme", Mathematical Methods for Curves and Surfaces:
-// Tromsø 2004; seed 000 §6(c)). A non-linear plugin: no stencils, the engine applies it.
+// Tromsø 2004). A non-linear plugin: no stencils, the engine applies it.
 //
 // The linear four-point scheme puts the new point P between B and C (neighbours A, D) where
-// the second difference at P is the mean of those at B and C (seed 000 §6(c)):
+// the second difference at P is the mean of those at B and C (Sabin & Dodgson 2004):
 //     [B + C - 2P] / (1/4) = ([A + C - 2B] + [B + D - 2C]) / 2.
 // Here each end's second difference is replaced by its circle: the circle through A, B, C
 // puts P at the midpoint of its arc BC (the arc away from A), the circle through B, C, D at

@@ -90,7 +90,7 @@ def analyze(scheme, valences=range(3, 13), *, boundary=False, boundary_interpola
 
     Surface schemes (returns SurfaceAnalysis): the local subdivision matrix around a vertex
     of each valence (an n-gon face for dual schemes) is built by the engine's own stencils
-    and its eigen-structure checked (seed 000 §3): lambda_0 = 1 simple, lambda_1 = lambda_2
+    and its eigen-structure checked (Reif 1995): lambda_0 = 1 simple, lambda_1 = lambda_2
     real with two eigenvectors dominating |lambda_3|, and a regular, injective
     characteristic map. ``boundary=True`` analyses boundary vertices instead (valences
     from 2). ``level`` picks the weights of level-dependent schemes.

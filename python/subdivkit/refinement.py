@@ -376,7 +376,7 @@ def interpolate(mesh, scheme="catmull-clark", *, select=None, tolerance=None, ma
         A surface scheme or sequence such as "catmull-clark-shape:1,catmull-clark", or a
         curve scheme for polylines.
     params : dict, optional
-        Parameter values, as in refine(); seed 001's shape parameter is
+        Parameter values, as in refine(); Lin et al. 2015's shape parameter is
         ``params={"lambda": 0.5}`` with "catmull-clark-shape:1,catmull-clark".
 
     Returns an Interpolation. Raises subdivkit.Error when the scheme has no checked limit

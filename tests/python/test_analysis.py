@@ -1,4 +1,4 @@
-"""analyze() against closed forms from the literature (seed 000)."""
+"""analyze() against closed forms from the literature (docs/references.md)."""
 import numpy as np
 import pytest
 
@@ -8,7 +8,7 @@ VALENCES = np.arange(3, 13)
 
 
 def catmull_clark_subdominant(n):
-    """Seed 000 §5: lambda = (4 + A_n)/16,
+    """Halstead, Kass & DeRose 1993: lambda = (4 + A_n)/16,
     A_n = 1 + cos(2 pi/n) + cos(pi/n) sqrt(2 (9 + cos(2 pi/n)))."""
     c = np.cos(2 * np.pi / n)
     return (4 + 1 + c + np.cos(np.pi / n) * np.sqrt(2 * (9 + c))) / 16
@@ -56,7 +56,7 @@ def test_spectrum_is_a_padded_array_of_moduli():
 def test_curve_schemes_give_their_symbol_and_spectrum():
     b = sk.analyze("cubic-bspline")
     assert isinstance(b, sk.CurveAnalysis)
-    # Mask (1, 4, 6, 4, 1)/8 on -2..2; C2; eigenvalues 1, 1/2, 1/4, 1/8, 1/8 (seed 000 §3).
+    # Mask (1, 4, 6, 4, 1)/8 on -2..2; C2; eigenvalues 1, 1/2, 1/4, 1/8, 1/8 (Zorin et al. 2000).
     assert b.mask_first == -2 and np.allclose(b.mask, np.array([1, 4, 6, 4, 1]) / 8)
     assert b.convergent and b.smoothness == 2
     assert np.allclose(np.sort(np.abs(b.eigenvalues))[::-1], [1, 1 / 2, 1 / 4, 1 / 8, 1 / 8])

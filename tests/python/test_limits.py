@@ -20,7 +20,7 @@ def neighbours(mesh):
 
 @pytest.mark.parametrize("mesh_name", ["cube.obj", "torus-quads.obj"])
 def test_catmull_clark_limit_points_are_the_closed_form(mesh_name):
-    # Seed 000: the limit of a vertex of valence n on a quad mesh is
+    # Halstead, Kass & DeRose 1993: the limit of a vertex of valence n on a quad mesh is
     # (n^2 V + 4 sum(E_j) + sum(F_j)) / (n (n + 5)), E_j edge neighbours, F_j diagonals.
     mesh = sk.read_mesh(MESHES / mesh_name)
     edges, diagonals = neighbours(mesh)

@@ -1,6 +1,6 @@
 """refine() against independent references: the `subdiv` command line's exact OBJ output
 (read by a plain-text parser, not by the module), and a NumPy Catmull-Clark step written
-from the rules of seed 000 §4(a)."""
+from the rules of Catmull & Clark 1978."""
 import numpy as np
 import pytest
 

@@ -1,5 +1,5 @@
 #pragma once
-// Catmull-Clark and Loop written straight from seed 000 §4, independent of the engine's
+// Catmull-Clark and Loop written straight from Catmull & Clark 1978 and Loop 1987, independent of the engine's
 // rule machinery, for interior (closed-mesh) vertices. Tests compare the engine to these.
 #include <array>
 #include <cmath>
@@ -17,7 +17,7 @@ inline P3 operator+(P3 a, P3 b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}
 inline P3 operator*(double s, P3 a) { return {s * a[0], s * a[1], s * a[2]}; }
 inline double dist(P3 a, P3 b) { return std::sqrt(std::pow(a[0] - b[0], 2) + std::pow(a[1] - b[1], 2) + std::pow(a[2] - b[2], 2)); }
 
-// Seed 000 §4(a), arbitrary-topology rules: face centroid; edge (V1 + V2 + F1 + F2)/4;
+// Catmull & Clark 1978, arbitrary-topology rules: face centroid; edge (V1 + V2 + F1 + F2)/4;
 // vertex Q/n + 2R/n + (n-3)V/n with Q the mean of adjacent face points and R the mean of
 // adjacent edge midpoints. Returns points in engine order: vertices, edges, faces.
 inline std::vector<double> catmull_clark_by_seed(const Level& L, const std::vector<double>& p) {

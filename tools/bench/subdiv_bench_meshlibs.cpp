@@ -22,7 +22,7 @@
 namespace subdiv_bench {
 namespace {
 
-constexpr double kTargetRatio = 1.0 / 3.0;  // issue 18: at least 3x faster
+constexpr double kTargetRatio = 1.0 / 3.0;  // the target: at least 3x faster
 
 // What each library's subdivider computes on closed meshes, from its source, against the
 // shipped scheme file (printed once per pair, so the output says what was compared).

@@ -154,7 +154,7 @@ void run_surface(const AnalyzeArgs& a) {
         for (const auto& line : surface_summary_lines(r)) fmt::print("  {}\n", line);
       }
   } else {
-    fmt::print("\ncurvature (seed 000 §3, lambda_1^2 against |lambda_3|):\n");
+    fmt::print("\ncurvature (Peters & Reif 2004, lambda_1^2 against |lambda_3|):\n");
     for (const auto& r : interior)
       if (!r.curvature.empty()) fmt::print("  n = {:>2}: {}\n", r.config.valence, r.curvature);
   }

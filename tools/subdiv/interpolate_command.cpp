@@ -173,14 +173,14 @@ void run(const InterpolateArgs& a) {
   }
   if (is_curve_scheme(a.scheme)) {
     if (!a.lambda.empty())
-      throw Error(fmt::format("--lambda: '{}' is a curve scheme; seed 001's shape parameter is for surfaces", a.scheme));
+      throw Error(fmt::format("--lambda: '{}' is a curve scheme; Lin et al. 2015's shape parameter is for surfaces", a.scheme));
     return interpolate_curves_command({a.mesh, a.scheme, a.output, a.refined, a.select, parse_params(a.params),
                                        a.tolerance, a.max_iterations, a.levels, a.verbose, a.quiet});
   }
   refuse_curve_schemes(a.scheme);
   SchemeSequence seq = load_scheme_sequence(a.scheme, a.levels, overrides);
   if (!a.lambda.empty() && !has_lambda(seq))
-    throw Error(fmt::format("--lambda: no scheme in '{}' has a parameter lambda; seed 001's shape control is "
+    throw Error(fmt::format("--lambda: no scheme in '{}' has a parameter lambda; Lin et al. 2015's shape control is "
                             "--scheme catmull-clark-shape:1,catmull-clark", a.scheme));
   if (lambda_value) {
     overrides["lambda"] = a.lambda;
@@ -208,9 +208,9 @@ void run(const InterpolateArgs& a) {
   try {
     choice = select_limit(seq, base, options);
   } catch (const Error& e) {
-    // A one-off first step on its own (seed 001's shape step) has no limit; say how to run it.
+    // A one-off first step on its own (Lin et al. 2015's shape step) has no limit; say how to run it.
     if (seq.runs.size() == 1 && has_lambda(seq))
-      throw Error(fmt::format("{}\n  '{}' has a shape parameter lambda: if it is a first step (seed 001), give the "
+      throw Error(fmt::format("{}\n  '{}' has a shape parameter lambda: if it is a first step (Lin et al. 2015), give the "
                               "sequence --scheme {}:1,catmull-clark", e.what(), seq.schemes[0]->name,
                               seq.schemes[0]->name));
     throw;
@@ -256,7 +256,7 @@ void add_interpolate_command(CLI::App& app) {
   cmd->add_option("mesh", args->mesh, "Input mesh (" + supported_input_formats() + "); its vertices are the targets")
       ->required();
   cmd->add_option("-s,--scheme", args->scheme,
-                  "Scheme or sequence whose limit surface interpolates, e.g. catmull-clark, loop, or seed 001's "
+                  "Scheme or sequence whose limit surface interpolates, e.g. catmull-clark, loop, or Lin et al. 2015's "
                   "catmull-clark-shape:1,catmull-clark (the last scheme repeats); for polylines a curve scheme, "
                   "e.g. cubic-bspline or chaikin")
       ->capture_default_str();
@@ -265,7 +265,7 @@ void add_interpolate_command(CLI::App& app) {
                   "ids ('#' comments)")
       ->capture_default_str();
   cmd->add_option("--lambda", args->lambda,
-                  "Seed 001's shape parameter in (7/20, 1]: one number (as --param lambda=x), or a file with one "
+                  "The shape parameter of Lin et al. 2015, in (7/20, 1]: one number (as --param lambda=x), or a file with one "
                   "value per vertex (as --vertex-param lambda=FILE)");
   add_param_option(cmd, args->params);
   add_vertex_param_option(cmd, args->vertex_params);

@@ -13,7 +13,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Theorem 2 (seed 001) for any limit operator: where the fixed vertices' limit points end.
+// Theorem 2 (Lin et al. 2015) for any limit operator: where the fixed vertices' limit points end.
 std::string theorem_two_note(const StencilTable& limit, const std::vector<double>& targets,
                              const std::vector<std::uint8_t>& moving, const ProgressiveResult& r) {
   double offset = 0, gap = 0;

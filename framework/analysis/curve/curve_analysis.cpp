@@ -17,7 +17,7 @@ std::string root_name(int arity, int k) {
   return k == 1 ? "a(w)" : fmt::format("a(w^{})", k);
 }
 
-// Seed 000 §7 Theorem 1 / eq. (4), for arity m.
+// Dyn, Gregory & Levin 1991's necessary conditions, for arity m.
 std::vector<NecessaryCondition> necessary_conditions(const CurveAnalysis& r, double tolerance) {
   const int m = r.mask.arity;
   const double scale = std::max(1.0, r.symbol.abs_sum());
@@ -83,7 +83,7 @@ CurveAnalysis analyse_curve(const CurveMask& mask, const CurveAnalysisOptions& o
   r.sub_mask_sums = sub_mask_sums(mask);
   r.necessary_conditions_hold = true;
   for (const auto& c : r.conditions) r.necessary_conditions_hold = r.necessary_conditions_hold && c.holds;
-  if (r.necessary_conditions_hold) {  // seed 000 §7 Steps 1-2 stop here otherwise
+  if (r.necessary_conditions_hold) {  // Dyn 1992's algorithm stops here otherwise
     r.levels = smoothness_levels(r.symbol, mask.arity, options);
     r.convergent = r.levels.front().proven();
     // C^(k+1) implies C^k, so the largest proven level is the smoothness, even past a gap.

@@ -1,13 +1,13 @@
 #pragma once
 // Convergence and smoothness of a linear, stationary curve scheme of any arity m from its
-// symbol (seed 000 §7.1), plus the eigen-analysis of its local subdivision matrix
-// (seed 000 §3).
+// symbol (Dyn, Gregory & Levin 1991; Dyn 1992), plus the eigen-analysis of its local subdivision matrix
+// (Zorin et al. 2000).
 //
 // The difference scheme. With F(z; f) = sum_j f_j z^j, one step is F(z; S_a f) =
-// a(z) F(z^m; f) (seed 000 §7 eq. (3)) and F(z; Δf) = (1 - z) F(z; f). Because
+// a(z) F(z^m; f) (Dyn, Gregory & Levin 1991) and F(z; Δf) = (1 - z) F(z; f). Because
 // 1 - z^m = (1 - z) σ(z) with σ(z) = 1 + z + ... + z^{m-1}, a(z) = σ(z) q(z) gives
-// Δ(S_a f) = S_q Δf: seed 000 §7 Theorem 2 for m = 2, and the same computation for any m.
-// S_a converges iff a(1) = m, σ divides a, and S_q is contractive (seed 000 §7 Theorem 3;
+// Δ(S_a f) = S_q Δf: Dyn, Gregory & Levin 1991 for m = 2, and the same computation for any m.
+// S_a converges iff a(1) = m, σ divides a, and S_q is contractive (Dyn, Gregory & Levin 1991;
 // N. Dyn, D. Levin, "Subdivision schemes in geometric modelling", Acta Numerica 11 (2002)
 // 73-144, §4 for m = 2; M.F. Hassan, I.P. Ivrissimtzis, N.A. Dodgson, M.A. Sabin, "An
 // interpolating 4-point C2 ternary stationary subdivision scheme", CAGD 19 (2002) 1-18,
@@ -16,7 +16,7 @@
 //
 // Smoothness. The divided differences m^k Δf^k obey m^{k+1} Δf^{k+1} = S_{m a/σ}(m^k Δf^k),
 // so with a(z) = (σ(z)/m)^k b_k(z) the scheme S_a is C^k when S_{b_k} converges
-// (seed 000 §7 Theorem 4 for m = 2, where σ/m = (1+z)/2). b_k(1) = a(1) = m, so S_{b_k}
+// (Dyn, Gregory & Levin 1991 for m = 2, where σ/m = (1+z)/2). b_k(1) = a(1) = m, so S_{b_k}
 // converges when σ divides b_k and q_k = b_k/σ is contractive. Level k of this file is
 // that test; level 0 is convergence itself.
 #include "framework/analysis/curve/curve_contractivity.h"
@@ -31,7 +31,7 @@
 
 namespace subdiv {
 
-// A necessary condition for convergence (seed 000 §7 Theorem 1 and eq. (4)): a(1) = m and
+// A necessary condition for convergence (Dyn, Gregory & Levin 1991): a(1) = m and
 // a(w^k) = 0 for w = exp(2 pi i/m), k = 1 .. m-1 (for m = 2: a(-1) = 0).
 struct NecessaryCondition {
   std::string name;               // "a(1)", "a(-1)", "a(w)", "a(w^2)", ...

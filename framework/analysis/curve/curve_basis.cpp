@@ -33,7 +33,7 @@ BasisSamples sample_basis(const CurveMask& raw, const std::string& scheme) {
   const CurveMask mask = trimmed(raw);
   const long m = mask.arity, first = mask.first, last = mask.last();
   BasisSamples s;
-  // phi at the integers is the limit mask at t = 0 (seed 000 §3(d)): the left eigenvector
+  // phi at the integers is the limit mask at t = 0 (Halstead, Kass & DeRose 1993): the left eigenvector
   // of 1 of the local subdivision matrix, whose neighbourhood j holds weight phi(-j).
   const LocalSubdivisionMatrix local = local_subdivision_matrix(mask);
   if (local.size() == 0) throw Error(fmt::format("curve scheme '{}': its mask has no integer in its support", scheme));

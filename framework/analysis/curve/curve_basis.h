@@ -1,8 +1,8 @@
 #pragma once
 // Samples of a curve scheme's refinable function phi (curve_mask.h: the limit curve is
 // sum_j P_j phi(t - j), phi(t) = sum_i a_i phi(m t - i)), exact up to round-off:
-//   - at the integers: the limit mask of the local subdivision matrix (curve_eigen.h, seed
-//     000 §3(d)), since the limit at t = 0 is sum_j phi(-j) P_j;
+//   - at the integers: the limit mask of the local subdivision matrix (curve_eigen.h,
+//     Halstead, Kass & DeRose 1993), since the limit at t = 0 is sum_j phi(-j) P_j;
 //   - at the centre c of phi's support, [first, last] / (m - 1), shifted by integers, from
 //     the integer values through the refinement equation (c is a multiple of 1/(2(m-1)),
 //     reached after a few steps whenever m^r c is an integer).

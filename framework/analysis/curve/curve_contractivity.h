@@ -1,6 +1,6 @@
 #pragma once
 // Contractivity of a difference scheme S_q: the search for L with ||S_q^L||_inf < 1,
-// following the step-by-step algorithm of seed 000 §7.1(b) (Steps 4-6), for any arity m.
+// following the step-by-step algorithm of Dyn 1992, for any arity m.
 #include "framework/analysis/curve/curve_laurent.h"
 
 #include <cstddef>
@@ -9,11 +9,11 @@
 namespace subdiv {
 
 // ||S||_inf of the scheme f_i <- sum_j s_{i - M j} f_j with symbol s(z) and dilation M:
-// the largest sum of |s_i| over one residue class i mod M (seed 000 §7 eq. (13)).
+// the largest sum of |s_i| over one residue class i mod M (Dyn 1992).
 double scheme_norm(const LaurentPolynomial& s, long long dilation);
 
 // The symbol of S_q^{L+1} from that of S_q^L: q_{L+1}(z) = q(z) q_L(z^m)
-// (seed 000 §7 Step 5(c) for m = 2; the same telescoping of eq. (6) for any m).
+// (Dyn 1992 for m = 2; the same telescoping for any m).
 LaurentPolynomial next_iterate(const LaurentPolynomial& q, const LaurentPolynomial& q_L, int arity);
 
 struct ContractivitySearch {
@@ -25,7 +25,7 @@ struct ContractivitySearch {
 };
 
 struct ContractivityOptions {
-  int max_power = 10;                       // M of seed 000 §7 ("5 <= M <= 10")
+  int max_power = 10;                       // largest power L tried (Dyn 1992's M)
   double margin = 1e-10;                    // prove only ||S_q^L|| < 1 - margin (round-off)
   std::size_t max_coefficients = 1u << 24;  // budget for q_L (it has ~ m^L coefficients)
 };

@@ -40,7 +40,7 @@ std::vector<std::complex<double>> sorted_eigenvalues(const Matrix& s) {
   return values;
 }
 
-// Left eigenvector of the real eigenvalue lambda (x S = lambda x, seed 000 §3(c)): the null
+// Left eigenvector of the real eigenvalue lambda (x S = lambda x, Zorin et al. 2000): the null
 // vector of S^T - lambda I. None unless that null space is exactly one-dimensional.
 std::optional<Vector> left_eigenvector(const Matrix& s, double lambda) {
   const Eigen::Index n = s.rows();
@@ -66,7 +66,7 @@ bool has_dominant_one(const std::vector<std::complex<double>>& ev) {
   return ev.size() == 1 || std::abs(ev[1]) < 1.0 - kRealTolerance;
 }
 
-// 1 = lambda_0 > |lambda_1| > |lambda_2|, lambda_1 real and non-zero (seed 000 §3(d)).
+// 1 = lambda_0 > |lambda_1| > |lambda_2|, lambda_1 real and non-zero (Halstead, Kass & DeRose 1993).
 bool has_simple_subdominant(const std::vector<std::complex<double>>& ev) {
   if (!has_dominant_one(ev) || ev.size() < 2) return false;
   const auto l1 = ev[1];
@@ -96,17 +96,17 @@ void add_tangent_mask(const Matrix& s, int first_index, LocalEigenAnalysis& out)
 
 bool ties(double x, double y) { return std::abs(x - y) <= kEigenTieTolerance; }
 
-// Seed 000 §3 "necessary conditions for smoothness", its four cases.
+// The four cases of lambda_1^2 against |lambda_2| (Peters & Reif 2004's argument, for curves).
 std::string indication(const std::vector<std::complex<double>>& ev) {
   if (!has_simple_subdominant(ev)) return "";
   const double square = ev[1].real() * ev[1].real();
   const double l2 = ev.size() > 2 ? std::abs(ev[2]) : 0.0;
   const double l3 = ev.size() > 3 ? std::abs(ev[3]) : 0.0;
   if (ties(square, l2))
-    return ties(l2, l3) ? "lambda1^2 = |lambda2| = |lambda3|: C1 at best by seed 000 §3, curvature may diverge"
-                        : "lambda1^2 = |lambda2| > |lambda3|: C2 possible by seed 000 §3, curvature continuous";
-  return square < l2 ? "lambda1^2 < |lambda2|: C1 at best by seed 000 §3, curvature unbounded"
-                     : "lambda1^2 > |lambda2|: C2 possible by seed 000 §3, curvature tends to zero";
+    return ties(l2, l3) ? "lambda1^2 = |lambda2| = |lambda3|: C1 at best, curvature may diverge"
+                        : "lambda1^2 = |lambda2| > |lambda3|: C2 possible, curvature continuous";
+  return square < l2 ? "lambda1^2 < |lambda2|: C1 at best, curvature unbounded"
+                     : "lambda1^2 > |lambda2|: C2 possible, curvature tends to zero";
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 #pragma once
-// Eigen-analysis of a curve scheme's local subdivision matrix (seed 000 §3(c), (d)): the
+// Eigen-analysis of a curve scheme's local subdivision matrix (Zorin et al. 2000): the
 // spectrum, the limit mask (left eigenvector of 1) and the tangent mask (left eigenvector
 // of the subdominant eigenvalue).
 #include "framework/analysis/curve/curve_local_matrix.h"
@@ -16,12 +16,12 @@ struct LocalEigenAnalysis {
   // of order 1e-8 and may show a tiny imaginary part.
   std::vector<std::complex<double>> eigenvalues;
 
-  // Seed 000 §3(d): if lambda_0 = 1 > |lambda_i|, the limit point of the centre is
+  // Halstead, Kass & DeRose 1993: if lambda_0 = 1 > |lambda_i|, the limit point of the centre is
   // limit_mask . P over the neighbourhood points (weights sum to 1).
   bool has_limit_mask = false;
   std::vector<double> limit_mask;
 
-  // Seed 000 §3(d): if 1 > |lambda_1| > |lambda_2| with lambda_1 real, the tangent at the
+  // Halstead, Kass & DeRose 1993: if 1 > |lambda_1| > |lambda_2| with lambda_1 real, the tangent at the
   // limit point is tangent_mask . P. It is scaled so that tangent_mask . (j)_j = 1, i.e. it
   // returns the derivative per unit of the old parameter for a scheme with linear
   // precision (on data P_j = j it gives 1).
@@ -29,7 +29,7 @@ struct LocalEigenAnalysis {
   std::complex<double> subdominant = 0.0;   // lambda_1 when there are at least 2 eigenvalues
   std::vector<double> tangent_mask;
 
-  // Seed 000 §3 "necessary conditions for smoothness": lambda_1^2 against |lambda_2| and
+  // Curvature (Peters & Reif 2004's argument, for curves): lambda_1^2 against |lambda_2| and
   // |lambda_3|. An indication, not a proof; empty when lambda_1 is not a simple real one.
   std::string indication;
 };

@@ -1,6 +1,6 @@
 #pragma once
 // Laurent polynomials in one variable: the symbol a(z) = sum_i a_i z^i of a curve mask
-// (seed 000 §7 eq. (2)) and the symbols derived from it by exact division.
+// (Dyn, Gregory & Levin 1991) and the symbols derived from it by exact division.
 #include "framework/analysis/curve/curve_mask.h"
 
 #include <complex>
@@ -19,7 +19,7 @@ struct LaurentPolynomial {
   double abs_sum() const;             // sum of |coefficients|, a scale for tolerances
 };
 
-// a(z) of the mask (seed 000 §7 eq. (2)).
+// a(z) of the mask (Dyn, Gregory & Levin 1991).
 LaurentPolynomial symbol(const CurveMask& mask);
 
 LaurentPolynomial multiply(const LaurentPolynomial& p, const LaurentPolynomial& q);
@@ -28,8 +28,8 @@ LaurentPolynomial scaled(const LaurentPolynomial& p, double factor);
 LaurentPolynomial upsampled(const LaurentPolynomial& p, int m);
 
 // Division by 1 + z + ... + z^{m-1}, the factor that links a scheme of arity m to its
-// difference scheme, since (1 - z^m) = (1 - z)(1 + z + ... + z^{m-1}) (seed 000 §7
-// Theorem 2 for m = 2).
+// difference scheme, since (1 - z^m) = (1 - z)(1 + z + ... + z^{m-1}) (Dyn, Gregory
+// & Levin 1991 for m = 2).
 struct ExactDivision {
   bool exact = false;                 // remainder within tolerance
   double remainder = 0.0;             // max |remainder coefficient| / p.abs_sum()

@@ -1,6 +1,6 @@
 #pragma once
 // The local subdivision matrix of a curve scheme on the invariant neighbourhood of an old
-// point (seed 000 §3(b)).
+// point (Zorin et al. 2000).
 #include "framework/analysis/curve/curve_mask.h"
 
 #include <vector>
@@ -17,7 +17,7 @@ struct LocalSubdivisionMatrix {
   int size() const { return static_cast<int>(rows.size()); }
 };
 
-// The invariant neighbourhood is, as in seed 000 §3(b), the set of control points whose
+// The invariant neighbourhood is, as in Zorin et al. 2000, the set of control points whose
 // basis functions phi(t - j) do not vanish on every small interval around t = 0. The
 // refinable function of a mask a_first..a_last of arity m is supported on
 // [first/(m-1), last/(m-1)] (from phi(t) = sum_i a_i phi(m t - i)), so the neighbourhood
@@ -27,7 +27,7 @@ struct LocalSubdivisionMatrix {
 //
 // This is wider than the smallest set that merely maps to itself (3 points for the first
 // example): that set only sees the limit point, while the full neighbourhood also sees the
-// curve on both sides of it, which is what the eigen-analysis of seed 000 §3(c) needs.
+// curve on both sides of it, which is what the eigen-analysis needs.
 //
 // "Around old point 0" means around parameter t = 0 of the mask's own indexing. For a
 // mask centred on 0 (primal: (1,4,6,4,1)/8, 4-point) that is an old vertex; for a dual

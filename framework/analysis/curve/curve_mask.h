@@ -2,7 +2,7 @@
 // The mask of a linear, stationary, uniform curve subdivision scheme of arity m, and its
 // conversion from and to the per-point rules a scheme author writes.
 //
-// Index convention (seed 000 §2 and §7, eq. (1), generalised to arity m):
+// Index convention (Dyn, Gregory & Levin 1991, generalised to arity m):
 //
 //     P^{k+1}_i = sum_j a_{i - m j} P^k_j .
 //
@@ -15,7 +15,7 @@
 //
 //     a_{r - m (start_r + t)} = w_{r,t} .
 //
-// Example (seed 000 §2, cubic B-spline, m = 2): even rule start -1, (1/8, 3/4, 1/8); odd
+// Example (Lane & Riesenfeld 1980, cubic B-spline, m = 2): even rule start -1, (1/8, 3/4, 1/8); odd
 // rule start 0, (1/2, 1/2). This gives a_2 = a_{-2} = 1/8, a_0 = 3/4, a_1 = a_{-1} = 1/2,
 // i.e. the mask (1, 4, 6, 4, 1)/8 on indices -2..2.
 #include <vector>

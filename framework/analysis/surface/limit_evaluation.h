@@ -3,7 +3,7 @@
 //
 // The masks come from the surface analysis (surface_analysis.h): the left eigenvector of 1
 // gives the limit position, the left eigenvectors of the subdominant pair give two tangents
-// (seed 000 §5, propositions 1 and 2), the normal is their cross product. They are computed
+// (Halstead, Kass & DeRose 1993), the normal is their cross product. They are computed
 // once per configuration (valence, boundary, crease positions, level parity where the scheme
 // alternates) on a synthetic patch and cached.
 //

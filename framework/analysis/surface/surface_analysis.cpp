@@ -218,13 +218,13 @@ std::string curvature_text(const std::vector<Complex>& ev, double l1) {
     const double next = ev.size() > 3 + size_t(mult) ? std::abs(ev[3 + size_t(mult)]) : 0.0;
     if (mult == 3 && next < sq)
       return "lambda_1^2 = lambda_3 = lambda_4 = lambda_5 > |lambda_6|: curvature bounded, can be continuous "
-             "(seed 000 §3 case 3: C2 possible)";
+             "(case 3: C2 possible)";
     return fmt::format("lambda_1^2 = |lambda_3| ({} eigenvalue{} of that modulus): curvature bounded but may "
-                       "split (seed 000 §3 case 2)",
+                       "split (case 2)",
                        mult, mult == 1 ? "" : "s");
   }
-  if (sq < l3) return "lambda_1^2 < |lambda_3|: curvature unbounded (seed 000 §3 case 1: C1 at best)";
-  return "lambda_1^2 > |lambda_3|: curvature tends to zero (seed 000 §3 case 4: a flat spot)";
+  if (sq < l3) return "lambda_1^2 < |lambda_3|: curvature unbounded (case 1: C1 at best)";
+  return "lambda_1^2 > |lambda_3|: curvature tends to zero (case 4: a flat spot)";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -394,7 +394,7 @@ void store_map_mesh(const Level& L, const std::vector<double>& X, const std::vec
   }
 }
 
-// Seed 000 §4 (Reif): the characteristic map of the subdominant eigenvectors must be regular
+// Reif 1995: the characteristic map of the subdominant eigenvectors must be regular
 // and injective. Stages: widen the eigenvectors, refine them as a net, keep the region
 // around the centre, measure its orientation and winding, store it as a mesh.
 void check_characteristic_map(const AnalysisRun& cx, int K, const Matrix& rp, double l1, double l2, bool equal,
@@ -591,7 +591,7 @@ Matrix record_local_matrix(const AnalysisRun& cx, SurfaceAnalysis& out) {
   return s;
 }
 
-// Stage 4: affinity and the eigenvalue conditions (seed 000 §3): lambda_0 = 1 simple,
+// Stage 4: affinity and the eigenvalue conditions (Reif 1995): lambda_0 = 1 simple,
 // lambda_1 = lambda_2 real, |lambda_3| below them. Eigenvalues within kClusterTolerance of
 // each other are one (a defective eigenvalue of multiplicity k is computed only to about
 // eps^(1/k)).
@@ -640,8 +640,8 @@ void check_eigenvalues(const Matrix& s, SurfaceAnalysis& out) {
     out.curvature = curvature_text(ev, out.lambda1);
 }
 
-// Stage 5: the limit mask, the left eigenvector of 1 scaled to sum 1 (seed 000 §5
-// proposition 1).
+// Stage 5: the limit mask, the left eigenvector of 1 scaled to sum 1 (Halstead,
+// Kass & DeRose 1993).
 void add_limit_mask(const Matrix& s, SurfaceAnalysis& out) {
   const Matrix l0 = left_null(s, 1.0);
   if (l0.cols() != 1 || std::abs(l0.col(0).sum()) <= 1e-12) return;

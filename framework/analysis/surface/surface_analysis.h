@@ -1,10 +1,10 @@
 #pragma once
 // Eigen-analysis of a surface scheme at an extraordinary vertex (or face, for dual
-// schemes), done with the engine itself (seed 000 §3 and §5, seed 004):
+// schemes), done with the engine itself (Doo & Sabin 1978; Halstead, Kass & DeRose 1993; Reif 1995):
 //
 // 1. a synthetic patch around the centre (local_patch.h) is refined by the scheme's own
 //    stencils, one step, or two for schemes whose step rotates the mesh (sqrt(3), mid-edge:
-//    the second step undoes the rotation, seed 000's R S^2);
+//    the second step undoes the rotation, Kobbelt 2000's R S^2);
 // 2. the refined centre and its first ring neighbour are matched to the parent's by
 //    position (the patch is symmetric), both neighbourhoods are labelled canonically, and
 //    the k-ring that maps to itself is found from the stencils' supports: the minimal one
@@ -12,9 +12,9 @@
 //    surface around the centre and is the one analysed, as in the curve case;
 // 3. S (rows: children, columns: parents, in matching label order) is analysed with Eigen:
 //    spectrum sorted by modulus; lambda_0 = 1 simple; lambda_1 = lambda_2 real, with two
-//    eigenvectors, |lambda_3| < lambda_1; seed 000 §3's condition on lambda_1^2 against
+//    eigenvectors, |lambda_3| < lambda_1; Peters & Reif 2004's condition on lambda_1^2 against
 //    |lambda_3|; limit mask (left eigenvector of 1) and tangent masks (left eigenvectors of
-//    lambda_1, lambda_2), seed 000 §5 propositions 1 and 2;
+//    lambda_1, lambda_2), Halstead, Kass & DeRose 1993;
 // 4. the characteristic map (control points from the right eigenvectors of lambda_1,
 //    lambda_2, refined a few levels) is checked to be regular (every face keeps its
 //    orientation) and injective (the boundary of the region winds once around the centre).
@@ -76,7 +76,7 @@ struct SurfaceAnalysis {
   int subdominant_multiplicity = 0;    // of lambda_1 (1 when lambda_1 != lambda_2)
   bool boundary_collapses = false;     // boundary centre: the subdominant pair misses the boundary curve
   double lambda1 = 0, lambda2 = 0, lambda3 = 0;  // lambda_1, lambda_2 (real parts), |lambda_3|
-  std::string curvature;               // seed 000 §3 condition, as text
+  std::string curvature;               // Peters & Reif 2004 case, as text
 
   CharacteristicMap characteristic_map;
   bool c1 = false;

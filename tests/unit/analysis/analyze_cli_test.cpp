@@ -97,7 +97,7 @@ TEST_CASE("subdiv refine --limit: level L and L+1 agree on the old vertices; --l
     // Quad splits number the children of old vertices first, in order.
     for (size_t i = 0; i < a.size(); ++i) CHECK(std::abs(a[i] - b[i]) < 1e-12);
   }
-  // --levels 0: the control cube's corners go to (9 v + 4 sum e + sum f)/24 (seed 000 §5).
+  // --levels 0: the control cube's corners go to (9 v + 4 sum e + sum f)/24 (Halstead, Kass & DeRose 1993).
   const auto zero = obj_positions(dir / "l0.obj");
   const auto input = obj_positions(mesh);
   REQUIRE(zero.size() == input.size());

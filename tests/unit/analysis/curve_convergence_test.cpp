@@ -1,5 +1,5 @@
 // Convergence and smoothness verdicts of analyse_curve against known mathematics
-// (seed 000 §7, seed 003, Dyn-Levin 2002, Hassan et al. 2002).
+// (Dyn, Gregory & Levin 1991; Dyn 1992; Dyn-Levin 2002; Hassan et al. 2002).
 #include "framework/analysis/curve/curve_analysis.h"
 #include "framework/util/error.h"
 #include "unit/analysis/curve_test_masks.h"
@@ -17,7 +17,7 @@ int proof_power(const CurveAnalysis& r, int order) {
 }  // namespace
 
 TEST_CASE("curve analysis: degree-d B-splines are exactly C^(d-1) by the algorithm") {
-  // Seed 000 §7 example 1: a(z) = (1+z)^(d+1)/2^d; b_{d-1} = (1+z)^2/2 converges (norm 1/2);
+  // Dyn 1992: a(z) = (1+z)^(d+1)/2^d; b_{d-1} = (1+z)^2/2 converges (norm 1/2);
   // b_d = 1 + z gives q = 1 (norm 1 for every L); b_{d+1} = 2 has no factor (1+z).
   for (int d = 1; d <= 6; ++d) {
     CAPTURE(d);
@@ -41,28 +41,28 @@ TEST_CASE("curve analysis: Chaikin is C1, cubic B-spline is C2") {
   CHECK(analyse_curve(test::cubic_bspline_mask()).smoothness == 2);
 }
 
-TEST_CASE("curve analysis: 4-point scheme w = 1/16 is C1 proven, C2 not (seed 000 §7 example 2)") {
+TEST_CASE("curve analysis: 4-point scheme w = 1/16 is C1 proven, C2 not (Dyn, Gregory & Levin 1991)") {
   const CurveAnalysis r = analyse_curve(test::four_point_mask(1.0 / 16));
   CHECK(r.convergent);
   CHECK(proof_power(r, 0) == 1);  // ||S_q|| = 1/2 + 2/16 < 1
   CHECK(r.smoothness == 1);
   CHECK(proof_power(r, 1) == 2);  // ||S_r|| >= 1 but ||S_r^2|| < 1 for 0 < w < 0.154
-  // t(z) = 4a/(1+z)^3: ||S_t^L|| = 1 for all L (seed 000 §7).
+  // t(z) = 4a/(1+z)^3: ||S_t^L|| = 1 for all L.
   const SmoothnessLevel& c2 = r.levels.at(2);
   CHECK(c2.factor_divides);
   CHECK_FALSE(c2.contractivity.contractive);
   for (double n : c2.contractivity.norms) CHECK(n == doctest::Approx(1.0));
 }
 
-TEST_CASE("curve analysis: 4-point scheme in the tension range of seed 000 is C1") {
-  // Seed 000 §7: ||S_r^2|| < 1 for 0 < w < (-1 + sqrt 5)/8, so L <= 2 proves C1.
+TEST_CASE("curve analysis: 4-point scheme in the tension range of Dyn, Gregory & Levin 1991 is C1") {
+  // Dyn, Gregory & Levin 1991: ||S_r^2|| < 1 for 0 < w < (-1 + sqrt 5)/8, so L <= 2 proves C1.
   for (double w : {0.01, 0.05, 0.1, 0.125, 0.15}) {
     CAPTURE(w);
     const CurveAnalysis r = analyse_curve(test::four_point_mask(w));
     CHECK(r.smoothness >= 1);
     CHECK(proof_power(r, 1) <= 2);
   }
-  // Seed 000 §7: ||S_q^2|| < 1 for -3/8 < w < (-1 + sqrt 13)/8: convergence by L = 2.
+  // From the closed form of ||S_q^2|| (curve_symbol_test.cpp): < 1 for -3/8 < w < (-1 + sqrt 13)/8: convergence by L = 2.
   for (double w : {-0.3, -0.1, 0.2, 0.3}) {
     CAPTURE(w);
     const CurveAnalysis r = analyse_curve(test::four_point_mask(w));

@@ -1,4 +1,4 @@
-// Local subdivision matrices and their eigen-analysis (seed 000 §3).
+// Local subdivision matrices and their eigen-analysis (Zorin et al. 2000).
 #include "framework/analysis/curve/curve_analysis.h"
 #include "framework/analysis/curve/curve_eigen.h"
 #include "framework/analysis/curve/curve_local_matrix.h"
@@ -30,7 +30,7 @@ void check_vector(const std::vector<double>& v, const std::vector<double>& expec
 
 }  // namespace
 
-TEST_CASE("curve local matrix: cubic B-spline matrix is seed 000 §3(b)'s 5x5") {
+TEST_CASE("curve local matrix: cubic B-spline matrix is the known 5x5 (Zorin et al. 2000)") {
   const LocalSubdivisionMatrix s = local_subdivision_matrix(test::cubic_bspline_mask());
   CHECK(s.first_index == -2);
   REQUIRE(s.size() == 5);
@@ -41,7 +41,7 @@ TEST_CASE("curve local matrix: cubic B-spline matrix is seed 000 §3(b)'s 5x5") 
       CHECK(s.rows[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] == doctest::Approx(expected[i][j] / 8));
 }
 
-TEST_CASE("curve local matrix: 4-point matrix is seed 000 §3(b)'s 7x7") {
+TEST_CASE("curve local matrix: 4-point matrix is the known 7x7 (Zorin et al. 2000)") {
   const LocalSubdivisionMatrix s = local_subdivision_matrix(test::four_point_mask(1.0 / 16));
   CHECK(s.first_index == -3);
   REQUIRE(s.size() == 7);
@@ -53,7 +53,7 @@ TEST_CASE("curve local matrix: 4-point matrix is seed 000 §3(b)'s 7x7") {
       CHECK(s.rows[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] == doctest::Approx(expected[i][j] / 16));
 }
 
-TEST_CASE("curve eigen: cubic B-spline eigenvalues, limit and tangent masks (seed 000 §3(c),(d))") {
+TEST_CASE("curve eigen: cubic B-spline eigenvalues, limit and tangent masks (Halstead, Kass & DeRose 1993)") {
   const CurveAnalysis r = analyse_curve(test::cubic_bspline_mask());
   check_eigenvalues(r.eigen, {1, 0.5, 0.25, 0.125, 0.125});
   REQUIRE(r.eigen.has_limit_mask);
@@ -64,7 +64,7 @@ TEST_CASE("curve eigen: cubic B-spline eigenvalues, limit and tangent masks (see
   CHECK(r.eigen.indication.find("lambda1^2 = |lambda2| > |lambda3|") == 0);
 }
 
-TEST_CASE("curve eigen: 4-point (w = 1/16) eigenvalues of seed 000 §3(c)") {
+TEST_CASE("curve eigen: 4-point (w = 1/16) eigenvalues (Zorin et al. 2000)") {
   const CurveAnalysis r = analyse_curve(test::four_point_mask(1.0 / 16));
   check_eigenvalues(r.eigen, {1, 0.5, 0.25, 0.25, 0.125, -0.0625, -0.0625});
   REQUIRE(r.eigen.has_limit_mask);
@@ -95,7 +95,7 @@ TEST_CASE("curve eigen: Chaikin around index 0 and the ternary linear scheme") {
   for (double x : chaikin.eigen.limit_mask) sum += x;
   CHECK(sum == doctest::Approx(1.0));
 
-  // Piecewise linear: lambda_1 = lambda_2 = 1/3, so no tangent (seed 000 §3(d)).
+  // Piecewise linear: lambda_1 = lambda_2 = 1/3, so no tangent (Halstead, Kass & DeRose 1993).
   const CurveAnalysis linear = analyse_curve(test::ternary_linear_mask());
   check_eigenvalues(linear.eigen, {1, 1.0 / 3, 1.0 / 3});
   CHECK(linear.eigen.has_limit_mask);

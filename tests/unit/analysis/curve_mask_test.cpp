@@ -25,7 +25,7 @@ TEST_CASE("curve mask: Chaikin rules give (1,3,3,1)/4 on -1..2") {
   check_mask(test::chaikin_mask(), -1, {0.25, 0.75, 0.75, 0.25});
 }
 
-TEST_CASE("curve mask: 4-point rules give seed 000 eq. (17)") {
+TEST_CASE("curve mask: 4-point rules give the mask of Dyn, Levin & Gregory 1987") {
   const double w = 1.0 / 16;
   // a_0 = 1, a_{+-1} = 1/2 + w, a_{+-2} = 0, a_{+-3} = -w
   check_mask(test::four_point_mask(w), -3, {-w, 0.0, 0.5 + w, 1.0, 0.5 + w, 0.0, -w});

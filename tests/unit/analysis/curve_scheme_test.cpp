@@ -1,7 +1,7 @@
-// Curve schemes read from JSON and analysed (seed 000 §3 and §7): B-splines of degree m are
+// Curve schemes read from JSON and analysed (Zorin et al. 2000; Dyn, Gregory & Levin 1991): B-splines of degree m are
 // C^(m-1); the 4-point scheme with w = 1/16 is C1 and not proven C2; a mask with
 // a(-1) != 0 does not converge; the local eigenvalues of the cubic B-spline and the 4-point
-// scheme are the seed's.
+// scheme are the known ones (Zorin et al. 2000).
 #include <doctest/doctest.h>
 
 #include "framework/analysis/curve/curve_analysis.h"
@@ -26,12 +26,12 @@ void check_eigenvalues(const CurveAnalysis& a, const std::vector<double>& seed) 
 
 }  // namespace
 
-TEST_CASE("curve schemes from JSON: the seed's verdicts and eigenvalues") {
+TEST_CASE("curve schemes from JSON: the known verdicts and eigenvalues") {
   const auto cubic = analyse_curve_scheme(*load_curve_scheme_named("cubic-bspline"));
   CHECK(cubic.analysis.smoothness == 2);  // degree 3: C2
   CHECK_FALSE(cubic.level_dependent);
   check_eigenvalues(cubic.analysis, {1, 0.5, 0.25, 0.125, 0.125});
-  // Seed 000 §3(d): the limit point (P_{-1} + 4 P_0 + P_1)/6.
+  // The cubic B-spline's limit point (P_{-1} + 4 P_0 + P_1)/6.
   REQUIRE(cubic.analysis.eigen.has_limit_mask);
   CHECK(cubic.analysis.eigen.limit_mask[1] == doctest::Approx(1.0 / 6));
   CHECK(cubic.analysis.eigen.limit_mask[2] == doctest::Approx(4.0 / 6));
@@ -63,7 +63,7 @@ TEST_CASE("curve schemes from JSON: a user file with a(-1) != 0 does not converg
 }
 
 TEST_CASE("curve schemes from JSON: level-dependent weights are flagged non-stationary") {
-  // Seed 000 §6: the non-stationary tension scheme; here a weight that depends on l.
+  // Like the non-stationary tension scheme (Morin, Warren & Weimer 2001); here a weight that depends on l.
   const auto file = write_temp("tension.json", R"json({"name": "tension", "kind": "curve", "arity": 2, "rules": [
       {"start": 0, "w": ["1"]}, {"start": -1, "w": ["-1/(16*(l+1))", "1/2 + 1/(16*(l+1))", "1/2 + 1/(16*(l+1))", "-1/(16*(l+1))"]}]})json");
   const auto curve = load_curve_scheme_named(file.string());

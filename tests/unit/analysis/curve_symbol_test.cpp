@@ -1,4 +1,4 @@
-// Laurent polynomials and the norms of iterated difference schemes (seed 000 §7).
+// Laurent polynomials and the norms of iterated difference schemes (Dyn, Gregory & Levin 1991; Dyn 1992).
 #include "framework/analysis/curve/curve_contractivity.h"
 #include "framework/analysis/curve/curve_laurent.h"
 #include "unit/analysis/curve_test_masks.h"
@@ -26,7 +26,7 @@ TEST_CASE("curve symbol: evaluation, product and upsampling") {
 }
 
 TEST_CASE("curve symbol: exact division by 1+z and 1+z+z^2") {
-  // Seed 000 §7 eq. (19): the 4-point q(z) = a(z)/(1+z).
+  // Dyn, Gregory & Levin 1991: the 4-point q(z) = a(z)/(1+z).
   const double w = 0.1;
   const ExactDivision d = divide_by_difference_factor(symbol(test::four_point_mask(w)), 2, 1e-12);
   REQUIRE(d.exact);
@@ -49,14 +49,14 @@ TEST_CASE("curve symbol: text form") {
   CHECK(to_string(LaurentPolynomial{0, {0.0}}) == "0");
 }
 
-TEST_CASE("curve contractivity: ||S_q|| of the 4-point scheme is 1/2 + 2|w| (seed 000 §7)") {
+TEST_CASE("curve contractivity: ||S_q|| of the 4-point scheme is 1/2 + 2|w|") {
   for (double w : {-0.2, 0.0, 1.0 / 16, 0.2}) {
     const auto q = divide_by_difference_factor(symbol(test::four_point_mask(w)), 2, 1e-12).quotient;
     CHECK(scheme_norm(q, 2) == doctest::Approx(0.5 + 2 * std::abs(w)));
   }
 }
 
-TEST_CASE("curve contractivity: ||S_q^2|| of the 4-point scheme matches seed 000 eq. (20)") {
+TEST_CASE("curve contractivity: ||S_q^2|| of the 4-point scheme matches its closed form (lecture notes \"Subdivision curves and surfaces\" §7)") {
   for (double w : {-0.3, 0.05, 0.3}) {
     const auto q = divide_by_difference_factor(symbol(test::four_point_mask(w)), 2, 1e-12).quotient;
     const double n2 = scheme_norm(next_iterate(q, q, 2), 4);
@@ -69,7 +69,7 @@ TEST_CASE("curve contractivity: ||S_q^2|| of the 4-point scheme matches seed 000
 
 TEST_CASE("curve contractivity: the L search reports the first contractive power") {
   ContractivityOptions options;
-  // w = 0.3: ||S_q|| = 1.1 but ||S_q^2|| < 1 since 0.3 < (-1 + sqrt 13)/8 (seed 000 §7).
+  // w = 0.3: ||S_q|| = 1.1 but ||S_q^2|| < 1 since 0.3 < (-1 + sqrt 13)/8 (from the closed form above).
   const auto q = divide_by_difference_factor(symbol(test::four_point_mask(0.3)), 2, 1e-12).quotient;
   const ContractivitySearch s = find_contractive_power(q, 2, options);
   CHECK(s.contractive);

@@ -1,6 +1,7 @@
 #pragma once
 // Masks of known curve schemes for the analysis tests, built from their rules as the
-// literature writes them (seed 000 §2, §3; seed 003; Hassan et al. 2002).
+// literature writes them (Chaikin 1974; Lane & Riesenfeld 1980; Dyn, Levin & Gregory 1987; Deslauriers & Dubuc 1989;
+// Hassan et al. 2002).
 #include "framework/analysis/curve/curve_mask.h"
 
 #include <cmath>
@@ -14,7 +15,7 @@ inline double binomial(int n, int k) {
   return c;
 }
 
-// Degree-d uniform B-spline: c_i = 2^-d C(d+1, i), i = 0..d+1 (seed 000 §2), centred.
+// Degree-d uniform B-spline: c_i = 2^-d C(d+1, i), i = 0..d+1 (Lane & Riesenfeld 1980), centred.
 inline CurveMask bspline_mask(int degree) {
   CurveMask mask;
   mask.arity = 2;
@@ -23,20 +24,20 @@ inline CurveMask bspline_mask(int degree) {
   return mask;
 }
 
-// Seed 003: v'_{2i} = 1/4 v_{i-1} + 3/4 v_i, v'_{2i+1} = 3/4 v_i + 1/4 v_{i+1}.
+// Chaikin 1974: v'_{2i} = 1/4 v_{i-1} + 3/4 v_i, v'_{2i+1} = 3/4 v_i + 1/4 v_{i+1}.
 inline CurveMask chaikin_mask() { return mask_from_rules(2, {-1, 0}, {{0.25, 0.75}, {0.75, 0.25}}); }
 
-// Seed 000 §2: even (1/8, 3/4, 1/8) on P_{i-1..i+1}, odd (1/2, 1/2) on P_{i..i+1}.
+// Lane & Riesenfeld 1980: even (1/8, 3/4, 1/8) on P_{i-1..i+1}, odd (1/2, 1/2) on P_{i..i+1}.
 inline CurveMask cubic_bspline_mask() {
   return mask_from_rules(2, {-1, 0}, {{0.125, 0.75, 0.125}, {0.5, 0.5}});
 }
 
-// Seed 000 §7 example 2: P_{2i} = P_i, P_{2i+1} = -w(P_{i-1} + P_{i+2}) + (1/2 + w)(P_i + P_{i+1}).
+// Dyn, Levin & Gregory 1987: P_{2i} = P_i, P_{2i+1} = -w(P_{i-1} + P_{i+2}) + (1/2 + w)(P_i + P_{i+1}).
 inline CurveMask four_point_mask(double w) {
   return mask_from_rules(2, {0, -1}, {{1.0}, {-w, 0.5 + w, 0.5 + w, -w}});
 }
 
-// Seed 003: odd rule (3, -25, 150, 150, -25, 3)/256 on P_{i-2..i+3}.
+// Deslauriers & Dubuc 1989: odd rule (3, -25, 150, 150, -25, 3)/256 on P_{i-2..i+3}.
 inline CurveMask six_point_mask() {
   std::vector<double> odd{3, -25, 150, 150, -25, 3};
   for (double& x : odd) x /= 256.0;

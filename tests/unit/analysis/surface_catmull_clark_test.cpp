@@ -1,8 +1,8 @@
-// Catmull-Clark at extraordinary vertices against seed 000 §5: the subdominant eigenvalue
+// Catmull-Clark at extraordinary vertices against Halstead, Kass & DeRose 1993: the subdominant eigenvalue
 // (4 + A_n)/16, the limit point (n^2 v + 4 sum e_j + sum f_j)/(n(n+5)) and the limit normal
-// C_2 x C_3 (proposition 2 with the seed's masks for C_2, C_3). Also the seed's curve facts
+// C_2 x C_3 (with their masks for C_2, C_3). Also the curve facts
 // that Catmull-Clark boundaries and creases follow: the cubic B-spline limit
-// (P_{i-1} + 4 P_i + P_{i+1})/6 (seed 000 §3(d)).
+// (P_{i-1} + 4 P_i + P_{i+1})/6 (Lane & Riesenfeld 1980).
 #include <doctest/doctest.h>
 
 #include "framework/analysis/surface/limit_evaluation.h"
@@ -18,7 +18,7 @@ using namespace subdiv::test;
 
 namespace {
 
-// Seed 000 §5: A_n = 1 + cos(2 pi/n) + cos(pi/n) sqrt(2 (9 + cos(2 pi/n))).
+// Halstead, Kass & DeRose 1993: A_n = 1 + cos(2 pi/n) + cos(pi/n) sqrt(2 (9 + cos(2 pi/n))).
 double seed_A(int n) {
   const double c = std::cos(2 * kPi / n);
   return 1 + c + std::cos(kPi / n) * std::sqrt(2 * (9 + c));
@@ -26,7 +26,7 @@ double seed_A(int n) {
 
 }  // namespace
 
-TEST_CASE("Catmull-Clark: subdominant eigenvalue (4 + A_n)/16, n = 3..12 (seed 000 §5)") {
+TEST_CASE("Catmull-Clark: subdominant eigenvalue (4 + A_n)/16, n = 3..12 (Halstead, Kass & DeRose 1993)") {
   const auto cc = load_scheme("catmull-clark");
   for (int n = 3; n <= 12; ++n) {
     CAPTURE(n);
@@ -40,7 +40,7 @@ TEST_CASE("Catmull-Clark: subdominant eigenvalue (4 + A_n)/16, n = 3..12 (seed 0
     CHECK(a.lambda0_one);
     CHECK(a.subdominant_equal);
     CHECK(a.subdominant_dominates);
-    // The seed's S_n: V = [v, e_1..e_n, f_1..f_n], m = 2n + 1; the analysed ring is wider.
+    // Their S_n: V = [v, e_1..e_n, f_1..f_n], m = 2n + 1; the analysed ring is wider.
     CHECK(a.minimal_size == 2 * n + 1);
     CHECK(a.characteristic_map.regular);
     CHECK(a.characteristic_map.injective);
@@ -49,7 +49,7 @@ TEST_CASE("Catmull-Clark: subdominant eigenvalue (4 + A_n)/16, n = 3..12 (seed 0
   }
 }
 
-TEST_CASE("Catmull-Clark: limit point (n^2 v + 4 sum e + sum f)/(n(n+5)) and normal C2 x C3 (seed 000 §5)") {
+TEST_CASE("Catmull-Clark: limit point (n^2 v + 4 sum e + sum f)/(n(n+5)) and normal C2 x C3 (Halstead, Kass & DeRose 1993)") {
   const auto cc = load_scheme("catmull-clark");
   for (int n = 3; n <= 12; ++n) {
     CAPTURE(n);
@@ -58,7 +58,7 @@ TEST_CASE("Catmull-Clark: limit point (n^2 v + 4 sum e + sum f)/(n(n+5)) and nor
     const auto e = ring_neighbours(p.level, 0);
     const auto f = face_diagonals(p.level, 0);
     REQUIRE(int(e.size()) == n);
-    // Seed: e_j are the edge neighbours (weight 4), f_j the face-diagonal points (weight 1).
+    // e_j are the edge neighbours (weight 4), f_j the face-diagonal points (weight 1).
     Vec3 expected{0, 0, 0};
     for (int i = 0; i < 3; ++i) {
       double sum = n * n * p.positions[size_t(i)];
@@ -108,7 +108,7 @@ TEST_CASE("Catmull-Clark: the limit of a cube's corner and its radial normal") {
   }
 }
 
-TEST_CASE("Catmull-Clark: boundary and crease vertices follow the cubic B-spline limit (seed 000 §3(d))") {
+TEST_CASE("Catmull-Clark: boundary and crease vertices follow the cubic B-spline limit (Lane & Riesenfeld 1980)") {
   const auto cc = load_scheme("catmull-clark");
   // A boundary vertex of valence n (n - 1 faces): the limit is (P_- + 4 P + P_+)/6 of its
   // two boundary neighbours.

@@ -1,6 +1,6 @@
 // Schemes that must be reported as failing, with the reason: rules that break the
 // rotational symmetry (lambda_1 != lambda_2), weights that are not affine, the classic
-// butterfly at valence 3; and schemes the seeds call C1 (the modified butterfly
+// butterfly at valence 3; and schemes the papers call C1 (the modified butterfly
 // everywhere, the butterfly at regular vertices).
 #include <doctest/doctest.h>
 
@@ -55,7 +55,7 @@ TEST_CASE("weights that do not sum to one are reported, not refined") {
   CHECK(a.verdict.find("1.1") != std::string::npos);  // the row sum
 }
 
-TEST_CASE("butterfly: C1 at regular vertices (seed 000 §4(d)), not at valence 3; modified butterfly C1 everywhere") {
+TEST_CASE("butterfly: C1 at regular vertices (Dyn, Levin & Gregory 1990), not at valence 3; modified butterfly C1 everywhere") {
   const auto b = load_scheme("butterfly");
   CHECK(analyse_valence(*b, 6).c1);
   const SurfaceAnalysis three = analyse_valence(*b, 3);

@@ -1,11 +1,11 @@
-// sqrt(3) against seed 000 §4(e): the spectrum of the aligned two-step operator R S^2 on
+// sqrt(3) against Kobbelt 2000: the spectrum of the aligned two-step operator R S^2 on
 // the vertex and its ring is (1/9)[9, (2 - 3 alpha_n)^2, 2 + 2 cos(2 pi k/n), k = 1..n-1],
 // and alpha_n = (4 - 2 cos(2 pi/n))/9 makes (2 - 3 alpha_n)^2/9 the square of the
 // subdominant (2 + 2 cos(2 pi/n))/9.
-// Doo-Sabin against seed 004 §2.2.2: the circulant S of an N-gon's new points has the
-// spectrum diag(1, 1/2, 1/4, ..., 1/4, 1/2); with the points around it (the seed's S_12
-// block: 1/16, 1/8, 1/8, 1/4, 1/4) nothing exceeds 1/4, so 1 > 1/2 = 1/2 > 1/4. Seed 000
-// §5: the limit surface interpolates each face's centroid (the F-face keeps it).
+// Doo-Sabin against Doo & Sabin 1978: the circulant S of an N-gon's new points has the
+// spectrum diag(1, 1/2, 1/4, ..., 1/4, 1/2); with the points around it (the ring's
+// block: 1/16, 1/8, 1/8, 1/4, 1/4) nothing exceeds 1/4, so 1 > 1/2 = 1/2 > 1/4. Doo & Sabin
+// 1978: the limit surface interpolates each face's centroid (the F-face keeps it).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -35,7 +35,7 @@ std::vector<double> sorted_real(const std::vector<std::complex<double>>& ev) {
 
 }  // namespace
 
-TEST_CASE("sqrt3: spectrum of R S^2 on the 1-ring is the seed's, n = 3..12") {
+TEST_CASE("sqrt3: spectrum of R S^2 on the 1-ring is Kobbelt's, n = 3..12") {
   const auto s3 = load_scheme("sqrt3");
   for (int n = 3; n <= 12; ++n) {
     CAPTURE(n);
@@ -50,14 +50,14 @@ TEST_CASE("sqrt3: spectrum of R S^2 on the 1-ring is the seed's, n = 3..12") {
     const std::vector<double> got = sorted_real(a.minimal_eigenvalues);
     REQUIRE(got.size() == seed.size());
     for (size_t i = 0; i < seed.size(); ++i) CHECK(std::abs(got[i] - seed[i]) < 1e-12);
-    // The subdominant of the analysed (wider) neighbourhood is the seed's too.
+    // The subdominant of the analysed (wider) neighbourhood is Kobbelt's too.
     const double lambda = (2 + 2 * std::cos(2 * kPi / n)) / 9;
     CHECK(std::abs(a.lambda1 - lambda) < 1e-12);
     CHECK(a.subdominant_equal);
-    // The seed's choice of alpha_n: (2 - 3 alpha)^2 / 9 = lambda^2.
+    // Kobbelt's choice of alpha_n: (2 - 3 alpha)^2 / 9 = lambda^2.
     CHECK((2 - 3 * alpha) * (2 - 3 * alpha) / 9 == doctest::Approx(lambda * lambda).epsilon(1e-12));
     CHECK(a.c1);
-    // The limit point, from the seed's S: the vertex and the mean of its ring map by
+    // The limit point, from the 2x2 block S: the vertex and the mean of its ring map by
     // [[1 - alpha, alpha], [1/3, 2/3]] (new ring points (P + P_i + P_{i+1})/3), whose left
     // eigenvector of 1 gives the centre the weight 1/(1 + 3 alpha_n).
     REQUIRE(a.has_limit_mask);
@@ -66,7 +66,7 @@ TEST_CASE("sqrt3: spectrum of R S^2 on the 1-ring is the seed's, n = 3..12") {
   }
 }
 
-TEST_CASE("Doo-Sabin: 1, 1/2, 1/2, 1/4 ... at N-gon faces, N = 3..12 (seed 004)") {
+TEST_CASE("Doo-Sabin: 1, 1/2, 1/2, 1/4 ... at N-gon faces, N = 3..12 (Doo & Sabin 1978)") {
   const auto ds = load_scheme("doo-sabin");
   for (int n = 3; n <= 12; ++n) {
     CAPTURE(n);
@@ -83,14 +83,14 @@ TEST_CASE("Doo-Sabin: 1, 1/2, 1/2, 1/4 ... at N-gon faces, N = 3..12 (seed 004)"
     CHECK(std::abs(a.lambda1 - 0.5) < 1e-12);
     CHECK(std::abs(a.lambda2 - 0.5) < 1e-12);
     for (size_t i = 3; i < a.eigenvalues.size(); ++i) CHECK(std::abs(a.eigenvalues[i]) < 0.25 + 1e-6);  // J2(1/4) blocks: ~1e-8 round-off
-    CHECK(a.c1);  // seed 000 §4(b): the limit surface is C1
+    CHECK(a.c1);  // Doo & Sabin 1978: the limit surface is C1
     // The limit mask of a face: its centroid.
     REQUIRE(a.has_limit_mask);
     for (size_t i = 0; i < size_t(n); ++i) CHECK(a.limit_mask[i] == doctest::Approx(1.0 / n).epsilon(1e-12));
   }
 }
 
-TEST_CASE("Doo-Sabin: a vertex's limit is the centroid of the face it becomes (seed 000 §5)") {
+TEST_CASE("Doo-Sabin: a vertex's limit is the centroid of the face it becomes (Doo & Sabin 1978)") {
   // One step turns vertex v into its V-face, whose centroid every later F-face keeps.
   for (const auto& mesh : {test::cube(), test::pyramid()}) {
     const auto ds = load_scheme("doo-sabin");

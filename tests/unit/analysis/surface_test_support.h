@@ -1,7 +1,7 @@
 #pragma once
 // Helpers for the surface analysis tests: a mesh with one vertex of valence n (the
 // analysis' own synthetic patch, so the rest is regular) with random 3D positions, and its
-// ring read off the mesh the way the seeds write it (e_j: edge neighbours CCW, f_j: the
+// ring read off the mesh the way Halstead, Kass & DeRose 1993 write it (e_j: edge neighbours CCW, f_j: the
 // face-diagonal points between e_j and e_{j+1}).
 #include <array>
 #include <cmath>

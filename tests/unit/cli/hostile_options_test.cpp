@@ -1,4 +1,4 @@
-// `subdiv refine` options and inputs a hostile or unlucky user gives (issue 15): NaN angles,
+// `subdiv refine` options and inputs a hostile or unlucky user gives: NaN angles,
 // absurd start levels, sequences that do not add up to --levels, input paths that are
 // FIFOs or devices, VTK files that make VTK print, and process memory limits. Each run
 // must exit non-zero with a message naming the problem, and leave no output file.

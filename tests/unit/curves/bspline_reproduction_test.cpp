@@ -1,7 +1,7 @@
 // The B-spline schemes reproduce uniform B-splines: refining a control polygon is knot
-// insertion (seed 000 §2: P(t) = sum_i P^0_i N(t - i) = sum_i P^1_i N(2t - i)), so the
+// insertion (Lane & Riesenfeld 1980: P(t) = sum_i P^0_i N(t - i) = sum_i P^1_i N(2t - i)), so the
 // spline of the refined points on the refined knots is the spline of the original points,
-// at every level. Both sides are evaluated with de Boor's algorithm (seed 002).
+// at every level. Both sides are evaluated with de Boor's algorithm (de Boor 1972).
 #include <doctest/doctest.h>
 
 #include <random>
@@ -105,7 +105,7 @@ TEST_CASE("bspline of degree d reproduces the uniform B-spline on open polygons 
   }
 }
 
-TEST_CASE("Chaikin's limit is the uniform quadratic B-spline (seed 003)") {
+TEST_CASE("Chaikin's limit is the uniform quadratic B-spline (Chaikin 1974; Lane & Riesenfeld 1980)") {
   const auto chaikin = load_curve("chaikin");
   // Mask on -2..1: phi(t) = N_3(t + 2), support [-2, 1].
   check_closed(*chaikin, 2, -2.0, 7, 6);

@@ -1,4 +1,4 @@
-// Each shipped curve scheme's rules equal its mask as the seeds and papers write it, and
+// Each shipped curve scheme's rules equal its mask as the papers write it, and
 // the symbol analysis confirms the smoothness the scheme files claim.
 #include <doctest/doctest.h>
 
@@ -45,8 +45,8 @@ std::shared_ptr<const CurveScheme> curve(const std::string& name, const Paramete
 
 }  // namespace
 
-TEST_CASE("chaikin: rules equal the mask (1, 3, 3, 1)/4 of seeds 000 §2 and 003") {
-  // Seed 000 §2's numbering of the quadratic B-spline rules: P_2i = 3/4 P_i + 1/4 P_i+1,
+TEST_CASE("chaikin: rules equal the mask (1, 3, 3, 1)/4 of Chaikin 1974") {
+  // The usual numbering of the quadratic B-spline rules: P_2i = 3/4 P_i + 1/4 P_i+1,
   // P_2i+1 = 1/4 P_i + 3/4 P_i+1 (both new points on segment (i, i+1)), so the mask
   // a_{r - 2 s} sits on -2..1.
   check_same_mask(curve_mask(*curve("chaikin")), mask(2, -2, {1, 3, 3, 1}, 4));
@@ -56,17 +56,17 @@ TEST_CASE("chaikin: rules equal the mask (1, 3, 3, 1)/4 of seeds 000 §2 and 003
   CHECK(rules.offsets == std::vector<double>{0.25, 0.75});
 }
 
-TEST_CASE("cubic-bspline: rules equal the mask (1, 4, 6, 4, 1)/8 of seed 000 §2") {
+TEST_CASE("cubic-bspline: rules equal the mask (1, 4, 6, 4, 1)/8 of Lane & Riesenfeld 1980") {
   check_same_mask(curve_mask(*curve("cubic-bspline")), mask(2, -2, {1, 4, 6, 4, 1}, 8));
 }
 
-TEST_CASE("bspline of degree d: the mask is c_i = 2^-d C(d+1, i) (seed 000 §2), for d = 1..12") {
+TEST_CASE("bspline of degree d: the mask is c_i = 2^-d C(d+1, i) (Lane & Riesenfeld 1980), for d = 1..12") {
   for (int d = 1; d <= 12; ++d) {
     CAPTURE(d);
     std::vector<double> c;
     for (int i = 0; i <= d + 1; ++i) c.push_back(pascal(d + 1, i) / std::pow(2.0, d));
     // Odd d: primal, symmetric about 0; even d: dual, both new points of old point i on
-    // segment (i, i+1) as in seed 000 §2's quadratic rules (symmetric about -1/2).
+    // segment (i, i+1) as in Chaikin's quadratic rules (symmetric about -1/2).
     check_same_mask(curve_mask(*curve("bspline", {{"d", std::to_string(d)}})), mask(2, -((d + 2) / 2), c));
   }
   // d = 2 is Chaikin, d = 3 the cubic B-spline: same rules, number for number.
@@ -93,7 +93,7 @@ TEST_CASE("four-point: mask (-w, 0, 1/2 + w, 1, 1/2 + w, 0, -w); w = 1/16 gives 
   }
 }
 
-TEST_CASE("six-point: odd rule (3, -25, 150, 150, -25, 3)/256 of seed 003") {
+TEST_CASE("six-point: odd rule (3, -25, 150, 150, -25, 3)/256 of Deslauriers & Dubuc 1989") {
   check_same_mask(curve_mask(*curve("six-point")),
                   mask(2, -5, {3, 0, -25, 0, 150, 256, 150, 0, -25, 0, 3}, 256));
 }
@@ -117,7 +117,7 @@ TEST_CASE("ternary-bspline: mask 3((1 + z + z^2)/3)^3 = (1, 3, 6, 7, 6, 3, 1)/9"
   check_same_mask(curve_mask(*curve("ternary-bspline")), mask(3, -3, {1, 3, 6, 7, 6, 3, 1}, 9), 1e-15);
 }
 
-TEST_CASE("tension-bspline: level l has the mask (1, 2 + 2a, 2 + 4a, 2 + 2a, 1)/(4 + 4a), a = alpha_{l+1} (seed 000 §6(b))") {
+TEST_CASE("tension-bspline: level l has the mask (1, 2 + 2a, 2 + 4a, 2 + 2a, 1)/(4 + 4a), a = alpha_{l+1} (Morin, Warren & Weimer 2001)") {
   for (double alpha0 : {-1.0, -0.5, 0.0, 0.5, 1.0, 10.0, 100.0}) {
     CAPTURE(alpha0);
     const auto scheme = curve("tension-bspline", {{"alpha0", fmt::format("{:.17g}", alpha0)}});
@@ -135,15 +135,15 @@ TEST_CASE("tension-bspline: level l has the mask (1, 2 + 2a, 2 + 4a, 2 + 2a, 1)/
   for (int l = 0; l < 6; ++l) check_same_mask(curve_mask(*one, l), mask(2, -2, {1, 4, 6, 4, 1}, 8));
 }
 
-TEST_CASE("the smoothness the scheme files state holds by the symbol analysis (seed 000 §7)") {
+TEST_CASE("the smoothness the scheme files state holds by the symbol analysis (Dyn, Gregory & Levin 1991)") {
   auto smoothness = [](const CurveScheme& s) { return analyse_curve(curve_mask(s)).smoothness; };
   CHECK(smoothness(*curve("chaikin")) == 1);
   CHECK(smoothness(*curve("cubic-bspline")) == 2);
   for (int d = 1; d <= 6; ++d) CHECK(smoothness(*curve("bspline", {{"d", std::to_string(d)}})) == d - 1);
   CHECK(smoothness(*curve("two-point")) == 0);
   CHECK(smoothness(*curve("ternary-bspline")) == 1);
-  // four-point: w in [0, 0.154508], just below (sqrt(5) - 1)/8 (Dyn, Levin, Gregory); seed
-  // 003 states smoothness for (0, 1/8). C1 for every w > 0 in the range, C0 at w = 0.
+  // four-point: w in [0, 0.154508], just below (sqrt(5) - 1)/8 (Dyn, Gregory, Levin 1991); the
+  // 1987 paper states smoothness for (0, 1/8). C1 for every w > 0 in the range, C0 at w = 0.
   CHECK(smoothness(*curve("four-point", {{"w", "0"}})) == 0);
   for (const char* w : {"0.01", "0.0625", "0.1", "0.125", "0.15", "0.154508"}) {
     CAPTURE(w);

@@ -1,6 +1,6 @@
 #pragma once
 // Helpers for the curve tests: polylines, refinement in one call, and an independent
-// uniform B-spline evaluator (de Boor's algorithm, seed 002) to check refined polygons
+// uniform B-spline evaluator (de Boor's algorithm, de Boor 1972) to check refined polygons
 // against.
 #include <array>
 #include <cmath>
@@ -64,7 +64,7 @@ inline RefinedCurve refine_polyline(const CurveScheme& scheme, const std::vector
 
 // Uniform B-spline of degree d whose control point j has the basis N_{d+1}(t - j - shift),
 // N_{d+1} the order d+1 B-spline on the knots 0, 1, ..., d+1 (support [shift + j,
-// shift + j + d + 1]). de Boor's algorithm as seed 002 writes it, with knots t_i = i + shift:
+// shift + j + d + 1]). de Boor's algorithm (de Boor 1972), with knots t_i = i + shift:
 // find r with t_r <= t < t_{r+1}, start from d_{r-d} .. d_r and for s = 1 .. d let
 // d_i = (1 - a) d_{i-1} + a d_i, a = (t - t_i)/(t_{i+d+1-s} - t_i), i = r down to r - d + s.
 // `control(j)` gives control point j for any integer j; the caller decides what exists.

@@ -1,5 +1,5 @@
 // Interpolatory schemes keep old points at every level; the non-stationary tension scheme
-// (seed 000 §6(b)) keeps a regular polygon's points on a circle and converges to a circle.
+// (Morin, Warren & Weimer 2001) keeps a regular polygon's points on a circle and converges to a circle.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -60,7 +60,7 @@ TEST_CASE("four-point, six-point, two-point and ternary-four-point keep old poin
   check_interpolates(*load_curve("ternary-four-point", {{"mu", "0.07"}}), true);
 }
 
-TEST_CASE("four-point with w = 1/16 is exact on cubics (seed 000 §1: Lagrange interpolation at 1/2)") {
+TEST_CASE("four-point with w = 1/16 is exact on cubics (Dyn, Levin & Gregory 1987: Lagrange interpolation at 1/2)") {
   // Points of a cubic polynomial curve at equal parameter steps stay on it: every new
   // point is the cubic at the midpoint parameter, open ends aside.
   auto cubic = [](double t) { return Vec3{t, 0.5 * t * t - t, 0.1 * t * t * t - 0.3 * t}; };
@@ -88,7 +88,7 @@ TEST_CASE("tension-bspline: a regular N-gon's points stay on one circle, radius 
     const RefinedCurve r = refine_polyline(*scheme, regular_polygon(n, centre, radius, 0.3), true, 6);
     double expected = radius;
     for (int l = 1; l <= 6; ++l) {
-      // Seed 000 §6(b): with alpha_l = cos(theta / 2^l), even and odd points of level l
+      // Morin, Warren & Weimer 2001: with alpha_l = cos(theta / 2^l), even and odd points of level l
       // both lie at distance cos(theta / 2^l) times the previous radius.
       expected *= std::cos(theta / std::pow(2.0, l));
       const auto [lo, hi] = radii(r.positions[l], centre);
@@ -99,7 +99,7 @@ TEST_CASE("tension-bspline: a regular N-gon's points stay on one circle, radius 
   }
 }
 
-TEST_CASE("tension-bspline converges to a circle: radius R sin(theta)/theta; the square with alpha0 = 0 (seed 000)") {
+TEST_CASE("tension-bspline converges to a circle: radius R sin(theta)/theta; the square with alpha0 = 0 (Morin, Warren & Weimer 2001)") {
   const Vec3 centre{0, 0, 0};
   const auto scheme = load_curve("tension-bspline");  // default alpha0 = 0 = cos(2 pi/4)
   const RefinedCurve r = refine_polyline(*scheme, regular_polygon(4, centre, 1.0, 0.0), true, 14);

@@ -54,7 +54,7 @@ TEST_CASE("state: the value at level l is the recurrence applied l times; all va
     CHECK(f.evaluate(id, {0, 0, 1, double(l)}) == 2 * fibonacci[l] + 1);
     CHECK(f.state_values(l) == std::vector<double>{fibonacci[l], fibonacci[l + 1]});
   }
-  // The tension recurrence of seed 000 §6(b): alpha_k = sqrt((1 + alpha_{k-1})/2), from cos(theta).
+  // The tension recurrence of Morin, Warren & Weimer 2001: alpha_k = sqrt((1 + alpha_{k-1})/2), from cos(theta).
   FormulaSet t({{"alpha0", std::cos(1.0)}}, {state("alpha", "sqrt((1 + alpha0)/2)", "sqrt((1 + alpha)/2)")});
   for (int l = 0; l < 10; ++l) CHECK(t.state_values(l)[0] == doctest::Approx(std::cos(1.0 / std::pow(2.0, l + 1))));
   // The recurrence sees l.

@@ -10,7 +10,7 @@
 using namespace subdiv;
 using test::weight_of;
 
-TEST_CASE("Catmull-Clark equals the seed's face, edge and vertex rules on n-gons and extraordinary vertices") {
+TEST_CASE("Catmull-Clark equals Catmull & Clark 1978's face, edge and vertex rules on n-gons and extraordinary vertices") {
   for (const auto& mesh : {test::cube(), test::pyramid(), test::torus(5, 3)}) {
     const auto r = test::refine_mesh(mesh, "catmull-clark", 1);
     const auto expected = test::catmull_clark_by_seed(mesh.level(), mesh.positions);
@@ -20,7 +20,7 @@ TEST_CASE("Catmull-Clark equals the seed's face, edge and vertex rules on n-gons
 }
 
 TEST_CASE("Catmull-Clark at regular interior vertices is bicubic B-spline refinement") {
-  // Tensor products of the cubic B-spline rules (1/8, 3/4, 1/8) and (1/2, 1/2), seed 000 §4(a).
+  // Tensor products of the cubic B-spline rules (1/8, 3/4, 1/8) and (1/2, 1/2), Catmull & Clark 1978.
   const test::Mesh mesh = test::torus(6, 6);
   const auto r = test::refine_mesh(mesh, "catmull-clark", 1);
   const StencilTable& t = r.hierarchy.stencils[0];

@@ -18,7 +18,7 @@ double warren_beta(int n) { return n == 3 ? 3.0 / 16 : 3.0 / (8.0 * n); }
 
 }  // namespace
 
-TEST_CASE("Loop vertex rule gives the seed's beta_n, both variants, valences 3..12") {
+TEST_CASE("Loop vertex rule gives Loop's and Warren's beta_n, valences 3..12") {
   for (int n = 3; n <= 12; ++n) {
     const test::Mesh m = test::bipyramid(n);
     const Index apex = n;  // valence n

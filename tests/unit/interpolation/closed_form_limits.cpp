@@ -92,7 +92,7 @@ double loop_beta(LoopBeta variant, int n) {
 }
 
 std::string LoopLimit::name() const {
-  return beta_ == LoopBeta::Loop ? "Loop closed form (seed 000, Loop's beta)" : "Loop closed form (Warren's beta)";
+  return beta_ == LoopBeta::Loop ? "Loop closed form (Loop's beta)" : "Loop closed form (Warren's beta)";
 }
 
 StencilTable LoopLimit::stencils_at(const Level& level, int) const {

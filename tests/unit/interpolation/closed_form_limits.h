@@ -1,5 +1,5 @@
 #pragma once
-// Test references: closed-form limit masks (seed 000 §5, Kobbelt 2000) written out by hand,
+// Test references: closed-form limit masks (Halstead, Kass & DeRose 1993, Loop 1987, Kobbelt 2000) written out by hand,
 // to check the masks the engine derives from each scheme's eigen-analysis
 // (framework/interpolation/analysed_limit.h) against formulas computed elsewhere.
 //
@@ -14,17 +14,17 @@
 
 namespace subdiv::test {
 
-// Catmull-Clark. Interior vertex of valence n among quads (seed 000 §5):
+// Catmull-Clark. Interior vertex of valence n among quads (Halstead, Kass & DeRose 1993):
 //   v_inf = (n^2 v + 4 sum e_j + sum f_j) / (n (n + 5)),
 // e_j the edge neighbours, f_j the vertex opposite v in quad j. Among polygons of any
 // size, one Catmull-Clark step (face centroids c_j, edge points, vertex point) makes the
 // 1-ring quads and the same mask expands to
 //   v_inf = (n (n - 1) v + 2 sum e_j + 4 sum c_j) / (n (n + 5)),
-// which is the seed's formula when every face is a quad (4 c_j = v + e_j + e_{j+1} + f_j).
+// which is their formula when every face is a quad (4 c_j = v + e_j + e_{j+1} + f_j).
 class CatmullClarkLimit final : public LimitEvaluator {
 public:
   explicit CatmullClarkLimit(FeatureOptions features = {}) : features_(features) {}
-  std::string name() const override { return "Catmull-Clark closed form (seed 000)"; }
+  std::string name() const override { return "Catmull-Clark closed form (Halstead, Kass & DeRose 1993)"; }
 
 protected:
   StencilTable stencils_at(const Level& level, int step) const override;
@@ -33,7 +33,7 @@ private:
   FeatureOptions features_;
 };
 
-// Loop with vertex rule (1 - n beta_n) v + beta_n sum e_j. Seed 000 §5 writes the limit as
+// Loop with vertex rule (1 - n beta_n) v + beta_n sum e_j. Loop 1987 gives the limit as
 //   v_inf = gamma_n v + (1 - gamma_n) (1/n) sum e_j,  gamma_n = 3 / (11 - 8 beta_bar_n),
 // beta_bar_n = 1 - n beta_n the vertex's own weight; equivalently gamma_n = 3 / (3 + 8 n beta_n).
 // Triangles only.

@@ -1,9 +1,9 @@
 #pragma once
-// Independent computations for the interpolation tests, written from the seeds' formulas
+// Independent computations for the interpolation tests, written from the papers' formulas
 // with explicit geometry (no stencil tables, no library limit code):
-// - Catmull-Clark's limit point on quads (seed 000 §5);
-// - seed 001's two-step limit: the first step's face, edge and vertex points computed as
-//   points, then seed 000's formula on them;
+// - Catmull-Clark's limit point on quads (Halstead, Kass & DeRose 1993);
+// - Lin et al. 2015's two-step limit: the first step's face, edge and vertex points computed as
+//   points, then Halstead et al.'s formula on them;
 // - the paper's matrices M (15) and E (20) from G (16), for theorem 2.
 #include <Eigen/Dense>
 #include <array>
@@ -32,7 +32,7 @@ inline double dist(const P3& a, const P3& b) {
   return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
 
-// The seed's neighbourhood of an interior vertex among quads: edge neighbours e_j (CCW)
+// Halstead et al.'s neighbourhood of an interior vertex among quads: edge neighbours e_j (CCW)
 // and, in quad j, the vertex opposite v, f_j.
 struct QuadRing {
   std::vector<Index> e, f;
@@ -50,7 +50,7 @@ inline QuadRing quad_ring(const Level& L, Index v) {
   return r;
 }
 
-// Seed 000 §5: v_inf = (n^2 v + 4 sum e_j + sum f_j) / (n (n + 5)), interior quads.
+// Halstead, Kass & DeRose 1993: v_inf = (n^2 v + 4 sum e_j + sum f_j) / (n (n + 5)), interior quads.
 inline P3 cc_limit_point(const Level& L, const std::vector<double>& x, Index v) {
   const QuadRing r = quad_ring(L, v);
   const double n = double(r.e.size());
@@ -60,7 +60,7 @@ inline P3 cc_limit_point(const Level& L, const std::vector<double>& x, Index v) 
   return (1.0 / (n * (n + 5))) * s;
 }
 
-// Seed 001: first step by its rules as geometry, then seed 000's limit formula on the new
+// Lin et al. 2015: first step by its rules as geometry, then Halstead et al.'s limit formula on the new
 // points around v: v' = lambda v + (1 - lambda)(alpha E + (1 - alpha) F), edge points
 // (v + e_j + fp_{j-1} + fp_j) / 4, face points the quads' centroids.
 inline P3 two_step_limit_point(const Level& L, const std::vector<double>& x, Index v, double lambda) {

@@ -1,4 +1,4 @@
-// `subdiv interpolate` end to end: the written control mesh is checked with the seeds'
+// `subdiv interpolate` end to end: the written control mesh is checked with the papers'
 // formulas (computed here), the refined output carries the residuals, bad input is refused
 // with nothing written.
 #include <doctest/doctest.h>
@@ -38,7 +38,7 @@ void check_refused(const std::string& args, const fs::path& dir, const std::stri
 
 }  // namespace
 
-TEST_CASE("interpolate: seed 001's local method on the cross; the written mesh's limits pass through the chosen vertices") {
+TEST_CASE("interpolate: Lin et al. 2015's local method on the cross; the written mesh's limits pass through the chosen vertices") {
   const auto dir = fresh_dir("interp-cli-local");
   const fs::path out = dir / "cross.obj", refined = dir / "cross.pvd";
   const CliResult r = run_subdiv("interpolate " + kCross + " " + kTwoStep + " --lambda 0.5 --select 0,5,10,20,33 -v -o " +
@@ -160,7 +160,7 @@ TEST_CASE("interpolate: bad input is refused, nothing is written") {
   check_refused(kCross + " --scheme chaikin:1,cubic-bspline", dir, "'chaikin' is a curve scheme inside a sequence");
   check_refused(source_path("examples/curves/circle8.obj"), dir, "has no faces (it has 1 polyline)");
   check_refused(source_path("examples/curves/circle8.obj") + " --scheme cubic-bspline --lambda 0.5", dir,
-                "seed 001's shape parameter is for surfaces");
+                "Lin et al. 2015's shape parameter is for surfaces");
   check_refused(source_path("examples/curves/open-zigzag.obj") + " --scheme cubic-bspline", dir, "hold no polylines",
                 false, "off");
   check_refused(source_path("examples/curves/circle8.obj") + " --scheme tension-bspline", dir, "stationary");

@@ -1,5 +1,5 @@
 // The generic method: limit masks from each scheme's eigen-analysis checked against the
-// seeds' closed forms (written out by hand in closed_form_limits.h), their selection by
+// papers' closed forms (written out by hand in closed_form_limits.h), their selection by
 // l S = l, Chen et al.'s progressive interpolation on plain Catmull-Clark, Loop, sqrt(3),
 // user schemes, features, dual schemes, and the refusals.
 #include <doctest/doctest.h>
@@ -28,7 +28,7 @@ using namespace subdiv::test;
 
 namespace {
 
-// Seed 000 §5's Loop limit: gamma_n v + (1 - gamma_n) mean(e), gamma_n = 3 / (11 - 8 beta_bar_n),
+// Loop 1987's limit: gamma_n v + (1 - gamma_n) mean(e), gamma_n = 3 / (11 - 8 beta_bar_n),
 // beta_bar_n = 3/8 + (3/8 + cos(2 pi/n)/4)^2.
 P3 loop_limit_point(const Level& L, const std::vector<double>& x, Index v) {
   const int n = L.valence(v);
@@ -92,7 +92,7 @@ bool uses(const LimitChoice& c) {
 
 }  // namespace
 
-TEST_CASE("Catmull-Clark's analysed masks are seed 000's formula, and the limit of deep refinement") {
+TEST_CASE("Catmull-Clark's analysed masks are Halstead, Kass & DeRose 1993's formula, and the limit of deep refinement") {
   for (const Mesh& mesh : {cross_mesh(), torus(6, 5), pyramid(), cube()}) {
     const Level L = mesh.level();
     const StencilTable t = analysed("catmull-clark", L);
@@ -106,7 +106,7 @@ TEST_CASE("Catmull-Clark's analysed masks are seed 000's formula, and the limit 
   }
 }
 
-TEST_CASE("Loop's and sqrt(3)'s analysed masks are seed 000's gamma_n and Kobbelt's b_n forms") {
+TEST_CASE("Loop's and sqrt(3)'s analysed masks are Loop's gamma_n and Kobbelt's b_n forms") {
   for (const Mesh& mesh : {bipyramid(7), octahedron(), bipyramid(3)}) {
     const Level L = mesh.level();
     const StencilTable t = analysed("loop", L);
@@ -308,7 +308,7 @@ TEST_CASE("creases and corners: cubic B-spline limits along infinitely sharp edg
 
 namespace {
 
-// Seed 000 §4(b): Doo-Sabin's corner point of corner c in a k-gon, gamma_0 = (k+5)/(4k),
+// Doo & Sabin 1978: Doo-Sabin's corner point of corner c in a k-gon, gamma_0 = (k+5)/(4k),
 // gamma_i = (3 + 2 cos(2 pi i/k))/(4k), i counted from the corner.
 P3 doo_sabin_corner(const Level& L, const std::vector<double>& x, Index f, int c) {
   const auto face = L.face(f);
@@ -334,7 +334,7 @@ P3 doo_sabin_vface_centroid(const Level& L, const std::vector<double>& x, Index 
 
 }  // namespace
 
-TEST_CASE("dual schemes: a control vertex's limit point is its V-face's centroid (seed 000 §5)") {
+TEST_CASE("dual schemes: a control vertex's limit point is its V-face's centroid (Doo & Sabin 1978)") {
   for (const Mesh& mesh : {cross_mesh(), pyramid()}) {
     const Level L = mesh.level();
     const LimitChoice c = choose("doo-sabin", mesh);

@@ -1,6 +1,6 @@
-// Seed 001's claims: formula (2), convergence for lambda in (7/20, 1] on the paper's two
+// Lin et al. 2015's claims: formula (2), convergence for lambda in (7/20, 1] on the paper's two
 // closed quad meshes (a cross and a torus), local interpolation and theorem 2. The library
-// has no code of its own for seed 001: the two-step scheme is schemes/catmull-clark-shape.json
+// has no code of its own for Lin et al. 2015: the two-step scheme is schemes/catmull-clark-shape.json
 // (lambda declared per vertex) followed by catmull-clark, and its limit is the sequence's
 // composite limit; formula (2) is written here only, as the reference (interp_reference.h).
 #include <doctest/doctest.h>
@@ -37,7 +37,7 @@ std::vector<std::uint8_t> every_third(Index n) {
   return m;
 }
 
-// The residual in the norm in which seed 001's iteration matrix I - C D is self-adjoint:
+// The residual in the norm in which Lin et al. 2015's iteration matrix I - C D is self-adjoint:
 // |d|_C^2 = sum_v |d_v|^2 / c_v with c_v = beta_n / (n (n + 5)) (paper's (17)).
 double c_norm(const Level& L, const std::vector<double>& targets, std::span<const double> limit,
               const std::vector<std::uint8_t>& moving, const std::vector<double>& lambda) {
@@ -53,7 +53,7 @@ double c_norm(const Level& L, const std::vector<double>& targets, std::span<cons
   return std::sqrt(s);
 }
 
-// Seed 001's two-step limit as the library gives it: the limit selected for the sequence
+// Lin et al. 2015's two-step limit as the library gives it: the limit selected for the sequence
 // catmull-clark-shape:1,catmull-clark, with one lambda (the scheme's parameter) or one per
 // vertex (RefineOptions::vertex_parameters).
 std::shared_ptr<const LimitEvaluator> two_step_limit(const Level& L, const std::vector<double>& lambda) {
@@ -90,7 +90,7 @@ TEST_CASE("the cross is a closed, consistently oriented quad mesh with valences 
   CHECK(by_valence[5] == 8);
 }
 
-TEST_CASE("the library's two-step limit equals formula (2) and Catmull-Clark's limit (seed 000) of the shape step") {
+TEST_CASE("the library's two-step limit equals formula (2) and Catmull-Clark's limit (Halstead, Kass & DeRose 1993) of the shape step") {
   for (const auto& named : paper_meshes()) {
     // References, not a structured binding: clang 14 cannot capture those in lambdas (CAPTURE).
     const auto& name = named.name;
@@ -128,7 +128,7 @@ TEST_CASE("global interpolation converges for lambda in (7/20, 1]: limits reach 
       o.tolerance = 1e-10;
       o.max_iterations = 5000;
       // At every iteration the library's limit points are formula (2), computed here
-      // independently as explicit first-step geometry followed by seed 000's formula.
+      // independently as explicit first-step geometry followed by Halstead, Kass & DeRose 1993's formula.
       o.observer = [&](const IterationState& s) {
         const std::vector<double> control(s.control.begin(), s.control.end());
         double worst = 0;
@@ -240,7 +240,7 @@ TEST_CASE("local interpolation: fixed vertices stay, moving ones are interpolate
   }
 }
 
-TEST_CASE("seed 001's matrices: M = C D with C diagonal positive and D symmetric positive definite for lambda > 7/20") {
+TEST_CASE("Lin et al. 2015's matrices: M = C D with C diagonal positive and D symmetric positive definite for lambda > 7/20") {
   // The convergence argument (lemma 1, theorem 1) on the paper's meshes, and its edge: at
   // lambda = 7/20 a regular region makes D singular, and below it indefinite.
   const Mesh mesh = torus(8, 6);

@@ -1,4 +1,4 @@
-// Issue 7's "done when": progressive interpolation works for every shipped linear surface
+// Progressive interpolation works for every shipped linear surface
 // scheme. Each scheme file in schemes/ gets a limit operator on closed meshes it accepts
 // (and on open ones, where it has vertex points), the iteration converges, and the new
 // control mesh, refined deeply, approaches the targets: an independent check of the chosen

@@ -1,4 +1,4 @@
-// Inputs a hostile or unlucky user gives the readers (issue 15): files that are not regular
+// Inputs a hostile or unlucky user gives the readers: files that are not regular
 // files, CR-only line ends, NaN in STL, broken STL, cut-off or absurd VTK files, deep or
 // out-of-range JSON in feature files. Each must end in a subdiv::Error that names the file
 // (and the place), never a crash, a hang, another exception type, or silently bad data.

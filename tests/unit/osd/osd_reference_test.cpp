@@ -1,5 +1,5 @@
 // The OpenSubdiv reference helper checked on its own: OpenSubdiv's level-1 points against
-// the seed formulas computed here by hand, the origin bookkeeping, and point matching.
+// the papers' formulas computed here by hand, the origin bookkeeping, and point matching.
 #include <doctest/doctest.h>
 
 #include "support/osd_reference.h"
@@ -82,7 +82,7 @@ Vec centroid(const subdiv_test::OsdMesh& m, const std::vector<int>& f) {
 
 }  // namespace
 
-TEST_CASE("osd_reference: Catmull-Clark cube level 1 follows the seed formulas") {
+TEST_CASE("osd_reference: Catmull-Clark cube level 1 follows Catmull & Clark's formulas") {
   const auto mesh = cube();
   const auto osd = subdiv_test::osd_refine(mesh, {subdiv_test::OsdScheme::CatmullClark}, 1);
   REQUIRE(osd.levels.size() == 2);
@@ -144,7 +144,7 @@ TEST_CASE("osd_reference: Catmull-Clark cube level 1 follows the seed formulas")
   CHECK(dist({5.0 / 9, 5.0 / 9, 5.0 / 9}, l1.position(6)) < 1e-15);
 }
 
-TEST_CASE("osd_reference: Loop octahedron level 1 follows the seed formulas") {
+TEST_CASE("osd_reference: Loop octahedron level 1 follows Loop's formulas") {
   const auto mesh = octahedron();
   const auto osd = subdiv_test::osd_refine(mesh, {subdiv_test::OsdScheme::Loop}, 1);
   const auto& l1 = osd.levels[1];

@@ -1,4 +1,4 @@
-// The circle-preserving plugin (seed 000 §6(c), Sabin and Dodgson): a non-linear curve scheme
+// The circle-preserving plugin (Sabin & Dodgson 2004): a non-linear curve scheme
 // and a non-linear quad scheme, applied directly by the engine.
 #include <cmath>
 #include <doctest/doctest.h>

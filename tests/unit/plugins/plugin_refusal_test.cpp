@@ -1,5 +1,5 @@
-// A plugin the user names with --plugin and that is refused makes the command fail (issue
-// 15): the run would not be what they asked for. Plugins found by search stay warnings
+// A plugin the user names with --plugin and that is refused makes the command fail:
+// the run would not be what they asked for. Plugins found by search stay warnings
 // (plugins_cli_test.cpp).
 #include <cstdlib>
 #include <doctest/doctest.h>

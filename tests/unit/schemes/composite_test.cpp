@@ -17,7 +17,7 @@ void check_same(const std::vector<double>& a, const std::vector<double>& b, doub
 
 }  // namespace
 
-TEST_CASE("loop-composite (linear split + seed 002's alpha(k) averaging) equals loop, boundaries included") {
+TEST_CASE("loop-composite (linear split + Loop's averaging mask alpha(k)) equals loop, boundaries included") {
   for (const auto& m : {test::octahedron(), test::torus(6, 5, true), test::grid(4, 3, true)}) {
     const auto a = test::refine_mesh(m, "loop", 3);
     const auto b = test::refine_mesh(m, "loop-composite", 3);
@@ -34,7 +34,7 @@ TEST_CASE("quad-bspline of degree 3 equals catmull-clark on a regular quad torus
 }
 
 TEST_CASE("quad-bspline differs from catmull-clark at an extraordinary vertex exactly as the vertex rules predict") {
-  // Catmull-Clark: (n-3)/n v + 2/n R + 1/n Q; plain averaging: v/4 + R/2 + Q/4 (issue 4).
+  // Catmull-Clark: (n-3)/n v + 2/n R + 1/n Q; plain averaging: v/4 + R/2 + Q/4.
   const test::Mesh m = test::cube();  // valence 3 everywhere, quads only
   const auto cc = test::refine_mesh(m, "catmull-clark", 1);
   const auto qb = test::refine_mesh(m, "quad-bspline", 1);

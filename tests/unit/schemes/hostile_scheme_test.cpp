@@ -1,4 +1,4 @@
-// Scheme files a hostile or unlucky user gives the loader (issue 15): JSON nested 10^5 deep,
+// Scheme files a hostile or unlucky user gives the loader: JSON nested 10^5 deep,
 // numbers beyond double's range, definitions that refer to themselves or each other,
 // 200 KB formulas, and `subdiv validate` with valence ranges that are negative, huge or
 // reversed. Each ends in a subdiv::Error naming the file and the place, quickly.

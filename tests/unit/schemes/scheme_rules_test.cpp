@@ -24,7 +24,7 @@ TEST_CASE("sqrt3 vertex rule: (1 - alpha_n) p + alpha_n/n sum p_i, alpha_n = (4 
   }
 }
 
-TEST_CASE("Doo-Sabin: every new corner point has the seed's weights gamma_j") {
+TEST_CASE("Doo-Sabin: every new corner point has Doo & Sabin 1978's weights gamma_j") {
   const test::Mesh m = test::pyramid();  // a quad and four triangles
   const Level L = m.level();
   const auto r = test::refine_mesh(m, "doo-sabin", 1);

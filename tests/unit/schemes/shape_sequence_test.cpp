@@ -7,7 +7,7 @@
 using namespace subdiv;
 using test::weight_of;
 
-TEST_CASE("catmull-clark-shape: v' = lambda v + (1 - lambda)(alpha E + (1 - alpha) F), alpha = 10/13 (seed 001)") {
+TEST_CASE("catmull-clark-shape: v' = lambda v + (1 - lambda)(alpha E + (1 - alpha) F), alpha = 10/13 (Lin et al. 2015)") {
   const test::Mesh m = test::torus(6, 5);
   for (double lambda : {0.5, 0.8, 1.0}) {
     const auto r = test::refine_mesh(m, "catmull-clark-shape", 1, {}, {{"lambda", std::to_string(lambda)}});

@@ -76,7 +76,7 @@ TEST_CASE("dual split: V' = corners, F' = F + interior E + interior V; Euler kep
     CHECK(C.vertex_count == L.corner_count());
     CHECK(C.face_count() == L.face_count() + L.edge_count() + L.vertex_count);
     check_manifold_counts(C, euler_characteristic(L));
-    // Every vertex of a Doo-Sabin mesh has valence 4 (seed 000 §4(b)).
+    // Every vertex of a Doo-Sabin mesh has valence 4 (Doo & Sabin 1978).
     for (Index v = 0; v < C.vertex_count; ++v) CHECK(C.valence(v) == 4);
   }
 }

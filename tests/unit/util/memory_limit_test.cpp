@@ -1,5 +1,5 @@
 // The memory budget honours the process's cgroup (v2 and v1, up the hierarchy) and its
-// rlimits as well as MemAvailable (issue 15), read from fake /sys/fs/cgroup trees here.
+// rlimits as well as MemAvailable, read from fake /sys/fs/cgroup trees here.
 #include <doctest/doctest.h>
 
 #include <filesystem>
