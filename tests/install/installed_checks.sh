@@ -1,10 +1,12 @@
 #!/bin/sh
-# The checks of install_test.sh, run where the source and build trees cannot be seen: only
-# the installed prefix ($WORK/prefix) and copies in $WORK (cube.obj, template/).
-# Environment: WORK, CMAKE_COMMAND, CMAKE_GENERATOR, PYTHON (may be empty), PVBATCH (may be empty).
+# The checks of an installed SubdivKit (install_test.sh: a cmake --install prefix;
+# deb_test.sh: the Debian packages in /usr), run where the source and build trees cannot be
+# seen: only the installed PREFIX and copies in WORK (cube.obj, template/).
+# Environment: WORK, PREFIX, CMAKE_COMMAND, CMAKE_GENERATOR, PYTHON (may be empty: no
+# Python check), PVBATCH (may be empty: no ParaView check).
 set -eu
 fail() { echo "installed_checks.sh: FAILED: $*" >&2; exit 1; }
-prefix="$WORK/prefix"
+prefix="$PREFIX"
 subdiv="$prefix/bin/subdiv"
 
 echo "-- subdiv schemes: the built-in schemes from the prefix, the example plugins from its plugin folder"
@@ -24,7 +26,7 @@ test "$(grep -c '^f ' "$WORK/cc.obj")" -eq 96 || fail "catmull-clark level 2 of 
 "$subdiv" refine "$WORK/cube.obj" --scheme sqrt2 --levels 1 -o "$WORK/sqrt2.obj" || fail "refine with the installed sqrt2 plugin"
 
 if [ -n "$PYTHON" ]; then
-  package=$(find "$prefix" -path '*/subdivkit/__init__.py' | head -1)
+  package=$(find "$prefix/lib" -maxdepth 5 -path '*/subdivkit/__init__.py' | head -1)
   test -n "$package" || fail "no subdivkit package under $prefix"
   site=$(dirname "$(dirname "$package")")
   echo "-- python: import subdivkit from $site"
@@ -49,7 +51,7 @@ echo "-- plugins/template built against the installed package"
 "$subdiv" refine "$WORK/cube.obj" --plugin "$WORK/template-build/my_plugin.so" --scheme my-scheme --levels 1 \
   -o "$WORK/mine.obj" || fail "refine with the template plugin's scheme"
 
-plugin=$(find "$prefix" -path '*/plugins/SubdivKit/SubdivKit.so' | head -1)
+plugin=$(find "$prefix/lib" -maxdepth 5 -path '*/plugins/SubdivKit/SubdivKit.so' | head -1)
 if [ -n "${PVBATCH:-}" ] && [ -n "$plugin" ]; then
   echo "-- pvbatch: SubdivKit Refine through PV_PLUGIN_PATH=$(dirname "$plugin")"
   cat > "$WORK/pv_check.py" <<'PY'
