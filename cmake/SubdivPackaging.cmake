@@ -13,7 +13,7 @@
 
 # The man page, generated from `subdiv --help` and each command's (Debian's help2man).
 find_program(SUBDIV_HELP2MAN help2man)
-if(SUBDIV_HELP2MAN AND TARGET subdiv_cli)
+if(SUBDIV_HELP2MAN AND TARGET subdiv_cli AND NOT SUBDIV_SANITIZE)  # runs the built subdiv
   set(man_page ${PROJECT_BINARY_DIR}/man/subdiv.1.gz)
   add_custom_command(OUTPUT ${man_page}
     COMMAND ${CMAKE_COMMAND} -DSUBDIV=$<TARGET_FILE:subdiv_cli> -DHELP2MAN=${SUBDIV_HELP2MAN}
