@@ -25,7 +25,8 @@ set(SUBDIV_PUBLIC_HEADERS
   # Analysis results and limit points.
   analysis/curve/curve_analysis.h analysis/curve/curve_scheme_analysis.h
   analysis/surface/surface_analysis.h analysis/surface/limit_evaluation.h
-  interpolation/limit_evaluator.h interpolation/progressive.h
+  interpolation/limit_evaluator.h interpolation/limit_selection.h interpolation/analysed_limit.h
+  interpolation/progressive.h
   # The plugin ABI and what plugins build on (new splitters, C++ rules, mesh lines).
   plugin/plugin_api.h plugin/plugin_registry.h plugin/plugin_loader.h
   plugin/mesh_lines.h plugin/polyline_refine.h
