@@ -36,6 +36,12 @@ assert os.path.realpath(loop["path"]).startswith(here) and loop["origin"] == "bu
 print("subdivkit", sk.__version__, "from", here, "- its schemes from", os.path.dirname(loop["path"]))
 PY
 
+if "$venv_python" -c "import mypy" 2> /dev/null; then
+  echo "== mypy --strict finds the installed package's types (py.typed, PEP 561)"
+  (cd "$source_dir" && env -u PYTHONPATH -u MYPYPATH "$venv_python" -m mypy --strict --cache-dir "$work/mypy-cache" \
+    tests/install/typed_usage.py) || fail "mypy --strict against the installed wheel"
+fi
+
 echo "== pytest tests/python in the venv"
 # The suite compares messages with the build's `subdiv`, which name the scheme files read:
 # the build's `subdiv` runs on the wheel's libsubdiv (LD_LIBRARY_PATH comes before its
