@@ -35,10 +35,12 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_PACKAGE_DIRECTORY ${PROJECT_BINARY_DIR}/packages)
 set(CPACK_DEB_COMPONENT_INSTALL ON)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # <name>_<version>-<release>_<arch>.deb
-set(CPACK_DEBIAN_PACKAGE_RELEASE 1)
+set(CPACK_DEBIAN_PACKAGE_RELEASE 1)  # subdiv_lib_depends below names it too
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_ENABLE_COMPONENT_DEPENDS ON)
+# The packages of this build that each one needs, as explicit Depends (CPack's component
+# dependencies do not carry over when the ParaView components are grouped into one package).
+set(subdiv_lib_depends "libsubdivkit (= ${PROJECT_VERSION}-1)")
 set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS ON)
 # The packages' own libraries, for dpkg-shlibdeps while they are not installed yet.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS
@@ -53,26 +55,25 @@ set(CPACK_COMPONENT_LIB_DESCRIPTION "SubdivKit: subdivision schemes as data, one
 
 set(CPACK_DEBIAN_DEV_PACKAGE_NAME libsubdivkit-dev)
 set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
-set(CPACK_COMPONENT_DEV_DEPENDS lib)
+set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS "${subdiv_lib_depends}")
 set(CPACK_COMPONENT_DEV_DESCRIPTION "SubdivKit: development files
  The public headers, the CMake package (find_package(SubdivKit): SubdivKit::subdiv,
  SubdivKit::vtkio, subdivkit_add_plugin) for programs and plugins.")
 
 set(CPACK_DEBIAN_TOOLS_PACKAGE_NAME subdivkit-tools)
-set(CPACK_COMPONENT_TOOLS_DEPENDS lib)
+set(CPACK_DEBIAN_TOOLS_PACKAGE_DEPENDS "${subdiv_lib_depends}")
 set(CPACK_COMPONENT_TOOLS_DESCRIPTION "SubdivKit: the subdiv command line
  subdiv refines meshes with subdivision schemes and writes files for ParaView, lists and
  validates schemes, analyses their convergence and smoothness, and interpolates points.")
 
 set(CPACK_DEBIAN_PYTHON_PACKAGE_NAME python3-subdivkit)
 set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION python)
-set(CPACK_COMPONENT_PYTHON_DEPENDS lib)
 if(Python3_VERSION)
-  set(next_minor ${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR})
   math(EXPR next_minor_number "${Python3_VERSION_MINOR} + 1")
   # The extension module is built for this Python's ABI: that Python, and NumPy.
-  set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS
-      "python3 (>= ${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}), python3 (<< ${Python3_VERSION_MAJOR}.${next_minor_number}), python3-numpy")
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS "${subdiv_lib_depends}, python3 (>= ${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}), python3 (<< ${Python3_VERSION_MAJOR}.${next_minor_number}), python3-numpy")
+else()
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS "${subdiv_lib_depends}, python3-numpy")
 endif()
 set(CPACK_DEBIAN_PYTHON_PACKAGE_SUGGESTS "python3-scipy")
 set(CPACK_DEBIAN_PYTHON_PACKAGE_CONTROL_EXTRA ${PROJECT_SOURCE_DIR}/cmake/debian/python3-subdivkit/prerm)
@@ -90,14 +91,15 @@ if(TARGET SubdivKit AND paraview_components)
     string(TOUPPER ${component} upper)
     set(CPACK_COMPONENT_${upper}_GROUP paraview)
   endforeach()
-  foreach(component IN LISTS subdiv_own_components)
+  foreach(component IN LISTS subdiv_own_components)  # one group each, described as before
     string(TOUPPER ${component} upper)
     set(CPACK_COMPONENT_${upper}_GROUP ${component})
+    set(CPACK_COMPONENT_GROUP_${upper}_DESCRIPTION "${CPACK_COMPONENT_${upper}_DESCRIPTION}")
   endforeach()
   set(CPACK_COMPONENTS_GROUPING ONE_PER_GROUP)
   list(APPEND CPACK_COMPONENTS_ALL ${paraview_components})
   set(CPACK_DEBIAN_PARAVIEW_PACKAGE_NAME paraview-subdivkit)
-  set(CPACK_DEBIAN_PARAVIEW_PACKAGE_DEPENDS "paraview")
+  set(CPACK_DEBIAN_PARAVIEW_PACKAGE_DEPENDS "${subdiv_lib_depends}, paraview")
   set(CPACK_COMPONENT_GROUP_PARAVIEW_DESCRIPTION "SubdivKit: ParaView plugin
  The filters SubdivKit Refine and SubdivKit Analyze, loaded when ParaView starts.")
 endif()
