@@ -53,5 +53,9 @@ packages=(
   libcgal-dev
   libmetis-dev openmpi-bin libopenmpi-dev
   pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib
+  # Packaging (docs/install.md): Debian packages with CPack (dpkg-shlibdeps, file, the man
+  # page; strace where tests/install cannot hide the source tree in a mount namespace), the
+  # Python package (PEP 517 offline, a venv) and its types.
+  dpkg-dev file help2man strace python3-setuptools python3-wheel python3-build python3-venv python3-pip python3-mypy
 )
 install_missing "${packages[@]}"

@@ -45,7 +45,14 @@ STIFF_LOOP = {
 }
 
 
-def main(png):
+def surface_analysis(scheme: sk.Scheme, valences: range) -> sk.SurfaceAnalysis:
+    """analyze() of a surface scheme (analyze() gives a CurveAnalysis for curve schemes)."""
+    analysis = sk.analyze(scheme, valences)
+    assert isinstance(analysis, sk.SurfaceAnalysis)
+    return analysis
+
+
+def main(png: str) -> None:
     loop = sk.Scheme.load("loop")
     octahedron = sk.read_mesh(ROOT / "examples" / "meshes" / "octahedron.obj")
 
@@ -66,9 +73,9 @@ def main(png):
 
     # 3. Eigen-analysis at extraordinary vertices of valence 3..12.
     valences = range(3, 13)
-    analyses = {"loop": sk.analyze(loop, valences)}
+    analyses = {"loop": surface_analysis(loop, valences)}
     for t in (0.25, 0.5):
-        analyses[f"stiff-loop t={t}"] = sk.analyze(sk.Scheme.from_dict(STIFF_LOOP, t=t), valences)
+        analyses[f"stiff-loop t={t}"] = surface_analysis(sk.Scheme.from_dict(STIFF_LOOP, t=t), valences)
     for name, a in analyses.items():
         print(f"{name:>17}: C1 at valences {list(a.valences[a.c1])}")
 

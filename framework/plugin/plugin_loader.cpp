@@ -10,6 +10,7 @@
 
 #include "framework/plugin/plugin_api.h"
 #include "framework/util/error.h"
+#include "framework/util/library_location.h"
 
 namespace subdiv {
 namespace fs = std::filesystem;
@@ -201,12 +202,7 @@ std::vector<PluginStatus> plugin_statuses() {
 
 std::vector<fs::path> installed_plugin_dirs() {
   std::vector<fs::path> dirs;
-  Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&plugin_interface_version), &info) && info.dli_fname) {
-    std::error_code ec;
-    const fs::path lib = fs::weakly_canonical(info.dli_fname, ec);
-    if (!ec) dirs.push_back(lib.parent_path() / "subdivkit" / "plugins");
-  }
+  if (const fs::path lib = library_directory(); !lib.empty()) dirs.push_back(lib / "subdivkit" / "plugins");
   const fs::path configured = SUBDIV_PLUGIN_DIR_INSTALL;
   if (std::find(dirs.begin(), dirs.end(), configured) == dirs.end()) dirs.push_back(configured);
   return dirs;

@@ -1,7 +1,6 @@
 #include "framework/scheme/scheme_registry.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <deque>
 #include <filesystem>
 #include <fmt/format.h>
@@ -9,6 +8,7 @@
 
 #include "framework/scheme/json_source.h"
 #include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_folders.h"
 #include "framework/scheme/scheme_loader.h"
 #include "framework/util/error.h"
 
@@ -28,22 +28,9 @@ CodeSchemes& code_schemes() {
   return c;
 }
 
-// Search order: $SUBDIV_SCHEME_PATH (':'-separated), the source tree's schemes/, the
-// installed share/subdivkit/schemes.
 std::vector<fs::path> scheme_directories() {
   std::vector<fs::path> dirs;
-  if (const char* env = std::getenv("SUBDIV_SCHEME_PATH")) {
-    std::string list = env;
-    size_t start = 0;
-    while (start <= list.size()) {
-      size_t end = list.find(':', start);
-      if (end == std::string::npos) end = list.size();
-      if (end > start) dirs.emplace_back(list.substr(start, end - start));
-      start = end + 1;
-    }
-  }
-  dirs.emplace_back(SUBDIV_SCHEME_DIR_BUILD);
-  dirs.emplace_back(SUBDIV_SCHEME_DIR_INSTALL);
+  for (auto& folder : scheme_folders()) dirs.push_back(std::move(folder.path));
   return dirs;
 }
 
@@ -203,16 +190,15 @@ std::vector<SchemeListing> list_schemes() {
     std::lock_guard lock(c.mutex);
     for (const auto& e : c.entries) found.push_back({e.name, e.description, e.path, e.kind, e.origin});
   }
-  const fs::path builtin_dirs[] = {SUBDIV_SCHEME_DIR_BUILD, SUBDIV_SCHEME_DIR_INSTALL};
-  for (const auto& dir : scheme_directories()) {
+  for (const auto& folder : scheme_folders()) {
+    const fs::path& dir = folder.path;
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) continue;
     for (const auto& entry : fs::directory_iterator(dir, ec)) {
       if (entry.path().extension() != ".json" || entry.path().filename() == "scheme.schema.json") continue;
       const std::string name = entry.path().stem().string();
       if (std::any_of(found.begin(), found.end(), [&](auto& s) { return s.name == name; })) continue;
-      const bool builtin = dir == builtin_dirs[0] || dir == builtin_dirs[1];
-      SchemeListing listing{name, "", entry.path().string(), "surface", builtin ? "built-in" : "SUBDIV_SCHEME_PATH"};
+      SchemeListing listing{name, "", entry.path().string(), "surface", folder.origin};
       try {
         const auto root = read_json_file(entry.path());
         listing.description = root.value("description", "");

@@ -5,11 +5,19 @@
 #     rooms before it;
 #  3. framework/io/vtk (library subdiv_vtkio) uses only its own layers;
 #  4. no VTK header is included outside framework/io/vtk (libsubdiv is VTK-free);
-#  5. no installed (public) header includes an internal one;
+#  5. an installed header (the allow-list of cmake/SubdivPublicHeaders.cmake) includes only
+#     installed headers and the standard library's, so it compiles for a user with nothing
+#     but the installed package;
 #  6. a front-end (tools/subdiv, python/src, plugins/paraview/filters) includes no file of
 #     another front-end.
-# Run: cmake -DSOURCE_DIR=<repo> "-DINTERNAL_HEADERS=a.h;b.h" -P check_layers.cmake
+# Run: cmake -DSOURCE_DIR=<repo> -P check_layers.cmake
 include(${SOURCE_DIR}/cmake/SubdivLayers.cmake)
+include(${SOURCE_DIR}/cmake/SubdivPublicHeaders.cmake)
+file(GLOB pipeline_headers RELATIVE ${SOURCE_DIR}/framework ${SOURCE_DIR}/framework/pipeline/*.h)
+if(pipeline_headers AND SUBDIV_PIPELINE_PRIVATE_HEADERS)
+  list(REMOVE_ITEM pipeline_headers ${SUBDIV_PIPELINE_PRIVATE_HEADERS})
+endif()
+set(public_headers ${SUBDIV_PUBLIC_HEADERS} ${SUBDIV_VTKIO_PUBLIC_HEADERS} ${pipeline_headers})
 set(problems "")
 
 function(included_framework_paths file out)
@@ -63,17 +71,19 @@ foreach(layer IN LISTS SUBDIV_LAYERS)
         list(APPEND problems "framework/${rel} includes a VTK header: libsubdiv must stay VTK-free (VTK code goes to framework/io/vtk)")
       endif()
     endif()
-    # Public headers must not pull internal ones into users' code.
-    if(rel MATCHES "\\.h$")
-      list(FIND INTERNAL_HEADERS ${rel} rel_internal)
-      if(rel_internal EQUAL -1)
-        foreach(path IN LISTS paths)
-          list(FIND INTERNAL_HEADERS ${path} internal)
-          if(NOT internal EQUAL -1)
-            list(APPEND problems "framework/${rel} is installed but includes the internal header framework/${path}")
-          endif()
-        endforeach()
-      endif()
+    # Public headers must not pull internal or third-party ones into users' code.
+    list(FIND public_headers ${rel} rel_public)
+    if(NOT rel_public EQUAL -1)
+      foreach(path IN LISTS paths)
+        list(FIND public_headers ${path} public)
+        if(public EQUAL -1)
+          list(APPEND problems "framework/${rel} is installed but includes framework/${path}, which is not (cmake/SubdivPublicHeaders.cmake)")
+        endif()
+      endforeach()
+      file(STRINGS ${file} other_lines REGEX "^[ \t]*#[ \t]*include[ \t]*<[^>]*[./][^>]*>")
+      foreach(line IN LISTS other_lines)
+        list(APPEND problems "framework/${rel} is installed but includes a third-party header: ${line}")
+      endforeach()
     endif()
   endforeach()
 endforeach()

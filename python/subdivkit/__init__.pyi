@@ -1,0 +1,21 @@
+# Types of the subdivkit package (PEP 561: py.typed beside this file). The modules' own
+# .pyi files hold the signatures; NumPy arrays are numpy.typing.NDArray with their dtype.
+from typing import Any
+
+from ._subdivkit import Error as Error, Scheme as Scheme, __version__ as __version__, load_plugin as load_plugin
+from ._subdivkit import schemes as schemes
+from .analysis import CurveAnalysis as CurveAnalysis, SurfaceAnalysis as SurfaceAnalysis, analyze as analyze
+from .mesh import Mesh as Mesh, read_mesh as read_mesh, write_mesh as write_mesh
+from .refinement import Evaluator as Evaluator, Interpolation as Interpolation, LimitPoints as LimitPoints
+from .refinement import interpolate as interpolate, limit_positions as limit_positions, refine as refine
+from .refinement import stencils as stencils
+
+def paraview_plugin_path() -> str: ...
+def load_paraview_plugin(ns: dict[str, Any] | None = None) -> Any: ...
+
+__all__ = [
+    "Error", "Scheme", "schemes", "load_plugin", "__version__", "paraview_plugin_path", "load_paraview_plugin",
+    "Mesh", "read_mesh", "write_mesh",
+    "refine", "Evaluator", "stencils", "limit_positions", "interpolate", "LimitPoints", "Interpolation",
+    "analyze", "SurfaceAnalysis", "CurveAnalysis",
+]
