@@ -39,10 +39,12 @@ double role_reach(Element e, Role role, const Scheme& scheme) {
   switch (role) {
     case Role::Self: return 0.0;
     case Role::Ends:
+    case Role::Corners:
     case Role::Vertices: return 0.5;  // the element's own vertices, from its middle
     case Role::FarWings:
     case Role::EndRing0:
-    case Role::EndRing1: return 1.5;  // one ring beyond an end, from the edge's middle
+    case Role::EndRing1:                // one ring beyond an end, from the edge's middle
+    case Role::CornerRings: return 1.5;  // one ring beyond a corner, from the face's middle
     case Role::Opposite:
     case Role::Wings: return 1.0;
     case Role::Faces:

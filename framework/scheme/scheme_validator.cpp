@@ -108,6 +108,82 @@ std::vector<Sizes> sizes_to_check(Element e, int lo, int hi, int face_size) {
   return out;
 }
 
+// Face rules over the corner roles (corners, corner-rings) see each corner's valence and
+// boundary flag and the face's counts ex and fe (formula.h), so they are checked over
+// configurations of whole triangles: interior ones with every valence triple, and ones with
+// one, two or three feature edges, whose corners on those edges lie on a boundary (cb = 1).
+bool uses_corner_roles(const CompiledRule& rule) {
+  for (const auto& t : rule.terms)
+    if (t.role == Role::Corners || t.role == Role::CornerRings) return true;
+  return false;
+}
+
+struct CornerConfig {
+  int n[3];
+  int cb[3];
+  int fe;
+  std::string describe() const {
+    return fmt::format("corner valences ({}, {}, {}), on a boundary ({}, {}, {}), fe={}", n[0], n[1], n[2], cb[0], cb[1],
+                       cb[2], fe);
+  }
+};
+
+std::vector<CornerConfig> corner_configs(int lo, int hi) {
+  std::vector<CornerConfig> out;
+  for (int a = lo; a <= hi; ++a)
+    for (int b = lo; b <= hi; ++b)
+      for (int c = lo; c <= hi; ++c) out.push_back({{a, b, c}, {0, 0, 0}, 0});
+  for (int a = lo; a <= hi; ++a)
+    for (int b = lo; b <= hi; ++b) {
+      out.push_back({{a, b, b}, {1, 0, 0}, 0});
+      for (int cb0 = 0; cb0 < 2; ++cb0) out.push_back({{a, b, b + 1 > hi ? b : b + 1}, {cb0, 1, 1}, 1});
+      out.push_back({{2 + (a - lo), b, b}, {1, 1, 1}, 2});
+    }
+  out.push_back({{2, 2, 2}, {1, 1, 1}, 3});
+  return out;
+}
+
+double corner_rule_sum(const CompiledRule& rule, const CornerConfig& c, std::string& asymmetric) {
+  int ex = 0;
+  for (int i = 0; i < 3; ++i) ex += c.cb[i] == 0 && c.n[i] != 6;
+  double sum = 0;
+  for (const auto& t : rule.terms) {
+    for (int i = 0; i < 3; ++i) {
+      if (t.role == Role::Corners) sum += t.corner_weight(c.n[i], 3, i, i, c.cb[i], ex, c.fe);
+      if (t.role != Role::CornerRings) continue;
+      for (int j = 0; j < c.n[i]; ++j) {
+        const double w = t.corner_weight(c.n[i], 3, j, i, c.cb[i], ex, c.fe);
+        const double mirror = t.corner_weight(c.n[i], 3, c.n[i] - 1 - j, i, c.cb[i], ex, c.fe);
+        // The face is symmetric about a corner when fe = 0, and about corner 0 when fe = 1.
+        if ((c.fe == 0 || (c.fe == 1 && i == 0)) && asymmetric.empty() && std::abs(w - mirror) > kTolerance)
+          asymmetric = fmt::format("role 'corner-rings' is not symmetric: at corner {} w(j={}) = {} but its mirror "
+                                   "w(j={}) = {}", i, j, w, c.n[i] - 1 - j, mirror);
+        sum += w;
+      }
+    }
+    if (t.role == Role::Vertices || t.role == Role::Edges)
+      for (int j = 0; j < 3; ++j) sum += t.corner_weight(3, 3, j, 0, 0, ex, c.fe);
+  }
+  return sum;
+}
+
+void check_corner_rule(const CompiledRule& rule, const std::string& where, int lo, int hi, ValidationReport& report) {
+  for (const CornerConfig& c : corner_configs(lo, hi)) {
+    ++report.checks;
+    std::string asymmetric;
+    const double sum = corner_rule_sum(rule, c, asymmetric);
+    if (!std::isfinite(sum) || std::abs(sum - 1) > 1e-9) {
+      report.errors.push_back(
+          {fmt::format("{}: weights sum to {} at {}, not 1 (every rule must be affine)", where, sum, c.describe())});
+      return;
+    }
+    if (!asymmetric.empty()) {
+      report.errors.push_back({fmt::format("{}: {} at {}", where, asymmetric, c.describe())});
+      return;
+    }
+  }
+}
+
 int natural_face_size(const Scheme& s) {
   if (s.required_face_size) return s.required_face_size;
   return splitter_info(s.split()).required_face_size;
@@ -125,6 +201,10 @@ void check_step(const Scheme& scheme, const StepRules& step, const std::string& 
       const std::string where = fmt::format("{}:{}: {} ({})", scheme.path,
                                             line_of(text, source.terms.empty() ? "" : source.terms[0].weight),
                                             source.where.substr(source.where.find(": ") + 2), context_name(Context(c)));
+      if (Element(e) == Element::Face && uses_corner_roles(rule)) {
+        check_corner_rule(rule, where, lo, hi, report);
+        continue;
+      }
       bool reported = false;
       for (const Sizes& s : sizes_to_check(Element(e), lo, hi, face_size)) {
         ++report.checks;
