@@ -220,21 +220,93 @@ void apply_edge_rule(RowBuilder& row, const RuleInputs& in, Index e, const Compi
   }
 }
 
+namespace {
+
+// What the corner roles of a face rule see (formula.h: ci, cb, ex, fe).
+struct FaceCorners {
+  int k = 0;
+  int first = 0;         // the corner counted as ci = 0
+  int feature_edges = 0; // fe: face edges on a boundary or sharp
+  int extraordinary = 0; // ex: corners inside the surface whose valence is not the regular one
+};
+
+// The valence of a regular interior vertex among faces of size k (6 for triangles, 4 for
+// quads); 0 where no regular tiling has such faces.
+int regular_valence(int k) { return (k == 3 || k == 4) ? 2 * k / (k - 2) : 0; }
+
+// cb: a corner whose vertex lies on a boundary or crease (its context is crease or corner).
+bool on_feature(const RuleInputs& in, Index v) {
+  const Context c = in.features.vertices[v].parent;
+  return c == Context::Crease || c == Context::Corner;
+}
+
+FaceCorners face_corners(const RuleInputs& in, Index f) {
+  const Level& L = in.parent;
+  const auto verts = L.face(f);
+  const auto edges = L.face_edge_list(f);
+  FaceCorners fc;
+  fc.k = int(verts.size());
+  int feature_edge = -1, smooth_edge = -1;
+  for (int i = 0; i < fc.k; ++i) {
+    const bool sharp = in.features.edge_sharpness[edges[i]] > 0.f;
+    fc.feature_edges += sharp;
+    (sharp ? feature_edge : smooth_edge) = i;
+  }
+  // A triangle with one feature edge is counted from the corner across it, one with two
+  // from the corner between them (across the smooth edge); edge i joins corners i, i + 1.
+  if (fc.k == 3 && fc.feature_edges == 1) fc.first = (feature_edge + 2) % 3;
+  if (fc.k == 3 && fc.feature_edges == 2) fc.first = (smooth_edge + 2) % 3;
+  const int regular = regular_valence(fc.k);
+  for (Index v : verts) fc.extraordinary += !on_feature(in, v) && L.valence(v) != regular;
+  return fc;
+}
+
+// The ring of the vertex at `corner` of face f, CCW from the face's previous vertex
+// (j = 0) to its next one (j = n - 1); a boundary vertex's ring wraps across its gap.
+void add_corner_ring(RowBuilder& row, const RuleInputs& in, Index f, int corner, const FaceCorners& fc,
+                     const CompiledTerm& t) {
+  const Level& L = in.parent;
+  const Index v = L.face(f)[corner];
+  const Index arriving = L.face_edge_list(f)[(corner + fc.k - 1) % fc.k];  // previous vertex -> v
+  const auto ring = L.ring_edges(v);
+  const int n = int(ring.size());
+  int start = 0;
+  while (start < n && ring[start] != arriving) ++start;
+  const int ci = (corner - fc.first + fc.k) % fc.k, cb = on_feature(in, v);
+  for (int j = 0; j < n; ++j)
+    add_point(row, in, t, L.other_end(ring[(start + j) % n], v),
+              t.corner_weight(n, fc.k, j, ci, cb, fc.extraordinary, fc.feature_edges));
+}
+
+}  // namespace
+
 void apply_face_rule(RowBuilder& row, const RuleInputs& in, Index f, const CompiledRule& rule) {
   const Level& L = in.parent;
   const auto verts = L.face(f);
   const auto edges = L.face_edge_list(f);
   const int k = int(verts.size());
+  const FaceCorners fc = face_corners(in, f);
+  const int ex = fc.extraordinary, fe = fc.feature_edges;
   for (const CompiledTerm& t : rule.terms) {
     switch (t.role) {
       case Role::Vertices:
-        for (int j = 0; j < k; ++j) add_point(row, in, t, verts[j], t.weight(k, k, j));
+        for (int j = 0; j < k; ++j) add_point(row, in, t, verts[j], t.corner_weight(k, k, j, 0, 0, ex, fe));
         break;
       case Role::Edges:
-        for (int j = 0; j < k; ++j) add_point(row, in, t, edges[j], t.weight(k, k, j));
+        for (int j = 0; j < k; ++j) add_point(row, in, t, edges[j], t.corner_weight(k, k, j, 0, 0, ex, fe));
+        break;
+      case Role::Corners:
+        for (int c = 0; c < k; ++c) {
+          const int ci = (c - fc.first + k) % k;
+          add_point(row, in, t, verts[c],
+                    t.corner_weight(L.valence(verts[c]), k, ci, ci, on_feature(in, verts[c]), ex, fe));
+        }
+        break;
+      case Role::CornerRings:
+        for (int c = 0; c < k; ++c) add_corner_ring(row, in, f, c, fc, t);
         break;
       default:
-        if (!add_registered_role(row, in, t, f, 0, 1.0, [&](int j) { return t.weight(k, k, j); }))
+        if (!add_registered_role(row, in, t, f, 0, 1.0, [&](int j) { return t.corner_weight(k, k, j, 0, 0, ex, fe); }))
           wrong_role(t, Element::Face);
     }
   }

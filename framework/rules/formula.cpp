@@ -15,7 +15,7 @@ namespace subdiv {
 namespace {
 
 constexpr const char* kFormulaHelp =
-    "Formulas may use n, k, j, l (edge rules also n0, n1, k0, k1), the scheme's parameters, state and definitions, muParser "
+    "Formulas may use n, k, j, l (edge rules also n0, n1, k0, k1; face rules ci, cb, ex, fe), the scheme's parameters, state and definitions, muParser "
     "functions such as cos, sqrt, min, max, the functions binom(a, b), floor, ceil, mod(a, b), "
     "and the constant pi";
 
@@ -42,6 +42,7 @@ double binomial_coefficient(double a, double b) {
 struct FormulaSet::Impl {
   // Variable storage must not move: muParser keeps pointers to it.
   double n = 0, k = 0, j = 0, l = 0, n0 = 0, n1 = 0, k0 = 0, k1 = 0;
+  double ci = 0, cb = 0, ex = 0, fe = 0;
   std::map<std::string, double> parameters;
 
   // State variables: initial and next parsers, the storage formulas read, and the values
@@ -75,6 +76,10 @@ struct FormulaSet::Impl {
       parser->DefineVar("n1", &n1);
       parser->DefineVar("k0", &k0);
       parser->DefineVar("k1", &k1);
+      parser->DefineVar("ci", &ci);
+      parser->DefineVar("cb", &cb);
+      parser->DefineVar("ex", &ex);
+      parser->DefineVar("fe", &fe);
       parser->DefineConst("pi", 3.14159265358979323846);
       parser->DefineFun("binom", binom_fn);
       parser->DefineFun("floor", floor_fn);
@@ -88,6 +93,7 @@ struct FormulaSet::Impl {
       for (const auto& [name, ptr] : parser->GetUsedVar()) {
         uses.n |= name == "n", uses.k |= name == "k", uses.j |= name == "j", uses.l |= name == "l";
         uses.n0 |= name == "n0", uses.n1 |= name == "n1", uses.k0 |= name == "k0", uses.k1 |= name == "k1";
+        uses.ci |= name == "ci", uses.cb |= name == "cb", uses.ex |= name == "ex", uses.fe |= name == "fe";
         if (parameters.count(name) && !uses.reads(name)) uses.parameters.push_back(name);
         for (size_t i = 0; i < visible_definitions; ++i)
           if (definition_names[i] == name) uses.merge(definition_uses[i]);
@@ -229,6 +235,7 @@ int FormulaSet::add(const std::string& expression, const std::string& where) {
 double FormulaSet::evaluate(int id, const FormulaInputs& in) {
   impl_->n = in.n, impl_->k = in.k, impl_->j = in.j, impl_->l = in.l, impl_->n0 = in.n0, impl_->n1 = in.n1;
   impl_->k0 = in.k0, impl_->k1 = in.k1;
+  impl_->ci = in.ci, impl_->cb = in.cb, impl_->ex = in.ex, impl_->fe = in.fe;
   try {
     impl_->evaluate_definitions();
     return impl_->formulas[id]->Eval();
@@ -247,6 +254,7 @@ std::vector<double> FormulaSet::state_values(int level) {
 
 void FormulaUses::merge(const FormulaUses& o) {
   n |= o.n, k |= o.k, j |= o.j, l |= o.l, n0 |= o.n0, n1 |= o.n1, k0 |= o.k0, k1 |= o.k1;
+  ci |= o.ci, cb |= o.cb, ex |= o.ex, fe |= o.fe;
   for (const std::string& p : o.parameters)
     if (!reads(p)) parameters.push_back(p);
 }

@@ -25,8 +25,11 @@ bool edge_role_light(Role r) { return r == Role::Ends || r == Role::Faces; }
 template <class Inside>
 bool rule_inside(const CompiledRule& rule, Inside inside, const bool new_point_ok[4]) {
   if (!rule.defined) return false;
-  for (const CompiledTerm& t : rule.terms)
+  for (const CompiledTerm& t : rule.terms) {
     if (!inside(t.role) || !new_point_ok[int(t.new_point)]) return false;
+    // A face's corner variables (formula.h) are not part of a plan's key.
+    if (t.stride_ci || t.stride_cb || t.stride_ex || t.stride_fe) return false;
+  }
   return true;
 }
 

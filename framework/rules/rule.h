@@ -36,6 +36,8 @@ enum class Role : std::uint8_t {
   FarWings,  // edge rule: for each incident triangle (a, b, c), the vertices across (b, c) and (c, a)
   EndRing0,  // edge rule: the ring of the edge's first end, counted CCW from the edge (j = 0 is the other end)
   EndRing1,  // edge rule: the ring of the edge's second end, likewise
+  Corners,   // face rule: the face's vertices, each seen with its own valence n (corner variables)
+  CornerRings,  // face rule: each corner's ring, CCW from the face's previous vertex to its next
   Curve,     // crease and boundary rules: points along the feature curve (from the curve scheme)
 };
 

@@ -9,7 +9,7 @@
 namespace subdiv {
 namespace {
 
-constexpr std::array<std::pair<Role, std::string_view>, 15> kRoleNames{{
+constexpr std::array<std::pair<Role, std::string_view>, 17> kRoleNames{{
     {Role::Self, "self"},
     {Role::Ring, "ring"},
     {Role::Faces, "faces"},
@@ -24,6 +24,8 @@ constexpr std::array<std::pair<Role, std::string_view>, 15> kRoleNames{{
     {Role::FarWings, "far-wings"},
     {Role::EndRing0, "end-ring-0"},
     {Role::EndRing1, "end-ring-1"},
+    {Role::Corners, "corners"},
+    {Role::CornerRings, "corner-rings"},
     {Role::Curve, "curve"},
 }};
 
@@ -130,7 +132,7 @@ bool role_allowed(Element element, Role role) {
              role == Role::Wings || role == Role::FarWings || role == Role::EndRing0 ||
              role == Role::EndRing1 || role == Role::Curve;
     case Element::Face:
-      return role == Role::Vertices || role == Role::Edges;
+      return role == Role::Vertices || role == Role::Edges || role == Role::Corners || role == Role::CornerRings;
     case Element::Corner:
       return role == Role::Self || role == Role::Vertices || role == Role::Curve;
   }

@@ -62,6 +62,8 @@ std::vector<SmoothKernels::Term> compile_kernel(const StepContext& s, Element el
   for (const CompiledTerm& t : rule.terms) {
     Gather gather;
     if (!gather_of(element, t, gather)) return {};
+    // Weights that read a face's corner variables (formula.h) need the generic interpreter.
+    if (t.stride_ci || t.stride_cb || t.stride_ex || t.stride_fe) return {};
     // Face points are weighed by their face's size k (element_rules.cpp), so k varies too.
     const bool varies = t.stride_j != 0 || (gather == Gather::FacePoints && t.stride_k != 0);
     using Reads = SmoothKernels::Term::Reads;

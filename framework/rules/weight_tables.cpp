@@ -8,18 +8,22 @@
 namespace subdiv {
 namespace {
 
+constexpr int kVariables = 11;  // n, k, j, n0, n1, k0, k1, ci, cb, ex, fe
+
 // Sizes and strides of the dense table over the variables a formula uses.
 struct TableShape {
   size_t size = 1;
-  int count[7] = {1, 1, 1, 1, 1, 1, 1};  // n, k, j, n0, n1, k0, k1
-  size_t stride[7] = {0, 0, 0, 0, 0, 0, 0};
+  int count[kVariables] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+  size_t stride[kVariables] = {};
 };
 
 TableShape table_shape(const FormulaUses& uses, int max_n, int max_k, int max_j) {
   TableShape s;
-  const bool used[7] = {uses.n, uses.k, uses.j, uses.n0, uses.n1, uses.k0, uses.k1};
-  const int range[7] = {max_n + 1, max_k + 1, max_j + 1, max_n + 1, max_n + 1, max_k + 1, max_k + 1};
-  for (int v = 6; v >= 0; --v) {
+  const bool used[kVariables] = {uses.n, uses.k, uses.j, uses.n0, uses.n1, uses.k0, uses.k1,
+                                 uses.ci, uses.cb, uses.ex, uses.fe};
+  const int range[kVariables] = {max_n + 1, max_k + 1, max_j + 1, max_n + 1, max_n + 1, max_k + 1, max_k + 1,
+                                 std::max(max_k, 1), 2, max_k + 1, max_k + 1};
+  for (int v = kVariables - 1; v >= 0; --v) {
     if (!used[v]) continue;
     s.count[v] = range[v];
     s.stride[v] = s.size;
@@ -30,41 +34,41 @@ TableShape table_shape(const FormulaUses& uses, int max_n, int max_k, int max_j)
 
 // Calls visit(index into the table, coordinates) for every entry of a table of this shape.
 template <class Visit>
-void for_each_entry(const int count[7], const size_t stride[7], Visit visit) {
-  int x[7];
-  for (x[0] = 0; x[0] < count[0]; ++x[0])
-    for (x[1] = 0; x[1] < count[1]; ++x[1])
-      for (x[2] = 0; x[2] < count[2]; ++x[2])
-        for (x[3] = 0; x[3] < count[3]; ++x[3])
-          for (x[4] = 0; x[4] < count[4]; ++x[4])
-            for (x[5] = 0; x[5] < count[5]; ++x[5])
-              for (x[6] = 0; x[6] < count[6]; ++x[6]) {
-                size_t i = 0;
-                for (int v = 0; v < 7; ++v) i += stride[v] * size_t(x[v]);
-                visit(i, x);
-              }
+void for_each_entry(const int count[kVariables], const size_t stride[kVariables], Visit visit) {
+  for (int v = 0; v < kVariables; ++v)
+    if (count[v] <= 0) return;
+  int x[kVariables] = {};
+  for (;;) {
+    size_t i = 0;
+    for (int v = 0; v < kVariables; ++v) i += stride[v] * size_t(x[v]);
+    visit(i, x);
+    int v = kVariables - 1;
+    while (v >= 0 && ++x[v] == count[v]) x[v--] = 0;
+    if (v < 0) return;
+  }
 }
 
 // A formula may name a variable its value does not depend on (a definition that selects
 // between cases by a parameter reads the variables of every case): such a dimension is
 // dropped from the table, so that the kernels (smooth_kernels.h) see a weight that depends
 // on n alone as such. The values stay the same.
-void drop_constant_dimensions(CompiledTerm& t, const int count[7]) {
-  size_t* strides[7] = {&t.stride_n, &t.stride_k, &t.stride_j, &t.stride_n0, &t.stride_n1, &t.stride_k0, &t.stride_k1};
-  size_t stride[7];
-  for (int v = 0; v < 7; ++v) stride[v] = *strides[v];
-  bool constant[7];
-  for (int v = 0; v < 7; ++v) {
+void drop_constant_dimensions(CompiledTerm& t, const int count[kVariables]) {
+  size_t* strides[kVariables] = {&t.stride_n,  &t.stride_k,  &t.stride_j,  &t.stride_n0, &t.stride_n1, &t.stride_k0,
+                                 &t.stride_k1, &t.stride_ci, &t.stride_cb, &t.stride_ex, &t.stride_fe};
+  size_t stride[kVariables];
+  for (int v = 0; v < kVariables; ++v) stride[v] = *strides[v];
+  bool constant[kVariables];
+  for (int v = 0; v < kVariables; ++v) {
     constant[v] = stride[v] != 0;
     if (!constant[v]) continue;
     for_each_entry(count, stride, [&](size_t i, const int* x) {
       if (x[v] != 0 && t.table[i] != t.table[i - stride[v] * size_t(x[v])]) constant[v] = false;
     });
   }
-  if (std::none_of(constant, constant + 7, [](bool c) { return c; })) return;
-  int kept_count[7];
-  size_t kept_stride[7] = {}, size = 1;
-  for (int v = 6; v >= 0; --v) {
+  if (std::none_of(constant, constant + kVariables, [](bool c) { return c; })) return;
+  int kept_count[kVariables];
+  size_t kept_stride[kVariables] = {}, size = 1;
+  for (int v = kVariables - 1; v >= 0; --v) {
     const bool keep = stride[v] != 0 && !constant[v];
     kept_count[v] = keep ? count[v] : 1;
     kept_stride[v] = keep ? size : 0;
@@ -73,11 +77,11 @@ void drop_constant_dimensions(CompiledTerm& t, const int count[7]) {
   std::vector<double> kept(size);
   for_each_entry(kept_count, kept_stride, [&](size_t i, const int* x) {
     size_t from = 0;
-    for (int v = 0; v < 7; ++v) from += stride[v] * size_t(x[v]);
+    for (int v = 0; v < kVariables; ++v) from += stride[v] * size_t(x[v]);
     kept[i] = t.table[from];
   });
   t.table = std::move(kept);
-  for (int v = 0; v < 7; ++v) *strides[v] = kept_stride[v];
+  for (int v = 0; v < kVariables; ++v) *strides[v] = kept_stride[v];
 }
 
 CompiledTerm compile_term(const Term& term, FormulaSet& formulas, int max_n, int max_k, int level) {
@@ -93,10 +97,13 @@ CompiledTerm compile_term(const Term& term, FormulaSet& formulas, int max_n, int
   out.stride_n = shape.stride[0], out.stride_k = shape.stride[1], out.stride_j = shape.stride[2];
   out.stride_n0 = shape.stride[3], out.stride_n1 = shape.stride[4];
   out.stride_k0 = shape.stride[5], out.stride_k1 = shape.stride[6];
+  out.stride_ci = shape.stride[7], out.stride_cb = shape.stride[8];
+  out.stride_ex = shape.stride[9], out.stride_fe = shape.stride[10];
   out.table.resize(shape.size);
   for_each_entry(shape.count, shape.stride, [&](size_t i, const int* x) {
     out.table[i] = formulas.evaluate(id, {double(x[0]), double(x[1]), double(x[2]), double(level), double(x[3]),
-                                          double(x[4]), double(x[5]), double(x[6])});
+                                          double(x[4]), double(x[5]), double(x[6]), double(x[7]), double(x[8]),
+                                          double(x[9]), double(x[10])});
   });
   drop_constant_dimensions(out, shape.count);
   return out;

@@ -20,6 +20,9 @@ struct CompiledTerm {
   // Dense table; a variable the formula does not use has stride 0.
   std::vector<double> table;
   size_t stride_n = 0, stride_k = 0, stride_j = 0, stride_n0 = 0, stride_n1 = 0, stride_k0 = 0, stride_k1 = 0;
+  // Face rules' corner variables (formula.h): corner index ci < max_k, boundary flag cb and
+  // the face's counts of extraordinary corners ex and feature edges fe, each <= max_k.
+  size_t stride_ci = 0, stride_cb = 0, stride_ex = 0, stride_fe = 0;
   int max_j = 0;  // the largest point index j tabulated
   // Role::Curve: weights on feature-curve points at offsets curve_start, curve_start+1, ...
   int curve_start = 0;
@@ -28,6 +31,11 @@ struct CompiledTerm {
   double weight(int n, int k, int j, int n0 = 0, int n1 = 0, int k0 = 0, int k1 = 0) const {
     return table[n * stride_n + k * stride_k + j * stride_j + n0 * stride_n0 + n1 * stride_n1 + k0 * stride_k0 +
                  k1 * stride_k1];
+  }
+  // A face rule's corner-role weight: n the corner's valence, k the face size.
+  double corner_weight(int n, int k, int j, int ci, int cb, int ex, int fe) const {
+    return table[n * stride_n + k * stride_k + j * stride_j + ci * stride_ci + cb * stride_cb + ex * stride_ex +
+                 fe * stride_fe];
   }
 };
 

@@ -71,9 +71,10 @@ double parse_number(const std::string& text, const Place& at) {
 
 // Names formulas already use for themselves.
 void check_not_reserved(const std::string& name, const Place& at) {
-  static const std::set<std::string> reserved{"n", "k", "j", "l", "n0", "n1", "k0", "k1", "pi"};
+  static const std::set<std::string> reserved{"n", "k", "j", "l", "n0", "n1", "k0", "k1", "ci", "cb", "ex", "fe", "pi"};
   if (reserved.count(name))
-    fail(at, fmt::format("'{}' is a reserved name in formulas (n, k, j, l, n0, n1, k0, k1, pi); rename it", name));
+    fail(at, fmt::format("'{}' is a reserved name in formulas (n, k, j, l, n0, n1, k0, k1, ci, cb, ex, fe, pi); rename it",
+                         name));
 }
 
 ParameterSpec parse_parameter(const std::string& name, const Json& spec, const Place& at) {
@@ -176,7 +177,8 @@ std::vector<NamedFormula> parse_state(const Json& root, const Place& at) {
 void check_names(const std::vector<ParameterSpec>& params, const std::vector<NamedFormula>& named,
                  const Place& at) {
   std::map<std::string, std::string> seen{{"pi", "a constant"}};
-  for (const char* variable : {"n", "k", "j", "l", "n0", "n1", "k0", "k1"}) seen[variable] = "a formula variable";
+  for (const char* variable : {"n", "k", "j", "l", "n0", "n1", "k0", "k1", "ci", "cb", "ex", "fe"})
+    seen[variable] = "a formula variable";
   for (const char* function : {"binom", "floor", "ceil", "mod"}) seen[function] = "a formula function";
   auto claim = [&](const std::string& name, const std::string& what, const Place& here) {
     if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') ||

@@ -1,8 +1,10 @@
 #include "framework/scheme/scheme_validator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "framework/scheme/step_tables.h"
@@ -108,13 +110,141 @@ std::vector<Sizes> sizes_to_check(Element e, int lo, int hi, int face_size) {
   return out;
 }
 
+// Face rules over the corner roles (corners, corner-rings) see each corner's valence and
+// boundary flag and the face's counts ex and fe (formula.h), so they are checked over
+// configurations of whole triangles: interior ones with every valence triple, and ones with
+// one, two or three feature edges, whose corners on those edges lie on a boundary (cb = 1).
+bool uses_corner_roles(const CompiledRule& rule) {
+  for (const auto& t : rule.terms)
+    if (t.role == Role::Corners || t.role == Role::CornerRings) return true;
+  return false;
+}
+
+struct CornerConfig {
+  int n[3];
+  int cb[3];
+  int fe;
+  std::string describe() const {
+    return fmt::format("corner valences ({}, {}, {}), on a boundary ({}, {}, {}), fe={}", n[0], n[1], n[2], cb[0], cb[1],
+                       cb[2], fe);
+  }
+};
+
+std::vector<CornerConfig> corner_configs(int lo, int hi) {
+  std::vector<CornerConfig> out;
+  for (int a = lo; a <= hi; ++a)
+    for (int b = lo; b <= hi; ++b)
+      for (int c = lo; c <= hi; ++c) out.push_back({{a, b, c}, {0, 0, 0}, 0});
+  for (int a = lo; a <= hi; ++a)
+    for (int b = lo; b <= hi; ++b) {
+      out.push_back({{a, b, b}, {1, 0, 0}, 0});
+      for (int cb0 = 0; cb0 < 2; ++cb0) out.push_back({{a, b, b + 1 > hi ? b : b + 1}, {cb0, 1, 1}, 1});
+      out.push_back({{2 + (a - lo), b, b}, {1, 1, 1}, 2});
+    }
+  out.push_back({{2, 2, 2}, {1, 1, 1}, 3});
+  return out;
+}
+
+double corner_rule_sum(const CompiledRule& rule, const CornerConfig& c, std::string& asymmetric) {
+  int ex = 0;
+  for (int i = 0; i < 3; ++i) ex += c.cb[i] == 0 && c.n[i] != 6;
+  double sum = 0;
+  for (const auto& t : rule.terms) {
+    for (int i = 0; i < 3; ++i) {
+      if (t.role == Role::Corners) sum += t.corner_weight(c.n[i], 3, i, i, c.cb[i], ex, c.fe);
+      if (t.role != Role::CornerRings) continue;
+      for (int j = 0; j < c.n[i]; ++j) {
+        const double w = t.corner_weight(c.n[i], 3, j, i, c.cb[i], ex, c.fe);
+        const double mirror = t.corner_weight(c.n[i], 3, c.n[i] - 1 - j, i, c.cb[i], ex, c.fe);
+        // The face is symmetric about a corner when fe = 0, and about corner 0 when fe = 1.
+        if ((c.fe == 0 || (c.fe == 1 && i == 0)) && asymmetric.empty() && std::abs(w - mirror) > kTolerance)
+          asymmetric = fmt::format("role 'corner-rings' is not symmetric: at corner {} w(j={}) = {} but its mirror "
+                                   "w(j={}) = {}", i, j, w, c.n[i] - 1 - j, mirror);
+        sum += w;
+      }
+    }
+    if (t.role == Role::Vertices || t.role == Role::Edges)
+      for (int j = 0; j < 3; ++j) sum += t.corner_weight(3, 3, j, 0, 0, ex, c.fe);
+  }
+  return sum;
+}
+
+void check_corner_rule(const CompiledRule& rule, const std::string& where, int lo, int hi, ValidationReport& report,
+                       const std::string& at_parameters) {
+  for (const CornerConfig& c : corner_configs(lo, hi)) {
+    ++report.checks;
+    std::string asymmetric;
+    const double sum = corner_rule_sum(rule, c, asymmetric);
+    if (!std::isfinite(sum) || std::abs(sum - 1) > 1e-9) {
+      report.errors.push_back(
+          {fmt::format("{}: weights sum to {} at {}{}, not 1 (every rule must be affine)", where, sum, c.describe(),
+                       at_parameters)});
+      return;
+    }
+    if (!asymmetric.empty()) {
+      report.errors.push_back({fmt::format("{}: {} at {}{}", where, asymmetric, c.describe(), at_parameters)});
+      return;
+    }
+  }
+}
+
 int natural_face_size(const Scheme& s) {
   if (s.required_face_size) return s.required_face_size;
   return splitter_info(s.split()).required_face_size;
 }
 
+// The faces a split makes: 3 triangles, 4 quads, 0 any polygon, -1 not known (a plugin's).
+int split_output_faces(SplitKind split) {
+  switch (split) {
+    case SplitKind::Quad: return 4;
+    case SplitKind::Triangle:
+    case SplitKind::Sqrt3: return 3;
+    case SplitKind::Dual:
+    case SplitKind::MidEdge: return 0;
+  }
+  return -1;
+}
+
+std::string faces_name(int size) { return size == 3 ? "triangles" : size == 4 ? "quads" : "any polygons"; }
+
+// Roles that exist only around faces of one size (element_rules.cpp refuses others when a
+// mesh is refined): the triangle roles of edge rules and the quads' diagonals.
+int role_face_size(Role role) {
+  if (role == Role::Opposite || role == Role::Wings || role == Role::FarWings) return 3;
+  if (role == Role::Diagonals) return 4;
+  return 0;
+}
+
+// A role is meaningful for a step when every level the step's rules run on has the faces it
+// needs: a split's rules see the base mesh (the scheme's "faces") and then the split's own
+// output; a smoothing pass sees the output of the scheme's split.
+void check_roles(const Scheme& scheme, const StepRules& step, const std::string& text, ValidationReport& report) {
+  const int made = split_output_faces(scheme.split());
+  if (made < 0) return;  // a plugin's split: its faces are not known
+  const int base = natural_face_size(scheme);
+  for (int e = 0; e < kElementCount; ++e)
+    for (int c = 0; c < kContextCount; ++c) {
+      if (!step.rules[e][c]) continue;
+      for (const Term& t : step.rules[e][c]->terms) {
+        const int needs = role_face_size(t.role);
+        if (!needs) continue;
+        std::string why;
+        if (made != needs)
+          why = fmt::format("the {} split makes {}", splitter_info(scheme.split()).name, faces_name(made));
+        else if (step.is_split && base != needs)
+          why = fmt::format("the base mesh may have {} (the scheme's \"faces\" is not \"{}\")", faces_name(base),
+                            faces_name(needs));
+        if (why.empty()) continue;
+        ++report.checks;
+        report.errors.push_back({fmt::format("{}:{}: {} ({}): role '{}' needs {}, but {}", scheme.path,
+                                             line_of(text, t.weight), t.where.substr(t.where.find(": ") + 2),
+                                             context_name(Context(c)), role_name(t.role), faces_name(needs), why)});
+      }
+    }
+}
+
 void check_step(const Scheme& scheme, const StepRules& step, const std::string& text, int lo, int hi,
-                ValidationReport& report) {
+                ValidationReport& report, const std::string& at_parameters = "") {
   const WeightTables tables = step_weight_tables(scheme, step, hi, 8, 0);
   const int face_size = natural_face_size(scheme);
   for (int e = 0; e < kElementCount; ++e)
@@ -125,6 +255,10 @@ void check_step(const Scheme& scheme, const StepRules& step, const std::string& 
       const std::string where = fmt::format("{}:{}: {} ({})", scheme.path,
                                             line_of(text, source.terms.empty() ? "" : source.terms[0].weight),
                                             source.where.substr(source.where.find(": ") + 2), context_name(Context(c)));
+      if (Element(e) == Element::Face && uses_corner_roles(rule)) {
+        check_corner_rule(rule, where, lo, hi, report, at_parameters);
+        continue;
+      }
       bool reported = false;
       for (const Sizes& s : sizes_to_check(Element(e), lo, hi, face_size)) {
         ++report.checks;
@@ -134,14 +268,130 @@ void check_step(const Scheme& scheme, const StepRules& step, const std::string& 
                                : Element(e) == Element::Vertex ? fmt::format("n={}", s.n)
                                                                : fmt::format("k={}", s.k);
         if (!std::isfinite(sum) || std::abs(sum - 1) > 1e-9) {
-          report.errors.push_back({fmt::format("{}: weights sum to {} at {}, not 1 (every rule must be affine)", where, sum, at)});
+          report.errors.push_back({fmt::format("{}: weights sum to {} at {}{}, not 1 (every rule must be affine)", where,
+                                               sum, at, at_parameters)});
           reported = true;
         } else if (std::string why = asymmetry(rule, s, Element(e)); !why.empty()) {
-          report.errors.push_back({fmt::format("{}: {} at {}", where, why, at)});
+          report.errors.push_back({fmt::format("{}: {} at {}{}", where, why, at, at_parameters)});
           reported = true;
         }
       }
     }
+}
+
+
+// The values of one parameter the grid visits: every choice; for a numeric parameter with
+// both bounds, its two ends (just inside an exclusive one) and three points between, or its
+// whole numbers when the bounds and default are whole (degrees, repeat counts); else the default.
+std::vector<std::string> grid_values(const ParameterSpec& p) {
+  if (p.is_choice) return p.choices;
+  auto text = [](double v) { return fmt::format("{:.17g}", v); };
+  if (!p.has_minimum || !p.has_maximum || p.maximum <= p.minimum) return {text(p.value)};
+  const auto whole = [](double v) { return std::floor(v) == v; };
+  std::vector<std::string> out;
+  if (whole(p.minimum) && whole(p.maximum) && whole(p.value)) {
+    const double lo = p.minimum + p.minimum_exclusive, hi = p.maximum - p.maximum_exclusive;
+    const double step = std::max(1.0, std::ceil((hi - lo) / 8));
+    for (double v = lo; v < hi; v += step) out.push_back(text(v));
+    if (hi >= lo) out.push_back(text(hi));
+    return out;
+  }
+  const double span = p.maximum - p.minimum, inset = 1e-9 * span;
+  const double lo = p.minimum + (p.minimum_exclusive ? inset : 0), hi = p.maximum - (p.maximum_exclusive ? inset : 0);
+  for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) out.push_back(text(t == 1.0 ? hi : lo + t * (hi - lo)));
+  return out;
+}
+
+// Grid points: the product of every parameter's values when it has at most 64 points, else
+// each parameter swept on its own with the others at their defaults.
+std::vector<ParameterOverrides> parameter_grid(const std::vector<ParameterSpec>& params) {
+  std::vector<std::vector<std::string>> values;
+  size_t product = 1;
+  for (const ParameterSpec& p : params) {
+    values.push_back(grid_values(p));
+    product *= values.back().size();
+  }
+  std::vector<ParameterOverrides> grid;
+  if (product <= 64) {
+    grid.emplace_back();
+    for (size_t i = 0; i < params.size(); ++i) {
+      std::vector<ParameterOverrides> next;
+      for (const auto& point : grid)
+        for (const auto& v : values[i]) {
+          next.push_back(point);
+          next.back()[params[i].name] = v;
+        }
+      grid = std::move(next);
+    }
+    return grid;
+  }
+  for (size_t i = 0; i < params.size(); ++i)
+    for (const auto& v : values[i]) grid.push_back({{params[i].name, v}});
+  return grid;
+}
+
+std::string describe_point(const ParameterOverrides& point) {
+  std::string out;
+  for (const auto& [name, value] : point) out += fmt::format("{}{}={}", out.empty() ? " with " : ", ", name, value);
+  return out;
+}
+
+// Checks the rules at every grid point of the parameters' declared ranges; stops at the
+// first point that fails, which the messages name.
+using SchemeMaker = std::function<std::shared_ptr<const Scheme>(const ParameterOverrides&)>;
+
+void check_parameter_grid(const Scheme& scheme, const SchemeMaker& make, const std::string& text, int lo, int hi,
+                          ValidationReport& report) {
+  if (scheme.parameters.empty()) return;
+  for (const ParameterOverrides& point : parameter_grid(scheme.parameters)) {
+    const size_t before = report.errors.size();
+    const std::string at = describe_point(point);
+    try {
+      const auto at_point = make(point);
+      for (const auto& step : at_point->steps)
+        if (!step.code && !step.nonlinear) check_step(*at_point, step, text, lo, hi, report, at);
+    } catch (const Error& e) {
+      report.errors.push_back({fmt::format("{}{}", e.what(), at)});
+    }
+    if (report.errors.size() > before) return;
+  }
+}
+
+void check_curve(const CurveScheme& curve, const std::string& path, const std::string& text, ValidationReport& report) {
+  FormulaSet formulas(curve.parameters, curve.definitions);
+  for (size_t r = 0; r < curve.weights.size(); ++r) {
+    double sum = 0;
+    for (size_t t = 0; t < curve.weights[r].size(); ++t)
+      sum += formulas.evaluate(formulas.add(curve.weights[r][t], path), {0, 0, double(t)});
+    ++report.checks;
+    if (std::abs(sum - 1) > 1e-9)
+      report.errors.push_back({fmt::format("{}:{}: rules[{}]: weights sum to {}, not 1", path,
+                                           line_of(text, curve.weights[r].empty() ? "" : curve.weights[r][0]), r, sum)});
+  }
+}
+
+void check_surface(const Scheme& scheme, const SchemeMaker& make, const std::string& text, int lo, int hi,
+                   ValidationReport& report) {
+  for (const auto& step : scheme.steps) {
+    if (step.code || step.nonlinear) {
+      report.skipped = fmt::format("{} has rules written in C++, which only a mesh can check", step.where.empty() ? scheme.name : step.where);
+      continue;
+    }
+    check_roles(scheme, step, text, report);
+    check_step(scheme, step, text, lo, hi, report);
+  }
+  if (report.errors.empty()) check_parameter_grid(scheme, make, text, lo, hi, report);
+}
+
+// A scheme a plugin registered: its rules are data (a plugin's JSON scheme) or C++.
+void validate_code_scheme(const CodeSchemeEntry& entry, int lo, int hi, ValidationReport& report) {
+  report.kind = entry.kind;
+  report.scheme_name = entry.name;
+  if (entry.kind == "curve") {
+    check_curve(*entry.make_curve({}, nullptr), entry.name, "", report);
+    return;
+  }
+  check_surface(*entry.make_surface({}), entry.make_surface, "", lo, hi, report);
 }
 
 }  // namespace
@@ -152,28 +402,23 @@ ValidationReport validate_scheme_file(const std::string& name_or_path, int lo, i
                             hi, kMinCheckedValence, kMaxCheckedValence));
   ValidationReport report;
   try {
+    if (const CodeSchemeEntry* entry = find_code_scheme(name_or_path)) {
+      validate_code_scheme(*entry, lo, hi, report);
+      return report;
+    }
     const std::string path = scheme_file_path(name_or_path);
     report.kind = scheme_file_kind(path);
     if (report.kind == "curve") {
       const auto curve = load_curve_scheme(path, {});
       report.scheme_name = curve->name;
-      // Each rule of a curve scheme must be affine too.
-      FormulaSet formulas(curve->parameters, curve->definitions);
-      for (size_t r = 0; r < curve->weights.size(); ++r) {
-        double sum = 0;
-        for (size_t t = 0; t < curve->weights[r].size(); ++t)
-          sum += formulas.evaluate(formulas.add(curve->weights[r][t], path), {0, 0, double(t)});
-        ++report.checks;
-        if (std::abs(sum - 1) > 1e-9)
-          report.errors.push_back({fmt::format("{}:{}: rules[{}]: weights sum to {}, not 1", path,
-                                               line_of(read_text(path), curve->weights[r][0]), r, sum)});
-      }
+      check_curve(*curve, path, read_text(path), report);
       return report;
     }
     const auto scheme = load_scheme(path);
     report.scheme_name = scheme->name;
     const std::string text = read_text(path);
-    for (const auto& step : scheme->steps) check_step(*scheme, step, text, lo, hi, report);
+    check_surface(*scheme, [&path](const ParameterOverrides& point) { return load_scheme(path, point); }, text, lo, hi,
+                  report);
   } catch (const Error& e) {
     report.errors.push_back({e.what()});
   }

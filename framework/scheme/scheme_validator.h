@@ -14,6 +14,9 @@ struct ValidationReport {
   std::string scheme_name, kind;
   std::vector<ValidationIssue> errors;
   int checks = 0;  // how many (rule, valence) combinations were checked
+  // Why (part of) the scheme could not be checked: a plugin's rules written in C++. Empty when
+  // everything was checked.
+  std::string skipped;
   bool ok() const { return errors.empty(); }
 };
 
@@ -22,7 +25,9 @@ struct ValidationReport {
 constexpr int kMinCheckedValence = 2;
 constexpr int kMaxCheckedValence = 128;
 
-// Loads and checks a scheme file; load errors become the report's single error. Throws
+// Loads and checks a scheme file, or a scheme a plugin registered (by name: its JSON rules are
+// checked like a file's, rules written in C++ are reported in `skipped`); load errors become
+// the report's single error. Throws
 // subdiv::Error unless kMinCheckedValence <= min_valence <= max_valence <= kMaxCheckedValence.
 ValidationReport validate_scheme_file(const std::string& path, int min_valence = 3, int max_valence = 16);
 

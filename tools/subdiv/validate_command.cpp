@@ -13,7 +13,7 @@ void add_validate_command(CLI::App& app) {
   auto range = std::make_shared<std::pair<int, int>>(3, 16);
   auto* cmd = app.add_subcommand("validate",
                                  "Check scheme files: structure, formulas, affine weights and symmetry for every valence");
-  cmd->add_option("files", *files, "Scheme files (.json) or built-in scheme names")->required();
+  cmd->add_option("files", *files, "Scheme files (.json), built-in scheme names or plugins' scheme names")->required();
   const auto valences = CLI::Range(kMinCheckedValence, kMaxCheckedValence);
   cmd->add_option("--min-valence", range->first, "Smallest valence to check")->check(valences)->capture_default_str();
   cmd->add_option("--max-valence", range->second, "Largest valence to check")->check(valences)->capture_default_str();
@@ -28,8 +28,13 @@ void add_validate_command(CLI::App& app) {
         continue;
       }
       const ValidationReport r = validate_scheme_file(file, range->first, range->second);
+      if (r.ok() && !r.skipped.empty() && r.checks == 0) {
+        fmt::print("{}: skipped ({} scheme '{}': {})\n", file, r.kind, r.scheme_name, r.skipped);
+        continue;
+      }
       if (r.ok()) {
-        fmt::print("{}: ok ({} scheme '{}', {} checks)\n", file, r.kind, r.scheme_name, r.checks);
+        fmt::print("{}: ok ({} scheme '{}', {} checks{}{})\n", file, r.kind, r.scheme_name, r.checks,
+                   r.skipped.empty() ? "" : "; not checked: ", r.skipped);
         continue;
       }
       ++failed;

@@ -183,3 +183,10 @@ TEST_CASE("subdiv refine runs a non-linear plugin curve scheme on polylines: poi
   CHECK(points == 8 * 64);
   CHECK(worst < 1e-12);
 }
+
+TEST_CASE("validate takes a plugin's scheme by name: C++ rules are reported as skipped, exit 0") {
+  const CliResult r = run("validate circle-quad" + plugin("subdiv_circle_preserving"));
+  CHECK(r.exit_code == 0);
+  CHECK(contains(r.output, "circle-quad: skipped (surface scheme 'circle-quad'"));
+  CHECK(run("validate sqrt2" + plugin("subdiv_sqrt2")).exit_code == 0);
+}

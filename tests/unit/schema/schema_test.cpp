@@ -371,7 +371,7 @@ TEST_CASE("the schema's names are the engine's names") {
   std::set<std::string> all_roles;
   for (int r = 0; r <= int(Role::Curve); ++r)
     if (Role(r) != Role::Curve) all_roles.insert(std::string(role_name(Role(r))));
-  CHECK(all_roles.size() == 14);
+  CHECK(all_roles.size() == 16);
   for (int e = 0; e < kElementCount; ++e) {
     std::set<std::string> engine_roles;
     for (const auto& name : all_roles) {

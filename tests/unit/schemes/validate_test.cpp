@@ -73,3 +73,60 @@ TEST_CASE("subdiv validate: exit code 0 on good files, non-zero with messages on
   CHECK(r.exit_code != 0);
   CHECK(r.output.find("weights sum to 2") != std::string::npos);
 }
+
+TEST_CASE("validate: a triangle-only role in a quad scheme is refused with its place") {
+  // Loop's edge rule (3/8 ends, 1/8 opposite) on the quad split: every level after the first
+  // is made of quads, where 'opposite' does not exist.
+  const auto g = write("wrong-role",
+                       "{\"name\": \"v\", \"split\": \"quad\", \"curve\": \"cubic-bspline\", \"rules\": {\n"
+                       "  \"face\": [{\"sum\": \"vertices\", \"w\": \"1/k\"}],\n"
+                       "  \"edge\": [{\"sum\": \"ends\", \"w\": \"3/8\"}, {\"sum\": \"opposite\", \"w\": \"1/8\"}],\n"
+                       "  \"vertex\": [{\"at\": \"self\", \"w\": \"1\"}]\n}}\n");
+  const auto r = validate_scheme_file(g);
+  REQUIRE_FALSE(r.ok());
+  CHECK(r.errors[0].message.find("wrong-role.json:3: rules.edge[1] (smooth): role 'opposite' needs triangles, but "
+                                 "the quad split makes quads") != std::string::npos);
+}
+
+TEST_CASE("validate: 'diagonals' needs a base mesh of quads under the quad split") {
+  const auto g = write("diagonals",
+                       "{\"name\": \"v\", \"split\": \"quad\", \"curve\": \"cubic-bspline\", \"rules\": {\n"
+                       "  \"face\": [{\"sum\": \"vertices\", \"w\": \"1/k\"}],\n"
+                       "  \"edge\": [{\"sum\": \"ends\", \"w\": \"1/2\"}],\n"
+                       "  \"vertex\": [{\"at\": \"self\", \"w\": \"1/2\"}, {\"sum\": \"diagonals\", \"w\": \"1/(2*n)\"}]\n}}\n");
+  const auto r = validate_scheme_file(g);
+  REQUIRE_FALSE(r.ok());
+  CHECK(r.errors[0].message.find("role 'diagonals' needs quads, but the base mesh may have any polygons") !=
+        std::string::npos);
+  // With "faces": "quads" every level the rule sees is made of quads.
+  std::string text = "{\"name\": \"v\", \"split\": \"quad\", \"faces\": \"quads\", \"curve\": \"cubic-bspline\", \"rules\": {\n"
+                     "  \"face\": [{\"sum\": \"vertices\", \"w\": \"1/k\"}],\n"
+                     "  \"edge\": [{\"sum\": \"ends\", \"w\": \"1/2\"}],\n"
+                     "  \"vertex\": [{\"at\": \"self\", \"w\": \"1/2\"}, {\"sum\": \"diagonals\", \"w\": \"1/(2*n)\"}]\n}}\n";
+  CHECK(validate_scheme_file(write("diagonals-quads", text)).ok());
+}
+
+TEST_CASE("validate: rules are checked over each parameter's declared range, not only at the default") {
+  // Affine at the default t = 0.5 and everywhere inside [0, 1], but at the edge t = 1 the
+  // self weight t/(1 - t) is infinite: refused, naming the value.
+  const auto f = write("edge-of-range",
+                       "{\"name\": \"v\", \"split\": \"quad\", \"curve\": \"cubic-bspline\",\n"
+                       "  \"parameters\": {\"t\": {\"default\": 0.5, \"min\": 0, \"max\": 1}},\n"
+                       "  \"rules\": {\n"
+                       "  \"face\": [{\"sum\": \"vertices\", \"w\": \"1/k\"}],\n"
+                       "  \"edge\": [{\"sum\": \"ends\", \"w\": \"1/2\"}],\n"
+                       "  \"vertex\": [{\"at\": \"self\", \"w\": \"t/(1 - t) - t/(1 - t) + 1\"}]\n}}\n");
+  const auto r = validate_scheme_file(f);
+  REQUIRE_FALSE(r.ok());
+  CHECK(r.errors[0].message.find("edge-of-range.json:6: rules.vertex (smooth): weights sum to") != std::string::npos);
+  CHECK(r.errors[0].message.find("with t=1") != std::string::npos);
+  // The same scheme with the edge left out of the range passes.
+  std::string text = "{\"name\": \"v\", \"split\": \"quad\", \"curve\": \"cubic-bspline\",\n"
+                     "  \"parameters\": {\"t\": {\"default\": 0.5, \"min\": 0, \"max\": 1, \"max_exclusive\": true}},\n"
+                     "  \"rules\": {\n"
+                     "  \"face\": [{\"sum\": \"vertices\", \"w\": \"1/k\"}],\n"
+                     "  \"edge\": [{\"sum\": \"ends\", \"w\": \"1/2\"}],\n"
+                     "  \"vertex\": [{\"at\": \"self\", \"w\": \"t/(1 - t) - t/(1 - t) + 1\"}]\n}}\n";
+  const auto ok = validate_scheme_file(write("inside-range", text));
+  CHECK_MESSAGE(ok.ok(), (ok.errors.empty() ? std::string() : ok.errors[0].message));
+}
