@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "framework/util/error.h"
+#include "framework/util/option_spelling.h"
 
 namespace subdiv {
 namespace {
@@ -176,7 +177,7 @@ CurveStep refine_curve_step(const CurveLevel& parent, const CurveRulesAtLevel& r
 }
 
 CurveHierarchy refine_curves(const CurveScheme& scheme, CurveLevel base, int levels) {
-  if (levels < 0) throw Error(fmt::format("--levels must be 0 or more, not {}", levels));
+  if (levels < 0) throw OptionError(fmt::format("{{levels}} must be 0 or more, not {}", levels));
   CurveHierarchy h;
   h.levels.push_back(std::move(base));
   for (int l = 0; l < levels; ++l) {

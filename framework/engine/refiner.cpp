@@ -11,6 +11,7 @@
 #include "framework/scheme/scheme.h"
 #include "framework/util/bulk_memory.h"
 #include "framework/util/error.h"
+#include "framework/util/option_spelling.h"
 #include "framework/util/scratch_vector.h"
 
 namespace subdiv {
@@ -151,7 +152,7 @@ Hierarchy refine(std::span<const SchemeRun> runs, Level base, const RefineOption
 }
 
 Hierarchy refine_topology(const Scheme& scheme, Level base, const RefineOptions& options) {
-  if (options.levels < 0) throw Error(fmt::format("--levels must be 0 or more, not {}", options.levels));
+  if (options.levels < 0) throw OptionError(fmt::format("{{levels}} must be 0 or more, not {}", options.levels));
   const SchemeRun run{&scheme, options.levels};
   return refine_topology(std::span(&run, 1), std::move(base), options);
 }

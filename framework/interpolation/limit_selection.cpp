@@ -13,6 +13,7 @@
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
+#include "framework/util/option_spelling.h"
 
 namespace subdiv {
 namespace {
@@ -99,9 +100,9 @@ void check_vertex_parameters_in_prefix(const SchemeSequence& seq, const LimitSel
   for (const auto& [name, values] : o.vertex_parameters) {
     for (const ParameterSpec& p : tail.parameters)
       if (p.name == name && p.per_vertex)
-        throw Error(fmt::format("per-vertex parameter '{}': '{}' is applied forever (the last scheme of the sequence), "
+        throw OptionError(fmt::format("per-vertex parameter '{}': '{}' is applied forever (the last scheme of the sequence), "
                                 "and limit masks are known for one value of '{}' only; give it per vertex to a first "
-                                "run (e.g. {}:1,...) or give one value with --param", name, tail.name, name, tail.name));
+                                "run (e.g. {}:1,...) or give one value with {{param}}", name, tail.name, name, tail.name));
     if (seq.runs.size() < 2)
       throw Error(fmt::format("per-vertex parameter '{}': the sequence has no first run that reads it (a sequence "
                               "SHAPE:1,REPEAT)", name));

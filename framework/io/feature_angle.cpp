@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "framework/util/error.h"
+#include "framework/util/option_spelling.h"
 
 namespace subdiv {
 namespace {
@@ -43,7 +44,7 @@ double dihedral_angle_degrees(const Level& level, std::span<const double> xyz, I
 
 std::vector<Index> edges_sharper_than(const Level& level, std::span<const double> xyz, double degrees) {
   if (!(degrees >= 0 && degrees <= 180))
-    throw Error(fmt::format("--feature-angle {}: the angle must be between 0 and 180 degrees (edges whose faces "
+    throw OptionError(fmt::format("{{feature_angle}} {}: the angle must be between 0 and 180 degrees (edges whose faces "
                             "meet at a larger angle between their normals become sharp creases)",
                             degrees));
   if (xyz.size() != 3 * size_t(level.vertex_count))

@@ -14,7 +14,7 @@
 #include "framework/pipeline/limit_arrays.h"
 #include "framework/pipeline/memory_guard.h"
 #include "framework/pipeline/option_names.h"
-#include "framework/pipeline/option_spelling.h"
+#include "framework/util/option_spelling.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
 

@@ -8,6 +8,7 @@
 #include "framework/scheme/scheme_loader.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
+#include "framework/util/option_spelling.h"
 
 namespace subdiv {
 
@@ -30,8 +31,9 @@ ParameterValues values_of(const std::vector<ParameterSpec>& params) {
 void check_unknown(const ParameterOverrides& overrides, const std::set<std::string>& used, const std::string& label) {
   for (const auto& [name, value] : overrides)
     if (!used.count(name))
-      throw Error(fmt::format("{}: the scheme has no parameter '{}' (from --param {}={}); `subdiv schemes` lists "
-                              "each scheme's parameters", label, name, name, value));
+      throw OptionError(fmt::format("{}: the scheme has no parameter '{}' (from {{param}} {}={}); {{scheme_list}} "
+                                    "lists each scheme's parameters",
+                                    label, name, name, value));
 }
 
 // The boundary curve must be linear and refine boundaries the way the split does.

@@ -6,6 +6,7 @@
 
 #include "framework/scheme/json_source.h"
 #include "framework/util/error.h"
+#include "framework/util/option_spelling.h"
 #include "framework/util/input_errors.h"
 #include "framework/util/short_text.h"
 
@@ -470,9 +471,9 @@ void check_unknown_overrides(const ParameterOverrides& overrides, const std::set
                              const std::string& file) {
   for (const auto& [name, value] : overrides)
     if (!used.count(name))
-      throw Error(fmt::format("{}: the scheme has no parameter '{}' (from --param {}={}); "
-                              "`subdiv schemes` lists each scheme's parameters",
-                              file, name, name, value));
+      throw OptionError(fmt::format("{}: the scheme has no parameter '{}' (from {{param}} {}={}); "
+                                    "{{scheme_list}} lists each scheme's parameters",
+                                    file, name, name, value));
 }
 
 // Primal splits keep old vertices and add points on edges, so the curve's rule 0 must be

@@ -11,6 +11,7 @@
 #include "framework/scheme/scheme_folders.h"
 #include "framework/scheme/scheme_loader.h"
 #include "framework/util/error.h"
+#include "framework/util/option_spelling.h"
 
 namespace subdiv {
 namespace fs = std::filesystem;
@@ -115,8 +116,9 @@ std::shared_ptr<const CurveScheme> load_curve(const std::string& name_or_path, c
   else
     for (const auto& [name, value] : overrides)
       if (!taken.count(name))
-        throw Error(fmt::format("{}: the scheme has no parameter '{}' (from --param {}={}); `subdiv schemes` lists "
-                                "each scheme's parameters", curve->path, name, name, value));
+        throw OptionError(fmt::format("{}: the scheme has no parameter '{}' (from {{param}} {}={}); {{scheme_list}} "
+                                      "lists each scheme's parameters",
+                                      curve->path, name, name, value));
   return curve;
 }
 
@@ -137,7 +139,8 @@ std::shared_ptr<const CurveScheme> load_curve_text(const std::string& text, cons
   else
     for (const auto& [name, value] : overrides)
       if (!taken.count(name))
-        throw Error(fmt::format("{}: the scheme has no parameter '{}' (from --param {}={})", label, name, name, value));
+        throw OptionError(fmt::format("{}: the scheme has no parameter '{}' (from {{param}} {}={})", label, name, name,
+                                      value));
   return curve;
 }
 

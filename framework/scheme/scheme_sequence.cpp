@@ -5,6 +5,7 @@
 
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
+#include "framework/util/option_spelling.h"
 #include "framework/util/short_text.h"
 
 namespace subdiv {
@@ -36,11 +37,11 @@ std::vector<Part> split_spec(const std::string& spec) {
         if (used != item.size() - colon - 1 || part.levels < 0 || part.levels > kMaxLevelsPerPart)
           throw std::invalid_argument("");
       } catch (...) {
-        throw Error(fmt::format("--scheme '{}': '{}' should be NAME:LEVELS with LEVELS a whole number from 0 to {}",
+        throw OptionError(fmt::format("{{scheme}} '{}': '{}' should be NAME:LEVELS with LEVELS a whole number from 0 to {}",
                                 shortened(spec), shortened(item), kMaxLevelsPerPart));
       }
     }
-    if (part.name.empty()) throw Error(fmt::format("--scheme '{}': empty scheme name", spec));
+    if (part.name.empty()) throw OptionError(fmt::format("{{scheme}} '{}': empty scheme name", spec));
     parts.push_back(part);
     start = end + 1;
   }
@@ -61,9 +62,9 @@ SchemeSequence load_scheme_sequence(const std::string& spec, int levels, const P
   std::vector<Part> parts = split_spec(spec);
   int fixed = 0, open = 0;
   for (const Part& p : parts) p.levels >= 0 ? fixed += p.levels : ++open;
-  if (open > 1) throw Error(fmt::format("--scheme '{}': at most one scheme may omit its level count", spec));
+  if (open > 1) throw OptionError(fmt::format("{{scheme}} '{}': at most one scheme may omit its level count", spec));
   if (open == 1 && levels < fixed)
-    throw Error(fmt::format("--scheme '{}' fixes {} levels, more than --levels {}", spec, fixed, levels));
+    throw OptionError(fmt::format("{{scheme}} '{}' fixes {} levels, more than {{levels}} {}", spec, fixed, levels));
   SchemeSequence seq;
   std::set<std::string> used;
   for (Part& p : parts) {
@@ -78,8 +79,9 @@ SchemeSequence load_scheme_sequence(const std::string& spec, int levels, const P
   }
   for (const auto& [name, value] : overrides)
     if (!used.count(name))
-      throw Error(fmt::format("no scheme in '{}' has a parameter '{}' (from --param {}={}); `subdiv schemes` lists "
-                              "each scheme's parameters", spec, name, name, value));
+      throw OptionError(fmt::format("no scheme in '{}' has a parameter '{}' (from {{param}} {}={}); {{scheme_list}} "
+                                    "lists each scheme's parameters",
+                                    spec, name, name, value));
   return seq;
 }
 

@@ -12,6 +12,7 @@
 #include "framework/scheme/scheme_loader.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
+#include "framework/util/option_spelling.h"
 
 namespace subdiv {
 namespace {
@@ -398,7 +399,7 @@ void validate_code_scheme(const CodeSchemeEntry& entry, int lo, int hi, Validati
 
 ValidationReport validate_scheme_file(const std::string& name_or_path, int lo, int hi) {
   if (lo < kMinCheckedValence || hi > kMaxCheckedValence || lo > hi)
-    throw Error(fmt::format("valences {}..{} cannot be checked: give {} <= --min-valence <= --max-valence <= {}", lo,
+    throw OptionError(fmt::format("valences {}..{} cannot be checked: give {} <= {{min_valence}} <= {{max_valence}} <= {}", lo,
                             hi, kMinCheckedValence, kMaxCheckedValence));
   ValidationReport report;
   try {

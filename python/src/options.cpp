@@ -12,7 +12,9 @@ const subdiv::OptionSpelling& python_option_spelling() {
       {"start_level", "start_level"}, {"boundary", "boundary"},
       {"crease_method", "crease_method"}, {"fvar_boundary", "fvar_boundary"},
       {"smooth_triangles", "params={'triangles': 'smooth'}"}, {"threads", "threads"},
-      {"normals", "limit_positions()"}, {"limit", "limit_positions()"}};
+      {"normals", "limit_positions()"}, {"limit", "limit_positions()"},
+      {"param", "keyword argument"},  {"scheme_list", "subdivkit.schemes()"},
+      {"min_valence", "min_valence"}, {"max_valence", "max_valence"}};
   return spelling;
 }
 

@@ -6,7 +6,7 @@
 #include "curve_refine.h"
 #include "framework/io/formats.h"
 #include "framework/pipeline/memory_guard.h"
-#include "framework/pipeline/option_spelling.h"
+#include "framework/util/option_spelling.h"
 #include "framework/pipeline/refine_pipeline.h"
 #include "framework/pipeline/thread_limit.h"
 #include "framework/scheme/scheme_registry.h"

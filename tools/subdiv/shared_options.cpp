@@ -15,7 +15,9 @@ const OptionSpelling& cli_option_spelling() {
       {"smooth_triangles", "--smooth-triangles"}, {"feature_angle", "--feature-angle"},
       {"features", "--features"},       {"vertex_param", "--vertex-param"},
       {"limit", "--limit"},             {"normals", "--normals"},
-      {"arrays", "--arrays"},           {"threads", "--threads"}};
+      {"arrays", "--arrays"},           {"threads", "--threads"},
+      {"param", "--param"},             {"scheme_list", "`subdiv schemes`"},
+      {"min_valence", "--min-valence"}, {"max_valence", "--max-valence"}};
   return spelling;
 }
 

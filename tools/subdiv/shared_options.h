@@ -9,7 +9,7 @@
 #include "framework/engine/refiner.h"
 #include "framework/features/feature_options.h"
 #include "framework/pipeline/option_names.h"
-#include "framework/pipeline/option_spelling.h"
+#include "framework/util/option_spelling.h"
 #include "framework/scheme/scheme_loader.h"
 
 namespace subdiv::cli {

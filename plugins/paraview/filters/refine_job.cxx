@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "framework/pipeline/level_description.h"
-#include "framework/pipeline/option_spelling.h"
+#include "framework/util/option_spelling.h"
 #include "framework/pipeline/refine_pipeline.h"
 #include "framework/pipeline/thread_limit.h"
 #include "framework/util/error.h"
@@ -17,7 +17,8 @@ const OptionSpelling& filter_spelling() {
   static const OptionSpelling spelling = {{"scheme", "Scheme"},       {"levels", "Levels"},
                                           {"boundary", "Boundary"},   {"crease_method", "Crease Method"},
                                           {"feature_angle", "Feature Angle"}, {"limit", "Limit Positions"},
-                                          {"normals", "Limit Positions"},     {"threads", "Threads"}};
+                                          {"normals", "Limit Positions"},     {"threads", "Threads"},
+                                          {"param", "Parameters"},            {"scheme_list", "the Scheme menu"}};
   return spelling;
 }
 

@@ -10,7 +10,7 @@
 #include "framework/io/mesh_data.h"
 #include "framework/pipeline/level_description.h"
 #include "framework/pipeline/option_names.h"
-#include "framework/pipeline/option_spelling.h"
+#include "framework/util/option_spelling.h"
 #include "framework/pipeline/refine_pipeline.h"
 #include "framework/pipeline/thread_limit.h"
 #include "framework/util/error.h"

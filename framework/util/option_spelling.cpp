@@ -1,4 +1,4 @@
-#include "framework/pipeline/option_spelling.h"
+#include "framework/util/option_spelling.h"
 
 #include <algorithm>
 #include <cctype>
