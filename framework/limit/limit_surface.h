@@ -1,0 +1,93 @@
+#pragma once
+// The limit surface of a linear scheme at any (face, u, v): position and first derivatives,
+// exact to round-off, and the same as weights over the control points (a limit stencil).
+//
+// Method (docs/limit.md): the point is followed down the refinement of its own
+// neighbourhood. At every step the face's neighbourhood is cut out of the current level
+// (analysis/surface/local_patch.h), refined one step by the scheme's own rules (the engine),
+// and the child face holding the point is found (face_domain.h). Machine numbers are dyadic
+// rationals, so with a binary split the point becomes a vertex of some level after as many
+// steps as its coordinates have bits (Schaefer & Warren 2007, "Exact evaluation of
+// non-polynomial subdivision schemes at rational parameter values"): there its limit is
+// the vertex's limit mask applied to the level's points, and its derivatives the
+// vertex's tangent masks (the left eigenvectors of the local subdivision matrix, Stam 1998,
+// "Exact evaluation of Catmull-Clark subdivision surfaces at arbitrary parameter values";
+// analysis/surface/limit_evaluation.h) scaled to the parameterisation. Near an extraordinary
+// vertex the point approaches, the levels are skipped at once with the eigen-decomposition
+// of the vertex's local subdivision matrix (limit_jump.h), so a point at u = 1e-300 costs
+// about what one at u = 0.3 does. Semi-sharp creases are refined until they are smooth or
+// sharp, like everything else.
+//
+// Supported: stationary linear schemes whose split is the binary quad or triangle split
+// (Catmull-Clark, Loop, the butterflies, Kobbelt's, composite split + averaging schemes).
+// Refused with the reason: non-linear rules (no limit stencil exists), level-dependent
+// weights (no fixed local subdivision matrix), and for now the √3, dual and mid-edge splits
+// (their children do not nest inside one parent face).
+#include <array>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "framework/features/feature_options.h"
+#include "framework/topology/level.h"
+
+namespace subdiv {
+
+struct Scheme;
+
+struct LimitSurfaceOptions {
+  FeatureOptions features;  // boundary interpolation and crease method, as in OpenSubdiv
+  // Steps after which a point that is still not a vertex is taken at the nearest corner
+  // of its face (whose size is then 2^-max_steps of the base face's: below round-off).
+  int max_steps = 64;
+};
+
+// One evaluated point: `channels` values each for the position and its derivatives along
+// the base face's u and v. Derivatives are absent (has_derivatives false) exactly at an
+// extraordinary vertex, where the parameterisation is singular.
+struct LimitSample {
+  std::vector<double> position, du, dv;
+  bool has_derivatives = false;
+  int steps = 0;  // refinement steps the evaluation took (levels jumped count once)
+};
+
+// A limit stencil: position and derivatives as weights over the base mesh's vertices.
+struct LimitStencil {
+  std::vector<Index> vertices;
+  std::vector<double> position, du, dv;  // one weight per entry of `vertices`
+  bool has_derivatives = false;
+};
+
+class LimitSurface {
+public:
+  // Checks that the scheme can be evaluated and keeps the base level (with its tags).
+  // Throws subdiv::Error saying why a scheme is refused.
+  LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, const LimitSurfaceOptions& options = {});
+  ~LimitSurface();
+  LimitSurface(LimitSurface&&) noexcept;
+  LimitSurface& operator=(LimitSurface&&) noexcept;
+
+  const Level& base() const;
+
+  // The limit of `values` (channels per base vertex) at (face, u, v) in Bfr's
+  // parameterisation (face_domain.h). Throws subdiv::Error for a face that does not exist,
+  // a hole, or (u, v) outside the face's domain. Thread-safe.
+  LimitSample evaluate(Index face, double u, double v, std::span<const double> values, int channels) const;
+
+  // The same point as weights over the base vertices: evaluate() of any values equals
+  // these weights applied to them (to round-off).
+  LimitStencil stencil(Index face, double u, double v) const;
+
+  // Why a (face, u, v) would be refused, or empty.
+  std::string check(Index face, double u, double v) const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Why a scheme cannot be evaluated on its limit surface, or empty.
+std::string limit_surface_unsupported(const Scheme& scheme);
+
+}  // namespace subdiv
