@@ -85,3 +85,79 @@ TEST_CASE("Catmull-Clark on a regular grid with boundaries and a sharp crease: B
 }
 
 #endif
+
+#ifdef SUBDIV_HAVE_OPENSUBDIV
+
+TEST_CASE("Loop on a regular triangle grid with boundaries and a sharp crease: Bfr's exact patches to 1e-12") {
+  const test::Mesh m = bumped(test::grid(5, 4, true));
+  const Worst w = compare_random("loop", m, {{7, 8, 10.f}, {8, 9, 10.f}}, subdiv_test::OsdScheme::Loop, 10, 60, true);
+  CHECK(w.position < 1e-12);
+  CHECK(w.derivative < 1e-11);
+}
+
+TEST_CASE("Catmull-Clark and Loop near extraordinary vertices: Bfr approaches ours as its approximation level rises") {
+  struct Case {
+    const char* scheme;
+    subdiv_test::OsdScheme osd;
+    test::Mesh mesh;
+  };
+  for (const Case& c : {Case{"catmull-clark", subdiv_test::OsdScheme::CatmullClark, test::cube()},
+                        Case{"loop", subdiv_test::OsdScheme::Loop, test::octahedron()}}) {
+    CAPTURE(c.scheme);
+    const auto scheme = load_scheme(c.scheme);
+    const test::Mesh m = bumped(c.mesh);
+    const LimitSurface surface(scheme, m.level());
+    double previous = 1e300;
+    for (int level : {1, 3, 5, 7}) {
+      subdiv_test::OsdOptions oo;
+      oo.scheme = c.osd;
+      const subdiv_test::BfrLimit bfr(osd_mesh(m), oo, level, 10);
+      double worst = 0;
+      // Points next to corner 0 of face 0 (an extraordinary vertex on both meshes).
+      for (double t : {0.01, 0.03, 0.1}) {
+        const LimitSample ours = surface.evaluate(0, t, 0.7 * t, m.positions, 3);
+        worst = std::max(worst, distance(ours.position, bfr.evaluate(0, t, 0.7 * t).p));
+      }
+      MESSAGE(std::string(c.scheme), ": Bfr ApproxLevelSmooth ", level, ", largest distance ", worst);
+      CHECK(worst < previous);
+      previous = worst;
+    }
+    CHECK(previous < 1e-6);
+  }
+}
+
+TEST_CASE("Catmull-Clark on n-gons: Bfr's QUAD_SUBFACES parameterisation, exact away from the n-gon's centre") {
+  // A pentagon and a triangle among quads; points in the sub-faces of the n-gons.
+  test::Mesh m;
+  m.positions.reserve(3 * 17);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) m.positions.insert(m.positions.end(), {double(i), double(j), 0.1 * std::sin(1.3 * i + 2.1 * j)});
+  m.positions.insert(m.positions.end(), {1.5, 1.5, 0.3});  // 16: splits the middle quad into a pentagon and a triangle
+  m.vertex_count = 17;
+  auto id = [](int i, int j) { return Index(j * 4 + i); };
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      if (!(i == 1 && j == 1)) m.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  m.add_face({id(1, 1), id(2, 1), id(2, 2), 16, id(1, 2)});
+  m.add_face({id(2, 2), id(1, 2), 16});
+  const auto scheme = load_scheme("catmull-clark");
+  const LimitSurface surface(scheme, m.level());
+  subdiv_test::OsdOptions oo;
+  const subdiv_test::BfrLimit exact(osd_mesh(m), oo, 10, 10);
+  const Index pentagon = 8, triangle = 9;
+  // Bfr's sub-face tiles: pentagon 3 columns, triangle 2; (u, v) within the tile's first half.
+  struct At {
+    Index face;
+    double u, v;
+  };
+  const std::vector<At> points{{pentagon, 0.1, 0.2}, {pentagon, 1.3, 0.05}, {pentagon, 0.2, 1.1},
+                               {pentagon, 2.05, 0.3}, {triangle, 1.2, 0.1},  {triangle, 0.4, 1.05}};
+  for (const At& p : points) {
+    const LimitSample ours = surface.evaluate(p.face, p.u, p.v, m.positions, 3);
+    const auto ref = exact.evaluate(p.face, p.u, p.v);
+    CHECK(distance(ours.position, ref.p) < 1e-6);
+    CHECK(distance(ours.du, ref.du) < 1e-5);
+  }
+}
+
+#endif
