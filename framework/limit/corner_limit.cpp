@@ -92,16 +92,6 @@ double dot(const std::vector<double>& mask, const Labelling& lab, const std::vec
   return s;
 }
 
-void apply_mask(const std::vector<double>& mask, const Labelling& lab, std::span<const double> values, int channels,
-                std::vector<double>& out) {
-  out.assign(size_t(channels), 0.0);
-  for (size_t l = 0; l < mask.size(); ++l) {
-    if (mask[l] == 0) continue;
-    const double* p = values.data() + size_t(lab.vertices[l]) * size_t(channels);
-    for (int c = 0; c < channels; ++c) out[size_t(c)] += mask[l] * p[c];
-  }
-}
-
 // The ring position (counted from the labelling's start) of the edge from v to w.
 int direction_of(const Level& L, Index v, Index w, int start) {
   const auto ring = L.ring_edges(v);
@@ -112,7 +102,7 @@ int direction_of(const Level& L, Index v, Index w, int start) {
 }
 
 void derivatives(const LimitMask& mask, const Labelling& lab, const Level& L, const FacePoint& p, int corner,
-                 int start, bool triangles, CornerDerivatives& rows) {
+                 int start, bool triangles, CornerRows& rows) {
   const auto fv = L.face(p.face);
   const int k = int(fv.size());
   const Index c = fv[size_t(corner)];
@@ -138,9 +128,8 @@ void derivatives(const LimitMask& mask, const Labelling& lab, const Level& L, co
 
 }  // namespace
 
-bool corner_limit(SchemeLimits& limits, const Level& L, std::span<const double> values, int channels,
-                  const FacePoint& p, int corner, int step, bool triangles, LimitSample& out, CornerDerivatives& rows,
-                  std::string& mask_error) {
+bool corner_rows(SchemeLimits& limits, const Level& L, const FacePoint& p, int corner, int step, bool triangles,
+                 CornerRows& rows, std::string& mask_error) {
   if (p.sub_face >= 0) return false;  // an n-gon's sub-face is not a face of the level yet
   const Index c = L.face(p.face)[size_t(corner)];
   bool semi_sharp = false;
@@ -154,8 +143,9 @@ bool corner_limit(SchemeLimits& limits, const Level& L, std::span<const double> 
   const int start = conventional_start(L, c);
   Labelling lab;
   if (!matches_neighbourhood(lab, L, CentreKind::Vertex, c, start, mask->radius, mask->signature)) return false;
-  apply_mask(mask->position, lab, values, channels, out.position);
   rows = {};
+  rows.position.assign(size_t(L.vertex_count), 0.0);
+  for (size_t l = 0; l < mask->position.size(); ++l) rows.position[size_t(lab.vertices[l])] += mask->position[l];
   if (regular_vertex(L, c, triangles)) derivatives(*mask, lab, L, p, corner, start, triangles, rows);
   return true;
 }

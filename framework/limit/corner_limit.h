@@ -18,18 +18,16 @@
 
 namespace subdiv {
 
-// Derivative rows at a corner: d/ds and d/dt of the limit over the level's vertices, in the
-// face's own coordinates (empty where the vertex is not regular).
-struct CornerDerivatives {
-  std::vector<double> ds, dt;  // one weight per vertex of the level
+// The limit at a corner as rows over the level's vertices: the position, and d/ds, d/dt in
+// the face's own coordinates (empty where the vertex is not regular).
+struct CornerRows {
+  std::vector<double> position, ds, dt;  // one weight per vertex of the level
 };
 
-// Evaluates the limit at the face's corner `corner`: the position into `out`, the
-// derivative rows into `rows` where the vertex is regular. False when the vertex's neighbourhood is not yet one the masks
+// The rows at the face's corner `corner`. False when the vertex's neighbourhood is not yet one the masks
 // describe (a semi-sharp feature, another irregular vertex nearby): refine and try again.
 // `mask_error` receives the analysis's reason when it has no mask for the configuration.
-bool corner_limit(SchemeLimits& limits, const Level& level, std::span<const double> values, int channels,
-                  const FacePoint& point, int corner, int step, bool triangles, LimitSample& out,
-                  CornerDerivatives& rows, std::string& mask_error);
+bool corner_rows(SchemeLimits& limits, const Level& level, const FacePoint& point, int corner, int step,
+                 bool triangles, CornerRows& rows, std::string& mask_error);
 
 }  // namespace subdiv

@@ -137,24 +137,42 @@ int corner_at(const FacePoint& p, int face_size, bool triangles) {
   return -1;
 }
 
+std::vector<ChildFace> child_faces(const Level& parent, const Level& child, const ChildOrigins& origins,
+                                   const FacePoint& p, bool triangles) {
+  const ParentFrame frame = parent_frame(parent, p, triangles);
+  std::vector<ChildFace> out;
+  for (Index g = 0; g < child.face_count(); ++g) {
+    if (origins.parent_face[size_t(g)] != p.face) continue;
+    ChildFace c;
+    c.face = g;
+    bool mapped = true;
+    for (Index v : child.face(g)) {
+      c.corners.push_back(child_coordinates(parent, origins, frame, p.face, v));
+      mapped &= std::isfinite(c.corners.back()[0]);
+    }
+    if (mapped && c.corners.size() >= 3) out.push_back(std::move(c));
+  }
+  return out;
+}
+
+std::optional<FacePoint> point_in_child(const ChildFace& child, const FacePoint& p, bool triangles, double eps) {
+  return in_child(child.corners, p, child.face, eps, triangles);
+}
+
+std::optional<FacePoint> locate(std::span<const ChildFace> children, const FacePoint& p, bool triangles, int* which) {
+  for (double eps : {0.0, 1e-12})
+    for (size_t i = 0; i < children.size(); ++i)
+      if (auto q = in_child(children[i].corners, p, children[i].face, eps, triangles)) {
+        if (which) *which = int(i);
+        return q;
+      }
+  return std::nullopt;
+}
+
 std::optional<FacePoint> child_face_point(const Level& parent, const Level& child, const ChildOrigins& origins,
                                           const FacePoint& p, bool triangles) {
-  const ParentFrame frame = parent_frame(parent, p, triangles);
-  std::vector<Uv> corners;
-  for (double eps : {0.0, 1e-12}) {
-    for (Index g = 0; g < child.face_count(); ++g) {
-      if (origins.parent_face[size_t(g)] != p.face) continue;
-      corners.clear();
-      bool mapped = true;
-      for (Index c : child.face(g)) {
-        corners.push_back(child_coordinates(parent, origins, frame, p.face, c));
-        mapped &= std::isfinite(corners.back()[0]);
-      }
-      if (!mapped || corners.size() < 3) continue;
-      if (auto q = in_child(corners, p, g, eps, triangles)) return q;
-    }
-  }
-  return std::nullopt;
+  const std::vector<ChildFace> children = child_faces(parent, child, origins, p, triangles);
+  return locate(children, p, triangles, nullptr);
 }
 
 }  // namespace subdiv

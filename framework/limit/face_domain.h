@@ -12,6 +12,7 @@
 #include <array>
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "framework/refine/child_origins.h"
 #include "framework/topology/level.h"
@@ -44,6 +45,22 @@ std::optional<FacePoint> base_face_point(const Level& level, Index face, double 
 
 // The corner of the face the point is at exactly, or -1.
 int corner_at(const FacePoint& p, int face_size, bool triangles);
+
+// The child faces of `p`'s face after one binary primal split, each with its corners'
+// coordinates in `p`'s frame (which depends on p.sub_face only).
+struct ChildFace {
+  Index face = kNone;
+  std::vector<Uv> corners;
+};
+std::vector<ChildFace> child_faces(const Level& parent, const Level& child, const ChildOrigins& origins,
+                                   const FacePoint& p, bool triangles);
+
+// The point in a child face's coordinates, or empty when the child does not hold it (up to
+// eps outside its domain; the point is then clamped to the domain).
+std::optional<FacePoint> point_in_child(const ChildFace& child, const FacePoint& p, bool triangles, double eps);
+
+// The child among `children` holding the point: exactly inside first, then within 1e-12.
+std::optional<FacePoint> locate(std::span<const ChildFace> children, const FacePoint& p, bool triangles, int* which);
 
 // The child face of `p` after one binary primal split, and the point in its coordinates.
 // Child vertices lie at the parent's corners (vertex children), edge middles (edge

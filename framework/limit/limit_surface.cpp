@@ -1,6 +1,7 @@
 #include "framework/limit/limit_surface.h"
 
 #include <cmath>
+#include <deque>
 #include <fmt/format.h>
 
 #include "framework/analysis/surface/limit_evaluation.h"
@@ -8,6 +9,7 @@
 #include "framework/engine/ghost_rings.h"
 #include "framework/engine/refiner.h"
 #include "framework/limit/corner_limit.h"
+#include "framework/limit/limit_nodes.h"
 #include "framework/limit/face_domain.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -42,14 +44,6 @@ Neighbourhood cut(const Level& L, std::span<const double> values, int channels, 
   return n;
 }
 
-// One step of the descent as a matrix: rows the vertices of the new cut, columns those of
-// the cut before.
-struct StepMatrix {
-  Index source_count = 0;
-  std::vector<Index> offsets{0}, columns;
-  std::vector<double> weights;
-};
-
 StepMatrix step_matrix(const StencilTable& table, const std::vector<Index>& rows, Index source_count) {
   StepMatrix m;
   m.source_count = source_count;
@@ -63,28 +57,16 @@ StepMatrix step_matrix(const StencilTable& table, const std::vector<Index>& rows
   return m;
 }
 
-// A derivative row at the last step pulled back to the first cut. The row is for d/du
-// scaled by 2^-k, so that every step's factor 2 (the children's coordinates are twice the
-// parent's) keeps its entries of order one, and each step removes the row's sum, which is
-// zero for a derivative: rounding in the sum would otherwise double at every step.
-std::vector<double> pulled_back(std::vector<double> row, const std::vector<StepMatrix>& steps) {
-  for (size_t j = steps.size(); j-- > 0;) {
-    const StepMatrix& m = steps[j];
-    std::vector<double> next(size_t(m.source_count), 0.0);
-    for (size_t r = 0; r + 1 < m.offsets.size(); ++r) {
-      const double x = 2 * row[r];
-      if (x == 0) continue;
-      for (Index e = m.offsets[r]; e < m.offsets[r + 1]; ++e) next[size_t(m.columns[size_t(e)])] += x * m.weights[size_t(e)];
-    }
-    double sum = 0;
-    int used = 0;
-    for (double x : next) sum += x, used += x != 0 ? 1 : 0;
-    if (used > 0)
-      for (double& x : next)
-        if (x != 0) x -= sum / used;
-    row = std::move(next);
+StepMatrix renumbering(const std::vector<Index>& order, Index source_count) {
+  StepMatrix m;
+  m.source_count = source_count;
+  m.scale = 1;
+  for (Index v : order) {
+    m.columns.push_back(v);
+    m.weights.push_back(1.0);
+    m.offsets.push_back(Index(m.columns.size()));
   }
-  return row;
+  return m;
 }
 
 std::vector<double> applied(const std::vector<double>& row, std::span<const double> values, int channels) {
@@ -122,10 +104,7 @@ struct LimitSurface::Impl {
   bool triangles = false;
   int radius = 4;
   std::unique_ptr<SchemeLimits> limits;
-
-  static void derive(const CornerDerivatives& rows, const Jacobian& J, const std::vector<StepMatrix>& steps,
-                     const std::vector<double>& first_values, int channels, LimitSample& out,
-                     std::vector<double>* du_row, std::vector<double>* dv_row);
+  std::unique_ptr<LimitNodes> nodes;
 
   FacePoint start(Index face, double u, double v) const {
     const char* why = "";
@@ -139,65 +118,87 @@ struct LimitSurface::Impl {
 
   // Follows the point down the refinement of its neighbourhood until it is a vertex.
   // The position from the values carried down; the derivatives as rows over the first
-  // cut's vertices (`du_row`, `dv_row`), applied to its values.
+  // cut's vertices (`du_row`, `dv_row`), pulled back and applied to its values.
   LimitSample descend(Neighbourhood n, int channels, std::vector<double>* du_row = nullptr,
                       std::vector<double>* dv_row = nullptr) const {
-    std::string mask_error;
-    LimitSample out;
     const std::vector<double> first_values = n.values;
-    std::vector<StepMatrix> steps;
-    CornerDerivatives rows;
-    for (int step = 0;; ++step) {
-      const int shape = n.level.face_size(n.point.face);
-      if (step >= options.max_steps) {
-        // The face is 2^-max_steps of the base face: its nearest corner is the point to round-off.
-        n.point.st = {std::round(n.point.st[0]), std::round(n.point.st[1])};
-        if (triangles && n.point.st[0] + n.point.st[1] > 1) n.point.st[1] = 0;
-        if (step >= options.max_steps + 16)
-          throw Error(fmt::format("no limit mask for the vertex reached after {} steps{}{}", step,
-                                  mask_error.empty() ? "" : ": ", mask_error));
-      }
-      const int corner = corner_at(n.point, shape, triangles);
-      if (corner >= 0 &&
-          corner_limit(*limits, n.level, n.values, channels, n.point, corner, step, triangles, out, rows,
-                       mask_error)) {
-        out.steps = step;
-        if (!rows.ds.empty()) derive(rows, n.point.jacobian, steps, first_values, channels, out, du_row, dv_row);
-        return out;
-      }
-      RefineOptions ro;
-      ro.levels = 1;
-      ro.first_step = step;
-      ro.features = options.features;
-      ro.threads = 1;
-      const Hierarchy h = refine(*scheme, n.level, ro);
+    std::deque<StepMatrix> owned;
+    std::vector<const StepMatrix*> path;
+    int refinements = 0;
+    // An n-gon's sub-face is not a face yet: one step with the engine makes it one.
+    while (n.point.sub_face >= 0) {
+      const Hierarchy h = refine_step(n.level);
       const std::vector<double> child = h.stencils[0].apply(n.values, channels);
       const auto q = child_face_point(n.level, h.levels[1], h.origins[0], n.point, triangles);
       if (!q) throw Error("internal: no child face holds the point (the split is not a binary primal one)");
       const Index parent_count = n.level.vertex_count;
       n = cut(h.levels[1], child, channels, *q, radius);
-      steps.push_back(step_matrix(h.stencils[0], n.original, parent_count));
+      owned.push_back(step_matrix(h.stencils[0], n.original, parent_count));
+      path.push_back(&owned.back());
+      ++refinements;
+    }
+    std::vector<Index> order;
+    int id = nodes->intern(n.level, n.point.face, order);
+    owned.push_back(renumbering(order, n.level.vertex_count));
+    path.push_back(&owned.back());
+    std::vector<double> values(order.size() * size_t(channels)), next;
+    owned.back().apply(n.values, values, channels);
+    FacePoint p = n.point;
+    std::string mask_error;
+    for (int step = refinements;; ++step) {
+      const int shape = nodes->node(id).level.face_size(nodes->node(id).face);
+      if (step >= options.max_steps) {
+        // The face is 2^-max_steps of the base face: its nearest corner is the point to round-off.
+        p.st = {std::round(p.st[0]), std::round(p.st[1])};
+        if (triangles && p.st[0] + p.st[1] > 1) p.st[1] = 0;
+        if (step >= options.max_steps + 16)
+          throw Error(fmt::format("no limit mask for the vertex reached after {} steps{}{}", step,
+                                  mask_error.empty() ? "" : ": ", mask_error));
+      }
+      const int corner = corner_at(p, shape, triangles);
+      if (corner >= 0)
+        if (const CornerRows* rows = nodes->corner(id, corner, mask_error)) {
+          LimitSample out;
+          out.steps = step;
+          out.position = applied(rows->position, values, channels);
+          if (!rows->ds.empty()) {
+            auto row = [&](int d) {
+              std::vector<double> r(rows->ds.size());
+              for (size_t i = 0; i < r.size(); ++i)
+                r[i] = std::ldexp(p.jacobian[0][size_t(d)] * rows->ds[i] + p.jacobian[1][size_t(d)] * rows->dt[i], -step);
+              return pulled_back(std::move(r), path);
+            };
+            std::vector<double> u = row(0), v = row(1);
+            out.du = applied(u, first_values, channels);
+            out.dv = applied(v, first_values, channels);
+            out.has_derivatives = true;
+            if (du_row) *du_row = std::move(u);
+            if (dv_row) *dv_row = std::move(v);
+          }
+          return out;
+        }
+      const LimitNode& N = nodes->expanded(id);
+      int which = -1;
+      const auto q = locate(N.children, p, triangles, &which);
+      if (!q) throw Error("internal: no child face holds the point (the split is not a binary primal one)");
+      const StepMatrix& m = N.child_matrix[size_t(which)];
+      next.resize(size_t(m.rows()) * size_t(channels));
+      m.apply(values, next, channels);
+      values.swap(next);
+      path.push_back(&m);
+      id = N.child_node[size_t(which)];
+      p = *q;
     }
   }
-};
 
-void LimitSurface::Impl::derive(const CornerDerivatives& rows, const Jacobian& J, const std::vector<StepMatrix>& steps,
-                                const std::vector<double>& first_values, int channels, LimitSample& out,
-                                std::vector<double>* du_row, std::vector<double>* dv_row) {
-  const int k = int(steps.size());
-  std::vector<double> u(rows.ds.size()), v(rows.ds.size());
-  for (size_t i = 0; i < u.size(); ++i) {
-    u[i] = std::ldexp(J[0][0] * rows.ds[i] + J[1][0] * rows.dt[i], -k);
-    v[i] = std::ldexp(J[0][1] * rows.ds[i] + J[1][1] * rows.dt[i], -k);
+  Hierarchy refine_step(const Level& level) const {
+    RefineOptions ro;
+    ro.levels = 1;
+    ro.features = options.features;
+    ro.threads = 1;
+    return refine(*scheme, level, ro);
   }
-  u = pulled_back(std::move(u), steps);
-  v = pulled_back(std::move(v), steps);
-  out.du = applied(u, first_values, channels);
-  out.dv = applied(v, first_values, channels);
-  out.has_derivatives = true;
-  if (du_row) *du_row = std::move(u);
-  if (dv_row) *dv_row = std::move(v);
-}
+};
 
 LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, const LimitSurfaceOptions& options)
     : impl_(std::make_unique<Impl>()) {
@@ -216,6 +217,8 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   LimitOptions lo;
   lo.features = options.features;
   impl_->limits = std::make_unique<SchemeLimits>(*impl_->scheme, lo);
+  impl_->nodes = std::make_unique<LimitNodes>(*impl_->scheme, options.features, impl_->radius, impl_->triangles,
+                                              *impl_->limits);
 }
 
 LimitSurface::~LimitSurface() = default;

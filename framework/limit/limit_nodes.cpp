@@ -1,0 +1,136 @@
+#include "framework/limit/limit_nodes.h"
+
+#include <algorithm>
+
+#include "framework/analysis/surface/local_patch.h"
+#include "framework/engine/refiner.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+// Hole faces are not in the labelling's signature: each as its corners' labels from the
+// smallest, in sorted order.
+void append_holes(const Level& cut, const Labelling& lab, std::vector<double>& key) {
+  if (cut.face_hole.empty()) return;
+  std::vector<std::vector<Index>> holes;
+  for (Index f = 0; f < cut.face_count(); ++f) {
+    if (!cut.is_hole(f)) continue;
+    std::vector<Index> labels;
+    for (Index v : cut.face(f)) labels.push_back(lab.label_of[size_t(v)]);
+    std::rotate(labels.begin(), std::min_element(labels.begin(), labels.end()), labels.end());
+    holes.push_back(std::move(labels));
+  }
+  std::sort(holes.begin(), holes.end());
+  for (const auto& h : holes) {
+    key.push_back(-2);
+    for (Index l : h) key.push_back(double(l));
+  }
+}
+
+}  // namespace
+
+LimitNodes::LimitNodes(const Scheme& scheme, const FeatureOptions& features, int radius, bool triangles,
+                       SchemeLimits& limits)
+    : scheme_(scheme), features_(features), radius_(radius), triangles_(triangles), limits_(limits) {}
+
+int LimitNodes::intern(const Level& cut, Index face, std::vector<Index>& order) {
+  std::lock_guard lock(mutex_);
+  return intern_locked(cut, face, order);
+}
+
+int LimitNodes::intern_locked(const Level& cut, Index face, std::vector<Index>& order) {
+  // Labelled beyond the cut's radius, so every vertex of the cut has a label.
+  const Labelling lab = label_neighbourhood(cut, CentreKind::Face, face, 0, radius_ + 3);
+  if (lab.vertices.size() != size_t(cut.vertex_count))
+    throw Error("internal: a cut for limit evaluation has vertices its labelling does not reach");
+  order = lab.vertices;
+  std::vector<double> key = lab.signature;
+  append_holes(cut, lab, key);
+  auto [it, inserted] = index_.emplace(std::move(key), int(nodes_.size()));
+  if (!inserted) return it->second;
+  auto n = std::make_unique<LimitNode>();
+  n->level = cut;
+  n->face = face;
+  n->vertex_of = lab.vertices;
+  n->label_of.assign(size_t(cut.vertex_count), kNone);
+  for (size_t l = 0; l < lab.vertices.size(); ++l) n->label_of[size_t(lab.vertices[l])] = Index(l);
+  const int k = cut.face_size(face);
+  n->corner_tried.assign(size_t(k), 0);
+  n->corner_ready.assign(size_t(k), 0);
+  n->corner.resize(size_t(k));
+  n->corner_error.resize(size_t(k));
+  nodes_.push_back(std::move(n));
+  return it->second;
+}
+
+const LimitNode& LimitNodes::node(int id) {
+  std::lock_guard lock(mutex_);
+  return *nodes_[size_t(id)];
+}
+
+const LimitNode& LimitNodes::expanded(int id) {
+  std::lock_guard lock(mutex_);
+  LimitNode* n = nodes_[size_t(id)].get();
+  if (n->expanded) return *n;
+  RefineOptions ro;
+  ro.levels = 1;
+  ro.features = features_;
+  ro.threads = 1;
+  const Hierarchy h = refine(scheme_, n->level, ro);
+  FacePoint p;
+  p.face = n->face;
+  n->children = child_faces(n->level, h.levels[1], h.origins[0], p, triangles_);
+  const StencilTable& T = h.stencils[0];
+  for (const ChildFace& c : n->children) {
+    const Extracted e = extract_neighbourhood(h.levels[1], CentreKind::Face, c.face, radius_);
+    Index local = kNone;
+    for (size_t f = 0; f < e.face_original.size(); ++f)
+      if (e.face_original[f] == c.face) local = Index(f);
+    std::vector<Index> order;
+    const int child = intern_locked(e.level, local, order);
+    n = nodes_[size_t(id)].get();
+    StepMatrix m;
+    m.source_count = Index(n->vertex_of.size());
+    for (Index v : order) {
+      const Index r = e.original[size_t(v)];
+      for (Index x = T.offsets[size_t(r)]; x < T.offsets[size_t(r) + 1]; ++x) {
+        m.columns.push_back(n->label_of[size_t(T.indices[size_t(x)])]);
+        m.weights.push_back(T.weights[size_t(x)]);
+      }
+      m.offsets.push_back(Index(m.columns.size()));
+    }
+    n->child_node.push_back(child);
+    n->child_matrix.push_back(std::move(m));
+  }
+  n->expanded = true;
+  return *n;
+}
+
+const CornerRows* LimitNodes::corner(int id, int k, std::string& error) {
+  std::lock_guard lock(mutex_);
+  LimitNode& n = *nodes_[size_t(id)];
+  if (!n.corner_tried[size_t(k)]) {
+    n.corner_tried[size_t(k)] = 1;
+    FacePoint p;
+    p.face = n.face;
+    CornerRows rows;
+    std::string why;
+    if (corner_rows(limits_, n.level, p, k, 0, triangles_, rows, why)) {
+      auto by_label = [&](const std::vector<double>& r) {
+        std::vector<double> out(r.size(), 0.0);
+        for (size_t v = 0; v < r.size(); ++v) out[size_t(n.label_of[v])] = r[v];
+        return out;
+      };
+      n.corner[size_t(k)].position = by_label(rows.position);
+      if (!rows.ds.empty()) n.corner[size_t(k)].ds = by_label(rows.ds), n.corner[size_t(k)].dt = by_label(rows.dt);
+      n.corner_ready[size_t(k)] = 1;
+    } else {
+      n.corner_error[size_t(k)] = why;
+    }
+  }
+  if (!n.corner_ready[size_t(k)] && !n.corner_error[size_t(k)].empty()) error = n.corner_error[size_t(k)];
+  return n.corner_ready[size_t(k)] ? &n.corner[size_t(k)] : nullptr;
+}
+
+}  // namespace subdiv

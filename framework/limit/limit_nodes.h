@@ -1,0 +1,64 @@
+#pragma once
+// The neighbourhoods a descent passes through, each computed once.
+//
+// A face's neighbourhood (the cut the descent works on) is identified by its canonical
+// labelling's signature (analysis/surface/local_patch.h: valences, face sizes, boundary,
+// sharpness, in a labelling that depends on the combinatorics only). Two cuts with one
+// signature refine alike, so the step from a node to each of its face's children — the
+// child's node, the child's corners in the face's coordinates, and the local subdivision
+// matrix from the node's labels to the child's (the picking matrices of Stam 1998) — and
+// the limit and tangent rows at each corner are computed once, with the engine, and then
+// only applied. A regular region has a handful of nodes, so evaluating a point costs a
+// sparse matrix-vector product per level.
+#include <map>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "framework/limit/corner_limit.h"
+#include "framework/limit/face_domain.h"
+#include "framework/limit/step_matrix.h"
+
+namespace subdiv {
+
+struct LimitNode {
+  Level level;                    // the cut, as first met
+  Index face = kNone;
+  std::vector<Index> vertex_of;   // label -> vertex of the cut
+  std::vector<Index> label_of;    // vertex of the cut -> label
+  bool expanded = false;
+  std::vector<ChildFace> children;  // corners in this face's coordinates
+  std::vector<int> child_node;
+  std::vector<StepMatrix> child_matrix;  // rows: the child's labels; columns: this node's labels
+  std::vector<char> corner_tried, corner_ready;
+  std::vector<CornerRows> corner;  // over labels
+  std::vector<std::string> corner_error;
+};
+
+class LimitNodes {
+public:
+  LimitNodes(const Scheme& scheme, const FeatureOptions& features, int radius, bool triangles, SchemeLimits& limits);
+
+  // The node of a cut around `face`, and the cut's vertices in the node's label order.
+  int intern(const Level& cut, Index face, std::vector<Index>& order);
+  // The node with its children computed.
+  const LimitNode& expanded(int id);
+  // The rows at the node face's corner k, or null when the vertex is not yet in a
+  // configuration the masks describe (`error` then says why when the analysis failed).
+  const CornerRows* corner(int id, int k, std::string& error);
+  const LimitNode& node(int id);
+
+private:
+  int intern_locked(const Level& cut, Index face, std::vector<Index>& order);
+
+  const Scheme& scheme_;
+  FeatureOptions features_;
+  int radius_;
+  bool triangles_;
+  SchemeLimits& limits_;
+  std::mutex mutex_;
+  std::map<std::vector<double>, int> index_;
+  std::vector<std::unique_ptr<LimitNode>> nodes_;
+};
+
+}  // namespace subdiv
