@@ -1,6 +1,9 @@
 #include "framework/limit/limit_nodes.h"
 
 #include <algorithm>
+#include <fmt/format.h>
+
+#include "framework/scheme/scheme.h"
 
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/refiner.h"
@@ -28,11 +31,16 @@ void append_holes(const Level& cut, const Labelling& lab, std::vector<double>& k
   }
 }
 
+std::string not_closed(const Scheme& scheme, int depth) {
+  return fmt::format("internal: scheme '{}' reads beyond {} rings of a face while evaluating its limit", scheme.name,
+                     depth);
+}
+
 }  // namespace
 
-LimitNodes::LimitNodes(const Scheme& scheme, const FeatureOptions& features, int radius, bool triangles,
+LimitNodes::LimitNodes(const Scheme& scheme, const FeatureOptions& features, int radius, int depth, bool triangles,
                        SchemeLimits& limits)
-    : scheme_(scheme), features_(features), radius_(radius), triangles_(triangles), limits_(limits) {}
+    : scheme_(scheme), features_(features), radius_(radius), depth_(depth), triangles_(triangles), limits_(limits) {}
 
 int LimitNodes::intern(const Level& cut, Index face, std::vector<Index>& order) {
   std::lock_guard lock(mutex_);
@@ -44,7 +52,8 @@ int LimitNodes::intern_locked(const Level& cut, Index face, std::vector<Index>& 
   const Labelling lab = label_neighbourhood(cut, CentreKind::Face, face, 0, radius_ + 3);
   if (lab.vertices.size() != size_t(cut.vertex_count))
     throw Error("internal: a cut for limit evaluation has vertices its labelling does not reach");
-  order = lab.vertices;
+  const Index kept = Index(lab.count_within(depth_));
+  order.assign(lab.vertices.begin(), lab.vertices.begin() + kept);
   std::vector<double> key = lab.signature;
   append_holes(cut, lab, key);
   auto [it, inserted] = index_.emplace(std::move(key), int(nodes_.size()));
@@ -53,6 +62,7 @@ int LimitNodes::intern_locked(const Level& cut, Index face, std::vector<Index>& 
   n->level = cut;
   n->face = face;
   n->vertex_of = lab.vertices;
+  n->kept = kept;
   n->label_of.assign(size_t(cut.vertex_count), kNone);
   for (size_t l = 0; l < lab.vertices.size(); ++l) n->label_of[size_t(lab.vertices[l])] = Index(l);
   const int k = cut.face_size(face);
@@ -91,11 +101,13 @@ const LimitNode& LimitNodes::expanded(int id) {
     const int child = intern_locked(e.level, local, order);
     n = nodes_[size_t(id)].get();
     StepMatrix m;
-    m.source_count = Index(n->vertex_of.size());
+    m.source_count = n->kept;
     for (Index v : order) {
       const Index r = e.original[size_t(v)];
       for (Index x = T.offsets[size_t(r)]; x < T.offsets[size_t(r) + 1]; ++x) {
-        m.columns.push_back(n->label_of[size_t(T.indices[size_t(x)])]);
+        const Index column = n->label_of[size_t(T.indices[size_t(x)])];
+        if (column >= n->kept) throw Error(not_closed(scheme_, depth_));
+        m.columns.push_back(column);
         m.weights.push_back(T.weights[size_t(x)]);
       }
       m.offsets.push_back(Index(m.columns.size()));
@@ -118,8 +130,12 @@ const CornerRows* LimitNodes::corner(int id, int k, std::string& error) {
     std::string why;
     if (corner_rows(limits_, n.level, p, k, 0, triangles_, rows, why)) {
       auto by_label = [&](const std::vector<double>& r) {
-        std::vector<double> out(r.size(), 0.0);
-        for (size_t v = 0; v < r.size(); ++v) out[size_t(n.label_of[v])] = r[v];
+        std::vector<double> out(size_t(n.kept), 0.0);
+        for (size_t v = 0; v < r.size(); ++v) {
+          if (r[v] == 0) continue;
+          if (n.label_of[v] >= n.kept) throw Error(not_closed(scheme_, depth_));
+          out[size_t(n.label_of[v])] = r[v];
+        }
         return out;
       };
       n.corner[size_t(k)].position = by_label(rows.position);

@@ -26,6 +26,7 @@ struct LimitNode {
   Index face = kNone;
   std::vector<Index> vertex_of;   // label -> vertex of the cut
   std::vector<Index> label_of;    // vertex of the cut -> label
+  Index kept = 0;                 // labels the evaluation carries: those within the depth
   bool expanded = false;
   std::vector<ChildFace> children;  // corners in this face's coordinates
   std::vector<int> child_node;
@@ -37,9 +38,12 @@ struct LimitNode {
 
 class LimitNodes {
 public:
-  LimitNodes(const Scheme& scheme, const FeatureOptions& features, int radius, bool triangles, SchemeLimits& limits);
+  // Cuts have `radius` face rings; the evaluation carries the vertices within `depth` rings
+  // of the face, which must be closed under the steps (checked as nodes are expanded).
+  LimitNodes(const Scheme& scheme, const FeatureOptions& features, int radius, int depth, bool triangles,
+             SchemeLimits& limits);
 
-  // The node of a cut around `face`, and the cut's vertices in the node's label order.
+  // The node of a cut around `face`, and the cut's vertices the node keeps, in label order.
   int intern(const Level& cut, Index face, std::vector<Index>& order);
   // The node with its children computed.
   const LimitNode& expanded(int id);
@@ -53,7 +57,7 @@ private:
 
   const Scheme& scheme_;
   FeatureOptions features_;
-  int radius_;
+  int radius_, depth_;
   bool triangles_;
   SchemeLimits& limits_;
   std::mutex mutex_;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <deque>
+#include <mutex>
 #include <fmt/format.h>
 
 #include "framework/analysis/surface/limit_evaluation.h"
@@ -13,6 +14,7 @@
 #include "framework/limit/face_domain.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
+
 
 namespace subdiv {
 namespace {
@@ -105,6 +107,38 @@ struct LimitSurface::Impl {
   int radius = 4;
   std::unique_ptr<SchemeLimits> limits;
   std::unique_ptr<LimitNodes> nodes;
+  // Per base face (made on first use): the node of its cut and the base vertices in the
+  // node's label order.
+  struct Entry {
+    int node = -1;
+    std::vector<Index> vertices;
+  };
+  mutable std::mutex entry_mutex;
+  mutable std::vector<std::unique_ptr<Entry>> entries;
+
+  const Entry& entry(Index face) const {
+    {
+      std::lock_guard lock(entry_mutex);
+      if (entries[size_t(face)]) return *entries[size_t(face)];
+    }
+    FacePoint p;
+    p.face = face;
+    const Neighbourhood n = cut(base, {}, 0, p, radius);
+    auto e = std::make_unique<Entry>();
+    std::vector<Index> order;
+    e->node = nodes->intern(n.level, n.point.face, order);
+    for (Index v : order) e->vertices.push_back(n.original[size_t(v)]);
+    std::lock_guard lock(entry_mutex);
+    if (!entries[size_t(face)]) entries[size_t(face)] = std::move(e);
+    return *entries[size_t(face)];
+  }
+
+  // The base vertices an evaluation in the point's face reads, in the order descend() takes
+  // their values.
+  std::vector<Index> reads(const FacePoint& p) const {
+    if (p.sub_face < 0) return entry(p.face).vertices;
+    return cut(base, {}, 0, p, radius).original;
+  }
 
   FacePoint start(Index face, double u, double v) const {
     const char* why = "";
@@ -119,31 +153,22 @@ struct LimitSurface::Impl {
   // Follows the point down the refinement of its neighbourhood until it is a vertex.
   // The position from the values carried down; the derivatives as rows over the first
   // cut's vertices (`du_row`, `dv_row`), pulled back and applied to its values.
-  LimitSample descend(Neighbourhood n, int channels, std::vector<double>* du_row = nullptr,
-                      std::vector<double>* dv_row = nullptr) const {
-    const std::vector<double> first_values = n.values;
+  LimitSample descend(const FacePoint& p0, const std::vector<double>& first_values, int channels,
+                      std::vector<double>* du_row = nullptr, std::vector<double>* dv_row = nullptr) const {
     std::deque<StepMatrix> owned;
     std::vector<const StepMatrix*> path;
     int refinements = 0;
-    // An n-gon's sub-face is not a face yet: one step with the engine makes it one.
-    while (n.point.sub_face >= 0) {
-      const Hierarchy h = refine_step(n.level);
-      const std::vector<double> child = h.stencils[0].apply(n.values, channels);
-      const auto q = child_face_point(n.level, h.levels[1], h.origins[0], n.point, triangles);
-      if (!q) throw Error("internal: no child face holds the point (the split is not a binary primal one)");
-      const Index parent_count = n.level.vertex_count;
-      n = cut(h.levels[1], child, channels, *q, radius);
-      owned.push_back(step_matrix(h.stencils[0], n.original, parent_count));
-      path.push_back(&owned.back());
-      ++refinements;
+    int id = -1;
+    std::vector<double> values;
+    FacePoint p = p0;
+    if (p0.sub_face < 0) {
+      id = entry(p0.face).node;
+      values = first_values;
+    } else {
+      start_in_sub_face(p0, first_values, channels, owned, path, id, values, p);
+      refinements = 1;
     }
-    std::vector<Index> order;
-    int id = nodes->intern(n.level, n.point.face, order);
-    owned.push_back(renumbering(order, n.level.vertex_count));
-    path.push_back(&owned.back());
-    std::vector<double> values(order.size() * size_t(channels)), next;
-    owned.back().apply(n.values, values, channels);
-    FacePoint p = n.point;
+    std::vector<double> next;
     std::string mask_error;
     for (int step = refinements;; ++step) {
       const int shape = nodes->node(id).level.face_size(nodes->node(id).face);
@@ -191,6 +216,29 @@ struct LimitSurface::Impl {
     }
   }
 
+  // An n-gon's sub-face is not a face yet: one step with the engine makes it one.
+  void start_in_sub_face(const FacePoint& p0, const std::vector<double>& first_values, int channels,
+                         std::deque<StepMatrix>& owned, std::vector<const StepMatrix*>& path, int& id,
+                         std::vector<double>& values, FacePoint& p) const {
+    Neighbourhood n = cut(base, {}, 0, p0, radius);
+    n.values = first_values;
+    const Hierarchy h = refine_step(n.level);
+    const std::vector<double> child = h.stencils[0].apply(n.values, channels);
+    const auto q = child_face_point(n.level, h.levels[1], h.origins[0], n.point, triangles);
+    if (!q) throw Error("internal: no child face holds the point (the split is not a binary primal one)");
+    const Index parent_count = n.level.vertex_count;
+    n = cut(h.levels[1], child, channels, *q, radius);
+    owned.push_back(step_matrix(h.stencils[0], n.original, parent_count));
+    path.push_back(&owned.back());
+    std::vector<Index> order;
+    id = nodes->intern(n.level, n.point.face, order);
+    owned.push_back(renumbering(order, n.level.vertex_count));
+    values.resize(order.size() * size_t(channels));
+    path.push_back(&owned.back());
+    owned.back().apply(n.values, values, channels);
+    p = n.point;
+  }
+
   Hierarchy refine_step(const Level& level) const {
     RefineOptions ro;
     ro.levels = 1;
@@ -214,11 +262,15 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   double loss = 1;
   for (double x : ring_loss_per_level(std::span<const SchemeRun>(&run, 1))) loss = std::max(loss, x);
   impl_->radius = std::max(4, 2 * int(std::ceil(loss)) + 2);
+  // The evaluation carries the vertices within radius - 2 rings of the face: the rows there
+  // are right (the rim's two rings absorb the cut's artificial boundary), and the nodes
+  // check that each step reads only them.
   LimitOptions lo;
   lo.features = options.features;
   impl_->limits = std::make_unique<SchemeLimits>(*impl_->scheme, lo);
-  impl_->nodes = std::make_unique<LimitNodes>(*impl_->scheme, options.features, impl_->radius, impl_->triangles,
-                                              *impl_->limits);
+  impl_->entries.resize(size_t(impl_->base.face_count()));
+  impl_->nodes = std::make_unique<LimitNodes>(*impl_->scheme, options.features, impl_->radius,
+                                              impl_->radius - 2, impl_->triangles, *impl_->limits);
 }
 
 LimitSurface::~LimitSurface() = default;
@@ -240,20 +292,25 @@ LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<con
   if (channels < 1 || values.size() < size_t(impl_->base.vertex_count) * size_t(channels))
     throw Error(fmt::format("limit evaluation needs {} values per vertex for {} vertices, got {}", channels,
                             impl_->base.vertex_count, values.size()));
-  return impl_->descend(cut(impl_->base, values, channels, impl_->start(face, u, v), impl_->radius), channels);
+  const FacePoint p = impl_->start(face, u, v);
+  const std::vector<Index> reads = impl_->reads(p);
+  std::vector<double> first(reads.size() * size_t(channels));
+  for (size_t k = 0; k < reads.size(); ++k)
+    for (int c = 0; c < channels; ++c)
+      first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
+  return impl_->descend(p, first, channels);
 }
 
 LimitStencil LimitSurface::stencil(Index face, double u, double v) const {
   const FacePoint p = impl_->start(face, u, v);
   // The evaluation is linear in the values: evaluate the unit vectors of the face's
   // neighbourhood (the only vertices it reads) as channels.
-  Neighbourhood n = cut(impl_->base, {}, 0, p, impl_->radius);
-  const size_t m = n.original.size();
-  n.values.assign(m * m, 0.0);
-  for (size_t k = 0; k < m; ++k) n.values[k * m + k] = 1.0;
-  const std::vector<Index> original = n.original;
+  const std::vector<Index> original = impl_->reads(p);
+  const size_t m = original.size();
+  std::vector<double> unit(m * m, 0.0);
+  for (size_t k = 0; k < m; ++k) unit[k * m + k] = 1.0;
   std::vector<double> du, dv;
-  const LimitSample s = impl_->descend(std::move(n), int(m), &du, &dv);
+  const LimitSample s = impl_->descend(p, unit, int(m), &du, &dv);
   LimitStencil out;
   out.has_derivatives = s.has_derivatives;
   for (size_t k = 0; k < m; ++k) {
