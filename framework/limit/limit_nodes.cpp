@@ -1,6 +1,7 @@
 #include "framework/limit/limit_nodes.h"
 
 #include <algorithm>
+#include <Eigen/Dense>
 #include <fmt/format.h>
 
 #include "framework/scheme/scheme.h"
@@ -113,10 +114,53 @@ const LimitNode& LimitNodes::expanded(int id) {
       m.offsets.push_back(Index(m.columns.size()));
     }
     n->child_node.push_back(child);
+    n->powers.emplace_back();
     n->child_matrix.push_back(std::move(m));
   }
   n->expanded = true;
   return *n;
+}
+
+namespace {
+
+StepMatrix dense_step(const Eigen::MatrixXd& a, int scale) {
+  StepMatrix m;
+  m.source_count = Index(a.cols());
+  m.scale = scale;
+  for (Index r = 0; r < Index(a.rows()); ++r) {
+    for (Index c = 0; c < Index(a.cols()); ++c)
+      if (a(r, c) != 0) m.columns.push_back(c), m.weights.push_back(a(r, c));
+    m.offsets.push_back(Index(m.columns.size()));
+  }
+  return m;
+}
+
+}  // namespace
+
+const LimitNode::Powers& LimitNodes::powers(int id, int which) {
+  std::lock_guard lock(mutex_);
+  LimitNode& n = *nodes_[size_t(id)];
+  auto& slot = n.powers[size_t(which)];
+  if (slot) return *slot;
+  const StepMatrix& s = n.child_matrix[size_t(which)];
+  const Index k = s.rows();
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(k, k);
+  for (Index r = 0; r < k; ++r)
+    for (Index e = s.offsets[size_t(r)]; e < s.offsets[size_t(r) + 1]; ++e) m(r, s.columns[size_t(e)]) += s.weights[size_t(e)];
+  // Derivative rows sum to zero; 2 (M - 1 e_0) acts on them as 2 M does, and sends every
+  // row to a zero-sum one, so rounding in the sum never grows with the power.
+  Eigen::MatrixXd d = 2 * m;
+  d.col(0).array() -= 2.0;
+  auto p = std::make_unique<LimitNode::Powers>();
+  for (int j = 0; j < kPowers; ++j) {
+    p->forward.push_back(dense_step(m, 1));
+    p->backward.push_back(dense_step(d, 1));
+    m = (m * m).eval();
+    d = (d * d).eval();
+  }
+  for (int j = 0; j < kPowers; ++j) p->forward[size_t(j)].backward = &p->backward[size_t(j)];
+  slot = std::move(p);
+  return *slot;
 }
 
 const CornerRows* LimitNodes::corner(int id, int k, std::string& error) {

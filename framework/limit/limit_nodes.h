@@ -31,6 +31,12 @@ struct LimitNode {
   std::vector<ChildFace> children;  // corners in this face's coordinates
   std::vector<int> child_node;
   std::vector<StepMatrix> child_matrix;  // rows: the child's labels; columns: this node's labels
+  // Per child that is this node again (a self-similar step, as towards an extraordinary
+  // vertex): the step's powers M^(2^j), each with its derivative form (2 (M - 1 e_0))^(2^j).
+  struct Powers {
+    std::vector<StepMatrix> forward, backward;
+  };
+  std::vector<std::unique_ptr<Powers>> powers;
   std::vector<char> corner_tried, corner_ready;
   std::vector<CornerRows> corner;  // over labels
   std::vector<std::string> corner_error;
@@ -51,6 +57,12 @@ public:
   // configuration the masks describe (`error` then says why when the analysis failed).
   const CornerRows* corner(int id, int k, std::string& error);
   const LimitNode& node(int id);
+  // The powers of child `which`'s step of node `id`, which must lead back to the node.
+  // Skipping m levels then costs one product per binary digit of m, whatever m is (powers
+  // by squaring, which unlike an eigen-decomposition needs no diagonalisable matrix:
+  // picking matrices have defective zero eigenvalues).
+  const LimitNode::Powers& powers(int id, int which);
+  static constexpr int kPowers = 11;  // 2^11 levels: below the smallest double
 
 private:
   int intern_locked(const Level& cut, Index face, std::vector<Index>& order);

@@ -170,27 +170,29 @@ struct LimitSurface::Impl {
     }
     std::vector<double> next;
     std::string mask_error;
-    for (int step = refinements;; ++step) {
+    // `level`: the levels below the base face (the derivatives' scale); `iteration`: the
+    // steps taken, a run of self-similar levels counting as one.
+    for (int iteration = 0, level = refinements;; ++iteration, ++level) {
       const int shape = nodes->node(id).level.face_size(nodes->node(id).face);
-      if (step >= options.max_steps) {
+      if (iteration >= options.max_steps) {
         // The face is 2^-max_steps of the base face: its nearest corner is the point to round-off.
         p.st = {std::round(p.st[0]), std::round(p.st[1])};
         if (triangles && p.st[0] + p.st[1] > 1) p.st[1] = 0;
-        if (step >= options.max_steps + 16)
-          throw Error(fmt::format("no limit mask for the vertex reached after {} steps{}{}", step,
+        if (iteration >= options.max_steps + 16)
+          throw Error(fmt::format("no limit mask for the vertex reached after {} steps{}{}", iteration,
                                   mask_error.empty() ? "" : ": ", mask_error));
       }
       const int corner = corner_at(p, shape, triangles);
       if (corner >= 0)
         if (const CornerRows* rows = nodes->corner(id, corner, mask_error)) {
           LimitSample out;
-          out.steps = step;
+          out.steps = iteration;
           out.position = applied(rows->position, values, channels);
           if (!rows->ds.empty()) {
             auto row = [&](int d) {
               std::vector<double> r(rows->ds.size());
               for (size_t i = 0; i < r.size(); ++i)
-                r[i] = std::ldexp(p.jacobian[0][size_t(d)] * rows->ds[i] + p.jacobian[1][size_t(d)] * rows->dt[i], -step);
+                r[i] = std::ldexp(p.jacobian[0][size_t(d)] * rows->ds[i] + p.jacobian[1][size_t(d)] * rows->dt[i], -level);
               return pulled_back(std::move(r), path);
             };
             std::vector<double> u = row(0), v = row(1);
@@ -206,6 +208,33 @@ struct LimitSurface::Impl {
       int which = -1;
       const auto q = locate(N.children, p, triangles, &which);
       if (!q) throw Error("internal: no child face holds the point (the split is not a binary primal one)");
+      if (N.child_node[size_t(which)] == id) {
+        // A self-similar step: count how many times in a row the point takes it, and take
+        // them at once.
+        FacePoint r = *q;
+        int more = 0, again = -1;
+        while (more + 1 < (1 << LimitNodes::kPowers) - 1 && corner_at(r, shape, triangles) < 0) {
+          const auto t = locate(N.children, r, triangles, &again);
+          if (!t || again != which) break;
+          r = *t, ++more;
+        }
+        // Worth it from about eight levels: a power is dense, a step sparse.
+        if (more + 1 >= 8) {
+          const LimitNode::Powers& powers = nodes->powers(id, which);
+          const int levels = more + 1;
+          for (int j = 0; j < LimitNodes::kPowers; ++j) {
+            if (!((levels >> j) & 1)) continue;
+            const StepMatrix& m = powers.forward[size_t(j)];
+            next.resize(size_t(m.rows()) * size_t(channels));
+            m.apply(values, next, channels);
+            values.swap(next);
+            path.push_back(&m);
+          }
+          p = r;
+          level += levels - 1;
+          continue;
+        }
+      }
       const StepMatrix& m = N.child_matrix[size_t(which)];
       next.resize(size_t(m.rows()) * size_t(channels));
       m.apply(values, next, channels);

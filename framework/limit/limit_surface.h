@@ -13,9 +13,9 @@
 // vertex's tangent masks (the left eigenvectors of the local subdivision matrix, Stam 1998,
 // "Exact evaluation of Catmull-Clark subdivision surfaces at arbitrary parameter values";
 // analysis/surface/limit_evaluation.h) scaled to the parameterisation. Near an extraordinary
-// vertex the point approaches, the levels are skipped at once with the eigen-decomposition
-// of the vertex's local subdivision matrix (limit_jump.h), so a point at u = 1e-300 costs
-// about what one at u = 0.3 does. Semi-sharp creases are refined until they are smooth or
+// vertex the point approaches (or wherever a step leads back to the same neighbourhood), the
+// levels are skipped together with powers of the local subdivision matrix (limit_nodes.h),
+// so a point at u = 1e-300 costs about what one at u = 0.3 does. Semi-sharp creases are refined until they are smooth or
 // sharp, like everything else.
 //
 // Supported: stationary linear schemes whose split is the binary quad or triangle split
@@ -39,7 +39,8 @@ struct Scheme;
 struct LimitSurfaceOptions {
   FeatureOptions features;  // boundary interpolation and crease method, as in OpenSubdiv
   // Steps after which a point that is still not a vertex is taken at the nearest corner
-  // of its face (whose size is then 2^-max_steps of the base face's: below round-off).
+  // of its face (whose size is then at most 2^-max_steps of the base face's: below
+  // round-off).
   int max_steps = 64;
 };
 
@@ -49,7 +50,7 @@ struct LimitSurfaceOptions {
 struct LimitSample {
   std::vector<double> position, du, dv;
   bool has_derivatives = false;
-  int steps = 0;  // refinement steps the evaluation took (levels jumped count once)
+  int steps = 0;  // steps the evaluation took (a run of self-similar levels taken at once counts once)
 };
 
 // A limit stencil: position and derivatives as weights over the base mesh's vertices.

@@ -17,7 +17,7 @@ void StepMatrix::apply(std::span<const double> in, std::span<double> out, int ch
 
 std::vector<double> pulled_back(std::vector<double> row, std::span<const StepMatrix* const> steps) {
   for (size_t j = steps.size(); j-- > 0;) {
-    const StepMatrix& m = *steps[j];
+    const StepMatrix& m = steps[j]->backward ? *steps[j]->backward : *steps[j];
     std::vector<double> next(size_t(m.source_count), 0.0);
     for (Index r = 0; r < m.rows(); ++r) {
       const double x = m.scale * row[size_t(r)];

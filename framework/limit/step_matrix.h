@@ -15,6 +15,9 @@ struct StepMatrix {
   // The factor by which the step scales the parameter: 2 for a refinement step (children's
   // coordinates are twice their parent's), 1 for a renumbering.
   int scale = 2;
+  // Where set, derivative rows are pulled back through this matrix instead (with its own
+  // scale): a power of the step taken at once, whose derivative form differs (limit_nodes.h).
+  const StepMatrix* backward = nullptr;
 
   Index rows() const { return Index(offsets.size()) - 1; }
   // out (rows x channels) = this x in (source_count x channels).

@@ -103,7 +103,7 @@ TEST_CASE("Catmull-Clark and Loop near extraordinary vertices: Bfr approaches ou
   };
   for (const Case& c : {Case{"catmull-clark", subdiv_test::OsdScheme::CatmullClark, test::cube()},
                         Case{"loop", subdiv_test::OsdScheme::Loop, test::octahedron()}}) {
-    CAPTURE(c.scheme);
+    CAPTURE(std::string(c.scheme));
     const auto scheme = load_scheme(c.scheme);
     const test::Mesh m = bumped(c.mesh);
     const LimitSurface surface(scheme, m.level());
@@ -112,15 +112,19 @@ TEST_CASE("Catmull-Clark and Loop near extraordinary vertices: Bfr approaches ou
       subdiv_test::OsdOptions oo;
       oo.scheme = c.osd;
       const subdiv_test::BfrLimit bfr(osd_mesh(m), oo, level, 10);
-      double worst = 0;
+      double worst = 0, worst_derivative = 0;
       // Points next to corner 0 of face 0 (an extraordinary vertex on both meshes).
       for (double t : {0.01, 0.03, 0.1}) {
         const LimitSample ours = surface.evaluate(0, t, 0.7 * t, m.positions, 3);
-        worst = std::max(worst, distance(ours.position, bfr.evaluate(0, t, 0.7 * t).p));
+        const auto ref = bfr.evaluate(0, t, 0.7 * t);
+        worst = std::max(worst, distance(ours.position, ref.p));
+        worst_derivative = std::max(worst_derivative, std::max(distance(ours.du, ref.du), distance(ours.dv, ref.dv)));
       }
-      MESSAGE(std::string(c.scheme), ": Bfr ApproxLevelSmooth ", level, ", largest distance ", worst);
+      MESSAGE(std::string(c.scheme), ": Bfr ApproxLevelSmooth ", level, ", largest distance ", worst,
+              ", of derivatives ", worst_derivative);
       CHECK(worst < previous);
       previous = worst;
+      if (level == 7) CHECK(worst_derivative < 1e-9);
     }
     CHECK(previous < 1e-6);
   }

@@ -173,6 +173,23 @@ TEST_CASE("At a base vertex the evaluation is the vertex's limit mask, which lev
   }
 }
 
+TEST_CASE("Points arbitrarily close to an extraordinary vertex cost no more than others and tend to its limit") {
+  for (const Case& c : cases()) {
+    CAPTURE(std::string(c.scheme));
+    const LimitSurface s(load_scheme(c.scheme), c.mesh.level());
+    const LimitSample corner = s.evaluate(0, 0, 0, c.mesh.positions, 3);
+    const LimitSample near = s.evaluate(0, 1e-300, 0.7e-300, c.mesh.positions, 3);
+    const LimitSample far = s.evaluate(0, 0.3, 0.2, c.mesh.positions, 3);
+    CHECK(near.steps <= far.steps + 16);
+    CHECK(distance(near.position, corner.position) < 1e-14);
+    CHECK(near.has_derivatives);
+    // Between: the distance to the corner's limit shrinks with the parameter.
+    const LimitSample mid = s.evaluate(0, 1e-8, 0.7e-8, c.mesh.positions, 3);
+    CHECK(distance(mid.position, corner.position) < 1e-5);
+    CHECK(distance(mid.position, corner.position) > distance(near.position, corner.position));
+  }
+}
+
 TEST_CASE("Schemes without a fixed limit operator, and unsupported splits, are refused with the reason") {
   CHECK_THROWS_WITH_AS(LimitSurface(load_scheme("sqrt3"), test::octahedron().level()),
                        doctest::Contains("do not nest inside one parent face"), Error);
