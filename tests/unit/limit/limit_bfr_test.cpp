@@ -51,11 +51,19 @@ struct Worst {
 };
 
 Worst compare_random(const char* scheme_name, const test::Mesh& m, const std::vector<subdiv_test::OsdCrease>& creases,
-                     subdiv_test::OsdScheme osd_scheme, int approx, int samples, bool triangles) {
+                     subdiv_test::OsdScheme osd_scheme, int approx, int samples, bool triangles,
+                     BoundaryInterpolation boundary = BoundaryInterpolation::EdgesAndCorners,
+                     CreaseMethod method = CreaseMethod::Uniform) {
   const auto scheme = load_scheme(scheme_name);
-  const LimitSurface surface(scheme, tagged_level(m, creases));
+  LimitSurfaceOptions lo;
+  lo.features.boundary = boundary;
+  lo.features.crease_method = method;
+  const LimitSurface surface(scheme, tagged_level(m, creases), lo);
   subdiv_test::OsdOptions oo;
   oo.scheme = osd_scheme;
+  oo.boundary = boundary == BoundaryInterpolation::EdgesOnly ? subdiv_test::OsdBoundary::EdgesOnly
+                                                             : subdiv_test::OsdBoundary::EdgesAndCorners;
+  oo.creasing = method == CreaseMethod::Chaikin ? subdiv_test::OsdCreasing::Chaikin : subdiv_test::OsdCreasing::Uniform;
   const subdiv_test::BfrLimit bfr(osd_mesh(m, creases), oo, approx, approx);
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -93,6 +101,25 @@ TEST_CASE("Loop on a regular triangle grid with boundaries and a sharp crease: B
   const Worst w = compare_random("loop", m, {{7, 8, 10.f}, {8, 9, 10.f}}, subdiv_test::OsdScheme::Loop, 10, 60, true);
   CHECK(w.position < 1e-12);
   CHECK(w.derivative < 1e-11);
+}
+
+TEST_CASE("Semi-sharp creases (uniform and Chaikin decay) and both boundary modes: Bfr's exact answers to 1e-12") {
+  // Semi-sharp creases become smooth after finitely many levels; away from irregular
+  // vertices Bfr is exact with its sharp approximation level at the maximum.
+  const std::vector<subdiv_test::OsdCrease> semi{{7, 8, 1.5f}, {8, 9, 2.0f}, {13, 14, 0.5f}};
+  for (CreaseMethod method : {CreaseMethod::Uniform, CreaseMethod::Chaikin})
+    for (BoundaryInterpolation boundary : {BoundaryInterpolation::EdgesAndCorners, BoundaryInterpolation::EdgesOnly}) {
+      CAPTURE(int(method));
+      CAPTURE(int(boundary));
+      const Worst cc = compare_random("catmull-clark", bumped(test::grid(5, 4)), semi,
+                                      subdiv_test::OsdScheme::CatmullClark, 10, 40, false, boundary, method);
+      CHECK(cc.position < 1e-12);
+      CHECK(cc.derivative < 1e-11);
+      const Worst loop = compare_random("loop", bumped(test::grid(5, 4, true)), semi, subdiv_test::OsdScheme::Loop, 10,
+                                        40, true, boundary, method);
+      CHECK(loop.position < 1e-12);
+      CHECK(loop.derivative < 1e-11);
+    }
 }
 
 TEST_CASE("Catmull-Clark and Loop near extraordinary vertices: Bfr approaches ours as its approximation level rises") {
