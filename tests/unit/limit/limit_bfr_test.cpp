@@ -6,6 +6,7 @@
 #ifdef SUBDIV_HAVE_OPENSUBDIV
 
 #include <cmath>
+#include <algorithm>
 #include <random>
 
 #include "framework/limit/limit_surface.h"
@@ -189,6 +190,34 @@ TEST_CASE("Catmull-Clark on n-gons: Bfr's QUAD_SUBFACES parameterisation, exact 
     CHECK(distance(ours.position, ref.p) < 1e-6);
     CHECK(distance(ours.du, ref.du) < 1e-5);
   }
+}
+
+#endif
+
+#ifdef SUBDIV_HAVE_OPENSUBDIV
+
+TEST_CASE("Faces next to a hole: Bfr's exact answers to 1e-12; the hole itself is refused") {
+  const test::Mesh m = bumped(test::grid(5, 4));
+  const Index hole = 7;
+  Level base = m.level();
+  base.face_hole.assign(size_t(base.face_count()), 0);
+  base.face_hole[size_t(hole)] = 1;
+  const LimitSurface surface(load_scheme("catmull-clark"), base);
+  subdiv_test::OsdMesh om = osd_mesh(m);
+  om.holes = {hole};
+  const subdiv_test::BfrLimit bfr(om, {}, 10, 10);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double worst = 0;
+  for (Index f : {Index(1), Index(2), Index(6), Index(8), Index(12)})
+    for (int i = 0; i < 6; ++i) {
+      const double u = unit(rng), v = unit(rng);
+      const LimitSample ours = surface.evaluate(f, u, v, m.positions, 3);
+      const auto ref = bfr.evaluate(f, u, v);
+      worst = std::max({worst, distance(ours.position, ref.p), distance(ours.du, ref.du), distance(ours.dv, ref.dv)});
+    }
+  CHECK(worst < 1e-11);
+  CHECK(surface.check(hole, 0.5, 0.5).find("hole") != std::string::npos);
 }
 
 #endif
