@@ -8,6 +8,7 @@
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/ghost_rings.h"
+#include "framework/features/base_tags.h"
 #include "framework/engine/refiner.h"
 #include "framework/limit/corner_limit.h"
 #include "framework/limit/limit_nodes.h"
@@ -284,6 +285,9 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   impl_->scheme = std::move(scheme);
   impl_->base = std::move(base);
   impl_->options = options;
+  // With boundary interpolation "none" the faces along a boundary are holes (as the
+  // engine and OpenSubdiv make them): they have no limit surface.
+  tag_boundary_holes(impl_->base, options.features.boundary);
   impl_->triangles = impl_->scheme->split() == SplitKind::Triangle;
   // Children near the cut's rim follow the rim's artificial boundary; with a reach of r
   // parent rings, 2 r + 2 rings keep the face's own neighbourhood right from level to level.
