@@ -60,6 +60,15 @@ StepMatrix step_matrix(const StencilTable& table, const std::vector<Index>& rows
   return m;
 }
 
+// The point with its Jacobian d(s, t)/d(u, v) halved: carried as 2^-level times the
+// Jacobian, whose entries grow like 2^level and would overflow past level 1023, so that
+// derivative rows start at 2^-level times their size (step_matrix.h).
+FacePoint halved(FacePoint p) {
+  for (auto& row : p.jacobian)
+    for (double& x : row) x *= 0.5;
+  return p;
+}
+
 StepMatrix renumbering(const std::vector<Index>& order, Index source_count) {
   StepMatrix m;
   m.source_count = source_count;
@@ -158,7 +167,6 @@ struct LimitSurface::Impl {
                       std::vector<double>* du_row = nullptr, std::vector<double>* dv_row = nullptr) const {
     std::deque<StepMatrix> owned;
     std::vector<const StepMatrix*> path;
-    int refinements = 0;
     int id = -1;
     std::vector<double> values;
     FacePoint p = p0;
@@ -167,13 +175,11 @@ struct LimitSurface::Impl {
       values = first_values;
     } else {
       start_in_sub_face(p0, first_values, channels, owned, path, id, values, p);
-      refinements = 1;
     }
     std::vector<double> next;
     std::string mask_error;
-    // `level`: the levels below the base face (the derivatives' scale); `iteration`: the
-    // steps taken, a run of self-similar levels counting as one.
-    for (int iteration = 0, level = refinements;; ++iteration, ++level) {
+    // `iteration`: the steps taken, a run of self-similar levels counting as one.
+    for (int iteration = 0;; ++iteration) {
       const int shape = nodes->node(id).level.face_size(nodes->node(id).face);
       if (iteration >= options.max_steps) {
         // The face is 2^-max_steps of the base face: its nearest corner is the point to round-off.
@@ -193,7 +199,7 @@ struct LimitSurface::Impl {
             auto row = [&](int d) {
               std::vector<double> r(rows->ds.size());
               for (size_t i = 0; i < r.size(); ++i)
-                r[i] = std::ldexp(p.jacobian[0][size_t(d)] * rows->ds[i] + p.jacobian[1][size_t(d)] * rows->dt[i], -level);
+                r[i] = p.jacobian[0][size_t(d)] * rows->ds[i] + p.jacobian[1][size_t(d)] * rows->dt[i];
               return pulled_back(std::move(r), path);
             };
             std::vector<double> u = row(0), v = row(1);
@@ -212,12 +218,12 @@ struct LimitSurface::Impl {
       if (N.child_node[size_t(which)] == id) {
         // A self-similar step: count how many times in a row the point takes it, and take
         // them at once.
-        FacePoint r = *q;
+        FacePoint r = halved(*q);
         int more = 0, again = -1;
         while (more + 1 < (1 << LimitNodes::kPowers) - 1 && corner_at(r, shape, triangles) < 0) {
           const auto t = locate(N.children, r, triangles, &again);
           if (!t || again != which) break;
-          r = *t, ++more;
+          r = halved(*t), ++more;
         }
         // Worth it from about eight levels: a power is dense, a step sparse.
         if (more + 1 >= 8) {
@@ -232,7 +238,6 @@ struct LimitSurface::Impl {
             path.push_back(&m);
           }
           p = r;
-          level += levels - 1;
           continue;
         }
       }
@@ -242,7 +247,7 @@ struct LimitSurface::Impl {
       values.swap(next);
       path.push_back(&m);
       id = N.child_node[size_t(which)];
-      p = *q;
+      p = halved(*q);
     }
   }
 
@@ -266,7 +271,7 @@ struct LimitSurface::Impl {
     values.resize(order.size() * size_t(channels));
     path.push_back(&owned.back());
     owned.back().apply(n.values, values, channels);
-    p = n.point;
+    p = halved(n.point);
   }
 
   Hierarchy refine_step(const Level& level) const {
