@@ -37,6 +37,53 @@ std::string not_closed(const Scheme& scheme, int depth) {
                      depth);
 }
 
+// The cut renumbered by its labelling, vertices and faces, so that every cut with one
+// signature is the same level, and the engine's weights for it the same bits whichever
+// cut was met first (the results do not depend on the order or thread of evaluations).
+Level canonical_level(const Level& cut, const Labelling& lab, Index face, Index& canonical_face) {
+  std::vector<std::vector<Index>> faces;
+  std::vector<Index> original;
+  for (Index f = 0; f < cut.face_count(); ++f) {
+    std::vector<Index> labels;
+    for (Index v : cut.face(f)) labels.push_back(lab.label_of[size_t(v)]);
+    const auto first = std::min_element(labels.begin(), labels.end()) - labels.begin();
+    std::rotate(labels.begin(), labels.begin() + first, labels.end());
+    faces.push_back(std::move(labels));
+  }
+  std::vector<Index> order(faces.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = Index(i);
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) { return faces[size_t(a)] < faces[size_t(b)]; });
+  std::vector<Index> offsets{0}, corners;
+  for (Index f : order) {
+    // The centre face keeps its corner 0 first: the point's coordinates are relative to it.
+    if (f == face) {
+      canonical_face = Index(offsets.size()) - 1;
+      for (Index v : cut.face(f)) corners.push_back(lab.label_of[size_t(v)]);
+    } else {
+      corners.insert(corners.end(), faces[size_t(f)].begin(), faces[size_t(f)].end());
+    }
+    offsets.push_back(Index(corners.size()));
+  }
+  Level L = build_level(Index(lab.vertices.size()), offsets, corners);
+  if (!cut.edge_sharpness.empty()) {
+    L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
+    for (Index e = 0; e < L.edge_count(); ++e) {
+      const Index a = lab.vertices[size_t(L.edge_vertices[size_t(2 * e)])];
+      const Index b = lab.vertices[size_t(L.edge_vertices[size_t(2 * e + 1)])];
+      L.edge_sharpness[size_t(e)] = cut.edge_sharp(find_edge(cut, a, b));
+    }
+  }
+  if (!cut.vertex_sharpness.empty()) {
+    L.vertex_sharpness.assign(size_t(L.vertex_count), 0.f);
+    for (Index v = 0; v < L.vertex_count; ++v) L.vertex_sharpness[size_t(v)] = cut.vertex_sharp(lab.vertices[size_t(v)]);
+  }
+  if (!cut.face_hole.empty()) {
+    L.face_hole.assign(size_t(L.face_count()), 0);
+    for (size_t i = 0; i < order.size(); ++i) L.face_hole[i] = cut.face_hole[size_t(order[i])];
+  }
+  return L;
+}
+
 }  // namespace
 
 LimitNodes::LimitNodes(const Scheme& scheme, const FeatureOptions& features, int radius, int depth, bool triangles,
@@ -60,12 +107,11 @@ int LimitNodes::intern_locked(const Level& cut, Index face, std::vector<Index>& 
   auto [it, inserted] = index_.emplace(std::move(key), int(nodes_.size()));
   if (!inserted) return it->second;
   auto n = std::make_unique<LimitNode>();
-  n->level = cut;
-  n->face = face;
-  n->vertex_of = lab.vertices;
+  n->level = canonical_level(cut, lab, face, n->face);
   n->kept = kept;
-  n->label_of.assign(size_t(cut.vertex_count), kNone);
-  for (size_t l = 0; l < lab.vertices.size(); ++l) n->label_of[size_t(lab.vertices[l])] = Index(l);
+  n->vertex_of.resize(lab.vertices.size());
+  for (size_t l = 0; l < lab.vertices.size(); ++l) n->vertex_of[l] = Index(l);
+  n->label_of = n->vertex_of;
   const int k = cut.face_size(face);
   n->corner_tried.assign(size_t(k), 0);
   n->corner_ready.assign(size_t(k), 0);

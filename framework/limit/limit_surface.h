@@ -70,6 +70,8 @@ public:
   LimitSurface& operator=(LimitSurface&&) noexcept;
 
   const Level& base() const;
+  // True when the scheme's split makes triangles (faces are parameterised as triangles).
+  bool triangles() const;
 
   // The limit of `values` (channels per base vertex) at (face, u, v) in Bfr's
   // parameterisation (face_domain.h). Throws subdiv::Error for a face that does not exist,

@@ -1,6 +1,7 @@
-// `subdiv evaluate MESH [-s SCHEME] --at POINTS.csv [--derivatives 0|1] -o OUT.csv`: points of
-// the limit surface at given (face, u, v), with OpenSubdiv Bfr's parameterisation
-// (framework/limit, docs/limit.md).
+// `subdiv evaluate MESH [-s SCHEME] (--at POINTS.csv | --samples N) [--derivatives 0|1] -o OUT`:
+// points of the limit surface at given (face, u, v), with OpenSubdiv Bfr's parameterisation,
+// or the limit surface sampled N x N per face as a crack-free mesh (framework/limit,
+// docs/limit.md).
 #include <charconv>
 #include <cmath>
 #include <fmt/format.h>
@@ -15,6 +16,8 @@
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
 #include "framework/limit/limit_surface.h"
+#include "framework/limit/tessellation.h"
+#include "framework/io/mesh_write.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/atomic_file.h"
@@ -28,6 +31,7 @@ struct EvaluateArgs {
   std::vector<std::string> params;
   std::string boundary = "edges-and-corners", crease_method = "uniform";
   int derivatives = 1;
+  int samples = 0;
   int threads = 0;
 };
 
@@ -104,10 +108,31 @@ void write_csv(const std::filesystem::path& out, const std::vector<Query>& queri
   });
 }
 
+// The tessellation as a mesh: normals and the (face, u, v) of every point, the base face of
+// every face.
+MeshData tessellation_mesh(const Tessellation& t) {
+  MeshData m;
+  m.positions = t.positions;
+  m.face_offsets = t.face_offsets;
+  m.face_vertices = t.face_vertices;
+  DataArray normals{"Normals", 3, t.normals, false, ArrayRole::Normals};
+  DataArray face{"base_face", 1, {}, true}, uv{"uv", 2, t.uv, false};
+  for (Index f : t.uv_face) face.values.push_back(double(f));
+  m.point_data = {std::move(normals), std::move(face), std::move(uv)};
+  DataArray cells{"base_face", 1, {}, true};
+  for (Index f : t.base_face) cells.values.push_back(double(f));
+  m.cell_data = {std::move(cells)};
+  return m;
+}
+
 void run(const EvaluateArgs& a) {
-  if (lowercase_extension(a.output) != ".csv")
-    throw Error(fmt::format("-o '{}': evaluate writes .csv (face,u,v,x,y,z[,du_*,dv_*]); .vtp and .obj are not "
-                            "implemented yet", a.output));
+  if (a.at.empty() == (a.samples == 0))
+    throw Error("give either --at POINTS.csv (points at given parameters) or --samples N (a mesh of the surface)");
+  const std::string ext = lowercase_extension(a.output);
+  if (!a.at.empty() && ext != ".csv")
+    throw Error(fmt::format("-o '{}': --at writes .csv (face,u,v,x,y,z[,du_*,dv_*])", a.output));
+  if (a.samples > 0 && ext == ".csv")
+    throw Error(fmt::format("-o '{}': --samples writes a mesh (.vtp, .obj, .ply, .off, .stl)", a.output));
   if (a.derivatives == 2)
     throw Error("--derivatives 2: second derivatives are not implemented yet (docs/limit.md); use 0 or 1");
   const auto scheme = load_scheme(a.scheme, parse_params(a.params));
@@ -115,10 +140,14 @@ void run(const EvaluateArgs& a) {
   LimitSurfaceOptions options;
   options.features = {boundary_from_name(a.boundary), crease_method_from_name(a.crease_method)};
   const LimitSurface surface(scheme, level_from_mesh(mesh, a.mesh), options);
-  const std::vector<Query> queries = read_points(a.at, surface);
-  std::vector<LimitSample> samples(queries.size());
   const int threads = a.threads > 0 ? a.threads : int(tbb::this_task_arena::max_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+  if (a.samples > 0) {
+    write_mesh(a.output, tessellation_mesh(tessellate(surface, mesh.positions, a.samples)));
+    return;
+  }
+  const std::vector<Query> queries = read_points(a.at, surface);
+  std::vector<LimitSample> samples(queries.size());
   tbb::parallel_for(size_t(0), queries.size(), [&](size_t i) {
     samples[i] = surface.evaluate(queries[i].face, queries[i].u, queries[i].v, mesh.positions, 3);
   });
@@ -137,11 +166,17 @@ void add_evaluate_command(CLI::App& app) {
   add_param_option(cmd, args->params);
   add_boundary_option(cmd, "--boundary", args->boundary);
   add_crease_method_option(cmd, args->crease_method);
-  cmd->add_option("--at", args->at, "Points to evaluate: a .csv with the header face,u,v")->required();
+  cmd->add_option("--at", args->at, "Points to evaluate: a .csv with the header face,u,v");
+  cmd->add_option("--samples", args->samples,
+                  "Instead of --at: the surface as a crack-free mesh, N x N quads per quad, N^2 triangles per "
+                  "triangle (faces with other sizes: N/2 x N/2 per sub-face, N even), with normals")
+      ->check(CLI::Range(1, 1024));
   cmd->add_option("--derivatives", args->derivatives, "0: positions; 1: also du and dv (nan where they do not exist)")
       ->check(CLI::Range(0, 2))
       ->capture_default_str();
-  cmd->add_option("-o,--output", args->output, "Output .csv: face,u,v,x,y,z then du_x..dv_z")->required();
+  cmd->add_option("-o,--output", args->output,
+                  "Output: with --at a .csv (face,u,v,x,y,z then du_x..dv_z); with --samples a mesh (.vtp, .obj, ...)")
+      ->required();
   cmd->add_option("-j,--threads", args->threads, "Worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
   cmd->footer("Parameters: quads (0,0) (1,0) (1,1) (0,1); triangles (0,0) (1,0) (0,1); other faces of quad schemes\n"
               "Bfr's QUAD_SUBFACES tiles. Example: subdiv evaluate examples/meshes/cube.obj --at points.csv -o limit.csv");

@@ -85,3 +85,25 @@ TEST_CASE("subdiv evaluate refuses bad rows with their number and leaves no outp
   CHECK(sqrt3.output.find("do not nest inside one parent face") != std::string::npos);
   CHECK(!fs::exists(dir / "out.csv"));
 }
+
+TEST_CASE("subdiv evaluate --samples writes a closed mesh of the limit surface with normals") {
+  const fs::path dir = test::fresh_dir("evaluate-cli-samples");
+  const std::string mesh = test::source_path("examples/meshes/cube.obj");
+  const auto r = test::run_subdiv("evaluate " + mesh + " --samples 4 -o " + (dir / "limit.obj").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  const MeshData out = read_mesh((dir / "limit.obj").string());
+  CHECK(out.face_count() == 6 * 16);
+  CHECK(out.vertex_count() == 8 + 12 * 3 + 6 * 9);
+  const Level L = level_from_mesh(out, "limit.obj");
+  for (Index e = 0; e < L.edge_count(); ++e) CHECK(!L.edge_on_boundary(e));
+  // Neither --at nor --samples, both, or a mesh format for --at: refused, no file.
+  for (const std::string args : {std::string(" -o ") + (dir / "x.obj").string(),
+                                 std::string(" --samples 2 --at p.csv -o ") + (dir / "x.obj").string(),
+                                 std::string(" --samples 2 -o ") + (dir / "x.csv").string()}) {
+    CAPTURE(args);
+    const auto bad = test::run_subdiv("evaluate " + mesh + args);
+    CHECK(bad.exit_code != 0);
+    CHECK(!fs::exists(dir / "x.obj"));
+    CHECK(!fs::exists(dir / "x.csv"));
+  }
+}

@@ -13,6 +13,7 @@
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "support/test_meshes.h"
+#include "unit/limit/limit_meshes.h"
 
 using namespace subdiv;
 
@@ -130,7 +131,7 @@ TEST_CASE("Catmull-Clark and Loop near extraordinary vertices: Bfr approaches ou
     test::Mesh mesh;
   };
   for (const Case& c : {Case{"catmull-clark", subdiv_test::OsdScheme::CatmullClark, test::cube()},
-                        Case{"loop", subdiv_test::OsdScheme::Loop, test::octahedron()}}) {
+                        Case{"loop", subdiv_test::OsdScheme::Loop, limit_test::octahedron()}}) {
     CAPTURE(std::string(c.scheme));
     const auto scheme = load_scheme(c.scheme);
     const test::Mesh m = bumped(c.mesh);

@@ -15,21 +15,13 @@
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
 #include "support/test_meshes.h"
+#include "unit/limit/limit_meshes.h"
 
 using namespace subdiv;
 
 namespace {
 
-// octahedron() spelt out: GCC 12 warns (a false -Wstringop-overflow) when it inlines
-// that one's add_vertex calls into the case list below.
-test::Mesh octahedron() {
-  test::Mesh m;
-  m.vertex_count = 6;
-  m.positions = {1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1};
-  m.corners = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
-  m.offsets = {0, 3, 6, 9, 12, 15, 18, 21, 24};
-  return m;
-}
+using limit_test::octahedron;
 
 test::Mesh bumped(test::Mesh m) {
   for (Index v = 0; v < m.vertex_count; ++v) m.positions[size_t(3 * v + 2)] += 0.1 * std::sin(1.7 * v + 0.3);
