@@ -5,6 +5,7 @@
 // and clear refusals.
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -94,33 +95,37 @@ TEST_CASE("Limit evaluation is affine invariant and continuous across shared edg
       for (int j = 0; j < 3; ++j) expect[size_t(i)] += A[i][j] * p.position[size_t(j)];
     }
     CHECK(distance(expect, q.position) < 1e-13);
-    // Every edge of face 0 is shared: the point at parameter t along it from both faces.
-    const auto corners = base.face(0);
-    const int n = int(corners.size());
-    for (int k = 0; k < n; ++k) {
-      const Index a = corners[size_t(k)], bb = corners[size_t((k + 1) % n)];
-      const Index e = find_edge(base, a, bb);
-      const Index g = base.edge_faces[size_t(2 * e)] == 0 ? base.edge_faces[size_t(2 * e + 1)] : base.edge_faces[size_t(2 * e)];
-      if (g == kNone) continue;
-      const auto gc = base.face(g);
-      int kb = 0;
-      while (gc[size_t(kb)] != bb) ++kb;
-      const double t = 0.375;
-      // (u, v) of the point a + t (b - a) on the edge from corner k, in each face.
-      auto along = [&](int corner, double x) -> std::array<double, 2> {
-        if (c.triangles) {
-          const double cu[3] = {0, 1, 0}, cv[3] = {0, 0, 1};
-          const int c1 = (corner + 1) % 3;
-          return {cu[corner] + x * (cu[c1] - cu[corner]), cv[corner] + x * (cv[c1] - cv[corner])};
-        }
-        const double cu[4] = {0, 1, 1, 0}, cv[4] = {0, 0, 1, 1};
-        const int c1 = (corner + 1) % 4;
+    // Every shared edge of the mesh: the points at t = 0.375 and at an irrational-looking
+    // t along it, from both faces. The two faces reach each point through different
+    // neighbourhoods and steps, so only the limit can make them agree.
+    auto along = [&](int corner, double x) -> std::array<double, 2> {
+      if (c.triangles) {
+        const double cu[3] = {0, 1, 0}, cv[3] = {0, 0, 1};
+        const int c1 = (corner + 1) % 3;
         return {cu[corner] + x * (cu[c1] - cu[corner]), cv[corner] + x * (cv[c1] - cv[corner])};
-      };
-      const auto in0 = along(k, t), ing = along(kb, 1 - t);
-      const LimitSample x = s.evaluate(0, in0[0], in0[1], c.mesh.positions, 3);
-      const LimitSample y = s.evaluate(g, ing[0], ing[1], c.mesh.positions, 3);
-      CHECK(distance(x.position, y.position) < 1e-13);
+      }
+      const double cu[4] = {0, 1, 1, 0}, cv[4] = {0, 0, 1, 1};
+      const int c1 = (corner + 1) % 4;
+      return {cu[corner] + x * (cu[c1] - cu[corner]), cv[corner] + x * (cv[c1] - cv[corner])};
+    };
+    for (Index f = 0; f < base.face_count(); ++f) {
+      const auto corners = base.face(f);
+      const int n = int(corners.size());
+      for (int k = 0; k < n; ++k) {
+        const Index a = corners[size_t(k)], bb = corners[size_t((k + 1) % n)];
+        const Index e = find_edge(base, a, bb);
+        const Index g = base.edge_faces[size_t(2 * e)] == f ? base.edge_faces[size_t(2 * e + 1)] : base.edge_faces[size_t(2 * e)];
+        if (g == kNone || g < f) continue;
+        const auto gc = base.face(g);
+        int kb = 0;
+        while (gc[size_t(kb)] != bb) ++kb;
+        for (double t : {0.375, 0.6180339887}) {
+          const auto in0 = along(k, t), ing = along(kb, 1 - t);
+          const LimitSample x = s.evaluate(f, in0[0], in0[1], c.mesh.positions, 3);
+          const LimitSample y = s.evaluate(g, ing[0], ing[1], c.mesh.positions, 3);
+          CHECK(distance(x.position, y.position) < 1e-13);
+        }
+      }
     }
   }
 }
