@@ -33,8 +33,7 @@ void append_holes(const Level& cut, const Labelling& lab, std::vector<double>& k
 }
 
 std::string not_closed(const Scheme& scheme, int depth) {
-  return fmt::format("internal: scheme '{}' reads beyond {} rings of a face while evaluating its limit", scheme.name,
-                     depth);
+  return fmt::format("scheme '{}' reads beyond {} rings of a face while evaluating its limit", scheme.name, depth);
 }
 
 // The cut renumbered by its labelling, vertices and faces, so that every cut with one
@@ -153,7 +152,7 @@ const LimitNode& LimitNodes::expanded(int id) {
       const Index r = e.original[size_t(v)];
       for (Index x = T.offsets[size_t(r)]; x < T.offsets[size_t(r) + 1]; ++x) {
         const Index column = n->label_of[size_t(T.indices[size_t(x)])];
-        if (column >= n->kept) throw Error(not_closed(scheme_, depth_));
+        if (column >= n->kept) throw NotClosed(not_closed(scheme_, depth_));
         m.columns.push_back(column);
         m.weights.push_back(T.weights[size_t(x)]);
       }
@@ -223,7 +222,7 @@ const CornerRows* LimitNodes::corner(int id, int k, std::string& error) {
         std::vector<double> out(size_t(n.kept), 0.0);
         for (size_t v = 0; v < r.size(); ++v) {
           if (r[v] == 0) continue;
-          if (n.label_of[v] >= n.kept) throw Error(not_closed(scheme_, depth_));
+          if (n.label_of[v] >= n.kept) throw NotClosed(not_closed(scheme_, depth_));
           out[size_t(n.label_of[v])] = r[v];
         }
         return out;

@@ -18,8 +18,15 @@
 #include "framework/limit/corner_limit.h"
 #include "framework/limit/face_domain.h"
 #include "framework/limit/step_matrix.h"
+#include "framework/util/error.h"
 
 namespace subdiv {
+
+// A step or corner read beyond the depth the nodes carry: evaluate again with more rings.
+class NotClosed : public Error {
+public:
+  using Error::Error;
+};
 
 struct LimitNode {
   Level level;                    // the cut, as first met
@@ -57,6 +64,7 @@ public:
   // configuration the masks describe (`error` then says why when the analysis failed).
   const CornerRows* corner(int id, int k, std::string& error);
   const LimitNode& node(int id);
+  int depth() const { return depth_; }
   // The powers of child `which`'s step of node `id`, which must lead back to the node.
   // Skipping m levels then costs one product per binary digit of m, whatever m is (powers
   // by squaring, which unlike an eigen-decomposition needs no diagonalisable matrix:

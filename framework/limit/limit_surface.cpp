@@ -116,38 +116,75 @@ struct LimitSurface::Impl {
   bool triangles = false;
   int radius = 4;
   std::unique_ptr<SchemeLimits> limits;
-  std::unique_ptr<LimitNodes> nodes;
   // Per base face (made on first use): the node of its cut and the base vertices in the
   // node's label order.
   struct Entry {
     int node = -1;
     std::vector<Index> vertices;
   };
-  mutable std::mutex entry_mutex;
-  mutable std::vector<std::unique_ptr<Entry>> entries;
+  // The nodes for one depth and the entries into them. The depth starts at one ring and
+  // grows when a scheme reads further (NotClosed); evaluations under way keep theirs.
+  struct Cache {
+    std::unique_ptr<LimitNodes> nodes;
+    std::mutex entry_mutex;
+    std::vector<std::unique_ptr<Entry>> entries;
+  };
+  mutable std::mutex cache_mutex;
+  mutable std::shared_ptr<Cache> cache;
 
-  const Entry& entry(Index face) const {
+  std::shared_ptr<Cache> make_cache(int depth) const {
+    auto c = std::make_shared<Cache>();
+    c->nodes = std::make_unique<LimitNodes>(*scheme, options.features, radius, depth, triangles, *limits);
+    c->entries.resize(size_t(base.face_count()));
+    return c;
+  }
+  std::shared_ptr<Cache> current() const {
+    std::lock_guard lock(cache_mutex);
+    return cache;
+  }
+  void grow(const std::shared_ptr<Cache>& failed, const NotClosed& why) const {
+    std::lock_guard lock(cache_mutex);
+    if (cache != failed) return;
+    const int depth = failed->nodes->depth() + 1;
+    if (depth > radius - 2) throw Error(fmt::format("internal: {} even with a cut of {} rings", why.what(), radius));
+    cache = make_cache(depth);
+  }
+
+  const Entry& entry(Cache& c, Index face) const {
     {
-      std::lock_guard lock(entry_mutex);
-      if (entries[size_t(face)]) return *entries[size_t(face)];
+      std::lock_guard lock(c.entry_mutex);
+      if (c.entries[size_t(face)]) return *c.entries[size_t(face)];
     }
     FacePoint p;
     p.face = face;
     const Neighbourhood n = cut(base, {}, 0, p, radius);
     auto e = std::make_unique<Entry>();
     std::vector<Index> order;
-    e->node = nodes->intern(n.level, n.point.face, order);
+    e->node = c.nodes->intern(n.level, n.point.face, order);
     for (Index v : order) e->vertices.push_back(n.original[size_t(v)]);
-    std::lock_guard lock(entry_mutex);
-    if (!entries[size_t(face)]) entries[size_t(face)] = std::move(e);
-    return *entries[size_t(face)];
+    std::lock_guard lock(c.entry_mutex);
+    if (!c.entries[size_t(face)]) c.entries[size_t(face)] = std::move(e);
+    return *c.entries[size_t(face)];
   }
 
   // The base vertices an evaluation in the point's face reads, in the order descend() takes
   // their values.
-  std::vector<Index> reads(const FacePoint& p) const {
-    if (p.sub_face < 0) return entry(p.face).vertices;
+  std::vector<Index> reads(Cache& c, const FacePoint& p) const {
+    if (p.sub_face < 0) return entry(c, p.face).vertices;
     return cut(base, {}, 0, p, radius).original;
+  }
+
+  // Runs `f(cache)` until the cache's depth suffices.
+  template <class F>
+  auto with_cache(F&& f) const {
+    for (;;) {
+      const std::shared_ptr<Cache> c = current();
+      try {
+        return f(*c);
+      } catch (const NotClosed& e) {
+        grow(c, e);
+      }
+    }
   }
 
   FacePoint start(Index face, double u, double v) const {
@@ -163,7 +200,7 @@ struct LimitSurface::Impl {
   // Follows the point down the refinement of its neighbourhood until it is a vertex.
   // The position from the values carried down; the derivatives as rows over the first
   // cut's vertices (`du_row`, `dv_row`), pulled back and applied to its values.
-  LimitSample descend(const FacePoint& p0, const std::vector<double>& first_values, int channels,
+  LimitSample descend(Cache& c, const FacePoint& p0, const std::vector<double>& first_values, int channels,
                       std::vector<double>* du_row = nullptr, std::vector<double>* dv_row = nullptr) const {
     std::deque<StepMatrix> owned;
     std::vector<const StepMatrix*> path;
@@ -171,16 +208,16 @@ struct LimitSurface::Impl {
     std::vector<double> values;
     FacePoint p = p0;
     if (p0.sub_face < 0) {
-      id = entry(p0.face).node;
+      id = entry(c, p0.face).node;
       values = first_values;
     } else {
-      start_in_sub_face(p0, first_values, channels, owned, path, id, values, p);
+      start_in_sub_face(*c.nodes, p0, first_values, channels, owned, path, id, values, p);
     }
     std::vector<double> next;
     std::string mask_error;
     // `iteration`: the steps taken, a run of self-similar levels counting as one.
     for (int iteration = 0;; ++iteration) {
-      const int shape = nodes->node(id).level.face_size(nodes->node(id).face);
+      const int shape = c.nodes->node(id).level.face_size(c.nodes->node(id).face);
       if (iteration >= options.max_steps) {
         // The face is 2^-max_steps of the base face: its nearest corner is the point to round-off.
         p.st = {std::round(p.st[0]), std::round(p.st[1])};
@@ -191,7 +228,7 @@ struct LimitSurface::Impl {
       }
       const int corner = corner_at(p, shape, triangles);
       if (corner >= 0)
-        if (const CornerRows* rows = nodes->corner(id, corner, mask_error)) {
+        if (const CornerRows* rows = c.nodes->corner(id, corner, mask_error)) {
           LimitSample out;
           out.steps = iteration;
           out.position = applied(rows->position, values, channels);
@@ -211,7 +248,7 @@ struct LimitSurface::Impl {
           }
           return out;
         }
-      const LimitNode& N = nodes->expanded(id);
+      const LimitNode& N = c.nodes->expanded(id);
       int which = -1;
       const auto q = locate(N.children, p, triangles, &which);
       if (!q) throw Error("internal: no child face holds the point (the split is not a binary primal one)");
@@ -227,7 +264,7 @@ struct LimitSurface::Impl {
         }
         // Worth it from about eight levels: a power is dense, a step sparse.
         if (more + 1 >= 8) {
-          const LimitNode::Powers& powers = nodes->powers(id, which);
+          const LimitNode::Powers& powers = c.nodes->powers(id, which);
           const int levels = more + 1;
           for (int j = 0; j < LimitNodes::kPowers; ++j) {
             if (!((levels >> j) & 1)) continue;
@@ -252,7 +289,7 @@ struct LimitSurface::Impl {
   }
 
   // An n-gon's sub-face is not a face yet: one step with the engine makes it one.
-  void start_in_sub_face(const FacePoint& p0, const std::vector<double>& first_values, int channels,
+  void start_in_sub_face(LimitNodes& nodes, const FacePoint& p0, const std::vector<double>& first_values, int channels,
                          std::deque<StepMatrix>& owned, std::vector<const StepMatrix*>& path, int& id,
                          std::vector<double>& values, FacePoint& p) const {
     Neighbourhood n = cut(base, {}, 0, p0, radius);
@@ -266,7 +303,7 @@ struct LimitSurface::Impl {
     owned.push_back(step_matrix(h.stencils[0], n.original, parent_count));
     path.push_back(&owned.back());
     std::vector<Index> order;
-    id = nodes->intern(n.level, n.point.face, order);
+    id = nodes.intern(n.level, n.point.face, order);
     owned.push_back(renumbering(order, n.level.vertex_count));
     values.resize(order.size() * size_t(channels));
     path.push_back(&owned.back());
@@ -300,15 +337,13 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   double loss = 1;
   for (double x : ring_loss_per_level(std::span<const SchemeRun>(&run, 1))) loss = std::max(loss, x);
   impl_->radius = std::max(4, 2 * int(std::ceil(loss)) + 2);
-  // The evaluation carries the vertices within radius - 2 rings of the face: the rows there
-  // are right (the rim's two rings absorb the cut's artificial boundary), and the nodes
-  // check that each step reads only them.
+  // The evaluation carries the vertices within a few rings of the face (at most radius - 2:
+  // the rim's two rings absorb the cut's artificial boundary); the nodes check that each
+  // step reads only them, and the depth grows from one ring until it does.
   LimitOptions lo;
   lo.features = options.features;
   impl_->limits = std::make_unique<SchemeLimits>(*impl_->scheme, lo);
-  impl_->entries.resize(size_t(impl_->base.face_count()));
-  impl_->nodes = std::make_unique<LimitNodes>(*impl_->scheme, options.features, impl_->radius,
-                                              impl_->radius - 2, impl_->triangles, *impl_->limits);
+  impl_->cache = impl_->make_cache(1);
 }
 
 LimitSurface::~LimitSurface() = default;
@@ -332,24 +367,30 @@ LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<con
     throw Error(fmt::format("limit evaluation needs {} values per vertex for {} vertices, got {}", channels,
                             impl_->base.vertex_count, values.size()));
   const FacePoint p = impl_->start(face, u, v);
-  const std::vector<Index> reads = impl_->reads(p);
-  std::vector<double> first(reads.size() * size_t(channels));
-  for (size_t k = 0; k < reads.size(); ++k)
-    for (int c = 0; c < channels; ++c)
-      first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
-  return impl_->descend(p, first, channels);
+  return impl_->with_cache([&](Impl::Cache& cache) {
+    const std::vector<Index> reads = impl_->reads(cache, p);
+    std::vector<double> first(reads.size() * size_t(channels));
+    for (size_t k = 0; k < reads.size(); ++k)
+      for (int c = 0; c < channels; ++c)
+        first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
+    return impl_->descend(cache, p, first, channels);
+  });
 }
 
 LimitStencil LimitSurface::stencil(Index face, double u, double v) const {
   const FacePoint p = impl_->start(face, u, v);
   // The evaluation is linear in the values: evaluate the unit vectors of the face's
   // neighbourhood (the only vertices it reads) as channels.
-  const std::vector<Index> original = impl_->reads(p);
-  const size_t m = original.size();
-  std::vector<double> unit(m * m, 0.0);
-  for (size_t k = 0; k < m; ++k) unit[k * m + k] = 1.0;
+  std::vector<Index> original;
   std::vector<double> du, dv;
-  const LimitSample s = impl_->descend(p, unit, int(m), &du, &dv);
+  const LimitSample s = impl_->with_cache([&](Impl::Cache& cache) {
+    original = impl_->reads(cache, p);
+    const size_t n = original.size();
+    std::vector<double> unit(n * n, 0.0);
+    for (size_t k = 0; k < n; ++k) unit[k * n + k] = 1.0;
+    return impl_->descend(cache, p, unit, int(n), &du, &dv);
+  });
+  const size_t m = original.size();
   LimitStencil out;
   out.has_derivatives = s.has_derivatives;
   for (size_t k = 0; k < m; ++k) {
