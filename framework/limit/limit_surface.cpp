@@ -201,7 +201,8 @@ struct LimitSurface::Impl {
   // The position from the values carried down; the derivatives as rows over the first
   // cut's vertices (`du_row`, `dv_row`), pulled back and applied to its values.
   LimitSample descend(Cache& c, const FacePoint& p0, const std::vector<double>& first_values, int channels,
-                      std::vector<double>* du_row = nullptr, std::vector<double>* dv_row = nullptr) const {
+                      bool derivatives, std::vector<double>* du_row = nullptr,
+                      std::vector<double>* dv_row = nullptr) const {
     std::deque<StepMatrix> owned;
     std::vector<const StepMatrix*> path;
     int id = -1;
@@ -232,7 +233,7 @@ struct LimitSurface::Impl {
           LimitSample out;
           out.steps = iteration;
           out.position = applied(rows->position, values, channels);
-          if (!rows->ds.empty()) {
+          if (derivatives && !rows->ds.empty()) {
             auto row = [&](int d) {
               std::vector<double> r(rows->ds.size());
               for (size_t i = 0; i < r.size(); ++i)
@@ -362,7 +363,8 @@ std::string LimitSurface::check(Index face, double u, double v) const {
   return {};
 }
 
-LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<const double> values, int channels) const {
+LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<const double> values, int channels,
+                                   bool derivatives) const {
   if (channels < 1 || values.size() < size_t(impl_->base.vertex_count) * size_t(channels))
     throw Error(fmt::format("limit evaluation needs {} values per vertex for {} vertices, got {}", channels,
                             impl_->base.vertex_count, values.size()));
@@ -373,7 +375,7 @@ LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<con
     for (size_t k = 0; k < reads.size(); ++k)
       for (int c = 0; c < channels; ++c)
         first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
-    return impl_->descend(cache, p, first, channels);
+    return impl_->descend(cache, p, first, channels, derivatives);
   });
 }
 
@@ -388,7 +390,7 @@ LimitStencil LimitSurface::stencil(Index face, double u, double v) const {
     const size_t n = original.size();
     std::vector<double> unit(n * n, 0.0);
     for (size_t k = 0; k < n; ++k) unit[k * n + k] = 1.0;
-    return impl_->descend(cache, p, unit, int(n), &du, &dv);
+    return impl_->descend(cache, p, unit, int(n), true, &du, &dv);
   });
   const size_t m = original.size();
   LimitStencil out;

@@ -75,8 +75,10 @@ public:
 
   // The limit of `values` (channels per base vertex) at (face, u, v) in Bfr's
   // parameterisation (face_domain.h). Throws subdiv::Error for a face that does not exist,
-  // a hole, or (u, v) outside the face's domain. Thread-safe.
-  LimitSample evaluate(Index face, double u, double v, std::span<const double> values, int channels) const;
+  // a hole, or (u, v) outside the face's domain. Thread-safe. Without `derivatives` only
+  // the position is computed (about half the work).
+  LimitSample evaluate(Index face, double u, double v, std::span<const double> values, int channels,
+                       bool derivatives = true) const;
 
   // The same point as weights over the base vertices: evaluate() of any values equals
   // these weights applied to them (to round-off).

@@ -121,8 +121,8 @@ struct Builder {
 
 // The point's normal; where the derivatives do not exist (an extraordinary vertex), the
 // limit of the normals of the face's points towards it.
-std::array<double, 3> normal_at(const LimitSurface& s, Index face, double u, double v, std::span<const double> P) {
-  LimitSample p = s.evaluate(face, u, v, P, 3);
+std::array<double, 3> normal_at(const LimitSurface& s, LimitSample p, Index face, double u, double v,
+                                std::span<const double> P) {
   if (!p.has_derivatives) {
     const double cu = s.base().face_size(face) == 3 ? 1.0 / 3 : 0.5;
     const double t = 1e-9;
@@ -159,7 +159,7 @@ Tessellation tessellate(const LimitSurface& surface, std::span<const double> pos
     const Index f = out.uv_face[size_t(i)];
     const double u = out.uv[size_t(2 * i)], v = out.uv[size_t(2 * i + 1)];
     const LimitSample p = surface.evaluate(f, u, v, positions, 3);
-    const auto n = normal_at(surface, f, u, v, positions);
+    const auto n = normal_at(surface, p, f, u, v, positions);
     for (int c = 0; c < 3; ++c) {
       out.positions[size_t(3 * i + c)] = p.position[size_t(c)];
       out.normals[size_t(3 * i + c)] = n[size_t(c)];

@@ -149,7 +149,7 @@ void run(const EvaluateArgs& a) {
   const std::vector<Query> queries = read_points(a.at, surface);
   std::vector<LimitSample> samples(queries.size());
   tbb::parallel_for(size_t(0), queries.size(), [&](size_t i) {
-    samples[i] = surface.evaluate(queries[i].face, queries[i].u, queries[i].v, mesh.positions, 3);
+    samples[i] = surface.evaluate(queries[i].face, queries[i].u, queries[i].v, mesh.positions, 3, a.derivatives > 0);
   });
   write_csv(a.output, queries, samples, a.derivatives);
 }
