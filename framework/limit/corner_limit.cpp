@@ -16,55 +16,6 @@ int position_in(std::span<const Index> list, Index x) {
   return -1;
 }
 
-// The parameter-space coordinates of the level's vertices with `face` at its own frame,
-// the grid continued across edges through faces of the split's shape. A vertex reached by
-// two paths that disagree (an irregular vertex in between) is NaN.
-std::vector<Uv> unfold(const Level& L, Index face, bool triangles) {
-  const int shape = triangles ? 3 : 4;
-  std::vector<Uv> at(size_t(L.vertex_count), Uv{kNan, kNan});
-  std::vector<char> conflict(size_t(L.vertex_count), 0), seen(size_t(L.face_count()), 0);
-  auto put = [&](Index v, Uv x) {
-    Uv& a = at[size_t(v)];
-    if (std::isnan(a[0]) && !conflict[size_t(v)]) a = x;
-    else if (std::fabs(a[0] - x[0]) + std::fabs(a[1] - x[1]) > 1e-9) conflict[size_t(v)] = 1;
-  };
-  if (L.face_size(face) != shape) return at;
-  const Uv quad[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, tri[3] = {{0, 0}, {1, 0}, {0, 1}};
-  for (int k = 0; k < shape; ++k) put(L.face(face)[size_t(k)], triangles ? tri[k] : quad[k]);
-  std::deque<Index> queue{face};
-  seen[size_t(face)] = 1;
-  while (!queue.empty()) {
-    const Index f = queue.front();
-    queue.pop_front();
-    const auto fv = L.face(f);
-    const auto fe = L.face_edge_list(f);
-    for (int k = 0; k < shape; ++k) {
-      const Index e = fe[size_t(k)];
-      if (L.edge_face_count(e) != 2) continue;
-      const Index g = L.edge_faces[size_t(2 * e)] == f ? L.edge_faces[size_t(2 * e + 1)] : L.edge_faces[size_t(2 * e)];
-      if (g == kNone || seen[size_t(g)] || L.face_size(g) != shape) continue;
-      const Index a = fv[size_t(k)], b = fv[size_t((k + 1) % shape)];
-      const Uv A = at[size_t(a)], B = at[size_t(b)];
-      if (std::isnan(A[0]) || std::isnan(B[0])) continue;
-      seen[size_t(g)] = 1;
-      queue.push_back(g);
-      const auto gv = L.face(g);
-      const int ib = position_in(gv, b);
-      if (triangles) {
-        const Uv C = at[size_t(fv[size_t((k + 2) % 3)])];
-        put(gv[size_t((ib + 2) % 3)], {A[0] + B[0] - C[0], A[1] + B[1] - C[1]});
-      } else {
-        const Uv C = at[size_t(fv[size_t((k + 2) % 4)])], D = at[size_t(fv[size_t((k + 3) % 4)])];
-        put(gv[size_t((ib + 2) % 4)], {2 * A[0] - D[0], 2 * A[1] - D[1]});
-        put(gv[size_t((ib + 3) % 4)], {2 * B[0] - C[0], 2 * B[1] - C[1]});
-      }
-    }
-  }
-  for (size_t v = 0; v < at.size(); ++v)
-    if (conflict[v]) at[v] = {kNan, kNan};
-  return at;
-}
-
 // A vertex where the parameterisation is regular: the regular number of faces inside, on a
 // boundary or at a tagged corner, and, on an interior crease, two sharp edges straight
 // across. Elsewhere (extraordinary vertices, darts, bent creases) the derivatives of the
@@ -127,6 +78,55 @@ void derivatives(const LimitMask& mask, const Labelling& lab, const Level& L, co
 }
 
 }  // namespace
+
+// The parameter-space coordinates of the level's vertices with `face` at its own frame,
+// the grid continued across edges through faces of the split's shape. A vertex reached by
+// two paths that disagree (an irregular vertex in between) is NaN.
+std::vector<Uv> unfold(const Level& L, Index face, bool triangles) {
+  const int shape = triangles ? 3 : 4;
+  std::vector<Uv> at(size_t(L.vertex_count), Uv{kNan, kNan});
+  std::vector<char> conflict(size_t(L.vertex_count), 0), seen(size_t(L.face_count()), 0);
+  auto put = [&](Index v, Uv x) {
+    Uv& a = at[size_t(v)];
+    if (std::isnan(a[0]) && !conflict[size_t(v)]) a = x;
+    else if (std::fabs(a[0] - x[0]) + std::fabs(a[1] - x[1]) > 1e-9) conflict[size_t(v)] = 1;
+  };
+  if (L.face_size(face) != shape) return at;
+  const Uv quad[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, tri[3] = {{0, 0}, {1, 0}, {0, 1}};
+  for (int k = 0; k < shape; ++k) put(L.face(face)[size_t(k)], triangles ? tri[k] : quad[k]);
+  std::deque<Index> queue{face};
+  seen[size_t(face)] = 1;
+  while (!queue.empty()) {
+    const Index f = queue.front();
+    queue.pop_front();
+    const auto fv = L.face(f);
+    const auto fe = L.face_edge_list(f);
+    for (int k = 0; k < shape; ++k) {
+      const Index e = fe[size_t(k)];
+      if (L.edge_face_count(e) != 2) continue;
+      const Index g = L.edge_faces[size_t(2 * e)] == f ? L.edge_faces[size_t(2 * e + 1)] : L.edge_faces[size_t(2 * e)];
+      if (g == kNone || seen[size_t(g)] || L.face_size(g) != shape) continue;
+      const Index a = fv[size_t(k)], b = fv[size_t((k + 1) % shape)];
+      const Uv A = at[size_t(a)], B = at[size_t(b)];
+      if (std::isnan(A[0]) || std::isnan(B[0])) continue;
+      seen[size_t(g)] = 1;
+      queue.push_back(g);
+      const auto gv = L.face(g);
+      const int ib = position_in(gv, b);
+      if (triangles) {
+        const Uv C = at[size_t(fv[size_t((k + 2) % 3)])];
+        put(gv[size_t((ib + 2) % 3)], {A[0] + B[0] - C[0], A[1] + B[1] - C[1]});
+      } else {
+        const Uv C = at[size_t(fv[size_t((k + 2) % 4)])], D = at[size_t(fv[size_t((k + 3) % 4)])];
+        put(gv[size_t((ib + 2) % 4)], {2 * A[0] - D[0], 2 * A[1] - D[1]});
+        put(gv[size_t((ib + 3) % 4)], {2 * B[0] - C[0], 2 * B[1] - C[1]});
+      }
+    }
+  }
+  for (size_t v = 0; v < at.size(); ++v)
+    if (conflict[v]) at[v] = {kNan, kNan};
+  return at;
+}
 
 bool corner_rows(SchemeLimits& limits, const Level& L, const FacePoint& p, int corner, int step, bool triangles,
                  CornerRows& rows, std::string& mask_error) {

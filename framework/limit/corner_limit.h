@@ -18,6 +18,12 @@
 
 namespace subdiv {
 
+// The parameter-space coordinates of the level's vertices with `face` at its own frame (a
+// quad's corners (0,0), (1,0), (1,1), (0,1), a triangle's (0,0), (1,0), (0,1)), the grid
+// continued across edges through faces of the same shape; NaN for a vertex reached by two
+// paths that disagree (an irregular vertex in between) or not reached.
+std::vector<Uv> unfold(const Level& level, Index face, bool triangles);
+
 // The limit at a corner as rows over the level's vertices: the position, and d/ds, d/dt in
 // the face's own coordinates (empty where the vertex is not regular).
 struct CornerRows {

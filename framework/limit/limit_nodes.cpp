@@ -1,6 +1,7 @@
 #include "framework/limit/limit_nodes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <Eigen/Dense>
 #include <fmt/format.h>
 
@@ -127,6 +128,10 @@ const LimitNode& LimitNodes::node(int id) {
 
 const LimitNode& LimitNodes::expanded(int id) {
   std::lock_guard lock(mutex_);
+  return expand_locked(id);
+}
+
+LimitNode& LimitNodes::expand_locked(int id) {
   LimitNode* n = nodes_[size_t(id)].get();
   if (n->expanded) return *n;
   RefineOptions ro;
@@ -206,6 +211,96 @@ const LimitNode::Powers& LimitNodes::powers(int id, int which) {
   for (int j = 0; j < kPowers; ++j) p->forward[size_t(j)].backward = &p->backward[size_t(j)];
   slot = std::move(p);
   return *slot;
+}
+
+namespace {
+
+// The uniform cubic B-spline's refinement weight, in one direction, of the parent control
+// point at distance d (in parent spacings) from a child control point.
+double bspline_weight(double d) {
+  d = std::fabs(d);
+  if (d == 0) return 0.75;
+  if (d == 1) return 0.125;
+  if (d == 0.5) return 0.5;
+  return 0;
+}
+
+}  // namespace
+
+bool LimitNodes::grid_locked(LimitNode& n) {
+  if (triangles_ || n.kept != 16 || n.level.face_size(n.face) != 4) return false;
+  const std::vector<Uv> at = unfold(n.level, n.face, false);
+  std::array<bool, 16> seen{};
+  for (Index l = 0; l < 16; ++l) {
+    const Uv x = at[size_t(l)];
+    if (!(x[0] >= -1 && x[0] <= 2 && x[1] >= -1 && x[1] <= 2) || x[0] != std::floor(x[0]) || x[1] != std::floor(x[1]))
+      return false;
+    const int k = int(x[1] + 1) * 4 + int(x[0] + 1);
+    if (seen[size_t(k)]) return false;
+    seen[size_t(k)] = true;
+    n.grid[size_t(k)] = l;
+  }
+  return true;
+}
+
+// One step of node `id` is the B-spline's: each child's grid point is refined from the
+// parent's grid with the tensor-product weights, and nothing else.
+bool LimitNodes::bspline_step_locked(int id) {
+  LimitNode& n = expand_locked(id);
+  if (!grid_locked(n)) return false;
+  std::array<int, 16> cell_of{};
+  cell_of.fill(-1);
+  for (int k = 0; k < 16; ++k) cell_of[size_t(n.grid[size_t(k)])] = k;
+  for (size_t c = 0; c < n.children.size(); ++c) {
+    LimitNode& child = *nodes_[size_t(n.child_node[c])];
+    if (!grid_locked(child)) return false;
+    const auto& C = n.children[c].corners;
+    if (C.size() != 4) return false;
+    const StepMatrix& m = n.child_matrix[c];
+    for (int k = 0; k < 16; ++k) {
+      const double a = k % 4 - 1, b = k / 4 - 1;  // the child grid point, in the child's frame
+      const double X = C[0][0] + a * (C[1][0] - C[0][0]) + b * (C[3][0] - C[0][0]);
+      const double Y = C[0][1] + a * (C[1][1] - C[0][1]) + b * (C[3][1] - C[0][1]);
+      std::array<double, 16> expected{};
+      for (int q = 0; q < 16; ++q) expected[size_t(q)] = bspline_weight(X - (q % 4 - 1)) * bspline_weight(Y - (q / 4 - 1));
+      const Index row = child.grid[size_t(k)];
+      for (Index e = m.offsets[size_t(row)]; e < m.offsets[size_t(row) + 1]; ++e) {
+        const int q = cell_of[size_t(m.columns[size_t(e)])];
+        if (q < 0) return false;
+        expected[size_t(q)] -= m.weights[size_t(e)];
+      }
+      for (double r : expected)
+        if (std::fabs(r) > 1e-13) return false;
+    }
+  }
+  return true;
+}
+
+const std::array<Index, 16>* LimitNodes::bspline(int id) {
+  std::lock_guard lock(mutex_);
+  LimitNode& n = *nodes_[size_t(id)];
+  if (n.bspline == 0) {
+    // Every node reachable from this one must take B-spline steps.
+    std::vector<int> stack{id}, seen{id};
+    bool ok = true;
+    while (ok && !stack.empty()) {
+      const int x = stack.back();
+      stack.pop_back();
+      if (nodes_[size_t(x)]->bspline == 1) continue;
+      if (nodes_[size_t(x)]->bspline == 2 || !bspline_step_locked(x)) {
+        ok = false;
+        break;
+      }
+      for (int c : nodes_[size_t(x)]->child_node)
+        if (std::find(seen.begin(), seen.end(), c) == seen.end()) seen.push_back(c), stack.push_back(c);
+      if (seen.size() > 64) ok = false;  // not a regular region: leave it to the descent
+    }
+    if (ok)
+      for (int x : seen) nodes_[size_t(x)]->bspline = 1;
+    else
+      n.bspline = 2;
+  }
+  return n.bspline == 1 ? &n.grid : nullptr;
 }
 
 const CornerRows* LimitNodes::corner(int id, int k, std::string& error) {

@@ -10,6 +10,7 @@
 // the limit and tangent rows at each corner are computed once, with the engine, and then
 // only applied. A regular region has a handful of nodes, so evaluating a point costs a
 // sparse matrix-vector product per level.
+#include <array>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -45,6 +46,10 @@ struct LimitNode {
   };
   std::vector<std::unique_ptr<Powers>> powers;
   std::vector<char> corner_tried, corner_ready;
+  // Bicubic B-spline check (LimitNodes::bspline): 0 not done, 1 yes, 2 no; the labels of the
+  // 4 x 4 control points, row by row from (-1, -1) in the face's frame.
+  int bspline = 0;
+  std::array<Index, 16> grid{};
   std::vector<CornerRows> corner;  // over labels
   std::vector<std::string> corner_error;
 };
@@ -72,7 +77,18 @@ public:
   const LimitNode::Powers& powers(int id, int which);
   static constexpr int kPowers = 11;  // 2^11 levels: below the smallest double
 
+  // The control points' labels when the limit over the node's face is the uniform bicubic
+  // B-spline patch of its 4 x 4 carried points, else null. Decided from the scheme's own
+  // rows, never its name: every node the face's refinements lead to (the node itself, in
+  // a regular region) must carry a 4 x 4 grid and refine it by the B-spline rules (Lane &
+  // Riesenfeld 1980: 1/8 (1, 6, 1) at the old points, 1/2 (1, 1) between them, in each
+  // direction). The limit is then the patch (de Boor), evaluated in closed form.
+  const std::array<Index, 16>* bspline(int id);
+
 private:
+  LimitNode& expand_locked(int id);
+  bool grid_locked(LimitNode& n);
+  bool bspline_step_locked(int id);
   int intern_locked(const Level& cut, Index face, std::vector<Index>& order);
 
   const Scheme& scheme_;

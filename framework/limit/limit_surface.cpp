@@ -1,5 +1,6 @@
 #include "framework/limit/limit_surface.h"
 
+#include <array>
 #include <cmath>
 #include <deque>
 #include <mutex>
@@ -67,6 +68,35 @@ FacePoint halved(FacePoint p) {
   for (auto& row : p.jacobian)
     for (double& x : row) x *= 0.5;
   return p;
+}
+
+// The uniform cubic B-spline basis on [0, 1] (control points at -1, 0, 1, 2) and its
+// derivative.
+std::array<double, 4> cubic_basis(double s) {
+  const double r = 1 - s;
+  return {r * r * r / 6, (3 * s * s * s - 6 * s * s + 4) / 6, (-3 * s * s * s + 3 * s * s + 3 * s + 1) / 6, s * s * s / 6};
+}
+std::array<double, 4> cubic_basis_derivative(double s) {
+  const double r = 1 - s;
+  return {-r * r / 2, (3 * s * s - 4 * s) / 2, (-3 * s * s + 2 * s + 1) / 2, s * s / 2};
+}
+
+// The bicubic patch at (s, t) as rows over the node's labels.
+CornerRows bspline_rows(const std::array<Index, 16>& grid, const Uv& st, Index labels) {
+  const auto bs = cubic_basis(st[0]), bt = cubic_basis(st[1]);
+  const auto ds = cubic_basis_derivative(st[0]), dt = cubic_basis_derivative(st[1]);
+  CornerRows r;
+  r.position.assign(size_t(labels), 0.0);
+  r.ds.assign(size_t(labels), 0.0);
+  r.dt.assign(size_t(labels), 0.0);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const size_t l = size_t(grid[size_t(j * 4 + i)]);
+      r.position[l] = bs[size_t(i)] * bt[size_t(j)];
+      r.ds[l] = ds[size_t(i)] * bt[size_t(j)];
+      r.dt[l] = bs[size_t(i)] * dt[size_t(j)];
+    }
+  return r;
 }
 
 StepMatrix renumbering(const std::vector<Index>& order, Index source_count) {
@@ -227,28 +257,14 @@ struct LimitSurface::Impl {
           throw Error(fmt::format("no limit mask for the vertex reached after {} steps{}{}", iteration,
                                   mask_error.empty() ? "" : ": ", mask_error));
       }
+      if (const std::array<Index, 16>* grid = c.nodes->bspline(id)) {
+        const CornerRows rows = bspline_rows(*grid, p.st, Index(values.size() / size_t(channels)));
+        return finish(rows, p, values, channels, derivatives, path, first_values, iteration, du_row, dv_row);
+      }
       const int corner = corner_at(p, shape, triangles);
       if (corner >= 0)
-        if (const CornerRows* rows = c.nodes->corner(id, corner, mask_error)) {
-          LimitSample out;
-          out.steps = iteration;
-          out.position = applied(rows->position, values, channels);
-          if (derivatives && !rows->ds.empty()) {
-            auto row = [&](int d) {
-              std::vector<double> r(rows->ds.size());
-              for (size_t i = 0; i < r.size(); ++i)
-                r[i] = p.jacobian[0][size_t(d)] * rows->ds[i] + p.jacobian[1][size_t(d)] * rows->dt[i];
-              return pulled_back(std::move(r), path);
-            };
-            std::vector<double> u = row(0), v = row(1);
-            out.du = applied(u, first_values, channels);
-            out.dv = applied(v, first_values, channels);
-            out.has_derivatives = true;
-            if (du_row) *du_row = std::move(u);
-            if (dv_row) *dv_row = std::move(v);
-          }
-          return out;
-        }
+        if (const CornerRows* rows = c.nodes->corner(id, corner, mask_error))
+          return finish(*rows, p, values, channels, derivatives, path, first_values, iteration, du_row, dv_row);
       const LimitNode& N = c.nodes->expanded(id);
       int which = -1;
       const auto q = locate(N.children, p, triangles, &which);
@@ -287,6 +303,32 @@ struct LimitSurface::Impl {
       id = N.child_node[size_t(which)];
       p = halved(*q);
     }
+  }
+
+  // The sample from rows over the current node's labels: the position from the values
+  // carried down, the derivatives pulled back to the first values.
+  static LimitSample finish(const CornerRows& rows, const FacePoint& p, const std::vector<double>& values, int channels,
+                            bool derivatives, const std::vector<const StepMatrix*>& path,
+                            const std::vector<double>& first_values, int iteration, std::vector<double>* du_row,
+                            std::vector<double>* dv_row) {
+    LimitSample out;
+    out.steps = iteration;
+    out.position = applied(rows.position, values, channels);
+    if (derivatives && !rows.ds.empty()) {
+      auto row = [&](int d) {
+        std::vector<double> r(rows.ds.size());
+        for (size_t i = 0; i < r.size(); ++i)
+          r[i] = p.jacobian[0][size_t(d)] * rows.ds[i] + p.jacobian[1][size_t(d)] * rows.dt[i];
+        return pulled_back(std::move(r), path);
+      };
+      std::vector<double> u = row(0), v = row(1);
+      out.du = applied(u, first_values, channels);
+      out.dv = applied(v, first_values, channels);
+      out.has_derivatives = true;
+      if (du_row) *du_row = std::move(u);
+      if (dv_row) *dv_row = std::move(v);
+    }
+    return out;
   }
 
   // An n-gon's sub-face is not a face yet: one step with the engine makes it one.

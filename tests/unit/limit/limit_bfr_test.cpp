@@ -222,3 +222,28 @@ TEST_CASE("Faces next to a hole: Bfr's exact answers to 1e-12; the hole itself i
 }
 
 #endif
+
+#ifdef SUBDIV_HAVE_OPENSUBDIV
+
+TEST_CASE("Regular regions take the closed-form bicubic patch at once: a torus against Bfr to 1e-12") {
+  test::Mesh m = test::torus(8, 6);
+  for (Index v = 0; v < m.vertex_count; ++v) m.positions[size_t(3 * v + 2)] += 0.05 * std::sin(2.3 * v);
+  const LimitSurface surface(load_scheme("catmull-clark"), m.level());
+  const subdiv_test::BfrLimit bfr(osd_mesh(m), {}, 10, 10);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double worst = 0;
+  int most_steps = 0;
+  for (int i = 0; i < 40; ++i) {
+    const Index f = Index(rng() % 48u);
+    const double u = unit(rng), v = unit(rng);
+    const LimitSample ours = surface.evaluate(f, u, v, m.positions, 3);
+    const auto ref = bfr.evaluate(f, u, v);
+    worst = std::max({worst, distance(ours.position, ref.p), distance(ours.du, ref.du), distance(ours.dv, ref.dv)});
+    most_steps = std::max(most_steps, ours.steps);
+  }
+  CHECK(worst < 1e-12);
+  CHECK(most_steps == 0);  // every face of a regular torus is a bicubic B-spline patch
+}
+
+#endif
