@@ -15,11 +15,13 @@
 // analysis/surface/limit_evaluation.h) scaled to the parameterisation. Near an extraordinary
 // vertex the point approaches (or wherever a step leads back to the same neighbourhood), the
 // levels are skipped together with powers of the local subdivision matrix (limit_nodes.h),
-// so a point at u = 1e-300 costs about what one at u = 0.3 does. Semi-sharp creases are refined until they are smooth or
-// sharp, like everything else.
+// so a point at u = 1e-300 costs about what one at u = 0.3 does. Where every step ahead is
+// the bicubic B-spline's (checked on the scheme's rows, limit_nodes.h), the face is that
+// patch and is evaluated in closed form at once. Semi-sharp creases are refined until they
+// are smooth or sharp, like everything else.
 //
 // Supported: stationary linear schemes whose split is the binary quad or triangle split
-// (Catmull-Clark, Loop, the butterflies, Kobbelt's, composite split + averaging schemes).
+// (Catmull-Clark, Loop, the butterflies, bilinear, composite split + averaging schemes).
 // Refused with the reason: non-linear rules (no limit stencil exists), level-dependent
 // weights (no fixed local subdivision matrix), and for now the √3, dual and mid-edge splits
 // (their children do not nest inside one parent face).
