@@ -97,7 +97,7 @@ TEST_CASE("subdiv evaluate --samples writes a closed mesh of the limit surface w
   const Level L = level_from_mesh(out, "limit.obj");
   for (Index e = 0; e < L.edge_count(); ++e) CHECK(!L.edge_on_boundary(e));
   // Neither --at nor --samples, both, or a mesh format for --at: refused, no file.
-  for (const std::string args : {std::string(" -o ") + (dir / "x.obj").string(),
+  for (const std::string& args : {std::string(" -o ") + (dir / "x.obj").string(),
                                  std::string(" --samples 2 --at p.csv -o ") + (dir / "x.obj").string(),
                                  std::string(" --samples 2 -o ") + (dir / "x.csv").string()}) {
     CAPTURE(args);
