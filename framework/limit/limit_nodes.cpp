@@ -4,6 +4,7 @@
 #include <cmath>
 #include <Eigen/Dense>
 #include <fmt/format.h>
+#include <tbb/task_arena.h>
 
 #include "framework/scheme/scheme.h"
 
@@ -90,9 +91,14 @@ LimitNodes::LimitNodes(const Scheme& scheme, const FeatureOptions& features, int
                        SchemeLimits& limits)
     : scheme_(scheme), features_(features), radius_(radius), depth_(depth), triangles_(triangles), limits_(limits) {}
 
+// Every method that runs the engine (whose loops are parallel) under the lock isolates
+// itself: a thread waiting inside those loops must not pick up another evaluation of the
+// caller's parallel loop (tessellate), which would lock the same mutex again.
 int LimitNodes::intern(const Level& cut, Index face, std::vector<Index>& order) {
-  std::lock_guard lock(mutex_);
-  return intern_locked(cut, face, order);
+  return tbb::this_task_arena::isolate([&] {
+    std::lock_guard lock(mutex_);
+    return intern_locked(cut, face, order);
+  });
 }
 
 int LimitNodes::intern_locked(const Level& cut, Index face, std::vector<Index>& order) {
@@ -127,8 +133,10 @@ const LimitNode& LimitNodes::node(int id) {
 }
 
 const LimitNode& LimitNodes::expanded(int id) {
-  std::lock_guard lock(mutex_);
-  return expand_locked(id);
+  return *tbb::this_task_arena::isolate([&]() -> const LimitNode* {
+    std::lock_guard lock(mutex_);
+    return &expand_locked(id);
+  });
 }
 
 LimitNode& LimitNodes::expand_locked(int id) {
@@ -277,6 +285,10 @@ bool LimitNodes::bspline_step_locked(int id) {
 }
 
 const std::array<Index, 16>* LimitNodes::bspline(int id) {
+  return tbb::this_task_arena::isolate([&] { return bspline_isolated(id); });
+}
+
+const std::array<Index, 16>* LimitNodes::bspline_isolated(int id) {
   std::lock_guard lock(mutex_);
   LimitNode& n = *nodes_[size_t(id)];
   if (n.bspline == 0) {
@@ -304,6 +316,10 @@ const std::array<Index, 16>* LimitNodes::bspline(int id) {
 }
 
 const CornerRows* LimitNodes::corner(int id, int k, std::string& error) {
+  return tbb::this_task_arena::isolate([&] { return corner_isolated(id, k, error); });
+}
+
+const CornerRows* LimitNodes::corner_isolated(int id, int k, std::string& error) {
   std::lock_guard lock(mutex_);
   LimitNode& n = *nodes_[size_t(id)];
   if (!n.corner_tried[size_t(k)]) {

@@ -87,6 +87,8 @@ public:
 
 private:
   LimitNode& expand_locked(int id);
+  const std::array<Index, 16>* bspline_isolated(int id);
+  const CornerRows* corner_isolated(int id, int k, std::string& error);
   bool grid_locked(LimitNode& n);
   bool bspline_step_locked(int id);
   int intern_locked(const Level& cut, Index face, std::vector<Index>& order);

@@ -5,6 +5,7 @@
 #include <deque>
 #include <mutex>
 #include <fmt/format.h>
+#include <tbb/task_arena.h>
 
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/analysis/surface/local_patch.h"
@@ -179,6 +180,12 @@ struct LimitSurface::Impl {
   // Runs `f(cache)` until the cache's depth suffices.
   template <class F>
   auto with_cache(F&& f) const {
+    // Isolated: the engine's parallel loops inside must not hand this thread another
+    // evaluation of a caller's parallel loop while it holds a node's lock or is half-way.
+    return tbb::this_task_arena::isolate([&] { return with_cache_isolated(f); });
+  }
+  template <class F>
+  auto with_cache_isolated(F& f) const {
     for (;;) {
       const std::shared_ptr<Cache> c = current();
       try {
@@ -339,6 +346,9 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
     : impl_(std::make_unique<Impl>()) {
   if (!scheme) throw Error("no scheme given for the limit surface");
   if (const std::string why = limit_surface_unsupported(*scheme); !why.empty()) throw Error(why);
+  if (!base.manifold())
+    throw Error("the mesh is non-manifold (an edge with more than two faces, or a vertex where separate fans of "
+                "faces meet): limit evaluation at (face, u, v) needs a manifold mesh; split it into manifold parts");
   impl_->scheme = std::move(scheme);
   impl_->base = std::move(base);
   impl_->options = options;
@@ -383,6 +393,17 @@ LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<con
     throw Error(fmt::format("limit evaluation needs {} values per vertex for {} vertices, got {}", channels,
                             impl_->base.vertex_count, values.size()));
   const FacePoint p = impl_->start(face, u, v);
+  try {
+    return evaluate_at(p, values, channels, derivatives);
+  } catch (const NotClosed&) {
+    throw;
+  } catch (const Error& e) {
+    throw Error(fmt::format("face {} at (u, v) = ({}, {}): {}", face, u, v, e.what()));
+  }
+}
+
+LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> values, int channels,
+                                      bool derivatives) const {
   return impl_->with_cache([&](Impl::Cache& cache) {
     const std::vector<Index> reads = impl_->reads(cache, p);
     std::vector<double> first(reads.size() * size_t(channels));

@@ -37,6 +37,7 @@
 namespace subdiv {
 
 struct Scheme;
+struct FacePoint;
 
 struct LimitSurfaceOptions {
   FeatureOptions features;  // boundary interpolation and crease method, as in OpenSubdiv
@@ -90,6 +91,8 @@ public:
   std::string check(Index face, double u, double v) const;
 
 private:
+  LimitSample evaluate_at(const FacePoint& p, std::span<const double> values, int channels,
+                          bool derivatives) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -124,9 +124,17 @@ struct Builder {
 std::array<double, 3> normal_at(const LimitSurface& s, LimitSample p, Index face, double u, double v,
                                 std::span<const double> P) {
   if (!p.has_derivatives) {
-    const double cu = s.base().face_size(face) == 3 ? 1.0 / 3 : 0.5;
+    // Towards the middle of the point's face, or of its sub-face's tile (face_domain.h).
+    const int n = s.base().face_size(face);
+    double cu = n == 3 && s.triangles() ? 1.0 / 3 : 0.5, cv = cu;
+    if (!s.triangles() && n != 4) {
+      double col = std::floor(u), row = std::floor(v);
+      if (u - col > 0.75) col += 1;
+      if (v - row > 0.75) row += 1;
+      cu = col + 0.25, cv = row + 0.25;
+    }
     const double t = 1e-9;
-    p = s.evaluate(face, u + t * (cu - u), v + t * (cu - v), P, 3);
+    p = s.evaluate(face, u + t * (cu - u), v + t * (cv - v), P, 3);
   }
   std::array<double, 3> n{p.du[1] * p.dv[2] - p.du[2] * p.dv[1], p.du[2] * p.dv[0] - p.du[0] * p.dv[2],
                           p.du[0] * p.dv[1] - p.du[1] * p.dv[0]};
