@@ -50,6 +50,10 @@ struct LimitNode {
   // 4 x 4 control points, row by row from (-1, -1) in the face's frame.
   int bspline = 0;
   std::array<Index, 16> grid{};
+  // Quartic triangle patch (triangle_patch.h): 0 not tried, 1 yes, 2 no; the limit rows
+  // at the 15 points (i/4, j/4), i + j <= 4, of the face.
+  int quartic = 0;
+  std::vector<std::vector<double>> lattice_rows;
   std::vector<CornerRows> corner;  // over labels
   std::vector<std::string> corner_error;
 };
@@ -84,6 +88,11 @@ public:
   // Riesenfeld 1980: 1/8 (1, 6, 1) at the old points, 1/2 (1, 1) between them, in each
   // direction). The limit is then the patch (de Boor), evaluated in closed form.
   const std::array<Index, 16>* bspline(int id);
+
+  // The quartic triangle patch of node `id`, once decided: null when not tried yet (then
+  // `try_quartic` says so, and the caller samples the rows and calls set_quartic) or not one.
+  const std::vector<std::vector<double>>* quartic(int id, bool& untried);
+  void set_quartic(int id, std::vector<std::vector<double>> rows);  // empty: not one
 
 private:
   LimitNode& expand_locked(int id);

@@ -15,6 +15,7 @@
 #include "framework/limit/bspline_patch.h"
 #include "framework/limit/corner_limit.h"
 #include "framework/limit/limit_nodes.h"
+#include "framework/limit/triangle_patch.h"
 #include "framework/limit/face_domain.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -223,6 +224,14 @@ struct LimitSurface::Impl {
     } else {
       start_in_sub_face(*c.nodes, p0, first_values, channels, owned, path, id, values, p);
     }
+    return walk(c, id, p, std::move(values), channels, derivatives, path, first_values, du_row, dv_row, true);
+  }
+
+  // The descent from node `id` with the point p and the node's values; `closed_forms`:
+  // regular nodes' patches may end it (off while those patches are being sampled).
+  LimitSample walk(Cache& c, int id, FacePoint p, std::vector<double> values, int channels, bool derivatives,
+                   std::vector<const StepMatrix*>& path, const std::vector<double>& first_values,
+                   std::vector<double>* du_row, std::vector<double>* dv_row, bool closed_forms) const {
     std::vector<double> next;
     std::string mask_error;
     // `iteration`: the steps taken, a run of self-similar levels counting as one.
@@ -236,10 +245,15 @@ struct LimitSurface::Impl {
           throw Error(fmt::format("no limit mask for the vertex reached after {} steps{}{}", iteration,
                                   mask_error.empty() ? "" : ": ", mask_error));
       }
-      if (const std::array<Index, 16>* grid = c.nodes->bspline(id)) {
-        const CornerRows rows = bspline_rows(*grid, p.st, Index(values.size() / size_t(channels)));
-        return finish(rows, p, values, channels, derivatives, path, first_values, iteration, du_row, dv_row);
-      }
+      if (closed_forms && !triangles)
+        if (const std::array<Index, 16>* grid = c.nodes->bspline(id)) {
+          const CornerRows rows = bspline_rows(*grid, p.st, Index(values.size() / size_t(channels)));
+          return finish(rows, p, values, channels, derivatives, path, first_values, iteration, du_row, dv_row);
+        }
+      if (closed_forms && triangles)
+        if (const auto* lattice = quartic(c, id))
+          return finish(quartic_rows(*lattice, p.st), p, values, channels, derivatives, path, first_values, iteration,
+                        du_row, dv_row);
       const int corner = corner_at(p, shape, triangles);
       if (corner >= 0)
         if (const CornerRows* rows = c.nodes->corner(id, corner, mask_error))
@@ -282,6 +296,59 @@ struct LimitSurface::Impl {
       id = N.child_node[size_t(which)];
       p = halved(*q);
     }
+  }
+
+  // The quartic patch of a triangle node, decided on first use: the node must lead only to
+  // itself, and the rows sampled at the 15 lattice points (exact: each lattice point is a
+  // vertex after two steps) must satisfy the node's refinement equations as a quartic —
+  // the rows at a child's lattice points, through the child's matrix, are the quartic at
+  // those points in the parent. The limit is the unique bounded solution of those
+  // equations, so the quartic is the limit.
+  const std::vector<std::vector<double>>* quartic(Cache& c, int id) const {
+    bool untried = false;
+    if (const auto* rows = c.nodes->quartic(id, untried)) return rows;
+    if (!untried) return nullptr;
+    c.nodes->set_quartic(id, fit_quartic(c, id));
+    return c.nodes->quartic(id, untried);
+  }
+
+  std::vector<std::vector<double>> fit_quartic(Cache& c, int id) const {
+    const LimitNode& N = c.nodes->expanded(id);
+    for (int child : N.child_node)
+      if (child != id) return {};
+    const size_t K = size_t(N.kept);
+    std::vector<double> unit(K * K, 0.0);
+    for (size_t k = 0; k < K; ++k) unit[k * K + k] = 1.0;
+    std::vector<std::vector<double>> rows;
+    try {
+      for (int q = 0; q < kQuarticLattice; ++q) {
+        FacePoint p;
+        p.st = quartic_lattice_point(q);
+        std::vector<const StepMatrix*> path;
+        rows.push_back(walk(c, id, p, unit, int(K), false, path, unit, nullptr, nullptr, false).position);
+      }
+    } catch (const NotClosed&) {
+      throw;
+    } catch (const Error&) {
+      return {};
+    }
+    for (size_t i = 0; i < N.children.size(); ++i) {
+      const auto& C = N.children[i].corners;
+      const StepMatrix& m = N.child_matrix[i];
+      for (int q = 0; q < kQuarticLattice; ++q) {
+        const Uv y = quartic_lattice_point(q);
+        const Uv x{C[0][0] + y[0] * (C[1][0] - C[0][0]) + y[1] * (C[2][0] - C[0][0]),
+                   C[0][1] + y[0] * (C[1][1] - C[0][1]) + y[1] * (C[2][1] - C[0][1])};
+        std::vector<double> rhs(K, 0.0);
+        for (Index r = 0; r < m.rows(); ++r)
+          for (Index e = m.offsets[size_t(r)]; e < m.offsets[size_t(r) + 1]; ++e)
+            rhs[size_t(m.columns[size_t(e)])] += rows[size_t(q)][size_t(r)] * m.weights[size_t(e)];
+        const std::vector<double> lhs = quartic_rows(rows, x).position;
+        for (size_t l = 0; l < K; ++l)
+          if (std::fabs(lhs[l] - rhs[l]) > 1e-12) return {};
+      }
+    }
+    return rows;
   }
 
   // The sample from rows over the current node's labels: the position from the values

@@ -247,3 +247,33 @@ TEST_CASE("Regular regions take the closed-form bicubic patch at once: a torus a
 }
 
 #endif
+
+#ifdef SUBDIV_HAVE_OPENSUBDIV
+
+TEST_CASE("Loop's regular triangles are found to be quartic patches: a triangulated torus against Bfr to 1e-12") {
+  test::Mesh m = test::torus(8, 6, true);
+  for (Index v = 0; v < m.vertex_count; ++v) m.positions[size_t(3 * v + 2)] += 0.05 * std::sin(2.3 * v);
+  const LimitSurface surface(load_scheme("loop"), m.level());
+  subdiv_test::OsdOptions oo;
+  oo.scheme = subdiv_test::OsdScheme::Loop;
+  const subdiv_test::BfrLimit bfr(osd_mesh(m), oo, 10, 10);
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double worst = 0;
+  int most_steps = 0;
+  for (int i = 0; i < 40; ++i) {
+    const Index f = Index(rng() % 96u);
+    double u = unit(rng), v = unit(rng);
+    if (u + v > 1) u = 1 - u, v = 1 - v;
+    const LimitSample ours = surface.evaluate(f, u, v, m.positions, 3);
+    const auto ref = bfr.evaluate(f, u, v);
+    worst = std::max({worst, distance(ours.position, ref.p), distance(ours.du, ref.du), distance(ours.dv, ref.dv)});
+    most_steps = std::max(most_steps, ours.steps);
+  }
+  CHECK(worst < 1e-12);
+  // A base face's own neighbourhood node leads to the regular node after one step, whose
+  // patch is the quartic: at most one step per point.
+  CHECK(most_steps <= 1);
+}
+
+#endif
