@@ -17,7 +17,8 @@
 // levels are skipped together with powers of the local subdivision matrix (limit_nodes.h),
 // so a point at u = 1e-300 costs about what one at u = 0.3 does. Where every step ahead is
 // the bicubic B-spline's (checked on the scheme's rows, limit_nodes.h), the face is that
-// patch and is evaluated in closed form at once. Semi-sharp creases are refined until they
+// patch and is evaluated in closed form at once; likewise a triangle whose exact rows are a
+// quartic satisfying its refinement equations (triangle_patch.h: Loop's regular triangles). Semi-sharp creases are refined until they
 // are smooth or sharp, like everything else.
 //
 // Supported: stationary linear schemes whose split is the binary quad or triangle split

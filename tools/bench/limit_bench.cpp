@@ -1,5 +1,6 @@
 // subdiv-limit-bench: limit evaluation at random (face, u, v), SubdivKit's exact evaluation
-// (framework/limit) against OpenSubdiv's Bfr with its default approximation levels, one
+// (framework/limit) against OpenSubdiv's Bfr with its default approximation levels (Catmull-
+// Clark and Loop), one
 // thread, warm (every face evaluated once first), same run. A program, not a test; the
 // numbers are in docs/limit.md.
 //
@@ -26,14 +27,16 @@ double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::d
 
 struct Mesh {
   const char* name = "";
+  bool loop = false;  // Loop on triangles, else Catmull-Clark
   int vertices = 0;
   std::vector<int> sizes, corners;
   std::vector<double> xyz;
 };
 
-Mesh torus(int nu, int nv) {
+Mesh torus(int nu, int nv, bool triangles = false) {
   Mesh m;
-  m.name = "torus (regular)";
+  m.name = triangles ? "Loop, triangulated torus (regular)" : "Catmull-Clark, torus (regular)";
+  m.loop = triangles;
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
       const double a = 2 * M_PI * i / nu, b = 2 * M_PI * j / nv;
@@ -43,15 +46,20 @@ Mesh torus(int nu, int nv) {
   auto id = [&](int i, int j) { return (j % nv) * nu + (i % nu); };
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
-      m.sizes.push_back(4);
-      m.corners.insert(m.corners.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+      if (triangles) {
+        m.sizes.insert(m.sizes.end(), {3, 3});
+        m.corners.insert(m.corners.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      } else {
+        m.sizes.push_back(4);
+        m.corners.insert(m.corners.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+      }
     }
   return m;
 }
 
 Mesh cube() {
   Mesh m;
-  m.name = "cube (8 valence-3 vertices)";
+  m.name = "Catmull-Clark, cube (8 valence-3 vertices)";
   for (int i = 0; i < 8; ++i) m.xyz.insert(m.xyz.end(), {double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
   m.vertices = 8;
   m.sizes.assign(6, 4);
@@ -67,8 +75,8 @@ void run(const Mesh& m, int points) {
   const std::vector<subdiv::Index> corners(m.corners.begin(), m.corners.end());
 
   const auto t0 = Clock::now();
-  const subdiv::LimitSurface ours(subdiv::load_scheme("catmull-clark"), subdiv::build_level(m.vertices, offsets, corners));
-  for (int f = 0; f < faces; ++f) ours.evaluate(f, 0.3, 0.6, m.xyz, 3);
+  const subdiv::LimitSurface ours(subdiv::load_scheme(m.loop ? "loop" : "catmull-clark"), subdiv::build_level(m.vertices, offsets, corners));
+  for (int f = 0; f < faces; ++f) ours.evaluate(f, 0.3, 0.2, m.xyz, 3);
   const auto t1 = Clock::now();
   Far::TopologyDescriptor desc;
   desc.numVertices = m.vertices;
@@ -78,7 +86,7 @@ void run(const Mesh& m, int points) {
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   Sdc::Options sdc;
   sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
-  Far::TopologyRefiner* refiner = Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc));
+  Far::TopologyRefiner* refiner = Factory::Create(desc, Factory::Options(m.loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, sdc));
   Bfr::RefinerSurfaceFactory<> factory(*refiner);
   Bfr::Surface<double> surface;
   Bfr::Surface<double>::PointDescriptor d(3);
@@ -91,13 +99,17 @@ void run(const Mesh& m, int points) {
     surface.Evaluate(uv, patch.data(), d, p, du, dv);
   };
   double p[3], du[3], dv[3], sum = 0;
-  for (int f = 0; f < faces; ++f) bfr(f, 0.3, 0.6, p, du, dv);
+  for (int f = 0; f < faces; ++f) bfr(f, 0.3, 0.2, p, du, dv);
   const auto t2 = Clock::now();
 
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> unit(0, 1);
   std::vector<std::array<double, 3>> at;
-  for (int i = 0; i < points; ++i) at.push_back({double(rng() % unsigned(faces)), unit(rng), unit(rng)});
+  for (int i = 0; i < points; ++i) {
+    double u = unit(rng), v = unit(rng);
+    if (m.loop && u + v > 1) u = 1 - u, v = 1 - v;
+    at.push_back({double(rng() % unsigned(faces)), u, v});
+  }
   const auto t3 = Clock::now();
   for (const auto& q : at) {
     const subdiv::LimitSample s = ours.evaluate(subdiv::Index(q[0]), q[1], q[2], m.xyz, 3);
@@ -121,5 +133,6 @@ void run(const Mesh& m, int points) {
 int main(int argc, char** argv) {
   const int points = argc > 1 ? std::atoi(argv[1]) : 20000;
   run(torus(32, 24), points);
+  run(torus(32, 24, true), points);
   run(cube(), points);
 }
