@@ -3,7 +3,7 @@
 # and tests/architecture checks every #include "framework/..." against it, so a file in a
 # lower layer cannot include a higher one. docs/architecture.md draws the same table.
 set(SUBDIV_LAYERS util topology features stencil refine rules scheme engine io primvar analysis curve
-    interpolation plugin pipeline)
+    interpolation limit plugin pipeline)
 set(SUBDIV_LAYER_USES_util "")
 set(SUBDIV_LAYER_USES_topology util)
 set(SUBDIV_LAYER_USES_features util topology)
@@ -17,11 +17,12 @@ set(SUBDIV_LAYER_USES_primvar util topology features refine scheme engine io)
 set(SUBDIV_LAYER_USES_analysis util topology features stencil refine rules scheme engine io)
 set(SUBDIV_LAYER_USES_curve util topology stencil rules scheme io analysis)
 set(SUBDIV_LAYER_USES_interpolation util topology features stencil refine rules scheme engine analysis curve)
+set(SUBDIV_LAYER_USES_limit util topology features stencil refine rules scheme engine analysis)
 set(SUBDIV_LAYER_USES_plugin util topology features refine rules scheme engine)
 # The product path once, for every front-end (command line, Python, ParaView): requests in,
 # levels with their data and descriptions out.
 set(SUBDIV_LAYER_USES_pipeline util topology features stencil refine rules scheme engine io primvar analysis curve
-    interpolation plugin)
+    interpolation limit plugin)
 # Rooms inside a layer, bottom first: a room may include the rooms before it, not after.
 # Surface analysis uses curve analysis (boundaries follow curve schemes), never the reverse.
 set(SUBDIV_ROOMS_analysis curve surface)

@@ -28,6 +28,8 @@ set(SUBDIV_PUBLIC_HEADERS
   analysis/surface/surface_analysis.h analysis/surface/limit_evaluation.h
   interpolation/limit_evaluator.h interpolation/limit_selection.h interpolation/analysed_limit.h
   interpolation/progressive.h
+  # The limit surface at any (face, u, v): evaluation, limit stencils, tessellation.
+  limit/limit_surface.h limit/tessellation.h limit/face_domain.h
   # The plugin ABI and what plugins build on (new splitters, C++ rules, mesh lines).
   plugin/plugin_api.h plugin/plugin_registry.h plugin/plugin_loader.h
   plugin/mesh_lines.h plugin/polyline_refine.h

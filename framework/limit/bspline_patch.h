@@ -1,0 +1,16 @@
+#pragma once
+// The uniform bicubic B-spline patch (de Boor; Stam 1998 section 3 for Catmull-Clark's
+// regular faces) of a 4 x 4 grid of control points, as rows over a node's labels: the
+// closed form limit_nodes.h finds for regular regions.
+#include <array>
+
+#include "framework/limit/corner_limit.h"
+
+namespace subdiv {
+
+// The patch at (s, t) in [0, 1]^2, control points at -1, 0, 1, 2 in each direction; `grid`
+// holds their labels row by row from (-1, -1). Position, d/ds and d/dt rows of `labels`
+// entries.
+CornerRows bspline_rows(const std::array<Index, 16>& grid, const Uv& st, Index labels);
+
+}  // namespace subdiv

@@ -1,0 +1,39 @@
+#pragma once
+// The limit at a vertex of some level, and the derivatives of the surface there along a
+// face's parameter directions.
+//
+// The position is the vertex's limit mask (the left eigenvector of 1 of its local
+// subdivision matrix; analysis/surface/limit_evaluation.h). The tangent masks towards the
+// vertex's ring neighbours (left eigenvectors of the subdominant eigenvalue) give
+// derivatives only up to a factor each; the factors follow from linear precision: where the
+// parameterisation is regular, control points placed at their own (s, t) coordinates
+// (the face's grid unfolded across its neighbours) have the plane (s, t) as their limit, so
+// a tangent mask d gives d . P = (d . S) dP/ds + (d . T) dP/dt, two equations per mask for
+// the two unknown derivatives (Stam 1998, section 4, for Catmull-Clark's regular patches).
+#include <span>
+
+#include "framework/analysis/surface/limit_evaluation.h"
+#include "framework/limit/face_domain.h"
+#include "framework/limit/limit_surface.h"
+
+namespace subdiv {
+
+// The parameter-space coordinates of the level's vertices with `face` at its own frame (a
+// quad's corners (0,0), (1,0), (1,1), (0,1), a triangle's (0,0), (1,0), (0,1)), the grid
+// continued across edges through faces of the same shape; NaN for a vertex reached by two
+// paths that disagree (an irregular vertex in between) or not reached.
+std::vector<Uv> unfold(const Level& level, Index face, bool triangles);
+
+// The limit at a corner as rows over the level's vertices: the position, and d/ds, d/dt in
+// the face's own coordinates (empty where the vertex is not regular).
+struct CornerRows {
+  std::vector<double> position, ds, dt;  // one weight per vertex of the level
+};
+
+// The rows at the face's corner `corner`. False when the vertex's neighbourhood is not yet one the masks
+// describe (a semi-sharp feature, another irregular vertex nearby): refine and try again.
+// `mask_error` receives the analysis's reason when it has no mask for the configuration.
+bool corner_rows(SchemeLimits& limits, const Level& level, const FacePoint& point, int corner, int step,
+                 bool triangles, CornerRows& rows, std::string& mask_error);
+
+}  // namespace subdiv

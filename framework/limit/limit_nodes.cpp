@@ -1,0 +1,367 @@
+#include "framework/limit/limit_nodes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <Eigen/Dense>
+#include <fmt/format.h>
+#include <tbb/task_arena.h>
+
+#include "framework/scheme/scheme.h"
+
+#include "framework/analysis/surface/local_patch.h"
+#include "framework/engine/refiner.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+// Hole faces are not in the labelling's signature: each as its corners' labels from the
+// smallest, in sorted order.
+void append_holes(const Level& cut, const Labelling& lab, std::vector<double>& key) {
+  if (cut.face_hole.empty()) return;
+  std::vector<std::vector<Index>> holes;
+  for (Index f = 0; f < cut.face_count(); ++f) {
+    if (!cut.is_hole(f)) continue;
+    std::vector<Index> labels;
+    for (Index v : cut.face(f)) labels.push_back(lab.label_of[size_t(v)]);
+    std::rotate(labels.begin(), std::min_element(labels.begin(), labels.end()), labels.end());
+    holes.push_back(std::move(labels));
+  }
+  std::sort(holes.begin(), holes.end());
+  for (const auto& h : holes) {
+    key.push_back(-2);
+    for (Index l : h) key.push_back(double(l));
+  }
+}
+
+std::string not_closed(const Scheme& scheme, int depth) {
+  return fmt::format("scheme '{}' reads beyond {} rings of a face while evaluating its limit", scheme.name, depth);
+}
+
+// The cut renumbered by its labelling, vertices and faces, so that every cut with one
+// signature is the same level, and the engine's weights for it the same bits whichever
+// cut was met first (the results do not depend on the order or thread of evaluations).
+Level canonical_level(const Level& cut, const Labelling& lab, Index face, Index& canonical_face) {
+  std::vector<std::vector<Index>> faces;
+  std::vector<Index> original;
+  for (Index f = 0; f < cut.face_count(); ++f) {
+    std::vector<Index> labels;
+    for (Index v : cut.face(f)) labels.push_back(lab.label_of[size_t(v)]);
+    const auto first = std::min_element(labels.begin(), labels.end()) - labels.begin();
+    std::rotate(labels.begin(), labels.begin() + first, labels.end());
+    faces.push_back(std::move(labels));
+  }
+  std::vector<Index> order(faces.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = Index(i);
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) { return faces[size_t(a)] < faces[size_t(b)]; });
+  std::vector<Index> offsets{0}, corners;
+  for (Index f : order) {
+    // The centre face keeps its corner 0 first: the point's coordinates are relative to it.
+    if (f == face) {
+      canonical_face = Index(offsets.size()) - 1;
+      for (Index v : cut.face(f)) corners.push_back(lab.label_of[size_t(v)]);
+    } else {
+      corners.insert(corners.end(), faces[size_t(f)].begin(), faces[size_t(f)].end());
+    }
+    offsets.push_back(Index(corners.size()));
+  }
+  Level L = build_level(Index(lab.vertices.size()), offsets, corners);
+  if (!cut.edge_sharpness.empty()) {
+    L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
+    for (Index e = 0; e < L.edge_count(); ++e) {
+      const Index a = lab.vertices[size_t(L.edge_vertices[size_t(2 * e)])];
+      const Index b = lab.vertices[size_t(L.edge_vertices[size_t(2 * e + 1)])];
+      L.edge_sharpness[size_t(e)] = cut.edge_sharp(find_edge(cut, a, b));
+    }
+  }
+  if (!cut.vertex_sharpness.empty()) {
+    L.vertex_sharpness.assign(size_t(L.vertex_count), 0.f);
+    for (Index v = 0; v < L.vertex_count; ++v) L.vertex_sharpness[size_t(v)] = cut.vertex_sharp(lab.vertices[size_t(v)]);
+  }
+  if (!cut.face_hole.empty()) {
+    L.face_hole.assign(size_t(L.face_count()), 0);
+    for (size_t i = 0; i < order.size(); ++i) L.face_hole[i] = cut.face_hole[size_t(order[i])];
+  }
+  return L;
+}
+
+}  // namespace
+
+LimitNodes::LimitNodes(const Scheme& scheme, const FeatureOptions& features, int radius, int depth, bool triangles,
+                       SchemeLimits& limits)
+    : scheme_(scheme), features_(features), radius_(radius), depth_(depth), triangles_(triangles), limits_(limits) {}
+
+// Every method that runs the engine (whose loops are parallel) under the lock isolates
+// itself: a thread waiting inside those loops must not pick up another evaluation of the
+// caller's parallel loop (tessellate), which would lock the same mutex again.
+int LimitNodes::intern(const Level& cut, Index face, std::vector<Index>& order) {
+  return tbb::this_task_arena::isolate([&] {
+    std::lock_guard lock(mutex_);
+    return intern_locked(cut, face, order);
+  });
+}
+
+int LimitNodes::intern_locked(const Level& cut, Index face, std::vector<Index>& order) {
+  // Labelled beyond the cut's radius, so every vertex of the cut has a label.
+  const Labelling lab = label_neighbourhood(cut, CentreKind::Face, face, 0, radius_ + 3);
+  if (lab.vertices.size() != size_t(cut.vertex_count))
+    throw Error("internal: a cut for limit evaluation has vertices its labelling does not reach");
+  const Index kept = Index(lab.count_within(depth_));
+  order.assign(lab.vertices.begin(), lab.vertices.begin() + kept);
+  std::vector<double> key = lab.signature;
+  append_holes(cut, lab, key);
+  auto [it, inserted] = index_.emplace(std::move(key), int(nodes_.size()));
+  if (!inserted) return it->second;
+  auto n = std::make_unique<LimitNode>();
+  n->level = canonical_level(cut, lab, face, n->face);
+  n->kept = kept;
+  n->vertex_of.resize(lab.vertices.size());
+  for (size_t l = 0; l < lab.vertices.size(); ++l) n->vertex_of[l] = Index(l);
+  n->label_of = n->vertex_of;
+  const int k = cut.face_size(face);
+  n->corner_tried.assign(size_t(k), 0);
+  n->corner_ready.assign(size_t(k), 0);
+  n->corner.resize(size_t(k));
+  n->corner_error.resize(size_t(k));
+  nodes_.push_back(std::move(n));
+  return it->second;
+}
+
+const LimitNode& LimitNodes::node(int id) {
+  std::lock_guard lock(mutex_);
+  return *nodes_[size_t(id)];
+}
+
+const LimitNode& LimitNodes::expanded(int id) {
+  return *tbb::this_task_arena::isolate([&]() -> const LimitNode* {
+    std::lock_guard lock(mutex_);
+    return &expand_locked(id);
+  });
+}
+
+LimitNode& LimitNodes::expand_locked(int id) {
+  LimitNode* n = nodes_[size_t(id)].get();
+  if (n->expanded) return *n;
+  RefineOptions ro;
+  ro.levels = 1;
+  ro.features = features_;
+  ro.threads = 1;
+  const Hierarchy h = refine(scheme_, n->level, ro);
+  FacePoint p;
+  p.face = n->face;
+  n->children = child_faces(n->level, h.levels[1], h.origins[0], p, triangles_);
+  const StencilTable& T = h.stencils[0];
+  for (const ChildFace& c : n->children) {
+    const Extracted e = extract_neighbourhood(h.levels[1], CentreKind::Face, c.face, radius_);
+    Index local = kNone;
+    for (size_t f = 0; f < e.face_original.size(); ++f)
+      if (e.face_original[f] == c.face) local = Index(f);
+    std::vector<Index> order;
+    const int child = intern_locked(e.level, local, order);
+    n = nodes_[size_t(id)].get();
+    StepMatrix m;
+    m.source_count = n->kept;
+    for (Index v : order) {
+      const Index r = e.original[size_t(v)];
+      for (Index x = T.offsets[size_t(r)]; x < T.offsets[size_t(r) + 1]; ++x) {
+        const Index column = n->label_of[size_t(T.indices[size_t(x)])];
+        if (column >= n->kept) throw NotClosed(not_closed(scheme_, depth_));
+        m.columns.push_back(column);
+        m.weights.push_back(T.weights[size_t(x)]);
+      }
+      m.offsets.push_back(Index(m.columns.size()));
+    }
+    n->child_node.push_back(child);
+    n->powers.emplace_back();
+    n->child_matrix.push_back(std::move(m));
+  }
+  n->expanded = true;
+  return *n;
+}
+
+namespace {
+
+StepMatrix dense_step(const Eigen::MatrixXd& a, int scale) {
+  StepMatrix m;
+  m.source_count = Index(a.cols());
+  m.scale = scale;
+  for (Index r = 0; r < Index(a.rows()); ++r) {
+    for (Index c = 0; c < Index(a.cols()); ++c)
+      if (a(r, c) != 0) m.columns.push_back(c), m.weights.push_back(a(r, c));
+    m.offsets.push_back(Index(m.columns.size()));
+  }
+  return m;
+}
+
+}  // namespace
+
+const LimitNode::Powers& LimitNodes::powers(int id, int which) {
+  std::lock_guard lock(mutex_);
+  LimitNode& n = *nodes_[size_t(id)];
+  auto& slot = n.powers[size_t(which)];
+  if (slot) return *slot;
+  const StepMatrix& s = n.child_matrix[size_t(which)];
+  const Index k = s.rows();
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(k, k);
+  for (Index r = 0; r < k; ++r)
+    for (Index e = s.offsets[size_t(r)]; e < s.offsets[size_t(r) + 1]; ++e) m(r, s.columns[size_t(e)]) += s.weights[size_t(e)];
+  // Derivative rows sum to zero; 2 (M - 1 e_0) acts on them as 2 M does, and sends every
+  // row to a zero-sum one, so rounding in the sum never grows with the power.
+  Eigen::MatrixXd d = 2 * m;
+  d.col(0).array() -= 2.0;
+  auto p = std::make_unique<LimitNode::Powers>();
+  for (int j = 0; j < kPowers; ++j) {
+    p->forward.push_back(dense_step(m, 1));
+    p->backward.push_back(dense_step(d, 1));
+    m = (m * m).eval();
+    d = (d * d).eval();
+  }
+  for (int j = 0; j < kPowers; ++j) p->forward[size_t(j)].backward = &p->backward[size_t(j)];
+  slot = std::move(p);
+  return *slot;
+}
+
+namespace {
+
+// The uniform cubic B-spline's refinement weight, in one direction, of the parent control
+// point at distance d (in parent spacings) from a child control point.
+double bspline_weight(double d) {
+  d = std::fabs(d);
+  if (d == 0) return 0.75;
+  if (d == 1) return 0.125;
+  if (d == 0.5) return 0.5;
+  return 0;
+}
+
+}  // namespace
+
+bool LimitNodes::grid_locked(LimitNode& n) {
+  if (triangles_ || n.kept != 16 || n.level.face_size(n.face) != 4) return false;
+  const std::vector<Uv> at = unfold(n.level, n.face, false);
+  std::array<bool, 16> seen{};
+  for (Index l = 0; l < 16; ++l) {
+    const Uv x = at[size_t(l)];
+    if (!(x[0] >= -1 && x[0] <= 2 && x[1] >= -1 && x[1] <= 2) || x[0] != std::floor(x[0]) || x[1] != std::floor(x[1]))
+      return false;
+    const int k = int(x[1] + 1) * 4 + int(x[0] + 1);
+    if (seen[size_t(k)]) return false;
+    seen[size_t(k)] = true;
+    n.grid[size_t(k)] = l;
+  }
+  return true;
+}
+
+// One step of node `id` is the B-spline's: each child's grid point is refined from the
+// parent's grid with the tensor-product weights, and nothing else.
+bool LimitNodes::bspline_step_locked(int id) {
+  LimitNode& n = expand_locked(id);
+  if (!grid_locked(n)) return false;
+  std::array<int, 16> cell_of{};
+  cell_of.fill(-1);
+  for (int k = 0; k < 16; ++k) cell_of[size_t(n.grid[size_t(k)])] = k;
+  for (size_t c = 0; c < n.children.size(); ++c) {
+    LimitNode& child = *nodes_[size_t(n.child_node[c])];
+    if (!grid_locked(child)) return false;
+    const auto& C = n.children[c].corners;
+    if (C.size() != 4) return false;
+    const StepMatrix& m = n.child_matrix[c];
+    for (int k = 0; k < 16; ++k) {
+      const double a = k % 4 - 1, b = k / 4 - 1;  // the child grid point, in the child's frame
+      const double X = C[0][0] + a * (C[1][0] - C[0][0]) + b * (C[3][0] - C[0][0]);
+      const double Y = C[0][1] + a * (C[1][1] - C[0][1]) + b * (C[3][1] - C[0][1]);
+      std::array<double, 16> expected{};
+      for (int q = 0; q < 16; ++q) expected[size_t(q)] = bspline_weight(X - (q % 4 - 1)) * bspline_weight(Y - (q / 4 - 1));
+      const Index row = child.grid[size_t(k)];
+      for (Index e = m.offsets[size_t(row)]; e < m.offsets[size_t(row) + 1]; ++e) {
+        const int q = cell_of[size_t(m.columns[size_t(e)])];
+        if (q < 0) return false;
+        expected[size_t(q)] -= m.weights[size_t(e)];
+      }
+      for (double r : expected)
+        if (std::fabs(r) > 1e-13) return false;
+    }
+  }
+  return true;
+}
+
+const std::array<Index, 16>* LimitNodes::bspline(int id) {
+  return tbb::this_task_arena::isolate([&] { return bspline_isolated(id); });
+}
+
+const std::array<Index, 16>* LimitNodes::bspline_isolated(int id) {
+  std::lock_guard lock(mutex_);
+  LimitNode& n = *nodes_[size_t(id)];
+  if (n.bspline == 0) {
+    // Every node reachable from this one must take B-spline steps.
+    std::vector<int> stack{id}, seen{id};
+    bool ok = true;
+    while (ok && !stack.empty()) {
+      const int x = stack.back();
+      stack.pop_back();
+      if (nodes_[size_t(x)]->bspline == 1) continue;
+      if (nodes_[size_t(x)]->bspline == 2 || !bspline_step_locked(x)) {
+        ok = false;
+        break;
+      }
+      for (int c : nodes_[size_t(x)]->child_node)
+        if (std::find(seen.begin(), seen.end(), c) == seen.end()) seen.push_back(c), stack.push_back(c);
+      if (seen.size() > 64) ok = false;  // not a regular region: leave it to the descent
+    }
+    if (ok)
+      for (int x : seen) nodes_[size_t(x)]->bspline = 1;
+    else
+      n.bspline = 2;
+  }
+  return n.bspline == 1 ? &n.grid : nullptr;
+}
+
+const std::vector<std::vector<double>>* LimitNodes::quartic(int id, bool& untried) {
+  std::lock_guard lock(mutex_);
+  const LimitNode& n = *nodes_[size_t(id)];
+  untried = n.quartic == 0;
+  return n.quartic == 1 ? &n.lattice_rows : nullptr;
+}
+
+void LimitNodes::set_quartic(int id, std::vector<std::vector<double>> rows) {
+  std::lock_guard lock(mutex_);
+  LimitNode& n = *nodes_[size_t(id)];
+  if (n.quartic != 0) return;
+  n.quartic = rows.empty() ? 2 : 1;
+  n.lattice_rows = std::move(rows);
+}
+
+const CornerRows* LimitNodes::corner(int id, int k, std::string& error) {
+  return tbb::this_task_arena::isolate([&] { return corner_isolated(id, k, error); });
+}
+
+const CornerRows* LimitNodes::corner_isolated(int id, int k, std::string& error) {
+  std::lock_guard lock(mutex_);
+  LimitNode& n = *nodes_[size_t(id)];
+  if (!n.corner_tried[size_t(k)]) {
+    n.corner_tried[size_t(k)] = 1;
+    FacePoint p;
+    p.face = n.face;
+    CornerRows rows;
+    std::string why;
+    if (corner_rows(limits_, n.level, p, k, 0, triangles_, rows, why)) {
+      auto by_label = [&](const std::vector<double>& r) {
+        std::vector<double> out(size_t(n.kept), 0.0);
+        for (size_t v = 0; v < r.size(); ++v) {
+          if (r[v] == 0) continue;
+          if (n.label_of[v] >= n.kept) throw NotClosed(not_closed(scheme_, depth_));
+          out[size_t(n.label_of[v])] = r[v];
+        }
+        return out;
+      };
+      n.corner[size_t(k)].position = by_label(rows.position);
+      if (!rows.ds.empty()) n.corner[size_t(k)].ds = by_label(rows.ds), n.corner[size_t(k)].dt = by_label(rows.dt);
+      n.corner_ready[size_t(k)] = 1;
+    } else {
+      n.corner_error[size_t(k)] = why;
+    }
+  }
+  if (!n.corner_ready[size_t(k)] && !n.corner_error[size_t(k)].empty()) error = n.corner_error[size_t(k)];
+  return n.corner_ready[size_t(k)] ? &n.corner[size_t(k)] : nullptr;
+}
+
+}  // namespace subdiv

@@ -1,0 +1,510 @@
+#include "framework/limit/limit_surface.h"
+
+#include <array>
+#include <cmath>
+#include <deque>
+#include <mutex>
+#include <fmt/format.h>
+#include <tbb/task_arena.h>
+
+#include "framework/analysis/surface/limit_evaluation.h"
+#include "framework/analysis/surface/local_patch.h"
+#include "framework/engine/ghost_rings.h"
+#include "framework/features/base_tags.h"
+#include "framework/engine/refiner.h"
+#include "framework/limit/bspline_patch.h"
+#include "framework/limit/corner_limit.h"
+#include "framework/limit/limit_nodes.h"
+#include "framework/limit/triangle_patch.h"
+#include "framework/limit/face_domain.h"
+#include "framework/scheme/scheme.h"
+#include "framework/util/error.h"
+
+
+namespace subdiv {
+namespace {
+
+// A face's neighbourhood cut out of a level, with its values and the point inside it.
+struct Neighbourhood {
+  Level level;
+  std::vector<double> values;
+  std::vector<Index> original;  // vertex -> vertex of the level it was cut from
+  FacePoint point;
+};
+
+Neighbourhood cut(const Level& L, std::span<const double> values, int channels, const FacePoint& p, int radius) {
+  Extracted e = extract_neighbourhood(L, CentreKind::Face, p.face, radius);
+  Neighbourhood n;
+  n.level = std::move(e.level);
+  n.original = std::move(e.original);
+  n.values.resize(n.original.size() * size_t(channels));
+  for (size_t v = 0; v < n.original.size(); ++v)
+    for (int c = 0; c < channels; ++c)
+      n.values[v * size_t(channels) + size_t(c)] = values[size_t(n.original[v]) * size_t(channels) + size_t(c)];
+  n.point = p;
+  for (size_t f = 0; f < e.face_original.size(); ++f)
+    if (e.face_original[f] == p.face) n.point.face = Index(f);
+  if (!L.face_hole.empty()) {
+    n.level.face_hole.assign(size_t(n.level.face_count()), 0);
+    for (size_t f = 0; f < e.face_original.size(); ++f) n.level.face_hole[f] = L.face_hole[size_t(e.face_original[f])];
+  }
+  return n;
+}
+
+StepMatrix step_matrix(const StencilTable& table, const std::vector<Index>& rows, Index source_count) {
+  StepMatrix m;
+  m.source_count = source_count;
+  for (Index r : rows) {
+    for (Index e = table.offsets[size_t(r)]; e < table.offsets[size_t(r) + 1]; ++e) {
+      m.columns.push_back(table.indices[size_t(e)]);
+      m.weights.push_back(table.weights[size_t(e)]);
+    }
+    m.offsets.push_back(Index(m.columns.size()));
+  }
+  return m;
+}
+
+// The point with its Jacobian d(s, t)/d(u, v) halved: carried as 2^-level times the
+// Jacobian, whose entries grow like 2^level and would overflow past level 1023, so that
+// derivative rows start at 2^-level times their size (step_matrix.h).
+FacePoint halved(FacePoint p) {
+  for (auto& row : p.jacobian)
+    for (double& x : row) x *= 0.5;
+  return p;
+}
+
+StepMatrix renumbering(const std::vector<Index>& order, Index source_count) {
+  StepMatrix m;
+  m.source_count = source_count;
+  m.scale = 1;
+  for (Index v : order) {
+    m.columns.push_back(v);
+    m.weights.push_back(1.0);
+    m.offsets.push_back(Index(m.columns.size()));
+  }
+  return m;
+}
+
+std::vector<double> applied(const std::vector<double>& row, std::span<const double> values, int channels) {
+  std::vector<double> out(size_t(channels), 0.0);
+  for (size_t v = 0; v < row.size(); ++v)
+    if (row[v] != 0)
+      for (int c = 0; c < channels; ++c) out[size_t(c)] += row[v] * values[v * size_t(channels) + size_t(c)];
+  return out;
+}
+
+}  // namespace
+
+std::string limit_surface_unsupported(const Scheme& scheme) {
+  if (!scheme.linear())
+    return fmt::format("scheme '{}' has non-linear rules: its limit is no fixed combination of the control points, "
+                       "so it has no limit masks or stencils to evaluate",
+                       scheme.name);
+  if (scheme_is_level_dependent(scheme))
+    return fmt::format("scheme '{}' is non-stationary (its weights depend on the level l): the local subdivision "
+                       "matrix changes from level to level and has no fixed eigen-structure to evaluate the limit with",
+                       scheme.name);
+  const SplitKind split = scheme.split();
+  if (split != SplitKind::Quad && split != SplitKind::Triangle)
+    return fmt::format("scheme '{}' uses a split whose child faces do not nest inside one parent face (sqrt3, dual, "
+                       "mid-edge or a plugin's split): evaluation at (face, u, v) is implemented for the binary quad "
+                       "and triangle splits only so far",
+                       scheme.name);
+  return {};
+}
+
+struct LimitSurface::Impl {
+  std::shared_ptr<const Scheme> scheme;
+  Level base;
+  LimitSurfaceOptions options;
+  bool triangles = false;
+  int radius = 4;
+  std::unique_ptr<SchemeLimits> limits;
+  // Per base face (made on first use): the node of its cut and the base vertices in the
+  // node's label order.
+  struct Entry {
+    int node = -1;
+    std::vector<Index> vertices;
+  };
+  // The nodes for one depth and the entries into them. The depth starts at one ring and
+  // grows when a scheme reads further (NotClosed); evaluations under way keep theirs.
+  struct Cache {
+    std::unique_ptr<LimitNodes> nodes;
+    std::mutex entry_mutex;
+    std::vector<std::unique_ptr<Entry>> entries;
+  };
+  mutable std::mutex cache_mutex;
+  mutable std::shared_ptr<Cache> cache;
+
+  std::shared_ptr<Cache> make_cache(int depth) const {
+    auto c = std::make_shared<Cache>();
+    c->nodes = std::make_unique<LimitNodes>(*scheme, options.features, radius, depth, triangles, *limits);
+    c->entries.resize(size_t(base.face_count()));
+    return c;
+  }
+  std::shared_ptr<Cache> current() const {
+    std::lock_guard lock(cache_mutex);
+    return cache;
+  }
+  void grow(const std::shared_ptr<Cache>& failed, const NotClosed& why) const {
+    std::lock_guard lock(cache_mutex);
+    if (cache != failed) return;
+    const int depth = failed->nodes->depth() + 1;
+    if (depth > radius - 2) throw Error(fmt::format("internal: {} even with a cut of {} rings", why.what(), radius));
+    cache = make_cache(depth);
+  }
+
+  const Entry& entry(Cache& c, Index face) const {
+    {
+      std::lock_guard lock(c.entry_mutex);
+      if (c.entries[size_t(face)]) return *c.entries[size_t(face)];
+    }
+    FacePoint p;
+    p.face = face;
+    const Neighbourhood n = cut(base, {}, 0, p, radius);
+    auto e = std::make_unique<Entry>();
+    std::vector<Index> order;
+    e->node = c.nodes->intern(n.level, n.point.face, order);
+    for (Index v : order) e->vertices.push_back(n.original[size_t(v)]);
+    std::lock_guard lock(c.entry_mutex);
+    if (!c.entries[size_t(face)]) c.entries[size_t(face)] = std::move(e);
+    return *c.entries[size_t(face)];
+  }
+
+  // The base vertices an evaluation in the point's face reads, in the order descend() takes
+  // their values.
+  std::vector<Index> reads(Cache& c, const FacePoint& p) const {
+    if (p.sub_face < 0) return entry(c, p.face).vertices;
+    return cut(base, {}, 0, p, radius).original;
+  }
+
+  // Runs `f(cache)` until the cache's depth suffices.
+  template <class F>
+  auto with_cache(F&& f) const {
+    // Isolated: the engine's parallel loops inside must not hand this thread another
+    // evaluation of a caller's parallel loop while it holds a node's lock or is half-way.
+    return tbb::this_task_arena::isolate([&] { return with_cache_isolated(f); });
+  }
+  template <class F>
+  auto with_cache_isolated(F& f) const {
+    for (;;) {
+      const std::shared_ptr<Cache> c = current();
+      try {
+        return f(*c);
+      } catch (const NotClosed& e) {
+        grow(c, e);
+      }
+    }
+  }
+
+  FacePoint start(Index face, double u, double v) const {
+    const char* why = "";
+    if (face < 0 || face >= base.face_count())
+      throw Error(fmt::format("face {} does not exist (the mesh has {} faces)", face, base.face_count()));
+    if (base.is_hole(face)) throw Error(fmt::format("face {} is a hole: it has no limit surface", face));
+    const auto p = base_face_point(base, face, u, v, triangles, &why);
+    if (!p) throw Error(fmt::format("face {} at (u, v) = ({}, {}): {}", face, u, v, why));
+    return *p;
+  }
+
+  // Follows the point down the refinement of its neighbourhood until it is a vertex.
+  // The position from the values carried down; the derivatives as rows over the first
+  // cut's vertices (`du_row`, `dv_row`), pulled back and applied to its values.
+  LimitSample descend(Cache& c, const FacePoint& p0, const std::vector<double>& first_values, int channels,
+                      bool derivatives, std::vector<double>* du_row = nullptr,
+                      std::vector<double>* dv_row = nullptr) const {
+    std::deque<StepMatrix> owned;
+    std::vector<const StepMatrix*> path;
+    int id = -1;
+    std::vector<double> values;
+    FacePoint p = p0;
+    if (p0.sub_face < 0) {
+      id = entry(c, p0.face).node;
+      values = first_values;
+    } else {
+      start_in_sub_face(*c.nodes, p0, first_values, channels, owned, path, id, values, p);
+    }
+    return walk(c, id, p, std::move(values), channels, derivatives, path, first_values, du_row, dv_row, true);
+  }
+
+  // The descent from node `id` with the point p and the node's values; `closed_forms`:
+  // regular nodes' patches may end it (off while those patches are being sampled).
+  LimitSample walk(Cache& c, int id, FacePoint p, std::vector<double> values, int channels, bool derivatives,
+                   std::vector<const StepMatrix*>& path, const std::vector<double>& first_values,
+                   std::vector<double>* du_row, std::vector<double>* dv_row, bool closed_forms) const {
+    std::vector<double> next;
+    std::string mask_error;
+    // `iteration`: the steps taken, a run of self-similar levels counting as one.
+    for (int iteration = 0;; ++iteration) {
+      const int shape = c.nodes->node(id).level.face_size(c.nodes->node(id).face);
+      if (iteration >= options.max_steps) {
+        // The face is 2^-max_steps of the base face: its nearest corner is the point to round-off.
+        p.st = {std::round(p.st[0]), std::round(p.st[1])};
+        if (triangles && p.st[0] + p.st[1] > 1) p.st[1] = 0;
+        if (iteration >= options.max_steps + 16)
+          throw Error(fmt::format("no limit mask for the vertex reached after {} steps{}{}", iteration,
+                                  mask_error.empty() ? "" : ": ", mask_error));
+      }
+      if (closed_forms && !triangles)
+        if (const std::array<Index, 16>* grid = c.nodes->bspline(id)) {
+          const CornerRows rows = bspline_rows(*grid, p.st, Index(values.size() / size_t(channels)));
+          return finish(rows, p, values, channels, derivatives, path, first_values, iteration, du_row, dv_row);
+        }
+      if (closed_forms && triangles)
+        if (const auto* lattice = quartic(c, id))
+          return finish(quartic_rows(*lattice, p.st), p, values, channels, derivatives, path, first_values, iteration,
+                        du_row, dv_row);
+      const int corner = corner_at(p, shape, triangles);
+      if (corner >= 0)
+        if (const CornerRows* rows = c.nodes->corner(id, corner, mask_error))
+          return finish(*rows, p, values, channels, derivatives, path, first_values, iteration, du_row, dv_row);
+      const LimitNode& N = c.nodes->expanded(id);
+      int which = -1;
+      const auto q = locate(N.children, p, triangles, &which);
+      if (!q) throw Error("internal: no child face holds the point (the split is not a binary primal one)");
+      if (N.child_node[size_t(which)] == id) {
+        // A self-similar step: count how many times in a row the point takes it, and take
+        // them at once.
+        FacePoint r = halved(*q);
+        int more = 0, again = -1;
+        while (more + 1 < (1 << LimitNodes::kPowers) - 1 && corner_at(r, shape, triangles) < 0) {
+          const auto t = locate(N.children, r, triangles, &again);
+          if (!t || again != which) break;
+          r = halved(*t), ++more;
+        }
+        // Worth it from about eight levels: a power is dense, a step sparse.
+        if (more + 1 >= 8) {
+          const LimitNode::Powers& powers = c.nodes->powers(id, which);
+          const int levels = more + 1;
+          for (int j = 0; j < LimitNodes::kPowers; ++j) {
+            if (!((levels >> j) & 1)) continue;
+            const StepMatrix& m = powers.forward[size_t(j)];
+            next.resize(size_t(m.rows()) * size_t(channels));
+            m.apply(values, next, channels);
+            values.swap(next);
+            path.push_back(&m);
+          }
+          p = r;
+          continue;
+        }
+      }
+      const StepMatrix& m = N.child_matrix[size_t(which)];
+      next.resize(size_t(m.rows()) * size_t(channels));
+      m.apply(values, next, channels);
+      values.swap(next);
+      path.push_back(&m);
+      id = N.child_node[size_t(which)];
+      p = halved(*q);
+    }
+  }
+
+  // The quartic patch of a triangle node, decided on first use: the node must lead only to
+  // itself, and the rows sampled at the 15 lattice points (exact: each lattice point is a
+  // vertex after two steps) must satisfy the node's refinement equations as a quartic —
+  // the rows at a child's lattice points, through the child's matrix, are the quartic at
+  // those points in the parent. The limit is the unique bounded solution of those
+  // equations, so the quartic is the limit.
+  const std::vector<std::vector<double>>* quartic(Cache& c, int id) const {
+    bool untried = false;
+    if (const auto* rows = c.nodes->quartic(id, untried)) return rows;
+    if (!untried) return nullptr;
+    c.nodes->set_quartic(id, fit_quartic(c, id));
+    return c.nodes->quartic(id, untried);
+  }
+
+  std::vector<std::vector<double>> fit_quartic(Cache& c, int id) const {
+    const LimitNode& N = c.nodes->expanded(id);
+    for (int child : N.child_node)
+      if (child != id) return {};
+    const size_t K = size_t(N.kept);
+    std::vector<double> unit(K * K, 0.0);
+    for (size_t k = 0; k < K; ++k) unit[k * K + k] = 1.0;
+    std::vector<std::vector<double>> rows;
+    try {
+      for (int q = 0; q < kQuarticLattice; ++q) {
+        FacePoint p;
+        p.st = quartic_lattice_point(q);
+        std::vector<const StepMatrix*> path;
+        rows.push_back(walk(c, id, p, unit, int(K), false, path, unit, nullptr, nullptr, false).position);
+      }
+    } catch (const NotClosed&) {
+      throw;
+    } catch (const Error&) {
+      return {};
+    }
+    for (size_t i = 0; i < N.children.size(); ++i) {
+      const auto& C = N.children[i].corners;
+      const StepMatrix& m = N.child_matrix[i];
+      for (int q = 0; q < kQuarticLattice; ++q) {
+        const Uv y = quartic_lattice_point(q);
+        const Uv x{C[0][0] + y[0] * (C[1][0] - C[0][0]) + y[1] * (C[2][0] - C[0][0]),
+                   C[0][1] + y[0] * (C[1][1] - C[0][1]) + y[1] * (C[2][1] - C[0][1])};
+        std::vector<double> rhs(K, 0.0);
+        for (Index r = 0; r < m.rows(); ++r)
+          for (Index e = m.offsets[size_t(r)]; e < m.offsets[size_t(r) + 1]; ++e)
+            rhs[size_t(m.columns[size_t(e)])] += rows[size_t(q)][size_t(r)] * m.weights[size_t(e)];
+        const std::vector<double> lhs = quartic_rows(rows, x).position;
+        for (size_t l = 0; l < K; ++l)
+          if (std::fabs(lhs[l] - rhs[l]) > 1e-12) return {};
+      }
+    }
+    return rows;
+  }
+
+  // The sample from rows over the current node's labels: the position from the values
+  // carried down, the derivatives pulled back to the first values.
+  static LimitSample finish(const CornerRows& rows, const FacePoint& p, const std::vector<double>& values, int channels,
+                            bool derivatives, const std::vector<const StepMatrix*>& path,
+                            const std::vector<double>& first_values, int iteration, std::vector<double>* du_row,
+                            std::vector<double>* dv_row) {
+    LimitSample out;
+    out.steps = iteration;
+    out.position = applied(rows.position, values, channels);
+    if (derivatives && !rows.ds.empty()) {
+      auto row = [&](int d) {
+        std::vector<double> r(rows.ds.size());
+        for (size_t i = 0; i < r.size(); ++i)
+          r[i] = p.jacobian[0][size_t(d)] * rows.ds[i] + p.jacobian[1][size_t(d)] * rows.dt[i];
+        return pulled_back(std::move(r), path);
+      };
+      std::vector<double> u = row(0), v = row(1);
+      out.du = applied(u, first_values, channels);
+      out.dv = applied(v, first_values, channels);
+      out.has_derivatives = true;
+      if (du_row) *du_row = std::move(u);
+      if (dv_row) *dv_row = std::move(v);
+    }
+    return out;
+  }
+
+  // An n-gon's sub-face is not a face yet: one step with the engine makes it one.
+  void start_in_sub_face(LimitNodes& nodes, const FacePoint& p0, const std::vector<double>& first_values, int channels,
+                         std::deque<StepMatrix>& owned, std::vector<const StepMatrix*>& path, int& id,
+                         std::vector<double>& values, FacePoint& p) const {
+    Neighbourhood n = cut(base, {}, 0, p0, radius);
+    n.values = first_values;
+    const Hierarchy h = refine_step(n.level);
+    const std::vector<double> child = h.stencils[0].apply(n.values, channels);
+    const auto q = child_face_point(n.level, h.levels[1], h.origins[0], n.point, triangles);
+    if (!q) throw Error("internal: no child face holds the point (the split is not a binary primal one)");
+    const Index parent_count = n.level.vertex_count;
+    n = cut(h.levels[1], child, channels, *q, radius);
+    owned.push_back(step_matrix(h.stencils[0], n.original, parent_count));
+    path.push_back(&owned.back());
+    std::vector<Index> order;
+    id = nodes.intern(n.level, n.point.face, order);
+    owned.push_back(renumbering(order, n.level.vertex_count));
+    values.resize(order.size() * size_t(channels));
+    path.push_back(&owned.back());
+    owned.back().apply(n.values, values, channels);
+    p = halved(n.point);
+  }
+
+  Hierarchy refine_step(const Level& level) const {
+    RefineOptions ro;
+    ro.levels = 1;
+    ro.features = options.features;
+    ro.threads = 1;
+    return refine(*scheme, level, ro);
+  }
+};
+
+LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, const LimitSurfaceOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  if (!scheme) throw Error("no scheme given for the limit surface");
+  if (const std::string why = limit_surface_unsupported(*scheme); !why.empty()) throw Error(why);
+  if (!base.manifold())
+    throw Error("the mesh is non-manifold (an edge with more than two faces, or a vertex where separate fans of "
+                "faces meet): limit evaluation at (face, u, v) needs a manifold mesh; split it into manifold parts");
+  impl_->scheme = std::move(scheme);
+  impl_->base = std::move(base);
+  impl_->options = options;
+  // With boundary interpolation "none" the faces along a boundary are holes (as the
+  // engine and OpenSubdiv make them): they have no limit surface.
+  tag_boundary_holes(impl_->base, options.features.boundary);
+  impl_->triangles = impl_->scheme->split() == SplitKind::Triangle;
+  // Children near the cut's rim follow the rim's artificial boundary; with a reach of r
+  // parent rings, 2 r + 2 rings keep the face's own neighbourhood right from level to level.
+  const SchemeRun run{impl_->scheme.get(), 1};
+  double loss = 1;
+  for (double x : ring_loss_per_level(std::span<const SchemeRun>(&run, 1))) loss = std::max(loss, x);
+  impl_->radius = std::max(4, 2 * int(std::ceil(loss)) + 2);
+  // The evaluation carries the vertices within a few rings of the face (at most radius - 2:
+  // the rim's two rings absorb the cut's artificial boundary); the nodes check that each
+  // step reads only them, and the depth grows from one ring until it does.
+  LimitOptions lo;
+  lo.features = options.features;
+  impl_->limits = std::make_unique<SchemeLimits>(*impl_->scheme, lo);
+  impl_->cache = impl_->make_cache(1);
+}
+
+LimitSurface::~LimitSurface() = default;
+LimitSurface::LimitSurface(LimitSurface&&) noexcept = default;
+LimitSurface& LimitSurface::operator=(LimitSurface&&) noexcept = default;
+
+const Level& LimitSurface::base() const { return impl_->base; }
+bool LimitSurface::triangles() const { return impl_->triangles; }
+
+std::string LimitSurface::check(Index face, double u, double v) const {
+  try {
+    impl_->start(face, u, v);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return {};
+}
+
+LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<const double> values, int channels,
+                                   bool derivatives) const {
+  if (channels < 1 || values.size() < size_t(impl_->base.vertex_count) * size_t(channels))
+    throw Error(fmt::format("limit evaluation needs {} values per vertex for {} vertices, got {}", channels,
+                            impl_->base.vertex_count, values.size()));
+  const FacePoint p = impl_->start(face, u, v);
+  try {
+    return evaluate_at(p, values, channels, derivatives);
+  } catch (const NotClosed&) {
+    throw;
+  } catch (const Error& e) {
+    throw Error(fmt::format("face {} at (u, v) = ({}, {}): {}", face, u, v, e.what()));
+  }
+}
+
+LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> values, int channels,
+                                      bool derivatives) const {
+  return impl_->with_cache([&](Impl::Cache& cache) {
+    const std::vector<Index> reads = impl_->reads(cache, p);
+    std::vector<double> first(reads.size() * size_t(channels));
+    for (size_t k = 0; k < reads.size(); ++k)
+      for (int c = 0; c < channels; ++c)
+        first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
+    return impl_->descend(cache, p, first, channels, derivatives);
+  });
+}
+
+LimitStencil LimitSurface::stencil(Index face, double u, double v) const {
+  const FacePoint p = impl_->start(face, u, v);
+  // The evaluation is linear in the values: evaluate the unit vectors of the face's
+  // neighbourhood (the only vertices it reads) as channels.
+  std::vector<Index> original;
+  std::vector<double> du, dv;
+  const LimitSample s = impl_->with_cache([&](Impl::Cache& cache) {
+    original = impl_->reads(cache, p);
+    const size_t n = original.size();
+    std::vector<double> unit(n * n, 0.0);
+    for (size_t k = 0; k < n; ++k) unit[k * n + k] = 1.0;
+    return impl_->descend(cache, p, unit, int(n), true, &du, &dv);
+  });
+  const size_t m = original.size();
+  LimitStencil out;
+  out.has_derivatives = s.has_derivatives;
+  for (size_t k = 0; k < m; ++k) {
+    const bool used = s.position[k] != 0 || (s.has_derivatives && (du[k] != 0 || dv[k] != 0));
+    if (!used) continue;
+    out.vertices.push_back(original[k]);
+    out.position.push_back(s.position[k]);
+    if (s.has_derivatives) out.du.push_back(du[k]), out.dv.push_back(dv[k]);
+  }
+  return out;
+}
+
+}  // namespace subdiv

@@ -1,0 +1,104 @@
+#pragma once
+// The limit surface of a linear scheme at any (face, u, v): position and first derivatives,
+// exact to round-off, and the same as weights over the control points (a limit stencil).
+//
+// Method (docs/limit.md): the point is followed down the refinement of its own
+// neighbourhood. At every step the face's neighbourhood is cut out of the current level
+// (analysis/surface/local_patch.h), refined one step by the scheme's own rules (the engine),
+// and the child face holding the point is found (face_domain.h). Machine numbers are dyadic
+// rationals, so with a binary split the point becomes a vertex of some level after as many
+// steps as its coordinates have bits (Schaefer & Warren 2007, "Exact evaluation of
+// non-polynomial subdivision schemes at rational parameter values"): there its limit is
+// the vertex's limit mask applied to the level's points, and its derivatives the
+// vertex's tangent masks (the left eigenvectors of the local subdivision matrix, Stam 1998,
+// "Exact evaluation of Catmull-Clark subdivision surfaces at arbitrary parameter values";
+// analysis/surface/limit_evaluation.h) scaled to the parameterisation. Near an extraordinary
+// vertex the point approaches (or wherever a step leads back to the same neighbourhood), the
+// levels are skipped together with powers of the local subdivision matrix (limit_nodes.h),
+// so a point at u = 1e-300 costs about what one at u = 0.3 does. Where every step ahead is
+// the bicubic B-spline's (checked on the scheme's rows, limit_nodes.h), the face is that
+// patch and is evaluated in closed form at once; likewise a triangle whose exact rows are a
+// quartic satisfying its refinement equations (triangle_patch.h: Loop's regular triangles). Semi-sharp creases are refined until they
+// are smooth or sharp, like everything else.
+//
+// Supported: stationary linear schemes whose split is the binary quad or triangle split
+// (Catmull-Clark, Loop, the butterflies, bilinear, composite split + averaging schemes).
+// Refused with the reason: non-linear rules (no limit stencil exists), level-dependent
+// weights (no fixed local subdivision matrix), and for now the √3, dual and mid-edge splits
+// (their children do not nest inside one parent face).
+#include <array>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "framework/features/feature_options.h"
+#include "framework/topology/level.h"
+
+namespace subdiv {
+
+struct Scheme;
+struct FacePoint;
+
+struct LimitSurfaceOptions {
+  FeatureOptions features;  // boundary interpolation and crease method, as in OpenSubdiv
+  // Steps after which a point that is still not a vertex is taken at the nearest corner
+  // of its face (whose size is then at most 2^-max_steps of the base face's: below
+  // round-off).
+  int max_steps = 64;
+};
+
+// One evaluated point: `channels` values each for the position and its derivatives along
+// the base face's u and v. Derivatives are absent (has_derivatives false) exactly at an
+// extraordinary vertex, where the parameterisation is singular.
+struct LimitSample {
+  std::vector<double> position, du, dv;
+  bool has_derivatives = false;
+  int steps = 0;  // steps the evaluation took (a run of self-similar levels taken at once counts once)
+};
+
+// A limit stencil: position and derivatives as weights over the base mesh's vertices.
+struct LimitStencil {
+  std::vector<Index> vertices;
+  std::vector<double> position, du, dv;  // one weight per entry of `vertices`
+  bool has_derivatives = false;
+};
+
+class LimitSurface {
+public:
+  // Checks that the scheme can be evaluated and keeps the base level (with its tags).
+  // Throws subdiv::Error saying why a scheme is refused.
+  LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, const LimitSurfaceOptions& options = {});
+  ~LimitSurface();
+  LimitSurface(LimitSurface&&) noexcept;
+  LimitSurface& operator=(LimitSurface&&) noexcept;
+
+  const Level& base() const;
+  // True when the scheme's split makes triangles (faces are parameterised as triangles).
+  bool triangles() const;
+
+  // The limit of `values` (channels per base vertex) at (face, u, v) in Bfr's
+  // parameterisation (face_domain.h). Throws subdiv::Error for a face that does not exist,
+  // a hole, or (u, v) outside the face's domain. Thread-safe. Without `derivatives` only
+  // the position is computed (about half the work).
+  LimitSample evaluate(Index face, double u, double v, std::span<const double> values, int channels,
+                       bool derivatives = true) const;
+
+  // The same point as weights over the base vertices: evaluate() of any values equals
+  // these weights applied to them (to round-off).
+  LimitStencil stencil(Index face, double u, double v) const;
+
+  // Why a (face, u, v) would be refused, or empty.
+  std::string check(Index face, double u, double v) const;
+
+private:
+  LimitSample evaluate_at(const FacePoint& p, std::span<const double> values, int channels,
+                          bool derivatives) const;
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Why a scheme cannot be evaluated on its limit surface, or empty.
+std::string limit_surface_unsupported(const Scheme& scheme);
+
+}  // namespace subdiv

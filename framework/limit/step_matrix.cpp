@@ -1,0 +1,39 @@
+#include "framework/limit/step_matrix.h"
+
+namespace subdiv {
+
+void StepMatrix::apply(std::span<const double> in, std::span<double> out, int channels) const {
+  const size_t C = size_t(channels);
+  for (Index r = 0; r < rows(); ++r) {
+    double* o = out.data() + size_t(r) * C;
+    for (size_t c = 0; c < C; ++c) o[c] = 0;
+    for (Index e = offsets[size_t(r)]; e < offsets[size_t(r) + 1]; ++e) {
+      const double w = weights[size_t(e)];
+      const double* x = in.data() + size_t(columns[size_t(e)]) * C;
+      for (size_t c = 0; c < C; ++c) o[c] += w * x[c];
+    }
+  }
+}
+
+std::vector<double> pulled_back(std::vector<double> row, std::span<const StepMatrix* const> steps) {
+  for (size_t j = steps.size(); j-- > 0;) {
+    const StepMatrix& m = steps[j]->backward ? *steps[j]->backward : *steps[j];
+    std::vector<double> next(size_t(m.source_count), 0.0);
+    for (Index r = 0; r < m.rows(); ++r) {
+      const double x = m.scale * row[size_t(r)];
+      if (x == 0) continue;
+      for (Index e = m.offsets[size_t(r)]; e < m.offsets[size_t(r) + 1]; ++e)
+        next[size_t(m.columns[size_t(e)])] += x * m.weights[size_t(e)];
+    }
+    double sum = 0;
+    int used = 0;
+    for (double x : next) sum += x, used += x != 0 ? 1 : 0;
+    if (used > 0)
+      for (double& x : next)
+        if (x != 0) x -= sum / used;
+    row = std::move(next);
+  }
+  return row;
+}
+
+}  // namespace subdiv

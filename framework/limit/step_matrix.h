@@ -1,0 +1,33 @@
+#pragma once
+// One step of a descent as a sparse matrix (rows: the vertices after the step, columns:
+// those before), and derivative rows pulled back through a chain of steps.
+#include <span>
+#include <vector>
+
+#include "framework/topology/level.h"
+
+namespace subdiv {
+
+struct StepMatrix {
+  Index source_count = 0;
+  std::vector<Index> offsets{0}, columns;
+  std::vector<double> weights;
+  // The factor by which the step scales the parameter: 2 for a refinement step (children's
+  // coordinates are twice their parent's), 1 for a renumbering.
+  int scale = 2;
+  // Where set, derivative rows are pulled back through this matrix instead (with its own
+  // scale): a power of the step taken at once, whose derivative form differs (limit_nodes.h).
+  const StepMatrix* backward = nullptr;
+
+  Index rows() const { return Index(offsets.size()) - 1; }
+  // out (rows x channels) = this x in (source_count x channels).
+  void apply(std::span<const double> in, std::span<double> out, int channels) const;
+};
+
+// A derivative row over the last step's vertices, for d/du scaled by 2^-k (k the
+// refinement steps), pulled back to the first step's sources: every step's factor keeps the
+// entries of order one, and each step removes the row's sum, which is zero for a
+// derivative: rounding in the sum would otherwise double at every step.
+std::vector<double> pulled_back(std::vector<double> row, std::span<const StepMatrix* const> steps);
+
+}  // namespace subdiv

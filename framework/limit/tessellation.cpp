@@ -1,0 +1,179 @@
+#include "framework/limit/tessellation.h"
+
+#include <array>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+#include <tbb/parallel_for.h>
+#include <tuple>
+
+#include "framework/limit/face_domain.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+// Where a grid point lies on the base mesh, so that faces sharing it share the point: a
+// vertex, the m-th of N segment ends along an edge (from its first end), or a point of
+// one face's own (its sub-face boundaries included).
+using Key = std::tuple<int, Index, Index, Index>;  // kind, element, a, b
+constexpr int kVertexKey = 0, kEdgeKey = 1, kFaceKey = 2;
+
+struct Builder {
+  const Level& base;
+  Tessellation out;
+  std::map<Key, Index> points;
+
+  Index point(const Key& key, Index face, double u, double v) {
+    auto [it, inserted] = points.emplace(key, out.point_count());
+    if (inserted) {
+      out.positions.insert(out.positions.end(), {0, 0, 0});
+      out.uv.insert(out.uv.end(), {u, v});
+      out.uv_face.push_back(face);
+    }
+    return it->second;
+  }
+
+  // The key of the point at fraction m / N along edge k of face f (from corner k).
+  Key edge_key(Index f, int k, int m, int N) const {
+    const auto corners = base.face(f);
+    const int n = int(corners.size());
+    if (m == 0) return {kVertexKey, corners[size_t(k)], 0, 0};
+    if (m == N) return {kVertexKey, corners[size_t((k + 1) % n)], 0, 0};
+    const Index e = base.face_edge_list(f)[size_t(k)];
+    const bool forward = base.edge_vertices[size_t(2 * e)] == corners[size_t(k)];
+    return {kEdgeKey, e, forward ? m : N - m, 0};
+  }
+
+  void quad(Index f, Index a, Index b, Index c, Index d) {
+    out.face_vertices.insert(out.face_vertices.end(), {a, b, c, d});
+    out.face_offsets.push_back(Index(out.face_vertices.size()));
+    out.base_face.push_back(f);
+  }
+  void triangle(Index f, Index a, Index b, Index c) {
+    out.face_vertices.insert(out.face_vertices.end(), {a, b, c});
+    out.face_offsets.push_back(Index(out.face_vertices.size()));
+    out.base_face.push_back(f);
+  }
+
+  void quad_face(Index f, int N) {
+    std::vector<Index> id(size_t((N + 1) * (N + 1)));
+    for (int j = 0; j <= N; ++j)
+      for (int i = 0; i <= N; ++i) {
+        Key key{kFaceKey, f, i, j};
+        if (j == 0) key = edge_key(f, 0, i, N);
+        else if (i == N) key = edge_key(f, 1, j, N);
+        else if (j == N) key = edge_key(f, 2, N - i, N);
+        else if (i == 0) key = edge_key(f, 3, N - j, N);
+        id[size_t(j * (N + 1) + i)] = point(key, f, double(i) / N, double(j) / N);
+      }
+    for (int j = 0; j < N; ++j)
+      for (int i = 0; i < N; ++i)
+        quad(f, id[size_t(j * (N + 1) + i)], id[size_t(j * (N + 1) + i + 1)], id[size_t((j + 1) * (N + 1) + i + 1)],
+             id[size_t((j + 1) * (N + 1) + i)]);
+  }
+
+  void triangle_face(Index f, int N) {
+    auto at = [N](int i, int j) { return size_t(j * (N + 1) + i); };
+    std::vector<Index> id(size_t((N + 1) * (N + 1)), kNone);
+    for (int j = 0; j <= N; ++j)
+      for (int i = 0; i + j <= N; ++i) {
+        Key key{kFaceKey, f, i, j};
+        if (j == 0) key = edge_key(f, 0, i, N);
+        else if (i + j == N) key = edge_key(f, 1, j, N);
+        else if (i == 0) key = edge_key(f, 2, N - j, N);
+        id[at(i, j)] = point(key, f, double(i) / N, double(j) / N);
+      }
+    for (int j = 0; j < N; ++j)
+      for (int i = 0; i + j < N; ++i) {
+        triangle(f, id[at(i, j)], id[at(i + 1, j)], id[at(i, j + 1)]);
+        if (i + j + 1 < N) triangle(f, id[at(i + 1, j)], id[at(i + 1, j + 1)], id[at(i, j + 1)]);
+      }
+  }
+
+  // Sub-face q of an n-gon: corner (0,0) at vertex q, side t = 0 the first half of edge q,
+  // side s = 0 the second half of edge q - 1, side s = 1 the spoke from the middle of edge
+  // q to the centre (which is sub-face q + 1's side t = 1), side t = 1 the spoke from the
+  // middle of edge q - 1 (sub-face q - 1's side s = 1).
+  void sub_faces(Index f, int N) {
+    const int n = base.face_size(f), h = N / 2, columns = sub_face_columns(n);
+    for (int q = 0; q < n; ++q) {
+      const int prev = (q + n - 1) % n;
+      std::vector<Index> id(size_t((h + 1) * (h + 1)));
+      for (int j = 0; j <= h; ++j)
+        for (int i = 0; i <= h; ++i) {
+          Key key{kFaceKey, f, n + q, j * (h + 1) + i};  // inside the sub-face
+          if (i == h && j == h) key = {kFaceKey, f, -1, 0};             // the centre
+          else if (j == 0) key = edge_key(f, q, i, N);                   // edge q from vertex q
+          else if (i == 0) key = edge_key(f, prev, N - j, N);            // edge q - 1 towards vertex q
+          else if (i == h) key = {kFaceKey, f, q, j};                     // spoke q, j from the edge middle
+          else if (j == h) key = {kFaceKey, f, prev, i};                  // spoke q - 1
+          const double u = (q % columns) + 0.5 * i / h, v = (q / columns) + 0.5 * j / h;
+          id[size_t(j * (h + 1) + i)] = point(key, f, u, v);
+        }
+      for (int j = 0; j < h; ++j)
+        for (int i = 0; i < h; ++i)
+          quad(f, id[size_t(j * (h + 1) + i)], id[size_t(j * (h + 1) + i + 1)], id[size_t((j + 1) * (h + 1) + i + 1)],
+               id[size_t((j + 1) * (h + 1) + i)]);
+    }
+  }
+};
+
+// The point's normal; where the derivatives do not exist (an extraordinary vertex), the
+// limit of the normals of the face's points towards it.
+std::array<double, 3> normal_at(const LimitSurface& s, LimitSample p, Index face, double u, double v,
+                                std::span<const double> P) {
+  if (!p.has_derivatives) {
+    // Towards the middle of the point's face, or of its sub-face's tile (face_domain.h).
+    const int n = s.base().face_size(face);
+    double cu = n == 3 && s.triangles() ? 1.0 / 3 : 0.5, cv = cu;
+    if (!s.triangles() && n != 4) {
+      double col = std::floor(u), row = std::floor(v);
+      if (u - col > 0.75) col += 1;
+      if (v - row > 0.75) row += 1;
+      cu = col + 0.25, cv = row + 0.25;
+    }
+    const double t = 1e-9;
+    p = s.evaluate(face, u + t * (cu - u), v + t * (cv - v), P, 3);
+  }
+  std::array<double, 3> n{p.du[1] * p.dv[2] - p.du[2] * p.dv[1], p.du[2] * p.dv[0] - p.du[0] * p.dv[2],
+                          p.du[0] * p.dv[1] - p.du[1] * p.dv[0]};
+  const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (l > 0)
+    for (double& x : n) x /= l;
+  return n;
+}
+
+}  // namespace
+
+Tessellation tessellate(const LimitSurface& surface, std::span<const double> positions, int N) {
+  if (N < 1) throw Error(fmt::format("--samples {}: the number of segments per edge must be at least 1", N));
+  const Level& base = surface.base();
+  Builder b{base, {}, {}};
+  for (Index f = 0; f < base.face_count(); ++f) {
+    if (base.is_hole(f)) continue;
+    const int k = base.face_size(f);
+    if (surface.triangles()) b.triangle_face(f, N);
+    else if (k == 4) b.quad_face(f, N);
+    else {
+      if (N % 2) throw Error(fmt::format("--samples {}: face {} has {} corners, whose sub-faces take N/2 segments each "
+                                         "so that its edges have N: use an even N", N, f, k));
+      b.sub_faces(f, N);
+    }
+  }
+  Tessellation out = std::move(b.out);
+  out.normals.assign(out.positions.size(), 0.0);
+  tbb::parallel_for(Index(0), out.point_count(), [&](Index i) {
+    const Index f = out.uv_face[size_t(i)];
+    const double u = out.uv[size_t(2 * i)], v = out.uv[size_t(2 * i + 1)];
+    const LimitSample p = surface.evaluate(f, u, v, positions, 3);
+    const auto n = normal_at(surface, p, f, u, v, positions);
+    for (int c = 0; c < 3; ++c) {
+      out.positions[size_t(3 * i + c)] = p.position[size_t(c)];
+      out.normals[size_t(3 * i + c)] = n[size_t(c)];
+    }
+  });
+  return out;
+}
+
+}  // namespace subdiv

@@ -1,0 +1,21 @@
+#pragma once
+// A polynomial patch of degree 4 over a triangle, held as its values at the principal
+// lattice (i/4, j/4), i + j <= 4, and evaluated with that lattice's Lagrange basis in
+// barycentric coordinates (Nicolaides 1972): Loop's regular triangles are quartic box
+// spline patches (Stam 1998, "Evaluation of Loop subdivision surfaces"), and a node whose
+// sampled rows satisfy its own refinement equations exactly as a quartic is one.
+#include <vector>
+
+#include "framework/limit/corner_limit.h"
+
+namespace subdiv {
+
+constexpr int kQuarticLattice = 15;
+
+// The (s, t) of lattice point q, the points ordered by rows j = 0..4, i = 0..4 - j.
+Uv quartic_lattice_point(int q);
+
+// Rows of `labels` entries: position, d/ds, d/dt at (s, t) from the lattice rows.
+CornerRows quartic_rows(const std::vector<std::vector<double>>& lattice, const Uv& st);
+
+}  // namespace subdiv

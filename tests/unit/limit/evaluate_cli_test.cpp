@@ -1,0 +1,109 @@
+// `subdiv evaluate`: the written points are the library's, bad rows are refused with their
+// row number, and no output file is left behind on an error.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "framework/io/mesh_level.h"
+#include "framework/io/mesh_read.h"
+#include "framework/limit/limit_surface.h"
+#include "framework/scheme/scheme_registry.h"
+#include "support/cli_runner.h"
+
+using namespace subdiv;
+namespace fs = std::filesystem;
+
+namespace {
+
+void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+std::vector<std::vector<double>> read_csv(const fs::path& p, std::string& header) {
+  std::ifstream in(p);
+  std::getline(in, header);
+  std::vector<std::vector<double>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<double> row;
+    std::stringstream s(line);
+    for (std::string f; std::getline(s, f, ',');) row.push_back(std::stod(f));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace
+
+TEST_CASE("subdiv evaluate writes the limit points and derivatives of the library") {
+  const fs::path dir = test::fresh_dir("evaluate-cli");
+  const std::string mesh = test::source_path("examples/meshes/cube.obj");
+  write(dir / "points.csv", "face,u,v\n0,0.3,0.2\n4,0.5,0.125\n5,1e-300,0.5\n");
+  const auto r = test::run_subdiv("evaluate " + mesh + " --at " + (dir / "points.csv").string() + " -o " +
+                                  (dir / "out.csv").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  std::string header;
+  const auto rows = read_csv(dir / "out.csv", header);
+  CHECK(header == "face,u,v,x,y,z,du_x,du_y,du_z,dv_x,dv_y,dv_z");
+  REQUIRE(rows.size() == 3);
+  const MeshData m = read_mesh(mesh);
+  const LimitSurface s(load_scheme("catmull-clark"), level_from_mesh(m, mesh));
+  for (const auto& row : rows) {
+    const LimitSample p = s.evaluate(Index(row[0]), row[1], row[2], m.positions, 3);
+    for (int c = 0; c < 3; ++c) {
+      CHECK(row[size_t(3 + c)] == p.position[size_t(c)]);  // written in the shortest exact form
+      CHECK(row[size_t(6 + c)] == p.du[size_t(c)]);
+      CHECK(row[size_t(9 + c)] == p.dv[size_t(c)]);
+    }
+  }
+}
+
+TEST_CASE("subdiv evaluate refuses bad rows with their number and leaves no output") {
+  const fs::path dir = test::fresh_dir("evaluate-cli-bad");
+  const std::string mesh = test::source_path("examples/meshes/cube.obj");
+  struct Bad {
+    const char* points;
+    const char* message;
+  };
+  for (const Bad& b : {Bad{"face,u,v\n0,0.1,0.1\n6,0.5,0.5\n", "(row 2): face 6 does not exist"},
+                       Bad{"face,u,v\n0,1.5,0.5\n", "(row 1): face 0 at (u, v) = (1.5, 0.5): (u, v) is outside"},
+                       Bad{"face,u,v\n0,x,0.5\n", "(row 1): u and v must be numbers"},
+                       Bad{"face,u\n0,0.5\n", "must be 'face,u,v'"},
+                       Bad{"face,u,v\n0,0.5\n", "(row 1): 2 fields"}}) {
+    CAPTURE(std::string(b.points));
+    write(dir / "points.csv", b.points);
+    const auto r = test::run_subdiv("evaluate " + mesh + " --at " + (dir / "points.csv").string() + " -o " +
+                                    (dir / "out.csv").string());
+    CHECK(r.exit_code != 0);
+    CHECK(r.output.find(b.message) != std::string::npos);
+    CHECK(!fs::exists(dir / "out.csv"));
+  }
+  write(dir / "points.csv", "face,u,v\n0,0.5,0.5\n");
+  const auto sqrt3 = test::run_subdiv("evaluate " + test::source_path("examples/meshes/octahedron.obj") +
+                                      " -s sqrt3 --at " + (dir / "points.csv").string() + " -o " +
+                                      (dir / "out.csv").string());
+  CHECK(sqrt3.exit_code != 0);
+  CHECK(sqrt3.output.find("do not nest inside one parent face") != std::string::npos);
+  CHECK(!fs::exists(dir / "out.csv"));
+}
+
+TEST_CASE("subdiv evaluate --samples writes a closed mesh of the limit surface with normals") {
+  const fs::path dir = test::fresh_dir("evaluate-cli-samples");
+  const std::string mesh = test::source_path("examples/meshes/cube.obj");
+  const auto r = test::run_subdiv("evaluate " + mesh + " --samples 4 -o " + (dir / "limit.obj").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  const MeshData out = read_mesh((dir / "limit.obj").string());
+  CHECK(out.face_count() == 6 * 16);
+  CHECK(out.vertex_count() == 8 + 12 * 3 + 6 * 9);
+  const Level L = level_from_mesh(out, "limit.obj");
+  for (Index e = 0; e < L.edge_count(); ++e) CHECK(!L.edge_on_boundary(e));
+  // Neither --at nor --samples, both, or a mesh format for --at: refused, no file.
+  for (const std::string& args : {std::string(" -o ") + (dir / "x.obj").string(),
+                                 std::string(" --samples 2 --at p.csv -o ") + (dir / "x.obj").string(),
+                                 std::string(" --samples 2 -o ") + (dir / "x.csv").string()}) {
+    CAPTURE(args);
+    const auto bad = test::run_subdiv("evaluate " + mesh + args);
+    CHECK(bad.exit_code != 0);
+    CHECK(!fs::exists(dir / "x.obj"));
+    CHECK(!fs::exists(dir / "x.csv"));
+  }
+}

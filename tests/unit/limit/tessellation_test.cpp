@@ -1,0 +1,82 @@
+// The sampled limit surface: crack-free (neighbouring faces share their edge samples, so a
+// closed mesh stays closed), every point on the limit, unit normals.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "framework/limit/tessellation.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/util/error.h"
+#include "support/test_meshes.h"
+#include "unit/limit/limit_meshes.h"
+
+using namespace subdiv;
+
+namespace {
+
+using limit_test::octahedron;
+
+Level level_of(const Tessellation& t) { return build_level(t.point_count(), t.face_offsets, t.face_vertices); }
+
+int boundary_edges(const Level& L) {
+  int n = 0;
+  for (Index e = 0; e < L.edge_count(); ++e) n += L.edge_on_boundary(e) ? 1 : 0;
+  return n;
+}
+
+void check_points(const LimitSurface& s, const Tessellation& t, std::span<const double> P) {
+  for (Index i = 0; i < t.point_count(); i += 7) {
+    const LimitSample p = s.evaluate(t.uv_face[size_t(i)], t.uv[size_t(2 * i)], t.uv[size_t(2 * i + 1)], P, 3);
+    for (int c = 0; c < 3; ++c) CHECK(t.positions[size_t(3 * i + c)] == p.position[size_t(c)]);
+    const double* n = &t.normals[size_t(3 * i)];
+    CHECK(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) == doctest::Approx(1.0).epsilon(1e-12));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("Tessellating closed meshes gives closed meshes: Catmull-Clark cube, Loop octahedron") {
+  {
+    const test::Mesh m = test::cube();
+    const LimitSurface s(load_scheme("catmull-clark"), m.level());
+    const int N = 4;
+    const Tessellation t = tessellate(s, m.positions, N);
+    CHECK(t.face_count() == 6 * N * N);
+    CHECK(t.point_count() == 8 + 12 * (N - 1) + 6 * (N - 1) * (N - 1));  // shared corners and edges
+    const Level L = level_of(t);
+    CHECK(boundary_edges(L) == 0);
+    CHECK(euler_characteristic(L) == 2);
+    check_points(s, t, m.positions);
+    // The cube [0, 1]^3 with outward-facing faces: its limit is convex and normals point
+    // away from its centre.
+    for (Index i = 0; i < t.point_count(); ++i) {
+      double d = 0;
+      for (int c = 0; c < 3; ++c) d += t.normals[size_t(3 * i + c)] * (t.positions[size_t(3 * i + c)] - 0.5);
+      CHECK(d > 0);
+    }
+  }
+  {
+    const test::Mesh m = octahedron();
+    const LimitSurface s(load_scheme("loop"), m.level());
+    const int N = 3;
+    const Tessellation t = tessellate(s, m.positions, N);
+    CHECK(t.face_count() == 8 * N * N);
+    CHECK(t.point_count() == 6 + 12 * (N - 1) + 8 * (N - 1) * (N - 2) / 2);
+    const Level L = level_of(t);
+    CHECK(boundary_edges(L) == 0);
+    CHECK(euler_characteristic(L) == 2);
+    check_points(s, t, m.positions);
+  }
+}
+
+TEST_CASE("Tessellating n-gons: sub-face grids meet the neighbours' edges; odd N is refused") {
+  test::Mesh m = test::pyramid();  // a quad base and four triangles, under Catmull-Clark
+  const LimitSurface s(load_scheme("catmull-clark"), m.level());
+  const Tessellation t = tessellate(s, m.positions, 4);
+  const Level L = level_of(t);
+  CHECK(boundary_edges(L) == 0);
+  CHECK(euler_characteristic(L) == 2);
+  check_points(s, t, m.positions);
+  CHECK_THROWS_WITH_AS(tessellate(s, m.positions, 3), doctest::Contains("use an even N"), Error);
+  CHECK_THROWS_AS(tessellate(s, m.positions, 0), Error);
+}

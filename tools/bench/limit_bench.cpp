@@ -1,0 +1,138 @@
+// subdiv-limit-bench: limit evaluation at random (face, u, v), SubdivKit's exact evaluation
+// (framework/limit) against OpenSubdiv's Bfr with its default approximation levels (Catmull-
+// Clark and Loop), one
+// thread, warm (every face evaluated once first), same run. A program, not a test; the
+// numbers are in docs/limit.md.
+//
+//   subdiv-limit-bench [points]        (run it under `taskset -c 0` for one core)
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <vector>
+
+#include <opensubdiv/bfr/refinerSurfaceFactory.h>
+#include <opensubdiv/bfr/surface.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+
+#include "framework/limit/limit_surface.h"
+#include "framework/scheme/scheme_registry.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+struct Mesh {
+  const char* name = "";
+  bool loop = false;  // Loop on triangles, else Catmull-Clark
+  int vertices = 0;
+  std::vector<int> sizes, corners;
+  std::vector<double> xyz;
+};
+
+Mesh torus(int nu, int nv, bool triangles = false) {
+  Mesh m;
+  m.name = triangles ? "Loop, triangulated torus (regular)" : "Catmull-Clark, torus (regular)";
+  m.loop = triangles;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const double a = 2 * M_PI * i / nu, b = 2 * M_PI * j / nv;
+      m.xyz.insert(m.xyz.end(), {(3 + std::cos(b)) * std::cos(a), (3 + std::cos(b)) * std::sin(a), std::sin(b)});
+    }
+  m.vertices = nu * nv;
+  auto id = [&](int i, int j) { return (j % nv) * nu + (i % nu); };
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      if (triangles) {
+        m.sizes.insert(m.sizes.end(), {3, 3});
+        m.corners.insert(m.corners.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      } else {
+        m.sizes.push_back(4);
+        m.corners.insert(m.corners.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+      }
+    }
+  return m;
+}
+
+Mesh cube() {
+  Mesh m;
+  m.name = "Catmull-Clark, cube (8 valence-3 vertices)";
+  for (int i = 0; i < 8; ++i) m.xyz.insert(m.xyz.end(), {double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+  m.vertices = 8;
+  m.sizes.assign(6, 4);
+  m.corners = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
+  return m;
+}
+
+void run(const Mesh& m, int points) {
+  using namespace OpenSubdiv;
+  const int faces = int(m.sizes.size());
+  std::vector<subdiv::Index> offsets{0};
+  for (int s : m.sizes) offsets.push_back(offsets.back() + s);
+  const std::vector<subdiv::Index> corners(m.corners.begin(), m.corners.end());
+
+  const auto t0 = Clock::now();
+  const subdiv::LimitSurface ours(subdiv::load_scheme(m.loop ? "loop" : "catmull-clark"), subdiv::build_level(m.vertices, offsets, corners));
+  for (int f = 0; f < faces; ++f) ours.evaluate(f, 0.3, 0.2, m.xyz, 3);
+  const auto t1 = Clock::now();
+  Far::TopologyDescriptor desc;
+  desc.numVertices = m.vertices;
+  desc.numFaces = faces;
+  desc.numVertsPerFace = m.sizes.data();
+  desc.vertIndicesPerFace = m.corners.data();
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  Sdc::Options sdc;
+  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+  Far::TopologyRefiner* refiner = Factory::Create(desc, Factory::Options(m.loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, sdc));
+  Bfr::RefinerSurfaceFactory<> factory(*refiner);
+  Bfr::Surface<double> surface;
+  Bfr::Surface<double>::PointDescriptor d(3);
+  std::vector<double> patch;
+  auto bfr = [&](int f, double u, double v, double* p, double* du, double* dv) {
+    factory.InitVertexSurface(f, &surface);
+    patch.resize(3 * size_t(surface.GetNumPatchPoints()));
+    surface.PreparePatchPoints(m.xyz.data(), d, patch.data(), d);
+    const double uv[2] = {u, v};
+    surface.Evaluate(uv, patch.data(), d, p, du, dv);
+  };
+  double p[3], du[3], dv[3], sum = 0;
+  for (int f = 0; f < faces; ++f) bfr(f, 0.3, 0.2, p, du, dv);
+  const auto t2 = Clock::now();
+
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<std::array<double, 3>> at;
+  for (int i = 0; i < points; ++i) {
+    double u = unit(rng), v = unit(rng);
+    if (m.loop && u + v > 1) u = 1 - u, v = 1 - v;
+    at.push_back({double(rng() % unsigned(faces)), u, v});
+  }
+  const auto t3 = Clock::now();
+  for (const auto& q : at) {
+    const subdiv::LimitSample s = ours.evaluate(subdiv::Index(q[0]), q[1], q[2], m.xyz, 3);
+    sum += s.position[0] + s.du[0];
+  }
+  const auto t4 = Clock::now();
+  for (const auto& q : at) {
+    bfr(int(q[0]), q[1], q[2], p, du, dv);
+    sum += p[0] + du[0];
+  }
+  const auto t5 = Clock::now();
+  delete refiner;
+  std::printf("%s, %d faces: first point per face (preparation) ours %.3g ms, Bfr %.3g ms; %d random points, "
+              "position + first derivatives: ours %.1f us/point, Bfr %.2f us/point, ratio %.2f (checksum %g)\n",
+              m.name, faces, seconds(t0, t1) * 1e3, seconds(t1, t2) * 1e3, points, seconds(t3, t4) / points * 1e6,
+              seconds(t4, t5) / points * 1e6, seconds(t3, t4) / seconds(t4, t5), sum);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int points = argc > 1 ? std::atoi(argv[1]) : 20000;
+  run(torus(32, 24), points);
+  run(torus(32, 24, true), points);
+  run(cube(), points);
+}

@@ -1,0 +1,186 @@
+// `subdiv evaluate MESH [-s SCHEME] (--at POINTS.csv | --samples N) [--derivatives 0|1] -o OUT`:
+// points of the limit surface at given (face, u, v), with OpenSubdiv Bfr's parameterisation,
+// or the limit surface sampled N x N per face as a crack-free mesh (framework/limit,
+// docs/limit.md).
+#include <charconv>
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <sstream>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include "commands.h"
+#include "shared_options.h"
+#include "framework/io/formats.h"
+#include "framework/io/mesh_level.h"
+#include "framework/io/mesh_read.h"
+#include "framework/limit/limit_surface.h"
+#include "framework/limit/tessellation.h"
+#include "framework/io/mesh_write.h"
+#include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/util/atomic_file.h"
+#include "framework/util/error.h"
+
+namespace subdiv::cli {
+namespace {
+
+struct EvaluateArgs {
+  std::string mesh, scheme = "catmull-clark", at, output;
+  std::vector<std::string> params;
+  std::string boundary = "edges-and-corners", crease_method = "uniform";
+  int derivatives = 1;
+  int samples = 0;
+  int threads = 0;
+};
+
+struct Query {
+  Index face = 0;
+  double u = 0, v = 0;
+};
+
+std::string trimmed(std::string s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  const auto e = s.find_last_not_of(" \t\r");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+template <class T>
+bool parse_field(const std::string& text, T& out) {
+  const std::string t = trimmed(text);
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
+  return ec == std::errc() && end == t.data() + t.size() && !t.empty();
+}
+
+// POINTS.csv: the header `face,u,v`, then one point per row. Every row is checked against
+// the surface before anything is evaluated, so a bad row stops the command with its number.
+std::vector<Query> read_points(const std::string& file, const LimitSurface& surface) {
+  std::ifstream in(file);
+  if (!in) throw Error(fmt::format("cannot read '{}': no such file or it is not readable", file));
+  std::string line;
+  int number = 0;
+  auto where = [&] { return fmt::format("{} line {}", file, number); };
+  if (!std::getline(in, line)) throw Error(fmt::format("{}: empty file; the first line must be 'face,u,v'", file));
+  ++number;
+  if (trimmed(line) != "face,u,v")
+    throw Error(fmt::format("{}: the header is '{}'; it must be 'face,u,v'", where(), trimmed(line)));
+  std::vector<Query> out;
+  while (std::getline(in, line)) {
+    ++number;
+    if (trimmed(line).empty()) continue;
+    std::vector<std::string> fields;
+    std::stringstream row(line);
+    for (std::string f; std::getline(row, f, ',');) fields.push_back(f);
+    Query q;
+    if (fields.size() != 3)
+      throw Error(fmt::format("{} (row {}): {} fields; a row is face,u,v", where(), out.size() + 1, fields.size()));
+    if (!parse_field(fields[0], q.face))
+      throw Error(fmt::format("{} (row {}): face '{}' is not a whole number", where(), out.size() + 1, trimmed(fields[0])));
+    if (!parse_field(fields[1], q.u) || !parse_field(fields[2], q.v))
+      throw Error(fmt::format("{} (row {}): u and v must be numbers", where(), out.size() + 1));
+    if (const std::string why = surface.check(q.face, q.u, q.v); !why.empty())
+      throw Error(fmt::format("{} (row {}): {}", where(), out.size() + 1, why));
+    out.push_back(q);
+  }
+  if (out.empty()) throw Error(fmt::format("{}: no points after the header", file));
+  return out;
+}
+
+void write_csv(const std::filesystem::path& out, const std::vector<Query>& queries,
+               const std::vector<LimitSample>& samples, int derivatives) {
+  write_file_atomically(out, [&](const std::filesystem::path& tmp) {
+    std::ofstream f(tmp);
+    f << "face,u,v,x,y,z";
+    if (derivatives > 0) f << ",du_x,du_y,du_z,dv_x,dv_y,dv_z";
+    f << '\n';
+    for (size_t i = 0; i < queries.size(); ++i) {
+      const LimitSample& s = samples[i];
+      f << fmt::format("{},{},{},{},{},{}", queries[i].face, queries[i].u, queries[i].v, s.position[0], s.position[1],
+                       s.position[2]);
+      if (derivatives > 0) {
+        for (const auto* d : {&s.du, &s.dv})
+          for (int c = 0; c < 3; ++c) f << ',' << (s.has_derivatives ? fmt::format("{}", (*d)[size_t(c)]) : "nan");
+      }
+      f << '\n';
+    }
+    if (!f) throw Error(fmt::format("cannot write '{}'", out.string()));
+  });
+}
+
+// The tessellation as a mesh: normals and the (face, u, v) of every point, the base face of
+// every face.
+MeshData tessellation_mesh(const Tessellation& t) {
+  MeshData m;
+  m.positions = t.positions;
+  m.face_offsets = t.face_offsets;
+  m.face_vertices = t.face_vertices;
+  DataArray normals{"Normals", 3, t.normals, false, ArrayRole::Normals};
+  DataArray face{"base_face", 1, {}, true}, uv{"uv", 2, t.uv, false};
+  for (Index f : t.uv_face) face.values.push_back(double(f));
+  m.point_data = {std::move(normals), std::move(face), std::move(uv)};
+  DataArray cells{"base_face", 1, {}, true};
+  for (Index f : t.base_face) cells.values.push_back(double(f));
+  m.cell_data = {std::move(cells)};
+  return m;
+}
+
+void run(const EvaluateArgs& a) {
+  if (a.at.empty() == (a.samples == 0))
+    throw Error("give either --at POINTS.csv (points at given parameters) or --samples N (a mesh of the surface)");
+  const std::string ext = lowercase_extension(a.output);
+  if (!a.at.empty() && ext != ".csv")
+    throw Error(fmt::format("-o '{}': --at writes .csv (face,u,v,x,y,z[,du_*,dv_*])", a.output));
+  if (a.samples > 0 && ext == ".csv")
+    throw Error(fmt::format("-o '{}': --samples writes a mesh (.vtp, .obj, .ply, .off, .stl)", a.output));
+  if (a.derivatives == 2)
+    throw Error("--derivatives 2: second derivatives are not implemented yet (docs/limit.md); use 0 or 1");
+  const auto scheme = load_scheme(a.scheme, parse_params(a.params));
+  const MeshData mesh = read_mesh(a.mesh);
+  LimitSurfaceOptions options;
+  options.features = {boundary_from_name(a.boundary), crease_method_from_name(a.crease_method)};
+  const LimitSurface surface(scheme, level_from_mesh(mesh, a.mesh), options);
+  const int threads = a.threads > 0 ? a.threads : int(tbb::this_task_arena::max_concurrency());
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+  if (a.samples > 0) {
+    write_mesh(a.output, tessellation_mesh(tessellate(surface, mesh.positions, a.samples)));
+    return;
+  }
+  const std::vector<Query> queries = read_points(a.at, surface);
+  std::vector<LimitSample> samples(queries.size());
+  tbb::parallel_for(size_t(0), queries.size(), [&](size_t i) {
+    samples[i] = surface.evaluate(queries[i].face, queries[i].u, queries[i].v, mesh.positions, 3, a.derivatives > 0);
+  });
+  write_csv(a.output, queries, samples, a.derivatives);
+}
+
+}  // namespace
+
+void add_evaluate_command(CLI::App& app) {
+  auto args = std::make_shared<EvaluateArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "evaluate", "Points of the limit surface at given (face, u, v), exactly (OpenSubdiv Bfr's parameterisation)");
+  cmd->add_option("mesh", args->mesh, "Input mesh")->required()->check(CLI::ExistingFile);
+  cmd->add_option("-s,--scheme", args->scheme, "Scheme name or .json file (binary quad or triangle split)")
+      ->capture_default_str();
+  add_param_option(cmd, args->params);
+  add_boundary_option(cmd, "--boundary", args->boundary);
+  add_crease_method_option(cmd, args->crease_method);
+  cmd->add_option("--at", args->at, "Points to evaluate: a .csv with the header face,u,v");
+  cmd->add_option("--samples", args->samples,
+                  "Instead of --at: the surface as a crack-free mesh, N x N quads per quad, N^2 triangles per "
+                  "triangle (faces with other sizes: N/2 x N/2 per sub-face, N even), with normals")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--derivatives", args->derivatives, "0: positions; 1: also du and dv (nan where they do not exist)")
+      ->check(CLI::Range(0, 2))
+      ->capture_default_str();
+  cmd->add_option("-o,--output", args->output,
+                  "Output: with --at a .csv (face,u,v,x,y,z then du_x..dv_z); with --samples a mesh (.vtp, .obj, ...)")
+      ->required();
+  cmd->add_option("-j,--threads", args->threads, "Worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
+  cmd->footer("Parameters: quads (0,0) (1,0) (1,1) (0,1); triangles (0,0) (1,0) (0,1); other faces of quad schemes\n"
+              "Bfr's QUAD_SUBFACES tiles. Example: subdiv evaluate examples/meshes/cube.obj --at points.csv -o limit.csv");
+  cmd->callback([args] { run(*args); });
+}
+
+}  // namespace subdiv::cli
