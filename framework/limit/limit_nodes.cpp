@@ -145,7 +145,6 @@ LimitNode& LimitNodes::expand_locked(int id) {
   RefineOptions ro;
   ro.levels = 1;
   ro.features = features_;
-  ro.threads = 1;
   const Hierarchy h = refine(scheme_, n->level, ro);
   FacePoint p;
   p.face = n->face;

@@ -404,7 +404,6 @@ struct LimitSurface::Impl {
     RefineOptions ro;
     ro.levels = 1;
     ro.features = options.features;
-    ro.threads = 1;
     return refine(*scheme, level, ro);
   }
 };
