@@ -8,7 +8,8 @@ PYBIND11_MODULE(_subdivkit, m) {
   namespace py = pybind11;
   m.doc() = "SubdivKit's C++ engine for the subdivkit package; use `import subdivkit`.";
   // Every user-facing failure of the library (bad files, schemes, parameters, meshes) is a
-  // subdiv::Error whose message names the place and the fix: the same text as the CLI's.
+  // subdiv::Error whose message names the place and the fix: the CLI's text, with the
+  // options of an OptionError spelled as Python's arguments (python_option_spelling).
   static py::exception<subdiv::Error> error(m, "Error", PyExc_ValueError);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
@@ -21,7 +22,7 @@ PYBIND11_MODULE(_subdivkit, m) {
   });
   error.attr("__doc__") =
       "A SubdivKit error: a bad file, scheme, parameter or mesh. The message is the one the `subdiv` command line "
-      "prints, naming the place and the fix. A subclass of ValueError.";
+      "prints, naming the place and the fix, with options named as Python's arguments. A subclass of ValueError.";
   error.attr("__module__") = "subdivkit";
   m.attr("__version__") = SUBDIV_VERSION;
   subdiv::register_vtk_formats();  // read_mesh/write_mesh handle .vtp, .vtk and .pvd

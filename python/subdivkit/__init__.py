@@ -11,7 +11,8 @@
     mine = sk.Scheme.from_dict({...})                       # a scheme written inline (docs/scheme-format.md)
 
 Every failure the library reports (bad files, schemes, parameters, meshes) raises
-subdivkit.Error, a ValueError, with the message the `subdiv` command line prints.
+subdivkit.Error, a ValueError, with the message the `subdiv` command line prints (options
+named as Python's arguments).
 See docs/python.md.
 """
 
