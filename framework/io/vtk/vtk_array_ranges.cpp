@@ -28,6 +28,19 @@ struct Range {
   Range join(const Range& o) const { return {std::min(min, o.min), std::max(max, o.max)}; }
 };
 
+// The norm of a tuple whose squares overflow (coordinates beyond 1e154), computed scaled by
+// the largest magnitude and clamped to the largest double: a file's RangeMax of "inf" is
+// unreadable for SubdivKit and ParaView alike (the XML reader refuses it).
+template <typename T>
+double scaled_norm(const T* tuple, int components) {
+  double scale = 0;
+  for (int c = 0; c < components; ++c) scale = std::max(scale, std::abs(double(tuple[c])));
+  if (!std::isfinite(scale)) return std::numeric_limits<double>::max();
+  double sum = 0;
+  for (int c = 0; c < components; ++c) sum += (double(tuple[c]) / scale) * (double(tuple[c]) / scale);
+  return std::min(scale * std::sqrt(sum), std::numeric_limits<double>::max());
+}
+
 // Over `tuples` tuples of `components` values: of the values (one component) or of the
 // tuples' Euclidean norms (several), as vtkDataArray::GetRange(-1) defines it. NaN is
 // skipped, as VTK skips it.
@@ -52,6 +65,7 @@ Range range_of(const T* values, std::size_t tuples, int components) {
               v += x * x;
             }
             v = std::sqrt(v);
+            if (std::isinf(v)) v = scaled_norm(values + t * std::size_t(components), components);
           }
           if (v < range.min) range.min = v;
           if (v > range.max) range.max = v;

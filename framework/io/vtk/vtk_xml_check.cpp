@@ -59,6 +59,11 @@ public:
       // Points need their three components said: VTK reads one otherwise, fails and leaks.
       if (xml_attribute(tag, "Name").value_or("") == "Points" && !xml_attribute(tag, "NumberOfComponents"))
         fail(at, "the Points array needs NumberOfComponents=\"3\"");
+      // VTK's reader sizes a String array from NumberOfTuples alone and crashes without it.
+      if (*type == "String" && !xml_attribute(tag, "NumberOfTuples"))
+        fail(at, fmt::format("String array '{}' has no NumberOfTuples; VTK cannot read a String array without it "
+                             "(add NumberOfTuples, or remove the array)",
+                             shortened(xml_attribute(tag, "Name").value_or(""))));
       if (const auto c = xml_attribute(tag, "NumberOfComponents")) {
         long long v;
         if (!parse_integer(*c, v) || v < 1 || v > kMaxComponents)
@@ -106,6 +111,17 @@ private:
       if (!tuples || !parse_integer(*tuples, v) || v < 0 || v > kMaxCount)
         fail(a, fmt::format("a field data array needs NumberOfTuples, a whole number from 0 to {}", kMaxCount));
     });
+    // Cell connectivity and offsets are indices: VTK converts any type silently (Float64
+    // 3.7 became vertex 3), so only integer types are taken.
+    for (const std::string_view section : {"Verts", "Lines", "Strips", "Polys"})
+      for_each_array_in(head, arrays, section, [&](std::size_t, std::size_t a) {
+        const std::string_view tag = tag_at(head, a);
+        const std::string_view type = xml_attribute(tag, "type").value_or("");
+        if (type.rfind("Int", 0) != 0 && type.rfind("UInt", 0) != 0)
+          fail(a, fmt::format("<{}> array '{}' has type {}; cell connectivity and offsets must have an integer type "
+                              "(Int32 or Int64)",
+                              section, shortened(xml_attribute(tag, "Name").value_or("")), shortened(type)));
+      });
     // VTK creates one array per name but reads every element: a second array of the same
     // name in one section made it read into an array it never created (a null
     // dereference, found by fuzz_read_vtp).
