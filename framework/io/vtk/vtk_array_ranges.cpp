@@ -75,8 +75,15 @@ Range range_of(const T* values, std::size_t tuples, int components) {
       [](const Range& a, const Range& b) { return a.join(b); });
 }
 
+// The largest magnitude a range may have: VTK writes ranges with 11 significant digits, and
+// the largest double, 1.7976931348623157e308, printed so (1.7976931349e+308) reads back
+// as inf, which makes VTK's reader refuse the file. A range is metadata: clamped, not refused.
+constexpr double kLargestWrittenRange = 1.797693134e308;
+
+double clamped(double x) { return std::clamp(x, -kLargestWrittenRange, kLargestWrittenRange); }
+
 void store(vtkDataArray& array, const Range& range) {
-  const double values[2] = {range.min, range.max};
+  const double values[2] = {clamped(range.min), clamped(range.max)};
   vtkInformation* info = array.GetInformation();
   if (array.GetNumberOfComponents() == 1) {
     vtkNew<vtkInformationVector> per_component;
