@@ -5,6 +5,8 @@
 #include "framework/scheme/curve_scheme.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
+#include "framework/io/mesh_read.h"
+#include "framework/io/mesh_write.h"
 #include "framework/util/input_file.h"
 #include "framework/util/thread_count.h"
 #include "io_test_support.h"
@@ -58,4 +60,26 @@ TEST_CASE("schemes: a curve rule's start is bounded, and so are the steps of a l
   CHECK(load_scheme_text(scheme(pass), "s.json")->steps.size() == 65);
   CHECK(contains(error_of([&] { load_scheme_text(scheme(pass + pass), "s.json"); }),
                  "the smoothing passes (repeats included) come to more than 64 per level"));
+}
+
+TEST_CASE("binary PLY: a file far larger than its header can describe is refused before it is read") {
+  TempDir dir;
+  const fs::path ply = dir / "sparse.ply";
+  write_mesh(ply, cube_mesh());
+  const auto size = fs::file_size(ply);
+  REQUIRE(read_mesh(ply).face_count() == 6);
+  fs::resize_file(ply, std::uintmax_t(1) << 30);  // sparse: the cube, then a gigabyte of holes
+  const std::string e = error_of([&] { read_mesh(ply); });
+  CHECK(contains(e, "sparse.ply: the file has 1073741824 bytes, but its header describes at most"));
+  fs::resize_file(ply, size + 100);  // a little trailing data is tolerated, as before
+  CHECK(read_mesh(ply).face_count() == 6);
+}
+
+TEST_CASE("reading a .pvd says what it is and which file to read instead") {
+  TempDir dir;
+  write_mesh(dir / "run.pvd", cube_mesh());
+  const std::string e = error_of([&] { read_mesh(dir / "run.pvd"); });
+  CHECK(contains(e, "a .pvd is ParaView's index of level files, not a mesh: read one of them instead"));
+  CHECK(contains(e, (dir / "run_levels" / "level_0.vtp").string()));
+  CHECK(!contains(e, "built without"));
 }
