@@ -250,3 +250,15 @@ TEST_CASE("holes: a mesh whose faces are all holes is refused, not refined to no
   mesh.holes.pop_back();
   CHECK(level_from_mesh(mesh, "cube.obj").face_count() == 6);
 }
+
+TEST_CASE("OFF: colours of any finite value read back (fuzz_write_read: a whole 6e293 was taken for an int)") {
+  TempDir dir;
+  MeshData mesh = cube_mesh();
+  DataArray colour{"color", 3, std::vector<double>(18, 6.367880534469101e+293), false, ArrayRole::Color};
+  mesh.cell_data.push_back(colour);
+  write_mesh(dir / "colours.off", mesh);
+  const MeshData back = read_mesh(dir / "colours.off");
+  REQUIRE(back.cell_data.size() == 1);
+  CHECK(!back.cell_data[0].integer);
+  CHECK(back.cell_data[0].values == colour.values);
+}
