@@ -80,10 +80,24 @@ Range range_of(const T* values, std::size_t tuples, int components) {
 // as inf, which makes VTK's reader refuse the file. A range is metadata: clamped, not refused.
 constexpr double kLargestWrittenRange = 1.797693134e308;
 
-double clamped(double x) { return std::clamp(x, -kLargestWrittenRange, kLargestWrittenRange); }
+// Likewise below: a subnormal bound (a norm of 1e-320) parses with ERANGE, which a C++
+// stream (libstdc++'s num_get) takes for a failure, and VTK parses with streams. Such a bound
+// moves outwards to 0 or to just above the smallest normal double, so that the range still
+// holds every value.
+constexpr double kSmallestWrittenRange = 2.2250738586e-308;
+
+double clamped_min(double x) {
+  if (std::abs(x) >= kSmallestWrittenRange || x == 0) return std::clamp(x, -kLargestWrittenRange, kLargestWrittenRange);
+  return x < 0 ? -kSmallestWrittenRange : 0.0;
+}
+
+double clamped_max(double x) {
+  if (std::abs(x) >= kSmallestWrittenRange || x == 0) return std::clamp(x, -kLargestWrittenRange, kLargestWrittenRange);
+  return x > 0 ? kSmallestWrittenRange : 0.0;
+}
 
 void store(vtkDataArray& array, const Range& range) {
-  const double values[2] = {clamped(range.min), clamped(range.max)};
+  const double values[2] = {clamped_min(range.min), clamped_max(range.max)};
   vtkInformation* info = array.GetInformation();
   if (array.GetNumberOfComponents() == 1) {
     vtkNew<vtkInformationVector> per_component;

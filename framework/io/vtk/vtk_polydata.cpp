@@ -311,7 +311,11 @@ void escape_names(vtkFieldData* data) {
   for (int i = 0; i < data->GetNumberOfArrays(); ++i)
     if (vtkAbstractArray* a = data->GetAbstractArray(i); a && a->GetName()) {
       const std::string escaped = xml_attribute_text(a->GetName());
-      if (escaped != a->GetName()) a->SetName(escaped.c_str());
+      if (escaped == a->GetName()) continue;
+      a->SetName(escaped.c_str());
+      // Renaming marks the array modified, which drops its cached range; VTK's own
+      // computation would write an overflowing norm as Infinity (found by fuzz_write_read).
+      cache_array_range(vtkDataArray::SafeDownCast(a));
     }
 }
 

@@ -95,6 +95,8 @@ TEST_CASE("VTK XML: coordinates near the largest double give finite ranges, and 
   TempDir dir;
   MeshData mesh = cube_mesh();
   for (double& x : mesh.positions) x = x < 0 ? -1.5e308 : 1.5e308;
+  // A name that needs escaping too: renaming the array must not lose its clamped range.
+  mesh.point_data.push_back({"huge & <escaped>", 3, mesh.positions, false});
   const fs::path vtp = dir / "huge.vtp";
   write_mesh(vtp, mesh);
   CHECK(read_text(vtp).find("inf") == std::string::npos);
@@ -261,4 +263,19 @@ TEST_CASE("OFF: colours of any finite value read back (fuzz_write_read: a whole 
   REQUIRE(back.cell_data.size() == 1);
   CHECK(!back.cell_data[0].integer);
   CHECK(back.cell_data[0].values == colour.values);
+}
+
+TEST_CASE("VTK XML: subnormal values give ranges that read back") {
+  TempDir dir;
+  MeshData mesh = cube_mesh();
+  DataArray tiny{"tiny", 3, {}, false};
+  for (Index v = 0; v < mesh.vertex_count(); ++v) tiny.values.insert(tiny.values.end(), {1e-320, -3e-315, 0.0});
+  DataArray single{"single", 1, std::vector<double>(8, 4.9406564584124654e-324), false};
+  mesh.point_data = {tiny, single};
+  write_mesh(dir / "tiny.vtp", mesh);
+  const MeshData back = read_mesh(dir / "tiny.vtp");
+  REQUIRE(back.point_data.size() == 2);
+  CHECK(back.point_data[0].values == tiny.values);
+  CHECK(back.point_data[1].values == single.values);
+  CHECK(vtk_read(dir / "tiny.vtp")->GetNumberOfPoints() == 8);
 }
