@@ -104,6 +104,17 @@ std::string header_word(const std::string& name) {
   return word.empty() ? std::string("array") : word;
 }
 
+// A name as a header comment can hold: printable ASCII, other bytes as \xNN (a line break
+// or a lone carriage return would end the comment line and break the header).
+std::string comment_text(const std::string& name) {
+  std::string out;
+  for (const char c : name.substr(0, 80)) {
+    const auto b = static_cast<unsigned char>(c);
+    out += b >= 0x20 && b < 0x7f ? std::string(1, c) : fmt::format("\\x{:02x}", unsigned(b));
+  }
+  return name.size() > 80 ? out + "..." : out;
+}
+
 std::vector<std::string> generic_names(const std::string& base, int components) {
   if (components == 1) return {base};
   std::vector<std::string> names;
@@ -133,7 +144,7 @@ std::vector<std::vector<std::string>> writable_property_names(const std::vector<
       std::string base = word;
       for (int k = 2; !free(names = generic_names(base, a.components)); ++k) base = fmt::format("{}_v{}", word, k);
       if (base != a.name)
-        notes.push_back(fmt::format("{} array '{}' written as '{}'", what, shortened(a.name), base));
+        notes.push_back(fmt::format("{} array '{}' written as '{}'", what, comment_text(a.name), base));
     }
     used.insert(names.begin(), names.end());
     out.push_back(std::move(names));

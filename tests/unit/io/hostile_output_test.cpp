@@ -279,3 +279,12 @@ TEST_CASE("VTK XML: subnormal values give ranges that read back") {
   CHECK(back.point_data[1].values == single.values);
   CHECK(vtk_read(dir / "tiny.vtp")->GetNumberOfPoints() == 8);
 }
+
+TEST_CASE("PLY: a property name holding the word end_header reads back (fuzz_write_read)") {
+  TempDir dir;
+  MeshData mesh = cube_with_point_array("vtkCompoend_header");
+  write_mesh(dir / "word.ply", mesh);
+  const MeshData back = read_mesh(dir / "word.ply");
+  REQUIRE(back.point_data.size() == 1);
+  CHECK(back.point_data[0].name == "vtkCompoend_header");
+}
