@@ -16,7 +16,7 @@ bash scripts/install-deps.sh
 bash scripts/install-sanitizer-deps.sh
 source scripts/sanitize-env.sh
 configure_sanitized_build
-cmake --build "$SUBDIV_ASAN_DIR" -j"$SUBDIV_JOBS" --target fuzzers subdiv_cli
+cmake --build "$SUBDIV_ASAN_DIR" -j"$SUBDIV_JOBS" --target fuzzers subdiv_cli subdiv_sqrt2 subdiv_circle_preserving
 
 bin=$SUBDIV_ASAN_DIR/tests/fuzz
 corpora=$SUBDIV_ASAN_DIR/fuzz-corpus
@@ -38,6 +38,8 @@ fuzzers=(
   "fuzz_scheme_sequence|sequence|256|tests/fuzz/seeds/sequence/*"
   "fuzz_params|sequence|256|tests/fuzz/seeds/params/*"
   "fuzz_refine|json|16384|tests/fuzz/seeds/refine/*"
+  "fuzz_write_read|write|2048|tests/fuzz/seeds/write/*"
+  "fuzz_plugin_file|elf|262144|@so"
 )
 
 # Seeds in formats the examples do not come in: the example meshes written by `subdiv`.
@@ -69,6 +71,7 @@ run_one() {
   local s
   for s in $seeds; do
     case $s in
+      @so) cp -n "$SUBDIV_ASAN_DIR"/plugins/*.so "$corpus"/ 2>/dev/null || true ;;  # the built plugins
       @*) cp -n "$converted"/*."${s#@}" "$corpus"/ 2>/dev/null || true ;;
       */scheme.schema.json) ;;  # the JSON Schema, not a scheme
       *) if [ -f "$s" ]; then cp -n "$s" "$corpus"/; fi ;;

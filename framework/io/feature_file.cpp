@@ -5,6 +5,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "framework/io/mesh_level.h"
 #include "framework/io/text_input.h"
 #include "framework/util/error.h"
 #include "framework/util/input_errors.h"
@@ -216,6 +217,7 @@ void apply_feature_tags(const FeatureTags& tags, Level& level) {
   for (const auto& c : tags.corners) level.vertex_sharpness[c.v] = c.sharpness;
   if (!tags.holes.empty() && level.face_hole.empty()) level.face_hole.assign(level.face_count(), 0);
   for (const auto& h : tags.holes) level.face_hole[h.face] = 1;
+  require_some_face_outside_holes(level, tags.source);
 }
 
 }  // namespace subdiv

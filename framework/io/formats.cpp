@@ -46,7 +46,13 @@ bool is_supported_input(const std::filesystem::path& file) { return contains(inp
 bool is_supported_output(const std::filesystem::path& file) { return contains(outputs(), lowercase_extension(file)); }
 
 std::string unsupported_format_hint(const std::filesystem::path& file) {
-  if (!contains(kVtkFormats, lowercase_extension(file))) return "";
+  const std::string ext = lowercase_extension(file);
+  if (!contains(kVtkFormats, ext)) return "";
+  // Registered VTK IO reads .vtp and .vtk; a .pvd is an index of level files, not a mesh.
+  if (ext == ".pvd" && contains(registered_input_extensions(), ".vtp"))
+    return fmt::format("; a .pvd is ParaView's index of level files, not a mesh: read one of them instead, e.g. "
+                       "'{}'",
+                       (file.parent_path() / (file.stem().string() + "_levels") / "level_0.vtp").string());
   return "; VTK formats need SubdivKit's VTK file IO, which this program was built without (link SubdivKit::vtkio "
          "and call register_vtk_formats())";
 }

@@ -58,9 +58,19 @@ void apply_holes(const MeshData& mesh, Level& level, const std::string& source) 
                               source, i, f, level.face_count()));
     level.face_hole[f] = 1;
   }
+  require_some_face_outside_holes(level, source);
 }
 
 }  // namespace
+
+void require_some_face_outside_holes(const Level& level, const std::string& source) {
+  if (level.face_hole.empty() || level.face_count() == 0) return;
+  for (Index f = 0; f < level.face_count(); ++f)
+    if (!level.face_hole[f]) return;
+  throw Error(fmt::format("{}: all {} faces are holes, so nothing is left to refine or write; remove at least one "
+                          "hole tag",
+                          source, level.face_count()));
+}
 
 Level level_from_mesh(const MeshData& mesh, const std::string& source) {
   check_positions(mesh, source);

@@ -16,6 +16,10 @@ Level level_from_mesh(const MeshData& mesh, const std::string& source);
 // are not written as creases.
 MeshData mesh_from_level(const Level& level, std::vector<double> positions);
 
+// Throws subdiv::Error "<source>: ..." when every face of `level` is a hole: nothing would
+// be left to refine or write (an empty output file that looks like success).
+void require_some_face_outside_holes(const Level& level, const std::string& source);
+
 // Per-corner values (face-varying indices) of the level's faces that are not holes, in the
 // order mesh_from_level writes those faces.
 std::vector<Index> corners_outside_holes(const Level& level, const std::vector<Index>& per_corner);

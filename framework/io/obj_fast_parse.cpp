@@ -72,6 +72,7 @@ private:
     if (keyword == "vt") return attribute(p, end, c_.slots[0]);
     if (keyword == "vn") return attribute(p, end, c_.slots[1]);
     if (keyword == "l" || keyword == "t") return false;
+    if (!keyword.empty() && keyword[0] != '#' && !obj_spec_statement(keyword)) return false;  // warned about there
     return ignored(start, end);
   }
 
@@ -312,6 +313,16 @@ std::optional<MeshData> parse_obj_fast(std::string_view text, std::size_t chunks
   MeshData mesh;
   if (!ok || !join(parsed, mesh)) return std::nullopt;
   return mesh;
+}
+
+bool obj_spec_statement(std::string_view keyword) {
+  static constexpr std::string_view kSpec[] = {
+      "vp",     "cstype", "deg",    "bmat",     "step",   "p",        "curv",   "curv2",      "surf",
+      "parm",   "trim",   "hole",   "scrv",     "sp",     "end",      "con",    "g",          "s",
+      "mg",     "o",      "bevel",  "c_interp", "d_interp", "lod",    "usemtl", "mtllib",     "shadow_obj",
+      "trace_obj", "ctech", "stech", "call",    "csh",    "maplib",   "usemap", "res",        "bsp",
+      "bzp",    "cdc",    "cdp"};
+  return std::find(std::begin(kSpec), std::end(kSpec), keyword) != std::end(kSpec);
 }
 
 }  // namespace subdiv::io_detail

@@ -19,6 +19,12 @@
 
 namespace subdiv::io_detail {
 
+// Statements of the OBJ specification (Wavefront, "Object Files (.obj)", Appendix B1 of the
+// Advanced Visualizer manual) that SubdivKit does not use: groups, materials, free-form
+// geometry, display and render attributes. Both readers skip them quietly, as OpenSubdiv's
+// shape_utils reader does; any other statement is skipped with a warning naming its lines.
+bool obj_spec_statement(std::string_view keyword);
+
 // `chunks` pieces of about equal size (at least 1), each parsed as one task.
 std::optional<MeshData> parse_obj_fast(std::string_view text, std::size_t chunks);
 

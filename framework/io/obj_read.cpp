@@ -70,6 +70,7 @@ private:
   void check_forward_references() const;
   void check_tag_vertices() const;
   void check_creases_are_edges() const;
+  void warn_unknown_statements();
   [[noreturn]] void fail(std::string_view message) const { fail_at(file_, line_, message); }
 
   const fs::path& file_;
@@ -93,7 +94,25 @@ private:
     std::size_t largest_line = 0;
   };
   Attribute attributes_[2];
+  struct Unknown {
+    std::string keyword;
+    std::size_t line;
+  };
+  std::vector<Unknown> unknown_;
 };
+
+// `text` with bytes outside printable ASCII as \xNN: a keyword quoted in a message must not
+// drive the terminal or end the message at a NUL.
+std::string printable(std::string_view text) {
+  std::string out;
+  for (const char c : text.substr(0, 40)) {
+    const auto b = static_cast<unsigned char>(c);
+    if (b >= 0x20 && b < 0x7f) out += c;
+    else out += fmt::format("\\x{:02x}", unsigned(b));
+  }
+  if (text.size() > 40) out += "...";
+  return out;
+}
 
 MeshData ObjReader::read(std::string_view text) {
   LineCursor lines(text);
@@ -124,6 +143,7 @@ MeshData ObjReader::read(std::string_view text) {
   check_creases_are_edges();
   check_holes();
   finish_face_varying();
+  warn_unknown_statements();
   return std::move(mesh_);
 }
 
@@ -134,8 +154,34 @@ void ObjReader::statement(std::string_view keyword, Tokens& tokens) {
   if (keyword == "t") return tag(tokens);
   if (keyword == "vt") return attribute(tokens, 0);
   if (keyword == "vn") return attribute(tokens, 1);
-  // Everything else (g, o, s, usemtl, mtllib, free-form geometry) does not
-  // describe the polygonal surface; skipping it is what every OBJ consumer does.
+  // The OBJ spec's other statements (g, o, s, usemtl, mtllib, free-form geometry) do not
+  // describe the polygonal surface; skipping them is what every OBJ consumer does. Anything
+  // else may be a face in disguise ("F 1 2 3", a NUL before "f"): skipped, but said.
+  if (!obj_spec_statement(keyword)) unknown_.push_back({std::string(keyword), line_});
+}
+
+// One warning per unknown keyword, with its first lines.
+void ObjReader::warn_unknown_statements() {
+  std::vector<std::string> order;
+  std::unordered_map<std::string, std::vector<std::size_t>> lines;
+  for (const Unknown& u : unknown_) {
+    auto& at = lines[u.keyword];
+    if (at.empty()) order.push_back(u.keyword);
+    at.push_back(u.line);
+  }
+  for (const std::string& keyword : order) {
+    const std::vector<std::size_t>& at = lines[keyword];
+    std::string where = fmt::format("line {}", at[0]);
+    constexpr std::size_t kShown = 5;
+    if (at.size() > 1) {
+      where = "lines";
+      for (std::size_t i = 0; i < std::min(at.size(), kShown); ++i) where += fmt::format("{}{}", i ? ", " : " ", at[i]);
+      if (at.size() > kShown) where += fmt::format(" and {} more", at.size() - kShown);
+    }
+    mesh_.warnings.push_back(fmt::format("{}: {}: skipped the unknown statement '{}'; it is not part of the OBJ "
+                                         "format (keywords are lower case: v, vt, vn, f, l, t, g, o, s, usemtl, ...)",
+                                         file_.string(), where, printable(keyword)));
+  }
 }
 
 void ObjReader::vertex(Tokens& tokens) {

@@ -160,9 +160,13 @@ void OffReader::face(Tokens& tokens) {
   if (face_colors_) face_color_.insert(face_color_.end(), colour.begin(), colour.end());
 }
 
+// Whole numbers above 1 are colours on the 0..255 scale; integers only where an int holds
+// them (a whole 6e293 taken for an integer was refused by the checks of integer arrays:
+// found by fuzz_write_read, an OFF that SubdivKit wrote and could not read back).
 bool integer_colours(const std::vector<double>& values) {
   bool whole = true, above_one = false;
-  for (double c : values) whole = whole && c == std::floor(c), above_one = above_one || c > 1;
+  for (double c : values)
+    whole = whole && c == std::floor(c) && std::abs(c) <= 2147483647.0, above_one = above_one || c > 1;
   return whole && above_one;
 }
 

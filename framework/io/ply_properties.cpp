@@ -1,7 +1,11 @@
 #include "framework/io/ply_properties.h"
 
 #include <algorithm>
+#include <set>
+
 #include <fmt/format.h>
+
+#include "framework/util/short_text.h"
 
 namespace subdiv::io_detail {
 namespace {
@@ -88,6 +92,64 @@ std::vector<std::string> property_names(const DataArray& a) {
   std::vector<std::string> names;
   for (int k = 0; k < a.components; ++k) names.push_back(fmt::format("{}_{}", a.name, k));
   return names;
+}
+
+namespace {
+
+// Printable ASCII without spaces: what a PLY header word can be (the header is ASCII lines
+// split at white space).
+std::string header_word(const std::string& name) {
+  std::string word;
+  for (const char c : name) word += c > ' ' && c < 0x7f ? c : '_';
+  return word.empty() ? std::string("array") : word;
+}
+
+// A name as a header comment can hold: printable ASCII, other bytes as \xNN (a line break
+// or a lone carriage return would end the comment line and break the header).
+std::string comment_text(const std::string& name) {
+  std::string out;
+  for (const char c : name.substr(0, 80)) {
+    const auto b = static_cast<unsigned char>(c);
+    out += b >= 0x20 && b < 0x7f ? std::string(1, c) : fmt::format("\\x{:02x}", unsigned(b));
+  }
+  return name.size() > 80 ? out + "..." : out;
+}
+
+std::vector<std::string> generic_names(const std::string& base, int components) {
+  if (components == 1) return {base};
+  std::vector<std::string> names;
+  for (int k = 0; k < components; ++k) names.push_back(fmt::format("{}_{}", base, k));
+  return names;
+}
+
+}  // namespace
+
+std::vector<std::vector<std::string>> writable_property_names(const std::vector<DataArray>& arrays,
+                                                              std::vector<std::string> taken, const char* what,
+                                                              std::vector<std::string>& notes) {
+  std::set<std::string> used(taken.begin(), taken.end());
+  const auto free = [&](const std::vector<std::string>& names) {
+    std::set<std::string> own;
+    for (const std::string& n : names)
+      if (used.count(n) || !own.insert(n).second) return false;
+    return true;
+  };
+  std::vector<std::vector<std::string>> out;
+  for (const DataArray& a : arrays) {
+    std::vector<std::string> names = property_names(a);
+    const std::string word = header_word(a.name);
+    const bool conventional = names != generic_names(a.name, a.components);
+    if (!conventional || !free(names)) {
+      // A suffix that is not all digits, so that reading back does not take it for a component.
+      std::string base = word;
+      for (int k = 2; !free(names = generic_names(base, a.components)); ++k) base = fmt::format("{}_v{}", word, k);
+      if (base != a.name)
+        notes.push_back(fmt::format("{} array '{}' written as '{}'", what, comment_text(a.name), base));
+    }
+    used.insert(names.begin(), names.end());
+    out.push_back(std::move(names));
+  }
+  return out;
 }
 
 }  // namespace subdiv::io_detail

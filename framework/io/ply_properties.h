@@ -24,4 +24,13 @@ std::vector<PropertyGroup> group_properties(const std::vector<std::string>& name
 // The property names an array is written with (the inverse of group_properties).
 std::vector<std::string> property_names(const DataArray& array);
 
+// The property names each of `arrays` is written with, such that the PLY header holds them:
+// one word of printable ASCII, distinct from each other and from `taken` (x y z, or
+// vertex_indices). A name that breaks this (a space, a newline that would forge a header
+// line, a point array "x") is renamed; `notes` gets one line per renamed array for the
+// header's comments, "<what> array '<name>' written as '<new name>'".
+std::vector<std::vector<std::string>> writable_property_names(const std::vector<DataArray>& arrays,
+                                                              std::vector<std::string> taken, const char* what,
+                                                              std::vector<std::string>& notes);
+
 }  // namespace subdiv::io_detail

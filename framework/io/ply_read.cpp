@@ -12,7 +12,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <fstream>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,7 @@
 #include "framework/io/readers.h"
 #include "framework/io/text_input.h"
 #include "framework/util/error.h"
+#include "framework/util/input_file.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
@@ -380,7 +383,54 @@ void PlyReader::skip(Values& values, const Element& e) {
   }
 }
 
+// The most bytes the data of a binary PLY with this header can take, or nothing when no
+// useful bound exists (ASCII text, lists counted by 16-bit or wider integers).
+std::optional<double> largest_binary_data(const Header& header) {
+  if (header.format == Format::Ascii) return std::nullopt;
+  double bytes = 0;
+  for (const Element& e : header.elements) {
+    double per = 0;
+    for (const Property& p : e.properties) {
+      if (!p.list) {
+        per += double(type_size(p.type));
+        continue;
+      }
+      if (type_size(p.count_type) > 1) return std::nullopt;
+      per += double(type_size(p.count_type)) + 255.0 * double(type_size(p.type));
+    }
+    bytes += double(e.count) * per;
+  }
+  return bytes;
+}
+
+// The header alone, read before the whole file: a file far larger than its header can
+// describe (a 1 GB sparse file behind a three-vertex header) is refused before it is read.
+void check_size_against_header(const fs::path& file) {
+  check_input_file(file, "mesh");
+  std::ifstream in(file, std::ios::binary);
+  std::string head(64 * 1024, '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(std::size_t(in.gcount()));
+  // The line "end_header" itself, not the word inside a property name (found by
+  // fuzz_write_read: a property "vtkCompoend_header" cut the header short).
+  std::size_t end = head.find("\nend_header\n");
+  if (end == std::string::npos) end = head.find("\nend_header\r\n");
+  if (end == std::string::npos) return;  // the full read reports it
+  const std::size_t data = head.find('\n', end + 1);
+  LineCursor lines(std::string_view(head).substr(0, data + 1));
+  const Header header = HeaderParser(file, lines).parse();
+  const std::optional<double> largest = largest_binary_data(header);
+  std::error_code ec;
+  const double size = double(fs::file_size(file, ec));
+  if (largest && !ec && size > double(data + 1) + *largest + 4096)
+    throw Error(fmt::format("{}: the file has {:.0f} bytes, but its header describes at most {:.0f} bytes of binary "
+                            "data after the {}-byte header; the counts in the header are wrong or the file has data "
+                            "that is not part of this mesh",
+                            file.string(), size, *largest, data + 1));
+}
+
 MeshData PlyReader::read() {
+  check_size_against_header(file_);
   const std::string text = read_whole_file(file_);
   LineCursor lines(text);
   const Header header = HeaderParser(file_, lines).parse();

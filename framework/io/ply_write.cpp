@@ -29,9 +29,10 @@ Stored stored_as(const DataArray& a) {
 
 const char* type_name(Stored s) { return s == Stored::Double ? "double" : s == Stored::Int ? "int" : "uchar"; }
 
-void declare(BufferedOutput& out, const std::vector<DataArray>& arrays) {
-  for (const DataArray& a : arrays)
-    for (const std::string& name : property_names(a)) out.print("property {} {}\n", type_name(stored_as(a)), name);
+void declare(BufferedOutput& out, const std::vector<DataArray>& arrays,
+             const std::vector<std::vector<std::string>>& names) {
+  for (std::size_t k = 0; k < arrays.size(); ++k)
+    for (const std::string& name : names[k]) out.print("property {} {}\n", type_name(stored_as(arrays[k])), name);
 }
 
 // Tuple i of every array, in declaration order.
@@ -58,12 +59,16 @@ std::vector<Stored> kinds_of(const std::vector<DataArray>& arrays) {
 void write_ply(const path& file, const path& shown, const MeshData& mesh) {
   // A one-byte face size is what most tools expect; larger polygons need a wider count.
   const bool small_faces = largest_face(mesh) <= 255;
+  std::vector<std::string> notes;
+  const auto point_names = writable_property_names(mesh.point_data, {"x", "y", "z"}, "point", notes);
+  const auto cell_names = writable_property_names(mesh.cell_data, {"vertex_indices"}, "cell", notes);
   BufferedOutput out(file, shown);
-  out.print("ply\nformat binary_little_endian 1.0\ncomment SubdivKit\n"
-            "element vertex {}\nproperty double x\nproperty double y\nproperty double z\n", mesh.vertex_count());
-  declare(out, mesh.point_data);
+  out.print("ply\nformat binary_little_endian 1.0\ncomment SubdivKit\n");
+  for (const std::string& note : notes) out.print("comment {}\n", note);
+  out.print("element vertex {}\nproperty double x\nproperty double y\nproperty double z\n", mesh.vertex_count());
+  declare(out, mesh.point_data, point_names);
   out.print("element face {}\nproperty list {} int vertex_indices\n", mesh.face_count(), small_faces ? "uchar" : "int");
-  declare(out, mesh.cell_data);
+  declare(out, mesh.cell_data, cell_names);
   out.print("end_header\n");
   const std::vector<Stored> point_kinds = kinds_of(mesh.point_data), cell_kinds = kinds_of(mesh.cell_data);
   for (Index v = 0; v < mesh.vertex_count(); ++v) {

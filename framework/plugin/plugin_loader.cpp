@@ -8,6 +8,7 @@
 #include <set>
 #include <string_view>
 
+#include "framework/plugin/elf_check.h"
 #include "framework/plugin/plugin_api.h"
 #include "framework/util/error.h"
 #include "framework/util/library_location.h"
@@ -52,7 +53,7 @@ void* try_load(const fs::path& file, PluginStatus& status, const std::vector<Plu
   };
   std::error_code ec;
   if (!fs::exists(file, ec)) return refuse("no such file");
-  if (fs::is_directory(file, ec)) return refuse("is a folder, not a library");
+  if (const auto problem = plugin_file_problem(file)) return refuse(*problem);
   dlerror();
   void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) return refuse(fmt::format("cannot load the library: {}", text_or(dlerror(), "unknown error")));
@@ -163,8 +164,10 @@ std::vector<PluginStatus> load_plugins(const PluginSearch& search) {
   std::vector<std::pair<fs::path, std::string>> files;  // file, found_by
   std::error_code ec;
   for (const auto& p : search.paths) {
+    // Only a file named with --plugin is the user's explicit request (refused loudly by the
+    // front-ends); a broken library among a folder's is warned about and skipped.
     if (fs::is_directory(p, ec))
-      for (const auto& f : libraries_in(p)) files.emplace_back(f, "--plugin");
+      for (const auto& f : libraries_in(p)) files.emplace_back(f, "--plugin folder");
     else
       files.emplace_back(p, "--plugin");
   }

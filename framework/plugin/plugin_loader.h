@@ -14,7 +14,9 @@ namespace subdiv {
 
 struct PluginStatus {
   std::string file;      // the library, as found
-  std::string found_by;  // "--plugin", "SUBDIV_PLUGIN_PATH" or "installed plugin folder"
+  // "--plugin" (a file named there), "--plugin folder" (a file in a folder named there),
+  // "SUBDIV_PLUGIN_PATH" or "installed plugin folder"
+  std::string found_by;
   bool loaded = false;
   std::string name, version;           // from the plugin's record, when it could be read
   std::string reason;                  // why it was refused (empty when loaded)
@@ -22,6 +24,8 @@ struct PluginStatus {
 };
 
 // Loads one library. Never throws for a faulty plugin; the status says why it was refused.
+// Only regular files whose ELF headers, segments and sections are complete reach dlopen
+// (elf_check.h): a half-copied library or a FIFO is refused, never loaded.
 PluginStatus load_plugin(const std::filesystem::path& file, const std::string& found_by = "--plugin");
 
 struct PluginSearch {

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <set>
 
+#include "framework/plugin/checked_rules.h"
 #include "framework/scheme/json_source.h"
 #include "framework/scheme/scheme_loader.h"
 #include "framework/scheme/scheme_registry.h"
@@ -51,7 +52,7 @@ void check_curve_fits(const CurveScheme& c, SplitKind split, const std::string& 
 }
 
 std::shared_ptr<const Scheme> make_surface(const SurfaceSchemeSpec& spec, const std::string& label,
-                                           const ParameterOverrides& overrides) {
+                                           const std::string& who, const ParameterOverrides& overrides) {
   auto s = std::make_shared<Scheme>();
   s->name = spec.name;
   s->description = spec.description;
@@ -64,8 +65,12 @@ std::shared_ptr<const Scheme> make_surface(const SurfaceSchemeSpec& spec, const 
   StepRules step;
   step.split = split_kind_from_name(spec.split);
   step.where = label;
-  if (spec.linear) step.code = std::make_shared<const CodeRules>(spec.linear(values));
-  else step.nonlinear = std::make_shared<const NonlinearRule>(spec.nonlinear(values));
+  if (spec.linear)
+    step.code = std::make_shared<const CodeRules>(
+        checked_code_rules(call_plugin(who, "making its linear rules", [&] { return spec.linear(values); }), who));
+  else
+    step.nonlinear = std::make_shared<const NonlinearRule>(checked_nonlinear_rule(
+        call_plugin(who, "making its non-linear rule", [&] { return spec.nonlinear(values); }), who));
   if (step.code && !step.code->vertex && !step.code->edge && !step.code->face && !step.code->corner)
     throw Error(fmt::format("{}: the linear rules give no function (vertex, edge, face or corner)", label));
   if (step.nonlinear && !*step.nonlinear) throw Error(fmt::format("{}: the non-linear rule is empty", label));
@@ -82,7 +87,8 @@ std::shared_ptr<const Scheme> make_surface(const SurfaceSchemeSpec& spec, const 
 }
 
 std::shared_ptr<const CurveScheme> make_curve(const CurveSchemeSpec& spec, const std::string& label,
-                                              const ParameterOverrides& overrides, std::set<std::string>* used) {
+                                              const std::string& who, const ParameterOverrides& overrides,
+                                              std::set<std::string>* used) {
   std::vector<ParameterSpec> params = spec.parameters;
   std::set<std::string> taken;
   apply_parameter_overrides(params, overrides, label, &taken);
@@ -95,11 +101,12 @@ std::shared_ptr<const CurveScheme> make_curve(const CurveSchemeSpec& spec, const
   c->path = label;
   c->parameters = values.numbers;
   if (spec.nonlinear) {
-    c->nonlinear = std::make_shared<const PolylineRule>(spec.nonlinear(values));
+    c->nonlinear = std::make_shared<const PolylineRule>(checked_polyline_rule(
+        call_plugin(who, "making its non-linear curve rule", [&] { return spec.nonlinear(values); }), who));
     if (!*c->nonlinear) throw Error(fmt::format("{}: the non-linear rule is empty", label));
     return c;
   }
-  const CurveRulesSpec rules = spec.linear(values);
+  const CurveRulesSpec rules = call_plugin(who, "making its curve rules", [&] { return spec.linear(values); });
   if (rules.arity < 2 || int(rules.starts.size()) != rules.arity || int(rules.weights.size()) != rules.arity)
     throw Error(fmt::format("{}: a curve of arity {} needs {} rules (starts and weights), one per new point of each "
                             "old point; it has {} starts and {} weight lists", label, rules.arity, rules.arity,
@@ -192,8 +199,9 @@ std::vector<std::string> PluginRegistry::commit() {
       throw Error(fmt::format("surface scheme '{}': give exactly one of linear or nonlinear", spec.name));
     auto shared = std::make_shared<const SurfaceSchemeSpec>(spec);
     const std::string label = plugin_file_ + ":" + spec.name;
+    const std::string who = fmt::format("plugin '{}' ({}), scheme '{}'", plugin_name_, plugin_file_, spec.name);
     CodeSchemeEntry e{spec.name, spec.description, "surface", origin, plugin_file_, nullptr, nullptr};
-    e.make_surface = [shared, label](const ParameterOverrides& o) { return make_surface(*shared, label, o); };
+    e.make_surface = [shared, label, who](const ParameterOverrides& o) { return make_surface(*shared, label, who, o); };
     entries.push_back(std::move(e));
     provides.push_back(fmt::format("surface scheme {} ({}, {} split)", spec.name,
                                    spec.linear ? "linear, C++" : "non-linear, C++", spec.split));
@@ -204,9 +212,10 @@ std::vector<std::string> PluginRegistry::commit() {
       throw Error(fmt::format("curve scheme '{}': give exactly one of linear or nonlinear", spec.name));
     auto shared = std::make_shared<const CurveSchemeSpec>(spec);
     const std::string label = plugin_file_ + ":" + spec.name;
+    const std::string who = fmt::format("plugin '{}' ({}), scheme '{}'", plugin_name_, plugin_file_, spec.name);
     CodeSchemeEntry e{spec.name, spec.description, "curve", origin, plugin_file_, nullptr, nullptr};
-    e.make_curve = [shared, label](const ParameterOverrides& o, std::set<std::string>* used) {
-      return make_curve(*shared, label, o, used);
+    e.make_curve = [shared, label, who](const ParameterOverrides& o, std::set<std::string>* used) {
+      return make_curve(*shared, label, who, o, used);
     };
     entries.push_back(std::move(e));
     provides.push_back(fmt::format("curve scheme {} ({}, C++)", spec.name, spec.linear ? "linear" : "non-linear"));

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "framework/util/error.h"
+#include "framework/util/memory_limit.h"
 
 namespace subdiv {
 namespace {
@@ -30,6 +31,19 @@ TableShape table_shape(const FormulaUses& uses, int max_n, int max_k, int max_j)
     s.size *= size_t(range[v]);
   }
   return s;
+}
+
+// A formula of the end valences n0, n1 and the index j is tabulated over all three: cubic
+// in the largest valence (a 1,000-triangle fan asked for 7.9 GB that the memory guard did
+// not see). Refused with the rule and the valence when it cannot fit.
+void check_table_fits(const TableShape& shape, const std::string& where, int max_n) {
+  const double bytes = double(shape.size) * sizeof(double);
+  const MemoryBudget budget = available_memory();
+  if (bytes > budget.bytes)
+    throw Error(fmt::format("{}: its weight table for valences up to {} has {} entries ({:.1f} GiB), more than the "
+                            "{:.1f} GiB of memory this process may use ({}); the mesh's largest valence is too large "
+                            "for this rule",
+                            where, max_n, shape.size, bytes / (1 << 30), budget.bytes / (1 << 30), budget.source));
 }
 
 // Calls visit(index into the table, coordinates) for every entry of a table of this shape.
@@ -99,6 +113,7 @@ CompiledTerm compile_term(const Term& term, FormulaSet& formulas, int max_n, int
   out.stride_k0 = shape.stride[5], out.stride_k1 = shape.stride[6];
   out.stride_ci = shape.stride[7], out.stride_cb = shape.stride[8];
   out.stride_ex = shape.stride[9], out.stride_fe = shape.stride[10];
+  check_table_fits(shape, term.where, max_n);
   out.table.resize(shape.size);
   for_each_entry(shape.count, shape.stride, [&](size_t i, const int* x) {
     out.table[i] = formulas.evaluate(id, {double(x[0]), double(x[1]), double(x[2]), double(level), double(x[3]),

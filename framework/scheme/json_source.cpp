@@ -10,8 +10,12 @@
 
 namespace subdiv {
 
+// The largest built-in scheme is a few kilobytes; a scheme file of megabytes is a mistake
+// (or an attack on the parser's time and memory).
+constexpr std::uintmax_t kMaxSchemeFileBytes = 4'000'000;
+
 nlohmann::ordered_json read_json_file(const std::filesystem::path& path) {
-  return parse_json_text(read_input_file(path, "scheme"), path.string());
+  return parse_json_text(read_input_file(path, "scheme", kMaxSchemeFileBytes), path.string());
 }
 
 nlohmann::ordered_json parse_json_text(const std::string& text, const std::string& label) {

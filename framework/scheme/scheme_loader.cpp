@@ -15,6 +15,9 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
+// The farthest a curve rule may start from its old point (see the "start" check).
+constexpr long long kMaxCurveStart = 64;
+
 // Messages name the file and the JSON path of the offending value.
 struct Place {
   std::string file;
@@ -348,6 +351,11 @@ struct ParsedSteps {
 // Unrolls "repeat" and drops the steps whose "when" is zero, both evaluated once from the
 // parameters and definitions (e.g. (d - 1)/2 passes for the degree-d quad B-spline). Returns
 // the indices of the kept steps, in order.
+// Smoothing passes of one level, repeats included: enough for every scheme of the
+// literature (the degree-d Lane-Riesenfeld schemes take (d - 1) / 2 passes), and a bound on
+// the work one level may ask for.
+constexpr size_t kMaxPassesPerLevel = 64;
+
 std::vector<size_t> unroll_steps(const ParsedSteps& parsed, const Scheme& scheme, const Place& at) {
   FormulaSet formulas(scheme.parameter_values(), scheme.definitions);
   auto value_of = [&](const Repeat& r) {
@@ -376,6 +384,11 @@ std::vector<size_t> unroll_steps(const ParsedSteps& parsed, const Scheme& scheme
       count = int(v);
     }
     for (int c = 0; c < count; ++c) out.push_back(i);
+    // Each step costs a pass over the level; 2,000 smoothing passes took 19 s per level on a cube.
+    if (out.size() > kMaxPassesPerLevel + 1)
+      fail(at / "steps", fmt::format("with these parameters the smoothing passes (repeats included) come to more "
+                                     "than {} per level; a scheme may have at most {}",
+                                     kMaxPassesPerLevel, kMaxPassesPerLevel));
   }
   int splits = 0;
   for (size_t i : out) splits += parsed.steps[i].is_split;
@@ -400,6 +413,8 @@ ParsedSteps parse_steps(const Json& root, const Place& at) {
     fail(at, "give either \"split\" and \"rules\", or \"steps\", not both");
   const Json& list = root["steps"];
   if (!list.is_array() || list.empty()) fail(at / "steps", "expected a non-empty array of steps");
+  if (list.size() > 2 * kMaxPassesPerLevel)
+    fail(at / "steps", fmt::format("{} steps; a scheme may list at most {}", list.size(), 2 * kMaxPassesPerLevel));
   bool seen_pass = false;
   for (size_t i = 0; i < list.size(); ++i) {
     const Place here = (at / "steps")[i];
@@ -743,6 +758,11 @@ std::shared_ptr<const CurveScheme> curve_scheme_from_json(const Json& root, cons
       if (!start.is_number_integer())
         fail(here / "start", fmt::format("expected a whole number (the offset of the first old point), found {}",
                                          shortened(start.dump())));
+      // A rule reaches old points i + start ... i + start + len(w) - 1: a start beyond this
+      // is no local rule (-2^31 ran 14.5 s and exited 0).
+      if (start.get<long long>() < -kMaxCurveStart || start.get<long long>() > kMaxCurveStart)
+        fail(here / "start", fmt::format("{} is out of range: a rule starts at most {} old points away (from -{} to {})",
+                                         shortened(start.dump()), kMaxCurveStart, kMaxCurveStart, kMaxCurveStart));
       curve->starts.push_back(start.get<int>());
       curve->weights.push_back(parse_curve_weights(require(rules[r], "w", here), here / "w", formulas));
     }

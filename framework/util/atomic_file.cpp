@@ -2,6 +2,11 @@
 
 #include <atomic>
 #include <random>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <string_view>
+#include <sys/file.h>
 #include <system_error>
 #include <unistd.h>
 
@@ -18,11 +23,37 @@ namespace {
 // the leading dot keeps half-written files out of casual directory listings. At most the
 // first 100 bytes of the target's name go in, so that the temporary name stays within the
 // file system's limit whenever the target's does.
+std::string temporary_prefix(const fs::path& target) {
+  return fmt::format(".{}.", target.filename().string().substr(0, 100));
+}
+
 fs::path temporary_name(const fs::path& target) {
   static const unsigned long long salt = std::random_device{}();
   static std::atomic<unsigned long long> counter{0};
-  return target.parent_path() /
-         fmt::format(".{}.{:x}-{}.tmp", target.filename().string().substr(0, 100), salt, counter++);
+  return target.parent_path() / fmt::format("{}{:x}-{}.tmp", temporary_prefix(target), salt, counter++);
+}
+
+// "<hex>-<decimal>", the part of a temporary's name temporary_name() makes after the prefix.
+bool is_temporary_id(std::string_view id) {
+  const size_t dash = id.find('-');
+  if (dash == 0 || dash == std::string_view::npos || dash + 1 == id.size()) return false;
+  for (size_t i = 0; i < id.size(); ++i) {
+    const char c = id[i];
+    const bool ok = i < dash ? (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') : i == dash || (c >= '0' && c <= '9');
+    if (!ok) return false;
+  }
+  return true;
+}
+
+// Creates the temporary and takes its lock; the descriptor keeps the lock.
+int create_locked(const fs::path& tmp, const fs::path& target) {
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0)
+    throw Error(fmt::format("cannot write '{}': cannot create a temporary file in its directory ({}); check the "
+                            "directory's permissions and free space",
+                            target.string(), std::strerror(errno)));
+  ::flock(fd, LOCK_EX | LOCK_NB);  // fresh file: nobody else can hold it
+  return fd;
 }
 
 fs::path directory_of(const fs::path& target) {
@@ -65,28 +96,53 @@ void write_file_atomically(const fs::path& target,
   files.commit();
 }
 
+int remove_stale_temporaries(const fs::path& target) {
+  const std::string prefix = temporary_prefix(target);
+  std::error_code ec;
+  fs::directory_iterator it(directory_of(target), ec), end;
+  int removed = 0;
+  for (; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= prefix.size() + 4 || name.compare(0, prefix.size(), prefix) != 0 ||
+        name.compare(name.size() - 4, 4, ".tmp") != 0 ||
+        !is_temporary_id(std::string_view(name).substr(prefix.size(), name.size() - prefix.size() - 4)))
+      continue;
+    const int fd = ::open(it->path().c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+    if (fd < 0) continue;
+    // A live writer holds the lock; the lock of a killed one went with its process.
+    if (::flock(fd, LOCK_EX | LOCK_NB) == 0 && ::unlink(it->path().c_str()) == 0) ++removed;
+    ::close(fd);
+  }
+  return removed;
+}
+
 StagedFiles::~StagedFiles() { discard(); }
 
 fs::path StagedFiles::stage(const fs::path& target) {
   require_directory(target);
   require_name_fits(target);
-  staged_.emplace_back(temporary_name(target), target);
-  return staged_.back().first;
+  remove_stale_temporaries(target);
+  const fs::path tmp = temporary_name(target);
+  const int fd = create_locked(tmp, target);
+  staged_.push_back({tmp, target, fd});
+  return tmp;
 }
 
 void StagedFiles::commit() {
   // Renaming cannot be undone for the files already moved, but the remaining temporaries
   // are still removed by discard(), so no stray half files stay behind.
   while (!staged_.empty()) {
-    rename_into_place(staged_.front().first, staged_.front().second);
+    rename_into_place(staged_.front().tmp, staged_.front().target);
+    ::close(staged_.front().lock_fd);
     staged_.erase(staged_.begin());
   }
 }
 
 void StagedFiles::discard() noexcept {
-  for (const auto& [tmp, target] : staged_) {
+  for (const Staged& s : staged_) {
     std::error_code ec;
-    fs::remove(tmp, ec);
+    fs::remove(s.tmp, ec);
+    ::close(s.lock_fd);
   }
   staged_.clear();
 }

@@ -2,7 +2,9 @@
 // Writing files so that a reader never sees half of one: every file is written under a
 // temporary name in its target directory and renamed into place only when complete.
 // rename() within one directory is atomic on POSIX file systems, so a target is either
-// the old file or the complete new one, never a mix.
+// the old file or the complete new one, never a mix. Each temporary is locked (flock) by
+// its writer while it exists; writing a target again removes the unlocked temporaries of
+// that target, which a killed run (kill -9, power loss) left behind.
 #include <filesystem>
 #include <functional>
 #include <utility>
@@ -33,7 +35,15 @@ public:
   void discard() noexcept;
 
 private:
-  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> staged_;  // tmp, target
+  struct Staged {
+    std::filesystem::path tmp, target;
+    int lock_fd;  // holds the temporary's lock until it is renamed or removed
+  };
+  std::vector<Staged> staged_;
 };
+
+// Removes the temporaries of `target` (".<name>.<id>.tmp" beside it) that no live writer
+// holds: leftovers of a killed run. Returns how many it removed. stage() calls it.
+int remove_stale_temporaries(const std::filesystem::path& target);
 
 }  // namespace subdiv

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "framework/util/checked_file_stream.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -37,7 +38,9 @@ void BufferedOutput::close() {
 }
 
 void BufferedOutput::fail(std::string_view what) {
-  throw Error(fmt::format("cannot write '{}': {} ({})", shown_, what, std::strerror(errno)));
+  const int error = errno;
+  if (error == ENOSPC || error == EDQUOT || error == EFBIG) throw Error(write_failure_text(shown_, error));
+  throw Error(fmt::format("cannot write '{}': {} ({})", shown_, what, std::strerror(error)));
 }
 
 }  // namespace subdiv

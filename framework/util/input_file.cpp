@@ -50,8 +50,13 @@ void check_input_file(const fs::path& file, std::string_view what) {
   if (!probe) throw Error(fmt::format("cannot open '{}': {}", file.string(), std::strerror(errno)));
 }
 
-std::string read_input_file(const fs::path& file, std::string_view what) {
+std::string read_input_file(const fs::path& file, std::string_view what, std::uintmax_t max_bytes) {
   check_input_file(file, what);
+  std::error_code ec;
+  if (const auto size = fs::file_size(file, ec); !ec && size > max_bytes)
+    throw Error(fmt::format("cannot read '{}': it is {} bytes ({:.1f} MB), more than the {:.0f} MB a {} file may have; "
+                            "is it the right file?",
+                            file.string(), size, double(size) / 1e6, double(max_bytes) / 1e6, what));
   std::ifstream in(file, std::ios::binary);
   std::ostringstream bytes;
   bytes << in.rdbuf();

@@ -2,6 +2,7 @@
 // Checks on a file the user names as input, before anything opens it: it must exist, be a
 // regular file (a FIFO, a device or a symlink to /dev/zero would block or never end) and
 // fit in the memory this process may still use. Every reader goes through here.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -12,7 +13,10 @@ namespace subdiv {
 // expected ("mesh", "scheme", "feature") for the fix.
 void check_input_file(const std::filesystem::path& file, std::string_view what);
 
-// The whole file, after check_input_file; throws subdiv::Error on read errors.
-std::string read_input_file(const std::filesystem::path& file, std::string_view what);
+// The whole file, after check_input_file; throws subdiv::Error on read errors. A file of
+// more than `max_bytes` is refused with its size before a byte is read (scheme and feature
+// files are small; a 1 GB sparse file was read whole before the first check).
+std::string read_input_file(const std::filesystem::path& file, std::string_view what,
+                            std::uintmax_t max_bytes = UINTMAX_MAX);
 
 }  // namespace subdiv

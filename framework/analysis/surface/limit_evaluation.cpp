@@ -107,6 +107,20 @@ LimitRows approximate(const Level& L, CentreKind kind, Index c, std::string reas
   return out;
 }
 
+// Why a vertex or face has no limit mask at any level, or null. A non-manifold vertex (on
+// an edge of three or more faces, a duplicated face, or joining two fans) stays non-manifold
+// in every refinement, so refining its neighbourhood to find an analysable one could never
+// succeed: it searched 12 levels (5-73 s on meshes of 5-8 vertices).
+const char* no_limit_reason(const Level& L, CentreKind kind, Index c) {
+  if (L.manifold()) return nullptr;
+  const char* reason = "non-manifold neighbourhood (an edge of three or more faces, a duplicated face, or fans "
+                       "joined at a vertex): no limit mask exists; the control point is used";
+  if (kind == CentreKind::Vertex) return L.non_manifold_vertex(c) ? reason : nullptr;
+  for (Index v : L.face(c))
+    if (L.non_manifold_vertex(v)) return reason;
+  return nullptr;
+}
+
 LimitRows mask_rows(const LimitMask& m, const Labelling& lab) {
   auto row = [&](const std::vector<double>& mask) {
     SparseRow r;
@@ -437,8 +451,14 @@ struct SchemeLimits::Impl {
       }
     });
     std::vector<size_t> rest;
-    for (size_t i = 0; i < count; ++i)
-      if (!matched[i]) rest.push_back(i);
+    for (size_t i = 0; i < count; ++i) {
+      if (matched[i]) continue;
+      // Refining never helps here (see no_limit_reason); answered now, not searched for.
+      if (const char* why = no_limit_reason(level, CentreKind::Vertex, which[i]))
+        out[i] = approximate(level, CentreKind::Vertex, which[i], why);
+      else
+        rest.push_back(i);
+    }
     if (rest.empty()) return out;
     if (refined)
       for (size_t i : rest) (*refined)[size_t(which[i])] = 1;
@@ -477,6 +497,7 @@ struct SchemeLimits::Impl {
     std::shared_ptr<const LimitMask> m;
     if (try_mask(L, kind, c, step, lab, out, &m)) return out;
     if (kind == CentreKind::Vertex && L.valence(c) == 0) return approximate(L, kind, c, "isolated vertex: no faces");
+    if (const char* why = no_limit_reason(L, kind, c)) return approximate(L, kind, c, why);
     if (kind == CentreKind::Face) {
       // A face on the boundary stays on it in every dual step: its limit lies on the
       // boundary curve, at the middle of its boundary edge for Chaikin curves.

@@ -28,6 +28,19 @@ struct Range {
   Range join(const Range& o) const { return {std::min(min, o.min), std::max(max, o.max)}; }
 };
 
+// The norm of a tuple whose squares overflow (coordinates beyond 1e154), computed scaled by
+// the largest magnitude and clamped to the largest double: a file's RangeMax of "inf" is
+// unreadable for SubdivKit and ParaView alike (the XML reader refuses it).
+template <typename T>
+double scaled_norm(const T* tuple, int components) {
+  double scale = 0;
+  for (int c = 0; c < components; ++c) scale = std::max(scale, std::abs(double(tuple[c])));
+  if (!std::isfinite(scale)) return std::numeric_limits<double>::max();
+  double sum = 0;
+  for (int c = 0; c < components; ++c) sum += (double(tuple[c]) / scale) * (double(tuple[c]) / scale);
+  return std::min(scale * std::sqrt(sum), std::numeric_limits<double>::max());
+}
+
 // Over `tuples` tuples of `components` values: of the values (one component) or of the
 // tuples' Euclidean norms (several), as vtkDataArray::GetRange(-1) defines it. NaN is
 // skipped, as VTK skips it.
@@ -52,6 +65,7 @@ Range range_of(const T* values, std::size_t tuples, int components) {
               v += x * x;
             }
             v = std::sqrt(v);
+            if (std::isinf(v)) v = scaled_norm(values + t * std::size_t(components), components);
           }
           if (v < range.min) range.min = v;
           if (v > range.max) range.max = v;
@@ -61,8 +75,29 @@ Range range_of(const T* values, std::size_t tuples, int components) {
       [](const Range& a, const Range& b) { return a.join(b); });
 }
 
+// The largest magnitude a range may have: VTK writes ranges with 11 significant digits, and
+// the largest double, 1.7976931348623157e308, printed so (1.7976931349e+308) reads back
+// as inf, which makes VTK's reader refuse the file. A range is metadata: clamped, not refused.
+constexpr double kLargestWrittenRange = 1.797693134e308;
+
+// Likewise below: a subnormal bound (a norm of 1e-320) parses with ERANGE, which a C++
+// stream (libstdc++'s num_get) takes for a failure, and VTK parses with streams. Such a bound
+// moves outwards to 0 or to just above the smallest normal double, so that the range still
+// holds every value.
+constexpr double kSmallestWrittenRange = 2.2250738586e-308;
+
+double clamped_min(double x) {
+  if (std::abs(x) >= kSmallestWrittenRange || x == 0) return std::clamp(x, -kLargestWrittenRange, kLargestWrittenRange);
+  return x < 0 ? -kSmallestWrittenRange : 0.0;
+}
+
+double clamped_max(double x) {
+  if (std::abs(x) >= kSmallestWrittenRange || x == 0) return std::clamp(x, -kLargestWrittenRange, kLargestWrittenRange);
+  return x > 0 ? kSmallestWrittenRange : 0.0;
+}
+
 void store(vtkDataArray& array, const Range& range) {
-  const double values[2] = {range.min, range.max};
+  const double values[2] = {clamped_min(range.min), clamped_max(range.max)};
   vtkInformation* info = array.GetInformation();
   if (array.GetNumberOfComponents() == 1) {
     vtkNew<vtkInformationVector> per_component;

@@ -31,6 +31,10 @@ public:
 class FastXMLPolyDataWriter : public vtkXMLPolyDataWriter {
 public:
   static FastXMLPolyDataWriter* New();
+  // Writes into `stream` instead of a file VTK opens itself (vtkXMLWriter's protected
+  // Stream): write_polydata_file hands it a stream that never fails (checked_file_stream.h),
+  // because VTK's writer crashes when its own stream fails on a full disk.
+  void WriteToStream(std::ostream* stream) { this->Stream = stream; }
 
 protected:
   FastXMLPolyDataWriter();

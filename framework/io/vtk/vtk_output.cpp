@@ -1,5 +1,6 @@
 #include "framework/io/vtk/vtk_output.h"
 
+#include <regex>
 #include <set>
 #include <string>
 #include <system_error>
@@ -10,6 +11,7 @@
 #include <vtkPolyData.h>
 
 #include "framework/io/vtk/vtk_polydata.h"
+#include "framework/io/vtk/vtk_xml_text.h"
 #include "framework/util/atomic_file.h"
 #include "framework/util/buffered_output.h"
 #include "framework/util/error.h"
@@ -18,20 +20,6 @@ namespace subdiv {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string xml_escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 struct Entry {
   int level;
@@ -45,7 +33,7 @@ void write_collection(const fs::path& file, const fs::path& shown, const std::ve
             "  <Collection>\n");
   for (const Entry& e : entries)
     out.print("    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n", e.level,
-              xml_escaped(e.file));
+              io_detail::xml_attribute_text(e.file));
   out.print("  </Collection>\n</VTKFile>\n");
   out.close();
 }
@@ -72,6 +60,20 @@ bool make_directory(const fs::path& dir, std::string_view context) {
   return created;
 }
 
+// The level files of an earlier run that wrote more levels (or others) into the same folder:
+// the index no longer lists them, so they would only mislead. Removed after the new index
+// is in place, so the index never names a missing file.
+void remove_stale_levels(const fs::path& dir, const std::set<std::string>& written) {
+  static const std::regex level_file("level_-?[0-9]+\\.vtp");
+  std::error_code ec;
+  std::vector<fs::path> stale;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (std::regex_match(name, level_file) && !written.count(name)) stale.push_back(it->path());
+  }
+  for (const fs::path& file : stale) fs::remove(file, ec);
+}
+
 }  // namespace
 
 void write_vtp(const fs::path& file, const OutputLevel& level, const VtkWriteOptions& options) {
@@ -91,20 +93,24 @@ void write_pvd(const fs::path& pvd, std::span<const OutputLevel> levels, const V
     throw Error(fmt::format("{}: directory '{}' does not exist; create it first", context,
                             parent.string()));
   const std::string folder = pvd.stem().string() + "_levels";
+  io_detail::require_xml_text(folder, "the levels' folder name", context);  // the index names it
   const fs::path dir = parent / folder;
   const bool created = make_directory(dir, context);
   try {
     StagedFiles staged;  // removes every temporary if anything below throws
     std::vector<Entry> entries;
+    std::set<std::string> names;
     for (const OutputLevel& level : levels) {
       const std::string name = fmt::format("level_{}.vtp", level.level);
       const fs::path target = dir / name;
       const auto poly = io_detail::make_polydata(level, options, io_detail::LevelMemory::Share);
       io_detail::write_polydata_file(*poly, staged.stage(target), target, options);
       entries.push_back({level.level, folder + "/" + name});
+      names.insert(name);
     }
     write_collection(staged.stage(pvd), pvd, entries);
     staged.commit();  // level files first, the .pvd last
+    remove_stale_levels(dir, names);
   } catch (...) {
     if (created) fs::remove(dir, ec);  // only removes it if still empty
     throw;

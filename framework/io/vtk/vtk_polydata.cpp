@@ -33,6 +33,8 @@
 #include "framework/io/vtk/vtk_array_ranges.h"
 #include "framework/io/vtk/vtk_block_compressor.h"
 #include "framework/io/vtk/vtk_fast_xml_writer.h"
+#include "framework/io/vtk/vtk_xml_text.h"
+#include "framework/util/checked_file_stream.h"
 #include "framework/util/error.h"
 
 namespace subdiv::io_detail {
@@ -63,6 +65,7 @@ CellCounts cell_counts(const MeshData& mesh) {
 
 void check_array(const DataArray& a, std::size_t tuples, const char* per, std::string_view context) {
   if (a.name.empty()) throw Error(fmt::format("{}: a {} data array has no name", context, per));
+  require_xml_text(a.name, fmt::format("{} data array", per), context);
   if (a.components < 1)
     throw Error(fmt::format("{}: array '{}' has {} components; it needs at least 1", context,
                             a.name, a.components));
@@ -298,8 +301,31 @@ vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level, const VtkWr
   return poly;
 }
 
+namespace {
+
+// VTK's writer puts names between quotes as they are; escaped here, its XML reader (and
+// ParaView's) gives back the names themselves. The arrays are the polydata's own, made
+// for this write (make_polydata), so renaming them changes no caller's data.
+void escape_names(vtkFieldData* data) {
+  if (!data) return;
+  for (int i = 0; i < data->GetNumberOfArrays(); ++i)
+    if (vtkAbstractArray* a = data->GetAbstractArray(i); a && a->GetName()) {
+      const std::string escaped = xml_attribute_text(a->GetName());
+      if (escaped == a->GetName()) continue;
+      a->SetName(escaped.c_str());
+      // Renaming marks the array modified, which drops its cached range; VTK's own
+      // computation would write an overflowing norm as Infinity (found by fuzz_write_read).
+      cache_array_range(vtkDataArray::SafeDownCast(a));
+    }
+}
+
+}  // namespace
+
 void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path& shown,
                          const VtkWriteOptions& options, BlockCounts* counts) {
+  escape_names(poly.GetPointData());
+  escape_names(poly.GetCellData());
+  escape_names(poly.GetFieldData());
   std::string errors;
   vtkNew<vtkCallbackCommand> observer;
   observer->SetClientData(&errors);
@@ -310,7 +336,10 @@ void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path
   vtkNew<FastXMLPolyDataWriter> writer;
   writer->AddObserver(vtkCommand::ErrorEvent, observer);
   writer->SetInputData(&poly);
-  writer->SetFileName(file.c_str());
+  // No file name: VTK neither opens nor deletes anything; the stream reports write failures
+  // (full disk) after VTK is done with it.
+  CheckedFileStream stream(file, shown);
+  writer->WriteToStream(&stream);
   // By default inline binary (base64 inside each DataArray), not raw appended data: the file
   // is then well-formed XML, which every ParaView reads, including Debian 12's ParaView 5.11
   // whose VTK fails on appended data with the system's Expat (see expat_reparse_fix.cpp).
@@ -324,7 +353,10 @@ void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path
   writer->SetCompressor(make_block_compressor(options.compressor, options.compression_level, kBlockSize,
                                               contiguous_arrays(poly), counts));
   writer->SetHeaderTypeToUInt64();  // blocks over 4 GB on large levels
-  if (writer->Write() != 1 || writer->GetErrorCode() != 0 || !errors.empty())
+  const int written = writer->Write();
+  writer->WriteToStream(nullptr);
+  stream.close();  // a failed write is the cause of anything VTK reports after it
+  if (written != 1 || writer->GetErrorCode() != 0 || !errors.empty())
     throw Error(fmt::format("cannot write '{}': VTK reports: {}", shown.string(),
                             errors.empty() ? "an unknown error" : errors));
 }

@@ -118,13 +118,27 @@ vtkSmartPointer<vtkPolyData> load_legacy(const fs::path& file) {
   return reader->GetOutput();
 }
 
+// Every id of `kind` cell `cell` names a point: checked here, on VTK's 64-bit ids, because
+// the 32-bit indices they become would wrap (2^32 + 6 became vertex 6).
+void check_ids(const vtkIdType* ids, vtkIdType size, vtkIdType points, const char* kind, vtkIdType cell,
+               const fs::path& file) {
+  for (vtkIdType i = 0; i < size; ++i)
+    if (ids[i] < 0 || ids[i] >= points)
+      fail(file, fmt::format("{} {} refers to point {}, but the file has {} points (0 to {}); the connectivity array "
+                             "is damaged",
+                             kind, cell, ids[i], points, points - 1));
+}
+
 // Appends every cell of `cells` to a CSR pair.
-void append_cells(vtkCellArray* cells, std::vector<Index>& offsets, std::vector<Index>& indices) {
+void append_cells(vtkCellArray* cells, vtkIdType points, std::vector<Index>& offsets, std::vector<Index>& indices,
+                  const fs::path& file) {
   auto it = vtk::TakeSmartPointer(cells->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
+  vtkIdType cell = 0;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell) {
     vtkIdType size;
     const vtkIdType* ids;
     it->GetCurrentCell(size, ids);
+    check_ids(ids, size, points, "polygon", cell, file);
     indices.insert(indices.end(), ids, ids + size);
     offsets.push_back(Index(indices.size()));
   }
@@ -132,12 +146,14 @@ void append_cells(vtkCellArray* cells, std::vector<Index>& offsets, std::vector<
 
 // Strip p0 p1 p2 p3 ... gives triangles (p0 p1 p2), (p2 p1 p3), ...: every second one is
 // flipped so that all keep the strip's orientation.
-void append_strips(vtkCellArray* strips, MeshData& mesh) {
+void append_strips(vtkCellArray* strips, vtkIdType points, MeshData& mesh, const fs::path& file) {
   auto it = vtk::TakeSmartPointer(strips->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
+  vtkIdType cell = 0;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell) {
     vtkIdType size;
     const vtkIdType* ids;
     it->GetCurrentCell(size, ids);
+    check_ids(ids, size, points, "triangle strip", cell, file);
     for (vtkIdType i = 0; i + 2 < size; ++i) {
       const bool odd = i % 2 != 0;
       mesh.face_vertices.insert(mesh.face_vertices.end(),
@@ -150,7 +166,7 @@ void append_strips(vtkCellArray* strips, MeshData& mesh) {
 
 // Line cells are polylines, except in files from write_vtp, which marks crease edges with
 // cell_kind 2 and stores their sharpness; reading those back keeps .vtp lossless.
-void append_lines(vtkPolyData& poly, MeshData& mesh) {
+void append_lines(vtkPolyData& poly, MeshData& mesh, const fs::path& file) {
   vtkDataArray* kind = poly.GetCellData()->GetArray("cell_kind");
   vtkDataArray* sharpness = poly.GetCellData()->GetArray("sharpness");
   // Arrays shorter than the cells (a damaged file) would be read past their end.
@@ -162,6 +178,7 @@ void append_lines(vtkPolyData& poly, MeshData& mesh) {
     vtkIdType size;
     const vtkIdType* ids;
     it->GetCurrentCell(size, ids);
+    check_ids(ids, size, poly.GetNumberOfPoints(), "line", cell - poly.GetNumberOfVerts(), file);
     if (tagged && size == 2 && kind->GetTuple1(cell) == 2) {
       mesh.creases.push_back({Index(ids[0]), Index(ids[1]), sharpness->GetTuple1(cell)});
       continue;
@@ -265,9 +282,11 @@ MeshData polydata_to_mesh_data(vtkPolyData& poly, const fs::path& file) {
   const vtkIdType n = poly.GetNumberOfPoints();
   mesh.positions.resize(std::size_t(n) * 3);
   for (vtkIdType v = 0; v < n; ++v) poly.GetPoint(v, &mesh.positions[3 * v]);
-  append_cells(poly.GetPolys(), mesh.face_offsets, mesh.face_vertices);
-  append_strips(poly.GetStrips(), mesh);
-  append_lines(poly, mesh);
+  if (n > std::numeric_limits<Index>::max())
+    fail(file, fmt::format("it has {} points, more than SubdivKit's 32-bit indices hold", n));
+  append_cells(poly.GetPolys(), n, mesh.face_offsets, mesh.face_vertices, file);
+  append_strips(poly.GetStrips(), n, mesh, file);
+  append_lines(poly, mesh, file);
   restore_corners(poly, mesh);
   read_user_arrays(poly, mesh, file);
   return mesh;

@@ -106,6 +106,32 @@ private:
       if (!tuples || !parse_integer(*tuples, v) || v < 0 || v > kMaxCount)
         fail(a, fmt::format("a field data array needs NumberOfTuples, a whole number from 0 to {}", kMaxCount));
     });
+    // String arrays: VTK's reader crashes on point or cell strings fewer than the tuples
+    // (found by hand: one string for three points), and SubdivKit refines numbers only, so
+    // they are refused before VTK parses them, as the reader would refuse them after. Field
+    // data (labels, which SubdivKit does not read) may hold strings: sized by NumberOfTuples.
+    std::set<std::size_t> field_arrays;
+    for_each_array_in(head, arrays, "FieldData", [&](std::size_t, std::size_t a) { field_arrays.insert(a); });
+    for (const std::size_t a : arrays) {
+      const std::string_view tag = tag_at(head, a);
+      if (xml_attribute(tag, "type").value_or("") != "String" || field_arrays.count(a)) continue;
+      const std::size_t point = head.rfind("<PointData", a), cell = head.rfind("<CellData", a);
+      const bool is_point = point != std::string_view::npos && (cell == std::string_view::npos || point > cell);
+      fail(a, fmt::format("{} array '{}' is not numeric (a String array); SubdivKit refines numbers only: remove it "
+                          "or convert it",
+                          is_point ? "point" : "cell", shortened(xml_attribute(tag, "Name").value_or(""))));
+    }
+    // Cell connectivity and offsets are indices: VTK converts any type silently (Float64
+    // 3.7 became vertex 3), so only integer types are taken.
+    for (const std::string_view section : {"Verts", "Lines", "Strips", "Polys"})
+      for_each_array_in(head, arrays, section, [&](std::size_t, std::size_t a) {
+        const std::string_view tag = tag_at(head, a);
+        const std::string_view type = xml_attribute(tag, "type").value_or("");
+        if (type.rfind("Int", 0) != 0 && type.rfind("UInt", 0) != 0)
+          fail(a, fmt::format("<{}> array '{}' has type {}; cell connectivity and offsets must have an integer type "
+                              "(Int32 or Int64)",
+                              section, shortened(xml_attribute(tag, "Name").value_or("")), shortened(type)));
+      });
     // VTK creates one array per name but reads every element: a second array of the same
     // name in one section made it read into an array it never created (a null
     // dereference, found by fuzz_read_vtp).
