@@ -1,9 +1,6 @@
 #include "framework/pipeline/thread_limit.h"
 
-#include <algorithm>
-#include <sched.h>
 #include <tbb/global_control.h>
-#include <thread>
 
 namespace subdiv {
 
@@ -11,16 +8,11 @@ struct ThreadLimit::Control {
   tbb::global_control control;
 };
 
-int available_cores() {
-  cpu_set_t set;
-  if (sched_getaffinity(0, sizeof(set), &set) == 0) return std::max(1, CPU_COUNT(&set));
-  return std::max(1, int(std::thread::hardware_concurrency()));
-}
-
-ThreadLimit::ThreadLimit(int threads) {
-  if (threads <= 0) return;
-  threads_ = std::min(threads, available_cores());
-  control_.reset(new Control{tbb::global_control(tbb::global_control::max_allowed_parallelism, size_t(threads_))});
+ThreadLimit::ThreadLimit(long long threads, const std::string& option)
+    : count_(capped_thread_count(threads, option)) {
+  if (count_.threads > 0)
+    control_.reset(
+        new Control{tbb::global_control(tbb::global_control::max_allowed_parallelism, size_t(count_.threads))});
 }
 
 ThreadLimit::~ThreadLimit() = default;

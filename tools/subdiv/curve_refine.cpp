@@ -1,4 +1,5 @@
 #include "curve_refine.h"
+#include "framework/pipeline/thread_limit.h"
 #include "framework/pipeline/memory_guard.h"
 #include "nonlinear_curve.h"
 
@@ -7,7 +8,6 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <memory>
-#include <tbb/global_control.h>
 
 #include "framework/io/formats.h"
 #include "framework/curve/curve_refine.h"
@@ -80,9 +80,8 @@ void check_curve_size(const CurveLevel& base, int arity, int levels) {
 void refine_curves_command(const CurveRefineRequest& a) {
   const auto t0 = std::chrono::steady_clock::now();
   check_curve_output(a.output);
-  std::unique_ptr<tbb::global_control> thread_limit;
-  if (a.threads > 0)
-    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
+  const ThreadLimit thread_limit(a.threads, "--threads");
+  if (!thread_limit.note().empty()) fmt::print(stderr, "subdiv: note: {}\n", thread_limit.note());
   const auto scheme = load_curve(a.scheme, a.params);
   if (scheme->nonlinear) return refine_nonlinear_curves(a, *scheme);
   const MeshData mesh = read_mesh(a.mesh);

@@ -8,13 +8,13 @@
 #include <limits>
 #include <optional>
 #include <sstream>
-#include <tbb/global_control.h>
 
 #include "commands.h"
 #include "shared_options.h"
 #include "curve_interpolate.h"
 #include "curve_refine.h"
 #include "interpolate_common.h"
+#include "framework/pipeline/thread_limit.h"
 #include "framework/interpolation/limit_selection.h"
 #include "framework/interpolation/progressive.h"
 #include "framework/io/formats.h"
@@ -157,9 +157,8 @@ void run(const InterpolateArgs& a) {
       throw Error("--refined and -o name the same file; give two names");
   }
   if (a.max_iterations < 0) throw Error("--max-iter must be 0 or more");
-  std::unique_ptr<tbb::global_control> thread_limit;
-  if (a.threads > 0)
-    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
+  const ThreadLimit thread_limit(a.threads, "--threads");
+  if (!thread_limit.note().empty()) fmt::print(stderr, "subdiv: note: {}\n", thread_limit.note());
 
   // --lambda: one number (the scheme's parameter, range-checked by the loader) or a file of
   // per-vertex values (--vertex-param lambda=FILE).

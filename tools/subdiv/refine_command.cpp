@@ -148,7 +148,8 @@ void run(const RefineArgs& a) {
   check_piece_options(a);
   if (!a.in_pieces()) check_output_path(a.output);
   const OutputChoice output = output_choice(a.output_format);  // a bad --arrays is refused before any work
-  const ThreadLimit threads(a.threads);
+  const ThreadLimit threads(a.threads, "--threads");
+  if (!threads.note().empty() && !a.quiet) fmt::print(stderr, "subdiv: note: {}\n", threads.note());
   Progress progress(a.timings);
   RefineRequest request = refine_request(a, output, progress);
   PreparedRefinement prepared = prepare_refinement(request);

@@ -147,7 +147,10 @@ TEST_CASE("option names: every choice reads back, and a wrong one lists them in 
 TEST_CASE("the thread limit is capped at the cores this process may use, and 0 means no limit") {
   CHECK(ThreadLimit(0).threads() == 0);
   CHECK(ThreadLimit(1).threads() == 1);
-  CHECK(ThreadLimit(1 << 30).threads() == available_cores());
+  const ThreadLimit many(1 << 30);
+  CHECK(many.threads() == available_cores());
+  CHECK(many.note().find("is more than the") != std::string::npos);
+  CHECK_THROWS_AS(ThreadLimit(-1), Error);
 }
 
 TEST_CASE("described levels leave hole faces and their cell values out") {
