@@ -63,7 +63,9 @@ TEST_CASE("VTK XML: array names with quotes, markup and line breaks are written 
     write_mesh(dir / file, mesh);
   }
   const fs::path vtp = dir / "names.vtp";
-  CHECK(vtkXMLUtilities::ReadElementFromFile(vtp.c_str()) != nullptr);  // well-formed XML
+  vtkSmartPointer<vtkXMLDataElement> parsed;  // the caller owns what ReadElementFromFile returns
+  parsed.TakeReference(vtkXMLUtilities::ReadElementFromFile(vtp.c_str()));
+  CHECK(parsed != nullptr);  // well-formed XML
   CHECK(names_of(read_mesh(vtp).point_data) == std::vector<std::string>{name});
   const auto poly = vtk_read(vtp);
   REQUIRE(poly->GetPointData()->GetArray(name.c_str()) != nullptr);
