@@ -13,7 +13,6 @@
 #include "framework/io/vertex_values.h"
 #include "framework/pipeline/limit_arrays.h"
 #include "framework/pipeline/memory_guard.h"
-#include "framework/pipeline/option_names.h"
 #include "framework/util/option_spelling.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
@@ -55,8 +54,8 @@ std::string triangles_choice(const RefineRequest& r, const SchemeSequence& given
   if (r.shape.smooth_triangles) {
     if (!has_parameter(given, "triangles"))
       throw OptionError(fmt::format("{{smooth_triangles}}: scheme '{}' has no 'triangles' parameter; smooth "
-                                    "triangles are a Catmull-Clark option (OpenSubdiv's TRI_SUB_SMOOTH), e.g. "
-                                    "{{scheme}} catmull-clark",
+                                    "triangles (OpenSubdiv's TRI_SUB_SMOOTH) need a scheme that declares one "
+                                    "({{scheme_list}} lists each scheme's parameters)",
                                     label));
     return "smooth";
   }
@@ -134,7 +133,7 @@ void check_request(const RefineRequest& r) {
 Level tagged_base(const RefineRequest& r, const MeshData& mesh, std::vector<std::string>& notes) {
   if (mesh.face_count() == 0)
     throw Error(fmt::format("{}: the mesh has no faces to refine{}", r.mesh_name,
-                            mesh.line_count() ? "; its polylines need a curve scheme (e.g. chaikin)" : ""));
+                            mesh.line_count() ? "; its polylines need a curve scheme" : ""));
   Level base = level_from_mesh(mesh, r.mesh_name);
   if (!r.feature_file.empty()) {
     const FeatureTags tags = read_feature_file(r.feature_file);

@@ -23,7 +23,7 @@ namespace subdiv {
 // Where the scheme comes from: a registered name, a .json path or a sequence "A:1,B:3"
 // (each name with its levels; one without :N takes the rest), or a scheme file's JSON text.
 struct SchemeSource {
-  std::string text = "catmull-clark";
+  std::string text;  // required: the request names its scheme
   bool is_json_text = false;
   std::string label;               // names JSON text in messages
   ParameterOverrides parameters;   // name -> value, over the scheme's defaults
