@@ -23,6 +23,9 @@ bash scripts/setup.sh
 grep -q "SUBDIV_VTK_PROVIDER_FOUND:INTERNAL=paraview" build/CMakeCache.txt ||
   { echo "ci-paraview.sh: the build did not use ParaView's VTK" >&2; exit 1; }
 bash scripts/test.sh
+# The packages of this configuration, paraview-subdivkit included: installed, the plugin
+# loaded by pvbatch at start without LoadPlugin or PV_PLUGIN_PATH, removed (issue 34).
+bash scripts/ci-install.sh
 # ParaView itself opens what `subdiv` wrote (its reader, its Expat).
 pvpython -c "
 from paraview.simple import OpenDataFile

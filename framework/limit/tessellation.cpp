@@ -4,11 +4,11 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <map>
-#include <tbb/parallel_for.h>
 #include <tuple>
 
 #include "framework/limit/face_domain.h"
 #include "framework/util/error.h"
+#include "framework/util/parallel_for_all.h"
 
 namespace subdiv {
 namespace {
@@ -163,7 +163,7 @@ Tessellation tessellate(const LimitSurface& surface, std::span<const double> pos
   }
   Tessellation out = std::move(b.out);
   out.normals.assign(out.positions.size(), 0.0);
-  tbb::parallel_for(Index(0), out.point_count(), [&](Index i) {
+  parallel_for_all(out.point_count(), [&](Index i) {
     const Index f = out.uv_face[size_t(i)];
     const double u = out.uv[size_t(2 * i)], v = out.uv[size_t(2 * i + 1)];
     const LimitSample p = surface.evaluate(f, u, v, positions, 3);

@@ -33,7 +33,7 @@ SH
 # Python writes its byte-code (__pycache__) as it would for a user: removal must clean it.
 env -u SUBDIV_SCHEME_PATH -u SUBDIV_PLUGIN_PATH -u SUBDIV_NO_INSTALLED_PLUGINS -u PYTHONPATH -u PYTHONDONTWRITEBYTECODE \
   WORK="$work" PREFIX=/usr CMAKE_COMMAND="${CMAKE_COMMAND:-cmake}" CMAKE_GENERATOR="${CMAKE_GENERATOR:-Unix Makefiles}" \
-  PYTHON="${PYTHON:-/usr/bin/python3}" PVBATCH="${PVBATCH:-}" \
+  PYTHON="${PYTHON:-/usr/bin/python3}" PVBATCH="${PVBATCH:-}" PV_AUTOLOAD=1 \
   sh "$work/hide_trees.sh" "$source_dir" "$build_dir" "$work/cwd" sh "$work/install_and_check.sh" ||
   { apt-get purge -y -qq $packages > /dev/null 2>&1 || true; fail "the installed packages (above)"; }
 

@@ -3,7 +3,8 @@
 # deb_test.sh: the Debian packages in /usr), run where the source and build trees cannot be
 # seen: only the installed PREFIX and copies in WORK (cube.obj, template/).
 # Environment: WORK, PREFIX, CMAKE_COMMAND, CMAKE_GENERATOR, PYTHON (may be empty: no
-# Python check), PVBATCH (may be empty: no ParaView check).
+# Python check), PVBATCH (may be empty: no ParaView check), PV_AUTOLOAD (1: the plugin must
+# load when ParaView starts, as the Debian package sets up).
 set -eu
 fail() { echo "installed_checks.sh: FAILED: $*" >&2; exit 1; }
 prefix="$PREFIX"
@@ -61,5 +62,23 @@ refine.UpdatePipeline()
 assert refine.GetDataInformation().GetNumberOfCells() == 4 * 96, refine.GetDataInformation().GetNumberOfCells()
 PY
   PV_PLUGIN_PATH="$(dirname "$plugin")" "$PVBATCH" "$WORK/pv_check.py" || fail "the installed ParaView plugin"
+fi
+if [ -n "${PVBATCH:-}" ] && [ -n "$plugin" ] && [ "${PV_AUTOLOAD:-0}" = 1 ]; then
+  # The package's paraview.conf beside ParaView's programs: loaded at start, no LoadPlugin
+  # and no PV_PLUGIN_PATH; ParaView's own plugins are still offered.
+  echo "-- pvbatch: the plugin loaded at start (paraview.conf), ParaView's own plugins still listed"
+  cat > "$WORK/pv_autoload.py" <<'PY'
+from paraview import simple
+from paraview.modules.vtkRemotingCore import vtkPVPluginTracker
+tracker = vtkPVPluginTracker.GetInstance()
+names = [tracker.GetPluginName(i) for i in range(tracker.GetNumberOfPlugins())]
+assert "SubdivKit" in names, names
+assert "GMVReader" in names, names
+refine = simple.SubdivKitRefine(Input=simple.Sphere(), Scheme="loop", Levels=1)
+refine.UpdatePipeline()
+assert refine.GetDataInformation().GetNumberOfCells() == 4 * 96, refine.GetDataInformation().GetNumberOfCells()
+print("pvbatch: SubdivKit loaded at start among", len(names), "plugins")
+PY
+  env -u PV_PLUGIN_PATH -u PV_PLUGIN_CONFIG_FILE "$PVBATCH" "$WORK/pv_autoload.py" || fail "the plugin is not loaded when ParaView starts"
 fi
 echo "-- installed_checks.sh: ok"

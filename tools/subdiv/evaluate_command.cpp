@@ -8,7 +8,6 @@
 #include <fstream>
 #include <sstream>
 #include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
 
 #include "commands.h"
 #include "shared_options.h"
@@ -22,6 +21,7 @@
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/atomic_file.h"
 #include "framework/util/error.h"
+#include "framework/util/parallel_for_all.h"
 
 namespace subdiv::cli {
 namespace {
@@ -148,7 +148,7 @@ void run(const EvaluateArgs& a) {
   }
   const std::vector<Query> queries = read_points(a.at, surface);
   std::vector<LimitSample> samples(queries.size());
-  tbb::parallel_for(size_t(0), queries.size(), [&](size_t i) {
+  parallel_for_all(queries.size(), [&](size_t i) {
     samples[i] = surface.evaluate(queries[i].face, queries[i].u, queries[i].v, mesh.positions, 3, a.derivatives > 0);
   });
   write_csv(a.output, queries, samples, a.derivatives);

@@ -16,6 +16,7 @@
 #include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
+#include "framework/util/parallel_for_all.h"
 
 namespace subdiv {
 namespace {
@@ -484,7 +485,7 @@ struct SchemeLimits::Impl {
                         [&](size_t k) { out[where[k]] = pulled_back(deeper[k], h.stencils[0]); });
       return out;
     }
-    tbb::parallel_for(size_t(0), rest.size(), [&](size_t k) {
+    parallel_for_all(rest.size(), [&](size_t k) {
       const size_t i = rest[k];
       Labelling local;
       out[i] = limit_at(level, CentreKind::Vertex, which[i], step, depth, local);
