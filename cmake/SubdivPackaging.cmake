@@ -5,7 +5,8 @@
 #   dev      -> libsubdivkit-dev      headers, .so links, CMake package (find_package(SubdivKit))
 #   tools    -> subdivkit-tools       `subdiv` and its man page (help2man from --help)
 #   python   -> python3-subdivkit     the subdivkit module, in /usr/lib/python3/dist-packages
-#   ParaView's components (the plugin, its module, its .plugins.xml) -> paraview-subdivkit,
+#   paraview_plugin, paraview_autoload (the plugin, its module, its .plugins.xml, and the
+#              paraview.conf that loads it at start) -> paraview-subdivkit,
 #              when the ParaView plugin is built (SubdivKit's VTK is ParaView's)
 # Depends come from dpkg-shlibdeps (Debian's names and versions of the libraries each
 # package links) plus the packages of this build that each one needs.
@@ -80,11 +81,16 @@ set(CPACK_DEBIAN_PYTHON_PACKAGE_CONTROL_EXTRA ${PROJECT_SOURCE_DIR}/cmake/debian
 set(CPACK_COMPONENT_PYTHON_DESCRIPTION "SubdivKit: Python 3 module
  subdivkit refines, analyses and evaluates subdivision schemes over NumPy arrays.")
 
-# Everything else was installed by ParaView's plugin functions (plugins/paraview): one package.
+# The ParaView plugin (plugins/paraview): its library and module, its .plugins.xml and the
+# paraview.conf that loads it at start, one package.
 get_cmake_property(all_components COMPONENTS)
 set(subdiv_own_components lib dev tools python)
-set(paraview_components ${all_components})
-list(REMOVE_ITEM paraview_components ${subdiv_own_components})
+set(paraview_components "")
+foreach(component IN ITEMS paraview_plugin paraview_autoload)
+  if(component IN_LIST all_components)
+    list(APPEND paraview_components ${component})
+  endif()
+endforeach()
 set(CPACK_COMPONENTS_ALL ${subdiv_own_components})
 if(TARGET SubdivKit AND paraview_components)
   foreach(component IN LISTS paraview_components)
