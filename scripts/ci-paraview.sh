@@ -7,16 +7,32 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export DEBIAN_FRONTEND=noninteractive
+source scripts/apt-packages.sh
+checkout=$PWD
+# The machine is left as the stage found it: where ParaView was not installed before, it is
+# removed at the end and Debian's VTK comes back, so that the next run's first stage builds
+# as on a fresh Debian 12 machine again.
+restore_debian_vtk() {
+  echo "== ParaView stage: removing ParaView again, reinstalling Debian's VTK (scripts/install-deps.sh)"
+  apt-get remove -y -qq paraview python3-paraview paraview-dev > /dev/null
+  apt-get autoremove -y -qq > /dev/null
+  SUBDIV_VTK=debian bash "$checkout/scripts/install-deps.sh" > /dev/null
+}
+had_paraview=0
+installed python3-paraview && had_paraview=1
 echo "== ParaView stage: installing paraview and python3-paraview (removes Debian's VTK)"
 apt-get update -qq
 apt-get install -y -qq --no-install-recommends paraview python3-paraview > /dev/null  # setup.sh adds paraview-dev, xvfb
-source scripts/apt-packages.sh
 if installed libvtk9-dev; then
   echo "ci-paraview.sh: libvtk9-dev is still installed; this stage would not test ParaView's VTK" >&2
   exit 1
 fi
 work=$(mktemp -d "${TMPDIR:-/tmp}/subdivkit-paraview.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+cleanup() {
+  rm -rf "$work"
+  [ "$had_paraview" = 1 ] || restore_debian_vtk
+}
+trap cleanup EXIT
 git clone -q . "$work/subdivkit"
 cd "$work/subdivkit"
 bash scripts/setup.sh
