@@ -177,6 +177,19 @@ std::string limit_note(const RefineRequest& r, const LimitResult& limit) {
                      limit.approximate_normals, limit.exact.size(), fmt::join(limit.approximate_reasons, "; "));
 }
 
+// Finite coordinates can leave double range under a scheme whose weights are not all
+// positive (butterfly's -1/16): refused here, for every front-end, rather than written.
+void check_refined_points(const LevelData& refined, int level, const std::vector<double>& base, const RefineRequest& r) {
+  const auto bad = std::find_if(refined.positions.begin(), refined.positions.end(), [](double x) { return !std::isfinite(x); });
+  if (bad == refined.positions.end()) return;
+  double largest = 0;
+  for (double x : base) largest = std::max(largest, std::abs(x));
+  throw Error(fmt::format("{}: level {}: refined point {} has a non-finite coordinate ({}): the input's coordinates "
+                          "(up to {:g}) leave the range of double precision under the scheme's weights; scale the mesh "
+                          "down (e.g. to unit size) and the result back up",
+                          r.mesh_name, level, (bad - refined.positions.begin()) / 3, *bad, largest));
+}
+
 }  // namespace
 
 PreparedRefinement prepare_refinement(RefineRequest& r) {
@@ -224,6 +237,7 @@ std::vector<LevelData> refine_level_data(const PreparedRefinement& p, const Hier
   for (int l = 0; l < seq.total_levels; ++l) {
     say(r, fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
     levels.push_back(next_level_data(seq.runs, h, l, levels.back(), options));
+    check_refined_points(levels.back(), l + 1, mesh.positions, r);
     if (!r.keep_all_levels) levels[size_t(l)] = {};
   }
   for (const FaceVaryingArray& a : mesh.face_varying) {

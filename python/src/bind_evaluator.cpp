@@ -111,10 +111,9 @@ py::array_t<double> evaluate(PreparedRefinement& e, py::handle points) {
 }  // namespace
 
 void bind_evaluator(py::module_& m) {
-  py::class_<PreparedRefinement>(
-      m, "_Evaluator", "A surface's topology refined once, for repeated evaluation (subdivkit.Evaluator wraps it).")
-      .def(py::init(&make_evaluator), py::arg("mesh"), py::arg("scheme"), py::arg("params"), py::arg("levels"),
-           py::arg("boundary"), py::arg("crease_method"), py::arg("threads"), py::arg("start_level"))
+  auto evaluator = py::class_<PreparedRefinement>(
+      m, "_Evaluator", "A surface's topology refined once, for repeated evaluation (subdivkit.Evaluator wraps it).");
+  evaluator
       .def("evaluate", &evaluate, py::arg("points"),
            "(base points, c) float64 -> (finest points, c) float64, without the GIL.")
       .def("topology", &PreparedRefinement::topology,
@@ -122,6 +121,10 @@ void bind_evaluator(py::module_& m) {
       .def_property_readonly("levels", [](const PreparedRefinement& e) { return e.levels(); })
       .def_property_readonly("n_base_points", [](const PreparedRefinement& e) { return e.base_count(); })
       .def_property_readonly("n_points", [](const PreparedRefinement& e) { return e.finest_count(); });
+  refuse_bare_new(evaluator, "subdivkit.Evaluator(mesh, scheme, ...) prepares one");
+  m.def("_prepare_evaluator", &make_evaluator, py::arg("mesh"), py::arg("scheme"), py::arg("params"),
+        py::arg("levels"), py::arg("boundary"), py::arg("crease_method"), py::arg("threads"), py::arg("start_level"),
+        "The _Evaluator of subdivkit.Evaluator.");
 }
 
 }  // namespace subdivkit

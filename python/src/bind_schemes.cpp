@@ -39,7 +39,7 @@ std::string text_from_dict(const py::dict& d) {
 }  // namespace
 
 void bind_schemes(py::module_& m) {
-  py::class_<SchemeHandle, std::shared_ptr<SchemeHandle>>(m, "Scheme", R"doc(
+  auto scheme = py::class_<SchemeHandle, std::shared_ptr<SchemeHandle>>(m, "Scheme", R"doc(
 A subdivision scheme: a surface scheme (refines polygon meshes) or a curve scheme (refines
 polylines), loaded from a built-in name, a .json file, a dict or JSON text.
 
@@ -121,6 +121,7 @@ Useful in notebooks: write the rules inline, refine, analyse, change a weight, r
         for (const auto& [k, v] : h.overrides) params += fmt::format(", {}={}", k, v);
         return fmt::format("subdivkit.Scheme('{}', kind='{}'{})", h.name(), h.kind, params);
       });
+  refuse_bare_new(scheme, "Scheme.load(name_or_path), Scheme.from_json(text) or Scheme.from_dict(d) makes one");
 
   m.def(
       "schemes",

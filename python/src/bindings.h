@@ -32,6 +32,14 @@ py::array_t<std::uint8_t> adopt(std::vector<std::uint8_t>&& values, std::vector<
 std::vector<double> doubles_from(py::handle array, const std::string& what);
 std::vector<Index> indices_from(py::handle array, const std::string& what);
 
+// ---- class_guard.cpp: classes whose objects only the library makes -----------------------
+
+// pybind11 lets `Cls.__new__(Cls)` make an object whose C++ value was never constructed:
+// its methods would read uninitialised memory. Classes whose objects come from factory
+// functions refuse that (a TypeError saying `how` to get one); the factories allocate
+// through the type's tp_alloc, not __new__, and still work.
+void refuse_bare_new(py::handle cls, const std::string& how);
+
 // ---- mesh_conversion.cpp: subdivkit.Mesh <-> MeshData ------------------------------------
 
 // Reads a subdivkit.Mesh's arrays and checks them as the file readers do

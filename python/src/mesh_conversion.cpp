@@ -1,7 +1,10 @@
 // subdivkit.Mesh (python/subdivkit/mesh.py) to the library's MeshData and back. The Python
 // class has already made its arrays C-contiguous with the right types; the arrays are read
 // again here with conversion so that a hand-made object cannot crash the interpreter.
+#include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
+#include <limits>
 
 #include "bindings.h"
 
@@ -154,12 +157,30 @@ std::vector<subdiv::FaceVaryingArray> face_varying_from(py::handle triples, Inde
     auto triple = py::reinterpret_borrow<py::tuple>(item);
     subdiv::FaceVaryingArray a;
     a.name = py::str(triple[0]);
+    const py::array raw_indices = py::array::ensure(triple[2]);
+    if (!raw_indices || (raw_indices.dtype().kind() != 'i' && raw_indices.dtype().kind() != 'u')) {
+      PyErr_Clear();
+      throw subdiv::Error(fmt::format("face-varying '{}': corner indices must be integers, got {}", a.name,
+                                      raw_indices ? std::string(py::str(raw_indices.dtype())) : "no array"));
+    }
+    // Checked as 64-bit values before the int32 copy, which would wrap them.
+    const auto wide = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(raw_indices);
+    for (py::ssize_t i = 0; i < wide.size(); ++i)
+      if (wide.data()[i] < 0 || wide.data()[i] > std::numeric_limits<std::int32_t>::max())
+        throw subdiv::Error(fmt::format("face-varying '{}': corner {} has index {}, out of range (0-based indices "
+                                        "that fit in 32 bits)", a.name, i, wide.data()[i]));
     auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(triple[1]);
-    auto indices = py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>::ensure(triple[2]);
+    auto indices = py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>::ensure(raw_indices);
     if (!values || !indices) {
       PyErr_Clear();
-      throw subdiv::Error(fmt::format("face-varying '{}': expected float64 values and int32 corner indices", a.name));
+      throw subdiv::Error(fmt::format("face-varying '{}': expected float64 values and integer corner indices", a.name));
     }
+    for (py::ssize_t i = 0; i < values.size(); ++i)
+      if (!std::isfinite(values.data()[i]))
+        throw subdiv::Error(fmt::format("face-varying '{}': value {} is {}; refinement would spread it to the "
+                                        "neighbours: fill it in, or remove the array", a.name,
+                                        i / std::max<py::ssize_t>(values.ndim() == 2 ? values.shape(1) : 1, 1),
+                                        values.data()[i]));
     if (values.ndim() != 2 || indices.ndim() != 1 || indices.shape(0) != corners)
       throw subdiv::Error(fmt::format("face-varying '{}': expected values of shape (m, k) and {} corner indices (one "
                                       "per face corner), got shapes {} and {}", a.name, corners,

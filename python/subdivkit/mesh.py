@@ -113,6 +113,19 @@ def _as_cells(cells, offsets, what, offsets_name):
     return _as_indices(flat, what), offsets
 
 
+def _as_pairs(creases):
+    pairs = np.zeros((0, 2), dtype=np.int32) if creases is None else np.asarray(creases)
+    if pairs.size == 0:
+        pairs = np.zeros((0, 2), dtype=np.int32)
+    if pairs.ndim != 2 or pairs.shape[1] != 2:
+        raise Error(f"creases: expected (c, 2) vertex pairs, got shape {pairs.shape}")
+    return _as_indices(pairs.reshape(-1), "creases").reshape(-1, 2)
+
+
+_ARRAYS = ("points", "face_indices", "face_offsets", "line_indices", "line_offsets", "creases", "crease_sharpness",
+           "corners", "corner_sharpness")
+
+
 class Mesh:
     """A polygon mesh (and/or polylines) with creases, corners and per-point/per-face data.
 
@@ -152,18 +165,13 @@ class Mesh:
                  crease_sharpness=None, corners=None, corner_sharpness=None, point_data=None, cell_data=None,
                  face_varying=None, point_roles=None, cell_roles=None, name="mesh"):
         self.name = str(name)
-        self.points = _as_points(points, f"{self.name}.points")
-        self.face_indices, self.face_offsets = _as_cells(faces, face_offsets, "faces", "face_offsets")
-        self.line_indices, self.line_offsets = _as_cells(lines, line_offsets, "lines", "line_offsets")
-        pairs = np.zeros((0, 2), dtype=np.int32) if creases is None else np.asarray(creases)
-        if pairs.size == 0:
-            pairs = np.zeros((0, 2), dtype=np.int32)
-        if pairs.ndim != 2 or pairs.shape[1] != 2:
-            raise Error(f"creases: expected (c, 2) vertex pairs, got shape {pairs.shape}")
-        self.creases = _as_indices(pairs.reshape(-1), "creases").reshape(-1, 2)
-        self.crease_sharpness = _as_sharpness(crease_sharpness, len(self.creases), "crease_sharpness")
-        self.corners = _as_indices(np.zeros(0, dtype=np.int32) if corners is None else corners, "corners")
-        self.corner_sharpness = _as_sharpness(corner_sharpness, len(self.corners), "corner_sharpness")
+        self._points = _as_points(points, f"{self.name}.points")
+        self._face_indices, self._face_offsets = _as_cells(faces, face_offsets, "faces", "face_offsets")
+        self._line_indices, self._line_offsets = _as_cells(lines, line_offsets, "lines", "line_offsets")
+        self._creases = _as_pairs(creases)
+        self._crease_sharpness = _as_sharpness(crease_sharpness, len(self._creases), "crease_sharpness")
+        self._corners = _as_indices(np.zeros(0, dtype=np.int32) if corners is None else corners, "corners")
+        self._corner_sharpness = _as_sharpness(corner_sharpness, len(self._corners), "corner_sharpness")
         self.point_data = dict(point_data or {})
         self.cell_data = dict(cell_data or {})
         self.face_varying = dict(face_varying or {})
@@ -176,15 +184,99 @@ class Mesh:
         """A Mesh around arrays the extension made (already in the right layout: no copies)."""
         mesh = cls.__new__(cls)
         mesh.name = name
-        for key in ("points", "face_indices", "face_offsets", "line_indices", "line_offsets", "creases",
-                    "crease_sharpness", "corners", "corner_sharpness"):
-            setattr(mesh, key, arrays[key])
+        for key in _ARRAYS:
+            setattr(mesh, "_" + key, arrays[key])
         mesh.point_data = dict(point_data or {})
         mesh.cell_data = dict(cell_data or {})
         mesh.face_varying = dict(face_varying or {})
         mesh.point_roles = dict(point_roles or {})
         mesh.cell_roles = dict(cell_roles or {})
         return mesh
+
+    # The arrays, checked and converted on assignment as the constructor does (a float index
+    # array is refused, not truncated; an index past 32 bits is refused, not wrapped). Whether
+    # they agree with each other (offsets against indices, one sharpness per crease) is
+    # checked where the mesh is used, since related arrays are assigned one at a time.
+    @property
+    def points(self):
+        """Vertex positions, (n, 3) float64."""
+        return self._points
+
+    @points.setter
+    def points(self, value):
+        self._points = _as_points(value, f"{self.name}.points")
+
+    @property
+    def face_indices(self):
+        """The faces' vertex indices, flat int32 (CSR with face_offsets)."""
+        return self._face_indices
+
+    @face_indices.setter
+    def face_indices(self, value):
+        self._face_indices = _as_indices(value, "face_indices", "flat indices with offsets")
+
+    @property
+    def face_offsets(self):
+        """Where each face starts in face_indices, int32 (n_faces + 1 values)."""
+        return self._face_offsets
+
+    @face_offsets.setter
+    def face_offsets(self, value):
+        self._face_offsets = _as_indices(value, "face_offsets")
+
+    @property
+    def line_indices(self):
+        """The polylines' vertex indices, flat int32 (CSR with line_offsets)."""
+        return self._line_indices
+
+    @line_indices.setter
+    def line_indices(self, value):
+        self._line_indices = _as_indices(value, "line_indices", "flat indices with offsets")
+
+    @property
+    def line_offsets(self):
+        """Where each polyline starts in line_indices, int32 (n_lines + 1 values)."""
+        return self._line_offsets
+
+    @line_offsets.setter
+    def line_offsets(self, value):
+        self._line_offsets = _as_indices(value, "line_offsets")
+
+    @property
+    def creases(self):
+        """Vertex pairs of creased edges, (c, 2) int32."""
+        return self._creases
+
+    @creases.setter
+    def creases(self, value):
+        self._creases = _as_pairs(value)
+
+    @property
+    def crease_sharpness(self):
+        """Sharpness per crease, (c,) float64 (10: infinitely sharp)."""
+        return self._crease_sharpness
+
+    @crease_sharpness.setter
+    def crease_sharpness(self, value):
+        self._crease_sharpness = _as_sharpness(value, len(self._creases), "crease_sharpness")
+
+    @property
+    def corners(self):
+        """Vertex ids tagged as corners, int32."""
+        return self._corners
+
+    @corners.setter
+    def corners(self, value):
+        self._corners = _as_indices(value, "corners")
+
+    @property
+    def corner_sharpness(self):
+        """Sharpness per corner, (k,) float64 (10: infinitely sharp)."""
+        return self._corner_sharpness
+
+    @corner_sharpness.setter
+    def corner_sharpness(self, value):
+        self._corner_sharpness = _as_sharpness(value, len(self._corners), "corner_sharpness")
 
     @property
     def n_points(self):
@@ -232,10 +324,10 @@ class Mesh:
 
     def with_points(self, points):
         """The same topology, tags and data with new positions (for instance after ``S @ P``)."""
-        mesh = Mesh._from_arrays(self.__dict__, name=self.name, point_data=self.point_data,
-                                 cell_data=self.cell_data, face_varying=self.face_varying,
+        mesh = Mesh._from_arrays({key: getattr(self, key) for key in _ARRAYS}, name=self.name,
+                                 point_data=self.point_data, cell_data=self.cell_data, face_varying=self.face_varying,
                                  point_roles=self.point_roles, cell_roles=self.cell_roles)
-        mesh.points = _as_points(points, f"{self.name}.points")
+        mesh.points = points
         if len(mesh.points) != self.n_points:
             raise Error(f"with_points: {len(mesh.points)} points for a mesh of {self.n_points}")
         return mesh

@@ -7,6 +7,7 @@ import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error, Scheme
+from .mesh import _ARRAYS as _MESH_ARRAYS
 from .mesh import Mesh, _data_arrays, _data_shapes_like, _face_varying_triples
 
 BOUNDARY_MODES = ("edges-and-corners", "edges", "none")
@@ -134,8 +135,8 @@ class Evaluator:
                  crease_method="uniform", threads=0, start_level=0):
         _check_mesh(mesh, "Evaluator")
         levels = _check_levels(levels)
-        self._prepared = _subdivkit._Evaluator(mesh, scheme, params, levels, boundary, crease_method, int(threads),
-                                               int(start_level))
+        self._prepared = _subdivkit._prepare_evaluator(mesh, scheme, params, levels, boundary, crease_method,
+                                                       int(threads), int(start_level))
         self.name = mesh.name
         self.scheme = scheme.name if isinstance(scheme, Scheme) else str(scheme)
         # mesh() without points refines the points the mesh had when the evaluator was made.
@@ -240,7 +241,7 @@ class Evaluator:
         if len(shape) != 2 or shape[1] != 3:
             raise Error(f"Evaluator.mesh: a Mesh needs points of shape ({self.n_base_points}, 3), got {shape}; "
                         "evaluate() carries other data")
-        arrays = {key: np.array(value) for key, value in self._finest.__dict__.items() if isinstance(value, np.ndarray)}
+        arrays = {key: np.array(getattr(self._finest, key)) for key in _MESH_ARRAYS if key != "points"}
         arrays["points"] = self.evaluate(points)
         return Mesh._from_arrays(arrays, name=self.name)
 

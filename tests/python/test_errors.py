@@ -147,3 +147,50 @@ print('survived')
     result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
     assert result.returncode == 0, result.stderr
     assert result.stdout.strip() == "survived"
+
+
+def test_library_classes_refuse_new_without_a_factory():
+    # pybind11 would make an object whose C++ value was never constructed; its methods read garbage.
+    for cls in (sk.Scheme, sk._subdivkit._Evaluator):
+        with pytest.raises(TypeError, match="not made with"):
+            cls.__new__(cls)
+        with pytest.raises(TypeError):
+            cls()
+    # The factories still make working objects.
+    assert sk.Scheme.load("loop").name == "loop"
+    assert sk.Evaluator(sk.read_mesh(str(MESHES / "cube.obj")), "catmull-clark", 1).n_points == 26
+
+
+def test_mesh_attributes_are_checked_on_assignment_as_in_the_constructor():
+    mesh = sk.read_mesh(str(MESHES / "cube.obj"))
+    with pytest.raises(sk.Error, match="expected integer indices"):
+        mesh.face_indices = mesh.face_indices.astype(np.float64) + 0.7  # would truncate
+    with pytest.raises(sk.Error, match="out of range"):
+        mesh.face_indices = np.array([0, 2**40], dtype=np.int64)  # would wrap
+    with pytest.raises(sk.Error, match=r"shape \(n, 3\)"):
+        mesh.points = np.zeros((8, 2))
+    with pytest.raises(sk.Error, match="vertex pairs"):
+        mesh.creases = np.array([1, 2, 3])
+    with pytest.raises(sk.Error, match="one value per entry"):
+        mesh.crease_sharpness = [1.0, 2.0]  # the cube has no creases
+    # What is accepted is converted as the constructor converts it.
+    mesh.points = mesh.points.astype(np.float32)
+    assert mesh.points.dtype == np.float64 and mesh.points.flags["C_CONTIGUOUS"]
+    mesh.corners = [0, 6]
+    assert mesh.corners.dtype == np.int32 and mesh.corner_sharpness.shape == (0,)
+    mesh.corner_sharpness = 3.0
+    assert np.array_equal(mesh.corner_sharpness, [3.0, 3.0])
+    assert sk.refine(mesh, "catmull-clark", 1).n_faces == 24
+
+
+def test_non_finite_face_varying_values_and_results_are_refused():
+    mesh = sk.read_mesh(str(MESHES / "cube.obj"))
+    uv = np.zeros((8, 2))
+    uv[3, 1] = np.nan
+    mesh.face_varying["uv"] = (uv, np.arange(24, dtype=np.int32) % 8)
+    with pytest.raises(sk.Error, match="face-varying 'uv': value 3 is nan"):
+        sk.refine(mesh, "catmull-clark", 1)
+    # Finite input that overflows under butterfly's negative weights: refused as the CLI refuses it.
+    big = sk.Mesh(np.array([[0, 0, 0], [1.7e308, 0, 0], [1.7e308, 1.7e308, 0], [0, 1.7e308, 0]]), [[0, 1, 2], [0, 2, 3]])
+    with pytest.raises(sk.Error, match="non-finite coordinate.*scale the mesh down"):
+        sk.refine(big, "butterfly", 2)

@@ -45,6 +45,7 @@ struct InterpolateArgs {
   int levels = 3;
   int threads = 0;
   bool verbose = false, quiet = false;
+  bool force = false;  // --force: -o or --refined may be the input mesh
 };
 
 void check_directory(const fs::path& out) {
@@ -145,6 +146,8 @@ void write_refined(const fs::path& out, const Hierarchy& h, const std::vector<do
 }
 
 void run(const InterpolateArgs& a) {
+  check_output_not_input(a.mesh, a.output, a.force);
+  if (!a.refined.empty()) check_output_not_input(a.mesh, a.refined, a.force, "--refined");
   check_output_path(a.output);
   check_directory(a.output);
   if (!a.refined.empty()) {
@@ -283,6 +286,7 @@ void add_interpolate_command(CLI::App& app) {
   cmd->add_option("-j,--threads", args->threads, "Worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
   cmd->add_flag("-v,--verbose", args->verbose, "Print the residuals of every iteration");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
+  cmd->add_flag("--force", args->force, "Write -o and --refined even where one is the input mesh, which is then lost");
   cmd->footer("Example: subdiv interpolate examples/meshes/cross.obj --scheme catmull-clark-shape:1,catmull-clark "
               "--lambda 0.5 --select 0,1,2,3 -o cross-interp.obj --refined cross-interp.pvd\n"
               "Polylines: subdiv interpolate examples/curves/open-zigzag.obj --scheme cubic-bspline -o zigzag-interp.obj");

@@ -66,6 +66,28 @@ void check_output_path(const std::filesystem::path& out) {
                           "or .obj, .off, .ply, .stl", out.string(), ext));
 }
 
+void check_output_not_input(const std::filesystem::path& input, const std::filesystem::path& out, bool force,
+                            std::string_view option) {
+  if (force) return;
+  namespace fs = std::filesystem;
+  auto same = [](const fs::path& a, const fs::path& b) {
+    std::error_code ec;
+    return fs::equivalent(a, b, ec) && !ec;
+  };
+  const auto refuse = [&](const std::string& how) {
+    throw Error(fmt::format("{} '{}' {} the input mesh '{}': writing would lose the control mesh; name another "
+                            "output, or add --force to overwrite it", option, out.string(), how, input.string()));
+  };
+  if (same(input, out)) refuse("is");
+  const std::string ext = lowercase_extension(out);
+  const fs::path folder = out.parent_path().empty() ? fs::path(".") : out.parent_path();
+  const fs::path input_folder = input.parent_path().empty() ? fs::path(".") : input.parent_path();
+  if (ext == ".pvd" && same(input_folder, folder / (out.stem().string() + "_levels")))
+    refuse("rewrites the folder of");
+  if (ext == ".pvtp" && same(input_folder, folder / (out.stem().string() + "_pieces")))
+    refuse("rewrites the folder of");
+}
+
 void write_levels(const std::filesystem::path& out, Hierarchy&& h, std::vector<LevelData> data,
                   const FeatureOptions& features, const std::vector<DataArray>& finest_point_data,
                   const MeshOptions& obj_tags, const OutputChoice& choice) {

@@ -3,6 +3,7 @@
 // slider), or a mesh format (.obj, .off, .ply, .stl: finest level, creases kept in .obj).
 // The levels are described by the pipeline (framework/pipeline/level_description.h).
 #include <filesystem>
+#include <string_view>
 #include <vector>
 
 #include "framework/io/mesh_data.h"
@@ -42,5 +43,11 @@ void write_piece(StagedFiles& staged, const std::filesystem::path& target, const
 
 // The output extensions write_levels accepts, for help texts and early checks.
 void check_output_path(const std::filesystem::path& out);
+
+// Refuses an output that is the input mesh, or a folder the output rewrites (a .pvd's
+// levels, a .pvtp's pieces) that holds it, unless `force`: the control mesh would be lost.
+// `option` names the output's option in the message.
+void check_output_not_input(const std::filesystem::path& input, const std::filesystem::path& out, bool force,
+                            std::string_view option = "-o");
 
 }  // namespace subdiv::cli

@@ -43,6 +43,7 @@ struct RefineArgs {
   bool pieces_given = false;
   OutputArgs output_format;  // --arrays, --compression, --compression-level
   bool timings = false;      // --timings
+  bool force = false;        // --force: -o may be the input mesh
   bool in_pieces() const { return pieces_given || !max_memory.empty(); }
 };
 
@@ -139,6 +140,7 @@ void run_in_pieces(const RefineArgs& a, const RefineRequest& request, const Prep
 
 void run(const RefineArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
+  check_output_not_input(a.mesh, a.output, a.force);
   if (is_curve_scheme(a.scheme) && a.in_pieces())
     throw Error(fmt::format("--pieces: '{}' is a curve scheme; refinement in pieces is for surfaces, refine "
                             "polylines whole (leave out --pieces and --max-memory)",
@@ -188,6 +190,7 @@ void add_refine_command(CLI::App& app) {
                   "Output file: .vtp (finest level) or .pvd (all levels) for ParaView, or .obj, .off, .ply, .stl; "
                   ".pvtp with --pieces")
       ->required();
+  cmd->add_flag("--force", args->force, "Write -o even where it is the input mesh, which is then lost");
   cmd->add_option("--pieces", args->pieces,
                   std::string("Refine in N pieces, one after another (only one in memory), or spread over the ranks "
                               "of mpirun (this build: ") +

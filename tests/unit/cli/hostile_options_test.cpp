@@ -106,3 +106,41 @@ TEST_CASE("a process memory limit (ulimit -v) is honoured by the memory guard") 
   CHECK_FALSE(fs::exists(dir / "big.obj"));
 #endif
 }
+
+// Bytes of a file, to show it was left as it was.
+std::string file_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST_CASE("-o naming the input mesh (directly, through a link, or a .pvd's level folder) is refused unless --force") {
+  const fs::path dir = fresh_dir("output-is-input");
+  const fs::path mesh = dir / "cube.obj";
+  fs::copy_file(kCube, mesh);
+  const std::string before = file_bytes(mesh);
+  fs::create_symlink(mesh, dir / "link.obj");
+  for (const std::string& command : {"refine " + mesh.string() + " -o " + mesh.string(),
+                                     "refine " + (dir / "link.obj").string() + " -o " + mesh.string(),
+                                     "refine " + mesh.string() + " -s chaikin -o " + mesh.string(),
+                                     "interpolate " + mesh.string() + " -o " + mesh.string()}) {
+    const CliResult r = run_subdiv(command);
+    CAPTURE(command);
+    CHECK(r.exit_code == 1);
+    CHECK(contains(r.output, "the input mesh"));
+    CHECK(contains(r.output, "--force"));
+    CHECK(file_bytes(mesh) == before);
+  }
+  // A .pvd rewrites its level folder: an input inside it is the same loss.
+  REQUIRE(run_subdiv("refine " + mesh.string() + " -l 1 -q -o " + (dir / "c.pvd").string()).exit_code == 0);
+  const fs::path level = dir / "c_levels" / "level_1.vtp";
+  const std::string level_before = file_bytes(level);
+  const CliResult pvd = run_subdiv("refine " + level.string() + " -l 1 -o " + (dir / "c.pvd").string());
+  CHECK(pvd.exit_code == 1);
+  CHECK(contains(pvd.output, "rewrites the folder of the input mesh"));
+  CHECK(file_bytes(level) == level_before);
+  // --force writes: level 1 of the cube replaces it (24 faces).
+  CHECK(run_subdiv("refine " + mesh.string() + " -l 1 -q --force -o " + mesh.string()).exit_code == 0);
+  CHECK(file_bytes(mesh) != before);
+  CHECK(run_subdiv("refine " + mesh.string() + " -l 1 -o " + (dir / "out.obj").string()).output.find("96 faces") !=
+        std::string::npos);
+}
