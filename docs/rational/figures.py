@@ -56,7 +56,7 @@ def circle(subdiv, render, out, tmp):
     # The control polygons without their weights (the renderer draws x y z).
     verts, _, lines = read_obj(ROOT / "examples/rational/circle-arcs.obj")
     write_obj(tmp / "arcs.obj", verts, lines=lines)
-    run(render, refined, out / "rational-circle.png", "--cage", tmp / "arcs.obj", "--azimuth", 0, "--elevation", 90,
+    run(render, refined, out / "rational-circle.png", "--cage", tmp / "arcs.obj", "--azimuth", 0, "--elevation", 0,
         "--size", 420)
 
 
@@ -107,8 +107,8 @@ def checker(subdiv, render, out, tmp):
     write_obj(tmp / "bump.obj", verts, faces)
     run(subdiv, "parameterize", tmp / "bump.obj", "--weights", "mean-value", "-o", tmp / "bump-uv.obj")
     run(subdiv, "refine", tmp / "bump-uv.obj", "-s", "catmull-clark", "-l", 3, "-o", tmp / "bump3.obj")
-    run(render, tmp / "bump3.obj", out / "parameterize-checker.png", "--checker", 8, "--cage", tmp / "bump.obj",
-        "--azimuth", 25, "--elevation", 40, "--size", 480)
+    run(render, tmp / "bump3.obj", out / "parameterize-checker.png", "--checker", 8, "--azimuth", 25,
+        "--elevation", 40, "--size", 480)
 
 
 if __name__ == "__main__":
