@@ -175,6 +175,12 @@ void find_weights(const RefineRequest& r, PreparedRefinement& p) {
   if (!at) return;
   p.weights_name = p.mesh.point_data[*at].name;
   p.rational = !all_weights_one(p.mesh.point_data[*at].values);
+  for (const auto& scheme : p.sequence.schemes)
+    if (p.rational && !scheme->linear())
+      throw Error(fmt::format("{}: the rational weights '{}' need a linear scheme, but '{}' has a non-linear step (a "
+                              "plugin rule), which does not commute with projecting (w·p, w); drop the weights or "
+                              "choose a linear scheme",
+                              r.mesh_name, p.weights_name, scheme->name));
 }
 
 DataArray* weights_of(LevelData& level, const std::string& name) {

@@ -317,3 +317,32 @@ TEST_CASE("rational: limit positions and normals of the weighted net are the sph
 }
 
 }  // namespace subdiv
+
+#include "unit/plugins/plugin_test_support.h"
+
+namespace subdiv {
+
+TEST_CASE("rational: a plugin's linear C++ rules refine (w p, w) too; a non-linear rule is refused") {
+  test::load_example_plugins();
+  const test::Mesh m = test::grid(4, 4);
+  const std::vector<double> w = some_weights(25);
+  const RefineResult rational = refine_mesh(request_for(weighted(m, w), "kobbelt-quad", 2));
+  MeshData homogeneous = mesh_data(m);
+  to_homogeneous(homogeneous.positions, w);
+  homogeneous.point_data.push_back({"w", 1, w});
+  const RefineResult plain = refine_mesh(request_for(std::move(homogeneous), "kobbelt-quad", 2));
+  const auto& W = array_named(rational.levels.back().point_data, "weight").values;
+  const auto& Wp = array_named(plain.levels.back().point_data, "w").values;
+  REQUIRE(W.size() == Wp.size());
+  double worst = 0;
+  for (size_t v = 0; v < W.size(); ++v) {
+    worst = std::max(worst, std::abs(W[v] - Wp[v]));
+    for (size_t c = 0; c < 3; ++c)
+      worst = std::max(worst, std::abs(rational.levels.back().positions[3 * v + c] * W[v] - plain.levels.back().positions[3 * v + c]));
+  }
+  CHECK(worst <= 1e-13);
+  CHECK_THROWS_WITH_AS(refine_mesh(request_for(weighted(m, w), "circle-quad", 1)),
+                       doctest::Contains("need a linear scheme"), Error);
+}
+
+}  // namespace subdiv
