@@ -10,8 +10,8 @@
 //
 // Where the weights come from: OBJ's `v x y z w` (the reader's point array "weight"), a
 // point array the user names (--weights NAME; default "weight" in .vtp/.ply), Python's
-// weights=. The refined weights keep their array's name; OBJ writes the array "weight" as
-// the fourth coordinate. Used by the surface pipeline (refine_pipeline.cpp) and by the curve
+// weights=. The refined weights are written as the point array "weight" (unless another
+// array has that name), which OBJ writes as the fourth coordinate. Used by the surface pipeline (refine_pipeline.cpp) and by the curve
 // loops of the front-ends, which call the same functions.
 #include <optional>
 #include <span>

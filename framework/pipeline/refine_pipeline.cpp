@@ -199,6 +199,22 @@ void project_levels(std::vector<LevelData>& levels, const std::string& name, con
   }
 }
 
+// The refined weights are written as "weight" (OBJ: the fourth coordinate), whatever the
+// input called them, unless another array has that name.
+std::string output_weights_name(const PreparedRefinement& p) {
+  if (p.weights_name.empty() || p.weights_name == kWeightArrayName) return p.weights_name;
+  for (const DataArray& a : p.mesh.point_data)
+    if (a.name == kWeightArrayName) return p.weights_name;
+  return kWeightArrayName;
+}
+
+void rename_weights(std::vector<LevelData>& levels, const PreparedRefinement& p) {
+  const std::string name = output_weights_name(p);
+  if (name == p.weights_name) return;
+  for (LevelData& level : levels)
+    if (DataArray* w = weights_of(level, p.weights_name)) w->name = name;
+}
+
 // ---- limits -----------------------------------------------------------------------------------
 
 std::string limit_note(const RefineRequest& r, const LimitResult& limit) {
@@ -263,6 +279,7 @@ std::vector<LevelData> refine_level_data(const PreparedRefinement& p, const Hier
     if (!r.keep_all_levels) levels[size_t(l)] = {};
   }
   if (p.rational) project_levels(levels, p.weights_name, mesh.positions);
+  rename_weights(levels, p);
   for (const FaceVaryingArray& a : mesh.face_varying) {
     if (a.role == ArrayRole::Normals) {
       said.dropped_arrays.push_back(a.name);
@@ -297,7 +314,7 @@ RefineResult run_refinement(PreparedRefinement&& p, const RefineRequest& r) {
   if (r.limit_positions || r.limit_normals) {
     say(r, r.limit_positions ? "limit positions and normals" : "limit normals");
     LimitArrays limits = limit_arrays(p.sequence, out.hierarchy, p.options, out.levels.back(), r.limit_positions,
-                                      p.rational ? p.weights_name : std::string());
+                                      p.rational ? output_weights_name(p) : std::string());
     out.finest_point_data = std::move(limits.point_data);
     limits.result.positions.clear(), limits.result.normals.clear();
     out.limit_note = limit_note(r, limits.result);

@@ -96,7 +96,7 @@ void refine_curves_command(const CurveRefineRequest& a) {
     return refine_nonlinear_curves(a, *scheme);
   }
   std::vector<double> weights = weights_at ? mesh.point_data[*weights_at].values : std::vector<double>();
-  const std::string weights_name = weights_at ? mesh.point_data[*weights_at].name : std::string();
+  const std::string weights_name = weights_at ? kWeightArrayName : "";  // written as "weight" (OBJ: v x y z w)
   const bool rational = !all_weights_one(weights);  // all 1: the plain refinement, bit for bit
   // A weighted level as written: projected points and the weights as point data (OBJ: v x y z w).
   auto written = [&](const CurveLevel& level, std::vector<double> xyz) {
