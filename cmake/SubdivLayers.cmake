@@ -3,7 +3,7 @@
 # and tests/architecture checks every #include "framework/..." against it, so a file in a
 # lower layer cannot include a higher one. docs/architecture.md draws the same table.
 set(SUBDIV_LAYERS util topology features stencil refine rules scheme engine io primvar analysis curve
-    interpolation limit plugin pipeline)
+    interpolation limit plugin parameterize pipeline)
 set(SUBDIV_LAYER_USES_util "")
 set(SUBDIV_LAYER_USES_topology util)
 set(SUBDIV_LAYER_USES_features util topology)
@@ -19,6 +19,8 @@ set(SUBDIV_LAYER_USES_curve util topology stencil rules scheme io analysis)
 set(SUBDIV_LAYER_USES_interpolation util topology features stencil refine rules scheme engine analysis curve)
 set(SUBDIV_LAYER_USES_limit util topology features stencil refine rules scheme engine analysis)
 set(SUBDIV_LAYER_USES_plugin util topology features refine rules scheme engine)
+# Tutte's embedding of disc-like meshes (texture coordinates for meshes without them).
+set(SUBDIV_LAYER_USES_parameterize util topology io)
 # The product path once, for every front-end (command line, Python, ParaView): requests in,
 # levels with their data and descriptions out.
 set(SUBDIV_LAYER_USES_pipeline util topology features stencil refine rules scheme engine io primvar analysis curve

@@ -30,6 +30,8 @@ set(SUBDIV_PUBLIC_HEADERS
   interpolation/progressive.h
   # The limit surface at any (face, u, v): evaluation, limit stencils, tessellation.
   limit/limit_surface.h limit/tessellation.h limit/face_domain.h
+  # Texture coordinates for disc-like meshes: Tutte's embedding.
+  parameterize/tutte.h parameterize/parameterize_mesh.h
   # The plugin ABI and what plugins build on (new splitters, C++ rules, mesh lines).
   plugin/plugin_api.h plugin/plugin_registry.h plugin/plugin_loader.h
   plugin/mesh_lines.h plugin/polyline_refine.h

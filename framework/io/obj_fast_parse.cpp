@@ -122,7 +122,8 @@ private:
       if (count < 3) xyz[count] = value;
       ++count;
     }
-    if (declined || count < 3) return false;
+    // A fourth value is a rational weight (OBJ's `v x y z w`): the line-by-line reader keeps it.
+    if (declined || count < 3 || count == 4) return false;
     for (double v : xyz)
       if (!std::isfinite(v)) return false;
     c_.positions.insert(c_.positions.end(), xyz, xyz + 3);

@@ -53,6 +53,7 @@ public:
 private:
   void statement(std::string_view keyword, Tokens& tokens);
   void vertex(Tokens& tokens);
+  void finish_weights();
   void face(Tokens& tokens);
   void polyline(Tokens& tokens);
   void attribute(Tokens& tokens, int slot);
@@ -99,6 +100,7 @@ private:
     std::size_t line;
   };
   std::vector<Unknown> unknown_;
+  std::vector<double> weights_;  // the fourth coordinates read so far (1 before the first)
 };
 
 // `text` with bytes outside printable ASCII as \xNN: a keyword quoted in a message must not
@@ -143,6 +145,7 @@ MeshData ObjReader::read(std::string_view text) {
   check_creases_are_edges();
   check_holes();
   finish_face_varying();
+  finish_weights();
   warn_unknown_statements();
   return std::move(mesh_);
 }
@@ -185,7 +188,7 @@ void ObjReader::warn_unknown_statements() {
 }
 
 void ObjReader::vertex(Tokens& tokens) {
-  double xyz[3];
+  double xyz[3], w = 1;
   std::string_view token;
   int count = 0;
   while (tokens.next(token)) {
@@ -193,7 +196,8 @@ void ObjReader::vertex(Tokens& tokens) {
     if (!parse_double(token, value))
       fail(fmt::format("expected a number in 'v x y z', got '{}'", token));
     if (count < 3) xyz[count] = value;
-    ++count;  // a fourth value (w) or colours after xyz are allowed and ignored
+    else if (count == 3) w = value;
+    ++count;  // colours after xyz (6 or 7 values) are allowed and ignored
   }
   if (count < 3) fail(fmt::format("a vertex needs 3 coordinates 'v x y z', this one has {}", count));
   const Index number = mesh_.vertex_count() + 1;
@@ -201,6 +205,24 @@ void ObjReader::vertex(Tokens& tokens) {
     if (!std::isfinite(c))
       fail(fmt::format("vertex {} has a non-finite coordinate ({}); fix or remove it", number, c));
   mesh_.positions.insert(mesh_.positions.end(), xyz, xyz + 3);
+  // `v x y z w`: w is the weight of a rational control point; without it, 1 (the OBJ
+  // specification, Appendix B1 of the Advanced Visualizer manual).
+  if (count == 4) {
+    if (!std::isfinite(w) || w <= 0)
+      fail(fmt::format("vertex {} has the weight w = {}; the weights of rational control points ('v x y z w') must "
+                       "be positive numbers",
+                       number, w));
+    weights_.resize(size_t(number - 1), 1.0);
+    weights_.push_back(w);
+  }
+}
+
+// The fourth coordinates as the point array "weight" (pipeline/rational_weights.h), 1 where
+// a line has none.
+void ObjReader::finish_weights() {
+  if (weights_.empty()) return;
+  weights_.resize(size_t(mesh_.vertex_count()), 1.0);
+  mesh_.point_data.push_back({"weight", 1, std::move(weights_)});
 }
 
 // "7", "7/2", "7//3", "7/2/3", "-1": OBJ numbers from 1, negatives count back from the

@@ -38,6 +38,14 @@ void write_faces_with_uv(BufferedOutput& out, const MeshData& mesh, const std::v
   }
 }
 
+// The weights of rational control points (the point array "weight", pipeline/rational_weights.h),
+// written as `v x y z w`; null when there are none.
+const DataArray* rational_weights(const MeshData& mesh) {
+  for (const DataArray& a : mesh.point_data)
+    if (a.name == "weight" && a.components == 1 && !a.integer && a.values.size() == size_t(mesh.vertex_count())) return &a;
+  return nullptr;
+}
+
 }  // namespace
 
 void write_obj(const path& file, const path& shown, const MeshData& mesh) {
@@ -45,7 +53,10 @@ void write_obj(const path& file, const path& shown, const MeshData& mesh) {
   out.print("# SubdivKit: {} vertices, {} faces, {} polylines\n", mesh.vertex_count(),
             mesh.face_count(), mesh.line_count());
   const std::vector<double>& p = mesh.positions;
-  for (std::size_t i = 0; i < p.size(); i += 3) out.print("v {} {} {}\n", p[i], p[i + 1], p[i + 2]);
+  if (const DataArray* w = rational_weights(mesh))
+    for (std::size_t i = 0; i < p.size(); i += 3) out.print("v {} {} {} {}\n", p[i], p[i + 1], p[i + 2], w->values[i / 3]);
+  else
+    for (std::size_t i = 0; i < p.size(); i += 3) out.print("v {} {} {}\n", p[i], p[i + 1], p[i + 2]);
   const FaceVaryingArray uv = texture_coordinates(mesh);
   for (std::size_t i = 0; i < uv.values.size(); i += std::size_t(uv.components)) {
     out.print("vt");

@@ -1,16 +1,33 @@
 #include "framework/pipeline/limit_arrays.h"
 
+#include "framework/pipeline/rational_weights.h"
+
 namespace subdiv {
+namespace {
+
+const DataArray* named(const std::vector<DataArray>& arrays, const std::string& name) {
+  for (const DataArray& a : arrays)
+    if (a.name == name) return &a;
+  return nullptr;
+}
+
+}  // namespace
 
 LimitArrays limit_arrays(const SchemeSequence& seq, const Hierarchy& h, const RefineOptions& options,
-                         LevelData& finest, bool move_to_limit) {
+                         LevelData& finest, bool move_to_limit, const std::string& weights) {
   LimitOptions lo;
   lo.features = options.features;
   lo.first_step = options.first_step + seq.total_levels;
   SchemeLimits limits(*seq.schemes.back(), lo);
   const Level& level = h.levels.back();
   LimitArrays out;
-  out.result = limits.evaluate(level, finest.positions);
+  if (const DataArray* w = weights.empty() ? nullptr : named(finest.point_data, weights)) {
+    std::vector<double> homogeneous = finest.positions;
+    to_homogeneous(homogeneous, w->values);
+    out.result = limits.evaluate(level, homogeneous, w->values);
+  } else {
+    out.result = limits.evaluate(level, finest.positions);
+  }
   const LimitResult& limit = out.result;
   if (move_to_limit) {
     finest.positions = limit.positions;

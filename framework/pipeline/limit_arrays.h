@@ -18,8 +18,10 @@ struct LimitArrays {
 };
 
 // `finest` is level h.levels.back()'s data; with move_to_limit its positions and double point
-// arrays are replaced by their limits.
+// arrays are replaced by their limits. With `weights` (the name of finest's rational weights,
+// rational_weights.h) the limits are those of the rational surface: the masks applied to
+// (w·p, w), the position projected, the tangents by the quotient rule.
 LimitArrays limit_arrays(const SchemeSequence& seq, const Hierarchy& h, const RefineOptions& options,
-                         LevelData& finest, bool move_to_limit);
+                         LevelData& finest, bool move_to_limit, const std::string& weights = {});
 
 }  // namespace subdiv

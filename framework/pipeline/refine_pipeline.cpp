@@ -13,6 +13,7 @@
 #include "framework/io/vertex_values.h"
 #include "framework/pipeline/limit_arrays.h"
 #include "framework/pipeline/memory_guard.h"
+#include "framework/pipeline/rational_weights.h"
 #include "framework/util/option_spelling.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
@@ -167,6 +168,53 @@ bool last_level_faces_suffice(const RefineRequest& r, const MeshData& mesh, cons
          base.face_hole.empty();
 }
 
+// ---- rational weights (rational_weights.h) ----------------------------------------------------
+
+void find_weights(const RefineRequest& r, PreparedRefinement& p) {
+  const std::optional<size_t> at = find_rational_weights(p.mesh.point_data, r.weights_array, r.mesh_name);
+  if (!at) return;
+  p.weights_name = p.mesh.point_data[*at].name;
+  p.rational = !all_weights_one(p.mesh.point_data[*at].values);
+  for (const auto& scheme : p.sequence.schemes)
+    if (p.rational && !scheme->linear())
+      throw Error(fmt::format("{}: the rational weights '{}' need a linear scheme, but '{}' has a non-linear step (a "
+                              "plugin rule), which does not commute with projecting (w·p, w); drop the weights or "
+                              "choose a linear scheme",
+                              r.mesh_name, p.weights_name, scheme->name));
+}
+
+DataArray* weights_of(LevelData& level, const std::string& name) {
+  for (DataArray& a : level.point_data)
+    if (a.name == name) return &a;
+  return nullptr;
+}
+
+// Every kept level projected back from (w·p, w); the input level takes its own positions,
+// so it is the input bit for bit.
+void project_levels(std::vector<LevelData>& levels, const std::string& name, const std::vector<double>& input) {
+  for (size_t l = 0; l < levels.size(); ++l) {
+    if (levels[l].positions.empty()) continue;
+    if (l == 0) levels[l].positions = input;
+    else from_homogeneous(levels[l].positions, weights_of(levels[l], name)->values);
+  }
+}
+
+// The refined weights are written as "weight" (OBJ: the fourth coordinate), whatever the
+// input called them, unless another array has that name.
+std::string output_weights_name(const PreparedRefinement& p) {
+  if (p.weights_name.empty() || p.weights_name == kWeightArrayName) return p.weights_name;
+  for (const DataArray& a : p.mesh.point_data)
+    if (a.name == kWeightArrayName) return p.weights_name;
+  return kWeightArrayName;
+}
+
+void rename_weights(std::vector<LevelData>& levels, const PreparedRefinement& p) {
+  const std::string name = output_weights_name(p);
+  if (name == p.weights_name) return;
+  for (LevelData& level : levels)
+    if (DataArray* w = weights_of(level, p.weights_name)) w->name = name;
+}
+
 // ---- limits -----------------------------------------------------------------------------------
 
 std::string limit_note(const RefineRequest& r, const LimitResult& limit) {
@@ -211,6 +259,7 @@ PreparedRefinement prepare_refinement(RefineRequest& r) {
                                   "vertices were dropped (see the warning) and the rest renumbered; remove them from "
                                   "the mesh first",
                                   r.mesh_name));
+  find_weights(r, p);
   p.base = tagged_base(r, p.mesh, p.notes);
   p.options.levels = p.sequence.total_levels;
   p.options.features = feature_options(r.shape, p.mesh.options);
@@ -234,12 +283,17 @@ std::vector<LevelData> refine_level_data(const PreparedRefinement& p, const Hier
                                      "normals is no normal); {{normals}} writes the exact limit normals",
                                      name));
   said.dropped_arrays.insert(said.dropped_arrays.end(), dropped.begin(), dropped.end());
+  // Rational: the positions become (w·p, w)'s first three coordinates; the weights are
+  // refined with them as point data, by the same rules, in the same pass.
+  if (p.rational) to_homogeneous(levels.front().positions, weights_of(levels.front(), p.weights_name)->values);
   for (int l = 0; l < seq.total_levels; ++l) {
     say(r, fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
     levels.push_back(next_level_data(seq.runs, h, l, levels.back(), options));
     check_refined_points(levels.back(), l + 1, mesh.positions, r);
     if (!r.keep_all_levels) levels[size_t(l)] = {};
   }
+  if (p.rational) project_levels(levels, p.weights_name, mesh.positions);
+  rename_weights(levels, p);
   for (const FaceVaryingArray& a : mesh.face_varying) {
     if (a.role == ArrayRole::Normals) {
       said.dropped_arrays.push_back(a.name);
@@ -273,7 +327,8 @@ RefineResult run_refinement(PreparedRefinement&& p, const RefineRequest& r) {
   out.dropped_arrays = std::move(said.dropped_arrays);
   if (r.limit_positions || r.limit_normals) {
     say(r, r.limit_positions ? "limit positions and normals" : "limit normals");
-    LimitArrays limits = limit_arrays(p.sequence, out.hierarchy, p.options, out.levels.back(), r.limit_positions);
+    LimitArrays limits = limit_arrays(p.sequence, out.hierarchy, p.options, out.levels.back(), r.limit_positions,
+                                      p.rational ? output_weights_name(p) : std::string());
     out.finest_point_data = std::move(limits.point_data);
     limits.result.positions.clear(), limits.result.normals.clear();
     out.limit_note = limit_note(r, limits.result);

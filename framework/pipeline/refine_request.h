@@ -60,6 +60,9 @@ struct RefineRequest {
   // from files (parameter name -> file, io/vertex_values.h).
   VertexParameters vertex_parameters;
   std::map<std::string, std::string> vertex_parameter_files;
+  // The point array of rational weights (rational_weights.h): refinement carries (w·p, w)
+  // and projects. Empty: OBJ's fourth coordinate or an array named "weight", if any.
+  std::string weights_array;
 
   // What to produce.
   bool keep_all_levels = true;   // false: only the finest level's data is kept
@@ -84,6 +87,8 @@ struct PreparedRefinement {
   RefineOptions options;     // shape options in force, start level, vertex parameters
   FaceVaryingLinear face_varying = FaceVaryingLinear::All;
   MeshOptions tags;          // the options in force, as OpenSubdiv's tags (OBJ output keeps them)
+  std::string weights_name;  // the rational weights' point array; empty: none
+  bool rational = false;     // weights that are not all 1: positions refined as (w·p, w)
   std::vector<std::string> warnings;  // the mesh reader's, clean-up's
   std::vector<std::string> notes;     // what was applied: feature files and angles
 };

@@ -10,7 +10,8 @@ namespace subdivkit {
 namespace {
 
 // Whether a format other than .vtp/.pvd/.ply holds an array (the writers in framework/io:
-// OFF takes normals, colours and UVs of points and colours of faces, OBJ per-point UVs as vt).
+// OFF takes normals, colours and UVs of points and colours of faces, OBJ per-point UVs as vt
+// and rational weights as `v x y z w`).
 bool format_holds(const std::string& ext, const subdiv::DataArray& a, bool per_point) {
   using subdiv::ArrayRole;
   if (ext == ".off")
@@ -18,7 +19,9 @@ bool format_holds(const std::string& ext, const subdiv::DataArray& a, bool per_p
                            (a.role == ArrayRole::Color && a.components >= 3 && a.components <= 4) ||
                            (a.role == ArrayRole::TextureCoordinates && a.components == 2)
                      : a.role == ArrayRole::Color && a.components >= 3 && a.components <= 4;
-  if (ext == ".obj") return per_point && a.role == ArrayRole::TextureCoordinates && a.components <= 3;
+  if (ext == ".obj")
+    return per_point && ((a.role == ArrayRole::TextureCoordinates && a.components <= 3) ||
+                         (a.name == "weight" && a.components == 1));
   return false;
 }
 

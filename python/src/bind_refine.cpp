@@ -105,8 +105,16 @@ std::vector<RefinedLevel> refine_curve(RefineInput& in, const subdiv::CurveSchem
   for (auto& p : points) p.integer = false;
   if (!in.face_varying.empty())
     throw subdiv::Error("face-varying data: polylines have no faces to carry it; curve refinement carries point data");
+  // Rational polylines (pipeline/rational_weights.h): (w·p, w) refined, projected when kept.
+  const std::optional<size_t> w = subdiv::find_rational_weights(points, "", in.name);
+  const bool rational = w && !subdiv::all_weights_one(points[*w].values);
+  if (rational) subdiv::to_homogeneous(positions, points[*w].values);
   std::vector<RefinedLevel> out;
-  auto keep = [&](int l) { out.push_back({points, {}, {}, subdiv::mesh_from_curve_level(h.levels[l], positions)}); };
+  auto keep = [&](int l) {
+    std::vector<double> xyz = positions;
+    if (rational) subdiv::from_homogeneous(xyz, points[*w].values);
+    out.push_back({points, {}, {}, subdiv::mesh_from_curve_level(h.levels[l], std::move(xyz))});
+  };
   if (all_levels || levels == 0) keep(0);
   for (int l = 0; l < levels; ++l) {
     positions = h.stencils[l].apply(positions, 3);

@@ -31,6 +31,8 @@
 #include "framework/pipeline/level_description.h"
 #include "framework/pipeline/memory_guard.h"
 #include "framework/pipeline/option_names.h"
+#include "framework/pipeline/rational_weights.h"
+#include "framework/parameterize/parameterize_mesh.h"
 #include "framework/util/option_spelling.h"
 #include "framework/pipeline/refine_pipeline.h"
 #include "framework/pipeline/thread_limit.h"

@@ -19,6 +19,7 @@ See docs/python.md.
 from ._subdivkit import Error, Scheme, __version__, load_plugin, schemes
 from .analysis import CurveAnalysis, SurfaceAnalysis, analyze
 from .mesh import Mesh, read_mesh, write_mesh
+from .parameterize import parameterize
 from .refinement import Evaluator, Interpolation, LimitPoints, interpolate, limit_positions, refine, stencils
 
 
@@ -54,7 +55,7 @@ def load_paraview_plugin(ns=None):
 
 __all__ = [
     "Error", "Scheme", "schemes", "load_plugin", "__version__", "paraview_plugin_path", "load_paraview_plugin",
-    "Mesh", "read_mesh", "write_mesh",
+    "Mesh", "read_mesh", "write_mesh", "parameterize",
     "refine", "Evaluator", "stencils", "limit_positions", "interpolate", "LimitPoints", "Interpolation",
     "analyze", "SurfaceAnalysis", "CurveAnalysis",
 ]

@@ -6,6 +6,7 @@ from ._subdivkit import Error as Error, Scheme as Scheme, __version__ as __versi
 from ._subdivkit import schemes as schemes
 from .analysis import CurveAnalysis as CurveAnalysis, SurfaceAnalysis as SurfaceAnalysis, analyze as analyze
 from .mesh import Mesh as Mesh, read_mesh as read_mesh, write_mesh as write_mesh
+from .parameterize import parameterize as parameterize
 from .refinement import Evaluator as Evaluator, Interpolation as Interpolation, LimitPoints as LimitPoints
 from .refinement import interpolate as interpolate, limit_positions as limit_positions, refine as refine
 from .refinement import stencils as stencils
@@ -15,7 +16,7 @@ def load_paraview_plugin(ns: dict[str, Any] | None = None) -> Any: ...
 
 __all__ = [
     "Error", "Scheme", "schemes", "load_plugin", "__version__", "paraview_plugin_path", "load_paraview_plugin",
-    "Mesh", "read_mesh", "write_mesh",
+    "Mesh", "read_mesh", "write_mesh", "parameterize",
     "refine", "Evaluator", "stencils", "limit_positions", "interpolate", "LimitPoints", "Interpolation",
     "analyze", "SurfaceAnalysis", "CurveAnalysis",
 ]

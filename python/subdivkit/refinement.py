@@ -24,8 +24,26 @@ def _check_levels(levels):
     return int(levels)
 
 
+def _with_weights(mesh, weights):
+    """The point data with ``weights`` (an array, or a point_data name) as the array "weight"."""
+    point_data, roles = dict(mesh.point_data or {}), dict(mesh.point_roles or {})
+    if weights is None:
+        return point_data, roles
+    if isinstance(weights, str):
+        if weights not in point_data:
+            raise Error(f"weights={weights!r}: the mesh has no point_data array of that name "
+                        f"(it has {', '.join(map(repr, point_data)) or 'none'})")
+        weights = point_data.pop(weights)
+    w = np.asarray(weights, dtype=np.float64).reshape(-1)
+    if w.shape[0] != mesh.n_points:
+        raise Error(f"weights: expected one weight per point ({mesh.n_points}), got {w.shape[0]}")
+    point_data["weight"] = w
+    roles.pop("weight", None)
+    return point_data, roles
+
+
 def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edges-and-corners",
-           crease_method="uniform", threads=0, all_levels=False, start_level=0, fvar_boundary="all"):
+           crease_method="uniform", threads=0, all_levels=False, start_level=0, fvar_boundary="all", weights=None):
     """Refine a mesh ``levels`` times with a scheme; return the finest level as a Mesh.
 
     Parameters
@@ -57,6 +75,13 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
         How face-varying data (``mesh.face_varying``, e.g. UVs with seams) is refined, as
         OpenSubdiv's FVarLinearInterpolation: 'none', 'corners-only', 'corners-plus1',
         'corners-plus2', 'boundaries' or 'all' (OpenSubdiv's default), as ``--fvar-boundary``.
+    weights : array_like or str, optional
+        Rational subdivision (docs/rational.md): one weight w > 0 per point, or the name of
+        the point_data array holding them. The scheme refines the homogeneous points
+        (w*p, w) and the result's points are projected back; the refined weights come back
+        as point_data "weight". Without it, a point_data array named "weight" (read_mesh
+        gives OBJ's ``v x y z w`` so) is used, if any. With all weights 1 the points are the
+        plain refinement's, bit for bit.
 
     The mesh's float point_data is refined with the same rules as the points (any number
     of columns), in the same pass; integer point_data (labels) is taken by origin, never
@@ -69,9 +94,10 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
     """
     _check_mesh(mesh, "refine")
     levels = _check_levels(levels)
+    point_data, point_roles = _with_weights(mesh, weights)
     refined = _subdivkit._refine(mesh, scheme, params, levels, boundary, crease_method, int(threads), bool(all_levels),
                                  int(start_level),
-                                 _data_arrays(mesh.point_data, mesh.point_roles, mesh.n_points, "point data"),
+                                 _data_arrays(point_data, point_roles, mesh.n_points, "point data"),
                                  _data_arrays(mesh.cell_data, mesh.cell_roles, mesh.n_faces, "cell data"),
                                  _face_varying_triples(mesh), str(fvar_boundary))
     for warning in refined[0]["warnings"] if refined else []:
@@ -81,7 +107,7 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
                       "does not carry (a mix of unit normals is no normal); limit_positions() gives the exact limit "
                       "normals", UserWarning, stacklevel=2)
     meshes = [Mesh._from_arrays(level, name=mesh.name,
-                                point_data=_data_shapes_like(level["point_data"], mesh.point_data),
+                                point_data=_data_shapes_like(level["point_data"], point_data),
                                 cell_data=_data_shapes_like(level["cell_data"], mesh.cell_data),
                                 face_varying=level["face_varying"], point_roles=level["point_roles"],
                                 cell_roles=level["cell_roles"])

@@ -15,15 +15,18 @@ BOUNDARY_MODES: tuple[str, ...]
 @overload
 def refine(mesh: Mesh, scheme: _SchemeArg = "catmull-clark", levels: int = 1, *, params: _Params = None,
            boundary: str = "edges-and-corners", crease_method: str = "uniform", threads: int = 0,
-           all_levels: Literal[False] = False, start_level: int = 0, fvar_boundary: str = "all") -> Mesh: ...
+           all_levels: Literal[False] = False, start_level: int = 0, fvar_boundary: str = "all",
+           weights: npt.ArrayLike | str | None = None) -> Mesh: ...
 @overload
 def refine(mesh: Mesh, scheme: _SchemeArg = "catmull-clark", levels: int = 1, *, params: _Params = None,
            boundary: str = "edges-and-corners", crease_method: str = "uniform", threads: int = 0,
-           all_levels: Literal[True], start_level: int = 0, fvar_boundary: str = "all") -> list[Mesh]: ...
+           all_levels: Literal[True], start_level: int = 0, fvar_boundary: str = "all",
+           weights: npt.ArrayLike | str | None = None) -> list[Mesh]: ...
 @overload
 def refine(mesh: Mesh, scheme: _SchemeArg = "catmull-clark", levels: int = 1, *, params: _Params = None,
            boundary: str = "edges-and-corners", crease_method: str = "uniform", threads: int = 0,
-           all_levels: bool, start_level: int = 0, fvar_boundary: str = "all") -> Mesh | list[Mesh]: ...
+           all_levels: bool, start_level: int = 0, fvar_boundary: str = "all",
+           weights: npt.ArrayLike | str | None = None) -> Mesh | list[Mesh]: ...
 
 class Evaluator:
     name: str

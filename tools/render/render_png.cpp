@@ -3,7 +3,7 @@
 //
 // Draws a mesh (any format `subdiv` reads) into a PNG with a small software rasterizer:
 // orthographic view, two-sided flat shading, face edges in a darker tone, and optionally a
-// control cage as thick lines. It needs no display and no GPU, so the figures in docs/ can
+// control cage as thick lines; polylines (OBJ 'l') of either as lines. It needs no display and no GPU, so the figures in docs/ can
 // be rendered on a headless build machine (Debian's VTK renders only through X or OSMesa).
 // --checker N paints the mesh's texture coordinates (face-varying, e.g. OBJ vt, or per
 // point) as an N x N checkerboard, interpolated across each triangle, to show UVs and seams.
@@ -211,6 +211,13 @@ int main(int argc, char** argv) try {
       const subdiv::Index next = c + 1 == cage.face_offsets[f + 1] ? cage.face_offsets[f] : c + 1;
       line(img, q[cage.face_vertices[c]], q[cage.face_vertices[next]], {200, 60, 40}, 3, 1e6);  // always in front
     }
+  // Polylines (OBJ 'l'): a refined curve in the mesh's tone, a control polygon in the cage's.
+  for (subdiv::Index l = 0; l < mesh.line_count(); ++l)
+    for (subdiv::Index c = mesh.line_offsets[l]; c + 1 < mesh.line_offsets[l + 1]; ++c)
+      line(img, p[mesh.line_vertices[c]], p[mesh.line_vertices[c + 1]], {30, 70, 160}, 3, 1e6);
+  for (subdiv::Index l = 0; l < cage.line_count(); ++l)
+    for (subdiv::Index c = cage.line_offsets[l]; c + 1 < cage.line_offsets[l + 1]; ++c)
+      line(img, q[cage.line_vertices[c]], q[cage.line_vertices[c + 1]], {200, 60, 40}, 2, 1e6);
   write_png(argv[2], img);
   return 0;
 } catch (const std::exception& e) {

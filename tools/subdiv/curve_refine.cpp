@@ -1,6 +1,7 @@
 #include "curve_refine.h"
 #include "framework/pipeline/thread_limit.h"
 #include "framework/pipeline/memory_guard.h"
+#include "framework/pipeline/rational_weights.h"
 #include "nonlinear_curve.h"
 
 #include <chrono>
@@ -30,7 +31,7 @@ void check_curve_output(const std::filesystem::path& out) {
 }
 
 // Point "rule" (the rule that made each point: r >= 0, or -1 - e for end rule e; 0 on
-// level 0) and "level"; cell "polyline" (its number in the input) and "closed".
+// level 0), "level" and the level's own point arrays (rational weights); cell "polyline" (its number in the input) and "closed".
 OutputLevel describe(const CurveLevel& L, const std::vector<std::int8_t>& rules, int l, const MeshData& mesh) {
   OutputLevel out;
   out.mesh = &mesh;
@@ -44,6 +45,7 @@ OutputLevel describe(const CurveLevel& L, const std::vector<std::int8_t>& rules,
     closed.values.push_back(L.closed[p]);
   }
   out.point_data = {std::move(rule), std::move(level)};
+  out.point_data.insert(out.point_data.end(), mesh.point_data.begin(), mesh.point_data.end());  // rational weights
   out.cell_data = {std::move(polyline), std::move(closed)};
   return out;
 }
@@ -83,8 +85,27 @@ void refine_curves_command(const CurveRefineRequest& a) {
   const ThreadLimit thread_limit(a.threads, "--threads");
   if (!thread_limit.note().empty()) fmt::print(stderr, "subdiv: note: {}\n", thread_limit.note());
   const auto scheme = load_curve(a.scheme, a.params);
-  if (scheme->nonlinear) return refine_nonlinear_curves(a, *scheme);
-  const MeshData mesh = read_mesh(a.mesh);
+  MeshData mesh = read_mesh(a.mesh);
+  // Rational polylines: (w·p, w) refined by the scheme's stencils, projected when written.
+  const std::optional<size_t> weights_at = find_rational_weights(mesh.point_data, a.weights, a.mesh);
+  if (scheme->nonlinear) {
+    if (weights_at)
+      throw Error(fmt::format("{}: '{}' is a non-linear curve scheme; rational weights need a linear one (a "
+                              "non-linear rule does not commute with projection)",
+                              a.mesh, scheme->name));
+    return refine_nonlinear_curves(a, *scheme);
+  }
+  std::vector<double> weights = weights_at ? mesh.point_data[*weights_at].values : std::vector<double>();
+  const std::string weights_name = weights_at ? kWeightArrayName : "";  // written as "weight" (OBJ: v x y z w)
+  const bool rational = !all_weights_one(weights);  // all 1: the plain refinement, bit for bit
+  // A weighted level as written: projected points and the weights as point data (OBJ: v x y z w).
+  auto written = [&](const CurveLevel& level, std::vector<double> xyz) {
+    if (weights.empty()) return mesh_from_curve_level(level, std::move(xyz));
+    if (rational) from_homogeneous(xyz, weights);
+    MeshData m = mesh_from_curve_level(level, std::move(xyz));
+    m.point_data.push_back({weights_name, 1, weights});
+    return m;
+  };
   CurveLevel base = curve_level_from_mesh(mesh, a.mesh);
   check_curve_size(base, scheme->arity, a.levels);
 
@@ -96,20 +117,22 @@ void refine_curves_command(const CurveRefineRequest& a) {
   std::vector<MeshData> meshes;
   std::vector<CurveLevel> levels_kept;
   std::vector<std::vector<std::int8_t>> rules_kept;
+  std::vector<double> positions = mesh.positions;
+  if (rational) to_homogeneous(positions, weights);
   if (all_levels || a.levels == 0) {
-    meshes.push_back(mesh_from_curve_level(base, mesh.positions));
+    meshes.push_back(weights.empty() ? mesh_from_curve_level(base, mesh.positions) : written(base, positions));
     levels_kept.push_back(base);
     rules_kept.emplace_back();
   }
   CurveLevel current = std::move(base);
-  std::vector<double> positions = mesh.positions;
   for (int l = 0; l < a.levels; ++l) {
     progress.say(fmt::format("level {}/{} of {}", l + 1, a.levels, scheme->name));
     CurveStep step = refine_curve_step(current, evaluate_curve_rules(*scheme, l), scheme->name);
     positions = step.stencils.apply(positions, 3);
+    if (!weights.empty()) weights = step.stencils.apply(weights, 1);
     current = std::move(step.child);
     if (all_levels || l + 1 == a.levels) {
-      meshes.push_back(mesh_from_curve_level(current, positions));
+      meshes.push_back(written(current, positions));
       levels_kept.push_back(current);
       rules_kept.push_back(std::move(step.origins.rule));
     }

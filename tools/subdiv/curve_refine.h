@@ -14,6 +14,7 @@ struct CurveRefineRequest {
   ParameterOverrides params;
   int threads = 0;  // 0: all cores
   bool quiet = false;
+  std::string weights;  // the rational weights' point array (rational_weights.h); empty: the default
 };
 
 // True when `scheme` (a name or a path) is a curve scheme; false for surface schemes and for

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   subdiv::cli::add_interpolate_command(app);
   subdiv::cli::add_analyze_command(app);
   subdiv::cli::add_evaluate_command(app);
+  subdiv::cli::add_parameterize_command(app);
   subdiv::cli::add_plugin_options(app);
   try {
     app.parse(argc, argv);

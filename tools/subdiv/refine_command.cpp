@@ -44,6 +44,7 @@ struct RefineArgs {
   OutputArgs output_format;  // --arrays, --compression, --compression-level
   bool timings = false;      // --timings
   bool force = false;        // --force: -o may be the input mesh
+  std::string weights;       // --weights NAME: the point array of rational weights
   bool in_pieces() const { return pieces_given || !max_memory.empty(); }
 };
 
@@ -68,6 +69,7 @@ RefineRequest refine_request(const RefineArgs& a, const OutputChoice& output, Pr
   r.vertex_parameter_files = vertex_param_files(a.vertex_params);
   r.limit_positions = a.limit;
   r.limit_normals = a.normals;
+  r.weights_array = a.weights;
   const std::string ext = lowercase_extension(a.output);
   // Only ParaView's files hold SubdivKit's arrays; a .vtp holds the finest level alone.
   if (ext == ".vtp" || ext == ".pvd" || ext == ".pvtp") r.described_arrays = output.arrays;
@@ -146,7 +148,8 @@ void run(const RefineArgs& a) {
                             "polylines whole (leave out --pieces and --max-memory)",
                             a.scheme));
   if (is_curve_scheme(a.scheme))  // polylines: tools/subdiv/curve_refine.cpp
-    return refine_curves_command({a.mesh, a.scheme, a.output, a.levels, parse_params(a.params), a.threads, a.quiet});
+    return refine_curves_command(
+        {a.mesh, a.scheme, a.output, a.levels, parse_params(a.params), a.threads, a.quiet, a.weights});
   check_piece_options(a);
   if (!a.in_pieces()) check_output_path(a.output);
   const OutputChoice output = output_choice(a.output_format);  // a bad --arrays is refused before any work
@@ -234,6 +237,10 @@ void add_refine_command(CLI::App& app) {
                   "tag does the same unless this option is given")
       ->check(CLI::IsMember({"none", "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"}))
       ->capture_default_str();
+  cmd->add_option("--weights", args->weights,
+                  "Rational subdivision: the point array holding each control point's weight w > 0; the scheme "
+                  "refines (w*p, w) and the points are projected back, so weighted nets draw conics and quadrics "
+                  "exactly (docs/rational.md). Default: OBJ's 'v x y z w', or a point array named 'weight'");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   add_output_options(cmd, args->output_format);
   cmd->add_flag("--timings", args->timings,

@@ -144,11 +144,28 @@ Vec3 applied(const SparseRow& row, std::span<const double> P) {
   return q;
 }
 
+double applied_scalar(const SparseRow& row, std::span<const double> w) {
+  double q = 0;
+  apply_row(row, w, 1, std::span<double>(&q, 1));
+  return q;
+}
+
+// A direction of the surface: of P itself, or with weights of the projected rational
+// surface X/W at the limit point p, by the quotient rule (D X - p D W) / W.
+Vec3 direction(const SparseRow& row, std::span<const double> P, std::span<const double> w, const Vec3& p, double W) {
+  Vec3 d = applied(row, P);
+  if (w.empty()) return d;
+  const double dw = applied_scalar(row, w);
+  for (size_t i = 0; i < 3; ++i) d[i] = (d[i] - p[i] * dw) / W;
+  return d;
+}
+
 // The normal from the direction rows: the sum of the sector normals.
-Vec3 normal_of(const LimitRows& r, std::span<const double> P) {
+Vec3 normal_of(const LimitRows& r, std::span<const double> P, std::span<const double> w = {}, const Vec3& p = {},
+               double W = 1) {
   const size_t k = r.directions.size();
   std::vector<Vec3> d(k);
-  for (size_t j = 0; j < k; ++j) d[j] = applied(r.directions[j], P);
+  for (size_t j = 0; j < k; ++j) d[j] = direction(r.directions[j], P, w, p, W);
   Vec3 n{0, 0, 0};
   for (size_t j = 0; j + (r.cyclic ? 0 : 1) < k; ++j) {
     const Vec3 c = cross(d[j], d[(j + 1) % k]);
@@ -588,10 +605,17 @@ LimitStencils SchemeLimits::stencils(const Level& level, int step) {
 }
 
 LimitResult SchemeLimits::evaluate(const Level& level, std::span<const double> positions) {
+  return evaluate(level, positions, {});
+}
+
+LimitResult SchemeLimits::evaluate(const Level& level, std::span<const double> positions,
+                                   std::span<const double> weights) {
   Impl& I = *impl_;
   const Index V = level.vertex_count;
   if (positions.size() != size_t(3 * V))
     throw Error(fmt::format("limit positions: {} coordinates given for {} vertices", positions.size(), V));
+  if (!weights.empty() && weights.size() != size_t(V))
+    throw Error(fmt::format("limit positions: {} weights given for {} vertices", weights.size(), V));
   std::vector<std::uint8_t> refined(size_t(V), 0);
   const std::vector<LimitRows> rows = I.all_rows(level, I.options.first_step, &refined);
   LimitResult r;
@@ -601,9 +625,12 @@ LimitResult SchemeLimits::evaluate(const Level& level, std::span<const double> p
   r.normal_exact.assign(size_t(V), 0);
   tbb::parallel_for(Index(0), V, [&](Index v) {
     const LimitRows& l = rows[size_t(v)];
-    const Vec3 p = applied(l.position, positions);
+    Vec3 p = applied(l.position, positions);
+    const double W = weights.empty() ? 1.0 : applied_scalar(l.position, weights);
+    if (!weights.empty())
+      for (double& c : p) c /= W;
     const bool normal_exact = l.exact && l.normal_exact && l.directions.size() >= 2;
-    const Vec3 n = normal_exact ? normal_of(l, positions) : Vec3{0, 0, 0};
+    const Vec3 n = normal_exact ? normal_of(l, positions, weights, p, W) : Vec3{0, 0, 0};
     for (int i = 0; i < 3; ++i) {
       r.positions[size_t(3 * v + i)] = p[size_t(i)];
       r.normals[size_t(3 * v + i)] = n[size_t(i)];

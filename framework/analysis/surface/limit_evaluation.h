@@ -82,6 +82,10 @@ public:
   ~SchemeLimits();
 
   LimitResult evaluate(const Level& level, std::span<const double> positions);
+  // The limits of a rational surface: `positions` are the homogeneous points' first three
+  // coordinates (w·p) and `weights` their w. The limit is projected after the linear masks,
+  // P = X/W, and each tangent by the quotient rule, (D X - P D W)/W (pipeline/rational_weights.h).
+  LimitResult evaluate(const Level& level, std::span<const double> positions, std::span<const double> weights);
   LimitStencils stencils(const Level& level);            // the level made by options.first_step steps
   LimitStencils stencils(const Level& level, int step);  // ... by `step` steps
 

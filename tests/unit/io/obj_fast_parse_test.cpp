@@ -103,7 +103,7 @@ TEST_CASE("obj fast path: the line-by-line reader's mesh on simple files, any ch
   check_taken("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n");
   check_taken("# only a comment\n\n   \n");
   check_taken("");
-  check_taken("v 0 0 0 1\nv +1.5 -2e-3 4 0.5 0.5 0.5\nv 0 1 0#c\nf 1 2 3#c\nf -3 -2 -1\n");
+  check_taken("v 0 0 0\nv +1.5 -2e-3 4 0.5 0.5 0.5\nv 0 1 0#c\nf 1 2 3#c\nf -3 -2 -1\n");
   check_taken("f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n");  // forward references
   check_taken("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/-1/-1\n");
   check_taken("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 1//1 2//1 3//1/9\n");
@@ -111,6 +111,21 @@ TEST_CASE("obj fast path: the line-by-line reader's mesh on simple files, any ch
   check_taken("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 1\n# vt unused by faces\nf 1 2 3\n");
   check_taken("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\ncstype bspline\nvp 0.5\nf 1 2 3\n");
   check_taken("v 1e-320 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");  // a denormal is a number
+}
+
+TEST_CASE("obj fast path: a rational weight (v x y z w) is left to the line-by-line reader") {
+  // The weights become the point array "weight" (pipeline/rational_weights.h); only the
+  // line-by-line reader makes it, naming the line of a weight that is not positive.
+  CHECK_FALSE(io_detail::parse_obj_fast("v 0 0 0 2\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 1).has_value());
+  TempDir dir;
+  write_text(dir / "w.obj", "v 0 0 0\nv 1 0 0 2.5\nv 0 1 0\nf 1 2 3\n");
+  const MeshData m = io_detail::read_obj(dir / "w.obj");
+  REQUIRE(m.point_data.size() == 1);
+  CHECK(m.point_data[0].name == "weight");
+  CHECK(m.point_data[0].values == std::vector<double>{1, 2.5, 1});  // 1 where a line has no w (the OBJ spec)
+  write_text(dir / "bad.obj", "v 0 0 0\nv 1 0 0 -1\nv 0 1 0\nf 1 2 3\n");
+  CHECK(error_of([&] { io_detail::read_obj(dir / "bad.obj"); }).find("bad.obj:2: vertex 2 has the weight w = -1") !=
+        std::string::npos);
 }
 
 TEST_CASE("obj fast path: a large grid with vt, vn, comments, groups and relative numbers, LF and CRLF") {
@@ -180,7 +195,7 @@ TEST_CASE("obj fast path: random files from valid and broken lines, against the 
                         "v nan 0 0",     "f 99 1 2",         "vt 1 2 3",        "f 1 2 3 \\",    "t crease 2/1/0 0 1 1",
                         "l 1 2",         "f 0 1 2",          "v 1 2 3 # c",     "f 1 2 3#c",     "v 1\r2 3"};
   // Every other file from plain-geometry lines only, so that the fast path answers often.
-  const char* plain[] = {"v 1 2 3", "v -1e5 +2 3.25 1", "v 0 0 0", "# comment", "g a b", "", "   ", "s off",
+  const char* plain[] = {"v 1 2 3", "v -1e5 +2 3.25", "v 0 0 0", "# comment", "g a b", "", "   ", "s off",
                          "f 1 2 3", "f -1 -2 -3", "f 1 2 3#c", "v 1 2 3 # c", "vt 0.5 0.25", "vn 0 0 1"};
   std::mt19937 random(6);
   TempDir dir;
