@@ -278,6 +278,10 @@ class Mesh:
     def corner_sharpness(self, value):
         self._corner_sharpness = _as_sharpness(value, len(self._corners), "corner_sharpness")
 
+    def _arrays(self):
+        """The arrays as _from_arrays takes them (no copies)."""
+        return {key: getattr(self, key) for key in _ARRAYS}
+
     @property
     def n_points(self):
         """Number of vertices."""
@@ -324,7 +328,7 @@ class Mesh:
 
     def with_points(self, points):
         """The same topology, tags and data with new positions (for instance after ``S @ P``)."""
-        mesh = Mesh._from_arrays({key: getattr(self, key) for key in _ARRAYS}, name=self.name,
+        mesh = Mesh._from_arrays(self._arrays(), name=self.name,
                                  point_data=self.point_data, cell_data=self.cell_data, face_varying=self.face_varying,
                                  point_roles=self.point_roles, cell_roles=self.cell_roles)
         mesh.points = points

@@ -41,5 +41,5 @@ def parameterize(mesh, *, boundary="circle", corners=None, weights="uniform"):
     point_roles = {k: v for k, v in mesh.point_roles.items() if k not in uv_names}
     face_varying = {k: v for k, v in mesh.face_varying.items() if k != "uv"}
     face_varying["uv"] = (done["uv"], np.array(mesh.face_indices, dtype=np.int32))
-    return Mesh._from_arrays(mesh.__dict__, name=mesh.name, point_data=point_data, cell_data=mesh.cell_data,
+    return Mesh._from_arrays(mesh._arrays(), name=mesh.name, point_data=point_data, cell_data=mesh.cell_data,
                              face_varying=face_varying, point_roles=point_roles, cell_roles=mesh.cell_roles)

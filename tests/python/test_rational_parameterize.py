@@ -49,8 +49,7 @@ def test_weights_by_name_and_refusals():
     cube = subdivkit.read_mesh(MESHES / "cube.obj")
     w = np.linspace(0.5, 2.0, cube.n_points)
     by_array = subdivkit.refine(cube, "catmull-clark", 2, weights=w)
-    named = subdivkit.Mesh._from_arrays(cube.__dict__, name=cube.name, point_data={"rw": w}, cell_data={},
-                                        face_varying={}, point_roles={}, cell_roles={})
+    named = subdivkit.Mesh(cube.points, cube.faces, point_data={"rw": w}, name=cube.name)
     by_name = subdivkit.refine(named, "catmull-clark", 2, weights="rw")
     assert np.array_equal(by_array.points, by_name.points)
     w[3] = 0
