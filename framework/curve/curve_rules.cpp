@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "framework/analysis/curve/variational_curve.h"
 #include "framework/rules/formula.h"
 #include "framework/util/error.h"
 
@@ -41,8 +42,10 @@ CurveRulesAtLevel evaluate_curve_rules(const CurveScheme& scheme, int level) {
   std::vector<int> variational_starts;
   std::vector<std::vector<double>> variational_weights;
   if (scheme.variational()) {
-    out.variational = variational_energy(scheme, level);
-    variational_rules(out.variational, variational_starts, variational_weights);
+    const VariationalEnergy energy = variational_energy(scheme, level);
+    variational_rules(energy, variational_starts, variational_weights);
+    out.variational_alpha = energy.alpha;
+    out.variational_r = energy.r;
   }
   for (int r = 0; r < scheme.arity; ++r) {
     const std::string where = fmt::format("{}: rules[{}]", scheme.path, r);

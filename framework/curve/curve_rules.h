@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "framework/analysis/curve/curve_mask.h"
-#include "framework/analysis/curve/variational_curve.h"
 #include "framework/scheme/scheme.h"
 
 namespace subdiv {
@@ -23,9 +22,11 @@ struct CurveRulesAtLevel {
   CurveEnds ends = CurveEnds::Interpolate;
   // Explicit end rules (CurveEnds::Rules), or the one rule {1} for CurveEnds::Interpolate.
   std::vector<std::vector<double>> end_rules;
-  // A variational scheme (alpha not empty): the refiner solves its energy per polyline; the
-  // rules above are then its bi-infinite rules (for analysis and the order of new points).
-  VariationalEnergy variational;
+  // A variational scheme (alpha not empty; analysis/curve/variational_curve.h): the refiner
+  // solves its energy per polyline; the rules above are then its bi-infinite rules (for
+  // analysis and the order of new points).
+  std::vector<double> variational_alpha;
+  int variational_r = 0;
 };
 
 // Evaluates every weight formula at level `level` (j = index of the weight in its rule).
