@@ -66,7 +66,7 @@ TEST_CASE("subdiv analyze: parameters, curve schemes, user files, failures") {
   CHECK(curve.output.find("eigenvalues: 1, 0.5, 0.25, 0.25, 0.125, -0.0625, -0.0625") != std::string::npos);
 
   // Kobbelt 1996's variational scheme of the second difference: C2; its local matrix has
-  // the eigenvalues 1, 1/2, 1/4 of a C2 scheme, then 3 - 2 sqrt 2 + ... ≈ 0.175 > 1/8, so
+  // the eigenvalues 1, 1/2, 1/4 of a C2 scheme, then one of about 0.175 > 1/8, so
   // third derivatives diverge and C3 cannot be proven.
   const auto variational = run_subdiv("analyze variational-cubic");
   CAPTURE(variational.output);
