@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "framework/analysis/curve/variational_curve.h"
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
 
@@ -104,6 +105,35 @@ std::vector<Point> interpolating_points(const CurveRulesAtLevel& rules, long n) 
   return points;
 }
 
+// A variational scheme's polyline (analysis/curve/variational_curve.h): old points kept
+// (an open polyline's end points shared with the polylines ending there), the new points
+// from the solved energy, in order along the polyline.
+template <class Emit>
+void variational_polyline(std::span<const Index> g, bool closed, const CurveRulesAtLevel& rules,
+                          const std::string& scheme_name, Row& row, std::vector<Index>& copy_of, CurveLevel& child,
+                          Emit& emit) {
+  const long n = long(g.size()), per = rules.arity - 1;
+  const VariationalEnergy energy{int(rules.arity), rules.variational_alpha, rules.variational_r, scheme_name};
+  const std::vector<VariationalRow> rows = variational_rows(energy, n, closed);
+  for (long i = 0; i < n; ++i) {
+    row.clear();
+    row.add(g[i], 1.0);
+    const bool end = !closed && (i == 0 || i == n - 1);
+    if (end && copy_of[g[i]] != kNone) {
+      child.vertices.push_back(copy_of[g[i]]);
+    } else {
+      if (end) copy_of[g[i]] = child.vertex_count;
+      emit(std::int8_t(0), Index(i));
+    }
+    if (!closed && i == n - 1) break;
+    for (long r = 1; r <= per; ++r) {
+      row.clear();
+      for (const auto& [k, w] : rows[size_t(i * per + r - 1)]) row.add(g[k], w);
+      emit(std::int8_t(r), Index(i));
+    }
+  }
+}
+
 }  // namespace
 
 CurveStep refine_curve_step(const CurveLevel& parent, const CurveRulesAtLevel& rules,
@@ -124,7 +154,9 @@ CurveStep refine_curve_step(const CurveLevel& parent, const CurveRulesAtLevel& r
   for (Index p = 0; p < parent.polyline_count(); ++p) {
     const auto g = parent.polyline(p);
     const long n = long(g.size());
-    if (parent.is_closed(p)) {
+    if (!rules.variational_alpha.empty()) {
+      variational_polyline(g, parent.is_closed(p), rules, scheme_name, row, copy_of, child, emit);
+    } else if (parent.is_closed(p)) {
       for (long c = 0; c < m * n; ++c) {
         const long i = c / m, r = c % m;
         row.clear();

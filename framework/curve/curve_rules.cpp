@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "framework/analysis/curve/variational_curve.h"
 #include "framework/rules/formula.h"
 #include "framework/util/error.h"
 
@@ -30,7 +31,7 @@ std::vector<double> evaluate_rule(FormulaSet& formulas, const std::vector<std::s
 }  // namespace
 
 CurveRulesAtLevel evaluate_curve_rules(const CurveScheme& scheme, int level) {
-  if (int(scheme.starts.size()) != scheme.arity || int(scheme.weights.size()) != scheme.arity)
+  if (!scheme.variational() && (int(scheme.starts.size()) != scheme.arity || int(scheme.weights.size()) != scheme.arity))
     throw Error(fmt::format("{}: curve scheme '{}' has {} rules for arity {}", scheme.path, scheme.name,
                             scheme.weights.size(), scheme.arity));
   FormulaSet formulas(scheme.parameters, scheme.definitions);
@@ -38,10 +39,19 @@ CurveRulesAtLevel evaluate_curve_rules(const CurveScheme& scheme, int level) {
   out.arity = scheme.arity;
   out.level = level;
   out.ends = scheme.ends;
+  std::vector<int> variational_starts;
+  std::vector<std::vector<double>> variational_weights;
+  if (scheme.variational()) {
+    const VariationalEnergy energy = variational_energy(scheme, level);
+    variational_rules(energy, variational_starts, variational_weights);
+    out.variational_alpha = energy.alpha;
+    out.variational_r = energy.r;
+  }
   for (int r = 0; r < scheme.arity; ++r) {
     const std::string where = fmt::format("{}: rules[{}]", scheme.path, r);
-    std::vector<double> w = evaluate_rule(formulas, scheme.weights[r], where, level);
-    int start = scheme.starts[r];
+    std::vector<double> w = scheme.variational() ? variational_weights[size_t(r)]
+                                                 : evaluate_rule(formulas, scheme.weights[r], where, level);
+    int start = scheme.variational() ? variational_starts[size_t(r)] : scheme.starts[r];
     size_t lo = 0, hi = w.size();
     while (lo < hi && w[lo] == 0.0) ++lo;
     while (hi > lo && w[hi - 1] == 0.0) --hi;

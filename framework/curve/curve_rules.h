@@ -22,6 +22,11 @@ struct CurveRulesAtLevel {
   CurveEnds ends = CurveEnds::Interpolate;
   // Explicit end rules (CurveEnds::Rules), or the one rule {1} for CurveEnds::Interpolate.
   std::vector<std::vector<double>> end_rules;
+  // A variational scheme (alpha not empty; analysis/curve/variational_curve.h): the refiner
+  // solves its energy per polyline; the rules above are then its bi-infinite rules (for
+  // analysis and the order of new points).
+  std::vector<double> variational_alpha;
+  int variational_r = 0;
 };
 
 // Evaluates every weight formula at level `level` (j = index of the weight in its rule).

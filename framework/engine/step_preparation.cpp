@@ -11,11 +11,26 @@
 #include "framework/util/error.h"
 
 namespace subdiv {
+namespace {
+
+// The distinct valences of the level's vertices, ascending: the end valences a rule of n0,
+// n1 is tabulated at (a fan's hub and rim, not every valence up to the hub's).
+std::vector<int> valences_present(const Level& L) {
+  std::vector<char> seen(size_t(L.max_valence()) + 1, 0);
+  for (Index v = 0; v < L.vertex_count; ++v) seen[size_t(L.valence(v))] = 1;
+  std::vector<int> out;
+  for (size_t n = 0; n < seen.size(); ++n)
+    if (seen[n]) out.push_back(int(n));
+  return out;
+}
+
+}  // namespace
 
 StepInputs prepare_step(const Scheme& scheme, const StepRules& step, const Level& parent, int level,
                         const RefineOptions& options, const VertexParameters& values, bool lazy_features) {
   const int max_n = parent.max_valence(), max_k = parent.max_face_size();
-  StepInputs inputs{step_weight_tables(scheme, step, max_n, max_k, level),
+  const std::vector<int> valences = valences_present(parent);
+  StepInputs inputs{step_weight_tables(scheme, step, max_n, max_k, level, nullptr, &valences),
                     per_vertex_tables(scheme, step, parent, values, max_n, max_k, level),
                     std::make_unique<StepFeatures>()};
   StepFeatures& f = *inputs.features;

@@ -18,11 +18,11 @@ struct TableShape {
   size_t stride[kVariables] = {};
 };
 
-TableShape table_shape(const FormulaUses& uses, int max_n, int max_k, int max_j) {
+TableShape table_shape(const FormulaUses& uses, int max_n, int max_k, int max_j, int end_count) {
   TableShape s;
   const bool used[kVariables] = {uses.n, uses.k, uses.j, uses.n0, uses.n1, uses.k0, uses.k1,
                                  uses.ci, uses.cb, uses.ex, uses.fe};
-  const int range[kVariables] = {max_n + 1, max_k + 1, max_j + 1, max_n + 1, max_n + 1, max_k + 1, max_k + 1,
+  const int range[kVariables] = {max_n + 1, max_k + 1, max_j + 1, end_count, end_count, max_k + 1, max_k + 1,
                                  std::max(max_k, 1), 2, max_k + 1, max_k + 1};
   for (int v = kVariables - 1; v >= 0; --v) {
     if (!used[v]) continue;
@@ -98,7 +98,8 @@ void drop_constant_dimensions(CompiledTerm& t, const int count[kVariables]) {
   for (int v = 0; v < kVariables; ++v) *strides[v] = kept_stride[v];
 }
 
-CompiledTerm compile_term(const Term& term, FormulaSet& formulas, int max_n, int max_k, int level) {
+CompiledTerm compile_term(const Term& term, FormulaSet& formulas, const std::vector<int>* valences, int max_n,
+                          int max_k, int level) {
   CompiledTerm out;
   out.role = term.role;
   out.new_point = term.new_point;
@@ -107,7 +108,17 @@ CompiledTerm compile_term(const Term& term, FormulaSet& formulas, int max_n, int
   int max_j = std::max(max_n, max_k);
   if (const RoleInfo* role = registered_role(term.role)) max_j = std::max(max_j, role->max_points(max_n, max_k) - 1);
   out.max_j = max_j;
-  const TableShape shape = table_shape(formulas.uses(id), max_n, max_k, max_j);
+  const FormulaUses uses = formulas.uses(id);
+  // End valences: every valence up to max_n, or the ones present (valence_of[slot]).
+  std::vector<int> valence_of;
+  if (valences && (uses.n0 || uses.n1)) {
+    out.end_slot.assign(size_t(max_n) + 1, 0);
+    for (int n : *valences)
+      if (n >= 0 && n <= max_n) out.end_slot[size_t(n)] = int(valence_of.size()), valence_of.push_back(n);
+  }
+  const int end_count = valence_of.empty() ? max_n + 1 : int(valence_of.size());
+  auto end_valence = [&](int x) { return double(valence_of.empty() ? x : valence_of[size_t(x)]); };
+  const TableShape shape = table_shape(uses, max_n, max_k, max_j, end_count);
   out.stride_n = shape.stride[0], out.stride_k = shape.stride[1], out.stride_j = shape.stride[2];
   out.stride_n0 = shape.stride[3], out.stride_n1 = shape.stride[4];
   out.stride_k0 = shape.stride[5], out.stride_k1 = shape.stride[6];
@@ -116,19 +127,21 @@ CompiledTerm compile_term(const Term& term, FormulaSet& formulas, int max_n, int
   check_table_fits(shape, term.where, max_n);
   out.table.resize(shape.size);
   for_each_entry(shape.count, shape.stride, [&](size_t i, const int* x) {
-    out.table[i] = formulas.evaluate(id, {double(x[0]), double(x[1]), double(x[2]), double(level), double(x[3]),
-                                          double(x[4]), double(x[5]), double(x[6]), double(x[7]), double(x[8]),
+    out.table[i] = formulas.evaluate(id, {double(x[0]), double(x[1]), double(x[2]), double(level), end_valence(x[3]),
+                                          end_valence(x[4]), double(x[5]), double(x[6]), double(x[7]), double(x[8]),
                                           double(x[9]), double(x[10])});
   });
   drop_constant_dimensions(out, shape.count);
+  if (out.stride_n0 == 0 && out.stride_n1 == 0) out.end_slot.clear();
   return out;
 }
 
-CompiledRule compile_rule(const Rule& rule, FormulaSet& formulas, int max_n, int max_k, int level) {
+CompiledRule compile_rule(const Rule& rule, FormulaSet& formulas, const std::vector<int>* valences, int max_n,
+                          int max_k, int level) {
   CompiledRule out;
   out.where = rule.where;
   out.defined = true;
-  for (const Term& term : rule.terms) out.terms.push_back(compile_term(term, formulas, max_n, max_k, level));
+  for (const Term& term : rule.terms) out.terms.push_back(compile_term(term, formulas, valences, max_n, max_k, level));
   return out;
 }
 
@@ -171,7 +184,7 @@ WeightTables compile_rule_table(const RuleTable& rules, const FormulaScope& scop
   FormulaSet formulas(scope.parameters, scope.definitions ? *scope.definitions : none);
   for (int e = 0; e < kElementCount; ++e)
     for (int c = 0; c < kContextCount; ++c)
-      if (rules[e][c]) tables.rules[e][c] = compile_rule(*rules[e][c], formulas, max_n, max_k, level);
+      if (rules[e][c]) tables.rules[e][c] = compile_rule(*rules[e][c], formulas, scope.valences, max_n, max_k, level);
 
   for (Element e : {Element::Vertex, Element::Corner}) {
     auto& r = tables.rules[int(e)];

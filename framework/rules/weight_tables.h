@@ -24,11 +24,15 @@ struct CompiledTerm {
   // the face's counts of extraordinary corners ex and feature edges fe, each <= max_k.
   size_t stride_ci = 0, stride_cb = 0, stride_ex = 0, stride_fe = 0;
   int max_j = 0;  // the largest point index j tabulated
+  // When not empty, the end valences n0, n1 are tabulated only at the valences present on
+  // the level (FormulaScope::valences): end_slot[n] is valence n's place in the table.
+  std::vector<int> end_slot;
   // Role::Curve: weights on feature-curve points at offsets curve_start, curve_start+1, ...
   int curve_start = 0;
   std::vector<double> curve_weights;
 
   double weight(int n, int k, int j, int n0 = 0, int n1 = 0, int k0 = 0, int k1 = 0) const {
+    if (!end_slot.empty()) n0 = end_slot[size_t(n0)], n1 = end_slot[size_t(n1)];
     return table[n * stride_n + k * stride_k + j * stride_j + n0 * stride_n0 + n1 * stride_n1 + k0 * stride_k0 +
                  k1 * stride_k1];
   }
@@ -61,6 +65,10 @@ struct WeightTables {
 struct FormulaScope {
   std::map<std::string, double> parameters;
   const std::vector<NamedFormula>* definitions = nullptr;
+  // The valences present on the level, ascending, when known: a formula of the end
+  // valences n0, n1 is then tabulated at these pairs only, not at every pair up to the
+  // largest valence (cubic in it with j: a 300-triangle fan took 24 s).
+  const std::vector<int>* valences = nullptr;
 };
 
 // A rule table's formulas evaluated for every n < max_n + 1 (the largest valence) and

@@ -45,6 +45,12 @@ struct CurveScheme {
   // for Scheme::definitions.
   std::vector<NamedFormula> definitions;
   std::shared_ptr<const PolylineRule> nonlinear;
+  // A variational scheme ("variational" in the file; analysis/curve/variational_curve.h):
+  // the fairness energy's coefficients alpha (formulas) and offset r. Its new points solve a
+  // linear system per level; `starts` and `weights` stay empty.
+  std::vector<std::string> variational_alpha;
+  int variational_r = 0;
+  bool variational() const { return !variational_alpha.empty(); }
 };
 
 }  // namespace subdiv

@@ -500,6 +500,9 @@ void check_curve_fits_split(const CurveScheme& c, SplitKind split, const Place& 
   if (c.nonlinear)
     fail(at, fmt::format("curve scheme '{}' ({}) is non-linear; boundaries and creases need a linear curve scheme",
                          c.name, c.path));
+  if (c.variational())
+    fail(at, fmt::format("curve scheme '{}' ({}) is variational: its new points depend on the whole polyline, "
+                         "but boundaries and creases need a local curve rule", c.name, c.path));
   if (c.arity != info.curve_arity)
     fail(at, fmt::format("curve scheme '{}' has arity {}, but the {} split refines boundaries with arity {}",
                          c.name, c.arity, info.name, info.curve_arity));
@@ -537,6 +540,33 @@ std::vector<std::string> parse_curve_weights(const Json& w, const Place& at, For
     add_curve_formula(formulas, weights.back(), at[t]);
   }
   return weights;
+}
+
+// "variational": {"alpha": [alpha_0, ..., alpha_s], "r": r} (Kobbelt 1996): the new points
+// minimise sum_i K(P_i)^2, K(P_i) = sum_j alpha_j P_{i+j-r}; solved per level by the curve
+// refiner (analysis/curve/variational_curve.h). The alpha may be formulas of the parameters.
+void parse_variational(const Json& v, const Place& at, FormulaSet& formulas, CurveScheme& curve) {
+  check_keys(v, {"alpha", "r"}, at);
+  const Json& alpha = require(v, "alpha", at);
+  if (!alpha.is_array() || alpha.size() < 2)
+    fail(at / "alpha", "expected an array of at least 2 coefficients alpha_0 .. alpha_s of K(P_i) = sum_j "
+                       "alpha_j P_{i+j-r}");
+  double sum = 0, magnitude = 0;
+  for (size_t j = 0; j < alpha.size(); ++j) {
+    curve.variational_alpha.push_back(as_formula(alpha[j], (at / "alpha")[j]));
+    const int id = add_curve_formula(formulas, curve.variational_alpha.back(), (at / "alpha")[j]);
+    const double a = formulas.evaluate(id, {0, 0, double(j), 0});
+    if (!std::isfinite(a)) fail((at / "alpha")[j], fmt::format("'{}' is {} at level 0", curve.variational_alpha.back(), a));
+    sum += a, magnitude += std::abs(a);
+  }
+  if (magnitude == 0.0 || std::abs(sum) > 1e-12 * magnitude)
+    fail(at / "alpha", fmt::format("the coefficients sum to {} at level 0; K must vanish on constant polygons "
+                                   "(alpha(1) = 0), and not all may be 0", sum));
+  const Json& r = require(v, "r", at);
+  if (!r.is_number_integer() || r.get<long long>() < 0 || r.get<long long>() >= (long long)alpha.size())
+    fail(at / "r", fmt::format("expected a whole number from 0 to {} (K(P_i) reads P_(i-r) .. P_(i-r+{})), found {}",
+                               alpha.size() - 1, alpha.size() - 1, shortened(r.dump())));
+  curve.variational_r = r.get<int>();
 }
 
 long floor_div(long a, long b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
@@ -727,7 +757,7 @@ std::shared_ptr<const CurveScheme> curve_scheme_from_json(const Json& root, cons
   const std::filesystem::path path = label;
   const Place at{path.string(), ""};
   check_keys(root, {"$schema", "name", "kind", "description", "reference", "arity", "parameters", "state",
-                    "definitions", "rules", "mask", "ends"}, at);
+                    "definitions", "rules", "mask", "ends", "variational"}, at);
   auto curve = std::make_shared<CurveScheme>();
   curve->path = path.string();
   curve->name = as_string(require(root, "name", at), at / "name");
@@ -743,9 +773,17 @@ std::shared_ptr<const CurveScheme> curve_scheme_from_json(const Json& root, cons
   FormulaSet formulas(curve->parameters, curve->definitions);
 
   const bool has_rules = root.contains("rules"), has_mask = root.contains("mask");
-  if (has_rules == has_mask)
+  const bool has_variational = root.contains("variational");
+  if (int(has_rules) + int(has_mask) + int(has_variational) != 1)
     fail(at, "a curve scheme states exactly one of \"rules\" (one rule per new point of each old "
-             "point) or \"mask\" (the coefficients a_i of the refinement equation)");
+             "point), \"mask\" (the coefficients a_i of the refinement equation) or \"variational\" (the "
+             "fairness energy its new points minimise)");
+  if (has_variational) {
+    if (root.contains("ends"))
+      fail(at / "ends", "a variational scheme has no end rules: its energy decides the ends (docs/curves.md)");
+    parse_variational(root["variational"], at / "variational", formulas, *curve);
+    return curve;
+  }
   if (has_rules) {
     const Json& rules = root["rules"];
     if (!rules.is_array() || int(rules.size()) != curve->arity)

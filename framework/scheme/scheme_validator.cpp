@@ -360,6 +360,17 @@ void check_parameter_grid(const Scheme& scheme, const SchemeMaker& make, const s
 
 void check_curve(const CurveScheme& curve, const std::string& path, const std::string& text, ValidationReport& report) {
   FormulaSet formulas(curve.parameters, curve.definitions);
+  if (curve.variational()) {  // K vanishes on constant polygons: alpha(1) = 0
+    double sum = 0, magnitude = 0;
+    for (size_t j = 0; j < curve.variational_alpha.size(); ++j) {
+      const double a = formulas.evaluate(formulas.add(curve.variational_alpha[j], path), {0, 0, double(j)});
+      sum += a, magnitude += std::abs(a);
+    }
+    ++report.checks;
+    if (!(std::abs(sum) <= 1e-12 * magnitude))
+      report.errors.push_back({fmt::format("{}:{}: variational.alpha sums to {}, not 0", path,
+                                           line_of(text, curve.variational_alpha[0]), sum)});
+  }
   for (size_t r = 0; r < curve.weights.size(); ++r) {
     double sum = 0;
     for (size_t t = 0; t < curve.weights[r].size(); ++t)

@@ -9,7 +9,9 @@ namespace subdiv {
 
 // max_n: the largest valence, max_k: the largest face size on the level; level: l.
 // `parameters`: the values formulas see, when not the scheme's own (per-vertex parameters).
+// `valences`: the valences present on the level, ascending, when known (FormulaScope).
 WeightTables step_weight_tables(const Scheme& scheme, const StepRules& step, int max_n, int max_k, int level,
-                                const std::map<std::string, double>* parameters = nullptr);
+                                const std::map<std::string, double>* parameters = nullptr,
+                                const std::vector<int>* valences = nullptr);
 
 }  // namespace subdiv

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "framework/analysis/curve/variational_curve.h"
 #include "framework/rules/formula.h"
 #include "framework/scheme/scheme_loader.h"
 #include "framework/util/error.h"
@@ -15,6 +16,13 @@ namespace fs = std::filesystem;
 
 
 CurveMask curve_mask_from_scheme(const CurveScheme& curve, int level) {
+  if (curve.variational()) {
+    // Its bi-infinite rules: the closed polygon's solution, translation invariant.
+    std::vector<int> starts;
+    std::vector<std::vector<double>> weights;
+    variational_rules(variational_energy(curve, level), starts, weights);
+    return mask_from_rules(curve.arity, starts, weights);
+  }
   FormulaSet formulas(curve.parameters, curve.definitions);
   std::vector<std::vector<double>> weights(curve.weights.size());
   for (size_t r = 0; r < curve.weights.size(); ++r)
@@ -33,6 +41,8 @@ bool curve_scheme_is_level_dependent(const CurveScheme& curve) {
   for (size_t r = 0; r < curve.weights.size(); ++r)
     for (size_t t = 0; t < curve.weights[r].size(); ++t)
       if (formulas.uses(formulas.add(curve.weights[r][t], curve.path)).l) return true;
+  for (const std::string& a : curve.variational_alpha)
+    if (formulas.uses(formulas.add(a, curve.path)).l) return true;
   return false;
 }
 

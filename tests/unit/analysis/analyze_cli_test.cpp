@@ -65,6 +65,16 @@ TEST_CASE("subdiv analyze: parameters, curve schemes, user files, failures") {
   CHECK(curve.output.find("C1 proven") != std::string::npos);
   CHECK(curve.output.find("eigenvalues: 1, 0.5, 0.25, 0.25, 0.125, -0.0625, -0.0625") != std::string::npos);
 
+  // Kobbelt 1996's variational scheme of the second difference: C2; its local matrix has
+  // the eigenvalues 1, 1/2, 1/4 of a C2 scheme, then one of about 0.175 > 1/8, so
+  // third derivatives diverge and C3 cannot be proven.
+  const auto variational = run_subdiv("analyze variational-cubic");
+  CAPTURE(variational.output);
+  CHECK(variational.exit_code == 0);
+  CHECK(variational.output.find("C2 proven") != std::string::npos);
+  CHECK(variational.output.find("C3 not proven") != std::string::npos);
+  CHECK(variational.output.find("eigenvalues: 1, 0.5, 0.25,") != std::string::npos);
+
   const auto file = write_temp("broken-cli.json", R"({"name": "broken", "split": "quad", "faces": "any", "curve": "cubic-bspline",
     "rules": {"face": [{"sum": "vertices", "w": "1/k"}],
               "edge": [{"sum": "ends", "w": "1/4"}, {"sum": "faces", "new": "face", "w": "1/4"}],
