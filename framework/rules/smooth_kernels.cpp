@@ -72,7 +72,7 @@ std::vector<SmoothKernels::Term> compile_kernel(const StepContext& s, Element el
                        : t.stride_n                         ? Reads::N
                        : t.stride_k                         ? Reads::K
                                                             : Reads::Nothing;
-    terms.push_back({gather, &t, varies, reads});
+    terms.push_back({gather, &t, varies, reads, {}, 0});
   }
   return terms;
 }
