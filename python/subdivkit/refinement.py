@@ -24,7 +24,7 @@ def _check_levels(levels):
 
 
 def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edges-and-corners",
-           crease_method="uniform", threads=0, all_levels=False, start_level=0, fvar_boundary="all"):
+           crease_method="uniform", threads=0, all_levels=False, start_level=0, fvar_boundary="all", progress=None):
     """Refine a mesh ``levels`` times with a scheme; return the finest level as a Mesh.
 
     Parameters
@@ -56,6 +56,11 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
         How face-varying data (``mesh.face_varying``, e.g. UVs with seams) is refined, as
         OpenSubdiv's FVarLinearInterpolation: 'none', 'corners-only', 'corners-plus1',
         'corners-plus2', 'boundaries' or 'all' (OpenSubdiv's default), as ``--fvar-boundary``.
+    progress : callable, optional
+        Called as ``progress(phase, done)`` on the calling thread: ``done`` is None when a
+        phase starts ("level 2/3: 768 faces"), then the share of the levels' work done, 0 to
+        1, after each level (by its faces), as ``subdiv refine``'s bar shows it. An exception
+        it raises stops the refinement and comes back from refine().
 
     The mesh's float point_data is refined with the same rules as the points (any number
     of columns), in the same pass; integer point_data (labels) is taken by origin, never
@@ -72,7 +77,7 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
                                  int(start_level),
                                  _data_arrays(mesh.point_data, mesh.point_roles, mesh.n_points, "point data"),
                                  _data_arrays(mesh.cell_data, mesh.cell_roles, mesh.n_faces, "cell data"),
-                                 _face_varying_triples(mesh), str(fvar_boundary))
+                                 _face_varying_triples(mesh), str(fvar_boundary), progress)
     for warning in refined[0]["warnings"] if refined else []:
         warnings.warn(f"refine: {warning}", UserWarning, stacklevel=2)
     if refined and refined[0]["dropped"]:

@@ -73,6 +73,7 @@ RefineRequest refine_request(const RefineArgs& a, const OutputChoice& output, Pr
   r.keep_all_levels = ext == ".pvd";
   r.memory_advice = "ask for fewer levels, or refine in pieces (--pieces N or --max-memory SIZE, -o OUT.pvtp)";
   r.progress = [&progress](const std::string& phase) { progress.say(phase); };
+  r.progress_fraction = [&progress](double done) { progress.fraction(done); };
   return r;
 }
 
@@ -150,7 +151,7 @@ void run(const RefineArgs& a) {
   const OutputChoice output = output_choice(a.output_format);  // a bad --arrays is refused before any work
   const ThreadLimit threads(a.threads, "--threads");
   if (!threads.note().empty() && !a.quiet) fmt::print(stderr, "subdiv: note: {}\n", threads.note());
-  Progress progress(a.timings);
+  Progress progress(a.timings, a.quiet);
   RefineRequest request = refine_request(a, output, progress);
   PreparedRefinement prepared = prepare_refinement(request);
   print_warnings(prepared.warnings);
@@ -162,8 +163,10 @@ void run(const RefineArgs& a) {
   progress.say(fmt::format("writing {}", a.output));
   Hierarchy& h = result.hierarchy;
   const Index fine_vertices = h.levels.back().vertex_count, fine_faces = h.levels.back().face_count();
+  OutputChoice writing = output;  // VTK's progress events move the bar
+  writing.vtk.progress = [&progress](double done) { progress.fraction(done); };
   write_levels(a.output, std::move(h), std::move(result.levels), result.features, result.finest_point_data,
-               result.tags, output);
+               result.tags, writing);
   progress.done();
   if (!a.quiet) {
     for (const auto& note : result.notes) fmt::print("{}\n", spell_options(note, cli_option_spelling()));
