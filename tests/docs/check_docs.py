@@ -12,7 +12,8 @@ comparison, timings (`1.25 s`, `30 ms`), the scratch folder and the checkout's p
 masked and trailing spaces dropped.
 
     check_docs.py --subdiv build/tools/subdiv/subdiv --root . README.md docs/*.md
-    check_docs.py --subdiv build/tools/subdiv/subdiv --root . --all
+    check_docs.py --subdiv build/tools/subdiv/subdiv --root . --all   (and the README's
+                                                     built-in schemes table against `subdiv schemes`)
     check_docs.py --self-test          (the checker's own test, on tests/docs/fixtures)
 """
 import argparse
@@ -115,6 +116,28 @@ def check_file(page, root, env, label=None):
     return failures
 
 
+def scheme_table_failures(readme, env):
+    """The README's built-in schemes table names every scheme `subdiv schemes` lists as
+    built-in, and no other."""
+    text = readme.read_text()
+    start = text.find("## Built-in schemes")
+    if start < 0:
+        return [f"{readme}: no '## Built-in schemes' section"]
+    end = text.find("\n## ", start + 1)
+    table = set(re.findall(r"^\| `([a-z0-9-]+)` \|", text[start:end if end > 0 else None], re.M))
+    listed = subprocess.run(["bash", "-c", "subdiv schemes"], env=env, capture_output=True, text=True).stdout
+    built_in = set(re.findall(r"^  (\S+)\s+\[built-in\]", listed, re.M))
+    failures = []
+    if not built_in:
+        failures.append("`subdiv schemes` lists no built-in scheme")
+    if built_in - table:
+        failures.append(f"{readme}: the built-in schemes table lacks {', '.join(sorted(built_in - table))}")
+    if table - built_in:
+        failures.append(f"{readme}: the built-in schemes table lists {', '.join(sorted(table - built_in))}, "
+                        "which `subdiv schemes` does not")
+    return failures
+
+
 def environment(subdiv):
     env = dict(os.environ)
     if subdiv:
@@ -161,10 +184,12 @@ def main():
     root, env = args.root.resolve(), environment(args.subdiv)
     if args.all:
         args.pages += [root / "README.md"] + sorted((root / "docs").glob("*.md"))
+    schemes_table = scheme_table_failures(root / "README.md", env) if args.all else []
     failures, blocks = [], 0
     for page in args.pages:
         blocks += len(runnable_blocks(page.read_text()))
         failures += check_file(page, root, env, label=os.path.relpath(page, root) if page.is_absolute() else None)
+    failures += schemes_table
     for f in failures:
         print(f, end="\n\n")
     print(f"{len(args.pages)} pages, {blocks} runnable blocks, {len(failures)} differ from the program")
