@@ -110,7 +110,15 @@ void check_piece_options(const RefineArgs& a) {
 void run_in_pieces(const RefineArgs& a, const RefineRequest& request, const PreparedRefinement& prepared,
                    const OutputChoice& output, Progress& progress, std::chrono::steady_clock::time_point t0) {
   PieceJob job{a.output, a.pieces, a.max_memory.empty() ? 0.0 : parse_memory_size(a.max_memory, "--max-memory"),
-               output};
+               output, {}};
+  // One bar over the pieces: piece p of n is (p + its levels' share) / n of the work.
+  int piece_now = 0, piece_count = 1;
+  job.piece_starts = [&](int piece, int pieces) {
+    piece_now = piece, piece_count = pieces;
+    progress.say(fmt::format("piece {}/{}", piece + 1, pieces));
+  };
+  RefineRequest piece_request = request;
+  piece_request.progress_fraction = [&](double done) { progress.fraction((piece_now + done) / piece_count); };
   const Index faces = prepared.base.face_count();
   if (a.pieces_given && a.pieces < 1)
     throw Error(fmt::format("--pieces {}: a refinement needs at least one piece; ask for 1 to {} pieces", a.pieces,
@@ -122,7 +130,7 @@ void run_in_pieces(const RefineArgs& a, const RefineRequest& request, const Prep
   bool first = true;
   const RefinePieceData refine = [&](const Hierarchy& h, const MeshData& piece, const RefineOptions& o) {
     LevelDataNotes said;  // every piece would say the same: the first one's
-    auto levels = refine_level_data(prepared, h, piece, o, request, said);
+    auto levels = refine_level_data(prepared, h, piece, o, piece_request, said);
     if (first) notes = std::move(said.notes), first = false;
     return levels;
   };
