@@ -5,6 +5,7 @@
 // `subdiv validate` names them).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -68,6 +69,18 @@ TEST_CASE("json_path_line finds keys and array elements, and nothing that is not
   CHECK(json_path_line(text, "not a path") == 0);
   CHECK(with_json_line("f.json: d: bad", "f.json", text) == "f.json:5: d: bad");
   CHECK(with_json_line("f.json: missing \"x\"", "f.json", text) == "f.json: missing \"x\"");
+}
+
+TEST_CASE("json_path_line on every truncation of a text stays inside it (a file changed after loading)") {
+  const std::string text = quad_scheme("\"curve\": \"cubic-bspline\",\n\"parameters\": {\"t\": {\"default\": 1}},\n",
+                                       kCatmullClarkVertex);
+  const int lines = 1 + int(std::count(text.begin(), text.end(), '\n'));
+  for (size_t n = 0; n <= text.size(); ++n)
+    for (const char* path : {"rules.vertex[2].w", "parameters.t.default", "curve", "rules.edge[9]"}) {
+      const int line = json_path_line(std::string_view(text).substr(0, n), path);
+      CHECK((line >= 0 && line <= lines));
+    }
+  CHECK(json_path_line(text, "rules.vertex[2].w") == 9);
 }
 
 TEST_CASE("an unknown curve scheme is reported at the \"curve\" that names it") {
