@@ -9,4 +9,5 @@ launcher=()
 if command -v ccache > /dev/null; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "${launcher[@]}"
+# SUBDIV_WERROR=ON (CI): warnings in framework/ fail the build.
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DSUBDIV_WERROR="${SUBDIV_WERROR:-OFF}" "${launcher[@]}"

@@ -29,6 +29,21 @@ void say(const RefineRequest& r, const std::string& phase) {
   if (r.progress) r.progress(phase);
 }
 
+void say_done(const RefineRequest& r, double done) {
+  if (r.progress_fraction) r.progress_fraction(done);
+}
+
+// A level's values cost about its faces' worth of work: the share of the levels' work
+// done when `finished` levels are.
+double levels_done(const Hierarchy& h, int finished) {
+  double total = 0, done = 0;
+  for (size_t l = 1; l < h.levels.size(); ++l) {
+    total += double(h.levels[l].face_count()) + 1;
+    if (int(l) <= finished) done += double(h.levels[l].face_count()) + 1;
+  }
+  return total > 0 ? done / total : 1.0;
+}
+
 // ---- the scheme ----------------------------------------------------------------------------
 
 SchemeSequence load_sequence(const RefineRequest& r, const ParameterOverrides& parameters) {
@@ -286,11 +301,13 @@ std::vector<LevelData> refine_level_data(const PreparedRefinement& p, const Hier
   // Rational: the positions become (w·p, w)'s first three coordinates; the weights are
   // refined with them as point data, by the same rules, in the same pass.
   if (p.rational) to_homogeneous(levels.front().positions, weights_of(levels.front(), p.weights_name)->values);
+  if (seq.total_levels > 0) say_done(r, 0.0);
   for (int l = 0; l < seq.total_levels; ++l) {
     say(r, fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
     levels.push_back(next_level_data(seq.runs, h, l, levels.back(), options));
     check_refined_points(levels.back(), l + 1, mesh.positions, r);
     if (!r.keep_all_levels) levels[size_t(l)] = {};
+    say_done(r, levels_done(h, l + 1));
   }
   if (p.rational) project_levels(levels, p.weights_name, mesh.positions);
   rename_weights(levels, p);

@@ -76,6 +76,10 @@ struct RefineRequest {
   double memory_budget = 0;                       // bytes; 0: what the machine lets this process have
   std::string memory_advice = "ask for fewer levels";  // ends the message when it does not fit
   std::function<void(const std::string& phase)> progress;  // told each phase as it starts
+  // Told the share of the long work done so far, 0 to 1, from the thread that made the
+  // request: 0 when the levels' values start, then after each level (by its faces). A
+  // front-end draws a bar with a time estimate from it (tools/subdiv/progress.h).
+  std::function<void(double done)> progress_fraction;
 };
 
 // A refinement prepared: the mesh cleaned, the scheme loaded, the base level tagged.

@@ -53,7 +53,7 @@ SplitResult dual_result(const Level& L, bool full) {
   DualSkipped skipped;
   Level child = dual_split_topology(L, full, &skipped);
   const Index child_faces = child.face_count();
-  SplitResult result{std::move(child), dual_origins(L, OriginKind::Corner, child_faces), true};
+  SplitResult result{std::move(child), dual_origins(L, OriginKind::Corner, child_faces), true, {}};
   if (skipped.edges || skipped.vertices)
     result.warning = fmt::format("the dual split made no face for {} non-manifold edge(s) and {} non-manifold "
                                  "vertex/vertices (they have no cycle of faces around them); the surface has a gap there",
@@ -65,7 +65,7 @@ SplitResult mid_edge_result(const Level& L, bool full) {
   DualSkipped skipped;
   Level child = mid_edge_split_topology(L, full, &skipped);
   const Index child_faces = child.face_count();
-  SplitResult result{std::move(child), dual_origins(L, OriginKind::Edge, child_faces), true};
+  SplitResult result{std::move(child), dual_origins(L, OriginKind::Edge, child_faces), true, {}};
   if (skipped.vertices)
     result.warning = fmt::format("the mid-edge split made no face for {} non-manifold vertex/vertices (they have no "
                                  "cycle of edges around them); the surface has a gap there",

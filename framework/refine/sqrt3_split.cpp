@@ -176,7 +176,7 @@ SplitResult flip_children(const Level& parent, bool trisect, bool full, std::vec
   if (F > 0) o.runs->first[int(OriginKind::Face)] = V, o.runs->count[int(OriginKind::Face)] = F;
   Level child = sqrt3_flip_topology(parent, full, &o.parent_face);
   trisection_base->assign(parent.edge_count(), kNone);
-  return {std::move(child), std::move(o), trisect};
+  return {std::move(child), std::move(o), trisect, {}};
 }
 
 // The child's faces and origins, and (with `full`) its edges and rings; the trisection

@@ -56,7 +56,7 @@ struct FormulaSet::Impl {
   std::deque<double> definition_values;
   std::vector<std::unique_ptr<mu::Parser>> definitions;
   std::vector<FormulaUses> definition_uses;
-  std::vector<std::string> definition_names;
+  std::vector<std::string> definition_names, definition_wheres, definition_expressions;
   std::vector<std::unique_ptr<mu::Parser>> formulas;
   std::vector<FormulaUses> formula_uses;
   std::vector<std::string> wheres, expressions;
@@ -193,9 +193,20 @@ struct FormulaSet::Impl {
                               state_wheres[i], state_names[i], value, level));
   }
 
-  void evaluate_definitions() {
+  // A definition that fails is named with its own place, not only the formula reading it
+  // (muParser reports a definition's syntax error when it first evaluates it).
+  void evaluate_definitions(const std::string& reader) {
     load_state(l);
-    for (size_t i = 0; i < definitions.size(); ++i) definition_values[i] = definitions[i]->Eval();
+    for (size_t i = 0; i < definitions.size(); ++i) {
+      try {
+        definition_values[i] = definitions[i]->Eval();
+      } catch (const mu::Parser::exception_type& e) {
+        throw Error(fmt::format("{}: definition '{}' = '{}' fails to evaluate at n={}, k={}, j={}, l={}: {} "
+                                "(while evaluating {}, which sees the definitions)",
+                                definition_wheres[i], definition_names[i], shortened(definition_expressions[i]), n, k,
+                                j, l, shortened(e.GetMsg(), 2 * kQuotedTextChars), reader));
+      }
+    }
   }
 };
 
@@ -215,6 +226,8 @@ FormulaSet::FormulaSet(const std::map<std::string, double>& parameters,
     impl_->definitions.push_back(std::move(parser));
     impl_->definition_uses.push_back(uses);
     impl_->definition_names.push_back(d.name);
+    impl_->definition_wheres.push_back(d.where);
+    impl_->definition_expressions.push_back(d.expression);
     impl_->definition_values.push_back(0.0);
   }
   impl_->finish_state();
@@ -236,8 +249,8 @@ double FormulaSet::evaluate(int id, const FormulaInputs& in) {
   impl_->n = in.n, impl_->k = in.k, impl_->j = in.j, impl_->l = in.l, impl_->n0 = in.n0, impl_->n1 = in.n1;
   impl_->k0 = in.k0, impl_->k1 = in.k1;
   impl_->ci = in.ci, impl_->cb = in.cb, impl_->ex = in.ex, impl_->fe = in.fe;
+  impl_->evaluate_definitions(impl_->wheres[id]);
   try {
-    impl_->evaluate_definitions();
     return impl_->formulas[id]->Eval();
   } catch (const mu::Parser::exception_type& e) {
     throw Error(fmt::format("{}: formula '{}' fails to evaluate at n={}, k={}, j={}, l={}: {}",

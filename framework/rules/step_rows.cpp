@@ -8,6 +8,8 @@
 
 #include "framework/rules/row_plans.h"
 #include "framework/util/error.h"
+#include "framework/util/input_file.h"
+#include "framework/util/json_path_line.h"
 
 namespace subdiv {
 namespace {
@@ -230,6 +232,56 @@ std::vector<Element> build_order(const StepContext& s, const std::vector<ChildGr
   return order;
 }
 
+namespace {
+
+// The contexts whose rules a new point of element p may have used.
+std::vector<Context> contexts_of(const StepContext& s, Element e, Index p) {
+  switch (e) {
+    case Element::Vertex: {
+      const VertexContext& vc = s.features.vertices[p];
+      if (vc.child == vc.parent) return {vc.parent};
+      return {vc.parent, vc.child};
+    }
+    case Element::Edge:
+      if (s.features.edges[p].crease_weight > 0.f) return {Context::Smooth, Context::Crease};
+      return {Context::Smooth};
+    case Element::Face: return {Context::Smooth};
+    case Element::Corner: return {Context::Smooth, Context::Crease, Context::Corner};
+  }
+  return {};
+}
+
+// "FILE: rules.vertex" as "FILE:LINE: rules.vertex" when the file is readable JSON text.
+std::string with_line(const std::string& where, const std::string& file) {
+  if (file.empty() || where.rfind(file + ": ", 0) != 0) return where;
+  try {
+    const std::string text = read_input_file(file, "scheme", 4'000'000);
+    const std::string placed = with_json_line(where + ": ", file, text);
+    return placed.substr(0, placed.size() - 2);
+  } catch (const std::exception&) {
+    return where;
+  }
+}
+
+// The rules (with their places in the scheme file, as `subdiv validate` names them) that
+// made a new point of element p.
+std::string rule_places(const StepContext& s, Element e, Index p) {
+  const WeightTables& tables = e == Element::Vertex ? s.vertex_tables(p) : s.tables;
+  std::string list;
+  for (Context c : contexts_of(s, e, p)) {
+    const CompiledRule& rule = tables.rule(e, c);
+    std::string place;
+    if (rule.defined && rule.where.rfind(s.source + ": ", 0) == 0)
+      place = fmt::format("{} ({})", with_line(rule.where, s.source), context_name(c));
+    else if (c == Context::Crease && !tables.curve_rules.empty())
+      place = fmt::format("the curve scheme's rules ({})", tables.curve_rules.front().where);
+    if (!place.empty() && list.find(place) == std::string::npos) list += (list.empty() ? "" : ", ") + place;
+  }
+  return list.empty() ? fmt::format("the {} rules", element_name(e)) : list;
+}
+
+}  // namespace
+
 double weight_sum(std::span<const double> weights) {
   double sum = 0.0;
   for (double w : weights) sum += w;
@@ -249,8 +301,8 @@ void FirstBadRow::report_if_any(const StepContext& s, const RuleInputs& in, cons
   const int size = e == Element::Vertex ? s.parent.valence(p) : e == Element::Edge ? 2 : s.parent.face_size(p);
   throw Error(fmt::format(
       "{}: the new point of {} {} has weights summing to {} instead of 1 ({} {}); every rule must "
-      "be affine and finite: check the weight formulas of the {} rules",
-      s.source, element_name(e), p, sum, e == Element::Vertex ? "valence" : "size", size, element_name(e)));
+      "be affine and finite: check the weight formulas of {}",
+      s.source, element_name(e), p, sum, e == Element::Vertex ? "valence" : "size", size, rule_places(s, e, p)));
 }
 
 ChunkedRows build_rows(const StepContext& s, const RuleInputs& in, const ChildGroup& group, RowPlanStore& plans) {

@@ -14,8 +14,12 @@ namespace subdiv {
 // (or an attack on the parser's time and memory).
 constexpr std::uintmax_t kMaxSchemeFileBytes = 4'000'000;
 
+std::string read_scheme_text(const std::filesystem::path& path) {
+  return read_input_file(path, "scheme", kMaxSchemeFileBytes);
+}
+
 nlohmann::ordered_json read_json_file(const std::filesystem::path& path) {
-  return parse_json_text(read_input_file(path, "scheme", kMaxSchemeFileBytes), path.string());
+  return parse_json_text(read_scheme_text(path), path.string());
 }
 
 nlohmann::ordered_json parse_json_text(const std::string& text, const std::string& label) {

@@ -8,6 +8,7 @@
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
 #include "framework/util/input_errors.h"
+#include "framework/util/json_path_line.h"
 #include "framework/util/short_text.h"
 
 namespace subdiv {
@@ -38,15 +39,43 @@ const Json& require(const Json& object, const char* key, const Place& at) {
   return *it;
 }
 
+// A JSON value in words, for "must be a number, got the string \"0\"".
+std::string described(const Json& value) {
+  if (value.is_string()) return "the string " + shortened(value.dump());
+  if (value.is_number()) return "the number " + shortened(value.dump());
+  if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
+  if (value.is_null()) return "null";
+  return value.is_array() ? "an array " + shortened(value.dump()) : "an object " + shortened(value.dump());
+}
+
+[[noreturn]] void wrong_type(const Json& value, const char* expected, const Place& at) {
+  fail(at, fmt::format("must be {}, got {}", expected, described(value)));
+}
+
 std::string as_string(const Json& value, const Place& at) {
-  if (!value.is_string()) fail(at, fmt::format("expected a string, found {}", shortened(value.dump())));
+  if (!value.is_string()) wrong_type(value, "a string", at);
   return value.get<std::string>();
+}
+
+double as_number(const Json& value, const Place& at) {
+  if (!value.is_number()) wrong_type(value, "a number", at);
+  return value.get<double>();
+}
+
+bool as_bool(const Json& value, const Place& at) {
+  if (!value.is_boolean()) wrong_type(value, "true or false", at);
+  return value.get<bool>();
+}
+
+void require_object(const Json& value, const Place& at) {
+  if (!value.is_object()) wrong_type(value, "a JSON object {...}", at);
 }
 
 // Weights may be written as numbers or as formula text.
 std::string as_formula(const Json& value, const Place& at) {
   if (value.is_number()) return fmt::format("{:.17g}", value.get<double>());
-  return as_string(value, at);
+  if (!value.is_string()) wrong_type(value, "a number or a formula string", at);
+  return value.get<std::string>();
 }
 
 std::string optional_string(const Json& object, const char* key) {
@@ -55,6 +84,7 @@ std::string optional_string(const Json& object, const char* key) {
 }
 
 void check_keys(const Json& object, const std::set<std::string>& allowed, const Place& at) {
+  require_object(object, at);
   for (auto it = object.begin(); it != object.end(); ++it)
     if (!allowed.count(it.key())) {
       std::string list;
@@ -88,23 +118,24 @@ ParameterSpec parse_parameter(const std::string& name, const Json& spec, const P
   p.description = optional_string(spec, "description");
   const Json& def = require(spec, "default", at);
   if (spec.contains("per_vertex")) {
-    if (!spec["per_vertex"].is_boolean()) fail(at / "per_vertex", "expected true or false");
-    p.per_vertex = spec["per_vertex"].get<bool>();
+    p.per_vertex = as_bool(spec["per_vertex"], at / "per_vertex");
     if (p.per_vertex && spec.contains("choices"))
       fail(at / "per_vertex", "a choice parameter selects definitions once per scheme; only numeric parameters can be per vertex");
   }
   if (spec.contains("choices")) {
     p.is_choice = true;
-    for (const auto& c : spec["choices"]) p.choices.push_back(as_string(c, at / "choices"));
+    const Json& choices = spec["choices"];
+    if (!choices.is_array()) wrong_type(choices, "an array of strings", at / "choices");
+    for (size_t i = 0; i < choices.size(); ++i) p.choices.push_back(as_string(choices[i], (at / "choices")[i]));
     p.choice = as_string(def, at / "default");
     return p;
   }
   if (!def.is_number()) fail(at / "default", "a numeric parameter needs a number as default");
   p.value = def.get<double>();
-  if (spec.contains("min")) p.has_minimum = true, p.minimum = spec["min"].get<double>();
-  if (spec.contains("max")) p.has_maximum = true, p.maximum = spec["max"].get<double>();
-  p.minimum_exclusive = spec.value("min_exclusive", false);
-  p.maximum_exclusive = spec.value("max_exclusive", false);
+  if (spec.contains("min")) p.has_minimum = true, p.minimum = as_number(spec["min"], at / "min");
+  if (spec.contains("max")) p.has_maximum = true, p.maximum = as_number(spec["max"], at / "max");
+  if (spec.contains("min_exclusive")) p.minimum_exclusive = as_bool(spec["min_exclusive"], at / "min_exclusive");
+  if (spec.contains("max_exclusive")) p.maximum_exclusive = as_bool(spec["max_exclusive"], at / "max_exclusive");
   return p;
 }
 
@@ -137,6 +168,7 @@ std::vector<ParameterSpec> parse_parameters(const Json& root, const Place& at,
   std::vector<ParameterSpec> params;
   if (!root.contains("parameters")) return params;
   const Json& list = root["parameters"];
+  require_object(list, at / "parameters");
   for (auto it = list.begin(); it != list.end(); ++it) {
     check_not_reserved(it.key(), at / "parameters" / it.key());
     if (!it.value().is_object())
@@ -217,6 +249,7 @@ std::vector<NamedFormula> parse_plain_definitions(const Json& root, const Place&
   std::vector<NamedFormula> defs;
   if (!root.contains("definitions")) return defs;
   const Json& list = root["definitions"];
+  require_object(list, at / "definitions");
   for (auto it = list.begin(); it != list.end(); ++it) {
     const Place here = at / "definitions" / it.key();
     check_not_reserved(it.key(), here);
@@ -482,6 +515,19 @@ void check_formulas(const Scheme& s) {
 }
 
 
+// The curve scheme a surface scheme names, with errors (an unknown name, a broken curve
+// file) placed at the reference.
+std::shared_ptr<const CurveScheme> curve_at(const CurveResolver& resolve, const std::string& name, const Place& at,
+                                            const ParameterOverrides& overrides, std::set<std::string>* used) {
+  try {
+    return resolve(name, at.file, overrides, used);
+  } catch (const OptionError&) {
+    throw;
+  } catch (const Error& e) {
+    fail(at, e.what());  // the messages name the curve scheme
+  }
+}
+
 void check_unknown_overrides(const ParameterOverrides& overrides, const std::set<std::string>& used,
                              const std::string& file) {
   for (const auto& [name, value] : overrides)
@@ -721,13 +767,18 @@ std::string scheme_json_kind(const Json& root, const std::string& label) {
   return kind;
 }
 
-// A value of the wrong JSON type (a string where a number belongs, ...) as a clear error;
-// any other exception (bad_alloc, length_error, ...) as an error naming the file.
+// A value of the wrong JSON type the checks below did not foresee, as an error naming the
+// file; any other exception (bad_alloc, length_error, ...) as an error naming the file.
+// Messages that name a JSON path get the path's line ("FILE:LINE: path: ...").
 template <class Load>
-auto with_type_errors(const std::string& label, Load load) {
+auto with_type_errors(const std::string& label, const std::string& text, Load load) {
   return naming_file_on_failure(label, [&] {
     try {
-      return load();
+      return load(parse_json_text(text, label));
+    } catch (const OptionError&) {
+      throw;
+    } catch (const Error& e) {
+      throw Error(with_json_line(e.what(), label, text));
     } catch (const nlohmann::json::exception& e) {
       std::string what = e.what();
       if (auto pos = what.find("] "); pos != std::string::npos) what = what.substr(pos + 2);
@@ -740,15 +791,14 @@ auto with_type_errors(const std::string& label, Load load) {
 std::shared_ptr<const CurveScheme> load_curve_scheme(const std::filesystem::path& path,
                                                      const ParameterOverrides& overrides,
                                                      std::set<std::string>* used) {
-  return with_type_errors(path.string(), [&] {
-    return curve_scheme_from_json(read_json_file(path), path.string(), overrides, used);
-  });
+  return with_type_errors(path.string(), read_scheme_text(path),
+                          [&](const Json& root) { return curve_scheme_from_json(root, path.string(), overrides, used); });
 }
 
 std::shared_ptr<const CurveScheme> load_curve_scheme_text(const std::string& text, const std::string& label,
                                                           const ParameterOverrides& overrides,
                                                           std::set<std::string>* used) {
-  return with_type_errors(label, [&] { return curve_scheme_from_json(parse_json_text(text, label), label, overrides, used); });
+  return with_type_errors(label, text, [&](const Json& root) { return curve_scheme_from_json(root, label, overrides, used); });
 }
 
 std::shared_ptr<const CurveScheme> curve_scheme_from_json(const Json& root, const std::string& label,
@@ -815,16 +865,16 @@ std::shared_ptr<const CurveScheme> curve_scheme_from_json(const Json& root, cons
 std::shared_ptr<const Scheme> load_surface_scheme(const std::filesystem::path& path,
                                                   const ParameterOverrides& overrides,
                                                   const CurveResolver& resolve_curve) {
-  return with_type_errors(path.string(), [&] {
-    return surface_scheme_from_json(read_json_file(path), path.string(), overrides, resolve_curve);
+  return with_type_errors(path.string(), read_scheme_text(path), [&](const Json& root) {
+    return surface_scheme_from_json(root, path.string(), overrides, resolve_curve);
   });
 }
 
 std::shared_ptr<const Scheme> load_surface_scheme_text(const std::string& text, const std::string& label,
                                                        const ParameterOverrides& overrides,
                                                        const CurveResolver& resolve_curve) {
-  return with_type_errors(label, [&] {
-    return surface_scheme_from_json(parse_json_text(text, label), label, overrides, resolve_curve);
+  return with_type_errors(label, text, [&](const Json& root) {
+    return surface_scheme_from_json(root, label, overrides, resolve_curve);
   });
 }
 
@@ -856,7 +906,7 @@ std::shared_ptr<const Scheme> surface_scheme_from_json(const Json& root, const s
     ParameterOverrides curve_overrides;
     for (const auto& [name, value] : overrides)
       if (!used.count(name)) curve_overrides[name] = value;
-    s->curve = resolve_curve(as_string(root["curve"], at / "curve"), path, curve_overrides, &used);
+    s->curve = curve_at(resolve_curve, as_string(root["curve"], at / "curve"), at / "curve", curve_overrides, &used);
     check_curve_fits_split(*s->curve, s->split(), at / "curve");
   }
   // A split's own curve scheme: its boundaries and creases follow it even when smoothing
@@ -867,7 +917,7 @@ std::shared_ptr<const Scheme> surface_scheme_from_json(const Json& root, const s
     if (!used.count(name)) curve_overrides[name] = value;
   for (size_t i = 0; i < parsed.steps.size(); ++i) {
     if (parsed.curves[i].empty()) continue;
-    auto curve = resolve_curve(parsed.curves[i], path, curve_overrides, &used);
+    auto curve = curve_at(resolve_curve, parsed.curves[i], parsed.curve_places[i], curve_overrides, &used);
     check_curve_fits_split(*curve, parsed.steps[i].split, parsed.curve_places[i]);
     if (i == kept.front()) s->steps.front().curve = std::move(curve);
   }

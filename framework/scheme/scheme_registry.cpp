@@ -70,14 +70,12 @@ std::shared_ptr<const CurveScheme> resolve_curve(const std::string& name, const 
                                                  std::set<std::string>* used) {
   if (const CodeSchemeEntry* code = looks_like_path(name) ? nullptr : find_code_scheme(name)) {
     if (code->kind != "curve")
-      throw Error(fmt::format("{}: \"curve\": '{}' is a surface scheme ({}); name a curve scheme",
-                              referring_file.string(), name, code->origin));
+      throw Error(fmt::format("'{}' is a surface scheme ({}); name a curve scheme", name, code->origin));
     return code->make_curve(overrides, used);
   }
   const fs::path file = find_scheme_file(name, referring_file.parent_path());
   if (scheme_file_kind(file) != "curve")
-    throw Error(fmt::format("{}: \"curve\": '{}' is a surface scheme; name a curve scheme",
-                            referring_file.string(), name));
+    throw Error(fmt::format("'{}' is a surface scheme; name a curve scheme", name));
   return load_curve_scheme(file, overrides, used);
 }
 

@@ -56,6 +56,19 @@ std::set<std::string> parameter_names(const Scheme& s) {
   return names;
 }
 
+// A part of a sequence; its errors name the part within the sequence.
+std::shared_ptr<const Scheme> part_scheme(const std::string& spec, size_t parts, const std::string& name,
+                                          const ParameterOverrides& overrides) {
+  if (parts == 1) return load_scheme(name, overrides);
+  try {
+    return load_scheme(name, overrides);
+  } catch (const OptionError&) {
+    throw;
+  } catch (const Error& e) {
+    throw Error(fmt::format("scheme sequence '{}', part '{}': {}", shortened(spec), shortened(name), e.what()));
+  }
+}
+
 }  // namespace
 
 SchemeSequence load_scheme_sequence(const std::string& spec, int levels, const ParameterOverrides& overrides) {
@@ -70,10 +83,10 @@ SchemeSequence load_scheme_sequence(const std::string& spec, int levels, const P
   for (Part& p : parts) {
     if (p.levels < 0) p.levels = parts.size() == 1 ? levels : levels - fixed;
     ParameterOverrides mine;
-    const auto names = parameter_names(*load_scheme(p.name));
+    const auto names = parameter_names(*part_scheme(spec, parts.size(), p.name, {}));
     for (const auto& [name, value] : overrides)
       if (names.count(name)) mine[name] = value, used.insert(name);
-    seq.schemes.push_back(load_scheme(p.name, mine));
+    seq.schemes.push_back(part_scheme(spec, parts.size(), p.name, mine));
     seq.runs.push_back({seq.schemes.back().get(), p.levels});
     seq.total_levels += p.levels;
   }

@@ -124,9 +124,26 @@ std::vector<RefinedLevel> refine_curve(RefineInput& in, const subdiv::CurveSchem
   return out;
 }
 
+// progress(phase, done): the phase as it starts (done None), then the share of the long
+// work done, 0 to 1. Called on the calling thread with the GIL taken; the callable outlives
+// the call, so the handle holds no reference (no refcounting without the GIL).
+void report_progress(subdiv::RefineRequest& request, py::handle progress) {
+  auto phase = std::make_shared<std::string>();
+  request.progress = [progress, phase](const std::string& now) {
+    *phase = now;
+    py::gil_scoped_acquire gil;
+    progress(now, py::none());
+  };
+  request.progress_fraction = [progress, phase](double done) {
+    py::gil_scoped_acquire gil;
+    progress(*phase, done);
+  };
+}
+
 py::list refine(py::handle mesh, py::handle scheme, py::handle params, int levels, const std::string& boundary,
                 const std::string& crease_method, int threads, bool all_levels, int start_level,
-                py::handle point_data, py::handle cell_data, py::handle face_varying, const std::string& fvar_boundary) {
+                py::handle point_data, py::handle cell_data, py::handle face_varying, const std::string& fvar_boundary,
+                py::handle progress) {
   check_levels(levels);
   const subdiv::RefineOptions options = refine_options(boundary, crease_method, threads, start_level);
   RefineInput in = input_from(mesh, point_data, cell_data, face_varying, fvar_boundary);
@@ -138,6 +155,7 @@ py::list refine(py::handle mesh, py::handle scheme, py::handle params, int level
   request.shape.boundary = options.features.boundary;
   request.shape.crease_method = options.features.crease_method;
   request.keep_all_levels = all_levels;
+  if (!progress.is_none()) report_progress(request, progress);
   std::vector<RefinedLevel> result;
   std::vector<std::string> dropped, warnings;
   {
@@ -217,6 +235,7 @@ void bind_refine(py::module_& m) {
   m.def("_refine", &refine, py::arg("mesh"), py::arg("scheme"), py::arg("params"), py::arg("levels"), py::arg("boundary"),
         py::arg("crease_method"), py::arg("threads"), py::arg("all_levels"), py::arg("start_level"),
         py::arg("point_data"), py::arg("cell_data"), py::arg("face_varying"), py::arg("fvar_boundary"),
+        py::arg("progress") = py::none(),
         "Refined levels as dicts of arrays (subdivkit.refine wraps them in Meshes).");
   m.def("_stencils", &stencils, py::arg("mesh"), py::arg("scheme"), py::arg("params"), py::arg("levels"), py::arg("composed"),
         py::arg("boundary"), py::arg("crease_method"), py::arg("threads"), py::arg("start_level"),

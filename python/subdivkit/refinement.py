@@ -43,7 +43,8 @@ def _with_weights(mesh, weights):
 
 
 def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edges-and-corners",
-           crease_method="uniform", threads=0, all_levels=False, start_level=0, fvar_boundary="all", weights=None):
+           crease_method="uniform", threads=0, all_levels=False, start_level=0, fvar_boundary="all", weights=None,
+           progress=None):
     """Refine a mesh ``levels`` times with a scheme; return the finest level as a Mesh.
 
     Parameters
@@ -82,6 +83,11 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
         as point_data "weight". Without it, a point_data array named "weight" (read_mesh
         gives OBJ's ``v x y z w`` so) is used, if any. With all weights 1 the points are the
         plain refinement's, bit for bit.
+    progress : callable, optional
+        Called as ``progress(phase, done)`` on the calling thread: ``done`` is None when a
+        phase starts ("level 2/3: 768 faces"), then the share of the levels' work done, 0 to
+        1, after each level (by its faces), as ``subdiv refine``'s bar shows it. An exception
+        it raises stops the refinement and comes back from refine().
 
     The mesh's float point_data is refined with the same rules as the points (any number
     of columns), in the same pass; integer point_data (labels) is taken by origin, never
@@ -99,7 +105,7 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
                                  int(start_level),
                                  _data_arrays(point_data, point_roles, mesh.n_points, "point data"),
                                  _data_arrays(mesh.cell_data, mesh.cell_roles, mesh.n_faces, "cell data"),
-                                 _face_varying_triples(mesh), str(fvar_boundary))
+                                 _face_varying_triples(mesh), str(fvar_boundary), progress)
     for warning in refined[0]["warnings"] if refined else []:
         warnings.warn(f"refine: {warning}", UserWarning, stacklevel=2)
     if refined and refined[0]["dropped"]:

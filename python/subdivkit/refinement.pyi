@@ -1,5 +1,5 @@
 from dataclasses import dataclass
-from typing import Any, Literal, Mapping, overload
+from typing import Any, Callable, Literal, Mapping, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -9,6 +9,7 @@ from .mesh import Mesh
 
 _SchemeArg = Scheme | str
 _Params = Mapping[str, float | str] | None
+_Progress = Callable[[str, float | None], object] | None
 
 BOUNDARY_MODES: tuple[str, ...]
 
@@ -16,17 +17,20 @@ BOUNDARY_MODES: tuple[str, ...]
 def refine(mesh: Mesh, scheme: _SchemeArg = "catmull-clark", levels: int = 1, *, params: _Params = None,
            boundary: str = "edges-and-corners", crease_method: str = "uniform", threads: int = 0,
            all_levels: Literal[False] = False, start_level: int = 0, fvar_boundary: str = "all",
-           weights: npt.ArrayLike | str | None = None) -> Mesh: ...
+           weights: npt.ArrayLike | str | None = None,
+           progress: _Progress = None) -> Mesh: ...
 @overload
 def refine(mesh: Mesh, scheme: _SchemeArg = "catmull-clark", levels: int = 1, *, params: _Params = None,
            boundary: str = "edges-and-corners", crease_method: str = "uniform", threads: int = 0,
            all_levels: Literal[True], start_level: int = 0, fvar_boundary: str = "all",
-           weights: npt.ArrayLike | str | None = None) -> list[Mesh]: ...
+           weights: npt.ArrayLike | str | None = None,
+           progress: _Progress = None) -> list[Mesh]: ...
 @overload
 def refine(mesh: Mesh, scheme: _SchemeArg = "catmull-clark", levels: int = 1, *, params: _Params = None,
            boundary: str = "edges-and-corners", crease_method: str = "uniform", threads: int = 0,
            all_levels: bool, start_level: int = 0, fvar_boundary: str = "all",
-           weights: npt.ArrayLike | str | None = None) -> Mesh | list[Mesh]: ...
+           weights: npt.ArrayLike | str | None = None,
+           progress: _Progress = None) -> Mesh | list[Mesh]: ...
 
 class Evaluator:
     name: str

@@ -4,6 +4,7 @@
 
 #include "commands.h"
 #include "shared_options.h"
+#include "usage_errors.h"
 #include "framework/io/vtk/vtk_formats.h"
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
@@ -14,7 +15,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "SubdivKit " SUBDIV_CLI_VERSION);
   app.require_subcommand(1);
   app.footer("Run `subdiv COMMAND --help` for each command's options.\n"
-             "Schemes are JSON files (docs/scheme-format.md) or plugins (docs/plugins.md).");
+             "Schemes are JSON files (docs/scheme-format.md) or plugins (docs/plugins.md).\n" +
+             subdiv::cli::exit_code_help());
   subdiv::cli::add_refine_command(app);
   subdiv::cli::add_schemes_command(app);
   subdiv::cli::add_validate_command(app);
@@ -27,19 +29,19 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return subdiv::cli::report_parse_error(app, e, argc, argv);
   } catch (const subdiv::OptionError& e) {  // the pipeline's words, spelled as our options
     fmt::print(stderr, "subdiv: error: {}\n", e.spelled(subdiv::cli::cli_option_spelling()));
-    return 1;
+    return subdiv::cli::kExitRefused;
   } catch (const subdiv::Error& e) {
     fmt::print(stderr, "subdiv: error: {}\n", e.what());
-    return 1;
+    return subdiv::cli::kExitRefused;
   } catch (const std::bad_alloc&) {  // the memory guard's words, never "internal error"
     fmt::print(stderr, "subdiv: error: {}\n", subdiv::out_of_memory_message("running the command"));
-    return 1;
+    return subdiv::cli::kExitRefused;
   } catch (const std::exception& e) {
     fmt::print(stderr, "subdiv: internal error: {}\n", e.what());
-    return 2;
+    return subdiv::cli::kExitInternal;
   }
   return 0;
 }

@@ -109,6 +109,7 @@ PieceSummary refine_in_pieces(const PieceJob& job, const SchemeSequence& seq, co
   std::string failure;
   try {
     for (int piece = group.rank(); piece < summary.pieces; piece += group.size()) {
+      if (job.piece_starts) job.piece_starts(piece, summary.pieces);
       const PieceCounts counts =
           refine_piece(job, seq, mesh, base, options, refine_data, cut.face_piece, piece, summary.rings, staged);
       summary.faces += counts.faces;

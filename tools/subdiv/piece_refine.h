@@ -22,6 +22,7 @@ struct PieceJob {
   int pieces = 0;                // 0: as many as --max-memory needs
   double max_memory = 0;         // bytes per piece, 0: what the machine has
   OutputChoice format;           // the pieces' arrays and compression (refine --arrays, --compression)
+  std::function<void(int piece, int pieces)> piece_starts;  // for progress; may be empty
 };
 
 // A piece's mesh data refined through its hierarchy, level by level (refine_command.cpp).

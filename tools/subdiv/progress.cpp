@@ -1,5 +1,6 @@
 #include "progress.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fmt/format.h>
 #include <unistd.h>
@@ -21,7 +22,11 @@ double peak_resident_bytes() {
 
 namespace subdiv::cli {
 
-Progress::Progress(bool timings) : terminal_(isatty(fileno(stderr)) && !timings), timings_(timings) {}
+// A few redraws a second: enough to see it move, too few to cost anything.
+constexpr auto kRedraw = std::chrono::milliseconds(200);
+
+Progress::Progress(bool timings, bool quiet)
+    : terminal_(isatty(fileno(stderr)) && !timings && !quiet), timings_(timings) {}
 Progress::~Progress() { done(); }
 
 void Progress::time_step() {
@@ -33,17 +38,50 @@ void Progress::time_step() {
   started_ = now;
 }
 
+std::string Progress::bar(double done, double elapsed) {
+  constexpr int kWidth = 20;
+  done = std::clamp(done, 0.0, 1.0);
+  const int filled = int(done * kWidth + 0.5);
+  std::string line = "[" + std::string(size_t(filled), '#') + std::string(size_t(kWidth - filled), ' ') +
+                     fmt::format("] {:3.0f}%", 100 * done);
+  // An estimate once there is something to go by: the rate so far, for the rest.
+  if (done >= 0.02 && done < 1 && elapsed >= 0.5) {
+    const double left = elapsed * (1 - done) / done;
+    line += left < 60 ? fmt::format("  about {:.0f} s left", std::max(1.0, left))
+                      : fmt::format("  about {} min {:02d} s left", int(left / 60), int(left) % 60);
+  }
+  return line;
+}
+
+void Progress::draw() {
+  if (!terminal_) return;
+  std::string line = step_;
+  if (done_ >= 0)
+    line += "  " + bar(done_, std::chrono::duration<double>(std::chrono::steady_clock::now() - bar_started_).count());
+  fmt::print(stderr, "\r\033[K{}", line);
+  std::fflush(stderr);
+  drawn_ = std::chrono::steady_clock::now();
+  open_ = true;
+}
+
 void Progress::say(const std::string& message) {
   time_step();
   step_ = message;
-  if (!terminal_) return;
-  fmt::print(stderr, "\r\033[K{}", message);
-  std::fflush(stderr);
-  open_ = true;
+  draw();
+}
+
+void Progress::fraction(double done) {
+  const auto now = std::chrono::steady_clock::now();
+  const bool starts = done_ < 0;
+  if (starts) bar_started_ = now;
+  const bool redraw = starts || done >= 1 || now - drawn_ >= kRedraw;
+  done_ = done >= 1 ? -1 : std::max(done, std::max(done_, 0.0));  // never backwards
+  if (redraw) draw();
 }
 
 void Progress::done() {
   time_step();
+  done_ = -1;
   if (terminal_ && open_) fmt::print(stderr, "\n");
   open_ = false;
 }

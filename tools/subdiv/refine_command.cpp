@@ -76,6 +76,7 @@ RefineRequest refine_request(const RefineArgs& a, const OutputChoice& output, Pr
   r.keep_all_levels = ext == ".pvd";
   r.memory_advice = "ask for fewer levels, or refine in pieces (--pieces N or --max-memory SIZE, -o OUT.pvtp)";
   r.progress = [&progress](const std::string& phase) { progress.say(phase); };
+  r.progress_fraction = [&progress](double done) { progress.fraction(done); };
   return r;
 }
 
@@ -112,7 +113,15 @@ void check_piece_options(const RefineArgs& a) {
 void run_in_pieces(const RefineArgs& a, const RefineRequest& request, const PreparedRefinement& prepared,
                    const OutputChoice& output, Progress& progress, std::chrono::steady_clock::time_point t0) {
   PieceJob job{a.output, a.pieces, a.max_memory.empty() ? 0.0 : parse_memory_size(a.max_memory, "--max-memory"),
-               output};
+               output, {}};
+  // One bar over the pieces: piece p of n is (p + its levels' share) / n of the work.
+  int piece_now = 0, piece_count = 1;
+  job.piece_starts = [&](int piece, int pieces) {
+    piece_now = piece, piece_count = pieces;
+    progress.say(fmt::format("piece {}/{}", piece + 1, pieces));
+  };
+  RefineRequest piece_request = request;
+  piece_request.progress_fraction = [&](double done) { progress.fraction((piece_now + done) / piece_count); };
   const Index faces = prepared.base.face_count();
   if (a.pieces_given && a.pieces < 1)
     throw Error(fmt::format("--pieces {}: a refinement needs at least one piece; ask for 1 to {} pieces", a.pieces,
@@ -124,7 +133,7 @@ void run_in_pieces(const RefineArgs& a, const RefineRequest& request, const Prep
   bool first = true;
   const RefinePieceData refine = [&](const Hierarchy& h, const MeshData& piece, const RefineOptions& o) {
     LevelDataNotes said;  // every piece would say the same: the first one's
-    auto levels = refine_level_data(prepared, h, piece, o, request, said);
+    auto levels = refine_level_data(prepared, h, piece, o, piece_request, said);
     if (first) notes = std::move(said.notes), first = false;
     return levels;
   };
@@ -155,7 +164,7 @@ void run(const RefineArgs& a) {
   const OutputChoice output = output_choice(a.output_format);  // a bad --arrays is refused before any work
   const ThreadLimit threads(a.threads, "--threads");
   if (!threads.note().empty() && !a.quiet) fmt::print(stderr, "subdiv: note: {}\n", threads.note());
-  Progress progress(a.timings);
+  Progress progress(a.timings, a.quiet);
   RefineRequest request = refine_request(a, output, progress);
   PreparedRefinement prepared = prepare_refinement(request);
   print_warnings(prepared.warnings);
@@ -167,8 +176,10 @@ void run(const RefineArgs& a) {
   progress.say(fmt::format("writing {}", a.output));
   Hierarchy& h = result.hierarchy;
   const Index fine_vertices = h.levels.back().vertex_count, fine_faces = h.levels.back().face_count();
+  OutputChoice writing = output;  // VTK's progress events move the bar
+  writing.vtk.progress = [&progress](double done) { progress.fraction(done); };
   write_levels(a.output, std::move(h), std::move(result.levels), result.features, result.finest_point_data,
-               result.tags, output);
+               result.tags, writing);
   progress.done();
   if (!a.quiet) {
     for (const auto& note : result.notes) fmt::print("{}\n", spell_options(note, cli_option_spelling()));

@@ -231,6 +231,10 @@ std::string curvature_text(const std::vector<Complex>& ev, double l1) {
 // Characteristic map.
 
 struct AnalysisRun {
+  // A constructor, not aggregate initialisation: GCC 12 -O3 warns falsely that the
+  // aggregate's RefineOptions may be destroyed uninitialized (-Wmaybe-uninitialized).
+  AnalysisRun(const Scheme& s, const Patch& p, const LocalConfig& c, const SurfaceAnalysisOptions& o, int step_count)
+      : scheme(s), patch(p), config(c), options(o), steps(step_count) {}
   const Scheme& scheme;
   const Patch& patch;
   const LocalConfig& config;
@@ -801,7 +805,7 @@ SurfaceAnalysis analyse_patch(const Scheme& scheme, const Patch& patch, const Lo
   out.scheme = scheme.name;
   out.path = scheme.path;
   out.config = config;
-  AnalysisRun cx{scheme, patch, config, options, {}, analysis_steps(scheme), {}, {}, {}};
+  AnalysisRun cx(scheme, patch, config, options, analysis_steps(scheme));
   cx.refine.features = options.features;
   cx.refine.first_step = config.first_step;
   out.steps = cx.steps;

@@ -100,11 +100,22 @@ void write_pvd(const fs::path& pvd, std::span<const OutputLevel> levels, const V
     StagedFiles staged;  // removes every temporary if anything below throws
     std::vector<Entry> entries;
     std::set<std::string> names;
+    // Progress over all files: each weighs as its points and face corners.
+    double total = 0, before = 0;
+    auto weight = [](const OutputLevel& level) {
+      return double(level.mesh->positions.size() + level.mesh->face_vertices.size()) + 1;
+    };
+    for (const OutputLevel& level : levels) total += weight(level);
+    VtkWriteOptions file_options = options;
     for (const OutputLevel& level : levels) {
       const std::string name = fmt::format("level_{}.vtp", level.level);
       const fs::path target = dir / name;
       const auto poly = io_detail::make_polydata(level, options, io_detail::LevelMemory::Share);
-      io_detail::write_polydata_file(*poly, staged.stage(target), target, options);
+      const double share = weight(level) / total;
+      if (options.progress)
+        file_options.progress = [&, share](double done) { options.progress(before + share * done); };
+      io_detail::write_polydata_file(*poly, staged.stage(target), target, file_options);
+      before += share;
       entries.push_back({level.level, folder + "/" + name});
       names.insert(name);
     }

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <functional>
+
 #include "framework/io/mesh_data.h"
 #include "framework/io/output_level.h"
 
@@ -30,6 +32,9 @@ struct VtkWriteOptions {
   VtkEncoding encoding = VtkEncoding::Base64;
   // The arrays write_vtp adds itself (see write_vtp); each can be left out.
   bool sharpness = true, cell_kind = true, corner_sharpness = true;
+  // Told the share written so far, 0 to 1 (VTK's progress events, as arrays are written;
+  // write_pvd's over all its level files, weighted by their sizes); may be empty.
+  std::function<void(double done)> progress;
 };
 
 // Writes faces as polygons, polylines and crease edges as line cells, in VTK XML with the

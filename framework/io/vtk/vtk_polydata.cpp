@@ -335,6 +335,22 @@ void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path
   });
   vtkNew<FastXMLPolyDataWriter> writer;
   writer->AddObserver(vtkCommand::ErrorEvent, observer);
+  // VTK's progress goes back and forth between the parts it writes (and says 1 before the
+  // end): reported here as the most so far, below 1 until the file is written.
+  vtkNew<vtkCallbackCommand> progress;
+  double most = 0;
+  std::function<void(double)> report = [&](double done) {
+    most = std::max(most, std::min(done, 0.99));
+    options.progress(most);
+  };
+  if (options.progress) {
+    report(0);
+    progress->SetClientData(&report);
+    progress->SetCallback([](vtkObject*, unsigned long, void* to, void* done) {
+      if (done) (*static_cast<std::function<void(double)>*>(to))(*static_cast<double*>(done));
+    });
+    writer->AddObserver(vtkCommand::ProgressEvent, progress);
+  }
   writer->SetInputData(&poly);
   // No file name: VTK neither opens nor deletes anything; the stream reports write failures
   // (full disk) after VTK is done with it.
@@ -359,6 +375,7 @@ void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path
   if (written != 1 || writer->GetErrorCode() != 0 || !errors.empty())
     throw Error(fmt::format("cannot write '{}': VTK reports: {}", shown.string(),
                             errors.empty() ? "an unknown error" : errors));
+  if (options.progress) options.progress(1.0);
 }
 
 }  // namespace subdiv::io_detail

@@ -34,6 +34,7 @@ RefineRequest pipeline_request(const MeshData& mesh, const RefineSettings& r, co
   request.feature_angle = r.feature_angle;
   request.limit_positions = r.limit;
   request.described_arrays = ArraySelection::all();
+  request.progress_fraction = r.progress;
   return request;
 }
 

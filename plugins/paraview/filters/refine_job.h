@@ -3,6 +3,7 @@
 // the library's pipeline request (framework/pipeline/refine_pipeline.h), as `subdiv refine`
 // and Python's refine() translate theirs, ending in the levels `subdiv refine -o X.pvd`
 // would write, with the same arrays. VTK-free; vtkSubdivKitRefine converts.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@ struct RefineSettings {
   double feature_angle = -1;             // --feature-angle DEG; < 0: off
   int threads = 0;                       // 0: all cores
   bool limit = false;                    // --limit: the finest level moved to the limit surface, with limit normals
+  std::function<void(double done)> progress;  // the share of the levels' work done (ParaView's progress bar)
 };
 
 struct RefinedLevels {

@@ -116,8 +116,10 @@ int vtkSubdivKitRefine::RequestData(vtkInformation*, vtkInformationVector** in, 
   output->Initialize();
   if (!input) return 1;
   try {
+    subdiv::paraview::RefineSettings settings = this->Request();
+    settings.progress = [this](double done) { this->UpdateProgress(done); };  // ParaView's progress bar
     const subdiv::paraview::RefinedLevels refined =
-        subdiv::paraview::refine_levels(input_mesh(*input, this->CreaseArray), this->Request(), kSource);
+        subdiv::paraview::refine_levels(input_mesh(*input, this->CreaseArray), settings, kSource);
     for (const std::string& note : refined.notes) vtkWarningMacro(<< kSource << ": " << note);
     if (auto* blocks = vtkMultiBlockDataSet::SafeDownCast(output))
       set_level_blocks(*blocks, refined, this->LevelSpacing * input->GetLength());

@@ -88,7 +88,7 @@ TEST_CASE("load-time checks: unknown names in formulas, reserved names, wrong JS
   const auto typed = write_scheme("typed", R"J({"name": "t", "split": "quad", "curve": "cubic-bspline",
     "parameters": {"a": {"default": 0.5, "min": "zero"}},
     "rules": {"face": [{"sum": "vertices", "w": "1/k"}], "edge": [{"sum": "ends", "w": "1/2"}], "vertex": [{"at": "self", "w": "1"}]}})J");
-  CHECK_THROWS_WITH_AS(load_scheme(typed.string()), doctest::Contains("wrong JSON type"), Error);
+  CHECK_THROWS_WITH_AS(load_scheme(typed.string()), doctest::Contains("parameters.a.min: must be a number, got the string \"zero\""), Error);
   const auto bare = write_scheme("bare", R"J({"name": "t", "split": "quad", "curve": "cubic-bspline",
     "parameters": {"a": 0.5},
     "rules": {"face": [{"sum": "vertices", "w": "1/k"}], "edge": [{"sum": "ends", "w": "1/2"}], "vertex": [{"at": "self", "w": "1"}]}})J");

@@ -1,0 +1,26 @@
+"""refine(progress=callable) hears each phase and the share of the levels' work done."""
+import pytest
+
+import subdivkit as sk
+from conftest import MESHES
+
+
+def test_progress_hears_every_level_and_a_share_that_only_grows():
+    calls = []
+    sk.refine(sk.read_mesh(MESHES / "cube.obj"), "catmull-clark", 3, progress=lambda phase, done: calls.append((phase, done)))
+    phases = [p for p, done in calls if done is None]
+    assert [p for p in phases if p.startswith("level")] == ["level 1/3: 24 faces", "level 2/3: 96 faces",
+                                                             "level 3/3: 384 faces"]
+    shares = [done for _, done in calls if done is not None]
+    assert shares[0] == 0.0 and shares[-1] == pytest.approx(1.0)
+    assert all(a <= b for a, b in zip(shares, shares[1:]))
+    # Faces weigh: the last of the three levels is 384 of the 504 faces made (plus one each).
+    assert shares[-2] == pytest.approx((24 + 1 + 96 + 1) / (24 + 96 + 384 + 3))
+
+
+def test_an_exception_in_progress_stops_the_refinement():
+    def stop(phase, done):
+        if phase.startswith("level 2"):
+            raise KeyboardInterrupt("stop")
+    with pytest.raises(KeyboardInterrupt):
+        sk.refine(sk.read_mesh(MESHES / "cube.obj"), "catmull-clark", 3, progress=stop)

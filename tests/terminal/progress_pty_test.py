@@ -1,0 +1,57 @@
+#!/usr/bin/env python3
+"""`subdiv refine` draws its progress bar on a terminal, and nothing on a pipe or with -q.
+
+The terminal is a pseudo-terminal (Python's pty module): stderr is a tty there, as in a
+shell. Usage: progress_pty_test.py SUBDIV SOURCE_DIR
+"""
+import os
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+
+def run_on_pty(args):
+    """Exit code and what the command wrote to stderr, a pseudo-terminal."""
+    master, slave = os.openpty()
+    process = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=slave)
+    os.close(slave)
+    out = b""
+    while True:
+        try:
+            chunk = os.read(master, 65536)
+        except OSError:  # the other side closed (Linux: EIO)
+            break
+        if not chunk:
+            break
+        out += chunk
+    os.close(master)
+    return process.wait(), out.decode(errors="replace")
+
+
+def main():
+    subdiv, source = sys.argv[1], Path(sys.argv[2])
+    mesh = source / "examples" / "meshes" / "torus-quads.obj"
+    failures = []
+    with tempfile.TemporaryDirectory() as tmp:
+        refine = [subdiv, "refine", str(mesh), "-l", "6", "-o", str(Path(tmp) / "torus.pvd")]
+        code, tty = run_on_pty(refine)
+        if code != 0:
+            failures.append(f"refine on a pty exited {code}: {tty!r}")
+        for part, what in [("\r\x1b[K", "the line redrawn in place"), ("level 6/6: 196608 faces  [", "a bar on a level"),
+                           ("writing ", "the writing phase"), ("%", "a percentage")]:
+            if part not in tty:
+                failures.append(f"on a pty, no {what} ({part!r}) in {tty!r}")
+        code, quiet = run_on_pty(refine + ["-q"])
+        if code != 0 or quiet:
+            failures.append(f"with -q on a pty: exit {code}, stderr {quiet!r} (expected nothing)")
+        piped = subprocess.run(refine, capture_output=True, text=True)
+        if piped.returncode != 0 or "\r" in piped.stderr or "%" in piped.stderr:
+            failures.append(f"with stderr a pipe: exit {piped.returncode}, stderr {piped.stderr!r} (expected no bar)")
+    for f in failures:
+        print(f)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
