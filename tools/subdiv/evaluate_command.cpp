@@ -1,4 +1,4 @@
-// `subdiv evaluate MESH [-s SCHEME] (--at POINTS.csv | --samples N) [--derivatives 0|1] -o OUT`:
+// `subdiv evaluate MESH [-s SCHEME] (--at POINTS.csv | --samples N) [--derivatives 0|1|2] -o OUT`:
 // points of the limit surface at given (face, u, v), with OpenSubdiv Bfr's parameterisation,
 // or the limit surface sampled N x N per face as a crack-free mesh (framework/limit,
 // docs/limit.md).
@@ -93,6 +93,7 @@ void write_csv(const std::filesystem::path& out, const std::vector<Query>& queri
     std::ofstream f(tmp);
     f << "face,u,v,x,y,z";
     if (derivatives > 0) f << ",du_x,du_y,du_z,dv_x,dv_y,dv_z";
+    if (derivatives > 1) f << ",duu_x,duu_y,duu_z,duv_x,duv_y,duv_z,dvv_x,dvv_y,dvv_z";
     f << '\n';
     for (size_t i = 0; i < queries.size(); ++i) {
       const LimitSample& s = samples[i];
@@ -101,6 +102,11 @@ void write_csv(const std::filesystem::path& out, const std::vector<Query>& queri
       if (derivatives > 0) {
         for (const auto* d : {&s.du, &s.dv})
           for (int c = 0; c < 3; ++c) f << ',' << (s.has_derivatives ? fmt::format("{}", (*d)[size_t(c)]) : "nan");
+      }
+      if (derivatives > 1) {
+        for (const auto* d : {&s.duu, &s.duv, &s.dvv})
+          for (int c = 0; c < 3; ++c)
+            f << ',' << (s.has_second_derivatives ? fmt::format("{}", (*d)[size_t(c)]) : "nan");
       }
       f << '\n';
     }
@@ -130,11 +136,9 @@ void run(const EvaluateArgs& a) {
     throw Error("give either --at POINTS.csv (points at given parameters) or --samples N (a mesh of the surface)");
   const std::string ext = lowercase_extension(a.output);
   if (!a.at.empty() && ext != ".csv")
-    throw Error(fmt::format("-o '{}': --at writes .csv (face,u,v,x,y,z[,du_*,dv_*])", a.output));
+    throw Error(fmt::format("-o '{}': --at writes .csv (face,u,v,x,y,z[,du_*,dv_*[,duu_*,duv_*,dvv_*]])", a.output));
   if (a.samples > 0 && ext == ".csv")
     throw Error(fmt::format("-o '{}': --samples writes a mesh (.vtp, .obj, .ply, .off, .stl)", a.output));
-  if (a.derivatives == 2)
-    throw Error("--derivatives 2: second derivatives are not implemented yet (docs/limit.md); use 0 or 1");
   const auto scheme = load_scheme(a.scheme, parse_params(a.params));
   const MeshData mesh = read_mesh(a.mesh);
   LimitSurfaceOptions options;
@@ -149,7 +153,7 @@ void run(const EvaluateArgs& a) {
   const std::vector<Query> queries = read_points(a.at, surface);
   std::vector<LimitSample> samples(queries.size());
   tbb::parallel_for(size_t(0), queries.size(), [&](size_t i) {
-    samples[i] = surface.evaluate(queries[i].face, queries[i].u, queries[i].v, mesh.positions, 3, a.derivatives > 0);
+    samples[i] = surface.evaluate(queries[i].face, queries[i].u, queries[i].v, mesh.positions, 3, a.derivatives);
   });
   write_csv(a.output, queries, samples, a.derivatives);
 }
@@ -171,11 +175,12 @@ void add_evaluate_command(CLI::App& app) {
                   "Instead of --at: the surface as a crack-free mesh, N x N quads per quad, N^2 triangles per "
                   "triangle (faces with other sizes: N/2 x N/2 per sub-face, N even), with normals")
       ->check(CLI::Range(1, 1024));
-  cmd->add_option("--derivatives", args->derivatives, "0: positions; 1: also du and dv (nan where they do not exist)")
+  cmd->add_option("--derivatives", args->derivatives,
+                  "0: positions; 1: also du and dv; 2: also duu, duv, dvv (nan where they do not exist)")
       ->check(CLI::Range(0, 2))
       ->capture_default_str();
   cmd->add_option("-o,--output", args->output,
-                  "Output: with --at a .csv (face,u,v,x,y,z then du_x..dv_z); with --samples a mesh (.vtp, .obj, ...)")
+                  "Output: with --at a .csv (face,u,v,x,y,z then du_x..dv_z, duu_x..dvv_z); with --samples a mesh (.vtp, .obj, ...)")
       ->required();
   cmd->add_option("-j,--threads", args->threads, "Worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
   cmd->footer("Parameters: quads (0,0) (1,0) (1,1) (0,1); triangles (0,0) (1,0) (0,1); other faces of quad schemes\n"

@@ -16,7 +16,7 @@
 namespace subdiv_test {
 
 struct BfrSample {
-  std::array<double, 3> p{}, du{}, dv{};
+  std::array<double, 3> p{}, du{}, dv{}, duu{}, duv{}, dvv{};
 };
 
 class BfrLimit {
@@ -37,7 +37,7 @@ public:
     s.PreparePatchPoints(xyz_.data(), d, patch.data(), d);
     const double uv[2] = {u, v};
     BfrSample r;
-    s.Evaluate(uv, patch.data(), d, r.p.data(), r.du.data(), r.dv.data());
+    s.Evaluate(uv, patch.data(), d, r.p.data(), r.du.data(), r.dv.data(), r.duu.data(), r.duv.data(), r.dvv.data());
     return r;
   }
 
