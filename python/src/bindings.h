@@ -124,5 +124,6 @@ void bind_evaluator(py::module_& m);
 void bind_analysis(py::module_& m);
 void bind_limits(py::module_& m);
 void bind_plugins(py::module_& m);
+void bind_limit_surface(py::module_& m);
 
 }  // namespace subdivkit

@@ -33,4 +33,5 @@ PYBIND11_MODULE(_subdivkit, m) {
   subdivkit::bind_analysis(m);
   subdivkit::bind_limits(m);
   subdivkit::bind_plugins(m);
+  subdivkit::bind_limit_surface(m);
 }

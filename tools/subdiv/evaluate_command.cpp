@@ -17,6 +17,7 @@
 #include "framework/io/mesh_read.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/limit/tessellation.h"
+#include "framework/pipeline/evaluate_request.h"
 #include "framework/io/mesh_write.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
@@ -30,6 +31,9 @@ struct EvaluateArgs {
   std::string mesh, scheme = "catmull-clark", at, output;
   std::vector<std::string> params;
   std::string boundary = "edges-and-corners", crease_method = "uniform";
+  bool boundary_given = false, crease_method_given = false;  // else the mesh's tags, as refine
+  std::string features;
+  double feature_angle = -1;
   int derivatives = 1;
   int samples = 0;
   int threads = 0;
@@ -87,27 +91,23 @@ std::vector<Query> read_points(const std::string& file, const LimitSurface& surf
   return out;
 }
 
-void write_csv(const std::filesystem::path& out, const std::vector<Query>& queries,
-               const std::vector<LimitSample>& samples, int derivatives) {
+void write_csv(const std::filesystem::path& out, const std::vector<Query>& queries, const EvaluatedPoints& points,
+               int derivatives) {
   write_file_atomically(out, [&](const std::filesystem::path& tmp) {
     std::ofstream f(tmp);
     f << "face,u,v,x,y,z";
     if (derivatives > 0) f << ",du_x,du_y,du_z,dv_x,dv_y,dv_z";
     if (derivatives > 1) f << ",duu_x,duu_y,duu_z,duv_x,duv_y,duv_z,dvv_x,dvv_y,dvv_z";
     f << '\n';
+    // NaN (a derivative that does not exist) as "nan", every number in its shortest exact form.
+    auto number = [](double x) { return std::isnan(x) ? std::string("nan") : fmt::format("{}", x); };
     for (size_t i = 0; i < queries.size(); ++i) {
-      const LimitSample& s = samples[i];
-      f << fmt::format("{},{},{},{},{},{}", queries[i].face, queries[i].u, queries[i].v, s.position[0], s.position[1],
-                       s.position[2]);
-      if (derivatives > 0) {
-        for (const auto* d : {&s.du, &s.dv})
-          for (int c = 0; c < 3; ++c) f << ',' << (s.has_derivatives ? fmt::format("{}", (*d)[size_t(c)]) : "nan");
-      }
-      if (derivatives > 1) {
-        for (const auto* d : {&s.duu, &s.duv, &s.dvv})
-          for (int c = 0; c < 3; ++c)
-            f << ',' << (s.has_second_derivatives ? fmt::format("{}", (*d)[size_t(c)]) : "nan");
-      }
+      f << fmt::format("{},{},{}", queries[i].face, queries[i].u, queries[i].v);
+      std::vector<const std::vector<double>*> columns{&points.position};
+      if (derivatives > 0) columns.insert(columns.end(), {&points.du, &points.dv});
+      if (derivatives > 1) columns.insert(columns.end(), {&points.duu, &points.duv, &points.dvv});
+      for (const auto* d : columns)
+        for (size_t c = 0; c < 3; ++c) f << ',' << number((*d)[3 * i + c]);
       f << '\n';
     }
     if (!f) throw Error(fmt::format("cannot write '{}'", out.string()));
@@ -131,6 +131,19 @@ MeshData tessellation_mesh(const Tessellation& t) {
   return m;
 }
 
+// The command line's options as a pipeline request (framework/pipeline/evaluate_request.h).
+EvaluateRequest evaluate_request(const EvaluateArgs& a) {
+  EvaluateRequest r;
+  r.mesh_file = a.mesh;
+  r.scheme.text = a.scheme;
+  r.scheme.parameters = parse_params(a.params);
+  if (a.boundary_given) r.shape.boundary = boundary_from_name(a.boundary, "--boundary");
+  if (a.crease_method_given) r.shape.crease_method = crease_method_from_name(a.crease_method, "--crease-method");
+  r.feature_file = a.features;
+  r.feature_angle = a.feature_angle;
+  return r;
+}
+
 void run(const EvaluateArgs& a) {
   if (a.at.empty() == (a.samples == 0))
     throw Error("give either --at POINTS.csv (points at given parameters) or --samples N (a mesh of the surface)");
@@ -139,23 +152,19 @@ void run(const EvaluateArgs& a) {
     throw Error(fmt::format("-o '{}': --at writes .csv (face,u,v,x,y,z[,du_*,dv_*[,duu_*,duv_*,dvv_*]])", a.output));
   if (a.samples > 0 && ext == ".csv")
     throw Error(fmt::format("-o '{}': --samples writes a mesh (.vtp, .obj, .ply, .off, .stl)", a.output));
-  const auto scheme = load_scheme(a.scheme, parse_params(a.params));
-  const MeshData mesh = read_mesh(a.mesh);
-  LimitSurfaceOptions options;
-  options.features = {boundary_from_name(a.boundary), crease_method_from_name(a.crease_method)};
-  const LimitSurface surface(scheme, level_from_mesh(mesh, a.mesh), options);
+  const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a));
+  for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
   const int threads = a.threads > 0 ? a.threads : int(tbb::this_task_arena::max_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
   if (a.samples > 0) {
-    write_mesh(a.output, tessellation_mesh(tessellate(surface, mesh.positions, a.samples)));
+    write_mesh(a.output, tessellation_mesh(tessellate(*prepared.surface, prepared.mesh.positions, a.samples)));
     return;
   }
-  const std::vector<Query> queries = read_points(a.at, surface);
-  std::vector<LimitSample> samples(queries.size());
-  tbb::parallel_for(size_t(0), queries.size(), [&](size_t i) {
-    samples[i] = surface.evaluate(queries[i].face, queries[i].u, queries[i].v, mesh.positions, 3, a.derivatives);
-  });
-  write_csv(a.output, queries, samples, a.derivatives);
+  const std::vector<Query> queries = read_points(a.at, *prepared.surface);
+  std::vector<Index> faces;
+  std::vector<double> uv;
+  for (const Query& q : queries) faces.push_back(q.face), uv.insert(uv.end(), {q.u, q.v});
+  write_csv(a.output, queries, evaluate_limit_points(prepared, faces, uv, a.derivatives), a.derivatives);
 }
 
 }  // namespace
@@ -170,6 +179,11 @@ void add_evaluate_command(CLI::App& app) {
   add_param_option(cmd, args->params);
   add_boundary_option(cmd, "--boundary", args->boundary);
   add_crease_method_option(cmd, args->crease_method);
+  cmd->add_option("--features", args->features,
+                  "Feature sidecar (JSON): creases and corners, as subdiv refine --features")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--feature-angle", args->feature_angle,
+                  "Make every edge whose faces' normals differ by more than DEG degrees an infinitely sharp crease");
   cmd->add_option("--at", args->at, "Points to evaluate: a .csv with the header face,u,v");
   cmd->add_option("--samples", args->samples,
                   "Instead of --at: the surface as a crack-free mesh, N x N quads per quad, N^2 triangles per "
@@ -185,7 +199,11 @@ void add_evaluate_command(CLI::App& app) {
   cmd->add_option("-j,--threads", args->threads, "Worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
   cmd->footer("Parameters: quads (0,0) (1,0) (1,1) (0,1); triangles (0,0) (1,0) (0,1); other faces of quad schemes\n"
               "Bfr's QUAD_SUBFACES tiles. Example: subdiv evaluate examples/meshes/cube.obj --at points.csv -o limit.csv");
-  cmd->callback([args] { run(*args); });
+  cmd->callback([cmd, args] {
+    args->boundary_given = cmd->count("--boundary") > 0;
+    args->crease_method_given = cmd->count("--crease-method") > 0;
+    run(*args);
+  });
 }
 
 }  // namespace subdiv::cli
