@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "framework/io/mesh_read.h"
+#include "framework/limit/face_domain.h"
 #include "framework/pipeline/refine_pipeline.h"
 #include "framework/util/option_spelling.h"
 #include "framework/util/error.h"
@@ -34,10 +35,119 @@ void check_points(const PreparedEvaluation& p, std::span<const Index> faces, std
       throw Error(fmt::format("point {} (face {}, u {}, v {}): {}", i, faces[i], uv[2 * i], uv[2 * i + 1], why));
 }
 
+// The channels' value meshes, each with its own limit surface (the mode All: bilinear).
+std::vector<FaceVaryingSurface> face_varying_surfaces(const PreparedRefinement& p, const Level& base,
+                                                      const std::string& mesh_name, std::vector<std::string>& notes) {
+  std::vector<FaceVaryingSurface> out;
+  for (const FaceVaryingArray& a : p.mesh.face_varying) {
+    if (a.role == ArrayRole::Normals) {
+      notes.push_back(fmt::format("face-varying array '{}' holds normals, which are not evaluated (a mix of unit "
+                                  "normals is no normal)",
+                                  a.name));
+      continue;
+    }
+    FaceVaryingValueMesh m =
+        face_varying_value_mesh(base, {a.values, a.indices}, a.components, p.face_varying, p.options.features.boundary);
+    FaceVaryingSurface s;
+    s.name = a.name;
+    s.components = a.components;
+    s.mode = p.face_varying;
+    s.values = std::move(m.values.values);
+    s.level = std::move(m.level);
+    if (s.mode != FaceVaryingLinear::All) {
+      LimitSurfaceOptions o;
+      o.features = p.options.features;
+      o.features.boundary = BoundaryInterpolation::EdgesOnly;  // seams and corners are tagged on the value mesh
+      try {
+        s.surface = std::make_shared<const LimitSurface>(p.sequence.schemes.front(), s.level, o);
+      } catch (const Error& e) {
+        throw Error(fmt::format("{}: face-varying array '{}': {}", mesh_name, a.name, e.what()));
+      }
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+// The mode All: the channel bilinear over the face (a quad), linear (a triangle), or over
+// the point's sub-face (an n-gon of a quad scheme), with derivatives in (u, v).
+LimitSample bilinear(const FaceVaryingSurface& s, const FacePoint& p, int derivatives) {
+  const auto corners = s.level.face(p.face);
+  const size_t n = corners.size(), C = size_t(s.components);
+  auto value = [&](size_t k) { return &s.values[size_t(corners[k % n]) * C]; };
+  std::vector<std::vector<double>> c(4, std::vector<double>(C, 0.0));
+  const bool triangle = p.sub_face < 0 && n == 3;
+  if (p.sub_face < 0) {
+    for (size_t k = 0; k < n; ++k)
+      for (size_t j = 0; j < C; ++j) c[k][j] = value(k)[j];
+  } else {
+    const size_t i = size_t(p.sub_face);
+    for (size_t j = 0; j < C; ++j) {
+      double centroid = 0;
+      for (size_t k = 0; k < n; ++k) centroid += value(k)[j] / double(n);
+      c[0][j] = value(i)[j];
+      c[1][j] = 0.5 * (value(i)[j] + value(i + 1)[j]);
+      c[2][j] = centroid;
+      c[3][j] = 0.5 * (value(i + n - 1)[j] + value(i)[j]);
+    }
+  }
+  const double x = p.st[0], y = p.st[1];
+  const auto& J = p.jacobian;
+  LimitSample out;
+  out.has_derivatives = derivatives >= 1;
+  out.has_second_derivatives = derivatives >= 2;
+  for (size_t j = 0; j < C; ++j) {
+    double P, Ps, Pt, Pst;
+    if (triangle) {
+      P = (1 - x - y) * c[0][j] + x * c[1][j] + y * c[2][j];
+      Ps = c[1][j] - c[0][j], Pt = c[2][j] - c[0][j], Pst = 0;
+    } else {
+      P = (1 - x) * (1 - y) * c[0][j] + x * (1 - y) * c[1][j] + x * y * c[2][j] + (1 - x) * y * c[3][j];
+      Ps = (1 - y) * (c[1][j] - c[0][j]) + y * (c[2][j] - c[3][j]);
+      Pt = (1 - x) * (c[3][j] - c[0][j]) + x * (c[2][j] - c[1][j]);
+      Pst = c[0][j] - c[1][j] + c[2][j] - c[3][j];
+    }
+    out.position.push_back(P);
+    out.du.push_back(J[0][0] * Ps + J[1][0] * Pt);
+    out.dv.push_back(J[0][1] * Ps + J[1][1] * Pt);
+    out.duu.push_back(2 * J[0][0] * J[1][0] * Pst);
+    out.duv.push_back((J[0][0] * J[1][1] + J[1][0] * J[0][1]) * Pst);
+    out.dvv.push_back(2 * J[0][1] * J[1][1] * Pst);
+  }
+  return out;
+}
+
 void check_order(int derivatives) {
   if (derivatives < 0 || derivatives > 2)
     throw OptionError(fmt::format("{{derivatives}} {}: give 0 (positions), 1 (also du, dv) or 2 (also duu, duv, dvv)",
                                   derivatives));
+}
+
+// Runs `sample(i)` for every point in parallel and lays the samples out, NaN where a
+// derivative does not exist.
+template <class F>
+EvaluatedPoints evaluate_samples(size_t count, int channels, int derivatives, F&& sample) {
+  EvaluatedPoints out;
+  out.count = Index(count);
+  out.channels = channels;
+  const size_t n = count * size_t(channels);
+  out.position.resize(n);
+  if (derivatives >= 1) out.du.resize(n), out.dv.resize(n);
+  if (derivatives >= 2) out.duu.resize(n), out.duv.resize(n), out.dvv.resize(n);
+  tbb::parallel_for(size_t(0), count, [&](size_t i) {
+    const LimitSample s = sample(i);
+    auto put = [&](std::vector<double>& to, const std::vector<double>& from, bool has) {
+      for (size_t c = 0; c < size_t(channels); ++c) to[i * size_t(channels) + c] = has ? from[c] : kNan;
+    };
+    put(out.position, s.position, true);
+    if (derivatives >= 1) put(out.du, s.du, s.has_derivatives), put(out.dv, s.dv, s.has_derivatives);
+    if (derivatives >= 2) {
+      put(out.duu, s.duu, s.has_second_derivatives);
+      put(out.duv, s.duv, s.has_second_derivatives);
+      put(out.dvv, s.dvv, s.has_second_derivatives);
+    }
+  });
+  return out;
 }
 
 }  // namespace
@@ -73,6 +183,7 @@ PreparedEvaluation prepare_evaluation(EvaluateRequest request) {
   } catch (const Error& e) {
     throw Error(fmt::format("{}: {}", r.mesh_name, e.what()));
   }
+  out.face_varying = face_varying_surfaces(p, out.surface->base(), r.mesh_name, p.notes);
   out.scheme_label = std::move(p.scheme_label);
   out.mesh = std::move(p.mesh);
   out.warnings = std::move(p.warnings);
@@ -99,27 +210,25 @@ EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& p, std::span<con
         own[v * size_t(channels) + size_t(c)] = values[size_t(p.request_vertex[v]) * size_t(channels) + size_t(c)];
     values = own;
   }
-  EvaluatedPoints out;
-  out.count = Index(faces.size());
-  out.channels = channels;
-  const size_t n = faces.size() * size_t(channels);
-  out.position.resize(n);
-  if (derivatives >= 1) out.du.resize(n), out.dv.resize(n);
-  if (derivatives >= 2) out.duu.resize(n), out.duv.resize(n), out.dvv.resize(n);
-  tbb::parallel_for(size_t(0), faces.size(), [&](size_t i) {
-    const LimitSample s = p.surface->evaluate(faces[i], uv[2 * i], uv[2 * i + 1], values, channels, derivatives);
-    auto put = [&](std::vector<double>& to, const std::vector<double>& from, bool has) {
-      for (size_t c = 0; c < size_t(channels); ++c) to[i * size_t(channels) + c] = has ? from[c] : kNan;
-    };
-    put(out.position, s.position, true);
-    if (derivatives >= 1) put(out.du, s.du, s.has_derivatives), put(out.dv, s.dv, s.has_derivatives);
-    if (derivatives >= 2) {
-      put(out.duu, s.duu, s.has_second_derivatives);
-      put(out.duv, s.duv, s.has_second_derivatives);
-      put(out.dvv, s.dvv, s.has_second_derivatives);
-    }
+  return evaluate_samples(faces.size(), channels, derivatives, [&](size_t i) {
+    return p.surface->evaluate(faces[i], uv[2 * i], uv[2 * i + 1], values, channels, derivatives);
   });
-  return out;
+}
+
+EvaluatedPoints evaluate_face_varying(const PreparedEvaluation& p, size_t channel, std::span<const Index> faces,
+                                      std::span<const double> uv, int derivatives) {
+  check_order(derivatives);
+  check_points(p, faces, uv);
+  if (channel >= p.face_varying.size())
+    throw Error(fmt::format("face-varying channel {}: the mesh has {}", channel, p.face_varying.size()));
+  const FaceVaryingSurface& s = p.face_varying[channel];
+  const Level& base = p.surface->base();
+  const bool triangles = p.surface->triangles();
+  return evaluate_samples(faces.size(), s.components, derivatives, [&](size_t i) {
+    if (s.surface) return s.surface->evaluate(faces[i], uv[2 * i], uv[2 * i + 1], s.values, s.components, derivatives);
+    const char* why = "";
+    return bilinear(s, *base_face_point(base, faces[i], uv[2 * i], uv[2 * i + 1], triangles, &why), derivatives);
+  });
 }
 
 LimitStencilMatrices limit_stencil_matrices(const PreparedEvaluation& p, std::span<const Index> faces,

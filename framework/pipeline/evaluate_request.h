@@ -11,6 +11,7 @@
 
 #include "framework/limit/limit_surface.h"
 #include "framework/pipeline/refine_request.h"
+#include "framework/primvar/face_varying.h"
 
 namespace subdiv {
 
@@ -25,6 +26,21 @@ struct EvaluateRequest {
   double feature_angle = -1;  // degrees: sharper edges become infinitely sharp creases; < 0: off
 };
 
+// A face-varying channel's limit (OpenSubdiv's face-varying surfaces, Bfr's
+// InitFaceVaryingSurface): the channel's value mesh (primvar/face_varying.h: seams are its
+// boundaries, the mode's corners tagged) evaluated with the same scheme and the boundary
+// rule EdgesOnly, or, in the mode All (OpenSubdiv's default), bilinear in each face (each
+// sub-face of an n-gon of a quad scheme: its corner, the two edge middles and the face's
+// centroid, as Bfr's linear patches).
+struct FaceVaryingSurface {
+  std::string name;
+  int components = 2;
+  FaceVaryingLinear mode = FaceVaryingLinear::All;
+  std::vector<double> values;                    // components per value of the value mesh
+  Level level;                                   // the value mesh (faces as the mesh's)
+  std::shared_ptr<const LimitSurface> surface;   // null in the mode All
+};
+
 // The surface prepared once: evaluate any number of point sets with it (thread-safe).
 struct PreparedEvaluation {
   std::string scheme_label;
@@ -32,6 +48,7 @@ struct PreparedEvaluation {
   std::vector<Index> request_vertex;  // per vertex of `mesh`: its number in the request's mesh
   Index request_vertex_count = 0;
   std::shared_ptr<const LimitSurface> surface;
+  std::vector<FaceVaryingSurface> face_varying;  // the mesh's face-varying channels (normals left out)
   std::vector<std::string> warnings;  // the mesh reader's, clean-up's
   std::vector<std::string> notes;     // feature files and angles applied
 };
@@ -56,6 +73,11 @@ struct EvaluatedPoints {
 EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& prepared, std::span<const Index> faces,
                                       std::span<const double> uv, int derivatives,
                                       std::span<const double> values = {}, int channels = 3);
+
+// The limit of face-varying channel `channel` at the points (components per point), as
+// evaluate_limit_points.
+EvaluatedPoints evaluate_face_varying(const PreparedEvaluation& prepared, size_t channel, std::span<const Index> faces,
+                                      std::span<const double> uv, int derivatives);
 
 // Limit stencils of the points as sparse matrices over the request's vertices (CSR, one row
 // per point): the position and each derivative up to `derivatives`. A row is empty where

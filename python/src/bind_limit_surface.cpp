@@ -2,6 +2,7 @@
 // through the pipeline's evaluation request (framework/pipeline/evaluate_request.h), the
 // same as `subdiv evaluate`.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "bindings.h"
 
@@ -14,9 +15,12 @@ struct LimitSurfaceHandle {
 };
 
 LimitSurfaceHandle prepare(py::handle mesh, py::handle scheme, py::handle params, const std::string& boundary,
-                           const std::string& crease_method, double feature_angle) {
+                           const std::string& crease_method, double feature_angle, py::handle face_varying,
+                           const std::string& fvar_boundary) {
   subdiv::EvaluateRequest r;
   r.mesh = mesh_from_python(mesh);
+  r.mesh.face_varying = face_varying_from(face_varying, Index(r.mesh.face_vertices.size()));
+  r.shape.face_varying = subdiv::face_varying_from_name(fvar_boundary, "fvar_boundary=");
   r.mesh_name = mesh_name(mesh);
   r.scheme = scheme_source_from(scheme, params);
   r.shape.boundary = boundary_from(boundary);
@@ -34,6 +38,17 @@ void points_from(py::handle faces, py::handle uv, std::vector<Index>& f, std::ve
   p = doubles_from(uv, "uv");
 }
 
+py::dict to_python(subdiv::EvaluatedPoints&& r, int derivatives) {
+  const py::ssize_t n = r.count, c = r.channels;
+  py::dict out;
+  out["points"] = adopt(std::move(r.position), {n, c});
+  const char* names[] = {"du", "dv", "duu", "duv", "dvv"};
+  std::vector<double>* arrays[] = {&r.du, &r.dv, &r.duu, &r.duv, &r.dvv};
+  for (int k = 0; k < 5; ++k)
+    if (k < 2 ? derivatives >= 1 : derivatives >= 2) out[names[k]] = adopt(std::move(*arrays[k]), {n, c});
+  return out;
+}
+
 py::dict evaluate(const LimitSurfaceHandle& h, py::handle faces, py::handle uv, int derivatives, py::handle values,
                   int channels, int threads) {
   std::vector<Index> f;
@@ -46,14 +61,30 @@ py::dict evaluate(const LimitSurfaceHandle& h, py::handle faces, py::handle uv, 
     const subdiv::ThreadLimit limit(threads);
     r = subdiv::evaluate_limit_points(*h.prepared, f, p, derivatives, v, values.is_none() ? 3 : channels);
   }
-  const py::ssize_t n = r.count, c = r.channels;
-  py::dict out;
-  out["points"] = adopt(std::move(r.position), {n, c});
-  const char* names[] = {"du", "dv", "duu", "duv", "dvv"};
-  std::vector<double>* arrays[] = {&r.du, &r.dv, &r.duu, &r.duv, &r.dvv};
-  for (int k = 0; k < 5; ++k)
-    if (k < 2 ? derivatives >= 1 : derivatives >= 2) out[names[k]] = adopt(std::move(*arrays[k]), {n, c});
-  return out;
+  return to_python(std::move(r), derivatives);
+}
+
+py::dict evaluate_face_varying(const LimitSurfaceHandle& h, const std::string& name, py::handle faces, py::handle uv,
+                               int derivatives, int threads) {
+  std::vector<Index> f;
+  std::vector<double> p;
+  points_from(faces, uv, f, p);
+  const auto& channels = h.prepared->face_varying;
+  size_t k = 0;
+  while (k < channels.size() && channels[k].name != name) ++k;
+  if (k == channels.size()) {
+    std::vector<std::string> names;
+    for (const auto& c : channels) names.push_back("'" + c.name + "'");
+    throw subdiv::Error(fmt::format("face-varying array '{}': the mesh has {}", name,
+                                    names.empty() ? std::string("none") : fmt::format("{}", fmt::join(names, ", "))));
+  }
+  subdiv::EvaluatedPoints r;
+  {
+    py::gil_scoped_release unlocked;
+    const subdiv::ThreadLimit limit(threads);
+    r = subdiv::evaluate_face_varying(*h.prepared, k, f, p, derivatives);
+  }
+  return to_python(std::move(r), derivatives);
 }
 
 py::dict matrix_to_python(subdiv::LimitStencilMatrices::Matrix&& m, Index rows, Index columns) {
@@ -94,7 +125,15 @@ py::dict stencils(const LimitSurfaceHandle& h, py::handle faces, py::handle uv, 
 void bind_limit_surface(py::module_& m) {
   py::class_<LimitSurfaceHandle>(m, "_LimitSurface")
       .def(py::init(&prepare), py::arg("mesh"), py::arg("scheme"), py::arg("params"), py::arg("boundary"),
-           py::arg("crease_method"), py::arg("feature_angle"))
+           py::arg("crease_method"), py::arg("feature_angle"), py::arg("face_varying"), py::arg("fvar_boundary"))
+      .def("evaluate_face_varying", &evaluate_face_varying, py::arg("name"), py::arg("faces"), py::arg("uv"),
+           py::arg("derivatives"), py::arg("threads"))
+      .def_property_readonly("face_varying",
+                             [](const LimitSurfaceHandle& h) {
+                               std::vector<std::string> names;
+                               for (const auto& c : h.prepared->face_varying) names.push_back(c.name);
+                               return names;
+                             })
       .def("evaluate", &evaluate, py::arg("faces"), py::arg("uv"), py::arg("derivatives"), py::arg("values"),
            py::arg("channels"), py::arg("threads"))
       .def("stencils", &stencils, py::arg("faces"), py::arg("uv"), py::arg("derivatives"), py::arg("threads"))

@@ -12,7 +12,7 @@ import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error, Scheme
-from .mesh import Mesh
+from .mesh import Mesh, _face_varying_triples
 from .refinement import _scipy_sparse
 
 
@@ -86,7 +86,9 @@ class LimitSurface:
     split (Catmull-Clark, Loop, the butterflies, bilinear, composite split + averaging
     schemes, JSON schemes of that kind). Others raise subdivkit.Error saying why (√3, dual
     and mid-edge splits, non-linear and level-dependent rules, sequences, non-manifold
-    meshes).
+    meshes). The mesh's face-varying arrays (UVs) are evaluated with
+    ``evaluate_face_varying``, in the linear-interpolation mode ``fvar_boundary`` ("none",
+    "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"), as refine().
 
     The parameters are OpenSubdiv Bfr's: a quad's corners at (0,0), (1,0), (1,1), (0,1); a
     triangle's at (0,0), (1,0), (0,1); another face of a quad scheme is n sub-quads
@@ -105,10 +107,11 @@ class LimitSurface:
     """
 
     def __init__(self, mesh, scheme="catmull-clark", *, params=None, boundary="edges-and-corners",
-                 crease_method="uniform", feature_angle=-1.0):
+                 crease_method="uniform", feature_angle=-1.0, fvar_boundary="all"):
         _check_mesh(mesh, "LimitSurface")
         self._prepared = _subdivkit._LimitSurface(mesh, scheme, params, str(boundary), str(crease_method),
-                                                  float(feature_angle))
+                                                  float(feature_angle), _face_varying_triples(mesh),
+                                                  str(fvar_boundary))
         self.name = mesh.name
         self.scheme = scheme.name if isinstance(scheme, Scheme) else str(scheme)
 
@@ -125,6 +128,12 @@ class LimitSurface:
     @property
     def n_faces(self):
         return self._prepared.face_count
+
+    @property
+    def face_varying(self):
+        """The names of the mesh's face-varying arrays (``mesh.face_varying``) that
+        evaluate_face_varying evaluates (normals are not)."""
+        return list(self._prepared.face_varying)
 
     def evaluate(self, faces, uv, derivatives=1, *, points=None, threads=0):
         """The limit at (faces[i], uv[i]): a LimitEvaluation.
@@ -150,6 +159,21 @@ class LimitSurface:
                 raise Error(f"points {tuple(values.shape)}: give one row per control point ({self.n_points} rows)")
             channels = values.shape[1]
         r = self._prepared.evaluate(f, p, order, values, channels, int(threads))
+        return LimitEvaluation(points=r["points"], du=r.get("du"), dv=r.get("dv"), duu=r.get("duu"),
+                               duv=r.get("duv"), dvv=r.get("dvv"))
+
+    def evaluate_face_varying(self, name, faces, uv, derivatives=1, *, threads=0):
+        """Face-varying array ``name`` (UVs with seams) at the same (faces[i], uv[i]): a
+        LimitEvaluation with (n, k) arrays, k the array's columns.
+
+        The array's limit is OpenSubdiv's face-varying surface (Bfr's InitFaceVaryingSurface)
+        in the mode ``fvar_boundary`` chose: "all" (the default, as OpenSubdiv's) bilinear in
+        each face; "none" ... "boundaries" the scheme's limit of the values, seams and the
+        mode's corners kept sharp (docs/primvars.md). Arguments as evaluate().
+        """
+        order = _check_order(derivatives)
+        f, p = _points(faces, uv)
+        r = self._prepared.evaluate_face_varying(str(name), f, p, order, int(threads))
         return LimitEvaluation(points=r["points"], du=r.get("du"), dv=r.get("dv"), duu=r.get("duu"),
                                duv=r.get("duv"), dvv=r.get("dvv"))
 

@@ -125,3 +125,31 @@ def test_bad_points_schemes_and_arguments_are_refused():
         sk.LimitSurface(cube(), "bilinear:1,catmull-clark")
     with pytest.raises(sk.Error, match="expected a subdivkit.Mesh"):
         sk.evaluate("cube.obj", "catmull-clark", [0], [[0.5, 0.5]])
+
+
+def test_face_varying_uvs_at_the_same_points_in_each_mode(tmp_path):
+    tube = sk.read_mesh(str(MESHES / "textured-tube.obj"))
+    faces = np.array([0, 5, 11, 23], dtype=np.int32)
+    uv = np.array([[0.3, 0.4], [0.5, 0.5], [0.0, 1.0], [1.0, 0.25]])
+    linear = sk.LimitSurface(tube, "catmull-clark")
+    assert linear.face_varying == ["uv"]
+    r = linear.evaluate_face_varying("uv", faces, uv, derivatives=1)
+    # The mode "all" is bilinear in each face: the corners' values interpolated.
+    values, index = tube.face_varying["uv"]
+    for i, (f, (u, v)) in enumerate(zip(faces, uv)):
+        c = values[index[tube.face_offsets[f]:tube.face_offsets[f + 1]]]
+        expected = (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] + (1 - u) * v * c[3]
+        assert np.abs(r.points[i] - expected).max() < 1e-14
+        assert np.abs(r.du[i] - ((1 - v) * (c[1] - c[0]) + v * (c[2] - c[3]))).max() < 1e-14
+    smooth = sk.LimitSurface(tube, "catmull-clark", fvar_boundary="none").evaluate_face_varying("uv", faces, uv)
+    assert smooth.points.shape == (4, 2)
+    # The command line writes the same values as columns uv_0, uv_1.
+    points = tmp_path / "points.csv"
+    points.write_text("face,u,v\n" + "".join(f"{f},{u!r},{v!r}\n" for f, (u, v) in zip(faces, uv)))
+    out = tmp_path / "out.csv"
+    run_cli("evaluate", MESHES / "textured-tube.obj", "--at", points, "--fvar-boundary", "none", "-o", out)
+    assert out.read_text().splitlines()[0].endswith(",uv_0,uv_1")
+    written = np.loadtxt(out, delimiter=",", skiprows=1)
+    assert np.array_equal(written[:, -2:], smooth.points)
+    with pytest.raises(sk.Error, match="face-varying array 'st': the mesh has 'uv'"):
+        linear.evaluate_face_varying("st", faces, uv)

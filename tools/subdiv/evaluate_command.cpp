@@ -31,7 +31,8 @@ struct EvaluateArgs {
   std::string mesh, scheme = "catmull-clark", at, output;
   std::vector<std::string> params;
   std::string boundary = "edges-and-corners", crease_method = "uniform";
-  bool boundary_given = false, crease_method_given = false;  // else the mesh's tags, as refine
+  std::string fvar_boundary = "all";
+  bool boundary_given = false, crease_method_given = false, fvar_boundary_given = false;  // else the mesh's tags
   std::string features;
   double feature_angle = -1;
   int derivatives = 1;
@@ -91,13 +92,16 @@ std::vector<Query> read_points(const std::string& file, const LimitSurface& surf
   return out;
 }
 
+// The positions (and derivatives), then each face-varying channel's values, per point.
 void write_csv(const std::filesystem::path& out, const std::vector<Query>& queries, const EvaluatedPoints& points,
-               int derivatives) {
+               int derivatives, const std::vector<std::string>& fvar_names, const std::vector<EvaluatedPoints>& fvar) {
   write_file_atomically(out, [&](const std::filesystem::path& tmp) {
     std::ofstream f(tmp);
     f << "face,u,v,x,y,z";
     if (derivatives > 0) f << ",du_x,du_y,du_z,dv_x,dv_y,dv_z";
     if (derivatives > 1) f << ",duu_x,duu_y,duu_z,duv_x,duv_y,duv_z,dvv_x,dvv_y,dvv_z";
+    for (size_t k = 0; k < fvar.size(); ++k)
+      for (int c = 0; c < fvar[k].channels; ++c) f << ',' << fvar_names[k] << '_' << c;
     f << '\n';
     // NaN (a derivative that does not exist) as "nan", every number in its shortest exact form.
     auto number = [](double x) { return std::isnan(x) ? std::string("nan") : fmt::format("{}", x); };
@@ -108,6 +112,8 @@ void write_csv(const std::filesystem::path& out, const std::vector<Query>& queri
       if (derivatives > 1) columns.insert(columns.end(), {&points.duu, &points.duv, &points.dvv});
       for (const auto* d : columns)
         for (size_t c = 0; c < 3; ++c) f << ',' << number((*d)[3 * i + c]);
+      for (const EvaluatedPoints& e : fvar)
+        for (size_t c = 0; c < size_t(e.channels); ++c) f << ',' << number(e.position[i * size_t(e.channels) + c]);
       f << '\n';
     }
     if (!f) throw Error(fmt::format("cannot write '{}'", out.string()));
@@ -139,6 +145,7 @@ EvaluateRequest evaluate_request(const EvaluateArgs& a) {
   r.scheme.parameters = parse_params(a.params);
   if (a.boundary_given) r.shape.boundary = boundary_from_name(a.boundary, "--boundary");
   if (a.crease_method_given) r.shape.crease_method = crease_method_from_name(a.crease_method, "--crease-method");
+  if (a.fvar_boundary_given) r.shape.face_varying = face_varying_from_name(a.fvar_boundary, "--fvar-boundary");
   r.feature_file = a.features;
   r.feature_angle = a.feature_angle;
   return r;
@@ -164,7 +171,14 @@ void run(const EvaluateArgs& a) {
   std::vector<Index> faces;
   std::vector<double> uv;
   for (const Query& q : queries) faces.push_back(q.face), uv.insert(uv.end(), {q.u, q.v});
-  write_csv(a.output, queries, evaluate_limit_points(prepared, faces, uv, a.derivatives), a.derivatives);
+  std::vector<std::string> fvar_names;
+  std::vector<EvaluatedPoints> fvar;
+  for (size_t k = 0; k < prepared.face_varying.size(); ++k) {
+    fvar_names.push_back(prepared.face_varying[k].name);
+    fvar.push_back(evaluate_face_varying(prepared, k, faces, uv, 0));
+  }
+  write_csv(a.output, queries, evaluate_limit_points(prepared, faces, uv, a.derivatives), a.derivatives, fvar_names,
+            fvar);
 }
 
 }  // namespace
@@ -184,6 +198,13 @@ void add_evaluate_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--feature-angle", args->feature_angle,
                   "Make every edge whose faces' normals differ by more than DEG degrees an infinitely sharp crease");
+  cmd->add_option("--fvar-boundary", args->fvar_boundary,
+                  "Face-varying data (OBJ vt: UVs with seams), evaluated at the same points (columns NAME_0, "
+                  "NAME_1, ... after the others), as OpenSubdiv's linear-interpolation modes: none, corners-only, "
+                  "corners-plus1, corners-plus2, boundaries, all (bilinear, OpenSubdiv's default); the mesh's "
+                  "'t facevaryinginterpolateboundary' tag does the same unless this option is given")
+      ->check(CLI::IsMember({"none", "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"}))
+      ->capture_default_str();
   cmd->add_option("--at", args->at, "Points to evaluate: a .csv with the header face,u,v");
   cmd->add_option("--samples", args->samples,
                   "Instead of --at: the surface as a crack-free mesh, N x N quads per quad, N^2 triangles per "
@@ -202,6 +223,7 @@ void add_evaluate_command(CLI::App& app) {
   cmd->callback([cmd, args] {
     args->boundary_given = cmd->count("--boundary") > 0;
     args->crease_method_given = cmd->count("--crease-method") > 0;
+    args->fvar_boundary_given = cmd->count("--fvar-boundary") > 0;
     run(*args);
   });
 }
