@@ -489,6 +489,7 @@ LimitSurface::LimitSurface(LimitSurface&&) noexcept = default;
 LimitSurface& LimitSurface::operator=(LimitSurface&&) noexcept = default;
 
 const Level& LimitSurface::base() const { return impl_->base; }
+const LimitSurfaceOptions& LimitSurface::options() const { return impl_->options; }
 bool LimitSurface::triangles() const { return impl_->triangles; }
 
 std::string LimitSurface::check(Index face, double u, double v) const {

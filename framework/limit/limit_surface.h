@@ -83,6 +83,7 @@ public:
   LimitSurface& operator=(LimitSurface&&) noexcept;
 
   const Level& base() const;
+  const LimitSurfaceOptions& options() const;
   // True when the scheme's split makes triangles (faces are parameterised as triangles).
   bool triangles() const;
 

@@ -184,6 +184,7 @@ PreparedEvaluation prepare_evaluation(EvaluateRequest request) {
     throw Error(fmt::format("{}: {}", r.mesh_name, e.what()));
   }
   out.face_varying = face_varying_surfaces(p, out.surface->base(), r.mesh_name, p.notes);
+  out.scheme = p.sequence.schemes.front();
   out.scheme_label = std::move(p.scheme_label);
   out.mesh = std::move(p.mesh);
   out.warnings = std::move(p.warnings);

@@ -44,6 +44,7 @@ struct FaceVaryingSurface {
 // The surface prepared once: evaluate any number of point sets with it (thread-safe).
 struct PreparedEvaluation {
   std::string scheme_label;
+  std::shared_ptr<const Scheme> scheme;
   MeshData mesh;                      // the request's mesh without unused vertices
   std::vector<Index> request_vertex;  // per vertex of `mesh`: its number in the request's mesh
   Index request_vertex_count = 0;

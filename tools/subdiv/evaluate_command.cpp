@@ -15,6 +15,7 @@
 #include "framework/io/formats.h"
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
+#include "framework/limit/adaptive_refine.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/limit/tessellation.h"
 #include "framework/pipeline/evaluate_request.h"
@@ -37,6 +38,8 @@ struct EvaluateArgs {
   double feature_angle = -1;
   int derivatives = 1;
   int samples = 0;
+  int adaptive = -1;  // --adaptive L; < 0: not given
+  bool limit = false;
   int threads = 0;
 };
 
@@ -151,20 +154,43 @@ EvaluateRequest evaluate_request(const EvaluateArgs& a) {
   return r;
 }
 
+// The adaptive mesh with the level and base face of every face.
+MeshData adaptive_mesh(AdaptiveMesh&& a) {
+  MeshData m;
+  m.positions = std::move(a.positions);
+  m.face_offsets = std::move(a.face_offsets);
+  m.face_vertices = std::move(a.face_vertices);
+  DataArray level{"level", 1, {}, true}, face{"base_face", 1, {}, true};
+  for (int l : a.face_level) level.values.push_back(double(l));
+  for (Index f : a.base_face) face.values.push_back(double(f));
+  m.cell_data = {std::move(level), std::move(face)};
+  return m;
+}
+
 void run(const EvaluateArgs& a) {
-  if (a.at.empty() == (a.samples == 0))
-    throw Error("give either --at POINTS.csv (points at given parameters) or --samples N (a mesh of the surface)");
+  const int modes = int(!a.at.empty()) + int(a.samples > 0) + int(a.adaptive >= 0);
+  if (modes != 1)
+    throw Error("give one of --at POINTS.csv (points at given parameters), --samples N (a mesh of the surface) or "
+                "--adaptive L (a mesh refined where the surface is irregular)");
+  if (a.limit && a.adaptive < 0) throw Error("--limit goes with --adaptive L");
   const std::string ext = lowercase_extension(a.output);
   if (!a.at.empty() && ext != ".csv")
     throw Error(fmt::format("-o '{}': --at writes .csv (face,u,v,x,y,z[,du_*,dv_*[,duu_*,duv_*,dvv_*]])", a.output));
-  if (a.samples > 0 && ext == ".csv")
-    throw Error(fmt::format("-o '{}': --samples writes a mesh (.vtp, .obj, .ply, .off, .stl)", a.output));
+  if ((a.samples > 0 || a.adaptive >= 0) && ext == ".csv")
+    throw Error(fmt::format("-o '{}': --samples and --adaptive write a mesh (.vtp, .obj, .ply, .off, .stl)", a.output));
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a));
   for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
   const int threads = a.threads > 0 ? a.threads : int(tbb::this_task_arena::max_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
   if (a.samples > 0) {
     write_mesh(a.output, tessellation_mesh(tessellate(*prepared.surface, prepared.mesh.positions, a.samples)));
+    return;
+  }
+  if (a.adaptive >= 0) {
+    AdaptiveMesh m = refine_adaptive(*prepared.scheme, prepared.surface->base(), prepared.mesh.positions, a.adaptive,
+                                     prepared.surface->options().features, a.limit);
+    fmt::print("subdiv: {} faces (uniform level {}: {})\n", m.face_offsets.size() - 1, a.adaptive, m.uniform_faces);
+    write_mesh(a.output, adaptive_mesh(std::move(m)));
     return;
   }
   const std::vector<Query> queries = read_points(a.at, *prepared.surface);
@@ -210,6 +236,12 @@ void add_evaluate_command(CLI::App& app) {
                   "Instead of --at: the surface as a crack-free mesh, N x N quads per quad, N^2 triangles per "
                   "triangle (faces with other sizes: N/2 x N/2 per sub-face, N even), with normals")
       ->check(CLI::Range(1, 1024));
+  cmd->add_option("--adaptive", args->adaptive,
+                  "Instead of --at: the mesh refined to level L only where it is irregular (extraordinary vertices, "
+                  "creases, sharp vertices, faces of another shape), watertight (coarse faces take the finer "
+                  "vertices along their edges), with cell arrays level and base_face")
+      ->check(CLI::Range(0, 12));
+  cmd->add_flag("--limit", args->limit, "With --adaptive: every vertex on the limit surface");
   cmd->add_option("--derivatives", args->derivatives,
                   "0: positions; 1: also du and dv; 2: also duu, duv, dvv (nan where they do not exist)")
       ->check(CLI::Range(0, 2))

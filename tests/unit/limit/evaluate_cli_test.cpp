@@ -88,6 +88,23 @@ TEST_CASE("subdiv evaluate --derivatives 2 adds the second derivatives, nan at a
   CHECK(!std::isnan(rows[1][12]));
 }
 
+TEST_CASE("subdiv evaluate --adaptive writes a closed mesh with fewer faces than uniform refinement") {
+  const fs::path dir = test::fresh_dir("evaluate-cli-adaptive");
+  const std::string mesh = test::source_path("examples/meshes/cube.obj");
+  const auto r = test::run_subdiv("evaluate " + mesh + " --adaptive 4 --limit -o " + (dir / "adaptive.vtp").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  const MeshData m = read_mesh((dir / "adaptive.vtp").string());
+  const Level L = level_from_mesh(m, "adaptive.vtp");
+  int open = 0;
+  for (Index e = 0; e < L.edge_count(); ++e) open += L.edge_face_count(e) != 2;
+  CHECK(open == 0);
+  CHECK(L.face_count() < 6 * 256);
+  CHECK(m.cell_data.size() == 2);
+  const auto bad = test::run_subdiv("evaluate " + mesh + " --adaptive 2 --samples 2 -o " + (dir / "x.obj").string());
+  CHECK(bad.exit_code != 0);
+  CHECK_FALSE(fs::exists(dir / "x.obj"));
+}
+
 TEST_CASE("subdiv evaluate refuses bad rows with their number and leaves no output") {
   const fs::path dir = test::fresh_dir("evaluate-cli-bad");
   const std::string mesh = test::source_path("examples/meshes/cube.obj");
