@@ -160,7 +160,7 @@ MeshData adaptive_mesh(AdaptiveMesh&& a) {
   m.positions = std::move(a.positions);
   m.face_offsets = std::move(a.face_offsets);
   m.face_vertices = std::move(a.face_vertices);
-  DataArray level{"level", 1, {}, true}, face{"base_face", 1, {}, true};
+  DataArray level{"face_level", 1, {}, true}, face{"base_face", 1, {}, true};
   for (int l : a.face_level) level.values.push_back(double(l));
   for (Index f : a.base_face) face.values.push_back(double(f));
   m.cell_data = {std::move(level), std::move(face)};
@@ -239,7 +239,7 @@ void add_evaluate_command(CLI::App& app) {
   cmd->add_option("--adaptive", args->adaptive,
                   "Instead of --at: the mesh refined to level L only where it is irregular (extraordinary vertices, "
                   "creases, sharp vertices, faces of another shape), watertight (coarse faces take the finer "
-                  "vertices along their edges), with cell arrays level and base_face")
+                  "vertices along their edges), with cell arrays face_level and base_face")
       ->check(CLI::Range(0, 12));
   cmd->add_flag("--limit", args->limit, "With --adaptive: every vertex on the limit surface");
   cmd->add_option("--derivatives", args->derivatives,
