@@ -30,6 +30,7 @@ struct Adaptive {
   std::vector<std::vector<Index>> vertex_child;  // per level < L, per vertex: its child vertex
   std::vector<std::vector<Index>> edge_child;    // per level < L, per edge: its middle vertex
   std::vector<std::vector<Index>> finest;        // per level, per vertex: its descendant at level L
+  std::vector<std::vector<std::vector<Index>>> children;  // per level < L, per face: its child faces
   AdaptiveMesh out;
 
   // The vertices along edge (a, b) of level l from a up to b (b excluded), at the finest
@@ -39,7 +40,8 @@ struct Adaptive {
     if (l < levels) {
       const Index e = find_edge(L, a, b);
       bool split = false;
-      for (int k = 0; k < L.edge_face_count(e); ++k) split = split || refined[size_t(l)][size_t(L.edge_faces[size_t(2 * e + k)])];
+      for (int k = 0; k < L.edge_face_count(e); ++k)
+        split = split || refined[size_t(l)][size_t(L.edge_faces[size_t(2 * e + k)])];
       if (split) {
         const Index m = edge_child[size_t(l)][size_t(e)];
         chain(l + 1, vertex_child[size_t(l)][size_t(a)], m, corners);
@@ -53,9 +55,7 @@ struct Adaptive {
   void emit(int l, Index f, Index base_face) {
     const Level& L = h.levels[size_t(l)];
     if (refined[size_t(l)][size_t(f)]) {
-      const Level& child = h.levels[size_t(l) + 1];
-      for (Index c = 0; c < child.face_count(); ++c)
-        if (h.origins[size_t(l)].parent_face[size_t(c)] == f) emit(l + 1, c, base_face);
+      for (Index c : children[size_t(l)][size_t(f)]) emit(l + 1, c, base_face);
       return;
     }
     const auto fv = L.face(f);
@@ -81,7 +81,7 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<
   ro.levels = levels;
   ro.features = features;
   const Hierarchy h = refine(scheme, base, ro);
-  Adaptive a{h, levels, {}, {}, {}, {}, {}};
+  Adaptive a{h, levels, {}, {}, {}, {}, {}, {}};
   for (int l = 0; l < levels; ++l) {
     const Level& L = h.levels[size_t(l)];
     const ChildOrigins& o = h.origins[size_t(l)];
@@ -100,6 +100,10 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<
       refine_face[size_t(f)] = irregular;
     }
     a.refined.push_back(std::move(refine_face));
+    std::vector<std::vector<Index>> children(size_t(L.face_count()));
+    for (size_t c = 0; c < o.parent_face.size(); ++c)
+      if (o.parent_face[c] != kNone) children[size_t(o.parent_face[c])].push_back(Index(c));
+    a.children.push_back(std::move(children));
     a.vertex_child.push_back(std::move(vc));
     a.edge_child.push_back(std::move(ec));
   }

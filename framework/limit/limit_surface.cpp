@@ -330,7 +330,8 @@ struct LimitSurface::Impl {
 
   // The rows of node `id`'s limit at lattice point q of its face, from the node's closed form
   // (itself: the candidate `own`).
-  std::vector<double> lattice_rows(Cache& c, int id, int child, int q, const std::vector<std::vector<double>>& own) const {
+  std::vector<double> lattice_rows(Cache& c, int id, int child, int q,
+                                   const std::vector<std::vector<double>>& own) const {
     if (child == id) return own[size_t(q)];
     bool untried = false;
     if (const auto* rows = c.nodes->quartic(child, untried)) return (*rows)[size_t(q)];

@@ -237,8 +237,9 @@ LimitStencilMatrices limit_stencil_matrices(const PreparedEvaluation& p, std::sp
   check_order(derivatives);
   check_points(p, faces, uv);
   std::vector<LimitStencil> stencils(faces.size());
-  tbb::parallel_for(size_t(0), faces.size(),
-                    [&](size_t i) { stencils[i] = p.surface->stencil(faces[i], uv[2 * i], uv[2 * i + 1], derivatives); });
+  tbb::parallel_for(size_t(0), faces.size(), [&](size_t i) {
+    stencils[i] = p.surface->stencil(faces[i], uv[2 * i], uv[2 * i + 1], derivatives);
+  });
   LimitStencilMatrices out;
   out.rows = Index(faces.size());
   out.columns = p.request_vertex_count;

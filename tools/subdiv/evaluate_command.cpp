@@ -247,7 +247,8 @@ void add_evaluate_command(CLI::App& app) {
       ->check(CLI::Range(0, 2))
       ->capture_default_str();
   cmd->add_option("-o,--output", args->output,
-                  "Output: with --at a .csv (face,u,v,x,y,z then du_x..dv_z, duu_x..dvv_z); with --samples a mesh (.vtp, .obj, ...)")
+                  "Output: with --at a .csv (face,u,v,x,y,z then du_x..dv_z, duu_x..dvv_z); with --samples or "
+                  "--adaptive a mesh (.vtp, .obj, ...)")
       ->required();
   cmd->add_option("-j,--threads", args->threads, "Worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
   cmd->footer("Parameters: quads (0,0) (1,0) (1,1) (0,1); triangles (0,0) (1,0) (0,1); other faces of quad schemes\n"

@@ -132,7 +132,8 @@ TEST_CASE("Face-varying UVs next to extraordinary vertices and on n-gons: Bfr's 
                                    FaceVaryingLinear::All}) {
       CAPTURE(int(mode));
       const Worst w = compare(mesh, "catmull-clark", mode, false, 60);
-      MESSAGE(std::string(c.file), " mode ", std::string(face_varying_linear_name(mode)), ": largest distance from Bfr ", w.value,
+      MESSAGE(std::string(c.file), " mode ", std::string(face_varying_linear_name(mode)),
+              ": largest distance from Bfr ", w.value,
               ", of derivatives ", w.derivative);
       CHECK(w.value < 1e-12);
       CHECK(w.derivative < 1e-11);
@@ -172,7 +173,8 @@ TEST_CASE("Face-varying UVs on the limit surface: Bfr's face-varying surfaces in
                                    FaceVaryingLinear::Boundaries, FaceVaryingLinear::All}) {
       CAPTURE(int(mode));
       const Worst w = compare(mesh, c.scheme, mode, c.triangles, 60);
-      MESSAGE(std::string(c.scheme), " mode ", std::string(face_varying_linear_name(mode)), ": largest distance from Bfr ", w.value,
+      MESSAGE(std::string(c.scheme), " mode ", std::string(face_varying_linear_name(mode)),
+              ": largest distance from Bfr ", w.value,
               ", of derivatives ", w.derivative);
       CHECK(w.value < 1e-12);
       CHECK(w.derivative < 1e-11);
