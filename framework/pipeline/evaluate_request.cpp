@@ -16,11 +16,13 @@ namespace {
 
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
-// Unused vertices are dropped in order (io/mesh_cleanup.h): the used ones, ascending, are
-// the prepared mesh's vertices.
+// Vertices used by no face or polyline are dropped in order (io/mesh_cleanup.h): the used
+// ones, ascending, are the prepared mesh's vertices.
 std::vector<Index> used_vertices(const MeshData& mesh) {
   std::vector<char> used(size_t(mesh.vertex_count()), 0);
-  for (Index v : mesh.face_vertices) used[size_t(v)] = 1;
+  for (const auto* list : {&mesh.face_vertices, &mesh.line_vertices})
+    for (Index v : *list)
+      if (v >= 0 && v < mesh.vertex_count()) used[size_t(v)] = 1;
   std::vector<Index> out;
   for (size_t v = 0; v < used.size(); ++v)
     if (used[v]) out.push_back(Index(v));
