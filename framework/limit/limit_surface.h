@@ -1,6 +1,6 @@
 #pragma once
-// The limit surface of a linear scheme at any (face, u, v): position and first derivatives,
-// exact to round-off, and the same as weights over the control points (a limit stencil).
+// The limit surface of a linear scheme at any (face, u, v): position, first and second
+// derivatives, exact to round-off, and the same as weights over the control points (a limit stencil).
 //
 // Method (docs/limit.md): the point is followed down the refinement of its own
 // neighbourhood. At every step the face's neighbourhood is cut out of the current level
