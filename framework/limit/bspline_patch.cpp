@@ -14,22 +14,26 @@ std::array<double, 4> cubic_basis_derivative(double s) {
   const double r = 1 - s;
   return {-r * r / 2, (3 * s * s - 4 * s) / 2, (-3 * s * s + 2 * s + 1) / 2, s * s / 2};
 }
+std::array<double, 4> cubic_basis_second_derivative(double s) { return {1 - s, 3 * s - 2, 1 - 3 * s, s}; }
 
 }  // namespace
 
 CornerRows bspline_rows(const std::array<Index, 16>& grid, const Uv& st, Index labels) {
   const auto bs = cubic_basis(st[0]), bt = cubic_basis(st[1]);
   const auto ds = cubic_basis_derivative(st[0]), dt = cubic_basis_derivative(st[1]);
+  const auto dss = cubic_basis_second_derivative(st[0]), dtt = cubic_basis_second_derivative(st[1]);
   CornerRows r;
-  r.position.assign(size_t(labels), 0.0);
-  r.ds.assign(size_t(labels), 0.0);
-  r.dt.assign(size_t(labels), 0.0);
+  for (auto* row : {&r.position, &r.ds, &r.dt, &r.dss, &r.dst, &r.dtt}) row->assign(size_t(labels), 0.0);
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 4; ++i) {
       const size_t l = size_t(grid[size_t(j * 4 + i)]);
-      r.position[l] = bs[size_t(i)] * bt[size_t(j)];
-      r.ds[l] = ds[size_t(i)] * bt[size_t(j)];
-      r.dt[l] = bs[size_t(i)] * dt[size_t(j)];
+      const size_t a = size_t(i), b = size_t(j);
+      r.position[l] = bs[a] * bt[b];
+      r.ds[l] = ds[a] * bt[b];
+      r.dt[l] = bs[a] * dt[b];
+      r.dss[l] = dss[a] * bt[b];
+      r.dst[l] = ds[a] * dt[b];
+      r.dtt[l] = bs[a] * dtt[b];
     }
   return r;
 }

@@ -9,8 +9,8 @@
 namespace subdiv {
 
 // The patch at (s, t) in [0, 1]^2, control points at -1, 0, 1, 2 in each direction; `grid`
-// holds their labels row by row from (-1, -1). Position, d/ds and d/dt rows of `labels`
-// entries.
+// holds their labels row by row from (-1, -1). Position, first and second derivative rows
+// of `labels` entries.
 CornerRows bspline_rows(const std::array<Index, 16>& grid, const Uv& st, Index labels);
 
 }  // namespace subdiv

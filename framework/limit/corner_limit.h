@@ -28,6 +28,9 @@ std::vector<Uv> unfold(const Level& level, Index face, bool triangles);
 // the face's own coordinates (empty where the vertex is not regular).
 struct CornerRows {
   std::vector<double> position, ds, dt;  // one weight per vertex of the level
+  // Second derivatives d2/ds2, d2/dsdt, d2/dt2: only from the polynomial patches
+  // (bspline_patch.h, triangle_patch.h), empty at a vertex reached by the descent.
+  std::vector<double> dss, dst, dtt;
 };
 
 // The rows at the face's corner `corner`. False when the vertex's neighbourhood is not yet one the masks

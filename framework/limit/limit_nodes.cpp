@@ -208,14 +208,22 @@ const LimitNode::Powers& LimitNodes::powers(int id, int which) {
   // row to a zero-sum one, so rounding in the sum never grows with the power.
   Eigen::MatrixXd d = 2 * m;
   d.col(0).array() -= 2.0;
+  // Second-derivative rows likewise, with the factor 4 of a step of d2/du2.
+  Eigen::MatrixXd d2 = 4 * m;
+  d2.col(0).array() -= 4.0;
   auto p = std::make_unique<LimitNode::Powers>();
   for (int j = 0; j < kPowers; ++j) {
     p->forward.push_back(dense_step(m, 1));
     p->backward.push_back(dense_step(d, 1));
+    p->backward2.push_back(dense_step(d2, 1));
     m = (m * m).eval();
     d = (d * d).eval();
+    d2 = (d2 * d2).eval();
   }
-  for (int j = 0; j < kPowers; ++j) p->forward[size_t(j)].backward = &p->backward[size_t(j)];
+  for (int j = 0; j < kPowers; ++j) {
+    p->forward[size_t(j)].backward = &p->backward[size_t(j)];
+    p->forward[size_t(j)].backward2 = &p->backward2[size_t(j)];
+  }
   slot = std::move(p);
   return *slot;
 }

@@ -40,9 +40,10 @@ struct LimitNode {
   std::vector<int> child_node;
   std::vector<StepMatrix> child_matrix;  // rows: the child's labels; columns: this node's labels
   // Per child that is this node again (a self-similar step, as towards an extraordinary
-  // vertex): the step's powers M^(2^j), each with its derivative form (2 (M - 1 e_0))^(2^j).
+  // vertex): the step's powers M^(2^j), each with its derivative forms (2 (M - 1 e_0))^(2^j)
+  // and, for second derivatives, (4 (M - 1 e_0))^(2^j).
   struct Powers {
-    std::vector<StepMatrix> forward, backward;
+    std::vector<StepMatrix> forward, backward, backward2;
   };
   std::vector<std::unique_ptr<Powers>> powers;
   std::vector<char> corner_tried, corner_ready;
@@ -50,8 +51,9 @@ struct LimitNode {
   // 4 x 4 control points, row by row from (-1, -1) in the face's frame.
   int bspline = 0;
   std::array<Index, 16> grid{};
-  // Quartic triangle patch (triangle_patch.h): 0 not tried, 1 yes, 2 no; the limit rows
-  // at the 15 points (i/4, j/4), i + j <= 4, of the face.
+  // Polynomial patch (triangle_patch.h: quartic over a triangle; tensor_patch.h: degree 4
+  // per direction over a quad): 0 not tried, 1 yes, 2 no; the limit rows at the lattice
+  // points (i/4, j/4) of the face.
   int quartic = 0;
   std::vector<std::vector<double>> lattice_rows;
   std::vector<CornerRows> corner;  // over labels

@@ -1,5 +1,6 @@
 #include "framework/limit/limit_surface.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <deque>
@@ -15,6 +16,7 @@
 #include "framework/limit/bspline_patch.h"
 #include "framework/limit/corner_limit.h"
 #include "framework/limit/limit_nodes.h"
+#include "framework/limit/tensor_patch.h"
 #include "framework/limit/triangle_patch.h"
 #include "framework/limit/face_domain.h"
 #include "framework/scheme/scheme.h"
@@ -207,12 +209,17 @@ struct LimitSurface::Impl {
     return *p;
   }
 
-  // Follows the point down the refinement of its neighbourhood until it is a vertex.
-  // The position from the values carried down; the derivatives as rows over the first
-  // cut's vertices (`du_row`, `dv_row`), pulled back and applied to its values.
+  // The derivatives as rows over the first cut's vertices.
+  struct DerivativeRows {
+    std::vector<double> du, dv, duu, duv, dvv;
+  };
+
+  // Follows the point down the refinement of its neighbourhood until it is a vertex or in a
+  // face with a closed form. The position from the values carried down; the derivatives
+  // (`derivatives`: their highest order) as rows over the first cut's vertices, pulled back
+  // and applied to its values (and kept in `rows_out` when given).
   LimitSample descend(Cache& c, const FacePoint& p0, const std::vector<double>& first_values, int channels,
-                      bool derivatives, std::vector<double>* du_row = nullptr,
-                      std::vector<double>* dv_row = nullptr) const {
+                      int derivatives, DerivativeRows* rows_out = nullptr) const {
     std::deque<StepMatrix> owned;
     std::vector<const StepMatrix*> path;
     int id = -1;
@@ -224,14 +231,14 @@ struct LimitSurface::Impl {
     } else {
       start_in_sub_face(*c.nodes, p0, first_values, channels, owned, path, id, values, p);
     }
-    return walk(c, id, p, std::move(values), channels, derivatives, path, first_values, du_row, dv_row, true);
+    return walk(c, id, p, std::move(values), channels, derivatives, path, first_values, rows_out, true);
   }
 
   // The descent from node `id` with the point p and the node's values; `closed_forms`:
   // regular nodes' patches may end it (off while those patches are being sampled).
-  LimitSample walk(Cache& c, int id, FacePoint p, std::vector<double> values, int channels, bool derivatives,
+  LimitSample walk(Cache& c, int id, FacePoint p, std::vector<double> values, int channels, int derivatives,
                    std::vector<const StepMatrix*>& path, const std::vector<double>& first_values,
-                   std::vector<double>* du_row, std::vector<double>* dv_row, bool closed_forms) const {
+                   DerivativeRows* rows_out, bool closed_forms) const {
     std::vector<double> next;
     std::string mask_error;
     // `iteration`: the steps taken, a run of self-similar levels counting as one.
@@ -248,16 +255,18 @@ struct LimitSurface::Impl {
       if (closed_forms && !triangles)
         if (const std::array<Index, 16>* grid = c.nodes->bspline(id)) {
           const CornerRows rows = bspline_rows(*grid, p.st, Index(values.size() / size_t(channels)));
-          return finish(rows, p, values, channels, derivatives, path, first_values, iteration, du_row, dv_row);
+          return finish(rows, p, values, channels, derivatives, path, first_values, iteration, rows_out);
         }
-      if (closed_forms && triangles)
-        if (const auto* lattice = quartic(c, id))
-          return finish(quartic_rows(*lattice, p.st), p, values, channels, derivatives, path, first_values, iteration,
-                        du_row, dv_row);
+      if (closed_forms) {
+        std::vector<int> stack;
+        if (const auto* lattice = quartic(c, id, stack))
+          return finish(triangles ? quartic_rows(*lattice, p.st) : tensor_rows(*lattice, p.st), p, values, channels,
+                        derivatives, path, first_values, iteration, rows_out);
+      }
       const int corner = corner_at(p, shape, triangles);
       if (corner >= 0)
         if (const CornerRows* rows = c.nodes->corner(id, corner, mask_error))
-          return finish(*rows, p, values, channels, derivatives, path, first_values, iteration, du_row, dv_row);
+          return finish(*rows, p, values, channels, derivatives, path, first_values, iteration, rows_out);
       const LimitNode& N = c.nodes->expanded(id);
       int which = -1;
       const auto q = locate(N.children, p, triangles, &which);
@@ -298,34 +307,56 @@ struct LimitSurface::Impl {
     }
   }
 
-  // The quartic patch of a triangle node, decided on first use: the node must lead only to
-  // itself, and the rows sampled at the 15 lattice points (exact: each lattice point is a
-  // vertex after two steps) must satisfy the node's refinement equations as a quartic —
-  // the rows at a child's lattice points, through the child's matrix, are the quartic at
-  // those points in the parent. The limit is the unique bounded solution of those
-  // equations, so the quartic is the limit.
-  const std::vector<std::vector<double>>* quartic(Cache& c, int id) const {
+  // The polynomial patch of a node (a quartic over a triangle, triangle_patch.h; degree 4 in
+  // each of s and t over a quad, tensor_patch.h), decided on first use: every child of the
+  // node must be the node itself, a B-spline node or such a patch in turn, and the rows
+  // sampled at the lattice points (exact: each is a vertex after two steps) must satisfy the
+  // node's refinement equations — the child's rows at its lattice points, through the
+  // child's matrix, are the node's patch at those points. Both sides are polynomials of the
+  // patch's degree, so agreeing at the lattice they agree everywhere; and the limit is the
+  // unique bounded solution of those equations (a zero-sum row through ever more steps of a
+  // convergent scheme tends to zero), so the patch is the limit.
+  const std::vector<std::vector<double>>* quartic(Cache& c, int id, std::vector<int>& stack) const {
     bool untried = false;
     if (const auto* rows = c.nodes->quartic(id, untried)) return rows;
     if (!untried) return nullptr;
-    c.nodes->set_quartic(id, fit_quartic(c, id));
+    if (std::find(stack.begin(), stack.end(), id) != stack.end()) return nullptr;  // a cycle: leave it to the descent
+    stack.push_back(id);
+    std::vector<std::vector<double>> rows = fit_quartic(c, id, stack);
+    stack.pop_back();
+    c.nodes->set_quartic(id, std::move(rows));
     return c.nodes->quartic(id, untried);
   }
 
-  std::vector<std::vector<double>> fit_quartic(Cache& c, int id) const {
+  // The rows of node `id`'s limit at lattice point q of its face, from the node's closed form
+  // (itself: the candidate `own`).
+  std::vector<double> lattice_rows(Cache& c, int id, int child, int q,
+                                   const std::vector<std::vector<double>>& own) const {
+    if (child == id) return own[size_t(q)];
+    bool untried = false;
+    if (const auto* rows = c.nodes->quartic(child, untried)) return (*rows)[size_t(q)];
+    const LimitNode& C = c.nodes->node(child);
+    return bspline_rows(*c.nodes->bspline(child), tensor_lattice_point(q), C.kept).position;
+  }
+
+  std::vector<std::vector<double>> fit_quartic(Cache& c, int id, std::vector<int>& stack) const {
     const LimitNode& N = c.nodes->expanded(id);
-    for (int child : N.child_node)
-      if (child != id) return {};
+    for (int child : N.child_node) {
+      if (child == id || (!triangles && c.nodes->bspline(child))) continue;
+      if (!quartic(c, child, stack)) return {};
+    }
+    const int lattice = triangles ? kQuarticLattice : kTensorLattice;
+    const auto point = [&](int q) { return triangles ? quartic_lattice_point(q) : tensor_lattice_point(q); };
     const size_t K = size_t(N.kept);
     std::vector<double> unit(K * K, 0.0);
     for (size_t k = 0; k < K; ++k) unit[k * K + k] = 1.0;
     std::vector<std::vector<double>> rows;
     try {
-      for (int q = 0; q < kQuarticLattice; ++q) {
+      for (int q = 0; q < lattice; ++q) {
         FacePoint p;
-        p.st = quartic_lattice_point(q);
+        p.st = point(q);
         std::vector<const StepMatrix*> path;
-        rows.push_back(walk(c, id, p, unit, int(K), false, path, unit, nullptr, nullptr, false).position);
+        rows.push_back(walk(c, id, p, unit, int(K), 0, path, unit, nullptr, false).position);
       }
     } catch (const NotClosed&) {
       throw;
@@ -335,15 +366,17 @@ struct LimitSurface::Impl {
     for (size_t i = 0; i < N.children.size(); ++i) {
       const auto& C = N.children[i].corners;
       const StepMatrix& m = N.child_matrix[i];
-      for (int q = 0; q < kQuarticLattice; ++q) {
-        const Uv y = quartic_lattice_point(q);
-        const Uv x{C[0][0] + y[0] * (C[1][0] - C[0][0]) + y[1] * (C[2][0] - C[0][0]),
-                   C[0][1] + y[0] * (C[1][1] - C[0][1]) + y[1] * (C[2][1] - C[0][1])};
+      // The child's (s, t) axes in the node's frame: towards its corner 1 and its last corner.
+      const Uv a{C[1][0] - C[0][0], C[1][1] - C[0][1]}, b{C.back()[0] - C[0][0], C.back()[1] - C[0][1]};
+      for (int q = 0; q < lattice; ++q) {
+        const Uv y = point(q);
+        const Uv x{C[0][0] + y[0] * a[0] + y[1] * b[0], C[0][1] + y[0] * a[1] + y[1] * b[1]};
+        const std::vector<double> child = lattice_rows(c, id, N.child_node[i], q, rows);
         std::vector<double> rhs(K, 0.0);
         for (Index r = 0; r < m.rows(); ++r)
           for (Index e = m.offsets[size_t(r)]; e < m.offsets[size_t(r) + 1]; ++e)
-            rhs[size_t(m.columns[size_t(e)])] += rows[size_t(q)][size_t(r)] * m.weights[size_t(e)];
-        const std::vector<double> lhs = quartic_rows(rows, x).position;
+            rhs[size_t(m.columns[size_t(e)])] += child[size_t(r)] * m.weights[size_t(e)];
+        const std::vector<double> lhs = triangles ? quartic_rows(rows, x).position : tensor_rows(rows, x).position;
         for (size_t l = 0; l < K; ++l)
           if (std::fabs(lhs[l] - rhs[l]) > 1e-12) return {};
       }
@@ -352,27 +385,42 @@ struct LimitSurface::Impl {
   }
 
   // The sample from rows over the current node's labels: the position from the values
-  // carried down, the derivatives pulled back to the first values.
+  // carried down, the derivatives pulled back to the first values. The point's Jacobian
+  // d(s, t)/d(u, v) is constant within a face (every step is affine), so the chain rule
+  // has no second-order term: d2/du_a du_b = sum J[i][a] J[j][b] d2/ds_i ds_j.
   static LimitSample finish(const CornerRows& rows, const FacePoint& p, const std::vector<double>& values, int channels,
-                            bool derivatives, const std::vector<const StepMatrix*>& path,
-                            const std::vector<double>& first_values, int iteration, std::vector<double>* du_row,
-                            std::vector<double>* dv_row) {
+                            int derivatives, const std::vector<const StepMatrix*>& path,
+                            const std::vector<double>& first_values, int iteration, DerivativeRows* rows_out) {
     LimitSample out;
     out.steps = iteration;
     out.position = applied(rows.position, values, channels);
-    if (derivatives && !rows.ds.empty()) {
+    const auto& J = p.jacobian;
+    if (derivatives >= 1 && !rows.ds.empty()) {
       auto row = [&](int d) {
         std::vector<double> r(rows.ds.size());
-        for (size_t i = 0; i < r.size(); ++i)
-          r[i] = p.jacobian[0][size_t(d)] * rows.ds[i] + p.jacobian[1][size_t(d)] * rows.dt[i];
+        for (size_t i = 0; i < r.size(); ++i) r[i] = J[0][size_t(d)] * rows.ds[i] + J[1][size_t(d)] * rows.dt[i];
         return pulled_back(std::move(r), path);
       };
       std::vector<double> u = row(0), v = row(1);
       out.du = applied(u, first_values, channels);
       out.dv = applied(v, first_values, channels);
       out.has_derivatives = true;
-      if (du_row) *du_row = std::move(u);
-      if (dv_row) *dv_row = std::move(v);
+      if (rows_out) rows_out->du = std::move(u), rows_out->dv = std::move(v);
+    }
+    if (derivatives >= 2 && out.has_derivatives && !rows.dss.empty()) {
+      auto row = [&](size_t a, size_t b) {
+        std::vector<double> r(rows.dss.size());
+        for (size_t i = 0; i < r.size(); ++i)
+          r[i] = J[0][a] * J[0][b] * rows.dss[i] + (J[0][a] * J[1][b] + J[1][a] * J[0][b]) * rows.dst[i] +
+                 J[1][a] * J[1][b] * rows.dtt[i];
+        return pulled_back(std::move(r), path, 2);
+      };
+      std::vector<double> uu = row(0, 0), uv = row(0, 1), vv = row(1, 1);
+      out.duu = applied(uu, first_values, channels);
+      out.duv = applied(uv, first_values, channels);
+      out.dvv = applied(vv, first_values, channels);
+      out.has_second_derivatives = true;
+      if (rows_out) rows_out->duu = std::move(uu), rows_out->duv = std::move(uv), rows_out->dvv = std::move(vv);
     }
     return out;
   }
@@ -442,6 +490,7 @@ LimitSurface::LimitSurface(LimitSurface&&) noexcept = default;
 LimitSurface& LimitSurface::operator=(LimitSurface&&) noexcept = default;
 
 const Level& LimitSurface::base() const { return impl_->base; }
+const LimitSurfaceOptions& LimitSurface::options() const { return impl_->options; }
 bool LimitSurface::triangles() const { return impl_->triangles; }
 
 std::string LimitSurface::check(Index face, double u, double v) const {
@@ -454,7 +503,9 @@ std::string LimitSurface::check(Index face, double u, double v) const {
 }
 
 LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<const double> values, int channels,
-                                   bool derivatives) const {
+                                   int derivatives) const {
+  if (derivatives < 0 || derivatives > 2)
+    throw Error(fmt::format("derivatives {}: the order must be 0, 1 or 2", derivatives));
   if (channels < 1 || values.size() < size_t(impl_->base.vertex_count) * size_t(channels))
     throw Error(fmt::format("limit evaluation needs {} values per vertex for {} vertices, got {}", channels,
                             impl_->base.vertex_count, values.size()));
@@ -469,7 +520,7 @@ LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<con
 }
 
 LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> values, int channels,
-                                      bool derivatives) const {
+                                      int derivatives) const {
   return impl_->with_cache([&](Impl::Cache& cache) {
     const std::vector<Index> reads = impl_->reads(cache, p);
     std::vector<double> first(reads.size() * size_t(channels));
@@ -480,28 +531,38 @@ LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double
   });
 }
 
-LimitStencil LimitSurface::stencil(Index face, double u, double v) const {
+LimitStencil LimitSurface::stencil(Index face, double u, double v, int derivatives) const {
+  if (derivatives < 0 || derivatives > 2)
+    throw Error(fmt::format("derivatives {}: the order must be 0, 1 or 2", derivatives));
   const FacePoint p = impl_->start(face, u, v);
   // The evaluation is linear in the values: evaluate the unit vectors of the face's
   // neighbourhood (the only vertices it reads) as channels.
   std::vector<Index> original;
-  std::vector<double> du, dv;
+  Impl::DerivativeRows rows;
   const LimitSample s = impl_->with_cache([&](Impl::Cache& cache) {
     original = impl_->reads(cache, p);
     const size_t n = original.size();
     std::vector<double> unit(n * n, 0.0);
     for (size_t k = 0; k < n; ++k) unit[k * n + k] = 1.0;
-    return impl_->descend(cache, p, unit, int(n), true, &du, &dv);
+    return impl_->descend(cache, p, unit, int(n), derivatives, &rows);
   });
   const size_t m = original.size();
   LimitStencil out;
   out.has_derivatives = s.has_derivatives;
+  out.has_second_derivatives = s.has_second_derivatives;
+  auto used = [&](size_t k) {
+    bool any = s.position[k] != 0;
+    if (s.has_derivatives) any = any || rows.du[k] != 0 || rows.dv[k] != 0;
+    if (s.has_second_derivatives) any = any || rows.duu[k] != 0 || rows.duv[k] != 0 || rows.dvv[k] != 0;
+    return any;
+  };
   for (size_t k = 0; k < m; ++k) {
-    const bool used = s.position[k] != 0 || (s.has_derivatives && (du[k] != 0 || dv[k] != 0));
-    if (!used) continue;
+    if (!used(k)) continue;
     out.vertices.push_back(original[k]);
     out.position.push_back(s.position[k]);
-    if (s.has_derivatives) out.du.push_back(du[k]), out.dv.push_back(dv[k]);
+    if (s.has_derivatives) out.du.push_back(rows.du[k]), out.dv.push_back(rows.dv[k]);
+    if (s.has_second_derivatives)
+      out.duu.push_back(rows.duu[k]), out.duv.push_back(rows.duv[k]), out.dvv.push_back(rows.dvv[k]);
   }
   return out;
 }

@@ -1,6 +1,6 @@
 #pragma once
-// The limit surface of a linear scheme at any (face, u, v): position and first derivatives,
-// exact to round-off, and the same as weights over the control points (a limit stencil).
+// The limit surface of a linear scheme at any (face, u, v): position, first and second
+// derivatives, exact to round-off, and the same as weights over the control points (a limit stencil).
 //
 // Method (docs/limit.md): the point is followed down the refinement of its own
 // neighbourhood. At every step the face's neighbourhood is cut out of the current level
@@ -50,18 +50,27 @@ struct LimitSurfaceOptions {
 
 // One evaluated point: `channels` values each for the position and its derivatives along
 // the base face's u and v. Derivatives are absent (has_derivatives false) exactly at an
-// extraordinary vertex, where the parameterisation is singular.
+// extraordinary vertex, where the parameterisation is singular. Second derivatives
+// (d2/du2, d2/dudv, d2/dv2) are present where the point lies in a face over which the
+// limit is a polynomial patch (the scheme is C2 there: a bicubic B-spline or other tensor
+// patch of degree <= 4 per direction, a quartic triangle patch) — every point of a
+// Catmull-Clark or Loop surface but an extraordinary vertex itself, a dart or a point on a
+// semi-sharp crease before its sharpness decays; at such vertices the curvature is unbounded
+// or depends on the direction (docs/limit.md), and has_second_derivatives is false.
 struct LimitSample {
   std::vector<double> position, du, dv;
+  std::vector<double> duu, duv, dvv;
   bool has_derivatives = false;
+  bool has_second_derivatives = false;
   int steps = 0;  // steps the evaluation took (a run of self-similar levels taken at once counts once)
 };
 
 // A limit stencil: position and derivatives as weights over the base mesh's vertices.
 struct LimitStencil {
   std::vector<Index> vertices;
-  std::vector<double> position, du, dv;  // one weight per entry of `vertices`
+  std::vector<double> position, du, dv, duu, duv, dvv;  // one weight per entry of `vertices`
   bool has_derivatives = false;
+  bool has_second_derivatives = false;
 };
 
 class LimitSurface {
@@ -74,26 +83,28 @@ public:
   LimitSurface& operator=(LimitSurface&&) noexcept;
 
   const Level& base() const;
+  const LimitSurfaceOptions& options() const;
   // True when the scheme's split makes triangles (faces are parameterised as triangles).
   bool triangles() const;
 
   // The limit of `values` (channels per base vertex) at (face, u, v) in Bfr's
   // parameterisation (face_domain.h). Throws subdiv::Error for a face that does not exist,
-  // a hole, or (u, v) outside the face's domain. Thread-safe. Without `derivatives` only
-  // the position is computed (about half the work).
+  // a hole, or (u, v) outside the face's domain. Thread-safe. `derivatives` is the highest
+  // order computed: 0 the position only (about half the work), 1 also du and dv, 2 also the
+  // second derivatives where they exist.
   LimitSample evaluate(Index face, double u, double v, std::span<const double> values, int channels,
-                       bool derivatives = true) const;
+                       int derivatives = 1) const;
 
   // The same point as weights over the base vertices: evaluate() of any values equals
   // these weights applied to them (to round-off).
-  LimitStencil stencil(Index face, double u, double v) const;
+  LimitStencil stencil(Index face, double u, double v, int derivatives = 1) const;
 
   // Why a (face, u, v) would be refused, or empty.
   std::string check(Index face, double u, double v) const;
 
 private:
   LimitSample evaluate_at(const FacePoint& p, std::span<const double> values, int channels,
-                          bool derivatives) const;
+                          int derivatives) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

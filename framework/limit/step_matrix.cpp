@@ -15,12 +15,14 @@ void StepMatrix::apply(std::span<const double> in, std::span<double> out, int ch
   }
 }
 
-std::vector<double> pulled_back(std::vector<double> row, std::span<const StepMatrix* const> steps) {
+std::vector<double> pulled_back(std::vector<double> row, std::span<const StepMatrix* const> steps, int order) {
   for (size_t j = steps.size(); j-- > 0;) {
-    const StepMatrix& m = steps[j]->backward ? *steps[j]->backward : *steps[j];
+    const StepMatrix* form = order == 2 ? steps[j]->backward2 : steps[j]->backward;
+    const StepMatrix& m = form ? *form : *steps[j];
+    const double scale = order == 2 ? m.scale * m.scale : m.scale;
     std::vector<double> next(size_t(m.source_count), 0.0);
     for (Index r = 0; r < m.rows(); ++r) {
-      const double x = m.scale * row[size_t(r)];
+      const double x = scale * row[size_t(r)];
       if (x == 0) continue;
       for (Index e = m.offsets[size_t(r)]; e < m.offsets[size_t(r) + 1]; ++e)
         next[size_t(m.columns[size_t(e)])] += x * m.weights[size_t(e)];

@@ -18,6 +18,7 @@ struct StepMatrix {
   // Where set, derivative rows are pulled back through this matrix instead (with its own
   // scale): a power of the step taken at once, whose derivative form differs (limit_nodes.h).
   const StepMatrix* backward = nullptr;
+  const StepMatrix* backward2 = nullptr;  // the same for second derivatives
 
   Index rows() const { return Index(offsets.size()) - 1; }
   // out (rows x channels) = this x in (source_count x channels).
@@ -27,7 +28,8 @@ struct StepMatrix {
 // A derivative row over the last step's vertices, for d/du scaled by 2^-k (k the
 // refinement steps), pulled back to the first step's sources: every step's factor keeps the
 // entries of order one, and each step removes the row's sum, which is zero for a
-// derivative: rounding in the sum would otherwise double at every step.
-std::vector<double> pulled_back(std::vector<double> row, std::span<const StepMatrix* const> steps);
+// derivative: rounding in the sum would otherwise double at every step. `order` 2: a row of
+// a second derivative (scaled by 4^-k), each step's factor squared.
+std::vector<double> pulled_back(std::vector<double> row, std::span<const StepMatrix* const> steps, int order = 1);
 
 }  // namespace subdiv

@@ -16,17 +16,17 @@ std::array<std::array<int, 2>, kQuarticLattice> lattice() {
   return out;
 }
 
-// l_m(z) = prod_{a < m} (z - a) / (m - a) and its derivative in z.
-void lagrange_factor(int m, double z, double& value, double& derivative) {
-  value = 1, derivative = 0;
+}  // namespace
+
+void lagrange_factor(int m, double z, double& value, double& derivative, double& second) {
+  value = 1, derivative = 0, second = 0;
   for (int a = 0; a < m; ++a) {
     const double f = (z - a) / (m - a), df = 1.0 / (m - a);
+    second = second * f + 2 * derivative * df;
     derivative = derivative * f + value * df;
     value *= f;
   }
 }
-
-}  // namespace
 
 Uv quartic_lattice_point(int q) {
   const auto p = lattice()[size_t(q)];
@@ -36,25 +36,31 @@ Uv quartic_lattice_point(int q) {
 CornerRows quartic_rows(const std::vector<std::vector<double>>& rows, const Uv& st) {
   const size_t labels = rows.front().size();
   CornerRows r;
-  r.position.assign(labels, 0.0);
-  r.ds.assign(labels, 0.0);
-  r.dt.assign(labels, 0.0);
+  for (auto* row : {&r.position, &r.ds, &r.dt, &r.dss, &r.dst, &r.dtt}) row->assign(labels, 0.0);
   const double z1 = kDegree * st[0], z2 = kDegree * st[1], z0 = kDegree - z1 - z2;
   const auto points = lattice();
   for (int q = 0; q < kQuarticLattice; ++q) {
     const int i = points[size_t(q)][0], j = points[size_t(q)][1], k = kDegree - i - j;
-    double a, da, b, db, c, dc;
-    lagrange_factor(i, z1, a, da);
-    lagrange_factor(j, z2, b, db);
-    lagrange_factor(k, z0, c, dc);
+    double a, da, dda, b, db, ddb, c, dc, ddc;
+    lagrange_factor(i, z1, a, da, dda);
+    lagrange_factor(j, z2, b, db, ddb);
+    lagrange_factor(k, z0, c, dc, ddc);
+    // z1 = 4 s, z2 = 4 t, z0 = 4 - z1 - z2: the chain rule in barycentric coordinates.
+    const double d = kDegree, dd = d * d;
     const double w = a * b * c;
-    const double ws = kDegree * (da * b * c - a * b * dc), wt = kDegree * (a * db * c - a * b * dc);
+    const double ws = d * (da * b * c - a * b * dc), wt = d * (a * db * c - a * b * dc);
+    const double wss = dd * (dda * b * c - 2 * da * b * dc + a * b * ddc);
+    const double wst = dd * (da * db * c - da * b * dc - a * db * dc + a * b * ddc);
+    const double wtt = dd * (a * ddb * c - 2 * a * db * dc + a * b * ddc);
     const std::vector<double>& row = rows[size_t(q)];
     for (size_t l = 0; l < labels; ++l) {
       if (row[l] == 0) continue;
       r.position[l] += w * row[l];
       r.ds[l] += ws * row[l];
       r.dt[l] += wt * row[l];
+      r.dss[l] += wss * row[l];
+      r.dst[l] += wst * row[l];
+      r.dtt[l] += wtt * row[l];
     }
   }
   return r;

@@ -15,7 +15,12 @@ constexpr int kQuarticLattice = 15;
 // The (s, t) of lattice point q, the points ordered by rows j = 0..4, i = 0..4 - j.
 Uv quartic_lattice_point(int q);
 
-// Rows of `labels` entries: position, d/ds, d/dt at (s, t) from the lattice rows.
+// Rows of `labels` entries: position, first and second derivatives at (s, t) from the
+// lattice rows.
 CornerRows quartic_rows(const std::vector<std::vector<double>>& lattice, const Uv& st);
+
+// l_m(z) = prod_{a < m} (z - a) / (m - a), the Lagrange factor of the lattice, with its first
+// and second derivatives in z.
+void lagrange_factor(int m, double z, double& value, double& derivative, double& second);
 
 }  // namespace subdiv

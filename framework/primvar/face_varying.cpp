@@ -244,6 +244,20 @@ FaceVaryingLinear face_varying_linear_from_tag(int value) {
   return FaceVaryingLinear(value);
 }
 
+FaceVaryingValueMesh face_varying_value_mesh(const Level& vertices, const FaceVaryingLevel& base, int components,
+                                             FaceVaryingLinear mode, BoundaryInterpolation boundary) {
+  if (components < 1) throw Error("face-varying data needs at least one component per value");
+  Renumbered start = renumber(vertices, base, components);
+  FaceVaryingValueMesh out;
+  out.level = value_mesh(vertices, start.level.indices, Index(start.vertex_of.size()));
+  copy_sharpness(vertices, out.level);
+  tag_base_corners(vertices, out.level, mode, boundary);
+  tag_linear(out.level, mode);
+  out.values = std::move(start.level);
+  out.vertex_of = std::move(start.vertex_of);
+  return out;
+}
+
 std::vector<FaceVaryingLevel> refine_face_varying(std::span<const SchemeRun> runs, const Hierarchy& h,
                                                   const FaceVaryingLevel& base, int components,
                                                   FaceVaryingLinear mode, const RefineOptions& options) {

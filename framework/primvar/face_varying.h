@@ -62,4 +62,18 @@ std::vector<FaceVaryingLevel> refine_face_varying(std::span<const SchemeRun> run
                                                   const FaceVaryingLevel& base, int components,
                                                   FaceVaryingLinear mode, const RefineOptions& options);
 
+// A channel's value mesh at the base level, as refine_face_varying starts from it: the
+// vertex mesh's faces (same order) over the values, renumbered so that each value belongs
+// to one vertex, with the vertex mesh's sharpness and the corners `mode` makes (and, for
+// Boundaries and All, every boundary value a corner). Its limit surface, refined with the
+// scheme and the boundary rule EdgesOnly, is the channel's limit (framework/limit evaluates
+// it at (face, u, v); for All it is bilinear in each face).
+struct FaceVaryingValueMesh {
+  Level level;
+  FaceVaryingLevel values;     // values.indices: per face corner, the level's face_vertices
+  std::vector<Index> vertex_of;  // per value: its vertex
+};
+FaceVaryingValueMesh face_varying_value_mesh(const Level& vertices, const FaceVaryingLevel& base, int components,
+                                             FaceVaryingLinear mode, BoundaryInterpolation boundary);
+
 }  // namespace subdiv

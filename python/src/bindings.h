@@ -133,5 +133,6 @@ void bind_analysis(py::module_& m);
 void bind_limits(py::module_& m);
 void bind_plugins(py::module_& m);
 void bind_parameterize(py::module_& m);
+void bind_limit_surface(py::module_& m);
 
 }  // namespace subdivkit

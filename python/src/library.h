@@ -28,6 +28,7 @@
 #include "framework/stencil/stencil_table.h"
 #include "framework/topology/level.h"
 #include "framework/util/error.h"
+#include "framework/pipeline/evaluate_request.h"
 #include "framework/pipeline/level_description.h"
 #include "framework/pipeline/memory_guard.h"
 #include "framework/pipeline/option_names.h"

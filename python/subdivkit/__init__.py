@@ -7,6 +7,7 @@
     assert abs(S @ cube.points - fine.points).max() < 1e-12
     ev = sk.Evaluator(cube, "catmull-clark", 3)           # topology once, then ev.evaluate(P) per frame
     print(sk.analyze("loop").subdominant)                  # lambda_1 per valence 3..12
+    r = sk.evaluate(cube, "catmull-clark", [0], [[0.5, 0.5]], derivatives=2)  # exact limit: r.points, r.du, r.duu
 
     mine = sk.Scheme.from_dict({...})                       # a scheme written inline (docs/scheme-format.md)
 
@@ -18,6 +19,7 @@ See docs/python.md.
 
 from ._subdivkit import Error, Scheme, __version__, load_plugin, schemes
 from .analysis import CurveAnalysis, SurfaceAnalysis, analyze
+from .limit import LimitEvaluation, LimitStencils, LimitSurface, evaluate
 from .mesh import Mesh, read_mesh, write_mesh
 from .parameterize import parameterize
 from .refinement import Evaluator, Interpolation, LimitPoints, interpolate, limit_positions, refine, stencils
@@ -58,4 +60,5 @@ __all__ = [
     "Mesh", "read_mesh", "write_mesh", "parameterize",
     "refine", "Evaluator", "stencils", "limit_positions", "interpolate", "LimitPoints", "Interpolation",
     "analyze", "SurfaceAnalysis", "CurveAnalysis",
+    "evaluate", "LimitSurface", "LimitEvaluation", "LimitStencils",
 ]

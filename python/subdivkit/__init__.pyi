@@ -5,6 +5,8 @@ from typing import Any
 from ._subdivkit import Error as Error, Scheme as Scheme, __version__ as __version__, load_plugin as load_plugin
 from ._subdivkit import schemes as schemes
 from .analysis import CurveAnalysis as CurveAnalysis, SurfaceAnalysis as SurfaceAnalysis, analyze as analyze
+from .limit import LimitEvaluation as LimitEvaluation, LimitStencils as LimitStencils
+from .limit import LimitSurface as LimitSurface, evaluate as evaluate
 from .mesh import Mesh as Mesh, read_mesh as read_mesh, write_mesh as write_mesh
 from .parameterize import parameterize as parameterize
 from .refinement import Evaluator as Evaluator, Interpolation as Interpolation, LimitPoints as LimitPoints
@@ -19,4 +21,5 @@ __all__ = [
     "Mesh", "read_mesh", "write_mesh", "parameterize",
     "refine", "Evaluator", "stencils", "limit_positions", "interpolate", "LimitPoints", "Interpolation",
     "analyze", "SurfaceAnalysis", "CurveAnalysis",
+    "evaluate", "LimitSurface", "LimitEvaluation", "LimitStencils",
 ]

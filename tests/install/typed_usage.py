@@ -59,6 +59,13 @@ def check(path: str) -> None:
     expected = (5 + c + np.cos(np.pi / n) * np.sqrt(2 * (9 + c))) / 16
     assert np.allclose(analysis.subdominant, expected, atol=1e-12), (analysis.subdominant, expected)
 
+    # The limit at a face's corner is the corner vertex's limit position.
+    surface: sk.LimitSurface = sk.LimitSurface(cube, "catmull-clark")
+    corner: sk.LimitEvaluation = surface.evaluate(np.array([0], dtype=np.int32), np.array([[0.0, 0.0]]), 2)
+    first = int(cube.face_indices[0])
+    assert np.allclose(corner.points[0], limit.points[first], atol=1e-12)
+    assert corner.duu is not None and bool(np.isnan(corner.duu).all())  # none at a valence-3 vertex
+
     try:
         sk.Scheme.load("no-such-scheme")
     except sk.Error as e:

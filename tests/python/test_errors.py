@@ -151,7 +151,7 @@ print('survived')
 
 def test_library_classes_refuse_new_without_a_factory():
     # pybind11 would make an object whose C++ value was never constructed; its methods read garbage.
-    for cls in (sk.Scheme, sk._subdivkit._Evaluator):
+    for cls in (sk.Scheme, sk._subdivkit._Evaluator, sk._subdivkit._LimitSurface):
         with pytest.raises(TypeError, match="not made with"):
             cls.__new__(cls)
         with pytest.raises(TypeError):

@@ -67,7 +67,7 @@ Mesh cube() {
   return m;
 }
 
-void run(const Mesh& m, int points) {
+void run(const Mesh& m, int points, int order) {
   using namespace OpenSubdiv;
   const int faces = int(m.sizes.size());
   std::vector<subdiv::Index> offsets{0};
@@ -91,12 +91,16 @@ void run(const Mesh& m, int points) {
   Bfr::Surface<double> surface;
   Bfr::Surface<double>::PointDescriptor d(3);
   std::vector<double> patch;
+  double duu[3], duv[3], dvv[3];
   auto bfr = [&](int f, double u, double v, double* p, double* du, double* dv) {
     factory.InitVertexSurface(f, &surface);
     patch.resize(3 * size_t(surface.GetNumPatchPoints()));
     surface.PreparePatchPoints(m.xyz.data(), d, patch.data(), d);
     const double uv[2] = {u, v};
-    surface.Evaluate(uv, patch.data(), d, p, du, dv);
+    if (order == 2)
+      surface.Evaluate(uv, patch.data(), d, p, du, dv, duu, duv, dvv);
+    else
+      surface.Evaluate(uv, patch.data(), d, p, du, dv);
   };
   double p[3], du[3], dv[3], sum = 0;
   for (int f = 0; f < faces; ++f) bfr(f, 0.3, 0.2, p, du, dv);
@@ -112,27 +116,31 @@ void run(const Mesh& m, int points) {
   }
   const auto t3 = Clock::now();
   for (const auto& q : at) {
-    const subdiv::LimitSample s = ours.evaluate(subdiv::Index(q[0]), q[1], q[2], m.xyz, 3);
-    sum += s.position[0] + s.du[0];
+    const subdiv::LimitSample s = ours.evaluate(subdiv::Index(q[0]), q[1], q[2], m.xyz, 3, order);
+    sum += s.position[0] + s.du[0] + (s.has_second_derivatives ? s.duu[0] : 0.0);
   }
   const auto t4 = Clock::now();
   for (const auto& q : at) {
     bfr(int(q[0]), q[1], q[2], p, du, dv);
-    sum += p[0] + du[0];
+    sum += p[0] + du[0] + (order == 2 ? duu[0] : 0.0);
   }
   const auto t5 = Clock::now();
   delete refiner;
   std::printf("%s, %d faces: first point per face (preparation) ours %.3g ms, Bfr %.3g ms; %d random points, "
-              "position + first derivatives: ours %.1f us/point, Bfr %.2f us/point, ratio %.2f (checksum %g)\n",
-              m.name, faces, seconds(t0, t1) * 1e3, seconds(t1, t2) * 1e3, points, seconds(t3, t4) / points * 1e6,
+              "position + %s derivatives: ours %.1f us/point, Bfr %.2f us/point, ratio %.2f (checksum %g)\n",
+              m.name, faces, seconds(t0, t1) * 1e3, seconds(t1, t2) * 1e3, points,
+              order == 2 ? "first and second" : "first", seconds(t3, t4) / points * 1e6,
               seconds(t4, t5) / points * 1e6, seconds(t3, t4) / seconds(t4, t5), sum);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  // subdiv-limit-bench [points] [order]: order 1 (default) position and first derivatives,
+  // 2 also the second derivatives.
   const int points = argc > 1 ? std::atoi(argv[1]) : 20000;
-  run(torus(32, 24), points);
-  run(torus(32, 24, true), points);
-  run(cube(), points);
+  const int order = argc > 2 && std::atoi(argv[2]) == 2 ? 2 : 1;
+  run(torus(32, 24), points, order);
+  run(torus(32, 24, true), points, order);
+  run(cube(), points, order);
 }

@@ -1,4 +1,4 @@
-// `subdiv evaluate MESH [-s SCHEME] (--at POINTS.csv | --samples N) [--derivatives 0|1] -o OUT`:
+// `subdiv evaluate MESH [-s SCHEME] (--at POINTS.csv | --samples N) [--derivatives 0|1|2] -o OUT`:
 // points of the limit surface at given (face, u, v), with OpenSubdiv Bfr's parameterisation,
 // or the limit surface sampled N x N per face as a crack-free mesh (framework/limit,
 // docs/limit.md).
@@ -14,8 +14,10 @@
 #include "framework/io/formats.h"
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
+#include "framework/limit/adaptive_refine.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/limit/tessellation.h"
+#include "framework/pipeline/evaluate_request.h"
 #include "framework/io/mesh_write.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
@@ -30,8 +32,14 @@ struct EvaluateArgs {
   std::string mesh, scheme = "catmull-clark", at, output;
   std::vector<std::string> params;
   std::string boundary = "edges-and-corners", crease_method = "uniform";
+  std::string fvar_boundary = "all";
+  bool boundary_given = false, crease_method_given = false, fvar_boundary_given = false;  // else the mesh's tags
+  std::string features;
+  double feature_angle = -1;
   int derivatives = 1;
   int samples = 0;
+  int adaptive = -1;  // --adaptive L; < 0: not given
+  bool limit = false;
   int threads = 0;
 };
 
@@ -87,21 +95,28 @@ std::vector<Query> read_points(const std::string& file, const LimitSurface& surf
   return out;
 }
 
-void write_csv(const std::filesystem::path& out, const std::vector<Query>& queries,
-               const std::vector<LimitSample>& samples, int derivatives) {
+// The positions (and derivatives), then each face-varying channel's values, per point.
+void write_csv(const std::filesystem::path& out, const std::vector<Query>& queries, const EvaluatedPoints& points,
+               int derivatives, const std::vector<std::string>& fvar_names, const std::vector<EvaluatedPoints>& fvar) {
   write_file_atomically(out, [&](const std::filesystem::path& tmp) {
     std::ofstream f(tmp);
     f << "face,u,v,x,y,z";
     if (derivatives > 0) f << ",du_x,du_y,du_z,dv_x,dv_y,dv_z";
+    if (derivatives > 1) f << ",duu_x,duu_y,duu_z,duv_x,duv_y,duv_z,dvv_x,dvv_y,dvv_z";
+    for (size_t k = 0; k < fvar.size(); ++k)
+      for (int c = 0; c < fvar[k].channels; ++c) f << ',' << fvar_names[k] << '_' << c;
     f << '\n';
+    // NaN (a derivative that does not exist) as "nan", every number in its shortest exact form.
+    auto number = [](double x) { return std::isnan(x) ? std::string("nan") : fmt::format("{}", x); };
     for (size_t i = 0; i < queries.size(); ++i) {
-      const LimitSample& s = samples[i];
-      f << fmt::format("{},{},{},{},{},{}", queries[i].face, queries[i].u, queries[i].v, s.position[0], s.position[1],
-                       s.position[2]);
-      if (derivatives > 0) {
-        for (const auto* d : {&s.du, &s.dv})
-          for (int c = 0; c < 3; ++c) f << ',' << (s.has_derivatives ? fmt::format("{}", (*d)[size_t(c)]) : "nan");
-      }
+      f << fmt::format("{},{},{}", queries[i].face, queries[i].u, queries[i].v);
+      std::vector<const std::vector<double>*> columns{&points.position};
+      if (derivatives > 0) columns.insert(columns.end(), {&points.du, &points.dv});
+      if (derivatives > 1) columns.insert(columns.end(), {&points.duu, &points.duv, &points.dvv});
+      for (const auto* d : columns)
+        for (size_t c = 0; c < 3; ++c) f << ',' << number((*d)[3 * i + c]);
+      for (const EvaluatedPoints& e : fvar)
+        for (size_t c = 0; c < size_t(e.channels); ++c) f << ',' << number(e.position[i * size_t(e.channels) + c]);
       f << '\n';
     }
     if (!f) throw Error(fmt::format("cannot write '{}'", out.string()));
@@ -125,33 +140,71 @@ MeshData tessellation_mesh(const Tessellation& t) {
   return m;
 }
 
+// The command line's options as a pipeline request (framework/pipeline/evaluate_request.h).
+EvaluateRequest evaluate_request(const EvaluateArgs& a) {
+  EvaluateRequest r;
+  r.mesh_file = a.mesh;
+  r.scheme.text = a.scheme;
+  r.scheme.parameters = parse_params(a.params);
+  if (a.boundary_given) r.shape.boundary = boundary_from_name(a.boundary, "--boundary");
+  if (a.crease_method_given) r.shape.crease_method = crease_method_from_name(a.crease_method, "--crease-method");
+  if (a.fvar_boundary_given) r.shape.face_varying = face_varying_from_name(a.fvar_boundary, "--fvar-boundary");
+  r.feature_file = a.features;
+  r.feature_angle = a.feature_angle;
+  return r;
+}
+
+// The adaptive mesh with the level and base face of every face.
+MeshData adaptive_mesh(AdaptiveMesh&& a) {
+  MeshData m;
+  m.positions = std::move(a.positions);
+  m.face_offsets = std::move(a.face_offsets);
+  m.face_vertices = std::move(a.face_vertices);
+  DataArray level{"face_level", 1, {}, true}, face{"base_face", 1, {}, true};
+  for (int l : a.face_level) level.values.push_back(double(l));
+  for (Index f : a.base_face) face.values.push_back(double(f));
+  m.cell_data = {std::move(level), std::move(face)};
+  return m;
+}
+
 void run(const EvaluateArgs& a) {
-  if (a.at.empty() == (a.samples == 0))
-    throw Error("give either --at POINTS.csv (points at given parameters) or --samples N (a mesh of the surface)");
+  const int modes = int(!a.at.empty()) + int(a.samples > 0) + int(a.adaptive >= 0);
+  if (modes != 1)
+    throw Error("give one of --at POINTS.csv (points at given parameters), --samples N (a mesh of the surface) or "
+                "--adaptive L (a mesh refined where the surface is irregular)");
+  if (a.limit && a.adaptive < 0) throw Error("--limit goes with --adaptive L");
   const std::string ext = lowercase_extension(a.output);
   if (!a.at.empty() && ext != ".csv")
-    throw Error(fmt::format("-o '{}': --at writes .csv (face,u,v,x,y,z[,du_*,dv_*])", a.output));
-  if (a.samples > 0 && ext == ".csv")
-    throw Error(fmt::format("-o '{}': --samples writes a mesh (.vtp, .obj, .ply, .off, .stl)", a.output));
-  if (a.derivatives == 2)
-    throw Error("--derivatives 2: second derivatives are not implemented yet (docs/limit.md); use 0 or 1");
-  const auto scheme = load_scheme(a.scheme, parse_params(a.params));
-  const MeshData mesh = read_mesh(a.mesh);
-  LimitSurfaceOptions options;
-  options.features = {boundary_from_name(a.boundary), crease_method_from_name(a.crease_method)};
-  const LimitSurface surface(scheme, level_from_mesh(mesh, a.mesh), options);
+    throw Error(fmt::format("-o '{}': --at writes .csv (face,u,v,x,y,z[,du_*,dv_*[,duu_*,duv_*,dvv_*]])", a.output));
+  if ((a.samples > 0 || a.adaptive >= 0) && ext == ".csv")
+    throw Error(fmt::format("-o '{}': --samples and --adaptive write a mesh (.vtp, .obj, .ply, .off, .stl)", a.output));
+  const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a));
+  for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
   const int threads = a.threads > 0 ? a.threads : int(tbb::this_task_arena::max_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
   if (a.samples > 0) {
-    write_mesh(a.output, tessellation_mesh(tessellate(surface, mesh.positions, a.samples)));
+    write_mesh(a.output, tessellation_mesh(tessellate(*prepared.surface, prepared.mesh.positions, a.samples)));
     return;
   }
-  const std::vector<Query> queries = read_points(a.at, surface);
-  std::vector<LimitSample> samples(queries.size());
-  parallel_for_all(queries.size(), [&](size_t i) {
-    samples[i] = surface.evaluate(queries[i].face, queries[i].u, queries[i].v, mesh.positions, 3, a.derivatives > 0);
-  });
-  write_csv(a.output, queries, samples, a.derivatives);
+  if (a.adaptive >= 0) {
+    AdaptiveMesh m = refine_adaptive(*prepared.scheme, prepared.surface->base(), prepared.mesh.positions, a.adaptive,
+                                     prepared.surface->options().features, a.limit);
+    fmt::print("subdiv: {} faces (uniform level {}: {})\n", m.face_offsets.size() - 1, a.adaptive, m.uniform_faces);
+    write_mesh(a.output, adaptive_mesh(std::move(m)));
+    return;
+  }
+  const std::vector<Query> queries = read_points(a.at, *prepared.surface);
+  std::vector<Index> faces;
+  std::vector<double> uv;
+  for (const Query& q : queries) faces.push_back(q.face), uv.insert(uv.end(), {q.u, q.v});
+  std::vector<std::string> fvar_names;
+  std::vector<EvaluatedPoints> fvar;
+  for (size_t k = 0; k < prepared.face_varying.size(); ++k) {
+    fvar_names.push_back(prepared.face_varying[k].name);
+    fvar.push_back(evaluate_face_varying(prepared, k, faces, uv, 0));
+  }
+  write_csv(a.output, queries, evaluate_limit_points(prepared, faces, uv, a.derivatives), a.derivatives, fvar_names,
+            fvar);
 }
 
 }  // namespace
@@ -166,21 +219,46 @@ void add_evaluate_command(CLI::App& app) {
   add_param_option(cmd, args->params);
   add_boundary_option(cmd, "--boundary", args->boundary);
   add_crease_method_option(cmd, args->crease_method);
+  cmd->add_option("--features", args->features,
+                  "Feature sidecar (JSON): creases and corners, as subdiv refine --features")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--feature-angle", args->feature_angle,
+                  "Make every edge whose faces' normals differ by more than DEG degrees an infinitely sharp crease");
+  cmd->add_option("--fvar-boundary", args->fvar_boundary,
+                  "Face-varying data (OBJ vt: UVs with seams), evaluated at the same points (columns NAME_0, "
+                  "NAME_1, ... after the others), as OpenSubdiv's linear-interpolation modes: none, corners-only, "
+                  "corners-plus1, corners-plus2, boundaries, all (bilinear, OpenSubdiv's default); the mesh's "
+                  "'t facevaryinginterpolateboundary' tag does the same unless this option is given")
+      ->check(CLI::IsMember({"none", "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"}))
+      ->capture_default_str();
   cmd->add_option("--at", args->at, "Points to evaluate: a .csv with the header face,u,v");
   cmd->add_option("--samples", args->samples,
                   "Instead of --at: the surface as a crack-free mesh, N x N quads per quad, N^2 triangles per "
                   "triangle (faces with other sizes: N/2 x N/2 per sub-face, N even), with normals")
       ->check(CLI::Range(1, 1024));
-  cmd->add_option("--derivatives", args->derivatives, "0: positions; 1: also du and dv (nan where they do not exist)")
+  cmd->add_option("--adaptive", args->adaptive,
+                  "Instead of --at: the mesh refined to level L only where it is irregular (extraordinary vertices, "
+                  "creases, sharp vertices, faces of another shape), watertight (coarse faces take the finer "
+                  "vertices along their edges), with cell arrays face_level and base_face")
+      ->check(CLI::Range(0, 12));
+  cmd->add_flag("--limit", args->limit, "With --adaptive: every vertex on the limit surface");
+  cmd->add_option("--derivatives", args->derivatives,
+                  "0: positions; 1: also du and dv; 2: also duu, duv, dvv (nan where they do not exist)")
       ->check(CLI::Range(0, 2))
       ->capture_default_str();
   cmd->add_option("-o,--output", args->output,
-                  "Output: with --at a .csv (face,u,v,x,y,z then du_x..dv_z); with --samples a mesh (.vtp, .obj, ...)")
+                  "Output: with --at a .csv (face,u,v,x,y,z then du_x..dv_z, duu_x..dvv_z); with --samples or "
+                  "--adaptive a mesh (.vtp, .obj, ...)")
       ->required();
   cmd->add_option("-j,--threads", args->threads, "Worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
   cmd->footer("Parameters: quads (0,0) (1,0) (1,1) (0,1); triangles (0,0) (1,0) (0,1); other faces of quad schemes\n"
               "Bfr's QUAD_SUBFACES tiles. Example: subdiv evaluate examples/meshes/cube.obj --at points.csv -o limit.csv");
-  cmd->callback([args] { run(*args); });
+  cmd->callback([cmd, args] {
+    args->boundary_given = cmd->count("--boundary") > 0;
+    args->crease_method_given = cmd->count("--crease-method") > 0;
+    args->fvar_boundary_given = cmd->count("--fvar-boundary") > 0;
+    run(*args);
+  });
 }
 
 }  // namespace subdiv::cli

@@ -16,13 +16,14 @@
 namespace subdiv_test {
 
 struct BfrSample {
-  std::array<double, 3> p{}, du{}, dv{};
+  std::array<double, 3> p{}, du{}, dv{}, duu{}, duv{}, dvv{};
 };
 
 class BfrLimit {
 public:
   BfrLimit(const OsdMesh& mesh, const OsdOptions& options, int approx_smooth, int approx_sharp)
-      : xyz_(mesh.xyz), osd_(osd_refine(mesh, options, 0)) {
+      : xyz_(mesh.xyz), fvar_(mesh.fvar_values), fvar_components_(mesh.fvar_components),
+        osd_(osd_refine(mesh, options, 0)) {
     OpenSubdiv::Bfr::SurfaceFactory::Options o;
     o.SetApproxLevelSmooth(approx_smooth);
     o.SetApproxLevelSharp(approx_sharp);
@@ -37,12 +38,33 @@ public:
     s.PreparePatchPoints(xyz_.data(), d, patch.data(), d);
     const double uv[2] = {u, v};
     BfrSample r;
-    s.Evaluate(uv, patch.data(), d, r.p.data(), r.du.data(), r.dv.data());
+    s.Evaluate(uv, patch.data(), d, r.p.data(), r.du.data(), r.dv.data(), r.duu.data(), r.duv.data(), r.dvv.data());
+    return r;
+  }
+
+  // The face-varying channel's limit (Bfr's face-varying surface of channel 0); components
+  // beyond the channel's are zero.
+  BfrSample evaluate_fvar(int face, double u, double v) const {
+    OpenSubdiv::Bfr::Surface<double> s;
+    if (!factory_->InitFaceVaryingSurface(face, &s, 0)) throw std::runtime_error("Bfr: no face-varying surface");
+    const int c = fvar_components_;
+    std::vector<double> patch(size_t(c) * size_t(s.GetNumPatchPoints()));
+    OpenSubdiv::Bfr::Surface<double>::PointDescriptor d(c);
+    s.PreparePatchPoints(fvar_.data(), d, patch.data(), d);
+    const double uv[2] = {u, v};
+    double p[3] = {0, 0, 0}, du[3] = {0, 0, 0}, dv[3] = {0, 0, 0}, duu[3] = {0, 0, 0}, duv[3] = {0, 0, 0},
+           dvv[3] = {0, 0, 0};
+    s.Evaluate(uv, patch.data(), d, p, du, dv, duu, duv, dvv);
+    BfrSample r;
+    for (int k = 0; k < 3; ++k)
+      r.p[size_t(k)] = p[k], r.du[size_t(k)] = du[k], r.dv[size_t(k)] = dv[k], r.duu[size_t(k)] = duu[k],
+      r.duv[size_t(k)] = duv[k], r.dvv[size_t(k)] = dvv[k];
     return r;
   }
 
 private:
-  std::vector<double> xyz_;
+  std::vector<double> xyz_, fvar_;
+  int fvar_components_ = 0;
   OsdRefinement osd_;
   std::unique_ptr<OpenSubdiv::Bfr::RefinerSurfaceFactory<>> factory_;
 };

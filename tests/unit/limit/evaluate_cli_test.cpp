@@ -2,6 +2,7 @@
 // row number, and no output file is left behind on an error.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -55,6 +56,58 @@ TEST_CASE("subdiv evaluate writes the limit points and derivatives of the librar
       CHECK(row[size_t(9 + c)] == p.dv[size_t(c)]);
     }
   }
+}
+
+TEST_CASE("subdiv evaluate --derivatives 2 adds the second derivatives, nan at an extraordinary vertex") {
+  const fs::path dir = test::fresh_dir("evaluate-cli-second");
+  const std::string mesh = test::source_path("examples/meshes/cube.obj");
+  write(dir / "points.csv", "face,u,v\n0,0.3,0.2\n2,0.01,0.004\n0,0,0\n");
+  const auto r = test::run_subdiv("evaluate " + mesh + " --at " + (dir / "points.csv").string() +
+                                  " --derivatives 2 -o " + (dir / "out.csv").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  std::string header;
+  const auto rows = read_csv(dir / "out.csv", header);
+  CHECK(header == "face,u,v,x,y,z,du_x,du_y,du_z,dv_x,dv_y,dv_z,duu_x,duu_y,duu_z,duv_x,duv_y,duv_z,dvv_x,dvv_y,dvv_z");
+  REQUIRE(rows.size() == 3);
+  const MeshData m = read_mesh(mesh);
+  const LimitSurface s(load_scheme("catmull-clark"), level_from_mesh(m, mesh));
+  for (const auto& row : rows) {
+    REQUIRE(row.size() == 21);
+    const LimitSample p = s.evaluate(Index(row[0]), row[1], row[2], m.positions, 3, 2);
+    for (int c = 0; c < 3; ++c) {
+      if (!p.has_second_derivatives) {
+        CHECK(std::isnan(row[size_t(12 + c)]));
+        continue;
+      }
+      CHECK(row[size_t(12 + c)] == p.duu[size_t(c)]);
+      CHECK(row[size_t(15 + c)] == p.duv[size_t(c)]);
+      CHECK(row[size_t(18 + c)] == p.dvv[size_t(c)]);
+    }
+  }
+  CHECK(std::isnan(rows[2][12]));  // (0, 0) of face 0 is a valence-3 vertex
+  CHECK(!std::isnan(rows[1][12]));
+}
+
+TEST_CASE("subdiv evaluate --adaptive writes a closed mesh with fewer faces than uniform refinement") {
+  const fs::path dir = test::fresh_dir("evaluate-cli-adaptive");
+  const std::string mesh = test::source_path("examples/meshes/cube.obj");
+  const auto r = test::run_subdiv("evaluate " + mesh + " --adaptive 4 --limit -o " + (dir / "adaptive.vtp").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  const MeshData m = read_mesh((dir / "adaptive.vtp").string());
+  const Level L = level_from_mesh(m, "adaptive.vtp");
+  int open = 0;
+  for (Index e = 0; e < L.edge_count(); ++e) open += L.edge_face_count(e) != 2;
+  CHECK(open == 0);
+  CHECK(L.face_count() < 6 * 256);
+  const auto named = [&](const char* name) {
+    for (const DataArray& a : m.cell_data)
+      if (a.name == name) return true;
+    return false;
+  };
+  CHECK(named("face_level"));
+  const auto bad = test::run_subdiv("evaluate " + mesh + " --adaptive 2 --samples 2 -o " + (dir / "x.obj").string());
+  CHECK(bad.exit_code != 0);
+  CHECK_FALSE(fs::exists(dir / "x.obj"));
 }
 
 TEST_CASE("subdiv evaluate refuses bad rows with their number and leaves no output") {

@@ -1,0 +1,51 @@
+#include "framework/limit/tensor_patch.h"
+
+#include <array>
+
+#include "framework/limit/triangle_patch.h"
+
+namespace subdiv {
+namespace {
+
+constexpr int kDegree = 4;
+
+// The Lagrange basis of the nodes 0, 1/4, ..., 1 at s, with first and second derivatives in
+// s: L_i(z) = l_i(z) l_{4-i}(4 - z) with z = 4 s (the one-dimensional case of the
+// triangle's barycentric product).
+void basis(double s, std::array<double, 5>& value, std::array<double, 5>& first, std::array<double, 5>& second) {
+  const double z = kDegree * s;
+  for (int i = 0; i <= kDegree; ++i) {
+    double a, da, dda, b, db, ddb;
+    lagrange_factor(i, z, a, da, dda);
+    lagrange_factor(kDegree - i, kDegree - z, b, db, ddb);
+    value[size_t(i)] = a * b;
+    first[size_t(i)] = kDegree * (da * b - a * db);
+    second[size_t(i)] = kDegree * kDegree * (dda * b - 2 * da * db + a * ddb);
+  }
+}
+
+}  // namespace
+
+Uv tensor_lattice_point(int q) { return {double(q % (kDegree + 1)) / kDegree, double(q / (kDegree + 1)) / kDegree}; }
+
+CornerRows tensor_rows(const std::vector<std::vector<double>>& rows, const Uv& st) {
+  const size_t labels = rows.front().size();
+  CornerRows r;
+  for (auto* row : {&r.position, &r.ds, &r.dt, &r.dss, &r.dst, &r.dtt}) row->assign(labels, 0.0);
+  std::array<double, 5> bs, ds, dss, bt, dt, dtt;
+  basis(st[0], bs, ds, dss);
+  basis(st[1], bt, dt, dtt);
+  for (int q = 0; q < kTensorLattice; ++q) {
+    const size_t i = size_t(q % (kDegree + 1)), j = size_t(q / (kDegree + 1));
+    const double w[6] = {bs[i] * bt[j], ds[i] * bt[j], bs[i] * dt[j], dss[i] * bt[j], ds[i] * dt[j], bs[i] * dtt[j]};
+    std::vector<double>* out[6] = {&r.position, &r.ds, &r.dt, &r.dss, &r.dst, &r.dtt};
+    const std::vector<double>& row = rows[size_t(q)];
+    for (size_t l = 0; l < labels; ++l) {
+      if (row[l] == 0) continue;
+      for (int k = 0; k < 6; ++k) (*out[k])[l] += w[k] * row[l];
+    }
+  }
+  return r;
+}
+
+}  // namespace subdiv

@@ -1,0 +1,209 @@
+"""The exact limit surface at any (face, u, v): subdivkit.evaluate and subdivkit.LimitSurface.
+
+The same evaluation as ``subdiv evaluate`` (docs/limit.md), through the library's pipeline:
+positions with first and second derivatives, exact to round-off (no approximation near
+extraordinary vertices), in OpenSubdiv Bfr's parameterisation, and the same points as limit
+stencils (weights over the control points) for cheap re-evaluation.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _subdivkit
+from ._subdivkit import Error, Scheme
+from .mesh import Mesh, _face_varying_triples
+from .refinement import _scipy_sparse
+
+
+def _check_mesh(mesh, what):
+    if not isinstance(mesh, Mesh):
+        raise Error(f"{what}: expected a subdivkit.Mesh (read_mesh or Mesh(points, faces)), got {type(mesh).__name__}")
+
+
+def _check_order(derivatives):
+    if isinstance(derivatives, bool) or not isinstance(derivatives, (int, np.integer)) or not 0 <= derivatives <= 2:
+        raise Error(f"derivatives={derivatives!r}: give 0 (positions), 1 (also du, dv) or 2 (also duu, duv, dvv)")
+    return int(derivatives)
+
+
+def _points(faces, uv):
+    """(n,) int32 faces and (n, 2) float64 parameters; a single point may be given as a
+    scalar face and a pair."""
+    f = np.asarray(faces)
+    if f.size and f.dtype.kind not in "iu":
+        raise Error(f"faces: give an int array of face numbers, got dtype {f.dtype}")
+    f = np.ascontiguousarray(np.atleast_1d(f), dtype=np.int32)
+    p = np.ascontiguousarray(np.asarray(uv, dtype=np.float64))
+    if p.ndim == 1 and p.shape == (2,) and f.shape == (1,):
+        p = p.reshape(1, 2)
+    if f.ndim != 1 or p.ndim != 2 or p.shape[1] != 2 or p.shape[0] != f.shape[0]:
+        raise Error(f"faces {tuple(f.shape)} and uv {tuple(p.shape)}: give n faces and an (n, 2) array of (u, v)")
+    return f, p
+
+
+@dataclass
+class LimitEvaluation:
+    """Points of the limit surface (evaluate's result), one row per (face, u, v).
+
+    ``points`` (n, k): the limit of the control points' columns (positions: k = 3);
+    ``du``, ``dv`` (n, k): derivatives along the face's u and v (with ``derivatives`` >= 1);
+    ``duu``, ``duv``, ``dvv`` (n, k): second derivatives (with ``derivatives`` = 2). NaN where
+    a derivative does not exist: first and second at an extraordinary vertex itself (the
+    parameterisation is singular there), second derivatives where the scheme is not C2
+    (everywhere for the butterflies). Unrequested orders are None.
+    """
+    points: np.ndarray
+    du: np.ndarray | None = None
+    dv: np.ndarray | None = None
+    duu: np.ndarray | None = None
+    duv: np.ndarray | None = None
+    dvv: np.ndarray | None = None
+
+
+@dataclass
+class LimitStencils:
+    """Limit stencils (LimitSurface.stencils' result): scipy.sparse CSR matrices with one row
+    per (face, u, v) and one column per vertex of the mesh, so that ``points @ P`` (and
+    ``du @ P``, ...) is the limit for control points P. A row is empty where the derivative
+    does not exist (``has_first``, ``has_second`` say where it does)."""
+    points: object
+    du: object = None
+    dv: object = None
+    duu: object = None
+    duv: object = None
+    dvv: object = None
+    has_first: np.ndarray | None = None
+    has_second: np.ndarray | None = None
+
+
+class LimitSurface:
+    """A mesh's limit surface prepared once, to evaluate at any number of (face, u, v).
+
+    ``LimitSurface(mesh, scheme)`` loads the scheme and the mesh as refine() does (its
+    creases, corners and option tags, ``boundary``, ``crease_method``) and checks that the
+    scheme can be evaluated: a stationary linear scheme with the binary quad or triangle
+    split (Catmull-Clark, Loop, the butterflies, bilinear, composite split + averaging
+    schemes, JSON schemes of that kind). Others raise subdivkit.Error saying why (√3, dual
+    and mid-edge splits, non-linear and level-dependent rules, sequences, non-manifold
+    meshes). The mesh's face-varying arrays (UVs) are evaluated with
+    ``evaluate_face_varying``, in the linear-interpolation mode ``fvar_boundary`` ("none",
+    "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"), as refine().
+
+    The parameters are OpenSubdiv Bfr's: a quad's corners at (0,0), (1,0), (1,1), (0,1); a
+    triangle's at (0,0), (1,0), (0,1); another face of a quad scheme is n sub-quads
+    (Bfr's QUAD_SUBFACES, docs/limit.md).
+
+    What is learnt about the mesh is kept between calls, so later calls are faster; calls
+    release the GIL and may run from several Python threads at once.
+
+    Examples
+    --------
+    >>> S = sk.LimitSurface(cube, "catmull-clark")
+    >>> r = S.evaluate([0, 3], [[0.5, 0.5], [0.1, 0.2]], derivatives=2)
+    >>> r.points.shape, r.duu.shape                 # (2, 3) (2, 3)
+    >>> W = S.stencils([0, 3], [[0.5, 0.5], [0.1, 0.2]])
+    >>> W.points @ cube.points                      # the same points, from weights
+    """
+
+    def __init__(self, mesh, scheme="catmull-clark", *, params=None, boundary="edges-and-corners",
+                 crease_method="uniform", feature_angle=-1.0, fvar_boundary="all"):
+        _check_mesh(mesh, "LimitSurface")
+        self._prepared = _subdivkit._prepare_limit_surface(mesh, scheme, params, str(boundary), str(crease_method),
+                                                           float(feature_angle), _face_varying_triples(mesh),
+                                                           str(fvar_boundary))
+        self.name = mesh.name
+        self.scheme = scheme.name if isinstance(scheme, Scheme) else str(scheme)
+
+    @property
+    def triangles(self):
+        """True when the scheme's split makes triangles (faces are parameterised as triangles)."""
+        return self._prepared.triangles
+
+    @property
+    def n_points(self):
+        """The number of control points (rows ``evaluate(points=...)`` takes)."""
+        return self._prepared.vertex_count
+
+    @property
+    def n_faces(self):
+        return self._prepared.face_count
+
+    @property
+    def face_varying(self):
+        """The names of the mesh's face-varying arrays (``mesh.face_varying``) that
+        evaluate_face_varying evaluates (normals are not)."""
+        return list(self._prepared.face_varying)
+
+    def evaluate(self, faces, uv, derivatives=1, *, points=None, threads=0):
+        """The limit at (faces[i], uv[i]): a LimitEvaluation.
+
+        faces : (n,) int array; uv : (n, 2) float array of (u, v) in each face's domain.
+        derivatives : 0 positions only, 1 also du and dv, 2 also duu, duv, dvv.
+        points : (n_points, k) control values to evaluate instead of the mesh's points (new
+            positions of an animation, colours, ...); the evaluation is linear in them.
+        threads : worker threads, 0 for all cores.
+
+        Raises subdivkit.Error naming the first bad point ("point i (face f, u, v): why") —
+        a face that does not exist, a hole, (u, v) outside the face's domain — before
+        anything is evaluated.
+        """
+        order = _check_order(derivatives)
+        f, p = _points(faces, uv)
+        values, channels = None, 3
+        if points is not None:
+            values = np.ascontiguousarray(np.asarray(points, dtype=np.float64))
+            if values.ndim == 1:
+                values = values.reshape(-1, 1)
+            if values.ndim != 2 or values.shape[0] != self.n_points:
+                raise Error(f"points {tuple(values.shape)}: give one row per control point ({self.n_points} rows)")
+            channels = values.shape[1]
+        r = self._prepared.evaluate(f, p, order, values, channels, int(threads))
+        return LimitEvaluation(points=r["points"], du=r.get("du"), dv=r.get("dv"), duu=r.get("duu"),
+                               duv=r.get("duv"), dvv=r.get("dvv"))
+
+    def evaluate_face_varying(self, name, faces, uv, derivatives=1, *, threads=0):
+        """Face-varying array ``name`` (UVs with seams) at the same (faces[i], uv[i]): a
+        LimitEvaluation with (n, k) arrays, k the array's columns.
+
+        The array's limit is OpenSubdiv's face-varying surface (Bfr's InitFaceVaryingSurface)
+        in the mode ``fvar_boundary`` chose: "all" (the default, as OpenSubdiv's) bilinear in
+        each face; "none" ... "boundaries" the scheme's limit of the values, seams and the
+        mode's corners kept sharp (docs/primvars.md). Arguments as evaluate().
+        """
+        order = _check_order(derivatives)
+        f, p = _points(faces, uv)
+        r = self._prepared.evaluate_face_varying(str(name), f, p, order, int(threads))
+        return LimitEvaluation(points=r["points"], du=r.get("du"), dv=r.get("dv"), duu=r.get("duu"),
+                               duv=r.get("duv"), dvv=r.get("dvv"))
+
+    def stencils(self, faces, uv, derivatives=1, *, threads=0):
+        """The same points as weights over the control points: a LimitStencils of
+        scipy.sparse CSR matrices (needs SciPy), ``W.points @ P == evaluate(..., points=P).points``
+        to round-off for any P. Arguments as evaluate()."""
+        order = _check_order(derivatives)
+        f, p = _points(faces, uv)
+        r = self._prepared.stencils(f, p, order, int(threads))
+        sparse = _scipy_sparse()
+
+        def matrix(name):
+            t = r.get(name)
+            return None if t is None else sparse.csr_matrix((t["data"], t["indices"], t["indptr"]), shape=t["shape"])
+
+        return LimitStencils(points=matrix("points"), du=matrix("du"), dv=matrix("dv"), duu=matrix("duu"),
+                             duv=matrix("duv"), dvv=matrix("dvv"), has_first=r["has_first"].astype(bool),
+                             has_second=r["has_second"].astype(bool))
+
+
+def evaluate(mesh, scheme="catmull-clark", faces=(), uv=(), derivatives=1, *, params=None,
+             boundary="edges-and-corners", crease_method="uniform", threads=0):
+    """Points of the exact limit surface at (faces[i], uv[i]): a LimitEvaluation.
+
+    ``evaluate(mesh, scheme, faces, uv, derivatives=1)`` is
+    ``LimitSurface(mesh, scheme, ...).evaluate(faces, uv, derivatives)``; use a LimitSurface
+    to evaluate the same mesh more than once. The result's ``points`` (n, 3), ``du``, ``dv``
+    and with ``derivatives=2`` ``duu``, ``duv``, ``dvv`` are NaN where the derivative does not
+    exist. The same numbers as ``subdiv evaluate --at``.
+    """
+    return LimitSurface(mesh, scheme, params=params, boundary=boundary,
+                        crease_method=crease_method).evaluate(faces, uv, derivatives, threads=threads)

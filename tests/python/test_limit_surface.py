@@ -1,0 +1,155 @@
+"""subdivkit.evaluate and subdivkit.LimitSurface: the exact limit surface at (face, u, v).
+
+Properties, not our numbers pasted back: the command line gives the same numbers (both
+translate one pipeline request); stencils applied to the control points are the evaluated
+points; affine invariance; second derivatives are central differences of the first; the
+limit at a base vertex is the vertex's limit position (subdivkit.limit_positions); bad
+points, schemes and sequences are refused with their reasons."""
+import numpy as np
+import pytest
+
+import subdivkit as sk
+from conftest import MESHES, run_cli
+
+
+def cube():
+    return sk.read_mesh(str(MESHES / "cube.obj"))
+
+
+def random_points(n_faces, n, seed=3, triangles=False):
+    rng = np.random.default_rng(seed)
+    faces = rng.integers(0, n_faces, n).astype(np.int32)
+    uv = rng.uniform(0.0, 1.0, (n, 2))
+    if triangles:
+        over = uv.sum(axis=1) > 1
+        uv[over] = 1 - uv[over]
+    return faces, uv
+
+
+def test_the_command_line_gives_the_same_numbers(tmp_path):
+    faces, uv = random_points(6, 12)
+    points = tmp_path / "points.csv"
+    points.write_text("face,u,v\n" + "".join(f"{f},{u!r},{v!r}\n" for f, (u, v) in zip(faces, uv)))
+    out = tmp_path / "out.csv"
+    run_cli("evaluate", MESHES / "cube.obj", "--at", points, "--derivatives", "2", "-o", out)
+    written = np.loadtxt(out, delimiter=",", skiprows=1)
+    r = sk.evaluate(cube(), "catmull-clark", faces, uv, derivatives=2)
+    ours = np.hstack([r.points, r.du, r.dv, r.duu, r.duv, r.dvv])
+    assert np.array_equal(written[:, 3:], ours)  # the CLI writes the shortest exact form
+
+
+def test_stencils_applied_to_the_points_are_the_evaluated_points():
+    mesh = cube()
+    S = sk.LimitSurface(mesh, "catmull-clark")
+    faces, uv = random_points(6, 20, seed=5)
+    r = S.evaluate(faces, uv, derivatives=2)
+    W = S.stencils(faces, uv, derivatives=2)
+    assert W.points.shape == (20, mesh.n_points)
+    for name in ("points", "du", "dv", "duu", "duv", "dvv"):
+        assert np.abs(getattr(W, name) @ mesh.points - getattr(r, name)).max() < 1e-12
+    assert np.allclose(np.asarray(W.points.sum(axis=1)).ravel(), 1.0, atol=1e-13)  # affine weights
+
+
+def test_other_values_and_affine_invariance():
+    mesh = cube()
+    S = sk.LimitSurface(mesh, "catmull-clark")
+    faces, uv = random_points(6, 10, seed=7)
+    base = S.evaluate(faces, uv, derivatives=2)
+    A = np.array([[1.0, 0.3, 0.0], [0.0, 2.0, 0.1], [0.2, 0.0, 0.5]])
+    t = np.array([3.0, -1.0, 2.0])
+    moved = S.evaluate(faces, uv, derivatives=2, points=mesh.points @ A.T + t)
+    assert np.abs(moved.points - (base.points @ A.T + t)).max() < 1e-12
+    assert np.abs(moved.du - base.du @ A.T).max() < 1e-12
+    assert np.abs(moved.duu - base.duu @ A.T).max() < 1e-12
+    one = S.evaluate(faces, uv, derivatives=0, points=mesh.points[:, 2])  # any number of columns
+    assert one.points.shape == (10, 1) and one.du is None
+    assert np.abs(one.points[:, 0] - base.points[:, 2]).max() < 1e-15
+
+
+def test_second_derivatives_are_differences_of_the_first_and_nan_at_an_extraordinary_vertex():
+    S = sk.LimitSurface(cube(), "catmull-clark")
+    u, v, h = 0.02, 0.03, 1e-6
+    r = S.evaluate([0], [[u, v]], derivatives=2)
+    d = S.evaluate([0, 0, 0, 0], [[u + h, v], [u - h, v], [u, v + h], [u, v - h]], derivatives=1)
+    assert np.abs((d.du[0] - d.du[1]) / (2 * h) - r.duu[0]).max() < 1e-6
+    assert np.abs((d.dv[2] - d.dv[3]) / (2 * h) - r.dvv[0]).max() < 1e-6
+    assert np.abs((d.du[2] - d.du[3]) / (2 * h) - r.duv[0]).max() < 1e-6
+    at = S.evaluate([0], [[0.0, 0.0]], derivatives=2)  # a valence-3 vertex
+    assert np.isfinite(at.points).all() and np.isnan(at.du).all() and np.isnan(at.duu).all()
+
+
+def test_at_a_vertex_the_limit_is_the_vertex_limit_position():
+    mesh = sk.read_mesh(str(MESHES / "octahedron.obj"))
+    S = sk.LimitSurface(mesh, "loop")
+    assert S.triangles
+    limit = sk.limit_positions(mesh, "loop").points
+    faces = mesh.face_indices.reshape(-1, 3)
+    corners = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]
+    for f in range(mesh.n_faces):
+        r = S.evaluate([f] * 3, corners, derivatives=0)
+        assert np.abs(r.points - limit[faces[f]]).max() < 1e-12
+
+
+def test_unused_vertices_keep_the_numbering():
+    mesh = cube()
+    points = np.vstack([mesh.points[:3], [[9.0, 9.0, 9.0]], mesh.points[3:]])  # vertex 3 unused
+    faces = np.where(mesh.face_indices >= 3, mesh.face_indices + 1, mesh.face_indices)
+    padded = sk.Mesh(points, faces.reshape(-1, 4))
+    S = sk.LimitSurface(padded, "catmull-clark")
+    assert S.n_points == 9
+    W = S.stencils([2], [[0.3, 0.6]])
+    assert W.points.shape == (1, 9) and W.points[0, 3] == 0
+    expected = sk.evaluate(mesh, "catmull-clark", [2], [[0.3, 0.6]]).points
+    assert np.abs(W.points @ points - expected).max() < 1e-13
+    assert np.abs(S.evaluate([2], [[0.3, 0.6]], points=points).points - expected).max() < 1e-13
+
+
+def test_bad_points_schemes_and_arguments_are_refused():
+    S = sk.LimitSurface(cube(), "catmull-clark")
+    with pytest.raises(sk.Error, match=r"point 1 \(face 6, u 0.5, v 0.5\): face 6 does not exist"):
+        S.evaluate([0, 6], [[0.5, 0.5], [0.5, 0.5]])
+    with pytest.raises(sk.Error, match=r"point 0 .*outside"):
+        S.evaluate([0], [[1.5, 0.5]])
+    with pytest.raises(sk.Error, match="derivatives=3"):
+        S.evaluate([0], [[0.5, 0.5]], derivatives=3)
+    with pytest.raises(sk.Error, match="int array"):
+        S.evaluate([0.5], [[0.5, 0.5]])
+    with pytest.raises(sk.Error, match=r"\(n, 2\)"):
+        S.evaluate([0, 1], [[0.5, 0.5]])
+    with pytest.raises(sk.Error, match="one row per control point"):
+        S.evaluate([0], [[0.5, 0.5]], points=np.zeros((3, 3)))
+    octahedron = sk.read_mesh(str(MESHES / "octahedron.obj"))
+    with pytest.raises(sk.Error, match="sqrt3.*do not nest inside one parent face"):
+        sk.LimitSurface(octahedron, "sqrt3")
+    with pytest.raises(sk.Error, match="sequence"):
+        sk.LimitSurface(cube(), "bilinear:1,catmull-clark")
+    with pytest.raises(sk.Error, match="expected a subdivkit.Mesh"):
+        sk.evaluate("cube.obj", "catmull-clark", [0], [[0.5, 0.5]])
+
+
+def test_face_varying_uvs_at_the_same_points_in_each_mode(tmp_path):
+    tube = sk.read_mesh(str(MESHES / "textured-tube.obj"))
+    faces = np.array([0, 5, 11, 23], dtype=np.int32)
+    uv = np.array([[0.3, 0.4], [0.5, 0.5], [0.0, 1.0], [1.0, 0.25]])
+    linear = sk.LimitSurface(tube, "catmull-clark")
+    assert linear.face_varying == ["uv"]
+    r = linear.evaluate_face_varying("uv", faces, uv, derivatives=1)
+    # The mode "all" is bilinear in each face: the corners' values interpolated.
+    values, index = tube.face_varying["uv"]
+    for i, (f, (u, v)) in enumerate(zip(faces, uv)):
+        c = values[index[tube.face_offsets[f]:tube.face_offsets[f + 1]]]
+        expected = (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] + (1 - u) * v * c[3]
+        assert np.abs(r.points[i] - expected).max() < 1e-14
+        assert np.abs(r.du[i] - ((1 - v) * (c[1] - c[0]) + v * (c[2] - c[3]))).max() < 1e-14
+    smooth = sk.LimitSurface(tube, "catmull-clark", fvar_boundary="none").evaluate_face_varying("uv", faces, uv)
+    assert smooth.points.shape == (4, 2)
+    # The command line writes the same values as columns uv_0, uv_1.
+    points = tmp_path / "points.csv"
+    points.write_text("face,u,v\n" + "".join(f"{f},{u!r},{v!r}\n" for f, (u, v) in zip(faces, uv)))
+    out = tmp_path / "out.csv"
+    run_cli("evaluate", MESHES / "textured-tube.obj", "--at", points, "--fvar-boundary", "none", "-o", out)
+    assert out.read_text().splitlines()[0].endswith(",uv_0,uv_1")
+    written = np.loadtxt(out, delimiter=",", skiprows=1)
+    assert np.array_equal(written[:, -2:], smooth.points)
+    with pytest.raises(sk.Error, match="face-varying array 'st': the mesh has 'uv'"):
+        linear.evaluate_face_varying("st", faces, uv)

@@ -1,0 +1,106 @@
+// Feature-adaptive refinement: watertight (every edge of a closed mesh in exactly two faces,
+// Euler characteristic kept), fewer faces than uniform refinement, refinement only around
+// what is irregular, and with `limit` the vertices on the limit surface.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "framework/limit/adaptive_refine.h"
+#include "framework/limit/limit_surface.h"
+#include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_registry.h"
+#include "support/test_meshes.h"
+#include "unit/limit/limit_meshes.h"
+
+using namespace subdiv;
+
+namespace {
+
+Level level_of(const AdaptiveMesh& m) {
+  return build_level(Index(m.positions.size() / 3), m.face_offsets, m.face_vertices);
+}
+
+void check_closed_and_watertight(const AdaptiveMesh& m, int euler) {
+  const Level L = level_of(m);
+  int wrong = 0;
+  for (Index e = 0; e < L.edge_count(); ++e) wrong += L.edge_face_count(e) != 2;
+  CHECK(wrong == 0);  // no boundary edge, no T-junction (a T leaves an edge with one face)
+  CHECK(L.manifold());
+  CHECK(L.vertex_count - L.edge_count() + L.face_count() == euler);
+}
+
+}  // namespace
+
+TEST_CASE("Adaptive Catmull-Clark on a cube: closed, watertight, refined only at the corners, fewer faces") {
+  const test::Mesh cube = test::cube();
+  const auto scheme = load_scheme("catmull-clark");
+  for (int levels : {1, 3, 5}) {
+    CAPTURE(levels);
+    const AdaptiveMesh m = refine_adaptive(*scheme, cube.level(), cube.positions, levels, {}, false);
+    check_closed_and_watertight(m, 2);
+    CHECK(m.uniform_faces == 6 * (1 << (2 * levels)));
+    const Index faces = Index(m.face_offsets.size()) - 1;
+    // Every face touches a valence-3 corner at level 0; from level 1 on, only the 3 faces
+    // around each of the 8 corners are refined further, and each refined face leaves 3 of
+    // its 4 children coarse: 8 * 3 * 4 faces at the last level, 8 * 3 * 3 at each other.
+    CHECK(faces == (levels == 1 ? 24 : 96 + 72 * (levels - 2)));
+    CHECK(faces <= m.uniform_faces);
+    if (levels > 1) CHECK(faces < m.uniform_faces);
+    MESSAGE("cube, level ", levels, ": ", faces, " faces against ", m.uniform_faces, " uniform");
+  }
+}
+
+TEST_CASE("Adaptive refinement of a regular torus refines nothing; Loop on an octahedron is watertight") {
+  const test::Mesh torus = test::torus(8, 6);
+  const AdaptiveMesh t = refine_adaptive(*load_scheme("catmull-clark"), torus.level(), torus.positions, 3, {}, false);
+  CHECK(Index(t.face_offsets.size()) - 1 == 48);
+  check_closed_and_watertight(t, 0);
+  const test::Mesh octa = limit_test::octahedron();
+  const AdaptiveMesh o = refine_adaptive(*load_scheme("loop"), octa.level(), octa.positions, 4, {}, false);
+  check_closed_and_watertight(o, 2);
+  CHECK(Index(o.face_offsets.size()) - 1 < o.uniform_faces);
+}
+
+TEST_CASE("Adaptive refinement with limit positions: the base vertices are the limit surface's corners") {
+  const test::Mesh cube = test::cube();
+  const auto scheme = load_scheme("catmull-clark");
+  const AdaptiveMesh m = refine_adaptive(*scheme, cube.level(), cube.positions, 3, {}, true);
+  check_closed_and_watertight(m, 2);
+  const LimitSurface surface(scheme, cube.level());
+  // Every corner of every base face, evaluated on the limit surface, is a vertex of the mesh.
+  const Level base = cube.level();
+  const double corner_uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (Index f = 0; f < base.face_count(); ++f)
+    for (int k = 0; k < 4; ++k) {
+      const LimitSample s = surface.evaluate(f, corner_uv[k][0], corner_uv[k][1], cube.positions, 3, 0);
+      double nearest = 1e300;
+      for (size_t v = 0; v < m.positions.size() / 3; ++v) {
+        double d = 0;
+        for (size_t c = 0; c < 3; ++c) d += std::pow(m.positions[3 * v + c] - s.position[c], 2);
+        nearest = std::min(nearest, std::sqrt(d));
+      }
+      CHECK(nearest < 1e-12);
+    }
+}
+
+TEST_CASE("Adaptive refinement of an open grid with a crease: faces along the crease refined, boundary kept") {
+  test::Mesh grid = test::grid(6, 5);
+  Level base = grid.level();
+  base.edge_sharpness.assign(size_t(base.edge_count()), 0.f);
+  base.edge_sharpness[size_t(find_edge(base, 8, 9))] = 10.f;
+  base.edge_sharpness[size_t(find_edge(base, 9, 10))] = 10.f;
+  const AdaptiveMesh m = refine_adaptive(*load_scheme("catmull-clark"), base, grid.positions, 3, {}, false);
+  const Level L = level_of(m);
+  int bad = 0, boundary = 0;
+  for (Index e = 0; e < L.edge_count(); ++e) {
+    bad += L.edge_face_count(e) < 1 || L.edge_face_count(e) > 2;
+    boundary += L.edge_face_count(e) == 1;
+  }
+  CHECK(bad == 0);
+  // The grid's outer boundary (22 edges) is split only where the faces along it touch the
+  // crease's end vertices or its boundary corners: no interior T-junction adds boundary edges,
+  // so the mesh keeps one boundary loop: V - E + F = 1 (a disc).
+  CHECK(L.vertex_count - L.edge_count() + L.face_count() == 1);
+  CHECK(boundary >= 22);
+  CHECK(Index(m.face_offsets.size()) - 1 < m.uniform_faces);
+}
