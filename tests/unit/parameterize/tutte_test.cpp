@@ -17,6 +17,7 @@
 #include "framework/parameterize/tutte.h"
 #include "framework/pipeline/refine_pipeline.h"
 #include "framework/util/error.h"
+#include "support/mesh_data_of.h"
 #include "support/test_meshes.h"
 
 namespace subdiv {
@@ -36,13 +37,7 @@ test::Mesh bumpy_disc(int n, bool triangles) {
   return m;
 }
 
-MeshData mesh_data(const test::Mesh& m) {
-  MeshData d;
-  d.positions = m.positions;
-  d.face_offsets = m.offsets;
-  d.face_vertices = m.corners;
-  return d;
-}
+using test::mesh_data;
 
 // Twice the signed area of face f in the uv plane (shoelace formula).
 double signed_area(const Level& level, const std::vector<double>& uv, Index f) {

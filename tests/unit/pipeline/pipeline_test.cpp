@@ -15,18 +15,13 @@
 #include "framework/pipeline/thread_limit.h"
 #include "framework/util/error.h"
 #include "support/refine_helpers.h"
+#include "support/mesh_data_of.h"
 #include "support/test_meshes.h"
 
 namespace subdiv {
 namespace {
 
-MeshData mesh_data(const test::Mesh& m) {
-  MeshData d;
-  d.positions = m.positions;
-  d.face_offsets = m.offsets;
-  d.face_vertices = m.corners;
-  return d;
-}
+using test::mesh_data;
 
 RefineRequest request_for(const test::Mesh& m, const std::string& scheme, int levels) {
   RefineRequest r;

@@ -19,18 +19,13 @@
 #include "framework/pipeline/refine_pipeline.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
+#include "support/mesh_data_of.h"
 #include "support/test_meshes.h"
 
 namespace subdiv {
 namespace {
 
-MeshData mesh_data(const test::Mesh& m) {
-  MeshData d;
-  d.positions = m.positions;
-  d.face_offsets = m.offsets;
-  d.face_vertices = m.corners;
-  return d;
-}
+using test::mesh_data;
 
 RefineRequest request_for(MeshData mesh, const std::string& scheme, int levels) {
   RefineRequest r;

@@ -1,0 +1,17 @@
+#pragma once
+// A test mesh (support/test_meshes.h) as the io layer's MeshData: positions and faces only,
+// as a reader would give them for a file without tags or arrays.
+#include "framework/io/mesh_data.h"
+#include "support/test_meshes.h"
+
+namespace subdiv::test {
+
+inline MeshData mesh_data(const Mesh& m) {
+  MeshData d;
+  d.positions = m.positions;
+  d.face_offsets = m.offsets;
+  d.face_vertices = m.corners;
+  return d;
+}
+
+}  // namespace subdiv::test
