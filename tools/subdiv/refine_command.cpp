@@ -1,4 +1,5 @@
 // `subdiv refine MESH --scheme S --levels L -o OUT`: the main job.
+#include <algorithm>
 #include <chrono>
 #include <fmt/format.h>
 
@@ -175,7 +176,11 @@ void run(const RefineArgs& a) {
     fmt::print(stderr, "subdiv: note: {}\n", spell_options(result.limit_note, cli_option_spelling()));
   progress.say(fmt::format("writing {}", a.output));
   Hierarchy& h = result.hierarchy;
-  const Index fine_vertices = h.levels.back().vertex_count, fine_faces = h.levels.back().face_count();
+  // The faces written: holes are left out of every output, so out of the count too.
+  const Level& finest = h.levels.back();
+  const Index fine_vertices = finest.vertex_count,
+              fine_faces = finest.face_count() - Index(std::count_if(finest.face_hole.begin(), finest.face_hole.end(),
+                                                                     [](std::uint8_t hole) { return hole != 0; }));
   OutputChoice writing = output;  // VTK's progress events move the bar
   writing.vtk.progress = [&progress](double done) { progress.fraction(done); };
   write_levels(a.output, std::move(h), std::move(result.levels), result.features, result.finest_point_data,

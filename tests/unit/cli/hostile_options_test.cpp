@@ -144,3 +144,19 @@ TEST_CASE("-o naming the input mesh (directly, through a link, or a .pvd's level
   CHECK(run_subdiv("refine " + mesh.string() + " -l 1 -o " + (dir / "out.obj").string()).output.find("96 faces") !=
         std::string::npos);
 }
+
+TEST_CASE("the summary counts the faces written: hole faces are left out of both") {
+  const fs::path dir = fresh_dir("hole-counts");
+  {
+    std::ofstream obj(dir / "strip.obj");
+    obj << "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nf 1 2 5 4\nf 2 3 6 5\nt hole 1/0/0 1\n";
+  }
+  const CliResult r = run_subdiv("refine " + (dir / "strip.obj").string() + " -l 1 -o " + (dir / "out.obj").string());
+  REQUIRE(r.exit_code == 0);
+  // One of the two quads is a hole: its four children are not written, nor counted.
+  std::ifstream written(dir / "out.obj");
+  int faces = 0;
+  for (std::string line; std::getline(written, line);) faces += line.rfind("f ", 0) == 0;
+  CHECK(faces == 4);
+  CHECK(contains(r.output, " 4 faces "));
+}
