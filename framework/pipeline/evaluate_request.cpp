@@ -189,10 +189,46 @@ PreparedEvaluation prepare_evaluation(EvaluateRequest request) {
   out.scheme = p.sequence.schemes.front();
   out.scheme_label = std::move(p.scheme_label);
   out.mesh = std::move(p.mesh);
+  if (p.rational)
+    for (const DataArray& a : out.mesh.point_data)
+      if (a.name == p.weights_name) out.weights = a.values;
   out.warnings = std::move(p.warnings);
   out.notes = std::move(p.notes);
   return out;
 }
+
+namespace {
+
+// The rational surface from its homogeneous limit (X, W) (Piegl & Tiller 1997, "The NURBS
+// Book", eq. 4.8 and its derivative): P = X / W, P_u = (X_u - P W_u) / W, and
+// P_uv = (X_uv - P_u W_v - P_v W_u - P W_uv) / W. NaN (no derivative there) stays NaN.
+EvaluatedPoints projected(const EvaluatedPoints& h) {
+  EvaluatedPoints out;
+  out.count = h.count;
+  out.channels = 3;
+  auto sized = [&](const std::vector<double>& from) { return std::vector<double>(from.empty() ? 0 : size_t(h.count) * 3); };
+  out.position = sized(h.position), out.du = sized(h.du), out.dv = sized(h.dv);
+  out.duu = sized(h.duu), out.duv = sized(h.duv), out.dvv = sized(h.dvv);
+  for (size_t i = 0; i < size_t(h.count); ++i) {
+    auto in = [&](const std::vector<double>& v, int c) { return v[4 * i + size_t(c)]; };
+    auto at = [&](std::vector<double>& v, int c) -> double& { return v[3 * i + size_t(c)]; };
+    const double W = in(h.position, 3);
+    for (int c = 0; c < 3; ++c) {
+      const double P = in(h.position, c) / W;
+      at(out.position, c) = P;
+      if (h.du.empty()) continue;
+      const double Pu = (in(h.du, c) - P * in(h.du, 3)) / W, Pv = (in(h.dv, c) - P * in(h.dv, 3)) / W;
+      at(out.du, c) = Pu, at(out.dv, c) = Pv;
+      if (h.duu.empty()) continue;
+      at(out.duu, c) = (in(h.duu, c) - 2 * Pu * in(h.du, 3) - P * in(h.duu, 3)) / W;
+      at(out.dvv, c) = (in(h.dvv, c) - 2 * Pv * in(h.dv, 3) - P * in(h.dvv, 3)) / W;
+      at(out.duv, c) = (in(h.duv, c) - Pu * in(h.dv, 3) - Pv * in(h.du, 3) - P * in(h.duv, 3)) / W;
+    }
+  }
+  return out;
+}
+
+}  // namespace
 
 EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& p, std::span<const Index> faces,
                                       std::span<const double> uv, int derivatives, std::span<const double> values,
@@ -200,7 +236,16 @@ EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& p, std::span<con
   check_order(derivatives);
   check_points(p, faces, uv);
   std::vector<double> own;
-  if (values.empty()) {
+  const bool rational = values.empty() && !p.weights.empty();
+  if (rational) {  // (w·p, w) per vertex
+    channels = 4;
+    own.resize(p.weights.size() * 4);
+    for (size_t v = 0; v < p.weights.size(); ++v) {
+      for (int c = 0; c < 3; ++c) own[4 * v + size_t(c)] = p.weights[v] * p.mesh.positions[3 * v + size_t(c)];
+      own[4 * v + 3] = p.weights[v];
+    }
+    values = own;
+  } else if (values.empty()) {
     channels = 3;
     values = p.mesh.positions;
   } else {
@@ -213,9 +258,10 @@ EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& p, std::span<con
         own[v * size_t(channels) + size_t(c)] = values[size_t(p.request_vertex[v]) * size_t(channels) + size_t(c)];
     values = own;
   }
-  return evaluate_samples(faces.size(), channels, derivatives, [&](size_t i) {
+  EvaluatedPoints out = evaluate_samples(faces.size(), channels, derivatives, [&](size_t i) {
     return p.surface->evaluate(faces[i], uv[2 * i], uv[2 * i + 1], values, channels, derivatives);
   });
+  return rational ? projected(out) : out;
 }
 
 EvaluatedPoints evaluate_face_varying(const PreparedEvaluation& p, size_t channel, std::span<const Index> faces,
@@ -237,6 +283,10 @@ EvaluatedPoints evaluate_face_varying(const PreparedEvaluation& p, size_t channe
 LimitStencilMatrices limit_stencil_matrices(const PreparedEvaluation& p, std::span<const Index> faces,
                                             std::span<const double> uv, int derivatives) {
   check_order(derivatives);
+  if (!p.weights.empty())
+    throw Error("limit stencils are fixed linear weights over the control points, and a rational surface's point "
+                "X/W is not linear in them: evaluate the points instead (they follow the weights), or drop the "
+                "'weight' array to get the stencils of the polynomial surface");
   check_points(p, faces, uv);
   std::vector<LimitStencil> stencils(faces.size());
   parallel_for_all(faces.size(), [&](size_t i) {

@@ -49,6 +49,9 @@ struct PreparedEvaluation {
   std::vector<Index> request_vertex;  // per vertex of `mesh`: its number in the request's mesh
   Index request_vertex_count = 0;
   std::shared_ptr<const LimitSurface> surface;
+  // Rational weights (rational_weights.h), per vertex of `mesh`; empty when the mesh has
+  // none or all are 1. Positions are then evaluated as (w·p, w) and projected.
+  std::vector<double> weights;
   std::vector<FaceVaryingSurface> face_varying;  // the mesh's face-varying channels (normals left out)
   std::vector<std::string> warnings;  // the mesh reader's, clean-up's
   std::vector<std::string> notes;     // feature files and angles applied
@@ -68,7 +71,9 @@ struct EvaluatedPoints {
 };
 
 // Evaluates the mesh's positions, or `values` (`channels` per vertex of the request's mesh)
-// when given, at (faces[i], uv[2 i], uv[2 i + 1]). Every point is checked first: a bad one
+// when given, at (faces[i], uv[2 i], uv[2 i + 1]). With rational weights the positions are
+// those of the rational surface (the homogeneous limit projected, derivatives by the
+// quotient rule); `values` are evaluated as given. Every point is checked first: a bad one
 // is refused as "point i (face f, u, v): why" (i from 0), before anything is evaluated.
 // Runs in parallel over the points (TBB, within the caller's thread limit).
 EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& prepared, std::span<const Index> faces,
