@@ -5,6 +5,7 @@
 #include <fmt/ranges.h>
 
 #include "bindings.h"
+#include "framework/pipeline/rational_weights.h"
 
 namespace subdivkit {
 namespace {
@@ -19,6 +20,15 @@ LimitSurfaceHandle prepare(py::handle mesh, py::handle scheme, py::handle params
                            const std::string& fvar_boundary) {
   subdiv::EvaluateRequest r;
   r.mesh = mesh_from_python(mesh);
+  // Rational weights (docs/rational.md): the point array "weight", as refine() takes it.
+  const py::dict point_data = mesh.attr("point_data");
+  if (point_data.contains(subdiv::kWeightArrayName)) {
+    std::vector<double> w = doubles_from(point_data[subdiv::kWeightArrayName], "point_data['weight']");
+    if (w.size() != size_t(r.mesh.vertex_count()))
+      throw subdiv::Error(fmt::format("point_data['weight']: {} values for {} points; give one weight per point",
+                                      w.size(), r.mesh.vertex_count()));
+    r.mesh.point_data.push_back({subdiv::kWeightArrayName, 1, std::move(w)});
+  }
   r.mesh.face_varying = face_varying_from(face_varying, Index(r.mesh.face_vertices.size()));
   r.shape.face_varying = subdiv::face_varying_from_name(fvar_boundary, "fvar_boundary=");
   r.mesh_name = mesh_name(mesh);

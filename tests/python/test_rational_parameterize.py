@@ -111,3 +111,23 @@ def test_parameterize_square_and_refusals():
         subdivkit.parameterize(subdivkit.read_mesh(MESHES / "cube.obj"))
     with pytest.raises(subdivkit.Error, match="add boundary=\"square\""):
         subdivkit.parameterize(mesh, corners=[0, 6, 48, 42])
+
+
+def test_limit_surface_of_a_weighted_mesh_is_the_rational_one():
+    cube = subdivkit.read_mesh(MESHES / "cube.obj")
+    w = np.linspace(0.5, 2.0, cube.n_points)
+    uv = [[0.3, 0.6], [0.8, 0.3]]
+
+    def at(weights):
+        mesh = subdivkit.Mesh(cube.points, cube.faces, point_data={"weight": weights})
+        return subdivkit.LimitSurface(mesh, "catmull-clark").evaluate([0, 4], uv, derivatives=2)
+
+    plain = subdivkit.LimitSurface(cube, "catmull-clark").evaluate([0, 4], uv, derivatives=2)
+    uneven, scaled = at(w), at(3 * w)
+    assert not np.allclose(uneven.points, plain.points)  # the weights move the surface
+    for name in ("points", "du", "dv", "duu", "duv", "dvv"):  # projective: only ratios of weights count
+        assert np.allclose(getattr(uneven, name), getattr(scaled, name), rtol=1e-12, atol=1e-12)
+    assert np.allclose(at(np.full(cube.n_points, 2.0)).points, plain.points, rtol=1e-13, atol=1e-13)
+    with pytest.raises(subdivkit.Error, match="not linear"):
+        subdivkit.LimitSurface(subdivkit.Mesh(cube.points, cube.faces, point_data={"weight": w}),
+                               "catmull-clark").stencils([0], [[0.5, 0.5]])
