@@ -122,6 +122,19 @@ def _as_pairs(creases):
     return _as_indices(pairs.reshape(-1), "creases").reshape(-1, 2)
 
 
+def _checked_array(name, check, doc):
+    """A Mesh array stored as ``_name``, checked and converted by ``check(mesh, value)`` on assignment."""
+    private = "_" + name
+
+    def get(mesh):
+        return getattr(mesh, private)
+
+    def put(mesh, value):
+        setattr(mesh, private, check(mesh, value))
+
+    return property(get, put, doc=doc)
+
+
 _ARRAYS = ("points", "face_indices", "face_offsets", "line_indices", "line_offsets", "creases", "crease_sharpness",
            "corners", "corner_sharpness")
 
@@ -197,86 +210,26 @@ class Mesh:
     # array is refused, not truncated; an index past 32 bits is refused, not wrapped). Whether
     # they agree with each other (offsets against indices, one sharpness per crease) is
     # checked where the mesh is used, since related arrays are assigned one at a time.
-    @property
-    def points(self):
-        """Vertex positions, (n, 3) float64."""
-        return self._points
-
-    @points.setter
-    def points(self, value):
-        self._points = _as_points(value, f"{self.name}.points")
-
-    @property
-    def face_indices(self):
-        """The faces' vertex indices, flat int32 (CSR with face_offsets)."""
-        return self._face_indices
-
-    @face_indices.setter
-    def face_indices(self, value):
-        self._face_indices = _as_indices(value, "face_indices", "flat indices with offsets")
-
-    @property
-    def face_offsets(self):
-        """Where each face starts in face_indices, int32 (n_faces + 1 values)."""
-        return self._face_offsets
-
-    @face_offsets.setter
-    def face_offsets(self, value):
-        self._face_offsets = _as_indices(value, "face_offsets")
-
-    @property
-    def line_indices(self):
-        """The polylines' vertex indices, flat int32 (CSR with line_offsets)."""
-        return self._line_indices
-
-    @line_indices.setter
-    def line_indices(self, value):
-        self._line_indices = _as_indices(value, "line_indices", "flat indices with offsets")
-
-    @property
-    def line_offsets(self):
-        """Where each polyline starts in line_indices, int32 (n_lines + 1 values)."""
-        return self._line_offsets
-
-    @line_offsets.setter
-    def line_offsets(self, value):
-        self._line_offsets = _as_indices(value, "line_offsets")
-
-    @property
-    def creases(self):
-        """Vertex pairs of creased edges, (c, 2) int32."""
-        return self._creases
-
-    @creases.setter
-    def creases(self, value):
-        self._creases = _as_pairs(value)
-
-    @property
-    def crease_sharpness(self):
-        """Sharpness per crease, (c,) float64 (10: infinitely sharp)."""
-        return self._crease_sharpness
-
-    @crease_sharpness.setter
-    def crease_sharpness(self, value):
-        self._crease_sharpness = _as_sharpness(value, len(self._creases), "crease_sharpness")
-
-    @property
-    def corners(self):
-        """Vertex ids tagged as corners, int32."""
-        return self._corners
-
-    @corners.setter
-    def corners(self, value):
-        self._corners = _as_indices(value, "corners")
-
-    @property
-    def corner_sharpness(self):
-        """Sharpness per corner, (k,) float64 (10: infinitely sharp)."""
-        return self._corner_sharpness
-
-    @corner_sharpness.setter
-    def corner_sharpness(self, value):
-        self._corner_sharpness = _as_sharpness(value, len(self._corners), "corner_sharpness")
+    points = _checked_array("points", lambda m, v: _as_points(v, f"{m.name}.points"),
+                            "Vertex positions, (n, 3) float64.")
+    face_indices = _checked_array("face_indices",
+                                  lambda m, v: _as_indices(v, "face_indices", "flat indices with offsets"),
+                                  "The faces' vertex indices, flat int32 (CSR with face_offsets).")
+    face_offsets = _checked_array("face_offsets", lambda m, v: _as_indices(v, "face_offsets"),
+                                  "Where each face starts in face_indices, int32 (n_faces + 1 values).")
+    line_indices = _checked_array("line_indices",
+                                  lambda m, v: _as_indices(v, "line_indices", "flat indices with offsets"),
+                                  "The polylines' vertex indices, flat int32 (CSR with line_offsets).")
+    line_offsets = _checked_array("line_offsets", lambda m, v: _as_indices(v, "line_offsets"),
+                                  "Where each polyline starts in line_indices, int32 (n_lines + 1 values).")
+    creases = _checked_array("creases", lambda m, v: _as_pairs(v), "Vertex pairs of creased edges, (c, 2) int32.")
+    crease_sharpness = _checked_array("crease_sharpness",
+                                      lambda m, v: _as_sharpness(v, len(m.creases), "crease_sharpness"),
+                                      "Sharpness per crease, (c,) float64 (10: infinitely sharp).")
+    corners = _checked_array("corners", lambda m, v: _as_indices(v, "corners"), "Vertex ids tagged as corners, int32.")
+    corner_sharpness = _checked_array("corner_sharpness",
+                                      lambda m, v: _as_sharpness(v, len(m.corners), "corner_sharpness"),
+                                      "Sharpness per corner, (k,) float64 (10: infinitely sharp).")
 
     def _arrays(self):
         """The arrays as _from_arrays takes them (no copies)."""

@@ -224,13 +224,9 @@ void add_evaluate_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--feature-angle", args->feature_angle,
                   "Make every edge whose faces' normals differ by more than DEG degrees an infinitely sharp crease");
-  cmd->add_option("--fvar-boundary", args->fvar_boundary,
-                  "Face-varying data (OBJ vt: UVs with seams), evaluated at the same points (columns NAME_0, "
-                  "NAME_1, ... after the others), as OpenSubdiv's linear-interpolation modes: none, corners-only, "
-                  "corners-plus1, corners-plus2, boundaries, all (bilinear, OpenSubdiv's default); the mesh's "
-                  "'t facevaryinginterpolateboundary' tag does the same unless this option is given")
-      ->check(CLI::IsMember({"none", "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"}))
-      ->capture_default_str();
+  add_fvar_boundary_option(cmd, args->fvar_boundary,
+                           "Face-varying data (OBJ vt: UVs with seams), evaluated at the same points (columns NAME_0, "
+                           "NAME_1, ... after the others)");
   cmd->add_option("--at", args->at, "Points to evaluate: a .csv with the header face,u,v");
   cmd->add_option("--samples", args->samples,
                   "Instead of --at: the surface as a crack-free mesh, N x N quads per quad, N^2 triangles per "

@@ -246,13 +246,7 @@ void add_refine_command(CLI::App& app) {
                 "Write the exact limit normals of the finest level's vertices as point data 'normal' (the vertices "
                 "stay where refinement put them). Normals in the input are not refined: a mix of unit normals is "
                 "no normal, so they are left out with a note");
-  cmd->add_option("--fvar-boundary", args->fvar_boundary,
-                  "Face-varying data (OBJ vt: UVs with seams), as OpenSubdiv's linear-interpolation modes: none "
-                  "(smooth everywhere), corners-only, corners-plus1, corners-plus2, boundaries (linear along seams "
-                  "and boundaries), all (bilinear, OpenSubdiv's default); a mesh's 't facevaryinginterpolateboundary' "
-                  "tag does the same unless this option is given")
-      ->check(CLI::IsMember({"none", "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"}))
-      ->capture_default_str();
+  add_fvar_boundary_option(cmd, args->fvar_boundary, "Face-varying data (OBJ vt: UVs with seams)");
   cmd->add_option("--weights", args->weights,
                   "Rational subdivision: the point array holding each control point's weight w > 0; the scheme "
                   "refines (w*p, w) and the points are projected back, so weighted nets draw conics and quadrics "

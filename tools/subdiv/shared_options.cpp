@@ -62,4 +62,12 @@ CLI::Option* add_crease_method_option(CLI::App* cmd, std::string& value) {
       ->capture_default_str();
 }
 
+CLI::Option* add_fvar_boundary_option(CLI::App* cmd, std::string& value, const std::string& what) {
+  return cmd->add_option("--fvar-boundary", value,
+                         what + ", as OpenSubdiv's linear-interpolation modes: " + choices_help(face_varying_choices()) +
+                             "; a mesh's 't facevaryinginterpolateboundary' tag does the same unless this option is given")
+      ->check(CLI::IsMember(choice_names(face_varying_choices())))
+      ->capture_default_str();
+}
+
 }  // namespace subdiv::cli

@@ -36,6 +36,9 @@ CLI::Option* add_boundary_option(CLI::App* cmd, const std::string& flag, std::st
 
 // --crease-method uniform|chaikin; read the value with crease_method_from_name.
 CLI::Option* add_crease_method_option(CLI::App* cmd, std::string& value);
+// --fvar-boundary: OpenSubdiv's face-varying linear-interpolation mode, with the modes'
+// meanings after `what` (how the command uses face-varying data).
+CLI::Option* add_fvar_boundary_option(CLI::App* cmd, std::string& value, const std::string& what);
 
 // "name (meaning), name (meaning) ..." of an option's choices, for help texts.
 template <class Value>
