@@ -56,15 +56,11 @@ namespace {
 
 subdiv::CurveLevel curve_base(const RefineInput& in, const subdiv::CurveScheme& curve, int levels) {
   if (curve.nonlinear)
-    throw subdiv::Error(fmt::format("'{}' is a non-linear curve scheme (a plugin rule); the Python module refines "
-                                    "polylines with linear curve schemes only (use `subdiv refine` for this one)",
+    throw subdiv::Error(fmt::format("'{}' is a non-linear curve scheme (a plugin rule): no matrix can say it; use "
+                                    "refine() instead",
                                     curve.name));
   subdiv::CurveLevel base = subdiv::curve_level_from_mesh(in.mesh, in.name);
-  const double points = double(base.vertices.size() + 2 * size_t(base.polyline_count())) *
-                        std::pow(double(curve.arity), levels);
-  if (points > 2.0e9)
-    throw subdiv::Error(fmt::format("{} levels would make about {:.3g} points, more than the 2^31 a level can "
-                                    "index; ask for fewer levels", levels, points));
+  subdiv::check_curve_size(base, curve.arity, levels);
   return base;
 }
 
@@ -94,32 +90,27 @@ std::vector<RefinedLevel> refine_surface(RefineInput& in, subdiv::RefineRequest 
   return out;
 }
 
-std::vector<RefinedLevel> refine_curve(RefineInput& in, const subdiv::CurveScheme& curve, int levels,
-                                       bool all_levels) {
-  if (!in.cell_data.empty())
-    throw subdiv::Error("cell data: curve refinement carries point data only (polylines have no faces)");
-  subdiv::CurveHierarchy h = subdiv::refine_curves(curve, curve_base(in, curve, levels), levels);
-  std::vector<double> positions = std::move(in.mesh.positions);
-  std::vector<subdiv::DataArray> points = std::move(in.point_data);
-  // Polylines have no element origins to take labels by: every point array is interpolated.
-  for (auto& p : points) p.integer = false;
+// Polylines through the curve pipeline (framework/pipeline/curve_pipeline.h), as `subdiv
+// refine` runs them.
+std::vector<RefinedLevel> refine_curve(RefineInput& in, subdiv::SchemeSource scheme, int levels, bool all_levels,
+                                       std::vector<std::string>& warnings) {
   if (!in.face_varying.empty())
     throw subdiv::Error("face-varying data: polylines have no faces to carry it; curve refinement carries point data");
-  // Rational polylines (pipeline/rational_weights.h): (w·p, w) refined, projected when kept.
-  const std::optional<size_t> w = subdiv::find_rational_weights(points, "", in.name);
-  const bool rational = w && !subdiv::all_weights_one(points[*w].values);
-  if (rational) subdiv::to_homogeneous(positions, points[*w].values);
+  subdiv::CurveRefineRequest request;
+  request.mesh = std::move(in.mesh);
+  request.mesh.point_data = std::move(in.point_data);
+  request.mesh.cell_data = std::move(in.cell_data);
+  request.mesh_name = in.name;
+  request.scheme = std::move(scheme);
+  request.levels = levels;
+  request.keep_all_levels = all_levels;
+  subdiv::CurveRefineResult result = subdiv::refine_curve_request(std::move(request));
+  warnings = std::move(result.notes);
   std::vector<RefinedLevel> out;
-  auto keep = [&](int l) {
-    std::vector<double> xyz = positions;
-    if (rational) subdiv::from_homogeneous(xyz, points[*w].values);
-    out.push_back({points, {}, {}, subdiv::mesh_from_curve_level(h.levels[l], std::move(xyz))});
-  };
-  if (all_levels || levels == 0) keep(0);
-  for (int l = 0; l < levels; ++l) {
-    positions = h.stencils[l].apply(positions, 3);
-    for (auto& p : points) p.values = h.stencils[l].apply(p.values, p.components);
-    if (all_levels || l + 1 == levels) keep(l + 1);
+  for (auto& level : result.levels) {
+    RefinedLevel r{std::move(level.mesh.point_data), {}, {}, std::move(level.mesh)};
+    r.mesh.point_data.clear();
+    out.push_back(std::move(r));
   }
   return out;
 }
@@ -147,7 +138,7 @@ py::list refine(py::handle mesh, py::handle scheme, py::handle params, int level
   check_levels(levels);
   const subdiv::RefineOptions options = refine_options(boundary, crease_method, threads, start_level);
   RefineInput in = input_from(mesh, point_data, cell_data, face_varying, fvar_boundary);
-  const SchemeChoice choice = scheme_choice_from(scheme, levels, params);
+  const bool curve = names_curve_scheme(scheme);
   subdiv::RefineRequest request;
   request.scheme = scheme_source_from(scheme, params);
   request.levels = levels;
@@ -161,8 +152,8 @@ py::list refine(py::handle mesh, py::handle scheme, py::handle params, int level
   {
     py::gil_scoped_release unlocked;
     const subdiv::ThreadLimit limit(threads);
-    result = choice.is_curve() ? refine_curve(in, *choice.single->curve, levels, all_levels)
-                               : refine_surface(in, std::move(request), dropped, warnings);
+    result = curve ? refine_curve(in, std::move(request.scheme), levels, all_levels, warnings)
+                   : refine_surface(in, std::move(request), dropped, warnings);
   }
   py::list out;
   for (auto& level : result) {

@@ -115,6 +115,8 @@ struct SchemeChoice {
   bool is_curve() const { return single && single->kind == "curve"; }
 };
 SchemeChoice scheme_choice_from(py::handle scheme, int levels, py::handle params);
+// Whether `scheme` (a Scheme or a name) is one curve scheme, found without loading it.
+bool names_curve_scheme(py::handle scheme);
 // The same scheme as the pipeline's SchemeSource (framework/pipeline/refine_request.h).
 subdiv::SchemeSource scheme_source_from(py::handle scheme, py::handle params);
 

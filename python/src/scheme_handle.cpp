@@ -84,6 +84,17 @@ SchemeChoice scheme_choice_from(py::handle scheme, int levels, py::handle params
   return c;
 }
 
+bool names_curve_scheme(py::handle scheme) {
+  if (py::isinstance<SchemeHandle>(scheme)) return scheme.cast<const SchemeHandle&>().kind == "curve";
+  if (!py::isinstance<py::str>(scheme)) return false;  // the surface path says what a scheme must be
+  const std::string spec = py::str(scheme);
+  try {
+    return spec.find_first_of(",:") == std::string::npos && subdiv::scheme_kind(spec) == "curve";
+  } catch (const subdiv::Error&) {
+    return false;  // unknown names: the surface path lists the known ones
+  }
+}
+
 subdiv::SchemeSource scheme_source_from(py::handle scheme, py::handle params) {
   subdiv::SchemeSource source;
   const subdiv::ParameterOverrides overrides = overrides_from(params);

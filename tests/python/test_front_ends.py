@@ -92,3 +92,30 @@ def test_option_errors_speak_each_front_ends_language():
     # A level-count mismatch of a sequence: the CLI names its options.
     message = cli_error("refine", MESHES / "cube.obj", "-s", "catmull-clark:1,loop:1", "-l", 3, "-o", "x.obj")
     assert "--scheme 'catmull-clark:1,loop:1' runs 2 level(s), but --levels asks for 3" in message
+
+
+@pytest.mark.parametrize("scheme,levels", [("chaikin", 3), ("four-point", 2), ("cubic-bspline", 2)])
+def test_cli_and_python_refine_polylines_with_their_arrays_alike(tmp_path, scheme, levels):
+    """Polylines go through one curve pipeline (framework/pipeline/curve_pipeline.h): the same
+    points, polylines and point arrays — rational weights included — from both front-ends."""
+    source = sk.read_mesh(str(MESHES.parent / "curves" / "open-zigzag.obj"))
+    p = source.points
+    lines = sk.Mesh(p, lines=source.line_indices, line_offsets=source.line_offsets,
+                    point_data={"field": np.column_stack([p[:, 0] * p[:, 1], np.cos(p[:, 0])]),
+                                "weight": 1.0 + 0.5 * np.abs(np.sin(np.arange(source.n_points)))})
+    path = tmp_path / "in.vtp"
+    sk.write_mesh(str(path), lines)
+    out = tmp_path / "out.vtp"
+    run_cli("refine", path, "-s", scheme, "-l", levels, "-o", out, "-q")
+    cli = sk.read_mesh(str(out))
+    python = sk.refine(lines, scheme, levels)
+
+    assert python.n_lines == cli.n_lines == 1
+    assert [list(line) for line in python.line_list()] == [list(line) for line in cli.line_list()]
+    assert np.abs(python.points - cli.points).max() <= 1e-14
+    for name in ("field", "weight"):
+        assert np.abs(np.asarray(python.point_data[name]).reshape(cli.point_data[name].shape)
+                      - cli.point_data[name]).max() <= 1e-14, name
+    # The weights are not all 1: the curve is the rational one, not the plain refinement.
+    plain = sk.refine(sk.Mesh(p, lines=source.line_indices, line_offsets=source.line_offsets), scheme, levels)
+    assert np.abs(plain.points - python.points).max() > 1e-4

@@ -12,6 +12,7 @@
 #include "framework/io/mesh_read.h"
 #include "framework/io/mesh_write.h"
 #include "framework/io/vtk/vtk_output.h"
+#include "framework/pipeline/curve_pipeline.h"
 #include "framework/util/error.h"
 #include "curve_refine.h"
 #include "interpolate_common.h"

@@ -1,14 +1,14 @@
 #pragma once
 // `subdiv refine` for polylines: a mesh of OBJ 'l' lines or VTK line cells refined with a
-// curve scheme, written as .vtp (finest level), .pvd (all levels) or .obj ('l' lines).
+// curve scheme (framework/pipeline/curve_pipeline.h), written as .vtp (finest level), .pvd
+// (all levels) or .obj ('l' lines).
 #include <string>
 
-#include "framework/curve/curve_level.h"
 #include "framework/scheme/scheme_registry.h"
 
 namespace subdiv::cli {
 
-struct CurveRefineRequest {
+struct CurveRefineArgs {
   std::string mesh, scheme, output;
   int levels = 1;
   ParameterOverrides params;
@@ -21,10 +21,6 @@ struct CurveRefineRequest {
 // anything else (the surface path reports unknown names and scheme sequences).
 bool is_curve_scheme(const std::string& scheme);
 
-void refine_curves_command(const CurveRefineRequest& request);
-
-// Refuses, with the numbers, `levels` steps of arity `arity` that would not fit in memory
-// or in 32-bit indices.
-void check_curve_size(const CurveLevel& base, int arity, int levels);
+void refine_curves_command(const CurveRefineArgs& args);
 
 }  // namespace subdiv::cli

@@ -200,7 +200,7 @@ void restore_corners(vtkPolyData& poly, MeshData& mesh) {
 // next refinement, so they are not the user's data.
 bool subdivkit_array(const char* name, bool point) {
   static const std::set<std::string> points = {"corner_sharpness", "origin", "valence", "level", "vertex_class",
-                                               "limit_exact", "normal_exact"};
+                                               "limit_exact", "normal_exact", "rule"};
   static const std::set<std::string> cells = {"cell_kind", "sharpness", "parent_face", "base_face"};
   return name && (point ? points : cells).count(name) > 0;
 }
