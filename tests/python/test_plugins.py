@@ -54,3 +54,31 @@ except sk.Error as e:
 """)
     assert "interface version mismatch" in printed
     assert path in printed
+
+
+def test_a_non_linear_curve_scheme_refines_polylines_like_the_command_line(tmp_path):
+    """circle-four-point (Sabin & Dodgson 2004) keeps points on a circle, which no linear
+    rule does: Python runs it through the same curve pipeline as `subdiv refine`."""
+    path = plugin("subdiv_circle_preserving")
+    angles = np.array([0.0, 0.7, 1.9, 2.6, 3.9, 5.1])
+    source = tmp_path / "polygon.obj"
+    source.write_text("".join(f"v {2 * np.cos(a)!r} {2 * np.sin(a)!r} 0\n" for a in angles) + "l 1 2 3 4 5 6 1\n")
+    out = tmp_path / "circle.obj"
+    run_cli("--plugin", path, "refine", source, "-s", "circle-four-point", "-l", 4, "-o", out, "-q")
+    expected, _ = parse_obj(out)
+    np.save(tmp_path / "expected.npy", expected)
+    printed = run_python(f"""
+import numpy as np, subdivkit as sk, warnings
+sk.load_plugin({path!r})
+mesh = sk.read_mesh({str(source)!r})
+mesh.point_data["t"] = np.arange(mesh.n_points, dtype=float)
+with warnings.catch_warnings(record=True) as said:
+    warnings.simplefilter("always")
+    fine = sk.refine(mesh, "circle-four-point", 4)
+assert any("'t' is not carried" in str(w.message) for w in said), [str(w.message) for w in said]
+radius = np.linalg.norm(fine.points[:, :2], axis=1)
+print(np.abs(fine.points - np.load({str(tmp_path / "expected.npy")!r})).max(), np.abs(radius - 2).max())
+""")
+    difference, off_circle = (float(x) for x in printed.split())
+    assert difference <= 1e-15
+    assert off_circle <= 1e-12
