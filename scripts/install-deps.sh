@@ -53,6 +53,9 @@ packages=(
   libcgal-dev
   libmetis-dev openmpi-bin libopenmpi-dev
   pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib
+  # Python's conversions to other libraries' meshes (python/subdivkit/conversions.py), in the
+  # tests only; it needs no VTK.
+  python3-open3d
   # Packaging (docs/install.md): Debian packages with CPack (dpkg-shlibdeps, file, the man
   # page; strace where tests/install cannot hide the source tree in a mount namespace), the
   # Python package (PEP 517 offline, a venv) and its types.

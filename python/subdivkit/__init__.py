@@ -10,6 +10,7 @@
     r = sk.evaluate(cube, "catmull-clark", [0], [[0.5, 0.5]], derivatives=2)  # exact limit: r.points, r.du, r.duu
 
     mine = sk.Scheme.from_dict({...})                       # a scheme written inline (docs/scheme-format.md)
+    sk.to_vtk(fine), sk.from_open3d(o3d_mesh), sk.to_trimesh(fine)  # other libraries' meshes
 
 Every failure the library reports (bad files, schemes, parameters, meshes) raises
 subdivkit.Error, a ValueError, with the message the `subdiv` command line prints (options
@@ -19,6 +20,7 @@ See docs/python.md.
 
 from ._subdivkit import Error, Scheme, __version__, load_plugin, schemes
 from .analysis import CurveAnalysis, SurfaceAnalysis, analyze
+from .conversions import from_open3d, from_trimesh, from_vtk, to_open3d, to_trimesh, to_vtk
 from .limit import LimitEvaluation, LimitStencils, LimitSurface, evaluate
 from .mesh import Mesh, read_mesh, write_mesh
 from .parameterize import parameterize
@@ -61,4 +63,5 @@ __all__ = [
     "refine", "Evaluator", "stencils", "limit_positions", "interpolate", "LimitPoints", "Interpolation",
     "analyze", "SurfaceAnalysis", "CurveAnalysis",
     "evaluate", "LimitSurface", "LimitEvaluation", "LimitStencils",
+    "from_vtk", "to_vtk", "from_open3d", "to_open3d", "from_trimesh", "to_trimesh",
 ]

@@ -5,6 +5,8 @@ from typing import Any
 from ._subdivkit import Error as Error, Scheme as Scheme, __version__ as __version__, load_plugin as load_plugin
 from ._subdivkit import schemes as schemes
 from .analysis import CurveAnalysis as CurveAnalysis, SurfaceAnalysis as SurfaceAnalysis, analyze as analyze
+from .conversions import from_open3d as from_open3d, from_trimesh as from_trimesh, from_vtk as from_vtk
+from .conversions import to_open3d as to_open3d, to_trimesh as to_trimesh, to_vtk as to_vtk
 from .limit import LimitEvaluation as LimitEvaluation, LimitStencils as LimitStencils
 from .limit import LimitSurface as LimitSurface, evaluate as evaluate
 from .mesh import Mesh as Mesh, read_mesh as read_mesh, write_mesh as write_mesh
@@ -22,4 +24,5 @@ __all__ = [
     "refine", "Evaluator", "stencils", "limit_positions", "interpolate", "LimitPoints", "Interpolation",
     "analyze", "SurfaceAnalysis", "CurveAnalysis",
     "evaluate", "LimitSurface", "LimitEvaluation", "LimitStencils",
+    "from_vtk", "to_vtk", "from_open3d", "to_open3d", "from_trimesh", "to_trimesh",
 ]
