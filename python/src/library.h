@@ -36,5 +36,6 @@
 #include "framework/parameterize/parameterize_mesh.h"
 #include "framework/util/option_spelling.h"
 #include "framework/pipeline/curve_pipeline.h"
+#include "framework/pipeline/interpolate_request.h"
 #include "framework/pipeline/refine_pipeline.h"
 #include "framework/pipeline/thread_limit.h"

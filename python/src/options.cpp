@@ -14,7 +14,8 @@ const subdiv::OptionSpelling& python_option_spelling() {
       {"smooth_triangles", "params={'triangles': 'smooth'}"}, {"threads", "threads"},
       {"normals", "limit_positions()"}, {"limit", "limit_positions()"},
       {"param", "keyword argument"},  {"scheme_list", "subdivkit.schemes()"},
-      {"min_valence", "min_valence"}, {"max_valence", "max_valence"}};
+      {"min_valence", "min_valence"}, {"max_valence", "max_valence"},
+      {"select", "select"},           {"max_iterations", "max_iterations"}};
   return spelling;
 }
 

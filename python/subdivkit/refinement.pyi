@@ -98,6 +98,7 @@ class Interpolation:
     rms_residual: npt.NDArray[np.float64]
     tolerance: float
     limit_description: str
+    fixed_note: str = ...
 
 def interpolate(mesh: Mesh, scheme: _SchemeArg = "catmull-clark", *, select: str | npt.ArrayLike | None = None,
                 tolerance: float | None = None, max_iterations: int = 1000, params: _Params = None,

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 import subdivkit as sk
-from conftest import CURVES, MESHES
+from conftest import CURVES, MESHES, parse_obj, run_cli
 
 
 def neighbours(mesh):
@@ -88,3 +88,28 @@ def test_seed_001_two_step_interpolation_with_a_shape_parameter():
                             select=[0, 1, 2, 3], tolerance=1e-12)
     assert result.converged
     assert np.abs(result.limit[:4] - cross.points[:4]).max() <= 1e-12
+
+
+@pytest.mark.parametrize("mesh_path,scheme,select", [(MESHES / "cross.obj", "catmull-clark-shape:1,catmull-clark", "0,1,2,3"),
+                                                     (CURVES / "open-zigzag.obj", "cubic-bspline", "1,2")])
+def test_cli_and_python_interpolate_alike_and_theorem_two_predicts_the_fixed_points(tmp_path, mesh_path, scheme,
+                                                                                     select):
+    """One pipeline request (framework/pipeline/interpolate_request.h) under both front-ends:
+    the same control points; and where the fixed vertices' limit points end, measured here
+    from the result, is what the reported note says."""
+    params = ["--param", "lambda=0.5"] if "shape" in scheme else []
+    out = tmp_path / "out.obj"
+    printed = run_cli("interpolate", mesh_path, "-s", scheme, "--select", select, "--tol", "1e-12", *params,
+                      "-o", out).stdout
+    cli_points, _ = parse_obj(out)
+    mesh = sk.read_mesh(mesh_path)
+    chosen = [int(v) for v in select.split(",")]
+    result = sk.interpolate(mesh, scheme, params={"lambda": 0.5} if params else None, select=chosen, tolerance=1e-12)
+    assert np.abs(result.mesh.points - cli_points).max() <= 1e-15
+    assert result.fixed_note and result.fixed_note in printed
+    fixed = np.setdiff1d(np.arange(mesh.n_points), chosen)
+    offset = np.linalg.norm(result.limit[fixed] - mesh.points[fixed], axis=1).max()
+    stated = float(result.fixed_note.split("end up to ")[1].split(" ")[0])
+    assert stated == pytest.approx(offset, rel=1e-5)
+    agreement = float(result.fixed_note.split("agrees to ")[1].rstrip(")"))
+    assert agreement <= 1e-9 * max(1.0, offset)

@@ -24,15 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void check_outputs(const CurveInterpolateRequest& a) {
-  const std::string ext = lowercase_extension(a.output);
-  if (ext != ".obj" && ext != ".vtp")
-    throw Error(fmt::format("-o '{}': polylines are written as .obj ('l' lines) or .vtp; .off, .ply and .stl hold "
-                            "no polylines", a.output));
-  if (!a.refined.empty() && lowercase_extension(a.refined) != ".pvd" && lowercase_extension(a.refined) != ".vtp")
-    throw Error(fmt::format("--refined '{}': use .pvd (every level) or .vtp (the finest level)", a.refined));
-}
-
 // Level 0 carries which points were interpolated and how far each limit point ended from
 // its target; finer levels carry the curve only.
 void write_refined(const fs::path& out, const CurveScheme& scheme, const CurveLevel& base,
@@ -59,37 +50,22 @@ void write_refined(const fs::path& out, const CurveScheme& scheme, const CurveLe
   else write_pvd(out, out_levels);
 }
 
-std::string describe_limit(const StencilTable& limit, const CurveLevel& level) {
-  // The row of a vertex in the middle of the longest polyline shows the interior weights.
-  Index longest = 0;
-  for (Index p = 1; p < level.polyline_count(); ++p)
-    if (level.size(p) > level.size(longest)) longest = p;
-  const Index v = level.polyline(longest)[size_t(level.size(longest) / 2)];
-  std::vector<std::string> terms;
-  for (Index i = limit.offsets[v]; i < limit.offsets[v + 1]; ++i) terms.push_back(fmt::format("{:.6g}", limit.weights[i]));
-  return fmt::format("the limit curve at each point's parameter; inside a polyline the weights ({})", fmt::join(terms, ", "));
-}
-
 }  // namespace
 
-void interpolate_curves_command(const CurveInterpolateRequest& a) {
-  check_output_path(a.output);
-  check_outputs(a);
-  const auto scheme = load_curve(a.scheme, a.params);
-  const MeshData mesh = read_mesh(a.mesh);
-  const CurveLevel base = curve_level_from_mesh(mesh, a.mesh);
-  const std::vector<std::uint8_t> moving = read_selection(a.select, base.vertex_count);
-  if (!a.refined.empty()) check_curve_size(base, scheme->arity, a.levels);
+void check_curve_outputs(const std::string& output, const std::string& refined) {
+  const std::string ext = lowercase_extension(output);
+  if (ext != ".obj" && ext != ".vtp")
+    throw Error(fmt::format("-o '{}': polylines are written as .obj ('l' lines) or .vtp; .off, .ply and .stl hold "
+                            "no polylines", output));
+  if (!refined.empty() && lowercase_extension(refined) != ".pvd" && lowercase_extension(refined) != ".vtp")
+    throw Error(fmt::format("--refined '{}': use .pvd (every level) or .vtp (the finest level)", refined));
+}
 
-  Progress progress;
-  progress.say("finding the limit points");
-  const StencilTable limit = curve_limit_stencils(*scheme, base);
-  const IterationRun run = run_iterations(limit, mesh.positions, moving, {a.tolerance, a.max_iterations, a.verbose},
-                                          progress);
-  const ProgressiveResult& r = run.result;
-
+void write_curve_interpolation(const CurveInterpolationOutput& a, const InterpolateResult& r, const MeshData& mesh,
+                               Progress& progress) {
+  if (!a.refined.empty()) check_curve_size(r.curve_base, r.curve->arity, a.levels);
   progress.say(fmt::format("writing {}", a.output));
-  const MeshData control = mesh_from_curve_level(base, r.control);
+  const MeshData control = mesh_from_curve_level(r.curve_base, r.iteration.control);
   if (lowercase_extension(a.output) == ".vtp") {
     const OutputLevel level{&control, 0, {}, {}};
     write_vtp(a.output, level);
@@ -98,19 +74,11 @@ void interpolate_curves_command(const CurveInterpolateRequest& a) {
   }
   if (!a.refined.empty()) {
     progress.say(fmt::format("writing {}", a.refined));
-    write_refined(a.refined, *scheme, base, r, mesh.positions, moving, a.levels);
+    std::vector<std::uint8_t> moving(size_t(r.vertices), 1);
+    if (r.moving < r.vertices) moving = a.moving;
+    write_refined(a.refined, *r.curve, r.curve_base, r.iteration, mesh.positions, moving, a.levels);
   }
   progress.done();
-
-  warn_if_stopped(run, "the polylines written are");
-  if (a.quiet) return;
-  fmt::print("{}: {} points on {} polyline{}; curve scheme {}\n", a.mesh, base.vertex_count, base.polyline_count(),
-             base.polyline_count() == 1 ? "" : "s", scheme->name);
-  fmt::print("limit: {}\n", describe_limit(limit, base));
-  print_iterations(run, "points", a.verbose);
-  fmt::print("wrote {}", a.output);
-  if (!a.refined.empty()) fmt::print(" and {} ({} levels)", a.refined, a.levels);
-  fmt::print("\n");
 }
 
 }  // namespace subdiv::cli

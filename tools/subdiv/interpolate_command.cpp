@@ -14,6 +14,7 @@
 #include "curve_interpolate.h"
 #include "curve_refine.h"
 #include "interpolate_common.h"
+#include "framework/pipeline/interpolate_request.h"
 #include "framework/pipeline/thread_limit.h"
 #include "framework/interpolation/limit_selection.h"
 #include "framework/interpolation/progressive.h"
@@ -53,25 +54,6 @@ void check_directory(const fs::path& out) {
   std::error_code ec;  // (a name too long to look up is "does not exist" too)
   if (!dir.empty() && !fs::is_directory(dir, ec))
     throw Error(fmt::format("cannot write '{}': directory '{}' does not exist", out.string(), dir.string()));
-}
-
-// Sequences are for surfaces; a curve scheme inside one gets a clear refusal instead of
-// the surface loader's.
-void refuse_curve_schemes(const std::string& sequence) {
-  std::string name;
-  std::istringstream runs(sequence);
-  while (std::getline(runs, name, ',')) {
-    name = name.substr(0, name.find(':'));
-    bool curve = false;
-    try {
-      curve = scheme_kind(name) == "curve";
-    } catch (const Error&) {
-      // Unknown names are reported by the loader, with the known ones.
-    }
-    if (curve)
-      throw Error(fmt::format("--scheme: '{}' is a curve scheme inside a sequence; polylines are interpolated "
-                              "with one curve scheme (--scheme {})", name, name));
-  }
 }
 
 std::optional<double> parse_number(const std::string& text) {
@@ -145,7 +127,26 @@ void write_refined(const fs::path& out, const Hierarchy& h, const std::vector<do
   else write_pvd(out, levels);
 }
 
-void run(const InterpolateArgs& a) {
+// --lambda: one number (the scheme's parameter, range-checked by the loader) or a file of
+// per-vertex values (as --vertex-param lambda=FILE).
+void apply_lambda(const InterpolateArgs& a, InterpolateRequest& request, Index vertex_count) {
+  if (a.lambda.empty()) return;
+  const std::optional<double> value = parse_number(a.lambda);
+  std::error_code ec;
+  if (!value && !fs::is_regular_file(a.lambda, ec))
+    throw Error(fmt::format("--lambda '{}' is neither a number nor a file of per-vertex values", a.lambda));
+  if (!has_lambda(load_scheme_sequence(a.scheme, a.levels, request.scheme.parameters)))
+    throw Error(fmt::format("--lambda: no scheme in '{}' has a parameter lambda; Lin et al. 2015's shape control is "
+                            "--scheme catmull-clark-shape:1,catmull-clark", a.scheme));
+  if (value) {
+    request.scheme.parameters["lambda"] = a.lambda;
+    return;
+  }
+  if (request.vertex_parameters.count("lambda")) throw Error("--lambda FILE and --vertex-param lambda=...: give one");
+  request.vertex_parameters["lambda"] = read_vertex_values(a.lambda, "lambda", vertex_count);
+}
+
+void check_outputs(const InterpolateArgs& a, bool curve) {
   check_output_not_input(a.mesh, a.output, a.force);
   if (!a.refined.empty()) check_output_not_input(a.mesh, a.refined, a.force, "--refined");
   check_output_path(a.output);
@@ -159,92 +160,74 @@ void run(const InterpolateArgs& a) {
     if (fs::absolute(a.refined) == fs::absolute(a.output))
       throw Error("--refined and -o name the same file; give two names");
   }
-  if (a.max_iterations < 0) throw Error("--max-iter must be 0 or more");
-  const ThreadLimit thread_limit(a.threads, "--threads");
-  if (!thread_limit.note().empty()) fmt::print(stderr, "subdiv: note: {}\n", thread_limit.note());
+  if (curve) check_curve_outputs(a.output, a.refined);
+}
 
-  // --lambda: one number (the scheme's parameter, range-checked by the loader) or a file of
-  // per-vertex values (--vertex-param lambda=FILE).
-  ParameterOverrides overrides = parse_params(a.params);
-  std::optional<double> lambda_value;
-  if (!a.lambda.empty()) {
-    lambda_value = parse_number(a.lambda);
-    std::error_code ec;
-    if (!lambda_value && !fs::is_regular_file(a.lambda, ec))
-      throw Error(fmt::format("--lambda '{}' is neither a number nor a file of per-vertex values", a.lambda));
-  }
-  if (is_curve_scheme(a.scheme)) {
-    if (!a.lambda.empty())
-      throw Error(fmt::format("--lambda: '{}' is a curve scheme; Lin et al. 2015's shape parameter is for surfaces", a.scheme));
-    return interpolate_curves_command({a.mesh, a.scheme, a.output, a.refined, a.select, parse_params(a.params),
-                                       a.tolerance, a.max_iterations, a.levels, a.verbose, a.quiet});
-  }
-  refuse_curve_schemes(a.scheme);
-  SchemeSequence seq = load_scheme_sequence(a.scheme, a.levels, overrides);
-  if (!a.lambda.empty() && !has_lambda(seq))
-    throw Error(fmt::format("--lambda: no scheme in '{}' has a parameter lambda; Lin et al. 2015's shape control is "
-                            "--scheme catmull-clark-shape:1,catmull-clark", a.scheme));
-  if (lambda_value) {
-    overrides["lambda"] = a.lambda;
-    seq = load_scheme_sequence(a.scheme, a.levels, overrides);
-  }
+InterpolateRequest request_from(const InterpolateArgs& a, MeshData mesh) {
+  InterpolateRequest r;
+  r.moving = read_selection(a.select, mesh.vertex_count());
+  r.mesh = std::move(mesh);
+  r.mesh_name = a.mesh;
+  r.scheme.text = a.scheme;
+  r.scheme.parameters = parse_params(a.params);
+  r.levels = a.levels;
+  r.tolerance = a.tolerance;
+  r.max_iterations = a.max_iterations;
+  r.boundary = boundary_from_name(a.boundary);
+  r.vertex_parameters = read_vertex_parameter_files(vertex_param_files(a.vertex_params), r.mesh.vertex_count());
+  return r;
+}
 
-  const MeshData mesh = read_mesh(a.mesh);
-  if (mesh.face_count() == 0)
-    throw Error(fmt::format("{}: the mesh has no faces{}; surface schemes interpolate surface meshes{}", a.mesh,
-                            mesh.line_count() > 0 ? fmt::format(" (it has {} polyline{})", mesh.line_count(), mesh.line_count() == 1 ? "" : "s") : "",
-                            mesh.line_count() > 0 ? ", polylines take a curve scheme (e.g. --scheme cubic-bspline)" : ""));
-  const Level base = level_from_mesh(mesh, a.mesh);
-  const std::vector<std::uint8_t> moving = read_selection(a.select, base.vertex_count);
-  LimitSelectionOptions options;
-  options.features.boundary = boundary_from_name(a.boundary);
-  options.vertex_parameters = read_vertex_parameter_files(vertex_param_files(a.vertex_params), base.vertex_count);
-  if (!a.lambda.empty() && !lambda_value) {
-    if (options.vertex_parameters.count("lambda")) throw Error("--lambda FILE and --vertex-param lambda=...: give one");
-    options.vertex_parameters["lambda"] = read_vertex_values(a.lambda, "lambda", base.vertex_count);
-  }
-
-  Progress progress;
-  progress.say("finding the limit masks");
-  LimitChoice choice;
-  try {
-    choice = select_limit(seq, base, options);
-  } catch (const Error& e) {
-    // A one-off first step on its own (Lin et al. 2015's shape step) has no limit; say how to run it.
-    if (seq.runs.size() == 1 && has_lambda(seq))
-      throw Error(fmt::format("{}\n  '{}' has a shape parameter lambda: if it is a first step (Lin et al. 2015), give the "
-                              "sequence --scheme {}:1,catmull-clark", e.what(), seq.schemes[0]->name,
-                              seq.schemes[0]->name));
-    throw;
-  }
-  const StencilTable limit = choice.evaluator->limit_stencils(base);
-
-  const IterationRun run = run_iterations(limit, mesh.positions, moving, {a.tolerance, a.max_iterations, a.verbose},
-                                          progress);
-  const ProgressiveResult& r = run.result;
-
+void write_surface_interpolation(const InterpolateArgs& a, const InterpolateResult& r, const MeshData& mesh,
+                                 const std::vector<std::uint8_t>& moving, Progress& progress) {
   Hierarchy refined;
   if (!a.refined.empty()) {
-    progress.say(fmt::format("refining {} levels", seq.total_levels));
-    refined = refine_for_limit(seq, base, options);
+    progress.say(fmt::format("refining {} levels", r.sequence.total_levels));
+    refined = refine_for_limit(r.sequence, r.base, r.options);
   }
   progress.say(fmt::format("writing {}", a.output));
   MeshData out = mesh;
-  out.positions = r.control;
+  out.positions = r.iteration.control;
   write_mesh(a.output, out);
   if (!a.refined.empty()) {
     progress.say(fmt::format("writing {}", a.refined));
-    write_refined(a.refined, refined, r.control, mesh.positions, r.limit, moving);
+    write_refined(a.refined, refined, r.iteration.control, mesh.positions, r.iteration.limit, moving);
   }
   progress.done();
+}
 
-  warn_if_stopped(run, "the control mesh written is");
+void run(const InterpolateArgs& a) {
+  const bool curve = is_curve_scheme(a.scheme);
+  check_outputs(a, curve);
+  if (a.max_iterations < 0) throw Error("--max-iter must be 0 or more");
+  if (curve && !a.lambda.empty())
+    throw Error(fmt::format("--lambda: '{}' is a curve scheme; Lin et al. 2015's shape parameter is for surfaces", a.scheme));
+  const ThreadLimit thread_limit(a.threads, "--threads");
+  if (!thread_limit.note().empty()) fmt::print(stderr, "subdiv: note: {}\n", thread_limit.note());
+
+  const MeshData mesh = read_mesh(a.mesh);
+  InterpolateRequest request = request_from(a, mesh);
+  apply_lambda(a, request, mesh.vertex_count());
+  const std::vector<std::uint8_t> moving = request.moving;
+  Progress progress;
+  std::vector<std::string> log;
+  show_iterations(request, progress, a.verbose, log);
+  const InterpolateResult r = interpolate_mesh(std::move(request));
+  if (r.curve) write_curve_interpolation({a.output, a.refined, a.levels, moving}, r, mesh, progress);
+  else write_surface_interpolation(a, r, mesh, moving, progress);
+
+  warn_if_stopped(r, r.curve ? "the polylines written are" : "the control mesh written is");
   if (a.quiet) return;
-  fmt::print("{}: {} vertices, {} faces; scheme {}\n", a.mesh, base.vertex_count, base.face_count(), a.scheme);
-  fmt::print("limit: {}\n", choice.description);
-  print_iterations(run, "vertices", a.verbose);
+  if (r.curve)
+    fmt::print("{}: {} points on {} polyline{}; curve scheme {}\n", a.mesh, r.curve_base.vertex_count,
+               r.curve_base.polyline_count(), r.curve_base.polyline_count() == 1 ? "" : "s", r.curve->name);
+  else
+    fmt::print("{}: {} vertices, {} faces; scheme {}\n", a.mesh, r.base.vertex_count, r.base.face_count(), a.scheme);
+  fmt::print("limit: {}\n", r.limit_description);
+  print_iterations(r, log, r.curve ? "points" : "vertices", a.verbose);
   fmt::print("wrote {}", a.output);
-  if (!a.refined.empty()) fmt::print(" and {} ({} levels)", a.refined, seq.total_levels);
+  const int levels = r.curve ? a.levels : r.sequence.total_levels;
+  if (!a.refined.empty()) fmt::print(" and {} ({} levels)", a.refined, levels);
   fmt::print("\n");
 }
 

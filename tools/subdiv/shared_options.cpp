@@ -17,7 +17,8 @@ const OptionSpelling& cli_option_spelling() {
       {"limit", "--limit"},             {"normals", "--normals"},
       {"arrays", "--arrays"},           {"threads", "--threads"},
       {"param", "--param"},             {"scheme_list", "`subdiv schemes`"},
-      {"min_valence", "--min-valence"}, {"max_valence", "--max-valence"}};
+      {"min_valence", "--min-valence"}, {"max_valence", "--max-valence"},
+      {"select", "--select"},           {"max_iterations", "--max-iter"}};
   return spelling;
 }
 
