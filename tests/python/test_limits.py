@@ -82,7 +82,7 @@ def test_local_interpolation_moves_only_the_selected_vertices():
                           result.mesh.points)
 
 
-def test_seed_001_two_step_interpolation_with_a_shape_parameter():
+def test_lin_2015_two_step_interpolation_with_a_shape_parameter():
     cross = sk.read_mesh(MESHES / "cross.obj")
     result = sk.interpolate(cross, "catmull-clark-shape:1,catmull-clark", params={"lambda": 0.5},
                             select=[0, 1, 2, 3], tolerance=1e-12)
