@@ -3,14 +3,15 @@
 #include <fmt/format.h>
 
 #include "framework/util/error.h"
+#include "framework/util/option_spelling.h"
 
 namespace subdiv {
 
 CurveLevel curve_level_from_mesh(const MeshData& mesh, const std::string& source) {
   if (mesh.face_count() > 0)
-    throw Error(fmt::format("{}: the mesh has {} faces, but a curve scheme refines polylines only (OBJ 'l' "
-                            "lines, VTK line cells); refine this mesh with a surface scheme "
-                            "(`subdiv schemes` lists them), or give a file of polylines",
+    throw OptionError(fmt::format("{}: the mesh has {} faces, but a curve scheme refines polylines only (OBJ 'l' "
+                                  "lines, VTK line cells); refine this mesh with a surface scheme "
+                                  "({{scheme_list}} lists them), or give a file of polylines",
                             source, mesh.face_count()));
   if (mesh.line_count() == 0)
     throw Error(fmt::format("{}: the mesh has no polylines to refine; a curve scheme needs OBJ 'l' lines "

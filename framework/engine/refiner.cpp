@@ -27,9 +27,9 @@ void check_face_sizes(const Scheme& scheme, const Level& base) {
   if (!needed || base.all_faces_have_size(needed)) return;  // in parallel; the loop below names the first
   for (Index f = 0; f < base.face_count(); ++f)
     if (base.face_size(f) != needed)
-      throw Error(fmt::format("{}: scheme '{}' needs {}, but face {} of the mesh has {} vertices; "
-                              "{} the mesh first or choose a scheme for any polygons (`subdiv schemes` "
-                              "lists them)",
+      throw OptionError(fmt::format("{}: scheme '{}' needs {}, but face {} of the mesh has {} vertices; "
+                                    "{} the mesh first or choose a scheme for any polygons ({{scheme_list}} "
+                                    "lists them)",
                               scheme.path, scheme.name,
                               needed == 3 ? "triangles" : needed == 4 ? "quads" : fmt::format("{}-gons", needed), f,
                               base.face_size(f), needed == 3 ? "triangulate" : needed == 4 ? "quadrangulate" : "remesh"));

@@ -107,7 +107,9 @@ std::shared_ptr<const CurveScheme> load_curve(const std::string& name_or_path, c
   } else {
     const fs::path file = find_scheme_file(name_or_path);
     if (scheme_file_kind(file) != "curve")
-      throw Error(fmt::format("{} is a surface scheme; polylines need a curve scheme (`subdiv schemes` lists them under \"curve schemes\")", file.string()));
+      throw OptionError(fmt::format("{} is a surface scheme; polylines need a curve scheme ({{scheme_list}} lists the "
+                                    "curve schemes)",
+                                    file.string()));
     curve = load_curve_scheme(file, overrides, &taken);
   }
   if (used) used->insert(taken.begin(), taken.end());
