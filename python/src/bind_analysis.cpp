@@ -98,23 +98,12 @@ py::object analyze(py::handle scheme, const std::vector<int>& valences, bool bou
     }
     return curve_dict(r);
   }
-  const subdiv::SurfaceAnalysisOptions options = analysis_options(interpolation, max_ring, characteristic_map);
-  if (valences.empty()) throw subdiv::Error("valences: give at least one valence");
-  for (int n : valences)
-    if (n < (boundary ? 2 : 3) || n > 64)
-      throw subdiv::Error(fmt::format("valences: {} is outside {}..64", n, boundary ? 2 : 3));
+  const subdiv::ValenceAnalysisRequest request{h.surface, valences, boundary, level,
+                                               analysis_options(interpolation, max_ring, characteristic_map)};
   std::vector<subdiv::SurfaceAnalysis> results;
   {
     py::gil_scoped_release unlocked;
-    const subdiv::CentreKind centre = subdiv::analysis_centre(*h.surface);
-    if (boundary && centre != subdiv::CentreKind::Vertex)
-      throw subdiv::Error(fmt::format("boundary=True: '{}' is analysed at faces (a dual scheme); boundary analysis "
-                                      "is done for vertex-centred schemes only", h.name()));
-    for (int n : valences) {
-      subdiv::LocalConfig c;
-      c.centre = centre, c.valence = n, c.boundary = boundary, c.first_step = level;
-      results.push_back(subdiv::analyse_configuration(*h.surface, c, options));
-    }
+    results = subdiv::analyse_valences(request);
   }
   py::list out;
   for (const auto& r : results) out.append(surface_dict(r));

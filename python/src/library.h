@@ -35,6 +35,7 @@
 #include "framework/pipeline/rational_weights.h"
 #include "framework/parameterize/parameterize_mesh.h"
 #include "framework/util/option_spelling.h"
+#include "framework/pipeline/analysis_request.h"
 #include "framework/pipeline/curve_pipeline.h"
 #include "framework/pipeline/interpolate_request.h"
 #include "framework/pipeline/refine_pipeline.h"

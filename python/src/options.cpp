@@ -15,7 +15,8 @@ const subdiv::OptionSpelling& python_option_spelling() {
       {"normals", "limit_positions()"}, {"limit", "limit_positions()"},
       {"param", "keyword argument"},  {"scheme_list", "subdivkit.schemes()"},
       {"min_valence", "min_valence"}, {"max_valence", "max_valence"},
-      {"select", "select"},           {"max_iterations", "max_iterations"}};
+      {"select", "select"},           {"max_iterations", "max_iterations"},
+      {"valences", "valences"},       {"boundary_analysis", "boundary=True"}};
   return spelling;
 }
 

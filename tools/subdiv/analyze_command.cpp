@@ -14,6 +14,7 @@
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/analysis/surface/surface_analysis.h"
 #include "framework/io/vtk/vtk_output.h"
+#include "framework/pipeline/analysis_request.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/atomic_file.h"
@@ -45,8 +46,8 @@ int parse_int(const std::string& text, const std::string& what) {
   throw Error(fmt::format("--valence: '{}' in '{}' is not a whole number", text, what));
 }
 
-// "3..12", "5", "3,5,8".
-std::vector<int> parse_valences(const std::string& text, int lowest) {
+// "3..12", "5", "3,5,8"; the pipeline checks their range.
+std::vector<int> parse_valences(const std::string& text) {
   std::vector<int> out;
   size_t start = 0;
   while (start <= text.size()) {
@@ -64,8 +65,6 @@ std::vector<int> parse_valences(const std::string& text, int lowest) {
     start = end + 1;
   }
   if (out.empty()) throw Error("--valence: give a valence, a range a..b or a list a,b,c");
-  for (int n : out)
-    if (n < lowest || n > 64) throw Error(fmt::format("--valence {}: valences must lie in {}..64", n, lowest));
   return out;
 }
 
@@ -117,16 +116,12 @@ void run_surface(const AnalyzeArgs& a) {
   options.characteristic_map = true;
   const CentreKind centre = analysis_centre(*scheme);
   std::vector<SurfaceAnalysis> interior, boundary;
-  // Valence 2 exists on boundaries only.
-  const std::vector<int> valences = parse_valences(a.valence, a.boundary ? 2 : 3);
-  for (int n : valences) {
-    if (n < 3) continue;
-    LocalConfig c;
-    c.centre = centre;
-    c.valence = n;
-    c.first_step = a.level;
-    interior.push_back(analyse_configuration(*scheme, c, options));
-  }
+  const std::vector<int> valences = parse_valences(a.valence);
+  ValenceAnalysisRequest request{scheme, {}, false, a.level, options};
+  // Valence 2 exists on boundaries only: with --boundary it is analysed there alone.
+  for (int n : valences)
+    if (n != 2 || !a.boundary) request.valences.push_back(n);
+  if (!request.valences.empty()) interior = analyse_valences(request);
   fmt::print("scheme {} ({})\n", scheme->name, scheme->path);
   const bool level_dependent = scheme_is_level_dependent(*scheme);
   if (level_dependent)
@@ -138,11 +133,8 @@ void run_surface(const AnalyzeArgs& a) {
                                         : "a vertex of valence n");
   fmt::print("\n{}", surface_table(interior));
   if (a.boundary && centre == CentreKind::Vertex) {
-    for (int n : valences) {
-      LocalConfig c;
-      c.valence = n, c.boundary = true, c.first_step = a.level;
-      boundary.push_back(analyse_configuration(*scheme, c, options));
-    }
+    request.valences = valences, request.boundary = true;
+    boundary = analyse_valences(request);
     fmt::print("\nboundary vertices (n ring edges, n - 1 faces):\n{}", surface_table(boundary));
   } else if (a.boundary) {
     fmt::print("\n(--boundary: boundary analysis is done for vertex-centred schemes only)\n");

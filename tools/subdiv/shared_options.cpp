@@ -18,7 +18,8 @@ const OptionSpelling& cli_option_spelling() {
       {"arrays", "--arrays"},           {"threads", "--threads"},
       {"param", "--param"},             {"scheme_list", "`subdiv schemes`"},
       {"min_valence", "--min-valence"}, {"max_valence", "--max-valence"},
-      {"select", "--select"},           {"max_iterations", "--max-iter"}};
+      {"select", "--select"},           {"max_iterations", "--max-iter"},
+      {"valences", "--valence"},        {"boundary_analysis", "--boundary"}};
   return spelling;
 }
 

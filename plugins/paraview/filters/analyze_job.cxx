@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "framework/pipeline/analysis_request.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
@@ -24,18 +25,12 @@ std::vector<SurfaceAnalysis> analyze_valences(const AnalyzeRequest& r, const std
     throw Error(fmt::format("{}: '{}' is a curve scheme; the characteristic map and the spectrum at extraordinary "
                             "vertices belong to surface schemes (`subdiv analyze {}` analyses curve schemes)",
                             source, r.scheme, r.scheme));
-  const auto scheme = load_scheme(r.scheme, parameter_overrides(r.parameters));
-  SurfaceAnalysisOptions options;
-  options.features.boundary = r.boundary;
-  options.characteristic_map = true;
-  std::vector<SurfaceAnalysis> analyses;
-  for (int n = r.min_valence; n <= r.max_valence; ++n) {
-    LocalConfig config;
-    config.centre = analysis_centre(*scheme);
-    config.valence = n;
-    analyses.push_back(analyse_configuration(*scheme, config, options));
-  }
-  return analyses;
+  ValenceAnalysisRequest request;
+  request.scheme = load_scheme(r.scheme, parameter_overrides(r.parameters));
+  for (int n = r.min_valence; n <= r.max_valence; ++n) request.valences.push_back(n);
+  request.options.features.boundary = r.boundary;
+  request.options.characteristic_map = true;
+  return analyse_valences(request);
 }
 
 }  // namespace subdiv::paraview

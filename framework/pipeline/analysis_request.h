@@ -1,0 +1,34 @@
+#pragma once
+// The eigen-analysis of a surface scheme at a list of valences, as every front-end asks for
+// it (`subdiv analyze`, Python's subdivkit.analyze, ParaView's "SubdivKit Analyze"): the
+// valences checked, the centre chosen (a vertex, or a face for dual schemes), one local
+// analysis per valence (framework/analysis/surface/surface_analysis.h). Reporting it as a
+// table, JSON, dicts or polydata is the front-ends' part.
+#include <memory>
+#include <vector>
+
+#include "framework/analysis/surface/surface_analysis.h"
+#include "framework/scheme/scheme.h"
+
+namespace subdiv {
+
+struct ValenceAnalysisRequest {
+  std::shared_ptr<const Scheme> scheme;
+  std::vector<int> valences;
+  // At boundary vertices (n ring edges, n - 1 faces; valence 2 up) instead of interior ones;
+  // for vertex-centred schemes only.
+  bool boundary = false;
+  int level = 0;  // the level whose weights a non-stationary scheme is analysed with
+  SurfaceAnalysisOptions options;
+};
+
+// Valences analysed at most: the local matrix of valence n has O(n) rows per ring.
+inline constexpr int kMaxAnalysedValence = 64;
+
+// One analysis per valence, in the request's order. Throws OptionError for an empty list, a
+// valence outside 3..64 (2..64 at the boundary), or boundary analysis of a face-centred
+// (dual) scheme. A scheme that fails the analysis at a valence is no error: the reason is in
+// that analysis's verdict.
+std::vector<SurfaceAnalysis> analyse_valences(const ValenceAnalysisRequest& request);
+
+}  // namespace subdiv
