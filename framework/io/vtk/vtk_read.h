@@ -1,7 +1,7 @@
 #pragma once
 // Reading .vtp and .vtk polygonal data with VTK. Internal to io/vtk: programs call
 // register_vtk_formats() and then read_mesh. The ParaView plugin (plugins/paraview) converts
-// its input with polydata_to_mesh_data.
+// its input through polydata_conversion.h.
 #include <filesystem>
 
 #include "framework/io/mesh_data.h"

@@ -11,7 +11,7 @@
 #include <vtkStringArray.h>
 #include <vtkTable.h>
 
-#include "framework/io/vtk/vtk_polydata.h"
+#include "framework/io/vtk/polydata_conversion.h"
 
 namespace subdiv::paraview {
 namespace {
@@ -68,7 +68,7 @@ vtkSmartPointer<vtkPolyData> characteristic_maps_polydata(const std::vector<Surf
   out.mesh = &all;
   out.point_data = {DataArray{"valence", 1, valence, true}, DataArray{"ring", 1, ring, true},
                     DataArray{"radius", 1, radius, false}};
-  return io_detail::make_polydata(out);
+  return polydata_from_level(out, "SubdivKit Analyze");
 }
 
 vtkSmartPointer<vtkTable> spectrum_table(const std::vector<SurfaceAnalysis>& analyses, int shown) {

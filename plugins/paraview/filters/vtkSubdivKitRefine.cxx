@@ -10,8 +10,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
-#include "framework/io/vtk/vtk_polydata.h"
-#include "framework/io/vtk/vtk_read.h"
+#include "framework/io/vtk/polydata_conversion.h"
 #include "framework/util/error.h"
 #include "polydata_creases.h"
 #include "refine_job.h"
@@ -31,7 +30,7 @@ subdiv::BoundaryInterpolation boundary_mode(int index) {
 
 // The input as SubdivKit's mesh, with the creases the Crease array property asks for.
 subdiv::MeshData input_mesh(vtkPolyData& input, const std::string& crease_array) {
-  subdiv::MeshData mesh = subdiv::io_detail::polydata_to_mesh_data(input, kSource);
+  subdiv::MeshData mesh = subdiv::mesh_from_polydata(input, kSource);
   if (!crease_array.empty() && crease_array != "None")
     subdiv::paraview::add_creases_from_cell_array(input, crease_array, mesh, kSource);
   return mesh;
@@ -39,8 +38,7 @@ subdiv::MeshData input_mesh(vtkPolyData& input, const std::string& crease_array)
 
 // One level as polydata, checked as write_vtp checks it (array names and lengths).
 vtkSmartPointer<vtkPolyData> level_polydata(const subdiv::OutputLevel& level) {
-  subdiv::io_detail::check_output_level(level, kSource);
-  return subdiv::io_detail::make_polydata(level);
+  return subdiv::polydata_from_level(level, kSource);
 }
 
 // Level l moved by l * dx along x, so that the levels stand side by side.
