@@ -8,7 +8,7 @@
 
 #include "framework/interpolation/curve_limits.h"
 #include "framework/io/mesh_level.h"
-#include "framework/scheme/scheme_loader.h"
+#include "framework/pipeline/scheme_source.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
@@ -57,22 +57,8 @@ void refuse_curve_schemes(const std::string& sequence) {
 }
 
 SchemeSequence load_surface_source(const InterpolateRequest& r) {
-  if (!r.scheme.is_json_text) {
-    refuse_curve_schemes(r.scheme.text);
-    return load_scheme_sequence(r.scheme.text, r.levels, r.scheme.parameters);
-  }
-  SchemeSequence seq;
-  seq.schemes = {load_scheme_text(r.scheme.text, r.scheme.label, r.scheme.parameters)};
-  seq.runs = {{seq.schemes.front().get(), r.levels}};
-  seq.total_levels = r.levels;
-  return seq;
-}
-
-bool has_lambda(const SchemeSequence& seq) {
-  for (const auto& s : seq.schemes)
-    for (const auto& p : s->parameters)
-      if (p.name == "lambda") return true;
-  return false;
+  if (!r.scheme.is_json_text) refuse_curve_schemes(r.scheme.text);
+  return load_surface_sequence(r.scheme, r.levels, r.scheme.parameters);
 }
 
 // ---- the limit operator --------------------------------------------------------------------
@@ -111,7 +97,7 @@ LimitChoice surface_limit(const SchemeSequence& seq, const Level& base, const Li
   try {
     return select_limit(seq, base, options);
   } catch (const Error& e) {
-    if (seq.runs.size() == 1 && has_lambda(seq))
+    if (seq.runs.size() == 1 && declares_parameter(seq, "lambda"))
       throw OptionError(fmt::format("{}\n  '{}' has a shape parameter lambda: if it is a first step (Lin et al. 2015), "
                                     "give the sequence {{scheme}} {}:1,catmull-clark",
                                     e.what(), seq.schemes[0]->name, seq.schemes[0]->name));

@@ -14,6 +14,7 @@
 #include "framework/pipeline/limit_arrays.h"
 #include "framework/pipeline/memory_guard.h"
 #include "framework/pipeline/rational_weights.h"
+#include "framework/pipeline/scheme_source.h"
 #include "framework/util/option_spelling.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
@@ -46,29 +47,13 @@ double levels_done(const Hierarchy& h, int finished) {
 
 // ---- the scheme ----------------------------------------------------------------------------
 
-SchemeSequence load_sequence(const RefineRequest& r, const ParameterOverrides& parameters) {
-  if (!r.scheme.is_json_text) return load_scheme_sequence(r.scheme.text, r.levels, parameters);
-  SchemeSequence seq;
-  seq.schemes = {load_scheme_text(r.scheme.text, r.scheme.label, parameters)};
-  seq.runs = {{seq.schemes.front().get(), r.levels}};
-  seq.total_levels = r.levels;
-  return seq;
-}
-
-bool has_parameter(const SchemeSequence& seq, const std::string& name) {
-  for (const auto& scheme : seq.schemes)
-    for (const auto& p : scheme->parameters)
-      if (p.name == name) return true;
-  return false;
-}
-
 // OpenSubdiv's smooth triangles (TRI_SUB_SMOOTH) are the scheme parameter "triangles"
 // (schemes/catmull-clark.json): asked for, or the mesh's `t smoothtriangles` tag, sets it
 // unless the request's parameters do. "" when nothing changes.
 std::string triangles_choice(const RefineRequest& r, const SchemeSequence& given, const std::string& label) {
   if (r.scheme.parameters.count("triangles")) return "";
   if (r.shape.smooth_triangles) {
-    if (!has_parameter(given, "triangles"))
+    if (!declares_parameter(given, "triangles"))
       throw OptionError(fmt::format("{{smooth_triangles}}: scheme '{}' has no 'triangles' parameter; smooth "
                                     "triangles (OpenSubdiv's TRI_SUB_SMOOTH) need a scheme that declares one "
                                     "({{scheme_list}} lists each scheme's parameters)",
@@ -77,12 +62,12 @@ std::string triangles_choice(const RefineRequest& r, const SchemeSequence& given
   }
   // As OpenSubdiv, a tag for a scheme without the option is ignored.
   const auto& tag = r.mesh.options.smooth_triangles;
-  return tag && has_parameter(given, "triangles") ? *tag : "";
+  return tag && declares_parameter(given, "triangles") ? *tag : "";
 }
 
 SchemeSequence load_request_scheme(const RefineRequest& r, std::string& label) {
   label = r.scheme.is_json_text ? r.scheme.label : r.scheme.text;
-  const SchemeSequence given = load_sequence(r, r.scheme.parameters);
+  const SchemeSequence given = load_surface_sequence(r.scheme, r.levels, r.scheme.parameters);
   if (r.levels_given && given.total_levels != r.levels)
     throw OptionError(fmt::format("{{scheme}} '{}' runs {} level(s), but {{levels}} asks for {}; make the counts add "
                                   "up to {}, leave one scheme without :N to take the rest, or drop {{levels}}",
@@ -91,7 +76,7 @@ SchemeSequence load_request_scheme(const RefineRequest& r, std::string& label) {
   if (triangles.empty()) return given;
   ParameterOverrides with_triangles = r.scheme.parameters;
   with_triangles["triangles"] = triangles;
-  return load_sequence(r, with_triangles);
+  return load_surface_sequence(r.scheme, r.levels, with_triangles);
 }
 
 // ---- shape options: the request's, else the mesh's tags, else the defaults -------------------

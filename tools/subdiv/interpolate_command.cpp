@@ -15,6 +15,7 @@
 #include "curve_refine.h"
 #include "interpolate_common.h"
 #include "framework/pipeline/interpolate_request.h"
+#include "framework/pipeline/scheme_source.h"
 #include "framework/pipeline/thread_limit.h"
 #include "framework/interpolation/limit_selection.h"
 #include "framework/interpolation/progressive.h"
@@ -61,13 +62,6 @@ std::optional<double> parse_number(const std::string& text) {
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), x);
   if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
   return x;
-}
-
-bool has_lambda(const SchemeSequence& seq) {
-  for (const auto& s : seq.schemes)
-    for (const auto& p : s->parameters)
-      if (p.name == "lambda") return true;
-  return false;
 }
 
 double distance(const double* a, const double* b) {
@@ -135,7 +129,7 @@ void apply_lambda(const InterpolateArgs& a, InterpolateRequest& request, Index v
   std::error_code ec;
   if (!value && !fs::is_regular_file(a.lambda, ec))
     throw Error(fmt::format("--lambda '{}' is neither a number nor a file of per-vertex values", a.lambda));
-  if (!has_lambda(load_scheme_sequence(a.scheme, a.levels, request.scheme.parameters)))
+  if (!declares_parameter(load_surface_sequence(request.scheme, a.levels, request.scheme.parameters), "lambda"))
     throw Error(fmt::format("--lambda: no scheme in '{}' has a parameter lambda; Lin et al. 2015's shape control is "
                             "--scheme catmull-clark-shape:1,catmull-clark", a.scheme));
   if (value) {
