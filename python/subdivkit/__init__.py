@@ -18,6 +18,7 @@ See docs/python.md.
 """
 
 from ._subdivkit import Error, Scheme, __version__, load_plugin, schemes
+from .adaptive import AdaptiveInfo, refine_adaptive
 from .analysis import CurveAnalysis, SurfaceAnalysis, analyze
 from .limit import LimitEvaluation, LimitStencils, LimitSurface, evaluate
 from .mesh import Mesh, read_mesh, write_mesh
@@ -61,4 +62,5 @@ __all__ = [
     "refine", "Evaluator", "stencils", "limit_positions", "interpolate", "LimitPoints", "Interpolation",
     "analyze", "SurfaceAnalysis", "CurveAnalysis",
     "evaluate", "LimitSurface", "LimitEvaluation", "LimitStencils",
+    "refine_adaptive", "AdaptiveInfo",
 ]

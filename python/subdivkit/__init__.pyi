@@ -4,6 +4,7 @@ from typing import Any
 
 from ._subdivkit import Error as Error, Scheme as Scheme, __version__ as __version__, load_plugin as load_plugin
 from ._subdivkit import schemes as schemes
+from .adaptive import AdaptiveInfo as AdaptiveInfo, refine_adaptive as refine_adaptive
 from .analysis import CurveAnalysis as CurveAnalysis, SurfaceAnalysis as SurfaceAnalysis, analyze as analyze
 from .limit import LimitEvaluation as LimitEvaluation, LimitStencils as LimitStencils
 from .limit import LimitSurface as LimitSurface, evaluate as evaluate
@@ -22,4 +23,5 @@ __all__ = [
     "refine", "Evaluator", "stencils", "limit_positions", "interpolate", "LimitPoints", "Interpolation",
     "analyze", "SurfaceAnalysis", "CurveAnalysis",
     "evaluate", "LimitSurface", "LimitEvaluation", "LimitStencils",
+    "refine_adaptive", "AdaptiveInfo",
 ]

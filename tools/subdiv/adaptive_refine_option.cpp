@@ -1,5 +1,6 @@
 #include "adaptive_refine_option.h"
 
+#include <cmath>
 #include <fmt/format.h>
 
 #include "framework/io/formats.h"
@@ -19,13 +20,14 @@ void add_adaptive_options(CLI::App* cmd, AdaptiveArgs& a) {
       ->check(CLI::Range(0, 12));
   cmd->add_option("--tolerance", a.tolerance,
                   "With --adaptive: also split every face whose bilinear patch through its corners' limit points is "
-                  "farther than T from the limit surface (measured at 5 x 5 points per face), up to level L")
-      ->check(CLI::NonNegativeNumber);
+                  "farther than T from the limit surface (measured at 5 x 5 points per face), up to level L");
 }
 
 void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& a, bool limit, bool other_levels, bool in_pieces,
                          const std::string& output, bool quiet, std::chrono::steady_clock::time_point t0) {
   if (other_levels) throw Error("--adaptive L gives the finest level: leave out -l/--levels");
+  if (!(a.tolerance >= 0) || !std::isfinite(a.tolerance))
+    throw Error(fmt::format("--tolerance {}: give a distance >= 0 (0: split only around features)", a.tolerance));
   if (in_pieces) throw Error("--adaptive refines whole meshes: leave out --pieces and --max-memory");
   const std::string ext = lowercase_extension(output);
   if (ext == ".pvd" || ext == ".pvtp")
