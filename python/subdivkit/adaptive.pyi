@@ -4,7 +4,7 @@ from typing import Literal, Mapping, overload
 import numpy as np
 import numpy.typing as npt
 
-from ._subdivkit import Scheme as Scheme
+from ._subdivkit import Scheme
 from .mesh import Mesh
 
 _SchemeArg = Scheme | str
