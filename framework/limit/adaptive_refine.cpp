@@ -1,142 +1,230 @@
 #include "framework/limit/adaptive_refine.h"
 
+#include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 
-#include "framework/analysis/surface/limit_evaluation.h"
-#include "framework/engine/refiner.h"
+#include "framework/engine/ghost_rings.h"
+#include "framework/limit/adaptive_stage.h"
+#include "framework/limit/limit_surface.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
+#include "framework/util/parallel_for_all.h"
 
 namespace subdiv {
 namespace {
 
+using Uv = std::array<double, 2>;
+
 // What a regular patch may not contain: a vertex whose faces are not the regular number
 // (inside: 4 quads or 6 triangles; on a boundary: 2 or 3, or a boundary corner of 1 or 2
-// when corners are sharp), a non-manifold vertex, a crease through it, a sharp vertex.
+// when corners are sharp), a non-manifold vertex, a crease through it, a sharp vertex, a hole.
 bool feature_vertex(const Level& L, Index v, bool triangles, const FeatureOptions& features) {
   if (L.non_manifold_vertex(v) || L.vertex_sharp(v) > 0) return true;
   for (Index e : L.ring_edges(v))
     if (L.edge_sharp(e) > 0 && !L.edge_on_boundary(e)) return true;
+  for (Index f : L.ring_faces(v))
+    if (L.is_hole(f)) return true;
   const int faces = L.incident_face_count(v);
   if (!L.on_boundary(v)) return faces != (triangles ? 6 : 4);
   if (faces == (triangles ? 3 : 2)) return false;
   return !(faces == (triangles ? 2 : 1) && features.boundary == BoundaryInterpolation::EdgesAndCorners);
 }
 
-struct Adaptive {
-  const Hierarchy& h;
-  int levels;
-  std::vector<std::vector<char>> refined;       // per level, per face
-  std::vector<std::vector<Index>> vertex_child;  // per level < L, per vertex: its child vertex
-  std::vector<std::vector<Index>> edge_child;    // per level < L, per edge: its middle vertex
-  std::vector<std::vector<Index>> finest;        // per level, per vertex: its descendant at level L
-  std::vector<std::vector<std::vector<Index>>> children;  // per level < L, per face: its child faces
-  AdaptiveMesh out;
+bool feature_face(const Level& L, Index f, bool triangles, const FeatureOptions& features) {
+  if (L.face_size(f) != (triangles ? 3 : 4)) return true;
+  for (Index v : L.face(f))
+    if (feature_vertex(L, v, triangles, features)) return true;
+  return false;
+}
 
-  // The vertices along edge (a, b) of level l from a up to b (b excluded), at the finest
-  // level either side of the edge was refined to.
-  void chain(int l, Index a, Index b, std::vector<Index>& corners) const {
-    const Level& L = h.levels[size_t(l)];
-    if (l < levels) {
-      const Index e = find_edge(L, a, b);
-      bool split = false;
-      for (int k = 0; k < L.edge_face_count(e); ++k)
-        split = split || refined[size_t(l)][size_t(L.edge_faces[size_t(2 * e + k)])];
-      if (split) {
-        const Index m = edge_child[size_t(l)][size_t(e)];
-        chain(l + 1, vertex_child[size_t(l)][size_t(a)], m, corners);
-        chain(l + 1, m, vertex_child[size_t(l)][size_t(b)], corners);
-        return;
+// The largest distance between the face's bilinear (linear) patch through its corners'
+// limit points and the limit surface, at the points (i/4, j/4) of the face.
+double deviation(const LimitSurface& surface, std::span<const double> base_points, Index base_face,
+                 std::span<const Uv> corners, bool triangles) {
+  constexpr int kSteps = 4;
+  auto limit_at = [&](const Uv& uv) {
+    return surface.evaluate(base_face, uv[0], uv[1], base_points, 3, 0).position;
+  };
+  std::vector<std::vector<double>> p;
+  for (const Uv& c : corners) p.push_back(limit_at(c));
+  double worst = 0;
+  for (int i = 0; i <= kSteps; ++i)
+    for (int j = 0; j <= kSteps; ++j) {
+      if (triangles && i + j > kSteps) continue;
+      const double s = double(i) / kSteps, t = double(j) / kSteps;
+      // Weights of the corners: bilinear on a quad, barycentric on a triangle.
+      std::vector<double> w = triangles ? std::vector<double>{1 - s - t, s, t}
+                                        : std::vector<double>{(1 - s) * (1 - t), s * (1 - t), s * t, (1 - s) * t};
+      Uv uv{0, 0};
+      double x[3] = {0, 0, 0};
+      for (size_t k = 0; k < w.size(); ++k) {
+        uv[0] += w[k] * corners[k][0], uv[1] += w[k] * corners[k][1];
+        for (int d = 0; d < 3; ++d) x[d] += w[k] * p[k][size_t(d)];
       }
+      const std::vector<double> q = limit_at(uv);
+      worst = std::max(worst, std::hypot(q[0] - x[0], q[1] - x[1], q[2] - x[2]));
     }
-    corners.push_back(finest[size_t(l)][size_t(a)]);
-  }
+  return worst;
+}
 
-  void emit(int l, Index f, Index base_face) {
-    const Level& L = h.levels[size_t(l)];
-    if (refined[size_t(l)][size_t(f)]) {
-      for (Index c : children[size_t(l)][size_t(f)]) emit(l + 1, c, base_face);
+// Marks the stage's faces to split: candidates that touch a feature or are out of tolerance.
+void choose_splits(AdaptiveStage& s, bool triangles, const AdaptiveOptions& o, std::span<const double> base_points) {
+  const Level& L = s.level;
+  s.split.assign(size_t(L.face_count()), 0);
+  parallel_for_all(size_t(L.face_count()), [&](size_t f) {
+    if (!s.candidate[f] || L.is_hole(Index(f))) return;
+    if (feature_face(L, Index(f), triangles, o.features)) {
+      s.split[f] = 1;
       return;
     }
-    const auto fv = L.face(f);
-    for (size_t k = 0; k < fv.size(); ++k) chain(l, fv[k], fv[(k + 1) % fv.size()], out.face_vertices);
-    out.face_offsets.push_back(Index(out.face_vertices.size()));
+    if (o.tolerance > 0) {
+      const Uv* c = s.corner_uv.data() + L.face_offsets[f];
+      s.split[f] = deviation(*o.surface, base_points, s.base_face[f], {c, size_t(L.face_size(Index(f)))}, triangles) >
+                   o.tolerance;
+    }
+  });
+}
+
+// Writes the output faces: every face not split, with the finer vertices along its edges.
+struct Stitcher {
+  std::vector<AdaptiveStage>& stages;
+  int levels;
+  AdaptiveMesh& out;
+  std::vector<std::pair<int, Index>> corner_vertex;  // per output corner: (stage, vertex)
+
+  bool edge_split(int l, Index a, Index b) const {
+    if (l >= levels) return false;
+    const Level& L = stages[size_t(l)].level;
+    const Index e = find_edge(L, a, b);
+    for (Index f : L.faces_of_edge(e))
+      if (stages[size_t(l)].split[size_t(f)]) return true;
+    return false;
+  }
+
+  // The vertices along edge (a, b) of stage l from a up to b (b excluded), at the finest
+  // stage either side of the edge was split to; (u, v) between those of a and b.
+  void chain(int l, Index a, Index b, const Uv& ua, const Uv& ub, bool corner) {
+    if (edge_split(l, a, b)) {
+      const AdaptiveStage& s = stages[size_t(l)];
+      const Index m = s.edge_child[size_t(find_edge(s.level, a, b))];
+      const Uv um{0.5 * (ua[0] + ub[0]), 0.5 * (ua[1] + ub[1])};
+      chain(l + 1, s.vertex_child[size_t(a)], m, ua, um, corner);
+      chain(l + 1, m, s.vertex_child[size_t(b)], um, ub, false);
+      return;
+    }
+    corner_vertex.emplace_back(l, a);
+    out.corner_uv.push_back(ua);
+    out.corner_is_face_corner.push_back(corner ? 1 : 0);
+  }
+
+  void emit(int l, Index f) {
+    const AdaptiveStage& s = stages[size_t(l)];
+    if (l < levels && s.split[size_t(f)]) {
+      for (Index c : s.children[size_t(f)]) emit(l + 1, c);
+      return;
+    }
+    const auto fv = s.level.face(f);
+    const size_t first = size_t(s.level.face_offsets[size_t(f)]);
+    for (size_t k = 0; k < fv.size(); ++k) {
+      const size_t k1 = (k + 1) % fv.size();
+      chain(l, fv[k], fv[k1], s.corner_uv[first + k], s.corner_uv[first + k1], true);
+    }
+    out.face_offsets.push_back(Index(corner_vertex.size()));
     out.face_level.push_back(l);
-    out.base_face.push_back(base_face);
+    out.base_face.push_back(s.base_face[size_t(f)]);
   }
 };
 
+// Output vertex numbers: a vertex is the same point at every stage that has it, numbered at
+// the finest; its position is that stage's point.
+void number_vertices(std::vector<AdaptiveStage>& stages, Stitcher& st, AdaptiveMesh& out) {
+  std::vector<std::vector<Index>> number(stages.size());
+  for (size_t l = 0; l < stages.size(); ++l) number[l].assign(size_t(stages[l].level.vertex_count), kNone);
+  for (const auto& [l0, v0] : st.corner_vertex) {
+    int l = l0;
+    Index v = v0;
+    while (size_t(l) + 1 < stages.size() && !stages[size_t(l)].vertex_child.empty() &&
+           stages[size_t(l)].vertex_child[size_t(v)] != kNone)
+      v = stages[size_t(l)].vertex_child[size_t(v)], ++l;
+    Index& n = number[size_t(l)][size_t(v)];
+    if (n == kNone) {
+      n = Index(out.positions.size() / 3);
+      const auto& p = stages[size_t(l)].points;
+      out.positions.insert(out.positions.end(), p.begin() + 3 * v, p.begin() + 3 * v + 3);
+    }
+    out.face_vertices.push_back(n);
+  }
+}
+
+// Every vertex moved to the limit surface, evaluated at one of its corners' (face, u, v).
+void move_to_limit(AdaptiveMesh& out, const LimitSurface& surface, std::span<const double> base_points) {
+  const size_t count = out.positions.size() / 3;
+  std::vector<size_t> face_of(count, SIZE_MAX), corner_of(count, SIZE_MAX);
+  for (size_t f = 0; f + 1 < out.face_offsets.size(); ++f)
+    for (Index k = out.face_offsets[f]; k < out.face_offsets[f + 1]; ++k)
+      if (const size_t v = size_t(out.face_vertices[size_t(k)]); corner_of[v] == SIZE_MAX)
+        face_of[v] = f, corner_of[v] = size_t(k);
+  parallel_for_all(count, [&](size_t v) {
+    const Uv& uv = out.corner_uv[corner_of[v]];
+    const std::vector<double> p =
+        surface.evaluate(out.base_face[face_of[v]], uv[0], uv[1], base_points, 3, 0).position;
+    std::copy(p.begin(), p.end(), out.positions.begin() + std::ptrdiff_t(3 * v));
+  });
+}
+
+Index uniform_face_count(const Level& base, bool triangles, int levels) {
+  double faces = triangles || levels == 0 ? double(base.face_count()) : double(base.corner_count());
+  for (int l = triangles ? 0 : 1; l < levels; ++l) faces *= 4;
+  return Index(faces);
+}
+
 }  // namespace
 
-AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<const double> positions, int levels,
-                             const FeatureOptions& features, bool limit) {
+AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<const double> positions,
+                             const AdaptiveOptions& options) {
   const SplitKind split = scheme.split();
   if (split != SplitKind::Quad && split != SplitKind::Triangle)
     throw Error(fmt::format("scheme '{}': adaptive refinement is implemented for the binary quad and triangle splits "
                             "only so far",
                             scheme.name));
+  const int levels = options.levels;
   if (levels < 0 || levels > 12) throw Error(fmt::format("adaptive refinement to level {}: give 0 to 12", levels));
+  if ((options.limit || options.tolerance > 0) && !options.surface)
+    throw Error("adaptive refinement: limit positions and a tolerance need the limit surface's evaluator");
+  if (!base.manifold())
+    throw Error("adaptive refinement: the mesh is not manifold (an edge with more than two faces, or a vertex "
+                "where two fans of faces meet); refine it uniformly");
   const bool triangles = split == SplitKind::Triangle;
-  RefineOptions ro;
-  ro.levels = levels;
-  ro.features = features;
-  const Hierarchy h = refine(scheme, base, ro);
-  Adaptive a{h, levels, {}, {}, {}, {}, {}, {}};
+  const SchemeRun run{&scheme, 1};
+  const int ghosts = ghost_rings({&run, 1});
+  const int rings = std::max(ghosts, 1);
+
+  std::vector<AdaptiveStage> stages;
+  stages.push_back(base_stage(base, positions, triangles));
+  AdaptiveMesh out;
   for (int l = 0; l < levels; ++l) {
-    const Level& L = h.levels[size_t(l)];
-    const ChildOrigins& o = h.origins[size_t(l)];
-    std::vector<Index> vc(size_t(L.vertex_count), kNone), ec(size_t(L.edge_count()), kNone);
-    for (size_t c = 0; c < o.kind.size(); ++c) {
-      if (o.kind[c] == OriginKind::Vertex) vc[size_t(o.parent[c])] = Index(c);
-      if (o.kind[c] == OriginKind::Edge) ec[size_t(o.parent[c])] = Index(c);
-    }
-    std::vector<char> feature(size_t(L.vertex_count));
-    for (Index v = 0; v < L.vertex_count; ++v) feature[size_t(v)] = feature_vertex(L, v, triangles, features);
-    std::vector<char> refine_face(size_t(L.face_count()), 0);
-    for (Index f = 0; f < L.face_count(); ++f) {
-      if (L.is_hole(f)) continue;
-      bool irregular = L.face_size(f) != (triangles ? 3 : 4);
-      for (Index v : L.face(f)) irregular = irregular || feature[size_t(v)];
-      refine_face[size_t(f)] = irregular;
-    }
-    a.refined.push_back(std::move(refine_face));
-    std::vector<std::vector<Index>> children(size_t(L.face_count()));
-    for (size_t c = 0; c < o.parent_face.size(); ++c)
-      if (o.parent_face[c] != kNone) children[size_t(o.parent_face[c])].push_back(Index(c));
-    a.children.push_back(std::move(children));
-    a.vertex_child.push_back(std::move(vc));
-    a.edge_child.push_back(std::move(ec));
+    AdaptiveStage& s = stages.back();
+    choose_splits(s, triangles, options, positions);
+    const Index split_count = Index(std::count(s.split.begin(), s.split.end(), 1));
+    out.split_faces.push_back(split_count);
+    if (split_count == 0) break;
+    RefineOptions ro;
+    ro.levels = 1;
+    ro.features = options.features;
+    ro.first_step = options.first_step + l;
+    AdaptiveStage next = refine_stage(scheme, s, rings, ghosts, ro, triangles);
+    out.computed_faces.push_back(next.level.face_count());
+    stages.push_back(std::move(next));
   }
-  a.refined.emplace_back(size_t(h.levels.back().face_count()), 0);
-  // Each vertex's descendant at level L: the finest level's own vertices, then back up.
-  a.finest.resize(size_t(levels) + 1);
-  const Index fine_count = h.levels.back().vertex_count;
-  for (Index v = 0; v < fine_count; ++v) a.finest.back().push_back(v);
-  for (int l = levels; l-- > 0;) {
-    for (Index c : a.vertex_child[size_t(l)]) a.finest[size_t(l)].push_back(a.finest[size_t(l) + 1][size_t(c)]);
-  }
+  const int reached = int(stages.size()) - 1;
+  Stitcher st{stages, reached, out, {}};
   for (Index f = 0; f < base.face_count(); ++f)
-    if (!base.is_hole(f)) a.emit(0, f, f);
-  // Positions of the level-L vertices used, numbered in order of first use.
-  std::vector<double> fine(positions.begin(), positions.end());
-  for (int l = 0; l < levels; ++l) fine = h.stencils[size_t(l)].apply(fine, 3);
-  if (limit) {
-    LimitOptions lo;
-    lo.features = features;
-    lo.first_step = levels;
-    fine = limit_positions(scheme, h.levels.back(), fine, lo).positions;
-  }
-  std::vector<Index> number(size_t(fine_count), kNone);
-  AdaptiveMesh& out = a.out;
-  for (Index& v : out.face_vertices) {
-    if (number[size_t(v)] == kNone) {
-      number[size_t(v)] = Index(out.positions.size() / 3);
-      out.positions.insert(out.positions.end(), fine.begin() + 3 * size_t(v), fine.begin() + 3 * size_t(v) + 3);
-    }
-    v = number[size_t(v)];
-  }
-  out.uniform_faces = h.levels.back().face_count();
-  return std::move(a.out);
+    if (!base.is_hole(f)) st.emit(0, f);
+  number_vertices(stages, st, out);
+  if (options.limit) move_to_limit(out, *options.surface, positions);
+  out.uniform_faces = uniform_face_count(base, triangles, levels);
+  return out;
 }
 
 }  // namespace subdiv

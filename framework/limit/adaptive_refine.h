@@ -1,20 +1,24 @@
 #pragma once
-// Feature-adaptive refinement (a first step towards OpenSubdiv's RefineAdaptive, Nießner,
-// Loop, Meyer & DeRose 2012, "Feature-adaptive GPU rendering of Catmull-Clark subdivision
-// surfaces"): only the faces that touch what is irregular — an extraordinary vertex, a
-// crease, a sharp or semi-sharp vertex, a face of another shape than the split makes — are
-// refined, level after level up to L; regular regions stay coarse.
+// Feature-adaptive refinement (OpenSubdiv's RefineAdaptive; Nießner, Loop, Meyer & DeRose
+// 2012, "Feature-adaptive GPU rendering of Catmull-Clark subdivision surfaces"): only the
+// faces that touch what is irregular — an extraordinary vertex, a crease, a sharp or
+// semi-sharp vertex, a hole, a face of another shape than the split makes — are split, level
+// after level up to L; with a tolerance, also every face whose bilinear (linear, for
+// triangles) patch through its corners' limit points is farther than the tolerance from the
+// limit surface. Regular regions within tolerance stay coarse.
+//
+// The work is local (adaptive_stage.h): each level refines only the faces to split, a few
+// rings around them (so the next level's faces to split have their neighbourhood) and the
+// ghost rings the scheme's rules read, so its cost grows with the number of features, not
+// with 4^L.
 //
 // The mesh is watertight: a coarse face next to finer ones takes the finer vertices along
 // its edges as corners of its own (a transition polygon), so no edge ends in the middle of
-// another (no T-junction) and every interior edge has exactly two faces. Each vertex is
-// placed where the uniform level L puts it (or on the limit surface, with `limit`), so the
-// faces of different levels meet without cracks.
-//
-// First step: the positions come from a uniform refinement to level L (the output is
-// adaptive, the work is not yet); no flatness or curvature criterion (--tolerance); the
-// transition faces are polygons, not OpenSubdiv's triangulated transition patterns.
-#include <memory>
+// another (no T-junction) and every interior edge has exactly two faces. A vertex is placed
+// where the finest level that computed it puts it (every vertex of uniform level L when all
+// faces are split), or on the limit surface with `limit`.
+#include <array>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -24,18 +28,40 @@
 namespace subdiv {
 
 struct Scheme;
+class LimitSurface;
 
-struct AdaptiveMesh {
-  std::vector<double> positions;            // xyz per vertex
-  std::vector<Index> face_offsets{0}, face_vertices;
-  std::vector<int> face_level;              // per face: the level it comes from
-  std::vector<Index> base_face;             // per face: the base face it lies in
-  Index uniform_faces = 0;                  // faces of the uniform level L, for comparison
+struct AdaptiveOptions {
+  int levels = 0;            // the cap L, 0..12
+  FeatureOptions features;   // as for refinement
+  int first_step = 0;        // steps the input has already been through
+  bool limit = false;        // every vertex on the limit surface (needs `surface`)
+  // > 0: also split a face (below level L) while the largest distance between its
+  // bilinear/linear patch through its corners' limit points and the limit surface, at the
+  // 5 x 5 points (i/4, j/4) of the face (15 on a triangle), exceeds it (needs `surface`).
+  double tolerance = 0;
+  // The exact evaluator of the same scheme, base level and features (limit_surface.h).
+  const LimitSurface* surface = nullptr;
 };
 
-// Throws subdiv::Error for a split other than the binary quad and triangle splits, and for
-// levels outside 0..12.
-AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<const double> positions, int levels,
-                             const FeatureOptions& features, bool limit);
+struct AdaptiveMesh {
+  std::vector<double> positions;  // xyz per vertex
+  std::vector<Index> face_offsets{0}, face_vertices;
+  std::vector<int> face_level;    // per face: the level it comes from
+  std::vector<Index> base_face;   // per face: the base face it lies in
+  // Per face corner (face_vertices' order): its (u, v) in the face's base face (Bfr's
+  // parameterisation, face_domain.h), and 1 where it is a corner of the level's face, 0
+  // where it is a finer vertex along one of its edges (a transition polygon's).
+  std::vector<std::array<double, 2>> corner_uv;
+  std::vector<std::uint8_t> corner_is_face_corner;
+  Index uniform_faces = 0;            // faces of the uniform level L, for comparison
+  std::vector<Index> split_faces;     // per level < L: faces split for the output
+  std::vector<Index> computed_faces;  // per level 1..L: child faces computed (the work)
+};
+
+// Throws subdiv::Error for a split other than the binary quad and triangle splits, levels
+// outside 0..12, a non-manifold mesh, a triangle split of a mesh with other faces, and
+// `limit` or `tolerance` without a surface.
+AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<const double> positions,
+                             const AdaptiveOptions& options);
 
 }  // namespace subdiv

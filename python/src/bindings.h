@@ -136,5 +136,6 @@ void bind_limits(py::module_& m);
 void bind_plugins(py::module_& m);
 void bind_parameterize(py::module_& m);
 void bind_limit_surface(py::module_& m);
+void bind_adaptive(py::module_& m);  // bind_adaptive.cpp
 
 }  // namespace subdivkit

@@ -35,4 +35,5 @@ PYBIND11_MODULE(_subdivkit, m) {
   subdivkit::bind_plugins(m);
   subdivkit::bind_parameterize(m);
   subdivkit::bind_limit_surface(m);
+  subdivkit::bind_adaptive(m);
 }

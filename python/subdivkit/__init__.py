@@ -19,6 +19,7 @@ See docs/python.md.
 """
 
 from ._subdivkit import Error, Scheme, __version__, load_plugin, schemes
+from .adaptive import AdaptiveInfo, refine_adaptive
 from .analysis import CurveAnalysis, SurfaceAnalysis, analyze
 from .conversions import from_open3d, from_trimesh, from_vtk, to_open3d, to_trimesh, to_vtk
 from .limit import LimitEvaluation, LimitStencils, LimitSurface, evaluate
@@ -64,4 +65,5 @@ __all__ = [
     "analyze", "SurfaceAnalysis", "CurveAnalysis",
     "evaluate", "LimitSurface", "LimitEvaluation", "LimitStencils",
     "from_vtk", "to_vtk", "from_open3d", "to_open3d", "from_trimesh", "to_trimesh",
+    "refine_adaptive", "AdaptiveInfo",
 ]

@@ -4,6 +4,7 @@ from typing import Any
 
 from ._subdivkit import Error as Error, Scheme as Scheme, __version__ as __version__, load_plugin as load_plugin
 from ._subdivkit import schemes as schemes
+from .adaptive import AdaptiveInfo as AdaptiveInfo, refine_adaptive as refine_adaptive
 from .analysis import CurveAnalysis as CurveAnalysis, SurfaceAnalysis as SurfaceAnalysis, analyze as analyze
 from .conversions import from_open3d as from_open3d, from_trimesh as from_trimesh, from_vtk as from_vtk
 from .conversions import to_open3d as to_open3d, to_trimesh as to_trimesh, to_vtk as to_vtk
@@ -25,4 +26,5 @@ __all__ = [
     "analyze", "SurfaceAnalysis", "CurveAnalysis",
     "evaluate", "LimitSurface", "LimitEvaluation", "LimitStencils",
     "from_vtk", "to_vtk", "from_open3d", "to_open3d", "from_trimesh", "to_trimesh",
+    "refine_adaptive", "AdaptiveInfo",
 ]

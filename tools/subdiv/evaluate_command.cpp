@@ -14,7 +14,7 @@
 #include "framework/io/formats.h"
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
-#include "framework/limit/adaptive_refine.h"
+#include "framework/pipeline/adaptive_request.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/limit/tessellation.h"
 #include "framework/pipeline/evaluate_request.h"
@@ -154,19 +154,6 @@ EvaluateRequest evaluate_request(const EvaluateArgs& a) {
   return r;
 }
 
-// The adaptive mesh with the level and base face of every face.
-MeshData adaptive_mesh(AdaptiveMesh&& a) {
-  MeshData m;
-  m.positions = std::move(a.positions);
-  m.face_offsets = std::move(a.face_offsets);
-  m.face_vertices = std::move(a.face_vertices);
-  DataArray level{"face_level", 1, {}, true}, face{"base_face", 1, {}, true};
-  for (int l : a.face_level) level.values.push_back(double(l));
-  for (Index f : a.base_face) face.values.push_back(double(f));
-  m.cell_data = {std::move(level), std::move(face)};
-  return m;
-}
-
 void run(const EvaluateArgs& a) {
   const int modes = int(!a.at.empty()) + int(a.samples > 0) + int(a.adaptive >= 0);
   if (modes != 1)
@@ -178,19 +165,19 @@ void run(const EvaluateArgs& a) {
     throw Error(fmt::format("-o '{}': --at writes .csv (face,u,v,x,y,z[,du_*,dv_*[,duu_*,duv_*,dvv_*]])", a.output));
   if ((a.samples > 0 || a.adaptive >= 0) && ext == ".csv")
     throw Error(fmt::format("-o '{}': --samples and --adaptive write a mesh (.vtp, .obj, .ply, .off, .stl)", a.output));
-  const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a));
-  for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
   const int threads = a.threads > 0 ? a.threads : int(tbb::this_task_arena::max_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-  if (a.samples > 0) {
-    write_mesh(a.output, tessellation_mesh(tessellate(*prepared.surface, prepared.mesh.positions, a.samples)));
+  if (a.adaptive >= 0) {  // the same as subdiv refine --adaptive L (adaptive_refine_option.cpp)
+    AdaptiveResult r = refine_adaptive_request(adaptive_request_from(evaluate_request(a), a.adaptive, 0, a.limit));
+    for (const std::string& w : r.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
+    fmt::print("subdiv: {}\n", adaptive_summary(r));
+    write_mesh(a.output, adaptive_mesh_data(std::move(r.mesh)));
     return;
   }
-  if (a.adaptive >= 0) {
-    AdaptiveMesh m = refine_adaptive(*prepared.scheme, prepared.surface->base(), prepared.mesh.positions, a.adaptive,
-                                     prepared.surface->options().features, a.limit);
-    fmt::print("subdiv: {} faces (uniform level {}: {})\n", m.face_offsets.size() - 1, a.adaptive, m.uniform_faces);
-    write_mesh(a.output, adaptive_mesh(std::move(m)));
+  const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a));
+  for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
+  if (a.samples > 0) {
+    write_mesh(a.output, tessellation_mesh(tessellate(*prepared.surface, prepared.mesh.positions, a.samples)));
     return;
   }
   const std::vector<Query> queries = read_points(a.at, *prepared.surface);

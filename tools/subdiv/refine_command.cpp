@@ -18,6 +18,7 @@
 #include "process_group.h"
 #include "progress.h"
 #include "shared_options.h"
+#include "adaptive_refine_option.h"
 
 namespace subdiv::cli {
 namespace {
@@ -46,6 +47,7 @@ struct RefineArgs {
   bool timings = false;      // --timings
   bool force = false;        // --force: -o may be the input mesh
   std::string weights;       // --weights NAME: the point array of rational weights
+  AdaptiveArgs adaptive;     // --adaptive L, --tolerance T
   bool in_pieces() const { return pieces_given || !max_memory.empty(); }
 };
 
@@ -167,6 +169,9 @@ void run(const RefineArgs& a) {
   if (!threads.note().empty() && !a.quiet) fmt::print(stderr, "subdiv: note: {}\n", threads.note());
   Progress progress(a.timings, a.quiet);
   RefineRequest request = refine_request(a, output, progress);
+  if (a.adaptive.given())
+    return run_adaptive_refine(std::move(request), a.adaptive, a.limit, a.levels_given, a.in_pieces(), a.output,
+                               a.quiet, t0);
   PreparedRefinement prepared = prepare_refinement(request);
   print_warnings(prepared.warnings);
   if (a.in_pieces()) return run_in_pieces(a, request, prepared, output, progress, t0);
@@ -253,6 +258,7 @@ void add_refine_command(CLI::App& app) {
                   "exactly (docs/rational.md). Default: OBJ's 'v x y z w', or a point array named 'weight'");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   add_output_options(cmd, args->output_format);
+  add_adaptive_options(cmd, args->adaptive);
   cmd->add_flag("--timings", args->timings,
                 "Print each step's wall time and the peak memory so far on stderr (reading, topology, each "
                 "level's values, writing)");

@@ -16,6 +16,15 @@ using namespace subdiv;
 
 namespace {
 
+AdaptiveMesh adapt(const Scheme& scheme, const Level& base, std::span<const double> points, int levels,
+                   const LimitSurface* limit = nullptr) {
+  AdaptiveOptions o;
+  o.levels = levels;
+  o.limit = limit != nullptr;
+  o.surface = limit;
+  return refine_adaptive(scheme, base, points, o);
+}
+
 Level level_of(const AdaptiveMesh& m) {
   return build_level(Index(m.positions.size() / 3), m.face_offsets, m.face_vertices);
 }
@@ -36,7 +45,7 @@ TEST_CASE("Adaptive Catmull-Clark on a cube: closed, watertight, refined only at
   const auto scheme = load_scheme("catmull-clark");
   for (int levels : {1, 3, 5}) {
     CAPTURE(levels);
-    const AdaptiveMesh m = refine_adaptive(*scheme, cube.level(), cube.positions, levels, {}, false);
+    const AdaptiveMesh m = adapt(*scheme, cube.level(), cube.positions, levels);
     check_closed_and_watertight(m, 2);
     CHECK(m.uniform_faces == 6 * (1 << (2 * levels)));
     const Index faces = Index(m.face_offsets.size()) - 1;
@@ -52,11 +61,11 @@ TEST_CASE("Adaptive Catmull-Clark on a cube: closed, watertight, refined only at
 
 TEST_CASE("Adaptive refinement of a regular torus refines nothing; Loop on an octahedron is watertight") {
   const test::Mesh torus = test::torus(8, 6);
-  const AdaptiveMesh t = refine_adaptive(*load_scheme("catmull-clark"), torus.level(), torus.positions, 3, {}, false);
+  const AdaptiveMesh t = adapt(*load_scheme("catmull-clark"), torus.level(), torus.positions, 3);
   CHECK(Index(t.face_offsets.size()) - 1 == 48);
   check_closed_and_watertight(t, 0);
   const test::Mesh octa = limit_test::octahedron();
-  const AdaptiveMesh o = refine_adaptive(*load_scheme("loop"), octa.level(), octa.positions, 4, {}, false);
+  const AdaptiveMesh o = adapt(*load_scheme("loop"), octa.level(), octa.positions, 4);
   check_closed_and_watertight(o, 2);
   CHECK(Index(o.face_offsets.size()) - 1 < o.uniform_faces);
 }
@@ -64,9 +73,9 @@ TEST_CASE("Adaptive refinement of a regular torus refines nothing; Loop on an oc
 TEST_CASE("Adaptive refinement with limit positions: the base vertices are the limit surface's corners") {
   const test::Mesh cube = test::cube();
   const auto scheme = load_scheme("catmull-clark");
-  const AdaptiveMesh m = refine_adaptive(*scheme, cube.level(), cube.positions, 3, {}, true);
-  check_closed_and_watertight(m, 2);
   const LimitSurface surface(scheme, cube.level());
+  const AdaptiveMesh m = adapt(*scheme, cube.level(), cube.positions, 3, &surface);
+  check_closed_and_watertight(m, 2);
   // Every corner of every base face, evaluated on the limit surface, is a vertex of the mesh.
   const Level base = cube.level();
   const double corner_uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -89,7 +98,7 @@ TEST_CASE("Adaptive refinement of an open grid with a crease: faces along the cr
   base.edge_sharpness.assign(size_t(base.edge_count()), 0.f);
   base.edge_sharpness[size_t(find_edge(base, 8, 9))] = 10.f;
   base.edge_sharpness[size_t(find_edge(base, 9, 10))] = 10.f;
-  const AdaptiveMesh m = refine_adaptive(*load_scheme("catmull-clark"), base, grid.positions, 3, {}, false);
+  const AdaptiveMesh m = adapt(*load_scheme("catmull-clark"), base, grid.positions, 3);
   const Level L = level_of(m);
   int bad = 0, boundary = 0;
   for (Index e = 0; e < L.edge_count(); ++e) {

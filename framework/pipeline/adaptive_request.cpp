@@ -1,0 +1,107 @@
+#include "framework/pipeline/adaptive_request.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "framework/io/mesh_read.h"
+#include "framework/limit/limit_surface.h"
+#include "framework/pipeline/refine_pipeline.h"
+#include "framework/util/option_spelling.h"
+
+namespace subdiv {
+namespace {
+
+void check_request(const AdaptiveRequest& r) {
+  if (r.refine.levels < 0 || r.refine.levels > 12)
+    throw OptionError(fmt::format("{{levels}} {}: adaptive refinement goes to level 0 to 12", r.refine.levels));
+  if (!(r.tolerance >= 0) || !std::isfinite(r.tolerance))
+    throw OptionError(fmt::format("{{tolerance}} {}: give a distance >= 0 (0: split only around features)",
+                                  r.tolerance));
+}
+
+}  // namespace
+
+AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
+  check_request(request);
+  RefineRequest& r = request.refine;
+  if (!r.mesh_file.empty()) {
+    r.mesh = read_mesh(r.mesh_file);
+    if (r.mesh_name.empty()) r.mesh_name = r.mesh_file;
+    r.mesh_file.clear();
+  }
+  if (r.mesh_name.empty()) r.mesh_name = "mesh";
+  const int levels = r.levels;
+  r.levels_given = false;  // a sequence is refused below in its own words
+  PreparedRefinement p = prepare_refinement(r);
+  if (p.sequence.schemes.size() != 1)
+    throw Error(fmt::format("{}: '{}' is a sequence of schemes; adaptive refinement takes one scheme", r.mesh_name,
+                            p.scheme_label));
+  if (p.rational)
+    throw Error(fmt::format("{}: adaptive refinement of rational meshes (weights in '{}') is not implemented; refine "
+                            "uniformly",
+                            r.mesh_name, p.weights_name));
+  AdaptiveOptions o;
+  o.levels = levels;
+  o.features = p.options.features;
+  o.first_step = p.options.first_step;
+  o.limit = request.limit;
+  o.tolerance = request.tolerance;
+  AdaptiveResult out;
+  try {
+    std::shared_ptr<const LimitSurface> surface;
+    if (o.limit || o.tolerance > 0) {
+      LimitSurfaceOptions lo;
+      lo.features = p.options.features;
+      surface = std::make_shared<const LimitSurface>(p.sequence.schemes.front(), p.base, lo);
+      o.surface = surface.get();
+    }
+    out.mesh = refine_adaptive(*p.sequence.schemes.front(), p.base, p.mesh.positions, o);
+  } catch (const OptionError&) {
+    throw;
+  } catch (const Error& e) {
+    throw Error(fmt::format("{}: {}", r.mesh_name, e.what()));
+  }
+  out.scheme_label = std::move(p.scheme_label);
+  out.levels = levels;
+  out.warnings = std::move(p.warnings);
+  out.notes = std::move(p.notes);
+  return out;
+}
+
+AdaptiveRequest adaptive_request_from(EvaluateRequest e, int levels, double tolerance, bool limit) {
+  AdaptiveRequest a;
+  a.refine.mesh_file = std::move(e.mesh_file);
+  a.refine.mesh = std::move(e.mesh);
+  a.refine.mesh_name = std::move(e.mesh_name);
+  a.refine.scheme = std::move(e.scheme);
+  a.refine.shape = e.shape;
+  a.refine.feature_file = std::move(e.feature_file);
+  a.refine.feature_angle = e.feature_angle;
+  a.refine.levels = levels;
+  a.tolerance = tolerance;
+  a.limit = limit;
+  return a;
+}
+
+MeshData adaptive_mesh_data(AdaptiveMesh&& a) {
+  MeshData m;
+  m.positions = std::move(a.positions);
+  m.face_offsets = std::move(a.face_offsets);
+  m.face_vertices = std::move(a.face_vertices);
+  DataArray level{"face_level", 1, {}, true}, face{"base_face", 1, {}, true};
+  for (int l : a.face_level) level.values.push_back(double(l));
+  for (Index f : a.base_face) face.values.push_back(double(f));
+  m.cell_data = {std::move(level), std::move(face)};
+  return m;
+}
+
+std::string adaptive_summary(const AdaptiveResult& r) {
+  const AdaptiveMesh& m = r.mesh;
+  std::string split;
+  for (Index n : m.split_faces) split += fmt::format(" {}", n);
+  return fmt::format("{} faces, {} vertices (uniform level {}: {} faces); faces split per level:{}",
+                     m.face_offsets.size() - 1, m.positions.size() / 3, r.levels, m.uniform_faces,
+                     split.empty() ? " none" : split);
+}
+
+}  // namespace subdiv

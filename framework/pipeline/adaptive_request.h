@@ -1,0 +1,45 @@
+#pragma once
+// Feature-adaptive refinement as every front-end asks for it (`subdiv refine --adaptive L`,
+// `subdiv evaluate --adaptive L`, Python's subdivkit.refine_adaptive): the mesh, scheme and
+// shape options of a RefineRequest, loaded as a refinement loads them (prepare_refinement),
+// then limit/adaptive_refine.h up to the request's level with an optional tolerance.
+#include <string>
+#include <vector>
+
+#include "framework/io/mesh_data.h"
+#include "framework/limit/adaptive_refine.h"
+#include "framework/pipeline/evaluate_request.h"
+#include "framework/pipeline/refine_request.h"
+
+namespace subdiv {
+
+struct AdaptiveRequest {
+  RefineRequest refine;   // the mesh, scheme, shape options; `levels` is the cap L
+  double tolerance = 0;   // > 0: also split faces farther than this from the limit surface
+  bool limit = false;     // every vertex on the limit surface
+};
+
+struct AdaptiveResult {
+  AdaptiveMesh mesh;
+  std::string scheme_label;
+  int levels = 0;
+  std::vector<std::string> warnings;  // the mesh reader's, clean-up's
+  std::vector<std::string> notes;     // feature files and angles applied
+};
+
+// Throws subdiv::Error naming the mesh (a sequence of schemes, rational weights, a split
+// other than the binary quad and triangle splits, a scheme whose limit cannot be evaluated
+// when a tolerance or limit positions are asked for), or subdiv::OptionError naming an
+// option ({levels} outside 0..12, {tolerance} negative or not a number).
+AdaptiveResult refine_adaptive_request(AdaptiveRequest request);
+
+// The mesh, scheme and shape options of an evaluation's request (subdiv evaluate --adaptive).
+AdaptiveRequest adaptive_request_from(EvaluateRequest evaluation, int levels, double tolerance, bool limit);
+
+// The adaptive mesh as a mesh to write: cell arrays face_level and base_face.
+MeshData adaptive_mesh_data(AdaptiveMesh&& mesh);
+
+// One line for people: "N faces, levels 0..L (uniform level L: M); faces split per level: a b c".
+std::string adaptive_summary(const AdaptiveResult& result);
+
+}  // namespace subdiv

@@ -1,0 +1,56 @@
+// subdivkit.refine_adaptive: feature-adaptive refinement through the pipeline's adaptive
+// request (framework/pipeline/adaptive_request.h), the same as `subdiv refine --adaptive L`.
+#include "bindings.h"
+#include "framework/pipeline/adaptive_request.h"
+
+namespace subdivkit {
+namespace {
+
+py::dict refine_adaptive(py::handle mesh, py::handle scheme, py::handle params, int levels, double tolerance,
+                         bool limit, const std::string& boundary, const std::string& crease_method,
+                         double feature_angle, int threads) {
+  subdiv::AdaptiveRequest r;
+  r.refine.mesh = mesh_from_python(mesh);
+  r.refine.mesh_name = mesh_name(mesh);
+  r.refine.scheme = scheme_source_from(scheme, params);
+  r.refine.shape.boundary = boundary_from(boundary);
+  r.refine.shape.crease_method = crease_method_from(crease_method);
+  r.refine.feature_angle = feature_angle;
+  r.refine.levels = levels;
+  r.tolerance = tolerance;
+  r.limit = limit;
+  subdiv::AdaptiveResult result;
+  {
+    py::gil_scoped_release unlocked;
+    const subdiv::ThreadLimit limit_threads(threads);
+    result = subdiv::refine_adaptive_request(std::move(r));
+  }
+  subdiv::AdaptiveMesh& a = result.mesh;
+  py::dict out;
+  out["summary"] = subdiv::adaptive_summary(result);
+  out["warnings"] = result.warnings;
+  out["uniform_faces"] = a.uniform_faces;
+  out["split_faces"] = a.split_faces;
+  const auto faces = py::ssize_t(a.face_level.size()), corners = py::ssize_t(a.corner_uv.size());
+  std::vector<double> uv;
+  for (const auto& c : a.corner_uv) uv.insert(uv.end(), {c[0], c[1]});
+  out["corner_uv"] = adopt(std::move(uv), {corners, 2});
+  out["face_level"] = adopt(std::vector<Index>(a.face_level.begin(), a.face_level.end()), {faces});
+  out["base_face"] = adopt(std::move(a.base_face), {faces});
+  subdiv::MeshData m;
+  m.positions = std::move(a.positions);
+  m.face_offsets = std::move(a.face_offsets);
+  m.face_vertices = std::move(a.face_vertices);
+  out["mesh"] = mesh_to_python(std::move(m));
+  return out;
+}
+
+}  // namespace
+
+void bind_adaptive(py::module_& m) {
+  m.def("_refine_adaptive", &refine_adaptive, py::arg("mesh"), py::arg("scheme"), py::arg("params"),
+        py::arg("levels"), py::arg("tolerance"), py::arg("limit"), py::arg("boundary"), py::arg("crease_method"),
+        py::arg("feature_angle"), py::arg("threads"), "The work of subdivkit.refine_adaptive.");
+}
+
+}  // namespace subdivkit

@@ -1,0 +1,85 @@
+"""subdivkit.refine_adaptive: feature-adaptive refinement through the pipeline.
+
+Properties: the command line writes the same mesh (both translate one request); the mesh is
+closed and watertight (every edge in exactly two faces, Euler characteristic 2 on a cube);
+the faces grow linearly with the level, not as 4^L; with limit=True every vertex is on the
+limit surface (subdivkit.evaluate at its corner's (face, u, v)); with a tolerance, the
+bilinear patches of the faces are within it at 9 x 9 points; bad arguments are refused."""
+import numpy as np
+import pytest
+
+import subdivkit as sk
+from conftest import MESHES, run_cli
+
+
+def cube():
+    return sk.read_mesh(str(MESHES / "cube.obj"))
+
+
+def edges_faces(mesh):
+    counts = {}
+    off, idx = mesh.face_offsets, mesh.face_indices
+    for f in range(mesh.n_faces):
+        corners = idx[off[f]:off[f + 1]]
+        for a, b in zip(corners, np.roll(corners, -1)):
+            key = (min(a, b), max(a, b))
+            counts[key] = counts.get(key, 0) + 1
+    return counts
+
+
+def test_closed_watertight_and_linear_in_the_level():
+    faces = []
+    for levels in range(1, 7):
+        m = sk.refine_adaptive(cube(), "catmull-clark", levels)
+        counts = edges_faces(m)
+        assert set(counts.values()) == {2}
+        assert m.n_points - len(counts) + m.n_faces == 2
+        assert m.cell_data["face_level"].max() == levels
+        faces.append(m.n_faces)
+    steps = np.diff(faces)
+    assert np.all(steps[2:] == steps[2])  # the same number of faces added per level
+
+
+def test_limit_points_are_the_evaluators_and_the_tolerance_holds():
+    mesh = cube()
+    m, info = sk.refine_adaptive(mesh, "catmull-clark", 5, tolerance=0.01, limit=True, info=True)
+    assert info.uniform_faces == 6 * 4 ** 5 and m.n_faces < info.uniform_faces // 10
+    base = m.cell_data["base_face"]
+    face_of_corner = np.repeat(base, np.diff(m.face_offsets))
+    r = sk.evaluate(mesh, "catmull-clark", face_of_corner, info.corner_uv, derivatives=0)
+    assert np.abs(r.points - m.points[m.face_indices]).max() < 1e-12
+    # Quads: the bilinear patch of the face's own corners (the extreme (u, v)) against the limit.
+    worst = 0.0
+    for f in range(0, m.n_faces, 7):
+        uv = info.corner_uv[m.face_offsets[f]:m.face_offsets[f + 1]]
+        p = m.points[m.face_indices[m.face_offsets[f]:m.face_offsets[f + 1]]]
+        lo, hi = uv.min(axis=0), uv.max(axis=0)
+        corner = [np.flatnonzero(np.all(np.isclose(uv, c), axis=1))[0]
+                  for c in ([lo[0], lo[1]], [hi[0], lo[1]], [hi[0], hi[1]], [lo[0], hi[1]])]
+        s, t = np.meshgrid(np.linspace(0, 1, 9), np.linspace(0, 1, 9))
+        s, t = s.ravel(), t.ravel()
+        w = np.stack([(1 - s) * (1 - t), s * (1 - t), s * t, (1 - s) * t], axis=1)
+        q = np.stack([lo[0] + s * (hi[0] - lo[0]), lo[1] + t * (hi[1] - lo[1])], axis=1)
+        exact = sk.evaluate(mesh, "catmull-clark", np.full(len(q), base[f]), q, derivatives=0).points
+        worst = max(worst, np.linalg.norm(w @ p[corner] - exact, axis=1).max())
+    assert worst <= 0.01
+
+
+def test_the_command_line_writes_the_same_mesh(tmp_path):
+    out = tmp_path / "adaptive.obj"
+    printed = run_cli("refine", MESHES / "cube.obj", "--adaptive", "4", "--limit", "-o", out).stdout
+    assert "240 faces" in printed  # 96 + 72 (L - 2) on a cube (tests/unit/limit/adaptive_refine_test.cpp)
+    written = sk.read_mesh(str(out))
+    ours = sk.refine_adaptive(cube(), "catmull-clark", 4, limit=True)
+    assert written.n_faces == ours.n_faces and written.n_points == ours.n_points
+    assert np.abs(written.points - ours.points).max() < 1e-12  # OBJ keeps 17 significant digits
+    assert np.array_equal(written.face_indices, ours.face_indices)
+
+
+def test_bad_arguments_are_refused():
+    with pytest.raises(sk.Error, match="levels=13"):
+        sk.refine_adaptive(cube(), "catmull-clark", 13)
+    with pytest.raises(sk.Error, match="tolerance"):
+        sk.refine_adaptive(cube(), "catmull-clark", 2, tolerance=-1)
+    with pytest.raises(sk.Error, match="binary quad and triangle splits"):
+        sk.refine_adaptive(cube(), "doo-sabin", 2)

@@ -1,0 +1,59 @@
+// subdiv refine --adaptive L: a closed, watertight mesh with the cell arrays, its summary
+// line, and bad combinations refused with a message and no output file.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include "framework/io/mesh_level.h"
+#include "framework/io/mesh_read.h"
+#include "support/cli_runner.h"
+
+using namespace subdiv;
+namespace fs = std::filesystem;
+
+TEST_CASE("subdiv refine --adaptive writes a watertight mesh with face_level and base_face") {
+  const fs::path dir = test::fresh_dir("refine-cli-adaptive");
+  const std::string mesh = test::source_path("examples/meshes/cube.obj");
+  const auto r = test::run_subdiv("refine " + mesh + " --adaptive 5 -o " + (dir / "a.vtp").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  // 96 + 72 (L - 2) faces on a cube (8 valence-3 vertices, 3 faces each split per level).
+  CHECK(r.output.find("312 faces") != std::string::npos);
+  CHECK(r.output.find("uniform level 5: 6144 faces") != std::string::npos);
+  const MeshData m = read_mesh((dir / "a.vtp").string());
+  const Level L = level_from_mesh(m, "a.vtp");
+  int open = 0;
+  for (Index e = 0; e < L.edge_count(); ++e) open += L.edge_face_count(e) != 2;
+  CHECK(open == 0);
+  CHECK(L.vertex_count - L.edge_count() + L.face_count() == 2);
+  // face_level comes back; base_face is one of SubdivKit's own arrays, which the reader leaves out.
+  int max_level = -1;
+  for (const DataArray& a : m.cell_data)
+    if (a.name == "face_level")
+      for (double l : a.values) max_level = std::max(max_level, int(l));
+  CHECK(max_level == 5);
+}
+
+TEST_CASE("subdiv refine --adaptive refuses what it cannot do, leaving no file") {
+  const fs::path dir = test::fresh_dir("refine-cli-adaptive-bad");
+  const std::string mesh = test::source_path("examples/meshes/cube.obj");
+  const std::string out = (dir / "x.obj").string();
+  const char* bad[][2] = {
+      {"--adaptive 3 -l 3", "leave out -l"},
+      {"--adaptive 3 --tolerance -1", "--tolerance -1"},
+      {"--adaptive 3 -s doo-sabin", "binary quad and triangle splits"},
+      {"--adaptive 3 -s catmull-clark:1,loop", "sequence"},
+      {"--adaptive 3 --pieces 2", "--pieces"},
+  };
+  for (const auto& b : bad) {
+    CAPTURE(b[0]);
+    const auto r = test::run_subdiv("refine " + mesh + " " + b[0] + " -o " + out);
+    CHECK(r.exit_code != 0);
+    CHECK(r.output.find(b[1]) != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+  }
+  const auto pvd = test::run_subdiv("refine " + mesh + " --adaptive 2 -o " + (dir / "x.pvd").string());
+  CHECK(pvd.exit_code != 0);
+  CHECK(pvd.output.find("one mesh") != std::string::npos);
+}

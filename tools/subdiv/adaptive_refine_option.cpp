@@ -1,0 +1,51 @@
+#include "adaptive_refine_option.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "framework/io/formats.h"
+#include "framework/io/mesh_write.h"
+#include "framework/pipeline/adaptive_request.h"
+#include "framework/util/error.h"
+#include "shared_options.h"
+
+namespace subdiv::cli {
+
+void add_adaptive_options(CLI::App* cmd, AdaptiveArgs& a) {
+  cmd->add_option("--adaptive", a.levels,
+                  "Feature-adaptive refinement up to level L instead of -l: only faces touching an extraordinary "
+                  "vertex, a crease, a sharp vertex or a hole (and with --tolerance faces not within it) are split; "
+                  "watertight output (coarse faces take the finer vertices along their edges), cell arrays "
+                  "face_level and base_face; with --limit every vertex on the limit surface (docs/limit.md)")
+      ->check(CLI::Range(0, 12));
+  cmd->add_option("--tolerance", a.tolerance,
+                  "With --adaptive: also split every face whose bilinear patch through its corners' limit points is "
+                  "farther than T from the limit surface (measured at 5 x 5 points per face), up to level L");
+}
+
+void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& a, bool limit, bool other_levels, bool in_pieces,
+                         const std::string& output, bool quiet, std::chrono::steady_clock::time_point t0) {
+  if (other_levels) throw Error("--adaptive L gives the finest level: leave out -l/--levels");
+  if (!(a.tolerance >= 0) || !std::isfinite(a.tolerance))
+    throw Error(fmt::format("--tolerance {}: give a distance >= 0 (0: split only around features)", a.tolerance));
+  if (in_pieces) throw Error("--adaptive refines whole meshes: leave out --pieces and --max-memory");
+  const std::string ext = lowercase_extension(output);
+  if (ext == ".pvd" || ext == ".pvtp")
+    throw Error(fmt::format("-o '{}': --adaptive writes one mesh (.vtp, .obj, .ply, .off, .stl)", output));
+  AdaptiveRequest r;
+  r.refine = std::move(request);
+  r.refine.levels = a.levels;
+  r.tolerance = a.tolerance;
+  r.limit = limit;
+  AdaptiveResult result = refine_adaptive_request(std::move(r));
+  for (const std::string& w : result.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
+  const std::string summary = adaptive_summary(result);
+  write_mesh(output, adaptive_mesh_data(std::move(result.mesh)));
+  if (quiet) return;
+  for (const auto& note : result.notes) fmt::print("{}\n", spell_options(note, cli_option_spelling()));
+  fmt::print("adaptive refinement of {} to level {}: {} in {:.3f} s -> {}\n", result.scheme_label, a.levels,
+             summary,
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), output);
+}
+
+}  // namespace subdiv::cli

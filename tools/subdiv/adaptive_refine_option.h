@@ -1,0 +1,27 @@
+#pragma once
+// subdiv refine --adaptive L [--tolerance T] [--limit]: the options and their run, kept out
+// of refine_command.cpp (framework/pipeline/adaptive_request.h does the work).
+#include <chrono>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "framework/pipeline/refine_request.h"
+
+namespace subdiv::cli {
+
+struct AdaptiveArgs {
+  int levels = -1;        // --adaptive L; < 0: not given
+  double tolerance = 0;   // --tolerance T; 0: features only
+  bool given() const { return levels >= 0; }
+};
+
+void add_adaptive_options(CLI::App* cmd, AdaptiveArgs& args);
+
+// Runs the adaptive refinement of `request`'s mesh and scheme, writes `output` (a mesh file)
+// and prints a summary unless quiet. `other_levels`: -l was given as well (refused).
+void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& args, bool limit, bool other_levels,
+                         bool in_pieces, const std::string& output, bool quiet,
+                         std::chrono::steady_clock::time_point t0);
+
+}  // namespace subdiv::cli
