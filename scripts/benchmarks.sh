@@ -11,7 +11,8 @@
 # the page alone and prints the tables). On a quiet 2-core machine it runs about 25 minutes.
 #
 # Environment: ROUNDS (3: worker processes per side, alternating, best of each side),
-# FACES (1000000), QUICK=1 (a smoke run: 20k faces, one round, sizes up to 160k faces),
+# FACES (1000000), QUICK=1 (a smoke run: 20k faces, one round, sizes up to 160k faces, a
+# 150 x 150 torus end to end),
 # SKIP (space-separated parts to leave out: refine update threads sizes meshlibs e2e).
 set -eu
 BUILD=${1:-build}
@@ -23,6 +24,8 @@ FACES=${FACES:-1000000}
 SIZES="10000 40000 160000 640000 2500000 4000000"
 if [ "${QUICK:-0}" = 1 ]; then
   ROUNDS=1 FACES=20000 SIZES="10000 40000 160000"
+  NU=${NU:-150} NV=${NV:-150}
+  export NU NV
 fi
 SKIP=" ${SKIP:-} "
 [ -x "$BENCH/subdiv-bench" ] || { echo "benchmarks: no $BENCH/subdiv-bench; build it first (see the top of $0)" >&2; exit 1; }
