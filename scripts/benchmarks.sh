@@ -5,10 +5,11 @@
 #   scripts/benchmarks.sh [BUILD_DIR] [OUT_DIR]
 #
 # Needs the Release build of subdiv-bench, subdiv-bench-meshlibs and subdiv
-# (`cmake --build build --target subdiv-bench subdiv-bench-meshlibs subdiv`). Writes each
+# (`cmake --build build --target subdiv-bench subdiv-bench-meshlibs subdiv_cli`). Writes each
 # program's output into OUT_DIR (default /tmp/subdivkit-bench-<UTC date-time>), then fills the
 # tables of docs/benchmarks.md and draws docs/images/benchmarks.svg from them (PAGE=no leaves
-# the page alone and prints the tables). On a quiet 2-core machine it runs about 25 minutes.
+# the page alone and prints the tables). On a quiet 2-core machine it should run about 25
+# minutes (an estimate from the parts' user times; QUICK=1 took 2.5 minutes at load 9).
 #
 # Environment: ROUNDS (3: worker processes per side, alternating, best of each side),
 # FACES (1000000), QUICK=1 (a smoke run: 20k faces, one round, sizes up to 160k faces, a
