@@ -4,8 +4,8 @@
 #include <array>
 #include <fmt/format.h>
 
+#include "framework/engine/level_passes.h"
 #include "framework/engine/step_preparation.h"
-#include "framework/engine/vertex_parameters.h"
 #include "framework/rules/stencil_builder.h"
 #include "framework/rules/step_evaluator.h"
 #include "framework/util/error.h"
@@ -41,24 +41,21 @@ bool overlap(std::span<const double> a, std::span<const double> b) {
 struct Evaluator::Prepared {
   Prepared(const Hierarchy& h, const RefineOptions& o) : topology(h), options(o) {}
 
-  // A linear step's rows on `parent`, made ready.
-  void add_rows(const Scheme& scheme, const StepRules& rules, int step, const Level& parent, const ChildOrigins& origins,
-                bool features_refined, int level, const VertexParameters& parameters) {
+  // A linear pass's rows made ready, or a non-linear step's rule.
+  void add(const LevelPass& from) {
     auto pass = std::make_unique<Pass>();
-    pass->step = step;
-    pass->target_count = Index(origins.kind.size());
-    pass->inputs = prepare_step(scheme, rules, parent, level, options, parameters, /*lazy_features=*/true);
-    pass->context = std::make_unique<StepContext>(
-        step_context(scheme, rules, pass->inputs, parent, origins, features_refined, level, options));
-    pass->rows = std::make_unique<StepEvaluator>(*pass->context, /*repeated=*/true);
-    passes.push_back(std::move(pass));
-  }
-
-  void add_direct(const Scheme& scheme, int step, int level) {
-    auto pass = std::make_unique<Pass>();
-    pass->step = step;
-    pass->target_count = topology.levels[size_t(step) + 1].vertex_count;
-    pass->direct = direct_step(scheme, topology, size_t(step), level, options);
+    pass->step = from.step;
+    pass->target_count = from.target_count;
+    if (from.nonlinear()) {
+      pass->direct = direct_step(*from.scheme, topology, size_t(from.step), from.level, options);
+    } else {
+      pass->inputs = prepare_step(*from.scheme, *from.rules, *from.parent, from.level, options, *from.parameters,
+                                  /*lazy_features=*/true);
+      pass->context = std::make_unique<StepContext>(step_context(*from.scheme, *from.rules, pass->inputs, *from.parent,
+                                                                 *from.origins, from.features_refined, from.level,
+                                                                 options));
+      pass->rows = std::make_unique<StepEvaluator>(*pass->context, /*repeated=*/true);
+    }
     passes.push_back(std::move(pass));
   }
 
@@ -75,7 +72,7 @@ struct Evaluator::Prepared {
 
   const Hierarchy& topology;
   const RefineOptions options;
-  std::vector<std::unique_ptr<ChildOrigins>> smoothing_origins;  // the identity, per level with smoothing passes
+  std::unique_ptr<LevelPasses> level_passes;  // the identity origins of smoothing passes live here
   std::vector<std::unique_ptr<Pass>> passes;
   ScratchVector<double> buffers[2];
   int buffer_channels = 0;
@@ -84,30 +81,8 @@ struct Evaluator::Prepared {
 Evaluator::Evaluator(std::span<const SchemeRun> runs, const Hierarchy& h, const RefineOptions& options)
     : prepared_(std::make_unique<Prepared>(h, options)) {
   Prepared& p = *prepared_;
-  const std::vector<const Scheme*> per_level = schemes_per_level(runs);
-  if (per_level.size() + 1 != h.levels.size() || h.origins.size() != per_level.size())
-    throw Error(fmt::format("Evaluator: the runs give {} levels but the hierarchy has {}", per_level.size(),
-                            h.levels.size() - 1));
-  check_vertex_parameters(runs, h.levels[0], p.options.vertex_parameters);
-  VertexParameters parameters = p.options.vertex_parameters;  // on level l
-  // As step_values, step by step: the split's rows, then the smoothing passes on the child.
-  for (size_t l = 0; l < per_level.size(); ++l) {
-    if (l > 0 && !parameters.empty()) parameters = carry_vertex_parameters(h.levels[l - 1], h.origins[l - 1], parameters);
-    const Scheme& scheme = *per_level[l];
-    const int step = int(l), level = p.options.first_step + step;
-    if (scheme.steps.front().nonlinear) {
-      p.add_direct(scheme, step, level);
-      continue;
-    }
-    p.add_rows(scheme, scheme.steps.front(), step, h.levels[l], h.origins[l], h.features_refined[l], level, parameters);
-    if (scheme.steps.size() == 1) continue;
-    const Level& child = h.levels[l + 1];
-    p.smoothing_origins.push_back(std::make_unique<ChildOrigins>(identity_origins(child)));
-    const VertexParameters on_child =
-        parameters.empty() ? VertexParameters{} : carry_vertex_parameters(h.levels[l], h.origins[l], parameters);
-    for (size_t s = 1; s < scheme.steps.size(); ++s)
-      p.add_rows(scheme, scheme.steps[s], step, child, *p.smoothing_origins.back(), true, level, on_child);
-  }
+  p.level_passes = std::make_unique<LevelPasses>(runs, h, p.options, 0, int(h.levels.size()) - 1, "Evaluator");
+  for (const LevelPass& pass : p.level_passes->all()) p.add(pass);
 }
 
 Evaluator::Evaluator(const Scheme& scheme, const Hierarchy& topology, const RefineOptions& options)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fmt/format.h>
 
+#include "framework/engine/level_passes.h"
 #include "framework/engine/step_preparation.h"
 #include "framework/engine/vertex_parameters.h"
 #include "framework/features/base_tags.h"
@@ -52,22 +53,21 @@ void check_manifold_for(const Scheme& scheme, const Level& level) {
                           scheme.path, scheme.name, splitter_info(scheme.split()).name, where));
 }
 
-// One step's stencils: `parent` values to the values of the step's output vertices.
-StencilTable step_stencils(const Scheme& scheme, const StepRules& step, const Level& parent,
-                           const ChildOrigins& origins, bool features_refined, int level,
-                           const RefineOptions& options, const VertexParameters& values) {
-  const StepInputs inputs = prepare_step(scheme, step, parent, level, options, values);
-  return build_step_stencils(step_context(scheme, step, inputs, parent, origins, features_refined, level, options));
+// One pass's stencils: its parent's values to the values it writes.
+StencilTable pass_stencils(const LevelPass& pass, const RefineOptions& options) {
+  const StepInputs inputs = prepare_step(*pass.scheme, *pass.rules, *pass.parent, pass.level, options, *pass.parameters);
+  return build_step_stencils(step_context(*pass.scheme, *pass.rules, inputs, *pass.parent, *pass.origins,
+                                          pass.features_refined, pass.level, options));
 }
 
-// One step applied to values without a table (rules/step_evaluator.h), into `out`.
-void step_rows_applied(const Scheme& scheme, const StepRules& step, const Level& parent, const ChildOrigins& origins,
-                       bool features_refined, int level, const RefineOptions& options,
-                       const VertexParameters& parameters, std::span<const double> values, std::span<double> out,
-                       int channels) {
-  const StepInputs inputs = prepare_step(scheme, step, parent, level, options, parameters, /*lazy_features=*/true);
-  apply_step_rows(step_context(scheme, step, inputs, parent, origins, features_refined, level, options), values, out,
-                  channels, options.evaluation.row_paths);
+// One pass applied to values without a table (rules/step_evaluator.h), into `out`.
+void pass_applied(const LevelPass& pass, const RefineOptions& options, std::span<const double> values,
+                  std::span<double> out, int channels) {
+  const StepInputs inputs =
+      prepare_step(*pass.scheme, *pass.rules, *pass.parent, pass.level, options, *pass.parameters, /*lazy_features=*/true);
+  apply_step_rows(step_context(*pass.scheme, *pass.rules, inputs, *pass.parent, *pass.origins, pass.features_refined,
+                               pass.level, options),
+                  values, out, channels, options.evaluation.row_paths);
 }
 
 // A child face inside a hole is a hole (OpenSubdiv's Vtr::Refinement passes the face tag on).
@@ -108,41 +108,30 @@ Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const Ref
     h.origins.push_back(std::move(step.origins));
     h.features_refined.push_back(step.features_refined);
   }
+  h.vertex_parameters = carried_parameters(per_level, h, options.vertex_parameters);
   return h;
 }
 
 void build_stencils(std::span<const SchemeRun> runs, Hierarchy& h, const RefineOptions& options) {
-  const std::vector<const Scheme*> per_level = schemes_per_level(runs);
-  if (per_level.size() + 1 != h.levels.size())
-    throw Error(fmt::format("build_stencils: the runs give {} levels but the hierarchy has {}", per_level.size(),
-                            h.levels.size() - 1));
-  check_vertex_parameters(runs, h.levels[0], options.vertex_parameters);
-  h.stencils.clear();
-  h.direct.assign(per_level.size(), nullptr);
-  VertexParameters parameters = options.vertex_parameters;  // on level l
-  for (size_t l = 0; l < per_level.size(); ++l) {
-    if (l > 0) parameters = carry_vertex_parameters(h.levels[l - 1], h.origins[l - 1], parameters);
-    const Scheme& scheme = *per_level[l];
-    const int level = options.first_step + int(l);
-    if (scheme.steps.front().nonlinear) {
-      h.direct[l] = direct_step(scheme, h, l, level, options);
+  const LevelPasses passes(runs, h, options, 0, int(h.levels.size()) - 1, "build_stencils");
+  std::vector<StencilTable> stencils;
+  std::vector<std::shared_ptr<const DirectStep>> direct(size_t(passes.step_count()), nullptr);
+  for (int l = 0; l < passes.step_count(); ++l) {
+    const std::span<const LevelPass> step = passes.of_step(l);
+    if (step.front().nonlinear()) {
+      direct[size_t(l)] = direct_step(*step.front().scheme, h, size_t(l), step.front().level, options);
       StencilTable none;  // no rows: apply_step() runs the rule
-      none.source_count = h.levels[l].vertex_count;
-      h.stencils.push_back(std::move(none));
+      none.source_count = h.levels[size_t(l)].vertex_count;
+      stencils.push_back(std::move(none));
       continue;
     }
-    StencilTable table = step_stencils(scheme, scheme.steps.front(), h.levels[l], h.origins[l],
-                                       h.features_refined[l], level, options, parameters);
     // Smoothing passes move the new level's vertices; compose them into one table.
-    const VertexParameters on_child =
-        scheme.steps.size() > 1 ? carry_vertex_parameters(h.levels[l], h.origins[l], parameters) : VertexParameters{};
-    for (size_t s = 1; s < scheme.steps.size(); ++s) {
-      const Level& child = h.levels[l + 1];
-      table = compose(table, step_stencils(scheme, scheme.steps[s], child, identity_origins(child), true, level,
-                                           options, on_child));
-    }
-    h.stencils.push_back(std::move(table));
+    StencilTable table = pass_stencils(step.front(), options);
+    for (const LevelPass& smoothing : step.subspan(1)) table = compose(table, pass_stencils(smoothing, options));
+    stencils.push_back(std::move(table));
   }
+  h.stencils = std::move(stencils);
+  h.direct = std::move(direct);
 }
 
 Hierarchy refine(std::span<const SchemeRun> runs, Level base, const RefineOptions& options) {
@@ -186,12 +175,9 @@ std::vector<double> apply_step(const Hierarchy& h, int step, std::span<const dou
 
 void step_values(std::span<const SchemeRun> runs, const Hierarchy& h, int step, std::span<const double> values,
                  std::span<double> out, int channels, const RefineOptions& options) {
-  const std::vector<const Scheme*> per_level = schemes_per_level(runs);
-  if (per_level.size() + 1 != h.levels.size() || h.origins.size() != per_level.size())
-    throw Error(fmt::format("step_values: the runs give {} levels but the hierarchy has {}", per_level.size(),
-                            h.levels.size() - 1));
-  if (step < 0 || step >= int(per_level.size()))
-    throw Error(fmt::format("step_values: step {} is not in 0..{}", step, int(per_level.size()) - 1));
+  if (step < 0 || step + 1 >= int(h.levels.size()))
+    throw Error(fmt::format("step_values: step {} is not in 0..{}", step, int(h.levels.size()) - 2));
+  const LevelPasses prepared(runs, h, options, step, step + 1, "step_values");
   if (values.size() != size_t(h.levels[step].vertex_count) * size_t(channels))
     throw Error(fmt::format("step_values: {} values for {} vertices of {} channels", values.size(),
                             h.levels[step].vertex_count, channels));
@@ -199,32 +185,20 @@ void step_values(std::span<const SchemeRun> runs, const Hierarchy& h, int step, 
   if (out.size() != size_t(child.vertex_count) * size_t(channels))
     throw Error(fmt::format("step_values: room for {} values, but level {} has {} vertices of {} channels", out.size(),
                             step + 1, child.vertex_count, channels));
-  const Scheme& scheme = *per_level[step];
-  const int level = options.first_step + step;
-  if (scheme.steps.front().nonlinear) {
-    const std::vector<double> direct =
-        run_direct_step(*direct_step(scheme, h, size_t(step), level, options), h, step, values, channels);
+  const std::span<const LevelPass> passes = prepared.of_step(step);
+  if (passes.front().nonlinear()) {
+    const std::vector<double> direct = run_direct_step(
+        *direct_step(*passes.front().scheme, h, size_t(step), passes.front().level, options), h, step, values, channels);
     std::copy(direct.begin(), direct.end(), out.begin());
     return;
   }
-  check_vertex_parameters(runs, h.levels[0], options.vertex_parameters);
-  VertexParameters parameters = options.vertex_parameters;
-  for (int l = 0; l < step && !parameters.empty(); ++l)
-    parameters = carry_vertex_parameters(h.levels[l], h.origins[l], parameters);
-  const size_t passes = scheme.steps.size();
   // Smoothing passes, one after another (build_stencils composes their tables instead, so
   // the last bits may differ), between `out` and one scratch level: the last pass writes `out`.
-  ScratchVector<double> scratch(passes > 1 ? out.size() : 0);
-  const auto target = [&](size_t s) { return (passes - 1 - s) % 2 == 0 ? out : std::span<double>(scratch); };
-  step_rows_applied(scheme, scheme.steps.front(), h.levels[step], h.origins[step], h.features_refined[step], level,
-                    options, parameters, values, target(0), channels);
-  if (passes == 1) return;
-  const ChildOrigins same = identity_origins(child);
-  const VertexParameters on_child =
-      parameters.empty() ? VertexParameters{} : carry_vertex_parameters(h.levels[step], h.origins[step], parameters);
-  for (size_t s = 1; s < passes; ++s)
-    step_rows_applied(scheme, scheme.steps[s], child, same, true, level, options, on_child, target(s - 1), target(s),
-                      channels);
+  const size_t count = passes.size();
+  ScratchVector<double> scratch(count > 1 ? out.size() : 0);
+  const auto target = [&](size_t s) { return (count - 1 - s) % 2 == 0 ? out : std::span<double>(scratch); };
+  pass_applied(passes[0], options, values, target(0), channels);
+  for (size_t s = 1; s < count; ++s) pass_applied(passes[s], options, target(s - 1), target(s), channels);
 }
 
 void step_values(const Scheme& scheme, const Hierarchy& h, int step, std::span<const double> values,

@@ -80,6 +80,9 @@ struct Hierarchy {
   // Per step: set when the step is non-linear; stencils[i] is then empty (no rows) and
   // apply_step() runs the rule instead. Empty (or all null) for linear schemes.
   std::vector<std::shared_ptr<const DirectStep>> direct;
+  // The per-vertex parameters (RefineOptions::vertex_parameters) on each level a step's
+  // passes read, carried once by refine_topology (engine/level_passes.h); empty without any.
+  std::vector<VertexParameters> vertex_parameters;
   // What steps did differently from their usual result (SplitResult::warning), one line each.
   std::vector<std::string> warnings;
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/task_arena.h>
 
 #include "framework/engine/vertex_parameters.h"
@@ -14,10 +16,25 @@ namespace subdiv {
 namespace {
 
 // The distinct valences of the level's vertices, ascending: the end valences a rule of n0,
-// n1 is tabulated at (a fan's hub and rim, not every valence up to the hub's).
+// n1 is tabulated at (a fan's hub and rim, not every valence up to the hub's). One parallel
+// pass, whose last entry is also the largest valence (Level::max_valence would be another).
 std::vector<int> valences_present(const Level& L) {
-  std::vector<char> seen(size_t(L.max_valence()) + 1, 0);
-  for (Index v = 0; v < L.vertex_count; ++v) seen[size_t(L.valence(v))] = 1;
+  using Seen = std::vector<char>;
+  const Seen seen = tbb::parallel_reduce(
+      tbb::blocked_range<Index>(0, L.vertex_count, 1 << 16), Seen{},
+      [&L](const tbb::blocked_range<Index>& r, Seen s) {
+        for (Index v = r.begin(); v < r.end(); ++v) {
+          const size_t n = size_t(L.valence(v));
+          if (n >= s.size()) s.resize(n + 1, 0);
+          s[n] = 1;
+        }
+        return s;
+      },
+      [](Seen a, const Seen& b) {
+        if (b.size() > a.size()) a.resize(b.size(), 0);
+        for (size_t n = 0; n < b.size(); ++n) a[n] |= b[n];
+        return a;
+      });
   std::vector<int> out;
   for (size_t n = 0; n < seen.size(); ++n)
     if (seen[n]) out.push_back(int(n));
@@ -28,8 +45,8 @@ std::vector<int> valences_present(const Level& L) {
 
 StepInputs prepare_step(const Scheme& scheme, const StepRules& step, const Level& parent, int level,
                         const RefineOptions& options, const VertexParameters& values, bool lazy_features) {
-  const int max_n = parent.max_valence(), max_k = parent.max_face_size();
   const std::vector<int> valences = valences_present(parent);
+  const int max_n = valences.empty() ? 0 : valences.back(), max_k = parent.max_face_size();
   StepInputs inputs{step_weight_tables(scheme, step, max_n, max_k, level, nullptr, &valences),
                     per_vertex_tables(scheme, step, parent, values, max_n, max_k, level),
                     std::make_unique<StepFeatures>()};

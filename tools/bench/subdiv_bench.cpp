@@ -25,6 +25,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bench_bandwidth.h"
 #include "bench_common.h"
 #include "bench_report_wire.h"
 
@@ -288,6 +289,28 @@ std::string timing_fields(const RunResult& ours, const RunResult& theirs, bool w
   return out;
 }
 
+// The machine's memory bandwidth in this run (one core), at its start and end: each level's
+// line then says how far it is from the bound, the bytes its levels must write over it.
+subdiv::bench::Bandwidth g_bandwidth;
+
+void print_bandwidth(const char* when) {
+  const subdiv::bench::Bandwidth b = subdiv::bench::measure_bandwidth();
+  if (g_bandwidth.write_gbs == 0) g_bandwidth = b;
+  std::printf("# bandwidth at=%s memset_gbs=%.2f memcpy_gbs=%.2f (one core, 512 MB, best of 5; memcpy counts bytes "
+              "read and written)\n",
+              when, b.write_gbs, b.copy_gbs);
+  std::fflush(stdout);
+}
+
+// Bytes the refinement must write: every level's positions (3 doubles a vertex) and face
+// vertex indices (4 bytes each), levels 1..L, each a quarter of the next (quads and
+// triangles split in four). A lower bound on the traffic: the reads are not counted.
+double written_bytes(const WorkerReport& r, int level, int face_size) {
+  double bytes = 24.0 * double(r.vertices) + 4.0 * face_size * double(r.faces), all = 0;
+  for (int l = level; l >= 1; --l, bytes /= 4) all += bytes;
+  return all;
+}
+
 int parent_main(const std::vector<std::string>& schemes, const std::vector<std::string>& meshes,
                 const std::vector<int>& levels, Job base, const std::string& sides, bool check,
                 std::int64_t max_refined, const std::vector<bool>& osd_topologies, int rounds) {
@@ -315,7 +338,7 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
               "loadavg=%.2f %.2f %.2f\n",
               cpu_name().c_str(), std::thread::hardware_concurrency(), base.threads, base.repeat, rounds,
               osd_version, load[0], load[1], load[2]);
-  std::fflush(stdout);
+  print_bandwidth("start");
 
   struct Case {
     std::string scheme, mesh;
@@ -384,7 +407,25 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
     auto field = [&](const std::string& name, const std::string& value) { line += " " + name + "=" + value; };
     const RunResult* any = first.ok ? &first : nullptr;
     for (const auto& t : theirs) any = any ? any : (t.ok ? &t : nullptr);
-    if (any) field("refined_faces", std::to_string(any->report.faces));
+    if (any) {
+      field("refined_faces", std::to_string(any->report.faces));
+      field("refined_vertices", std::to_string(any->report.vertices));
+      const double bytes = written_bytes(any->report, c.level, c.scheme == "loop" ? 3 : 4);
+      const double bound_ms = bytes / (g_bandwidth.write_gbs * 1e9) * 1e3;
+      char text[64];
+      std::snprintf(text, sizeof text, "%.1f", bytes / 1e6);
+      field("written_mb", text);
+      std::snprintf(text, sizeof text, "%.1f", bound_ms);
+      field("bound_ms", text);
+      if (!job.update && first.ok) {
+        std::snprintf(text, sizeof text, "%.2f", first.report.warm.total().user_ms / bound_ms);
+        field("x_bound", text);
+      }
+      if (!job.update && !theirs.empty() && theirs[0].ok) {
+        std::snprintf(text, sizeof text, "%.2f", theirs[0].report.warm.total().user_ms / bound_ms);
+        field("osd_x_bound", text);
+      }
+    }
     field("threads", std::to_string(base.threads));
     if (rounds > 1) {
       if (first.ok) field("subdivkit_round_ms", round_list(first));
@@ -431,6 +472,7 @@ int parent_main(const std::vector<std::string>& schemes, const std::vector<std::
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);
   }
+  print_bandwidth("end");
   return failures ? 1 : 0;
 }
 

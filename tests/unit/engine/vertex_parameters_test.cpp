@@ -3,10 +3,12 @@
 // what a refinement with that one value gives; the other points do not read it; later
 // levels carry the values linearly (an edge point takes the mean of its ends); the loader
 // keeps per-vertex parameters out of rules that have no single vertex.
+#include <algorithm>
 #include <cmath>
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
+#include "framework/engine/evaluator.h"
 #include "framework/util/error.h"
 #include "support/refine_helpers.h"
 
@@ -138,4 +140,35 @@ TEST_CASE("the loader keeps per-vertex parameters to vertex rules") {
     "per_vertex": true}}, "rules": {"face": [{"sum": "vertices", "w": "1/k"}]}})";
   CHECK_THROWS_WITH_AS(load_scheme_text(choice, "t.json"), doctest::Contains("only numeric parameters can be per vertex"),
                        Error);
+}
+
+// refine_topology carries the values down once (Hierarchy::vertex_parameters); step_values
+// must read the values of the options it is given, whether the hierarchy holds them, holds
+// other values, or holds none: the carried values are a linear function of the base ones,
+// so each route gives the same bits as a hierarchy refined with exactly those values.
+TEST_CASE("step_values reads the options' per-vertex values, whatever the hierarchy carried") {
+  const Mesh mesh = torus(6, 5);
+  const auto scheme = load_scheme(kShape);
+  RefineOptions with, other;
+  with.levels = other.levels = 3;
+  with.vertex_parameters["lambda"] = varying_lambda(mesh.level().vertex_count);
+  std::vector<double> reversed = with.vertex_parameters["lambda"];
+  std::reverse(reversed.begin(), reversed.end());
+  other.vertex_parameters["lambda"] = reversed;
+  const Hierarchy carried = refine_topology(*scheme, mesh.level(), with);
+  REQUIRE(carried.vertex_parameters.size() == carried.levels.size());
+  Hierarchy bare = carried;  // as a hierarchy built by hand: no carried values
+  bare.vertex_parameters.clear();
+  const Hierarchy for_other = refine_topology(*scheme, mesh.level(), other);
+  auto stepped = [&](const Hierarchy& h, const RefineOptions& o) {
+    std::vector<double> values = mesh.positions;
+    for (int l = 0; l < o.levels; ++l) values = step_values(*scheme, h, l, values, 3, o);
+    return values;
+  };
+  const std::vector<double> reference = stepped(carried, with);
+  CHECK(stepped(bare, with) == reference);
+  CHECK(stepped(carried, other) == stepped(for_other, other));
+  CHECK(stepped(carried, other) != reference);
+  // The Evaluator takes the same values.
+  CHECK(Evaluator(*scheme, carried, other).evaluate(mesh.positions, 3) == stepped(for_other, other));
 }

@@ -1,0 +1,82 @@
+#!/bin/sh
+# Every figure of docs/benchmarks.md in one run, then its tables and chart
+# (scripts/bench_report.py).
+#
+#   scripts/benchmarks.sh [BUILD_DIR] [OUT_DIR]
+#
+# Needs the Release build of subdiv-bench, subdiv-bench-meshlibs and subdiv
+# (`cmake --build build --target subdiv-bench subdiv-bench-meshlibs subdiv_cli`). Writes each
+# program's output into OUT_DIR (default /tmp/subdivkit-bench-<UTC date-time>), then fills the
+# tables of docs/benchmarks.md and draws docs/images/benchmarks.svg from them (PAGE=no leaves
+# the page alone and prints the tables). On a quiet 2-core machine it should run about 25
+# minutes (an estimate from the parts' user times; QUICK=1 took 2.5 minutes at load 9).
+#
+# Environment: ROUNDS (3: worker processes per side, alternating, best of each side),
+# FACES (1000000), QUICK=1 (a smoke run: 20k faces, one round, sizes up to 160k faces, a
+# 150 x 150 torus end to end),
+# SKIP (space-separated parts to leave out: refine update threads sizes meshlibs e2e).
+set -eu
+BUILD=${1:-build}
+OUT=${2:-${TMPDIR:-/tmp}/subdivkit-bench-$(date -u +%Y%m%d-%H%M)}
+here=$(cd "$(dirname "$0")/.." && pwd)
+BENCH=$BUILD/tools/bench
+ROUNDS=${ROUNDS:-3}
+FACES=${FACES:-1000000}
+SIZES="10000 40000 160000 640000 2500000 4000000"
+if [ "${QUICK:-0}" = 1 ]; then
+  ROUNDS=1 FACES=20000 SIZES="10000 40000 160000"
+  NU=${NU:-150} NV=${NV:-150}
+  export NU NV
+fi
+SKIP=" ${SKIP:-} "
+[ -x "$BENCH/subdiv-bench" ] || { echo "benchmarks: no $BENCH/subdiv-bench; build it first (see the top of $0)" >&2; exit 1; }
+mkdir -p "$OUT"
+wants() { case "$SKIP" in *" $1 "*) return 1 ;; *) return 0 ;; esac; }
+step() { echo "[$(date -u +%H:%M:%S), load $(cut -d' ' -f1-3 /proc/loadavg)] $*" >&2; }
+
+if wants refine; then
+  step "OpenSubdiv refine, levels 1-3"
+  "$BENCH/subdiv-bench" --faces "$FACES" --levels 1-3 --rounds "$ROUNDS" > "$OUT/refine.txt"
+fi
+if wants update; then
+  step "repeated evaluation"
+  "$BENCH/subdiv-bench" --faces "$FACES" --mode update --levels 1-2 --repeat 10 --rounds "$ROUNDS" > "$OUT/update.txt"
+fi
+if wants threads; then
+  for t in 1 2; do
+    step "threads: $t"
+    "$BENCH/subdiv-bench" --faces "$FACES" --side subdivkit --levels 1-2 --repeat 3 --rounds "$ROUNDS" --threads "$t" \
+      --check off > "$OUT/threads$t.txt"
+  done
+  # Two threads while another process keeps one core busy: what the scheduler then gives.
+  step "threads: 2, the other core busy"
+  sh -c 'while :; do :; done' &
+  busy=$!
+  "$BENCH/subdiv-bench" --faces "$FACES" --side subdivkit --levels 1-2 --repeat 3 --rounds "$ROUNDS" --threads 2 \
+    --check off > "$OUT/threads2-busy.txt" || true
+  kill "$busy"
+fi
+if wants sizes; then
+  for f in $SIZES; do
+    step "level 1 of $f faces"
+    "$BENCH/subdiv-bench" --faces "$f" --levels 1 --rounds "$ROUNDS" > "$OUT/sizes-$f.txt"
+  done
+fi
+if wants meshlibs && [ -x "$BENCH/subdiv-bench-meshlibs" ]; then
+  step "OpenMesh and CGAL"
+  for last in full faces; do
+    "$BENCH/subdiv-bench-meshlibs" --faces "$FACES" --schemes sqrt3,doo-sabin,modified-butterfly,loop,catmull-clark \
+      --levels 1,2 --repeat 3 --last-level "$last" > "$OUT/meshlibs-$last.txt" || true
+  done
+fi
+if wants e2e && [ -x "$BUILD/tools/subdiv/subdiv" ]; then
+  step "end to end"
+  RUNS="
+--compression none" "$here/scripts/bench-end-to-end.sh" "$BUILD" > "$OUT/e2e.txt" || true
+fi
+step "done: $OUT"
+if [ "${PAGE:-yes}" = no ]; then
+  python3 "$here/scripts/bench_report.py" "$OUT" --chart "$OUT/benchmarks.svg"
+else
+  python3 "$here/scripts/bench_report.py" "$OUT" --page "$here/docs/benchmarks.md" --chart "$here/docs/images/benchmarks.svg"
+fi
