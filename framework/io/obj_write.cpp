@@ -1,8 +1,15 @@
 // OBJ with polylines and Pixar's tags, readable by read_mesh and by OpenSubdiv's tools;
 // texture coordinates (face-varying or per vertex) as vt with their indices in the faces.
 // Coordinates are printed in their shortest form that reads back to the same double.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
 #include "framework/io/writers.h"
 #include "framework/util/buffered_output.h"
+#include "framework/util/error.h"
 
 namespace subdiv::io_detail {
 
@@ -46,9 +53,26 @@ const DataArray* rational_weights(const MeshData& mesh) {
   return nullptr;
 }
 
+// OBJ does not say how wide its numbers are, and readers take 32-bit floats: VTK's
+// vtkOBJReader reads 1e308 as 3.4e38 and -1.8e308 as 0, without a word. A number beyond
+// float range is refused (SubdivKit would read it back, nothing else would).
+void check_float_range(const std::vector<double>& values, int stride, const char* what, const path& shown) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (std::abs(values[i]) > double(std::numeric_limits<float>::max()))
+      throw Error(fmt::format("cannot write '{}': {} {} has the value {}, beyond the 32-bit float range OBJ readers "
+                              "use (VTK reads it as another number); write .ply or .vtp, which store doubles",
+                              shown.string(), what, i / std::size_t(stride), values[i]));
+}
+
 }  // namespace
 
 void write_obj(const path& file, const path& shown, const MeshData& mesh) {
+  check_float_range(mesh.positions, 3, "vertex", shown);
+  if (const DataArray* w = rational_weights(mesh)) check_float_range(w->values, 1, "the weight of vertex", shown);
+  {
+    const FaceVaryingArray uv = texture_coordinates(mesh);
+    check_float_range(uv.values, std::max(uv.components, 1), "texture coordinate", shown);
+  }
   BufferedOutput out(file, shown);
   out.print("# SubdivKit: {} vertices, {} faces, {} polylines\n", mesh.vertex_count(),
             mesh.face_count(), mesh.line_count());
