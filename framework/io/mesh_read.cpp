@@ -8,6 +8,7 @@
 #include "framework/io/readers.h"
 #include "framework/util/error.h"
 #include "framework/util/input_errors.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 
@@ -15,7 +16,7 @@ MeshData read_mesh(const std::filesystem::path& file) {
   const std::string ext = lowercase_extension(file);
   if (!is_supported_input(file))
     throw Error(fmt::format("cannot read '{}': unknown mesh format '{}'; supported: {}{}",
-                            file.string(), ext.empty() ? "(no extension)" : ext,
+                            escaped(file.string()), ext.empty() ? "(no extension)" : ext,
                             supported_input_formats(), unsupported_format_hint(file)));
   const MeshFileReader* registered = registered_mesh_reader(ext);
   return naming_file_on_failure(file.string(), [&] {

@@ -10,6 +10,7 @@
 #include "framework/io/writers.h"
 #include "framework/util/buffered_output.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 
@@ -61,7 +62,7 @@ void check_float_range(const std::vector<double>& values, int stride, const char
     if (std::abs(values[i]) > double(std::numeric_limits<float>::max()))
       throw Error(fmt::format("cannot write '{}': {} {} has the value {}, beyond the 32-bit float range OBJ readers "
                               "use (VTK reads it as another number); write .ply or .vtp, which store doubles",
-                              shown.string(), what, i / std::size_t(stride), values[i]));
+                              escaped(shown.string()), what, i / std::size_t(stride), values[i]));
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "framework/io/binary_le.h"
 #include "framework/io/writers.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 
@@ -48,7 +49,7 @@ void check_float_range(const MeshData& mesh, const path& shown) {
     if (std::abs(mesh.positions[i]) > std::numeric_limits<float>::max())
       throw Error(fmt::format("cannot write '{}': vertex {} has a coordinate ({}) too large for "
                               "STL's 32-bit floats; write PLY or OBJ instead",
-                              shown.string(), i / 3, mesh.positions[i]));
+                              escaped(shown.string()), i / 3, mesh.positions[i]));
 }
 
 }  // namespace
@@ -58,7 +59,7 @@ void write_stl(const path& file, const path& shown, const MeshData& mesh) {
   const std::uint64_t triangles = triangle_count(mesh);
   if (triangles > std::numeric_limits<std::uint32_t>::max())
     throw Error(fmt::format("cannot write '{}': {} triangles exceed binary STL's limit",
-                            shown.string(), triangles));
+                            escaped(shown.string()), triangles));
   BufferedOutput out(file, shown);
   // The header must not start with "solid", or readers take the file for ASCII STL.
   char header[80] = {};

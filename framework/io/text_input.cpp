@@ -11,6 +11,7 @@
 
 #include "framework/util/error.h"
 #include "framework/util/input_file.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
@@ -83,7 +84,7 @@ std::string_view strip_comment(std::string_view line) {
 }
 
 void fail_at(const fs::path& file, size_t line, std::string_view message) {
-  throw Error(fmt::format("{}:{}: {}", file.string(), line, message));
+  throw Error(fmt::format("{}:{}: {}", escaped(file.string()), line, message));
 }
 
 }  // namespace subdiv::io_detail

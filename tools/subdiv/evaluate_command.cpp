@@ -24,6 +24,7 @@
 #include "framework/util/atomic_file.h"
 #include "framework/util/error.h"
 #include "framework/util/parallel_for_all.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::cli {
 namespace {
@@ -179,7 +180,7 @@ void run(const EvaluateArgs& a) {
   if ((a.samples > 0 || a.adaptive >= 0) && ext == ".csv")
     throw Error(fmt::format("-o '{}': --samples and --adaptive write a mesh (.vtp, .obj, .ply, .off, .stl)", a.output));
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a));
-  for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
+  for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
   const int threads = a.threads > 0 ? a.threads : int(tbb::this_task_arena::max_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
   if (a.samples > 0) {
