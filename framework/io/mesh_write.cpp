@@ -13,7 +13,7 @@
 namespace subdiv {
 namespace fs = std::filesystem;
 
-void write_mesh(const fs::path& file, const MeshData& mesh) {
+void write_mesh(const fs::path& file, const MeshData& mesh, const std::function<void(double done)>& progress) {
   const std::string ext = lowercase_extension(file);
   if (!is_supported_output(file))
     throw Error(fmt::format("cannot write '{}': unknown mesh format '{}'; supported: {}{}",
@@ -25,7 +25,7 @@ void write_mesh(const fs::path& file, const MeshData& mesh) {
                       : ext == ".off" ? io_detail::write_off
                       : ext == ".ply" ? io_detail::write_ply
                                       : io_detail::write_stl;
-  write_file_atomically(file, [&](const fs::path& tmp) { writer(tmp, file, mesh); });
+  write_file_atomically(file, [&](const fs::path& tmp) { writer(tmp, file, mesh, progress); });
 }
 
 }  // namespace subdiv

@@ -18,8 +18,9 @@ namespace {
 
 // One CSR list as lines "<keyword> i j k" with OBJ's 1-based numbers.
 void write_lists(BufferedOutput& out, const char* keyword, const std::vector<Index>& offsets,
-                 const std::vector<Index>& indices) {
+                 const std::vector<Index>& indices, WriteProgress* written = nullptr) {
   for (std::size_t f = 0; f + 1 < offsets.size(); ++f) {
+    if (written) written->step();
     out.print("{}", keyword);
     for (Index k = offsets[f]; k < offsets[f + 1]; ++k) out.print(" {}", indices[k] + 1);
     out.print("\n");
@@ -37,8 +38,9 @@ FaceVaryingArray texture_coordinates(const MeshData& mesh) {
   return {};
 }
 
-void write_faces_with_uv(BufferedOutput& out, const MeshData& mesh, const std::vector<Index>& uv) {
-  for (Index f = 0; f < mesh.face_count(); ++f) {
+void write_faces_with_uv(BufferedOutput& out, const MeshData& mesh, const std::vector<Index>& uv,
+                         WriteProgress& written) {
+  for (Index f = 0; f < mesh.face_count(); ++f, written.step()) {
     out.print("f");
     for (Index k = mesh.face_offsets[f]; k < mesh.face_offsets[f + 1]; ++k)
       out.print(" {}/{}", mesh.face_vertices[k] + 1, uv[k] + 1);
@@ -67,7 +69,7 @@ void check_float_range(const std::vector<double>& values, int stride, const char
 
 }  // namespace
 
-void write_obj(const path& file, const path& shown, const MeshData& mesh) {
+void write_obj(const path& file, const path& shown, const MeshData& mesh, const ProgressCallback& progress) {
   check_float_range(mesh.positions, 3, "vertex", shown);
   if (const DataArray* w = rational_weights(mesh)) check_float_range(w->values, 1, "the weight of vertex", shown);
   {
@@ -78,18 +80,20 @@ void write_obj(const path& file, const path& shown, const MeshData& mesh) {
   out.print("# SubdivKit: {} vertices, {} faces, {} polylines\n", mesh.vertex_count(),
             mesh.face_count(), mesh.line_count());
   const std::vector<double>& p = mesh.positions;
+  WriteProgress written(progress, std::size_t(mesh.vertex_count()) + std::size_t(mesh.face_count()));
   if (const DataArray* w = rational_weights(mesh))
-    for (std::size_t i = 0; i < p.size(); i += 3) out.print("v {} {} {} {}\n", p[i], p[i + 1], p[i + 2], w->values[i / 3]);
+    for (std::size_t i = 0; i < p.size(); i += 3, written.step())
+      out.print("v {} {} {} {}\n", p[i], p[i + 1], p[i + 2], w->values[i / 3]);
   else
-    for (std::size_t i = 0; i < p.size(); i += 3) out.print("v {} {} {}\n", p[i], p[i + 1], p[i + 2]);
+    for (std::size_t i = 0; i < p.size(); i += 3, written.step()) out.print("v {} {} {}\n", p[i], p[i + 1], p[i + 2]);
   const FaceVaryingArray uv = texture_coordinates(mesh);
   for (std::size_t i = 0; i < uv.values.size(); i += std::size_t(uv.components)) {
     out.print("vt");
     for (int c = 0; c < uv.components; ++c) out.print(" {}", uv.values[i + std::size_t(c)]);
     out.print("\n");
   }
-  if (uv.indices.empty()) write_lists(out, "f", mesh.face_offsets, mesh.face_vertices);
-  else write_faces_with_uv(out, mesh, uv.indices);
+  if (uv.indices.empty()) write_lists(out, "f", mesh.face_offsets, mesh.face_vertices, &written);
+  else write_faces_with_uv(out, mesh, uv.indices, written);
   write_lists(out, "l", mesh.line_offsets, mesh.line_vertices);
   // Tags number vertices from 0, as OpenSubdiv reads them.
   for (const CreaseTag& c : mesh.creases)
@@ -105,6 +109,7 @@ void write_obj(const path& file, const path& shown, const MeshData& mesh) {
     out.print("t facevaryinginterpolateboundary 1/0/0 {}\n", *o.fvar_interpolate_boundary);
   if (o.fvar_propagate_corners) out.print("t facevaryingpropagatecorners 1/0/0 {}\n", *o.fvar_propagate_corners);
   out.close();
+  written.finish();
 }
 
 }  // namespace subdiv::io_detail

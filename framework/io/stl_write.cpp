@@ -54,7 +54,7 @@ void check_float_range(const MeshData& mesh, const path& shown) {
 
 }  // namespace
 
-void write_stl(const path& file, const path& shown, const MeshData& mesh) {
+void write_stl(const path& file, const path& shown, const MeshData& mesh, const ProgressCallback& progress) {
   check_float_range(mesh, shown);
   const std::uint64_t triangles = triangle_count(mesh);
   if (triangles > std::numeric_limits<std::uint32_t>::max())
@@ -67,7 +67,8 @@ void write_stl(const path& file, const path& shown, const MeshData& mesh) {
   std::memcpy(header, kTitle, sizeof kTitle - 1);
   out.write(header, sizeof header);
   put_le(out, std::uint32_t(triangles));
-  for (Index f = 0; f < mesh.face_count(); ++f) {
+  WriteProgress written(progress, std::size_t(mesh.face_count()));
+  for (Index f = 0; f < mesh.face_count(); ++f, written.step()) {
     const Index first = mesh.face_offsets[f];
     for (Index k = first + 1; k + 1 < mesh.face_offsets[f + 1]; ++k) {
       const Vec a = point(mesh, mesh.face_vertices[first]);
@@ -81,6 +82,7 @@ void write_stl(const path& file, const path& shown, const MeshData& mesh) {
     }
   }
   out.close();
+  written.finish();
 }
 
 }  // namespace subdiv::io_detail

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "framework/io/io_progress.h"
 #include "framework/util/error.h"
 #include "framework/util/input_file.h"
 #include "framework/util/quoted_text.h"
@@ -40,7 +41,7 @@ bool LineCursor::next(std::string_view& line) {
   size_t next = end == std::string_view::npos ? rest_.size() : end + 1;
   if (end != std::string_view::npos && rest_[end] == '\r' && next < rest_.size() && rest_[next] == '\n') ++next;
   rest_ = rest_.substr(next);
-  ++line_;
+  if ((++line_ & 1023) == 0) read_position(size_ - rest_.size());
   return true;
 }
 
