@@ -52,10 +52,14 @@ std::string faces_problem(const Level& c) {
 
 Index element_count(const Level& parent, OriginKind kind) {
   switch (kind) {
-    case OriginKind::Vertex: return parent.vertex_count;
-    case OriginKind::Edge: return parent.edge_count();
-    case OriginKind::Face: return parent.face_count();
-    case OriginKind::Corner: return parent.corner_count();
+    case OriginKind::Vertex:
+      return parent.vertex_count;
+    case OriginKind::Edge:
+      return parent.edge_count();
+    case OriginKind::Face:
+      return parent.face_count();
+    case OriginKind::Corner:
+      return parent.corner_count();
   }
   return 0;
 }
@@ -68,16 +72,19 @@ std::string runs_problem(const Level& parent, const ChildOrigins& o, Index verte
     const OriginKind kind = OriginKind(k);
     const Index first = runs.first[k], count = runs.count[k];
     if (count != element_count(parent, kind) || first < 0 || (long long)first + count > vertex_count)
-      return fmt::format("origins.runs gives kind {} the children {} to {}, but the parent has {} such elements and "
-                         "the child {} vertices", k, first, (long long)first + count - 1, element_count(parent, kind),
-                         vertex_count);
+      return fmt::format(
+          "origins.runs gives kind {} the children {} to {}, but the parent has {} such elements and "
+          "the child {} vertices",
+          k, first, (long long)first + count - 1, element_count(parent, kind), vertex_count);
     for (Index i = 0; i < count; ++i) {
       const Index c = first + i;
-      const Index element = kind == OriginKind::Corner ? parent.face_offsets[std::size_t(o.parent[c])] + o.local[c]
-                                                       : o.parent[c];
+      const Index element =
+          kind == OriginKind::Corner ? parent.face_offsets[std::size_t(o.parent[c])] + o.local[c] : o.parent[c];
       if (o.kind[c] != kind || element != i)
-        return fmt::format("origins.runs says child vertex {} comes from element {} of kind {}, but its origin says "
-                           "otherwise", c, i, k);
+        return fmt::format(
+            "origins.runs says child vertex {} comes from element {} of kind {}, but its origin says "
+            "otherwise",
+            c, i, k);
     }
     covered += count;
   }
@@ -122,7 +129,8 @@ std::string edges_problem(const Level& c) {
   for (std::size_t f = 0; f < F; ++f)
     for (Index i = c.face_offsets[f]; i < c.face_offsets[f + 1]; ++i) {
       const Index next = i + 1 == c.face_offsets[f + 1] ? c.face_offsets[f] : i + 1;
-      const Index e = c.face_edges[std::size_t(i)], a = c.face_vertices[std::size_t(i)], b = c.face_vertices[std::size_t(next)];
+      const Index e = c.face_edges[std::size_t(i)], a = c.face_vertices[std::size_t(i)],
+                  b = c.face_vertices[std::size_t(next)];
       const Index x = c.edge_vertices[2 * std::size_t(e)], y = c.edge_vertices[2 * std::size_t(e) + 1];
       if (!((x == a && y == b) || (x == b && y == a)))
         return fmt::format("face {} corner {} runs from vertex {} to {} along edge {}, which joins {} and {}", f,
@@ -189,8 +197,10 @@ std::function<SplitResult(const Level&, int)> guarded_split(Fn split, std::strin
     SplitResult r = call_plugin(who, fmt::format("its {} function (step {})", what, step).c_str(),
                                 [&] { return split(parent, step); });
     if (const std::string p = split_result_problem(parent, r, faces_only, propagates_tags); !p.empty())
-      throw Error(fmt::format("{}: its {} function (step {}) returned a child level that cannot be used: {}; fix the "
-                              "plugin", who, what, step, p));
+      throw Error(
+          fmt::format("{}: its {} function (step {}) returned a child level that cannot be used: {}; fix the "
+                      "plugin",
+                      who, what, step, p));
     return r;
   };
 }
@@ -206,9 +216,10 @@ std::string split_result_problem(const Level& parent, const SplitResult& r, bool
   if (p.empty()) p = tags_problem(r.child);
   if (p.empty() && propagates_tags && !faces_only &&
       (long long)r.child.vertex_count < (long long)parent.vertex_count + parent.edge_count())
-    p = fmt::format("the splitter says the engine may carry creases (engine_propagates_tags), which needs a child "
-                    "vertex per parent vertex and edge ({}), but the child has {} vertices",
-                    (long long)parent.vertex_count + parent.edge_count(), r.child.vertex_count);
+    p = fmt::format(
+        "the splitter says the engine may carry creases (engine_propagates_tags), which needs a child "
+        "vertex per parent vertex and edge ({}), but the child has {} vertices",
+        (long long)parent.vertex_count + parent.edge_count(), r.child.vertex_count);
   return p;
 }
 
@@ -216,12 +227,14 @@ SplitterInfo checked_splitter(SplitterInfo info, const std::string& who) {
   const std::string label = fmt::format("{}, splitter '{}'", who, info.name);
   if (!std::isfinite(info.scale) || info.scale <= 1.0 || info.period < 1 || info.feature_period < 1 ||
       !std::isfinite(info.topology_reach) || !std::isfinite(info.ring_scale) || info.ring_scale < 0)
-    throw Error(fmt::format("{}: scale must be finite and above 1 (it is {}), period and feature_period 1 or more "
-                            "(they are {} and {}), topology_reach and ring_scale finite (ring_scale 0 or more; they "
-                            "are {} and {})", label, info.scale, info.period, info.feature_period,
-                            info.topology_reach, info.ring_scale));
+    throw Error(
+        fmt::format("{}: scale must be finite and above 1 (it is {}), period and feature_period 1 or more "
+                    "(they are {} and {}), topology_reach and ring_scale finite (ring_scale 0 or more; they "
+                    "are {} and {})",
+                    label, info.scale, info.period, info.feature_period, info.topology_reach, info.ring_scale));
   if (info.split) info.split = guarded_split(std::move(info.split), label, false, info.engine_propagates_tags);
-  if (info.split_faces_only) info.split_faces_only = guarded_split(std::move(info.split_faces_only), label, true, false);
+  if (info.split_faces_only)
+    info.split_faces_only = guarded_split(std::move(info.split_faces_only), label, true, false);
   return info;
 }
 
@@ -234,17 +247,20 @@ RoleInfo checked_role(RoleInfo info, const std::string& who) {
                   [&] { points(level, element, corner, out); });
       for (std::size_t i = before; i < out.size(); ++i)
         if (out[i] < 0 || out[i] >= level.vertex_count)
-          throw Error(fmt::format("{}: its points function gives element {} the point {}, but the level has {} "
-                                  "vertices (0 to {}); fix the plugin", label, element, out[i], level.vertex_count,
-                                  level.vertex_count - 1));
+          throw Error(
+              fmt::format("{}: its points function gives element {} the point {}, but the level has {} "
+                          "vertices (0 to {}); fix the plugin",
+                          label, element, out[i], level.vertex_count, level.vertex_count - 1));
     };
   if (auto max_points = std::move(info.max_points))
     info.max_points = [max_points, label](int n, int k) {
       const int m = call_plugin(label, fmt::format("its max_points function (n = {}, k = {})", n, k).c_str(),
                                 [&] { return max_points(n, k); });
       if (m < 0 || m > kMaxRolePoints)
-        throw Error(fmt::format("{}: its max_points function gives {} for valence {} and faces of {} sides; it must "
-                                "be 0 to {}; fix the plugin", label, m, n, k, kMaxRolePoints));
+        throw Error(
+            fmt::format("{}: its max_points function gives {} for valence {} and faces of {} sides; it must "
+                        "be 0 to {}; fix the plugin",
+                        label, m, n, k, kMaxRolePoints));
       return m;
     };
   return info;

@@ -44,9 +44,10 @@ void check_input_file(const fs::path& file, std::string_view what) {
   // Readers hold at least the whole text; a file larger than the memory left cannot be read.
   const MemoryBudget budget = available_memory();
   if (double(size) > budget.bytes)
-    throw Error(fmt::format("cannot read '{}': it is {:.2f} GiB, more than the {:.2f} GiB of memory this process "
-                            "may still use ({}); split the {} file or raise the limit",
-                            escaped(file.string()), double(size) / (1 << 30), budget.bytes / (1 << 30), budget.source, what));
+    throw Error(
+        fmt::format("cannot read '{}': it is {:.2f} GiB, more than the {:.2f} GiB of memory this process "
+                    "may still use ({}); split the {} file or raise the limit",
+                    escaped(file.string()), double(size) / (1 << 30), budget.bytes / (1 << 30), budget.source, what));
   std::ifstream probe(file, std::ios::binary);
   if (!probe) throw Error(fmt::format("cannot open '{}': {}", escaped(file.string()), std::strerror(errno)));
 }
@@ -55,9 +56,10 @@ std::string read_input_file(const fs::path& file, std::string_view what, std::ui
   check_input_file(file, what);
   std::error_code ec;
   if (const auto size = fs::file_size(file, ec); !ec && size > max_bytes)
-    throw Error(fmt::format("cannot read '{}': it is {} bytes ({:.1f} MB), more than the {:.0f} MB a {} file may have; "
-                            "is it the right file?",
-                            escaped(file.string()), size, double(size) / 1e6, double(max_bytes) / 1e6, what));
+    throw Error(
+        fmt::format("cannot read '{}': it is {} bytes ({:.1f} MB), more than the {:.0f} MB a {} file may have; "
+                    "is it the right file?",
+                    escaped(file.string()), size, double(size) / 1e6, double(max_bytes) / 1e6, what));
   std::ifstream in(file, std::ios::binary);
   std::ostringstream bytes;
   bytes << in.rdbuf();

@@ -10,7 +10,11 @@ namespace {
 std::size_t utf8_length(std::string_view text, std::size_t i, char32_t& code) {
   const auto b = [&](std::size_t k) { return static_cast<unsigned char>(text[i + k]); };
   const unsigned char lead = b(0);
-  std::size_t n = lead < 0x80 ? 1 : (lead & 0xE0) == 0xC0 ? 2 : (lead & 0xF0) == 0xE0 ? 3 : (lead & 0xF8) == 0xF0 ? 4 : 0;
+  std::size_t n = lead < 0x80             ? 1
+                  : (lead & 0xE0) == 0xC0 ? 2
+                  : (lead & 0xF0) == 0xE0 ? 3
+                  : (lead & 0xF8) == 0xF0 ? 4
+                                          : 0;
   if (n == 0 || i + n > text.size()) return 0;
   code = n == 1 ? lead : n == 2 ? lead & 0x1F : n == 3 ? lead & 0x0F : lead & 0x07;
   for (std::size_t k = 1; k < n; ++k) {
@@ -35,13 +39,20 @@ std::string escape(std::string_view text, bool keep_layout) {
       continue;
     }
     const bool control = code < 0x20 || code == 0x7F || (code >= 0x80 && code <= 0x9F);
-    if (keep_layout && (code == '\n' || code == '\t')) out += char(code);
-    else if (code == '\n') out += "\\n";
-    else if (code == '\t') out += "\\t";
-    else if (code == '\r') out += "\\r";
-    else if (control && n == 1) out += fmt::format("\\x{:02x}", unsigned(byte));
-    else if (control) out += fmt::format("\\u{:04x}", unsigned(code));
-    else out.append(text.substr(i, n));
+    if (keep_layout && (code == '\n' || code == '\t'))
+      out += char(code);
+    else if (code == '\n')
+      out += "\\n";
+    else if (code == '\t')
+      out += "\\t";
+    else if (code == '\r')
+      out += "\\r";
+    else if (control && n == 1)
+      out += fmt::format("\\x{:02x}", unsigned(byte));
+    else if (control)
+      out += fmt::format("\\u{:04x}", unsigned(code));
+    else
+      out.append(text.substr(i, n));
     i += n;
   }
   return out;

@@ -7,7 +7,9 @@
 namespace {
 subdiv::CodeRules rules() {
   subdiv::CodeRules r;
-  r.vertex = [](const subdiv::CodeRuleInput&, subdiv::Index v, subdiv::Context, subdiv::RowWriter& row) { row.add(v, 1.0); };
+  r.vertex = [](const subdiv::CodeRuleInput&, subdiv::Index v, subdiv::Context, subdiv::RowWriter& row) {
+    row.add(v, 1.0);
+  };
   r.edge = [](const subdiv::CodeRuleInput& in, subdiv::Index e, int, subdiv::Context, subdiv::RowWriter& row) {
     row.add(in.parent.edge_vertices[2 * e], 0.5);
     row.add(in.parent.edge_vertices[2 * e + 1], 0.5);

@@ -37,11 +37,16 @@ constexpr double kSubnormal = std::numeric_limits<double>::denorm_min();
 // beyond float range replaced by float-sized ones.
 MeshData extreme_mesh(bool within_float = false) {
   MeshData m;
-  m.positions = {1e308, -kMax, kSubnormal,                   //
-                 -0.0, std::numeric_limits<double>::min() / 3, 1e-300,  //
-                 0.1, -0.0, -kSubnormal,                     //
-                 1, 1, 1,                                    //
-                 3e38, -3e38, 1e-45};
+  m.positions = {1e308,       -kMax,
+                 kSubnormal,  //
+                 -0.0,        std::numeric_limits<double>::min() / 3,
+                 1e-300,  //
+                 0.1,         -0.0,
+                 -kSubnormal,  //
+                 1,           1,
+                 1,  //
+                 3e38,        -3e38,
+                 1e-45};
   if (within_float) m.positions[0] = 3.4e38, m.positions[1] = -3.4e38;
   m.face_offsets = {0, 4, 7};
   m.face_vertices = {0, 1, 2, 3, 2, 1, 4};
@@ -106,7 +111,8 @@ TEST_CASE("OBJ: numbers beyond 32-bit float range are refused before any file ex
                        Error);
   MeshData uv = extreme_mesh(true);
   uv.point_data.push_back({"uv", 2, {0, 0, 1, 0, 1, 1, 0, 1, 0, -1e39}, false, ArrayRole::TextureCoordinates});
-  CHECK_THROWS_WITH_AS(write_mesh(dir / "x.obj", uv), doctest::Contains("texture coordinate 4 has the value -1e+39"), Error);
+  CHECK_THROWS_WITH_AS(write_mesh(dir / "x.obj", uv), doctest::Contains("texture coordinate 4 has the value -1e+39"),
+                       Error);
   CHECK(dir.entries().empty());
 }
 
@@ -127,8 +133,8 @@ TEST_CASE("OBJ, OFF and PLY read back a 1000-gon beside 40,000 quads; PLY counts
 
 TEST_CASE("STL: coordinates beyond 32-bit floats are refused before any file exists; subnormals become floats") {
   TempDir dir;
-  CHECK_THROWS_WITH_AS(write_mesh(dir / "x.stl", extreme_mesh()), doctest::Contains("too large for STL's 32-bit floats"),
-                       Error);
+  CHECK_THROWS_WITH_AS(write_mesh(dir / "x.stl", extreme_mesh()),
+                       doctest::Contains("too large for STL's 32-bit floats"), Error);
   CHECK(dir.entries().empty());
   write_mesh(dir / "small.stl", extreme_mesh(true));
   const MeshData back = read_mesh(dir / "small.stl");
@@ -166,8 +172,10 @@ void check_vtk_points(const MeshData& mesh, vtkPolyData* data) {
       const double x = mesh.positions[3 * std::size_t(v) + std::size_t(c)];
       CAPTURE(v);
       CAPTURE(x);
-      if (std::abs(x) <= std::numeric_limits<float>::max()) CHECK(float(p[c]) == float(x));
-      else CHECK((std::isinf(p[c]) && std::signbit(p[c]) == std::signbit(x)));
+      if (std::abs(x) <= std::numeric_limits<float>::max())
+        CHECK(float(p[c]) == float(x));
+      else
+        CHECK((std::isinf(p[c]) && std::signbit(p[c]) == std::signbit(x)));
     }
   }
 }
@@ -228,7 +236,8 @@ TEST_CASE("VTK's STL reader reads SubdivKit's binary STL: the triangles, subnorm
     bool found = false;
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
       bool same = true;
-      for (int c = 0; c < 3; ++c) same = same && float(p[c]) == float(mesh.positions[3 * std::size_t(v) + std::size_t(c)]);
+      for (int c = 0; c < 3; ++c)
+        same = same && float(p[c]) == float(mesh.positions[3 * std::size_t(v) + std::size_t(c)]);
       found = found || same;
     }
     CHECK(found);

@@ -76,7 +76,8 @@ std::string register_role(const std::string& name,
   role.max_points = std::move(max_points);
   registry.add_role(role);
   registry.add_json_scheme(R"({"name": ")" + name + R"(-scheme", "split": "quad", "curve": "cubic-bspline",
-    "rules": {"vertex": [{"at": "self", "w": "1"}], "edge": [{"sum": ")" + name + R"(-role", "w": "1/2"}],
+    "rules": {"vertex": [{"at": "self", "w": "1"}], "edge": [{"sum": ")" +
+                           name + R"(-role", "w": "1/2"}],
               "face": [{"sum": "vertices", "w": "1/k"}]}})");
   try {
     registry.commit();
@@ -109,7 +110,8 @@ TEST_CASE("a plugin splitter that works passes the checks (the guard is not in t
 }
 
 TEST_CASE("a plugin splitter's child face past the child's vertices is refused, naming the plugin file and function") {
-  const std::string scheme = register_splitter("split-past", [](SplitResult& r) { r.child.face_vertices[5] = 1000000; });
+  const std::string scheme =
+      register_splitter("split-past", [](SplitResult& r) { r.child.face_vertices[5] = 1000000; });
   const std::string message = refine_error(scheme);
   CHECK(contains(message, "plugin 'split-past' (/plugins/split-past.so), splitter 'split-past-split'"));
   CHECK(contains(message, "its split function (step 0)"));
@@ -117,21 +119,26 @@ TEST_CASE("a plugin splitter's child face past the child's vertices is refused, 
 }
 
 TEST_CASE("negative indices in a plugin split's result are refused") {
-  CHECK(contains(refine_error(register_splitter("split-neg-face", [](SplitResult& r) { r.child.face_vertices[0] = -5; })),
-                 "face_vertices[0] is -5"));
+  CHECK(
+      contains(refine_error(register_splitter("split-neg-face", [](SplitResult& r) { r.child.face_vertices[0] = -5; })),
+               "face_vertices[0] is -5"));
   CHECK(contains(refine_error(register_splitter("split-neg-origin", [](SplitResult& r) { r.origins.parent[3] = -1; })),
                  "origins.parent[3] is -1"));
-  CHECK(contains(refine_error(register_splitter("split-neg-ring", [](SplitResult& r) { r.child.vertex_edges[2] = -7; })),
-                 "vertex_edges[2] is -7"));
+  CHECK(
+      contains(refine_error(register_splitter("split-neg-ring", [](SplitResult& r) { r.child.vertex_edges[2] = -7; })),
+               "vertex_edges[2] is -7"));
 }
 
 TEST_CASE("a plugin split's arrays of the wrong size are refused") {
-  CHECK(contains(refine_error(register_splitter("split-short-origins", [](SplitResult& r) { r.origins.kind.pop_back(); })),
-                 "origins.kind has 25 entries, not 26"));
-  CHECK(contains(refine_error(register_splitter("split-offsets", [](SplitResult& r) { r.child.face_offsets.back() += 4; })),
-                 "face_offsets ends at"));
-  CHECK(contains(refine_error(register_splitter("split-rings", [](SplitResult& r) { r.child.vertex_ring_offsets.pop_back(); })),
-                 "vertex_ring_offsets has 26 entries, not 27"));
+  CHECK(contains(
+      refine_error(register_splitter("split-short-origins", [](SplitResult& r) { r.origins.kind.pop_back(); })),
+      "origins.kind has 25 entries, not 26"));
+  CHECK(contains(
+      refine_error(register_splitter("split-offsets", [](SplitResult& r) { r.child.face_offsets.back() += 4; })),
+      "face_offsets ends at"));
+  CHECK(contains(
+      refine_error(register_splitter("split-rings", [](SplitResult& r) { r.child.vertex_ring_offsets.pop_back(); })),
+      "vertex_ring_offsets has 26 entries, not 27"));
   CHECK(contains(refine_error(register_splitter("split-tags", [](SplitResult& r) { r.child.edge_sharpness = {1.f}; })),
                  "edge_sharpness has 1 entries, not 48 (or none)"));
   CHECK(contains(refine_error(register_splitter("split-vc", [](SplitResult& r) { r.child.vertex_count += 3; })),
@@ -149,8 +156,9 @@ TEST_CASE("a plugin split whose topology contradicts itself is refused") {
 
 TEST_CASE("whatever a plugin split throws becomes an Error naming the plugin and the function") {
   const std::string odd = register_splitter("split-throws", [](SplitResult&) { throw 7; });
-  CHECK(contains(refine_error(odd), "plugin 'split-throws' (/plugins/split-throws.so), splitter 'split-throws-split': "
-                                    "its split function (step 0) threw something that is not a std::exception"));
+  CHECK(contains(refine_error(odd),
+                 "plugin 'split-throws' (/plugins/split-throws.so), splitter 'split-throws-split': "
+                 "its split function (step 0) threw something that is not a std::exception"));
   const std::string std_error =
       register_splitter("split-throws-std", [](SplitResult&) { throw std::length_error("vector::reserve"); });
   CHECK(contains(refine_error(std_error), "threw an exception: vector::reserve"));
@@ -163,32 +171,39 @@ TEST_CASE("a plugin splitter with a scale the analysis cannot use is refused whe
   split.split = [](const Level& parent, int) { return split_quad(parent); };
   split.scale = 0.5;
   registry.add_splitter(split);
-  CHECK_THROWS_WITH_AS(registry.commit(), doctest::Contains("splitter 'split-scale-split': scale must be finite and above 1"),
-                       Error);
+  CHECK_THROWS_WITH_AS(registry.commit(),
+                       doctest::Contains("splitter 'split-scale-split': scale must be finite and above 1"), Error);
   CHECK_THROWS_AS(split_kind_from_name("split-scale-split"), Error);  // nothing of it stays
 }
 
 TEST_CASE("a plugin role's points out of range or thrown are refused naming the plugin file and the role") {
   const auto max4 = [](int, int) { return 4; };
-  REQUIRE(register_role("role-past", [](const Level& L, Index, int, std::vector<Index>& p) { p.push_back(L.vertex_count); },
-                        max4) == "");
-  CHECK(contains(refine_error("role-past-scheme"), "plugin 'role-past' (/plugins/role-past.so), role 'role-past-role': "
-                                                   "its points function gives element 0 the point 8, but the level "
-                                                   "has 8 vertices (0 to 7)"));
-  REQUIRE(register_role("role-neg", [](const Level&, Index, int, std::vector<Index>& p) { p.push_back(-3); }, max4) == "");
+  REQUIRE(register_role(
+              "role-past", [](const Level& L, Index, int, std::vector<Index>& p) { p.push_back(L.vertex_count); },
+              max4) == "");
+  CHECK(contains(refine_error("role-past-scheme"),
+                 "plugin 'role-past' (/plugins/role-past.so), role 'role-past-role': "
+                 "its points function gives element 0 the point 8, but the level "
+                 "has 8 vertices (0 to 7)"));
+  REQUIRE(register_role(
+              "role-neg", [](const Level&, Index, int, std::vector<Index>& p) { p.push_back(-3); }, max4) == "");
   CHECK(contains(refine_error("role-neg-scheme"), "gives element 0 the point -3"));
-  REQUIRE(register_role("role-throws", [](const Level&, Index, int, std::vector<Index>&) { throw "text"; }, max4) == "");
-  CHECK(contains(refine_error("role-throws-scheme"), "role 'role-throws-role': its points function (element 0) threw "
-                                                     "something that is not a std::exception"));
+  REQUIRE(register_role(
+              "role-throws", [](const Level&, Index, int, std::vector<Index>&) { throw "text"; }, max4) == "");
+  CHECK(contains(refine_error("role-throws-scheme"),
+                 "role 'role-throws-role': its points function (element 0) threw "
+                 "something that is not a std::exception"));
   // More points than max_points says: the weight tables have no room for them.
-  REQUIRE(register_role("role-many", [](const Level&, Index, int, std::vector<Index>& p) { p.assign(9, 0); }, max4) == "");
+  REQUIRE(register_role(
+              "role-many", [](const Level&, Index, int, std::vector<Index>& p) { p.assign(9, 0); }, max4) == "");
   CHECK(contains(refine_error("role-many-scheme"), "gave 9 points, more than its max_points"));
 }
 
 TEST_CASE("a plugin role's max_points out of range or thrown is refused, naming the plugin file and the role") {
   REQUIRE(register_role("role-max-neg", ends, [](int, int) { return -1; }) == "");
-  CHECK(contains(refine_error("role-max-neg-scheme"), "plugin 'role-max-neg' (/plugins/role-max-neg.so), role "
-                                                      "'role-max-neg-role': its max_points function gives -1"));
+  CHECK(contains(refine_error("role-max-neg-scheme"),
+                 "plugin 'role-max-neg' (/plugins/role-max-neg.so), role "
+                 "'role-max-neg-role': its max_points function gives -1"));
   REQUIRE(register_role("role-max-huge", ends, [](int, int) { return 1 << 30; }) == "");
   CHECK(contains(refine_error("role-max-huge-scheme"), "it must be 0 to 65536"));
   REQUIRE(register_role("role-max-throws", ends, [](int, int) -> int { throw 1.5; }) == "");
