@@ -10,13 +10,14 @@
 set(SUBDIV_VTK_PROVIDER auto CACHE STRING "VTK to build the VTK file IO against: auto, debian or paraview")
 set_property(CACHE SUBDIV_VTK_PROVIDER PROPERTY STRINGS auto debian paraview)
 set(subdiv_vtk_components CommonCore CommonDataModel IOXML IOLegacy)
+set(subdiv_vtk_test_components IOGeometry IOPLY)  # optional: tests/ reads OBJ, PLY, STL back with VTK
 unset(SUBDIV_VTK_PROVIDER_FOUND CACHE)  # decided afresh at every configure
 
 if(SUBDIV_VTK_PROVIDER STREQUAL "auto" OR SUBDIV_VTK_PROVIDER STREQUAL "debian")
   # Debian's VTK installs its package config under cmake/vtk-9.1; ParaView's VTK is not on
   # the default search path (it lives under cmake/paraview-5.11/vtk), so this finds only
   # Debian's.
-  find_package(VTK 9 QUIET COMPONENTS ${subdiv_vtk_components})
+  find_package(VTK 9 QUIET COMPONENTS ${subdiv_vtk_components} OPTIONAL_COMPONENTS ${subdiv_vtk_test_components})
   # A build dir configured before with ParaView's VTK keeps that VTK_DIR in its cache, and
   # the search above then finds it again: the folder says whose VTK it is.
   if(VTK_FOUND AND VTK_DIR MATCHES "/paraview-[0-9.]+/vtk/?$")
@@ -38,7 +39,7 @@ if(NOT SUBDIV_VTK_PROVIDER_FOUND AND (SUBDIV_VTK_PROVIDER STREQUAL "auto" OR SUB
     list(SORT subdiv_paraview_vtk_dirs COMPARE NATURAL ORDER DESCENDING)  # the newest ParaView
     list(GET subdiv_paraview_vtk_dirs 0 subdiv_paraview_vtk_dir)
     find_package(VTK CONFIG QUIET PATHS ${subdiv_paraview_vtk_dir} NO_DEFAULT_PATH
-      COMPONENTS ${subdiv_vtk_components})
+      COMPONENTS ${subdiv_vtk_components} OPTIONAL_COMPONENTS ${subdiv_vtk_test_components})
     if(VTK_FOUND)
       set(SUBDIV_VTK_PROVIDER_FOUND paraview)
     endif()

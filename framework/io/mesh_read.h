@@ -1,6 +1,7 @@
 #pragma once
 // Reading a mesh file into MeshData, with the file's vertex and face order kept exactly.
 #include <filesystem>
+#include <functional>
 
 #include "framework/io/mesh_data.h"
 
@@ -16,6 +17,8 @@ namespace subdiv {
 // Throws subdiv::Error naming the file and, for text formats, the line: missing file,
 // unknown extension, syntax errors, indices out of range, non-finite coordinates, faces
 // with fewer than 3 vertices, invalid crease or corner tags.
-MeshData read_mesh(const std::filesystem::path& file);
+// `progress`, when given, is told the share read, 0 to 1, a few hundred times at most (the
+// text readers by bytes parsed; the others at the start and the end).
+MeshData read_mesh(const std::filesystem::path& file, const std::function<void(double done)>& progress = {});
 
 }  // namespace subdiv

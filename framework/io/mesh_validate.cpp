@@ -9,6 +9,7 @@
 #include <tbb/parallel_reduce.h>
 
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -113,12 +114,15 @@ void check_data_arrays(const std::vector<DataArray>& arrays, Index tuples, const
     const DataArray& a = arrays[i];
     if (a.name.empty()) fail(context, fmt::format("a {} data array has no name", per));
     for (size_t j = 0; j < i; ++j)
-      if (arrays[j].name == a.name) fail(context, fmt::format("two {} data arrays are named '{}'", per, a.name));
+      if (arrays[j].name == a.name)
+        fail(context, fmt::format("two {} data arrays are named '{}'", per, escaped(a.name)));
     if (a.components < 1)
-      fail(context, fmt::format("{} data array '{}' has {} components; it needs at least 1", per, a.name, a.components));
+      fail(context, fmt::format("{} data array '{}' has {} components; it needs at least 1", per, escaped(a.name),
+                                a.components));
     if (a.values.size() != size_t(tuples) * size_t(a.components))
-      fail(context, fmt::format("{} data array '{}' has {} values, but {} {}s x {} components need {}", per, a.name,
-                                a.values.size(), tuples, per, a.components, size_t(tuples) * size_t(a.components)));
+      fail(context,
+           fmt::format("{} data array '{}' has {} values, but {} {}s x {} components need {}", per, escaped(a.name),
+                       a.values.size(), tuples, per, a.components, size_t(tuples) * size_t(a.components)));
     if (!a.integer) continue;
     const auto whole = [&](size_t k) { return a.values[k] == std::floor(a.values[k]) && std::abs(a.values[k]) <= 2147483647.0; };
     if (all_of_parallel(a.values.size(), whole)) continue;
@@ -126,7 +130,8 @@ void check_data_arrays(const std::vector<DataArray>& arrays, Index tuples, const
       const double v = a.values[k];
       if (v != std::floor(v) || std::abs(v) > 2147483647.0)
         fail(context, fmt::format("integer {} data array '{}' holds {} at {} {}, which is not a whole number that "
-                                  "fits an int", per, a.name, v, per, k / size_t(a.components)));
+                                  "fits an int",
+                                  per, escaped(a.name), v, per, k / size_t(a.components)));
     }
   }
 }
@@ -135,14 +140,14 @@ void check_face_varying(const MeshData& mesh, std::string_view context) {
   for (const FaceVaryingArray& a : mesh.face_varying) {
     if (a.components < 1 || a.values.size() % size_t(a.components) != 0)
       fail(context, fmt::format("face-varying array '{}' has {} values, not a whole number of {}-component tuples",
-                                a.name, a.values.size(), a.components));
+                                escaped(a.name), a.values.size(), a.components));
     if (a.indices.size() != mesh.face_vertices.size())
-      fail(context, fmt::format("face-varying array '{}' has {} corner indices for {} face corners", a.name,
+      fail(context, fmt::format("face-varying array '{}' has {} corner indices for {} face corners", escaped(a.name),
                                 a.indices.size(), mesh.face_vertices.size()));
     for (size_t c = 0; c < a.indices.size(); ++c)
       if (a.indices[c] < 0 || a.indices[c] >= a.value_count())
         fail(context, fmt::format("face-varying array '{}': face corner {} uses value {}, but there are {} values",
-                                  a.name, c, a.indices[c], a.value_count()));
+                                  escaped(a.name), c, a.indices[c], a.value_count()));
   }
 }
 

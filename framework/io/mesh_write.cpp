@@ -8,23 +8,24 @@
 #include "framework/io/writers.h"
 #include "framework/util/atomic_file.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace fs = std::filesystem;
 
-void write_mesh(const fs::path& file, const MeshData& mesh) {
+void write_mesh(const fs::path& file, const MeshData& mesh, const std::function<void(double done)>& progress) {
   const std::string ext = lowercase_extension(file);
   if (!is_supported_output(file))
     throw Error(fmt::format("cannot write '{}': unknown mesh format '{}'; supported: {}{}",
-                            file.string(), ext.empty() ? "(no extension)" : ext,
+                            escaped(file.string()), ext.empty() ? "(no extension)" : ext,
                             supported_output_formats(), unsupported_format_hint(file)));
   if (const MeshFileWriter* registered = registered_mesh_writer(ext)) return (*registered)(file, mesh);
-  validate_mesh_data(mesh, fmt::format("cannot write '{}'", file.string()));
+  validate_mesh_data(mesh, fmt::format("cannot write '{}'", escaped(file.string())));
   const auto writer = ext == ".obj"   ? io_detail::write_obj
                       : ext == ".off" ? io_detail::write_off
                       : ext == ".ply" ? io_detail::write_ply
                                       : io_detail::write_stl;
-  write_file_atomically(file, [&](const fs::path& tmp) { writer(tmp, file, mesh); });
+  write_file_atomically(file, [&](const fs::path& tmp) { writer(tmp, file, mesh, progress); });
 }
 
 }  // namespace subdiv

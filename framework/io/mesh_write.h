@@ -2,6 +2,7 @@
 // Writing MeshData to a mesh file, atomically: the target is either left as it was or
 // replaced by the complete new file.
 #include <filesystem>
+#include <functional>
 
 #include "framework/io/mesh_data.h"
 
@@ -17,6 +18,9 @@ namespace subdiv {
 // Throws subdiv::Error, before creating any file, for an unknown extension, a missing
 // directory or a mesh that validate_mesh_data refuses; on a write failure the partial
 // temporary file is removed.
-void write_mesh(const std::filesystem::path& file, const MeshData& mesh);
+// `progress`, when given, is told the share written, 0 to 1, a few hundred times at most
+// (OBJ, OFF, PLY, STL; formats registered by other libraries, e.g. VTK's, report their own way).
+void write_mesh(const std::filesystem::path& file, const MeshData& mesh,
+                const std::function<void(double done)>& progress = {});
 
 }  // namespace subdiv

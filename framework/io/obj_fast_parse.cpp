@@ -1,4 +1,5 @@
 #include "framework/io/obj_fast_parse.h"
+#include "framework/io/io_progress.h"
 
 #include <algorithm>
 #include <atomic>
@@ -310,6 +311,7 @@ std::optional<MeshData> parse_obj_fast(std::string_view text, std::size_t chunks
   std::atomic<bool> ok = true;  // any task may clear it
   tbb::parallel_for(std::size_t(0), parsed.size(), [&](std::size_t k) {
     if (!ChunkParser(parsed[k]).parse(text.data() + cuts[k], text.data() + cuts[k + 1])) ok = false;
+    read_advanced(cuts[k + 1] - cuts[k]);
   });
   MeshData mesh;
   if (!ok || !join(parsed, mesh)) return std::nullopt;

@@ -31,6 +31,7 @@
 #include "framework/io/obj_fast_parse.h"
 #include "framework/io/readers.h"
 #include "framework/io/text_input.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
@@ -103,18 +104,9 @@ private:
   std::vector<double> weights_;  // the fourth coordinates read so far (1 before the first)
 };
 
-// `text` with bytes outside printable ASCII as \xNN: a keyword quoted in a message must not
-// drive the terminal or end the message at a NUL.
-std::string printable(std::string_view text) {
-  std::string out;
-  for (const char c : text.substr(0, 40)) {
-    const auto b = static_cast<unsigned char>(c);
-    if (b >= 0x20 && b < 0x7f) out += c;
-    else out += fmt::format("\\x{:02x}", unsigned(b));
-  }
-  if (text.size() > 40) out += "...";
-  return out;
-}
+// `text` as a message may quote it (quoted_text.h: no terminal escapes, no NUL), cut at 40
+// bytes.
+std::string printable(std::string_view text) { return escaped(text.substr(0, 40)) + (text.size() > 40 ? "..." : ""); }
 
 MeshData ObjReader::read(std::string_view text) {
   LineCursor lines(text);
@@ -183,7 +175,7 @@ void ObjReader::warn_unknown_statements() {
     }
     mesh_.warnings.push_back(fmt::format("{}: {}: skipped the unknown statement '{}'; it is not part of the OBJ "
                                          "format (keywords are lower case: v, vt, vn, f, l, t, g, o, s, usemtl, ...)",
-                                         file_.string(), where, printable(keyword)));
+                                         escaped(file_.string()), where, printable(keyword)));
   }
 }
 
@@ -303,7 +295,7 @@ void ObjReader::finish_face_varying() {
       // A channel needs a value at every corner; a file that gives some only is still a mesh.
       mesh_.warnings.push_back(fmt::format("{}:{}: this face gives no {} number while the face on line {} does; the "
                                            "file's {} are left out (give every face one to keep them)",
-                                           file_.string(), a.line_without, keyword, a.line_with, keyword));
+                                           escaped(file_.string()), a.line_without, keyword, a.line_with, keyword));
       continue;
     }
     FaceVaryingArray f{names[slot], a.components, std::move(a.values), {}, roles[slot]};

@@ -20,7 +20,7 @@ void put_tuple(BufferedOutput& out, const DataArray* a, std::size_t i) {
 
 }  // namespace
 
-void write_off(const path& file, const path& shown, const MeshData& mesh) {
+void write_off(const path& file, const path& shown, const MeshData& mesh, const ProgressCallback& progress) {
   const DataArray* normal = with_role(mesh.point_data, ArrayRole::Normals, 3, 3);
   const DataArray* colour = with_role(mesh.point_data, ArrayRole::Color, 3, 4);
   const DataArray* uv = with_role(mesh.point_data, ArrayRole::TextureCoordinates, 2, 2);
@@ -30,14 +30,15 @@ void write_off(const path& file, const path& shown, const MeshData& mesh) {
   out.print("{}{}{}OFF\n{} {} 0\n", uv ? "ST" : "", colour ? "C" : "", normal ? "N" : "", mesh.vertex_count(),
             mesh.face_count());
   const std::vector<double>& p = mesh.positions;
-  for (std::size_t v = 0; v < std::size_t(mesh.vertex_count()); ++v) {
+  WriteProgress written(progress, std::size_t(mesh.vertex_count()) + std::size_t(mesh.face_count()));
+  for (std::size_t v = 0; v < std::size_t(mesh.vertex_count()); ++v, written.step()) {
     out.print("{} {} {}", p[3 * v], p[3 * v + 1], p[3 * v + 2]);
     put_tuple(out, normal, v);
     put_tuple(out, colour, v);
     put_tuple(out, uv, v);
     out.print("\n");
   }
-  for (Index f = 0; f < mesh.face_count(); ++f) {
+  for (Index f = 0; f < mesh.face_count(); ++f, written.step()) {
     out.print("{}", mesh.face_offsets[f + 1] - mesh.face_offsets[f]);
     for (Index k = mesh.face_offsets[f]; k < mesh.face_offsets[f + 1]; ++k)
       out.print(" {}", mesh.face_vertices[k]);
@@ -45,6 +46,7 @@ void write_off(const path& file, const path& shown, const MeshData& mesh) {
     out.print("\n");
   }
   out.close();
+  written.finish();
 }
 
 }  // namespace subdiv::io_detail

@@ -10,6 +10,7 @@
 
 #include "framework/io/text_input.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
@@ -48,7 +49,7 @@ public:
 
 private:
   [[noreturn]] void fail(std::size_t at, const std::string& problem) const {
-    throw Error(fmt::format("{}: byte {}: {}", file_.string(), at, problem));
+    throw Error(fmt::format("{}: byte {}: {}", escaped(file_.string()), at, problem));
   }
 
   std::uint64_t unsigned_at(std::size_t at, std::size_t size) const {  // little-endian

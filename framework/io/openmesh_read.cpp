@@ -24,6 +24,7 @@
 #include "framework/io/stl_check.h"
 #include "framework/io/text_input.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
@@ -106,7 +107,7 @@ MeshData read_with_openmesh(const fs::path& file) {
     errors = captured.text();
   }
   if (!ok)
-    throw Error(fmt::format("cannot read '{}': OpenMesh could not parse it{}{}", file.string(),
+    throw Error(fmt::format("cannot read '{}': OpenMesh could not parse it{}{}", escaped(file.string()),
                             errors.empty() ? "" : ": ", errors));
   MeshData out = to_mesh_data(mesh);
   if (lowercase_extension(file) == ".stl") {
@@ -114,7 +115,7 @@ MeshData read_with_openmesh(const fs::path& file) {
       throw Error(fmt::format("{}: the mesh is not manifold: OpenMesh had to split {} "
                               "vertices to read it ({}); repair the mesh, or save it as OBJ, "
                               "OFF or PLY, which keep non-manifold faces for a precise report",
-                              file.string(), split, errors.empty() ? "no details" : errors));
+                              escaped(file.string()), split, errors.empty() ? "no details" : errors));
   }
   return out;
 }

@@ -25,6 +25,7 @@
 #include "framework/io/text_input.h"
 #include "framework/util/error.h"
 #include "framework/util/input_file.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
@@ -204,8 +205,8 @@ private:
 
 void Values::fail(std::string_view message) const {
   const std::string where = format_ == Format::Ascii
-                                ? fmt::format("{}:{}", file_.string(), lines_.line_number())
-                                : fmt::format("{} (binary data)", file_.string());
+                                ? fmt::format("{}:{}", escaped(file_.string()), lines_.line_number())
+                                : fmt::format("{} (binary data)", escaped(file_.string()));
   throw Error(fmt::format("{}: {}", where, message));
 }
 
@@ -320,7 +321,7 @@ void PlyReader::read_vertices(Values& values, const Element& e) {
   for (int a : axis)
     if (a < 0)
       throw Error(fmt::format("{}: element vertex lacks one of the properties x, y, z",
-                              file_.string()));
+                              escaped(file_.string())));
   std::vector<bool> not_data(e.properties.size());
   for (std::size_t i = 0; i < e.properties.size(); ++i)
     not_data[i] = e.properties[i].list || int(i) == axis[0] || int(i) == axis[1] || int(i) == axis[2];
@@ -350,7 +351,7 @@ void PlyReader::read_faces(Values& values, const Element& e) {
   if (list < 0) list = find_property(e, "vertex_index", true);
   if (list < 0)
     throw Error(fmt::format("{}: element face lacks the list property vertex_indices",
-                            file_.string()));
+                            escaped(file_.string())));
   std::vector<bool> not_data(e.properties.size());
   for (std::size_t i = 0; i < e.properties.size(); ++i) not_data[i] = e.properties[i].list;
   PropertyColumns data(e, not_data);
@@ -426,7 +427,7 @@ void check_size_against_header(const fs::path& file) {
     throw Error(fmt::format("{}: the file has {:.0f} bytes, but its header describes at most {:.0f} bytes of binary "
                             "data after the {}-byte header; the counts in the header are wrong or the file has data "
                             "that is not part of this mesh",
-                            file.string(), size, *largest, data + 1));
+                            escaped(file.string()), size, *largest, data + 1));
 }
 
 MeshData PlyReader::read() {
@@ -439,12 +440,12 @@ MeshData PlyReader::read() {
                        [&](const Element& e) { return e.name == name; });
   };
   if (!has("vertex"))
-    throw Error(fmt::format("{}: the header declares no 'element vertex'", file_.string()));
+    throw Error(fmt::format("{}: the header declares no 'element vertex'", escaped(file_.string())));
   for (const Element& e : header.elements)
     if (e.name == "vertex") vertex_count_ = e.count;
   if (vertex_count_ > std::numeric_limits<Index>::max())
     throw Error(fmt::format("{}: {} vertices are more than SubdivKit's 32-bit indices hold",
-                            file_.string(), vertex_count_));
+                            escaped(file_.string()), vertex_count_));
   Values values(file_, header.format, lines);
   for (const Element& e : header.elements) {
     if (e.name == "vertex") read_vertices(values, e);

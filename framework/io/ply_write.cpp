@@ -56,7 +56,7 @@ std::vector<Stored> kinds_of(const std::vector<DataArray>& arrays) {
 
 }  // namespace
 
-void write_ply(const path& file, const path& shown, const MeshData& mesh) {
+void write_ply(const path& file, const path& shown, const MeshData& mesh, const ProgressCallback& progress) {
   // A one-byte face size is what most tools expect; larger polygons need a wider count.
   const bool small_faces = largest_face(mesh) <= 255;
   std::vector<std::string> notes;
@@ -71,11 +71,12 @@ void write_ply(const path& file, const path& shown, const MeshData& mesh) {
   declare(out, mesh.cell_data, cell_names);
   out.print("end_header\n");
   const std::vector<Stored> point_kinds = kinds_of(mesh.point_data), cell_kinds = kinds_of(mesh.cell_data);
-  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+  WriteProgress written(progress, std::size_t(mesh.vertex_count()) + std::size_t(mesh.face_count()));
+  for (Index v = 0; v < mesh.vertex_count(); ++v, written.step()) {
     for (int c = 0; c < 3; ++c) put_le(out, mesh.positions[3 * std::size_t(v) + std::size_t(c)]);
     put_tuple(out, mesh.point_data, point_kinds, std::size_t(v));
   }
-  for (Index f = 0; f < mesh.face_count(); ++f) {
+  for (Index f = 0; f < mesh.face_count(); ++f, written.step()) {
     const Index size = mesh.face_offsets[f + 1] - mesh.face_offsets[f];
     if (small_faces) put_le(out, std::uint8_t(size));
     else put_le(out, std::int32_t(size));
@@ -84,6 +85,7 @@ void write_ply(const path& file, const path& shown, const MeshData& mesh) {
     put_tuple(out, mesh.cell_data, cell_kinds, std::size_t(f));
   }
   out.close();
+  written.finish();
 }
 
 }  // namespace subdiv::io_detail

@@ -10,6 +10,7 @@
 #include "framework/io/text_input.h"
 #include "framework/util/error.h"
 #include "framework/util/short_text.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
@@ -41,14 +42,14 @@ bool is_binary(std::string_view bytes) {
 
 void check_binary(const fs::path& file, std::string_view bytes) {
   const std::size_t triangles = (bytes.size() - kBinaryHeader) / kBinaryTriangle;
-  if (triangles == 0) throw Error(fmt::format("{}: the binary STL file has no triangles", file.string()));
+  if (triangles == 0) throw Error(fmt::format("{}: the binary STL file has no triangles", escaped(file.string())));
   for (std::size_t t = 0; t < triangles; ++t)
     for (int c = 0; c < 9; ++c) {  // the 12 bytes of the normal are not used
       const float x = little_endian_f32(bytes, kBinaryHeader + t * kBinaryTriangle + 12 + 4 * c);
       if (!std::isfinite(x))
         throw Error(fmt::format("{}: triangle {} (0-based) has a non-finite coordinate ({}) at its vertex {}; fix "
                                 "or remove the triangle",
-                                file.string(), t, x, c / 3));
+                                escaped(file.string()), t, x, c / 3));
     }
 }
 
@@ -73,7 +74,7 @@ public:
     if (facets_ == 0)
       throw Error(fmt::format("{}: the ASCII STL file has no facets (each is 'facet normal nx ny nz', 'outer "
                               "loop', three 'vertex x y z' lines, 'endloop', 'endfacet')",
-                              file_.string()));
+                              escaped(file_.string())));
   }
 
 private:
@@ -163,7 +164,7 @@ void check_stl_text(const fs::path& file, std::string_view bytes) {
   if (bytes.substr(start, 5) != "solid")
     throw Error(fmt::format("{}: not an STL file: an ASCII STL starts with 'solid', and a binary STL has an 84-byte "
                             "header and 50 bytes per triangle ({} bytes do not fit that); the file may be cut off",
-                            file.string(), bytes.size()));
+                            escaped(file.string()), bytes.size()));
   AsciiChecker(file, bytes).run();
 }
 

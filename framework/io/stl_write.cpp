@@ -12,6 +12,7 @@
 #include "framework/io/binary_le.h"
 #include "framework/io/writers.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 
@@ -48,17 +49,17 @@ void check_float_range(const MeshData& mesh, const path& shown) {
     if (std::abs(mesh.positions[i]) > std::numeric_limits<float>::max())
       throw Error(fmt::format("cannot write '{}': vertex {} has a coordinate ({}) too large for "
                               "STL's 32-bit floats; write PLY or OBJ instead",
-                              shown.string(), i / 3, mesh.positions[i]));
+                              escaped(shown.string()), i / 3, mesh.positions[i]));
 }
 
 }  // namespace
 
-void write_stl(const path& file, const path& shown, const MeshData& mesh) {
+void write_stl(const path& file, const path& shown, const MeshData& mesh, const ProgressCallback& progress) {
   check_float_range(mesh, shown);
   const std::uint64_t triangles = triangle_count(mesh);
   if (triangles > std::numeric_limits<std::uint32_t>::max())
     throw Error(fmt::format("cannot write '{}': {} triangles exceed binary STL's limit",
-                            shown.string(), triangles));
+                            escaped(shown.string()), triangles));
   BufferedOutput out(file, shown);
   // The header must not start with "solid", or readers take the file for ASCII STL.
   char header[80] = {};
@@ -66,7 +67,8 @@ void write_stl(const path& file, const path& shown, const MeshData& mesh) {
   std::memcpy(header, kTitle, sizeof kTitle - 1);
   out.write(header, sizeof header);
   put_le(out, std::uint32_t(triangles));
-  for (Index f = 0; f < mesh.face_count(); ++f) {
+  WriteProgress written(progress, std::size_t(mesh.face_count()));
+  for (Index f = 0; f < mesh.face_count(); ++f, written.step()) {
     const Index first = mesh.face_offsets[f];
     for (Index k = first + 1; k + 1 < mesh.face_offsets[f + 1]; ++k) {
       const Vec a = point(mesh, mesh.face_vertices[first]);
@@ -80,6 +82,7 @@ void write_stl(const path& file, const path& shown, const MeshData& mesh) {
     }
   }
   out.close();
+  written.finish();
 }
 
 }  // namespace subdiv::io_detail

@@ -9,8 +9,10 @@
 
 #include <fmt/format.h>
 
+#include "framework/io/io_progress.h"
 #include "framework/util/error.h"
 #include "framework/util/input_file.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
@@ -39,7 +41,7 @@ bool LineCursor::next(std::string_view& line) {
   size_t next = end == std::string_view::npos ? rest_.size() : end + 1;
   if (end != std::string_view::npos && rest_[end] == '\r' && next < rest_.size() && rest_[next] == '\n') ++next;
   rest_ = rest_.substr(next);
-  ++line_;
+  if ((++line_ & 1023) == 0) read_position(size_ - rest_.size());
   return true;
 }
 
@@ -83,7 +85,7 @@ std::string_view strip_comment(std::string_view line) {
 }
 
 void fail_at(const fs::path& file, size_t line, std::string_view message) {
-  throw Error(fmt::format("{}:{}: {}", file.string(), line, message));
+  throw Error(fmt::format("{}:{}: {}", escaped(file.string()), line, message));
 }
 
 }  // namespace subdiv::io_detail

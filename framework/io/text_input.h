@@ -21,7 +21,7 @@ std::string read_whole_file(const std::filesystem::path& file);
 // Lines of a text, numbered from 1, without their line ending ("\n", "\r\n" or a lone "\r").
 class LineCursor {
 public:
-  explicit LineCursor(std::string_view text) : rest_(text) {}
+  explicit LineCursor(std::string_view text) : rest_(text), size_(text.size()) {}
   bool next(std::string_view& line);
   std::size_t line_number() const { return line_; }
   // The text after the current line (binary PLY data follows its text header).
@@ -29,6 +29,7 @@ public:
 
 private:
   std::string_view rest_;
+  std::size_t size_;  // of the whole text: what is passed, for read progress (io_progress.h)
   std::size_t line_ = 0;
 };
 

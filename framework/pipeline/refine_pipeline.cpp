@@ -246,7 +246,7 @@ PreparedRefinement prepare_refinement(RefineRequest& r) {
   p.sequence = load_request_scheme(r, p.scheme_label);
   if (!r.mesh_file.empty()) {
     say(r, fmt::format("reading {}", r.mesh_file));
-    r.mesh = read_mesh(r.mesh_file);
+    r.mesh = read_mesh(r.mesh_file, r.progress_fraction);  // a bar while a large file is read
     if (r.mesh_name.empty()) r.mesh_name = r.mesh_file;
   }
   MeshCleanup cleanup;

@@ -12,6 +12,7 @@
 #include "framework/plugin/plugin_api.h"
 #include "framework/util/error.h"
 #include "framework/util/library_location.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace fs = std::filesystem;
@@ -81,16 +82,16 @@ void* try_load(const fs::path& file, PluginStatus& status, const std::vector<Plu
     return close_and_refuse(fmt::format(
         "interface version mismatch: the plugin was built for plugin interface {} (SubdivKit {}), this SubdivKit {} "
         "speaks interface {}; rebuild the plugin against this SubdivKit",
-        info->interface_version, text_or(info->subdivkit_version, "unknown"), SUBDIVKIT_VERSION_STRING,
+        info->interface_version, escaped(text_or(info->subdivkit_version, "unknown")), SUBDIVKIT_VERSION_STRING,
         SUBDIV_PLUGIN_INTERFACE_VERSION));
   if (!valid_plugin_name(status.name))
     return close_and_refuse(fmt::format("invalid plugin name '{}': use 1 to 64 letters, digits, '-', '_' or '.'",
-                                        status.name));
+                                        escaped(status.name)));
   if (!info->register_plugin) return close_and_refuse("the plugin record has no registration function");
   for (const PluginStatus& other : loaded_so_far)
     if (other.loaded && other.name == status.name)
       return close_and_refuse(fmt::format("duplicate plugin name: a plugin named '{}' is already loaded from {}",
-                                          status.name, other.file));
+                                          status.name, escaped(other.file)));
   // The plugin's own code runs from here on. Whatever it staged is dropped before the
   // library is closed; a refused plugin's registrations are undone by commit().
   std::string reason;

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "framework/plugin/checked_rules.h"
+#include "framework/plugin/checked_topology.h"
 #include "framework/scheme/json_source.h"
 #include "framework/scheme/scheme_loader.h"
 #include "framework/scheme/scheme_registry.h"
@@ -247,13 +248,16 @@ std::vector<std::string> PluginRegistry::commit() {
     for (auto it = splits.rbegin(); it != splits.rend(); ++it) unregister_splitter(*it);
   };
   try {
+    // Splitters and roles run as guarded functions: what they throw or return out of range
+    // becomes a message naming the plugin's file and the function (checked_topology.h).
+    const std::string who = fmt::format("plugin '{}' ({})", plugin_name_, plugin_file_);
     for (auto& s : st.splitters) {
       s.origin = origin;
-      splits.push_back(register_splitter(s));
+      splits.push_back(register_splitter(checked_splitter(s, who)));
     }
     for (auto& r : st.roles) {
       r.origin = origin;
-      roles.push_back(register_role(r));
+      roles.push_back(register_role(checked_role(r, who)));
     }
     for (auto& e : entries) {
       register_code_scheme(e);

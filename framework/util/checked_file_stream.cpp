@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 
@@ -16,8 +17,8 @@ std::string write_failure_text(const std::string& shown, int error) {
   if (error == ENOSPC || error == EDQUOT || error == EFBIG)
     return fmt::format("cannot write '{}': the disk is full or the file is larger than allowed ({}); free some space "
                        "or write to another disk",
-                       shown, std::strerror(error));
-  return fmt::format("cannot write '{}': writing failed ({})", shown, std::strerror(error));
+                       escaped(shown), std::strerror(error));
+  return fmt::format("cannot write '{}': writing failed ({})", escaped(shown), std::strerror(error));
 }
 
 CheckedFileBuffer::CheckedFileBuffer(const std::filesystem::path& file, const std::filesystem::path& shown)

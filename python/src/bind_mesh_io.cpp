@@ -5,6 +5,7 @@
 
 #include "bindings.h"
 #include "framework/io/mesh_seams.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdivkit {
 namespace {
@@ -49,8 +50,9 @@ void write(const std::string& path, py::handle mesh, py::handle point_data, py::
       for (auto& name : left_out(ext, data.cell_data, false)) lost.push_back(std::move(name));
       if (!lost.empty() &&
           PyErr_WarnEx(PyExc_UserWarning,
-                       fmt::format("write_mesh('{}'): {} files have no place for point or cell data {}; use .ply, "
-                                   ".vtp or .pvd to keep it", path, ext, fmt::join(lost, ", ")).c_str(), 1) < 0)
+                       subdiv::terminal_safe(fmt::format("write_mesh('{}'): {} files have no place for point or cell "
+                                   "data {}; use .ply, .vtp or .pvd to keep it", path, ext, fmt::join(lost, ", ")))
+                           .c_str(), 1) < 0)
         throw py::error_already_set();  // warnings filtered into errors
     }
     // OBJ holds face-varying data as vt; the other formats get a point per side of a seam.

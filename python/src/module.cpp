@@ -3,6 +3,7 @@
 // the Mesh class and SciPy matrices on top of what is bound here.
 #include "bindings.h"
 #include "framework/io/vtk/vtk_formats.h"
+#include "framework/util/quoted_text.h"
 
 PYBIND11_MODULE(_subdivkit, m) {
   namespace py = pybind11;
@@ -15,9 +16,9 @@ PYBIND11_MODULE(_subdivkit, m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const subdiv::OptionError& e) {  // the pipeline's words, spelled as Python's keywords
-      error(e.spelled(subdivkit::python_option_spelling()).c_str());
+      error(subdiv::terminal_safe(e.spelled(subdivkit::python_option_spelling())).c_str());
     } catch (const subdiv::Error& e) {
-      error(e.what());
+      error(subdiv::terminal_safe(e.what()).c_str());
     }
   });
   error.attr("__doc__") =

@@ -33,8 +33,15 @@ def _points(faces, uv):
     f = np.asarray(faces)
     if f.size and f.dtype.kind not in "iu":
         raise Error(f"faces: give an int array of face numbers, got dtype {f.dtype}")
+    # Checked before the cast to int32, which would wrap 2**32 + 1 to face 1 without a word.
+    if f.size and (int(f.min()) < -2**31 or int(f.max()) >= 2**31):
+        raise Error(f"faces: face number {int(f.max()) if int(f.max()) >= 2**31 else int(f.min())} is beyond "
+                    "32-bit face numbers")
     f = np.ascontiguousarray(np.atleast_1d(f), dtype=np.int32)
-    p = np.ascontiguousarray(np.asarray(uv, dtype=np.float64))
+    u = np.asarray(uv)
+    if u.size and u.dtype.kind not in "fiu":  # complex parameters would lose their imaginary part
+        raise Error(f"uv: give numbers, got an array of dtype {u.dtype}")
+    p = np.ascontiguousarray(u, dtype=np.float64)
     if p.ndim == 1 and p.shape == (2,) and f.shape == (1,):
         p = p.reshape(1, 2)
     if f.ndim != 1 or p.ndim != 2 or p.shape[1] != 2 or p.shape[0] != f.shape[0]:

@@ -1,20 +1,22 @@
 #!/usr/bin/env python3
-"""`subdiv refine` draws its progress bar on a terminal, and nothing on a pipe or with -q.
+"""`subdiv refine` draws its progress bar on a terminal, and nothing on a pipe or with -q:
+while reading, on each level, while writing (VTK formats and OBJ, OFF, PLY, STL).
 
 The terminal is a pseudo-terminal (Python's pty module): stderr is a tty there, as in a
 shell. Usage: progress_pty_test.py SUBDIV SOURCE_DIR
 """
 import os
+import re
 import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
 
-def run_on_pty(args):
+def run_on_pty(args, env=None):
     """Exit code and what the command wrote to stderr, a pseudo-terminal."""
     master, slave = os.openpty()
-    process = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=slave)
+    process = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=slave, env=env)
     os.close(slave)
     out = b""
     while True:
@@ -45,6 +47,24 @@ def main():
         code, quiet = run_on_pty(refine + ["-q"])
         if code != 0 or quiet:
             failures.append(f"with -q on a pty: exit {code}, stderr {quiet!r} (expected nothing)")
+        # Mesh formats: a bar while the input is read and while the output is written, moving
+        # between its ends (a percentage strictly between 0 and 100), every step drawn however
+        # fast the machine (SUBDIV_PROGRESS_EVERY_STEP).
+        every_step = dict(os.environ, SUBDIV_PROGRESS_EVERY_STEP="1")
+        big = Path(tmp) / "big.obj"
+        code, _ = run_on_pty([subdiv, "refine", str(mesh), "-l", "5", "-q", "-o", str(big)])
+        for ext in ["obj", "off", "ply", "stl"]:
+            out = Path(tmp) / f"again.{ext}"
+            code, tty = run_on_pty([subdiv, "refine", str(big), "-l", "0", "-o", str(out)], every_step)
+            if code != 0:
+                failures.append(f"refine {big} -o {out} on a pty exited {code}: {tty!r}")
+            for part, what in [(f"reading {big}  [", "a bar while reading"), (f"writing {out}  [", "a bar while writing")]:
+                if part not in tty:
+                    failures.append(f"on a pty, no {what} ({part!r}) in {tty!r}")
+            for phase in ["reading", "writing"]:
+                shares = re.findall(phase + r" [^\r]*\] +(\d+)%", tty)
+                if not any(0 < int(share) < 100 for share in shares):
+                    failures.append(f".{ext}: the bar while {phase} never stood between 0 and 100% ({shares})")
         piped = subprocess.run(refine, capture_output=True, text=True)
         if piped.returncode != 0 or "\r" in piped.stderr or "%" in piped.stderr:
             failures.append(f"with stderr a pipe: exit {piped.returncode}, stderr {piped.stderr!r} (expected no bar)")

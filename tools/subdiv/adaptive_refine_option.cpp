@@ -7,6 +7,7 @@
 #include "framework/io/mesh_write.h"
 #include "framework/pipeline/adaptive_request.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 #include "shared_options.h"
 
 namespace subdiv::cli {
@@ -38,7 +39,7 @@ void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& a, bool limi
   r.tolerance = a.tolerance;
   r.limit = limit;
   AdaptiveResult result = refine_adaptive_request(std::move(r));
-  for (const std::string& w : result.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
+  for (const std::string& w : result.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
   const std::string summary = adaptive_summary(result);
   write_mesh(output, adaptive_mesh_data(std::move(result.mesh)));
   if (quiet) return;

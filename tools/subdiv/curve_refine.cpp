@@ -10,6 +10,7 @@
 #include "framework/pipeline/thread_limit.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 #include "progress.h"
 
 namespace subdiv::cli {
@@ -74,7 +75,7 @@ void refine_curves_command(const CurveRefineArgs& a) {
   write_curve_levels(a.output, result.levels);
   progress.done();
   if (a.quiet) return;
-  for (const auto& note : result.notes) fmt::print(stderr, "subdiv: note: {}\n", note);
+  for (const auto& note : result.notes) fmt::print(stderr, "subdiv: note: {}\n", terminal_safe(note));
   const CurveLevel& fine = result.levels.back().topology;
   int closed = 0;
   for (auto c : fine.closed) closed += c;

@@ -24,6 +24,7 @@
 #include "framework/util/atomic_file.h"
 #include "framework/util/error.h"
 #include "framework/util/parallel_for_all.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::cli {
 namespace {
@@ -169,13 +170,13 @@ void run(const EvaluateArgs& a) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
   if (a.adaptive >= 0) {  // the same as subdiv refine --adaptive L (adaptive_refine_option.cpp)
     AdaptiveResult r = refine_adaptive_request(adaptive_request_from(evaluate_request(a), a.adaptive, 0, a.limit));
-    for (const std::string& w : r.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
+    for (const std::string& w : r.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
     fmt::print("subdiv: {}\n", adaptive_summary(r));
     write_mesh(a.output, adaptive_mesh_data(std::move(r.mesh)));
     return;
   }
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a));
-  for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
+  for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
   if (a.samples > 0) {
     write_mesh(a.output, tessellation_mesh(tessellate(*prepared.surface, prepared.mesh.positions, a.samples)));
     return;

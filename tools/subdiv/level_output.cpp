@@ -99,7 +99,7 @@ void write_levels(const std::filesystem::path& out, Hierarchy&& h, std::vector<L
     mesh.point_data.insert(mesh.point_data.end(), finest_point_data.begin(), finest_point_data.end());
     mesh.options = obj_tags;
     // OBJ holds face-varying data as vt; the other formats get a point per side of a seam.
-    write_mesh(out, ext == ".obj" || mesh.face_varying.empty() ? mesh : split_at_seams(mesh));
+    write_mesh(out, ext == ".obj" || mesh.face_varying.empty() ? mesh : split_at_seams(mesh), choice.vtk.progress);
     return;
   }
   std::vector<MeshData> meshes;

@@ -8,6 +8,7 @@
 #include "framework/io/vtk/vtk_formats.h"
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
+#include "framework/util/quoted_text.h"
 
 int main(int argc, char** argv) {
   subdiv::register_vtk_formats();  // before the help texts list the formats
@@ -31,16 +32,16 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return subdiv::cli::report_parse_error(app, e, argc, argv);
   } catch (const subdiv::OptionError& e) {  // the pipeline's words, spelled as our options
-    fmt::print(stderr, "subdiv: error: {}\n", e.spelled(subdiv::cli::cli_option_spelling()));
+    fmt::print(stderr, "subdiv: error: {}\n", subdiv::terminal_safe(e.spelled(subdiv::cli::cli_option_spelling())));
     return subdiv::cli::kExitRefused;
   } catch (const subdiv::Error& e) {
-    fmt::print(stderr, "subdiv: error: {}\n", e.what());
+    fmt::print(stderr, "subdiv: error: {}\n", subdiv::terminal_safe(e.what()));
     return subdiv::cli::kExitRefused;
   } catch (const std::bad_alloc&) {  // the memory guard's words, never "internal error"
     fmt::print(stderr, "subdiv: error: {}\n", subdiv::out_of_memory_message("running the command"));
     return subdiv::cli::kExitRefused;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "subdiv: internal error: {}\n", e.what());
+    fmt::print(stderr, "subdiv: internal error: {}\n", subdiv::terminal_safe(e.what()));
     return subdiv::cli::kExitInternal;
   }
   return 0;

@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "framework/plugin/plugin_loader.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::cli {
 namespace {
@@ -77,7 +78,7 @@ void add_plugin_options(CLI::App& app) {
     refuse_requested_plugins(statuses);
     for (const auto& s : statuses)
       if (!s.loaded)
-        fmt::print(stderr, "subdiv: warning: plugin {} refused: {}\n", s.file, s.reason);
+        fmt::print(stderr, "subdiv: warning: plugin {} refused: {}\n", terminal_safe(s.file), terminal_safe(s.reason));
   });
 }
 

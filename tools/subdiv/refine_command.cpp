@@ -19,6 +19,7 @@
 #include "progress.h"
 #include "shared_options.h"
 #include "adaptive_refine_option.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::cli {
 namespace {
@@ -88,7 +89,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 void print_warnings(const std::vector<std::string>& warnings) {
-  for (const auto& w : warnings) fmt::print(stderr, "subdiv: warning: {}\n", w);
+  for (const auto& w : warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
 }
 
 // --pieces and --max-memory write a .pvtp, and only a .pvtp comes from them; what a piece

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::cli {
 namespace {
@@ -139,7 +140,7 @@ int report_parse_error(const CLI::App& app, const CLI::ParseError& e, int argc, 
     else
       message = reworded(e);
   }
-  fmt::print(stderr, "subdiv: error: {}\nRun `{}` for the options.\n", message, help);
+  fmt::print(stderr, "subdiv: error: {}\nRun `{}` for the options.\n", terminal_safe(message), help);
   return kExitUsage;
 }
 

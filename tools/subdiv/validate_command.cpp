@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "framework/scheme/scheme_validator.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::cli {
 
@@ -38,7 +39,7 @@ void add_validate_command(CLI::App& app) {
         continue;
       }
       ++failed;
-      for (const auto& e : r.errors) fmt::print(stderr, "{}\n", e.message);
+      for (const auto& e : r.errors) fmt::print(stderr, "{}\n", terminal_safe(e.message));
     }
     if (failed) throw Error(fmt::format("{} of {} scheme file(s) failed validation", failed, files->size()));
   });

@@ -15,6 +15,7 @@
 #include "framework/io/text_input.h"
 #include "framework/util/error.h"
 #include "framework/util/short_text.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
@@ -69,8 +70,8 @@ private:
   static constexpr std::uint64_t kUnknownTuples = std::numeric_limits<std::uint64_t>::max();
 
   [[noreturn]] void fail(const std::string& problem) const {
-    if (in_binary_data_) throw Error(fmt::format("{}: byte {}: {}", file_.string(), pos_, problem));
-    throw Error(fmt::format("{}:{}: {}", file_.string(), line_, problem));
+    if (in_binary_data_) throw Error(fmt::format("{}: byte {}: {}", escaped(file_.string()), pos_, problem));
+    throw Error(fmt::format("{}:{}: {}", escaped(file_.string()), line_, problem));
   }
 
   // Past binary data, line ends in the data make line numbers useless: binary files are

@@ -15,6 +15,7 @@
 #include "framework/util/atomic_file.h"
 #include "framework/util/buffered_output.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace fs = std::filesystem;
@@ -55,7 +56,7 @@ bool make_directory(const fs::path& dir, std::string_view context) {
   std::error_code ec;
   const bool created = fs::create_directory(dir, ec);
   if (ec || !fs::is_directory(dir, ec))
-    throw Error(fmt::format("{}: cannot create directory '{}' ({})", context, dir.string(),
+    throw Error(fmt::format("{}: cannot create directory '{}' ({})", context, escaped(dir.string()),
                             ec ? ec.message() : "a file of that name exists"));
   return created;
 }
@@ -77,7 +78,7 @@ void remove_stale_levels(const fs::path& dir, const std::set<std::string>& writt
 }  // namespace
 
 void write_vtp(const fs::path& file, const OutputLevel& level, const VtkWriteOptions& options) {
-  io_detail::check_output_level(level, fmt::format("cannot write '{}'", file.string()));
+  io_detail::check_output_level(level, fmt::format("cannot write '{}'", escaped(file.string())));
   const auto poly = io_detail::make_polydata(level, options, io_detail::LevelMemory::Share);
   write_file_atomically(file, [&](const fs::path& tmp) {
     io_detail::write_polydata_file(*poly, tmp, file, options);
@@ -85,7 +86,7 @@ void write_vtp(const fs::path& file, const OutputLevel& level, const VtkWriteOpt
 }
 
 void write_pvd(const fs::path& pvd, std::span<const OutputLevel> levels, const VtkWriteOptions& options) {
-  const std::string context = fmt::format("cannot write '{}'", pvd.string());
+  const std::string context = fmt::format("cannot write '{}'", escaped(pvd.string()));
   check_levels(levels, context);
   const fs::path parent = pvd.parent_path().empty() ? fs::path(".") : pvd.parent_path();
   std::error_code ec;

@@ -11,6 +11,7 @@
 #include "framework/io/vtk/vtk_polydata.h"
 #include "framework/util/buffered_output.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace fs = std::filesystem;
@@ -22,7 +23,7 @@ std::string folder_name(const fs::path& pvtp) { return pvtp.stem().string() + "_
 // The XML head of a .vtp (everything before its binary appended data).
 std::string xml_head(const fs::path& vtp) {
   std::ifstream in(vtp, std::ios::binary);
-  if (!in) throw Error(fmt::format("cannot read piece '{}' to describe it in the .pvtp", vtp.string()));
+  if (!in) throw Error(fmt::format("cannot read piece '{}' to describe it in the .pvtp", escaped(vtp.string())));
   std::string head, line;
   while (std::getline(in, line) && line.find("<AppendedData") == std::string::npos) head += line + "\n";
   return head;
@@ -64,12 +65,12 @@ void make_piece_folder(const fs::path& pvtp) {
   if (!fs::is_directory(dir, ec))
     throw Error(fmt::format("cannot write '{}': cannot create the pieces' folder '{}' ({}); check the path and its "
                             "permissions",
-                            pvtp.string(), dir.string(), ec ? ec.message() : "a file of that name exists"));
+                            pvtp.string(), escaped(dir.string()), ec ? ec.message() : "a file of that name exists"));
 }
 
 void write_piece_vtp(StagedFiles& staged, const fs::path& target, const OutputLevel& level,
                      const VtkWriteOptions& options) {
-  io_detail::check_output_level(level, fmt::format("cannot write '{}'", target.string()));
+  io_detail::check_output_level(level, fmt::format("cannot write '{}'", escaped(target.string())));
   const auto poly = io_detail::make_polydata(level, options, io_detail::LevelMemory::Share);
   io_detail::write_polydata_file(*poly, staged.stage(target), target, options);
 }

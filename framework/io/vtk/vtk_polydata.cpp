@@ -36,6 +36,7 @@
 #include "framework/io/vtk/vtk_xml_text.h"
 #include "framework/util/checked_file_stream.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
@@ -68,11 +69,11 @@ void check_array(const DataArray& a, std::size_t tuples, const char* per, std::s
   require_xml_text(a.name, fmt::format("{} data array", per), context);
   if (a.components < 1)
     throw Error(fmt::format("{}: array '{}' has {} components; it needs at least 1", context,
-                            a.name, a.components));
+                            escaped(a.name), a.components));
   if (a.values.size() != tuples * std::size_t(a.components))
     throw Error(fmt::format("{}: array '{}' has {} values, expected {} ({} {}s x {} "
                             "components)",
-                            context, a.name, a.values.size(), tuples * a.components, tuples,
+                            context, escaped(a.name), a.values.size(), tuples * a.components, tuples,
                             per, a.components));
   if (!a.integer) return;
   // On every core first; in order, for the message, only if some value is not whole.
@@ -94,7 +95,7 @@ void check_array(const DataArray& a, std::size_t tuples, const char* per, std::s
         v > std::numeric_limits<int>::max())
       throw Error(fmt::format("{}: integer array '{}' holds {} at position {}, which is not a "
                               "whole number that fits an int; mark the array as not integer",
-                              context, a.name, v, i));
+                              context, escaped(a.name), v, i));
   }
 }
 
@@ -106,9 +107,9 @@ void check_arrays(const std::vector<DataArray>& arrays, const std::set<std::stri
     if (reserved.count(a.name))
       throw Error(fmt::format("{}: array name '{}' is reserved for the array write_vtp adds; "
                               "rename it",
-                              context, a.name));
+                              context, escaped(a.name)));
     if (!names.insert(a.name).second)
-      throw Error(fmt::format("{}: two {} data arrays are named '{}'", context, per, a.name));
+      throw Error(fmt::format("{}: two {} data arrays are named '{}'", context, per, escaped(a.name)));
     const bool alternative = a.components > 0 &&
                              a.values.size() == alternative_tuples * std::size_t(a.components);
     check_array(a, alternative ? alternative_tuples : tuples, per, context);
@@ -373,7 +374,7 @@ void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path
   writer->WriteToStream(nullptr);
   stream.close();  // a failed write is the cause of anything VTK reports after it
   if (written != 1 || writer->GetErrorCode() != 0 || !errors.empty())
-    throw Error(fmt::format("cannot write '{}': VTK reports: {}", shown.string(),
+    throw Error(fmt::format("cannot write '{}': VTK reports: {}", escaped(shown.string()),
                             errors.empty() ? "an unknown error" : errors));
   if (options.progress) options.progress(1.0);
 }

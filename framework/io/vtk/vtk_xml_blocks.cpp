@@ -11,6 +11,7 @@
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
 #include "framework/util/short_text.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
@@ -126,7 +127,7 @@ public:
 private:
   [[noreturn]] void fail(std::size_t at, const std::string& problem) const {
     const std::size_t line = 1 + std::size_t(std::count(bytes_.begin(), bytes_.begin() + std::min(at, bytes_.size()), '\n'));
-    throw Error(fmt::format("{}:{}: {}", file_.string(), line, problem));
+    throw Error(fmt::format("{}:{}: {}", escaped(file_.string()), line, problem));
   }
 
   // Where VTK's vtkXMLDataParser::FindAppendedDataPosition puts the data: after the

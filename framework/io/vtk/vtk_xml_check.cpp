@@ -14,6 +14,7 @@
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
 #include "framework/util/short_text.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
@@ -73,13 +74,13 @@ public:
       throw Error(fmt::format("cannot read '{}': its {:.3g} points and {:.3g} cells would need about {:.1f} GiB, but "
                               "only {:.1f} GiB of memory is available (limited by {}); the sizes in its <Piece> are "
                               "wrong, or the mesh is too large for this machine",
-                              file_.string(), points, cells, need / (1 << 30), budget.bytes / (1 << 30),
+                              escaped(file_.string()), points, cells, need / (1 << 30), budget.bytes / (1 << 30),
                               budget.source));
   }
 
 private:
   [[noreturn]] void fail(std::size_t at, const std::string& problem) const {
-    throw Error(fmt::format("{}:{}: {}", file_.string(), line_of(bytes_, at), problem));
+    throw Error(fmt::format("{}:{}: {}", escaped(file_.string()), line_of(bytes_, at), problem));
   }
 
   // Calls visit(section_start, array_start) for each array element inside each

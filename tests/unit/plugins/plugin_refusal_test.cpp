@@ -28,3 +28,25 @@ TEST_CASE("refine with a refused --plugin exits non-zero, names the plugin and w
   CHECK(missing.exit_code == 1);
   CHECK(contains(missing.output, (dir / "nowhere.so").string()));
 }
+
+TEST_CASE("refine with a plugin whose splitter or role is broken exits 1 naming the plugin file, writes nothing") {
+  ::unsetenv("SUBDIV_PLUGIN_PATH");
+  ::setenv("SUBDIV_NO_INSTALLED_PLUGINS", "1", 1);
+  const auto dir = fresh_dir("plugin-broken-topology");
+  const std::string cube = source_path("examples/meshes/cube.obj");
+  const std::string plugin = plugin_path("test_plugin_broken_topology");
+  const CliResult split = run_subdiv("refine " + cube + " -s broken-split-scheme --plugin " + plugin + " -o " +
+                                     (dir / "out.obj").string());
+  INFO(split.output);
+  CHECK(split.exit_code == 1);
+  CHECK(contains(split.output, "plugin 'broken-topology' (" + plugin + "), splitter 'broken-split': its split "
+                               "function (step 0) returned a child level that cannot be used: face_vertices[95] is"));
+  CHECK_FALSE(fs::exists(dir / "out.obj"));
+  const CliResult role = run_subdiv("refine " + cube + " -s broken-role-scheme --plugin " + plugin + " -o " +
+                                    (dir / "out.obj").string());
+  INFO(role.output);
+  CHECK(role.exit_code == 1);
+  CHECK(contains(role.output, "plugin 'broken-topology' (" + plugin + "), role 'broken-role': its points function "
+                              "(element 0) threw something that is not a std::exception"));
+  CHECK_FALSE(fs::exists(dir / "out.obj"));
+}
