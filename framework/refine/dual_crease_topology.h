@@ -31,13 +31,5 @@ struct DualFeatureSplit {
 // With `full`, the whole child level with its sharpness tags; otherwise its faces only.
 DualFeatureSplit dual_feature_split(const Level& parent, bool full);
 
-// The mid-edge split (Peters & Reif 1997) of a level with interior creases: child vertex e is
-// parent edge e's midpoint, shared by both sides of a sharp edge, so the sides are glued by
-// construction; each vertex's V-face is cut into sector faces between its sharp edges, as a
-// boundary vertex's is, and the edge closing a sector (between the midpoints of two
-// consecutive sharp edges) carries their mean sharpness less one. The crease so follows the
-// mid-edge rule of a polygon, the polygon of its edge midpoints, as a boundary does.
-// Corners are not kept: a mid-edge split has no point on a vertex.
-Level mid_edge_feature_split(const Level& parent, bool full);
 
 }  // namespace subdiv

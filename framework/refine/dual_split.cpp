@@ -72,11 +72,6 @@ SplitResult dual_result(const Level& L, bool full) {
 }
 
 SplitResult mid_edge_result(const Level& L, bool full) {
-  if (dual_needs_feature_topology(L)) {
-    Level child = mid_edge_feature_split(L, full);
-    const Index child_faces = child.face_count();
-    return SplitResult{std::move(child), dual_origins(L, OriginKind::Edge, child_faces), true, {}};
-  }
   DualSkipped skipped;
   Level child = mid_edge_split_topology(L, full, &skipped);
   const Index child_faces = child.face_count();
