@@ -194,6 +194,11 @@ FaceVaryingLevel dual_step_values(const Level& parent, const ChildOrigins& verte
   vertex_of.assign(value_origins.kind.size(), kNone);
   for (Index v = 0; v < child.vertex_count; ++v) {
     value_of_vertex[v] = value_at_corner[size_t(parent.face_offsets[vertex_origins.parent[v]]) + vertex_origins.local[v]];
+    // A dual split with creases or corners (refine/dual_crease_topology.h) may join corner
+    // points differently in the value mesh, where seams are boundaries.
+    if (value_of_vertex[v] == kNone)
+      throw Error("face-varying data through a dual split where a seam meets a crease or corner is not supported; "
+                  "refine the face-varying data with a primal scheme, or without sharp tags at the seam");
     vertex_of[value_of_vertex[v]] = v;
   }
   FaceVaryingLevel out{std::move(values), {}};

@@ -24,6 +24,10 @@ struct ChildOrigins {
   std::vector<LocalIndex> local;  // Corner: corner index within the face; Edge: point along it; else 0
   std::vector<Index> parent_face;   // per child face: the parent face it lies in (kNone if none)
   std::optional<ChildRuns> runs;  // empty when the layout is another
+  // Set only by the dual split of a level with features (refine/dual_crease_topology.h): per
+  // child vertex, 1 for the point on the arriving edge of a corner with two sharp face edges,
+  // else 0. Its presence tells the corner rule that glued and collapsed points exist.
+  std::vector<std::uint8_t> corner_side;
 };
 
 }  // namespace subdiv

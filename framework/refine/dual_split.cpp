@@ -10,7 +10,9 @@
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
+#include "framework/features/dual_features.h"
 #include "framework/features/sharpness.h"
+#include "framework/refine/dual_crease_topology.h"
 #include "framework/refine/dual_topology.h"
 #include "framework/refine/splitter.h"
 #include "framework/util/bulk_memory.h"
@@ -49,7 +51,15 @@ ChildOrigins dual_origins(const Level& L, OriginKind kind, Index child_faces) {
   return o;
 }
 
+// Interior creases and corners: the sides of each sharp edge glued along their crease
+// points, corners collapsed (refine/dual_crease_topology.h).
+SplitResult feature_result(const Level& L, bool full) {
+  DualFeatureSplit split = dual_feature_split(L, full);
+  return SplitResult{std::move(split.child), std::move(split.origins), true, {}};
+}
+
 SplitResult dual_result(const Level& L, bool full) {
+  if (dual_needs_feature_topology(L)) return feature_result(L, full);
   DualSkipped skipped;
   Level child = dual_split_topology(L, full, &skipped);
   const Index child_faces = child.face_count();
@@ -76,6 +86,7 @@ SplitResult mid_edge_result(const Level& L, bool full) {
 }  // namespace
 
 SplitResult split_dual(const Level& L) {
+  if (dual_needs_feature_topology(L)) return feature_result(L, true);
   SplitResult result = dual_result(L, true);
   // A sharp edge's E-face keeps the sharpness on its two long sides (the F-face edges
   // along the old edge), so the crease stays a crease in the dual mesh.

@@ -62,7 +62,11 @@ struct SplitterTable {
     mid.period = 2;  // the split turns the mesh by 45 degrees
     mid.handles_non_manifold = true;
     quad.topology_reach = tri.topology_reach = 0.5;
-    sqrt3.topology_reach = dual.topology_reach = mid.topology_reach = 1.5;
+    sqrt3.topology_reach = mid.topology_reach = 1.5;
+    // A dual split's faces near a vertex depend on the vertex's class (its sharp edges and
+    // boundary, features/dual_features.h), which reads the vertex's whole ring: one ring more
+    // than the faces around it.
+    dual.topology_reach = 2.5;
     mid.ring_scale = 1.0;
     for (SplitterInfo* info : {&quad, &tri, &sqrt3, &dual, &mid}) builtins.push_back(std::move(*info));
   }

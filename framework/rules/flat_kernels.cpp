@@ -310,7 +310,8 @@ Index FlatKernels::run_corners(Index begin, Index end, const StepSources& in, do
     const int i = origins.local[child];
     const Index corner_begin = L.face_offsets[f], k = L.face_offsets[f + 1] - corner_begin;
     const Index out_edge = L.face_edges[corner_begin + i], in_edge = L.face_edges[corner_begin + (i + k - 1) % k];
-    if (sharp_corner(L, F, untagged_, L.face_vertices[corner_begin + i], out_edge, in_edge) || k > max_k) {
+    if (sharp_corner(L, F, untagged_, L.face_vertices[corner_begin + i], out_edge, in_edge) || k > max_k ||
+        dual_feature_corner(L, origins, L.face_vertices[corner_begin + i])) {
       left.push_back(r);
       continue;
     }

@@ -6,7 +6,9 @@
 // contexts are not read; the step evaluator relies on this to classify such a level only
 // when a row needs the interpreter (engine/refiner.cpp, prepare_step). Callers have already
 // left out boundary and non-manifold vertices and edges.
+#include "framework/features/dual_features.h"
 #include "framework/features/feature_context.h"
+#include "framework/refine/child_origins.h"
 #include "framework/topology/level.h"
 
 namespace subdiv {
@@ -35,6 +37,12 @@ inline bool sharp_corner(const Level& L, const FeatureContexts& F, bool untagged
            L.non_manifold_edge(in_edge);
   return F.vertex_sharpness[vertex] > 0.f || F.edges[out_edge].crease_weight != 0.f ||
          F.edges[in_edge].crease_weight != 0.f;
+}
+
+// In the dual split of a level with features (refine/dual_crease_topology.h) every corner
+// of a collapsing vertex is that vertex's one child point, whatever its face edges.
+inline bool dual_feature_corner(const Level& L, const ChildOrigins& o, Index vertex) {
+  return !o.corner_side.empty() && dual_collapses(L, vertex);
 }
 
 }  // namespace subdiv

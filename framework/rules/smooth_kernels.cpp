@@ -396,7 +396,8 @@ bool SmoothKernels::corner_point(Index f, int corner, const StepSources& in, dou
   const auto corners = L.face(f);
   const auto edges = L.face_edge_list(f);
   const int k = int(corners.size()), channels = in.channels;
-  if (sharp_corner(L, step_.features, untagged_, corners[corner], edges[corner], edges[(corner + k - 1) % k]))
+  if (sharp_corner(L, step_.features, untagged_, corners[corner], edges[corner], edges[(corner + k - 1) % k]) ||
+      dual_feature_corner(L, step_.origins, corners[corner]))
     return false;
   PointAccumulator<C> acc(out, channels);
   double sum = 0.0;

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
+#include "framework/features/dual_features.h"
 #include "framework/rules/row_plans.h"
 #include "framework/util/error.h"
 #include "framework/util/input_file.h"
@@ -84,10 +85,55 @@ void fill_edge_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, 
   apply_segment_curve_rule(row, in, e, a, b, curve_rule(s, local + 1, Element::Edge), cw);
 }
 
+// A point of the dual split of a level with features (refine/dual_crease_topology.h, docs/
+// features.md "Creases in dual schemes"). A corner's vertex that collapses stays (the
+// `corner` rule); a point on a sharp edge is the curve scheme's point on that edge near the
+// vertex, rule 0 on the segment leaving the vertex, rule 1 on the one arriving (Chaikin 1974:
+// 3/4 v + 1/4 w), or the stated `crease` rule; `side` 1 is a split corner's point on its
+// arriving edge. A corner beside semi-sharp edges (0 < s < 1, smooth topology) blends:
+// (1 - w_out - w_in) smooth + w_out (rule 0 out) + w_in (rule 1 in), the crease weights
+// normalised when they sum past 1; a vertex of sharpness 0 < s < 1 blends s of the corner
+// rule in (DeRose, Kass & Truong 1998's fractional sharpness, as the primal rules blend).
+template <class Smooth>
+void fill_feature_corner_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index f, int corner, int side,
+                             Smooth smooth) {
+  const Level& L = s.parent;
+  const int k = L.face_size(f);
+  const Index v = L.face(f)[corner];
+  const Index out = L.face_edge_list(f)[corner], in_edge = L.face_edge_list(f)[(corner + k - 1) % k];
+  const Index next = L.face(f)[(corner + 1) % k], prev = L.face(f)[(corner + k - 1) % k];
+  const CompiledRule& corner_rule = needed_rule(s.tables, Element::Corner, Context::Corner, s.source);
+  if (dual_collapses(L, v)) return apply_corner_rule(row, in, f, corner, corner_rule, 1.0);
+  const float sv = L.vertex_sharp(v);
+  double scale = 1.0;
+  if (sv > 0.f) apply_corner_rule(row, in, f, corner, corner_rule, sv), scale = 1.0 - sv;
+  const CompiledRule& stated = s.tables.rule(Element::Corner, Context::Crease);
+  auto leaving = [&](double w) {
+    if (stated.defined) return apply_corner_rule(row, in, f, corner, stated, w);
+    apply_segment_curve_rule(row, in, out, v, next, curve_rule(s, 0, Element::Corner), w);
+  };
+  auto arriving = [&](double w) {
+    if (stated.defined) return apply_corner_rule(row, in, f, corner, stated, w);
+    apply_segment_curve_rule(row, in, in_edge, prev, v, curve_rule(s, 1, Element::Corner), w);
+  };
+  const bool sharp_out = dual_sharp_edge(L, out), sharp_in = dual_sharp_edge(L, in_edge);
+  if (sharp_in && (!sharp_out || side == 1)) return arriving(scale);
+  if (sharp_out) return leaving(scale);
+  double w_out = std::max(0.f, s.features.edges[out].crease_weight);
+  double w_in = std::max(0.f, s.features.edges[in_edge].crease_weight);
+  if (w_out + w_in > 1.0) {
+    const double sum = w_out + w_in;
+    w_out /= sum, w_in /= sum;
+  }
+  if (w_out + w_in < 1.0) smooth(scale * (1.0 - w_out - w_in));
+  if (w_out > 0.0) leaving(scale * w_out);
+  if (w_in > 0.0) arriving(scale * w_in);
+}
+
 // A face corner beside a sharp face edge follows the (dual) curve scheme along that edge:
 // rule 0 for the point near the segment's start, rule 1 near its end (Nasri 1987: the
 // boundary follows Chaikin; our crease extension for dual schemes, docs/scheme-format.md).
-void fill_corner_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index f, int corner) {
+void fill_corner_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index f, int corner, int side) {
   const Level& L = s.parent;
   const int k = L.face_size(f);
   const Index v = L.face(f)[corner];
@@ -106,6 +152,7 @@ void fill_corner_row(RowBuilder& row, const StepContext& s, const RuleInputs& in
     RowWriter writer(row, scale);
     s.code->corner({s.parent, s.features, s.level}, f, corner, Context::Smooth, writer);
   };
+  if (side >= 0) return fill_feature_corner_row(row, s, in, f, corner, side, smooth);
   if (corner_vertex) {
     const double w = s.features.vertex_sharpness[v] > 0.f ? 1.0 : std::min(w_out, w_in);
     apply_corner_rule(row, in, f, corner, needed_rule(s.tables, Element::Corner, Context::Corner, s.source), w);
@@ -152,7 +199,9 @@ void fill_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index
         return s.code->face({s.parent, s.features, s.level}, p, writer);
       }
       return apply_face_rule(row, in, p, needed_rule(s.tables, Element::Face, Context::Smooth, s.source));
-    case OriginKind::Corner: return fill_corner_row(row, s, in, p, s.origins.local[child]);
+    case OriginKind::Corner:
+      return fill_corner_row(row, s, in, p, s.origins.local[child],
+                             s.origins.corner_side.empty() ? -1 : int(s.origins.corner_side[child]));
   }
 }
 

@@ -1,0 +1,348 @@
+// Creases of dual schemes (docs/features.md, "Creases in dual schemes"): the points a dual
+// split makes along a sharp crease are the crease polygon's curve-scheme refinement —
+// Chaikin 1974 (3/4 a + 1/4 b, 1/4 a + 3/4 b) for Doo-Sabin (Doo & Sabin 1978) and the
+// biquadratic B-spline, the degree-d B-spline (Lane & Riesenfeld 1980) for even-degree quad
+// B-splines — for any crease shape and valence; corners stay; sharpness 0 is the smooth
+// scheme and fractional sharpness lies strictly between (DeRose, Kass & Truong 1998).
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "support/refine_helpers.h"
+
+using namespace subdiv;
+
+namespace {
+
+using P3 = std::array<double, 3>;
+using Polygon = std::vector<P3>;
+
+// Chaikin 1974 on a closed polygon: two points per segment at 1/4 and 3/4.
+Polygon chaikin_closed(const Polygon& p) {
+  Polygon q;
+  for (size_t i = 0; i < p.size(); ++i) {
+    const P3& a = p[i];
+    const P3& b = p[(i + 1) % p.size()];
+    q.push_back({0.75 * a[0] + 0.25 * b[0], 0.75 * a[1] + 0.25 * b[1], 0.75 * a[2] + 0.25 * b[2]});
+    q.push_back({0.25 * a[0] + 0.75 * b[0], 0.25 * a[1] + 0.75 * b[1], 0.25 * a[2] + 0.75 * b[2]});
+  }
+  return q;
+}
+
+// Chaikin on an open polygon whose ends are corners: the cut next to each end is the end.
+Polygon chaikin_open_cornered(const Polygon& p) {
+  Polygon q = {p.front()};
+  for (size_t i = 0; i + 1 < p.size(); ++i) {
+    const P3& a = p[i];
+    const P3& b = p[i + 1];
+    if (i > 0) q.push_back({0.75 * a[0] + 0.25 * b[0], 0.75 * a[1] + 0.25 * b[1], 0.75 * a[2] + 0.25 * b[2]});
+    if (i + 2 < p.size()) q.push_back({0.25 * a[0] + 0.75 * b[0], 0.25 * a[1] + 0.75 * b[1], 0.25 * a[2] + 0.75 * b[2]});
+  }
+  q.push_back(p.back());
+  return q;
+}
+
+// Uniform B-spline of degree d on a closed polygon by Lane & Riesenfeld 1980: double every
+// point, then average neighbours d times.
+Polygon lane_riesenfeld_closed(const Polygon& p, int d) {
+  Polygon q;
+  for (const P3& x : p) q.push_back(x), q.push_back(x);
+  for (int pass = 0; pass < d; ++pass) {
+    Polygon r(q.size());
+    for (size_t i = 0; i < q.size(); ++i)
+      for (int c = 0; c < 3; ++c) r[i][c] = 0.5 * (q[i][c] + q[(i + 1) % q.size()][c]);
+    q = r;
+  }
+  return q;
+}
+
+double dist(const P3& a, const P3& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
+
+// A quad torus (8 x 6) made irregular along the crease loop j = 0: two quads merged into
+// hexagons (crease valence 3, one on each side) and quads split into triangles (valence 5
+// and 6), every vertex moved off the torus so the crease is no plane curve.
+struct CreasedTorus {
+  test::Mesh mesh;
+  std::vector<Index> loop;  // the crease polygon, in order
+};
+
+CreasedTorus creased_torus() {
+  const int nu = 8, nv = 6;
+  test::Mesh t = test::torus(nu, nv);
+  for (Index v = 0; v < t.vertex_count; ++v) {
+    t.positions[3 * v + 0] += 0.15 * std::sin(1.7 * v);
+    t.positions[3 * v + 1] += 0.12 * std::cos(2.3 * v);
+    t.positions[3 * v + 2] += 0.2 * std::sin(0.9 * v + 1.0);
+  }
+  auto id = [&](int i, int j) { return Index(((j + nv) % nv) * nu + (i + nu) % nu); };
+  test::Mesh m;
+  m.vertex_count = t.vertex_count;
+  m.positions = t.positions;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      if (j == 0 && i == 0)  // merged with (1, 0): crease vertex (1, 0) has valence 3
+        m.add_face({id(0, 0), id(1, 0), id(2, 0), id(2, 1), id(1, 1), id(0, 1)});
+      else if (j == 0 && i == 1) continue;
+      else if (j == 0 && (i == 3 || i == 5)) {  // fans from the crease vertex: valences 5 and 6
+        m.add_face({id(i, 0), id(i + 1, 0), id(i + 1, 1)});
+        m.add_face({id(i, 0), id(i + 1, 1), id(i, 1)});
+      } else if (j == nv - 1 && i == 4) {
+        m.add_face({id(5, 0), id(4, 0), id(4, nv - 1)});
+        m.add_face({id(5, 0), id(4, nv - 1), id(5, nv - 1)});
+      } else if (j == nv - 1 && i == 6)  // merged with (7, nv - 1): crease vertex (7, 0) valence 3
+        m.add_face({id(6, nv - 1), id(7, nv - 1), id(0, nv - 1), id(0, 0), id(7, 0), id(6, 0)});
+      else if (j == nv - 1 && i == 7) continue;
+      else m.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  CreasedTorus c{m, {}};
+  for (int i = 0; i < nu; ++i) c.loop.push_back(id(i, 0));
+  return c;
+}
+
+Level tagged(const test::Mesh& m, const std::vector<Index>& polygon, bool closed, float s) {
+  Level L = m.level();
+  L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
+  for (size_t i = 0; i + (closed ? 0 : 1) < polygon.size(); ++i) {
+    const Index e = find_edge(L, polygon[i], polygon[(i + 1) % polygon.size()]);
+    REQUIRE(e != kNone);
+    L.edge_sharpness[e] = s;
+  }
+  return L;
+}
+
+Polygon points_of(const std::vector<Index>& ids, const std::vector<double>& pos) {
+  Polygon p;
+  for (Index v : ids) p.push_back({pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]});
+  return p;
+}
+
+// The interior edges of L tagged sharp, chained from `start` (a closed loop if start is kNone).
+std::vector<Index> crease_chain(const Level& L, Index start) {
+  std::vector<std::vector<Index>> next(size_t(L.vertex_count));
+  for (Index e = 0; e < L.edge_count(); ++e)
+    if (!L.edge_on_boundary(e) && L.edge_sharp(e) > 0.f) {
+      next[L.edge_vertices[2 * e]].push_back(L.edge_vertices[2 * e + 1]);
+      next[L.edge_vertices[2 * e + 1]].push_back(L.edge_vertices[2 * e]);
+    }
+  Index v = start;
+  if (v == kNone)
+    for (Index u = 0; u < L.vertex_count && v == kNone; ++u)
+      if (!next[u].empty()) v = u;
+  std::vector<Index> chain{v};
+  Index prev = kNone;
+  while (true) {
+    Index to = kNone;
+    for (Index w : next[v])
+      if (w != prev) to = w;
+    if (to == kNone || to == chain.front()) break;
+    if (chain.size() > size_t(L.vertex_count)) break;
+    chain.push_back(to);
+    prev = v, v = to;
+  }
+  return chain;
+}
+
+// The refined crease equals `expected` up to a cyclic shift and the direction of travel.
+void check_same_closed_polygon(const Polygon& got, const Polygon& expected, double tol) {
+  REQUIRE(got.size() == expected.size());
+  const size_t n = got.size();
+  size_t start = 0;
+  for (size_t i = 1; i < n; ++i)
+    if (dist(expected[i], got[0]) < dist(expected[start], got[0])) start = i;
+  const int dir = dist(expected[(start + 1) % n], got[1]) < dist(expected[(start + n - 1) % n], got[1]) ? 1 : -1;
+  double worst = 0;
+  for (size_t i = 0; i < n; ++i) worst = std::max(worst, dist(got[i], expected[(start + n + dir * long(i)) % n]));
+  CHECK(worst < tol);
+}
+
+bool watertight(const Level& L) {
+  for (Index e = 0; e < L.edge_count(); ++e)
+    if (L.edge_on_boundary(e) || L.non_manifold_edge(e)) return false;
+  return L.manifold();
+}
+
+}  // namespace
+
+TEST_CASE("dual crease: a crease loop of valences 3-6, not planar, is Chaikin's refinement at levels 1-4") {
+  const CreasedTorus t = creased_torus();
+  for (const std::string scheme : {"doo-sabin", "doo-sabin-centroid"}) {
+    CAPTURE(scheme);
+    const Level base = tagged(t.mesh, t.loop, true, 10.f);
+    std::vector<int> valences;
+    for (Index v : t.loop) valences.push_back(base.valence(v));
+    CHECK(*std::min_element(valences.begin(), valences.end()) == 3);
+    CHECK(*std::max_element(valences.begin(), valences.end()) == 6);
+    const auto s = load_scheme(scheme, {});
+    RefineOptions options;
+    options.levels = 4;
+    const Hierarchy h = refine(*s, base, options);
+    Polygon expected = points_of(t.loop, t.mesh.positions);
+    for (int l = 1; l <= 4; ++l) {
+      CAPTURE(l);
+      expected = chaikin_closed(expected);
+      const Level& L = h.levels[size_t(l)];
+      const auto pos = interpolate(h, l, t.mesh.positions, 3);
+      check_same_closed_polygon(points_of(crease_chain(L, kNone), pos), expected, 1e-12);
+      CHECK(watertight(L));
+      CHECK(euler_characteristic(L) == 0);  // a torus
+    }
+  }
+}
+
+TEST_CASE("dual crease: even-degree quad B-splines follow the degree-d B-spline (Lane-Riesenfeld) along a crease loop") {
+  const CreasedTorus t = creased_torus();
+  for (int d : {2, 4, 6}) {
+    CAPTURE(d);
+    const auto s = load_scheme("quad-bspline", {{"d", std::to_string(d)}});
+    RefineOptions options;
+    options.levels = 3;
+    const Hierarchy h = refine(*s, tagged(t.mesh, t.loop, true, 10.f), options);
+    Polygon expected = points_of(t.loop, t.mesh.positions);
+    for (int l = 1; l <= 3; ++l) {
+      CAPTURE(l);
+      expected = lane_riesenfeld_closed(expected, d);
+      const auto pos = interpolate(h, l, t.mesh.positions, 3);
+      check_same_closed_polygon(points_of(crease_chain(h.levels[size_t(l)], kNone), pos), expected, 1e-12);
+      CHECK(watertight(h.levels[size_t(l)]));
+    }
+  }
+}
+
+TEST_CASE("dual crease: a crease between two corners keeps them and is Chaikin's with the corners kept, levels 1-4") {
+  // A 6 x 6 grid, bent, with a zigzag crease from boundary vertex (0, 2) to (6, 4): its ends
+  // have three sharp edges (two boundary ones), so they are corners.
+  test::Mesh m = test::grid(6, 6);
+  for (Index v = 0; v < m.vertex_count; ++v) {
+    const double x = m.positions[3 * v], y = m.positions[3 * v + 1];
+    m.positions[3 * v + 2] = 0.3 * std::sin(x) * std::cos(0.7 * y) + 0.05 * x * y;
+    m.positions[3 * v] += 0.1 * std::sin(2.1 * v);
+  }
+  auto id = [](int i, int j) { return Index(j * 7 + i); };
+  const std::vector<Index> path = {id(0, 2), id(1, 2), id(2, 3), id(3, 3), id(4, 3), id(4, 4), id(5, 4), id(6, 4)};
+  Level base = m.level();
+  base.edge_sharpness.assign(size_t(base.edge_count()), 0.f);
+  // id(1,2) -> id(2,3) is a diagonal: add it by splitting the quad (1,2)-(2,2)-(2,3)-(1,3).
+  test::Mesh g;
+  g.vertex_count = m.vertex_count;
+  g.positions = m.positions;
+  for (Index f = 0; f + 1 < Index(m.offsets.size()); ++f) {
+    const Index* c = &m.corners[m.offsets[f]];
+    if (c[0] == id(1, 2)) {
+      g.add_face({c[0], c[1], c[2]});
+      g.add_face({c[0], c[2], c[3]});
+    } else {
+      g.add_face({c[0], c[1], c[2], c[3]});
+    }
+  }
+  base = tagged(g, path, false, 10.f);
+  const auto s = load_scheme("doo-sabin", {});
+  RefineOptions options;
+  options.levels = 4;
+  const Hierarchy h = refine(*s, base, options);
+  Polygon expected = points_of(path, g.positions);
+  const P3 first = expected.front(), last = expected.back();
+  for (int l = 1; l <= 4; ++l) {
+    CAPTURE(l);
+    expected = chaikin_open_cornered(expected);
+    const Level& L = h.levels[size_t(l)];
+    const auto pos = interpolate(h, l, g.positions, 3);
+    // Start at the child vertex on the first corner.
+    Index start = kNone;
+    for (Index v = 0; v < L.vertex_count; ++v)
+      if (dist({pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]}, first) < 1e-14) start = v;
+    REQUIRE(start != kNone);
+    const Polygon got = points_of(crease_chain(L, start), pos);
+    REQUIRE(got.size() == expected.size());
+    double worst = 0;
+    for (size_t i = 0; i < got.size(); ++i) worst = std::max(worst, dist(got[i], expected[i]));
+    CHECK(worst < 1e-12);
+    CHECK(dist(got.back(), last) == 0.0);  // both corners stay exactly
+    CHECK(euler_characteristic(L) == euler_characteristic(base));
+  }
+}
+
+TEST_CASE("dual crease: sharpness 0 is the smooth scheme; fractional sharpness lies strictly between") {
+  const CreasedTorus t = creased_torus();
+  const auto s = load_scheme("doo-sabin", {});
+  RefineOptions options;
+  options.levels = 1;
+  const Level plain = t.mesh.level();
+  const Hierarchy smooth = refine(*s, plain, options);
+  const Hierarchy zero = refine(*s, tagged(t.mesh, t.loop, true, 0.f), options);
+  const auto p_smooth = interpolate(smooth, 1, t.mesh.positions, 3);
+  CHECK(interpolate(zero, 1, t.mesh.positions, 3) == p_smooth);
+  for (float sharp : {0.25f, 0.5f, 0.75f}) {
+    CAPTURE(sharp);
+    const Level L = tagged(t.mesh, t.loop, true, sharp);
+    const Hierarchy half = refine(*s, L, options);
+    const auto p = interpolate(half, 1, t.mesh.positions, 3);
+    REQUIRE(p.size() == p_smooth.size());  // a semi-sharp edge keeps the smooth topology
+    int checked = 0;
+    // Corners beside exactly one crease edge: (1 - s) smooth + s (3/4 v + 1/4 next) or
+    // (1 - s) smooth + s (1/4 prev + 3/4 v).
+    for (Index f = 0; f < L.face_count(); ++f) {
+      const int k = L.face_size(f);
+      for (int c = 0; c < k; ++c) {
+        const Index v = L.face(f)[c], next = L.face(f)[(c + 1) % k], prev = L.face(f)[(c + k - 1) % k];
+        const bool out = L.edge_sharp(L.face_edge_list(f)[c]) > 0, in = L.edge_sharp(L.face_edge_list(f)[(c + k - 1) % k]) > 0;
+        if (out == in) continue;
+        const Index w = out ? next : prev;
+        const Index child = L.face_offsets[f] + c;
+        P3 sharp_point, smooth_point, got;
+        for (int i = 0; i < 3; ++i) {
+          sharp_point[i] = 0.75 * t.mesh.positions[3 * v + i] + 0.25 * t.mesh.positions[3 * w + i];
+          smooth_point[i] = p_smooth[3 * child + i];
+          got[i] = p[3 * child + i];
+        }
+        for (int i = 0; i < 3; ++i)
+          CHECK(got[i] == doctest::Approx((1 - sharp) * smooth_point[i] + sharp * sharp_point[i]).epsilon(1e-13));
+        CHECK(dist(got, smooth_point) > 1e-6);
+        CHECK(dist(got, sharp_point) > 1e-6);
+        ++checked;
+      }
+    }
+    CHECK(checked >= 20);
+  }
+}
+
+TEST_CASE("dual crease: semi-sharp creases decay one unit per level and stay watertight") {
+  const CreasedTorus t = creased_torus();
+  const auto s = load_scheme("doo-sabin", {});
+  RefineOptions options;
+  options.levels = 4;
+  const Hierarchy h = refine(*s, tagged(t.mesh, t.loop, true, 2.5f), options);
+  // Sharp (>= 1) at levels 0 and 1: glued creases; 0.5 at level 2 (blended on smooth
+  // topology); smooth from level 3 on.
+  float expected[] = {2.5f, 1.5f, 0.5f, 0.f, 0.f};
+  for (int l = 0; l <= 4; ++l) {
+    CAPTURE(l);
+    const Level& L = h.levels[size_t(l)];
+    float most = 0.f;
+    for (Index e = 0; e < Index(L.edge_sharpness.size()); ++e) most = std::max(most, L.edge_sharpness[e]);
+    CHECK(most == expected[l]);
+    CHECK(watertight(L));
+    CHECK(euler_characteristic(L) == 0);
+  }
+}
+
+TEST_CASE("dual crease: a tagged corner inside a surface stays at every level") {
+  test::Mesh m = test::torus(8, 6);
+  Level L = m.level();
+  L.vertex_sharpness.assign(size_t(L.vertex_count), 0.f);
+  L.vertex_sharpness[10] = 10.f;
+  const auto s = load_scheme("doo-sabin", {});
+  RefineOptions options;
+  options.levels = 3;
+  const Hierarchy h = refine(*s, L, options);
+  for (int l = 1; l <= 3; ++l) {
+    const auto pos = interpolate(h, l, m.positions, 3);
+    bool found = false;
+    for (Index v = 0; v < h.levels[size_t(l)].vertex_count; ++v)
+      found |= pos[3 * v] == m.positions[30] && pos[3 * v + 1] == m.positions[31] && pos[3 * v + 2] == m.positions[32];
+    CHECK(found);
+    CHECK(watertight(h.levels[size_t(l)]));
+    CHECK(euler_characteristic(h.levels[size_t(l)]) == 0);
+  }
+}
