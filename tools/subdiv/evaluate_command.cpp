@@ -2,11 +2,9 @@
 // points of the limit surface at given (face, u, v), with OpenSubdiv Bfr's parameterisation,
 // or the limit surface sampled N x N per face as a crack-free mesh (framework/limit,
 // docs/limit.md).
-#include <charconv>
 #include <cmath>
 #include <fmt/format.h>
 #include <fstream>
-#include <sstream>
 #include <tbb/global_control.h>
 
 #include "commands.h"
@@ -18,6 +16,7 @@
 #include "framework/limit/limit_surface.h"
 #include "framework/limit/tessellation.h"
 #include "framework/pipeline/evaluate_request.h"
+#include "framework/pipeline/points_file.h"
 #include "framework/io/mesh_write.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
@@ -44,60 +43,8 @@ struct EvaluateArgs {
   int threads = 0;
 };
 
-struct Query {
-  Index face = 0;
-  double u = 0, v = 0;
-};
-
-std::string trimmed(std::string s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  const auto e = s.find_last_not_of(" \t\r");
-  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
-}
-
-template <class T>
-bool parse_field(const std::string& text, T& out) {
-  const std::string t = trimmed(text);
-  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
-  return ec == std::errc() && end == t.data() + t.size() && !t.empty();
-}
-
-// POINTS.csv: the header `face,u,v`, then one point per row. Every row is checked against
-// the surface before anything is evaluated, so a bad row stops the command with its number.
-std::vector<Query> read_points(const std::string& file, const LimitSurface& surface) {
-  std::ifstream in(file);
-  if (!in) throw Error(fmt::format("cannot read '{}': no such file or it is not readable", file));
-  std::string line;
-  int number = 0;
-  auto where = [&] { return fmt::format("{} line {}", file, number); };
-  if (!std::getline(in, line)) throw Error(fmt::format("{}: empty file; the first line must be 'face,u,v'", file));
-  ++number;
-  if (trimmed(line) != "face,u,v")
-    throw Error(fmt::format("{}: the header is '{}'; it must be 'face,u,v'", where(), trimmed(line)));
-  std::vector<Query> out;
-  while (std::getline(in, line)) {
-    ++number;
-    if (trimmed(line).empty()) continue;
-    std::vector<std::string> fields;
-    std::stringstream row(line);
-    for (std::string f; std::getline(row, f, ',');) fields.push_back(f);
-    Query q;
-    if (fields.size() != 3)
-      throw Error(fmt::format("{} (row {}): {} fields; a row is face,u,v", where(), out.size() + 1, fields.size()));
-    if (!parse_field(fields[0], q.face))
-      throw Error(fmt::format("{} (row {}): face '{}' is not a whole number", where(), out.size() + 1, trimmed(fields[0])));
-    if (!parse_field(fields[1], q.u) || !parse_field(fields[2], q.v))
-      throw Error(fmt::format("{} (row {}): u and v must be numbers", where(), out.size() + 1));
-    if (const std::string why = surface.check(q.face, q.u, q.v); !why.empty())
-      throw Error(fmt::format("{} (row {}): {}", where(), out.size() + 1, why));
-    out.push_back(q);
-  }
-  if (out.empty()) throw Error(fmt::format("{}: no points after the header", file));
-  return out;
-}
-
 // The positions (and derivatives), then each face-varying channel's values, per point.
-void write_csv(const std::filesystem::path& out, const std::vector<Query>& queries, const EvaluatedPoints& points,
+void write_csv(const std::filesystem::path& out, const SurfacePoints& queries, const EvaluatedPoints& points,
                int derivatives, const std::vector<std::string>& fvar_names, const std::vector<EvaluatedPoints>& fvar) {
   write_file_atomically(out, [&](const std::filesystem::path& tmp) {
     std::ofstream f(tmp);
@@ -110,7 +57,7 @@ void write_csv(const std::filesystem::path& out, const std::vector<Query>& queri
     // NaN (a derivative that does not exist) as "nan", every number in its shortest exact form.
     auto number = [](double x) { return std::isnan(x) ? std::string("nan") : fmt::format("{}", x); };
     for (size_t i = 0; i < queries.size(); ++i) {
-      f << fmt::format("{},{},{}", queries[i].face, queries[i].u, queries[i].v);
+      f << fmt::format("{},{},{}", queries.faces[i], queries.uv[2 * i], queries.uv[2 * i + 1]);
       std::vector<const std::vector<double>*> columns{&points.position};
       if (derivatives > 0) columns.insert(columns.end(), {&points.du, &points.dv});
       if (derivatives > 1) columns.insert(columns.end(), {&points.duu, &points.duv, &points.dvv});
@@ -181,10 +128,11 @@ void run(const EvaluateArgs& a) {
     write_mesh(a.output, tessellation_mesh(tessellate(*prepared.surface, prepared.mesh.positions, a.samples)));
     return;
   }
-  const std::vector<Query> queries = read_points(a.at, *prepared.surface);
-  std::vector<Index> faces;
-  std::vector<double> uv;
-  for (const Query& q : queries) faces.push_back(q.face), uv.insert(uv.end(), {q.u, q.v});
+  const LimitSurface& surface = *prepared.surface;
+  const SurfacePoints queries =
+      read_points_file(a.at, [&surface](Index face, double u, double v) { return surface.check(face, u, v); });
+  const std::vector<Index>& faces = queries.faces;
+  const std::vector<double>& uv = queries.uv;
   std::vector<std::string> fvar_names;
   std::vector<EvaluatedPoints> fvar;
   for (size_t k = 0; k < prepared.face_varying.size(); ++k) {

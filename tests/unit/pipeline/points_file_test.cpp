@@ -1,0 +1,51 @@
+// Points files for `subdiv evaluate --at` (framework/pipeline/points_file.h), parsed from
+// text: every refusal names the file, the line (counting blank lines and the header) and
+// the row (counting points), and CRLF files read as LF files.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "framework/pipeline/points_file.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+// Faces 0..9, (u, v) in the unit square.
+std::string unit_square_check(Index face, double u, double v) {
+  if (face < 0 || face > 9) return "no such face";
+  return u < 0 || u > 1 || v < 0 || v > 1 ? "(u, v) is outside" : "";
+}
+
+TEST_CASE("rows become points in order; blank lines and CRLF endings are skipped") {
+  const SurfacePoints p = parse_points("face,u,v\r\n3, 0.25,0.5\r\n\r\n9,1,0\r\n", "pts.csv", unit_square_check);
+  REQUIRE(p.size() == 2);
+  CHECK(p.faces == std::vector<Index>{3, 9});
+  CHECK(p.uv == std::vector<double>{0.25, 0.5, 1, 0});
+}
+
+TEST_CASE("each refusal names the file, the line and the row") {
+  struct Bad {
+    const char* text;
+    const char* message;
+  };
+  for (const Bad& bad : {Bad{"", "pts.csv: empty file"}, Bad{"x,y,z\n0,0,0\n", "pts.csv line 1: the header is 'x,y,z'"},
+                         Bad{"face,u,v\n", "pts.csv: no points after the header"},
+                         Bad{"face,u,v\n\n0,0.5\n", "pts.csv line 3 (row 1): 2 fields"},
+                         Bad{"face,u,v\n0,0,0\n1.5,0,0\n", "pts.csv line 3 (row 2): face '1.5' is not a whole number"},
+                         Bad{"face,u,v\n0,nan?,0\n", "pts.csv line 2 (row 1): u and v must be numbers"},
+                         Bad{"face,u,v\n0,0,0\n\n12,0,0\n", "pts.csv line 4 (row 2): no such face"},
+                         Bad{"face,u,v\n0,2,0\n", "pts.csv line 2 (row 1): (u, v) is outside"},
+                         Bad{"face,u,v\n99999999999,0,0\n", "face '99999999999' is not a whole number"}}) {
+    CAPTURE(bad.text);
+    CHECK_THROWS_WITH_AS(parse_points(bad.text, "pts.csv", unit_square_check), doctest::Contains(bad.message), Error);
+  }
+}
+
+TEST_CASE("a missing file is refused with its name") {
+  CHECK_THROWS_WITH_AS(read_points_file("/no/such/points.csv", unit_square_check),
+                       doctest::Contains("cannot read '/no/such/points.csv'"), Error);
+}
+
+}  // namespace
+}  // namespace subdiv
