@@ -158,12 +158,12 @@ void check_curve_size(const CurveLevel& base, int arity, int levels, double budg
                         std::pow(double(arity), levels);
   if (points > 2.0e9)
     throw OptionError(fmt::format("{} levels would make about {:.3g} points, more than the 2^31 a level can "
-                                  "index; lower {{levels}}",
+                                  "index; ask for fewer levels ({{levels}})",
                                   levels, points));
   const double need = points * kBytesPerPoint, have = budget > 0 ? budget : available_memory_bytes();
   if (need > have)
     throw OptionError(fmt::format("{} levels would make about {:.3g} points and need about {:.1f} GiB, but only "
-                                  "{:.1f} GiB of memory is available; lower {{levels}}",
+                                  "{:.1f} GiB of memory is available; ask for fewer levels ({{levels}})",
                                   levels, points, need / (1 << 30), have / (1 << 30)));
 }
 
