@@ -99,7 +99,8 @@ LimitChoice surface_limit(const SchemeSequence& seq, const Level& base, const Li
   } catch (const Error& e) {
     if (seq.runs.size() == 1 && declares_parameter(seq, "lambda"))
       throw OptionError(fmt::format("{}\n  '{}' has a shape parameter lambda: if it is a first step (Lin et al. 2015), "
-                                    "give the sequence {{scheme}} {}:1,catmull-clark",
+                                    "make it the first run of a sequence, {{scheme}} {}:1,S, with S the scheme that "
+                                    "repeats",
                                     e.what(), seq.schemes[0]->name, seq.schemes[0]->name));
     throw;
   }
