@@ -101,6 +101,19 @@ MeshData level_mesh(const Level& L, LevelData&& data, Level* donor) {
   return mesh;
 }
 
+MeshData described_level_mesh(const Hierarchy& h, int l, LevelData&& data, const FeatureOptions& features,
+                              std::vector<double> base_face, const ArraySelection& arrays,
+                              const std::vector<DataArray>& extra_point_data, Level* donor) {
+  // SubdivKit's arrays first: they read the level's faces, which may move into the mesh.
+  MeshData ours;
+  add_level_arrays(h, l, ours, features, std::move(base_face), arrays);
+  MeshData mesh = level_mesh(h.levels[l], std::move(data), donor);
+  mesh.point_data.insert(mesh.point_data.end(), extra_point_data.begin(), extra_point_data.end());
+  for (DataArray& a : ours.point_data) add_unless_named(mesh.point_data, std::move(a));
+  for (DataArray& a : ours.cell_data) add_unless_named(mesh.cell_data, std::move(a));
+  return mesh;
+}
+
 OutputLevel output_level(MeshData& mesh, int l) {
   if (!mesh.face_varying.empty()) mesh = split_at_seams(mesh);
   OutputLevel level{&mesh, l, std::move(mesh.point_data), std::move(mesh.cell_data)};
@@ -124,17 +137,12 @@ std::vector<OutputLevel> describe_levels(const Hierarchy& h, std::vector<LevelDa
       data[l] = {};  // not written: its memory back before the finest level's output is made
       continue;
     }
-    // SubdivKit's arrays first: they read the level's faces, which may move into the mesh.
-    MeshData ours;
-    if (l + 1 == levels) add_level_arrays(h, l, ours, features, std::move(base_face), arrays);
-    else add_level_arrays(h, l, ours, features, base_face, arrays);  // the next level reads it
-    meshes.push_back(level_mesh(h.levels[l], std::move(data[l]), consumed ? &consumed->levels[l] : nullptr));
-    MeshData& mesh = meshes.back();
-    if (l + 1 == levels)
-      mesh.point_data.insert(mesh.point_data.end(), finest_point_data.begin(), finest_point_data.end());
-    for (DataArray& a : ours.point_data) add_unless_named(mesh.point_data, std::move(a));
-    for (DataArray& a : ours.cell_data) add_unless_named(mesh.cell_data, std::move(a));
-    out.push_back(output_level(mesh, l));
+    const bool finest = l + 1 == levels;
+    meshes.push_back(described_level_mesh(h, l, std::move(data[l]), features,
+                                          finest ? std::move(base_face) : base_face,  // the next level reads it
+                                          arrays, finest ? finest_point_data : std::vector<DataArray>{},
+                                          consumed ? &consumed->levels[l] : nullptr));
+    out.push_back(output_level(meshes.back(), l));
   }
   return out;
 }

@@ -34,6 +34,13 @@ std::vector<OutputLevel> describe_levels(const Hierarchy& h, std::vector<LevelDa
 // `donor` (L itself, about to go), its faces move into the mesh instead of being copied.
 MeshData level_mesh(const Level& L, LevelData&& data, Level* donor = nullptr);
 
+// Level l as level_mesh makes it, then `extra_point_data` (e.g. limit normals) and
+// SubdivKit's arrays that `arrays` asks for, each unless a user array has its name.
+// `base_face` is level l's (base_faces_of); `donor` as for level_mesh.
+MeshData described_level_mesh(const Hierarchy& h, int l, LevelData&& data, const FeatureOptions& features,
+                              std::vector<double> base_face, const ArraySelection& arrays,
+                              const std::vector<DataArray>& extra_point_data = {}, Level* donor = nullptr);
+
 // SubdivKit's arrays of level l that `arrays` asks for, added to `mesh` where no array has
 // the name. `base_face` is level l's (base_faces_of), moved into "base_face" when asked for.
 void add_level_arrays(const Hierarchy& h, int l, MeshData& mesh, const FeatureOptions& features,

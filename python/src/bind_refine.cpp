@@ -66,22 +66,29 @@ subdiv::CurveLevel curve_base(const RefineInput& in, const subdiv::CurveScheme& 
 
 // The user's arrays through the levels as the command line carries them: one pipeline
 // request (framework/pipeline/refine_pipeline.h), each kept level described as a mesh with
-// its arrays (hole faces left out, as OpenSubdiv leaves them out).
+// its arrays (hole faces left out, as OpenSubdiv leaves them out) and SubdivKit's arrays
+// that `described` asks for, as the CLI writes them to .vtp (level_description.h).
 std::vector<RefinedLevel> refine_surface(RefineInput& in, subdiv::RefineRequest request,
-                                         std::vector<std::string>& dropped, std::vector<std::string>& warnings) {
+                                         const subdiv::ArraySelection& described, std::vector<std::string>& dropped,
+                                         std::vector<std::string>& warnings) {
   request.mesh = std::move(in.mesh);
   request.mesh.point_data = std::move(in.point_data);
   request.mesh.cell_data = std::move(in.cell_data);
   request.mesh.face_varying = std::move(in.face_varying);
   request.mesh_name = in.name;
   request.shape.face_varying = in.fvar_mode;
+  request.described_arrays = described;
   subdiv::RefineResult result = subdiv::refine_mesh(std::move(request));
   dropped = std::move(result.dropped_arrays);
   warnings = std::move(result.warnings);
+  const subdiv::Hierarchy& h = result.hierarchy;
   std::vector<RefinedLevel> out;
+  std::vector<double> base_face;  // of level l, while asked for
   for (size_t l = 0; l < result.levels.size(); ++l) {
+    if (described.has("base_face")) base_face = subdiv::base_faces_of(h, int(l), base_face);
     if (result.levels[l].positions.empty() && l + 1 < result.levels.size()) continue;  // not kept
-    subdiv::MeshData mesh = subdiv::level_mesh(result.hierarchy.levels[l], std::move(result.levels[l]));
+    subdiv::MeshData mesh =
+        subdiv::described_level_mesh(h, int(l), std::move(result.levels[l]), result.features, base_face, described);
     RefinedLevel level{std::move(mesh.point_data), std::move(mesh.cell_data), std::move(mesh.face_varying), {}};
     mesh.point_data.clear(), mesh.cell_data.clear(), mesh.face_varying.clear();
     level.mesh = std::move(mesh);
@@ -134,8 +141,9 @@ void report_progress(subdiv::RefineRequest& request, py::handle progress) {
 py::list refine(py::handle mesh, py::handle scheme, py::handle params, int levels, const std::string& boundary,
                 const std::string& crease_method, int threads, bool all_levels, int start_level,
                 py::handle point_data, py::handle cell_data, py::handle face_varying, const std::string& fvar_boundary,
-                py::handle progress) {
+                const std::string& arrays, py::handle progress) {
   check_levels(levels);
+  const subdiv::ArraySelection described = subdiv::ArraySelection::parse(arrays);
   const subdiv::RefineOptions options = refine_options(boundary, crease_method, threads, start_level);
   RefineInput in = input_from(mesh, point_data, cell_data, face_varying, fvar_boundary);
   const bool curve = names_curve_scheme(scheme);
@@ -153,7 +161,7 @@ py::list refine(py::handle mesh, py::handle scheme, py::handle params, int level
     py::gil_scoped_release unlocked;
     const subdiv::ThreadLimit limit(threads);
     result = curve ? refine_curve(in, std::move(request.scheme), levels, all_levels, warnings)
-                   : refine_surface(in, std::move(request), dropped, warnings);
+                   : refine_surface(in, std::move(request), described, dropped, warnings);
   }
   py::list out;
   for (auto& level : result) {
@@ -226,7 +234,7 @@ void bind_refine(py::module_& m) {
   m.def("_refine", &refine, py::arg("mesh"), py::arg("scheme"), py::arg("params"), py::arg("levels"), py::arg("boundary"),
         py::arg("crease_method"), py::arg("threads"), py::arg("all_levels"), py::arg("start_level"),
         py::arg("point_data"), py::arg("cell_data"), py::arg("face_varying"), py::arg("fvar_boundary"),
-        py::arg("progress") = py::none(),
+        py::arg("arrays") = "none", py::arg("progress") = py::none(),
         "Refined levels as dicts of arrays (subdivkit.refine wraps them in Meshes).");
   m.def("_stencils", &stencils, py::arg("mesh"), py::arg("scheme"), py::arg("params"), py::arg("levels"), py::arg("composed"),
         py::arg("boundary"), py::arg("crease_method"), py::arg("threads"), py::arg("start_level"),

@@ -327,7 +327,8 @@ def _data_arrays(data, roles, rows, what):
         if integer and a.size and (a.min() < np.iinfo(np.int32).min or a.max() > _INT32_MAX):
             raise Error(f"{what} '{key}': integer values must fit in 32 bits (labels); "
                         f"convert the array to float to interpolate it")
-        arrays.append((str(key), np.ascontiguousarray(a.reshape(rows, -1), dtype=np.float64), integer,
+        columns = a.shape[1] if a.ndim == 2 else 1  # also with no rows (a level whose faces are all holes)
+        arrays.append((str(key), np.ascontiguousarray(a.reshape(rows, columns), dtype=np.float64), integer,
                        _role(roles, key, what)))
     return arrays
 
@@ -348,8 +349,13 @@ def _face_varying_triples(mesh):
 
 
 def _data_shapes_like(refined, original):
-    """Refined data arrays back in the shapes they came in: 1-d stays 1-d."""
-    return {key: (refined[key].reshape(-1) if np.ndim(original[key]) == 1 else refined[key]) for key in refined}
+    """Refined data arrays back in the shapes they came in: 1-d stays 1-d; arrays the
+    refinement added (SubdivKit's descriptions of the level) are 1-d when one column."""
+    def shaped(key):
+        a = refined[key]
+        one_column = np.ndim(original[key]) == 1 if key in original else a.ndim == 2 and a.shape[1] == 1
+        return a.reshape(-1) if one_column else a
+    return {key: shaped(key) for key in refined}
 
 
 def read_mesh(path):

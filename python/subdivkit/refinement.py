@@ -44,7 +44,7 @@ def _with_weights(mesh, weights):
 
 def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edges-and-corners",
            crease_method="uniform", threads=0, all_levels=False, start_level=0, fvar_boundary="all", weights=None,
-           progress=None):
+           arrays="none", progress=None):
     """Refine a mesh ``levels`` times with a scheme; return the finest level as a Mesh.
 
     Parameters
@@ -83,6 +83,17 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
         as point_data "weight". Without it, a point_data array named "weight" (read_mesh
         gives OBJ's ``v x y z w`` so) is used, if any. With all weights 1 the points are the
         plain refinement's, bit for bit.
+    arrays : str
+        SubdivKit's own arrays added to each level, as ``subdiv refine --arrays`` writes
+        them to .vtp: "none" (the default), "all", "default" or a comma list of names.
+        point_data gets "origin" (what each point was made from: 0 an old vertex, 1 an
+        edge, 2 a face, 3 a face corner of a dual scheme), "valence", "level" and "vertex_class" (0 smooth, 1 dart, 2
+        crease, 3 corner); cell_data gets "parent_face" (the face of the level above) and
+        "base_face" (the input face each face lies in, -1 for faces a dual split makes
+        around edges and vertices). "sharpness", "cell_kind" and "corner_sharpness" are
+        how a .vtp file holds creases and corners; a Mesh holds them in ``creases``,
+        ``crease_sharpness``, ``corners`` and ``corner_sharpness``, so they add nothing
+        here. A user array of the same name is kept instead.
     progress : callable, optional
         Called as ``progress(phase, done)`` on the calling thread: ``done`` is None when a
         phase starts ("level 2/3: 768 faces"), then the share of the levels' work done, 0 to
@@ -105,7 +116,7 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
                                  int(start_level),
                                  _data_arrays(point_data, point_roles, mesh.n_points, "point data"),
                                  _data_arrays(mesh.cell_data, mesh.cell_roles, mesh.n_faces, "cell data"),
-                                 _face_varying_triples(mesh), str(fvar_boundary), progress)
+                                 _face_varying_triples(mesh), str(fvar_boundary), str(arrays), progress)
     for warning in refined[0]["warnings"] if refined else []:
         warnings.warn(f"refine: {warning}", UserWarning, stacklevel=2)
     if refined and refined[0]["dropped"]:

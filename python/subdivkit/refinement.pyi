@@ -17,19 +17,19 @@ BOUNDARY_MODES: tuple[str, ...]
 def refine(mesh: Mesh, scheme: _SchemeArg = "catmull-clark", levels: int = 1, *, params: _Params = None,
            boundary: str = "edges-and-corners", crease_method: str = "uniform", threads: int = 0,
            all_levels: Literal[False] = False, start_level: int = 0, fvar_boundary: str = "all",
-           weights: npt.ArrayLike | str | None = None,
+           weights: npt.ArrayLike | str | None = None, arrays: str = "none",
            progress: _Progress = None) -> Mesh: ...
 @overload
 def refine(mesh: Mesh, scheme: _SchemeArg = "catmull-clark", levels: int = 1, *, params: _Params = None,
            boundary: str = "edges-and-corners", crease_method: str = "uniform", threads: int = 0,
            all_levels: Literal[True], start_level: int = 0, fvar_boundary: str = "all",
-           weights: npt.ArrayLike | str | None = None,
+           weights: npt.ArrayLike | str | None = None, arrays: str = "none",
            progress: _Progress = None) -> list[Mesh]: ...
 @overload
 def refine(mesh: Mesh, scheme: _SchemeArg = "catmull-clark", levels: int = 1, *, params: _Params = None,
            boundary: str = "edges-and-corners", crease_method: str = "uniform", threads: int = 0,
            all_levels: bool, start_level: int = 0, fvar_boundary: str = "all",
-           weights: npt.ArrayLike | str | None = None,
+           weights: npt.ArrayLike | str | None = None, arrays: str = "none",
            progress: _Progress = None) -> Mesh | list[Mesh]: ...
 
 class Evaluator:

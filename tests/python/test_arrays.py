@@ -88,3 +88,22 @@ def test_stencils_accept_any_layout_of_positions(cube):
     S = sk.stencils(cube, "catmull-clark", 2, composed=True)
     assert np.abs(S @ np.asfortranarray(cube.points) - reference(cube)).max() <= 1e-14
     assert np.abs(S @ cube.points.astype(np.float32) - reference(cube)).max() <= 1e-7
+
+
+def test_described_arrays_count_vertex_edge_and_face_points():
+    """arrays="all" (as --arrays all): one Catmull-Clark step makes a point per vertex (origin
+    0), edge (1) and face (2) of the cube; a face point's valence is its face's size (4), an
+    edge point's 4, a kept vertex keeps its valence (3); each child face's parent_face and
+    base_face is the cube face it lies in, four children each."""
+    cube = sk.read_mesh(str(MESHES / "cube.obj"))
+    one = sk.refine(cube, "catmull-clark", 1, arrays="all")
+    origin, valence = one.point_data["origin"], one.point_data["valence"]
+    assert [int((origin == k).sum()) for k in (0, 1, 2)] == [8, 12, 6]
+    assert set(valence[origin == 0]) == {3} and set(valence[origin > 0]) == {4}
+    assert np.array_equal(one.point_data["level"], np.ones(one.n_points))
+    assert np.array_equal(np.bincount(one.cell_data["parent_face"].astype(int)), [4] * 6)
+    two = sk.refine(cube, "catmull-clark", 2, arrays="base_face")
+    assert set(two.point_data) == set() and set(two.cell_data) == {"base_face"}
+    assert np.array_equal(np.bincount(two.cell_data["base_face"].astype(int)), [16] * 6)
+    with pytest.raises(sk.Error, match="unknown array 'origins'"):
+        sk.refine(cube, "catmull-clark", 1, arrays="origins")

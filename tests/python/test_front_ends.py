@@ -4,6 +4,8 @@ user's point, cell and face-varying arrays, hole faces left out — on meshes wi
 and holes, creases and corners, a non-manifold edge, UV seams, point and cell data. The CLI's
 output is written to a file and read back; the ParaView filter is compared with the CLI in
 tests/paraview/refine_test.py."""
+import importlib.util
+
 import numpy as np
 import pytest
 
@@ -24,6 +26,27 @@ def with_data(mesh):
     return out
 
 
+HAS_VTK = importlib.util.find_spec("vtkmodules") is not None
+DESCRIBED_ARRAYS = {"point": ("origin", "valence", "level", "vertex_class"), "cell": ("parent_face", "base_face")}
+
+
+def vtp_arrays(path):
+    """The point and cell arrays of a .vtp as VTK reads them (subdivkit.read_mesh takes
+    SubdivKit's own arrays as the file's description and leaves them out); cell arrays of
+    the polygons only (a .vtp holds crease edges as line cells before them)."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(str(path))
+    reader.Update()
+    data = reader.GetOutput()
+    lines = data.GetNumberOfLines() + data.GetNumberOfVerts()
+
+    def arrays(attributes, skip):
+        return {attributes.GetArrayName(i): vtk_to_numpy(attributes.GetArray(i)).astype(float).ravel()[skip:]
+                for i in range(attributes.GetNumberOfArrays())}
+    return {"point": arrays(data.GetPointData(), 0), "cell": arrays(data.GetCellData(), lines)}
+
 CASES = [  # mesh, scheme, levels, CLI options, Python keywords
     ("plane-with-hole.obj", "catmull-clark", 2, ["--boundary", "edges"], {"boundary": "edges"}),
     ("plane-with-hole.obj", "catmull-clark", 1, ["--boundary", "none"], {"boundary": "none"}),  # hole faces
@@ -42,9 +65,9 @@ def test_cli_and_python_give_the_same_level_with_its_arrays(tmp_path, mesh_name,
     source = tmp_path / "in.vtp"
     sk.write_mesh(str(source), mesh)
     out = tmp_path / "out.vtp"
-    run_cli("refine", source, "-s", scheme, "-l", levels, "--arrays", "none", "-o", out, "-q", *cli_options)
+    run_cli("refine", source, "-s", scheme, "-l", levels, "--arrays", "all", "-o", out, "-q", *cli_options)
     cli = sk.read_mesh(str(out))
-    python = sk.refine(mesh, scheme, levels, **keywords)
+    python = sk.refine(mesh, scheme, levels, arrays="all", **keywords)
 
     assert python.points.shape == cli.points.shape
     assert np.abs(python.points - cli.points).max() <= 1e-14
@@ -53,6 +76,11 @@ def test_cli_and_python_give_the_same_level_with_its_arrays(tmp_path, mesh_name,
         assert np.abs(np.asarray(python.point_data[name], float).reshape(cli.point_data[name].shape)
                       - cli.point_data[name]).max() <= 1e-14, name
     assert np.array_equal(np.asarray(python.cell_data["face_id"]).ravel(), np.asarray(cli.cell_data["face_id"]).ravel())
+    if HAS_VTK:  # the level's description (README's table of SubdivKit's arrays), the same in both
+        written = vtp_arrays(out)
+        for kind, mine in (("point", python.point_data), ("cell", python.cell_data)):
+            for name in DESCRIBED_ARRAYS[kind]:
+                assert np.array_equal(np.asarray(mine[name], float).ravel(), written[kind][name]), (kind, name)
 
 
 @pytest.mark.parametrize("mesh_name,scheme,mode", [("textured-tube.obj", "catmull-clark", "corners-only"),
