@@ -73,6 +73,8 @@ py::dict face_varying_to_python(std::vector<subdiv::FaceVaryingArray>&& arrays);
 
 // Python's spelling of the pipeline's option names in messages: its keywords ("{levels}" reads "levels").
 const subdiv::OptionSpelling& python_option_spelling();
+// The same where parameters are keyword arguments (Scheme.load(name, gamma=1)), not params=.
+const subdiv::OptionSpelling& python_keyword_spelling();
 subdiv::BoundaryInterpolation boundary_from(const std::string& text);
 subdiv::CreaseMethod crease_method_from(const std::string& text);
 subdiv::RefineOptions refine_options(const std::string& boundary, const std::string& crease_method, int threads,

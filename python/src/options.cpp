@@ -13,10 +13,19 @@ const subdiv::OptionSpelling& python_option_spelling() {
       {"crease_method", "crease_method"}, {"fvar_boundary", "fvar_boundary"},
       {"smooth_triangles", "params={'triangles': 'smooth'}"}, {"threads", "threads"},
       {"normals", "limit_positions()"}, {"limit", "limit_positions()"},
-      {"param", "keyword argument"},  {"scheme_list", "subdivkit.schemes()"},
+      {"param", "params"},            {"scheme_list", "subdivkit.schemes()"},
       {"min_valence", "min_valence"}, {"max_valence", "max_valence"},
       {"select", "select"},           {"max_iterations", "max_iterations"},
       {"valences", "valences"},       {"boundary_analysis", "boundary=True"}};
+  return spelling;
+}
+
+const subdiv::OptionSpelling& python_keyword_spelling() {
+  static const subdiv::OptionSpelling spelling = [] {
+    subdiv::OptionSpelling s = python_option_spelling();
+    s["param"] = "keyword argument";
+    return s;
+  }();
   return spelling;
 }
 

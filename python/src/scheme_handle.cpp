@@ -12,14 +12,18 @@ SchemeHandle load_scheme_handle(const std::string& source, bool from_text, const
                                 const subdiv::ParameterOverrides& overrides) {
   SchemeHandle h;
   h.source = source, h.from_text = from_text, h.label = label, h.overrides = overrides;
-  if (from_text) {
-    h.kind = subdiv::scheme_text_kind(source, label);
-    if (h.kind == "curve") h.curve = subdiv::load_curve_text(source, label, overrides);
-    else h.surface = subdiv::load_scheme_text(source, label, overrides);
-  } else {
-    h.kind = subdiv::scheme_kind(source);
-    if (h.kind == "curve") h.curve = subdiv::load_curve(source, overrides);
-    else h.surface = subdiv::load_scheme(source, overrides);
+  try {
+    if (from_text) {
+      h.kind = subdiv::scheme_text_kind(source, label);
+      if (h.kind == "curve") h.curve = subdiv::load_curve_text(source, label, overrides);
+      else h.surface = subdiv::load_scheme_text(source, label, overrides);
+    } else {
+      h.kind = subdiv::scheme_kind(source);
+      if (h.kind == "curve") h.curve = subdiv::load_curve(source, overrides);
+      else h.surface = subdiv::load_scheme(source, overrides);
+    }
+  } catch (const subdiv::OptionError& e) {  // the parameters came as Scheme.load's keyword arguments
+    throw subdiv::Error(e.spelled(python_keyword_spelling()));
   }
   return h;
 }

@@ -57,6 +57,17 @@ def test_bad_parameter_messages_are_the_command_lines(scheme, param, value):
     assert "--" not in str(e.value)
 
 
+@pytest.mark.parametrize("call", [lambda m: sk.refine(m, "catmull-clark", 1, params={"gamma": 1}),
+                                  lambda m: sk.limit_positions(m, "catmull-clark", params={"gamma": 1}),
+                                  lambda m: sk.stencils(m, "catmull-clark", 1, params={"gamma": 1})])
+def test_a_bad_params_entry_is_named_as_params_not_as_a_keyword_or_option(call):
+    # refine(params={...}) takes a dict, not keywords: the message says where the value came from.
+    with pytest.raises(sk.Error) as e:
+        call(sk.read_mesh(str(MESHES / "cube.obj")))
+    assert "parameter 'gamma' (from params gamma=1)" in str(e.value)
+    assert "--" not in str(e.value) and "keyword" not in str(e.value)
+
+
 def test_bad_scheme_file_and_text_messages_are_the_command_lines(tmp_path):
     bad = json.loads((SCHEMES / "catmull-clark.json").read_text())
     bad["rules"]["edge"][0]["sum"] = "no-such-role"
