@@ -8,6 +8,7 @@
 
 #include "framework/limit/face_domain.h"
 #include "framework/util/error.h"
+#include "framework/util/option_spelling.h"
 #include "framework/util/parallel_for_all.h"
 
 namespace subdiv {
@@ -147,7 +148,7 @@ std::array<double, 3> normal_at(const LimitSurface& s, LimitSample p, Index face
 }  // namespace
 
 Tessellation tessellate(const LimitSurface& surface, std::span<const double> positions, int N) {
-  if (N < 1) throw Error(fmt::format("--samples {}: the number of segments per edge must be at least 1", N));
+  if (N < 1) throw OptionError(fmt::format("{{samples}} {}: the number of segments per edge must be at least 1", N));
   const Level& base = surface.base();
   Builder b{base, {}, {}};
   for (Index f = 0; f < base.face_count(); ++f) {
@@ -156,8 +157,9 @@ Tessellation tessellate(const LimitSurface& surface, std::span<const double> pos
     if (surface.triangles()) b.triangle_face(f, N);
     else if (k == 4) b.quad_face(f, N);
     else {
-      if (N % 2) throw Error(fmt::format("--samples {}: face {} has {} corners, whose sub-faces take N/2 segments each "
-                                         "so that its edges have N: use an even N", N, f, k));
+      if (N % 2)
+        throw OptionError(fmt::format("{{samples}} {}: face {} has {} corners, whose sub-faces take N/2 segments "
+                                      "each so that its edges have N: use an even N", N, f, k));
       b.sub_faces(f, N);
     }
   }

@@ -14,7 +14,7 @@
 #include "framework/io/mesh_read.h"
 #include "framework/pipeline/adaptive_request.h"
 #include "framework/limit/limit_surface.h"
-#include "framework/limit/tessellation.h"
+#include "framework/pipeline/limit_mesh.h"
 #include "framework/pipeline/evaluate_request.h"
 #include "framework/pipeline/points_file.h"
 #include "framework/io/mesh_write.h"
@@ -71,23 +71,6 @@ void write_csv(const std::filesystem::path& out, const SurfacePoints& queries, c
   });
 }
 
-// The tessellation as a mesh: normals and the (face, u, v) of every point, the base face of
-// every face.
-MeshData tessellation_mesh(const Tessellation& t) {
-  MeshData m;
-  m.positions = t.positions;
-  m.face_offsets = t.face_offsets;
-  m.face_vertices = t.face_vertices;
-  DataArray normals{"Normals", 3, t.normals, false, ArrayRole::Normals};
-  DataArray face{"base_face", 1, {}, true}, uv{"uv", 2, t.uv, false};
-  for (Index f : t.uv_face) face.values.push_back(double(f));
-  m.point_data = {std::move(normals), std::move(face), std::move(uv)};
-  DataArray cells{"base_face", 1, {}, true};
-  for (Index f : t.base_face) cells.values.push_back(double(f));
-  m.cell_data = {std::move(cells)};
-  return m;
-}
-
 // The command line's options as a pipeline request (framework/pipeline/evaluate_request.h).
 EvaluateRequest evaluate_request(const EvaluateArgs& a) {
   EvaluateRequest r;
@@ -125,7 +108,7 @@ void run(const EvaluateArgs& a) {
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a));
   for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
   if (a.samples > 0) {
-    write_mesh(a.output, tessellation_mesh(tessellate(*prepared.surface, prepared.mesh.positions, a.samples)));
+    write_mesh(a.output, sampled_limit_mesh(prepared, a.samples));
     return;
   }
   const LimitSurface& surface = *prepared.surface;

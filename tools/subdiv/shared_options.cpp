@@ -19,7 +19,9 @@ const OptionSpelling& cli_option_spelling() {
       {"param", "--param"},             {"scheme_list", "`subdiv schemes`"},
       {"min_valence", "--min-valence"}, {"max_valence", "--max-valence"},
       {"select", "--select"},           {"max_iterations", "--max-iter"},
-      {"valences", "--valence"},        {"boundary_analysis", "--boundary"}};
+      {"valences", "--valence"},        {"boundary_analysis", "--boundary"},
+      {"samples", "--samples"},         {"tolerance", "--tolerance"},
+      {"derivatives", "--derivatives"}};
   return spelling;
 }
 

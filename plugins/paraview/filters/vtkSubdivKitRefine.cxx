@@ -12,29 +12,12 @@
 
 #include "framework/io/vtk/polydata_conversion.h"
 #include "framework/util/error.h"
-#include "polydata_creases.h"
+#include "filter_input.h"
 #include "refine_job.h"
 
 namespace {
 
 constexpr const char* kSource = "SubdivKit Refine";
-
-subdiv::BoundaryInterpolation boundary_mode(int index) {
-  // The drop-down's order: OpenSubdiv's names edges-and-corners, edges, none.
-  switch (index) {
-    case 1: return subdiv::BoundaryInterpolation::EdgesOnly;
-    case 2: return subdiv::BoundaryInterpolation::None;
-    default: return subdiv::BoundaryInterpolation::EdgesAndCorners;
-  }
-}
-
-// The input as SubdivKit's mesh, with the creases the Crease array property asks for.
-subdiv::MeshData input_mesh(vtkPolyData& input, const std::string& crease_array) {
-  subdiv::MeshData mesh = subdiv::mesh_from_polydata(input, kSource);
-  if (!crease_array.empty() && crease_array != "None")
-    subdiv::paraview::add_creases_from_cell_array(input, crease_array, mesh, kSource);
-  return mesh;
-}
 
 // One level as polydata, checked as write_vtp checks it (array names and lengths).
 vtkSmartPointer<vtkPolyData> level_polydata(const subdiv::OutputLevel& level) {
@@ -100,8 +83,7 @@ subdiv::paraview::RefineSettings vtkSubdivKitRefine::Request() const {
   request.scheme = this->SchemeToRun();
   request.levels = this->Levels;
   request.parameters = this->ParametersToRun();
-  request.features = {boundary_mode(this->BoundaryInterpolation),
-                      this->CreaseMethod == 1 ? subdiv::CreaseMethod::Chaikin : subdiv::CreaseMethod::Uniform};
+  request.features = subdiv::paraview::filter_features(this->BoundaryInterpolation, this->CreaseMethod);
   request.feature_angle = this->UseFeatureAngle ? this->FeatureAngle : -1.0;
   request.threads = this->Threads;
   request.limit = this->LimitPositions;
@@ -117,7 +99,8 @@ int vtkSubdivKitRefine::RequestData(vtkInformation*, vtkInformationVector** in, 
     subdiv::paraview::RefineSettings settings = this->Request();
     settings.progress = [this](double done) { this->UpdateProgress(done); };  // ParaView's progress bar
     const subdiv::paraview::RefinedLevels refined =
-        subdiv::paraview::refine_levels(input_mesh(*input, this->CreaseArray), settings, kSource);
+        subdiv::paraview::refine_levels(subdiv::paraview::filter_input_mesh(*input, this->CreaseArray, kSource),
+                                        settings, kSource);
     for (const std::string& note : refined.notes) vtkWarningMacro(<< kSource << ": " << note);
     if (auto* blocks = vtkMultiBlockDataSet::SafeDownCast(output))
       set_level_blocks(*blocks, refined, this->LevelSpacing * input->GetLength());

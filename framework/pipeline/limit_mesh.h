@@ -1,0 +1,16 @@
+#pragma once
+// The limit surface sampled as a mesh that every front-end writes or shows the same way
+// (`subdiv evaluate --samples N`, ParaView's "SubdivKit Limit").
+#include "framework/io/mesh_data.h"
+#include "framework/pipeline/evaluate_request.h"
+
+namespace subdiv {
+
+// The prepared surface tessellated with `segments` per face edge (limit/tessellation.h:
+// crack-free, neighbouring faces share their edge samples), as a mesh with the point arrays
+// "Normals" (the unit limit normal, role normals), "base_face" and "uv" (the face and
+// (u, v) each point was evaluated at), and the cell array "base_face" (the input face each
+// face lies in). Throws subdiv::Error as tessellate() does (segments < 1, odd with sub-faces).
+MeshData sampled_limit_mesh(const PreparedEvaluation& prepared, int segments);
+
+}  // namespace subdiv
