@@ -7,8 +7,9 @@ with the plugin found through PV_PLUGIN_PATH, SUBDIV_PARAVIEW_PLUGIN or the subd
 smooth, creases from a cell array on line cells, creases from the feature angle; coloured
 by vertex_class) and paraview-textured-sphere.png (a coarse sphere with texture coordinates,
 and Loop's refinement of it carrying them), paraview-spectrum.png (SubdivKit Analyze's
-spectrum in a line chart) and paraview-levels.png (a cube's levels 0 to 3 side by side,
-All Levels with Level Spacing, coloured by origin)."""
+spectrum in a line chart), paraview-levels.png (a cube's levels 0 to 3 side by side,
+All Levels with Level Spacing, coloured by origin) and paraview-limit.png (SubdivKit
+Limit: a cube's sampled limit surface and its adaptive mesh)."""
 
 import os
 import sys
@@ -141,6 +142,25 @@ def levels_side_by_side(path):
     pv.SaveScreenshot(path, view, ImageResolution=[1200, 360])
 
 
+def limit_cube(path):
+    """The control cube; SubdivKit Limit's sampled limit surface, shaded with its exact
+    normals; and the adaptive mesh on the limit, refined only around the cube's eight
+    valence-3 vertices, its faces coloured by level."""
+    view = render_view([1200, 420])
+    cube = pv.Clean(Input=pv.Box())
+    sampled = pv.SubdivKitLimit(Input=cube, Scheme="catmull-clark", Samples=16)
+    adaptive = pv.SubdivKitLimit(Input=cube, Scheme="catmull-clark", Mode=1, AdaptiveLevels=4)
+    show(cube, view, 0.0, representation="Wireframe")
+    show(sampled, view, 1.5, representation="Surface")
+    display = show(adaptive, view, 3.0)
+    pv.ColorBy(display, ("CELLS", "face_level"))
+    display.LookupTable = pv.GetColorTransferFunction("face_level")
+    display.LookupTable.ApplyPreset("Rainbow Uniform", True)
+    display.LookupTable.RescaleTransferFunction(0, 4)
+    look_from_front(view, 1.5, (2.0, -5.0, 3.0), 0.6)
+    pv.SaveScreenshot(path, view, ImageResolution=[1200, 420])
+
+
 def spectrum_chart(path):
     analyze = pv.SubdivKitAnalyze(Scheme="loop", Valences=[3, 12], Eigenvalues=6)
     chart = pv.CreateView("XYChartView")
@@ -162,4 +182,6 @@ checker_png(texture)
 textured_sphere(os.path.join(out_dir, "paraview-textured-sphere.png"), texture)
 spectrum_chart(os.path.join(out_dir, "paraview-spectrum.png"))
 levels_side_by_side(os.path.join(out_dir, "paraview-levels.png"))
-print("wrote", ", ".join(f"{out_dir}/paraview-{n}.png" for n in ("creased-cube", "textured-sphere", "spectrum", "levels")))
+limit_cube(os.path.join(out_dir, "paraview-limit.png"))
+print("wrote", ", ".join(f"{out_dir}/paraview-{n}.png"
+                         for n in ("creased-cube", "textured-sphere", "spectrum", "levels", "limit")))
