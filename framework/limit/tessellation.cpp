@@ -28,7 +28,6 @@ struct Builder {
   Index point(const Key& key, Index face, double u, double v) {
     auto [it, inserted] = points.emplace(key, out.point_count());
     if (inserted) {
-      out.positions.insert(out.positions.end(), {0, 0, 0});
       out.uv.insert(out.uv.end(), {u, v});
       out.uv_face.push_back(face);
     }
@@ -121,9 +120,10 @@ struct Builder {
 };
 
 // The point's normal; where the derivatives do not exist (an extraordinary vertex), the
-// limit of the normals of the face's points towards it.
-std::array<double, 3> normal_at(const LimitSurface& s, LimitSample p, Index face, double u, double v,
-                                std::span<const double> P) {
+// limit of the normals of the face's points towards it; zero where the scheme gives no
+// derivatives at all.
+std::array<double, 3> normal_at(const LimitSurface& s, const SurfaceSample& sample, LimitSample p, Index face,
+                                double u, double v) {
   if (!p.has_derivatives) {
     // Towards the middle of the point's face, or of its sub-face's tile (face_domain.h).
     const int n = s.base().face_size(face);
@@ -135,7 +135,9 @@ std::array<double, 3> normal_at(const LimitSurface& s, LimitSample p, Index face
       cu = col + 0.25, cv = row + 0.25;
     }
     const double t = 1e-9;
-    p = s.evaluate(face, u + t * (cu - u), v + t * (cv - v), P, 3);
+    p = sample(face, u + t * (cu - u), v + t * (cv - v));
+    // No derivatives at all (a dual scheme without the biquadratic closed form, dual_limit.h).
+    if (!p.has_derivatives) return {0, 0, 0};
   }
   std::array<double, 3> n{p.du[1] * p.dv[2] - p.du[2] * p.dv[1], p.du[2] * p.dv[0] - p.du[0] * p.dv[2],
                           p.du[0] * p.dv[1] - p.du[1] * p.dv[0]};
@@ -147,14 +149,13 @@ std::array<double, 3> normal_at(const LimitSurface& s, LimitSample p, Index face
 
 }  // namespace
 
-Tessellation tessellate(const LimitSurface& surface, std::span<const double> positions, int N) {
+Tessellation tessellation_grid(const Level& topology, const Level& base, bool triangles, int N) {
   if (N < 1) throw OptionError(fmt::format("{{samples}} {}: the number of segments per edge must be at least 1", N));
-  const Level& base = surface.base();
-  Builder b{base, {}, {}};
+  Builder b{topology, {}, {}};
   for (Index f = 0; f < base.face_count(); ++f) {
     if (base.is_hole(f)) continue;
     const int k = base.face_size(f);
-    if (surface.triangles()) b.triangle_face(f, N);
+    if (triangles) b.triangle_face(f, N);
     else if (k == 4) b.quad_face(f, N);
     else {
       if (N % 2)
@@ -163,19 +164,28 @@ Tessellation tessellate(const LimitSurface& surface, std::span<const double> pos
       b.sub_faces(f, N);
     }
   }
-  Tessellation out = std::move(b.out);
+  return std::move(b.out);
+}
+
+Tessellation tessellate(const LimitSurface& surface, int N, const SurfaceSample& sample) {
+  Tessellation out = tessellation_grid(surface.base(), surface.base(), surface.triangles(), N);
+  out.positions.assign(size_t(out.point_count()) * 3, 0.0);
   out.normals.assign(out.positions.size(), 0.0);
   parallel_for_all(out.point_count(), [&](Index i) {
     const Index f = out.uv_face[size_t(i)];
     const double u = out.uv[size_t(2 * i)], v = out.uv[size_t(2 * i + 1)];
-    const LimitSample p = surface.evaluate(f, u, v, positions, 3);
-    const auto n = normal_at(surface, p, f, u, v, positions);
+    const LimitSample p = sample(f, u, v);
+    const auto n = normal_at(surface, sample, p, f, u, v);
     for (int c = 0; c < 3; ++c) {
       out.positions[size_t(3 * i + c)] = p.position[size_t(c)];
       out.normals[size_t(3 * i + c)] = n[size_t(c)];
     }
   });
   return out;
+}
+
+Tessellation tessellate(const LimitSurface& surface, std::span<const double> positions, int N) {
+  return tessellate(surface, N, [&](Index face, double u, double v) { return surface.evaluate(face, u, v, positions, 3); });
 }
 
 }  // namespace subdiv

@@ -7,6 +7,7 @@
 // N^2 triangles at (i/N, j/N), i + j <= N; another face of a quad split its n sub-faces
 // (Bfr's QUAD_SUBFACES) with N/2 x N/2 quads each, so that its edges too have N segments
 // (N must then be even).
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -22,11 +23,24 @@ struct Tessellation {
   std::vector<double> uv;         // per point: the (u, v) it was evaluated at in ...
   std::vector<Index> uv_face;     // ... this base face
 
-  Index point_count() const { return Index(positions.size() / 3); }
+  Index point_count() const { return Index(uv_face.size()); }
   Index face_count() const { return Index(face_offsets.size()) - 1; }
 };
 
+// A point of the surface to tessellate: its position (3 values) and first derivatives
+// (has_derivatives false where they do not exist).
+using SurfaceSample = std::function<LimitSample(Index face, double u, double v)>;
+
 // Throws subdiv::Error for N < 1, or an odd N on a mesh with sub-faces.
+Tessellation tessellate(const LimitSurface& surface, int segments, const SurfaceSample& sample);
+// The surface of `positions` (the polynomial surface: sample is surface.evaluate).
 Tessellation tessellate(const LimitSurface& surface, std::span<const double> positions, int segments);
+
+// The grid alone, nothing evaluated (positions and normals empty): its faces, and per
+// point the face and (u, v) to evaluate it at. `topology` gives the faces' corners and
+// edges: the surface's base level, or a face-varying channel's value mesh (whose faces are
+// the base's, corner for corner: the grid's point numbers are then the channel's values,
+// shared exactly where the channel is continuous across an edge). `base` gives the holes.
+Tessellation tessellation_grid(const Level& topology, const Level& base, bool triangles, int segments);
 
 }  // namespace subdiv

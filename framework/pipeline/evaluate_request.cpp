@@ -53,6 +53,7 @@ std::vector<FaceVaryingSurface> face_varying_surfaces(const PreparedRefinement& 
     FaceVaryingSurface s;
     s.name = a.name;
     s.components = a.components;
+    s.role = a.role;
     s.mode = p.face_varying;
     s.values = std::move(m.values.values);
     s.level = std::move(m.level);
@@ -201,29 +202,33 @@ namespace {
 
 // The rational surface from its homogeneous limit (X, W) (Piegl & Tiller 1997, "The NURBS
 // Book", eq. 4.8 and its derivative): P = X / W, P_u = (X_u - P W_u) / W, and
-// P_uv = (X_uv - P_u W_v - P_v W_u - P W_uv) / W. NaN (no derivative there) stays NaN.
-EvaluatedPoints projected(const EvaluatedPoints& h) {
-  EvaluatedPoints out;
-  out.count = h.count;
-  out.channels = 3;
-  auto sized = [&](const std::vector<double>& from) { return std::vector<double>(from.empty() ? 0 : size_t(h.count) * 3); };
+// P_uv = (X_uv - P_u W_v - P_v W_u - P W_uv) / W.
+LimitSample projected(const LimitSample& h) {
+  LimitSample out = h;
+  auto sized = [](const std::vector<double>& from) { return std::vector<double>(from.empty() ? 0 : 3); };
   out.position = sized(h.position), out.du = sized(h.du), out.dv = sized(h.dv);
   out.duu = sized(h.duu), out.duv = sized(h.duv), out.dvv = sized(h.dvv);
-  for (size_t i = 0; i < size_t(h.count); ++i) {
-    auto in = [&](const std::vector<double>& v, int c) { return v[4 * i + size_t(c)]; };
-    auto at = [&](std::vector<double>& v, int c) -> double& { return v[3 * i + size_t(c)]; };
-    const double W = in(h.position, 3);
-    for (int c = 0; c < 3; ++c) {
-      const double P = in(h.position, c) / W;
-      at(out.position, c) = P;
-      if (h.du.empty()) continue;
-      const double Pu = (in(h.du, c) - P * in(h.du, 3)) / W, Pv = (in(h.dv, c) - P * in(h.dv, 3)) / W;
-      at(out.du, c) = Pu, at(out.dv, c) = Pv;
-      if (h.duu.empty()) continue;
-      at(out.duu, c) = (in(h.duu, c) - 2 * Pu * in(h.du, 3) - P * in(h.duu, 3)) / W;
-      at(out.dvv, c) = (in(h.dvv, c) - 2 * Pv * in(h.dv, 3) - P * in(h.dvv, 3)) / W;
-      at(out.duv, c) = (in(h.duv, c) - Pu * in(h.dv, 3) - Pv * in(h.du, 3) - P * in(h.duv, 3)) / W;
-    }
+  const double W = h.position[3];
+  for (size_t c = 0; c < 3; ++c) {
+    const double P = h.position[c] / W;
+    out.position[c] = P;
+    if (!h.has_derivatives || h.du.empty()) continue;
+    const double Pu = (h.du[c] - P * h.du[3]) / W, Pv = (h.dv[c] - P * h.dv[3]) / W;
+    out.du[c] = Pu, out.dv[c] = Pv;
+    if (!h.has_second_derivatives || h.duu.empty()) continue;
+    out.duu[c] = (h.duu[c] - 2 * Pu * h.du[3] - P * h.duu[3]) / W;
+    out.dvv[c] = (h.dvv[c] - 2 * Pv * h.dv[3] - P * h.dvv[3]) / W;
+    out.duv[c] = (h.duv[c] - Pu * h.dv[3] - Pv * h.du[3] - P * h.duv[3]) / W;
+  }
+  return out;
+}
+
+// (w·p, w) per vertex of the prepared mesh.
+std::vector<double> homogeneous_positions(const PreparedEvaluation& p) {
+  std::vector<double> out(p.weights.size() * 4);
+  for (size_t v = 0; v < p.weights.size(); ++v) {
+    for (int c = 0; c < 3; ++c) out[4 * v + size_t(c)] = p.weights[v] * p.mesh.positions[3 * v + size_t(c)];
+    out[4 * v + 3] = p.weights[v];
   }
   return out;
 }
@@ -236,16 +241,13 @@ EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& p, std::span<con
   check_order(derivatives);
   check_points(p, faces, uv);
   std::vector<double> own;
-  const bool rational = values.empty() && !p.weights.empty();
-  if (rational) {  // (w·p, w) per vertex
-    channels = 4;
-    own.resize(p.weights.size() * 4);
-    for (size_t v = 0; v < p.weights.size(); ++v) {
-      for (int c = 0; c < 3; ++c) own[4 * v + size_t(c)] = p.weights[v] * p.mesh.positions[3 * v + size_t(c)];
-      own[4 * v + 3] = p.weights[v];
-    }
-    values = own;
-  } else if (values.empty()) {
+  if (values.empty() && !p.weights.empty()) {  // the rational surface
+    own = homogeneous_positions(p);
+    return evaluate_samples(faces.size(), 3, derivatives, [&](size_t i) {
+      return projected(p.surface->evaluate(faces[i], uv[2 * i], uv[2 * i + 1], own, 4, derivatives));
+    });
+  }
+  if (values.empty()) {
     channels = 3;
     values = p.mesh.positions;
   } else {
@@ -258,10 +260,21 @@ EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& p, std::span<con
         own[v * size_t(channels) + size_t(c)] = values[size_t(p.request_vertex[v]) * size_t(channels) + size_t(c)];
     values = own;
   }
-  EvaluatedPoints out = evaluate_samples(faces.size(), channels, derivatives, [&](size_t i) {
+  return evaluate_samples(faces.size(), channels, derivatives, [&](size_t i) {
     return p.surface->evaluate(faces[i], uv[2 * i], uv[2 * i + 1], values, channels, derivatives);
   });
-  return rational ? projected(out) : out;
+}
+
+SurfaceSample limit_sampler(const PreparedEvaluation& p) {
+  const LimitSurface* surface = p.surface.get();
+  if (p.weights.empty()) {
+    std::span<const double> positions = p.mesh.positions;
+    return [surface, positions](Index face, double u, double v) { return surface->evaluate(face, u, v, positions, 3); };
+  }
+  auto homogeneous = std::make_shared<const std::vector<double>>(homogeneous_positions(p));
+  return [surface, homogeneous](Index face, double u, double v) {
+    return projected(surface->evaluate(face, u, v, *homogeneous, 4));
+  };
 }
 
 EvaluatedPoints evaluate_face_varying(const PreparedEvaluation& p, size_t channel, std::span<const Index> faces,

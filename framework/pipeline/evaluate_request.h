@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "framework/limit/limit_surface.h"
+#include "framework/limit/tessellation.h"
 #include "framework/pipeline/refine_request.h"
 #include "framework/primvar/face_varying.h"
 
@@ -35,6 +36,7 @@ struct EvaluateRequest {
 struct FaceVaryingSurface {
   std::string name;
   int components = 2;
+  ArrayRole role = ArrayRole::Data;  // e.g. texture coordinates
   FaceVaryingLinear mode = FaceVaryingLinear::All;
   std::vector<double> values;                    // components per value of the value mesh
   Level level;                                   // the value mesh (faces as the mesh's)
@@ -79,6 +81,11 @@ struct EvaluatedPoints {
 EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& prepared, std::span<const Index> faces,
                                       std::span<const double> uv, int derivatives,
                                       std::span<const double> values = {}, int channels = 3);
+
+// One point at a time, as tessellation asks (limit/tessellation.h): the position and first
+// derivatives of the polynomial surface of the mesh's positions, or of the rational surface
+// of its weights. Valid while `prepared` lives.
+SurfaceSample limit_sampler(const PreparedEvaluation& prepared);
 
 // The limit of face-varying channel `channel` at the points (components per point), as
 // evaluate_limit_points.

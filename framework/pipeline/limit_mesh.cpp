@@ -11,11 +11,25 @@ DataArray index_array(const char* name, const std::vector<Index>& indices) {
   return a;
 }
 
+// Channel c of the mesh's face-varying data on the tessellation: the same grid laid over
+// the channel's value mesh numbers its values (shared across an edge exactly where the
+// channel is continuous there, split at its seams), and each is the channel's limit at its
+// (face, u, v).
+FaceVaryingArray face_varying_samples(const PreparedEvaluation& prepared, size_t c, int segments) {
+  const FaceVaryingSurface& channel = prepared.face_varying[c];
+  const LimitSurface& surface = *prepared.surface;
+  const Tessellation grid = tessellation_grid(channel.level, surface.base(), surface.triangles(), segments);
+  EvaluatedPoints values = evaluate_face_varying(prepared, c, grid.uv_face, grid.uv, 0);
+  return {channel.name, channel.components, std::move(values.position), grid.face_vertices, channel.role};
+}
+
 }  // namespace
 
 MeshData sampled_limit_mesh(const PreparedEvaluation& prepared, int segments) {
-  Tessellation t = tessellate(*prepared.surface, prepared.mesh.positions, segments);
+  Tessellation t = tessellate(*prepared.surface, segments, limit_sampler(prepared));
   MeshData m;
+  for (size_t c = 0; c < prepared.face_varying.size(); ++c)
+    m.face_varying.push_back(face_varying_samples(prepared, c, segments));
   m.point_data = {DataArray{"Normals", 3, std::move(t.normals), false, ArrayRole::Normals},
                   index_array("base_face", t.uv_face), DataArray{"uv", 2, std::move(t.uv), false}};
   m.cell_data = {index_array("base_face", t.base_face)};

@@ -6,11 +6,13 @@
 
 namespace subdiv {
 
-// The prepared surface tessellated with `segments` per face edge (limit/tessellation.h:
-// crack-free, neighbouring faces share their edge samples), as a mesh with the point arrays
-// "Normals" (the unit limit normal, role normals), "base_face" and "uv" (the face and
-// (u, v) each point was evaluated at), and the cell array "base_face" (the input face each
-// face lies in). Throws subdiv::Error as tessellate() does (segments < 1, odd with sub-faces).
+// The prepared surface (its rational weights included) tessellated with `segments` per face
+// edge (limit/tessellation.h: crack-free, neighbouring faces share their edge samples), as
+// a mesh with the point arrays "Normals" (the unit limit normal, role normals), "base_face"
+// and "uv" (the face and (u, v) each point was evaluated at), the cell array "base_face"
+// (the input face each face lies in), and the mesh's face-varying channels (e.g. texture
+// coordinates) evaluated at every face corner, split where the channel has seams. Throws
+// subdiv::Error as tessellate() does (segments < 1, odd with sub-faces).
 MeshData sampled_limit_mesh(const PreparedEvaluation& prepared, int segments);
 
 }  // namespace subdiv
