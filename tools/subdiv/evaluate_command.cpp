@@ -149,7 +149,8 @@ void add_evaluate_command(CLI::App& app) {
   cmd->add_option("--at", args->at, "Points to evaluate: a .csv with the header face,u,v");
   cmd->add_option("--samples", args->samples,
                   "Instead of --at: the surface as a crack-free mesh, N x N quads per quad, N^2 triangles per "
-                  "triangle (faces with other sizes: N/2 x N/2 per sub-face, N even), with normals")
+                  "triangle (faces with other sizes: N/2 x N/2 per sub-face, N even), with normals; face-varying "
+                  "data (UVs) sampled at every corner, split at its seams; rational weights honoured")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--adaptive", args->adaptive,
                   "Instead of --at: the mesh refined to level L only where it is irregular (extraordinary vertices, "
