@@ -14,6 +14,7 @@
 #include "framework/features/sharpness.h"
 #include "framework/refine/dual_crease_topology.h"
 #include "framework/refine/dual_topology.h"
+#include "framework/refine/mid_edge_crease_topology.h"
 #include "framework/refine/splitter.h"
 #include "framework/util/bulk_memory.h"
 
@@ -72,8 +73,10 @@ SplitResult dual_result(const Level& L, bool full) {
 }
 
 SplitResult mid_edge_result(const Level& L, bool full) {
+  // Interior creases cut the V-faces into sectors (refine/mid_edge_crease_topology.h).
   DualSkipped skipped;
-  Level child = mid_edge_split_topology(L, full, &skipped);
+  Level child = mid_edge_needs_crease_topology(L) ? mid_edge_crease_split(L, full, &skipped.vertices)
+                                                  : mid_edge_split_topology(L, full, &skipped);
   const Index child_faces = child.face_count();
   SplitResult result{std::move(child), dual_origins(L, OriginKind::Edge, child_faces), true, {}};
   if (skipped.vertices)

@@ -58,6 +58,18 @@ Polygon lane_riesenfeld_closed(const Polygon& p, int d) {
   return q;
 }
 
+// The mid-edge curve rule (Peters & Reif 1997's split on a polygon; the `two-point` curve's
+// rule 1): every edge's midpoint, in order, so a closed polygon keeps its number of points.
+Polygon midpoints_closed(const Polygon& p) {
+  Polygon q;
+  for (size_t i = 0; i < p.size(); ++i) {
+    const P3& a = p[i];
+    const P3& b = p[(i + 1) % p.size()];
+    q.push_back({0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])});
+  }
+  return q;
+}
+
 double dist(const P3& a, const P3& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
 
 // A quad torus (8 x 6) made irregular along the crease loop j = 0: two quads merged into
@@ -189,6 +201,57 @@ TEST_CASE("dual crease: a crease loop of valences 3-6, not planar, is Chaikin's 
       CHECK(euler_characteristic(L) == 0);  // a torus
     }
   }
+}
+
+TEST_CASE("mid-edge crease: a crease loop of valences 3-6 is the polygon of its edge midpoints at levels 1-4") {
+  const CreasedTorus t = creased_torus();
+  const auto s = load_scheme("mid-edge", {});
+  RefineOptions options;
+  options.levels = 4;
+  const Hierarchy h = refine(*s, tagged(t.mesh, t.loop, true, 10.f), options);
+  Polygon expected = points_of(t.loop, t.mesh.positions);
+  for (int l = 1; l <= 4; ++l) {
+    CAPTURE(l);
+    expected = midpoints_closed(expected);
+    const Level& L = h.levels[size_t(l)];
+    const auto pos = interpolate(h, l, t.mesh.positions, 3);
+    const std::vector<Index> chain = crease_chain(L, kNone);
+    CHECK(chain.size() == t.loop.size());  // the crease is one loop of as many points
+    check_same_closed_polygon(points_of(chain, pos), expected, 1e-12);
+    CHECK(watertight(L));
+    CHECK(euler_characteristic(L) == 0);  // a torus
+  }
+  // Untagged, the V-faces of the loop's vertices are whole and the crease is no polyline of
+  // the child: the loop's midpoints are joined only through F-faces, never consecutively by
+  // an edge closing a sector, so the test above can fail.
+  const Hierarchy smooth = refine(*s, t.mesh.level(), options);
+  const Level& C = smooth.levels[1];
+  int joined = 0;
+  const Level base = t.mesh.level();
+  for (size_t i = 0; i < t.loop.size(); ++i) {
+    const Index a = find_edge(base, t.loop[i], t.loop[(i + 1) % t.loop.size()]);
+    const Index b = find_edge(base, t.loop[(i + 1) % t.loop.size()], t.loop[(i + 2) % t.loop.size()]);
+    joined += find_edge(C, a, b) != kNone;  // child vertex e is parent edge e's midpoint
+  }
+  CHECK(joined < int(t.loop.size()));
+}
+
+TEST_CASE("mid-edge crease: semi-sharp creases keep the smooth topology and decay to it") {
+  const CreasedTorus t = creased_torus();
+  const auto s = load_scheme("mid-edge", {});
+  RefineOptions options;
+  options.levels = 3;
+  const Hierarchy smooth = refine(*s, t.mesh.level(), options);
+  const Hierarchy half = refine(*s, tagged(t.mesh, t.loop, true, 0.5f), options);
+  const Hierarchy decays = refine(*s, tagged(t.mesh, t.loop, true, 1.5f), options);
+  // s < 1: the smooth faces; s = 1.5: sectors at level 1 only, then faces as many as smooth.
+  CHECK(half.levels[1].face_offsets == smooth.levels[1].face_offsets);
+  CHECK(half.levels[1].face_vertices == smooth.levels[1].face_vertices);
+  CHECK(decays.levels[1].face_count() > smooth.levels[1].face_count());
+  float most = 0.f;
+  for (float x : decays.levels[1].edge_sharpness) most = std::max(most, x);
+  CHECK(most == 0.5f);
+  for (int l = 1; l <= 3; ++l) CHECK(watertight(decays.levels[size_t(l)]));
 }
 
 TEST_CASE("dual crease: even-degree quad B-splines follow the degree-d B-spline (Lane-Riesenfeld) along a crease loop") {
