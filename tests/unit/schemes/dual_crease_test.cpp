@@ -228,6 +228,30 @@ TEST_CASE("dual crease: a crease loop of valences 3-6, not planar, is Chaikin's 
   }
 }
 
+TEST_CASE("dual crease: a stated corner crease rule gives both points of a split corner, mirrored on the arriving edge") {
+  // Chaikin's rule 0 (3/4 v + 1/4 next) stated as the `crease` corner rule instead of by
+  // "curve": on the arriving edge it applies mirrored (3/4 v + 1/4 prev), so the crease loop,
+  // whose valence-3 vertices have corners between two sharp edges, is Chaikin's polygon again.
+  const std::string text = R"json({
+    "name": "doo-sabin-stated", "split": "dual", "faces": "any",
+    "rules": {"corner": {
+      "smooth": [{"sum": "vertices", "w": "j == 0 ? (k + 5)/(4*k) : (3 + 2*cos(2*pi*j/k))/(4*k)"}],
+      "crease": [{"sum": "vertices", "w": "j == 0 ? 3/4 : (j == 1 ? 1/4 : 0)"}],
+      "corner": [{"at": "self", "w": "1"}]}}})json";
+  const auto s = load_scheme_text(text, "stated.json");
+  const CreasedTorus t = creased_torus();
+  RefineOptions options;
+  options.levels = 3;
+  const Hierarchy h = refine(*s, tagged(t.mesh, t.loop, true, 10.f), options);
+  Polygon expected = points_of(t.loop, t.mesh.positions);
+  for (int l = 1; l <= 3; ++l) {
+    CAPTURE(l);
+    expected = chaikin_closed(expected);
+    const auto pos = interpolate(h, l, t.mesh.positions, 3);
+    check_same_closed_polygon(points_of(crease_chain(h.levels[size_t(l)], kNone), pos), expected, 1e-12);
+  }
+}
+
 TEST_CASE("mid-edge crease: a crease loop of valences 3-6 is the polygon of its edge midpoints at levels 1-4") {
   const CreasedTorus t = creased_torus();
   const auto s = load_scheme("mid-edge", {});
