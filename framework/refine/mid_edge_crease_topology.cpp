@@ -36,13 +36,12 @@ void add_sector_faces(const Level& L, Index v, std::vector<Index>& offsets, std:
 }
 
 // The edge closing a sector at v, between the points of two consecutive sharp edges, is a
-// crease edge of the child: it carries their mean sharpness less one (a boundary edge counts
-// as infinitely sharp).
-void tag_closing_edges(const Level& L, Level& C) {
+// crease edge of the child: it carries the mean of their child sharpness at v (features/
+// sharpness.h; a boundary edge counts as infinitely sharp), uniform decay in the child and
+// Chaikin's in `chaikin`.
+void tag_closing_edges(const Level& L, Level& C, std::vector<float>& chaikin) {
   C.edge_sharpness.assign(size_t(C.edge_count()), 0.f);
-  const auto less_one = [&](Index x) {
-    return L.edge_on_boundary(x) ? kInfinitelySharp : decremented_sharpness(L.edge_sharp(x));
-  };
+  chaikin.assign(C.edge_sharpness.size(), 0.f);
   for (Index v = 0; v < L.vertex_count; ++v) {
     if (L.non_manifold_vertex(v)) continue;
     std::vector<Index> sharp;
@@ -52,9 +51,12 @@ void tag_closing_edges(const Level& L, Level& C) {
       const Index a = sharp[i], b = sharp[(i + 1) % sharp.size()];
       const Index e = find_edge(C, a, b);
       if (e == kNone || C.edge_on_boundary(e)) continue;
-      C.edge_sharpness[e] = 0.5f * (less_one(a) + less_one(b));
+      auto mean = [&](CreaseMethod m) { return 0.5f * (child_edge_sharpness(L, a, v, m) + child_edge_sharpness(L, b, v, m)); };
+      C.edge_sharpness[e] = mean(CreaseMethod::Uniform);
+      chaikin[e] = mean(CreaseMethod::Chaikin);
     }
   }
+  if (chaikin == C.edge_sharpness) chaikin.clear();
 }
 
 }  // namespace
@@ -65,7 +67,7 @@ bool mid_edge_needs_crease_topology(const Level& L) {
   return false;
 }
 
-Level mid_edge_crease_split(const Level& L, bool full, Index* skipped_vertices) {
+Level mid_edge_crease_split(const Level& L, bool full, Index* skipped_vertices, std::vector<float>* chaikin) {
   std::vector<Index> offsets{0}, verts;
   for (Index f = 0; f < L.face_count(); ++f) {
     const auto edges = L.face_edge_list(f);
@@ -87,7 +89,7 @@ Level mid_edge_crease_split(const Level& L, bool full, Index* skipped_vertices) 
     return C;
   }
   Level C = build_level(L.edge_count(), offsets, verts);
-  tag_closing_edges(L, C);
+  tag_closing_edges(L, C, *chaikin);
   return C;
 }
 

@@ -440,6 +440,52 @@ TEST_CASE("dual crease: semi-sharp creases decay one unit per level and stay wat
   }
 }
 
+// The positive edge sharpness values of a level, sorted.
+std::vector<float> sharpness_values(const Level& L) {
+  std::vector<float> out;
+  for (float x : L.edge_sharpness)
+    if (x > 0.f) out.push_back(x);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST_CASE("dual crease: --crease-method chaikin decays the crease as DeRose, Kass & Truong 1998's Chaikin rule") {
+  // Crease loop edge i has sharpness s_i = 1.5 + 0.375 i (all semi-sharp, >= 1). Chaikin's
+  // rule (DeRose, Kass & Truong 1998, sec. 4.2; OpenSubdiv's Sdc::Crease): the child of edge
+  // e next to vertex v has 3/4 s_e + 1/4 (mean of v's other semi-sharp edges) - 1; uniform:
+  // s_e - 1. A dual child edge along e_i lies in its middle (the mean at its two ends); the
+  // edge across loop vertex p_i joins e_(i-1) and e_i there (the mean of their values at p_i).
+  const CreasedTorus t = creased_torus();
+  const size_t n = t.loop.size();
+  std::vector<float> sharp(n);
+  for (size_t i = 0; i < n; ++i) sharp[i] = 1.5f + 0.375f * float(i);
+  Level base = tagged(t.mesh, t.loop, true, 0.f);
+  for (size_t i = 0; i < n; ++i) base.edge_sharpness[find_edge(base, t.loop[i], t.loop[(i + 1) % n])] = sharp[i];
+  auto chaikin = [](float s, float other) { return std::max(0.f, 0.75f * s + 0.25f * other - 1.f); };
+  auto uniform = [](float s, float) { return s - 1.f; };
+  for (const std::string scheme : {"doo-sabin", "mid-edge"}) {
+    for (bool use_chaikin : {false, true}) {
+      CAPTURE(scheme);
+      CAPTURE(use_chaikin);
+      std::vector<float> expected;
+      for (size_t i = 0; i < n; ++i) {
+        const float prev = sharp[(i + n - 1) % n], here = sharp[i], next = sharp[(i + 1) % n];
+        const auto rule = [&](float s, float o) { return use_chaikin ? chaikin(s, o) : uniform(s, o); };
+        if (scheme == "doo-sabin") expected.push_back(0.5f * (rule(here, prev) + rule(here, next)));
+        expected.push_back(0.5f * (rule(prev, here) + rule(here, prev)));  // across p_i
+      }
+      std::sort(expected.begin(), expected.end());
+      RefineOptions options;
+      options.levels = 1;
+      options.features.crease_method = use_chaikin ? CreaseMethod::Chaikin : CreaseMethod::Uniform;
+      const Hierarchy h = refine(*load_scheme(scheme, {}), base, options);
+      const std::vector<float> got = sharpness_values(h.levels[1]);
+      REQUIRE(got.size() == expected.size());
+      for (size_t i = 0; i < got.size(); ++i) CHECK(got[i] == doctest::Approx(expected[i]).epsilon(1e-6));
+    }
+  }
+}
+
 TEST_CASE("dual crease: a tagged corner inside a surface stays at every level") {
   test::Mesh m = test::torus(8, 6);
   Level L = m.level();
