@@ -10,6 +10,9 @@
 #include <cmath>
 #include <string>
 
+#include "framework/interpolation/limit_selection.h"
+#include "framework/scheme/scheme_sequence.h"
+#include "framework/util/error.h"
 #include "support/refine_helpers.h"
 
 using namespace subdiv;
@@ -504,4 +507,27 @@ TEST_CASE("dual crease: a tagged corner inside a surface stays at every level") 
     CHECK(watertight(h.levels[size_t(l)]));
     CHECK(euler_characteristic(h.levels[size_t(l)]) == 0);
   }
+}
+
+TEST_CASE("dual crease: limit points are exact at corners and refused, with the vertex, on creases") {
+  // A tagged corner stays at every level (tested above), so it is its own limit point; the
+  // smooth vertices keep their V-face centroids.
+  test::Mesh m = test::torus(8, 6);
+  Level L = m.level();
+  L.vertex_sharpness.assign(size_t(L.vertex_count), 0.f);
+  L.vertex_sharpness[10] = 10.f;
+  const LimitChoice c = select_limit(load_scheme_sequence("doo-sabin", 1, {}), L);
+  std::vector<double> got(m.positions.size());
+  c.evaluator->limit_points(L, m.positions, got);
+  for (int i = 0; i < 3; ++i) CHECK(got[30 + i] == m.positions[30 + i]);
+  // On a crease the limit is the crease curve's, not a V-face centroid: refused by name.
+  const CreasedTorus t = creased_torus();
+  std::string message;
+  try {
+    (void)select_limit(load_scheme_sequence("doo-sabin", 1, {}), tagged(t.mesh, t.loop, true, 10.f));
+  } catch (const Error& e) {
+    message = e.what();
+  }
+  CHECK(message.find("lies on a crease") != std::string::npos);
+  CHECK(message.find("vertex") != std::string::npos);
 }
