@@ -102,6 +102,8 @@ Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const Ref
     SplitResult step = split(scheme.split(), h.levels.back(), options.first_step + int(l), faces_only);
     if (splitter_info(scheme.split()).engine_propagates_tags && !faces_only)
       propagate_tags(h.levels.back(), step, options.features.crease_method);
+    else if (options.features.crease_method == CreaseMethod::Chaikin && !step.chaikin_edge_sharpness.empty())
+      step.child.edge_sharpness = std::move(step.chaikin_edge_sharpness);
     pass_holes_down(h.levels.back(), step);
     if (!step.warning.empty()) h.warnings.push_back(fmt::format("level {}: {}", l + 1, step.warning));
     h.levels.push_back(std::move(step.child));

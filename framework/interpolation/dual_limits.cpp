@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <map>
 
+#include "framework/features/dual_features.h"
 #include "framework/interpolation/limit_rows.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -77,6 +78,13 @@ StencilTable DualCentroidLimit::stencils_at(const Level& level, int step) const 
     if (level.on_boundary(v))
       return fmt::format("{}: vertex {} is on the boundary, where a dual scheme's V-face is open and no exact "
                          "mask is known; interpolate a closed mesh with it", who, v);
+    // A corner's face corners collapse into one point that stays at the vertex at every level
+    // (docs/features.md, "Creases in dual schemes"): the limit passes through it.
+    if (dual_collapses(level, v)) return row.add(v, 1.0), std::string();
+    if (dual_sharp_edge_count(level, v) > 0)
+      return fmt::format("{}: vertex {} lies on a crease (an edge of sharpness >= 1), where the V-face is cut into "
+                         "sectors and the limit point is the crease curve's, which is not computed for dual schemes "
+                         "yet; interpolate the mesh without its creases, or with a primal scheme", who, v);
     if (vface[v] == kNone) return fmt::format("{}: vertex {} gets no V-face from one step of {}", who, v, scheme_->name);
     for (const auto& [source, w] : mean_row(s, h.levels[1].face(vface[v]))) row.add(source, w);
     return {};
@@ -93,7 +101,9 @@ std::string dual_centroid_mismatch(const Scheme& scheme, const Level& level, con
   for (Index f = 0; f < l2.face_count(); ++f)
     if (h.origins[1].parent_face[f] != kNone) child_face[h.origins[1].parent_face[f]] = f;
   for (Index v = 0; v < level.vertex_count; ++v) {
-    if (level.on_boundary(v)) continue;
+    // Boundary, corner and crease vertices have no whole V-face (DualCentroidLimit says what
+    // their limit is, or why it has none).
+    if (level.on_boundary(v) || dual_collapses(level, v) || dual_sharp_edge_count(level, v) > 0) continue;
     const Index g = vface[v];
     if (g == kNone) return fmt::format("one step of '{}' makes no V-face around vertex {}", scheme.name, v);
     if (child_face[g] == kNone)

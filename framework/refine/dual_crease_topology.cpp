@@ -117,17 +117,26 @@ void add_sector_faces(const Level& L, PointMap& pm, Index v, std::vector<Index>&
 }
 
 // Sharpness of the child edges along and across the crease, and of collapsed tagged vertices.
-void tag_child(const Level& L, PointMap& pm, Level& C) {
+// A child edge along sharp edge e = (v, w) lies in e's middle: it takes the mean of e's child
+// sharpness at both ends; the edge across a crease vertex v, the mean of its two sharp edges'
+// child sharpness at v (features/sharpness.h: uniform decay, or Chaikin's, which also reads
+// the other semi-sharp edges at v). The uniform values go to the child, Chaikin's aside.
+void tag_child(const Level& L, PointMap& pm, DualFeatureSplit& out) {
+  Level& C = out.child;
   if (!L.edge_sharpness.empty()) {
     C.edge_sharpness.assign(size_t(C.edge_count()), 0.f);
-    auto tag = [&](Index a, Index b, float s) {
+    std::vector<float> chaikin(C.edge_sharpness.size(), 0.f);
+    auto at = [&](Index e, Index v, CreaseMethod m) { return child_edge_sharpness(L, e, v, m); };
+    auto tag = [&](Index a, Index b, float uniform, float by_chaikin) {
       const Index e = a == kNone || b == kNone ? kNone : find_edge(C, a, b);
-      if (e != kNone && !C.edge_on_boundary(e)) C.edge_sharpness[e] = s;
+      if (e != kNone && !C.edge_on_boundary(e)) C.edge_sharpness[e] = uniform, chaikin[e] = by_chaikin;
     };
     for (Index e = 0; e < L.edge_count(); ++e) {
       if (L.edge_on_boundary(e) || !pm.sharp(e)) continue;
       const Index f = L.edge_faces[2 * e], c = corner_leaving(L, f, e);
-      tag(pm.point(c, false), pm.point(next_corner(L, f, c), true), decremented_sharpness(L.edge_sharpness[e]));
+      const Index v = L.edge_vertices[2 * e], w = L.edge_vertices[2 * e + 1];
+      auto mean = [&](CreaseMethod m) { return 0.5f * (at(e, v, m) + at(e, w, m)); };
+      tag(pm.point(c, false), pm.point(next_corner(L, f, c), true), mean(CreaseMethod::Uniform), mean(CreaseMethod::Chaikin));
     }
     for (Index v = 0; v < L.vertex_count; ++v) {
       if (pm.collapses(v) || L.on_boundary(v)) continue;
@@ -135,9 +144,10 @@ void tag_child(const Level& L, PointMap& pm, Level& C) {
       for (Index e : L.ring_edges(v))
         if (pm.sharp(e) && count < 2) sharp[count++] = e;
       if (count != 2) continue;
-      const float s = 0.5f * (decremented_sharpness(L.edge_sharp(sharp[0])) + decremented_sharpness(L.edge_sharp(sharp[1])));
-      tag(pm.edge_point(sharp[0], v), pm.edge_point(sharp[1], v), s);
+      auto mean = [&](CreaseMethod m) { return 0.5f * (at(sharp[0], v, m) + at(sharp[1], v, m)); };
+      tag(pm.edge_point(sharp[0], v), pm.edge_point(sharp[1], v), mean(CreaseMethod::Uniform), mean(CreaseMethod::Chaikin));
     }
+    if (chaikin != C.edge_sharpness) out.chaikin_edge_sharpness = std::move(chaikin);
   }
   if (!L.vertex_sharpness.empty()) {
     C.vertex_sharpness.assign(size_t(C.vertex_count), 0.f);
@@ -180,7 +190,7 @@ DualFeatureSplit dual_feature_split(const Level& L, bool full) {
   const Index points = Index(pm.origins.kind.size());
   if (full) {
     out.child = build_level(points, offsets, verts);
-    tag_child(L, pm, out.child);
+    tag_child(L, pm, out);
   } else {
     out.child.vertex_count = points;
     out.child.face_offsets = std::move(offsets);

@@ -14,6 +14,7 @@
 #include "framework/features/sharpness.h"
 #include "framework/refine/dual_crease_topology.h"
 #include "framework/refine/dual_topology.h"
+#include "framework/refine/mid_edge_crease_topology.h"
 #include "framework/refine/splitter.h"
 #include "framework/util/bulk_memory.h"
 
@@ -55,7 +56,9 @@ ChildOrigins dual_origins(const Level& L, OriginKind kind, Index child_faces) {
 // points, corners collapsed (refine/dual_crease_topology.h).
 SplitResult feature_result(const Level& L, bool full) {
   DualFeatureSplit split = dual_feature_split(L, full);
-  return SplitResult{std::move(split.child), std::move(split.origins), true, {}};
+  SplitResult result{std::move(split.child), std::move(split.origins), true, {}};
+  result.chaikin_edge_sharpness = std::move(split.chaikin_edge_sharpness);
+  return result;
 }
 
 SplitResult dual_result(const Level& L, bool full) {
@@ -72,10 +75,14 @@ SplitResult dual_result(const Level& L, bool full) {
 }
 
 SplitResult mid_edge_result(const Level& L, bool full) {
+  // Interior creases cut the V-faces into sectors (refine/mid_edge_crease_topology.h).
   DualSkipped skipped;
-  Level child = mid_edge_split_topology(L, full, &skipped);
+  std::vector<float> chaikin;
+  Level child = mid_edge_needs_crease_topology(L) ? mid_edge_crease_split(L, full, &skipped.vertices, &chaikin)
+                                                  : mid_edge_split_topology(L, full, &skipped);
   const Index child_faces = child.face_count();
   SplitResult result{std::move(child), dual_origins(L, OriginKind::Edge, child_faces), true, {}};
+  result.chaikin_edge_sharpness = std::move(chaikin);
   if (skipped.vertices)
     result.warning = fmt::format("the mid-edge split made no face for {} non-manifold vertex/vertices (they have no "
                                  "cycle of edges around them); the surface has a gap there",

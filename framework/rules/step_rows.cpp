@@ -41,6 +41,45 @@ bool code_covers(const StepContext& s, bool has_function, Context c) {
   return s.code && has_function && (s.code->handles_features || c == Context::Smooth || c == Context::Dart);
 }
 
+// A stated `crease` corner rule is written for the sharp edge leaving the corner (the face's
+// next vertex, j = 1, lies on it). Where the sharp edge arrives (the previous vertex on it),
+// it is applied mirrored, j counted clockwise, so the two points of a corner between two
+// sharp edges are the rule on each edge, not one point twice (docs/features.md).
+void apply_stated_crease_rule(RowBuilder& row, const RuleInputs& in, Index f, int corner, const CompiledRule& rule,
+                              bool arriving, double scale) {
+  if (!arriving) return apply_corner_rule(row, in, f, corner, rule, scale);
+  const auto verts = in.parent.face(f);
+  const int k = int(verts.size());
+  for (const CompiledTerm& t : rule.terms) {
+    if (t.role == Role::Self) row.add(verts[corner], scale * t.weight(k, k, 0));
+    else if (t.role == Role::Vertices)
+      for (int j = 0; j < k; ++j) row.add(verts[(corner - j + k) % k], scale * t.weight(k, k, j));
+    else
+      throw Error(fmt::format("{}: a corner 'crease' rule is applied mirrored where the sharp edge arrives at the "
+                              "corner, and role '{}' cannot be mirrored; use 'self' and 'vertices', or leave the "
+                              "rule out so the scheme's \"curve\" gives it",
+                              t.where, role_name(t.role)));
+  }
+}
+
+// A dual split's point on a sharp segment a -> b near its end `near` (a: rule 0; b: rule 1),
+// where the far end collapses into a corner (features/dual_features.h): there the segment's
+// two cuts merge into their mean, (a + b) / 2 for Chaikin. Chaikin's cuts are knot insertion
+// for the uniform quadratic B-spline; with the knots clamped (triple) at a corner, inserting
+// the midpoints gives the corner, the end segment's midpoint, then Chaikin's cuts (Boehm
+// 1980, "Inserting new knots into B-spline curves"), and the child knots are clamped and
+// uniform again, so the rule repeats: the crease is the open quadratic B-spline that
+// interpolates the corner, tangent to its first edge (docs/features.md, "Corners").
+void apply_dual_segment_rule(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index e, Index a, Index b,
+                             bool near_a, double w) {
+  const Index far = near_a ? b : a;
+  if (dual_collapses(s.parent, far) && !dual_collapses(s.parent, near_a ? a : b)) {
+    apply_segment_curve_rule(row, in, e, a, b, curve_rule(s, 0, Element::Corner), 0.5 * w);
+    return apply_segment_curve_rule(row, in, e, a, b, curve_rule(s, 1, Element::Corner), 0.5 * w);
+  }
+  apply_segment_curve_rule(row, in, e, a, b, curve_rule(s, near_a ? 0 : 1, Element::Corner), w);
+}
+
 void fill_vertex_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index v) {
   const VertexContext& vc = s.features.vertices[v];
   const WeightTables& tables = s.vertex_tables(v);
@@ -109,12 +148,12 @@ void fill_feature_corner_row(RowBuilder& row, const StepContext& s, const RuleIn
   if (sv > 0.f) apply_corner_rule(row, in, f, corner, corner_rule, sv), scale = 1.0 - sv;
   const CompiledRule& stated = s.tables.rule(Element::Corner, Context::Crease);
   auto leaving = [&](double w) {
-    if (stated.defined) return apply_corner_rule(row, in, f, corner, stated, w);
-    apply_segment_curve_rule(row, in, out, v, next, curve_rule(s, 0, Element::Corner), w);
+    if (stated.defined) return apply_stated_crease_rule(row, in, f, corner, stated, false, w);
+    apply_dual_segment_rule(row, s, in, out, v, next, true, w);
   };
   auto arriving = [&](double w) {
-    if (stated.defined) return apply_corner_rule(row, in, f, corner, stated, w);
-    apply_segment_curve_rule(row, in, in_edge, prev, v, curve_rule(s, 1, Element::Corner), w);
+    if (stated.defined) return apply_stated_crease_rule(row, in, f, corner, stated, true, w);
+    apply_dual_segment_rule(row, s, in, in_edge, prev, v, false, w);
   };
   const bool sharp_out = dual_sharp_edge(L, out), sharp_in = dual_sharp_edge(L, in_edge);
   if (sharp_in && (!sharp_out || side == 1)) return arriving(scale);
@@ -163,10 +202,10 @@ void fill_corner_row(RowBuilder& row, const StepContext& s, const RuleInputs& in
   if (w < 1.0) smooth(1.0 - w);
   if (w <= 0.0) return;
   const CompiledRule& stated = s.tables.rule(Element::Corner, Context::Crease);
-  if (stated.defined) return apply_corner_rule(row, in, f, corner, stated, w);
+  if (stated.defined) return apply_stated_crease_rule(row, in, f, corner, stated, w_out <= 0.f, w);
   const Index next = L.face(f)[(corner + 1) % k], prev = L.face(f)[(corner + k - 1) % k];
-  if (w_out > 0.f) apply_segment_curve_rule(row, in, out, v, next, curve_rule(s, 0, Element::Corner), w);
-  else apply_segment_curve_rule(row, in, in_edge, prev, v, curve_rule(s, 1, Element::Corner), w);
+  if (w_out > 0.f) apply_dual_segment_rule(row, s, in, out, v, next, true, w);
+  else apply_dual_segment_rule(row, s, in, in_edge, prev, v, false, w);
 }
 
 Index element_count(const Level& L, Element e) {

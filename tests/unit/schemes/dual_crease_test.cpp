@@ -10,6 +10,9 @@
 #include <cmath>
 #include <string>
 
+#include "framework/interpolation/limit_selection.h"
+#include "framework/scheme/scheme_sequence.h"
+#include "framework/util/error.h"
 #include "support/refine_helpers.h"
 
 using namespace subdiv;
@@ -31,17 +34,42 @@ Polygon chaikin_closed(const Polygon& p) {
   return q;
 }
 
-// Chaikin on an open polygon whose ends are corners: the cut next to each end is the end.
-Polygon chaikin_open_cornered(const Polygon& p) {
-  Polygon q = {p.front()};
-  for (size_t i = 0; i + 1 < p.size(); ++i) {
-    const P3& a = p[i];
-    const P3& b = p[i + 1];
-    if (i > 0) q.push_back({0.75 * a[0] + 0.25 * b[0], 0.75 * a[1] + 0.25 * b[1], 0.75 * a[2] + 0.25 * b[2]});
-    if (i + 2 < p.size()) q.push_back({0.25 * a[0] + 0.75 * b[0], 0.25 * a[1] + 0.75 * b[1], 0.25 * a[2] + 0.75 * b[2]});
+// The control polygon of a B-spline of degree p after inserting knot t once (Boehm 1980,
+// "Inserting new knots into B-spline curves"): for the span t_k <= t < t_{k+1},
+// Q_i = (1 - a_i) P_{i-1} + a_i P_i with a_i = (t - t_i) / (t_{i+p} - t_i), k-p+1 <= i <= k.
+void insert_knot(std::vector<double>& knots, Polygon& ctrl, int p, double t) {
+  size_t k = 0;
+  while (!(knots[k] <= t && t < knots[k + 1])) ++k;
+  Polygon q;
+  for (size_t i = 0; i <= ctrl.size(); ++i) {
+    if (i + p <= k) q.push_back(ctrl[i]);
+    else if (i > k) q.push_back(ctrl[i - 1]);
+    else {
+      const double a = (t - knots[i]) / (knots[i + p] - knots[i]);
+      P3 x;
+      for (int c = 0; c < 3; ++c) x[c] = (1 - a) * ctrl[i - 1][c] + a * ctrl[i][c];
+      q.push_back(x);
+    }
   }
-  q.push_back(p.back());
-  return q;
+  knots.insert(knots.begin() + ptrdiff_t(k) + 1, t);
+  ctrl = q;
+}
+
+// The open quadratic B-spline through the polygon's ends: clamped uniform knots
+// 0, 0, 0, 1, ..., n - 2, n - 2, n - 2 (n control points), refined `levels` times by
+// inserting every interval's midpoint; returns the control polygon.
+Polygon clamped_quadratic_refined(const Polygon& p, int levels) {
+  std::vector<double> knots{0, 0};
+  for (size_t i = 0; i + 1 < p.size(); ++i) knots.push_back(double(i));
+  knots.push_back(knots.back()), knots.push_back(knots.back());
+  Polygon ctrl = p;
+  for (int l = 0; l < levels; ++l) {
+    std::vector<double> mids;
+    for (size_t i = 0; i + 1 < knots.size(); ++i)
+      if (knots[i] < knots[i + 1]) mids.push_back(0.5 * (knots[i] + knots[i + 1]));
+    for (double t : mids) insert_knot(knots, ctrl, 2, t);
+  }
+  return ctrl;
 }
 
 // Uniform B-spline of degree d on a closed polygon by Lane & Riesenfeld 1980: double every
@@ -54,6 +82,18 @@ Polygon lane_riesenfeld_closed(const Polygon& p, int d) {
     for (size_t i = 0; i < q.size(); ++i)
       for (int c = 0; c < 3; ++c) r[i][c] = 0.5 * (q[i][c] + q[(i + 1) % q.size()][c]);
     q = r;
+  }
+  return q;
+}
+
+// The mid-edge curve rule (Peters & Reif 1997's split on a polygon; the `two-point` curve's
+// rule 1): every edge's midpoint, in order, so a closed polygon keeps its number of points.
+Polygon midpoints_closed(const Polygon& p) {
+  Polygon q;
+  for (size_t i = 0; i < p.size(); ++i) {
+    const P3& a = p[i];
+    const P3& b = p[(i + 1) % p.size()];
+    q.push_back({0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])});
   }
   return q;
 }
@@ -191,6 +231,81 @@ TEST_CASE("dual crease: a crease loop of valences 3-6, not planar, is Chaikin's 
   }
 }
 
+TEST_CASE("dual crease: a stated corner crease rule gives both points of a split corner, mirrored on the arriving edge") {
+  // Chaikin's rule 0 (3/4 v + 1/4 next) stated as the `crease` corner rule instead of by
+  // "curve": on the arriving edge it applies mirrored (3/4 v + 1/4 prev), so the crease loop,
+  // whose valence-3 vertices have corners between two sharp edges, is Chaikin's polygon again.
+  const std::string text = R"json({
+    "name": "doo-sabin-stated", "split": "dual", "faces": "any",
+    "rules": {"corner": {
+      "smooth": [{"sum": "vertices", "w": "j == 0 ? (k + 5)/(4*k) : (3 + 2*cos(2*pi*j/k))/(4*k)"}],
+      "crease": [{"sum": "vertices", "w": "j == 0 ? 3/4 : (j == 1 ? 1/4 : 0)"}],
+      "corner": [{"at": "self", "w": "1"}]}}})json";
+  const auto s = load_scheme_text(text, "stated.json");
+  const CreasedTorus t = creased_torus();
+  RefineOptions options;
+  options.levels = 3;
+  const Hierarchy h = refine(*s, tagged(t.mesh, t.loop, true, 10.f), options);
+  Polygon expected = points_of(t.loop, t.mesh.positions);
+  for (int l = 1; l <= 3; ++l) {
+    CAPTURE(l);
+    expected = chaikin_closed(expected);
+    const auto pos = interpolate(h, l, t.mesh.positions, 3);
+    check_same_closed_polygon(points_of(crease_chain(h.levels[size_t(l)], kNone), pos), expected, 1e-12);
+  }
+}
+
+TEST_CASE("mid-edge crease: a crease loop of valences 3-6 is the polygon of its edge midpoints at levels 1-4") {
+  const CreasedTorus t = creased_torus();
+  const auto s = load_scheme("mid-edge", {});
+  RefineOptions options;
+  options.levels = 4;
+  const Hierarchy h = refine(*s, tagged(t.mesh, t.loop, true, 10.f), options);
+  Polygon expected = points_of(t.loop, t.mesh.positions);
+  for (int l = 1; l <= 4; ++l) {
+    CAPTURE(l);
+    expected = midpoints_closed(expected);
+    const Level& L = h.levels[size_t(l)];
+    const auto pos = interpolate(h, l, t.mesh.positions, 3);
+    const std::vector<Index> chain = crease_chain(L, kNone);
+    CHECK(chain.size() == t.loop.size());  // the crease is one loop of as many points
+    check_same_closed_polygon(points_of(chain, pos), expected, 1e-12);
+    CHECK(watertight(L));
+    CHECK(euler_characteristic(L) == 0);  // a torus
+  }
+  // Untagged, the V-faces of the loop's vertices are whole and the crease is no polyline of
+  // the child: the loop's midpoints are joined only through F-faces, never consecutively by
+  // an edge closing a sector, so the test above can fail.
+  const Hierarchy smooth = refine(*s, t.mesh.level(), options);
+  const Level& C = smooth.levels[1];
+  int joined = 0;
+  const Level base = t.mesh.level();
+  for (size_t i = 0; i < t.loop.size(); ++i) {
+    const Index a = find_edge(base, t.loop[i], t.loop[(i + 1) % t.loop.size()]);
+    const Index b = find_edge(base, t.loop[(i + 1) % t.loop.size()], t.loop[(i + 2) % t.loop.size()]);
+    joined += find_edge(C, a, b) != kNone;  // child vertex e is parent edge e's midpoint
+  }
+  CHECK(joined < int(t.loop.size()));
+}
+
+TEST_CASE("mid-edge crease: semi-sharp creases keep the smooth topology and decay to it") {
+  const CreasedTorus t = creased_torus();
+  const auto s = load_scheme("mid-edge", {});
+  RefineOptions options;
+  options.levels = 3;
+  const Hierarchy smooth = refine(*s, t.mesh.level(), options);
+  const Hierarchy half = refine(*s, tagged(t.mesh, t.loop, true, 0.5f), options);
+  const Hierarchy decays = refine(*s, tagged(t.mesh, t.loop, true, 1.5f), options);
+  // s < 1: the smooth faces; s = 1.5: sectors at level 1 only, then faces as many as smooth.
+  CHECK(half.levels[1].face_offsets == smooth.levels[1].face_offsets);
+  CHECK(half.levels[1].face_vertices == smooth.levels[1].face_vertices);
+  CHECK(decays.levels[1].face_count() > smooth.levels[1].face_count());
+  float most = 0.f;
+  for (float x : decays.levels[1].edge_sharpness) most = std::max(most, x);
+  CHECK(most == 0.5f);
+  for (int l = 1; l <= 3; ++l) CHECK(watertight(decays.levels[size_t(l)]));
+}
+
 TEST_CASE("dual crease: even-degree quad B-splines follow the degree-d B-spline (Lane-Riesenfeld) along a crease loop") {
   const CreasedTorus t = creased_torus();
   for (int d : {2, 4, 6}) {
@@ -210,7 +325,8 @@ TEST_CASE("dual crease: even-degree quad B-splines follow the degree-d B-spline 
   }
 }
 
-TEST_CASE("dual crease: a crease between two corners keeps them and is Chaikin's with the corners kept, levels 1-4") {
+TEST_CASE("dual crease: a crease between two corners keeps them and is the open quadratic B-spline through them, "
+          "levels 1-4") {
   // A 6 x 6 grid, bent, with a zigzag crease from boundary vertex (0, 2) to (6, 4): its ends
   // have three sharp edges (two boundary ones), so they are corners.
   test::Mesh m = test::grid(6, 6);
@@ -241,11 +357,11 @@ TEST_CASE("dual crease: a crease between two corners keeps them and is Chaikin's
   RefineOptions options;
   options.levels = 4;
   const Hierarchy h = refine(*s, base, options);
-  Polygon expected = points_of(path, g.positions);
-  const P3 first = expected.front(), last = expected.back();
+  const Polygon crease = points_of(path, g.positions);
+  const P3 first = crease.front(), last = crease.back();
   for (int l = 1; l <= 4; ++l) {
     CAPTURE(l);
-    expected = chaikin_open_cornered(expected);
+    const Polygon expected = clamped_quadratic_refined(crease, l);
     const Level& L = h.levels[size_t(l)];
     const auto pos = interpolate(h, l, g.positions, 3);
     // Start at the child vertex on the first corner.
@@ -327,6 +443,52 @@ TEST_CASE("dual crease: semi-sharp creases decay one unit per level and stay wat
   }
 }
 
+// The positive edge sharpness values of a level, sorted.
+std::vector<float> sharpness_values(const Level& L) {
+  std::vector<float> out;
+  for (float x : L.edge_sharpness)
+    if (x > 0.f) out.push_back(x);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST_CASE("dual crease: --crease-method chaikin decays the crease as DeRose, Kass & Truong 1998's Chaikin rule") {
+  // Crease loop edge i has sharpness s_i = 1.5 + 0.375 i (all semi-sharp, >= 1). Chaikin's
+  // rule (DeRose, Kass & Truong 1998, sec. 4.2; OpenSubdiv's Sdc::Crease): the child of edge
+  // e next to vertex v has 3/4 s_e + 1/4 (mean of v's other semi-sharp edges) - 1; uniform:
+  // s_e - 1. A dual child edge along e_i lies in its middle (the mean at its two ends); the
+  // edge across loop vertex p_i joins e_(i-1) and e_i there (the mean of their values at p_i).
+  const CreasedTorus t = creased_torus();
+  const size_t n = t.loop.size();
+  std::vector<float> sharp(n);
+  for (size_t i = 0; i < n; ++i) sharp[i] = 1.5f + 0.375f * float(i);
+  Level base = tagged(t.mesh, t.loop, true, 0.f);
+  for (size_t i = 0; i < n; ++i) base.edge_sharpness[find_edge(base, t.loop[i], t.loop[(i + 1) % n])] = sharp[i];
+  auto chaikin = [](float s, float other) { return std::max(0.f, 0.75f * s + 0.25f * other - 1.f); };
+  auto uniform = [](float s, float) { return s - 1.f; };
+  for (const std::string scheme : {"doo-sabin", "mid-edge"}) {
+    for (bool use_chaikin : {false, true}) {
+      CAPTURE(scheme);
+      CAPTURE(use_chaikin);
+      std::vector<float> expected;
+      for (size_t i = 0; i < n; ++i) {
+        const float prev = sharp[(i + n - 1) % n], here = sharp[i], next = sharp[(i + 1) % n];
+        const auto rule = [&](float s, float o) { return use_chaikin ? chaikin(s, o) : uniform(s, o); };
+        if (scheme == "doo-sabin") expected.push_back(0.5f * (rule(here, prev) + rule(here, next)));
+        expected.push_back(0.5f * (rule(prev, here) + rule(here, prev)));  // across p_i
+      }
+      std::sort(expected.begin(), expected.end());
+      RefineOptions options;
+      options.levels = 1;
+      options.features.crease_method = use_chaikin ? CreaseMethod::Chaikin : CreaseMethod::Uniform;
+      const Hierarchy h = refine(*load_scheme(scheme, {}), base, options);
+      const std::vector<float> got = sharpness_values(h.levels[1]);
+      REQUIRE(got.size() == expected.size());
+      for (size_t i = 0; i < got.size(); ++i) CHECK(got[i] == doctest::Approx(expected[i]).epsilon(1e-6));
+    }
+  }
+}
+
 TEST_CASE("dual crease: a tagged corner inside a surface stays at every level") {
   test::Mesh m = test::torus(8, 6);
   Level L = m.level();
@@ -345,4 +507,27 @@ TEST_CASE("dual crease: a tagged corner inside a surface stays at every level") 
     CHECK(watertight(h.levels[size_t(l)]));
     CHECK(euler_characteristic(h.levels[size_t(l)]) == 0);
   }
+}
+
+TEST_CASE("dual crease: limit points are exact at corners and refused, with the vertex, on creases") {
+  // A tagged corner stays at every level (tested above), so it is its own limit point; the
+  // smooth vertices keep their V-face centroids.
+  test::Mesh m = test::torus(8, 6);
+  Level L = m.level();
+  L.vertex_sharpness.assign(size_t(L.vertex_count), 0.f);
+  L.vertex_sharpness[10] = 10.f;
+  const LimitChoice c = select_limit(load_scheme_sequence("doo-sabin", 1, {}), L);
+  std::vector<double> got(m.positions.size());
+  c.evaluator->limit_points(L, m.positions, got);
+  for (int i = 0; i < 3; ++i) CHECK(got[30 + i] == m.positions[30 + i]);
+  // On a crease the limit is the crease curve's, not a V-face centroid: refused by name.
+  const CreasedTorus t = creased_torus();
+  std::string message;
+  try {
+    (void)select_limit(load_scheme_sequence("doo-sabin", 1, {}), tagged(t.mesh, t.loop, true, 10.f));
+  } catch (const Error& e) {
+    message = e.what();
+  }
+  CHECK(message.find("lies on a crease") != std::string::npos);
+  CHECK(message.find("vertex") != std::string::npos);
 }
