@@ -15,6 +15,7 @@
 #include "framework/engine/refiner.h"
 #include "framework/limit/bspline_patch.h"
 #include "framework/limit/corner_limit.h"
+#include "framework/limit/dual_limit.h"
 #include "framework/limit/limit_nodes.h"
 #include "framework/limit/tensor_patch.h"
 #include "framework/limit/triangle_patch.h"
@@ -107,10 +108,10 @@ std::string limit_surface_unsupported(const Scheme& scheme) {
                        "matrix changes from level to level and has no fixed eigen-structure to evaluate the limit with",
                        scheme.name);
   const SplitKind split = scheme.split();
-  if (split != SplitKind::Quad && split != SplitKind::Triangle)
-    return fmt::format("scheme '{}' uses a split whose child faces do not nest inside one parent face (sqrt3, dual, "
-                       "mid-edge or a plugin's split): evaluation at (face, u, v) is implemented for the binary quad "
-                       "and triangle splits only so far",
+  if (split != SplitKind::Quad && split != SplitKind::Triangle && split != SplitKind::Dual)
+    return fmt::format("scheme '{}' uses a split whose child faces do not nest inside one parent face or one of its "
+                       "quadrants (sqrt3, mid-edge or a plugin's split): evaluation at (face, u, v) is implemented "
+                       "for the binary quad and triangle splits and the dual (corner-cutting) split so far",
                        scheme.name);
   return {};
 }
@@ -122,6 +123,7 @@ struct LimitSurface::Impl {
   bool triangles = false;
   int radius = 4;
   std::unique_ptr<SchemeLimits> limits;
+  std::unique_ptr<DualLimit> dual;  // set for a dual split (dual_limit.h)
   // Per base face (made on first use): the node of its cut and the base vertices in the
   // node's label order.
   struct Entry {
@@ -463,7 +465,10 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   if (!base.manifold())
     throw Error("the mesh is non-manifold (an edge with more than two faces, or a vertex where separate fans of "
                 "faces meet): limit evaluation at (face, u, v) needs a manifold mesh; split it into manifold parts");
-  impl_->scheme = std::move(scheme);
+  if (impl_->scheme = std::move(scheme); impl_->scheme->split() == SplitKind::Dual) {
+    if (const std::string why = dual_limit_unsupported(base); !why.empty())
+      throw Error(fmt::format("scheme '{}' is a dual scheme and {}", impl_->scheme->name, why));
+  }
   impl_->base = std::move(base);
   impl_->options = options;
   // With boundary interpolation "none" the faces along a boundary are holes (as the
@@ -483,6 +488,8 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   lo.features = options.features;
   impl_->limits = std::make_unique<SchemeLimits>(*impl_->scheme, lo);
   impl_->cache = impl_->make_cache(1);
+  if (impl_->scheme->split() == SplitKind::Dual)
+    impl_->dual = std::make_unique<DualLimit>(*impl_->scheme, impl_->base, options, impl_->radius, *impl_->limits);
 }
 
 LimitSurface::~LimitSurface() = default;
@@ -521,6 +528,14 @@ LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<con
 
 LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> values, int channels,
                                       int derivatives) const {
+  if (impl_->dual) {
+    const std::vector<Index> reads = impl_->dual->reads(p);
+    std::vector<double> first(reads.size() * size_t(channels));
+    for (size_t k = 0; k < reads.size(); ++k)
+      for (int c = 0; c < channels; ++c)
+        first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
+    return tbb::this_task_arena::isolate([&] { return impl_->dual->evaluate(p, first, channels, derivatives); });
+  }
   return impl_->with_cache([&](Impl::Cache& cache) {
     const std::vector<Index> reads = impl_->reads(cache, p);
     std::vector<double> first(reads.size() * size_t(channels));
@@ -539,7 +554,17 @@ LimitStencil LimitSurface::stencil(Index face, double u, double v, int derivativ
   // neighbourhood (the only vertices it reads) as channels.
   std::vector<Index> original;
   Impl::DerivativeRows rows;
-  const LimitSample s = impl_->with_cache([&](Impl::Cache& cache) {
+  const LimitSample s = impl_->dual ? tbb::this_task_arena::isolate([&] {
+    original = impl_->dual->reads(p);
+    const size_t n = original.size();
+    std::vector<double> unit(n * n, 0.0);
+    for (size_t k = 0; k < n; ++k) unit[k * n + k] = 1.0;
+    DualLimit::Rows r;
+    LimitSample out = impl_->dual->evaluate(p, unit, int(n), derivatives, &r);
+    rows.du = std::move(r.du), rows.dv = std::move(r.dv);
+    rows.duu = std::move(r.duu), rows.duv = std::move(r.duv), rows.dvv = std::move(r.dvv);
+    return out;
+  }) : impl_->with_cache([&](Impl::Cache& cache) {
     original = impl_->reads(cache, p);
     const size_t n = original.size();
     std::vector<double> unit(n * n, 0.0);

@@ -135,6 +135,8 @@ std::array<double, 3> normal_at(const LimitSurface& s, LimitSample p, Index face
     }
     const double t = 1e-9;
     p = s.evaluate(face, u + t * (cu - u), v + t * (cv - v), P, 3);
+    // No derivatives at all (a dual scheme without the biquadratic closed form, dual_limit.h).
+    if (!p.has_derivatives) return {0, 0, 0};
   }
   std::array<double, 3> n{p.du[1] * p.dv[2] - p.du[2] * p.dv[1], p.du[2] * p.dv[0] - p.du[0] * p.dv[2],
                           p.du[0] * p.dv[1] - p.du[1] * p.dv[0]};
