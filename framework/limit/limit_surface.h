@@ -22,10 +22,12 @@
 // are smooth or sharp, like everything else.
 //
 // Supported: stationary linear schemes whose split is the binary quad or triangle split
-// (Catmull-Clark, Loop, the butterflies, bilinear, composite split + averaging schemes).
+// (Catmull-Clark, Loop, the butterflies, bilinear, composite split + averaging schemes), and
+// the dual split on closed untagged meshes (Doo-Sabin, even-degree quad B-splines; dual_limit.h,
+// in the quad split's parameterisation read as nested quadrants).
 // Refused with the reason: non-linear rules (no limit stencil exists), level-dependent
-// weights (no fixed local subdivision matrix), and for now the √3, dual and mid-edge splits
-// (their children do not nest inside one parent face).
+// weights (no fixed local subdivision matrix), and for now the √3 and mid-edge splits
+// (their children do not nest inside one parent face or quadrant).
 #include <array>
 #include <memory>
 #include <span>

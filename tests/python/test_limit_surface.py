@@ -153,3 +153,25 @@ def test_face_varying_uvs_at_the_same_points_in_each_mode(tmp_path):
     assert np.array_equal(written[:, -2:], smooth.points)
     with pytest.raises(sk.Error, match="face-varying array 'st': the mesh has 'uv'"):
         linear.evaluate_face_varying("st", faces, uv)
+
+
+def test_dual_schemes_are_evaluated_with_stencils_and_the_command_line_numbers(tmp_path):
+    # Doo-Sabin on the cube: the same numbers as the command line, stencils reproduce the
+    # evaluation, and the limit at a face centre is the centroid of the face for a
+    # symmetric face rule (Doo & Sabin 1978) — here each cube face's centre.
+    faces, uv = random_points(6, 10, seed=5)
+    points = tmp_path / "points.csv"
+    points.write_text("face,u,v\n" + "".join(f"{f},{u!r},{v!r}\n" for f, (u, v) in zip(faces, uv)))
+    out = tmp_path / "out.csv"
+    run_cli("evaluate", MESHES / "cube.obj", "-s", "doo-sabin", "--at", points, "-o", out)
+    written = np.loadtxt(out, delimiter=",", skiprows=1)
+    r = sk.evaluate(cube(), "doo-sabin", faces, uv)
+    assert np.array_equal(written[:, 3:], np.hstack([r.points, r.du, r.dv]))
+    S = sk.LimitSurface(cube(), "doo-sabin")
+    W = S.stencils(faces, uv)
+    P = cube().points
+    assert np.allclose(W.points @ P, r.points, atol=1e-13)
+    assert np.allclose(W.du @ P, r.du, atol=1e-13)
+    centres = S.evaluate(np.arange(6, dtype=np.int32), np.full((6, 2), 0.5))
+    corners = cube().face_indices.reshape(6, 4)
+    assert np.allclose(centres.points, P[corners].mean(axis=1), atol=1e-14)

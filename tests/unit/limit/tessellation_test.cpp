@@ -2,6 +2,7 @@
 // closed mesh stays closed), every point on the limit, unit normals.
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
 
 #include "framework/limit/tessellation.h"
@@ -79,4 +80,28 @@ TEST_CASE("Tessellating n-gons: sub-face grids meet the neighbours' edges; odd N
   check_points(s, t, m.positions);
   CHECK_THROWS_WITH_AS(tessellate(s, m.positions, 3), doctest::Contains("use an even N"), Error);
   CHECK_THROWS_AS(tessellate(s, m.positions, 0), Error);
+}
+
+TEST_CASE("Tessellating a dual scheme's limit gives a closed mesh with outward normals: Doo-Sabin cube and pyramid") {
+  for (const test::Mesh& m : {test::cube(), test::pyramid()}) {
+    const LimitSurface s(load_scheme("doo-sabin"), m.level());
+    const Tessellation t = tessellate(s, m.positions, 4);
+    const Level L = level_of(t);
+    CHECK(boundary_edges(L) == 0);
+    CHECK(euler_characteristic(L) == 2);
+    check_points(s, t, m.positions);
+    // Both are convex: the normals point away from the control points' centroid.
+    std::array<double, 3> centre{};
+    for (Index v = 0; v < m.vertex_count; ++v)
+      for (int c = 0; c < 3; ++c) centre[size_t(c)] += m.positions[size_t(3 * v + c)] / m.vertex_count;
+    for (Index i = 0; i < t.point_count(); ++i) {
+      double d = 0, l = 0;
+      for (int c = 0; c < 3; ++c) {
+        d += t.normals[size_t(3 * i + c)] * (t.positions[size_t(3 * i + c)] - centre[size_t(c)]);
+        l += t.normals[size_t(3 * i + c)] * t.normals[size_t(3 * i + c)];
+      }
+      CHECK(d > 0);
+      CHECK(std::fabs(l - 1) < 1e-12);
+    }
+  }
 }
