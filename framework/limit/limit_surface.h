@@ -75,11 +75,23 @@ struct LimitStencil {
   bool has_second_derivatives = false;
 };
 
+// A run of a sequence's head (sequence_head.h): a scheme for a number of levels.
+struct LimitHeadRun {
+  std::shared_ptr<const Scheme> scheme;
+  int levels = 0;
+};
+
 class LimitSurface {
 public:
   // Checks that the scheme can be evaluated and keeps the base level (with its tags).
   // Throws subdiv::Error saying why a scheme is refused.
   LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, const LimitSurfaceOptions& options = {});
+  // The limit of a sequence ("A:1,B:3"): `head` refines the base first, then `tail` repeats.
+  // Points and stencils are still in the base faces' (u, v) and over the base vertices; the
+  // head's splits must nest (binary quad or triangle), its rules be linear (they may depend
+  // on the level), and the tail be a scheme the first constructor takes.
+  LimitSurface(std::vector<LimitHeadRun> head, std::shared_ptr<const Scheme> tail, Level base,
+               const LimitSurfaceOptions& options = {});
   ~LimitSurface();
   LimitSurface(LimitSurface&&) noexcept;
   LimitSurface& operator=(LimitSurface&&) noexcept;
@@ -107,6 +119,7 @@ public:
 private:
   LimitSample evaluate_at(const FacePoint& p, std::span<const double> values, int channels,
                           int derivatives) const;
+  LimitStencil sequence_stencil(Index face, double u, double v, int derivatives) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
