@@ -15,6 +15,8 @@
 #include "framework/engine/refiner.h"
 #include "framework/limit/bspline_patch.h"
 #include "framework/limit/corner_limit.h"
+#include "framework/limit/dual_limit.h"
+#include "framework/limit/sequence_head.h"
 #include "framework/limit/limit_nodes.h"
 #include "framework/limit/tensor_patch.h"
 #include "framework/limit/triangle_patch.h"
@@ -107,10 +109,10 @@ std::string limit_surface_unsupported(const Scheme& scheme) {
                        "matrix changes from level to level and has no fixed eigen-structure to evaluate the limit with",
                        scheme.name);
   const SplitKind split = scheme.split();
-  if (split != SplitKind::Quad && split != SplitKind::Triangle)
-    return fmt::format("scheme '{}' uses a split whose child faces do not nest inside one parent face (sqrt3, dual, "
-                       "mid-edge or a plugin's split): evaluation at (face, u, v) is implemented for the binary quad "
-                       "and triangle splits only so far",
+  if (split != SplitKind::Quad && split != SplitKind::Triangle && split != SplitKind::Dual)
+    return fmt::format("scheme '{}' uses a split whose child faces do not nest inside one parent face or one of its "
+                       "quadrants (sqrt3, mid-edge or a plugin's split): evaluation at (face, u, v) is implemented "
+                       "for the binary quad and triangle splits and the dual (corner-cutting) split so far",
                        scheme.name);
   return {};
 }
@@ -122,6 +124,10 @@ struct LimitSurface::Impl {
   bool triangles = false;
   int radius = 4;
   std::unique_ptr<SchemeLimits> limits;
+  std::unique_ptr<DualLimit> dual;  // set for a dual split (dual_limit.h)
+  // Set for a sequence: its head, and the limit of its tail over the mesh the head makes.
+  std::unique_ptr<SequenceHead> head;
+  std::unique_ptr<LimitSurface> tail;
   // Per base face (made on first use): the node of its cut and the base vertices in the
   // node's label order.
   struct Entry {
@@ -463,7 +469,10 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   if (!base.manifold())
     throw Error("the mesh is non-manifold (an edge with more than two faces, or a vertex where separate fans of "
                 "faces meet): limit evaluation at (face, u, v) needs a manifold mesh; split it into manifold parts");
-  impl_->scheme = std::move(scheme);
+  if (impl_->scheme = std::move(scheme); impl_->scheme->split() == SplitKind::Dual) {
+    if (const std::string why = dual_limit_unsupported(base); !why.empty())
+      throw Error(fmt::format("scheme '{}' is a dual scheme and {}", impl_->scheme->name, why));
+  }
   impl_->base = std::move(base);
   impl_->options = options;
   // With boundary interpolation "none" the faces along a boundary are holes (as the
@@ -483,6 +492,73 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   lo.features = options.features;
   impl_->limits = std::make_unique<SchemeLimits>(*impl_->scheme, lo);
   impl_->cache = impl_->make_cache(1);
+  if (impl_->scheme->split() == SplitKind::Dual)
+    impl_->dual = std::make_unique<DualLimit>(*impl_->scheme, impl_->base, options, impl_->radius, *impl_->limits);
+}
+
+LimitSurface::LimitSurface(std::vector<LimitHeadRun> head, std::shared_ptr<const Scheme> tail, Level base,
+                           const LimitSurfaceOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  if (!tail) throw Error("no scheme given for the limit surface");
+  if (const std::string why = limit_surface_unsupported(*tail); !why.empty()) throw Error(why);
+  if (!base.manifold())
+    throw Error("the mesh is non-manifold (an edge with more than two faces, or a vertex where separate fans of "
+                "faces meet): limit evaluation at (face, u, v) needs a manifold mesh; split it into manifold parts");
+  impl_->scheme = tail;
+  impl_->options = options;
+  impl_->head = std::make_unique<SequenceHead>(std::move(head), base, options.features);
+  impl_->tail = std::make_unique<LimitSurface>(std::move(tail), impl_->head->refined(), options);
+  impl_->base = std::move(base);
+  tag_boundary_holes(impl_->base, options.features.boundary);
+  impl_->triangles = impl_->head->triangles();
+}
+
+LimitStencil LimitSurface::sequence_stencil(Index face, double u, double v, int derivatives) const {
+  if (face < 0 || face >= impl_->base.face_count())
+    throw Error(fmt::format("face {} does not exist (the mesh has {} faces)", face, impl_->base.face_count()));
+  if (impl_->base.is_hole(face)) throw Error(fmt::format("face {} is a hole: it has no limit surface", face));
+  const FacePoint q = impl_->head->map(impl_->base, face, u, v);
+  const LimitStencil w = impl_->tail->stencil(q.face, q.st[0], q.st[1], derivatives);
+  // Weights over the head's mesh pulled back to the base; derivatives by the chain rule
+  // with the head's constant d(st)/d(u, v) (every split is affine on the point's face).
+  const auto& J = q.jacobian;
+  auto lift = [&](auto weight) {
+    SparseRow r;
+    for (size_t k = 0; k < w.vertices.size(); ++k) r.emplace_back(w.vertices[k], weight(k));
+    return impl_->head->pull_back(std::move(r));
+  };
+  LimitStencil out;
+  out.has_derivatives = w.has_derivatives;
+  out.has_second_derivatives = w.has_second_derivatives;
+  std::vector<SparseRow> rows{lift([&](size_t k) { return w.position[k]; })};
+  if (w.has_derivatives)
+    for (size_t a = 0; a < 2; ++a)
+      rows.push_back(lift([&](size_t k) { return J[0][a] * w.du[k] + J[1][a] * w.dv[k]; }));
+  if (w.has_second_derivatives) {
+    constexpr size_t kPairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
+    for (const auto& pair : kPairs) {
+      const size_t a = pair[0], b = pair[1];
+      rows.push_back(lift([&](size_t k) {
+        return J[0][a] * J[0][b] * w.duu[k] + (J[0][a] * J[1][b] + J[1][a] * J[0][b]) * w.duv[k] +
+               J[1][a] * J[1][b] * w.dvv[k];
+      }));
+    }
+  }
+  // One vertex list for every row.
+  std::vector<Index> all;
+  for (const SparseRow& r : rows)
+    for (const auto& e : r) all.push_back(e.first);
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  out.vertices = all;
+  std::vector<std::vector<double>*> targets{&out.position, &out.du, &out.dv, &out.duu, &out.duv, &out.dvv};
+  for (size_t i = 0; i < rows.size(); ++i) {
+    std::vector<double>& t = *targets[i];
+    t.assign(all.size(), 0.0);
+    for (const auto& [vertex, weight] : rows[i])
+      t[size_t(std::lower_bound(all.begin(), all.end(), vertex) - all.begin())] = weight;
+  }
+  return out;
 }
 
 LimitSurface::~LimitSurface() = default;
@@ -495,6 +571,13 @@ bool LimitSurface::triangles() const { return impl_->triangles; }
 
 std::string LimitSurface::check(Index face, double u, double v) const {
   try {
+    if (impl_->tail) {
+      if (face < 0 || face >= impl_->base.face_count())
+        throw Error(fmt::format("face {} does not exist (the mesh has {} faces)", face, impl_->base.face_count()));
+      if (impl_->base.is_hole(face)) throw Error(fmt::format("face {} is a hole: it has no limit surface", face));
+      impl_->head->map(impl_->base, face, u, v);
+      return {};
+    }
     impl_->start(face, u, v);
   } catch (const Error& e) {
     return e.what();
@@ -509,6 +592,23 @@ LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<con
   if (channels < 1 || values.size() < size_t(impl_->base.vertex_count) * size_t(channels))
     throw Error(fmt::format("limit evaluation needs {} values per vertex for {} vertices, got {}", channels,
                             impl_->base.vertex_count, values.size()));
+  if (impl_->tail) {
+    const LimitStencil w = sequence_stencil(face, u, v, derivatives);
+    LimitSample out;
+    auto apply = [&](const std::vector<double>& weights) {
+      std::vector<double> r(size_t(channels), 0.0);
+      for (size_t k = 0; k < w.vertices.size(); ++k)
+        for (int c = 0; c < channels; ++c)
+          r[size_t(c)] += weights[k] * values[size_t(w.vertices[k]) * size_t(channels) + size_t(c)];
+      return r;
+    };
+    out.position = apply(w.position);
+    out.has_derivatives = w.has_derivatives && derivatives >= 1;
+    out.has_second_derivatives = w.has_second_derivatives && derivatives >= 2;
+    if (out.has_derivatives) out.du = apply(w.du), out.dv = apply(w.dv);
+    if (out.has_second_derivatives) out.duu = apply(w.duu), out.duv = apply(w.duv), out.dvv = apply(w.dvv);
+    return out;
+  }
   const FacePoint p = impl_->start(face, u, v);
   try {
     return evaluate_at(p, values, channels, derivatives);
@@ -521,6 +621,14 @@ LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<con
 
 LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> values, int channels,
                                       int derivatives) const {
+  if (impl_->dual) {
+    const std::vector<Index> reads = impl_->dual->reads(p);
+    std::vector<double> first(reads.size() * size_t(channels));
+    for (size_t k = 0; k < reads.size(); ++k)
+      for (int c = 0; c < channels; ++c)
+        first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
+    return tbb::this_task_arena::isolate([&] { return impl_->dual->evaluate(p, first, channels, derivatives); });
+  }
   return impl_->with_cache([&](Impl::Cache& cache) {
     const std::vector<Index> reads = impl_->reads(cache, p);
     std::vector<double> first(reads.size() * size_t(channels));
@@ -534,12 +642,23 @@ LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double
 LimitStencil LimitSurface::stencil(Index face, double u, double v, int derivatives) const {
   if (derivatives < 0 || derivatives > 2)
     throw Error(fmt::format("derivatives {}: the order must be 0, 1 or 2", derivatives));
+  if (impl_->tail) return sequence_stencil(face, u, v, derivatives);
   const FacePoint p = impl_->start(face, u, v);
   // The evaluation is linear in the values: evaluate the unit vectors of the face's
   // neighbourhood (the only vertices it reads) as channels.
   std::vector<Index> original;
   Impl::DerivativeRows rows;
-  const LimitSample s = impl_->with_cache([&](Impl::Cache& cache) {
+  const LimitSample s = impl_->dual ? tbb::this_task_arena::isolate([&] {
+    original = impl_->dual->reads(p);
+    const size_t n = original.size();
+    std::vector<double> unit(n * n, 0.0);
+    for (size_t k = 0; k < n; ++k) unit[k * n + k] = 1.0;
+    DualLimit::Rows r;
+    LimitSample out = impl_->dual->evaluate(p, unit, int(n), derivatives, &r);
+    rows.du = std::move(r.du), rows.dv = std::move(r.dv);
+    rows.duu = std::move(r.duu), rows.duv = std::move(r.duv), rows.dvv = std::move(r.dvv);
+    return out;
+  }) : impl_->with_cache([&](Impl::Cache& cache) {
     original = impl_->reads(cache, p);
     const size_t n = original.size();
     std::vector<double> unit(n * n, 0.0);

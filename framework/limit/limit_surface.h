@@ -22,10 +22,12 @@
 // are smooth or sharp, like everything else.
 //
 // Supported: stationary linear schemes whose split is the binary quad or triangle split
-// (Catmull-Clark, Loop, the butterflies, bilinear, composite split + averaging schemes).
+// (Catmull-Clark, Loop, the butterflies, bilinear, composite split + averaging schemes), and
+// the dual split on closed untagged meshes (Doo-Sabin, even-degree quad B-splines; dual_limit.h,
+// in the quad split's parameterisation read as nested quadrants).
 // Refused with the reason: non-linear rules (no limit stencil exists), level-dependent
-// weights (no fixed local subdivision matrix), and for now the √3, dual and mid-edge splits
-// (their children do not nest inside one parent face).
+// weights (no fixed local subdivision matrix), and for now the √3 and mid-edge splits
+// (their children do not nest inside one parent face or quadrant).
 #include <array>
 #include <memory>
 #include <span>
@@ -73,11 +75,23 @@ struct LimitStencil {
   bool has_second_derivatives = false;
 };
 
+// A run of a sequence's head (sequence_head.h): a scheme for a number of levels.
+struct LimitHeadRun {
+  std::shared_ptr<const Scheme> scheme;
+  int levels = 0;
+};
+
 class LimitSurface {
 public:
   // Checks that the scheme can be evaluated and keeps the base level (with its tags).
   // Throws subdiv::Error saying why a scheme is refused.
   LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, const LimitSurfaceOptions& options = {});
+  // The limit of a sequence ("A:1,B:3"): `head` refines the base first, then `tail` repeats.
+  // Points and stencils are still in the base faces' (u, v) and over the base vertices; the
+  // head's splits must nest (binary quad or triangle), its rules be linear (they may depend
+  // on the level), and the tail be a scheme the first constructor takes.
+  LimitSurface(std::vector<LimitHeadRun> head, std::shared_ptr<const Scheme> tail, Level base,
+               const LimitSurfaceOptions& options = {});
   ~LimitSurface();
   LimitSurface(LimitSurface&&) noexcept;
   LimitSurface& operator=(LimitSurface&&) noexcept;
@@ -105,6 +119,7 @@ public:
 private:
   LimitSample evaluate_at(const FacePoint& p, std::span<const double> values, int channels,
                           int derivatives) const;
+  LimitStencil sequence_stencil(Index face, double u, double v, int derivatives) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -1,12 +1,15 @@
 #include "framework/pipeline/evaluate_request.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <fmt/format.h>
 
 #include "framework/io/mesh_read.h"
 #include "framework/limit/face_domain.h"
+#include "framework/limit/tessellation.h"
 #include "framework/pipeline/refine_pipeline.h"
+#include "framework/pipeline/scheme_source.h"
 #include "framework/util/option_spelling.h"
 #include "framework/util/error.h"
 #include "framework/util/parallel_for_all.h"
@@ -37,6 +40,36 @@ void check_points(const PreparedEvaluation& p, std::span<const Index> faces, std
       throw Error(fmt::format("point {} (face {}, u {}, v {}): {}", i, faces[i], uv[2 * i], uv[2 * i + 1], why));
 }
 
+// The limit surface of the request's scheme, or of a sequence: its last scheme repeats over
+// the mesh its head makes (limit/sequence_head.h).
+std::shared_ptr<const LimitSurface> limit_surface_of(const SchemeSequence& sequence, Level level,
+                                                     const LimitSurfaceOptions& options) {
+  if (sequence.schemes.size() == 1)
+    return std::make_shared<const LimitSurface>(sequence.schemes.front(), std::move(level), options);
+  auto shared = [&](const Scheme* s) {
+    for (const auto& p : sequence.schemes)
+      if (p.get() == s) return p;
+    throw Error("internal: a run of the sequence names no loaded scheme");
+  };
+  std::vector<LimitHeadRun> head;
+  for (size_t i = 0; i + 1 < sequence.runs.size(); ++i)
+    head.push_back({shared(sequence.runs[i].scheme), sequence.runs[i].levels});
+  return std::make_shared<const LimitSurface>(std::move(head), shared(sequence.runs.back().scheme), std::move(level),
+                                              options);
+}
+
+// The levels a sequence's own counts fix (its head's, and its last scheme's when it has
+// one): the limit needs no more, and a scheme without :N takes none of its own.
+int fixed_levels(const SchemeSource& source) {
+  if (source.is_json_text || source.text.find(',') == std::string::npos) return 1;
+  constexpr int kOpen = 1 << 20;
+  const SchemeSequence s = load_surface_sequence(source, kOpen, source.parameters);
+  int fixed = 0;
+  for (size_t i = 0; i + 1 < s.runs.size(); ++i) fixed += s.runs[i].levels;
+  const int last = s.runs.empty() ? 0 : s.runs.back().levels;
+  return fixed + (last >= kOpen - fixed ? 0 : last);
+}
+
 // The channels' value meshes, each with its own limit surface (the mode All: bilinear).
 std::vector<FaceVaryingSurface> face_varying_surfaces(const PreparedRefinement& p, const Level& base,
                                                       const std::string& mesh_name, std::vector<std::string>& notes) {
@@ -62,7 +95,7 @@ std::vector<FaceVaryingSurface> face_varying_surfaces(const PreparedRefinement& 
       o.features = p.options.features;
       o.features.boundary = BoundaryInterpolation::EdgesOnly;  // seams and corners are tagged on the value mesh
       try {
-        s.surface = std::make_shared<const LimitSurface>(p.sequence.schemes.front(), s.level, o);
+        s.surface = limit_surface_of(p.sequence, s.level, o);
       } catch (const Error& e) {
         throw Error(fmt::format("{}: face-varying array '{}': {}", mesh_name, a.name, e.what()));
       }
@@ -165,6 +198,7 @@ PreparedEvaluation prepare_evaluation(EvaluateRequest request) {
     r.mesh_name = request.mesh_name.empty() ? "mesh" : request.mesh_name;
   }
   r.scheme = std::move(request.scheme);
+  r.levels = fixed_levels(r.scheme);
   r.shape = request.shape;
   r.feature_file = request.feature_file;
   r.feature_angle = request.feature_angle;
@@ -172,22 +206,19 @@ PreparedEvaluation prepare_evaluation(EvaluateRequest request) {
   out.request_vertex_count = r.mesh.vertex_count();
   out.request_vertex = used_vertices(r.mesh);
   PreparedRefinement p = prepare_refinement(r);
-  if (p.sequence.schemes.size() != 1)
-    throw Error(fmt::format("{}: '{}' is a sequence of schemes; limit evaluation takes one scheme (its limit is that "
-                            "of the scheme that repeats; evaluating a sequence's tail after its head's levels is not "
-                            "implemented yet)",
-                            r.mesh_name, p.scheme_label));
   LimitSurfaceOptions options;
   options.features = p.options.features;
   try {
-    out.surface = std::make_shared<const LimitSurface>(p.sequence.schemes.front(), std::move(p.base), options);
+    out.surface = limit_surface_of(p.sequence, std::move(p.base), options);
   } catch (const OptionError&) {
     throw;
   } catch (const Error& e) {
     throw Error(fmt::format("{}: {}", r.mesh_name, e.what()));
   }
   out.face_varying = face_varying_surfaces(p, out.surface->base(), r.mesh_name, p.notes);
-  out.scheme = p.sequence.schemes.front();
+  out.scheme = p.sequence.schemes.back();  // a sequence's last scheme: the one that repeats
+  for (const auto& scheme : p.sequence.schemes)
+    if (!p.sequence.runs.empty() && scheme.get() == p.sequence.runs.back().scheme) out.scheme = scheme;
   out.scheme_label = std::move(p.scheme_label);
   out.mesh = std::move(p.mesh);
   if (p.rational)

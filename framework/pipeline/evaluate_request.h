@@ -16,6 +16,8 @@
 
 namespace subdiv {
 
+struct Tessellation;
+
 struct EvaluateRequest {
   // The mesh: read from `mesh_file` when given, else `mesh` (with its tags).
   std::string mesh_file;
@@ -60,7 +62,8 @@ struct PreparedEvaluation {
 };
 
 // Throws subdiv::Error naming the mesh or the scheme (and why a scheme cannot be evaluated:
-// limit_surface_unsupported, sequences), or subdiv::OptionError naming an option.
+// limit_surface_unsupported, a sequence head that does not nest), or subdiv::OptionError
+// naming an option. A sequence "A:k,B" is evaluated as B's limit over the mesh A's k levels make.
 PreparedEvaluation prepare_evaluation(EvaluateRequest request);
 
 // Points of the limit surface: `channels` values per point for the position and each

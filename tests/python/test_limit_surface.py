@@ -4,7 +4,8 @@ Properties, not our numbers pasted back: the command line gives the same numbers
 translate one pipeline request); stencils applied to the control points are the evaluated
 points; affine invariance; second derivatives are central differences of the first; the
 limit at a base vertex is the vertex's limit position (subdivkit.limit_positions); bad
-points, schemes and sequences are refused with their reasons."""
+points, schemes and sequences are refused with their reasons; a sequence's limit is its
+last scheme's over the mesh its head makes."""
 import numpy as np
 import pytest
 
@@ -121,8 +122,8 @@ def test_bad_points_schemes_and_arguments_are_refused():
     octahedron = sk.read_mesh(str(MESHES / "octahedron.obj"))
     with pytest.raises(sk.Error, match="sqrt3.*do not nest inside one parent face"):
         sk.LimitSurface(octahedron, "sqrt3")
-    with pytest.raises(sk.Error, match="sequence"):
-        sk.LimitSurface(cube(), "bilinear:1,catmull-clark")
+    with pytest.raises(sk.Error, match="comes before the scheme that repeats"):
+        sk.LimitSurface(cube(), "doo-sabin:1,catmull-clark")
     with pytest.raises(sk.Error, match="expected a subdivkit.Mesh"):
         sk.evaluate("cube.obj", "catmull-clark", [0], [[0.5, 0.5]])
 
@@ -153,3 +154,34 @@ def test_face_varying_uvs_at_the_same_points_in_each_mode(tmp_path):
     assert np.array_equal(written[:, -2:], smooth.points)
     with pytest.raises(sk.Error, match="face-varying array 'st': the mesh has 'uv'"):
         linear.evaluate_face_varying("st", faces, uv)
+
+
+def test_dual_schemes_are_evaluated_with_stencils_and_the_command_line_numbers(tmp_path):
+    # Doo-Sabin on the cube: the same numbers as the command line, stencils reproduce the
+    # evaluation, and the limit at a face centre is the centroid of the face for a
+    # symmetric face rule (Doo & Sabin 1978) — here each cube face's centre.
+    faces, uv = random_points(6, 10, seed=5)
+    points = tmp_path / "points.csv"
+    points.write_text("face,u,v\n" + "".join(f"{f},{u!r},{v!r}\n" for f, (u, v) in zip(faces, uv)))
+    out = tmp_path / "out.csv"
+    run_cli("evaluate", MESHES / "cube.obj", "-s", "doo-sabin", "--at", points, "-o", out)
+    written = np.loadtxt(out, delimiter=",", skiprows=1)
+    r = sk.evaluate(cube(), "doo-sabin", faces, uv)
+    assert np.array_equal(written[:, 3:], np.hstack([r.points, r.du, r.dv]))
+    S = sk.LimitSurface(cube(), "doo-sabin")
+    W = S.stencils(faces, uv)
+    P = cube().points
+    assert np.allclose(W.points @ P, r.points, atol=1e-13)
+    assert np.allclose(W.du @ P, r.du, atol=1e-13)
+    centres = S.evaluate(np.arange(6, dtype=np.int32), np.full((6, 2), 0.5))
+    corners = cube().face_indices.reshape(6, 4)
+    assert np.allclose(centres.points, P[corners].mean(axis=1), atol=1e-14)
+
+
+def test_a_sequence_is_the_limit_of_its_last_scheme():
+    # Catmull-Clark's own levels before it change nothing: the same limit, in the same (u, v).
+    faces, uv = random_points(6, 12, seed=9)
+    a = sk.evaluate(cube(), "catmull-clark", faces, uv, derivatives=2)
+    b = sk.evaluate(cube(), "catmull-clark:2,catmull-clark", faces, uv, derivatives=2)
+    for x, y in ((a.points, b.points), (a.du, b.du), (a.dv, b.dv), (a.duu, b.duu)):
+        assert np.allclose(x, y, atol=1e-10, equal_nan=True)

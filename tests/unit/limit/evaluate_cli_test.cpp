@@ -160,3 +160,46 @@ TEST_CASE("subdiv evaluate --samples writes a closed mesh of the limit surface w
     CHECK(!fs::exists(dir / "x.csv"));
   }
 }
+
+TEST_CASE("subdiv evaluate takes dual schemes: the written numbers are the library's, nan where no derivative exists") {
+  const fs::path dir = test::fresh_dir("evaluate-cli-dual");
+  const std::string mesh = test::source_path("examples/meshes/cube.obj");
+  write(dir / "points.csv", "face,u,v\n0,0.3,0.2\n4,0.5,0.125\n2,0,0\n");
+  const auto r = test::run_subdiv("evaluate " + mesh + " -s doo-sabin --at " + (dir / "points.csv").string() +
+                                  " -o " + (dir / "out.csv").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  std::string header;
+  const auto rows = read_csv(dir / "out.csv", header);
+  REQUIRE(rows.size() == 3);
+  const MeshData m = read_mesh(mesh);
+  const LimitSurface s(load_scheme("doo-sabin"), level_from_mesh(m, mesh));
+  for (const auto& row : rows) {
+    const LimitSample p = s.evaluate(Index(row[0]), row[1], row[2], m.positions, 3);
+    for (int c = 0; c < 3; ++c) {
+      CHECK(row[size_t(3 + c)] == p.position[size_t(c)]);
+      if (p.has_derivatives)
+        CHECK(row[size_t(6 + c)] == p.du[size_t(c)]);
+      else
+        CHECK(std::isnan(row[size_t(6 + c)]));
+    }
+  }
+  CHECK(std::isnan(rows[2][6]));  // the cube's corner: a valence-3 vertex, the centre of a triangular V-face
+  write(dir / "open.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+  const auto refused = test::run_subdiv("evaluate " + (dir / "open.obj").string() + " -s doo-sabin --at " +
+                                        (dir / "points.csv").string() + " -o " + (dir / "refused.csv").string());
+  CHECK(refused.exit_code != 0);
+  CHECK(refused.output.find("boundary") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "refused.csv"));
+}
+
+TEST_CASE("subdiv evaluate --samples writes the face-varying UVs with their seams") {
+  const fs::path dir = test::fresh_dir("evaluate-cli-samples-uv");
+  const auto r = test::run_subdiv("evaluate " + test::source_path("examples/meshes/textured-tube.obj") +
+                                  " --samples 4 -o " + (dir / "tube.obj").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  const MeshData m = read_mesh((dir / "tube.obj").string());
+  REQUIRE(m.face_varying.size() == 1);
+  CHECK(m.face_varying[0].role == ArrayRole::TextureCoordinates);
+  CHECK(m.face_varying[0].indices.size() == m.face_vertices.size());
+  CHECK(m.face_varying[0].value_count() > m.vertex_count());  // the seam's points carry two UVs
+}

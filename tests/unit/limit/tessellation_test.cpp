@@ -2,11 +2,16 @@
 // closed mesh stays closed), every point on the limit, unit normals.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "framework/limit/tessellation.h"
+#include "framework/pipeline/evaluate_request.h"
+#include "framework/pipeline/limit_mesh.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
+#include "support/cli_runner.h"
 #include "support/test_meshes.h"
 #include "unit/limit/limit_meshes.h"
 
@@ -79,4 +84,77 @@ TEST_CASE("Tessellating n-gons: sub-face grids meet the neighbours' edges; odd N
   check_points(s, t, m.positions);
   CHECK_THROWS_WITH_AS(tessellate(s, m.positions, 3), doctest::Contains("use an even N"), Error);
   CHECK_THROWS_AS(tessellate(s, m.positions, 0), Error);
+}
+
+TEST_CASE("Tessellating a dual scheme's limit gives a closed mesh with outward normals: Doo-Sabin cube and pyramid") {
+  for (const test::Mesh& m : {test::cube(), test::pyramid()}) {
+    const LimitSurface s(load_scheme("doo-sabin"), m.level());
+    const Tessellation t = tessellate(s, m.positions, 4);
+    const Level L = level_of(t);
+    CHECK(boundary_edges(L) == 0);
+    CHECK(euler_characteristic(L) == 2);
+    check_points(s, t, m.positions);
+    // Both are convex: the normals point away from the control points' centroid.
+    std::array<double, 3> centre{};
+    for (Index v = 0; v < m.vertex_count; ++v)
+      for (int c = 0; c < 3; ++c) centre[size_t(c)] += m.positions[size_t(3 * v + c)] / m.vertex_count;
+    for (Index i = 0; i < t.point_count(); ++i) {
+      double d = 0, l = 0;
+      for (int c = 0; c < 3; ++c) {
+        d += t.normals[size_t(3 * i + c)] * (t.positions[size_t(3 * i + c)] - centre[size_t(c)]);
+        l += t.normals[size_t(3 * i + c)] * t.normals[size_t(3 * i + c)];
+      }
+      CHECK(d > 0);
+      CHECK(std::fabs(l - 1) < 1e-12);
+    }
+  }
+}
+
+TEST_CASE("Tessellations carry the face-varying data: bilinear per base face in the mode All, seams kept") {
+  EvaluateRequest r;
+  r.mesh_file = test::source_path("examples/meshes/textured-tube.obj");
+  r.scheme.text = "catmull-clark";
+  const PreparedEvaluation p = prepare_evaluation(r);
+  REQUIRE(p.face_varying.size() == 1);
+  const int N = 4;
+  const Tessellation t = tessellate(*p.surface, p.mesh.positions, N);  // for each corner's (u, v)
+  const MeshData sampled = sampled_limit_mesh(p, N);
+  REQUIRE(sampled.face_vertices == t.face_vertices);
+  REQUIRE(sampled.face_varying.size() == 1);
+  const FaceVaryingArray& a = sampled.face_varying[0];
+  CHECK(a.role == ArrayRole::TextureCoordinates);
+  REQUIRE(a.indices.size() == t.face_vertices.size());
+  // The mode All (OpenSubdiv's default): each corner's value is the bilinear blend of its base
+  // face's corner values at the corner's (u, v) in that face (the tube's faces are quads).
+  const FaceVaryingArray& given = p.mesh.face_varying[0];
+  const int C = a.components;
+  double worst = 0;
+  for (Index f = 0; f < t.face_count(); ++f) {
+    const Index b = t.base_face[size_t(f)];
+    const Index first = p.mesh.face_offsets[size_t(b)];
+    REQUIRE(p.mesh.face_offsets[size_t(b) + 1] - first == 4);
+    for (Index c = t.face_offsets[size_t(f)]; c < t.face_offsets[size_t(f) + 1]; ++c) {
+      const double u = t.corner_uv[size_t(2 * c)], v = t.corner_uv[size_t(2 * c + 1)];
+      const double w[4] = {(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v};
+      for (int k = 0; k < C; ++k) {
+        double expected = 0;
+        for (int q = 0; q < 4; ++q)
+          expected += w[q] * given.values[size_t(given.indices[size_t(first + q)]) * size_t(C) + size_t(k)];
+        worst = std::max(worst, std::fabs(expected - a.values[size_t(a.indices[size_t(c)]) * size_t(C) + size_t(k)]));
+      }
+    }
+  }
+  CHECK(worst < 1e-14);
+  // The tube's seam splits values: more values than points, and a point with two values lies
+  // on a base edge (u or v of 0 or 1 in the face it was evaluated in).
+  CHECK(a.value_count() > t.point_count());
+  std::vector<std::vector<Index>> values_at(size_t(t.point_count()));
+  for (size_t c = 0; c < t.face_vertices.size(); ++c) values_at[size_t(t.face_vertices[c])].push_back(a.indices[c]);
+  for (Index i = 0; i < t.point_count(); ++i) {
+    auto& v = values_at[size_t(i)];
+    std::sort(v.begin(), v.end());
+    if (std::unique(v.begin(), v.end()) - v.begin() < 2) continue;
+    const double u = t.uv[size_t(2 * i)], w = t.uv[size_t(2 * i + 1)];
+    CHECK((u == 0 || u == 1 || w == 0 || w == 1));
+  }
 }

@@ -1,0 +1,289 @@
+#include "framework/limit/dual_limit.h"
+
+#include <cmath>
+#include <deque>
+#include <fmt/format.h>
+
+#include "framework/analysis/surface/limit_evaluation.h"
+#include "framework/analysis/surface/local_patch.h"
+#include "framework/engine/refiner.h"
+#include "framework/limit/biquadratic_patch.h"
+#include "framework/limit/step_matrix.h"
+#include "framework/scheme/scheme.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+// A point in quadrant (face, corner) of a cut, with d(a, b)/d(u, v) carried as 2^-k times
+// its value after k halvings (step_matrix.h: derivative rows then stay of order one).
+struct QuadrantPoint {
+  Index face = kNone;
+  int corner = 0;
+  Uv ab{0, 0};
+  Jacobian jacobian{{{1, 0}, {0, 1}}};
+};
+
+// The current cut: a level around the point's face, and its vertices in the level it was cut from.
+struct Cut {
+  Level level;
+  std::vector<Index> original;
+  QuadrantPoint point;
+};
+
+Cut cut_around(const Level& L, Index face, int radius) {
+  Extracted e = extract_neighbourhood(L, CentreKind::Face, face, radius);
+  Cut c;
+  c.level = std::move(e.level);
+  c.original = std::move(e.original);
+  for (size_t f = 0; f < e.face_original.size(); ++f)
+    if (e.face_original[f] == face) c.point.face = Index(f);
+  return c;
+}
+
+// The base point in its quadrant: a quad's quarter at the nearest corner, an n-gon's
+// sub-face as it is (base_face_point already gives its (a, b) and d(a, b)/d(u, v) = 2).
+QuadrantPoint base_quadrant(const FacePoint& p) {
+  QuadrantPoint q;
+  if (p.sub_face >= 0) {
+    q.corner = p.sub_face;
+    q.ab = p.st;
+    q.jacobian = {{{1, 0}, {0, 1}}};  // halved once: the first step has scale 2
+    return q;
+  }
+  constexpr Uv kCorner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const double u = p.st[0], v = p.st[1];
+  const int k = u <= 0.5 ? (v <= 0.5 ? 0 : 3) : (v <= 0.5 ? 1 : 2);
+  const Uv& c = kCorner[k];
+  const Uv e{kCorner[(k + 1) % 4][0] - c[0], kCorner[(k + 1) % 4][1] - c[1]};
+  const Uv f{kCorner[(k + 3) % 4][0] - c[0], kCorner[(k + 3) % 4][1] - c[1]};
+  q.corner = k;
+  q.ab = {2 * (e[0] * (u - c[0]) + e[1] * (v - c[1])), 2 * (f[0] * (u - c[0]) + f[1] * (v - c[1]))};
+  q.jacobian = {{{e[0], e[1]}, {f[0], f[1]}}};
+  return q;
+}
+
+StepMatrix identity_step(Index n) {
+  StepMatrix m;
+  m.source_count = n;
+  m.scale = 2;
+  for (Index v = 0; v < n; ++v) {
+    m.columns.push_back(v);
+    m.weights.push_back(1.0);
+    m.offsets.push_back(Index(m.columns.size()));
+  }
+  return m;
+}
+
+StepMatrix rows_of(const StencilTable& table, const std::vector<Index>& rows, Index source_count) {
+  StepMatrix m;
+  m.source_count = source_count;
+  for (Index r : rows) {
+    for (Index e = table.offsets[size_t(r)]; e < table.offsets[size_t(r) + 1]; ++e) {
+      m.columns.push_back(table.indices[size_t(e)]);
+      m.weights.push_back(table.weights[size_t(e)]);
+    }
+    m.offsets.push_back(Index(m.columns.size()));
+  }
+  return m;
+}
+
+std::vector<double> applied(const std::vector<double>& row, std::span<const double> values, int channels) {
+  std::vector<double> out(size_t(channels), 0.0);
+  for (size_t v = 0; v < row.size(); ++v)
+    if (row[v] != 0)
+      for (int c = 0; c < channels; ++c) out[size_t(c)] += row[v] * values[v * size_t(channels) + size_t(c)];
+  return out;
+}
+
+int index_in(std::span<const Index> list, Index x) {
+  for (size_t k = 0; k < list.size(); ++k)
+    if (list[k] == x) return int(k);
+  return -1;
+}
+
+// One dual step of quadrant (g, j): the new point c of corner (g, j) at (1/2, 1/2); the
+// new face around c whose centre is at the quadrant's corner K holds the quarter between c
+// and K. Its quadrant at c has (0, 0) at c and (1, 1) at K, oriented like the parent's
+// (both frames are counter-clockwise), which fixes which parent axis becomes a'.
+struct ChildStep {
+  Index face = kNone;
+  int corner = 0;
+  Uv ab{0, 0};
+  Jacobian jacobian{};
+};
+
+ChildStep child_quadrant(const Level& parent, const Level& child, const ChildOrigins& o, const QuadrantPoint& p) {
+  Index c = kNone;
+  for (size_t v = 0; v < o.kind.size(); ++v)
+    if (o.kind[v] == OriginKind::Corner && o.parent[v] == p.face && int(o.local[v]) == p.corner) c = Index(v);
+  if (c == kNone) throw Error("internal: the corner has no new point (the split is not a dual one)");
+  const int k = parent.face_size(p.face);
+  const int sa = p.ab[0] >= 0.5 ? 1 : -1, sb = p.ab[1] >= 0.5 ? 1 : -1;
+  for (Index g : child.ring_faces(c)) {
+    // Where g's centre lies in the parent quadrant, from where its corners come from.
+    int in_face = 0, other = -1;
+    for (Index x : child.face(g))
+      if (o.kind[size_t(x)] == OriginKind::Corner && o.parent[size_t(x)] == p.face) {
+        ++in_face;
+        if (x != c) other = int(o.local[size_t(x)]);
+      }
+    int ka = 0, kb = 0;  // the corner K: (1, 1) F-face, (1, 0) / (0, 1) E-faces, (0, 0) V-face
+    if (o.parent_face[size_t(g)] == p.face) {
+      ka = kb = 1;
+    } else if (in_face == 2 && other == (p.corner + 1) % k) {
+      ka = 1;
+    } else if (in_face == 2 && other == (p.corner + k - 1) % k) {
+      kb = 1;
+    } else if (in_face != 1) {
+      continue;
+    }
+    if ((ka ? 1 : -1) != sa || (kb ? 1 : -1) != sb) continue;
+    ChildStep s;
+    s.face = g;
+    s.corner = index_in(child.face(g), c);
+    const double x = p.ab[0] - 0.5, y = p.ab[1] - 0.5;
+    // (a', b') = M (a - 1/2, b - 1/2) with det M > 0; M halved is carried into the Jacobian.
+    std::array<std::array<double, 2>, 2> M;
+    if (sa * sb > 0)
+      M = {{{double(sa), 0}, {0, double(sb)}}};
+    else
+      M = {{{0, double(sb)}, {double(sa), 0}}};
+    s.ab = {2 * (M[0][0] * x + M[0][1] * y), 2 * (M[1][0] * x + M[1][1] * y)};
+    for (int r = 0; r < 2; ++r)
+      for (int q = 0; q < 2; ++q)
+        s.jacobian[size_t(r)][size_t(q)] = M[size_t(r)][0] * p.jacobian[0][size_t(q)] + M[size_t(r)][1] * p.jacobian[1][size_t(q)];
+    return s;
+  }
+  throw Error("internal: no new face around the corner's new point holds the point");
+}
+
+Uv nearest_corner(const Uv& ab) { return {ab[0] < 0.5 ? 0.0 : 1.0, ab[1] < 0.5 ? 0.0 : 1.0}; }
+
+}  // namespace
+
+std::string dual_limit_unsupported(const Level& base) {
+  for (Index v = 0; v < base.vertex_count; ++v)
+    if (base.on_boundary(v))
+      return "the mesh has a boundary: the limit of a dual scheme does not reach the outer half of the boundary "
+             "faces, and that parameterisation is not defined yet; close the mesh or use a primal scheme";
+  for (float s : base.edge_sharpness)
+    if (s > 0) return "the mesh has sharp or semi-sharp edges: evaluation of dual schemes with creases is not done yet";
+  for (float s : base.vertex_sharpness)
+    if (s > 0) return "the mesh has sharp vertices: evaluation of dual schemes with corners is not done yet";
+  if (!base.face_hole.empty())
+    for (auto h : base.face_hole)
+      if (h) return "the mesh has holes: evaluation of dual schemes next to holes is not done yet";
+  return {};
+}
+
+DualLimit::DualLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options, int radius,
+                     SchemeLimits& limits)
+    : scheme_(scheme), base_(base), options_(options), radius_(radius), limits_(limits) {
+  biquadratic_ = refines_as_biquadratic(scheme, options.features);
+}
+
+std::vector<Index> DualLimit::reads(const FacePoint& p) const { return cut_around(base_, p.face, radius_).original; }
+
+LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& first_values, int channels,
+                                int derivatives, Rows* rows_out) const {
+  Cut cut = cut_around(base_, p0.face, radius_);
+  cut.point.corner = 0;
+  {
+    const QuadrantPoint q = base_quadrant(p0);
+    cut.point.corner = q.corner, cut.point.ab = q.ab, cut.point.jacobian = q.jacobian;
+  }
+  std::deque<StepMatrix> owned;
+  std::vector<const StepMatrix*> path;
+  owned.push_back(identity_step(cut.level.vertex_count));
+  path.push_back(&owned.back());
+  std::vector<double> values = first_values;
+  const int limit_steps = options_.max_steps + 40;
+  for (int step = 0;; ++step) {
+    QuadrantPoint& q = cut.point;
+    if (step == options_.max_steps) q.ab = nearest_corner(q.ab);
+    if (biquadratic_ && regular_quad_cut(cut.level)) {
+      if (const auto grid = biquadratic_grid(cut.level, q.face, q.corner)) {
+        const BiquadraticRows b = biquadratic_rows(q.ab[0], q.ab[1]);
+        const size_t n = size_t(cut.level.vertex_count);
+        auto spread = [&](const std::array<double, 9>& w) {
+          std::vector<double> row(n, 0.0);
+          for (size_t k = 0; k < 9; ++k) row[size_t((*grid)[k])] += w[k];
+          return row;
+        };
+        LimitSample out;
+        out.steps = step;
+        out.position = applied(spread(b.position), values, channels);
+        const auto& J = q.jacobian;
+        if (derivatives >= 1) {
+          const auto da = spread(b.da), db = spread(b.db);
+          auto row = [&](int d) {
+            std::vector<double> r(n);
+            for (size_t i = 0; i < n; ++i) r[i] = J[0][size_t(d)] * da[i] + J[1][size_t(d)] * db[i];
+            return pulled_back(std::move(r), path);
+          };
+          std::vector<double> u = row(0), v = row(1);
+          out.du = applied(u, first_values, channels);
+          out.dv = applied(v, first_values, channels);
+          out.has_derivatives = true;
+          if (rows_out) rows_out->du = std::move(u), rows_out->dv = std::move(v);
+        }
+        if (derivatives >= 2) {
+          const auto daa = spread(b.daa), dab = spread(b.dab), dbb = spread(b.dbb);
+          auto row = [&](size_t x, size_t y) {
+            std::vector<double> r(n);
+            for (size_t i = 0; i < n; ++i)
+              r[i] = J[0][x] * J[0][y] * daa[i] + (J[0][x] * J[1][y] + J[1][x] * J[0][y]) * dab[i] + J[1][x] * J[1][y] * dbb[i];
+            return pulled_back(std::move(r), path, 2);
+          };
+          std::vector<double> uu = row(0, 0), uv = row(0, 1), vv = row(1, 1);
+          out.duu = applied(uu, first_values, channels);
+          out.duv = applied(uv, first_values, channels);
+          out.dvv = applied(vv, first_values, channels);
+          out.has_second_derivatives = true;
+          if (rows_out) rows_out->duu = std::move(uu), rows_out->duv = std::move(uv), rows_out->dvv = std::move(vv);
+        }
+        return out;
+      }
+    }
+    // The centre of a face: its limit mask, where its neighbourhood is the mask's. A quad's
+    // centre is left to the closed form when there is one (its F-faces' neighbourhoods
+    // become regular), which gives the derivatives too.
+    const bool closed_form_ahead = biquadratic_ && cut.level.face_size(q.face) == 4;
+    if (q.ab[0] == 1 && q.ab[1] == 1 && !closed_form_ahead) {
+      LocalConfig config;
+      config.centre = CentreKind::Face;
+      config.valence = cut.level.face_size(q.face);
+      const auto mask = limits_.mask(config);
+      if (!mask->ok)
+        throw Error(fmt::format("no limit mask at the centre of a {}-sided face: {}", config.valence, mask->error));
+      Labelling lab;
+      if (matches_neighbourhood(lab, cut.level, CentreKind::Face, q.face, 0, mask->radius, mask->signature)) {
+        std::vector<double> row(size_t(cut.level.vertex_count), 0.0);
+        for (size_t l = 0; l < mask->position.size(); ++l) row[size_t(lab.vertices[l])] += mask->position[l];
+        LimitSample out;
+        out.steps = step;
+        out.position = applied(row, values, channels);
+        return out;
+      }
+    }
+    if (step >= limit_steps)
+      throw Error(fmt::format("internal: the point reached no face centre with a known neighbourhood in {} steps",
+                              step));
+    RefineOptions ro;
+    ro.levels = 1;
+    ro.features = options_.features;
+    const Hierarchy h = refine(scheme_, cut.level, ro);
+    const ChildStep s = child_quadrant(cut.level, h.levels[1], h.origins[0], q);
+    Cut next = cut_around(h.levels[1], s.face, radius_);
+    next.point.corner = s.corner, next.point.ab = s.ab, next.point.jacobian = s.jacobian;
+    owned.push_back(rows_of(h.stencils[0], next.original, cut.level.vertex_count));
+    path.push_back(&owned.back());
+    std::vector<double> moved(size_t(owned.back().rows()) * size_t(channels));
+    owned.back().apply(values, moved, channels);
+    values.swap(moved);
+    cut = std::move(next);
+  }
+}
+
+}  // namespace subdiv

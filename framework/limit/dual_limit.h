@@ -1,0 +1,75 @@
+#pragma once
+// The limit surface of a dual scheme (a split with a new point per face corner: Doo-Sabin,
+// its centroid variant, even-degree quad B-splines) at (face, u, v), exactly.
+//
+// Parameterisation (docs/limit.md, "Dual schemes"): the same (u, v) as the quad split's —
+// a quad's unit square, any other face as Bfr's QUAD_SUBFACES — read as quadrants: the
+// quarter of face g at corner j (between g[j], the middles of its edges at g[j] and its
+// centre) has coordinates (a, b) in [0, 1]^2 with (0, 0) at g[j], (1, 0) at the middle of
+// edge j, (1, 1) at the centre; a quad's quadrant j is its quarter at corner j, an n-gon's
+// sub-face j is its quadrant j. One dual step puts the new point c of corner (g, j) at the
+// quadrant's centre (1/2, 1/2), and the four new faces around c (g's F-face, the E-faces
+// of edges j and j - 1, the V-face of g[j]) have their own quadrants at c exactly on the
+// four quarters of (g, j), each with its centre at the corner of (g, j) its face comes
+// from. Quadrants therefore nest as a binary quad split does, and on a regular grid (the
+// biquadratic B-spline) each control point sits at its Greville point, so the scheme has
+// linear precision in these coordinates.
+//
+// Evaluation follows the point's quadrant down the refinement of its neighbourhood (the
+// engine refines a cut around the face, as for primal schemes) until either
+// - the neighbourhood is regular and the scheme refines regular quads as the biquadratic
+//   B-spline does (checked on its rows): the closed form over the quadrant
+//   (biquadratic_patch.h), with derivatives; or
+// - the point is the centre of a face: the limit mask of that face (the left eigenvector
+//   of 1 of its local subdivision matrix; analysis/surface/limit_evaluation.h, Doo & Sabin
+//   1978; Peters & Reif 1998, "Analysis of algorithms generalizing B-spline
+//   subdivision"). Derivatives do not exist there when the face is not a quad
+//   (the extraordinary point), and are not computed for schemes without the closed form.
+// A double is a dyadic rational, so the point is a quadrant corner after as many steps as
+// its coordinates have bits; after `max_steps` it is taken at the nearest corner (the
+// quadrant is then 2^-max_steps of the base face).
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "framework/limit/face_domain.h"
+#include "framework/limit/limit_surface.h"
+
+namespace subdiv {
+
+class SchemeLimits;
+
+class DualLimit {
+public:
+  // `radius`: face rings of the cut around the current face (the rules' reach and the face
+  // masks' labelling fit inside).
+  DualLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options, int radius,
+            SchemeLimits& limits);
+
+  // The base vertices an evaluation at `p` (from base_face_point) reads, in the order
+  // `evaluate` takes their values.
+  std::vector<Index> reads(const FacePoint& p) const;
+
+  // Rows of the derivatives over those vertices (for stencils).
+  struct Rows {
+    std::vector<double> du, dv, duu, duv, dvv;
+  };
+  LimitSample evaluate(const FacePoint& p, const std::vector<double>& first_values, int channels, int derivatives,
+                       Rows* rows_out = nullptr) const;
+
+  bool closed_form() const { return biquadratic_; }
+
+private:
+  const Scheme& scheme_;
+  const Level& base_;
+  LimitSurfaceOptions options_;
+  int radius_;
+  SchemeLimits& limits_;
+  bool biquadratic_ = false;
+};
+
+// Why the dual evaluation cannot take this mesh, or empty (boundaries and sharp features of
+// dual schemes are not parameterised yet).
+std::string dual_limit_unsupported(const Level& base);
+
+}  // namespace subdiv

@@ -1,0 +1,57 @@
+#include "framework/limit/sequence_head.h"
+
+#include <fmt/format.h>
+
+#include "framework/scheme/scheme.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+
+std::string sequence_head_unsupported(const Scheme& scheme) {
+  if (!scheme.linear())
+    return fmt::format("'{}' has non-linear rules: the sequence's limit is no fixed combination of the control points",
+                       scheme.name);
+  const SplitKind split = scheme.split();
+  if (split != SplitKind::Quad && split != SplitKind::Triangle)
+    return fmt::format("'{}' comes before the scheme that repeats and its split is not the binary quad or triangle "
+                       "split: following a point through a dual, sqrt3, mid-edge or plugin split in a sequence's head "
+                       "is not implemented yet",
+                       scheme.name);
+  return {};
+}
+
+SequenceHead::SequenceHead(std::vector<LimitHeadRun> runs, const Level& base, const FeatureOptions& features)
+    : runs_(std::move(runs)) {
+  std::vector<SchemeRun> plain;
+  for (const LimitHeadRun& r : runs_) {
+    if (!r.scheme) throw Error("no scheme given for a run of the sequence");
+    if (const std::string why = sequence_head_unsupported(*r.scheme); !why.empty()) throw Error(why);
+    if (r.levels <= 0) continue;
+    plain.push_back({r.scheme.get(), r.levels});
+    for (int l = 0; l < r.levels; ++l) triangles_.push_back(r.scheme->split() == SplitKind::Triangle ? 1 : 0);
+  }
+  if (plain.empty()) throw Error("the sequence's head has no levels");
+  RefineOptions ro;
+  ro.features = features;
+  hierarchy_ = refine(std::span<const SchemeRun>(plain), base, ro);
+  if (!hierarchy_.linear()) throw Error("the sequence's head has non-linear steps: no limit stencil exists");
+}
+
+FacePoint SequenceHead::map(const Level& base, Index face, double u, double v) const {
+  const char* why = "";
+  auto p = base_face_point(base, face, u, v, triangles(), &why);
+  if (!p) throw Error(fmt::format("face {} at (u, v) = ({}, {}): {}", face, u, v, why));
+  for (size_t l = 0; l < hierarchy_.origins.size(); ++l) {
+    p = child_face_point(hierarchy_.levels[l], hierarchy_.levels[l + 1], hierarchy_.origins[l], *p, triangles_[l] != 0);
+    if (!p) throw Error(fmt::format("internal: no face of level {} of the sequence's head holds the point", l + 1));
+  }
+  return *p;
+}
+
+SparseRow SequenceHead::pull_back(SparseRow row) const {
+  normalise_row(row);
+  for (size_t l = hierarchy_.stencils.size(); l-- > 0;) row = subdiv::pull_back(row, hierarchy_.stencils[l]);
+  return row;
+}
+
+}  // namespace subdiv

@@ -1,0 +1,50 @@
+#pragma once
+// The head of a scheme sequence ("A:1,B:3") before the scheme that repeats: the limit of
+// the sequence is the limit of its last scheme over the mesh the head makes, so a base
+// point (face, u, v) is carried through the head's splits into a face of that mesh (each
+// child face holds a part of its parent, face_domain.h), and weights over that mesh's
+// vertices are pulled back through the head's stencils to the base vertices.
+//
+// The head only refines, a finite number of levels, so any linear rules will do there —
+// level-dependent (non-stationary) weights included; only the repeating tail needs a fixed
+// local subdivision matrix. Its splits must nest (binary quad or triangle splits).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "framework/analysis/surface/sparse_rows.h"
+#include "framework/engine/refiner.h"
+#include "framework/limit/face_domain.h"
+#include "framework/limit/limit_surface.h"
+
+namespace subdiv {
+
+struct Scheme;
+
+class SequenceHead {
+public:
+  // Throws subdiv::Error saying why a head cannot be followed (a split that does not nest,
+  // non-linear rules).
+  SequenceHead(std::vector<LimitHeadRun> runs, const Level& base, const FeatureOptions& features);
+
+  const Level& refined() const { return hierarchy_.levels.back(); }
+  // True when the first split makes triangles: the base faces are then parameterised as triangles.
+  bool triangles() const { return triangles_.front() != 0; }
+  int levels() const { return int(hierarchy_.origins.size()); }
+
+  // The base point in the refined mesh: its face, the face's own (u, v) in `st`, and
+  // d(st)/d(u, v) in `jacobian`. Throws subdiv::Error for a point outside the base face.
+  FacePoint map(const Level& base, Index face, double u, double v) const;
+  // Weights over the refined mesh's vertices as weights over the base vertices.
+  SparseRow pull_back(SparseRow row) const;
+
+private:
+  std::vector<LimitHeadRun> runs_;
+  Hierarchy hierarchy_;
+  std::vector<char> triangles_;  // per level: its split makes triangles
+};
+
+// Why a scheme cannot be a sequence's head, or empty.
+std::string sequence_head_unsupported(const Scheme& scheme);
+
+}  // namespace subdiv

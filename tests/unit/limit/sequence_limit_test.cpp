@@ -1,0 +1,138 @@
+// The limit of a scheme sequence ("A:k,B"): the limit of its last scheme over the mesh its
+// head makes, in the base faces' (u, v). Properties: k levels of B before B change nothing
+// (the limit is B's, and its splits nest, so the parameters agree), continuity across the
+// base edges, stencils equal evaluation, derivatives equal central differences (also
+// across the head's child faces), and heads whose splits do not nest are refused.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
+
+#include "framework/limit/limit_surface.h"
+#include "framework/limit/tessellation.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/util/error.h"
+#include "support/test_meshes.h"
+
+using namespace subdiv;
+
+namespace {
+
+test::Mesh bumped(test::Mesh m) {
+  for (Index v = 0; v < m.vertex_count; ++v) m.positions[size_t(3 * v + 2)] += 0.1 * std::sin(1.7 * v + 0.3);
+  return m;
+}
+
+double distance(std::span<const double> a, std::span<const double> b) {
+  double s = 0;
+  for (size_t i = 0; i < a.size(); ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(s);
+}
+
+}  // namespace
+
+TEST_CASE("A scheme's own levels before it leave its limit unchanged, derivatives included") {
+  struct Case {
+    const char* scheme;
+    test::Mesh mesh;
+    bool triangles;
+  };
+  for (const Case& c : {Case{"catmull-clark", bumped(test::pyramid()), false},
+                        Case{"loop", bumped(test::octahedron()), true}}) {
+    CAPTURE(std::string(c.scheme));
+    const auto scheme = load_scheme(c.scheme);
+    const LimitSurface plain(scheme, c.mesh.level());
+    const LimitSurface sequence({{scheme, 2}}, scheme, c.mesh.level());
+    CHECK(sequence.triangles() == plain.triangles());
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> U(0, 1);
+    double worst = 0, worst_d = 0, worst_dd = 0;
+    for (int k = 0; k < 30; ++k) {
+      const Index f = Index(k % c.mesh.level().face_count());
+      double u = U(rng), v = U(rng);
+      if (c.triangles && u + v > 1) u = 1 - u, v = 1 - v;
+      if (!c.triangles && c.mesh.level().face_size(f) != 4) u *= 0.5, v *= 0.5;  // sub-face 0
+      const LimitSample a = plain.evaluate(f, u, v, c.mesh.positions, 3, 2);
+      const LimitSample b = sequence.evaluate(f, u, v, c.mesh.positions, 3, 2);
+      worst = std::max(worst, distance(a.position, b.position));
+      REQUIRE(a.has_derivatives == b.has_derivatives);
+      if (a.has_derivatives) worst_d = std::max(worst_d, distance(a.du, b.du) + distance(a.dv, b.dv));
+      REQUIRE(a.has_second_derivatives == b.has_second_derivatives);
+      if (a.has_second_derivatives)
+        worst_dd = std::max(worst_dd, distance(a.duu, b.duu) + distance(a.duv, b.duv) + distance(a.dvv, b.dvv));
+    }
+    CHECK(worst < 1e-13);
+    CHECK(worst_d < 1e-11);
+    CHECK(worst_dd < 1e-9);
+  }
+}
+
+TEST_CASE("A bilinear head then Catmull-Clark, and Catmull-Clark then Doo-Sabin: continuous, stencils, finite differences") {
+  const test::Mesh m = bumped(test::pyramid());
+  for (const auto& run : {std::pair{"bilinear", "catmull-clark"}, std::pair{"catmull-clark", "doo-sabin"}}) {
+    const char* head = run.first;
+    const char* tail = run.second;
+    CAPTURE(std::string(head));
+    const LimitSurface s({{load_scheme(head), 1}}, load_scheme(tail), m.level());
+    const Level& L = s.base();
+    // Continuity across every base edge: the pyramid's quad and triangles (sub-faces).
+    double worst_edge = 0;
+    for (Index e = 0; e < L.edge_count(); ++e) {
+      std::vector<std::vector<double>> seen;
+      for (int side = 0; side < 2; ++side) {
+        const Index f = L.edge_faces[size_t(2 * e + side)];
+        const auto c = L.face(f);
+        const int n = int(c.size());
+        int k = 0;
+        while (L.face_edge_list(f)[size_t(k)] != e) ++k;
+        const bool forward = c[size_t(k)] == L.edge_vertices[size_t(2 * e)];
+        const double t = forward ? 0.3 : 0.7;
+        double u = 0, v = 0;
+        if (n == 4) {
+          constexpr double q[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+          u = q[k][0] + t * (q[(k + 1) % 4][0] - q[k][0]), v = q[k][1] + t * (q[(k + 1) % 4][1] - q[k][1]);
+        } else if (t <= 0.5) {
+          u = k % 2 + t, v = k / 2;  // sub-face k, along its u to the edge's middle (2 columns)
+        } else {
+          u = (k + 1) % n % 2, v = (k + 1) % n / 2 + (1 - t);
+        }
+        seen.push_back(s.evaluate(f, u, v, m.positions, 3).position);
+      }
+      worst_edge = std::max(worst_edge, distance(seen[0], seen[1]));
+    }
+    CHECK(worst_edge < 1e-13);
+    // Inside the quad base face, across its children's edges (u = 1/2): stencils and differences.
+    double worst_fd = 0, worst_stencil = 0;
+    for (const auto& [u, v] : {std::pair{0.5, 0.3}, std::pair{0.21, 0.5}, std::pair{0.77, 0.64}}) {
+      const LimitSample p = s.evaluate(0, u, v, m.positions, 3);
+      REQUIRE(p.has_derivatives);
+      const double h = 1e-6;
+      const auto P = [&](double a, double b) { return s.evaluate(0, a, b, m.positions, 3, 0).position; };
+      const auto pu = P(u + h, v), mu = P(u - h, v), pv = P(u, v + h), mv = P(u, v - h);
+      for (int i = 0; i < 3; ++i) {
+        worst_fd = std::max(worst_fd, std::fabs((pu[size_t(i)] - mu[size_t(i)]) / (2 * h) - p.du[size_t(i)]));
+        worst_fd = std::max(worst_fd, std::fabs((pv[size_t(i)] - mv[size_t(i)]) / (2 * h) - p.dv[size_t(i)]));
+      }
+      const LimitStencil w = s.stencil(0, u, v);
+      std::vector<double> x(3, 0.0), xu(3, 0.0);
+      for (size_t e = 0; e < w.vertices.size(); ++e)
+        for (int i = 0; i < 3; ++i) {
+          x[size_t(i)] += w.position[e] * m.positions[size_t(3 * w.vertices[e] + i)];
+          xu[size_t(i)] += w.du[e] * m.positions[size_t(3 * w.vertices[e] + i)];
+        }
+      worst_stencil = std::max(worst_stencil, distance(x, p.position) + distance(xu, p.du));
+    }
+    CHECK(worst_fd < 1e-7);
+    CHECK(worst_stencil < 1e-13);
+    // The tessellation is closed.
+    const Tessellation t = tessellate(s, m.positions, 2);
+    CHECK(t.face_count() == 1 * 4 + 4 * 3 * 1);
+  }
+}
+
+TEST_CASE("A sequence whose head does not nest, or whose tail is refused, is refused with the reason") {
+  CHECK_THROWS_WITH_AS(LimitSurface({{load_scheme("doo-sabin"), 1}}, load_scheme("catmull-clark"), test::cube().level()),
+                       doctest::Contains("comes before the scheme that repeats"), Error);
+  CHECK_THROWS_WITH_AS(LimitSurface({{load_scheme("loop"), 1}}, load_scheme("sqrt3"), test::octahedron().level()),
+                       doctest::Contains("do not nest"), Error);
+}
