@@ -162,6 +162,46 @@ Uv nearest_corner(const Uv& ab) { return {ab[0] < 0.5 ? 0.0 : 1.0, ab[1] < 0.5 ?
 
 }  // namespace
 
+std::optional<FacePoint> dual_child_point(const Level& parent, const Level& child, const ChildOrigins& o,
+                                          const FacePoint& p) {
+  constexpr Uv kCorner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  if (p.sub_face < 0 && parent.face_size(p.face) != 4) return std::nullopt;
+  // The point in its quadrant, with the true d(a, b)/d(u, v).
+  QuadrantPoint q;
+  q.face = p.face;
+  if (p.sub_face >= 0) {
+    q.corner = p.sub_face, q.ab = p.st, q.jacobian = p.jacobian;
+  } else {
+    const QuadrantPoint b = base_quadrant(p);  // its Jacobian: 2 [e; f] halved once
+    q.corner = b.corner, q.ab = b.ab;
+    for (int r = 0; r < 2; ++r)
+      for (int c = 0; c < 2; ++c)
+        q.jacobian[size_t(r)][size_t(c)] =
+            2 * (b.jacobian[size_t(r)][0] * p.jacobian[0][size_t(c)] + b.jacobian[size_t(r)][1] * p.jacobian[1][size_t(c)]);
+  }
+  const ChildStep s = child_quadrant(parent, child, o, q);  // its Jacobian: M J, the true one 2 M J
+  FacePoint out;
+  out.face = s.face;
+  if (child.face_size(s.face) != 4) {
+    out.sub_face = s.corner;
+    out.st = s.ab;
+    for (auto& row : out.jacobian) row = {0, 0};
+    for (int r = 0; r < 2; ++r)
+      for (int c = 0; c < 2; ++c) out.jacobian[size_t(r)][size_t(c)] = 2 * s.jacobian[size_t(r)][size_t(c)];
+    return out;
+  }
+  // A quad's quadrant j: (u, v) = c_j + (a/2) e + (b/2) f, e towards corner j + 1, f towards j - 1.
+  const int j = s.corner;
+  const Uv& c = kCorner[j];
+  const Uv e{kCorner[(j + 1) % 4][0] - c[0], kCorner[(j + 1) % 4][1] - c[1]};
+  const Uv f{kCorner[(j + 3) % 4][0] - c[0], kCorner[(j + 3) % 4][1] - c[1]};
+  out.st = {c[0] + 0.5 * (s.ab[0] * e[0] + s.ab[1] * f[0]), c[1] + 0.5 * (s.ab[0] * e[1] + s.ab[1] * f[1])};
+  for (int r = 0; r < 2; ++r)
+    for (int k = 0; k < 2; ++k)  // d(u, v)/d(a, b) = [e f] / 2, times the true 2 M J
+      out.jacobian[size_t(r)][size_t(k)] = e[size_t(r)] * s.jacobian[0][size_t(k)] + f[size_t(r)] * s.jacobian[1][size_t(k)];
+  return out;
+}
+
 std::string dual_limit_unsupported(const Level& base) {
   for (Index v = 0; v < base.vertex_count; ++v)
     if (base.on_boundary(v))
