@@ -3,7 +3,6 @@
 #include <array>
 #include <cmath>
 #include <fmt/format.h>
-#include <initializer_list>
 #include <map>
 #include <tuple>
 
@@ -24,7 +23,6 @@ struct Builder {
   const Level& base;
   Tessellation out;
   std::map<Key, Index> points;
-  std::map<Index, Uv> here;  // the points of the face (or sub-face) being built: their (u, v) in it
 
   Index point(const Key& key, Index face, double u, double v) {
     auto [it, inserted] = points.emplace(key, out.point_count());
@@ -33,14 +31,7 @@ struct Builder {
       out.uv.insert(out.uv.end(), {u, v});
       out.uv_face.push_back(face);
     }
-    here[it->second] = {u, v};
     return it->second;
-  }
-  void corners(std::initializer_list<Index> ids) {
-    for (Index id : ids) {
-      const Uv& uv = here.at(id);
-      out.corner_uv.insert(out.corner_uv.end(), {uv[0], uv[1]});
-    }
   }
 
   // The key of the point at fraction m / N along edge k of face f (from corner k).
@@ -56,19 +47,16 @@ struct Builder {
 
   void quad(Index f, Index a, Index b, Index c, Index d) {
     out.face_vertices.insert(out.face_vertices.end(), {a, b, c, d});
-    corners({a, b, c, d});
     out.face_offsets.push_back(Index(out.face_vertices.size()));
     out.base_face.push_back(f);
   }
   void triangle(Index f, Index a, Index b, Index c) {
     out.face_vertices.insert(out.face_vertices.end(), {a, b, c});
-    corners({a, b, c});
     out.face_offsets.push_back(Index(out.face_vertices.size()));
     out.base_face.push_back(f);
   }
 
   void quad_face(Index f, int N) {
-    here.clear();
     std::vector<Index> id(size_t((N + 1) * (N + 1)));
     for (int j = 0; j <= N; ++j)
       for (int i = 0; i <= N; ++i) {
@@ -86,7 +74,6 @@ struct Builder {
   }
 
   void triangle_face(Index f, int N) {
-    here.clear();
     auto at = [N](int i, int j) { return size_t(j * (N + 1) + i); };
     std::vector<Index> id(size_t((N + 1) * (N + 1)), kNone);
     for (int j = 0; j <= N; ++j)
@@ -111,7 +98,6 @@ struct Builder {
   void sub_faces(Index f, int N) {
     const int n = base.face_size(f), h = N / 2, columns = sub_face_columns(n);
     for (int q = 0; q < n; ++q) {
-      here.clear();
       const int prev = (q + n - 1) % n;
       std::vector<Index> id(size_t((h + 1) * (h + 1)));
       for (int j = 0; j <= h; ++j)
@@ -165,7 +151,7 @@ std::array<double, 3> normal_at(const LimitSurface& s, LimitSample p, Index face
 Tessellation tessellate(const LimitSurface& surface, std::span<const double> positions, int N) {
   if (N < 1) throw Error(fmt::format("--samples {}: the number of segments per edge must be at least 1", N));
   const Level& base = surface.base();
-  Builder b{base, {}, {}, {}};
+  Builder b{base, {}, {}};
   for (Index f = 0; f < base.face_count(); ++f) {
     if (base.is_hole(f)) continue;
     const int k = base.face_size(f);

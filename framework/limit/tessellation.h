@@ -21,9 +21,6 @@ struct Tessellation {
   std::vector<Index> base_face;   // per face of the tessellation
   std::vector<double> uv;         // per point: the (u, v) it was evaluated at in ...
   std::vector<Index> uv_face;     // ... this base face
-  // Per face corner: its (u, v) in its face's base face (base_face), so that data that jump
-  // across base edges (face-varying seams) are evaluated from the face's own side.
-  std::vector<double> corner_uv;
 
   Index point_count() const { return Index(positions.size() / 3); }
   Index face_count() const { return Index(face_offsets.size()) - 1; }

@@ -1,13 +1,11 @@
 #include "framework/pipeline/evaluate_request.h"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <fmt/format.h>
 
 #include "framework/io/mesh_read.h"
 #include "framework/limit/face_domain.h"
-#include "framework/limit/tessellation.h"
 #include "framework/pipeline/refine_pipeline.h"
 #include "framework/pipeline/scheme_source.h"
 #include "framework/util/option_spelling.h"
@@ -309,39 +307,6 @@ EvaluatedPoints evaluate_face_varying(const PreparedEvaluation& p, size_t channe
     const char* why = "";
     return bilinear(s, *base_face_point(base, faces[i], uv[2 * i], uv[2 * i + 1], triangles, &why), derivatives);
   });
-}
-
-std::vector<FaceVaryingArray> tessellation_face_varying(const PreparedEvaluation& p, const Tessellation& t) {
-  const size_t corners = t.face_vertices.size();
-  std::vector<Index> faces(corners);
-  for (Index f = 0; f < t.face_count(); ++f)
-    for (Index c = t.face_offsets[size_t(f)]; c < t.face_offsets[size_t(f) + 1]; ++c) faces[size_t(c)] = t.base_face[size_t(f)];
-  std::vector<FaceVaryingArray> out;
-  for (size_t k = 0; k < p.face_varying.size(); ++k) {
-    const int C = p.face_varying[k].components;
-    const EvaluatedPoints e = evaluate_face_varying(p, k, faces, t.corner_uv, 0);
-    FaceVaryingArray a;
-    a.name = p.face_varying[k].name;
-    a.components = C;
-    for (const FaceVaryingArray& given : p.mesh.face_varying)
-      if (given.name == a.name) a.role = given.role;  // texture coordinates stay texture coordinates
-    // Per point, the values already given to its corners.
-    std::vector<std::vector<Index>> at(size_t(t.point_count()));
-    for (size_t c = 0; c < corners; ++c) {
-      const double* v = e.position.data() + c * size_t(C);
-      Index found = kNone;
-      for (Index q : at[size_t(t.face_vertices[c])])
-        if (std::equal(v, v + C, a.values.data() + size_t(q) * size_t(C))) found = q;
-      if (found == kNone) {
-        found = a.value_count();
-        a.values.insert(a.values.end(), v, v + C);
-        at[size_t(t.face_vertices[c])].push_back(found);
-      }
-      a.indices.push_back(found);
-    }
-    out.push_back(std::move(a));
-  }
-  return out;
 }
 
 LimitStencilMatrices limit_stencil_matrices(const PreparedEvaluation& p, std::span<const Index> faces,

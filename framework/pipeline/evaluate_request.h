@@ -15,8 +15,6 @@
 
 namespace subdiv {
 
-struct Tessellation;
-
 struct EvaluateRequest {
   // The mesh: read from `mesh_file` when given, else `mesh` (with its tags).
   std::string mesh_file;
@@ -87,11 +85,6 @@ EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& prepared, std::s
 // evaluate_limit_points.
 EvaluatedPoints evaluate_face_varying(const PreparedEvaluation& prepared, size_t channel, std::span<const Index> faces,
                                       std::span<const double> uv, int derivatives);
-
-// The face-varying channels at a tessellation's face corners (limit/tessellation.h), each
-// corner evaluated in its own face's base face, so that seams stay seams: one array per
-// channel, its values shared by the corners of a point where they are equal.
-std::vector<FaceVaryingArray> tessellation_face_varying(const PreparedEvaluation& prepared, const Tessellation& t);
 
 // Limit stencils of the points as sparse matrices over the request's vertices (CSR, one row
 // per point): the position and each derivative up to `derivatives`. A row is empty where

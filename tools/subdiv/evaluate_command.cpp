@@ -125,10 +125,7 @@ void run(const EvaluateArgs& a) {
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a));
   for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
   if (a.samples > 0) {
-    const Tessellation t = tessellate(*prepared.surface, prepared.mesh.positions, a.samples);
-    MeshData m = tessellation_mesh(t);
-    m.face_varying = tessellation_face_varying(prepared, t);
-    write_mesh(a.output, m);
+    write_mesh(a.output, tessellation_mesh(tessellate(*prepared.surface, prepared.mesh.positions, a.samples)));
     return;
   }
   const LimitSurface& surface = *prepared.surface;

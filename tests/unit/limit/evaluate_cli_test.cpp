@@ -191,15 +191,3 @@ TEST_CASE("subdiv evaluate takes dual schemes: the written numbers are the libra
   CHECK(refused.output.find("boundary") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "refused.csv"));
 }
-
-TEST_CASE("subdiv evaluate --samples writes the face-varying UVs with their seams") {
-  const fs::path dir = test::fresh_dir("evaluate-cli-samples-uv");
-  const auto r = test::run_subdiv("evaluate " + test::source_path("examples/meshes/textured-tube.obj") +
-                                  " --samples 4 -o " + (dir / "tube.obj").string());
-  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
-  const MeshData m = read_mesh((dir / "tube.obj").string());
-  REQUIRE(m.face_varying.size() == 1);
-  CHECK(m.face_varying[0].role == ArrayRole::TextureCoordinates);
-  CHECK(m.face_varying[0].indices.size() == m.face_vertices.size());
-  CHECK(m.face_varying[0].value_count() > m.vertex_count());  // the seam's points carry two UVs
-}

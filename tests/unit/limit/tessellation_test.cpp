@@ -2,15 +2,12 @@
 // closed mesh stays closed), every point on the limit, unit normals.
 #include <doctest/doctest.h>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 
 #include "framework/limit/tessellation.h"
-#include "framework/pipeline/evaluate_request.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
-#include "support/cli_runner.h"
 #include "support/test_meshes.h"
 #include "unit/limit/limit_meshes.h"
 
@@ -106,53 +103,5 @@ TEST_CASE("Tessellating a dual scheme's limit gives a closed mesh with outward n
       CHECK(d > 0);
       CHECK(std::fabs(l - 1) < 1e-12);
     }
-  }
-}
-
-TEST_CASE("Tessellations carry the face-varying data: bilinear per base face in the mode All, seams kept") {
-  EvaluateRequest r;
-  r.mesh_file = test::source_path("examples/meshes/textured-tube.obj");
-  r.scheme.text = "catmull-clark";
-  const PreparedEvaluation p = prepare_evaluation(r);
-  REQUIRE(p.face_varying.size() == 1);
-  const int N = 4;
-  const Tessellation t = tessellate(*p.surface, p.mesh.positions, N);
-  const std::vector<FaceVaryingArray> arrays = tessellation_face_varying(p, t);
-  REQUIRE(arrays.size() == 1);
-  const FaceVaryingArray& a = arrays[0];
-  CHECK(a.role == ArrayRole::TextureCoordinates);
-  REQUIRE(a.indices.size() == t.face_vertices.size());
-  // The mode All (OpenSubdiv's default): each corner's value is the bilinear blend of its base
-  // face's corner values at the corner's (u, v) in that face (the tube's faces are quads).
-  const FaceVaryingArray& given = p.mesh.face_varying[0];
-  const int C = a.components;
-  double worst = 0;
-  for (Index f = 0; f < t.face_count(); ++f) {
-    const Index b = t.base_face[size_t(f)];
-    const Index first = p.mesh.face_offsets[size_t(b)];
-    REQUIRE(p.mesh.face_offsets[size_t(b) + 1] - first == 4);
-    for (Index c = t.face_offsets[size_t(f)]; c < t.face_offsets[size_t(f) + 1]; ++c) {
-      const double u = t.corner_uv[size_t(2 * c)], v = t.corner_uv[size_t(2 * c + 1)];
-      const double w[4] = {(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v};
-      for (int k = 0; k < C; ++k) {
-        double expected = 0;
-        for (int q = 0; q < 4; ++q)
-          expected += w[q] * given.values[size_t(given.indices[size_t(first + q)]) * size_t(C) + size_t(k)];
-        worst = std::max(worst, std::fabs(expected - a.values[size_t(a.indices[size_t(c)]) * size_t(C) + size_t(k)]));
-      }
-    }
-  }
-  CHECK(worst < 1e-14);
-  // The tube's seam splits values: more values than points, and a point with two values lies
-  // on a base edge (u or v of 0 or 1 in the face it was evaluated in).
-  CHECK(a.value_count() > t.point_count());
-  std::vector<std::vector<Index>> values_at(size_t(t.point_count()));
-  for (size_t c = 0; c < t.face_vertices.size(); ++c) values_at[size_t(t.face_vertices[c])].push_back(a.indices[c]);
-  for (Index i = 0; i < t.point_count(); ++i) {
-    auto& v = values_at[size_t(i)];
-    std::sort(v.begin(), v.end());
-    if (std::unique(v.begin(), v.end()) - v.begin() < 2) continue;
-    const double u = t.uv[size_t(2 * i)], w = t.uv[size_t(2 * i + 1)];
-    CHECK((u == 0 || u == 1 || w == 0 || w == 1));
   }
 }
