@@ -151,14 +151,17 @@ void number_vertices(std::vector<AdaptiveStage>& stages, Stitcher& st, AdaptiveM
     if (n == kNone) {
       n = Index(out.positions.size() / 3);
       const auto& p = stages[size_t(l)].points;
-      out.positions.insert(out.positions.end(), p.begin() + 3 * v, p.begin() + 3 * v + 3);
+      const int C = stages[size_t(l)].channels;
+      const auto at = p.begin() + std::ptrdiff_t(C) * v;
+      out.positions.insert(out.positions.end(), at, at + 3);
+      out.data.insert(out.data.end(), at + 3, at + C);
     }
     out.face_vertices.push_back(n);
   }
 }
 
 // Every vertex moved to the limit surface, evaluated at one of its corners' (face, u, v).
-void move_to_limit(AdaptiveMesh& out, const LimitSurface& surface, std::span<const double> base_points) {
+void move_to_limit(AdaptiveMesh& out, const LimitSurface& surface, std::span<const double> base_points, int channels) {
   const size_t count = out.positions.size() / 3;
   std::vector<size_t> face_of(count, SIZE_MAX), corner_of(count, SIZE_MAX);
   for (size_t f = 0; f + 1 < out.face_offsets.size(); ++f)
@@ -168,8 +171,10 @@ void move_to_limit(AdaptiveMesh& out, const LimitSurface& surface, std::span<con
   parallel_for_all(count, [&](size_t v) {
     const Uv& uv = out.corner_uv[corner_of[v]];
     const std::vector<double> p =
-        surface.evaluate(out.base_face[face_of[v]], uv[0], uv[1], base_points, 3, 0).position;
-    std::copy(p.begin(), p.end(), out.positions.begin() + std::ptrdiff_t(3 * v));
+        surface.evaluate(out.base_face[face_of[v]], uv[0], uv[1], base_points, channels, 0).position;
+    std::copy(p.begin(), p.begin() + 3, out.positions.begin() + std::ptrdiff_t(3 * v));
+    const size_t D = size_t(channels - 3);
+    std::copy(p.begin() + 3, p.end(), out.data.begin() + std::ptrdiff_t(D * v));
   });
 }
 
@@ -182,7 +187,7 @@ Index uniform_face_count(const Level& base, bool triangles, int levels) {
 }  // namespace
 
 AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<const double> positions,
-                             const AdaptiveOptions& options) {
+                             const AdaptiveOptions& options, std::span<const double> data, int data_channels) {
   const SplitKind split = scheme.split();
   if (split != SplitKind::Quad && split != SplitKind::Triangle)
     throw Error(fmt::format("scheme '{}': adaptive refinement is implemented for the binary quad and triangle splits "
@@ -200,9 +205,21 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<
   const int ghosts = ghost_rings({&run, 1});
   const int rings = std::max(ghosts, 1);
 
+  if (data_channels < 0 || data.size() != size_t(base.vertex_count) * size_t(data_channels))
+    throw Error(fmt::format("adaptive refinement: {} point-array values given for {} vertices and {} channels",
+                            data.size(), base.vertex_count, data_channels));
+  // The positions and the point arrays side by side: one product per stage carries both.
+  const int C = 3 + data_channels;
+  std::vector<double> points(size_t(base.vertex_count) * size_t(C));
+  for (Index v = 0; v < base.vertex_count; ++v) {
+    std::copy_n(positions.begin() + 3 * v, 3, points.begin() + std::ptrdiff_t(C) * v);
+    std::copy_n(data.begin() + std::ptrdiff_t(data_channels) * v, data_channels,
+                points.begin() + std::ptrdiff_t(C) * v + 3);
+  }
   std::vector<AdaptiveStage> stages;
-  stages.push_back(base_stage(base, positions, triangles));
+  stages.push_back(base_stage(base, points, C, triangles));
   AdaptiveMesh out;
+  out.data_channels = data_channels;
   for (int l = 0; l < levels; ++l) {
     AdaptiveStage& s = stages.back();
     choose_splits(s, triangles, options, positions);
@@ -222,7 +239,7 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<
   for (Index f = 0; f < base.face_count(); ++f)
     if (!base.is_hole(f)) st.emit(0, f);
   number_vertices(stages, st, out);
-  if (options.limit) move_to_limit(out, *options.surface, positions);
+  if (options.limit) move_to_limit(out, *options.surface, points, C);
   out.uniform_faces = uniform_face_count(base, triangles, levels);
   return out;
 }

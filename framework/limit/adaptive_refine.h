@@ -45,6 +45,10 @@ struct AdaptiveOptions {
 
 struct AdaptiveMesh {
   std::vector<double> positions;  // xyz per vertex
+  // The point arrays carried like the positions (refine_adaptive's `data`): data_channels
+  // per vertex, in the order given.
+  std::vector<double> data;
+  int data_channels = 0;
   std::vector<Index> face_offsets{0}, face_vertices;
   std::vector<int> face_level;    // per face: the level it comes from
   std::vector<Index> base_face;   // per face: the base face it lies in
@@ -61,7 +65,10 @@ struct AdaptiveMesh {
 // Throws subdiv::Error for a split other than the binary quad and triangle splits, levels
 // outside 0..12, a non-manifold mesh, a triangle split of a mesh with other faces, and
 // `limit` or `tolerance` without a surface.
+// `data` (data_channels per base vertex): point arrays placed like the positions — refined
+// with the same stencils, and with `limit` evaluated on the limit as well.
 AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<const double> positions,
-                             const AdaptiveOptions& options);
+                             const AdaptiveOptions& options, std::span<const double> data = {},
+                             int data_channels = 0);
 
 }  // namespace subdiv

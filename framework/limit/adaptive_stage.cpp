@@ -71,10 +71,11 @@ Uv child_uv(const AdaptiveStage& s, Index face, OriginKind kind, int corner_a, i
 
 }  // namespace
 
-AdaptiveStage base_stage(const Level& base, std::span<const double> positions, bool triangles) {
+AdaptiveStage base_stage(const Level& base, std::span<const double> points, int channels, bool triangles) {
   AdaptiveStage s;
   s.level = base;
-  s.points.assign(positions.begin(), positions.end());
+  s.points.assign(points.begin(), points.end());
+  s.channels = channels;
   s.complete.assign(size_t(base.vertex_count), 1);
   s.candidate.assign(size_t(base.face_count()), 1);
   for (Index f = 0; f < base.face_count(); ++f) {
@@ -117,9 +118,11 @@ AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, in
   AdaptiveStage n;
   n.level = kept.level;
   std::vector<double> piece_points;
+  const int C = s.channels;
   for (Index v : piece.base_vertex)
-    piece_points.insert(piece_points.end(), s.points.begin() + 3 * v, s.points.begin() + 3 * v + 3);
-  n.points = gather_tuples(h.stencils[0].apply(piece_points, 3), 3, kept.base_vertex);
+    piece_points.insert(piece_points.end(), s.points.begin() + C * v, s.points.begin() + C * v + C);
+  n.points = gather_tuples(h.stencils[0].apply(piece_points, C), C, kept.base_vertex);
+  n.channels = C;
 
   // Each child vertex's parent element in the stage, and whether it is complete.
   s.vertex_child.assign(size_t(L.vertex_count), kNone);

@@ -25,7 +25,8 @@ struct Scheme;
 
 struct AdaptiveStage {
   Level level;                      // faces of the uniform level, with its tags
-  std::vector<double> points;       // xyz per vertex
+  std::vector<double> points;       // `channels` per vertex: xyz, then the carried point arrays
+  int channels = 3;
   std::vector<char> complete;       // per vertex
   std::vector<Index> base_face;     // per face
   std::vector<std::array<double, 2>> corner_uv;  // per corner: (u, v) in the base face
@@ -37,7 +38,7 @@ struct AdaptiveStage {
 };
 
 // The base mesh as stage 0 (every vertex complete, every face a candidate).
-AdaptiveStage base_stage(const Level& base, std::span<const double> positions, bool triangles);
+AdaptiveStage base_stage(const Level& base, std::span<const double> points, int channels, bool triangles);
 
 // Refines `stage` (its `split` faces set) one level: see above. `options` gives the
 // features and first_step (the stage's level counted from the original mesh).

@@ -1,5 +1,6 @@
 #include "framework/limit/dual_limit.h"
 
+#include <array>
 #include <cmath>
 #include <deque>
 #include <fmt/format.h>
@@ -15,12 +16,28 @@
 namespace subdiv {
 namespace {
 
+// A quadrant coordinate as its distance x <= 1/2 from the nearer end, 0 or 1 (`high`): the
+// step to a child quadrant maps a to 1 - 2 min(a, 1 - a), which is exactly 2x measured from
+// 1, so a point 1e-300 from a vertex keeps every digit (1 - 2a would round to 1).
+struct Coord {
+  double x = 0;
+  bool high = false;
+  double value() const { return high ? 1 - x : x; }
+  bool upper_half() const { return high || x == 0.5; }
+  static Coord of(double a) { return a > 0.5 ? Coord{1 - a, true} : Coord{a, false}; }
+  // The coordinate in a child quadrant, measured from the new point at 1/2.
+  Coord child() const { return 2 * x > 0.5 ? Coord{1 - 2 * x, false} : Coord{2 * x, true}; }
+};
+using Coords = std::array<Coord, 2>;
+Uv as_uv(const Coords& c) { return {c[0].value(), c[1].value()}; }
+Coords coords(const Uv& ab) { return {Coord::of(ab[0]), Coord::of(ab[1])}; }
+
 // A point in quadrant (face, corner) of a cut, with d(a, b)/d(u, v) carried as 2^-k times
 // its value after k halvings (step_matrix.h: derivative rows then stay of order one).
 struct QuadrantPoint {
   Index face = kNone;
   int corner = 0;
-  Uv ab{0, 0};
+  Coords ab{};
   Jacobian jacobian{{{1, 0}, {0, 1}}};
 };
 
@@ -47,7 +64,7 @@ QuadrantPoint base_quadrant(const FacePoint& p) {
   QuadrantPoint q;
   if (p.sub_face >= 0) {
     q.corner = p.sub_face;
-    q.ab = p.st;
+    q.ab = coords(p.st);
     q.jacobian = {{{1, 0}, {0, 1}}};  // halved once: the first step has scale 2
     return q;
   }
@@ -58,7 +75,7 @@ QuadrantPoint base_quadrant(const FacePoint& p) {
   const Uv e{kCorner[(k + 1) % 4][0] - c[0], kCorner[(k + 1) % 4][1] - c[1]};
   const Uv f{kCorner[(k + 3) % 4][0] - c[0], kCorner[(k + 3) % 4][1] - c[1]};
   q.corner = k;
-  q.ab = {2 * (e[0] * (u - c[0]) + e[1] * (v - c[1])), 2 * (f[0] * (u - c[0]) + f[1] * (v - c[1]))};
+  q.ab = coords({2 * (e[0] * (u - c[0]) + e[1] * (v - c[1])), 2 * (f[0] * (u - c[0]) + f[1] * (v - c[1]))});
   q.jacobian = {{{e[0], e[1]}, {f[0], f[1]}}};
   return q;
 }
@@ -109,7 +126,7 @@ int index_in(std::span<const Index> list, Index x) {
 struct ChildStep {
   Index face = kNone;
   int corner = 0;
-  Uv ab{0, 0};
+  Coords ab{};
   Jacobian jacobian{};
 };
 
@@ -119,7 +136,7 @@ ChildStep child_quadrant(const Level& parent, const Level& child, const ChildOri
     if (o.kind[v] == OriginKind::Corner && o.parent[v] == p.face && int(o.local[v]) == p.corner) c = Index(v);
   if (c == kNone) throw Error("internal: the corner has no new point (the split is not a dual one)");
   const int k = parent.face_size(p.face);
-  const int sa = p.ab[0] >= 0.5 ? 1 : -1, sb = p.ab[1] >= 0.5 ? 1 : -1;
+  const int sa = p.ab[0].upper_half() ? 1 : -1, sb = p.ab[1].upper_half() ? 1 : -1;
   for (Index g : child.ring_faces(c)) {
     // Where g's centre lies in the parent quadrant, from where its corners come from.
     int in_face = 0, other = -1;
@@ -142,14 +159,16 @@ ChildStep child_quadrant(const Level& parent, const Level& child, const ChildOri
     ChildStep s;
     s.face = g;
     s.corner = index_in(child.face(g), c);
-    const double x = p.ab[0] - 0.5, y = p.ab[1] - 0.5;
-    // (a', b') = M (a - 1/2, b - 1/2) with det M > 0; M halved is carried into the Jacobian.
+    // (a', b') = M (a - 1/2, b - 1/2) with det M > 0 (so each is 2 |a - 1/2| or 2 |b - 1/2|,
+    // Coord::child); M halved is carried into the Jacobian.
     std::array<std::array<double, 2>, 2> M;
-    if (sa * sb > 0)
+    if (sa * sb > 0) {
       M = {{{double(sa), 0}, {0, double(sb)}}};
-    else
+      s.ab = {p.ab[0].child(), p.ab[1].child()};
+    } else {
       M = {{{0, double(sb)}, {double(sa), 0}}};
-    s.ab = {2 * (M[0][0] * x + M[0][1] * y), 2 * (M[1][0] * x + M[1][1] * y)};
+      s.ab = {p.ab[1].child(), p.ab[0].child()};
+    }
     for (int r = 0; r < 2; ++r)
       for (int q = 0; q < 2; ++q)
         s.jacobian[size_t(r)][size_t(q)] = M[size_t(r)][0] * p.jacobian[0][size_t(q)] + M[size_t(r)][1] * p.jacobian[1][size_t(q)];
@@ -158,9 +177,50 @@ ChildStep child_quadrant(const Level& parent, const Level& child, const ChildOri
   throw Error("internal: no new face around the corner's new point holds the point");
 }
 
-Uv nearest_corner(const Uv& ab) { return {ab[0] < 0.5 ? 0.0 : 1.0, ab[1] < 0.5 ? 0.0 : 1.0}; }
+Coords nearest_corner(const Coords& ab) { return {Coord{0, ab[0].high}, Coord{0, ab[1].high}}; }
 
 }  // namespace
+
+std::optional<FacePoint> dual_child_point(const Level& parent, const Level& child, const ChildOrigins& o,
+                                          const FacePoint& p) {
+  constexpr Uv kCorner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  if (p.sub_face < 0 && parent.face_size(p.face) != 4) return std::nullopt;
+  // The point in its quadrant, with the true d(a, b)/d(u, v).
+  QuadrantPoint q;
+  q.face = p.face;
+  if (p.sub_face >= 0) {
+    q.corner = p.sub_face, q.ab = coords(p.st), q.jacobian = p.jacobian;
+  } else {
+    const QuadrantPoint b = base_quadrant(p);  // its Jacobian: 2 [e; f] halved once
+    q.corner = b.corner, q.ab = b.ab;
+    for (int r = 0; r < 2; ++r)
+      for (int c = 0; c < 2; ++c)
+        q.jacobian[size_t(r)][size_t(c)] =
+            2 * (b.jacobian[size_t(r)][0] * p.jacobian[0][size_t(c)] + b.jacobian[size_t(r)][1] * p.jacobian[1][size_t(c)]);
+  }
+  const ChildStep s = child_quadrant(parent, child, o, q);  // its Jacobian: M J, the true one 2 M J
+  FacePoint out;
+  out.face = s.face;
+  if (child.face_size(s.face) != 4) {
+    out.sub_face = s.corner;
+    out.st = as_uv(s.ab);
+    for (auto& row : out.jacobian) row = {0, 0};
+    for (int r = 0; r < 2; ++r)
+      for (int c = 0; c < 2; ++c) out.jacobian[size_t(r)][size_t(c)] = 2 * s.jacobian[size_t(r)][size_t(c)];
+    return out;
+  }
+  // A quad's quadrant j: (u, v) = c_j + (a/2) e + (b/2) f, e towards corner j + 1, f towards j - 1.
+  const int j = s.corner;
+  const Uv& c = kCorner[j];
+  const Uv e{kCorner[(j + 1) % 4][0] - c[0], kCorner[(j + 1) % 4][1] - c[1]};
+  const Uv f{kCorner[(j + 3) % 4][0] - c[0], kCorner[(j + 3) % 4][1] - c[1]};
+  const Uv ab = as_uv(s.ab);
+  out.st = {c[0] + 0.5 * (ab[0] * e[0] + ab[1] * f[0]), c[1] + 0.5 * (ab[0] * e[1] + ab[1] * f[1])};
+  for (int r = 0; r < 2; ++r)
+    for (int k = 0; k < 2; ++k)  // d(u, v)/d(a, b) = [e f] / 2, times the true 2 M J
+      out.jacobian[size_t(r)][size_t(k)] = e[size_t(r)] * s.jacobian[0][size_t(k)] + f[size_t(r)] * s.jacobian[1][size_t(k)];
+  return out;
+}
 
 std::string dual_limit_unsupported(const Level& base) {
   for (Index v = 0; v < base.vertex_count; ++v)
@@ -204,7 +264,8 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
     if (step == options_.max_steps) q.ab = nearest_corner(q.ab);
     if (biquadratic_ && regular_quad_cut(cut.level)) {
       if (const auto grid = biquadratic_grid(cut.level, q.face, q.corner)) {
-        const BiquadraticRows b = biquadratic_rows(q.ab[0], q.ab[1]);
+        const Uv ab = as_uv(q.ab);
+        const BiquadraticRows b = biquadratic_rows(ab[0], ab[1]);
         const size_t n = size_t(cut.level.vertex_count);
         auto spread = [&](const std::array<double, 9>& w) {
           std::vector<double> row(n, 0.0);
@@ -250,7 +311,8 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
     // centre is left to the closed form when there is one (its F-faces' neighbourhoods
     // become regular), which gives the derivatives too.
     const bool closed_form_ahead = biquadratic_ && cut.level.face_size(q.face) == 4;
-    if (q.ab[0] == 1 && q.ab[1] == 1 && !closed_form_ahead) {
+    const bool centre = q.ab[0].high && q.ab[0].x == 0 && q.ab[1].high && q.ab[1].x == 0;
+    if (centre && !closed_form_ahead) {
       LocalConfig config;
       config.centre = CentreKind::Face;
       config.valence = cut.level.face_size(q.face);

@@ -29,6 +29,7 @@
 // its coordinates have bits; after `max_steps` it is taken at the nearest corner (the
 // quadrant is then 2^-max_steps of the base face).
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -67,6 +68,13 @@ private:
   SchemeLimits& limits_;
   bool biquadratic_ = false;
 };
+
+// A point of a face (face_domain.h: a quad's (u, v), or an n-gon's sub-face) after one dual
+// step: the face of `child` whose quadrant holds it, with that face's own coordinates (a
+// quad's (u, v), else its sub-face) and the true d(st)/d(u, v) — for sequences whose head
+// has a dual split (sequence_head.h). Empty for a point of a triangle's own (u, v).
+std::optional<FacePoint> dual_child_point(const Level& parent, const Level& child, const ChildOrigins& origins,
+                                          const FacePoint& p);
 
 // Why the dual evaluation cannot take this mesh, or empty (boundaries and sharp features of
 // dual schemes are not parameterised yet).

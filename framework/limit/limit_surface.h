@@ -88,7 +88,7 @@ public:
   LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, const LimitSurfaceOptions& options = {});
   // The limit of a sequence ("A:1,B:3"): `head` refines the base first, then `tail` repeats.
   // Points and stencils are still in the base faces' (u, v) and over the base vertices; the
-  // head's splits must nest (binary quad or triangle), its rules be linear (they may depend
+  // head's splits must nest (binary quad, triangle or dual), its rules be linear (they may depend
   // on the level), and the tail be a scheme the first constructor takes.
   LimitSurface(std::vector<LimitHeadRun> head, std::shared_ptr<const Scheme> tail, Level base,
                const LimitSurfaceOptions& options = {});

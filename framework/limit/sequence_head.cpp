@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "framework/limit/dual_limit.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
 
@@ -12,9 +13,9 @@ std::string sequence_head_unsupported(const Scheme& scheme) {
     return fmt::format("'{}' has non-linear rules: the sequence's limit is no fixed combination of the control points",
                        scheme.name);
   const SplitKind split = scheme.split();
-  if (split != SplitKind::Quad && split != SplitKind::Triangle)
-    return fmt::format("'{}' comes before the scheme that repeats and its split is not the binary quad or triangle "
-                       "split: following a point through a dual, sqrt3, mid-edge or plugin split in a sequence's head "
+  if (split != SplitKind::Quad && split != SplitKind::Triangle && split != SplitKind::Dual)
+    return fmt::format("'{}' comes before the scheme that repeats and its split is not the binary quad, triangle or "
+                       "dual split: following a point through a sqrt3, mid-edge or plugin split in a sequence's head "
                        "is not implemented yet",
                        scheme.name);
   return {};
@@ -28,9 +29,20 @@ SequenceHead::SequenceHead(std::vector<LimitHeadRun> runs, const Level& base, co
     if (const std::string why = sequence_head_unsupported(*r.scheme); !why.empty()) throw Error(why);
     if (r.levels <= 0) continue;
     plain.push_back({r.scheme.get(), r.levels});
-    for (int l = 0; l < r.levels; ++l) triangles_.push_back(r.scheme->split() == SplitKind::Triangle ? 1 : 0);
+    for (int l = 0; l < r.levels; ++l) {
+      triangles_.push_back(r.scheme->split() == SplitKind::Triangle ? 1 : 0);
+      dual_.push_back(r.scheme->split() == SplitKind::Dual ? 1 : 0);
+    }
   }
   if (plain.empty()) throw Error("the sequence's head has no levels");
+  for (size_t l = 0; l < dual_.size(); ++l) {
+    if (!dual_[l]) continue;
+    if (l > 0 && triangles_[l - 1])
+      throw Error("the sequence's head has a dual split after a triangle split: following a point from a triangle's "
+                  "own (u, v) into quadrants is not implemented yet");
+    if (const std::string why = dual_limit_unsupported(base); !why.empty())
+      throw Error("the sequence's head has a dual split and " + why);
+  }
   RefineOptions ro;
   ro.features = features;
   hierarchy_ = refine(std::span<const SchemeRun>(plain), base, ro);
@@ -42,8 +54,17 @@ FacePoint SequenceHead::map(const Level& base, Index face, double u, double v) c
   auto p = base_face_point(base, face, u, v, triangles(), &why);
   if (!p) throw Error(fmt::format("face {} at (u, v) = ({}, {}): {}", face, u, v, why));
   for (size_t l = 0; l < hierarchy_.origins.size(); ++l) {
-    p = child_face_point(hierarchy_.levels[l], hierarchy_.levels[l + 1], hierarchy_.origins[l], *p, triangles_[l] != 0);
+    p = dual_[l] ? dual_child_point(hierarchy_.levels[l], hierarchy_.levels[l + 1], hierarchy_.origins[l], *p)
+                 : child_face_point(hierarchy_.levels[l], hierarchy_.levels[l + 1], hierarchy_.origins[l], *p,
+                                    triangles_[l] != 0);
     if (!p) throw Error(fmt::format("internal: no face of level {} of the sequence's head holds the point", l + 1));
+  }
+  if (p->sub_face >= 0) {  // the face's own (u, v): Bfr's tile of the sub-face
+    const int columns = sub_face_columns(refined().face_size(p->face));
+    p->st = {p->sub_face % columns + 0.5 * p->st[0], p->sub_face / columns + 0.5 * p->st[1]};
+    for (auto& row : p->jacobian)
+      for (double& x : row) x *= 0.5;
+    p->sub_face = -1;
   }
   return *p;
 }

@@ -7,7 +7,8 @@
 //
 // The head only refines, a finite number of levels, so any linear rules will do there —
 // level-dependent (non-stationary) weights included; only the repeating tail needs a fixed
-// local subdivision matrix. Its splits must nest (binary quad or triangle splits).
+// local subdivision matrix. Its splits must nest: binary quad or triangle splits, or the
+// dual split through its quadrants (dual_limit.h) on a closed untagged mesh.
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,6 +43,7 @@ private:
   std::vector<LimitHeadRun> runs_;
   Hierarchy hierarchy_;
   std::vector<char> triangles_;  // per level: its split makes triangles
+  std::vector<char> dual_;       // per level: its split is the dual one (dual_limit.h)
 };
 
 // Why a scheme cannot be a sequence's head, or empty.

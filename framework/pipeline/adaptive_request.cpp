@@ -55,7 +55,29 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
       surface = std::make_shared<const LimitSurface>(p.sequence.schemes.front(), p.base, lo);
       o.surface = surface.get();
     }
-    out.mesh = refine_adaptive(*p.sequence.schemes.front(), p.base, p.mesh.positions, o);
+    // Point arrays ride along with the positions (interpolated like them).
+    std::vector<const DataArray*> carried;
+    int channels = 0;
+    for (const DataArray& a : p.mesh.point_data) {
+      if (a.integer) {
+        p.notes.push_back(fmt::format("point array '{}' holds whole numbers and is not carried to the adaptive mesh",
+                                      a.name));
+        continue;
+      }
+      carried.push_back(&a);
+      channels += a.components;
+      out.point_arrays.push_back({a.name, a.components, {}, false, a.role});
+    }
+    const Index V = p.base.vertex_count;
+    std::vector<double> data(size_t(V) * size_t(channels));
+    int at = 0;
+    for (const DataArray* a : carried) {
+      for (Index v = 0; v < V; ++v)
+        for (int c = 0; c < a->components; ++c)
+          data[size_t(v) * size_t(channels) + size_t(at + c)] = a->values[size_t(v) * size_t(a->components) + size_t(c)];
+      at += a->components;
+    }
+    out.mesh = refine_adaptive(*p.sequence.schemes.front(), p.base, p.mesh.positions, o, data, channels);
   } catch (const OptionError&) {
     throw;
   } catch (const Error& e) {
@@ -83,8 +105,18 @@ AdaptiveRequest adaptive_request_from(EvaluateRequest e, int levels, double tole
   return a;
 }
 
-MeshData adaptive_mesh_data(AdaptiveMesh&& a) {
+MeshData adaptive_mesh_data(AdaptiveMesh&& a, std::vector<DataArray> point_arrays) {
   MeshData m;
+  const size_t V = a.positions.size() / 3, D = size_t(a.data_channels);
+  size_t at = 0;
+  for (DataArray& array : point_arrays) {
+    const size_t C = size_t(array.components);
+    array.values.resize(V * C);
+    for (size_t v = 0; v < V; ++v)
+      for (size_t c = 0; c < C; ++c) array.values[v * C + c] = a.data[v * D + at + c];
+    at += C;
+    m.point_data.push_back(std::move(array));
+  }
   m.positions = std::move(a.positions);
   m.face_offsets = std::move(a.face_offsets);
   m.face_vertices = std::move(a.face_vertices);

@@ -1,13 +1,11 @@
 #include "framework/pipeline/evaluate_request.h"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <fmt/format.h>
 
 #include "framework/io/mesh_read.h"
 #include "framework/limit/face_domain.h"
-#include "framework/limit/tessellation.h"
 #include "framework/pipeline/refine_pipeline.h"
 #include "framework/pipeline/scheme_source.h"
 #include "framework/util/option_spelling.h"

@@ -16,8 +16,6 @@
 
 namespace subdiv {
 
-struct Tessellation;
-
 struct EvaluateRequest {
   // The mesh: read from `mesh_file` when given, else `mesh` (with its tags).
   std::string mesh_file;

@@ -8,9 +8,11 @@ namespace {
 
 py::dict refine_adaptive(py::handle mesh, py::handle scheme, py::handle params, int levels, double tolerance,
                          bool limit, const std::string& boundary, const std::string& crease_method,
-                         double feature_angle, int threads) {
+                         double feature_angle, int threads, py::handle point_data) {
   subdiv::AdaptiveRequest r;
   r.refine.mesh = mesh_from_python(mesh);
+  // Point arrays are carried to the adaptive mesh like the positions.
+  r.refine.mesh.point_data = data_arrays_from(point_data, r.refine.mesh.vertex_count(), "point data");
   r.refine.mesh_name = mesh_name(mesh);
   r.refine.scheme = scheme_source_from(scheme, params);
   r.refine.shape.boundary = boundary_from(boundary);
@@ -37,10 +39,13 @@ py::dict refine_adaptive(py::handle mesh, py::handle scheme, py::handle params, 
   out["corner_uv"] = adopt(std::move(uv), {corners, 2});
   out["face_level"] = adopt(std::vector<Index>(a.face_level.begin(), a.face_level.end()), {faces});
   out["base_face"] = adopt(std::move(a.base_face), {faces});
-  subdiv::MeshData m;
-  m.positions = std::move(a.positions);
-  m.face_offsets = std::move(a.face_offsets);
-  m.face_vertices = std::move(a.face_vertices);
+  // The mesh with the point arrays carried like the positions; the cell arrays are the
+  // face_level and base_face returned above.
+  subdiv::MeshData m = subdiv::adaptive_mesh_data(std::move(a), std::move(result.point_arrays));
+  m.cell_data.clear();
+  out["point_roles"] = roles_to_python(m.point_data);
+  out["point_data"] = data_arrays_to_python(std::move(m.point_data));
+  m.point_data.clear();
   out["mesh"] = mesh_to_python(std::move(m));
   return out;
 }
@@ -50,7 +55,7 @@ py::dict refine_adaptive(py::handle mesh, py::handle scheme, py::handle params, 
 void bind_adaptive(py::module_& m) {
   m.def("_refine_adaptive", &refine_adaptive, py::arg("mesh"), py::arg("scheme"), py::arg("params"),
         py::arg("levels"), py::arg("tolerance"), py::arg("limit"), py::arg("boundary"), py::arg("crease_method"),
-        py::arg("feature_angle"), py::arg("threads"), "The work of subdivkit.refine_adaptive.");
+        py::arg("feature_angle"), py::arg("threads"), py::arg("point_data"), "The work of subdivkit.refine_adaptive.");
 }
 
 }  // namespace subdivkit

@@ -7,7 +7,7 @@ import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error
-from .mesh import Mesh
+from .mesh import Mesh, _data_arrays
 
 
 @dataclass
@@ -55,7 +55,9 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
 
     The result is watertight: a coarse face next to finer ones takes the finer vertices along
     its edges as corners of its own (a transition polygon), so every interior edge is in
-    exactly two faces. Its cell_data: ``face_level`` (the level a face comes from) and
+    exactly two faces. Its point_data: the mesh's point arrays (not integer ones), placed like
+    the positions (on the limit too with ``limit``). Its cell_data: ``face_level`` (the level
+    a face comes from) and
     ``base_face`` (the input face it lies in).
 
     >>> import subdivkit as sk
@@ -72,8 +74,9 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
     if not tol >= 0 or not np.isfinite(tol):
         raise Error(f"tolerance={tolerance!r}: give a distance >= 0 (0: split only around features)")
     r = _subdivkit._refine_adaptive(mesh, scheme, params, int(levels), tol, bool(limit), str(boundary),
-                                    str(crease_method), float(feature_angle), int(threads))
-    out = Mesh._from_arrays(r["mesh"], name=mesh.name,
+                                    str(crease_method), float(feature_angle), int(threads),
+                                    _data_arrays(mesh.point_data, mesh.point_roles, mesh.n_points, "point data"))
+    out = Mesh._from_arrays(r["mesh"], name=mesh.name, point_data=r["point_data"], point_roles=r["point_roles"],
                             cell_data={"face_level": r["face_level"], "base_face": r["base_face"]})
     if info:
         return out, AdaptiveInfo(uniform_faces=int(r["uniform_faces"]), split_faces=list(r["split_faces"]),

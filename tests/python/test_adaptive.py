@@ -83,3 +83,14 @@ def test_bad_arguments_are_refused():
         sk.refine_adaptive(cube(), "catmull-clark", 2, tolerance=-1)
     with pytest.raises(sk.Error, match="binary quad and triangle splits"):
         sk.refine_adaptive(cube(), "doo-sabin", 2)
+
+
+def test_point_arrays_are_placed_like_the_positions():
+    # Refinement and limit are affine-invariant, so an affine image of the positions stays
+    # that image of the output positions.
+    c = cube()
+    m = sk.Mesh(c.points, face_offsets=c.face_offsets, faces=c.face_indices,
+                point_data={"height": 2 * c.points[:, 2] - c.points[:, 0]})
+    for limit in (False, True):
+        r = sk.refine_adaptive(m, "catmull-clark", 3, limit=limit)
+        assert np.allclose(r.point_data["height"].ravel(), 2 * r.points[:, 2] - r.points[:, 0], atol=1e-12)

@@ -123,7 +123,7 @@ def test_bad_points_schemes_and_arguments_are_refused():
     with pytest.raises(sk.Error, match="sqrt3.*do not nest inside one parent face"):
         sk.LimitSurface(octahedron, "sqrt3")
     with pytest.raises(sk.Error, match="comes before the scheme that repeats"):
-        sk.LimitSurface(cube(), "doo-sabin:1,catmull-clark")
+        sk.LimitSurface(octahedron, "sqrt3:1,loop")
     with pytest.raises(sk.Error, match="expected a subdivkit.Mesh"):
         sk.evaluate("cube.obj", "catmull-clark", [0], [[0.5, 0.5]])
 

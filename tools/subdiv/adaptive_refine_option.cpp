@@ -41,7 +41,7 @@ void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& a, bool limi
   AdaptiveResult result = refine_adaptive_request(std::move(r));
   for (const std::string& w : result.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
   const std::string summary = adaptive_summary(result);
-  write_mesh(output, adaptive_mesh_data(std::move(result.mesh)));
+  write_mesh(output, adaptive_mesh_data(std::move(result.mesh), std::move(result.point_arrays)));
   if (quiet) return;
   for (const auto& note : result.notes) fmt::print("{}\n", spell_options(note, cli_option_spelling()));
   fmt::print("adaptive refinement of {} to level {}: {} in {:.3f} s -> {}\n", result.scheme_label, a.levels,

@@ -102,7 +102,7 @@ void run(const EvaluateArgs& a) {
     AdaptiveResult r = refine_adaptive_request(adaptive_request_from(evaluate_request(a), a.adaptive, 0, a.limit));
     for (const std::string& w : r.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
     fmt::print("subdiv: {}\n", adaptive_summary(r));
-    write_mesh(a.output, adaptive_mesh_data(std::move(r.mesh)));
+    write_mesh(a.output, adaptive_mesh_data(std::move(r.mesh), std::move(r.point_arrays)));
     return;
   }
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a));

@@ -3,11 +3,13 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
+#include "framework/io/mesh_write.h"
 #include "support/cli_runner.h"
 
 using namespace subdiv;
@@ -56,4 +58,29 @@ TEST_CASE("subdiv refine --adaptive refuses what it cannot do, leaving no file")
   const auto pvd = test::run_subdiv("refine " + mesh + " --adaptive 2 -o " + (dir / "x.pvd").string());
   CHECK(pvd.exit_code != 0);
   CHECK(pvd.output.find("one mesh") != std::string::npos);
+}
+
+TEST_CASE("subdiv refine --adaptive carries the mesh's point arrays, placed like the positions") {
+  const fs::path dir = test::fresh_dir("refine-cli-adaptive-arrays");
+  MeshData m = read_mesh(test::source_path("examples/meshes/cube.obj"));
+  DataArray height{"height", 1, {}, false};  // an affine function of the positions: 2z - x
+  for (size_t v = 0; v < m.positions.size() / 3; ++v) height.values.push_back(2 * m.positions[3 * v + 2] - m.positions[3 * v]);
+  m.point_data.push_back(height);
+  write_mesh(dir / "cube.vtp", m);
+  for (const char* limit : {"", " --limit"}) {
+    CAPTURE(std::string(limit));
+    const auto r = test::run_subdiv("refine " + (dir / "cube.vtp").string() + " --adaptive 3" + limit + " -o " +
+                                    (dir / "out.vtp").string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    const MeshData out = read_mesh((dir / "out.vtp").string());
+    const DataArray* h = nullptr;
+    for (const DataArray& a : out.point_data)
+      if (a.name == "height") h = &a;
+    REQUIRE(h != nullptr);
+    REQUIRE(h->values.size() == out.positions.size() / 3);
+    double worst = 0;
+    for (size_t v = 0; v < h->values.size(); ++v)
+      worst = std::max(worst, std::fabs(h->values[v] - (2 * out.positions[3 * v + 2] - out.positions[3 * v])));
+    CHECK(worst < 1e-12);
+  }
 }

@@ -9,6 +9,7 @@
 #include "framework/limit/limit_surface.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
+#include "framework/util/error.h"
 #include "support/test_meshes.h"
 #include "unit/limit/limit_meshes.h"
 
@@ -112,4 +113,40 @@ TEST_CASE("Adaptive refinement of an open grid with a crease: faces along the cr
   CHECK(L.vertex_count - L.edge_count() + L.face_count() == 1);
   CHECK(boundary >= 22);
   CHECK(Index(m.face_offsets.size()) - 1 < m.uniform_faces);
+}
+
+TEST_CASE("Point arrays on adaptive meshes are placed like the positions, with and without the limit") {
+  // The refinement and the limit are linear and reproduce affine functions (each row sums to
+  // one), so an array that is an affine image of the positions stays that image of the
+  // output positions — here (2x - z + 1, y + 0.5, 3z) and the position itself.
+  const test::Mesh m = test::cube();
+  const auto scheme = load_scheme("catmull-clark");
+  const Level base = m.level();
+  auto image = [](std::span<const double> p) {
+    std::vector<double> d;
+    for (size_t v = 0; v < p.size() / 3; ++v) {
+      const double x = p[3 * v], y = p[3 * v + 1], z = p[3 * v + 2];
+      d.insert(d.end(), {2 * x - z + 1, y + 0.5, 3 * z, x, y, z});
+    }
+    return d;
+  };
+  const LimitSurface surface(scheme, base);
+  for (bool limit : {false, true}) {
+    CAPTURE(limit);
+    AdaptiveOptions o;
+    o.levels = 3;
+    o.limit = limit;
+    o.surface = &surface;
+    const std::vector<double> data = image(m.positions);
+    const AdaptiveMesh a = refine_adaptive(*scheme, base, m.positions, o, data, 6);
+    REQUIRE(a.data_channels == 6);
+    REQUIRE(a.data.size() == a.positions.size() * 2);
+    const std::vector<double> expected = image(a.positions);
+    double worst = 0;
+    for (size_t i = 0; i < expected.size(); ++i) worst = std::max(worst, std::fabs(expected[i] - a.data[i]));
+    CHECK(worst < 1e-14);
+  }
+  AdaptiveOptions o;
+  o.levels = 1;
+  CHECK_THROWS_AS(refine_adaptive(*scheme, base, m.positions, o, std::vector<double>(5, 0.0), 1), Error);
 }

@@ -365,3 +365,33 @@ TEST_CASE("Dual schemes on meshes with boundaries, and the mid-edge and sqrt3 sp
   CHECK_THROWS_WITH_AS(LimitSurface(load_scheme("sqrt3"), test::octahedron().level()),
                        doctest::Contains("do not nest"), Error);
 }
+
+TEST_CASE("Points very close to an extraordinary vertex keep their digits and their tangent plane") {
+  // A cube corner (valence 3: a triangular V-face, an extraordinary point). The quadrant
+  // coordinates are kept as distances from the nearer end, so a point at 1e-17 is not
+  // rounded onto the corner (1 - 4e-17 would be 1): it has derivatives, its normal tends to the corner's tangent
+  // plane, and its distance to the corner's limit shrinks with the parameter.
+  const test::Mesh m = bumped(test::cube());
+  const LimitSurface s(load_scheme("doo-sabin"), m.level());
+  const LimitSample corner = s.evaluate(0, 0, 0, m.positions, 3);
+  auto normal = [](const LimitSample& p) {
+    std::array<double, 3> n{p.du[1] * p.dv[2] - p.du[2] * p.dv[1], p.du[2] * p.dv[0] - p.du[0] * p.dv[2],
+                            p.du[0] * p.dv[1] - p.du[1] * p.dv[0]};
+    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double& x : n) x /= l;
+    return n;
+  };
+  double last = 1;
+  std::array<double, 3> previous{};
+  for (double e : {1e-6, 1e-9, 1e-12, 1e-15, 1e-17}) {
+    const LimitSample p = s.evaluate(0, e, 0.7 * e, m.positions, 3);
+    REQUIRE(p.has_derivatives);
+    const double d = distance(p.position, corner.position);
+    CHECK(d < last);
+    last = d;
+    const auto n = normal(p);
+    if (e < 1e-6) CHECK(distance(n, previous) < 1e-3);
+    previous = n;
+  }
+  CHECK(last < 1e-13);
+}

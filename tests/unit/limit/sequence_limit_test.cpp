@@ -131,8 +131,39 @@ TEST_CASE("A bilinear head then Catmull-Clark, and Catmull-Clark then Doo-Sabin:
 }
 
 TEST_CASE("A sequence whose head does not nest, or whose tail is refused, is refused with the reason") {
-  CHECK_THROWS_WITH_AS(LimitSurface({{load_scheme("doo-sabin"), 1}}, load_scheme("catmull-clark"), test::cube().level()),
+  CHECK_THROWS_WITH_AS(LimitSurface({{load_scheme("sqrt3"), 1}}, load_scheme("loop"), test::octahedron().level()),
                        doctest::Contains("comes before the scheme that repeats"), Error);
   CHECK_THROWS_WITH_AS(LimitSurface({{load_scheme("loop"), 1}}, load_scheme("sqrt3"), test::octahedron().level()),
                        doctest::Contains("do not nest"), Error);
+}
+
+TEST_CASE("A dual head: Doo-Sabin's own level before it changes nothing, and Doo-Sabin then Catmull-Clark is continuous") {
+  // Doo-Sabin's quadrants nest, so doo-sabin:1,doo-sabin is Doo-Sabin's limit in the same (u, v).
+  for (const test::Mesh& m : {bumped(test::cube()), bumped(test::pyramid())}) {
+    const auto ds = load_scheme("doo-sabin");
+    const LimitSurface plain(ds, m.level());
+    const LimitSurface sequence({{ds, 1}}, ds, m.level());
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> U(0.02, 0.48);
+    double worst = 0, worst_d = 0;
+    for (int k = 0; k < 24; ++k) {
+      const Index f = Index(k % m.level().face_count());
+      const int n = m.level().face_size(f);
+      double u = U(rng), v = U(rng);
+      if (n == 4) u += 0.5 * (k % 2), v += 0.5 * (k / 2 % 2);
+      const LimitSample a = plain.evaluate(f, u, v, m.positions, 3);
+      const LimitSample b = sequence.evaluate(f, u, v, m.positions, 3);
+      worst = std::max(worst, distance(a.position, b.position));
+      REQUIRE(a.has_derivatives == b.has_derivatives);
+      if (a.has_derivatives) worst_d = std::max(worst_d, distance(a.du, b.du) + distance(a.dv, b.dv));
+    }
+    CHECK(worst < 1e-13);
+    CHECK(worst_d < 1e-11);
+  }
+  const test::Mesh m = bumped(test::cube());
+  const LimitSurface s({{load_scheme("doo-sabin"), 1}}, load_scheme("catmull-clark"), m.level());
+  const Tessellation t = tessellate(s, m.positions, 4);
+  CHECK(t.face_count() == 6 * 16);
+  CHECK_THROWS_WITH_AS(LimitSurface({{load_scheme("doo-sabin"), 1}}, load_scheme("catmull-clark"), test::grid(3, 3).level()),
+                       doctest::Contains("boundary"), Error);
 }

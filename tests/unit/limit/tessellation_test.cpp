@@ -2,7 +2,6 @@
 // closed mesh stays closed), every point on the limit, unit normals.
 #include <doctest/doctest.h>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -11,7 +10,6 @@
 #include "framework/pipeline/limit_mesh.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
-#include "support/cli_runner.h"
 #include "support/test_meshes.h"
 #include "unit/limit/limit_meshes.h"
 
