@@ -16,6 +16,7 @@
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
 #include "framework/util/scratch_vector.h"
+#include "framework/util/streaming_stores.h"
 
 namespace subdiv {
 namespace {
@@ -82,7 +83,7 @@ void pass_applied(const LevelPass& pass, const RefineOptions& options, std::span
       prepare_step(*pass.scheme, *pass.rules, *pass.parent, pass.level, options, *pass.parameters, /*lazy_features=*/true);
   StepContext context = step_context(*pass.scheme, *pass.rules, inputs, *pass.parent, *pass.origins,
                                      pass.features_refined, pass.level, options);
-  context.stream_output = last && out.size() * sizeof(double) >= kStreamBytes;
+  context.stream_output = last && out.size() * sizeof(double) >= kStreamBytes && streaming_stores_wanted();
   timer.emplace(times, stage(options, pass.level + 1, "groups, plans, kernels"));
   StepEvaluator rows(context);
   timer.reset();

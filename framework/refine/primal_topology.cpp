@@ -122,6 +122,13 @@ void halves(const Level& P, Level& C, Index first_mid) {
 
 namespace {
 
+// Whether a faces-only last level's corners are written with streaming stores: when they
+// are larger than the caches (so nothing would find them there) and 16-byte aligned.
+bool streams(const std::vector<Index>& face_vertices) {
+  return face_vertices.size() * sizeof(Index) >= (size_t(32) << 20) && streaming_stores_wanted() &&
+         reinterpret_cast<std::uintptr_t>(face_vertices.data()) % 16 == 0;
+}
+
 // Child faces (and, with `edges`, their edges and the edges inside parent faces): child
 // face c = (v_i, mid(e_i), face point, mid(e_{i-1})) of parent corner c.
 template <bool edges>
@@ -137,7 +144,7 @@ Level quad_children(const Level& P) {
     resize_side_by_side(Sized{C.face_offsets, size_t(N) + 1}, Sized{C.face_vertices, 4 * size_t(N)});
   // Faces only: the last level, which nothing reads during the refinement, written with
   // streaming stores (util/streaming_stores.h) when its rows of four are 16-byte aligned.
-  const bool stream = !edges && reinterpret_cast<std::uintptr_t>(C.face_vertices.data()) % 16 == 0;
+  const bool stream = !edges && streams(C.face_vertices);
   tbb::parallel_for(tbb::blocked_range<Index>(0, F), [&](const tbb::blocked_range<Index>& faces) {
     for (Index f = faces.begin(); f < faces.end(); ++f) {
       const Index o = P.face_offsets[f], k = P.face_size(f);
@@ -237,7 +244,7 @@ Level triangle_children(const Level& P) {
     resize_side_by_side(Sized{C.face_offsets, 4 * size_t(F) + 1}, Sized{C.face_vertices, 12 * size_t(F)});
   // Faces only: the last level, written with streaming stores (as quad_children) when a
   // face's 12 corners are 16-byte aligned.
-  const bool stream = !edges && reinterpret_cast<std::uintptr_t>(C.face_vertices.data()) % 16 == 0;
+  const bool stream = !edges && streams(C.face_vertices);
   tbb::parallel_for(tbb::blocked_range<Index>(0, F), [&](const tbb::blocked_range<Index>& faces) {
     for (Index f = faces.begin(); f < faces.end(); ++f) {
       const Index o = P.face_offsets[f];

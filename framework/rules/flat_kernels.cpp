@@ -69,6 +69,8 @@ FlatKernels::FlatKernels(const StepContext& step, const std::vector<ChildGroup>&
   auto new_points_available = [&](const std::vector<TermShape>& t) {
     return (!uses(t, Points::FacePoints) || face_points) && (!uses(t, Points::EdgePoints) || edge_points);
   };
+  if (step.stream_output)
+    if (const std::vector<Element> order = build_order(step, groups); !order.empty()) stream_[int(order.back())] = true;
   const WeightTables& tables = step.tables;
 
   // Vertices: weights per valence n, up to the tables' largest n.
@@ -222,7 +224,7 @@ Index FlatKernels::run_vertices(Index begin, Index end, const StepSources& in, d
   const double* face_points = w.uses_face_points ? in.child(first_child_[int(Element::Face)]) : nullptr;
   const double* edge_points = w.uses_edge_points ? in.child(first_child_[int(Element::Edge)]) : nullptr;
   const int channels = in.channels;
-  const bool stream = step_.stream_output;
+  const bool stream = stream_[int(Element::Vertex)];
   Index done = 0;
   for (Index v = begin; v < end; ++v) {
     const Index ring_begin = L.vertex_ring_offsets[v], n = L.vertex_ring_offsets[v + 1] - ring_begin;
@@ -273,7 +275,7 @@ Index FlatKernels::run_edges(Index begin, Index end, const StepSources& in, doub
   const Index first = first_child_[int(Element::Edge)];
   const double* face_points = w.uses_face_points ? in.child(first_child_[int(Element::Face)]) : nullptr;
   const int channels = in.channels;
-  const bool stream = step_.stream_output;
+  const bool stream = stream_[int(Element::Edge)];
   Index done = 0;
   for (Index e = begin; e < end; ++e) {
     constexpr bool IsResolved = W == Walk::Resolved;
@@ -321,7 +323,7 @@ Index FlatKernels::run_corners(Index begin, Index end, const StepSources& in, do
   const ChildOrigins& origins = step_.origins;
   const FeatureContexts& F = step_.features;
   const int channels = in.channels;
-  const bool stream = step_.stream_output;
+  const bool stream = stream_[int(Element::Corner)];
   Index done = 0;
   for (Index r = begin; r < end; ++r) {
     const Index child = first + r, f = origins.parent[child];
@@ -358,7 +360,7 @@ Index FlatKernels::run_faces(Index begin, Index end, const StepSources& in, doub
   const Index first = first_child_[int(Element::Face)];
   const double* edge_points = w.uses_edge_points ? in.child(first_child_[int(Element::Edge)]) : nullptr;
   const int channels = in.channels;
-  const bool stream = step_.stream_output;
+  const bool stream = stream_[int(Element::Face)];
   Index done = 0;
   for (Index f = begin; f < end; ++f) {
     const Index corner_begin = L.face_offsets[f], k = L.face_offsets[f + 1] - corner_begin;

@@ -127,6 +127,9 @@ private:
   const StepContext& step_;
   const bool untagged_;
   const bool plain_;  // manifold and untagged: Walk::Plain
+  // StepContext::stream_output: the kind computed last, whose points no rule of the step reads
+  // back, written with streaming stores (the others are read by it, soon).
+  bool stream_[kElementCount] = {};
   // The first child of each kind's run (primal splits: element e's new point is first + e),
   // or kNone when the kind's children are not one run over all its elements.
   Index first_child_[kElementCount];

@@ -47,8 +47,9 @@ struct StepContext {
   // step evaluator; false is for tests and measurements.
   bool use_kernels = true;
   // The step writes output that no later step reads and that is larger than the caches (a
-  // refinement's last level): the flat kernels write it with streaming stores
-  // (point_accumulator.h). The same values.
+  // refinement's last level): the flat kernels write the points of the kind computed last
+  // (which no rule of the step reads back) with streaming stores (point_accumulator.h).
+  // The same values.
   bool stream_output = false;
   // Where to add the time of each kind's new points (stage_times.h), or null.
   StageTimes* stage_times = nullptr;

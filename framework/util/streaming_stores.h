@@ -4,15 +4,27 @@
 // its faces and points), they save the read of every line written, and keep the caches
 // for what is read again. Weakly ordered: call streaming_fence() at the end of each loop
 // that uses them, before another thread may read the output. Plain stores where the
-// instructions are missing.
+// instructions are missing (or SUBDIV_NO_STREAMING_STORES is defined); callers ask
+// streaming_stores_wanted() first, which SUBDIV_STREAMING_STORES=0 in the environment
+// turns off (to measure what they give: docs/benchmarks.md).
 #include <bit>
 #include <cstdint>
-#if defined(__x86_64__) && defined(__SSE2__)
+#include <cstdlib>
+#include <string_view>
+#if defined(__x86_64__) && defined(__SSE2__) && !defined(SUBDIV_NO_STREAMING_STORES)
 #include <emmintrin.h>
 #define SUBDIV_STREAMING_STORES 1
 #endif
 
 namespace subdiv {
+
+inline bool streaming_stores_wanted() {
+  static const bool wanted = [] {
+    const char* setting = std::getenv("SUBDIV_STREAMING_STORES");
+    return !setting || std::string_view(setting) != "0";
+  }();
+  return wanted;
+}
 
 inline void stream_store(std::int32_t* to, std::int32_t value) {
 #ifdef SUBDIV_STREAMING_STORES
