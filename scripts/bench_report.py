@@ -4,8 +4,8 @@
     scripts/bench_report.py RUN_DIR [--page docs/benchmarks.md] [--chart docs/images/benchmarks.svg]
 
 RUN_DIR holds the benchmark programs' outputs (refine.txt, update.txt, threads1.txt,
-threads2.txt, threads2-busy.txt, sizes-N.txt, meshlibs-full.txt, meshlibs-faces.txt, e2e.txt;
-any may be missing).
+threads2.txt, threads2-busy.txt, stages-SCHEME-LEVEL.txt, refine-nostream.txt, sizes-N.txt,
+meshlibs-full.txt, meshlibs-faces.txt, e2e.txt; any may be missing).
 Each table of the page sits between `<!-- bench:NAME -->` and `<!-- /bench:NAME -->` and is
 replaced; without --page the tables are printed. The chart is a plain SVG (no plotting
 library needed): the ratio to OpenSubdiv per scheme and level, and time against mesh size.
@@ -176,6 +176,52 @@ def threads_table(run):
     return {"threads": f"Load average at the start: {load_of(h1)} (1 thread), {load_of(h2)} (2 threads).\n\n"
             + table(["scheme, level", "1 thread, wall ms", "2 threads", "speed-up", "2 threads, other core busy",
                      "speed-up", "bits"], body)}
+
+
+def stages_table(run):
+    """subdiv-bench-stages: totals on one and two threads, and the stages that lose most on two."""
+    body, load = [], "?"
+    for scheme in ("catmull-clark", "loop"):
+        for level in ("1", "2"):
+            header, recs = parse(os.path.join(run, f"stages-{scheme}-{level}.txt"))
+            totals = {r.get("threads"): r for r in recs if r["_first"] == "total"}
+            if "1" not in totals or "2" not in totals:
+                continue
+            load = load_of(header)
+            stages = [r for r in recs if r["_first"].startswith("stage=")]
+            stages.sort(key=lambda r: -(num(r, "loss_ms") or 0))
+            worst = ", ".join(f"{r['stage']} {num(r, 'loss_ms'):.1f} ({num(r, 'cores'):.2f} cores)"
+                              for r in stages[:4] if num(r, "loss_ms") is not None)
+            one, two = num(totals["1"], "wall_ms"), num(totals["2"], "wall_ms")
+            body.append([f"{NAMES.get(scheme, scheme)} {level}", ms(one), ms(two),
+                         f"**{one / two:.2f}x**" if one and two else "–", worst])
+    if not body:
+        return {}
+    return {"stages": f"Load average at the start: {load}.\n\n"
+            + table(["scheme, level", "1 thread, wall ms", "2 threads", "speed-up",
+                     "stages losing most on 2 threads: loss ms (cores)"], body)}
+
+
+def streaming_table(run):
+    """refine.txt against refine-nostream.txt (SUBDIV_STREAMING_STORES=0): each one's ratios to OpenSubdiv."""
+    _, on = parse(os.path.join(run, "refine.txt"))
+    header, off = parse(os.path.join(run, "refine-nostream.txt"))
+    body = []
+    for scheme, level in cases(off):
+        def warm(recs):
+            w = rows(recs, _first=scheme, level=level, memory="warm", clock="user", topology="default")
+            return w[0] if w else {}
+        a, b = warm(on), warm(off)
+        if not a or not b:
+            continue
+        body.append([f"{NAMES.get(scheme, scheme)} {level}", ratio(num(a, "ratio")), ratio(num(b, "ratio")),
+                     ratio(num(a, "topo_ratio")), ratio(num(b, "topo_ratio")),
+                     ratio(num(a, "geom_ratio")), ratio(num(b, "geom_ratio"))])
+    if not body:
+        return {}
+    return {"streaming": f"Load average at the start: {load_of(header)} (without).\n\n"
+            + table(["scheme, level", "total ratio: streaming", "without", "topology: streaming", "without",
+                     "geometry: streaming", "without"], body)}
 
 
 def size_points(run):
@@ -349,7 +395,8 @@ def main():
     if not os.path.isdir(a.run):
         sys.exit(f"bench_report: {a.run} is not a folder; give the folder scripts/benchmarks.sh wrote")
     tables = {}
-    for make in (refine_tables, update_table, threads_table, sizes_table, meshlibs_table, e2e_table):
+    for make in (refine_tables, update_table, threads_table, stages_table, streaming_table, sizes_table,
+                 meshlibs_table, e2e_table):
         tables.update(make(a.run))
     if a.page:
         fill_page(a.page, tables)

@@ -4,8 +4,8 @@
 #
 #   scripts/benchmarks.sh [BUILD_DIR] [OUT_DIR]
 #
-# Needs the Release build of subdiv-bench, subdiv-bench-meshlibs and subdiv
-# (`cmake --build build --target subdiv-bench subdiv-bench-meshlibs subdiv_cli`). Writes each
+# Needs the Release build of subdiv-bench, subdiv-bench-meshlibs, subdiv-bench-stages and subdiv
+# (`cmake --build build --target subdiv-bench subdiv-bench-meshlibs subdiv-bench-stages subdiv_cli`). Writes each
 # program's output into OUT_DIR (default /tmp/subdivkit-bench-<UTC date-time>), then fills the
 # tables of docs/benchmarks.md and draws docs/images/benchmarks.svg from them (PAGE=no leaves
 # the page alone and prints the tables). On a quiet 2-core machine it should run about 25
@@ -14,7 +14,8 @@
 # Environment: ROUNDS (3: worker processes per side, alternating, best of each side),
 # FACES (1000000), QUICK=1 (a smoke run: 20k faces, one round, sizes up to 160k faces, a
 # 150 x 150 torus end to end),
-# SKIP (space-separated parts to leave out: refine update threads sizes meshlibs e2e).
+# SKIP (space-separated parts to leave out: refine update threads stages streaming sizes
+# meshlibs e2e).
 set -eu
 BUILD=${1:-build}
 OUT=${2:-${TMPDIR:-/tmp}/subdivkit-bench-$(date -u +%Y%m%d-%H%M)}
@@ -55,6 +56,22 @@ if wants threads; then
   "$BENCH/subdiv-bench" --faces "$FACES" --side subdivkit --levels 1-2 --repeat 3 --rounds "$ROUNDS" --threads 2 \
     --check off > "$OUT/threads2-busy.txt" || true
   kill "$busy"
+fi
+if wants stages && [ -x "$BENCH/subdiv-bench-stages" ]; then
+  # Where the time goes, stage by stage, on one and two threads (issue 32, item 1).
+  for scheme in catmull-clark loop; do
+    for level in 1 2; do
+      step "stages: $scheme level $level"
+      "$BENCH/subdiv-bench-stages" --scheme "$scheme" --faces "$FACES" --level "$level" --rounds "$((ROUNDS + 2))" \
+        > "$OUT/stages-$scheme-$level.txt" || true
+    done
+  done
+fi
+if wants streaming; then
+  # The same refinement without streaming stores for the last level (util/streaming_stores.h),
+  # to compare with refine.txt: the ratios to OpenSubdiv of both runs.
+  step "OpenSubdiv refine, levels 1-2, no streaming stores"
+  SUBDIV_STREAMING_STORES=0 "$BENCH/subdiv-bench" --faces "$FACES" --levels 1-2 --rounds "$ROUNDS" > "$OUT/refine-nostream.txt"
 fi
 if wants sizes; then
   for f in $SIZES; do

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <optional>
 
 #include "framework/engine/level_passes.h"
 #include "framework/engine/step_preparation.h"
 #include "framework/engine/vertex_parameters.h"
 #include "framework/features/base_tags.h"
+#include "framework/rules/stage_times.h"
 #include "framework/rules/stencil_builder.h"
 #include "framework/rules/step_evaluator.h"
 #include "framework/scheme/scheme.h"
@@ -14,6 +16,7 @@
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
 #include "framework/util/scratch_vector.h"
+#include "framework/util/streaming_stores.h"
 
 namespace subdiv {
 namespace {
@@ -53,6 +56,12 @@ void check_manifold_for(const Scheme& scheme, const Level& level) {
                           scheme.path, scheme.name, splitter_info(scheme.split()).name, where));
 }
 
+// A stage's name for EvaluationSwitches::stage_times: the level it makes, then what it does
+// (nothing to format when no one times).
+std::string stage(const RefineOptions& options, int level, std::string_view what) {
+  return options.evaluation.stage_times ? fmt::format("L{} {}", level, what) : std::string();
+}
+
 // One pass's stencils: its parent's values to the values it writes.
 StencilTable pass_stencils(const LevelPass& pass, const RefineOptions& options) {
   const StepInputs inputs = prepare_step(*pass.scheme, *pass.rules, *pass.parent, pass.level, options, *pass.parameters);
@@ -60,14 +69,25 @@ StencilTable pass_stencils(const LevelPass& pass, const RefineOptions& options) 
                                           pass.features_refined, pass.level, options));
 }
 
+// Output of at least this many bytes is larger than the caches: written with streaming
+// stores when nothing reads it in the refinement (StepContext::stream_output).
+constexpr size_t kStreamBytes = size_t(32) << 20;
+
 // One pass applied to values without a table (rules/step_evaluator.h), into `out`.
+// `last`: the pass writes the hierarchy's last level, which no later pass reads.
 void pass_applied(const LevelPass& pass, const RefineOptions& options, std::span<const double> values,
-                  std::span<double> out, int channels) {
+                  std::span<double> out, int channels, bool last) {
+  StageTimes* times = options.evaluation.stage_times;
+  std::optional<StageTimer> timer(std::in_place, times, stage(options, pass.level + 1, "weight tables"));
   const StepInputs inputs =
       prepare_step(*pass.scheme, *pass.rules, *pass.parent, pass.level, options, *pass.parameters, /*lazy_features=*/true);
-  apply_step_rows(step_context(*pass.scheme, *pass.rules, inputs, *pass.parent, *pass.origins, pass.features_refined,
-                               pass.level, options),
-                  values, out, channels, options.evaluation.row_paths);
+  StepContext context = step_context(*pass.scheme, *pass.rules, inputs, *pass.parent, *pass.origins,
+                                     pass.features_refined, pass.level, options);
+  context.stream_output = last && out.size() * sizeof(double) >= kStreamBytes && streaming_stores_wanted();
+  timer.emplace(times, stage(options, pass.level + 1, "groups, plans, kernels"));
+  StepEvaluator rows(context);
+  timer.reset();
+  rows.apply(values, out, channels, options.evaluation.row_paths);
 }
 
 // A child face inside a hole is a hole (OpenSubdiv's Vtr::Refinement passes the face tag on).
@@ -84,6 +104,8 @@ void pass_holes_down(const Level& parent, SplitResult& step) {
 
 Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const RefineOptions& options) {
   const std::vector<const Scheme*> per_level = schemes_per_level(runs);
+  StageTimes* times = options.evaluation.stage_times;
+  std::optional<StageTimer> timer(std::in_place, times, stage(options, 0, "base tags"));
   // The base level's topological tags, in OpenSubdiv's order (features/base_tags.h).
   tag_boundary_holes(base, options.features.boundary);
   sharpen_non_manifold(base);
@@ -92,6 +114,8 @@ Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const Ref
   h.levels.push_back(std::move(base));
   for (size_t l = 0; l < per_level.size(); ++l) {
     const Scheme& scheme = *per_level[l];
+    const int made = int(l) + 1;
+    timer.emplace(times, stage(options, made, "face and manifold checks"));
     if (l == 0 || per_level[l - 1] != per_level[l]) check_face_sizes(scheme, h.levels.back());
     check_manifold_for(scheme, h.levels.back());
     // The last level may be faces only (RefineOptions::faces_only_last_level): then it
@@ -99,12 +123,15 @@ Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const Ref
     const bool faces_only = options.faces_only_last_level && l + 1 == per_level.size() &&
                             scheme.steps.size() == 1 && !scheme.steps.front().nonlinear &&
                             splitter_info(scheme.split()).split_faces_only;
+    timer.emplace(times, stage(options, made, "split"));
     SplitResult step = split(scheme.split(), h.levels.back(), options.first_step + int(l), faces_only);
+    timer.emplace(times, stage(options, made, "tags"));
     if (splitter_info(scheme.split()).engine_propagates_tags && !faces_only)
       propagate_tags(h.levels.back(), step, options.features.crease_method);
     else if (options.features.crease_method == CreaseMethod::Chaikin && !step.chaikin_edge_sharpness.empty())
       step.child.edge_sharpness = std::move(step.chaikin_edge_sharpness);
     pass_holes_down(h.levels.back(), step);
+    timer.reset();
     if (!step.warning.empty()) h.warnings.push_back(fmt::format("level {}: {}", l + 1, step.warning));
     h.levels.push_back(std::move(step.child));
     h.origins.push_back(std::move(step.origins));
@@ -179,7 +206,9 @@ void step_values(std::span<const SchemeRun> runs, const Hierarchy& h, int step, 
                  std::span<double> out, int channels, const RefineOptions& options) {
   if (step < 0 || step + 1 >= int(h.levels.size()))
     throw Error(fmt::format("step_values: step {} is not in 0..{}", step, int(h.levels.size()) - 2));
+  std::optional<StageTimer> timer(std::in_place, options.evaluation.stage_times, stage(options, step + 1, "passes"));
   const LevelPasses prepared(runs, h, options, step, step + 1, "step_values");
+  timer.reset();
   if (values.size() != size_t(h.levels[step].vertex_count) * size_t(channels))
     throw Error(fmt::format("step_values: {} values for {} vertices of {} channels", values.size(),
                             h.levels[step].vertex_count, channels));
@@ -199,8 +228,10 @@ void step_values(std::span<const SchemeRun> runs, const Hierarchy& h, int step, 
   const size_t count = passes.size();
   ScratchVector<double> scratch(count > 1 ? out.size() : 0);
   const auto target = [&](size_t s) { return (count - 1 - s) % 2 == 0 ? out : std::span<double>(scratch); };
-  pass_applied(passes[0], options, values, target(0), channels);
-  for (size_t s = 1; s < count; ++s) pass_applied(passes[s], options, target(s - 1), target(s), channels);
+  const bool last_level = size_t(step) + 2 == h.levels.size();
+  pass_applied(passes[0], options, values, target(0), channels, last_level && count == 1);
+  for (size_t s = 1; s < count; ++s)
+    pass_applied(passes[s], options, target(s - 1), target(s), channels, last_level && s + 1 == count);
 }
 
 void step_values(const Scheme& scheme, const Hierarchy& h, int step, std::span<const double> values,

@@ -18,6 +18,8 @@
 
 namespace subdiv {
 
+class StageTimes;  // rules/stage_times.h
+
 // Parameter name -> one value per vertex of the base mesh.
 using VertexParameters = std::map<std::string, std::vector<double>>;
 
@@ -35,6 +37,9 @@ struct EvaluationSwitches {
   // Where to count the children computed by kernels, plans and the generic interpreter
   // (rules/row_paths.h), or null.
   RowPaths* row_paths = nullptr;
+  // Where to add each stage's wall and CPU time (rules/stage_times.h: topology, weight
+  // tables, the step's set-up, each kind of new point), or null; for benchmarks.
+  StageTimes* stage_times = nullptr;
 };
 
 // How to refine: the surface's shape (features: boundary interpolation and crease method, as

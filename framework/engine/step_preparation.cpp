@@ -73,6 +73,7 @@ StepContext step_context(const Scheme& scheme, const StepRules& step, const Step
                 scheme.path, step.code.get(), level,         plans};
   s.per_vertex = inputs.per_vertex.get();
   s.use_kernels = options.evaluation.use_kernels;
+  s.stage_times = options.evaluation.stage_times;
   s.classify = inputs.features->classify ? &inputs.features->classify : nullptr;
   return s;
 }

@@ -1,5 +1,8 @@
 #include "framework/refine/primal_topology.h"
 #include "framework/util/resize_side_by_side.h"
+#include "framework/util/streaming_stores.h"
+
+#include <cstdint>
 
 #include <algorithm>
 #include <tbb/blocked_range.h>
@@ -119,6 +122,13 @@ void halves(const Level& P, Level& C, Index first_mid) {
 
 namespace {
 
+// Whether a faces-only last level's corners are written with streaming stores: when they
+// are larger than the caches (so nothing would find them there) and 16-byte aligned.
+bool streams(const std::vector<Index>& face_vertices) {
+  return face_vertices.size() * sizeof(Index) >= (size_t(32) << 20) && streaming_stores_wanted() &&
+         reinterpret_cast<std::uintptr_t>(face_vertices.data()) % 16 == 0;
+}
+
 // Child faces (and, with `edges`, their edges and the edges inside parent faces): child
 // face c = (v_i, mid(e_i), face point, mid(e_{i-1})) of parent corner c.
 template <bool edges>
@@ -132,21 +142,32 @@ Level quad_children(const Level& P) {
                         Sized{C.edge_faces, 2 * size_t(2 * E + N)});
   else
     resize_side_by_side(Sized{C.face_offsets, size_t(N) + 1}, Sized{C.face_vertices, 4 * size_t(N)});
-  tbb::parallel_for(Index(0), F, [&](Index f) {
-    const Index o = P.face_offsets[f], k = P.face_size(f);
-    for (Index i = 0; i < k; ++i) {
-      const Index c = o + i, prev = o + (i + k - 1) % k, next = o + (i + 1) % k;
-      const Index v = P.face_vertices[c], e = P.face_edges[c], ep = P.face_edges[prev];
-      Index* fv = &C.face_vertices[4 * size_t(c)];
-      fv[0] = v, fv[1] = V + e, fv[2] = V + E + f, fv[3] = V + ep;
-      C.face_offsets[c + 1] = 4 * (c + 1);
-      if (!edges) continue;
-      Index* fe = &C.face_edges[4 * size_t(c)];
-      fe[0] = half_at(P, e, v), fe[1] = 2 * E + c, fe[2] = 2 * E + prev, fe[3] = half_in(P, ep, v);
-      // Inner edge of corner c: mid(e_i) -> face point; its reverse lies in the next corner's face.
-      C.edge_vertices[2 * (2 * size_t(E) + c)] = V + e, C.edge_vertices[2 * (2 * size_t(E) + c) + 1] = V + E + f;
-      C.edge_faces[2 * (2 * size_t(E) + c)] = c, C.edge_faces[2 * (2 * size_t(E) + c) + 1] = next;
+  // Faces only: the last level, which nothing reads during the refinement, written with
+  // streaming stores (util/streaming_stores.h) when its rows of four are 16-byte aligned.
+  const bool stream = !edges && streams(C.face_vertices);
+  tbb::parallel_for(tbb::blocked_range<Index>(0, F), [&](const tbb::blocked_range<Index>& faces) {
+    for (Index f = faces.begin(); f < faces.end(); ++f) {
+      const Index o = P.face_offsets[f], k = P.face_size(f);
+      for (Index i = 0; i < k; ++i) {
+        const Index c = o + i, prev = o + (i + k - 1) % k, next = o + (i + 1) % k;
+        const Index v = P.face_vertices[c], e = P.face_edges[c], ep = P.face_edges[prev];
+        Index* fv = &C.face_vertices[4 * size_t(c)];
+        if (stream) {
+          stream_store4(fv, v, V + e, V + E + f, V + ep);
+          stream_store(&C.face_offsets[c + 1], 4 * (c + 1));
+          continue;
+        }
+        fv[0] = v, fv[1] = V + e, fv[2] = V + E + f, fv[3] = V + ep;
+        C.face_offsets[c + 1] = 4 * (c + 1);
+        if (!edges) continue;
+        Index* fe = &C.face_edges[4 * size_t(c)];
+        fe[0] = half_at(P, e, v), fe[1] = 2 * E + c, fe[2] = 2 * E + prev, fe[3] = half_in(P, ep, v);
+        // Inner edge of corner c: mid(e_i) -> face point; its reverse lies in the next corner's face.
+        C.edge_vertices[2 * (2 * size_t(E) + c)] = V + e, C.edge_vertices[2 * (2 * size_t(E) + c) + 1] = V + E + f;
+        C.edge_faces[2 * (2 * size_t(E) + c)] = c, C.edge_faces[2 * (2 * size_t(E) + c) + 1] = next;
+      }
     }
+    if (stream) streaming_fence();
   });
   C.face_offsets[0] = 0;
   return C;
@@ -221,23 +242,40 @@ Level triangle_children(const Level& P) {
                         Sized{C.edge_faces, 2 * size_t(2 * E + 3 * F)});
   else
     resize_side_by_side(Sized{C.face_offsets, 4 * size_t(F) + 1}, Sized{C.face_vertices, 12 * size_t(F)});
-  tbb::parallel_for(Index(0), F, [&](Index f) {
-    const Index o = P.face_offsets[f];
-    for (int i = 0; i < 3; ++i) {
-      const int ip = (i + 2) % 3;
-      const Index v = P.face_vertices[o + i], e = P.face_edges[o + i], ep = P.face_edges[o + ip];
-      const Index cf = 4 * f + i, inner = 2 * E + 3 * f + i;
-      Index* fv = &C.face_vertices[3 * size_t(cf)];
-      fv[0] = v, fv[1] = V + e, fv[2] = V + ep;
-      C.face_vertices[3 * size_t(4 * f + 3) + i] = V + e;
-      if (!edges) continue;
-      Index* fe = &C.face_edges[3 * size_t(cf)];
-      fe[0] = half_at(P, e, v), fe[1] = inner, fe[2] = half_in(P, ep, v);
-      C.face_edges[3 * size_t(4 * f + 3) + i] = 2 * E + 3 * f + (i + 1) % 3;
-      C.edge_vertices[2 * size_t(inner)] = V + e, C.edge_vertices[2 * size_t(inner) + 1] = V + ep;
-      C.edge_faces[2 * size_t(inner)] = cf, C.edge_faces[2 * size_t(inner) + 1] = 4 * f + 3;
+  // Faces only: the last level, written with streaming stores (as quad_children) when a
+  // face's 12 corners are 16-byte aligned.
+  const bool stream = !edges && streams(C.face_vertices);
+  tbb::parallel_for(tbb::blocked_range<Index>(0, F), [&](const tbb::blocked_range<Index>& faces) {
+    for (Index f = faces.begin(); f < faces.end(); ++f) {
+      const Index o = P.face_offsets[f];
+      if (stream) {
+        // Corner faces (v_i, mid e_i, mid e_{i-1}), then the middle face (mid e_0, mid e_1, mid e_2).
+        const Index* pv = P.face_vertices.data() + o;
+        const Index m0 = V + P.face_edges[o], m1 = V + P.face_edges[o + 1], m2 = V + P.face_edges[o + 2];
+        Index* fv = &C.face_vertices[12 * size_t(f)];
+        stream_store4(fv, pv[0], m0, m2, pv[1]);
+        stream_store4(fv + 4, m1, m0, pv[2], m2);
+        stream_store4(fv + 8, m1, m0, m1, m2);
+        for (int t = 0; t < 4; ++t) stream_store(&C.face_offsets[4 * f + t + 1], 3 * (4 * f + t + 1));
+        continue;
+      }
+      for (int i = 0; i < 3; ++i) {
+        const int ip = (i + 2) % 3;
+        const Index v = P.face_vertices[o + i], e = P.face_edges[o + i], ep = P.face_edges[o + ip];
+        const Index cf = 4 * f + i, inner = 2 * E + 3 * f + i;
+        Index* fv = &C.face_vertices[3 * size_t(cf)];
+        fv[0] = v, fv[1] = V + e, fv[2] = V + ep;
+        C.face_vertices[3 * size_t(4 * f + 3) + i] = V + e;
+        if (!edges) continue;
+        Index* fe = &C.face_edges[3 * size_t(cf)];
+        fe[0] = half_at(P, e, v), fe[1] = inner, fe[2] = half_in(P, ep, v);
+        C.face_edges[3 * size_t(4 * f + 3) + i] = 2 * E + 3 * f + (i + 1) % 3;
+        C.edge_vertices[2 * size_t(inner)] = V + e, C.edge_vertices[2 * size_t(inner) + 1] = V + ep;
+        C.edge_faces[2 * size_t(inner)] = cf, C.edge_faces[2 * size_t(inner) + 1] = 4 * f + 3;
+      }
+      for (int t = 0; t < 4; ++t) C.face_offsets[4 * f + t + 1] = 3 * (4 * f + t + 1);
     }
-    for (int t = 0; t < 4; ++t) C.face_offsets[4 * f + t + 1] = 3 * (4 * f + t + 1);
+    if (stream) streaming_fence();
   });
   C.face_offsets[0] = 0;
   return C;

@@ -57,7 +57,7 @@ int largest_face_size(const std::vector<TermShape>& terms, const WeightTables& t
 
 FlatKernels::FlatKernels(const StepContext& step, const std::vector<ChildGroup>& groups,
                          const std::vector<TermShape> (&terms)[kElementCount])
-    : step_(step), untagged_(without_sharpness_tags(step.parent)) {
+    : step_(step), untagged_(without_sharpness_tags(step.parent)), plain_(untagged_ && step.parent.manifold()) {
   const Level& L = step.parent;
   const Index element_count[kElementCount] = {L.vertex_count, L.edge_count(), L.face_count(), L.corner_count()};
   for (int k = 0; k < kElementCount; ++k) {
@@ -69,6 +69,8 @@ FlatKernels::FlatKernels(const StepContext& step, const std::vector<ChildGroup>&
   auto new_points_available = [&](const std::vector<TermShape>& t) {
     return (!uses(t, Points::FacePoints) || face_points) && (!uses(t, Points::EdgePoints) || edge_points);
   };
+  if (step.stream_output)
+    if (const std::vector<Element> order = build_order(step, groups); !order.empty()) stream_[int(order.back())] = true;
   const WeightTables& tables = step.tables;
 
   // Vertices: weights per valence n, up to the tables' largest n.
@@ -142,15 +144,17 @@ bool FlatKernels::covers(Element kind) const { return covers_[int(kind)]; }
 Index FlatKernels::run(Element kind, Index begin, Index end, const StepSources& in, double* dst,
                        std::vector<Index>& left, FirstBadRow& bad) const {
   const bool three = in.channels == 3;
-  // One loop per channel count (3, or any) and neighbourhoods (resolved or walked).
-  const bool resolved = resolved_ != nullptr;
+  // One loop per channel count (3, or any) and way of walking (Walk).
+  const Walk walk = resolved_ ? Walk::Resolved : plain_ ? Walk::Plain : Walk::Checked;
   switch (kind) {
     case Element::Vertex:
-      if (resolved) return three ? run_vertices<3, true>(begin, end, in, dst, left, bad) : run_vertices<0, true>(begin, end, in, dst, left, bad);
-      return three ? run_vertices<3, false>(begin, end, in, dst, left, bad) : run_vertices<0, false>(begin, end, in, dst, left, bad);
+      if (walk == Walk::Resolved) return three ? run_vertices<3, Walk::Resolved>(begin, end, in, dst, left, bad) : run_vertices<0, Walk::Resolved>(begin, end, in, dst, left, bad);
+      if (walk == Walk::Plain) return three ? run_vertices<3, Walk::Plain>(begin, end, in, dst, left, bad) : run_vertices<0, Walk::Plain>(begin, end, in, dst, left, bad);
+      return three ? run_vertices<3, Walk::Checked>(begin, end, in, dst, left, bad) : run_vertices<0, Walk::Checked>(begin, end, in, dst, left, bad);
     case Element::Edge:
-      if (resolved) return three ? run_edges<3, true>(begin, end, in, dst, left, bad) : run_edges<0, true>(begin, end, in, dst, left, bad);
-      return three ? run_edges<3, false>(begin, end, in, dst, left, bad) : run_edges<0, false>(begin, end, in, dst, left, bad);
+      if (walk == Walk::Resolved) return three ? run_edges<3, Walk::Resolved>(begin, end, in, dst, left, bad) : run_edges<0, Walk::Resolved>(begin, end, in, dst, left, bad);
+      if (walk == Walk::Plain) return three ? run_edges<3, Walk::Plain>(begin, end, in, dst, left, bad) : run_edges<0, Walk::Plain>(begin, end, in, dst, left, bad);
+      return three ? run_edges<3, Walk::Checked>(begin, end, in, dst, left, bad) : run_edges<0, Walk::Checked>(begin, end, in, dst, left, bad);
     case Element::Face:
       return three ? run_faces<3>(begin, end, in, dst, left, bad) : run_faces<0>(begin, end, in, dst, left, bad);
     case Element::Corner:
@@ -211,7 +215,7 @@ void FlatKernels::resolve_neighbourhoods() {
 }
 
 // Row r is vertex r; the smooth interior ones.
-template <int C, bool IsResolved>
+template <int C, FlatKernels::Walk W>
 Index FlatKernels::run_vertices(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
                                 FirstBadRow& bad) const {
   const Level& L = step_.parent;
@@ -220,10 +224,15 @@ Index FlatKernels::run_vertices(Index begin, Index end, const StepSources& in, d
   const double* face_points = w.uses_face_points ? in.child(first_child_[int(Element::Face)]) : nullptr;
   const double* edge_points = w.uses_edge_points ? in.child(first_child_[int(Element::Edge)]) : nullptr;
   const int channels = in.channels;
+  const bool stream = stream_[int(Element::Vertex)];
   Index done = 0;
   for (Index v = begin; v < end; ++v) {
     const Index ring_begin = L.vertex_ring_offsets[v], n = L.vertex_ring_offsets[v + 1] - ring_begin;
-    const bool taken = IsResolved ? resolved_->vertex_taken[v] != 0 : takes_vertex(v, n);
+    // Plain: takes_vertex's conditions on a manifold level without tags (smooth_vertex: n > 0).
+    const bool taken = W == Walk::Resolved ? resolved_->vertex_taken[v] != 0
+                       : W == Walk::Plain  ? !L.vertex_on_boundary[v] && n > 0 && n < Index(w.self.size()) &&
+                                                L.vertex_face_offsets[v + 1] - L.vertex_face_offsets[v] == n
+                                           : takes_vertex(v, n);
     if (!taken) {
       left.push_back(v);
       continue;
@@ -233,7 +242,7 @@ Index FlatKernels::run_vertices(Index begin, Index end, const StepSources& in, d
     acc.add(in.vertex(v), w.self[n]);
     if (w.uses_ring) {
       const double w_ring = w.ring[n];
-      if constexpr (IsResolved) {
+      if constexpr (W == Walk::Resolved) {
         const Index* far_ends = resolved_->ring_ends.data() + ring_begin;
         for (Index j = 0; j < n; ++j) acc.add(in.vertex(far_ends[j]), w_ring);
       } else {
@@ -249,15 +258,16 @@ Index FlatKernels::run_vertices(Index begin, Index end, const StepSources& in, d
       const double w_edge = w.edge_points[n];
       for (Index j = 0; j < n; ++j) acc.add(edge_points + size_t(ring[j]) * channels, w_edge);
     }
-    acc.store();
+    if (stream) acc.stream(); else acc.store();
     ++done;
     if (!w.sum_ok[n]) bad.mark(v);
   }
+  if (stream) streaming_fence();
   return done;
 }
 
 // Row r is edge r; the interior smooth ones (takes_edge).
-template <int C, bool IsResolved>
+template <int C, FlatKernels::Walk W>
 Index FlatKernels::run_edges(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
                              FirstBadRow& bad) const {
   const Level& L = step_.parent;
@@ -265,10 +275,18 @@ Index FlatKernels::run_edges(Index begin, Index end, const StepSources& in, doub
   const Index first = first_child_[int(Element::Edge)];
   const double* face_points = w.uses_face_points ? in.child(first_child_[int(Element::Face)]) : nullptr;
   const int channels = in.channels;
+  const bool stream = stream_[int(Element::Edge)];
   Index done = 0;
   for (Index e = begin; e < end; ++e) {
+    constexpr bool IsResolved = W == Walk::Resolved;
     const Index* gathers = IsResolved ? resolved_->edge_gathers.data() + size_t(e) * resolved_->edge_stride : nullptr;
-    if (IsResolved ? gathers[0] == kNone : !takes_edge(e)) {
+    // Plain: takes_edge's conditions on a manifold level without tags (smooth_edge: true).
+    const bool taken = IsResolved            ? gathers[0] != kNone
+                       : W == Walk::Plain    ? L.edge_faces[2 * e + 1] != kNone &&
+                                                (!w.uses_opposite || (L.face_size(L.edge_faces[2 * e]) == 3 &&
+                                                                      L.face_size(L.edge_faces[2 * e + 1]) == 3))
+                                             : takes_edge(e);
+    if (!taken) {
       left.push_back(e);
       continue;
     }
@@ -285,10 +303,11 @@ Index FlatKernels::run_edges(Index begin, Index end, const StepSources& in, doub
       const Index d = IsResolved ? gathers[3] : third_corner(L, faces[1], a, b);
       acc.add(in.vertex(c), w.opposite), acc.add(in.vertex(d), w.opposite);
     }
-    acc.store();
+    if (stream) acc.stream(); else acc.store();
     ++done;
     if (!w.sum_ok) bad.mark(e);
   }
+  if (stream) streaming_fence();
   return done;
 }
 
@@ -304,6 +323,7 @@ Index FlatKernels::run_corners(Index begin, Index end, const StepSources& in, do
   const ChildOrigins& origins = step_.origins;
   const FeatureContexts& F = step_.features;
   const int channels = in.channels;
+  const bool stream = stream_[int(Element::Corner)];
   Index done = 0;
   for (Index r = begin; r < end; ++r) {
     const Index child = first + r, f = origins.parent[child];
@@ -322,10 +342,11 @@ Index FlatKernels::run_corners(Index begin, Index end, const StepSources& in, do
     // Corner j places on from i, without a modulo per point.
     for (Index j = 0; j < k - i; ++j) acc.add(in.vertex(corners[i + j]), around[j]);
     for (Index j = k - i; j < k; ++j) acc.add(in.vertex(corners[i + j - k]), around[j]);
-    acc.store();
+    if (stream) acc.stream(); else acc.store();
     ++done;
     if (!w.sum_ok[k]) bad.mark(r);
   }
+  if (stream) streaming_fence();
   return done;
 }
 
@@ -339,6 +360,7 @@ Index FlatKernels::run_faces(Index begin, Index end, const StepSources& in, doub
   const Index first = first_child_[int(Element::Face)];
   const double* edge_points = w.uses_edge_points ? in.child(first_child_[int(Element::Edge)]) : nullptr;
   const int channels = in.channels;
+  const bool stream = stream_[int(Element::Face)];
   Index done = 0;
   for (Index f = begin; f < end; ++f) {
     const Index corner_begin = L.face_offsets[f], k = L.face_offsets[f + 1] - corner_begin;
@@ -355,10 +377,11 @@ Index FlatKernels::run_faces(Index begin, Index end, const StepSources& in, doub
       const double w_edge = w.edge_points[k];
       for (Index j = 0; j < k; ++j) acc.add(edge_points + size_t(edges[j]) * channels, w_edge);
     }
-    acc.store();
+    if (stream) acc.stream(); else acc.store();
     ++done;
     if (!w.sum_ok[k]) bad.mark(f);
   }
+  if (stream) streaming_fence();
   return done;
 }
 

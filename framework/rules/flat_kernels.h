@@ -106,10 +106,15 @@ private:
   bool takes_vertex(Index v, Index n) const;
   bool takes_edge(Index e) const;
 
-  template <int C, bool IsResolved>
+  // How the loops decide which elements they take: each condition tested (Checked); on a
+  // manifold level without sharpness tags, the boundary and sizes alone (Plain, the same
+  // answers: smooth_vertex and smooth_edge follow from topology there); or read from
+  // resolve_neighbourhoods' lists (Resolved).
+  enum class Walk : std::uint8_t { Checked, Plain, Resolved };
+  template <int C, Walk W>
   Index run_vertices(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
                      FirstBadRow& bad) const;
-  template <int C, bool IsResolved>
+  template <int C, Walk W>
   Index run_edges(Index begin, Index end, const StepSources& in, double* dst, std::vector<Index>& left,
                   FirstBadRow& bad) const;
   template <int C>
@@ -121,6 +126,10 @@ private:
 
   const StepContext& step_;
   const bool untagged_;
+  const bool plain_;  // manifold and untagged: Walk::Plain
+  // StepContext::stream_output: the kind computed last, whose points no rule of the step reads
+  // back, written with streaming stores (the others are read by it, soon).
+  bool stream_[kElementCount] = {};
   // The first child of each kind's run (primal splits: element e's new point is first + e),
   // or kNone when the kind's children are not one run over all its elements.
   Index first_child_[kElementCount];

@@ -4,6 +4,8 @@
 // it reads), or over any number of channels straight in the output (C = 0).
 #include <algorithm>
 
+#include "framework/util/streaming_stores.h"
+
 namespace subdiv {
 
 template <int C>
@@ -15,6 +17,12 @@ public:
   }
   void store() const {
     for (int c = 0; c < C; ++c) out_[c] = sum_[c];
+  }
+  // The same values through streaming (non-temporal) stores: past the caches, without
+  // reading each line in first. For output that nothing reads soon (a refinement's last
+  // level, larger than the caches); streaming_fence() after the loop.
+  void stream() const {
+    for (int c = 0; c < C; ++c) stream_store(out_ + c, sum_[c]);
   }
 
 private:
@@ -30,6 +38,7 @@ public:
     for (int c = 0; c < channels_; ++c) out_[c] += w * p[c];
   }
   void store() const {}
+  void stream() const {}
 
 private:
   double* out_;

@@ -7,6 +7,7 @@
 
 #include "framework/rules/row_plans.h"
 #include "framework/rules/smooth_kernels.h"
+#include "framework/rules/stage_times.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -128,8 +129,10 @@ void StepEvaluator::apply(std::span<const double> src, std::span<double> dst, in
   in.groups = &p.groups;
   in.new_point_base = s.parent.vertex_count;
   const StepSources sources{src.data(), dst.data(), s.parent.vertex_count, channels};
-  for (Element e : p.order)
+  for (Element e : p.order) {
+    const StageTimer timer(s.stage_times, s.stage_times ? fmt::format("L{} {} points", s.level + 1, element_name(e)) : std::string());
     apply_group_rows(s, in, e, p.groups[int(e)], p.kernels, p.plans, sources, dst.data(), paths);
+  }
 }
 
 void apply_step_rows(const StepContext& s, std::span<const double> src, std::span<double> dst, int channels,

@@ -22,6 +22,7 @@
 namespace subdiv {
 
 class RowPlanStore;
+class StageTimes;
 
 // Vertex rules whose weights differ from vertex to vertex (a scheme's per-vertex
 // parameters): vertex v's rules come from tables[group[v]], one table per distinct value.
@@ -45,6 +46,13 @@ struct StepContext {
   // Compute smooth interior elements with the compiled kernels (smooth_kernels.h) in the
   // step evaluator; false is for tests and measurements.
   bool use_kernels = true;
+  // The step writes output that no later step reads and that is larger than the caches (a
+  // refinement's last level): the flat kernels write the points of the kind computed last
+  // (which no rule of the step reads back) with streaming stores (point_accumulator.h).
+  // The same values.
+  bool stream_output = false;
+  // Where to add the time of each kind's new points (stage_times.h), or null.
+  StageTimes* stage_times = nullptr;
   // Set when vertex rules differ per vertex; `tables` then serves the other elements.
   const PerVertexTables* per_vertex = nullptr;
   // Set when `features` are computed on first use (the step evaluator on a level without
