@@ -10,6 +10,7 @@
 #include "framework/pipeline/limit_mesh.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
+#include "support/cli_runner.h"
 #include "support/test_meshes.h"
 #include "unit/limit/limit_meshes.h"
 
