@@ -132,6 +132,27 @@ py::dict stencils(const LimitSurfaceHandle& h, py::handle faces, py::handle uv, 
 
 }  // namespace
 
+// The sampled limit surface as `subdiv evaluate --samples N` writes it (pipeline/limit_mesh.h),
+// as arrays for subdivkit.Mesh.
+py::dict tessellate(const LimitSurfaceHandle& h, int samples, int threads) {
+  subdiv::MeshData m;
+  {
+    py::gil_scoped_release unlocked;
+    const subdiv::ThreadLimit limit(threads);
+    m = subdiv::sampled_limit_mesh(*h.prepared, samples);
+  }
+  std::vector<subdiv::DataArray> point_data = std::move(m.point_data), cell_data = std::move(m.cell_data);
+  std::vector<subdiv::FaceVaryingArray> face_varying = std::move(m.face_varying);
+  m.point_data.clear(), m.cell_data.clear(), m.face_varying.clear();
+  py::dict d = mesh_to_python(std::move(m));
+  d["point_roles"] = roles_to_python(point_data);
+  d["cell_roles"] = roles_to_python(cell_data);
+  d["point_data"] = data_arrays_to_python(std::move(point_data));
+  d["cell_data"] = data_arrays_to_python(std::move(cell_data));
+  d["face_varying"] = face_varying_to_python(std::move(face_varying));
+  return d;
+}
+
 void bind_limit_surface(py::module_& m) {
   auto surface = py::class_<LimitSurfaceHandle>(m, "_LimitSurface");
   m.def("_prepare_limit_surface", &prepare, py::arg("mesh"), py::arg("scheme"), py::arg("params"),
@@ -149,6 +170,7 @@ void bind_limit_surface(py::module_& m) {
       .def("evaluate", &evaluate, py::arg("faces"), py::arg("uv"), py::arg("derivatives"), py::arg("values"),
            py::arg("channels"), py::arg("threads"))
       .def("stencils", &stencils, py::arg("faces"), py::arg("uv"), py::arg("derivatives"), py::arg("threads"))
+      .def("tessellate", &tessellate, py::arg("samples"), py::arg("threads"))
       .def_property_readonly("scheme_label", [](const LimitSurfaceHandle& h) { return h.prepared->scheme_label; })
       .def_property_readonly("triangles", [](const LimitSurfaceHandle& h) { return h.prepared->surface->triangles(); })
       .def_property_readonly("vertex_count",

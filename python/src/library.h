@@ -29,6 +29,7 @@
 #include "framework/topology/level.h"
 #include "framework/util/error.h"
 #include "framework/pipeline/evaluate_request.h"
+#include "framework/pipeline/limit_mesh.h"
 #include "framework/pipeline/level_description.h"
 #include "framework/pipeline/memory_guard.h"
 #include "framework/pipeline/option_names.h"

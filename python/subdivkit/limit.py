@@ -12,7 +12,7 @@ import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error, Scheme
-from .mesh import Mesh, _face_varying_triples
+from .mesh import Mesh, _data_shapes_like, _face_varying_triples
 from .refinement import _scipy_sparse
 
 
@@ -185,6 +185,26 @@ class LimitSurface:
         r = self._prepared.evaluate_face_varying(str(name), f, p, order, int(threads))
         return LimitEvaluation(points=r["points"], du=r.get("du"), dv=r.get("dv"), duu=r.get("duu"),
                                duv=r.get("duv"), dvv=r.get("dvv"))
+
+    def tessellate(self, samples=4, *, threads=0):
+        """The limit surface as a crack-free Mesh, as ``subdiv evaluate --samples N`` writes it.
+
+        samples : segments per face edge: a quad becomes samples x samples quads, a
+            triangle of a triangle scheme samples² triangles, another face of a quad scheme
+            its sub-faces of samples/2 x samples/2 (then samples must be even).
+        threads : worker threads, 0 for all cores.
+
+        Points on a base vertex or edge are evaluated once and shared, so a closed mesh
+        gives a closed surface. point_data: "Normals" (the unit limit normal, role
+        "normals"), "base_face" and "uv" (the face and (u, v) each point was evaluated at);
+        cell_data: "base_face". The mesh's face-varying arrays come back in face_varying,
+        sampled at every corner in the mode ``fvar_boundary`` chose, split at their seams.
+        A mesh with rational weights is sampled as the rational surface.
+        """
+        r = self._prepared.tessellate(int(samples), int(threads))
+        return Mesh._from_arrays(r, name=self.name, point_data=_data_shapes_like(r["point_data"], {}),
+                                 cell_data=_data_shapes_like(r["cell_data"], {}), face_varying=r["face_varying"],
+                                 point_roles=r["point_roles"], cell_roles=r["cell_roles"])
 
     def stencils(self, faces, uv, derivatives=1, *, threads=0):
         """The same points as weights over the control points: a LimitStencils of

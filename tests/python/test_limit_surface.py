@@ -185,3 +185,33 @@ def test_a_sequence_is_the_limit_of_its_last_scheme():
     b = sk.evaluate(cube(), "catmull-clark:2,catmull-clark", faces, uv, derivatives=2)
     for x, y in ((a.points, b.points), (a.du, b.du), (a.dv, b.dv), (a.duu, b.duu)):
         assert np.allclose(x, y, atol=1e-10, equal_nan=True)
+
+
+def test_tessellate_gives_the_closed_sampled_limit_with_its_normals_and_uvs():
+    """LimitSurface.tessellate(N) is `subdiv evaluate --samples N`'s mesh: 6 N² quads for the
+    cube, every edge in two faces (crack-free), each point the limit at its (face, u, v),
+    unit normals along du x dv; the tube's UVs split at their seam (more values than points)."""
+    cube = sk.read_mesh(str(MESHES / "cube.obj"))
+    S = sk.LimitSurface(cube, "catmull-clark")
+    t = S.tessellate(4)
+    assert t.n_faces == 6 * 16
+    edges = {}
+    for f in t.face_list():
+        for a, b in zip(f, np.roll(f, -1)):
+            edges[frozenset((int(a), int(b)))] = edges.get(frozenset((int(a), int(b))), 0) + 1
+    assert set(edges.values()) == {2}
+    r = S.evaluate(t.point_data["base_face"], t.point_data["uv"], derivatives=1)
+    assert np.abs(r.points - t.points).max() == 0
+    normal = np.cross(r.du, r.dv)
+    regular = np.isfinite(normal).all(axis=1)  # no derivatives at the cube's corners: the normal is their limit
+    assert regular.sum() == t.n_points - 8
+    normal = normal[regular] / np.linalg.norm(normal[regular], axis=1)[:, None]
+    assert np.abs(np.einsum("ij,ij->i", normal, t.point_data["Normals"][regular]) - 1).max() < 1e-12
+    assert np.abs(np.linalg.norm(t.point_data["Normals"], axis=1) - 1).max() < 1e-12
+    assert t.point_roles["Normals"] == "normals"
+    assert t.cell_data["base_face"].shape == (t.n_faces,)
+    tube = sk.LimitSurface(sk.read_mesh(str(MESHES / "textured-tube.obj")), "catmull-clark").tessellate(4)
+    values, corners = tube.face_varying["uv"]
+    assert corners.shape == (tube.face_indices.shape[0],) and len(values) > tube.n_points
+    with pytest.raises(sk.Error, match="use an even N"):
+        sk.LimitSurface(sk.read_mesh(str(MESHES / "pyramid.obj")), "catmull-clark").tessellate(3)
