@@ -5,6 +5,7 @@
 
 #include "bindings.h"
 #include "framework/io/mesh_seams.h"
+#include "framework/io/mesh_validate.h"
 #include "framework/util/quoted_text.h"
 
 namespace subdivkit {
@@ -99,6 +100,16 @@ void bind_mesh_io(py::module_& m) {
   m.def("_write_mesh", &write, py::arg("path"), py::arg("mesh"), py::arg("point_data"), py::arg("cell_data"),
         py::arg("face_varying"),
         "Writes a Mesh (subdivkit.write_mesh checks the arguments first).");
+  m.def(
+      "_check_mesh",
+      [](py::handle mesh, py::handle point_data, py::handle cell_data, const std::string& what) {
+        subdiv::MeshData data = mesh_from_python(mesh);
+        data.point_data = data_arrays_from(point_data, data.vertex_count(), "point data");
+        data.cell_data = data_arrays_from(cell_data, data.face_count(), "cell data");
+        subdiv::validate_mesh_data(data, what);
+      },
+      py::arg("mesh"), py::arg("point_data"), py::arg("cell_data"), py::arg("what"),
+      "Refuses (subdivkit.Error) a Mesh that write_mesh would refuse: the conversions' check.");
   m.def("_input_formats", &subdiv::supported_input_formats, "The extensions read_mesh reads.");
   m.def("_output_formats", &subdiv::supported_output_formats, "The extensions write_mesh writes.");
 }
