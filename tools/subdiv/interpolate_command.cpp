@@ -199,11 +199,12 @@ void run(const InterpolateArgs& a) {
   const ThreadLimit thread_limit(a.threads, "--threads");
   if (!thread_limit.note().empty()) fmt::print(stderr, "subdiv: note: {}\n", thread_limit.note());
 
-  const MeshData mesh = read_mesh(a.mesh);
+  Progress progress(false, a.quiet);
+  progress.say(fmt::format("reading {}", a.mesh));  // the bar `subdiv refine` draws while reading
+  const MeshData mesh = read_mesh(a.mesh, [&progress](double done) { progress.fraction(done); });
   InterpolateRequest request = request_from(a, mesh);
   apply_lambda(a, request, mesh.vertex_count());
   const std::vector<std::uint8_t> moving = request.moving;
-  Progress progress;
   std::vector<std::string> log;
   show_iterations(request, progress, a.verbose, log);
   const InterpolateResult r = interpolate_mesh(std::move(request));
