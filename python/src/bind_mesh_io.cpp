@@ -32,7 +32,7 @@ std::vector<std::string> left_out(const std::string& ext, const std::vector<subd
                                   bool per_point) {
   std::vector<std::string> names;
   for (const auto& a : arrays)
-    if (!format_holds(ext, a, per_point)) names.push_back(fmt::format("'{}'", a.name));
+    if (!format_holds(ext, a, per_point)) names.push_back(fmt::format("{}", subdiv::quoted(a.name)));
   return names;
 }
 
@@ -51,8 +51,8 @@ void write(const std::string& path, py::handle mesh, py::handle point_data, py::
       for (auto& name : left_out(ext, data.cell_data, false)) lost.push_back(std::move(name));
       if (!lost.empty() &&
           PyErr_WarnEx(PyExc_UserWarning,
-                       subdiv::terminal_safe(fmt::format("write_mesh('{}'): {} files have no place for point or cell "
-                                   "data {}; use .ply, .vtp or .pvd to keep it", path, ext, fmt::join(lost, ", ")))
+                       subdiv::terminal_safe(fmt::format("write_mesh({}): {} files have no place for point or cell "
+                                   "data {}; use .ply, .vtp or .pvd to keep it", subdiv::quoted(path), ext, fmt::join(lost, ", ")))
                            .c_str(), 1) < 0)
         throw py::error_already_set();  // warnings filtered into errors
     }

@@ -68,7 +68,7 @@ void write_csv(const std::filesystem::path& out, const SurfacePoints& queries, c
         for (size_t c = 0; c < size_t(e.channels); ++c) f << ',' << number(e.position[i * size_t(e.channels) + c]);
       f << '\n';
     }
-    if (!f) throw Error(fmt::format("cannot write '{}'", out.string()));
+    if (!f) throw Error(fmt::format("cannot write {}", subdiv::quoted(out.string())));
   });
 }
 
@@ -115,9 +115,9 @@ void run(const EvaluateArgs& a) {
   if (a.limit && a.adaptive < 0) throw Error("--limit goes with --adaptive L");
   const std::string ext = lowercase_extension(a.output);
   if (!a.at.empty() && ext != ".csv")
-    throw Error(fmt::format("-o '{}': --at writes .csv (face,u,v,x,y,z[,du_*,dv_*[,duu_*,duv_*,dvv_*]])", a.output));
+    throw Error(fmt::format("-o {}: --at writes .csv (face,u,v,x,y,z[,du_*,dv_*[,duu_*,duv_*,dvv_*]])", subdiv::quoted(a.output)));
   if ((a.samples > 0 || a.adaptive >= 0) && ext == ".csv")
-    throw Error(fmt::format("-o '{}': --samples and --adaptive write a mesh (.vtp, .obj, .ply, .off, .stl)", a.output));
+    throw Error(fmt::format("-o {}: --samples and --adaptive write a mesh (.vtp, .obj, .ply, .off, .stl)", subdiv::quoted(a.output)));
   const int threads = a.threads > 0 ? a.threads : int(tbb::this_task_arena::max_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
   Progress progress;
