@@ -5,11 +5,13 @@
 // hole, so faces of every kind and the refused hole are reachable.
 //
 // Beyond "only subdiv::Error": every accepted point must be one the check accepts, lie in
-// [0, 1]^2, and evaluate to finite numbers; the parser must keep face and (u, v) in step.
+// its face's domain (Bfr's: [0, 1]^2, an n-gon's sub-faces tiled on a wider grid), and
+// evaluate to finite numbers; the parser must keep face and (u, v) in step.
 #include <cmath>
 
 #include "fuzz_support.h"
 #include "framework/io/mesh_level.h"
+#include "framework/limit/face_domain.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/pipeline/points_file.h"
 #include "framework/scheme/scheme_registry.h"
@@ -53,12 +55,20 @@ const subdiv::LimitSurface& surface() {
   return s;
 }
 
+// The largest u or v of a face's domain in Bfr's parameterisation: 1 for a quad or a
+// triangle, the grid width of its sub-faces for an n-gon (a pentagon's tiles span [0, 3]).
+double extent(Index face) {
+  const Index n = mesh().face_offsets[size_t(face) + 1] - mesh().face_offsets[size_t(face)];
+  return n <= 4 ? 1.0 : double(subdiv::sub_face_columns(int(n)));
+}
+
 void check_points(const subdiv::SurfacePoints& points) {
   if (points.uv.size() != 2 * points.faces.size()) finding("faces and (u, v) out of step");
   for (std::size_t i = 0; i < points.size(); ++i) {
     const double u = points.uv[2 * i], v = points.uv[2 * i + 1];
     if (!surface().check(points.faces[i], u, v).empty()) finding("a point the check refuses was accepted");
-    if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1)) finding("an accepted (u, v) outside [0, 1]^2");
+    if (!(u >= 0 && u <= extent(points.faces[i]) && v >= 0 && v <= extent(points.faces[i])))
+      finding("an accepted (u, v) outside the face's domain");
     const subdiv::LimitSample s = surface().evaluate(points.faces[i], u, v, mesh().positions, 3, 1);
     for (const double x : s.position)
       if (!std::isfinite(x)) finding("a limit point is not finite");
