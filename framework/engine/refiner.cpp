@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "framework/engine/level_passes.h"
+#include "framework/engine/step_progress.h"
 #include "framework/engine/step_preparation.h"
 #include "framework/engine/vertex_parameters.h"
 #include "framework/features/base_tags.h"
@@ -198,7 +199,11 @@ void step_values(std::span<const SchemeRun> runs, const Hierarchy& h, int step, 
   ScratchVector<double> scratch(count > 1 ? out.size() : 0);
   const auto target = [&](size_t s) { return (count - 1 - s) % 2 == 0 ? out : std::span<double>(scratch); };
   pass_applied(passes[0], options, values, target(0), channels);
-  for (size_t s = 1; s < count; ++s) pass_applied(passes[s], options, target(s - 1), target(s), channels);
+  StepProgressScope::tell(1.0 / double(count));
+  for (size_t s = 1; s < count; ++s) {
+    pass_applied(passes[s], options, target(s - 1), target(s), channels);
+    StepProgressScope::tell(double(s + 1) / double(count));
+  }
 }
 
 void step_values(const Scheme& scheme, const Hierarchy& h, int step, std::span<const double> values,

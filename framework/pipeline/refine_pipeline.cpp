@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "framework/engine/step_progress.h"
 #include "framework/io/feature_angle.h"
 #include "framework/io/feature_file.h"
 #include "framework/io/mesh_cleanup.h"
@@ -36,12 +38,14 @@ void say_done(const RefineRequest& r, double done) {
 }
 
 // A level's values cost about its faces' worth of work: the share of the levels' work
-// done when `finished` levels are.
-double levels_done(const Hierarchy& h, int finished) {
+// done when `finished` levels are, and the share `next` (0 to 1) of the level after them.
+double levels_done(const Hierarchy& h, int finished, double next = 0) {
   double total = 0, done = 0;
   for (size_t l = 1; l < h.levels.size(); ++l) {
-    total += double(h.levels[l].face_count()) + 1;
-    if (int(l) <= finished) done += double(h.levels[l].face_count()) + 1;
+    const double work = double(h.levels[l].face_count()) + 1;
+    total += work;
+    if (int(l) <= finished) done += work;
+    else if (int(l) == finished + 1) done += next * work;
   }
   return total > 0 ? done / total : 1.0;
 }
@@ -288,13 +292,23 @@ std::vector<LevelData> refine_level_data(const PreparedRefinement& p, const Hier
   // refined with them as point data, by the same rules, in the same pass.
   if (p.rational) to_homogeneous(levels.front().positions, weights_of(levels.front(), p.weights_name)->values);
   if (seq.total_levels > 0) say_done(r, 0.0);
+  // The bar moves within a level too: the engine tells each pass of the level's step (the
+  // level's end is told below, once its points are checked).
+  int level = 0;
+  const StepProgressScope::Report within = [&](double share) {
+    if (share < 1) say_done(r, levels_done(h, level, share));
+  };
+  std::optional<StepProgressScope> passes;
+  if (r.progress_fraction) passes.emplace(within);
   for (int l = 0; l < seq.total_levels; ++l) {
     say(r, fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
+    level = l;
     levels.push_back(next_level_data(seq.runs, h, l, levels.back(), options));
     check_refined_points(levels.back(), l + 1, mesh.positions, r);
     if (!r.keep_all_levels) levels[size_t(l)] = {};
     say_done(r, levels_done(h, l + 1));
   }
+  passes.reset();  // the face-varying steps below are not the levels' bar
   if (p.rational) project_levels(levels, p.weights_name, mesh.positions);
   rename_weights(levels, p);
   for (const FaceVaryingArray& a : mesh.face_varying) {
