@@ -55,11 +55,12 @@ const subdiv::LimitSurface& surface() {
   return s;
 }
 
-// The largest u or v of a face's domain in Bfr's parameterisation: 1 for a quad or a
-// triangle, the grid width of its sub-faces for an n-gon (a pentagon's tiles span [0, 3]).
+// The largest u or v of a face's domain in Bfr's parameterisation under a quad split: 1 for
+// a quad, the grid width of its sub-faces for any other face (a triangle's tiles span [0, 2],
+// a pentagon's [0, 3]).
 double extent(Index face) {
   const Index n = mesh().face_offsets[size_t(face) + 1] - mesh().face_offsets[size_t(face)];
-  return n <= 4 ? 1.0 : double(subdiv::sub_face_columns(int(n)));
+  return n == 4 ? 1.0 : double(subdiv::sub_face_columns(int(n)));
 }
 
 void check_points(const subdiv::SurfacePoints& points) {
