@@ -40,6 +40,7 @@ fuzzers=(
   "fuzz_refine|json|16384|tests/fuzz/seeds/refine/*"
   "fuzz_write_read|write|2048|tests/fuzz/seeds/write/*"
   "fuzz_plugin_file|elf|262144|@so"
+  "fuzz_points_file|points|4096|tests/fuzz/seeds/points/*"
 )
 
 # Seeds in formats the examples do not come in: the example meshes written by `subdiv`.

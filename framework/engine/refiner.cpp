@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "framework/engine/level_passes.h"
+#include "framework/engine/step_progress.h"
 #include "framework/engine/step_preparation.h"
 #include "framework/engine/vertex_parameters.h"
 #include "framework/features/base_tags.h"
@@ -230,8 +231,11 @@ void step_values(std::span<const SchemeRun> runs, const Hierarchy& h, int step, 
   const auto target = [&](size_t s) { return (count - 1 - s) % 2 == 0 ? out : std::span<double>(scratch); };
   const bool last_level = size_t(step) + 2 == h.levels.size();
   pass_applied(passes[0], options, values, target(0), channels, last_level && count == 1);
-  for (size_t s = 1; s < count; ++s)
+  StepProgressScope::tell(1.0 / double(count));
+  for (size_t s = 1; s < count; ++s) {
     pass_applied(passes[s], options, target(s - 1), target(s), channels, last_level && s + 1 == count);
+    StepProgressScope::tell(double(s + 1) / double(count));
+  }
 }
 
 void step_values(const Scheme& scheme, const Hierarchy& h, int step, std::span<const double> values,

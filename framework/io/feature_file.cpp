@@ -11,6 +11,7 @@
 #include "framework/util/input_errors.h"
 #include "framework/util/input_file.h"
 #include "framework/util/json_text_check.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -88,8 +89,8 @@ private:
       for (const char* a : allowed) ok = ok || key == a;
       if (!ok) {
         std::string names;
-        for (const char* a : allowed) names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", a);
-        fail(where, fmt::format("unknown key \"{}\"; an entry here may have {}", key, names));
+        for (const char* a : allowed) names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", escaped(a));
+        fail(where, fmt::format("unknown key \"{}\"; an entry here may have {}", escaped(key), names));
       }
     }
   }

@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "framework/io/format_registry.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -51,8 +52,8 @@ std::string unsupported_format_hint(const std::filesystem::path& file) {
   // Registered VTK IO reads .vtp and .vtk; a .pvd is an index of level files, not a mesh.
   if (ext == ".pvd" && contains(registered_input_extensions(), ".vtp"))
     return fmt::format("; a .pvd is ParaView's index of level files, not a mesh: read one of them instead, e.g. "
-                       "'{}'",
-                       (file.parent_path() / (file.stem().string() + "_levels") / "level_0.vtp").string());
+                       "{}",
+                       subdiv::quoted((file.parent_path() / (file.stem().string() + "_levels") / "level_0.vtp").string()));
   return "; VTK formats need SubdivKit's VTK file IO, which this program was built without (link SubdivKit::vtkio "
          "and call register_vtk_formats())";
 }

@@ -16,8 +16,8 @@ namespace subdiv {
 MeshData read_mesh(const std::filesystem::path& file, const std::function<void(double done)>& progress) {
   const std::string ext = lowercase_extension(file);
   if (!is_supported_input(file))
-    throw Error(fmt::format("cannot read '{}': unknown mesh format '{}'; supported: {}{}",
-                            escaped(file.string()), ext.empty() ? "(no extension)" : ext,
+    throw Error(fmt::format("cannot read {}: unknown mesh format {}; supported: {}{}",
+                            subdiv::quoted(file.string()), subdiv::quoted(ext.empty() ? "(no extension)" : ext),
                             supported_input_formats(), unsupported_format_hint(file)));
   const MeshFileReader* registered = registered_mesh_reader(ext);
   std::error_code size_error;

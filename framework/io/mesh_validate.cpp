@@ -115,13 +115,13 @@ void check_data_arrays(const std::vector<DataArray>& arrays, Index tuples, const
     if (a.name.empty()) fail(context, fmt::format("a {} data array has no name", per));
     for (size_t j = 0; j < i; ++j)
       if (arrays[j].name == a.name)
-        fail(context, fmt::format("two {} data arrays are named '{}'", per, escaped(a.name)));
+        fail(context, fmt::format("two {} data arrays are named {}", per, subdiv::quoted(a.name)));
     if (a.components < 1)
-      fail(context, fmt::format("{} data array '{}' has {} components; it needs at least 1", per, escaped(a.name),
+      fail(context, fmt::format("{} data array {} has {} components; it needs at least 1", per, subdiv::quoted(a.name),
                                 a.components));
     if (a.values.size() != size_t(tuples) * size_t(a.components))
       fail(context,
-           fmt::format("{} data array '{}' has {} values, but {} {}s x {} components need {}", per, escaped(a.name),
+           fmt::format("{} data array {} has {} values, but {} {}s x {} components need {}", per, subdiv::quoted(a.name),
                        a.values.size(), tuples, per, a.components, size_t(tuples) * size_t(a.components)));
     if (!a.integer) continue;
     const auto whole = [&](size_t k) { return a.values[k] == std::floor(a.values[k]) && std::abs(a.values[k]) <= 2147483647.0; };
@@ -129,9 +129,9 @@ void check_data_arrays(const std::vector<DataArray>& arrays, Index tuples, const
     for (size_t k = 0; k < a.values.size(); ++k) {
       const double v = a.values[k];
       if (v != std::floor(v) || std::abs(v) > 2147483647.0)
-        fail(context, fmt::format("integer {} data array '{}' holds {} at {} {}, which is not a whole number that "
+        fail(context, fmt::format("integer {} data array {} holds {} at {} {}, which is not a whole number that "
                                   "fits an int",
-                                  per, escaped(a.name), v, per, k / size_t(a.components)));
+                                  per, subdiv::quoted(a.name), v, per, k / size_t(a.components)));
     }
   }
 }
@@ -139,15 +139,15 @@ void check_data_arrays(const std::vector<DataArray>& arrays, Index tuples, const
 void check_face_varying(const MeshData& mesh, std::string_view context) {
   for (const FaceVaryingArray& a : mesh.face_varying) {
     if (a.components < 1 || a.values.size() % size_t(a.components) != 0)
-      fail(context, fmt::format("face-varying array '{}' has {} values, not a whole number of {}-component tuples",
-                                escaped(a.name), a.values.size(), a.components));
+      fail(context, fmt::format("face-varying array {} has {} values, not a whole number of {}-component tuples",
+                                subdiv::quoted(a.name), a.values.size(), a.components));
     if (a.indices.size() != mesh.face_vertices.size())
-      fail(context, fmt::format("face-varying array '{}' has {} corner indices for {} face corners", escaped(a.name),
+      fail(context, fmt::format("face-varying array {} has {} corner indices for {} face corners", subdiv::quoted(a.name),
                                 a.indices.size(), mesh.face_vertices.size()));
     for (size_t c = 0; c < a.indices.size(); ++c)
       if (a.indices[c] < 0 || a.indices[c] >= a.value_count())
-        fail(context, fmt::format("face-varying array '{}': face corner {} uses value {}, but there are {} values",
-                                  escaped(a.name), c, a.indices[c], a.value_count()));
+        fail(context, fmt::format("face-varying array {}: face corner {} uses value {}, but there are {} values",
+                                  subdiv::quoted(a.name), c, a.indices[c], a.value_count()));
   }
 }
 

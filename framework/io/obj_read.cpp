@@ -173,9 +173,9 @@ void ObjReader::warn_unknown_statements() {
       for (std::size_t i = 0; i < std::min(at.size(), kShown); ++i) where += fmt::format("{}{}", i ? ", " : " ", at[i]);
       if (at.size() > kShown) where += fmt::format(" and {} more", at.size() - kShown);
     }
-    mesh_.warnings.push_back(fmt::format("{}: {}: skipped the unknown statement '{}'; it is not part of the OBJ "
+    mesh_.warnings.push_back(fmt::format("{}: {}: skipped the unknown statement {}; it is not part of the OBJ "
                                          "format (keywords are lower case: v, vt, vn, f, l, t, g, o, s, usemtl, ...)",
-                                         escaped(file_.string()), where, printable(keyword)));
+                                         escaped(file_.string()), where, subdiv::quoted(printable(keyword))));
   }
 }
 
@@ -186,7 +186,7 @@ void ObjReader::vertex(Tokens& tokens) {
   while (tokens.next(token)) {
     double value;
     if (!parse_double(token, value))
-      fail(fmt::format("expected a number in 'v x y z', got '{}'", token));
+      fail(fmt::format("expected a number in 'v x y z', got {}", subdiv::quoted(token)));
     if (count < 3) xyz[count] = value;
     else if (count == 3) w = value;
     ++count;  // colours after xyz (6 or 7 values) are allowed and ignored
@@ -223,7 +223,7 @@ Index ObjReader::vertex_reference(std::string_view token) {
   const std::string_view head = token.substr(0, token.find('/'));
   long long r;
   if (!parse_integer(head, r))
-    fail(fmt::format("expected a vertex number like 7, 7/2, 7//3 or 7/2/3, got '{}'", token));
+    fail(fmt::format("expected a vertex number like 7, 7/2, 7//3 or 7/2/3, got {}", subdiv::quoted(token)));
   const long long known = mesh_.vertex_count();
   if (r == 0) fail("vertex number 0 is invalid: OBJ numbers vertices from 1");
   if (r < 0) {
@@ -250,14 +250,14 @@ void ObjReader::attribute(Tokens& tokens, int slot) {
   while (tokens.next(token)) {
     double value;
     if (!parse_double(token, value) || !std::isfinite(value))
-      fail(fmt::format("expected a finite number in '{}', got '{}'", keyword, token));
+      fail(fmt::format("expected a finite number in {}, got {}", subdiv::quoted(keyword), subdiv::quoted(token)));
     a.values.push_back(value);
     ++count;
   }
-  if (count < 1 || count > 3) fail(fmt::format("'{}' takes 1 to 3 numbers, this one has {}", keyword, count));
+  if (count < 1 || count > 3) fail(fmt::format("{} takes 1 to 3 numbers, this one has {}", subdiv::quoted(keyword), count));
   if (a.components == 0) a.components = count;
   if (count != a.components)
-    fail(fmt::format("this '{}' has {} numbers, the first one {}; give every {} the same count", keyword, count,
+    fail(fmt::format("this {} has {} numbers, the first one {}; give every {} the same count", subdiv::quoted(keyword), count,
                      a.components, keyword));
 }
 
@@ -272,10 +272,10 @@ void ObjReader::corner_attributes(std::string_view token) {
     long long r = -1;
     if (!part.empty()) {
       if (!parse_integer(part, r) || r == 0)
-        fail(fmt::format("'{}': expected a {} number after the vertex number", token, slot == 0 ? "vt" : "vn"));
+        fail(fmt::format("{}: expected a {} number after the vertex number", subdiv::quoted(token), slot == 0 ? "vt" : "vn"));
       const long long known = (long long)(a.values.size() / std::max(1, a.components));
       r = r < 0 ? known + r : r - 1;
-      if (r < 0) fail(fmt::format("'{}': a relative {} number reaches before the first one", token, slot == 0 ? "vt" : "vn"));
+      if (r < 0) fail(fmt::format("{}: a relative {} number reaches before the first one", subdiv::quoted(token), slot == 0 ? "vt" : "vn"));
     }
     a.corners.push_back(r);
     std::size_t& seen = r >= 0 ? a.line_with : a.line_without;
@@ -344,35 +344,35 @@ Tag ObjReader::parse_tag(Tokens& tokens) {
     const std::size_t slash = k < 2 ? counts.find('/', at) : counts.size();
     if (slash == std::string_view::npos || !parse_integer(counts.substr(at, slash - at), n[k]) ||
         n[k] < 0)
-      fail(fmt::format("tag '{}': expected the argument counts as ints/floats/strings, e.g. "
-                       "2/1/0, got '{}'",
-                       tag.name, counts));
+      fail(fmt::format("tag {}: expected the argument counts as ints/floats/strings, e.g. "
+                       "2/1/0, got {}",
+                       subdiv::quoted(tag.name), subdiv::quoted(counts)));
     at = slash + 1;
   }
   std::string_view token;
   for (long long i = 0; i < n[0]; ++i) {
     long long v;
     if (!tokens.next(token) || !parse_integer(token, v))
-      fail(fmt::format("tag '{}' announces {} integers ({}) but integer {} is {}", tag.name, n[0],
-                       counts, i + 1, token.empty() ? "missing" : fmt::format("'{}'", token)));
+      fail(fmt::format("tag {} announces {} integers ({}) but integer {} is {}", subdiv::quoted(tag.name), n[0],
+                       counts, i + 1, token.empty() ? "missing" : fmt::format("{}", subdiv::quoted(token))));
     tag.ints.push_back(v);
     token = {};
   }
   for (long long i = 0; i < n[1]; ++i) {
     double v;
     if (!tokens.next(token) || !parse_double(token, v))
-      fail(fmt::format("tag '{}' announces {} numbers ({}) after its integers but number {} "
+      fail(fmt::format("tag {} announces {} numbers ({}) after its integers but number {} "
                        "is {}",
-                       tag.name, n[1], counts, i + 1,
-                       token.empty() ? "missing" : fmt::format("'{}'", token)));
+                       subdiv::quoted(tag.name), n[1], counts, i + 1,
+                       token.empty() ? "missing" : fmt::format("{}", subdiv::quoted(token))));
     tag.floats.push_back(v);
     token = {};
   }
   long long strings = 0;
   while (tokens.next(token)) ++strings, tag.strings.push_back(token);
   if (strings != n[2])
-    fail(fmt::format("tag '{}' announces {} strings ({}) after its numbers but has {}",
-                     tag.name, n[2], counts, strings));
+    fail(fmt::format("tag {} announces {} strings ({}) after its numbers but has {}",
+                     subdiv::quoted(tag.name), n[2], counts, strings));
   return tag;
 }
 
@@ -382,9 +382,9 @@ void ObjReader::tag(Tokens& tokens) {
   if (tag.name == "corner") return corner_tag(tag);
   if (tag.name == "hole") return hole_tag(tag);
   if (tag.name == "vertexedit" || tag.name == "edgeedit" || tag.name == "faceedit")
-    fail(fmt::format("tag '{}' is a hierarchical edit, which OpenSubdiv 3 no longer supports and SubdivKit "
+    fail(fmt::format("tag {} is a hierarchical edit, which OpenSubdiv 3 no longer supports and SubdivKit "
                      "does not either; remove the line (or apply the edit to the mesh itself)",
-                     tag.name));
+                     subdiv::quoted(tag.name)));
   option_tag(tag);
 }
 
@@ -401,7 +401,7 @@ void ObjReader::hole_tag(const Tag& tag) {
 void ObjReader::option_tag(const Tag& tag) {
   auto one_int = [&](long long lo, long long hi, const char* meaning) {
     if (tag.ints.size() != 1 || tag.ints[0] < lo || tag.ints[0] > hi)
-      fail(fmt::format("tag '{}' takes one integer from {} to {} ({}), e.g. 't {} 1/0/0 {}'", tag.name, lo, hi,
+      fail(fmt::format("tag {} takes one integer from {} to {} ({}), e.g. 't {} 1/0/0 {}'", subdiv::quoted(tag.name), lo, hi,
                        meaning, tag.name, lo));
     return int(tag.ints[0]);
   };
@@ -411,7 +411,7 @@ void ObjReader::option_tag(const Tag& tag) {
     if (tag.strings.size() == 1)
       for (auto a : allowed)
         if (tag.strings[0] == a) return std::string(a);
-    fail(fmt::format("tag '{}' takes one string, {}, e.g. 't {} 0/0/1 {}'", tag.name, names, tag.name,
+    fail(fmt::format("tag {} takes one string, {}, e.g. 't {} 0/0/1 {}'", subdiv::quoted(tag.name), names, tag.name,
                      *allowed.begin()));
   };
   MeshOptions& o = mesh_.options;
@@ -428,10 +428,10 @@ void ObjReader::option_tag(const Tag& tag) {
     if (tag.strings.empty() && tag.ints.size() == 1) o.smooth_triangles = tag.ints[0] ? "smooth" : "catmark";
     else o.smooth_triangles = one_string({"smooth", "catmark"});
   } else {
-    fail(fmt::format("tag '{}' is not one of OpenSubdiv's tags (crease, corner, hole, interpolateboundary, "
+    fail(fmt::format("tag {} is not one of OpenSubdiv's tags (crease, corner, hole, interpolateboundary, "
                      "creasemethod, smoothtriangles, facevaryinginterpolateboundary, facevaryingpropagatecorners); "
                      "remove the line",
-                     tag.name));
+                     subdiv::quoted(tag.name)));
   }
 }
 

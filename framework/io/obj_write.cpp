@@ -62,9 +62,9 @@ const DataArray* rational_weights(const MeshData& mesh) {
 void check_float_range(const std::vector<double>& values, int stride, const char* what, const path& shown) {
   for (std::size_t i = 0; i < values.size(); ++i)
     if (std::abs(values[i]) > double(std::numeric_limits<float>::max()))
-      throw Error(fmt::format("cannot write '{}': {} {} has the value {}, beyond the 32-bit float range OBJ readers "
+      throw Error(fmt::format("cannot write {}: {} {} has the value {}, beyond the 32-bit float range OBJ readers "
                               "use (VTK reads it as another number); write .ply or .vtp, which store doubles",
-                              escaped(shown.string()), what, i / std::size_t(stride), values[i]));
+                              subdiv::quoted(shown.string()), what, i / std::size_t(stride), values[i]));
 }
 
 }  // namespace

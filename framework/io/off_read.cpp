@@ -19,6 +19,7 @@
 
 #include "framework/io/readers.h"
 #include "framework/io/text_input.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
@@ -69,7 +70,7 @@ long long OffReader::integer(Tokens& tokens, std::string_view what) {
   std::string_view token;
   long long value;
   if (!tokens.next(token)) fail(fmt::format("expected {}, but the line ends", what));
-  if (!parse_integer(token, value)) fail(fmt::format("expected {}, got '{}'", what, token));
+  if (!parse_integer(token, value)) fail(fmt::format("expected {}, got {}", what, subdiv::quoted(token)));
   return value;
 }
 
@@ -80,9 +81,9 @@ void OffReader::header() {
       keyword.substr(keyword.size() - 3) != "OFF")
     fail("expected the header keyword OFF (or COFF, NOFF, STOFF...) on the first line");
   if (keyword.find('4') != std::string_view::npos || keyword.find('n') != std::string_view::npos)
-    fail(fmt::format("'{}' (homogeneous or n-dimensional OFF) is not supported; write plain "
+    fail(fmt::format("{} (homogeneous or n-dimensional OFF) is not supported; write plain "
                      "3D OFF",
-                     keyword));
+                     subdiv::quoted(keyword)));
   const std::string_view prefix = keyword.substr(0, keyword.size() - 3);
   normals_ = prefix.find('N') != std::string_view::npos;
   colors_ = prefix.find('C') != std::string_view::npos;
@@ -106,7 +107,7 @@ void OffReader::vertex(Tokens& tokens, Index number) {
   for (double& c : xyz) {
     if (!tokens.next(token))
       fail(fmt::format("vertex {} needs 3 coordinates 'x y z'", number));
-    if (!parse_double(token, c)) fail(fmt::format("expected a coordinate, got '{}'", token));
+    if (!parse_double(token, c)) fail(fmt::format("expected a coordinate, got {}", subdiv::quoted(token)));
   }
   for (double c : xyz)
     if (!std::isfinite(c))
@@ -116,7 +117,7 @@ void OffReader::vertex(Tokens& tokens, Index number) {
   std::vector<double> extra;
   while (tokens.next(token)) {
     double x;
-    if (!parse_double(token, x)) fail(fmt::format("vertex {}: expected a number, got '{}'", number, token));
+    if (!parse_double(token, x)) fail(fmt::format("vertex {}: expected a number, got {}", number, subdiv::quoted(token)));
     extra.push_back(x);
   }
   const std::size_t needed = (normals_ ? 3 : 0) + (colors_ ? 3 : 0) + (uvs_ ? 2 : 0);

@@ -107,7 +107,7 @@ MeshData read_with_openmesh(const fs::path& file) {
     errors = captured.text();
   }
   if (!ok)
-    throw Error(fmt::format("cannot read '{}': OpenMesh could not parse it{}{}", escaped(file.string()),
+    throw Error(fmt::format("cannot read {}: OpenMesh could not parse it{}{}", subdiv::quoted(file.string()),
                             errors.empty() ? "" : ": ", errors));
   MeshData out = to_mesh_data(mesh);
   if (lowercase_extension(file) == ".stl") {

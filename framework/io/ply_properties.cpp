@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "framework/util/short_text.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 namespace {
@@ -144,7 +145,7 @@ std::vector<std::vector<std::string>> writable_property_names(const std::vector<
       std::string base = word;
       for (int k = 2; !free(names = generic_names(base, a.components)); ++k) base = fmt::format("{}_v{}", word, k);
       if (base != a.name)
-        notes.push_back(fmt::format("{} array '{}' written as '{}'", what, comment_text(a.name), base));
+        notes.push_back(fmt::format("{} array {} written as {}", what, subdiv::quoted(comment_text(a.name)), subdiv::quoted(base)));
     }
     used.insert(names.begin(), names.end());
     out.push_back(std::move(names));

@@ -115,15 +115,15 @@ Header HeaderParser::parse() {
       // count of 5e14 kept the reader busy for days (found by fuzz_read_ply).
       for (const Element& e : header_.elements)
         if (e.count > 0 && e.properties.empty())
-          fail(fmt::format("element '{}' has {} entries but no properties; give its properties or leave it out",
-                           e.name, e.count));
+          fail(fmt::format("element {} has {} entries but no properties; give its properties or leave it out",
+                           subdiv::quoted(e.name), e.count));
       return std::move(header_);
     }
     if (keyword == "format") format_line(tokens);
     else if (keyword == "element") element_line(tokens);
     else if (keyword == "property") property_line(tokens);
-    else fail(fmt::format("unknown header keyword '{}'; expected element, property, comment "
-                          "or end_header", keyword));
+    else fail(fmt::format("unknown header keyword {}; expected element, property, comment "
+                          "or end_header", subdiv::quoted(keyword)));
   }
   fail("the header has no 'end_header' line");
 }
@@ -134,8 +134,8 @@ void HeaderParser::format_line(Tokens& tokens) {
   if (name == "ascii") header_.format = Format::Ascii;
   else if (name == "binary_little_endian") header_.format = Format::LittleEndian;
   else if (name == "binary_big_endian") header_.format = Format::BigEndian;
-  else fail(fmt::format("unknown format '{}'; expected ascii, binary_little_endian or "
-                        "binary_big_endian", name));
+  else fail(fmt::format("unknown format {}; expected ascii, binary_little_endian or "
+                        "binary_big_endian", subdiv::quoted(name)));
   have_format_ = true;
 }
 
@@ -152,8 +152,8 @@ Type HeaderParser::type(Tokens& tokens) {
   std::string_view name;
   Type t;
   if (!tokens.next(name) || !parse_type(name, t))
-    fail(fmt::format("unknown property type '{}'; expected char, uchar, short, ushort, int, "
-                     "uint, float or double", name));
+    fail(fmt::format("unknown property type {}; expected char, uchar, short, ushort, int, "
+                     "uint, float or double", subdiv::quoted(name)));
   return t;
 }
 
@@ -223,8 +223,8 @@ double Values::next_text(Type type) {
   double d;
   if (is_integer_type(type) ? parse_integer(token, i) : parse_double(token, d))
     return is_integer_type(type) ? double(i) : d;
-  fail(fmt::format("expected {} in {}, got '{}'",
-                   is_integer_type(type) ? "an integer" : "a number", subject(), token));
+  fail(fmt::format("expected {} in {}, got {}",
+                   is_integer_type(type) ? "an integer" : "a number", subject(), subdiv::quoted(token)));
 }
 
 template <typename T>

@@ -84,7 +84,7 @@ private:
 
   void expect(bool ok, std::string_view line, const char* wanted) const {
     if (!ok)
-      fail(lines_.line_number(), fmt::format("expected {}, found '{}'", wanted, shortened(line)));
+      fail(lines_.line_number(), fmt::format("expected {}, found {}", wanted, subdiv::quoted(shortened(line))));
   }
 
   // Three numbers; coordinates must be finite, normals only well-formed (they are not used).
@@ -93,13 +93,13 @@ private:
       std::string_view token;
       double value;
       if (!tokens.next(token) || !parse_double(token, value))
-        fail(lines_.line_number(), fmt::format("{} needs three numbers: '{}'", what, shortened(line)));
+        fail(lines_.line_number(), fmt::format("{} needs three numbers: {}", what, subdiv::quoted(shortened(line))));
       if (finite && !std::isfinite(value))
-        fail(lines_.line_number(), fmt::format("{} coordinate '{}' is not a finite number; fix or remove the facet",
-                                               what, shortened(token)));
+        fail(lines_.line_number(), fmt::format("{} coordinate {} is not a finite number; fix or remove the facet",
+                                               what, subdiv::quoted(shortened(token))));
     }
     if (!tokens.empty())
-      fail(lines_.line_number(), fmt::format("{} has more than three numbers: '{}'", what, shortened(line)));
+      fail(lines_.line_number(), fmt::format("{} has more than three numbers: {}", what, subdiv::quoted(shortened(line))));
   }
 
   void step(std::string_view keyword, Tokens& tokens, std::string_view line) {

@@ -47,9 +47,9 @@ std::uint64_t triangle_count(const MeshData& mesh) {
 void check_float_range(const MeshData& mesh, const path& shown) {
   for (std::size_t i = 0; i < mesh.positions.size(); ++i)
     if (std::abs(mesh.positions[i]) > std::numeric_limits<float>::max())
-      throw Error(fmt::format("cannot write '{}': vertex {} has a coordinate ({}) too large for "
+      throw Error(fmt::format("cannot write {}: vertex {} has a coordinate ({}) too large for "
                               "STL's 32-bit floats; write PLY or OBJ instead",
-                              escaped(shown.string()), i / 3, mesh.positions[i]));
+                              subdiv::quoted(shown.string()), i / 3, mesh.positions[i]));
 }
 
 }  // namespace
@@ -58,8 +58,8 @@ void write_stl(const path& file, const path& shown, const MeshData& mesh, const 
   check_float_range(mesh, shown);
   const std::uint64_t triangles = triangle_count(mesh);
   if (triangles > std::numeric_limits<std::uint32_t>::max())
-    throw Error(fmt::format("cannot write '{}': {} triangles exceed binary STL's limit",
-                            escaped(shown.string()), triangles));
+    throw Error(fmt::format("cannot write {}: {} triangles exceed binary STL's limit",
+                            subdiv::quoted(shown.string()), triangles));
   BufferedOutput out(file, shown);
   // The header must not start with "solid", or readers take the file for ASCII STL.
   char header[80] = {};

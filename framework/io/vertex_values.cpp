@@ -7,6 +7,7 @@
 
 #include "framework/util/error.h"
 #include "framework/util/input_file.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 
@@ -25,14 +26,14 @@ std::vector<double> read_vertex_values(const std::string& file, const std::strin
       double x = 0;
       const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), x);
       if (ec != std::errc() || end != word.data() + word.size() || !std::isfinite(x))
-        throw Error(fmt::format("{} line {}: '{}' is not a finite number ({} of vertex {})", file, number,
-                                word.substr(0, 40), name, values.size()));
+        throw Error(fmt::format("{} line {}: {} is not a finite number ({} of vertex {})", file, number,
+                                subdiv::quoted(word.substr(0, 40)), name, values.size()));
       values.push_back(x);
     }
   }
   if (values.size() != size_t(vertex_count))
-    throw Error(fmt::format("{}: {} values of '{}' for a mesh of {} vertices; give one per vertex, in vertex order",
-                            file, values.size(), name, vertex_count));
+    throw Error(fmt::format("{}: {} values of {} for a mesh of {} vertices; give one per vertex, in vertex order",
+                            file, values.size(), subdiv::quoted(name), vertex_count));
   return values;
 }
 

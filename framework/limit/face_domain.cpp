@@ -116,6 +116,8 @@ std::optional<FacePoint> base_face_point(const Level& level, Index face, double 
   // Bfr::Parameterization::ConvertCoordToNormalizedSubFace: a tile's quarter beyond 3/4
   // belongs to the next tile.
   const int columns = sub_face_columns(n);
+  if (u < 0 || v < 0 || u > columns || v > columns)  // before the casts: u = 1e10 does not fit an int
+    return *why = "(u, v) is outside the face's sub-face tiles (Bfr's QUAD_SUBFACES layout)", std::nullopt;
   int col = int(std::floor(u)), row = int(std::floor(v));
   double fu = u - col, fv = v - row;
   if (fu > 0.75) ++col, fu -= 1;

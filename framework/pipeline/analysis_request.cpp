@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "framework/util/option_spelling.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -22,9 +23,9 @@ std::vector<SurfaceAnalysis> analyse_valences(const ValenceAnalysisRequest& r) {
   check_valences(r);
   const CentreKind centre = analysis_centre(*r.scheme);
   if (r.boundary && centre != CentreKind::Vertex)
-    throw OptionError(fmt::format("{{boundary_analysis}}: '{}' is analysed at faces (a dual scheme); boundary "
+    throw OptionError(fmt::format("{{boundary_analysis}}: {} is analysed at faces (a dual scheme); boundary "
                                   "analysis is done for vertex-centred schemes only",
-                                  r.scheme->name));
+                                  subdiv::quoted(r.scheme->name)));
   std::vector<SurfaceAnalysis> out;
   for (int n : r.valences) {
     LocalConfig c;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 
@@ -41,14 +42,14 @@ ArraySelection ArraySelection::parse(const std::string& text) {
   for (std::string item; std::getline(items, item, ',');) {
     if (item == "all") s = all();
     else if (item == "default") s.names_.insert(default_array_names().begin(), default_array_names().end());
-    else if (item == "none") throw Error(fmt::format("arrays '{}': 'none' stands alone (no array at all)", text));
+    else if (item == "none") throw Error(fmt::format("arrays {}: 'none' stands alone (no array at all)", subdiv::quoted(text)));
     else if (std::find(output_array_names().begin(), output_array_names().end(), item) != output_array_names().end())
       s.names_.insert(item);
     else
-      throw Error(fmt::format("arrays '{}': unknown array '{}'; give a comma list of {}", text, item, valid));
+      throw Error(fmt::format("arrays {}: unknown array {}; give a comma list of {}", subdiv::quoted(text), subdiv::quoted(item), valid));
   }
   if (text.empty() || text.back() == ',')
-    throw Error(fmt::format("arrays '{}': an empty name; give a comma list of {}", text, valid));
+    throw Error(fmt::format("arrays {}: an empty name; give a comma list of {}", subdiv::quoted(text), valid));
   return s;
 }
 

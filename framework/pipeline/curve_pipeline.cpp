@@ -12,6 +12,7 @@
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -39,7 +40,7 @@ MeshData request_mesh(CurveRefineRequest& r) {
 std::vector<std::string> drop_cell_data(MeshData& mesh) {
   std::vector<std::string> notes;
   for (const auto& a : mesh.cell_data)
-    if (a.name != "polyline" && a.name != "closed") notes.push_back(fmt::format("cell array '{}' is not carried: polylines carry point data only", a.name));
+    if (a.name != "polyline" && a.name != "closed") notes.push_back(fmt::format("cell array {} is not carried: polylines carry point data only", subdiv::quoted(a.name)));
   mesh.cell_data.clear();
   return notes;
 }
@@ -133,12 +134,12 @@ RefinedCurveLevel level_of(int level, const std::vector<std::vector<double>>& po
 
 void refine_nonlinear(const CurveScheme& scheme, MeshData mesh, const CurveRefineRequest& r, CurveRefineResult& out) {
   if (find_rational_weights(mesh.point_data, r.weights_array, r.mesh_name))
-    throw Error(fmt::format("{}: '{}' is a non-linear curve scheme; rational weights need a linear one (a "
+    throw Error(fmt::format("{}: {} is a non-linear curve scheme; rational weights need a linear one (a "
                             "non-linear rule does not commute with projection)",
-                            r.mesh_name, scheme.name));
+                            r.mesh_name, subdiv::quoted(scheme.name)));
   for (const auto& a : mesh.point_data)
-    out.notes.push_back(fmt::format("point array '{}' is not carried: non-linear scheme '{}' has no rule to carry "
-                                    "point data by", a.name, scheme.name));
+    out.notes.push_back(fmt::format("point array {} is not carried: non-linear scheme {} has no rule to carry "
+                                    "point data by", subdiv::quoted(a.name), subdiv::quoted(scheme.name)));
   const CurveLevel base = curve_level_from_mesh(mesh, r.mesh_name);
   check_curve_size(base, scheme.arity, r.levels, r.memory_budget);
   std::vector<std::vector<double>> polylines = polyline_points(base, mesh.positions);

@@ -12,6 +12,7 @@
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -50,9 +51,9 @@ void refuse_curve_schemes(const std::string& sequence) {
       // Unknown names are reported by the loader, with the known ones.
     }
     if (curve)
-      throw OptionError(fmt::format("{{scheme}}: '{}' is a curve scheme inside a sequence; polylines are interpolated "
+      throw OptionError(fmt::format("{{scheme}}: {} is a curve scheme inside a sequence; polylines are interpolated "
                                     "with one curve scheme ({{scheme}} {})",
-                                    name, name));
+                                    subdiv::quoted(name), name));
   }
 }
 
@@ -98,10 +99,10 @@ LimitChoice surface_limit(const SchemeSequence& seq, const Level& base, const Li
     return select_limit(seq, base, options);
   } catch (const Error& e) {
     if (seq.runs.size() == 1 && declares_parameter(seq, "lambda"))
-      throw OptionError(fmt::format("{}\n  '{}' has a shape parameter lambda: if it is a first step (Lin et al. 2015), "
+      throw OptionError(fmt::format("{}\n  {} has a shape parameter lambda: if it is a first step (Lin et al. 2015), "
                                     "make it the first run of a sequence, {{scheme}} {}:1,S, with S the scheme that "
                                     "repeats",
-                                    e.what(), seq.schemes[0]->name, seq.schemes[0]->name));
+                                    e.what(), subdiv::quoted(seq.schemes[0]->name), seq.schemes[0]->name));
     throw;
   }
 }

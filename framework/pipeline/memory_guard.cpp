@@ -10,6 +10,7 @@
 
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -65,8 +66,8 @@ double parse_memory_size(const std::string& text, const std::string& option) {
   if (unit.size() == 2 && unit[1] == 'b') unit.resize(1);
   const double scale = unit.empty() ? 1.0 : unit == "k" ? 1024.0 : unit == "m" ? 1024.0 * 1024 : unit == "g" ? 1024.0 * 1024 * 1024 : unit == "t" ? 1024.0 * 1024 * 1024 * 1024 : 0.0;
   if (ec != std::errc() || scale == 0 || !std::isfinite(number) || number <= 0)
-    throw Error(fmt::format("{} '{}' is not a memory size; write it like 8G, 512M or a number of bytes", option,
-                            text.substr(0, 40)));
+    throw Error(fmt::format("{} {} is not a memory size; write it like 8G, 512M or a number of bytes", option,
+                            subdiv::quoted(text.substr(0, 40))));
   return number * scale;
 }
 

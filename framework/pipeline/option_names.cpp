@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -13,9 +14,9 @@ Value from_name(const std::vector<OptionChoice<Value>>& choices, std::string_vie
   for (const auto& c : choices)
     if (name == c.name) return c.value;
   std::vector<std::string> listed;
-  for (const auto& c : choices) listed.push_back(fmt::format("'{}' ({})", c.name, c.meaning));
+  for (const auto& c : choices) listed.push_back(fmt::format("{} ({})", subdiv::quoted(c.name), c.meaning));
   const char* gap = option.ends_with('=') ? "" : " ";  // "boundary='x'" as Python writes it, "--boundary 'x'"
-  throw Error(fmt::format("{}{}'{}': choose one of {}", option, gap, name, fmt::join(listed, ", ")));
+  throw Error(fmt::format("{}{}{}: choose one of {}", option, gap, subdiv::quoted(name), fmt::join(listed, ", ")));
 }
 
 template <class Value>

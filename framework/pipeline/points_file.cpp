@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -35,7 +36,7 @@ std::vector<std::string_view> split(std::string_view line, char separator) {
 
 void check_header(std::string_view line, const std::string& file) {
   if (trimmed(line) != "face,u,v")
-    throw Error(fmt::format("{} line 1: the header is '{}'; it must be 'face,u,v'", file, trimmed(line)));
+    throw Error(fmt::format("{} line 1: the header is {}; it must be 'face,u,v'", file, subdiv::quoted(trimmed(line))));
 }
 
 // Line `number` (from 1) of the file, after the header.
@@ -48,7 +49,7 @@ void parse_row(std::string_view line, size_t number, const std::string& file, co
   Index face = 0;
   double u = 0, v = 0;
   if (!parse_field(fields[0], face))
-    throw Error(fmt::format("{}: face '{}' is not a whole number", where, trimmed(fields[0])));
+    throw Error(fmt::format("{}: face {} is not a whole number", where, subdiv::quoted(trimmed(fields[0]))));
   if (!parse_field(fields[1], u) || !parse_field(fields[2], v))
     throw Error(fmt::format("{}: u and v must be numbers", where));
   if (const std::string why = check(face, u, v); !why.empty()) throw Error(fmt::format("{}: {}", where, why));
@@ -75,7 +76,7 @@ SurfacePoints parse_points(std::string_view text, const std::string& file, const
 // Line by line, so that a large file is never held whole.
 SurfacePoints read_points_file(const std::string& file, const PointCheck& check) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw Error(fmt::format("cannot read '{}': no such file or it is not readable", file));
+  if (!in) throw Error(fmt::format("cannot read {}: no such file or it is not readable", subdiv::quoted(file)));
   std::string line;
   if (!std::getline(in, line)) throw Error(fmt::format("{}: empty file; the first line must be 'face,u,v'", file));
   check_header(line, file);

@@ -5,6 +5,7 @@
 #include <fmt/ranges.h>
 
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -15,8 +16,8 @@ std::optional<size_t> locate(const std::vector<DataArray>& point_data, const std
     for (size_t i = 0; i < point_data.size(); ++i)
       if (point_data[i].name == name) return i;
     std::vector<std::string> names;
-    for (const DataArray& a : point_data) names.push_back(fmt::format("'{}'", a.name));
-    throw Error(fmt::format("{}: no point array '{}' holds the rational weights; {}", source, name,
+    for (const DataArray& a : point_data) names.push_back(fmt::format("{}", subdiv::quoted(a.name)));
+    throw Error(fmt::format("{}: no point array {} holds the rational weights; {}", source, subdiv::quoted(name),
                             names.empty() ? std::string("the mesh has no point arrays")
                                           : fmt::format("its point arrays are {}", fmt::join(names, ", "))));
   }
@@ -27,8 +28,8 @@ std::optional<size_t> locate(const std::vector<DataArray>& point_data, const std
 
 void check_weights(const DataArray& a, const std::string& source) {
   if (a.components != 1)
-    throw Error(fmt::format("{}: the rational weights '{}' have {} components; give one weight per vertex", source,
-                            a.name, a.components));
+    throw Error(fmt::format("{}: the rational weights {} have {} components; give one weight per vertex", source,
+                            subdiv::quoted(a.name), a.components));
   for (size_t v = 0; v < a.values.size(); ++v)
     if (!(a.values[v] > 0) || !std::isfinite(a.values[v]))
       throw Error(fmt::format("{}: vertex {} (counted from 0) has the rational weight {} = {}; weights must be "

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "framework/engine/step_progress.h"
 #include "framework/io/feature_angle.h"
 #include "framework/io/feature_file.h"
 #include "framework/io/mesh_cleanup.h"
@@ -18,6 +20,7 @@
 #include "framework/util/option_spelling.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -35,12 +38,14 @@ void say_done(const RefineRequest& r, double done) {
 }
 
 // A level's values cost about its faces' worth of work: the share of the levels' work
-// done when `finished` levels are.
-double levels_done(const Hierarchy& h, int finished) {
+// done when `finished` levels are, and the share `next` (0 to 1) of the level after them.
+double levels_done(const Hierarchy& h, int finished, double next = 0) {
   double total = 0, done = 0;
   for (size_t l = 1; l < h.levels.size(); ++l) {
-    total += double(h.levels[l].face_count()) + 1;
-    if (int(l) <= finished) done += double(h.levels[l].face_count()) + 1;
+    const double work = double(h.levels[l].face_count()) + 1;
+    total += work;
+    if (int(l) <= finished) done += work;
+    else if (int(l) == finished + 1) done += next * work;
   }
   return total > 0 ? done / total : 1.0;
 }
@@ -54,10 +59,10 @@ std::string triangles_choice(const RefineRequest& r, const SchemeSequence& given
   if (r.scheme.parameters.count("triangles")) return "";
   if (r.shape.smooth_triangles) {
     if (!declares_parameter(given, "triangles"))
-      throw OptionError(fmt::format("{{smooth_triangles}}: scheme '{}' has no 'triangles' parameter; smooth "
+      throw OptionError(fmt::format("{{smooth_triangles}}: scheme {} has no 'triangles' parameter; smooth "
                                     "triangles (OpenSubdiv's TRI_SUB_SMOOTH) need a scheme that declares one "
                                     "({{scheme_list}} lists each scheme's parameters)",
-                                    label));
+                                    subdiv::quoted(label)));
     return "smooth";
   }
   // As OpenSubdiv, a tag for a scheme without the option is ignored.
@@ -69,9 +74,9 @@ SchemeSequence load_request_scheme(const RefineRequest& r, std::string& label) {
   label = r.scheme.is_json_text ? r.scheme.label : r.scheme.text;
   const SchemeSequence given = load_surface_sequence(r.scheme, r.levels, r.scheme.parameters);
   if (r.levels_given && given.total_levels != r.levels)
-    throw OptionError(fmt::format("{{scheme}} '{}' runs {} level(s), but {{levels}} asks for {}; make the counts add "
+    throw OptionError(fmt::format("{{scheme}} {} runs {} level(s), but {{levels}} asks for {}; make the counts add "
                                   "up to {}, leave one scheme without :N to take the rest, or drop {{levels}}",
-                                  label, given.total_levels, r.levels, r.levels));
+                                  subdiv::quoted(label), given.total_levels, r.levels, r.levels));
   const std::string triangles = triangles_choice(r, given, label);
   if (triangles.empty()) return given;
   ParameterOverrides with_triangles = r.scheme.parameters;
@@ -177,10 +182,10 @@ void find_weights(const RefineRequest& r, PreparedRefinement& p) {
   p.rational = !all_weights_one(p.mesh.point_data[*at].values);
   for (const auto& scheme : p.sequence.schemes)
     if (p.rational && !scheme->linear())
-      throw Error(fmt::format("{}: the rational weights '{}' need a linear scheme, but '{}' has a non-linear step (a "
+      throw Error(fmt::format("{}: the rational weights {} need a linear scheme, but {} has a non-linear step (a "
                               "plugin rule), which does not commute with projecting (w·p, w); drop the weights or "
                               "choose a linear scheme",
-                              r.mesh_name, p.weights_name, scheme->name));
+                              r.mesh_name, subdiv::quoted(p.weights_name), subdiv::quoted(scheme->name)));
 }
 
 DataArray* weights_of(LevelData& level, const std::string& name) {
@@ -279,29 +284,39 @@ std::vector<LevelData> refine_level_data(const PreparedRefinement& p, const Hier
   std::vector<LevelData> levels{{mesh.positions, carried_point_arrays(mesh.point_data, &dropped), mesh.cell_data, {}}};
   check_finite_arrays(levels.front(), r.mesh_name);
   for (const auto& name : dropped)
-    said.notes.push_back(fmt::format("point array '{}' holds normals, which refinement does not carry (a mix of unit "
+    said.notes.push_back(fmt::format("point array {} holds normals, which refinement does not carry (a mix of unit "
                                      "normals is no normal); {{normals}} writes the exact limit normals",
-                                     name));
+                                     subdiv::quoted(name)));
   said.dropped_arrays.insert(said.dropped_arrays.end(), dropped.begin(), dropped.end());
   // Rational: the positions become (w·p, w)'s first three coordinates; the weights are
   // refined with them as point data, by the same rules, in the same pass.
   if (p.rational) to_homogeneous(levels.front().positions, weights_of(levels.front(), p.weights_name)->values);
   if (seq.total_levels > 0) say_done(r, 0.0);
+  // The bar moves within a level too: the engine tells each pass of the level's step (the
+  // level's end is told below, once its points are checked).
+  int level = 0;
+  const StepProgressScope::Report within = [&](double share) {
+    if (share < 1) say_done(r, levels_done(h, level, share));
+  };
+  std::optional<StepProgressScope> passes;
+  if (r.progress_fraction) passes.emplace(within);
   for (int l = 0; l < seq.total_levels; ++l) {
     say(r, fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
+    level = l;
     levels.push_back(next_level_data(seq.runs, h, l, levels.back(), options));
     check_refined_points(levels.back(), l + 1, mesh.positions, r);
     if (!r.keep_all_levels) levels[size_t(l)] = {};
     say_done(r, levels_done(h, l + 1));
   }
+  passes.reset();  // the face-varying steps below are not the levels' bar
   if (p.rational) project_levels(levels, p.weights_name, mesh.positions);
   rename_weights(levels, p);
   for (const FaceVaryingArray& a : mesh.face_varying) {
     if (a.role == ArrayRole::Normals) {
       said.dropped_arrays.push_back(a.name);
-      said.notes.push_back(fmt::format("face-varying array '{}' holds normals, which refinement does not carry; "
+      said.notes.push_back(fmt::format("face-varying array {} holds normals, which refinement does not carry; "
                                        "{{normals}} writes the exact limit normals",
-                                       a.name));
+                                       subdiv::quoted(a.name)));
       continue;
     }
     const auto refined = refine_face_varying(seq.runs, h, {a.values, a.indices}, a.components, p.face_varying, options);

@@ -7,6 +7,7 @@
 
 #include "framework/plugin/checked_rules.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -224,7 +225,7 @@ std::string split_result_problem(const Level& parent, const SplitResult& r, bool
 }
 
 SplitterInfo checked_splitter(SplitterInfo info, const std::string& who) {
-  const std::string label = fmt::format("{}, splitter '{}'", who, info.name);
+  const std::string label = fmt::format("{}, splitter {}", who, subdiv::quoted(info.name));
   if (!std::isfinite(info.scale) || info.scale <= 1.0 || info.period < 1 || info.feature_period < 1 ||
       !std::isfinite(info.topology_reach) || !std::isfinite(info.ring_scale) || info.ring_scale < 0)
     throw Error(
@@ -239,7 +240,7 @@ SplitterInfo checked_splitter(SplitterInfo info, const std::string& who) {
 }
 
 RoleInfo checked_role(RoleInfo info, const std::string& who) {
-  const std::string label = fmt::format("{}, role '{}'", who, info.name);
+  const std::string label = fmt::format("{}, role {}", who, subdiv::quoted(info.name));
   if (auto points = std::move(info.points))
     info.points = [points, label](const Level& level, Index element, int corner, std::vector<Index>& out) {
       const std::size_t before = out.size();

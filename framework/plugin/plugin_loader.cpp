@@ -64,9 +64,9 @@ void* try_load(const fs::path& file, PluginStatus& status, const std::vector<Plu
   };
   auto entry = reinterpret_cast<SubdivPluginInfoFunction>(dlsym(handle, SUBDIV_PLUGIN_ENTRY_POINT));
   if (!entry)
-    return close_and_refuse(fmt::format("no entry point '{}': not a SubdivKit plugin (a plugin defines it with "
+    return close_and_refuse(fmt::format("no entry point {}: not a SubdivKit plugin (a plugin defines it with "
                                         "SUBDIV_PLUGIN(name, version, register) from framework/plugin/plugin_api.h)",
-                                        SUBDIV_PLUGIN_ENTRY_POINT));
+                                        subdiv::quoted(SUBDIV_PLUGIN_ENTRY_POINT)));
   const SubdivPluginInfo* info = nullptr;
   try {
     info = entry();
@@ -85,13 +85,13 @@ void* try_load(const fs::path& file, PluginStatus& status, const std::vector<Plu
         info->interface_version, escaped(text_or(info->subdivkit_version, "unknown")), SUBDIVKIT_VERSION_STRING,
         SUBDIV_PLUGIN_INTERFACE_VERSION));
   if (!valid_plugin_name(status.name))
-    return close_and_refuse(fmt::format("invalid plugin name '{}': use 1 to 64 letters, digits, '-', '_' or '.'",
-                                        escaped(status.name)));
+    return close_and_refuse(fmt::format("invalid plugin name {}: use 1 to 64 letters, digits, '-', '_' or '.'",
+                                        subdiv::quoted(status.name)));
   if (!info->register_plugin) return close_and_refuse("the plugin record has no registration function");
   for (const PluginStatus& other : loaded_so_far)
     if (other.loaded && other.name == status.name)
-      return close_and_refuse(fmt::format("duplicate plugin name: a plugin named '{}' is already loaded from {}",
-                                          status.name, escaped(other.file)));
+      return close_and_refuse(fmt::format("duplicate plugin name: a plugin named {} is already loaded from {}",
+                                          subdiv::quoted(status.name), escaped(other.file)));
   // The plugin's own code runs from here on. Whatever it staged is dropped before the
   // library is closed; a refused plugin's registrations are undone by commit().
   std::string reason;

@@ -11,6 +11,7 @@
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 
@@ -33,23 +34,23 @@ ParameterValues values_of(const std::vector<ParameterSpec>& params) {
 void check_unknown(const ParameterOverrides& overrides, const std::set<std::string>& used, const std::string& label) {
   for (const auto& [name, value] : overrides)
     if (!used.count(name))
-      throw OptionError(fmt::format("{}: the scheme has no parameter '{}' (from {{param}} {}={}); {{scheme_list}} "
+      throw OptionError(fmt::format("{}: the scheme has no parameter {} (from {{param}} {}={}); {{scheme_list}} "
                                     "lists each scheme's parameters",
-                                    label, name, name, value));
+                                    label, subdiv::quoted(name), name, value));
 }
 
 // The boundary curve must be linear and refine boundaries the way the split does.
 void check_curve_fits(const CurveScheme& c, SplitKind split, const std::string& label) {
   const SplitterInfo& info = splitter_info(split);
   if (c.nonlinear)
-    throw Error(fmt::format("{}: curve scheme '{}' is non-linear; boundaries and creases need a linear curve scheme",
-                            label, c.name));
+    throw Error(fmt::format("{}: curve scheme {} is non-linear; boundaries and creases need a linear curve scheme",
+                            label, subdiv::quoted(c.name)));
   if (c.arity != info.curve_arity)
-    throw Error(fmt::format("{}: curve scheme '{}' has arity {}, but the {} split refines boundaries with arity {}",
-                            label, c.name, c.arity, info.name, info.curve_arity));
+    throw Error(fmt::format("{}: curve scheme {} has arity {}, but the {} split refines boundaries with arity {}",
+                            label, subdiv::quoted(c.name), c.arity, info.name, info.curve_arity));
   if (info.primal && 2 * -c.starts[0] + 1 != int(c.weights[0].size()))
-    throw Error(fmt::format("{}: curve scheme '{}' is not primal (its rule 0 is not centred on an old point), so it "
-                            "cannot give the boundary rules of the {} split", label, c.name, info.name));
+    throw Error(fmt::format("{}: curve scheme {} is not primal (its rule 0 is not centred on an old point), so it "
+                            "cannot give the boundary rules of the {} split", label, subdiv::quoted(c.name), info.name));
 }
 
 std::shared_ptr<const Scheme> make_surface(const SurfaceSchemeSpec& spec, const std::string& label,
@@ -140,13 +141,13 @@ std::string json_name(const nlohmann::ordered_json& root, const std::string& lab
 
 double ParameterValues::number(const std::string& name) const {
   auto it = numbers.find(name);
-  if (it == numbers.end()) throw Error(fmt::format("the scheme has no numeric parameter '{}'", name));
+  if (it == numbers.end()) throw Error(fmt::format("the scheme has no numeric parameter {}", subdiv::quoted(name)));
   return it->second;
 }
 
 const std::string& ParameterValues::choice(const std::string& name) const {
   auto it = choices.find(name);
-  if (it == choices.end()) throw Error(fmt::format("the scheme has no choice parameter '{}'", name));
+  if (it == choices.end()) throw Error(fmt::format("the scheme has no choice parameter {}", subdiv::quoted(name)));
   return it->second;
 }
 
@@ -184,7 +185,7 @@ std::vector<std::string> PluginRegistry::commit() {
   auto claim = [&](const std::string& what, const std::string& name) {
     if (name.empty()) throw Error(fmt::format("a {} has no name", what));
     if (!names.insert(what + ":" + name).second)
-      throw Error(fmt::format("the plugin registers the {} name '{}' twice", what, name));
+      throw Error(fmt::format("the plugin registers the {} name {} twice", what, subdiv::quoted(name)));
   };
   for (auto& s : st.splitters) {
     claim("splitter", s.name);
@@ -197,10 +198,10 @@ std::vector<std::string> PluginRegistry::commit() {
   for (auto& spec : st.surfaces) {
     claim("scheme", spec.name);
     if (bool(spec.linear) == bool(spec.nonlinear))
-      throw Error(fmt::format("surface scheme '{}': give exactly one of linear or nonlinear", spec.name));
+      throw Error(fmt::format("surface scheme {}: give exactly one of linear or nonlinear", subdiv::quoted(spec.name)));
     auto shared = std::make_shared<const SurfaceSchemeSpec>(spec);
     const std::string label = plugin_file_ + ":" + spec.name;
-    const std::string who = fmt::format("plugin '{}' ({}), scheme '{}'", plugin_name_, plugin_file_, spec.name);
+    const std::string who = fmt::format("plugin {} ({}), scheme {}", subdiv::quoted(plugin_name_), plugin_file_, subdiv::quoted(spec.name));
     CodeSchemeEntry e{spec.name, spec.description, "surface", origin, plugin_file_, nullptr, nullptr};
     e.make_surface = [shared, label, who](const ParameterOverrides& o) { return make_surface(*shared, label, who, o); };
     entries.push_back(std::move(e));
@@ -210,10 +211,10 @@ std::vector<std::string> PluginRegistry::commit() {
   for (auto& spec : st.curves) {
     claim("scheme", spec.name);
     if (bool(spec.linear) == bool(spec.nonlinear))
-      throw Error(fmt::format("curve scheme '{}': give exactly one of linear or nonlinear", spec.name));
+      throw Error(fmt::format("curve scheme {}: give exactly one of linear or nonlinear", subdiv::quoted(spec.name)));
     auto shared = std::make_shared<const CurveSchemeSpec>(spec);
     const std::string label = plugin_file_ + ":" + spec.name;
-    const std::string who = fmt::format("plugin '{}' ({}), scheme '{}'", plugin_name_, plugin_file_, spec.name);
+    const std::string who = fmt::format("plugin {} ({}), scheme {}", subdiv::quoted(plugin_name_), plugin_file_, subdiv::quoted(spec.name));
     CodeSchemeEntry e{spec.name, spec.description, "curve", origin, plugin_file_, nullptr, nullptr};
     e.make_curve = [shared, label, who](const ParameterOverrides& o, std::set<std::string>* used) {
       return make_curve(*shared, label, who, o, used);
@@ -250,7 +251,7 @@ std::vector<std::string> PluginRegistry::commit() {
   try {
     // Splitters and roles run as guarded functions: what they throw or return out of range
     // becomes a message naming the plugin's file and the function (checked_topology.h).
-    const std::string who = fmt::format("plugin '{}' ({})", plugin_name_, plugin_file_);
+    const std::string who = fmt::format("plugin {} ({})", subdiv::quoted(plugin_name_), plugin_file_);
     for (auto& s : st.splitters) {
       s.origin = origin;
       splits.push_back(register_splitter(checked_splitter(s, who)));
@@ -270,7 +271,7 @@ std::vector<std::string> PluginRegistry::commit() {
         if (e.kind == "surface") e.make_surface({});
         else e.make_curve({}, nullptr);
       } catch (const Error& err) {
-        throw Error(fmt::format("scheme '{}' does not load: {}", e.name, err.what()));
+        throw Error(fmt::format("scheme {} does not load: {}", subdiv::quoted(e.name), err.what()));
       }
     }
   } catch (...) {

@@ -10,6 +10,7 @@
 #include "framework/util/input_errors.h"
 #include "framework/util/json_path_line.h"
 #include "framework/util/short_text.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -35,7 +36,7 @@ struct Place {
 const Json& require(const Json& object, const char* key, const Place& at) {
   if (!object.is_object()) fail(at, "expected a JSON object");
   auto it = object.find(key);
-  if (it == object.end()) fail(at, fmt::format("missing \"{}\"", key));
+  if (it == object.end()) fail(at, fmt::format("missing \"{}\"", escaped(key)));
   return *it;
 }
 
@@ -89,7 +90,7 @@ void check_keys(const Json& object, const std::set<std::string>& allowed, const 
     if (!allowed.count(it.key())) {
       std::string list;
       for (auto& k : allowed) list += (list.empty() ? "" : ", ") + k;
-      fail(at, fmt::format("unknown key \"{}\"; the keys here are: {}", it.key(), list));
+      fail(at, fmt::format("unknown key \"{}\"; the keys here are: {}", escaped(it.key()), list));
     }
 }
 
@@ -100,15 +101,15 @@ double parse_number(const std::string& text, const Place& at) {
     if (used == text.size() && std::isfinite(v)) return v;
   } catch (...) {
   }
-  fail(at, fmt::format("'{}' is not a number", shortened(text)));
+  fail(at, fmt::format("{} is not a number", subdiv::quoted(shortened(text))));
 }
 
 // Names formulas already use for themselves.
 void check_not_reserved(const std::string& name, const Place& at) {
   static const std::set<std::string> reserved{"n", "k", "j", "l", "n0", "n1", "k0", "k1", "ci", "cb", "ex", "fe", "pi"};
   if (reserved.count(name))
-    fail(at, fmt::format("'{}' is a reserved name in formulas (n, k, j, l, n0, n1, k0, k1, ci, cb, ex, fe, pi); rename it",
-                         name));
+    fail(at, fmt::format("{} is a reserved name in formulas (n, k, j, l, n0, n1, k0, k1, ci, cb, ex, fe, pi); rename it",
+                         subdiv::quoted(name)));
 }
 
 ParameterSpec parse_parameter(const std::string& name, const Json& spec, const Place& at) {
@@ -145,7 +146,7 @@ void apply_override(ParameterSpec& p, const std::string& text, const std::string
     if (std::find(p.choices.begin(), p.choices.end(), text) == p.choices.end()) {
       std::string list;
       for (auto& c : p.choices) list += (list.empty() ? "" : ", ") + c;
-      fail(at, fmt::format("'{}' is not a choice of {}; choose one of: {}", text, p.name, list));
+      fail(at, fmt::format("{} is not a choice of {}; choose one of: {}", subdiv::quoted(text), p.name, list));
     }
     p.choice = text;
     return;
@@ -156,7 +157,7 @@ void apply_override(ParameterSpec& p, const std::string& text, const std::string
 void check_range(const ParameterSpec& p, const std::string& file) {
   if (p.is_choice) {
     if (std::find(p.choices.begin(), p.choices.end(), p.choice) == p.choices.end())
-      fail({file, "parameters." + p.name}, fmt::format("default '{}' is not among the choices", p.choice));
+      fail({file, "parameters." + p.name}, fmt::format("default {} is not among the choices", subdiv::quoted(p.choice)));
     return;
   }
   if (auto why = range_violation(p, p.value); !why.empty()) fail({file, "parameters." + p.name}, why);
@@ -220,9 +221,9 @@ void check_names(const std::vector<ParameterSpec>& params, const std::vector<Nam
     if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') ||
         name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") !=
             std::string::npos)
-      fail(here, fmt::format("'{}' is not a valid name: use letters, digits and _, starting with a letter", shortened(name)));
+      fail(here, fmt::format("{} is not a valid name: use letters, digits and _, starting with a letter", subdiv::quoted(shortened(name))));
     if (auto it = seen.find(name); it != seen.end())
-      fail(here, fmt::format("the {} name '{}' is already {}; choose another name", what, name, it->second));
+      fail(here, fmt::format("the {} name {} is already {}; choose another name", what, subdiv::quoted(name), it->second));
     seen[name] = "the name of a " + what;
   };
   for (const auto& p : params) claim(p.name, "parameter", at / "parameters" / p.name);
@@ -261,10 +262,10 @@ std::vector<NamedFormula> parse_plain_definitions(const Json& root, const Place&
     const std::string select = as_string(require(it.value(), "select", here), here / "select");
     auto p = std::find_if(params.begin(), params.end(),
                           [&](const ParameterSpec& s) { return s.name == select && s.is_choice; });
-    if (p == params.end()) fail(here / "select", fmt::format("'{}' is not a choice parameter", select));
+    if (p == params.end()) fail(here / "select", fmt::format("{} is not a choice parameter", subdiv::quoted(select)));
     const Json& cases = require(it.value(), "cases", here);
     for (const auto& choice : p->choices)
-      if (!cases.contains(choice)) fail(here / "cases", fmt::format("no case for choice '{}'", choice));
+      if (!cases.contains(choice)) fail(here / "cases", fmt::format("no case for choice {}", subdiv::quoted(choice)));
     const Place chosen = here / "cases" / p->choice;
     defs.push_back({it.key(), as_formula(cases[p->choice], chosen), chosen.str(), "", ""});
   }
@@ -290,27 +291,27 @@ Term parse_term(const Json& j, Element element, const Place& at) {
   const std::string name = as_string(single ? j["at"] : j["sum"], at / (single ? "at" : "sum"));
   auto role = role_from_name(name);
   if (!role || *role == Role::Curve)
-    fail(at, fmt::format("unknown role '{}'; {} rules may use: {}", name, element_name(element),
+    fail(at, fmt::format("unknown role {}; {} rules may use: {}", subdiv::quoted(name), element_name(element),
                          roles_of(element)));
   if (!role_allowed(element, *role))
-    fail(at, fmt::format("role '{}' does not exist around a {}", shortened(name), element_name(element)));
-  if (single && *role != Role::Self) fail(at, fmt::format("role '{}' has several points: write \"sum\": \"{}\"", name, name));
+    fail(at, fmt::format("role {} does not exist around a {}", subdiv::quoted(shortened(name)), element_name(element)));
+  if (single && *role != Role::Self) fail(at, fmt::format("role {} has several points: write \"sum\": \"{}\"", subdiv::quoted(name), escaped(name)));
   if (multi && *role == Role::Self) fail(at, "role 'self' is one point: write \"at\": \"self\"");
   t.role = *role;
   if (j.contains("new")) {
     const std::string np = as_string(j["new"], at / "new");
     auto kind = new_point_from_name(np);
-    if (!kind) fail(at / "new", fmt::format("unknown new point '{}'; use face, edge or vertex", np));
+    if (!kind) fail(at / "new", fmt::format("unknown new point {}; use face, edge or vertex", subdiv::quoted(np)));
     t.new_point = *kind;
   }
   const bool needs_new = *role == Role::Faces || (*role == Role::Edges);
   if (needs_new && t.new_point == NewPoint::None)
-    fail(at, fmt::format("role '{}' names {}, not points: add \"new\": \"{}\" to use their new points", name,
-                         name, *role == Role::Faces ? "face" : "edge"));
+    fail(at, fmt::format("role {} names {}, not points: add \"new\": \"{}\" to use their new points", subdiv::quoted(name),
+                         name, escaped(*role == Role::Faces ? "face" : "edge")));
   if (*role == Role::Faces && t.new_point != NewPoint::Face) fail(at / "new", "faces can only give new face points");
   if (*role == Role::Edges && t.new_point != NewPoint::Edge) fail(at / "new", "edges can only give new edge points");
   if (!needs_new && t.new_point != NewPoint::None && t.new_point != NewPoint::Vertex)
-    fail(at / "new", fmt::format("role '{}' holds vertices: the only new points it can give are new vertex points", name));
+    fail(at / "new", fmt::format("role {} holds vertices: the only new points it can give are new vertex points", subdiv::quoted(name)));
   t.weight = as_formula(require(j, "w", at), at / "w");
   return t;
 }
@@ -340,7 +341,7 @@ RuleTable parse_rules(const Json& rules, const Place& at, const std::set<std::st
     if (!r.is_object()) fail(here, "expected an array of terms, or an object of contexts (smooth, dart, crease, corner)");
     for (auto it = r.begin(); it != r.end(); ++it) {
       auto ctx = context_from_name(it.key());
-      if (!ctx) fail(here, fmt::format("unknown context '{}'; use smooth, dart, crease or corner", it.key()));
+      if (!ctx) fail(here, fmt::format("unknown context {}; use smooth, dart, crease or corner", subdiv::quoted(it.key())));
       table[e][int(*ctx)] = parse_rule(it.value(), Element(e), here / it.key());
       for (const Term& t : table[e][int(*ctx)]->terms)
         if (t.role == Role::CreaseNeighbours && *ctx != Context::Crease)
@@ -395,8 +396,8 @@ std::vector<size_t> unroll_steps(const ParsedSteps& parsed, const Scheme& scheme
     const int id = formulas.add(r.formula, r.where);
     for (const ParameterSpec& p : scheme.parameters)
       if (p.per_vertex && formulas.uses(id).reads(p.name))
-        throw Error(fmt::format("{}: reads parameter '{}', which is per vertex; \"when\" and \"repeat\" are decided "
-                                "once for the whole mesh", r.where, p.name));
+        throw Error(fmt::format("{}: reads parameter {}, which is per vertex; \"when\" and \"repeat\" are decided "
+                                "once for the whole mesh", r.where, subdiv::quoted(p.name)));
     return formulas.evaluate(id, {});
   };
   std::vector<size_t> out;
@@ -406,14 +407,14 @@ std::vector<size_t> unroll_steps(const ParsedSteps& parsed, const Scheme& scheme
       if (r.step != i) continue;
       const double v = value_of(r);
       if (!std::isfinite(v))
-        throw Error(fmt::format("{}: when '{}' gives {}; it must give a number (0: leave the step out)", r.where, shortened(r.formula), v));
+        throw Error(fmt::format("{}: when {} gives {}; it must give a number (0: leave the step out)", r.where, subdiv::quoted(shortened(r.formula)), v));
       if (v == 0) count = 0;
     }
     for (const Repeat& r : parsed.repeats) {
       if (r.step != i || count == 0) continue;
       const double v = value_of(r);
       if (!(v >= 0) || v != std::floor(v) || v > 64)
-        throw Error(fmt::format("{}: repeat '{}' gives {}, not a whole number from 0 to 64", r.where, shortened(r.formula), v));
+        throw Error(fmt::format("{}: repeat {} gives {}, not a whole number from 0 to 64", r.where, subdiv::quoted(shortened(r.formula)), v));
       count = int(v);
     }
     for (int c = 0; c < count; ++c) out.push_back(i);
@@ -484,7 +485,7 @@ int parse_face_requirement(const Json& root, const Place& at) {
   if (faces == "any") return 0;
   if (faces == "triangles") return 3;
   if (faces == "quads") return 4;
-  fail(at / "faces", fmt::format("'{}' is not one of: any, triangles, quads", faces));
+  fail(at / "faces", fmt::format("{} is not one of: any, triangles, quads", subdiv::quoted(faces)));
 }
 
 // A per-vertex parameter has a value at each vertex, so only a vertex rule (which has one
@@ -493,9 +494,9 @@ void check_per_vertex_reads(const Scheme& s, const FormulaUses& uses, Element el
   if (element == Element::Vertex) return;
   for (const ParameterSpec& p : s.parameters)
     if (p.per_vertex && uses.reads(p.name))
-      throw Error(fmt::format("{}: reads parameter '{}', which is per vertex (\"per_vertex\": true); only vertex "
+      throw Error(fmt::format("{}: reads parameter {}, which is per vertex (\"per_vertex\": true); only vertex "
                               "rules can read it, at their own vertex. Read it in a vertex rule, or drop "
-                              "\"per_vertex\"", where, p.name));
+                              "\"per_vertex\"", where, subdiv::quoted(p.name)));
 }
 
 // Compiles and evaluates every formula once (at a regular valence) so syntax errors and
@@ -532,9 +533,9 @@ void check_unknown_overrides(const ParameterOverrides& overrides, const std::set
                              const std::string& file) {
   for (const auto& [name, value] : overrides)
     if (!used.count(name))
-      throw OptionError(fmt::format("{}: the scheme has no parameter '{}' (from {{param}} {}={}); "
+      throw OptionError(fmt::format("{}: the scheme has no parameter {} (from {{param}} {}={}); "
                                     "{{scheme_list}} lists each scheme's parameters",
-                                    file, name, name, value));
+                                    file, subdiv::quoted(name), name, value));
 }
 
 // Primal splits keep old vertices and add points on edges, so the curve's rule 0 must be
@@ -544,18 +545,18 @@ void check_unknown_overrides(const ParameterOverrides& overrides, const std::set
 void check_curve_fits_split(const CurveScheme& c, SplitKind split, const Place& at) {
   const SplitterInfo& info = splitter_info(split);
   if (c.nonlinear)
-    fail(at, fmt::format("curve scheme '{}' ({}) is non-linear; boundaries and creases need a linear curve scheme",
-                         c.name, c.path));
+    fail(at, fmt::format("curve scheme {} ({}) is non-linear; boundaries and creases need a linear curve scheme",
+                         subdiv::quoted(c.name), c.path));
   if (c.variational())
-    fail(at, fmt::format("curve scheme '{}' ({}) is variational: its new points depend on the whole polyline, "
-                         "but boundaries and creases need a local curve rule", c.name, c.path));
+    fail(at, fmt::format("curve scheme {} ({}) is variational: its new points depend on the whole polyline, "
+                         "but boundaries and creases need a local curve rule", subdiv::quoted(c.name), c.path));
   if (c.arity != info.curve_arity)
-    fail(at, fmt::format("curve scheme '{}' has arity {}, but the {} split refines boundaries with arity {}",
-                         c.name, c.arity, info.name, info.curve_arity));
+    fail(at, fmt::format("curve scheme {} has arity {}, but the {} split refines boundaries with arity {}",
+                         subdiv::quoted(c.name), c.arity, info.name, info.curve_arity));
   if (!info.primal) return;
   if (2 * -c.starts[0] + 1 != int(c.weights[0].size()))
-    fail(at, fmt::format("curve scheme '{}' ({}) is not primal: its rule 0 is not centred on an old "
-                         "point, so it cannot give the boundary rules of a primal split", c.name, c.path));
+    fail(at, fmt::format("curve scheme {} ({}) is not primal: its rule 0 is not centred on an old "
+                         "point, so it cannot give the boundary rules of a primal split", subdiv::quoted(c.name), c.path));
 }
 
 // ---- curve schemes -------------------------------------------------------------------
@@ -572,9 +573,9 @@ int add_curve_formula(FormulaSet& formulas, const std::string& text, const Place
   const int id = formulas.add(text, here.str());
   const FormulaUses u = formulas.uses(id);
   if (u.n || u.k)
-    fail(here, fmt::format("formula '{}' uses {}; curve formulas may use j (the index of the weight in "
+    fail(here, fmt::format("formula {} uses {}; curve formulas may use j (the index of the weight in "
                            "its rule), l, the parameters, state and definitions; n and k belong to "
-                           "surface rules", text, u.n ? "n" : "k"));
+                           "surface rules", subdiv::quoted(text), u.n ? "n" : "k"));
   return id;
 }
 
@@ -602,7 +603,7 @@ void parse_variational(const Json& v, const Place& at, FormulaSet& formulas, Cur
     curve.variational_alpha.push_back(as_formula(alpha[j], (at / "alpha")[j]));
     const int id = add_curve_formula(formulas, curve.variational_alpha.back(), (at / "alpha")[j]);
     const double a = formulas.evaluate(id, {0, 0, double(j), 0});
-    if (!std::isfinite(a)) fail((at / "alpha")[j], fmt::format("'{}' is {} at level 0", curve.variational_alpha.back(), a));
+    if (!std::isfinite(a)) fail((at / "alpha")[j], fmt::format("{} is {} at level 0", subdiv::quoted(curve.variational_alpha.back()), a));
     sum += a, magnitude += std::abs(a);
   }
   if (magnitude == 0.0 || std::abs(sum) > 1e-12 * magnitude)
@@ -689,8 +690,8 @@ void parse_ends(const Json& root, const Place& at, FormulaSet& formulas, CurveSc
     if (mode == "interpolate") curve.ends = CurveEnds::Interpolate;
     else if (mode == "uniform") curve.ends = CurveEnds::Uniform;
     else
-      fail(here, fmt::format("'{}' is not one of: interpolate, uniform, or an object of end rules "
-                             "{{\"rules\": [{{\"w\": [...]}}, ...]}}", mode));
+      fail(here, fmt::format("{} is not one of: interpolate, uniform, or an object of end rules "
+                             "{{\"rules\": [{{\"w\": [...]}}, ...]}}", subdiv::quoted(mode)));
     return;
   }
   if (!ends.is_object())
@@ -718,7 +719,7 @@ void check_curve_rules_at_level0(const CurveScheme& curve, const Place& at, bool
       const Place place = (here / "w")[t];
       const double w = formulas.evaluate(formulas.add(weights[t], place.str()), {0, 0, double(t), 0});
       if (!std::isfinite(w))
-        fail(place, fmt::format("weight '{}' is {} at level 0{}", weights[t], w, parameter_note(curve)));
+        fail(place, fmt::format("weight {} is {} at level 0{}", subdiv::quoted(weights[t]), w, parameter_note(curve)));
       sum += w, magnitude += std::abs(w);
     }
     if (std::abs(sum - 1.0) > 1e-9 * std::max(1.0, magnitude))
@@ -763,7 +764,7 @@ std::string scheme_json_kind(const Json& root, const std::string& label) {
   if (!root.is_object()) throw Error(fmt::format("{}: a scheme file holds a JSON object", path.string()));
   std::string kind = root.contains("kind") && root["kind"].is_string() ? root["kind"].get<std::string>() : "surface";
   if (kind != "surface" && kind != "curve")
-    throw Error(fmt::format("{}: kind: '{}' is not one of: surface, curve", path.string(), kind));
+    throw Error(fmt::format("{}: kind: {} is not one of: surface, curve", path.string(), subdiv::quoted(kind)));
   return kind;
 }
 

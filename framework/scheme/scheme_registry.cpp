@@ -12,6 +12,7 @@
 #include "framework/scheme/scheme_loader.h"
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace fs = std::filesystem;
@@ -50,7 +51,7 @@ fs::path find_scheme_file(const std::string& name_or_path, const fs::path& relat
   if (looks_like_path(name_or_path)) {
     fs::path p = name_or_path;
     if (p.is_relative() && !relative_to.empty() && path_exists(relative_to / p)) p = relative_to / p;
-    if (!path_exists(p)) throw Error(fmt::format("scheme file '{}' does not exist", name_or_path));
+    if (!path_exists(p)) throw Error(fmt::format("scheme file {} does not exist", subdiv::quoted(name_or_path)));
     return p;
   }
   for (const auto& dir : scheme_directories()) {
@@ -58,11 +59,11 @@ fs::path find_scheme_file(const std::string& name_or_path, const fs::path& relat
     if (path_exists(candidate)) return candidate;
   }
   if (find_code_scheme(name_or_path))
-    throw Error(fmt::format("scheme '{}' is defined by a plugin, not a file", name_or_path));
+    throw Error(fmt::format("scheme {} is defined by a plugin, not a file", subdiv::quoted(name_or_path)));
   std::string known;
   for (const auto& s : list_schemes()) known += (known.empty() ? "" : ", ") + s.name;
-  throw Error(fmt::format("unknown scheme '{}'; the schemes are: {} (or give a path to a .json file)",
-                          name_or_path, known));
+  throw Error(fmt::format("unknown scheme {}; the schemes are: {} (or give a path to a .json file)",
+                          subdiv::quoted(name_or_path), known));
 }
 
 std::shared_ptr<const CurveScheme> resolve_curve(const std::string& name, const fs::path& referring_file,
@@ -70,12 +71,12 @@ std::shared_ptr<const CurveScheme> resolve_curve(const std::string& name, const 
                                                  std::set<std::string>* used) {
   if (const CodeSchemeEntry* code = looks_like_path(name) ? nullptr : find_code_scheme(name)) {
     if (code->kind != "curve")
-      throw Error(fmt::format("'{}' is a surface scheme ({}); name a curve scheme", name, code->origin));
+      throw Error(fmt::format("{} is a surface scheme ({}); name a curve scheme", subdiv::quoted(name), code->origin));
     return code->make_curve(overrides, used);
   }
   const fs::path file = find_scheme_file(name, referring_file.parent_path());
   if (scheme_file_kind(file) != "curve")
-    throw Error(fmt::format("'{}' is a surface scheme; name a curve scheme", name));
+    throw Error(fmt::format("{} is a surface scheme; name a curve scheme", subdiv::quoted(name)));
   return load_curve_scheme(file, overrides, used);
 }
 
@@ -86,7 +87,7 @@ std::string scheme_file_path(const std::string& name_or_path) { return find_sche
 std::shared_ptr<const Scheme> load_scheme(const std::string& name_or_path, const ParameterOverrides& overrides) {
   if (const CodeSchemeEntry* code = looks_like_path(name_or_path) ? nullptr : find_code_scheme(name_or_path)) {
     if (code->kind != "surface")
-      throw Error(fmt::format("'{}' is a curve scheme ({}); surface refinement needs a surface scheme", name_or_path,
+      throw Error(fmt::format("{} is a curve scheme ({}); surface refinement needs a surface scheme", subdiv::quoted(name_or_path),
                               code->origin));
     return code->make_surface(overrides);
   }
@@ -102,7 +103,7 @@ std::shared_ptr<const CurveScheme> load_curve(const std::string& name_or_path, c
   std::shared_ptr<const CurveScheme> curve;
   if (const CodeSchemeEntry* code = looks_like_path(name_or_path) ? nullptr : find_code_scheme(name_or_path)) {
     if (code->kind != "curve")
-      throw Error(fmt::format("'{}' is a surface scheme ({}); name a curve scheme", name_or_path, code->origin));
+      throw Error(fmt::format("{} is a surface scheme ({}); name a curve scheme", subdiv::quoted(name_or_path), code->origin));
     curve = code->make_curve(overrides, &taken);
   } else {
     const fs::path file = find_scheme_file(name_or_path);
@@ -116,9 +117,9 @@ std::shared_ptr<const CurveScheme> load_curve(const std::string& name_or_path, c
   else
     for (const auto& [name, value] : overrides)
       if (!taken.count(name))
-        throw OptionError(fmt::format("{}: the scheme has no parameter '{}' (from {{param}} {}={}); {{scheme_list}} "
+        throw OptionError(fmt::format("{}: the scheme has no parameter {} (from {{param}} {}={}); {{scheme_list}} "
                                       "lists each scheme's parameters",
-                                      curve->path, name, name, value));
+                                      curve->path, subdiv::quoted(name), name, value));
   return curve;
 }
 
@@ -139,7 +140,7 @@ std::shared_ptr<const CurveScheme> load_curve_text(const std::string& text, cons
   else
     for (const auto& [name, value] : overrides)
       if (!taken.count(name))
-        throw OptionError(fmt::format("{}: the scheme has no parameter '{}' (from {{param}} {}={})", label, name, name,
+        throw OptionError(fmt::format("{}: the scheme has no parameter {} (from {{param}} {}={})", label, subdiv::quoted(name), name,
                                       value));
   return curve;
 }
@@ -147,16 +148,16 @@ std::shared_ptr<const CurveScheme> load_curve_text(const std::string& text, cons
 void register_code_scheme(CodeSchemeEntry entry) {
   if (entry.name.empty()) throw Error("a scheme needs a name");
   if (entry.kind != "surface" && entry.kind != "curve")
-    throw Error(fmt::format("scheme '{}': kind '{}' is not one of: surface, curve", entry.name, entry.kind));
+    throw Error(fmt::format("scheme {}: kind {} is not one of: surface, curve", subdiv::quoted(entry.name), subdiv::quoted(entry.kind)));
   if ((entry.kind == "surface" && !entry.make_surface) || (entry.kind == "curve" && !entry.make_curve))
-    throw Error(fmt::format("scheme '{}' has no function that makes it", entry.name));
+    throw Error(fmt::format("scheme {} has no function that makes it", subdiv::quoted(entry.name)));
   if (looks_like_path(entry.name) || entry.name.find_first_of(":, ") != std::string::npos)
-    throw Error(fmt::format("'{}' cannot be a scheme name: no '/', ':', ',' or spaces, no .json ending", entry.name));
+    throw Error(fmt::format("{} cannot be a scheme name: no '/', ':', ',' or spaces, no .json ending", subdiv::quoted(entry.name)));
   if (const CodeSchemeEntry* other = find_code_scheme(entry.name))
-    throw Error(fmt::format("duplicate scheme name '{}': {} already defines it", entry.name, other->origin));
+    throw Error(fmt::format("duplicate scheme name {}: {} already defines it", subdiv::quoted(entry.name), other->origin));
   for (const auto& dir : scheme_directories())
     if (fs::path file = dir / (entry.name + ".json"); path_exists(file))
-      throw Error(fmt::format("duplicate scheme name '{}': the scheme file {} already defines it", entry.name,
+      throw Error(fmt::format("duplicate scheme name {}: the scheme file {} already defines it", subdiv::quoted(entry.name),
                               file.string()));
   CodeSchemes& c = code_schemes();
   std::lock_guard lock(c.mutex);

@@ -7,6 +7,7 @@
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
 #include "framework/util/short_text.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -37,11 +38,11 @@ std::vector<Part> split_spec(const std::string& spec) {
         if (used != item.size() - colon - 1 || part.levels < 0 || part.levels > kMaxLevelsPerPart)
           throw std::invalid_argument("");
       } catch (...) {
-        throw OptionError(fmt::format("{{scheme}} '{}': '{}' should be NAME:LEVELS with LEVELS a whole number from 0 to {}",
-                                shortened(spec), shortened(item), kMaxLevelsPerPart));
+        throw OptionError(fmt::format("{{scheme}} {}: {} should be NAME:LEVELS with LEVELS a whole number from 0 to {}",
+                                subdiv::quoted(shortened(spec)), subdiv::quoted(shortened(item)), kMaxLevelsPerPart));
       }
     }
-    if (part.name.empty()) throw OptionError(fmt::format("{{scheme}} '{}': empty scheme name", spec));
+    if (part.name.empty()) throw OptionError(fmt::format("{{scheme}} {}: empty scheme name", subdiv::quoted(spec)));
     parts.push_back(part);
     start = end + 1;
   }
@@ -65,7 +66,7 @@ std::shared_ptr<const Scheme> part_scheme(const std::string& spec, size_t parts,
   } catch (const OptionError&) {
     throw;
   } catch (const Error& e) {
-    throw Error(fmt::format("scheme sequence '{}', part '{}': {}", shortened(spec), shortened(name), e.what()));
+    throw Error(fmt::format("scheme sequence {}, part {}: {}", subdiv::quoted(shortened(spec)), subdiv::quoted(shortened(name)), e.what()));
   }
 }
 
@@ -75,9 +76,9 @@ SchemeSequence load_scheme_sequence(const std::string& spec, int levels, const P
   std::vector<Part> parts = split_spec(spec);
   int fixed = 0, open = 0;
   for (const Part& p : parts) p.levels >= 0 ? fixed += p.levels : ++open;
-  if (open > 1) throw OptionError(fmt::format("{{scheme}} '{}': at most one scheme may omit its level count", spec));
+  if (open > 1) throw OptionError(fmt::format("{{scheme}} {}: at most one scheme may omit its level count", subdiv::quoted(spec)));
   if (open == 1 && levels < fixed)
-    throw OptionError(fmt::format("{{scheme}} '{}' fixes {} levels, more than {{levels}} {}", spec, fixed, levels));
+    throw OptionError(fmt::format("{{scheme}} {} fixes {} levels, more than {{levels}} {}", subdiv::quoted(spec), fixed, levels));
   SchemeSequence seq;
   std::set<std::string> used;
   for (Part& p : parts) {
@@ -92,9 +93,9 @@ SchemeSequence load_scheme_sequence(const std::string& spec, int levels, const P
   }
   for (const auto& [name, value] : overrides)
     if (!used.count(name))
-      throw OptionError(fmt::format("no scheme in '{}' has a parameter '{}' (from {{param}} {}={}); {{scheme_list}} "
+      throw OptionError(fmt::format("no scheme in {} has a parameter {} (from {{param}} {}={}); {{scheme_list}} "
                                     "lists each scheme's parameters",
-                                    spec, name, name, value));
+                                    subdiv::quoted(spec), subdiv::quoted(name), name, value));
   return seq;
 }
 

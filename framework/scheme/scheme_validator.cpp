@@ -13,6 +13,7 @@
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -87,7 +88,7 @@ std::string asymmetry(const CompiledRule& rule, const Sizes& s, Element e) {
       const int mirror = from_axis ? count - j : (e == Element::Vertex ? (count - j) % count : count - 1 - j);
       const double a = weight_at(t, s, j, e), b = weight_at(t, s, mirror, e);
       if (std::abs(a - b) > kTolerance)
-        return fmt::format("role '{}' is not symmetric: w(j={}) = {} but its mirror w(j={}) = {}", role_name(t.role), j,
+        return fmt::format("role {} is not symmetric: w(j={}) = {} but its mirror w(j={}) = {}", subdiv::quoted(role_name(t.role)), j,
                            a, mirror, b);
     }
   }
@@ -234,12 +235,12 @@ void check_roles(const Scheme& scheme, const StepRules& step, const std::string&
           why = fmt::format("the {} split makes {}", splitter_info(scheme.split()).name, faces_name(made));
         else if (step.is_split && base != needs)
           why = fmt::format("the base mesh may have {} (the scheme's \"faces\" is not \"{}\")", faces_name(base),
-                            faces_name(needs));
+                            escaped(faces_name(needs)));
         if (why.empty()) continue;
         ++report.checks;
-        report.errors.push_back({fmt::format("{}:{}: {} ({}): role '{}' needs {}, but {}", scheme.path,
+        report.errors.push_back({fmt::format("{}:{}: {} ({}): role {} needs {}, but {}", scheme.path,
                                              line_of(text, t.weight), t.where.substr(t.where.find(": ") + 2),
-                                             context_name(Context(c)), role_name(t.role), faces_name(needs), why)});
+                                             context_name(Context(c)), subdiv::quoted(role_name(t.role)), faces_name(needs), why)});
       }
     }
 }

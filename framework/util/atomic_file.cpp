@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace fs = std::filesystem;
@@ -49,9 +50,9 @@ bool is_temporary_id(std::string_view id) {
 int create_locked(const fs::path& tmp, const fs::path& target) {
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0)
-    throw Error(fmt::format("cannot write '{}': cannot create a temporary file in its directory ({}); check the "
+    throw Error(fmt::format("cannot write {}: cannot create a temporary file in its directory ({}); check the "
                             "directory's permissions and free space",
-                            target.string(), std::strerror(errno)));
+                            subdiv::quoted(target.string()), std::strerror(errno)));
   ::flock(fd, LOCK_EX | LOCK_NB);  // fresh file: nobody else can hold it
   return fd;
 }
@@ -64,8 +65,8 @@ void require_directory(const fs::path& target) {
   const fs::path dir = directory_of(target);
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
-    throw Error(fmt::format("cannot write '{}': directory '{}' does not exist; create it first",
-                            target.string(), dir.string()));
+    throw Error(fmt::format("cannot write {}: directory {} does not exist; create it first",
+                            subdiv::quoted(target.string()), subdiv::quoted(dir.string())));
 }
 
 // Checked before anything is written: a name the file system cannot hold would otherwise
@@ -74,17 +75,17 @@ void require_name_fits(const fs::path& target) {
   const long limit = pathconf(directory_of(target).c_str(), _PC_NAME_MAX);
   const size_t length = target.filename().string().size();
   if (limit > 0 && length > size_t(limit))
-    throw Error(fmt::format("cannot write '{}': its file name is {} bytes long, more than the {} this file system "
+    throw Error(fmt::format("cannot write {}: its file name is {} bytes long, more than the {} this file system "
                             "allows; choose a shorter name",
-                            target.string(), length, limit));
+                            subdiv::quoted(target.string()), length, limit));
 }
 
 void rename_into_place(const fs::path& tmp, const fs::path& target) {
   std::error_code ec;
   fs::rename(tmp, target, ec);
   if (ec)
-    throw Error(fmt::format("cannot write '{}': renaming the finished temporary file failed ({})",
-                            target.string(), ec.message()));
+    throw Error(fmt::format("cannot write {}: renaming the finished temporary file failed ({})",
+                            subdiv::quoted(target.string()), ec.message()));
 }
 
 }  // namespace

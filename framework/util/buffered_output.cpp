@@ -5,6 +5,7 @@
 
 #include "framework/util/checked_file_stream.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 
@@ -40,7 +41,7 @@ void BufferedOutput::close() {
 void BufferedOutput::fail(std::string_view what) {
   const int error = errno;
   if (error == ENOSPC || error == EDQUOT || error == EFBIG) throw Error(write_failure_text(shown_, error));
-  throw Error(fmt::format("cannot write '{}': {} ({})", shown_, what, std::strerror(error)));
+  throw Error(fmt::format("cannot write {}: {} ({})", subdiv::quoted(shown_), what, std::strerror(error)));
 }
 
 }  // namespace subdiv

@@ -15,10 +15,10 @@ namespace subdiv {
 
 std::string write_failure_text(const std::string& shown, int error) {
   if (error == ENOSPC || error == EDQUOT || error == EFBIG)
-    return fmt::format("cannot write '{}': the disk is full or the file is larger than allowed ({}); free some space "
+    return fmt::format("cannot write {}: the disk is full or the file is larger than allowed ({}); free some space "
                        "or write to another disk",
-                       escaped(shown), std::strerror(error));
-  return fmt::format("cannot write '{}': writing failed ({})", escaped(shown), std::strerror(error));
+                       subdiv::quoted(shown), std::strerror(error));
+  return fmt::format("cannot write {}: writing failed ({})", subdiv::quoted(shown), std::strerror(error));
 }
 
 CheckedFileBuffer::CheckedFileBuffer(const std::filesystem::path& file, const std::filesystem::path& shown)
@@ -26,7 +26,7 @@ CheckedFileBuffer::CheckedFileBuffer(const std::filesystem::path& file, const st
       shown_(shown.string()),
       buffer_(new char[kBufferSize]) {
   if (fd_ < 0)
-    throw Error(fmt::format("cannot write '{}': cannot create the file ({})", shown_, std::strerror(errno)));
+    throw Error(fmt::format("cannot write {}: cannot create the file ({})", subdiv::quoted(shown_), std::strerror(errno)));
   setp(buffer_.get(), buffer_.get() + kBufferSize);
 }
 

@@ -5,6 +5,7 @@
 
 #include "framework/util/memory_limit.h"
 #include "framework/util/short_text.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 
@@ -14,12 +15,12 @@ std::string unexpected_read_failure(const std::string& file, const std::exceptio
   const char* kind = dynamic_cast<const std::length_error*>(&e)   ? "a size in it is impossible"
                      : dynamic_cast<const std::out_of_range*>(&e) ? "an index or offset in it is out of range"
                                                                   : "the reader failed";
-  return fmt::format("cannot read '{}': {} ({}); the file is damaged or not in the format its extension says",
-                     file, kind, shortened(e.what()));
+  return fmt::format("cannot read {}: {} ({}); the file is damaged or not in the format its extension says",
+                     subdiv::quoted(file), kind, shortened(e.what()));
 }
 
 std::string read_out_of_memory(const std::string& file) {
-  return fmt::format("cannot read '{}': {}", file, out_of_memory_message("reading it"));
+  return fmt::format("cannot read {}: {}", subdiv::quoted(file), out_of_memory_message("reading it"));
 }
 
 }  // namespace subdiv

@@ -32,24 +32,24 @@ void check_input_file(const fs::path& file, std::string_view what) {
   // status() follows symlinks: a link to /dev/zero is judged by what it points to.
   const fs::file_status status = fs::status(file, ec);
   if (status.type() == fs::file_type::not_found)
-    throw Error(fmt::format("cannot open '{}': no such file", escaped(file.string())));
-  if (ec) throw Error(fmt::format("cannot open '{}': {}", escaped(file.string()), ec.message()));
+    throw Error(fmt::format("cannot open {}: no such file", subdiv::quoted(file.string())));
+  if (ec) throw Error(fmt::format("cannot open {}: {}", subdiv::quoted(file.string()), ec.message()));
   if (status.type() == fs::file_type::directory)
-    throw Error(fmt::format("cannot open '{}': it is a directory, not a {} file", escaped(file.string()), what));
+    throw Error(fmt::format("cannot open {}: it is a directory, not a {} file", subdiv::quoted(file.string()), what));
   if (status.type() != fs::file_type::regular)
-    throw Error(fmt::format("cannot open '{}': it is {}; give the path of a regular {} file", escaped(file.string()),
+    throw Error(fmt::format("cannot open {}: it is {}; give the path of a regular {} file", subdiv::quoted(file.string()),
                             kind_of(status.type()), what));
   const auto size = fs::file_size(file, ec);
-  if (ec) throw Error(fmt::format("cannot open '{}': {}", escaped(file.string()), ec.message()));
+  if (ec) throw Error(fmt::format("cannot open {}: {}", subdiv::quoted(file.string()), ec.message()));
   // Readers hold at least the whole text; a file larger than the memory left cannot be read.
   const MemoryBudget budget = available_memory();
   if (double(size) > budget.bytes)
     throw Error(
-        fmt::format("cannot read '{}': it is {:.2f} GiB, more than the {:.2f} GiB of memory this process "
+        fmt::format("cannot read {}: it is {:.2f} GiB, more than the {:.2f} GiB of memory this process "
                     "may still use ({}); split the {} file or raise the limit",
-                    escaped(file.string()), double(size) / (1 << 30), budget.bytes / (1 << 30), budget.source, what));
+                    subdiv::quoted(file.string()), double(size) / (1 << 30), budget.bytes / (1 << 30), budget.source, what));
   std::ifstream probe(file, std::ios::binary);
-  if (!probe) throw Error(fmt::format("cannot open '{}': {}", escaped(file.string()), std::strerror(errno)));
+  if (!probe) throw Error(fmt::format("cannot open {}: {}", subdiv::quoted(file.string()), std::strerror(errno)));
 }
 
 std::string read_input_file(const fs::path& file, std::string_view what, std::uintmax_t max_bytes) {
@@ -57,13 +57,13 @@ std::string read_input_file(const fs::path& file, std::string_view what, std::ui
   std::error_code ec;
   if (const auto size = fs::file_size(file, ec); !ec && size > max_bytes)
     throw Error(
-        fmt::format("cannot read '{}': it is {} bytes ({:.1f} MB), more than the {:.0f} MB a {} file may have; "
+        fmt::format("cannot read {}: it is {} bytes ({:.1f} MB), more than the {:.0f} MB a {} file may have; "
                     "is it the right file?",
-                    escaped(file.string()), size, double(size) / 1e6, double(max_bytes) / 1e6, what));
+                    subdiv::quoted(file.string()), size, double(size) / 1e6, double(max_bytes) / 1e6, what));
   std::ifstream in(file, std::ios::binary);
   std::ostringstream bytes;
   bytes << in.rdbuf();
-  if (in.bad()) throw Error(fmt::format("cannot read '{}': {}", escaped(file.string()), std::strerror(errno)));
+  if (in.bad()) throw Error(fmt::format("cannot read {}: {}", subdiv::quoted(file.string()), std::strerror(errno)));
   return std::move(bytes).str();
 }
 

@@ -9,6 +9,7 @@
 #include <span>
 
 #include "bindings.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdivkit {
 namespace {
@@ -79,9 +80,9 @@ std::unique_ptr<PreparedRefinement> make_evaluator(py::handle mesh, py::handle s
   const std::string name = mesh_name(mesh);
   SchemeChoice choice = scheme_choice_from(scheme, levels, params);
   if (choice.is_curve())
-    throw subdiv::Error(fmt::format("Evaluator: '{}' is a curve scheme; the Evaluator refines surfaces. For "
-                                    "polylines, stencils(mesh, '{}', {}, composed=True) gives the matrix to reuse",
-                                    choice.label, choice.label, levels));
+    throw subdiv::Error(fmt::format("Evaluator: {} is a curve scheme; the Evaluator refines surfaces. For "
+                                    "polylines, stencils(mesh, {}, {}, composed=True) gives the matrix to reuse",
+                                    subdiv::quoted(choice.label), subdiv::quoted(choice.label), levels));
   py::gil_scoped_release unlocked;
   const subdiv::ThreadLimit limit(threads);
   return std::make_unique<PreparedRefinement>(std::move(choice), base, name, options, threads);

@@ -6,6 +6,7 @@
 
 #include "bindings.h"
 #include "framework/pipeline/rational_weights.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdivkit {
 namespace {
@@ -85,7 +86,7 @@ py::dict evaluate_face_varying(const LimitSurfaceHandle& h, const std::string& n
   if (k == channels.size()) {
     std::vector<std::string> names;
     for (const auto& c : channels) names.push_back("'" + c.name + "'");
-    throw subdiv::Error(fmt::format("face-varying array '{}': the mesh has {}", name,
+    throw subdiv::Error(fmt::format("face-varying array {}: the mesh has {}", subdiv::quoted(name),
                                     names.empty() ? std::string("none") : fmt::format("{}", fmt::join(names, ", "))));
   }
   subdiv::EvaluatedPoints r;

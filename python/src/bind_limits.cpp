@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "bindings.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdivkit {
 namespace {
@@ -39,8 +40,8 @@ py::dict limit_positions(py::handle mesh, py::handle scheme, py::handle params, 
   const std::string name = mesh_name(mesh);
   const SchemeChoice c = scheme_choice_from(scheme, 1, params);
   if (c.sequence.schemes.size() != 1)
-    throw subdiv::Error(fmt::format("limit_positions: '{}' is a sequence; give one scheme (its limit is the limit "
-                                    "of the scheme that repeats)", c.label));
+    throw subdiv::Error(fmt::format("limit_positions: {} is a sequence; give one scheme (its limit is the limit "
+                                    "of the scheme that repeats)", subdiv::quoted(c.label)));
   if (m.face_count() == 0) throw subdiv::Error(fmt::format("{}: the mesh has no faces", name));
   subdiv::LimitResult r;
   {

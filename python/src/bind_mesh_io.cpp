@@ -5,6 +5,7 @@
 
 #include "bindings.h"
 #include "framework/io/mesh_seams.h"
+#include "framework/io/mesh_validate.h"
 #include "framework/util/quoted_text.h"
 
 namespace subdivkit {
@@ -31,7 +32,7 @@ std::vector<std::string> left_out(const std::string& ext, const std::vector<subd
                                   bool per_point) {
   std::vector<std::string> names;
   for (const auto& a : arrays)
-    if (!format_holds(ext, a, per_point)) names.push_back(fmt::format("'{}'", a.name));
+    if (!format_holds(ext, a, per_point)) names.push_back(fmt::format("{}", subdiv::quoted(a.name)));
   return names;
 }
 
@@ -50,8 +51,8 @@ void write(const std::string& path, py::handle mesh, py::handle point_data, py::
       for (auto& name : left_out(ext, data.cell_data, false)) lost.push_back(std::move(name));
       if (!lost.empty() &&
           PyErr_WarnEx(PyExc_UserWarning,
-                       subdiv::terminal_safe(fmt::format("write_mesh('{}'): {} files have no place for point or cell "
-                                   "data {}; use .ply, .vtp or .pvd to keep it", path, ext, fmt::join(lost, ", ")))
+                       subdiv::terminal_safe(fmt::format("write_mesh({}): {} files have no place for point or cell "
+                                   "data {}; use .ply, .vtp or .pvd to keep it", subdiv::quoted(path), ext, fmt::join(lost, ", ")))
                            .c_str(), 1) < 0)
         throw py::error_already_set();  // warnings filtered into errors
     }
@@ -99,6 +100,16 @@ void bind_mesh_io(py::module_& m) {
   m.def("_write_mesh", &write, py::arg("path"), py::arg("mesh"), py::arg("point_data"), py::arg("cell_data"),
         py::arg("face_varying"),
         "Writes a Mesh (subdivkit.write_mesh checks the arguments first).");
+  m.def(
+      "_check_mesh",
+      [](py::handle mesh, py::handle point_data, py::handle cell_data, const std::string& what) {
+        subdiv::MeshData data = mesh_from_python(mesh);
+        data.point_data = data_arrays_from(point_data, data.vertex_count(), "point data");
+        data.cell_data = data_arrays_from(cell_data, data.face_count(), "cell data");
+        subdiv::validate_mesh_data(data, what);
+      },
+      py::arg("mesh"), py::arg("point_data"), py::arg("cell_data"), py::arg("what"),
+      "Refuses (subdivkit.Error) a Mesh that write_mesh would refuse: the conversions' check.");
   m.def("_input_formats", &subdiv::supported_input_formats, "The extensions read_mesh reads.");
   m.def("_output_formats", &subdiv::supported_output_formats, "The extensions write_mesh writes.");
 }

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "bindings.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdivkit {
 namespace {
@@ -36,8 +37,8 @@ RefineInput input_from(py::handle mesh, py::handle point_data, py::handle cell_d
   for (const auto& a : in.face_varying)
     for (size_t c = 0; c < a.indices.size(); ++c)
       if (a.indices[c] < 0 || a.indices[c] >= a.value_count())
-        throw subdiv::Error(fmt::format("face-varying '{}': face corner {} uses value {}, but there are {} values",
-                                        a.name, c, a.indices[c], a.value_count()));
+        throw subdiv::Error(fmt::format("face-varying {}: face corner {} uses value {}, but there are {} values",
+                                        subdiv::quoted(a.name), c, a.indices[c], a.value_count()));
   return in;
 }
 
@@ -56,9 +57,9 @@ namespace {
 
 subdiv::CurveLevel curve_base(const RefineInput& in, const subdiv::CurveScheme& curve, int levels) {
   if (curve.nonlinear)
-    throw subdiv::Error(fmt::format("'{}' is a non-linear curve scheme (a plugin rule): no matrix can say it; use "
+    throw subdiv::Error(fmt::format("{} is a non-linear curve scheme (a plugin rule): no matrix can say it; use "
                                     "refine() instead",
-                                    curve.name));
+                                    subdiv::quoted(curve.name)));
   subdiv::CurveLevel base = subdiv::curve_level_from_mesh(in.mesh, in.name);
   subdiv::check_curve_size(base, curve.arity, levels);
   return base;
@@ -204,8 +205,8 @@ py::list stencils(py::handle mesh, py::handle scheme, py::handle params, int lev
     } else {
       subdiv::Hierarchy h = subdiv::refine(choice.sequence.runs, surface_base(in.mesh, in.name, choice), options);
       if (!h.linear())
-        throw subdiv::Error(fmt::format("'{}' has a non-linear step (a plugin rule): no matrix can say it; use "
-                                        "refine() instead", choice.label));
+        throw subdiv::Error(fmt::format("{} has a non-linear step (a plugin rule): no matrix can say it; use "
+                                        "refine() instead", subdiv::quoted(choice.label)));
       tables = std::move(h.stencils);
     }
     if (composed && !tables.empty()) {

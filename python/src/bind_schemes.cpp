@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include "bindings.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdivkit {
 namespace {
@@ -119,7 +120,7 @@ Useful in notebooks: write the rules inline, refine, analyse, change a weight, r
       .def("__repr__", [](const SchemeHandle& h) {
         std::string params;
         for (const auto& [k, v] : h.overrides) params += fmt::format(", {}={}", k, v);
-        return fmt::format("subdivkit.Scheme('{}', kind='{}'{})", h.name(), h.kind, params);
+        return fmt::format("subdivkit.Scheme({}, kind={}{})", subdiv::quoted(h.name()), subdiv::quoted(h.kind), params);
       });
   refuse_bare_new(scheme, "Scheme.load(name_or_path), Scheme.from_json(text) or Scheme.from_dict(d) makes one");
 

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "bindings.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdivkit {
 
@@ -21,8 +22,8 @@ std::string mesh_name(py::handle mesh) {
 subdiv::MeshData mesh_from_python(py::handle mesh) {
   for (const char* attr : {"points", "face_indices", "face_offsets"})
     if (!py::hasattr(mesh, attr))
-      throw subdiv::Error(fmt::format("expected a subdivkit.Mesh, got {} (it has no '{}')",
-                                      std::string(py::str(py::type::of(mesh))), attr));
+      throw subdiv::Error(fmt::format("expected a subdivkit.Mesh, got {} (it has no {})",
+                                      std::string(py::str(py::type::of(mesh))), subdiv::quoted(attr)));
   const std::string name = mesh_name(mesh);
   subdiv::MeshData m;
   m.positions = doubles_from(mesh.attr("points"), name + ".points");
@@ -97,7 +98,7 @@ subdiv::ArrayRole role_from_name(const std::string& name, const std::string& arr
   for (auto role : {subdiv::ArrayRole::Data, subdiv::ArrayRole::Normals, subdiv::ArrayRole::TextureCoordinates,
                     subdiv::ArrayRole::Color})
     if (name == role_name(role)) return role;
-  throw subdiv::Error(fmt::format("{}: role '{}' is not one of data, normals, texture_coordinates, color", array, name));
+  throw subdiv::Error(fmt::format("{}: role {} is not one of data, normals, texture_coordinates, color", array, subdiv::quoted(name)));
 }
 
 std::vector<subdiv::DataArray> data_arrays_from(py::handle items, Index rows, const std::string& what) {
@@ -110,10 +111,10 @@ std::vector<subdiv::DataArray> data_arrays_from(py::handle items, Index rows, co
     auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(tuple[1]);
     if (!values) {
       PyErr_Clear();
-      throw subdiv::Error(fmt::format("{} '{}': cannot be read as float64 values", what, a.name));
+      throw subdiv::Error(fmt::format("{} {}: cannot be read as float64 values", what, subdiv::quoted(a.name)));
     }
     if (values.ndim() < 1 || values.ndim() > 2 || values.shape(0) != rows)
-      throw subdiv::Error(fmt::format("{} '{}': expected {} rows (one per {}), got shape {}", what, a.name, rows,
+      throw subdiv::Error(fmt::format("{} {}: expected {} rows (one per {}), got shape {}", what, subdiv::quoted(a.name), rows,
                                       what == "point data" ? "point" : "face",
                                       std::string(py::str(py::tuple(values.attr("shape"))))));
     a.components = values.ndim() == 2 ? int(values.shape(1)) : 1;
@@ -160,30 +161,30 @@ std::vector<subdiv::FaceVaryingArray> face_varying_from(py::handle triples, Inde
     const py::array raw_indices = py::array::ensure(triple[2]);
     if (!raw_indices || (raw_indices.dtype().kind() != 'i' && raw_indices.dtype().kind() != 'u')) {
       PyErr_Clear();
-      throw subdiv::Error(fmt::format("face-varying '{}': corner indices must be integers, got {}", a.name,
+      throw subdiv::Error(fmt::format("face-varying {}: corner indices must be integers, got {}", subdiv::quoted(a.name),
                                       raw_indices ? std::string(py::str(raw_indices.dtype())) : "no array"));
     }
     // Checked as 64-bit values before the int32 copy, which would wrap them.
     const auto wide = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(raw_indices);
     for (py::ssize_t i = 0; i < wide.size(); ++i)
       if (wide.data()[i] < 0 || wide.data()[i] > std::numeric_limits<std::int32_t>::max())
-        throw subdiv::Error(fmt::format("face-varying '{}': corner {} has index {}, out of range (0-based indices "
-                                        "that fit in 32 bits)", a.name, i, wide.data()[i]));
+        throw subdiv::Error(fmt::format("face-varying {}: corner {} has index {}, out of range (0-based indices "
+                                        "that fit in 32 bits)", subdiv::quoted(a.name), i, wide.data()[i]));
     auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(triple[1]);
     auto indices = py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>::ensure(raw_indices);
     if (!values || !indices) {
       PyErr_Clear();
-      throw subdiv::Error(fmt::format("face-varying '{}': expected float64 values and integer corner indices", a.name));
+      throw subdiv::Error(fmt::format("face-varying {}: expected float64 values and integer corner indices", subdiv::quoted(a.name)));
     }
     for (py::ssize_t i = 0; i < values.size(); ++i)
       if (!std::isfinite(values.data()[i]))
-        throw subdiv::Error(fmt::format("face-varying '{}': value {} is {}; refinement would spread it to the "
-                                        "neighbours: fill it in, or remove the array", a.name,
+        throw subdiv::Error(fmt::format("face-varying {}: value {} is {}; refinement would spread it to the "
+                                        "neighbours: fill it in, or remove the array", subdiv::quoted(a.name),
                                         i / std::max<py::ssize_t>(values.ndim() == 2 ? values.shape(1) : 1, 1),
                                         values.data()[i]));
     if (values.ndim() != 2 || indices.ndim() != 1 || indices.shape(0) != corners)
-      throw subdiv::Error(fmt::format("face-varying '{}': expected values of shape (m, k) and {} corner indices (one "
-                                      "per face corner), got shapes {} and {}", a.name, corners,
+      throw subdiv::Error(fmt::format("face-varying {}: expected values of shape (m, k) and {} corner indices (one "
+                                      "per face corner), got shapes {} and {}", subdiv::quoted(a.name), corners,
                                       std::string(py::str(py::tuple(values.attr("shape")))),
                                       std::string(py::str(py::tuple(indices.attr("shape"))))));
     a.components = int(values.shape(1));

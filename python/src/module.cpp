@@ -25,6 +25,11 @@ PYBIND11_MODULE(_subdivkit, m) {
       "A SubdivKit error: a bad file, scheme, parameter or mesh. The message is the one the `subdiv` command line "
       "prints, naming the place and the fix, with options named as Python's arguments. A subclass of ValueError.";
   error.attr("__module__") = "subdivkit";
+  // User text (names, keys) in the messages the Python layer raises, escaped as the
+  // library's own messages are (framework/util/quoted_text.h); bytes in, so that any str
+  // reaches it (subdivkit.mesh._quoted encodes with surrogatepass).
+  m.def("_quoted", [](const py::bytes& text) { return subdiv::quoted(std::string(text)); });
+  m.def("_escaped", [](const py::bytes& text) { return subdiv::escaped(std::string(text)); });
   m.attr("__version__") = SUBDIV_VERSION;
   subdiv::register_vtk_formats();  // read_mesh/write_mesh handle .vtp, .vtk and .pvd
   subdivkit::bind_schemes(m);

@@ -14,8 +14,9 @@ subdivkit. Triangle-only libraries (Open3D, trimesh) get n-gons split into fans
 """
 import numpy as np
 
+from . import _subdivkit
 from ._subdivkit import Error
-from .mesh import Mesh
+from .mesh import Mesh, _data_arrays, _escaped
 
 
 def _require(module, debian_package):
@@ -30,7 +31,7 @@ def _fan_triangles(mesh):
     offsets, indices = mesh.face_offsets, mesh.face_indices
     sizes = np.diff(offsets)
     if np.any(sizes < 3):
-        raise Error(f"{mesh.name}: face {int(np.argmax(sizes < 3))} has fewer than 3 vertices; it makes no triangle")
+        raise Error(f"{_escaped(mesh.name)}: face {int(np.argmax(sizes < 3))} has fewer than 3 vertices; it makes no triangle")
     per_face = sizes - 2
     face_of = np.repeat(np.arange(mesh.n_faces), per_face)
     # Triangle t of face f is (first of f, its (k+1)-th, its (k+2)-th), k = t - first triangle of f.
@@ -90,9 +91,9 @@ def from_vtk(polydata, name="vtkPolyData"):
     if not hasattr(polydata, "GetPolys"):
         raise Error(f"from_vtk: expected a vtkPolyData, got {type(polydata).__name__}")
     if polydata.GetNumberOfStrips():
-        raise Error(f"{name}: {polydata.GetNumberOfStrips()} triangle strip(s): run vtkTriangleFilter first")
+        raise Error(f"{_escaped(name)}: {polydata.GetNumberOfStrips()} triangle strip(s): run vtkTriangleFilter first")
     if polydata.GetNumberOfVerts():
-        raise Error(f"{name}: {polydata.GetNumberOfVerts()} vertex cell(s) are not polygons or lines: remove them "
+        raise Error(f"{_escaped(name)}: {polydata.GetNumberOfVerts()} vertex cell(s) are not polygons or lines: remove them "
                     "(vtkExtractCells) or keep the polygons only")
     points = polydata.GetPoints()
     xyz = np.zeros((0, 3)) if points is None else vtk_to_numpy(points.GetData()).astype(float)
@@ -101,8 +102,10 @@ def from_vtk(polydata, name="vtkPolyData"):
     point_data, point_roles = _vtk_arrays(polydata.GetPointData(), len(xyz))
     cell_data, cell_roles = _vtk_arrays(polydata.GetCellData(), len(face_offsets) - 1,
                                         first=len(line_offsets) - 1)
-    return Mesh(xyz, faces, face_offsets=face_offsets, lines=lines, line_offsets=line_offsets,
+    mesh = Mesh(xyz, faces, face_offsets=face_offsets, lines=lines, line_offsets=line_offsets,
                 point_data=point_data, cell_data=cell_data, point_roles=point_roles, cell_roles=cell_roles, name=name)
+    _check(mesh, "from_vtk")  # as every reader checks its result: indices in range, finite points
+    return mesh
 
 
 def _numpy_to_vtk(name, values):
@@ -176,8 +179,10 @@ def from_open3d(triangle_mesh, name="open3d.TriangleMesh"):
         point_data["normal"], point_roles["normal"] = np.asarray(triangle_mesh.vertex_normals).copy(), "normals"
     if triangle_mesh.has_vertex_colors():
         point_data["color"], point_roles["color"] = np.asarray(triangle_mesh.vertex_colors).copy(), "color"
-    return Mesh(np.asarray(triangle_mesh.vertices), np.asarray(triangle_mesh.triangles), point_data=point_data,
+    mesh = Mesh(np.asarray(triangle_mesh.vertices), np.asarray(triangle_mesh.triangles), point_data=point_data,
                 point_roles=point_roles, name=name)
+    _check(mesh, "from_open3d")
+    return mesh
 
 
 def to_open3d(mesh):
@@ -206,7 +211,9 @@ def from_trimesh(tm, name="trimesh.Trimesh"):
     _require("trimesh", "python3-trimesh (not in Debian 12: pip install trimesh)")
     point_data = {k: np.asarray(v) for k, v in getattr(tm, "vertex_attributes", {}).items()}
     cell_data = {k: np.asarray(v) for k, v in getattr(tm, "face_attributes", {}).items()}
-    return Mesh(np.asarray(tm.vertices), np.asarray(tm.faces), point_data=point_data, cell_data=cell_data, name=name)
+    mesh = Mesh(np.asarray(tm.vertices), np.asarray(tm.faces), point_data=point_data, cell_data=cell_data, name=name)
+    _check(mesh, "from_trimesh")
+    return mesh
 
 
 def to_trimesh(mesh):
@@ -223,3 +230,9 @@ def to_trimesh(mesh):
 def _check(mesh, what):
     if not isinstance(mesh, Mesh):
         raise Error(f"{what}: expected a subdivkit.Mesh, got {type(mesh).__name__}")
+    # What write_mesh refuses, the other library would take and break on later (or at once,
+    # as numpy_to_vtk does on a 3-d array): offsets that do not fit the indices, indices out
+    # of range, non-finite points, data arrays without one row per point or face.
+    _subdivkit._check_mesh(mesh, _data_arrays(mesh.point_data, mesh.point_roles, mesh.n_points, "point data"),
+                           _data_arrays(mesh.cell_data, mesh.cell_roles, mesh.n_faces, "cell data"),
+                           f"{what}({mesh.name})")

@@ -122,6 +122,17 @@ def _as_pairs(creases):
     return _as_indices(pairs.reshape(-1), "creases").reshape(-1, 2)
 
 
+def _quoted(text):
+    """User text between single quotes for a message, control bytes and a NUL escaped
+    (framework/util/quoted_text.h: the library's messages quote names the same way)."""
+    return _subdivkit._quoted(str(text).encode("utf-8", "surrogatepass"))
+
+
+def _escaped(text):
+    """User text for a message, without quotes (a mesh's name before a colon)."""
+    return _subdivkit._escaped(str(text).encode("utf-8", "surrogatepass"))
+
+
 def _checked_array(name, check, doc):
     """A Mesh array stored as ``_name``, checked and converted by ``check(mesh, value)`` on assignment."""
     private = "_" + name
@@ -266,7 +277,7 @@ class Mesh:
         if len(sizes) == 0:
             return self.face_indices.reshape(0, 0)
         if np.any(sizes != sizes[0]):
-            raise Error(f"{self.name}: faces have {len(np.unique(sizes))} different sizes "
+            raise Error(f"{_escaped(self.name)}: faces have {len(np.unique(sizes))} different sizes "
                         f"({', '.join(map(str, np.unique(sizes)[:5]))}); an (m, k) array needs one size: "
                         "use face_indices and face_offsets, or face_list()")
         return self.face_indices.reshape(-1, int(sizes[0]))
@@ -306,7 +317,7 @@ class Mesh:
 def _role(roles, key, what):
     role = str((roles or {}).get(key, "data"))
     if role not in ROLES:
-        raise Error(f"{what} '{key}': role {role!r} is not one of {', '.join(ROLES)}")
+        raise Error(f"{what} {_quoted(key)}: role {role!r} is not one of {', '.join(ROLES)}")
     return role
 
 
@@ -320,12 +331,12 @@ def _data_arrays(data, roles, rows, what):
     for key, values in (data or {}).items():
         a = np.asarray(values)
         if a.dtype.kind not in "fiub":
-            raise Error(f"{what} '{key}': expected numbers, got dtype {a.dtype}")
+            raise Error(f"{what} {_quoted(key)}: expected numbers, got dtype {a.dtype}")
         if a.ndim not in (1, 2) or a.shape[0] != rows:
-            raise Error(f"{what} '{key}': expected {rows} rows, got shape {a.shape}")
+            raise Error(f"{what} {_quoted(key)}: expected {rows} rows, got shape {a.shape}")
         integer = a.dtype.kind in "iub"
         if integer and a.size and (a.min() < np.iinfo(np.int32).min or a.max() > _INT32_MAX):
-            raise Error(f"{what} '{key}': integer values must fit in 32 bits (labels); "
+            raise Error(f"{what} {_quoted(key)}: integer values must fit in 32 bits (labels); "
                         f"convert the array to float to interpolate it")
         columns = a.shape[1] if a.ndim == 2 else 1  # also with no rows (a level whose faces are all holes)
         arrays.append((str(key), np.ascontiguousarray(a.reshape(rows, columns), dtype=np.float64), integer,
@@ -338,12 +349,12 @@ def _face_varying_triples(mesh):
     triples = []
     for key, pair in (mesh.face_varying or {}).items():
         if not isinstance(pair, (tuple, list)) or len(pair) != 2:
-            raise Error(f"face_varying '{key}': expected a pair (values, indices)")
+            raise Error(f"face_varying {_quoted(key)}: expected a pair (values, indices)")
         values = np.asarray(pair[0])
         if values.dtype.kind not in "fiu":
-            raise Error(f"face_varying '{key}': expected numbers, got dtype {values.dtype}")
+            raise Error(f"face_varying {_quoted(key)}: expected numbers, got dtype {values.dtype}")
         values = np.ascontiguousarray(values.reshape(len(values), -1), dtype=np.float64)
-        indices = _as_indices(pair[1], f"face_varying '{key}' indices")
+        indices = _as_indices(pair[1], f"face_varying {_quoted(key)} indices")
         triples.append((str(key), values, indices))
     return triples
 

@@ -131,3 +131,29 @@ def test_trimesh_conversion_says_how_to_get_trimesh_when_it_is_missing():
     else:
         with pytest.raises(ImportError, match="trimesh"):
             sk.to_trimesh(mixed_mesh())
+
+
+@pytest.mark.skipif(not HAS_VTK, reason="python3-vtk9 is not installed")
+def test_vtk_conversions_refuse_what_write_mesh_refuses_with_escaped_names():
+    """Found by test_fuzz_conversions.py: to_vtk passed a 3-d point array to VTK (an
+    AssertionError from numpy_to_vtk), from_vtk returned infinite points and indices past the
+    last point, and a name's ESC reached the message raw."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    mesh = mixed_mesh()
+    mesh.point_data["block"] = np.zeros((9, 2, 2))
+    with pytest.raises(sk.Error, match="point data 'block': expected 9 rows"):
+        sk.to_vtk(mesh)
+    poly = sk.to_vtk(mixed_mesh())
+    points = vtkPoints()
+    points.SetData(numpy_to_vtk(np.full((9, 3), np.inf), deep=True))
+    poly.SetPoints(points)
+    with pytest.raises(sk.Error, match=r"in\\x1bfinite: vertex 0 has a non-finite coordinate") as e:
+        sk.from_vtk(poly, name="in\x1bfinite")
+    assert "\x1b" not in str(e.value)
+    cut = vtkPolyData()
+    cut.SetPoints(sk.to_vtk(mixed_mesh()).GetPoints())
+    cut.SetPolys(sk.to_vtk(sk.Mesh(np.zeros((12, 3)), [[0, 1, 11]])).GetPolys())
+    with pytest.raises(sk.Error, match="11"):
+        sk.from_vtk(cut)

@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """`subdiv refine` draws its progress bar on a terminal, and nothing on a pipe or with -q:
-while reading, on each level, while writing (VTK formats and OBJ, OFF, PLY, STL).
+while reading, on each level, while writing (VTK formats and OBJ, OFF, PLY, STL);
+`subdiv evaluate` and `subdiv interpolate` while reading their mesh; and within a level,
+after each pass of its step.
 
 The terminal is a pseudo-terminal (Python's pty module): stderr is a tty there, as in a
 shell. Usage: progress_pty_test.py SUBDIV SOURCE_DIR
@@ -65,6 +67,25 @@ def main():
                 shares = re.findall(phase + r" [^\r]*\] +(\d+)%", tty)
                 if not any(0 < int(share) < 100 for share in shares):
                     failures.append(f".{ext}: the bar while {phase} never stood between 0 and 100% ({shares})")
+        # evaluate and interpolate read their mesh with the same bar (issue 31).
+        points = Path(tmp) / "points.csv"
+        points.write_text("face,u,v\n0,0.5,0.5\n")
+        for command in [["evaluate", str(big), "--at", str(points), "-o", str(Path(tmp) / "limit.csv")],
+                        ["interpolate", str(big), "--max-iter", "0", "-o", str(Path(tmp) / "fit.obj")]]:
+            code, tty = run_on_pty([subdiv, *command], every_step)
+            shares = re.findall(r"reading [^\r]*\] +(\d+)%", tty)
+            if code != 0 or not any(0 < int(share) < 100 for share in shares):
+                failures.append(f"subdiv {command[0]}: exit {code}, no reading bar between 0 and 100% in {tty!r}")
+        # The bar moves within a level: the quad B-spline of degree 7 has 4 passes per level
+        # (a split and 3 smoothing passes), each told (engine/step_progress.h), so the last
+        # level's line shows the shares after 1, 2 and 3 of its passes (and the one it started at).
+        smooth = [subdiv, "refine", str(mesh), "-s", "quad-bspline", "--param", "d=7", "-l", "4", "-o",
+                  str(Path(tmp) / "smooth.obj")]
+        code, tty = run_on_pty(smooth, every_step)
+        inside = set(re.findall(r"level 4/4: [^\r]*\] +(\d+)%", tty))
+        if code != 0 or len([s for s in inside if 0 < int(s) < 100]) < 3:
+            failures.append(f"quad-bspline d=7: exit {code}; the last level's bar stood at {sorted(inside)}, "
+                            f"expected at least 3 shares within it: {tty!r}")
         piped = subprocess.run(refine, capture_output=True, text=True)
         if piped.returncode != 0 or "\r" in piped.stderr or "%" in piped.stderr:
             failures.append(f"with stderr a pipe: exit {piped.returncode}, stderr {piped.stderr!r} (expected no bar)")

@@ -32,7 +32,7 @@ void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& a, bool limi
   if (in_pieces) throw Error("--adaptive refines whole meshes: leave out --pieces and --max-memory");
   const std::string ext = lowercase_extension(output);
   if (ext == ".pvd" || ext == ".pvtp")
-    throw Error(fmt::format("-o '{}': --adaptive writes one mesh (.vtp, .obj, .ply, .off, .stl)", output));
+    throw Error(fmt::format("-o {}: --adaptive writes one mesh (.vtp, .obj, .ply, .off, .stl)", subdiv::quoted(output)));
   AdaptiveRequest r;
   r.refine = std::move(request);
   r.refine.levels = a.levels;

@@ -19,6 +19,7 @@
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/atomic_file.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::cli {
 namespace {
@@ -43,7 +44,7 @@ int parse_int(const std::string& text, const std::string& what) {
     if (used == text.size()) return v;
   } catch (...) {
   }
-  throw Error(fmt::format("--valence: '{}' in '{}' is not a whole number", text, what));
+  throw Error(fmt::format("--valence: {} in {} is not a whole number", subdiv::quoted(text), subdiv::quoted(what)));
 }
 
 // "3..12", "5", "3,5,8"; the pipeline checks their range.
@@ -72,7 +73,7 @@ void write_text(const std::filesystem::path& file, const std::string& text) {
   write_file_atomically(file, [&](const std::filesystem::path& tmp) {
     std::ofstream out(tmp, std::ios::binary);
     out << text;
-    if (!out) throw Error(fmt::format("cannot write '{}'", file.string()));
+    if (!out) throw Error(fmt::format("cannot write {}", subdiv::quoted(file.string())));
   });
 }
 

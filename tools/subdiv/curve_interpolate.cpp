@@ -18,6 +18,7 @@
 #include "interpolate_common.h"
 #include "level_output.h"
 #include "progress.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::cli {
 namespace {
@@ -55,10 +56,10 @@ void write_refined(const fs::path& out, const CurveScheme& scheme, const CurveLe
 void check_curve_outputs(const std::string& output, const std::string& refined) {
   const std::string ext = lowercase_extension(output);
   if (ext != ".obj" && ext != ".vtp")
-    throw Error(fmt::format("-o '{}': polylines are written as .obj ('l' lines) or .vtp; .off, .ply and .stl hold "
-                            "no polylines", output));
+    throw Error(fmt::format("-o {}: polylines are written as .obj ('l' lines) or .vtp; .off, .ply and .stl hold "
+                            "no polylines", subdiv::quoted(output)));
   if (!refined.empty() && lowercase_extension(refined) != ".pvd" && lowercase_extension(refined) != ".vtp")
-    throw Error(fmt::format("--refined '{}': use .pvd (every level) or .vtp (the finest level)", refined));
+    throw Error(fmt::format("--refined {}: use .pvd (every level) or .vtp (the finest level)", subdiv::quoted(refined)));
 }
 
 void write_curve_interpolation(const CurveInterpolationOutput& a, const InterpolateResult& r, const MeshData& mesh,

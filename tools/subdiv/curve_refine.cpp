@@ -19,9 +19,9 @@ namespace {
 void check_curve_output(const std::filesystem::path& out) {
   const std::string ext = lowercase_extension(out);
   if (ext == ".vtp" || ext == ".pvd" || ext == ".obj") return;
-  throw Error(fmt::format("cannot write polylines to '{}': use .vtp or .pvd (ParaView) or .obj ('l' lines); "
+  throw Error(fmt::format("cannot write polylines to {}: use .vtp or .pvd (ParaView) or .obj ('l' lines); "
                           ".off, .ply and .stl hold no polylines",
-                          out.string()));
+                          subdiv::quoted(out.string())));
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {

@@ -24,6 +24,7 @@
 #include "framework/util/error.h"
 #include "framework/util/parallel_for_all.h"
 #include "framework/util/quoted_text.h"
+#include "progress.h"
 
 namespace subdiv::cli {
 namespace {
@@ -67,14 +68,18 @@ void write_csv(const std::filesystem::path& out, const SurfacePoints& queries, c
         for (size_t c = 0; c < size_t(e.channels); ++c) f << ',' << number(e.position[i * size_t(e.channels) + c]);
       f << '\n';
     }
-    if (!f) throw Error(fmt::format("cannot write '{}'", out.string()));
+    if (!f) throw Error(fmt::format("cannot write {}", subdiv::quoted(out.string())));
   });
 }
 
 // The command line's options as a pipeline request (framework/pipeline/evaluate_request.h).
-EvaluateRequest evaluate_request(const EvaluateArgs& a) {
+// The mesh is read here, with the reading bar `subdiv refine` draws (io/io_progress.h).
+EvaluateRequest evaluate_request(const EvaluateArgs& a, Progress& progress) {
   EvaluateRequest r;
-  r.mesh_file = a.mesh;
+  progress.say(fmt::format("reading {}", a.mesh));
+  r.mesh = read_mesh(a.mesh, [&progress](double done) { progress.fraction(done); });
+  r.mesh_name = a.mesh;
+  progress.done();
   r.scheme.text = a.scheme;
   r.scheme.parameters = parse_params(a.params);
   if (a.boundary_given) r.shape.boundary = boundary_from_name(a.boundary, "--boundary");
@@ -93,19 +98,20 @@ void run(const EvaluateArgs& a) {
   if (a.limit && a.adaptive < 0) throw Error("--limit goes with --adaptive L");
   const std::string ext = lowercase_extension(a.output);
   if (!a.at.empty() && ext != ".csv")
-    throw Error(fmt::format("-o '{}': --at writes .csv (face,u,v,x,y,z[,du_*,dv_*[,duu_*,duv_*,dvv_*]])", a.output));
+    throw Error(fmt::format("-o {}: --at writes .csv (face,u,v,x,y,z[,du_*,dv_*[,duu_*,duv_*,dvv_*]])", subdiv::quoted(a.output)));
   if ((a.samples > 0 || a.adaptive >= 0) && ext == ".csv")
-    throw Error(fmt::format("-o '{}': --samples and --adaptive write a mesh (.vtp, .obj, .ply, .off, .stl)", a.output));
+    throw Error(fmt::format("-o {}: --samples and --adaptive write a mesh (.vtp, .obj, .ply, .off, .stl)", subdiv::quoted(a.output)));
   const int threads = a.threads > 0 ? a.threads : int(tbb::this_task_arena::max_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+  Progress progress;
   if (a.adaptive >= 0) {  // the same as subdiv refine --adaptive L (adaptive_refine_option.cpp)
-    AdaptiveResult r = refine_adaptive_request(adaptive_request_from(evaluate_request(a), a.adaptive, 0, a.limit));
+    AdaptiveResult r = refine_adaptive_request(adaptive_request_from(evaluate_request(a, progress), a.adaptive, 0, a.limit));
     for (const std::string& w : r.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
     fmt::print("subdiv: {}\n", adaptive_summary(r));
     write_mesh(a.output, adaptive_mesh_data(std::move(r.mesh), std::move(r.point_arrays)));
     return;
   }
-  const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a));
+  const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a, progress));
   for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
   if (a.samples > 0) {
     write_mesh(a.output, sampled_limit_mesh(prepared, a.samples));

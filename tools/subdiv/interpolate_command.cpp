@@ -31,6 +31,7 @@
 #include "framework/util/error.h"
 #include "level_output.h"
 #include "progress.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::cli {
 namespace {
@@ -54,7 +55,7 @@ void check_directory(const fs::path& out) {
   const fs::path dir = out.parent_path();
   std::error_code ec;  // (a name too long to look up is "does not exist" too)
   if (!dir.empty() && !fs::is_directory(dir, ec))
-    throw Error(fmt::format("cannot write '{}': directory '{}' does not exist", out.string(), dir.string()));
+    throw Error(fmt::format("cannot write {}: directory {} does not exist", subdiv::quoted(out.string()), subdiv::quoted(dir.string())));
 }
 
 std::optional<double> parse_number(const std::string& text) {
@@ -128,10 +129,10 @@ void apply_lambda(const InterpolateArgs& a, InterpolateRequest& request, Index v
   const std::optional<double> value = parse_number(a.lambda);
   std::error_code ec;
   if (!value && !fs::is_regular_file(a.lambda, ec))
-    throw Error(fmt::format("--lambda '{}' is neither a number nor a file of per-vertex values", a.lambda));
+    throw Error(fmt::format("--lambda {} is neither a number nor a file of per-vertex values", subdiv::quoted(a.lambda)));
   if (!declares_parameter(load_surface_sequence(request.scheme, a.levels, request.scheme.parameters), "lambda"))
-    throw Error(fmt::format("--lambda: no scheme in '{}' has a parameter lambda; Lin et al. 2015's shape control is "
-                            "--scheme catmull-clark-shape:1,catmull-clark", a.scheme));
+    throw Error(fmt::format("--lambda: no scheme in {} has a parameter lambda; Lin et al. 2015's shape control is "
+                            "--scheme catmull-clark-shape:1,catmull-clark", subdiv::quoted(a.scheme)));
   if (value) {
     request.scheme.parameters["lambda"] = a.lambda;
     return;
@@ -148,8 +149,8 @@ void check_outputs(const InterpolateArgs& a, bool curve) {
   if (!a.refined.empty()) {
     const std::string ext = lowercase_extension(a.refined);
     if (ext != ".pvd" && ext != ".vtp")
-      throw Error(fmt::format("--refined '{}': use .pvd (every level, for ParaView's time slider) or .vtp (the "
-                              "finest level); they carry the per-point residuals", a.refined));
+      throw Error(fmt::format("--refined {}: use .pvd (every level, for ParaView's time slider) or .vtp (the "
+                              "finest level); they carry the per-point residuals", subdiv::quoted(a.refined)));
     check_directory(a.refined);
     if (fs::absolute(a.refined) == fs::absolute(a.output))
       throw Error("--refined and -o name the same file; give two names");
@@ -195,15 +196,16 @@ void run(const InterpolateArgs& a) {
   check_outputs(a, curve);
   if (a.max_iterations < 0) throw Error("--max-iter must be 0 or more");
   if (curve && !a.lambda.empty())
-    throw Error(fmt::format("--lambda: '{}' is a curve scheme; Lin et al. 2015's shape parameter is for surfaces", a.scheme));
+    throw Error(fmt::format("--lambda: {} is a curve scheme; Lin et al. 2015's shape parameter is for surfaces", subdiv::quoted(a.scheme)));
   const ThreadLimit thread_limit(a.threads, "--threads");
   if (!thread_limit.note().empty()) fmt::print(stderr, "subdiv: note: {}\n", thread_limit.note());
 
-  const MeshData mesh = read_mesh(a.mesh);
+  Progress progress(false, a.quiet);
+  progress.say(fmt::format("reading {}", a.mesh));  // the bar `subdiv refine` draws while reading
+  const MeshData mesh = read_mesh(a.mesh, [&progress](double done) { progress.fraction(done); });
   InterpolateRequest request = request_from(a, mesh);
   apply_lambda(a, request, mesh.vertex_count());
   const std::vector<std::uint8_t> moving = request.moving;
-  Progress progress;
   std::vector<std::string> log;
   show_iterations(request, progress, a.verbose, log);
   const InterpolateResult r = interpolate_mesh(std::move(request));

@@ -7,13 +7,14 @@
 #include <sstream>
 
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::cli {
 namespace fs = std::filesystem;
 
 std::string read_text(const fs::path& file, const std::string& what) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw Error(fmt::format("{}: cannot read '{}'", what, file.string()));
+  if (!in) throw Error(fmt::format("{}: cannot read {}", what, subdiv::quoted(file.string())));
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
@@ -24,7 +25,7 @@ std::vector<std::uint8_t> read_selection(const std::string& select, Index vertex
   if (inline_list) return parse_vertex_selection(select, vertex_count, "--select");
   std::error_code ec;
   if (!fs::is_regular_file(select, ec))
-    throw Error(fmt::format("--select '{}': no such file, and not 'all' or a comma list of 0-based vertex ids", select));
+    throw Error(fmt::format("--select {}: no such file, and not 'all' or a comma list of 0-based vertex ids", subdiv::quoted(select)));
   return parse_vertex_selection(read_text(select, "--select"), vertex_count, select);
 }
 

@@ -12,6 +12,7 @@
 #include "framework/io/vtk/vtk_pieces.h"
 #include "mesh_subset.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::cli {
 namespace {
@@ -62,8 +63,8 @@ void write_piece(StagedFiles& staged, const std::filesystem::path& target, const
 void check_output_path(const std::filesystem::path& out) {
   const std::string ext = lowercase_extension(out);
   if (ext == ".vtp" || ext == ".pvd" || ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl") return;
-  throw Error(fmt::format("cannot write '{}': unknown output format '{}'; use .vtp or .pvd (ParaView), "
-                          "or .obj, .off, .ply, .stl", out.string(), ext));
+  throw Error(fmt::format("cannot write {}: unknown output format {}; use .vtp or .pvd (ParaView), "
+                          "or .obj, .off, .ply, .stl", subdiv::quoted(out.string()), subdiv::quoted(ext)));
 }
 
 void check_output_not_input(const std::filesystem::path& input, const std::filesystem::path& out, bool force,
@@ -75,8 +76,8 @@ void check_output_not_input(const std::filesystem::path& input, const std::files
     return fs::equivalent(a, b, ec) && !ec;
   };
   const auto refuse = [&](const std::string& how) {
-    throw Error(fmt::format("{} '{}' {} the input mesh '{}': writing would lose the control mesh; name another "
-                            "output, or add --force to overwrite it", option, out.string(), how, input.string()));
+    throw Error(fmt::format("{} {} {} the input mesh {}: writing would lose the control mesh; name another "
+                            "output, or add --force to overwrite it", option, subdiv::quoted(out.string()), how, subdiv::quoted(input.string())));
   };
   if (same(input, out)) refuse("is");
   const std::string ext = lowercase_extension(out);

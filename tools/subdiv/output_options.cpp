@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::cli {
 namespace {
@@ -26,13 +27,13 @@ std::string compressor_names() {
 VtkCompressor compressor_from_name(const std::string& name) {
   for (const auto& c : kCompressors)
     if (name == c.name) return c.type;
-  throw Error(fmt::format("--compression '{}' is not a compressor; use one of {}", name, compressor_names()));
+  throw Error(fmt::format("--compression {} is not a compressor; use one of {}", subdiv::quoted(name), compressor_names()));
 }
 
 VtkEncoding encoding_from_name(const std::string& name) {
   if (name == "base64") return VtkEncoding::Base64;
   if (name == "raw") return VtkEncoding::Raw;
-  throw Error(fmt::format("--vtp-encoding '{}' is not an encoding; use base64 or raw", name));
+  throw Error(fmt::format("--vtp-encoding {} is not an encoding; use base64 or raw", subdiv::quoted(name)));
 }
 
 // The arrays write_vtp adds itself (sharpness, cell_kind, corner_sharpness) as `arrays` chooses.

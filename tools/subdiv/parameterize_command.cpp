@@ -11,6 +11,7 @@
 #include "framework/io/mesh_write.h"
 #include "framework/parameterize/parameterize_mesh.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::cli {
 namespace {
@@ -24,9 +25,9 @@ struct ParameterizeArgs {
 void check_output(const std::string& out) {
   const std::string ext = lowercase_extension(out);
   if (ext == ".obj" || ext == ".vtp" || ext == ".ply" || ext == ".off") return;
-  throw Error(fmt::format("cannot write texture coordinates to '{}': use .obj (vt), .vtp (active texture coordinates), "
+  throw Error(fmt::format("cannot write texture coordinates to {}: use .obj (vt), .vtp (active texture coordinates), "
                           ".ply or .off",
-                          out));
+                          subdiv::quoted(out)));
 }
 
 void run(const ParameterizeArgs& a) {

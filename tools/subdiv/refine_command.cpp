@@ -98,15 +98,15 @@ void check_piece_options(const RefineArgs& a) {
   const bool pvtp = lowercase_extension(a.output) == ".pvtp";
   if (!a.in_pieces()) {
     if (pvtp)
-      throw Error(fmt::format("cannot write '{}': a .pvtp holds a refinement in pieces; add --pieces N (or "
+      throw Error(fmt::format("cannot write {}: a .pvtp holds a refinement in pieces; add --pieces N (or "
                               "--max-memory SIZE), or write .vtp or .pvd",
-                              a.output));
+                              subdiv::quoted(a.output)));
     return;
   }
   if (!pvtp)
     throw Error(fmt::format("--pieces and --max-memory write one .vtp per piece and a .pvtp that lists them, but -o "
-                            "'{}' is not a .pvtp; write -o {}.pvtp",
-                            a.output, std::filesystem::path(a.output).replace_extension().string()));
+                            "{} is not a .pvtp; write -o {}.pvtp",
+                            subdiv::quoted(a.output), std::filesystem::path(a.output).replace_extension().string()));
   if (a.limit || a.normals)
     throw Error(fmt::format("{} cannot be combined with --pieces or --max-memory yet (limit masks read a ring "
                             "beyond a piece); refine whole, or leave out {}",
@@ -157,9 +157,9 @@ void run(const RefineArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   check_output_not_input(a.mesh, a.output, a.force);
   if (is_curve_scheme(a.scheme) && a.in_pieces())
-    throw Error(fmt::format("--pieces: '{}' is a curve scheme; refinement in pieces is for surfaces, refine "
+    throw Error(fmt::format("--pieces: {} is a curve scheme; refinement in pieces is for surfaces, refine "
                             "polylines whole (leave out --pieces and --max-memory)",
-                            a.scheme));
+                            subdiv::quoted(a.scheme)));
   if (is_curve_scheme(a.scheme))  // polylines: tools/subdiv/curve_refine.cpp
     return refine_curves_command(
         {a.mesh, a.scheme, a.output, a.levels, parse_params(a.params), a.threads, a.quiet, a.weights});

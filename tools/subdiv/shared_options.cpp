@@ -4,6 +4,7 @@
 
 #include "framework/pipeline/parameter_text.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::cli {
 
@@ -45,9 +46,9 @@ std::map<std::string, std::string> vertex_param_files(const std::vector<std::str
   for (const std::string& spec : specs) {
     const auto eq = spec.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == spec.size())
-      throw Error(fmt::format("--vertex-param '{}' must be written name=FILE", spec));
+      throw Error(fmt::format("--vertex-param {} must be written name=FILE", subdiv::quoted(spec)));
     const std::string name = spec.substr(0, eq);
-    if (out.count(name)) throw Error(fmt::format("--vertex-param: '{}' is given twice", name));
+    if (out.count(name)) throw Error(fmt::format("--vertex-param: {} is given twice", subdiv::quoted(name)));
     out[name] = spec.substr(eq + 1);
   }
   return out;

@@ -124,10 +124,10 @@ int report_parse_error(const CLI::App& app, const CLI::ParseError& e, int argc, 
     const std::vector<std::string> commands = command_names(app);
     const std::string option = unknown_option(app, app, argc, argv);
     if (!word.empty())
-      message = fmt::format("unknown command '{}'{} The commands are: {}.", word,
+      message = fmt::format("unknown command {}{} The commands are: {}.", subdiv::quoted(word),
                             suggestion(word, commands).empty() ? "." : suggestion(word, commands), joined(commands));
     else if (!option.empty())
-      message = fmt::format("unknown option '{}'; a command comes first: subdiv COMMAND [OPTIONS]", option);
+      message = fmt::format("unknown option {}; a command comes first: subdiv COMMAND [OPTIONS]", subdiv::quoted(option));
     else
       message = fmt::format("no command given; the commands are: {}", joined(commands));
   } else {
@@ -135,7 +135,7 @@ int report_parse_error(const CLI::App& app, const CLI::ParseError& e, int argc, 
     help = fmt::format("subdiv {} --help", cmd.get_name());
     const std::string option = unknown_option(app, cmd, argc, argv);
     if (!option.empty())
-      message = fmt::format("unknown option '{}' for `subdiv {}`{}", option, cmd.get_name(),
+      message = fmt::format("unknown option {} for `subdiv {}`{}", subdiv::quoted(option), cmd.get_name(),
                             suggestion(option, long_options(cmd)));
     else
       message = reworded(e);

@@ -30,11 +30,11 @@ void add_validate_command(CLI::App& app) {
       }
       const ValidationReport r = validate_scheme_file(file, range->first, range->second);
       if (r.ok() && !r.skipped.empty() && r.checks == 0) {
-        fmt::print("{}: skipped ({} scheme '{}': {})\n", file, r.kind, r.scheme_name, r.skipped);
+        fmt::print("{}: skipped ({} scheme {}: {})\n", file, r.kind, subdiv::quoted(r.scheme_name), r.skipped);
         continue;
       }
       if (r.ok()) {
-        fmt::print("{}: ok ({} scheme '{}', {} checks{}{})\n", file, r.kind, r.scheme_name, r.checks,
+        fmt::print("{}: ok ({} scheme {}, {} checks{}{})\n", file, r.kind, subdiv::quoted(r.scheme_name), r.checks,
                    r.skipped.empty() ? "" : "; not checked: ", r.skipped);
         continue;
       }

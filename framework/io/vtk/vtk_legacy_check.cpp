@@ -59,9 +59,9 @@ public:
       else if (k == "point_data" || k == "cell_data") attributes(k);
       else if (k == "field") field(kUnknownTuples);
       else if (k == "metadata") metadata();
-      else fail(fmt::format("unknown section '{}'; a POLYDATA file has POINTS, VERTICES, LINES, POLYGONS, "
+      else fail(fmt::format("unknown section {}; a POLYDATA file has POINTS, VERTICES, LINES, POLYGONS, "
                             "TRIANGLE_STRIPS, POINT_DATA, CELL_DATA and FIELD",
-                            shortened(*keyword)));
+                            subdiv::quoted(shortened(*keyword))));
     }
     if (!seen_points_) fail("the file has no POINTS section");
   }
@@ -108,8 +108,8 @@ private:
     // VTK reads words into 256-byte buffers: a longer one is split in two, and the reader
     // takes its second half for the next word while this check would not.
     if (pos_ - begin > 255)
-      fail(fmt::format("a word of {} characters ('{}'); VTK's reader reads words of at most 255 and would split it",
-                       pos_ - begin, shortened(bytes_.substr(begin, pos_ - begin))));
+      fail(fmt::format("a word of {} characters ({}); VTK's reader reads words of at most 255 and would split it",
+                       pos_ - begin, subdiv::quoted(shortened(bytes_.substr(begin, pos_ - begin)))));
     return bytes_.substr(begin, pos_ - begin);
   }
 
@@ -123,7 +123,7 @@ private:
     const std::string_view t = token(what);
     long long v;
     if (!parse_integer(t, v) || v < 0)
-      fail(fmt::format("{} must be a whole number >= 0, found '{}'", what, shortened(t)));
+      fail(fmt::format("{} must be a whole number >= 0, found {}", what, subdiv::quoted(shortened(t))));
     return std::uint64_t(v);
   }
 
@@ -158,7 +158,7 @@ private:
     raw_line();  // the title: any text
     const std::string format = lower(token("ASCII or BINARY"));
     if (format != "ascii" && format != "binary")
-      fail(fmt::format("the third line must say ASCII or BINARY, not '{}'", shortened(format)));
+      fail(fmt::format("the third line must say ASCII or BINARY, not {}", subdiv::quoted(shortened(format))));
     binary_ = format == "binary";
     if (lower(token("DATASET")) != "dataset") fail("expected 'DATASET POLYDATA' after ASCII or BINARY");
     const std::string type = lower(token("the dataset type"));
@@ -182,8 +182,8 @@ private:
   void values(std::uint64_t n, const std::string& type, const char* what, Visit visit) {
     const std::size_t size = binary_size(type);
     if (size == 0 && type != "bit")
-      fail(fmt::format("{} has data type '{}', which SubdivKit does not read; use float, double or an integer type",
-                       what, shortened(type)));
+      fail(fmt::format("{} has data type {}, which SubdivKit does not read; use float, double or an integer type",
+                       what, subdiv::quoted(shortened(type))));
     if (type == "bit") {  // packed 8 to a byte; holds no coordinates or ids
       if (binary_) {
         end_of_line();
@@ -195,7 +195,7 @@ private:
         for (std::uint64_t i = 0; i < n; ++i) {
           const std::string_view t = token(what);
           long long v;
-          if (!parse_integer(t, v)) fail(fmt::format("{}: '{}' is not a bit (0 or 1)", what, shortened(t)));
+          if (!parse_integer(t, v)) fail(fmt::format("{}: {} is not a bit (0 or 1)", what, subdiv::quoted(shortened(t))));
         }
       }
       blanks_after_data();
@@ -213,7 +213,7 @@ private:
     for (std::uint64_t i = 0; i < n; ++i) {
       const std::string_view t = token(what);
       double v;
-      if (!parse_double(t, v)) fail(fmt::format("{}: '{}' is not a number", what, shortened(t)));
+      if (!parse_double(t, v)) fail(fmt::format("{}: {} is not a number", what, subdiv::quoted(shortened(t))));
       visit(v);
     }
     blanks_after_data();
@@ -393,11 +393,11 @@ private:
       const std::uint64_t tuples = count("the number of tuples");
       (void)tuples_expected;
       if (components == 0 || components > 1024 || tuples > remaining())
-        fail(fmt::format("field array '{}' has {} components and {} tuples, which cannot fit in the file",
-                         shortened(name), components, tuples));
+        fail(fmt::format("field array {} has {} components and {} tuples, which cannot fit in the file",
+                         subdiv::quoted(shortened(name)), components, tuples));
       const std::string type = lower(token("the data type"));
       if (type == "string" || type == "utf8_string" || type == "variant")
-        fail(fmt::format("field array '{}' holds {}; SubdivKit reads only numeric arrays", shortened(name), type));
+        fail(fmt::format("field array {} holds {}; SubdivKit reads only numeric arrays", subdiv::quoted(shortened(name)), type));
       values(components * tuples, type, "FIELD array", [](double) {});
       const std::size_t mark = pos_, mark_line = line_;
       const auto t = next_token();

@@ -56,7 +56,7 @@ bool make_directory(const fs::path& dir, std::string_view context) {
   std::error_code ec;
   const bool created = fs::create_directory(dir, ec);
   if (ec || !fs::is_directory(dir, ec))
-    throw Error(fmt::format("{}: cannot create directory '{}' ({})", context, escaped(dir.string()),
+    throw Error(fmt::format("{}: cannot create directory {} ({})", context, subdiv::quoted(dir.string()),
                             ec ? ec.message() : "a file of that name exists"));
   return created;
 }
@@ -78,7 +78,7 @@ void remove_stale_levels(const fs::path& dir, const std::set<std::string>& writt
 }  // namespace
 
 void write_vtp(const fs::path& file, const OutputLevel& level, const VtkWriteOptions& options) {
-  io_detail::check_output_level(level, fmt::format("cannot write '{}'", escaped(file.string())));
+  io_detail::check_output_level(level, fmt::format("cannot write {}", subdiv::quoted(file.string())));
   const auto poly = io_detail::make_polydata(level, options, io_detail::LevelMemory::Share);
   write_file_atomically(file, [&](const fs::path& tmp) {
     io_detail::write_polydata_file(*poly, tmp, file, options);
@@ -86,13 +86,13 @@ void write_vtp(const fs::path& file, const OutputLevel& level, const VtkWriteOpt
 }
 
 void write_pvd(const fs::path& pvd, std::span<const OutputLevel> levels, const VtkWriteOptions& options) {
-  const std::string context = fmt::format("cannot write '{}'", escaped(pvd.string()));
+  const std::string context = fmt::format("cannot write {}", subdiv::quoted(pvd.string()));
   check_levels(levels, context);
   const fs::path parent = pvd.parent_path().empty() ? fs::path(".") : pvd.parent_path();
   std::error_code ec;
   if (!fs::is_directory(parent, ec))
-    throw Error(fmt::format("{}: directory '{}' does not exist; create it first", context,
-                            parent.string()));
+    throw Error(fmt::format("{}: directory {} does not exist; create it first", context,
+                            subdiv::quoted(parent.string())));
   const std::string folder = pvd.stem().string() + "_levels";
   io_detail::require_xml_text(folder, "the levels' folder name", context);  // the index names it
   const fs::path dir = parent / folder;

@@ -23,7 +23,7 @@ std::string folder_name(const fs::path& pvtp) { return pvtp.stem().string() + "_
 // The XML head of a .vtp (everything before its binary appended data).
 std::string xml_head(const fs::path& vtp) {
   std::ifstream in(vtp, std::ios::binary);
-  if (!in) throw Error(fmt::format("cannot read piece '{}' to describe it in the .pvtp", escaped(vtp.string())));
+  if (!in) throw Error(fmt::format("cannot read piece {} to describe it in the .pvtp", subdiv::quoted(vtp.string())));
   std::string head, line;
   while (std::getline(in, line) && line.find("<AppendedData") == std::string::npos) head += line + "\n";
   return head;
@@ -42,7 +42,7 @@ std::string parallel_arrays(const std::string& head, const std::string& section)
     const std::string attributes = (*a)[1];
     std::string kept;
     for (auto t = std::sregex_iterator(attributes.begin(), attributes.end(), attribute); t != std::sregex_iterator(); ++t)
-      kept += fmt::format(" {}=\"{}\"", (*t)[1].str(), (*t)[2].str());
+      kept += fmt::format(" {}=\"{}\"", (*t)[1].str(), escaped((*t)[2].str()));
     out += fmt::format("      <PDataArray{}/>\n", kept);
   }
   return out;
@@ -63,14 +63,14 @@ void make_piece_folder(const fs::path& pvtp) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (!fs::is_directory(dir, ec))
-    throw Error(fmt::format("cannot write '{}': cannot create the pieces' folder '{}' ({}); check the path and its "
+    throw Error(fmt::format("cannot write {}: cannot create the pieces' folder {} ({}); check the path and its "
                             "permissions",
-                            pvtp.string(), escaped(dir.string()), ec ? ec.message() : "a file of that name exists"));
+                            subdiv::quoted(pvtp.string()), subdiv::quoted(dir.string()), ec ? ec.message() : "a file of that name exists"));
 }
 
 void write_piece_vtp(StagedFiles& staged, const fs::path& target, const OutputLevel& level,
                      const VtkWriteOptions& options) {
-  io_detail::check_output_level(level, fmt::format("cannot write '{}'", escaped(target.string())));
+  io_detail::check_output_level(level, fmt::format("cannot write {}", subdiv::quoted(target.string())));
   const auto poly = io_detail::make_polydata(level, options, io_detail::LevelMemory::Share);
   io_detail::write_polydata_file(*poly, staged.stage(target), target, options);
 }

@@ -68,12 +68,12 @@ void check_array(const DataArray& a, std::size_t tuples, const char* per, std::s
   if (a.name.empty()) throw Error(fmt::format("{}: a {} data array has no name", context, per));
   require_xml_text(a.name, fmt::format("{} data array", per), context);
   if (a.components < 1)
-    throw Error(fmt::format("{}: array '{}' has {} components; it needs at least 1", context,
-                            escaped(a.name), a.components));
+    throw Error(fmt::format("{}: array {} has {} components; it needs at least 1", context,
+                            subdiv::quoted(a.name), a.components));
   if (a.values.size() != tuples * std::size_t(a.components))
-    throw Error(fmt::format("{}: array '{}' has {} values, expected {} ({} {}s x {} "
+    throw Error(fmt::format("{}: array {} has {} values, expected {} ({} {}s x {} "
                             "components)",
-                            context, escaped(a.name), a.values.size(), tuples * a.components, tuples,
+                            context, subdiv::quoted(a.name), a.values.size(), tuples * a.components, tuples,
                             per, a.components));
   if (!a.integer) return;
   // On every core first; in order, for the message, only if some value is not whole.
@@ -93,9 +93,9 @@ void check_array(const DataArray& a, std::size_t tuples, const char* per, std::s
     const double v = a.values[i];
     if (v != std::floor(v) || v < std::numeric_limits<int>::min() ||
         v > std::numeric_limits<int>::max())
-      throw Error(fmt::format("{}: integer array '{}' holds {} at position {}, which is not a "
+      throw Error(fmt::format("{}: integer array {} holds {} at position {}, which is not a "
                               "whole number that fits an int; mark the array as not integer",
-                              context, escaped(a.name), v, i));
+                              context, subdiv::quoted(a.name), v, i));
   }
 }
 
@@ -105,11 +105,11 @@ void check_arrays(const std::vector<DataArray>& arrays, const std::set<std::stri
   std::set<std::string> names;
   for (const DataArray& a : arrays) {
     if (reserved.count(a.name))
-      throw Error(fmt::format("{}: array name '{}' is reserved for the array write_vtp adds; "
+      throw Error(fmt::format("{}: array name {} is reserved for the array write_vtp adds; "
                               "rename it",
-                              context, escaped(a.name)));
+                              context, subdiv::quoted(a.name)));
     if (!names.insert(a.name).second)
-      throw Error(fmt::format("{}: two {} data arrays are named '{}'", context, per, escaped(a.name)));
+      throw Error(fmt::format("{}: two {} data arrays are named {}", context, per, subdiv::quoted(a.name)));
     const bool alternative = a.components > 0 &&
                              a.values.size() == alternative_tuples * std::size_t(a.components);
     check_array(a, alternative ? alternative_tuples : tuples, per, context);
@@ -374,7 +374,7 @@ void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path
   writer->WriteToStream(nullptr);
   stream.close();  // a failed write is the cause of anything VTK reports after it
   if (written != 1 || writer->GetErrorCode() != 0 || !errors.empty())
-    throw Error(fmt::format("cannot write '{}': VTK reports: {}", escaped(shown.string()),
+    throw Error(fmt::format("cannot write {}: VTK reports: {}", subdiv::quoted(shown.string()),
                             errors.empty() ? "an unknown error" : errors));
   if (options.progress) options.progress(1.0);
 }

@@ -70,7 +70,7 @@ private:
 };
 
 [[noreturn]] void fail(const fs::path& file, std::string_view problem) {
-  throw Error(fmt::format("cannot read '{}': {}", escaped(file.string()), problem));
+  throw Error(fmt::format("cannot read {}: {}", subdiv::quoted(file.string()), problem));
 }
 
 // What VTK said went wrong: the reader's own message, else whatever it printed.
@@ -226,8 +226,8 @@ std::vector<DataArray> read_arrays(vtkDataSetAttributes& attributes, bool point,
     const std::string shown = name && *name ? name : fmt::format("#{}", i);
     auto* array = vtkDataArray::SafeDownCast(abstract);
     if (!array)
-      fail(file, fmt::format("{} array '{}' is not numeric ({}); SubdivKit refines numbers only: remove it or "
-                             "convert it", point ? "point" : "cell", shown, abstract->GetClassName()));
+      fail(file, fmt::format("{} array {} is not numeric ({}); SubdivKit refines numbers only: remove it or "
+                             "convert it", point ? "point" : "cell", subdiv::quoted(shown), abstract->GetClassName()));
     DataArray a;
     a.name = name && *name ? name : fmt::format("array_{}", i);
     a.components = array->GetNumberOfComponents();
@@ -264,13 +264,13 @@ void read_user_arrays(vtkPolyData& poly, MeshData& mesh, const fs::path& file) {
   const vtkIdType points = poly.GetNumberOfPoints();
   for (int i = 0; i < poly.GetPointData()->GetNumberOfArrays(); ++i)
     if (auto* a = poly.GetPointData()->GetAbstractArray(i); a && a->GetNumberOfTuples() < points)
-      fail(file, fmt::format("point array '{}' has {} tuples for {} points", escaped(a->GetName() ? a->GetName() : ""),
+      fail(file, fmt::format("point array {} has {} tuples for {} points", subdiv::quoted(a->GetName() ? a->GetName() : ""),
                              a->GetNumberOfTuples(), points));
   mesh.point_data = read_arrays(*poly.GetPointData(), true, points, [](vtkIdType t) { return t; }, file);
   const std::vector<vtkIdType> cells = face_cells(poly);
   for (int i = 0; i < poly.GetCellData()->GetNumberOfArrays(); ++i)
     if (auto* a = poly.GetCellData()->GetAbstractArray(i); a && a->GetNumberOfTuples() < poly.GetNumberOfCells())
-      fail(file, fmt::format("cell array '{}' has {} tuples for {} cells", escaped(a->GetName() ? a->GetName() : ""),
+      fail(file, fmt::format("cell array {} has {} tuples for {} cells", subdiv::quoted(a->GetName() ? a->GetName() : ""),
                              a->GetNumberOfTuples(), poly.GetNumberOfCells()));
   mesh.cell_data = read_arrays(*poly.GetCellData(), false, vtkIdType(cells.size()),
                                [&](vtkIdType t) { return cells[size_t(t)]; }, file);

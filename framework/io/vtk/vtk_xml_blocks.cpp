@@ -115,8 +115,8 @@ public:
         long long offset;
         if (!parse_integer(*offset_text, offset) || offset < 0 || data_start == std::string_view::npos ||
             std::size_t(offset) > bytes_.size() - data_start)
-          fail(at, fmt::format("array '{}': its offset=\"{}\" does not point into the appended data", shortened(name),
-                               shortened(*offset_text)));
+          fail(at, fmt::format("array {}: its offset=\"{}\" does not point into the appended data", subdiv::quoted(shortened(name)),
+                               escaped(shortened(*offset_text))));
         check_header(DataReader(bytes_, data_start + std::size_t(offset), appended_base64), at, name);
       } else if (format == "binary") {
         check_header(DataReader(bytes_, at + array.size() + 1, true), at, name);
@@ -150,7 +150,7 @@ private:
 
   std::uint64_t word(DataReader& data, std::size_t at, const std::string& name) const {
     const auto raw = data.take(word_size_);
-    if (!raw) fail(at, fmt::format("array '{}': the file ends inside its data header; it is cut off", shortened(name)));
+    if (!raw) fail(at, fmt::format("array {}: the file ends inside its data header; it is cut off", subdiv::quoted(shortened(name))));
     std::uint64_t v = 0;
     for (std::size_t i = 0; i < word_size_; ++i) {
       const std::size_t k = big_endian_ ? i : word_size_ - 1 - i;
@@ -164,45 +164,45 @@ private:
     if (compressor_.empty()) {
       const std::uint64_t size = word(data, at, name);
       if (double(size) > data.remaining())
-        fail(at, fmt::format("array '{}' says {} bytes of data, but only {:.0f} follow; the file is cut off or its "
+        fail(at, fmt::format("array {} says {} bytes of data, but only {:.0f} follow; the file is cut off or its "
                              "header is damaged",
-                             shortened(name), size, data.remaining()));
+                             subdiv::quoted(shortened(name)), size, data.remaining()));
       return;
     }
     const std::uint64_t blocks = word(data, at, name), block_size = word(data, at, name), last = word(data, at, name);
     // VTK divides by the block size, and takes the last block as no larger than the others.
     if (blocks > 0 && (block_size == 0 || last > block_size))
-      fail(at, fmt::format("array '{}': its data header gives blocks of {} bytes and a last block of {}; the "
+      fail(at, fmt::format("array {}: its data header gives blocks of {} bytes and a last block of {}; the "
                            "header is damaged",
-                           shortened(name), block_size, last));
+                           subdiv::quoted(shortened(name)), block_size, last));
     // With a partial last block VTK takes the data's size as blocks x block size, less one
     // block, plus the last block: with no blocks that wraps round to about 2^64, and VTK
     // read block sizes that do not exist (a null dereference, found by fuzz_read_vtp).
     if (blocks == 0 && last != 0)
-      fail(at, fmt::format("array '{}': its data header gives no compressed blocks but a last block of {} bytes; "
+      fail(at, fmt::format("array {}: its data header gives no compressed blocks but a last block of {} bytes; "
                            "the header is damaged",
-                           shortened(name), last));
+                           subdiv::quoted(shortened(name)), last));
     if (double(blocks) * double(word_size_) > data.remaining())
-      fail(at, fmt::format("array '{}' says {} compressed blocks, more than the rest of the file can hold; its data "
+      fail(at, fmt::format("array {} says {} compressed blocks, more than the rest of the file can hold; its data "
                            "header is damaged",
-                           shortened(name), blocks));
+                           subdiv::quoted(shortened(name)), blocks));
     double compressed = 0;
     for (std::uint64_t b = 0; b < blocks; ++b) compressed += double(word(data, at, name));
     const double expanded = blocks == 0 ? 0 : double(blocks - 1) * double(block_size) + double(last ? last : block_size);
     const double possible = compressed * expansion_limit(compressor_) + 65536;
     if (compressed > data.remaining())
-      fail(at, fmt::format("array '{}' has {:.0f} compressed bytes, but only {:.0f} follow; the file is cut off",
-                           shortened(name), compressed, data.remaining()));
+      fail(at, fmt::format("array {} has {:.0f} compressed bytes, but only {:.0f} follow; the file is cut off",
+                           subdiv::quoted(shortened(name)), compressed, data.remaining()));
     // VTK allocates one buffer of the block size: a block size the data cannot fill is harmless
     // up to a modest bound (a small array written in large blocks, as write_vtp's 1 MB).
     const double any_block_size = 64.0 * (1 << 20);
     if (double(block_size) > std::max(possible, any_block_size) || double(last) > possible || expanded > possible)
-      fail(at, fmt::format("array '{}': its data header claims {} blocks of {} bytes from {:.0f} compressed bytes, "
+      fail(at, fmt::format("array {}: its data header claims {} blocks of {} bytes from {:.0f} compressed bytes, "
                            "more than {} can produce; the header is damaged",
-                           shortened(name), blocks, block_size, compressed, compressor_));
+                           subdiv::quoted(shortened(name)), blocks, block_size, compressed, compressor_));
     if (expanded > budget)
-      fail(at, fmt::format("array '{}' decompresses to {:.1f} GiB, more than the {:.1f} GiB of memory available",
-                           shortened(name), expanded / (1 << 30), budget / (1 << 30)));
+      fail(at, fmt::format("array {} decompresses to {:.1f} GiB, more than the {:.1f} GiB of memory available",
+                           subdiv::quoted(shortened(name)), expanded / (1 << 30), budget / (1 << 30)));
   }
 
   const fs::path& file_;

@@ -56,14 +56,14 @@ public:
       const auto type = xml_attribute(tag, "type");
       if (!type || std::find(std::begin(kTypes), std::end(kTypes), *type) == std::end(kTypes))
         fail(at, fmt::format("DataArray type=\"{}\" is not a VTK type (Int8 ... UInt64, Float32, Float64, String)",
-                             shortened(type.value_or(""))));
+                             escaped(shortened(type.value_or("")))));
       // Points need their three components said: VTK reads one otherwise, fails and leaks.
       if (xml_attribute(tag, "Name").value_or("") == "Points" && !xml_attribute(tag, "NumberOfComponents"))
         fail(at, "the Points array needs NumberOfComponents=\"3\"");
       if (const auto c = xml_attribute(tag, "NumberOfComponents")) {
         long long v;
         if (!parse_integer(*c, v) || v < 1 || v > kMaxComponents)
-          fail(at, fmt::format("NumberOfComponents=\"{}\" must be a whole number from 1 to {}", shortened(*c),
+          fail(at, fmt::format("NumberOfComponents=\"{}\" must be a whole number from 1 to {}", escaped(shortened(*c)),
                                kMaxComponents));
       }
     }
@@ -71,10 +71,10 @@ public:
     const double need = points * kBytesPerPoint + cells * kBytesPerCell;
     const MemoryBudget budget = available_memory();
     if (need > budget.bytes)
-      throw Error(fmt::format("cannot read '{}': its {:.3g} points and {:.3g} cells would need about {:.1f} GiB, but "
+      throw Error(fmt::format("cannot read {}: its {:.3g} points and {:.3g} cells would need about {:.1f} GiB, but "
                               "only {:.1f} GiB of memory is available (limited by {}); the sizes in its <Piece> are "
                               "wrong, or the mesh is too large for this machine",
-                              escaped(file_.string()), points, cells, need / (1 << 30), budget.bytes / (1 << 30),
+                              subdiv::quoted(file_.string()), points, cells, need / (1 << 30), budget.bytes / (1 << 30),
                               budget.source));
   }
 
@@ -118,9 +118,9 @@ private:
       if (xml_attribute(tag, "type").value_or("") != "String" || field_arrays.count(a)) continue;
       const std::size_t point = head.rfind("<PointData", a), cell = head.rfind("<CellData", a);
       const bool is_point = point != std::string_view::npos && (cell == std::string_view::npos || point > cell);
-      fail(a, fmt::format("{} array '{}' is not numeric (a String array); SubdivKit refines numbers only: remove it "
+      fail(a, fmt::format("{} array {} is not numeric (a String array); SubdivKit refines numbers only: remove it "
                           "or convert it",
-                          is_point ? "point" : "cell", shortened(xml_attribute(tag, "Name").value_or(""))));
+                          is_point ? "point" : "cell", subdiv::quoted(shortened(xml_attribute(tag, "Name").value_or("")))));
     }
     // Cell connectivity and offsets are indices: VTK converts any type silently (Float64
     // 3.7 became vertex 3), so only integer types are taken.
@@ -129,9 +129,9 @@ private:
         const std::string_view tag = tag_at(head, a);
         const std::string_view type = xml_attribute(tag, "type").value_or("");
         if (type.rfind("Int", 0) != 0 && type.rfind("UInt", 0) != 0)
-          fail(a, fmt::format("<{}> array '{}' has type {}; cell connectivity and offsets must have an integer type "
+          fail(a, fmt::format("<{}> array {} has type {}; cell connectivity and offsets must have an integer type "
                               "(Int32 or Int64)",
-                              section, shortened(xml_attribute(tag, "Name").value_or("")), shortened(type)));
+                              section, subdiv::quoted(shortened(xml_attribute(tag, "Name").value_or(""))), shortened(type)));
       });
     // VTK creates one array per name but reads every element: a second array of the same
     // name in one section made it read into an array it never created (a null
@@ -144,8 +144,8 @@ private:
         const auto name = xml_attribute(tag_at(head, a), "Name");
         if (!name) return;
         if (!names.insert(*name).second)
-          fail(a, fmt::format("a second array named '{}' in the same <{}>; array names must differ",
-                              shortened(*name), section));
+          fail(a, fmt::format("a second array named {} in the same <{}>; array names must differ",
+                              subdiv::quoted(shortened(*name)), section));
       });
     }
   }
@@ -161,7 +161,7 @@ private:
     if (!value) return 0;
     long long v;
     if (!parse_integer(*value, v) || v < 0)
-      fail(at, fmt::format("{}=\"{}\" must be a whole number >= 0", name, shortened(*value)));
+      fail(at, fmt::format("{}=\"{}\" must be a whole number >= 0", name, escaped(shortened(*value))));
     if (v > kMaxCount)
       fail(at, fmt::format("{}=\"{}\" is more than SubdivKit's 32-bit indices hold ({})", name, v, kMaxCount));
     return double(v);

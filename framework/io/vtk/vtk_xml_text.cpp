@@ -4,6 +4,7 @@
 
 #include "framework/util/error.h"
 #include "framework/util/short_text.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::io_detail {
 
@@ -54,14 +55,14 @@ void require_xml_text(std::string_view text, std::string_view what, std::string_
   for (std::size_t i = 0; i < text.size();) {
     const unsigned char c = static_cast<unsigned char>(text[i]);
     if (c < 0x20 && c != '\t' && c != '\n' && c != '\r')
-      throw Error(fmt::format("{}: {} '{}' holds the control character 0x{:02x} at byte {}, which XML (and so VTK's "
+      throw Error(fmt::format("{}: {} {} holds the control character 0x{:02x} at byte {}, which XML (and so VTK's "
                               "file formats) cannot hold; rename it",
-                              context, what, shortened(text), unsigned(c), i));
+                              context, what, subdiv::quoted(shortened(text)), unsigned(c), i));
     const std::size_t n = utf8_length(text, i);
     if (n == 0)
-      throw Error(fmt::format("{}: {} '{}' is not UTF-8 text (byte 0x{:02x} at {}), which VTK's XML files need; "
+      throw Error(fmt::format("{}: {} {} is not UTF-8 text (byte 0x{:02x} at {}), which VTK's XML files need; "
                               "rename it",
-                              context, what, shortened(text), unsigned(c), i));
+                              context, what, subdiv::quoted(shortened(text)), unsigned(c), i));
     i += n;
   }
 }

@@ -6,6 +6,7 @@
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 #include "scheme_choice.h"
 
 namespace subdiv::paraview {
@@ -22,9 +23,9 @@ void check_valences(const AnalyzeRequest& r, const std::string& source) {
 std::vector<SurfaceAnalysis> analyze_valences(const AnalyzeRequest& r, const std::string& source) {
   check_valences(r, source);
   if (scheme_kind(r.scheme) != "surface")
-    throw Error(fmt::format("{}: '{}' is a curve scheme; the characteristic map and the spectrum at extraordinary "
+    throw Error(fmt::format("{}: {} is a curve scheme; the characteristic map and the spectrum at extraordinary "
                             "vertices belong to surface schemes (`subdiv analyze {}` analyses curve schemes)",
-                            source, r.scheme, r.scheme));
+                            source, subdiv::quoted(r.scheme), subdiv::escaped(r.scheme)));
   ValenceAnalysisRequest request;
   request.scheme = load_scheme(r.scheme, parameter_overrides(r.parameters));
   for (int n = r.min_valence; n <= r.max_valence; ++n) request.valences.push_back(n);

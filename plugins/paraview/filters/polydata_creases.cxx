@@ -13,6 +13,7 @@
 
 #include "framework/features/sharpness.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv::paraview {
 namespace {
@@ -58,9 +59,9 @@ void add_creases_from_cell_array(vtkPolyData& poly, const std::string& name, Mes
                                  const std::string& source) {
   vtkDataArray* values = poly.GetCellData()->GetArray(name.c_str());
   if (!values || values->GetNumberOfTuples() < poly.GetNumberOfCells())
-    throw Error(fmt::format("{}: Crease array '{}': the input has no numeric cell array of that name; choose one "
+    throw Error(fmt::format("{}: Crease array {}: the input has no numeric cell array of that name; choose one "
                             "of its cell arrays (sharpness on line cells, or part ids on faces) or none",
-                            source, name));
+                            source, subdiv::quoted(name)));
   std::map<Edge, double> creases;
   add_region_borders(poly, *values, mesh, creases);
   add_line_creases(poly, *values, creases);  // lines drawn by the user win over region borders

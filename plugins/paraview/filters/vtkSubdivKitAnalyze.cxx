@@ -10,6 +10,7 @@
 
 #include "analysis_output.h"
 #include "analyze_job.h"
+#include "framework/util/quoted_text.h"
 
 vtkStandardNewMacro(vtkSubdivKitAnalyze);
 
@@ -51,7 +52,7 @@ int vtkSubdivKitAnalyze::RequestData(vtkInformation*, vtkInformationVector**, vt
     maps->ShallowCopy(subdiv::paraview::characteristic_maps_polydata(analyses));
     spectrum->ShallowCopy(subdiv::paraview::spectrum_table(analyses, this->Eigenvalues));
   } catch (const std::exception& e) {
-    vtkErrorMacro(<< e.what());  // SubdivKit's message; both outputs stay empty
+    vtkErrorMacro(<< subdiv::terminal_safe(e.what()));  // SubdivKit's message, escaped; both outputs stay empty
     maps->Initialize();
     spectrum->Initialize();
   }

@@ -10,6 +10,7 @@
 #include "filter_input.h"
 #include "framework/io/vtk/polydata_conversion.h"
 #include "framework/pipeline/level_description.h"
+#include "framework/util/quoted_text.h"
 #include "limit_job.h"
 
 namespace {
@@ -54,13 +55,13 @@ int vtkSubdivKitLimit::RequestData(vtkInformation*, vtkInformationVector** in, v
     settings.limit_positions = this->LimitPositions;
     subdiv::paraview::LimitMesh limit = subdiv::paraview::limit_mesh(
         subdiv::paraview::filter_input_mesh(*input, this->CreaseArray, kSource), settings, kSource);
-    for (const std::string& note : limit.notes) vtkWarningMacro(<< kSource << ": " << note);
+    for (const std::string& note : limit.notes) vtkWarningMacro(<< kSource << ": " << subdiv::terminal_safe(note));
     const subdiv::OutputLevel level = subdiv::output_level(limit.mesh, 0);
     output->ShallowCopy(subdiv::polydata_from_level(level, kSource));
   } catch (const std::exception& e) {
     // SubdivKit's message, as `subdiv evaluate` prints it; the output stays empty and the
     // pipeline goes on, as "SubdivKit Refine" does.
-    vtkErrorMacro(<< e.what());
+    vtkErrorMacro(<< subdiv::terminal_safe(e.what()));  // user text escaped, as the CLI prints it
     output->Initialize();
   }
   return 1;

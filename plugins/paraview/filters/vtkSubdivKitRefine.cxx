@@ -12,6 +12,7 @@
 
 #include "framework/io/vtk/polydata_conversion.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 #include "filter_input.h"
 #include "refine_job.h"
 
@@ -101,7 +102,7 @@ int vtkSubdivKitRefine::RequestData(vtkInformation*, vtkInformationVector** in, 
     const subdiv::paraview::RefinedLevels refined =
         subdiv::paraview::refine_levels(subdiv::paraview::filter_input_mesh(*input, this->CreaseArray, kSource),
                                         settings, kSource);
-    for (const std::string& note : refined.notes) vtkWarningMacro(<< kSource << ": " << note);
+    for (const std::string& note : refined.notes) vtkWarningMacro(<< kSource << ": " << subdiv::terminal_safe(note));
     if (auto* blocks = vtkMultiBlockDataSet::SafeDownCast(output))
       set_level_blocks(*blocks, refined, this->LevelSpacing * input->GetLength());
     else
@@ -109,7 +110,7 @@ int vtkSubdivKitRefine::RequestData(vtkInformation*, vtkInformationVector** in, 
   } catch (const std::exception& e) {
     // SubdivKit's message, as `subdiv refine` prints it; the output stays empty and the
     // pipeline goes on (returning 0 would also stop the filters downstream with a second message).
-    vtkErrorMacro(<< e.what());
+    vtkErrorMacro(<< subdiv::terminal_safe(e.what()));  // user text escaped, as the CLI prints it
     output->Initialize();
   }
   return 1;

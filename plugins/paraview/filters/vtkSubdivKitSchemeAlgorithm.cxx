@@ -6,6 +6,7 @@
 #include <vtkStringArray.h>
 
 #include "scheme_choice.h"
+#include "framework/util/quoted_text.h"
 
 vtkSubdivKitSchemeAlgorithm::vtkSubdivKitSchemeAlgorithm(const char* label)
     : Label(label), SchemeNames(vtkStringArray::New()) {}
@@ -17,7 +18,7 @@ vtkStringArray* vtkSubdivKitSchemeAlgorithm::GetSchemeNames() {
   try {
     for (const std::string& name : subdiv::paraview::surface_scheme_names()) this->SchemeNames->InsertNextValue(name);
   } catch (const std::exception& e) {  // a scheme folder that cannot be read
-    vtkErrorMacro(<< this->Label << ": listing the schemes: " << e.what());
+    vtkErrorMacro(<< this->Label << ": listing the schemes: " << subdiv::terminal_safe(e.what()));
   }
   return this->SchemeNames;
 }

@@ -5,7 +5,10 @@
 
 #include <string>
 
+#include "framework/io/mesh_level.h"
+#include "framework/limit/limit_surface.h"
 #include "framework/pipeline/points_file.h"
+#include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -45,6 +48,24 @@ TEST_CASE("each refusal names the file, the line and the row") {
 TEST_CASE("a missing file is refused with its name") {
   CHECK_THROWS_WITH_AS(read_points_file("/no/such/points.csv", unit_square_check),
                        doctest::Contains("cannot read '/no/such/points.csv'"), Error);
+}
+
+TEST_CASE("a triangle under a quad scheme refuses a u far beyond its tiles (found by fuzz_points_file)") {
+  // A triangle's domain under Catmull-Clark is Bfr's sub-face grid (2 x 2 tiles). u = 2e10
+  // used to be cast to int before the range check: undefined behaviour (UBSan's
+  // float-cast-overflow), now a refusal like any point outside the tiles.
+  MeshData m;
+  m.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+  m.face_offsets = {0, 3, 6};
+  m.face_vertices = {0, 1, 2, 1, 3, 2};
+  const LimitSurface surface(load_scheme("catmull-clark"), level_from_mesh(m, "two triangles"));
+  const auto check = [&surface](Index face, double u, double v) { return surface.check(face, u, v); };
+  for (const char* text : {"face,u,v\n0,21474836470.25,0.55\n", "face,u,v\n1,0.25,-3e9\n", "face,u,v\n0,1e308,1e308\n"}) {
+    CAPTURE(text);
+    CHECK_THROWS_WITH_AS(parse_points(text, "pts.csv", check), doctest::Contains("outside the face's sub-face tiles"),
+                         Error);
+  }
+  CHECK(parse_points("face,u,v\n0,0.25,0.25\n", "pts.csv", check).size() == 1);
 }
 
 }  // namespace
