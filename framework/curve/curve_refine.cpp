@@ -7,6 +7,7 @@
 #include "framework/analysis/curve/variational_curve.h"
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -168,20 +169,20 @@ CurveStep refine_curve_step(const CurveLevel& parent, const CurveRulesAtLevel& r
       const bool uniform = rules.ends == CurveEnds::Uniform;
       const std::vector<Point> points = uniform ? uniform_points(rules, n) : interpolating_points(rules, n);
       if (uniform && points.size() < 2)
-        throw Error(fmt::format("curve scheme '{}' with ends \"uniform\": open polyline {} of {} points at level "
+        throw Error(fmt::format("curve scheme {} with ends \"uniform\": open polyline {} of {} points at level "
                                 "{} is too short to keep 2 points after the next step; give it more points, "
                                 "refine fewer levels, or use ends \"interpolate\"",
-                                scheme_name, p + 1, n, rules.level));
+                                subdiv::quoted(scheme_name), p + 1, n, rules.level));
       const long e_count = long(rules.end_rules.size());
       if (!uniform && long(points.size()) < 2 * e_count)
-        throw Error(fmt::format("curve scheme '{}': open polyline {} of {} points at level {} is too short for "
+        throw Error(fmt::format("curve scheme {}: open polyline {} of {} points at level {} is too short for "
                                 "its {} end rules at each end",
-                                scheme_name, p + 1, n, rules.level, e_count));
+                                subdiv::quoted(scheme_name), p + 1, n, rules.level, e_count));
       for (long e = 0; e < e_count; ++e)
         if (long(rules.end_rules[e].size()) > n)
-          throw Error(fmt::format("curve scheme '{}': end rule {} reads {} points from an end, but open polyline "
+          throw Error(fmt::format("curve scheme {}: end rule {} reads {} points from an end, but open polyline "
                                   "{} has {} points at level {}",
-                                  scheme_name, e, rules.end_rules[e].size(), p + 1, n, rules.level));
+                                  subdiv::quoted(scheme_name), e, rules.end_rules[e].size(), p + 1, n, rules.level));
       for (const Point& pt : points) {
         row.clear();
         if (pt.rule >= 0) {

@@ -6,6 +6,7 @@
 #include "framework/analysis/curve/variational_curve.h"
 #include "framework/rules/formula.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -18,7 +19,7 @@ std::vector<double> evaluate_rule(FormulaSet& formulas, const std::vector<std::s
     const std::string place = fmt::format("{}.w[{}]", where, t);
     const double w = formulas.evaluate(formulas.add(weights[t], place), {0, 0, double(t), double(level)});
     if (!std::isfinite(w))
-      throw Error(fmt::format("{}: weight '{}' is {} at level {}", place, weights[t], w, level));
+      throw Error(fmt::format("{}: weight {} is {} at level {}", place, subdiv::quoted(weights[t]), w, level));
     out.push_back(w);
     sum += w, magnitude += std::abs(w);
   }
@@ -32,7 +33,7 @@ std::vector<double> evaluate_rule(FormulaSet& formulas, const std::vector<std::s
 
 CurveRulesAtLevel evaluate_curve_rules(const CurveScheme& scheme, int level) {
   if (!scheme.variational() && (int(scheme.starts.size()) != scheme.arity || int(scheme.weights.size()) != scheme.arity))
-    throw Error(fmt::format("{}: curve scheme '{}' has {} rules for arity {}", scheme.path, scheme.name,
+    throw Error(fmt::format("{}: curve scheme {} has {} rules for arity {}", scheme.path, subdiv::quoted(scheme.name),
                             scheme.weights.size(), scheme.arity));
   FormulaSet formulas(scheme.parameters, scheme.definitions);
   CurveRulesAtLevel out;

@@ -6,6 +6,7 @@
 
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -33,9 +34,9 @@ double curve_term_reach(Element e, const Term& t) {
 // a vertex sits on it, the child of an edge, face or corner half a ring inside (docs/scale.md).
 double role_reach(Element e, Role role, const Scheme& scheme) {
   if (std::uint8_t(role) >= kFirstRegisteredRole)
-    throw Error(fmt::format("{}: scheme '{}' uses the role '{}' registered by a plugin, whose reach is not known, so "
+    throw Error(fmt::format("{}: scheme {} uses the role {} registered by a plugin, whose reach is not known, so "
                             "it cannot be refined in pieces; refine it whole",
-                            scheme.path, scheme.name, role_name(role)));
+                            scheme.path, subdiv::quoted(scheme.name), subdiv::quoted(role_name(role))));
   switch (role) {
     case Role::Self: return 0.0;
     case Role::Ends:
@@ -80,9 +81,9 @@ double rule_reach(Element e, const Rule& rule, const RuleTable& table, const Sch
 
 double step_rules_reach(const Scheme& scheme, const StepRules& step) {
   if (step.code || step.nonlinear)
-    throw Error(fmt::format("{}: scheme '{}' has rules written in C++, whose reach the engine cannot read, so it "
+    throw Error(fmt::format("{}: scheme {} has rules written in C++, whose reach the engine cannot read, so it "
                             "cannot be refined in pieces; refine it whole",
-                            scheme.path, scheme.name));
+                            scheme.path, subdiv::quoted(scheme.name)));
   double reach = 0;
   for (int e = 0; e < kElementCount; ++e)
     for (const auto& rule : step.rules[e])
@@ -97,9 +98,9 @@ double step_rules_reach(const Scheme& scheme, const StepRules& step) {
 double level_loss(const Scheme& scheme) {
   const SplitterInfo& split = splitter_info(scheme.split());
   if (split.topology_reach < 0)
-    throw Error(fmt::format("{}: scheme '{}' uses the split '{}' ({}), which does not say how far its faces reach "
+    throw Error(fmt::format("{}: scheme {} uses the split {} ({}), which does not say how far its faces reach "
                             "(SplitterInfo::topology_reach), so it cannot be refined in pieces; refine it whole",
-                            scheme.path, scheme.name, split.name, split.origin));
+                            scheme.path, subdiv::quoted(scheme.name), subdiv::quoted(split.name), split.origin));
   double loss = 0;
   for (size_t i = 0; i < scheme.steps.size(); ++i) {
     const double reach = step_rules_reach(scheme, scheme.steps[i]);

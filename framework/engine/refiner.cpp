@@ -18,6 +18,7 @@
 #include "framework/util/option_spelling.h"
 #include "framework/util/scratch_vector.h"
 #include "framework/util/streaming_stores.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -32,10 +33,10 @@ void check_face_sizes(const Scheme& scheme, const Level& base) {
   if (!needed || base.all_faces_have_size(needed)) return;  // in parallel; the loop below names the first
   for (Index f = 0; f < base.face_count(); ++f)
     if (base.face_size(f) != needed)
-      throw OptionError(fmt::format("{}: scheme '{}' needs {}, but face {} of the mesh has {} vertices; "
+      throw OptionError(fmt::format("{}: scheme {} needs {}, but face {} of the mesh has {} vertices; "
                                     "{} the mesh first or choose a scheme for any polygons ({{scheme_list}} "
                                     "lists them)",
-                              scheme.path, scheme.name,
+                              scheme.path, subdiv::quoted(scheme.name),
                               needed == 3 ? "triangles" : needed == 4 ? "quads" : fmt::format("{}-gons", needed), f,
                               base.face_size(f), needed == 3 ? "triangulate" : needed == 4 ? "quadrangulate" : "remesh"));
 }
@@ -52,9 +53,9 @@ void check_manifold_for(const Scheme& scheme, const Level& level) {
                                               level.edge_vertices[2 * e], level.edge_vertices[2 * e + 1],
                                               level.edge_face_count(e))
                                 : fmt::format("the faces around vertex {} form more than one fan", v);
-  throw Error(fmt::format("{}: scheme '{}' uses the '{}' split, which needs a manifold mesh, but {}; use a scheme "
+  throw Error(fmt::format("{}: scheme {} uses the {} split, which needs a manifold mesh, but {}; use a scheme "
                           "with a built-in split, which refine non-manifold meshes, or split the mesh there",
-                          scheme.path, scheme.name, splitter_info(scheme.split()).name, where));
+                          scheme.path, subdiv::quoted(scheme.name), subdiv::quoted(splitter_info(scheme.split()).name), where));
 }
 
 // A stage's name for EvaluationSwitches::stage_times: the level it makes, then what it does

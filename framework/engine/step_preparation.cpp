@@ -11,6 +11,7 @@
 #include "framework/rules/kernel_contexts.h"
 #include "framework/scheme/step_tables.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -81,7 +82,7 @@ StepContext step_context(const Scheme& scheme, const StepRules& step, const Step
 std::vector<const Scheme*> schemes_per_level(std::span<const SchemeRun> runs) {
   std::vector<const Scheme*> per_level;
   for (const SchemeRun& run : runs) {
-    if (run.levels < 0) throw Error(fmt::format("scheme '{}' is given {} levels; give 0 or more", run.scheme->name, run.levels));
+    if (run.levels < 0) throw Error(fmt::format("scheme {} is given {} levels; give 0 or more", subdiv::quoted(run.scheme->name), run.levels));
     per_level.insert(per_level.end(), size_t(run.levels), run.scheme);
   }
   return per_level;

@@ -5,6 +5,7 @@
 
 #include "framework/scheme/step_tables.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -27,8 +28,8 @@ std::string declared_by(std::span<const SchemeRun> runs, const std::string& name
   std::string plain;
   for (const SchemeRun& run : runs)
     if (const ParameterSpec* p = find_parameter(*run.scheme, name); p && !p->per_vertex)
-      plain = fmt::format(" ('{}' has a parameter '{}', but not per vertex: its file does not say \"per_vertex\": true)",
-                          run.scheme->name, name);
+      plain = fmt::format(" ({} has a parameter {}, but not per vertex: its file does not say \"per_vertex\": true)",
+                          subdiv::quoted(run.scheme->name), subdiv::quoted(name));
   return plain;
 }
 
@@ -42,15 +43,15 @@ void check_vertex_parameters(std::span<const SchemeRun> runs, const Level& base,
       if (!p || !p->per_vertex) continue;
       declared = true;
       if (per_vertex.size() != size_t(base.vertex_count))
-        throw Error(fmt::format("per-vertex parameter '{}': {} values for a mesh of {} vertices; give one per vertex, "
-                                "in vertex order", name, per_vertex.size(), base.vertex_count));
+        throw Error(fmt::format("per-vertex parameter {}: {} values for a mesh of {} vertices; give one per vertex, "
+                                "in vertex order", subdiv::quoted(name), per_vertex.size(), base.vertex_count));
       for (size_t v = 0; v < per_vertex.size(); ++v)
         if (auto why = range_violation(*p, per_vertex[v]); !why.empty())
-          throw Error(fmt::format("per-vertex parameter '{}' (vertex {}): {} in scheme '{}'", name, v, why,
-                                  run.scheme->name));
+          throw Error(fmt::format("per-vertex parameter {} (vertex {}): {} in scheme {}", subdiv::quoted(name), v, why,
+                                  subdiv::quoted(run.scheme->name)));
     }
     if (!declared)
-      throw Error(fmt::format("per-vertex parameter '{}': no scheme of the run reads it per vertex{}", name,
+      throw Error(fmt::format("per-vertex parameter {}: no scheme of the run reads it per vertex{}", subdiv::quoted(name),
                               declared_by(runs, name)));
   }
 }

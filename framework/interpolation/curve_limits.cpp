@@ -10,6 +10,7 @@
 #include "framework/curve/curve_refine.h"
 #include "framework/curve/curve_rules.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -25,9 +26,9 @@ using Row = std::map<Index, double>;  // a limit row while it is assembled (rows
 void check_stationary(const CurveScheme& scheme, const CurveMask& mask) {
   const CurveMask next = trimmed(curve_mask(scheme, 1));
   if (next.first != mask.first || next.coefficients != mask.coefficients)
-    throw Error(fmt::format("curve scheme '{}' changes its rules from level to level; limit points (and so "
+    throw Error(fmt::format("curve scheme {} changes its rules from level to level; limit points (and so "
                             "progressive interpolation) need a stationary scheme",
-                            scheme.name));
+                            subdiv::quoted(scheme.name)));
 }
 
 // Open ends keep their end points (ends "interpolate", or a first end rule that copies it).
@@ -125,9 +126,9 @@ std::map<long, Row> window_rows(const CurveScheme& scheme, const BasisSamples& p
     pending = std::move(still);
   }
   if (!pending.empty())
-    throw Error(fmt::format("curve scheme '{}': the limit point of vertex {} near the end of an open polyline "
+    throw Error(fmt::format("curve scheme {}: the limit point of vertex {} near the end of an open polyline "
                             "was not found after refining a window of the polyline {} levels",
-                            scheme.name, g[size_t(pending.front())], stencils.size()));
+                            subdiv::quoted(scheme.name), g[size_t(pending.front())], stencils.size()));
   return rows;
 }
 
@@ -138,9 +139,9 @@ void set_row(std::vector<Row>& rows, Index v, Row row, const std::string& scheme
     for (const auto& [index, weight] : row) gap = std::max(gap, std::abs(rows[size_t(v)][index] - weight));
     for (const auto& [index, weight] : rows[size_t(v)]) gap = std::max(gap, std::abs(row[index] - weight));
     if (gap > 1e-12)
-      throw Error(fmt::format("curve scheme '{}': point {} lies on two polylines that give it different limit points "
+      throw Error(fmt::format("curve scheme {}: point {} lies on two polylines that give it different limit points "
                               "(an end of one is inside another); split the point into one per polyline",
-                              scheme, v));
+                              subdiv::quoted(scheme), v));
   }
   rows[size_t(v)] = std::move(row);
 }
@@ -154,7 +155,7 @@ void append(StencilTable& table, const Row& row) {
 
 StencilTable curve_limit_stencils(const CurveScheme& scheme, const CurveLevel& level) {
   if (scheme.nonlinear)
-    throw Error(fmt::format("curve scheme '{}' is not linear: it has no limit rows to interpolate with", scheme.name));
+    throw Error(fmt::format("curve scheme {} is not linear: it has no limit rows to interpolate with", subdiv::quoted(scheme.name)));
   const CurveMask mask = trimmed(curve_mask(scheme, 0));
   check_stationary(scheme, mask);
   const BasisSamples phi = sample_basis(mask, scheme.name);
@@ -173,10 +174,10 @@ StencilTable curve_limit_stencils(const CurveScheme& scheme, const CurveLevel& l
       continue;
     }
     if (!ends_keep_end_points(rules))
-      throw Error(fmt::format("curve scheme '{}': its open polylines do not keep their end points (ends \"{}\"), so "
+      throw Error(fmt::format("curve scheme {}: its open polylines do not keep their end points (ends \"{}\"), so "
                               "their end vertices have no limit point; close the polyline (repeat its first point "
                               "at the end) or use a scheme with ends \"interpolate\"",
-                              scheme.name, rules.ends == CurveEnds::Uniform ? "uniform" : "rules"));
+                              subdiv::quoted(scheme.name), escaped(rules.ends == CurveEnds::Uniform ? "uniform" : "rules")));
     // Ends, then the vertices far from both ends, then those near an end through windows.
     std::vector<long> near_start, near_finish;
     for (long j = 0; j < n; ++j) {

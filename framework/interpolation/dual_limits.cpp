@@ -8,6 +8,7 @@
 #include "framework/interpolation/limit_rows.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -105,9 +106,9 @@ std::string dual_centroid_mismatch(const Scheme& scheme, const Level& level, con
     // their limit is, or why it has none).
     if (level.on_boundary(v) || dual_collapses(level, v) || dual_sharp_edge_count(level, v) > 0) continue;
     const Index g = vface[v];
-    if (g == kNone) return fmt::format("one step of '{}' makes no V-face around vertex {}", scheme.name, v);
+    if (g == kNone) return fmt::format("one step of {} makes no V-face around vertex {}", subdiv::quoted(scheme.name), v);
     if (child_face[g] == kNone)
-      return fmt::format("one step of '{}' makes no child face inside the V-face of vertex {}", scheme.name, v);
+      return fmt::format("one step of {} makes no child face inside the V-face of vertex {}", subdiv::quoted(scheme.name), v);
     const auto got = mean_row(h.stencils[1], l2.face(child_face[g]));
     const auto corners = l1.face(g);
     std::map<Index, double> want;
@@ -117,9 +118,9 @@ std::string dual_centroid_mismatch(const Scheme& scheme, const Level& level, con
       for (const auto& [source, w] : *m) {
         const double a = got.count(source) ? got.at(source) : 0.0, b = want.count(source) ? want.at(source) : 0.0;
         if (std::abs(a - b) > 1e-12)
-          return fmt::format("'{}' does not keep the centroid of the V-face of vertex {} (the face's child has "
+          return fmt::format("{} does not keep the centroid of the V-face of vertex {} (the face's child has "
                              "weight {:.15g} on its corner {}, the centroid {:.15g}), so V-face centroids are not "
-                             "limit points", scheme.name, v, a, source, b);
+                             "limit points", subdiv::quoted(scheme.name), v, a, source, b);
       }
   }
   return {};

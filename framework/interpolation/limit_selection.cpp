@@ -14,6 +14,7 @@
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -100,12 +101,12 @@ void check_vertex_parameters_in_prefix(const SchemeSequence& seq, const LimitSel
   for (const auto& [name, values] : o.vertex_parameters) {
     for (const ParameterSpec& p : tail.parameters)
       if (p.name == name && p.per_vertex)
-        throw OptionError(fmt::format("per-vertex parameter '{}': '{}' is applied forever (the last scheme of the sequence), "
-                                "and limit masks are known for one value of '{}' only; give it per vertex to a first "
-                                "run (e.g. {}:1,...) or give one value with {{param}}", name, tail.name, name, tail.name));
+        throw OptionError(fmt::format("per-vertex parameter {}: {} is applied forever (the last scheme of the sequence), "
+                                "and limit masks are known for one value of {} only; give it per vertex to a first "
+                                "run (e.g. {}:1,...) or give one value with {{param}}", subdiv::quoted(name), subdiv::quoted(tail.name), subdiv::quoted(name), tail.name));
     if (seq.runs.size() < 2)
-      throw Error(fmt::format("per-vertex parameter '{}': the sequence has no first run that reads it (a sequence "
-                              "SHAPE:1,REPEAT)", name));
+      throw Error(fmt::format("per-vertex parameter {}: the sequence has no first run that reads it (a sequence "
+                              "SHAPE:1,REPEAT)", subdiv::quoted(name)));
   }
 }
 
@@ -174,8 +175,8 @@ std::string step_mismatch(const LimitEvaluator& evaluator, const Scheme& scheme,
   const StencilTable after = compose(h.stencils[0], select_rows(below, children));
   for (Index v = 0; v < level.vertex_count; ++v)
     if (auto why = row_mismatch(here, v, after, v); !why.empty())
-      return fmt::format("not invariant under step {} of '{}' (l S != l) at {}vertex {} of valence {}: {}", step + 1,
-                         scheme.name, step > 0 ? "refined " : "", v, level.valence(v), why);
+      return fmt::format("not invariant under step {} of {} (l S != l) at {}vertex {} of valence {}: {}", step + 1,
+                         subdiv::quoted(scheme.name), step > 0 ? "refined " : "", v, level.valence(v), why);
   return {};
 }
 
@@ -233,7 +234,7 @@ std::string invariance_mismatch(const LimitEvaluator& evaluator, const Scheme& s
     return e.what();
   }
   if (c.first_children.empty())
-    return fmt::format("'{}' makes no vertex points (a dual split), so it has no vertex limit masks", scheme.name);
+    return fmt::format("{} makes no vertex points (a dual split), so it has no vertex limit masks", subdiv::quoted(scheme.name));
   return two_step_mismatch(evaluator, scheme, c, options.first_step);
 }
 
@@ -295,8 +296,8 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
     if (!why.empty()) {
       const std::string prefix = dual->name() + ": ";
       if (why.rfind(prefix, 0) == 0) why.erase(0, prefix.size());
-      throw Error(fmt::format("scheme '{}' is dual (its steps make no vertex points), so a control vertex's limit "
-                              "point is the centroid of its V-face; but {}", tail.name, why));
+      throw Error(fmt::format("scheme {} is dual (its steps make no vertex points), so a control vertex's limit "
+                              "point is the centroid of its V-face; but {}", subdiv::quoted(tail.name), why));
     }
     tail_mask = dual;
   }
@@ -317,8 +318,8 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
     for (const auto& r : refused) list += "\n  - " + r;
     const auto providers = limit_mask_provider_names();
     throw Error(fmt::format(
-        "scheme '{}' has no limit mask for this mesh; every candidate was refused:{}\n  {}`subdiv analyze {}` "
-        "shows the eigenvalues behind this.", tail.name, list,
+        "scheme {} has no limit mask for this mesh; every candidate was refused:{}\n  {}`subdiv analyze {}` "
+        "shows the eigenvalues behind this.", subdiv::quoted(tail.name), list,
         providers.empty() ? "" : fmt::format("Registered providers ({}) had no mask either. ", fmt::join(providers, ", ")),
         analyze_argument(tail)));
   }

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -183,7 +184,7 @@ std::vector<std::uint8_t> parse_vertex_selection(const std::string& text, Index 
     long long id = 0;
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), id);
     if (ec != std::errc() || end != t.data() + t.size())
-      throw Error(fmt::format("{}: '{}' is not a vertex id; give 0-based ids separated by commas, or 'all'", where, t));
+      throw Error(fmt::format("{}: {} is not a vertex id; give 0-based ids separated by commas, or 'all'", where, subdiv::quoted(t)));
     if (id < 0 || id >= vertex_count)
       throw Error(fmt::format("{}: vertex {} does not exist; the mesh has {} vertices (ids 0 to {})", where, id,
                               vertex_count, vertex_count - 1));

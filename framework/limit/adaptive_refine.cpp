@@ -10,6 +10,7 @@
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
 #include "framework/util/parallel_for_all.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -190,9 +191,9 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<
                              const AdaptiveOptions& options, std::span<const double> data, int data_channels) {
   const SplitKind split = scheme.split();
   if (split != SplitKind::Quad && split != SplitKind::Triangle)
-    throw Error(fmt::format("scheme '{}': adaptive refinement is implemented for the binary quad and triangle splits "
+    throw Error(fmt::format("scheme {}: adaptive refinement is implemented for the binary quad and triangle splits "
                             "only so far",
-                            scheme.name));
+                            subdiv::quoted(scheme.name)));
   const int levels = options.levels;
   if (levels < 0 || levels > 12) throw Error(fmt::format("adaptive refinement to level {}: give 0 to 12", levels));
   if ((options.limit || options.tolerance > 0) && !options.surface)

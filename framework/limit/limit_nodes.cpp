@@ -11,6 +11,7 @@
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/refiner.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -35,7 +36,7 @@ void append_holes(const Level& cut, const Labelling& lab, std::vector<double>& k
 }
 
 std::string not_closed(const Scheme& scheme, int depth) {
-  return fmt::format("scheme '{}' reads beyond {} rings of a face while evaluating its limit", scheme.name, depth);
+  return fmt::format("scheme {} reads beyond {} rings of a face while evaluating its limit", subdiv::quoted(scheme.name), depth);
 }
 
 // The cut renumbered by its labelling, vertices and faces, so that every cut with one

@@ -23,6 +23,7 @@
 #include "framework/limit/face_domain.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 
 namespace subdiv {
@@ -101,19 +102,19 @@ std::vector<double> applied(const std::vector<double>& row, std::span<const doub
 
 std::string limit_surface_unsupported(const Scheme& scheme) {
   if (!scheme.linear())
-    return fmt::format("scheme '{}' has non-linear rules: its limit is no fixed combination of the control points, "
+    return fmt::format("scheme {} has non-linear rules: its limit is no fixed combination of the control points, "
                        "so it has no limit masks or stencils to evaluate",
-                       scheme.name);
+                       subdiv::quoted(scheme.name));
   if (scheme_is_level_dependent(scheme))
-    return fmt::format("scheme '{}' is non-stationary (its weights depend on the level l): the local subdivision "
+    return fmt::format("scheme {} is non-stationary (its weights depend on the level l): the local subdivision "
                        "matrix changes from level to level and has no fixed eigen-structure to evaluate the limit with",
-                       scheme.name);
+                       subdiv::quoted(scheme.name));
   const SplitKind split = scheme.split();
   if (split != SplitKind::Quad && split != SplitKind::Triangle && split != SplitKind::Dual)
-    return fmt::format("scheme '{}' uses a split whose child faces do not nest inside one parent face or one of its "
+    return fmt::format("scheme {} uses a split whose child faces do not nest inside one parent face or one of its "
                        "quadrants (sqrt3, mid-edge or a plugin's split): evaluation at (face, u, v) is implemented "
                        "for the binary quad and triangle splits and the dual (corner-cutting) split so far",
-                       scheme.name);
+                       subdiv::quoted(scheme.name));
   return {};
 }
 
@@ -471,7 +472,7 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
                 "faces meet): limit evaluation at (face, u, v) needs a manifold mesh; split it into manifold parts");
   if (impl_->scheme = std::move(scheme); impl_->scheme->split() == SplitKind::Dual) {
     if (const std::string why = dual_limit_unsupported(base); !why.empty())
-      throw Error(fmt::format("scheme '{}' is a dual scheme and {}", impl_->scheme->name, why));
+      throw Error(fmt::format("scheme {} is a dual scheme and {}", subdiv::quoted(impl_->scheme->name), why));
   }
   impl_->base = std::move(base);
   impl_->options = options;

@@ -5,19 +5,20 @@
 #include "framework/limit/dual_limit.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 
 std::string sequence_head_unsupported(const Scheme& scheme) {
   if (!scheme.linear())
-    return fmt::format("'{}' has non-linear rules: the sequence's limit is no fixed combination of the control points",
-                       scheme.name);
+    return fmt::format("{} has non-linear rules: the sequence's limit is no fixed combination of the control points",
+                       subdiv::quoted(scheme.name));
   const SplitKind split = scheme.split();
   if (split != SplitKind::Quad && split != SplitKind::Triangle && split != SplitKind::Dual)
-    return fmt::format("'{}' comes before the scheme that repeats and its split is not the binary quad, triangle or "
+    return fmt::format("{} comes before the scheme that repeats and its split is not the binary quad, triangle or "
                        "dual split: following a point through a sqrt3, mid-edge or plugin split in a sequence's head "
                        "is not implemented yet",
-                       scheme.name);
+                       subdiv::quoted(scheme.name));
   return {};
 }
 

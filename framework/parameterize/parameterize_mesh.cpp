@@ -5,6 +5,7 @@
 
 #include "framework/io/mesh_level.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -14,7 +15,7 @@ template <class Array>
 void drop_texture_coordinates(std::vector<Array>& arrays, std::vector<std::string>& notes, const char* kind) {
   const auto old = std::remove_if(arrays.begin(), arrays.end(), [&](const Array& a) {
     const bool uv = a.role == ArrayRole::TextureCoordinates || a.name == "uv";
-    if (uv) notes.push_back(fmt::format("replaced the {} texture coordinates '{}'", kind, a.name));
+    if (uv) notes.push_back(fmt::format("replaced the {} texture coordinates {}", kind, subdiv::quoted(a.name)));
     return uv;
   });
   arrays.erase(old, arrays.end());
@@ -38,13 +39,13 @@ ParameterizedMesh parameterize_mesh(MeshData mesh, const TutteOptions& options, 
 BoundaryShape boundary_shape_from_name(const std::string& name, const std::string& option) {
   if (name == "circle") return BoundaryShape::Circle;
   if (name == "square") return BoundaryShape::Square;
-  throw Error(fmt::format("{} '{}': give circle or square", option, name));
+  throw Error(fmt::format("{} {}: give circle or square", option, subdiv::quoted(name)));
 }
 
 TutteWeights tutte_weights_from_name(const std::string& name, const std::string& option) {
   if (name == "uniform") return TutteWeights::Uniform;
   if (name == "mean-value") return TutteWeights::MeanValue;
-  throw Error(fmt::format("{} '{}': give uniform (Tutte 1963) or mean-value (Floater 2003)", option, name));
+  throw Error(fmt::format("{} {}: give uniform (Tutte 1963) or mean-value (Floater 2003)", option, subdiv::quoted(name)));
 }
 
 }  // namespace subdiv

@@ -7,6 +7,7 @@
 #include "framework/limit/limit_surface.h"
 #include "framework/pipeline/refine_pipeline.h"
 #include "framework/util/option_spelling.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -34,12 +35,12 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
   r.levels_given = false;  // a sequence is refused below in its own words
   PreparedRefinement p = prepare_refinement(r);
   if (p.sequence.schemes.size() != 1)
-    throw Error(fmt::format("{}: '{}' is a sequence of schemes; adaptive refinement takes one scheme", r.mesh_name,
-                            p.scheme_label));
+    throw Error(fmt::format("{}: {} is a sequence of schemes; adaptive refinement takes one scheme", r.mesh_name,
+                            subdiv::quoted(p.scheme_label)));
   if (p.rational)
-    throw Error(fmt::format("{}: adaptive refinement of rational meshes (weights in '{}') is not implemented; refine "
+    throw Error(fmt::format("{}: adaptive refinement of rational meshes (weights in {}) is not implemented; refine "
                             "uniformly",
-                            r.mesh_name, p.weights_name));
+                            r.mesh_name, subdiv::quoted(p.weights_name)));
   AdaptiveOptions o;
   o.levels = levels;
   o.features = p.options.features;
@@ -60,8 +61,8 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
     int channels = 0;
     for (const DataArray& a : p.mesh.point_data) {
       if (a.integer) {
-        p.notes.push_back(fmt::format("point array '{}' holds whole numbers and is not carried to the adaptive mesh",
-                                      a.name));
+        p.notes.push_back(fmt::format("point array {} holds whole numbers and is not carried to the adaptive mesh",
+                                      subdiv::quoted(a.name)));
         continue;
       }
       carried.push_back(&a);

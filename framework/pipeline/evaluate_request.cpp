@@ -11,6 +11,7 @@
 #include "framework/util/option_spelling.h"
 #include "framework/util/error.h"
 #include "framework/util/parallel_for_all.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -74,9 +75,9 @@ std::vector<FaceVaryingSurface> face_varying_surfaces(const PreparedRefinement& 
   std::vector<FaceVaryingSurface> out;
   for (const FaceVaryingArray& a : p.mesh.face_varying) {
     if (a.role == ArrayRole::Normals) {
-      notes.push_back(fmt::format("face-varying array '{}' holds normals, which are not evaluated (a mix of unit "
+      notes.push_back(fmt::format("face-varying array {} holds normals, which are not evaluated (a mix of unit "
                                   "normals is no normal)",
-                                  a.name));
+                                  subdiv::quoted(a.name)));
       continue;
     }
     FaceVaryingValueMesh m =
@@ -95,7 +96,7 @@ std::vector<FaceVaryingSurface> face_varying_surfaces(const PreparedRefinement& 
       try {
         s.surface = limit_surface_of(p.sequence, s.level, o);
       } catch (const Error& e) {
-        throw Error(fmt::format("{}: face-varying array '{}': {}", mesh_name, a.name, e.what()));
+        throw Error(fmt::format("{}: face-varying array {}: {}", mesh_name, subdiv::quoted(a.name), e.what()));
       }
     }
     out.push_back(std::move(s));

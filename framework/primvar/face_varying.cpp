@@ -8,6 +8,7 @@
 #include "framework/features/sharpness.h"
 #include "framework/primvar/crossing_step.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -167,10 +168,10 @@ void check_split(const Scheme& scheme, const Level& vertex_child, const Level& v
   bool same = vertex_child.face_count() == value_child.face_count();
   for (Index f = 0; same && f < vertex_child.face_count(); ++f) same = vertex_child.face_size(f) == value_child.face_size(f);
   if (!same)
-    throw Error(fmt::format("{}: scheme '{}' uses the '{}' split, which splits the UV islands (seams as boundaries) "
+    throw Error(fmt::format("{}: scheme {} uses the {} split, which splits the UV islands (seams as boundaries) "
                             "into other faces than the mesh, so face-varying data (e.g. UVs with seams) cannot follow "
                             "it. Drop the face-varying data or choose a scheme with another split", scheme.path,
-                            scheme.name, splitter_info(scheme.split()).name));
+                            subdiv::quoted(scheme.name), subdiv::quoted(splitter_info(scheme.split()).name)));
 }
 
 // Dual splits make every new point from a face corner (OriginKind::Corner).

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -81,8 +82,8 @@ void check_finite_arrays(const LevelData& level, const std::string& source) {
     for (const DataArray& a : arrays)
       for (size_t i = 0; i < a.values.size(); ++i)
         if (!std::isfinite(a.values[i]))
-          throw Error(fmt::format("{}: {} array '{}' holds {} at {} {}; refinement would spread it to the neighbours: "
-                                  "fill it in, or remove the array", source, per, a.name, a.values[i], per,
+          throw Error(fmt::format("{}: {} array {} holds {} at {} {}; refinement would spread it to the neighbours: "
+                                  "fill it in, or remove the array", source, per, subdiv::quoted(a.name), a.values[i], per,
                                   i / size_t(a.components)));
   };
   check(level.point_data, "point");

@@ -6,6 +6,7 @@
 
 #include "framework/refine/splitter.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -111,20 +112,20 @@ SplitKind split_kind_from_name(std::string_view name) {
   std::string known;
   for (const auto* list : {&t.builtins, &t.registered})
     for (const auto& info : *list) known += (known.empty() ? "" : ", ") + info.name;
-  throw Error(fmt::format("unknown split '{}'; the splits are: {}", name, known));
+  throw Error(fmt::format("unknown split {}; the splits are: {}", subdiv::quoted(name), known));
 }
 
 SplitKind register_splitter(SplitterInfo info) {
   SplitterTable& t = table();
   std::lock_guard lock(t.mutex);
   if (info.name.empty()) throw Error("a splitter needs a name");
-  if (!info.split) throw Error(fmt::format("splitter '{}' has no split function", info.name));
-  if (info.curve_arity < 2) throw Error(fmt::format("splitter '{}': curve_arity must be 2 or more", info.name));
+  if (!info.split) throw Error(fmt::format("splitter {} has no split function", subdiv::quoted(info.name)));
+  if (info.curve_arity < 2) throw Error(fmt::format("splitter {}: curve_arity must be 2 or more", subdiv::quoted(info.name)));
   if (info.required_face_size != 0 && info.required_face_size < 3)
-    throw Error(fmt::format("splitter '{}': required_face_size must be 0 (any) or 3 or more", info.name));
+    throw Error(fmt::format("splitter {}: required_face_size must be 0 (any) or 3 or more", subdiv::quoted(info.name)));
   SplitKind existing{};
   if (const SplitterInfo* other = t.find(info.name, &existing))
-    throw Error(fmt::format("a splitter named '{}' already exists ({})", info.name, other->origin));
+    throw Error(fmt::format("a splitter named {} already exists ({})", subdiv::quoted(info.name), other->origin));
   t.registered.push_back(std::move(info));
   return SplitKind(kFirstRegisteredSplit + t.registered.size() - 1);
 }

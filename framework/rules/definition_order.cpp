@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -79,9 +80,9 @@ void check_definition_order(const std::vector<NamedFormula>& defs) {
     std::vector<std::string_view> names;
     for (size_t i : cycle) names.push_back(defs[i].name);
     if (cycle.size() == 2)
-      throw Error(fmt::format("{}: definition '{}' refers to itself (a cycle: {}); a definition may use only "
+      throw Error(fmt::format("{}: definition {} refers to itself (a cycle: {}); a definition may use only "
                               "parameters, n, k, j, l and the definitions before it",
-                              first.where, first.name, fmt::join(names, " -> ")));
+                              first.where, subdiv::quoted(first.name), fmt::join(names, " -> ")));
     throw Error(fmt::format("{}: definitions refer to each other in a cycle: {}; a definition may use only "
                             "parameters, n, k, j, l and the definitions before it, so break the cycle",
                             first.where, fmt::join(names, " -> ")));
@@ -89,8 +90,8 @@ void check_definition_order(const std::vector<NamedFormula>& defs) {
   for (size_t i = 0; i < defs.size(); ++i)
     for (size_t j : refs[i])
       if (j > i)
-        throw Error(fmt::format("{}: definition '{}' uses '{}', which is defined after it; move '{}' before '{}'",
-                                defs[i].where, defs[i].name, defs[j].name, defs[j].name, defs[i].name));
+        throw Error(fmt::format("{}: definition {} uses {}, which is defined after it; move {} before {}",
+                                defs[i].where, subdiv::quoted(defs[i].name), subdiv::quoted(defs[j].name), subdiv::quoted(defs[j].name), subdiv::quoted(defs[i].name)));
 }
 
 }  // namespace subdiv

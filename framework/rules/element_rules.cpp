@@ -4,6 +4,7 @@
 
 #include "framework/rules/feature_curve.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -28,14 +29,14 @@ void add_point(RowBuilder& row, const RuleInputs& in, const CompiledTerm& term, 
 }
 
 [[noreturn]] void wrong_role(const CompiledTerm& t, Element e) {
-  throw Error(fmt::format("{}: role '{}' is not a {} role", t.where, role_name(t.role), element_name(e)));
+  throw Error(fmt::format("{}: role {} is not a {} role", t.where, subdiv::quoted(role_name(t.role)), element_name(e)));
 }
 
 // The vertex of triangle f that is not a or b.
 Index third_vertex(const Level& L, Index f, Index a, Index b, const CompiledTerm& t) {
   if (L.face_size(f) != 3)
-    throw Error(fmt::format("{}: role '{}' needs triangles, but face {} has {} vertices", t.where,
-                            role_name(t.role), f, L.face_size(f)));
+    throw Error(fmt::format("{}: role {} needs triangles, but face {} has {} vertices", t.where,
+                            subdiv::quoted(role_name(t.role)), f, L.face_size(f)));
   for (Index u : L.face(f))
     if (u != a && u != b) return u;
   return kNone;
@@ -75,11 +76,11 @@ bool add_registered_role(RowBuilder& row, const RuleInputs& in, const CompiledTe
   points.clear();
   info->points(in.parent, element, corner, points);
   if (int(points.size()) > t.max_j + 1)
-    throw Error(fmt::format("{}: role '{}' ({}) gave {} points, more than its max_points ({})", t.where, info->name,
+    throw Error(fmt::format("{}: role {} ({}) gave {} points, more than its max_points ({})", t.where, subdiv::quoted(info->name),
                             info->origin, points.size(), t.max_j + 1));
   for (int j = 0; j < int(points.size()); ++j) {
     if (points[j] < 0 || points[j] >= in.parent.vertex_count)
-      throw Error(fmt::format("{}: role '{}' ({}) gave vertex {}, not a vertex of the level", t.where, info->name,
+      throw Error(fmt::format("{}: role {} ({}) gave vertex {}, not a vertex of the level", t.where, subdiv::quoted(info->name),
                               info->origin, points[j]));
     add_point(row, in, t, points[j], scale * weight_of(j));
   }

@@ -10,6 +10,7 @@
 #include "framework/rules/definition_order.h"
 #include "framework/util/error.h"
 #include "framework/util/short_text.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -101,7 +102,7 @@ struct FormulaSet::Impl {
           if (state_names[i] == name) uses.merge(state_uses[i]);
       }
     } catch (const mu::Parser::exception_type& e) {
-      throw Error(fmt::format("{}: formula '{}' does not parse: {}. {}", where, shortened(expression),
+      throw Error(fmt::format("{}: formula {} does not parse: {}. {}", where, subdiv::quoted(shortened(expression)),
                               shortened(e.GetMsg(), 2 * kQuotedTextChars),
                               kFormulaHelp));
     }
@@ -113,8 +114,8 @@ struct FormulaSet::Impl {
 
   void add_state(const NamedFormula& d) {
     if (!definitions.empty())
-      throw Error(fmt::format("{}: state variable '{}' comes after a plain definition; state must "
-                              "come first", d.where, d.name));
+      throw Error(fmt::format("{}: state variable {} comes after a plain definition; state must "
+                              "come first", d.where, subdiv::quoted(d.name)));
     // The initial value sees the earlier state variables only.
     FormulaUses uses;
     auto initial = compile(d.expression, d.where, state_names.size(), 0, uses);
@@ -145,9 +146,9 @@ struct FormulaSet::Impl {
 
   static void check_state_uses(const FormulaUses& uses, const std::string& name, const std::string& where) {
     if (uses.n || uses.k || uses.j)
-      throw Error(fmt::format("{}: state variable '{}' depends on {}; state is one value per level and "
+      throw Error(fmt::format("{}: state variable {} depends on {}; state is one value per level and "
                               "may use only parameters, l and state variables",
-                              where, name, uses.n ? "n" : uses.k ? "k" : "j"));
+                              where, subdiv::quoted(name), uses.n ? "n" : uses.k ? "k" : "j"));
   }
 
   // Fills state_by_level up to `level` and loads that level's values into the storage.
@@ -188,9 +189,9 @@ struct FormulaSet::Impl {
 
   void check_finite(double value, size_t i, size_t level) const {
     if (!std::isfinite(value))
-      throw Error(fmt::format("{}: state variable '{}' is {} at level {}; check its initial value, its "
+      throw Error(fmt::format("{}: state variable {} is {} at level {}; check its initial value, its "
                               "recurrence \"next\" and the parameters' ranges",
-                              state_wheres[i], state_names[i], value, level));
+                              state_wheres[i], subdiv::quoted(state_names[i]), value, level));
   }
 
   // A definition that fails is named with its own place, not only the formula reading it
@@ -201,9 +202,9 @@ struct FormulaSet::Impl {
       try {
         definition_values[i] = definitions[i]->Eval();
       } catch (const mu::Parser::exception_type& e) {
-        throw Error(fmt::format("{}: definition '{}' = '{}' fails to evaluate at n={}, k={}, j={}, l={}: {} "
+        throw Error(fmt::format("{}: definition {} = {} fails to evaluate at n={}, k={}, j={}, l={}: {} "
                                 "(while evaluating {}, which sees the definitions)",
-                                definition_wheres[i], definition_names[i], shortened(definition_expressions[i]), n, k,
+                                definition_wheres[i], subdiv::quoted(definition_names[i]), subdiv::quoted(shortened(definition_expressions[i])), n, k,
                                 j, l, shortened(e.GetMsg(), 2 * kQuotedTextChars), reader));
       }
     }
@@ -253,8 +254,8 @@ double FormulaSet::evaluate(int id, const FormulaInputs& in) {
   try {
     return impl_->formulas[id]->Eval();
   } catch (const mu::Parser::exception_type& e) {
-    throw Error(fmt::format("{}: formula '{}' fails to evaluate at n={}, k={}, j={}, l={}: {}",
-                            impl_->wheres[id], shortened(impl_->expressions[id]), in.n, in.k, in.j, in.l,
+    throw Error(fmt::format("{}: formula {} fails to evaluate at n={}, k={}, j={}, l={}: {}",
+                            impl_->wheres[id], subdiv::quoted(shortened(impl_->expressions[id])), in.n, in.k, in.j, in.l,
                             shortened(e.GetMsg(), 2 * kQuotedTextChars)));
   }
 }

@@ -5,6 +5,7 @@
 
 #include "framework/rules/rule.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -44,13 +45,13 @@ RoleTable& role_table() {
 
 Role register_role(RoleInfo info) {
   if (info.name.empty()) throw Error("a role needs a name");
-  if (!info.points || !info.max_points) throw Error(fmt::format("role '{}' needs both functions: points and max_points", info.name));
+  if (!info.points || !info.max_points) throw Error(fmt::format("role {} needs both functions: points and max_points", subdiv::quoted(info.name)));
   for (auto& [role, name] : kRoleNames)
-    if (name == info.name) throw Error(fmt::format("a role named '{}' is built in", info.name));
+    if (name == info.name) throw Error(fmt::format("a role named {} is built in", subdiv::quoted(info.name)));
   RoleTable& t = role_table();
   std::lock_guard lock(t.mutex);
   for (const auto& r : t.roles)
-    if (r.name == info.name) throw Error(fmt::format("a role named '{}' already exists ({})", info.name, r.origin));
+    if (r.name == info.name) throw Error(fmt::format("a role named {} already exists ({})", subdiv::quoted(info.name), r.origin));
   if (t.roles.size() >= 256 - kFirstRegisteredRole) throw Error("too many registered roles");
   t.roles.push_back(std::move(info));
   return Role(kFirstRegisteredRole + t.roles.size() - 1);

@@ -11,6 +11,7 @@
 #include "framework/util/error.h"
 #include "framework/util/input_file.h"
 #include "framework/util/json_path_line.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -19,9 +20,9 @@ const CompiledRule& needed_rule(const WeightTables& tables, Element e, Context c
   const CompiledRule& rule = tables.rule(e, c);
   if (!rule.defined)
     throw Error(fmt::format(
-        "{}: the mesh needs a rule for new {} points in the '{}' context, and the scheme has none; "
+        "{}: the mesh needs a rule for new {} points in the {} context, and the scheme has none; "
         "add rules.{}.{}{}",
-        source, element_name(e), context_name(c), element_name(e), context_name(c),
+        source, element_name(e), subdiv::quoted(context_name(c)), element_name(e), context_name(c),
         c == Context::Crease ? " or name a boundary curve scheme with \"curve\"" : ""));
   return rule;
 }
@@ -56,9 +57,9 @@ void apply_stated_crease_rule(RowBuilder& row, const RuleInputs& in, Index f, in
       for (int j = 0; j < k; ++j) row.add(verts[(corner - j + k) % k], scale * t.weight(k, k, j));
     else
       throw Error(fmt::format("{}: a corner 'crease' rule is applied mirrored where the sharp edge arrives at the "
-                              "corner, and role '{}' cannot be mirrored; use 'self' and 'vertices', or leave the "
+                              "corner, and role {} cannot be mirrored; use 'self' and 'vertices', or leave the "
                               "rule out so the scheme's \"curve\" gives it",
-                              t.where, role_name(t.role)));
+                              t.where, subdiv::quoted(role_name(t.role))));
   }
 }
 

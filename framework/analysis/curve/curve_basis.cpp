@@ -6,6 +6,7 @@
 
 #include "framework/analysis/curve/curve_eigen.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -36,13 +37,13 @@ BasisSamples sample_basis(const CurveMask& raw, const std::string& scheme) {
   // phi at the integers is the limit mask at t = 0 (Halstead, Kass & DeRose 1993): the left eigenvector
   // of 1 of the local subdivision matrix, whose neighbourhood j holds weight phi(-j).
   const LocalSubdivisionMatrix local = local_subdivision_matrix(mask);
-  if (local.size() == 0) throw Error(fmt::format("curve scheme '{}': its mask has no integer in its support", scheme));
+  if (local.size() == 0) throw Error(fmt::format("curve scheme {}: its mask has no integer in its support", subdiv::quoted(scheme)));
   const LocalEigenAnalysis eigen = analyse_local_matrix(local);
   if (!eigen.has_limit_mask)
-    throw Error(fmt::format("curve scheme '{}': its limit function has no values at the integers (1 is not the "
+    throw Error(fmt::format("curve scheme {}: its limit function has no values at the integers (1 is not the "
                             "simple dominant eigenvalue of its local subdivision matrix), so the scheme has no limit "
                             "points; check it with `subdiv analyze {}`",
-                            scheme, scheme));
+                            subdiv::quoted(scheme), scheme));
   const int count = local.size();
   s.integers_first = -(local.first_index + count - 1);
   s.at_integers.assign(eigen.limit_mask.rbegin(), eigen.limit_mask.rend());
@@ -57,9 +58,9 @@ BasisSamples sample_basis(const CurveMask& raw, const std::string& scheme) {
   int steps = 0;
   while (reach % den != 0 && steps < kMaxCentreSteps) reach *= m, ++steps;
   if (reach % den != 0)
-    throw Error(fmt::format("curve scheme '{}': the centre {}/{} of its limit function is not reached by "
+    throw Error(fmt::format("curve scheme {}: the centre {}/{} of its limit function is not reached by "
                             "refinement, so its control points have no limit point to interpolate",
-                            scheme, num, den));
+                            subdiv::quoted(scheme), num, den));
   s.centre = double(num) / double(den);
   // Offsets d with c + d inside the support.
   s.centre_first = int(ceil_div(2 * first - num, den));

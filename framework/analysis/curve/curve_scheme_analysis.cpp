@@ -10,6 +10,7 @@
 #include "framework/rules/formula.h"
 #include "framework/scheme/scheme_loader.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace fs = std::filesystem;
@@ -30,7 +31,7 @@ CurveMask curve_mask_from_scheme(const CurveScheme& curve, int level) {
       const std::string where = fmt::format("{}: rules[{}].w[{}]", curve.path, r, t);
       const int id = formulas.add(curve.weights[r][t], where);
       const double w = formulas.evaluate(id, {0, 0, double(t), double(level)});
-      if (!std::isfinite(w)) throw Error(fmt::format("{}: '{}' is not finite ({})", where, curve.weights[r][t], w));
+      if (!std::isfinite(w)) throw Error(fmt::format("{}: {} is not finite ({})", where, subdiv::quoted(curve.weights[r][t]), w));
       weights[r].push_back(w);
     }
   return mask_from_rules(curve.arity, curve.starts, weights);

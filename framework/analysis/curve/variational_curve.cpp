@@ -9,6 +9,7 @@
 
 #include "framework/rules/formula.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -111,7 +112,7 @@ VariationalEnergy variational_energy(const CurveScheme& curve, int level) {
   for (size_t j = 0; j < curve.variational_alpha.size(); ++j) {
     const std::string place = fmt::format("{}: variational.alpha[{}]", curve.path, j);
     const double a = formulas.evaluate(formulas.add(curve.variational_alpha[j], place), {0, 0, double(j), double(level)});
-    if (!std::isfinite(a)) throw Error(fmt::format("{}: '{}' is {} at level {}", place, curve.variational_alpha[j], a, level));
+    if (!std::isfinite(a)) throw Error(fmt::format("{}: {} is {} at level {}", place, subdiv::quoted(curve.variational_alpha[j]), a, level));
     e.alpha.push_back(a);
     sum += a, magnitude += std::abs(a);
   }

@@ -9,6 +9,7 @@
 #include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -829,8 +830,8 @@ SurfaceAnalysis analyse_configuration(const Scheme& scheme, const LocalConfig& c
       return analyse_patch(scheme, make_face_patch(config.valence, rings), config, options);
     }
     if (analysis_centre(scheme) == CentreKind::Face)
-      throw Error(fmt::format("scheme '{}' is dual: a vertex of valence n becomes an n-gon face; analyse faces",
-                              scheme.name));
+      throw Error(fmt::format("scheme {} is dual: a vertex of valence n becomes an n-gon face; analyse faces",
+                              subdiv::quoted(scheme.name)));
     return analyse_patch(scheme, make_vertex_patch(analysis_cells(scheme), config, rings), config, options);
   } catch (const Error& e) {
     SurfaceAnalysis out;
