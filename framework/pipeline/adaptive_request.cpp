@@ -60,6 +60,12 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
     std::vector<const DataArray*> carried;
     int channels = 0;
     for (const DataArray& a : p.mesh.point_data) {
+      if (a.role == ArrayRole::Normals) {  // as refinement: a mix of unit normals is no normal
+        p.notes.push_back(fmt::format("point array {} holds normals, which refinement does not carry (a mix of unit "
+                                      "normals is no normal)",
+                                      subdiv::quoted(a.name)));
+        continue;
+      }
       if (a.integer) {
         p.notes.push_back(fmt::format("point array {} holds whole numbers and is not carried to the adaptive mesh",
                                       subdiv::quoted(a.name)));

@@ -41,7 +41,7 @@ LimitMesh run(const MeshData& mesh, const LimitSettings& s, const std::string& s
         adaptive_request_from(evaluate_request(mesh, s, source), s.adaptive_levels, s.tolerance, s.limit_positions));
     out.notes = std::move(r.warnings);
     out.notes.insert(out.notes.end(), r.notes.begin(), r.notes.end());
-    out.mesh = adaptive_mesh_data(std::move(r.mesh));
+    out.mesh = adaptive_mesh_data(std::move(r.mesh), std::move(r.point_arrays));
     return out;
   }
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(mesh, s, source));
@@ -59,6 +59,9 @@ LimitMesh limit_mesh(const MeshData& mesh, const LimitSettings& s, const std::st
     throw Error(source + ": the input has no polygons; give it a surface (e.g. Extract Surface)");
   try {
     LimitMesh out = run(mesh, s, source);
+    // Normals are left out without a note, as SubdivKit Refine leaves them: most of
+    // ParaView's sources have them.
+    std::erase_if(out.notes, [](const std::string& note) { return note.find("holds normals") != std::string::npos; });
     for (std::string& note : out.notes) note = spell_options(note, filter_spelling());
     return out;
   } catch (const OptionError& e) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "framework/io/mesh_data.h"
+#include "framework/pipeline/adaptive_request.h"
 #include "framework/pipeline/evaluate_request.h"
 #include "framework/pipeline/limit_mesh.h"
 #include "framework/pipeline/rational_weights.h"
@@ -149,6 +150,25 @@ TEST_CASE("texture coordinates are sampled at every corner and split exactly at 
   }
   CHECK(seam_values_left.size() == size_t(2 * N + 1));
   CHECK(seam_values_right.size() == size_t(2 * N + 1));
+}
+
+TEST_CASE("adaptive meshes carry float point arrays but not normals, as refinement does") {
+  MeshData cube = test::mesh_data(test::cube());
+  cube.point_data.push_back(DataArray{"n", 3, cube.positions, false, ArrayRole::Normals});
+  cube.point_data.push_back(DataArray{"height", 1, std::vector<double>(8, 1.0), false});
+  RefineRequest r;
+  r.mesh = std::move(cube);
+  r.mesh_name = "test mesh";
+  r.scheme.text = "catmull-clark";
+  r.levels = 2;
+  AdaptiveRequest a;
+  a.refine = std::move(r);
+  const AdaptiveResult result = refine_adaptive_request(std::move(a));
+  REQUIRE(result.point_arrays.size() == 1);
+  CHECK(result.point_arrays[0].name == "height");
+  bool said = false;
+  for (const std::string& note : result.notes) said = said || note.find("'n' holds normals") != std::string::npos;
+  CHECK(said);
 }
 
 }  // namespace
