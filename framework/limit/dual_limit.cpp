@@ -92,19 +92,6 @@ StepMatrix identity_step(Index n) {
   return m;
 }
 
-StepMatrix rows_of(const StencilTable& table, const std::vector<Index>& rows, Index source_count) {
-  StepMatrix m;
-  m.source_count = source_count;
-  for (Index r : rows) {
-    for (Index e = table.offsets[size_t(r)]; e < table.offsets[size_t(r) + 1]; ++e) {
-      m.columns.push_back(table.indices[size_t(e)]);
-      m.weights.push_back(table.weights[size_t(e)]);
-    }
-    m.offsets.push_back(Index(m.columns.size()));
-  }
-  return m;
-}
-
 std::vector<double> applied(const std::vector<double>& row, std::span<const double> values, int channels) {
   std::vector<double> out(size_t(channels), 0.0);
   for (size_t v = 0; v < row.size(); ++v)
@@ -339,7 +326,7 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
     const ChildStep s = child_quadrant(cut.level, h.levels[1], h.origins[0], q);
     Cut next = cut_around(h.levels[1], s.face, radius_);
     next.point.corner = s.corner, next.point.ab = s.ab, next.point.jacobian = s.jacobian;
-    owned.push_back(rows_of(h.stencils[0], next.original, cut.level.vertex_count));
+    owned.push_back(step_matrix(h.stencils[0], next.original, cut.level.vertex_count));
     path.push_back(&owned.back());
     std::vector<double> moved(size_t(owned.back().rows()) * size_t(channels));
     owned.back().apply(values, moved, channels);

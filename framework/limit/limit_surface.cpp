@@ -56,19 +56,6 @@ Neighbourhood cut(const Level& L, std::span<const double> values, int channels, 
   return n;
 }
 
-StepMatrix step_matrix(const StencilTable& table, const std::vector<Index>& rows, Index source_count) {
-  StepMatrix m;
-  m.source_count = source_count;
-  for (Index r : rows) {
-    for (Index e = table.offsets[size_t(r)]; e < table.offsets[size_t(r) + 1]; ++e) {
-      m.columns.push_back(table.indices[size_t(e)]);
-      m.weights.push_back(table.weights[size_t(e)]);
-    }
-    m.offsets.push_back(Index(m.columns.size()));
-  }
-  return m;
-}
-
 // The point with its Jacobian d(s, t)/d(u, v) halved: carried as 2^-level times the
 // Jacobian, whose entries grow like 2^level and would overflow past level 1023, so that
 // derivative rows start at 2^-level times their size (step_matrix.h).

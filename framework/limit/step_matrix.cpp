@@ -1,5 +1,7 @@
 #include "framework/limit/step_matrix.h"
 
+#include "framework/stencil/stencil_table.h"
+
 namespace subdiv {
 
 void StepMatrix::apply(std::span<const double> in, std::span<double> out, int channels) const {
@@ -36,6 +38,19 @@ std::vector<double> pulled_back(std::vector<double> row, std::span<const StepMat
     row = std::move(next);
   }
   return row;
+}
+
+StepMatrix step_matrix(const StencilTable& table, const std::vector<Index>& rows, Index source_count) {
+  StepMatrix m;
+  m.source_count = source_count;
+  for (Index r : rows) {
+    for (Index e = table.offsets[size_t(r)]; e < table.offsets[size_t(r) + 1]; ++e) {
+      m.columns.push_back(table.indices[size_t(e)]);
+      m.weights.push_back(table.weights[size_t(e)]);
+    }
+    m.offsets.push_back(Index(m.columns.size()));
+  }
+  return m;
 }
 
 }  // namespace subdiv

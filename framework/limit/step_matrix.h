@@ -8,6 +8,8 @@
 
 namespace subdiv {
 
+struct StencilTable;
+
 struct StepMatrix {
   Index source_count = 0;
   std::vector<Index> offsets{0}, columns;
@@ -24,6 +26,10 @@ struct StepMatrix {
   // out (rows x channels) = this x in (source_count x channels).
   void apply(std::span<const double> in, std::span<double> out, int channels) const;
 };
+
+// The step that a refinement's stencil table makes, restricted to `rows` (the children kept,
+// in their order) over `source_count` parents.
+StepMatrix step_matrix(const StencilTable& table, const std::vector<Index>& rows, Index source_count);
 
 // A derivative row over the last step's vertices, for d/du scaled by 2^-k (k the
 // refinement steps), pulled back to the first step's sources: every step's factor keeps the
