@@ -76,6 +76,13 @@ def main():
             shares = re.findall(r"reading [^\r]*\] +(\d+)%", tty)
             if code != 0 or not any(0 < int(share) < 100 for share in shares):
                 failures.append(f"subdiv {command[0]}: exit {code}, no reading bar between 0 and 100% in {tty!r}")
+        # evaluate writes its meshes (--samples, --adaptive) with the writing bar.
+        for mode in [["--samples", "2"], ["--adaptive", "1"]]:
+            out = Path(tmp) / f"sampled{mode[0]}.obj"
+            code, tty = run_on_pty([subdiv, "evaluate", str(big), *mode, "-o", str(out)], every_step)
+            shares = re.findall(r"writing [^\r]*\] +(\d+)%", tty)
+            if code != 0 or not any(0 < int(share) < 100 for share in shares):
+                failures.append(f"subdiv evaluate {mode[0]}: exit {code}, no writing bar between 0 and 100% in {tty!r}")
         # The bar moves within a level: the quad B-spline of degree 7 has 4 passes per level
         # (a split and 3 smoothing passes), each told (engine/step_progress.h), so the last
         # level's line shows the shares after 1, 2 and 3 of its passes (and the one it started at).

@@ -72,6 +72,13 @@ void write_csv(const std::filesystem::path& out, const SurfacePoints& queries, c
   });
 }
 
+// The mesh written with the bar `subdiv refine` draws while writing.
+void write_with_bar(const std::string& path, const MeshData& mesh, Progress& progress) {
+  progress.say(fmt::format("writing {}", path));
+  write_mesh(path, mesh, [&progress](double done) { progress.fraction(done); });
+  progress.done();
+}
+
 // The command line's options as a pipeline request (framework/pipeline/evaluate_request.h).
 // The mesh is read here, with the reading bar `subdiv refine` draws (io/io_progress.h).
 EvaluateRequest evaluate_request(const EvaluateArgs& a, Progress& progress) {
@@ -108,13 +115,13 @@ void run(const EvaluateArgs& a) {
     AdaptiveResult r = refine_adaptive_request(adaptive_request_from(evaluate_request(a, progress), a.adaptive, 0, a.limit));
     for (const std::string& w : r.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
     fmt::print("subdiv: {}\n", adaptive_summary(r));
-    write_mesh(a.output, adaptive_mesh_data(std::move(r.mesh), std::move(r.point_arrays)));
+    write_with_bar(a.output, adaptive_mesh_data(std::move(r.mesh), std::move(r.point_arrays)), progress);
     return;
   }
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a, progress));
   for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
   if (a.samples > 0) {
-    write_mesh(a.output, sampled_limit_mesh(prepared, a.samples));
+    write_with_bar(a.output, sampled_limit_mesh(prepared, a.samples), progress);
     return;
   }
   const LimitSurface& surface = *prepared.surface;
