@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "framework/engine/level_passes.h"
-#include "framework/engine/step_progress.h"
+#include "framework/util/step_progress.h"
 #include "framework/engine/step_preparation.h"
 #include "framework/engine/vertex_parameters.h"
 #include "framework/features/base_tags.h"
@@ -231,11 +231,11 @@ void step_values(std::span<const SchemeRun> runs, const Hierarchy& h, int step, 
   ScratchVector<double> scratch(count > 1 ? out.size() : 0);
   const auto target = [&](size_t s) { return (count - 1 - s) % 2 == 0 ? out : std::span<double>(scratch); };
   const bool last_level = size_t(step) + 2 == h.levels.size();
-  pass_applied(passes[0], options, values, target(0), channels, last_level && count == 1);
-  StepProgressScope::tell(1.0 / double(count));
-  for (size_t s = 1; s < count; ++s) {
-    pass_applied(passes[s], options, target(s - 1), target(s), channels, last_level && s + 1 == count);
-    StepProgressScope::tell(double(s + 1) / double(count));
+  for (size_t s = 0; s < count; ++s) {
+    const StepProgressScope::Report part = StepProgressScope::part(s, count);
+    const StepProgressScope within(part);  // the pass tells its own rows' share
+    pass_applied(passes[s], options, s == 0 ? values : target(s - 1), target(s), channels,
+                 last_level && s + 1 == count);
   }
 }
 

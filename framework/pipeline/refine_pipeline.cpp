@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "framework/engine/step_progress.h"
+#include "framework/util/step_progress.h"
 #include "framework/io/feature_angle.h"
 #include "framework/io/feature_file.h"
 #include "framework/io/mesh_cleanup.h"

@@ -9,6 +9,7 @@
 #include "framework/rules/smooth_kernels.h"
 #include "framework/rules/stage_times.h"
 #include "framework/util/error.h"
+#include "framework/util/step_progress.h"
 
 namespace subdiv {
 namespace {
@@ -129,9 +130,13 @@ void StepEvaluator::apply(std::span<const double> src, std::span<double> dst, in
   in.groups = &p.groups;
   in.new_point_base = s.parent.vertex_count;
   const StepSources sources{src.data(), dst.data(), s.parent.vertex_count, channels};
+  double rows = 0, done = 0;
+  for (Element e : p.order) rows += double(p.groups[int(e)].size());
   for (Element e : p.order) {
     const StageTimer timer(s.stage_times, s.stage_times ? fmt::format("L{} {} points", s.level + 1, element_name(e)) : std::string());
     apply_group_rows(s, in, e, p.groups[int(e)], p.kernels, p.plans, sources, dst.data(), paths);
+    done += double(p.groups[int(e)].size());
+    StepProgressScope::tell(rows > 0 ? done / rows : 1.0);  // a front-end's bar moves within the level
   }
 }
 

@@ -97,7 +97,8 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
     progress : callable, optional
         Called as ``progress(phase, done)`` on the calling thread: ``done`` is None when a
         phase starts ("level 2/3: 768 faces"), then the share of the levels' work done, 0 to
-        1, after each level (by its faces), as ``subdiv refine``'s bar shows it. An exception
+        1 (levels weighed by their faces), after each level and within it after each pass
+        and each kind of new point, as ``subdiv refine``'s bar shows it. An exception
         it raises stops the refinement and comes back from refine().
 
     The mesh's float point_data is refined with the same rules as the points (any number

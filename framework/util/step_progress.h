@@ -1,0 +1,45 @@
+#pragma once
+// Progress within one step's values, for a front-end's bar that should move during a long
+// level and not only between levels: the engine's step_values tells the share of the step's
+// passes done (the split's rows, then each smoothing pass), and each pass the share of its
+// rows done after each group of them (face, edge, vertex points: rules/step_evaluator.cpp),
+// to the report of the innermost StepProgressScope open on the calling thread. Without a
+// scope nothing is told, and the cost is one thread-local pointer test per group (the same
+// pattern as io/io_progress.h's reading scope).
+#include <cstddef>
+#include <functional>
+
+namespace subdiv {
+
+class StepProgressScope {
+public:
+  using Report = std::function<void(double done)>;
+
+  // Reports to `report` until the scope ends (nothing when it is empty).
+  explicit StepProgressScope(const Report& report) : previous_(current()) { current() = report ? &report : nullptr; }
+  ~StepProgressScope() { current() = previous_; }
+  StepProgressScope(const StepProgressScope&) = delete;
+  StepProgressScope& operator=(const StepProgressScope&) = delete;
+
+  // The work in progress on this thread has done the share `done` (0 to 1).
+  static void tell(double done) {
+    if (const Report* report = current()) (*report)(done);
+  }
+
+  // A report for part `index` of `count` equal parts of the work in progress: a scope
+  // opened with it maps the part's own shares into the whole (empty without a scope).
+  static Report part(size_t index, size_t count) {
+    const Report* whole = current();
+    if (!whole) return {};
+    return [whole, index, count](double done) { (*whole)((double(index) + done) / double(count)); };
+  }
+
+private:
+  static const Report*& current() {
+    thread_local const Report* report = nullptr;
+    return report;
+  }
+  const Report* previous_;
+};
+
+}  // namespace subdiv
