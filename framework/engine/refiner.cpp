@@ -130,8 +130,8 @@ Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const Ref
     timer.emplace(times, stage(options, made, "tags"));
     if (splitter_info(scheme.split()).engine_propagates_tags && !faces_only)
       propagate_tags(h.levels.back(), step, options.features.crease_method);
-    else if (options.features.crease_method == CreaseMethod::Chaikin && !step.chaikin_edge_sharpness.empty())
-      step.child.edge_sharpness = std::move(step.chaikin_edge_sharpness);
+    else if (options.features.crease_method == CreaseMethod::Chaikin && !step.averaged_edge_sharpness.empty())
+      step.child.edge_sharpness = std::move(step.averaged_edge_sharpness);
     pass_holes_down(h.levels.back(), step);
     timer.reset();
     if (!step.warning.empty()) h.warnings.push_back(fmt::format("level {}: {}", l + 1, step.warning));

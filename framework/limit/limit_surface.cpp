@@ -77,14 +77,6 @@ StepMatrix renumbering(const std::vector<Index>& order, Index source_count) {
   return m;
 }
 
-std::vector<double> applied(const std::vector<double>& row, std::span<const double> values, int channels) {
-  std::vector<double> out(size_t(channels), 0.0);
-  for (size_t v = 0; v < row.size(); ++v)
-    if (row[v] != 0)
-      for (int c = 0; c < channels; ++c) out[size_t(c)] += row[v] * values[v * size_t(channels) + size_t(c)];
-  return out;
-}
-
 }  // namespace
 
 std::string limit_surface_unsupported(const Scheme& scheme) {

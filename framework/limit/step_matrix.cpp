@@ -53,4 +53,12 @@ StepMatrix step_matrix(const StencilTable& table, const std::vector<Index>& rows
   return m;
 }
 
+std::vector<double> applied(const std::vector<double>& row, std::span<const double> values, int channels) {
+  std::vector<double> out(size_t(channels), 0.0);
+  for (size_t v = 0; v < row.size(); ++v)
+    if (row[v] != 0)
+      for (int c = 0; c < channels; ++c) out[size_t(c)] += row[v] * values[v * size_t(channels) + size_t(c)];
+  return out;
+}
+
 }  // namespace subdiv

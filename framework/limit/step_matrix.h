@@ -31,6 +31,9 @@ struct StepMatrix {
 // in their order) over `source_count` parents.
 StepMatrix step_matrix(const StencilTable& table, const std::vector<Index>& rows, Index source_count);
 
+// A row of weights over vertices applied to their values (`channels` per vertex).
+std::vector<double> applied(const std::vector<double>& row, std::span<const double> values, int channels);
+
 // A derivative row over the last step's vertices, for d/du scaled by 2^-k (k the
 // refinement steps), pulled back to the first step's sources: every step's factor keeps the
 // entries of order one, and each step removes the row's sum, which is zero for a

@@ -125,11 +125,11 @@ void tag_child(const Level& L, PointMap& pm, DualFeatureSplit& out) {
   Level& C = out.child;
   if (!L.edge_sharpness.empty()) {
     C.edge_sharpness.assign(size_t(C.edge_count()), 0.f);
-    std::vector<float> chaikin(C.edge_sharpness.size(), 0.f);
+    std::vector<float> averaged(C.edge_sharpness.size(), 0.f);
     auto at = [&](Index e, Index v, CreaseMethod m) { return child_edge_sharpness(L, e, v, m); };
     auto tag = [&](Index a, Index b, float uniform, float by_chaikin) {
       const Index e = a == kNone || b == kNone ? kNone : find_edge(C, a, b);
-      if (e != kNone && !C.edge_on_boundary(e)) C.edge_sharpness[e] = uniform, chaikin[e] = by_chaikin;
+      if (e != kNone && !C.edge_on_boundary(e)) C.edge_sharpness[e] = uniform, averaged[e] = by_chaikin;
     };
     for (Index e = 0; e < L.edge_count(); ++e) {
       if (L.edge_on_boundary(e) || !pm.sharp(e)) continue;
@@ -147,7 +147,7 @@ void tag_child(const Level& L, PointMap& pm, DualFeatureSplit& out) {
       auto mean = [&](CreaseMethod m) { return 0.5f * (at(sharp[0], v, m) + at(sharp[1], v, m)); };
       tag(pm.edge_point(sharp[0], v), pm.edge_point(sharp[1], v), mean(CreaseMethod::Uniform), mean(CreaseMethod::Chaikin));
     }
-    if (chaikin != C.edge_sharpness) out.chaikin_edge_sharpness = std::move(chaikin);
+    if (averaged != C.edge_sharpness) out.averaged_edge_sharpness = std::move(averaged);
   }
   if (!L.vertex_sharpness.empty()) {
     C.vertex_sharpness.assign(size_t(C.vertex_count), 0.f);

@@ -26,7 +26,7 @@ namespace subdiv {
 struct DualFeatureSplit {
   Level child;  // its edge sharpness decayed uniformly
   ChildOrigins origins;
-  std::vector<float> chaikin_edge_sharpness;  // under Chaikin's decay, where it differs (else empty)
+  std::vector<float> averaged_edge_sharpness;  // under Chaikin's decay, where it differs (else empty)
 };
 
 // With `full`, the whole child level with its sharpness tags; otherwise its faces only.

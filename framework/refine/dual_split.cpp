@@ -57,7 +57,7 @@ ChildOrigins dual_origins(const Level& L, OriginKind kind, Index child_faces) {
 SplitResult feature_result(const Level& L, bool full) {
   DualFeatureSplit split = dual_feature_split(L, full);
   SplitResult result{std::move(split.child), std::move(split.origins), true, {}};
-  result.chaikin_edge_sharpness = std::move(split.chaikin_edge_sharpness);
+  result.averaged_edge_sharpness = std::move(split.averaged_edge_sharpness);
   return result;
 }
 
@@ -77,12 +77,12 @@ SplitResult dual_result(const Level& L, bool full) {
 SplitResult mid_edge_result(const Level& L, bool full) {
   // Interior creases cut the V-faces into sectors (refine/mid_edge_crease_topology.h).
   DualSkipped skipped;
-  std::vector<float> chaikin;
-  Level child = mid_edge_needs_crease_topology(L) ? mid_edge_crease_split(L, full, &skipped.vertices, &chaikin)
+  std::vector<float> averaged;
+  Level child = mid_edge_needs_crease_topology(L) ? mid_edge_crease_split(L, full, &skipped.vertices, &averaged)
                                                   : mid_edge_split_topology(L, full, &skipped);
   const Index child_faces = child.face_count();
   SplitResult result{std::move(child), dual_origins(L, OriginKind::Edge, child_faces), true, {}};
-  result.chaikin_edge_sharpness = std::move(chaikin);
+  result.averaged_edge_sharpness = std::move(averaged);
   if (skipped.vertices)
     result.warning = fmt::format("the mid-edge split made no face for {} non-manifold vertex/vertices (they have no "
                                  "cycle of edges around them); the surface has a gap there",

@@ -38,10 +38,10 @@ void add_sector_faces(const Level& L, Index v, std::vector<Index>& offsets, std:
 // The edge closing a sector at v, between the points of two consecutive sharp edges, is a
 // crease edge of the child: it carries the mean of their child sharpness at v (features/
 // sharpness.h; a boundary edge counts as infinitely sharp), uniform decay in the child and
-// Chaikin's in `chaikin`.
-void tag_closing_edges(const Level& L, Level& C, std::vector<float>& chaikin) {
+// Chaikin's in `averaged`.
+void tag_closing_edges(const Level& L, Level& C, std::vector<float>& averaged) {
   C.edge_sharpness.assign(size_t(C.edge_count()), 0.f);
-  chaikin.assign(C.edge_sharpness.size(), 0.f);
+  averaged.assign(C.edge_sharpness.size(), 0.f);
   for (Index v = 0; v < L.vertex_count; ++v) {
     if (L.non_manifold_vertex(v)) continue;
     std::vector<Index> sharp;
@@ -53,10 +53,10 @@ void tag_closing_edges(const Level& L, Level& C, std::vector<float>& chaikin) {
       if (e == kNone || C.edge_on_boundary(e)) continue;
       auto mean = [&](CreaseMethod m) { return 0.5f * (child_edge_sharpness(L, a, v, m) + child_edge_sharpness(L, b, v, m)); };
       C.edge_sharpness[e] = mean(CreaseMethod::Uniform);
-      chaikin[e] = mean(CreaseMethod::Chaikin);
+      averaged[e] = mean(CreaseMethod::Chaikin);
     }
   }
-  if (chaikin == C.edge_sharpness) chaikin.clear();
+  if (averaged == C.edge_sharpness) averaged.clear();
 }
 
 }  // namespace
@@ -67,7 +67,7 @@ bool mid_edge_needs_crease_topology(const Level& L) {
   return false;
 }
 
-Level mid_edge_crease_split(const Level& L, bool full, Index* skipped_vertices, std::vector<float>* chaikin) {
+Level mid_edge_crease_split(const Level& L, bool full, Index* skipped_vertices, std::vector<float>* averaged) {
   std::vector<Index> offsets{0}, verts;
   for (Index f = 0; f < L.face_count(); ++f) {
     const auto edges = L.face_edge_list(f);
@@ -89,7 +89,7 @@ Level mid_edge_crease_split(const Level& L, bool full, Index* skipped_vertices, 
     return C;
   }
   Level C = build_level(L.edge_count(), offsets, verts);
-  tag_closing_edges(L, C, *chaikin);
+  tag_closing_edges(L, C, *averaged);
   return C;
 }
 

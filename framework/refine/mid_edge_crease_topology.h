@@ -20,9 +20,9 @@ namespace subdiv {
 // Whether the level has an interior edge of sharpness >= 1.
 bool mid_edge_needs_crease_topology(const Level& parent);
 
-// With `full`, the whole child level with its crease tags (uniform decay) and, in `chaikin`,
+// With `full`, the whole child level with its crease tags (uniform decay) and, in `averaged`,
 // the tags under Chaikin's decay where they differ (else left empty); otherwise its faces
 // only. `skipped_vertices` counts the non-manifold vertices that got no face.
-Level mid_edge_crease_split(const Level& parent, bool full, Index* skipped_vertices, std::vector<float>* chaikin);
+Level mid_edge_crease_split(const Level& parent, bool full, Index* skipped_vertices, std::vector<float>* averaged);
 
 }  // namespace subdiv

@@ -25,9 +25,9 @@ struct SplitResult {
   std::string warning;
   // A split that fills its own tags (not engine_propagates_tags) and whose child edge
   // sharpness depends on the crease method: the child's edge sharpness under Chaikin's
-  // decay (DeRose, Kass & Truong 1998), which the refiner takes for --crease-method chaikin;
+  // decay (DeRose, Kass & Truong 1998), which the refiner takes for --crease-method averaged;
   // `child.edge_sharpness` holds the uniform decay. Empty: the same under both.
-  std::vector<float> chaikin_edge_sharpness = {};
+  std::vector<float> averaged_edge_sharpness = {};
 };
 
 // Primal 1-to-k split of any polygon: a k-gon becomes k quads around a new face point.
