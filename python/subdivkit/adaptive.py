@@ -7,7 +7,7 @@ import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error
-from .mesh import Mesh, _data_arrays
+from .mesh import Mesh, _data_arrays, _type_name
 
 
 @dataclass
@@ -67,7 +67,7 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
     """
     if not isinstance(mesh, Mesh):
         raise Error(f"refine_adaptive: expected a subdivkit.Mesh (read_mesh or Mesh(points, faces)), "
-                    f"got {type(mesh).__name__}")
+                    f"got {_type_name(mesh)}")
     if isinstance(levels, bool) or not isinstance(levels, (int, np.integer)) or not 0 <= levels <= 12:
         raise Error(f"levels={levels!r}: adaptive refinement goes to level 0 to 12")
     tol = float(tolerance)

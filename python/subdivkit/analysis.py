@@ -6,6 +6,7 @@ import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error, Scheme
+from .mesh import _escaped, _type_name
 
 
 @dataclass
@@ -47,7 +48,7 @@ class SurfaceAnalysis:
         return out
 
     def __str__(self):
-        lines = [f"{self.scheme}: valence  lambda_1    lambda_2    |lambda_3|  verdict"]
+        lines = [f"{_escaped(self.scheme)}: valence  lambda_1    lambda_2    |lambda_3|  verdict"]
         for i, n in enumerate(self.valences):
             lines.append(f"{'':>{len(self.scheme) + 2}}{n:>7}  {self.subdominant[i]:<10.6f}  {self.lambda2[i]:<10.6f}  "
                          f"{self.lambda3[i]:<10.6f}  {self.verdicts[i]}")
@@ -103,7 +104,7 @@ def analyze(scheme, valences=range(3, 13), *, boundary=False, boundary_interpola
     if isinstance(scheme, str):
         scheme = Scheme.load(scheme)
     if not isinstance(scheme, Scheme):
-        raise Error(f"analyze: expected a subdivkit.Scheme or a scheme name, got {type(scheme).__name__}")
+        raise Error(f"analyze: expected a subdivkit.Scheme or a scheme name, got {_type_name(scheme)}")
     try:
         valence_list = [int(n) for n in np.atleast_1d(np.asarray(valences)).reshape(-1)]
     except (TypeError, ValueError):

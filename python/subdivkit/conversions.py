@@ -16,7 +16,7 @@ import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error
-from .mesh import Mesh, _data_arrays, _escaped
+from .mesh import Mesh, _data_arrays, _escaped, _type_name
 
 
 def _require(module, debian_package):
@@ -89,7 +89,7 @@ def from_vtk(polydata, name="vtkPolyData"):
     _require("vtkmodules.vtkCommonDataModel", "python3-vtk9")
     from vtkmodules.util.numpy_support import vtk_to_numpy
     if not hasattr(polydata, "GetPolys"):
-        raise Error(f"from_vtk: expected a vtkPolyData, got {type(polydata).__name__}")
+        raise Error(f"from_vtk: expected a vtkPolyData, got {_type_name(polydata)}")
     if polydata.GetNumberOfStrips():
         raise Error(f"{_escaped(name)}: {polydata.GetNumberOfStrips()} triangle strip(s): run vtkTriangleFilter first")
     if polydata.GetNumberOfVerts():
@@ -173,7 +173,7 @@ def from_open3d(triangle_mesh, name="open3d.TriangleMesh"):
     normals and colours when it has them (point arrays "normal" and "color" with those roles)."""
     o3d = _require("open3d", "python3-open3d")
     if not isinstance(triangle_mesh, o3d.geometry.TriangleMesh):
-        raise Error(f"from_open3d: expected an open3d.geometry.TriangleMesh, got {type(triangle_mesh).__name__}")
+        raise Error(f"from_open3d: expected an open3d.geometry.TriangleMesh, got {_type_name(triangle_mesh)}")
     point_data, point_roles = {}, {}
     if triangle_mesh.has_vertex_normals():
         point_data["normal"], point_roles["normal"] = np.asarray(triangle_mesh.vertex_normals).copy(), "normals"
@@ -229,7 +229,7 @@ def to_trimesh(mesh):
 
 def _check(mesh, what):
     if not isinstance(mesh, Mesh):
-        raise Error(f"{what}: expected a subdivkit.Mesh, got {type(mesh).__name__}")
+        raise Error(f"{what}: expected a subdivkit.Mesh, got {_type_name(mesh)}")
     # What write_mesh refuses, the other library would take and break on later (or at once,
     # as numpy_to_vtk does on a 3-d array): offsets that do not fit the indices, indices out
     # of range, non-finite points, data arrays without one row per point or face.

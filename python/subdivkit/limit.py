@@ -12,13 +12,13 @@ import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error, Scheme
-from .mesh import Mesh, _data_shapes_like, _face_varying_triples
+from .mesh import Mesh, _data_shapes_like, _face_varying_triples, _type_name
 from .refinement import _scipy_sparse
 
 
 def _check_mesh(mesh, what):
     if not isinstance(mesh, Mesh):
-        raise Error(f"{what}: expected a subdivkit.Mesh (read_mesh or Mesh(points, faces)), got {type(mesh).__name__}")
+        raise Error(f"{what}: expected a subdivkit.Mesh (read_mesh or Mesh(points, faces)), got {_type_name(mesh)}")
 
 
 def _check_order(derivatives):

@@ -133,6 +133,11 @@ def _escaped(text):
     return _subdivkit._escaped(str(text).encode("utf-8", "surrogatepass"))
 
 
+def _type_name(value):
+    """The type of a wrong argument for a message; a class made with type() can have any name."""
+    return _escaped(type(value).__name__)
+
+
 def _checked_array(name, check, doc):
     """A Mesh array stored as ``_name``, checked and converted by ``check(mesh, value)`` on assignment."""
     private = "_" + name
@@ -189,7 +194,7 @@ class Mesh:
                  crease_sharpness=None, corners=None, corner_sharpness=None, point_data=None, cell_data=None,
                  face_varying=None, point_roles=None, cell_roles=None, name="mesh"):
         self.name = str(name)
-        self._points = _as_points(points, f"{self.name}.points")
+        self._points = _as_points(points, f"{_escaped(self.name)}.points")
         self._face_indices, self._face_offsets = _as_cells(faces, face_offsets, "faces", "face_offsets")
         self._line_indices, self._line_offsets = _as_cells(lines, line_offsets, "lines", "line_offsets")
         self._creases = _as_pairs(creases)
@@ -311,7 +316,7 @@ class Mesh:
         for label, data in (("point data", self.point_data), ("cell data", self.cell_data)):
             if data:
                 parts.append(f"{label} {sorted(data)}")
-        return f"<subdivkit.Mesh '{self.name}': {', '.join(parts)}>"
+        return f"<subdivkit.Mesh {_quoted(self.name)}: {', '.join(parts)}>"
 
 
 def _role(roles, key, what):
@@ -401,7 +406,7 @@ def write_mesh(path, mesh, point_data=None, cell_data=None):
     for an unknown extension, a missing directory or an invalid mesh.
     """
     if not isinstance(mesh, Mesh):
-        raise Error(f"write_mesh: expected a subdivkit.Mesh, got {type(mesh).__name__}")
+        raise Error(f"write_mesh: expected a subdivkit.Mesh, got {_type_name(mesh)}")
     point_data = mesh.point_data if point_data is None else point_data
     cell_data = mesh.cell_data if cell_data is None else cell_data
     _subdivkit._write_mesh(os.fspath(path), mesh,

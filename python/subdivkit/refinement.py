@@ -8,14 +8,14 @@ import numpy as np
 from . import _subdivkit
 from ._subdivkit import Error, Scheme
 from .mesh import _ARRAYS as _MESH_ARRAYS
-from .mesh import Mesh, _data_arrays, _data_shapes_like, _face_varying_triples
+from .mesh import Mesh, _data_arrays, _data_shapes_like, _face_varying_triples, _escaped, _quoted, _type_name
 
 BOUNDARY_MODES = ("edges-and-corners", "edges", "none")
 
 
 def _check_mesh(mesh, what):
     if not isinstance(mesh, Mesh):
-        raise Error(f"{what}: expected a subdivkit.Mesh (read_mesh or Mesh(points, faces)), got {type(mesh).__name__}")
+        raise Error(f"{what}: expected a subdivkit.Mesh (read_mesh or Mesh(points, faces)), got {_type_name(mesh)}")
 
 
 def _check_levels(levels):
@@ -290,7 +290,7 @@ class Evaluator:
         return Mesh._from_arrays(arrays, name=self.name)
 
     def __repr__(self):
-        return (f"<subdivkit.Evaluator '{self.name}': {self.levels} level(s) of {self.scheme}, "
+        return (f"<subdivkit.Evaluator {_quoted(self.name)}: {self.levels} level(s) of {_escaped(self.scheme)}, "
                 f"{self.n_base_points} -> {self.n_points} points, {self.n_faces} faces>")
 
 

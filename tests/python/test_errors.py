@@ -206,3 +206,36 @@ def test_non_finite_face_varying_values_and_results_are_refused():
     big = sk.Mesh(np.array([[0, 0, 0], [1.7e308, 0, 0], [1.7e308, 1.7e308, 0], [0, 1.7e308, 0]]), [[0, 1, 2], [0, 2, 3]])
     with pytest.raises(sk.Error, match="non-finite coordinate.*scale the mesh down"):
         sk.refine(big, "butterfly", 2)
+
+
+# Issue 33: a message or a repr never carries a control byte of the user's text raw (an ESC
+# sequence would drive the terminal). Class names are user text too: type() makes any.
+HOSTILE = "e\x1b[2J\x00x"
+
+
+def _assert_no_control_bytes(text):
+    assert "\x1b" not in text and "\x00" not in text, f"raw control byte in {text!r}"
+
+
+def test_wrong_argument_types_are_named_escaped():
+    hostile_type = type("e\x1b[2J", (), {})()  # type names cannot hold a NUL
+    calls = [lambda: sk.refine(hostile_type, "catmull-clark"),
+             lambda: sk.write_mesh("out.obj", hostile_type),
+             lambda: sk.evaluate(hostile_type, "catmull-clark", [0], [[0.5, 0.5]]),
+             lambda: sk.refine_adaptive(hostile_type, "catmull-clark"),
+             lambda: sk.analyze(hostile_type)]
+    for call in calls:
+        with pytest.raises(sk.Error) as e:
+            call()
+        _assert_no_control_bytes(str(e.value))
+        assert "e\\x1b[2J" in str(e.value)
+
+
+def test_reprs_and_labels_escape_the_mesh_name(cube_path):
+    cube = sk.read_mesh(cube_path)
+    mesh = sk.Mesh(cube.points, cube.faces, name=HOSTILE)
+    _assert_no_control_bytes(repr(mesh))
+    _assert_no_control_bytes(repr(sk.Evaluator(mesh, "catmull-clark", 1)))
+    with pytest.raises(sk.Error) as e:
+        sk.Mesh([[0.0, 0.0]], [[0, 0, 0]], name=HOSTILE)
+    _assert_no_control_bytes(str(e.value))
