@@ -9,6 +9,7 @@
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
 #include "shared_options.h"
+#include "safe_print.h"
 
 namespace subdiv::cli {
 
@@ -39,12 +40,12 @@ void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& a, bool limi
   r.tolerance = a.tolerance;
   r.limit = limit;
   AdaptiveResult result = refine_adaptive_request(std::move(r));
-  for (const std::string& w : result.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
+  for (const std::string& w : result.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
   const std::string summary = adaptive_summary(result);
   write_mesh(output, adaptive_mesh_data(std::move(result.mesh), std::move(result.point_arrays)));
   if (quiet) return;
-  for (const auto& note : result.notes) fmt::print("{}\n", spell_options(note, cli_option_spelling()));
-  fmt::print("adaptive refinement of {} to level {}: {} in {:.3f} s -> {}\n", result.scheme_label, a.levels,
+  for (const auto& note : result.notes) print_safe("{}\n", spell_options(note, cli_option_spelling()));
+  print_safe("adaptive refinement of {} to level {}: {} in {:.3f} s -> {}\n", result.scheme_label, a.levels,
              summary,
              std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), output);
 }

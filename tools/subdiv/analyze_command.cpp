@@ -20,6 +20,7 @@
 #include "framework/util/atomic_file.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
+#include "safe_print.h"
 
 namespace subdiv::cli {
 namespace {
@@ -101,12 +102,12 @@ void write_characteristic_maps(const std::filesystem::path& dir, const std::stri
 void run_curve(const AnalyzeArgs& a) {
   const auto curve = load_curve_scheme_named(a.scheme, parse_params(a.params));
   const CurveSchemeAnalysis r = analyse_curve_scheme(*curve, a.level);
-  fmt::print("{}", curve_scheme_summary(r));
+  print_safe("{}", curve_scheme_summary(r));
   if (!a.json_file.empty()) write_text(a.json_file, curve_scheme_json(r).dump(2) + "\n");
   if (!a.svg_file.empty())
     write_text(a.svg_file, eigenvalue_svg(r.analysis.eigen.eigenvalues,
                                           fmt::format("{}: local subdivision matrix eigenvalues", curve->name)));
-  if (!a.vtk_dir.empty()) fmt::print("(--vtk: curve schemes have no characteristic map to write)\n");
+  if (!a.vtk_dir.empty()) print_safe("(--vtk: curve schemes have no characteristic map to write)\n");
 }
 
 void run_surface(const AnalyzeArgs& a) {
@@ -123,37 +124,37 @@ void run_surface(const AnalyzeArgs& a) {
   for (int n : valences)
     if (n != 2 || !a.boundary) request.valences.push_back(n);
   if (!request.valences.empty()) interior = analyse_valences(request);
-  fmt::print("scheme {} ({})\n", scheme->name, scheme->path);
+  print_safe("scheme {} ({})\n", scheme->name, scheme->path);
   const bool level_dependent = scheme_is_level_dependent(*scheme);
   if (level_dependent)
-    fmt::print("non-stationary: weights depend on the level l; analysed with the weights of level {} (--level), "
+    print_safe("non-stationary: weights depend on the level l; analysed with the weights of level {} (--level), "
                "as if every step used them\n",
                a.level);
-  fmt::print("analysed at {} (the centre of the invariant neighbourhood); S on the k-ring that maps to itself\n",
+  print_safe("analysed at {} (the centre of the invariant neighbourhood); S on the k-ring that maps to itself\n",
              centre == CentreKind::Face ? "an n-gon face: a dual scheme turns a valence-n vertex into one"
                                         : "a vertex of valence n");
-  fmt::print("\n{}", surface_table(interior));
+  print_safe("\n{}", surface_table(interior));
   if (a.boundary && centre == CentreKind::Vertex) {
     request.valences = valences, request.boundary = true;
     boundary = analyse_valences(request);
-    fmt::print("\nboundary vertices (n ring edges, n - 1 faces):\n{}", surface_table(boundary));
+    print_safe("\nboundary vertices (n ring edges, n - 1 faces):\n{}", surface_table(boundary));
   } else if (a.boundary) {
-    fmt::print("\n(--boundary: boundary analysis is done for vertex-centred schemes only)\n");
+    print_safe("\n(--boundary: boundary analysis is done for vertex-centred schemes only)\n");
   }
   if (a.details) {
     for (const auto* list : {&interior, &boundary})
       for (const auto& r : *list) {
-        fmt::print("\n");
-        for (const auto& line : surface_summary_lines(r)) fmt::print("  {}\n", line);
+        print_safe("\n");
+        for (const auto& line : surface_summary_lines(r)) print_safe("  {}\n", line);
       }
   } else {
-    fmt::print("\ncurvature (Peters & Reif 2004, lambda_1^2 against |lambda_3|):\n");
+    print_safe("\ncurvature (Peters & Reif 2004, lambda_1^2 against |lambda_3|):\n");
     for (const auto& r : interior)
-      if (!r.curvature.empty()) fmt::print("  n = {:>2}: {}\n", r.config.valence, r.curvature);
+      if (!r.curvature.empty()) print_safe("  n = {:>2}: {}\n", r.config.valence, r.curvature);
   }
   int c1 = 0;
   for (const auto& r : interior) c1 += r.c1;
-  fmt::print("\n{} of {} valences C1 (eigenvalue conditions and a regular, injective characteristic map)\n", c1,
+  print_safe("\n{} of {} valences C1 (eigenvalue conditions and a regular, injective characteristic map)\n", c1,
              interior.size());
   if (!a.json_file.empty()) {
     nlohmann::json j = surface_report_json(interior);

@@ -12,6 +12,7 @@
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
 #include "progress.h"
+#include "safe_print.h"
 
 namespace subdiv::cli {
 namespace {
@@ -60,7 +61,7 @@ void refine_curves_command(const CurveRefineArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   check_curve_output(a.output);
   const ThreadLimit thread_limit(a.threads, "--threads");
-  if (!thread_limit.note().empty()) fmt::print(stderr, "subdiv: note: {}\n", thread_limit.note());
+  if (!thread_limit.note().empty()) print_safe(stderr, "subdiv: note: {}\n", thread_limit.note());
   Progress progress;
   CurveRefineRequest request;
   request.mesh_file = a.mesh;
@@ -75,11 +76,11 @@ void refine_curves_command(const CurveRefineArgs& a) {
   write_curve_levels(a.output, result.levels);
   progress.done();
   if (a.quiet) return;
-  for (const auto& note : result.notes) fmt::print(stderr, "subdiv: note: {}\n", terminal_safe(note));
+  for (const auto& note : result.notes) print_safe(stderr, "subdiv: note: {}\n", note);
   const CurveLevel& fine = result.levels.back().topology;
   int closed = 0;
   for (auto c : fine.closed) closed += c;
-  fmt::print("{}: {} level(s) of {}{} -> {} points on {} polylines ({} closed) in {:.3f} s -> {}\n", a.mesh, a.levels,
+  print_safe("{}: {} level(s) of {}{} -> {} points on {} polylines ({} closed) in {:.3f} s -> {}\n", a.mesh, a.levels,
              result.scheme->name, result.scheme->nonlinear ? " (non-linear)" : "", fine.vertex_count,
              fine.polyline_count(), closed, seconds_since(t0), a.output);
 }

@@ -25,6 +25,7 @@
 #include "framework/util/parallel_for_all.h"
 #include "framework/util/quoted_text.h"
 #include "progress.h"
+#include "safe_print.h"
 
 namespace subdiv::cli {
 namespace {
@@ -113,13 +114,13 @@ void run(const EvaluateArgs& a) {
   Progress progress;
   if (a.adaptive >= 0) {  // the same as subdiv refine --adaptive L (adaptive_refine_option.cpp)
     AdaptiveResult r = refine_adaptive_request(adaptive_request_from(evaluate_request(a, progress), a.adaptive, 0, a.limit));
-    for (const std::string& w : r.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
-    fmt::print("subdiv: {}\n", adaptive_summary(r));
+    for (const std::string& w : r.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
+    print_safe("subdiv: {}\n", adaptive_summary(r));
     write_with_bar(a.output, adaptive_mesh_data(std::move(r.mesh), std::move(r.point_arrays)), progress);
     return;
   }
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a, progress));
-  for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
+  for (const std::string& w : prepared.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
   if (a.samples > 0) {
     write_with_bar(a.output, sampled_limit_mesh(prepared, a.samples), progress);
     return;

@@ -32,6 +32,7 @@
 #include "level_output.h"
 #include "progress.h"
 #include "framework/util/quoted_text.h"
+#include "safe_print.h"
 
 namespace subdiv::cli {
 namespace {
@@ -198,7 +199,7 @@ void run(const InterpolateArgs& a) {
   if (curve && !a.lambda.empty())
     throw Error(fmt::format("--lambda: {} is a curve scheme; Lin et al. 2015's shape parameter is for surfaces", subdiv::quoted(a.scheme)));
   const ThreadLimit thread_limit(a.threads, "--threads");
-  if (!thread_limit.note().empty()) fmt::print(stderr, "subdiv: note: {}\n", thread_limit.note());
+  if (!thread_limit.note().empty()) print_safe(stderr, "subdiv: note: {}\n", thread_limit.note());
 
   Progress progress(false, a.quiet);
   progress.say(fmt::format("reading {}", a.mesh));  // the bar `subdiv refine` draws while reading
@@ -215,16 +216,16 @@ void run(const InterpolateArgs& a) {
   warn_if_stopped(r, r.curve ? "the polylines written are" : "the control mesh written is");
   if (a.quiet) return;
   if (r.curve)
-    fmt::print("{}: {} points on {} polyline{}; curve scheme {}\n", a.mesh, r.curve_base.vertex_count,
+    print_safe("{}: {} points on {} polyline{}; curve scheme {}\n", a.mesh, r.curve_base.vertex_count,
                r.curve_base.polyline_count(), r.curve_base.polyline_count() == 1 ? "" : "s", r.curve->name);
   else
-    fmt::print("{}: {} vertices, {} faces; scheme {}\n", a.mesh, r.base.vertex_count, r.base.face_count(), a.scheme);
-  fmt::print("limit: {}\n", r.limit_description);
+    print_safe("{}: {} vertices, {} faces; scheme {}\n", a.mesh, r.base.vertex_count, r.base.face_count(), a.scheme);
+  print_safe("limit: {}\n", r.limit_description);
   print_iterations(r, log, r.curve ? "points" : "vertices", a.verbose);
-  fmt::print("wrote {}", a.output);
+  print_safe("wrote {}", a.output);
   const int levels = r.curve ? a.levels : r.sequence.total_levels;
-  if (!a.refined.empty()) fmt::print(" and {} ({} levels)", a.refined, levels);
-  fmt::print("\n");
+  if (!a.refined.empty()) print_safe(" and {} ({} levels)", a.refined, levels);
+  print_safe("\n");
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
+#include "safe_print.h"
 
 namespace subdiv::cli {
 namespace fs = std::filesystem;
@@ -40,7 +41,7 @@ void show_iterations(InterpolateRequest& request, Progress& progress, bool verbo
 
 void warn_if_stopped(const InterpolateResult& run, const std::string& written) {
   if (run.iteration.converged) return;
-  fmt::print(stderr, "subdiv: warning: the residual {:.3e} is above the tolerance {:.3e} after {} iterations "
+  print_safe(stderr, "subdiv: warning: the residual {:.3e} is above the tolerance {:.3e} after {} iterations "
              "(--max-iter); {} the last iterate\n", run.iteration.history.back().max_residual, run.tolerance,
              run.iteration.iterations, written);
 }
@@ -49,16 +50,16 @@ void print_iterations(const InterpolateResult& run, const std::vector<std::strin
                       bool verbose) {
   const IterationRecord& first = run.iteration.history.front();
   const IterationRecord& last = run.iteration.history.back();
-  fmt::print("moving: {} of {} {} ({}); tolerance {:.3e}\n", run.moving, run.vertices, what,
+  print_safe("moving: {} of {} {} ({}); tolerance {:.3e}\n", run.moving, run.vertices, what,
              run.moving == run.vertices ? "global" : "local", run.tolerance);
   if (verbose) {
-    fmt::print("{:>9} {:>14} {:>14}\n", "iteration", "max residual", "rms residual");
-    for (const auto& line : log) fmt::print("{}\n", line);
+    print_safe("{:>9} {:>14} {:>14}\n", "iteration", "max residual", "rms residual");
+    for (const auto& line : log) print_safe("{}\n", line);
   }
-  fmt::print("{} in {} iterations: max residual {:.3e}, rms {:.3e} (initially {:.3e}, {:.3e})\n",
+  print_safe("{} in {} iterations: max residual {:.3e}, rms {:.3e} (initially {:.3e}, {:.3e})\n",
              run.iteration.converged ? "converged" : "stopped", run.iteration.iterations, last.max_residual,
              last.rms_residual, first.max_residual, first.rms_residual);
-  if (!run.fixed_note.empty()) fmt::print("{}\n", run.fixed_note);
+  if (!run.fixed_note.empty()) print_safe("{}\n", run.fixed_note);
 }
 
 }  // namespace subdiv::cli

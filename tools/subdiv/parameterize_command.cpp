@@ -12,6 +12,7 @@
 #include "framework/parameterize/parameterize_mesh.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
+#include "safe_print.h"
 
 namespace subdiv::cli {
 namespace {
@@ -41,8 +42,8 @@ void run(const ParameterizeArgs& a) {
   const ParameterizedMesh done = parameterize_mesh(read_mesh(a.mesh), o, a.mesh);
   write_mesh(a.output, done.mesh);
   if (a.quiet) return;
-  for (const auto& note : done.notes) fmt::print("{}: {}\n", a.mesh, note);
-  fmt::print("{}: {} vertices ({} on the boundary{}) mapped to the {} with {} weights -> {}\n", a.mesh,
+  for (const auto& note : done.notes) print_safe("{}: {}\n", a.mesh, note);
+  print_safe("{}: {} vertices ({} on the boundary{}) mapped to the {} with {} weights -> {}\n", a.mesh,
              done.mesh.vertex_count(), done.embedding.boundary.size(),
              done.embedding.corners.empty()
                  ? std::string()

@@ -7,7 +7,7 @@
 #include "commands.h"
 #include "framework/plugin/plugin_loader.h"
 #include "framework/util/error.h"
-#include "framework/util/quoted_text.h"
+#include "safe_print.h"
 
 namespace subdiv::cli {
 namespace {
@@ -19,11 +19,11 @@ constexpr const char* kPluginHelp =
 
 void print_status(const PluginStatus& s) {
   if (s.loaded) {
-    fmt::print("loaded   {} {}  {} ({})\n", s.name, s.version, s.file, s.found_by);
-    for (const auto& line : s.provides) fmt::print("           {}\n", line);
+    print_safe("loaded   {} {}  {} ({})\n", s.name, s.version, s.file, s.found_by);
+    for (const auto& line : s.provides) print_safe("           {}\n", line);
   } else {
     const std::string who = s.name.empty() ? "" : fmt::format("{} {}  ", s.name, s.version);
-    fmt::print("refused  {}{} ({})\n           reason: {}\n", who, s.file, s.found_by, s.reason);
+    print_safe("refused  {}{} ({})\n           reason: {}\n", who, s.file, s.found_by, s.reason);
   }
 }
 
@@ -44,13 +44,13 @@ void refuse_requested_plugins(const std::vector<PluginStatus>& statuses) {
 void run_plugins_command(bool verbose) {
   const auto statuses = plugin_statuses();
   if (verbose) {
-    fmt::print("plugin interface {}\n", plugin_interface_version());
+    print_safe("plugin interface {}\n", plugin_interface_version());
     const char* env = std::getenv("SUBDIV_PLUGIN_PATH");
-    fmt::print("SUBDIV_PLUGIN_PATH: {}\n", env ? env : "(not set)");
-    for (const auto& dir : installed_plugin_dirs()) fmt::print("installed plugin folder: {}\n", dir.string());
+    print_safe("SUBDIV_PLUGIN_PATH: {}\n", env ? env : "(not set)");
+    for (const auto& dir : installed_plugin_dirs()) print_safe("installed plugin folder: {}\n", dir.string());
   }
   if (statuses.empty()) {
-    fmt::print("no plugins found; give --plugin PATH, set SUBDIV_PLUGIN_PATH, or install plugins into {}\n",
+    print_safe("no plugins found; give --plugin PATH, set SUBDIV_PLUGIN_PATH, or install plugins into {}\n",
                installed_plugin_dirs().back().string());
     return;
   }
@@ -78,7 +78,7 @@ void add_plugin_options(CLI::App& app) {
     refuse_requested_plugins(statuses);
     for (const auto& s : statuses)
       if (!s.loaded)
-        fmt::print(stderr, "subdiv: warning: plugin {} refused: {}\n", terminal_safe(s.file), terminal_safe(s.reason));
+        print_safe(stderr, "subdiv: warning: plugin {} refused: {}\n", s.file, s.reason);
   });
 }
 

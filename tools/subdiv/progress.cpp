@@ -1,4 +1,5 @@
 #include "progress.h"
+#include "safe_print.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -34,7 +35,7 @@ Progress::~Progress() { done(); }
 void Progress::time_step() {
   const auto now = std::chrono::steady_clock::now();
   if (timings_ && !step_.empty())
-    fmt::print(stderr, "subdiv: {:8.3f} s  peak {:6.2f} GB  {}\n",
+    print_safe(stderr, "subdiv: {:8.3f} s  peak {:6.2f} GB  {}\n",
                std::chrono::duration<double>(now - started_).count(), peak_resident_bytes() / 1e9, step_);
   step_.clear();
   started_ = now;
@@ -60,7 +61,7 @@ void Progress::draw() {
   std::string line = step_;
   if (done_ >= 0)
     line += "  " + bar(done_, std::chrono::duration<double>(std::chrono::steady_clock::now() - bar_started_).count());
-  fmt::print(stderr, "\r\033[K{}", line);
+  fmt::print(stderr, "\r\033[K{}", terminal_safe(line));
   std::fflush(stderr);
   drawn_ = std::chrono::steady_clock::now();
   open_ = true;
@@ -84,7 +85,7 @@ void Progress::fraction(double done) {
 void Progress::done() {
   time_step();
   done_ = -1;
-  if (terminal_ && open_) fmt::print(stderr, "\n");
+  if (terminal_ && open_) print_safe(stderr, "\n");
   open_ = false;
 }
 

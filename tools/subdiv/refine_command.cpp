@@ -20,6 +20,7 @@
 #include "shared_options.h"
 #include "adaptive_refine_option.h"
 #include "framework/util/quoted_text.h"
+#include "safe_print.h"
 
 namespace subdiv::cli {
 namespace {
@@ -89,7 +90,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 void print_warnings(const std::vector<std::string>& warnings) {
-  for (const auto& w : warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
+  for (const auto& w : warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
 }
 
 // --pieces and --max-memory write a .pvtp, and only a .pvtp comes from them; what a piece
@@ -145,9 +146,9 @@ void run_in_pieces(const RefineArgs& a, const RefineRequest& request, const Prep
       refine_in_pieces(job, prepared.sequence, prepared.mesh, prepared.base, prepared.options, refine);
   progress.done();
   if (a.quiet) return;
-  for (const auto& note : prepared.notes) fmt::print("{}\n", spell_options(note, cli_option_spelling()));
-  for (const auto& note : notes) fmt::print("{}\n", spell_options(note, cli_option_spelling()));
-  fmt::print("{}: {} level(s) of {} in {} piece(s) ({}, {} ghost ring(s)){} -> {} faces in {:.3f} s -> {}\n", a.mesh,
+  for (const auto& note : prepared.notes) print_safe("{}\n", spell_options(note, cli_option_spelling()));
+  for (const auto& note : notes) print_safe("{}\n", spell_options(note, cli_option_spelling()));
+  print_safe("{}: {} level(s) of {} in {} piece(s) ({}, {} ghost ring(s)){} -> {} faces in {:.3f} s -> {}\n", a.mesh,
              prepared.sequence.total_levels, a.scheme, done.pieces, done.method, done.rings,
              done.ranks > 1 ? fmt::format(" on {} ranks, this rank", done.ranks) : "", done.faces,
              seconds_since(t0), a.output);
@@ -167,7 +168,7 @@ void run(const RefineArgs& a) {
   if (!a.in_pieces()) check_output_path(a.output);
   const OutputChoice output = output_choice(a.output_format);  // a bad --arrays is refused before any work
   const ThreadLimit threads(a.threads, "--threads");
-  if (!threads.note().empty() && !a.quiet) fmt::print(stderr, "subdiv: note: {}\n", threads.note());
+  if (!threads.note().empty() && !a.quiet) print_safe(stderr, "subdiv: note: {}\n", threads.note());
   Progress progress(a.timings, a.quiet);
   RefineRequest request = refine_request(a, output, progress);
   if (a.adaptive.given())
@@ -179,7 +180,7 @@ void run(const RefineArgs& a) {
   RefineResult result = run_refinement(std::move(prepared), request);
   print_warnings(result.hierarchy.warnings);
   if (!result.limit_note.empty() && !a.quiet)
-    fmt::print(stderr, "subdiv: note: {}\n", spell_options(result.limit_note, cli_option_spelling()));
+    print_safe(stderr, "subdiv: note: {}\n", spell_options(result.limit_note, cli_option_spelling()));
   progress.say(fmt::format("writing {}", a.output));
   Hierarchy& h = result.hierarchy;
   // The faces written: holes are left out of every output, so out of the count too.
@@ -193,8 +194,8 @@ void run(const RefineArgs& a) {
                result.tags, writing);
   progress.done();
   if (!a.quiet) {
-    for (const auto& note : result.notes) fmt::print("{}\n", spell_options(note, cli_option_spelling()));
-    fmt::print("{}: {} level(s) of {} -> {} vertices, {} faces in {:.3f} s -> {}\n", a.mesh,
+    for (const auto& note : result.notes) print_safe("{}\n", spell_options(note, cli_option_spelling()));
+    print_safe("{}: {} level(s) of {} -> {} vertices, {} faces in {:.3f} s -> {}\n", a.mesh,
                result.sequence.total_levels, a.scheme, fine_vertices, fine_faces, seconds_since(t0), a.output);
   }
 }

@@ -5,6 +5,7 @@
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
+#include "safe_print.h"
 
 namespace subdiv::cli {
 namespace {
@@ -16,24 +17,24 @@ void print_parameters(const std::string& name, const std::string& kind) {
       if (p.is_choice) {
         std::string list;
         for (auto& c : p.choices) list += (list.empty() ? "" : "|") + c;
-        fmt::print("      --param {}={}  (default {}) {}\n", p.name, list, p.choice, p.description);
+        print_safe("      --param {}={}  (default {}) {}\n", p.name, list, p.choice, p.description);
       } else {
-        fmt::print("      --param {}=<number>  (default {}) {}{}\n", p.name, p.value, p.description,
+        print_safe("      --param {}=<number>  (default {}) {}{}\n", p.name, p.value, p.description,
                    p.per_vertex ? fmt::format(" [per vertex: --vertex-param {}=FILE]", p.name) : "");
       }
     }
   } catch (const Error& e) {
-    fmt::print("      (cannot load: {})\n", e.what());
+    print_safe("      (cannot load: {})\n", e.what());
   }
 }
 
 void run(bool verbose) {
   for (const char* kind : {"surface", "curve"}) {
-    fmt::print("{} schemes:\n", kind);
+    print_safe("{} schemes:\n", kind);
     for (const auto& s : list_schemes()) {
       if (s.kind != kind) continue;
-      fmt::print("  {:<22} {:<28} {}\n", s.name, "[" + s.origin + "]", s.description);
-      if (verbose) fmt::print("      file: {}\n", s.path);
+      print_safe("  {:<22} {:<28} {}\n", s.name, "[" + s.origin + "]", s.description);
+      if (verbose) print_safe("      file: {}\n", s.path);
       print_parameters(s.name, s.kind);
     }
   }

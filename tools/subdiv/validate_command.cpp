@@ -6,6 +6,7 @@
 #include "framework/scheme/scheme_validator.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
+#include "safe_print.h"
 
 namespace subdiv::cli {
 
@@ -25,21 +26,21 @@ void add_validate_command(CLI::App& app) {
     int failed = 0;
     for (const auto& file : *files) {
       if (std::filesystem::path(file).filename() == "scheme.schema.json") {
-        fmt::print("{}: skipped (the JSON Schema, not a scheme)\n", file);
+        print_safe("{}: skipped (the JSON Schema, not a scheme)\n", file);
         continue;
       }
       const ValidationReport r = validate_scheme_file(file, range->first, range->second);
       if (r.ok() && !r.skipped.empty() && r.checks == 0) {
-        fmt::print("{}: skipped ({} scheme {}: {})\n", file, r.kind, subdiv::quoted(r.scheme_name), r.skipped);
+        print_safe("{}: skipped ({} scheme {}: {})\n", file, r.kind, subdiv::quoted(r.scheme_name), r.skipped);
         continue;
       }
       if (r.ok()) {
-        fmt::print("{}: ok ({} scheme {}, {} checks{}{})\n", file, r.kind, subdiv::quoted(r.scheme_name), r.checks,
+        print_safe("{}: ok ({} scheme {}, {} checks{}{})\n", file, r.kind, subdiv::quoted(r.scheme_name), r.checks,
                    r.skipped.empty() ? "" : "; not checked: ", r.skipped);
         continue;
       }
       ++failed;
-      for (const auto& e : r.errors) fmt::print(stderr, "{}\n", terminal_safe(e.message));
+      for (const auto& e : r.errors) print_safe(stderr, "{}\n", e.message);
     }
     if (failed) throw Error(fmt::format("{} of {} scheme file(s) failed validation", failed, files->size()));
   });

@@ -33,3 +33,25 @@ TEST_CASE("subdiv refine: a file name holding terminal escapes is shown escaped 
   CHECK_FALSE(has_raw_escape(missing.output));
   CHECK(missing.output.find("no\\x1b[1Ahere.obj") != std::string::npos);
 }
+
+// The reports a successful run prints name the input and output files too: every command's
+// stdout and stderr go through the same escaping (tools/subdiv/safe_print.h).
+TEST_CASE("subdiv: a hostile file name is shown escaped in the reports of successful runs") {
+  const auto dir = fresh_dir("hostile-names-reports");
+  const std::string stem = "m\x1b[31mX";
+  const auto mesh = (dir / (stem + ".obj")).string();
+  std::ofstream(mesh) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                         "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+  const std::string out = (dir / (stem + ".out")).string();
+  for (const std::string& command :
+       {"refine '" + mesh + "' -o '" + out + ".obj' -l 1", "refine '" + mesh + "' -o '" + out + ".obj' -l 1 --timings",
+        "refine '" + mesh + "' -o '" + out + ".obj' --adaptive 2",
+        "interpolate '" + mesh + "' -o '" + out + ".i.obj'",
+        "evaluate '" + mesh + "' --samples 2 -o '" + out + ".s.obj'"}) {
+    const CliResult r = run_subdiv(command);
+    INFO(command, "\n", r.output);
+    CHECK(r.exit_code == 0);
+    CHECK_FALSE(has_raw_escape(r.output));
+    if (!r.output.empty()) CHECK(r.output.find("m\\x1b[31mX") != std::string::npos);  // evaluate says nothing
+  }
+}
