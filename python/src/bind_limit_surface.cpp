@@ -85,7 +85,7 @@ py::dict evaluate_face_varying(const LimitSurfaceHandle& h, const std::string& n
   while (k < channels.size() && channels[k].name != name) ++k;
   if (k == channels.size()) {
     std::vector<std::string> names;
-    for (const auto& c : channels) names.push_back("'" + c.name + "'");
+    for (const auto& c : channels) names.push_back(subdiv::quoted(c.name));
     throw subdiv::Error(fmt::format("face-varying array {}: the mesh has {}", subdiv::quoted(name),
                                     names.empty() ? std::string("none") : fmt::format("{}", fmt::join(names, ", "))));
   }

@@ -120,7 +120,7 @@ std::vector<subdiv::DataArray> data_arrays_from(py::handle items, Index rows, co
     a.components = values.ndim() == 2 ? int(values.shape(1)) : 1;
     a.values.assign(values.data(), values.data() + values.size());
     a.integer = tuple.size() > 2 && py::bool_(tuple[2]);
-    a.role = tuple.size() > 3 ? role_from_name(py::str(tuple[3]), what + " '" + a.name + "'") : subdiv::ArrayRole::Data;
+    a.role = tuple.size() > 3 ? role_from_name(py::str(tuple[3]), what + " " + subdiv::quoted(a.name)) : subdiv::ArrayRole::Data;
     out.push_back(std::move(a));
   }
   return out;
