@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <map>
 
+#include "framework/analysis/surface/dual_sector_patch.h"
 #include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -434,7 +435,9 @@ void check_characteristic_map(const AnalysisRun& cx, int K, const Matrix& rp, do
 // ---------------------------------------------------------------------------------------------
 
 void finish_verdict(SurfaceAnalysis& r) {
-  const std::string where = r.config.centre == CentreKind::Face ? fmt::format("faces of size {}", r.config.valence)
+  const bool dual_feature = r.config.centre == CentreKind::Face && (r.config.boundary || !r.config.sharp.empty());
+  const std::string where = dual_feature ? r.config.describe()
+                            : r.config.centre == CentreKind::Face ? fmt::format("faces of size {}", r.config.valence)
                             : r.config.boundary || !r.config.sharp.empty() || r.config.corner
                                 ? r.config.describe()
                                 : fmt::format("valence {}", r.config.valence);
@@ -820,6 +823,38 @@ SurfaceAnalysis analyse_patch(const Scheme& scheme, const Patch& patch, const Lo
   return out;
 }
 
+namespace {
+
+// A dual scheme's crease (features.md, "Creases in dual schemes") cuts the mesh into two
+// sides that share only the crease points, and those depend on the crease polygon alone: S
+// is block triangular (crease block, then each side given the crease), each side is refined
+// exactly as a surface whose boundary is the crease, and the crease block is the crease
+// curve's. So the crease's spectrum is reported, and its smoothness across is each side's
+// boundary analysis (a sector of k faces is a boundary vertex of valence k + 1).
+void judge_dual_crease_by_sides(const Scheme& scheme, const SurfaceAnalysisOptions& options, SurfaceAnalysis& out) {
+  const int first = first_sector_faces(out.config);
+  const int sides[2] = {first, out.config.valence - first};
+  std::string failed;
+  for (int k : sides) {
+    LocalConfig side;
+    side.centre = CentreKind::Face;
+    side.boundary = true;
+    side.valence = k + 1;
+    side.first_step = out.config.first_step;
+    const SurfaceAnalysis b = analyse_configuration(scheme, side, options);
+    const std::string why = b.verdict.rfind("fails: ", 0) == 0 ? b.verdict.substr(7) : b.verdict;
+    if (!b.c1 && failed.empty()) failed = fmt::format("the side of {} faces ({}): {}", k, b.config.describe(), why);
+  }
+  if (!out.error.empty()) return;
+  out.c1 = failed.empty();
+  out.verdict = out.c1 ? fmt::format("C1 on both sides of the crease (sides of {} and {} faces, each as at a boundary); "
+                                     "along it the crease curve's",
+                                     sides[0], sides[1])
+                       : "fails: " + failed;
+}
+
+}  // namespace
+
 SurfaceAnalysis analyse_configuration(const Scheme& scheme, const LocalConfig& config,
                                       const SurfaceAnalysisOptions& options) {
   const int rings = options.patch_rings > 0 ? options.patch_rings : options.max_ring + 3;
@@ -827,6 +862,12 @@ SurfaceAnalysis analyse_configuration(const Scheme& scheme, const LocalConfig& c
     if (config.centre == CentreKind::Face) {
       if (analysis_cells(scheme) != PatchCells::Quads)
         throw Error("face-centred analysis needs a scheme for quads");
+      if (config.boundary || !config.sharp.empty() || config.corner) {
+        SurfaceAnalysis out =
+            analyse_patch(scheme, make_dual_sector_patch(scheme, config, rings, options.features), config, options);
+        if (!config.boundary && config.sharp.size() == 2) judge_dual_crease_by_sides(scheme, options, out);
+        return out;
+      }
       return analyse_patch(scheme, make_face_patch(config.valence, rings), config, options);
     }
     if (analysis_centre(scheme) == CentreKind::Face)
