@@ -35,10 +35,6 @@ bool is_centre_corner(const Level& parent, const ChildOrigins& o, Index child, I
 
 double direction_of(double x, double y) { return std::atan2(y, x); }
 
-double angle_gap(double a, double b) {
-  double d = std::fmod(std::abs(a - b), 2 * kPi);
-  return std::min(d, 2 * kPi - d);
-}
 
 }  // namespace
 
@@ -68,27 +64,29 @@ Patch make_dual_sector_patch(const Scheme& scheme, const LocalConfig& config, in
   const ChildOrigins& o = h.origins.front();
   const std::vector<double> xy = h.stencils.front().apply(p.xy, 2);
 
-  // The sector's direction: the mean of its faces' centroids (the faces spread evenly over
-  // the sector, so the mean lies on its bisector).
-  const auto ring = P.ring_faces(p.centre);
-  double sx = 0, sy = 0;
-  for (int s = 0; s < faces; ++s) {
-    const Index f = ring[size_t((p.start + s) % int(ring.size()))];
-    for (Index v : P.face(f)) sx += p.xy[size_t(2 * v)], sy += p.xy[size_t(2 * v + 1)];
-  }
-  const double bisector = direction_of(sx, sy);
+  // The sector's face: among the child faces lying in the sector's angle (from ray 0 to the
+  // sector's last ray, CCW), the one with the most points made at the centre (the sector's
+  // V-face, or for a sector of two faces the E-face between them).
+  const auto ring = P.ring_edges(p.centre);
+  auto ray_angle = [&](int r) {
+    const Index q = P.other_end(ring[size_t((p.start + r) % int(ring.size()))], p.centre);
+    return direction_of(p.xy[size_t(2 * q)] - p.xy[size_t(2 * p.centre)], p.xy[size_t(2 * q + 1)] - p.xy[size_t(2 * p.centre + 1)]);
+  };
+  const double from = ray_angle(0);
+  auto ccw_from_ray0 = [&](double a) { return std::fmod(a - from + 4 * kPi, 2 * kPi); };
+  const double span = ccw_from_ray0(ray_angle(faces % int(ring.size())));
   Index best = kNone;
-  double best_gap = 0;
+  int best_count = 0;
   for (Index g = 0; g < C.face_count(); ++g) {
     int at_centre = 0;
     double cx = 0, cy = 0;
     for (Index v : C.face(g)) {
       at_centre += is_centre_corner(P, o, v, p.centre);
-      cx += xy[size_t(2 * v)], cy += xy[size_t(2 * v + 1)];
+      cx += xy[size_t(2 * v)] - p.xy[size_t(2 * p.centre)], cy += xy[size_t(2 * v + 1)] - p.xy[size_t(2 * p.centre + 1)];
     }
-    if (at_centre < 2) continue;
-    const double gap = angle_gap(direction_of(cx, cy), bisector);
-    if (best == kNone || gap < best_gap) best = g, best_gap = gap;
+    const double a = ccw_from_ray0(direction_of(cx, cy));
+    if (at_centre < 2 || a <= 0 || a >= span) continue;
+    if (at_centre > best_count) best = g, best_count = at_centre;
   }
   if (best == kNone) throw Error(fmt::format("{}: the dual split made no face for the sector", config.describe()));
   Patch out;
