@@ -531,3 +531,29 @@ TEST_CASE("dual crease: limit points are exact at corners and refused, with the 
   CHECK(message.find("lies on a crease") != std::string::npos);
   CHECK(message.find("vertex") != std::string::npos);
 }
+
+TEST_CASE("dual crease: one non-manifold vertex elsewhere leaves the crease Chaikin's refinement, the vertex a gap") {
+  // A triangle touching the creased torus at one vertex, away from the crease loop (j = 3),
+  // makes that vertex non-manifold (two fans). The feature split skips it locally; before,
+  // the whole level fell back to the plain split and lost every crease.
+  CreasedTorus t = creased_torus();
+  const Index pinch = 3 * 8 + 4;  // (i, j) = (4, 3)
+  const Index a = t.mesh.vertex_count, b = a + 1;
+  for (int k = 0; k < 2; ++k)
+    for (int c = 0; c < 3; ++c) t.mesh.positions.push_back(t.mesh.positions[size_t(3 * pinch + c)] + (c == 2 ? 0.5 : 0.1 * (k + 1)));
+  t.mesh.vertex_count += 2;
+  t.mesh.add_face({pinch, a, b});
+  const Level base = tagged(t.mesh, t.loop, true, 10.f);
+  REQUIRE(base.non_manifold_vertex(pinch));
+  const auto s = load_scheme("doo-sabin", {});
+  RefineOptions options;
+  options.levels = 3;
+  const Hierarchy h = refine(*s, base, options);
+  Polygon expected = points_of(t.loop, t.mesh.positions);
+  for (int l = 1; l <= 3; ++l) {
+    CAPTURE(l);
+    expected = chaikin_closed(expected);
+    const auto pos = interpolate(h, l, t.mesh.positions, 3);
+    check_same_closed_polygon(points_of(crease_chain(h.levels[size_t(l)], kNone), pos), expected, 1e-12);
+  }
+}
