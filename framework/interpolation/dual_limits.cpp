@@ -145,8 +145,9 @@ StencilTable DualCentroidLimit::stencils_at(const Level& level, int step) const 
     // (p + 6 v + q) / 8).
     if (sharp == 2) {
       if (crease.first[v] == kNone || crease.second[v] == kNone)
-        return fmt::format("{}: vertex {} lies on a crease but one step of {} makes no two crease points there", who,
-                           v, scheme_->name);
+        return fmt::format("{}: vertex {} lies on a crease or boundary, where one step of {} makes no two face-corner "
+                           "points on its sharp edges there, so its crease curve's point is not known",
+                           who, v, scheme_->name);
       for (Index c : {crease.first[v], crease.second[v]})
         for (Index i = s.offsets[c]; i < s.offsets[c + 1]; ++i) row.add(s.indices[i], 0.5 * s.weights[i]);
       return {};
@@ -188,7 +189,7 @@ std::string crease_midpoint_mismatch(const Scheme& scheme, const Level& level, c
     for (const auto& [source, w] : got) {
       const double want = source == a || source == b ? 0.5 : 0.0;
       if (std::abs(w - want) > 1e-12)
-        return fmt::format("{}'s crease rule does not keep the midpoint of a crease edge (at vertex {}, weight {:.15g} "
+        return fmt::format("the crease rule of {} does not keep the midpoint of a crease edge (at vertex {}, weight {:.15g} "
                            "on a point where the midpoint has {:.15g}), so the crease curve's point of a vertex is not "
                            "known from its two crease points",
                            subdiv::quoted(scheme.name), v, w, want);
