@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fmt/format.h>
+#include <cstdint>
 #include <map>
 
 #include "framework/features/dual_features.h"
@@ -120,6 +121,14 @@ StencilTable DualCentroidLimit::stencils_at(const Level& level, int step) const 
   const std::vector<Index> vface = vertex_faces_after_step(h);
   const DualCreasePoints crease = dual_crease_points(level, h.origins[0]);
   const StencilTable& s = h.stencils[0];
+  // Per vertex: whether one step makes a point at it whose row is the vertex alone.
+  std::vector<std::uint8_t> stays(size_t(level.vertex_count), 0);
+  const ChildOrigins& o = h.origins[0];
+  for (Index c = 0; c < Index(o.kind.size()); ++c) {
+    if (o.kind[c] != OriginKind::Corner || s.offsets[c + 1] - s.offsets[c] != 1) continue;
+    const Index v = level.face(o.parent[c])[o.local[c]];
+    if (s.indices[s.offsets[c]] == v && s.weights[s.offsets[c]] == 1.0) stays[size_t(v)] = 1;
+  }
   const std::string who = name();
   return detail::build_limit_rows(level.vertex_count, level.vertex_count, [&](Index v, detail::LimitRow& row) -> std::string {
     if (level.non_manifold_vertex(v))
@@ -131,8 +140,14 @@ StencilTable DualCentroidLimit::stencils_at(const Level& level, int step) const 
                          "sharpness has decayed, or make it infinitely sharp",
                          who, v);
     // A corner's face corners collapse into one point that stays at the vertex at every level
-    // (docs/features.md, "Creases in dual schemes"): the limit passes through it.
-    if (dual_collapses(level, v)) return row.add(v, 1.0), std::string();
+    // (docs/features.md, "Creases in dual schemes"): the limit passes through it — where the
+    // split does collapse them into a point that stays (mid-edge's makes no point at a vertex).
+    if (dual_collapses(level, v)) {
+      if (!stays[size_t(v)])
+        return fmt::format("{}: vertex {} is a corner, where one step of {} makes no point that stays at the vertex, "
+                           "so its limit point is not known", who, v, scheme_->name);
+      return row.add(v, 1.0), std::string();
+    }
     const int sharp = dual_sharp_edge_count(level, v);
     if (sharp == 1)
       return fmt::format("{}: vertex {} ends a crease (one edge of sharpness >= 1, a dart), where no exact limit "
