@@ -138,3 +138,22 @@ TEST_CASE("dual boundary and crease: Doo-Sabin is C1 at boundary valences 3..7 a
   const SurfaceAnalysis corner = analyse_configuration(*scheme, dual_config(2, true, {}));
   CHECK(!corner.c1);
 }
+
+TEST_CASE("crease analysis: judged by its sides where S is block triangular across the crease") {
+  // Catmull-Clark's crease rules are its boundary rules and no smooth stencil crosses the
+  // crease, so each side is a boundary; modified butterfly's edge stencils reach across it,
+  // so its crease keeps the two-sided verdict.
+  LocalConfig c;
+  c.valence = 4;
+  c.sharp = {0, 2};
+  const SurfaceAnalysis cc = analyse_configuration(*load_scheme("catmull-clark"), c);
+  CHECK(cc.verdict.rfind("C1 on both sides of the crease (sides of 2 and 2 faces", 0) == 0);
+  c.valence = 8;
+  c.sharp = {0, 4};
+  const SurfaceAnalysis cc8 = analyse_configuration(*load_scheme("catmull-clark"), c);
+  CHECK(cc8.verdict.find("the side of 4 faces (boundary valence 5)") != std::string::npos);  // as --boundary finds
+  c.valence = 6;
+  c.sharp = {0, 3};
+  const SurfaceAnalysis mb = analyse_configuration(*load_scheme("modified-butterfly"), c);
+  CHECK(mb.verdict.find("both sides") == std::string::npos);
+}
