@@ -201,6 +201,7 @@ std::string crease_midpoint_mismatch(const Scheme& scheme, const Level& level, c
                            subdiv::quoted(scheme.name), v);
       for (Index i = s.offsets[point]; i < s.offsets[point + 1]; ++i) got[s.indices[i]] += 0.5 * s.weights[i];
     }
+    got[a] += 0.0, got[b] += 0.0;  // both must be there, with 1/2 each
     for (const auto& [source, w] : got) {
       const double want = source == a || source == b ? 0.5 : 0.0;
       if (std::abs(w - want) > 1e-12)
