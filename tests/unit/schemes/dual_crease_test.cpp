@@ -667,3 +667,29 @@ TEST_CASE("dual crease: limit points next to a semi-sharp crease or corner are r
   }
   CHECK(message.find("semi-sharp") != std::string::npos);
 }
+
+TEST_CASE("dual corner: the corner point stays (its row is the corner alone) while its ring doubles every level") {
+  // So a dual corner has no invariant neighbourhood and no stationary local subdivision
+  // matrix: eigenvalue 1 with the corner's own eigenvector is all there is (docs/analysis.md).
+  test::Mesh m = test::torus(8, 6);
+  Level L = m.level();
+  L.vertex_sharpness.assign(size_t(L.vertex_count), 0.f);
+  L.vertex_sharpness[10] = 10.f;
+  RefineOptions options;
+  options.levels = 3;
+  const Hierarchy h = refine(*load_scheme("doo-sabin", {}), L, options);
+  Index corner = 10;
+  int valence = L.valence(corner);
+  CHECK(valence == 4);
+  for (int l = 0; l < 3; ++l) {
+    const StencilTable& s = h.stencils[size_t(l)];
+    Index child = kNone;
+    for (Index c = 0; c + 1 < Index(s.offsets.size()); ++c)
+      if (s.offsets[c + 1] - s.offsets[c] == 1 && s.indices[s.offsets[c]] == corner && s.weights[s.offsets[c]] == 1.0)
+        child = c;
+    REQUIRE(child != kNone);
+    const int next = h.levels[size_t(l) + 1].valence(child);
+    CHECK(next == 2 * valence);  // the F-faces of its faces and the E-faces of its edges
+    corner = child, valence = next;
+  }
+}
