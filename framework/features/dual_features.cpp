@@ -14,7 +14,6 @@ bool dual_collapses(const Level& L, Index v) {
 }
 
 bool dual_needs_feature_topology(const Level& L) {
-  if (!L.manifold()) return false;
   for (Index e = 0; e < Index(L.edge_sharpness.size()); ++e)
     if (!L.edge_on_boundary(e) && L.edge_sharpness[e] >= 1.f) return true;
   for (Index v = 0; v < Index(L.vertex_sharpness.size()); ++v)

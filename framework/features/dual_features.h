@@ -23,9 +23,10 @@ int dual_sharp_edge_count(const Level& L, Index v);
 bool dual_collapses(const Level& L, Index v);
 
 // Whether the split must take the feature topology (refine/dual_crease_topology.h) rather than
-// the plain one: a manifold level with an interior edge of sharpness >= 1 or a vertex of
+// the plain one: a level with an interior edge of sharpness >= 1 or a vertex of
 // sharpness >= 1 that is not a boundary vertex with one face. (Boundaries alone give the same
-// faces either way: the plain split is the feature split without interior features.)
+// faces either way: the plain split is the feature split without interior features.) A
+// non-manifold level takes it too: the feature split skips non-manifold vertices locally.
 bool dual_needs_feature_topology(const Level& L);
 
 }  // namespace subdiv

@@ -10,8 +10,14 @@
 //
 // The masks are read from the scheme's own first-step stencils, so no weights are assumed;
 // dual_centroid_mismatch checks the centroid property on the mesh one step further down.
-// Interior vertices only: a boundary vertex's V-face is open and follows the boundary
-// curve, and no exact mask is known for it: such vertices are refused.
+//
+// Vertices on a crease or boundary (two edges sharp for the dual split, features/
+// dual_features.h) make two points on the crease, the crease curve's at v, joined by a
+// child edge along the crease; the crease rule keeps each crease edge's midpoint (checked
+// the same way), so the nested edges shrink to it: l(v) is the mean of the two points'
+// rows, v's point on the crease curve ((p + 6 v + q) / 8 for Chaikin's, the quadratic
+// B-spline; next to a corner the clamped spline's). Corners are their own limit; a vertex
+// that ends a crease (a dart) and a non-manifold vertex are refused.
 #include <memory>
 #include <string>
 
@@ -32,6 +38,13 @@ private:
   std::shared_ptr<const Scheme> scheme_;
   RefineOptions options_;
 };
+
+// Per parent vertex, the child points one dual step makes on its sharp edges (kNone where
+// it has none): `first` on edge `first_edge`, `second` on the other.
+struct DualCreasePoints {
+  std::vector<Index> first, second, first_edge;
+};
+DualCreasePoints dual_crease_points(const Level& parent, const ChildOrigins& origins);
 
 // For each vertex of h.levels[0], the face of h.levels[1] made around it (its V-face), or
 // kNone. A child vertex belongs to the parent vertex it was made at (a face corner's

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include "framework/util/option_spelling.h"
-#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -21,17 +20,16 @@ void check_valences(const ValenceAnalysisRequest& r) {
 
 std::vector<SurfaceAnalysis> analyse_valences(const ValenceAnalysisRequest& r) {
   check_valences(r);
+  if (r.boundary && r.crease)
+    throw OptionError("a valence analysis is of boundary vertices or of crease vertices: make one request for each");
   const CentreKind centre = analysis_centre(*r.scheme);
-  if (r.boundary && centre != CentreKind::Vertex)
-    throw OptionError(fmt::format("{{boundary_analysis}}: {} is analysed at faces (a dual scheme); boundary "
-                                  "analysis is done for vertex-centred schemes only",
-                                  subdiv::quoted(r.scheme->name)));
   std::vector<SurfaceAnalysis> out;
   for (int n : r.valences) {
     LocalConfig c;
     c.centre = centre;
     c.valence = n;
     c.boundary = r.boundary;
+    if (r.crease) c.sharp = {0, n / 2};
     c.first_step = r.level;
     out.push_back(analyse_configuration(*r.scheme, c, r.options));
   }

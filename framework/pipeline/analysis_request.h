@@ -15,19 +15,22 @@ namespace subdiv {
 struct ValenceAnalysisRequest {
   std::shared_ptr<const Scheme> scheme;
   std::vector<int> valences;
-  // At boundary vertices (n ring edges, n - 1 faces; valence 2 up) instead of interior ones;
-  // for vertex-centred schemes only.
+  // At boundary vertices (n ring edges, n - 1 faces; valence 2 up) instead of interior ones.
+  // A dual scheme is analysed at the face the boundary vertex's faces become.
   bool boundary = false;
   int level = 0;  // the level whose weights a non-stationary scheme is analysed with
   SurfaceAnalysisOptions options;
+  // At crease vertices (n ring edges, infinitely sharp at ring edges 0 and n / 2) instead of
+  // interior ones; a dual scheme at the face of the first side's sector.
+  // (Last, so that the front-ends' positional initialisers stay valid.)
+  bool crease = false;
 };
 
 // Valences analysed at most: the local matrix of valence n has O(n) rows per ring.
 inline constexpr int kMaxAnalysedValence = 64;
 
 // One analysis per valence, in the request's order. Throws OptionError for an empty list, a
-// valence outside 3..64 (2..64 at the boundary), or boundary analysis of a face-centred
-// (dual) scheme. A scheme that fails the analysis at a valence is no error: the reason is in
+// valence outside 3..64 (2..64 at the boundary), or boundary and crease in one request. A scheme that fails the analysis at a valence is no error: the reason is in
 // that analysis's verdict.
 std::vector<SurfaceAnalysis> analyse_valences(const ValenceAnalysisRequest& request);
 

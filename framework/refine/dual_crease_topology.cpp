@@ -88,9 +88,16 @@ Index ring_corner(const Level& L, Index v, Index j) {
 
 // Sector faces of v: ring face j leaves v along ring edge j and arrives along ring edge j + 1
 // (dual_topology.cpp); a sector runs from a sharp ring edge to the next one.
-void add_sector_faces(const Level& L, PointMap& pm, Index v, std::vector<Index>& offsets, std::vector<Index>& verts) {
+// A non-manifold vertex has no CCW ring to cut into sectors: it gets no face (a gap, as in
+// the plain split), while the rest of the level keeps its creases.
+void add_sector_faces(const Level& L, PointMap& pm, Index v, std::vector<Index>& offsets, std::vector<Index>& verts,
+                      Index* skipped) {
   const Index n = L.incident_face_count(v);
   if (n == 0 || pm.collapses(v)) return;
+  if (L.non_manifold_vertex(v)) {
+    ++*skipped;
+    return;
+  }
   const auto ring = L.ring_edges(v);
   const bool boundary = L.on_boundary(v);
   std::vector<Index> cuts;  // ring edges that start a sector
@@ -139,7 +146,7 @@ void tag_child(const Level& L, PointMap& pm, DualFeatureSplit& out) {
       tag(pm.point(c, false), pm.point(next_corner(L, f, c), true), mean(CreaseMethod::Uniform), mean(CreaseMethod::Chaikin));
     }
     for (Index v = 0; v < L.vertex_count; ++v) {
-      if (pm.collapses(v) || L.on_boundary(v)) continue;
+      if (pm.collapses(v) || L.on_boundary(v) || L.non_manifold_vertex(v)) continue;
       Index sharp[2], count = 0;
       for (Index e : L.ring_edges(v))
         if (pm.sharp(e) && count < 2) sharp[count++] = e;
@@ -159,7 +166,8 @@ void tag_child(const Level& L, PointMap& pm, DualFeatureSplit& out) {
 
 }  // namespace
 
-DualFeatureSplit dual_feature_split(const Level& L, bool full) {
+DualFeatureSplit dual_feature_split(const Level& L, bool full, Index* skipped_vertices) {
+  Index skipped = 0;
   PointMap pm(L);
   std::vector<Index> offsets{0}, verts;
   // F-faces.
@@ -184,7 +192,8 @@ DualFeatureSplit dual_feature_split(const Level& L, bool full) {
              {pm.point(next_corner(L, f1, f1b), true), pm.point(f1b, false), pm.point(next_corner(L, f0, f0a), true),
               pm.point(f0a, false)});
   }
-  for (Index v = 0; v < L.vertex_count; ++v) add_sector_faces(L, pm, v, offsets, verts);
+  for (Index v = 0; v < L.vertex_count; ++v) add_sector_faces(L, pm, v, offsets, verts, &skipped);
+  if (skipped_vertices) *skipped_vertices = skipped;
 
   DualFeatureSplit out;
   const Index points = Index(pm.origins.kind.size());

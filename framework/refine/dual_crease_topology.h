@@ -30,7 +30,10 @@ struct DualFeatureSplit {
 };
 
 // With `full`, the whole child level with its sharpness tags; otherwise its faces only.
-DualFeatureSplit dual_feature_split(const Level& parent, bool full);
+// Non-manifold elements are handled locally: a non-manifold edge is sharp (its sides glue
+// as a crease's do), a non-manifold vertex gets no sector face (counted in
+// `skipped_vertices`), so one such vertex does not cost the rest of the level its creases.
+DualFeatureSplit dual_feature_split(const Level& parent, bool full, Index* skipped_vertices = nullptr);
 
 
 }  // namespace subdiv

@@ -55,9 +55,14 @@ ChildOrigins dual_origins(const Level& L, OriginKind kind, Index child_faces) {
 // Interior creases and corners: the sides of each sharp edge glued along their crease
 // points, corners collapsed (refine/dual_crease_topology.h).
 SplitResult feature_result(const Level& L, bool full) {
-  DualFeatureSplit split = dual_feature_split(L, full);
+  Index skipped = 0;
+  DualFeatureSplit split = dual_feature_split(L, full, &skipped);
   SplitResult result{std::move(split.child), std::move(split.origins), true, {}};
   result.averaged_edge_sharpness = std::move(split.averaged_edge_sharpness);
+  if (skipped)
+    result.warning = fmt::format("the dual split made no face for {} non-manifold vertex/vertices (they have no "
+                                 "cycle of faces around them); the surface has a gap there",
+                                 skipped);
   return result;
 }
 

@@ -32,6 +32,7 @@ struct AnalyzeArgs {
   std::vector<std::string> params;
   std::string boundary_mode = "edges-and-corners";
   bool boundary = false;
+  bool crease = false;
   bool details = false;
   int level = 0;
   int max_ring = 5;
@@ -117,7 +118,7 @@ void run_surface(const AnalyzeArgs& a) {
   options.max_ring = a.max_ring;
   options.characteristic_map = true;
   const CentreKind centre = analysis_centre(*scheme);
-  std::vector<SurfaceAnalysis> interior, boundary;
+  std::vector<SurfaceAnalysis> interior, boundary, crease;
   const std::vector<int> valences = parse_valences(a.valence);
   ValenceAnalysisRequest request{scheme, {}, false, a.level, options};
   // Valence 2 exists on boundaries only: with --boundary it is analysed there alone.
@@ -134,15 +135,23 @@ void run_surface(const AnalyzeArgs& a) {
              centre == CentreKind::Face ? "an n-gon face: a dual scheme turns a valence-n vertex into one"
                                         : "a vertex of valence n");
   print_safe("\n{}", surface_table(interior));
-  if (a.boundary && centre == CentreKind::Vertex) {
+  if (a.boundary) {
     request.valences = valences, request.boundary = true;
     boundary = analyse_valences(request);
-    print_safe("\nboundary vertices (n ring edges, n - 1 faces):\n{}", surface_table(boundary));
-  } else if (a.boundary) {
-    print_safe("\n(--boundary: boundary analysis is done for vertex-centred schemes only)\n");
+    print_safe("\nboundary vertices (n ring edges, n - 1 faces{}):\n{}",
+               centre == CentreKind::Face ? "; analysed at the face they become" : "", surface_table(boundary));
+  }
+  if (a.crease) {
+    request.valences.clear(), request.boundary = false, request.crease = true;
+    for (int n : valences)
+      if (n >= 3) request.valences.push_back(n);
+    crease = analyse_valences(request);
+    print_safe("\ncrease vertices (n ring edges, sharp ring edges 0 and n/2{}):\n{}",
+               centre == CentreKind::Face ? "; analysed at the face of the first side's sector" : "",
+               surface_table(crease));
   }
   if (a.details) {
-    for (const auto* list : {&interior, &boundary})
+    for (const auto* list : {&interior, &boundary, &crease})
       for (const auto& r : *list) {
         print_safe("\n");
         for (const auto& line : surface_summary_lines(r)) print_safe("  {}\n", line);
@@ -162,6 +171,10 @@ void run_surface(const AnalyzeArgs& a) {
       j["boundary_analyses"] = nlohmann::json::array();
       for (const auto& r : boundary) j["boundary_analyses"].push_back(surface_json(r));
     }
+    if (!crease.empty()) {
+      j["crease_analyses"] = nlohmann::json::array();
+      for (const auto& r : crease) j["crease_analyses"].push_back(surface_json(r));
+    }
     j["stationary"] = !level_dependent;
     j["level"] = a.level;
     j["parameters"] = nlohmann::json::object();
@@ -173,6 +186,7 @@ void run_surface(const AnalyzeArgs& a) {
   if (!a.vtk_dir.empty()) {
     write_characteristic_maps(a.vtk_dir, scheme->name, interior, "");
     write_characteristic_maps(a.vtk_dir, scheme->name, boundary, "boundary_");
+    write_characteristic_maps(a.vtk_dir, scheme->name, crease, "crease_");
   }
 }
 
@@ -189,6 +203,8 @@ void add_analyze_command(CLI::App& app) {
   cmd->add_option("--svg", args->svg_file, "Write the spectrum (eigenvalue moduli against valence) as an SVG plot");
   add_param_option(cmd, args->params);
   cmd->add_flag("--boundary", args->boundary, "Also analyse boundary vertices of each valence");
+  cmd->add_flag("--crease", args->crease,
+                "Also analyse crease vertices of each valence (infinitely sharp ring edges 0 and n/2)");
   add_boundary_option(cmd, "--boundary-interpolation", args->boundary_mode);
   cmd->add_flag("--details", args->details, "Print every valence's full analysis (eigenvalues, checks, masks)");
   cmd->add_option("--level", args->level, "Level whose weights are analysed (level-dependent schemes)")

@@ -109,7 +109,7 @@ Labelling label(const Level& L, CentreKind kind, Index centre, int start, int ra
 
 std::string LocalConfig::describe() const {
   std::string s;
-  if (centre == CentreKind::Face) return fmt::format("face of size {}", valence);
+  if (centre == CentreKind::Face && !boundary && sharp.empty() && !corner) return fmt::format("face of size {}", valence);
   if (boundary) s = "boundary ";
   if (!sharp.empty()) {
     s += sharp.size() == 1 ? "dart " : sharp.size() == 2 ? "crease " : "corner ";
@@ -121,6 +121,8 @@ std::string LocalConfig::describe() const {
     for (int p : sharp) s += fmt::format(" {}", p);
     s += ")";
   }
+  // A dual scheme is analysed at the face its first sector becomes.
+  if (centre == CentreKind::Face) s += ", its sector's face";
   return s;
 }
 

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <map>
 
+#include "framework/analysis/surface/dual_sector_patch.h"
 #include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -434,7 +435,9 @@ void check_characteristic_map(const AnalysisRun& cx, int K, const Matrix& rp, do
 // ---------------------------------------------------------------------------------------------
 
 void finish_verdict(SurfaceAnalysis& r) {
-  const std::string where = r.config.centre == CentreKind::Face ? fmt::format("faces of size {}", r.config.valence)
+  const bool dual_feature = r.config.centre == CentreKind::Face && (r.config.boundary || !r.config.sharp.empty());
+  const std::string where = dual_feature ? r.config.describe()
+                            : r.config.centre == CentreKind::Face ? fmt::format("faces of size {}", r.config.valence)
                             : r.config.boundary || !r.config.sharp.empty() || r.config.corner
                                 ? r.config.describe()
                                 : fmt::format("valence {}", r.config.valence);
@@ -820,6 +823,80 @@ SurfaceAnalysis analyse_patch(const Scheme& scheme, const Patch& patch, const Lo
   return out;
 }
 
+namespace {
+
+bool two_sided_crease(const LocalConfig& c) { return !c.boundary && !c.corner && c.sharp.size() == 2; }
+
+// Whether S is block triangular with respect to the crease: no point off the crease on one
+// side has weight on a point off the crease on the other. The sides are the components of
+// the patch without its crease vertices (those on an edge of sharpness >= 1).
+bool sides_decoupled(const Patch& p, const SurfaceAnalysis& a) {
+  const Level& L = p.level;
+  std::vector<int> side(size_t(L.vertex_count), -1);  // -1 unvisited, -2 crease
+  for (Index v = 0; v < L.vertex_count; ++v)
+    for (Index e : L.ring_edges(v))
+      if (!L.edge_on_boundary(e) && L.edge_sharp(e) >= 1.f) side[size_t(v)] = -2;
+  int sides = 0;
+  for (Index s0 = 0; s0 < L.vertex_count; ++s0) {
+    if (side[size_t(s0)] != -1) continue;
+    std::vector<Index> stack{s0};
+    side[size_t(s0)] = sides;
+    while (!stack.empty()) {
+      const Index v = stack.back();
+      stack.pop_back();
+      for (Index e : L.ring_edges(v)) {
+        const Index w = L.other_end(e, v);
+        if (side[size_t(w)] == -1) side[size_t(w)] = sides, stack.push_back(w);
+      }
+    }
+    ++sides;
+  }
+  if (sides != 2) return false;
+  for (size_t i = 0; i < a.matrix.size(); ++i)
+    for (size_t j = 0; j < a.matrix.size(); ++j) {
+      const int si = side[size_t(a.label_vertices[i])], sj = side[size_t(a.label_vertices[j])];
+      if (si >= 0 && sj >= 0 && si != sj && std::abs(a.matrix[i][j]) > kWeightZero) return false;
+    }
+  return true;
+}
+
+// A crease cuts the neighbourhood into two sides that, when S is block triangular (checked
+// by sides_decoupled), share only the crease points, refined by the crease curve's rule on
+// their own. Each side is then refined as a surface whose boundary is the crease — exactly
+// so where the scheme's crease rules are its boundary rules — and the smoothness across the
+// crease is each side's boundary analysis (a side of k faces: boundary valence k + 1). The
+// two-sided characteristic map is no test here: its subdominant pair mixes the two sides.
+void judge_crease_by_sides(const Scheme& scheme, const SurfaceAnalysisOptions& options, SurfaceAnalysis& out) {
+  const int first = first_sector_faces(out.config);
+  const int sides[2] = {first, out.config.valence - first};
+  std::string failed;
+  for (int k : sides) {
+    LocalConfig side;
+    side.centre = out.config.centre;
+    side.boundary = true;
+    side.valence = k + 1;
+    side.first_step = out.config.first_step;
+    const SurfaceAnalysis b = analyse_configuration(scheme, side, options);
+    const std::string why = b.verdict.rfind("fails: ", 0) == 0 ? b.verdict.substr(7) : b.verdict;
+    if (!b.c1 && failed.empty()) failed = fmt::format("the side of {} faces ({}): {}", k, b.config.describe(), why);
+  }
+  out.c1 = failed.empty();
+  out.verdict = out.c1 ? fmt::format("C1 on both sides of the crease (sides of {} and {} faces, each as at a boundary); "
+                                     "along it the crease curve's",
+                                     sides[0], sides[1])
+                       : "fails: " + failed;
+}
+
+SurfaceAnalysis analyse_crease_or_other(const Scheme& scheme, const Patch& patch, const LocalConfig& config,
+                                        const SurfaceAnalysisOptions& options) {
+  SurfaceAnalysis out = analyse_patch(scheme, patch, config, options);
+  if (two_sided_crease(config) && out.error.empty() && !out.matrix.empty() && sides_decoupled(patch, out))
+    judge_crease_by_sides(scheme, options, out);
+  return out;
+}
+
+}  // namespace
+
 SurfaceAnalysis analyse_configuration(const Scheme& scheme, const LocalConfig& config,
                                       const SurfaceAnalysisOptions& options) {
   const int rings = options.patch_rings > 0 ? options.patch_rings : options.max_ring + 3;
@@ -827,12 +904,15 @@ SurfaceAnalysis analyse_configuration(const Scheme& scheme, const LocalConfig& c
     if (config.centre == CentreKind::Face) {
       if (analysis_cells(scheme) != PatchCells::Quads)
         throw Error("face-centred analysis needs a scheme for quads");
+      if (config.boundary || !config.sharp.empty() || config.corner)
+        return analyse_crease_or_other(scheme, make_dual_sector_patch(scheme, config, rings, options.features), config,
+                                       options);
       return analyse_patch(scheme, make_face_patch(config.valence, rings), config, options);
     }
     if (analysis_centre(scheme) == CentreKind::Face)
       throw Error(fmt::format("scheme {} is dual: a vertex of valence n becomes an n-gon face; analyse faces",
                               subdiv::quoted(scheme.name)));
-    return analyse_patch(scheme, make_vertex_patch(analysis_cells(scheme), config, rings), config, options);
+    return analyse_crease_or_other(scheme, make_vertex_patch(analysis_cells(scheme), config, rings), config, options);
   } catch (const Error& e) {
     SurfaceAnalysis out;
     out.scheme = scheme.name, out.path = scheme.path, out.config = config;

@@ -383,6 +383,13 @@ TEST_CASE("dual schemes: a control vertex's limit point is its V-face's centroid
   REQUIRE(p.converged);
   for (Index v = 0; v < C.vertex_count; ++v)
     CHECK(dist(doo_sabin_vface_centroid(C, p.control, v), at(cross.positions, v)) < 1e-10 + 1e-14);
-  // A boundary vertex's V-face is open: refused with the vertex named.
-  CHECK_THROWS_WITH_AS(choose("doo-sabin", grid(2, 2)), doctest::Contains("vertex 0 is on the boundary"), Error);
+  // A boundary vertex's V-face is open; its limit is on the boundary's Chaikin curve, the
+  // quadratic B-spline's (p + 6 v + q) / 8 (a boundary vertex with one face is a corner).
+  const Mesh g = grid(2, 2);
+  const LimitChoice b = choose("doo-sabin", g);
+  std::vector<double> got(g.positions.size());
+  b.evaluator->limit_points(g.level(), g.positions, got);
+  CHECK(dist(at(got, 0), at(g.positions, 0)) == 0.0);
+  for (int c = 0; c < 3; ++c)
+    CHECK(got[size_t(3 + c)] == doctest::Approx((g.positions[size_t(c)] + 6 * g.positions[size_t(3 + c)] + g.positions[size_t(6 + c)]) / 8));
 }

@@ -36,7 +36,7 @@ TEST_CASE("one analysis per valence, in the request's order, with Catmull-Clark'
   }
 }
 
-TEST_CASE("valences out of range and boundary analysis of a dual scheme are refused in the front-end's words") {
+TEST_CASE("valences out of range are refused in the front-end's words; dual schemes are analysed at boundaries") {
   ValenceAnalysisRequest r;
   r.scheme = load_scheme("catmull-clark");
   r.valences = {2};
@@ -56,7 +56,10 @@ TEST_CASE("valences out of range and boundary analysis of a dual scheme are refu
   CHECK(analyse_valences(r).size() == 2);  // valence 2 exists at a boundary
 
   r.scheme = load_scheme("doo-sabin");
-  CHECK_THROWS_WITH_AS(analyse_valences(r), doctest::Contains("vertex-centred schemes only"), OptionError);
+  r.valences = {3};
+  CHECK(analyse_valences(r).front().c1);  // at the face the boundary vertex's faces become
+  r.crease = true;
+  CHECK_THROWS_AS(analyse_valences(r), OptionError);  // one kind of vertex per request
 }
 
 }  // namespace

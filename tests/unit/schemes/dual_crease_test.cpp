@@ -325,10 +325,14 @@ TEST_CASE("dual crease: even-degree quad B-splines follow the degree-d B-spline 
   }
 }
 
-TEST_CASE("dual crease: a crease between two corners keeps them and is the open quadratic B-spline through them, "
-          "levels 1-4") {
-  // A 6 x 6 grid, bent, with a zigzag crease from boundary vertex (0, 2) to (6, 4): its ends
-  // have three sharp edges (two boundary ones), so they are corners.
+// A 6 x 6 grid, bent, with a zigzag crease from boundary vertex (0, 2) to (6, 4): its ends
+// have three sharp edges (two boundary ones), so they are corners.
+struct ZigzagGrid {
+  test::Mesh mesh;
+  std::vector<Index> path;
+};
+
+ZigzagGrid zigzag_grid() {
   test::Mesh m = test::grid(6, 6);
   for (Index v = 0; v < m.vertex_count; ++v) {
     const double x = m.positions[3 * v], y = m.positions[3 * v + 1];
@@ -337,8 +341,6 @@ TEST_CASE("dual crease: a crease between two corners keeps them and is the open 
   }
   auto id = [](int i, int j) { return Index(j * 7 + i); };
   const std::vector<Index> path = {id(0, 2), id(1, 2), id(2, 3), id(3, 3), id(4, 3), id(4, 4), id(5, 4), id(6, 4)};
-  Level base = m.level();
-  base.edge_sharpness.assign(size_t(base.edge_count()), 0.f);
   // id(1,2) -> id(2,3) is a diagonal: add it by splitting the quad (1,2)-(2,2)-(2,3)-(1,3).
   test::Mesh g;
   g.vertex_count = m.vertex_count;
@@ -352,6 +354,15 @@ TEST_CASE("dual crease: a crease between two corners keeps them and is the open 
       g.add_face({c[0], c[1], c[2], c[3]});
     }
   }
+  return {g, path};
+}
+
+TEST_CASE("dual crease: a crease between two corners keeps them and is the open quadratic B-spline through them, "
+          "levels 1-4") {
+  const ZigzagGrid z = zigzag_grid();
+  const test::Mesh& g = z.mesh;
+  const std::vector<Index>& path = z.path;
+  Level base;
   base = tagged(g, path, false, 10.f);
   const auto s = load_scheme("doo-sabin", {});
   RefineOptions options;
@@ -509,25 +520,176 @@ TEST_CASE("dual crease: a tagged corner inside a surface stays at every level") 
   }
 }
 
-TEST_CASE("dual crease: limit points are exact at corners and refused, with the vertex, on creases") {
-  // A tagged corner stays at every level (tested above), so it is its own limit point; the
-  // smooth vertices keep their V-face centroids.
+// Cox & de Boor: the degree-2 B-spline with knots t at parameter x (t_k <= x < t_{k+1}).
+P3 quadratic_bspline_at(const std::vector<double>& t, const Polygon& ctrl, double x) {
+  size_t k = 2;
+  while (!(t[k] <= x && x < t[k + 1])) ++k;
+  Polygon d(ctrl.begin() + ptrdiff_t(k) - 2, ctrl.begin() + ptrdiff_t(k) + 1);
+  for (int r = 1; r <= 2; ++r)
+    for (int j = 2; j >= r; --j) {
+      const size_t i = k - 2 + size_t(j);
+      const double a = (x - t[i]) / (t[i + 3 - size_t(r)] - t[i]);
+      for (int c = 0; c < 3; ++c) d[size_t(j)][c] = (1 - a) * d[size_t(j) - 1][c] + a * d[size_t(j)][c];
+    }
+  return d[2];
+}
+
+std::vector<double> limit_points_of(const char* scheme, const Level& L, const std::vector<double>& positions) {
+  const LimitChoice c = select_limit(load_scheme_sequence(scheme, 1, {}), L);
+  std::vector<double> got(positions.size());
+  c.evaluator->limit_points(L, positions, got);
+  return got;
+}
+
+TEST_CASE("dual crease: a tagged corner is its own limit point") {
   test::Mesh m = test::torus(8, 6);
   Level L = m.level();
   L.vertex_sharpness.assign(size_t(L.vertex_count), 0.f);
   L.vertex_sharpness[10] = 10.f;
-  const LimitChoice c = select_limit(load_scheme_sequence("doo-sabin", 1, {}), L);
-  std::vector<double> got(m.positions.size());
-  c.evaluator->limit_points(L, m.positions, got);
+  const auto got = limit_points_of("doo-sabin", L, m.positions);
   for (int i = 0; i < 3; ++i) CHECK(got[30 + i] == m.positions[30 + i]);
-  // On a crease the limit is the crease curve's, not a V-face centroid: refused by name.
+}
+
+TEST_CASE("dual crease: limit points on a crease loop lie on the quadratic B-spline of the crease polygon") {
+  // Chaikin's crease converges to the uniform quadratic B-spline of the crease polygon, whose
+  // point at control point v's parameter (its Greville abscissa, between v's two knots) is
+  // (p + 6 v + q) / 8 (de Boor: the basis functions there are 1/8, 3/4, 1/8).
   const CreasedTorus t = creased_torus();
+  const Level L = tagged(t.mesh, t.loop, true, 10.f);
+  for (const char* scheme : {"doo-sabin", "doo-sabin-centroid"}) {
+    CAPTURE(scheme);
+    const auto got = limit_points_of(scheme, L, t.mesh.positions);
+    const size_t n = t.loop.size();
+    for (size_t i = 0; i < n; ++i) {
+      const Index p = t.loop[(i + n - 1) % n], v = t.loop[i], q = t.loop[(i + 1) % n];
+      for (int c = 0; c < 3; ++c)
+        CHECK(got[size_t(3 * v + c)] == doctest::Approx((t.mesh.positions[size_t(3 * p + c)] + 6 * t.mesh.positions[size_t(3 * v + c)] +
+                                                       t.mesh.positions[size_t(3 * q + c)]) / 8)
+                                            .epsilon(1e-13));
+    }
+    // And refinement converges there: the crease polygon after 14 Chaikin steps passes within
+    // its segment length of each limit point.
+    Polygon fine = points_of(t.loop, t.mesh.positions);
+    for (int l = 0; l < 14; ++l) fine = chaikin_closed(fine);
+    for (Index v : t.loop) {
+      double nearest = 1e9;
+      for (const P3& x : fine) nearest = std::min(nearest, dist(x, {got[size_t(3 * v)], got[size_t(3 * v + 1)], got[size_t(3 * v + 2)]}));
+      CHECK(nearest < 1e-3);
+    }
+  }
+}
+
+TEST_CASE("dual crease: limit points on a crease between corners lie on the clamped quadratic B-spline; "
+          "boundary vertices on the boundary's") {
+  const ZigzagGrid z = zigzag_grid();
+  const Level L = tagged(z.mesh, z.path, false, 10.f);
+  const auto got = limit_points_of("doo-sabin", L, z.mesh.positions);
+  // Clamped knots 0, 0, 0, 1, ..., m - 2, m - 2, m - 2 for m control points (the crease ends
+  // at its corners); control point i sits at its Greville abscissa (t_{i+1} + t_{i+2}) / 2.
+  const Polygon ctrl = points_of(z.path, z.mesh.positions);
+  std::vector<double> knots{0, 0};
+  for (size_t i = 0; i + 1 < ctrl.size(); ++i) knots.push_back(double(i));
+  knots.push_back(knots.back()), knots.push_back(knots.back());
+  for (size_t i = 0; i < ctrl.size(); ++i) {
+    CAPTURE(i);
+    const double x = std::min(0.5 * (knots[i + 1] + knots[i + 2]), knots.back() - 1e-15);
+    const P3 want = quadratic_bspline_at(knots, ctrl, x);
+    const Index v = z.path[i];
+    CHECK(dist({got[size_t(3 * v)], got[size_t(3 * v + 1)], got[size_t(3 * v + 2)]}, want) < 1e-12);
+  }
+  // A boundary vertex with two faces (the grid's bottom row, away from the corners) follows
+  // the boundary's Chaikin curve: (p + 6 v + q) / 8.
+  for (Index v : {Index(2), Index(3), Index(4)})
+    for (int c = 0; c < 3; ++c)
+      CHECK(got[size_t(3 * v + c)] ==
+            doctest::Approx((z.mesh.positions[size_t(3 * (v - 1) + c)] + 6 * z.mesh.positions[size_t(3 * v + c)] +
+                             z.mesh.positions[size_t(3 * (v + 1) + c)]) / 8)
+                .epsilon(1e-13));
+}
+
+TEST_CASE("dual crease: a vertex ending a crease (a dart) is refused by name") {
+  const CreasedTorus t = creased_torus();
+  const std::vector<Index> open(t.loop.begin(), t.loop.begin() + 3);
   std::string message;
   try {
-    (void)select_limit(load_scheme_sequence("doo-sabin", 1, {}), tagged(t.mesh, t.loop, true, 10.f));
+    (void)select_limit(load_scheme_sequence("doo-sabin", 1, {}), tagged(t.mesh, open, false, 10.f));
   } catch (const Error& e) {
     message = e.what();
   }
-  CHECK(message.find("lies on a crease") != std::string::npos);
+  CHECK(message.find("ends a crease") != std::string::npos);
   CHECK(message.find("vertex") != std::string::npos);
+}
+
+TEST_CASE("dual crease: one non-manifold vertex elsewhere leaves the crease Chaikin's refinement, the vertex a gap") {
+  // A triangle touching the creased torus at one vertex, away from the crease loop (j = 3),
+  // makes that vertex non-manifold (two fans). The feature split skips it locally; before,
+  // the whole level fell back to the plain split and lost every crease.
+  CreasedTorus t = creased_torus();
+  const Index pinch = 3 * 8 + 4;  // (i, j) = (4, 3)
+  const Index a = t.mesh.vertex_count, b = a + 1;
+  for (int k = 0; k < 2; ++k)
+    for (int c = 0; c < 3; ++c) t.mesh.positions.push_back(t.mesh.positions[size_t(3 * pinch + c)] + (c == 2 ? 0.5 : 0.1 * (k + 1)));
+  t.mesh.vertex_count += 2;
+  t.mesh.add_face({pinch, a, b});
+  const Level base = tagged(t.mesh, t.loop, true, 10.f);
+  REQUIRE(base.non_manifold_vertex(pinch));
+  const auto s = load_scheme("doo-sabin", {});
+  RefineOptions options;
+  options.levels = 3;
+  const Hierarchy h = refine(*s, base, options);
+  Polygon expected = points_of(t.loop, t.mesh.positions);
+  for (int l = 1; l <= 3; ++l) {
+    CAPTURE(l);
+    expected = chaikin_closed(expected);
+    const auto pos = interpolate(h, l, t.mesh.positions, 3);
+    check_same_closed_polygon(points_of(crease_chain(h.levels[size_t(l)], kNone), pos), expected, 1e-12);
+  }
+}
+
+TEST_CASE("dual crease: limit points next to a semi-sharp crease or corner are refused (they round off)") {
+  const CreasedTorus t = creased_torus();
+  std::string message;
+  try {
+    (void)select_limit(load_scheme_sequence("doo-sabin", 1, {}), tagged(t.mesh, t.loop, true, 2.5f));
+  } catch (const Error& e) {
+    message = e.what();
+  }
+  CHECK(message.find("semi-sharp") != std::string::npos);
+  test::Mesh m = test::torus(8, 6);
+  Level L = m.level();
+  L.vertex_sharpness.assign(size_t(L.vertex_count), 0.f);
+  L.vertex_sharpness[10] = 1.5f;
+  message.clear();
+  try {
+    (void)select_limit(load_scheme_sequence("doo-sabin", 1, {}), L);
+  } catch (const Error& e) {
+    message = e.what();
+  }
+  CHECK(message.find("semi-sharp") != std::string::npos);
+}
+
+TEST_CASE("dual corner: the corner point stays (its row is the corner alone) while its ring doubles every level") {
+  // So a dual corner has no invariant neighbourhood and no stationary local subdivision
+  // matrix: eigenvalue 1 with the corner's own eigenvector is all there is (docs/analysis.md).
+  test::Mesh m = test::torus(8, 6);
+  Level L = m.level();
+  L.vertex_sharpness.assign(size_t(L.vertex_count), 0.f);
+  L.vertex_sharpness[10] = 10.f;
+  RefineOptions options;
+  options.levels = 3;
+  const Hierarchy h = refine(*load_scheme("doo-sabin", {}), L, options);
+  Index corner = 10;
+  int valence = L.valence(corner);
+  CHECK(valence == 4);
+  for (int l = 0; l < 3; ++l) {
+    const StencilTable& s = h.stencils[size_t(l)];
+    Index child = kNone;
+    for (Index c = 0; c + 1 < Index(s.offsets.size()); ++c)
+      if (s.offsets[c + 1] - s.offsets[c] == 1 && s.indices[s.offsets[c]] == corner && s.weights[s.offsets[c]] == 1.0)
+        child = c;
+    REQUIRE(child != kNone);
+    const int next = h.levels[size_t(l) + 1].valence(child);
+    CHECK(next == 2 * valence);  // the F-faces of its faces and the E-faces of its edges
+    corner = child, valence = next;
+  }
 }
