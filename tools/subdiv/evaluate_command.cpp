@@ -14,6 +14,7 @@
 #include "framework/io/mesh_read.h"
 #include "framework/pipeline/adaptive_request.h"
 #include "framework/pipeline/approximation_request.h"
+#include "framework/pipeline/level_distance.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/pipeline/limit_mesh.h"
 #include "framework/pipeline/evaluate_request.h"
@@ -41,6 +42,7 @@ struct EvaluateArgs {
   int derivatives = 1;
   int samples = 0;
   int adaptive = -1;  // --adaptive L; < 0: not given
+  int level_distance = -1;  // --level-distance L; < 0: not given
   bool limit = false;
   std::string approximate, bezier_net;  // --approximate bezier [--bezier-net OUT.vtu]
   int threads = 0;
@@ -148,10 +150,13 @@ void run_approximation(const EvaluateArgs& a, Progress& progress) {
 }
 
 void run(const EvaluateArgs& a) {
-  const int modes = int(!a.at.empty()) + int(a.samples > 0) + int(a.adaptive >= 0);
+  const int modes = int(!a.at.empty()) + int(a.samples > 0) + int(a.adaptive >= 0) + int(a.level_distance >= 0);
   if (modes != 1)
-    throw Error("give one of --at POINTS.csv (points at given parameters), --samples N (a mesh of the surface) or "
-                "--adaptive L (a mesh refined where the surface is irregular)");
+    throw Error("give one of --at POINTS.csv (points at given parameters), --samples N (a mesh of the surface), "
+                "--adaptive L (a mesh refined where the surface is irregular) or --level-distance L (level L's "
+                "vertices on the limit, with their distance to it)");
+  if (a.level_distance >= 0 && !a.approximate.empty())
+    throw Error("--approximate bezier goes with --samples N or --at POINTS.csv, not --level-distance");
   if (a.limit && a.adaptive < 0) throw Error("--limit goes with --adaptive L");
   if (!a.approximate.empty() && a.adaptive >= 0)
     throw Error("--approximate bezier goes with --samples N or --at POINTS.csv, not --adaptive");
@@ -159,12 +164,19 @@ void run(const EvaluateArgs& a) {
   const std::string ext = lowercase_extension(a.output);
   if (!a.at.empty() && ext != ".csv")
     throw Error(fmt::format("-o {}: --at writes .csv (face,u,v,x,y,z[,du_*,dv_*[,duu_*,duv_*,dvv_*]])", subdiv::quoted(a.output)));
-  if ((a.samples > 0 || a.adaptive >= 0) && ext == ".csv")
-    throw Error(fmt::format("-o {}: --samples and --adaptive write a mesh (.vtp, .obj, .ply, .off, .stl)", subdiv::quoted(a.output)));
+  if ((a.samples > 0 || a.adaptive >= 0 || a.level_distance >= 0) && ext == ".csv")
+    throw Error(fmt::format("-o {}: --samples, --adaptive and --level-distance write a mesh (.vtp, .obj, .ply, .off, .stl)",
+                            subdiv::quoted(a.output)));
   const int threads = a.threads > 0 ? a.threads : int(tbb::this_task_arena::max_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
   Progress progress;
   if (!a.approximate.empty()) return run_approximation(a, progress);
+  if (a.level_distance >= 0) {
+    const LevelDistance d = level_distance(evaluate_request(a, progress), a.level_distance);
+    fmt::print("subdiv: {}\n", level_distance_summary(d));
+    write_with_bar(a.output, d.mesh, progress);
+    return;
+  }
   if (a.adaptive >= 0) {  // the same as subdiv refine --adaptive L (adaptive_refine_option.cpp)
     AdaptiveResult r = refine_adaptive_request(adaptive_request_from(evaluate_request(a, progress), a.adaptive, 0, a.limit));
     for (const std::string& w : r.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
@@ -225,6 +237,11 @@ void add_evaluate_command(CLI::App& app) {
                   "vertices along their edges), with cell arrays face_level and base_face")
       ->check(CLI::Range(0, 12));
   cmd->add_flag("--limit", args->limit, "With --adaptive: every vertex on the limit surface");
+  cmd->add_option("--level-distance", args->level_distance,
+                  "Instead of --at: uniform level L's vertices moved onto the limit surface (at their own (face, u, "
+                  "v)), with the point array level_distance (how far level L is from the limit there) and the "
+                  "largest and mean distance printed")
+      ->check(CLI::Range(0, 12));
   cmd->add_option("--approximate", args->approximate,
                   "bezier: instead of the exact limit, Loop & Schaefer's (2008) bicubic patches, one per quad of a "
                   "closed uncreased quad mesh (exact where every valence is 4), normals from their tangent patches; "
