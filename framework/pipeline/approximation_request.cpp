@@ -52,13 +52,13 @@ DataArray index_array(const char* name, const std::vector<Index>& indices) {
 
 }  // namespace
 
-std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared, const std::string& scheme_text) {
+std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared) {
   const std::string why = bezier_approximation_unsupported(prepared.scheme);
   if (!why.empty())
     throw Error(fmt::format("--approximate bezier: scheme {} cannot be approximated by Loop & Schaefer's bicubic "
                             "patches: {}",
                             prepared.scheme_label, why));
-  if (scheme_text.find(':') != std::string::npos && scheme_text.find(',') != std::string::npos)
+  if (prepared.sequence_head)
     throw Error("--approximate bezier: a sequence's limit is not its base mesh's Catmull-Clark-like surface, which "
                 "the patches' masks approximate; refine the head first (subdiv refine) and approximate that mesh");
   if (!prepared.weights.empty())

@@ -15,7 +15,7 @@ namespace subdiv {
 // the scheme (bezier_approximation_unsupported), a sequence, rational weights, creases,
 // corners or holes (the masks are those of smooth interior vertices), a face that is not a
 // quad or a boundary (naming the face).
-std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared, const std::string& scheme_text);
+std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared);
 
 // Distances from the approximation to the exact limit.
 struct ApproximationDistances {

@@ -126,7 +126,7 @@ void run_approximation(const EvaluateArgs& a, Progress& progress) {
                             subdiv::quoted(a.bezier_net)));
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a, progress));
   for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
-  const std::vector<BezierPatch> patches = approximation_patches(prepared, a.scheme);
+  const std::vector<BezierPatch> patches = approximation_patches(prepared);
   ApproximationDistances distances;
   if (a.samples > 0) {
     MeshData mesh = approximated_limit_mesh(prepared, patches, a.samples, distances);

@@ -141,7 +141,7 @@ EdgeSides compare_edges(const Level& level, const std::vector<BezierPatch>& patc
 
 TEST_CASE("where every valence is 4 the patches are the exact limit (the bicubic B-spline)") {
   const PreparedEvaluation p = prepared(test::torus(6, 5));
-  const std::vector<BezierPatch> patches = approximation_patches(p, "catmull-clark");
+  const std::vector<BezierPatch> patches = approximation_patches(p);
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(0, 1);
   std::vector<Index> faces;
@@ -167,7 +167,7 @@ TEST_CASE("where every valence is 4 the patches are the exact limit (the bicubic
 TEST_CASE("patches meet with C0, and the tangent patches' normals are continuous where the geometry's are not") {
   for (const test::Mesh& m : {test::cube(), valences_3_to_5(), valences_3_to_6()}) {
     const PreparedEvaluation p = prepared(m);
-    const std::vector<BezierPatch> patches = approximation_patches(p, "catmull-clark");
+    const std::vector<BezierPatch> patches = approximation_patches(p);
     const EdgeSides e = compare_edges(p.surface->base(), patches);
     CHECK_FALSE(e.control_points_differ);  // the shared boundary curve, computed alike from both sides
     CHECK(e.largest_position < 1e-14);     // evaluated from both sides: round-off only
@@ -179,7 +179,7 @@ TEST_CASE("patches meet with C0, and the tangent patches' normals are continuous
 TEST_CASE("the tangent patches' normal at an extraordinary vertex is the exact limit normal") {
   for (const test::Mesh& m : {test::cube(), valences_3_to_5(), valences_3_to_6()}) {
     const PreparedEvaluation p = prepared(m);
-    const std::vector<BezierPatch> patches = approximation_patches(p, "catmull-clark");
+    const std::vector<BezierPatch> patches = approximation_patches(p);
     const Level& base = p.surface->base();
     double worst = 0;
     for (Index f = 0; f < base.face_count(); ++f) {
@@ -201,7 +201,7 @@ TEST_CASE("the distance to the exact limit: 0 on regular faces, positive next to
   // Split twice: faces away from the extraordinary vertices are regular.
   const test::Mesh m = quad_split(valences_3_to_6());
   const PreparedEvaluation p = prepared(m);
-  const std::vector<BezierPatch> patches = approximation_patches(p, "catmull-clark");
+  const std::vector<BezierPatch> patches = approximation_patches(p);
   ApproximationDistances d;
   (void)approximated_limit_mesh(p, patches, 6, d);
   const Level& base = p.surface->base();
@@ -235,7 +235,7 @@ TEST_CASE("the distance to the exact limit: 0 on regular faces, positive next to
   finer.corners = h.levels[1].face_vertices;
   const PreparedEvaluation q = prepared(finer);
   ApproximationDistances e;
-  (void)approximated_limit_mesh(q, approximation_patches(q, "catmull-clark"), 6, e);
+  (void)approximated_limit_mesh(q, approximation_patches(q), 6, e);
   MESSAGE("largest distance ", d.largest, " -> ", e.largest, ", mean ", d.mean, " -> ", e.mean);
   CHECK(e.largest < d.largest);
   CHECK(e.mean < 0.5 * d.mean);
@@ -249,8 +249,8 @@ TEST_CASE("schemes whose regular patch is not the bicubic B-spline are refused w
   CHECK(bezier_approximation_unsupported(load_scheme("bilinear")).find("not the bicubic B-spline") != std::string::npos);
   CHECK(bezier_approximation_unsupported(load_scheme("loop")).find("triangles") != std::string::npos);
   const PreparedEvaluation open = prepared(test::grid(4, 4));
-  CHECK_THROWS_WITH_AS(approximation_patches(open, "catmull-clark"), doctest::Contains("boundary edge"), Error);
+  CHECK_THROWS_WITH_AS(approximation_patches(open), doctest::Contains("boundary edge"), Error);
   const PreparedEvaluation pyramid = prepared(test::pyramid());
-  CHECK_THROWS_WITH_AS(approximation_patches(pyramid, "catmull-clark"), doctest::Contains("has 3 sides"), Error);
+  CHECK_THROWS_WITH_AS(approximation_patches(pyramid), doctest::Contains("has 3 sides"), Error);
   (void)torus;
 }

@@ -42,7 +42,7 @@ TEST_CASE("subdiv evaluate --approximate bezier --samples writes the patches, th
                                   (dir / "out.vtp").string() + " --bezier-net " + (dir / "net.vtu").string());
   REQUIRE_MESSAGE(r.exit_code == 0, r.output);
   const PreparedEvaluation p = cube();
-  const std::vector<BezierPatch> patches = approximation_patches(p, "catmull-clark");
+  const std::vector<BezierPatch> patches = approximation_patches(p);
   ApproximationDistances d;
   (void)approximated_limit_mesh(p, patches, 4, d);
   CHECK(r.output.find(approximation_summary(d)) != std::string::npos);
@@ -102,7 +102,7 @@ TEST_CASE("subdiv evaluate --approximate bezier --at writes points, normals and 
   std::getline(in, header);
   CHECK(header == "face,u,v,x,y,z,nx,ny,nz,limit_distance");
   const PreparedEvaluation p = cube();
-  const std::vector<BezierPatch> patches = approximation_patches(p, "catmull-clark");
+  const std::vector<BezierPatch> patches = approximation_patches(p);
   const ApproximatedPoints a = approximate_points(p, patches, std::vector<Index>{0, 4}, std::vector<double>{0.3, 0.2, 0.5, 0.125});
   for (size_t i = 0; i < 2; ++i) {
     REQUIRE(std::getline(in, line));
@@ -126,6 +126,7 @@ TEST_CASE("subdiv evaluate --approximate bezier refuses what the patches do not 
   test::check_refused(base + " -s loop", dir / "a.vtp", "its split makes triangles");
   test::check_refused(base + " -s doo-sabin", dir / "b.vtp", "not the bicubic B-spline");
   test::check_refused(base + " -s bilinear", dir / "c.vtp", "not the bicubic B-spline");
+  test::check_refused(base + " -s catmull-clark:1,catmull-clark", dir / "s.vtp", "a sequence's limit");
   test::check_refused("evaluate " + test::source_path("examples/meshes/pyramid.obj") + " --approximate bezier --samples 4",
                       dir / "d.vtp", "has 3 sides");
   test::check_refused("evaluate " + test::source_path("examples/meshes/plane-with-hole.obj") +
