@@ -32,11 +32,12 @@ public:
                                   "inconsistently oriented edge); the masks need a closed manifold quad mesh",
                                   f, vertex(f, k), vertex(f, k + 1)));
     }
-    for (const auto& [k, fc] : edge_)
-      if (!edge_.contains(key(Index(k & 0xffffffffu), Index(k >> 32))))
-        throw Error(fmt::format("face {}: its edge {}-{} is a boundary edge; Loop & Schaefer's masks are those of "
-                                "interior vertices (a closed mesh)",
-                                fc.first, Index(k >> 32), Index(k & 0xffffffffu)));
+    for (Index f = 0; f + 1 < Index(level.face_offsets.size()); ++f)  // the first boundary edge in face order
+      for (int k = 0; k < 4; ++k)
+        if (!edge_.contains(key(vertex(f, k + 1), vertex(f, k))))
+          throw Error(fmt::format("face {}: its edge {}-{} is a boundary edge; Loop & Schaefer's masks are those of "
+                                  "interior vertices (a closed mesh)",
+                                  f, vertex(f, k), vertex(f, k + 1)));
   }
 
   Index vertex(Index f, int k) const {
