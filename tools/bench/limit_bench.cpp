@@ -139,6 +139,8 @@ void run_alternating(const Mesh& m, int points, int rounds) {
   const subdiv::LimitSurface ours(subdiv::load_scheme("catmull-clark"), subdiv::build_level(m.vertices, offsets, corners));
   for (int f = 0; f < faces; ++f) ours.evaluate(f, 0.3, 0.2, m.xyz, 3);
   const auto t1 = Clock::now();
+  std::printf("%s, %d faces: our preparation %.3g s\n", m.name, faces, seconds(t0, t1));
+  std::fflush(stdout);
   Far::TopologyDescriptor desc;
   desc.numVertices = m.vertices;
   desc.numFaces = faces;
@@ -270,9 +272,12 @@ int main(int argc, char** argv) {
   // subdiv-limit-bench [points] [order]: order 1 (default) position and first derivatives,
   // 2 also the second derivatives.
   if (argc > 1 && std::strcmp(argv[1], "issue") == 0) {
+    // subdiv-limit-bench issue [points] [n]: the n x n torus (1000: 1M faces) and the split
+    // triangulated (0.4 n) x (0.4 n) torus (0.96 n^2 quads).
     const int points = argc > 2 ? std::atoi(argv[2]) : 1000000;
-    run_alternating(torus(1000, 1000), points, 4);
-    run_alternating(split_triangulated_torus(400, 400), points, 4);
+    const int n = argc > 3 ? std::atoi(argv[3]) : 1000;
+    run_alternating(torus(n, n), points, 4);
+    run_alternating(split_triangulated_torus(2 * n / 5, 2 * n / 5), points, 4);
     return 0;
   }
   const int points = argc > 1 ? std::atoi(argv[1]) : 20000;
