@@ -59,8 +59,8 @@ std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepare
                             "patches: {}",
                             prepared.scheme_label, why));
   if (prepared.sequence_head)
-    throw Error("--approximate bezier: a sequence's limit is not its base mesh's Catmull-Clark-like surface, which "
-                "the patches' masks approximate; refine the head first (subdiv refine) and approximate that mesh");
+    throw Error("--approximate bezier: a sequence's limit is its tail's over the mesh its head makes, while the "
+                "patches' masks read the base mesh; refine the head first (subdiv refine) and approximate that mesh");
   if (!prepared.weights.empty())
     throw Error("--approximate bezier: the mesh has rational weights; the patches are polynomial (drop the weights)");
   if (!prepared.mesh.creases.empty() || !prepared.mesh.corners.empty() || !prepared.mesh.holes.empty() ||
