@@ -219,6 +219,7 @@ PreparedEvaluation prepare_evaluation(EvaluateRequest request) {
   for (const auto& scheme : p.sequence.schemes)
     if (!p.sequence.runs.empty() && scheme.get() == p.sequence.runs.back().scheme) out.scheme = scheme;
   out.scheme_label = std::move(p.scheme_label);
+  out.sequence_head = p.sequence.runs.size() > 1;
   out.mesh = std::move(p.mesh);
   if (p.rational)
     for (const DataArray& a : out.mesh.point_data)

@@ -51,6 +51,7 @@ struct PreparedEvaluation {
   std::vector<Index> request_vertex;  // per vertex of `mesh`: its number in the request's mesh
   Index request_vertex_count = 0;
   std::shared_ptr<const LimitSurface> surface;
+  bool sequence_head = false;  // a sequence "A:k,B": B's limit over the mesh A's k levels make
   // Rational weights (rational_weights.h), per vertex of `mesh`; empty when the mesh has
   // none or all are 1. Positions are then evaluated as (w·p, w) and projected.
   std::vector<double> weights;

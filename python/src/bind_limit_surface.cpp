@@ -5,6 +5,7 @@
 #include <fmt/ranges.h>
 
 #include "bindings.h"
+#include "framework/pipeline/approximation_request.h"
 #include "framework/pipeline/rational_weights.h"
 #include "framework/util/quoted_text.h"
 
@@ -154,6 +155,31 @@ py::dict tessellate(const LimitSurfaceHandle& h, int samples, int threads) {
   return d;
 }
 
+// Loop & Schaefer's bicubic patches tessellated as `subdiv evaluate --approximate bezier
+// --samples N` writes them (pipeline/approximation_request.h), with their distances to the
+// exact limit.
+py::dict approximate_bezier(const LimitSurfaceHandle& h, int samples, int threads) {
+  subdiv::MeshData m;
+  subdiv::ApproximationDistances d;
+  {
+    py::gil_scoped_release unlocked;
+    const subdiv::ThreadLimit limit(threads);
+    m = subdiv::approximated_limit_mesh(*h.prepared, subdiv::approximation_patches(*h.prepared), samples, d);
+  }
+  std::vector<subdiv::DataArray> point_data = std::move(m.point_data), cell_data = std::move(m.cell_data);
+  m.point_data.clear(), m.cell_data.clear();
+  py::dict out = mesh_to_python(std::move(m));
+  out["point_roles"] = roles_to_python(point_data);
+  out["cell_roles"] = roles_to_python(cell_data);
+  out["point_data"] = data_arrays_to_python(std::move(point_data));
+  out["cell_data"] = data_arrays_to_python(std::move(cell_data));
+  out["face_varying"] = py::list();
+  out["largest"] = d.largest;
+  out["mean"] = d.mean;
+  out["largest_face"] = d.largest_face;
+  return out;
+}
+
 void bind_limit_surface(py::module_& m) {
   auto surface = py::class_<LimitSurfaceHandle>(m, "_LimitSurface");
   m.def("_prepare_limit_surface", &prepare, py::arg("mesh"), py::arg("scheme"), py::arg("params"),
@@ -172,6 +198,7 @@ void bind_limit_surface(py::module_& m) {
            py::arg("channels"), py::arg("threads"))
       .def("stencils", &stencils, py::arg("faces"), py::arg("uv"), py::arg("derivatives"), py::arg("threads"))
       .def("tessellate", &tessellate, py::arg("samples"), py::arg("threads"))
+      .def("approximate_bezier", &approximate_bezier, py::arg("samples"), py::arg("threads"))
       .def_property_readonly("scheme_label", [](const LimitSurfaceHandle& h) { return h.prepared->scheme_label; })
       .def_property_readonly("triangles", [](const LimitSurfaceHandle& h) { return h.prepared->surface->triangles(); })
       .def_property_readonly("vertex_count",

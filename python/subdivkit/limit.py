@@ -206,6 +206,21 @@ class LimitSurface:
                                  cell_data=_data_shapes_like(r["cell_data"], {}), face_varying=r["face_varying"],
                                  point_roles=r["point_roles"], cell_roles=r["cell_roles"])
 
+    def approximate_bezier(self, samples=4, *, threads=0):
+        """Loop & Schaefer's (2008) bicubic patches tessellated, as ``subdiv evaluate
+        --approximate bezier --samples N`` writes them (docs/limit.md).
+
+        One patch per quad of a closed quad mesh without creases, for a scheme whose limit over
+        regular quads is the bicubic B-spline (else subdivkit.Error says why); exact where every
+        valence is 4. point_data: "Normals" (of the tangent patches: continuous across edges),
+        "base_face", "uv", "limit_distance" (to the exact limit at the same (face, u, v));
+        cell_data: "base_face", "limit_distance" (the largest over the base face's samples).
+        """
+        r = self._prepared.approximate_bezier(int(samples), int(threads))
+        return Mesh._from_arrays(r, name=self.name, point_data=_data_shapes_like(r["point_data"], {}),
+                                 cell_data=_data_shapes_like(r["cell_data"], {}), face_varying=r["face_varying"],
+                                 point_roles=r["point_roles"], cell_roles=r["cell_roles"])
+
     def stencils(self, faces, uv, derivatives=1, *, threads=0):
         """The same points as weights over the control points: a LimitStencils of
         scipy.sparse CSR matrices (needs SciPy), ``W.points @ P == evaluate(..., points=P).points``

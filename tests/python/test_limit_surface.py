@@ -215,3 +215,24 @@ def test_tessellate_gives_the_closed_sampled_limit_with_its_normals_and_uvs():
     assert corners.shape == (tube.face_indices.shape[0],) and len(values) > tube.n_points
     with pytest.raises(sk.Error, match="use an even N"):
         sk.LimitSurface(sk.read_mesh(str(MESHES / "pyramid.obj")), "catmull-clark").tessellate(3)
+
+
+def test_approximate_bezier_is_the_command_line_mesh_and_exact_where_every_valence_is_4(tmp_path):
+    """LimitSurface.approximate_bezier(N) is `subdiv evaluate --approximate bezier --samples N`'s
+    mesh (one pipeline request); on a regular torus the patches are the exact limit; a
+    triangle scheme is refused with the reason."""
+    S = sk.LimitSurface(cube(), "catmull-clark")
+    a = S.approximate_bezier(4)
+    out = tmp_path / "a.obj"
+    run_cli("evaluate", MESHES / "cube.obj", "--approximate", "bezier", "--samples", "4", "-o", out)
+    written = sk.read_mesh(str(out))
+    assert np.allclose(written.points, a.points, rtol=0, atol=1e-12)
+    d = a.cell_data["limit_distance"]
+    assert d.min() > 1e-4  # every face of the cube touches a valence-3 corner
+    base = a.cell_data["base_face"]
+    assert all(np.all(d[base == f] == d[base == f][0]) for f in range(6))  # one value per base face
+    torus = sk.read_mesh(str(MESHES / "torus-quads.obj"))
+    t = sk.LimitSurface(torus, "catmull-clark").approximate_bezier(3)
+    assert t.point_data["limit_distance"].max() < 1e-12
+    with pytest.raises(sk.Error, match="triangles"):
+        sk.LimitSurface(cube(), "loop").approximate_bezier(2)

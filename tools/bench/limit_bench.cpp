@@ -5,11 +5,16 @@
 // numbers are in docs/limit.md.
 //
 //   subdiv-limit-bench [points]        (run it under `taskset -c 0` for one core)
+//   subdiv-limit-bench issue [points]  issue 29's scenario: 1M random points (by default) on
+//                                      the 1M-face torus and on a 960k-quad mesh with 480k
+//                                      extraordinary vertices, in alternating rounds
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -65,6 +70,134 @@ Mesh cube() {
   m.sizes.assign(6, 4);
   m.corners = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
   return m;
+}
+
+// A triangulated nu x nv torus with every triangle split into three quads at its centroid
+// (and edge midpoints): the centroids have valence 3, the torus's vertices valence 6 — an
+// extraordinary vertex in every quad.
+Mesh split_triangulated_torus(int nu, int nv) {
+  const Mesh t = torus(nu, nv, true);
+  Mesh m;
+  m.name = "Catmull-Clark, triangulated torus split into quads (valences 3 and 6)";
+  m.xyz = t.xyz;
+  m.vertices = t.vertices;
+  std::vector<std::array<int, 3>> mid_key;
+  std::vector<int> mid_id;
+  auto point = [&](double x, double y, double z) {
+    m.xyz.insert(m.xyz.end(), {x, y, z});
+    return m.vertices++;
+  };
+  // Edge midpoints, found through a sorted (a, b) -> id table built first.
+  std::vector<std::pair<std::pair<int, int>, int>> edges;
+  for (size_t f = 0; f < t.sizes.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t.corners[3 * f + size_t(k)], b = t.corners[3 * f + size_t((k + 1) % 3)];
+      edges.push_back({{std::min(a, b), std::max(a, b)}, -1});
+    }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
+              edges.end());
+  for (auto& e : edges) {
+    const int a = e.first.first, b = e.first.second;
+    e.second = point((t.xyz[3 * size_t(a)] + t.xyz[3 * size_t(b)]) / 2, (t.xyz[3 * size_t(a) + 1] + t.xyz[3 * size_t(b) + 1]) / 2,
+                     (t.xyz[3 * size_t(a) + 2] + t.xyz[3 * size_t(b) + 2]) / 2);
+  }
+  auto mid = [&](int a, int b) {
+    const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
+    return std::lower_bound(edges.begin(), edges.end(), std::pair{key, -1})->second;
+  };
+  for (size_t f = 0; f < t.sizes.size(); ++f) {
+    const int* c = &t.corners[3 * f];
+    double x[3] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k)
+      for (int d = 0; d < 3; ++d) x[d] += t.xyz[3 * size_t(c[k]) + size_t(d)] / 3;
+    const int centre = point(x[0], x[1], x[2]);
+    for (int k = 0; k < 3; ++k) {
+      m.sizes.push_back(4);
+      m.corners.insert(m.corners.end(), {c[k], mid(c[k], c[(k + 1) % 3]), centre, mid(c[(k + 2) % 3], c[k])});
+    }
+  }
+  return m;
+}
+
+double load_average() {
+  double l[1] = {0};
+  return getloadavg(l, 1) == 1 ? l[0] : -1;
+}
+
+// Issue 29's scenario: preparation (every face's first point) and `points` random points,
+// position and first derivatives, ours and Bfr in alternating rounds of the same points'
+// quarters, so that a change of load hits both; the largest difference between the two.
+void run_alternating(const Mesh& m, int points, int rounds) {
+  using namespace OpenSubdiv;
+  const int faces = int(m.sizes.size());
+  std::vector<subdiv::Index> offsets{0};
+  for (int s : m.sizes) offsets.push_back(offsets.back() + s);
+  const std::vector<subdiv::Index> corners(m.corners.begin(), m.corners.end());
+  const double load_before = load_average();
+  const auto t0 = Clock::now();
+  const subdiv::LimitSurface ours(subdiv::load_scheme("catmull-clark"), subdiv::build_level(m.vertices, offsets, corners));
+  for (int f = 0; f < faces; ++f) ours.evaluate(f, 0.3, 0.2, m.xyz, 3);
+  const auto t1 = Clock::now();
+  std::printf("%s, %d faces: our preparation %.3g s\n", m.name, faces, seconds(t0, t1));
+  std::fflush(stdout);
+  Far::TopologyDescriptor desc;
+  desc.numVertices = m.vertices;
+  desc.numFaces = faces;
+  desc.numVertsPerFace = m.sizes.data();
+  desc.vertIndicesPerFace = m.corners.data();
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  Sdc::Options sdc;
+  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+  Far::TopologyRefiner* refiner = Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc));
+  Bfr::RefinerSurfaceFactory<> factory(*refiner);
+  Bfr::Surface<double> surface;
+  Bfr::Surface<double>::PointDescriptor d(3);
+  std::vector<double> patch;
+  auto bfr = [&](int f, double u, double v, double* p, double* du, double* dv) {
+    factory.InitVertexSurface(f, &surface);
+    patch.resize(3 * size_t(surface.GetNumPatchPoints()));
+    surface.PreparePatchPoints(m.xyz.data(), d, patch.data(), d);
+    const double uv[2] = {u, v};
+    surface.Evaluate(uv, patch.data(), d, p, du, dv);
+  };
+  double p[3], du[3], dv[3], sum = 0;
+  for (int f = 0; f < faces; ++f) bfr(f, 0.3, 0.2, p, du, dv);
+  const auto t2 = Clock::now();
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<std::array<double, 3>> at;
+  for (int i = 0; i < points; ++i) {
+    const double u = unit(rng), v = unit(rng);
+    at.push_back({double(rng() % unsigned(faces)), u, v});
+  }
+  std::vector<double> ours_xyz(3 * size_t(points)), bfr_xyz(3 * size_t(points));
+  double ours_s = 0, bfr_s = 0;
+  for (int r = 0; r < rounds; ++r) {
+    const size_t first = size_t(points) * size_t(r) / size_t(rounds), last = size_t(points) * size_t(r + 1) / size_t(rounds);
+    const auto a = Clock::now();
+    for (size_t i = first; i < last; ++i) {
+      const subdiv::LimitSample s = ours.evaluate(subdiv::Index(at[i][0]), at[i][1], at[i][2], m.xyz, 3, 1);
+      std::copy(s.position.begin(), s.position.end(), &ours_xyz[3 * i]);
+      sum += s.du[0];
+    }
+    const auto b = Clock::now();
+    for (size_t i = first; i < last; ++i) {
+      bfr(int(at[i][0]), at[i][1], at[i][2], &bfr_xyz[3 * i], du, dv);
+      sum += du[0];
+    }
+    const auto c = Clock::now();
+    ours_s += seconds(a, b);
+    bfr_s += seconds(b, c);
+  }
+  double largest = 0;
+  for (size_t i = 0; i < bfr_xyz.size(); ++i) largest = std::max(largest, std::abs(ours_xyz[i] - bfr_xyz[i]));
+  delete refiner;
+  std::printf("%s, %d faces: preparation (first point per face) ours %.3g s, Bfr %.3g s; %d random points in %d "
+              "alternating rounds, position + first derivatives: ours %.2f us/point, Bfr %.2f us/point, ratio %.2f; "
+              "largest |ours - Bfr| %.3g; load average %.2f before, %.2f after (checksum %g)\n",
+              m.name, faces, seconds(t0, t1), seconds(t1, t2), points, rounds, ours_s / points * 1e6,
+              bfr_s / points * 1e6, ours_s / bfr_s, largest, load_before, load_average(), sum);
 }
 
 void run(const Mesh& m, int points, int order) {
@@ -138,6 +271,15 @@ void run(const Mesh& m, int points, int order) {
 int main(int argc, char** argv) {
   // subdiv-limit-bench [points] [order]: order 1 (default) position and first derivatives,
   // 2 also the second derivatives.
+  if (argc > 1 && std::strcmp(argv[1], "issue") == 0) {
+    // subdiv-limit-bench issue [points] [n]: the n x n torus (1000: 1M faces) and the split
+    // triangulated (0.4 n) x (0.4 n) torus (0.96 n^2 quads).
+    const int points = argc > 2 ? std::atoi(argv[2]) : 1000000;
+    const int n = argc > 3 ? std::atoi(argv[3]) : 1000;
+    run_alternating(torus(n, n), points, 4);
+    run_alternating(split_triangulated_torus(2 * n / 5, 2 * n / 5), points, 4);
+    return 0;
+  }
   const int points = argc > 1 ? std::atoi(argv[1]) : 20000;
   const int order = argc > 2 && std::atoi(argv[2]) == 2 ? 2 : 1;
   run(torus(32, 24), points, order);

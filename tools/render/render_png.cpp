@@ -1,5 +1,5 @@
 // subdiv-render MESH OUT.png [--azimuth DEG] [--elevation DEG] [--size PIXELS] [--cage MESH]
-//               [--checker N]
+//               [--checker N] [--color-by ARRAY] [--edges 0|1]
 //
 // Draws a mesh (any format `subdiv` reads) into a PNG with a small software rasterizer:
 // orthographic view, two-sided flat shading, face edges in a darker tone, and optionally a
@@ -7,6 +7,10 @@
 // be rendered on a headless build machine (Debian's VTK renders only through X or OSMesa).
 // --checker N paints the mesh's texture coordinates (face-varying, e.g. OBJ vt, or per
 // point) as an N x N checkerboard, interpolated across each triangle, to show UVs and seams.
+// --color-by ARRAY paints a scalar point array (e.g. limit_distance, level_distance) with the
+// viridis colour map from 0 to its largest value, interpolated across each triangle, draws
+// the map as a bar on the right (0 at the bottom) and prints the range; --edges 0 leaves out
+// the face edges (for finely sampled meshes).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -137,17 +141,35 @@ std::vector<double> corner_uvs(const subdiv::MeshData& mesh) {
   return out;
 }
 
+// Matplotlib's viridis (van der Walt & Smith 2015) at 0, 1/4, 1/2, 3/4, 1, linearly between.
+std::array<double, 3> viridis(double t) {
+  static constexpr double stops[5][3] = {
+      {68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
+  t = std::clamp(t, 0.0, 1.0) * 4;
+  const int i = std::min(3, int(t));
+  const double f = t - i;
+  return {stops[i][0] + f * (stops[i + 1][0] - stops[i][0]), stops[i][1] + f * (stops[i + 1][1] - stops[i][1]),
+          stops[i][2] + f * (stops[i + 1][2] - stops[i][2])};
+}
+
+// The scalar point array `name`; refused naming the mesh when it has none of one component.
+std::vector<double> scalar_array(const subdiv::MeshData& mesh, const std::string& name, const std::string& file) {
+  for (const auto& a : mesh.point_data)
+    if (a.name == name && a.components == 1) return a.values;
+  throw subdiv::Error(fmt::format("--color-by: '{}' has no scalar point array '{}'", file, name));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) try {
   if (argc < 3) {
     std::fprintf(stderr, "usage: subdiv-render MESH OUT.png [--azimuth DEG] [--elevation DEG] [--size PIXELS] [--cage MESH] "
-                         "[--checker N]\n");
+                         "[--checker N] [--color-by ARRAY] [--edges 0|1]\n");
     return 2;
   }
   double azimuth = 30, elevation = 25;
-  int size = 640, checker = 0;
-  std::string cage_file;
+  int size = 640, checker = 0, edges = 1;
+  std::string cage_file, color_by;
   for (int i = 3; i + 1 < argc; i += 2) {
     const std::string o = argv[i];
     if (o == "--azimuth") azimuth = std::stod(argv[i + 1]);
@@ -155,6 +177,8 @@ int main(int argc, char** argv) try {
     else if (o == "--size") size = std::stoi(argv[i + 1]);
     else if (o == "--cage") cage_file = argv[i + 1];
     else if (o == "--checker") checker = std::stoi(argv[i + 1]);
+    else if (o == "--color-by") color_by = argv[i + 1];
+    else if (o == "--edges") edges = std::stoi(argv[i + 1]);
     else throw subdiv::Error(fmt::format("unknown option '{}'", o));
   }
   const subdiv::MeshData mesh = subdiv::read_mesh(argv[1]);
@@ -175,6 +199,13 @@ int main(int argc, char** argv) try {
   to_pixels(p), to_pixels(q);
   const std::vector<double> uv = corner_uvs(mesh);
   if (checker > 0 && uv.empty()) throw subdiv::Error(fmt::format("--checker: '{}' has no texture coordinates", argv[1]));
+  std::vector<double> scalar;
+  double scalar_max = 0;
+  if (!color_by.empty()) {
+    scalar = scalar_array(mesh, color_by, argv[1]);
+    for (double x : scalar) scalar_max = std::max(scalar_max, x);
+    std::printf("%s: 0 (bottom of the bar) to %.3e (top)\n", color_by.c_str(), scalar_max);
+  }
   Image img(size);
   for (subdiv::Index f = 0; f < mesh.face_count(); ++f) {
     const subdiv::Index o = mesh.face_offsets[f], k = mesh.face_offsets[f + 1] - o;
@@ -197,15 +228,28 @@ int main(int argc, char** argv) try {
         return std::array<std::uint8_t, 3>{std::uint8_t(240 * shade * tone), std::uint8_t(200 * shade * tone),
                                            std::uint8_t(120 * shade * tone)};
       };
+      const Shader mapped = [&](double w0, double w1, double w2) {
+        const double x = w0 * scalar[mesh.face_vertices[corners[0]]] + w1 * scalar[mesh.face_vertices[corners[1]]] +
+                         w2 * scalar[mesh.face_vertices[corners[2]]];
+        const auto c = viridis(scalar_max > 0 ? x / scalar_max : 0);
+        const double lit = 0.55 + 0.45 * light;
+        return std::array<std::uint8_t, 3>{std::uint8_t(c[0] * lit), std::uint8_t(c[1] * lit), std::uint8_t(c[2] * lit)};
+      };
       triangle(img, p[mesh.face_vertices[corners[0]]], p[mesh.face_vertices[corners[1]]],
-               p[mesh.face_vertices[corners[2]]], checker > 0 ? squares : plain);
+               p[mesh.face_vertices[corners[2]]], !scalar.empty() ? mapped : checker > 0 ? squares : plain);
     }
   }
-  for (subdiv::Index f = 0; f < mesh.face_count(); ++f)
+  for (subdiv::Index f = 0; edges && f < mesh.face_count(); ++f)
     for (subdiv::Index c = mesh.face_offsets[f]; c < mesh.face_offsets[f + 1]; ++c) {
       const subdiv::Index next = c + 1 == mesh.face_offsets[f + 1] ? mesh.face_offsets[f] : c + 1;
       line(img, p[mesh.face_vertices[c]], p[mesh.face_vertices[next]], {40, 60, 90}, 1, 0.5);
     }
+  if (!scalar.empty())  // the colour bar: 0 at the bottom, the largest value at the top
+    for (int y = size / 10; y < size - size / 10; ++y)
+      for (int x = size - size / 25 - 12; x < size - size / 25; ++x) {
+        const auto c = viridis(double(y - size / 10) / (size - 2 * (size / 10)));
+        img.put(x, y, 1e300, {std::uint8_t(c[0]), std::uint8_t(c[1]), std::uint8_t(c[2])});
+      }
   for (subdiv::Index f = 0; f < cage.face_count(); ++f)
     for (subdiv::Index c = cage.face_offsets[f]; c < cage.face_offsets[f + 1]; ++c) {
       const subdiv::Index next = c + 1 == cage.face_offsets[f + 1] ? cage.face_offsets[f] : c + 1;

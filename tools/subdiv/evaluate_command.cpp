@@ -13,6 +13,8 @@
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
 #include "framework/pipeline/adaptive_request.h"
+#include "framework/pipeline/approximation_request.h"
+#include "framework/pipeline/level_distance.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/pipeline/limit_mesh.h"
 #include "framework/pipeline/evaluate_request.h"
@@ -41,7 +43,9 @@ struct EvaluateArgs {
   int derivatives = 1;
   int samples = 0;
   int adaptive = -1;  // --adaptive L; < 0: not given
+  int level_distance = -1;  // --level-distance L; < 0: not given
   bool limit = false;
+  std::string approximate, bezier_net;  // --approximate bezier [--bezier-net OUT.vtu]
   int threads = 0;
 };
 
@@ -98,20 +102,82 @@ EvaluateRequest evaluate_request(const EvaluateArgs& a, Progress& progress) {
   return r;
 }
 
+// --approximate bezier: Loop & Schaefer's patches (framework/pipeline/approximation_request.h),
+// written as --samples or --at would write the exact limit, with their distance to it.
+void write_approximation_csv(const std::filesystem::path& out, const SurfacePoints& q, const ApproximatedPoints& p) {
+  write_file_atomically(out, [&](const std::filesystem::path& tmp) {
+    std::ofstream f(tmp);
+    f << "face,u,v,x,y,z,nx,ny,nz,limit_distance\n";
+    for (size_t i = 0; i < q.size(); ++i) {
+      f << fmt::format("{},{},{}", q.faces[i], q.uv[2 * i], q.uv[2 * i + 1]);
+      for (const auto* d : {&p.positions, &p.normals})
+        for (size_t c = 0; c < 3; ++c) f << ',' << fmt::format("{}", (*d)[3 * i + c]);
+      f << ',' << fmt::format("{}", p.distances.per_point[i]) << '\n';
+    }
+    if (!f) throw Error(fmt::format("cannot write {}", subdiv::quoted(out.string())));
+  });
+}
+
+void run_approximation(const EvaluateArgs& a, Progress& progress) {
+  if (a.approximate != "bezier")
+    throw Error(fmt::format("--approximate {}: the one approximation is bezier (Loop & Schaefer's bicubic patches)",
+                            subdiv::quoted(a.approximate)));
+  if (!a.bezier_net.empty() && lowercase_extension(a.bezier_net) != ".vtu")
+    throw Error(fmt::format("--bezier-net {}: the control nets are written as VTK Bézier quadrilaterals (.vtu)",
+                            subdiv::quoted(a.bezier_net)));
+  const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a, progress));
+  for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
+  const std::vector<BezierPatch> patches = approximation_patches(prepared);
+  ApproximationDistances distances;
+  if (a.samples > 0) {
+    MeshData mesh = approximated_limit_mesh(prepared, patches, a.samples, distances);
+    fmt::print("subdiv: {}\n", approximation_summary(distances));
+    write_with_bar(a.output, mesh, progress);
+  } else {
+    const LimitSurface& surface = *prepared.surface;
+    const SurfacePoints q =
+        read_points_file(a.at, [&surface](Index face, double u, double v) { return surface.check(face, u, v); });
+    const ApproximatedPoints points = approximate_points(prepared, patches, q.faces, q.uv);
+    distances = points.distances;
+    fmt::print("subdiv: {}\n", approximation_summary(distances));
+    write_approximation_csv(a.output, q, points);
+  }
+  if (!a.bezier_net.empty())
+    write_file_atomically(a.bezier_net, [&](const std::filesystem::path& tmp) {
+      std::ofstream f(tmp);
+      f << bezier_control_net_vtu(patches, distances.per_face);
+      if (!f) throw Error(fmt::format("cannot write {}", subdiv::quoted(a.bezier_net)));
+    });
+}
+
 void run(const EvaluateArgs& a) {
-  const int modes = int(!a.at.empty()) + int(a.samples > 0) + int(a.adaptive >= 0);
+  const int modes = int(!a.at.empty()) + int(a.samples > 0) + int(a.adaptive >= 0) + int(a.level_distance >= 0);
   if (modes != 1)
-    throw Error("give one of --at POINTS.csv (points at given parameters), --samples N (a mesh of the surface) or "
-                "--adaptive L (a mesh refined where the surface is irregular)");
+    throw Error("give one of --at POINTS.csv (points at given parameters), --samples N (a mesh of the surface), "
+                "--adaptive L (a mesh refined where the surface is irregular) or --level-distance L (level L's "
+                "vertices on the limit, with their distance to it)");
+  if (a.level_distance >= 0 && !a.approximate.empty())
+    throw Error("--approximate bezier goes with --samples N or --at POINTS.csv, not --level-distance");
   if (a.limit && a.adaptive < 0) throw Error("--limit goes with --adaptive L");
+  if (!a.approximate.empty() && a.adaptive >= 0)
+    throw Error("--approximate bezier goes with --samples N or --at POINTS.csv, not --adaptive");
+  if (a.approximate.empty() && !a.bezier_net.empty()) throw Error("--bezier-net goes with --approximate bezier");
   const std::string ext = lowercase_extension(a.output);
   if (!a.at.empty() && ext != ".csv")
     throw Error(fmt::format("-o {}: --at writes .csv (face,u,v,x,y,z[,du_*,dv_*[,duu_*,duv_*,dvv_*]])", subdiv::quoted(a.output)));
-  if ((a.samples > 0 || a.adaptive >= 0) && ext == ".csv")
-    throw Error(fmt::format("-o {}: --samples and --adaptive write a mesh (.vtp, .obj, .ply, .off, .stl)", subdiv::quoted(a.output)));
+  if ((a.samples > 0 || a.adaptive >= 0 || a.level_distance >= 0) && ext == ".csv")
+    throw Error(fmt::format("-o {}: --samples, --adaptive and --level-distance write a mesh (.vtp, .obj, .ply, .off, .stl)",
+                            subdiv::quoted(a.output)));
   const int threads = a.threads > 0 ? a.threads : int(tbb::this_task_arena::max_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
   Progress progress;
+  if (!a.approximate.empty()) return run_approximation(a, progress);
+  if (a.level_distance >= 0) {
+    const LevelDistance d = level_distance(evaluate_request(a, progress), a.level_distance);
+    fmt::print("subdiv: {}\n", level_distance_summary(d));
+    write_with_bar(a.output, d.mesh, progress);
+    return;
+  }
   if (a.adaptive >= 0) {  // the same as subdiv refine --adaptive L (adaptive_refine_option.cpp)
     AdaptiveResult r = refine_adaptive_request(adaptive_request_from(evaluate_request(a, progress), a.adaptive, 0, a.limit));
     for (const std::string& w : r.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
@@ -172,6 +238,18 @@ void add_evaluate_command(CLI::App& app) {
                   "vertices along their edges), with cell arrays face_level and base_face")
       ->check(CLI::Range(0, 12));
   cmd->add_flag("--limit", args->limit, "With --adaptive: every vertex on the limit surface");
+  cmd->add_option("--level-distance", args->level_distance,
+                  "Instead of --at: uniform level L's vertices moved onto the limit surface (at their own (face, u, "
+                  "v)), with the point array level_distance (how far level L is from the limit there) and the "
+                  "largest and mean distance printed")
+      ->check(CLI::Range(0, 12));
+  cmd->add_option("--approximate", args->approximate,
+                  "bezier: instead of the exact limit, Loop & Schaefer's (2008) bicubic patches, one per quad of a "
+                  "closed uncreased quad mesh (exact where every valence is 4), normals from their tangent patches; "
+                  "adds limit_distance (to the exact limit; --samples: per point and per face, the face's largest) "
+                  "and prints the largest and mean distance");
+  cmd->add_option("--bezier-net", args->bezier_net,
+                  "With --approximate bezier: also write the patches' control nets as VTK Bezier quadrilaterals (.vtu)");
   cmd->add_option("--derivatives", args->derivatives,
                   "0: positions; 1: also du and dv; 2: also duu, duv, dvv (nan where they do not exist)")
       ->check(CLI::Range(0, 2))

@@ -1,0 +1,164 @@
+#include "framework/pipeline/approximation_request.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "framework/limit/tessellation.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+double distance(std::span<const double> a, std::span<const double> b, size_t i) {
+  const double x = a[3 * i] - b[3 * i], y = a[3 * i + 1] - b[3 * i + 1], z = a[3 * i + 2] - b[3 * i + 2];
+  return std::sqrt(x * x + y * y + z * z);
+}
+
+// Distances at the points (face, u, v) whose approximated positions are `approximated`.
+ApproximationDistances measure(const PreparedEvaluation& prepared, std::span<const Index> faces,
+                               std::span<const double> uv, std::span<const double> approximated) {
+  const EvaluatedPoints exact = evaluate_limit_points(prepared, faces, uv, 0);
+  ApproximationDistances d;
+  d.per_face.assign(prepared.surface->base().face_offsets.size() - 1, 0.0);
+  d.samples = Index(faces.size());
+  double sum = 0;
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const double e = distance(approximated, exact.position, i);
+    d.per_point.push_back(e);
+    double& face = d.per_face[size_t(faces[i])];
+    face = std::max(face, e);
+    sum += e;
+    if (d.largest_face == kNone || e > d.largest) d.largest = e, d.largest_face = faces[i];
+  }
+  d.mean = faces.empty() ? 0.0 : sum / double(faces.size());
+  return d;
+}
+
+LimitSample as_sample(const PatchSample& s) {
+  LimitSample out;
+  out.position.assign(s.position.begin(), s.position.end());
+  out.du.assign(s.du.begin(), s.du.end());
+  out.dv.assign(s.dv.begin(), s.dv.end());
+  out.has_derivatives = true;
+  return out;
+}
+
+DataArray index_array(const char* name, const std::vector<Index>& indices) {
+  DataArray a{name, 1, {}, true};
+  a.values.assign(indices.begin(), indices.end());
+  return a;
+}
+
+}  // namespace
+
+std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared) {
+  const std::string why = bezier_approximation_unsupported(prepared.scheme);
+  if (!why.empty())
+    throw Error(fmt::format("--approximate bezier: scheme {} cannot be approximated by Loop & Schaefer's bicubic "
+                            "patches: {}",
+                            prepared.scheme_label, why));
+  if (prepared.sequence_head)
+    throw Error("--approximate bezier: a sequence's limit is its tail's over the mesh its head makes, while the "
+                "patches' masks read the base mesh; refine the head first (subdiv refine) and approximate that mesh");
+  if (!prepared.weights.empty())
+    throw Error("--approximate bezier: the mesh has rational weights; the patches are polynomial (drop the weights)");
+  if (!prepared.mesh.creases.empty() || !prepared.mesh.corners.empty() || !prepared.mesh.holes.empty() ||
+      !prepared.notes.empty())
+    throw Error("--approximate bezier: the mesh has creases, corners, holes or feature edges; Loop & Schaefer's "
+                "masks are those of smooth interior vertices (drop the tags)");
+  try {
+    return bezier_patches(prepared.surface->base(), prepared.mesh.positions,
+                          [&prepared](const std::vector<Index>& faces, const std::vector<double>& uv) {
+                            return evaluate_limit_points(prepared, faces, uv, 0).position;
+                          });
+  } catch (const Error& e) {
+    throw Error(fmt::format("--approximate bezier: {}", e.what()));
+  }
+}
+
+ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
+                                      std::span<const Index> faces, std::span<const double> uv) {
+  ApproximatedPoints out;
+  out.positions.resize(3 * faces.size());
+  out.normals.resize(3 * faces.size());
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const PatchSample s = evaluate_patch(patches[size_t(faces[i])], uv[2 * i], uv[2 * i + 1]);
+    const Point3 n{s.du[1] * s.dv[2] - s.du[2] * s.dv[1], s.du[2] * s.dv[0] - s.du[0] * s.dv[2],
+                   s.du[0] * s.dv[1] - s.du[1] * s.dv[0]};
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (size_t c = 0; c < 3; ++c) {
+      out.positions[3 * i + c] = s.position[c];
+      out.normals[3 * i + c] = n[c] / length;
+    }
+  }
+  out.distances = measure(prepared, faces, uv, out.positions);
+  return out;
+}
+
+MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
+                                 int segments, ApproximationDistances& distances) {
+  Tessellation t = tessellate(*prepared.surface, segments, [&patches](Index face, double u, double v) {
+    return as_sample(evaluate_patch(patches[size_t(face)], u, v));
+  });
+  distances = measure(prepared, t.uv_face, t.uv, t.positions);
+  std::vector<double> cell_distance;
+  cell_distance.reserve(t.base_face.size());
+  for (Index f : t.base_face) cell_distance.push_back(distances.per_face[size_t(f)]);
+  MeshData m;
+  m.point_data = {DataArray{"Normals", 3, std::move(t.normals), false, ArrayRole::Normals},
+                  index_array("base_face", t.uv_face), DataArray{"uv", 2, std::move(t.uv), false},
+                  DataArray{"limit_distance", 1, distances.per_point, false}};
+  m.cell_data = {index_array("base_face", t.base_face), DataArray{"limit_distance", 1, std::move(cell_distance), false}};
+  m.positions = std::move(t.positions);
+  m.face_offsets = std::move(t.face_offsets);
+  m.face_vertices = std::move(t.face_vertices);
+  return m;
+}
+
+std::string approximation_summary(const ApproximationDistances& d) {
+  return fmt::format("bicubic patches (Loop & Schaefer 2008) against the exact limit: largest distance {:.3e} (face "
+                     "{}), mean {:.3e} over {} samples",
+                     d.largest, d.largest_face, d.mean, d.samples);
+}
+
+std::string bezier_control_net_vtu(const std::vector<BezierPatch>& patches, std::span<const double> limit_distance) {
+  // VTK's order for a Lagrange/Bézier quadrilateral of degree (3, 3): the corners (0,0),
+  // (3,0), (3,3), (0,3); the edges i = 1, 2 at j = 0, then j = 1, 2 at i = 3, then i = 1, 2
+  // at j = 3, then j = 1, 2 at i = 0 (each in increasing order); then the interior, i fastest.
+  static constexpr int order[16][2] = {{0, 0}, {3, 0}, {3, 3}, {0, 3}, {1, 0}, {2, 0}, {3, 1}, {3, 2},
+                                       {1, 3}, {2, 3}, {0, 1}, {0, 2}, {1, 1}, {2, 1}, {1, 2}, {2, 2}};
+  std::string points, connectivity, offsets, types, degrees, faces, distances;
+  for (size_t p = 0; p < patches.size(); ++p) {
+    for (int k = 0; k < 16; ++k) {
+      const Point3& b = patches[p].geometry[size_t(order[k][1] * 4 + order[k][0])];
+      points += fmt::format("{} {} {}\n", b[0], b[1], b[2]);
+      connectivity += fmt::format("{} ", 16 * p + size_t(k));
+    }
+    offsets += fmt::format("{} ", 16 * (p + 1));
+    types += "77 ";  // VTK_BEZIER_QUADRILATERAL
+    degrees += "3 3 0 ";
+    faces += fmt::format("{} ", p);
+    if (!limit_distance.empty()) distances += fmt::format("{} ", limit_distance[p]);
+  }
+  std::string cells = fmt::format(
+      "<DataArray type=\"Int32\" Name=\"HigherOrderDegrees\" NumberOfComponents=\"3\" format=\"ascii\">{}</DataArray>\n"
+      "<DataArray type=\"Int64\" Name=\"base_face\" format=\"ascii\">{}</DataArray>\n",
+      degrees, faces);
+  if (!limit_distance.empty())
+    cells += fmt::format("<DataArray type=\"Float64\" Name=\"limit_distance\" format=\"ascii\">{}</DataArray>\n",
+                         distances);
+  return fmt::format(
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"UnstructuredGrid\" version=\"2.2\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+      "<UnstructuredGrid>\n<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n"
+      "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n{}</DataArray>\n</Points>\n"
+      "<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">{}</DataArray>\n"
+      "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">{}</DataArray>\n"
+      "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">{}</DataArray>\n</Cells>\n"
+      "<CellData HigherOrderDegrees=\"HigherOrderDegrees\">\n{}</CellData>\n"
+      "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n",
+      16 * patches.size(), patches.size(), points, connectivity, offsets, types, cells);
+}
+
+}  // namespace subdiv

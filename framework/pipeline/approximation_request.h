@@ -1,0 +1,54 @@
+#pragma once
+// The limit surface approximated by Loop & Schaefer's bicubic patches (limit/bezier_approximation.h),
+// as every front-end asks for it (`subdiv evaluate --approximate bezier`), measured against
+// the exact limit (limit/limit_surface.h) at the same (face, u, v): the distance no library shows.
+#include <string>
+#include <vector>
+
+#include "framework/io/mesh_data.h"
+#include "framework/limit/bezier_approximation.h"
+#include "framework/pipeline/evaluate_request.h"
+
+namespace subdiv {
+
+// The patches of a prepared surface. Throws subdiv::Error saying why they cannot be built:
+// the scheme (bezier_approximation_unsupported), a sequence, rational weights, creases,
+// corners or holes (the masks are those of smooth interior vertices), a face that is not a
+// quad or a boundary (naming the face).
+std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared);
+
+// Distances from the approximation to the exact limit.
+struct ApproximationDistances {
+  std::vector<double> per_point;  // |approximation - limit| at each sample
+  std::vector<double> per_face;   // per base face: the largest over its samples (0 without samples)
+  double largest = 0, mean = 0;
+  Index largest_face = kNone;
+  Index samples = 0;
+};
+
+// Points of the approximation: positions, unit normals (of the tangent patches), distances.
+struct ApproximatedPoints {
+  std::vector<double> positions, normals;
+  ApproximationDistances distances;
+};
+ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
+                                      std::span<const Index> faces, std::span<const double> uv);
+
+// The approximation tessellated N x N per face as limit_mesh.h tessellates the exact limit
+// (crack-free: the patches meet with C0, points on shared edges are evaluated once), with
+// the point arrays Normals (the tangent patches' unit normal), base_face, uv and
+// limit_distance, and the cell arrays base_face and limit_distance (the largest distance
+// over the base face's samples).
+MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
+                                 int segments, ApproximationDistances& distances);
+
+// "largest distance to the exact limit X (face F), mean Y over N samples".
+std::string approximation_summary(const ApproximationDistances& d);
+
+// The geometry patches as a VTK XML unstructured grid (.vtu, ASCII) of Bézier quadrilaterals
+// (VTK_BEZIER_QUADRILATERAL, degree 3 x 3 in the cell array HigherOrderDegrees; VTK's
+// point order: corners, edges, interior), with the cell arrays base_face and, when given
+// (one per patch), limit_distance. ParaView (5.5+) shows them as curved patches.
+std::string bezier_control_net_vtu(const std::vector<BezierPatch>& patches, std::span<const double> limit_distance);
+
+}  // namespace subdiv

@@ -1,0 +1,66 @@
+#include "framework/pipeline/level_distance.h"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+#include "framework/pipeline/adaptive_request.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+
+LevelDistance level_distance(const EvaluateRequest& request, int level) {
+  // Split wherever the surface differs from a bilinear patch at all: the uniform level.
+  AdaptiveResult refined = refine_adaptive_request(
+      adaptive_request_from(request, level, std::numeric_limits<double>::min(), false));
+  AdaptiveMesh& a = refined.mesh;
+  if (Index(a.face_offsets.size()) - 1 != a.uniform_faces)
+    throw Error(fmt::format("--level-distance {}: {} faces are flat to round-off, so the level could not be found "
+                            "face by face ({} faces instead of {})",
+                            level, request.mesh_name, a.face_offsets.size() - 1, a.uniform_faces));
+  const PreparedEvaluation prepared = prepare_evaluation(request);
+  const size_t V = a.positions.size() / 3;
+  std::vector<Index> faces(V, kNone);
+  std::vector<double> uv(2 * V, 0.0);
+  for (Index f = 0; f + 1 < Index(a.face_offsets.size()); ++f)
+    for (Index c = a.face_offsets[size_t(f)]; c < a.face_offsets[size_t(f) + 1]; ++c) {
+      const size_t v = size_t(a.face_vertices[size_t(c)]);
+      if (faces[v] != kNone) continue;
+      faces[v] = a.base_face[size_t(f)];
+      uv[2 * v] = a.corner_uv[size_t(c)][0];
+      uv[2 * v + 1] = a.corner_uv[size_t(c)][1];
+    }
+  const EvaluatedPoints limit = evaluate_limit_points(prepared, faces, uv, 1);
+  LevelDistance d;
+  d.level = level;
+  d.vertices = Index(V);
+  DataArray distance{"level_distance", 1, {}, false}, normals{"Normals", 3, {}, false, ArrayRole::Normals};
+  double sum = 0;
+  for (size_t v = 0; v < V; ++v) {
+    double e2 = 0;
+    for (size_t c = 0; c < 3; ++c) e2 += std::pow(a.positions[3 * v + c] - limit.position[3 * v + c], 2);
+    const double e = std::sqrt(e2);
+    distance.values.push_back(e);
+    sum += e;
+    if (d.largest_vertex == kNone || e > d.largest) d.largest = e, d.largest_vertex = Index(v);
+    const double* du = &limit.du[3 * v];
+    const double* dv = &limit.dv[3 * v];
+    const double n[3] = {du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2], du[0] * dv[1] - du[1] * dv[0]};
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double x : n) normals.values.push_back(x / length);
+  }
+  d.mean = V ? sum / double(V) : 0.0;
+  a.positions = limit.position;
+  d.mesh = adaptive_mesh_data(std::move(a));
+  d.mesh.cell_data.erase(d.mesh.cell_data.begin());  // face_level: L everywhere
+  d.mesh.point_data = {std::move(distance), std::move(normals)};
+  return d;
+}
+
+std::string level_distance_summary(const LevelDistance& d) {
+  return fmt::format("uniform level {} against the exact limit: largest distance {:.3e} (vertex {}), mean {:.3e} over "
+                     "{} vertices",
+                     d.level, d.largest, d.largest_vertex, d.mean, d.vertices);
+}
+
+}  // namespace subdiv

@@ -1,0 +1,256 @@
+// Loop & Schaefer's (2008) bicubic patches against properties of the construction and the
+// exact limit: the B-spline patch reproduced where every valence is 4, C0 geometry, a
+// normal field continuous across every edge (which the geometry patches' own is not at
+// extraordinary vertices), the tangent masks' tangent plane the exact limit's, and the
+// distance to the exact limit zero on regular faces, positive next to extraordinary
+// vertices and shrinking as the control mesh is refined.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+
+#include "framework/engine/refiner.h"
+#include "framework/limit/bezier_approximation.h"
+#include "framework/pipeline/approximation_request.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/util/error.h"
+#include "support/mesh_data_of.h"
+#include "support/test_meshes.h"
+
+using namespace subdiv;
+
+namespace {
+
+PreparedEvaluation prepared(const test::Mesh& m, const std::string& scheme = "catmull-clark") {
+  EvaluateRequest r;
+  r.mesh = test::mesh_data(m);
+  r.scheme.text = scheme;
+  return prepare_evaluation(std::move(r));
+}
+
+// Every face with n sides split into n quads at its centroid and edge midpoints (a bilinear
+// step): the centroids get valence n, so triangles, pentagons and hexagons make quad meshes
+// with extraordinary vertices of valence 3, 5 and 6.
+test::Mesh quad_split(const test::Mesh& m) {
+  test::Mesh q;
+  q.positions = m.positions;
+  q.vertex_count = m.vertex_count;
+  std::map<std::pair<Index, Index>, Index> mid;
+  auto edge = [&](Index a, Index b) {
+    const auto key = std::minmax(a, b);
+    auto [it, added] = mid.emplace(std::pair{key.first, key.second}, q.vertex_count);
+    if (added)
+      q.add_vertex((m.positions[3 * size_t(a)] + m.positions[3 * size_t(b)]) / 2,
+                   (m.positions[3 * size_t(a) + 1] + m.positions[3 * size_t(b) + 1]) / 2,
+                   (m.positions[3 * size_t(a) + 2] + m.positions[3 * size_t(b) + 2]) / 2);
+    return it->second;
+  };
+  for (size_t f = 0; f + 1 < m.offsets.size(); ++f) {
+    const Index first = m.offsets[f], n = m.offsets[f + 1] - first;
+    double c[3] = {0, 0, 0};
+    for (Index k = 0; k < n; ++k)
+      for (int x = 0; x < 3; ++x) c[x] += m.positions[3 * size_t(m.corners[size_t(first + k)]) + size_t(x)] / n;
+    const Index centre = q.vertex_count;
+    q.add_vertex(c[0], c[1], c[2]);
+    for (Index k = 0; k < n; ++k) {
+      const Index v = m.corners[size_t(first + k)], next = m.corners[size_t(first + (k + 1) % n)],
+                  prev = m.corners[size_t(first + (k + n - 1) % n)];
+      const Index a = edge(v, next), b = edge(prev, v);
+      q.add_face({v, a, centre, b});
+    }
+  }
+  return q;
+}
+
+// Closed quad meshes with vertices of valence 3 to 6: the bipyramids' triangles split
+// (apexes of valence n, the triangles' centres 3).
+test::Mesh valences_3_to_5() { return quad_split(test::bipyramid(5)); }
+test::Mesh valences_3_to_6() { return quad_split(test::bipyramid(6)); }
+
+double angle(const Point3& a, const Point3& b) {
+  const Point3 c{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  const double s = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  return std::atan2(s, a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+}
+
+Point3 normal(const Point3& a, const Point3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// The (u, v) of the point at t along face corner k's edge (k -> k + 1).
+std::array<double, 2> on_edge(int k, double t) {
+  switch (k) {
+    case 0: return {t, 0};
+    case 1: return {1, t};
+    case 2: return {1 - t, 1};
+    default: return {0, 1 - t};
+  }
+}
+
+struct EdgeSides {
+  double largest_position = 0, largest_tangent_angle = 0, largest_geometry_angle = 0;
+  bool control_points_differ = false;
+};
+
+// The geometry control points along face corner k's edge, from corner k.
+std::array<Point3, 4> boundary(const BezierPatch& p, int k) {
+  std::array<Point3, 4> out;
+  for (int s = 0; s < 4; ++s) {
+    const int i = k == 0 ? s : k == 1 ? 3 : k == 2 ? 3 - s : 0;
+    const int j = k == 0 ? 0 : k == 1 ? s : k == 2 ? 3 : 3 - s;
+    out[size_t(s)] = p.geometry[size_t(j * 4 + i)];
+  }
+  return out;
+}
+
+bool same_boundary(const std::vector<BezierPatch>& patches, std::pair<Index, int> a, std::pair<Index, int> b) {
+  const auto x = boundary(patches[size_t(a.first)], a.second), y = boundary(patches[size_t(b.first)], b.second);
+  for (size_t s = 0; s < 4; ++s)
+    if (x[s] != y[3 - s]) return false;
+  return true;
+}
+
+// Along every interior edge, both faces' patches at the same points.
+EdgeSides compare_edges(const Level& level, const std::vector<BezierPatch>& patches) {
+  std::map<std::pair<Index, Index>, std::pair<Index, int>> directed;
+  for (Index f = 0; f < level.face_count(); ++f)
+    for (int k = 0; k < 4; ++k)
+      directed[{level.face_vertices[size_t(4 * f + k)], level.face_vertices[size_t(4 * f + (k + 1) % 4)]}] = {f, k};
+  EdgeSides out;
+  for (const auto& [e, fk] : directed) {
+    const auto& [g, l] = directed.at({e.second, e.first});
+    for (double t : {0.0, 0.1, 0.37, 0.5, 0.81, 1.0}) {
+      const auto a = on_edge(fk.second, t), b = on_edge(l, 1 - t);
+      const PatchSample p = evaluate_patch(patches[size_t(fk.first)], a[0], a[1]);
+      const PatchSample q = evaluate_patch(patches[size_t(g)], b[0], b[1]);
+      for (int c = 0; c < 3; ++c)
+        out.largest_position = std::max(out.largest_position, std::abs(p.position[size_t(c)] - q.position[size_t(c)]));
+      // The boundary curves' control points themselves are the same numbers from both sides.
+      if (t == 0.5) out.control_points_differ = out.control_points_differ || !same_boundary(patches, fk, {g, l});
+      out.largest_tangent_angle = std::max(out.largest_tangent_angle, angle(normal(p.du, p.dv), normal(q.du, q.dv)));
+      if (t > 0 && t < 1)  // the geometry patches' normals, away from the corners
+        out.largest_geometry_angle = std::max(
+            out.largest_geometry_angle, angle(normal(p.geometry_du, p.geometry_dv), normal(q.geometry_du, q.geometry_dv)));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("where every valence is 4 the patches are the exact limit (the bicubic B-spline)") {
+  const PreparedEvaluation p = prepared(test::torus(6, 5));
+  const std::vector<BezierPatch> patches = approximation_patches(p);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<Index> faces;
+  std::vector<double> uv;
+  for (int i = 0; i < 200; ++i) {
+    faces.push_back(Index(rng() % 30));
+    uv.push_back(unit(rng));
+    uv.push_back(unit(rng));
+  }
+  const ApproximatedPoints a = approximate_points(p, patches, faces, uv);
+  CHECK(a.distances.largest < 1e-12);
+  // The tangent patches are then the patch's own derivatives: the exact ones.
+  const EvaluatedPoints exact = evaluate_limit_points(p, faces, uv, 1);
+  double worst = 0;
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const PatchSample s = evaluate_patch(patches[size_t(faces[i])], uv[2 * i], uv[2 * i + 1]);
+    for (size_t c = 0; c < 3; ++c)
+      worst = std::max({worst, std::abs(s.du[c] - exact.du[3 * i + c]), std::abs(s.dv[c] - exact.dv[3 * i + c])});
+  }
+  CHECK(worst < 1e-11);
+}
+
+TEST_CASE("patches meet with C0, and the tangent patches' normals are continuous where the geometry's are not") {
+  for (const test::Mesh& m : {test::cube(), valences_3_to_5(), valences_3_to_6()}) {
+    const PreparedEvaluation p = prepared(m);
+    const std::vector<BezierPatch> patches = approximation_patches(p);
+    const EdgeSides e = compare_edges(p.surface->base(), patches);
+    CHECK_FALSE(e.control_points_differ);  // the shared boundary curve, computed alike from both sides
+    CHECK(e.largest_position < 1e-14);     // evaluated from both sides: round-off only
+    CHECK(e.largest_tangent_angle < 1e-12);
+    CHECK(e.largest_geometry_angle > 1e-3);
+  }
+}
+
+TEST_CASE("the tangent patches' normal at an extraordinary vertex is the exact limit normal") {
+  for (const test::Mesh& m : {test::cube(), valences_3_to_5(), valences_3_to_6()}) {
+    const PreparedEvaluation p = prepared(m);
+    const std::vector<BezierPatch> patches = approximation_patches(p);
+    const Level& base = p.surface->base();
+    double worst = 0;
+    for (Index f = 0; f < base.face_count(); ++f) {
+      // The exact normal approaches the vertex's as h -> 0 (linearly: the limit is C1 there).
+      const std::vector<Index> faces{f};
+      const std::vector<double> uv{1e-60, 1e-60};
+      const EvaluatedPoints exact = evaluate_limit_points(p, faces, uv, 1);
+      const PatchSample s = evaluate_patch(patches[size_t(f)], 0, 0);
+      const Point3 du{exact.du[0], exact.du[1], exact.du[2]}, dv{exact.dv[0], exact.dv[1], exact.dv[2]};
+      worst = std::max(worst, angle(normal(s.du, s.dv), normal(du, dv)));
+    }
+    MESSAGE("largest angle to the exact normal at a corner: ", worst);
+    CHECK(worst < 1e-12);
+  }
+}
+
+TEST_CASE("the distance to the exact limit: 0 on regular faces, positive next to extraordinary vertices, and "
+          "smaller after one Catmull-Clark step") {
+  // Split twice: faces away from the extraordinary vertices are regular.
+  const test::Mesh m = quad_split(valences_3_to_6());
+  const PreparedEvaluation p = prepared(m);
+  const std::vector<BezierPatch> patches = approximation_patches(p);
+  ApproximationDistances d;
+  (void)approximated_limit_mesh(p, patches, 6, d);
+  const Level& base = p.surface->base();
+  int regular = 0, irregular = 0;
+  for (Index f = 0; f < base.face_count(); ++f) {
+    bool all4 = true;
+    for (int k = 0; k < 4; ++k) {
+      const Index v = base.face_vertices[size_t(4 * f + k)];
+      all4 = all4 && base.vertex_ring_offsets[size_t(v) + 1] - base.vertex_ring_offsets[size_t(v)] == 4;
+    }
+    if (all4) {
+      ++regular;
+      CHECK(d.per_face[size_t(f)] < 1e-12);
+    } else {
+      ++irregular;
+      CHECK(d.per_face[size_t(f)] > 1e-6);
+    }
+  }
+  CHECK(regular > 0);
+  CHECK(irregular > 0);
+  // One Catmull-Clark step: the same limit surface, its extraordinary vertices now ringed by
+  // smaller faces.
+  const auto scheme = load_scheme("catmull-clark");
+  RefineOptions options;
+  options.levels = 1;
+  const Hierarchy h = refine(*scheme, m.level(), options);
+  test::Mesh finer;
+  finer.vertex_count = h.levels[1].vertex_count;
+  finer.positions = apply_step(h, 0, m.positions, 3);
+  finer.offsets = h.levels[1].face_offsets;
+  finer.corners = h.levels[1].face_vertices;
+  const PreparedEvaluation q = prepared(finer);
+  ApproximationDistances e;
+  (void)approximated_limit_mesh(q, approximation_patches(q), 6, e);
+  MESSAGE("largest distance ", d.largest, " -> ", e.largest, ", mean ", d.mean, " -> ", e.mean);
+  CHECK(e.largest < d.largest);
+  CHECK(e.mean < 0.5 * d.mean);
+}
+
+TEST_CASE("schemes whose regular patch is not the bicubic B-spline are refused with the reason") {
+  const test::Mesh torus = test::torus(6, 5);
+  CHECK(bezier_approximation_unsupported(load_scheme("catmull-clark")).empty());
+  CHECK(bezier_approximation_unsupported(load_scheme("doo-sabin")).find("not the bicubic B-spline") !=
+        std::string::npos);
+  CHECK(bezier_approximation_unsupported(load_scheme("bilinear")).find("not the bicubic B-spline") != std::string::npos);
+  CHECK(bezier_approximation_unsupported(load_scheme("loop")).find("triangles") != std::string::npos);
+  const PreparedEvaluation open = prepared(test::grid(4, 4));
+  CHECK_THROWS_WITH_AS(approximation_patches(open), doctest::Contains("boundary edge"), Error);
+  const PreparedEvaluation pyramid = prepared(test::pyramid());
+  CHECK_THROWS_WITH_AS(approximation_patches(pyramid), doctest::Contains("has 3 sides"), Error);
+  (void)torus;
+}
