@@ -126,12 +126,12 @@ void run_approximation(const EvaluateArgs& a, Progress& progress) {
     throw Error(fmt::format("--bezier-net {}: the control nets are written as VTK Bézier quadrilaterals (.vtu)",
                             subdiv::quoted(a.bezier_net)));
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a, progress));
-  for (const std::string& w : prepared.warnings) fmt::print(stderr, "subdiv: warning: {}\n", terminal_safe(w));
+  for (const std::string& w : prepared.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
   const std::vector<BezierPatch> patches = approximation_patches(prepared);
   ApproximationDistances distances;
   if (a.samples > 0) {
     MeshData mesh = approximated_limit_mesh(prepared, patches, a.samples, distances);
-    fmt::print("subdiv: {}\n", approximation_summary(distances));
+    print_safe("subdiv: {}\n", approximation_summary(distances));
     write_with_bar(a.output, mesh, progress);
   } else {
     const LimitSurface& surface = *prepared.surface;
@@ -139,7 +139,7 @@ void run_approximation(const EvaluateArgs& a, Progress& progress) {
         read_points_file(a.at, [&surface](Index face, double u, double v) { return surface.check(face, u, v); });
     const ApproximatedPoints points = approximate_points(prepared, patches, q.faces, q.uv);
     distances = points.distances;
-    fmt::print("subdiv: {}\n", approximation_summary(distances));
+    print_safe("subdiv: {}\n", approximation_summary(distances));
     write_approximation_csv(a.output, q, points);
   }
   if (!a.bezier_net.empty())
@@ -174,7 +174,7 @@ void run(const EvaluateArgs& a) {
   if (!a.approximate.empty()) return run_approximation(a, progress);
   if (a.level_distance >= 0) {
     const LevelDistance d = level_distance(evaluate_request(a, progress), a.level_distance);
-    fmt::print("subdiv: {}\n", level_distance_summary(d));
+    print_safe("subdiv: {}\n", level_distance_summary(d));
     write_with_bar(a.output, d.mesh, progress);
     return;
   }
