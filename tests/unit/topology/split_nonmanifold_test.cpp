@@ -49,24 +49,42 @@ TEST_CASE("primal splits keep a non-manifold edge non-manifold, with its faces' 
   CHECK(h.warnings.empty());
 }
 
-TEST_CASE("dual splits on non-manifold input: a valid mesh and one warning") {
-  for (const std::string scheme : {"doo-sabin", "mid-edge"}) {
-    CAPTURE(scheme);
-    for (const auto& m : {flap_fan(3, false), bow_tie(false)}) {
-      const Hierarchy h = refined(m, scheme, 2);
-      // One warning per level that met non-manifold elements (at most one per level).
-      REQUIRE(!h.warnings.empty());
-      CHECK(h.warnings.size() <= 2);
-      CHECK(h.warnings[0].find("level 1: ") == 0);
-      for (const auto& w : h.warnings) CHECK(w.find("non-manifold") != std::string::npos);
-      CHECK(all_finite(interpolate(h, 2, m.mesh.positions, 3)));
-      CHECK(h.levels[2].face_count() > 0);
+// Doo-Sabin's feature split takes non-manifold elements as features, as OpenSubdiv tags them
+// (a non-manifold edge infinitely sharp, a non-manifold vertex a corner): the flaps stay
+// joined along their hinge and the bow-tie's grids at their shared vertex, at every level,
+// with no gap to warn about.
+TEST_CASE("Doo-Sabin keeps non-manifold hinges and pinches joined") {
+  for (const auto& m : {flap_fan(3, false), bow_tie(false)}) {
+    CAPTURE(m.name);
+    const Hierarchy h = refined(m, "doo-sabin", 2);
+    CHECK(h.warnings.empty());
+    for (int l = 1; l <= 2; ++l) {
+      const Level& L = h.levels[size_t(l)];
+      int joined = 0;
+      for (Index v = 0; v < L.vertex_count; ++v) joined += L.non_manifold_vertex(v) ? 1 : 0;
+      CHECK(joined >= 1);
     }
+    CHECK(all_finite(interpolate(h, 2, m.mesh.positions, 3)));
+  }
+}
+
+// Mid-edge has no face at a non-manifold vertex (no cycle of faces to take the midpoints of).
+TEST_CASE("mid-edge on non-manifold input: a valid mesh and one warning") {
+  for (const auto& m : {flap_fan(3, false), bow_tie(false)}) {
+    CAPTURE(m.name);
+    const Hierarchy h = refined(m, "mid-edge", 2);
+    // One warning per level that met non-manifold elements (at most one per level).
+    REQUIRE(!h.warnings.empty());
+    CHECK(h.warnings.size() <= 2);
+    CHECK(h.warnings[0].find("level 1: ") == 0);
+    for (const auto& w : h.warnings) CHECK(w.find("non-manifold") != std::string::npos);
+    CHECK(all_finite(interpolate(h, 2, m.mesh.positions, 3)));
+    CHECK(h.levels[2].face_count() > 0);
   }
 }
 
 // Every shipped surface scheme on every kind of non-manifold input it accepts the faces of:
-// refined with finite positions (and, for the dual and sqrt3 splits, a warning), never
+// refined with finite positions, never
 // refused for being non-manifold and never a crash.
 TEST_CASE("every shipped surface scheme on non-manifold input: a valid result") {
   for (const SchemeListing& listing : list_schemes()) {
