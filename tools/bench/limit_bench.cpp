@@ -253,10 +253,6 @@ void run(const Mesh& m, int points, int order) {
   double p[3], du[3], dv[3], sum = 0;
   for (int f = 0; f < faces; ++f) bfr(f, 0.3, 0.2, p, du, dv);
   const auto t2 = Clock::now();
-  const double c2 = cpu_seconds();
-  std::printf("%s, %d faces: Bfr's preparation %.3g s (CPU %.3g s, %.3g us per face); ours / Bfr CPU %.1f\n", m.name,
-              faces, seconds(t1, t2), c2 - c1, (c2 - c1) / faces * 1e6, (c1 - c0) / (c2 - c1));
-  std::fflush(stdout);
 
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> unit(0, 1);
