@@ -8,6 +8,9 @@
 //   subdiv-limit-bench issue [points]  issue 29's scenario: 1M random points (by default) on
 //                                      the 1M-face torus and on a 960k-quad mesh with 480k
 //                                      extraordinary vertices, in alternating rounds
+//   subdiv-limit-bench issue [points] [n]  the same on the n x n torus (and the split
+//                                      (0.4 n)^2 one); the preparation lines give the CPU time
+//                                      per face too (flat in n: local_patch.h)
 #include <algorithm>
 #include <array>
 #include <chrono>
