@@ -96,15 +96,21 @@ LimitNodes::LimitNodes(const Scheme& scheme, const FeatureOptions& features, int
 // itself: a thread waiting inside those loops must not pick up another evaluation of the
 // caller's parallel loop (tessellate), which would lock the same mutex again.
 int LimitNodes::intern(const Level& cut, Index face, std::vector<Index>& order) {
+  // Labelled before the lock: the labelling is most of a face's preparation and reads no
+  // shared state, so parallel preparations wait for each other only on the index.
+  const Labelling lab = label_neighbourhood(cut, CentreKind::Face, face, 0, radius_ + 3);
   return tbb::this_task_arena::isolate([&] {
     std::lock_guard lock(mutex_);
-    return intern_locked(cut, face, order);
+    return intern_labelled(cut, face, lab, order);
   });
 }
 
 int LimitNodes::intern_locked(const Level& cut, Index face, std::vector<Index>& order) {
-  // Labelled beyond the cut's radius, so every vertex of the cut has a label.
-  const Labelling lab = label_neighbourhood(cut, CentreKind::Face, face, 0, radius_ + 3);
+  return intern_labelled(cut, face, label_neighbourhood(cut, CentreKind::Face, face, 0, radius_ + 3), order);
+}
+
+// `lab` is labelled beyond the cut's radius, so every vertex of the cut has a label.
+int LimitNodes::intern_labelled(const Level& cut, Index face, const Labelling& lab, std::vector<Index>& order) {
   if (lab.vertices.size() != size_t(cut.vertex_count))
     throw Error("internal: a cut for limit evaluation has vertices its labelling does not reach");
   const Index kept = Index(lab.count_within(depth_));

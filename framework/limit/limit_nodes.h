@@ -60,6 +60,8 @@ struct LimitNode {
   std::vector<std::string> corner_error;
 };
 
+struct Labelling;
+
 class LimitNodes {
 public:
   // Cuts have `radius` face rings; the evaluation carries the vertices within `depth` rings
@@ -103,6 +105,7 @@ private:
   bool grid_locked(LimitNode& n);
   bool bspline_step_locked(int id);
   int intern_locked(const Level& cut, Index face, std::vector<Index>& order);
+  int intern_labelled(const Level& cut, Index face, const Labelling& lab, std::vector<Index>& order);
 
   const Scheme& scheme_;
   FeatureOptions features_;

@@ -8,6 +8,9 @@
 //   subdiv-limit-bench issue [points]  issue 29's scenario: 1M random points (by default) on
 //                                      the 1M-face torus and on a 960k-quad mesh with 480k
 //                                      extraordinary vertices, in alternating rounds
+//   subdiv-limit-bench issue [points] [n]  the same on the n x n torus (and the split
+//                                      (0.4 n)^2 one); the preparation lines give the CPU time
+//                                      per face too (flat in n: local_patch.h)
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -15,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <random>
 #include <vector>
 
@@ -29,6 +33,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+// The process's CPU time (all threads): on a shared machine the wall time grows with the
+// load, the CPU time much less.
+double cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
 
 struct Mesh {
   const char* name = "";
@@ -136,10 +147,13 @@ void run_alternating(const Mesh& m, int points, int rounds) {
   const std::vector<subdiv::Index> corners(m.corners.begin(), m.corners.end());
   const double load_before = load_average();
   const auto t0 = Clock::now();
+  const double c0 = cpu_seconds();
   const subdiv::LimitSurface ours(subdiv::load_scheme("catmull-clark"), subdiv::build_level(m.vertices, offsets, corners));
   for (int f = 0; f < faces; ++f) ours.evaluate(f, 0.3, 0.2, m.xyz, 3);
   const auto t1 = Clock::now();
-  std::printf("%s, %d faces: our preparation %.3g s\n", m.name, faces, seconds(t0, t1));
+  const double c1 = cpu_seconds();
+  std::printf("%s, %d faces: our preparation %.3g s (CPU %.3g s, %.3g us per face)\n", m.name, faces, seconds(t0, t1),
+              c1 - c0, (c1 - c0) / faces * 1e6);
   std::fflush(stdout);
   Far::TopologyDescriptor desc;
   desc.numVertices = m.vertices;
@@ -164,6 +178,10 @@ void run_alternating(const Mesh& m, int points, int rounds) {
   double p[3], du[3], dv[3], sum = 0;
   for (int f = 0; f < faces; ++f) bfr(f, 0.3, 0.2, p, du, dv);
   const auto t2 = Clock::now();
+  const double c2 = cpu_seconds();
+  std::printf("%s, %d faces: Bfr's preparation %.3g s (CPU %.3g s, %.3g us per face); ours / Bfr CPU %.1f\n", m.name,
+              faces, seconds(t1, t2), c2 - c1, (c2 - c1) / faces * 1e6, (c1 - c0) / (c2 - c1));
+  std::fflush(stdout);
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> unit(0, 1);
   std::vector<std::array<double, 3>> at;

@@ -549,7 +549,7 @@ struct SchemeLimits::Impl {
     auto back = [&](const LimitRows& deeper) { return renumbered(pulled_back(deeper, h.stencils[0]), e.original); };
     Labelling child_lab;
     if (kind == CentreKind::Vertex) {
-      const Index local = e.local_of[size_t(c)];
+      const Index local = e.local(c);
       if (centre == CentreKind::Vertex) {
         const Index cc = child_vertex(h.origins[0], local);
         if (cc == kNone) return approximate(L, kind, c, "the vertex has no child vertex");

@@ -26,9 +26,11 @@ double sig_sharpness(float s) { return s >= kInfinitelySharp ? double(kInfinitel
 // storing it and returns false at the first difference.
 bool label_into(Labelling& out, const Level& L, CentreKind kind, Index centre, int start, int radius,
                 bool with_signature, const std::vector<double>* expected = nullptr) {
-  if (out.label_of.size() != size_t(L.vertex_count)) out.label_of.assign(size_t(L.vertex_count), kNone);
-  else
-    for (Index v : out.vertices) out.label_of[size_t(v)] = kNone;
+  // Only the entries set by the last use are cleared; the array only grows (entries past
+  // this level's vertices stay kNone), so a reused labelling costs its neighbourhood only.
+  for (Index v : out.vertices)
+    if (size_t(v) < out.label_of.size()) out.label_of[size_t(v)] = kNone;
+  if (out.label_of.size() < size_t(L.vertex_count)) out.label_of.resize(size_t(L.vertex_count), kNone);
   out.vertices.clear(), out.distance.clear(), out.signature.clear();
   std::vector<int>& entry = out.entry;
   entry.clear();
@@ -104,6 +106,38 @@ Labelling label(const Level& L, CentreKind kind, Index centre, int start, int ra
   label_into(out, L, kind, centre, start, radius, with_signature);
   return out;
 }
+
+// Per-thread scratch for extract_neighbourhood, indexed by the original level's vertices
+// and faces: every entry is kNone / 0 between calls, so a call touches only its own
+// neighbourhood and extracting around every face of a level is linear in the level, not
+// quadratic. Thread-local because preparation runs in parallel (TBB).
+struct ExtractScratch {
+  Labelling lab;
+  std::vector<Index> local_of;  // original vertex -> new vertex, or kNone
+  std::vector<char> taken;      // original face -> taken
+  std::vector<Index> touched_vertices, touched_faces;
+
+  void fit(const Level& L) {
+    if (local_of.size() < size_t(L.vertex_count)) local_of.resize(size_t(L.vertex_count), kNone);
+    if (taken.size() < size_t(L.face_count())) taken.resize(size_t(L.face_count()), 0);
+  }
+  void clear() {
+    for (Index v : touched_vertices) local_of[size_t(v)] = kNone;
+    for (Index f : touched_faces) taken[size_t(f)] = 0;
+    touched_vertices.clear(), touched_faces.clear();
+  }
+};
+
+ExtractScratch& extract_scratch() {
+  thread_local ExtractScratch scratch;
+  return scratch;
+}
+
+// Clears the scratch on every way out, exceptions included, so the next call finds it clean.
+struct ScratchGuard {
+  ExtractScratch& s;
+  ~ScratchGuard() { s.clear(); }
+};
 
 }  // namespace
 
@@ -285,17 +319,26 @@ LocalConfig vertex_config(const Level& L, Index v, int first_step, bool* semi_sh
 }
 
 Extracted extract_neighbourhood(const Level& L, CentreKind kind, Index centre, int radius) {
-  const Labelling lab = label(L, kind, centre, 0, radius, false);
+  ExtractScratch& scratch = extract_scratch();
+  scratch.fit(L);
+  const ScratchGuard guard{scratch};
+  Labelling& lab = scratch.lab;
+  label_into(lab, L, kind, centre, 0, radius, false);
+  std::vector<Index>& local_of = scratch.local_of;
+  std::vector<char>& taken = scratch.taken;
   Extracted out;
-  out.local_of.assign(size_t(L.vertex_count), kNone);
-  std::vector<char> taken(size_t(L.face_count()), 0);
   std::vector<Index> faces, extra_vertices;
+  auto take = [&](Index f) {
+    taken[size_t(f)] = 1;
+    faces.push_back(f);
+    scratch.touched_faces.push_back(f);
+  };
   for (size_t q = 0; q < lab.vertices.size(); ++q) {
     if (lab.distance[q] >= radius) break;
     for (Index f : L.ring_faces(lab.vertices[q]))
-      if (!taken[size_t(f)]) taken[size_t(f)] = 1, faces.push_back(f);
+      if (!taken[size_t(f)]) take(f);
   }
-  if (kind == CentreKind::Face && !taken[size_t(centre)]) taken[size_t(centre)] = 1, faces.push_back(centre);
+  if (kind == CentreKind::Face && !taken[size_t(centre)]) take(centre);
   // A vertex whose taken faces form two fans would be non-manifold: take all its faces,
   // until no vertex is pinched.
   for (bool changed = true; changed;) {
@@ -319,7 +362,7 @@ Extracted extract_neighbourhood(const Level& L, CentreKind kind, Index centre, i
       if (missing == 0 && !L.on_boundary(v)) runs = 1;
       if (runs <= 1) continue;
       for (Index f : ring)
-        if (!taken[size_t(f)]) taken[size_t(f)] = 1, faces.push_back(f), changed = true;
+        if (!taken[size_t(f)]) take(f), changed = true;
     }
   }
   // Vertices of added faces that the labelling did not reach.
@@ -328,24 +371,24 @@ Extracted extract_neighbourhood(const Level& L, CentreKind kind, Index centre, i
       if (lab.label_of[size_t(v)] == kNone) extra_vertices.push_back(v);
   std::sort(extra_vertices.begin(), extra_vertices.end());
   extra_vertices.erase(std::unique(extra_vertices.begin(), extra_vertices.end()), extra_vertices.end());
+  auto keep = [&](Index v) {
+    local_of[size_t(v)] = Index(out.original.size());
+    scratch.touched_vertices.push_back(v);
+    out.original.push_back(v);
+  };
   // New vertices in label order, so the centre is vertex 0 (a face centre: its corners first).
   for (size_t q = 0; q < lab.vertices.size(); ++q) {
     const Index v = lab.vertices[q];
     bool used = false;
     for (Index f : L.ring_faces(v))
       if (taken[size_t(f)]) { used = true; break; }
-    if (!used) continue;
-    out.local_of[size_t(v)] = Index(out.original.size());
-    out.original.push_back(v);
+    if (used) keep(v);
   }
-  for (Index v : extra_vertices) {
-    out.local_of[size_t(v)] = Index(out.original.size());
-    out.original.push_back(v);
-  }
+  for (Index v : extra_vertices) keep(v);
   std::vector<Index> offsets{0}, corners;
   std::sort(faces.begin(), faces.end());
   for (Index f : faces) {
-    for (Index v : L.face(f)) corners.push_back(out.local_of[size_t(v)]);
+    for (Index v : L.face(f)) corners.push_back(local_of[size_t(v)]);
     offsets.push_back(Index(corners.size()));
     out.face_original.push_back(f);
   }
@@ -365,6 +408,11 @@ Extracted extract_neighbourhood(const Level& L, CentreKind kind, Index centre, i
     for (Index v = 0; v < E.vertex_count; ++v) E.vertex_sharpness[size_t(v)] = L.vertex_sharp(out.original[size_t(v)]);
   }
   return out;
+}
+
+Index Extracted::local(Index v) const {
+  const auto it = std::find(original.begin(), original.end(), v);
+  return it == original.end() ? kNone : Index(it - original.begin());
 }
 
 }  // namespace subdiv

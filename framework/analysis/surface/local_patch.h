@@ -76,9 +76,9 @@ struct Labelling {
 // vertices at the radius, their valence, boundary flag and sharpness. Two neighbourhoods
 // with equal signatures are the same up to the radius.
 Labelling label_neighbourhood(const Level& level, CentreKind kind, Index centre, int start, int radius);
-// The same into a reused labelling (of the same level): only the entries set by its last
-// use are cleared, so labelling every vertex of a large level costs nothing per vertex
-// beyond its neighbourhood.
+// The same into a reused labelling (of any level; label_of may be longer than the level,
+// the extra entries kNone): only the entries set by its last use are cleared, so labelling
+// every vertex of a large level costs nothing per vertex beyond its neighbourhood.
 void label_neighbourhood(Labelling& reuse, const Level& level, CentreKind kind, Index centre, int start, int radius);
 // Labels into `reuse` and compares with a signature as it goes (stopping at the first
 // difference; the labelling is then incomplete). True when the neighbourhood has it.
@@ -99,9 +99,12 @@ LocalConfig vertex_config(const Level& level, Index v, int first_step, bool* sem
 struct Extracted {
   Level level;
   std::vector<Index> original;  // new vertex -> original vertex
-  std::vector<Index> local_of;  // original vertex -> new vertex or kNone (size of the original)
   std::vector<Index> face_original;  // new face -> original face
+
+  Index local(Index original_vertex) const;  // the new vertex, or kNone (a linear search)
 };
+// Costs the neighbourhood only, not the level: scratch arrays over the level are kept per
+// thread and cleared entry by entry, so extracting around every face is linear overall.
 Extracted extract_neighbourhood(const Level& level, CentreKind kind, Index centre, int radius);
 
 }  // namespace subdiv

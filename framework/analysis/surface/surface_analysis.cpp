@@ -300,7 +300,7 @@ RefinedNet refine_net(const AnalysisRun& cx, const EigenvectorNet& net) {
     if (label != kNone && label < mb) pos[size_t(3 * v)] = net.values(label, 0), pos[size_t(3 * v + 1)] = net.values(label, 1);
   }
   Index centre = kNone;
-  if (p.centre_kind == CentreKind::Vertex) centre = e.local_of[size_t(p.centre)];
+  if (p.centre_kind == CentreKind::Vertex) centre = e.local(p.centre);
   else
     for (size_t f = 0; f < e.face_original.size(); ++f)
       if (e.face_original[f] == p.centre) centre = Index(f);
