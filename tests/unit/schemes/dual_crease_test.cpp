@@ -231,6 +231,20 @@ TEST_CASE("dual crease: a crease loop of valences 3-6, not planar, is Chaikin's 
   }
 }
 
+// The crease loop of `t` at levels 1..levels of `h` is Chaikin's refinement of the crease
+// polygon, level by level.
+namespace {
+void check_chaikin_crease_loop(const Hierarchy& h, const CreasedTorus& t, int levels) {
+  Polygon expected = points_of(t.loop, t.mesh.positions);
+  for (int l = 1; l <= levels; ++l) {
+    CAPTURE(l);
+    expected = chaikin_closed(expected);
+    const auto pos = interpolate(h, l, t.mesh.positions, 3);
+    check_same_closed_polygon(points_of(crease_chain(h.levels[size_t(l)], kNone), pos), expected, 1e-12);
+  }
+}
+}  // namespace
+
 TEST_CASE("dual crease: a stated corner crease rule gives both points of a split corner, mirrored on the arriving edge") {
   // Chaikin's rule 0 (3/4 v + 1/4 next) stated as the `crease` corner rule instead of by
   // "curve": on the arriving edge it applies mirrored (3/4 v + 1/4 prev), so the crease loop,
@@ -246,13 +260,7 @@ TEST_CASE("dual crease: a stated corner crease rule gives both points of a split
   RefineOptions options;
   options.levels = 3;
   const Hierarchy h = refine(*s, tagged(t.mesh, t.loop, true, 10.f), options);
-  Polygon expected = points_of(t.loop, t.mesh.positions);
-  for (int l = 1; l <= 3; ++l) {
-    CAPTURE(l);
-    expected = chaikin_closed(expected);
-    const auto pos = interpolate(h, l, t.mesh.positions, 3);
-    check_same_closed_polygon(points_of(crease_chain(h.levels[size_t(l)], kNone), pos), expected, 1e-12);
-  }
+  check_chaikin_crease_loop(h, t, 3);
 }
 
 TEST_CASE("mid-edge crease: a crease loop of valences 3-6 is the polygon of its edge midpoints at levels 1-4") {
@@ -637,13 +645,7 @@ TEST_CASE("dual crease: one non-manifold vertex elsewhere leaves the crease Chai
   RefineOptions options;
   options.levels = 3;
   const Hierarchy h = refine(*s, base, options);
-  Polygon expected = points_of(t.loop, t.mesh.positions);
-  for (int l = 1; l <= 3; ++l) {
-    CAPTURE(l);
-    expected = chaikin_closed(expected);
-    const auto pos = interpolate(h, l, t.mesh.positions, 3);
-    check_same_closed_polygon(points_of(crease_chain(h.levels[size_t(l)], kNone), pos), expected, 1e-12);
-  }
+  check_chaikin_crease_loop(h, t, 3);
 }
 
 TEST_CASE("dual crease: limit points next to a semi-sharp crease or corner are refused (they round off)") {
