@@ -139,6 +139,21 @@ double load_average() {
 // Issue 29's scenario: preparation (every face's first point) and `points` random points,
 // position and first derivatives, ours and Bfr in alternating rounds of the same points'
 // quarters, so that a change of load hits both; the largest difference between the two.
+// OpenSubdiv's refiner of `m` (Catmull-Clark, or Loop for triangle meshes), boundaries as
+// SubdivKit's default (edges and corners). The caller owns it.
+OpenSubdiv::Far::TopologyRefiner* osd_refiner(const Mesh& m) {
+  using namespace OpenSubdiv;
+  Far::TopologyDescriptor desc;
+  desc.numVertices = m.vertices;
+  desc.numFaces = int(m.sizes.size());
+  desc.numVertsPerFace = m.sizes.data();
+  desc.vertIndicesPerFace = m.corners.data();
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  Sdc::Options sdc;
+  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+  return Factory::Create(desc, Factory::Options(m.loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, sdc));
+}
+
 void run_alternating(const Mesh& m, int points, int rounds) {
   using namespace OpenSubdiv;
   const int faces = int(m.sizes.size());
@@ -155,15 +170,7 @@ void run_alternating(const Mesh& m, int points, int rounds) {
   std::printf("%s, %d faces: our preparation %.3g s (CPU %.3g s, %.3g us per face)\n", m.name, faces, seconds(t0, t1),
               c1 - c0, (c1 - c0) / faces * 1e6);
   std::fflush(stdout);
-  Far::TopologyDescriptor desc;
-  desc.numVertices = m.vertices;
-  desc.numFaces = faces;
-  desc.numVertsPerFace = m.sizes.data();
-  desc.vertIndicesPerFace = m.corners.data();
-  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  Sdc::Options sdc;
-  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
-  Far::TopologyRefiner* refiner = Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc));
+  OpenSubdiv::Far::TopologyRefiner* refiner = osd_refiner(m);
   Bfr::RefinerSurfaceFactory<> factory(*refiner);
   Bfr::Surface<double> surface;
   Bfr::Surface<double>::PointDescriptor d(3);
@@ -229,15 +236,7 @@ void run(const Mesh& m, int points, int order) {
   const subdiv::LimitSurface ours(subdiv::load_scheme(m.loop ? "loop" : "catmull-clark"), subdiv::build_level(m.vertices, offsets, corners));
   for (int f = 0; f < faces; ++f) ours.evaluate(f, 0.3, 0.2, m.xyz, 3);
   const auto t1 = Clock::now();
-  Far::TopologyDescriptor desc;
-  desc.numVertices = m.vertices;
-  desc.numFaces = faces;
-  desc.numVertsPerFace = m.sizes.data();
-  desc.vertIndicesPerFace = m.corners.data();
-  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  Sdc::Options sdc;
-  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
-  Far::TopologyRefiner* refiner = Factory::Create(desc, Factory::Options(m.loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, sdc));
+  OpenSubdiv::Far::TopologyRefiner* refiner = osd_refiner(m);
   Bfr::RefinerSurfaceFactory<> factory(*refiner);
   Bfr::Surface<double> surface;
   Bfr::Surface<double>::PointDescriptor d(3);
