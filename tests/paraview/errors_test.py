@@ -54,17 +54,22 @@ def fin():
     return source
 
 
-# Non-manifold input: the primal splits refine it as OpenSubdiv does; the dual split cannot
-# make a face for a non-manifold edge and says so in the output window (a warning: the rest
-# of the surface is refined, as `subdiv refine` does).
+# Non-manifold input: the primal splits refine it as OpenSubdiv does; Doo-Sabin takes the
+# non-manifold edge as a crease its three sheets share (its ends corners: three faces, joined,
+# no gap); the mid-edge split cannot make a face at a non-manifold vertex and says so in the
+# output window (a warning: the rest of the surface is refined, as `subdiv refine` does).
 fin_loop = SubdivKitRefine(Input=fin(), Scheme="loop", Levels=1)  # noqa: F821
 fin_loop.UpdatePipeline()
 assert pv.fetch(fin_loop).GetNumberOfPolys() == 12, pv.fetch(fin_loop).GetNumberOfPolys()
+fin_doo_sabin = SubdivKitRefine(Input=fin(), Scheme="doo-sabin", Levels=1)  # noqa: F821
+fin_doo_sabin.UpdatePipeline()
+assert pv.fetch(fin_doo_sabin).GetNumberOfPolys() == 3, pv.fetch(fin_doo_sabin).GetNumberOfPolys()
+assert pv.fetch(fin_doo_sabin).GetNumberOfPoints() == 5, pv.fetch(fin_doo_sabin).GetNumberOfPoints()
 with pv.CapturedMessages() as messages:
-    fin_dual = SubdivKitRefine(Input=fin(), Scheme="doo-sabin", Levels=1)  # noqa: F821
-    fin_dual.UpdatePipeline()
+    fin_mid_edge = SubdivKitRefine(Input=fin(), Scheme="mid-edge", Levels=1)  # noqa: F821
+    fin_mid_edge.UpdatePipeline()
 assert "WARN" in messages.text.upper() and "non-manifold" in messages.text, messages.text
-print("non-manifold input, doo-sabin:", messages.text.strip().splitlines()[-1][:200])
+print("non-manifold input, mid-edge:", messages.text.strip().splitlines()[-1][:200])
 
 # ParaView went on: the same pipeline refines once the input is right.
 good = SubdivKitRefine(Input=cube, Scheme="catmull-clark", Levels=1)  # noqa: F821
