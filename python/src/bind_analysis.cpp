@@ -84,8 +84,8 @@ py::dict curve_dict(const subdiv::CurveSchemeAnalysis& r) {
   return d;
 }
 
-py::object analyze(py::handle scheme, const std::vector<int>& valences, bool boundary, const std::string& interpolation,
-                   int level, int max_ring, bool characteristic_map) {
+py::object analyze(py::handle scheme, const std::vector<int>& valences, bool boundary, bool crease,
+                   const std::string& interpolation, int level, int max_ring, bool characteristic_map) {
   if (!py::isinstance<SchemeHandle>(scheme))
     throw subdiv::Error("analyze: expected a subdivkit.Scheme (subdivkit.analyze loads names)");
   const SchemeHandle& h = scheme.cast<const SchemeHandle&>();
@@ -99,7 +99,7 @@ py::object analyze(py::handle scheme, const std::vector<int>& valences, bool bou
     return curve_dict(r);
   }
   const subdiv::ValenceAnalysisRequest request{h.surface, valences, boundary, level,
-                                               analysis_options(interpolation, max_ring, characteristic_map)};
+                                               analysis_options(interpolation, max_ring, characteristic_map), crease};
   std::vector<subdiv::SurfaceAnalysis> results;
   {
     py::gil_scoped_release unlocked;
@@ -113,7 +113,7 @@ py::object analyze(py::handle scheme, const std::vector<int>& valences, bool bou
 }  // namespace
 
 void bind_analysis(py::module_& m) {
-  m.def("_analyze", &analyze, py::arg("scheme"), py::arg("valences"), py::arg("boundary"),
+  m.def("_analyze", &analyze, py::arg("scheme"), py::arg("valences"), py::arg("boundary"), py::arg("crease"),
         py::arg("boundary_interpolation"), py::arg("level"), py::arg("max_ring"), py::arg("characteristic_map"),
         "Analyses as dicts of arrays (subdivkit.analyze gathers them).");
 }

@@ -85,8 +85,8 @@ class CurveAnalysis:
         return self.summary
 
 
-def analyze(scheme, valences=range(3, 13), *, boundary=False, boundary_interpolation="edges-and-corners", level=0,
-            max_ring=5, characteristic_map=True):
+def analyze(scheme, valences=range(3, 13), *, boundary=False, crease=False, boundary_interpolation="edges-and-corners",
+            level=0, max_ring=5, characteristic_map=True):
     """Analyse a scheme's convergence and smoothness.
 
     Surface schemes (returns SurfaceAnalysis): the local subdivision matrix around a vertex
@@ -94,7 +94,10 @@ def analyze(scheme, valences=range(3, 13), *, boundary=False, boundary_interpola
     and its eigen-structure checked (Reif 1995): lambda_0 = 1 simple, lambda_1 = lambda_2
     real with two eigenvectors dominating |lambda_3|, and a regular, injective
     characteristic map. ``boundary=True`` analyses boundary vertices instead (valences
-    from 2). ``level`` picks the weights of level-dependent schemes.
+    from 2); ``crease=True`` crease vertices (infinitely sharp ring edges 0 and n/2; a crease
+    whose two sides do not read each other's points is judged as two boundaries, as
+    ``subdiv analyze --crease`` does: docs/analysis.md). Dual schemes are analysed at the
+    face such a vertex's faces become. ``level`` picks the weights of level-dependent schemes.
 
     Curve schemes (returns CurveAnalysis; ``valences`` is ignored): the symbol a(z),
     convergence and C^k smoothness by difference schemes, and the local matrix's spectrum.
@@ -109,7 +112,7 @@ def analyze(scheme, valences=range(3, 13), *, boundary=False, boundary_interpola
         valence_list = [int(n) for n in np.atleast_1d(np.asarray(valences)).reshape(-1)]
     except (TypeError, ValueError):
         raise Error(f"valences={valences!r}: give whole numbers, e.g. range(3, 13)") from None
-    result = _subdivkit._analyze(scheme, valence_list, bool(boundary), boundary_interpolation, int(level),
+    result = _subdivkit._analyze(scheme, valence_list, bool(boundary), bool(crease), boundary_interpolation, int(level),
                                  int(max_ring), bool(characteristic_map))
     if scheme.kind == "curve":
         r = result

@@ -41,5 +41,5 @@ class CurveAnalysis:
     details: dict[str, Any]
 
 def analyze(scheme: Scheme | str, valences: Iterable[int] | npt.ArrayLike = ..., *, boundary: bool = False,
-            boundary_interpolation: str = "edges-and-corners", level: int = 0, max_ring: int = 5,
+            crease: bool = False, boundary_interpolation: str = "edges-and-corners", level: int = 0, max_ring: int = 5,
             characteristic_map: bool = True) -> SurfaceAnalysis | CurveAnalysis: ...

@@ -73,3 +73,18 @@ def test_a_scheme_that_fails_says_why():
     assert not a.c1.any()
     assert np.allclose(a.subdominant, 0.5) and np.allclose(a.lambda3, 0.5)
     assert all(v.startswith("fails:") and "multiplicity" in v for v in a.verdicts)
+
+
+def test_crease_analysis_judges_each_side_as_a_boundary():
+    # A crease of valence n with sharp ring edges 0 and n/2 splits the ring into two sides of
+    # n/2 faces; where the sides' rows do not read each other (Catmull-Clark), each side is the
+    # boundary of valence n/2 + 1 (docs/analysis.md), so the spectra agree. The regular crease
+    # (n = 4) is the cubic B-spline's: subdominant eigenvalue 1/2; Loop's regular crease too.
+    crease = sk.analyze("catmull-clark", [4, 6, 8], crease=True)
+    boundary = sk.analyze("catmull-clark", [3, 4, 5], boundary=True)
+    assert np.allclose(crease.subdominant, boundary.subdominant, atol=1e-12)
+    assert abs(crease.subdominant[0] - 0.5) < 1e-12 and bool(crease.c1[0])
+    loop = sk.analyze("loop", [6], crease=True)
+    assert abs(loop.subdominant[0] - 0.5) < 1e-12 and bool(loop.c1[0])
+    with pytest.raises(sk.Error):
+        sk.analyze("catmull-clark", [4], crease=True, boundary=True)
