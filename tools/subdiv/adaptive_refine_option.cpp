@@ -20,7 +20,11 @@ void add_adaptive_options(CLI::App* cmd, AdaptiveArgs& a) {
                   "watertight output (coarse faces take the finer vertices along their edges), cell arrays "
                   "face_level and base_face; with --limit every vertex on the limit surface (docs/limit.md)")
       ->check(CLI::Range(0, 12));
-  cmd->add_option("--tolerance", a.tolerance,
+  add_tolerance_option(cmd, a.tolerance);
+}
+
+void add_tolerance_option(CLI::App* cmd, double& tolerance) {
+  cmd->add_option("--tolerance", tolerance,
                   "With --adaptive: also split every face whose bilinear patch through its corners' limit points is "
                   "farther than T from the limit surface (measured at 5 x 5 points per face), up to level L");
 }

@@ -17,6 +17,8 @@ struct AdaptiveArgs {
 };
 
 void add_adaptive_options(CLI::App* cmd, AdaptiveArgs& args);
+// --tolerance T alone, for commands with an --adaptive of their own (subdiv evaluate).
+void add_tolerance_option(CLI::App* cmd, double& tolerance);
 
 // Runs the adaptive refinement of `request`'s mesh and scheme, writes `output` (a mesh file)
 // and prints a summary unless quiet. `other_levels`: -l was given as well (refused).

@@ -27,6 +27,7 @@
 #include "framework/util/parallel_for_all.h"
 #include "framework/util/quoted_text.h"
 #include "progress.h"
+#include "adaptive_refine_option.h"
 #include "safe_print.h"
 
 namespace subdiv::cli {
@@ -43,6 +44,7 @@ struct EvaluateArgs {
   int derivatives = 1;
   int samples = 0;
   int adaptive = -1;  // --adaptive L; < 0: not given
+  double tolerance = 0;  // --tolerance T with --adaptive; 0: features only
   int level_distance = -1;  // --level-distance L; < 0: not given
   bool limit = false;
   std::string approximate, bezier_net;  // --approximate bezier [--bezier-net OUT.vtu]
@@ -159,6 +161,7 @@ void run(const EvaluateArgs& a) {
   if (a.level_distance >= 0 && !a.approximate.empty())
     throw Error("--approximate bezier goes with --samples N or --at POINTS.csv, not --level-distance");
   if (a.limit && a.adaptive < 0) throw Error("--limit goes with --adaptive L");
+  if (a.tolerance != 0 && a.adaptive < 0) throw Error("--tolerance goes with --adaptive L");
   if (!a.approximate.empty() && a.adaptive >= 0)
     throw Error("--approximate bezier goes with --samples N or --at POINTS.csv, not --adaptive");
   if (a.approximate.empty() && !a.bezier_net.empty()) throw Error("--bezier-net goes with --approximate bezier");
@@ -179,7 +182,7 @@ void run(const EvaluateArgs& a) {
     return;
   }
   if (a.adaptive >= 0) {  // the same as subdiv refine --adaptive L (adaptive_refine_option.cpp)
-    AdaptiveResult r = refine_adaptive_request(adaptive_request_from(evaluate_request(a, progress), a.adaptive, 0, a.limit));
+    AdaptiveResult r = refine_adaptive_request(adaptive_request_from(evaluate_request(a, progress), a.adaptive, a.tolerance, a.limit));
     for (const std::string& w : r.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
     print_safe("subdiv: {}\n", adaptive_summary(r));
     write_with_bar(a.output, adaptive_mesh_data(std::move(r.mesh), std::move(r.point_arrays)), progress);
@@ -237,6 +240,7 @@ void add_evaluate_command(CLI::App& app) {
                   "creases, sharp vertices, faces of another shape), watertight (coarse faces take the finer "
                   "vertices along their edges), with cell arrays face_level and base_face")
       ->check(CLI::Range(0, 12));
+  add_tolerance_option(cmd, args->tolerance);
   cmd->add_flag("--limit", args->limit, "With --adaptive: every vertex on the limit surface");
   cmd->add_option("--level-distance", args->level_distance,
                   "Instead of --at: uniform level L's vertices moved onto the limit surface (at their own (face, u, "

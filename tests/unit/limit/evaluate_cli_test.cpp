@@ -110,6 +110,34 @@ TEST_CASE("subdiv evaluate --adaptive writes a closed mesh with fewer faces than
   CHECK_FALSE(fs::exists(dir / "x.obj"));
 }
 
+// --tolerance: the same request as subdiv refine --adaptive L --tolerance T (one pipeline),
+// so the same mesh; on a regular torus, where no face touches a feature, only the tolerance
+// splits faces, and a finer tolerance splits more of them.
+TEST_CASE("subdiv evaluate --adaptive --tolerance splits what subdiv refine --adaptive --tolerance splits") {
+  const fs::path dir = test::fresh_dir("evaluate-cli-tolerance");
+  const std::string mesh = test::source_path("examples/meshes/torus-quads.obj");
+  Index previous = 0;
+  for (const std::string tolerance : {"0", "0.05", "0.01"}) {
+    CAPTURE(tolerance);
+    const auto e = test::run_subdiv("evaluate " + mesh + " --adaptive 2 --tolerance " + tolerance + " -o " +
+                                    (dir / "e.obj").string());
+    const auto r = test::run_subdiv("refine " + mesh + " --adaptive 2 --tolerance " + tolerance + " -o " +
+                                    (dir / "r.obj").string());
+    REQUIRE_MESSAGE(e.exit_code == 0, e.output);
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    const MeshData from_evaluate = read_mesh((dir / "e.obj").string()), from_refine = read_mesh((dir / "r.obj").string());
+    CHECK(from_evaluate.face_vertices == from_refine.face_vertices);
+    CHECK(from_evaluate.positions == from_refine.positions);
+    const Index faces = Index(from_evaluate.face_offsets.size()) - 1;
+    CHECK(faces > previous);
+    previous = faces;
+  }
+  const auto alone = test::run_subdiv("evaluate " + mesh + " --samples 2 --tolerance 0.1 -o " + (dir / "x.obj").string());
+  CHECK(alone.exit_code != 0);
+  CHECK(alone.output.find("--tolerance goes with --adaptive") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "x.obj"));
+}
+
 TEST_CASE("subdiv evaluate refuses bad rows with their number and leaves no output") {
   const fs::path dir = test::fresh_dir("evaluate-cli-bad");
   const std::string mesh = test::source_path("examples/meshes/cube.obj");
