@@ -12,9 +12,10 @@ float decremented_sharpness(float s) {
 
 namespace {
 
-// One semi-sharp edge of sharpness s among `count` semi-sharp edges whose sharpness sums to
-// `sum` (s included), with OpenSubdiv's float operations in its order.
-float chaikin(float s, float sum, int count) {
+// Chaikin's decay (DeRose, Kass & Truong 1998) of one semi-sharp edge of sharpness s among
+// `count` semi-sharp edges whose sharpness sums to `sum` (s included), with OpenSubdiv's
+// float operations in its order.
+float averaged_decay(float s, float sum, int count) {
   if (count > 1) {
     const float others = (sum - s) / float(count - 1);
     s = 0.75f * s + 0.25f * others;
@@ -40,7 +41,7 @@ void subdivide_sharpness_around_vertex(std::span<const float> parent, std::span<
   for (float s : parent)
     if (is_semi_sharp(s)) sum += s, ++count;
   for (size_t i = 0; i < n; ++i)
-    child[i] = is_semi_sharp(parent[i]) ? chaikin(parent[i], sum, count) : decremented_sharpness(parent[i]);
+    child[i] = is_semi_sharp(parent[i]) ? averaged_decay(parent[i], sum, count) : decremented_sharpness(parent[i]);
 }
 
 float child_edge_sharpness(const Level& parent, Index e, Index v, CreaseMethod method) {
@@ -51,7 +52,7 @@ float child_edge_sharpness(const Level& parent, Index e, Index v, CreaseMethod m
   int count = 0;
   for (Index other : ring)
     if (const float t = effective_sharpness(parent, other); is_semi_sharp(t)) sum += t, ++count;
-  return chaikin(s, sum, count);
+  return averaged_decay(s, sum, count);
 }
 
 }  // namespace subdiv
