@@ -12,10 +12,13 @@
 namespace subdiv::paraview {
 namespace {
 
+// Valence 2 exists only on a boundary (n ring edges, n - 1 faces), as in `subdiv analyze`.
 void check_valences(const AnalyzeRequest& r, const std::string& source) {
-  if (r.min_valence < 3 || r.max_valence > 64 || r.min_valence > r.max_valence)
-    throw Error(fmt::format("{}: Valences {}..{}: give a range from 3 to 64 with the first no larger than the "
-                            "last", source, r.min_valence, r.max_valence));
+  const int lowest = r.vertices == AnalysedVertices::Boundary ? 2 : 3;
+  if (r.min_valence < lowest || r.max_valence > kMaxAnalysedValence || r.min_valence > r.max_valence)
+    throw Error(fmt::format("{}: Valences {}..{}: give a range from {} to {} with the first no larger than the "
+                            "last{}", source, r.min_valence, r.max_valence, lowest, kMaxAnalysedValence,
+                            lowest == 3 ? " (valence 2 exists at boundary vertices: set Vertices to boundary)" : ""));
 }
 
 }  // namespace
@@ -30,6 +33,8 @@ std::vector<SurfaceAnalysis> analyze_valences(const AnalyzeRequest& r, const std
   request.scheme = load_scheme(r.scheme, parameter_overrides(r.parameters));
   for (int n = r.min_valence; n <= r.max_valence; ++n) request.valences.push_back(n);
   request.options.features.boundary = r.boundary;
+  request.boundary = r.vertices == AnalysedVertices::Boundary;
+  request.crease = r.vertices == AnalysedVertices::Crease;
   request.options.characteristic_map = true;
   return analyse_valences(request);
 }

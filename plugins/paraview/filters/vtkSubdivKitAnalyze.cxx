@@ -48,6 +48,7 @@ int vtkSubdivKitAnalyze::RequestData(vtkInformation*, vtkInformationVector**, vt
     request.parameters = this->ParametersToRun();
     request.min_valence = this->Valences[0];
     request.max_valence = this->Valences[1];
+    request.vertices = static_cast<subdiv::paraview::AnalysedVertices>(this->Vertices);
     const auto analyses = subdiv::paraview::analyze_valences(request, this->Label);
     maps->ShallowCopy(subdiv::paraview::characteristic_maps_polydata(analyses));
     spectrum->ShallowCopy(subdiv::paraview::spectrum_table(analyses, this->Eigenvalues));
@@ -62,5 +63,7 @@ int vtkSubdivKitAnalyze::RequestData(vtkInformation*, vtkInformationVector**, vt
 void vtkSubdivKitAnalyze::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Valences: " << this->Valences[0] << ".." << this->Valences[1] << "\n"
-     << indent << "Eigenvalues: " << this->Eigenvalues << "\n";
+     << indent << "Eigenvalues: " << this->Eigenvalues << "\n"
+     << indent << "Vertices: " << (this->Vertices == 0 ? "interior" : this->Vertices == 1 ? "boundary" : "crease")
+     << "\n";
 }

@@ -1,6 +1,6 @@
 #pragma once
-// "SubdivKit Analyze": a source that analyses a surface scheme at interior extraordinary
-// vertices of a range of valences, as `subdiv analyze` does. Output port 0: the
+// "SubdivKit Analyze": a source that analyses a surface scheme at extraordinary vertices
+// of a range of valences — interior, boundary or crease vertices — as `subdiv analyze` does. Output port 0: the
 // characteristic maps as polydata, side by side along x (point arrays valence, ring,
 // radius); port 1: the spectrum as a table, one row per valence (valence, lambda_0 ...
 // the moduli of the leading eigenvalues, lambda_1 squared, c1, verdict), for a line chart
@@ -18,6 +18,8 @@ public:
   vtkGetVector2Macro(Valences, int);
   vtkSetClampMacro(Eigenvalues, int, 1, 64);  // leading moduli in the table
   vtkGetMacro(Eigenvalues, int);
+  vtkSetClampMacro(Vertices, int, 0, 2);  // 0 interior, 1 boundary, 2 crease
+  vtkGetMacro(Vertices, int);
 
 protected:
   vtkSubdivKitAnalyze();
@@ -32,4 +34,5 @@ private:
 
   int Valences[2] = {3, 12};
   int Eigenvalues = 8;
+  int Vertices = 0;
 };
