@@ -6,103 +6,51 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "framework/limit/bezier_sectors.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
 namespace {
 
-Point3 operator+(const Point3& a, const Point3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Point3 operator-(const Point3& a, const Point3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Point3 operator*(double s, const Point3& a) { return {s * a[0], s * a[1], s * a[2]}; }
+using bezier::QuadMesh;
+using bezier::Sector;
+using bezier::operator+;
+using bezier::operator-;
+using bezier::operator*;
 
-// The quads by their directed edges: the face and corner each directed edge a -> b starts at.
-class QuadMesh {
-public:
-  QuadMesh(const Level& level, std::span<const double> positions) : level_(level), positions_(positions) {
-    for (Index f = 0; f + 1 < Index(level.face_offsets.size()); ++f) {
-      const Index size = level.face_offsets[size_t(f) + 1] - level.face_offsets[size_t(f)];
-      if (size != 4)
-        throw Error(fmt::format("face {} has {} sides: Loop & Schaefer's patches are one per quad; refine the mesh "
-                                "once (subdiv refine -l 1 makes every face a quad) and approximate that",
-                                f, size));
-      for (int k = 0; k < 4; ++k)
-        if (!edge_.emplace(key(vertex(f, k), vertex(f, k + 1)), std::pair{f, k}).second)
-          throw Error(fmt::format("face {}: its edge {}-{} is used twice in one direction (a non-manifold or "
-                                  "inconsistently oriented edge); the masks need a closed manifold quad mesh",
-                                  f, vertex(f, k), vertex(f, k + 1)));
-    }
-    for (Index f = 0; f + 1 < Index(level.face_offsets.size()); ++f)  // the first boundary edge in face order
-      for (int k = 0; k < 4; ++k)
-        if (!edge_.contains(key(vertex(f, k + 1), vertex(f, k))))
-          throw Error(fmt::format("face {}: its edge {}-{} is a boundary edge; Loop & Schaefer's masks are those of "
-                                  "interior vertices (a closed mesh)",
-                                  f, vertex(f, k), vertex(f, k + 1)));
-  }
-
-  Index vertex(Index f, int k) const {
-    return level_.face_vertices[size_t(level_.face_offsets[size_t(f)]) + size_t(((k % 4) + 4) % 4)];
-  }
-  Point3 point(Index v) const {
-    const size_t i = 3 * size_t(v);
-    return {positions_[i], positions_[i + 1], positions_[i + 2]};
-  }
-  // The face and corner where the directed edge a -> b starts.
-  std::pair<Index, int> face_of(Index a, Index b) const { return edge_.at(key(a, b)); }
-  int valence(Index v, Index f, int k) const {
-    int n = 0;
-    Index g = f;
-    int c = k;
-    do {  // around v: the face holding v -> (g's previous vertex)
-      const Index prev = vertex(g, c + 3);
-      std::tie(g, c) = face_of(v, prev);
-      ++n;
-    } while (g != f);
-    return n;
-  }
-
-private:
-  static std::uint64_t key(Index a, Index b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
-  const Level& level_;
-  std::span<const double> positions_;
-  std::unordered_map<std::uint64_t, std::pair<Index, int>> edge_;
-};
+// The valence the interior-point mask takes at a corner: the vertex's own inside the
+// surface; twice the faces of its sector on a boundary or crease (the sector mirrored across
+// its feature edges: 4 at a regular boundary); 4 at a corner of one face (the B-spline
+// patch with phantom points 2 v - w, whose interior point is (4 v + 2 e_a + 2 e_b + d) / 9).
+double mask_valence(const Sector& s) { return s.closed ? s.faces : s.corner ? 4 : 2 * s.faces; }
 
 // Interior point next to corner k of face f: (n v + 2 e_a + 2 e_b + d) / (n + 5).
 Point3 interior_point(const QuadMesh& m, Index f, int k) {
-  const double n = m.valence(m.vertex(f, k), f, k);
+  const double n = mask_valence(m.sector(f, k));
   const Point3 s = n * m.point(m.vertex(f, k)) + 2.0 * m.point(m.vertex(f, k + 1)) +
                    2.0 * m.point(m.vertex(f, k + 3)) + m.point(m.vertex(f, k + 2));
   return (1.0 / (n + 5)) * s;
 }
 
-// Edge point next to v = vertex(f, k) on the edge v -> w: the mean of the interior points
-// next to v in the edge's two quads. Both quads compute it from the same two points in
-// the same order, so their boundary curves agree to the bit.
-Point3 edge_point(const QuadMesh& m, Index v, Index w) {
+// Edge point next to v on the edge v-w. Along a boundary or infinitely sharp edge the limit
+// curve is the cubic B-spline of the feature polygon (its ends kept at corners), whose
+// Bézier point next to v is (2 v + w) / 3. Elsewhere the mean of the interior points next to
+// v in the edge's two quads: both quads compute it from the same two points in the same
+// order, so their boundary curves agree to the bit.
+Point3 edge_point(const QuadMesh& m, Index v, Index w, bool feature) {
+  if (feature) return (1.0 / 3) * (2.0 * m.point(v) + m.point(w));
   const auto [f, k] = m.face_of(v, w);
   const auto [g, l] = m.face_of(w, v);
   return 0.5 * (interior_point(m, f, k) + interior_point(m, g, (l + 1) % 4));
 }
 
-// The limit tangent along the edge v -> w, for the patch parameter of unit speed where v
-// is regular: Catmull-Clark's tangent mask (the subdominant left eigenvectors; Halstead,
-// Kass & DeRose 1993, used by Loop & Schaefer 2008 section 4): over v's ring, edge
-// neighbours e_i (e_0 = w) weighted A cos(2 pi i / n), face neighbours d_i (between e_i and
-// e_{i+1}) weighted B cos((2i + 1) pi / n), B = 1 / (n sqrt(4 + cos^2(pi / n))),
-// A = 1/n + cos(pi / n) B. Tangents along consecutive edges then satisfy
-// t_{i-1} + t_{i+1} = 2 cos(2 pi / n) t_i, which the tangent patches rely on.
-Point3 corner_tangent(const QuadMesh& m, Index v, Index w, int n) {
-  const double pi = std::numbers::pi, c = std::cos(pi / n);
-  const double b = 1.0 / (n * std::sqrt(4 + c * c)), a = 1.0 / n + c * b;
-  Point3 t{0, 0, 0};
-  auto [f, k] = m.face_of(v, w);
-  for (int i = 0; i < n; ++i) {
-    t = t + (a * std::cos(2 * pi * i / n)) * m.point(m.vertex(f, k + 1));
-    t = t + (b * std::cos((2 * i + 1) * pi / n)) * m.point(m.vertex(f, k + 2));
-    std::tie(f, k) = m.face_of(v, m.vertex(f, k + 3));
-  }
-  return t;
+// cos(2 pi / n) at an interior vertex of valence n, cos(pi / k) on a boundary or crease with
+// k faces on the side: the factor in t_(i-1) + t_(i+1) = 2 c t_i between the tangents along
+// consecutive edges of the sector (0 where the sector is regular).
+double tangent_cosine(const Sector& s) {
+  if (s.closed) return s.faces == 4 ? 0.0 : std::cos(2 * std::numbers::pi / s.faces);
+  return s.faces == 2 || s.corner ? 0.0 : std::cos(std::numbers::pi / s.faces);
 }
 
 // The two cross-boundary tangent points next to an edge from A to B, pointing into the
@@ -129,20 +77,17 @@ BezierPatch face_patch(const QuadMesh& m, Index f, std::span<const double> limit
       default: return at(c, 3 - a);
     }
   };
-  std::array<int, 4> n{};
   std::array<double, 4> cosine{};
-  std::array<Index, 4> v{};
   for (int k = 0; k < 4; ++k) {
-    v[size_t(k)] = m.vertex(f, k);
-    n[size_t(k)] = m.valence(v[size_t(k)], f, k);
-    cosine[size_t(k)] = n[size_t(k)] == 4 ? 0.0 : std::cos(2 * std::numbers::pi / n[size_t(k)]);
-    const size_t i = 3 * size_t(v[size_t(k)]);
+    cosine[size_t(k)] = tangent_cosine(m.sector(f, k));
+    const size_t i = 3 * size_t(m.vertex(f, k));
     local(k, 0, 0) = {limits[i], limits[i + 1], limits[i + 2]};
     local(k, 1, 1) = interior_point(m, f, k);
-    local(k, 1, 0) = edge_point(m, v[size_t(k)], m.vertex(f, k + 1));
-    local(k, 0, 1) = edge_point(m, v[size_t(k)], m.vertex(f, k + 3));
+    local(k, 1, 0) = edge_point(m, m.vertex(f, k), m.vertex(f, k + 1), m.feature(f, k));
+    local(k, 0, 1) = edge_point(m, m.vertex(f, k), m.vertex(f, k + 3), m.feature(f, k + 3));
   }
-  auto T = [&](int k, int to) { return corner_tangent(m, v[size_t(k)], v[size_t(to)], n[size_t(k)]); };
+  // The corner derivative at corner k along its edge to corner `to` (k + 1 or k - 1).
+  auto T = [&](int k, int to) { return m.corner_tangent(f, k, to == (k + 1) % 4); };
   auto U = [&p](int i, int j) -> Point3& { return p.tangent_u[size_t(j * 3 + i)]; };
   auto V = [&p](int i, int j) -> Point3& { return p.tangent_v[size_t(j * 4 + i)]; };
   for (int j = 0; j < 4; ++j)
@@ -152,20 +97,28 @@ BezierPatch face_patch(const QuadMesh& m, Index f, std::span<const double> limit
   // Along the edges: the corner derivatives from the tangent masks.
   U(0, 0) = T(0, 1), U(2, 0) = -1.0 * T(1, 0), U(0, 3) = T(3, 2), U(2, 3) = -1.0 * T(2, 3);
   V(0, 0) = T(0, 3), V(0, 2) = -1.0 * T(3, 0), V(3, 0) = T(1, 2), V(3, 2) = -1.0 * T(2, 1);
-  // Across the edges. Edge 0 (v = 0, corners 0 -> 1): +V points into the quad.
-  std::tie(V(1, 0), V(2, 0)) = cross_points({U(0, 0), U(1, 0), U(2, 0)}, cosine[0], cosine[1],
-                                            3.0 * (at(1, 1) - at(1, 0)), 3.0 * (at(2, 1) - at(2, 0)));
+  // Across the edges that are not boundary or crease edges (across those the geometry's own
+  // derivatives stay: the surface has no other side there, or one it need not match).
+  // Edge 0 (v = 0, corners 0 -> 1): +V points into the quad.
+  if (!m.feature(f, 0))
+    std::tie(V(1, 0), V(2, 0)) = cross_points({U(0, 0), U(1, 0), U(2, 0)}, cosine[0], cosine[1],
+                                              3.0 * (at(1, 1) - at(1, 0)), 3.0 * (at(2, 1) - at(2, 0)));
   // Edge 2 (v = 1, corners 3 -> 2): -V points into the quad.
-  auto [x12, x22] = cross_points({U(0, 3), U(1, 3), U(2, 3)}, cosine[3], cosine[2], 3.0 * (at(1, 2) - at(1, 3)),
-                                 3.0 * (at(2, 2) - at(2, 3)));
-  V(1, 2) = -1.0 * x12, V(2, 2) = -1.0 * x22;
+  if (!m.feature(f, 2)) {
+    const auto [x12, x22] = cross_points({U(0, 3), U(1, 3), U(2, 3)}, cosine[3], cosine[2],
+                                         3.0 * (at(1, 2) - at(1, 3)), 3.0 * (at(2, 2) - at(2, 3)));
+    V(1, 2) = -1.0 * x12, V(2, 2) = -1.0 * x22;
+  }
   // Edge 3 (u = 0, corners 0 -> 3): +U points into the quad.
-  std::tie(U(0, 1), U(0, 2)) = cross_points({V(0, 0), V(0, 1), V(0, 2)}, cosine[0], cosine[3],
-                                            3.0 * (at(1, 1) - at(0, 1)), 3.0 * (at(1, 2) - at(0, 2)));
+  if (!m.feature(f, 3))
+    std::tie(U(0, 1), U(0, 2)) = cross_points({V(0, 0), V(0, 1), V(0, 2)}, cosine[0], cosine[3],
+                                              3.0 * (at(1, 1) - at(0, 1)), 3.0 * (at(1, 2) - at(0, 2)));
   // Edge 1 (u = 1, corners 1 -> 2): -U points into the quad.
-  auto [x21, x22u] = cross_points({V(3, 0), V(3, 1), V(3, 2)}, cosine[1], cosine[2], 3.0 * (at(2, 1) - at(3, 1)),
-                                  3.0 * (at(2, 2) - at(3, 2)));
-  U(2, 1) = -1.0 * x21, U(2, 2) = -1.0 * x22u;
+  if (!m.feature(f, 1)) {
+    const auto [x21, x22] = cross_points({V(3, 0), V(3, 1), V(3, 2)}, cosine[1], cosine[2],
+                                         3.0 * (at(2, 1) - at(3, 1)), 3.0 * (at(2, 2) - at(3, 2)));
+    U(2, 1) = -1.0 * x21, U(2, 2) = -1.0 * x22;
+  }
   return p;
 }
 
@@ -189,6 +142,35 @@ Point3 tensor(const std::array<Point3, N>& c, double u, double v) {
 // A generic value per vertex of a regular torus grid (nu x nv), not a polynomial of low degree.
 double generic_value(int i, int j) { return std::sin(1.3 * i + 0.7 * j * j + 0.11 * i * j) + 0.3 * i - 0.2 * j; }
 
+// The uniform cubic B-spline basis over control points at -1, 0, 1, 2.
+std::array<double, 4> bspline_basis(double s) {
+  const double r = 1 - s;
+  return {r * r * r / 6, (3 * s * s * s - 6 * s * s + 4) / 6, (-3 * s * s * s + 3 * s * s + 3 * s + 1) / 6,
+          s * s * s / 6};
+}
+
+// The bicubic B-spline patch of the 4 x 4 values value(i, j), i, j in -1..2, at (u, v).
+template <typename Value>
+double bspline_patch(const Value& value, double u, double v) {
+  const auto bu = bspline_basis(u), bv = bspline_basis(v);
+  double sum = 0;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) sum += bu[size_t(i)] * bv[size_t(j)] * value(i - 1, j - 1);
+  return sum;
+}
+
+// A regular quad grid of `cells` x `cells` faces, vertex (i, j) numbered j * (cells + 1) + i.
+Level open_grid(int cells) {
+  std::vector<Index> offsets{0}, corners;
+  const auto id = [cells](int i, int j) { return Index(j * (cells + 1) + i); };
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      corners.insert(corners.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+      offsets.push_back(Index(corners.size()));
+    }
+  return build_level((cells + 1) * (cells + 1), offsets, corners);
+}
+
 }  // namespace
 
 std::string bezier_approximation_unsupported(const std::shared_ptr<const Scheme>& scheme) {
@@ -207,18 +189,10 @@ std::string bezier_approximation_unsupported(const std::shared_ptr<const Scheme>
     const LimitSurface surface(scheme, build_level(kGrid * kGrid, offsets, corners));
     if (surface.triangles())
       return "its split makes triangles: Loop & Schaefer's patches are bicubic, one per quad";
-    // The cubic B-spline basis (control points at -1, 0, 1, 2).
-    auto basis = [](double s) {
-      const double r = 1 - s;
-      return std::array<double, 4>{r * r * r / 6, (3 * s * s * s - 6 * s * s + 4) / 6,
-                                   (-3 * s * s * s + 3 * s * s + 3 * s + 1) / 6, s * s * s / 6};
-    };
     const Index face = id(3, 3);
+    const auto around_face = [&](int i, int j) { return values[size_t(id(3 + i, 3 + j))]; };
     for (const auto& uv : {std::array{0.3, 0.7}, std::array{0.55, 0.15}}) {
-      const auto bu = basis(uv[0]), bv = basis(uv[1]);
-      double bspline = 0;
-      for (int j = 0; j < 4; ++j)
-        for (int i = 0; i < 4; ++i) bspline += bu[size_t(i)] * bv[size_t(j)] * values[size_t(id(2 + i, 2 + j))];
+      const double bspline = bspline_patch(around_face, uv[0], uv[1]);
       const double limit = surface.evaluate(face, uv[0], uv[1], values, 1, 0).position[0];
       if (!(std::abs(limit - bspline) <= 1e-9))
         return fmt::format("its limit over a regular quad is not the bicubic B-spline patch (at (u, v) = ({}, {}) of "
@@ -232,27 +206,72 @@ std::string bezier_approximation_unsupported(const std::shared_ptr<const Scheme>
   return {};
 }
 
-std::vector<BezierPatch> bezier_patches(const Level& topology, std::span<const double> positions,
-                                        const CornerLimits& corner_limits) {
-  const QuadMesh mesh(topology, positions);
-  std::vector<Index> faces(size_t(topology.vertex_count), kNone);
-  std::vector<double> uv(2 * size_t(topology.vertex_count), 0.0);
-  constexpr double corner_u[4] = {0, 1, 1, 0}, corner_v[4] = {0, 0, 1, 1};
-  for (Index f = 0; f + 1 < Index(topology.face_offsets.size()); ++f)
-    for (int k = 0; k < 4; ++k) {
-      const Index v = mesh.vertex(f, k);
-      if (faces[size_t(v)] != kNone) continue;
-      faces[size_t(v)] = f;
-      uv[2 * size_t(v)] = corner_u[k];
-      uv[2 * size_t(v) + 1] = corner_v[k];
+std::string bezier_features_unsupported(const std::shared_ptr<const Scheme>& scheme, const FeatureOptions& features) {
+  // An open 6 x 6 grid, corners kept: the limit over a face at the boundary, and over the
+  // corner face, must be the bicubic B-spline patch with phantom points reflected across
+  // the boundary (p(-1) = 2 p(0) - p(1), per direction), as Catmull-Clark's boundary rules
+  // make it (the cubic B-spline boundary curve; OpenSubdiv's regular boundary and corner
+  // patches). An infinitely sharp edge is then checked the same way from one side: the
+  // grid's middle row made a crease.
+  constexpr int kCells = 6;
+  std::vector<double> values;
+  for (int j = 0; j <= kCells; ++j)
+    for (int i = 0; i <= kCells; ++i) values.push_back(generic_value(i, j));
+  const auto grid = [&values](int i, int j) { return values[size_t(j * (kCells + 1) + i)]; };
+  // The value at (i, j), reflected across the grid's edges and the row `crease` (from
+  // below) where the point lies outside: the phantom points.
+  const auto phantom = [&grid](int i, int j, int crease) {
+    const auto column = [&grid, crease](int x, int y) {
+      if (y < 0) return 2 * grid(x, 0) - grid(x, 1);
+      if (crease > 0 && y > crease) return 2 * grid(x, crease) - grid(x, crease - 1);
+      return grid(x, y);
+    };
+    if (i < 0) return 2 * column(0, j) - column(1, j);
+    return column(i, j);
+  };
+  LimitSurfaceOptions options;
+  options.features = features;
+  options.features.boundary = BoundaryInterpolation::EdgesAndCorners;
+  try {
+    for (const int crease : {0, 3}) {
+      Level level = open_grid(kCells);
+      if (crease > 0) {
+        level.edge_sharpness.assign(size_t(level.edge_count()), 0.f);
+        for (Index e = 0; e < level.edge_count(); ++e)
+          if (level.edge_vertices[2 * size_t(e)] / (kCells + 1) == crease &&
+              level.edge_vertices[2 * size_t(e) + 1] / (kCells + 1) == crease)
+            level.edge_sharpness[size_t(e)] = 10.f;
+      }
+      const LimitSurface surface(scheme, std::move(level), options);
+      // Corner face (0, 0) and boundary face (2, 0); with the crease, the face (2, crease - 1)
+      // below it, whose phantom row is reflected across the crease.
+      const int row = crease > 0 ? crease - 1 : 0;
+      for (const auto& [fi, fj] : {std::array{0, row}, std::array{2, row}}) {
+        const auto value = [&](int i, int j) { return phantom(fi + i, fj + j, crease); };
+        for (const auto& uv : {std::array{0.3, 0.7}, std::array{0.55, 0.15}}) {
+          const double expected = bspline_patch(value, uv[0], uv[1]);
+          const double limit = surface.evaluate(Index(fj * kCells + fi), uv[0], uv[1], values, 1, 0).position[0];
+          if (!(std::abs(limit - expected) <= 1e-9))
+            return fmt::format("its limit next to {} is not the bicubic B-spline patch with phantom points (at "
+                               "(u, v) = ({}, {}) of face ({}, {}) of an open grid they differ by {:.3g}): the "
+                               "patches' boundary and crease masks reproduce exactly that patch",
+                               crease > 0 ? "an infinitely sharp crease" : "a boundary", uv[0], uv[1], fi, fj,
+                               std::abs(limit - expected));
+        }
+      }
     }
-  for (Index v = 0; v < topology.vertex_count; ++v)
-    if (faces[size_t(v)] == kNone) throw Error(fmt::format("vertex {} is in no face", v));
-  const std::vector<double> limits = corner_limits(faces, uv);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return {};
+}
+
+std::vector<BezierPatch> bezier_patches(const Level& topology, std::span<const double> positions,
+                                        BoundaryInterpolation boundary, const VertexLimits& limits) {
+  const QuadMesh mesh(topology, positions, boundary, limits.normals);
   std::vector<BezierPatch> patches;
-  patches.reserve(topology.face_offsets.size() - 1);
-  for (Index f = 0; f + 1 < Index(topology.face_offsets.size()); ++f)
-    patches.push_back(face_patch(mesh, f, limits));
+  patches.reserve(size_t(topology.face_count()));
+  for (Index f = 0; f < topology.face_count(); ++f) patches.push_back(face_patch(mesh, f, limits.positions));
   return patches;
 }
 

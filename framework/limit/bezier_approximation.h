@@ -20,15 +20,23 @@
 //   2 cos(2 pi / n_A) to -2 cos(2 pi / n_B) (the paper's section 4).
 //
 // Only for a scheme whose regular quad patch is the bicubic B-spline (checked on the
-// scheme's own limit, bezier_approximation_unsupported) and a closed manifold mesh of
-// quads without creases (the masks are those of interior smooth vertices).
+// scheme's own limit, bezier_approximation_unsupported) and a manifold mesh of quads.
+// Boundaries and infinitely sharp creases (limit/bezier_sectors.h) where the scheme's limit
+// next to them is the B-spline patch with phantom points (bezier_features_unsupported):
+// - edge point on a boundary or crease edge v-w: (2 v + w) / 3, the cubic B-spline curve's;
+// - interior point next to v: as above with n twice the faces of v's sector (4 at a regular
+//   boundary), or 4 at a corner of one face;
+// - corner derivatives: the feature curve's tangent and the cross tangent of Biermann,
+//   Levin & Zorin (2000), combined along each edge of the sector.
+// So faces whose corners are all regular — valence 4 inside, two faces on each side of a
+// boundary or crease, one face at a corner — get the exact limit there too.
 #include <array>
-#include <functional>
 #include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "framework/features/feature_options.h"
 #include "framework/topology/level.h"
 
 namespace subdiv {
@@ -55,16 +63,29 @@ struct PatchSample {
 // checked on the scheme's own exact limit (a regular torus with generic values).
 std::string bezier_approximation_unsupported(const std::shared_ptr<const Scheme>& scheme);
 
-// The limit positions (xyz each) at points (faces[i], uv[2i], uv[2i + 1]): the corner points.
-using CornerLimits =
-    std::function<std::vector<double>(const std::vector<Index>& faces, const std::vector<double>& uv)>;
+// Why the boundary and crease masks do not fit `scheme`, or empty: its limit next to a
+// boundary (corners kept) and an infinitely sharp crease must be the bicubic B-spline patch
+// with phantom points 2 p_0 - p_1 across them, checked on the scheme's own exact limit.
+std::string bezier_features_unsupported(const std::shared_ptr<const Scheme>& scheme, const FeatureOptions& features);
 
-// The patches of every face of `topology` (one per face, in order). Each vertex's limit is
-// asked for once, at one face's corner, so that all its patches share the corner point.
-// Throws subdiv::Error naming the first face the masks do not cover (a face that is not a
-// quad, a boundary or non-manifold edge), before asking for any limit.
+// The scheme's limit at each vertex of the control mesh (analysis/surface/limit_evaluation.h):
+// positions (the corner points) and unit normals, xyz per vertex. A normal of zero length
+// (none found) leaves that vertex's tangent masks as they are.
+struct VertexLimits {
+  std::vector<double> positions, normals;
+};
+
+// The patches of every face of `topology` (one per face, in order). Where a vertex's
+// sectors share one tangent plane (inside the surface, on a boundary) the corner
+// derivatives are projected onto the plane of its limit normal, so that the tangent patches'
+// normal there is the scheme's own even where the masks are Catmull-Clark's approximations
+// (another scheme; a boundary vertex with three or more faces).
+// Throws subdiv::Error naming the first face or edge the masks do not cover (a face that is
+// not a quad, a non-manifold edge, a semi-sharp edge or corner, a dart, a boundary or crease
+// with one face on a side, a corner with more than one face between feature edges, a
+// boundary when `boundary` is None).
 std::vector<BezierPatch> bezier_patches(const Level& topology, std::span<const double> positions,
-                                        const CornerLimits& corner_limits);
+                                        BoundaryInterpolation boundary, const VertexLimits& limits);
 
 PatchSample evaluate_patch(const BezierPatch& patch, double u, double v);
 

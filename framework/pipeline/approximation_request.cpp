@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/limit/tessellation.h"
 #include "framework/util/error.h"
 
@@ -50,6 +51,28 @@ DataArray index_array(const char* name, const std::vector<Index>& indices) {
   return a;
 }
 
+// The scheme's limit position and normal at every base vertex (its limit masks).
+VertexLimits vertex_limits(const PreparedEvaluation& prepared) {
+  LimitOptions options;
+  options.features = prepared.surface->options().features;
+  LimitResult limits = limit_positions(*prepared.scheme, prepared.surface->base(), prepared.mesh.positions, options);
+  for (Index v = 0; v < Index(limits.exact.size()); ++v)
+    if (!limits.exact[size_t(v)])
+      throw Error(fmt::format("vertex {}: its limit position is only approximated ({}); the patches' corners must "
+                              "be the exact limit",
+                              v, limits.approximate_reasons.empty() ? "no mask" : limits.approximate_reasons[0]));
+  for (Index v = 0; v < Index(limits.normal_exact.size()); ++v)
+    if (!limits.normal_exact[size_t(v)])  // estimated normals are not used: the masks' tangents stay
+      std::fill_n(limits.normals.begin() + 3 * std::ptrdiff_t(v), 3, 0.0);
+  return {std::move(limits.positions), std::move(limits.normals)};
+}
+
+bool has_boundary_or_crease(const Level& level) {
+  for (Index e = 0; e < level.edge_count(); ++e)
+    if (level.edge_on_boundary(e) || level.edge_sharp(e) > 0.f) return true;
+  return !level.vertex_sharpness.empty();
+}
+
 }  // namespace
 
 std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared) {
@@ -63,15 +86,17 @@ std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepare
                 "patches' masks read the base mesh; refine the head first (subdiv refine) and approximate that mesh");
   if (!prepared.weights.empty())
     throw Error("--approximate bezier: the mesh has rational weights; the patches are polynomial (drop the weights)");
-  if (!prepared.mesh.creases.empty() || !prepared.mesh.corners.empty() || !prepared.mesh.holes.empty() ||
-      !prepared.notes.empty())
-    throw Error("--approximate bezier: the mesh has creases, corners, holes or feature edges; Loop & Schaefer's "
-                "masks are those of smooth interior vertices (drop the tags)");
+  if (!prepared.mesh.holes.empty())
+    throw Error("--approximate bezier: the mesh has holes; the patches cover every face (drop the hole tags)");
+  const Level& base = prepared.surface->base();
+  const FeatureOptions& features = prepared.surface->options().features;
+  if (has_boundary_or_crease(base))
+    if (const std::string why = bezier_features_unsupported(prepared.scheme, features); !why.empty())
+      throw Error(fmt::format("--approximate bezier: the mesh has boundaries or creases, and scheme {} does not "
+                              "refine them as the patches' masks assume: {}",
+                              prepared.scheme_label, why));
   try {
-    return bezier_patches(prepared.surface->base(), prepared.mesh.positions,
-                          [&prepared](const std::vector<Index>& faces, const std::vector<double>& uv) {
-                            return evaluate_limit_points(prepared, faces, uv, 0).position;
-                          });
+    return bezier_patches(base, prepared.mesh.positions, features.boundary, vertex_limits(prepared));
   } catch (const Error& e) {
     throw Error(fmt::format("--approximate bezier: {}", e.what()));
   }

@@ -12,9 +12,9 @@
 namespace subdiv {
 
 // The patches of a prepared surface. Throws subdiv::Error saying why they cannot be built:
-// the scheme (bezier_approximation_unsupported), a sequence, rational weights, creases,
-// corners or holes (the masks are those of smooth interior vertices), a face that is not a
-// quad or a boundary (naming the face).
+// the scheme (bezier_approximation_unsupported; with boundaries or creases also
+// bezier_features_unsupported), a sequence, rational weights, holes, or a face or edge the
+// masks do not cover (bezier_patches: naming it).
 std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared);
 
 // Distances from the approximation to the exact limit.

@@ -210,9 +210,12 @@ class LimitSurface:
         """Loop & Schaefer's (2008) bicubic patches tessellated, as ``subdiv evaluate
         --approximate bezier --samples N`` writes them (docs/limit.md).
 
-        One patch per quad of a closed quad mesh without creases, for a scheme whose limit over
-        regular quads is the bicubic B-spline (else subdivkit.Error says why); exact where every
-        valence is 4. point_data: "Normals" (of the tangent patches: continuous across edges),
+        One patch per quad of a manifold quad mesh, for a scheme whose limit over regular quads
+        is the bicubic B-spline (else subdivkit.Error says why); boundaries and infinitely
+        sharp creases where the scheme's are the cubic B-spline's (semi-sharp ones, darts and a
+        crease with one face on a side are refused, naming the place). Exact where every
+        corner is regular (valence 4 inside, two faces on each side of a boundary or crease,
+        a corner of one face). point_data: "Normals" (of the tangent patches: continuous across edges),
         "base_face", "uv", "limit_distance" (to the exact limit at the same (face, u, v));
         cell_data: "base_face", "limit_distance" (the largest over the base face's samples).
         """

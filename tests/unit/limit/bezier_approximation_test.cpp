@@ -7,6 +7,9 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
+#include <functional>
+#include <iterator>
 #include <map>
 #include <random>
 
@@ -15,6 +18,7 @@
 #include "framework/pipeline/approximation_request.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
+#include "support/cli_runner.h"
 #include "support/mesh_data_of.h"
 #include "support/test_meshes.h"
 
@@ -22,9 +26,11 @@ using namespace subdiv;
 
 namespace {
 
-PreparedEvaluation prepared(const test::Mesh& m, const std::string& scheme = "catmull-clark") {
+PreparedEvaluation prepared(const test::Mesh& m, const std::string& scheme = "catmull-clark",
+                              std::vector<CreaseTag> creases = {}) {
   EvaluateRequest r;
   r.mesh = test::mesh_data(m);
+  r.mesh.creases = std::move(creases);
   r.scheme.text = scheme;
   return prepare_evaluation(std::move(r));
 }
@@ -119,6 +125,7 @@ EdgeSides compare_edges(const Level& level, const std::vector<BezierPatch>& patc
       directed[{level.face_vertices[size_t(4 * f + k)], level.face_vertices[size_t(4 * f + (k + 1) % 4)]}] = {f, k};
   EdgeSides out;
   for (const auto& [e, fk] : directed) {
+    if (!directed.contains({e.second, e.first})) continue;  // a boundary edge: one side only
     const auto& [g, l] = directed.at({e.second, e.first});
     for (double t : {0.0, 0.1, 0.37, 0.5, 0.81, 1.0}) {
       const auto a = on_edge(fk.second, t), b = on_edge(l, 1 - t);
@@ -128,6 +135,8 @@ EdgeSides compare_edges(const Level& level, const std::vector<BezierPatch>& patc
         out.largest_position = std::max(out.largest_position, std::abs(p.position[size_t(c)] - q.position[size_t(c)]));
       // The boundary curves' control points themselves are the same numbers from both sides.
       if (t == 0.5) out.control_points_differ = out.control_points_differ || !same_boundary(patches, fk, {g, l});
+      // Across an infinitely sharp crease the normal may jump: positions only.
+      if (level.edge_sharp(level.face_edges[size_t(4 * fk.first + fk.second)]) > 0) continue;
       out.largest_tangent_angle = std::max(out.largest_tangent_angle, angle(normal(p.du, p.dv), normal(q.du, q.dv)));
       if (t > 0 && t < 1)  // the geometry patches' normals, away from the corners
         out.largest_geometry_angle = std::max(
@@ -248,9 +257,190 @@ TEST_CASE("schemes whose regular patch is not the bicubic B-spline are refused w
         std::string::npos);
   CHECK(bezier_approximation_unsupported(load_scheme("bilinear")).find("not the bicubic B-spline") != std::string::npos);
   CHECK(bezier_approximation_unsupported(load_scheme("loop")).find("triangles") != std::string::npos);
-  const PreparedEvaluation open = prepared(test::grid(4, 4));
-  CHECK_THROWS_WITH_AS(approximation_patches(open), doctest::Contains("boundary edge"), Error);
   const PreparedEvaluation pyramid = prepared(test::pyramid());
   CHECK_THROWS_WITH_AS(approximation_patches(pyramid), doctest::Contains("has 3 sides"), Error);
   (void)torus;
+}
+
+namespace {
+
+// A grid whose heights are not a low-degree polynomial, so that exactness means something.
+test::Mesh bumpy(test::Mesh m) {
+  for (Index v = 0; v < m.vertex_count; ++v) {
+    double* p = &m.positions[3 * size_t(v)];
+    p[2] += 0.3 * std::sin(1.7 * p[0] + 0.4 * p[1] * p[1]) + 0.1 * p[0] * p[1];
+  }
+  return m;
+}
+
+// Every edge of the mesh whose ends pass `on_crease`, as an infinitely sharp crease.
+std::vector<CreaseTag> creases_along(const test::Mesh& m, const std::function<bool(Index, Index)>& on_crease) {
+  std::vector<CreaseTag> out;
+  for (size_t f = 0; f + 1 < m.offsets.size(); ++f)
+    for (Index k = m.offsets[f]; k < m.offsets[f + 1]; ++k) {
+      const Index a = m.corners[size_t(k)];
+      const Index b = m.corners[size_t(k + 1 == m.offsets[f + 1] ? m.offsets[f] : k + 1)];
+      if (a < b && on_crease(a, b)) out.push_back({a, b, 10.0});
+    }
+  return out;
+}
+
+// The largest distance to the exact limit and of the tangent patches from the exact
+// derivatives, at random points of every face.
+std::pair<double, double> worst_against_exact(const PreparedEvaluation& p, const std::vector<BezierPatch>& patches) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<Index> faces;
+  std::vector<double> uv;
+  for (Index f = 0; f < Index(patches.size()); ++f)
+    for (int i = 0; i < 8; ++i) {
+      faces.push_back(f);
+      uv.push_back(unit(rng));
+      uv.push_back(unit(rng));
+    }
+  const ApproximatedPoints a = approximate_points(p, patches, faces, uv);
+  const EvaluatedPoints exact = evaluate_limit_points(p, faces, uv, 1);
+  double worst = 0;
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const PatchSample s = evaluate_patch(patches[size_t(faces[i])], uv[2 * i], uv[2 * i + 1]);
+    for (size_t c = 0; c < 3; ++c)
+      worst = std::max({worst, std::abs(s.du[c] - exact.du[3 * i + c]), std::abs(s.dv[c] - exact.dv[3 * i + c])});
+  }
+  return {a.distances.largest, worst};
+}
+
+}  // namespace
+
+TEST_CASE("boundaries, infinitely sharp creases and corners: the exact limit where every sector is regular") {
+  // An open grid: corners of one face (kept), boundary vertices with two faces, valence 4 inside.
+  const test::Mesh grid = bumpy(test::grid(6, 5));
+  // A torus with two crease loops (rings v = 0 and v = 3 of 6): two faces on each side.
+  const test::Mesh torus = test::torus(8, 6);
+  const auto loops = creases_along(torus, [](Index a, Index b) { return a / 8 == b / 8 && (a / 8 == 0 || a / 8 == 3); });
+  // The cube with all 12 edges infinitely sharp: three crease edges at each corner, one face
+  // between them; the limit is the cube itself.
+  const test::Mesh cube = test::cube();
+  const auto edges = creases_along(cube, [](Index, Index) { return true; });
+  for (const auto& [mesh, creases] : {std::pair{grid, std::vector<CreaseTag>{}}, std::pair{torus, loops},
+                                      std::pair{cube, edges}}) {
+    const PreparedEvaluation p = prepared(mesh, "catmull-clark", creases);
+    const std::vector<BezierPatch> patches = approximation_patches(p);
+    const auto [distance, derivatives] = worst_against_exact(p, patches);
+    CAPTURE(mesh.vertex_count);
+    CHECK(distance < 1e-12);
+    CHECK(derivatives < 1e-11);  // the tangent patches are the exact derivatives
+    const EdgeSides e = compare_edges(p.surface->base(), patches);
+    CHECK_FALSE(e.control_points_differ);
+    CHECK(e.largest_position < 1e-14);
+    CHECK(e.largest_tangent_angle < 1e-12);
+  }
+}
+
+TEST_CASE("irregular boundaries: the boundary curves exact, C0 and one normal field inside, a tangent plane per "
+          "boundary vertex") {
+  // The plane with a square hole, made bumpy: the hole's corners have three faces.
+  const test::Mesh holed = bumpy([] {
+    test::Mesh m = test::grid(4, 4);
+    test::Mesh out;
+    out.positions = m.positions;
+    out.vertex_count = m.vertex_count;
+    for (size_t f = 0; f + 1 < m.offsets.size(); ++f)
+      if (f != 5 && f != 6 && f != 9 && f != 10)
+        out.add_face({m.corners[4 * f], m.corners[4 * f + 1], m.corners[4 * f + 2], m.corners[4 * f + 3]});
+    return out;
+  }());
+  const PreparedEvaluation p = prepared(holed);
+  const std::vector<BezierPatch> patches = approximation_patches(p);
+  const Level& base = p.surface->base();
+  // Along every boundary edge the patch is the exact limit curve (the boundary's cubic
+  // B-spline), whatever the valences at its ends.
+  std::vector<Index> faces;
+  std::vector<double> uv;
+  for (Index f = 0; f < base.face_count(); ++f)
+    for (int k = 0; k < 4; ++k)
+      if (base.edge_on_boundary(base.face_edges[size_t(4 * f + k)]))
+        for (double t : {0.0, 0.2, 0.5, 0.9, 1.0}) {
+          faces.push_back(f);
+          const auto at = on_edge(k, t);
+          uv.insert(uv.end(), {at[0], at[1]});
+        }
+  CHECK(faces.size() == 5 * 24);  // 16 outer and 8 hole edges
+  CHECK(approximate_points(p, patches, faces, uv).distances.largest < 1e-12);
+  // Inside, the faces at the hole's corners only approximate.
+  ApproximationDistances d;
+  (void)approximated_limit_mesh(p, patches, 6, d);
+  CHECK(d.largest > 1e-6);
+  const EdgeSides e = compare_edges(base, patches);
+  CHECK_FALSE(e.control_points_differ);
+  CHECK(e.largest_position < 1e-14);
+  CHECK(e.largest_tangent_angle < 1e-12);
+  // At each boundary vertex, every face's tangent patches give the same normal.
+  std::map<Index, std::vector<Point3>> normals;
+  constexpr double corner_u[4] = {0, 1, 1, 0}, corner_v[4] = {0, 0, 1, 1};
+  for (Index f = 0; f < base.face_count(); ++f)
+    for (int k = 0; k < 4; ++k) {
+      const Index v = base.face_vertices[size_t(4 * f + k)];
+      if (!base.on_boundary(v)) continue;
+      const PatchSample s = evaluate_patch(patches[size_t(f)], corner_u[k], corner_v[k]);
+      normals[v].push_back(normal(s.du, s.dv));
+    }
+  double worst = 0;
+  for (const auto& [v, list] : normals)
+    for (const Point3& n : list) worst = std::max(worst, angle(n, list.front()));
+  CHECK(worst < 1e-12);
+  // And the exact limit's normal next to the vertex, at every boundary vertex that is some
+  // face's corner 0: at (h, h) it converges to the vertex's tangent plane as h -> 0 —
+  // linearly at regular boundary vertices; at the hole's corners (three faces, where the
+  // masks are approximations before their projection) more slowly, but towards ours.
+  const auto angle_at = [&](Index f, double h) {
+    const std::vector<Index> at_face{f};
+    const std::vector<double> near{h, h};
+    const EvaluatedPoints exact = evaluate_limit_points(p, at_face, near, 1);
+    const PatchSample s = evaluate_patch(patches[size_t(f)], 0, 0);
+    return angle(normal(s.du, s.dv),
+                 normal({exact.du[0], exact.du[1], exact.du[2]}, {exact.dv[0], exact.dv[1], exact.dv[2]}));
+  };
+  int hole_corners = 0;
+  for (Index f = 0; f < base.face_count(); ++f) {
+    const Index v = base.face_vertices[size_t(4 * f)];
+    if (!base.on_boundary(v)) continue;
+    CAPTURE(v);
+    if (base.incident_face_count(v) < 3) {
+      CHECK(angle_at(f, 1e-12) < 1e-10);
+      continue;
+    }
+    ++hole_corners;
+    const double far = angle_at(f, 1e-4), mid = angle_at(f, 1e-8), near = angle_at(f, 1e-12);
+    MESSAGE("hole corner ", v, ": angle to the exact normal at h = 1e-4, 1e-8, 1e-12: ", far, ", ", mid, ", ", near);
+    CHECK(mid < 0.2 * far);
+    CHECK(near < 0.2 * mid);
+    CHECK(near < 1e-3);
+  }
+  CHECK(hole_corners > 0);
+}
+
+TEST_CASE("what the boundary and crease masks do not cover is refused, naming the place") {
+  const test::Mesh torus = test::torus(8, 6);
+  // A dart: a crease of two edges ending inside.
+  CHECK_THROWS_WITH_AS(approximation_patches(prepared(torus, "catmull-clark", {{0, 1, 10}, {1, 2, 10}})),
+                       doctest::Contains("ends a crease (a dart)"), Error);
+  // Semi-sharp creases decay: not covered.
+  const auto loop = creases_along(torus, [](Index a, Index b) { return a / 8 == 0 && b / 8 == 0; });
+  std::vector<CreaseTag> semi = loop;
+  for (auto& c : semi) c.sharpness = 2;
+  CHECK_THROWS_WITH_AS(approximation_patches(prepared(torus, "catmull-clark", semi)),
+                       doctest::Contains("is semi-sharp"), Error);
+  // The cube's top square as a crease (vertices 4 to 7): the top face is one face on a side.
+  const test::Mesh cube = test::cube();
+  CHECK_THROWS_WITH_AS(
+      approximation_patches(prepared(cube, "catmull-clark", creases_along(cube, [](Index a, Index b) { return a >= 4 && b >= 4; }))),
+      doctest::Contains("only one face on a side"), Error);
+  // The scheme's boundary curve must be the cubic B-spline: Catmull-Clark with four-point boundaries is refused.
+  std::ifstream file(test::source_path("schemes/catmull-clark.json"));
+  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  text.replace(text.find("\"cubic-bspline\""), 15, "\"four-point\"");
+  text.replace(text.find("\"catmull-clark\""), 15, "\"cc-four-point\"");
+  const auto odd = load_scheme_text(text, "cc-four-point.json");
+  CHECK(bezier_features_unsupported(load_scheme("catmull-clark"), {}).empty());
+  CHECK(bezier_features_unsupported(odd, {}).find("phantom points") != std::string::npos);
 }

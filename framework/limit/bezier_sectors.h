@@ -1,0 +1,82 @@
+#pragma once
+// The quad mesh that Loop & Schaefer's patches are built on (limit/bezier_approximation.h),
+// walked around its vertices: each face corner lies in a sector of faces around its vertex,
+// bounded by boundary or infinitely sharp edges (or closed around an interior vertex), and
+// the masks the patches take at that corner depend on the sector. Private to the limit
+// layer.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <unordered_map>
+#include <utility>
+
+#include "framework/features/feature_options.h"
+#include "framework/topology/level.h"
+
+namespace subdiv::bezier {
+
+using Point3 = std::array<double, 3>;
+
+inline Point3 operator+(const Point3& a, const Point3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+inline Point3 operator-(const Point3& a, const Point3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline Point3 operator*(double s, const Point3& a) { return {s * a[0], s * a[1], s * a[2]}; }
+
+// The faces around a vertex between two feature edges, in walk order f_0 .. f_(faces-1):
+// f_j lies between the edges to neighbours E_j and E_(j+1) (E_0 and E_faces the feature
+// edges), f_(j+1) is across E_(j+1) from f_j. Around an interior vertex without feature
+// edges the sector is closed and holds all `faces` of the vertex.
+struct Sector {
+  int faces = 0;
+  int index = 0;  // the corner's face is f_index: its edge to the next corner is E_index
+  bool closed = false;
+  bool corner = false;  // the vertex is kept as a corner (its limit is itself)
+};
+
+class QuadMesh {
+public:
+  // Throws subdiv::Error naming the face for a face that is not a quad, a non-manifold or
+  // inconsistently oriented edge, a semi-sharp edge or vertex, a dart (one feature edge at a
+  // vertex), a smooth feature vertex with one face on a side, or a corner with more than one
+  // face between two of its feature edges — the cases the masks do not cover.
+  // `normals`: the limit's unit normal per vertex (xyz; zero where none), onto whose plane
+  // the corner tangents of vertices with one tangent plane are projected; may be empty.
+  QuadMesh(const Level& level, std::span<const double> positions, BoundaryInterpolation boundary,
+           std::span<const double> normals = {});
+
+  Index vertex(Index f, int k) const {
+    return level_.face_vertices[size_t(level_.face_offsets[size_t(f)]) + size_t(((k % 4) + 4) % 4)];
+  }
+  Point3 point(Index v) const {
+    const size_t i = 3 * size_t(v);
+    return {positions_[i], positions_[i + 1], positions_[i + 2]};
+  }
+  // Whether edge k of face f (corner k to k + 1) is a boundary or infinitely sharp edge.
+  bool feature(Index f, int k) const;
+  // The face and corner where the directed edge a -> b starts (the edge must exist).
+  std::pair<Index, int> face_of(Index a, Index b) const { return edge_.at(key(a, b)); }
+  Sector sector(Index f, int k) const;
+
+  // The limit tangent at corner k of face f along its edge to corner k + 1 (towards_next)
+  // or k - 1, for the patch parameter of unit speed where the sector is regular; projected
+  // onto the vertex's tangent plane where it has one (interior and boundary vertices).
+  Point3 corner_tangent(Index f, int k, bool towards_next) const;
+
+private:
+  static std::uint64_t key(Index a, Index b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
+  bool has_edge(Index a, Index b) const { return edge_.contains(key(a, b)); }
+  void check_features() const;
+  // The face across the edge from corner k of f to corner k - 1 (one step in walk order), and
+  // the corner of the same vertex in it; across the edge to corner k + 1 (one step back).
+  std::pair<Index, int> step_forward(Index f, int k) const { return face_of(vertex(f, k), vertex(f, k + 3)); }
+  std::pair<Index, int> step_back(Index f, int k) const;
+  Point3 mask_tangent(Index f, int k, bool towards_next, const Sector& s) const;
+  Point3 projected(Index v, const Point3& t) const;
+
+  const Level& level_;
+  std::span<const double> positions_;
+  BoundaryInterpolation boundary_;
+  std::span<const double> normals_;
+  std::unordered_map<std::uint64_t, std::pair<Index, int>> edge_;
+};
+
+}  // namespace subdiv::bezier
