@@ -246,7 +246,8 @@ std::string bezier_features_unsupported(const std::shared_ptr<const Scheme>& sch
       // Corner face (0, 0) and boundary face (2, 0); with the crease, the face (2, crease - 1)
       // below it, whose phantom row is reflected across the crease.
       const int row = crease > 0 ? crease - 1 : 0;
-      for (const auto& [fi, fj] : {std::array{0, row}, std::array{2, row}}) {
+      for (const auto& face : {std::array{0, row}, std::array{2, row}}) {
+        const int fi = face[0], fj = face[1];
         const auto value = [&](int i, int j) { return phantom(fi + i, fj + j, crease); };
         for (const auto& uv : {std::array{0.3, 0.7}, std::array{0.55, 0.15}}) {
           const double expected = bspline_patch(value, uv[0], uv[1]);
