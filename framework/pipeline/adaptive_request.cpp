@@ -5,6 +5,7 @@
 
 #include "framework/io/mesh_read.h"
 #include "framework/limit/limit_surface.h"
+#include "framework/pipeline/rational_weights.h"
 #include "framework/pipeline/refine_pipeline.h"
 #include "framework/util/option_spelling.h"
 #include "framework/util/quoted_text.h"
@@ -18,6 +19,20 @@ void check_request(const AdaptiveRequest& r) {
   if (!(r.tolerance >= 0) || !std::isfinite(r.tolerance))
     throw OptionError(fmt::format("{{tolerance}} {}: give a distance >= 0 (0: split only around features)",
                                   r.tolerance));
+}
+
+std::span<const double> weights_of(const MeshData& mesh, const std::string& name) {
+  for (const DataArray& a : mesh.point_data)
+    if (a.name == name) return a.values;
+  throw Error(fmt::format("the weights array {} is missing", subdiv::quoted(name)));
+}
+
+// xyz /= w per vertex of the adaptive mesh, w its data channel `channel`.
+void project_adaptive(AdaptiveMesh& mesh, int channel) {
+  const size_t V = mesh.positions.size() / 3, D = size_t(mesh.data_channels);
+  std::vector<double> w(V);
+  for (size_t v = 0; v < V; ++v) w[v] = mesh.data[v * D + size_t(channel)];
+  from_homogeneous(mesh.positions, w);
 }
 
 }  // namespace
@@ -37,10 +52,12 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
   if (p.sequence.schemes.size() != 1)
     throw Error(fmt::format("{}: {} is a sequence of schemes; adaptive refinement takes one scheme", r.mesh_name,
                             subdiv::quoted(p.scheme_label)));
-  if (p.rational)
-    throw Error(fmt::format("{}: adaptive refinement of rational meshes (weights in {}) is not implemented; refine "
-                            "uniformly",
-                            r.mesh_name, subdiv::quoted(p.weights_name)));
+  if (p.rational && request.tolerance > 0)
+    throw OptionError(fmt::format("{{tolerance}} {}: the tolerance is measured between bilinear patches and the "
+                                  "limit in R^3, and a rational mesh (weights in {}) is refined in homogeneous "
+                                  "coordinates, where that distance is not the one in R^3; refine it adaptively "
+                                  "without a tolerance, or uniformly",
+                                  request.tolerance, subdiv::quoted(p.weights_name)));
   AdaptiveOptions o;
   o.levels = levels;
   o.features = p.options.features;
@@ -77,14 +94,20 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
     }
     const Index V = p.base.vertex_count;
     std::vector<double> data(size_t(V) * size_t(channels));
-    int at = 0;
+    int at = 0, weight_channel = -1;
     for (const DataArray* a : carried) {
+      if (p.rational && a->name == p.weights_name) weight_channel = at;
       for (Index v = 0; v < V; ++v)
         for (int c = 0; c < a->components; ++c)
           data[size_t(v) * size_t(channels) + size_t(at + c)] = a->values[size_t(v) * size_t(a->components) + size_t(c)];
       at += a->components;
     }
-    out.mesh = refine_adaptive(*p.sequence.schemes.front(), p.base, p.mesh.positions, o, data, channels);
+    // Rational meshes (rational_weights.h): the homogeneous points (w·p, w) are refined — and
+    // with `limit` evaluated on the limit — like any point data, then projected.
+    std::vector<double> positions = p.mesh.positions;
+    if (p.rational) to_homogeneous(positions, weights_of(p.mesh, p.weights_name));
+    out.mesh = refine_adaptive(*p.sequence.schemes.front(), p.base, positions, o, data, channels);
+    if (p.rational) project_adaptive(out.mesh, weight_channel);
   } catch (const OptionError&) {
     throw;
   } catch (const Error& e) {

@@ -30,10 +30,13 @@ struct AdaptiveResult {
   std::vector<std::string> notes;     // feature files and angles applied
 };
 
-// Throws subdiv::Error naming the mesh (a sequence of schemes, rational weights, a split
-// other than the binary quad and triangle splits, a scheme whose limit cannot be evaluated
-// when a tolerance or limit positions are asked for), or subdiv::OptionError naming an
-// option ({levels} outside 0..12, {tolerance} negative or not a number).
+// A rational mesh (weights, rational_weights.h) is refined as its homogeneous points and
+// projected, with `limit` onto the rational limit surface.
+// Throws subdiv::Error naming the mesh (a sequence of schemes, a split other than the
+// binary quad and triangle splits, a scheme whose limit cannot be evaluated when a
+// tolerance or limit positions are asked for), or subdiv::OptionError naming an option
+// ({levels} outside 0..12, {tolerance} negative or not a number, or given with rational
+// weights: it would be measured in homogeneous coordinates).
 AdaptiveResult refine_adaptive_request(AdaptiveRequest request);
 
 // The mesh, scheme and shape options of an evaluation's request (subdiv evaluate --adaptive).
