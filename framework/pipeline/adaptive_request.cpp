@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fmt/format.h>
+#include <optional>
 
 #include "framework/io/mesh_read.h"
 #include "framework/limit/limit_surface.h"
@@ -35,6 +36,41 @@ void project_adaptive(AdaptiveMesh& mesh, int channel) {
   from_homogeneous(mesh.positions, w);
 }
 
+// The same mesh, scheme and shape options, as a request to evaluate.
+EvaluateRequest evaluation_of(const RefineRequest& r) {
+  EvaluateRequest e;
+  e.mesh = r.mesh;
+  e.mesh_name = r.mesh_name;
+  e.scheme = r.scheme;
+  e.shape = r.shape;
+  e.feature_file = r.feature_file;
+  e.feature_angle = r.feature_angle;
+  return e;
+}
+
+// Each face-varying channel at every corner of the adaptive mesh: its limit at the corner's
+// (base face, u, v), one value per corner (seams stay seams).
+std::vector<FaceVaryingArray> limit_face_varying(EvaluateRequest request, const AdaptiveMesh& mesh) {
+  const PreparedEvaluation prepared = prepare_evaluation(std::move(request));
+  std::vector<Index> faces(mesh.corner_uv.size());
+  std::vector<double> uv(2 * mesh.corner_uv.size());
+  for (size_t f = 0; f + 1 < mesh.face_offsets.size(); ++f)
+    for (Index c = mesh.face_offsets[f]; c < mesh.face_offsets[f + 1]; ++c) {
+      faces[size_t(c)] = mesh.base_face[f];
+      uv[2 * size_t(c)] = mesh.corner_uv[size_t(c)][0];
+      uv[2 * size_t(c) + 1] = mesh.corner_uv[size_t(c)][1];
+    }
+  std::vector<FaceVaryingArray> out;
+  for (size_t channel = 0; channel < prepared.face_varying.size(); ++channel) {
+    const FaceVaryingSurface& s = prepared.face_varying[channel];
+    FaceVaryingArray a{s.name, s.components, evaluate_face_varying(prepared, channel, faces, uv, 0).position, {}, s.role};
+    a.indices.resize(faces.size());
+    for (size_t c = 0; c < faces.size(); ++c) a.indices[c] = Index(c);
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
 }  // namespace
 
 AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
@@ -48,6 +84,10 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
   if (r.mesh_name.empty()) r.mesh_name = "mesh";
   const int levels = r.levels;
   r.levels_given = false;  // a sequence is refused below in its own words
+  // Face-varying channels are evaluated on the limit at the corners' (face, u, v), from an
+  // evaluation of the same mesh and options (its channels' value meshes and surfaces).
+  std::optional<EvaluateRequest> face_varying_source;
+  if (request.limit && !r.mesh.face_varying.empty()) face_varying_source = evaluation_of(r);
   PreparedRefinement p = prepare_refinement(r);
   if (p.sequence.schemes.size() != 1)
     throw Error(fmt::format("{}: {} is a sequence of schemes; adaptive refinement takes one scheme", r.mesh_name,
@@ -108,6 +148,12 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
     if (p.rational) to_homogeneous(positions, weights_of(p.mesh, p.weights_name));
     out.mesh = refine_adaptive(*p.sequence.schemes.front(), p.base, positions, o, data, channels);
     if (p.rational) project_adaptive(out.mesh, weight_channel);
+    if (face_varying_source) out.face_varying = limit_face_varying(std::move(*face_varying_source), out.mesh);
+    else
+      for (const FaceVaryingArray& a : p.mesh.face_varying)
+        p.notes.push_back(fmt::format("face-varying array {} is carried to the adaptive mesh only with limit "
+                                      "positions (its values there are its own limit at each corner)",
+                                      subdiv::quoted(a.name)));
   } catch (const OptionError&) {
     throw;
   } catch (const Error& e) {
@@ -135,8 +181,10 @@ AdaptiveRequest adaptive_request_from(EvaluateRequest e, int levels, double tole
   return a;
 }
 
-MeshData adaptive_mesh_data(AdaptiveMesh&& a, std::vector<DataArray> point_arrays) {
+MeshData adaptive_mesh_data(AdaptiveMesh&& a, std::vector<DataArray> point_arrays,
+                            std::vector<FaceVaryingArray> face_varying) {
   MeshData m;
+  m.face_varying = std::move(face_varying);
   const size_t V = a.positions.size() / 3, D = size_t(a.data_channels);
   size_t at = 0;
   for (DataArray& array : point_arrays) {

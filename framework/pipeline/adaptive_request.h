@@ -24,6 +24,11 @@ struct AdaptiveResult {
   // The mesh's point arrays placed like the positions (names and components; the values
   // are in mesh.data, side by side). Integer arrays (ids, labels) are left out.
   std::vector<DataArray> point_arrays;
+  // With limit positions: the mesh's face-varying channels (texture coordinates, ...), each
+  // corner's value the channel's own limit at the corner's (base face, u, v), as `subdiv
+  // evaluate` gives it (evaluate_request.h: the face-varying interpolation modes). Without
+  // limit positions they are not carried (a note says so).
+  std::vector<FaceVaryingArray> face_varying;
   std::string scheme_label;
   int levels = 0;
   std::vector<std::string> warnings;  // the mesh reader's, clean-up's
@@ -42,9 +47,11 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request);
 // The mesh, scheme and shape options of an evaluation's request (subdiv evaluate --adaptive).
 AdaptiveRequest adaptive_request_from(EvaluateRequest evaluation, int levels, double tolerance, bool limit);
 
-// The adaptive mesh as a mesh to write: cell arrays face_level and base_face, and the point
-// arrays (`point_arrays` as AdaptiveResult has them, their values taken from mesh.data).
-MeshData adaptive_mesh_data(AdaptiveMesh&& mesh, std::vector<DataArray> point_arrays = {});
+// The adaptive mesh as a mesh to write: cell arrays face_level and base_face, the point
+// arrays (`point_arrays` as AdaptiveResult has them, their values taken from mesh.data) and
+// the face-varying arrays.
+MeshData adaptive_mesh_data(AdaptiveMesh&& mesh, std::vector<DataArray> point_arrays = {},
+                            std::vector<FaceVaryingArray> face_varying = {});
 
 // One line for people: "N faces, levels 0..L (uniform level L: M); faces split per level: a b c".
 std::string adaptive_summary(const AdaptiveResult& result);

@@ -1,13 +1,14 @@
 """Feature-adaptive refinement: subdivkit.refine_adaptive, the same as ``subdiv refine
 --adaptive L`` (docs/limit.md), through the library's pipeline."""
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error
-from .mesh import Mesh, _data_arrays, _type_name
+from .mesh import Mesh, _data_arrays, _face_varying_triples, _type_name
 
 
 @dataclass
@@ -24,7 +25,7 @@ class AdaptiveInfo:
 
 def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, limit=False, params=None,
                     boundary="edges-and-corners", crease_method="uniform", feature_angle=-1.0, threads=0,
-                    info=False):
+                    info=False, fvar_boundary="all"):
     """Refine only where the surface needs it, up to level ``levels``; return a Mesh.
 
     Faces touching an extraordinary vertex, a crease, a sharp or semi-sharp vertex or a hole,
@@ -50,13 +51,20 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
         vertex is where the finest level that computed it puts it.
     params, boundary, crease_method, feature_angle, threads
         As for LimitSurface and refine().
+    fvar_boundary : str
+        How the mesh's face-varying arrays (``mesh.face_varying``, e.g. texture coordinates)
+        are interpolated, as for LimitSurface: "all" (the default, bilinear in each face, as
+        OpenSubdiv's), "none", "corners-only", "corners-plus1", "corners-plus2",
+        "boundaries". With ``limit=True`` each corner of the result gets the array's limit
+        at its (face, u, v), in ``face_varying``; without it they are left out (a warning).
     info : bool
         Return ``(mesh, AdaptiveInfo)`` instead of the mesh.
 
     The result is watertight: a coarse face next to finer ones takes the finer vertices along
     its edges as corners of its own (a transition polygon), so every interior edge is in
     exactly two faces. Its point_data: the mesh's point arrays (not integer ones), placed like
-    the positions (on the limit too with ``limit``). Its cell_data: ``face_level`` (the level
+    the positions (on the limit too with ``limit``); a rational mesh (a "weight" point array)
+    is refined as its homogeneous points and projected (``tolerance`` is refused then). Its cell_data: ``face_level`` (the level
     a face comes from) and
     ``base_face`` (the input face it lies in).
 
@@ -75,9 +83,15 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
         raise Error(f"tolerance={tolerance!r}: give a distance >= 0 (0: split only around features)")
     r = _subdivkit._refine_adaptive(mesh, scheme, params, int(levels), tol, bool(limit), str(boundary),
                                     str(crease_method), float(feature_angle), int(threads),
-                                    _data_arrays(mesh.point_data, mesh.point_roles, mesh.n_points, "point data"))
+                                    _data_arrays(mesh.point_data, mesh.point_roles, mesh.n_points, "point data"),
+                                    _face_varying_triples(mesh), str(fvar_boundary))
+    if mesh.face_varying and not limit:
+        warnings.warn(f"refine_adaptive: the face-varying arrays {', '.join(repr(n) for n in mesh.face_varying)} are "
+                      "carried only with limit=True (each corner gets the array's own limit there)", UserWarning,
+                      stacklevel=2)
     out = Mesh._from_arrays(r["mesh"], name=mesh.name, point_data=r["point_data"], point_roles=r["point_roles"],
-                            cell_data={"face_level": r["face_level"], "base_face": r["base_face"]})
+                            cell_data={"face_level": r["face_level"], "base_face": r["base_face"]},
+                            face_varying=r["face_varying"])
     if info:
         return out, AdaptiveInfo(uniform_faces=int(r["uniform_faces"]), split_faces=list(r["split_faces"]),
                                  corner_uv=r["corner_uv"], summary=str(r["summary"]))

@@ -94,3 +94,35 @@ def test_point_arrays_are_placed_like_the_positions():
     for limit in (False, True):
         r = sk.refine_adaptive(m, "catmull-clark", 3, limit=limit)
         assert np.allclose(r.point_data["height"].ravel(), 2 * r.points[:, 2] - r.points[:, 0], atol=1e-12)
+
+
+def test_face_varying_arrays_on_the_limit_and_rational_meshes():
+    # A seamless channel that is an affine image of the positions, in the mode "none": its
+    # limit is that image of the limit positions (it refines like them); in the mode "all"
+    # it is bilinear over each base face (closed forms, independent of the evaluator).
+    c = cube()
+    st = np.column_stack([c.points[:, 0] + 2 * c.points[:, 2], c.points[:, 1] - c.points[:, 2] + 0.5])
+    m = sk.Mesh(c.points, c.faces, face_varying={"st": (st, c.face_indices.copy())})
+    smooth = sk.refine_adaptive(m, "catmull-clark", 3, limit=True, fvar_boundary="none")
+    values, index = smooth.face_varying["st"]
+    p = smooth.points[smooth.face_indices]
+    assert np.abs(values[index] - np.column_stack([p[:, 0] + 2 * p[:, 2], p[:, 1] - p[:, 2] + 0.5])).max() < 1e-12
+    linear, info = sk.refine_adaptive(m, "catmull-clark", 3, limit=True, info=True)
+    values, index = linear.face_varying["st"]
+    base = np.repeat(linear.cell_data["base_face"], np.diff(linear.face_offsets))
+    u, v = info.corner_uv[:, 0], info.corner_uv[:, 1]
+    corners = st[c.faces[base]]  # (corners, 4, 2)
+    w = np.column_stack([(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v])
+    assert np.abs(values[index] - np.einsum("ck,ckj->cj", w, corners)).max() < 1e-12
+    with pytest.warns(UserWarning, match="only with limit=True"):
+        plain = sk.refine_adaptive(m, "catmull-clark", 3)
+    assert not plain.face_varying
+    # Rational: equal weights give the polynomial mesh; uneven ones move it, and a tolerance is refused.
+    twos = sk.Mesh(c.points, c.faces, point_data={"weight": np.full(8, 2.0)})
+    assert np.abs(sk.refine_adaptive(twos, "catmull-clark", 3, limit=True).points
+                  - sk.refine_adaptive(c, "catmull-clark", 3, limit=True).points).max() < 1e-13
+    uneven = sk.Mesh(c.points, c.faces, point_data={"weight": np.linspace(0.5, 2.0, 8)})
+    assert np.abs(sk.refine_adaptive(uneven, "catmull-clark", 3).points
+                  - sk.refine_adaptive(c, "catmull-clark", 3).points).max() > 1e-3
+    with pytest.raises(sk.Error, match="homogeneous"):
+        sk.refine_adaptive(uneven, "catmull-clark", 3, tolerance=1e-3)

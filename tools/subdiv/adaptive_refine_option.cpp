@@ -46,7 +46,7 @@ void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& a, bool limi
   AdaptiveResult result = refine_adaptive_request(std::move(r));
   for (const std::string& w : result.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
   const std::string summary = adaptive_summary(result);
-  write_mesh(output, adaptive_mesh_data(std::move(result.mesh), std::move(result.point_arrays)));
+  write_mesh(output, adaptive_mesh_data(std::move(result.mesh), std::move(result.point_arrays), std::move(result.face_varying)));
   if (quiet) return;
   for (const auto& note : result.notes) print_safe("{}\n", spell_options(note, cli_option_spelling()));
   print_safe("adaptive refinement of {} to level {}: {} in {:.3f} s -> {}\n", result.scheme_label, a.levels,

@@ -185,7 +185,7 @@ void run(const EvaluateArgs& a) {
     AdaptiveResult r = refine_adaptive_request(adaptive_request_from(evaluate_request(a, progress), a.adaptive, a.tolerance, a.limit));
     for (const std::string& w : r.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
     print_safe("subdiv: {}\n", adaptive_summary(r));
-    write_with_bar(a.output, adaptive_mesh_data(std::move(r.mesh), std::move(r.point_arrays)), progress);
+    write_with_bar(a.output, adaptive_mesh_data(std::move(r.mesh), std::move(r.point_arrays), std::move(r.face_varying)), progress);
     return;
   }
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a, progress));

@@ -41,7 +41,7 @@ LimitMesh run(const MeshData& mesh, const LimitSettings& s, const std::string& s
         adaptive_request_from(evaluate_request(mesh, s, source), s.adaptive_levels, s.tolerance, s.limit_positions));
     out.notes = std::move(r.warnings);
     out.notes.insert(out.notes.end(), r.notes.begin(), r.notes.end());
-    out.mesh = adaptive_mesh_data(std::move(r.mesh), std::move(r.point_arrays));
+    out.mesh = adaptive_mesh_data(std::move(r.mesh), std::move(r.point_arrays), std::move(r.face_varying));
     return out;
   }
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(mesh, s, source));
