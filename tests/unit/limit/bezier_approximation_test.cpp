@@ -146,6 +146,21 @@ EdgeSides compare_edges(const Level& level, const std::vector<BezierPatch>& patc
   return out;
 }
 
+// At the points (faces[i], uv[2i], uv[2i + 1]): the largest distance of the patches from the
+// exact limit, and of the tangent patches from the exact derivatives.
+std::pair<double, double> against_exact(const PreparedEvaluation& p, const std::vector<BezierPatch>& patches,
+                                        const std::vector<Index>& faces, const std::vector<double>& uv) {
+  const ApproximatedPoints a = approximate_points(p, patches, faces, uv);
+  const EvaluatedPoints exact = evaluate_limit_points(p, faces, uv, 1);
+  double worst = 0;
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const PatchSample s = evaluate_patch(patches[size_t(faces[i])], uv[2 * i], uv[2 * i + 1]);
+    for (size_t c = 0; c < 3; ++c)
+      worst = std::max({worst, std::abs(s.du[c] - exact.du[3 * i + c]), std::abs(s.dv[c] - exact.dv[3 * i + c])});
+  }
+  return {a.distances.largest, worst};
+}
+
 }  // namespace
 
 TEST_CASE("where every valence is 4 the patches are the exact limit (the bicubic B-spline)") {
@@ -160,17 +175,9 @@ TEST_CASE("where every valence is 4 the patches are the exact limit (the bicubic
     uv.push_back(unit(rng));
     uv.push_back(unit(rng));
   }
-  const ApproximatedPoints a = approximate_points(p, patches, faces, uv);
-  CHECK(a.distances.largest < 1e-12);
-  // The tangent patches are then the patch's own derivatives: the exact ones.
-  const EvaluatedPoints exact = evaluate_limit_points(p, faces, uv, 1);
-  double worst = 0;
-  for (size_t i = 0; i < faces.size(); ++i) {
-    const PatchSample s = evaluate_patch(patches[size_t(faces[i])], uv[2 * i], uv[2 * i + 1]);
-    for (size_t c = 0; c < 3; ++c)
-      worst = std::max({worst, std::abs(s.du[c] - exact.du[3 * i + c]), std::abs(s.dv[c] - exact.dv[3 * i + c])});
-  }
-  CHECK(worst < 1e-11);
+  const auto [distance, derivatives] = against_exact(p, patches, faces, uv);
+  CHECK(distance < 1e-12);
+  CHECK(derivatives < 1e-11);  // the tangent patches are then the patch's own derivatives: the exact ones
 }
 
 TEST_CASE("patches meet with C0, and the tangent patches' normals are continuous where the geometry's are not") {
@@ -298,15 +305,7 @@ std::pair<double, double> worst_against_exact(const PreparedEvaluation& p, const
       uv.push_back(unit(rng));
       uv.push_back(unit(rng));
     }
-  const ApproximatedPoints a = approximate_points(p, patches, faces, uv);
-  const EvaluatedPoints exact = evaluate_limit_points(p, faces, uv, 1);
-  double worst = 0;
-  for (size_t i = 0; i < faces.size(); ++i) {
-    const PatchSample s = evaluate_patch(patches[size_t(faces[i])], uv[2 * i], uv[2 * i + 1]);
-    for (size_t c = 0; c < 3; ++c)
-      worst = std::max({worst, std::abs(s.du[c] - exact.du[3 * i + c]), std::abs(s.dv[c] - exact.dv[3 * i + c])});
-  }
-  return {a.distances.largest, worst};
+  return against_exact(p, patches, faces, uv);
 }
 
 }  // namespace
