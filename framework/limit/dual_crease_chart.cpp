@@ -1,0 +1,124 @@
+#include "framework/limit/dual_crease_chart.h"
+
+#include <fmt/format.h>
+
+#include "framework/features/dual_features.h"
+#include "framework/features/sharpness.h"
+
+namespace subdiv {
+namespace {
+
+constexpr Uv kCorner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+
+Index corner_edge(const Level& L, Index f, int corner) { return L.face_edges[size_t(L.face_offsets[f] + corner)]; }
+
+bool infinitely_sharp(const Level& L, Index e) {
+  return L.edge_on_boundary(e) || L.edge_sharp(e) >= kInfinitelySharp;
+}
+
+std::string vertex_problem(const Level& L, Index v) {
+  const int sharp = dual_sharp_edge_count(L, v);
+  const float vs = L.vertex_sharp(v);
+  if (vs >= 1.f && vs < kInfinitelySharp)
+    return fmt::format("vertex {} has sharpness {} (a semi-sharp corner)", v, vs);
+  if (dual_collapses(L, v)) {
+    for (Index e : L.ring_edges(v))
+      if (!infinitely_sharp(L, e))
+        return fmt::format("corner vertex {} has an edge that is not infinitely sharp (its ring of faces doubles "
+                           "every level, so no neighbourhood repeats)",
+                           v);
+    return {};
+  }
+  if (sharp == 0) return {};
+  if (sharp == 1) return fmt::format("vertex {} ends a crease (a dart)", v);
+  if (L.on_boundary(v)) {
+    if (L.incident_face_count(v) != 2)
+      return fmt::format("boundary vertex {} has {} faces (only two faces per side of a boundary or crease so far)", v,
+                         L.incident_face_count(v));
+    return {};
+  }
+  const auto ring = L.ring_edges(v);
+  if (ring.size() != 4 || !dual_sharp_edge(L, ring[0]) != !dual_sharp_edge(L, ring[2]))
+    return fmt::format("crease vertex {} does not have two faces on each side of its crease (only two faces per "
+                       "side of a boundary or crease so far)",
+                       v);
+  return {};
+}
+
+std::string face_problem(const Level& L, Index f) {
+  const auto run = crease_run(L, f);
+  if (!run) return fmt::format("face {} lies between two creases (its crease corners are not one run)", f);
+  if (run->length == 0) return {};
+  const int n = L.face_size(f);
+  if (n != 4)
+    return fmt::format("face {} has {} sides and a corner on a boundary or crease (only quads next to boundaries and "
+                       "creases so far)",
+                       f, n);
+  if (run->length == 2 && dual_sharp_edge(L, corner_edge(L, f, run->first))) return {};
+  if (run->length == 3 && dual_sharp_edge(L, corner_edge(L, f, run->first)) &&
+      dual_sharp_edge(L, corner_edge(L, f, (run->first + 1) % n)) &&
+      dual_collapses(L, L.face(f)[size_t((run->first + 1) % n)]))
+    return {};
+  return fmt::format("face {} has {} of its {} corners on a boundary or crease (a face between creases)", f,
+                     run->length, n);
+}
+
+}  // namespace
+
+bool is_crease_corner(const Level& L, Index f, int corner) {
+  const int n = L.face_size(f);
+  return dual_collapses(L, L.face(f)[size_t(corner)]) || dual_sharp_edge(L, corner_edge(L, f, corner)) ||
+         dual_sharp_edge(L, corner_edge(L, f, (corner + n - 1) % n));
+}
+
+std::optional<CreaseRun> crease_run(const Level& L, Index f) {
+  const int n = L.face_size(f);
+  int count = 0, starts = 0, first = 0;
+  for (int i = 0; i < n; ++i) {
+    const bool in = is_crease_corner(L, f, i);
+    count += in;
+    if (in && !is_crease_corner(L, f, (i + n - 1) % n)) ++starts, first = i;
+  }
+  if (count == 0) return CreaseRun{};
+  if (count == n || starts != 1) return std::nullopt;
+  return CreaseRun{first, count};
+}
+
+QuadrantChart half_quad_quadrant(CreaseRun run, int corner) {
+  auto crease = [&](int i) { return ((i - run.first + 4) % 4) < run.length; };
+  auto towards = [&](int next) {
+    const Uv& c = kCorner[corner];
+    const Uv& x = kCorner[next];
+    const Uv end = crease(next) ? x : Uv{(c[0] + x[0]) / 2, (c[1] + x[1]) / 2};
+    return Uv{end[0] - c[0], end[1] - c[1]};
+  };
+  return {kCorner[corner], towards((corner + 1) % 4), towards((corner + 3) % 4)};
+}
+
+std::vector<std::pair<int, double>> crease_run_middle(CreaseRun run, int face_size) {
+  const int half = (run.length - 1) / 2;
+  if (run.length % 2 == 1) return {{(run.first + half) % face_size, 1.0}};
+  return {{(run.first + half) % face_size, 0.5}, {(run.first + half + 1) % face_size, 0.5}};
+}
+
+bool crease_run_infinitely_sharp(const Level& L, Index f, CreaseRun run) {
+  const int n = L.face_size(f);
+  for (int k = 0; k + 1 < run.length; ++k)
+    if (!infinitely_sharp(L, corner_edge(L, f, (run.first + k) % n))) return false;
+  return true;
+}
+
+std::string dual_crease_unsupported(const Level& base) {
+  for (Index e = 0; e < base.edge_count(); ++e)
+    if (!base.edge_on_boundary(e) && base.edge_sharp(e) >= 1.f && base.edge_sharp(e) < kInfinitelySharp)
+      return fmt::format("edge {} has sharpness {}: semi-sharp creases of sharpness 1 or more are not evaluated yet "
+                         "(fractional sharpness below 1 and infinitely sharp creases are)",
+                         e, base.edge_sharp(e));
+  for (Index v = 0; v < base.vertex_count; ++v)
+    if (std::string why = vertex_problem(base, v); !why.empty()) return why;
+  for (Index f = 0; f < base.face_count(); ++f)
+    if (std::string why = face_problem(base, f); !why.empty()) return why;
+  return {};
+}
+
+}  // namespace subdiv

@@ -1,0 +1,66 @@
+#pragma once
+// Faces next to boundaries and sharp creases under a dual split, and the quadrants they are
+// parameterised by (docs/limit.md, "Dual schemes at boundaries and creases").
+//
+// A corner of a face is a *crease corner* when one of its two face edges is sharp for the
+// dual split (features/dual_features.h: a boundary edge, or sharpness >= 1) or its vertex
+// collapses (a corner): its new point lies on the crease (or is the corner itself). A face
+// with crease corners is a *half face*: across the crease the scheme contracts by 3/4 per
+// step, not 1/2 (docs/analysis.md, "Dual schemes at boundaries and creases"), so the
+// quadrants of a closed face, nested as a binary split, would leave the quadrants at crease
+// corners unrefined across (the "outer half" of a boundary face never reached). Instead the
+// crease corners own no quadrant: the face is covered by the quadrants of its other corners,
+// each reaching to the crease, as if the face were the half of a face mirrored across the
+// crease. The quadrant of corner i has (0, 0) at corner i, (1, 0) at the middle of edge i or,
+// when corner i + 1 is a crease corner, at that corner; (0, 1) likewise towards corner i - 1;
+// and (1, 1) at the middle of the crease run (the middle of the crease edge, or the corner
+// the run turns at). One dual step puts the new point of corner i at (1/2, 1/2), as for a
+// closed face, and the four faces around it (all four exist: it is a smooth point) hold its
+// quarters, so quadrants nest as a binary quad split does.
+//
+// Supported (dual_crease_unsupported says why not): boundary and crease vertices with two
+// faces on each side of the crease (a regular boundary or crease), corners (a boundary
+// vertex of one face, or a vertex whose edges are all sharp), crease edges infinitely sharp;
+// half faces of the base mesh are quads. These stay so at every level: the new faces next to
+// the crease are the F-faces of half faces and the E-faces across crease vertices, quads
+// with one crease edge, or a crease run through a corner.
+#include <optional>
+#include <string>
+
+#include "framework/limit/face_domain.h"
+#include "framework/topology/level.h"
+
+namespace subdiv {
+
+// The crease corners of face f form one cyclic run: corners first, first + 1, ...,
+// first + length - 1 (mod the face size). length 0: no crease corner (a closed face).
+struct CreaseRun {
+  int first = 0;
+  int length = 0;
+};
+
+// The run of f's crease corners; empty when they are not one run (a face between two creases).
+std::optional<CreaseRun> crease_run(const Level& L, Index f);
+
+bool is_crease_corner(const Level& L, Index f, int corner);
+
+// The quadrant of a non-crease corner of a half quad in the quad's (u, v): (u, v) = origin +
+// a (to_a) + b (to_b).
+struct QuadrantChart {
+  Uv origin{}, to_a{}, to_b{};
+};
+QuadrantChart half_quad_quadrant(CreaseRun run, int corner);
+
+// The crease run's middle as weights on f's corners (its middle corner, or the two middle
+// corners' mean): the limit at (1, 1) of every quadrant of a half face whose crease is
+// infinitely sharp (the crease curve at a knot, Chaikin 1974: the mean of the two control
+// points; a corner stays).
+std::vector<std::pair<int, double>> crease_run_middle(CreaseRun run, int face_size);
+
+// Whether every edge of the run is infinitely sharp (a boundary, or sharpness >= 10).
+bool crease_run_infinitely_sharp(const Level& L, Index f, CreaseRun run);
+
+// Why boundaries and creases of `base` cannot be evaluated under a dual scheme, or empty.
+std::string dual_crease_unsupported(const Level& base);
+
+}  // namespace subdiv
