@@ -1,9 +1,15 @@
 #include "framework/limit/dual_crease_chart.h"
 
+#include <cmath>
+#include <map>
+
 #include <fmt/format.h>
+
+#include "framework/engine/refiner.h"
 
 #include "framework/features/dual_features.h"
 #include "framework/features/sharpness.h"
+#include "framework/util/error.h"
 
 namespace subdiv {
 namespace {
@@ -106,6 +112,65 @@ bool crease_run_infinitely_sharp(const Level& L, Index f, CreaseRun run) {
   for (int k = 0; k + 1 < run.length; ++k)
     if (!infinitely_sharp(L, corner_edge(L, f, (run.first + k) % n))) return false;
   return true;
+}
+
+std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& features) {
+  constexpr int nx = 6, ny = 5;
+  std::vector<Index> offsets{0}, corners;
+  auto id = [](int i, int j) { return Index(j * (nx + 1) + i); };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      for (Index v : {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)}) corners.push_back(v);
+      offsets.push_back(Index(corners.size()));
+    }
+  const Level grid = build_level(Index((nx + 1) * (ny + 1)), offsets, corners);
+  RefineOptions ro;
+  ro.levels = 1;
+  ro.features = features;
+  Hierarchy h;
+  try {
+    h = refine(scheme, grid, ro);
+  } catch (const Error& e) {
+    return std::string("one step of the scheme on an open grid fails: ") + e.what();
+  }
+  if (!h.linear() || h.stencils.empty()) return "the scheme's rules are not linear";
+  const StencilTable& table = h.stencils[0];
+  const Level& child = h.levels[1];
+  auto row = [&](Index v) {
+    std::map<Index, double> r;
+    for (Index k = table.offsets[size_t(v)]; k < table.offsets[size_t(v) + 1]; ++k)
+      r[table.indices[size_t(k)]] += table.weights[size_t(k)];
+    return r;
+  };
+  auto equal = [](const std::map<Index, double>& r, const std::map<Index, double>& e) {
+    double off = 0;
+    for (const auto& [v, w] : r) off += std::abs(w - (e.count(v) ? e.at(v) : 0.0));
+    for (const auto& [v, w] : e) off += r.count(v) ? 0.0 : std::abs(w);
+    return off < 1e-12;
+  };
+  auto is_corner = [&](Index v) { return grid.incident_face_count(v) == 1; };
+  for (Index e = 0; e < grid.edge_count(); ++e) {
+    if (!grid.edge_on_boundary(e)) continue;
+    const Index p = grid.edge_vertices[size_t(2 * e)], q = grid.edge_vertices[size_t(2 * e + 1)];
+    if (is_corner(p) || is_corner(q)) continue;
+    bool found = false;
+    for (Index c = 0; c < child.edge_count() && !found; ++c) {
+      if (!child.edge_on_boundary(c)) continue;
+      auto r = row(child.edge_vertices[size_t(2 * c)]);
+      for (const auto& [v, w] : row(child.edge_vertices[size_t(2 * c + 1)])) r[v] += w;
+      found = equal(r, {{p, 1.0}, {q, 1.0}});
+    }
+    if (!found)
+      return "its crease rule does not keep the middle of every crease edge (the crease is not Chaikin's curve "
+             "after the split's passes)";
+  }
+  for (Index v = 0; v < grid.vertex_count; ++v) {
+    if (!is_corner(v)) continue;
+    bool found = false;
+    for (Index c = 0; c < child.vertex_count && !found; ++c) found = equal(row(c), {{v, 1.0}});
+    if (!found) return "its corners do not stay";
+  }
+  return {};
 }
 
 std::string dual_crease_unsupported(const Level& base) {

@@ -27,10 +27,13 @@
 #include <optional>
 #include <string>
 
+#include "framework/features/feature_options.h"
 #include "framework/limit/face_domain.h"
 #include "framework/topology/level.h"
 
 namespace subdiv {
+
+struct Scheme;
 
 // The crease corners of face f form one cyclic run: corners first, first + 1, ...,
 // first + length - 1 (mod the face size). length 0: no crease corner (a closed face).
@@ -59,6 +62,14 @@ std::vector<std::pair<int, double>> crease_run_middle(CreaseRun run, int face_si
 
 // Whether every edge of the run is infinitely sharp (a boundary, or sharpness >= 10).
 bool crease_run_infinitely_sharp(const Level& L, Index f, CreaseRun run);
+
+// Empty when the scheme's crease keeps what the quadrants' (1, 1) rest on, checked on the
+// engine's rows for an open grid (as biquadratic_patch.h checks the regular rule): every child
+// boundary edge along a parent boundary edge (p, q) between non-corners has its middle at
+// (p + q)/2 (Chaikin's cuts are symmetric about the middle), and a corner's point is the
+// corner. Otherwise why not (even-degree quad B-splines of d >= 4, whose smoothing passes
+// move the crease points).
+std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& features);
 
 // Why boundaries and creases of `base` cannot be evaluated under a dual scheme, or empty.
 std::string dual_crease_unsupported(const Level& base);

@@ -14,6 +14,7 @@
 #include "framework/limit/step_matrix.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -261,6 +262,16 @@ DualLimit::DualLimit(const Scheme& scheme, const Level& base, const LimitSurface
                      SchemeLimits& limits)
     : scheme_(scheme), base_(base), options_(options), radius_(radius), limits_(limits) {
   biquadratic_ = refines_as_biquadratic(scheme, options.features);
+  bool creased = false;
+  for (Index f = 0; f < base.face_count() && !creased; ++f) {
+    const auto run = crease_run(base, f);
+    creased = !run || run->length > 0;
+  }
+  if (creased)
+    if (const std::string why = crease_middles_kept(scheme, options.features); !why.empty())
+      throw Error(fmt::format("scheme {} is a dual scheme and the mesh has boundaries or sharp creases, which are "
+                              "evaluated for schemes whose crease is Chaikin's curve at every level; {}",
+                              subdiv::quoted(scheme.name), why));
 }
 
 std::vector<Index> DualLimit::reads(const FacePoint& p) const { return cut_around(base_, p.face, radius_).original; }

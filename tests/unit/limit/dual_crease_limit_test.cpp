@@ -351,6 +351,11 @@ TEST_CASE("dual limit: boundaries and creases not covered yet are refused with t
     }
   CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), house.level()),
                        doctest::Contains("face 1 has 5 sides"), Error);
+  // quad-bspline d = 4: its smoothing pass moves the crease points off Chaikin's polygon.
+  ParameterOverrides d4;
+  d4["d"] = "4";
+  CHECK_THROWS_WITH_AS(LimitSurface(load_scheme("quad-bspline", d4), test::grid(4, 4).level()),
+                       doctest::Contains("does not keep the middle of every crease edge"), Error);
   // A single quad: every corner is a corner of the mesh.
   test::Mesh quad;
   for (int k = 0; k < 4; ++k) quad.add_vertex(k == 1 || k == 2, k >= 2, 0);
