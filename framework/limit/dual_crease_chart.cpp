@@ -77,17 +77,36 @@ bool is_crease_corner(const Level& L, Index f, int corner) {
          dual_sharp_edge(L, corner_edge(L, f, (corner + n - 1) % n));
 }
 
-std::optional<CreaseRun> crease_run(const Level& L, Index f) {
-  const int n = L.face_size(f);
+namespace {
+
+std::optional<CreaseRun> run_of(const std::vector<bool>& in) {
+  const int n = int(in.size());
   int count = 0, starts = 0, first = 0;
   for (int i = 0; i < n; ++i) {
-    const bool in = is_crease_corner(L, f, i);
-    count += in;
-    if (in && !is_crease_corner(L, f, (i + n - 1) % n)) ++starts, first = i;
+    count += in[size_t(i)];
+    if (in[size_t(i)] && !in[size_t((i + n - 1) % n)]) ++starts, first = i;
   }
   if (count == 0) return CreaseRun{};
   if (count == n || starts != 1) return std::nullopt;
   return CreaseRun{first, count};
+}
+
+}  // namespace
+
+std::optional<CreaseRun> crease_run(const Level& L, Index f) {
+  std::vector<bool> in(size_t(L.face_size(f)));
+  for (int i = 0; i < L.face_size(f); ++i) in[size_t(i)] = is_crease_corner(L, f, i);
+  return run_of(in);
+}
+
+std::optional<CreaseRun> made_on_crease_run(const Level& parent, const Level& child, const ChildOrigins& o, Index face) {
+  const auto g = child.face(face);
+  std::vector<bool> in(g.size());
+  for (size_t k = 0; k < g.size(); ++k) {
+    const size_t x = size_t(g[k]);
+    in[k] = o.kind[x] == OriginKind::Corner && is_crease_corner(parent, o.parent[x], int(o.local[x]));
+  }
+  return run_of(in);
 }
 
 QuadrantChart half_quad_quadrant(CreaseRun run, int corner) {
@@ -174,11 +193,6 @@ std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& feat
 }
 
 std::string dual_crease_unsupported(const Level& base) {
-  for (Index e = 0; e < base.edge_count(); ++e)
-    if (!base.edge_on_boundary(e) && base.edge_sharp(e) >= 1.f && base.edge_sharp(e) < kInfinitelySharp)
-      return fmt::format("edge {} has sharpness {}: semi-sharp creases of sharpness 1 or more are not evaluated yet "
-                         "(fractional sharpness below 1 and infinitely sharp creases are)",
-                         e, base.edge_sharp(e));
   for (Index v = 0; v < base.vertex_count; ++v)
     if (std::string why = vertex_problem(base, v); !why.empty()) return why;
   for (Index f = 0; f < base.face_count(); ++f)

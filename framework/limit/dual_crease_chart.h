@@ -29,6 +29,7 @@
 
 #include "framework/features/feature_options.h"
 #include "framework/limit/face_domain.h"
+#include "framework/refine/child_origins.h"
 #include "framework/topology/level.h"
 
 namespace subdiv {
@@ -46,6 +47,13 @@ struct CreaseRun {
 std::optional<CreaseRun> crease_run(const Level& L, Index f);
 
 bool is_crease_corner(const Level& L, Index f, int corner);
+
+// The run of the corners of `face` (of the child level of a dual step) that the step made on
+// a crease (a crease corner's point: on a sharp edge, or a corner's point): the run the face's
+// quadrants were laid out by. A semi-sharp crease that decays leaves it non-empty while the
+// face's own run (crease_run) is empty: the face is then read in a closed face's quadrants.
+std::optional<CreaseRun> made_on_crease_run(const Level& parent, const Level& child, const ChildOrigins& origins,
+                                            Index face);
 
 // The quadrant of a non-crease corner of a half quad in the quad's (u, v): (u, v) = origin +
 // a (to_a) + b (to_b).

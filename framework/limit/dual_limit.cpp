@@ -49,6 +49,7 @@ struct Cut {
   Level level;
   std::vector<Index> original;
   QuadrantPoint point;
+  CreaseRun chart;  // the crease run the point's quadrant is laid out by (dual_crease_chart.h)
 };
 
 Cut cut_around(const Level& L, Index face, int radius) {
@@ -173,6 +174,42 @@ ChildStep child_quadrant(const Level& child, const ChildOrigins& o, const Quadra
   return s;
 }
 
+// Where a semi-sharp crease has decayed (its edges no longer sharp for the next split), a
+// face laid out by its crease run (quadrants of the corners off it) is refined as a closed
+// face: the point is moved to the face's own quadrant at the nearest corner, through the
+// quad's (u, v), with d(a', b')/d(a, b) carried into the Jacobian.
+void follow_decay(Cut& cut) {
+  const auto own = crease_run(cut.level, cut.point.face);
+  if (!own) throw Error("the point's face lies between two creases (its crease corners are not one run)");
+  const CreaseRun was = cut.chart;
+  if (own->length == was.length && (was.length == 0 || own->first == was.first)) return;
+  if (own->length != 0 || cut.level.face_size(cut.point.face) != 4)
+    throw Error("a semi-sharp crease changes shape as it decays (its edges or corner decay at different levels): "
+                "not evaluated yet");
+  QuadrantPoint& q = cut.point;
+  const QuadrantChart c = half_quad_quadrant(was, q.corner);
+  const Uv ab = as_uv(q.ab);
+  const double u = c.origin[0] + ab[0] * c.to_a[0] + ab[1] * c.to_b[0];
+  const double v = c.origin[1] + ab[0] * c.to_a[1] + ab[1] * c.to_b[1];
+  constexpr Uv kCorner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const int k = u <= 0.5 ? (v <= 0.5 ? 0 : 3) : (v <= 0.5 ? 1 : 2);
+  const Uv& o = kCorner[k];
+  const Uv e{kCorner[(k + 1) % 4][0] - o[0], kCorner[(k + 1) % 4][1] - o[1]};
+  const Uv f{kCorner[(k + 3) % 4][0] - o[0], kCorner[(k + 3) % 4][1] - o[1]};
+  // (a', b') = 2 [e; f] ((u, v) - o), and d(u, v)/d(a, b) = [to_a to_b].
+  const std::array<std::array<double, 2>, 2> D{
+      {{2 * (e[0] * c.to_a[0] + e[1] * c.to_a[1]), 2 * (e[0] * c.to_b[0] + e[1] * c.to_b[1])},
+       {2 * (f[0] * c.to_a[0] + f[1] * c.to_a[1]), 2 * (f[0] * c.to_b[0] + f[1] * c.to_b[1])}}};
+  Jacobian J{};
+  for (size_t r = 0; r < 2; ++r)
+    for (size_t x = 0; x < 2; ++x) J[r][x] = D[r][0] * q.jacobian[0][x] + D[r][1] * q.jacobian[1][x];
+  q.corner = k;
+  q.ab = coords({std::clamp(2 * (e[0] * (u - o[0]) + e[1] * (v - o[1])), 0.0, 1.0),
+                 std::clamp(2 * (f[0] * (u - o[0]) + f[1] * (v - o[1])), 0.0, 1.0)});
+  q.jacobian = J;
+  cut.chart = CreaseRun{};
+}
+
 Coords nearest_corner(const Coords& ab) { return {Coord{0, ab[0].high}, Coord{0, ab[1].high}}; }
 
 // The 3 x 3 points around the quadrant's corner w when the surface over the quadrant is the
@@ -283,6 +320,7 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
   {
     const QuadrantPoint q = base_quadrant(base_, p0);
     cut.point.corner = q.corner, cut.point.ab = q.ab, cut.point.jacobian = q.jacobian;
+    if (const auto run = crease_run(base_, p0.face)) cut.chart = *run;
   }
   std::deque<StepMatrix> owned;
   std::vector<const StepMatrix*> path;
@@ -292,6 +330,7 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
   const int limit_steps = options_.max_steps + 40;
   for (int step = 0;; ++step) {
     QuadrantPoint& q = cut.point;
+    follow_decay(cut);
     if (step == options_.max_steps) q.ab = nearest_corner(q.ab);
     if (biquadratic_) {
       if (const auto grid = smooth_biquadratic_grid(cut.level, q.face, q.corner)) {
@@ -385,6 +424,8 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
     const ChildStep s = child_quadrant(h.levels[1], h.origins[0], q);
     Cut next = cut_around(h.levels[1], s.face, radius_);
     next.point.corner = s.corner, next.point.ab = s.ab, next.point.jacobian = s.jacobian;
+    if (const auto run = made_on_crease_run(cut.level, h.levels[1], h.origins[0], s.face)) next.chart = *run;
+    else throw Error("internal: a new face has its crease points in two runs");
     owned.push_back(step_matrix(h.stencils[0], next.original, cut.level.vertex_count));
     path.push_back(&owned.back());
     std::vector<double> moved(size_t(owned.back().rows()) * size_t(channels));

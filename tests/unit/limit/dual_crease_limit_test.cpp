@@ -222,59 +222,114 @@ TEST_CASE("dual limit at boundaries and creases: continuous across every edge, a
   CHECK(stencil_worst < 1e-13);
 }
 
-TEST_CASE("dual limit at boundaries and creases: at level-1 points, the limit points of the refined mesh") {
-  // A level-1 point of a corner off the crease lies at (1/2, 1/2) of its quadrant: half way
-  // between the corner and the quadrant's (1, 1) — the face centre, or for a face with corners
-  // on the crease the middle of its crease run (docs/limit.md). Its limit (a V-face's
-  // centroid, from the refined mesh's own next step) must be the evaluated point there.
+namespace {
+
+// The limits of the level-1 points of corners off the crease, against their limits on the
+// refined mesh. A level-1 point of a corner off the crease lies at (1/2, 1/2) of its quadrant:
+// half way between the corner and the quadrant's (1, 1) — the face centre, or for a face with
+// corners on the crease the middle of its crease run (docs/limit.md). On the refined mesh its
+// limit is taken by the V-face centroid limit (interpolation/dual_limits.h, from the refined
+// mesh's own next step) when `by_centroids`, else by evaluating the refined mesh at the point
+// as a corner of one of its faces.
+void check_level_one_points(const test::Mesh& m, const Level& L, bool by_centroids) {
   constexpr std::array<std::array<double, 2>, 4> kCorner{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
-  for (int mesh = 0; mesh < 2; ++mesh) {
-    CAPTURE(mesh);
-    const test::Mesh m = mesh == 0 ? bumped(test::grid(5, 4)) : bumped(test::torus(8, 6));
-    const Level L = mesh == 0 ? m.level() : creased_torus_level(m, 8);
-    const LimitSurface s(scheme("doo-sabin"), L);
-    RefineOptions ro;
-    ro.levels = 1;
-    const Hierarchy h = refine(*scheme("doo-sabin"), L, ro);
-    std::vector<double> p1(size_t(3 * h.levels[1].vertex_count));
-    h.stencils[0].apply(m.positions, p1, 3);
-    const LimitChoice c = select_limit(load_scheme_sequence("doo-sabin", 1, {}), h.levels[1]);
-    std::vector<double> limits(p1.size());
-    c.evaluator->limit_points(h.levels[1], p1, limits);
-    const ChildOrigins& o = h.origins[0];
-    int checked = 0;
-    double worst = 0;
-    for (size_t v = 0; v < o.kind.size(); ++v) {
-      if (o.kind[v] != OriginKind::Corner) continue;
-      const Index f = o.parent[v];
-      const int j = int(o.local[v]);
-      const auto g = L.face(f);
-      // Which corners of f are on a sharp edge or a boundary.
-      auto sharp = [&](int k) {
-        const Index e = L.face_edges[size_t(L.face_offsets[f] + ((k % 4) + 4) % 4)];
-        return L.edge_on_boundary(e) || L.edge_sharp(e) >= 1;
-      };
-      auto crease_corner = [&](int k) { return sharp(k) || sharp(k - 1) || (L.on_boundary(g[size_t(k % 4)]) && L.incident_face_count(g[size_t(k % 4)]) == 1); };
-      if (crease_corner(j)) continue;
-      std::array<double, 2> centre{0.5, 0.5};
-      std::vector<int> run;
-      for (int k = 0; k < 4; ++k)
-        if (crease_corner(k)) run.push_back(k);
-      if (run.size() == 2) {  // one crease edge: its middle
-        const int a = run[0], b = run[1];
-        centre = {(kCorner[size_t(a)][0] + kCorner[size_t(b)][0]) / 2, (kCorner[size_t(a)][1] + kCorner[size_t(b)][1]) / 2};
-      } else if (run.size() == 3) {  // turning at a corner: the corner not next to j's opposite
-        for (int k = 0; k < 4; ++k)
-          if (crease_corner(k) && crease_corner(k + 1) && crease_corner(k + 3)) centre = kCorner[size_t(k)];
-      }
-      const double u = (kCorner[size_t(j)][0] + centre[0]) / 2, w = (kCorner[size_t(j)][1] + centre[1]) / 2;
-      const P3 e{limits[3 * v], limits[3 * v + 1], limits[3 * v + 2]};
-      worst = std::max(worst, distance(at(s, m, f, u, w), e));
-      ++checked;
+  const LimitSurface s(scheme("doo-sabin"), L);
+  RefineOptions ro;
+  ro.levels = 1;
+  const Hierarchy h = refine(*scheme("doo-sabin"), L, ro);
+  std::vector<double> p1(size_t(3 * h.levels[1].vertex_count));
+  h.stencils[0].apply(m.positions, p1, 3);
+  std::vector<double> limits(p1.size());
+  const Level& L1 = h.levels[1];
+  if (by_centroids) {
+    const LimitChoice c = select_limit(load_scheme_sequence("doo-sabin", 1, {}), L1);
+    c.evaluator->limit_points(L1, p1, limits);
+  } else {
+    const LimitSurface s1(scheme("doo-sabin"), L1);
+    for (Index v = 0; v < L1.vertex_count; ++v) {
+      const Index f = L1.ring_faces(v)[0];
+      const auto g = L1.face(f);
+      REQUIRE(g.size() == 4);
+      size_t k = 0;
+      while (g[k] != v) ++k;
+      const LimitSample x = s1.evaluate(f, kCorner[k][0], kCorner[k][1], p1, 3, 0);
+      for (size_t c = 0; c < 3; ++c) limits[size_t(3 * v) + c] = x.position[c];
     }
-    CHECK(checked > 20);
-    CHECK(worst < 1e-12);
   }
+  const ChildOrigins& o = h.origins[0];
+  int checked = 0;
+  double worst = 0;
+  for (size_t v = 0; v < o.kind.size(); ++v) {
+    if (o.kind[v] != OriginKind::Corner) continue;
+    const Index f = o.parent[v];
+    const int j = int(o.local[v]);
+    const auto g = L.face(f);
+    // Which corners of f are on a sharp edge or a boundary, or are corners of the mesh.
+    auto sharp = [&](int k) {
+      const Index e = L.face_edges[size_t(L.face_offsets[f] + ((k % 4) + 4) % 4)];
+      return L.edge_on_boundary(e) || L.edge_sharp(e) >= 1;
+    };
+    auto crease_corner = [&](int k) {
+      const Index w = g[size_t(k % 4)];
+      return sharp(k) || sharp(k + 3) || (L.on_boundary(w) && L.incident_face_count(w) == 1);
+    };
+    if (crease_corner(j)) continue;
+    std::array<double, 2> centre{0.5, 0.5};
+    std::vector<int> run;
+    for (int k = 0; k < 4; ++k)
+      if (crease_corner(k)) run.push_back(k);
+    if (run.size() == 2)  // one crease edge: its middle
+      centre = {(kCorner[size_t(run[0])][0] + kCorner[size_t(run[1])][0]) / 2,
+                (kCorner[size_t(run[0])][1] + kCorner[size_t(run[1])][1]) / 2};
+    if (run.size() == 3)  // turning at a corner of the mesh
+      for (int k = 0; k < 4; ++k)
+        if (crease_corner(k) && crease_corner(k + 1) && crease_corner(k + 3)) centre = kCorner[size_t(k)];
+    const double u = (kCorner[size_t(j)][0] + centre[0]) / 2, w = (kCorner[size_t(j)][1] + centre[1]) / 2;
+    const P3 e{limits[3 * v], limits[3 * v + 1], limits[3 * v + 2]};
+    worst = std::max(worst, distance(at(s, m, f, u, w), e));
+    ++checked;
+  }
+  CHECK(checked > 20);
+  CHECK(worst < 1e-12);
+}
+
+Level sharpened(const test::Mesh& m, int nu, float s) {
+  Level L = creased_torus_level(m, nu);
+  for (float& x : L.edge_sharpness)
+    if (x > 0) x = s;
+  return L;
+}
+
+}  // namespace
+
+TEST_CASE("dual limit at boundaries and creases: at level-1 points, the limit points of the refined mesh") {
+  const test::Mesh grid = bumped(test::grid(5, 4));
+  check_level_one_points(grid, grid.level(), true);
+  const test::Mesh torus = bumped(test::torus(8, 6));
+  check_level_one_points(torus, creased_torus_level(torus, 8), true);
+}
+
+TEST_CASE("dual limit at semi-sharp creases: the limit of the mesh after the sharpness has decayed") {
+  // Sharpness 1 takes the crease rules once and is smooth after: the level-1 mesh is untagged,
+  // and its V-face centroid limits are the reference. Sharpness 2 and 1.5 take them once and
+  // leave 1 and 0.5: the reference is the level-1 mesh evaluated at its vertices (sharpness
+  // 1 there checked just before), each level one step of the decay.
+  const test::Mesh torus = bumped(test::torus(8, 6));
+  check_level_one_points(torus, sharpened(torus, 8, 1.f), true);
+  check_level_one_points(torus, sharpened(torus, 8, 2.f), false);
+  check_level_one_points(torus, sharpened(torus, 8, 1.5f), false);
+  // The surface lies between the smooth one and the infinitely sharp crease's.
+  const LimitSurface smooth(scheme("doo-sabin"), torus.level()), sharp(scheme("doo-sabin"), creased_torus_level(torus, 8)),
+      semi(scheme("doo-sabin"), sharpened(torus, 8, 2.f));
+  for (double u : {0.3, 0.5}) {
+    const P3 a = at(smooth, torus, 2, u, 0), b = at(sharp, torus, 2, u, 0), c = at(semi, torus, 2, u, 0);
+    CHECK(distance(c, a) > 1e-3);
+    CHECK(distance(c, b) > 1e-3);
+    CHECK(distance(c, b) < distance(a, b));
+  }
+  // Continuous across every edge.
+  const Level L = sharpened(torus, 8, 2.5f);
+  check_edges_continuous(LimitSurface(scheme("doo-sabin"), L), torus, L, 1e-12);
 }
 
 TEST_CASE("dual limit: fractional sharpness below 1 is the smooth limit of the mesh one step down") {
@@ -330,11 +385,11 @@ TEST_CASE("dual limit: boundaries and creases not covered yet are refused with t
   dart.edge_sharpness.assign(size_t(dart.edge_count()), 0.f);
   dart.edge_sharpness[size_t(find_edge(dart, 0, 1))] = 10.f;
   CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), dart), doctest::Contains("dart"), Error);
-  // A semi-sharp crease.
-  Level semi = creased_torus_level(t, 8);
-  for (float& x : semi.edge_sharpness)
-    if (x > 0) x = 2.f;
-  CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), semi), doctest::Contains("semi-sharp"), Error);
+  // A semi-sharp corner.
+  Level semi = t.level();
+  semi.vertex_sharpness.assign(size_t(semi.vertex_count), 0.f);
+  semi.vertex_sharpness[9] = 2.f;
+  CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), semi), doctest::Contains("semi-sharp corner"), Error);
   // A pentagon at a boundary: a 3 x 2 grid whose bottom middle face has an extra corner
   // (vertex 12) on its boundary edge.
   test::Mesh house;
