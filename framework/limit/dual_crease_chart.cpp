@@ -37,6 +37,14 @@ std::string vertex_problem(const Level& L, Index v) {
   }
   if (sharp == 0) return {};
   if (sharp == 1) return fmt::format("vertex {} ends a crease (a dart)", v);
+  float s[2] = {0, 0};
+  int k = 0;
+  for (Index e : L.ring_edges(v))
+    if (dual_sharp_edge(L, e)) s[k++] = infinitely_sharp(L, e) ? kInfinitelySharp : L.edge_sharp(e);
+  if (s[0] != s[1])
+    return fmt::format("crease vertex {} joins sharp edges of sharpness {} and {} (a crease whose sharpness varies "
+                       "along it decays unevenly, which is not evaluated yet)",
+                       v, s[0], s[1]);
   if (L.on_boundary(v)) {
     if (L.incident_face_count(v) != 2)
       return fmt::format("boundary vertex {} has {} faces (only two faces per side of a boundary or crease so far)", v,

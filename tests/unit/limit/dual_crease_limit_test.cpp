@@ -417,3 +417,18 @@ TEST_CASE("dual limit: boundaries and creases not covered yet are refused with t
   quad.add_face({0, 1, 2, 3});
   CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), quad.level()), doctest::Contains("between"), Error);
 }
+
+TEST_CASE("dual limit at semi-sharp creases: Chaikin's decay; sharpness varying along a crease is refused") {
+  const test::Mesh torus = bumped(test::torus(8, 6));
+  for (CreaseMethod method : {CreaseMethod::Uniform, CreaseMethod::Chaikin}) {
+    CAPTURE(int(method));
+    LimitSurfaceOptions o;
+    o.features.crease_method = method;
+    const Level L = sharpened(torus, 8, 2.5f);
+    check_edges_continuous(LimitSurface(scheme("doo-sabin"), L, o), torus, L, 1e-12);
+  }
+  Level L = creased_torus_level(torus, 8);
+  L.edge_sharpness[size_t(find_edge(L, 2, 3))] = 3.f;
+  CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), L), doctest::Contains("crease vertex 2 joins sharp edges"),
+                       Error);
+}
