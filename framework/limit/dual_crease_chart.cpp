@@ -201,10 +201,17 @@ std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& feat
 }
 
 std::string dual_crease_unsupported(const Level& base) {
-  for (Index v = 0; v < base.vertex_count; ++v)
+  // Holes change no rule, only which faces have a surface: only what the faces that are kept
+  // touch must be covered.
+  for (Index v = 0; v < base.vertex_count; ++v) {
+    bool kept = false;
+    for (Index f : base.ring_faces(v)) kept = kept || !base.is_hole(f);
+    if (!kept) continue;
     if (std::string why = vertex_problem(base, v); !why.empty()) return why;
+  }
   for (Index f = 0; f < base.face_count(); ++f)
-    if (std::string why = face_problem(base, f); !why.empty()) return why;
+    if (!base.is_hole(f))
+      if (std::string why = face_problem(base, f); !why.empty()) return why;
   return {};
 }
 

@@ -216,7 +216,8 @@ Coords nearest_corner(const Coords& ab) { return {Coord{0, ab[0].high}, Coord{0,
 // biquadratic B-spline's patch: w and its eight neighbours interior, of valence 4, untagged,
 // with no sharp edge (so every new point of the four faces around w, and of their children
 // around the quadrant, takes the smooth rule at every level). Boundaries and creases further
-// away do not reach the quadrant: each new point reads only its own face's corners.
+// away do not reach the quadrant: each new point reads only its own face's corners. Holes
+// change no rule (only which faces are kept), so they do not matter here.
 std::optional<std::array<Index, 9>> smooth_biquadratic_grid(const Level& L, Index face, int corner) {
   const auto grid = biquadratic_grid(L, face, corner);
   if (!grid) return std::nullopt;
@@ -224,8 +225,6 @@ std::optional<std::array<Index, 9>> smooth_biquadratic_grid(const Level& L, Inde
     if (L.on_boundary(v) || L.vertex_sharp(v) != 0 || L.incident_face_count(v) != 4) return std::nullopt;
     for (Index e : L.ring_edges(v))
       if (L.edge_sharp(e) != 0) return std::nullopt;
-    for (Index f : L.ring_faces(v))
-      if (L.is_hole(f)) return std::nullopt;
   }
   return grid;
 }
@@ -274,6 +273,9 @@ std::optional<FacePoint> dual_child_point(const Level& parent, const Level& chil
 }
 
 std::string dual_head_unsupported(const Level& base) {
+  if (!base.face_hole.empty())
+    for (auto h : base.face_hole)
+      if (h) return "the mesh has holes: a dual split in a sequence's head is followed on closed untagged meshes only";
   for (Index v = 0; v < base.vertex_count; ++v)
     if (base.on_boundary(v))
       return "the mesh has a boundary: following a point through a dual split next to a boundary or crease (its half "
@@ -288,12 +290,7 @@ std::string dual_head_unsupported(const Level& base) {
   return dual_limit_unsupported(base);
 }
 
-std::string dual_limit_unsupported(const Level& base) {
-  if (!base.face_hole.empty())
-    for (auto h : base.face_hole)
-      if (h) return "the mesh has holes: evaluation of dual schemes next to holes is not done yet";
-  return dual_crease_unsupported(base);
-}
+std::string dual_limit_unsupported(const Level& base) { return dual_crease_unsupported(base); }
 
 DualLimit::DualLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options, int radius,
                      SchemeLimits& limits)

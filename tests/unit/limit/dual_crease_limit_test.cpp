@@ -432,3 +432,33 @@ TEST_CASE("dual limit at semi-sharp creases: Chaikin's decay; sharpness varying 
   CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), L), doctest::Contains("crease vertex 2 joins sharp edges"),
                        Error);
 }
+
+TEST_CASE("dual limit next to holes: holes change no rule, so the faces around them keep their limit") {
+  // OpenSubdiv's holes (and --boundary none's) remove faces, not rules: the surface of every
+  // face that is kept is the one the mesh without the hole tags has.
+  const test::Mesh torus = bumped(test::torus(8, 6));
+  Level holed = torus.level();
+  holed.face_hole.assign(size_t(holed.face_count()), 0);
+  holed.face_hole[19] = holed.face_hole[20] = 1;
+  const LimitSurface with(scheme("doo-sabin"), holed), without(scheme("doo-sabin"), torus.level());
+  double worst = 0;
+  for (Index f : {Index(11), Index(12), Index(18), Index(21), Index(27), Index(28)})
+    for (const auto& uv : {std::array<double, 2>{0.1, 0.9}, {0.5, 0.5}, {0.97, 0.03}, {0.3, 0.0}})
+      worst = std::max(worst, distance(at(with, torus, f, uv[0], uv[1]), at(without, torus, f, uv[0], uv[1])));
+  CHECK(worst < 1e-12);
+  CHECK_THROWS_WITH_AS(with.evaluate(19, 0.5, 0.5, torus.positions, 3), doctest::Contains("hole"), Error);
+  // --boundary none: the faces touching the boundary are holes; the others keep the surface of
+  // the mesh with its boundary (a dual scheme's boundary rules do not depend on the mode).
+  const test::Mesh grid = bumped(test::grid(6, 5));
+  LimitSurfaceOptions none;
+  none.features.boundary = BoundaryInterpolation::None;
+  const LimitSurface inner(scheme("doo-sabin"), grid.level(), none), all(scheme("doo-sabin"), grid.level());
+  worst = 0;
+  for (int j = 1; j < 4; ++j)
+    for (int i = 1; i < 5; ++i)
+      for (const auto& uv : {std::array<double, 2>{0.2, 0.7}, {0.0, 0.5}})
+        worst = std::max(worst, distance(at(inner, grid, grid_face(6, i, j), uv[0], uv[1]),
+                                         at(all, grid, grid_face(6, i, j), uv[0], uv[1])));
+  CHECK(worst < 1e-12);
+  CHECK_THROWS_WITH_AS(inner.evaluate(0, 0.5, 0.5, grid.positions, 3), doctest::Contains("hole"), Error);
+}
