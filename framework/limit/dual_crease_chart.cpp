@@ -1,5 +1,6 @@
 #include "framework/limit/dual_crease_chart.h"
 
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -132,6 +133,53 @@ std::vector<std::pair<int, double>> crease_run_middle(CreaseRun run, int face_si
   const int half = (run.length - 1) / 2;
   if (run.length % 2 == 1) return {{(run.first + half) % face_size, 1.0}};
   return {{(run.first + half) % face_size, 0.5}, {(run.first + half + 1) % face_size, 0.5}};
+}
+
+namespace {
+
+// The other end of x's sharp edge that does not lead to `not_to`.
+Index other_crease_neighbour(const Level& L, Index x, Index not_to) {
+  for (Index e : L.ring_edges(x)) {
+    if (!dual_sharp_edge(L, e)) continue;
+    const Index a = L.edge_vertices[size_t(2 * e)], b = L.edge_vertices[size_t(2 * e + 1)];
+    const Index y = a == x ? b : a;
+    if (y != not_to) return y;
+  }
+  return kNone;
+}
+
+// The clamped quadratic B-spline's three basis functions on its first knot interval [0, 1]
+// (knots 0, 0, 0, 1, 2): the corner's, its neighbour's, the next one's.
+std::array<double, 3> clamped_first_interval(double t) {
+  return {(1 - t) * (1 - t), 2 * t - 1.5 * t * t, 0.5 * t * t};
+}
+
+}  // namespace
+
+std::vector<std::pair<Index, double>> crease_side_limit(const Level& L, Index f, CreaseRun run, int corner,
+                                                        bool towards_next, double s) {
+  const auto g = L.face(f);
+  const int n = int(g.size());
+  const int xi = towards_next ? (corner + 1) % n : (corner + n - 1) % n;
+  auto in_run = [&](int i) { return ((i - run.first + n) % n) < run.length; };
+  if (!in_run(xi)) return {};
+  const Index X = g[size_t(xi)];
+  if (run.length == 3) {
+    const Index K = g[size_t((run.first + 1) % n)];
+    const Index next = other_crease_neighbour(L, X, K);
+    if (next == kNone) return {};
+    const auto w = clamped_first_interval((1 - s) / 2);
+    return {{K, w[0]}, {X, w[1]}, {next, w[2]}};
+  }
+  const Index Y = g[size_t(xi == run.first ? (run.first + 1) % n : run.first)];
+  const Index prev = other_crease_neighbour(L, X, Y);
+  if (prev == kNone) return {};
+  const double t = s / 2;
+  if (dual_collapses(L, prev)) {
+    const auto w = clamped_first_interval(0.5 + t);
+    return {{prev, w[0]}, {X, w[1]}, {Y, w[2]}};
+  }
+  return {{prev, 0.5 * (0.5 - t) * (0.5 - t)}, {X, 0.75 - t * t}, {Y, 0.5 * (0.5 + t) * (0.5 + t)}};
 }
 
 bool crease_run_infinitely_sharp(const Level& L, Index f, CreaseRun run) {

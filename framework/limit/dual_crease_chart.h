@@ -25,6 +25,8 @@
 // the crease are the F-faces of half faces and the E-faces across crease vertices, quads
 // with one crease edge, or a crease run through a corner.
 #include <optional>
+#include <utility>
+#include <vector>
 #include <string>
 
 #include "framework/features/feature_options.h"
@@ -67,6 +69,17 @@ QuadrantChart half_quad_quadrant(CreaseRun run, int corner);
 // infinitely sharp (the crease curve at a knot, Chaikin 1974: the mean of the two control
 // points; a corner stays).
 std::vector<std::pair<int, double>> crease_run_middle(CreaseRun run, int face_size);
+
+// The limit on the crease side of the quadrant of off-crease corner `corner` of half quad f:
+// the side from the crease corner X next to it (corner + 1 when `towards_next`, else
+// corner - 1) to the quadrant's (1, 1), at s in [0, 1] from X, as weights on L's vertices.
+// The crease is Chaikin's curve, the uniform quadratic B-spline with control points at their
+// Greville abscissae (X at 0, the next crease vertex at 1), clamped at a corner of the mesh
+// (knots 0, 0, 0, 1, 2, ...: the corner at 0, its neighbour at 1/2; Chaikin 1974, Boehm 1980),
+// so the point is t = s/2 from X towards the run's other end, or (1 - s)/2 from the corner a
+// run turns at. Empty when X is not a crease corner. The run must be infinitely sharp.
+std::vector<std::pair<Index, double>> crease_side_limit(const Level& L, Index f, CreaseRun run, int corner,
+                                                        bool towards_next, double s);
 
 // Whether every edge of the run is infinitely sharp (a boundary, or sharpness >= 10).
 bool crease_run_infinitely_sharp(const Level& L, Index f, CreaseRun run);

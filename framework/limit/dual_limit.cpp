@@ -378,6 +378,23 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
     // The centre (1, 1) of a half face's quadrant: the middle of its crease run, where an
     // infinitely sharp crease's limit is the mean of the run's two middle points (Chaikin's
     // curve at a knot) or the corner it turns at (dual_crease_chart.h).
+    // A point on the crease itself (a = 1 or b = 1 on the side reaching a crease corner): the
+    // crease curve's closed form there (dual_crease_chart.h), rather than descending ~53 steps.
+    if (const auto run = crease_run(cut.level, q.face);
+        run && run->length > 0 && crease_run_infinitely_sharp(cut.level, q.face, *run)) {
+      for (int side = 0; side < 2; ++side) {
+        const Coord& on = q.ab[size_t(side)];
+        if (!(on.high && on.x == 0)) continue;
+        const auto w = crease_side_limit(cut.level, q.face, *run, q.corner, side == 0, q.ab[size_t(1 - side)].value());
+        if (w.empty()) continue;
+        std::vector<double> row(size_t(cut.level.vertex_count), 0.0);
+        for (const auto& [v, x] : w) row[size_t(v)] += x;
+        LimitSample out;
+        out.steps = step;
+        out.position = applied(row, values, channels);
+        return out;
+      }
+    }
     if (centre) {
       const auto run = crease_run(cut.level, q.face);
       if (run && run->length > 0 && crease_run_infinitely_sharp(cut.level, q.face, *run)) {
