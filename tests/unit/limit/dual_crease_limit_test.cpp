@@ -462,3 +462,38 @@ TEST_CASE("dual limit next to holes: holes change no rule, so the faces around t
   CHECK(worst < 1e-12);
   CHECK_THROWS_WITH_AS(inner.evaluate(0, 0.5, 0.5, grid.positions, 3), doctest::Contains("hole"), Error);
 }
+
+TEST_CASE("dual limit next to boundaries and creases: derivatives against central differences") {
+  // The quadrants of faces next to the crease are affine images of rectangles of the face's
+  // (u, v) (and, after a semi-sharp crease has decayed, of the closed face's quadrants), so
+  // the derivatives carry that Jacobian: checked against central differences of positions.
+  const test::Mesh grid = bumped(test::grid(5, 4));
+  const test::Mesh torus = bumped(test::torus(8, 6));
+  const Level semi = sharpened(torus, 8, 2.f);
+  struct Case {
+    const test::Mesh* mesh;
+    Level level;
+  };
+  const Case cases[] = {{&grid, grid.level()}, {&torus, creased_torus_level(torus, 8)}, {&torus, semi}};
+  const double h = 1e-6;
+  for (const Case& c : cases) {
+    const LimitSurface s(scheme("doo-sabin"), c.level);
+    double worst = 0;
+    int with_derivatives = 0;
+    for (Index f : {Index(0), Index(1), Index(2), Index(6), Index(9)})
+      for (const auto& uv : {std::array<double, 2>{0.5, 0.5}, {0.3, 0.7}, {0.8, 0.4}, {0.45, 0.2}, {0.6, 0.85}}) {
+        const LimitSample p = s.evaluate(f, uv[0], uv[1], c.mesh->positions, 3, 1);
+        if (!p.has_derivatives) continue;
+        ++with_derivatives;
+        const P3 up = at(s, *c.mesh, f, uv[0] + h, uv[1]), um = at(s, *c.mesh, f, uv[0] - h, uv[1]);
+        const P3 vp = at(s, *c.mesh, f, uv[0], uv[1] + h), vm = at(s, *c.mesh, f, uv[0], uv[1] - h);
+        for (size_t k = 0; k < 3; ++k) {
+          const double scale = 1 + std::abs(p.du[k]) + std::abs(p.dv[k]);
+          worst = std::max(worst, std::abs(p.du[k] - (up[k] - um[k]) / (2 * h)) / scale);
+          worst = std::max(worst, std::abs(p.dv[k] - (vp[k] - vm[k]) / (2 * h)) / scale);
+        }
+      }
+    CHECK(with_derivatives == 25);
+    CHECK(worst < 1e-6);
+  }
+}
