@@ -9,6 +9,7 @@
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/refiner.h"
+#include "framework/features/sharpness.h"
 #include "framework/limit/biquadratic_patch.h"
 #include "framework/limit/dual_crease_chart.h"
 #include "framework/limit/step_matrix.h"
@@ -259,6 +260,17 @@ std::optional<FacePoint> dual_child_point(const Level& parent, const Level& chil
       for (int c = 0; c < 2; ++c) out.jacobian[size_t(r)][size_t(c)] = 2 * s.jacobian[size_t(r)][size_t(c)];
     return out;
   }
+  // A quad laid out by a crease run (dual_crease_chart.h): (u, v) = origin + a to_a + b to_b.
+  if (const auto run = made_on_crease_run(parent, child, o, s.face); run && run->length > 0) {
+    const QuadrantChart c = half_quad_quadrant(*run, s.corner);
+    const Uv ab = as_uv(s.ab);
+    out.st = {c.origin[0] + ab[0] * c.to_a[0] + ab[1] * c.to_b[0], c.origin[1] + ab[0] * c.to_a[1] + ab[1] * c.to_b[1]};
+    for (int r = 0; r < 2; ++r)
+      for (int k = 0; k < 2; ++k)  // d(u, v)/d(a, b) = [to_a to_b], times the true 2 M J
+        out.jacobian[size_t(r)][size_t(k)] =
+            2 * (c.to_a[size_t(r)] * s.jacobian[0][size_t(k)] + c.to_b[size_t(r)] * s.jacobian[1][size_t(k)]);
+    return out;
+  }
   // A quad's quadrant j: (u, v) = c_j + (a/2) e + (b/2) f, e towards corner j + 1, f towards j - 1.
   const int j = s.corner;
   const Uv& c = kCorner[j];
@@ -273,20 +285,14 @@ std::optional<FacePoint> dual_child_point(const Level& parent, const Level& chil
 }
 
 std::string dual_head_unsupported(const Level& base) {
-  if (!base.face_hole.empty())
-    for (auto h : base.face_hole)
-      if (h) return "the mesh has holes: a dual split in a sequence's head is followed on closed untagged meshes only";
-  for (Index v = 0; v < base.vertex_count; ++v)
-    if (base.on_boundary(v))
-      return "the mesh has a boundary: following a point through a dual split next to a boundary or crease (its half "
-             "faces, docs/limit.md) is done for the tail's evaluation only; close the mesh or start the sequence "
-             "with a primal scheme";
-  for (float s : base.edge_sharpness)
-    if (s > 0) return "the mesh has sharp or semi-sharp edges: a dual split in a sequence's head is followed on closed "
-                      "untagged meshes only";
-  for (float s : base.vertex_sharpness)
-    if (s > 0) return "the mesh has sharp vertices: a dual split in a sequence's head is followed on closed untagged "
-                      "meshes only";
+  // The head hands the tail each point in its child face's own (u, v), read by the tail in
+  // the layout of the face's own crease run: that is the run the face was made with unless a
+  // semi-sharp crease decays under the head.
+  for (Index e = 0; e < base.edge_count(); ++e)
+    if (!base.edge_on_boundary(e) && base.edge_sharp(e) >= 1.f && base.edge_sharp(e) < kInfinitelySharp)
+      return fmt::format("edge {} has sharpness {}: a dual split in a sequence's head is followed next to boundaries "
+                         "and infinitely sharp creases, not semi-sharp ones",
+                         e, base.edge_sharp(e));
   return dual_limit_unsupported(base);
 }
 
