@@ -168,7 +168,10 @@ std::vector<std::pair<Index, double>> crease_side_limit(const Level& L, Index f,
     const Index K = g[size_t((run.first + 1) % n)];
     const Index next = other_crease_neighbour(L, X, K);
     if (next == kNone) return {};
-    const auto w = clamped_first_interval((1 - s) / 2);
+    const double t = (1 - s) / 2;
+    if (dual_collapses(L, next))  // a crease of one vertex between two corners: a quadratic Bezier curve
+      return {{K, (1 - t) * (1 - t)}, {X, 2 * t * (1 - t)}, {next, t * t}};
+    const auto w = clamped_first_interval(t);
     return {{K, w[0]}, {X, w[1]}, {next, w[2]}};
   }
   const Index Y = g[size_t(xi == run.first ? (run.first + 1) % n : run.first)];

@@ -75,7 +75,8 @@ std::vector<std::pair<int, double>> crease_run_middle(CreaseRun run, int face_si
 // corner - 1) to the quadrant's (1, 1), at s in [0, 1] from X, as weights on L's vertices.
 // The crease is Chaikin's curve, the uniform quadratic B-spline with control points at their
 // Greville abscissae (X at 0, the next crease vertex at 1), clamped at a corner of the mesh
-// (knots 0, 0, 0, 1, 2, ...: the corner at 0, its neighbour at 1/2; Chaikin 1974, Boehm 1980),
+// (knots 0, 0, 0, 1, 2, ...: the corner at 0, its neighbour at 1/2; Chaikin 1974, Boehm 1980;
+// between two corners with one vertex between them, 0, 0, 0, 1, 1, 1: a quadratic Bezier curve),
 // so the point is t = s/2 from X towards the run's other end, or (1 - s)/2 from the corner a
 // run turns at. Empty when X is not a crease corner. The run must be infinitely sharp.
 std::vector<std::pair<Index, double>> crease_side_limit(const Level& L, Index f, CreaseRun run, int corner,

@@ -136,32 +136,37 @@ void check_edges_continuous(const LimitSurface& s, const test::Mesh& m, const Le
 
 TEST_CASE("dual limit at a boundary: the boundary between two corners is the clamped quadratic B-spline, corners "
           "interpolated") {
-  const int nx = 6, ny = 4;
-  const test::Mesh m = bumped(test::grid(nx, ny));
-  // The bottom row (i, 0): corners (0, 0) and (nx, 0) end it. Clamped knots 0, 0, 0, 1, ...,
-  // nx - 1 (three times): P_0 at Greville 0, P_i at i - 1/2, P_nx at nx - 1.
-  std::vector<P3> row;
-  for (int i = 0; i <= nx; ++i) row.push_back(point(m, Index(i)));
-  std::vector<double> knots{0, 0, 0};
-  for (int k = 1; k < nx - 1; ++k) knots.push_back(k);
-  for (int r = 0; r < 3; ++r) knots.push_back(nx - 1);
-  auto greville = [&](int i) { return i == 0 ? 0.0 : (i == nx ? nx - 1.0 : i - 0.5); };
-  for (const char* name : {"doo-sabin", "doo-sabin-centroid", "quad-bspline"}) {
-    CAPTURE(name);
-    ParameterOverrides d2;
-    d2["d"] = "2";
-    const LimitSurface s(std::string(name) == "quad-bspline" ? load_scheme(name, d2) : scheme(name), m.level());
-    double worst = 0;
-    for (int i = 0; i < nx; ++i)
-      for (double u : {0.0, 0.125, 0.3, 0.5, 0.71, 0.9375, 1.0}) {
-        const double x = greville(i) + u * (greville(i + 1) - greville(i));
-        const P3 e = quadratic_bspline(knots, row, std::min(x, nx - 1 - 1e-15));
-        worst = std::max(worst, distance(at(s, m, grid_face(nx, i, 0), u, 0), e));
-      }
-    CHECK(worst < 1e-12);
-    // The grid's four corners stay.
-    CHECK(distance(at(s, m, grid_face(nx, 0, 0), 0, 0), point(m, 0)) < 1e-14);
-    CHECK(distance(at(s, m, grid_face(nx, nx - 1, ny - 1), 1, 1), point(m, Index((nx + 1) * (ny + 1) - 1))) < 1e-14);
+  // 6 x 4, and 2 x 2 where each side has one vertex between two corners (knots 0, 0, 0, 1, 1, 1:
+  // a quadratic Bezier curve).
+  for (const auto& size : {std::array<int, 2>{6, 4}, std::array<int, 2>{2, 2}}) {
+    const int nx = size[0], ny = size[1];
+    CAPTURE(nx);
+    const test::Mesh m = bumped(test::grid(nx, ny));
+    // The bottom row (i, 0): corners (0, 0) and (nx, 0) end it. Clamped knots 0, 0, 0, 1, ...,
+    // nx - 1 (three times): P_0 at Greville 0, P_i at i - 1/2, P_nx at nx - 1.
+    std::vector<P3> row;
+    for (int i = 0; i <= nx; ++i) row.push_back(point(m, Index(i)));
+    std::vector<double> knots{0, 0, 0};
+    for (int k = 1; k < nx - 1; ++k) knots.push_back(k);
+    for (int r = 0; r < 3; ++r) knots.push_back(nx - 1);
+    auto greville = [&](int i) { return i == 0 ? 0.0 : (i == nx ? nx - 1.0 : i - 0.5); };
+    for (const char* name : {"doo-sabin", "doo-sabin-centroid", "quad-bspline"}) {
+      CAPTURE(name);
+      ParameterOverrides d2;
+      d2["d"] = "2";
+      const LimitSurface s(std::string(name) == "quad-bspline" ? load_scheme(name, d2) : scheme(name), m.level());
+      double worst = 0;
+      for (int i = 0; i < nx; ++i)
+        for (double u : {0.0, 0.125, 0.3, 0.5, 0.71, 0.9375, 1.0}) {
+          const double x = greville(i) + u * (greville(i + 1) - greville(i));
+          const P3 e = quadratic_bspline(knots, row, std::min(x, nx - 1 - 1e-15));
+          worst = std::max(worst, distance(at(s, m, grid_face(nx, i, 0), u, 0), e));
+        }
+      CHECK(worst < 1e-12);
+      // The grid's four corners stay.
+      CHECK(distance(at(s, m, grid_face(nx, 0, 0), 0, 0), point(m, 0)) < 1e-14);
+      CHECK(distance(at(s, m, grid_face(nx, nx - 1, ny - 1), 1, 1), point(m, Index((nx + 1) * (ny + 1) - 1))) < 1e-14);
+    }
   }
 }
 
