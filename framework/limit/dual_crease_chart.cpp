@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <map>
 
 #include <fmt/format.h>
@@ -192,7 +193,7 @@ bool crease_run_infinitely_sharp(const Level& L, Index f, CreaseRun run) {
   return true;
 }
 
-std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& features) {
+std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& features, bool* chaikin) {
   constexpr int nx = 6, ny = 5;
   std::vector<Index> offsets{0}, corners;
   auto id = [](int i, int j) { return Index(j * (nx + 1) + i); };
@@ -247,6 +248,24 @@ std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& feat
     bool found = false;
     for (Index c = 0; c < child.vertex_count && !found; ++c) found = equal(row(c), {{v, 1.0}});
     if (!found) return "its corners do not stay";
+  }
+  // Chaikin's cuts 3/4, 1/4 on every boundary edge, the middle of an edge at a corner.
+  if (chaikin) {
+    *chaikin = true;
+    for (Index c = 0; c < child.vertex_count && *chaikin; ++c) {
+      if (!child.on_boundary(c)) continue;
+      const auto r = row(c);
+      if (r.size() == 1) continue;  // a corner's point
+      const Index a = r.begin()->first, b = std::next(r.begin())->first;
+      if (r.size() != 2 || find_edge(grid, a, b) == kNone || !grid.edge_on_boundary(find_edge(grid, a, b))) {
+        *chaikin = false;
+        break;
+      }
+      if (is_corner(a) || is_corner(b))
+        *chaikin = equal(r, {{a, 0.5}, {b, 0.5}});
+      else
+        *chaikin = equal(r, {{a, 0.75}, {b, 0.25}}) || equal(r, {{a, 0.25}, {b, 0.75}});
+    }
   }
   return {};
 }

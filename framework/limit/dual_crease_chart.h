@@ -78,7 +78,8 @@ std::vector<std::pair<int, double>> crease_run_middle(CreaseRun run, int face_si
 // (knots 0, 0, 0, 1, 2, ...: the corner at 0, its neighbour at 1/2; Chaikin 1974, Boehm 1980;
 // between two corners with one vertex between them, 0, 0, 0, 1, 1, 1: a quadratic Bezier curve),
 // so the point is t = s/2 from X towards the run's other end, or (1 - s)/2 from the corner a
-// run turns at. Empty when X is not a crease corner. The run must be infinitely sharp.
+// run turns at. Empty when X is not a crease corner. The run must be infinitely sharp and the
+// scheme's crease Chaikin's (crease_middles_kept).
 std::vector<std::pair<Index, double>> crease_side_limit(const Level& L, Index f, CreaseRun run, int corner,
                                                         bool towards_next, double s);
 
@@ -91,7 +92,9 @@ bool crease_run_infinitely_sharp(const Level& L, Index f, CreaseRun run);
 // (p + q)/2 (Chaikin's cuts are symmetric about the middle), and a corner's point is the
 // corner. Otherwise why not (even-degree quad B-splines of d >= 4, whose smoothing passes
 // move the crease points).
-std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& features);
+// With `chaikin`, also whether every boundary point is Chaikin's cut (3/4, 1/4; the middle of
+// an edge at a corner), which crease_side_limit's closed form assumes.
+std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& features, bool* chaikin = nullptr);
 
 // Why boundaries and creases of `base` cannot be evaluated under a dual scheme, or empty.
 std::string dual_crease_unsupported(const Level& base);

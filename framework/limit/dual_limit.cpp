@@ -308,7 +308,7 @@ DualLimit::DualLimit(const Scheme& scheme, const Level& base, const LimitSurface
     creased = !run || run->length > 0;
   }
   if (creased)
-    if (const std::string why = crease_middles_kept(scheme, options.features); !why.empty())
+    if (const std::string why = crease_middles_kept(scheme, options.features, &chaikin_crease_); !why.empty())
       throw Error(fmt::format("scheme {} is a dual scheme and the mesh has boundaries or sharp creases, which are "
                               "evaluated for schemes whose crease is Chaikin's curve at every level; {}",
                               subdiv::quoted(scheme.name), why));
@@ -387,7 +387,7 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
     // A point on the crease itself (a = 1 or b = 1 on the side reaching a crease corner): the
     // crease curve's closed form there (dual_crease_chart.h), rather than descending ~53 steps.
     if (const auto run = crease_run(cut.level, q.face);
-        run && run->length > 0 && crease_run_infinitely_sharp(cut.level, q.face, *run)) {
+        chaikin_crease_ && run && run->length > 0 && crease_run_infinitely_sharp(cut.level, q.face, *run)) {
       for (int side = 0; side < 2; ++side) {
         const Coord& on = q.ab[size_t(side)];
         if (!(on.high && on.x == 0)) continue;

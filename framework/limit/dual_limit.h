@@ -73,6 +73,7 @@ private:
   int radius_;
   SchemeLimits& limits_;
   bool biquadratic_ = false;
+  bool chaikin_crease_ = false;  // the crease is Chaikin's: its closed form applies on it
 };
 
 // A point of a face (face_domain.h: a quad's (u, v), or an n-gon's sub-face) after one dual

@@ -502,3 +502,38 @@ TEST_CASE("dual limit next to boundaries and creases: derivatives against centra
     CHECK(worst < 1e-6);
   }
 }
+
+TEST_CASE("dual limit at a crease that keeps its middles but is not Chaikin's: exact by descent") {
+  // A scheme stating its crease corner rule as cuts at 3/8 (5/8 v + 3/8 next): symmetric about
+  // each edge's middle, so the middles stay, but not Chaikin's curve (de Rham's corner cutting,
+  // not a quadratic B-spline). On the crease the limit is reached by descending, not by
+  // Chaikin's closed form: at the parameter of a level-1 crease point X1 = 5/8 P + 3/8 Q,
+  // (u, v) = (1/4, 0) of the face on P - Q, the limit is the middle of X1's two points one step
+  // down, 5/8 X1 + 3/16 (X0 + X2) with its level-1 neighbours X0 = 5/8 P + 3/8 P_prev and
+  // X2 = 3/8 P + 5/8 Q; at (1/2, 0) the middle of P - Q.
+  const std::string text = R"json({
+    "name": "doo-sabin-three-eighths", "split": "dual", "faces": "any",
+    "rules": {"corner": {
+      "smooth": [{"sum": "vertices", "w": "j == 0 ? (k + 5)/(4*k) : (3 + 2*cos(2*pi*j/k))/(4*k)"}],
+      "crease": [{"sum": "vertices", "w": "j == 0 ? 5/8 : (j == 1 ? 3/8 : 0)"}],
+      "corner": [{"at": "self", "w": "1"}]}}})json";
+  const auto s = load_scheme_text(text, "three-eighths.json");
+  const test::Mesh torus = bumped(test::torus(8, 6));
+  const Level L = creased_torus_level(torus, 8);
+  const LimitSurface surface(s, L);
+  double worst = 0;
+  for (int i = 0; i < 8; ++i) {
+    const P3 P = point(torus, Index(i)), Q = point(torus, Index((i + 1) % 8)), prev = point(torus, Index((i + 7) % 8));
+    P3 expected{}, middle{};
+    for (size_t c = 0; c < 3; ++c) {
+      const double X1 = 0.625 * P[c] + 0.375 * Q[c], X0 = 0.625 * P[c] + 0.375 * prev[c];
+      const double X2 = 0.375 * P[c] + 0.625 * Q[c];
+      expected[c] = 0.625 * X1 + 0.1875 * (X0 + X2);
+      middle[c] = 0.5 * (P[c] + Q[c]);
+    }
+    worst = std::max(worst, distance(at(surface, torus, Index(i), 0.25, 0), expected));
+    worst = std::max(worst, distance(at(surface, torus, Index(i), 0.5, 0), middle));
+  }
+  CHECK(worst < 1e-12);
+  check_edges_continuous(surface, torus, L, 1e-12);
+}
