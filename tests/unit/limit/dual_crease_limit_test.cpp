@@ -537,3 +537,29 @@ TEST_CASE("dual limit at a crease that keeps its middles but is not Chaikin's: e
   CHECK(worst < 1e-12);
   check_edges_continuous(surface, torus, L, 1e-12);
 }
+
+TEST_CASE("dual limit next to a boundary: second derivatives against central differences of the first") {
+  const test::Mesh grid = bumped(test::grid(5, 4));
+  const LimitSurface s(scheme("doo-sabin"), grid.level());
+  const double h = 1e-5;
+  double worst = 0;
+  int with_second = 0;
+  for (Index f : {Index(0), Index(1), Index(2), Index(6)})
+    for (const auto& uv : {std::array<double, 2>{0.3, 0.7}, {0.8, 0.4}, {0.6, 0.85}}) {
+      const LimitSample p = s.evaluate(f, uv[0], uv[1], grid.positions, 3, 2);
+      if (!p.has_second_derivatives) continue;
+      ++with_second;
+      const LimitSample up = s.evaluate(f, uv[0] + h, uv[1], grid.positions, 3, 1);
+      const LimitSample um = s.evaluate(f, uv[0] - h, uv[1], grid.positions, 3, 1);
+      const LimitSample vp = s.evaluate(f, uv[0], uv[1] + h, grid.positions, 3, 1);
+      const LimitSample vm = s.evaluate(f, uv[0], uv[1] - h, grid.positions, 3, 1);
+      for (size_t k = 0; k < 3; ++k) {
+        const double scale = 1 + std::abs(p.duu[k]) + std::abs(p.duv[k]) + std::abs(p.dvv[k]);
+        worst = std::max(worst, std::abs(p.duu[k] - (up.du[k] - um.du[k]) / (2 * h)) / scale);
+        worst = std::max(worst, std::abs(p.duv[k] - (vp.du[k] - vm.du[k]) / (2 * h)) / scale);
+        worst = std::max(worst, std::abs(p.dvv[k] - (vp.dv[k] - vm.dv[k]) / (2 * h)) / scale);
+      }
+    }
+  CHECK(with_second == 12);
+  CHECK(worst < 1e-5);
+}
