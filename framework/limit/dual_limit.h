@@ -17,15 +17,18 @@
 //
 // Next to boundaries and sharp creases a face with corners on the crease is covered by the
 // quadrants of its other corners, which reach to the crease (dual_crease_chart.h); the
-// nesting is the same.
+// nesting is the same. Where a semi-sharp crease has decayed, such a face is read in its own
+// quadrants again (follow_decay).
 //
 // Evaluation follows the point's quadrant down the refinement of its neighbourhood (the
 // engine refines a cut around the face, as for primal schemes) until either
 // - the 3 x 3 points around the quadrant's corner are regular and untagged and the scheme
 //   refines regular quads as the biquadratic B-spline does (checked on its rows): the
 //   closed form over the quadrant (biquadratic_patch.h), with derivatives; or
-// - the point is (1, 1) of a quadrant of a face with corners on an infinitely sharp crease:
-//   the middle of the face's crease run, whose limit is the crease curve's there; or
+// - the point is on the crease side of a quadrant of a face with corners on an infinitely
+//   sharp crease: the crease curve's closed form where the crease is Chaikin's
+//   (crease_side_limit), else at (1, 1) the middle of the face's crease run, whose limit is
+//   the crease curve's there; or
 // - the point is the centre of a face: the limit mask of that face (the left eigenvector
 //   of 1 of its local subdivision matrix; analysis/surface/limit_evaluation.h, Doo & Sabin
 //   1978; Peters & Reif 1998, "Analysis of algorithms generalizing B-spline
