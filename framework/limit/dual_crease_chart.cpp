@@ -193,7 +193,7 @@ bool crease_run_infinitely_sharp(const Level& L, Index f, CreaseRun run) {
   return true;
 }
 
-std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& features, bool* chaikin) {
+std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& features, bool* chaikin, bool* middles) {
   constexpr int nx = 6, ny = 5;
   std::vector<Index> offsets{0}, corners;
   auto id = [](int i, int j) { return Index(j * (nx + 1) + i); };
@@ -203,6 +203,7 @@ std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& feat
       offsets.push_back(Index(corners.size()));
     }
   const Level grid = build_level(Index((nx + 1) * (ny + 1)), offsets, corners);
+  if (middles) *middles = true;
   RefineOptions ro;
   ro.levels = 1;
   ro.features = features;
@@ -239,9 +240,12 @@ std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& feat
       for (const auto& [v, w] : row(child.edge_vertices[size_t(2 * c + 1)])) r[v] += w;
       found = equal(r, {{p, 1.0}, {q, 1.0}});
     }
-    if (!found)
-      return "its crease rule does not keep the middle of every crease edge (the crease is not Chaikin's curve "
-             "after the split's passes)";
+    if (!found) {
+      if (!middles)
+        return "its crease rule does not keep the middle of every crease edge (the crease is not Chaikin's curve "
+               "after the split's passes)";
+      *middles = false;
+    }
   }
   for (Index v = 0; v < grid.vertex_count; ++v) {
     if (!is_corner(v)) continue;

@@ -94,7 +94,9 @@ bool crease_run_infinitely_sharp(const Level& L, Index f, CreaseRun run);
 // move the crease points).
 // With `chaikin`, also whether every boundary point is Chaikin's cut (3/4, 1/4; the middle of
 // an edge at a corner), which crease_side_limit's closed form assumes.
-std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& features, bool* chaikin = nullptr);
+// With `middles`, a crease that does not keep its middles is no error: *middles says so.
+std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& features, bool* chaikin = nullptr,
+                                bool* middles = nullptr);
 
 // Why boundaries and creases of `base` cannot be evaluated under a dual scheme, or empty.
 std::string dual_crease_unsupported(const Level& base);

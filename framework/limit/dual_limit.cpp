@@ -12,6 +12,7 @@
 #include "framework/features/sharpness.h"
 #include "framework/limit/biquadratic_patch.h"
 #include "framework/limit/dual_crease_chart.h"
+#include "framework/limit/dual_crease_curve.h"
 #include "framework/limit/step_matrix.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -308,7 +309,8 @@ DualLimit::DualLimit(const Scheme& scheme, const Level& base, const LimitSurface
     creased = !run || run->length > 0;
   }
   if (creased)
-    if (const std::string why = crease_middles_kept(scheme, options.features, &chaikin_crease_); !why.empty())
+    if (const std::string why = crease_middles_kept(scheme, options.features, &chaikin_crease_, &middles_kept_);
+        !why.empty())
       throw Error(fmt::format("scheme {} is a dual scheme and the mesh has boundaries or sharp creases, which are "
                               "evaluated for schemes whose crease is Chaikin's curve at every level; {}",
                               subdiv::quoted(scheme.name), why));
@@ -406,11 +408,24 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
       if (run && run->length > 0 && crease_run_infinitely_sharp(cut.level, q.face, *run)) {
         std::vector<double> row(size_t(cut.level.vertex_count), 0.0);
         const auto corners = cut.level.face(q.face);
-        for (const auto& [k, w] : crease_run_middle(*run, int(corners.size()))) row[size_t(corners[size_t(k)])] += w;
+        std::vector<std::pair<Index, double>> weights;
+        if (middles_kept_ || run->length != 2) {
+          for (const auto& [k, w] : crease_run_middle(*run, int(corners.size())))
+            weights.emplace_back(corners[size_t(k)], w);
+        } else {
+          // The crease points move after the split: the crease curve's own limit mask at the
+          // middle (dual_crease_curve.h), once the window is clear of corners.
+          RefineOptions ro;
+          ro.levels = 1;
+          ro.features = options_.features;
+          const auto mask = crease_middle_limit(cut.level, refine(scheme_, cut.level, ro), q.face, *run);
+          if (mask) weights = *mask;
+        }
+        for (const auto& [v, w] : weights) row[size_t(v)] += w;
         LimitSample out;
         out.steps = step;
         out.position = applied(row, values, channels);
-        return out;
+        if (!weights.empty()) return out;
       }
     }
     // The centre of a face: its limit mask, where its neighbourhood is the mask's. A quad's

@@ -77,6 +77,7 @@ private:
   SchemeLimits& limits_;
   bool biquadratic_ = false;
   bool chaikin_crease_ = false;  // the crease is Chaikin's: its closed form applies on it
+  bool middles_kept_ = true;     // the crease keeps its edges' middles (else dual_crease_curve.h)
 };
 
 // A point of a face (face_domain.h: a quad's (u, v), or an n-gon's sub-face) after one dual
