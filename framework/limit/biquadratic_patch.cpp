@@ -116,19 +116,4 @@ bool refines_as_biquadratic(const Scheme& scheme, const FeatureOptions& features
   return true;
 }
 
-bool regular_quad_cut(const Level& cut) {
-  if (!cut.face_hole.empty())
-    for (auto h : cut.face_hole)
-      if (h) return false;
-  for (float s : cut.edge_sharpness)
-    if (s > 0) return false;
-  for (float s : cut.vertex_sharpness)
-    if (s > 0) return false;
-  for (Index f = 0; f < cut.face_count(); ++f)
-    if (cut.face_size(f) != 4) return false;
-  for (Index v = 0; v < cut.vertex_count; ++v)
-    if (!cut.on_boundary(v) && (cut.valence(v) != 4 || cut.incident_face_count(v) != 4)) return false;
-  return true;
-}
-
 }  // namespace subdiv

@@ -38,8 +38,4 @@ BiquadraticRows biquadratic_rows(double a, double b);
 // from the engine's rows, not the scheme's name.
 bool refines_as_biquadratic(const Scheme& scheme, const FeatureOptions& features);
 
-// True when every face of a cut is a quad, every vertex off the cut's rim is interior with
-// valence 4, and nothing is tagged (sharpness, holes): a regular region.
-bool regular_quad_cut(const Level& cut);
-
 }  // namespace subdiv

@@ -1,5 +1,6 @@
 #include "framework/limit/dual_limit.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <deque>
@@ -8,10 +9,14 @@
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/refiner.h"
+#include "framework/features/sharpness.h"
 #include "framework/limit/biquadratic_patch.h"
+#include "framework/limit/dual_crease_chart.h"
+#include "framework/limit/dual_crease_curve.h"
 #include "framework/limit/step_matrix.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -46,6 +51,7 @@ struct Cut {
   Level level;
   std::vector<Index> original;
   QuadrantPoint point;
+  CreaseRun chart;  // the crease run the point's quadrant is laid out by (dual_crease_chart.h)
 };
 
 Cut cut_around(const Level& L, Index face, int radius) {
@@ -59,8 +65,9 @@ Cut cut_around(const Level& L, Index face, int radius) {
 }
 
 // The base point in its quadrant: a quad's quarter at the nearest corner, an n-gon's
-// sub-face as it is (base_face_point already gives its (a, b) and d(a, b)/d(u, v) = 2).
-QuadrantPoint base_quadrant(const FacePoint& p) {
+// sub-face as it is (base_face_point already gives its (a, b) and d(a, b)/d(u, v) = 2); a
+// half quad's (dual_crease_chart.h) quadrant of a corner off the crease that holds it.
+QuadrantPoint base_quadrant(const Level& base, const FacePoint& p) {
   QuadrantPoint q;
   if (p.sub_face >= 0) {
     q.corner = p.sub_face;
@@ -68,8 +75,27 @@ QuadrantPoint base_quadrant(const FacePoint& p) {
     q.jacobian = {{{1, 0}, {0, 1}}};  // halved once: the first step has scale 2
     return q;
   }
-  constexpr Uv kCorner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   const double u = p.st[0], v = p.st[1];
+  if (const auto run = crease_run(base, p.face); run && run->length > 0) {
+    double best = -1;
+    for (int k = 0; k < 4; ++k) {
+      if (((k - run->first + 4) % 4) < run->length) continue;
+      const QuadrantChart c = half_quad_quadrant(*run, k);
+      // (u, v) - origin = a to_a + b to_b, solved by Cramer's rule.
+      const double det = c.to_a[0] * c.to_b[1] - c.to_a[1] * c.to_b[0];
+      const double du = u - c.origin[0], dv = v - c.origin[1];
+      const double a = (du * c.to_b[1] - dv * c.to_b[0]) / det, b = (c.to_a[0] * dv - c.to_a[1] * du) / det;
+      const double inside = std::min(std::min(a, 1 - a), std::min(b, 1 - b));
+      if (inside <= best) continue;
+      best = inside;
+      q.corner = k;
+      q.ab = coords({std::clamp(a, 0.0, 1.0), std::clamp(b, 0.0, 1.0)});
+      // d(a, b)/d(u, v), halved once (the first step has scale 2).
+      q.jacobian = {{{c.to_b[1] / det / 2, -c.to_b[0] / det / 2}, {-c.to_a[1] / det / 2, c.to_a[0] / det / 2}}};
+    }
+    return q;
+  }
+  constexpr Uv kCorner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   const int k = u <= 0.5 ? (v <= 0.5 ? 0 : 3) : (v <= 0.5 ? 1 : 2);
   const Uv& c = kCorner[k];
   const Uv e{kCorner[(k + 1) % 4][0] - c[0], kCorner[(k + 1) % 4][1] - c[1]};
@@ -92,16 +118,16 @@ StepMatrix identity_step(Index n) {
   return m;
 }
 
-int index_in(std::span<const Index> list, Index x) {
-  for (size_t k = 0; k < list.size(); ++k)
-    if (list[k] == x) return int(k);
-  return -1;
-}
-
 // One dual step of quadrant (g, j): the new point c of corner (g, j) at (1/2, 1/2); the
 // new face around c whose centre is at the quadrant's corner K holds the quarter between c
 // and K. Its quadrant at c has (0, 0) at c and (1, 1) at K, oriented like the parent's
 // (both frames are counter-clockwise), which fixes which parent axis becomes a'.
+//
+// c is a smooth point (the corner is not a crease corner, dual_crease_chart.h), so it has
+// four faces, counter-clockwise: g's F-face (centre K = (1, 1)), the E-face of edge j - 1
+// ((0, 1)), the V-face of g[j] ((0, 0)), the E-face of edge j ((1, 0)). Taking them by
+// their order around c rather than by where their corners come from also holds next to a
+// crease, where a crease point shared by two faces records only one of them as its origin.
 struct ChildStep {
   Index face = kNone;
   int corner = 0;
@@ -109,54 +135,101 @@ struct ChildStep {
   Jacobian jacobian{};
 };
 
-ChildStep child_quadrant(const Level& parent, const Level& child, const ChildOrigins& o, const QuadrantPoint& p) {
+ChildStep child_quadrant(const Level& child, const ChildOrigins& o, const QuadrantPoint& p) {
   Index c = kNone;
   for (size_t v = 0; v < o.kind.size(); ++v)
-    if (o.kind[v] == OriginKind::Corner && o.parent[v] == p.face && int(o.local[v]) == p.corner) c = Index(v);
+    if (o.kind[v] == OriginKind::Corner && o.parent[v] == p.face && int(o.local[v]) == p.corner &&
+        (o.corner_side.empty() || o.corner_side[v] == 0)) {
+      c = Index(v);
+      break;
+    }
   if (c == kNone) throw Error("internal: the corner has no new point (the split is not a dual one)");
-  const int k = parent.face_size(p.face);
+  const auto ring = child.ring_faces(c);
+  if (ring.size() != 4 || child.on_boundary(c))
+    throw Error("internal: the new point of a quadrant's corner is not a smooth point of four faces");
+  int f_at = -1;
+  for (int k = 0; k < 4; ++k)
+    if (o.parent_face[size_t(ring[size_t(k)])] == p.face) f_at = k;
+  if (f_at < 0) throw Error("internal: the F-face is not around the corner's new point");
   const int sa = p.ab[0].upper_half() ? 1 : -1, sb = p.ab[1].upper_half() ? 1 : -1;
-  for (Index g : child.ring_faces(c)) {
-    // Where g's centre lies in the parent quadrant, from where its corners come from.
-    int in_face = 0, other = -1;
-    for (Index x : child.face(g))
-      if (o.kind[size_t(x)] == OriginKind::Corner && o.parent[size_t(x)] == p.face) {
-        ++in_face;
-        if (x != c) other = int(o.local[size_t(x)]);
-      }
-    int ka = 0, kb = 0;  // the corner K: (1, 1) F-face, (1, 0) / (0, 1) E-faces, (0, 0) V-face
-    if (o.parent_face[size_t(g)] == p.face) {
-      ka = kb = 1;
-    } else if (in_face == 2 && other == (p.corner + 1) % k) {
-      ka = 1;
-    } else if (in_face == 2 && other == (p.corner + k - 1) % k) {
-      kb = 1;
-    } else if (in_face != 1) {
-      continue;
-    }
-    if ((ka ? 1 : -1) != sa || (kb ? 1 : -1) != sb) continue;
-    ChildStep s;
-    s.face = g;
-    s.corner = index_in(child.face(g), c);
-    // (a', b') = M (a - 1/2, b - 1/2) with det M > 0 (so each is 2 |a - 1/2| or 2 |b - 1/2|,
-    // Coord::child); M halved is carried into the Jacobian.
-    std::array<std::array<double, 2>, 2> M;
-    if (sa * sb > 0) {
-      M = {{{double(sa), 0}, {0, double(sb)}}};
-      s.ab = {p.ab[0].child(), p.ab[1].child()};
-    } else {
-      M = {{{0, double(sb)}, {double(sa), 0}}};
-      s.ab = {p.ab[1].child(), p.ab[0].child()};
-    }
-    for (int r = 0; r < 2; ++r)
-      for (int q = 0; q < 2; ++q)
-        s.jacobian[size_t(r)][size_t(q)] = M[size_t(r)][0] * p.jacobian[0][size_t(q)] + M[size_t(r)][1] * p.jacobian[1][size_t(q)];
-    return s;
+  // Counter-clockwise from the F-face: (1, 1), (0, 1), (0, 0), (1, 0).
+  const int step = sa > 0 ? (sb > 0 ? 0 : 3) : (sb > 0 ? 1 : 2);
+  ChildStep s;
+  s.face = ring[size_t((f_at + step) % 4)];
+  s.corner = -1;
+  const auto g = child.face(s.face);
+  for (size_t k = 0; k < g.size(); ++k)
+    if (g[k] == c) s.corner = int(k);
+  // (a', b') = M (a - 1/2, b - 1/2) with det M > 0 (so each is 2 |a - 1/2| or 2 |b - 1/2|,
+  // Coord::child); M halved is carried into the Jacobian.
+  std::array<std::array<double, 2>, 2> M;
+  if (sa * sb > 0) {
+    M = {{{double(sa), 0}, {0, double(sb)}}};
+    s.ab = {p.ab[0].child(), p.ab[1].child()};
+  } else {
+    M = {{{0, double(sb)}, {double(sa), 0}}};
+    s.ab = {p.ab[1].child(), p.ab[0].child()};
   }
-  throw Error("internal: no new face around the corner's new point holds the point");
+  for (int r = 0; r < 2; ++r)
+    for (int q = 0; q < 2; ++q)
+      s.jacobian[size_t(r)][size_t(q)] = M[size_t(r)][0] * p.jacobian[0][size_t(q)] + M[size_t(r)][1] * p.jacobian[1][size_t(q)];
+  return s;
+}
+
+// Where a semi-sharp crease has decayed (its edges no longer sharp for the next split), a
+// face laid out by its crease run (quadrants of the corners off it) is refined as a closed
+// face: the point is moved to the face's own quadrant at the nearest corner, through the
+// quad's (u, v), with d(a', b')/d(a, b) carried into the Jacobian.
+void follow_decay(Cut& cut) {
+  const auto own = crease_run(cut.level, cut.point.face);
+  if (!own) throw Error("the point's face lies between two creases (its crease corners are not one run)");
+  const CreaseRun was = cut.chart;
+  if (own->length == was.length && (was.length == 0 || own->first == was.first)) return;
+  if (own->length != 0 || cut.level.face_size(cut.point.face) != 4)
+    throw Error("a semi-sharp crease changes shape as it decays (its edges or corner decay at different levels): "
+                "not evaluated yet");
+  QuadrantPoint& q = cut.point;
+  const QuadrantChart c = half_quad_quadrant(was, q.corner);
+  const Uv ab = as_uv(q.ab);
+  const double u = c.origin[0] + ab[0] * c.to_a[0] + ab[1] * c.to_b[0];
+  const double v = c.origin[1] + ab[0] * c.to_a[1] + ab[1] * c.to_b[1];
+  constexpr Uv kCorner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const int k = u <= 0.5 ? (v <= 0.5 ? 0 : 3) : (v <= 0.5 ? 1 : 2);
+  const Uv& o = kCorner[k];
+  const Uv e{kCorner[(k + 1) % 4][0] - o[0], kCorner[(k + 1) % 4][1] - o[1]};
+  const Uv f{kCorner[(k + 3) % 4][0] - o[0], kCorner[(k + 3) % 4][1] - o[1]};
+  // (a', b') = 2 [e; f] ((u, v) - o), and d(u, v)/d(a, b) = [to_a to_b].
+  const std::array<std::array<double, 2>, 2> D{
+      {{2 * (e[0] * c.to_a[0] + e[1] * c.to_a[1]), 2 * (e[0] * c.to_b[0] + e[1] * c.to_b[1])},
+       {2 * (f[0] * c.to_a[0] + f[1] * c.to_a[1]), 2 * (f[0] * c.to_b[0] + f[1] * c.to_b[1])}}};
+  Jacobian J{};
+  for (size_t r = 0; r < 2; ++r)
+    for (size_t x = 0; x < 2; ++x) J[r][x] = D[r][0] * q.jacobian[0][x] + D[r][1] * q.jacobian[1][x];
+  q.corner = k;
+  q.ab = coords({std::clamp(2 * (e[0] * (u - o[0]) + e[1] * (v - o[1])), 0.0, 1.0),
+                 std::clamp(2 * (f[0] * (u - o[0]) + f[1] * (v - o[1])), 0.0, 1.0)});
+  q.jacobian = J;
+  cut.chart = CreaseRun{};
 }
 
 Coords nearest_corner(const Coords& ab) { return {Coord{0, ab[0].high}, Coord{0, ab[1].high}}; }
+
+// The 3 x 3 points around the quadrant's corner w when the surface over the quadrant is the
+// biquadratic B-spline's patch: w and its eight neighbours interior, of valence 4, untagged,
+// with no sharp edge (so every new point of the four faces around w, and of their children
+// around the quadrant, takes the smooth rule at every level). Boundaries and creases further
+// away do not reach the quadrant: each new point reads only its own face's corners. Holes
+// change no rule (only which faces are kept), so they do not matter here.
+std::optional<std::array<Index, 9>> smooth_biquadratic_grid(const Level& L, Index face, int corner) {
+  const auto grid = biquadratic_grid(L, face, corner);
+  if (!grid) return std::nullopt;
+  for (Index v : *grid) {
+    if (L.on_boundary(v) || L.vertex_sharp(v) != 0 || L.incident_face_count(v) != 4) return std::nullopt;
+    for (Index e : L.ring_edges(v))
+      if (L.edge_sharp(e) != 0) return std::nullopt;
+  }
+  return grid;
+}
 
 }  // namespace
 
@@ -170,14 +243,14 @@ std::optional<FacePoint> dual_child_point(const Level& parent, const Level& chil
   if (p.sub_face >= 0) {
     q.corner = p.sub_face, q.ab = coords(p.st), q.jacobian = p.jacobian;
   } else {
-    const QuadrantPoint b = base_quadrant(p);  // its Jacobian: 2 [e; f] halved once
+    const QuadrantPoint b = base_quadrant(parent, p);  // its Jacobian: 2 [e; f] halved once
     q.corner = b.corner, q.ab = b.ab;
     for (int r = 0; r < 2; ++r)
       for (int c = 0; c < 2; ++c)
         q.jacobian[size_t(r)][size_t(c)] =
             2 * (b.jacobian[size_t(r)][0] * p.jacobian[0][size_t(c)] + b.jacobian[size_t(r)][1] * p.jacobian[1][size_t(c)]);
   }
-  const ChildStep s = child_quadrant(parent, child, o, q);  // its Jacobian: M J, the true one 2 M J
+  const ChildStep s = child_quadrant(child, o, q);  // its Jacobian: M J, the true one 2 M J
   FacePoint out;
   out.face = s.face;
   if (child.face_size(s.face) != 4) {
@@ -186,6 +259,17 @@ std::optional<FacePoint> dual_child_point(const Level& parent, const Level& chil
     for (auto& row : out.jacobian) row = {0, 0};
     for (int r = 0; r < 2; ++r)
       for (int c = 0; c < 2; ++c) out.jacobian[size_t(r)][size_t(c)] = 2 * s.jacobian[size_t(r)][size_t(c)];
+    return out;
+  }
+  // A quad laid out by a crease run (dual_crease_chart.h): (u, v) = origin + a to_a + b to_b.
+  if (const auto run = made_on_crease_run(parent, child, o, s.face); run && run->length > 0) {
+    const QuadrantChart c = half_quad_quadrant(*run, s.corner);
+    const Uv ab = as_uv(s.ab);
+    out.st = {c.origin[0] + ab[0] * c.to_a[0] + ab[1] * c.to_b[0], c.origin[1] + ab[0] * c.to_a[1] + ab[1] * c.to_b[1]};
+    for (int r = 0; r < 2; ++r)
+      for (int k = 0; k < 2; ++k)  // d(u, v)/d(a, b) = [to_a to_b], times the true 2 M J
+        out.jacobian[size_t(r)][size_t(k)] =
+            2 * (c.to_a[size_t(r)] * s.jacobian[0][size_t(k)] + c.to_b[size_t(r)] * s.jacobian[1][size_t(k)]);
     return out;
   }
   // A quad's quadrant j: (u, v) = c_j + (a/2) e + (b/2) f, e towards corner j + 1, f towards j - 1.
@@ -201,25 +285,35 @@ std::optional<FacePoint> dual_child_point(const Level& parent, const Level& chil
   return out;
 }
 
-std::string dual_limit_unsupported(const Level& base) {
-  for (Index v = 0; v < base.vertex_count; ++v)
-    if (base.on_boundary(v))
-      return "the mesh has a boundary: the limit of a dual scheme does not reach the outer half of the boundary "
-             "faces, and that parameterisation is not defined yet; close the mesh or use a primal scheme";
-  for (float s : base.edge_sharpness)
-    if (s > 0) return "the mesh has sharp or semi-sharp edges: evaluation of dual schemes with creases is not done yet";
-  for (float s : base.vertex_sharpness)
-    if (s > 0) return "the mesh has sharp vertices: evaluation of dual schemes with corners is not done yet";
-  if (!base.face_hole.empty())
-    for (auto h : base.face_hole)
-      if (h) return "the mesh has holes: evaluation of dual schemes next to holes is not done yet";
-  return {};
+std::string dual_head_unsupported(const Level& base) {
+  // The head hands the tail each point in its child face's own (u, v), read by the tail in
+  // the layout of the face's own crease run: that is the run the face was made with unless a
+  // semi-sharp crease decays under the head.
+  for (Index e = 0; e < base.edge_count(); ++e)
+    if (!base.edge_on_boundary(e) && base.edge_sharp(e) >= 1.f && base.edge_sharp(e) < kInfinitelySharp)
+      return fmt::format("edge {} has sharpness {}: a dual split in a sequence's head is followed next to boundaries "
+                         "and infinitely sharp creases, not semi-sharp ones",
+                         e, base.edge_sharp(e));
+  return dual_limit_unsupported(base);
 }
+
+std::string dual_limit_unsupported(const Level& base) { return dual_crease_unsupported(base); }
 
 DualLimit::DualLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options, int radius,
                      SchemeLimits& limits)
     : scheme_(scheme), base_(base), options_(options), radius_(radius), limits_(limits) {
   biquadratic_ = refines_as_biquadratic(scheme, options.features);
+  bool creased = false;
+  for (Index f = 0; f < base.face_count() && !creased; ++f) {
+    const auto run = crease_run(base, f);
+    creased = !run || run->length > 0;
+  }
+  if (creased)
+    if (const std::string why = crease_middles_kept(scheme, options.features, &chaikin_crease_, &middles_kept_);
+        !why.empty())
+      throw Error(fmt::format("scheme {} is a dual scheme and the mesh has boundaries or sharp creases, which are "
+                              "evaluated for schemes whose crease is Chaikin's curve at every level; {}",
+                              subdiv::quoted(scheme.name), why));
 }
 
 std::vector<Index> DualLimit::reads(const FacePoint& p) const { return cut_around(base_, p.face, radius_).original; }
@@ -229,8 +323,9 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
   Cut cut = cut_around(base_, p0.face, radius_);
   cut.point.corner = 0;
   {
-    const QuadrantPoint q = base_quadrant(p0);
+    const QuadrantPoint q = base_quadrant(base_, p0);
     cut.point.corner = q.corner, cut.point.ab = q.ab, cut.point.jacobian = q.jacobian;
+    if (const auto run = crease_run(base_, p0.face)) cut.chart = *run;
   }
   std::deque<StepMatrix> owned;
   std::vector<const StepMatrix*> path;
@@ -240,9 +335,10 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
   const int limit_steps = options_.max_steps + 40;
   for (int step = 0;; ++step) {
     QuadrantPoint& q = cut.point;
+    follow_decay(cut);
     if (step == options_.max_steps) q.ab = nearest_corner(q.ab);
-    if (biquadratic_ && regular_quad_cut(cut.level)) {
-      if (const auto grid = biquadratic_grid(cut.level, q.face, q.corner)) {
+    if (biquadratic_) {
+      if (const auto grid = smooth_biquadratic_grid(cut.level, q.face, q.corner)) {
         const Uv ab = as_uv(q.ab);
         const BiquadraticRows b = biquadratic_rows(ab[0], ab[1]);
         const size_t n = size_t(cut.level.vertex_count);
@@ -286,11 +382,56 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
         return out;
       }
     }
+    const bool centre = q.ab[0].high && q.ab[0].x == 0 && q.ab[1].high && q.ab[1].x == 0;
+    // The centre (1, 1) of a half face's quadrant: the middle of its crease run, where an
+    // infinitely sharp crease's limit is the mean of the run's two middle points (Chaikin's
+    // curve at a knot) or the corner it turns at (dual_crease_chart.h).
+    // A point on the crease itself (a = 1 or b = 1 on the side reaching a crease corner): the
+    // crease curve's closed form there (dual_crease_chart.h), rather than descending ~53 steps.
+    if (const auto run = crease_run(cut.level, q.face);
+        chaikin_crease_ && run && run->length > 0 && crease_run_infinitely_sharp(cut.level, q.face, *run)) {
+      for (int side = 0; side < 2; ++side) {
+        const Coord& on = q.ab[size_t(side)];
+        if (!(on.high && on.x == 0)) continue;
+        const auto w = crease_side_limit(cut.level, q.face, *run, q.corner, side == 0, q.ab[size_t(1 - side)].value());
+        if (w.empty()) continue;
+        std::vector<double> row(size_t(cut.level.vertex_count), 0.0);
+        for (const auto& [v, x] : w) row[size_t(v)] += x;
+        LimitSample out;
+        out.steps = step;
+        out.position = applied(row, values, channels);
+        return out;
+      }
+    }
+    if (centre) {
+      const auto run = crease_run(cut.level, q.face);
+      if (run && run->length > 0 && crease_run_infinitely_sharp(cut.level, q.face, *run)) {
+        std::vector<double> row(size_t(cut.level.vertex_count), 0.0);
+        const auto corners = cut.level.face(q.face);
+        std::vector<std::pair<Index, double>> weights;
+        if (middles_kept_ || run->length != 2) {
+          for (const auto& [k, w] : crease_run_middle(*run, int(corners.size())))
+            weights.emplace_back(corners[size_t(k)], w);
+        } else {
+          // The crease points move after the split: the crease curve's own limit mask at the
+          // middle (dual_crease_curve.h), once the window is clear of corners.
+          RefineOptions ro;
+          ro.levels = 1;
+          ro.features = options_.features;
+          const auto mask = crease_middle_limit(cut.level, refine(scheme_, cut.level, ro), q.face, *run);
+          if (mask) weights = *mask;
+        }
+        for (const auto& [v, w] : weights) row[size_t(v)] += w;
+        LimitSample out;
+        out.steps = step;
+        out.position = applied(row, values, channels);
+        if (!weights.empty()) return out;
+      }
+    }
     // The centre of a face: its limit mask, where its neighbourhood is the mask's. A quad's
     // centre is left to the closed form when there is one (its F-faces' neighbourhoods
     // become regular), which gives the derivatives too.
     const bool closed_form_ahead = biquadratic_ && cut.level.face_size(q.face) == 4;
-    const bool centre = q.ab[0].high && q.ab[0].x == 0 && q.ab[1].high && q.ab[1].x == 0;
     if (centre && !closed_form_ahead) {
       LocalConfig config;
       config.centre = CentreKind::Face;
@@ -315,9 +456,11 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
     ro.levels = 1;
     ro.features = options_.features;
     const Hierarchy h = refine(scheme_, cut.level, ro);
-    const ChildStep s = child_quadrant(cut.level, h.levels[1], h.origins[0], q);
+    const ChildStep s = child_quadrant(h.levels[1], h.origins[0], q);
     Cut next = cut_around(h.levels[1], s.face, radius_);
     next.point.corner = s.corner, next.point.ab = s.ab, next.point.jacobian = s.jacobian;
+    if (const auto run = made_on_crease_run(cut.level, h.levels[1], h.origins[0], s.face)) next.chart = *run;
+    else throw Error("internal: a new face has its crease points in two runs");
     owned.push_back(step_matrix(h.stencils[0], next.original, cut.level.vertex_count));
     path.push_back(&owned.back());
     std::vector<double> moved(size_t(owned.back().rows()) * size_t(channels));

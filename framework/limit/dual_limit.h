@@ -15,11 +15,20 @@
 // biquadratic B-spline) each control point sits at its Greville point, so the scheme has
 // linear precision in these coordinates.
 //
+// Next to boundaries and sharp creases a face with corners on the crease is covered by the
+// quadrants of its other corners, which reach to the crease (dual_crease_chart.h); the
+// nesting is the same. Where a semi-sharp crease has decayed, such a face is read in its own
+// quadrants again (follow_decay).
+//
 // Evaluation follows the point's quadrant down the refinement of its neighbourhood (the
 // engine refines a cut around the face, as for primal schemes) until either
-// - the neighbourhood is regular and the scheme refines regular quads as the biquadratic
-//   B-spline does (checked on its rows): the closed form over the quadrant
-//   (biquadratic_patch.h), with derivatives; or
+// - the 3 x 3 points around the quadrant's corner are regular and untagged and the scheme
+//   refines regular quads as the biquadratic B-spline does (checked on its rows): the
+//   closed form over the quadrant (biquadratic_patch.h), with derivatives; or
+// - the point is on the crease side of a quadrant of a face with corners on an infinitely
+//   sharp crease: the crease curve's closed form where the crease is Chaikin's
+//   (crease_side_limit), else at (1, 1) the middle of the face's crease run, whose limit is
+//   the crease curve's there; or
 // - the point is the centre of a face: the limit mask of that face (the left eigenvector
 //   of 1 of its local subdivision matrix; analysis/surface/limit_evaluation.h, Doo & Sabin
 //   1978; Peters & Reif 1998, "Analysis of algorithms generalizing B-spline
@@ -67,6 +76,8 @@ private:
   int radius_;
   SchemeLimits& limits_;
   bool biquadratic_ = false;
+  bool chaikin_crease_ = false;  // the crease is Chaikin's: its closed form applies on it
+  bool middles_kept_ = true;     // the crease keeps its edges' middles (else dual_crease_curve.h)
 };
 
 // A point of a face (face_domain.h: a quad's (u, v), or an n-gon's sub-face) after one dual
@@ -76,8 +87,11 @@ private:
 std::optional<FacePoint> dual_child_point(const Level& parent, const Level& child, const ChildOrigins& origins,
                                           const FacePoint& p);
 
-// Why the dual evaluation cannot take this mesh, or empty (boundaries and sharp features of
-// dual schemes are not parameterised yet).
+// Why the dual evaluation cannot take this mesh, or empty (holes, and the boundaries and
+// creases dual_crease_chart.h does not cover yet).
 std::string dual_limit_unsupported(const Level& base);
+// The same for a dual split in a sequence's head (dual_child_point), which follows closed
+// untagged meshes only.
+std::string dual_head_unsupported(const Level& base);
 
 }  // namespace subdiv

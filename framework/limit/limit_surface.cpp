@@ -449,15 +449,16 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   if (!base.manifold())
     throw Error("the mesh is non-manifold (an edge with more than two faces, or a vertex where separate fans of "
                 "faces meet): limit evaluation at (face, u, v) needs a manifold mesh; split it into manifold parts");
-  if (impl_->scheme = std::move(scheme); impl_->scheme->split() == SplitKind::Dual) {
-    if (const std::string why = dual_limit_unsupported(base); !why.empty())
-      throw Error(fmt::format("scheme {} is a dual scheme and {}", subdiv::quoted(impl_->scheme->name), why));
-  }
+  impl_->scheme = std::move(scheme);
   impl_->base = std::move(base);
   impl_->options = options;
   // With boundary interpolation "none" the faces along a boundary are holes (as the
   // engine and OpenSubdiv make them): they have no limit surface.
   tag_boundary_holes(impl_->base, options.features.boundary);
+  if (impl_->scheme->split() == SplitKind::Dual) {
+    if (const std::string why = dual_limit_unsupported(impl_->base); !why.empty())
+      throw Error(fmt::format("scheme {} is a dual scheme and {}", subdiv::quoted(impl_->scheme->name), why));
+  }
   impl_->triangles = impl_->scheme->split() == SplitKind::Triangle;
   // Children near the cut's rim follow the rim's artificial boundary; with a reach of r
   // parent rings, 2 r + 2 rings keep the face's own neighbourhood right from level to level.

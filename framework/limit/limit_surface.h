@@ -23,8 +23,9 @@
 //
 // Supported: stationary linear schemes whose split is the binary quad or triangle split
 // (Catmull-Clark, Loop, the butterflies, bilinear, composite split + averaging schemes), and
-// the dual split on closed untagged meshes (Doo-Sabin, even-degree quad B-splines; dual_limit.h,
-// in the quad split's parameterisation read as nested quadrants).
+// the dual split (Doo-Sabin, even-degree quad B-splines; dual_limit.h, in the quad split's
+// parameterisation read as nested quadrants), with regular boundaries, infinitely sharp creases
+// and corners (dual_crease_chart.h says which).
 // Refused with the reason: non-linear rules (no limit stencil exists), level-dependent
 // weights (no fixed local subdivision matrix), and for now the √3 and mid-edge splits
 // (their children do not nest inside one parent face or quadrant).

@@ -41,7 +41,7 @@ SequenceHead::SequenceHead(std::vector<LimitHeadRun> runs, const Level& base, co
     if (l > 0 && triangles_[l - 1])
       throw Error("the sequence's head has a dual split after a triangle split: following a point from a triangle's "
                   "own (u, v) into quadrants is not implemented yet");
-    if (const std::string why = dual_limit_unsupported(base); !why.empty())
+    if (const std::string why = dual_head_unsupported(base); !why.empty())
       throw Error("the sequence's head has a dual split and " + why);
   }
   RefineOptions ro;

@@ -216,8 +216,39 @@ TEST_CASE("subdiv evaluate takes dual schemes: the written numbers are the libra
   const auto refused = test::run_subdiv("evaluate " + (dir / "open.obj").string() + " -s doo-sabin --at " +
                                         (dir / "points.csv").string() + " -o " + (dir / "refused.csv").string());
   CHECK(refused.exit_code != 0);
-  CHECK(refused.output.find("boundary") != std::string::npos);
+  CHECK(refused.output.find("between two creases") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "refused.csv"));
+}
+
+TEST_CASE("subdiv evaluate takes dual schemes on meshes with a boundary: the library's numbers, the boundary on "
+          "the boundary curve") {
+  // A 2 x 2 grid of quads: its boundary is the clamped quadratic B-spline of the boundary
+  // polygon; at a corner of the mesh the limit is the corner (docs/limit.md).
+  const fs::path dir = test::fresh_dir("evaluate-cli-dual-boundary");
+  write(dir / "grid.obj",
+        "v 0 0 0\nv 1 0 0.2\nv 2 0 0\nv 0 1 0.1\nv 1 1 0.5\nv 2 1 -0.1\nv 0 2 0\nv 1 2 0.3\nv 2 2 0\n"
+        "f 1 2 5 4\nf 2 3 6 5\nf 4 5 8 7\nf 5 6 9 8\n");
+  write(dir / "points.csv", "face,u,v\n0,0,0\n0,0.5,0\n1,0.25,0.6\n3,0.9,0.1\n");
+  const auto r = test::run_subdiv("evaluate " + (dir / "grid.obj").string() + " -s doo-sabin --at " +
+                                  (dir / "points.csv").string() + " -o " + (dir / "out.csv").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  std::string header;
+  const auto rows = read_csv(dir / "out.csv", header);
+  REQUIRE(rows.size() == 4);
+  const MeshData m = read_mesh((dir / "grid.obj").string());
+  const LimitSurface s(load_scheme("doo-sabin"), level_from_mesh(m, (dir / "grid.obj").string()));
+  for (const auto& row : rows) {
+    const LimitSample p = s.evaluate(Index(row[0]), row[1], row[2], m.positions, 3);
+    for (int c = 0; c < 3; ++c) CHECK(row[size_t(3 + c)] == p.position[size_t(c)]);
+  }
+  // The corner (0, 0, 0) stays; face 0 at (1/2, 0) is the clamped spline of (0,0,0), (1,0,0.2),
+  // (2,0,0) (knots 0, 0, 0, 1, 1, 1: a quadratic Bezier) at t = 1/4 of the corner's edge in
+  // Greville terms, i.e. (1/4 from the corner at 0, the middle point at 1/2): B(1/2) with
+  // t = 1/4: (1 - t)^2 P0 + 2 t (1 - t) P1 + t^2 P2.
+  for (int c = 0; c < 3; ++c) CHECK(std::abs(rows[0][size_t(3 + c)]) < 1e-15);
+  const double t = 0.25;
+  const double expected[3] = {2 * t * (1 - t) * 1 + t * t * 2, 0, 2 * t * (1 - t) * 0.2};
+  for (int c = 0; c < 3; ++c) CHECK(std::abs(rows[1][size_t(3 + c)] - expected[c]) < 1e-14);
 }
 
 TEST_CASE("subdiv evaluate --samples writes the face-varying UVs with their seams") {

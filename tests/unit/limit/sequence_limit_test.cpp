@@ -7,8 +7,10 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "framework/limit/limit_surface.h"
+#include "framework/topology/level.h"
 #include "framework/limit/tessellation.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
@@ -164,6 +166,49 @@ TEST_CASE("A dual head: Doo-Sabin's own level before it changes nothing, and Doo
   const LimitSurface s({{load_scheme("doo-sabin"), 1}}, load_scheme("catmull-clark"), m.level());
   const Tessellation t = tessellate(s, m.positions, 4);
   CHECK(t.face_count() == 6 * 16);
-  CHECK_THROWS_WITH_AS(LimitSurface({{load_scheme("doo-sabin"), 1}}, load_scheme("catmull-clark"), test::grid(3, 3).level()),
-                       doctest::Contains("boundary"), Error);
+  Level semi = test::torus(8, 6).level();
+  semi.edge_sharpness.assign(size_t(semi.edge_count()), 0.f);
+  for (Index i = 0; i < 8; ++i) semi.edge_sharpness[size_t(find_edge(semi, i, (i + 1) % 8))] = 2.f;
+  CHECK_THROWS_WITH_AS(LimitSurface({{load_scheme("doo-sabin"), 1}}, load_scheme("catmull-clark"), semi),
+                       doctest::Contains("not semi-sharp ones"), Error);
+}
+
+TEST_CASE("A dual head next to a boundary and a sharp crease: Doo-Sabin's own levels before it change nothing") {
+  // The head hands each point to the tail in its child face's (u, v), through the layout of
+  // faces next to the crease (docs/limit.md): doo-sabin:k,doo-sabin must be Doo-Sabin's limit
+  // in the same (u, v), on and off the crease.
+  test::Mesh torus = bumped(test::torus(8, 6));
+  Level creased = torus.level();
+  creased.edge_sharpness.assign(size_t(creased.edge_count()), 0.f);
+  for (Index i = 0; i < 8; ++i) creased.edge_sharpness[size_t(find_edge(creased, i, (i + 1) % 8))] = 10.f;
+  const test::Mesh grid = bumped(test::grid(5, 4));
+  const auto ds = load_scheme("doo-sabin");
+  for (int mesh = 0; mesh < 2; ++mesh) {
+    const test::Mesh& m = mesh == 0 ? grid : torus;
+    const Level L = mesh == 0 ? grid.level() : creased;
+    const LimitSurface plain(ds, L);
+    for (int k : {1, 2}) {
+      CAPTURE(mesh);
+      CAPTURE(k);
+      const LimitSurface sequence({{ds, k}}, ds, L);
+      std::mt19937 rng(17);
+      std::uniform_real_distribution<double> U(0.0, 1.0);
+      double worst = 0, worst_d = 0;
+      for (int n = 0; n < 30; ++n) {
+        const Index f = Index(n % L.face_count());
+        const double u = U(rng), v = n % 3 == 0 ? 0.0 : U(rng);
+        const LimitSample a = plain.evaluate(f, u, v, m.positions, 3);
+        const LimitSample b = sequence.evaluate(f, u, v, m.positions, 3);
+        worst = std::max(worst, distance(a.position, b.position));
+        REQUIRE(a.has_derivatives == b.has_derivatives);
+        if (a.has_derivatives) {
+          const std::vector<double> zero(3, 0.0);
+          const double size = 1 + distance(a.du, zero) + distance(a.dv, zero);
+          worst_d = std::max(worst_d, (distance(a.du, b.du) + distance(a.dv, b.dv)) / size);
+        }
+      }
+      CHECK(worst < 1e-12);
+      CHECK(worst_d < 1e-9);
+    }
+  }
 }

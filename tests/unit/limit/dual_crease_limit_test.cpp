@@ -1,0 +1,610 @@
+// Exact limit evaluation of dual schemes next to boundaries, sharp creases and corners, against
+// mathematics: along a boundary or crease the limit is the crease polygon's Chaikin curve
+// (Chaikin 1974), the uniform quadratic B-spline, or between two corners the clamped one
+// (evaluated here by Cox & de Boor's recurrence), at the parameter docs/limit.md gives; corners
+// are interpolated; both sides of every edge give the same point; affine invariance; at the
+// parameters of level-1 points the limit is the V-face centroid limit of the refined mesh
+// (interpolation/dual_limits.h, computed from one step of the scheme independently of this
+// evaluator); fractional sharpness is the smooth limit of the mesh one step down.
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "framework/engine/refiner.h"
+#include "framework/interpolation/limit_selection.h"
+#include "framework/limit/dual_limit.h"
+#include "framework/limit/face_domain.h"
+#include "framework/limit/limit_surface.h"
+#include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/scheme/scheme_sequence.h"
+#include "framework/util/error.h"
+#include "support/test_meshes.h"
+
+using namespace subdiv;
+
+namespace {
+
+using P3 = std::array<double, 3>;
+
+double distance(std::span<const double> a, std::span<const double> b) {
+  double s = 0;
+  for (size_t i = 0; i < a.size(); ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(s);
+}
+
+test::Mesh bumped(test::Mesh m) {
+  for (Index v = 0; v < m.vertex_count; ++v) {
+    m.positions[size_t(3 * v)] += 0.07 * std::sin(2.3 * v + 0.1);
+    m.positions[size_t(3 * v + 1)] += 0.05 * std::cos(1.1 * v + 0.4);
+    m.positions[size_t(3 * v + 2)] += 0.3 * std::sin(1.7 * v + 0.3);
+  }
+  return m;
+}
+
+P3 point(const test::Mesh& m, Index v) {
+  return {m.positions[size_t(3 * v)], m.positions[size_t(3 * v + 1)], m.positions[size_t(3 * v + 2)]};
+}
+
+// Cox & de Boor: the degree-2 B-spline with knots t over control points at parameter x.
+P3 quadratic_bspline(const std::vector<double>& t, const std::vector<P3>& ctrl, double x) {
+  size_t k = 2;
+  while (k + 1 < t.size() && !(t[k] <= x && x < t[k + 1])) ++k;
+  if (k + 1 >= t.size() || k >= ctrl.size()) k = ctrl.size() - 1;  // x at the last knot
+  std::vector<P3> d(ctrl.begin() + ptrdiff_t(k) - 2, ctrl.begin() + ptrdiff_t(k) + 1);
+  for (int r = 1; r <= 2; ++r)
+    for (int j = 2; j >= r; --j) {
+      const size_t i = k - 2 + size_t(j);
+      const double den = t[i + 3 - size_t(r)] - t[i];
+      const double a = den == 0 ? 0 : (x - t[i]) / den;
+      for (size_t c = 0; c < 3; ++c) d[size_t(j)][c] = (1 - a) * d[size_t(j) - 1][c] + a * d[size_t(j)][c];
+    }
+  return d[2];
+}
+
+// The uniform quadratic B-spline of a closed polygon, control point k at parameter k (its
+// Greville abscissa; knots at the half-integers).
+P3 closed_quadratic(const std::vector<P3>& loop, double x) {
+  const int n = int(loop.size());
+  // ctrl[q] is loop point q - 3, at Greville q - 3 between its knots t[q + 1], t[q + 2] =
+  // (q - 3) -+ 1/2: t[i] = i - 4.5.
+  std::vector<P3> ctrl;
+  for (int k = -3; k <= n + 3; ++k) ctrl.push_back(loop[size_t(((k % n) + n) % n)]);
+  std::vector<double> t(ctrl.size() + 3);
+  for (size_t i = 0; i < t.size(); ++i) t[i] = double(i) - 4.5;
+  return quadratic_bspline(t, ctrl, x);
+}
+
+std::shared_ptr<const Scheme> scheme(const char* name) { return load_scheme(name); }
+
+P3 at(const LimitSurface& s, const test::Mesh& m, Index face, double u, double v) {
+  const LimitSample p = s.evaluate(face, u, v, m.positions, 3, 0);
+  return {p.position[0], p.position[1], p.position[2]};
+}
+
+// Faces of test::grid(nx, ny): face (i, j) is j nx + i, corners (i, j), (i+1, j), (i+1, j+1), (i, j+1).
+Index grid_face(int nx, int i, int j) { return Index(j * nx + i); }
+
+// A torus with its loop of vertices j = 0 (the edges from (i, 0) to (i + 1, 0)) infinitely sharp.
+Level creased_torus_level(const test::Mesh& m, int nu) {
+  Level L = m.level();
+  L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
+  for (int i = 0; i < nu; ++i) L.edge_sharpness[size_t(find_edge(L, Index(i), Index((i + 1) % nu)))] = 10.f;
+  return L;
+}
+
+// For each edge of two faces, the two faces' (u, v) at parameter t along it (quads only).
+void check_edges_continuous(const LimitSurface& s, const test::Mesh& m, const Level& L, double tolerance) {
+  constexpr std::array<std::array<double, 2>, 4> kCorner{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  auto edge_uv = [&](Index f, Index a, Index b, double t) {
+    const auto g = L.face(f);
+    for (int k = 0; k < 4; ++k)
+      if (g[size_t(k)] == a && g[size_t((k + 1) % 4)] == b) {
+        const auto& p = kCorner[size_t(k)];
+        const auto& q = kCorner[size_t((k + 1) % 4)];
+        return std::array<double, 2>{p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])};
+      }
+    FAIL("edge not in face");
+    return std::array<double, 2>{};
+  };
+  double worst = 0;
+  for (Index e = 0; e < L.edge_count(); ++e) {
+    if (L.edge_on_boundary(e)) continue;
+    const Index f0 = L.edge_faces[size_t(2 * e)], f1 = L.edge_faces[size_t(2 * e + 1)];
+    const Index a = L.edge_vertices[size_t(2 * e)], b = L.edge_vertices[size_t(2 * e + 1)];
+    for (double t : {0.0, 0.3, 0.5, 0.8125}) {
+      // Each face runs the edge in its own direction.
+      const bool f0_ab = [&] {
+        const auto g = L.face(f0);
+        for (int k = 0; k < 4; ++k)
+          if (g[size_t(k)] == a && g[size_t((k + 1) % 4)] == b) return true;
+        return false;
+      }();
+      const auto p0 = f0_ab ? edge_uv(f0, a, b, t) : edge_uv(f0, b, a, 1 - t);
+      const auto p1 = f0_ab ? edge_uv(f1, b, a, 1 - t) : edge_uv(f1, a, b, t);
+      const P3 x = at(s, m, f0, p0[0], p0[1]), y = at(s, m, f1, p1[0], p1[1]);
+      worst = std::max(worst, distance(x, y));
+    }
+  }
+  CHECK(worst < tolerance);
+}
+
+}  // namespace
+
+TEST_CASE("dual limit at a boundary: the boundary between two corners is the clamped quadratic B-spline, corners "
+          "interpolated") {
+  // 6 x 4, and 2 x 2 where each side has one vertex between two corners (knots 0, 0, 0, 1, 1, 1:
+  // a quadratic Bezier curve).
+  for (const auto& size : {std::array<int, 2>{6, 4}, std::array<int, 2>{2, 2}}) {
+    const int nx = size[0], ny = size[1];
+    CAPTURE(nx);
+    const test::Mesh m = bumped(test::grid(nx, ny));
+    // The bottom row (i, 0): corners (0, 0) and (nx, 0) end it. Clamped knots 0, 0, 0, 1, ...,
+    // nx - 1 (three times): P_0 at Greville 0, P_i at i - 1/2, P_nx at nx - 1.
+    std::vector<P3> row;
+    for (int i = 0; i <= nx; ++i) row.push_back(point(m, Index(i)));
+    std::vector<double> knots{0, 0, 0};
+    for (int k = 1; k < nx - 1; ++k) knots.push_back(k);
+    for (int r = 0; r < 3; ++r) knots.push_back(nx - 1);
+    auto greville = [&](int i) { return i == 0 ? 0.0 : (i == nx ? nx - 1.0 : i - 0.5); };
+    for (const char* name : {"doo-sabin", "doo-sabin-centroid", "quad-bspline"}) {
+      CAPTURE(name);
+      ParameterOverrides d2;
+      d2["d"] = "2";
+      const LimitSurface s(std::string(name) == "quad-bspline" ? load_scheme(name, d2) : scheme(name), m.level());
+      double worst = 0;
+      for (int i = 0; i < nx; ++i)
+        for (double u : {0.0, 0.125, 0.3, 0.5, 0.71, 0.9375, 1.0}) {
+          const double x = greville(i) + u * (greville(i + 1) - greville(i));
+          const P3 e = quadratic_bspline(knots, row, std::min(x, nx - 1 - 1e-15));
+          worst = std::max(worst, distance(at(s, m, grid_face(nx, i, 0), u, 0), e));
+        }
+      CHECK(worst < 1e-12);
+      // The grid's four corners stay.
+      CHECK(distance(at(s, m, grid_face(nx, 0, 0), 0, 0), point(m, 0)) < 1e-14);
+      CHECK(distance(at(s, m, grid_face(nx, nx - 1, ny - 1), 1, 1), point(m, Index((nx + 1) * (ny + 1) - 1))) < 1e-14);
+    }
+  }
+}
+
+TEST_CASE("dual limit at a sharp crease: both sides give the crease polygon's uniform quadratic B-spline") {
+  const int nu = 8, nv = 6;
+  const test::Mesh m = bumped(test::torus(nu, nv));
+  const Level L = creased_torus_level(m, nu);
+  std::vector<P3> loop;
+  for (int i = 0; i < nu; ++i) loop.push_back(point(m, Index(i)));
+  for (const char* name : {"doo-sabin", "doo-sabin-centroid"}) {
+    CAPTURE(name);
+    const LimitSurface s(scheme(name), L);
+    double worst = 0;
+    for (int i = 0; i < nu; ++i)
+      for (double u : {0.0, 0.2, 0.5, 0.625, 0.99}) {
+        const P3 e = closed_quadratic(loop, i + u);
+        // Face (i, 0) has the crease as its edge v = 0; face (i, nv - 1) as its edge v = 1.
+        worst = std::max(worst, distance(at(s, m, Index(i), u, 0), e));
+        worst = std::max(worst, distance(at(s, m, Index((nv - 1) * nu + i), u, 1), e));
+      }
+    CHECK(worst < 1e-12);
+  }
+}
+
+TEST_CASE("dual limit at boundaries and creases: continuous across every edge, affine invariant, stencils") {
+  const test::Mesh grid = bumped(test::grid(5, 4));
+  const test::Mesh torus = bumped(test::torus(8, 6));
+  const Level torus_level = creased_torus_level(torus, 8);
+  const LimitSurface on_grid(scheme("doo-sabin"), grid.level());
+  check_edges_continuous(on_grid, grid, grid.level(), 1e-12);
+  const LimitSurface on_torus(scheme("doo-sabin"), torus_level);
+  check_edges_continuous(on_torus, torus, torus_level, 1e-12);
+  // Affine invariance: the limit of A x + b is A (limit) + b.
+  const std::array<std::array<double, 3>, 3> A{{{0.8, -0.3, 0.1}, {0.2, 1.1, -0.4}, {0.05, 0.3, 0.9}}};
+  const P3 b{0.3, -1.2, 2.0};
+  test::Mesh moved = grid;
+  for (Index v = 0; v < grid.vertex_count; ++v)
+    for (size_t r = 0; r < 3; ++r) {
+      double x = b[r];
+      for (size_t c = 0; c < 3; ++c) x += A[r][c] * grid.positions[size_t(3 * v) + c];
+      moved.positions[size_t(3 * v) + r] = x;
+    }
+  double worst = 0, stencil_worst = 0;
+  for (Index f = 0; f < grid.level().face_count(); ++f)
+    for (const auto& uv : {std::array<double, 2>{0.1, 0.05}, {0.6, 0.3}, {0.999, 0.5}, {0.25, 0}}) {
+      const P3 p = at(on_grid, grid, f, uv[0], uv[1]), q = at(on_grid, moved, f, uv[0], uv[1]);
+      P3 e = b;
+      for (size_t r = 0; r < 3; ++r)
+        for (size_t c = 0; c < 3; ++c) e[r] += A[r][c] * p[c];
+      worst = std::max(worst, distance(q, e));
+      const LimitStencil w = on_grid.stencil(f, uv[0], uv[1], 0);
+      P3 y{0, 0, 0};
+      for (size_t k = 0; k < w.vertices.size(); ++k)
+        for (size_t c = 0; c < 3; ++c) y[c] += w.position[k] * grid.positions[size_t(3 * w.vertices[k]) + c];
+      stencil_worst = std::max(stencil_worst, distance(p, y));
+    }
+  CHECK(worst < 1e-12);
+  CHECK(stencil_worst < 1e-13);
+}
+
+namespace {
+
+// The limits of the level-1 points of corners off the crease, against their limits on the
+// refined mesh. A level-1 point of a corner off the crease lies at (1/2, 1/2) of its quadrant:
+// half way between the corner and the quadrant's (1, 1) — the face centre, or for a face with
+// corners on the crease the middle of its crease run (docs/limit.md). On the refined mesh its
+// limit is taken by the V-face centroid limit (interpolation/dual_limits.h, from the refined
+// mesh's own next step) when `by_centroids`, else by evaluating the refined mesh at the point
+// as a corner of one of its faces.
+void check_level_one_points(const test::Mesh& m, const Level& L, bool by_centroids) {
+  constexpr std::array<std::array<double, 2>, 4> kCorner{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  const LimitSurface s(scheme("doo-sabin"), L);
+  RefineOptions ro;
+  ro.levels = 1;
+  const Hierarchy h = refine(*scheme("doo-sabin"), L, ro);
+  std::vector<double> p1(size_t(3 * h.levels[1].vertex_count));
+  h.stencils[0].apply(m.positions, p1, 3);
+  std::vector<double> limits(p1.size());
+  const Level& L1 = h.levels[1];
+  if (by_centroids) {
+    const LimitChoice c = select_limit(load_scheme_sequence("doo-sabin", 1, {}), L1);
+    c.evaluator->limit_points(L1, p1, limits);
+  } else {
+    const LimitSurface s1(scheme("doo-sabin"), L1);
+    for (Index v = 0; v < L1.vertex_count; ++v) {
+      const Index f = L1.ring_faces(v)[0];
+      const auto g = L1.face(f);
+      REQUIRE(g.size() == 4);
+      size_t k = 0;
+      while (g[k] != v) ++k;
+      const LimitSample x = s1.evaluate(f, kCorner[k][0], kCorner[k][1], p1, 3, 0);
+      for (size_t c = 0; c < 3; ++c) limits[size_t(3 * v) + c] = x.position[c];
+    }
+  }
+  const ChildOrigins& o = h.origins[0];
+  int checked = 0;
+  double worst = 0;
+  for (size_t v = 0; v < o.kind.size(); ++v) {
+    if (o.kind[v] != OriginKind::Corner) continue;
+    const Index f = o.parent[v];
+    const int j = int(o.local[v]);
+    const auto g = L.face(f);
+    // Which corners of f are on a sharp edge or a boundary, or are corners of the mesh.
+    auto sharp = [&](int k) {
+      const Index e = L.face_edges[size_t(L.face_offsets[f] + ((k % 4) + 4) % 4)];
+      return L.edge_on_boundary(e) || L.edge_sharp(e) >= 1;
+    };
+    auto crease_corner = [&](int k) {
+      const Index w = g[size_t(k % 4)];
+      return sharp(k) || sharp(k + 3) || (L.on_boundary(w) && L.incident_face_count(w) == 1);
+    };
+    if (crease_corner(j)) continue;
+    std::array<double, 2> centre{0.5, 0.5};
+    std::vector<int> run;
+    for (int k = 0; k < 4; ++k)
+      if (crease_corner(k)) run.push_back(k);
+    if (run.size() == 2)  // one crease edge: its middle
+      centre = {(kCorner[size_t(run[0])][0] + kCorner[size_t(run[1])][0]) / 2,
+                (kCorner[size_t(run[0])][1] + kCorner[size_t(run[1])][1]) / 2};
+    if (run.size() == 3)  // turning at a corner of the mesh
+      for (int k = 0; k < 4; ++k)
+        if (crease_corner(k) && crease_corner(k + 1) && crease_corner(k + 3)) centre = kCorner[size_t(k)];
+    const double u = (kCorner[size_t(j)][0] + centre[0]) / 2, w = (kCorner[size_t(j)][1] + centre[1]) / 2;
+    const P3 e{limits[3 * v], limits[3 * v + 1], limits[3 * v + 2]};
+    worst = std::max(worst, distance(at(s, m, f, u, w), e));
+    ++checked;
+  }
+  CHECK(checked > 20);
+  CHECK(worst < 1e-12);
+}
+
+Level sharpened(const test::Mesh& m, int nu, float s) {
+  Level L = creased_torus_level(m, nu);
+  for (float& x : L.edge_sharpness)
+    if (x > 0) x = s;
+  return L;
+}
+
+}  // namespace
+
+TEST_CASE("dual limit at boundaries and creases: at level-1 points, the limit points of the refined mesh") {
+  const test::Mesh grid = bumped(test::grid(5, 4));
+  check_level_one_points(grid, grid.level(), true);
+  const test::Mesh torus = bumped(test::torus(8, 6));
+  check_level_one_points(torus, creased_torus_level(torus, 8), true);
+}
+
+TEST_CASE("dual limit at semi-sharp creases: the limit of the mesh after the sharpness has decayed") {
+  // Sharpness 1 takes the crease rules once and is smooth after: the level-1 mesh is untagged,
+  // and its V-face centroid limits are the reference. Sharpness 2 and 1.5 take them once and
+  // leave 1 and 0.5: the reference is the level-1 mesh evaluated at its vertices (sharpness
+  // 1 there checked just before), each level one step of the decay.
+  const test::Mesh torus = bumped(test::torus(8, 6));
+  check_level_one_points(torus, sharpened(torus, 8, 1.f), true);
+  check_level_one_points(torus, sharpened(torus, 8, 2.f), false);
+  check_level_one_points(torus, sharpened(torus, 8, 1.5f), false);
+  // The surface lies between the smooth one and the infinitely sharp crease's.
+  const LimitSurface smooth(scheme("doo-sabin"), torus.level()), sharp(scheme("doo-sabin"), creased_torus_level(torus, 8)),
+      semi(scheme("doo-sabin"), sharpened(torus, 8, 2.f));
+  for (double u : {0.3, 0.5}) {
+    const P3 a = at(smooth, torus, 2, u, 0), b = at(sharp, torus, 2, u, 0), c = at(semi, torus, 2, u, 0);
+    CHECK(distance(c, a) > 1e-3);
+    CHECK(distance(c, b) > 1e-3);
+    CHECK(distance(c, b) < distance(a, b));
+  }
+  // Continuous across every edge.
+  const Level L = sharpened(torus, 8, 2.5f);
+  check_edges_continuous(LimitSurface(scheme("doo-sabin"), L), torus, L, 1e-12);
+}
+
+TEST_CASE("dual limit: fractional sharpness below 1 is the smooth limit of the mesh one step down") {
+  // An edge of sharpness s < 1 keeps the smooth topology, blends its corners' rules once and
+  // decays to 0: the limit is the untagged limit of the first level, at the point's
+  // parameter there (dual_child_point: the quadrant the point is in after one step).
+  const test::Mesh m = bumped(test::torus(8, 6));
+  Level L = m.level();
+  L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
+  for (int i = 0; i < 8; ++i) L.edge_sharpness[size_t(find_edge(L, Index(8 + i), Index(8 + (i + 1) % 8)))] = 0.6f;
+  const LimitSurface s(scheme("doo-sabin"), L);
+  RefineOptions ro;
+  ro.levels = 1;
+  const Hierarchy h = refine(*scheme("doo-sabin"), L, ro);
+  std::vector<double> p1(size_t(3 * h.levels[1].vertex_count));
+  h.stencils[0].apply(m.positions, p1, 3);
+  Level L1 = h.levels[1];
+  for (float x : L1.edge_sharpness) REQUIRE(x == 0.f);
+  L1.edge_sharpness.clear();
+  const LimitSurface s1(scheme("doo-sabin"), L1);
+  double worst = 0, moved = 0;
+  const LimitSurface smooth(scheme("doo-sabin"), m.level());
+  for (Index f : {Index(0), Index(3), Index(8), Index(11), Index(17)})
+    for (const auto& uv : {std::array<double, 2>{0.2, 0.1}, {0.5, 0.5}, {0.9, 0.35}, {0.4, 0.0}}) {
+      const auto bp = base_face_point(L, f, uv[0], uv[1], false, nullptr);
+      REQUIRE(bp);
+      const auto cp = dual_child_point(L, h.levels[1], h.origins[0], *bp);
+      REQUIRE(cp);
+      REQUIRE(cp->sub_face < 0);
+      const double cu = cp->st[0], cv = cp->st[1];
+      const LimitSample a = s.evaluate(f, uv[0], uv[1], m.positions, 3, 0);
+      const LimitSample b = s1.evaluate(cp->face, cu, cv, p1, 3, 0);
+      worst = std::max(worst, distance(a.position, b.position));
+      moved = std::max(moved, distance(a.position, smooth.evaluate(f, uv[0], uv[1], m.positions, 3, 0).position));
+    }
+  CHECK(worst < 1e-12);
+  CHECK(moved > 1e-3);  // the sharpness does change the surface
+}
+
+TEST_CASE("dual limit: boundaries and creases not covered yet are refused with the place") {
+  // A boundary vertex of three faces.
+  test::Mesh fan;
+  fan.add_vertex(0, 0, 0);
+  for (int k = 0; k <= 6; ++k) fan.add_vertex(std::cos(0.4 * k), std::sin(0.4 * k), 0);
+  fan.add_face({0, 1, 2, 3});
+  fan.add_face({0, 3, 4, 5});
+  fan.add_face({0, 5, 6, 7});
+  CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), fan.level()), doctest::Contains("boundary vertex 0 has 3 faces"),
+                       Error);
+  // A dart: one sharp edge ending inside the torus.
+  const test::Mesh t = test::torus(8, 6);
+  Level dart = t.level();
+  dart.edge_sharpness.assign(size_t(dart.edge_count()), 0.f);
+  dart.edge_sharpness[size_t(find_edge(dart, 0, 1))] = 10.f;
+  CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), dart), doctest::Contains("dart"), Error);
+  // A semi-sharp corner.
+  Level semi = t.level();
+  semi.vertex_sharpness.assign(size_t(semi.vertex_count), 0.f);
+  semi.vertex_sharpness[9] = 2.f;
+  CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), semi), doctest::Contains("semi-sharp corner"), Error);
+  // A pentagon at a boundary: a 3 x 2 grid whose bottom middle face has an extra corner
+  // (vertex 12) on its boundary edge.
+  test::Mesh house;
+  for (int j = 0; j <= 2; ++j)
+    for (int i = 0; i <= 3; ++i) house.add_vertex(i, j, 0);
+  house.add_vertex(1.5, -0.2, 0);
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 3; ++i) {
+      const Index a = Index(j * 4 + i);
+      if (i == 1 && j == 0)
+        house.add_face({1, 12, 2, 6, 5});
+      else
+        house.add_face({a, a + 1, a + 5, a + 4});
+    }
+  CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), house.level()),
+                       doctest::Contains("face 1 has 5 sides"), Error);
+  // A single quad: every corner is a corner of the mesh.
+  test::Mesh quad;
+  for (int k = 0; k < 4; ++k) quad.add_vertex(k == 1 || k == 2, k >= 2, 0);
+  quad.add_face({0, 1, 2, 3});
+  CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), quad.level()), doctest::Contains("between"), Error);
+}
+
+TEST_CASE("dual limit at semi-sharp creases: Chaikin's decay; sharpness varying along a crease is refused") {
+  const test::Mesh torus = bumped(test::torus(8, 6));
+  for (CreaseMethod method : {CreaseMethod::Uniform, CreaseMethod::Chaikin}) {
+    CAPTURE(int(method));
+    LimitSurfaceOptions o;
+    o.features.crease_method = method;
+    const Level L = sharpened(torus, 8, 2.5f);
+    check_edges_continuous(LimitSurface(scheme("doo-sabin"), L, o), torus, L, 1e-12);
+  }
+  Level L = creased_torus_level(torus, 8);
+  L.edge_sharpness[size_t(find_edge(L, 2, 3))] = 3.f;
+  CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), L), doctest::Contains("crease vertex 2 joins sharp edges"),
+                       Error);
+}
+
+TEST_CASE("dual limit next to holes: holes change no rule, so the faces around them keep their limit") {
+  // OpenSubdiv's holes (and --boundary none's) remove faces, not rules: the surface of every
+  // face that is kept is the one the mesh without the hole tags has.
+  const test::Mesh torus = bumped(test::torus(8, 6));
+  Level holed = torus.level();
+  holed.face_hole.assign(size_t(holed.face_count()), 0);
+  holed.face_hole[19] = holed.face_hole[20] = 1;
+  const LimitSurface with(scheme("doo-sabin"), holed), without(scheme("doo-sabin"), torus.level());
+  double worst = 0;
+  for (Index f : {Index(11), Index(12), Index(18), Index(21), Index(27), Index(28)})
+    for (const auto& uv : {std::array<double, 2>{0.1, 0.9}, {0.5, 0.5}, {0.97, 0.03}, {0.3, 0.0}})
+      worst = std::max(worst, distance(at(with, torus, f, uv[0], uv[1]), at(without, torus, f, uv[0], uv[1])));
+  CHECK(worst < 1e-12);
+  CHECK_THROWS_WITH_AS(with.evaluate(19, 0.5, 0.5, torus.positions, 3), doctest::Contains("hole"), Error);
+  // --boundary none: the faces touching the boundary are holes; the others keep the surface of
+  // the mesh with its boundary (a dual scheme's boundary rules do not depend on the mode).
+  const test::Mesh grid = bumped(test::grid(6, 5));
+  LimitSurfaceOptions none;
+  none.features.boundary = BoundaryInterpolation::None;
+  const LimitSurface inner(scheme("doo-sabin"), grid.level(), none), all(scheme("doo-sabin"), grid.level());
+  worst = 0;
+  for (int j = 1; j < 4; ++j)
+    for (int i = 1; i < 5; ++i)
+      for (const auto& uv : {std::array<double, 2>{0.2, 0.7}, {0.0, 0.5}})
+        worst = std::max(worst, distance(at(inner, grid, grid_face(6, i, j), uv[0], uv[1]),
+                                         at(all, grid, grid_face(6, i, j), uv[0], uv[1])));
+  CHECK(worst < 1e-12);
+  CHECK_THROWS_WITH_AS(inner.evaluate(0, 0.5, 0.5, grid.positions, 3), doctest::Contains("hole"), Error);
+}
+
+TEST_CASE("dual limit next to boundaries and creases: derivatives against central differences") {
+  // The quadrants of faces next to the crease are affine images of rectangles of the face's
+  // (u, v) (and, after a semi-sharp crease has decayed, of the closed face's quadrants), so
+  // the derivatives carry that Jacobian: checked against central differences of positions.
+  const test::Mesh grid = bumped(test::grid(5, 4));
+  const test::Mesh torus = bumped(test::torus(8, 6));
+  const Level semi = sharpened(torus, 8, 2.f);
+  struct Case {
+    const test::Mesh* mesh;
+    Level level;
+  };
+  const Case cases[] = {{&grid, grid.level()}, {&torus, creased_torus_level(torus, 8)}, {&torus, semi}};
+  const double h = 1e-6;
+  for (const Case& c : cases) {
+    const LimitSurface s(scheme("doo-sabin"), c.level);
+    double worst = 0;
+    int with_derivatives = 0;
+    for (Index f : {Index(0), Index(1), Index(2), Index(6), Index(9)})
+      for (const auto& uv : {std::array<double, 2>{0.5, 0.5}, {0.3, 0.7}, {0.8, 0.4}, {0.45, 0.2}, {0.6, 0.85}}) {
+        const LimitSample p = s.evaluate(f, uv[0], uv[1], c.mesh->positions, 3, 1);
+        if (!p.has_derivatives) continue;
+        ++with_derivatives;
+        const P3 up = at(s, *c.mesh, f, uv[0] + h, uv[1]), um = at(s, *c.mesh, f, uv[0] - h, uv[1]);
+        const P3 vp = at(s, *c.mesh, f, uv[0], uv[1] + h), vm = at(s, *c.mesh, f, uv[0], uv[1] - h);
+        for (size_t k = 0; k < 3; ++k) {
+          const double scale = 1 + std::abs(p.du[k]) + std::abs(p.dv[k]);
+          worst = std::max(worst, std::abs(p.du[k] - (up[k] - um[k]) / (2 * h)) / scale);
+          worst = std::max(worst, std::abs(p.dv[k] - (vp[k] - vm[k]) / (2 * h)) / scale);
+        }
+      }
+    CHECK(with_derivatives == 25);
+    CHECK(worst < 1e-6);
+  }
+}
+
+TEST_CASE("dual limit at a crease that keeps its middles but is not Chaikin's: exact by descent") {
+  // A scheme stating its crease corner rule as cuts at 3/8 (5/8 v + 3/8 next): symmetric about
+  // each edge's middle, so the middles stay, but not Chaikin's curve (de Rham's corner cutting,
+  // not a quadratic B-spline). On the crease the limit is reached by descending, not by
+  // Chaikin's closed form: at the parameter of a level-1 crease point X1 = 5/8 P + 3/8 Q,
+  // (u, v) = (1/4, 0) of the face on P - Q, the limit is the middle of X1's two points one step
+  // down, 5/8 X1 + 3/16 (X0 + X2) with its level-1 neighbours X0 = 5/8 P + 3/8 P_prev and
+  // X2 = 3/8 P + 5/8 Q; at (1/2, 0) the middle of P - Q.
+  const std::string text = R"json({
+    "name": "doo-sabin-three-eighths", "split": "dual", "faces": "any",
+    "rules": {"corner": {
+      "smooth": [{"sum": "vertices", "w": "j == 0 ? (k + 5)/(4*k) : (3 + 2*cos(2*pi*j/k))/(4*k)"}],
+      "crease": [{"sum": "vertices", "w": "j == 0 ? 5/8 : (j == 1 ? 3/8 : 0)"}],
+      "corner": [{"at": "self", "w": "1"}]}}})json";
+  const auto s = load_scheme_text(text, "three-eighths.json");
+  const test::Mesh torus = bumped(test::torus(8, 6));
+  const Level L = creased_torus_level(torus, 8);
+  const LimitSurface surface(s, L);
+  double worst = 0;
+  for (int i = 0; i < 8; ++i) {
+    const P3 P = point(torus, Index(i)), Q = point(torus, Index((i + 1) % 8)), prev = point(torus, Index((i + 7) % 8));
+    P3 expected{}, middle{};
+    for (size_t c = 0; c < 3; ++c) {
+      const double X1 = 0.625 * P[c] + 0.375 * Q[c], X0 = 0.625 * P[c] + 0.375 * prev[c];
+      const double X2 = 0.375 * P[c] + 0.625 * Q[c];
+      expected[c] = 0.625 * X1 + 0.1875 * (X0 + X2);
+      middle[c] = 0.5 * (P[c] + Q[c]);
+    }
+    worst = std::max(worst, distance(at(surface, torus, Index(i), 0.25, 0), expected));
+    worst = std::max(worst, distance(at(surface, torus, Index(i), 0.5, 0), middle));
+  }
+  CHECK(worst < 1e-12);
+  check_edges_continuous(surface, torus, L, 1e-12);
+}
+
+TEST_CASE("dual limit next to a boundary: second derivatives against central differences of the first") {
+  const test::Mesh grid = bumped(test::grid(5, 4));
+  const LimitSurface s(scheme("doo-sabin"), grid.level());
+  const double h = 1e-5;
+  double worst = 0;
+  int with_second = 0;
+  for (Index f : {Index(0), Index(1), Index(2), Index(6)})
+    for (const auto& uv : {std::array<double, 2>{0.3, 0.7}, {0.8, 0.4}, {0.6, 0.85}}) {
+      const LimitSample p = s.evaluate(f, uv[0], uv[1], grid.positions, 3, 2);
+      if (!p.has_second_derivatives) continue;
+      ++with_second;
+      const LimitSample up = s.evaluate(f, uv[0] + h, uv[1], grid.positions, 3, 1);
+      const LimitSample um = s.evaluate(f, uv[0] - h, uv[1], grid.positions, 3, 1);
+      const LimitSample vp = s.evaluate(f, uv[0], uv[1] + h, grid.positions, 3, 1);
+      const LimitSample vm = s.evaluate(f, uv[0], uv[1] - h, grid.positions, 3, 1);
+      for (size_t k = 0; k < 3; ++k) {
+        const double scale = 1 + std::abs(p.duu[k]) + std::abs(p.duv[k]) + std::abs(p.dvv[k]);
+        worst = std::max(worst, std::abs(p.duu[k] - (up.du[k] - um.du[k]) / (2 * h)) / scale);
+        worst = std::max(worst, std::abs(p.duv[k] - (vp.du[k] - vm.du[k]) / (2 * h)) / scale);
+        worst = std::max(worst, std::abs(p.dvv[k] - (vp.dv[k] - vm.dv[k]) / (2 * h)) / scale);
+      }
+    }
+  CHECK(with_second == 12);
+  CHECK(worst < 1e-5);
+}
+
+namespace {
+
+// The cardinal B-spline of degree d centred at 0, by the Cox-de Boor recurrence
+// N_d(x) = (x N_{d-1}(x) + (d + 1 - x) N_{d-1}(x - 1)) / d on [0, d + 1].
+double cardinal(int d, double x) {
+  std::function<double(int, double)> N = [&](int k, double y) -> double {
+    if (k == 0) return y >= 0 && y < 1 ? 1.0 : 0.0;
+    return (y * N(k - 1, y) + (k + 1 - y) * N(k - 1, y - 1)) / k;
+  };
+  return N(d, x + 0.5 * (d + 1));
+}
+
+}  // namespace
+
+TEST_CASE("dual limit at a sharp crease of quad-bspline d = 4 and 6: the uniform degree-d B-spline of the loop") {
+  // Chaikin's split then Lane & Riesenfeld's averaging passes along the crease: the crease is
+  // the loop's uniform B-spline of degree d (control point k at parameter k); its crease points
+  // move after the split, so the limit at the middle of a crease edge comes from the crease
+  // curve's local subdivision matrix (dual_crease_curve.h). Evaluated at dyadic parameters and,
+  // for d = 4, at 0.3 (a descent of the whole double), from both sides of the crease.
+  const int nu = 8, nv = 6;
+  const test::Mesh m = bumped(test::torus(nu, nv));
+  const Level L = creased_torus_level(m, nu);
+  for (int d : {4, 6}) {
+    CAPTURE(d);
+    ParameterOverrides o;
+    o["d"] = std::to_string(d);
+    const LimitSurface s(load_scheme("quad-bspline", o), L);
+    double worst = 0;
+    for (int i = 0; i < nu; i += 3)
+      for (double u : {0.0, 0.5, 0.25, d == 4 ? 0.3 : 0.375}) {
+        P3 e{0, 0, 0};
+        for (int k = i - d; k <= i + d + 1; ++k) {
+          const double w = cardinal(d, i + u - k);
+          const P3 x = point(m, Index(((k % nu) + nu) % nu));
+          for (size_t c = 0; c < 3; ++c) e[c] += w * x[c];
+        }
+        worst = std::max(worst, distance(at(s, m, Index(i), u, 0), e));
+        worst = std::max(worst, distance(at(s, m, Index((nv - 1) * nu + i), u, 1), e));
+      }
+    CHECK(worst < 1e-12);
+  }
+  // Next to a corner the degree-d crease is not the clamped spline (docs/features.md), but it
+  // is evaluated: the boundary of a grid, continuous across every edge.
+  ParameterOverrides o4;
+  o4["d"] = "4";
+  const test::Mesh grid = bumped(test::grid(3, 3));
+  check_edges_continuous(LimitSurface(load_scheme("quad-bspline", o4), grid.level()), grid, grid.level(), 1e-12);
+}
