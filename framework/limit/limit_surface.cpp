@@ -17,6 +17,7 @@
 #include "framework/limit/corner_limit.h"
 #include "framework/limit/dual_limit.h"
 #include "framework/limit/sequence_head.h"
+#include "framework/limit/sqrt3_limit.h"
 #include "framework/limit/limit_nodes.h"
 #include "framework/limit/tensor_patch.h"
 #include "framework/limit/triangle_patch.h"
@@ -89,10 +90,16 @@ std::string limit_surface_unsupported(const Scheme& scheme) {
                        "matrix changes from level to level and has no fixed eigen-structure to evaluate the limit with",
                        subdiv::quoted(scheme.name));
   const SplitKind split = scheme.split();
-  if (split != SplitKind::Quad && split != SplitKind::Triangle && split != SplitKind::Dual)
-    return fmt::format("scheme {} uses a split whose child faces do not nest inside one parent face or one of its "
-                       "quadrants (sqrt3, mid-edge or a plugin's split): evaluation at (face, u, v) is implemented "
-                       "for the binary quad and triangle splits and the dual (corner-cutting) split so far",
+  if (split == SplitKind::MidEdge)
+    return fmt::format("scheme {} uses the mid-edge split, which turns the grid by 45 degrees each step: two steps "
+                       "nest as the dual quadrants do (docs/limit.md, \"Mid-edge schemes\"), but that evaluation is "
+                       "not implemented yet; evaluation at (face, u, v) is implemented for the binary quad and "
+                       "triangle splits, the dual (corner-cutting) split and the sqrt3 split",
+                       subdiv::quoted(scheme.name));
+  if (split != SplitKind::Quad && split != SplitKind::Triangle && split != SplitKind::Dual && split != SplitKind::Sqrt3)
+    return fmt::format("scheme {} uses a plugin's split, whose child faces are not known to nest inside one parent "
+                       "face or one of its quadrants: evaluation at (face, u, v) is implemented for the binary quad "
+                       "and triangle splits, the dual (corner-cutting) split and the sqrt3 split",
                        subdiv::quoted(scheme.name));
   return {};
 }
@@ -105,6 +112,7 @@ struct LimitSurface::Impl {
   int radius = 4;
   std::unique_ptr<SchemeLimits> limits;
   std::unique_ptr<DualLimit> dual;  // set for a dual split (dual_limit.h)
+  std::unique_ptr<Sqrt3Limit> sqrt3;  // set for the sqrt3 split (sqrt3_limit.h)
   // Set for a sequence: its head, and the limit of its tail over the mesh the head makes.
   std::unique_ptr<SequenceHead> head;
   std::unique_ptr<LimitSurface> tail;
@@ -453,12 +461,16 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
     if (const std::string why = dual_limit_unsupported(base); !why.empty())
       throw Error(fmt::format("scheme {} is a dual scheme and {}", subdiv::quoted(impl_->scheme->name), why));
   }
+  if (impl_->scheme->split() == SplitKind::Sqrt3) {
+    if (const std::string why = sqrt3_limit_unsupported(base); !why.empty())
+      throw Error(fmt::format("scheme {} uses the sqrt3 split and {}", subdiv::quoted(impl_->scheme->name), why));
+  }
   impl_->base = std::move(base);
   impl_->options = options;
   // With boundary interpolation "none" the faces along a boundary are holes (as the
   // engine and OpenSubdiv make them): they have no limit surface.
   tag_boundary_holes(impl_->base, options.features.boundary);
-  impl_->triangles = impl_->scheme->split() == SplitKind::Triangle;
+  impl_->triangles = impl_->scheme->split() == SplitKind::Triangle || impl_->scheme->split() == SplitKind::Sqrt3;
   // Children near the cut's rim follow the rim's artificial boundary; with a reach of r
   // parent rings, 2 r + 2 rings keep the face's own neighbourhood right from level to level.
   const SchemeRun run{impl_->scheme.get(), 1};
@@ -474,6 +486,8 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   impl_->cache = impl_->make_cache(1);
   if (impl_->scheme->split() == SplitKind::Dual)
     impl_->dual = std::make_unique<DualLimit>(*impl_->scheme, impl_->base, options, impl_->radius, *impl_->limits);
+  if (impl_->scheme->split() == SplitKind::Sqrt3)
+    impl_->sqrt3 = std::make_unique<Sqrt3Limit>(*impl_->scheme, impl_->base, options, *impl_->limits);
 }
 
 LimitSurface::LimitSurface(std::vector<LimitHeadRun> head, std::shared_ptr<const Scheme> tail, Level base,
@@ -609,6 +623,14 @@ LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double
         first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
     return tbb::this_task_arena::isolate([&] { return impl_->dual->evaluate(p, first, channels, derivatives); });
   }
+  if (impl_->sqrt3) {
+    const std::vector<Index> reads = impl_->sqrt3->reads(p);
+    std::vector<double> first(reads.size() * size_t(channels));
+    for (size_t k = 0; k < reads.size(); ++k)
+      for (int c = 0; c < channels; ++c)
+        first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
+    return tbb::this_task_arena::isolate([&] { return impl_->sqrt3->evaluate(p, first, channels, derivatives); });
+  }
   return impl_->with_cache([&](Impl::Cache& cache) {
     const std::vector<Index> reads = impl_->reads(cache, p);
     std::vector<double> first(reads.size() * size_t(channels));
@@ -628,7 +650,16 @@ LimitStencil LimitSurface::stencil(Index face, double u, double v, int derivativ
   // neighbourhood (the only vertices it reads) as channels.
   std::vector<Index> original;
   Impl::DerivativeRows rows;
-  const LimitSample s = impl_->dual ? tbb::this_task_arena::isolate([&] {
+  const LimitSample s = impl_->sqrt3 ? tbb::this_task_arena::isolate([&] {
+    original = impl_->sqrt3->reads(p);
+    const size_t n = original.size();
+    std::vector<double> unit(n * n, 0.0);
+    for (size_t k = 0; k < n; ++k) unit[k * n + k] = 1.0;
+    Sqrt3Limit::Rows r;
+    LimitSample out = impl_->sqrt3->evaluate(p, unit, int(n), derivatives, &r);
+    rows.du = std::move(r.du), rows.dv = std::move(r.dv);
+    return out;
+  }) : impl_->dual ? tbb::this_task_arena::isolate([&] {
     original = impl_->dual->reads(p);
     const size_t n = original.size();
     std::vector<double> unit(n * n, 0.0);

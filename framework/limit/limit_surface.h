@@ -24,10 +24,11 @@
 // Supported: stationary linear schemes whose split is the binary quad or triangle split
 // (Catmull-Clark, Loop, the butterflies, bilinear, composite split + averaging schemes), and
 // the dual split on closed untagged meshes (Doo-Sabin, even-degree quad B-splines; dual_limit.h,
-// in the quad split's parameterisation read as nested quadrants).
+// in the quad split's parameterisation read as nested quadrants), and the √3 split on closed
+// untagged meshes (sqrt3_limit.h: two steps are a triadic split of each base triangle).
 // Refused with the reason: non-linear rules (no limit stencil exists), level-dependent
-// weights (no fixed local subdivision matrix), and for now the √3 and mid-edge splits
-// (their children do not nest inside one parent face or quadrant).
+// weights (no fixed local subdivision matrix), and for now the mid-edge split and plugins'
+// splits.
 #include <array>
 #include <memory>
 #include <span>
