@@ -15,8 +15,9 @@
 // old triangle. The child's own (s, t) are its barycentric coordinates from its corner 0,
 // as the level's face lists it.
 //
-// Evaluation follows the point down two steps at a time, refining a cut around the face with
-// the scheme's own rules (the engine), to the triangle of level 2k that holds it. A double is
+// Evaluation follows the point down two steps at a time, through cuts around its triangle
+// refined with the scheme's own rules (the engine; each configuration once, sqrt3_nodes.h), to
+// the triangle of level 2k that holds it. A double is
 // not a ternary rational, so the point never becomes a vertex (except the base corners and
 // points on their edges' lattice lines that are exact): after 34 double steps the triangle
 // is 3^-34 < 2^-53 of the base triangle, and the point is taken at its nearest corner, whose
@@ -42,10 +43,12 @@
 namespace subdiv {
 
 class SchemeLimits;
+class Sqrt3Nodes;
 
 class Sqrt3Limit {
 public:
   Sqrt3Limit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options, SchemeLimits& limits);
+  ~Sqrt3Limit();
 
   // The base vertices an evaluation at `p` (from base_face_point) reads, in the order
   // `evaluate` takes their values.
@@ -65,11 +68,9 @@ public:
   static constexpr int kRoundOffSteps = 34;
 
 private:
-  const Scheme& scheme_;
   const Level& base_;
-  LimitSurfaceOptions options_;
-  SchemeLimits& limits_;
   int radius_ = 5;
+  std::unique_ptr<Sqrt3Nodes> nodes_;  // shared by all evaluations (thread-safe)
 };
 
 // Why the √3 evaluation cannot take this mesh, or empty.

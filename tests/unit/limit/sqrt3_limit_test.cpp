@@ -335,6 +335,21 @@ TEST_CASE("sqrt3: points next to vertices keep their digits") {
         1e-15);
 }
 
+TEST_CASE("sqrt3: the numbers do not depend on the order of evaluation") {
+  // Each neighbourhood is worked out once, on its cut renumbered by its labels: a second
+  // surface that meets the faces in the other order gives the same bits.
+  const test::Mesh m = bumped(test::bipyramid(5));
+  const LimitSurface a(load_scheme("sqrt3"), m.level()), b(load_scheme("sqrt3"), m.level());
+  std::vector<LimitSample> first, second;
+  const Index faces = m.level().face_count();
+  for (Index f = 0; f < faces; ++f) first.push_back(a.evaluate(f, 0.21, 0.37, m.positions, 3));
+  for (Index f = faces; f-- > 0;) second.push_back(b.evaluate(f, 0.21, 0.37, m.positions, 3));
+  for (Index f = 0; f < faces; ++f) {
+    CHECK(first[size_t(f)].position == second[size_t(faces - 1 - f)].position);
+    CHECK(first[size_t(f)].du == second[size_t(faces - 1 - f)].du);
+  }
+}
+
 TEST_CASE("sqrt3: the tessellation is closed") {
   const test::Mesh m = bumped(test::octahedron());
   const LimitSurface s(load_scheme("sqrt3"), m.level());

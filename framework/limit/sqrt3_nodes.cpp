@@ -1,0 +1,257 @@
+#include "framework/limit/sqrt3_nodes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <fmt/format.h>
+#include <tbb/task_arena.h>
+
+#include "framework/analysis/surface/local_patch.h"
+#include "framework/engine/refiner.h"
+#include "framework/scheme/scheme.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+
+// Barycentric coordinates in the frame of triangle f: its corners, and the far corner of each
+// neighbour across its edges, unfolded affinely (a + b - c).
+std::vector<Bary> frame_coordinates(const Level& L, Index f) {
+  std::vector<Bary> at(size_t(L.vertex_count), Bary{kNan, kNan, kNan});
+  const auto fv = L.face(f);
+  for (int k = 0; k < 3; ++k) {
+    Bary e{0, 0, 0};
+    e[size_t(k)] = 1;
+    at[size_t(fv[size_t(k)])] = e;
+  }
+  const auto fe = L.face_edge_list(f);
+  for (int k = 0; k < 3; ++k) {
+    const Index e = fe[size_t(k)];
+    const Index g = L.edge_faces[size_t(2 * e)] == f ? L.edge_faces[size_t(2 * e + 1)] : L.edge_faces[size_t(2 * e)];
+    if (g == kNone || L.face_size(g) != 3) continue;
+    for (Index w : L.face(g)) {
+      if (w == fv[size_t(k)] || w == fv[size_t((k + 1) % 3)]) continue;
+      Bary x{0, 0, 0};
+      x[size_t(k)] = 1, x[size_t((k + 1) % 3)] = 1, x[size_t((k + 2) % 3)] = -1;
+      at[size_t(w)] = x;
+    }
+  }
+  return at;
+}
+
+// Where the children of a step lie: a vertex child at its parent vertex, a face child at the
+// centroid of its parent face (the parameterisation, whatever the rules' weights).
+std::vector<Bary> child_coordinates(const Level& parent, const std::vector<Bary>& at, const ChildOrigins& o) {
+  std::vector<Bary> out(o.kind.size(), Bary{kNan, kNan, kNan});
+  for (size_t v = 0; v < o.kind.size(); ++v) {
+    if (o.kind[v] == OriginKind::Vertex) {
+      out[v] = at[size_t(o.parent[v])];
+    } else if (o.kind[v] == OriginKind::Face) {
+      Bary sum{0, 0, 0};
+      const auto corners = parent.face(o.parent[v]);
+      for (Index w : corners)
+        for (size_t i = 0; i < 3; ++i) sum[i] += at[size_t(w)][i];
+      for (double& x : sum) x /= double(corners.size());
+      out[v] = sum;
+    }
+  }
+  return out;
+}
+
+std::optional<Lattice> on_lattice(const Bary& b) {
+  Lattice l{};
+  for (size_t i = 0; i < 3; ++i) {
+    const double x = 3 * b[i];
+    if (!std::isfinite(x) || std::fabs(x - std::round(x)) > 1e-9 || std::round(x) < 0) return std::nullopt;
+    l[i] = int(std::round(x));
+  }
+  return l;
+}
+
+// The nine triangles of level 2 inside the face, in the order of the level's faces.
+std::vector<std::pair<Index, TriadicChild>> triadic_children(const Level& level2, const std::vector<Bary>& at) {
+  std::vector<std::pair<Index, TriadicChild>> out;
+  for (Index g = 0; g < level2.face_count(); ++g) {
+    const auto gv = level2.face(g);
+    if (gv.size() != 3) continue;
+    std::array<Lattice, 3> c{};
+    bool inside = true;
+    for (size_t m = 0; m < 3 && inside; ++m) {
+      const auto l = on_lattice(at[size_t(gv[m])]);
+      if (!l) inside = false;
+      else c[m] = *l;
+    }
+    if (!inside) continue;
+    TriadicChild t;
+    Lattice lo{}, hi{};
+    for (size_t i = 0; i < 3; ++i) {
+      lo[i] = std::min({c[0][i], c[1][i], c[2][i]});
+      hi[i] = std::max({c[0][i], c[1][i], c[2][i]});
+    }
+    t.up = lo[0] + lo[1] + lo[2] == 2;
+    if (!t.up && hi[0] + hi[1] + hi[2] != 4)
+      throw Error("internal: a sqrt3 child triangle is not a cell of the triadic lattice");
+    t.anchor = t.up ? lo : hi;
+    for (size_t m = 0; m < 3; ++m)
+      for (int i = 0; i < 3; ++i)
+        if (c[m][size_t(i)] != t.anchor[size_t(i)]) t.q[m] = i;
+    out.emplace_back(g, t);
+  }
+  if (out.size() != 9)
+    throw Error(fmt::format("internal: two sqrt3 steps made {} triangles in a face, not the 9 of a triadic split",
+                            out.size()));
+  return out;
+}
+
+// Two steps as one matrix: rows the given vertices of level 2, columns the level-0 vertices.
+StepMatrix two_steps(const Hierarchy& h, const std::vector<Index>& rows, Index source_count) {
+  StepMatrix m;
+  m.source_count = source_count;
+  m.scale = 3;
+  const StencilTable& first = h.stencils[0];
+  const StencilTable& second = h.stencils[1];
+  std::vector<double> acc(size_t(source_count), 0.0);
+  std::vector<char> used(size_t(source_count), 0);
+  std::vector<Index> touched;
+  for (Index r : rows) {
+    for (Index e = second.offsets[size_t(r)]; e < second.offsets[size_t(r) + 1]; ++e) {
+      const Index mid = second.indices[size_t(e)];
+      const double w = second.weights[size_t(e)];
+      for (Index x = first.offsets[size_t(mid)]; x < first.offsets[size_t(mid) + 1]; ++x) {
+        const Index c = first.indices[size_t(x)];
+        if (!used[size_t(c)]) used[size_t(c)] = 1, touched.push_back(c);
+        acc[size_t(c)] += w * first.weights[size_t(x)];
+      }
+    }
+    std::sort(touched.begin(), touched.end());
+    for (Index c : touched) {
+      if (acc[size_t(c)] != 0) m.columns.push_back(c), m.weights.push_back(acc[size_t(c)]);
+      acc[size_t(c)] = 0, used[size_t(c)] = 0;
+    }
+    touched.clear();
+    m.offsets.push_back(Index(m.columns.size()));
+  }
+  return m;
+}
+
+// The cut renumbered by its labels (closed and untagged: sqrt3_limit_unsupported), faces in
+// the order of their label lists, the centre face with its corner 0 first (labels 0, 1, 2).
+Level canonical_cut(const Level& cut, const Labelling& lab, Index face, Index& canonical_face) {
+  std::vector<std::vector<Index>> faces;
+  for (Index f = 0; f < cut.face_count(); ++f) {
+    std::vector<Index> labels;
+    for (Index v : cut.face(f)) labels.push_back(lab.label_of[size_t(v)]);
+    if (f != face) std::rotate(labels.begin(), std::min_element(labels.begin(), labels.end()), labels.end());
+    faces.push_back(std::move(labels));
+  }
+  std::vector<Index> order(faces.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = Index(i);
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) { return faces[size_t(a)] < faces[size_t(b)]; });
+  std::vector<Index> offsets{0}, corners;
+  for (Index f : order) {
+    if (f == face) canonical_face = Index(offsets.size()) - 1;
+    corners.insert(corners.end(), faces[size_t(f)].begin(), faces[size_t(f)].end());
+    offsets.push_back(Index(corners.size()));
+  }
+  return build_level(Index(lab.vertices.size()), offsets, corners);
+}
+
+}  // namespace
+
+Bary in_child(const TriadicChild& t, const Bary& b) {
+  Bary beta{};
+  for (size_t m = 0; m < 3; ++m) {
+    const double x = 3 * b[size_t(t.q[m])];
+    beta[m] = t.up ? x - t.anchor[size_t(t.q[m])] : t.anchor[size_t(t.q[m])] - x;
+  }
+  const size_t k = size_t(std::max_element(beta.begin(), beta.end()) - beta.begin());
+  beta[k] = 1 - beta[(k + 1) % 3] - beta[(k + 2) % 3];
+  return beta;
+}
+
+std::array<double, 2> child_gradient(const TriadicChild& t, int m) {
+  constexpr double kGrad[3][2] = {{-1, -1}, {1, 0}, {0, 1}};
+  const double sign = t.up ? 1 : -1;
+  return {sign * kGrad[t.q[size_t(m)]][0], sign * kGrad[t.q[size_t(m)]][1]};
+}
+
+Sqrt3Nodes::Sqrt3Nodes(const Scheme& scheme, const FeatureOptions& features, int radius, SchemeLimits& limits)
+    : scheme_(scheme), features_(features), radius_(radius), limits_(limits) {}
+
+int Sqrt3Nodes::intern(const Level& cut, Index face, std::vector<Index>& order) {
+  return tbb::this_task_arena::isolate([&] {
+    std::lock_guard lock(mutex_);
+    return intern_locked(cut, face, order);
+  });
+}
+
+int Sqrt3Nodes::intern_locked(const Level& cut, Index face, std::vector<Index>& order) {
+  const Labelling lab = label_neighbourhood(cut, CentreKind::Face, face, 0, radius_ + 3);
+  if (lab.vertices.size() != size_t(cut.vertex_count))
+    throw Error("internal: a cut for sqrt3 limit evaluation has vertices its labelling does not reach");
+  order = lab.vertices;
+  auto [it, inserted] = index_.emplace(lab.signature, int(nodes_.size()));
+  if (!inserted) return it->second;
+  auto n = std::make_unique<Sqrt3Node>();
+  n->level = canonical_cut(cut, lab, face, n->face);
+  for (Index v : n->level.face(n->face)) n->extraordinary = n->extraordinary || n->level.incident_face_count(v) != 6;
+  nodes_.push_back(std::move(n));
+  return it->second;
+}
+
+const Sqrt3Node& Sqrt3Nodes::expanded(int id) {
+  return *tbb::this_task_arena::isolate([&]() -> const Sqrt3Node* {
+    std::lock_guard lock(mutex_);
+    return &expand_locked(id);
+  });
+}
+
+Sqrt3Node& Sqrt3Nodes::expand_locked(int id) {
+  Sqrt3Node* n = nodes_[size_t(id)].get();
+  if (n->expanded) return *n;
+  RefineOptions ro;
+  ro.levels = 2;
+  ro.features = features_;
+  const Hierarchy h = refine(scheme_, n->level, ro);
+  const std::vector<Bary> at1 = child_coordinates(n->level, frame_coordinates(n->level, n->face), h.origins[0]);
+  const std::vector<Bary> at2 = child_coordinates(h.levels[1], at1, h.origins[1]);
+  for (const auto& [g, t] : triadic_children(h.levels[2], at2)) {
+    const Extracted e = extract_neighbourhood(h.levels[2], CentreKind::Face, g, radius_);
+    Index local = kNone;
+    for (size_t f = 0; f < e.face_original.size(); ++f)
+      if (e.face_original[f] == g) local = Index(f);
+    std::vector<Index> order;
+    const int child = intern_locked(e.level, local, order);
+    n = nodes_[size_t(id)].get();
+    std::vector<Index> rows;
+    for (Index v : order) rows.push_back(e.original[size_t(v)]);
+    n->children.push_back(t);
+    n->child_node.push_back(child);
+    n->child_matrix.push_back(two_steps(h, rows, n->level.vertex_count));
+  }
+  n->expanded = true;
+  return *n;
+}
+
+const CornerRows* Sqrt3Nodes::corner(int id, int k, std::string& error) {
+  return tbb::this_task_arena::isolate([&]() -> const CornerRows* {
+    std::lock_guard lock(mutex_);
+    Sqrt3Node& n = *nodes_[size_t(id)];
+    if (n.corner_state[size_t(k)] == 0) {
+      FacePoint p;
+      p.face = n.face;
+      n.corner_state[size_t(k)] =
+          corner_rows(limits_, n.level, p, k, 0, true, n.corner[size_t(k)], n.corner_error[size_t(k)]) ? 1 : 2;
+    }
+    if (n.corner_state[size_t(k)] == 2) {
+      if (!n.corner_error[size_t(k)].empty()) error = n.corner_error[size_t(k)];
+      return nullptr;
+    }
+    return &n.corner[size_t(k)];
+  });
+}
+
+}  // namespace subdiv
