@@ -19,6 +19,7 @@
 #include "framework/limit/sequence_head.h"
 #include "framework/limit/sqrt3_limit.h"
 #include "framework/limit/limit_nodes.h"
+#include "framework/limit/mid_edge_limit.h"
 #include "framework/limit/tensor_patch.h"
 #include "framework/limit/triangle_patch.h"
 #include "framework/limit/face_domain.h"
@@ -90,16 +91,11 @@ std::string limit_surface_unsupported(const Scheme& scheme) {
                        "matrix changes from level to level and has no fixed eigen-structure to evaluate the limit with",
                        subdiv::quoted(scheme.name));
   const SplitKind split = scheme.split();
-  if (split == SplitKind::MidEdge)
-    return fmt::format("scheme {} uses the mid-edge split, which turns the grid by 45 degrees each step: two steps "
-                       "nest as the dual quadrants do (docs/limit.md, \"Mid-edge schemes\"), but that evaluation is "
-                       "not implemented yet; evaluation at (face, u, v) is implemented for the binary quad and "
-                       "triangle splits, the dual (corner-cutting) split and the sqrt3 split",
-                       subdiv::quoted(scheme.name));
-  if (split != SplitKind::Quad && split != SplitKind::Triangle && split != SplitKind::Dual && split != SplitKind::Sqrt3)
+  if (split != SplitKind::Quad && split != SplitKind::Triangle && split != SplitKind::Dual &&
+      split != SplitKind::Sqrt3 && split != SplitKind::MidEdge)
     return fmt::format("scheme {} uses a plugin's split, whose child faces are not known to nest inside one parent "
                        "face or one of its quadrants: evaluation at (face, u, v) is implemented for the binary quad "
-                       "and triangle splits, the dual (corner-cutting) split and the sqrt3 split",
+                       "and triangle splits, the dual (corner-cutting), sqrt3 and mid-edge splits",
                        subdiv::quoted(scheme.name));
   return {};
 }
@@ -113,6 +109,7 @@ struct LimitSurface::Impl {
   std::unique_ptr<SchemeLimits> limits;
   std::unique_ptr<DualLimit> dual;  // set for a dual split (dual_limit.h)
   std::unique_ptr<Sqrt3Limit> sqrt3;  // set for the sqrt3 split (sqrt3_limit.h)
+  std::unique_ptr<MidEdgeLimit> mid_edge;  // set for the mid-edge split (mid_edge_limit.h)
   // Set for a sequence: its head, and the limit of its tail over the mesh the head makes.
   std::unique_ptr<SequenceHead> head;
   std::unique_ptr<LimitSurface> tail;
@@ -465,6 +462,10 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
     if (const std::string why = sqrt3_limit_unsupported(base); !why.empty())
       throw Error(fmt::format("scheme {} uses the sqrt3 split and {}", subdiv::quoted(impl_->scheme->name), why));
   }
+  if (impl_->scheme->split() == SplitKind::MidEdge) {
+    if (const std::string why = mid_edge_limit_unsupported(base); !why.empty())
+      throw Error(fmt::format("scheme {} uses the mid-edge split and {}", subdiv::quoted(impl_->scheme->name), why));
+  }
   impl_->base = std::move(base);
   impl_->options = options;
   // With boundary interpolation "none" the faces along a boundary are holes (as the
@@ -488,6 +489,8 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
     impl_->dual = std::make_unique<DualLimit>(*impl_->scheme, impl_->base, options, impl_->radius, *impl_->limits);
   if (impl_->scheme->split() == SplitKind::Sqrt3)
     impl_->sqrt3 = std::make_unique<Sqrt3Limit>(*impl_->scheme, impl_->base, options, *impl_->limits);
+  if (impl_->scheme->split() == SplitKind::MidEdge)
+    impl_->mid_edge = std::make_unique<MidEdgeLimit>(*impl_->scheme, impl_->base, options, *impl_->limits);
 }
 
 LimitSurface::LimitSurface(std::vector<LimitHeadRun> head, std::shared_ptr<const Scheme> tail, Level base,
@@ -623,6 +626,14 @@ LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double
         first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
     return tbb::this_task_arena::isolate([&] { return impl_->dual->evaluate(p, first, channels, derivatives); });
   }
+  if (impl_->mid_edge) {
+    const std::vector<Index> reads = impl_->mid_edge->reads(p);
+    std::vector<double> first(reads.size() * size_t(channels));
+    for (size_t k = 0; k < reads.size(); ++k)
+      for (int c = 0; c < channels; ++c)
+        first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
+    return tbb::this_task_arena::isolate([&] { return impl_->mid_edge->evaluate(p, first, channels); });
+  }
   if (impl_->sqrt3) {
     const std::vector<Index> reads = impl_->sqrt3->reads(p);
     std::vector<double> first(reads.size() * size_t(channels));
@@ -650,7 +661,13 @@ LimitStencil LimitSurface::stencil(Index face, double u, double v, int derivativ
   // neighbourhood (the only vertices it reads) as channels.
   std::vector<Index> original;
   Impl::DerivativeRows rows;
-  const LimitSample s = impl_->sqrt3 ? tbb::this_task_arena::isolate([&] {
+  const LimitSample s = impl_->mid_edge ? tbb::this_task_arena::isolate([&] {
+    original = impl_->mid_edge->reads(p);
+    const size_t n = original.size();
+    std::vector<double> unit(n * n, 0.0);
+    for (size_t k = 0; k < n; ++k) unit[k * n + k] = 1.0;
+    return impl_->mid_edge->evaluate(p, unit, int(n));
+  }) : impl_->sqrt3 ? tbb::this_task_arena::isolate([&] {
     original = impl_->sqrt3->reads(p);
     const size_t n = original.size();
     std::vector<double> unit(n * n, 0.0);

@@ -9,6 +9,7 @@
 
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/refiner.h"
+#include "framework/limit/two_steps.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
 
@@ -106,37 +107,6 @@ std::vector<std::pair<Index, TriadicChild>> triadic_children(const Level& level2
   return out;
 }
 
-// Two steps as one matrix: rows the given vertices of level 2, columns the level-0 vertices.
-StepMatrix two_steps(const Hierarchy& h, const std::vector<Index>& rows, Index source_count) {
-  StepMatrix m;
-  m.source_count = source_count;
-  m.scale = 3;
-  const StencilTable& first = h.stencils[0];
-  const StencilTable& second = h.stencils[1];
-  std::vector<double> acc(size_t(source_count), 0.0);
-  std::vector<char> used(size_t(source_count), 0);
-  std::vector<Index> touched;
-  for (Index r : rows) {
-    for (Index e = second.offsets[size_t(r)]; e < second.offsets[size_t(r) + 1]; ++e) {
-      const Index mid = second.indices[size_t(e)];
-      const double w = second.weights[size_t(e)];
-      for (Index x = first.offsets[size_t(mid)]; x < first.offsets[size_t(mid) + 1]; ++x) {
-        const Index c = first.indices[size_t(x)];
-        if (!used[size_t(c)]) used[size_t(c)] = 1, touched.push_back(c);
-        acc[size_t(c)] += w * first.weights[size_t(x)];
-      }
-    }
-    std::sort(touched.begin(), touched.end());
-    for (Index c : touched) {
-      if (acc[size_t(c)] != 0) m.columns.push_back(c), m.weights.push_back(acc[size_t(c)]);
-      acc[size_t(c)] = 0, used[size_t(c)] = 0;
-    }
-    touched.clear();
-    m.offsets.push_back(Index(m.columns.size()));
-  }
-  return m;
-}
-
 // The cut renumbered by its labels (closed and untagged: sqrt3_limit_unsupported), faces in
 // the order of their label lists, the centre face with its corner 0 first (labels 0, 1, 2).
 Level canonical_cut(const Level& cut, const Labelling& lab, Index face, Index& canonical_face) {
@@ -230,7 +200,7 @@ Sqrt3Node& Sqrt3Nodes::expand_locked(int id) {
     for (Index v : order) rows.push_back(e.original[size_t(v)]);
     n->children.push_back(t);
     n->child_node.push_back(child);
-    n->child_matrix.push_back(two_steps(h, rows, n->level.vertex_count));
+    n->child_matrix.push_back(two_step_matrix(h, rows, n->level.vertex_count, 3));
   }
   n->expanded = true;
   return *n;

@@ -120,8 +120,8 @@ def test_bad_points_schemes_and_arguments_are_refused():
     with pytest.raises(sk.Error, match="one row per control point"):
         S.evaluate([0], [[0.5, 0.5]], points=np.zeros((3, 3)))
     octahedron = sk.read_mesh(str(MESHES / "octahedron.obj"))
-    with pytest.raises(sk.Error, match="mid-edge split"):
-        sk.LimitSurface(sk.read_mesh(str(MESHES / "cube.obj")), "mid-edge")
+    with pytest.raises(sk.Error, match="mid-edge split and the mesh has a boundary"):
+        sk.LimitSurface(sk.read_mesh(str(MESHES / "plane-with-hole.obj")), "mid-edge")
     with pytest.raises(sk.Error, match="comes before the scheme that repeats"):
         sk.LimitSurface(octahedron, "sqrt3:1,loop")
     with pytest.raises(sk.Error, match="expected a subdivkit.Mesh"):
