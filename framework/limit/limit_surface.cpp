@@ -632,7 +632,7 @@ LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double
     for (size_t k = 0; k < reads.size(); ++k)
       for (int c = 0; c < channels; ++c)
         first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
-    return tbb::this_task_arena::isolate([&] { return impl_->mid_edge->evaluate(p, first, channels); });
+    return tbb::this_task_arena::isolate([&] { return impl_->mid_edge->evaluate(p, first, channels, derivatives); });
   }
   if (impl_->sqrt3) {
     const std::vector<Index> reads = impl_->sqrt3->reads(p);
@@ -666,7 +666,10 @@ LimitStencil LimitSurface::stencil(Index face, double u, double v, int derivativ
     const size_t n = original.size();
     std::vector<double> unit(n * n, 0.0);
     for (size_t k = 0; k < n; ++k) unit[k * n + k] = 1.0;
-    return impl_->mid_edge->evaluate(p, unit, int(n));
+    MidEdgeLimit::Rows r;
+    LimitSample out = impl_->mid_edge->evaluate(p, unit, int(n), derivatives, &r);
+    rows.du = std::move(r.du), rows.dv = std::move(r.dv);
+    return out;
   }) : impl_->sqrt3 ? tbb::this_task_arena::isolate([&] {
     original = impl_->sqrt3->reads(p);
     const size_t n = original.size();

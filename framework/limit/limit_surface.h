@@ -26,8 +26,7 @@
 // the dual split on closed untagged meshes (Doo-Sabin, even-degree quad B-splines; dual_limit.h,
 // in the quad split's parameterisation read as nested quadrants), the √3 split on closed
 // untagged meshes (sqrt3_limit.h: two steps are a triadic split of each base triangle), and
-// the mid-edge split there (mid_edge_limit.h: two steps are a dual step of the halved grid;
-// positions only). Refused with the reason: non-linear rules (no limit stencil exists),
+// the mid-edge split there (mid_edge_limit.h: two steps are a dual step of the halved grid). Refused with the reason: non-linear rules (no limit stencil exists),
 // level-dependent weights (no fixed local subdivision matrix), and plugins' splits (nothing
 // says where their children lie).
 #include <array>

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <fmt/format.h>
 
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/ghost_rings.h"
 #include "framework/engine/refiner.h"
+#include "framework/limit/corner_limit.h"
 #include "framework/limit/dual_limit.h"
 #include "framework/limit/step_matrix.h"
 #include "framework/limit/two_steps.h"
@@ -45,6 +47,46 @@ int corner_of(const Level& L, Index f, Index w) {
 // The point is the centre of its face: (1/2, 1/2) of a quad, the corner (1, 1) of a sub-face.
 bool at_centre(const FacePoint& p) {
   return p.sub_face < 0 ? p.st[0] == 0.5 && p.st[1] == 0.5 : p.st[0] == 1 && p.st[1] == 1;
+}
+
+// d/ds and d/dt at the centre of quad `face` as rows over the level's vertices, from the
+// face mask's tangent directions and linear precision (corner_limit.h): the pair of
+// directions whose 2 x 2 system is best conditioned. False where the grid around the face is
+// not regular within the masks' reach (unfold gives NaN there).
+bool centre_derivatives(const LimitMask& mask, const Labelling& lab, const Level& L, Index face, std::vector<double>& ds,
+                        std::vector<double>& dt) {
+  if (L.face_size(face) != 4 || mask.directions.size() < 2) return false;
+  const std::vector<Uv> at = unfold(L, face, false);
+  std::vector<std::array<double, 2>> st;
+  for (const auto& d : mask.directions) {
+    std::array<double, 2> x{0, 0};
+    for (size_t l = 0; l < d.size(); ++l)
+      if (d[l] != 0)
+        for (size_t c = 0; c < 2; ++c) x[c] += d[l] * at[size_t(lab.vertices[l])][c];
+    st.push_back(x);
+  }
+  double best = 0;
+  size_t ia = 0, ib = 0;
+  for (size_t i = 0; i < st.size(); ++i)
+    for (size_t j = i + 1; j < st.size(); ++j) {
+      const double det = st[i][0] * st[j][1] - st[i][1] * st[j][0];
+      const double size = std::hypot(st[i][0], st[i][1]) * std::hypot(st[j][0], st[j][1]);
+      if (std::isfinite(det) && size > 0 && std::fabs(det) / size > best) best = std::fabs(det) / size, ia = i, ib = j;
+    }
+  if (best < 1e-6) return false;
+  const double a00 = st[ia][0], a01 = st[ia][1], a10 = st[ib][0], a11 = st[ib][1];
+  const double det = a00 * a11 - a01 * a10;
+  const auto& da = mask.directions[ia];
+  const auto& db = mask.directions[ib];
+  ds.assign(size_t(L.vertex_count), 0.0);
+  dt.assign(size_t(L.vertex_count), 0.0);
+  for (size_t l = 0; l < std::max(da.size(), db.size()); ++l) {
+    const double x = l < da.size() ? da[l] : 0.0, y = l < db.size() ? db[l] : 0.0;
+    const size_t v = size_t(lab.vertices[l]);
+    ds[v] += (a11 * x - a01 * y) / det;
+    dt[v] += (a00 * y - a10 * x) / det;
+  }
+  return true;
 }
 
 // The nearest corner of the point's quadrant (multiples of 1/2 of a quad, 0 or 1 of a sub-face).
@@ -121,10 +163,14 @@ MidEdgeLimit::MidEdgeLimit(const Scheme& scheme, const Level& base, const LimitS
 
 std::vector<Index> MidEdgeLimit::reads(const FacePoint& p) const { return cut_around(base_, p, radius_).original; }
 
-LimitSample MidEdgeLimit::evaluate(const FacePoint& p0, const std::vector<double>& first_values, int channels) const {
+LimitSample MidEdgeLimit::evaluate(const FacePoint& p0, const std::vector<double>& first_values, int channels,
+                                   int derivatives, Rows* rows_out) const {
   Cut cut = cut_around(base_, p0, radius_);
   std::vector<double> values = first_values;
+  std::deque<StepMatrix> path_steps;
+  std::vector<const StepMatrix*> path;
   const int limit_steps = options_.max_steps + 40;
+  int tangent_steps = 0;  // steps taken past a quad's centre whose grid was not regular yet
   for (int step = 0;; ++step) {
     if (step == options_.max_steps) cut.point = nearest_corner(cut.point);
     if (at_centre(cut.point)) {
@@ -136,12 +182,35 @@ LimitSample MidEdgeLimit::evaluate(const FacePoint& p0, const std::vector<double
         throw Error(fmt::format("no limit mask at the centre of a {}-sided face: {}", config.valence, mask->error));
       Labelling lab;
       if (matches_neighbourhood(lab, cut.level, CentreKind::Face, cut.point.face, 0, mask->radius, mask->signature)) {
-        std::vector<double> row(size_t(cut.level.vertex_count), 0.0);
-        for (size_t l = 0; l < mask->position.size(); ++l) row[size_t(lab.vertices[l])] += mask->position[l];
-        LimitSample out;
-        out.steps = step;
-        out.position = applied(row, values, channels);
-        return out;
+        std::vector<double> ds, dt;
+        const bool tangents = derivatives >= 1 && centre_derivatives(*mask, lab, cut.level, cut.point.face, ds, dt);
+        // A quad's centre has derivatives: where its grid is not regular yet, go on (the point
+        // stays the centre of the quad's F-face) a few steps.
+        if (tangents || derivatives == 0 || config.valence != 4 || ++tangent_steps > 12) {
+          std::vector<double> row(size_t(cut.level.vertex_count), 0.0);
+          for (size_t l = 0; l < mask->position.size(); ++l) row[size_t(lab.vertices[l])] += mask->position[l];
+          LimitSample out;
+          out.steps = step;
+          out.position = applied(row, values, channels);
+          if (tangents) {
+            // d(s, t)/d(u, v) is 2^k times a number of order one after k double steps; the rows
+            // start at 2^-k times their size and each step's factor 2 restores it (step_matrix.h).
+            const auto& J = cut.point.jacobian;
+            const double scale = std::ldexp(1.0, -int(path.size()));
+            auto pulled = [&](int d) {
+              std::vector<double> r(ds.size());
+              for (size_t i = 0; i < r.size(); ++i)
+                r[i] = scale * (J[0][size_t(d)] * ds[i] + J[1][size_t(d)] * dt[i]);
+              return pulled_back(std::move(r), path);
+            };
+            std::vector<double> u = pulled(0), v = pulled(1);
+            out.du = applied(u, first_values, channels);
+            out.dv = applied(v, first_values, channels);
+            out.has_derivatives = true;
+            if (rows_out) rows_out->du = std::move(u), rows_out->dv = std::move(v);
+          }
+          return out;
+        }
       }
     }
     if (step >= limit_steps)
@@ -155,9 +224,10 @@ LimitSample MidEdgeLimit::evaluate(const FacePoint& p0, const std::vector<double
     const std::optional<FacePoint> q = dual_child_point(cut.level, h.levels[2], o, cut.point);
     if (!q) throw Error("internal: no face two mid-edge steps make holds the point");
     Cut next = cut_around(h.levels[2], *q, radius_);
-    const StepMatrix m = two_step_matrix(h, next.original, cut.level.vertex_count, 2);
-    std::vector<double> moved(size_t(m.rows()) * size_t(channels));
-    m.apply(values, moved, channels);
+    path_steps.push_back(two_step_matrix(h, next.original, cut.level.vertex_count, 2));
+    path.push_back(&path_steps.back());
+    std::vector<double> moved(size_t(path_steps.back().rows()) * size_t(channels));
+    path_steps.back().apply(values, moved, channels);
     values.swap(moved);
     cut = std::move(next);
   }

@@ -19,8 +19,13 @@
 // 1997, analysis/surface/limit_evaluation.h) gives the limit. A double is a dyadic rational,
 // so the point becomes a quadrant corner after as many double steps as its coordinates have
 // bits; after `max_steps` it is taken at the nearest corner (the quadrant is then 2^-max_steps
-// of the base face). Positions only: there is no closed form for the regular case here, and
-// derivatives are not computed (has_derivatives false).
+// of the base face). The derivatives at the centre of a quad come from the face's tangent
+// masks (the left eigenvectors of the subdominant eigenvalue), scaled by linear precision as
+// at a primal vertex (corner_limit.h): the cut's control points at their own (s, t) have the
+// plane as limit, so a mask d gives d.P = (d.S) dP/ds + (d.T) dP/dt. Where the quad's
+// neighbourhood is not yet a regular grid (an extraordinary point near), the descent goes on:
+// the centre stays the centre of the quad's F-face, whose neighbourhood becomes regular. At the
+// centre of a face that is not a quad (an extraordinary point) there are no derivatives.
 //
 // Refused (mid_edge_limit_unsupported): boundaries, sharp and semi-sharp edges and vertices,
 // holes.
@@ -42,7 +47,12 @@ public:
   // `evaluate` takes their values.
   std::vector<Index> reads(const FacePoint& p) const;
 
-  LimitSample evaluate(const FacePoint& p, const std::vector<double>& first_values, int channels) const;
+  // Rows of the derivatives over those vertices (for stencils).
+  struct Rows {
+    std::vector<double> du, dv;
+  };
+  LimitSample evaluate(const FacePoint& p, const std::vector<double>& first_values, int channels, int derivatives,
+                       Rows* rows_out = nullptr) const;
 
   int radius() const { return radius_; }
 

@@ -96,7 +96,7 @@ TEST_CASE("mid-edge: the limit at face centres, base vertices and edge middles i
       for (Index v : fv) corners.push_back(at(m, v));
       const auto centre = n == 4 ? std::array<double, 2>{0.5, 0.5} : sub_face_uv(n, 0, 1, 1);
       const LimitSample c = s.evaluate(f, centre[0], centre[1], m.positions, 3);
-      CHECK(!c.has_derivatives);
+      CHECK(c.has_derivatives == (n == 4));  // the centre of an n-gon is an extraordinary point
       worst = std::max(worst, distance(c.position, mean(corners)));
       for (int k = 0; k < n; ++k) {
         // The corner: w and the middles of its edges (V-face of the first step).
@@ -220,7 +220,6 @@ TEST_CASE("mid-edge: continuous across every edge, affine invariant, stencils eq
         CHECK(std::fabs(q.position[size_t(r)] - x) < 1e-13);
       }
       const LimitStencil w = s.stencil(f, uv[0], uv[1]);
-      CHECK(!w.has_derivatives);
       Point x{};
       for (size_t i = 0; i < w.vertices.size(); ++i)
         for (size_t c = 0; c < 3; ++c) x[c] += w.position[i] * m.positions[size_t(3 * w.vertices[i]) + c];
@@ -251,6 +250,57 @@ TEST_CASE("mid-edge: linear precision in the quadrant parameterisation") {
     CHECK(std::fabs(p.position[0] - (i + u)) < 1e-12);
     CHECK(std::fabs(p.position[1] - (j + v)) < 1e-12);
     CHECK(std::fabs(p.position[2]) < 1e-12);
+    // The derivatives are the grid's axes.
+    REQUIRE(p.has_derivatives);
+    CHECK(distance(p.du, Point{1, 0, 0}) < 1e-12);
+    CHECK(distance(p.dv, Point{0, 1, 0}) < 1e-12);
+  }
+}
+
+TEST_CASE("mid-edge: derivatives against central differences, none at an extraordinary point") {
+  const auto scheme = load_scheme("mid-edge");
+  for (const test::Mesh& m : meshes()) {
+    const Level L = m.level();
+    const LimitSurface s(scheme, L);
+    std::mt19937 rng(8);
+    std::uniform_real_distribution<double> U(0.15, 0.85);
+    double worst = 0, scale = 0;
+    for (int k = 0; k < 4; ++k) {
+      const Index f = Index((5 * k) % L.face_count());
+      const int n = L.face_size(f);
+      // A quad's point, or a point well inside a sub-face (derivatives along the face's u, v).
+      const auto uv = n == 4 ? std::array<double, 2>{U(rng), U(rng)} : sub_face_uv(n, k % n, 0.3 + 0.4 * U(rng), 0.3 + 0.4 * U(rng));
+      const LimitSample p = s.evaluate(f, uv[0], uv[1], m.positions, 3);
+      REQUIRE(p.has_derivatives);
+      const double h = 1e-5;
+      const LimitSample a = s.evaluate(f, uv[0] + h, uv[1], m.positions, 3, 0), b = s.evaluate(f, uv[0] - h, uv[1], m.positions, 3, 0);
+      const LimitSample c = s.evaluate(f, uv[0], uv[1] + h, m.positions, 3, 0), d = s.evaluate(f, uv[0], uv[1] - h, m.positions, 3, 0);
+      for (size_t r = 0; r < 3; ++r) {
+        worst = std::max(worst, std::fabs((a.position[r] - b.position[r]) / (2 * h) - p.du[r]));
+        worst = std::max(worst, std::fabs((c.position[r] - d.position[r]) / (2 * h) - p.dv[r]));
+        scale = std::max({scale, std::fabs(p.du[r]), std::fabs(p.dv[r])});
+      }
+      // The stencil's derivative weights applied to the control points.
+      const LimitStencil w = s.stencil(f, uv[0], uv[1]);
+      REQUIRE(w.has_derivatives);
+      Point du{}, dv{};
+      for (size_t i = 0; i < w.vertices.size(); ++i)
+        for (size_t c3 = 0; c3 < 3; ++c3) {
+          du[c3] += w.du[i] * m.positions[size_t(3 * w.vertices[i]) + c3];
+          dv[c3] += w.dv[i] * m.positions[size_t(3 * w.vertices[i]) + c3];
+        }
+      CHECK(distance(du, p.du) < 1e-12);
+      CHECK(distance(dv, p.dv) < 1e-12);
+    }
+    CHECK(worst < 1e-6 * std::max(1.0, scale));
+    // A base vertex of valence other than 4 is an extraordinary point (its V-face is not a
+    // quad): no derivatives there; a vertex of valence 4 has them.
+    for (Index f = 0; f < L.face_count(); ++f)
+      for (int k = 0; k < L.face_size(f); ++k) {
+        const auto uv = edge_uv(L.face_size(f), k, 0);
+        CHECK(s.evaluate(f, uv[0], uv[1], m.positions, 3).has_derivatives ==
+              (L.incident_face_count(L.face(f)[size_t(k)]) == 4));
+      }
   }
 }
 
