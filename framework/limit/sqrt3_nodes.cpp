@@ -18,29 +18,32 @@ namespace {
 
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
-// Barycentric coordinates in the frame of triangle f: its corners, and the far corner of each
-// neighbour across its edges, unfolded affinely (a + b - c).
-std::vector<Bary> frame_coordinates(const Level& L, Index f) {
-  std::vector<Bary> at(size_t(L.vertex_count), Bary{kNan, kNan, kNan});
+// Barycentric coordinates in the frame of triangle f of the first step's children: f's corners,
+// f's point at its centroid, and the point of each neighbour across an edge of f at the
+// neighbour's centroid with the grid unfolded affinely across the edge (its far corner at
+// a + b - c), written per face, not per far corner: on a small mesh (a tetrahedron) the three
+// neighbours share their far corner.
+std::vector<Bary> first_step_coordinates(const Level& L, Index f, const ChildOrigins& o) {
+  std::vector<Bary> out(o.kind.size(), Bary{kNan, kNan, kNan});
   const auto fv = L.face(f);
-  for (int k = 0; k < 3; ++k) {
-    Bary e{0, 0, 0};
-    e[size_t(k)] = 1;
-    at[size_t(fv[size_t(k)])] = e;
-  }
   const auto fe = L.face_edge_list(f);
-  for (int k = 0; k < 3; ++k) {
-    const Index e = fe[size_t(k)];
-    const Index g = L.edge_faces[size_t(2 * e)] == f ? L.edge_faces[size_t(2 * e + 1)] : L.edge_faces[size_t(2 * e)];
-    if (g == kNone || L.face_size(g) != 3) continue;
-    for (Index w : L.face(g)) {
-      if (w == fv[size_t(k)] || w == fv[size_t((k + 1) % 3)]) continue;
-      Bary x{0, 0, 0};
-      x[size_t(k)] = 1, x[size_t((k + 1) % 3)] = 1, x[size_t((k + 2) % 3)] = -1;
-      at[size_t(w)] = x;
+  for (size_t v = 0; v < o.kind.size(); ++v) {
+    if (o.kind[v] == OriginKind::Vertex) {
+      for (int k = 0; k < 3; ++k)
+        if (fv[size_t(k)] == o.parent[v]) out[v] = Bary{0, 0, 0}, out[v][size_t(k)] = 1;
+    } else if (o.kind[v] == OriginKind::Face) {
+      const Index g = o.parent[v];
+      if (g == f) out[v] = Bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
+      for (int k = 0; k < 3 && g != f; ++k) {
+        const Index e = fe[size_t(k)];
+        if (L.edge_faces[size_t(2 * e)] != g && L.edge_faces[size_t(2 * e + 1)] != g) continue;
+        Bary x{0, 0, 0};
+        x[size_t(k)] = 2.0 / 3, x[size_t((k + 1) % 3)] = 2.0 / 3, x[size_t((k + 2) % 3)] = -1.0 / 3;
+        out[v] = x;
+      }
     }
   }
-  return at;
+  return out;
 }
 
 // Where the children of a step lie: a vertex child at its parent vertex, a face child at the
@@ -186,7 +189,7 @@ Sqrt3Node& Sqrt3Nodes::expand_locked(int id) {
   ro.levels = 2;
   ro.features = features_;
   const Hierarchy h = refine(scheme_, n->level, ro);
-  const std::vector<Bary> at1 = child_coordinates(n->level, frame_coordinates(n->level, n->face), h.origins[0]);
+  const std::vector<Bary> at1 = first_step_coordinates(n->level, n->face, h.origins[0]);
   const std::vector<Bary> at2 = child_coordinates(h.levels[1], at1, h.origins[1]);
   for (const auto& [g, t] : triadic_children(h.levels[2], at2)) {
     const Extracted e = extract_neighbourhood(h.levels[2], CentreKind::Face, g, radius_);

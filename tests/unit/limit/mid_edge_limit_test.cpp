@@ -42,8 +42,18 @@ test::Mesh bumped(test::Mesh m) {
   return m;
 }
 
+// A tetrahedron: triangles only, every vertex of valence 3.
+test::Mesh tetrahedron() {
+  test::Mesh m;
+  m.add_vertex(1, 1, 1), m.add_vertex(1, -1, -1), m.add_vertex(-1, 1, -1), m.add_vertex(-1, -1, 1);
+  m.add_face({0, 1, 2}), m.add_face({0, 2, 3}), m.add_face({0, 3, 1}), m.add_face({1, 3, 2});
+  return m;
+}
+
 // Closed meshes with quads, triangles (sub-faces) and vertices of valence 3, 4 and 5.
-std::vector<test::Mesh> meshes() { return {bumped(test::cube()), bumped(test::pyramid()), bumped(test::bipyramid(5))}; }
+std::vector<test::Mesh> meshes() {
+  return {bumped(test::cube()), bumped(test::pyramid()), bumped(test::bipyramid(5)), bumped(tetrahedron())};
+}
 
 Point at(const test::Mesh& m, Index v) {
   return {m.positions[size_t(3 * v)], m.positions[size_t(3 * v + 1)], m.positions[size_t(3 * v + 2)]};

@@ -41,9 +41,17 @@ test::Mesh bumped(test::Mesh m) {
   return m;
 }
 
-// Meshes with extraordinary vertices: the octahedron (valence 4) and the pentagonal
-// bipyramid (valences 5 and 4), bumped so that no symmetry hides an error.
-std::vector<test::Mesh> meshes() { return {bumped(test::octahedron()), bumped(test::bipyramid(5))}; }
+// A tetrahedron: every vertex of valence 3, and a face's three neighbours share their far corner.
+test::Mesh tetrahedron() {
+  test::Mesh m;
+  m.add_vertex(1, 1, 1), m.add_vertex(1, -1, -1), m.add_vertex(-1, 1, -1), m.add_vertex(-1, -1, 1);
+  m.add_face({0, 1, 2}), m.add_face({0, 2, 3}), m.add_face({0, 3, 1}), m.add_face({1, 3, 2});
+  return m;
+}
+
+// Meshes with extraordinary vertices: the octahedron (valence 4), the pentagonal bipyramid
+// (valences 5 and 4) and the tetrahedron (3), bumped so that no symmetry hides an error.
+std::vector<test::Mesh> meshes() { return {bumped(test::octahedron()), bumped(test::bipyramid(5)), bumped(tetrahedron())}; }
 
 // (u, v) of the point with barycentric coordinates b (from the face's corner 0).
 std::array<double, 2> uv_of(double b1, double b2) { return {b1, b2}; }
