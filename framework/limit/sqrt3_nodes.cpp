@@ -9,6 +9,7 @@
 
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/refiner.h"
+#include "framework/limit/canonical_cut.h"
 #include "framework/limit/two_steps.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -108,28 +109,6 @@ std::vector<std::pair<Index, TriadicChild>> triadic_children(const Level& level2
     throw Error(fmt::format("internal: two sqrt3 steps made {} triangles in a face, not the 9 of a triadic split",
                             out.size()));
   return out;
-}
-
-// The cut renumbered by its labels (closed and untagged: sqrt3_limit_unsupported), faces in
-// the order of their label lists, the centre face with its corner 0 first (labels 0, 1, 2).
-Level canonical_cut(const Level& cut, const Labelling& lab, Index face, Index& canonical_face) {
-  std::vector<std::vector<Index>> faces;
-  for (Index f = 0; f < cut.face_count(); ++f) {
-    std::vector<Index> labels;
-    for (Index v : cut.face(f)) labels.push_back(lab.label_of[size_t(v)]);
-    if (f != face) std::rotate(labels.begin(), std::min_element(labels.begin(), labels.end()), labels.end());
-    faces.push_back(std::move(labels));
-  }
-  std::vector<Index> order(faces.size());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = Index(i);
-  std::sort(order.begin(), order.end(), [&](Index a, Index b) { return faces[size_t(a)] < faces[size_t(b)]; });
-  std::vector<Index> offsets{0}, corners;
-  for (Index f : order) {
-    if (f == face) canonical_face = Index(offsets.size()) - 1;
-    corners.insert(corners.end(), faces[size_t(f)].begin(), faces[size_t(f)].end());
-    offsets.push_back(Index(corners.size()));
-  }
-  return build_level(Index(lab.vertices.size()), offsets, corners);
 }
 
 }  // namespace
