@@ -8,11 +8,9 @@
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/ghost_rings.h"
-#include "framework/engine/refiner.h"
-#include "framework/limit/corner_limit.h"
 #include "framework/limit/dual_limit.h"
+#include "framework/limit/mid_edge_nodes.h"
 #include "framework/limit/step_matrix.h"
-#include "framework/limit/two_steps.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
 
@@ -49,44 +47,17 @@ bool at_centre(const FacePoint& p) {
   return p.sub_face < 0 ? p.st[0] == 0.5 && p.st[1] == 0.5 : p.st[0] == 1 && p.st[1] == 1;
 }
 
-// d/ds and d/dt at the centre of quad `face` as rows over the level's vertices, from the
-// face mask's tangent directions and linear precision (corner_limit.h): the pair of
-// directions whose 2 x 2 system is best conditioned. False where the grid around the face is
-// not regular within the masks' reach (unfold gives NaN there).
-bool centre_derivatives(const LimitMask& mask, const Labelling& lab, const Level& L, Index face, std::vector<double>& ds,
-                        std::vector<double>& dt) {
-  if (L.face_size(face) != 4 || mask.directions.size() < 2) return false;
-  const std::vector<Uv> at = unfold(L, face, false);
-  std::vector<std::array<double, 2>> st;
-  for (const auto& d : mask.directions) {
-    std::array<double, 2> x{0, 0};
-    for (size_t l = 0; l < d.size(); ++l)
-      if (d[l] != 0)
-        for (size_t c = 0; c < 2; ++c) x[c] += d[l] * at[size_t(lab.vertices[l])][c];
-    st.push_back(x);
+// The cut's vertices (in the order evaluate() takes their values) renumbered by their labels.
+StepMatrix renumbering(const std::vector<Index>& order, Index source_count) {
+  StepMatrix m;
+  m.source_count = source_count;
+  m.scale = 1;
+  for (Index v : order) {
+    m.columns.push_back(v);
+    m.weights.push_back(1.0);
+    m.offsets.push_back(Index(m.columns.size()));
   }
-  double best = 0;
-  size_t ia = 0, ib = 0;
-  for (size_t i = 0; i < st.size(); ++i)
-    for (size_t j = i + 1; j < st.size(); ++j) {
-      const double det = st[i][0] * st[j][1] - st[i][1] * st[j][0];
-      const double size = std::hypot(st[i][0], st[i][1]) * std::hypot(st[j][0], st[j][1]);
-      if (std::isfinite(det) && size > 0 && std::fabs(det) / size > best) best = std::fabs(det) / size, ia = i, ib = j;
-    }
-  if (best < 1e-6) return false;
-  const double a00 = st[ia][0], a01 = st[ia][1], a10 = st[ib][0], a11 = st[ib][1];
-  const double det = a00 * a11 - a01 * a10;
-  const auto& da = mask.directions[ia];
-  const auto& db = mask.directions[ib];
-  ds.assign(size_t(L.vertex_count), 0.0);
-  dt.assign(size_t(L.vertex_count), 0.0);
-  for (size_t l = 0; l < std::max(da.size(), db.size()); ++l) {
-    const double x = l < da.size() ? da[l] : 0.0, y = l < db.size() ? db[l] : 0.0;
-    const size_t v = size_t(lab.vertices[l]);
-    ds[v] += (a11 * x - a01 * y) / det;
-    dt[v] += (a00 * y - a10 * x) / det;
-  }
-  return true;
+  return m;
 }
 
 // The nearest corner of the point's quadrant (multiples of 1/2 of a quad, 0 or 1 of a sub-face).
@@ -152,84 +123,82 @@ std::string mid_edge_limit_unsupported(const Level& base) {
 
 MidEdgeLimit::MidEdgeLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options,
                            SchemeLimits& limits)
-    : scheme_(scheme), base_(base), options_(options), limits_(limits) {
+    : base_(base), options_(options) {
   // Two steps lose `loss` rings of the cut; the next cut, `radius` rings of faces half the
   // size, must lie in what is left: radius / 2 + 1 <= radius - loss.
   const SchemeRun run{&scheme, 2};
   double loss = 0;
   for (double x : ring_loss_per_level(std::span<const SchemeRun>(&run, 1))) loss += std::max(x, 0.0);
   radius_ = std::max(5, int(std::ceil(2 * (loss + 1))) + 1);
+  nodes_ = std::make_unique<MidEdgeNodes>(scheme, options.features, radius_, limits);
 }
+
+MidEdgeLimit::~MidEdgeLimit() = default;
 
 std::vector<Index> MidEdgeLimit::reads(const FacePoint& p) const { return cut_around(base_, p, radius_).original; }
 
 LimitSample MidEdgeLimit::evaluate(const FacePoint& p0, const std::vector<double>& first_values, int channels,
                                    int derivatives, Rows* rows_out) const {
-  Cut cut = cut_around(base_, p0, radius_);
-  std::vector<double> values = first_values;
-  std::deque<StepMatrix> path_steps;
+  const Cut cut = cut_around(base_, p0, radius_);
+  std::vector<Index> order;
+  int id = nodes_->intern(cut.level, cut.point.face, order);
+  FacePoint point = cut.point;
+  std::deque<StepMatrix> owned;
   std::vector<const StepMatrix*> path;
+  owned.push_back(renumbering(order, cut.level.vertex_count));
+  path.push_back(&owned.back());
+  std::vector<double> values(order.size() * size_t(channels));
+  owned.back().apply(first_values, values, channels);
   const int limit_steps = options_.max_steps + 40;
   int tangent_steps = 0;  // steps taken past a quad's centre whose grid was not regular yet
   for (int step = 0;; ++step) {
-    if (step == options_.max_steps) cut.point = nearest_corner(cut.point);
-    if (at_centre(cut.point)) {
-      LocalConfig config;
-      config.centre = CentreKind::Face;
-      config.valence = cut.level.face_size(cut.point.face);
-      const auto mask = limits_.mask(config);
-      if (!mask->ok)
-        throw Error(fmt::format("no limit mask at the centre of a {}-sided face: {}", config.valence, mask->error));
-      Labelling lab;
-      if (matches_neighbourhood(lab, cut.level, CentreKind::Face, cut.point.face, 0, mask->radius, mask->signature)) {
-        std::vector<double> ds, dt;
-        const bool tangents = derivatives >= 1 && centre_derivatives(*mask, lab, cut.level, cut.point.face, ds, dt);
-        // A quad's centre has derivatives: where its grid is not regular yet, go on (the point
-        // stays the centre of the quad's F-face) a few steps.
-        if (tangents || derivatives == 0 || config.valence != 4 || ++tangent_steps > 12) {
-          std::vector<double> row(size_t(cut.level.vertex_count), 0.0);
-          for (size_t l = 0; l < mask->position.size(); ++l) row[size_t(lab.vertices[l])] += mask->position[l];
-          LimitSample out;
-          out.steps = step;
-          out.position = applied(row, values, channels);
-          if (tangents) {
-            // d(s, t)/d(u, v) is 2^k times a number of order one after k double steps; the rows
-            // start at 2^-k times their size and each step's factor 2 restores it (step_matrix.h).
-            const auto& J = cut.point.jacobian;
-            const double scale = std::ldexp(1.0, -int(path.size()));
-            auto pulled = [&](int d) {
-              std::vector<double> r(ds.size());
-              for (size_t i = 0; i < r.size(); ++i)
-                r[i] = scale * (J[0][size_t(d)] * ds[i] + J[1][size_t(d)] * dt[i]);
-              return pulled_back(std::move(r), path);
-            };
-            std::vector<double> u = pulled(0), v = pulled(1);
-            out.du = applied(u, first_values, channels);
-            out.dv = applied(v, first_values, channels);
-            out.has_derivatives = true;
-            if (rows_out) rows_out->du = std::move(u), rows_out->dv = std::move(v);
-          }
-          return out;
+    const MidEdgeNode& node = nodes_->expanded(id);
+    point.face = node.face;
+    if (step == options_.max_steps) point = nearest_corner(point);
+    if (at_centre(point)) {
+      std::string error;
+      const MidEdgeNode* c = nodes_->centre(id, error);
+      if (!c && !error.empty())
+        throw Error(fmt::format("no limit mask at the centre of a {}-sided face: {}", node.level.face_size(node.face),
+                                error));
+      // A quad's centre has derivatives: where its grid is not regular yet, go on (the point
+      // stays the centre of the quad's F-face) a few steps.
+      const bool tangents = c && derivatives >= 1 && !c->ds.empty();
+      if (c && (tangents || derivatives == 0 || node.level.face_size(node.face) != 4 || ++tangent_steps > 12)) {
+        LimitSample out;
+        out.steps = step;
+        out.position = applied(c->position, values, channels);
+        if (tangents) {
+          // d(s, t)/d(u, v) is 2^k times a number of order one after k double steps; the rows
+          // start at 2^-k times their size and each step's factor 2 restores it (step_matrix.h).
+          const auto& J = point.jacobian;
+          const double scale = std::ldexp(1.0, -step);
+          auto pulled = [&](int d) {
+            std::vector<double> r(c->ds.size());
+            for (size_t i = 0; i < r.size(); ++i) r[i] = scale * (J[0][size_t(d)] * c->ds[i] + J[1][size_t(d)] * c->dt[i]);
+            return pulled_back(std::move(r), path);
+          };
+          std::vector<double> u = pulled(0), v = pulled(1);
+          out.du = applied(u, first_values, channels);
+          out.dv = applied(v, first_values, channels);
+          out.has_derivatives = true;
+          if (rows_out) rows_out->du = std::move(u), rows_out->dv = std::move(v);
         }
+        return out;
       }
     }
     if (step >= limit_steps)
       throw Error(fmt::format("internal: the point reached no face centre with a known neighbourhood in {} double "
                               "mid-edge steps", step));
-    RefineOptions ro;
-    ro.levels = 2;
-    ro.features = options_.features;
-    const Hierarchy h = refine(scheme_, cut.level, ro);
-    const ChildOrigins o = mid_edge_double_origins(cut.level, h.levels[1], h.origins[0], h.levels[2], h.origins[1]);
-    const std::optional<FacePoint> q = dual_child_point(cut.level, h.levels[2], o, cut.point);
+    const std::optional<FacePoint> q = dual_child_point(node.level, node.steps.levels[2], node.origins, point);
     if (!q) throw Error("internal: no face two mid-edge steps make holds the point");
-    Cut next = cut_around(h.levels[2], *q, radius_);
-    path_steps.push_back(two_step_matrix(h, next.original, cut.level.vertex_count, 2));
-    path.push_back(&path_steps.back());
-    std::vector<double> moved(size_t(path_steps.back().rows()) * size_t(channels));
-    path_steps.back().apply(values, moved, channels);
+    const MidEdgeNode::Child& child = nodes_->child(id, q->face);
+    path.push_back(&child.matrix);
+    std::vector<double> moved(size_t(child.matrix.rows()) * size_t(channels));
+    child.matrix.apply(values, moved, channels);
     values.swap(moved);
-    cut = std::move(next);
+    id = child.node;
+    point = *q;
   }
 }
 

@@ -13,8 +13,9 @@
 // the point of corner (g, j) is put at the centre of quadrant (g, j), and the four faces
 // around it hold its quarters, exactly as a dual step nests (dual_child_point).
 //
-// Evaluation follows the point's quadrant two steps at a time, refining a cut around its face
-// with the scheme's own rules (the engine), until the point is a face's centre, where the
+// Evaluation follows the point's quadrant two steps at a time, through cuts around its face
+// refined with the scheme's own rules (the engine; each configuration once, mid_edge_nodes.h),
+// until the point is a face's centre, where the
 // face's limit mask (the left eigenvector of 1 of its local subdivision matrix; Peters & Reif
 // 1997, analysis/surface/limit_evaluation.h) gives the limit. A double is a dyadic rational,
 // so the point becomes a quadrant corner after as many double steps as its coordinates have
@@ -29,6 +30,7 @@
 //
 // Refused (mid_edge_limit_unsupported): boundaries, sharp and semi-sharp edges and vertices,
 // holes.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -38,10 +40,12 @@
 namespace subdiv {
 
 class SchemeLimits;
+class MidEdgeNodes;
 
 class MidEdgeLimit {
 public:
   MidEdgeLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options, SchemeLimits& limits);
+  ~MidEdgeLimit();
 
   // The base vertices an evaluation at `p` (from base_face_point) reads, in the order
   // `evaluate` takes their values.
@@ -57,11 +61,10 @@ public:
   int radius() const { return radius_; }
 
 private:
-  const Scheme& scheme_;
   const Level& base_;
   LimitSurfaceOptions options_;
-  SchemeLimits& limits_;
   int radius_ = 4;
+  std::unique_ptr<MidEdgeNodes> nodes_;  // shared by all evaluations (thread-safe)
 };
 
 // Why the mid-edge evaluation cannot take this mesh, or empty.

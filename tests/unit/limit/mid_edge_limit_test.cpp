@@ -314,6 +314,21 @@ TEST_CASE("mid-edge: derivatives against central differences, none at an extraor
   }
 }
 
+TEST_CASE("mid-edge: the numbers do not depend on the order of evaluation") {
+  // Each neighbourhood is worked out once, on its cut renumbered by its labels: a second
+  // surface that meets the faces in the other order gives the same bits.
+  const test::Mesh m = bumped(test::pyramid());
+  const LimitSurface a(load_scheme("mid-edge"), m.level()), b(load_scheme("mid-edge"), m.level());
+  const Index faces = m.level().face_count();
+  std::vector<LimitSample> first, second;
+  for (Index f = 0; f < faces; ++f) first.push_back(a.evaluate(f, 0.2109375, 0.3671875, m.positions, 3));
+  for (Index f = faces; f-- > 0;) second.push_back(b.evaluate(f, 0.2109375, 0.3671875, m.positions, 3));
+  for (Index f = 0; f < faces; ++f) {
+    CHECK(first[size_t(f)].position == second[size_t(faces - 1 - f)].position);
+    CHECK(first[size_t(f)].du == second[size_t(faces - 1 - f)].du);
+  }
+}
+
 TEST_CASE("mid-edge: boundaries and creases are refused with the reason") {
   CHECK_THROWS_WITH_AS(LimitSurface(load_scheme("mid-edge"), test::grid(3, 3).level()),
                        doctest::Contains("boundary"), Error);
