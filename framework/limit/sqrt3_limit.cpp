@@ -149,19 +149,66 @@ LimitSample Sqrt3Limit::evaluate(const FacePoint& p0, const std::vector<double>&
       if (lowest > best_min) best_min = lowest, best = i, beta = x;
     }
     const TriadicChild& t = node.children[best];
-    TrianglePoint next;
-    next.b = beta;
-    for (int m = 1; m < 3; ++m) {
-      const auto g = child_gradient(t, m);
-      for (size_t c = 0; c < 2; ++c) next.jacobian[size_t(m - 1)][c] = g[0] * q.jacobian[0][c] + g[1] * q.jacobian[1][c];
+    auto advance = [&](TrianglePoint& x, const Bary& b) {
+      TrianglePoint next;
+      next.b = b;
+      for (int m = 1; m < 3; ++m) {
+        const auto g = child_gradient(t, m);
+        for (size_t c = 0; c < 2; ++c) next.jacobian[size_t(m - 1)][c] = g[0] * x.jacobian[0][c] + g[1] * x.jacobian[1][c];
+      }
+      x = next;
+    };
+    advance(q, beta);
+    // A self-similar run (towards a vertex the point is near): the same node and child again
+    // and again. Its length follows from the point alone; the run is taken with the step's
+    // powers, one product per binary digit of its length (as the primal evaluator does).
+    // A point exactly at the vertex (at_vertex) stays there; it steps only until the vertex's
+    // neighbourhood is a known configuration. Elsewhere than next to an extraordinary vertex
+    // a run stops where the descent does (`stop`).
+    int run = 1;
+    if (node.child_node[best] == id && !at_vertex) {
+      for (;;) {
+        size_t again = 0;
+        double again_min = -std::numeric_limits<double>::infinity();
+        Bary x{};
+        for (size_t i = 0; i < node.children.size(); ++i) {
+          const Bary y = in_child(node.children[i], q.b);
+          const double lowest = std::min({y[0], y[1], y[2]});
+          if (lowest > again_min) again_min = lowest, again = i, x = y;
+        }
+        if (again != best || run >= (1 << Sqrt3Nodes::kPowers) - 1 || step + run >= give_up ||
+            (!node.extraordinary && step + run >= stop))
+          break;
+        advance(q, x);
+        ++run;
+      }
     }
-    const StepMatrix& M = node.child_matrix[best];
-    path.push_back(&M);
-    std::vector<double> moved(size_t(M.rows()) * size_t(channels));
-    M.apply(values, moved, channels);
-    values.swap(moved);
+    if (node.extraordinary) stop = std::max(stop, step + run - 1 + kRoundOffSteps);
+    if (run == 1) {
+      const StepMatrix& M = node.child_matrix[best];
+      path.push_back(&M);
+      std::vector<double> moved(size_t(M.rows()) * size_t(channels));
+      M.apply(values, moved, channels);
+      values.swap(moved);
+    } else {
+      // Applied to the values less those of label 0 (added back after): the rows of a power
+      // sum to one only to round-off that grows with the power, which then multiplies the small
+      // differences of a cut 3^-k across instead of the values themselves.
+      const Sqrt3Node::Powers& P = nodes_->powers(id, int(best));
+      for (int j = 0; j < Sqrt3Nodes::kPowers; ++j) {
+        if (!(run >> j & 1)) continue;
+        const StepMatrix& M = P.forward[size_t(j)];
+        path.push_back(&M);
+        const std::vector<double> base(values.begin(), values.begin() + channels);
+        for (size_t i = 0; i < values.size(); ++i) values[i] -= base[i % size_t(channels)];
+        std::vector<double> moved(size_t(M.rows()) * size_t(channels));
+        M.apply(values, moved, channels);
+        for (size_t i = 0; i < moved.size(); ++i) moved[i] += base[i % size_t(channels)];
+        values.swap(moved);
+      }
+    }
     id = node.child_node[best];
-    q = next;
+    step += run - 1;
   }
 }
 

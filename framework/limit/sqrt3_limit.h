@@ -26,8 +26,10 @@
 // corner_limit.h). The error is at most the triangle's size times the first derivative for
 // positions and times the second for the derivatives: round-off. Next to an extraordinary
 // vertex the derivatives change on the scale of the distance to it, so the descent goes on
-// 34 double steps past the last triangle that touches the extraordinary vertex; a point
-// exactly at a vertex stops there (no derivatives at an extraordinary one).
+// 34 double steps past the last triangle that touches the extraordinary vertex (a run of the
+// same neighbourhood and child is taken at once with the step's matrix powers,
+// sqrt3_nodes.h); a point exactly at a vertex stops there (no derivatives at an
+// extraordinary one).
 //
 // Refused (sqrt3_limit_unsupported): boundaries (trisected every second step, whose
 // parameterisation along the boundary is not defined here yet), sharp and semi-sharp edges

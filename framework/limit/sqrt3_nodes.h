@@ -50,6 +50,12 @@ struct Sqrt3Node {
   std::vector<TriadicChild> children;
   std::vector<int> child_node;
   std::vector<StepMatrix> child_matrix;  // rows: the child's labels; columns: this node's labels
+  // Per child that is this node again (a self-similar step, towards a vertex): the step's
+  // powers M^(2^j), each with its derivative form (3 (M - 1 e_0))^(2^j) (limit_nodes.h).
+  struct Powers {
+    std::vector<StepMatrix> forward, backward;
+  };
+  std::vector<std::unique_ptr<Powers>> powers;
   std::array<int, 3> corner_state{};     // 0 not tried, 1 ready, 2 not a known configuration
   std::array<CornerRows, 3> corner;      // over labels
   std::array<std::string, 3> corner_error;
@@ -67,6 +73,10 @@ public:
   // The rows at the node face's corner k, or null when the vertex is not yet in a
   // configuration the masks describe (`error` then says why when the analysis failed).
   const CornerRows* corner(int id, int k, std::string& error);
+  // The powers of child `which`'s step of node `id`, which must lead back to the node: m
+  // double steps then cost one product per binary digit of m.
+  const Sqrt3Node::Powers& powers(int id, int which);
+  static constexpr int kPowers = 10;  // 2^10 double steps: past the smallest double (3^-680)
 
 private:
   int intern_locked(const Level& cut, Index face, std::vector<Index>& order);
