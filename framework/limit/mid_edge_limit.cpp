@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <fmt/format.h>
 
 #include "framework/analysis/surface/limit_evaluation.h"
@@ -47,18 +46,6 @@ bool at_centre(const FacePoint& p) {
   return p.sub_face < 0 ? p.st[0] == 0.5 && p.st[1] == 0.5 : p.st[0] == 1 && p.st[1] == 1;
 }
 
-// The cut's vertices (in the order evaluate() takes their values) renumbered by their labels.
-StepMatrix renumbering(const std::vector<Index>& order, Index source_count) {
-  StepMatrix m;
-  m.source_count = source_count;
-  m.scale = 1;
-  for (Index v : order) {
-    m.columns.push_back(v);
-    m.weights.push_back(1.0);
-    m.offsets.push_back(Index(m.columns.size()));
-  }
-  return m;
-}
 
 // The nearest corner of the point's quadrant (multiples of 1/2 of a quad, 0 or 1 of a sub-face).
 FacePoint nearest_corner(FacePoint p) {
@@ -131,24 +118,36 @@ MidEdgeLimit::MidEdgeLimit(const Scheme& scheme, const Level& base, const LimitS
   for (double x : ring_loss_per_level(std::span<const SchemeRun>(&run, 1))) loss += std::max(x, 0.0);
   radius_ = std::max(5, int(std::ceil(2 * (loss + 1))) + 1);
   nodes_ = std::make_unique<MidEdgeNodes>(scheme, options.features, radius_, limits);
+  entries_.resize(size_t(base.face_count()));
 }
 
 MidEdgeLimit::~MidEdgeLimit() = default;
 
-std::vector<Index> MidEdgeLimit::reads(const FacePoint& p) const { return cut_around(base_, p, radius_).original; }
+const MidEdgeLimit::Entry& MidEdgeLimit::entry(Index face) const {
+  {
+    std::lock_guard lock(entry_mutex_);
+    if (entries_[size_t(face)]) return *entries_[size_t(face)];
+  }
+  FacePoint p;
+  p.face = face;
+  const Cut cut = cut_around(base_, p, radius_);
+  auto e = std::make_unique<Entry>();
+  std::vector<Index> order;
+  e->node = nodes_->intern(cut.level, cut.point.face, order);
+  for (Index v : order) e->vertices.push_back(cut.original[size_t(v)]);
+  std::lock_guard lock(entry_mutex_);
+  if (!entries_[size_t(face)]) entries_[size_t(face)] = std::move(e);
+  return *entries_[size_t(face)];
+}
+
+std::vector<Index> MidEdgeLimit::reads(const FacePoint& p) const { return entry(p.face).vertices; }
 
 LimitSample MidEdgeLimit::evaluate(const FacePoint& p0, const std::vector<double>& first_values, int channels,
                                    int derivatives, Rows* rows_out) const {
-  const Cut cut = cut_around(base_, p0, radius_);
-  std::vector<Index> order;
-  int id = nodes_->intern(cut.level, cut.point.face, order);
-  FacePoint point = cut.point;
-  std::deque<StepMatrix> owned;
+  int id = entry(p0.face).node;
+  FacePoint point = p0;
   std::vector<const StepMatrix*> path;
-  owned.push_back(renumbering(order, cut.level.vertex_count));
-  path.push_back(&owned.back());
-  std::vector<double> values(order.size() * size_t(channels));
-  owned.back().apply(first_values, values, channels);
+  std::vector<double> values = first_values;
   const int limit_steps = options_.max_steps + 40;
   int tangent_steps = 0;  // steps taken past a quad's centre whose grid was not regular yet
   for (int step = 0;; ++step) {

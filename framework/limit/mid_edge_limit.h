@@ -31,6 +31,7 @@
 // Refused (mid_edge_limit_unsupported): boundaries, sharp and semi-sharp edges and vertices,
 // holes.
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,15 @@ private:
   LimitSurfaceOptions options_;
   int radius_ = 4;
   std::unique_ptr<MidEdgeNodes> nodes_;  // shared by all evaluations (thread-safe)
+  // Per base face (made on first use): the node of its cut and the base vertices in the node's
+  // label order, which is the order reads() gives and evaluate() takes.
+  struct Entry {
+    int node = -1;
+    std::vector<Index> vertices;
+  };
+  const Entry& entry(Index face) const;
+  mutable std::mutex entry_mutex_;
+  mutable std::vector<std::unique_ptr<Entry>> entries_;
 };
 
 // Why the mid-edge evaluation cannot take this mesh, or empty.

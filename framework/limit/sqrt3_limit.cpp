@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <deque>
 #include <limits>
 #include <optional>
 #include <fmt/format.h>
@@ -44,18 +43,6 @@ struct TrianglePoint {
   Jacobian jacobian{{{1, 0}, {0, 1}}};
 };
 
-// The cut's vertices (in the order evaluate() takes their values) renumbered by their labels.
-StepMatrix renumbering(const std::vector<Index>& order, Index source_count) {
-  StepMatrix m;
-  m.source_count = source_count;
-  m.scale = 1;
-  for (Index v : order) {
-    m.columns.push_back(v);
-    m.weights.push_back(1.0);
-    m.offsets.push_back(Index(m.columns.size()));
-  }
-  return m;
-}
 
 }  // namespace
 
@@ -85,26 +72,36 @@ Sqrt3Limit::Sqrt3Limit(const Scheme& scheme, const Level& base, const LimitSurfa
   for (double x : ring_loss_per_level(std::span<const SchemeRun>(&run, 1))) loss += std::max(x, 0.0);
   radius_ = std::max(5, int(std::ceil(1.5 * (loss + 1))) + 1);
   nodes_ = std::make_unique<Sqrt3Nodes>(scheme, options.features, radius_, limits);
+  entries_.resize(size_t(base.face_count()));
 }
 
 Sqrt3Limit::~Sqrt3Limit() = default;
 
-std::vector<Index> Sqrt3Limit::reads(const FacePoint& p) const { return cut_around(base_, p.face, radius_).original; }
+const Sqrt3Limit::Entry& Sqrt3Limit::entry(Index face) const {
+  {
+    std::lock_guard lock(entry_mutex_);
+    if (entries_[size_t(face)]) return *entries_[size_t(face)];
+  }
+  const Cut cut = cut_around(base_, face, radius_);
+  auto e = std::make_unique<Entry>();
+  std::vector<Index> order;
+  e->node = nodes_->intern(cut.level, cut.face, order);
+  for (Index v : order) e->vertices.push_back(cut.original[size_t(v)]);
+  std::lock_guard lock(entry_mutex_);
+  if (!entries_[size_t(face)]) entries_[size_t(face)] = std::move(e);
+  return *entries_[size_t(face)];
+}
+
+std::vector<Index> Sqrt3Limit::reads(const FacePoint& p) const { return entry(p.face).vertices; }
 
 LimitSample Sqrt3Limit::evaluate(const FacePoint& p0, const std::vector<double>& first_values, int channels,
                                  int derivatives, Rows* rows_out) const {
-  const Cut cut = cut_around(base_, p0.face, radius_);
-  std::vector<Index> order;
-  int id = nodes_->intern(cut.level, cut.face, order);
+  int id = entry(p0.face).node;
   TrianglePoint q;
   q.b = {1 - p0.st[0] - p0.st[1], p0.st[0], p0.st[1]};
   q.jacobian = p0.jacobian;
-  std::deque<StepMatrix> owned;
   std::vector<const StepMatrix*> path;
-  owned.push_back(renumbering(order, cut.level.vertex_count));
-  path.push_back(&owned.back());
-  std::vector<double> values(order.size() * size_t(channels));
-  owned.back().apply(first_values, values, channels);
+  std::vector<double> values = first_values;
   int stop = kRoundOffSteps;
   const int give_up = 24 * kRoundOffSteps;  // past the smallest double's distance to a vertex (3^-680)
   std::string mask_error;

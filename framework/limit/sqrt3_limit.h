@@ -35,6 +35,7 @@
 // parameterisation along the boundary is not defined here yet), sharp and semi-sharp edges
 // and vertices, holes.
 #include <memory>
+#include <mutex>
 #include <span>
 #include <string>
 #include <vector>
@@ -73,6 +74,15 @@ private:
   const Level& base_;
   int radius_ = 5;
   std::unique_ptr<Sqrt3Nodes> nodes_;  // shared by all evaluations (thread-safe)
+  // Per base face (made on first use): the node of its cut and the base vertices in the node's
+  // label order, which is the order reads() gives and evaluate() takes.
+  struct Entry {
+    int node = -1;
+    std::vector<Index> vertices;
+  };
+  const Entry& entry(Index face) const;
+  mutable std::mutex entry_mutex_;
+  mutable std::vector<std::unique_ptr<Entry>> entries_;
 };
 
 // Why the √3 evaluation cannot take this mesh, or empty.
