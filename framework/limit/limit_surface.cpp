@@ -17,7 +17,10 @@
 #include "framework/limit/corner_limit.h"
 #include "framework/limit/dual_limit.h"
 #include "framework/limit/sequence_head.h"
+#include "framework/limit/sqrt3_limit.h"
 #include "framework/limit/limit_nodes.h"
+#include "framework/limit/mid_edge_limit.h"
+#include "framework/limit/plugin_split_limit.h"
 #include "framework/limit/tensor_patch.h"
 #include "framework/limit/triangle_patch.h"
 #include "framework/limit/face_domain.h"
@@ -88,12 +91,8 @@ std::string limit_surface_unsupported(const Scheme& scheme) {
     return fmt::format("scheme {} is non-stationary (its weights depend on the level l): the local subdivision "
                        "matrix changes from level to level and has no fixed eigen-structure to evaluate the limit with",
                        subdiv::quoted(scheme.name));
-  const SplitKind split = scheme.split();
-  if (split != SplitKind::Quad && split != SplitKind::Triangle && split != SplitKind::Dual)
-    return fmt::format("scheme {} uses a split whose child faces do not nest inside one parent face or one of its "
-                       "quadrants (sqrt3, mid-edge or a plugin's split): evaluation at (face, u, v) is implemented "
-                       "for the binary quad and triangle splits and the dual (corner-cutting) split so far",
-                       subdiv::quoted(scheme.name));
+  // Every split is taken here; the √3, mid-edge and plugins' splits are checked with the mesh
+  // (sqrt3_limit_unsupported, mid_edge_limit_unsupported, plugin_split_limit_unsupported).
   return {};
 }
 
@@ -105,6 +104,9 @@ struct LimitSurface::Impl {
   int radius = 4;
   std::unique_ptr<SchemeLimits> limits;
   std::unique_ptr<DualLimit> dual;  // set for a dual split (dual_limit.h)
+  std::unique_ptr<Sqrt3Limit> sqrt3;  // set for the sqrt3 split (sqrt3_limit.h)
+  std::unique_ptr<MidEdgeLimit> mid_edge;  // set for the mid-edge split (mid_edge_limit.h)
+  std::unique_ptr<PluginSplitLimit> plugin;  // set for a plugin's split (plugin_split_limit.h)
   // Set for a sequence: its head, and the limit of its tail over the mesh the head makes.
   std::unique_ptr<SequenceHead> head;
   std::unique_ptr<LimitSurface> tail;
@@ -459,12 +461,25 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
     if (const std::string why = dual_limit_unsupported(impl_->base); !why.empty())
       throw Error(fmt::format("scheme {} is a dual scheme and {}", subdiv::quoted(impl_->scheme->name), why));
   }
-  impl_->triangles = impl_->scheme->split() == SplitKind::Triangle;
+  if (impl_->scheme->split() == SplitKind::Sqrt3) {
+    if (const std::string why = sqrt3_limit_unsupported(impl_->base); !why.empty())
+      throw Error(fmt::format("scheme {} uses the sqrt3 split and {}", subdiv::quoted(impl_->scheme->name), why));
+  }
+  if (impl_->scheme->split() >= SplitKind(kFirstRegisteredSplit)) {
+    if (const std::string why = plugin_split_limit_unsupported(*impl_->scheme, impl_->base); !why.empty())
+      throw Error(why);
+  }
+  if (impl_->scheme->split() == SplitKind::MidEdge) {
+    if (const std::string why = mid_edge_limit_unsupported(impl_->base); !why.empty())
+      throw Error(fmt::format("scheme {} uses the mid-edge split and {}", subdiv::quoted(impl_->scheme->name), why));
+  }
+  impl_->triangles = impl_->scheme->split() == SplitKind::Triangle || impl_->scheme->split() == SplitKind::Sqrt3;
   // Children near the cut's rim follow the rim's artificial boundary; with a reach of r
   // parent rings, 2 r + 2 rings keep the face's own neighbourhood right from level to level.
   const SchemeRun run{impl_->scheme.get(), 1};
   double loss = 1;
-  for (double x : ring_loss_per_level(std::span<const SchemeRun>(&run, 1))) loss = std::max(loss, x);
+  if (impl_->scheme->split() < SplitKind(kFirstRegisteredSplit))  // a plugin's split may not state its reach
+    for (double x : ring_loss_per_level(std::span<const SchemeRun>(&run, 1))) loss = std::max(loss, x);
   impl_->radius = std::max(4, 2 * int(std::ceil(loss)) + 2);
   // The evaluation carries the vertices within a few rings of the face (at most radius - 2:
   // the rim's two rings absorb the cut's artificial boundary); the nodes check that each
@@ -475,6 +490,14 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   impl_->cache = impl_->make_cache(1);
   if (impl_->scheme->split() == SplitKind::Dual)
     impl_->dual = std::make_unique<DualLimit>(*impl_->scheme, impl_->base, options, impl_->radius, *impl_->limits);
+  if (impl_->scheme->split() == SplitKind::Sqrt3)
+    impl_->sqrt3 = std::make_unique<Sqrt3Limit>(*impl_->scheme, impl_->base, options, *impl_->limits);
+  if (impl_->scheme->split() == SplitKind::MidEdge)
+    impl_->mid_edge = std::make_unique<MidEdgeLimit>(*impl_->scheme, impl_->base, options, *impl_->limits);
+  if (impl_->scheme->split() >= SplitKind(kFirstRegisteredSplit)) {
+    impl_->plugin = std::make_unique<PluginSplitLimit>(*impl_->scheme, impl_->base, options, *impl_->limits);
+    impl_->triangles = impl_->plugin->triangles();
+  }
 }
 
 LimitSurface::LimitSurface(std::vector<LimitHeadRun> head, std::shared_ptr<const Scheme> tail, Level base,
@@ -610,6 +633,30 @@ LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double
         first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
     return tbb::this_task_arena::isolate([&] { return impl_->dual->evaluate(p, first, channels, derivatives); });
   }
+  if (impl_->plugin) {
+    const std::vector<Index> reads = impl_->plugin->reads(p);
+    std::vector<double> first(reads.size() * size_t(channels));
+    for (size_t k = 0; k < reads.size(); ++k)
+      for (int c = 0; c < channels; ++c)
+        first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
+    return tbb::this_task_arena::isolate([&] { return impl_->plugin->evaluate(p, first, channels, derivatives); });
+  }
+  if (impl_->mid_edge) {
+    const std::vector<Index> reads = impl_->mid_edge->reads(p);
+    std::vector<double> first(reads.size() * size_t(channels));
+    for (size_t k = 0; k < reads.size(); ++k)
+      for (int c = 0; c < channels; ++c)
+        first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
+    return tbb::this_task_arena::isolate([&] { return impl_->mid_edge->evaluate(p, first, channels, derivatives); });
+  }
+  if (impl_->sqrt3) {
+    const std::vector<Index> reads = impl_->sqrt3->reads(p);
+    std::vector<double> first(reads.size() * size_t(channels));
+    for (size_t k = 0; k < reads.size(); ++k)
+      for (int c = 0; c < channels; ++c)
+        first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
+    return tbb::this_task_arena::isolate([&] { return impl_->sqrt3->evaluate(p, first, channels, derivatives); });
+  }
   return impl_->with_cache([&](Impl::Cache& cache) {
     const std::vector<Index> reads = impl_->reads(cache, p);
     std::vector<double> first(reads.size() * size_t(channels));
@@ -629,7 +676,34 @@ LimitStencil LimitSurface::stencil(Index face, double u, double v, int derivativ
   // neighbourhood (the only vertices it reads) as channels.
   std::vector<Index> original;
   Impl::DerivativeRows rows;
-  const LimitSample s = impl_->dual ? tbb::this_task_arena::isolate([&] {
+  const LimitSample s = impl_->plugin ? tbb::this_task_arena::isolate([&] {
+    original = impl_->plugin->reads(p);
+    const size_t n = original.size();
+    std::vector<double> unit(n * n, 0.0);
+    for (size_t k = 0; k < n; ++k) unit[k * n + k] = 1.0;
+    PluginSplitLimit::Rows r;
+    LimitSample out = impl_->plugin->evaluate(p, unit, int(n), derivatives, &r);
+    rows.du = std::move(r.du), rows.dv = std::move(r.dv);
+    return out;
+  }) : impl_->mid_edge ? tbb::this_task_arena::isolate([&] {
+    original = impl_->mid_edge->reads(p);
+    const size_t n = original.size();
+    std::vector<double> unit(n * n, 0.0);
+    for (size_t k = 0; k < n; ++k) unit[k * n + k] = 1.0;
+    MidEdgeLimit::Rows r;
+    LimitSample out = impl_->mid_edge->evaluate(p, unit, int(n), derivatives, &r);
+    rows.du = std::move(r.du), rows.dv = std::move(r.dv);
+    return out;
+  }) : impl_->sqrt3 ? tbb::this_task_arena::isolate([&] {
+    original = impl_->sqrt3->reads(p);
+    const size_t n = original.size();
+    std::vector<double> unit(n * n, 0.0);
+    for (size_t k = 0; k < n; ++k) unit[k * n + k] = 1.0;
+    Sqrt3Limit::Rows r;
+    LimitSample out = impl_->sqrt3->evaluate(p, unit, int(n), derivatives, &r);
+    rows.du = std::move(r.du), rows.dv = std::move(r.dv);
+    return out;
+  }) : impl_->dual ? tbb::this_task_arena::isolate([&] {
     original = impl_->dual->reads(p);
     const size_t n = original.size();
     std::vector<double> unit(n * n, 0.0);

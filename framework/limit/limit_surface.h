@@ -25,10 +25,12 @@
 // (Catmull-Clark, Loop, the butterflies, bilinear, composite split + averaging schemes), and
 // the dual split (Doo-Sabin, even-degree quad B-splines; dual_limit.h, in the quad split's
 // parameterisation read as nested quadrants), with regular boundaries, infinitely sharp creases
-// and corners (dual_crease_chart.h says which).
-// Refused with the reason: non-linear rules (no limit stencil exists), level-dependent
-// weights (no fixed local subdivision matrix), and for now the √3 and mid-edge splits
-// (their children do not nest inside one parent face or quadrant).
+// and corners (dual_crease_chart.h says which); the √3 split on closed untagged meshes
+// (sqrt3_limit.h: two steps are a triadic split of each base triangle); the mid-edge split
+// there (mid_edge_limit.h: two steps are a dual step of the halved grid); and plugins' splits
+// that scale each face into m x m affine copies (plugin_split_limit.h). Refused with the
+// reason: non-linear rules (no limit stencil exists), level-dependent weights (no fixed local
+// subdivision matrix).
 #include <array>
 #include <memory>
 #include <span>

@@ -120,8 +120,8 @@ def test_bad_points_schemes_and_arguments_are_refused():
     with pytest.raises(sk.Error, match="one row per control point"):
         S.evaluate([0], [[0.5, 0.5]], points=np.zeros((3, 3)))
     octahedron = sk.read_mesh(str(MESHES / "octahedron.obj"))
-    with pytest.raises(sk.Error, match="sqrt3.*do not nest inside one parent face"):
-        sk.LimitSurface(octahedron, "sqrt3")
+    with pytest.raises(sk.Error, match="mid-edge split and the mesh has a boundary"):
+        sk.LimitSurface(sk.read_mesh(str(MESHES / "plane-with-hole.obj")), "mid-edge")
     with pytest.raises(sk.Error, match="comes before the scheme that repeats"):
         sk.LimitSurface(octahedron, "sqrt3:1,loop")
     with pytest.raises(sk.Error, match="expected a subdivkit.Mesh"):
@@ -154,6 +154,32 @@ def test_face_varying_uvs_at_the_same_points_in_each_mode(tmp_path):
     assert np.array_equal(written[:, -2:], smooth.points)
     with pytest.raises(sk.Error, match="face-varying array 'st': the mesh has 'uv'"):
         linear.evaluate_face_varying("st", faces, uv)
+
+
+def test_sqrt3_is_evaluated_in_the_triadic_parameterisation(tmp_path):
+    # Kobbelt's sqrt3 on the octahedron: the command line's numbers; at a base vertex the
+    # vertex's limit position; at a face's (1/3, 1/3), where the first step puts the face's
+    # point, the limit position of that level-1 vertex (sk.limit_positions of the refined
+    # mesh: child vertices keep the parent's numbers, then one per face).
+    mesh = sk.read_mesh(str(MESHES / "octahedron.obj"))
+    faces, uv = random_points(8, 3, seed=9, triangles=True)
+    points = tmp_path / "points.csv"
+    points.write_text("face,u,v\n" + "".join(f"{f},{u!r},{v!r}\n" for f, (u, v) in zip(faces, uv)))
+    out = tmp_path / "out.csv"
+    run_cli("evaluate", MESHES / "octahedron.obj", "-s", "sqrt3", "--at", points, "-o", out)
+    written = np.loadtxt(out, delimiter=",", skiprows=1)
+    r = sk.evaluate(mesh, "sqrt3", faces, uv)
+    assert np.array_equal(written[:, 3:], np.hstack([r.points, r.du, r.dv]))
+    S = sk.LimitSurface(mesh, "sqrt3")
+    assert S.triangles
+    limit = sk.limit_positions(mesh, "sqrt3").points
+    corners = mesh.face_indices.reshape(-1, 3)
+    at_corner = S.evaluate([0, 0, 0], [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]], derivatives=0)
+    assert np.abs(at_corner.points - limit[corners[0]]).max() < 1e-13
+    refined = sk.refine(mesh, "sqrt3", 1)
+    level1 = sk.limit_positions(refined, "sqrt3", start_level=1).points
+    centre = S.evaluate([5], [[1.0 / 3, 1.0 / 3]], derivatives=0)
+    assert np.abs(centre.points[0] - level1[mesh.n_points + 5]).max() < 1e-13
 
 
 def test_dual_schemes_are_evaluated_with_stencils_and_the_command_line_numbers(tmp_path):

@@ -216,7 +216,7 @@ void add_evaluate_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "evaluate", "Points of the limit surface at given (face, u, v), exactly (OpenSubdiv Bfr's parameterisation)");
   cmd->add_option("mesh", args->mesh, "Input mesh")->required()->check(CLI::ExistingFile);
-  cmd->add_option("-s,--scheme", args->scheme, "Scheme name or .json file (binary quad or triangle split)")
+  cmd->add_option("-s,--scheme", args->scheme, "Scheme name or .json file (binary quad or triangle, dual, sqrt3 or mid-edge split)")
       ->capture_default_str();
   add_param_option(cmd, args->params);
   add_boundary_option(cmd, "--boundary", args->boundary);
@@ -264,7 +264,8 @@ void add_evaluate_command(CLI::App& app) {
       ->required();
   cmd->add_option("-j,--threads", args->threads, "Worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
   cmd->footer("Parameters: quads (0,0) (1,0) (1,1) (0,1); triangles (0,0) (1,0) (0,1); other faces of quad schemes\n"
-              "Bfr's QUAD_SUBFACES tiles. Example: subdiv evaluate examples/meshes/cube.obj --at points.csv -o limit.csv");
+              "Bfr's QUAD_SUBFACES tiles (also for dual and mid-edge schemes); sqrt3: the triangle's, two steps a triadic\n"
+              "split (docs/limit.md). Example: subdiv evaluate examples/meshes/cube.obj --at points.csv -o limit.csv");
   cmd->callback([cmd, args] {
     args->boundary_given = cmd->count("--boundary") > 0;
     args->crease_method_given = cmd->count("--crease-method") > 0;

@@ -159,11 +159,11 @@ TEST_CASE("subdiv evaluate refuses bad rows with their number and leaves no outp
     CHECK(!fs::exists(dir / "out.csv"));
   }
   write(dir / "points.csv", "face,u,v\n0,0.5,0.5\n");
-  const auto sqrt3 = test::run_subdiv("evaluate " + test::source_path("examples/meshes/octahedron.obj") +
-                                      " -s sqrt3 --at " + (dir / "points.csv").string() + " -o " +
-                                      (dir / "out.csv").string());
-  CHECK(sqrt3.exit_code != 0);
-  CHECK(sqrt3.output.find("do not nest inside one parent face") != std::string::npos);
+  const auto mid_edge = test::run_subdiv("evaluate " + test::source_path("examples/meshes/plane-with-hole.obj") +
+                                         " -s mid-edge --at " + (dir / "points.csv").string() + " -o " +
+                                         (dir / "out.csv").string());
+  CHECK(mid_edge.exit_code != 0);
+  CHECK(mid_edge.output.find("mid-edge split and the mesh has a boundary") != std::string::npos);
   CHECK(!fs::exists(dir / "out.csv"));
 }
 

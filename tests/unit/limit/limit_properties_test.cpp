@@ -206,8 +206,8 @@ TEST_CASE("Points arbitrarily close to an extraordinary vertex cost no more than
 }
 
 TEST_CASE("Schemes without a fixed limit operator, and unsupported splits, are refused with the reason") {
-  CHECK_THROWS_WITH_AS(LimitSurface(load_scheme("sqrt3"), octahedron().level()),
-                       doctest::Contains("do not nest inside one parent face"), Error);
+  CHECK_THROWS_WITH_AS(LimitSurface(load_scheme("mid-edge"), test::grid(2, 2).level()),
+                       doctest::Contains("mid-edge split and the mesh has a boundary"), Error);
   const LimitSurface s(load_scheme("catmull-clark"), test::cube().level());
   CHECK(s.check(7, 0.5, 0.5).find("does not exist") != std::string::npos);
   CHECK(s.check(0, 1.5, 0.5).find("outside the unit square") != std::string::npos);

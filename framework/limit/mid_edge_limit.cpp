@@ -1,0 +1,204 @@
+#include "framework/limit/mid_edge_limit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "framework/analysis/surface/limit_evaluation.h"
+#include "framework/analysis/surface/local_patch.h"
+#include "framework/engine/ghost_rings.h"
+#include "framework/limit/dual_limit.h"
+#include "framework/limit/mid_edge_nodes.h"
+#include "framework/limit/step_matrix.h"
+#include "framework/scheme/scheme.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+// The current cut: a level around the point's face, and its vertices in the level it was cut from.
+struct Cut {
+  Level level;
+  std::vector<Index> original;
+  FacePoint point;
+};
+
+Cut cut_around(const Level& L, const FacePoint& p, int radius) {
+  Extracted e = extract_neighbourhood(L, CentreKind::Face, p.face, radius);
+  Cut c;
+  c.level = std::move(e.level);
+  c.original = std::move(e.original);
+  c.point = p;
+  for (size_t f = 0; f < e.face_original.size(); ++f)
+    if (e.face_original[f] == p.face) c.point.face = Index(f);
+  return c;
+}
+
+int corner_of(const Level& L, Index f, Index w) {
+  const auto fv = L.face(f);
+  for (size_t k = 0; k < fv.size(); ++k)
+    if (fv[k] == w) return int(k);
+  return -1;
+}
+
+// The point is the centre of its face: (1/2, 1/2) of a quad, the corner (1, 1) of a sub-face.
+bool at_centre(const FacePoint& p) {
+  return p.sub_face < 0 ? p.st[0] == 0.5 && p.st[1] == 0.5 : p.st[0] == 1 && p.st[1] == 1;
+}
+
+
+// The nearest corner of the point's quadrant (multiples of 1/2 of a quad, 0 or 1 of a sub-face).
+FacePoint nearest_corner(FacePoint p) {
+  for (double& x : p.st) x = p.sub_face < 0 ? std::round(2 * x) / 2 : std::round(x);
+  return p;
+}
+
+}  // namespace
+
+ChildOrigins mid_edge_double_origins(const Level& level0, const Level& level1, const ChildOrigins& step1,
+                                     const Level& level2, const ChildOrigins& step2) {
+  ChildOrigins o;
+  o.kind.assign(size_t(level2.vertex_count), OriginKind::Vertex);
+  o.parent.assign(size_t(level2.vertex_count), kNone);
+  o.local.assign(size_t(level2.vertex_count), 0);
+  for (Index v = 0; v < level2.vertex_count; ++v) {
+    if (step2.kind[size_t(v)] != OriginKind::Edge) continue;
+    const Index e1 = step2.parent[size_t(v)];
+    // The first step's edge lies in the F-face of one base face g, between the middles of two
+    // of g's edges, which meet at g's corner j.
+    Index g = kNone;
+    for (int side = 0; side < 2; ++side) {
+      const Index f1 = level1.edge_faces[size_t(2 * e1 + side)];
+      if (f1 != kNone && step1.parent_face[size_t(f1)] != kNone) g = step1.parent_face[size_t(f1)];
+    }
+    const Index a1 = level1.edge_vertices[size_t(2 * e1)], b1 = level1.edge_vertices[size_t(2 * e1 + 1)];
+    if (g == kNone || step1.kind[size_t(a1)] != OriginKind::Edge || step1.kind[size_t(b1)] != OriginKind::Edge) continue;
+    const Index ea = step1.parent[size_t(a1)], eb = step1.parent[size_t(b1)];
+    Index w = kNone;
+    for (int i = 0; i < 2; ++i)
+      for (int k = 0; k < 2; ++k)
+        if (level0.edge_vertices[size_t(2 * ea + i)] == level0.edge_vertices[size_t(2 * eb + k)])
+          w = level0.edge_vertices[size_t(2 * ea + i)];
+    const int j = w == kNone ? -1 : corner_of(level0, g, w);
+    if (j < 0) continue;
+    o.kind[size_t(v)] = OriginKind::Corner;
+    o.parent[size_t(v)] = g;
+    o.local[size_t(v)] = LocalIndex(j);
+  }
+  o.parent_face.assign(size_t(level2.face_count()), kNone);
+  for (Index f = 0; f < level2.face_count(); ++f) {
+    const Index f1 = step2.parent_face.empty() ? kNone : step2.parent_face[size_t(f)];
+    if (f1 != kNone) o.parent_face[size_t(f)] = step1.parent_face[size_t(f1)];
+  }
+  return o;
+}
+
+std::string mid_edge_limit_unsupported(const Level& base) {
+  for (Index v = 0; v < base.vertex_count; ++v)
+    if (base.on_boundary(v))
+      return "the mesh has a boundary: the parameterisation of the mid-edge limit along a boundary is not defined "
+             "yet; close the mesh";
+  for (float s : base.edge_sharpness)
+    if (s > 0) return "the mesh has sharp or semi-sharp edges: evaluation of mid-edge schemes with creases is not done yet";
+  for (float s : base.vertex_sharpness)
+    if (s > 0) return "the mesh has sharp vertices: evaluation of mid-edge schemes with corners is not done yet";
+  if (!base.face_hole.empty())
+    for (auto h : base.face_hole)
+      if (h) return "the mesh has holes: evaluation of mid-edge schemes next to holes is not done yet";
+  return {};
+}
+
+MidEdgeLimit::MidEdgeLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options,
+                           SchemeLimits& limits)
+    : base_(base), options_(options) {
+  // Two steps lose `loss` rings of the cut; the next cut, `radius` rings of faces half the
+  // size, must lie in what is left: radius / 2 + 1 <= radius - loss.
+  const SchemeRun run{&scheme, 2};
+  double loss = 0;
+  for (double x : ring_loss_per_level(std::span<const SchemeRun>(&run, 1))) loss += std::max(x, 0.0);
+  radius_ = std::max(5, int(std::ceil(2 * (loss + 1))) + 1);
+  nodes_ = std::make_unique<MidEdgeNodes>(scheme, options.features, radius_, limits);
+  entries_.resize(size_t(base.face_count()));
+}
+
+MidEdgeLimit::~MidEdgeLimit() = default;
+
+const MidEdgeLimit::Entry& MidEdgeLimit::entry(Index face) const {
+  {
+    std::lock_guard lock(entry_mutex_);
+    if (entries_[size_t(face)]) return *entries_[size_t(face)];
+  }
+  FacePoint p;
+  p.face = face;
+  const Cut cut = cut_around(base_, p, radius_);
+  auto e = std::make_unique<Entry>();
+  std::vector<Index> order;
+  e->node = nodes_->intern(cut.level, cut.point.face, order);
+  for (Index v : order) e->vertices.push_back(cut.original[size_t(v)]);
+  std::lock_guard lock(entry_mutex_);
+  if (!entries_[size_t(face)]) entries_[size_t(face)] = std::move(e);
+  return *entries_[size_t(face)];
+}
+
+std::vector<Index> MidEdgeLimit::reads(const FacePoint& p) const { return entry(p.face).vertices; }
+
+LimitSample MidEdgeLimit::evaluate(const FacePoint& p0, const std::vector<double>& first_values, int channels,
+                                   int derivatives, Rows* rows_out) const {
+  int id = entry(p0.face).node;
+  FacePoint point = p0;
+  std::vector<const StepMatrix*> path;
+  std::vector<double> values = first_values;
+  const int limit_steps = options_.max_steps + 40;
+  int tangent_steps = 0;  // steps taken past a quad's centre whose grid was not regular yet
+  for (int step = 0;; ++step) {
+    const MidEdgeNode& node = nodes_->expanded(id);
+    point.face = node.face;
+    if (step == options_.max_steps) point = nearest_corner(point);
+    if (at_centre(point)) {
+      std::string error;
+      const MidEdgeNode* c = nodes_->centre(id, error);
+      if (!c && !error.empty())
+        throw Error(fmt::format("no limit mask at the centre of a {}-sided face: {}", node.level.face_size(node.face),
+                                error));
+      // A quad's centre has derivatives: where its grid is not regular yet, go on (the point
+      // stays the centre of the quad's F-face) a few steps.
+      const bool tangents = c && derivatives >= 1 && !c->ds.empty();
+      if (c && (tangents || derivatives == 0 || node.level.face_size(node.face) != 4 || ++tangent_steps > 12)) {
+        LimitSample out;
+        out.steps = step;
+        out.position = applied(c->position, values, channels);
+        if (tangents) {
+          // d(s, t)/d(u, v) is 2^k times a number of order one after k double steps; the rows
+          // start at 2^-k times their size and each step's factor 2 restores it (step_matrix.h).
+          const auto& J = point.jacobian;
+          const double scale = std::ldexp(1.0, -step);
+          auto pulled = [&](int d) {
+            std::vector<double> r(c->ds.size());
+            for (size_t i = 0; i < r.size(); ++i) r[i] = scale * (J[0][size_t(d)] * c->ds[i] + J[1][size_t(d)] * c->dt[i]);
+            return pulled_back(std::move(r), path);
+          };
+          std::vector<double> u = pulled(0), v = pulled(1);
+          out.du = applied(u, first_values, channels);
+          out.dv = applied(v, first_values, channels);
+          out.has_derivatives = true;
+          if (rows_out) rows_out->du = std::move(u), rows_out->dv = std::move(v);
+        }
+        return out;
+      }
+    }
+    if (step >= limit_steps)
+      throw Error(fmt::format("internal: the point reached no face centre with a known neighbourhood in {} double "
+                              "mid-edge steps", step));
+    const std::optional<FacePoint> q = dual_child_point(node.level, node.steps.levels[2], node.origins, point);
+    if (!q) throw Error("internal: no face two mid-edge steps make holds the point");
+    const MidEdgeNode::Child& child = nodes_->child(id, q->face);
+    path.push_back(&child.matrix);
+    std::vector<double> moved(size_t(child.matrix.rows()) * size_t(channels));
+    child.matrix.apply(values, moved, channels);
+    values.swap(moved);
+    id = child.node;
+    point = *q;
+  }
+}
+
+}  // namespace subdiv

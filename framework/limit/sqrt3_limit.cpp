@@ -1,0 +1,212 @@
+#include "framework/limit/sqrt3_limit.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <fmt/format.h>
+
+#include "framework/analysis/surface/local_patch.h"
+#include "framework/engine/ghost_rings.h"
+#include "framework/limit/corner_limit.h"
+#include "framework/limit/sqrt3_nodes.h"
+#include "framework/limit/step_matrix.h"
+#include "framework/scheme/scheme.h"
+#include "framework/util/error.h"
+
+namespace subdiv {
+namespace {
+
+// The current cut: a level around the point's face, and its vertices in the level it was cut from.
+struct Cut {
+  Level level;
+  std::vector<Index> original;
+  Index face = kNone;
+};
+
+Cut cut_around(const Level& L, Index face, int radius) {
+  Extracted e = extract_neighbourhood(L, CentreKind::Face, face, radius);
+  Cut c;
+  c.level = std::move(e.level);
+  c.original = std::move(e.original);
+  for (size_t f = 0; f < e.face_original.size(); ++f)
+    if (e.face_original[f] == face) c.face = Index(f);
+  return c;
+}
+
+// The point in its triangle: barycentric coordinates from the face's corner 0 (b[1], b[2] are
+// its (s, t)), and d(s, t)/d(u, v) carried as 3^-k times its value after k double steps, so
+// that derivative rows stay of order one (step_matrix.h).
+struct TrianglePoint {
+  Bary b{1, 0, 0};
+  Jacobian jacobian{{{1, 0}, {0, 1}}};
+};
+
+
+}  // namespace
+
+std::string sqrt3_limit_unsupported(const Level& base) {
+  for (Index v = 0; v < base.vertex_count; ++v)
+    if (base.on_boundary(v))
+      return "the mesh has a boundary: sqrt3 schemes trisect boundary edges every second step, and the limit's "
+             "parameterisation along a boundary is not defined yet; close the mesh, or use a primal scheme";
+  for (float s : base.edge_sharpness)
+    if (s > 0) return "the mesh has sharp or semi-sharp edges: evaluation of sqrt3 schemes with creases is not done yet";
+  for (float s : base.vertex_sharpness)
+    if (s > 0) return "the mesh has sharp vertices: evaluation of sqrt3 schemes with corners is not done yet";
+  if (!base.face_hole.empty())
+    for (auto h : base.face_hole)
+      if (h) return "the mesh has holes: evaluation of sqrt3 schemes next to holes is not done yet";
+  return {};
+}
+
+Sqrt3Limit::Sqrt3Limit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options,
+                       SchemeLimits& limits)
+    : base_(base) {
+  // Two steps lose `loss` rings of the cut (in its own rings, an over-estimate for the second
+  // step's smaller ones); the next cut, `radius` rings of triangles a third the size, must lie
+  // in what is left: radius / 3 + 1 <= radius - loss.
+  const SchemeRun run{&scheme, 2};
+  double loss = 0;
+  for (double x : ring_loss_per_level(std::span<const SchemeRun>(&run, 1))) loss += std::max(x, 0.0);
+  radius_ = std::max(5, int(std::ceil(1.5 * (loss + 1))) + 1);
+  nodes_ = std::make_unique<Sqrt3Nodes>(scheme, options.features, radius_, limits);
+  entries_.resize(size_t(base.face_count()));
+}
+
+Sqrt3Limit::~Sqrt3Limit() = default;
+
+const Sqrt3Limit::Entry& Sqrt3Limit::entry(Index face) const {
+  {
+    std::lock_guard lock(entry_mutex_);
+    if (entries_[size_t(face)]) return *entries_[size_t(face)];
+  }
+  const Cut cut = cut_around(base_, face, radius_);
+  auto e = std::make_unique<Entry>();
+  std::vector<Index> order;
+  e->node = nodes_->intern(cut.level, cut.face, order);
+  for (Index v : order) e->vertices.push_back(cut.original[size_t(v)]);
+  std::lock_guard lock(entry_mutex_);
+  if (!entries_[size_t(face)]) entries_[size_t(face)] = std::move(e);
+  return *entries_[size_t(face)];
+}
+
+std::vector<Index> Sqrt3Limit::reads(const FacePoint& p) const { return entry(p.face).vertices; }
+
+LimitSample Sqrt3Limit::evaluate(const FacePoint& p0, const std::vector<double>& first_values, int channels,
+                                 int derivatives, Rows* rows_out) const {
+  int id = entry(p0.face).node;
+  TrianglePoint q;
+  q.b = {1 - p0.st[0] - p0.st[1], p0.st[0], p0.st[1]};
+  q.jacobian = p0.jacobian;
+  std::vector<const StepMatrix*> path;
+  std::vector<double> values = first_values;
+  int stop = kRoundOffSteps;
+  const int give_up = 24 * kRoundOffSteps;  // past the smallest double's distance to a vertex (3^-680)
+  std::string mask_error;
+  for (int step = 0;; ++step) {
+    const Sqrt3Node& node = nodes_->expanded(id);
+    if (node.extraordinary) stop = std::max(stop, step + kRoundOffSteps);
+    const int k = int(std::max_element(q.b.begin(), q.b.end()) - q.b.begin());
+    // Exactly at a corner: the other two coordinates are 0 (the largest, 1 less them, may
+    // round to 1 for a point 1e-300 away, which is not at the corner).
+    const bool at_vertex = q.b[size_t((k + 1) % 3)] == 0 && q.b[size_t((k + 2) % 3)] == 0;
+    if (at_vertex || step >= stop) {
+      if (const CornerRows* rows = nodes_->corner(id, k, mask_error)) {
+        LimitSample out;
+        out.steps = step;
+        out.position = applied(rows->position, values, channels);
+        if (derivatives >= 1 && !rows->ds.empty()) {
+          const auto& J = q.jacobian;
+          auto row = [&](int d) {
+            std::vector<double> r(rows->ds.size());
+            for (size_t i = 0; i < r.size(); ++i) r[i] = J[0][size_t(d)] * rows->ds[i] + J[1][size_t(d)] * rows->dt[i];
+            return pulled_back(std::move(r), path);
+          };
+          std::vector<double> u = row(0), v = row(1);
+          out.du = applied(u, first_values, channels);
+          out.dv = applied(v, first_values, channels);
+          out.has_derivatives = true;
+          if (rows_out) rows_out->du = std::move(u), rows_out->dv = std::move(v);
+        }
+        return out;
+      }
+    }
+    if (step >= give_up)
+      throw Error(fmt::format("internal: the point's nearest vertex has no limit mask after {} double sqrt3 steps{}{}", step,
+                              mask_error.empty() ? "" : ": ", mask_error));
+    // The child holding the point: every coordinate >= 0, else the least outside (round-off).
+    size_t best = 0;
+    double best_min = -std::numeric_limits<double>::infinity();
+    Bary beta{};
+    for (size_t i = 0; i < node.children.size(); ++i) {
+      const Bary x = in_child(node.children[i], q.b);
+      const double lowest = std::min({x[0], x[1], x[2]});
+      if (lowest > best_min) best_min = lowest, best = i, beta = x;
+    }
+    const TriadicChild& t = node.children[best];
+    auto advance = [&](TrianglePoint& x, const Bary& b) {
+      TrianglePoint next;
+      next.b = b;
+      for (int m = 1; m < 3; ++m) {
+        const auto g = child_gradient(t, m);
+        for (size_t c = 0; c < 2; ++c) next.jacobian[size_t(m - 1)][c] = g[0] * x.jacobian[0][c] + g[1] * x.jacobian[1][c];
+      }
+      x = next;
+    };
+    advance(q, beta);
+    // A self-similar run (towards a vertex the point is near): the same node and child again
+    // and again. Its length follows from the point alone; the run is taken with the step's
+    // powers, one product per binary digit of its length (as the primal evaluator does).
+    // A point exactly at the vertex (at_vertex) stays there; it steps only until the vertex's
+    // neighbourhood is a known configuration. Elsewhere than next to an extraordinary vertex
+    // a run stops where the descent does (`stop`).
+    int run = 1;
+    if (node.child_node[best] == id && !at_vertex) {
+      for (;;) {
+        size_t again = 0;
+        double again_min = -std::numeric_limits<double>::infinity();
+        Bary x{};
+        for (size_t i = 0; i < node.children.size(); ++i) {
+          const Bary y = in_child(node.children[i], q.b);
+          const double lowest = std::min({y[0], y[1], y[2]});
+          if (lowest > again_min) again_min = lowest, again = i, x = y;
+        }
+        if (again != best || run >= (1 << Sqrt3Nodes::kPowers) - 1 || step + run >= give_up ||
+            (!node.extraordinary && step + run >= stop))
+          break;
+        advance(q, x);
+        ++run;
+      }
+    }
+    if (node.extraordinary) stop = std::max(stop, step + run - 1 + kRoundOffSteps);
+    if (run == 1) {
+      const StepMatrix& M = node.child_matrix[best];
+      path.push_back(&M);
+      std::vector<double> moved(size_t(M.rows()) * size_t(channels));
+      M.apply(values, moved, channels);
+      values.swap(moved);
+    } else {
+      // Applied to the values less those of label 0 (added back after): the rows of a power
+      // sum to one only to round-off that grows with the power, which then multiplies the small
+      // differences of a cut 3^-k across instead of the values themselves.
+      const Sqrt3Node::Powers& P = nodes_->powers(id, int(best));
+      for (int j = 0; j < Sqrt3Nodes::kPowers; ++j) {
+        if (!(run >> j & 1)) continue;
+        const StepMatrix& M = P.forward[size_t(j)];
+        path.push_back(&M);
+        const std::vector<double> base(values.begin(), values.begin() + channels);
+        for (size_t i = 0; i < values.size(); ++i) values[i] -= base[i % size_t(channels)];
+        std::vector<double> moved(size_t(M.rows()) * size_t(channels));
+        M.apply(values, moved, channels);
+        for (size_t i = 0; i < moved.size(); ++i) moved[i] += base[i % size_t(channels)];
+        values.swap(moved);
+      }
+    }
+    id = node.child_node[best];
+    step += run - 1;
+  }
+}
+
+}  // namespace subdiv

@@ -1,0 +1,91 @@
+#pragma once
+// The limit surface of a √3 scheme (Kobbelt 2000, "√3-subdivision"; Labsik & Greiner 2000,
+// "Interpolatory √3-subdivision") at (face, u, v).
+//
+// Parameterisation (docs/limit.md, "√3 schemes"): Bfr's triangle, corners (0,0), (1,0), (0,1),
+// read in barycentric coordinates b = (1 - u - v, u, v). One √3 step puts a point at every
+// triangle's centroid and flips the old edges, so a child triangle straddles an old edge and
+// one step does not nest. Two steps do: they are a 1-to-9 triadic split of every triangle
+// (Kobbelt 2000, section 2: "applying the √3 operator twice ... a tri-section of every
+// original edge"). The vertices after two steps are the old vertices, the old faces' points
+// (at the centroid, b = (1/3, 1/3, 1/3)) and the points of the level-1 faces, one over each
+// third of an old edge (the centroid of (a, P(f0), P(f1)) is (2a + b) / 3 when the grid is
+// unfolded affinely across the edge). They are the lattice points 3b in Z^3, and the nine
+// triangles between them (six like the parent, three turned by 180 degrees) each lie in one
+// old triangle. The child's own (s, t) are its barycentric coordinates from its corner 0,
+// as the level's face lists it.
+//
+// Evaluation follows the point down two steps at a time, through cuts around its triangle
+// refined with the scheme's own rules (the engine; each configuration once, sqrt3_nodes.h), to
+// the triangle of level 2k that holds it. A double is
+// not a ternary rational, so the point never becomes a vertex (except the base corners and
+// points on their edges' lattice lines that are exact): after 34 double steps the triangle
+// is 3^-34 < 2^-53 of the base triangle, and the point is taken at its nearest corner, whose
+// limit mask (the left eigenvector of 1 of its local subdivision matrix) gives the position
+// and whose tangent masks give the derivatives (analysis/surface/limit_evaluation.h,
+// corner_limit.h). The error is at most the triangle's size times the first derivative for
+// positions and times the second for the derivatives: round-off. Next to an extraordinary
+// vertex the derivatives change on the scale of the distance to it, so the descent goes on
+// 34 double steps past the last triangle that touches the extraordinary vertex (a run of the
+// same neighbourhood and child is taken at once with the step's matrix powers,
+// sqrt3_nodes.h); a point exactly at a vertex stops there (no derivatives at an
+// extraordinary one).
+//
+// Refused (sqrt3_limit_unsupported): boundaries (trisected every second step, whose
+// parameterisation along the boundary is not defined here yet), sharp and semi-sharp edges
+// and vertices, holes.
+#include <memory>
+#include <mutex>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "framework/limit/face_domain.h"
+#include "framework/limit/limit_surface.h"
+
+namespace subdiv {
+
+class SchemeLimits;
+class Sqrt3Nodes;
+
+class Sqrt3Limit {
+public:
+  Sqrt3Limit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options, SchemeLimits& limits);
+  ~Sqrt3Limit();
+
+  // The base vertices an evaluation at `p` (from base_face_point) reads, in the order
+  // `evaluate` takes their values.
+  std::vector<Index> reads(const FacePoint& p) const;
+
+  // Rows of the derivatives over those vertices (for stencils).
+  struct Rows {
+    std::vector<double> du, dv;
+  };
+  LimitSample evaluate(const FacePoint& p, const std::vector<double>& first_values, int channels, int derivatives,
+                       Rows* rows_out = nullptr) const;
+
+  // Face rings of the cut around the current face.
+  int radius() const { return radius_; }
+
+  // Double steps after which the triangle holding a point is below round-off (3^-34 < 2^-53).
+  static constexpr int kRoundOffSteps = 34;
+
+private:
+  const Level& base_;
+  int radius_ = 5;
+  std::unique_ptr<Sqrt3Nodes> nodes_;  // shared by all evaluations (thread-safe)
+  // Per base face (made on first use): the node of its cut and the base vertices in the node's
+  // label order, which is the order reads() gives and evaluate() takes.
+  struct Entry {
+    int node = -1;
+    std::vector<Index> vertices;
+  };
+  const Entry& entry(Index face) const;
+  mutable std::mutex entry_mutex_;
+  mutable std::vector<std::unique_ptr<Entry>> entries_;
+};
+
+// Why the √3 evaluation cannot take this mesh, or empty.
+std::string sqrt3_limit_unsupported(const Level& base);
+
+}  // namespace subdiv

@@ -1,0 +1,171 @@
+// Limit evaluation on a plugin's split: the example √2 plugin (the 4-8 / √2 split of Li, Ma &
+// Bao 2004, which turns a quad grid by 45 degrees each step and is a binary quad split every
+// second step) with its JSON scheme (face points at centroids, v' = v/2 + mean of its new face
+// points / 2). Against the limit masks of the surface analysis at base vertices and at the
+// vertices two steps make (face centres and edge middles), continuity across every edge,
+// linear precision on a regular grid, derivatives against central differences, stencils
+// against evaluation, and the refusals.
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+
+#include "framework/analysis/surface/limit_evaluation.h"
+#include "framework/engine/refiner.h"
+#include "framework/limit/limit_surface.h"
+#include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/util/error.h"
+#include "support/test_meshes.h"
+#include "unit/plugins/plugin_test_support.h"
+
+using namespace subdiv;
+
+namespace {
+
+double distance(std::span<const double> a, std::span<const double> b) {
+  double s = 0;
+  for (size_t i = 0; i < a.size(); ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(s);
+}
+
+test::Mesh bumped(test::Mesh m) {
+  for (Index v = 0; v < m.vertex_count; ++v) {
+    m.positions[size_t(3 * v)] += 0.07 * std::sin(2.3 * v + 0.1);
+    m.positions[size_t(3 * v + 1)] += 0.05 * std::cos(1.1 * v + 0.4);
+    m.positions[size_t(3 * v + 2)] += 0.1 * std::sin(1.7 * v + 0.3);
+  }
+  return m;
+}
+
+// (u, v) of the point t of the way along edge k of a quad.
+std::array<double, 2> edge_uv(int k, double t) {
+  constexpr double c[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const int l = (k + 1) % 4;
+  return {c[k][0] + t * (c[l][0] - c[k][0]), c[k][1] + t * (c[l][1] - c[k][1])};
+}
+
+int edge_in_face(const Level& L, Index f, Index a, Index b) {
+  const auto fv = L.face(f);
+  for (int k = 0; k < 4; ++k)
+    if (fv[size_t(k)] == a && fv[size_t((k + 1) % 4)] == b) return k;
+  return -1;
+}
+
+}  // namespace
+
+TEST_CASE("A plugin's split (sqrt2): base vertices and the vertices two steps make against their limit masks") {
+  test::load_example_plugins();
+  const auto scheme = load_scheme("sqrt2");
+  const test::Mesh m = bumped(test::cube());
+  const Level L = m.level();
+  const LimitSurface s(scheme, L);
+  const LimitResult masks = limit_positions(*scheme, L, m.positions);
+  double worst = 0;
+  for (Index f = 0; f < L.face_count(); ++f)
+    for (int k = 0; k < 4; ++k) {
+      const auto uv = edge_uv(k, 0);
+      const LimitSample p = s.evaluate(f, uv[0], uv[1], m.positions, 3);
+      worst = std::max(worst, distance(p.position, std::span(masks.positions).subspan(size_t(3 * L.face(f)[size_t(k)]), 3)));
+      CHECK(!p.has_derivatives);  // every cube vertex has valence 3
+    }
+  CHECK(worst < 1e-13);
+  // Two steps: level 1 adds a point per face (vertex V + f, at the face's centre), level 2 a
+  // point per level-1 face, one per base edge e (vertex V + F + e, at the edge's middle).
+  RefineOptions ro;
+  ro.levels = 2;
+  const Hierarchy h = refine(*scheme, L, ro);
+  const std::vector<double> p2 = h.stencils[1].apply(h.stencils[0].apply(m.positions, 3), 3);
+  LimitOptions lo;
+  lo.first_step = 2;
+  const LimitResult level2 = limit_positions(*scheme, h.levels[2], p2, lo);
+  REQUIRE(h.levels[2].vertex_count == L.vertex_count + L.face_count() + L.edge_count());
+  worst = 0;
+  for (Index f = 0; f < L.face_count(); ++f) {
+    const LimitSample p = s.evaluate(f, 0.5, 0.5, m.positions, 3, 0);
+    worst = std::max(worst, distance(p.position, std::span(level2.positions).subspan(size_t(3 * (L.vertex_count + f)), 3)));
+  }
+  for (Index e = 0; e < L.edge_count(); ++e) {
+    const Index a = L.edge_vertices[size_t(2 * e)], b = L.edge_vertices[size_t(2 * e + 1)];
+    const Index f = L.edge_faces[size_t(2 * e)];
+    const auto uv = edge_uv(edge_in_face(L, f, a, b), 0.5);
+    const LimitSample p = s.evaluate(f, uv[0], uv[1], m.positions, 3, 0);
+    const Index v = L.vertex_count + L.face_count() + e;
+    worst = std::max(worst, distance(p.position, std::span(level2.positions).subspan(size_t(3 * v), 3)));
+  }
+  CHECK(worst < 1e-13);
+}
+
+TEST_CASE("A plugin's split (sqrt2): continuous across every edge, derivatives, stencils") {
+  test::load_example_plugins();
+  const auto scheme = load_scheme("sqrt2");
+  const test::Mesh m = bumped(test::cube());
+  const Level L = m.level();
+  const LimitSurface s(scheme, L);
+  double worst = 0;
+  for (Index e = 0; e < L.edge_count(); ++e) {
+    const Index a = L.edge_vertices[size_t(2 * e)], b = L.edge_vertices[size_t(2 * e + 1)];
+    const Index f0 = L.edge_faces[size_t(2 * e)], f1 = L.edge_faces[size_t(2 * e + 1)];
+    for (double t : {0.3, 0.71}) {
+      const auto x = edge_uv(edge_in_face(L, f0, a, b), t), y = edge_uv(edge_in_face(L, f1, b, a), 1 - t);
+      worst = std::max(worst, distance(s.evaluate(f0, x[0], x[1], m.positions, 3, 0).position,
+                                       s.evaluate(f1, y[0], y[1], m.positions, 3, 0).position));
+    }
+  }
+  CHECK(worst < 1e-13);
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<double> U(0.1, 0.9);
+  double fd = 0;
+  for (int k = 0; k < 4; ++k) {
+    const Index f = Index(k);
+    const double u = U(rng), v = U(rng), h = 1e-5;
+    const LimitSample p = s.evaluate(f, u, v, m.positions, 3);
+    REQUIRE(p.has_derivatives);
+    const LimitSample a = s.evaluate(f, u + h, v, m.positions, 3, 0), b = s.evaluate(f, u - h, v, m.positions, 3, 0);
+    const LimitSample c = s.evaluate(f, u, v + h, m.positions, 3, 0), d = s.evaluate(f, u, v - h, m.positions, 3, 0);
+    for (size_t r = 0; r < 3; ++r) {
+      fd = std::max(fd, std::fabs((a.position[r] - b.position[r]) / (2 * h) - p.du[r]));
+      fd = std::max(fd, std::fabs((c.position[r] - d.position[r]) / (2 * h) - p.dv[r]));
+    }
+    const LimitStencil w = s.stencil(f, u, v);
+    REQUIRE(w.has_derivatives);
+    std::array<double, 3> x{}, du{};
+    for (size_t i = 0; i < w.vertices.size(); ++i)
+      for (size_t c3 = 0; c3 < 3; ++c3) {
+        x[c3] += w.position[i] * m.positions[size_t(3 * w.vertices[i]) + c3];
+        du[c3] += w.du[i] * m.positions[size_t(3 * w.vertices[i]) + c3];
+      }
+    CHECK(distance(x, p.position) < 1e-13);
+    CHECK(distance(du, p.du) < 1e-12);
+  }
+  CHECK(fd < 1e-6);
+}
+
+TEST_CASE("A plugin's split (sqrt2): linear precision on a regular grid, and the refusals") {
+  test::load_example_plugins();
+  const int n = 16;
+  test::Mesh m = test::torus(n, n);
+  for (Index v = 0; v < m.vertex_count; ++v) {
+    m.positions[size_t(3 * v)] = double(v % n);
+    m.positions[size_t(3 * v + 1)] = double(v / n);
+    m.positions[size_t(3 * v + 2)] = 0;
+  }
+  const LimitSurface s(load_scheme("sqrt2"), m.level());
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> U(0, 1);
+  for (int k = 0; k < 4; ++k) {
+    const int i = 7 + k % 2, j = 7 + (k / 2) % 2;
+    const double u = U(rng), v = U(rng);
+    const LimitSample p = s.evaluate(Index(j * n + i), u, v, m.positions, 3);
+    CHECK(std::fabs(p.position[0] - (i + u)) < 1e-12);
+    CHECK(std::fabs(p.position[1] - (j + v)) < 1e-12);
+    REQUIRE(p.has_derivatives);
+    CHECK(distance(p.du, std::array<double, 3>{1, 0, 0}) < 1e-12);
+    CHECK(distance(p.dv, std::array<double, 3>{0, 1, 0}) < 1e-12);
+  }
+  CHECK_THROWS_WITH_AS(LimitSurface(load_scheme("sqrt2"), test::grid(3, 3).level()), doctest::Contains("boundary"),
+                       Error);
+  CHECK_THROWS_WITH_AS(LimitSurface(load_scheme("sqrt2"), test::pyramid().level()),
+                       doctest::Contains("not all quads or all triangles"), Error);
+}
