@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <deque>
 #include <mutex>
@@ -113,22 +114,44 @@ struct LimitSurface::Impl {
   struct Entry {
     int node = -1;
     std::vector<Index> vertices;
+    // The node's control point grid when its limit is the bicubic B-spline patch
+    // (LimitNodes::bspline), else null: a point in the face is then evaluated at once.
+    const std::array<Index, 16>* grid = nullptr;
   };
   // The nodes for one depth and the entries into them. The depth starts at one ring and
   // grows when a scheme reads further (NotClosed); evaluations under way keep theirs.
   struct Cache {
     std::unique_ptr<LimitNodes> nodes;
-    std::mutex entry_mutex;
-    std::vector<std::unique_ptr<Entry>> entries;
+    // Each entry is published once (compare-exchange) and never changes: read without a lock.
+    std::unique_ptr<std::atomic<Entry*>[]> entries;
+    Index entry_count = 0;
+    // An entry of a face in an untagged regular quad grid (quad_grid_labelled), once one has
+    // been made the general way: every such face's cut has its signature, hence its node.
+    std::atomic<const Entry*> regular{nullptr};
+    ~Cache() {
+      for (Index f = 0; f < entry_count; ++f) delete entries[size_t(f)].load();
+    }
   };
   mutable std::mutex cache_mutex;
   mutable std::shared_ptr<Cache> cache;
+  // The current cache for lock-free reads; replaced caches stay alive (a read may hold one).
+  mutable std::atomic<Cache*> cache_now{nullptr};
+  mutable std::vector<std::shared_ptr<Cache>> retired;
+  // Faces known to be in untagged regular quad grid (in_quad_grid): 1, else 0 (not known).
+  mutable std::unique_ptr<std::atomic<char>[]> grid_face;
 
   std::shared_ptr<Cache> make_cache(int depth) const {
     auto c = std::make_shared<Cache>();
     c->nodes = std::make_unique<LimitNodes>(*scheme, options.features, radius, depth, triangles, *limits);
-    c->entries.resize(size_t(base.face_count()));
+    c->entry_count = base.face_count();
+    c->entries = std::make_unique<std::atomic<Entry*>[]>(size_t(c->entry_count));
+    for (Index f = 0; f < c->entry_count; ++f) c->entries[size_t(f)].store(nullptr);
     return c;
+  }
+  void set_cache(std::shared_ptr<Cache> c) const {
+    if (cache) retired.push_back(cache);
+    cache = std::move(c);
+    cache_now.store(cache.get(), std::memory_order_release);
   }
   std::shared_ptr<Cache> current() const {
     std::lock_guard lock(cache_mutex);
@@ -139,24 +162,109 @@ struct LimitSurface::Impl {
     if (cache != failed) return;
     const int depth = failed->nodes->depth() + 1;
     if (depth > radius - 2) throw Error(fmt::format("internal: {} even with a cut of {} rings", why.what(), radius));
-    cache = make_cache(depth);
+    set_cache(make_cache(depth));
   }
 
   const Entry& entry(Cache& c, Index face) const {
-    {
-      std::lock_guard lock(c.entry_mutex);
-      if (c.entries[size_t(face)]) return *c.entries[size_t(face)];
-    }
+    std::atomic<Entry*>& slot = c.entries[size_t(face)];
+    if (const Entry* e = slot.load(std::memory_order_acquire)) return *e;
+    bool regular = false;
+    std::unique_ptr<Entry> made = make_entry(c, face, regular);
+    Entry* found = nullptr;
+    if (!slot.compare_exchange_strong(found, made.get(), std::memory_order_acq_rel)) return *found;
+    const Entry* e = made.release();
+    const Entry* none = nullptr;
+    if (regular) c.regular.compare_exchange_strong(none, e, std::memory_order_acq_rel);
+    return *e;
+  }
+
+  // A face's entry: in an untagged regular quad grid (`regular` set) the node other such
+  // faces found and the face's first labels, which are the cut's (the labelling depends on
+  // the combinatorics only); otherwise, or for the first such face, from the face's cut and
+  // its signature.
+  std::unique_ptr<Entry> make_entry(Cache& c, Index face, bool& regular) const {
+    auto e = std::make_unique<Entry>();
+    thread_local Labelling lab;
+    regular = options.shortcuts && !triangles && in_quad_grid(lab, face, c.nodes->depth());
+    if (regular)
+      if (const Entry* r = c.regular.load(std::memory_order_acquire)) {
+        e->node = r->node;
+        e->grid = r->grid;
+        e->vertices.assign(lab.vertices.begin(), lab.vertices.begin() + std::ptrdiff_t(r->vertices.size()));
+        return e;
+      }
     FacePoint p;
     p.face = face;
     const Neighbourhood n = cut(base, {}, 0, p, radius);
-    auto e = std::make_unique<Entry>();
     std::vector<Index> order;
     e->node = c.nodes->intern(n.level, n.point.face, order);
     for (Index v : order) e->vertices.push_back(n.original[size_t(v)]);
-    std::lock_guard lock(c.entry_mutex);
-    if (!c.entries[size_t(face)]) c.entries[size_t(face)] = std::move(e);
-    return *c.entries[size_t(face)];
+    // What walk() asks first of a face's node, asked here once for the face.
+    if (!triangles) e->grid = c.nodes->bspline(e->node);
+    return e;
+  }
+
+  // Whether the face's cut is a piece of untagged regular quad grid (quad_grid_labelled),
+  // leaving in `lab` at least its labels within `depth`. A larger piece is checked first:
+  // when it is grid, so is the cut of every face near its centre, which is marked, and
+  // those faces then only label their own few rings.
+  bool in_quad_grid(Labelling& lab, Index face, int depth) const {
+    if (grid_face[size_t(face)].load(std::memory_order_relaxed)) return quad_grid_labelled(lab, base, face, depth);
+    constexpr int kMargin = 4;
+    if (quad_grid_labelled(lab, base, face, radius + kMargin)) {
+      // A face with a corner closer than kMargin - 1 has its corners within kMargin of this
+      // face's and its cut within this piece.
+      for (size_t q = 0; q < lab.vertices.size() && lab.distance[q] < kMargin; ++q)
+        for (Index f : base.ring_faces(lab.vertices[q])) grid_face[size_t(f)].store(1, std::memory_order_relaxed);
+      return true;
+    }
+    return quad_grid_labelled(lab, base, face, radius);
+  }
+
+  // The entry of a face made already in the current cache, else null; no lock.
+  const Entry* ready_entry(Index face) const {
+    const Cache* c = cache_now.load(std::memory_order_acquire);
+    return c->entries[size_t(face)].load(std::memory_order_acquire);
+  }
+
+  // walk()'s first step where the face's node is the bicubic patch: finish() of
+  // bspline_rows() with nothing to pull back, the same products summed in the same order
+  // (the same bits), without the rows, the copied values or the nodes' lock.
+  static LimitSample bspline_sample(const Entry& e, const FacePoint& p, std::span<const double> values,
+                                    int channels, int derivatives) {
+    const BsplineWeights w = bspline_weights(p.st);
+    std::array<size_t, 16> cell{};
+    for (size_t k = 0; k < 16; ++k) cell[size_t(e.grid->at(k))] = k;
+    const size_t C = size_t(channels);
+    auto applied_row = [&](auto weight) {
+      std::vector<double> out(C, 0.0);
+      for (size_t l = 0; l < 16; ++l) {
+        const double x = weight(cell[l]);
+        if (x == 0) continue;
+        const double* at = &values[size_t(e.vertices[l]) * C];
+        for (size_t ch = 0; ch < C; ++ch) out[ch] += x * at[ch];
+      }
+      return out;
+    };
+    LimitSample out;
+    out.position = applied_row([&](size_t k) { return w.position[k]; });
+    if (derivatives < 1) return out;
+    const auto& J = p.jacobian;
+    out.du = applied_row([&](size_t k) { return J[0][0] * w.ds[k] + J[1][0] * w.dt[k]; });
+    out.dv = applied_row([&](size_t k) { return J[0][1] * w.ds[k] + J[1][1] * w.dt[k]; });
+    out.has_derivatives = true;
+    if (derivatives < 2) return out;
+    auto second = [&](size_t a, size_t b) {
+      return applied_row([&](size_t k) {
+        return J[0][a] * J[0][b] * w.dss[k] + (J[0][a] * J[1][b] + J[1][a] * J[0][b]) * w.dst[k] +
+               J[1][a] * J[1][b] * w.dtt[k];
+      });
+    };
+    out.duu = second(0, 0);
+    out.duv = second(0, 1);
+    out.dvv = second(1, 1);
+    out.has_second_derivatives = true;
+    return out;
   }
 
   // The base vertices an evaluation in the point's face reads, in the order descend() takes
@@ -471,7 +579,9 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   LimitOptions lo;
   lo.features = options.features;
   impl_->limits = std::make_unique<SchemeLimits>(*impl_->scheme, lo);
-  impl_->cache = impl_->make_cache(1);
+  impl_->set_cache(impl_->make_cache(1));
+  impl_->grid_face = std::make_unique<std::atomic<char>[]>(size_t(impl_->base.face_count()));
+  for (Index f = 0; f < impl_->base.face_count(); ++f) impl_->grid_face[size_t(f)].store(0);
   if (impl_->scheme->split() == SplitKind::Dual)
     impl_->dual = std::make_unique<DualLimit>(*impl_->scheme, impl_->base, options, impl_->radius, *impl_->limits);
 }
@@ -608,6 +718,11 @@ LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double
       for (int c = 0; c < channels; ++c)
         first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
     return tbb::this_task_arena::isolate([&] { return impl_->dual->evaluate(p, first, channels, derivatives); });
+  }
+  if (impl_->options.shortcuts && p.sub_face < 0 && impl_->options.max_steps > 0) {
+    const Impl::Entry* e = impl_->ready_entry(p.face);
+    if (!e) e = impl_->with_cache([&](Impl::Cache& cache) { return &impl_->entry(cache, p.face); });
+    if (e->grid) return Impl::bspline_sample(*e, p, values, channels, derivatives);
   }
   return impl_->with_cache([&](Impl::Cache& cache) {
     const std::vector<Index> reads = impl_->reads(cache, p);

@@ -24,8 +24,10 @@ double sig_sharpness(float s) { return s >= kInfinitelySharp ? double(kInfinitel
 
 // Labels around the centre; with `expected`, compares the signature on the fly instead of
 // storing it and returns false at the first difference.
+// With `quad_grid`, also checks that the neighbourhood is untagged regular quad grid as it
+// goes (quad_grid_labelled) and returns false at the first vertex or face that is not.
 bool label_into(Labelling& out, const Level& L, CentreKind kind, Index centre, int start, int radius,
-                bool with_signature, const std::vector<double>* expected = nullptr) {
+                bool with_signature, const std::vector<double>* expected = nullptr, bool quad_grid = false) {
   // Only the entries set by the last use are cleared; the array only grows (entries past
   // this level's vertices stay kNone), so a reused labelling costs its neighbourhood only.
   for (Index v : out.vertices)
@@ -68,6 +70,9 @@ bool label_into(Labelling& out, const Level& L, CentreKind kind, Index centre, i
   for (size_t q = 0; q < out.vertices.size() && same; ++q) {
     const Index v = out.vertices[q];
     const int d = out.distance[q];
+    if (quad_grid && (L.vertex_sharp(v) != 0.f ||
+                      (d < radius && (L.valence(v) != 4 || L.on_boundary(v) || L.incident_face_count(v) != 4))))
+      return false;
     if (with_signature) {
       sig.push_back(L.valence(v));
       sig.push_back(L.on_boundary(v) ? 1 : 0);
@@ -85,6 +90,11 @@ bool label_into(Labelling& out, const Level& L, CentreKind kind, Index centre, i
       const auto corners = L.face(f);
       const auto edges = L.face_edge_list(f);
       const int k = int(corners.size());
+      if (quad_grid) {
+        if (k != 4 || L.is_hole(f)) return false;
+        for (Index e : edges)
+          if (L.edge_sharp(e) != 0.f) return false;
+      }
       if (with_signature) sig.push_back(k);
       for (int i = 1; i < k; ++i) {
         const Index w = corners[size_t((c + i) % k)];
@@ -175,6 +185,16 @@ void label_neighbourhood(Labelling& reuse, const Level& level, CentreKind kind, 
 bool matches_neighbourhood(Labelling& reuse, const Level& level, CentreKind kind, Index centre, int start, int radius,
                            const std::vector<double>& signature) {
   return label_into(reuse, level, kind, centre, start, radius, true, &signature);
+}
+
+bool quad_grid_labelled(Labelling& reuse, const Level& level, Index face, int radius) {
+  if (level.face_size(face) != 4 || level.is_hole(face)) return false;
+  if (!label_into(reuse, level, CentreKind::Face, face, 0, radius, false, nullptr, true)) return false;
+  // The breadth-first search unrolls the grid from the face; it reaches as many vertices as
+  // the plane's (2 radius + 2)^2 only when no two of its paths meet again (a torus or
+  // cylinder narrower than the neighbourhood wraps around).
+  const size_t side = size_t(2 * radius + 2);
+  return reuse.vertices.size() == side * side;
 }
 
 Patch make_vertex_patch(PatchCells cells, const LocalConfig& c, int R) {
