@@ -4,6 +4,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <deque>
 #include <mutex>
 #include <fmt/format.h>
@@ -117,6 +118,20 @@ struct LimitSurface::Impl {
     // The node's control point grid when its limit is the bicubic B-spline patch
     // (LimitNodes::bspline), else null: a point in the face is then evaluated at once.
     const std::array<Index, 16>* grid = nullptr;
+    // With a grid: per label, its cell in the grid (row by row from (-1, -1)).
+    std::array<std::uint8_t, 16> grid_cell{};
+
+    void set_grid(const std::array<Index, 16>* g) {
+      grid = g;
+      if (!g) return;
+      for (size_t k = 0; k < 16; ++k) grid_cell[size_t(g->at(k))] = std::uint8_t(k);
+    }
+  };
+  // A face whose entry would be the regular one's (Cache::regular, a bicubic node) but for
+  // its vertices: those 16 in label order, one cache line per face, each stored plus one so
+  // that zero is "not yet" (the last one written last: when it is set, all are).
+  struct alignas(64) GridSlot {
+    std::array<std::atomic<Index>, 16> vertex{};
   };
   // The nodes for one depth and the entries into them. The depth starts at one ring and
   // grows when a scheme reads further (NotClosed); evaluations under way keep theirs.
@@ -128,8 +143,19 @@ struct LimitSurface::Impl {
     // An entry of a face in an untagged regular quad grid (quad_grid_labelled), once one has
     // been made the general way: every such face's cut has its signature, hence its node.
     std::atomic<const Entry*> regular{nullptr};
+    // Per face (made with the first face that fills one), for regular faces when the
+    // regular node is a bicubic patch.
+    std::atomic<GridSlot*> slots{nullptr};
     ~Cache() {
       for (Index f = 0; f < entry_count; ++f) delete entries[size_t(f)].load();
+      delete[] slots.load();
+    }
+    GridSlot* slot_array() {
+      if (GridSlot* a = slots.load(std::memory_order_acquire)) return a;
+      auto made = std::make_unique<GridSlot[]>(size_t(entry_count));
+      GridSlot* none = nullptr;
+      if (slots.compare_exchange_strong(none, made.get(), std::memory_order_acq_rel)) return made.release();
+      return none;
     }
   };
   mutable std::mutex cache_mutex;
@@ -189,8 +215,8 @@ struct LimitSurface::Impl {
     if (regular)
       if (const Entry* r = c.regular.load(std::memory_order_acquire)) {
         e->node = r->node;
-        e->grid = r->grid;
         e->vertices.assign(lab.vertices.begin(), lab.vertices.begin() + std::ptrdiff_t(r->vertices.size()));
+        e->set_grid(r->grid);
         return e;
       }
     FacePoint p;
@@ -200,7 +226,7 @@ struct LimitSurface::Impl {
     e->node = c.nodes->intern(n.level, n.point.face, order);
     for (Index v : order) e->vertices.push_back(n.original[size_t(v)]);
     // What walk() asks first of a face's node, asked here once for the face.
-    if (!triangles) e->grid = c.nodes->bspline(e->node);
+    if (!triangles) e->set_grid(c.nodes->bspline(e->node));
     return e;
   }
 
@@ -210,7 +236,7 @@ struct LimitSurface::Impl {
   // those faces then only label their own few rings.
   bool in_quad_grid(Labelling& lab, Index face, int depth) const {
     if (grid_face[size_t(face)].load(std::memory_order_relaxed)) return quad_grid_labelled(lab, base, face, depth);
-    constexpr int kMargin = 4;
+    constexpr int kMargin = 8;
     if (quad_grid_labelled(lab, base, face, radius + kMargin)) {
       // A face with a corner closer than kMargin - 1 has its corners within kMargin of this
       // face's and its cut within this piece.
@@ -221,44 +247,86 @@ struct LimitSurface::Impl {
     return quad_grid_labelled(lab, base, face, radius);
   }
 
-  // The entry of a face made already in the current cache, else null; no lock.
-  const Entry* ready_entry(Index face) const {
-    const Cache* c = cache_now.load(std::memory_order_acquire);
-    return c->entries[size_t(face)].load(std::memory_order_acquire);
+  // prepare() of a face made already (e set when not a grid slot), without a lock; false
+  // with e null when not made.
+  static bool prepared(const Cache& c, Index face, const Entry*& e) {
+    if (const GridSlot* a = c.slots.load(std::memory_order_acquire))
+      if (a[size_t(face)].vertex[15].load(std::memory_order_acquire) != 0) return true;
+    e = c.entries[size_t(face)].load(std::memory_order_acquire);
+    return false;
+  }
+
+  // A face's grid slot, filled (true) when the face is in untagged regular quad grid and the
+  // regular node is the bicubic patch, or its entry otherwise.
+  bool prepare(Cache& c, Index face, const Entry*& e) const {
+    if (prepared(c, face, e) || fill_slot(c, face)) return true;
+    if (!e) e = &entry(c, face);
+    return false;
+  }
+  // The grid slot of a face in untagged regular quad grid once the regular node is known to
+  // be a bicubic patch; false otherwise. Runs no engine (no isolation needed).
+  bool fill_slot(Cache& c, Index face) const {
+    const Entry* r = c.regular.load(std::memory_order_acquire);
+    thread_local Labelling lab;
+    if (!options.shortcuts || !r || !r->grid || !in_quad_grid(lab, face, c.nodes->depth())) return false;
+    GridSlot& slot = c.slot_array()[size_t(face)];
+    for (size_t l = 0; l < 16; ++l)
+      slot.vertex[l].store(lab.vertices[l] + 1, l == 15 ? std::memory_order_release : std::memory_order_relaxed);
+    return true;
   }
 
   // walk()'s first step where the face's node is the bicubic patch: finish() of
   // bspline_rows() with nothing to pull back, the same products summed in the same order
   // (the same bits), without the rows, the copied values or the nodes' lock.
-  static LimitSample bspline_sample(const Entry& e, const FacePoint& p, std::span<const double> values,
-                                    int channels, int derivatives) {
+  template <class Vertex>
+  static LimitSample bspline_sample(const std::array<std::uint8_t, 16>& cell, Vertex vertex, const FacePoint& p,
+                                    std::span<const double> values, int channels, int derivatives) {
     const BsplineWeights w = bspline_weights(p.st);
-    std::array<size_t, 16> cell{};
-    for (size_t k = 0; k < 16; ++k) cell[size_t(e.grid->at(k))] = k;
     const size_t C = size_t(channels);
-    auto applied_row = [&](auto weight) {
-      std::vector<double> out(C, 0.0);
-      for (size_t l = 0; l < 16; ++l) {
-        const double x = weight(cell[l]);
-        if (x == 0) continue;
-        const double* at = &values[size_t(e.vertices[l]) * C];
-        for (size_t ch = 0; ch < C; ++ch) out[ch] += x * at[ch];
-      }
-      return out;
-    };
-    LimitSample out;
-    out.position = applied_row([&](size_t k) { return w.position[k]; });
-    if (derivatives < 1) return out;
     const auto& J = p.jacobian;
-    out.du = applied_row([&](size_t k) { return J[0][0] * w.ds[k] + J[1][0] * w.dt[k]; });
-    out.dv = applied_row([&](size_t k) { return J[0][1] * w.ds[k] + J[1][1] * w.dt[k]; });
-    out.has_derivatives = true;
+    LimitSample out;
+    out.position.assign(C, 0.0);
+    if (derivatives >= 1) {
+      // Each sum over the labels in their order, as applied() takes them; zero weights skipped
+      // as it skips them.
+      out.du.assign(C, 0.0);
+      out.dv.assign(C, 0.0);
+      out.has_derivatives = true;
+      double* pos = out.position.data();
+      double* du = out.du.data();
+      double* dv = out.dv.data();
+      for (size_t l = 0; l < 16; ++l) {
+        const size_t k = cell[l];
+        const double* at = &values[size_t(vertex(l)) * C];
+        const double x = w.position[k];
+        const double a = J[0][0] * w.ds[k] + J[1][0] * w.dt[k];
+        const double b = J[0][1] * w.ds[k] + J[1][1] * w.dt[k];
+        for (size_t ch = 0; ch < C; ++ch) {
+          if (x != 0) pos[ch] += x * at[ch];
+          if (a != 0) du[ch] += a * at[ch];
+          if (b != 0) dv[ch] += b * at[ch];
+        }
+      }
+    } else {
+      for (size_t l = 0; l < 16; ++l) {
+        const double x = w.position[cell[l]];
+        if (x == 0) continue;
+        const double* at = &values[size_t(vertex(l)) * C];
+        for (size_t ch = 0; ch < C; ++ch) out.position[ch] += x * at[ch];
+      }
+    }
     if (derivatives < 2) return out;
     auto second = [&](size_t a, size_t b) {
-      return applied_row([&](size_t k) {
-        return J[0][a] * J[0][b] * w.dss[k] + (J[0][a] * J[1][b] + J[1][a] * J[0][b]) * w.dst[k] +
-               J[1][a] * J[1][b] * w.dtt[k];
-      });
+      std::vector<double> r(C, 0.0);
+      for (size_t l = 0; l < 16; ++l) {
+        const size_t k = cell[l];
+        const double x = J[0][a] * J[0][b] * w.dss[k] + (J[0][a] * J[1][b] + J[1][a] * J[0][b]) * w.dst[k] +
+                         J[1][a] * J[1][b] * w.dtt[k];
+        if (x == 0) continue;
+        const double* at = &values[size_t(vertex(l)) * C];
+        for (size_t ch = 0; ch < C; ++ch) r[ch] += x * at[ch];
+      }
+      return r;
     };
     out.duu = second(0, 0);
     out.duv = second(0, 1);
@@ -720,9 +788,21 @@ LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double
     return tbb::this_task_arena::isolate([&] { return impl_->dual->evaluate(p, first, channels, derivatives); });
   }
   if (impl_->options.shortcuts && p.sub_face < 0 && impl_->options.max_steps > 0) {
-    const Impl::Entry* e = impl_->ready_entry(p.face);
-    if (!e) e = impl_->with_cache([&](Impl::Cache& cache) { return &impl_->entry(cache, p.face); });
-    if (e->grid) return Impl::bspline_sample(*e, p, values, channels, derivatives);
+    Impl::Cache* c = impl_->cache_now.load(std::memory_order_acquire);
+    const Impl::Entry* e = nullptr;
+    bool grid = Impl::prepared(*c, p.face, e) || (!e && impl_->fill_slot(*c, p.face));
+    if (!grid && !e)
+      grid = impl_->with_cache([&](Impl::Cache& cache) { return impl_->prepare(*(c = &cache), p.face, e); });
+    if (grid) {
+      const Impl::GridSlot& slot = c->slots.load(std::memory_order_acquire)[size_t(p.face)];
+      return Impl::bspline_sample(
+          c->regular.load(std::memory_order_acquire)->grid_cell,
+          [&](size_t l) { return slot.vertex[l].load(std::memory_order_relaxed) - 1; }, p, values, channels,
+          derivatives);
+    }
+    if (e->grid)
+      return Impl::bspline_sample(
+          e->grid_cell, [&](size_t l) { return e->vertices[l]; }, p, values, channels, derivatives);
   }
   return impl_->with_cache([&](Impl::Cache& cache) {
     const std::vector<Index> reads = impl_->reads(cache, p);

@@ -19,6 +19,9 @@ int ring_face_index(const Level& L, Index v, Index f) {
   return 0;
 }
 
+// x mod n for 0 <= x < 2 n, without a division (the labelling's inner loops take it per corner).
+int below(int x, int n) { return x >= n ? x - n : x; }
+
 // Sharpness as signatures see it: infinitely sharp is one value, boundary edges -1.
 double sig_sharpness(float s) { return s >= kInfinitelySharp ? double(kInfinitelySharp) : double(s); }
 
@@ -84,7 +87,7 @@ bool label_into(Labelling& out, const Level& L, CentreKind kind, Index centre, i
     if (with_signature) sig.push_back(F);
     const Index first = L.vertex_face_offsets[v];
     for (int t = 0; t < F; ++t) {
-      const int fi = (entry[q] + t) % F;
+      const int fi = below(entry[q] + t, F);
       const Index f = faces[size_t(fi)];
       const int c = L.vertex_face_corner[size_t(first + fi)];
       const auto corners = L.face(f);
@@ -97,13 +100,13 @@ bool label_into(Labelling& out, const Level& L, CentreKind kind, Index centre, i
       }
       if (with_signature) sig.push_back(k);
       for (int i = 1; i < k; ++i) {
-        const Index w = corners[size_t((c + i) % k)];
+        const Index w = corners[size_t(below(c + i, k))];
         if (out.label_of[size_t(w)] == kNone) add(w, d + 1, ring_face_index(L, w, f));
         if (with_signature) sig.push_back(out.label_of[size_t(w)]);
       }
       if (with_signature)
         for (int i = 0; i < k; ++i) {
-          const Index e = edges[size_t((c + i) % k)];
+          const Index e = edges[size_t(below(c + i, k))];
           sig.push_back(L.edge_on_boundary(e) ? -1.0 : sig_sharpness(L.edge_sharp(e)));
         }
     }
