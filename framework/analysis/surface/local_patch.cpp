@@ -129,9 +129,12 @@ struct ExtractScratch {
   std::vector<Index> local_of;  // original vertex -> new vertex, or kNone
   std::vector<char> taken;      // original face -> taken
   std::vector<Index> touched_vertices, touched_faces;
+  std::vector<char> seen;  // original vertex -> listed in corners_now (0 between uses)
+  std::vector<Index> corners_now;
 
   void fit(const Level& L) {
     if (local_of.size() < size_t(L.vertex_count)) local_of.resize(size_t(L.vertex_count), kNone);
+    if (seen.size() < size_t(L.vertex_count)) seen.resize(size_t(L.vertex_count), 0);
     if (taken.size() < size_t(L.face_count())) taken.resize(size_t(L.face_count()), 0);
   }
   void clear() {
@@ -366,11 +369,14 @@ Extracted extract_neighbourhood(const Level& L, CentreKind kind, Index centre, i
   // until no vertex is pinched.
   for (bool changed = true; changed;) {
     changed = false;
-    std::vector<Index> corners_now;
+    // The taken faces' corners once each (marked, then sorted: a few per face, not all).
+    std::vector<Index>& corners_now = scratch.corners_now;
+    corners_now.clear();
     for (Index f : faces)
-      for (Index v : L.face(f)) corners_now.push_back(v);
+      for (Index v : L.face(f))
+        if (!scratch.seen[size_t(v)]) scratch.seen[size_t(v)] = 1, corners_now.push_back(v);
+    for (Index v : corners_now) scratch.seen[size_t(v)] = 0;
     std::sort(corners_now.begin(), corners_now.end());
-    corners_now.erase(std::unique(corners_now.begin(), corners_now.end()), corners_now.end());
     for (Index v : corners_now) {
       const auto ring = L.ring_faces(v);
       const int F = int(ring.size());
