@@ -421,9 +421,12 @@ struct LimitSurface::Impl {
         }
       if (closed_forms) {
         std::vector<int> stack;
-        if (const auto* lattice = quartic(c, id, stack))
-          return finish(triangles ? quartic_rows(*lattice, p.st) : tensor_rows(*lattice, p.st), p, values, channels,
-                        derivatives, path, first_values, iteration, rows_out);
+        if (const auto* lattice = quartic(c, id, stack)) {
+          // Only the derivative rows asked for: finish() reads no others.
+          const CornerRows rows =
+              triangles ? quartic_rows(*lattice, p.st, derivatives) : tensor_rows(*lattice, p.st, derivatives);
+          return finish(rows, p, values, channels, derivatives, path, first_values, iteration, rows_out);
+        }
       }
       const int corner = corner_at(p, shape, triangles);
       if (corner >= 0)
@@ -538,7 +541,7 @@ struct LimitSurface::Impl {
         for (Index r = 0; r < m.rows(); ++r)
           for (Index e = m.offsets[size_t(r)]; e < m.offsets[size_t(r) + 1]; ++e)
             rhs[size_t(m.columns[size_t(e)])] += child[size_t(r)] * m.weights[size_t(e)];
-        const std::vector<double> lhs = triangles ? quartic_rows(rows, x).position : tensor_rows(rows, x).position;
+        const std::vector<double> lhs = triangles ? quartic_rows(rows, x, 0).position : tensor_rows(rows, x, 0).position;
         for (size_t l = 0; l < K; ++l)
           if (std::fabs(lhs[l] - rhs[l]) > 1e-12) return {};
       }
