@@ -120,6 +120,9 @@ struct LimitSurface::Impl {
     const std::array<Index, 16>* grid = nullptr;
     // With a grid: per label, its cell in the grid (row by row from (-1, -1)).
     std::array<std::uint8_t, 16> grid_cell{};
+    // Otherwise the node's polynomial patch (LimitNodes::quartic: a quartic over a triangle,
+    // degree 4 per direction over a quad) when it has one, else null.
+    const std::vector<std::vector<double>>* lattice = nullptr;
 
     void set_grid(const std::array<Index, 16>* g) {
       grid = g;
@@ -217,6 +220,7 @@ struct LimitSurface::Impl {
         e->node = r->node;
         e->vertices.assign(lab.vertices.begin(), lab.vertices.begin() + std::ptrdiff_t(r->vertices.size()));
         e->set_grid(r->grid);
+        e->lattice = r->lattice;
         return e;
       }
     FacePoint p;
@@ -227,6 +231,11 @@ struct LimitSurface::Impl {
     for (Index v : order) e->vertices.push_back(n.original[size_t(v)]);
     // What walk() asks first of a face's node, asked here once for the face.
     if (!triangles) e->set_grid(c.nodes->bspline(e->node));
+    // And what it asks next (only with the shortcuts: without them every query is walk()'s).
+    if (!e->grid && options.shortcuts) {
+      std::vector<int> stack;
+      e->lattice = quartic(c, e->node, stack);
+    }
     return e;
   }
 
@@ -806,6 +815,17 @@ LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double
     if (e->grid)
       return Impl::bspline_sample(
           e->grid_cell, [&](size_t l) { return e->vertices[l]; }, p, values, channels, derivatives);
+    if (e->lattice) {
+      // walk()'s first step where the face's node is a polynomial patch, without the nodes' lock.
+      std::vector<double> first(e->vertices.size() * size_t(channels));
+      for (size_t k = 0; k < e->vertices.size(); ++k)
+        for (int ch = 0; ch < channels; ++ch)
+          first[k * size_t(channels) + size_t(ch)] = values[size_t(e->vertices[k]) * size_t(channels) + size_t(ch)];
+      const CornerRows rows = impl_->triangles ? quartic_rows(*e->lattice, p.st, derivatives)
+                                               : tensor_rows(*e->lattice, p.st, derivatives);
+      const std::vector<const StepMatrix*> path;
+      return Impl::finish(rows, p, first, channels, derivatives, path, first, 0, nullptr);
+    }
   }
   return impl_->with_cache([&](Impl::Cache& cache) {
     const std::vector<Index> reads = impl_->reads(cache, p);

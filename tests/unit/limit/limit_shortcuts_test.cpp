@@ -203,3 +203,34 @@ TEST_CASE("The shortcuts give the general way's bits on a mesh mixing grid, irre
       }
   }
 }
+
+TEST_CASE("The shortcuts give the general way's bits for Loop: regular triangles, a boundary, creases") {
+  // The polynomial-patch shortcut (a node's quartic triangle patch taken from its entry).
+  for (const test::Mesh& m : {test::torus(12, 12, true), test::grid(10, 10, true), test::bipyramid(5)}) {
+    Level base = m.level();
+    if (m.vertex_count == 121) {  // the grid: a sharp crease across it, a semi-sharp edge
+      base.edge_sharpness.assign(size_t(base.edge_count()), 0.f);
+      for (Index i = 0; i < 10; ++i) base.edge_sharpness[size_t(find_edge(base, 55 + i, 56 + i))] = kInfinitelySharp;
+      base.edge_sharpness[size_t(find_edge(base, 24, 25))] = 1.5f;
+    }
+    std::vector<double> xyz = m.positions;
+    for (size_t i = 2; i < xyz.size(); i += 3) xyz[i] += 0.05 * std::sin(0.9 * double(i));
+    LimitSurfaceOptions general;
+    general.shortcuts = false;
+    const LimitSurface a(load_scheme("loop"), base), b(load_scheme("loop"), base, general);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> unit(0, 0.5);
+    for (Index f = 0; f < base.face_count(); ++f)
+      for (int k = 0; k < 2; ++k) {
+        const double u = unit(rng), v = k == 0 ? 0.0 : unit(rng);
+        const LimitSample x = a.evaluate(f, u, v, xyz, 3, 2), y = b.evaluate(f, u, v, xyz, 3, 2);
+        INFO("mesh of " << m.vertex_count << " vertices, face " << f << " at (" << u << ", " << v << ")");
+        REQUIRE(x.has_second_derivatives == y.has_second_derivatives);
+        CHECK(x.position == y.position);
+        CHECK(x.du == y.du);
+        CHECK(x.dv == y.dv);
+        CHECK(x.duu == y.duu);
+        CHECK(x.dvv == y.dvv);
+      }
+  }
+}
