@@ -550,7 +550,8 @@ struct LimitSurface::Impl {
         for (Index r = 0; r < m.rows(); ++r)
           for (Index e = m.offsets[size_t(r)]; e < m.offsets[size_t(r) + 1]; ++e)
             rhs[size_t(m.columns[size_t(e)])] += child[size_t(r)] * m.weights[size_t(e)];
-        const std::vector<double> lhs = triangles ? quartic_rows(rows, x, 0).position : tensor_rows(rows, x, 0).position;
+        const std::vector<double> lhs =
+            triangles ? quartic_rows(rows, x, 0).position : tensor_rows(rows, x, 0).position;
         for (size_t l = 0; l < K; ++l)
           if (std::fabs(lhs[l] - rhs[l]) > 1e-12) return {};
       }
