@@ -18,23 +18,37 @@ std::array<double, 4> cubic_basis_second_derivative(double s) { return {1 - s, 3
 
 }  // namespace
 
-CornerRows bspline_rows(const std::array<Index, 16>& grid, const Uv& st, Index labels) {
+BsplineWeights bspline_weights(const Uv& st) {
   const auto bs = cubic_basis(st[0]), bt = cubic_basis(st[1]);
   const auto ds = cubic_basis_derivative(st[0]), dt = cubic_basis_derivative(st[1]);
   const auto dss = cubic_basis_second_derivative(st[0]), dtt = cubic_basis_second_derivative(st[1]);
-  CornerRows r;
-  for (auto* row : {&r.position, &r.ds, &r.dt, &r.dss, &r.dst, &r.dtt}) row->assign(size_t(labels), 0.0);
+  BsplineWeights w;
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 4; ++i) {
-      const size_t l = size_t(grid[size_t(j * 4 + i)]);
-      const size_t a = size_t(i), b = size_t(j);
-      r.position[l] = bs[a] * bt[b];
-      r.ds[l] = ds[a] * bt[b];
-      r.dt[l] = bs[a] * dt[b];
-      r.dss[l] = dss[a] * bt[b];
-      r.dst[l] = ds[a] * dt[b];
-      r.dtt[l] = bs[a] * dtt[b];
+      const size_t k = size_t(j * 4 + i), a = size_t(i), b = size_t(j);
+      w.position[k] = bs[a] * bt[b];
+      w.ds[k] = ds[a] * bt[b];
+      w.dt[k] = bs[a] * dt[b];
+      w.dss[k] = dss[a] * bt[b];
+      w.dst[k] = ds[a] * dt[b];
+      w.dtt[k] = bs[a] * dtt[b];
     }
+  return w;
+}
+
+CornerRows bspline_rows(const std::array<Index, 16>& grid, const Uv& st, Index labels) {
+  const BsplineWeights w = bspline_weights(st);
+  CornerRows r;
+  for (auto* row : {&r.position, &r.ds, &r.dt, &r.dss, &r.dst, &r.dtt}) row->assign(size_t(labels), 0.0);
+  for (size_t k = 0; k < 16; ++k) {
+    const size_t l = size_t(grid[k]);
+    r.position[l] = w.position[k];
+    r.ds[l] = w.ds[k];
+    r.dt[l] = w.dt[k];
+    r.dss[l] = w.dss[k];
+    r.dst[l] = w.dst[k];
+    r.dtt[l] = w.dtt[k];
+  }
   return r;
 }
 

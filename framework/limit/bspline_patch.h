@@ -13,4 +13,12 @@ namespace subdiv {
 // of `labels` entries.
 CornerRows bspline_rows(const std::array<Index, 16>& grid, const Uv& st, Index labels);
 
+// The same weights per control point (row by row from (-1, -1)) in fixed arrays: what
+// bspline_rows places at the grid's labels, for callers that cannot afford the rows'
+// allocations (the evaluation of a point in a regular face).
+struct BsplineWeights {
+  std::array<double, 16> position, ds, dt, dss, dst, dtt;
+};
+BsplineWeights bspline_weights(const Uv& st);
+
 }  // namespace subdiv

@@ -98,7 +98,9 @@ LimitNodes::LimitNodes(const Scheme& scheme, const FeatureOptions& features, int
 int LimitNodes::intern(const Level& cut, Index face, std::vector<Index>& order) {
   // Labelled before the lock: the labelling is most of a face's preparation and reads no
   // shared state, so parallel preparations wait for each other only on the index.
-  const Labelling lab = label_neighbourhood(cut, CentreKind::Face, face, 0, radius_ + 3);
+  // Reused per thread: its arrays (the signature is thousands of values) keep their room.
+  thread_local Labelling lab;
+  label_neighbourhood(lab, cut, CentreKind::Face, face, 0, radius_ + 3);
   return tbb::this_task_arena::isolate([&] {
     std::lock_guard lock(mutex_);
     return intern_labelled(cut, face, lab, order);
@@ -115,10 +117,15 @@ int LimitNodes::intern_labelled(const Level& cut, Index face, const Labelling& l
     throw Error("internal: a cut for limit evaluation has vertices its labelling does not reach");
   const Index kept = Index(lab.count_within(depth_));
   order.assign(lab.vertices.begin(), lab.vertices.begin() + kept);
-  std::vector<double> key = lab.signature;
-  append_holes(cut, lab, key);
-  auto [it, inserted] = index_.emplace(std::move(key), int(nodes_.size()));
-  if (!inserted) return it->second;
+  std::vector<double> holed;
+  if (!cut.face_hole.empty()) {
+    holed = lab.signature;
+    append_holes(cut, lab, holed);
+  }
+  const std::vector<double>& key = cut.face_hole.empty() ? lab.signature : holed;
+  // Looked up before it is copied: most cuts meet a node made already.
+  if (const auto found = index_.find(key); found != index_.end()) return found->second;
+  const auto it = index_.emplace(key, int(nodes_.size())).first;
   auto n = std::make_unique<LimitNode>();
   n->level = canonical_level(cut, lab, face, n->face);
   n->kept = kept;

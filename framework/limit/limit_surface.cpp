@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <deque>
 #include <mutex>
 #include <fmt/format.h>
@@ -28,9 +30,17 @@
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
 
-
 namespace subdiv {
 namespace {
+
+// The values at `reads` (`channels` each), in that order: what a descent's first rows act on.
+std::vector<double> gathered(std::span<const Index> reads, std::span<const double> values, int channels) {
+  std::vector<double> out(reads.size() * size_t(channels));
+  for (size_t k = 0; k < reads.size(); ++k)
+    for (int c = 0; c < channels; ++c)
+      out[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
+  return out;
+}
 
 // A face's neighbourhood cut out of a level, with its values and the point inside it.
 struct Neighbourhood {
@@ -115,22 +125,72 @@ struct LimitSurface::Impl {
   struct Entry {
     int node = -1;
     std::vector<Index> vertices;
+    // The node's control point grid when its limit is the bicubic B-spline patch
+    // (LimitNodes::bspline), else null: a point in the face is then evaluated at once.
+    const std::array<Index, 16>* grid = nullptr;
+    // With a grid: per label, its cell in the grid (row by row from (-1, -1)).
+    std::array<std::uint8_t, 16> grid_cell{};
+    // Otherwise the node's polynomial patch (LimitNodes::quartic: a quartic over a triangle,
+    // degree 4 per direction over a quad) when it has one, else null.
+    const std::vector<std::vector<double>>* lattice = nullptr;
+
+    void set_grid(const std::array<Index, 16>* g) {
+      grid = g;
+      if (!g) return;
+      for (size_t k = 0; k < 16; ++k) grid_cell[size_t(g->at(k))] = std::uint8_t(k);
+    }
+  };
+  // A face whose entry would be the regular one's (Cache::regular, a bicubic node) but for
+  // its vertices: those 16 in label order, one cache line per face, each stored plus one so
+  // that zero is "not yet" (the last one written last: when it is set, all are).
+  struct alignas(64) GridSlot {
+    std::array<std::atomic<Index>, 16> vertex{};
   };
   // The nodes for one depth and the entries into them. The depth starts at one ring and
   // grows when a scheme reads further (NotClosed); evaluations under way keep theirs.
   struct Cache {
     std::unique_ptr<LimitNodes> nodes;
-    std::mutex entry_mutex;
-    std::vector<std::unique_ptr<Entry>> entries;
+    // Each entry is published once (compare-exchange) and never changes: read without a lock.
+    std::unique_ptr<std::atomic<Entry*>[]> entries;
+    Index entry_count = 0;
+    // An entry of a face in an untagged regular quad grid (quad_grid_labelled), once one has
+    // been made the general way: every such face's cut has its signature, hence its node.
+    std::atomic<const Entry*> regular{nullptr};
+    // Per face (made with the first face that fills one), for regular faces when the
+    // regular node is a bicubic patch.
+    std::atomic<GridSlot*> slots{nullptr};
+    ~Cache() {
+      for (Index f = 0; f < entry_count; ++f) delete entries[size_t(f)].load();
+      delete[] slots.load();
+    }
+    GridSlot* slot_array() {
+      if (GridSlot* a = slots.load(std::memory_order_acquire)) return a;
+      auto made = std::make_unique<GridSlot[]>(size_t(entry_count));
+      GridSlot* none = nullptr;
+      if (slots.compare_exchange_strong(none, made.get(), std::memory_order_acq_rel)) return made.release();
+      return none;
+    }
   };
   mutable std::mutex cache_mutex;
   mutable std::shared_ptr<Cache> cache;
+  // The current cache for lock-free reads; replaced caches stay alive (a read may hold one).
+  mutable std::atomic<Cache*> cache_now{nullptr};
+  mutable std::vector<std::shared_ptr<Cache>> retired;
+  // Faces known to be in untagged regular quad grid (in_quad_grid): 1, else 0 (not known).
+  mutable std::unique_ptr<std::atomic<char>[]> grid_face;
 
   std::shared_ptr<Cache> make_cache(int depth) const {
     auto c = std::make_shared<Cache>();
     c->nodes = std::make_unique<LimitNodes>(*scheme, options.features, radius, depth, triangles, *limits);
-    c->entries.resize(size_t(base.face_count()));
+    c->entry_count = base.face_count();
+    c->entries = std::make_unique<std::atomic<Entry*>[]>(size_t(c->entry_count));
+    for (Index f = 0; f < c->entry_count; ++f) c->entries[size_t(f)].store(nullptr);
     return c;
+  }
+  void set_cache(std::shared_ptr<Cache> c) const {
+    if (cache) retired.push_back(cache);
+    cache = std::move(c);
+    cache_now.store(cache.get(), std::memory_order_release);
   }
   std::shared_ptr<Cache> current() const {
     std::lock_guard lock(cache_mutex);
@@ -141,24 +201,157 @@ struct LimitSurface::Impl {
     if (cache != failed) return;
     const int depth = failed->nodes->depth() + 1;
     if (depth > radius - 2) throw Error(fmt::format("internal: {} even with a cut of {} rings", why.what(), radius));
-    cache = make_cache(depth);
+    set_cache(make_cache(depth));
   }
 
   const Entry& entry(Cache& c, Index face) const {
-    {
-      std::lock_guard lock(c.entry_mutex);
-      if (c.entries[size_t(face)]) return *c.entries[size_t(face)];
-    }
+    std::atomic<Entry*>& slot = c.entries[size_t(face)];
+    if (const Entry* e = slot.load(std::memory_order_acquire)) return *e;
+    bool regular = false;
+    std::unique_ptr<Entry> made = make_entry(c, face, regular);
+    Entry* found = nullptr;
+    if (!slot.compare_exchange_strong(found, made.get(), std::memory_order_acq_rel)) return *found;
+    const Entry* e = made.release();
+    const Entry* none = nullptr;
+    if (regular) c.regular.compare_exchange_strong(none, e, std::memory_order_acq_rel);
+    return *e;
+  }
+
+  // A face's entry: in an untagged regular quad grid (`regular` set) the node other such
+  // faces found and the face's first labels, which are the cut's (the labelling depends on
+  // the combinatorics only); otherwise, or for the first such face, from the face's cut and
+  // its signature.
+  std::unique_ptr<Entry> make_entry(Cache& c, Index face, bool& regular) const {
+    auto e = std::make_unique<Entry>();
+    thread_local Labelling lab;
+    regular = options.shortcuts && !triangles && in_quad_grid(lab, face, c.nodes->depth());
+    if (regular)
+      if (const Entry* r = c.regular.load(std::memory_order_acquire)) {
+        e->node = r->node;
+        e->vertices.assign(lab.vertices.begin(), lab.vertices.begin() + std::ptrdiff_t(r->vertices.size()));
+        e->set_grid(r->grid);
+        e->lattice = r->lattice;
+        return e;
+      }
     FacePoint p;
     p.face = face;
     const Neighbourhood n = cut(base, {}, 0, p, radius);
-    auto e = std::make_unique<Entry>();
     std::vector<Index> order;
     e->node = c.nodes->intern(n.level, n.point.face, order);
     for (Index v : order) e->vertices.push_back(n.original[size_t(v)]);
-    std::lock_guard lock(c.entry_mutex);
-    if (!c.entries[size_t(face)]) c.entries[size_t(face)] = std::move(e);
-    return *c.entries[size_t(face)];
+    // What walk() asks first of a face's node, asked here once for the face.
+    if (!triangles) e->set_grid(c.nodes->bspline(e->node));
+    // And what it asks next (only with the shortcuts: without them every query is walk()'s).
+    if (!e->grid && options.shortcuts) {
+      std::vector<int> stack;
+      e->lattice = quartic(c, e->node, stack);
+    }
+    return e;
+  }
+
+  // Whether the face's cut is a piece of untagged regular quad grid (quad_grid_labelled),
+  // leaving in `lab` at least its labels within `depth`. A larger piece is checked first:
+  // when it is grid, so is the cut of every face near its centre, which is marked, and
+  // those faces then only label their own few rings.
+  bool in_quad_grid(Labelling& lab, Index face, int depth) const {
+    if (grid_face[size_t(face)].load(std::memory_order_relaxed)) return quad_grid_labelled(lab, base, face, depth);
+    constexpr int kMargin = 8;
+    if (quad_grid_labelled(lab, base, face, radius + kMargin)) {
+      // A face with a corner closer than kMargin - 1 has its corners within kMargin of this
+      // face's and its cut within this piece.
+      for (size_t q = 0; q < lab.vertices.size() && lab.distance[q] < kMargin; ++q)
+        for (Index f : base.ring_faces(lab.vertices[q])) grid_face[size_t(f)].store(1, std::memory_order_relaxed);
+      return true;
+    }
+    return quad_grid_labelled(lab, base, face, radius);
+  }
+
+  // prepare() of a face made already (e set when not a grid slot), without a lock; false
+  // with e null when not made.
+  static bool prepared(const Cache& c, Index face, const Entry*& e) {
+    if (const GridSlot* a = c.slots.load(std::memory_order_acquire))
+      if (a[size_t(face)].vertex[15].load(std::memory_order_acquire) != 0) return true;
+    e = c.entries[size_t(face)].load(std::memory_order_acquire);
+    return false;
+  }
+
+  // A face's grid slot, filled (true) when the face is in untagged regular quad grid and the
+  // regular node is the bicubic patch, or its entry otherwise.
+  bool prepare(Cache& c, Index face, const Entry*& e) const {
+    if (prepared(c, face, e) || fill_slot(c, face)) return true;
+    if (!e) e = &entry(c, face);
+    return false;
+  }
+  // The grid slot of a face in untagged regular quad grid once the regular node is known to
+  // be a bicubic patch; false otherwise. Runs no engine (no isolation needed).
+  bool fill_slot(Cache& c, Index face) const {
+    const Entry* r = c.regular.load(std::memory_order_acquire);
+    thread_local Labelling lab;
+    if (!options.shortcuts || !r || !r->grid || !in_quad_grid(lab, face, c.nodes->depth())) return false;
+    GridSlot& slot = c.slot_array()[size_t(face)];
+    for (size_t l = 0; l < 16; ++l)
+      slot.vertex[l].store(lab.vertices[l] + 1, l == 15 ? std::memory_order_release : std::memory_order_relaxed);
+    return true;
+  }
+
+  // walk()'s first step where the face's node is the bicubic patch: finish() of
+  // bspline_rows() with nothing to pull back, the same products summed in the same order
+  // (the same bits), without the rows, the copied values or the nodes' lock.
+  template <class Vertex>
+  static LimitSample bspline_sample(const std::array<std::uint8_t, 16>& cell, Vertex vertex, const FacePoint& p,
+                                    std::span<const double> values, int channels, int derivatives) {
+    const BsplineWeights w = bspline_weights(p.st);
+    const size_t C = size_t(channels);
+    const auto& J = p.jacobian;
+    LimitSample out;
+    out.position.assign(C, 0.0);
+    if (derivatives >= 1) {
+      // Each sum over the labels in their order, as applied() takes them; zero weights skipped
+      // as it skips them.
+      out.du.assign(C, 0.0);
+      out.dv.assign(C, 0.0);
+      out.has_derivatives = true;
+      double* pos = out.position.data();
+      double* du = out.du.data();
+      double* dv = out.dv.data();
+      for (size_t l = 0; l < 16; ++l) {
+        const size_t k = cell[l];
+        const double* at = &values[size_t(vertex(l)) * C];
+        const double x = w.position[k];
+        const double a = J[0][0] * w.ds[k] + J[1][0] * w.dt[k];
+        const double b = J[0][1] * w.ds[k] + J[1][1] * w.dt[k];
+        for (size_t ch = 0; ch < C; ++ch) {
+          if (x != 0) pos[ch] += x * at[ch];
+          if (a != 0) du[ch] += a * at[ch];
+          if (b != 0) dv[ch] += b * at[ch];
+        }
+      }
+    } else {
+      for (size_t l = 0; l < 16; ++l) {
+        const double x = w.position[cell[l]];
+        if (x == 0) continue;
+        const double* at = &values[size_t(vertex(l)) * C];
+        for (size_t ch = 0; ch < C; ++ch) out.position[ch] += x * at[ch];
+      }
+    }
+    if (derivatives < 2) return out;
+    auto second = [&](size_t a, size_t b) {
+      std::vector<double> r(C, 0.0);
+      for (size_t l = 0; l < 16; ++l) {
+        const size_t k = cell[l];
+        const double x = J[0][a] * J[0][b] * w.dss[k] + (J[0][a] * J[1][b] + J[1][a] * J[0][b]) * w.dst[k] +
+                         J[1][a] * J[1][b] * w.dtt[k];
+        if (x == 0) continue;
+        const double* at = &values[size_t(vertex(l)) * C];
+        for (size_t ch = 0; ch < C; ++ch) r[ch] += x * at[ch];
+      }
+      return r;
+    };
+    out.duu = second(0, 0);
+    out.duv = second(0, 1);
+    out.dvv = second(1, 1);
+    out.has_second_derivatives = true;
+    return out;
   }
 
   // The base vertices an evaluation in the point's face reads, in the order descend() takes
@@ -247,9 +440,12 @@ struct LimitSurface::Impl {
         }
       if (closed_forms) {
         std::vector<int> stack;
-        if (const auto* lattice = quartic(c, id, stack))
-          return finish(triangles ? quartic_rows(*lattice, p.st) : tensor_rows(*lattice, p.st), p, values, channels,
-                        derivatives, path, first_values, iteration, rows_out);
+        if (const auto* lattice = quartic(c, id, stack)) {
+          // Only the derivative rows asked for: finish() reads no others.
+          const CornerRows rows =
+              triangles ? quartic_rows(*lattice, p.st, derivatives) : tensor_rows(*lattice, p.st, derivatives);
+          return finish(rows, p, values, channels, derivatives, path, first_values, iteration, rows_out);
+        }
       }
       const int corner = corner_at(p, shape, triangles);
       if (corner >= 0)
@@ -364,7 +560,8 @@ struct LimitSurface::Impl {
         for (Index r = 0; r < m.rows(); ++r)
           for (Index e = m.offsets[size_t(r)]; e < m.offsets[size_t(r) + 1]; ++e)
             rhs[size_t(m.columns[size_t(e)])] += child[size_t(r)] * m.weights[size_t(e)];
-        const std::vector<double> lhs = triangles ? quartic_rows(rows, x).position : tensor_rows(rows, x).position;
+        const std::vector<double> lhs =
+            triangles ? quartic_rows(rows, x, 0).position : tensor_rows(rows, x, 0).position;
         for (size_t l = 0; l < K; ++l)
           if (std::fabs(lhs[l] - rhs[l]) > 1e-12) return {};
       }
@@ -487,7 +684,9 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   LimitOptions lo;
   lo.features = options.features;
   impl_->limits = std::make_unique<SchemeLimits>(*impl_->scheme, lo);
-  impl_->cache = impl_->make_cache(1);
+  impl_->set_cache(impl_->make_cache(1));
+  impl_->grid_face = std::make_unique<std::atomic<char>[]>(size_t(impl_->base.face_count()));
+  for (Index f = 0; f < impl_->base.face_count(); ++f) impl_->grid_face[size_t(f)].store(0);
   if (impl_->scheme->split() == SplitKind::Dual)
     impl_->dual = std::make_unique<DualLimit>(*impl_->scheme, impl_->base, options, impl_->radius, *impl_->limits);
   if (impl_->scheme->split() == SplitKind::Sqrt3)
@@ -625,44 +824,43 @@ LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<con
 
 LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> values, int channels,
                                       int derivatives) const {
-  if (impl_->dual) {
-    const std::vector<Index> reads = impl_->dual->reads(p);
-    std::vector<double> first(reads.size() * size_t(channels));
-    for (size_t k = 0; k < reads.size(); ++k)
-      for (int c = 0; c < channels; ++c)
-        first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
-    return tbb::this_task_arena::isolate([&] { return impl_->dual->evaluate(p, first, channels, derivatives); });
-  }
-  if (impl_->plugin) {
-    const std::vector<Index> reads = impl_->plugin->reads(p);
-    std::vector<double> first(reads.size() * size_t(channels));
-    for (size_t k = 0; k < reads.size(); ++k)
-      for (int c = 0; c < channels; ++c)
-        first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
-    return tbb::this_task_arena::isolate([&] { return impl_->plugin->evaluate(p, first, channels, derivatives); });
-  }
-  if (impl_->mid_edge) {
-    const std::vector<Index> reads = impl_->mid_edge->reads(p);
-    std::vector<double> first(reads.size() * size_t(channels));
-    for (size_t k = 0; k < reads.size(); ++k)
-      for (int c = 0; c < channels; ++c)
-        first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
-    return tbb::this_task_arena::isolate([&] { return impl_->mid_edge->evaluate(p, first, channels, derivatives); });
-  }
-  if (impl_->sqrt3) {
-    const std::vector<Index> reads = impl_->sqrt3->reads(p);
-    std::vector<double> first(reads.size() * size_t(channels));
-    for (size_t k = 0; k < reads.size(); ++k)
-      for (int c = 0; c < channels; ++c)
-        first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
-    return tbb::this_task_arena::isolate([&] { return impl_->sqrt3->evaluate(p, first, channels, derivatives); });
+  // The splits with evaluators of their own (dual, plugin, mid-edge, sqrt3): the values they
+  // read, then their own descent.
+  const auto by = [&](const auto& evaluator) {
+    const std::vector<double> first = gathered(evaluator.reads(p), values, channels);
+    return tbb::this_task_arena::isolate([&] { return evaluator.evaluate(p, first, channels, derivatives); });
+  };
+  if (impl_->dual) return by(*impl_->dual);
+  if (impl_->plugin) return by(*impl_->plugin);
+  if (impl_->mid_edge) return by(*impl_->mid_edge);
+  if (impl_->sqrt3) return by(*impl_->sqrt3);
+  if (impl_->options.shortcuts && p.sub_face < 0 && impl_->options.max_steps > 0) {
+    Impl::Cache* c = impl_->cache_now.load(std::memory_order_acquire);
+    const Impl::Entry* e = nullptr;
+    bool grid = Impl::prepared(*c, p.face, e) || (!e && impl_->fill_slot(*c, p.face));
+    if (!grid && !e)
+      grid = impl_->with_cache([&](Impl::Cache& cache) { return impl_->prepare(*(c = &cache), p.face, e); });
+    if (grid) {
+      const Impl::GridSlot& slot = c->slots.load(std::memory_order_acquire)[size_t(p.face)];
+      return Impl::bspline_sample(
+          c->regular.load(std::memory_order_acquire)->grid_cell,
+          [&](size_t l) { return slot.vertex[l].load(std::memory_order_relaxed) - 1; }, p, values, channels,
+          derivatives);
+    }
+    if (e->grid)
+      return Impl::bspline_sample(
+          e->grid_cell, [&](size_t l) { return e->vertices[l]; }, p, values, channels, derivatives);
+    if (e->lattice) {
+      // walk()'s first step where the face's node is a polynomial patch, without the nodes' lock.
+      const std::vector<double> first = gathered(e->vertices, values, channels);
+      const CornerRows rows = impl_->triangles ? quartic_rows(*e->lattice, p.st, derivatives)
+                                               : tensor_rows(*e->lattice, p.st, derivatives);
+      const std::vector<const StepMatrix*> path;
+      return Impl::finish(rows, p, first, channels, derivatives, path, first, 0, nullptr);
+    }
   }
   return impl_->with_cache([&](Impl::Cache& cache) {
-    const std::vector<Index> reads = impl_->reads(cache, p);
-    std::vector<double> first(reads.size() * size_t(channels));
-    for (size_t k = 0; k < reads.size(); ++k)
-      for (int c = 0; c < channels; ++c)
-        first[k * size_t(channels) + size_t(c)] = values[size_t(reads[k]) * size_t(channels) + size_t(c)];
+    const std::vector<double> first = gathered(impl_->reads(cache, p), values, channels);
     return impl_->descend(cache, p, first, channels, derivatives);
   });
 }

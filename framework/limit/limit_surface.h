@@ -51,6 +51,11 @@ struct LimitSurfaceOptions {
   // of its face (whose size is then at most 2^-max_steps of the base face's: below
   // round-off).
   int max_steps = 64;
+  // Faces in an untagged regular quad grid (quad_grid_labelled, local_patch.h) share one
+  // node, found without cutting and signing each face's neighbourhood, and points in a face
+  // whose limit is a bicubic patch are evaluated without the nodes' lock. False sends every
+  // face the general way (the tests compare the two: the same bits).
+  bool shortcuts = true;
 };
 
 // One evaluated point: `channels` values each for the position and its derivatives along

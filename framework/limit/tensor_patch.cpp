@@ -28,21 +28,24 @@ void basis(double s, std::array<double, 5>& value, std::array<double, 5>& first,
 
 Uv tensor_lattice_point(int q) { return {double(q % (kDegree + 1)) / kDegree, double(q / (kDegree + 1)) / kDegree}; }
 
-CornerRows tensor_rows(const std::vector<std::vector<double>>& rows, const Uv& st) {
+CornerRows tensor_rows(const std::vector<std::vector<double>>& rows, const Uv& st, int order) {
   const size_t labels = rows.front().size();
   CornerRows r;
-  for (auto* row : {&r.position, &r.ds, &r.dt, &r.dss, &r.dst, &r.dtt}) row->assign(labels, 0.0);
+  // Position; then d/ds, d/dt; then the second derivatives.
+  const int count = order >= 2 ? 6 : order == 1 ? 3 : 1;
+  std::vector<double>* all[6] = {&r.position, &r.ds, &r.dt, &r.dss, &r.dst, &r.dtt};
+  double* out[6] = {};
+  for (int k = 0; k < count; ++k) all[k]->assign(labels, 0.0), out[k] = all[k]->data();
   std::array<double, 5> bs, ds, dss, bt, dt, dtt;
   basis(st[0], bs, ds, dss);
   basis(st[1], bt, dt, dtt);
   for (int q = 0; q < kTensorLattice; ++q) {
     const size_t i = size_t(q % (kDegree + 1)), j = size_t(q / (kDegree + 1));
     const double w[6] = {bs[i] * bt[j], ds[i] * bt[j], bs[i] * dt[j], dss[i] * bt[j], ds[i] * dt[j], bs[i] * dtt[j]};
-    std::vector<double>* out[6] = {&r.position, &r.ds, &r.dt, &r.dss, &r.dst, &r.dtt};
-    const std::vector<double>& row = rows[size_t(q)];
+    const double* row = rows[size_t(q)].data();
     for (size_t l = 0; l < labels; ++l) {
       if (row[l] == 0) continue;
-      for (int k = 0; k < 6; ++k) (*out[k])[l] += w[k] * row[l];
+      for (int k = 0; k < count; ++k) out[k][l] += w[k] * row[l];
     }
   }
   return r;

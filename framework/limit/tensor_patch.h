@@ -17,7 +17,8 @@ constexpr int kTensorLattice = 25;
 // The (s, t) of lattice point q = j * 5 + i.
 Uv tensor_lattice_point(int q);
 
-// Rows of `labels` entries: position, first and second derivatives at (s, t).
-CornerRows tensor_rows(const std::vector<std::vector<double>>& lattice, const Uv& st);
+// Rows of `labels` entries: position, first and second derivatives at (s, t); with `order`
+// below 2 the derivative rows above it are left empty (each row's values do not depend on it).
+CornerRows tensor_rows(const std::vector<std::vector<double>>& lattice, const Uv& st, int order = 2);
 
 }  // namespace subdiv

@@ -33,10 +33,14 @@ Uv quartic_lattice_point(int q) {
   return {double(p[0]) / kDegree, double(p[1]) / kDegree};
 }
 
-CornerRows quartic_rows(const std::vector<std::vector<double>>& rows, const Uv& st) {
+CornerRows quartic_rows(const std::vector<std::vector<double>>& rows, const Uv& st, int order) {
   const size_t labels = rows.front().size();
   CornerRows r;
-  for (auto* row : {&r.position, &r.ds, &r.dt, &r.dss, &r.dst, &r.dtt}) row->assign(labels, 0.0);
+  // Position; then d/ds, d/dt; then the second derivatives.
+  const int count = order >= 2 ? 6 : order == 1 ? 3 : 1;
+  std::vector<double>* all[6] = {&r.position, &r.ds, &r.dt, &r.dss, &r.dst, &r.dtt};
+  double* out[6] = {};
+  for (int n = 0; n < count; ++n) all[n]->assign(labels, 0.0), out[n] = all[n]->data();
   const double z1 = kDegree * st[0], z2 = kDegree * st[1], z0 = kDegree - z1 - z2;
   const auto points = lattice();
   for (int q = 0; q < kQuarticLattice; ++q) {
@@ -52,15 +56,11 @@ CornerRows quartic_rows(const std::vector<std::vector<double>>& rows, const Uv& 
     const double wss = dd * (dda * b * c - 2 * da * b * dc + a * b * ddc);
     const double wst = dd * (da * db * c - da * b * dc - a * db * dc + a * b * ddc);
     const double wtt = dd * (a * ddb * c - 2 * a * db * dc + a * b * ddc);
-    const std::vector<double>& row = rows[size_t(q)];
+    const double weight[6] = {w, ws, wt, wss, wst, wtt};
+    const double* row = rows[size_t(q)].data();
     for (size_t l = 0; l < labels; ++l) {
       if (row[l] == 0) continue;
-      r.position[l] += w * row[l];
-      r.ds[l] += ws * row[l];
-      r.dt[l] += wt * row[l];
-      r.dss[l] += wss * row[l];
-      r.dst[l] += wst * row[l];
-      r.dtt[l] += wtt * row[l];
+      for (int n = 0; n < count; ++n) out[n][l] += weight[n] * row[l];
     }
   }
   return r;

@@ -17,7 +17,9 @@ Uv quartic_lattice_point(int q);
 
 // Rows of `labels` entries: position, first and second derivatives at (s, t) from the
 // lattice rows.
-CornerRows quartic_rows(const std::vector<std::vector<double>>& lattice, const Uv& st);
+// With `order` below 2 the derivative rows above it are left empty (each row's values do
+// not depend on it).
+CornerRows quartic_rows(const std::vector<std::vector<double>>& lattice, const Uv& st, int order = 2);
 
 // l_m(z) = prod_{a < m} (z - a) / (m - a), the Lagrange factor of the lattice, with its first
 // and second derivatives in z.

@@ -11,6 +11,7 @@
 //   subdiv-limit-bench issue [points] [n]  the same on the n x n torus (and the split
 //                                      (0.4 n)^2 one); the preparation lines give the CPU time
 //                                      per face too (flat in n: local_patch.h)
+//   subdiv-limit-bench issue points n torus|split  one of the two meshes (for profiling)
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -293,8 +294,9 @@ int main(int argc, char** argv) {
     // triangulated (0.4 n) x (0.4 n) torus (0.96 n^2 quads).
     const int points = argc > 2 ? std::atoi(argv[2]) : 1000000;
     const int n = argc > 3 ? std::atoi(argv[3]) : 1000;
-    run_alternating(torus(n, n), points, 4);
-    run_alternating(split_triangulated_torus(2 * n / 5, 2 * n / 5), points, 4);
+    const char* only = argc > 4 ? argv[4] : "";
+    if (std::strcmp(only, "split") != 0) run_alternating(torus(n, n), points, 4);
+    if (std::strcmp(only, "torus") != 0) run_alternating(split_triangulated_torus(2 * n / 5, 2 * n / 5), points, 4);
     return 0;
   }
   const int points = argc > 1 ? std::atoi(argv[1]) : 20000;

@@ -19,13 +19,18 @@ int ring_face_index(const Level& L, Index v, Index f) {
   return 0;
 }
 
+// x mod n for 0 <= x < 2 n, without a division (the labelling's inner loops take it per corner).
+int below(int x, int n) { return x >= n ? x - n : x; }
+
 // Sharpness as signatures see it: infinitely sharp is one value, boundary edges -1.
 double sig_sharpness(float s) { return s >= kInfinitelySharp ? double(kInfinitelySharp) : double(s); }
 
 // Labels around the centre; with `expected`, compares the signature on the fly instead of
 // storing it and returns false at the first difference.
+// With `quad_grid`, also checks that the neighbourhood is untagged regular quad grid as it
+// goes (quad_grid_labelled) and returns false at the first vertex or face that is not.
 bool label_into(Labelling& out, const Level& L, CentreKind kind, Index centre, int start, int radius,
-                bool with_signature, const std::vector<double>* expected = nullptr) {
+                bool with_signature, const std::vector<double>* expected = nullptr, bool quad_grid = false) {
   // Only the entries set by the last use are cleared; the array only grows (entries past
   // this level's vertices stay kNone), so a reused labelling costs its neighbourhood only.
   for (Index v : out.vertices)
@@ -68,6 +73,9 @@ bool label_into(Labelling& out, const Level& L, CentreKind kind, Index centre, i
   for (size_t q = 0; q < out.vertices.size() && same; ++q) {
     const Index v = out.vertices[q];
     const int d = out.distance[q];
+    if (quad_grid && (L.vertex_sharp(v) != 0.f ||
+                      (d < radius && (L.valence(v) != 4 || L.on_boundary(v) || L.incident_face_count(v) != 4))))
+      return false;
     if (with_signature) {
       sig.push_back(L.valence(v));
       sig.push_back(L.on_boundary(v) ? 1 : 0);
@@ -79,21 +87,26 @@ bool label_into(Labelling& out, const Level& L, CentreKind kind, Index centre, i
     if (with_signature) sig.push_back(F);
     const Index first = L.vertex_face_offsets[v];
     for (int t = 0; t < F; ++t) {
-      const int fi = (entry[q] + t) % F;
+      const int fi = below(entry[q] + t, F);
       const Index f = faces[size_t(fi)];
       const int c = L.vertex_face_corner[size_t(first + fi)];
       const auto corners = L.face(f);
       const auto edges = L.face_edge_list(f);
       const int k = int(corners.size());
+      if (quad_grid) {
+        if (k != 4 || L.is_hole(f)) return false;
+        for (Index e : edges)
+          if (L.edge_sharp(e) != 0.f) return false;
+      }
       if (with_signature) sig.push_back(k);
       for (int i = 1; i < k; ++i) {
-        const Index w = corners[size_t((c + i) % k)];
+        const Index w = corners[size_t(below(c + i, k))];
         if (out.label_of[size_t(w)] == kNone) add(w, d + 1, ring_face_index(L, w, f));
         if (with_signature) sig.push_back(out.label_of[size_t(w)]);
       }
       if (with_signature)
         for (int i = 0; i < k; ++i) {
-          const Index e = edges[size_t((c + i) % k)];
+          const Index e = edges[size_t(below(c + i, k))];
           sig.push_back(L.edge_on_boundary(e) ? -1.0 : sig_sharpness(L.edge_sharp(e)));
         }
     }
@@ -116,9 +129,12 @@ struct ExtractScratch {
   std::vector<Index> local_of;  // original vertex -> new vertex, or kNone
   std::vector<char> taken;      // original face -> taken
   std::vector<Index> touched_vertices, touched_faces;
+  std::vector<char> seen;  // original vertex -> listed in corners_now (0 between uses)
+  std::vector<Index> corners_now;
 
   void fit(const Level& L) {
     if (local_of.size() < size_t(L.vertex_count)) local_of.resize(size_t(L.vertex_count), kNone);
+    if (seen.size() < size_t(L.vertex_count)) seen.resize(size_t(L.vertex_count), 0);
     if (taken.size() < size_t(L.face_count())) taken.resize(size_t(L.face_count()), 0);
   }
   void clear() {
@@ -175,6 +191,16 @@ void label_neighbourhood(Labelling& reuse, const Level& level, CentreKind kind, 
 bool matches_neighbourhood(Labelling& reuse, const Level& level, CentreKind kind, Index centre, int start, int radius,
                            const std::vector<double>& signature) {
   return label_into(reuse, level, kind, centre, start, radius, true, &signature);
+}
+
+bool quad_grid_labelled(Labelling& reuse, const Level& level, Index face, int radius) {
+  if (level.face_size(face) != 4 || level.is_hole(face)) return false;
+  if (!label_into(reuse, level, CentreKind::Face, face, 0, radius, false, nullptr, true)) return false;
+  // The breadth-first search unrolls the grid from the face; it reaches as many vertices as
+  // the plane's (2 radius + 2)^2 only when no two of its paths meet again (a torus or
+  // cylinder narrower than the neighbourhood wraps around).
+  const size_t side = size_t(2 * radius + 2);
+  return reuse.vertices.size() == side * side;
 }
 
 Patch make_vertex_patch(PatchCells cells, const LocalConfig& c, int R) {
@@ -343,11 +369,14 @@ Extracted extract_neighbourhood(const Level& L, CentreKind kind, Index centre, i
   // until no vertex is pinched.
   for (bool changed = true; changed;) {
     changed = false;
-    std::vector<Index> corners_now;
+    // The taken faces' corners once each (marked, then sorted: a few per face, not all).
+    std::vector<Index>& corners_now = scratch.corners_now;
+    corners_now.clear();
     for (Index f : faces)
-      for (Index v : L.face(f)) corners_now.push_back(v);
+      for (Index v : L.face(f))
+        if (!scratch.seen[size_t(v)]) scratch.seen[size_t(v)] = 1, corners_now.push_back(v);
+    for (Index v : corners_now) scratch.seen[size_t(v)] = 0;
     std::sort(corners_now.begin(), corners_now.end());
-    corners_now.erase(std::unique(corners_now.begin(), corners_now.end()), corners_now.end());
     for (Index v : corners_now) {
       const auto ring = L.ring_faces(v);
       const int F = int(ring.size());

@@ -85,6 +85,15 @@ void label_neighbourhood(Labelling& reuse, const Level& level, CentreKind kind, 
 bool matches_neighbourhood(Labelling& reuse, const Level& level, CentreKind kind, Index centre, int start, int radius,
                            const std::vector<double>& signature);
 
+// Labels into `reuse` (without the signature) the vertices within `radius` face rings of
+// quad `face`, and says whether they are a piece of the plane's regular quad grid with
+// nothing on it: every vertex closer than the radius interior with four quads around it,
+// no hole, no sharpness on any vertex or edge of those faces, and no two paths of the grid
+// meeting again within the radius (the count of vertices is the plane's). Such a face's
+// extract_neighbourhood at that radius is the same level as every other such face's, up to
+// the labelling (so it has the same signature), found without extracting or signing it.
+bool quad_grid_labelled(Labelling& reuse, const Level& level, Index face, int radius);
+
 // Where the labelling of a vertex starts by convention: ring edge 0 on a boundary (the
 // boundary edge), the first infinitely sharp edge on a crease, dart or corner, else 0.
 int conventional_start(const Level& level, Index v);

@@ -1,0 +1,236 @@
+// The shortcuts of limit evaluation (LimitSurfaceOptions::shortcuts): faces in untagged
+// regular quad grid share one node without cutting and signing their neighbourhoods, and
+// points in bicubic faces skip the descent. They must give the very bits the general way
+// gives, and be taken only where a face's whole cut is such grid (quad_grid_labelled).
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+#include <tuple>
+
+#include "framework/analysis/surface/local_patch.h"
+#include "framework/features/sharpness.h"
+#include "framework/limit/limit_surface.h"
+#include "framework/scheme/scheme_registry.h"
+#include "support/test_meshes.h"
+
+using namespace subdiv;
+
+namespace {
+
+constexpr int kRadius = 4;  // the cut Catmull-Clark's evaluation takes (limit_surface.cpp)
+
+// The surface of the box [0, n]^3 without its top, in n x n quads per side, outward CCW:
+// valence-3 vertices at the four bottom corners, a boundary along the top rim, and
+// regular grid in the middle of every side.
+test::Mesh open_box(int n) {
+  test::Mesh m;
+  std::map<std::tuple<int, int, int>, Index> id;
+  auto vertex = [&](std::array<int, 3> p) {
+    const auto key = std::make_tuple(p[0], p[1], p[2]);
+    const auto it = id.find(key);
+    if (it != id.end()) return it->second;
+    // A bump, so that no two evaluated points agree by symmetry alone.
+    m.add_vertex(p[0], p[1], p[2] + 0.05 * std::sin(1.3 * p[0] + 0.7 * p[1] + 0.4 * p[2]));
+    return id[key] = m.vertex_count - 1;
+  };
+  // Per side: its base point and two tangents t1, t2 with t1 x t2 the outward normal.
+  struct Side {
+    std::array<int, 3> base, t1, t2;
+  };
+  const Side sides[] = {{{n, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{0, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+                        {{0, n, 0}, {0, 0, 1}, {1, 0, 0}}, {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}},
+                        {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}}};
+  for (const Side& s : sides)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        auto at = [&](int a, int b) {
+          std::array<int, 3> p{};
+          for (size_t k = 0; k < 3; ++k) p[k] = s.base[k] + a * s.t1[k] + b * s.t2[k];
+          return vertex(p);
+        };
+        m.add_face({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+  return m;
+}
+
+// Face-ring distances from the vertices `from` (the "shares a face" metric the cut uses).
+std::vector<int> distances(const Level& L, const std::vector<Index>& from) {
+  std::vector<int> d(size_t(L.vertex_count), 1 << 20);
+  std::vector<Index> queue;
+  for (Index v : from)
+    if (d[size_t(v)] != 0) d[size_t(v)] = 0, queue.push_back(v);
+  for (size_t q = 0; q < queue.size(); ++q)
+    for (Index f : L.ring_faces(queue[q]))
+      for (Index w : L.face(f))
+        if (d[size_t(w)] > d[size_t(queue[q])] + 1) d[size_t(w)] = d[size_t(queue[q])] + 1, queue.push_back(w);
+  return d;
+}
+
+int face_distance(const Level& L, const std::vector<int>& d, Index f) {
+  int best = 1 << 20;
+  for (Index v : L.face(f)) best = std::min(best, d[size_t(v)]);
+  return best;
+}
+
+// The box with a tagged crease down one vertical edge, a semi-sharp crease on a side and a
+// tagged corner on the bottom: the sharp edges' ends in `ends`, the corner in `corners`.
+Level tagged_box(int n, std::vector<Index>& ends, std::vector<Index>& corners) {
+  const test::Mesh m = open_box(n);
+  Level L = m.level();
+  L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
+  L.vertex_sharpness.assign(size_t(L.vertex_count), 0.f);
+  // Vertex ids of open_box's first side (x = n): (n, i, j) at the order they were made.
+  auto near = [&](double x, double y, double z) {
+    Index best = 0;
+    double dist = 1e300;
+    for (Index v = 0; v < Index(m.vertex_count); ++v) {
+      const double dx = m.positions[size_t(3 * v)] - x, dy = m.positions[size_t(3 * v + 1)] - y;
+      const double dz = std::round(m.positions[size_t(3 * v + 2)]) - z;
+      if (dx * dx + dy * dy + dz * dz < dist) dist = dx * dx + dy * dy + dz * dz, best = v;
+    }
+    return best;
+  };
+  auto sharpen = [&](Index a, Index b, float s) {
+    L.edge_sharpness[size_t(find_edge(L, a, b))] = s;
+    ends.push_back(a), ends.push_back(b);
+  };
+  for (int z = 0; z < n; ++z) sharpen(near(n, n, z), near(n, n, z + 1), kInfinitelySharp);  // a vertical box edge
+  for (int y = 3; y < 7; ++y) sharpen(near(n, y, n / 2), near(n, y + 1, n / 2), 1.5f);       // semi-sharp on x = n
+  const Index corner = near(n / 2, n / 2, 0);                                               // bottom middle
+  L.vertex_sharpness[size_t(corner)] = kInfinitelySharp;
+  corners.push_back(corner);
+  return L;
+}
+
+}  // namespace
+
+TEST_CASE("quad_grid_labelled: a torus is grid exactly when the neighbourhood does not wrap around") {
+  // The cut of radius 4 around a quad spans 10 x 10 vertices: a narrower torus meets itself.
+  for (const auto& size : {std::array<int, 2>{10, 10}, {10, 12}, {9, 12}, {12, 9}, {6, 30}}) {
+    const Level L = test::torus(size[0], size[1]).level();
+    const bool wide = size[0] >= 2 * kRadius + 2 && size[1] >= 2 * kRadius + 2;
+    Labelling lab;
+    for (Index f = 0; f < L.face_count(); ++f) {
+      INFO("torus " << size[0] << " x " << size[1] << ", face " << f);
+      CHECK(quad_grid_labelled(lab, L, f, kRadius) == wide);
+    }
+  }
+}
+
+TEST_CASE("quad_grid_labelled is never true with an irregular vertex, a boundary or a tag within the cut") {
+  SUBCASE("valence 3 and 5 vertices, each the only irregular vertex of a grid") {
+    for (int valence : {3, 5}) {
+      LocalConfig c;
+      c.valence = valence;
+      const Patch p = make_vertex_patch(PatchCells::Quads, c, 14);
+      const Level& L = p.level;
+      std::vector<Index> rim;
+      for (Index v = 0; v < L.vertex_count; ++v)
+        if (L.on_boundary(v)) rim.push_back(v);
+      const std::vector<int> to_centre = distances(L, {p.centre}), to_rim = distances(L, rim);
+      int grid = 0;
+      Labelling lab;
+      for (Index f = 0; f < L.face_count(); ++f) {
+        const int a = face_distance(L, to_centre, f), b = face_distance(L, to_rim, f);
+        const bool result = quad_grid_labelled(lab, L, f, kRadius);
+        INFO("valence " << valence << ", face " << f << " at " << a << " rings from the centre, " << b
+                        << " from the boundary");
+        // The cut's vertices closer than the radius must all be regular interior ones.
+        if (a < kRadius || b < kRadius) CHECK_FALSE(result);
+        if (a > kRadius && b > kRadius) CHECK(result);
+        grid += result ? 1 : 0;
+      }
+      CHECK(grid > 0);
+    }
+  }
+  SUBCASE("a tagged crease, a semi-sharp crease and a tagged corner, whatever their distance in the cut") {
+    std::vector<Index> ends, corners;
+    const Level L = tagged_box(14, ends, corners);
+    const std::vector<int> to_edge = distances(L, ends), to_corner = distances(L, corners);
+    Labelling lab;
+    int grid = 0;
+    for (Index f = 0; f < L.face_count(); ++f) {
+      const int a = face_distance(L, to_edge, f), b = face_distance(L, to_corner, f);
+      INFO("face " << f << " at " << a << " rings from a sharp edge, " << b << " from the tagged corner");
+      // The cut holds every face of a vertex closer than kRadius, so every edge at such a
+      // vertex, and every vertex within kRadius.
+      const bool result = quad_grid_labelled(lab, L, f, kRadius);
+      if (a < kRadius || b <= kRadius) CHECK_FALSE(result);
+      grid += result ? 1 : 0;
+    }
+    CHECK(grid > 0);
+  }
+}
+
+TEST_CASE("The shortcuts give the general way's bits on a mesh mixing grid, irregular, boundary and tagged faces") {
+  std::vector<Index> ends, corners;
+  const Level base = tagged_box(14, ends, corners);
+  const test::Mesh m = open_box(14);
+  LimitSurfaceOptions general;
+  general.shortcuts = false;
+  for (auto boundary : {BoundaryInterpolation::EdgesAndCorners, BoundaryInterpolation::EdgesOnly}) {
+    LimitSurfaceOptions fast;
+    fast.features.boundary = general.features.boundary = boundary;
+    const LimitSurface a(load_scheme("catmull-clark"), base, fast), b(load_scheme("catmull-clark"), base, general);
+    int grid = 0;
+    Labelling lab;
+    for (Index f = 0; f < base.face_count(); ++f) grid += quad_grid_labelled(lab, base, f, kRadius) ? 1 : 0;
+    CHECK(grid > 100);  // the shortcut is taken, not only allowed
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (Index f = 0; f < base.face_count(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        // Corners and edges too: the general way ends at a corner's masks there only if the
+        // face's node is not the bicubic patch.
+        const double u = k == 0 ? 0.0 : unit(rng), v = k == 1 ? 1.0 : unit(rng);
+        const LimitSample x = a.evaluate(f, u, v, m.positions, 3, 2), y = b.evaluate(f, u, v, m.positions, 3, 2);
+        INFO("face " << f << " at (" << u << ", " << v << ")");
+        REQUIRE(x.has_derivatives == y.has_derivatives);
+        REQUIRE(x.has_second_derivatives == y.has_second_derivatives);
+        CHECK(x.position == y.position);
+        CHECK(x.du == y.du);
+        CHECK(x.dv == y.dv);
+        CHECK(x.duu == y.duu);
+        CHECK(x.duv == y.duv);
+        CHECK(x.dvv == y.dvv);
+        const LimitStencil s = a.stencil(f, u, v, 2), t = b.stencil(f, u, v, 2);
+        CHECK(s.vertices == t.vertices);
+        CHECK(s.position == t.position);
+        CHECK(s.du == t.du);
+        CHECK(s.dvv == t.dvv);
+      }
+  }
+}
+
+TEST_CASE("The shortcuts give the general way's bits for Loop: regular triangles, a boundary, creases") {
+  // The polynomial-patch shortcut (a node's quartic triangle patch taken from its entry).
+  for (const test::Mesh& m : {test::torus(12, 12, true), test::grid(10, 10, true), test::bipyramid(5)}) {
+    Level base = m.level();
+    if (m.vertex_count == 121) {  // the grid: a sharp crease across it, a semi-sharp edge
+      base.edge_sharpness.assign(size_t(base.edge_count()), 0.f);
+      for (Index i = 0; i < 10; ++i) base.edge_sharpness[size_t(find_edge(base, 55 + i, 56 + i))] = kInfinitelySharp;
+      base.edge_sharpness[size_t(find_edge(base, 24, 25))] = 1.5f;
+    }
+    std::vector<double> xyz = m.positions;
+    for (size_t i = 2; i < xyz.size(); i += 3) xyz[i] += 0.05 * std::sin(0.9 * double(i));
+    LimitSurfaceOptions general;
+    general.shortcuts = false;
+    const LimitSurface a(load_scheme("loop"), base), b(load_scheme("loop"), base, general);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> unit(0, 0.5);
+    for (Index f = 0; f < base.face_count(); ++f)
+      for (int k = 0; k < 2; ++k) {
+        const double u = unit(rng), v = k == 0 ? 0.0 : unit(rng);
+        const LimitSample x = a.evaluate(f, u, v, xyz, 3, 2), y = b.evaluate(f, u, v, xyz, 3, 2);
+        INFO("mesh of " << m.vertex_count << " vertices, face " << f << " at (" << u << ", " << v << ")");
+        REQUIRE(x.has_second_derivatives == y.has_second_derivatives);
+        CHECK(x.position == y.position);
+        CHECK(x.du == y.du);
+        CHECK(x.dv == y.dv);
+        CHECK(x.duu == y.duu);
+        CHECK(x.dvv == y.dvv);
+      }
+  }
+}
