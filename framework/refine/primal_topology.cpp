@@ -124,7 +124,7 @@ namespace {
 
 // Whether a faces-only last level's corners are written with streaming stores: when they
 // are larger than the caches (so nothing would find them there) and 16-byte aligned.
-bool streams(const std::vector<Index>& face_vertices) {
+bool streams(const ScratchVector<Index>& face_vertices) {
   return face_vertices.size() * sizeof(Index) >= (size_t(32) << 20) && streaming_stores_wanted() &&
          reinterpret_cast<std::uintptr_t>(face_vertices.data()) % 16 == 0;
 }

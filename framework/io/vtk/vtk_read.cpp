@@ -131,7 +131,7 @@ void check_ids(const vtkIdType* ids, vtkIdType size, vtkIdType points, const cha
 }
 
 // Appends every cell of `cells` to a CSR pair.
-void append_cells(vtkCellArray* cells, vtkIdType points, std::vector<Index>& offsets, std::vector<Index>& indices,
+void append_cells(vtkCellArray* cells, vtkIdType points, ScratchVector<Index>& offsets, ScratchVector<Index>& indices,
                   const fs::path& file) {
   auto it = vtk::TakeSmartPointer(cells->NewIterator());
   vtkIdType cell = 0;
