@@ -14,16 +14,16 @@ using namespace subdiv::test;
 
 namespace {
 
-struct Refined {
+struct RefinedTwice {
   Hierarchy h;
   std::vector<double> points;
 };
 
-Refined refine(const Scheme& scheme, const Level& base, const std::vector<double>& positions, bool poison) {
+RefinedTwice refine(const Scheme& scheme, const Level& base, const std::vector<double>& positions, bool poison) {
   scratch_poison() = poison;
   RefineOptions options;
   options.levels = 2;
-  Refined r{refine_topology(scheme, base, options), positions};
+  RefinedTwice r{refine_topology(scheme, base, options), positions};
   for (int l = 0; l < 2; ++l) r.points = step_values(scheme, r.h, l, r.points, 3, options);
   scratch_poison() = false;
   return r;
@@ -55,8 +55,8 @@ TEST_CASE("every level and origin array is written before it is read (poisoned n
     const std::string scheme_name = case_.first;
     CAPTURE(scheme_name);
     const auto scheme = load_scheme(case_.first);
-    const Refined clean = refine(*scheme, case_.second.level(), case_.second.positions, false);
-    const Refined poisoned = refine(*scheme, case_.second.level(), case_.second.positions, true);
+    const RefinedTwice clean = refine(*scheme, case_.second.level(), case_.second.positions, false);
+    const RefinedTwice poisoned = refine(*scheme, case_.second.level(), case_.second.positions, true);
     REQUIRE(clean.h.levels.size() == poisoned.h.levels.size());
     for (size_t l = 0; l < clean.h.levels.size(); ++l) check_same_level(clean.h.levels[l], poisoned.h.levels[l]);
     for (size_t l = 0; l < clean.h.origins.size(); ++l) {
