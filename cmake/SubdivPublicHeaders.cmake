@@ -8,7 +8,7 @@
 # then (marked) what they include.
 set(SUBDIV_PUBLIC_HEADERS
   # Errors, and one mesh level.
-  util/error.h util/option_spelling.h util/thread_count.h
+  util/error.h util/option_spelling.h util/scratch_vector.h util/thread_count.h
   topology/level.h
   # Reading and writing meshes; a mesh file's data as an engine level.
   io/mesh_data.h io/mesh_read.h io/mesh_write.h io/mesh_level.h io/formats.h io/format_registry.h

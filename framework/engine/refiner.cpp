@@ -95,7 +95,7 @@ void pass_applied(const LevelPass& pass, const RefineOptions& options, std::span
 // A child face inside a hole is a hole (OpenSubdiv's Vtr::Refinement passes the face tag on).
 void pass_holes_down(const Level& parent, SplitResult& step) {
   if (parent.face_hole.empty()) return;
-  const std::vector<Index>& from = step.origins.parent_face;
+  const ScratchVector<Index>& from = step.origins.parent_face;
   Level& child = step.child;
   child.face_hole.assign(child.face_count(), 0);
   for (Index f = 0; f < child.face_count() && size_t(f) < from.size(); ++f)

@@ -1,5 +1,6 @@
 #include "framework/io/mesh_cleanup.h"
 
+#include <span>
 #include <fmt/format.h>
 
 namespace subdiv {
@@ -30,8 +31,8 @@ MeshData drop_unrefinable(MeshData&& mesh, MeshCleanup& report) {
   // One pass marks the vertices in use. Indices out of range are the validator's and the
   // level builder's to refuse, by name.
   std::vector<Index> new_vertex(size_t(mesh.vertex_count()), kNone);
-  for (const auto* list : {&mesh.face_vertices, &mesh.line_vertices})
-    for (Index v : *list) {
+  for (std::span<const Index> list : {std::span<const Index>(mesh.face_vertices), std::span<const Index>(mesh.line_vertices)})
+    for (Index v : list) {
       if (v < 0 || v >= mesh.vertex_count()) return std::move(mesh);
       new_vertex[v] = 0;
     }

@@ -60,8 +60,10 @@ struct FaceVaryingArray {
 
 struct MeshData {
   std::vector<double> positions;  // xyz per vertex
-  std::vector<Index> face_offsets{0};
-  std::vector<Index> face_vertices;
+  // ScratchVectors (util/scratch_vector.h), as a Level's: a refined level's faces move into
+  // the mesh written out; readers write every element of what they size.
+  ScratchVector<Index> face_offsets{0};
+  ScratchVector<Index> face_vertices;
   std::vector<Index> line_offsets{0};  // polylines (OBJ 'l', VTK line cells)
   std::vector<Index> line_vertices;
   std::vector<CreaseTag> creases;  // OBJ 't crease', feature sidecar

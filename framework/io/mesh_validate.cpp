@@ -1,5 +1,6 @@
 #include "framework/io/mesh_validate.h"
 
+#include <span>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -33,7 +34,7 @@ bool all_of_parallel(std::size_t n, const Good& good) {
 }
 
 // `what` is "face" or "polyline"; min_size is 3 or 2.
-void check_csr(const std::vector<Index>& offsets, const std::vector<Index>& indices,
+void check_csr(std::span<const Index> offsets, std::span<const Index> indices,
                const char* what, int min_size, Index vertex_count, std::string_view context) {
   if (offsets.empty() || offsets.front() != 0)
     fail(context, fmt::format("{} offsets must start with 0", what));

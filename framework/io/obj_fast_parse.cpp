@@ -257,8 +257,8 @@ bool join(std::vector<Chunk>& chunks, MeshData& mesh) {
   }
 
   mesh.positions.resize(3 * std::size_t(total.vertices));
-  mesh.face_offsets.resize(std::size_t(total.faces) + 1);
-  mesh.face_vertices.resize(std::size_t(total.corners));
+  grow(mesh.face_offsets, std::size_t(total.faces) + 1);
+  grow(mesh.face_vertices, std::size_t(total.corners));
   std::vector<FaceVaryingArray> varying;
   const char* names[2] = {"uv", "normal"};
   const ArrayRole roles[2] = {ArrayRole::TextureCoordinates, ArrayRole::Normals};

@@ -18,6 +18,7 @@
 // Large meshes (v, vt, vn and f only) go through the parallel fast path (obj_fast_parse.h),
 // which gives the same MeshData; whatever it declines, errors included, is read here line by
 // line, so every message names its file and line as before.
+#include <span>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -526,7 +527,7 @@ void ObjReader::check_creases_are_edges() const {
   };
   std::unordered_map<std::uint64_t, bool> found;
   for (const CreaseTag& c : mesh_.creases) found[key(c.v0, c.v1)] = false;
-  auto mark = [&](const std::vector<Index>& offsets, const std::vector<Index>& verts, bool closed) {
+  auto mark = [&](std::span<const Index> offsets, std::span<const Index> verts, bool closed) {
     for (std::size_t f = 0; f + 1 < offsets.size(); ++f)
       for (Index k = offsets[f]; k < offsets[f + 1]; ++k) {
         const bool last = k + 1 == offsets[f + 1];

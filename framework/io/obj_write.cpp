@@ -1,6 +1,7 @@
 // OBJ with polylines and Pixar's tags, readable by read_mesh and by OpenSubdiv's tools;
 // texture coordinates (face-varying or per vertex) as vt with their indices in the faces.
 // Coordinates are printed in their shortest form that reads back to the same double.
+#include <span>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -17,8 +18,8 @@ namespace subdiv::io_detail {
 namespace {
 
 // One CSR list as lines "<keyword> i j k" with OBJ's 1-based numbers.
-void write_lists(BufferedOutput& out, const char* keyword, const std::vector<Index>& offsets,
-                 const std::vector<Index>& indices, WriteProgress* written = nullptr) {
+void write_lists(BufferedOutput& out, const char* keyword, std::span<const Index> offsets,
+                 std::span<const Index> indices, WriteProgress* written = nullptr) {
   for (std::size_t f = 0; f + 1 < offsets.size(); ++f) {
     if (written) written->step();
     out.print("{}", keyword);
@@ -34,7 +35,7 @@ FaceVaryingArray texture_coordinates(const MeshData& mesh) {
     if (a.role == ArrayRole::TextureCoordinates && a.components <= 3) return a;
   for (const DataArray& a : mesh.point_data)
     if (a.role == ArrayRole::TextureCoordinates && a.components <= 3)
-      return {a.name, a.components, a.values, mesh.face_vertices, a.role};
+      return {a.name, a.components, a.values, {mesh.face_vertices.begin(), mesh.face_vertices.end()}, a.role};
   return {};
 }
 

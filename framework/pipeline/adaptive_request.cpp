@@ -196,8 +196,8 @@ MeshData adaptive_mesh_data(AdaptiveMesh&& a, std::vector<DataArray> point_array
     m.point_data.push_back(std::move(array));
   }
   m.positions = std::move(a.positions);
-  m.face_offsets = std::move(a.face_offsets);
-  m.face_vertices = std::move(a.face_vertices);
+  m.face_offsets.assign(a.face_offsets.begin(), a.face_offsets.end());
+  m.face_vertices.assign(a.face_vertices.begin(), a.face_vertices.end());
   DataArray level{"face_level", 1, {}, true}, face{"base_face", 1, {}, true};
   for (int l : a.face_level) level.values.push_back(double(l));
   for (Index f : a.base_face) face.values.push_back(double(f));

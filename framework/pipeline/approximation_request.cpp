@@ -136,8 +136,8 @@ MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::
                   DataArray{"limit_distance", 1, distances.per_point, false}};
   m.cell_data = {index_array("base_face", t.base_face), DataArray{"limit_distance", 1, std::move(cell_distance), false}};
   m.positions = std::move(t.positions);
-  m.face_offsets = std::move(t.face_offsets);
-  m.face_vertices = std::move(t.face_vertices);
+  m.face_offsets.assign(t.face_offsets.begin(), t.face_offsets.end());
+  m.face_vertices.assign(t.face_vertices.begin(), t.face_vertices.end());
   return m;
 }
 

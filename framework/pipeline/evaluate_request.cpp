@@ -1,5 +1,6 @@
 #include "framework/pipeline/evaluate_request.h"
 
+#include <span>
 #include <cmath>
 #include <limits>
 #include <fmt/format.h>
@@ -22,8 +23,8 @@ constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 // ones, ascending, are the prepared mesh's vertices.
 std::vector<Index> used_vertices(const MeshData& mesh) {
   std::vector<char> used(size_t(mesh.vertex_count()), 0);
-  for (const auto* list : {&mesh.face_vertices, &mesh.line_vertices})
-    for (Index v : *list)
+  for (std::span<const Index> list : {std::span<const Index>(mesh.face_vertices), std::span<const Index>(mesh.line_vertices)})
+    for (Index v : list)
       if (v >= 0 && v < mesh.vertex_count()) used[size_t(v)] = 1;
   std::vector<Index> out;
   for (size_t v = 0; v < used.size(); ++v)

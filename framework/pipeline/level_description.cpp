@@ -88,7 +88,7 @@ void add_level_arrays(const Hierarchy& h, int l, MeshData& mesh, const FeatureOp
 }
 
 MeshData level_mesh(const Level& L, LevelData&& data, Level* donor) {
-  std::vector<Index> offsets, corners;
+  ScratchVector<Index> offsets, corners;
   const bool move_faces = donor == &L && L.face_hole.empty() && data.face_varying.empty();
   if (move_faces) offsets = std::move(donor->face_offsets), corners = std::move(donor->face_vertices);
   MeshData mesh = mesh_from_level(L, std::move(data.positions));  // creases and corners from its edges

@@ -34,8 +34,8 @@ MeshData sampled_limit_mesh(const PreparedEvaluation& prepared, int segments) {
                   index_array("base_face", t.uv_face), DataArray{"uv", 2, std::move(t.uv), false}};
   m.cell_data = {index_array("base_face", t.base_face)};
   m.positions = std::move(t.positions);
-  m.face_offsets = std::move(t.face_offsets);
-  m.face_vertices = std::move(t.face_vertices);
+  m.face_offsets.assign(t.face_offsets.begin(), t.face_offsets.end());
+  m.face_vertices.assign(t.face_vertices.begin(), t.face_vertices.end());
   return m;
 }
 

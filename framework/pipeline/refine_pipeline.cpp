@@ -243,6 +243,39 @@ void check_refined_points(const LevelData& refined, int level, const std::vector
                           r.mesh_name, level, (bad - refined.positions.begin()) / 3, *bad, largest));
 }
 
+// ---- memory: coarser levels released ---------------------------------------------------------
+
+// A step's values read only its parent and child levels and the child's origins
+// (engine/refiner.cpp, step_values). Unless the request keeps every level, or reads the
+// whole hierarchy later (face-varying data is refined through every level after the
+// points; limits start from it), each coarser level's topology goes back as soon as the
+// next level's values are made: at level 3 of a 1M-face mesh, levels 0-1 and their origins
+// are some 0.9 GB, and level 2 about 2.9 GB more while the last level is written. What stays:
+// every level's vertex and face counts (face_offsets), the tags, and what the described arrays
+// read (origin kinds of the finest level, parent faces for parent_face and base_face).
+bool releases_coarser_levels(const RefineRequest& r, const MeshData& mesh) {
+  return !r.keep_all_levels && mesh.face_varying.empty() && !r.limit_positions && !r.limit_normals;
+}
+
+template <class V>
+void release(V& v) {
+  V().swap(v);
+}
+
+void release_step(Hierarchy& h, int step, const RefineRequest& r) {
+  Level& L = h.levels[size_t(step)];
+  release(L.face_vertices), release(L.face_edges), release(L.edge_vertices), release(L.edge_faces);
+  release(L.vertex_ring_offsets), release(L.vertex_edges), release(L.vertex_face_offsets);
+  release(L.vertex_faces), release(L.vertex_face_corner), release(L.vertex_on_boundary);
+  ChildOrigins& o = h.origins[size_t(step)];
+  release(o.parent), release(o.local), release(o.corner_side);
+  const bool finest_next = size_t(step) + 2 == h.levels.size();
+  if (!finest_next) release(o.kind);
+  const bool parent_faces_read =
+      r.described_arrays && (r.described_arrays->has("parent_face") || r.described_arrays->has("base_face"));
+  if (!parent_faces_read) release(o.parent_face);
+}
+
 }  // namespace
 
 PreparedRefinement prepare_refinement(RefineRequest& r) {
@@ -277,8 +310,13 @@ PreparedRefinement prepare_refinement(RefineRequest& r) {
   return p;
 }
 
-std::vector<LevelData> refine_level_data(const PreparedRefinement& p, const Hierarchy& h, const MeshData& mesh,
-                                         const RefineOptions& options, const RefineRequest& r, LevelDataNotes& said) {
+namespace {
+
+// refine_level_data; with `releasing` (h itself), each coarser level's topology is released
+// once the next level's values are made, where the request lets it (releases_coarser_levels).
+std::vector<LevelData> level_data(const PreparedRefinement& p, const Hierarchy& h, Hierarchy* releasing,
+                                  const MeshData& mesh, const RefineOptions& options, const RefineRequest& r,
+                                  LevelDataNotes& said) {
   const SchemeSequence& seq = p.sequence;
   std::vector<std::string> dropped;
   std::vector<LevelData> levels{{mesh.positions, carried_point_arrays(mesh.point_data, &dropped), mesh.cell_data, {}}};
@@ -306,6 +344,7 @@ std::vector<LevelData> refine_level_data(const PreparedRefinement& p, const Hier
     levels.push_back(next_level_data(seq.runs, h, l, levels.back(), options));
     check_refined_points(levels.back(), l + 1, mesh.positions, r);
     if (!r.keep_all_levels) levels[size_t(l)] = {};
+    if (releasing && releases_coarser_levels(r, mesh)) release_step(*releasing, l, r);
     say_done(r, levels_done(h, l + 1));
   }
   passes.reset();  // the face-varying steps below are not the levels' bar
@@ -327,6 +366,13 @@ std::vector<LevelData> refine_level_data(const PreparedRefinement& p, const Hier
   return levels;
 }
 
+}  // namespace
+
+std::vector<LevelData> refine_level_data(const PreparedRefinement& p, const Hierarchy& h, const MeshData& mesh,
+                                         const RefineOptions& options, const RefineRequest& r, LevelDataNotes& said) {
+  return level_data(p, h, nullptr, mesh, options, r, said);
+}
+
 RefineResult run_refinement(PreparedRefinement&& p, const RefineRequest& r) {
   check_fits_in_memory(*p.sequence.schemes.front(), p.base, p.sequence.total_levels, r.memory_budget,
                        r.memory_advice);
@@ -339,7 +385,7 @@ RefineResult run_refinement(PreparedRefinement&& p, const RefineRequest& r) {
   out.warnings.insert(out.warnings.end(), out.hierarchy.warnings.begin(), out.hierarchy.warnings.end());
   out.notes = std::move(p.notes);
   LevelDataNotes said;
-  out.levels = refine_level_data(p, out.hierarchy, p.mesh, p.options, r, said);
+  out.levels = level_data(p, out.hierarchy, &out.hierarchy, p.mesh, p.options, r, said);
   out.notes.insert(out.notes.end(), said.notes.begin(), said.notes.end());
   out.dropped_arrays = std::move(said.dropped_arrays);
   if (r.limit_positions || r.limit_normals) {

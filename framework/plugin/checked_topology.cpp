@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstddef>
 #include <fmt/format.h>
+#include <span>
 #include <utility>
 
 #include "framework/plugin/checked_rules.h"
@@ -13,7 +14,7 @@ namespace subdiv {
 namespace {
 
 // Offsets of a CSR array: `count` + 1 of them, from 0, never decreasing, ending at `total`.
-std::string offsets_problem(const std::vector<Index>& offsets, std::size_t count, std::size_t total, const char* name) {
+std::string offsets_problem(std::span<const Index> offsets, std::size_t count, std::size_t total, const char* name) {
   if (offsets.size() != count + 1)
     return fmt::format("{} has {} entries, not {} (one more than the elements)", name, offsets.size(), count + 1);
   if (offsets[0] != 0) return fmt::format("{} starts at {}, not 0", name, offsets[0]);
@@ -25,15 +26,15 @@ std::string offsets_problem(const std::vector<Index>& offsets, std::size_t count
 }
 
 // Every entry of `values` in [low, end).
-std::string range_problem(const std::vector<Index>& values, Index low, Index end, const char* name, const char* what) {
+std::string range_problem(std::span<const Index> values, Index low, Index end, const char* name, const char* what) {
   for (std::size_t i = 0; i < values.size(); ++i)
     if (values[i] < low || values[i] >= end)
       return fmt::format("{}[{}] is {}, but the level has {} {} (0 to {})", name, i, values[i], end, what, end - 1);
   return {};
 }
 
-template <typename T>
-std::string size_problem(const std::vector<T>& values, std::size_t size, bool may_be_empty, const char* name) {
+template <typename Vector>
+std::string size_problem(const Vector& values, std::size_t size, bool may_be_empty, const char* name) {
   if (values.size() == size || (may_be_empty && values.empty())) return {};
   return fmt::format("{} has {} entries, not {}{}", name, values.size(), size, may_be_empty ? " (or none)" : "");
 }

@@ -308,7 +308,7 @@ std::vector<FaceVaryingLevel> refine_face_varying(std::span<const SchemeRun> run
       continue;
     }
     check_split(*per_level[l], child, values.levels[1]);
-    FaceVaryingLevel next{std::move(refined), values.levels[1].face_vertices};
+    FaceVaryingLevel next{std::move(refined), {values.levels[1].face_vertices.begin(), values.levels[1].face_vertices.end()}};
     // Each child value's vertex, from the corners the two children share.
     vertex_of.assign(size_t(values.levels[1].vertex_count), kNone);
     for (size_t c = 0; c < next.indices.size(); ++c) vertex_of[next.indices[c]] = child.face_vertices[c];

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "framework/topology/level.h"
+#include "framework/util/scratch_vector.h"
 
 namespace subdiv {
 
@@ -18,11 +19,13 @@ struct ChildRuns {
   Index count[4] = {};
 };
 
+// The per-child arrays are ScratchVectors (util/scratch_vector.h): the splits write every
+// element of the arrays they size, in parallel, with no zero-fill before.
 struct ChildOrigins {
-  std::vector<OriginKind> kind;   // per child vertex
-  std::vector<Index> parent;      // parent vertex, edge or face (for Corner: the face)
-  std::vector<LocalIndex> local;  // Corner: corner index within the face; Edge: point along it; else 0
-  std::vector<Index> parent_face;   // per child face: the parent face it lies in (kNone if none)
+  ScratchVector<OriginKind> kind;   // per child vertex
+  ScratchVector<Index> parent;      // parent vertex, edge or face (for Corner: the face)
+  ScratchVector<LocalIndex> local;  // Corner: corner index within the face; Edge: point along it; else 0
+  ScratchVector<Index> parent_face;   // per child face: the parent face it lies in (kNone if none)
   std::optional<ChildRuns> runs;  // empty when the layout is another
   // Set only by the dual split of a level with features (refine/dual_crease_topology.h): per
   // child vertex, 1 for the point on the arriving edge of a corner with two sharp face edges,

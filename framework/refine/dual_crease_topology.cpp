@@ -202,8 +202,8 @@ DualFeatureSplit dual_feature_split(const Level& L, bool full, Index* skipped_ve
     tag_child(L, pm, out);
   } else {
     out.child.vertex_count = points;
-    out.child.face_offsets = std::move(offsets);
-    out.child.face_vertices = std::move(verts);
+    out.child.face_offsets.assign(offsets.begin(), offsets.end());
+    out.child.face_vertices.assign(verts.begin(), verts.end());
   }
   out.origins = std::move(pm.origins);
   out.origins.parent_face.assign(size_t(out.child.face_count()), kNone);

@@ -84,8 +84,8 @@ Level mid_edge_crease_split(const Level& L, bool full, Index* skipped_vertices, 
   if (!full) {
     Level C;
     C.vertex_count = L.edge_count();
-    C.face_offsets = std::move(offsets);
-    C.face_vertices = std::move(verts);
+    C.face_offsets.assign(offsets.begin(), offsets.end());
+    C.face_vertices.assign(verts.begin(), verts.end());
     return C;
   }
   Level C = build_level(L.edge_count(), offsets, verts);

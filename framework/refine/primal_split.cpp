@@ -28,14 +28,15 @@ void reserve_origins(const Level& parent, bool quad, ChildOrigins& o) {
 void primal_origins(const Level& parent, bool with_face_points, ChildOrigins& o) {
   const Index v = parent.vertex_count, e = parent.edge_count(), f = parent.face_count();
   const Index total = v + e + (with_face_points ? f : 0);
-  // Sized side by side (local stays 0), filled in parallel.
+  // Sized side by side (not filled: util/scratch_vector.h), written in parallel.
   resize_side_by_side(Sized{o.kind, size_t(total)}, Sized{o.parent, size_t(total)}, Sized{o.local, size_t(total)});
   // One straight loop per block of children (they vectorise; a kind test per child did not).
   const auto fill = [&](OriginKind kind, Index first, Index count) {
     tbb::parallel_for(tbb::blocked_range<Index>(0, count, 1 << 14), [&](const tbb::blocked_range<Index>& r) {
       OriginKind* kinds = o.kind.data() + first;
       Index* parents = o.parent.data() + first;
-      for (Index i = r.begin(); i < r.end(); ++i) kinds[i] = kind, parents[i] = i;
+      LocalIndex* locals = o.local.data() + first;
+      for (Index i = r.begin(); i < r.end(); ++i) kinds[i] = kind, parents[i] = i, locals[i] = 0;
     });
   };
   fill(OriginKind::Vertex, 0, v);

@@ -124,7 +124,7 @@ namespace {
 
 // Whether a faces-only last level's corners are written with streaming stores: when they
 // are larger than the caches (so nothing would find them there) and 16-byte aligned.
-bool streams(const std::vector<Index>& face_vertices) {
+bool streams(const ScratchVector<Index>& face_vertices) {
   return face_vertices.size() * sizeof(Index) >= (size_t(32) << 20) && streaming_stores_wanted() &&
          reinterpret_cast<std::uintptr_t>(face_vertices.data()) % 16 == 0;
 }
@@ -211,6 +211,7 @@ Level quad_split_topology(const Level& P) {
       C.vertex_on_boundary[V + e] = 1;
       return;
     }
+    C.vertex_on_boundary[V + e] = 0;
     const Index c_a1 = P.face_offsets[f1] + local_corner(P, f1, a), c_b1 = P.face_offsets[f1] + local_corner(P, f1, b);
     rf[0] = c_a0, rf[1] = c_a1, rf[2] = c_b1, rf[3] = c_b0;
     rc[0] = 1, rc[1] = 3, rc[2] = 1, rc[3] = 3;
@@ -222,6 +223,7 @@ Level quad_split_topology(const Level& P) {
     LocalIndex* rc = &C.vertex_face_corner[C.vertex_face_offsets[V + E + f]];
     Index* re = &C.vertex_edges[C.vertex_ring_offsets[V + E + f]];
     for (Index i = 0; i < k; ++i) rf[i] = o + i, rc[i] = 2, re[i] = 2 * E + o + (i + k - 1) % k;
+    C.vertex_on_boundary[V + E + f] = 0;
   });
   return C;
 }
@@ -316,6 +318,7 @@ Level triangle_split_topology(const Level& P) {
       C.vertex_on_boundary[V + e] = 1;
       return;
     }
+    C.vertex_on_boundary[V + e] = 0;
     const int ia1 = local_corner(P, f1, a), ib1 = local_corner(P, f1, b);
     const Index in1 = 2 * E + 3 * f1;
     rf[0] = 4 * f0 + ia0, rf[1] = 4 * f1 + ia1, rf[2] = 4 * f1 + 3, rf[3] = 4 * f1 + ib1, rf[4] = 4 * f0 + ib0, rf[5] = 4 * f0 + 3;

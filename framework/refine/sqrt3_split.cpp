@@ -214,14 +214,14 @@ SplitResult sqrt3_children(const Level& parent, int step_index, bool full, std::
         add_origin(OriginKind::Edge, e, 0), add_origin(OriginKind::Edge, e, 1);
       }
   for (Index e = 0; e < E; ++e) b.add_edge(e);
-  o.parent_face = std::move(b.parent_face);
+  o.parent_face.assign(b.parent_face.begin(), b.parent_face.end());
   Level child;
   if (full) {
     child = build_level(next, b.offsets, b.corners);
   } else {
     child.vertex_count = next;
-    child.face_offsets = std::move(b.offsets);
-    child.face_vertices = std::move(b.corners);
+    child.face_offsets.assign(b.offsets.begin(), b.offsets.end());
+    child.face_vertices.assign(b.corners.begin(), b.corners.end());
   }
   *trisection_base = std::move(b.trisection_base);
   return {std::move(child), std::move(o), trisect, non_manifold_warning(parent)};

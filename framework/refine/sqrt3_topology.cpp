@@ -56,7 +56,7 @@ bool sqrt3_flips_every_edge(const Level& P) {
   return true;
 }
 
-Level sqrt3_flip_topology(const Level& P, bool full, std::vector<Index>* parent_face) {
+Level sqrt3_flip_topology(const Level& P, bool full, ScratchVector<Index>* parent_face) {
   const Index V = P.vertex_count, E = P.edge_count(), F = P.face_count();
   Level C;
   C.vertex_count = V + F;

@@ -17,6 +17,6 @@ bool sqrt3_flips_every_edge(const Level& parent);
 
 // With `full`, the whole child level; otherwise its faces only. *parent_face: per child
 // face, the parent face it lies in.
-Level sqrt3_flip_topology(const Level& parent, bool full, std::vector<Index>* parent_face);
+Level sqrt3_flip_topology(const Level& parent, bool full, ScratchVector<Index>* parent_face);
 
 }  // namespace subdiv

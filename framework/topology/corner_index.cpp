@@ -63,7 +63,7 @@ CornerIndex index_corners(const Level& level, Index chunks, SlotHeads heads) {
   // chunk's counts into its cursors. One chunk scans in one block (no sums to take first).
   std::vector<Index*> counts(static_cast<size_t>(chunks));
   for (Index k = 0; k < chunks; ++k) counts[size_t(k)] = cursor[size_t(k)].data();
-  ci.vertex_offsets.resize(size_t(V) + 1);
+  grow(ci.vertex_offsets, size_t(V) + 1);
   ci.vertex_offsets[0] = 0;
   const Index block_size = chunks == 1 ? std::max<Index>(V, 1) : kGrain;
   const Index blocks = (V + block_size - 1) / block_size;
@@ -96,9 +96,9 @@ CornerIndex index_corners(const Level& level, Index chunks, SlotHeads heads) {
       offset[v + 1] = next;
     }
   });
-  ci.face.resize(size_t(corners));
-  ci.vertex_corners.resize(size_t(corners));
-  if (heads == SlotHeads::kYes) ci.heads.resize(size_t(corners));
+  grow(ci.face, size_t(corners));
+  grow(ci.vertex_corners, size_t(corners));
+  if (heads == SlotHeads::kYes) grow(ci.heads, size_t(corners));
   tbb::parallel_for(Index(0), chunks, [&](Index k) {
     Index* place = counts[size_t(k)];
     Index* sorted = ci.vertex_corners.data();

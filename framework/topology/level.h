@@ -17,6 +17,8 @@
 #include <span>
 #include <vector>
 
+#include "framework/util/scratch_vector.h"
+
 namespace subdiv {
 
 using Index = std::int32_t;
@@ -26,22 +28,26 @@ constexpr Index kNone = -1;
 using LocalIndex = std::uint16_t;
 constexpr int kMaxFaceSize = 65535;
 
+// The arrays of faces, edges and rings are ScratchVectors (util/scratch_vector.h): resize()
+// leaves new elements as they come, so they are first written, and their pages placed, by
+// the parallel passes that fill them; whoever sizes one writes every element. The small
+// arrays of marks, holes and tags (often sized, then set here and there) stay zero-filling.
 struct Level {
   Index vertex_count = 0;
 
-  std::vector<Index> face_offsets{0};
-  std::vector<Index> face_vertices;
-  std::vector<Index> face_edges;
+  ScratchVector<Index> face_offsets{0};
+  ScratchVector<Index> face_vertices;
+  ScratchVector<Index> face_edges;
 
-  std::vector<Index> edge_vertices;
-  std::vector<Index> edge_faces;
+  ScratchVector<Index> edge_vertices;
+  ScratchVector<Index> edge_faces;
 
-  std::vector<Index> vertex_ring_offsets{0};  // CSR over vertex_edges (size n per vertex)
-  std::vector<Index> vertex_edges;            // CCW ring edges
-  std::vector<Index> vertex_face_offsets{0};  // CSR over vertex_faces
-  std::vector<Index> vertex_faces;            // CCW ring faces
-  std::vector<LocalIndex> vertex_face_corner;  // corner of v within vertex_faces[i]
-  std::vector<std::uint8_t> vertex_on_boundary;
+  ScratchVector<Index> vertex_ring_offsets{0};  // CSR over vertex_edges (size n per vertex)
+  ScratchVector<Index> vertex_edges;            // CCW ring edges
+  ScratchVector<Index> vertex_face_offsets{0};  // CSR over vertex_faces
+  ScratchVector<Index> vertex_faces;            // CCW ring faces
+  ScratchVector<LocalIndex> vertex_face_corner;  // corner of v within vertex_faces[i]
+  ScratchVector<std::uint8_t> vertex_on_boundary;
 
   // Non-manifold topology, marked as OpenSubdiv's Vtr marks it (vtr/level.cpp,
   // completeTopologyFromFaceVertices): an edge with more than two faces, with two faces

@@ -11,7 +11,7 @@ namespace subdiv {
 // Corner arrays the builders work with: for every corner, its face; corners around each vertex.
 struct CornerIndex {
   ScratchVector<Index> face;          // per corner
-  std::vector<Index> vertex_offsets;  // CSR: corners around each vertex (in corner order)
+  ScratchVector<Index> vertex_offsets;  // CSR: corners around each vertex (in corner order)
   ScratchVector<Index> vertex_corners;
   // Beside vertex_corners, if asked for: the vertex each corner's edge runs to (the next
   // corner's vertex). Placed with the corners, where the faces are read in order; found

@@ -15,6 +15,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "framework/util/scratch_vector.h"
+
 namespace subdiv {
 
 // Below this many bytes an array is left to the allocator's usual pages.
@@ -60,27 +62,28 @@ struct BulkAllocator {
 template <class T>
 using BulkVector = std::vector<T, BulkAllocator<T>>;
 
-// v.resize(n), with huge pages advised before the new memory is first touched.
-template <class T>
-void resize_bulk(std::vector<T>& v, std::size_t n) {
+// v.resize(n), with huge pages advised before the new memory is first touched. A
+// ScratchVector's new elements are left as they come (util/scratch_vector.h: grow).
+template <class T, class A>
+void resize_bulk(std::vector<T, A>& v, std::size_t n) {
   if (n * sizeof(T) >= kBulkBytes && v.capacity() < n) {
     v.reserve(n);
     advise_huge_pages(v.data(), v.capacity() * sizeof(T));
   }
-  v.resize(n);
+  grow(v, n);
 }
 
 // v.assign(n, value), likewise.
-template <class T>
-void assign_bulk(std::vector<T>& v, std::size_t n, const std::type_identity_t<T>& value) {
+template <class T, class A>
+void assign_bulk(std::vector<T, A>& v, std::size_t n, const std::type_identity_t<T>& value) {
   v.clear();
   resize_bulk(v, n);
   std::fill(v.begin(), v.end(), value);
 }
 
 // v.reserve(n), likewise (for arrays filled by push_back).
-template <class T>
-void reserve_bulk(std::vector<T>& v, std::size_t n) {
+template <class T, class A>
+void reserve_bulk(std::vector<T, A>& v, std::size_t n) {
   if (v.capacity() >= n) return;
   v.reserve(n);
   if (n * sizeof(T) >= kBulkBytes) advise_huge_pages(v.data(), v.capacity() * sizeof(T));

@@ -7,10 +7,11 @@
 namespace subdivkit {
 namespace {
 
-template <class T>
-py::array_t<T> adopt_vector(std::vector<T>&& values, std::vector<py::ssize_t> shape) {
-  auto* owned = new std::vector<T>(std::move(values));
-  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+template <class T, class Allocator>
+py::array_t<T> adopt_vector(std::vector<T, Allocator>&& values, std::vector<py::ssize_t> shape) {
+  using Vector = std::vector<T, Allocator>;
+  auto* owned = new Vector(std::move(values));
+  py::capsule owner(owned, [](void* p) { delete static_cast<Vector*>(p); });
   return py::array_t<T>(shape, owned->data(), owner);
 }
 
@@ -31,6 +32,9 @@ py::array_t<double> adopt(std::vector<double>&& values, std::vector<py::ssize_t>
   return adopt_vector(std::move(values), std::move(shape));
 }
 py::array_t<std::int32_t> adopt(std::vector<std::int32_t>&& values, std::vector<py::ssize_t> shape) {
+  return adopt_vector(std::move(values), std::move(shape));
+}
+py::array_t<std::int32_t> adopt(subdiv::ScratchVector<std::int32_t>&& values, std::vector<py::ssize_t> shape) {
   return adopt_vector(std::move(values), std::move(shape));
 }
 py::array_t<std::uint8_t> adopt(std::vector<std::uint8_t>&& values, std::vector<py::ssize_t> shape) {

@@ -24,6 +24,7 @@ using subdiv::Index;
 // A NumPy array that owns `values` (moved, not copied) with the given shape.
 py::array_t<double> adopt(std::vector<double>&& values, std::vector<py::ssize_t> shape);
 py::array_t<std::int32_t> adopt(std::vector<std::int32_t>&& values, std::vector<py::ssize_t> shape);
+py::array_t<std::int32_t> adopt(subdiv::ScratchVector<std::int32_t>&& values, std::vector<py::ssize_t> shape);
 py::array_t<std::uint8_t> adopt(std::vector<std::uint8_t>&& values, std::vector<py::ssize_t> shape);
 
 // The values of any array-like, converted to C-contiguous float64 / int32 (the Python layer

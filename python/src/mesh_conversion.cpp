@@ -27,8 +27,10 @@ subdiv::MeshData mesh_from_python(py::handle mesh) {
   const std::string name = mesh_name(mesh);
   subdiv::MeshData m;
   m.positions = doubles_from(mesh.attr("points"), name + ".points");
-  m.face_vertices = indices_from(mesh.attr("face_indices"), name + ".face_indices");
-  m.face_offsets = indices_from(mesh.attr("face_offsets"), name + ".face_offsets");
+  const std::vector<Index> face_vertices = indices_from(mesh.attr("face_indices"), name + ".face_indices");
+  const std::vector<Index> face_offsets = indices_from(mesh.attr("face_offsets"), name + ".face_offsets");
+  m.face_vertices.assign(face_vertices.begin(), face_vertices.end());
+  m.face_offsets.assign(face_offsets.begin(), face_offsets.end());
   if (m.face_offsets.empty()) m.face_offsets = {0};
   if (py::hasattr(mesh, "line_indices")) {
     m.line_vertices = indices_from(mesh.attr("line_indices"), name + ".line_indices");

@@ -9,8 +9,8 @@ namespace subdiv::test {
 inline MeshData mesh_data(const Mesh& m) {
   MeshData d;
   d.positions = m.positions;
-  d.face_offsets = m.offsets;
-  d.face_vertices = m.corners;
+  d.face_offsets.assign(m.offsets.begin(), m.offsets.end());
+  d.face_vertices.assign(m.corners.begin(), m.corners.end());
   return d;
 }
 

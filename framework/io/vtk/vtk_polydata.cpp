@@ -127,8 +127,8 @@ vtkSmartPointer<Array> new_array(const std::string& name, int components, std::s
 
 // `values` as a VTK array of the same type: their own memory, handed over without a copy
 // (`share`, see make_polydata), or a copy.
-template <typename Array, typename T>
-vtkSmartPointer<Array> wrap(const std::vector<T>& values, bool share) {
+template <typename Array, typename T, typename Allocator>
+vtkSmartPointer<Array> wrap(const std::vector<T, Allocator>& values, bool share) {
   auto array = vtkSmartPointer<Array>::New();
   if (share) {
     array->SetArray(const_cast<T*>(values.data()), vtkIdType(values.size()), 1);  // 1: VTK does not free it
@@ -181,7 +181,7 @@ std::vector<double> cell_order(const DataArray& a, const CellCounts& cells) {
 
 // The mesh's indices as they are (32 bits), which vtkCellArray stores and the writer
 // writes as they are (connectivity and offsets as Int32 in the file): no 64-bit copy.
-vtkSmartPointer<vtkCellArray> cell_array(const std::vector<Index>& offsets, const std::vector<Index>& connectivity,
+vtkSmartPointer<vtkCellArray> cell_array(const ScratchVector<Index>& offsets, const ScratchVector<Index>& connectivity,
                                          bool share) {
   static_assert(sizeof(Index) == sizeof(vtkTypeInt32));
   auto cells = vtkSmartPointer<vtkCellArray>::New();

@@ -20,6 +20,7 @@
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkDataSetAttributes.h>
+#include <vtkDoubleArray.h>
 #include <vtkType.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -131,8 +132,11 @@ void check_ids(const vtkIdType* ids, vtkIdType size, vtkIdType points, const cha
 }
 
 // Appends every cell of `cells` to a CSR pair.
-void append_cells(vtkCellArray* cells, vtkIdType points, std::vector<Index>& offsets, std::vector<Index>& indices,
+void append_cells(vtkCellArray* cells, vtkIdType points, ScratchVector<Index>& offsets, ScratchVector<Index>& indices,
                   const fs::path& file) {
+  // Sized once: growing by each cell's ids copied a 16M-face level's corners several times.
+  indices.reserve(indices.size() + std::size_t(cells->GetNumberOfConnectivityIds()));
+  offsets.reserve(offsets.size() + std::size_t(cells->GetNumberOfCells()));
   auto it = vtk::TakeSmartPointer(cells->NewIterator());
   vtkIdType cell = 0;
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell) {
@@ -282,7 +286,12 @@ MeshData polydata_to_mesh_data(vtkPolyData& poly, const fs::path& file) {
   MeshData mesh;
   const vtkIdType n = poly.GetNumberOfPoints();
   mesh.positions.resize(std::size_t(n) * 3);
-  for (vtkIdType v = 0; v < n; ++v) poly.GetPoint(v, &mesh.positions[3 * v]);
+  // Double coordinates (what SubdivKit writes) are copied whole; others point by point.
+  vtkDoubleArray* xyz = n > 0 ? vtkDoubleArray::FastDownCast(poly.GetPoints()->GetData()) : nullptr;
+  if (xyz && xyz->GetNumberOfComponents() == 3 && xyz->GetNumberOfTuples() == n)
+    std::copy_n(xyz->GetPointer(0), std::size_t(n) * 3, mesh.positions.data());
+  else
+    for (vtkIdType v = 0; v < n; ++v) poly.GetPoint(v, &mesh.positions[3 * v]);
   if (n > std::numeric_limits<Index>::max())
     fail(file, fmt::format("it has {} points, more than SubdivKit's 32-bit indices hold", n));
   append_cells(poly.GetPolys(), n, mesh.face_offsets, mesh.face_vertices, file);

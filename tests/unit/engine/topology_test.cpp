@@ -142,8 +142,8 @@ namespace {
 Level general_level(const test::Mesh& m) {
   Level L;
   L.vertex_count = m.vertex_count;
-  L.face_offsets = m.offsets;
-  L.face_vertices = m.corners;
+  L.face_offsets.assign(m.offsets.begin(), m.offsets.end());
+  L.face_vertices.assign(m.corners.begin(), m.corners.end());
   identify_edges_general(L);
   complete_general_level(L);
   return L;

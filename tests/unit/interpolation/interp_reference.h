@@ -126,8 +126,8 @@ inline Mesh cross_mesh() {
   const MeshData d = read_mesh(std::string(SUBDIV_SOURCE_DIR) + "/examples/meshes/cross.obj");
   Mesh m;
   m.vertex_count = d.vertex_count();
-  m.offsets = d.face_offsets;
-  m.corners = d.face_vertices;
+  m.offsets.assign(d.face_offsets.begin(), d.face_offsets.end());
+  m.corners.assign(d.face_vertices.begin(), d.face_vertices.end());
   m.positions = d.positions;
   return m;
 }

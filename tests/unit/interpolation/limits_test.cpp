@@ -285,7 +285,7 @@ TEST_CASE("creases and corners: cubic B-spline limits along infinitely sharp edg
   // The bundled creased cube, through l S = l: the closed form must pass on it.
   const MeshData d = read_mesh(std::string(SUBDIV_SOURCE_DIR) + "/examples/meshes/cube-creased.obj");
   Mesh m;
-  m.vertex_count = d.vertex_count(), m.offsets = d.face_offsets, m.corners = d.face_vertices, m.positions = d.positions;
+  m.vertex_count = d.vertex_count(), m.offsets.assign(d.face_offsets.begin(), d.face_offsets.end()), m.corners.assign(d.face_vertices.begin(), d.face_vertices.end()), m.positions = d.positions;
   Level L = m.level();
   for (const auto& c : d.creases) {
     if (L.edge_sharpness.empty()) L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);

@@ -247,8 +247,8 @@ TEST_CASE("the distance to the exact limit: 0 on regular faces, positive next to
   test::Mesh finer;
   finer.vertex_count = h.levels[1].vertex_count;
   finer.positions = apply_step(h, 0, m.positions, 3);
-  finer.offsets = h.levels[1].face_offsets;
-  finer.corners = h.levels[1].face_vertices;
+  finer.offsets.assign(h.levels[1].face_offsets.begin(), h.levels[1].face_offsets.end());
+  finer.corners.assign(h.levels[1].face_vertices.begin(), h.levels[1].face_vertices.end());
   const PreparedEvaluation q = prepared(finer);
   ApproximationDistances e;
   (void)approximated_limit_mesh(q, approximation_patches(q), 6, e);

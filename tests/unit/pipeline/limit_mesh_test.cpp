@@ -107,7 +107,7 @@ TEST_CASE("a channel holding the positions, without seams, samples to the sample
   // The same scheme on the same values: the channel's limit is the surface's (face-varying
   // mode none: smooth everywhere, on a closed mesh).
   MeshData cube = test::mesh_data(test::cube());
-  cube.face_varying.push_back(FaceVaryingArray{"copy", 3, cube.positions, cube.face_vertices});
+  cube.face_varying.push_back(FaceVaryingArray{"copy", 3, cube.positions, {cube.face_vertices.begin(), cube.face_vertices.end()}});
   EvaluateRequest r;
   r.mesh = cube;
   r.mesh_name = "test mesh";

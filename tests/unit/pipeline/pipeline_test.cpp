@@ -62,6 +62,39 @@ TEST_CASE("only the finest level's data is kept when the request says so, and it
   CHECK(a.levels.back().positions == b.levels.back().positions);
 }
 
+TEST_CASE("with the finest level alone kept, coarser levels' topology is released and the finest level is the same") {
+  for (const char* scheme : {"catmull-clark", "loop", "doo-sabin"}) {
+    CAPTURE(scheme);
+    const test::Mesh m = std::string(scheme) == "loop" ? test::octahedron() : test::cube();
+    RefineRequest all = request_for(m, scheme, 3);
+    RefineRequest last = all;
+    last.keep_all_levels = false;
+    last.described_arrays = ArraySelection::all();
+    all.described_arrays = last.described_arrays;
+    const RefineResult a = refine_mesh(all), b = refine_mesh(last);
+    REQUIRE(b.hierarchy.levels.size() == 4);
+    for (size_t l = 0; l + 1 < b.hierarchy.levels.size(); ++l) {
+      // Counts stay (progress, base_face); rings, edges and corners are gone.
+      CHECK(b.hierarchy.levels[l].face_count() == a.hierarchy.levels[l].face_count());
+      CHECK(b.hierarchy.levels[l].face_vertices.capacity() == 0);
+      CHECK(b.hierarchy.levels[l].vertex_faces.capacity() == 0);
+      CHECK(b.hierarchy.origins[l].parent.capacity() == 0);
+    }
+    // The finest level and every described array read from the hierarchy are the same.
+    CHECK(a.levels.back().positions == b.levels.back().positions);
+    CHECK(a.hierarchy.levels.back().face_vertices == b.hierarchy.levels.back().face_vertices);
+    const int finest = 3;
+    const MeshData da = described_level_mesh(a.hierarchy, finest, LevelData(a.levels.back()), a.features,
+                                             base_faces_down_to(a.hierarchy, finest), *all.described_arrays);
+    const MeshData db = described_level_mesh(b.hierarchy, finest, LevelData(b.levels.back()), b.features,
+                                             base_faces_down_to(b.hierarchy, finest), *last.described_arrays);
+    REQUIRE(da.point_data.size() == db.point_data.size());
+    REQUIRE(da.cell_data.size() == db.cell_data.size());
+    for (size_t i = 0; i < da.point_data.size(); ++i) CHECK(da.point_data[i].values == db.point_data[i].values);
+    for (size_t i = 0; i < da.cell_data.size(); ++i) CHECK(da.cell_data[i].values == db.cell_data[i].values);
+  }
+}
+
 TEST_CASE("shape options: the request's, else the mesh's tags, else OpenSubdiv's defaults") {
   const test::Mesh grid = test::grid(3, 3);
   RefineRequest r = request_for(grid, "catmull-clark", 1);

@@ -15,8 +15,8 @@ namespace {
 Level faces_only(Index vertex_count, const std::vector<Index>& offsets, const std::vector<Index>& corners) {
   Level L;
   L.vertex_count = vertex_count;
-  L.face_offsets = offsets;
-  L.face_vertices = corners;
+  L.face_offsets.assign(offsets.begin(), offsets.end());
+  L.face_vertices.assign(corners.begin(), corners.end());
   return L;
 }
 

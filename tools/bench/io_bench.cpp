@@ -1,0 +1,159 @@
+// subdiv-bench-io: SubdivKit's mesh writers and readers against VTK's and OpenMesh's on the
+// same data (issue 32 item 3; docs/benchmarks.md, "Writing and reading").
+//
+// Writing: one generated quad torus (by default 16M faces, the size of Catmull-Clark level 2
+// of the 1M torus) as the same vtkPolyData (polydata_from_level: the arrays write_vtp writes)
+// through write_vtp's defaults (inline base64, LZ4, 1 MB blocks, 64-bit headers) and through
+// vtkXMLPolyDataWriter set the same way. Each side writes two files in a row after a sync: the
+// first with a clean page cache, the second right after it, while the first one's pages are
+// still dirty (what a user writing several levels or pieces meets). Rounds alternate the
+// sides. Reading: the files SubdivKit writes (.vtp, .obj, .ply), read by read_mesh, by VTK's
+// readers and by OpenMesh's, each file warm in the page cache, best of the rounds.
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <vtkNew.h>
+#include <vtkOBJReader.h>
+#include <vtkPLYReader.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include "bench_mesh.h"
+#include "framework/io/mesh_read.h"
+#include "framework/io/mesh_write.h"
+#include "framework/io/output_level.h"
+#include "framework/io/vtk/polydata_conversion.h"
+#include "framework/io/vtk/vtk_formats.h"
+#include "framework/io/vtk/vtk_output.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using OmMesh = OpenMesh::PolyMesh_ArrayKernelT<>;
+
+double seconds_of(const std::function<void()>& work) {
+  const auto t0 = std::chrono::steady_clock::now();
+  work();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The same settings write_vtp uses (framework/io/vtk/vtk_polydata.cpp), with VTK's own LZ4.
+void vtk_write(vtkPolyData* poly, const fs::path& file) {
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(poly);
+  writer->SetFileName(file.c_str());
+  writer->SetDataModeToBinary();
+  writer->SetCompressorTypeToLZ4();
+  writer->SetBlockSize(1 << 20);
+  writer->SetHeaderTypeToUInt64();
+  if (writer->Write() != 1) throw std::runtime_error("vtkXMLPolyDataWriter failed on " + file.string());
+}
+
+template <class Reader>
+vtkIdType vtk_read(const fs::path& file) {
+  vtkNew<Reader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  return reader->GetOutput()->GetNumberOfCells();
+}
+
+size_t openmesh_read(const fs::path& file) {
+  OmMesh mesh;
+  if (!OpenMesh::IO::read_mesh(mesh, file.string())) throw std::runtime_error("OpenMesh cannot read " + file.string());
+  return mesh.n_faces();
+}
+
+struct Best {
+  double s = std::numeric_limits<double>::infinity();
+  void take(double t) { s = std::min(s, t); }
+};
+
+double gb(const fs::path& file) { return double(fs::file_size(file)) / 1e9; }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"subdiv-bench-io: SubdivKit's writers and readers against VTK's and OpenMesh's"};
+  long long faces = 16000000;
+  int rounds = 2;
+  std::string dir = "/tmp";
+  bool reads = true;
+  app.add_option("--faces", faces, "Faces of the generated quad torus")->capture_default_str();
+  app.add_option("--rounds", rounds, "Rounds, alternating the sides; best of each")->capture_default_str();
+  app.add_option("--dir", dir, "Where the files go (removed at the end)")->capture_default_str();
+  app.add_option("--reads", reads, "Also time the readers (VTK's OBJ reader takes minutes at 16M faces)")
+      ->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  subdiv::register_vtk_formats();
+
+  const subdiv_bench::Mesh m = subdiv_bench::make_mesh("torus", faces);
+  subdiv::MeshData mesh;
+  mesh.positions = m.xyz;
+  mesh.face_offsets.assign(m.face_offsets.begin(), m.face_offsets.end());
+  mesh.face_vertices.assign(m.face_vertices.begin(), m.face_vertices.end());
+  const subdiv::OutputLevel level{&mesh, 0, {}, {}};
+  const auto poly = subdiv::polydata_from_level(level, "bench");
+  const fs::path base = fs::path(dir) / ("subdiv-bench-io-" + std::to_string(getpid()));
+  const auto file = [&](const std::string& name) { return fs::path(base.string() + "-" + name); };
+  double loadavg[3] = {};
+  getloadavg(loadavg, 3);
+  std::printf("# subdiv-bench-io: torus faces=%d vertices=%d rounds=%d loadavg=%.2f %.2f %.2f\n", m.face_count(),
+              m.vertex_count, rounds, loadavg[0], loadavg[1], loadavg[2]);
+
+  // Writing: [side][first, second]
+  Best ours[2], vtk[2];
+  for (int r = 0; r < rounds; ++r) {
+    sync();
+    ours[0].take(seconds_of([&] { subdiv::write_vtp(file("ours-a.vtp"), level); }));
+    ours[1].take(seconds_of([&] { subdiv::write_vtp(file("ours-b.vtp"), level); }));
+    sync();
+    vtk[0].take(seconds_of([&] { vtk_write(poly, file("vtk-a.vtp")); }));
+    vtk[1].take(seconds_of([&] { vtk_write(poly, file("vtk-b.vtp")); }));
+  }
+  const double ours_gb = gb(file("ours-a.vtp")), vtk_gb = gb(file("vtk-a.vtp"));
+  for (int k = 0; k < 2; ++k)
+    std::printf("write %s vtp_gb=%.3f subdivkit_s=%.3f subdivkit_gb_per_s=%.2f vtk_gb=%.3f vtk_s=%.3f ratio=%.2f\n",
+                k == 0 ? "clean" : "dirty", ours_gb, ours[k].s, ours_gb / ours[k].s, vtk_gb, vtk[k].s,
+                ours[k].s / vtk[k].s);
+  fs::remove(file("ours-b.vtp")), fs::remove(file("vtk-a.vtp")), fs::remove(file("vtk-b.vtp"));
+  if (!reads) {
+    fs::remove(file("ours-a.vtp"));
+    return 0;
+  }
+
+  // Reading the files SubdivKit writes, warm.
+  subdiv::write_mesh(file("m.obj"), mesh);
+  subdiv::write_mesh(file("m.ply"), mesh);
+  Best read_ours[3], read_vtk[3], read_om[3];
+  const char* names[3] = {"vtp", "obj", "ply"};
+  const fs::path files[3] = {file("ours-a.vtp"), file("m.obj"), file("m.ply")};
+  size_t checked = 0;
+  for (int r = 0; r < rounds; ++r)
+    for (int k = 0; k < 3; ++k) {
+      read_ours[k].take(seconds_of([&] { checked += subdiv::read_mesh(files[k]).face_offsets.size() - 1; }));
+      if (k == 0) read_vtk[k].take(seconds_of([&] { checked += size_t(vtk_read<vtkXMLPolyDataReader>(files[k])); }));
+      if (k == 1) read_vtk[k].take(seconds_of([&] { checked += size_t(vtk_read<vtkOBJReader>(files[k])); }));
+      if (k == 2) read_vtk[k].take(seconds_of([&] { checked += size_t(vtk_read<vtkPLYReader>(files[k])); }));
+      if (k > 0) read_om[k].take(seconds_of([&] { checked += openmesh_read(files[k]); }));
+    }
+  for (int k = 0; k < 3; ++k)
+    std::printf("read %s gb=%.3f subdivkit_s=%.3f vtk_s=%.3f vtk_ratio=%.2f openmesh_s=%.3f openmesh_ratio=%.2f\n",
+                names[k], gb(files[k]), read_ours[k].s, read_vtk[k].s, read_ours[k].s / read_vtk[k].s,
+                k > 0 ? read_om[k].s : 0.0, k > 0 ? read_ours[k].s / read_om[k].s : 0.0);
+  const bool all_faces = checked == size_t(m.face_count()) * size_t(rounds) * 8;
+  std::printf("faces_read %s\n", all_faces ? "all" : "MISMATCH");
+  for (const fs::path& f : files) fs::remove(f);
+  return all_faces ? 0 : 1;
+}
