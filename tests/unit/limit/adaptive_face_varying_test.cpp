@@ -21,7 +21,7 @@ namespace {
 // (x + 2z, y - z + 0.5), an affine image of the positions.
 MeshData cube_with_channel() {
   MeshData d = test::mesh_data(test::cube());
-  FaceVaryingArray a{"st", 2, {}, d.face_vertices, ArrayRole::Data};
+  FaceVaryingArray a{"st", 2, {}, {d.face_vertices.begin(), d.face_vertices.end()}, ArrayRole::Data};
   for (size_t v = 0; v < d.positions.size() / 3; ++v) {
     const double x = d.positions[3 * v], y = d.positions[3 * v + 1], z = d.positions[3 * v + 2];
     a.values.insert(a.values.end(), {x + 2 * z, y - z + 0.5});
