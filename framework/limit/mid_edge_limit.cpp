@@ -9,6 +9,7 @@
 #include "framework/engine/ghost_rings.h"
 #include "framework/limit/dual_limit.h"
 #include "framework/limit/mid_edge_nodes.h"
+#include "framework/limit/point_cut.h"
 #include "framework/limit/step_matrix.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -16,23 +17,7 @@
 namespace subdiv {
 namespace {
 
-// The current cut: a level around the point's face, and its vertices in the level it was cut from.
-struct Cut {
-  Level level;
-  std::vector<Index> original;
-  FacePoint point;
-};
-
-Cut cut_around(const Level& L, const FacePoint& p, int radius) {
-  Extracted e = extract_neighbourhood(L, CentreKind::Face, p.face, radius);
-  Cut c;
-  c.level = std::move(e.level);
-  c.original = std::move(e.original);
-  c.point = p;
-  for (size_t f = 0; f < e.face_original.size(); ++f)
-    if (e.face_original[f] == p.face) c.point.face = Index(f);
-  return c;
-}
+using Cut = PointCut;
 
 int corner_of(const Level& L, Index f, Index w) {
   const auto fv = L.face(f);
@@ -170,18 +155,14 @@ LimitSample MidEdgeLimit::evaluate(const FacePoint& p0, const std::vector<double
         if (tangents) {
           // d(s, t)/d(u, v) is 2^k times a number of order one after k double steps; the rows
           // start at 2^-k times their size and each step's factor 2 restores it (step_matrix.h).
-          const auto& J = point.jacobian;
-          const double scale = std::ldexp(1.0, -step);
-          auto pulled = [&](int d) {
-            std::vector<double> r(c->ds.size());
-            for (size_t i = 0; i < r.size(); ++i) r[i] = scale * (J[0][size_t(d)] * c->ds[i] + J[1][size_t(d)] * c->dt[i]);
-            return pulled_back(std::move(r), path);
-          };
-          std::vector<double> u = pulled(0), v = pulled(1);
-          out.du = applied(u, first_values, channels);
-          out.dv = applied(v, first_values, channels);
+          auto J = point.jacobian;
+          for (auto& row : J)
+            for (double& x : row) x = std::ldexp(x, -step);  // exact: a power of two
+          FirstDerivativeRows d = first_derivative_rows(c->ds, c->dt, J, path);
+          out.du = applied(d.du, first_values, channels);
+          out.dv = applied(d.dv, first_values, channels);
           out.has_derivatives = true;
-          if (rows_out) rows_out->du = std::move(u), rows_out->dv = std::move(v);
+          if (rows_out) rows_out->du = std::move(d.du), rows_out->dv = std::move(d.dv);
         }
         return out;
       }

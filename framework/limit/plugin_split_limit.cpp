@@ -11,6 +11,7 @@
 #include "framework/engine/ghost_rings.h"
 #include "framework/engine/refiner.h"
 #include "framework/limit/corner_limit.h"
+#include "framework/limit/point_cut.h"
 #include "framework/limit/step_matrix.h"
 #include "framework/limit/two_steps.h"
 #include "framework/refine/splitter.h"
@@ -25,22 +26,7 @@ constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 constexpr Uv kQuad[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 constexpr Uv kTriangle[3] = {{0, 0}, {1, 0}, {0, 1}};
 
-struct Cut {
-  Level level;
-  std::vector<Index> original;
-  FacePoint point;
-};
-
-Cut cut_around(const Level& L, const FacePoint& p, int radius) {
-  Extracted e = extract_neighbourhood(L, CentreKind::Face, p.face, radius);
-  Cut c;
-  c.level = std::move(e.level);
-  c.original = std::move(e.original);
-  c.point = p;
-  for (size_t f = 0; f < e.face_original.size(); ++f)
-    if (e.face_original[f] == p.face) c.point.face = Index(f);
-  return c;
-}
+using Cut = PointCut;
 
 Uv mean(const std::vector<Uv>& xs) {
   Uv s{0, 0};
@@ -242,16 +228,11 @@ LimitSample PluginSplitLimit::evaluate(const FacePoint& p0, const std::vector<do
         out.position = applied(rows.position, values, channels);
         if (derivatives >= 1 && !rows.ds.empty()) {
           const auto& J = cut.point.jacobian;  // m^-k times d(s, t)/d(u, v)
-          auto row = [&](int d) {
-            std::vector<double> r(rows.ds.size());
-            for (size_t i = 0; i < r.size(); ++i) r[i] = J[0][size_t(d)] * rows.ds[i] + J[1][size_t(d)] * rows.dt[i];
-            return pulled_back(std::move(r), path);
-          };
-          std::vector<double> u = row(0), v = row(1);
-          out.du = applied(u, first_values, channels);
-          out.dv = applied(v, first_values, channels);
+          FirstDerivativeRows d = first_derivative_rows(rows.ds, rows.dt, J, path);
+          out.du = applied(d.du, first_values, channels);
+          out.dv = applied(d.dv, first_values, channels);
           out.has_derivatives = true;
-          if (rows_out) rows_out->du = std::move(u), rows_out->dv = std::move(v);
+          if (rows_out) rows_out->du = std::move(d.du), rows_out->dv = std::move(d.dv);
         }
         return out;
       }

@@ -119,16 +119,11 @@ LimitSample Sqrt3Limit::evaluate(const FacePoint& p0, const std::vector<double>&
         out.position = applied(rows->position, values, channels);
         if (derivatives >= 1 && !rows->ds.empty()) {
           const auto& J = q.jacobian;
-          auto row = [&](int d) {
-            std::vector<double> r(rows->ds.size());
-            for (size_t i = 0; i < r.size(); ++i) r[i] = J[0][size_t(d)] * rows->ds[i] + J[1][size_t(d)] * rows->dt[i];
-            return pulled_back(std::move(r), path);
-          };
-          std::vector<double> u = row(0), v = row(1);
-          out.du = applied(u, first_values, channels);
-          out.dv = applied(v, first_values, channels);
+          FirstDerivativeRows d = first_derivative_rows(rows->ds, rows->dt, J, path);
+          out.du = applied(d.du, first_values, channels);
+          out.dv = applied(d.dv, first_values, channels);
           out.has_derivatives = true;
-          if (rows_out) rows_out->du = std::move(u), rows_out->dv = std::move(v);
+          if (rows_out) rows_out->du = std::move(d.du), rows_out->dv = std::move(d.dv);
         }
         return out;
       }

@@ -61,4 +61,15 @@ std::vector<double> applied(const std::vector<double>& row, std::span<const doub
   return out;
 }
 
+FirstDerivativeRows first_derivative_rows(std::span<const double> ds, std::span<const double> dt,
+                                          const std::array<std::array<double, 2>, 2>& J,
+                                          std::span<const StepMatrix* const> steps) {
+  auto row = [&](size_t d) {
+    std::vector<double> r(ds.size());
+    for (size_t i = 0; i < r.size(); ++i) r[i] = J[0][d] * ds[i] + J[1][d] * dt[i];
+    return pulled_back(std::move(r), steps);
+  };
+  return {row(0), row(1)};
+}
+
 }  // namespace subdiv

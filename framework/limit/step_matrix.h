@@ -1,6 +1,7 @@
 #pragma once
 // One step of a descent as a sparse matrix (rows: the vertices after the step, columns:
 // those before), and derivative rows pulled back through a chain of steps.
+#include <array>
 #include <span>
 #include <vector>
 
@@ -40,5 +41,15 @@ std::vector<double> applied(const std::vector<double>& row, std::span<const doub
 // derivative: rounding in the sum would otherwise double at every step. `order` 2: a row of
 // a second derivative (scaled by 4^-k), each step's factor squared.
 std::vector<double> pulled_back(std::vector<double> row, std::span<const StepMatrix* const> steps, int order = 1);
+
+// The rows of d/du and d/dv over the first step's sources, from rows `ds`, `dt` along a
+// node's own coordinates and the point's Jacobian J (J[a][d] = d(s, t)_a / d(u, v)_d, as
+// FacePoint has it): the chain rule, then pulled_back through `steps`.
+struct FirstDerivativeRows {
+  std::vector<double> du, dv;
+};
+FirstDerivativeRows first_derivative_rows(std::span<const double> ds, std::span<const double> dt,
+                                          const std::array<std::array<double, 2>, 2>& J,
+                                          std::span<const StepMatrix* const> steps);
 
 }  // namespace subdiv

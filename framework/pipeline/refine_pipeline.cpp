@@ -271,8 +271,10 @@ void release_step(Hierarchy& h, int step, const RefineRequest& r) {
   release(o.parent), release(o.local), release(o.corner_side);
   const bool finest_next = size_t(step) + 2 == h.levels.size();
   if (!finest_next) release(o.kind);
+  // Unless the request says which arrays are described, parent faces are kept (4 bytes a
+  // face): a describer that reads them must never find them gone.
   const bool parent_faces_read =
-      r.described_arrays && (r.described_arrays->has("parent_face") || r.described_arrays->has("base_face"));
+      !r.described_arrays || r.described_arrays->has("parent_face") || r.described_arrays->has("base_face");
   if (!parent_faces_read) release(o.parent_face);
 }
 

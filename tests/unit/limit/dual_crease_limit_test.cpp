@@ -23,6 +23,7 @@
 #include "framework/scheme/scheme_sequence.h"
 #include "framework/util/error.h"
 #include "support/test_meshes.h"
+#include "unit/limit/limit_meshes.h"
 
 using namespace subdiv;
 
@@ -30,20 +31,9 @@ namespace {
 
 using P3 = std::array<double, 3>;
 
-double distance(std::span<const double> a, std::span<const double> b) {
-  double s = 0;
-  for (size_t i = 0; i < a.size(); ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
-  return std::sqrt(s);
-}
+using limit_test::distance;
 
-test::Mesh bumped(test::Mesh m) {
-  for (Index v = 0; v < m.vertex_count; ++v) {
-    m.positions[size_t(3 * v)] += 0.07 * std::sin(2.3 * v + 0.1);
-    m.positions[size_t(3 * v + 1)] += 0.05 * std::cos(1.1 * v + 0.4);
-    m.positions[size_t(3 * v + 2)] += 0.3 * std::sin(1.7 * v + 0.3);
-  }
-  return m;
-}
+test::Mesh bumped(test::Mesh m) { return limit_test::bumped(std::move(m), 0.3); }
 
 P3 point(const test::Mesh& m, Index v) {
   return {m.positions[size_t(3 * v)], m.positions[size_t(3 * v + 1)], m.positions[size_t(3 * v + 2)]};

@@ -18,26 +18,16 @@
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
 #include "support/test_meshes.h"
+#include "unit/limit/limit_meshes.h"
 #include "unit/plugins/plugin_test_support.h"
 
 using namespace subdiv;
 
 namespace {
 
-double distance(std::span<const double> a, std::span<const double> b) {
-  double s = 0;
-  for (size_t i = 0; i < a.size(); ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
-  return std::sqrt(s);
-}
+using limit_test::distance;
 
-test::Mesh bumped(test::Mesh m) {
-  for (Index v = 0; v < m.vertex_count; ++v) {
-    m.positions[size_t(3 * v)] += 0.07 * std::sin(2.3 * v + 0.1);
-    m.positions[size_t(3 * v + 1)] += 0.05 * std::cos(1.1 * v + 0.4);
-    m.positions[size_t(3 * v + 2)] += 0.1 * std::sin(1.7 * v + 0.3);
-  }
-  return m;
-}
+using limit_test::bumped;
 
 // (u, v) of the point t of the way along edge k of a quad.
 std::array<double, 2> edge_uv(int k, double t) {
