@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <Eigen/Dense>
 #include <fmt/format.h>
 #include <tbb/task_arena.h>
 
@@ -192,53 +191,13 @@ LimitNode& LimitNodes::expand_locked(int id) {
   return *n;
 }
 
-namespace {
-
-StepMatrix dense_step(const Eigen::MatrixXd& a, int scale) {
-  StepMatrix m;
-  m.source_count = Index(a.cols());
-  m.scale = scale;
-  for (Index r = 0; r < Index(a.rows()); ++r) {
-    for (Index c = 0; c < Index(a.cols()); ++c)
-      if (a(r, c) != 0) m.columns.push_back(c), m.weights.push_back(a(r, c));
-    m.offsets.push_back(Index(m.columns.size()));
-  }
-  return m;
-}
-
-}  // namespace
-
 const LimitNode::Powers& LimitNodes::powers(int id, int which) {
   std::lock_guard lock(mutex_);
   LimitNode& n = *nodes_[size_t(id)];
   auto& slot = n.powers[size_t(which)];
   if (slot) return *slot;
-  const StepMatrix& s = n.child_matrix[size_t(which)];
-  const Index k = s.rows();
-  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(k, k);
-  for (Index r = 0; r < k; ++r)
-    for (Index e = s.offsets[size_t(r)]; e < s.offsets[size_t(r) + 1]; ++e) m(r, s.columns[size_t(e)]) += s.weights[size_t(e)];
-  // Derivative rows sum to zero; 2 (M - 1 e_0) acts on them as 2 M does, and sends every
-  // row to a zero-sum one, so rounding in the sum never grows with the power.
-  Eigen::MatrixXd d = 2 * m;
-  d.col(0).array() -= 2.0;
-  // Second-derivative rows likewise, with the factor 4 of a step of d2/du2.
-  Eigen::MatrixXd d2 = 4 * m;
-  d2.col(0).array() -= 4.0;
-  auto p = std::make_unique<LimitNode::Powers>();
-  for (int j = 0; j < kPowers; ++j) {
-    p->forward.push_back(dense_step(m, 1));
-    p->backward.push_back(dense_step(d, 1));
-    p->backward2.push_back(dense_step(d2, 1));
-    m = (m * m).eval();
-    d = (d * d).eval();
-    d2 = (d2 * d2).eval();
-  }
-  for (int j = 0; j < kPowers; ++j) {
-    p->forward[size_t(j)].backward = &p->backward[size_t(j)];
-    p->forward[size_t(j)].backward2 = &p->backward2[size_t(j)];
-  }
-  slot = std::move(p);
+  // Binary steps: first-derivative rows scale by 2, second ones by 4 (step_matrix.h).
+  slot = step_powers(n.child_matrix[size_t(which)], 2, kPowers, true);
   return *slot;
 }
 

@@ -42,9 +42,7 @@ struct LimitNode {
   // Per child that is this node again (a self-similar step, as towards an extraordinary
   // vertex): the step's powers M^(2^j), each with its derivative forms (2 (M - 1 e_0))^(2^j)
   // and, for second derivatives, (4 (M - 1 e_0))^(2^j).
-  struct Powers {
-    std::vector<StepMatrix> forward, backward, backward2;
-  };
+  using Powers = StepPowers;  // step_matrix.h
   std::vector<std::unique_ptr<Powers>> powers;
   std::vector<char> corner_tried, corner_ready;
   // Bicubic B-spline check (LimitNodes::bspline): 0 not done, 1 yes, 2 no; the labels of the

@@ -23,6 +23,7 @@
 
 #include "framework/limit/face_domain.h"
 #include "framework/limit/limit_surface.h"
+#include "framework/limit/step_matrix.h"
 
 namespace subdiv {
 
@@ -35,9 +36,7 @@ public:
   bool triangles() const { return triangles_; }
   std::vector<Index> reads(const FacePoint& p) const;
 
-  struct Rows {
-    std::vector<double> du, dv;
-  };
+  using Rows = FirstDerivativeRows;  // step_matrix.h
   LimitSample evaluate(const FacePoint& p, const std::vector<double>& first_values, int channels, int derivatives,
                        Rows* rows_out = nullptr) const;
 

@@ -42,6 +42,7 @@
 
 #include "framework/limit/face_domain.h"
 #include "framework/limit/limit_surface.h"
+#include "framework/limit/step_matrix.h"
 
 namespace subdiv {
 
@@ -58,9 +59,7 @@ public:
   std::vector<Index> reads(const FacePoint& p) const;
 
   // Rows of the derivatives over those vertices (for stencils).
-  struct Rows {
-    std::vector<double> du, dv;
-  };
+  using Rows = FirstDerivativeRows;  // step_matrix.h
   LimitSample evaluate(const FacePoint& p, const std::vector<double>& first_values, int channels, int derivatives,
                        Rows* rows_out = nullptr) const;
 

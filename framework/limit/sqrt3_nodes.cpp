@@ -5,7 +5,6 @@
 #include <limits>
 #include <optional>
 #include <fmt/format.h>
-#include <Eigen/Dense>
 #include <tbb/task_arena.h>
 
 #include "framework/analysis/surface/local_patch.h"
@@ -190,46 +189,13 @@ Sqrt3Node& Sqrt3Nodes::expand_locked(int id) {
   return *n;
 }
 
-namespace {
-
-StepMatrix dense_step(const Eigen::MatrixXd& a) {
-  StepMatrix m;
-  m.source_count = Index(a.cols());
-  m.scale = 1;
-  for (Index r = 0; r < Index(a.rows()); ++r) {
-    for (Index c = 0; c < Index(a.cols()); ++c)
-      if (a(r, c) != 0) m.columns.push_back(c), m.weights.push_back(a(r, c));
-    m.offsets.push_back(Index(m.columns.size()));
-  }
-  return m;
-}
-
-}  // namespace
-
 const Sqrt3Node::Powers& Sqrt3Nodes::powers(int id, int which) {
   std::lock_guard lock(mutex_);
   Sqrt3Node& n = *nodes_[size_t(id)];
   auto& slot = n.powers[size_t(which)];
   if (slot) return *slot;
-  const StepMatrix& s = n.child_matrix[size_t(which)];
-  const Index k = s.rows();
-  if (k != s.source_count) throw Error("internal: a self-similar sqrt3 step is not square");
-  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(k, k);
-  for (Index r = 0; r < k; ++r)
-    for (Index e = s.offsets[size_t(r)]; e < s.offsets[size_t(r) + 1]; ++e) m(r, s.columns[size_t(e)]) += s.weights[size_t(e)];
-  // Derivative rows sum to zero; 3 (M - 1 e_0) acts on them as 3 M does and keeps them
-  // zero-sum, so rounding in the sum does not grow with the power (limit_nodes.cpp).
-  Eigen::MatrixXd d = 3 * m;
-  d.col(0).array() -= 3.0;
-  auto p = std::make_unique<Sqrt3Node::Powers>();
-  for (int j = 0; j < kPowers; ++j) {
-    p->forward.push_back(dense_step(m));
-    p->backward.push_back(dense_step(d));
-    m = (m * m).eval();
-    d = (d * d).eval();
-  }
-  for (int j = 0; j < kPowers; ++j) p->forward[size_t(j)].backward = &p->backward[size_t(j)];
-  slot = std::move(p);
+  // A double sqrt3 step scales by 3; sqrt3 limits have no second derivatives.
+  slot = step_powers(n.child_matrix[size_t(which)], 3, kPowers, false);
   return *slot;
 }
 

@@ -52,9 +52,7 @@ struct Sqrt3Node {
   std::vector<StepMatrix> child_matrix;  // rows: the child's labels; columns: this node's labels
   // Per child that is this node again (a self-similar step, towards a vertex): the step's
   // powers M^(2^j), each with its derivative form (3 (M - 1 e_0))^(2^j) (limit_nodes.h).
-  struct Powers {
-    std::vector<StepMatrix> forward, backward;
-  };
+  using Powers = StepPowers;  // step_matrix.h
   std::vector<std::unique_ptr<Powers>> powers;
   std::array<int, 3> corner_state{};     // 0 not tried, 1 ready, 2 not a known configuration
   std::array<CornerRows, 3> corner;      // over labels

@@ -1,6 +1,9 @@
 #include "framework/limit/step_matrix.h"
 
+#include <Eigen/Dense>
+
 #include "framework/stencil/stencil_table.h"
+#include "framework/util/error.h"
 
 namespace subdiv {
 
@@ -70,6 +73,49 @@ FirstDerivativeRows first_derivative_rows(std::span<const double> ds, std::span<
     return pulled_back(std::move(r), steps);
   };
   return {row(0), row(1)};
+}
+
+namespace {
+
+StepMatrix sparse_step(const Eigen::MatrixXd& a) {
+  StepMatrix m;
+  m.source_count = Index(a.cols());
+  m.scale = 1;
+  for (Index r = 0; r < Index(a.rows()); ++r) {
+    for (Index c = 0; c < Index(a.cols()); ++c)
+      if (a(r, c) != 0) m.columns.push_back(c), m.weights.push_back(a(r, c));
+    m.offsets.push_back(Index(m.columns.size()));
+  }
+  return m;
+}
+
+}  // namespace
+
+std::unique_ptr<StepPowers> step_powers(const StepMatrix& step, double factor, int count, bool second) {
+  const Index k = step.rows();
+  if (k != step.source_count) throw Error("internal: a self-similar step is not square");
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(k, k);
+  for (Index r = 0; r < k; ++r)
+    for (Index e = step.offsets[size_t(r)]; e < step.offsets[size_t(r) + 1]; ++e)
+      m(r, step.columns[size_t(e)]) += step.weights[size_t(e)];
+  Eigen::MatrixXd d = factor * m;
+  d.col(0).array() -= factor;
+  Eigen::MatrixXd d2 = factor * factor * m;
+  d2.col(0).array() -= factor * factor;
+  auto p = std::make_unique<StepPowers>();
+  for (int j = 0; j < count; ++j) {
+    p->forward.push_back(sparse_step(m));
+    p->backward.push_back(sparse_step(d));
+    if (second) p->backward2.push_back(sparse_step(d2));
+    m = (m * m).eval();
+    d = (d * d).eval();
+    if (second) d2 = (d2 * d2).eval();
+  }
+  for (int j = 0; j < count; ++j) {
+    p->forward[size_t(j)].backward = &p->backward[size_t(j)];
+    if (second) p->forward[size_t(j)].backward2 = &p->backward2[size_t(j)];
+  }
+  return p;
 }
 
 }  // namespace subdiv

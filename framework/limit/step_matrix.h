@@ -2,6 +2,7 @@
 // One step of a descent as a sparse matrix (rows: the vertices after the step, columns:
 // those before), and derivative rows pulled back through a chain of steps.
 #include <array>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -41,6 +42,18 @@ std::vector<double> applied(const std::vector<double>& row, std::span<const doub
 // derivative: rounding in the sum would otherwise double at every step. `order` 2: a row of
 // a second derivative (scaled by 4^-k), each step's factor squared.
 std::vector<double> pulled_back(std::vector<double> row, std::span<const StepMatrix* const> steps, int order = 1);
+
+// The powers M^(2^j), j < count, of a square step M — a self-similar run of steps taken one
+// binary digit at a time — each with the forms derivative rows are pulled back through
+// (`backward`): factor (M - 1 e_0), which acts on zero-sum rows as factor M does and sends
+// every row to a zero-sum one, so rounding in the sum never grows with the power (factor: the
+// step's scale, 2 for a binary split, 3 for two sqrt3 steps); with `second`, also
+// factor^2 (M - 1 e_0) for second-derivative rows (`backward2`). Throws subdiv::Error
+// ("internal") for a step that is not square.
+struct StepPowers {
+  std::vector<StepMatrix> forward, backward, backward2;
+};
+std::unique_ptr<StepPowers> step_powers(const StepMatrix& step, double factor, int count, bool second);
 
 // The rows of d/du and d/dv over the first step's sources, from rows `ds`, `dt` along a
 // node's own coordinates and the point's Jacobian J (J[a][d] = d(s, t)_a / d(u, v)_d, as

@@ -19,6 +19,7 @@
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
 #include "support/test_meshes.h"
+#include "unit/limit/limit_meshes.h"
 
 using namespace subdiv;
 
@@ -124,12 +125,7 @@ TEST_CASE("Dual schemes have linear precision in the quadrant parameterisation")
   // Control points at their own grid coordinates (a 16 x 16 torus unrolled away from the
   // seam, which the faces evaluated here do not read): the limit is the plane (i + u, j + v).
   const int n = 16;
-  test::Mesh m = test::torus(n, n);
-  for (Index v = 0; v < m.vertex_count; ++v) {
-    m.positions[size_t(3 * v)] = double(v % n);
-    m.positions[size_t(3 * v + 1)] = double(v / n);
-    m.positions[size_t(3 * v + 2)] = 0;
-  }
+  const test::Mesh m = limit_test::unrolled_torus(n);
   const LimitSurface s(load_scheme("doo-sabin"), m.level());
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> U(0, 1);

@@ -29,6 +29,19 @@ inline test::Mesh bumped(test::Mesh m, double z_amplitude = 0.1) {
   return m;
 }
 
+// A regular n x n quad torus whose control points sit at their own grid coordinates
+// (i, j, 0), vertex j n + i: unrolled away from the seam, so faces whose neighbourhood
+// does not reach it have the plane (i + u, j + v) as limit for a scheme with linear precision.
+inline test::Mesh unrolled_torus(int n) {
+  test::Mesh m = test::torus(n, n);
+  for (Index v = 0; v < m.vertex_count; ++v) {
+    m.positions[size_t(3 * v)] = double(v % n);
+    m.positions[size_t(3 * v + 1)] = double(v / n);
+    m.positions[size_t(3 * v + 2)] = 0;
+  }
+  return m;
+}
+
 // The Euclidean distance between two points (or any two equally long vectors).
 inline double distance(std::span<const double> a, std::span<const double> b) {
   double s = 0;

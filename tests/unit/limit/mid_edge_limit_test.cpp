@@ -234,12 +234,7 @@ TEST_CASE("mid-edge: linear precision in the quadrant parameterisation") {
   // regular grid every step keeps the plane: the middles of the middles of two edges at a
   // corner lie at (1/4, 1/4) of it, the centre of its quadrant.
   const int n = 16;
-  test::Mesh m = test::torus(n, n);
-  for (Index v = 0; v < m.vertex_count; ++v) {
-    m.positions[size_t(3 * v)] = double(v % n);
-    m.positions[size_t(3 * v + 1)] = double(v / n);
-    m.positions[size_t(3 * v + 2)] = 0;
-  }
+  const test::Mesh m = limit_test::unrolled_torus(n);
   const LimitSurface s(load_scheme("mid-edge"), m.level());
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> U(0, 1);

@@ -135,12 +135,7 @@ TEST_CASE("A plugin's split (sqrt2): continuous across every edge, derivatives, 
 TEST_CASE("A plugin's split (sqrt2): linear precision on a regular grid, and the refusals") {
   test::load_example_plugins();
   const int n = 16;
-  test::Mesh m = test::torus(n, n);
-  for (Index v = 0; v < m.vertex_count; ++v) {
-    m.positions[size_t(3 * v)] = double(v % n);
-    m.positions[size_t(3 * v + 1)] = double(v / n);
-    m.positions[size_t(3 * v + 2)] = 0;
-  }
+  const test::Mesh m = limit_test::unrolled_torus(n);
   const LimitSurface s(load_scheme("sqrt2"), m.level());
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> U(0, 1);
