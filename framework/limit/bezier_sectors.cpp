@@ -29,7 +29,7 @@ QuadMesh::QuadMesh(const Level& level, std::span<const double> positions, Bounda
                                 "inconsistently oriented edge); the masks need a manifold quad mesh",
                                 f, vertex(f, k), vertex(f, k + 1)));
   }
-  check_features();
+  find_sectors();
 }
 
 bool QuadMesh::feature(Index f, int k) const {
@@ -48,7 +48,7 @@ std::pair<Index, int> QuadMesh::step_back(Index f, int k) const {
 // or a crease passing through); corners (a tagged corner, a boundary vertex of one face
 // with corners kept, more than two feature edges) with one face between consecutive feature
 // edges. Each refusal names the first face where it happens.
-void QuadMesh::check_features() const {
+void QuadMesh::find_sectors() {
   if (boundary_ == BoundaryInterpolation::None)
     for (Index e = 0; e < level_.edge_count(); ++e)
       if (level_.edge_on_boundary(e))
@@ -69,7 +69,7 @@ void QuadMesh::check_features() const {
         throw Error(fmt::format("face {}: vertex {} is a semi-sharp corner ({}); refine until it has decayed and "
                                 "approximate that mesh",
                                 f, v, level_.vertex_sharp(v)));
-      const Sector s = sector(f, k);
+      const Sector s = find_sector(f, k);
       const char* why = nullptr;
       if (s.closed && s.corner) why = "is a corner inside the surface (a cone point)";
       else if (!s.closed && s.corner && s.faces > 1) why = "is a corner with more than one face between two feature edges";
@@ -80,10 +80,11 @@ void QuadMesh::check_features() const {
                                 "face between feature edges; refine the mesh once (subdiv refine -l 1) and "
                                 "approximate that",
                                 f, v, why));
+      sectors_.push_back(s);
     }
 }
 
-Sector QuadMesh::sector(Index f, int k) const {
+Sector QuadMesh::find_sector(Index f, int k) const {
   Sector s;
   const Index v = vertex(f, k);
   int features = 0;
@@ -143,7 +144,7 @@ Sector QuadMesh::sector(Index f, int k) const {
 // tangent plane (corner_tangent) keeps t_(j-1) + t_(j+1) = 2 c t_j, and with it the normal
 // field's continuity across the sector's edges.
 Point3 QuadMesh::corner_tangent(Index f, int k, bool towards_next) const {
-  const Sector s = sector(f, k);
+  const Sector& s = sector(f, k);
   const Point3 t = mask_tangent(f, k, towards_next, s);
   // One tangent plane at the vertex: inside the surface, or on a boundary (not a crease,
   // whose sides have planes of their own, nor a corner, whose tangents are exact).

@@ -9,6 +9,7 @@
 #include <span>
 #include <unordered_map>
 #include <utility>
+#include <vector>
 
 #include "framework/features/feature_options.h"
 #include "framework/topology/level.h"
@@ -54,7 +55,7 @@ public:
   bool feature(Index f, int k) const;
   // The face and corner where the directed edge a -> b starts (the edge must exist).
   std::pair<Index, int> face_of(Index a, Index b) const { return edge_.at(key(a, b)); }
-  Sector sector(Index f, int k) const;
+  const Sector& sector(Index f, int k) const { return sectors_[4 * size_t(f) + size_t(((k % 4) + 4) % 4)]; }
 
   // The limit tangent at corner k of face f along its edge to corner k + 1 (towards_next)
   // or k - 1, for the patch parameter of unit speed where the sector is regular; projected
@@ -64,7 +65,8 @@ public:
 private:
   static std::uint64_t key(Index a, Index b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
   bool has_edge(Index a, Index b) const { return edge_.contains(key(a, b)); }
-  void check_features() const;
+  void find_sectors();  // fills sectors_, refusing what the masks do not cover
+  Sector find_sector(Index f, int k) const;
   // The face across the edge from corner k of f to corner k - 1 (one step in walk order), and
   // the corner of the same vertex in it; across the edge to corner k + 1 (one step back).
   std::pair<Index, int> step_forward(Index f, int k) const { return face_of(vertex(f, k), vertex(f, k + 3)); }
@@ -77,6 +79,7 @@ private:
   BoundaryInterpolation boundary_;
   std::span<const double> normals_;
   std::unordered_map<std::uint64_t, std::pair<Index, int>> edge_;
+  std::vector<Sector> sectors_;  // per face corner, 4 f + k
 };
 
 }  // namespace subdiv::bezier

@@ -50,8 +50,7 @@ EvaluateRequest evaluation_of(const RefineRequest& r) {
 
 // Each face-varying channel at every corner of the adaptive mesh: its limit at the corner's
 // (base face, u, v), one value per corner (seams stay seams).
-std::vector<FaceVaryingArray> limit_face_varying(EvaluateRequest request, const AdaptiveMesh& mesh) {
-  const PreparedEvaluation prepared = prepare_evaluation(std::move(request));
+std::vector<FaceVaryingArray> limit_face_varying(const PreparedEvaluation& prepared, const AdaptiveMesh& mesh) {
   std::vector<Index> faces(mesh.corner_uv.size());
   std::vector<double> uv(2 * mesh.corner_uv.size());
   for (size_t f = 0; f + 1 < mesh.face_offsets.size(); ++f)
@@ -106,13 +105,18 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
   o.tolerance = request.tolerance;
   AdaptiveResult out;
   try {
+    // With face-varying channels the evaluation of the same mesh brings the surface along.
+    std::optional<PreparedEvaluation> evaluation;
+    if (face_varying_source) evaluation = prepare_evaluation(std::move(*face_varying_source));
     std::shared_ptr<const LimitSurface> surface;
-    if (o.limit || o.tolerance > 0) {
+    if (evaluation) {
+      surface = evaluation->surface;
+    } else if (o.limit || o.tolerance > 0) {
       LimitSurfaceOptions lo;
       lo.features = p.options.features;
       surface = std::make_shared<const LimitSurface>(p.sequence.schemes.front(), p.base, lo);
-      o.surface = surface.get();
     }
+    o.surface = surface.get();
     // Point arrays ride along with the positions (interpolated like them).
     std::vector<const DataArray*> carried;
     int channels = 0;
@@ -148,7 +152,7 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
     if (p.rational) to_homogeneous(positions, weights_of(p.mesh, p.weights_name));
     out.mesh = refine_adaptive(*p.sequence.schemes.front(), p.base, positions, o, data, channels);
     if (p.rational) project_adaptive(out.mesh, weight_channel);
-    if (face_varying_source) out.face_varying = limit_face_varying(std::move(*face_varying_source), out.mesh);
+    if (evaluation) out.face_varying = limit_face_varying(*evaluation, out.mesh);
     else
       for (const FaceVaryingArray& a : p.mesh.face_varying)
         p.notes.push_back(fmt::format("face-varying array {} is carried to the adaptive mesh only with limit "
