@@ -87,10 +87,12 @@ private:
     return last == start || last[-1] != '\\';
   }
 
-  // Moves to the next token; false at the statement's end (the line's or a comment's).
+  // Moves to the next token; false at the statement's end (the line's or a comment's). A
+  // lone '\r', also inside the comment, ends the line for the line-by-line reader: declined.
   static bool next_token(const char*& p, const char* end, bool& declined) {
     while (p < end && is_blank(*p)) ++p;
     if (p < end && *p == '\r') declined = true;
+    if (p < end && *p == '#' && std::memchr(p, '\r', std::size_t(end - p))) declined = true;
     return p < end && *p != '#' && !declined;
   }
 

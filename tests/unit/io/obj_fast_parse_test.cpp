@@ -154,6 +154,10 @@ TEST_CASE("obj fast path: declines what only the line-by-line reader handles, wh
   check_declined(tri + "# comment\rf 1 2 3\n");
   check_declined("v 0 0 0\rv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   check_declined(tri + "f 1 2 3\r\r\n");
+  // A lone '\r' inside the comment after a statement starts a new line for that reader.
+  check_declined(tri + "f 1 2 3 # c\rx 1\n");
+  check_declined(tri + "vt 0.75 0.3\t# End\ri 0.3\n");
+  check_declined("v 0 0 0 # c\rf 1 2 3\nv 1 0 0\nv 0 1 0\n");
   check_declined("v 1e-400 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   check_declined(tri + "vt 0 0\nf 1/1 2/1 3/1\nf 1 2 3\n");
   // Errors: the same message, naming the same line.
@@ -193,7 +197,8 @@ TEST_CASE("obj fast path: random files from valid and broken lines, against the 
                         "f 1/1/1 2/-1/1 3/1/1", "f 4 5 6 7",  "# comment",       "g a b",         "",
                         "   ",           "s off",            "v 1 2",           "f 1 2",         "f 1/0 2 3",
                         "v nan 0 0",     "f 99 1 2",         "vt 1 2 3",        "f 1 2 3 \\",    "t crease 2/1/0 0 1 1",
-                        "l 1 2",         "f 0 1 2",          "v 1 2 3 # c",     "f 1 2 3#c",     "v 1\r2 3"};
+                        "l 1 2",         "f 0 1 2",          "v 1 2 3 # c",     "f 1 2 3#c",     "v 1\r2 3",
+                        "vt 0 1 # c\rx"};
   // Every other file from plain-geometry lines only, so that the fast path answers often.
   const char* plain[] = {"v 1 2 3", "v -1e5 +2 3.25", "v 0 0 0", "# comment", "g a b", "", "   ", "s off",
                          "f 1 2 3", "f -1 -2 -3", "f 1 2 3#c", "v 1 2 3 # c", "vt 0.5 0.25", "vn 0 0 1"};
