@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fmt/format.h>
 
 #include "framework/engine/ghost_rings.h"
@@ -9,8 +10,10 @@
 #include "framework/limit/limit_surface.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
+#include "framework/util/memory_limit.h"
 #include "framework/util/parallel_for_all.h"
 #include "framework/util/quoted_text.h"
+#include "framework/util/step_progress.h"
 
 namespace subdiv {
 namespace {
@@ -84,7 +87,7 @@ void choose_splits(AdaptiveStage& s, bool triangles, const AdaptiveOptions& o, s
       s.split[f] = deviation(*o.surface, base_points, s.base_face[f], {c, size_t(L.face_size(Index(f)))}, triangles) >
                    o.tolerance;
     }
-  });
+  }, LoopProgress::Told);
 }
 
 // Writes the output faces: every face not split, with the finer vertices along its edges.
@@ -176,7 +179,25 @@ void move_to_limit(AdaptiveMesh& out, const LimitSurface& surface, std::span<con
     std::copy(p.begin(), p.begin() + 3, out.positions.begin() + std::ptrdiff_t(3 * v));
     const size_t D = size_t(channels - 3);
     std::copy(p.begin() + 3, p.end(), out.data.begin() + std::ptrdiff_t(D * v));
-  });
+  }, LoopProgress::Told);
+}
+
+// About what the stages and the output hold per face of the finest stage: 0.79 kB per face
+// measured for a uniform level 7 of a 48-quad torus (--tolerance 1e-300), written mesh included.
+constexpr double kBytesPerStageFace = 800;
+
+// Refuses a stage that would not fit before building it: a tolerance near 0 asks for the
+// uniform level, four times larger each level, where the process would otherwise run out
+// of memory (or be killed) half-way.
+void check_stage_fits(Index split_count, int level) {
+  const MemoryBudget have = available_memory();
+  const double need = 4.0 * double(split_count) * kBytesPerStageFace;
+  if (need > have.bytes)
+    throw Error(fmt::format("adaptive refinement: level {} would split {} faces into about {} and need about {:.1f} "
+                            "GiB, but only {:.1f} GiB of memory is available (limited by {}); ask for fewer levels or "
+                            "a larger tolerance",
+                            level, split_count, 4 * std::int64_t(split_count), need / 1073741824.0,
+                            have.bytes / 1073741824.0, have.source));
 }
 
 Index uniform_face_count(const Level& base, bool triangles, int levels) {
@@ -221,16 +242,26 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<
   stages.push_back(base_stage(base, points, C, triangles));
   AdaptiveMesh out;
   out.data_channels = data_channels;
+  // A front-end's bar (util/step_progress.h): per level, choosing the faces and refining
+  // them; then the limit positions.
+  const size_t parts = 2 * size_t(levels) + (options.limit ? 1 : 0);
   for (int l = 0; l < levels; ++l) {
     AdaptiveStage& s = stages.back();
-    choose_splits(s, triangles, options, positions);
+    {
+      const StepProgressScope::Report share = StepProgressScope::part(2 * size_t(l), parts);
+      const StepProgressScope choosing(share);
+      choose_splits(s, triangles, options, positions);
+    }
     const Index split_count = Index(std::count(s.split.begin(), s.split.end(), 1));
     out.split_faces.push_back(split_count);
     if (split_count == 0) break;
+    check_stage_fits(split_count, l + 1);
     RefineOptions ro;
     ro.levels = 1;
     ro.features = options.features;
     ro.first_step = options.first_step + l;
+    const StepProgressScope::Report share = StepProgressScope::part(2 * size_t(l) + 1, parts);
+    const StepProgressScope refining(share);
     AdaptiveStage next = refine_stage(scheme, s, rings, ghosts, ro, triangles);
     out.computed_faces.push_back(next.level.face_count());
     stages.push_back(std::move(next));
@@ -240,7 +271,11 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<
   for (Index f = 0; f < base.face_count(); ++f)
     if (!base.is_hole(f)) st.emit(0, f);
   number_vertices(stages, st, out);
-  if (options.limit) move_to_limit(out, *options.surface, points, C);
+  if (options.limit) {
+    const StepProgressScope::Report share = StepProgressScope::part(parts - 1, parts);
+    const StepProgressScope moving(share);
+    move_to_limit(out, *options.surface, points, C);
+  }
   out.uniform_faces = uniform_face_count(base, triangles, levels);
   return out;
 }

@@ -194,7 +194,7 @@ Tessellation tessellate(const LimitSurface& surface, int N, const SurfaceSample&
       out.positions[size_t(3 * i + c)] = p.position[size_t(c)];
       out.normals[size_t(3 * i + c)] = n[size_t(c)];
     }
-  });
+  }, LoopProgress::Told);
   return out;
 }
 

@@ -6,6 +6,7 @@
 
 #include "framework/io/mesh_read.h"
 #include "framework/limit/limit_surface.h"
+#include "framework/pipeline/phase_progress.h"
 #include "framework/pipeline/rational_weights.h"
 #include "framework/pipeline/refine_pipeline.h"
 #include "framework/util/option_spelling.h"
@@ -150,7 +151,10 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
     // with `limit` evaluated on the limit — like any point data, then projected.
     std::vector<double> positions = p.mesh.positions;
     if (p.rational) to_homogeneous(positions, weights_of(p.mesh, p.weights_name));
-    out.mesh = refine_adaptive(*p.sequence.schemes.front(), p.base, positions, o, data, channels);
+    {
+      const PhaseProgress bar(r.progress, r.progress_fraction, fmt::format("refining adaptively to level {}", levels));
+      out.mesh = refine_adaptive(*p.sequence.schemes.front(), p.base, positions, o, data, channels);
+    }
     if (p.rational) project_adaptive(out.mesh, weight_channel);
     if (evaluation) out.face_varying = limit_face_varying(*evaluation, out.mesh);
     else
@@ -180,6 +184,8 @@ AdaptiveRequest adaptive_request_from(EvaluateRequest e, int levels, double tole
   a.refine.feature_file = std::move(e.feature_file);
   a.refine.feature_angle = e.feature_angle;
   a.refine.levels = levels;
+  a.refine.progress = std::move(e.progress);
+  a.refine.progress_fraction = std::move(e.progress_fraction);
   a.tolerance = tolerance;
   a.limit = limit;
   return a;

@@ -182,7 +182,7 @@ EvaluatedPoints evaluate_samples(size_t count, int channels, int derivatives, F&
       put(out.duv, s.duv, s.has_second_derivatives);
       put(out.dvv, s.dvv, s.has_second_derivatives);
     }
-  });
+  }, LoopProgress::Told);
   return out;
 }
 
@@ -208,6 +208,7 @@ PreparedEvaluation prepare_evaluation(EvaluateRequest request) {
   PreparedRefinement p = prepare_refinement(r);
   LimitSurfaceOptions options;
   options.features = p.options.features;
+  if (request.progress) request.progress("preparing the limit surface");
   try {
     out.surface = limit_surface_of(p.sequence, std::move(p.base), options);
   } catch (const OptionError&) {
@@ -336,7 +337,7 @@ LimitStencilMatrices limit_stencil_matrices(const PreparedEvaluation& p, std::sp
   std::vector<LimitStencil> stencils(faces.size());
   parallel_for_all(faces.size(), [&](size_t i) {
     stencils[i] = p.surface->stencil(faces[i], uv[2 * i], uv[2 * i + 1], derivatives);
-  });
+  }, LoopProgress::Told);
   LimitStencilMatrices out;
   out.rows = Index(faces.size());
   out.columns = p.request_vertex_count;

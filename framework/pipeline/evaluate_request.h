@@ -4,6 +4,7 @@
 // loaded exactly as a refinement loads them (prepare_refinement: the mesh's option tags,
 // feature files and angles, unused vertices dropped), then points (face, u, v) of the limit
 // surface with their derivatives, or limit stencils over the request's vertices.
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -25,6 +26,10 @@ struct EvaluateRequest {
   ShapeChoices shape;
   std::string feature_file;   // a feature sidecar (io/feature_file.h)
   double feature_angle = -1;  // degrees: sharper edges become infinitely sharp creases; < 0: off
+  // As RefineRequest's: told each phase as it starts, and the share of the long work done
+  // (0 to 1) from the thread that made the request, for a front-end's bar.
+  std::function<void(const std::string& phase)> progress;
+  std::function<void(double done)> progress_fraction;
 };
 
 // A face-varying channel's limit (OpenSubdiv's face-varying surfaces, Bfr's

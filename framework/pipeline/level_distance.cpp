@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "framework/pipeline/adaptive_request.h"
+#include "framework/pipeline/phase_progress.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -30,6 +31,8 @@ LevelDistance level_distance(const EvaluateRequest& request, int level) {
       uv[2 * v] = a.corner_uv[size_t(c)][0];
       uv[2 * v + 1] = a.corner_uv[size_t(c)][1];
     }
+  const PhaseProgress bar(request.progress, request.progress_fraction,
+                          fmt::format("the limit at level {}'s {} vertices", level, V));
   const EvaluatedPoints limit = evaluate_limit_points(prepared, faces, uv, 1);
   LevelDistance d;
   d.level = level;

@@ -16,7 +16,9 @@ public:
   using Report = std::function<void(double done)>;
 
   // Reports to `report` until the scope ends (nothing when it is empty).
+  // The scope keeps a pointer to `report`, which must outlive it (hence no temporaries).
   explicit StepProgressScope(const Report& report) : previous_(current()) { current() = report ? &report : nullptr; }
+  explicit StepProgressScope(Report&&) = delete;
   ~StepProgressScope() { current() = previous_; }
   StepProgressScope(const StepProgressScope&) = delete;
   StepProgressScope& operator=(const StepProgressScope&) = delete;

@@ -123,22 +123,6 @@ std::vector<RefinedLevel> refine_curve(RefineInput& in, subdiv::SchemeSource sch
   return out;
 }
 
-// progress(phase, done): the phase as it starts (done None), then the share of the long
-// work done, 0 to 1. Called on the calling thread with the GIL taken; the callable outlives
-// the call, so the handle holds no reference (no refcounting without the GIL).
-void report_progress(subdiv::RefineRequest& request, py::handle progress) {
-  auto phase = std::make_shared<std::string>();
-  request.progress = [progress, phase](const std::string& now) {
-    *phase = now;
-    py::gil_scoped_acquire gil;
-    progress(now, py::none());
-  };
-  request.progress_fraction = [progress, phase](double done) {
-    py::gil_scoped_acquire gil;
-    progress(*phase, done);
-  };
-}
-
 py::list refine(py::handle mesh, py::handle scheme, py::handle params, int levels, const std::string& boundary,
                 const std::string& crease_method, int threads, bool all_levels, int start_level,
                 py::handle point_data, py::handle cell_data, py::handle face_varying, const std::string& fvar_boundary,
@@ -230,6 +214,22 @@ py::list stencils(py::handle mesh, py::handle scheme, py::handle params, int lev
 }
 
 }  // namespace
+
+// progress(phase, done): the phase as it starts (done None), then the share of the long
+// work done, 0 to 1. Called on the calling thread with the GIL taken; the callable outlives
+// the call, so the handle holds no reference (no refcounting without the GIL).
+void report_progress(subdiv::RefineRequest& request, py::handle progress) {
+  auto phase = std::make_shared<std::string>();
+  request.progress = [progress, phase](const std::string& now) {
+    *phase = now;
+    py::gil_scoped_acquire gil;
+    progress(now, py::none());
+  };
+  request.progress_fraction = [progress, phase](double done) {
+    py::gil_scoped_acquire gil;
+    progress(*phase, done);
+  };
+}
 
 void bind_refine(py::module_& m) {
   m.def("_refine", &refine, py::arg("mesh"), py::arg("scheme"), py::arg("params"), py::arg("levels"), py::arg("boundary"),

@@ -130,6 +130,10 @@ subdiv::SchemeSource scheme_source_from(py::handle scheme, py::handle params);
 subdiv::Level surface_base(const subdiv::MeshData& mesh, const std::string& name, const SchemeChoice& c);
 
 // ---- bind_*.cpp ---------------------------------------------------------------------------
+// progress(phase, done) as the request's progress callbacks (bind_refine.cpp): the phase as
+// it starts (done None), then the share of the long work done, 0 to 1.
+void report_progress(subdiv::RefineRequest& request, py::handle progress);
+
 void bind_schemes(py::module_& m);
 void bind_mesh_io(py::module_& m);
 void bind_refine(py::module_& m);

@@ -25,7 +25,7 @@ class AdaptiveInfo:
 
 def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, limit=False, params=None,
                     boundary="edges-and-corners", crease_method="uniform", feature_angle=-1.0, threads=0,
-                    info=False, fvar_boundary="all"):
+                    info=False, fvar_boundary="all", progress=None):
     """Refine only where the surface needs it, up to level ``levels``; return a Mesh.
 
     Faces touching an extraordinary vertex, a crease, a sharp or semi-sharp vertex or a hole,
@@ -59,6 +59,11 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
         at its (face, u, v), in ``face_varying``; without it they are left out (a warning).
     info : bool
         Return ``(mesh, AdaptiveInfo)`` instead of the mesh.
+    progress : callable, optional
+        Called as ``progress(phase, done)`` on the calling thread, as for refine():
+        ``done`` is None when a phase starts ("refining adaptively to level 6"), then the
+        share done, 0 to 1 (each level's choice of faces and their refinement, then the limit
+        points). An exception it raises stops the refinement and comes back from here.
 
     The result is watertight: a coarse face next to finer ones takes the finer vertices along
     its edges as corners of its own (a transition polygon), so every interior edge is in
@@ -84,7 +89,7 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
     r = _subdivkit._refine_adaptive(mesh, scheme, params, int(levels), tol, bool(limit), str(boundary),
                                     str(crease_method), float(feature_angle), int(threads),
                                     _data_arrays(mesh.point_data, mesh.point_roles, mesh.n_points, "point data"),
-                                    _face_varying_triples(mesh), str(fvar_boundary))
+                                    _face_varying_triples(mesh), str(fvar_boundary), progress)
     if mesh.face_varying and not limit:
         warnings.warn(f"refine_adaptive: the face-varying arrays {', '.join(repr(n) for n in mesh.face_varying)} are "
                       "carried only with limit=True (each corner gets the array's own limit there)", UserWarning,

@@ -1,5 +1,5 @@
 from dataclasses import dataclass
-from typing import Literal, Mapping, overload
+from typing import Callable, Literal, Mapping, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -21,9 +21,11 @@ class AdaptiveInfo:
 def refine_adaptive(mesh: Mesh, scheme: _SchemeArg = "catmull-clark", levels: int = 1, *, tolerance: float = 0.0,
                     limit: bool = False, params: _Params = None, boundary: str = "edges-and-corners",
                     crease_method: str = "uniform", feature_angle: float = -1.0, threads: int = 0,
-                    info: Literal[False] = False, fvar_boundary: str = "all") -> Mesh: ...
+                    info: Literal[False] = False, fvar_boundary: str = "all",
+                    progress: Callable[[str, float | None], object] | None = None) -> Mesh: ...
 @overload
 def refine_adaptive(mesh: Mesh, scheme: _SchemeArg = "catmull-clark", levels: int = 1, *, tolerance: float = 0.0,
                     limit: bool = False, params: _Params = None, boundary: str = "edges-and-corners",
                     crease_method: str = "uniform", feature_angle: float = -1.0, threads: int = 0,
-                    info: Literal[True], fvar_boundary: str = "all") -> tuple[Mesh, AdaptiveInfo]: ...
+                    info: Literal[True], fvar_boundary: str = "all",
+                    progress: Callable[[str, float | None], object] | None = None) -> tuple[Mesh, AdaptiveInfo]: ...

@@ -27,3 +27,21 @@ def test_an_exception_in_progress_stops_the_refinement():
             raise KeyboardInterrupt("stop")
     with pytest.raises(KeyboardInterrupt):
         sk.refine(sk.read_mesh(MESHES / "cube.obj"), "catmull-clark", 3, progress=stop)
+
+
+def test_adaptive_refinement_tells_its_levels_and_limit_and_stops_on_an_exception():
+    calls = []
+    mesh = sk.read_mesh(MESHES / "cube.obj")
+    sk.refine_adaptive(mesh, "catmull-clark", 4, limit=True, progress=lambda phase, done: calls.append((phase, done)))
+    assert calls[0] == ("refining adaptively to level 4", None)
+    shares = [done for _, done in calls if done is not None]
+    assert shares and all(0 <= s <= 1 for s in shares)
+    assert shares == sorted(shares), "the share only grows"
+    assert any(0 < s < 1 for s in shares), shares
+
+    def stop(phase, done):
+        if done is not None and done > 0.3:
+            raise KeyboardInterrupt("stopped")
+
+    with pytest.raises(KeyboardInterrupt):
+        sk.refine_adaptive(mesh, "catmull-clark", 4, limit=True, progress=stop)

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """`subdiv refine` draws its progress bar on a terminal, and nothing on a pipe or with -q:
 while reading, on each level, while writing (VTK formats and OBJ, OFF, PLY, STL);
-`subdiv evaluate` and `subdiv interpolate` while reading their mesh; and within a level,
-after each pass of its step.
+`subdiv evaluate` and `subdiv interpolate` while reading their mesh; `subdiv evaluate`
+while sampling, refining adaptively and evaluating points, and `subdiv refine --adaptive`;
+and within a level, after each pass of its step.
 
 The terminal is a pseudo-terminal (Python's pty module): stderr is a tty there, as in a
 shell. Usage: progress_pty_test.py SUBDIV SOURCE_DIR
@@ -83,6 +84,25 @@ def main():
             shares = re.findall(r"writing [^\r]*\] +(\d+)%", tty)
             if code != 0 or not any(0 < int(share) < 100 for share in shares):
                 failures.append(f"subdiv evaluate {mode[0]}: exit {code}, no writing bar between 0 and 100% in {tty!r}")
+        # The long work between reading and writing has its own bar, moving between its ends:
+        # sampling the limit, refining adaptively (each level's choice and refinement, then the
+        # limit points), evaluating many points.
+        many = Path(tmp) / "many.csv"
+        many.write_text("face,u,v\n" + "".join(f"{f % 48},0.25,0.75\n" for f in range(20000)))
+        for mode, phase in [(["--samples", "40"], "sampling the limit surface, 40 x 40 per face"),
+                            (["--adaptive", "6", "--limit"], "refining adaptively to level 6"),
+                            (["--at", str(many)], "evaluating 20000 points")]:
+            out = Path(tmp) / ("many-limit.csv" if mode[0] == "--at" else "long.vtp")
+            code, tty = run_on_pty([subdiv, "evaluate", str(mesh), *mode, "-o", str(out)], every_step)
+            shares = re.findall(re.escape(phase) + r"  \[[^\r]*\] +(\d+)%", tty)
+            if code != 0 or not any(0 < int(share) < 100 for share in shares):
+                failures.append(f"subdiv evaluate {mode[0]}: exit {code}, no bar between 0 and 100% while "
+                                f"{phase!r}: {tty!r}")
+        code, tty = run_on_pty([subdiv, "refine", str(mesh), "--adaptive", "6", "--limit", "-o",
+                                str(Path(tmp) / "adaptive.vtp")], every_step)
+        shares = re.findall(r"refining adaptively to level 6  \[[^\r]*\] +(\d+)%", tty)
+        if code != 0 or not any(0 < int(share) < 100 for share in shares):
+            failures.append(f"subdiv refine --adaptive: exit {code}, no bar between 0 and 100%: {tty!r}")
         # The bar moves within a level: the quad B-spline of degree 7 has 4 passes per level
         # (a split and 3 smoothing passes), each told (engine/step_progress.h), so the last
         # level's line shows the shares after 1, 2 and 3 of its passes (and the one it started at).

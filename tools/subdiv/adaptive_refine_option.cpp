@@ -30,7 +30,8 @@ void add_tolerance_option(CLI::App* cmd, double& tolerance) {
 }
 
 void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& a, bool limit, bool other_levels, bool in_pieces,
-                         const std::string& output, bool quiet, std::chrono::steady_clock::time_point t0) {
+                         const std::string& output, bool quiet, Progress& progress,
+                         std::chrono::steady_clock::time_point t0) {
   if (other_levels) throw Error("--adaptive L gives the finest level: leave out -l/--levels");
   if (!(a.tolerance >= 0) || !std::isfinite(a.tolerance))
     throw Error(fmt::format("--tolerance {}: give a distance >= 0 (0: split only around features)", a.tolerance));
@@ -46,7 +47,10 @@ void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& a, bool limi
   AdaptiveResult result = refine_adaptive_request(std::move(r));
   for (const std::string& w : result.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
   const std::string summary = adaptive_summary(result);
-  write_mesh(output, adaptive_mesh_data(std::move(result.mesh), std::move(result.point_arrays), std::move(result.face_varying)));
+  progress.say(fmt::format("writing {}", output));
+  write_mesh(output, adaptive_mesh_data(std::move(result.mesh), std::move(result.point_arrays), std::move(result.face_varying)),
+             [&progress](double done) { progress.fraction(done); });
+  progress.done();
   if (quiet) return;
   for (const auto& note : result.notes) print_safe("{}\n", spell_options(note, cli_option_spelling()));
   print_safe("adaptive refinement of {} to level {}: {} in {:.3f} s -> {}\n", result.scheme_label, a.levels,

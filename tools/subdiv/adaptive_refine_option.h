@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "framework/pipeline/refine_request.h"
+#include "progress.h"
 
 namespace subdiv::cli {
 
@@ -23,7 +24,7 @@ void add_tolerance_option(CLI::App* cmd, double& tolerance);
 // Runs the adaptive refinement of `request`'s mesh and scheme, writes `output` (a mesh file)
 // and prints a summary unless quiet. `other_levels`: -l was given as well (refused).
 void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& args, bool limit, bool other_levels,
-                         bool in_pieces, const std::string& output, bool quiet,
+                         bool in_pieces, const std::string& output, bool quiet, Progress& progress,
                          std::chrono::steady_clock::time_point t0);
 
 }  // namespace subdiv::cli

@@ -17,6 +17,7 @@
 #include "framework/pipeline/level_distance.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/pipeline/limit_mesh.h"
+#include "framework/pipeline/phase_progress.h"
 #include "framework/pipeline/evaluate_request.h"
 #include "framework/pipeline/points_file.h"
 #include "framework/io/mesh_write.h"
@@ -101,6 +102,8 @@ EvaluateRequest evaluate_request(const EvaluateArgs& a, Progress& progress) {
   if (a.fvar_boundary_given) r.shape.face_varying = face_varying_from_name(a.fvar_boundary, "--fvar-boundary");
   r.feature_file = a.features;
   r.feature_angle = a.feature_angle;
+  r.progress = progress.phase_callback();
+  r.progress_fraction = progress.fraction_callback();
   return r;
 }
 
@@ -128,6 +131,7 @@ void run_approximation(const EvaluateArgs& a, Progress& progress) {
     throw Error(fmt::format("--bezier-net {}: the control nets are written as VTK Bézier quadrilaterals (.vtu)",
                             subdiv::quoted(a.bezier_net)));
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a, progress));
+  progress.done();
   for (const std::string& w : prepared.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
   const std::vector<BezierPatch> patches = approximation_patches(prepared);
   ApproximationDistances distances;
@@ -177,21 +181,31 @@ void run(const EvaluateArgs& a) {
   if (!a.approximate.empty()) return run_approximation(a, progress);
   if (a.level_distance >= 0) {
     const LevelDistance d = level_distance(evaluate_request(a, progress), a.level_distance);
+    progress.done();
     print_safe("subdiv: {}\n", level_distance_summary(d));
     write_with_bar(a.output, d.mesh, progress);
     return;
   }
   if (a.adaptive >= 0) {  // the same as subdiv refine --adaptive L (adaptive_refine_option.cpp)
     AdaptiveResult r = refine_adaptive_request(adaptive_request_from(evaluate_request(a, progress), a.adaptive, a.tolerance, a.limit));
+    progress.done();
     for (const std::string& w : r.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
     print_safe("subdiv: {}\n", adaptive_summary(r));
     write_with_bar(a.output, adaptive_mesh_data(std::move(r.mesh), std::move(r.point_arrays), std::move(r.face_varying)), progress);
     return;
   }
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a, progress));
+  progress.done();
   for (const std::string& w : prepared.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
+  const auto say = progress.phase_callback();
+  const auto fraction = progress.fraction_callback();
   if (a.samples > 0) {
-    write_with_bar(a.output, sampled_limit_mesh(prepared, a.samples), progress);
+    MeshData sampled;
+    {
+      const PhaseProgress bar(say, fraction, fmt::format("sampling the limit surface, {} x {} per face", a.samples, a.samples));
+      sampled = sampled_limit_mesh(prepared, a.samples);
+    }
+    write_with_bar(a.output, sampled, progress);
     return;
   }
   const LimitSurface& surface = *prepared.surface;
@@ -205,8 +219,14 @@ void run(const EvaluateArgs& a) {
     fvar_names.push_back(prepared.face_varying[k].name);
     fvar.push_back(evaluate_face_varying(prepared, k, faces, uv, 0));
   }
-  write_csv(a.output, queries, evaluate_limit_points(prepared, faces, uv, a.derivatives), a.derivatives, fvar_names,
-            fvar);
+  EvaluatedPoints points;
+  {
+    const PhaseProgress bar(say, fraction, fmt::format("evaluating {} points", faces.size()));
+    points = evaluate_limit_points(prepared, faces, uv, a.derivatives);
+  }
+  progress.say(fmt::format("writing {}", a.output));
+  write_csv(a.output, queries, points, a.derivatives, fvar_names, fvar);
+  progress.done();
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 // redrawn a few times a second. Nothing when stderr is not a terminal or with -q; with
 // `timings`, every step's wall time as a line of its own instead (refine --timings).
 #include <chrono>
+#include <functional>
 #include <string>
 
 namespace subdiv::cli {
@@ -17,6 +18,14 @@ public:
   // a writer's progress); 0 starts a new bar and its clock, 1 ends it.
   void fraction(double done);
   void done();  // ends the line and the last step
+
+  // say and fraction as a request's callbacks (framework/pipeline: progress, progress_fraction).
+  std::function<void(const std::string&)> phase_callback() {
+    return [this](const std::string& phase) { say(phase); };
+  }
+  std::function<void(double)> fraction_callback() {
+    return [this](double done) { fraction(done); };
+  }
 
   // The bar and estimate drawn after a phase: "[######              ]  30%  about 12 s left".
   static std::string bar(double done, double elapsed_seconds);

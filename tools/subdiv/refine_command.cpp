@@ -173,7 +173,7 @@ void run(const RefineArgs& a) {
   RefineRequest request = refine_request(a, output, progress);
   if (a.adaptive.given())
     return run_adaptive_refine(std::move(request), a.adaptive, a.limit, a.levels_given, a.in_pieces(), a.output,
-                               a.quiet, t0);
+                               a.quiet, progress, t0);
   PreparedRefinement prepared = prepare_refinement(request);
   print_warnings(prepared.warnings);
   if (a.in_pieces()) return run_in_pieces(a, request, prepared, output, progress, t0);

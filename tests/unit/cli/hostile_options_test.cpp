@@ -107,6 +107,27 @@ TEST_CASE("a process memory limit (ulimit -v) is honoured by the memory guard") 
 #endif
 }
 
+TEST_CASE("adaptive refinement that would not fit (a tolerance near 0 asks for the uniform level) is refused before the level") {
+#if SUBDIV_TEST_ASAN
+  MESSAGE("skipped: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");
+#else
+  const auto dir = fresh_dir("hostile-adaptive-memory");
+  // Every face split to level 12: 25 million faces, far over the 0.4 GB limit, refused at the
+  // first level that would not fit instead of failing (or being killed) inside it.
+  for (const std::string& command : {"refine " + kCube + " --adaptive 12 --tolerance 1e-300 -o ",
+                                     "evaluate " + kCube + " --adaptive 12 --tolerance 1e-300 -o "}) {
+    const CliResult r = run_subdiv_with_prefix("ulimit -v 400000; ", command + (dir / "big.vtp").string());
+    INFO(command, r.output);
+    CHECK(r.exit_code == 1);
+    CHECK(contains(r.output, "adaptive refinement: level "));
+    CHECK(contains(r.output, "RLIMIT_AS (ulimit -v)"));
+    CHECK(contains(r.output, "ask for fewer levels or a larger tolerance"));
+    CHECK_FALSE(contains(r.output, "internal error"));
+    CHECK_FALSE(fs::exists(dir / "big.vtp"));
+  }
+#endif
+}
+
 // Bytes of a file, to show it was left as it was.
 std::string file_bytes(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
