@@ -10,6 +10,7 @@
 #include "framework/limit/face_domain.h"
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
+#include "framework/limit/unit_normal.h"
 #include "framework/util/parallel_for_all.h"
 
 namespace subdiv {
@@ -153,12 +154,7 @@ std::array<double, 3> normal_at(const LimitSurface& s, const SurfaceSample& samp
     // No derivatives at all (a dual scheme without the biquadratic closed form, dual_limit.h).
     if (!p.has_derivatives) return {0, 0, 0};
   }
-  std::array<double, 3> n{p.du[1] * p.dv[2] - p.du[2] * p.dv[1], p.du[2] * p.dv[0] - p.du[0] * p.dv[2],
-                          p.du[0] * p.dv[1] - p.du[1] * p.dv[0]};
-  const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  if (l > 0)
-    for (double& x : n) x /= l;
-  return n;
+  return unit_normal(p.du, p.dv);
 }
 
 }  // namespace

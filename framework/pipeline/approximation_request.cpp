@@ -6,6 +6,7 @@
 
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/limit/tessellation.h"
+#include "framework/limit/unit_normal.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -13,7 +14,7 @@ namespace {
 
 double distance(std::span<const double> a, std::span<const double> b, size_t i) {
   const double x = a[3 * i] - b[3 * i], y = a[3 * i + 1] - b[3 * i + 1], z = a[3 * i + 2] - b[3 * i + 2];
-  return std::sqrt(x * x + y * y + z * z);
+  return std::hypot(x, y, z);
 }
 
 // Distances at the points (face, u, v) whose approximated positions are `approximated`.
@@ -109,12 +110,10 @@ ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const 
   out.normals.resize(3 * faces.size());
   for (size_t i = 0; i < faces.size(); ++i) {
     const PatchSample s = evaluate_patch(patches[size_t(faces[i])], uv[2 * i], uv[2 * i + 1]);
-    const Point3 n{s.du[1] * s.dv[2] - s.du[2] * s.dv[1], s.du[2] * s.dv[0] - s.du[0] * s.dv[2],
-                   s.du[0] * s.dv[1] - s.du[1] * s.dv[0]};
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const std::array<double, 3> n = unit_normal(s.du, s.dv);
     for (size_t c = 0; c < 3; ++c) {
       out.positions[3 * i + c] = s.position[c];
-      out.normals[3 * i + c] = n[c] / length;
+      out.normals[3 * i + c] = n[c];
     }
   }
   out.distances = measure(prepared, faces, uv, out.positions);

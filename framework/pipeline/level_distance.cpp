@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <limits>
 
+#include "framework/limit/unit_normal.h"
 #include "framework/pipeline/adaptive_request.h"
 #include "framework/pipeline/phase_progress.h"
 #include "framework/util/error.h"
@@ -40,17 +41,14 @@ LevelDistance level_distance(const EvaluateRequest& request, int level) {
   DataArray distance{"level_distance", 1, {}, false}, normals{"Normals", 3, {}, false, ArrayRole::Normals};
   double sum = 0;
   for (size_t v = 0; v < V; ++v) {
-    double e2 = 0;
-    for (size_t c = 0; c < 3; ++c) e2 += std::pow(a.positions[3 * v + c] - limit.position[3 * v + c], 2);
-    const double e = std::sqrt(e2);
+    const double* x = &a.positions[3 * v];
+    const double* y = &limit.position[3 * v];
+    const double e = std::hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]);
     distance.values.push_back(e);
     sum += e;
     if (d.largest_vertex == kNone || e > d.largest) d.largest = e, d.largest_vertex = Index(v);
-    const double* du = &limit.du[3 * v];
-    const double* dv = &limit.dv[3 * v];
-    const double n[3] = {du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2], du[0] * dv[1] - du[1] * dv[0]};
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    for (double x : n) normals.values.push_back(x / length);
+    // Zero where the limit has no derivatives (an extraordinary vertex of the level).
+    for (double c : unit_normal({&limit.du[3 * v], 3}, {&limit.dv[3 * v], 3})) normals.values.push_back(c);
   }
   d.mean = V ? sum / double(V) : 0.0;
   a.positions = limit.position;
