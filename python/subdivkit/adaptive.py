@@ -9,6 +9,7 @@ import numpy as np
 from . import _subdivkit
 from ._subdivkit import Error
 from .mesh import Mesh, _data_arrays, _face_varying_triples, _type_name
+from .refinement import _check_progress
 
 
 @dataclass
@@ -86,6 +87,7 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
     tol = float(tolerance)
     if not tol >= 0 or not np.isfinite(tol):
         raise Error(f"tolerance={tolerance!r}: give a distance >= 0 (0: split only around features)")
+    _check_progress(progress, "refine_adaptive")
     r = _subdivkit._refine_adaptive(mesh, scheme, params, int(levels), tol, bool(limit), str(boundary),
                                     str(crease_method), float(feature_angle), int(threads),
                                     _data_arrays(mesh.point_data, mesh.point_roles, mesh.n_points, "point data"),

@@ -24,6 +24,13 @@ def _check_levels(levels):
     return int(levels)
 
 
+def _check_progress(progress, what):
+    """Refuses a progress= that is neither None nor callable before any work starts."""
+    if progress is not None and not callable(progress):
+        raise Error(f"{what}: progress={progress!r}: give a callable progress(phase, done), or None")
+    return progress
+
+
 def _with_weights(mesh, weights):
     """The point data with ``weights`` (an array, or a point_data name) as the array "weight"."""
     point_data, roles = dict(mesh.point_data or {}), dict(mesh.point_roles or {})
@@ -112,6 +119,7 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
     """
     _check_mesh(mesh, "refine")
     levels = _check_levels(levels)
+    _check_progress(progress, "refine")
     point_data, point_roles = _with_weights(mesh, weights)
     refined = _subdivkit._refine(mesh, scheme, params, levels, boundary, crease_method, int(threads), bool(all_levels),
                                  int(start_level),

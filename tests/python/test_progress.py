@@ -45,3 +45,10 @@ def test_adaptive_refinement_tells_its_levels_and_limit_and_stops_on_an_exceptio
 
     with pytest.raises(KeyboardInterrupt):
         sk.refine_adaptive(mesh, "catmull-clark", 4, limit=True, progress=stop)
+
+
+@pytest.mark.parametrize("call", [lambda m, p: sk.refine(m, "catmull-clark", 2, progress=p),
+                                  lambda m, p: sk.refine_adaptive(m, "catmull-clark", 2, progress=p)])
+def test_a_progress_that_is_not_callable_is_refused_before_any_work(call):
+    with pytest.raises(sk.Error, match=r"progress=5: give a callable progress\(phase, done\), or None"):
+        call(sk.read_mesh(MESHES / "cube.obj"), 5)
