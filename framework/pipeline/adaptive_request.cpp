@@ -50,7 +50,9 @@ EvaluateRequest evaluation_of(const RefineRequest& r) {
 }
 
 // Each face-varying channel at every corner of the adaptive mesh: its limit at the corner's
-// (base face, u, v), one value per corner (seams stay seams).
+// (base face, u, v), one value per corner (seams stay seams). In the mode All the channel is
+// bilinear in each face (sub-face), at every level as at the limit, so this is also the
+// value the corner's level gives it.
 std::vector<FaceVaryingArray> limit_face_varying(const PreparedEvaluation& prepared, const AdaptiveMesh& mesh) {
   std::vector<Index> faces(mesh.corner_uv.size());
   std::vector<double> uv(2 * mesh.corner_uv.size());
@@ -71,6 +73,21 @@ std::vector<FaceVaryingArray> limit_face_varying(const PreparedEvaluation& prepa
   return out;
 }
 
+// The evaluation that gives the face-varying channels their values. Without `limit` it is
+// there for the channels only: a scheme the limit surface cannot take leaves them out (why
+// in `left_out`) instead of failing the refinement.
+std::optional<PreparedEvaluation> face_varying_evaluation(std::optional<EvaluateRequest>& source, bool limit,
+                                                          std::string& left_out) {
+  if (!source) return std::nullopt;
+  try {
+    return prepare_evaluation(std::move(*source));
+  } catch (const Error& e) {
+    if (limit) throw;
+    left_out = e.what();
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
@@ -84,11 +101,13 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
   if (r.mesh_name.empty()) r.mesh_name = "mesh";
   const int levels = r.levels;
   r.levels_given = false;  // a sequence is refused below in its own words
-  // Face-varying channels are evaluated on the limit at the corners' (face, u, v), from an
-  // evaluation of the same mesh and options (its channels' value meshes and surfaces).
+  // Face-varying channels are evaluated at the corners' (face, u, v), from an evaluation of
+  // the same mesh and options (its channels' value meshes and surfaces): on the limit with
+  // `limit`; without it only in the mode All, where the level's values are the same.
   std::optional<EvaluateRequest> face_varying_source;
-  if (request.limit && !r.mesh.face_varying.empty()) face_varying_source = evaluation_of(r);
+  if (!r.mesh.face_varying.empty()) face_varying_source = evaluation_of(r);
   PreparedRefinement p = prepare_refinement(r);
+  if (!request.limit && p.face_varying != FaceVaryingLinear::All) face_varying_source.reset();
   if (p.sequence.schemes.size() != 1)
     throw Error(fmt::format("{}: {} is a sequence of schemes; adaptive refinement takes one scheme", r.mesh_name,
                             subdiv::quoted(p.scheme_label)));
@@ -107,8 +126,9 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
   AdaptiveResult out;
   try {
     // With face-varying channels the evaluation of the same mesh brings the surface along.
-    std::optional<PreparedEvaluation> evaluation;
-    if (face_varying_source) evaluation = prepare_evaluation(std::move(*face_varying_source));
+    std::string face_varying_left_out;
+    std::optional<PreparedEvaluation> evaluation =
+        face_varying_evaluation(face_varying_source, request.limit, face_varying_left_out);
     std::shared_ptr<const LimitSurface> surface;
     if (evaluation) {
       surface = evaluation->surface;
@@ -159,9 +179,14 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
     if (evaluation) out.face_varying = limit_face_varying(*evaluation, out.mesh);
     else
       for (const FaceVaryingArray& a : p.mesh.face_varying)
-        p.notes.push_back(fmt::format("face-varying array {} is carried to the adaptive mesh only with limit "
-                                      "positions (its values there are its own limit at each corner)",
-                                      subdiv::quoted(a.name)));
+        p.notes.push_back(
+            !face_varying_left_out.empty()
+                ? fmt::format("face-varying array {} is not carried to the adaptive mesh: {}", subdiv::quoted(a.name),
+                              face_varying_left_out)
+                : fmt::format("face-varying array {} is carried to the adaptive mesh with limit positions, or in the "
+                              "face-varying mode all (bilinear, where a level's values are the limit's); in the mode "
+                              "{} a level's values would need the face-varying refinement of every piece",
+                              subdiv::quoted(a.name), face_varying_linear_name(p.face_varying)));
   } catch (const OptionError&) {
     throw;
   } catch (const Error& e) {

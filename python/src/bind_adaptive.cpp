@@ -36,6 +36,7 @@ py::dict refine_adaptive(py::handle mesh, py::handle scheme, py::handle params, 
   py::dict out;
   out["summary"] = subdiv::adaptive_summary(result);
   out["warnings"] = result.warnings;
+  out["notes"] = result.notes;  // what was left out, and why
   out["uniform_faces"] = a.uniform_faces;
   out["split_faces"] = a.split_faces;
   const auto faces = py::ssize_t(a.face_level.size()), corners = py::ssize_t(a.corner_uv.size());

@@ -57,7 +57,9 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
         are interpolated, as for LimitSurface: "all" (the default, bilinear in each face, as
         OpenSubdiv's), "none", "corners-only", "corners-plus1", "corners-plus2",
         "boundaries". With ``limit=True`` each corner of the result gets the array's limit
-        at its (face, u, v), in ``face_varying``; without it they are left out (a warning).
+        at its (face, u, v), in ``face_varying``; without it, in the mode "all" the same
+        bilinear values (a level's are the limit's), in other modes they are left out (a
+        warning).
     info : bool
         Return ``(mesh, AdaptiveInfo)`` instead of the mesh.
     progress : callable, optional
@@ -92,10 +94,8 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
                                     str(crease_method), float(feature_angle), int(threads),
                                     _data_arrays(mesh.point_data, mesh.point_roles, mesh.n_points, "point data"),
                                     _face_varying_triples(mesh), str(fvar_boundary), progress)
-    if mesh.face_varying and not limit:
-        warnings.warn(f"refine_adaptive: the face-varying arrays {', '.join(repr(n) for n in mesh.face_varying)} are "
-                      "carried only with limit=True (each corner gets the array's own limit there)", UserWarning,
-                      stacklevel=2)
+    for note in r["notes"]:  # arrays left out (normals, integers, smooth face-varying without limit)
+        warnings.warn(f"refine_adaptive: {note}", UserWarning, stacklevel=2)
     out = Mesh._from_arrays(r["mesh"], name=mesh.name, point_data=r["point_data"], point_roles=r["point_roles"],
                             cell_data={"face_level": r["face_level"], "base_face": r["base_face"]},
                             face_varying=r["face_varying"])

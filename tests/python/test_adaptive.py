@@ -114,9 +114,13 @@ def test_face_varying_arrays_on_the_limit_and_rational_meshes():
     corners = st[c.faces[base]]  # (corners, 4, 2)
     w = np.column_stack([(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v])
     assert np.abs(values[index] - np.einsum("ck,ckj->cj", w, corners)).max() < 1e-12
-    with pytest.warns(UserWarning, match="only with limit=True"):
-        plain = sk.refine_adaptive(m, "catmull-clark", 3)
-    assert not plain.face_varying
+    # Without limit positions: the mode "all" gives the same bilinear values at the levels;
+    # a smooth mode leaves the channel out with a warning.
+    plain = sk.refine_adaptive(m, "catmull-clark", 3)
+    assert np.array_equal(plain.face_varying["st"][0], linear.face_varying["st"][0])
+    with pytest.warns(UserWarning, match="in the mode none a level's values would need"):
+        smooth_plain = sk.refine_adaptive(m, "catmull-clark", 3, fvar_boundary="none")
+    assert not smooth_plain.face_varying
     # Rational: equal weights give the polynomial mesh; uneven ones move it, and a tolerance is refused.
     twos = sk.Mesh(c.points, c.faces, point_data={"weight": np.full(8, 2.0)})
     assert np.abs(sk.refine_adaptive(twos, "catmull-clark", 3, limit=True).points

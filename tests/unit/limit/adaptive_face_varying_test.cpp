@@ -3,7 +3,8 @@
 // closed forms independent of the evaluator: in the mode `all` (OpenSubdiv's default) the
 // channel is bilinear over each base face; in the mode `none` a seamless channel that is an
 // affine image of the positions refines like them, so its limit is that image of the limit
-// positions. Without limit positions the channel is left out with a note.
+// positions. Without limit positions the mode `all` gives the same bilinear values (a level's
+// are the limit's), and other modes are left out with a note.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -43,27 +44,32 @@ AdaptiveResult adaptive(FaceVaryingLinear mode, bool limit) {
 
 }  // namespace
 
-TEST_CASE("adaptive meshes carry face-varying channels on the limit: bilinear in the mode all") {
-  const MeshData base = cube_with_channel();
-  const AdaptiveResult a = adaptive(FaceVaryingLinear::All, true);
-  REQUIRE(a.face_varying.size() == 1);
-  const FaceVaryingArray& st = a.face_varying.front();
-  REQUIRE(st.indices.size() == a.mesh.corner_uv.size());
-  double worst = 0;
-  for (size_t f = 0; f + 1 < a.mesh.face_offsets.size(); ++f) {
-    const Index b = a.mesh.base_face[f];
-    for (Index c = a.mesh.face_offsets[f]; c < a.mesh.face_offsets[f + 1]; ++c) {
-      const double u = a.mesh.corner_uv[size_t(c)][0], v = a.mesh.corner_uv[size_t(c)][1];
-      const double w[4] = {(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v};
-      for (int k = 0; k < 2; ++k) {
-        double expected = 0;
-        for (int i = 0; i < 4; ++i)
-          expected += w[i] * base.face_varying[0].values[2 * size_t(base.face_varying[0].indices[size_t(4 * b + i)]) + size_t(k)];
-        worst = std::max(worst, std::abs(st.values[2 * size_t(st.indices[size_t(c)]) + size_t(k)] - expected));
+TEST_CASE("adaptive meshes carry face-varying channels: bilinear in the mode all, on the limit and at the levels") {
+  // OpenSubdiv's linear-all face-varying interpolation refines each face's values
+  // bilinearly, so a level's corner has the same value as the limit there.
+  for (const bool limit : {true, false}) {
+    CAPTURE(limit);
+    const MeshData base = cube_with_channel();
+    const AdaptiveResult a = adaptive(FaceVaryingLinear::All, limit);
+    REQUIRE(a.face_varying.size() == 1);
+    const FaceVaryingArray& st = a.face_varying.front();
+    REQUIRE(st.indices.size() == a.mesh.corner_uv.size());
+    double worst = 0;
+    for (size_t f = 0; f + 1 < a.mesh.face_offsets.size(); ++f) {
+      const Index b = a.mesh.base_face[f];
+      for (Index c = a.mesh.face_offsets[f]; c < a.mesh.face_offsets[f + 1]; ++c) {
+        const double u = a.mesh.corner_uv[size_t(c)][0], v = a.mesh.corner_uv[size_t(c)][1];
+        const double w[4] = {(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v};
+        for (int k = 0; k < 2; ++k) {
+          double expected = 0;
+          for (int i = 0; i < 4; ++i)
+            expected += w[i] * base.face_varying[0].values[2 * size_t(base.face_varying[0].indices[size_t(4 * b + i)]) + size_t(k)];
+          worst = std::max(worst, std::abs(st.values[2 * size_t(st.indices[size_t(c)]) + size_t(k)] - expected));
+        }
       }
     }
+    CHECK(worst < 1e-14);
   }
-  CHECK(worst < 1e-14);
 }
 
 TEST_CASE("adaptive meshes carry face-varying channels on the limit: in the mode none, the positions' image") {
@@ -88,11 +94,12 @@ TEST_CASE("adaptive meshes carry face-varying channels on the limit: in the mode
   CHECK(m.face_varying[0].indices.size() == m.face_vertices.size());
 }
 
-TEST_CASE("without limit positions face-varying channels are left out, and a note says so") {
-  const AdaptiveResult a = adaptive(FaceVaryingLinear::All, false);
+TEST_CASE("without limit positions, smooth face-varying channels are left out, and a note says so") {
+  const AdaptiveResult a = adaptive(FaceVaryingLinear::None, false);
   CHECK(a.face_varying.empty());
   bool noted = false;
-  for (const std::string& n : a.notes) noted = noted || n.find("only with limit positions") != std::string::npos;
+  for (const std::string& n : a.notes)
+    noted = noted || n.find("in the mode none a level's values would need the face-varying refinement") != std::string::npos;
   CHECK(noted);
 }
 
