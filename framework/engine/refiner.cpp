@@ -28,18 +28,6 @@ int needed_face_size(const Scheme& scheme) {
   return splitter_info(scheme.split()).required_face_size;
 }
 
-void check_face_sizes(const Scheme& scheme, const Level& base) {
-  const int needed = needed_face_size(scheme);
-  if (!needed || base.all_faces_have_size(needed)) return;  // in parallel; the loop below names the first
-  for (Index f = 0; f < base.face_count(); ++f)
-    if (base.face_size(f) != needed)
-      throw OptionError(fmt::format("{}: scheme {} needs {}, but face {} of the mesh has {} vertices; "
-                                    "{} the mesh first or choose a scheme for any polygons ({{scheme_list}} "
-                                    "lists them)",
-                              scheme.path, subdiv::quoted(scheme.name),
-                              needed == 3 ? "triangles" : needed == 4 ? "quads" : fmt::format("{}-gons", needed), f,
-                              base.face_size(f), needed == 3 ? "triangulate" : needed == 4 ? "quadrangulate" : "remesh"));
-}
 
 // Splits that do not handle non-manifold levels (a plugin's that does not opt in through
 // SplitterInfo::handles_non_manifold) refuse them clearly; every built-in split handles them.
@@ -103,6 +91,19 @@ void pass_holes_down(const Level& parent, SplitResult& step) {
 }
 
 }  // namespace
+
+void check_face_sizes(const Scheme& scheme, const Level& base) {
+  const int needed = needed_face_size(scheme);
+  if (!needed || base.all_faces_have_size(needed)) return;  // in parallel; the loop below names the first
+  for (Index f = 0; f < base.face_count(); ++f)
+    if (base.face_size(f) != needed)
+      throw OptionError(fmt::format("{}: scheme {} needs {}, but face {} of the mesh has {} vertices; "
+                                    "{} the mesh first or choose a scheme for any polygons ({{scheme_list}} "
+                                    "lists them)",
+                              scheme.path, subdiv::quoted(scheme.name),
+                              needed == 3 ? "triangles" : needed == 4 ? "quads" : fmt::format("{}-gons", needed), f,
+                              base.face_size(f), needed == 3 ? "triangulate" : needed == 4 ? "quadrangulate" : "remesh"));
+}
 
 Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const RefineOptions& options) {
   const std::vector<const Scheme*> per_level = schemes_per_level(runs);

@@ -98,6 +98,11 @@ struct Hierarchy {
   }
 };
 
+// Throws subdiv::OptionError naming the first face whose size the scheme cannot refine (a
+// triangle scheme on quads) and the fix; refinement checks it, and so does whatever takes a
+// mesh for a scheme without refining it first (the limit surface).
+void check_face_sizes(const Scheme& scheme, const Level& base);
+
 // Refines topology only (levels and origins), as OpenSubdiv's RefineUniform does.
 Hierarchy refine_topology(const Scheme& scheme, Level base, const RefineOptions& options);
 Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const RefineOptions& options);

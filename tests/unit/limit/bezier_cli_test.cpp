@@ -123,7 +123,10 @@ TEST_CASE("subdiv evaluate --approximate bezier refuses what the patches do not 
   const fs::path dir = test::fresh_dir("bezier-cli-refused");
   const std::string cube = test::source_path("examples/meshes/cube.obj");
   const std::string base = "evaluate " + cube + " --approximate bezier --samples 4";
-  test::check_refused(base + " -s loop", dir / "a.vtp", "its split makes triangles");
+  test::check_refused("evaluate " + test::source_path("examples/meshes/octahedron.obj") +
+                          " --approximate bezier --samples 4 -s loop",
+                      dir / "a.vtp", "its split makes triangles");
+  test::check_refused(base + " -s loop", dir / "a.vtp", "needs triangles, but face 0 of the mesh has 4 vertices");
   test::check_refused(base + " -s doo-sabin", dir / "b.vtp", "not the bicubic B-spline");
   test::check_refused(base + " -s bilinear", dir / "c.vtp", "not the bicubic B-spline");
   test::check_refused(base + " -s catmull-clark:1,catmull-clark", dir / "s.vtp", "a sequence's limit");

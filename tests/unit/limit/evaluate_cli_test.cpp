@@ -165,6 +165,16 @@ TEST_CASE("subdiv evaluate refuses bad rows with their number and leaves no outp
   CHECK(mid_edge.exit_code != 0);
   CHECK(mid_edge.output.find("mid-edge split and the mesh has a boundary") != std::string::npos);
   CHECK(!fs::exists(dir / "out.csv"));
+  // A triangle scheme on quads: refused before any point, in the words refinement uses.
+  for (const std::string& how : {" --at " + (dir / "points.csv").string() + " -o " + (dir / "out.csv").string(),
+                                 " --samples 2 -o " + (dir / "out.vtp").string()}) {
+    const auto loop = test::run_subdiv("evaluate " + mesh + " -s loop" + how);
+    CHECK(loop.exit_code != 0);
+    CHECK(loop.output.find("scheme 'loop' needs triangles, but face 0 of the mesh has 4 vertices; triangulate the "
+                           "mesh first") != std::string::npos);
+    CHECK(!fs::exists(dir / "out.csv"));
+    CHECK(!fs::exists(dir / "out.vtp"));
+  }
 }
 
 TEST_CASE("subdiv evaluate --samples writes a closed mesh of the limit surface with normals") {
