@@ -9,6 +9,7 @@
 
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/ghost_rings.h"
+#include "framework/features/sharpness.h"
 #include "framework/limit/corner_limit.h"
 #include "framework/limit/sqrt3_nodes.h"
 #include "framework/limit/step_matrix.h"
@@ -47,12 +48,22 @@ struct TrianglePoint {
 }  // namespace
 
 std::string sqrt3_limit_unsupported(const Level& base) {
-  // Boundaries follow Kobbelt's rules (trisected every second step, sqrt3_nodes.h); holes
-  // remove faces, not rules, so the cuts drop their tags (canonical_cut.h).
-  for (float s : base.edge_sharpness)
-    if (s > 0) return "the mesh has sharp or semi-sharp edges: evaluation of sqrt3 schemes with creases is not done yet";
-  for (float s : base.vertex_sharpness)
-    if (s > 0) return "the mesh has sharp vertices: evaluation of sqrt3 schemes with corners is not done yet";
+  // Boundaries and sharp edges follow Kobbelt's rules (kept in the first step, trisected in
+  // the second: the triadic split, sqrt3_nodes.h). An edge sharp in the first step of a pair
+  // and smooth in the second (sharpness decays by one per step) is kept and then flipped, and
+  // the face point of the triangle kept beside it lies at (4a + 4b + c)/9, off the lattice:
+  // two such steps are no triadic split. Tagged vertices change rules only. Holes remove
+  // faces, not rules, so the cuts drop their tags (canonical_cut.h).
+  for (Index e = 0; e < Index(base.edge_sharpness.size()); ++e) {
+    const float s = base.edge_sharpness[size_t(e)];
+    if (s <= 0 || s >= kInfinitelySharp || base.edge_on_boundary(e)) continue;
+    const double parity = std::fmod(double(s), 2.0);
+    if (parity > 0 && parity <= 1)
+      return fmt::format("edge {}-{} has sharpness {}, which leaves it sharp in the first step of a pair and smooth in "
+                         "the second (two sqrt3 steps nest only where an edge is sharp for both or neither: "
+                         "sharpness 2, 4, ..., between 2k + 1 and 2k + 2, or infinitely sharp); change its sharpness",
+                         base.edge_vertices[size_t(2 * e)], base.edge_vertices[size_t(2 * e + 1)], s);
+  }
   return {};
 }
 

@@ -122,14 +122,38 @@ std::vector<std::pair<Index, TriadicChild>> triadic_children(const Level& level2
 // Rings of a corner within which a boundary vertex takes the corner's derivatives away.
 constexpr int kBoundaryRings = 4;
 
-// Whether a boundary vertex lies within `rings` edges of v (fewer than the cut's radius, so
-// the cut's rim is not met).
+// A vertex on a boundary, a sharp or semi-sharp edge, or tagged sharp: Kobbelt's boundary
+// rules apply there (refine/sqrt3_split.cpp: sharp edges are kept and trisected like a
+// boundary).
+bool on_feature(const Level& L, Index v) {
+  if (L.on_boundary(v) || L.vertex_sharp(v) > 0) return true;
+  for (Index e : L.ring_edges(v))
+    if (L.edge_sharp(e) > 0) return true;
+  return false;
+}
+
+// A vertex where the descent need not go on past the last triangle touching it: 6 faces and
+// no sharp edge, or two straight across (a regular crease); 3 faces on a boundary, no sharp
+// edge inside. The rest (other valences, darts, corners, tagged vertices) are extraordinary.
+bool regular_corner(const Level& L, Index v) {
+  if (L.vertex_sharp(v) > 0) return false;
+  const auto ring = L.ring_edges(v);
+  const int n = int(ring.size());
+  std::vector<int> sharp;
+  for (int j = 0; j < n; ++j)
+    if (L.edge_sharp(ring[size_t(j)]) > 0 && !L.edge_on_boundary(ring[size_t(j)])) sharp.push_back(j);
+  if (L.on_boundary(v)) return sharp.empty() && L.incident_face_count(v) == 3;
+  return L.incident_face_count(v) == 6 && (sharp.empty() || (sharp.size() == 2 && sharp[1] - sharp[0] == 3));
+}
+
+// Whether a vertex on a feature lies within `rings` edges of v (fewer than the cut's radius,
+// so the cut's rim is not met).
 bool near_boundary(const Level& L, Index v, int rings) {
   std::vector<Index> front{v}, seen{v};
   for (int r = 0; r <= rings; ++r) {
     std::vector<Index> next;
     for (Index w : front) {
-      if (L.on_boundary(w)) return true;
+      if (on_feature(L, w)) return true;
       for (Index e : L.ring_edges(w)) {
         const Index x = L.other_end(e, w);
         if (std::find(seen.begin(), seen.end(), x) == seen.end()) seen.push_back(x), next.push_back(x);
@@ -180,8 +204,7 @@ int Sqrt3Nodes::intern_locked(const Level& cut, Index face, std::vector<Index>& 
   n->level = canonical_cut(cut, lab, face, n->face);
   // A corner is regular with 6 triangles inside, 3 on a boundary (Kobbelt's boundary rule keeps
   // that count at even levels, refine/sqrt3_split.cpp).
-  for (Index v : n->level.face(n->face))
-    n->extraordinary = n->extraordinary || n->level.incident_face_count(v) != (n->level.on_boundary(v) ? 3 : 6);
+  for (Index v : n->level.face(n->face)) n->extraordinary = n->extraordinary || !regular_corner(n->level, v);
   nodes_.push_back(std::move(n));
   return it->second;
 }
@@ -249,7 +272,7 @@ const CornerRows* Sqrt3Nodes::corner(int id, int k, std::string& error) {
       if (near_boundary(n.level, c, std::min(kBoundaryRings, radius_ - 1))) {
         // Off the boundary, the rings to it grow threefold per double step: derivatives a few
         // steps on (sqrt3_limit.cpp).
-        n.corner_deferred[size_t(k)] = !n.corner[size_t(k)].ds.empty() && !n.level.on_boundary(c);
+        n.corner_deferred[size_t(k)] = !n.corner[size_t(k)].ds.empty() && !on_feature(n.level, c);
         n.corner[size_t(k)].ds.clear();
         n.corner[size_t(k)].dt.clear();
       }

@@ -22,6 +22,7 @@
 #include "framework/util/error.h"
 #include "support/test_meshes.h"
 #include "unit/limit/limit_meshes.h"
+#include "unit/limit/sqrt3_points.h"
 
 using namespace subdiv;
 
@@ -29,6 +30,7 @@ namespace {
 
 using limit_test::bumped;
 using limit_test::distance;
+using namespace limit_test::sqrt3;
 
 // An open fan of `sectors` triangles around a boundary vertex (vertex 0), `rings` rings deep,
 // spread over a half plane: the centre has `sectors` faces on the boundary, the ends of each
@@ -58,73 +60,6 @@ std::vector<test::Mesh> meshes() {
           bumped(boundary_fan(4, 3), 0.3)};
 }
 
-int corner_of(const Level& L, Index f, Index w) {
-  const auto fv = L.face(f);
-  for (size_t k = 0; k < fv.size(); ++k)
-    if (fv[k] == w) return int(k);
-  return -1;
-}
-
-// (u, v) in face f of the point t of the way from vertex a to vertex b (both corners of f).
-std::array<double, 2> on_edge(const Level& L, Index f, Index a, Index b, double t) {
-  std::array<double, 3> bary{0, 0, 0};
-  bary[size_t(corner_of(L, f, a))] += 1 - t;
-  bary[size_t(corner_of(L, f, b))] += t;
-  return {bary[1], bary[2]};
-}
-
-// The face of L with edge a-b (the first one).
-Index face_with_edge(const Level& L, Index a, Index b) {
-  const Index e = find_edge(L, a, b);
-  REQUIRE(e != kNone);
-  return L.edge_faces[size_t(2 * e)];
-}
-
-// The (face, u, v) of a vertex two √3 steps make, from the engine's origins: a base vertex,
-// a level-1 face point (a base face's centroid), a level-2 face point over the third of a
-// base edge next to a (the level-1 triangle (a, P(f0), P(f1))), or a trisection point of a
-// boundary edge (Kobbelt 2000, section 5) a third of the way from the end it is next to.
-struct Where {
-  Index face = kNone;
-  std::array<double, 2> uv{};
-};
-
-Where where_two_steps_put(const Level& L, const Hierarchy& h, Index v) {
-  const ChildOrigins& o1 = h.origins[0];
-  const ChildOrigins& o2 = h.origins[1];
-  const Level& L1 = h.levels[1];
-  const Index p = o2.parent[size_t(v)];
-  if (o2.kind[size_t(v)] == OriginKind::Vertex) {
-    if (o1.kind[size_t(p)] == OriginKind::Face) return {o1.parent[size_t(p)], {1.0 / 3, 1.0 / 3}};
-    const Index w = o1.parent[size_t(p)];
-    const Index f = L.ring_faces(w)[0];
-    const std::array<double, 2> c[3] = {{0, 0}, {1, 0}, {0, 1}};
-    return {f, c[corner_of(L, f, w)]};
-  }
-  if (o2.kind[size_t(v)] == OriginKind::Edge) {
-    const Index a1 = L1.edge_vertices[size_t(2 * p + o2.local[size_t(v)])];
-    const Index b1 = L1.edge_vertices[size_t(2 * p + 1 - o2.local[size_t(v)])];
-    REQUIRE(o1.kind[size_t(a1)] == OriginKind::Vertex);
-    REQUIRE(o1.kind[size_t(b1)] == OriginKind::Vertex);
-    const Index a = o1.parent[size_t(a1)], b = o1.parent[size_t(b1)];
-    const Index f = face_with_edge(L, a, b);
-    return {f, on_edge(L, f, a, b, 1.0 / 3)};
-  }
-  REQUIRE(o2.kind[size_t(v)] == OriginKind::Face);
-  Index a = kNone;
-  std::vector<Index> faces;
-  for (Index x : L1.face(p)) {
-    if (o1.kind[size_t(x)] == OriginKind::Vertex) a = o1.parent[size_t(x)];
-    else faces.push_back(o1.parent[size_t(x)]);
-  }
-  REQUIRE(faces.size() == 2);
-  Index b = kNone;
-  for (Index x : L.face(faces[0]))
-    if (x != a && corner_of(L, faces[1], x) >= 0) b = x;
-  REQUIRE(b != kNone);
-  return {faces[0], on_edge(L, faces[0], a, b, 1.0 / 3)};
-}
-
 }  // namespace
 
 TEST_CASE("sqrt3 at boundaries: the limit at the vertices two steps make equals their limit masks") {
@@ -133,9 +68,10 @@ TEST_CASE("sqrt3 at boundaries: the limit at the vertices two steps make equals 
   // at level 2, the route of `subdiv refine --limit`, against the evaluation's descent.
   for (const char* name : {"sqrt3", "interpolating-sqrt3"}) {
     CAPTURE(std::string(name));
-    int mesh = 0;
+    int which = 0;
     for (const test::Mesh& m : meshes()) {
-      CAPTURE(mesh++);
+      const int mesh = which++;
+      CAPTURE(mesh);
       const Level L = m.level();
       const auto scheme = load_scheme(name);
       const LimitSurface s(scheme, L);
@@ -171,7 +107,7 @@ TEST_CASE("sqrt3 at boundaries: the limit at the vertices two steps make equals 
       Index boundary_edges = 0;
       for (Index e = 0; e < L.edge_count(); ++e) boundary_edges += L.edge_on_boundary(e);
       CHECK(trisection == 2 * boundary_edges);
-      MESSAGE(std::string(name) << " mesh " << mesh - 1 << ": base vertices " << worst_base << ", level 2 " << worst);
+      MESSAGE(std::string(name) << " mesh " << mesh << ": base vertices " << worst_base << ", level 2 " << worst);
       CHECK(worst < 1e-13);
     }
   }
@@ -448,11 +384,4 @@ TEST_CASE("sqrt3 with holes: a hole removes faces, not rules") {
   CHECK_THROWS_WITH_AS(open.evaluate(0, 0.2, 0.2, g.positions, 3), doctest::Contains("hole"), Error);
   const LimitSample inside = open.evaluate(2 * (2 * 4 + 2), 0.2, 0.2, g.positions, 3);
   CHECK(inside.has_derivatives);
-}
-
-TEST_CASE("sqrt3 creases are still refused with the reason") {
-  Level creased = test::grid(3, 3, true).level();
-  creased.edge_sharpness.assign(size_t(creased.edge_count()), 0.f);
-  creased.edge_sharpness[size_t(find_edge(creased, 5, 10))] = 2.f;
-  CHECK_THROWS_WITH_AS(LimitSurface(load_scheme("sqrt3"), creased), doctest::Contains("creases"), Error);
 }

@@ -355,10 +355,3 @@ TEST_CASE("sqrt3: the tessellation is closed") {
   CHECK(t.face_count() == 8 * 4);
   CHECK(t.point_count() == 6 + 12);  // N = 2: corners and edge middles, each once (no cracks), no interior points
 }
-
-TEST_CASE("sqrt3: creases are refused with the reason (boundaries: sqrt3_boundary_test.cpp)") {
-  Level creased = test::octahedron().level();
-  creased.edge_sharpness.assign(size_t(creased.edge_count()), 0.f);
-  creased.edge_sharpness[0] = 2.f;
-  CHECK_THROWS_WITH_AS(LimitSurface(load_scheme("sqrt3"), creased), doctest::Contains("creases"), Error);
-}
