@@ -42,7 +42,11 @@
 // vertex rule moves it off its parameter); a point off the boundary descends until its
 // vertex is 4 rings from it. Holes remove faces, not rules: the cuts drop the tags.
 //
-// Refused (sqrt3_limit_unsupported): sharp and semi-sharp edges and vertices.
+// Sharp edges are kept and trisected like a boundary (refine/sqrt3_split.cpp), so creases
+// take the same road, the cuts keeping their sharpness; no derivatives on a crease. Refused
+// (sqrt3_limit_unsupported): an edge whose sharpness ends between the two steps of a pair
+// (s mod 2 in (0, 1]): kept in the first step and flipped in the second, the triangle kept
+// beside it gets its face point at (4a + 4b + c)/9, off the triadic lattice.
 #include <memory>
 #include <mutex>
 #include <span>
