@@ -36,7 +36,7 @@
 // the trisection points, so two steps are the same triadic split with the trisection points
 // at (2a + b)/3 and (a + 2b)/3 (sqrt3_nodes.cpp), and a boundary vertex's limit is its limit
 // mask from the boundary configuration's subdivision matrix (the analysis). No derivatives
-// on the boundary itself nor at a boundary vertex without 3 faces: the tangent masks are
+// on the boundary itself (its vertices included): the tangent masks are
 // scaled by linear precision, which the boundary rules lack within two rings of the
 // boundary (the first step's face point of a boundary triangle has 5 neighbours and the
 // vertex rule moves it off its parameter); a point off the boundary descends until its

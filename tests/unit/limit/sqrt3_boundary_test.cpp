@@ -17,6 +17,7 @@
 #include "framework/engine/refiner.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/limit/sqrt3_limit.h"
+#include "framework/limit/tessellation.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
@@ -41,7 +42,7 @@ test::Mesh boundary_fan(int sectors, int rings) {
   auto id = [&](int r, int j) { return Index(1 + (r - 1) * (sectors + 1) + j); };
   for (int r = 1; r <= rings; ++r)
     for (int j = 0; j <= sectors; ++j) {
-      const double a = M_PI * j / sectors;
+      const double a = std::acos(-1.0) * j / sectors;
       m.add_vertex(r * std::cos(a), r * std::sin(a), 0);
     }
   for (int j = 0; j < sectors; ++j) m.add_face({0, id(1, j), id(1, j + 1)});
@@ -384,4 +385,19 @@ TEST_CASE("sqrt3 with holes: a hole removes faces, not rules") {
   CHECK_THROWS_WITH_AS(open.evaluate(0, 0.2, 0.2, g.positions, 3), doctest::Contains("hole"), Error);
   const LimitSample inside = open.evaluate(2 * (2 * 4 + 2), 0.2, 0.2, g.positions, 3);
   CHECK(inside.has_derivatives);
+}
+
+TEST_CASE("sqrt3 at boundaries: the tessellation is closed, with normals on the boundary") {
+  const test::Mesh m = bumped(test::grid(4, 4, true), 0.3);
+  const Level L = m.level();
+  const LimitSurface s(load_scheme("sqrt3"), L);
+  const Tessellation t = tessellate(s, m.positions, 2);
+  CHECK(t.face_count() == 4 * L.face_count());
+  CHECK(t.point_count() == L.vertex_count + L.edge_count());  // corners and edge middles, each once
+  // On the boundary the normal is taken beside it (no derivatives there): unit length.
+  for (size_t i = 0; i < t.normals.size() / 3; ++i) {
+    const double l = std::sqrt(t.normals[3 * i] * t.normals[3 * i] + t.normals[3 * i + 1] * t.normals[3 * i + 1] +
+                               t.normals[3 * i + 2] * t.normals[3 * i + 2]);
+    CHECK(l == doctest::Approx(1).epsilon(1e-12));
+  }
 }
