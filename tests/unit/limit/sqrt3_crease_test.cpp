@@ -224,3 +224,21 @@ TEST_CASE("sqrt3 with creases: no derivatives on the crease, and sharpness endin
                          Error);
   }
 }
+
+TEST_CASE("sqrt3 with creases: points on a crease, next to its extraordinary vertices, every edge of a face") {
+  // On the octahedron's equator every base crease vertex has valence 4: points along the
+  // crease at 1e-200 from them and on every face edge are evaluated (no descent gives up).
+  const Tagged t = creased_octahedron();
+  const LimitSurface s(load_scheme("sqrt3"), t.level);
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> U(0, 1);
+  for (Index f = 0; f < t.level.face_count(); ++f)
+    for (int k = 0; k < 6; ++k) {
+      const double x = k < 3 ? U(rng) : std::ldexp(1.0, -600 + 100 * k);
+      const std::array<double, 2> uv = k % 3 == 0 ? std::array<double, 2>{x, 0}
+                                     : k % 3 == 1 ? std::array<double, 2>{0, x}
+                                                  : std::array<double, 2>{x, 1 - x};
+      const LimitSample p = s.evaluate(f, uv[0], uv[1], t.mesh.positions, 3);
+      for (double c : p.position) CHECK(std::isfinite(c));
+    }
+}
