@@ -83,7 +83,7 @@ std::string mid_edge_limit_unsupported(const Level& base) {
     if (base.on_boundary(v))
       return "the mesh has a boundary: mid-edge evaluation at (face, u, v) is not done there yet (the split keeps a "
              "boundary's edges as long as they were, so the faces two steps make along it are not quadrants of the "
-             "base faces); close the mesh, or tag the faces to leave out as holes";
+             "base faces); close the mesh, tagging the faces that close it as holes to leave them out";
   for (float s : base.edge_sharpness)
     if (s > 0) return "the mesh has sharp or semi-sharp edges: evaluation of mid-edge schemes with creases is not done yet";
   for (float s : base.vertex_sharpness)
