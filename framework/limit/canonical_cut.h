@@ -2,8 +2,8 @@
 // A cut (a face's neighbourhood, analysis/surface/local_patch.h) renumbered by its canonical
 // labelling, so that every cut with one signature is the same level and the engine's weights
 // for it the same bits whichever cut was met first (the results do not depend on the order
-// or thread of evaluations). For closed, untagged cuts (the √3 and mid-edge evaluators refuse
-// tags; limit_nodes.cpp has its own with tags and holes).
+// or thread of evaluations). Edge and vertex sharpness go with it; hole tags do not (holes
+// remove faces, not rules). limit_nodes.cpp has its own, which keeps the holes too.
 #include "framework/topology/level.h"
 
 namespace subdiv {

@@ -81,15 +81,14 @@ ChildOrigins mid_edge_double_origins(const Level& level0, const Level& level1, c
 std::string mid_edge_limit_unsupported(const Level& base) {
   for (Index v = 0; v < base.vertex_count; ++v)
     if (base.on_boundary(v))
-      return "the mesh has a boundary: the parameterisation of the mid-edge limit along a boundary is not defined "
-             "yet; close the mesh";
+      return "the mesh has a boundary: mid-edge evaluation at (face, u, v) is not done there yet (the split keeps a "
+             "boundary's edges as long as they were, so the faces two steps make along it are not quadrants of the "
+             "base faces); close the mesh, tagging the faces that close it as holes to leave them out";
   for (float s : base.edge_sharpness)
     if (s > 0) return "the mesh has sharp or semi-sharp edges: evaluation of mid-edge schemes with creases is not done yet";
   for (float s : base.vertex_sharpness)
     if (s > 0) return "the mesh has sharp vertices: evaluation of mid-edge schemes with corners is not done yet";
-  if (!base.face_hole.empty())
-    for (auto h : base.face_hole)
-      if (h) return "the mesh has holes: evaluation of mid-edge schemes next to holes is not done yet";
+  // Holes remove faces, not rules: the cuts drop their tags (canonical_cut.h).
   return {};
 }
 

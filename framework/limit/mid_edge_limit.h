@@ -28,8 +28,12 @@
 // the centre stays the centre of the quad's F-face, whose neighbourhood becomes regular. At the
 // centre of a face that is not a quad (an extraordinary point) there are no derivatives.
 //
-// Refused (mid_edge_limit_unsupported): boundaries, sharp and semi-sharp edges and vertices,
-// holes.
+// Holes (tagged faces) remove faces, not rules: the cuts drop the tags, and a point in a hole
+// is refused by the limit surface. Refused (mid_edge_limit_unsupported): boundaries — the
+// boundary V-face's closing edge joins the middles of two boundary edges, so the boundary
+// polygon keeps its edges' length in the parameter, and the faces two steps make next to it
+// (a trapezoid per boundary edge, a triangle per boundary vertex) cut the quadrants of the
+// base face diagonally instead of nesting in them — and sharp and semi-sharp edges and vertices.
 #include <memory>
 #include <mutex>
 #include <string>

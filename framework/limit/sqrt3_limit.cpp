@@ -9,6 +9,7 @@
 
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/ghost_rings.h"
+#include "framework/features/sharpness.h"
 #include "framework/limit/corner_limit.h"
 #include "framework/limit/sqrt3_nodes.h"
 #include "framework/limit/step_matrix.h"
@@ -47,17 +48,22 @@ struct TrianglePoint {
 }  // namespace
 
 std::string sqrt3_limit_unsupported(const Level& base) {
-  for (Index v = 0; v < base.vertex_count; ++v)
-    if (base.on_boundary(v))
-      return "the mesh has a boundary: sqrt3 schemes trisect boundary edges every second step, and the limit's "
-             "parameterisation along a boundary is not defined yet; close the mesh, or use a primal scheme";
-  for (float s : base.edge_sharpness)
-    if (s > 0) return "the mesh has sharp or semi-sharp edges: evaluation of sqrt3 schemes with creases is not done yet";
-  for (float s : base.vertex_sharpness)
-    if (s > 0) return "the mesh has sharp vertices: evaluation of sqrt3 schemes with corners is not done yet";
-  if (!base.face_hole.empty())
-    for (auto h : base.face_hole)
-      if (h) return "the mesh has holes: evaluation of sqrt3 schemes next to holes is not done yet";
+  // Boundaries and sharp edges follow Kobbelt's rules (kept in the first step, trisected in
+  // the second: the triadic split, sqrt3_nodes.h). An edge sharp in the first step of a pair
+  // and smooth in the second (sharpness decays by one per step) is kept and then flipped, and
+  // the face point of the triangle kept beside it lies at (4a + 4b + c)/9, off the lattice:
+  // two such steps are no triadic split. Tagged vertices change rules only. Holes remove
+  // faces, not rules, so the cuts drop their tags (canonical_cut.h).
+  for (Index e = 0; e < Index(base.edge_sharpness.size()); ++e) {
+    const float s = base.edge_sharpness[size_t(e)];
+    if (s <= 0 || s >= kInfinitelySharp || base.edge_on_boundary(e)) continue;
+    const double parity = std::fmod(double(s), 2.0);
+    if (parity > 0 && parity <= 1)
+      return fmt::format("edge {}-{} has sharpness {}, which leaves it sharp in the first step of a pair and smooth in "
+                         "the second (two sqrt3 steps nest only where an edge is sharp for both or neither: "
+                         "sharpness 2, 4, ..., between 2k + 1 and 2k + 2, or infinitely sharp); change its sharpness",
+                         base.edge_vertices[size_t(2 * e)], base.edge_vertices[size_t(2 * e + 1)], s);
+  }
   return {};
 }
 
@@ -105,6 +111,7 @@ LimitSample Sqrt3Limit::evaluate(const FacePoint& p0, const std::vector<double>&
   int stop = kRoundOffSteps;
   const int give_up = 24 * kRoundOffSteps;  // past the smallest double's distance to a vertex (3^-680)
   std::string mask_error;
+  int deferred = 0;  // double steps taken past a corner whose derivatives a nearby boundary took away
   for (int step = 0;; ++step) {
     const Sqrt3Node& node = nodes_->expanded(id);
     if (node.extraordinary) stop = std::max(stop, step + kRoundOffSteps);
@@ -113,7 +120,14 @@ LimitSample Sqrt3Limit::evaluate(const FacePoint& p0, const std::vector<double>&
     // round to 1 for a point 1e-300 away, which is not at the corner).
     const bool at_vertex = q.b[size_t((k + 1) % 3)] == 0 && q.b[size_t((k + 2) % 3)] == 0;
     if (at_vertex || step >= stop) {
-      if (const CornerRows* rows = nodes_->corner(id, k, mask_error)) {
+      const CornerRows* rows = nodes_->corner(id, k, mask_error);
+      // Next to a boundary the corner's derivatives wait for a level where it is far enough
+      // from it (sqrt3_nodes.cpp); a point within round-off of the boundary stops without.
+      if (rows && derivatives >= 1 && node.corner_deferred[size_t(k)] && deferred < kRoundOffSteps) {
+        ++deferred;
+        rows = nullptr;
+      }
+      if (rows) {
         LimitSample out;
         out.steps = step;
         out.position = applied(rows->position, values, channels);

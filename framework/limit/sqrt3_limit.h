@@ -31,9 +31,22 @@
 // sqrt3_nodes.h); a point exactly at a vertex stops there (no derivatives at an
 // extraordinary one).
 //
-// Refused (sqrt3_limit_unsupported): boundaries (trisected every second step, whose
-// parameterisation along the boundary is not defined here yet), sharp and semi-sharp edges
-// and vertices, holes.
+// Boundaries (Kobbelt 2000, section 5): the first step keeps a boundary triangle's (a, b,
+// face point), the second trisects the boundary edge and flips the triangle's other edges to
+// the trisection points, so two steps are the same triadic split with the trisection points
+// at (2a + b)/3 and (a + 2b)/3 (sqrt3_nodes.cpp), and a boundary vertex's limit is its limit
+// mask from the boundary configuration's subdivision matrix (the analysis). No derivatives
+// on the boundary itself (its vertices included): the tangent masks are
+// scaled by linear precision, which the boundary rules lack within two rings of the
+// boundary (the first step's face point of a boundary triangle has 5 neighbours and the
+// vertex rule moves it off its parameter); a point off the boundary descends until its
+// vertex is 4 rings from it. Holes remove faces, not rules: the cuts drop the tags.
+//
+// Sharp edges are kept and trisected like a boundary (refine/sqrt3_split.cpp), so creases
+// take the same road, the cuts keeping their sharpness; no derivatives on a crease. Refused
+// (sqrt3_limit_unsupported): an edge whose sharpness ends between the two steps of a pair
+// (s mod 2 in (0, 1]): kept in the first step and flipped in the second, the triangle kept
+// beside it gets its face point at (4a + 4b + c)/9, off the triadic lattice.
 #include <memory>
 #include <mutex>
 #include <span>

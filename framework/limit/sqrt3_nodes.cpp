@@ -48,12 +48,20 @@ std::vector<Bary> first_step_coordinates(const Level& L, Index f, const ChildOri
 }
 
 // Where the children of a step lie: a vertex child at its parent vertex, a face child at the
-// centroid of its parent face (the parameterisation, whatever the rules' weights).
+// centroid of its parent face, a boundary edge's trisection point (Kobbelt 2000, section 5:
+// the second step trisects the boundary) a third of the way from the end it is next to (the
+// parameterisation, whatever the rules' weights).
 std::vector<Bary> child_coordinates(const Level& parent, const std::vector<Bary>& at, const ChildOrigins& o) {
   std::vector<Bary> out(o.kind.size(), Bary{kNan, kNan, kNan});
   for (size_t v = 0; v < o.kind.size(); ++v) {
     if (o.kind[v] == OriginKind::Vertex) {
       out[v] = at[size_t(o.parent[v])];
+    } else if (o.kind[v] == OriginKind::Edge) {
+      // Local 0 is the point next to the edge's first end (refine/sqrt3_split.cpp).
+      const Index e = o.parent[v];
+      const Bary& near = at[size_t(parent.edge_vertices[size_t(2 * e + o.local[v])])];
+      const Bary& far = at[size_t(parent.edge_vertices[size_t(2 * e + 1 - o.local[v])])];
+      for (size_t i = 0; i < 3; ++i) out[v][i] = (2 * near[i] + far[i]) / 3;
     } else if (o.kind[v] == OriginKind::Face) {
       Bary sum{0, 0, 0};
       const auto corners = parent.face(o.parent[v]);
@@ -111,6 +119,51 @@ std::vector<std::pair<Index, TriadicChild>> triadic_children(const Level& level2
   return out;
 }
 
+// Rings of a corner within which a boundary vertex takes the corner's derivatives away.
+constexpr int kBoundaryRings = 4;
+
+// A vertex on a boundary, a sharp or semi-sharp edge, or tagged sharp: Kobbelt's boundary
+// rules apply there (refine/sqrt3_split.cpp: sharp edges are kept and trisected like a
+// boundary).
+bool on_feature(const Level& L, Index v) {
+  if (L.on_boundary(v) || L.vertex_sharp(v) > 0) return true;
+  for (Index e : L.ring_edges(v))
+    if (L.edge_sharp(e) > 0) return true;
+  return false;
+}
+
+// A vertex where the descent need not go on past the last triangle touching it: 6 faces and
+// no sharp edge, or two straight across (a regular crease); 3 faces on a boundary, no sharp
+// edge inside. The rest (other valences, darts, corners, tagged vertices) are extraordinary.
+bool regular_corner(const Level& L, Index v) {
+  if (L.vertex_sharp(v) > 0) return false;
+  const auto ring = L.ring_edges(v);
+  const int n = int(ring.size());
+  std::vector<int> sharp;
+  for (int j = 0; j < n; ++j)
+    if (L.edge_sharp(ring[size_t(j)]) > 0 && !L.edge_on_boundary(ring[size_t(j)])) sharp.push_back(j);
+  if (L.on_boundary(v)) return sharp.empty() && L.incident_face_count(v) == 3;
+  return L.incident_face_count(v) == 6 && (sharp.empty() || (sharp.size() == 2 && sharp[1] - sharp[0] == 3));
+}
+
+// Whether a vertex on a feature lies within `rings` edges of v (fewer than the cut's radius,
+// so the cut's rim is not met).
+bool near_boundary(const Level& L, Index v, int rings) {
+  std::vector<Index> front{v}, seen{v};
+  for (int r = 0; r <= rings; ++r) {
+    std::vector<Index> next;
+    for (Index w : front) {
+      if (on_feature(L, w)) return true;
+      for (Index e : L.ring_edges(w)) {
+        const Index x = L.other_end(e, w);
+        if (std::find(seen.begin(), seen.end(), x) == seen.end()) seen.push_back(x), next.push_back(x);
+      }
+    }
+    front.swap(next);
+  }
+  return false;
+}
+
 }  // namespace
 
 Bary in_child(const TriadicChild& t, const Bary& b) {
@@ -149,7 +202,9 @@ int Sqrt3Nodes::intern_locked(const Level& cut, Index face, std::vector<Index>& 
   if (!inserted) return it->second;
   auto n = std::make_unique<Sqrt3Node>();
   n->level = canonical_cut(cut, lab, face, n->face);
-  for (Index v : n->level.face(n->face)) n->extraordinary = n->extraordinary || n->level.incident_face_count(v) != 6;
+  // A corner is regular with 6 triangles inside, 3 on a boundary (Kobbelt's boundary rule keeps
+  // that count at even levels, refine/sqrt3_split.cpp).
+  for (Index v : n->level.face(n->face)) n->extraordinary = n->extraordinary || !regular_corner(n->level, v);
   nodes_.push_back(std::move(n));
   return it->second;
 }
@@ -208,6 +263,19 @@ const CornerRows* Sqrt3Nodes::corner(int id, int k, std::string& error) {
       p.face = n.face;
       n.corner_state[size_t(k)] =
           corner_rows(limits_, n.level, p, k, 0, true, n.corner[size_t(k)], n.corner_error[size_t(k)]) ? 1 : 2;
+      // No derivatives within a few rings of a boundary: the tangent masks are scaled by
+      // linear precision (corner_limit.h), which √3's boundary rules lack there (the first
+      // step's face point of a boundary triangle has 5 neighbours, and the vertex rule moves it
+      // off its parameter; measured: exact two rings inside, 3x off on the boundary itself).
+      // Points that far from the boundary, 3^-34 of the base triangle, lie on it to round-off.
+      const Index c = n.level.face(n.face)[size_t(k)];
+      if (near_boundary(n.level, c, std::min(kBoundaryRings, radius_ - 1))) {
+        // Off the boundary, the rings to it grow threefold per double step: derivatives a few
+        // steps on (sqrt3_limit.cpp).
+        n.corner_deferred[size_t(k)] = !n.corner[size_t(k)].ds.empty() && !on_feature(n.level, c);
+        n.corner[size_t(k)].ds.clear();
+        n.corner[size_t(k)].dt.clear();
+      }
     }
     if (n.corner_state[size_t(k)] == 2) {
       if (!n.corner_error[size_t(k)].empty()) error = n.corner_error[size_t(k)];

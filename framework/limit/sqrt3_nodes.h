@@ -57,6 +57,9 @@ struct Sqrt3Node {
   std::array<int, 3> corner_state{};     // 0 not tried, 1 ready, 2 not a known configuration
   std::array<CornerRows, 3> corner;      // over labels
   std::array<std::string, 3> corner_error;
+  // Per corner: its derivatives were taken away for a boundary a few rings off, and the
+  // corner itself is not on it (a deeper level has them).
+  std::array<char, 3> corner_deferred{};
 };
 
 class Sqrt3Nodes {

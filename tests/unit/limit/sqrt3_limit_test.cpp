@@ -355,12 +355,3 @@ TEST_CASE("sqrt3: the tessellation is closed") {
   CHECK(t.face_count() == 8 * 4);
   CHECK(t.point_count() == 6 + 12);  // N = 2: corners and edge middles, each once (no cracks), no interior points
 }
-
-TEST_CASE("sqrt3: boundaries and creases are refused with the reason") {
-  CHECK_THROWS_WITH_AS(LimitSurface(load_scheme("sqrt3"), test::grid(3, 3, true).level()),
-                       doctest::Contains("boundary"), Error);
-  Level creased = test::octahedron().level();
-  creased.edge_sharpness.assign(size_t(creased.edge_count()), 0.f);
-  creased.edge_sharpness[0] = 2.f;
-  CHECK_THROWS_WITH_AS(LimitSurface(load_scheme("sqrt3"), creased), doctest::Contains("creases"), Error);
-}
