@@ -5,8 +5,10 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <deque>
 #include <mutex>
+#include <unordered_map>
 #include <fmt/format.h>
 #include <tbb/task_arena.h>
 
@@ -146,6 +148,35 @@ struct LimitSurface::Impl {
   struct alignas(64) GridSlot {
     std::array<std::atomic<Index>, 16> vertex{};
   };
+  // A face's cut known by the base's own labelling around the face (KeyHash: the
+  // signature's bits): the node, the labels it keeps and what make_entry asks of it.
+  struct KnownCut {
+    int node = -1;
+    Index kept = 0;
+    const std::array<Index, 16>* grid = nullptr;
+    const std::vector<std::vector<double>>* lattice = nullptr;
+  };
+  struct KeyHash {
+    // Four independent lanes (multiply-xor over the values' bits), so that hashing a
+    // signature of thousands of values is not one long chain of dependent multiplications.
+    size_t operator()(const std::vector<double>& key) const noexcept {
+      constexpr std::uint64_t kOdd = 0x9E3779B97F4A7C15ull;
+      std::uint64_t h[4] = {key.size(), 1, 2, 3};
+      const size_t n = key.size();
+      auto bits = [&](size_t i) {
+        std::uint64_t b = 0;
+        std::memcpy(&b, &key[i], sizeof b);
+        return b;
+      };
+      size_t i = 0;
+      for (; i + 4 <= n; i += 4)
+        for (size_t l = 0; l < 4; ++l) h[l] = (h[l] ^ bits(i + l)) * kOdd;
+      for (; i < n; ++i) h[0] = (h[0] ^ bits(i)) * kOdd;
+      std::uint64_t r = h[0];
+      for (size_t l = 1; l < 4; ++l) r = (r ^ (h[l] >> 31) ^ h[l]) * kOdd;
+      return size_t(r ^ (r >> 32));
+    }
+  };
   // The nodes for one depth and the entries into them. The depth starts at one ring and
   // grows when a scheme reads further (NotClosed); evaluations under way keep theirs.
   struct Cache {
@@ -159,6 +190,9 @@ struct LimitSurface::Impl {
     // Per face (made with the first face that fills one), for regular faces when the
     // regular node is a bicubic patch.
     std::atomic<GridSlot*> slots{nullptr};
+    // Cuts by the base's signature around their face at the cut's radius (make_entry).
+    std::mutex known_mutex;
+    std::unordered_map<std::vector<double>, KnownCut, KeyHash> known;
     ~Cache() {
       for (Index f = 0; f < entry_count; ++f) delete entries[size_t(f)].load();
       delete[] slots.load();
@@ -233,6 +267,26 @@ struct LimitSurface::Impl {
         e->lattice = r->lattice;
         return e;
       }
+    // The base labelled around the face at the cut's radius has the cut's labels (to the
+    // cut's edge) and a signature from which the cut's follows (keyed_by_base): a face whose
+    // base signature was met already takes that cut's node without cutting or signing.
+    std::vector<double> key;
+    const bool keyed = options.shortcuts && keyed_by_base();
+    if (keyed) {
+      label_neighbourhood(lab, base, CentreKind::Face, face, 0, radius);
+      std::unique_lock lock(c.known_mutex);
+      if (const auto found = c.known.find(lab.signature); found != c.known.end()) {
+        const KnownCut k = found->second;
+        lock.unlock();
+        e->node = k.node;
+        e->vertices.assign(lab.vertices.begin(), lab.vertices.begin() + std::ptrdiff_t(k.kept));
+        e->set_grid(k.grid);
+        e->lattice = k.lattice;
+        return e;
+      }
+      lock.unlock();
+      key = lab.signature;
+    }
     FacePoint p;
     p.face = face;
     const Neighbourhood n = cut(base, {}, 0, p, radius);
@@ -246,8 +300,22 @@ struct LimitSurface::Impl {
       std::vector<int> stack;
       e->lattice = quartic(c, e->node, stack);
     }
+    if (keyed) {
+      const KnownCut k{e->node, Index(e->vertices.size()), e->grid, e->lattice};
+      std::lock_guard lock(c.known_mutex);
+      c.known.emplace(std::move(key), k);
+    }
     return e;
   }
+
+  // Whether a face's cut (extract_neighbourhood at `radius`, signed by the nodes at radius
+  // + 3) is a function of the base's signature around the face at `radius`: the cut is the
+  // faces of the vertices closer than the radius, whose corners, face sizes, edge
+  // sharpness and (to the radius) vertex tags that signature records in the same labels
+  // (the breadth-first labelling scans the same faces in the same order up to the radius).
+  // Holes are appended to the nodes' keys from the cut and a non-manifold base is cut
+  // differently: those take the general way.
+  bool keyed_by_base() const { return base.face_hole.empty() && base.manifold(); }
 
   // Whether the face's cut is a piece of untagged regular quad grid (quad_grid_labelled),
   // leaving in `lab` at least its labels within `depth`. A larger piece is checked first:
@@ -351,6 +419,52 @@ struct LimitSurface::Impl {
     out.duv = second(0, 1);
     out.dvv = second(1, 1);
     out.has_second_derivatives = true;
+    return out;
+  }
+
+  // finish() of a polynomial patch's rows with nothing to pull back, applied to the face's
+  // vertices' values where they lie: the same products summed in the same order (the same
+  // bits), without the rows' or the gathered values' allocations.
+  static LimitSample fixed_sample(const FixedRows& r, const std::vector<Index>& vertices, const FacePoint& p,
+                                  std::span<const double> values, int channels, int derivatives) {
+    const size_t C = size_t(channels), L = r.labels;
+    auto apply = [&](const double* row, std::vector<double>& out) {
+      out.assign(C, 0.0);
+      for (size_t l = 0; l < L; ++l) {
+        if (row[l] == 0) continue;
+        const double* at = &values[size_t(vertices[l]) * C];
+        for (size_t c = 0; c < C; ++c) out[c] += row[l] * at[c];
+      }
+    };
+    LimitSample out;
+    apply(r.row[0].data(), out.position);
+    const auto& J = p.jacobian;
+    const auto& ds = r.row[1];
+    const auto& dt = r.row[2];
+    if (derivatives >= 1 && r.count >= 3) {
+      std::array<double, kFixedLabels> du{}, dv{};
+      for (size_t i = 0; i < L; ++i) du[i] = J[0][0] * ds[i] + J[1][0] * dt[i];
+      for (size_t i = 0; i < L; ++i) dv[i] = J[0][1] * ds[i] + J[1][1] * dt[i];
+      apply(du.data(), out.du);
+      apply(dv.data(), out.dv);
+      out.has_derivatives = true;
+    }
+    if (derivatives >= 2 && out.has_derivatives && r.count >= 6) {
+      const auto& dss = r.row[3];
+      const auto& dst = r.row[4];
+      const auto& dtt = r.row[5];
+      auto second = [&](size_t a, size_t b, std::vector<double>& o) {
+        std::array<double, kFixedLabels> x{};
+        for (size_t i = 0; i < L; ++i)
+          x[i] = J[0][a] * J[0][b] * dss[i] + (J[0][a] * J[1][b] + J[1][a] * J[0][b]) * dst[i] +
+                 J[1][a] * J[1][b] * dtt[i];
+        apply(x.data(), o);
+      };
+      second(0, 0, out.duu);
+      second(0, 1, out.duv);
+      second(1, 1, out.dvv);
+      out.has_second_derivatives = true;
+    }
     return out;
   }
 
@@ -845,6 +959,11 @@ LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double
     if (e->grid)
       return Impl::bspline_sample(
           e->grid_cell, [&](size_t l) { return e->vertices[l]; }, p, values, channels, derivatives);
+    if (e->lattice && impl_->triangles) {
+      FixedRows rows;
+      if (quartic_rows_fixed(*e->lattice, p.st, derivatives, rows))
+        return Impl::fixed_sample(rows, e->vertices, p, values, channels, derivatives);
+    }
     if (e->lattice) {
       // walk()'s first step where the face's node is a polynomial patch, without the nodes' lock.
       const std::vector<double> first = gathered(e->vertices, values, channels);
