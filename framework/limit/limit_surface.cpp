@@ -156,13 +156,16 @@ struct LimitSurface::Impl {
     const std::array<Index, 16>* grid = nullptr;
     const std::vector<std::vector<double>>* lattice = nullptr;
   };
+  // The hash reads the size and at most the first kHashed values (where neighbourhoods
+  // differ first: the labelling starts at the face); equal hashes are told apart by KeyEqual.
   struct KeyHash {
-    // Four independent lanes (multiply-xor over the values' bits), so that hashing a
-    // signature of thousands of values is not one long chain of dependent multiplications.
+    static constexpr size_t kHashed = 512;
     size_t operator()(const std::vector<double>& key) const noexcept {
       constexpr std::uint64_t kOdd = 0x9E3779B97F4A7C15ull;
+      // Four independent lanes (multiply-xor over the values' bits): no long chain of
+      // dependent multiplications.
       std::uint64_t h[4] = {key.size(), 1, 2, 3};
-      const size_t n = key.size();
+      const size_t n = std::min(key.size(), kHashed);
       auto bits = [&](size_t i) {
         std::uint64_t b = 0;
         std::memcpy(&b, &key[i], sizeof b);
@@ -175,6 +178,13 @@ struct LimitSurface::Impl {
       std::uint64_t r = h[0];
       for (size_t l = 1; l < 4; ++l) r = (r ^ (h[l] >> 31) ^ h[l]) * kOdd;
       return size_t(r ^ (r >> 32));
+    }
+  };
+  // Bitwise equality (a signature's values are small integers and sharpness, never NaN; two
+  // keys equal but for the sign of a zero would only be kept apart).
+  struct KeyEqual {
+    bool operator()(const std::vector<double>& a, const std::vector<double>& b) const noexcept {
+      return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
     }
   };
   // The nodes for one depth and the entries into them. The depth starts at one ring and
@@ -192,7 +202,7 @@ struct LimitSurface::Impl {
     std::atomic<GridSlot*> slots{nullptr};
     // Cuts by the base's signature around their face at the cut's radius (make_entry).
     std::mutex known_mutex;
-    std::unordered_map<std::vector<double>, KnownCut, KeyHash> known;
+    std::unordered_map<std::vector<double>, KnownCut, KeyHash, KeyEqual> known;
     ~Cache() {
       for (Index f = 0; f < entry_count; ++f) delete entries[size_t(f)].load();
       delete[] slots.load();
@@ -355,11 +365,50 @@ struct LimitSurface::Impl {
   bool fill_slot(Cache& c, Index face) const {
     const Entry* r = c.regular.load(std::memory_order_acquire);
     thread_local Labelling lab;
-    if (!options.shortcuts || !r || !r->grid || !in_quad_grid(lab, face, c.nodes->depth())) return false;
+    if (!options.shortcuts || !r || !r->grid) return false;
+    std::array<Index, 16> ring{};
+    if (grid_face[size_t(face)].load(std::memory_order_relaxed)) {
+      first_grid_labels(face, ring);
+    } else {
+      if (!in_quad_grid(lab, face, c.nodes->depth())) return false;
+      std::copy(lab.vertices.begin(), lab.vertices.begin() + 16, ring.begin());
+    }
     GridSlot& slot = c.slot_array()[size_t(face)];
     for (size_t l = 0; l < 16; ++l)
-      slot.vertex[l].store(lab.vertices[l] + 1, l == 15 ? std::memory_order_release : std::memory_order_relaxed);
+      slot.vertex[l].store(ring[l] + 1, l == 15 ? std::memory_order_release : std::memory_order_relaxed);
     return true;
+  }
+
+  // The first 16 labels of a face known to be in untagged regular quad grid (grid_face):
+  // label_neighbourhood's breadth-first order (its corners from corner 0, then each corner's
+  // faces counter-clockwise from this one, each face's corners after the vertex), without
+  // the checks that made it known or the labelling's arrays over the level.
+  void first_grid_labels(Index face, std::array<Index, 16>& out) const {
+    const auto corners = base.face(face);
+    size_t count = 0;
+    for (size_t i = 0; i < 4; ++i) out[count++] = corners[i];
+    auto labelled = [&](Index w) {
+      for (size_t k = 0; k < count; ++k)
+        if (out[k] == w) return true;
+      return false;
+    };
+    for (size_t q = 0; q < 4; ++q) {
+      const Index v = out[q];
+      const auto faces = base.ring_faces(v);
+      const Index first = base.vertex_face_offsets[v];
+      size_t entry = 0;
+      while (faces[entry] != face) ++entry;
+      for (size_t t = 0; t < 4; ++t) {
+        const size_t fi = (entry + t) & 3;
+        const auto fc = base.face(faces[fi]);
+        const size_t c = size_t(base.vertex_face_corner[size_t(first) + fi]);
+        for (size_t i = 1; i < 4; ++i) {
+          const Index w = fc[(c + i) & 3];
+          if (!labelled(w)) out[count++] = w;
+        }
+      }
+    }
+    if (count != 16) throw Error("internal: a face marked as regular quad grid has no 4 x 4 control points");
   }
 
   // walk()'s first step where the face's node is the bicubic patch: finish() of
