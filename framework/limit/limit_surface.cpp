@@ -19,6 +19,7 @@
 #include "framework/engine/refiner.h"
 #include "framework/limit/bspline_patch.h"
 #include "framework/limit/corner_limit.h"
+#include "framework/limit/cut_key.h"
 #include "framework/limit/dual_limit.h"
 #include "framework/limit/sequence_head.h"
 #include "framework/limit/sqrt3_limit.h"
@@ -148,8 +149,8 @@ struct LimitSurface::Impl {
   struct alignas(64) GridSlot {
     std::array<std::atomic<Index>, 16> vertex{};
   };
-  // A face's cut known by the base's own labelling around the face (KeyHash: the
-  // signature's bits): the node, the labels it keeps and what make_entry asks of it.
+  // A face's cut known by its key (key_cut, cut_key.h): the node, the labels it keeps and
+  // what make_entry asks of it.
   struct KnownCut {
     int node = -1;
     Index kept = 0;
@@ -157,34 +158,22 @@ struct LimitSurface::Impl {
     const std::vector<std::vector<double>>* lattice = nullptr;
   };
   // The hash reads the size and at most the first kHashed values (where neighbourhoods
-  // differ first: the labelling starts at the face); equal hashes are told apart by KeyEqual.
+  // differ first: the labelling starts at the face); equal hashes are told apart by comparing the keys.
+  using Key = std::vector<std::uint32_t>;
   struct KeyHash {
-    static constexpr size_t kHashed = 512;
-    size_t operator()(const std::vector<double>& key) const noexcept {
+    static constexpr size_t kHashed = 1024;
+    size_t operator()(const Key& key) const noexcept {
       constexpr std::uint64_t kOdd = 0x9E3779B97F4A7C15ull;
-      // Four independent lanes (multiply-xor over the values' bits): no long chain of
-      // dependent multiplications.
+      // Four independent lanes (multiply-xor): no long chain of dependent multiplications.
       std::uint64_t h[4] = {key.size(), 1, 2, 3};
       const size_t n = std::min(key.size(), kHashed);
-      auto bits = [&](size_t i) {
-        std::uint64_t b = 0;
-        std::memcpy(&b, &key[i], sizeof b);
-        return b;
-      };
       size_t i = 0;
       for (; i + 4 <= n; i += 4)
-        for (size_t l = 0; l < 4; ++l) h[l] = (h[l] ^ bits(i + l)) * kOdd;
-      for (; i < n; ++i) h[0] = (h[0] ^ bits(i)) * kOdd;
+        for (size_t l = 0; l < 4; ++l) h[l] = (h[l] ^ key[i + l]) * kOdd;
+      for (; i < n; ++i) h[0] = (h[0] ^ key[i]) * kOdd;
       std::uint64_t r = h[0];
       for (size_t l = 1; l < 4; ++l) r = (r ^ (h[l] >> 31) ^ h[l]) * kOdd;
       return size_t(r ^ (r >> 32));
-    }
-  };
-  // Bitwise equality (a signature's values are small integers and sharpness, never NaN; two
-  // keys equal but for the sign of a zero would only be kept apart).
-  struct KeyEqual {
-    bool operator()(const std::vector<double>& a, const std::vector<double>& b) const noexcept {
-      return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
     }
   };
   // The nodes for one depth and the entries into them. The depth starts at one ring and
@@ -200,9 +189,9 @@ struct LimitSurface::Impl {
     // Per face (made with the first face that fills one), for regular faces when the
     // regular node is a bicubic patch.
     std::atomic<GridSlot*> slots{nullptr};
-    // Cuts by the base's signature around their face at the cut's radius (make_entry).
+    // Cuts by their key_cut (cut_key.h) at the cut's radius (make_entry).
     std::mutex known_mutex;
-    std::unordered_map<std::vector<double>, KnownCut, KeyHash, KeyEqual> known;
+    std::unordered_map<Key, KnownCut, KeyHash> known;
     ~Cache() {
       for (Index f = 0; f < entry_count; ++f) delete entries[size_t(f)].load();
       delete[] slots.load();
@@ -277,25 +266,27 @@ struct LimitSurface::Impl {
         e->lattice = r->lattice;
         return e;
       }
-    // The base labelled around the face at the cut's radius has the cut's labels (to the
-    // cut's edge) and a signature from which the cut's follows (keyed_by_base): a face whose
-    // base signature was met already takes that cut's node without cutting or signing.
-    std::vector<double> key;
-    const bool keyed = options.shortcuts && keyed_by_base();
+    // A face whose cut's key (read from the base, cut_key.h) was met already takes that
+    // cut's node without cutting or signing.
+    thread_local CutKey ck;
+    Key key;
+    std::vector<Index> key_vertices;
+    const bool keyed = options.shortcuts;
     if (keyed) {
-      label_neighbourhood(lab, base, CentreKind::Face, face, 0, radius);
+      key_cut(ck, base, face, radius);
       std::unique_lock lock(c.known_mutex);
-      if (const auto found = c.known.find(lab.signature); found != c.known.end()) {
+      if (const auto found = c.known.find(ck.key); found != c.known.end()) {
         const KnownCut k = found->second;
         lock.unlock();
         e->node = k.node;
-        e->vertices.assign(lab.vertices.begin(), lab.vertices.begin() + std::ptrdiff_t(k.kept));
+        e->vertices.assign(ck.vertices.begin(), ck.vertices.begin() + std::ptrdiff_t(k.kept));
         e->set_grid(k.grid);
         e->lattice = k.lattice;
         return e;
       }
       lock.unlock();
-      key = lab.signature;
+      key = ck.key;
+      key_vertices = ck.vertices;
     }
     FacePoint p;
     p.face = face;
@@ -310,7 +301,9 @@ struct LimitSurface::Impl {
       std::vector<int> stack;
       e->lattice = quartic(c, e->node, stack);
     }
-    if (keyed) {
+    // The key's labels are the cut's (checked: a key is kept only where they agree).
+    if (keyed && key_vertices.size() >= e->vertices.size() &&
+        std::equal(e->vertices.begin(), e->vertices.end(), key_vertices.begin())) {
       const KnownCut k{e->node, Index(e->vertices.size()), e->grid, e->lattice};
       std::lock_guard lock(c.known_mutex);
       c.known.emplace(std::move(key), k);
@@ -318,14 +311,6 @@ struct LimitSurface::Impl {
     return e;
   }
 
-  // Whether a face's cut (extract_neighbourhood at `radius`, signed by the nodes at radius
-  // + 3) is a function of the base's signature around the face at `radius`: the cut is the
-  // faces of the vertices closer than the radius, whose corners, face sizes, edge
-  // sharpness and (to the radius) vertex tags that signature records in the same labels
-  // (the breadth-first labelling scans the same faces in the same order up to the radius).
-  // Holes are appended to the nodes' keys from the cut and a non-manifold base is cut
-  // differently: those take the general way.
-  bool keyed_by_base() const { return base.face_hole.empty() && base.manifold(); }
 
   // Whether the face's cut is a piece of untagged regular quad grid (quad_grid_labelled),
   // leaving in `lab` at least its labels within `depth`. A larger piece is checked first:
