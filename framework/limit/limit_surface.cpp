@@ -462,7 +462,18 @@ struct LimitSurface::Impl {
   static LimitSample fixed_sample(const FixedRows& r, const std::vector<Index>& vertices, const FacePoint& p,
                                   std::span<const double> values, int channels, int derivatives) {
     const size_t C = size_t(channels), L = r.labels;
+    // Sums kept in registers for three channels (positions), in the same order.
     auto apply = [&](const double* row, std::vector<double>& out) {
+      if (C == 3) {
+        double x = 0, y = 0, z = 0;
+        for (size_t l = 0; l < L; ++l) {
+          if (row[l] == 0) continue;
+          const double* at = &values[size_t(vertices[l]) * 3];
+          x += row[l] * at[0], y += row[l] * at[1], z += row[l] * at[2];
+        }
+        out = {x, y, z};
+        return;
+      }
       out.assign(C, 0.0);
       for (size_t l = 0; l < L; ++l) {
         if (row[l] == 0) continue;

@@ -47,7 +47,9 @@ Factors factors(double z) {
 }
 
 // The lattice point (i, j)'s Lagrange weight and its derivatives in (s, t): position, d/ds,
-// d/dt, d2/ds2, d2/dsdt, d2/dt2, from the factors of z1 = 4 s, z2 = 4 t, z0 = 4 - z1 - z2.
+// d/dt, d2/ds2, d2/dsdt, d2/dt2 (the first `Count`), from the factors of z1 = 4 s, z2 = 4 t,
+// z0 = 4 - z1 - z2.
+template <int Count>
 std::array<double, 6> lattice_weight(int i, int j, const Factors& f1, const Factors& f2, const Factors& f0) {
   const int k = kDegree - i - j;
   const double a = f1[size_t(i)][0], da = f1[size_t(i)][1], dda = f1[size_t(i)][2];
@@ -55,12 +57,18 @@ std::array<double, 6> lattice_weight(int i, int j, const Factors& f1, const Fact
   const double c = f0[size_t(k)][0], dc = f0[size_t(k)][1], ddc = f0[size_t(k)][2];
   // The chain rule in barycentric coordinates.
   const double d = kDegree, dd = d * d;
-  const double w = a * b * c;
-  const double ws = d * (da * b * c - a * b * dc), wt = d * (a * db * c - a * b * dc);
-  const double wss = dd * (dda * b * c - 2 * da * b * dc + a * b * ddc);
-  const double wst = dd * (da * db * c - da * b * dc - a * db * dc + a * b * ddc);
-  const double wtt = dd * (a * ddb * c - 2 * a * db * dc + a * b * ddc);
-  return {w, ws, wt, wss, wst, wtt};
+  std::array<double, 6> w{};
+  w[0] = a * b * c;
+  if constexpr (Count >= 3) {
+    w[1] = d * (da * b * c - a * b * dc);
+    w[2] = d * (a * db * c - a * b * dc);
+  }
+  if constexpr (Count >= 6) {
+    w[3] = dd * (dda * b * c - 2 * da * b * dc + a * b * ddc);
+    w[4] = dd * (da * db * c - da * b * dc - a * db * dc + a * b * ddc);
+    w[5] = dd * (a * ddb * c - 2 * a * db * dc + a * b * ddc);
+  }
+  return w;
 }
 
 int row_count(int order) { return order >= 2 ? 6 : order == 1 ? 3 : 1; }
@@ -68,25 +76,23 @@ int row_count(int order) { return order >= 2 ? 6 : order == 1 ? 3 : 1; }
 // out[n][l] = the sum over the lattice points q, in order, of weight_q[n] row_q[l], for
 // `Count` rows n. Summed per entry from 0 without skipping zeros: a product with a zero
 // entry of a row is a zero, which leaves a sum that starts at +0 as it was, so the bits are
-// those of skipping it, and the loops are free of branches.
+// those of skipping it, and the loops are free of branches (and run along the labels).
 template <int Count>
 void accumulate(const std::vector<std::vector<double>>& rows, const Uv& st, double* const* out) {
   const size_t labels = rows.front().size();
   const auto points = lattice();
   const double z1 = kDegree * st[0], z2 = kDegree * st[1], z0 = kDegree - z1 - z2;
   const Factors f1 = factors(z1), f2 = factors(z2), f0 = factors(z0);
-  std::array<std::array<double, 6>, kQuarticLattice> weight;
-  std::array<const double*, kQuarticLattice> row;
+  for (size_t n = 0; n < size_t(Count); ++n) std::fill(out[n], out[n] + labels, 0.0);
   for (size_t q = 0; q < size_t(kQuarticLattice); ++q) {
-    weight[q] = lattice_weight(points[q][0], points[q][1], f1, f2, f0);
-    row[q] = rows[q].data();
-  }
-  for (size_t n = 0; n < size_t(Count); ++n)
-    for (size_t l = 0; l < labels; ++l) {
-      double sum = 0;
-      for (size_t q = 0; q < size_t(kQuarticLattice); ++q) sum += weight[q][n] * row[q][l];
-      out[n][l] = sum;
+    const std::array<double, 6> weight = lattice_weight<Count>(points[q][0], points[q][1], f1, f2, f0);
+    const double* row = rows[q].data();
+    for (size_t n = 0; n < size_t(Count); ++n) {
+      double* o = out[n];
+      const double w = weight[n];
+      for (size_t l = 0; l < labels; ++l) o[l] += w * row[l];
     }
+  }
 }
 
 void accumulate(const std::vector<std::vector<double>>& rows, const Uv& st, int count, double* const* out) {
