@@ -192,6 +192,11 @@ struct LimitSurface::Impl {
     // Cuts by their key_cut (cut_key.h) at the cut's radius (make_entry).
     std::mutex known_mutex;
     std::unordered_map<Key, KnownCut, KeyHash> known;
+    // The keys' total length: a mesh whose neighbourhoods hardly repeat (a scan, say) would
+    // otherwise keep a key of thousands of values per face; past the budget new keys are not
+    // kept and their faces take the general way, as every face would without keys.
+    size_t known_words = 0;
+    static constexpr size_t kKnownBudget = size_t(1) << 24;  // 64 MB of keys
     ~Cache() {
       for (Index f = 0; f < entry_count; ++f) delete entries[size_t(f)].load();
       delete[] slots.load();
@@ -306,7 +311,10 @@ struct LimitSurface::Impl {
         std::equal(e->vertices.begin(), e->vertices.end(), key_vertices.begin())) {
       const KnownCut k{e->node, Index(e->vertices.size()), e->grid, e->lattice};
       std::lock_guard lock(c.known_mutex);
-      c.known.emplace(std::move(key), k);
+      if (c.known_words + key.size() <= Cache::kKnownBudget) {
+        c.known_words += key.size();
+        c.known.emplace(std::move(key), k);
+      }
     }
     return e;
   }

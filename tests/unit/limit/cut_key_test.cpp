@@ -79,28 +79,31 @@ TEST_CASE("key_cut labels as label_neighbourhood does, and one key means one cut
       {"cube", test::cube().level()},
       {"narrow torus", test::torus(6, 30).level()},
       {"creased torus", creased_torus()}};
-  for (const auto& [name, L] : meshes) {
+  for (const auto& mesh : meshes) {
+    // Named copies, not structured bindings: doctest's INFO captures them in a lambda.
+    const std::string name = mesh.first;
+    const Level& L = mesh.second;
     CutKey k;
     Labelling lab;
     std::map<std::vector<std::uint32_t>, std::pair<std::vector<double>, std::vector<std::vector<Index>>>> seen;
     int shared = 0;
     for (Index f = 0; f < L.face_count(); ++f) {
-      INFO(std::string(name) << ", face " << f);
+      INFO(name << ", face " << f);
       key_cut(k, L, f, kRadius);
       label_neighbourhood(lab, L, CentreKind::Face, f, 0, kRadius);
       REQUIRE(k.vertices == lab.vertices);
       CHECK(k.distance == lab.distance);
       CHECK(k.count_within(1) == lab.count_within(1));
       const auto signature = cut_signature(L, f);
-      const auto [it, made] = seen.emplace(k.key, signature);
-      if (!made) {
+      const auto made = seen.emplace(k.key, signature);
+      if (!made.second) {
         ++shared;
-        CHECK(it->second == signature);
+        CHECK(made.first->second == signature);
       }
     }
     // On a torus every face's neighbourhood is every other's up to a translation (two
     // kinds of triangle when triangulated; one per row with the creases): the key is
     // shared, not one per face.
-    if (std::string(name).find("torus") != std::string::npos) CHECK(shared >= L.face_count() - 16);
+    if (name.find("torus") != std::string::npos) CHECK(shared >= L.face_count() - 16);
   }
 }
