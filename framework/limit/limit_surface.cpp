@@ -5,8 +5,10 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <deque>
 #include <mutex>
+#include <unordered_map>
 #include <fmt/format.h>
 #include <tbb/task_arena.h>
 
@@ -17,6 +19,7 @@
 #include "framework/engine/refiner.h"
 #include "framework/limit/bspline_patch.h"
 #include "framework/limit/corner_limit.h"
+#include "framework/limit/cut_key.h"
 #include "framework/limit/dual_limit.h"
 #include "framework/limit/sequence_head.h"
 #include "framework/limit/sqrt3_limit.h"
@@ -146,6 +149,33 @@ struct LimitSurface::Impl {
   struct alignas(64) GridSlot {
     std::array<std::atomic<Index>, 16> vertex{};
   };
+  // A face's cut known by its key (key_cut, cut_key.h): the node, the labels it keeps and
+  // what make_entry asks of it.
+  struct KnownCut {
+    int node = -1;
+    Index kept = 0;
+    const std::array<Index, 16>* grid = nullptr;
+    const std::vector<std::vector<double>>* lattice = nullptr;
+  };
+  // The hash reads the size and at most the first kHashed values (where neighbourhoods
+  // differ first: the labelling starts at the face); equal hashes are told apart by comparing the keys.
+  using Key = std::vector<std::uint32_t>;
+  struct KeyHash {
+    static constexpr size_t kHashed = 1024;
+    size_t operator()(const Key& key) const noexcept {
+      constexpr std::uint64_t kOdd = 0x9E3779B97F4A7C15ull;
+      // Four independent lanes (multiply-xor): no long chain of dependent multiplications.
+      std::uint64_t h[4] = {key.size(), 1, 2, 3};
+      const size_t n = std::min(key.size(), kHashed);
+      size_t i = 0;
+      for (; i + 4 <= n; i += 4)
+        for (size_t l = 0; l < 4; ++l) h[l] = (h[l] ^ key[i + l]) * kOdd;
+      for (; i < n; ++i) h[0] = (h[0] ^ key[i]) * kOdd;
+      std::uint64_t r = h[0];
+      for (size_t l = 1; l < 4; ++l) r = (r ^ (h[l] >> 31) ^ h[l]) * kOdd;
+      return size_t(r ^ (r >> 32));
+    }
+  };
   // The nodes for one depth and the entries into them. The depth starts at one ring and
   // grows when a scheme reads further (NotClosed); evaluations under way keep theirs.
   struct Cache {
@@ -159,6 +189,14 @@ struct LimitSurface::Impl {
     // Per face (made with the first face that fills one), for regular faces when the
     // regular node is a bicubic patch.
     std::atomic<GridSlot*> slots{nullptr};
+    // Cuts by their key_cut (cut_key.h) at the cut's radius (make_entry).
+    std::mutex known_mutex;
+    std::unordered_map<Key, KnownCut, KeyHash> known;
+    // The keys' total length: a mesh whose neighbourhoods hardly repeat (a scan, say) would
+    // otherwise keep a key of thousands of values per face; past the budget new keys are not
+    // kept and their faces take the general way, as every face would without keys.
+    size_t known_words = 0;
+    static constexpr size_t kKnownBudget = size_t(1) << 24;  // 64 MB of keys
     ~Cache() {
       for (Index f = 0; f < entry_count; ++f) delete entries[size_t(f)].load();
       delete[] slots.load();
@@ -233,6 +271,28 @@ struct LimitSurface::Impl {
         e->lattice = r->lattice;
         return e;
       }
+    // A face whose cut's key (read from the base, cut_key.h) was met already takes that
+    // cut's node without cutting or signing.
+    thread_local CutKey ck;
+    Key key;
+    std::vector<Index> key_vertices;
+    const bool keyed = options.shortcuts;
+    if (keyed) {
+      key_cut(ck, base, face, radius);
+      std::unique_lock lock(c.known_mutex);
+      if (const auto found = c.known.find(ck.key); found != c.known.end()) {
+        const KnownCut k = found->second;
+        lock.unlock();
+        e->node = k.node;
+        e->vertices.assign(ck.vertices.begin(), ck.vertices.begin() + std::ptrdiff_t(k.kept));
+        e->set_grid(k.grid);
+        e->lattice = k.lattice;
+        return e;
+      }
+      lock.unlock();
+      key = ck.key;
+      key_vertices = ck.vertices;
+    }
     FacePoint p;
     p.face = face;
     const Neighbourhood n = cut(base, {}, 0, p, radius);
@@ -246,8 +306,19 @@ struct LimitSurface::Impl {
       std::vector<int> stack;
       e->lattice = quartic(c, e->node, stack);
     }
+    // The key's labels are the cut's (checked: a key is kept only where they agree).
+    if (keyed && key_vertices.size() >= e->vertices.size() &&
+        std::equal(e->vertices.begin(), e->vertices.end(), key_vertices.begin())) {
+      const KnownCut k{e->node, Index(e->vertices.size()), e->grid, e->lattice};
+      std::lock_guard lock(c.known_mutex);
+      if (c.known_words + key.size() <= Cache::kKnownBudget) {
+        c.known_words += key.size();
+        c.known.emplace(std::move(key), k);
+      }
+    }
     return e;
   }
+
 
   // Whether the face's cut is a piece of untagged regular quad grid (quad_grid_labelled),
   // leaving in `lab` at least its labels within `depth`. A larger piece is checked first:
@@ -287,11 +358,50 @@ struct LimitSurface::Impl {
   bool fill_slot(Cache& c, Index face) const {
     const Entry* r = c.regular.load(std::memory_order_acquire);
     thread_local Labelling lab;
-    if (!options.shortcuts || !r || !r->grid || !in_quad_grid(lab, face, c.nodes->depth())) return false;
+    if (!options.shortcuts || !r || !r->grid) return false;
+    std::array<Index, 16> ring{};
+    if (grid_face[size_t(face)].load(std::memory_order_relaxed)) {
+      first_grid_labels(face, ring);
+    } else {
+      if (!in_quad_grid(lab, face, c.nodes->depth())) return false;
+      std::copy(lab.vertices.begin(), lab.vertices.begin() + 16, ring.begin());
+    }
     GridSlot& slot = c.slot_array()[size_t(face)];
     for (size_t l = 0; l < 16; ++l)
-      slot.vertex[l].store(lab.vertices[l] + 1, l == 15 ? std::memory_order_release : std::memory_order_relaxed);
+      slot.vertex[l].store(ring[l] + 1, l == 15 ? std::memory_order_release : std::memory_order_relaxed);
     return true;
+  }
+
+  // The first 16 labels of a face known to be in untagged regular quad grid (grid_face):
+  // label_neighbourhood's breadth-first order (its corners from corner 0, then each corner's
+  // faces counter-clockwise from this one, each face's corners after the vertex), without
+  // the checks that made it known or the labelling's arrays over the level.
+  void first_grid_labels(Index face, std::array<Index, 16>& out) const {
+    const auto corners = base.face(face);
+    size_t count = 0;
+    for (size_t i = 0; i < 4; ++i) out[count++] = corners[i];
+    auto labelled = [&](Index w) {
+      for (size_t k = 0; k < count; ++k)
+        if (out[k] == w) return true;
+      return false;
+    };
+    for (size_t q = 0; q < 4; ++q) {
+      const Index v = out[q];
+      const auto faces = base.ring_faces(v);
+      const Index first = base.vertex_face_offsets[v];
+      size_t entry = 0;
+      while (faces[entry] != face) ++entry;
+      for (size_t t = 0; t < 4; ++t) {
+        const size_t fi = (entry + t) & 3;
+        const auto fc = base.face(faces[fi]);
+        const size_t c = size_t(base.vertex_face_corner[size_t(first) + fi]);
+        for (size_t i = 1; i < 4; ++i) {
+          const Index w = fc[(c + i) & 3];
+          if (!labelled(w)) out[count++] = w;
+        }
+      }
+    }
+    if (count != 16) throw Error("internal: a face marked as regular quad grid has no 4 x 4 control points");
   }
 
   // walk()'s first step where the face's node is the bicubic patch: finish() of
@@ -351,6 +461,63 @@ struct LimitSurface::Impl {
     out.duv = second(0, 1);
     out.dvv = second(1, 1);
     out.has_second_derivatives = true;
+    return out;
+  }
+
+  // finish() of a polynomial patch's rows with nothing to pull back, applied to the face's
+  // vertices' values where they lie: the same products summed in the same order (the same
+  // bits), without the rows' or the gathered values' allocations.
+  static LimitSample fixed_sample(const FixedRows& r, const std::vector<Index>& vertices, const FacePoint& p,
+                                  std::span<const double> values, int channels, int derivatives) {
+    const size_t C = size_t(channels), L = r.labels;
+    // Sums kept in registers for three channels (positions), in the same order.
+    auto apply = [&](const double* row, std::vector<double>& out) {
+      if (C == 3) {
+        double x = 0, y = 0, z = 0;
+        for (size_t l = 0; l < L; ++l) {
+          if (row[l] == 0) continue;
+          const double* at = &values[size_t(vertices[l]) * 3];
+          x += row[l] * at[0], y += row[l] * at[1], z += row[l] * at[2];
+        }
+        out = {x, y, z};
+        return;
+      }
+      out.assign(C, 0.0);
+      for (size_t l = 0; l < L; ++l) {
+        if (row[l] == 0) continue;
+        const double* at = &values[size_t(vertices[l]) * C];
+        for (size_t c = 0; c < C; ++c) out[c] += row[l] * at[c];
+      }
+    };
+    LimitSample out;
+    apply(r.row[0].data(), out.position);
+    const auto& J = p.jacobian;
+    const auto& ds = r.row[1];
+    const auto& dt = r.row[2];
+    if (derivatives >= 1 && r.count >= 3) {
+      std::array<double, kFixedLabels> du{}, dv{};
+      for (size_t i = 0; i < L; ++i) du[i] = J[0][0] * ds[i] + J[1][0] * dt[i];
+      for (size_t i = 0; i < L; ++i) dv[i] = J[0][1] * ds[i] + J[1][1] * dt[i];
+      apply(du.data(), out.du);
+      apply(dv.data(), out.dv);
+      out.has_derivatives = true;
+    }
+    if (derivatives >= 2 && out.has_derivatives && r.count >= 6) {
+      const auto& dss = r.row[3];
+      const auto& dst = r.row[4];
+      const auto& dtt = r.row[5];
+      auto second = [&](size_t a, size_t b, std::vector<double>& o) {
+        std::array<double, kFixedLabels> x{};
+        for (size_t i = 0; i < L; ++i)
+          x[i] = J[0][a] * J[0][b] * dss[i] + (J[0][a] * J[1][b] + J[1][a] * J[0][b]) * dst[i] +
+                 J[1][a] * J[1][b] * dtt[i];
+        apply(x.data(), o);
+      };
+      second(0, 0, out.duu);
+      second(0, 1, out.duv);
+      second(1, 1, out.dvv);
+      out.has_second_derivatives = true;
+    }
     return out;
   }
 
@@ -845,6 +1012,11 @@ LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double
     if (e->grid)
       return Impl::bspline_sample(
           e->grid_cell, [&](size_t l) { return e->vertices[l]; }, p, values, channels, derivatives);
+    if (e->lattice && impl_->triangles) {
+      FixedRows rows;
+      if (quartic_rows_fixed(*e->lattice, p.st, derivatives, rows))
+        return Impl::fixed_sample(rows, e->vertices, p, values, channels, derivatives);
+    }
     if (e->lattice) {
       // walk()'s first step where the face's node is a polynomial patch, without the nodes' lock.
       const std::vector<double> first = gathered(e->vertices, values, channels);

@@ -53,8 +53,9 @@ struct LimitSurfaceOptions {
   int max_steps = 64;
   // Faces in an untagged regular quad grid (quad_grid_labelled, local_patch.h) share one
   // node, found without cutting and signing each face's neighbourhood, and points in a face
-  // whose limit is a bicubic patch are evaluated without the nodes' lock. False sends every
-  // face the general way (the tests compare the two: the same bits).
+  // whose limit is a bicubic patch are evaluated without the nodes' lock; any other face whose
+  // cut's key (limit/cut_key.h) was met already takes that cut's node without cutting. False
+  // sends every face the general way (the tests compare the two: the same bits).
   bool shortcuts = true;
 };
 

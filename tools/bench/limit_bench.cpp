@@ -12,6 +12,7 @@
 //                                      (0.4 n)^2 one); the preparation lines give the CPU time
 //                                      per face too (flat in n: local_patch.h)
 //   subdiv-limit-bench issue points n torus|split  one of the two meshes (for profiling)
+//   subdiv-limit-bench loop [points] [order]  Loop's regular triangles only (for profiling)
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -297,6 +298,11 @@ int main(int argc, char** argv) {
     const char* only = argc > 4 ? argv[4] : "";
     if (std::strcmp(only, "split") != 0) run_alternating(torus(n, n), points, 4);
     if (std::strcmp(only, "torus") != 0) run_alternating(split_triangulated_torus(2 * n / 5, 2 * n / 5), points, 4);
+    return 0;
+  }
+  if (argc > 1 && std::strcmp(argv[1], "loop") == 0) {
+    // subdiv-limit-bench loop [points] [order]: Loop's regular triangles only (for profiling).
+    run(torus(32, 24, true), argc > 2 ? std::atoi(argv[2]) : 20000, argc > 3 && std::atoi(argv[3]) == 2 ? 2 : 1);
     return 0;
   }
   const int points = argc > 1 ? std::atoi(argv[1]) : 20000;
