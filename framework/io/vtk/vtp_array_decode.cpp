@@ -50,6 +50,20 @@ bool decode_groups(const char* text, std::size_t groups, unsigned char* out) {
   return (bad & kBad) == 0;
 }
 
+// Bytes [from, to) of a base64 run of `total` bytes at `run` (its last group padded).
+bool decode_base64_range(const char* run, std::size_t total, std::size_t from, std::size_t to, unsigned char* out) {
+  if (from >= to) return true;
+  const std::size_t whole = total / 3, g0 = from / 3, g1 = (to + 2) / 3;
+  thread_local std::vector<unsigned char> scratch;
+  scratch.resize(3 * (g1 - g0));
+  const std::size_t full_end = std::min(g1, whole);
+  if (full_end > g0 && !decode_groups(run + 4 * g0, full_end - g0, scratch.data())) return false;
+  if (g1 > whole && !decode_base64_run(run + 4 * whole, total - 3 * whole, scratch.data() + 3 * (whole - g0)))
+    return false;
+  std::memcpy(out, scratch.data() + (from - 3 * g0), to - from);
+  return true;
+}
+
 // Little-endian words of 4 or 8 bytes.
 std::uint64_t word_at(const unsigned char* p, std::size_t size) {
   std::uint64_t v = 0;
@@ -57,30 +71,32 @@ std::uint64_t word_at(const unsigned char* p, std::size_t size) {
   return v;
 }
 
-// Reads a run of data: raw bytes at the file's position, or a base64 run.
+// A run of data in the file: raw bytes, or base64 text (4 characters per 3 bytes).
+struct Run {
+  const char* at = nullptr;
+  std::size_t bytes = 0;
+  bool base64 = false;
+  // Bytes [from, to) of the run into `out`, or a pointer to them in the file (raw).
+  const unsigned char* get(std::size_t from, std::size_t to, unsigned char* out) const {
+    if (!base64) return reinterpret_cast<const unsigned char*>(at) + from;
+    return decode_base64_range(at, bytes, from, to, out) ? out : nullptr;
+  }
+};
+
+// Reads the runs of one array from its start.
 class Source {
 public:
   Source(std::string_view file, const VtpArray& a) : file_(file), pos_(a.at), end_(a.end), base64_(a.base64) {}
 
   std::size_t available() const { return base64_ ? (end_ - pos_) / 4 * 3 : end_ - pos_; }
 
-  // A run of `bytes` bytes (a base64 run: its own padding); points into the file when raw.
-  std::optional<DecodedBytes> run(std::size_t bytes) {
-    DecodedBytes out;
-    out.size = bytes;
-    if (!base64_) {
-      if (bytes > end_ - pos_) return std::nullopt;
-      out.bytes = reinterpret_cast<const unsigned char*>(file_.data() + pos_);
-      pos_ += bytes;
-      return out;
-    }
-    const std::size_t chars = (bytes + 2) / 3 * 4;
-    if (chars > end_ - pos_) return std::nullopt;
-    out.owner.reset(new unsigned char[bytes + 2]);
-    if (!decode_base64_run(file_.data() + pos_, bytes, out.owner.get())) return std::nullopt;
-    out.bytes = out.owner.get();
+  // The next run of `bytes` bytes; nothing if it does not fit before the end.
+  std::optional<Run> run(std::size_t bytes) {
+    const std::size_t chars = base64_ ? (bytes + 2) / 3 * 4 : bytes;
+    if (bytes > available() || chars > end_ - pos_) return std::nullopt;
+    Run r{file_.data() + pos_, bytes, base64_};
     pos_ += chars;
-    return out;
+    return r;
   }
 
   // Inline text may be followed by blanks only, up to its element's end.
@@ -91,13 +107,21 @@ public:
     return true;
   }
 
-  bool raw() const { return !base64_; }
-
 private:
   std::string_view file_;
   std::size_t pos_, end_;
   bool base64_;
 };
+
+// The first `count` words of a run.
+std::optional<std::vector<std::uint64_t>> words(const Run& run, std::size_t count, std::size_t w) {
+  std::vector<unsigned char> bytes(count * w);
+  const unsigned char* p = run.get(0, count * w, bytes.data());
+  if (!p) return std::nullopt;
+  std::vector<std::uint64_t> out(count);
+  for (std::size_t i = 0; i < count; ++i) out[i] = word_at(p + i * w, w);
+  return out;
+}
 
 vtkSmartPointer<vtkDataCompressor> make_decompressor(VtpCompressor type) {
   vtkSmartPointer<vtkDataCompressor> c;
@@ -113,69 +137,99 @@ vtkSmartPointer<vtkDataCompressor> make_decompressor(VtpCompressor type) {
   return c;
 }
 
-std::optional<DecodedBytes> uncompressed(Source& source, std::size_t expected, std::size_t header_bytes) {
-  if (source.raw()) {
-    const auto header = source.run(header_bytes);
-    if (!header || word_at(header->bytes, header_bytes) != expected) return std::nullopt;
-    return source.run(expected);
-  }
-  if (expected > source.available()) return std::nullopt;
-  auto run = source.run(header_bytes + expected);
-  if (!run || word_at(run->bytes, header_bytes) != expected) return std::nullopt;
-  run->bytes += header_bytes;
-  run->size = expected;
-  return run;
+// Pieces of an uncompressed array: about a megabyte, whole values.
+constexpr std::size_t kPiece = 1 << 20;
+
+bool uncompressed(Source& source, std::size_t expected, std::size_t h, std::size_t value, ArraySink& sink) {
+  // Raw: the header is its own word before the data; base64: one run holds both.
+  const auto run = source.run(h + expected);
+  if (!run) return false;
+  const auto header = words(*run, 1, h);
+  if (!header || (*header)[0] != expected) return false;
+  const std::size_t piece = std::max<std::size_t>(1, kPiece / value) * value;
+  const std::size_t pieces = (expected + piece - 1) / piece;
+  std::atomic<bool> ok{true};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pieces, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+    thread_local std::vector<unsigned char> buffer;
+    for (std::size_t k = r.begin(); k != r.end(); ++k) {
+      const std::size_t at = k * piece, n = std::min(piece, expected - at);
+      unsigned char* direct = sink.direct(at, n);
+      if (!direct) buffer.resize(n);
+      const unsigned char* bytes = run->get(h + at, h + at + n, direct ? direct : buffer.data());
+      if (!bytes) {
+        ok = false;
+        return;
+      }
+      if (!direct) sink.put(at, bytes, n);
+      else if (bytes != direct) std::memcpy(direct, bytes, n);
+    }
+  });
+  return ok;
 }
 
-std::optional<DecodedBytes> compressed(Source& source, std::size_t expected, std::size_t w, VtpCompressor type) {
-  // The first three words (no padding: 3w bytes are whole base64 groups), then the block sizes.
+bool compressed(Source& source, std::size_t expected, std::size_t w, std::size_t value, VtpCompressor type,
+                ArraySink& sink) {
+  // The first three words (3w bytes: whole base64 groups), then the block sizes.
   Source peek = source;
-  const auto first = peek.run(3 * w);
-  if (!first) return std::nullopt;
-  const std::uint64_t blocks = word_at(first->bytes, w), block = word_at(first->bytes + w, w),
-                      last = word_at(first->bytes + 2 * w, w);
-  if (blocks == 0) {
-    if (expected != 0 || last != 0 || double(block) > 64.0 * (1 << 20)) return std::nullopt;
-    const auto header = source.run(3 * w);
-    return header ? std::optional<DecodedBytes>(DecodedBytes{}) : std::nullopt;
-  }
-  if (block == 0 || last > block || blocks != (expected + block - 1) / block) return std::nullopt;
+  const auto first_run = peek.run(3 * w);
+  if (!first_run) return false;
+  const auto first = words(*first_run, 3, w);
+  if (!first) return false;
+  const std::uint64_t blocks = (*first)[0], block = (*first)[1], last = (*first)[2];
+  if (blocks == 0) return expected == 0 && last == 0 && double(block) <= 64.0 * (1 << 20) && source.run(3 * w);
+  if (block == 0 || block % value != 0 || last > block || blocks != (expected + block - 1) / block) return false;
   const std::uint64_t tail = expected - (blocks - 1) * block;  // the last block's true size
-  if (last != (tail == block ? 0 : tail)) return std::nullopt;
-  if (blocks > source.available() / w) return std::nullopt;
-  const auto header = source.run((3 + blocks) * w);
-  if (!header) return std::nullopt;
+  if (last != (tail == block ? 0 : tail)) return false;
+  if (blocks > source.available() / w) return false;
+  const auto header_run = source.run((3 + blocks) * w);
+  if (!header_run) return false;
+  const auto header = words(*header_run, 3 + blocks, w);
+  if (!header) return false;
   std::vector<std::size_t> starts(blocks + 1, 0);
   for (std::uint64_t b = 0; b < blocks; ++b) {
-    const std::uint64_t size = word_at(header->bytes + (3 + b) * w, w);
-    if (size > source.available()) return std::nullopt;
+    const std::uint64_t size = (*header)[3 + b];
+    if (size > source.available() || starts[b] + size > source.available()) return false;
     starts[b + 1] = starts[b] + size;
-    if (starts[b + 1] > source.available()) return std::nullopt;
   }
   // As much as the compressor can expand its input (vtk_xml_blocks.cpp's bounds): a header
   // claiming more is damaged, and nothing is allocated for it.
   const double limit = type == VtpCompressor::ZLib ? 1100 : type == VtpCompressor::LZ4 ? 300 : 1e5;
   const double possible = double(starts[blocks]) * limit + 65536;
-  if (double(expected) > possible || double(block) > std::max(possible, 64.0 * (1 << 20))) return std::nullopt;
+  if (double(expected) > possible || double(block) > std::max(possible, 64.0 * (1 << 20))) return false;
   const auto data = source.run(starts[blocks]);
-  if (!data) return std::nullopt;
-  DecodedBytes out;
-  out.owner.reset(new unsigned char[expected]);
-  out.bytes = out.owner.get();
-  out.size = expected;
+  if (!data) return false;
   std::atomic<bool> ok{true};
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks), [&](const tbb::blocked_range<std::size_t>& r) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
     const auto decompressor = make_decompressor(type);
+    thread_local std::vector<unsigned char> text, plain;
     for (std::size_t b = r.begin(); b != r.end() && ok.load(std::memory_order_relaxed); ++b) {
       const std::size_t size = b + 1 == blocks ? std::size_t(tail) : std::size_t(block);
-      if (decompressor->Uncompress(data->bytes + starts[b], starts[b + 1] - starts[b], out.owner.get() + b * block,
-                                   size) != size)
+      const std::size_t packed = starts[b + 1] - starts[b];
+      text.resize(data->base64 ? packed : 0);
+      const unsigned char* in = data->get(starts[b], starts[b + 1], text.data());
+      unsigned char* target = sink.direct(b * block, size);
+      if (!target) plain.resize(size), target = plain.data();
+      if (!in || decompressor->Uncompress(in, packed, target, size) != size) {
         ok = false;
+        return;
+      }
+      if (target == plain.data()) sink.put(b * block, target, size);
     }
   });
-  if (!ok) return std::nullopt;
-  return out;
+  return ok;
 }
+
+// Everything into one buffer of its own.
+class BufferSink final : public ArraySink {
+public:
+  explicit BufferSink(std::size_t size) : data_(new unsigned char[size]) {}
+  unsigned char* direct(std::size_t at, std::size_t) override { return data_.get() + at; }
+  void put(std::size_t at, const unsigned char* bytes, std::size_t n) override { std::memcpy(data_.get() + at, bytes, n); }
+  std::unique_ptr<unsigned char[]> take() { return std::move(data_); }
+
+private:
+  std::unique_ptr<unsigned char[]> data_;
+};
 
 }  // namespace
 
@@ -203,13 +257,36 @@ bool decode_base64_run(const char* text, std::size_t bytes, unsigned char* out) 
   return true;
 }
 
+bool decode_vtp_array_into(std::string_view file, const VtpArray& array, std::size_t expected,
+                           std::size_t header_bytes, VtpCompressor compressor, ArraySink& sink) {
+  if (array.at > array.end || array.end > file.size()) return false;
+  const std::size_t value = vtp_type_size(array.type);
+  if (expected % value != 0) return false;
+  Source source(file, array);
+  const bool ok = compressor == VtpCompressor::None
+                      ? uncompressed(source, expected, header_bytes, value, sink)
+                      : compressed(source, expected, header_bytes, value, compressor, sink);
+  return ok && source.ends_cleanly(array.inline_text);
+}
+
 std::optional<DecodedBytes> decode_vtp_array(std::string_view file, const VtpArray& array, std::size_t expected,
                                              std::size_t header_bytes, VtpCompressor compressor) {
-  if (array.at > array.end || array.end > file.size()) return std::nullopt;
-  Source source(file, array);
-  auto out = compressor == VtpCompressor::None ? uncompressed(source, expected, header_bytes)
-                                               : compressed(source, expected, header_bytes, compressor);
-  if (!out || !source.ends_cleanly(array.inline_text)) return std::nullopt;
+  DecodedBytes out;
+  out.size = expected;
+  // Raw uncompressed data is used where it lies.
+  if (!array.base64 && compressor == VtpCompressor::None && array.at <= array.end && array.end <= file.size()) {
+    Source source(file, array);
+    const auto run = source.run(header_bytes + expected);
+    if (!run) return std::nullopt;
+    const auto header = words(*run, 1, header_bytes);
+    if (!header || (*header)[0] != expected) return std::nullopt;
+    out.bytes = reinterpret_cast<const unsigned char*>(run->at) + header_bytes;
+    return out;
+  }
+  BufferSink sink(expected);
+  if (!decode_vtp_array_into(file, array, expected, header_bytes, compressor, sink)) return std::nullopt;
+  out.owner = sink.take();
+  out.bytes = out.owner.get();
   return out;
 }
 

@@ -1,10 +1,14 @@
 #include "framework/io/vtk/vtp_fast_read.h"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <mutex>
+#include <utility>
 #include <memory>
 #include <cmath>
 #include <cstdint>
@@ -64,6 +68,87 @@ void parallel(std::size_t n, Body body, std::size_t grain = 1 << 16) {
                     [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); });
 }
 
+// Whether an integer value lies in [lo, hi].
+template <class T>
+bool within(T v, long long lo, long long hi) {
+  if constexpr (std::is_signed_v<T>) return static_cast<long long>(v) >= lo && static_cast<long long>(v) <= hi;
+  else return (lo <= 0 || static_cast<unsigned long long>(v) >= static_cast<unsigned long long>(lo)) &&
+              static_cast<unsigned long long>(v) <= static_cast<unsigned long long>(hi);
+}
+
+// Values into an array of Out as they are decoded: straight from the decoder where the file
+// has Out's type, else converted (integers checked against [lo, hi] first, when asked).
+template <class Out>
+class ConvertSink final : public ArraySink {
+public:
+  ConvertSink(VtpType type, bool same, Out* out) : type_(type), same_(same), out_(out) {}
+  void check(long long lo, long long hi) { checked_ = true, lo_ = lo, hi_ = hi; }
+  bool good() const { return good_; }
+
+  unsigned char* direct(std::size_t at, std::size_t) override {
+    return same_ ? reinterpret_cast<unsigned char*>(out_) + at : nullptr;
+  }
+  void put(std::size_t at, const unsigned char* bytes, std::size_t n) override {
+    with_type(type_, [&](auto tag) {
+      using T = decltype(tag);
+      Out* out = out_ + at / sizeof(T);
+      bool fits = true;
+      for (std::size_t i = 0; i < n / sizeof(T); ++i) {
+        const T v = load<T>(bytes, i);
+        if constexpr (!std::is_floating_point_v<T>)
+          if (checked_) fits = fits && within(v, lo_, hi_);
+        out[i] = static_cast<Out>(v);
+      }
+      if (!fits) good_ = false;
+    });
+  }
+
+private:
+  VtpType type_;
+  bool same_;
+  Out* out_;
+  bool checked_ = false;
+  long long lo_ = 0, hi_ = 0;
+  std::atomic<bool> good_{true};
+};
+
+// Decodes and checks an array SubdivKit does not keep (field data, its own arrays).
+class DiscardSink final : public ArraySink {
+public:
+  unsigned char* direct(std::size_t, std::size_t) override { return nullptr; }
+  void put(std::size_t, const unsigned char*, std::size_t) override {}
+};
+
+// The nonzero values of a one-component point array (corner_sharpness), in point order.
+class NonzeroSink final : public ArraySink {
+public:
+  explicit NonzeroSink(VtpType type) : type_(type) {}
+  unsigned char* direct(std::size_t, std::size_t) override { return nullptr; }
+  void put(std::size_t at, const unsigned char* bytes, std::size_t n) override {
+    std::vector<CornerTag> found;
+    with_type(type_, [&](auto tag) {
+      using T = decltype(tag);
+      for (std::size_t i = 0; i < n / sizeof(T); ++i)
+        if (const double s = static_cast<double>(load<T>(bytes, i)); s != 0)
+          found.push_back({Index(at / sizeof(T) + i), s});
+    });
+    if (found.empty()) return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    pieces_.emplace_back(at, std::move(found));
+  }
+  std::vector<CornerTag> take() {
+    std::sort(pieces_.begin(), pieces_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<CornerTag> out;
+    for (auto& piece : pieces_) out.insert(out.end(), piece.second.begin(), piece.second.end());
+    return out;
+  }
+
+private:
+  VtpType type_;
+  std::mutex mutex_;
+  std::vector<std::pair<std::size_t, std::vector<CornerTag>>> pieces_;
+};
+
 class FastReader {
 public:
   FastReader(std::string_view bytes, VtpLayout layout) : bytes_(bytes), l_(std::move(layout)) {}
@@ -75,22 +160,18 @@ public:
     budget_ = available_memory().bytes;
     require(double(l_.points) * 48 + cells * 80 <= budget_);
     for (int k = 0; k < 4; ++k) require(l_.cells[k].present || count_of(k) == 0);
-    for (const VtpArray& a : l_.field) decode(a, std::size_t(a.tuples));
+    for (const VtpArray& a : l_.field) discard(a, std::size_t(a.tuples));
     MeshData mesh;
     positions(mesh);
-    std::vector<std::int64_t> offsets[4];
-    DecodedBytes connectivity[4];
-    for (int k = 0; k < 4; ++k)
+    std::vector<std::int64_t> offsets[3];
+    DecodedBytes connectivity[3];
+    for (int k = 0; k < 3; ++k)
       if (l_.cells[k].present) cell_arrays(k, offsets[k], connectivity[k]);
-    faces(mesh, offsets[3], connectivity[3]);
-    std::vector<DecodedBytes> point_arrays, cell_arrays_;
-    for (const VtpArray& a : l_.point_data.arrays) point_arrays.push_back(decode(a, std::size_t(l_.points)));
+    if (l_.cells[3].present) faces(mesh);
+    lines(mesh, offsets[1], connectivity[1]);
     const std::size_t all_cells = std::size_t(l_.verts + l_.lines + l_.polys);
-    for (const VtpArray& a : l_.cell_data.arrays) cell_arrays_.push_back(decode(a, all_cells));
-    lines(mesh, offsets[1], connectivity[1], cell_arrays_);
-    corners(mesh, point_arrays);
-    user_arrays(mesh.point_data, l_.point_data, point_arrays, true, 0, std::size_t(l_.points));
-    user_arrays(mesh.cell_data, l_.cell_data, cell_arrays_, false, std::size_t(l_.verts + l_.lines),
+    point_arrays(mesh);
+    user_arrays(mesh.cell_data, l_.cell_data, false, all_cells, std::size_t(l_.verts + l_.lines),
                 std::size_t(l_.polys));
     return mesh;
   }
@@ -101,29 +182,30 @@ private:
     return counts[kind];
   }
 
+  std::size_t bytes_of(const VtpArray& a, std::size_t tuples) const {
+    return tuples * std::size_t(a.components) * vtp_type_size(a.type);
+  }
+
   DecodedBytes decode(const VtpArray& a, std::size_t tuples) {
-    const std::size_t bytes = tuples * std::size_t(a.components) * vtp_type_size(a.type);
-    auto out = decode_vtp_array(bytes_, a, bytes, l_.header_bytes, l_.compressor);
+    auto out = decode_vtp_array(bytes_, a, bytes_of(a, tuples), l_.header_bytes, l_.compressor);
     require(bool(out));
     return std::move(*out);
   }
 
+  void into(const VtpArray& a, std::size_t tuples, ArraySink& sink) {
+    require(decode_vtp_array_into(bytes_, a, bytes_of(a, tuples), l_.header_bytes, l_.compressor, sink));
+  }
+
+  void discard(const VtpArray& a, std::size_t tuples) {
+    DiscardSink sink;
+    into(a, tuples, sink);
+  }
+
   void positions(MeshData& mesh) {
     const VtpArray& a = *l_.coordinates;
-    const DecodedBytes data = decode(a, std::size_t(l_.points));
-    const std::size_t n = std::size_t(l_.points) * 3;
-    mesh.positions.resize(n);
-    double* out = mesh.positions.data();
-    if (a.type == VtpType::Float64) {
-      parallel(n, [&](std::size_t b, std::size_t e) { std::memcpy(out + b, data.bytes + b * 8, (e - b) * 8); }, 1 << 18);
-      return;
-    }
-    with_type(a.type, [&](auto tag) {
-      using T = decltype(tag);
-      parallel(n, [&](std::size_t b, std::size_t e) {
-        for (std::size_t i = b; i < e; ++i) out[i] = static_cast<double>(load<T>(data.bytes, i));
-      });
-    });
+    mesh.positions.resize(std::size_t(l_.points) * 3);
+    ConvertSink<double> sink(a.type, a.type == VtpType::Float64, mesh.positions.data());
+    into(a, std::size_t(l_.points), sink);
   }
 
   // Offsets (each cell's end) strictly increasing from at least 1 to the connectivity's size:
@@ -131,32 +213,56 @@ private:
   void cell_arrays(int kind, std::vector<std::int64_t>& offsets, DecodedBytes& connectivity) {
     const VtpCells& c = l_.cells[kind];
     const std::size_t n = std::size_t(count_of(kind));
-    const DecodedBytes raw = decode(c.offsets, n);
     offsets.resize(n + 1);
     offsets[0] = 0;
-    std::atomic<bool> ok{true};
-    with_type(c.offsets.type, [&](auto tag) {
-      using T = decltype(tag);
-      parallel(n, [&](std::size_t b, std::size_t e) {
-        bool good = true;
-        for (std::size_t i = b; i < e; ++i) {
-          const T v = load<T>(raw.bytes, i);
-          good = good && v >= T(1) && std::uint64_t(v) <= std::uint64_t(std::numeric_limits<std::int64_t>::max());
-          offsets[i + 1] = std::int64_t(v);
-        }
-        if (!good) ok = false;
-      });
-    });
-    require(ok);
-    parallel(n, [&](std::size_t b, std::size_t e) {
-      for (std::size_t i = b; i < e; ++i)
-        if (offsets[i + 1] <= offsets[i]) ok = false;
-    });
-    require(ok);
+    ConvertSink<std::int64_t> sink(c.offsets.type, c.offsets.type == VtpType::Int64, offsets.data() + 1);
+    sink.check(1, std::numeric_limits<std::int64_t>::max());
+    into(c.offsets, n, sink);
+    require(sink.good() && increasing(offsets.data(), n));
     const std::uint64_t total = std::uint64_t(offsets[n]);
     require(double(total) * 8 <= budget_);
     connectivity = decode(c.connectivity, std::size_t(total));
     connectivity_type_[kind] = c.connectivity.type;
+  }
+
+  // values[0..n] strictly increasing, values[1] >= 1 checked by the caller's sink or here.
+  template <class T>
+  static bool increasing(const T* values, std::size_t n) {
+    std::atomic<bool> ok{true};
+    parallel(n, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i)
+        if (values[i + 1] <= values[i]) ok = false;
+    });
+    return ok;
+  }
+
+  // Polygons straight into the mesh's arrays (Int32 files need no conversion).
+  void faces(MeshData& mesh) {
+    const VtpCells& c = l_.cells[3];
+    const std::size_t n = std::size_t(l_.polys);
+    mesh.face_offsets.resize(n + 1);
+    mesh.face_offsets[0] = 0;
+    ConvertSink<Index> offsets(c.offsets.type, c.offsets.type == VtpType::Int32, mesh.face_offsets.data() + 1);
+    offsets.check(1, std::numeric_limits<Index>::max());
+    into(c.offsets, n, offsets);
+    require(offsets.good() && increasing(mesh.face_offsets.data(), n));
+    const std::size_t total = std::size_t(mesh.face_offsets[n]);
+    mesh.face_vertices.resize(total);
+    const bool same = c.connectivity.type == VtpType::Int32;
+    ConvertSink<Index> ids(c.connectivity.type, same, mesh.face_vertices.data());
+    ids.check(0, l_.points - 1);
+    into(c.connectivity, total, ids);
+    require(ids.good());
+    if (!same) return;
+    std::atomic<bool> ok{true};
+    const Index* v = mesh.face_vertices.data();
+    const auto points = Index(l_.points);
+    parallel(total, [&](std::size_t b, std::size_t e) {
+      bool good = true;
+      for (std::size_t i = b; i < e; ++i) good = good && v[i] >= 0 && v[i] < points;
+      if (!good) ok = false;
+    });
+    require(ok);
   }
 
   // Ids of `kind` cells as Index, each checked against the points.
@@ -179,22 +285,9 @@ private:
     require(ok);
   }
 
-  void faces(MeshData& mesh, const std::vector<std::int64_t>& offsets, const DecodedBytes& connectivity) {
-    if (!l_.cells[3].present) return;
-    const std::size_t n = std::size_t(l_.polys), total = std::size_t(offsets[n]);
-    mesh.face_vertices.resize(total);
-    ids(3, connectivity, total, mesh.face_vertices.data());
-    mesh.face_offsets.resize(n + 1);
-    Index* out = mesh.face_offsets.data();
-    parallel(n + 1, [&](std::size_t b, std::size_t e) {
-      for (std::size_t i = b; i < e; ++i) out[i] = Index(offsets[i]);
-    });
-  }
-
-  static const DecodedBytes* named(const VtpSection& section, const std::vector<DecodedBytes>& data,
-                                   std::string_view name, const VtpArray** array) {
-    for (std::size_t i = 0; i < section.arrays.size(); ++i)
-      if (section.arrays[i].name == name) return *array = &section.arrays[i], &data[i];
+  const VtpArray* named(const VtpSection& section, std::string_view name) const {
+    for (const VtpArray& a : section.arrays)
+      if (a.name == name) return &a;
     return nullptr;
   }
 
@@ -206,22 +299,26 @@ private:
 
   // Line cells: polylines, or crease edges where write_vtp's cell_kind says 2 (as
   // polydata_to_mesh_data reads them).
-  void lines(MeshData& mesh, const std::vector<std::int64_t>& offsets, const DecodedBytes& connectivity,
-             const std::vector<DecodedBytes>& cell_data) {
+  void lines(MeshData& mesh, const std::vector<std::int64_t>& offsets, const DecodedBytes& connectivity) {
     if (l_.lines == 0) return;
     const std::size_t total = std::size_t(offsets.back());
     std::vector<Index> all(total);
     ids(1, connectivity, total, all.data());
-    const VtpArray *kind_array = nullptr, *sharp_array = nullptr;
-    const DecodedBytes* kind = named(l_.cell_data, cell_data, "cell_kind", &kind_array);
-    const DecodedBytes* sharpness = named(l_.cell_data, cell_data, "sharpness", &sharp_array);
-    const bool tagged = kind && sharpness;
-    if (tagged) require(kind_array->components == 1 && sharp_array->components == 1);
+    const VtpArray* kind_array = named(l_.cell_data, "cell_kind");
+    const VtpArray* sharp_array = named(l_.cell_data, "sharpness");
+    const bool tagged = kind_array && sharp_array;
+    DecodedBytes kind, sharpness;
+    const std::size_t cells = std::size_t(l_.verts + l_.lines + l_.polys);
+    if (tagged) {
+      require(kind_array->components == 1 && sharp_array->components == 1);
+      kind = decode(*kind_array, cells);
+      sharpness = decode(*sharp_array, cells);
+    }
     for (std::size_t c = 0; c < std::size_t(l_.lines); ++c) {
       const std::size_t begin = std::size_t(offsets[c]), size = std::size_t(offsets[c + 1]) - begin;
       const std::size_t cell = std::size_t(l_.verts) + c;
-      if (tagged && size == 2 && value(*kind_array, *kind, cell) == 2) {
-        mesh.creases.push_back({all[begin], all[begin + 1], value(*sharp_array, *sharpness, cell)});
+      if (tagged && size == 2 && value(*kind_array, kind, cell) == 2) {
+        mesh.creases.push_back({all[begin], all[begin + 1], value(*sharp_array, sharpness, cell)});
         continue;
       }
       mesh.line_vertices.insert(mesh.line_vertices.end(), all.begin() + std::ptrdiff_t(begin),
@@ -230,13 +327,14 @@ private:
     }
   }
 
-  void corners(MeshData& mesh, const std::vector<DecodedBytes>& point_data) {
-    const VtpArray* array = nullptr;
-    const DecodedBytes* data = named(l_.point_data, point_data, "corner_sharpness", &array);
-    if (!data || l_.points == 0) return;
-    require(array->components == 1);
-    for (std::size_t v = 0; v < std::size_t(l_.points); ++v)
-      if (const double s = value(*array, *data, v); s != 0) mesh.corners.push_back({Index(v), s});
+  void point_arrays(MeshData& mesh) {
+    if (const VtpArray* corners = named(l_.point_data, "corner_sharpness"); corners && l_.points > 0) {
+      require(corners->components == 1);
+      NonzeroSink sink(corners->type);
+      into(*corners, std::size_t(l_.points), sink);
+      mesh.corners = sink.take();
+    }
+    user_arrays(mesh.point_data, l_.point_data, true, std::size_t(l_.points), 0, std::size_t(l_.points));
   }
 
   // The role VTK's active attributes give (vtkDataSetAttributes::SetActiveAttribute takes an
@@ -250,33 +348,51 @@ private:
     return ArrayRole::Data;
   }
 
-  void user_arrays(std::vector<DataArray>& out, const VtpSection& section, const std::vector<DecodedBytes>& data,
-                   bool point, std::size_t first, std::size_t count) {
+  // The user's arrays of a section holding `tuples` tuples, those [first, first + count) kept
+  // (cell data: the polygons'); SubdivKit's own arrays decoded and checked only (corner_sharpness
+  // was read already; cell_kind and sharpness by lines()).
+  void user_arrays(std::vector<DataArray>& out, const VtpSection& section, bool point, std::size_t tuples,
+                   std::size_t first, std::size_t count) {
     for (std::size_t i = 0; i < section.arrays.size(); ++i) {
       const VtpArray& a = section.arrays[i];
-      if (subdivkit_array(a.name.c_str(), point)) continue;
+      if (subdivkit_array(a.name.c_str(), point)) {
+        const bool done = (point && a.name == "corner_sharpness" && l_.points > 0) ||
+                          (!point && l_.lines > 0 && (a.name == "cell_kind" || a.name == "sharpness") &&
+                           named(section, "cell_kind") && named(section, "sharpness"));
+        if (!done) discard(a, tuples);
+        continue;
+      }
       DataArray d;
-      d.name = a.name.empty() ? "array_" + std::to_string(i) : a.name;
+      d.name = a.name;
       d.components = a.components;
-      d.integer = !vtp_type_is_float(a.type);
       d.role = role(section, a);
       const std::size_t k = std::size_t(a.components);
-      d.values.resize(count * k);
-      double* values = d.values.data();
-      std::atomic<bool> whole{true};
-      with_type(a.type, [&](auto tag) {
-        using T = decltype(tag);
-        parallel(count * k, [&](std::size_t b, std::size_t e) {
+      if (first == 0 && count == tuples) {
+        d.values.resize(count * k);
+        ConvertSink<double> sink(a.type, a.type == VtpType::Float64, d.values.data());
+        into(a, tuples, sink);
+      } else {
+        const DecodedBytes data = decode(a, tuples);
+        d.values.resize(count * k);
+        double* values = d.values.data();
+        with_type(a.type, [&](auto tag) {
+          using T = decltype(tag);
+          parallel(count * k, [&](std::size_t b, std::size_t e) {
+            for (std::size_t j = b; j < e; ++j) values[j] = static_cast<double>(load<T>(data.bytes, first * k + j));
+          });
+        });
+      }
+      // 64-bit ids beyond an int are carried as doubles rather than refused.
+      std::atomic<bool> whole{!vtp_type_is_float(a.type)};
+      if (whole) {
+        const double* values = d.values.data();
+        parallel(d.values.size(), [&](std::size_t b, std::size_t e) {
           bool fits = true;
-          for (std::size_t j = b; j < e; ++j) {
-            values[j] = static_cast<double>(load<T>(data[i].bytes, first * k + j));
-            fits = fits && std::abs(values[j]) <= 2147483647.0;
-          }
+          for (std::size_t j = b; j < e; ++j) fits = fits && std::abs(values[j]) <= 2147483647.0;
           if (!fits) whole = false;
         });
-      });
-      // 64-bit ids beyond an int are carried as doubles rather than refused.
-      d.integer = d.integer && whole;
+      }
+      d.integer = whole;
       out.push_back(std::move(d));
     }
   }
@@ -290,26 +406,22 @@ private:
 }  // namespace
 
 std::optional<MeshData> read_vtp_fast_file(const std::filesystem::path& file) {
-  // Read whole into memory that is not zero-filled first (a std::string would be).
+  // Mapped, not copied: raw appended data is decompressed or copied from the page cache
+  // straight into the mesh, and no buffer of the file's size is touched first.
   const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return std::nullopt;
   struct stat st {};
-  std::unique_ptr<char[]> data;
+  void* map = MAP_FAILED;
   std::size_t size = 0;
-  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && double(st.st_size) < available_memory().bytes) {
+  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
     size = std::size_t(st.st_size);
-    data.reset(new char[size]);
-    std::size_t done = 0;
-    while (done < size) {
-      const ssize_t got = ::read(fd, data.get() + done, size - done);
-      if (got <= 0) break;
-      done += std::size_t(got);
-    }
-    if (done != size) data.reset();
+    map = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
   }
   ::close(fd);
-  if (!data) return std::nullopt;
-  return read_vtp_fast(std::string_view(data.get(), size));
+  if (map == MAP_FAILED) return std::nullopt;
+  std::optional<MeshData> mesh = read_vtp_fast(std::string_view(static_cast<const char*>(map), size));
+  ::munmap(map, size);
+  return mesh;
 }
 
 std::optional<MeshData> read_vtp_fast(std::string_view bytes) {

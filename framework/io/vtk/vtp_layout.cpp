@@ -151,7 +151,7 @@ private:
 
   static long long count(const Tag& tag, std::string_view key) {
     const auto text = tag.get(key);
-    long long v;
+    long long v = 0;
     require(text && parse_integer(*text, v) && v >= 0 && v <= kMaxCount);
     return v;
   }
@@ -184,7 +184,7 @@ private:
     a.name = std::string(tag.get("Name").value_or(""));
     require(!a.name.empty());
     if (const auto c = tag.get("NumberOfComponents")) {
-      long long v;
+      long long v = 0;
       require(parse_integer(*c, v) && v >= 1 && v <= 64);
       a.components = int(v);
     }
@@ -193,7 +193,7 @@ private:
     if (tuples) a.tuples = count(tag, "NumberOfTuples");
     const auto format = tag.get("format");
     if (const auto offset = tag.get("offset")) {
-      long long v;
+      long long v = 0;
       require(format == "appended" && parse_integer(*offset, v) && v >= 0);
       a.at = std::size_t(v);  // from the appended data's start, resolved at the end
       a.inline_text = false;
