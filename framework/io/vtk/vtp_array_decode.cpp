@@ -32,22 +32,36 @@ constexpr std::array<std::uint32_t, 256> base64_table() {
 }
 constexpr std::array<std::uint32_t, 256> kBase64 = base64_table();
 
-std::uint32_t group(const char* c) {
-  const auto v = [&](int i) { return kBase64[static_cast<unsigned char>(c[i])]; };
-  return (v(0) << 18) | (v(1) << 12) | (v(2) << 6) | v(3) | ((v(0) | v(1) | v(2) | v(3)) & kBad);
+// Two characters at a time: their 12 bits, or kPairBad (128 KB, built once).
+constexpr std::uint16_t kPairBad = 0xF000;
+const std::uint16_t* pair_table() {
+  static const std::vector<std::uint16_t> table = [] {
+    std::vector<std::uint16_t> t(65536);
+    for (std::uint32_t a = 0; a < 256; ++a)
+      for (std::uint32_t b = 0; b < 256; ++b) {
+        const bool bad = (kBase64[a] | kBase64[b]) & kBad;
+        // The first character is the low byte of the index.
+        t[a | (b << 8)] = bad ? kPairBad : std::uint16_t((kBase64[a] << 6) | kBase64[b]);
+      }
+    return t;
+  }();
+  return table.data();
 }
 
 // `groups` whole groups of four characters into 3 * groups bytes.
 bool decode_groups(const char* text, std::size_t groups, unsigned char* out) {
+  const std::uint16_t* pairs = pair_table();
   std::uint32_t bad = 0;
   for (std::size_t g = 0; g < groups; ++g, text += 4, out += 3) {
-    const std::uint32_t bits = group(text);
-    bad |= bits;
+    const auto byte = [&](int i) { return std::uint32_t(static_cast<unsigned char>(text[i])); };
+    const std::uint32_t hi = pairs[byte(0) | (byte(1) << 8)], lo = pairs[byte(2) | (byte(3) << 8)];
+    bad |= hi | lo;
+    const std::uint32_t bits = (hi << 12) | lo;
     out[0] = static_cast<unsigned char>(bits >> 16);
     out[1] = static_cast<unsigned char>(bits >> 8);
     out[2] = static_cast<unsigned char>(bits);
   }
-  return (bad & kBad) == 0;
+  return (bad & kPairBad) == 0;
 }
 
 // Bytes [from, to) of a base64 run of `total` bytes at `run` (its last group padded).
@@ -160,8 +174,12 @@ bool uncompressed(Source& source, std::size_t expected, std::size_t h, std::size
         ok = false;
         return;
       }
-      if (!direct) sink.put(at, bytes, n);
-      else if (bytes != direct) std::memcpy(direct, bytes, n);
+      if (!direct) {
+        sink.put(at, bytes, n);
+        continue;
+      }
+      if (bytes != direct) std::memcpy(direct, bytes, n);
+      sink.written(at, n);
     }
   });
   return ok;
@@ -214,6 +232,7 @@ bool compressed(Source& source, std::size_t expected, std::size_t w, std::size_t
         return;
       }
       if (target == plain.data()) sink.put(b * block, target, size);
+      else sink.written(b * block, size);
     }
   });
   return ok;

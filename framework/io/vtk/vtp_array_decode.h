@@ -25,6 +25,8 @@ public:
   // file's type), or null: then put() gets them.
   virtual unsigned char* direct(std::size_t at, std::size_t n) = 0;
   virtual void put(std::size_t at, const unsigned char* bytes, std::size_t n) = 0;
+  // Bytes [at, at + n) were written where direct() said, on this thread, just now (in cache).
+  virtual void written(std::size_t at, std::size_t n) { (void)at, (void)n; }
 };
 
 // Decodes the data of `array` in `file` into `sink`; it must be exactly `expected` bytes.
