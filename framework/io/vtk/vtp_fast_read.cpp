@@ -92,10 +92,18 @@ public:
   void written(std::size_t at, std::size_t n) override {
     if constexpr (std::is_integral_v<Out>) {
       if (!checked_) return;
+      if (hi_ < lo_) {  // nothing fits (ids with no points)
+        if (n > 0) good_ = false;
+        return;
+      }
+      // Bounds inside Out's range (they are for ids and offsets), compared without branches so
+      // that the loop vectorises.
+      const auto lo = Out(std::max<long long>(lo_, std::numeric_limits<Out>::min()));
+      const auto hi = Out(std::min<long long>(hi_, std::numeric_limits<Out>::max()));
       const Out* v = out_ + at / sizeof(Out);
-      bool fits = true;
-      for (std::size_t i = 0; i < n / sizeof(Out); ++i) fits = fits && within(v[i], lo_, hi_);
-      if (!fits) good_ = false;
+      unsigned outside = 0;
+      for (std::size_t i = 0; i < n / sizeof(Out); ++i) outside |= unsigned(v[i] < lo) | unsigned(v[i] > hi);
+      if (outside) good_ = false;
     }
   }
   void put(std::size_t at, const unsigned char* bytes, std::size_t n) override {

@@ -227,3 +227,25 @@ TEST_CASE("vtp fast path: damaged files are declined or read as VTK reads them")
   CHECK(declined > 0);
   CHECK(accepted > 0);
 }
+
+TEST_CASE("vtp fast path: an id beyond the points is declined, and VTK's path names the polygon") {
+  register_vtk_formats();
+  TempDir dir;
+  write_with_vtk(dir / "cube.vtp", cube_mesh(), vtkXMLWriter::Appended, false, true, vtkXMLWriter::NONE);
+  REQUIRE(read_vtp_fast_file(dir / "cube.vtp"));
+  std::string vtp = read_text(dir / "cube.vtp");
+  // The first id of polygon 0 in the raw appended data: after the array's 8-byte header.
+  const std::size_t polys = vtp.find("<Polys>");
+  const std::size_t array = vtp.find("Name=\"connectivity\"", polys);
+  const std::size_t tag_end = vtp.find('>', array);
+  const std::string tag = vtp.substr(array, tag_end - array);
+  const bool wide = vtp.rfind("type=\"Int64\"", array) > vtp.rfind("<DataArray", array);
+  const std::size_t offset_at = tag.find("offset=\"") + 8;
+  const std::size_t offset = std::stoul(tag.substr(offset_at));
+  const std::size_t data = vtp.find('_', vtp.find("<AppendedData")) + 1 + offset + 8;
+  const long long id = 99;
+  std::memcpy(&vtp[data], &id, wide ? 8 : 4);
+  write_text(dir / "far.vtp", vtp);
+  CHECK_FALSE(read_vtp_fast_file(dir / "far.vtp"));
+  CHECK(contains(error_of([&] { read_mesh(dir / "far.vtp"); }), "polygon 0 refers to point 99"));
+}
