@@ -37,6 +37,7 @@
 #include "framework/io/vtk/vtk_legacy_check.h"
 #include "framework/io/vtk/vtk_messages.h"
 #include "framework/io/vtk/vtk_xml_check.h"
+#include "framework/io/vtk/vtp_fast_read.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
 
@@ -200,16 +201,6 @@ void restore_corners(vtkPolyData& poly, MeshData& mesh) {
     if (const double s = corners->GetTuple1(v); s != 0) mesh.corners.push_back({Index(v), s});
 }
 
-// Arrays SubdivKit writes about its own refinement (vtk_polydata.cpp and the CLI's level
-// output): read back as tags (cell_kind, sharpness, corner_sharpness) or recomputed by the
-// next refinement, so they are not the user's data.
-bool subdivkit_array(const char* name, bool point) {
-  static const std::set<std::string> points = {"corner_sharpness", "origin", "valence", "level", "vertex_class",
-                                               "limit_exact", "normal_exact", "rule"};
-  static const std::set<std::string> cells = {"cell_kind", "sharpness", "parent_face", "base_face"};
-  return name && (point ? points : cells).count(name) > 0;
-}
-
 ArrayRole role_of(vtkDataSetAttributes& attributes, vtkDataArray* array) {
   if (array == attributes.GetNormals()) return ArrayRole::Normals;
   if (array == attributes.GetTCoords()) return ArrayRole::TextureCoordinates;
@@ -282,6 +273,13 @@ void read_user_arrays(vtkPolyData& poly, MeshData& mesh, const fs::path& file) {
 
 }  // namespace
 
+bool subdivkit_array(const char* name, bool point) {
+  static const std::set<std::string> points = {"corner_sharpness", "origin", "valence", "level", "vertex_class",
+                                               "limit_exact", "normal_exact", "rule"};
+  static const std::set<std::string> cells = {"cell_kind", "sharpness", "parent_face", "base_face"};
+  return name && (point ? points : cells).count(name) > 0;
+}
+
 MeshData polydata_to_mesh_data(vtkPolyData& poly, const fs::path& file) {
   MeshData mesh;
   const vtkIdType n = poly.GetNumberOfPoints();
@@ -302,13 +300,20 @@ MeshData polydata_to_mesh_data(vtkPolyData& poly, const fs::path& file) {
   return mesh;
 }
 
-MeshData read_vtk_polydata(const fs::path& file) {
+MeshData read_vtk_polydata_with_vtk(const fs::path& file) {
   require_readable(file);
   const auto poly = lowercase_extension(file) == ".vtp" ? load_xml(file) : load_legacy(file);
   if (!poly) fail(file, "VTK produced no data");
   if (poly->GetNumberOfPoints() > std::numeric_limits<Index>::max())
     fail(file, "it has more points than SubdivKit's 32-bit indices hold");
   return polydata_to_mesh_data(*poly, file);
+}
+
+MeshData read_vtk_polydata(const fs::path& file) {
+  require_readable(file);
+  if (lowercase_extension(file) == ".vtp")
+    if (std::optional<MeshData> fast = read_vtp_fast_file(file)) return std::move(*fast);
+  return read_vtk_polydata_with_vtk(file);
 }
 
 }  // namespace subdiv::io_detail

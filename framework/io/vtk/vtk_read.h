@@ -17,4 +17,13 @@ MeshData read_vtk_polydata(const std::filesystem::path& file);  // .vtp, .vtk
 // point and cell arrays as the user's data. `file` names the data in messages.
 MeshData polydata_to_mesh_data(vtkPolyData& poly, const std::filesystem::path& file);
 
+// Arrays SubdivKit writes about its own refinement (vtk_polydata.cpp and the CLI's level
+// output): read back as tags (cell_kind, sharpness, corner_sharpness) or recomputed by the
+// next refinement, so they are not the user's data.
+bool subdivkit_array(const char* name, bool point);
+
+// VTK's reader and polydata_to_mesh_data, without the fast path (vtp_fast_read.h): tests and
+// the fuzzer compare the two.
+MeshData read_vtk_polydata_with_vtk(const std::filesystem::path& file);
+
 }  // namespace subdiv::io_detail
