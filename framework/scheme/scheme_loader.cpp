@@ -274,7 +274,7 @@ std::vector<NamedFormula> parse_plain_definitions(const Json& root, const Place&
 
 std::string roles_of(Element element) {
   std::string list;
-  for (int r = 0; r <= int(Role::Curve); ++r)
+  for (int r = 0; r <= int(Role::CreasePoint); ++r)
     if (Role(r) != Role::Curve && role_allowed(element, Role(r)))
       list += (list.empty() ? "" : ", ") + std::string(role_name(Role(r)));
   for (const RoleInfo* info : list_registered_roles())
