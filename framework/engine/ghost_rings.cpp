@@ -72,7 +72,9 @@ double new_point_reach(NewPoint p, const RuleTable& table, const Scheme& scheme,
 double rule_reach(Element e, const Rule& rule, const RuleTable& table, const Scheme& scheme, int depth) {
   double reach = 0;
   for (const Term& t : rule.terms) {
-    double r = t.role == Role::Curve ? curve_term_reach(e, t) : role_reach(e, t.role, scheme);
+    double r = t.role == Role::Curve         ? curve_term_reach(e, t)
+               : t.role == Role::CreasePoint ? std::abs(t.step)  // crease edges along the crease
+                                             : role_reach(e, t.role, scheme);
     if (t.new_point != NewPoint::None) r = std::max(r, new_point_reach(t.new_point, table, scheme, depth));
     reach = std::max(reach, r);
   }
@@ -88,6 +90,11 @@ double step_rules_reach(const Scheme& scheme, const StepRules& step) {
   for (int e = 0; e < kElementCount; ++e)
     for (const auto& rule : step.rules[e])
       if (rule) reach = std::max(reach, rule_reach(Element(e), *rule, step.rules, scheme));
+  // Crease rules by distance from a corner: a crease vertex looks for a corner as far along
+  // its crease as the largest distance named, and its rule reads its crease points.
+  for (size_t d = 0; d < step.crease_ends.size(); ++d)
+    if (step.crease_ends[d])
+      reach = std::max({reach, double(step.crease_ends.size() - 1), rule_reach(Element::Vertex, *step.crease_ends[d], step.rules, scheme)});
   const CurveScheme* curve = step.curve ? step.curve.get() : step.curve_rules_apply ? scheme.curve.get() : nullptr;
   if (curve && !curve->nonlinear) reach = std::max(reach, curve_reach(*curve));
   return reach;

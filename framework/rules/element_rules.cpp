@@ -1,5 +1,6 @@
 #include "framework/rules/element_rules.h"
 
+#include <cstdlib>
 #include <fmt/format.h>
 
 #include "framework/rules/feature_curve.h"
@@ -157,6 +158,12 @@ void apply_vertex_rule(RowBuilder& row, const RuleInputs& in, Index v, const Com
         break;
       case Role::CreaseNeighbours:
         for (int j = 0; j < 2; ++j) row.add(L.other_end(ring[crease[j]], v), scale * t.weight(n, 0, j));
+        break;
+      case Role::CreasePoint:
+        // Negative steps walk out along the first crease edge (towards the nearest corner,
+        // where the rule was chosen by its distance), positive ones along the second.
+        if (t.step == 0) row.add(v, scale * t.weight(n, 0, 0));
+        else add_curve_point(row, L, in.features, v, ring[crease[t.step < 0 ? 0 : 1]], std::abs(t.step), scale * t.weight(n, 0, 0));
         break;
       case Role::Curve:
         // Offsets <= 0 walk out along the first crease edge, > 0 along the second.

@@ -13,7 +13,29 @@ Index continue_curve(const Level& level, const FeatureContexts& features, Index 
   return a == arrived_by ? b : a;
 }
 
+// Crease edges from v along `edge` to the first corner, or 0 when the crease ends otherwise,
+// closes on itself, or runs past max_distance first.
+int steps_to_corner(const Level& level, const FeatureContexts& features, Index v, Index edge, int max_distance) {
+  Index current = v;
+  for (int step = 1; step <= max_distance && edge != kNone; ++step) {
+    current = level.other_end(edge, current);
+    if (features.vertices[current].parent == Context::Corner) return step;
+    if (current == v) return 0;
+    edge = continue_curve(level, features, current, edge);
+  }
+  return 0;
+}
+
 }  // namespace
+
+CornerDistance distance_to_corner(const Level& level, const FeatureContexts& features, Index v,
+                                  const std::array<Index, 2>& edges, int max_distance) {
+  const int a = steps_to_corner(level, features, v, edges[0], max_distance);
+  const int b = steps_to_corner(level, features, v, edges[1], max_distance);
+  if (a == 0 && b == 0) return {};
+  if (b == 0 || (a != 0 && a <= b)) return {a, 0};
+  return {b, 1};
+}
 
 void add_curve_point(RowBuilder& row, const Level& level, const FeatureContexts& features,
                      Index v, Index edge, int steps, double weight) {

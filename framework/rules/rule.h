@@ -39,6 +39,9 @@ enum class Role : std::uint8_t {
   Corners,   // face rule: the face's vertices, each seen with its own valence n (corner variables)
   CornerRings,  // face rule: each corner's ring, CCW from the face's previous vertex to its next
   Curve,     // crease and boundary rules: points along the feature curve (from the curve scheme)
+  CreasePoint,  // vertex crease rule: the crease vertex Term::step crease edges along the crease
+                // (negative: towards the nearest corner; in a rule for no particular distance, the
+                // first crease neighbour's side)
 };
 
 enum class NewPoint : std::uint8_t { None, Face, Edge, Vertex };
@@ -52,6 +55,8 @@ struct Term {
   // along the feature curve (vertex rules: 0 is the vertex; edge rules: 0 and 1 are the ends).
   int curve_start = 0;
   std::vector<std::string> curve_weights;
+  // Role::CreasePoint only: how many crease edges along the crease, signed.
+  int step = 0;
 };
 
 struct Rule {
@@ -62,6 +67,13 @@ struct Rule {
 // Rules by element and context; an empty optional means "use the engine default"
 // (dart: the smooth rule; crease: the curve scheme's rule; corner: the vertex stays).
 using RuleTable = std::array<std::array<std::optional<Rule>, kContextCount>, kElementCount>;
+
+// Vertex crease rules chosen by a crease vertex's distance (in crease edges) from the nearest
+// corner its crease ends at: entry D, when set, replaces the `crease` rule at distance D
+// ("crease-ends" in a scheme file). Entry 0 is never set (a corner uses the corner rule).
+using CreaseEndRules = std::vector<std::optional<Rule>>;
+// The largest distance and the largest |step| a crease-end rule may name.
+constexpr int kMaxCreaseReach = 16;
 
 // Roles registered at run time (plugins) take Role values from kFirstRegisteredRole up. A
 // registered role lists parent vertices around one element in a canonical order; a term

@@ -10,7 +10,7 @@
 namespace subdiv {
 namespace {
 
-constexpr std::array<std::pair<Role, std::string_view>, 17> kRoleNames{{
+constexpr std::array<std::pair<Role, std::string_view>, 18> kRoleNames{{
     {Role::Self, "self"},
     {Role::Ring, "ring"},
     {Role::Faces, "faces"},
@@ -28,6 +28,7 @@ constexpr std::array<std::pair<Role, std::string_view>, 17> kRoleNames{{
     {Role::Corners, "corners"},
     {Role::CornerRings, "corner-rings"},
     {Role::Curve, "curve"},
+    {Role::CreasePoint, "crease-point"},
 }};
 
 // Registered roles (plugins); a deque keeps references stable while roles are added.
@@ -127,7 +128,7 @@ bool role_allowed(Element element, Role role) {
     case Element::Vertex:
       return role == Role::Self || role == Role::Ring || role == Role::Faces ||
              role == Role::Edges || role == Role::FaceCentroids || role == Role::CreaseNeighbours || role == Role::Diagonals ||
-             role == Role::Curve;
+             role == Role::Curve || role == Role::CreasePoint;
     case Element::Edge:
       return role == Role::Ends || role == Role::Faces || role == Role::Opposite ||
              role == Role::Wings || role == Role::FarWings || role == Role::EndRing0 ||

@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "framework/features/dual_features.h"
+#include "framework/rules/feature_curve.h"
 #include "framework/rules/row_plans.h"
 #include "framework/util/error.h"
 #include "framework/util/input_file.h"
@@ -88,6 +89,16 @@ void fill_vertex_row(RowBuilder& row, const StepContext& s, const RuleInputs& in
     if (code_covers(s, s.code && s.code->vertex, c)) {
       RowWriter writer(row, w);
       return s.code->vertex({s.parent, s.features, s.level}, v, c, writer);
+    }
+    if (c == Context::Crease && !tables.crease_ends.empty()) {
+      // A rule stated for this distance from the nearest corner, oriented towards it.
+      const auto ring = s.parent.ring_edges(v);
+      const CornerDistance d = distance_to_corner(s.parent, s.features, v, {ring[crease[0]], ring[crease[1]]},
+                                                  int(tables.crease_ends.size()) - 1);
+      if (d.distance > 0 && tables.crease_ends[size_t(d.distance)].defined) {
+        const std::array<std::uint16_t, 2> toward = d.side == 0 ? crease : std::array<std::uint16_t, 2>{crease[1], crease[0]};
+        return apply_vertex_rule(row, in, v, tables.crease_ends[size_t(d.distance)], toward, w);
+      }
     }
     if (c == Context::Crease && !tables.rule(Element::Vertex, c).defined) {
       if (!s.features_refined) return row.add(v, w);  // feature curves wait for the next step

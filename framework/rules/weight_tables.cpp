@@ -104,6 +104,7 @@ CompiledTerm compile_term(const Term& term, FormulaSet& formulas, const std::vec
   out.role = term.role;
   out.new_point = term.new_point;
   out.where = term.where;
+  out.step = term.step;
   const int id = formulas.add(term.weight, term.where);
   int max_j = std::max(max_n, max_k);
   if (const RoleInfo* role = registered_role(term.role)) max_j = std::max(max_j, role->max_points(max_n, max_k) - 1);
@@ -174,6 +175,16 @@ CompiledRule stay_rule() {
   out.where = self.where;
   out.defined = true;
   out.terms.push_back(std::move(self));
+  return out;
+}
+
+std::vector<CompiledRule> compile_crease_end_rules(const CreaseEndRules& rules, const FormulaScope& scope, int max_n,
+                                                   int max_k, int level) {
+  static const std::vector<NamedFormula> none;
+  FormulaSet formulas(scope.parameters, scope.definitions ? *scope.definitions : none);
+  std::vector<CompiledRule> out(rules.size());
+  for (size_t d = 0; d < rules.size(); ++d)
+    if (rules[d]) out[d] = compile_rule(*rules[d], formulas, scope.valences, max_n, max_k, level);
   return out;
 }
 

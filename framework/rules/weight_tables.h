@@ -30,6 +30,7 @@ struct CompiledTerm {
   // Role::Curve: weights on feature-curve points at offsets curve_start, curve_start+1, ...
   int curve_start = 0;
   std::vector<double> curve_weights;
+  int step = 0;  // Role::CreasePoint: crease edges along the crease, signed
 
   double weight(int n, int k, int j, int n0 = 0, int n1 = 0, int k0 = 0, int k1 = 0) const {
     if (!end_slot.empty()) n0 = end_slot[size_t(n0)], n1 = end_slot[size_t(n1)];
@@ -55,6 +56,9 @@ struct WeightTables {
   // defaults for crease vertices (r = 0) and the r-th new point along a crease edge.
   std::vector<CompiledRule> curve_rules;
   int curve_arity = 0;
+  // Vertex crease rules by distance from the nearest corner (rule.h: CreaseEndRules); entry D
+  // is defined where the scheme states one. Empty: the `crease` rule everywhere.
+  std::vector<CompiledRule> crease_ends;
   int max_n = 0, max_k = 0;
 
   const CompiledRule& rule(Element e, Context c) const { return rules[int(e)][int(c)]; }
@@ -75,6 +79,10 @@ struct FormulaScope {
 // k < max_k + 1 (the largest face size) at level l, with the engine's defaults for
 // vertices and face corners: dart = smooth, corner = the point stays.
 WeightTables compile_rule_table(const RuleTable& rules, const FormulaScope& scope, int max_n, int max_k, int level);
+
+// The crease-end rules, compiled like compile_rule_table's (entry D undefined where none is stated).
+std::vector<CompiledRule> compile_crease_end_rules(const CreaseEndRules& rules, const FormulaScope& scope, int max_n,
+                                                   int max_k, int level);
 
 // Rule r of a curve scheme of arity `starts.size()`: new point m*i + r = sum_t w[r][t] *
 // old point (i + start[r] + t), as a Role::Curve rule; `where` names it in messages.

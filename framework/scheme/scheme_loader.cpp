@@ -274,7 +274,7 @@ std::vector<NamedFormula> parse_plain_definitions(const Json& root, const Place&
 
 std::string roles_of(Element element) {
   std::string list;
-  for (int r = 0; r <= int(Role::Curve); ++r)
+  for (int r = 0; r <= int(Role::CreasePoint); ++r)
     if (Role(r) != Role::Curve && role_allowed(element, Role(r)))
       list += (list.empty() ? "" : ", ") + std::string(role_name(Role(r)));
   for (const RoleInfo* info : list_registered_roles())
@@ -282,8 +282,16 @@ std::string roles_of(Element element) {
   return list;
 }
 
+// A whole number in [lo, hi], or a message naming the place.
+int as_whole(const Json& value, int lo, int hi, const Place& at) {
+  if (!value.is_number_integer()) wrong_type(value, "a whole number", at);
+  const long long v = value.get<long long>();
+  if (v < lo || v > hi) fail(at, fmt::format("{} is outside [{}, {}]", v, lo, hi));
+  return int(v);
+}
+
 Term parse_term(const Json& j, Element element, const Place& at) {
-  check_keys(j, {"at", "sum", "new", "w"}, at);
+  check_keys(j, {"at", "sum", "new", "w", "step"}, at);
   Term t;
   t.where = at.str();
   const bool single = j.contains("at"), multi = j.contains("sum");
@@ -295,9 +303,16 @@ Term parse_term(const Json& j, Element element, const Place& at) {
                          roles_of(element)));
   if (!role_allowed(element, *role))
     fail(at, fmt::format("role {} does not exist around a {}", subdiv::quoted(shortened(name)), element_name(element)));
-  if (single && *role != Role::Self) fail(at, fmt::format("role {} has several points: write \"sum\": \"{}\"", subdiv::quoted(name), escaped(name)));
-  if (multi && *role == Role::Self) fail(at, "role 'self' is one point: write \"at\": \"self\"");
+  const bool one_point = *role == Role::Self || *role == Role::CreasePoint;
+  if (single && !one_point) fail(at, fmt::format("role {} has several points: write \"sum\": \"{}\"", subdiv::quoted(name), escaped(name)));
+  if (multi && one_point)
+    fail(at, fmt::format("role {} is one point: write \"at\": \"{}\"", subdiv::quoted(name), escaped(name)));
   t.role = *role;
+  if (*role == Role::CreasePoint)
+    t.step = as_whole(require(j, "step", at), -kMaxCreaseReach, kMaxCreaseReach, at / "step");
+  else if (j.contains("step"))
+    fail(at / "step", fmt::format("\"step\" belongs to role 'crease-point' (a crease vertex that many crease edges along "
+                                  "the crease), not to role {}", subdiv::quoted(name)));
   if (j.contains("new")) {
     const std::string np = as_string(j["new"], at / "new");
     auto kind = new_point_from_name(np);
@@ -324,7 +339,44 @@ Rule parse_rule(const Json& j, Element element, const Place& at) {
   return rule;
 }
 
-RuleTable parse_rules(const Json& rules, const Place& at, const std::set<std::string>& elements) {
+// Roles that exist only where a vertex has two crease edges.
+bool crease_only_role(Role r) { return r == Role::CreaseNeighbours || r == Role::CreasePoint; }
+
+void refuse_crease_roles(const Rule& rule, const Place& at) {
+  for (const Term& t : rule.terms)
+    if (crease_only_role(t.role)) fail(at, fmt::format("role {} exists only in crease rules", subdiv::quoted(role_name(t.role))));
+}
+
+// "crease-ends": [{"distance": D, "rule": [terms]}, ...]: vertex crease rules for the crease
+// vertices D crease edges from the nearest corner (rule.h: CreaseEndRules). A crease-point may
+// reach the corner (step -D) but not past it.
+CreaseEndRules parse_crease_ends(const Json& j, const Place& at) {
+  if (!j.is_array() || j.empty())
+    fail(at, "expected a non-empty array of {\"distance\": D, \"rule\": [terms]}, D the number of crease edges from the "
+             "nearest corner");
+  CreaseEndRules ends;
+  for (size_t i = 0; i < j.size(); ++i) {
+    const Place here = at[i];
+    require_object(j[i], here);
+    check_keys(j[i], {"distance", "rule"}, here);
+    const int d = as_whole(require(j[i], "distance", here), 1, kMaxCreaseReach, here / "distance");
+    if (size_t(d) < ends.size() && ends[size_t(d)])
+      fail(here / "distance", fmt::format("distance {} has a rule already; give each distance one rule", d));
+    Rule rule = parse_rule(require(j[i], "rule", here), Element::Vertex, here / "rule");
+    for (size_t t = 0; t < rule.terms.size(); ++t)
+      if (rule.terms[t].role == Role::CreasePoint && rule.terms[t].step < -d)
+        fail((here / "rule")[t] / "step",
+             fmt::format("step {} reaches past the corner, which is {} crease edge(s) away at distance {}; "
+                         "use a step from {} (the corner) up",
+                         rule.terms[t].step, d, d, -d));
+    if (ends.size() <= size_t(d)) ends.resize(size_t(d) + 1);
+    ends[size_t(d)] = std::move(rule);
+  }
+  return ends;
+}
+
+RuleTable parse_rules(const Json& rules, const Place& at, const std::set<std::string>& elements,
+                      CreaseEndRules* crease_ends = nullptr) {
   RuleTable table;
   check_keys(rules, elements, at);
   for (int e = 0; e < kElementCount; ++e) {
@@ -334,18 +386,22 @@ RuleTable parse_rules(const Json& rules, const Place& at, const std::set<std::st
     const Place here = at / name;
     if (r.is_array()) {
       table[e][int(Context::Smooth)] = parse_rule(r, Element(e), here);
-      for (const Term& t : table[e][int(Context::Smooth)]->terms)
-        if (t.role == Role::CreaseNeighbours) fail(here, "role 'crease-neighbours' exists only in crease rules");
+      refuse_crease_roles(*table[e][int(Context::Smooth)], here);
       continue;
     }
     if (!r.is_object()) fail(here, "expected an array of terms, or an object of contexts (smooth, dart, crease, corner)");
+    const bool vertex = Element(e) == Element::Vertex;
     for (auto it = r.begin(); it != r.end(); ++it) {
+      if (it.key() == "crease-ends" && vertex && crease_ends) {
+        *crease_ends = parse_crease_ends(it.value(), here / it.key());
+        continue;
+      }
       auto ctx = context_from_name(it.key());
-      if (!ctx) fail(here, fmt::format("unknown context {}; use smooth, dart, crease or corner", subdiv::quoted(it.key())));
+      if (!ctx)
+        fail(here, fmt::format("unknown context {}; use smooth, dart, crease or corner{}", subdiv::quoted(it.key()),
+                               vertex && crease_ends ? " (or crease-ends: crease rules by distance from a corner)" : ""));
       table[e][int(*ctx)] = parse_rule(it.value(), Element(e), here / it.key());
-      for (const Term& t : table[e][int(*ctx)]->terms)
-        if (t.role == Role::CreaseNeighbours && *ctx != Context::Crease)
-          fail(here / it.key(), "role 'crease-neighbours' exists only in crease rules");
+      if (*ctx != Context::Crease) refuse_crease_roles(*table[e][int(*ctx)], here / it.key());
     }
     if (!table[e][int(Context::Smooth)]) fail(here, "the smooth rule is required");
   }
@@ -437,7 +493,7 @@ ParsedSteps parse_steps(const Json& root, const Place& at) {
   if (!root.contains("steps")) {
     StepRules step;
     step.split = parse_split(require(root, "split", at), at / "split");
-    step.rules = parse_rules(require(root, "rules", at), at / "rules", elements_of_split(step.split));
+    step.rules = parse_rules(require(root, "rules", at), at / "rules", elements_of_split(step.split), &step.crease_ends);
     step.where = at.str();
     p.steps.push_back(std::move(step));
     p.curves.emplace_back(), p.curve_places.push_back(at / "curve");
@@ -461,7 +517,7 @@ ParsedSteps parse_steps(const Json& root, const Place& at) {
       seen_pass = true;
       step.is_split = false;
       step.curve_rules_apply = false;
-      step.rules = parse_rules(list[i]["smooth"], here / "smooth", {"vertex"});
+      step.rules = parse_rules(list[i]["smooth"], here / "smooth", {"vertex"}, &step.crease_ends);
       if (list[i].contains("repeat"))
         p.repeats.push_back({p.steps.size(), as_formula(list[i]["repeat"], here / "repeat"), (here / "repeat").str()});
     } else {
@@ -469,7 +525,8 @@ ParsedSteps parse_steps(const Json& root, const Place& at) {
       if (seen_pass)
         fail(here, "splits come first: a later step is a smoothing pass (choose between splits with \"when\")");
       step.split = parse_split(require(list[i], "split", here), here / "split");
-      step.rules = parse_rules(require(list[i], "rules", here), here / "rules", elements_of_split(step.split));
+      step.rules = parse_rules(require(list[i], "rules", here), here / "rules", elements_of_split(step.split),
+                               &step.crease_ends);
       if (list[i].contains("curve")) curve = as_string(list[i]["curve"], here / "curve");
     }
     if (list[i].contains("when"))

@@ -38,7 +38,7 @@ int line_of(const std::string& text, const std::string& needle) {
 // as one each because their own rows sum to one.
 int role_size(Role role, int n, int k, int n0, int n1) {
   switch (role) {
-    case Role::Self: return 1;
+    case Role::Self: case Role::CreasePoint: return 1;
     case Role::Ring: case Role::Faces: case Role::Edges: case Role::FaceCentroids: case Role::Diagonals: return n;
     case Role::CreaseNeighbours: case Role::Ends: case Role::Opposite: case Role::Wings: return 2;
     case Role::FarWings: return 4;
@@ -245,6 +245,28 @@ void check_roles(const Scheme& scheme, const StepRules& step, const std::string&
     }
 }
 
+// Crease-end rules are one-sided by nature (they lean towards the corner), so only their
+// weight sums are checked, at every valence.
+void check_crease_ends(const Scheme& scheme, const StepRules& step, const WeightTables& tables, const std::string& text,
+                       int lo, int hi, ValidationReport& report, const std::string& at_parameters) {
+  for (size_t d = 0; d < step.crease_ends.size(); ++d) {
+    if (!step.crease_ends[d]) continue;
+    const Rule& source = *step.crease_ends[d];
+    const std::string where =
+        fmt::format("{}:{}: {} (crease, distance {})", scheme.path, line_of(text, source.terms.empty() ? "" : source.terms[0].weight),
+                    source.where.substr(source.where.find(": ") + 2), d);
+    for (int n = lo; n <= hi; ++n) {
+      ++report.checks;
+      const double sum = rule_sum(tables.crease_ends[d], {n, 4, 0, 0}, Element::Vertex);
+      if (!std::isfinite(sum) || std::abs(sum - 1) > 1e-9) {
+        report.errors.push_back({fmt::format("{}: weights sum to {} at n={}{}, not 1 (every rule must be affine)", where,
+                                             sum, n, at_parameters)});
+        break;
+      }
+    }
+  }
+}
+
 void check_step(const Scheme& scheme, const StepRules& step, const std::string& text, int lo, int hi,
                 ValidationReport& report, const std::string& at_parameters = "") {
   const WeightTables tables = step_weight_tables(scheme, step, hi, 8, 0);
@@ -279,6 +301,7 @@ void check_step(const Scheme& scheme, const StepRules& step, const std::string& 
         }
       }
     }
+  check_crease_ends(scheme, step, tables, text, lo, hi, report, at_parameters);
 }
 
 

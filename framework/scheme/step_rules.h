@@ -17,6 +17,8 @@ struct StepRules {
   bool is_split = true;
   SplitKind split = SplitKind::Quad;
   RuleTable rules;
+  // Vertex crease rules by distance from the nearest corner ("crease-ends"; rule.h).
+  CreaseEndRules crease_ends;
   // Whether crease/boundary defaults come from the curve scheme: true for single-step
   // schemes; in schemes with smoothing passes the passes shape the features instead.
   bool curve_rules_apply = true;

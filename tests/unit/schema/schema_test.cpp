@@ -67,7 +67,7 @@ const std::set<std::string> kAnnotations = {"$schema", "$id", "$defs", "title", 
 const std::set<std::string> kKeywords = {
     "type", "enum", "const", "properties", "additionalProperties", "required", "propertyNames",
     "pattern", "items", "prefixItems", "minItems", "maxItems", "anyOf", "oneOf", "allOf", "not", "if",
-    "then", "else", "$ref"};
+    "then", "else", "$ref", "minimum", "maximum"};
 
 // "#/$defs/name" -> the definition.
 const Json& resolve(const std::string& ref) {
@@ -124,6 +124,10 @@ void validate(const Json& s, const Json& value, const std::string& path, std::ve
     if (!found) fail(value.dump() + " is not one of " + s["enum"].dump());
   }
   if (s.contains("const") && s["const"] != value) fail(value.dump() + " is not " + s["const"].dump());
+  if (value.is_number() && s.contains("minimum") && value.get<double>() < s["minimum"].get<double>())
+    fail(value.dump() + " is below the minimum " + s["minimum"].dump());
+  if (value.is_number() && s.contains("maximum") && value.get<double>() > s["maximum"].get<double>())
+    fail(value.dump() + " is above the maximum " + s["maximum"].dump());
   if (s.contains("pattern") && value.is_string() &&
       !std::regex_search(value.get<std::string>(), std::regex(s["pattern"].get<std::string>())))
     fail(value.dump() + " does not match " + s["pattern"].dump());
@@ -332,7 +336,9 @@ TEST_CASE("every key, element, context and role a shipped scheme uses is listed 
         else
           for (auto c = it.value().begin(); c != it.value().end(); ++c) {
             CHECK_MESSAGE(contexts_of(rule_def).count(c.key()), element << " context " << c.key());
-            rules.push_back(&c.value());
+            if (c.key() == "crease-ends")  // rules by distance from a corner: each entry holds one
+              for (const auto& entry : c.value()) rules.push_back(&entry["rule"]);
+            else rules.push_back(&c.value());
           }
         for (const Json* rule : rules)
           for (const auto& term : *rule) {
@@ -362,16 +368,20 @@ TEST_CASE("the schema's names are the engine's names") {
   // named anywhere exists.
   std::set<std::string> engine_contexts;
   for (int c = 0; c < kContextCount; ++c) engine_contexts.insert(std::string(context_name(Context(c))));
-  CHECK(contexts_of("vertexRule") == engine_contexts);
-  CHECK(contexts_of("passVertexRule") == engine_contexts);
+  // Vertex rules also take "crease-ends", crease rules by distance from a corner.
+  for (const char* rule : {"vertexRule", "passVertexRule"}) {
+    std::set<std::string> contexts = contexts_of(rule);
+    CHECK(contexts.erase("crease-ends") == 1);
+    CHECK(contexts == engine_contexts);
+  }
   for (const char* rule : {"faceRule", "edgeRule", "cornerRule"})
     for (const auto& c : contexts_of(rule)) CHECK_MESSAGE(context_from_name(c).has_value(), rule << " " << c);
   // Roles: per element, the schema lists exactly the roles the engine allows there, except
   // 'curve', which only the engine's crease defaults use and a file cannot name.
   std::set<std::string> all_roles;
-  for (int r = 0; r <= int(Role::Curve); ++r)
+  for (int r = 0; r <= int(Role::CreasePoint); ++r)
     if (Role(r) != Role::Curve) all_roles.insert(std::string(role_name(Role(r))));
-  CHECK(all_roles.size() == 16);
+  CHECK(all_roles.size() == 17);
   for (int e = 0; e < kElementCount; ++e) {
     std::set<std::string> engine_roles;
     for (const auto& name : all_roles) {
@@ -498,6 +508,17 @@ TEST_CASE("the schema refuses what the loader refuses") {
     s["steps"][2]["smooth"]["edge"] = Json::array({simple_term(subdiv::Element::Edge)});
   });
   refused("an unknown key in a step", qb, [](Json& s) { s["steps"][2]["repeats"] = 2; });
+  // steps[3]: the pass with crease rules by distance from a corner (crease-ends).
+  auto ends = [](Json& s) -> Json& { return s["steps"][3]["smooth"]["vertex"]["crease-ends"]; };
+  refused("a crease-end distance 0", qb, [&](Json& s) { ends(s)[0]["distance"] = 0; });
+  refused("a crease-end distance that is not whole", qb, [&](Json& s) { ends(s)[0]["distance"] = 1.5; });
+  refused("a crease-end without its rule", qb, [&](Json& s) { ends(s)[0].erase("rule"); });
+  refused("crease-point without step", qb, [&](Json& s) { ends(s)[1]["rule"][0].erase("step"); });
+  refused("step on self", qb, [&](Json& s) { ends(s)[0]["rule"][0]["step"] = 1; });
+  refused("a step beyond 16", qb, [&](Json& s) { ends(s)[1]["rule"][2]["step"] = 17; });
+  refused("crease-point in a smooth rule", qb, [](Json& s) {
+    s["steps"][3]["smooth"]["vertex"]["smooth"] = Json::array({{{"at", "crease-point"}, {"step", 1}, {"w", "1"}}});
+  });
   // What only the loader can see: "when" leaving two splits (or a split after a pass), and
   // a split's own curve that does not fit it, even where "when" drops that split.
   auto loader_refuses = [&](const std::string& what, const std::function<void(Json&)>& change) {
