@@ -47,7 +47,7 @@ std::vector<Index> window(const Level& L, Index p, Index q, int m, bool& corner)
 }  // namespace
 
 std::optional<std::vector<std::pair<Index, double>>> crease_middle_limit(const Level& parent, const Hierarchy& h,
-                                                                         Index face, CreaseRun run) {
+                                                                         Index face, CreaseRun run, int corner_reach) {
   if (run.length != 2) return std::nullopt;
   const int n = parent.face_size(face);
   const Index p = parent.face(face)[size_t(run.first)], q = parent.face(face)[size_t((run.first + 1) % n)];
@@ -74,6 +74,7 @@ std::optional<std::vector<std::pair<Index, double>>> crease_middle_limit(const L
     bool corner = false;
     const std::vector<Index> w0 = window(parent, p, q, m, corner);
     const std::vector<Index> w1 = window(child, cp, cq, m, corner);
+    if (corner_reach > 0) (void)window(parent, p, q, m + corner_reach, corner);
     if (corner || w0.size() != w1.size()) return std::nullopt;
     const Eigen::Index k = Eigen::Index(w0.size());
     Eigen::MatrixXd S = Eigen::MatrixXd::Zero(k, k);
@@ -103,6 +104,13 @@ std::optional<std::vector<std::pair<Index, double>>> crease_middle_limit(const L
     return out;
   }
   return std::nullopt;
+}
+
+int crease_end_reach(const Scheme& scheme) {
+  int reach = 0;
+  for (const StepRules& pass : scheme.steps)
+    if (!pass.crease_ends.empty()) reach += int(pass.crease_ends.size()) - 1;
+  return reach;
 }
 
 }  // namespace subdiv

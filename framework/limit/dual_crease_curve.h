@@ -10,20 +10,27 @@
 // within m steps of the edge on either side, and their new points around the new edge, give
 // the crease curve's local subdivision matrix S there; the limit at the middle is its left
 // eigenvector of eigenvalue 1 (as the curve analysis takes a curve scheme's limit masks),
-// with m grown until the new points read only the window. Empty where the window reaches a
-// corner of the mesh (the curve there is not self-similar yet: one more step moves it away).
+// with m grown until the new points read only the window. Empty where the window, or the
+// `corner_reach` crease edges beyond it, reach a corner of the mesh or the end of the crease
+// in `parent` (the curve there is not self-similar yet: the scheme's rules near a corner
+// differ, and one more step moves the corner twice as far away).
 #include <optional>
 #include <utility>
 #include <vector>
 
 #include "framework/engine/refiner.h"
 #include "framework/limit/dual_crease_chart.h"
+#include "framework/scheme/scheme.h"
 
 namespace subdiv {
 
 // `h`: one step of the scheme from `parent` (levels[0]); `face`: a face of `parent` whose
 // crease run is one infinitely sharp edge (run.length == 2). Weights on parent's vertices.
 std::optional<std::vector<std::pair<Index, double>>> crease_middle_limit(const Level& parent, const Hierarchy& h,
-                                                                         Index face, CreaseRun run);
+                                                                         Index face, CreaseRun run, int corner_reach);
+
+// How many crease edges from a corner a step of `scheme` uses other crease rules than along
+// the rest of the crease (its "crease-ends" rules, over the step's passes); 0 without them.
+int crease_end_reach(const Scheme& scheme);
 
 }  // namespace subdiv

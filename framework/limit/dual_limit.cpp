@@ -418,7 +418,8 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
           RefineOptions ro;
           ro.levels = 1;
           ro.features = options_.features;
-          const auto mask = crease_middle_limit(cut.level, refine(scheme_, cut.level, ro), q.face, *run);
+          const auto mask =
+              crease_middle_limit(cut.level, refine(scheme_, cut.level, ro), q.face, *run, crease_end_reach(scheme_));
           if (mask) weights = *mask;
         }
         for (const auto& [v, w] : weights) row[size_t(v)] += w;

@@ -8,6 +8,7 @@
 // evaluator); fractional sharpness is the smooth limit of the mesh one step down.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -591,10 +592,53 @@ TEST_CASE("dual limit at a sharp crease of quad-bspline d = 4 and 6: the uniform
       }
     CHECK(worst < 1e-12);
   }
-  // Next to a corner the degree-d crease is not the clamped spline (docs/features.md), but it
+  // Next to a corner the degree-d crease is the clamped spline (docs/features.md), and it
   // is evaluated: the boundary of a grid, continuous across every edge.
   ParameterOverrides o4;
   o4["d"] = "4";
   const test::Mesh grid = bumped(test::grid(3, 3));
   check_edges_continuous(LimitSurface(load_scheme("quad-bspline", o4), grid.level()), grid, grid.level(), 1e-12);
+}
+
+TEST_CASE("dual limit of quad-bspline d = 4 next to corners: boundary points on the refined boundary curve") {
+  // The crease rules change within a few crease edges of a corner (the clamped ends,
+  // "crease-ends" in the scheme), so a crease edge's middle takes the crease curve's own
+  // limit mask only where its window is clear of them; nearer, the evaluation descends. Every
+  // point evaluated on the boundary of a bumped 6 x 6 grid lies on the boundary polygon of
+  // uniform level 6 (which is within about 1e-5 of the limit curve); a uniform mask used next
+  // to a corner missed it by up to 5e-3.
+  ParameterOverrides o;
+  o["d"] = "4";
+  const auto s4 = load_scheme("quad-bspline", o);
+  const int n = 6;
+  const test::Mesh grid = bumped(test::grid(n, n));
+  RefineOptions ro;
+  ro.levels = 6;
+  const Hierarchy h = refine(*s4, grid.level(), ro);
+  const std::vector<double> fine = interpolate(h, ro.levels, grid.positions, 3);
+  const Level& F = h.levels.back();
+  auto off_boundary = [&](const P3& x) {
+    double best = 1e300;
+    for (Index e = 0; e < F.edge_count(); ++e) {
+      if (F.edge_face_count(e) != 1) continue;
+      const Index a = F.edge_vertices[size_t(2 * e)], b = F.edge_vertices[size_t(2 * e + 1)];
+      P3 d{}, ax{};
+      double dd = 0, t = 0;
+      for (size_t c = 0; c < 3; ++c) {
+        d[c] = fine[size_t(3 * b) + c] - fine[size_t(3 * a) + c];
+        ax[c] = x[c] - fine[size_t(3 * a) + c];
+        dd += d[c] * d[c], t += ax[c] * d[c];
+      }
+      t = std::clamp(t / dd, 0.0, 1.0);
+      double e2 = 0;
+      for (size_t c = 0; c < 3; ++c) e2 += std::pow(ax[c] - t * d[c], 2);
+      best = std::min(best, std::sqrt(e2));
+    }
+    return best;
+  };
+  const LimitSurface s(s4, grid.level());
+  double worst = 0;
+  for (int i = 0; i < n; ++i)
+    for (double u : {0.5, 0.25, 0.75}) worst = std::max(worst, off_boundary(at(s, grid, grid_face(n, i, 0), u, 0)));
+  CHECK(worst < 3e-5);
 }
