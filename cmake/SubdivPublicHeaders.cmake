@@ -46,7 +46,8 @@ set(SUBDIV_PUBLIC_HEADERS
 
 # The pipeline (framework/pipeline/): every header directly in that folder is public,
 # found by a glob in framework/CMakeLists.txt. Name the ones that are not here:
-set(SUBDIV_PIPELINE_PRIVATE_HEADERS "")
+# phase_progress.h is how the pipeline's .cpp files and the command line tell a bar.
+set(SUBDIV_PIPELINE_PRIVATE_HEADERS pipeline/phase_progress.h)
 
 # SUBDIV_VTKIO_PUBLIC_HEADERS: libsubdiv_vtkio (SubdivKit::vtkio). None includes a VTK
 # header, so the package needs no find_dependency(VTK): VTK is linked privately.

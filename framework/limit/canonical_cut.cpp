@@ -7,6 +7,21 @@
 
 namespace subdiv {
 
+void carry_sharpness(Level& L, const Level& cut, const Labelling& lab) {
+  if (!cut.edge_sharpness.empty()) {
+    L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
+    for (Index e = 0; e < L.edge_count(); ++e) {
+      const Index a = lab.vertices[size_t(L.edge_vertices[size_t(2 * e)])];
+      const Index b = lab.vertices[size_t(L.edge_vertices[size_t(2 * e + 1)])];
+      L.edge_sharpness[size_t(e)] = cut.edge_sharp(find_edge(cut, a, b));
+    }
+  }
+  if (!cut.vertex_sharpness.empty()) {
+    L.vertex_sharpness.assign(size_t(L.vertex_count), 0.f);
+    for (Index v = 0; v < L.vertex_count; ++v) L.vertex_sharpness[size_t(v)] = cut.vertex_sharp(lab.vertices[size_t(v)]);
+  }
+}
+
 Level canonical_cut(const Level& cut, const Labelling& lab, Index face, Index& canonical_face) {
   std::vector<std::vector<Index>> faces;
   for (Index f = 0; f < cut.face_count(); ++f) {
@@ -27,18 +42,7 @@ Level canonical_cut(const Level& cut, const Labelling& lab, Index face, Index& c
   Level L = build_level(Index(lab.vertices.size()), offsets, corners);
   // Sharpness goes with the cut (the signature has it); hole tags do not (a hole removes
   // faces, not rules).
-  if (!cut.edge_sharpness.empty()) {
-    L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
-    for (Index e = 0; e < L.edge_count(); ++e) {
-      const Index a = lab.vertices[size_t(L.edge_vertices[size_t(2 * e)])];
-      const Index b = lab.vertices[size_t(L.edge_vertices[size_t(2 * e + 1)])];
-      L.edge_sharpness[size_t(e)] = cut.edge_sharp(find_edge(cut, a, b));
-    }
-  }
-  if (!cut.vertex_sharpness.empty()) {
-    L.vertex_sharpness.assign(size_t(L.vertex_count), 0.f);
-    for (Index v = 0; v < L.vertex_count; ++v) L.vertex_sharpness[size_t(v)] = cut.vertex_sharp(lab.vertices[size_t(v)]);
-  }
+  carry_sharpness(L, cut, lab);
   return L;
 }
 

@@ -14,4 +14,7 @@ struct Labelling;
 // with its corner 0 first (its labels 0 .. n - 1), whose new index is `canonical_face`.
 Level canonical_cut(const Level& cut, const Labelling& lab, Index face, Index& canonical_face);
 
+// The cut's edge and vertex sharpness on `labelled`, its renumbering by `lab`.
+void carry_sharpness(Level& labelled, const Level& cut, const Labelling& lab);
+
 }  // namespace subdiv

@@ -9,6 +9,7 @@
 
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/refiner.h"
+#include "framework/limit/canonical_cut.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
 
@@ -66,18 +67,7 @@ Level canonical_level(const Level& cut, const Labelling& lab, Index face, Index&
     offsets.push_back(Index(corners.size()));
   }
   Level L = build_level(Index(lab.vertices.size()), offsets, corners);
-  if (!cut.edge_sharpness.empty()) {
-    L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
-    for (Index e = 0; e < L.edge_count(); ++e) {
-      const Index a = lab.vertices[size_t(L.edge_vertices[size_t(2 * e)])];
-      const Index b = lab.vertices[size_t(L.edge_vertices[size_t(2 * e + 1)])];
-      L.edge_sharpness[size_t(e)] = cut.edge_sharp(find_edge(cut, a, b));
-    }
-  }
-  if (!cut.vertex_sharpness.empty()) {
-    L.vertex_sharpness.assign(size_t(L.vertex_count), 0.f);
-    for (Index v = 0; v < L.vertex_count; ++v) L.vertex_sharpness[size_t(v)] = cut.vertex_sharp(lab.vertices[size_t(v)]);
-  }
+  carry_sharpness(L, cut, lab);
   if (!cut.face_hole.empty()) {
     L.face_hole.assign(size_t(L.face_count()), 0);
     for (size_t i = 0; i < order.size(); ++i) L.face_hole[i] = cut.face_hole[size_t(order[i])];

@@ -10,6 +10,7 @@
 // for any thread count, since bodies after a failed index are skipped and those before it
 // always run. The indices run in ranges, each in order.
 #include <atomic>
+#include <cstdint>
 #include <exception>
 #include <limits>
 #include <mutex>
@@ -21,14 +22,14 @@
 namespace subdiv {
 
 // Whether the loop tells the share of its indices done to the calling thread's
-// StepProgressScope (a front-end's bar during a long evaluation). Off where the loop is
-// part of a larger step that tells its own shares.
+// StepProgressScope (a front-end's bar during a long evaluation): then it runs in 64 parts,
+// one after the other, each in parallel. Off where the loop is part of a larger step that
+// tells its own shares.
 enum class LoopProgress { Silent, Told };
 
 template <class I, class Body>
 void parallel_for_all(I count, const Body& body, LoopProgress progress = LoopProgress::Silent) {
   std::atomic<I> first_failed{std::numeric_limits<I>::max()};
-  std::atomic<I> done{0};
   std::exception_ptr error;
   std::mutex error_mutex;
   const auto failed = [&](I i) {  // called in a catch block
@@ -38,25 +39,37 @@ void parallel_for_all(I count, const Body& body, LoopProgress progress = LoopPro
       error = std::current_exception();
     }
   };
-  tbb::parallel_for(tbb::blocked_range<I>(I(0), count), [&](const tbb::blocked_range<I>& range) {
-    for (I i = range.begin(); i != range.end(); ++i) {
-      if (i > first_failed.load(std::memory_order_relaxed)) return;
+  const auto run = [&](I begin, I end) {
+    tbb::parallel_for(tbb::blocked_range<I>(begin, end), [&](const tbb::blocked_range<I>& range) {
+      for (I i = range.begin(); i != range.end(); ++i) {
+        if (i > first_failed.load(std::memory_order_relaxed)) return;
+        try {
+          body(i);
+        } catch (...) {
+          failed(i);
+        }
+      }
+    });
+  };
+  if (progress == LoopProgress::Silent) {
+    run(I(0), count);
+  } else {
+    // In parts, each told from the calling thread when it is done (whichever threads did its
+    // work), so that the bar moves however the scheduler shares the indices. A report that
+    // throws (a Python callback's exception) stops the loop as a body would.
+    constexpr I kParts = 64;
+    for (I part = 0; part < kParts && first_failed.load() == std::numeric_limits<I>::max(); ++part) {
+      const auto share = [&](I k) { return I(std::uint64_t(count) * std::uint64_t(k) / kParts); };
+      const I begin = share(part), end = share(part + 1);
+      if (begin == end) continue;
+      run(begin, end);
       try {
-        body(i);
+        StepProgressScope::tell(double(end) / double(count));
       } catch (...) {
-        failed(i);
+        failed(end - 1);
       }
     }
-    // Counted on every thread, told on the calling one only (the others have no scope). A
-    // report that throws (a Python callback's exception) stops the loop as a body would.
-    if (progress == LoopProgress::Silent) return;
-    try {
-      const I now = done.fetch_add(I(range.size()), std::memory_order_relaxed) + I(range.size());
-      StepProgressScope::tell(double(now) / double(count));
-    } catch (...) {
-      failed(range.end() - 1);
-    }
-  });
+  }
   if (error) std::rethrow_exception(error);
 }
 

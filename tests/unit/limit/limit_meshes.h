@@ -1,8 +1,12 @@
 #pragma once
 // Meshes for the limit tests.
+#include <algorithm>
 #include <cmath>
 #include <span>
 
+#include <doctest/doctest.h>
+
+#include "framework/limit/limit_surface.h"
 #include "support/test_meshes.h"
 
 namespace subdiv::limit_test {
@@ -47,6 +51,22 @@ inline double distance(std::span<const double> a, std::span<const double> b) {
   double s = 0;
   for (size_t i = 0; i < a.size(); ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
   return std::sqrt(s);
+}
+
+// The largest difference between the first derivatives evaluated at (face, u, v) and central
+// differences (step h) of the evaluated positions.
+inline double central_difference_error(const LimitSurface& s, Index face, double u, double v,
+                                       std::span<const double> positions, double h = 1e-5) {
+  const LimitSample p = s.evaluate(face, u, v, positions, 3);
+  REQUIRE(p.has_derivatives);
+  const LimitSample a = s.evaluate(face, u + h, v, positions, 3, 0), b = s.evaluate(face, u - h, v, positions, 3, 0);
+  const LimitSample e = s.evaluate(face, u, v + h, positions, 3, 0), g = s.evaluate(face, u, v - h, positions, 3, 0);
+  double worst = 0;
+  for (size_t r = 0; r < 3; ++r) {
+    worst = std::max(worst, std::fabs((a.position[r] - b.position[r]) / (2 * h) - p.du[r]));
+    worst = std::max(worst, std::fabs((e.position[r] - g.position[r]) / (2 * h) - p.dv[r]));
+  }
+  return worst;
 }
 
 }  // namespace subdiv::limit_test

@@ -22,6 +22,7 @@
 #include "framework/util/error.h"
 #include "support/test_meshes.h"
 #include "unit/limit/limit_meshes.h"
+#include "unit/limit/sqrt3_points.h"
 
 using namespace subdiv;
 
@@ -30,6 +31,7 @@ namespace {
 using limit_test::distance;
 
 using limit_test::bumped;
+using limit_test::sqrt3::on_edge;
 
 // A tetrahedron: every vertex of valence 3, and a face's three neighbours share their far corner.
 test::Mesh tetrahedron() {
@@ -42,25 +44,6 @@ test::Mesh tetrahedron() {
 // Meshes with extraordinary vertices: the octahedron (valence 4), the pentagonal bipyramid
 // (valences 5 and 4) and the tetrahedron (3), bumped so that no symmetry hides an error.
 std::vector<test::Mesh> meshes() { return {bumped(test::octahedron()), bumped(test::bipyramid(5)), bumped(tetrahedron())}; }
-
-// (u, v) of the point with barycentric coordinates b (from the face's corner 0).
-std::array<double, 2> uv_of(double b1, double b2) { return {b1, b2}; }
-
-// The corner of face f at vertex w, or -1.
-int corner_of(const Level& L, Index f, Index w) {
-  const auto fv = L.face(f);
-  for (size_t k = 0; k < fv.size(); ++k)
-    if (fv[k] == w) return int(k);
-  return -1;
-}
-
-// (u, v) in face f of the point t of the way from vertex a to vertex b (both corners of f).
-std::array<double, 2> on_edge(const Level& L, Index f, Index a, Index b, double t) {
-  std::array<double, 3> bary{0, 0, 0};
-  bary[size_t(corner_of(L, f, a))] += 1 - t;
-  bary[size_t(corner_of(L, f, b))] += t;
-  return uv_of(bary[1], bary[2]);
-}
 
 }  // namespace
 
@@ -107,33 +90,12 @@ TEST_CASE("sqrt3: the limit at the vertices two steps make equals their limit ma
       const LimitResult masks = limit_positions(*scheme, h.levels[2], p2, lo);
       const ChildOrigins& o1 = h.origins[0];
       const ChildOrigins& o2 = h.origins[1];
-      const Level& L1 = h.levels[1];
       double worst = 0;
       int checked = 0;
       for (Index v = 0; v < h.levels[2].vertex_count; ++v) {
-        std::array<double, 2> uv{};
-        Index face = kNone;
-        if (o2.kind[size_t(v)] == OriginKind::Vertex) {
-          const Index w = o2.parent[size_t(v)];
-          if (o1.kind[size_t(w)] != OriginKind::Face) continue;  // base vertices: the case above
-          face = o1.parent[size_t(w)];
-          uv = {1.0 / 3, 1.0 / 3};
-        } else {
-          // A level-1 triangle (a, P(f0), P(f1)): a from the base, f0 and f1 share the edge a-b.
-          Index a = kNone;
-          std::vector<Index> faces;
-          for (Index x : L1.face(o2.parent[size_t(v)])) {
-            if (o1.kind[size_t(x)] == OriginKind::Vertex) a = o1.parent[size_t(x)];
-            else faces.push_back(o1.parent[size_t(x)]);
-          }
-          REQUIRE(faces.size() == 2);
-          Index b = kNone;
-          for (Index x : L.face(faces[0]))
-            if (x != a && corner_of(L, faces[1], x) >= 0) b = x;
-          REQUIRE(b != kNone);
-          face = faces[0];
-          uv = on_edge(L, face, a, b, 1.0 / 3);
-        }
+        if (o2.kind[size_t(v)] == OriginKind::Vertex && o1.kind[size_t(o2.parent[size_t(v)])] != OriginKind::Face)
+          continue;  // base vertices: the case above
+        const auto [face, uv] = limit_test::sqrt3::where_two_steps_put(L, h, v);
         const LimitSample p = s.evaluate(face, uv[0], uv[1], m.positions, 3, 0);
         worst = std::max(worst, distance(p.position, std::span(masks.positions).subspan(size_t(3 * v), 3)));
         ++checked;
@@ -254,15 +216,7 @@ TEST_CASE("sqrt3: linear precision, derivatives against central differences, 34 
         double u = U(rng), v = U(rng);
         if (u + v > 0.9) u = 0.9 - u, v = 0.9 - v, u = std::max(u, 0.05), v = std::max(v, 0.05);
         const Index f = Index(3 * k % c.level().face_count());
-        const double h = 1e-5;
-        const LimitSample p = s.evaluate(f, u, v, c.positions, 3);
-        REQUIRE(p.has_derivatives);
-        const LimitSample a = s.evaluate(f, u + h, v, c.positions, 3, 0), b = s.evaluate(f, u - h, v, c.positions, 3, 0);
-        const LimitSample e = s.evaluate(f, u, v + h, c.positions, 3, 0), g = s.evaluate(f, u, v - h, c.positions, 3, 0);
-        for (size_t r = 0; r < 3; ++r) {
-          worst = std::max(worst, std::fabs((a.position[r] - b.position[r]) / (2 * h) - p.du[r]));
-          worst = std::max(worst, std::fabs((e.position[r] - g.position[r]) / (2 * h) - p.dv[r]));
-        }
+        worst = std::max(worst, limit_test::central_difference_error(s, f, u, v, c.positions));
       }
       CHECK(worst < 1e-6);
     }
