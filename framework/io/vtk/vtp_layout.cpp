@@ -1,6 +1,8 @@
 #include "framework/io/vtk/vtp_layout.h"
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <set>
@@ -230,14 +232,21 @@ private:
         require(value.name == "Value" && !value.empty && value.attributes.size() == 1 && value.get("index") == index);
         const std::size_t lt = s_.find('<', p_);
         require(lt != std::string_view::npos);
-        double x;
-        require(parse_double(trimmed(s_.substr(p_, lt - p_)), x));
+        require(plain_number(trimmed(s_.substr(p_, lt - p_))));
         p_ = lt;
         require(closing("Value"));
       }
       skip_blanks();
       require(closing("InformationKey"));
     }
+  }
+
+  // A number VTK's stream reads as it is: no sign '+', nothing out of range (VTK refuses an
+  // overflow, e.g. "0.8e540378"), no nan or inf. Anything else is left to VTK's reader.
+  static bool plain_number(std::string_view t) {
+    double x;
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), x);
+    return ec == std::errc() && end == t.data() + t.size() && !t.empty() && std::isfinite(x);
   }
 
   static std::string_view trimmed(std::string_view t) {

@@ -249,3 +249,25 @@ TEST_CASE("vtp fast path: an id beyond the points is declined, and VTK's path na
   CHECK_FALSE(read_vtp_fast_file(dir / "far.vtp"));
   CHECK(contains(error_of([&] { read_mesh(dir / "far.vtp"); }), "polygon 0 refers to point 99"));
 }
+
+TEST_CASE("vtp fast path: an information value VTK's reader refuses (out of range) is declined too") {
+  // VTK's writer puts the points' L2 norm range after their data; a number there that
+  // overflows makes VTK's reader refuse the file, so the fast path must not take it (found by
+  // fuzz_read_vtp: "0.86602e540378").
+  register_vtk_formats();
+  TempDir dir;
+  write_with_vtk(dir / "cube.vtp", cube_mesh(), vtkXMLWriter::Binary, true, true, vtkXMLWriter::NONE);
+  std::string vtp = read_text(dir / "cube.vtp");
+  const std::size_t key = vtp.find("<InformationKey name=\"L2_NORM_RANGE\"");
+  REQUIRE(key != std::string::npos);
+  REQUIRE(read_vtp_fast_file(dir / "cube.vtp"));
+  for (const char* bad : {"0.8e540378", "nan", "+1"}) {
+    CAPTURE(std::string(bad));
+    std::string damaged = vtp;
+    const std::size_t value = damaged.find("<Value index=\"1\">", key);
+    const std::size_t begin = damaged.find('>', value) + 1, end = damaged.find('<', begin);
+    damaged.replace(begin, end - begin, bad);
+    write_text(dir / "bad.vtp", damaged);
+    CHECK_FALSE(read_vtp_fast_file(dir / "bad.vtp"));
+  }
+}
