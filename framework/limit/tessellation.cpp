@@ -11,6 +11,7 @@
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
 #include "framework/limit/unit_normal.h"
+#include "framework/util/memory_limit.h"
 #include "framework/util/parallel_for_all.h"
 
 namespace subdiv {
@@ -157,10 +158,34 @@ std::array<double, 3> normal_at(const LimitSurface& s, const SurfaceSample& samp
   return unit_normal(p.du, p.dv);
 }
 
+// What the sampled mesh holds at its peak per sample point (positions, normals, (u, v), its
+// share of the faces, and the copy being written): 0.24 kB measured for --samples 300 on a
+// 48-quad torus.
+constexpr double kBytesPerSample = 240;
+
+// Refuses, before any work, a grid that would not fit in memory (N up to 1024 per edge on a
+// large mesh asks for billions of points).
+void check_samples_fit(const Level& base, bool triangles, int N) {
+  double points = 0;
+  const double half = double(N / 2) + 1;
+  for (Index f = 0; f < base.face_count(); ++f) {
+    if (base.is_hole(f)) continue;
+    const int k = base.face_size(f);
+    points += triangles ? (N + 1.0) * (N + 2.0) / 2 : k == 4 ? (N + 1.0) * (N + 1.0) : k * half * half;
+  }
+  const MemoryBudget have = available_memory();
+  if (points * kBytesPerSample > have.bytes)
+    throw OptionError(fmt::format("{{samples}} {}: {:.3g} sample points would need about {:.1f} GiB, but only {:.1f} "
+                                  "GiB of memory is available (limited by {}); ask for fewer samples per edge",
+                                  N, points, points * kBytesPerSample / 1073741824.0, have.bytes / 1073741824.0,
+                                  have.source));
+}
+
 }  // namespace
 
 Tessellation tessellation_grid(const Level& topology, const Level& base, bool triangles, int N) {
   if (N < 1) throw OptionError(fmt::format("{{samples}} {}: the number of segments per edge must be at least 1", N));
+  check_samples_fit(base, triangles, N);
   Builder b{topology, {}, {}, {}};
   for (Index f = 0; f < base.face_count(); ++f) {
     if (base.is_hole(f)) continue;

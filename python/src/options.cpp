@@ -16,7 +16,8 @@ const subdiv::OptionSpelling& python_option_spelling() {
       {"param", "params"},            {"scheme_list", "subdivkit.schemes()"},
       {"min_valence", "min_valence"}, {"max_valence", "max_valence"},
       {"select", "select"},           {"max_iterations", "max_iterations"},
-      {"valences", "valences"},       {"boundary_analysis", "boundary=True"}};
+      {"valences", "valences"},       {"boundary_analysis", "boundary=True"},
+      {"samples", "samples"}};
   return spelling;
 }
 

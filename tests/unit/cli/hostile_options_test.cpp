@@ -128,6 +128,23 @@ TEST_CASE("adaptive refinement that would not fit (a tolerance near 0 asks for t
 #endif
 }
 
+TEST_CASE("a sampled limit surface that would not fit is refused before any sample") {
+#if SUBDIV_TEST_ASAN
+  MESSAGE("skipped: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");
+#else
+  const auto dir = fresh_dir("hostile-samples-memory");
+  // 1024 x 1024 samples per face of the cube: 6.3 million points, about 1.5 GB; the limit is 0.4 GB.
+  const CliResult r =
+      run_subdiv_with_prefix("ulimit -v 400000; ", "evaluate " + kCube + " --samples 1024 -o " + (dir / "big.vtp").string());
+  INFO(r.output);
+  CHECK(r.exit_code == 1);
+  CHECK(contains(r.output, "--samples 1024: 6.3e+06 sample points would need about"));
+  CHECK(contains(r.output, "RLIMIT_AS (ulimit -v)"));
+  CHECK(contains(r.output, "ask for fewer samples per edge"));
+  CHECK_FALSE(fs::exists(dir / "big.vtp"));
+#endif
+}
+
 // Bytes of a file, to show it was left as it was.
 std::string file_bytes(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
