@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <filesystem>
+#include <initializer_list>
 #include <fstream>
 #include <sys/stat.h>
 
@@ -90,20 +91,26 @@ TEST_CASE("VTK's own output never reaches the terminal; the message is ours and 
   CHECK_FALSE(fs::exists(dir / "a.obj"));
 }
 
+// `command` (its output file `out` appended) under a 0.4 GB address-space limit: refused
+// with exit 1 and `messages`, naming the limit, never an internal error, no file left.
+void check_refused_within_400_mb(const std::string& command, const fs::path& out,
+                                 std::initializer_list<const char*> messages) {
+  const CliResult r = run_subdiv_with_prefix("ulimit -v 400000; ", command + out.string());
+  INFO(command, r.output);
+  CHECK(r.exit_code == 1);
+  for (const char* m : messages) CHECK(contains(r.output, m));
+  CHECK(contains(r.output, "RLIMIT_AS (ulimit -v)"));
+  CHECK_FALSE(contains(r.output, "internal error"));
+  CHECK_FALSE(fs::exists(out));
+}
+
 TEST_CASE("a process memory limit (ulimit -v) is honoured by the memory guard") {
 #if SUBDIV_TEST_ASAN
   MESSAGE("skipped: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");
 #else
-  const auto dir = fresh_dir("hostile-memory");
-  // 9 levels of Catmull-Clark on the cube: 1.6 million faces, about 0.5 GB; the limit is 0.4 GB.
-  const CliResult r = run_subdiv_with_prefix("ulimit -v 400000; ",
-                                             "refine " + kCube + " -l 9 -o " + (dir / "big.obj").string());
-  INFO(r.output);
-  CHECK(r.exit_code == 1);
-  CHECK(contains(r.output, "9 levels would make about"));
-  CHECK(contains(r.output, "RLIMIT_AS (ulimit -v)"));
-  CHECK_FALSE(contains(r.output, "internal error"));
-  CHECK_FALSE(fs::exists(dir / "big.obj"));
+  // 9 levels of Catmull-Clark on the cube: 1.6 million faces, about 0.5 GB.
+  check_refused_within_400_mb("refine " + kCube + " -l 9 -o ", fresh_dir("hostile-memory") / "big.obj",
+                              {"9 levels would make about"});
 #endif
 }
 
@@ -111,20 +118,12 @@ TEST_CASE("adaptive refinement that would not fit (a tolerance near 0 asks for t
 #if SUBDIV_TEST_ASAN
   MESSAGE("skipped: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");
 #else
+  // Every face split to level 12: 25 million faces, refused at the first level that would not
+  // fit instead of failing (or being killed) inside it.
   const auto dir = fresh_dir("hostile-adaptive-memory");
-  // Every face split to level 12: 25 million faces, far over the 0.4 GB limit, refused at the
-  // first level that would not fit instead of failing (or being killed) inside it.
-  for (const std::string& command : {"refine " + kCube + " --adaptive 12 --tolerance 1e-300 -o ",
-                                     "evaluate " + kCube + " --adaptive 12 --tolerance 1e-300 -o "}) {
-    const CliResult r = run_subdiv_with_prefix("ulimit -v 400000; ", command + (dir / "big.vtp").string());
-    INFO(command, r.output);
-    CHECK(r.exit_code == 1);
-    CHECK(contains(r.output, "adaptive refinement: level "));
-    CHECK(contains(r.output, "RLIMIT_AS (ulimit -v)"));
-    CHECK(contains(r.output, "ask for fewer levels or a larger tolerance"));
-    CHECK_FALSE(contains(r.output, "internal error"));
-    CHECK_FALSE(fs::exists(dir / "big.vtp"));
-  }
+  for (const char* command : {"refine ", "evaluate "})
+    check_refused_within_400_mb(command + kCube + " --adaptive 12 --tolerance 1e-300 -o ", dir / "big.vtp",
+                                {"adaptive refinement: level ", "ask for fewer levels or a larger tolerance"});
 #endif
 }
 
@@ -132,16 +131,10 @@ TEST_CASE("a sampled limit surface that would not fit is refused before any samp
 #if SUBDIV_TEST_ASAN
   MESSAGE("skipped: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");
 #else
-  const auto dir = fresh_dir("hostile-samples-memory");
-  // 1024 x 1024 samples per face of the cube: 6.3 million points, about 1.5 GB; the limit is 0.4 GB.
-  const CliResult r =
-      run_subdiv_with_prefix("ulimit -v 400000; ", "evaluate " + kCube + " --samples 1024 -o " + (dir / "big.vtp").string());
-  INFO(r.output);
-  CHECK(r.exit_code == 1);
-  CHECK(contains(r.output, "--samples 1024: 6.3e+06 sample points would need about"));
-  CHECK(contains(r.output, "RLIMIT_AS (ulimit -v)"));
-  CHECK(contains(r.output, "ask for fewer samples per edge"));
-  CHECK_FALSE(fs::exists(dir / "big.vtp"));
+  // 1024 x 1024 samples per face of the cube: 6.3 million points, about 1.5 GB.
+  check_refused_within_400_mb("evaluate " + kCube + " --samples 1024 -o ",
+                              fresh_dir("hostile-samples-memory") / "big.vtp",
+                              {"--samples 1024: 6.3e+06 sample points would need about", "ask for fewer samples per edge"});
 #endif
 }
 
