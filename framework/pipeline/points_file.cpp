@@ -3,6 +3,7 @@
 #include <charconv>
 #include <fmt/format.h>
 #include <fstream>
+#include <tuple>
 
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
@@ -16,11 +17,14 @@ std::string_view trimmed(std::string_view s) {
   return b == std::string_view::npos ? std::string_view() : s.substr(b, e - b + 1);
 }
 
+// Empty when `text` is a number of type T, else why not, for the message ("is not `kind`").
 template <class T>
-bool parse_field(std::string_view text, T& out) {
+std::string parse_field(std::string_view text, T& out, std::string_view kind) {
   const std::string_view t = trimmed(text);
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
-  return ec == std::errc() && end == t.data() + t.size() && !t.empty();
+  if (ec == std::errc::result_out_of_range) return "is out of range";
+  if (ec != std::errc() || end != t.data() + t.size() || t.empty()) return fmt::format("is not {}", kind);
+  return {};
 }
 
 std::vector<std::string_view> split(std::string_view line, char separator) {
@@ -34,8 +38,19 @@ std::vector<std::string_view> split(std::string_view line, char separator) {
   return fields;
 }
 
+// Spreadsheets save "CSV UTF-8" with a byte-order mark before the header; it is no field.
+std::string_view without_byte_order_mark(std::string_view line) {
+  constexpr std::string_view mark = "\xEF\xBB\xBF";
+  return line.substr(0, mark.size()) == mark ? line.substr(mark.size()) : line;
+}
+
+bool is_header(std::string_view line) {
+  const std::vector<std::string_view> fields = split(without_byte_order_mark(line), ',');
+  return fields.size() == 3 && trimmed(fields[0]) == "face" && trimmed(fields[1]) == "u" && trimmed(fields[2]) == "v";
+}
+
 void check_header(std::string_view line, const std::string& file) {
-  if (trimmed(line) != "face,u,v")
+  if (!is_header(line))
     throw Error(fmt::format("{} line 1: the header is {}; it must be 'face,u,v'", file, subdiv::quoted(trimmed(line))));
 }
 
@@ -48,10 +63,11 @@ void parse_row(std::string_view line, size_t number, const std::string& file, co
   if (fields.size() != 3) throw Error(fmt::format("{}: {} fields; a row is face,u,v", where, fields.size()));
   Index face = 0;
   double u = 0, v = 0;
-  if (!parse_field(fields[0], face))
-    throw Error(fmt::format("{}: face {} is not a whole number", where, subdiv::quoted(trimmed(fields[0]))));
-  if (!parse_field(fields[1], u) || !parse_field(fields[2], v))
-    throw Error(fmt::format("{}: u and v must be numbers", where));
+  if (const std::string why = parse_field(fields[0], face, "a whole number"); !why.empty())
+    throw Error(fmt::format("{}: face {} {}", where, subdiv::quoted(trimmed(fields[0])), why));
+  for (const auto& [name, field, value] : {std::tuple{"u", fields[1], &u}, std::tuple{"v", fields[2], &v}})
+    if (const std::string why = parse_field(field, *value, "a number"); !why.empty())
+      throw Error(fmt::format("{}: {} = {} {}; u and v must be numbers", where, name, subdiv::quoted(trimmed(field)), why));
   if (const std::string why = check(face, u, v); !why.empty()) throw Error(fmt::format("{}: {}", where, why));
   out.faces.push_back(face);
   out.uv.insert(out.uv.end(), {u, v});

@@ -6,6 +6,7 @@ import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error, Scheme
+from ._checks import check_whole
 from .mesh import _escaped, _type_name
 
 
@@ -85,6 +86,17 @@ class CurveAnalysis:
         return self.summary
 
 
+def _valence_list(valences):
+    """The valences as ints; 3.5 or "4" is refused, not rounded."""
+    try:
+        values = np.atleast_1d(np.asarray(valences)).reshape(-1)
+    except (TypeError, ValueError):
+        values = None
+    if values is None or (values.size and values.dtype.kind not in "iu"):
+        raise Error(f"valences={valences!r}: give whole numbers, e.g. range(3, 13)")
+    return [int(n) for n in values]
+
+
 def analyze(scheme, valences=range(3, 13), *, boundary=False, crease=False, boundary_interpolation="edges-and-corners",
             level=0, max_ring=5, characteristic_map=True):
     """Analyse a scheme's convergence and smoothness.
@@ -108,12 +120,10 @@ def analyze(scheme, valences=range(3, 13), *, boundary=False, crease=False, boun
         scheme = Scheme.load(scheme)
     if not isinstance(scheme, Scheme):
         raise Error(f"analyze: expected a subdivkit.Scheme or a scheme name, got {_type_name(scheme)}")
-    try:
-        valence_list = [int(n) for n in np.atleast_1d(np.asarray(valences)).reshape(-1)]
-    except (TypeError, ValueError):
-        raise Error(f"valences={valences!r}: give whole numbers, e.g. range(3, 13)") from None
-    result = _subdivkit._analyze(scheme, valence_list, bool(boundary), bool(crease), boundary_interpolation, int(level),
-                                 int(max_ring), bool(characteristic_map))
+    result = _subdivkit._analyze(scheme, _valence_list(valences), bool(boundary), bool(crease), boundary_interpolation,
+                                 check_whole(level, "level", "give the whole number of the level whose weights to analyse"),
+                                 check_whole(max_ring, "max_ring", "give a whole number of rings"),
+                                 bool(characteristic_map))
     if scheme.kind == "curve":
         r = result
         return CurveAnalysis(scheme=r["name"], arity=r["arity"], mask=r["mask"], mask_first=r["mask_first"],

@@ -12,13 +12,10 @@ import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error, Scheme
-from .mesh import Mesh, _data_shapes_like, _face_varying_triples, _type_name
+from ._checks import check_mesh as _check_mesh
+from ._checks import check_threads, check_whole
+from .mesh import Mesh, _data_shapes_like, _face_varying_triples
 from .refinement import _scipy_sparse
-
-
-def _check_mesh(mesh, what):
-    if not isinstance(mesh, Mesh):
-        raise Error(f"{what}: expected a subdivkit.Mesh (read_mesh or Mesh(points, faces)), got {_type_name(mesh)}")
 
 
 def _check_order(derivatives):
@@ -167,7 +164,7 @@ class LimitSurface:
             if values.ndim != 2 or values.shape[0] != self.n_points:
                 raise Error(f"points {tuple(values.shape)}: give one row per control point ({self.n_points} rows)")
             channels = values.shape[1]
-        r = self._prepared.evaluate(f, p, order, values, channels, int(threads))
+        r = self._prepared.evaluate(f, p, order, values, channels, check_threads(threads))
         return LimitEvaluation(points=r["points"], du=r.get("du"), dv=r.get("dv"), duu=r.get("duu"),
                                duv=r.get("duv"), dvv=r.get("dvv"))
 
@@ -182,7 +179,7 @@ class LimitSurface:
         """
         order = _check_order(derivatives)
         f, p = _points(faces, uv)
-        r = self._prepared.evaluate_face_varying(str(name), f, p, order, int(threads))
+        r = self._prepared.evaluate_face_varying(str(name), f, p, order, check_threads(threads))
         return LimitEvaluation(points=r["points"], du=r.get("du"), dv=r.get("dv"), duu=r.get("duu"),
                                duv=r.get("duv"), dvv=r.get("dvv"))
 
@@ -201,7 +198,7 @@ class LimitSurface:
         sampled at every corner in the mode ``fvar_boundary`` chose, split at their seams.
         A mesh with rational weights is sampled as the rational surface.
         """
-        r = self._prepared.tessellate(int(samples), int(threads))
+        r = self._prepared.tessellate(check_whole(samples, "samples", "give a whole number of segments per face edge"), check_threads(threads))
         return Mesh._from_arrays(r, name=self.name, point_data=_data_shapes_like(r["point_data"], {}),
                                  cell_data=_data_shapes_like(r["cell_data"], {}), face_varying=r["face_varying"],
                                  point_roles=r["point_roles"], cell_roles=r["cell_roles"])
@@ -219,7 +216,7 @@ class LimitSurface:
         "base_face", "uv", "limit_distance" (to the exact limit at the same (face, u, v));
         cell_data: "base_face", "limit_distance" (the largest over the base face's samples).
         """
-        r = self._prepared.approximate_bezier(int(samples), int(threads))
+        r = self._prepared.approximate_bezier(check_whole(samples, "samples", "give a whole number of segments per face edge"), check_threads(threads))
         return Mesh._from_arrays(r, name=self.name, point_data=_data_shapes_like(r["point_data"], {}),
                                  cell_data=_data_shapes_like(r["cell_data"], {}), face_varying=r["face_varying"],
                                  point_roles=r["point_roles"], cell_roles=r["cell_roles"])
@@ -230,7 +227,7 @@ class LimitSurface:
         to round-off for any P. Arguments as evaluate()."""
         order = _check_order(derivatives)
         f, p = _points(faces, uv)
-        r = self._prepared.stencils(f, p, order, int(threads))
+        r = self._prepared.stencils(f, p, order, check_threads(threads))
         sparse = _scipy_sparse()
 
         def matrix(name):

@@ -8,26 +8,20 @@ import numpy as np
 from . import _subdivkit
 from ._subdivkit import Error, Scheme
 from .mesh import _ARRAYS as _MESH_ARRAYS
-from .mesh import Mesh, _data_arrays, _data_shapes_like, _face_varying_triples, _escaped, _quoted, _type_name
+from ._checks import check_mesh as _check_mesh
+from ._checks import check_progress as _check_progress
+from ._checks import check_threads, check_whole
+from .mesh import Mesh, _data_arrays, _data_shapes_like, _face_varying_triples, _escaped, _quoted
 
 BOUNDARY_MODES = ("edges-and-corners", "edges", "none")
 
 
-def _check_mesh(mesh, what):
-    if not isinstance(mesh, Mesh):
-        raise Error(f"{what}: expected a subdivkit.Mesh (read_mesh or Mesh(points, faces)), got {_type_name(mesh)}")
-
-
 def _check_levels(levels):
-    if isinstance(levels, bool) or not isinstance(levels, (int, np.integer)):
-        raise Error(f"levels={levels!r}: give a whole number of levels")
-    return int(levels)
+    return check_whole(levels, "levels", "give a whole number of levels")
 
 
-def _check_progress(progress, what):
-    """Refuses a progress= that is neither None nor callable before any work starts."""
-    if progress is not None and not callable(progress):
-        raise Error(f"{what}: progress={progress!r}: give a callable progress(phase, done), or None")
+def _check_start_level(start_level):
+    return check_whole(start_level, "start_level", "give the whole number of the mesh's level (0: a base mesh)")
     return progress
 
 
@@ -121,8 +115,8 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
     levels = _check_levels(levels)
     _check_progress(progress, "refine")
     point_data, point_roles = _with_weights(mesh, weights)
-    refined = _subdivkit._refine(mesh, scheme, params, levels, boundary, crease_method, int(threads), bool(all_levels),
-                                 int(start_level),
+    refined = _subdivkit._refine(mesh, scheme, params, levels, boundary, crease_method, check_threads(threads), bool(all_levels),
+                                 _check_start_level(start_level),
                                  _data_arrays(point_data, point_roles, mesh.n_points, "point data"),
                                  _data_arrays(mesh.cell_data, mesh.cell_roles, mesh.n_faces, "cell data"),
                                  _face_varying_triples(mesh), str(fvar_boundary), str(arrays), progress)
@@ -188,7 +182,7 @@ class Evaluator:
         _check_mesh(mesh, "Evaluator")
         levels = _check_levels(levels)
         self._prepared = _subdivkit._prepare_evaluator(mesh, scheme, params, levels, boundary, crease_method,
-                                                       int(threads), int(start_level))
+                                                       check_threads(threads), _check_start_level(start_level))
         self.name = mesh.name
         self.scheme = scheme.name if isinstance(scheme, Scheme) else str(scheme)
         # mesh() without points refines the points the mesh had when the evaluator was made.
@@ -326,8 +320,8 @@ def stencils(mesh, scheme="catmull-clark", levels=1, *, composed=False, params=N
     """
     _check_mesh(mesh, "stencils")
     levels = _check_levels(levels)
-    tables = _subdivkit._stencils(mesh, scheme, params, levels, bool(composed), boundary, crease_method, int(threads),
-                                  int(start_level))
+    tables = _subdivkit._stencils(mesh, scheme, params, levels, bool(composed), boundary, crease_method, check_threads(threads),
+                                  _check_start_level(start_level))
     sparse = _scipy_sparse()
     matrices = [sparse.csr_matrix((t["data"], t["indices"], t["indptr"]), shape=t["shape"]) for t in tables]
     return matrices[0] if composed else matrices
@@ -358,7 +352,7 @@ def limit_positions(mesh, scheme="catmull-clark", *, params=None, boundary="edge
     the control points (no normals). ``params`` as in refine(). Returns a LimitPoints.
     """
     _check_mesh(mesh, "limit_positions")
-    r = _subdivkit._limit_positions(mesh, scheme, params, boundary, crease_method, int(start_level))
+    r = _subdivkit._limit_positions(mesh, scheme, params, boundary, crease_method, _check_start_level(start_level))
     if "normals" not in r:
         return LimitPoints(points=r["points"])
     return LimitPoints(points=r["points"], normals=r["normals"], exact=r["exact"].astype(bool),
@@ -441,7 +435,7 @@ def interpolate(mesh, scheme="catmull-clark", *, select=None, tolerance=None, ma
     _check_mesh(mesh, "interpolate")
     moving = _moving_mask(select, mesh.n_points)
     r = _subdivkit._interpolate(mesh, scheme, params, moving, -1.0 if tolerance is None else float(tolerance),
-                                int(max_iterations), boundary, int(threads))
+                                check_whole(max_iterations, "max_iterations", "give a whole number of iterations"), boundary, check_threads(threads))
     return Interpolation(mesh=mesh.with_points(r["points"]), limit=r["limit"], iterations=r["iterations"],
                          converged=r["converged"], max_residual=r["max_residual"], rms_residual=r["rms_residual"],
                          tolerance=r["tolerance"], limit_description=r["limit_description"],

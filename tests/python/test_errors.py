@@ -1,6 +1,7 @@
 """Bad input raises subdivkit.Error (a ValueError) with the command line's message, and
 never takes the interpreter down."""
 import json
+import re
 import subprocess
 import sys
 
@@ -128,6 +129,22 @@ def test_bad_options_are_refused():
         sk.interpolate(cube, select=[])
     with pytest.raises(sk.Error, match="curve scheme refines polylines only"):
         sk.refine(cube, "chaikin", 1)
+
+
+@pytest.mark.parametrize("call, name", [
+    (lambda cube: sk.refine(cube, "catmull-clark", 1, threads=1.5), "threads=1.5"),
+    (lambda cube: sk.refine(cube, "catmull-clark", 1, start_level="1"), "start_level='1'"),
+    (lambda cube: sk.stencils(cube, "catmull-clark", 1, threads="2"), "threads='2'"),
+    (lambda cube: sk.LimitSurface(cube, "catmull-clark").tessellate(2.5), "samples=2.5"),
+    (lambda cube: sk.LimitSurface(cube, "catmull-clark").tessellate("8"), "samples='8'"),
+    (lambda cube: sk.analyze("loop", [3.5]), "valences"),
+    (lambda cube: sk.analyze("loop", [3], level=1.0), "level=1.0"),
+    (lambda cube: sk.analyze("loop", [3], max_ring=True), "max_ring=True"),
+])
+def test_counts_must_be_whole_numbers_not_rounded(call, name):
+    # int() would run 2.5 as 2 and take "8" as 8: a silently different request.
+    with pytest.raises(sk.Error, match=re.escape(name) + ".*give"):
+        call(sk.read_mesh(MESHES / "cube.obj"))
 
 
 def test_missing_and_foreign_plugins_are_refused():

@@ -147,7 +147,7 @@ TEST_CASE("subdiv evaluate refuses bad rows with their number and leaves no outp
   };
   for (const Bad& b : {Bad{"face,u,v\n0,0.1,0.1\n6,0.5,0.5\n", "(row 2): face 6 does not exist"},
                        Bad{"face,u,v\n0,1.5,0.5\n", "(row 1): face 0 at (u, v) = (1.5, 0.5): (u, v) is outside"},
-                       Bad{"face,u,v\n0,x,0.5\n", "(row 1): u and v must be numbers"},
+                       Bad{"face,u,v\n0,x,0.5\n", "(row 1): u = 'x' is not a number"},
                        Bad{"face,u\n0,0.5\n", "must be 'face,u,v'"},
                        Bad{"face,u,v\n0,0.5\n", "(row 1): 2 fields"}}) {
     CAPTURE(std::string(b.points));

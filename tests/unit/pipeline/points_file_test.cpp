@@ -36,13 +36,27 @@ TEST_CASE("each refusal names the file, the line and the row") {
                          Bad{"face,u,v\n", "pts.csv: no points after the header"},
                          Bad{"face,u,v\n\n0,0.5\n", "pts.csv line 3 (row 1): 2 fields"},
                          Bad{"face,u,v\n0,0,0\n1.5,0,0\n", "pts.csv line 3 (row 2): face '1.5' is not a whole number"},
-                         Bad{"face,u,v\n0,nan?,0\n", "pts.csv line 2 (row 1): u and v must be numbers"},
+                         Bad{"face,u,v\n0,nan?,0\n", "pts.csv line 2 (row 1): u = 'nan?' is not a number"},
+                         Bad{"face,u,v\n0,0,1e999\n", "pts.csv line 2 (row 1): v = '1e999' is out of range"},
                          Bad{"face,u,v\n0,0,0\n\n12,0,0\n", "pts.csv line 4 (row 2): no such face"},
                          Bad{"face,u,v\n0,2,0\n", "pts.csv line 2 (row 1): (u, v) is outside"},
-                         Bad{"face,u,v\n99999999999,0,0\n", "face '99999999999' is not a whole number"}}) {
+                         Bad{"face,u,v\n99999999999,0,0\n", "face '99999999999' is out of range"}}) {
     CAPTURE(bad.text);
     CHECK_THROWS_WITH_AS(parse_points(bad.text, "pts.csv", unit_square_check), doctest::Contains(bad.message), Error);
   }
+}
+
+TEST_CASE("a spreadsheet's header: a byte-order mark and spaces around the names are accepted") {
+  // Excel's "CSV UTF-8" starts the file with EF BB BF; hand-written files often say "face, u, v".
+  for (const char* text : {"\xEF\xBB\xBF" "face,u,v\r\n1,0.5,0.25\r\n", "face, u, v\n1, 0.5, 0.25\n"}) {
+    CAPTURE(text);
+    const SurfacePoints p = parse_points(text, "pts.csv", unit_square_check);
+    REQUIRE(p.size() == 1);
+    CHECK(p.faces[0] == 1);
+    CHECK(p.uv == std::vector<double>{0.5, 0.25});
+  }
+  CHECK_THROWS_WITH_AS(parse_points("\xEF\xBB\xBF" "face,v,u\n0,0,0\n", "pts.csv", unit_square_check),
+                       doctest::Contains("must be 'face,u,v'"), Error);
 }
 
 TEST_CASE("a missing file is refused with its name") {
