@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include "framework/features/sharpness.h"
+
 namespace subdiv {
 namespace {
 
@@ -30,7 +32,12 @@ bool regular_vertex(const Level& L, Index v, bool triangles) {
   if (L.on_boundary(v)) {
     if (!sharp.empty()) return false;
     if (faces == (triangles ? 3 : 2)) return L.vertex_sharp(v) == 0;
-    return faces == (triangles ? 2 : 1);
+    // A corner stays and its two boundary curves are independent, so data linear in the
+    // unfolded (s, t) stays linear (a quad's or one or two triangles' worth of corner). A
+    // smooth boundary vertex with other than the regular number of faces is extraordinary:
+    // its boundary curve bends through it and the subdominant eigenvalue across the boundary
+    // is not 1/2 (Loop with two triangles: 3/8), so d/ds and d/dt there are parallel or do not exist.
+    return L.vertex_sharp(v) >= kInfinitelySharp && faces <= (triangles ? 2 : 1);
   }
   if (faces != (triangles ? 6 : 4) || L.vertex_sharp(v) > 0) return false;
   return sharp.empty() || (sharp.size() == 2 && sharp[1] - sharp[0] == n / 2);

@@ -24,6 +24,7 @@
 #include "framework/limit/sequence_head.h"
 #include "framework/limit/sqrt3_limit.h"
 #include "framework/limit/limit_nodes.h"
+#include "framework/limit/manifold_sheets.h"
 #include "framework/limit/mid_edge_limit.h"
 #include "framework/limit/plugin_split_limit.h"
 #include "framework/limit/tensor_patch.h"
@@ -123,6 +124,34 @@ struct LimitSurface::Impl {
   // Set for a sequence: its head, and the limit of its tail over the mesh the head makes.
   std::unique_ptr<SequenceHead> head;
   std::unique_ptr<LimitSurface> tail;
+  // Set for a non-manifold base: the limit over its manifold sheets, and per sheet vertex
+  // the base vertex it copies (manifold_sheets.h).
+  std::unique_ptr<LimitSurface> sheets;
+  std::vector<Index> sheet_origin;
+
+  // The binary quad and triangle splits make every non-manifold element a feature, so the
+  // mesh's limit is its sheets' limit; other splits refuse it.
+  void cut_into_sheets(std::shared_ptr<const Scheme> s, const Level& mesh, const LimitSurfaceOptions& o) {
+    if (s->split() != SplitKind::Quad && s->split() != SplitKind::Triangle)
+      throw Error("the mesh is non-manifold (an edge with more than two faces, or a vertex where separate fans of "
+                  "faces meet): limit evaluation at (face, u, v) takes such a mesh under the binary quad and "
+                  "triangle splits only; split it into manifold parts");
+    ManifoldSheets cut = manifold_sheets(mesh, o.features);
+    LimitSurfaceOptions sheet_options = o;
+    sheet_options.features.boundary = BoundaryInterpolation::EdgesOnly;  // the mesh's corners are tagged
+    sheet_origin = std::move(cut.origin);
+    sheets = std::make_unique<LimitSurface>(std::move(s), std::move(cut.level), sheet_options);
+    triangles = sheets->triangles();
+  }
+
+  // Values per base vertex as values per sheet vertex.
+  std::vector<double> sheet_values(std::span<const double> values, int channels) const {
+    std::vector<double> out(sheet_origin.size() * size_t(channels));
+    for (size_t v = 0; v < sheet_origin.size(); ++v)
+      for (int c = 0; c < channels; ++c)
+        out[v * size_t(channels) + size_t(c)] = values[size_t(sheet_origin[v]) * size_t(channels) + size_t(c)];
+    return out;
+  }
   // Per base face (made on first use): the node of its cut and the base vertices in the
   // node's label order.
   struct Entry {
@@ -807,9 +836,13 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
     : impl_(std::make_unique<Impl>()) {
   if (!scheme) throw Error("no scheme given for the limit surface");
   if (const std::string why = limit_surface_unsupported(*scheme); !why.empty()) throw Error(why);
-  if (!base.manifold())
-    throw Error("the mesh is non-manifold (an edge with more than two faces, or a vertex where separate fans of "
-                "faces meet): limit evaluation at (face, u, v) needs a manifold mesh; split it into manifold parts");
+  if (!base.manifold()) {
+    impl_->cut_into_sheets(std::move(scheme), base, options);
+    impl_->base = std::move(base);
+    impl_->options = options;
+    tag_boundary_holes(impl_->base, options.features.boundary);
+    return;
+  }
   impl_->scheme = std::move(scheme);
   impl_->base = std::move(base);
   impl_->options = options;
@@ -926,6 +959,34 @@ LimitStencil LimitSurface::sequence_stencil(Index face, double u, double v, int 
   return out;
 }
 
+namespace {
+
+// A stencil over the sheets' vertices as one over the base vertices they copy: the copies'
+// weights summed, the vertices in increasing order.
+LimitStencil on_base_vertices(const LimitStencil& w, const std::vector<Index>& origin) {
+  LimitStencil out;
+  out.has_derivatives = w.has_derivatives;
+  out.has_second_derivatives = w.has_second_derivatives;
+  for (Index v : w.vertices) out.vertices.push_back(origin[size_t(v)]);
+  std::sort(out.vertices.begin(), out.vertices.end());
+  out.vertices.erase(std::unique(out.vertices.begin(), out.vertices.end()), out.vertices.end());
+  const auto place = [&](size_t k) {
+    return size_t(std::lower_bound(out.vertices.begin(), out.vertices.end(), origin[size_t(w.vertices[k])]) -
+                  out.vertices.begin());
+  };
+  const std::pair<const std::vector<double>*, std::vector<double>*> rows[] = {
+      {&w.position, &out.position}, {&w.du, &out.du}, {&w.dv, &out.dv},
+      {&w.duu, &out.duu},           {&w.duv, &out.duv}, {&w.dvv, &out.dvv}};
+  for (const auto& [from, to] : rows) {
+    if (from->empty()) continue;
+    to->assign(out.vertices.size(), 0.0);
+    for (size_t k = 0; k < w.vertices.size(); ++k) (*to)[place(k)] += (*from)[k];
+  }
+  return out;
+}
+
+}  // namespace
+
 LimitSurface::~LimitSurface() = default;
 LimitSurface::LimitSurface(LimitSurface&&) noexcept = default;
 LimitSurface& LimitSurface::operator=(LimitSurface&&) noexcept = default;
@@ -935,6 +996,7 @@ const LimitSurfaceOptions& LimitSurface::options() const { return impl_->options
 bool LimitSurface::triangles() const { return impl_->triangles; }
 
 std::string LimitSurface::check(Index face, double u, double v) const {
+  if (impl_->sheets) return impl_->sheets->check(face, u, v);
   try {
     if (impl_->tail) {
       if (face < 0 || face >= impl_->base.face_count())
@@ -957,6 +1019,8 @@ LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<con
   if (channels < 1 || values.size() < size_t(impl_->base.vertex_count) * size_t(channels))
     throw Error(fmt::format("limit evaluation needs {} values per vertex for {} vertices, got {}", channels,
                             impl_->base.vertex_count, values.size()));
+  if (impl_->sheets)
+    return impl_->sheets->evaluate(face, u, v, impl_->sheet_values(values, channels), channels, derivatives);
   if (impl_->tail) {
     const LimitStencil w = sequence_stencil(face, u, v, derivatives);
     LimitSample out;
@@ -1035,6 +1099,7 @@ LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double
 LimitStencil LimitSurface::stencil(Index face, double u, double v, int derivatives) const {
   if (derivatives < 0 || derivatives > 2)
     throw Error(fmt::format("derivatives {}: the order must be 0, 1 or 2", derivatives));
+  if (impl_->sheets) return on_base_vertices(impl_->sheets->stencil(face, u, v, derivatives), impl_->sheet_origin);
   if (impl_->tail) return sequence_stencil(face, u, v, derivatives);
   const FacePoint p = impl_->start(face, u, v);
   // The evaluation is linear in the values: evaluate the unit vectors of the face's

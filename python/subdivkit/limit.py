@@ -88,11 +88,12 @@ class LimitSurface:
     creases, corners and option tags, ``boundary``, ``crease_method``) and checks that the
     scheme can be evaluated: a stationary linear scheme with the binary quad or triangle
     split (Catmull-Clark, Loop, the butterflies, bilinear, composite split + averaging
-    schemes, JSON schemes of that kind), or with the dual split on a closed untagged mesh
-    (Doo-Sabin, even-degree quad B-splines: the quad split's (u, v) read as nested
-    quadrants, docs/limit.md), or a sequence "A:k,B" (B's limit over the mesh A makes).
-    Others raise subdivkit.Error saying why (√3 and mid-edge splits, dual schemes with
-    boundaries or creases, non-linear and level-dependent rules, non-manifold meshes). The mesh's face-varying arrays (UVs) are evaluated with
+    schemes, JSON schemes of that kind) on any mesh, non-manifold ones included; with the
+    dual split (Doo-Sabin, even-degree quad B-splines: the quad split's (u, v) read as nested
+    quadrants), the √3 or the mid-edge split, or a plugin's split that scales faces, where
+    docs/limit.md's table "What is supported" says; or a sequence "A:k,B" (B's limit over the
+    mesh A makes). Others raise subdivkit.Error saying why (non-linear and level-dependent
+    rules, a boundary, crease or non-manifold element a split does not take yet). The mesh's face-varying arrays (UVs) are evaluated with
     ``evaluate_face_varying``, in the linear-interpolation mode ``fvar_boundary`` ("none",
     "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"), as refine().
 

@@ -262,3 +262,22 @@ def test_approximate_bezier_is_the_command_line_mesh_and_exact_where_every_valen
     assert t.point_data["limit_distance"].max() < 1e-12
     with pytest.raises(sk.Error, match="triangles"):
         sk.LimitSurface(cube(), "loop").approximate_bezier(2)
+
+
+def test_a_non_manifold_mesh_is_evaluated_flap_by_flap():
+    # Three flaps on one hinge edge (vertices 0 and 1): the hinge is infinitely sharp, so
+    # every flap's limit along it is the straight hinge, and each flap is smooth.
+    fan = sk.read_mesh(str(MESHES / "flap-fan.obj"))
+    S = sk.LimitSurface(fan, "catmull-clark")
+    hinge_faces = [f for f, face in enumerate(fan.faces) if {0, 1} <= set(face)]
+    assert len(hinge_faces) == 3
+    hinge = fan.points[1] - fan.points[0]
+    for f in hinge_faces:
+        corners = list(fan.faces[f])
+        # The face's u runs from corner 0 to corner 1: the hinge when it starts at vertex 0.
+        assert corners[:2] == [0, 1]
+        r = S.evaluate(np.full(5, f), np.array([[t, 0.0] for t in (0, 0.25, 0.5, 0.75, 1)]))
+        np.testing.assert_allclose(r.points, fan.points[0] + np.outer([0, 0.25, 0.5, 0.75, 1], hinge), atol=1e-14)
+    W = S.stencils(np.array(hinge_faces), np.full((3, 2), 0.3))
+    np.testing.assert_allclose(W.points @ fan.points, S.evaluate(np.array(hinge_faces), np.full((3, 2), 0.3)).points,
+                               atol=1e-14)
