@@ -102,8 +102,14 @@ int LimitNodes::intern_locked(const Level& cut, Index face, std::vector<Index>& 
 
 // `lab` is labelled beyond the cut's radius, so every vertex of the cut has a label.
 int LimitNodes::intern_labelled(const Level& cut, Index face, const Labelling& lab, std::vector<Index>& order) {
+  // A cut grows past its radius only where keeping every vertex manifold takes all faces of
+  // pinched vertices again and again (extract_neighbourhood): a thin closed part of the mesh,
+  // as two triangles back to back around valence-2 vertices (OpenSubdiv's loop_val2_interior),
+  // where each level's cut runs along the whole seam.
   if (lab.vertices.size() != size_t(cut.vertex_count))
-    throw Error("internal: a cut for limit evaluation has vertices its labelling does not reach");
+    throw Error("the neighbourhood of this point wraps around a part of the mesh thinner than the scheme's "
+                "stencils (e.g. two triangles back to back around valence-2 vertices), which limit evaluation does "
+                "not take yet; refine the mesh (subdiv refine) and use a level's vertices instead");
   const Index kept = Index(lab.count_within(depth_));
   order.assign(lab.vertices.begin(), lab.vertices.begin() + kept);
   std::vector<double> holed;
