@@ -144,7 +144,7 @@ void FastXMLPolyDataWriter::WriteInlinePiece(vtkIndent indent) {
     if (this->GetErrorCode() == vtkErrorCode::OutOfDiskSpaceError) return;
     if (cells) this->ConvertCells(cells);
     this->ConvertFaces(nullptr, nullptr);
-    cache_array_range(this->CellPoints);
+    cache_array_range(this->CellPoints, cells ? cells->GetConnectivityArray() : nullptr);
     cache_array_range(this->CellOffsets);
     this->WriteCellsInlineWorker(name, nullptr, indent);
   }
