@@ -51,13 +51,21 @@ double user_seconds() {
   return double(u.ru_utime.tv_sec) + double(u.ru_utime.tv_usec) * 1e-6;
 }
 
-// Wall time of `work`; its process user time (all threads) into *user when given.
-double seconds_of(const std::function<void()>& work, double* user = nullptr) {
-  const double u0 = user_seconds();
+double system_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_stime.tv_sec) + double(u.ru_stime.tv_usec) * 1e-6;
+}
+
+// Wall time of `work`; its process user and system time (all threads) into *user and
+// *system when given.
+double seconds_of(const std::function<void()>& work, double* user = nullptr, double* system = nullptr) {
+  const double u0 = user_seconds(), s0 = system_seconds();
   const auto t0 = std::chrono::steady_clock::now();
   work();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (user) *user = user_seconds() - u0;
+  if (system) *system = system_seconds() - s0;
   return wall;
 }
 
@@ -87,11 +95,11 @@ size_t openmesh_read(const fs::path& file) {
   return mesh.n_faces();
 }
 
-// The best round's wall time and that round's user time.
+// The best round's wall time and that round's user and system time.
 struct Best {
-  double s = std::numeric_limits<double>::infinity(), user = 0;
-  void take(double t, double u = 0) {
-    if (t < s) s = t, user = u;
+  double s = std::numeric_limits<double>::infinity(), user = 0, system = 0;
+  void take(double t, double u = 0, double sys = 0) {
+    if (t < s) s = t, user = u, system = sys;
   }
 };
 
@@ -132,18 +140,25 @@ int main(int argc, char** argv) {
   Best ours[2], vtk[2];
   if (!writes) subdiv::write_vtp(file("ours-a.vtp"), level);
   for (int r = 0; writes && r < rounds; ++r) {
+    double user = 0, system = 0, wall = 0;
     sync();
-    ours[0].take(seconds_of([&] { subdiv::write_vtp(file("ours-a.vtp"), level); }));
-    ours[1].take(seconds_of([&] { subdiv::write_vtp(file("ours-b.vtp"), level); }));
+    wall = seconds_of([&] { subdiv::write_vtp(file("ours-a.vtp"), level); }, &user, &system);
+    ours[0].take(wall, user, system);
+    wall = seconds_of([&] { subdiv::write_vtp(file("ours-b.vtp"), level); }, &user, &system);
+    ours[1].take(wall, user, system);
     sync();
-    vtk[0].take(seconds_of([&] { vtk_write(poly, file("vtk-a.vtp")); }));
-    vtk[1].take(seconds_of([&] { vtk_write(poly, file("vtk-b.vtp")); }));
+    wall = seconds_of([&] { vtk_write(poly, file("vtk-a.vtp")); }, &user, &system);
+    vtk[0].take(wall, user, system);
+    wall = seconds_of([&] { vtk_write(poly, file("vtk-b.vtp")); }, &user, &system);
+    vtk[1].take(wall, user, system);
   }
   const double ours_gb = gb(file("ours-a.vtp")), vtk_gb = writes ? gb(file("vtk-a.vtp")) : 0;
   for (int k = 0; writes && k < 2; ++k)
-    std::printf("write %s vtp_gb=%.3f subdivkit_s=%.3f subdivkit_gb_per_s=%.2f vtk_gb=%.3f vtk_s=%.3f ratio=%.2f\n",
-                k == 0 ? "clean" : "dirty", ours_gb, ours[k].s, ours_gb / ours[k].s, vtk_gb, vtk[k].s,
-                ours[k].s / vtk[k].s);
+    std::printf("write %s vtp_gb=%.3f subdivkit_s=%.3f subdivkit_user_s=%.3f subdivkit_sys_s=%.3f "
+                "subdivkit_gb_per_s=%.2f vtk_gb=%.3f vtk_s=%.3f vtk_user_s=%.3f vtk_sys_s=%.3f ratio=%.2f "
+                "user_ratio=%.2f\n",
+                k == 0 ? "clean" : "dirty", ours_gb, ours[k].s, ours[k].user, ours[k].system, ours_gb / ours[k].s,
+                vtk_gb, vtk[k].s, vtk[k].user, vtk[k].system, ours[k].s / vtk[k].s, ours[k].user / vtk[k].user);
   if (writes) fs::remove(file("ours-b.vtp")), fs::remove(file("vtk-a.vtp")), fs::remove(file("vtk-b.vtp"));
   if (!reads) {
     fs::remove(file("ours-a.vtp"));

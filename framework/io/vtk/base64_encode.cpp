@@ -71,6 +71,16 @@ void encode_base64_triplets_portable(const unsigned char* in, std::size_t triple
   }
 }
 
+std::size_t encode_base64_tail(const unsigned char* in, std::size_t n, char* out) {
+  if (n == 0) return 0;
+  const unsigned bits = unsigned(in[0]) << 16 | (n > 1 ? unsigned(in[1]) << 8 : 0u);
+  out[0] = kAlphabet[bits >> 18];
+  out[1] = kAlphabet[(bits >> 12) & 63];
+  out[2] = n > 1 ? kAlphabet[(bits >> 6) & 63] : '=';
+  out[3] = '=';
+  return 4;
+}
+
 void encode_base64_triplets(const unsigned char* in, std::size_t triplets, char* out) {
   std::size_t done = 0;
 #ifdef SUBDIV_BASE64_AVX2

@@ -11,6 +11,10 @@ namespace subdiv::io_detail {
 // per 12-bit table look-up. Both write the same characters.
 void encode_base64_triplets(const unsigned char* in, std::size_t triplets, char* out);
 
+// The padded end of a run: the last `n` bytes (0, 1 or 2) as 4 characters ending in '=', as
+// vtkBase64OutputStream ends a run. Returns the characters written (0 for n = 0).
+std::size_t encode_base64_tail(const unsigned char* in, std::size_t n, char* out);
+
 // The table path alone (tests compare the two).
 void encode_base64_triplets_portable(const unsigned char* in, std::size_t triplets, char* out);
 

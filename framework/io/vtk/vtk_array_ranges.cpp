@@ -127,6 +127,18 @@ void cache_array_range(vtkDataArray* array) {
   }
 }
 
+void cache_array_range(vtkDataArray* array, vtkDataArray* source) {
+  const bool same_values = array && source && array->HasStandardMemoryLayout() && source->HasStandardMemoryLayout() &&
+                           array->GetNumberOfTuples() > 0 && array->GetDataType() == source->GetDataType() &&
+                           array->GetNumberOfTuples() == source->GetNumberOfTuples() &&
+                           array->GetNumberOfComponents() == source->GetNumberOfComponents() &&
+                           array->GetVoidPointer(0) == source->GetVoidPointer(0);
+  if (!same_values) return cache_array_range(array);
+  double range[2];
+  source->GetRange(range, array->GetNumberOfComponents() == 1 ? 0 : -1);  // VTK's cache: cache_array_ranges
+  store(*array, {range[0], range[1]});
+}
+
 namespace {
 
 void cache(vtkFieldData* data) {

@@ -20,4 +20,9 @@ void cache_array_ranges(vtkPolyData& poly);
 // For one array (doubles and integers of the kinds write_vtp makes; others are left to VTK).
 void cache_array_range(vtkDataArray* array);
 
+// For `array`, from `source` when both are views of the same values (the writer's copy of a
+// cell array's connectivity shares its memory): the range cached for `source` instead of a
+// second pass over the values; otherwise as cache_array_range.
+void cache_array_range(vtkDataArray* array, vtkDataArray* source);
+
 }  // namespace subdiv::io_detail

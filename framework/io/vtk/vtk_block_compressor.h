@@ -1,6 +1,10 @@
 #pragma once
 // A compressor for vtkXMLWriter that uses every core. Internal to io/.
 //
+// Inline binary data (write_vtp's default) no longer reaches it: FastXMLPolyDataWriter writes
+// that itself in a pipeline (vtk_inline_blocks.h). Raw appended data still goes through VTK's
+// block loop (vtkXMLWriter::WriteArrayAppendedData is not virtual), and so through this.
+//
 // VTK's XML writer compresses an array block after block on one thread
 // (vtkXMLWriter::WriteCompressionBlock calls vtkDataCompressor::Compress once per block of
 // BlockSize bytes, then writes it, in order), and its API has no hook to do otherwise: the

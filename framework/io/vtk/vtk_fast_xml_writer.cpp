@@ -10,6 +10,7 @@
 #include <vtkCellArray.h>
 #include <vtkCellType.h>
 #include <vtkCellTypes.h>
+#include <vtkDataArray.h>
 #include <vtkErrorCode.h>
 #include <vtkNew.h>
 #include <vtkOutputStream.h>
@@ -17,12 +18,10 @@
 
 #include "framework/io/vtk/base64_encode.h"
 #include "framework/io/vtk/vtk_array_ranges.h"
+#include "framework/io/vtk/vtk_inline_blocks.h"
 
 namespace subdiv::io_detail {
 namespace {
-
-// For the padded tail of a run (the whole triplets go through base64_encode.h).
-constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
 
 // Base64 as vtkBase64OutputStream writes it (each StartWriting..EndWriting run padded with
 // '=' on its own), a whole Write at a time.
@@ -64,20 +63,7 @@ public:
   }
 
   int EndWriting() override {
-    char* out = reserve(4);
-    size_t size = 0;
-    if (pending_size_ == 1) {
-      out[0] = kAlphabet[pending_[0] >> 2];
-      out[1] = kAlphabet[(pending_[0] & 0x03) << 4];
-      out[2] = out[3] = '=';
-      size = 4;
-    } else if (pending_size_ == 2) {
-      out[0] = kAlphabet[pending_[0] >> 2];
-      out[1] = kAlphabet[((pending_[0] & 0x03) << 4) | (pending_[1] >> 4)];
-      out[2] = kAlphabet[(pending_[1] & 0x0F) << 2];
-      out[3] = '=';
-      size = 4;
-    }
+    const size_t size = encode_base64_tail(pending_, pending_size_, reserve(4));
     pending_size_ = 0;
     return put(size) && vtkOutputStream::EndWriting();
   }
@@ -158,10 +144,44 @@ void FastXMLPolyDataWriter::WriteInlinePiece(vtkIndent indent) {
     if (this->GetErrorCode() == vtkErrorCode::OutOfDiskSpaceError) return;
     if (cells) this->ConvertCells(cells);
     this->ConvertFaces(nullptr, nullptr);
-    cache_array_range(this->CellPoints);
+    cache_array_range(this->CellPoints, cells ? cells->GetConnectivityArray() : nullptr);
     cache_array_range(this->CellOffsets);
     this->WriteCellsInlineWorker(name, nullptr, indent);
   }
+}
+
+// What vtk_inline_blocks.h writes as VTK would: inline binary data of a data array in one
+// piece of memory, written as it lies (no 64-bit ids written as 32, no byte swap), with
+// 64-bit headers and blocks that start where VTK's do.
+bool FastXMLPolyDataWriter::pipelined(vtkAbstractArray* a) {
+  auto* array = vtkDataArray::SafeDownCast(a);
+  if (!array || this->GetDataMode() != vtkXMLWriter::Binary || !array->HasStandardMemoryLayout() ||
+      array->GetNumberOfValues() == 0 || this->GetHeaderType() != vtkXMLWriter::UInt64)
+    return false;
+  const int type = array->GetDataType();
+  const size_t word = this->GetWordTypeSize(type);
+  return type != VTK_STRING && this->GetOutputWordTypeSize(type) == word &&
+         (word == 1 || this->GetByteOrder() == vtkXMLWriter::LittleEndian) && this->GetBlockSize() > 0 &&
+         this->GetBlockSize() % word == 0;
+}
+
+// As vtkXMLWriter::WriteInlineData: the indent, the data, a line break.
+void FastXMLPolyDataWriter::WriteInlineData(vtkAbstractArray* a, vtkIndent indent) {
+  if (!pipelined(a)) return vtkXMLPolyDataWriter::WriteInlineData(a, indent);
+  auto* array = vtkDataArray::SafeDownCast(a);
+  std::ostream& os = *this->Stream;
+  os << indent;
+  const InlineBytes bytes{static_cast<const unsigned char*>(array->GetVoidPointer(0)),
+                          size_t(array->GetNumberOfValues()) * this->GetWordTypeSize(array->GetDataType()),
+                          size_t(this->GetBlockSize())};
+  const bool compressed = write_inline_base64(os, bytes, this->Compressor,
+                                              [this](double done) { this->SetProgressPartial(float(done)); });
+  os << "\n";
+  if (!compressed) {
+    vtkErrorMacro("cannot compress array " << (a->GetName() ? a->GetName() : "(unnamed)"));
+    this->SetErrorCode(vtkErrorCode::UnknownError);
+  }
+  if (os.fail()) this->SetErrorCode(vtkErrorCode::GetLastSystemError());
 }
 
 }  // namespace subdiv::io_detail

@@ -12,6 +12,10 @@
 // It also writes the cells as vtkXMLPolyDataWriter does, but with the value ranges of the
 // connectivity and offsets arrays it makes (ConvertCells) computed in parallel
 // (vtk_array_ranges.h): VTK's own sequential range took seconds on a 16M-face level.
+//
+// And it writes each array's inline data itself (vtk_inline_blocks.h): VTK's block loop
+// compressed, encoded and wrote one block at a time, so the cores and the write() calls
+// took turns; the bytes are the same.
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataWriter.h>
 
@@ -39,6 +43,12 @@ public:
 protected:
   FastXMLPolyDataWriter();
   void WriteInlinePiece(vtkIndent indent) override;
+  // An array's inline binary data through vtk_inline_blocks.h (compressed, encoded and
+  // written in a pipeline on every core), VTK's own for what that does not cover.
+  void WriteInlineData(vtkAbstractArray* a, vtkIndent indent) override;
+
+private:
+  bool pipelined(vtkAbstractArray* a);
 };
 
 }  // namespace subdiv::io_detail
