@@ -104,4 +104,18 @@ SplitResult split_triangle_faces(const Level& parent) {
   return side_by_side(parent, false, triangle_split_faces, triangle_origins);
 }
 
+ChildOrigins quad_split_origins(const Level& parent) {
+  ChildOrigins o;
+  reserve_origins(parent, true, o);
+  quad_origins(parent, o);
+  return o;
+}
+
+ChildOrigins triangle_split_origins(const Level& parent) {
+  ChildOrigins o;
+  reserve_origins(parent, false, o);
+  triangle_origins(parent, o);
+  return o;
+}
+
 }  // namespace subdiv

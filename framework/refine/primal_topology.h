@@ -8,6 +8,7 @@
 //   corner's out-edge to the face point; triangle: three per face, edge 3f+i joins the
 //   mid-points of face f's edges i and i-1);
 // - child faces: quad: one per parent corner; triangle: 4f+i at corner i, 4f+3 the middle.
+#include "framework/refine/child_origins.h"
 #include "framework/topology/level.h"
 
 namespace subdiv {
@@ -19,5 +20,11 @@ Level triangle_split_topology(const Level& parent);
 // for a last level that nothing refines further, as OpenSubdiv's default UniformOptions.
 Level quad_split_faces(const Level& parent);
 Level triangle_split_faces(const Level& parent);
+
+// The origins of split_quad and split_triangle alone (with their runs and parent faces),
+// for a last level whose values are made before its faces (engine/topology_steps.h): the
+// values read the parent and the origins, never the child's faces.
+ChildOrigins quad_split_origins(const Level& parent);
+ChildOrigins triangle_split_origins(const Level& parent);
 
 }  // namespace subdiv
