@@ -192,19 +192,25 @@ bool refine_next_level(std::span<const SchemeRun> runs, Hierarchy& h, const Refi
   return add_level(per_level, h, options, faces_later);
 }
 
-Index deferred_face_count(const Hierarchy& h) { return Index(h.origins.back().parent_face.size()); }
+Index deferred_face_count(std::span<const SchemeRun> runs, const Hierarchy& h) {
+  const Level& parent = h.levels[h.levels.size() - 2];
+  const bool quad = schemes_per_level(runs)[h.levels.size() - 2]->split() == SplitKind::Quad;
+  return quad ? parent.corner_count() : 4 * parent.face_count();
+}
 
 void add_deferred_faces(std::span<const SchemeRun> runs, Hierarchy& h) {
-  const std::vector<const Scheme*> per_level = schemes_per_level(runs);
   const size_t l = h.levels.size() - 2;
   const Level& parent = h.levels[l];
-  Level faces = per_level[l]->split() == SplitKind::Quad ? quad_split_faces(parent) : triangle_split_faces(parent);
+  const bool quad = schemes_per_level(runs)[l]->split() == SplitKind::Quad;
+  Level faces = quad ? quad_split_faces(parent) : triangle_split_faces(parent);
   Level& child = h.levels.back();
   if (faces.vertex_count != child.vertex_count)
     throw Error(fmt::format("add_deferred_faces: {} vertices, but the origins gave {}", faces.vertex_count,
                             child.vertex_count));
   child.face_offsets = std::move(faces.face_offsets);
   child.face_vertices = std::move(faces.face_vertices);
+  if (quad) add_quad_parent_faces(parent, h.origins.back());
+  else add_triangle_parent_faces(parent, h.origins.back());
 }
 
 std::vector<SchemeRun> runs_made(std::span<const SchemeRun> runs, const Hierarchy& h) {

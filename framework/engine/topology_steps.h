@@ -19,14 +19,15 @@ Hierarchy start_topology(Level base, const RefineOptions& options);
 // (without holes) gets its vertex count and origins now and its faces from
 // add_deferred_faces: its values read the parent level and the origins, never the child's
 // faces, so the faces (1.28 GB at level 3 of a 1M-quad mesh) can wait until the values are
-// made and the parent's rings and edges are gone. Returns whether the faces were deferred.
+// made and the parent's rings and edges are gone; so do its origins' parent faces. Returns whether the faces were deferred.
 bool refine_next_level(std::span<const SchemeRun> runs, Hierarchy& h, const RefineOptions& options, bool faces_later);
 
-// The child faces a deferred last level will have (its origins' parent faces).
-Index deferred_face_count(const Hierarchy& h);
+// The number of faces a last level with deferred faces will have.
+Index deferred_face_count(std::span<const SchemeRun> runs, const Hierarchy& h);
 
-// The faces of a last level made with deferred faces. Reads the parent's face_offsets,
-// face_vertices, face_edges, vertex count and edge_vertices (its edge count) only.
+// The faces of a last level made with deferred faces, and its origins' parent faces. Reads
+// the parent's face_offsets, face_vertices, face_edges, vertex count and edge_vertices (its
+// edge count) only.
 void add_deferred_faces(std::span<const SchemeRun> runs, Hierarchy& h);
 
 // `runs` cut to the levels `h` has so far: what step_values takes with a growing hierarchy.

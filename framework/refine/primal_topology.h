@@ -21,10 +21,13 @@ Level triangle_split_topology(const Level& parent);
 Level quad_split_faces(const Level& parent);
 Level triangle_split_faces(const Level& parent);
 
-// The origins of split_quad and split_triangle alone (with their runs and parent faces),
-// for a last level whose values are made before its faces (engine/topology_steps.h): the
-// values read the parent and the origins, never the child's faces.
+// The origins of split_quad and split_triangle alone, without their parent faces (which
+// only the child's faces need), for a last level whose values are made before its faces
+// (engine/topology_steps.h): the values read the parent level and these origins, never the
+// child's faces; the parent faces are added with the faces.
 ChildOrigins quad_split_origins(const Level& parent);
 ChildOrigins triangle_split_origins(const Level& parent);
+void add_quad_parent_faces(const Level& parent, ChildOrigins& origins);
+void add_triangle_parent_faces(const Level& parent, ChildOrigins& origins);
 
 }  // namespace subdiv
