@@ -429,6 +429,10 @@ std::vector<LevelData> refine_level_data(const PreparedRefinement& p, const Hier
   return level_data(p, h, nullptr, false, mesh, options, r, said);
 }
 
+bool last_level_faces_suffice(const RefineRequest& request, const PreparedRefinement& prepared) {
+  return last_level_faces_suffice(request, prepared.mesh, prepared.base);
+}
+
 RefineResult run_refinement(PreparedRefinement&& p, const RefineRequest& r) {
   check_fits_in_memory(*p.sequence.schemes.front(), p.base, p.sequence.total_levels, r.memory_budget,
                        r.memory_advice);
