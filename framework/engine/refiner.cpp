@@ -5,6 +5,8 @@
 #include <optional>
 
 #include "framework/engine/level_passes.h"
+#include "framework/engine/topology_steps.h"
+#include "framework/refine/primal_topology.h"
 #include "framework/util/step_progress.h"
 #include "framework/engine/step_preparation.h"
 #include "framework/engine/vertex_parameters.h"
@@ -105,43 +107,121 @@ void check_face_sizes(const Scheme& scheme, const Level& base) {
                               base.face_size(f), needed == 3 ? "triangulate" : needed == 4 ? "quadrangulate" : "remesh"));
 }
 
-Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const RefineOptions& options) {
-  const std::vector<const Scheme*> per_level = schemes_per_level(runs);
-  StageTimes* times = options.evaluation.stage_times;
-  std::optional<StageTimer> timer(std::in_place, times, stage(options, 0, "base tags"));
-  // The base level's topological tags, in OpenSubdiv's order (features/base_tags.h).
+namespace {
+
+// The base level's topological tags, in OpenSubdiv's order (features/base_tags.h).
+void tag_base(Level& base, const RefineOptions& options) {
+  StageTimer timer(options.evaluation.stage_times, stage(options, 0, "base tags"));
   tag_boundary_holes(base, options.features.boundary);
   sharpen_non_manifold(base);
   tag_boundary_corners(base, options.features.boundary);
-  Hierarchy h;
-  h.levels.push_back(std::move(base));
-  for (size_t l = 0; l < per_level.size(); ++l) {
-    const Scheme& scheme = *per_level[l];
-    const int made = int(l) + 1;
-    timer.emplace(times, stage(options, made, "face and manifold checks"));
-    if (l == 0 || per_level[l - 1] != per_level[l]) check_face_sizes(scheme, h.levels.back());
-    check_manifold_for(scheme, h.levels.back());
-    // The last level may be faces only (RefineOptions::faces_only_last_level): then it
-    // has no edges to carry tags to.
-    const bool faces_only = options.faces_only_last_level && l + 1 == per_level.size() &&
-                            scheme.steps.size() == 1 && !scheme.steps.front().nonlinear &&
-                            splitter_info(scheme.split()).split_faces_only;
-    timer.emplace(times, stage(options, made, "split"));
-    SplitResult step = split(scheme.split(), h.levels.back(), options.first_step + int(l), faces_only);
-    timer.emplace(times, stage(options, made, "tags"));
-    if (splitter_info(scheme.split()).engine_propagates_tags && !faces_only)
-      propagate_tags(h.levels.back(), step, options.features.crease_method);
-    else if (options.features.crease_method == CreaseMethod::Chaikin && !step.averaged_edge_sharpness.empty())
-      step.child.edge_sharpness = std::move(step.averaged_edge_sharpness);
-    pass_holes_down(h.levels.back(), step);
-    timer.reset();
-    if (!step.warning.empty()) h.warnings.push_back(fmt::format("level {}: {}", l + 1, step.warning));
-    h.levels.push_back(std::move(step.child));
-    h.origins.push_back(std::move(step.origins));
-    h.features_refined.push_back(step.features_refined);
+}
+
+// The origins of a faces-only split before its faces (topology_steps.h), where the split
+// can give them: the primal splits, on a level without holes (holes pass down to faces).
+std::optional<ChildOrigins> origins_first(SplitKind kind, const Level& parent) {
+  if (!parent.face_hole.empty()) return std::nullopt;
+  if (kind == SplitKind::Quad) return quad_split_origins(parent);
+  if (kind == SplitKind::Triangle) return triangle_split_origins(parent);
+  return std::nullopt;
+}
+
+// Adds level h.levels.size(), made by per_level[its index - 1]; true when its faces wait
+// (refine_next_level's `faces_later`).
+bool add_level(const std::vector<const Scheme*>& per_level, Hierarchy& h, const RefineOptions& options,
+               bool faces_later) {
+  const size_t l = h.levels.size() - 1;
+  const Scheme& scheme = *per_level[l];
+  const int made = int(l) + 1;
+  StageTimes* times = options.evaluation.stage_times;
+  std::optional<StageTimer> timer(std::in_place, times, stage(options, made, "face and manifold checks"));
+  if (l == 0 || per_level[l - 1] != per_level[l]) check_face_sizes(scheme, h.levels.back());
+  check_manifold_for(scheme, h.levels.back());
+  // The last level may be faces only (RefineOptions::faces_only_last_level): then it
+  // has no edges to carry tags to.
+  const bool faces_only = options.faces_only_last_level && l + 1 == per_level.size() && scheme.steps.size() == 1 &&
+                          !scheme.steps.front().nonlinear && splitter_info(scheme.split()).split_faces_only;
+  timer.emplace(times, stage(options, made, "split"));
+  if (faces_only && faces_later) {
+    if (std::optional<ChildOrigins> origins = origins_first(scheme.split(), h.levels.back())) {
+      Level child;
+      child.vertex_count = Index(origins->kind.size());
+      h.levels.push_back(std::move(child));
+      h.origins.push_back(std::move(*origins));
+      h.features_refined.push_back(true);  // as the primal splits say
+      return true;
+    }
   }
+  SplitResult step = split(scheme.split(), h.levels.back(), options.first_step + int(l), faces_only);
+  timer.emplace(times, stage(options, made, "tags"));
+  if (splitter_info(scheme.split()).engine_propagates_tags && !faces_only)
+    propagate_tags(h.levels.back(), step, options.features.crease_method);
+  else if (options.features.crease_method == CreaseMethod::Chaikin && !step.averaged_edge_sharpness.empty())
+    step.child.edge_sharpness = std::move(step.averaged_edge_sharpness);
+  pass_holes_down(h.levels.back(), step);
+  timer.reset();
+  if (!step.warning.empty()) h.warnings.push_back(fmt::format("level {}: {}", l + 1, step.warning));
+  h.levels.push_back(std::move(step.child));
+  h.origins.push_back(std::move(step.origins));
+  h.features_refined.push_back(step.features_refined);
+  return false;
+}
+
+}  // namespace
+
+Hierarchy refine_topology(std::span<const SchemeRun> runs, Level base, const RefineOptions& options) {
+  const std::vector<const Scheme*> per_level = schemes_per_level(runs);
+  Hierarchy h = start_topology(std::move(base), options);
+  for (size_t l = 0; l < per_level.size(); ++l) add_level(per_level, h, options, false);
   h.vertex_parameters = carried_parameters(per_level, h, options.vertex_parameters);
   return h;
+}
+
+Hierarchy start_topology(Level base, const RefineOptions& options) {
+  tag_base(base, options);
+  Hierarchy h;
+  h.levels.push_back(std::move(base));
+  return h;
+}
+
+bool refine_next_level(std::span<const SchemeRun> runs, Hierarchy& h, const RefineOptions& options, bool faces_later) {
+  const std::vector<const Scheme*> per_level = schemes_per_level(runs);
+  if (h.levels.empty() || h.levels.size() > per_level.size())
+    throw Error(fmt::format("refine_next_level: the hierarchy has {} level(s) of {}", h.levels.size(),
+                            per_level.size() + 1));
+  return add_level(per_level, h, options, faces_later);
+}
+
+Index deferred_face_count(std::span<const SchemeRun> runs, const Hierarchy& h) {
+  const Level& parent = h.levels[h.levels.size() - 2];
+  const bool quad = schemes_per_level(runs)[h.levels.size() - 2]->split() == SplitKind::Quad;
+  return quad ? parent.corner_count() : 4 * parent.face_count();
+}
+
+void add_deferred_faces(std::span<const SchemeRun> runs, Hierarchy& h) {
+  const size_t l = h.levels.size() - 2;
+  const Level& parent = h.levels[l];
+  const bool quad = schemes_per_level(runs)[l]->split() == SplitKind::Quad;
+  Level faces = quad ? quad_split_faces(parent) : triangle_split_faces(parent);
+  Level& child = h.levels.back();
+  if (faces.vertex_count != child.vertex_count)
+    throw Error(fmt::format("add_deferred_faces: {} vertices, but the origins gave {}", faces.vertex_count,
+                            child.vertex_count));
+  child.face_offsets = std::move(faces.face_offsets);
+  child.face_vertices = std::move(faces.face_vertices);
+  if (quad) add_quad_parent_faces(parent, h.origins.back());
+  else add_triangle_parent_faces(parent, h.origins.back());
+}
+
+std::vector<SchemeRun> runs_made(std::span<const SchemeRun> runs, const Hierarchy& h) {
+  std::vector<SchemeRun> made;
+  int left = int(h.levels.size()) - 1;
+  for (const SchemeRun& run : runs) {
+    if (left <= 0) break;
+    made.push_back({run.scheme, std::min(run.levels, left)});
+    left -= made.back().levels;
+  }
+  return made;
 }
 
 void build_stencils(std::span<const SchemeRun> runs, Hierarchy& h, const RefineOptions& options) {

@@ -13,6 +13,7 @@
 #include "framework/io/mesh_level.h"
 #include "framework/io/mesh_read.h"
 #include "framework/io/vertex_values.h"
+#include "framework/engine/topology_steps.h"
 #include "framework/pipeline/limit_arrays.h"
 #include "framework/pipeline/memory_guard.h"
 #include "framework/pipeline/rational_weights.h"
@@ -37,18 +38,41 @@ void say_done(const RefineRequest& r, double done) {
   if (r.progress_fraction) r.progress_fraction(done);
 }
 
-// A level's values cost about its faces' worth of work: the share of the levels' work
-// done when `finished` levels are, and the share `next` (0 to 1) of the level after them.
-double levels_done(const Hierarchy& h, int finished, double next = 0) {
-  double total = 0, done = 0;
-  for (size_t l = 1; l < h.levels.size(); ++l) {
-    const double work = double(h.levels[l].face_count()) + 1;
-    total += work;
-    if (int(l) <= finished) done += work;
-    else if (int(l) == finished + 1) done += next * work;
+// The bar's share of the levels' work: a level's values cost about its faces' worth. When
+// topology is made level by level, the faces of levels not made yet (and of a last level
+// whose faces wait) are guessed from the last step's growth, so the share told is kept from
+// going back when a guess is replaced by the count.
+class LevelShares {
+ public:
+  LevelShares(const Hierarchy& h, int total) : h_(h), total_(total) {}
+  // When `finished` levels are done, and the share `next` (0 to 1) of the level after them.
+  double done(int finished, double next = 0) {
+    const std::vector<double> work = works();
+    double all = 0, done = 0;
+    for (int l = 1; l <= total_; ++l) {
+      all += work[size_t(l)];
+      if (l <= finished) done += work[size_t(l)];
+      else if (l == finished + 1) done += next * work[size_t(l)];
+    }
+    told_ = std::max(told_, all > 0 ? done / all : 1.0);
+    return told_;
   }
-  return total > 0 ? done / total : 1.0;
-}
+
+ private:
+  std::vector<double> works() const {
+    std::vector<double> faces(size_t(total_) + 1, 0);
+    size_t known = 0;
+    for (size_t l = 0; l < faces.size() && l < h_.levels.size() && (l == 0 || h_.levels[l].face_count() > 0); ++l)
+      faces[l] = double(h_.levels[l].face_count()), known = l;
+    const double growth = known > 0 && faces[known - 1] > 0 ? faces[known] / faces[known - 1] : 4.0;
+    for (size_t l = known + 1; l < faces.size(); ++l) faces[l] = faces[l - 1] * growth;
+    for (double& f : faces) f += 1;
+    return faces;
+  }
+  const Hierarchy& h_;
+  int total_;
+  double told_ = 0;
+};
 
 // ---- the scheme ----------------------------------------------------------------------------
 
@@ -262,20 +286,27 @@ void release(V& v) {
   V().swap(v);
 }
 
-void release_step(Hierarchy& h, int step, const RefineRequest& r) {
+// Unless the request says which arrays are described, parent faces are kept (4 bytes a
+// face): a describer that reads them must never find them gone.
+bool parent_faces_read(const RefineRequest& r) {
+  return !r.described_arrays || r.described_arrays->has("parent_face") || r.described_arrays->has("base_face");
+}
+
+void release_faces(Level& L) { release(L.face_vertices), release(L.face_edges), release(L.edge_vertices); }
+
+// With `faces_wait`, the level's faces, face edges and edge ends stay for the next level's
+// deferred faces (add_deferred_faces), released by release_faces after.
+void release_step(Hierarchy& h, int step, const RefineRequest& r, bool faces_wait) {
   Level& L = h.levels[size_t(step)];
-  release(L.face_vertices), release(L.face_edges), release(L.edge_vertices), release(L.edge_faces);
+  if (!faces_wait) release_faces(L);
+  release(L.edge_faces);
   release(L.vertex_ring_offsets), release(L.vertex_edges), release(L.vertex_face_offsets);
   release(L.vertex_faces), release(L.vertex_face_corner), release(L.vertex_on_boundary);
   ChildOrigins& o = h.origins[size_t(step)];
   release(o.parent), release(o.local), release(o.corner_side);
   const bool finest_next = size_t(step) + 2 == h.levels.size();
   if (!finest_next) release(o.kind);
-  // Unless the request says which arrays are described, parent faces are kept (4 bytes a
-  // face): a describer that reads them must never find them gone.
-  const bool parent_faces_read =
-      !r.described_arrays || r.described_arrays->has("parent_face") || r.described_arrays->has("base_face");
-  if (!parent_faces_read) release(o.parent_face);
+  if (!parent_faces_read(r)) release(o.parent_face);
 }
 
 }  // namespace
@@ -314,9 +345,20 @@ PreparedRefinement prepare_refinement(RefineRequest& r) {
 
 namespace {
 
+// Whether each level's topology is made just before its values (engine/topology_steps.h)
+// rather than all levels first: when coarser levels are released (each is then gone before
+// the level after next is made) and no per-vertex parameter is carried through the levels.
+bool topology_level_by_level(const RefineRequest& r, const MeshData& mesh, const RefineOptions& options) {
+  return releases_coarser_levels(r, mesh) && options.vertex_parameters.empty();
+}
+
 // refine_level_data; with `releasing` (h itself), each coarser level's topology is released
-// once the next level's values are made, where the request lets it (releases_coarser_levels).
-std::vector<LevelData> level_data(const PreparedRefinement& p, const Hierarchy& h, Hierarchy* releasing,
+// once the next level's values are made, where the request lets it (releases_coarser_levels);
+// with `stepwise` too, h holds the base level alone and each level's topology is made here,
+// just before its values, and a faces-only last level's faces after its values, once its
+// parent's rings and edges are gone (at level 3 of a 1M-quad mesh, 1.28 GB of faces and
+// 0.26 GB of parent faces are not alive with level 2's 1.9 GB of topology).
+std::vector<LevelData> level_data(const PreparedRefinement& p, const Hierarchy& h, Hierarchy* releasing, bool stepwise,
                                   const MeshData& mesh, const RefineOptions& options, const RefineRequest& r,
                                   LevelDataNotes& said) {
   const SchemeSequence& seq = p.sequence;
@@ -335,19 +377,31 @@ std::vector<LevelData> level_data(const PreparedRefinement& p, const Hierarchy& 
   // The bar moves within a level too: the engine tells each pass of the level's step (the
   // level's end is told below, once its points are checked).
   int level = 0;
+  LevelShares shares(h, seq.total_levels);
   const StepProgressScope::Report within = [&](double share) {
-    if (share < 1) say_done(r, levels_done(h, level, share));
+    if (share < 1) say_done(r, shares.done(level, share));
   };
   std::optional<StepProgressScope> passes;
   if (r.progress_fraction) passes.emplace(within);
+  const bool releases = releasing && releases_coarser_levels(r, mesh);
   for (int l = 0; l < seq.total_levels; ++l) {
-    say(r, fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels, h.levels[l + 1].face_count()));
+    // A last level without cell data to inherit (which reads its faces) may wait for its faces.
+    const bool faces_later = stepwise && refine_next_level(seq.runs, *releasing, options,
+                                                           l + 1 == seq.total_levels && levels.back().cell_data.empty());
+    say(r, fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels,
+                       faces_later ? deferred_face_count(seq.runs, h) : h.levels[size_t(l) + 1].face_count()));
     level = l;
-    levels.push_back(next_level_data(seq.runs, h, l, levels.back(), options));
+    const std::vector<SchemeRun> runs = stepwise ? runs_made(seq.runs, h) : seq.runs;
+    levels.push_back(next_level_data(runs, h, l, levels.back(), options));
     check_refined_points(levels.back(), l + 1, mesh.positions, r);
     if (!r.keep_all_levels) levels[size_t(l)] = {};
-    if (releasing && releases_coarser_levels(r, mesh)) release_step(*releasing, l, r);
-    say_done(r, levels_done(h, l + 1));
+    if (releases) release_step(*releasing, l, r, faces_later);
+    if (faces_later) {
+      add_deferred_faces(seq.runs, *releasing);
+      release_faces(releasing->levels[size_t(l)]);
+      if (!parent_faces_read(r)) release(releasing->origins[size_t(l)].parent_face);
+    }
+    say_done(r, shares.done(l + 1));
   }
   passes.reset();  // the face-varying steps below are not the levels' bar
   if (p.rational) project_levels(levels, p.weights_name, mesh.positions);
@@ -372,7 +426,11 @@ std::vector<LevelData> level_data(const PreparedRefinement& p, const Hierarchy& 
 
 std::vector<LevelData> refine_level_data(const PreparedRefinement& p, const Hierarchy& h, const MeshData& mesh,
                                          const RefineOptions& options, const RefineRequest& r, LevelDataNotes& said) {
-  return level_data(p, h, nullptr, mesh, options, r, said);
+  return level_data(p, h, nullptr, false, mesh, options, r, said);
+}
+
+bool last_level_faces_suffice(const RefineRequest& request, const PreparedRefinement& prepared) {
+  return last_level_faces_suffice(request, prepared.mesh, prepared.base);
 }
 
 RefineResult run_refinement(PreparedRefinement&& p, const RefineRequest& r) {
@@ -380,14 +438,17 @@ RefineResult run_refinement(PreparedRefinement&& p, const RefineRequest& r) {
                        r.memory_advice);
   RefineResult out;
   p.options.faces_only_last_level = last_level_faces_suffice(r, p.mesh, p.base);
-  say(r, fmt::format("refining topology: {} levels of {}{}", p.sequence.total_levels, p.scheme_label,
+  const bool stepwise = topology_level_by_level(r, p.mesh, p.options);
+  say(r, fmt::format("refining topology: {} levels of {}{}{}", p.sequence.total_levels, p.scheme_label,
+                     stepwise ? ", each level's just before its points" : "",
                      p.options.faces_only_last_level ? " (last level: faces only)" : ""));
-  out.hierarchy = refine_topology(p.sequence.runs, std::move(p.base), p.options);
+  out.hierarchy = stepwise ? start_topology(std::move(p.base), p.options)
+                           : refine_topology(p.sequence.runs, std::move(p.base), p.options);
+  LevelDataNotes said;
+  out.levels = level_data(p, out.hierarchy, &out.hierarchy, stepwise, p.mesh, p.options, r, said);
   out.warnings = std::move(p.warnings);
   out.warnings.insert(out.warnings.end(), out.hierarchy.warnings.begin(), out.hierarchy.warnings.end());
   out.notes = std::move(p.notes);
-  LevelDataNotes said;
-  out.levels = level_data(p, out.hierarchy, &out.hierarchy, p.mesh, p.options, r, said);
   out.notes.insert(out.notes.end(), said.notes.begin(), said.notes.end());
   out.dropped_arrays = std::move(said.dropped_arrays);
   if (r.limit_positions || r.limit_normals) {

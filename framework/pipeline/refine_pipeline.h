@@ -29,6 +29,11 @@ std::vector<LevelData> refine_level_data(const PreparedRefinement& prepared, con
                                          const RefineOptions& options, const RefineRequest& request,
                                          LevelDataNotes& said);
 
+// Whether the prepared mesh's last level can be built with its faces only
+// (RefineOptions::faces_only_last_level), as run_refinement decides it: for a caller that
+// refines the prepared mesh itself (in pieces, tools/subdiv/piece_refine.cpp).
+bool last_level_faces_suffice(const RefineRequest& request, const PreparedRefinement& prepared);
+
 // The rest: memory check, topology, level data, limits.
 RefineResult run_refinement(PreparedRefinement&& prepared, const RefineRequest& request);
 

@@ -53,23 +53,31 @@ void primal_origins(const Level& parent, bool with_face_points, ChildOrigins& o)
 
 // Which parent face each child face lies in: quad children follow parent corners; a
 // triangle's four children follow each other.
-void quad_origins(const Level& parent, ChildOrigins& o) {
-  primal_origins(parent, true, o);
-  resize_bulk(o.parent_face, size_t(parent.corner_count()));
+void quad_parent_faces(const Level& parent, ScratchVector<Index>& parent_face) {
+  resize_bulk(parent_face, size_t(parent.corner_count()));
   tbb::parallel_for(tbb::blocked_range<Index>(0, parent.face_count(), 1 << 12), [&](const tbb::blocked_range<Index>& r) {
     for (Index f = r.begin(); f < r.end(); ++f)
-      std::fill(o.parent_face.begin() + parent.face_offsets[f], o.parent_face.begin() + parent.face_offsets[f + 1], f);
+      std::fill(parent_face.begin() + parent.face_offsets[f], parent_face.begin() + parent.face_offsets[f + 1], f);
   });
+}
+
+void triangle_parent_faces(const Level& parent, ScratchVector<Index>& parent_face) {
+  resize_bulk(parent_face, 4 * size_t(parent.face_count()));
+  tbb::parallel_for(tbb::blocked_range<Index>(0, parent.face_count(), 1 << 14), [&](const tbb::blocked_range<Index>& r) {
+    Index* to = parent_face.data();
+    for (Index f = r.begin(); f < r.end(); ++f)
+      for (int t = 0; t < 4; ++t) to[4 * size_t(f) + t] = f;
+  });
+}
+
+void quad_origins(const Level& parent, ChildOrigins& o) {
+  primal_origins(parent, true, o);
+  quad_parent_faces(parent, o.parent_face);
 }
 
 void triangle_origins(const Level& parent, ChildOrigins& o) {
   primal_origins(parent, false, o);
-  resize_bulk(o.parent_face, 4 * size_t(parent.face_count()));
-  tbb::parallel_for(tbb::blocked_range<Index>(0, parent.face_count(), 1 << 14), [&](const tbb::blocked_range<Index>& r) {
-    Index* parent_face = o.parent_face.data();
-    for (Index f = r.begin(); f < r.end(); ++f)
-      for (int t = 0; t < 4; ++t) parent_face[4 * size_t(f) + t] = f;
-  });
+  triangle_parent_faces(parent, o.parent_face);
 }
 
 // The child level and the origins side by side: neither needs the other, and the child's
@@ -103,5 +111,20 @@ SplitResult split_triangle(const Level& parent) {
 SplitResult split_triangle_faces(const Level& parent) {
   return side_by_side(parent, false, triangle_split_faces, triangle_origins);
 }
+
+ChildOrigins quad_split_origins(const Level& parent) {
+  ChildOrigins o;
+  primal_origins(parent, true, o);
+  return o;
+}
+
+ChildOrigins triangle_split_origins(const Level& parent) {
+  ChildOrigins o;
+  primal_origins(parent, false, o);
+  return o;
+}
+
+void add_quad_parent_faces(const Level& parent, ChildOrigins& o) { quad_parent_faces(parent, o.parent_face); }
+void add_triangle_parent_faces(const Level& parent, ChildOrigins& o) { triangle_parent_faces(parent, o.parent_face); }
 
 }  // namespace subdiv

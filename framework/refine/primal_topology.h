@@ -8,6 +8,7 @@
 //   corner's out-edge to the face point; triangle: three per face, edge 3f+i joins the
 //   mid-points of face f's edges i and i-1);
 // - child faces: quad: one per parent corner; triangle: 4f+i at corner i, 4f+3 the middle.
+#include "framework/refine/child_origins.h"
 #include "framework/topology/level.h"
 
 namespace subdiv {
@@ -19,5 +20,14 @@ Level triangle_split_topology(const Level& parent);
 // for a last level that nothing refines further, as OpenSubdiv's default UniformOptions.
 Level quad_split_faces(const Level& parent);
 Level triangle_split_faces(const Level& parent);
+
+// The origins of split_quad and split_triangle alone, without their parent faces (which
+// only the child's faces need), for a last level whose values are made before its faces
+// (engine/topology_steps.h): the values read the parent level and these origins, never the
+// child's faces; the parent faces are added with the faces.
+ChildOrigins quad_split_origins(const Level& parent);
+ChildOrigins triangle_split_origins(const Level& parent);
+void add_quad_parent_faces(const Level& parent, ChildOrigins& origins);
+void add_triangle_parent_faces(const Level& parent, ChildOrigins& origins);
 
 }  // namespace subdiv

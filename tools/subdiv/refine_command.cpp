@@ -142,8 +142,9 @@ void run_in_pieces(const RefineArgs& a, const RefineRequest& request, const Prep
     if (first) notes = std::move(said.notes), first = false;
     return levels;
   };
-  const PieceSummary done =
-      refine_in_pieces(job, prepared.sequence, prepared.mesh, prepared.base, prepared.options, refine);
+  RefineOptions options = prepared.options;
+  options.faces_only_last_level = last_level_faces_suffice(request, prepared);
+  const PieceSummary done = refine_in_pieces(job, prepared.sequence, prepared.mesh, prepared.base, options, refine);
   progress.done();
   if (a.quiet) return;
   for (const auto& note : prepared.notes) print_safe("{}\n", spell_options(note, cli_option_spelling()));

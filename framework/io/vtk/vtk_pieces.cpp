@@ -20,12 +20,25 @@ namespace {
 
 std::string folder_name(const fs::path& pvtp) { return pvtp.stem().string() + "_pieces"; }
 
-// The XML head of a .vtp (everything before its binary appended data).
+// The markup of a .vtp up to its appended data, one tag a line: the text between tags
+// (inline base64 arrays, the whole file with the default encoding: 400 MB for a piece of
+// level 3 of a 1M-quad mesh) is skipped as it is read, not kept and searched.
 std::string xml_head(const fs::path& vtp) {
   std::ifstream in(vtp, std::ios::binary);
   if (!in) throw Error(fmt::format("cannot read piece {} to describe it in the .pvtp", subdiv::quoted(vtp.string())));
-  std::string head, line;
-  while (std::getline(in, line) && line.find("<AppendedData") == std::string::npos) head += line + "\n";
+  std::string head;
+  std::vector<char> chunk(size_t(1) << 20);
+  bool in_tag = false;
+  while (in.read(chunk.data(), std::streamsize(chunk.size())) || in.gcount() > 0) {
+    for (const char* c = chunk.data(); c != chunk.data() + in.gcount(); ++c) {
+      if (!in_tag && *c != '<') continue;
+      in_tag = *c != '>';
+      head += *c;
+      if (in_tag) continue;
+      if (head.find("<AppendedData", head.rfind('\n') + 1) != std::string::npos) return head;
+      head += '\n';
+    }
+  }
   return head;
 }
 

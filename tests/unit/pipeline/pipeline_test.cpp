@@ -95,6 +95,38 @@ TEST_CASE("with the finest level alone kept, coarser levels' topology is release
   }
 }
 
+TEST_CASE("topology made level by level, the last level's faces after its points: the same level as all levels first") {
+  // keep_all_levels takes refine_topology's whole hierarchy first; the finest level alone
+  // makes each level's topology before its points (engine/topology_steps.h) and, on a closed
+  // untagged mesh, the last level faces only, with its faces after its points. The same
+  // bits, for 1 and 2 threads (a 64 x 48 torus: level 3 has 196,608 faces, enough for the
+  // parallel loops to split).
+  for (const bool triangles : {false, true}) {
+    const char* scheme = triangles ? "loop" : "catmull-clark";
+    CAPTURE(scheme);
+    RefineRequest all = request_for(test::torus(64, 48, triangles), scheme, 3);
+    RefineRequest last = all;
+    last.keep_all_levels = false;
+    const RefineResult a = refine_mesh(all);
+    for (const int threads : {1, 2}) {
+      CAPTURE(threads);
+      const ThreadLimit limit(threads);
+      const RefineResult b = refine_mesh(last);
+      const Level& fa = a.hierarchy.levels.back();
+      const Level& fb = b.hierarchy.levels.back();
+      CHECK(fb.face_count() == 4 * a.hierarchy.levels[2].face_count());  // quads and triangles both split in four
+      CHECK(fb.edge_vertices.empty());  // faces only
+      CHECK(b.hierarchy.levels[2].face_vertices.capacity() == 0);  // the parent's faces went after use
+      CHECK(a.levels.back().positions == b.levels.back().positions);
+      CHECK(fa.vertex_count == fb.vertex_count);
+      CHECK(fa.face_offsets == fb.face_offsets);
+      CHECK(fa.face_vertices == fb.face_vertices);
+      CHECK(a.hierarchy.origins.back().parent_face == b.hierarchy.origins.back().parent_face);
+      CHECK(a.hierarchy.origins.back().kind == b.hierarchy.origins.back().kind);
+    }
+  }
+}
+
 TEST_CASE("shape options: the request's, else the mesh's tags, else OpenSubdiv's defaults") {
   const test::Mesh grid = test::grid(3, 3);
   RefineRequest r = request_for(grid, "catmull-clark", 1);
