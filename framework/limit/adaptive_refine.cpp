@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <numeric>
 #include <optional>
+#include <tbb/task_arena.h>
 
 #include "framework/analysis/curve/curve_scheme_analysis.h"
 #include "framework/analysis/surface/limit_evaluation.h"
@@ -194,6 +195,9 @@ constexpr double kBytesPerStageFace = 800;
 // Refuses a stage that would not fit before building it: a tolerance near 0 asks for the
 // uniform level, four times larger each level, where the process would otherwise run out
 // of memory (or be killed) half-way.
+// Stages of fewer faces are chosen and refined on the calling thread alone.
+constexpr Index kSerialFaces = 4096;
+
 // Levels that need less than kSmallStage are not checked (reading the limits costs a
 // tenth of a millisecond, a small level's whole time).
 constexpr double kSmallStage = 16 << 20;
@@ -288,12 +292,16 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<
     throw Error(fmt::format("adaptive refinement with scheme {}: the weight tables kept are scheme {}'s",
                             subdiv::quoted(scheme.name), subdiv::quoted(options.tables->scheme().name)));
   AdaptiveTables& tables = options.tables ? *options.tables : own_tables.emplace(scheme);
+  tbb::task_arena serial(1);
   for (int l = 0; l < levels; ++l) {
     AdaptiveStage& s = stages.back();
+    // A small level runs on this thread alone: its loops are shorter than handing them out.
+    const bool small = s.level.face_count() < kSerialFaces;
     {
       const StepProgressScope::Report share = StepProgressScope::part(2 * size_t(l), parts);
       const StepProgressScope choosing(share);
-      choose_splits(s, triangles, options, positions);
+      if (small && options.tolerance == 0) serial.execute([&] { choose_splits(s, triangles, options, positions); });
+      else choose_splits(s, triangles, options, positions);
     }
     const Index split_count = Index(std::count(s.split.begin(), s.split.end(), 1));
     out.split_faces.push_back(split_count);
@@ -306,7 +314,8 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<
     ro.evaluation.weight_tables = &tables.cache();
     const StepProgressScope::Report share = StepProgressScope::part(2 * size_t(l) + 1, parts);
     const StepProgressScope refining(share);
-    AdaptiveStage next = refine_stage(scheme, s, rings, ghosts, ro, triangles);
+    AdaptiveStage next = small ? serial.execute([&] { return refine_stage(scheme, s, rings, ghosts, ro, triangles); })
+                               : refine_stage(scheme, s, rings, ghosts, ro, triangles);
     out.computed_faces.push_back(next.level.face_count());
     stages.push_back(std::move(next));
   }
