@@ -18,7 +18,8 @@
 
 namespace subdiv {
 
-class StageTimes;  // rules/stage_times.h
+class StageTimes;        // rules/stage_times.h
+class WeightTableCache;  // engine/weight_table_cache.h
 
 // Parameter name -> one value per vertex of the base mesh.
 using VertexParameters = std::map<std::string, std::vector<double>>;
@@ -40,6 +41,9 @@ struct EvaluationSwitches {
   // Where to add each stage's wall and CPU time (rules/stage_times.h: topology, weight
   // tables, the step's set-up, each kind of new point), or null; for benchmarks.
   StageTimes* stage_times = nullptr;
+  // Where to keep the steps' weight tables for later refinements of the same scheme, or
+  // null (each refinement compiles its own); for many small refinements in a row.
+  WeightTableCache* weight_tables = nullptr;
 };
 
 // How to refine: the surface's shape (features: boundary interpolation and crease method, as

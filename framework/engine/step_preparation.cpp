@@ -8,6 +8,7 @@
 #include <tbb/task_arena.h>
 
 #include "framework/engine/vertex_parameters.h"
+#include "framework/engine/weight_table_cache.h"
 #include "framework/rules/kernel_contexts.h"
 #include "framework/scheme/step_tables.h"
 #include "framework/util/error.h"
@@ -48,7 +49,11 @@ StepInputs prepare_step(const Scheme& scheme, const StepRules& step, const Level
                         const RefineOptions& options, const VertexParameters& values, bool lazy_features) {
   const std::vector<int> valences = valences_present(parent);
   const int max_n = valences.empty() ? 0 : valences.back(), max_k = parent.max_face_size();
-  StepInputs inputs{step_weight_tables(scheme, step, max_n, max_k, level, nullptr, &valences),
+  auto tables = [&](int n, int k, const std::vector<int>& present) {
+    return step_weight_tables(scheme, step, n, k, level, nullptr, &present);
+  };
+  WeightTableCache* cache = options.evaluation.weight_tables;
+  StepInputs inputs{cache ? cache->get(step, level, max_n, max_k, valences, tables) : tables(max_n, max_k, valences),
                     per_vertex_tables(scheme, step, parent, values, max_n, max_k, level),
                     std::make_unique<StepFeatures>()};
   StepFeatures& f = *inputs.features;

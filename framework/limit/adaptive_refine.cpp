@@ -4,8 +4,14 @@
 #include <cmath>
 #include <cstdint>
 #include <fmt/format.h>
+#include <numeric>
+#include <optional>
+#include <tbb/task_arena.h>
 
+#include "framework/analysis/curve/curve_scheme_analysis.h"
+#include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/engine/ghost_rings.h"
+#include "framework/engine/weight_table_cache.h"
 #include "framework/limit/adaptive_stage.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/scheme/scheme.h"
@@ -189,15 +195,41 @@ constexpr double kBytesPerStageFace = 800;
 // Refuses a stage that would not fit before building it: a tolerance near 0 asks for the
 // uniform level, four times larger each level, where the process would otherwise run out
 // of memory (or be killed) half-way.
+// Stages of fewer faces are chosen and refined on the calling thread alone.
+constexpr Index kSerialFaces = 4096;
+
+// Levels that need less than kSmallStage are not checked: reading the limits (/proc and
+// cgroup files) costs 0.2-0.3 ms, more than a small level's whole refinement.
+constexpr double kSmallStage = 16 << 20;
+
 void check_stage_fits(Index split_count, int level) {
-  const MemoryBudget have = available_memory();
   const double need = 4.0 * double(split_count) * kBytesPerStageFace;
+  if (need < kSmallStage) return;
+  const MemoryBudget have = available_memory();
   if (need > have.bytes)
     throw Error(fmt::format("adaptive refinement: level {} would split {} faces into about {} and need about {:.1f} "
                             "GiB, but only {:.1f} GiB of memory is available (limited by {}); ask for fewer levels or "
                             "a larger tolerance",
                             level, split_count, 4 * std::int64_t(split_count), need / 1073741824.0,
                             have.bytes / 1073741824.0, have.source));
+}
+
+// Whether a weight formula of the scheme reads the level l: then each level compiles its own
+// weight tables; otherwise the first level's serve all (engine/weight_table_cache.h).
+bool reads_level(const Scheme& scheme) {
+  if (scheme_is_level_dependent(scheme)) return true;
+  FormulaSet formulas(scheme.parameter_values(), scheme.definitions);
+  for (const StepRules& step : scheme.steps) {
+    if (step.curve && curve_scheme_is_level_dependent(*step.curve)) return true;
+    for (const auto& rule : step.crease_ends)
+      if (rule)
+        for (const Term& term : rule->terms) {
+          if (!term.weight.empty() && formulas.uses(formulas.add(term.weight, term.where)).l) return true;
+          for (const std::string& w : term.curve_weights)
+            if (formulas.uses(formulas.add(w, term.where)).l) return true;
+        }
+  }
+  return false;
 }
 
 Index uniform_face_count(const Level& base, bool triangles, int levels) {
@@ -207,6 +239,16 @@ Index uniform_face_count(const Level& base, bool triangles, int levels) {
 }
 
 }  // namespace
+
+// Pieces have the base's valences and, along their cuts and boundaries, 1 to the regular one:
+// the first table is made for all of them.
+AdaptiveTables::AdaptiveTables(const Scheme& scheme) : scheme_(&scheme) {
+  std::vector<int> seed(scheme.split() == SplitKind::Triangle ? 6 : 4);
+  std::iota(seed.begin(), seed.end(), 1);
+  cache_ = std::make_unique<WeightTableCache>(!reads_level(scheme), std::move(seed));
+}
+
+AdaptiveTables::~AdaptiveTables() = default;
 
 AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<const double> positions,
                              const AdaptiveOptions& options, std::span<const double> data, int data_channels) {
@@ -245,12 +287,21 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<
   // A front-end's bar (util/step_progress.h): per level, choosing the faces and refining
   // them; then the limit positions.
   const size_t parts = 2 * size_t(levels) + (options.limit ? 1 : 0);
+  std::optional<AdaptiveTables> own_tables;
+  if (options.tables && &options.tables->scheme() != &scheme)
+    throw Error(fmt::format("adaptive refinement with scheme {}: the weight tables kept are scheme {}'s",
+                            subdiv::quoted(scheme.name), subdiv::quoted(options.tables->scheme().name)));
+  AdaptiveTables& tables = options.tables ? *options.tables : own_tables.emplace(scheme);
+  tbb::task_arena serial(1);
   for (int l = 0; l < levels; ++l) {
     AdaptiveStage& s = stages.back();
+    // A small level runs on this thread alone: its loops are shorter than handing them out.
+    const bool small = s.level.face_count() < kSerialFaces;
     {
       const StepProgressScope::Report share = StepProgressScope::part(2 * size_t(l), parts);
       const StepProgressScope choosing(share);
-      choose_splits(s, triangles, options, positions);
+      if (small && options.tolerance == 0) serial.execute([&] { choose_splits(s, triangles, options, positions); });
+      else choose_splits(s, triangles, options, positions);
     }
     const Index split_count = Index(std::count(s.split.begin(), s.split.end(), 1));
     out.split_faces.push_back(split_count);
@@ -260,9 +311,11 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<
     ro.levels = 1;
     ro.features = options.features;
     ro.first_step = options.first_step + l;
+    ro.evaluation.weight_tables = &tables.cache();
     const StepProgressScope::Report share = StepProgressScope::part(2 * size_t(l) + 1, parts);
     const StepProgressScope refining(share);
-    AdaptiveStage next = refine_stage(scheme, s, rings, ghosts, ro, triangles);
+    AdaptiveStage next = small ? serial.execute([&] { return refine_stage(scheme, s, rings, ghosts, ro, triangles); })
+                               : refine_stage(scheme, s, rings, ghosts, ro, triangles);
     out.computed_faces.push_back(next.level.face_count());
     stages.push_back(std::move(next));
   }

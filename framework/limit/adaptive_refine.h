@@ -19,6 +19,7 @@
 // faces are split), or on the limit surface with `limit`.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -29,6 +30,25 @@ namespace subdiv {
 
 struct Scheme;
 class LimitSurface;
+class WeightTableCache;
+
+// A scheme's weight tables kept from one adaptive refinement for the next: each call
+// otherwise compiles them once (muParser over the scheme's formulas, about 2 ms, most of a
+// small mesh's time). The scheme must outlive it; a call with another scheme is refused.
+class AdaptiveTables {
+public:
+  explicit AdaptiveTables(const Scheme& scheme);
+  ~AdaptiveTables();
+  AdaptiveTables(const AdaptiveTables&) = delete;
+  AdaptiveTables& operator=(const AdaptiveTables&) = delete;
+
+  const Scheme& scheme() const { return *scheme_; }
+  WeightTableCache& cache() { return *cache_; }
+
+private:
+  const Scheme* scheme_;
+  std::unique_ptr<WeightTableCache> cache_;
+};
 
 struct AdaptiveOptions {
   int levels = 0;            // the cap L, 0..12
@@ -41,6 +61,8 @@ struct AdaptiveOptions {
   double tolerance = 0;
   // The exact evaluator of the same scheme, base level and features (limit_surface.h).
   const LimitSurface* surface = nullptr;
+  // Weight tables kept between calls with the same scheme, or null (compiled for this call).
+  AdaptiveTables* tables = nullptr;
 };
 
 struct AdaptiveMesh {
@@ -62,7 +84,8 @@ struct AdaptiveMesh {
   std::vector<Index> computed_faces;  // per level 1..L: child faces computed (the work)
 };
 
-// Throws subdiv::Error for a split other than the binary quad and triangle splits, levels
+// Throws subdiv::Error for a split other than the binary quad and triangle splits, `tables`
+// of another scheme, levels
 // outside 0..12, a non-manifold mesh, a triangle split of a mesh with other faces, and
 // `limit` or `tolerance` without a surface.
 // `data` (data_channels per base vertex): point arrays placed like the positions — refined

@@ -3,7 +3,9 @@
 // mesh) against OpenSubdiv's Far::TopologyRefiner::RefineAdaptive + PatchTableFactory::Create
 // (the patches a renderer draws) + PrimvarRefiner::Interpolate of the points over the levels,
 // Catmull-Clark, on the same meshes, same run, one thread. Rounds alternate between the two;
-// the best round of each is reported with the ratio and the load average. A program, not a
+// the best round of each is reported with the ratio and the load average. Ours twice: as one
+// call pays (its weight tables compiled), and with the tables kept between calls
+// (AdaptiveTables). A program, not a
 // test; the numbers are in docs/limit.md.
 //
 //   subdiv-adaptive-bench [levels] [rounds] [mesh.obj ...]   (run it under `taskset -c 0`)
@@ -92,7 +94,9 @@ struct Round {
   long faces = 0;
 };
 
-Round ours(const Mesh& m, const subdiv::Scheme& scheme, int levels) {
+// `tables`: weight tables kept from earlier calls (warm), or null (compiled in the call, as
+// one `subdiv refine --adaptive` does).
+Round ours(const Mesh& m, const subdiv::Scheme& scheme, int levels, subdiv::AdaptiveTables* tables) {
   const auto t0 = Clock::now();
   std::vector<subdiv::Index> offsets{0};
   for (int s : m.sizes) offsets.push_back(offsets.back() + s);
@@ -100,6 +104,7 @@ Round ours(const Mesh& m, const subdiv::Scheme& scheme, int levels) {
       subdiv::build_level(m.vertices, offsets, std::vector<subdiv::Index>(m.corners.begin(), m.corners.end()));
   subdiv::AdaptiveOptions o;
   o.levels = levels;
+  o.tables = tables;
   const subdiv::AdaptiveMesh a = subdiv::refine_adaptive(scheme, base, m.xyz, o);
   return {seconds(t0, Clock::now()), long(a.face_offsets.size()) - 1};
 }
@@ -154,18 +159,21 @@ int main(int argc, char** argv) {
   getloadavg(load, 3);
   std::printf("adaptive Catmull-Clark to level %d, best of %d alternating rounds, load average %.2f %.2f %.2f\n",
               levels, rounds, load[0], load[1], load[2]);
+  subdiv::AdaptiveTables tables(*scheme);
   for (const Mesh& m : meshes) {
-    Round a{1e300, 0}, b{1e300, 0};
+    Round a{1e300, 0}, w{1e300, 0}, b{1e300, 0};
     for (int r = 0; r < rounds; ++r) {
-      const Round x = ours(m, *scheme, levels);
+      const Round x = ours(m, *scheme, levels, nullptr);
+      const Round z = ours(m, *scheme, levels, &tables);
       const Round y = opensubdiv(m, levels);
       if (x.seconds < a.seconds) a = x;
+      if (z.seconds < w.seconds) w = z;
       if (y.seconds < b.seconds) b = y;
     }
-    std::printf("%s, %zu faces: ours %.3f ms (%ld faces out), OpenSubdiv RefineAdaptive + PatchTable + points "
-                "%.3f ms (%ld patches); ours / OpenSubdiv %.2f\n",
-                m.name.c_str(), m.sizes.size(), a.seconds * 1e3, a.faces, b.seconds * 1e3, b.faces,
-                a.seconds / b.seconds);
+    std::printf("%s, %zu faces: ours %.3f ms, with weight tables kept %.3f ms (%ld faces out); OpenSubdiv "
+                "RefineAdaptive + PatchTable + points %.3f ms (%ld patches); ours / OpenSubdiv %.2f, kept %.2f\n",
+                m.name.c_str(), m.sizes.size(), a.seconds * 1e3, w.seconds * 1e3, a.faces, b.seconds * 1e3, b.faces,
+                a.seconds / b.seconds, w.seconds / b.seconds);
   }
   getloadavg(load, 3);
   std::printf("load average after: %.2f %.2f %.2f\n", load[0], load[1], load[2]);

@@ -150,3 +150,28 @@ TEST_CASE("Point arrays on adaptive meshes are placed like the positions, with a
   o.levels = 1;
   CHECK_THROWS_AS(refine_adaptive(*scheme, base, m.positions, o, std::vector<double>(5, 0.0), 1), Error);
 }
+
+TEST_CASE("Weight tables kept between adaptive refinements give the same meshes, bit for bit") {
+  // A kept table is made for more valences and face sizes than the next mesh has (the
+  // pyramid's triangles and valence-4 apex first): its values at the smaller ones must be
+  // those a fresh call compiles.
+  const auto scheme = load_scheme("catmull-clark");
+  AdaptiveTables tables(*scheme);
+  const test::Mesh meshes[] = {test::pyramid(), test::cube(), test::torus(8, 6), test::pyramid()};
+  for (const test::Mesh& mesh : meshes) {
+    AdaptiveOptions o;
+    o.levels = 4;
+    const AdaptiveMesh fresh = refine_adaptive(*scheme, mesh.level(), mesh.positions, o);
+    o.tables = &tables;
+    const AdaptiveMesh kept = refine_adaptive(*scheme, mesh.level(), mesh.positions, o);
+    CHECK(kept.face_vertices == fresh.face_vertices);
+    CHECK(kept.positions == fresh.positions);  // exactly
+  }
+  const auto loop = load_scheme("loop");
+  AdaptiveOptions o;
+  o.levels = 2;
+  o.tables = &tables;
+  const test::Mesh octahedron = test::octahedron();
+  CHECK_THROWS_WITH_AS(refine_adaptive(*loop, octahedron.level(), octahedron.positions, o),
+                       doctest::Contains("weight tables kept are scheme"), Error);
+}
