@@ -14,6 +14,7 @@
 #include <fstream>
 #include <string>
 #include <Eigen/Dense>
+#include <nlohmann/json.hpp>
 #include <tbb/global_control.h>
 
 #include "framework/scheme/scheme_validator.h"
@@ -426,6 +427,34 @@ TEST_CASE("quad-bspline crease ends: without the end rules the crease next to a 
   REQUIRE(got.size() == expected.size());
   CHECK(dist(got[1], expected[1]) > 1e-3);
   CHECK(dist(got[got.size() / 2], expected[got.size() / 2]) < 1e-12);  // the middle is the uniform rule
+}
+
+TEST_CASE("quad-bspline crease ends: without the rules for a crease's length a short crease is not the clamped "
+          "spline") {
+  // quad-bspline with its "length" entries left out: on a crease of 3 edges the rules by
+  // distance alone read past the far corner, so the test of short creases above could fail.
+  std::ifstream in(std::string(SUBDIV_SOURCE_DIR) + "/schemes/quad-bspline.json");
+  nlohmann::json j = nlohmann::json::parse(in);
+  for (auto& step : j["steps"])
+    if (step.contains("smooth") && step["smooth"]["vertex"].contains("crease-ends")) {
+      nlohmann::json kept = nlohmann::json::array();
+      for (const auto& entry : step["smooth"]["vertex"]["crease-ends"])
+        if (!entry.contains("length")) kept.push_back(entry);
+      step["smooth"]["vertex"]["crease-ends"] = kept;
+    }
+  const auto s = load_scheme_text(j.dump(), "no-lengths.json", {{"d", "4"}});
+  const CreasedGrid g = short_crease(3);
+  Polygon crease;
+  for (Index v : g.path) crease.push_back(point(g.mesh.positions, v));
+  RefineOptions options;
+  options.levels = 1;
+  const Hierarchy h = refine(*s, tagged(g.mesh, g.path), options);
+  const Polygon expected = natural_clamped_refined(crease, 4, 1);
+  const Polygon got = crease_at(h, 1, g.mesh.positions, crease.front());
+  REQUIRE(got.size() == expected.size());
+  double worst = 0;
+  for (size_t i = 0; i < got.size(); ++i) worst = std::max(worst, dist(got[i], expected[i]));
+  CHECK(worst > 1e-3);
 }
 
 TEST_CASE("quad-bspline crease ends: one and two threads give the same bits") {
