@@ -10,7 +10,12 @@ again. The scheme makes it in steps: the dual split gives the case d = 2 (Chaiki
 end segment's midpoint next to the corner), and pass i maps the refined crease of degree 2i
 to that of degree 2i + 2. For every distance D from the corner this script solves for the
 pass's weights on the nearest crease points (offsets from the vertex, negative towards the
-corner) and prints them; rows equal to (1/4, 1/2, 1/4) need no end rule.
+corner) and prints them; rows equal to (1/4, 1/2, 1/4) need no end rule. A crease of N
+edges between two corners is the spline with the end condition at both ends; where the
+rules by distance alone do not give it (short creases: the two ends' rows overlap), the
+script solves those rows within the crease and prints them with the crease's length on the
+pass's level ("length": 2N - 1; such an entry takes precedence over the entry for its distance). N = 1 (one edge between two corners) has no
+point between its corners on any level: the crease stays the segment, which is the curve.
 
     python3 docs/derivations/quad_bspline_crease_ends.py 6     # needs sympy
 """
@@ -45,20 +50,52 @@ def insert_knot(knots, ctrl, p, t):
     return q
 
 
+def end_derivatives(knots, p, count):
+    """Rows of the derivatives 0..count at the start of a clamped B-spline of degree p, as
+    weights on its control points 0..count (the derivative of a B-spline is a B-spline of
+    degree p - 1 with control points p (P(i+1) - P(i)) / (t(i+p+1) - t(i+1)); at a clamped
+    start it equals its first control point)."""
+    rows = [[F(int(i == j)) for j in range(count + 1)] for i in range(count + 1)]
+    out = [rows[0]]
+    for _ in range(count):
+        rows = [[p * (rows[i + 1][j] - rows[i][j]) / (knots[i + p + 1] - knots[i + 1]) for j in range(count + 1)]
+                for i in range(len(rows) - 1)]
+        knots, p = knots[1:-1], p - 1
+        out.append(rows[0])
+    return out
+
+
+def end_points(knots, d, c, q):
+    """The control points 1..m-1 after corner c, with q the m-th, that make the derivatives
+    2..m vanish at c (m = d/2), on these knots: {index of M: weight} each."""
+    m = d // 2
+    if m < 2:
+        return []
+    rows = end_derivatives(knots, d, m)[2:]
+    A = sp.Matrix([[r[j] for j in range(1, m)] for r in rows])
+    out = []
+    for i, coef in enumerate(A.LUsolve(sp.Matrix([-r[0] for r in rows])), start=1):
+        cq = A.LUsolve(sp.Matrix([-r[m] for r in rows]))[i - 1]
+        out.append(comb([(coef, c), (cq, q)]))
+    return out
+
+
 def refined(n, d):
-    """Rows (as {index of M: weight}) of one level of the crease M0..M(n-1) between two corners."""
+    """Rows (as {index of M: weight}) of one level of the crease M0..M(n-1) between two corners:
+    the control polygon c, Q1..Q(m-1), M1..M(n-2), Q'(m-1)..Q'1, c' of the clamped uniform
+    degree-d B-spline whose derivatives 2..m vanish at both corners (the Qs follow from that),
+    with every knot interval's midpoint inserted, then without the Qs."""
     m = d // 2
     M = [{i: F(1)} for i in range(n)]
-
-    def implied(c, q):
-        return [comb([(1 - F(i * (i + 1), m * (m + 1)), c), (F(i * (i + 1), m * (m + 1)), q)]) for i in range(1, m)]
-
-    Q = [M[0]] + implied(M[0], M[1]) + M[1:-1] + implied(M[-1], M[-2])[::-1] + [M[-1]]
-    K = len(Q) - d
+    K = n - 2  # knot intervals: n + 2(m - 1) control points, degree 2m
     knots = [F(0)] * (d + 1) + [F(i) for i in range(1, K)] + [F(K)] * (d + 1)
+    mirrored = [K - t for t in reversed(knots)]
+    Q = [M[0]] + end_points(knots, d, M[0], M[1]) + M[1:-1] + end_points(mirrored, d, M[-1], M[-2])[::-1] + [M[-1]]
     for t in [F(2 * i + 1, 2) for i in range(K)]:
         Q = insert_knot(knots, Q, d, t)
-    assert Q[1:m] == implied(Q[0], Q[m]), "the end condition is kept by knot insertion"
+    mirrored = [2 * K - t for t in reversed(knots)]
+    assert Q[1:m] == end_points(knots, d, Q[0], Q[m]), "the end condition is kept by knot insertion"
+    assert Q[len(Q) - m:-1] == end_points(mirrored, d, Q[-1], Q[-1 - m])[::-1], "at both ends"
     return [Q[0]] + Q[m:len(Q) - m] + [Q[-1]]
 
 
@@ -89,15 +126,72 @@ def pass_rows(src, target, n, rows):
     return out
 
 
+def uniform_row():
+    return {-1: sp.Rational(1, 4), 0: sp.Rational(1, 2), 1: sp.Rational(1, 4)}
+
+
+def apply_rule(src, k, length, rule):
+    """Rule `rule` (offsets towards the nearer corner negative) at point k of a crease of
+    `length` edges, as {index of M: weight}; None where a step leaves the crease."""
+    toward_end = length - k < k  # the nearer corner is point `length`: mirror the steps
+    out = {}
+    for o, w in rule.items():
+        i = k - o if toward_end else k + o
+        if i < 0 or i > length:
+            return None
+        for key, c in src[i].items():
+            out[key] = out.get(key, 0) + w * c
+    return {key: c for key, c in out.items() if c != 0}
+
+
+def short_crease_rows(src, target, n, rules):
+    """The rows of a crease of len(src) - 1 edges between two corners, up to its middle (the
+    others mirror them), that the rules by distance alone do not give: solved within the crease."""
+    length = len(src) - 1
+    solved = pass_rows(src, target, n, length // 2 + 1)
+    out = {}
+    for k in range(1, length // 2 + 1):
+        want = {key: c for key, c in target[k].items() if c != 0}
+        if apply_rule(src, k, length, rules.get(k, uniform_row())) != want:
+            assert solved[k - 1], f"no row for distance {k} of a crease of {length} edges"
+            assert apply_rule(src, k, length, solved[k - 1]) == want
+            out[k] = solved[k - 1]
+    return out
+
+
+def json_term(o, w):
+    if o == 0:
+        return f'{{"at": "self", "w": "{w}"}}'
+    return f'{{"at": "crease-point", "step": {o}, "w": "{w}"}}'
+
+
+def json_entry(distance, row, length=None):
+    terms = ", ".join(json_term(o, w) for o, w in sorted(row.items()))
+    key = f'"distance": {distance}' + (f', "length": {length}' if length else "")
+    return f'{{{key}, "rule": [{terms}]}}'
+
+
 if __name__ == "__main__":
+    # Creases of N edges between two corners on the level a pass refines become creases of
+    # 2N - 1 edges after the dual split (the pass's own level): the pass sees odd lengths.
     d = int(sys.argv[1]) if len(sys.argv) > 1 else 6
-    n, rows = 30, 16
-    src = refined(n, 2)
-    uniform = {-1: sp.Rational(1, 4), 0: sp.Rational(1, 2), 1: sp.Rational(1, 4)}
+    n, rows, longest = 30, 16, 16
+    uniform = uniform_row()
+    degree_before = 2
     for degree in range(4, d + 1, 2):
-        target = refined(n, degree)
-        print(f"pass to degree {degree}: crease-ends (distance: {{step: weight}})")
-        for k, row in enumerate(pass_rows(src, target, n, rows), start=1):
-            if row != uniform:
-                print(f"  {k}: " + ", ".join(f"{o}: {w}" for o, w in sorted(row.items())))
-        src = target
+        src, target = refined(n, degree - 2), refined(n, degree)
+        rules = {k: row for k, row in enumerate(pass_rows(src, target, n, rows), start=1) if row != uniform}
+        print(f"pass to degree {degree}: crease-ends, by distance from the nearer corner")
+        entries = [json_entry(k, row) for k, row in sorted(rules.items())]
+        short_exact_from = None
+        for N in range(2, longest + 1):
+            length = 2 * N - 1
+            own = short_crease_rows(refined(N + 1, degree - 2), refined(N + 1, degree), N + 1, rules)
+            if not own:
+                short_exact_from = short_exact_from or N
+                continue
+            assert short_exact_from is None, f"N = {N} needs its own rules after N = {short_exact_from} did not"
+            entries += [json_entry(k, row, length) for k, row in sorted(own.items())]
+        print(",\n".join("  " + e for e in entries))
+        print(f"  (rules by distance alone are exact from N = {short_exact_from} crease edges on the level "
+              f"before the split, checked up to N = {longest})")

@@ -92,9 +92,11 @@ double step_rules_reach(const Scheme& scheme, const StepRules& step) {
       if (rule) reach = std::max(reach, rule_reach(Element(e), *rule, step.rules, scheme));
   // Crease rules by distance from a corner: a crease vertex looks for a corner as far along
   // its crease as the largest distance named, and its rule reads its crease points.
-  for (size_t d = 0; d < step.crease_ends.size(); ++d)
-    if (step.crease_ends[d])
-      reach = std::max({reach, double(step.crease_ends.size() - 1), rule_reach(Element::Vertex, *step.crease_ends[d], step.rules, scheme)});
+  // Rules for a crease's length look for the far corner as well (CreaseEndTable::search_reach).
+  if (!step.crease_ends.empty()) reach = std::max(reach, double(step.crease_ends.search_reach()));
+  step.crease_ends.each([&](int, int, const std::optional<Rule>& rule) {
+    if (rule) reach = std::max(reach, rule_reach(Element::Vertex, *rule, step.rules, scheme));
+  });
   const CurveScheme* curve = step.curve ? step.curve.get() : step.curve_rules_apply ? scheme.curve.get() : nullptr;
   if (curve && !curve->nonlinear) reach = std::max(reach, curve_reach(*curve));
   return reach;

@@ -109,7 +109,7 @@ std::optional<std::vector<std::pair<Index, double>>> crease_middle_limit(const L
 int crease_end_reach(const Scheme& scheme) {
   int reach = 0;
   for (const StepRules& pass : scheme.steps)
-    if (!pass.crease_ends.empty()) reach += int(pass.crease_ends.size()) - 1;
+    if (!pass.crease_ends.empty()) reach += pass.crease_ends.search_reach();
   return reach;
 }
 

@@ -30,7 +30,8 @@ std::optional<std::vector<std::pair<Index, double>>> crease_middle_limit(const L
                                                                          Index face, CreaseRun run, int corner_reach);
 
 // How many crease edges from a corner a step of `scheme` uses other crease rules than along
-// the rest of the crease (its "crease-ends" rules, over the step's passes); 0 without them.
+// the rest of the crease (its "crease-ends" rules, by distance and by a short crease's length:
+// CreaseEndTable::search_reach, over the step's passes); 0 without them.
 int crease_end_reach(const Scheme& scheme);
 
 }  // namespace subdiv

@@ -32,9 +32,10 @@ CornerDistance distance_to_corner(const Level& level, const FeatureContexts& fea
                                   const std::array<Index, 2>& edges, int max_distance) {
   const int a = steps_to_corner(level, features, v, edges[0], max_distance);
   const int b = steps_to_corner(level, features, v, edges[1], max_distance);
+  const int length = a != 0 && b != 0 ? a + b : 0;
   if (a == 0 && b == 0) return {};
-  if (b == 0 || (a != 0 && a <= b)) return {a, 0};
-  return {b, 1};
+  if (b == 0 || (a != 0 && a <= b)) return {a, 0, length};
+  return {b, 1, length};
 }
 
 void add_curve_point(RowBuilder& row, const Level& level, const FeatureContexts& features,

@@ -3,9 +3,11 @@
 // sum over neighbourhood roles. A term names a role, optionally a kind of new point of the
 // same step (then each point of the role stands for that new point, expanded by the
 // engine), and a weight formula evaluated for every point j of the role.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -69,11 +71,37 @@ struct Rule {
 using RuleTable = std::array<std::array<std::optional<Rule>, kContextCount>, kElementCount>;
 
 // Vertex crease rules chosen by a crease vertex's distance (in crease edges) from the nearest
-// corner its crease ends at: entry D, when set, replaces the `crease` rule at distance D
-// ("crease-ends" in a scheme file). Entry 0 is never set (a corner uses the corner rule).
-using CreaseEndRules = std::vector<std::optional<Rule>>;
-// The largest distance and the largest |step| a crease-end rule may name.
+// corner its crease ends at ("crease-ends" in a scheme file): by_distance[D], when set,
+// replaces the `crease` rule at distance D; on a crease of exactly L edges between two corners
+// by_length[L][D], when set, takes precedence (short creases, whose two ends' rules overlap).
+// Entry 0 is never set (a corner uses the corner rule). Slot: std::optional<Rule> as loaded,
+// CompiledRule once compiled.
+template <class Slot>
+struct CreaseEndTable {
+  std::vector<Slot> by_distance;
+  std::map<int, std::vector<Slot>> by_length;
+
+  bool empty() const { return by_distance.empty() && by_length.empty(); }
+  // How far along its crease a crease vertex looks for corners: the largest distance named,
+  // and L - 1 for a crease of L edges (from the vertex next to one corner to the other).
+  int search_reach() const {
+    int reach = by_distance.empty() ? 0 : int(by_distance.size()) - 1;
+    if (!by_length.empty()) reach = std::max(reach, by_length.rbegin()->first - 1);
+    return reach;
+  }
+  // f(distance, length or 0, slot) for every slot, set or not.
+  template <class F>
+  void each(F&& f) const {
+    for (size_t d = 0; d < by_distance.size(); ++d) f(int(d), 0, by_distance[d]);
+    for (const auto& [length, slots] : by_length)
+      for (size_t d = 0; d < slots.size(); ++d) f(int(d), length, slots[d]);
+  }
+};
+using CreaseEndRules = CreaseEndTable<std::optional<Rule>>;
+// The largest distance and the largest |step| a crease-end rule may name, and the longest
+// crease (in edges between its corners) a rule for one length may name.
 constexpr int kMaxCreaseReach = 16;
+constexpr int kMaxCreaseLength = 2 * kMaxCreaseReach + 1;
 
 // Roles registered at run time (plugins) take Role values from kFirstRegisteredRole up. A
 // registered role lists parent vertices around one element in a canonical order; a term

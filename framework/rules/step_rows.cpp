@@ -82,6 +82,17 @@ void apply_dual_segment_rule(RowBuilder& row, const StepContext& s, const RuleIn
   apply_segment_curve_rule(row, in, e, a, b, curve_rule(s, near_a ? 0 : 1, Element::Corner), w);
 }
 
+// The crease-end rule for a crease vertex this far from its corners: the one for its crease's
+// length and distance, else the one for its distance, else none (the `crease` rule).
+const CompiledRule* crease_end_rule(const CreaseEndTable<CompiledRule>& ends, const CornerDistance& d) {
+  if (d.distance <= 0) return nullptr;
+  const size_t at = size_t(d.distance);
+  if (const auto it = ends.by_length.find(d.length); d.length > 0 && it != ends.by_length.end())
+    if (at < it->second.size() && it->second[at].defined) return &it->second[at];
+  if (at < ends.by_distance.size() && ends.by_distance[at].defined) return &ends.by_distance[at];
+  return nullptr;
+}
+
 void fill_vertex_row(RowBuilder& row, const StepContext& s, const RuleInputs& in, Index v) {
   const VertexContext& vc = s.features.vertices[v];
   const WeightTables& tables = s.vertex_tables(v);
@@ -94,10 +105,10 @@ void fill_vertex_row(RowBuilder& row, const StepContext& s, const RuleInputs& in
       // A rule stated for this distance from the nearest corner, oriented towards it.
       const auto ring = s.parent.ring_edges(v);
       const CornerDistance d = distance_to_corner(s.parent, s.features, v, {ring[crease[0]], ring[crease[1]]},
-                                                  int(tables.crease_ends.size()) - 1);
-      if (d.distance > 0 && tables.crease_ends[size_t(d.distance)].defined) {
+                                                  tables.crease_ends.search_reach());
+      if (const CompiledRule* rule = crease_end_rule(tables.crease_ends, d)) {
         const std::array<std::uint16_t, 2> toward = d.side == 0 ? crease : std::array<std::uint16_t, 2>{crease[1], crease[0]};
-        return apply_vertex_rule(row, in, v, tables.crease_ends[size_t(d.distance)], toward, w);
+        return apply_vertex_rule(row, in, v, *rule, toward, w);
       }
     }
     if (c == Context::Crease && !tables.rule(Element::Vertex, c).defined) {

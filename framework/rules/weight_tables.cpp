@@ -178,13 +178,19 @@ CompiledRule stay_rule() {
   return out;
 }
 
-std::vector<CompiledRule> compile_crease_end_rules(const CreaseEndRules& rules, const FormulaScope& scope, int max_n,
-                                                   int max_k, int level) {
+CreaseEndTable<CompiledRule> compile_crease_end_rules(const CreaseEndRules& rules, const FormulaScope& scope, int max_n,
+                                                      int max_k, int level) {
   static const std::vector<NamedFormula> none;
   FormulaSet formulas(scope.parameters, scope.definitions ? *scope.definitions : none);
-  std::vector<CompiledRule> out(rules.size());
-  for (size_t d = 0; d < rules.size(); ++d)
-    if (rules[d]) out[d] = compile_rule(*rules[d], formulas, scope.valences, max_n, max_k, level);
+  auto compiled = [&](const std::vector<std::optional<Rule>>& slots) {
+    std::vector<CompiledRule> out(slots.size());
+    for (size_t d = 0; d < slots.size(); ++d)
+      if (slots[d]) out[d] = compile_rule(*slots[d], formulas, scope.valences, max_n, max_k, level);
+    return out;
+  };
+  CreaseEndTable<CompiledRule> out;
+  out.by_distance = compiled(rules.by_distance);
+  for (const auto& entry : rules.by_length) out.by_length[entry.first] = compiled(entry.second);
   return out;
 }
 

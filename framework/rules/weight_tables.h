@@ -56,9 +56,9 @@ struct WeightTables {
   // defaults for crease vertices (r = 0) and the r-th new point along a crease edge.
   std::vector<CompiledRule> curve_rules;
   int curve_arity = 0;
-  // Vertex crease rules by distance from the nearest corner (rule.h: CreaseEndRules); entry D
+  // Vertex crease rules by distance from the nearest corner (rule.h: CreaseEndTable); an entry
   // is defined where the scheme states one. Empty: the `crease` rule everywhere.
-  std::vector<CompiledRule> crease_ends;
+  CreaseEndTable<CompiledRule> crease_ends;
   int max_n = 0, max_k = 0;
 
   const CompiledRule& rule(Element e, Context c) const { return rules[int(e)][int(c)]; }
@@ -81,7 +81,7 @@ struct FormulaScope {
 WeightTables compile_rule_table(const RuleTable& rules, const FormulaScope& scope, int max_n, int max_k, int level);
 
 // The crease-end rules, compiled like compile_rule_table's (entry D undefined where none is stated).
-std::vector<CompiledRule> compile_crease_end_rules(const CreaseEndRules& rules, const FormulaScope& scope, int max_n,
+CreaseEndTable<CompiledRule> compile_crease_end_rules(const CreaseEndRules& rules, const FormulaScope& scope, int max_n,
                                                    int max_k, int level);
 
 // Rule r of a curve scheme of arity `starts.size()`: new point m*i + r = sum_t w[r][t] *

@@ -347,30 +347,58 @@ void refuse_crease_roles(const Rule& rule, const Place& at) {
     if (crease_only_role(t.role)) fail(at, fmt::format("role {} exists only in crease rules", subdiv::quoted(role_name(t.role))));
 }
 
-// "crease-ends": [{"distance": D, "rule": [terms]}, ...]: vertex crease rules for the crease
-// vertices D crease edges from the nearest corner (rule.h: CreaseEndRules). A crease-point may
-// reach the corner (step -D) but not past it.
+// The middle vertex of a crease of even length is as far from both corners: its rule must
+// read the same either way (a crease-point at step s weighted as the one at -s).
+void require_mirrored(const Rule& rule, int length, const Place& at) {
+  for (const Term& t : rule.terms) {
+    if (t.role != Role::CreasePoint) continue;
+    bool mirrored = false;
+    for (const Term& u : rule.terms) mirrored = mirrored || (u.role == Role::CreasePoint && u.step == -t.step && u.weight == t.weight);
+    if (!mirrored)
+      fail(at, fmt::format("the middle vertex of a crease of {} edges is {} edges from both corners, so its rule must "
+                           "be symmetric: step {} needs a crease-point at step {} with the same weight \"{}\"",
+                           length, length / 2, t.step, -t.step, t.weight));
+  }
+}
+
+// "crease-ends": [{"distance": D, "length": L, "rule": [terms]}, ...]: vertex crease rules for
+// the crease vertices D crease edges from the nearest corner (rule.h: CreaseEndRules); with
+// "length", only on a crease of exactly L edges between two corners, where it takes
+// precedence. A crease-point may reach the corner (step -D) but not past it, nor past the
+// far corner of a crease of length L (step L - D).
 CreaseEndRules parse_crease_ends(const Json& j, const Place& at) {
   if (!j.is_array() || j.empty())
-    fail(at, "expected a non-empty array of {\"distance\": D, \"rule\": [terms]}, D the number of crease edges from the "
-             "nearest corner");
+    fail(at, "expected a non-empty array of {\"distance\": D, \"rule\": [terms]} (and optionally \"length\": L), D the "
+             "number of crease edges from the nearest corner, L the crease's length between its two corners");
   CreaseEndRules ends;
   for (size_t i = 0; i < j.size(); ++i) {
     const Place here = at[i];
     require_object(j[i], here);
-    check_keys(j[i], {"distance", "rule"}, here);
-    const int d = as_whole(require(j[i], "distance", here), 1, kMaxCreaseReach, here / "distance");
-    if (size_t(d) < ends.size() && ends[size_t(d)])
-      fail(here / "distance", fmt::format("distance {} has a rule already; give each distance one rule", d));
+    check_keys(j[i], {"distance", "length", "rule"}, here);
+    const int length = j[i].contains("length") ? as_whole(j[i]["length"], 2, kMaxCreaseLength, here / "length") : 0;
+    const int d = as_whole(require(j[i], "distance", here), 1, length ? length / 2 : kMaxCreaseReach, here / "distance");
+    std::vector<std::optional<Rule>>& slots = length ? ends.by_length[length] : ends.by_distance;
+    if (size_t(d) < slots.size() && slots[size_t(d)])
+      fail(here / "distance", length ? fmt::format("distance {} on creases of length {} has a rule already; give each one rule", d, length)
+                                     : fmt::format("distance {} has a rule already; give each distance one rule", d));
     Rule rule = parse_rule(require(j[i], "rule", here), Element::Vertex, here / "rule");
-    for (size_t t = 0; t < rule.terms.size(); ++t)
-      if (rule.terms[t].role == Role::CreasePoint && rule.terms[t].step < -d)
+    for (size_t t = 0; t < rule.terms.size(); ++t) {
+      const int step = rule.terms[t].step;
+      if (rule.terms[t].role != Role::CreasePoint) continue;
+      if (step < -d)
         fail((here / "rule")[t] / "step",
              fmt::format("step {} reaches past the corner, which is {} crease edge(s) away at distance {}; "
                          "use a step from {} (the corner) up",
-                         rule.terms[t].step, d, d, -d));
-    if (ends.size() <= size_t(d)) ends.resize(size_t(d) + 1);
-    ends[size_t(d)] = std::move(rule);
+                         step, d, d, -d));
+      if (length && step > length - d)
+        fail((here / "rule")[t] / "step",
+             fmt::format("step {} reaches past the far corner, which is {} crease edge(s) away at distance {} on a "
+                         "crease of length {}; use a step up to {}",
+                         step, length - d, d, length, length - d));
+    }
+    if (length && 2 * d == length) require_mirrored(rule, length, here / "rule");
+    if (slots.size() <= size_t(d)) slots.resize(size_t(d) + 1);
+    slots[size_t(d)] = std::move(rule);
   }
   return ends;
 }
@@ -396,6 +424,12 @@ RuleTable parse_rules(const Json& rules, const Place& at, const std::set<std::st
         *crease_ends = parse_crease_ends(it.value(), here / it.key());
         continue;
       }
+      if (it.key() == "crease-ends")
+        fail(here / it.key(), fmt::format("crease-ends belong to vertex rules (a crease vertex's rule chosen by its distance "
+                                          "from a corner); a {} rule here has none: its points next to a corner take its "
+                                          "crease and corner contexts, and the vertex rules of a later smoothing pass can "
+                                          "clamp the crease",
+                                          element_name(Element(e))));
       auto ctx = context_from_name(it.key());
       if (!ctx)
         fail(here, fmt::format("unknown context {}; use smooth, dart, crease or corner{}", subdiv::quoted(it.key()),

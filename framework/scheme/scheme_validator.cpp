@@ -249,22 +249,24 @@ void check_roles(const Scheme& scheme, const StepRules& step, const std::string&
 // weight sums are checked, at every valence.
 void check_crease_ends(const Scheme& scheme, const StepRules& step, const WeightTables& tables, const std::string& text,
                        int lo, int hi, ValidationReport& report, const std::string& at_parameters) {
-  for (size_t d = 0; d < step.crease_ends.size(); ++d) {
-    if (!step.crease_ends[d]) continue;
-    const Rule& source = *step.crease_ends[d];
-    const std::string where =
-        fmt::format("{}:{}: {} (crease, distance {})", scheme.path, line_of(text, source.terms.empty() ? "" : source.terms[0].weight),
-                    source.where.substr(source.where.find(": ") + 2), d);
+  step.crease_ends.each([&](int d, int length, const std::optional<Rule>& slot) {
+    if (!slot) return;
+    const Rule& source = *slot;
+    const CompiledRule& compiled =
+        length == 0 ? tables.crease_ends.by_distance[size_t(d)] : tables.crease_ends.by_length.at(length)[size_t(d)];
+    const std::string where = fmt::format(
+        "{}:{}: {} (crease, distance {}{})", scheme.path, line_of(text, source.terms.empty() ? "" : source.terms[0].weight),
+        source.where.substr(source.where.find(": ") + 2), d, length == 0 ? "" : fmt::format(", length {}", length));
     for (int n = lo; n <= hi; ++n) {
       ++report.checks;
-      const double sum = rule_sum(tables.crease_ends[d], {n, 4, 0, 0}, Element::Vertex);
+      const double sum = rule_sum(compiled, {n, 4, 0, 0}, Element::Vertex);
       if (!std::isfinite(sum) || std::abs(sum - 1) > 1e-9) {
         report.errors.push_back({fmt::format("{}: weights sum to {} at n={}{}, not 1 (every rule must be affine)", where,
                                              sum, n, at_parameters)});
         break;
       }
     }
-  }
+  });
 }
 
 void check_step(const Scheme& scheme, const StepRules& step, const std::string& text, int lo, int hi,
