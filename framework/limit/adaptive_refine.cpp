@@ -8,7 +8,6 @@
 #include <optional>
 #include <tbb/task_arena.h>
 
-#include "framework/analysis/curve/curve_scheme_analysis.h"
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/engine/ghost_rings.h"
 #include "framework/engine/weight_table_cache.h"
@@ -214,24 +213,6 @@ void check_stage_fits(Index split_count, int level) {
                             have.bytes / 1073741824.0, have.source));
 }
 
-// Whether a weight formula of the scheme reads the level l: then each level compiles its own
-// weight tables; otherwise the first level's serve all (engine/weight_table_cache.h).
-bool reads_level(const Scheme& scheme) {
-  if (scheme_is_level_dependent(scheme)) return true;
-  FormulaSet formulas(scheme.parameter_values(), scheme.definitions);
-  for (const StepRules& step : scheme.steps) {
-    if (step.curve && curve_scheme_is_level_dependent(*step.curve)) return true;
-    for (const auto& rule : step.crease_ends)
-      if (rule)
-        for (const Term& term : rule->terms) {
-          if (!term.weight.empty() && formulas.uses(formulas.add(term.weight, term.where)).l) return true;
-          for (const std::string& w : term.curve_weights)
-            if (formulas.uses(formulas.add(w, term.where)).l) return true;
-        }
-  }
-  return false;
-}
-
 Index uniform_face_count(const Level& base, bool triangles, int levels) {
   double faces = triangles || levels == 0 ? double(base.face_count()) : double(base.corner_count());
   for (int l = triangles ? 0 : 1; l < levels; ++l) faces *= 4;
@@ -245,7 +226,7 @@ Index uniform_face_count(const Level& base, bool triangles, int levels) {
 AdaptiveTables::AdaptiveTables(const Scheme& scheme) : scheme_(&scheme) {
   std::vector<int> seed(scheme.split() == SplitKind::Triangle ? 6 : 4);
   std::iota(seed.begin(), seed.end(), 1);
-  cache_ = std::make_unique<WeightTableCache>(!reads_level(scheme), std::move(seed));
+  cache_ = std::make_unique<WeightTableCache>(!scheme_is_level_dependent(scheme), std::move(seed));
 }
 
 AdaptiveTables::~AdaptiveTables() = default;

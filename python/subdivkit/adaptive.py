@@ -8,8 +8,8 @@ import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error
-from .mesh import Mesh, _data_arrays, _face_varying_triples, _type_name
-from .refinement import _check_progress
+from ._checks import check_mesh, check_progress, check_threads
+from .mesh import Mesh, _data_arrays, _face_varying_triples
 
 
 @dataclass
@@ -81,17 +81,15 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
     >>> m = sk.refine_adaptive(cube, "catmull-clark", 5, limit=True)
     >>> m.n_faces                                   # 312, against 6144 uniform
     """
-    if not isinstance(mesh, Mesh):
-        raise Error(f"refine_adaptive: expected a subdivkit.Mesh (read_mesh or Mesh(points, faces)), "
-                    f"got {_type_name(mesh)}")
+    check_mesh(mesh, "refine_adaptive")
     if isinstance(levels, bool) or not isinstance(levels, (int, np.integer)) or not 0 <= levels <= 12:
         raise Error(f"levels={levels!r}: adaptive refinement goes to level 0 to 12")
     tol = float(tolerance)
     if not tol >= 0 or not np.isfinite(tol):
         raise Error(f"tolerance={tolerance!r}: give a distance >= 0 (0: split only around features)")
-    _check_progress(progress, "refine_adaptive")
+    check_progress(progress, "refine_adaptive")
     r = _subdivkit._refine_adaptive(mesh, scheme, params, int(levels), tol, bool(limit), str(boundary),
-                                    str(crease_method), float(feature_angle), int(threads),
+                                    str(crease_method), float(feature_angle), check_threads(threads),
                                     _data_arrays(mesh.point_data, mesh.point_roles, mesh.n_points, "point data"),
                                     _face_varying_triples(mesh), str(fvar_boundary), progress)
     for note in r["notes"]:  # arrays left out (normals, integers, smooth face-varying without limit)

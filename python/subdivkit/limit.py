@@ -12,8 +12,7 @@ import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error, Scheme
-from ._checks import check_mesh as _check_mesh
-from ._checks import check_threads, check_whole
+from ._checks import check_mesh, check_threads, check_whole
 from .mesh import Mesh, _data_shapes_like, _face_varying_triples
 from .refinement import _scipy_sparse
 
@@ -115,7 +114,7 @@ class LimitSurface:
 
     def __init__(self, mesh, scheme="catmull-clark", *, params=None, boundary="edges-and-corners",
                  crease_method="uniform", feature_angle=-1.0, fvar_boundary="all"):
-        _check_mesh(mesh, "LimitSurface")
+        check_mesh(mesh, "LimitSurface")
         self._prepared = _subdivkit._prepare_limit_surface(mesh, scheme, params, str(boundary), str(crease_method),
                                                            float(feature_angle), _face_varying_triples(mesh),
                                                            str(fvar_boundary))

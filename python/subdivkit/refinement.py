@@ -8,9 +8,7 @@ import numpy as np
 from . import _subdivkit
 from ._subdivkit import Error, Scheme
 from .mesh import _ARRAYS as _MESH_ARRAYS
-from ._checks import check_mesh as _check_mesh
-from ._checks import check_progress as _check_progress
-from ._checks import check_threads, check_whole
+from ._checks import check_mesh, check_progress, check_threads, check_whole
 from .mesh import Mesh, _data_arrays, _data_shapes_like, _face_varying_triples, _escaped, _quoted
 
 BOUNDARY_MODES = ("edges-and-corners", "edges", "none")
@@ -111,9 +109,9 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
     (docs/primvars.md says how). The roles come back with the arrays. Crease sharpness
     decays per level as in OpenSubdiv. The GIL is released while the engine works.
     """
-    _check_mesh(mesh, "refine")
+    check_mesh(mesh, "refine")
     levels = _check_levels(levels)
-    _check_progress(progress, "refine")
+    check_progress(progress, "refine")
     point_data, point_roles = _with_weights(mesh, weights)
     refined = _subdivkit._refine(mesh, scheme, params, levels, boundary, crease_method, check_threads(threads), bool(all_levels),
                                  _check_start_level(start_level),
@@ -179,7 +177,7 @@ class Evaluator:
 
     def __init__(self, mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edges-and-corners",
                  crease_method="uniform", threads=0, start_level=0):
-        _check_mesh(mesh, "Evaluator")
+        check_mesh(mesh, "Evaluator")
         levels = _check_levels(levels)
         self._prepared = _subdivkit._prepare_evaluator(mesh, scheme, params, levels, boundary, crease_method,
                                                        check_threads(threads), _check_start_level(start_level))
@@ -318,7 +316,7 @@ def stencils(mesh, scheme="catmull-clark", levels=1, *, composed=False, params=N
     Arguments as refine() (``params`` too). Needs SciPy (imported on first use). Non-linear schemes
     (plugin rules) have no matrix and raise subdivkit.Error.
     """
-    _check_mesh(mesh, "stencils")
+    check_mesh(mesh, "stencils")
     levels = _check_levels(levels)
     tables = _subdivkit._stencils(mesh, scheme, params, levels, bool(composed), boundary, crease_method, check_threads(threads),
                                   _check_start_level(start_level))
@@ -351,7 +349,7 @@ def limit_positions(mesh, scheme="catmull-clark", *, params=None, boundary="edge
     unusual are refined locally first. For curve schemes and polylines, the limit points of
     the control points (no normals). ``params`` as in refine(). Returns a LimitPoints.
     """
-    _check_mesh(mesh, "limit_positions")
+    check_mesh(mesh, "limit_positions")
     r = _subdivkit._limit_positions(mesh, scheme, params, boundary, crease_method, _check_start_level(start_level))
     if "normals" not in r:
         return LimitPoints(points=r["points"])
@@ -432,7 +430,7 @@ def interpolate(mesh, scheme="catmull-clark", *, select=None, tolerance=None, ma
     Returns an Interpolation. Raises subdivkit.Error when the scheme has no checked limit
     operator or the iteration diverges.
     """
-    _check_mesh(mesh, "interpolate")
+    check_mesh(mesh, "interpolate")
     moving = _moving_mask(select, mesh.n_points)
     r = _subdivkit._interpolate(mesh, scheme, params, moving, -1.0 if tolerance is None else float(tolerance),
                                 check_whole(max_iterations, "max_iterations", "give a whole number of iterations"), boundary, check_threads(threads))

@@ -178,16 +178,25 @@ Vec3 normal_of(const LimitRows& r, std::span<const double> P, std::span<const do
 
 bool scheme_is_level_dependent(const Scheme& scheme) {
   FormulaSet formulas(scheme.parameter_values(), scheme.definitions);
-  for (const auto& step : scheme.steps)
+  const auto reads_level = [&](const std::optional<Rule>& rule) {
+    if (!rule) return false;
+    for (const auto& term : rule->terms) {
+      if (!term.weight.empty() && formulas.uses(formulas.add(term.weight, term.where)).l) return true;
+      for (const auto& w : term.curve_weights)
+        if (formulas.uses(formulas.add(w, term.where)).l) return true;
+    }
+    return false;
+  };
+  for (const auto& step : scheme.steps) {
     for (const auto& by_context : step.rules)
-      for (const auto& rule : by_context) {
-        if (!rule) continue;
-        for (const auto& term : rule->terms) {
-          if (!term.weight.empty() && formulas.uses(formulas.add(term.weight, term.where)).l) return true;
-          for (const auto& w : term.curve_weights)
-            if (formulas.uses(formulas.add(w, term.where)).l) return true;
-        }
-      }
+      for (const auto& rule : by_context)
+        if (reads_level(rule)) return true;
+    bool crease_end_reads_level = false;
+    step.crease_ends.each([&](int, int, const std::optional<Rule>& rule) {
+      crease_end_reads_level = crease_end_reads_level || reads_level(rule);
+    });
+    if (crease_end_reads_level || (step.curve && curve_scheme_is_level_dependent(*step.curve))) return true;
+  }
   return scheme.curve && curve_scheme_is_level_dependent(*scheme.curve);
 }
 
