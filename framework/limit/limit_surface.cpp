@@ -144,14 +144,6 @@ struct LimitSurface::Impl {
     triangles = sheets->triangles();
   }
 
-  // Values per base vertex as values per sheet vertex.
-  std::vector<double> sheet_values(std::span<const double> values, int channels) const {
-    std::vector<double> out(sheet_origin.size() * size_t(channels));
-    for (size_t v = 0; v < sheet_origin.size(); ++v)
-      for (int c = 0; c < channels; ++c)
-        out[v * size_t(channels) + size_t(c)] = values[size_t(sheet_origin[v]) * size_t(channels) + size_t(c)];
-    return out;
-  }
   // Per base face (made on first use): the node of its cut and the base vertices in the
   // node's label order.
   struct Entry {
@@ -1019,10 +1011,10 @@ LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<con
   if (channels < 1 || values.size() < size_t(impl_->base.vertex_count) * size_t(channels))
     throw Error(fmt::format("limit evaluation needs {} values per vertex for {} vertices, got {}", channels,
                             impl_->base.vertex_count, values.size()));
-  if (impl_->sheets)
-    return impl_->sheets->evaluate(face, u, v, impl_->sheet_values(values, channels), channels, derivatives);
-  if (impl_->tail) {
-    const LimitStencil w = sequence_stencil(face, u, v, derivatives);
+  if (impl_->sheets || impl_->tail) {
+    // Through the stencil: a non-manifold mesh's sheets would need a copy of every vertex's
+    // values per point; a sequence's head has no values of its own.
+    const LimitStencil w = impl_->sheets ? stencil(face, u, v, derivatives) : sequence_stencil(face, u, v, derivatives);
     LimitSample out;
     auto apply = [&](const std::vector<double>& weights) {
       std::vector<double> r(size_t(channels), 0.0);
