@@ -192,16 +192,23 @@ bool refine_next_level(std::span<const SchemeRun> runs, Hierarchy& h, const Refi
   return add_level(per_level, h, options, faces_later);
 }
 
+namespace {
+
+// Whether the quad split (else the triangle split: origins_first) made h's last level.
+bool last_made_by_quad_split(std::span<const SchemeRun> runs, const Hierarchy& h) {
+  return schemes_per_level(runs)[h.levels.size() - 2]->split() == SplitKind::Quad;
+}
+
+}  // namespace
+
 Index deferred_face_count(std::span<const SchemeRun> runs, const Hierarchy& h) {
   const Level& parent = h.levels[h.levels.size() - 2];
-  const bool quad = schemes_per_level(runs)[h.levels.size() - 2]->split() == SplitKind::Quad;
-  return quad ? parent.corner_count() : 4 * parent.face_count();
+  return last_made_by_quad_split(runs, h) ? parent.corner_count() : 4 * parent.face_count();
 }
 
 void add_deferred_faces(std::span<const SchemeRun> runs, Hierarchy& h) {
-  const size_t l = h.levels.size() - 2;
-  const Level& parent = h.levels[l];
-  const bool quad = schemes_per_level(runs)[l]->split() == SplitKind::Quad;
+  const Level& parent = h.levels[h.levels.size() - 2];
+  const bool quad = last_made_by_quad_split(runs, h);
   Level faces = quad ? quad_split_faces(parent) : triangle_split_faces(parent);
   Level& child = h.levels.back();
   if (faces.vertex_count != child.vertex_count)

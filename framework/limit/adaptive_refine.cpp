@@ -197,13 +197,9 @@ constexpr double kBytesPerStageFace = 800;
 // Stages of fewer faces are chosen and refined on the calling thread alone.
 constexpr Index kSerialFaces = 4096;
 
-// Levels that need less than kSmallStage are not checked: reading the limits (/proc and
-// cgroup files) costs 0.2-0.3 ms, more than a small level's whole refinement.
-constexpr double kSmallStage = 16 << 20;
-
 void check_stage_fits(Index split_count, int level) {
   const double need = 4.0 * double(split_count) * kBytesPerStageFace;
-  if (need < kSmallStage) return;
+  if (need < kUncheckedBytes) return;
   const MemoryBudget have = available_memory();
   if (need > have.bytes)
     throw Error(fmt::format("adaptive refinement: level {} would split {} faces into about {} and need about {:.1f} "

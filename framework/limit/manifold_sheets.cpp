@@ -64,8 +64,7 @@ void check_cut_vertex(const Level& L, Index v, const FeatureOptions& features) {
       throw Error(fmt::format("vertex {}: a semi-sharp edge ends at this non-manifold vertex, where the fans of faces "
                               "meet; its rule there changes as the sharpness decays, which limit evaluation of "
                               "the fans apart does not follow yet (make the edge sharp or smooth, or split the "
-                              "mesh into manifold parts)",
-                              v));
+                              "mesh into manifold parts)", v));
   }
 }
 
@@ -82,11 +81,13 @@ void copy_tags(const Level& from, ManifoldSheets& to) {
   S.face_hole = from.face_hole;
   if (!from.edge_sharpness.empty()) {
     S.edge_sharpness.assign(size_t(S.edge_count()), 0.f);
-    for (Index c = 0; c < S.corner_count(); ++c) S.edge_sharpness[size_t(S.face_edges[c])] = from.edge_sharpness[size_t(from.face_edges[c])];
+    for (Index c = 0; c < S.corner_count(); ++c)
+      S.edge_sharpness[size_t(S.face_edges[c])] = from.edge_sharpness[size_t(from.face_edges[c])];
   }
   if (!from.vertex_sharpness.empty()) {
     S.vertex_sharpness.resize(size_t(S.vertex_count));
-    for (Index v = 0; v < S.vertex_count; ++v) S.vertex_sharpness[size_t(v)] = from.vertex_sharpness[size_t(to.origin[size_t(v)])];
+    for (Index v = 0; v < S.vertex_count; ++v)
+      S.vertex_sharpness[size_t(v)] = from.vertex_sharpness[size_t(to.origin[size_t(v)])];
   }
 }
 

@@ -385,9 +385,12 @@ std::vector<LevelData> level_data(const PreparedRefinement& p, const Hierarchy& 
   if (r.progress_fraction) passes.emplace(within);
   const bool releases = releasing && releases_coarser_levels(r, mesh);
   for (int l = 0; l < seq.total_levels; ++l) {
-    // A last level without cell data to inherit (which reads its faces) may wait for its faces.
-    const bool faces_later = stepwise && refine_next_level(seq.runs, *releasing, options,
-                                                           l + 1 == seq.total_levels && levels.back().cell_data.empty());
+    bool faces_later = false;
+    if (stepwise) {
+      // A last level without cell data to inherit (which reads its faces) may wait for its faces.
+      const bool may_wait = l + 1 == seq.total_levels && levels.back().cell_data.empty();
+      faces_later = refine_next_level(seq.runs, *releasing, options, may_wait);
+    }
     say(r, fmt::format("level {}/{}: {} faces", l + 1, seq.total_levels,
                        faces_later ? deferred_face_count(seq.runs, h) : h.levels[size_t(l) + 1].face_count()));
     level = l;

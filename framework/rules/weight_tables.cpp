@@ -38,6 +38,7 @@ TableShape table_shape(const FormulaUses& uses, int max_n, int max_k, int max_j,
 // not see). Refused with the rule and the valence when it cannot fit.
 void check_table_fits(const TableShape& shape, const std::string& where, int max_n) {
   const double bytes = double(shape.size) * sizeof(double);
+  if (bytes < kUncheckedBytes) return;  // every term of every step comes here
   const MemoryBudget budget = available_memory();
   if (bytes > budget.bytes)
     throw Error(fmt::format("{}: its weight table for valences up to {} has {} entries ({:.1f} GiB), more than the "

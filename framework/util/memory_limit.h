@@ -17,6 +17,11 @@ struct MemoryBudget {
 
 MemoryBudget available_memory();
 
+// Needs below this are not checked against available_memory(): reading the limits (/proc and
+// cgroup files) costs 0.2-0.3 ms, more than making something this small, and a process left
+// with less than this has failed long before.
+constexpr double kUncheckedBytes = 16 << 20;
+
 // The parts, separately, with their files as parameters so that tests can give fakes.
 // MemAvailable from a /proc/meminfo-format file.
 std::optional<double> meminfo_available(const std::filesystem::path& meminfo = "/proc/meminfo");
