@@ -45,14 +45,6 @@ Index third_corner(const Level& L, Index f, Index a, Index b) {
   return c[0] != a && c[0] != b ? c[0] : c[1] != a && c[1] != b ? c[1] : c[2];
 }
 
-// The largest face size a face's or corner's weights can be read at: they are read at
-// (n, k) = (k, k), and the tables reach n up to the largest valence only, which a face may
-// exceed (a heptagon among valence-3 vertices).
-int largest_face_size(const std::vector<TermShape>& terms, const WeightTables& tables) {
-  const bool reads_n = std::any_of(terms.begin(), terms.end(), [](const TermShape& t) { return t.weights->stride_n != 0; });
-  return reads_n ? std::min(tables.max_n, tables.max_k) : tables.max_k;
-}
-
 }  // namespace
 
 FlatKernels::FlatKernels(const StepContext& step, const std::vector<ChildGroup>& groups,
@@ -107,7 +99,7 @@ FlatKernels::FlatKernels(const StepContext& step, const std::vector<ChildGroup>&
       new_points_available(ft)) {
     PerSize& p = face_;
     p.uses_edge_points = uses(ft, Points::EdgePoints);
-    const int max_k = largest_face_size(ft, tables);
+    const int max_k = tables.max_k;
     for (int k = 0; k <= max_k; ++k) {
       p.corners.push_back(weight_of(ft, Points::Corners, k, k));
       p.edge_points.push_back(weight_of(ft, Points::EdgePoints, k, k));
@@ -120,7 +112,7 @@ FlatKernels::FlatKernels(const StepContext& step, const std::vector<ChildGroup>&
   const auto& ct = terms[int(Element::Corner)];
   if (first_child_[int(Element::Corner)] != kNone && fits(ct, {Points::Self, Points::Corners}, true)) {
     CornerWeights& p = corner_;
-    const int max_k = largest_face_size(ct, tables);
+    const int max_k = tables.max_k;
     for (int k = 0; k <= max_k; ++k) {
       p.row_start.push_back(Index(p.around.size()));
       double self = 0.0, sum = 0.0;

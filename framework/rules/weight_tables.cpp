@@ -200,9 +200,15 @@ WeightTables compile_rule_table(const RuleTable& rules, const FormulaScope& scop
   tables.max_n = max_n, tables.max_k = max_k;
   static const std::vector<NamedFormula> none;
   FormulaSet formulas(scope.parameters, scope.definitions ? *scope.definitions : none);
-  for (int e = 0; e < kElementCount; ++e)
+  for (int e = 0; e < kElementCount; ++e) {
+    // Face and corner rules read n as the face size (docs/scheme-format.md), which can
+    // exceed the largest valence: a cube's quads among valence-3 vertices.
+    const bool n_is_face_size = Element(e) == Element::Face || Element(e) == Element::Corner;
+    const int rule_max_n = n_is_face_size ? std::max(max_n, max_k) : max_n;
     for (int c = 0; c < kContextCount; ++c)
-      if (rules[e][c]) tables.rules[e][c] = compile_rule(*rules[e][c], formulas, scope.valences, max_n, max_k, level);
+      if (rules[e][c])
+        tables.rules[e][c] = compile_rule(*rules[e][c], formulas, scope.valences, rule_max_n, max_k, level);
+  }
 
   for (Element e : {Element::Vertex, Element::Corner}) {
     auto& r = tables.rules[int(e)];
