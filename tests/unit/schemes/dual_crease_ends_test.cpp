@@ -167,13 +167,13 @@ CreasedGrid creased_grid() {
               id(8, 2), id(8, 3), id(9, 3), id(10, 3), id(11, 3), id(12, 3)}};
 }
 
-Level tagged(const test::Mesh& m, const std::vector<Index>& path) {
+Level tagged(const test::Mesh& m, const std::vector<Index>& path, float sharpness = 10.f) {
   Level L = m.level();
   L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
   for (size_t i = 0; i + 1 < path.size(); ++i) {
     const Index e = find_edge(L, path[i], path[i + 1]);
     REQUIRE(e != kNone);
-    L.edge_sharpness[e] = 10.f;
+    L.edge_sharpness[e] = sharpness;
   }
   return L;
 }
@@ -308,6 +308,25 @@ TEST_CASE("quad-bspline crease ends: short creases of 1-18 edges between two cor
   for (int n = 1; n <= 18; ++n) {
     CAPTURE(n);
     check_clamped_spline(short_crease(n));
+  }
+}
+
+TEST_CASE("quad-bspline crease ends: sharpness 0 on the crease is the smooth scheme, bit for bit, d = 4..12") {
+  // An edge of sharpness 0 is smooth: no crease, so no crease vertex finds a corner and no
+  // crease-end rule applies; the untagged mesh's points at every level, exactly.
+  const CreasedGrid g = creased_grid();
+  for (int d = 4; d <= 12; d += 2) {
+    CAPTURE(d);
+    const auto s = load_scheme("quad-bspline", {{"d", std::to_string(d)}});
+    RefineOptions options;
+    options.levels = 3;
+    const Hierarchy smooth = refine(*s, g.mesh.level(), options);
+    const Hierarchy zero = refine(*s, tagged(g.mesh, g.path, 0.f), options);
+    for (int l = 1; l <= 3; ++l) {
+      CAPTURE(l);
+      CHECK(zero.levels[size_t(l)].face_vertices == smooth.levels[size_t(l)].face_vertices);
+      CHECK(interpolate(zero, l, g.mesh.positions, 3) == interpolate(smooth, l, g.mesh.positions, 3));
+    }
   }
 }
 
