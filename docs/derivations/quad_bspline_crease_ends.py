@@ -17,12 +17,28 @@ script solves those rows within the crease and prints them with the crease's len
 pass's level ("length": 2N - 1; such an entry takes precedence over the entry for its distance). N = 1 (one edge between two corners) has no
 point between its corners on any level: the crease stays the segment, which is the curve.
 
-    python3 docs/derivations/quad_bspline_crease_ends.py 6     # needs sympy
+Every row is solved on the narrowest window of crease points that gives it (up to WIDEST
+points; a distance no window gives stops the script), and the rules are then checked by
+applying them, with (1/4, 1/2, 1/4) elsewhere, to every crease of 2 .. `longest` edges
+between corners, the longest well past the largest distance with a rule. The rules must fit
+the scheme language's limits (framework/rules/rule.h): distances and |steps| up to 16, crease
+lengths up to 33 on the pass's level. Passes 1 .. 5 (d = 4 .. 12) fit: pass 5 has rules at
+distances 1 .. 16 over windows of up to 10 points and length entries up to 31. Pass 6
+(d = 14) needs distances 1 .. 19 over windows of 12 points and lengths up to 37 (the asserts
+below stop on it), so the scheme stops at d = 12.
+
+    python3 docs/derivations/quad_bspline_crease_ends.py 6     # prints passes 1, 2; needs sympy
+    python3 docs/derivations/quad_bspline_crease_ends.py 12 --write schemes/quad-bspline.json
+      # rewrites the scheme's even passes ("when": "even && passes >= i") with these rules
 """
+import re
 import sys
 from fractions import Fraction as F
 
 import sympy as sp
+
+WIDEST = 12  # the widest window of crease points a row may read
+REACH, LONGEST_LENGTH = 16, 33  # framework/rules/rule.h: kMaxCreaseReach, kMaxCreaseLength
 
 
 def comb(pairs):
@@ -116,13 +132,15 @@ def pass_rows(src, target, n, rows):
     """For each distance k, the narrowest window (most centred first) that gives the row."""
     out = []
     for k in range(1, rows):
-        for width in range(1, 9):
+        for width in range(1, WIDEST + 1):
             found = [solve_row(src, target[k], k, list(range(lo, lo + width)), n)
                      for lo in sorted(range(-width + 1, 1), key=lambda lo: abs(lo + (width - 1) / 2)) if lo >= -k]
             found = [f for f in found if f]
             if found:
                 out.append({o: w for o, w in found[0].items() if w != 0})
                 break
+        else:
+            raise SystemExit(f"no window of up to {WIDEST} crease points gives the row at distance {k}")
     return out
 
 
@@ -171,27 +189,74 @@ def json_entry(distance, row, length=None):
     return f'{{{key}, "rule": [{terms}]}}'
 
 
-if __name__ == "__main__":
+def pass_entries(degree):
+    """Pass (degree - 2)/2's crease-ends entries (JSON text, one per entry) and the crease length
+    (edges before the split) from which the rules by distance alone are exact."""
+    # Rows by distance, solved on a crease long enough that its far end is out of every window.
+    rows = 2 * degree
+    longest = rows + 2
+    n = longest + 2
+    src, target = refined(n, degree - 2), refined(n, degree)
+    rules = {k: row for k, row in enumerate(pass_rows(src, target, n, rows), start=1) if row != uniform_row()}
+    entries = [json_entry(k, row) for k, row in sorted(rules.items())]
+    rows_written = list(rules.values())
     # Creases of N edges between two corners on the level a pass refines become creases of
     # 2N - 1 edges after the dual split (the pass's own level): the pass sees odd lengths.
+    exact_from = None
+    for N in range(2, longest + 1):
+        length = 2 * N - 1
+        own = short_crease_rows(refined(N + 1, degree - 2), refined(N + 1, degree), N + 1, rules)
+        if not own:
+            exact_from = exact_from or N
+            continue
+        assert exact_from is None, f"N = {N} needs its own rules after N = {exact_from} did not"
+        entries += [json_entry(k, row, length) for k, row in sorted(own.items())]
+        rows_written += own.values()
+    assert exact_from is not None and exact_from + 4 <= longest, "the rules by distance must hold on long creases"
+    assert max(rules) < longest - 1, "the longest crease checked must reach past every distance with a rule"
+    assert max(rules) <= REACH, f"pass to degree {degree}: distance {max(rules)} is past the language's {REACH}"
+    steps = [abs(o) for row in rows_written for o in row]
+    assert max(steps) <= REACH, f"pass to degree {degree}: step {max(steps)} is past the language's {REACH}"
+    assert 2 * exact_from - 3 <= LONGEST_LENGTH, f"pass to degree {degree}: lengths past {LONGEST_LENGTH}"
+    return entries, exact_from, longest
+
+
+PASS_STEP = """    {{"when": "even && passes >= {i}", "smooth": {{"vertex": {{
+      "smooth": [{{"sum": "face-centroids", "w": "1/n"}}],
+      "crease": [{{"at": "self", "w": "1/2"}}, {{"sum": "crease-neighbours", "w": "1/4"}}],
+      "crease-ends": [
+{entries}
+      ]
+    }}}}}},
+"""
+
+
+def write_scheme(path, passes):
+    """Replace the even passes of the scheme file (its steps from the first
+    `"when": "even && passes >= 1"` to the end of the last such step) with `passes`, and let
+    the uniform passes after them (`"repeat": "max(passes - K, 0)"`) start after the last."""
+    lines = open(path).read().split("\n")
+    first = next(i for i, line in enumerate(lines) if '"when": "even && passes >= 1"' in line)
+    last = max(i for i, line in enumerate(lines) if '"when": "even && passes >= ' in line)
+    end = next(i for i in range(last, len(lines)) if lines[i].startswith("    }}}"))
+    text = "".join(PASS_STEP.format(i=i, entries=",\n".join("        " + e for e in entries))
+                   for i, entries in enumerate(passes, start=1))
+    lines[first:end + 1] = text.rstrip("\n").split("\n")
+    lines = [re.sub(r'"repeat": "max\(passes - \d+, 0\)"', f'"repeat": "max(passes - {len(passes)}, 0)"', line)
+             for line in lines]
+    open(path, "w").write("\n".join(lines))
+
+
+if __name__ == "__main__":
     d = int(sys.argv[1]) if len(sys.argv) > 1 else 6
-    n, rows, longest = 30, 16, 16
-    uniform = uniform_row()
-    degree_before = 2
+    passes = []
     for degree in range(4, d + 1, 2):
-        src, target = refined(n, degree - 2), refined(n, degree)
-        rules = {k: row for k, row in enumerate(pass_rows(src, target, n, rows), start=1) if row != uniform}
+        entries, exact_from, longest = pass_entries(degree)
+        passes.append(entries)
         print(f"pass to degree {degree}: crease-ends, by distance from the nearer corner")
-        entries = [json_entry(k, row) for k, row in sorted(rules.items())]
-        short_exact_from = None
-        for N in range(2, longest + 1):
-            length = 2 * N - 1
-            own = short_crease_rows(refined(N + 1, degree - 2), refined(N + 1, degree), N + 1, rules)
-            if not own:
-                short_exact_from = short_exact_from or N
-                continue
-            assert short_exact_from is None, f"N = {N} needs its own rules after N = {short_exact_from} did not"
-            entries += [json_entry(k, row, length) for k, row in sorted(own.items())]
         print(",\n".join("  " + e for e in entries))
-        print(f"  (rules by distance alone are exact from N = {short_exact_from} crease edges on the level "
+        print(f"  (rules by distance alone are exact from N = {exact_from} crease edges on the level "
               f"before the split, checked up to N = {longest})")
+    if len(sys.argv) > 3 and sys.argv[2] == "--write":
+        write_scheme(sys.argv[3], passes)
+        print(f"wrote passes 1 .. {len(passes)} into {sys.argv[3]}")
