@@ -580,7 +580,10 @@ void choose_rings(const AnalysisRun& cx, SurfaceAnalysis& out) {
       break;
     }
   }
-  if (k0 < 0) throw Error(fmt::format("no k-ring (k <= {}) around the centre maps to itself", cx.options.max_ring));
+  if (k0 < 0)
+    throw Error(fmt::format("no k-ring (k <= {}) around the centre maps to itself: the scheme's stencils reach "
+                            "further (try a larger max ring, `subdiv analyze --max-ring {}`)",
+                            cx.options.max_ring, cx.options.max_ring + 1));
   if (K < 0) K = k0;
   out.minimal_ring = k0, out.ring = K;
   out.minimal_size = cx.parent.count_within(k0);
