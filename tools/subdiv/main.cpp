@@ -1,5 +1,6 @@
 // The `subdiv` command line: refine meshes with any scheme, list schemes.
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <fmt/format.h>
 
 #include "commands.h"
@@ -11,6 +12,10 @@
 #include "framework/util/quoted_text.h"
 
 int main(int argc, char** argv) {
+  // A file size limit (ulimit -f) then fails the write with EFBIG, which the writers report
+  // ("larger than allowed") and clean up after, instead of killing the process with SIGXFSZ
+  // and leaving the temporary file behind. Python ignores the signal the same way.
+  std::signal(SIGXFSZ, SIG_IGN);
   subdiv::register_vtk_formats();  // before the help texts list the formats
   CLI::App app{"subdiv - define, run and analyse subdivision schemes (SubdivKit " SUBDIV_CLI_VERSION ")"};
   app.set_version_flag("--version", "SubdivKit " SUBDIV_CLI_VERSION);

@@ -138,6 +138,19 @@ TEST_CASE("a sampled limit surface that would not fit is refused before any samp
 #endif
 }
 
+TEST_CASE("a file size limit (ulimit -f) is a refusal with no file left, in every output format") {
+  // 8 levels of the torus: 49 MB and more in every format; the limit is 5 MB.
+  const fs::path dir = fresh_dir("hostile-file-size");
+  for (const char* name : {"big.vtp", "big.obj", "big.ply", "big.pvd"}) {
+    const CliResult r = run_subdiv_with_prefix(
+        "ulimit -f 5000; ", "refine " + source_path("examples/meshes/torus-quads.obj") + " -l 8 -o " + (dir / name).string());
+    INFO(name, r.output);
+    CHECK(r.exit_code == 1);
+    CHECK(contains(r.output, "the disk is full or the file is larger than allowed"));
+  }
+  CHECK(fs::is_empty(dir));  // no output, no level folder, no temporary
+}
+
 // Bytes of a file, to show it was left as it was.
 std::string file_bytes(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
