@@ -355,7 +355,7 @@ void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path
   writer->SetInputData(&poly);
   // No file name: VTK neither opens nor deletes anything; the stream reports write failures
   // (full disk) after VTK is done with it.
-  CheckedFileStream stream(file, shown);
+  CheckedFileStream stream(file, shown, options.direct_io ? FileWrite::Direct : FileWrite::Buffered);
   writer->WriteToStream(&stream);
   // By default inline binary (base64 inside each DataArray), not raw appended data: the file
   // is then well-formed XML, which every ParaView reads, including Debian 12's ParaView 5.11

@@ -158,3 +158,33 @@ TEST_CASE("the block compressor in small blocks: many runs of parallel blocks, V
   CHECK(counts.parallel > 343);
   CHECK(counts.serial < counts.parallel / 2);  // the offsets, which VTK copies
 }
+
+TEST_CASE("write_polydata_file: direct I/O and the page cache write the same file") {
+  // Files of several 4 MB chunks (the direct writer's), so that VTK's seeks back (each
+  // array's compression header, raw appended data's offsets) land in chunks already written.
+  const subdiv::test::TempDir scratch;  // its own folder: other test runs may be writing at the same time
+  const fs::path& dir = scratch.path();
+  const MeshData mesh = grid(700);  // 491401 points: 11.8 MB of coordinates
+  OutputLevel level{&mesh, 1, mesh.point_data, mesh.cell_data};
+  const auto poly = io_detail::make_polydata(level);
+  for (VtkEncoding encoding : {VtkEncoding::Base64, VtkEncoding::Raw}) {
+    for (VtkCompressor type : {VtkCompressor::LZ4, VtkCompressor::None}) {
+      CAPTURE(int(encoding));
+      CAPTURE(int(type));
+      VtkWriteOptions options;
+      options.compressor = type;
+      options.encoding = encoding;
+      options.direct_io = false;
+      io_detail::write_polydata_file(*poly, dir / "cached.vtp", dir / "cached.vtp", options);
+      options.direct_io = true;
+      io_detail::write_polydata_file(*poly, dir / "direct.vtp", dir / "direct.vtp", options);
+      const std::string cached = file_text(dir / "cached.vtp");
+      CHECK(cached.size() > (8u << 20));
+      CHECK(file_text(dir / "direct.vtp") == cached);
+    }
+  }
+  write_with_vtk(*poly, dir / "vtk.vtp", VtkCompressor::LZ4, 1);
+  VtkWriteOptions options;
+  io_detail::write_polydata_file(*poly, dir / "ours.vtp", dir / "ours.vtp", options);
+  CHECK(file_text(dir / "ours.vtp") == file_text(dir / "vtk.vtp"));
+}
