@@ -5,9 +5,9 @@
 //
 // Why: a buffered write() copies every byte into new page-cache pages, and on a virtual
 // machine that returns freed memory to its host each new page is first touched at a high
-// price; writing a 796 MB .vtp cost 0.65-2 s of system time that way, and a buffered write
-// right after another ran at 0.2 GB/s, against 1.5-1.7 GB/s and 0.1 s with O_DIRECT
-// (docs/benchmarks.md, "End to end").
+// price; writing 800 MB cost 0.65-2 s of system time that way, and a buffered write
+// right after another ran at 0.2 GB/s, against 1.6-1.8 GB/s and 0.1 s with O_DIRECT
+// (docs/benchmarks.md, "Writing and reading").
 #include <condition_variable>
 #include <cstddef>
 #include <deque>

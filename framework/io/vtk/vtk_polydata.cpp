@@ -144,8 +144,8 @@ vtkSmartPointer<vtkDataArray> to_vtk(const DataArray& a, const std::vector<doubl
   const std::size_t tuples = values.size() / a.components;
   // Integer colours within 0..255 as bytes, as PLY stores them: ParaView shows byte scalars
   // as colours directly, and the reader (vtk_read.cpp role_of) knows them for colours again.
-  const bool bytes = std::all_of(values.begin(), values.end(), [](double x) { return x >= 0 && x <= 255; });
-  if (a.integer && a.role == ArrayRole::Color && bytes) {
+  const auto byte = [](double x) { return x >= 0 && x <= 255; };
+  if (a.integer && a.role == ArrayRole::Color && std::all_of(values.begin(), values.end(), byte)) {
     auto array = new_array<vtkUnsignedCharArray>(a.name, a.components, tuples);
     for (std::size_t i = 0; i < values.size(); ++i)
       array->SetValue(vtkIdType(i), static_cast<unsigned char>(values[i]));
