@@ -139,6 +139,19 @@ void cache_array_range(vtkDataArray* array, vtkDataArray* source) {
   store(*array, {range[0], range[1]});
 }
 
+void cache_sparse_array_range(vtkDataArray* array, const std::vector<vtkIdType>& set) {
+  if (!array || array->GetNumberOfComponents() != 1 || array->GetNumberOfTuples() == 0) return cache_array_range(array);
+  Range range;
+  for (vtkIdType i : set) {
+    const double v = array->GetComponent(i, 0);
+    if (v == v) range = range.join({v, v});  // NaN skipped, as VTK skips it
+  }
+  // Fewer positions than values: some value is one of the zeros (repeats only make it surer).
+  if (vtkIdType(set.size()) < array->GetNumberOfTuples()) range = range.join({0.0, 0.0});
+  else return cache_array_range(array);  // every value may be set: the values decide
+  store(*array, range);
+}
+
 namespace {
 
 void cache(vtkFieldData* data) {

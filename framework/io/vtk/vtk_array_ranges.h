@@ -8,6 +8,10 @@
 // (vtkDataArray::PER_COMPONENT with COMPONENT_RANGE, L2_NORM_RANGE for vectors) until the
 // array changes; ranges stored there the same way are what the writer then reads. The
 // values are the same min and max VTK would find, so the file does not change.
+#include <vector>
+
+#include <vtkType.h>
+
 class vtkDataArray;
 class vtkPolyData;
 
@@ -24,5 +28,11 @@ void cache_array_range(vtkDataArray* array);
 // cell array's connectivity shares its memory): the range cached for `source` instead of a
 // second pass over the values; otherwise as cache_array_range.
 void cache_array_range(vtkDataArray* array, vtkDataArray* source);
+
+// For a one-component array that holds 0 everywhere but at `set` (positions, repeats
+// allowed): its range from those values (and 0 if some position is not among them), without
+// a pass over the zeros (write_vtp's sharpness, cell_kind and corner_sharpness arrays: 320 MB
+// of zero pages on a 16M-face level). Arrays of other shapes as cache_array_range.
+void cache_sparse_array_range(vtkDataArray* array, const std::vector<vtkIdType>& set);
 
 }  // namespace subdiv::io_detail

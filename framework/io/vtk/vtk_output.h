@@ -30,6 +30,14 @@ struct VtkWriteOptions {
   // acceleration is 10 - level).
   int compression_level = 1;
   VtkEncoding encoding = VtkEncoding::Base64;
+  // Written past the page cache (O_DIRECT), in 4 MB chunks on a thread of their own, with
+  // ordinary writes where the file system refuses direct I/O; the bytes are the same either
+  // way. A buffered write copies every byte into new page-cache pages first: 800 MB cost
+  // 0.65-2 s of system time that way on the benchmark machine (a virtual machine), and ran at
+  // 0.2 GB/s while an earlier file's pages were being flushed, against 1.6-1.8 GB/s direct
+  // (docs/benchmarks.md, "Writing and reading"). false: through the page cache, which returns
+  // sooner where the disk is much slower than memory and the file fits in it.
+  bool direct_io = true;
   // The arrays write_vtp adds itself (see write_vtp); each can be left out.
   bool sharpness = true, cell_kind = true, corner_sharpness = true;
   // Told the share written so far, 0 to 1 (VTK's progress events, as arrays are written;

@@ -144,8 +144,8 @@ vtkSmartPointer<vtkDataArray> to_vtk(const DataArray& a, const std::vector<doubl
   const std::size_t tuples = values.size() / a.components;
   // Integer colours within 0..255 as bytes, as PLY stores them: ParaView shows byte scalars
   // as colours directly, and the reader (vtk_read.cpp role_of) knows them for colours again.
-  const bool bytes = std::all_of(values.begin(), values.end(), [](double x) { return x >= 0 && x <= 255; });
-  if (a.integer && a.role == ArrayRole::Color && bytes) {
+  const auto byte = [](double x) { return x >= 0 && x <= 255; };
+  if (a.integer && a.role == ArrayRole::Color && std::all_of(values.begin(), values.end(), byte)) {
     auto array = new_array<vtkUnsignedCharArray>(a.name, a.components, tuples);
     for (std::size_t i = 0; i < values.size(); ++i)
       array->SetValue(vtkIdType(i), static_cast<unsigned char>(values[i]));
@@ -230,23 +230,31 @@ vtkSmartPointer<Array> zero_array(const char* name, std::size_t tuples) {
   return array;
 }
 
+// Their ranges from the values set (cache_sparse_array_range), not from a pass over the zeros.
 void add_feature_arrays(vtkPolyData& poly, const MeshData& mesh, const CellCounts& cells,
                         const VtkWriteOptions& options) {
+  std::vector<vtkIdType> line_cells(cells.lines());
+  for (std::size_t i = 0; i < line_cells.size(); ++i) line_cells[i] = vtkIdType(i);
+  const std::vector<vtkIdType> crease_cells(line_cells.begin() + std::ptrdiff_t(cells.polylines), line_cells.end());
   if (options.sharpness) {
     auto sharpness = zero_array<vtkDoubleArray>("sharpness", cells.total());
     for (std::size_t i = 0; i < cells.creases; ++i)
       sharpness->SetValue(vtkIdType(cells.polylines + i), mesh.creases[i].sharpness);
+    cache_sparse_array_range(sharpness, crease_cells);
     poly.GetCellData()->AddArray(sharpness);
   }
   if (options.cell_kind) {
     auto kind = zero_array<vtkIntArray>("cell_kind", cells.total());  // 0: faces, which come after the line cells
     for (std::size_t i = 0; i < cells.polylines; ++i) kind->SetValue(vtkIdType(i), 1);
     for (std::size_t i = 0; i < cells.creases; ++i) kind->SetValue(vtkIdType(cells.polylines + i), 2);
+    cache_sparse_array_range(kind, line_cells);
     poly.GetCellData()->AddArray(kind);
   }
   if (options.corner_sharpness) {
     auto corners = zero_array<vtkDoubleArray>("corner_sharpness", std::size_t(mesh.vertex_count()));
-    for (const CornerTag& c : mesh.corners) corners->SetValue(c.v, c.sharpness);
+    std::vector<vtkIdType> tagged;
+    for (const CornerTag& c : mesh.corners) corners->SetValue(c.v, c.sharpness), tagged.push_back(c.v);
+    cache_sparse_array_range(corners, tagged);
     poly.GetPointData()->AddArray(corners);
   }
 }
@@ -296,9 +304,9 @@ vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level, const VtkWr
   for (const DataArray& a : level.cell_data)  // already in VTK's order without line cells
     poly->GetCellData()->AddArray(cells.lines() == 0 ? to_vtk(a, a.values, share)
                                                      : to_vtk(a, cell_order(a, cells), false));  // a temporary
-  add_feature_arrays(*poly, mesh, cells, options);
   add_level_fields(*poly, level.level);
   cache_array_ranges(*poly);
+  add_feature_arrays(*poly, mesh, cells, options);  // after: with ranges of their own
   return poly;
 }
 
@@ -355,7 +363,7 @@ void write_polydata_file(vtkPolyData& poly, const fs::path& file, const fs::path
   writer->SetInputData(&poly);
   // No file name: VTK neither opens nor deletes anything; the stream reports write failures
   // (full disk) after VTK is done with it.
-  CheckedFileStream stream(file, shown);
+  CheckedFileStream stream(file, shown, options.direct_io ? FileWrite::Direct : FileWrite::Buffered);
   writer->WriteToStream(&stream);
   // By default inline binary (base64 inside each DataArray), not raw appended data: the file
   // is then well-formed XML, which every ParaView reads, including Debian 12's ParaView 5.11

@@ -8,10 +8,13 @@
 #include <fstream>
 #include <sstream>
 #include <tbb/global_control.h>
+#include <vtkCellData.h>
 #include <vtkDataCompressor.h>
+#include <vtkDoubleArray.h>
 #include <vtkLZ4DataCompressor.h>
 #include <vtkLZMADataCompressor.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkZLibDataCompressor.h>
@@ -27,7 +30,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // A grid of n x n quads with a bumpy height, a double and an integer point array, an
-// integer cell array and a crease line: arrays of several blocks of 1 MB each.
+// integer cell array, a crease, corners and a polyline: arrays of several blocks of 1 MB each.
 MeshData grid(int n) {
   MeshData m;
   for (int j = 0; j <= n; ++j)
@@ -44,6 +47,11 @@ MeshData grid(int n) {
   m.point_data = {heat, id};
   m.cell_data = {face};
   m.creases.push_back({0, 1, 2.5f});
+  // Corners and a polyline: write_vtp's feature arrays with values besides their zeros,
+  // whose ranges come from the tags (cache_sparse_array_range), checked against VTK's.
+  m.corners = {{n + 2, 3.0}, {2 * n, 0.5}, {n + 2, 4.0}};
+  m.line_vertices = {0, n + 1, 2 * n + 2};
+  m.line_offsets = {0, 3};
   return m;
 }
 
@@ -157,4 +165,63 @@ TEST_CASE("the block compressor in small blocks: many runs of parallel blocks, V
   CHECK(file_text(dir / "ours.vtp") == file_text(dir / "vtk.vtp"));
   CHECK(counts.parallel > 343);
   CHECK(counts.serial < counts.parallel / 2);  // the offsets, which VTK copies
+}
+
+TEST_CASE("write_polydata_file: direct I/O and the page cache write the same file") {
+  // Files of several 4 MB chunks (the direct writer's), so that VTK's seeks back (each
+  // array's compression header, raw appended data's offsets) land in chunks already written.
+  const subdiv::test::TempDir scratch;  // its own folder: other test runs may be writing at the same time
+  const fs::path& dir = scratch.path();
+  const MeshData mesh = grid(700);  // 491401 points: 11.8 MB of coordinates
+  OutputLevel level{&mesh, 1, mesh.point_data, mesh.cell_data};
+  const auto poly = io_detail::make_polydata(level);
+  for (VtkEncoding encoding : {VtkEncoding::Base64, VtkEncoding::Raw}) {
+    for (VtkCompressor type : {VtkCompressor::LZ4, VtkCompressor::None}) {
+      CAPTURE(int(encoding));
+      CAPTURE(int(type));
+      VtkWriteOptions options;
+      options.compressor = type;
+      options.encoding = encoding;
+      options.direct_io = false;
+      io_detail::write_polydata_file(*poly, dir / "cached.vtp", dir / "cached.vtp", options);
+      options.direct_io = true;
+      io_detail::write_polydata_file(*poly, dir / "direct.vtp", dir / "direct.vtp", options);
+      const std::string cached = file_text(dir / "cached.vtp");
+      CHECK(cached.size() > (8u << 20));
+      CHECK(file_text(dir / "direct.vtp") == cached);
+    }
+  }
+  write_with_vtk(*poly, dir / "vtk.vtp", VtkCompressor::LZ4, 1);
+  VtkWriteOptions options;
+  io_detail::write_polydata_file(*poly, dir / "ours.vtp", dir / "ours.vtp", options);
+  CHECK(file_text(dir / "ours.vtp") == file_text(dir / "vtk.vtp"));
+}
+
+TEST_CASE("make_polydata: the feature arrays' cached ranges are the ranges VTK computes from their values") {
+  for (int n : {3, 40}) {
+    CAPTURE(n);
+    MeshData mesh = grid(n);
+    for (int tags : {0, 1}) {  // with the tags of grid(), and with none (all zeros)
+      CAPTURE(tags);
+      if (tags == 0) mesh.creases.clear(), mesh.corners.clear(), mesh.line_vertices.clear(), mesh.line_offsets = {0};
+      OutputLevel level{&mesh, 0, mesh.point_data, mesh.cell_data};
+      const auto poly = io_detail::make_polydata(level);
+      for (vtkDataSetAttributes* data : {static_cast<vtkDataSetAttributes*>(poly->GetCellData()),
+                                         static_cast<vtkDataSetAttributes*>(poly->GetPointData())}) {
+        for (const char* name : {"sharpness", "cell_kind", "corner_sharpness"}) {
+          vtkDataArray* array = data->GetArray(name);
+          if (!array) continue;
+          CAPTURE(name);
+          vtkNew<vtkDoubleArray> fresh;  // the same values, no cached range
+          fresh->SetNumberOfTuples(array->GetNumberOfTuples());
+          for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i) fresh->SetValue(i, array->GetComponent(i, 0));
+          double cached[2], computed[2];
+          array->GetRange(cached, 0);
+          fresh->GetRange(computed, 0);
+          CHECK(cached[0] == computed[0]);
+          CHECK(cached[1] == computed[1]);
+        }
+      }
+    }
+  }
 }
