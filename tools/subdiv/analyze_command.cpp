@@ -121,10 +121,8 @@ void run_surface(const AnalyzeArgs& a) {
   std::vector<SurfaceAnalysis> interior, boundary, crease;
   const std::vector<int> valences = parse_valences(a.valence);
   ValenceAnalysisRequest request{scheme, {}, false, a.level, options};
-  // Valence 2 exists on boundaries only: with --boundary it is analysed there alone.
-  for (int n : valences)
-    if (n != 2 || !a.boundary) request.valences.push_back(n);
-  if (!request.valences.empty()) interior = analyse_valences(request);
+  request.valences = valences;
+  interior = analyse_valences(request);
   print_safe("scheme {} ({})\n", scheme->name, scheme->path);
   const bool level_dependent = scheme_is_level_dependent(*scheme);
   if (level_dependent)
@@ -143,9 +141,11 @@ void run_surface(const AnalyzeArgs& a) {
   }
   if (a.crease) {
     request.valences.clear(), request.boundary = false, request.crease = true;
+    // Crease vertices from valence 3: at valence 2 (both ring edges sharp, one face a side)
+    // the crease report has no row yet.
     for (int n : valences)
       if (n >= 3) request.valences.push_back(n);
-    crease = analyse_valences(request);
+    if (!request.valences.empty()) crease = analyse_valences(request);
     print_safe("\ncrease vertices (n ring edges, sharp ring edges 0 and n/2{}):\n{}",
                centre == CentreKind::Face ? "; analysed at the face of the first side's sector" : "",
                surface_table(crease));
