@@ -83,16 +83,6 @@ std::array<double, 3> point(const test::Mesh& m, Index v) {
   return {m.positions[size_t(3 * v)], m.positions[size_t(3 * v + 1)], m.positions[size_t(3 * v + 2)]};
 }
 
-// The quad's (u, v) at parameter t along its edge k (from corner k to corner k + 1).
-std::array<double, 2> on_edge(int k, double t) {
-  switch (k) {
-    case 0: return {t, 0};
-    case 1: return {1, t};
-    case 2: return {1 - t, 1};
-    default: return {0, 1 - t};
-  }
-}
-
 }  // namespace
 
 TEST_CASE("Valence 2 inside: Bfr's limit and derivatives everywhere but within its approximated corners") {
@@ -202,7 +192,7 @@ TEST_CASE("Valence 2 inside: continuous across the faces' shared edges, with the
         if (k == 3) ts.push_back(1 - 1e-9);
         for (double t : ts) {
           // The neighbour runs along the edge the other way.
-          const auto a = on_edge(k, t), b = on_edge(j, 1 - t);
+          const auto a = limit_test::quad_edge_point(k, t), b = limit_test::quad_edge_point(j, 1 - t);
           const LimitSample p = surface.evaluate(f, a[0], a[1], c.mesh.positions, 3);
           const LimitSample q = surface.evaluate(g, b[0], b[1], c.mesh.positions, 3);
           position = std::max(position, limit_test::distance(p.position, q.position));
