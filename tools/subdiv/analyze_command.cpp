@@ -140,12 +140,8 @@ void run_surface(const AnalyzeArgs& a) {
                centre == CentreKind::Face ? "; analysed at the face they become" : "", surface_table(boundary));
   }
   if (a.crease) {
-    request.valences.clear(), request.boundary = false, request.crease = true;
-    // Crease vertices from valence 3: at valence 2 (both ring edges sharp, one face a side)
-    // the crease report has no row yet.
-    for (int n : valences)
-      if (n >= 3) request.valences.push_back(n);
-    if (!request.valences.empty()) crease = analyse_valences(request);
+    request.valences = valences, request.boundary = false, request.crease = true;
+    crease = analyse_valences(request);
     print_safe("\ncrease vertices (n ring edges, sharp ring edges 0 and n/2{}):\n{}",
                centre == CentreKind::Face ? "; analysed at the face of the first side's sector" : "",
                surface_table(crease));
@@ -197,7 +193,7 @@ void add_analyze_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("analyze", "Convergence and smoothness of a scheme: eigen-analysis at extraordinary "
                                             "vertices, or the symbol analysis of a curve scheme");
   cmd->add_option("scheme", args->scheme, "Scheme name (see `subdiv schemes`) or path to a .json file")->required();
-  cmd->add_option("--valence", args->valence, "Valences to analyse: a..b, n, or a list a,b,c")->capture_default_str();
+  cmd->add_option("--valence", args->valence, "Valences to analyse (2..64): a..b, n, or a list a,b,c")->capture_default_str();
   cmd->add_option("--vtk", args->vtk_dir, "Write each valence's characteristic map as a .vtp file into this directory");
   cmd->add_option("--json", args->json_file, "Write the report as JSON");
   cmd->add_option("--svg", args->svg_file, "Write the spectrum (eigenvalue moduli against valence) as an SVG plot");

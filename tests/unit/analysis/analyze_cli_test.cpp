@@ -96,6 +96,12 @@ TEST_CASE("subdiv analyze: parameters, curve schemes, user files, failures") {
   CHECK(two.exit_code == 0);
   CHECK(two.output.find("(lambda_3 = -0.25)") != std::string::npos);
   CHECK(two.output.find("C1 at valence 3") != std::string::npos);
+  // A crease through it (both ring edges sharp) leaves one quad a side: each side is a
+  // boundary vertex of one face, whose limit follows the crease curve.
+  const auto crease = run_subdiv("analyze catmull-clark --valence 2 --crease");
+  CAPTURE(crease.output);
+  CHECK(crease.exit_code == 0);
+  CHECK(crease.output.find("sides of 1 and 1 faces") != std::string::npos);
 }
 
 TEST_CASE("subdiv refine --limit: level L and L+1 agree on the old vertices; --levels 0 works") {
