@@ -9,11 +9,11 @@ namespace {
 
 void check_valences(const ValenceAnalysisRequest& r) {
   if (r.valences.empty()) throw OptionError("{valences}: give at least one valence");
-  const int lowest = r.boundary ? 2 : 3;  // valence 2 exists on boundaries only
+  // Valence 2 exists at boundaries and inside quad meshes (two quads sharing two edges);
+  // inside a triangle mesh the analysis says why it cannot (make_vertex_patch).
   for (int n : r.valences)
-    if (n < lowest || n > kMaxAnalysedValence)
-      throw OptionError(fmt::format("{{valences}} {}: valences must lie in {}..{}{}", n, lowest, kMaxAnalysedValence,
-                                    r.boundary || n != 2 ? "" : " (valence 2 exists at boundaries only)"));
+    if (n < 2 || n > kMaxAnalysedValence)
+      throw OptionError(fmt::format("{{valences}} {}: valences must lie in 2..{}", n, kMaxAnalysedValence));
 }
 
 }  // namespace

@@ -30,7 +30,7 @@ struct ValenceAnalysisRequest {
 inline constexpr int kMaxAnalysedValence = 64;
 
 // One analysis per valence, in the request's order. Throws OptionError for an empty list, a
-// valence outside 3..64 (2..64 at the boundary), or boundary and crease in one request. A scheme that fails the analysis at a valence is no error: the reason is in
+// valence outside 2..64, or boundary and crease in one request. A scheme that fails the analysis at a valence is no error: the reason is in
 // that analysis's verdict.
 std::vector<SurfaceAnalysis> analyse_valences(const ValenceAnalysisRequest& request);
 

@@ -121,10 +121,8 @@ void run_surface(const AnalyzeArgs& a) {
   std::vector<SurfaceAnalysis> interior, boundary, crease;
   const std::vector<int> valences = parse_valences(a.valence);
   ValenceAnalysisRequest request{scheme, {}, false, a.level, options};
-  // Valence 2 exists on boundaries only: with --boundary it is analysed there alone.
-  for (int n : valences)
-    if (n != 2 || !a.boundary) request.valences.push_back(n);
-  if (!request.valences.empty()) interior = analyse_valences(request);
+  request.valences = valences;
+  interior = analyse_valences(request);
   print_safe("scheme {} ({})\n", scheme->name, scheme->path);
   const bool level_dependent = scheme_is_level_dependent(*scheme);
   if (level_dependent)
@@ -142,9 +140,7 @@ void run_surface(const AnalyzeArgs& a) {
                centre == CentreKind::Face ? "; analysed at the face they become" : "", surface_table(boundary));
   }
   if (a.crease) {
-    request.valences.clear(), request.boundary = false, request.crease = true;
-    for (int n : valences)
-      if (n >= 3) request.valences.push_back(n);
+    request.valences = valences, request.boundary = false, request.crease = true;
     crease = analyse_valences(request);
     print_safe("\ncrease vertices (n ring edges, sharp ring edges 0 and n/2{}):\n{}",
                centre == CentreKind::Face ? "; analysed at the face of the first side's sector" : "",
@@ -197,7 +193,7 @@ void add_analyze_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("analyze", "Convergence and smoothness of a scheme: eigen-analysis at extraordinary "
                                             "vertices, or the symbol analysis of a curve scheme");
   cmd->add_option("scheme", args->scheme, "Scheme name (see `subdiv schemes`) or path to a .json file")->required();
-  cmd->add_option("--valence", args->valence, "Valences to analyse: a..b, n, or a list a,b,c")->capture_default_str();
+  cmd->add_option("--valence", args->valence, "Valences to analyse (2..64): a..b, n, or a list a,b,c")->capture_default_str();
   cmd->add_option("--vtk", args->vtk_dir, "Write each valence's characteristic map as a .vtp file into this directory");
   cmd->add_option("--json", args->json_file, "Write the report as JSON");
   cmd->add_option("--svg", args->svg_file, "Write the spectrum (eigenvalue moduli against valence) as an SVG plot");

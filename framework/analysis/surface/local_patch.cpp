@@ -205,16 +205,38 @@ bool quad_grid_labelled(Labelling& reuse, const Level& level, Index face, int ra
 
 Patch make_vertex_patch(PatchCells cells, const LocalConfig& c, int R) {
   const int n = c.valence;
-  if (n < (c.boundary ? 2 : 3) || n > 64)
-    throw Error(fmt::format("valence {} cannot be analysed (use 3..64, or 2..64 on a boundary)", n));
-  if (R < 2) throw Error("a synthetic patch needs at least 2 rings");
   const bool quads = cells == PatchCells::Quads;
+  if (n < 2 || n > 64)
+    throw Error(fmt::format("valence {} cannot be analysed (use 2..64: 2 inside a quad mesh or on a boundary)", n));
+  // Two triangles around an interior vertex share both its edges and then their third one
+  // too: they close into a two-triangle sphere, with no regular surroundings to analyse.
+  if (n == 2 && !c.boundary && !quads)
+    throw Error("interior valence 2 cannot be analysed in a triangle mesh: the vertex's two triangles share all "
+                "three edges, a closed two-triangle sphere with no regular surroundings (use 3..64 inside, or 2..64 "
+                "on a boundary)");
+  if (R < 2) throw Error("a synthetic patch needs at least 2 rings");
   const int sectors = c.boundary ? n - 1 : n;
   // Rays at equal angles; a boundary fan keeps regular sectors when it can, spread over pi.
   const double regular = quads ? kPi / 2 : kPi / 3;
   const double sector_angle = c.boundary ? std::min(regular, kPi / double(sectors)) : 2 * kPi / double(n);
   std::vector<double> ux(static_cast<size_t>(n)), uy(static_cast<size_t>(n));
   for (int r = 0; r < n; ++r) ux[size_t(r)] = std::cos(r * sector_angle), uy[size_t(r)] = std::sin(r * sector_angle);
+  // Two interior sectors at equal angles would lie on one line (their rays point opposite
+  // ways). Each quarter-plane sector is then mapped by z -> z^2, rotated by pi per sector:
+  // every sector a half-plane, faces of positive area, the two sides mirror images
+  // (Karciauskas & Peters 2009 find z^2 as the characteristic ring of valence 2). The
+  // analysis reads positions only to orient and align the patch, so any embedding does.
+  const bool squared = n == 2 && !c.boundary;
+  auto place = [&](int r0, double a, double b, std::vector<double>& xy) {
+    if (squared) {
+      const double sign = r0 == 0 ? 1.0 : -1.0;
+      xy.push_back(sign * (a * a - b * b)), xy.push_back(sign * 2 * a * b);
+      return;
+    }
+    const int r1 = (r0 + 1) % n;
+    xy.push_back(a * ux[size_t(r0)] + b * ux[size_t(r1)]);
+    xy.push_back(a * uy[size_t(r0)] + b * uy[size_t(r1)]);
+  };
 
   Patch p;
   std::vector<double>& xy = p.xy;
@@ -224,7 +246,7 @@ Patch make_vertex_patch(PatchCells cells, const LocalConfig& c, int R) {
   for (int r = 0; r < n; ++r)
     for (int a = 1; a <= R; ++a) {
       ray[size_t(r * R + a - 1)] = Index(xy.size() / 2);
-      xy.push_back(a * ux[size_t(r)]), xy.push_back(a * uy[size_t(r)]);
+      place(r, a, 0, xy);
     }
   std::vector<Index> offsets{0}, corners;
   for (int s = 0; s < sectors; ++s) {
@@ -238,8 +260,7 @@ Patch make_vertex_patch(PatchCells cells, const LocalConfig& c, int R) {
       Index& id = inner[size_t(a * (R + 1) + b)];
       if (id == kNone) {
         id = Index(xy.size() / 2);
-        xy.push_back(a * ux[size_t(r0)] + b * ux[size_t(r1)]);
-        xy.push_back(a * uy[size_t(r0)] + b * uy[size_t(r1)]);
+        place(r0, a, b, xy);
       }
       return id;
     };

@@ -449,9 +449,16 @@ void finish_verdict(SurfaceAnalysis& r) {
   else if (!r.lambda0_one) r.verdict = fmt::format("fails: lambda_0 = 1 is not the simple dominant eigenvalue (lambda_0 = {}, lambda_1 = {})", ev(0), ev(1));
   else if (!r.subdominant_real) r.verdict = fmt::format("fails: lambda_1, lambda_2 are not real and positive ({}, {})", ev(1), ev(2));
   else if (interior && !r.subdominant_equal) r.verdict = fmt::format("fails: lambda_1 != lambda_2 ({} vs {})", ev(1), ev(2));
-  else if (!r.subdominant_dominates && r.subdominant_equal)
+  else if (!r.subdominant_dominates && r.subdominant_equal && r.subdominant_multiplicity > 2)
     r.verdict = fmt::format("fails: lambda_1 = lambda_2 = |lambda_3| = {}: the subdominant eigenvalue has multiplicity {} (more than 2)",
                             number(r.lambda1), r.subdominant_multiplicity);
+  else if (!r.subdominant_dominates && r.subdominant_equal)
+    // Another eigenvalue of the same modulus (Catmull-Clark at interior valence 2: -1/4
+    // beside 1/4, 1/4): its eigenfunction shrinks as fast as the tangent pair's, so the
+    // normal does not converge at the centre (Karciauskas & Peters 2009).
+    r.verdict = fmt::format("fails: |lambda_3| = lambda_1 = lambda_2 = {} (lambda_3 = {}): a third eigenvalue of the "
+                            "subdominant modulus, so the limit has no tangent plane at the centre",
+                            number(r.lambda1), ev(3));
   else if (!r.subdominant_dominates) r.verdict = fmt::format("fails: |lambda_3| = {} is not below lambda_2 = {}", number(r.lambda3), number(r.lambda2));
   else if (!r.subdominant_semisimple) r.verdict = "fails: lambda_1 = lambda_2 has one eigenvector only (Jordan block)";
   else if (r.boundary_collapses)

@@ -85,9 +85,23 @@ TEST_CASE("subdiv analyze: parameters, curve schemes, user files, failures") {
   CHECK(broken.exit_code == 0);
   CHECK(broken.output.find("fails: lambda_1 != lambda_2") != std::string::npos);
 
-  const auto bad = run_subdiv("analyze catmull-clark --valence 2..4");
+  const auto bad = run_subdiv("analyze catmull-clark --valence 1..4");
   CHECK(bad.exit_code != 0);
   CHECK(bad.output.find("--valence") != std::string::npos);
+  // Catmull & Clark's rules hold at interior valence 2 (two quads sharing two edges), so the
+  // local subdivision matrix exists and is analysed: 1/4 twice, and -1/4 as large, so no
+  // tangent plane (Karciauskas & Peters 2009, "Lens-shaped surfaces and C2 subdivision").
+  const auto two = run_subdiv("analyze catmull-clark --valence 2..4");
+  CAPTURE(two.output);
+  CHECK(two.exit_code == 0);
+  CHECK(two.output.find("(lambda_3 = -0.25)") != std::string::npos);
+  CHECK(two.output.find("C1 at valence 3") != std::string::npos);
+  // A crease through it (both ring edges sharp) leaves one quad a side: each side is a
+  // boundary vertex of one face, whose limit follows the crease curve.
+  const auto crease = run_subdiv("analyze catmull-clark --valence 2 --crease");
+  CAPTURE(crease.output);
+  CHECK(crease.exit_code == 0);
+  CHECK(crease.output.find("sides of 1 and 1 faces") != std::string::npos);
 }
 
 TEST_CASE("subdiv refine --limit: level L and L+1 agree on the old vertices; --levels 0 works") {

@@ -86,6 +86,55 @@ TEST_CASE("Catmull-Clark: limit point (n^2 v + 4 sum e + sum f)/(n(n+5)) and nor
   }
 }
 
+TEST_CASE("Catmull-Clark at interior valence 2: eigenvalues 1, 1/4, 1/4, -1/4, 1/8, limit point, no tangent plane") {
+  // Catmull & Clark's rules are defined for n = 2 (vertex weight (n - 2)/n = 0). On the
+  // 1-ring (v, e_0, f_0, e_1, f_1) the matrix has the eigenvalues 1, 1/4 (twice, two
+  // eigenvectors: e_1 - e_0 and f_1 - f_0), -1/4 (eigenvector e_0 + e_1 - 2 v) and 1/8
+  // (computed by hand from the rules; Stam 1998's blocks at n = 2 give 1/4 twice for the
+  // frequency pi). |-1/4| = 1/4: the third eigenvalue is as large as the subdominant pair,
+  // so there is no tangent plane (Karciauskas & Peters 2009: not C1).
+  const auto cc = load_scheme("catmull-clark");
+  const SurfaceAnalysis a = analyse_valence(*cc, 2);
+  CAPTURE(a.verdict);
+  REQUIRE(a.error.empty());
+  CHECK(a.minimal_size == 5);
+  REQUIRE(a.eigenvalues.size() > 5);
+  const double expected[] = {1.0, 0.25, 0.25, -0.25};
+  for (size_t i = 0; i < 4; ++i) {
+    CHECK(std::abs(a.eigenvalues[i].real() - expected[i]) < 1e-12);
+    CHECK(std::abs(a.eigenvalues[i].imag()) < 1e-12);
+  }
+  CHECK(std::abs(a.eigenvalues[4]) <= 0.125 + 1e-12);
+  CHECK(std::abs(a.minimal_eigenvalues[4].real() - 0.125) < 1e-12);
+  CHECK(a.lambda0_one);
+  CHECK(a.subdominant_equal);
+  CHECK(a.subdominant_semisimple);
+  CHECK_FALSE(a.subdominant_dominates);
+  CHECK_FALSE(a.c1);
+  CHECK(a.verdict.find("lambda_3 = -0.25") != std::string::npos);
+  CHECK(a.direction_masks.empty());
+  // The limit point: the formula at n = 2, (4 v + 4 (e_0 + e_1) + f_0 + f_1)/14.
+  const RandomPatch p = random_patch(PatchCells::Quads, 2, 41u);
+  const LimitResult r = limit_positions(*cc, p.level, p.positions);
+  const auto e = ring_neighbours(p.level, 0);
+  const auto f = face_diagonals(p.level, 0);
+  REQUIRE(e.size() == 2);
+  Vec3 point{0, 0, 0};
+  for (int i = 0; i < 3; ++i) {
+    double sum = 4 * p.positions[size_t(i)];
+    for (int j = 0; j < 2; ++j) sum += 4 * at(p.positions, e[size_t(j)])[size_t(i)] + at(p.positions, f[size_t(j)])[size_t(i)];
+    point[size_t(i)] = sum / 14;
+  }
+  CHECK(distance(at(r.positions, 0), point) < 1e-14);
+  CHECK(r.exact[0] == 1);
+  CHECK(r.normal_exact[0] == 0);  // estimated from the limit points around: there is no exact one
+}
+
+TEST_CASE("Loop at interior valence 2: refused with the reason (two triangles closing into a sphere)") {
+  const SurfaceAnalysis a = analyse_valence(*load_scheme("loop"), 2);
+  CHECK(a.error.find("two-triangle sphere") != std::string::npos);
+}
+
 TEST_CASE("Catmull-Clark: the limit of a cube's corner and its radial normal") {
   // The cube is symmetric about its centre: the limit normal at a corner points away from it.
   const Mesh cube = test::cube();

@@ -21,6 +21,7 @@
 #include "support/cli_runner.h"
 #include "support/mesh_data_of.h"
 #include "support/test_meshes.h"
+#include "unit/limit/limit_meshes.h"
 
 using namespace subdiv;
 
@@ -84,15 +85,6 @@ Point3 normal(const Point3& a, const Point3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-// The (u, v) of the point at t along face corner k's edge (k -> k + 1).
-std::array<double, 2> on_edge(int k, double t) {
-  switch (k) {
-    case 0: return {t, 0};
-    case 1: return {1, t};
-    case 2: return {1 - t, 1};
-    default: return {0, 1 - t};
-  }
-}
 
 struct EdgeSides {
   double largest_position = 0, largest_tangent_angle = 0, largest_geometry_angle = 0;
@@ -128,7 +120,7 @@ EdgeSides compare_edges(const Level& level, const std::vector<BezierPatch>& patc
     if (!directed.contains({e.second, e.first})) continue;  // a boundary edge: one side only
     const auto& [g, l] = directed.at({e.second, e.first});
     for (double t : {0.0, 0.1, 0.37, 0.5, 0.81, 1.0}) {
-      const auto a = on_edge(fk.second, t), b = on_edge(l, 1 - t);
+      const auto a = limit_test::quad_edge_point(fk.second, t), b = limit_test::quad_edge_point(l, 1 - t);
       const PatchSample p = evaluate_patch(patches[size_t(fk.first)], a[0], a[1]);
       const PatchSample q = evaluate_patch(patches[size_t(g)], b[0], b[1]);
       for (int c = 0; c < 3; ++c)
@@ -361,7 +353,7 @@ TEST_CASE("irregular boundaries: the boundary curves exact, C0 and one normal fi
       if (base.edge_on_boundary(base.face_edges[size_t(4 * f + k)]))
         for (double t : {0.0, 0.2, 0.5, 0.9, 1.0}) {
           faces.push_back(f);
-          const auto at = on_edge(k, t);
+          const auto at = limit_test::quad_edge_point(k, t);
           uv.insert(uv.end(), {at[0], at[1]});
         }
   CHECK(faces.size() == 5 * 24);  // 16 outer and 8 hole edges

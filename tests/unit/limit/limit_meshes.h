@@ -1,6 +1,7 @@
 #pragma once
 // Meshes for the limit tests.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <span>
 
@@ -44,6 +45,16 @@ inline test::Mesh unrolled_torus(int n) {
     m.positions[size_t(3 * v + 2)] = 0;
   }
   return m;
+}
+
+// The (u, v) of the point at t along a quad's edge k (from corner k to corner k + 1).
+inline std::array<double, 2> quad_edge_point(int k, double t) {
+  switch (k) {
+    case 0: return {t, 0};
+    case 1: return {1, t};
+    case 2: return {1 - t, 1};
+    default: return {0, 1 - t};
+  }
 }
 
 // The Euclidean distance between two points (or any two equally long vectors).

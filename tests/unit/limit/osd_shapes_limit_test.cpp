@@ -136,10 +136,9 @@ TEST_CASE("OpenSubdiv's regression shapes: the limit at (face, u, v) is Bfr's") 
     if (shape == "loop_val2_interior") {
       // Two triangles back to back: refused with the reason, not an internal error.
       CHECK(r.refused.find("thinner than the scheme's stencils") != std::string::npos);
-    } else if (shape.find("val2") != std::string::npos || shape == "catmark_gregory_test8") {
-      // An interior vertex of valence 2 itself has no limit mask (the analysis takes 3..64).
-      CHECK((r.refused.empty() || r.refused.find("valence 2 cannot be analysed") != std::string::npos));
     } else {
+      // Catmull-Clark's interior vertices of valence 2 (the catmark_val2_* shapes,
+      // catmark_gregory_test8) included: their corners are their limit masks.
       CHECK(r.refused.empty());
     }
   }

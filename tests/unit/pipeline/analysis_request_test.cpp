@@ -39,14 +39,17 @@ TEST_CASE("one analysis per valence, in the request's order, with Catmull-Clark'
 TEST_CASE("valences out of range are refused in the front-end's words; dual schemes are analysed at boundaries") {
   ValenceAnalysisRequest r;
   r.scheme = load_scheme("catmull-clark");
-  r.valences = {2};
+  r.valences = {1};
   try {
     analyse_valences(r);
-    FAIL("valence 2 in the interior was accepted");
+    FAIL("valence 1 was accepted");
   } catch (const OptionError& e) {
-    CHECK(e.spelled({{"valences", "--valence"}}) ==
-          "--valence 2: valences must lie in 3..64 (valence 2 exists at boundaries only)");
+    CHECK(e.spelled({{"valences", "--valence"}}) == "--valence 1: valences must lie in 2..64");
   }
+  // Inside a quad mesh valence 2 is two quads sharing two edges: analysed (not C1: its
+  // -1/4 matches the subdominant 1/4, docs/analysis.md).
+  r.valences = {2};
+  CHECK_FALSE(analyse_valences(r).front().c1);
   r.valences = {65};
   CHECK_THROWS_AS(analyse_valences(r), OptionError);
   r.valences = {};
