@@ -115,6 +115,7 @@ AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, in
   const ChildOrigins& o = h.origins[0];
   const Level& P = piece.level;
 
+  s.computed = computed;
   AdaptiveStage n;
   n.level = kept.level;
   std::vector<double> piece_points;

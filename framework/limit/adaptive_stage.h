@@ -32,7 +32,9 @@ struct AdaptiveStage {
   std::vector<std::array<double, 2>> corner_uv;  // per corner: (u, v) in the base face
   std::vector<char> candidate;      // per face: may be split (its parent was)
   std::vector<char> split;          // per face: split for the output (set by the caller)
-  // Filled by refine_stage: this stage's vertices, edges and faces in the next stage.
+  // Filled by refine_stage: the faces refined (split, their rings), and this stage's
+  // vertices, edges and faces in the next stage.
+  std::vector<char> computed;                   // per face
   std::vector<Index> vertex_child, edge_child;  // kNone where not computed
   std::vector<std::vector<Index>> children;     // per face: its child faces
 };
