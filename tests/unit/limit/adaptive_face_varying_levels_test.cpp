@@ -137,12 +137,14 @@ struct Compared {
   int finest = 0, coarsest = 99;  // the levels values came from
 };
 
-Compared compare(const UvMesh& m, const char* scheme_name, FaceVaryingLinear mode, int levels, double tolerance) {
+Compared compare(const UvMesh& m, const char* scheme_name, FaceVaryingLinear mode, int levels, double tolerance,
+                 BoundaryInterpolation boundary) {
   const auto scheme = load_scheme(scheme_name);
   const Level base = m.level();
   const SchemeRun run{scheme.get(), levels};
   RefineOptions ro;
   ro.levels = levels;
+  ro.features.boundary = boundary;
   const Hierarchy h = refine_topology(std::span(&run, 1), base, ro);
   const auto uniform = refine_face_varying(std::span(&run, 1), h, {m.uv, m.indices}, 2, mode, ro);
   const std::vector<UniformCorners> corners = uniform_corners(h);
@@ -159,14 +161,15 @@ Compared compare(const UvMesh& m, const char* scheme_name, FaceVaryingLinear mod
   // The value mesh over the base with the tags refinement gives it first (boundary corners),
   // as the pipeline builds it.
   Level tagged = base;
-  tag_boundary_corners(tagged, BoundaryInterpolation::EdgesAndCorners);
-  const FaceVaryingValueMesh values =
-      face_varying_value_mesh(tagged, {m.uv, m.indices}, 2, mode, BoundaryInterpolation::EdgesAndCorners);
+  tag_boundary_holes(tagged, boundary);
+  tag_boundary_corners(tagged, boundary);
+  const FaceVaryingValueMesh values = face_varying_value_mesh(tagged, {m.uv, m.indices}, 2, mode, boundary);
   const AdaptiveValueMesh channel{&values.level, values.values.values, 2, mode == FaceVaryingLinear::Boundaries,
                                   mode == FaceVaryingLinear::All};
   std::optional<LimitSurface> surface;
   AdaptiveOptions o;
   o.levels = levels;
+  o.features.boundary = boundary;
   o.face_varying = std::span(&channel, 1);
   if (tolerance > 0) o.tolerance = tolerance, o.surface = &surface.emplace(scheme, base);
   const AdaptiveMesh a = refine_adaptive(*scheme, base, m.mesh.positions, o);
@@ -197,12 +200,13 @@ const FaceVaryingLinear kModes[] = {FaceVaryingLinear::None,         FaceVarying
                                     FaceVaryingLinear::CornersPlus1, FaceVaryingLinear::CornersPlus2,
                                     FaceVaryingLinear::Boundaries,   FaceVaryingLinear::All};
 
-void check_every_mode(const UvMesh& m, const std::string& scheme, int levels, double tolerance, const std::string& what) {
+void check_every_mode(const UvMesh& m, const std::string& scheme, int levels, double tolerance, const std::string& what,
+                      BoundaryInterpolation boundary = BoundaryInterpolation::EdgesAndCorners) {
   for (FaceVaryingLinear mode : kModes) {
     const std::string mode_name = face_varying_linear_name(mode);
     CAPTURE(mode_name);
     CAPTURE(tolerance);
-    const Compared c = compare(m, scheme.c_str(), mode, levels, tolerance);
+    const Compared c = compare(m, scheme.c_str(), mode, levels, tolerance, boundary);
     MESSAGE(what, ", ", scheme, ", mode ", mode_name, ", tolerance ", tolerance, ": ", c.corners, " corners (",
             c.along_edges, " along edges; values from levels ", c.coarsest, " to ", c.finest, "), largest difference from uniform ",
             c.worst);
@@ -234,6 +238,8 @@ TEST_CASE("Adaptive Catmull-Clark carries UVs with seams in every mode: a level'
   check_every_mode(cube, "catmull-clark", 2, 1e-300, "cube");
   check_every_mode(grid, "catmull-clark", 3, 0, "grid");
   check_every_mode(grid, "catmull-clark", 2, 1e-300, "grid");
+  check_every_mode(grid, "catmull-clark", 3, 0, "grid, boundary rule edges", BoundaryInterpolation::EdgesOnly);
+  check_every_mode(grid, "catmull-clark", 3, 0, "grid, boundary rule none", BoundaryInterpolation::None);
   check_every_mode(torus, "catmull-clark", 2, 1e-300, "torus");
 }
 
