@@ -55,45 +55,72 @@ AdaptiveValueStage refine_value_stage(const Scheme& scheme, const AdaptiveStage&
                                       RefineOptions options) {
   tag_linear(s.level, vs, channel);
   const Level& L = s.level;
+  // The piece: the faces whose children the vertex stage keeps (its computed faces, and ghosts
+  // whose children fill a pinch), with the value mesh's ghost rings.
   std::vector<int> owner(size_t(L.face_count()), 1);
-  for (Index f = 0; f < L.face_count(); ++f)
-    if (vs.computed[size_t(f)]) owner[size_t(f)] = 0;
+  for (Index f : vnext.parent) owner[size_t(f)] = 0;
   const MeshPiece piece = cut_piece(L, owner, 0, ghost_rings);
   options.features.boundary = BoundaryInterpolation::EdgesOnly;  // the corners are tagged
   const Hierarchy h = refine(scheme, piece.level, options);
-  std::vector<int> piece_owner;
-  for (Index f : piece.base_face) piece_owner.push_back(owner[size_t(f)]);
-  const MeshPiece kept = cut_piece(h.levels[1], finest_face_owners(h, piece_owner), 0, 0);
+  const Level& C = h.levels[1];
   const ChildOrigins& o = h.origins[0];
-  const int C = channel.components;
-
-  AdaptiveValueStage n;
-  n.level = kept.level;
-  check_same_faces(vnext.level, n.level, "child faces");
-  for (Index g = 0; g < n.level.face_count(); ++g) {
-    const Index f = piece.base_face[size_t(o.parent_face[size_t(kept.base_face[size_t(g)])])];
-    const auto& children = vs.children[size_t(f)];
-    if (std::find(children.begin(), children.end(), g) == children.end())
+  // Each stage face's children in the piece's refinement, in order.
+  std::vector<std::vector<Index>> children(size_t(L.face_count()));
+  for (Index i = 0; i < C.face_count(); ++i)
+    if (o.parent_face[size_t(i)] != kNone) children[size_t(piece.base_face[size_t(o.parent_face[size_t(i)])])].push_back(i);
+  // The vertex stage's faces, taken from the piece's children: the same parent, the same place.
+  std::vector<Index> faces;
+  for (size_t g = 0; g < vnext.parent.size(); ++g) {
+    const auto& mine = children[size_t(vnext.parent[g])];
+    const size_t r = size_t(vnext.rank[g]);
+    if (r >= mine.size() || C.face_size(mine[r]) != vnext.level.face_size(Index(g)))
       throw Error("adaptive refinement: a face-varying channel's child faces are not the mesh's (a split that "
-                  "orders its children by more than their parent face); refine uniformly instead");
+                  "divides a face of the UV islands differently); refine uniformly instead");
+    faces.push_back(mine[r]);
   }
+  // Those faces as a level: vertices in the piece's order, the piece's tags.
+  std::vector<Index> local(size_t(C.vertex_count), kNone), used;
+  for (Index i : faces)
+    for (Index u : C.face(i)) local[size_t(u)] = 0;
+  for (Index u = 0; u < C.vertex_count; ++u)
+    if (local[size_t(u)] == 0) local[size_t(u)] = Index(used.size()), used.push_back(u);
+  std::vector<Index> offsets{0}, corners;
+  for (Index i : faces) {
+    for (Index u : C.face(i)) corners.push_back(local[size_t(u)]);
+    offsets.push_back(Index(corners.size()));
+  }
+  AdaptiveValueStage n;
+  n.level = build_level(Index(used.size()), offsets, corners);
+  Level& N = n.level;
+  if (!C.edge_sharpness.empty()) {
+    N.edge_sharpness.assign(size_t(N.edge_count()), 0.f);
+    for (size_t g = 0; g < faces.size(); ++g)
+      for (int k = 0; k < N.face_size(Index(g)); ++k)
+        N.edge_sharpness[size_t(N.face_edge_list(Index(g))[k])] = C.edge_sharp(C.face_edge_list(faces[g])[k]);
+  }
+  if (!C.vertex_sharpness.empty())
+    for (Index u : used) N.vertex_sharpness.push_back(C.vertex_sharp(u));
+  if (!C.face_hole.empty())
+    for (Index i : faces) N.face_hole.push_back(C.face_hole[size_t(i)]);
+
+  const int components = channel.components;
   std::vector<double> piece_values;
   for (Index v : piece.base_vertex)
-    piece_values.insert(piece_values.end(), s.values.begin() + std::ptrdiff_t(C) * v,
-                        s.values.begin() + std::ptrdiff_t(C) * (v + 1));
-  n.values = gather_tuples(h.stencils[0].apply(piece_values, C), C, kept.base_vertex);
+    piece_values.insert(piece_values.end(), s.values.begin() + std::ptrdiff_t(components) * v,
+                        s.values.begin() + std::ptrdiff_t(components) * (v + 1));
+  n.values = gather_tuples(h.stencils[0].apply(piece_values, components), components, used);
 
   s.vertex_child.assign(size_t(L.vertex_count), kNone);
   s.edge_child.assign(size_t(L.edge_count()), kNone);
   const Level& P = piece.level;
-  for (Index c = 0; c < n.level.vertex_count; ++c) {
-    const Index hc = kept.base_vertex[size_t(c)], from = o.parent[size_t(hc)];
-    if (o.kind[size_t(hc)] == OriginKind::Vertex) {
-      s.vertex_child[size_t(piece.base_vertex[size_t(from)])] = c;
-    } else if (o.kind[size_t(hc)] == OriginKind::Edge) {
+  for (size_t c = 0; c < used.size(); ++c) {
+    const Index from = o.parent[size_t(used[c])];
+    if (o.kind[size_t(used[c])] == OriginKind::Vertex) {
+      s.vertex_child[size_t(piece.base_vertex[size_t(from)])] = Index(c);
+    } else if (o.kind[size_t(used[c])] == OriginKind::Edge) {
       const Index a = piece.base_vertex[size_t(P.edge_vertices[size_t(2 * from)])],
                   b = piece.base_vertex[size_t(P.edge_vertices[size_t(2 * from + 1)])];
-      s.edge_child[size_t(find_edge(L, a, b))] = c;
+      s.edge_child[size_t(find_edge(L, a, b))] = Index(c);
     }
   }
   return n;
