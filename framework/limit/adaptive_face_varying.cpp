@@ -67,7 +67,8 @@ AdaptiveValueStage refine_value_stage(const Scheme& scheme, const AdaptiveStage&
   // Each stage face's children in the piece's refinement, in order.
   std::vector<std::vector<Index>> children(size_t(L.face_count()));
   for (Index i = 0; i < C.face_count(); ++i)
-    if (o.parent_face[size_t(i)] != kNone) children[size_t(piece.base_face[size_t(o.parent_face[size_t(i)])])].push_back(i);
+    if (const Index parent = o.parent_face[size_t(i)]; parent != kNone)
+      children[size_t(piece.base_face[size_t(parent)])].push_back(i);
   // The vertex stage's faces, taken from the piece's children: the same parent, the same place.
   std::vector<Index> faces;
   for (size_t g = 0; g < vnext.parent.size(); ++g) {

@@ -1,12 +1,13 @@
 #pragma once
 // Face-varying channels through adaptive refinement (adaptive_refine.h): each channel's value
 // mesh (AdaptiveValueMesh: the base's faces over the values, seams as boundaries) goes
-// through a chain of stages of its own, cut with the same faces as the vertex stages
-// (adaptive_stage.h) and refined with the scheme and the value mesh's tags, as uniform
-// face-varying refinement refines the whole value mesh (primvar/face_varying.h; OpenSubdiv's
-// Vtr::FVarLevel). A value's ring of faces lies inside its vertex's, so the faces a vertex
-// stage holds around the faces it refines hold the values' neighbourhoods too; the value
-// stage's ghost rings are taken in the value mesh, where a seam ends them.
+// through a chain of stages of its own, refined with the scheme and the value mesh's tags as
+// uniform face-varying refinement refines the whole value mesh (primvar/face_varying.h;
+// OpenSubdiv's Vtr::FVarLevel). Each step refines the faces whose children the vertex stage
+// keeps, with their ghost rings in the value mesh (a seam ends them), and keeps the same
+// children: each vertex stage face's parent and place among its parent's children
+// (AdaptiveStage::parent, rank) pick it. A value's ring of faces lies inside its vertex's, so
+// the faces a vertex stage holds around the faces it refines hold the values' neighbourhoods.
 //
 // Stage l of a channel has the vertex stage l's faces in the same order with the same
 // corners, so a face corner's value is the value vertex at the same corner of the same face.
@@ -29,10 +30,10 @@ struct AdaptiveValueStage {
 // The channel at level 0. Throws subdiv::Error when its faces are not the base's.
 AdaptiveValueStage value_base_stage(const Level& base, const AdaptiveValueMesh& channel);
 
-// Refines `stage` as `vertex_stage` (refined by refine_stage, which set its `computed` and
-// `children`) was refined into `vertex_next`; `options` as for the vertex stage (the boundary
-// rule is made EdgesOnly: the value mesh's corners are tagged). Throws subdiv::Error when the
-// children are not the vertex stage's faces.
+// Refines `stage` as `vertex_stage` was refined (refine_stage) into `vertex_next`, whose
+// faces' `parent` and `rank` say which children to keep; `options` as for the vertex stage
+// (the boundary rule is made EdgesOnly: the value mesh's corners are tagged). Throws
+// subdiv::Error when the value mesh's split does not give a face the vertex stage kept.
 AdaptiveValueStage refine_value_stage(const Scheme& scheme, const AdaptiveStage& vertex_stage,
                                       const AdaptiveStage& vertex_next, AdaptiveValueStage& stage,
                                       const AdaptiveValueMesh& channel, int ghost_rings, RefineOptions options);

@@ -115,8 +115,6 @@ AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, in
   const ChildOrigins& o = h.origins[0];
   const Level& P = piece.level;
 
-  s.computed = computed;
-  s.computed = computed;
   AdaptiveStage n;
   n.level = kept.level;
   std::vector<double> piece_points;
@@ -161,9 +159,10 @@ AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, in
     }
   }
   // Each child face's parent, base face, corners' (u, v), and whether it may be split.
-  std::vector<int> rank_in_parent(size_t(h.levels[1].face_count()), 0);
+  std::vector<int> rank_in_parent(size_t(h.levels[1].face_count()), 0);  // a parent's children follow each other
   for (Index i = 1; i < h.levels[1].face_count(); ++i)
-    if (o.parent_face[size_t(i)] == o.parent_face[size_t(i - 1)]) rank_in_parent[size_t(i)] = rank_in_parent[size_t(i - 1)] + 1;
+    if (o.parent_face[size_t(i)] == o.parent_face[size_t(i - 1)])
+      rank_in_parent[size_t(i)] = rank_in_parent[size_t(i - 1)] + 1;
   for (Index g = 0; g < n.level.face_count(); ++g) {
     const Index f = piece.base_face[size_t(o.parent_face[size_t(kept.base_face[size_t(g)])])];
     s.children[size_t(f)].push_back(g);

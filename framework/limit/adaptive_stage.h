@@ -36,9 +36,7 @@ struct AdaptiveStage {
   // among all the parent's children in the split (a stage may keep only some of them).
   std::vector<Index> parent;
   std::vector<int> rank;
-  // Filled by refine_stage: the faces refined (split, their rings), and this stage's
-  // vertices, edges and faces in the next stage.
-  std::vector<char> computed;                   // per face
+  // Filled by refine_stage: this stage's vertices, edges and faces in the next stage.
   std::vector<Index> vertex_child, edge_child;  // kNone where not computed
   std::vector<std::vector<Index>> children;     // per face: its child faces
 };

@@ -125,7 +125,8 @@ std::vector<UniformCorners> uniform_corners(const Hierarchy& h) {
           const Uv a = uv_of(P.edge_vertices[size_t(2 * from)]), b = uv_of(P.edge_vertices[size_t(2 * from + 1)]);
           uv = {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])};
         } else {
-          for (size_t k = 0; k < fv.size(); ++k) uv[0] += fuv[k][0] / double(fv.size()), uv[1] += fuv[k][1] / double(fv.size());
+          const double n = double(fv.size());
+          for (size_t k = 0; k < fv.size(); ++k) uv[0] += fuv[k][0] / n, uv[1] += fuv[k][1] / n;
         }
         out[l + 1].uv.push_back(uv);
       }
@@ -211,7 +212,8 @@ void check_every_mode(const UvMesh& m, const std::string& scheme, int levels, do
     CAPTURE(tolerance);
     const Compared c = compare(m, scheme.c_str(), mode, levels, tolerance, boundary);
     MESSAGE(what, ", ", scheme, ", mode ", mode_name, ", tolerance ", tolerance, ": ", c.corners, " corners (",
-            c.along_edges, " along edges; values from levels ", c.coarsest, " to ", c.finest, "), largest difference from uniform ",
+            c.along_edges, " along edges; values from levels ", c.coarsest, " to ", c.finest,
+            "), largest difference from uniform ",
             c.worst);
     CHECK(c.missing == 0);
     CHECK(c.corners > 0);
@@ -239,7 +241,8 @@ TEST_CASE("Adaptive Catmull-Clark carries UVs with seams in every mode: a level'
   // with a tolerance (nothing is irregular).
   const test::Mesh t = limit_test::bumped(test::torus(6, 4));
   std::vector<int> torus_groups;
-  for (Index f = 0; f < t.level().face_count(); ++f) torus_groups.push_back((f % 6 == 5 ? 1 : 0) + (f / 6 == 2 ? 2 : 0));
+  for (Index f = 0; f < t.level().face_count(); ++f)
+    torus_groups.push_back((f % 6 == 5 ? 1 : 0) + (f / 6 == 2 ? 2 : 0));
   const UvMesh torus = with_islands(t, torus_groups);
   check_every_mode(cube, "catmull-clark", 3, 0, "cube");
   check_every_mode(cube, "catmull-clark", 2, 1e-300, "cube");
