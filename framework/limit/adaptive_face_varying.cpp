@@ -10,13 +10,13 @@
 namespace subdiv {
 namespace {
 
-void check_same_faces(const Level& vertices, const Level& values, const char* what) {
+void check_same_faces(const Level& vertices, const Level& values) {
   bool same = vertices.face_count() == values.face_count();
   for (Index f = 0; same && f < vertices.face_count(); ++f) same = vertices.face_size(f) == values.face_size(f);
   if (!same)
-    throw Error(fmt::format("adaptive refinement: a face-varying channel's {} are not the mesh's faces ({} against "
-                            "{}); the channel's value mesh must have the mesh's faces, in the same order",
-                            what, values.face_count(), vertices.face_count()));
+    throw Error(fmt::format("adaptive refinement: a face-varying channel's value mesh has {} faces against the mesh's "
+                            "{} (or faces of other sizes); it must have the mesh's faces, in the same order",
+                            values.face_count(), vertices.face_count()));
 }
 
 // The tags the modes Boundaries and All renew at every level (primvar/face_varying.h): every
@@ -46,7 +46,7 @@ AdaptiveValueStage value_base_stage(const Level& base, const AdaptiveValueMesh& 
   if (!channel.level || channel.components < 1 ||
       channel.values.size() != size_t(channel.level->vertex_count) * size_t(channel.components))
     throw Error("adaptive refinement: a face-varying channel needs its value mesh and components values per value");
-  check_same_faces(base, *channel.level, "faces");
+  check_same_faces(base, *channel.level);
   return {*channel.level, {channel.values.begin(), channel.values.end()}, {}, {}};
 }
 
