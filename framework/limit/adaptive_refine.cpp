@@ -11,6 +11,7 @@
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/engine/ghost_rings.h"
 #include "framework/engine/weight_table_cache.h"
+#include "framework/limit/adaptive_face_varying.h"
 #include "framework/limit/adaptive_stage.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/scheme/scheme.h"
@@ -95,12 +96,15 @@ void choose_splits(AdaptiveStage& s, bool triangles, const AdaptiveOptions& o, s
   }, LoopProgress::Told);
 }
 
-// Writes the output faces: every face not split, with the finer vertices along its edges.
+// Writes the output faces: every face not split, with the finer vertices along its edges,
+// and per face-varying channel each corner's value vertex (of the face's own side).
 struct Stitcher {
   std::vector<AdaptiveStage>& stages;
+  const std::vector<std::vector<AdaptiveValueStage>>& channels;  // per channel: its stages
   int levels;
   AdaptiveMesh& out;
   std::vector<std::pair<int, Index>> corner_vertex;  // per output corner: (stage, vertex)
+  std::vector<std::vector<Index>> corner_value;      // per channel, per output corner: value
 
   bool edge_split(int l, Index a, Index b) const {
     if (l >= levels) return false;
@@ -111,18 +115,36 @@ struct Stitcher {
     return false;
   }
 
+  // A value vertex's child, or the child of value edge (a, b): the face beside a split face is
+  // refined too (its rings), so the child is there.
+  static Index value_child(const AdaptiveValueStage& s, Index a, Index b = kNone) {
+    Index c = kNone;
+    if (b == kNone) c = s.vertex_child[size_t(a)];
+    else if (const Index e = find_edge(s.level, a, b); e != kNone) c = s.edge_child[size_t(e)];
+    if (c == kNone) throw Error("adaptive refinement: a face-varying value along a split edge was not computed");
+    return c;
+  }
+
   // The vertices along edge (a, b) of stage l from a up to b (b excluded), at the finest
-  // stage either side of the edge was split to; (u, v) between those of a and b.
-  void chain(int l, Index a, Index b, const Uv& ua, const Uv& ub, bool corner) {
+  // stage either side of the edge was split to; (u, v) between those of a and b; per channel
+  // the values va, vb of the face's side at a and b.
+  void chain(int l, Index a, Index b, const Uv& ua, const Uv& ub, bool corner, const std::vector<Index>& va,
+             const std::vector<Index>& vb) {
     if (edge_split(l, a, b)) {
       const AdaptiveStage& s = stages[size_t(l)];
       const Index m = s.edge_child[size_t(find_edge(s.level, a, b))];
       const Uv um{0.5 * (ua[0] + ub[0]), 0.5 * (ua[1] + ub[1])};
-      chain(l + 1, s.vertex_child[size_t(a)], m, ua, um, corner);
-      chain(l + 1, m, s.vertex_child[size_t(b)], um, ub, false);
+      std::vector<Index> ca(va.size()), cm(va.size()), cb(va.size());
+      for (size_t k = 0; k < va.size(); ++k) {
+        const AdaptiveValueStage& t = channels[k][size_t(l)];
+        ca[k] = value_child(t, va[k]), cm[k] = value_child(t, va[k], vb[k]), cb[k] = value_child(t, vb[k]);
+      }
+      chain(l + 1, s.vertex_child[size_t(a)], m, ua, um, corner, ca, cm);
+      chain(l + 1, m, s.vertex_child[size_t(b)], um, ub, false, cm, cb);
       return;
     }
     corner_vertex.emplace_back(l, a);
+    for (size_t k = 0; k < va.size(); ++k) corner_value[k].push_back(va[k]);
     out.corner_uv.push_back(ua);
     out.corner_is_face_corner.push_back(corner ? 1 : 0);
   }
@@ -135,9 +157,14 @@ struct Stitcher {
     }
     const auto fv = s.level.face(f);
     const size_t first = size_t(s.level.face_offsets[size_t(f)]);
+    std::vector<Index> va(channels.size()), vb(channels.size());
     for (size_t k = 0; k < fv.size(); ++k) {
       const size_t k1 = (k + 1) % fv.size();
-      chain(l, fv[k], fv[k1], s.corner_uv[first + k], s.corner_uv[first + k1], true);
+      for (size_t c = 0; c < channels.size(); ++c) {
+        const auto values = channels[c][size_t(l)].level.face(f);
+        va[c] = values[k], vb[c] = values[k1];
+      }
+      chain(l, fv[k], fv[k1], s.corner_uv[first + k], s.corner_uv[first + k1], true, va, vb);
     }
     out.face_offsets.push_back(Index(corner_vertex.size()));
     out.face_level.push_back(l);
@@ -166,6 +193,33 @@ void number_vertices(std::vector<AdaptiveStage>& stages, Stitcher& st, AdaptiveM
       out.data.insert(out.data.end(), at + 3, at + C);
     }
     out.face_vertices.push_back(n);
+  }
+}
+
+// Each channel's values numbered as the vertices are: a value at the finest stage that has it.
+void number_values(const std::vector<std::vector<AdaptiveValueStage>>& channels, std::span<const AdaptiveValueMesh> in,
+                   const Stitcher& st, AdaptiveMesh& out) {
+  for (size_t k = 0; k < channels.size(); ++k) {
+    const std::vector<AdaptiveValueStage>& stages = channels[k];
+    const size_t C = size_t(in[k].components);
+    AdaptiveFaceVarying& a = out.face_varying.emplace_back();
+    a.components = int(C);
+    std::vector<std::vector<Index>> number(stages.size());
+    for (size_t l = 0; l < stages.size(); ++l) number[l].assign(size_t(stages[l].level.vertex_count), kNone);
+    for (size_t c = 0; c < st.corner_vertex.size(); ++c) {
+      size_t l = size_t(st.corner_vertex[c].first);
+      Index u = st.corner_value[k][c];
+      while (l + 1 < stages.size() && !stages[l].vertex_child.empty() && stages[l].vertex_child[size_t(u)] != kNone)
+        u = stages[l].vertex_child[size_t(u)], ++l;
+      Index& n = number[l][size_t(u)];
+      if (n == kNone) {
+        n = Index(a.value_level.size());
+        a.value_level.push_back(int(l));
+        const auto at = stages[l].values.begin() + std::ptrdiff_t(C) * u;
+        a.values.insert(a.values.end(), at, at + std::ptrdiff_t(C));
+      }
+      a.indices.push_back(n);
+    }
   }
 }
 
@@ -259,6 +313,8 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<
   }
   std::vector<AdaptiveStage> stages;
   stages.push_back(base_stage(base, points, C, triangles));
+  std::vector<std::vector<AdaptiveValueStage>> channels;  // per face-varying channel: its stages
+  for (const AdaptiveValueMesh& channel : options.face_varying) channels.push_back({value_base_stage(base, channel)});
   AdaptiveMesh out;
   out.data_channels = data_channels;
   // A front-end's bar (util/step_progress.h): per level, choosing the faces and refining
@@ -293,14 +349,21 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<
     const StepProgressScope refining(share);
     AdaptiveStage next = small ? serial.execute([&] { return refine_stage(scheme, s, rings, ghosts, ro, triangles); })
                                : refine_stage(scheme, s, rings, ghosts, ro, triangles);
+    for (size_t k = 0; k < channels.size(); ++k) {
+      auto refine_values = [&] {
+        return refine_value_stage(scheme, s, next, channels[k].back(), options.face_varying[k], ghosts, ro);
+      };
+      channels[k].push_back(small ? serial.execute(refine_values) : refine_values());
+    }
     out.computed_faces.push_back(next.level.face_count());
     stages.push_back(std::move(next));
   }
   const int reached = int(stages.size()) - 1;
-  Stitcher st{stages, reached, out, {}};
+  Stitcher st{stages, channels, reached, out, {}, std::vector<std::vector<Index>>(channels.size())};
   for (Index f = 0; f < base.face_count(); ++f)
     if (!base.is_hole(f)) st.emit(0, f);
   number_vertices(stages, st, out);
+  number_values(channels, options.face_varying, st, out);
   if (options.limit) {
     const StepProgressScope::Report share = StepProgressScope::part(parts - 1, parts);
     const StepProgressScope moving(share);

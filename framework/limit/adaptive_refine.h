@@ -32,6 +32,21 @@ struct Scheme;
 class LimitSurface;
 class WeightTableCache;
 
+// A face-varying channel (texture coordinates with seams) to carry through adaptive
+// refinement: its value mesh as primvar/face_varying.h builds it (face_varying_value_mesh:
+// the base's faces, in the same order, over the values; seams are boundaries; the vertex
+// mesh's sharpness and the interpolation mode's corners tagged), refined with the scheme and
+// the boundary rule EdgesOnly as uniform face-varying refinement refines it.
+struct AdaptiveValueMesh {
+  const Level* level = nullptr;
+  std::span<const double> values;  // `components` per vertex of `level`
+  int components = 1;
+  // The modes whose tags are renewed at every level: every value on the value mesh's
+  // boundary a corner (OpenSubdiv's linear boundaries), or every value and edge sharp (all).
+  bool linear_boundaries = false;
+  bool linear_everywhere = false;
+};
+
 // A scheme's weight tables kept from one adaptive refinement for the next: each call
 // otherwise compiles them once (muParser over the scheme's formulas, about 2 ms, most of a
 // small mesh's time). The scheme must outlive it; a call with another scheme is refused.
@@ -63,6 +78,21 @@ struct AdaptiveOptions {
   const LimitSurface* surface = nullptr;
   // Weight tables kept between calls with the same scheme, or null (compiled for this call).
   AdaptiveTables* tables = nullptr;
+  // Face-varying channels refined with the faces (not moved to the limit by `limit`; the
+  // pipeline evaluates their limit itself): AdaptiveMesh::face_varying, in this order.
+  std::span<const AdaptiveValueMesh> face_varying;
+};
+
+// A face-varying channel on the adaptive mesh: each face corner's value is the value its
+// face's side has at the corner's vertex (seams stay seams), where the finest level that
+// computed that value puts it. Across a seam that can be a coarser level than the vertex's
+// position: a vertex is placed by the finest level that computed any face around it, a value
+// by the finest that computed a face of its own side.
+struct AdaptiveFaceVarying {
+  int components = 1;
+  std::vector<double> values;    // `components` per value
+  std::vector<Index> indices;    // per face corner (face_vertices' order): its value
+  std::vector<int> value_level;  // per value: the level it comes from
 };
 
 struct AdaptiveMesh {
@@ -82,12 +112,14 @@ struct AdaptiveMesh {
   Index uniform_faces = 0;            // faces of the uniform level L, for comparison
   std::vector<Index> split_faces;     // per level < L: faces split for the output
   std::vector<Index> computed_faces;  // per level 1..L: child faces computed (the work)
+  std::vector<AdaptiveFaceVarying> face_varying;  // AdaptiveOptions::face_varying's channels
 };
 
 // Throws subdiv::Error for a split other than the binary quad and triangle splits, `tables`
 // of another scheme, levels
 // outside 0..12, a non-manifold mesh, a triangle split of a mesh with other faces, and
-// `limit` or `tolerance` without a surface.
+// `limit` or `tolerance` without a surface, and a face-varying value mesh whose faces are
+// not the base's.
 // `data` (data_channels per base vertex): point arrays placed like the positions — refined
 // with the same stencils, and with `limit` evaluated on the limit as well.
 AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<const double> positions,

@@ -159,9 +159,15 @@ AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, in
     }
   }
   // Each child face's parent, base face, corners' (u, v), and whether it may be split.
+  std::vector<int> rank_in_parent(size_t(h.levels[1].face_count()), 0);  // a parent's children follow each other
+  for (Index i = 1; i < h.levels[1].face_count(); ++i)
+    if (o.parent_face[size_t(i)] == o.parent_face[size_t(i - 1)])
+      rank_in_parent[size_t(i)] = rank_in_parent[size_t(i - 1)] + 1;
   for (Index g = 0; g < n.level.face_count(); ++g) {
     const Index f = piece.base_face[size_t(o.parent_face[size_t(kept.base_face[size_t(g)])])];
     s.children[size_t(f)].push_back(g);
+    n.parent.push_back(f);
+    n.rank.push_back(rank_in_parent[size_t(kept.base_face[size_t(g)])]);
     n.base_face.push_back(s.base_face[size_t(f)]);
     n.candidate.push_back(s.split[size_t(f)]);
     const auto fv = L.face(f);

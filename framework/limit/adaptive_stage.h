@@ -32,6 +32,10 @@ struct AdaptiveStage {
   std::vector<std::array<double, 2>> corner_uv;  // per corner: (u, v) in the base face
   std::vector<char> candidate;      // per face: may be split (its parent was)
   std::vector<char> split;          // per face: split for the output (set by the caller)
+  // Per face (stages after the base): its parent face in the previous stage, and its place
+  // among all the parent's children in the split (a stage may keep only some of them).
+  std::vector<Index> parent;
+  std::vector<int> rank;
   // Filled by refine_stage: this stage's vertices, edges and faces in the next stage.
   std::vector<Index> vertex_child, edge_child;  // kNone where not computed
   std::vector<std::vector<Index>> children;     // per face: its child faces

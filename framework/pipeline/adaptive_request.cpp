@@ -4,11 +4,13 @@
 #include <fmt/format.h>
 #include <optional>
 
+#include "framework/features/base_tags.h"
 #include "framework/io/mesh_read.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/pipeline/phase_progress.h"
 #include "framework/pipeline/rational_weights.h"
 #include "framework/pipeline/refine_pipeline.h"
+#include "framework/primvar/face_varying.h"
 #include "framework/util/option_spelling.h"
 #include "framework/util/quoted_text.h"
 
@@ -73,19 +75,50 @@ std::vector<FaceVaryingArray> limit_face_varying(const PreparedEvaluation& prepa
   return out;
 }
 
-// The evaluation that gives the face-varying channels their values. Without `limit` it is
-// there for the channels only: a scheme the limit surface cannot take leaves them out (why
-// in `left_out`) instead of failing the refinement.
-std::optional<PreparedEvaluation> face_varying_evaluation(std::optional<EvaluateRequest>& source, bool limit,
-                                                          std::string& left_out) {
-  if (!source) return std::nullopt;
-  try {
-    return prepare_evaluation(std::move(*source));
-  } catch (const Error& e) {
-    if (limit) throw;
-    left_out = e.what();
-    return std::nullopt;
+// The channels refined with the faces (without limit positions): each channel's value mesh
+// as uniform face-varying refinement starts from it (primvar/face_varying.h). Normals are left
+// out with a note, as refinement leaves them.
+struct ValueMeshes {
+  ValueMeshes() = default;
+  ValueMeshes(ValueMeshes&&) = default;  // `channels` point into `meshes`: moved, never copied
+  ValueMeshes& operator=(ValueMeshes&&) = default;
+  std::vector<const FaceVaryingArray*> arrays;
+  std::vector<FaceVaryingValueMesh> meshes;
+  std::vector<AdaptiveValueMesh> channels;
+};
+
+ValueMeshes value_meshes(const PreparedRefinement& p, std::vector<std::string>& notes) {
+  ValueMeshes out;
+  // The base with the tags refinement gives it first (features/base_tags.h), as uniform
+  // face-varying refinement reads them: boundary corners stay corners of the values too.
+  Level tagged = p.base;
+  tag_boundary_holes(tagged, p.options.features.boundary);
+  sharpen_non_manifold(tagged);
+  tag_boundary_corners(tagged, p.options.features.boundary);
+  for (const FaceVaryingArray& a : p.mesh.face_varying) {
+    if (a.role == ArrayRole::Normals) {
+      notes.push_back(fmt::format("face-varying array {} holds normals, which refinement does not carry (a mix of "
+                                  "unit normals is no normal)",
+                                  subdiv::quoted(a.name)));
+      continue;
+    }
+    out.arrays.push_back(&a);
+    out.meshes.push_back(face_varying_value_mesh(tagged, {a.values, a.indices}, a.components, p.face_varying,
+                                                 p.options.features.boundary));
   }
+  for (size_t k = 0; k < out.meshes.size(); ++k)
+    out.channels.push_back({&out.meshes[k].level, out.meshes[k].values.values, out.arrays[k]->components,
+                            p.face_varying == FaceVaryingLinear::Boundaries, p.face_varying == FaceVaryingLinear::All});
+  return out;
+}
+
+std::vector<FaceVaryingArray> refined_face_varying(const ValueMeshes& in, AdaptiveMesh& mesh) {
+  std::vector<FaceVaryingArray> out;
+  for (size_t k = 0; k < in.arrays.size(); ++k) {
+    AdaptiveFaceVarying& a = mesh.face_varying[k];
+    out.push_back({in.arrays[k]->name, a.components, std::move(a.values), std::move(a.indices), in.arrays[k]->role});
+  }
+  return out;
 }
 
 }  // namespace
@@ -101,13 +134,12 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
   if (r.mesh_name.empty()) r.mesh_name = "mesh";
   const int levels = r.levels;
   r.levels_given = false;  // a sequence is refused below in its own words
-  // Face-varying channels are evaluated at the corners' (face, u, v), from an evaluation of
-  // the same mesh and options (its channels' value meshes and surfaces): on the limit with
-  // `limit`; without it only in the mode All, where the level's values are the same.
+  // With limit positions, face-varying channels are evaluated on their limit at the corners'
+  // (face, u, v), from an evaluation of the same mesh and options; without, they are refined
+  // with the faces (value_meshes).
   std::optional<EvaluateRequest> face_varying_source;
-  if (!r.mesh.face_varying.empty()) face_varying_source = evaluation_of(r);
+  if (request.limit && !r.mesh.face_varying.empty()) face_varying_source = evaluation_of(r);
   PreparedRefinement p = prepare_refinement(r);
-  if (!request.limit && p.face_varying != FaceVaryingLinear::All) face_varying_source.reset();
   if (p.sequence.schemes.size() != 1)
     throw Error(fmt::format("{}: {} is a sequence of schemes; adaptive refinement takes one scheme", r.mesh_name,
                             subdiv::quoted(p.scheme_label)));
@@ -125,10 +157,13 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
   o.tolerance = request.tolerance;
   AdaptiveResult out;
   try {
-    // With face-varying channels the evaluation of the same mesh brings the surface along.
-    std::string face_varying_left_out;
-    std::optional<PreparedEvaluation> evaluation =
-        face_varying_evaluation(face_varying_source, request.limit, face_varying_left_out);
+    // With face-varying channels on the limit, the evaluation of the same mesh brings the
+    // surface along.
+    std::optional<PreparedEvaluation> evaluation;
+    if (face_varying_source) evaluation = prepare_evaluation(std::move(*face_varying_source));
+    ValueMeshes values;
+    if (!request.limit) values = value_meshes(p, p.notes);
+    o.face_varying = values.channels;
     std::shared_ptr<const LimitSurface> surface;
     if (evaluation) {
       surface = evaluation->surface;
@@ -177,16 +212,7 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
     }
     if (p.rational) project_adaptive(out.mesh, weight_channel);
     if (evaluation) out.face_varying = limit_face_varying(*evaluation, out.mesh);
-    else
-      for (const FaceVaryingArray& a : p.mesh.face_varying)
-        p.notes.push_back(
-            !face_varying_left_out.empty()
-                ? fmt::format("face-varying array {} is not carried to the adaptive mesh: {}", subdiv::quoted(a.name),
-                              face_varying_left_out)
-                : fmt::format("face-varying array {} is carried to the adaptive mesh with limit positions, or in the "
-                              "face-varying mode all (bilinear, where a level's values are the limit's); in the mode "
-                              "{} a level's values would need the face-varying refinement of every piece",
-                              subdiv::quoted(a.name), face_varying_linear_name(p.face_varying)));
+    else out.face_varying = refined_face_varying(values, out.mesh);
   } catch (const OptionError&) {
     throw;
   } catch (const Error& e) {

@@ -24,10 +24,12 @@ struct AdaptiveResult {
   // The mesh's point arrays placed like the positions (names and components; the values
   // are in mesh.data, side by side). Integer arrays (ids, labels) are left out.
   std::vector<DataArray> point_arrays;
-  // With limit positions: the mesh's face-varying channels (texture coordinates, ...), each
-  // corner's value the channel's own limit at the corner's (base face, u, v), as `subdiv
-  // evaluate` gives it (evaluate_request.h: the face-varying interpolation modes). Without
-  // limit positions they are not carried (a note says so).
+  // The mesh's face-varying channels (texture coordinates, ...) in the request's
+  // face-varying interpolation mode (primvar/face_varying.h), normals left out with a note.
+  // With limit positions each corner's value is the channel's own limit at the corner's (base
+  // face, u, v), as `subdiv evaluate` gives it (one value per corner); without, the channels
+  // are refined with the faces, each corner's value its level's (limit/adaptive_refine.h:
+  // AdaptiveFaceVarying; values shared within a UV island).
   std::vector<FaceVaryingArray> face_varying;
   std::string scheme_label;
   int levels = 0;

@@ -57,9 +57,10 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
         are interpolated, as for LimitSurface: "all" (the default, bilinear in each face, as
         OpenSubdiv's), "none", "corners-only", "corners-plus1", "corners-plus2",
         "boundaries". With ``limit=True`` each corner of the result gets the array's limit
-        at its (face, u, v), in ``face_varying``; without it, in the mode "all" the same
-        bilinear values (a level's are the limit's), in other modes they are left out (a
-        warning).
+        at its (face, u, v), in ``face_varying`` (one value per corner); without it the arrays
+        are refined with the faces in that mode, each corner taking its level's value on its
+        face's side of a seam, as uniform refinement (refine()) gives it there (values shared
+        within a UV island).
     info : bool
         Return ``(mesh, AdaptiveInfo)`` instead of the mesh.
     progress : callable, optional
@@ -92,7 +93,7 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
                                     str(crease_method), float(feature_angle), check_threads(threads),
                                     _data_arrays(mesh.point_data, mesh.point_roles, mesh.n_points, "point data"),
                                     _face_varying_triples(mesh), str(fvar_boundary), progress)
-    for note in r["notes"]:  # arrays left out (normals, integers, smooth face-varying without limit)
+    for note in r["notes"]:  # arrays left out (normals, integers)
         warnings.warn(f"refine_adaptive: {note}", UserWarning, stacklevel=2)
     out = Mesh._from_arrays(r["mesh"], name=mesh.name, point_data=r["point_data"], point_roles=r["point_roles"],
                             cell_data={"face_level": r["face_level"], "base_face": r["base_face"]},

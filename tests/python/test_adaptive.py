@@ -96,6 +96,33 @@ def test_point_arrays_are_placed_like_the_positions():
         assert np.allclose(r.point_data["height"].ravel(), 2 * r.points[:, 2] - r.points[:, 0], atol=1e-12)
 
 
+@pytest.mark.parametrize("mode", ["none", "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"])
+def test_face_varying_arrays_with_seams_are_uniform_refinements_values(mode):
+    # A cube unwrapped face by face (every edge a seam, three values at every vertex), refined
+    # adaptively with a tolerance that splits every face to level 2: every corner's value is
+    # the one uniform refinement gives the same corner of the same face (faces found by their
+    # centroid, corners by their position).
+    c = cube()
+    rng = np.random.default_rng(3)
+    st = rng.uniform(0, 1, (24, 2))
+    m = sk.Mesh(c.points, c.faces, face_varying={"st": (st, np.arange(24))})
+    a = sk.refine_adaptive(m, "catmull-clark", 2, tolerance=1e-300, fvar_boundary=mode)
+    u = sk.refine(m, "catmull-clark", 2, fvar_boundary=mode)
+    assert a.n_faces == u.n_faces == 96
+    av, ai = a.face_varying["st"]
+    uv, ui = u.face_varying["st"]
+    centre = u.points[u.faces].mean(axis=1)
+    worst = 0.0
+    for f in range(a.n_faces):
+        corners = a.face_indices[a.face_offsets[f]:a.face_offsets[f + 1]]
+        g = np.argmin(np.linalg.norm(centre - a.points[corners].mean(axis=0), axis=1))
+        for k, v in zip(range(a.face_offsets[f], a.face_offsets[f + 1]), corners):
+            j = np.argmin(np.linalg.norm(u.points[u.faces[g]] - a.points[v], axis=1))
+            assert np.linalg.norm(u.points[u.faces[g][j]] - a.points[v]) < 1e-12
+            worst = max(worst, np.abs(av[ai[k]] - uv[ui[4 * g + j]]).max())
+    assert worst < 1e-14
+
+
 def test_face_varying_arrays_on_the_limit_and_rational_meshes():
     # A seamless channel that is an affine image of the positions, in the mode "none": its
     # limit is that image of the limit positions (it refines like them); in the mode "all"
@@ -114,13 +141,15 @@ def test_face_varying_arrays_on_the_limit_and_rational_meshes():
     corners = st[c.faces[base]]  # (corners, 4, 2)
     w = np.column_stack([(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v])
     assert np.abs(values[index] - np.einsum("ck,ckj->cj", w, corners)).max() < 1e-12
-    # Without limit positions: the mode "all" gives the same bilinear values at the levels;
-    # a smooth mode leaves the channel out with a warning.
+    # Without limit positions the channel is refined with the faces: the mode "all" gives the
+    # same bilinear values at the levels, the mode "none" the image of the level's positions.
     plain = sk.refine_adaptive(m, "catmull-clark", 3)
-    assert np.array_equal(plain.face_varying["st"][0], linear.face_varying["st"][0])
-    with pytest.warns(UserWarning, match="in the mode none a level's values would need"):
-        smooth_plain = sk.refine_adaptive(m, "catmull-clark", 3, fvar_boundary="none")
-    assert not smooth_plain.face_varying
+    values, index = plain.face_varying["st"]
+    assert np.abs(values[index] - linear.face_varying["st"][0][linear.face_varying["st"][1]]).max() < 1e-14
+    smooth_plain = sk.refine_adaptive(m, "catmull-clark", 3, fvar_boundary="none")
+    values, index = smooth_plain.face_varying["st"]
+    p = smooth_plain.points[smooth_plain.face_indices]
+    assert np.abs(values[index] - np.column_stack([p[:, 0] + 2 * p[:, 2], p[:, 1] - p[:, 2] + 0.5])).max() < 1e-13
     # Rational: equal weights give the polynomial mesh; uneven ones move it, and a tolerance is refused.
     twos = sk.Mesh(c.points, c.faces, point_data={"weight": np.full(8, 2.0)})
     assert np.abs(sk.refine_adaptive(twos, "catmull-clark", 3, limit=True).points

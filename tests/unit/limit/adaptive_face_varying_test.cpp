@@ -3,8 +3,10 @@
 // closed forms independent of the evaluator: in the mode `all` (OpenSubdiv's default) the
 // channel is bilinear over each base face; in the mode `none` a seamless channel that is an
 // affine image of the positions refines like them, so its limit is that image of the limit
-// positions. Without limit positions the mode `all` gives the same bilinear values (a level's
-// are the limit's), and other modes are left out with a note.
+// positions. Without limit positions the channels are refined with the faces: the mode `all`
+// gives the same bilinear values (a level's are the limit's), the mode `none` that image of
+// the level's positions (adaptive_face_varying_levels_test.cpp compares every mode with
+// uniform face-varying refinement).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -94,13 +96,19 @@ TEST_CASE("adaptive meshes carry face-varying channels on the limit: in the mode
   CHECK(m.face_varying[0].indices.size() == m.face_vertices.size());
 }
 
-TEST_CASE("without limit positions, smooth face-varying channels are left out, and a note says so") {
+TEST_CASE("without limit positions, smooth face-varying channels are refined like the positions") {
   const AdaptiveResult a = adaptive(FaceVaryingLinear::None, false);
-  CHECK(a.face_varying.empty());
-  bool noted = false;
-  for (const std::string& n : a.notes)
-    noted = noted || n.find("in the mode none a level's values would need the face-varying refinement") != std::string::npos;
-  CHECK(noted);
+  REQUIRE(a.face_varying.size() == 1);
+  const FaceVaryingArray& st = a.face_varying.front();
+  REQUIRE(st.indices.size() == a.mesh.face_vertices.size());
+  double worst = 0;
+  for (size_t c = 0; c < st.indices.size(); ++c) {
+    const size_t v = size_t(a.mesh.face_vertices[c]), i = 2 * size_t(st.indices[c]);
+    const double x = a.mesh.positions[3 * v], y = a.mesh.positions[3 * v + 1], z = a.mesh.positions[3 * v + 2];
+    worst = std::max({worst, std::abs(st.values[i] - (x + 2 * z)), std::abs(st.values[i + 1] - (y - z + 0.5))});
+  }
+  CHECK(worst < 1e-14);
+  for (const std::string& n : a.notes) CHECK(n.find("face-varying") == std::string::npos);
 }
 
 }  // namespace subdiv
