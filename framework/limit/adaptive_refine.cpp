@@ -11,6 +11,7 @@
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/engine/ghost_rings.h"
 #include "framework/engine/weight_table_cache.h"
+#include "framework/features/base_tags.h"
 #include "framework/limit/adaptive_face_varying.h"
 #include "framework/limit/adaptive_stage.h"
 #include "framework/limit/limit_surface.h"
@@ -264,7 +265,9 @@ void check_stage_fits(Index split_count, int level) {
 }
 
 Index uniform_face_count(const Level& base, bool triangles, int levels) {
-  double faces = triangles || levels == 0 ? double(base.face_count()) : double(base.corner_count());
+  double faces = 0;  // holes make none
+  for (Index f = 0; f < base.face_count(); ++f)
+    if (!base.is_hole(f)) faces += triangles || levels == 0 ? 1.0 : double(base.face_size(f));
   for (int l = triangles ? 0 : 1; l < levels; ++l) faces *= 4;
   return Index(faces);
 }
@@ -281,8 +284,14 @@ AdaptiveTables::AdaptiveTables(const Scheme& scheme) : scheme_(&scheme) {
 
 AdaptiveTables::~AdaptiveTables() = default;
 
-AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& base, std::span<const double> positions,
+AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& input, std::span<const double> positions,
                              const AdaptiveOptions& options, std::span<const double> data, int data_channels) {
+  // With boundary interpolation "none" the faces along a boundary are holes, as uniform
+  // refinement (engine/refiner.cpp) and OpenSubdiv make them: no refined faces, no limit.
+  std::optional<Level> with_boundary_holes;
+  if (options.features.boundary == BoundaryInterpolation::None)
+    tag_boundary_holes(with_boundary_holes.emplace(input), options.features.boundary);
+  const Level& base = with_boundary_holes ? *with_boundary_holes : input;
   const SplitKind split = scheme.split();
   if (split != SplitKind::Quad && split != SplitKind::Triangle)
     throw Error(fmt::format("scheme {}: adaptive refinement is implemented for the binary quad and triangle splits "

@@ -2,7 +2,7 @@
 the filter's output is empty, and pvbatch goes on (the script keeps running and a good
 filter after a failed one still works): a scheme JSON that does not parse, a triangle
 scheme on quads, a parameter the scheme does not have, a crease array the input lacks, an
-analysis of a curve scheme or of valence 2 at interior vertices."""
+analysis of a curve scheme or of valence 1."""
 
 from paraview.simple import Box, Clean, PVTrivialProducer
 from vtkmodules.vtkCommonCore import vtkPoints
@@ -38,8 +38,8 @@ expect_error(SubdivKitRefine(Input=cube, Scheme="catmull-clark", Parameters="w")
 expect_error(SubdivKitRefine(Input=cube, CreaseArray="NoSuchArray"), "NoSuchArray")  # noqa: F821
 expect_error(SubdivKitAnalyze(Scheme="catmull-clark", SchemeFile=broken), "broken.json")  # noqa: F821
 expect_error(SubdivKitAnalyze(Scheme="chaikin"), "curve scheme")  # noqa: F821
-# Valence 2 exists on boundaries only: the message says how to ask for it.
-expect_error(SubdivKitAnalyze(Scheme="loop", Valences=[2, 4]), "Valences 2..4", "Vertices to boundary")  # noqa: F821
+# Valences start at 2 (inside and on boundaries): the message gives the range.
+expect_error(SubdivKitAnalyze(Scheme="loop", Valences=[1, 4]), "Valences 1..4", "from 2 to 64")  # noqa: F821
 
 
 def fin():

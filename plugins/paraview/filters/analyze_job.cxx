@@ -12,13 +12,11 @@
 namespace subdiv::paraview {
 namespace {
 
-// Valence 2 exists only on a boundary (n ring edges, n - 1 faces), as in `subdiv analyze`.
+// The valences `subdiv analyze` takes: 2 (inside as on a boundary) to kMaxAnalysedValence.
 void check_valences(const AnalyzeRequest& r, const std::string& source) {
-  const int lowest = r.vertices == AnalysedVertices::Boundary ? 2 : 3;
-  if (r.min_valence < lowest || r.max_valence > kMaxAnalysedValence || r.min_valence > r.max_valence)
-    throw Error(fmt::format("{}: Valences {}..{}: give a range from {} to {} with the first no larger than the "
-                            "last{}", source, r.min_valence, r.max_valence, lowest, kMaxAnalysedValence,
-                            lowest == 3 ? " (valence 2 exists at boundary vertices: set Vertices to boundary)" : ""));
+  if (r.min_valence < 2 || r.max_valence > kMaxAnalysedValence || r.min_valence > r.max_valence)
+    throw Error(fmt::format("{}: Valences {}..{}: give a range from 2 to {} with the first no larger than the last",
+                            source, r.min_valence, r.max_valence, kMaxAnalysedValence));
 }
 
 }  // namespace

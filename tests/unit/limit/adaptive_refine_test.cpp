@@ -115,6 +115,43 @@ TEST_CASE("Adaptive refinement of an open grid with a crease: faces along the cr
   CHECK(Index(m.face_offsets.size()) - 1 < m.uniform_faces);
 }
 
+TEST_CASE("Boundary interpolation none: the faces along the boundary are holes, as in uniform refinement") {
+  // OpenSubdiv's VTX_BOUNDARY_NONE: a face with a boundary vertex has no limit surface; our
+  // uniform refinement leaves it out (engine/refiner.cpp), so adaptive refinement must too.
+  const test::Mesh grid = test::grid(6, 5);
+  const Level base = grid.level();
+  const auto scheme = load_scheme("catmull-clark");
+  LimitSurfaceOptions lo;
+  lo.features.boundary = BoundaryInterpolation::None;
+  const LimitSurface surface(scheme, base, lo);
+  for (bool limit : {false, true}) {
+    CAPTURE(limit);
+    AdaptiveOptions o;
+    o.levels = 3;
+    o.features.boundary = BoundaryInterpolation::None;
+    o.limit = limit;
+    o.surface = &surface;
+    const AdaptiveMesh m = refine_adaptive(*scheme, base, grid.positions, o);
+    CHECK(m.uniform_faces == (6 - 2) * (5 - 2) * 64);  // the 12 faces off the boundary
+    const Index faces = Index(m.face_offsets.size()) - 1;
+    CHECK(faces > 0);
+    for (Index f = 0; f < faces; ++f) {
+      bool on_boundary = false;
+      for (Index v : base.face(m.base_face[size_t(f)])) on_boundary = on_boundary || base.on_boundary(v);
+      CHECK_FALSE(on_boundary);
+    }
+    if (!limit) continue;
+    // Every corner on the limit surface at its (base face, u, v).
+    for (Index f = 0; f < faces; ++f)
+      for (Index c = m.face_offsets[size_t(f)]; c < m.face_offsets[size_t(f) + 1]; ++c) {
+        const auto uv = m.corner_uv[size_t(c)];
+        const LimitSample s = surface.evaluate(m.base_face[size_t(f)], uv[0], uv[1], grid.positions, 3, 0);
+        const Index v = m.face_vertices[size_t(c)];
+        for (int k = 0; k < 3; ++k) CHECK(m.positions[size_t(3 * v + k)] == doctest::Approx(s.position[size_t(k)]).epsilon(1e-12));
+      }
+  }
+}
+
 TEST_CASE("Point arrays on adaptive meshes are placed like the positions, with and without the limit") {
   // The refinement and the limit are linear and reproduce affine functions (each row sums to
   // one), so an array that is an affine image of the positions stays that image of the
