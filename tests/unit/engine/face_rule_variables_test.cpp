@@ -7,12 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
 
 #include "framework/engine/refiner.h"
 #include "framework/scheme/scheme_registry.h"
 #include "support/test_meshes.h"
+#include "support/scheme_files.h"
 
 using namespace subdiv;
 namespace fs = std::filesystem;
@@ -20,11 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path write_scheme(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "subdivkit-face-rule-tests";
-  fs::create_directories(dir);
-  const fs::path file = dir / (name + ".json");
-  std::ofstream(file) << text;
-  return file;
+  return test::write_scheme_file("subdivkit-face-rule-tests", name, text);
 }
 
 // A hexagonal prism: two hexagons among vertices of valence 3 (faces of 6 > valence 3).

@@ -1,11 +1,11 @@
 #include <doctest/doctest.h>
 
 #include <filesystem>
-#include <fstream>
 
 #include "framework/scheme/scheme_sequence.h"
 #include "framework/util/error.h"
 #include "support/refine_helpers.h"
+#include "support/scheme_files.h"
 
 using namespace subdiv;
 namespace fs = std::filesystem;
@@ -13,11 +13,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path write_scheme(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "subdivkit-scheme-tests";
-  fs::create_directories(dir);
-  const fs::path file = dir / (name + ".json");
-  std::ofstream(file) << text;
-  return file;
+  return test::write_scheme_file("subdivkit-scheme-tests", name, text);
 }
 
 std::string quad_scheme(const std::string& vertex_rule) {

@@ -12,8 +12,20 @@
 #include <opensubdiv/bfr/surface.h>
 
 #include "support/osd_reference.h"
+#include "support/test_meshes.h"
 
 namespace subdiv_test {
+
+// A test mesh as OpenSubdiv's reference builders take it, with optional crease tags.
+inline OsdMesh osd_mesh(const subdiv::test::Mesh& m, std::vector<OsdCrease> creases = {}) {
+  OsdMesh om;
+  om.vertex_count = m.vertex_count;
+  om.face_offsets.assign(m.offsets.begin(), m.offsets.end());
+  om.face_vertices.assign(m.corners.begin(), m.corners.end());
+  om.xyz = m.positions;
+  om.creases = std::move(creases);
+  return om;
+}
 
 struct BfrSample {
   std::array<double, 3> p{}, du{}, dv{}, duu{}, duv{}, dvv{};

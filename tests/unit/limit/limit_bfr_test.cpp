@@ -17,17 +17,9 @@
 
 using namespace subdiv;
 
-namespace {
+using subdiv_test::osd_mesh;
 
-subdiv_test::OsdMesh osd_mesh(const test::Mesh& m, std::vector<subdiv_test::OsdCrease> creases = {}) {
-  subdiv_test::OsdMesh om;
-  om.vertex_count = m.vertex_count;
-  om.face_offsets.assign(m.offsets.begin(), m.offsets.end());
-  om.face_vertices.assign(m.corners.begin(), m.corners.end());
-  om.xyz = m.positions;
-  om.creases = std::move(creases);
-  return om;
-}
+namespace {
 
 Level tagged_level(const test::Mesh& m, const std::vector<subdiv_test::OsdCrease>& creases) {
   Level base = m.level();

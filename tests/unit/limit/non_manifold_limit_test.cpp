@@ -20,6 +20,8 @@
 
 using namespace subdiv;
 
+using subdiv_test::osd_mesh;
+
 namespace {
 
 // `pages` bent quad strips of 2 columns hinged on a line of `hinge` edges along y: the hinge
@@ -88,15 +90,6 @@ test::Mesh triangulated(const test::Mesh& q) {
     t.add_face({c[0], c[2], c[3]});
   }
   return t;
-}
-
-subdiv_test::OsdMesh osd_mesh(const test::Mesh& m) {
-  subdiv_test::OsdMesh om;
-  om.vertex_count = m.vertex_count;
-  om.face_offsets.assign(m.offsets.begin(), m.offsets.end());
-  om.face_vertices.assign(m.corners.begin(), m.corners.end());
-  om.xyz = m.positions;
-  return om;
 }
 
 double distance(const std::vector<double>& a, const std::array<double, 3>& b) {

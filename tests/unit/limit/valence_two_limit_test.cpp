@@ -24,6 +24,8 @@ using namespace subdiv;
 using subdiv::limit_test::bumped;
 using subdiv::limit_test::central_difference_error;
 
+using subdiv_test::osd_mesh;
+
 namespace {
 
 // The mesh with face `split` = (a, b, c, d) replaced by (x, a, b, c) and (x, c, d, a): the
@@ -64,15 +66,6 @@ struct Case {
 std::vector<Case> cases() {
   return {{"torus", bumped(with_valence_two(test::torus(6, 6), 14, 0.3))},
           {"cube", bumped(with_valence_two(test::cube(), 0, -0.2))}};
-}
-
-subdiv_test::OsdMesh osd_mesh(const test::Mesh& m) {
-  subdiv_test::OsdMesh om;
-  om.vertex_count = m.vertex_count;
-  om.face_offsets.assign(m.offsets.begin(), m.offsets.end());
-  om.face_vertices.assign(m.corners.begin(), m.corners.end());
-  om.xyz = m.positions;
-  return om;
 }
 
 double distance(const std::vector<double>& a, const std::array<double, 3>& b) {

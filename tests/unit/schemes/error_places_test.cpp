@@ -7,12 +7,12 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 
 #include "framework/scheme/scheme_sequence.h"
 #include "framework/util/error.h"
 #include "framework/util/json_path_line.h"
 #include "support/refine_helpers.h"
+#include "support/scheme_files.h"
 
 using namespace subdiv;
 namespace fs = std::filesystem;
@@ -20,11 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path write_scheme(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "subdivkit-error-places";
-  fs::create_directories(dir);
-  const fs::path file = dir / (name + ".json");
-  std::ofstream(file, std::ios::binary) << text;
-  return file;
+  return test::write_scheme_file("subdivkit-error-places", name, text);
 }
 
 template <class F>

@@ -6,12 +6,12 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 
 #include "framework/scheme/scheme_registry.h"
 #include "framework/scheme/scheme_validator.h"
 #include "framework/util/error.h"
 #include "support/cli_runner.h"
+#include "support/scheme_files.h"
 
 using namespace subdiv;
 using namespace subdiv::test;
@@ -20,11 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path write_scheme(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "subdivkit-hostile-schemes";
-  fs::create_directories(dir);
-  const fs::path file = dir / (name + ".json");
-  std::ofstream(file, std::ios::binary) << text;
-  return file;
+  return test::write_scheme_file("subdivkit-hostile-schemes", name, text);
 }
 
 std::string load_error(const fs::path& file) {
