@@ -252,8 +252,9 @@ constexpr double kBytesPerStageFace = 800;
 // Stages of fewer faces are chosen and refined on the calling thread alone.
 constexpr Index kSerialFaces = 4096;
 
-void check_stage_fits(Index split_count, int level) {
-  const double need = 4.0 * double(split_count) * kBytesPerStageFace;
+// Each face-varying channel refines a stage of its own over the same faces (`stages`).
+void check_stage_fits(Index split_count, int level, size_t stages) {
+  const double need = 4.0 * double(split_count) * kBytesPerStageFace * double(stages);
   if (need < kUncheckedBytes) return;
   const MemoryBudget have = available_memory();
   if (need > have.bytes)
@@ -348,7 +349,7 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& input, std::span
     const Index split_count = Index(std::count(s.split.begin(), s.split.end(), 1));
     out.split_faces.push_back(split_count);
     if (split_count == 0) break;
-    check_stage_fits(split_count, l + 1);
+    check_stage_fits(split_count, l + 1, 1 + channels.size());
     RefineOptions ro;
     ro.levels = 1;
     ro.features = options.features;
