@@ -589,7 +589,8 @@ void choose_rings(const AnalysisRun& cx, SurfaceAnalysis& out) {
   }
   if (k0 < 0)
     throw Error(fmt::format("no k-ring (k <= {}) around the centre maps to itself: the scheme's stencils reach "
-                            "further (try a larger max ring, `subdiv analyze --max-ring {}`)",
+                            "further, or its rules here change from level to level; a larger max ring (`subdiv "
+                            "analyze --max-ring {}`) may find one",
                             cx.options.max_ring, cx.options.max_ring + 1));
   if (K < 0) K = k0;
   out.minimal_ring = k0, out.ring = K;
