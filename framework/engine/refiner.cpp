@@ -112,9 +112,7 @@ namespace {
 // The base level's topological tags, in OpenSubdiv's order (features/base_tags.h).
 void tag_base(Level& base, const RefineOptions& options) {
   StageTimer timer(options.evaluation.stage_times, stage(options, 0, "base tags"));
-  tag_boundary_holes(base, options.features.boundary);
-  sharpen_non_manifold(base);
-  tag_boundary_corners(base, options.features.boundary);
+  tag_base_level(base, options.features.boundary);
 }
 
 // The origins of a faces-only split before its faces (topology_steps.h), where the split

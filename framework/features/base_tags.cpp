@@ -71,4 +71,10 @@ void tag_boundary_corners(Level& L, BoundaryInterpolation mode) {
   });
 }
 
+void tag_base_level(Level& base, BoundaryInterpolation mode) {
+  tag_boundary_holes(base, mode);
+  sharpen_non_manifold(base);
+  tag_boundary_corners(base, mode);
+}
+
 }  // namespace subdiv

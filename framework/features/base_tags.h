@@ -24,4 +24,7 @@ void sharpen_non_manifold(Level& base);
 // vertex more faces (sqrt3).
 void tag_boundary_corners(Level& base, BoundaryInterpolation mode);
 
+// All three, in that order: the tags refinement gives a base level before its first step.
+void tag_base_level(Level& base, BoundaryInterpolation mode);
+
 }  // namespace subdiv

@@ -47,9 +47,7 @@ CornerSets fans(const Level& L) {
 // The base level with the tags it takes before refinement (base_tags.h), in Far's order.
 Level tagged_base(const Level& base, const FeatureOptions& features) {
   Level L = base;
-  tag_boundary_holes(L, features.boundary);
-  sharpen_non_manifold(L);
-  tag_boundary_corners(L, features.boundary);
+  tag_base_level(L, features.boundary);
   return L;
 }
 

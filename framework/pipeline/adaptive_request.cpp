@@ -92,9 +92,7 @@ ValueMeshes value_meshes(const PreparedRefinement& p, std::vector<std::string>& 
   // The base with the tags refinement gives it first (features/base_tags.h), as uniform
   // face-varying refinement reads them: boundary corners stay corners of the values too.
   Level tagged = p.base;
-  tag_boundary_holes(tagged, p.options.features.boundary);
-  sharpen_non_manifold(tagged);
-  tag_boundary_corners(tagged, p.options.features.boundary);
+  tag_base_level(tagged, p.options.features.boundary);
   for (const FaceVaryingArray& a : p.mesh.face_varying) {
     if (a.role == ArrayRole::Normals) {
       notes.push_back(fmt::format("face-varying array {} holds normals, which refinement does not carry (a mix of "
