@@ -139,7 +139,7 @@ void cache_array_range(vtkDataArray* array, vtkDataArray* source) {
   store(*array, {range[0], range[1]});
 }
 
-void cache_sparse_array_range(vtkDataArray* array, const std::vector<vtkIdType>& set) {
+void cache_sparse_array_range(vtkDataArray* array, std::span<const vtkIdType> set) {
   if (!array || array->GetNumberOfComponents() != 1 || array->GetNumberOfTuples() == 0) return cache_array_range(array);
   Range range;
   for (vtkIdType i : set) {

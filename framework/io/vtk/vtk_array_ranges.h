@@ -8,6 +8,7 @@
 // (vtkDataArray::PER_COMPONENT with COMPONENT_RANGE, L2_NORM_RANGE for vectors) until the
 // array changes; ranges stored there the same way are what the writer then reads. The
 // values are the same min and max VTK would find, so the file does not change.
+#include <span>
 #include <vector>
 
 #include <vtkType.h>
@@ -33,6 +34,6 @@ void cache_array_range(vtkDataArray* array, vtkDataArray* source);
 // allowed): its range from those values (and 0 if some position is not among them), without
 // a pass over the zeros (write_vtp's sharpness, cell_kind and corner_sharpness arrays: 320 MB
 // of zero pages on a 16M-face level). Arrays of other shapes as cache_array_range.
-void cache_sparse_array_range(vtkDataArray* array, const std::vector<vtkIdType>& set);
+void cache_sparse_array_range(vtkDataArray* array, std::span<const vtkIdType> set);
 
 }  // namespace subdiv::io_detail

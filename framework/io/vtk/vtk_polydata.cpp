@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <new>
+#include <numeric>
+#include <span>
 #include <limits>
 #include <set>
 #include <string>
@@ -233,9 +235,9 @@ vtkSmartPointer<Array> zero_array(const char* name, std::size_t tuples) {
 // Their ranges from the values set (cache_sparse_array_range), not from a pass over the zeros.
 void add_feature_arrays(vtkPolyData& poly, const MeshData& mesh, const CellCounts& cells,
                         const VtkWriteOptions& options) {
-  std::vector<vtkIdType> line_cells(cells.lines());
-  for (std::size_t i = 0; i < line_cells.size(); ++i) line_cells[i] = vtkIdType(i);
-  const std::vector<vtkIdType> crease_cells(line_cells.begin() + std::ptrdiff_t(cells.polylines), line_cells.end());
+  std::vector<vtkIdType> line_cells(cells.lines());  // polylines, then creases
+  std::iota(line_cells.begin(), line_cells.end(), vtkIdType(0));
+  const std::span<const vtkIdType> crease_cells = std::span<const vtkIdType>(line_cells).subspan(cells.polylines);
   if (options.sharpness) {
     auto sharpness = zero_array<vtkDoubleArray>("sharpness", cells.total());
     for (std::size_t i = 0; i < cells.creases; ++i)
