@@ -293,8 +293,8 @@ std::string crease_sides_reason(const Level& L, Index v) {
     return "with one face on a side, that face's corner makes two crease points in one quadrant (a layout for them is "
            "left to do)";
   return "with three or more faces on a side, the faces between the two end faces touch the crease at the vertex "
-         "only, the end faces' quadrants there nest onto faces that end off the crease, so no layout of nested "
-         "quadrants is continuous at the vertex, and every step doubles such vertices (docs/limit.md)";
+         "only and split their edges there differently from the end faces, so nested quadrants are not continuous "
+         "at the vertex, and every step doubles such vertices (docs/limit.md)";
 }
 
 std::string dual_crease_unsupported(const Level& base) {
