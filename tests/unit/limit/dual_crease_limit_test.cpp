@@ -109,6 +109,28 @@ test::Mesh half_disc() {
   return bumped(m);
 }
 
+// A disc of quads around vertex 0: eight quads at 0, then a ring of sixteen (faces 8 + k, k =
+// 0 ... 15: ring-1 vertex k, ring-2 vertex k, k + 1, ring-1 vertex k + 1), with the diameter
+// through ring vertices 0 and 8 infinitely sharp: vertex 0 is a crease vertex of four faces
+// on each side; the crease ends at the boundary in corners.
+test::Mesh disc(Level* creased) {
+  test::Mesh m;
+  const double pi = std::acos(-1.0);
+  m.add_vertex(0, 0, 0);
+  for (int r = 1; r <= 2; ++r)
+    for (int k = 0; k < 16; ++k) m.add_vertex(r * std::cos(k * pi / 8), r * std::sin(k * pi / 8), 0);
+  auto ring = [](int r, int k) { return Index(1 + 16 * (r - 1) + k % 16); };
+  for (int k = 0; k < 8; ++k) m.add_face({0, ring(1, 2 * k), ring(1, 2 * k + 1), ring(1, 2 * k + 2)});
+  for (int k = 0; k < 16; ++k) m.add_face({ring(1, k), ring(2, k), ring(2, k + 1), ring(1, k + 1)});
+  m = bumped(m);
+  *creased = m.level();
+  creased->edge_sharpness.assign(size_t(creased->edge_count()), 0.f);
+  for (const auto& [a, b] : {std::pair{Index(0), ring(1, 0)}, {Index(0), ring(1, 8)}, {ring(1, 0), ring(2, 0)},
+                             {ring(1, 8), ring(2, 8)}})
+    creased->edge_sharpness[size_t(find_edge(*creased, a, b))] = 10.f;
+  return m;
+}
+
 // A torus with its loop of vertices j = 0 (the edges from (i, 0) to (i + 1, 0)) infinitely sharp.
 Level creased_torus_level(const test::Mesh& m, int nu) {
   Level L = m.level();
@@ -837,4 +859,31 @@ TEST_CASE("dual limit next to boundary vertices of other than two faces: level-L
     CHECK(error[0] > 1e-4);
     for (size_t l : {size_t(5), size_t(6)}) CHECK(error[l] / error[l - 1] == doctest::Approx(c.rate).epsilon(5e-3));
   }
+}
+
+TEST_CASE("dual limit next to a crease vertex of four faces a side: the faces without a corner there") {
+  Level L;
+  const test::Mesh m = disc(&L);
+  const LimitSurface s(scheme("doo-sabin"), L);
+  for (Index f = 0; f < 8; ++f)
+    CHECK_THROWS_WITH_AS(s.evaluate(f, 0.4, 0.3, m.positions, 3),
+                         doctest::Contains("crease vertex 0, which has 4 and 4 faces on the sides of its crease"), Error);
+  // The crease from corner to corner (ring-2 vertex 8, ring-1 vertex 8, the centre, ring-1
+  // vertex 0, ring-2 vertex 0): the clamped quadratic B-spline (knots 0, 0, 0, 1, 2, 3, 3, 3;
+  // Greville 0, 1/2, 3/2, 5/2, 3), on its two end edges from both sides.
+  std::vector<P3> polygon;
+  for (Index v : {Index(25), Index(9), Index(0), Index(1), Index(17)}) polygon.push_back(point(m, v));
+  const std::vector<double> knots{0, 0, 0, 1, 2, 3, 3, 3};
+  double worst = 0;
+  for (double t : {0.0, 0.2, 0.5, 0.77, 1.0}) {
+    const P3 near0 = quadratic_bspline(knots, polygon, std::min(2.5 + t / 2, 3 - 1e-15));
+    const P3 near8 = quadratic_bspline(knots, polygon, 0.5 - t / 2);
+    worst = std::max(worst, distance(at(s, m, 8, t, 0), near0));    // ring-1 0 to ring-2 0
+    worst = std::max(worst, distance(at(s, m, 23, t, 1), near0));   // the same edge in face 8 + 15
+    worst = std::max(worst, distance(at(s, m, 16, t, 0), near8));   // ring-1 8 to ring-2 8
+    worst = std::max(worst, distance(at(s, m, 15, t, 1), near8));   // face 8 + 7
+  }
+  CHECK(worst < 1e-12);
+  check_edges_continuous(s, m, L, 1e-12, [](Index f) { return f < 8; });
+  check_level_one_points(m, L, true, [](Index f) { return f < 8; }, 20);
 }
