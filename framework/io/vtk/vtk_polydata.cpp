@@ -273,17 +273,19 @@ void add_level_fields(vtkPolyData& poly, int level) {
 
 }  // namespace
 
-void check_output_level(const OutputLevel& level, std::string_view context) {
+MeshValueRanges check_output_level(const OutputLevel& level, std::string_view context) {
   if (!level.mesh) throw Error(fmt::format("{}: level {} has no mesh", context, level.level));
-  validate_mesh_data(*level.mesh, context);
+  MeshValueRanges ranges;
+  validate_mesh_data(*level.mesh, context, &ranges);
   const CellCounts cells = cell_counts(*level.mesh);
   const std::size_t vertices = std::size_t(level.mesh->vertex_count());
   check_arrays(level.point_data, kReservedPointArrays, "point", vertices, vertices, context);
   check_arrays(level.cell_data, kReservedCellArrays, "face", cells.faces, cells.total(), context);
+  return ranges;
 }
 
 vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level, const VtkWriteOptions& options,
-                                           LevelMemory memory) {
+                                           LevelMemory memory, const MeshValueRanges* ranges) {
   const bool share = memory == LevelMemory::Share;
   const MeshData& mesh = *level.mesh;
   const CellCounts cells = cell_counts(mesh);
@@ -307,6 +309,10 @@ vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level, const VtkWr
     poly->GetCellData()->AddArray(cells.lines() == 0 ? to_vtk(a, a.values, share)
                                                      : to_vtk(a, cell_order(a, cells), false));  // a temporary
   add_level_fields(*poly, level.level);
+  if (ranges && ranges->point_norms_known && mesh.vertex_count() > 0)
+    store_array_range(poly->GetPoints()->GetData(), ranges->point_norm_min, ranges->point_norm_max);
+  if (ranges && ranges->face_vertices_known && !mesh.face_vertices.empty())
+    store_array_range(poly->GetPolys()->GetConnectivityArray(), ranges->face_vertex_min, ranges->face_vertex_max);
   cache_array_ranges(*poly);
   add_feature_arrays(*poly, mesh, cells, options);  // after: with ranges of their own
   return poly;

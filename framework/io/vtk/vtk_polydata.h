@@ -6,6 +6,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include "framework/io/mesh_validate.h"
 #include "framework/io/vtk/vtk_output.h"
 
 class vtkPolyData;
@@ -13,8 +14,8 @@ class vtkPolyData;
 namespace subdiv::io_detail {
 
 // Checks the mesh and every array's name and length; throws subdiv::Error
-// "<context>: <problem>".
-void check_output_level(const OutputLevel& level, std::string_view context);
+// "<context>: <problem>". Returns the value ranges the mesh's checks saw (for make_polydata).
+MeshValueRanges check_output_level(const OutputLevel& level, std::string_view context);
 
 // Share: the polydata's points, faces and double arrays are the level's own memory, handed
 // over without a copy (a 16M-face level is gigabytes), for a polydata written at once while
@@ -22,8 +23,11 @@ void check_output_level(const OutputLevel& level, std::string_view context);
 enum class LevelMemory { Copy, Share };
 
 // Assumes check_output_level passed. Adds the arrays write_vtp adds that `options` asks for.
+// `ranges`, check_output_level's result if given, become the points' and faces' ranges in the
+// file's headers instead of another pass over them.
 vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level, const VtkWriteOptions& options = {},
-                                           LevelMemory memory = LevelMemory::Copy);
+                                           LevelMemory memory = LevelMemory::Copy,
+                                           const MeshValueRanges* ranges = nullptr);
 
 struct BlockCounts;
 
