@@ -100,8 +100,7 @@ private:
 // saves a copy of every character.
 struct SlotText {  // one span, large enough for the whole text
   char* out;
-  char* end;
-  std::span<char> room() const { return {out, end}; }
+  std::span<char> room() const { return {out, std::size_t(-1) / 2}; }
   void commit(std::size_t n) { out += n; }
   void put(const char* text, std::size_t n) { out = std::copy(text, text + n, out); }
 };
@@ -149,9 +148,8 @@ void encode(const Slot& slot, Out& out) {
 
 // Into the slot's own buffer.
 void encode(Slot& slot) {
-  const std::size_t size = 4 * ((slot.carry_size + slot.size) / 3) + 4;
-  char* const text = slot.text.reserve(size);
-  SlotText out{text, text + size};
+  char* const text = slot.text.reserve(4 * ((slot.carry_size + slot.size) / 3) + 4);
+  SlotText out{text};
   encode(slot, out);
   slot.text_size = std::size_t(out.out - text);
 }
@@ -170,10 +168,7 @@ void write_run(std::ostream& os, const unsigned char* data, std::size_t size) {
 bool write_pieces(std::ostream& os, const Pieces& pieces, std::uint64_t* sizes,
                   const std::function<void(double)>& progress) {
   // The file's own buffer: each slot's text encoded straight into it, in order (the last
-  // stage), which saves copying every character once more (6 % of the write's CPU time
-  // went to that copy); the encoding is then serial, but it is a fraction of the
-  // compression's work, which keeps the other cores busy meanwhile. Other streams get text
-  // encoded in parallel into the slots, then written.
+  // stage); other streams get text encoded in parallel into the slots, then written.
   auto* const file = dynamic_cast<CheckedFileBuffer*>(os.rdbuf());
   const std::size_t tokens = std::size_t(2 * tbb::this_task_arena::max_concurrency() + 2);
   std::vector<Slot> slots(tokens);
