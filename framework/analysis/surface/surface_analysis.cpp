@@ -587,11 +587,20 @@ void choose_rings(const AnalysisRun& cx, SurfaceAnalysis& out) {
       break;
     }
   }
-  if (k0 < 0)
+  out.max_ring = cx.options.max_ring;
+  if (k0 < 0) {
+    // Every k-ring has as many points as the child's: the neighbourhood repeats, so only
+    // the stencils' reach can keep it from mapping to itself (analyse_configuration grows).
+    out.stencils_reach_further = true;
+    for (int k = 0; k <= cx.options.max_ring; ++k)
+      out.stencils_reach_further = out.stencils_reach_further && cx.parent.count_within(k) == cx.child.count_within(k);
+    const bool largest = cx.options.max_ring >= kLargestAutomaticRing;
     throw Error(fmt::format("no k-ring (k <= {}) around the centre maps to itself: the scheme's stencils reach "
-                            "further, or its rules here change from level to level; a larger max ring (`subdiv "
-                            "analyze --max-ring {}`) may find one",
-                            cx.options.max_ring, cx.options.max_ring + 1));
+                            "further, or its rules here change from level to level{}",
+                            cx.options.max_ring,
+                            largest ? "" : fmt::format("; a larger max ring (`subdiv analyze --max-ring {}`) may find one",
+                                                       cx.options.max_ring + 1)));
+  }
   if (K < 0) K = k0;
   out.minimal_ring = k0, out.ring = K;
   out.minimal_size = cx.parent.count_within(k0);
@@ -906,10 +915,8 @@ SurfaceAnalysis analyse_crease_or_other(const Scheme& scheme, const Patch& patch
   return out;
 }
 
-}  // namespace
-
-SurfaceAnalysis analyse_configuration(const Scheme& scheme, const LocalConfig& config,
-                                      const SurfaceAnalysisOptions& options) {
+SurfaceAnalysis analyse_configuration_once(const Scheme& scheme, const LocalConfig& config,
+                                           const SurfaceAnalysisOptions& options) {
   const int rings = options.patch_rings > 0 ? options.patch_rings : options.max_ring + 3;
   try {
     if (config.centre == CentreKind::Face) {
@@ -931,6 +938,19 @@ SurfaceAnalysis analyse_configuration(const Scheme& scheme, const LocalConfig& c
     finish_verdict(out);
     return out;
   }
+}
+
+}  // namespace
+
+SurfaceAnalysis analyse_configuration(const Scheme& scheme, const LocalConfig& config,
+                                      const SurfaceAnalysisOptions& options) {
+  SurfaceAnalysis out = analyse_configuration_once(scheme, config, options);
+  SurfaceAnalysisOptions grown = options;
+  while (out.stencils_reach_further && grown.patch_rings == 0 && grown.max_ring < kLargestAutomaticRing) {
+    ++grown.max_ring;
+    out = analyse_configuration_once(scheme, config, grown);
+  }
+  return out;
 }
 
 SurfaceAnalysis analyse_valence(const Scheme& scheme, int n, const SurfaceAnalysisOptions& options) {
