@@ -74,6 +74,9 @@ struct SurfaceAnalysis {
   std::vector<Index> label_vertices;         // label -> vertex of the analysed patch
   std::vector<std::complex<double>> eigenvalues;          // of S, sorted by modulus
   std::vector<std::complex<double>> minimal_eigenvalues;  // on the k0-ring
+  // A crease judged by its sides: the spectrum of S on the crease points, sorted by modulus,
+  // when their rows read crease points only (the crease curve's own local matrix); else empty.
+  std::vector<std::complex<double>> crease_eigenvalues;
 
   bool affine = false;                 // every row sums to 1
   double max_row_error = 0;
