@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include "framework/engine/refiner.h"
-#include "framework/rules/rule.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
 
@@ -67,21 +66,31 @@ bool same_neighbourhood(const Patch& a, Patch& b, int radius) {
   return false;
 }
 
+// Face rings between the analysed rings and the cut of a level, so that no crease point the
+// analysis reads finds the cut's corners: a crease point looks for its corners as far as the
+// scheme's rules by distance from a corner reach (at most kMaxCreaseLength - 1 crease edges),
+// on the level its passes run on, which has twice the crease edges of the level they start
+// from (about one crease edge per face ring around the centre).
+int crease_end_margin(const Scheme& scheme) {
+  int reach = 0;
+  for (const StepRules& step : scheme.steps) reach = std::max(reach, step.crease_ends.search_reach());
+  return (reach + 1) / 2 + 2;
+}
+
 // Refines the sector face's patch until its neighbourhood within the rings the analysis
 // labels repeats from one level to the next. Two steps are not enough: a side of three or
 // more faces makes a sector face at the crease vertex, and both of that vertex's child crease
 // points again have the side's faces plus that sector face around them, so the crease points
 // with the extra face double in number every level while the faces halve in size — only a
 // growing number of rings around the centre has its final shape (for a side of three faces,
-// the 1-ring after two steps, the 3-ring after three). Each level is cut to the faces within `rings` of the centre plus kMaxCreaseReach:
-// the cut makes the crease end in corners there, and a crease point looks for its corners
-// at most kMaxCreaseLength - 1 crease edges away on the level its passes run on (twice as
-// many as on the level they start from), so no point the analysis reads takes a rule by
-// distance from a corner: the crease looks infinite, as the configuration says.
+// the 1-ring after two steps, the 3-ring after three). Each level is cut to the faces within
+// `rings` of the centre plus crease_end_margin: the cut ends the crease in corners there, but
+// no point the analysis reads takes a rule by distance from a corner, so the crease looks
+// infinite, as the configuration says.
 Patch refine_until_stationary(const Scheme& scheme, const LocalConfig& config, Patch p, int rings,
                               const FeatureOptions& features) {
   const int radius = rings - 1;  // what the analysis labels (its max ring + 2)
-  const int keep = rings + kMaxCreaseReach;
+  const int keep = rings + crease_end_margin(scheme);
   RefineOptions ro;
   ro.levels = splitter_info(scheme.split()).period;  // a split that turns the mesh repeats after its period
   ro.features = features;

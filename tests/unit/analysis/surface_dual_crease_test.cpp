@@ -243,7 +243,8 @@ TEST_CASE("dual crease: quad-bspline's across eigenvalues are its sides' boundar
     CHECK(found);
   }
   // Valence 3 (sides of one and two faces): the side of one face's F-face takes both crease
-  // points and gains a corner at each, every level, so that side has no face of fixed size.
+  // points and gains a corner at each corner between two crease edges, every level (a quad
+  // becomes 5, 7, 11, 19 corners), so that side has no face of fixed size.
   const SurfaceAnalysis three = analyse_configuration(*scheme, crease_config(3));
   CHECK(three.verdict.find("a sector of 1 face") != std::string::npos);
 }
