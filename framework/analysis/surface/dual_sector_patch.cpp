@@ -139,7 +139,8 @@ Patch make_dual_sector_patch(const Scheme& scheme, const LocalConfig& config, in
                             config.describe()));
   if (faces < 2)
     throw Error(fmt::format("{}: a sector of {} face{} makes no face of its own (its F-face holds both crease "
-                            "points); analyse at least two faces between the sharp edges",
+                            "points and gains a corner at each corner between two crease edges every level), so no "
+                            "neighbourhood of the crease vertex repeats",
                             config.describe(), faces, faces == 1 ? "" : "s"));
   const Patch p = make_vertex_patch(PatchCells::Quads, primal, rings + 1);
   // Two steps: after one, the sector face's boundary or crease corners have the F-faces of
