@@ -12,6 +12,8 @@ namespace subdiv {
 namespace {
 
 const double kPi = std::acos(-1.0);
+// Steps past the second after which a neighbourhood that has not repeated is taken never to.
+constexpr int kMaxStationarySteps = 8;
 
 // Ring positions (rays) bounding the first sector: 0 and the next sharp ray, or the
 // boundary's last ray.
@@ -35,6 +37,94 @@ bool is_centre_corner(const Level& parent, const ChildOrigins& o, Index child, I
 
 double direction_of(double x, double y) { return std::atan2(y, x); }
 
+// The child face the dual split makes inside face f (its F-face), or kNone.
+Index child_face_inside(const ChildOrigins& o, const Level& child, Index f) {
+  for (Index g = 0; g < child.face_count(); ++g)
+    if (o.parent_face[size_t(g)] == f) return g;
+  return kNone;
+}
+
+// Whether a corner of face f lies on the boundary or on an infinitely sharp edge.
+bool touches_crease(const Level& L, Index f) {
+  for (Index v : L.face(f))
+    for (Index e : L.ring_edges(v))
+      if (L.edge_on_boundary(e) || L.edge_sharp(e) >= kInfinitelySharp) return true;
+  return false;
+}
+
+// Whether the neighbourhood of b's centre within `radius` is a's, for one of b's starts
+// (the dual split keeps a face's size, not necessarily which corner comes first); sets
+// b.start to it.
+bool same_neighbourhood(const Patch& a, Patch& b, int radius) {
+  const std::vector<double> want = label_neighbourhood(a.level, CentreKind::Face, a.centre, a.start, radius).signature;
+  Labelling scratch;
+  for (int start = 0; start < b.level.face_size(b.centre); ++start)
+    if (matches_neighbourhood(scratch, b.level, CentreKind::Face, b.centre, start, radius, want)) {
+      b.start = start;
+      return true;
+    }
+  return false;
+}
+
+// Face rings between the analysed rings and the cut of a level, so that no crease point the
+// analysis reads finds the cut's corners: a crease point looks for its corners as far as the
+// scheme's rules by distance from a corner reach (at most kMaxCreaseLength - 1 crease edges),
+// on the level its passes run on, which has twice the crease edges of the level they start
+// from (about one crease edge per face ring around the centre).
+int crease_end_margin(const Scheme& scheme) {
+  int reach = 0;
+  for (const StepRules& step : scheme.steps) reach = std::max(reach, step.crease_ends.search_reach());
+  return (reach + 1) / 2 + 2;
+}
+
+// Refines the sector face's patch until its neighbourhood within the rings the analysis
+// labels repeats from one level to the next. Two steps are not enough: a side of three or
+// more faces makes a sector face at the crease vertex, and both of that vertex's child crease
+// points again have the side's faces plus that sector face around them, so the crease points
+// with the extra face double in number every level while the faces halve in size — only a
+// growing number of rings around the centre has its final shape (for a side of three faces,
+// the 1-ring after two steps, the 3-ring after three). Each level is cut to the faces within
+// `rings` of the centre plus crease_end_margin: the cut ends the crease in corners there, but
+// no point the analysis reads takes a rule by distance from a corner, so the crease looks
+// infinite, as the configuration says.
+Patch refine_until_stationary(const Scheme& scheme, const LocalConfig& config, Patch p, int rings,
+                              const FeatureOptions& features) {
+  const int radius = rings - 1;  // what the analysis labels (its max ring + 2)
+  const int keep = rings + crease_end_margin(scheme);
+  RefineOptions ro;
+  ro.levels = splitter_info(scheme.split()).period;  // a split that turns the mesh repeats after its period
+  ro.features = features;
+  for (int level = 0; level < kMaxStationarySteps; ++level) {
+    const Extracted e = extract_neighbourhood(p.level, CentreKind::Face, p.centre, keep);
+    Patch cut;
+    cut.level = e.level;
+    cut.centre_kind = CentreKind::Face;
+    cut.start = p.start;
+    cut.xy.resize(size_t(2 * e.level.vertex_count));
+    for (Index v = 0; v < e.level.vertex_count; ++v)
+      for (int c = 0; c < 2; ++c) cut.xy[size_t(2 * v + c)] = p.xy[size_t(2 * e.original[size_t(v)] + c)];
+    cut.centre = Index(std::find(e.face_original.begin(), e.face_original.end(), p.centre) - e.face_original.begin());
+    const Hierarchy h = refine(scheme, cut.level, ro);
+    Patch next;
+    next.level = h.levels.back();
+    next.xy = cut.xy;
+    next.centre = cut.centre;
+    for (size_t s = 0; s < h.stencils.size() && next.centre != kNone; ++s) {
+      next.xy = h.stencils[s].apply(next.xy, 2);
+      next.centre = child_face_inside(h.origins[s], h.levels[s + 1], next.centre);
+    }
+    next.centre_kind = CentreKind::Face;
+    // A split whose boundary or crease does not refine (mid-edge: the polygon of edge
+    // midpoints keeps its edges) leaves the face behind, off the crease: there is no
+    // neighbourhood of the sector's face that repeats, and the analysis keeps the last one.
+    if (next.centre == kNone || !touches_crease(next.level, next.centre)) return cut;
+    if (same_neighbourhood(cut, next, radius)) return cut;
+    p = std::move(next);
+  }
+  throw Error(fmt::format("{}: the sector's face's neighbourhood within {} rings does not repeat after {} more steps",
+                          config.describe(), radius, kMaxStationarySteps));
+}
+
 
 }  // namespace
 
@@ -49,7 +139,8 @@ Patch make_dual_sector_patch(const Scheme& scheme, const LocalConfig& config, in
                             config.describe()));
   if (faces < 2)
     throw Error(fmt::format("{}: a sector of {} face{} makes no face of its own (its F-face holds both crease "
-                            "points); analyse at least two faces between the sharp edges",
+                            "points and gains a corner at each corner between two crease edges every level), so no "
+                            "neighbourhood of the crease vertex repeats",
                             config.describe(), faces, faces == 1 ? "" : "s"));
   const Patch p = make_vertex_patch(PatchCells::Quads, primal, rings + 1);
   // Two steps: after one, the sector face's boundary or crease corners have the F-faces of
@@ -93,13 +184,10 @@ Patch make_dual_sector_patch(const Scheme& scheme, const LocalConfig& config, in
   out.level = h.levels[2];
   out.xy = h.stencils[1].apply(xy, 2);
   out.centre_kind = CentreKind::Face;
-  out.centre = kNone;
-  const auto& inside = h.origins[1].parent_face;
-  for (Index g = 0; g < out.level.face_count() && out.centre == kNone; ++g)
-    if (inside[size_t(g)] == best) out.centre = g;
+  out.centre = child_face_inside(h.origins[1], out.level, best);
   if (out.centre == kNone) throw Error(fmt::format("{}: the sector's face has no child face", config.describe()));
   out.start = 0;
-  return out;
+  return refine_until_stationary(scheme, config, std::move(out), rings, features);
 }
 
 }  // namespace subdiv

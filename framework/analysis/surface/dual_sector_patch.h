@@ -13,9 +13,11 @@ namespace subdiv {
 struct Scheme;
 
 // The primal quad patch of the configuration (boundary, sharp rays, corner tag), refined
-// one step by the scheme's own split and rules; the centre is the child face of the
-// vertex's first sector (the faces from ring edge 0 to the next sharp edge, or to the
-// boundary): the sector's V-face, or for a sector of two faces the E-face of the edge
+// by the scheme's own split and rules until the neighbourhood of the centre within `rings`
+// - 1 (the rings the analysis labels) repeats from level to level, each level cut to the
+// faces around the centre that the next one needs; the centre is the descendant of the face
+// made for the vertex's first sector (the faces from ring edge 0 to the next sharp edge, or
+// to the boundary): the sector's V-face, or for a sector of two faces the E-face of the edge
 // between them. Throws when the configuration leaves no such face (a corner, whose points
 // collapse into one; a sector of one face, whose F-face holds both crease points).
 Patch make_dual_sector_patch(const Scheme& scheme, const LocalConfig& config, int rings, const FeatureOptions& features);

@@ -588,11 +588,20 @@ void choose_rings(const AnalysisRun& cx, SurfaceAnalysis& out) {
       break;
     }
   }
-  if (k0 < 0)
+  out.max_ring = cx.options.max_ring;
+  if (k0 < 0) {
+    // Every k-ring has as many points as the child's: the neighbourhood repeats, so only
+    // the stencils' reach can keep it from mapping to itself (analyse_configuration grows).
+    out.stencils_reach_further = true;
+    for (int k = 0; k <= cx.options.max_ring; ++k)
+      out.stencils_reach_further = out.stencils_reach_further && cx.parent.count_within(k) == cx.child.count_within(k);
+    const bool largest = cx.options.max_ring >= kLargestAutomaticRing;
     throw Error(fmt::format("no k-ring (k <= {}) around the centre maps to itself: the scheme's stencils reach "
-                            "further, or its rules here change from level to level; a larger max ring (`subdiv "
-                            "analyze --max-ring {}`) may find one",
-                            cx.options.max_ring, cx.options.max_ring + 1));
+                            "further, or its rules here change from level to level{}",
+                            cx.options.max_ring,
+                            largest ? "" : fmt::format("; a larger max ring (`subdiv analyze --max-ring {}`) may find one",
+                                                       cx.options.max_ring + 1)));
+  }
   if (K < 0) K = k0;
   out.minimal_ring = k0, out.ring = K;
   out.minimal_size = cx.parent.count_within(k0);
@@ -872,12 +881,52 @@ bool sides_decoupled(const Patch& p, const SurfaceAnalysis& a) {
   return true;
 }
 
+// The labels of S's points on the crease (a vertex of an interior edge of sharpness >= 1).
+std::vector<int> crease_labels(const Patch& p, const SurfaceAnalysis& a) {
+  std::vector<int> out;
+  for (size_t i = 0; i < a.matrix.size(); ++i) {
+    const Index v = a.label_vertices[i];
+    for (Index e : p.level.ring_edges(v))
+      if (!p.level.edge_on_boundary(e) && p.level.edge_sharp(e) >= 1.f) {
+        out.push_back(int(i));
+        break;
+      }
+  }
+  return out;
+}
+
+// The spectrum of S on the crease points, when their rows read crease points only (the
+// crease then refines as a curve of its own, by the crease curve's rule); else empty.
+std::vector<Complex> crease_spectrum(const Patch& p, const SurfaceAnalysis& a) {
+  const std::vector<int> crease = crease_labels(p, a);
+  const int m = int(crease.size());
+  if (m == 0) return {};
+  std::vector<bool> on(a.matrix.size(), false);
+  for (int i : crease) on[size_t(i)] = true;
+  Matrix block(m, m);
+  for (int r = 0; r < m; ++r) {
+    const auto& row = a.matrix[size_t(crease[size_t(r)])];
+    for (size_t j = 0; j < row.size(); ++j)
+      if (!on[j] && std::abs(row[j]) > kWeightZero) return {};
+    for (int c = 0; c < m; ++c) block(r, c) = row[size_t(crease[size_t(c)])];
+  }
+  return sorted_eigenvalues(block);
+}
+
+// "1, 0.5, 0.25, 0.125, ..." (the first few).
+std::string leading_text(const std::vector<Complex>& ev, size_t count) {
+  std::string s;
+  for (size_t i = 0; i < std::min(count, ev.size()); ++i) s += (i ? ", " : "") + complex_text(ev[i]);
+  return ev.size() > count ? s + ", ..." : s;
+}
+
 // A crease cuts the neighbourhood into two sides that, when S is block triangular (checked
 // by sides_decoupled), share only the crease points, refined by the crease curve's rule on
 // their own. Each side is then refined as a surface whose boundary is the crease — exactly
 // so where the scheme's crease rules are its boundary rules — and the smoothness across the
 // crease is each side's boundary analysis (a side of k faces: boundary valence k + 1). The
 // two-sided characteristic map is no test here: its subdominant pair mixes the two sides.
+// Along the crease, the spectrum of the crease points' own block (crease_eigenvalues).
 void judge_crease_by_sides(const Scheme& scheme, const SurfaceAnalysisOptions& options, SurfaceAnalysis& out) {
   const int first = first_sector_faces(out.config);
   const int sides[2] = {first, out.config.valence - first};
@@ -893,24 +942,28 @@ void judge_crease_by_sides(const Scheme& scheme, const SurfaceAnalysisOptions& o
     if (!b.c1 && failed.empty()) failed = fmt::format("the side of {} faces ({}): {}", k, b.config.describe(), why);
   }
   out.c1 = failed.empty();
+  const std::string along =
+      out.crease_eigenvalues.empty()
+          ? std::string()
+          : fmt::format(" (its points refine among themselves: {})", leading_text(out.crease_eigenvalues, 4));
   out.verdict = out.c1 ? fmt::format("C1 on both sides of the crease (sides of {} and {} faces, each as at a boundary); "
-                                     "along it the crease curve's",
-                                     sides[0], sides[1])
+                                     "along it the crease curve's{}",
+                                     sides[0], sides[1], along)
                        : "fails: " + failed;
 }
 
 SurfaceAnalysis analyse_crease_or_other(const Scheme& scheme, const Patch& patch, const LocalConfig& config,
                                         const SurfaceAnalysisOptions& options) {
   SurfaceAnalysis out = analyse_patch(scheme, patch, config, options);
-  if (two_sided_crease(config) && out.error.empty() && !out.matrix.empty() && sides_decoupled(patch, out))
+  if (two_sided_crease(config) && out.error.empty() && !out.matrix.empty() && sides_decoupled(patch, out)) {
+    out.crease_eigenvalues = crease_spectrum(patch, out);
     judge_crease_by_sides(scheme, options, out);
+  }
   return out;
 }
 
-}  // namespace
-
-SurfaceAnalysis analyse_configuration(const Scheme& given, const LocalConfig& config,
-                                      const SurfaceAnalysisOptions& options) {
+SurfaceAnalysis analyse_configuration_once(const Scheme& given, const LocalConfig& config,
+                                           const SurfaceAnalysisOptions& options) {
   const int rings = options.patch_rings > 0 ? options.patch_rings : options.max_ring + 3;
   std::shared_ptr<const Scheme> with_rim;
   const Scheme& scheme = scheme_for_patch_rim(given, config, with_rim);
@@ -934,6 +987,19 @@ SurfaceAnalysis analyse_configuration(const Scheme& given, const LocalConfig& co
     finish_verdict(out);
     return out;
   }
+}
+
+}  // namespace
+
+SurfaceAnalysis analyse_configuration(const Scheme& scheme, const LocalConfig& config,
+                                      const SurfaceAnalysisOptions& options) {
+  SurfaceAnalysis out = analyse_configuration_once(scheme, config, options);
+  SurfaceAnalysisOptions grown = options;
+  while (out.stencils_reach_further && grown.patch_rings == 0 && grown.max_ring < kLargestAutomaticRing) {
+    ++grown.max_ring;
+    out = analyse_configuration_once(scheme, config, grown);
+  }
+  return out;
 }
 
 SurfaceAnalysis analyse_valence(const Scheme& scheme, int n, const SurfaceAnalysisOptions& options) {

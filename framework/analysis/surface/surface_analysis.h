@@ -30,9 +30,16 @@ namespace subdiv {
 
 struct Scheme;
 
+// The largest k-ring analyse_configuration grows max_ring to (subdiv analyze --max-ring's limit).
+constexpr int kLargestAutomaticRing = 8;
+
 struct SurfaceAnalysisOptions {
   FeatureOptions features;  // boundary interpolation and crease method, as in OpenSubdiv
-  int max_ring = 5;                   // largest k-ring tried as invariant neighbourhood
+  // Largest k-ring tried as invariant neighbourhood. analyse_configuration tries larger
+  // ones, up to kLargestAutomaticRing, where none within it maps to itself but the
+  // neighbourhood repeats: the stencils reach further (an even-degree quad B-spline's crease
+  // of d = 12 needs the 6-ring).
+  int max_ring = 5;
   int patch_rings = 0;                // rings of the synthetic patch; 0: max_ring + 3
   bool characteristic_map = true;     // compute and check it
   double characteristic_scale = 8.0;  // refine until the mesh is this much finer
@@ -57,6 +64,8 @@ struct SurfaceAnalysis {
   LocalConfig config;
   int steps = 1;                  // refinement steps per analysed step (2: R S^2)
   std::string error;              // the analysis could not run: why (rules fail, no invariant ring)
+  bool stencils_reach_further = false;  // no k-ring maps to itself, but each has as many points as its child
+  int max_ring = 0;               // the largest k-ring tried (options.max_ring, or grown)
 
   int minimal_ring = -1, ring = -1;   // k0 and K
   int minimal_size = 0, size = 0;     // their numbers of points
@@ -65,6 +74,9 @@ struct SurfaceAnalysis {
   std::vector<Index> label_vertices;         // label -> vertex of the analysed patch
   std::vector<std::complex<double>> eigenvalues;          // of S, sorted by modulus
   std::vector<std::complex<double>> minimal_eigenvalues;  // on the k0-ring
+  // A crease judged by its sides: the spectrum of S on the crease points, sorted by modulus,
+  // when their rows read crease points only (the crease curve's own local matrix); else empty.
+  std::vector<std::complex<double>> crease_eigenvalues;
 
   bool affine = false;                 // every row sums to 1
   double max_row_error = 0;
