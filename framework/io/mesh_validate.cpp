@@ -1,7 +1,9 @@
 #include "framework/io/mesh_validate.h"
 
-#include <span>
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -33,22 +35,57 @@ bool all_of_parallel(std::size_t n, const Good& good) {
       [](bool a, bool b) { return a && b; });
 }
 
-// `what` is "face" or "polyline"; min_size is 3 or 2.
-void check_csr(std::span<const Index> offsets, std::span<const Index> indices,
-               const char* what, int min_size, Index vertex_count, std::string_view context) {
+// Whether every element has at least min_size indices, i.e. the offsets (which start at 0)
+// grow by at least min_size from each to the next: a branch-free pass that the compiler
+// vectorises. Then they also stay within 0 and their last.
+bool steps_at_least(std::span<const Index> offsets, int min_size) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, offsets.size() - 1, 1 << 16), true,
+      [&](const tbb::blocked_range<std::size_t>& r, bool ok) {
+        if (!ok) return false;
+        int short_step = 0;
+        for (std::size_t i = r.begin(); i != r.end(); ++i)
+          short_step |= int((long long)offsets[i + 1] - (long long)offsets[i] < min_size);  // no overflow
+        return short_step == 0;
+      },
+      [](bool a, bool b) { return a && b; });
+}
+
+struct IndexRange {
+  Index min = std::numeric_limits<Index>::max(), max = std::numeric_limits<Index>::min();
+  IndexRange join(const IndexRange& o) const { return {std::min(min, o.min), std::max(max, o.max)}; }
+};
+
+// The smallest and largest index: one vectorised pass, which both checks the indices (with
+// steps_at_least every index belongs to an element) and gives writers their range.
+IndexRange index_range(std::span<const Index> indices) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, indices.size(), 1 << 16), IndexRange{},
+      [&](const tbb::blocked_range<std::size_t>& r, IndexRange range) {
+        Index lo = range.min, hi = range.max;
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          lo = indices[i] < lo ? indices[i] : lo;
+          hi = indices[i] > hi ? indices[i] : hi;
+        }
+        return IndexRange{lo, hi};
+      },
+      [](const IndexRange& a, const IndexRange& b) { return a.join(b); });
+}
+
+// `what` is "face" or "polyline"; min_size is 3 or 2. Returns the indices' range (min > max
+// when there are none).
+IndexRange check_csr(std::span<const Index> offsets, std::span<const Index> indices,
+                     const char* what, int min_size, Index vertex_count, std::string_view context) {
   if (offsets.empty() || offsets.front() != 0)
     fail(context, fmt::format("{} offsets must start with 0", what));
   if (size_t(offsets.back()) != indices.size())
     fail(context, fmt::format("{} offsets end at {} but there are {} {} indices", what,
                               offsets.back(), indices.size(), what));
-  // Each element on its own: its offsets within the indices before any index is read.
-  const auto good = [&](size_t i) {
-    if (offsets[i] < 0 || offsets[i + 1] > offsets.back() || offsets[i + 1] - offsets[i] < min_size) return false;
-    for (Index k = offsets[i]; k < offsets[i + 1]; ++k)
-      if (indices[k] < 0 || indices[k] >= vertex_count) return false;
-    return true;
-  };
-  if (all_of_parallel(offsets.size() - 1, good)) return;
+  if (steps_at_least(offsets, min_size)) {
+    const IndexRange range = index_range(indices);
+    if (indices.empty() || (range.min >= 0 && range.max < vertex_count)) return range;
+  }
+  // Something is wrong: element by element in order, so that the message names the first problem.
   for (size_t i = 0; i + 1 < offsets.size(); ++i) {
     const Index size = offsets[i + 1] - offsets[i];
     if (offsets[i + 1] > offsets.back())
@@ -62,12 +99,56 @@ void check_csr(std::span<const Index> offsets, std::span<const Index> indices,
                                   "(numbered from 0)",
                                   what, i, indices[k], vertex_count));
   }
+  fail(context, fmt::format("{} offsets are not increasing", what));  // not reached: the walk names the problem
 }
 
-void check_positions(const MeshData& mesh, std::string_view context) {
+// The smallest and largest squared norm of the points, and whether every one was finite.
+struct NormSquares {
+  double min = std::numeric_limits<double>::infinity(), max = 0;
+  bool finite = true;
+  NormSquares join(const NormSquares& o) const { return {std::min(min, o.min), std::max(max, o.max), finite && o.finite}; }
+};
+
+// One branch-free pass over the coordinates. A squared norm is finite exactly when the
+// point's coordinates are and their squares do not overflow. Summed as
+// vtk_array_ranges.cpp's range_of sums them (0 + x*x + y*y + z*z, in that order), and the
+// square root is monotonic and correctly rounded, so the square roots of these bounds are
+// the bounds of the norms, bit for bit.
+NormSquares norm_squares(std::span<const double> positions) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, positions.size() / 3, 1 << 15), NormSquares{},
+      [&](const tbb::blocked_range<std::size_t>& r, NormSquares range) {
+        double lo = range.min, hi = range.max;
+        int infinite = 0;
+        const double* p = positions.data();
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          double n = 0;
+          n += p[3 * i] * p[3 * i];
+          n += p[3 * i + 1] * p[3 * i + 1];
+          n += p[3 * i + 2] * p[3 * i + 2];
+          infinite |= int(!(n <= std::numeric_limits<double>::max()));  // inf or NaN
+          lo = n < lo ? n : lo;
+          hi = n > hi ? n : hi;
+        }
+        return range.join({lo, hi, infinite == 0});
+      },
+      [](const NormSquares& a, const NormSquares& b) { return a.join(b); });
+}
+
+// Also the points' norm range into `ranges` (not null) when it is known.
+void check_positions(const MeshData& mesh, std::string_view context, MeshValueRanges* ranges) {
   if (mesh.positions.size() % 3 != 0)
     fail(context, fmt::format("{} coordinates is not a whole number of xyz triples",
                               mesh.positions.size()));
+  if (mesh.positions.empty()) return;
+  const NormSquares squares = norm_squares(mesh.positions);
+  if (squares.finite) {
+    ranges->point_norms_known = true;
+    ranges->point_norm_min = std::sqrt(squares.min), ranges->point_norm_max = std::sqrt(squares.max);
+    return;
+  }
+  // Some square is not finite: an overflow of finite coordinates (the norms then unknown
+  // here), or a coordinate that is not finite, named in order.
   if (all_of_parallel(mesh.positions.size(), [&](size_t i) { return std::isfinite(mesh.positions[i]); })) return;
   for (size_t i = 0; i < mesh.positions.size(); ++i)
     if (!std::isfinite(mesh.positions[i]))
@@ -154,14 +235,17 @@ void check_face_varying(const MeshData& mesh, std::string_view context) {
 
 }  // namespace
 
-void validate_mesh_data(const MeshData& mesh, std::string_view context) {
-  check_positions(mesh, context);
-  check_csr(mesh.face_offsets, mesh.face_vertices, "face", 3, mesh.vertex_count(), context);
+void validate_mesh_data(const MeshData& mesh, std::string_view context, MeshValueRanges* ranges) {
+  MeshValueRanges seen;
+  check_positions(mesh, context, &seen);
+  const IndexRange faces = check_csr(mesh.face_offsets, mesh.face_vertices, "face", 3, mesh.vertex_count(), context);
+  if (!mesh.face_vertices.empty()) seen.face_vertices_known = true, seen.face_vertex_min = faces.min, seen.face_vertex_max = faces.max;
   check_csr(mesh.line_offsets, mesh.line_vertices, "polyline", 2, mesh.vertex_count(), context);
   check_tags(mesh, context);
   check_data_arrays(mesh.point_data, mesh.vertex_count(), "point", context);
   check_data_arrays(mesh.cell_data, mesh.face_count(), "face", context);
   check_face_varying(mesh, context);
+  if (ranges) *ranges = seen;
 }
 
 }  // namespace subdiv

@@ -14,6 +14,20 @@ namespace subdiv {
 // than 2, indices out of range, non-finite coordinates, crease or corner tags naming
 // missing vertices, crease tags joining a vertex to itself, negative or non-finite
 // sharpness.
-void validate_mesh_data(const MeshData& mesh, std::string_view context);
+//
+// `ranges`, if given, receives what the checks of positions and faces see on their way (one
+// pass over each array either way): writers put these ranges into their files' headers
+// (write_vtp's RangeMin and RangeMax) without another pass over hundreds of megabytes.
+struct MeshValueRanges {
+  // Smallest and largest Euclidean norm of a point, as vtkDataArray::GetRange(-1) gives them
+  // (the square root of the sum of squares, summed x, y, z). Not known (false) when there are
+  // no points or some squares overflow (coordinates beyond 1e154, which need a scaled norm).
+  bool point_norms_known = false;
+  double point_norm_min = 0, point_norm_max = 0;
+  // Smallest and largest index in face_vertices; not known when there are none.
+  bool face_vertices_known = false;
+  Index face_vertex_min = 0, face_vertex_max = 0;
+};
+void validate_mesh_data(const MeshData& mesh, std::string_view context, MeshValueRanges* ranges = nullptr);
 
 }  // namespace subdiv

@@ -47,17 +47,6 @@ std::string vertex_problem(const Level& L, Index v) {
     return fmt::format("crease vertex {} joins sharp edges of sharpness {} and {} (a crease whose sharpness varies "
                        "along it decays unevenly, which is not evaluated yet)",
                        v, s[0], s[1]);
-  if (L.on_boundary(v)) {
-    if (L.incident_face_count(v) != 2)
-      return fmt::format("boundary vertex {} has {} faces (only two faces per side of a boundary or crease so far)", v,
-                         L.incident_face_count(v));
-    return {};
-  }
-  const auto ring = L.ring_edges(v);
-  if (ring.size() != 4 || !dual_sharp_edge(L, ring[0]) != !dual_sharp_edge(L, ring[2]))
-    return fmt::format("crease vertex {} does not have two faces on each side of its crease (only two faces per "
-                       "side of a boundary or crease so far)",
-                       v);
   return {};
 }
 
@@ -272,6 +261,40 @@ std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& feat
     }
   }
   return {};
+}
+
+namespace {
+
+// The faces on the two sides of v's crease (v has two sharp edges and does not collapse).
+std::array<int, 2> crease_sides(const Level& L, Index v) {
+  if (L.on_boundary(v)) return {L.incident_face_count(v), 0};
+  const auto ring = L.ring_edges(v);
+  const int n = int(ring.size());
+  int first = -1, second = -1;
+  for (int k = 0; k < n; ++k)
+    if (dual_sharp_edge(L, ring[size_t(k)])) (first < 0 ? first : second) = k;
+  return {second - first, n - (second - first)};
+}
+
+}  // namespace
+
+std::string crease_sides_problem(const Level& L, Index v) {
+  if (dual_collapses(L, v) || dual_sharp_edge_count(L, v) != 2) return {};
+  const auto sides = crease_sides(L, v);
+  if (L.on_boundary(v))
+    return sides[0] == 2 ? std::string() : fmt::format("boundary vertex {}, which has {} faces", v, sides[0]);
+  if (sides[0] == 2 && sides[1] == 2) return {};
+  return fmt::format("crease vertex {}, which has {} and {} faces on the sides of its crease", v, sides[0], sides[1]);
+}
+
+std::string crease_sides_reason(const Level& L, Index v) {
+  const auto sides = crease_sides(L, v);
+  if (sides[0] == 1 || (sides[1] == 1 && !L.on_boundary(v)))
+    return "with one face on a side, that face's corner makes two crease points in one quadrant (a layout for them is "
+           "left to do)";
+  return "with three or more faces on a side, the faces between the two end faces touch the crease at the vertex "
+         "only and split their edges there differently from the end faces, so nested quadrants are not continuous "
+         "at the vertex, and every step doubles such vertices (docs/limit.md)";
 }
 
 std::string dual_crease_unsupported(const Level& base) {

@@ -294,14 +294,45 @@ std::string dual_head_unsupported(const Level& base) {
       return fmt::format("edge {} has sharpness {}: a dual split in a sequence's head is followed next to boundaries "
                          "and infinitely sharp creases, not semi-sharp ones",
                          e, base.edge_sharp(e));
-  return dual_limit_unsupported(base);
+  if (std::string why = dual_limit_unsupported(base); !why.empty()) return why;
+  for (Index v = 0; v < base.vertex_count; ++v)
+    if (std::string what = crease_sides_problem(base, v); !what.empty())
+      return fmt::format("{}: a dual split in a sequence's head is followed only where every boundary and crease "
+                         "vertex has two faces on each side ({})",
+                         what, crease_sides_reason(base, v));
+  return {};
 }
 
 std::string dual_limit_unsupported(const Level& base) { return dual_crease_unsupported(base); }
 
+namespace {
+
+// Per base face that is not a hole: why it is not evaluated, or empty.
+std::vector<std::string> refused_faces(const Level& base) {
+  std::vector<std::string> out(size_t(base.face_count()));
+  for (Index v = 0; v < base.vertex_count; ++v) {
+    const std::string what = crease_sides_problem(base, v);
+    if (what.empty()) continue;
+    for (Index f : base.ring_faces(v))
+      if (out[size_t(f)].empty())
+        out[size_t(f)] = fmt::format("face {} has a corner at {}: {}; the faces without a corner at such a vertex "
+                                     "are evaluated",
+                                     f, what, crease_sides_reason(base, v));
+  }
+  return out;
+}
+
+}  // namespace
+
+void DualLimit::check_face(Index f) const {
+  if (f >= 0 && size_t(f) < refused_.size() && !refused_[size_t(f)].empty())
+    throw Error(fmt::format("scheme {} is a dual scheme and {}", subdiv::quoted(scheme_.name), refused_[size_t(f)]));
+}
+
 DualLimit::DualLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options, int radius,
                      SchemeLimits& limits)
-    : scheme_(scheme), base_(base), options_(options), radius_(radius), limits_(limits) {
+    : scheme_(scheme), base_(base), options_(options), radius_(radius), limits_(limits),
+      refused_(refused_faces(base)) {
   biquadratic_ = refines_as_biquadratic(scheme, options.features);
   bool creased = false;
   for (Index f = 0; f < base.face_count() && !creased; ++f) {
@@ -316,10 +347,14 @@ DualLimit::DualLimit(const Scheme& scheme, const Level& base, const LimitSurface
                               subdiv::quoted(scheme.name), why));
 }
 
-std::vector<Index> DualLimit::reads(const FacePoint& p) const { return cut_around(base_, p.face, radius_).original; }
+std::vector<Index> DualLimit::reads(const FacePoint& p) const {
+  check_face(p.face);
+  return cut_around(base_, p.face, radius_).original;
+}
 
 LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& first_values, int channels,
                                 int derivatives, Rows* rows_out) const {
+  check_face(p0.face);
   Cut cut = cut_around(base_, p0.face, radius_);
   cut.point.corner = 0;
   {

@@ -40,6 +40,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "framework/limit/face_domain.h"
@@ -70,6 +71,10 @@ public:
   bool closed_form() const { return biquadratic_; }
 
 private:
+  // Throws why base face f is not evaluated (a corner at a vertex with other than two faces
+  // on a side of its crease, dual_crease_chart.h), if it is not.
+  void check_face(Index f) const;
+
   const Scheme& scheme_;
   const Level& base_;
   LimitSurfaceOptions options_;
@@ -78,6 +83,7 @@ private:
   bool biquadratic_ = false;
   bool chaikin_crease_ = false;  // the crease is Chaikin's: its closed form applies on it
   bool middles_kept_ = true;     // the crease keeps its edges' middles (else dual_crease_curve.h)
+  std::vector<std::string> refused_;  // per base face: why it is not evaluated, or empty
 };
 
 // A point of a face (face_domain.h: a quad's (u, v), or an n-gon's sub-face) after one dual
@@ -88,10 +94,11 @@ std::optional<FacePoint> dual_child_point(const Level& parent, const Level& chil
                                           const FacePoint& p);
 
 // Why the dual evaluation cannot take this mesh, or empty (holes, and the boundaries and
-// creases dual_crease_chart.h does not cover yet).
+// creases dual_crease_chart.h does not cover yet). Faces with a corner at a vertex with other
+// than two faces on a side of a boundary or crease are refused one by one, when evaluated.
 std::string dual_limit_unsupported(const Level& base);
 // The same for a dual split in a sequence's head (dual_child_point), which follows closed
-// untagged meshes only.
+// untagged meshes only, and every face there (so also no such vertex anywhere).
 std::string dual_head_unsupported(const Level& base);
 
 }  // namespace subdiv

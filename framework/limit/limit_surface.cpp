@@ -14,6 +14,7 @@
 
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/analysis/surface/local_patch.h"
+#include "framework/analysis/surface/rim_rules.h"
 #include "framework/engine/ghost_rings.h"
 #include "framework/features/base_tags.h"
 #include "framework/engine/refiner.h"
@@ -30,6 +31,7 @@
 #include "framework/limit/tensor_patch.h"
 #include "framework/limit/triangle_patch.h"
 #include "framework/limit/face_domain.h"
+#include "framework/scheme/step_tables.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
@@ -828,6 +830,7 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
     : impl_(std::make_unique<Impl>()) {
   if (!scheme) throw Error("no scheme given for the limit surface");
   if (const std::string why = limit_surface_unsupported(*scheme); !why.empty()) throw Error(why);
+  if (!has_feature_rules(*scheme) && needs_no_feature_rules(base)) scheme = with_stand_in_rim_rules(*scheme);
   if (!base.manifold()) {
     impl_->cut_into_sheets(std::move(scheme), base, options);
     impl_->base = std::move(base);

@@ -1,5 +1,6 @@
 #include "framework/pipeline/limit_arrays.h"
 
+#include "framework/analysis/surface/rim_rules.h"
 #include "framework/pipeline/rational_weights.h"
 
 namespace subdiv {
@@ -18,8 +19,9 @@ LimitArrays limit_arrays(const SchemeSequence& seq, const Hierarchy& h, const Re
   LimitOptions lo;
   lo.features = options.features;
   lo.first_step = options.first_step + seq.total_levels;
-  SchemeLimits limits(*seq.schemes.back(), lo);
   const Level& level = h.levels.back();
+  std::shared_ptr<const Scheme> with_rim;  // a scheme without boundary rules on a closed mesh
+  SchemeLimits limits(scheme_for_cut_rims(*seq.schemes.back(), level, with_rim), lo);
   LimitArrays out;
   if (const DataArray* w = weights.empty() ? nullptr : named(finest.point_data, weights)) {
     std::vector<double> homogeneous = finest.positions;

@@ -20,6 +20,7 @@
 #include "framework/pipeline/scheme_source.h"
 #include "framework/util/option_spelling.h"
 #include "framework/scheme/scheme_registry.h"
+#include "framework/scheme/step_tables.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
 
@@ -352,6 +353,25 @@ bool topology_level_by_level(const RefineRequest& r, const MeshData& mesh, const
   return releases_coarser_levels(r, mesh) && options.vertex_parameters.empty();
 }
 
+// A face-varying array refined with the levels. Its seams refine as boundaries (and in the
+// mode `all` every edge as a crease), so a scheme without boundary rules fails here on a
+// closed mesh that refines: the message says that the data, not the mesh, needs them.
+std::vector<FaceVaryingLevel> refined_face_varying(const SchemeSequence& seq, const Hierarchy& h,
+                                                   const FaceVaryingArray& a, FaceVaryingLinear mode,
+                                                   const RefineOptions& options) {
+  try {
+    return refine_face_varying(seq.runs, h, {a.values, a.indices}, a.components, mode, options);
+  } catch (const Error& e) {
+    const bool rules_missing = std::any_of(seq.runs.begin(), seq.runs.end(),
+                                           [](const SchemeRun& run) { return !has_feature_rules(*run.scheme); });
+    if (!rules_missing) throw Error(fmt::format("face-varying array {}: {}", subdiv::quoted(a.name), e.what()));
+    throw Error(fmt::format("face-varying array {} (UVs: OBJ vt): {}. Its seams refine as boundaries (with "
+                            "--fvar-boundary {}); a scheme without boundary rules cannot refine it: give the "
+                            "scheme a \"curve\", or remove the array from the input",
+                            subdiv::quoted(a.name), e.what(), face_varying_linear_name(mode)));
+  }
+}
+
 // refine_level_data; with `releasing` (h itself), each coarser level's topology is released
 // once the next level's values are made, where the request lets it (releases_coarser_levels);
 // with `stepwise` too, h holds the base level alone and each level's topology is made here,
@@ -417,7 +437,7 @@ std::vector<LevelData> level_data(const PreparedRefinement& p, const Hierarchy& 
                                        subdiv::quoted(a.name)));
       continue;
     }
-    const auto refined = refine_face_varying(seq.runs, h, {a.values, a.indices}, a.components, p.face_varying, options);
+    const auto refined = refined_face_varying(seq, h, a, p.face_varying, options);
     for (size_t l = 0; l < levels.size(); ++l)
       if (r.keep_all_levels || l + 1 == levels.size())
         levels[l].face_varying.push_back({a.name, a.components, refined[l].values, refined[l].indices, a.role});

@@ -30,8 +30,8 @@ const CompiledRule& needed_rule(const WeightTables& tables, Element e, Context c
 
 const CompiledRule& curve_rule(const StepContext& s, int r, Element e, const WeightTables& tables) {
   if (r >= int(tables.curve_rules.size()))
-    throw Error(fmt::format("{}: the mesh has boundaries or creases, and the scheme has neither a {} crease "
-                            "rule nor a curve scheme (\"curve\") to give one",
+    throw Error(fmt::format("{}: the mesh has boundaries or creases, and the scheme has neither a crease rule for "
+                            "new {} points nor a curve scheme (\"curve\") to give one",
                             s.source, element_name(e)));
   return tables.curve_rules[r];
 }

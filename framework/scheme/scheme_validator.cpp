@@ -419,6 +419,11 @@ void check_surface(const Scheme& scheme, const SchemeMaker& make, const std::str
     check_step(scheme, step, text, lo, hi, report);
   }
   if (report.errors.empty()) check_parameter_grid(scheme, make, text, lo, hi, report);
+  if (!has_feature_rules(scheme))
+    report.notes.push_back("no boundary or crease rules (no \"curve\", no crease rule): closed meshes without "
+                           "creases refine, but a mesh with a boundary, a crease or a UV seam is refused; name a "
+                           "curve scheme with \"curve\" (\"cubic-bspline\" beside an approximating scheme, "
+                           "\"four-point\" beside an interpolating one) to refine them");
 }
 
 // A scheme a plugin registered: its rules are data (a plugin's JSON scheme) or C++.

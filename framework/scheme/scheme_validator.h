@@ -17,6 +17,8 @@ struct ValidationReport {
   // Why (part of) the scheme could not be checked: a plugin's rules written in C++. Empty when
   // everything was checked.
   std::string skipped;
+  // What the scheme cannot do, though nothing in it is wrong (it refines no boundaries).
+  std::vector<std::string> notes;
   bool ok() const { return errors.empty(); }
 };
 

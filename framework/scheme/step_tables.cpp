@@ -48,4 +48,14 @@ WeightTables step_weight_tables(const Scheme& scheme, const StepRules& step, int
   return tables;
 }
 
+bool has_feature_rules(const Scheme& scheme) {
+  if (scheme.curve) return true;
+  for (const StepRules& step : scheme.steps) {
+    if (step.curve || (step.code && step.code->handles_features)) return true;
+    for (const auto& by_context : step.rules)
+      if (by_context[int(Context::Crease)]) return true;
+  }
+  return false;
+}
+
 }  // namespace subdiv

@@ -14,4 +14,9 @@ WeightTables step_weight_tables(const Scheme& scheme, const StepRules& step, int
                                 const std::map<std::string, double>* parameters = nullptr,
                                 const std::vector<int>* valences = nullptr);
 
+// Whether the scheme can refine boundaries and creases at all: it names a curve scheme (its
+// own or a split's), states a crease rule, or has code rules that handle features. Without
+// any, a mesh with a boundary, a crease or a face-varying seam is refused at refine time.
+bool has_feature_rules(const Scheme& scheme);
+
 }  // namespace subdiv

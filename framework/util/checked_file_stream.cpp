@@ -165,6 +165,17 @@ std::streamsize CheckedFileBuffer::xsputn(const char* data, std::streamsize coun
   return count;
 }
 
+std::span<char> CheckedFileBuffer::room() {
+  if (direct_ ? patching_ : pbase() == nullptr) return {};
+  if (pptr() == epptr()) {
+    if (direct_) note_fill(), next_chunk();
+    else flush_buffer();
+  }
+  return {pptr(), std::size_t(epptr() - pptr())};
+}
+
+void CheckedFileBuffer::commit(std::size_t count) { pbump(int(count)); }
+
 int CheckedFileBuffer::sync() {
   flush_buffer();
   return 0;  // never a failure towards the stream's user: close() reports it

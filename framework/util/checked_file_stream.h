@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <memory>
 #include <ostream>
+#include <span>
 #include <string>
 #include <streambuf>
 #include <utility>
@@ -46,6 +47,15 @@ public:
   void close();
   // errno of the first failed write, 0 while every write succeeded.
   int error() const { return error_; }
+
+  // Room to write into in place, at the put position, for a writer that would otherwise make
+  // its bytes in a buffer of its own and copy them in (the .vtp writer's base64 text, encoded
+  // straight into direct mode's chunks); then commit() the bytes written there. At least one
+  // byte unless the put position lies before the chunk being filled (after a seek back), where
+  // it is empty and sputn is the way.
+  std::span<char> room();
+  // The first `count` bytes of room() written: the put position moves on past them.
+  void commit(std::size_t count);
 
 protected:
   int_type overflow(int_type c) override;

@@ -6,6 +6,15 @@
 
 namespace subdivkit {
 
+namespace {
+
+// A scheme given as text: a name, a sequence "A:1,B", or a path (str or os.PathLike).
+bool is_scheme_text(py::handle scheme) {
+  return py::isinstance<py::str>(scheme) || py::isinstance(scheme, py::module_::import("os").attr("PathLike"));
+}
+
+}  // namespace
+
 const std::string& SchemeHandle::name() const { return kind == "curve" ? curve->name : surface->name; }
 
 SchemeHandle load_scheme_handle(const std::string& source, bool from_text, const std::string& label,
@@ -62,7 +71,7 @@ SchemeChoice scheme_choice_from(py::handle scheme, int levels, py::handle params
     for (const auto& [k, v] : overrides) merged[k] = v;
     c.single = std::make_shared<SchemeHandle>(overrides.empty() ? h
                                                                 : load_scheme_handle(h.source, h.from_text, h.label, merged));
-  } else if (py::isinstance<py::str>(scheme)) {
+  } else if (is_scheme_text(scheme)) {
     const std::string spec = py::str(scheme);
     // A single curve scheme refines polylines; anything else is a surface sequence, which
     // also reports unknown names with the list of known ones.
@@ -76,7 +85,7 @@ SchemeChoice scheme_choice_from(py::handle scheme, int levels, py::handle params
     c.label = spec;
     return c;
   } else {
-    throw subdiv::Error(fmt::format("scheme: expected a subdivkit.Scheme or a name, got {}",
+    throw subdiv::Error(fmt::format("scheme: expected a subdivkit.Scheme, a name or a path, got {}",
                                     std::string(py::str(py::type::of(scheme)))));
   }
   c.label = c.single->name();
@@ -90,7 +99,7 @@ SchemeChoice scheme_choice_from(py::handle scheme, int levels, py::handle params
 
 bool names_curve_scheme(py::handle scheme) {
   if (py::isinstance<SchemeHandle>(scheme)) return scheme.cast<const SchemeHandle&>().kind == "curve";
-  if (!py::isinstance<py::str>(scheme)) return false;  // the surface path says what a scheme must be
+  if (!is_scheme_text(scheme)) return false;  // the surface path says what a scheme must be
   const std::string spec = py::str(scheme);
   try {
     return spec.find_first_of(",:") == std::string::npos && subdiv::scheme_kind(spec) == "curve";
@@ -106,8 +115,11 @@ subdiv::SchemeSource scheme_source_from(py::handle scheme, py::handle params) {
     const auto& h = scheme.cast<const SchemeHandle&>();
     source.text = h.source, source.is_json_text = h.from_text, source.label = h.label;
     source.parameters = h.overrides;
-  } else {
+  } else if (is_scheme_text(scheme)) {
     source.text = py::str(scheme);
+  } else {  // str(None) would be looked up as a scheme named "None"
+    throw subdiv::Error(fmt::format("scheme: expected a subdivkit.Scheme, a name or a path, got {}",
+                                    std::string(py::str(py::type::of(scheme)))));
   }
   for (const auto& [k, v] : overrides) source.parameters[k] = v;
   return source;

@@ -39,7 +39,7 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
     ----------
     mesh : Mesh
         Polygons (triangles for a triangle scheme); manifold.
-    scheme : Scheme or str
+    scheme : Scheme, str or os.PathLike
         A scheme with the binary quad or triangle split (Catmull-Clark, Loop, ...).
     levels : int
         The finest level, 0 to 12.

@@ -1,3 +1,4 @@
+import os
 from dataclasses import dataclass
 from typing import Callable, Literal, Mapping, overload
 
@@ -7,7 +8,7 @@ import numpy.typing as npt
 from ._subdivkit import Scheme
 from .mesh import Mesh
 
-_SchemeArg = Scheme | str
+_SchemeArg = Scheme | str | os.PathLike[str]
 _Params = Mapping[str, float | str] | None
 
 @dataclass

@@ -50,7 +50,7 @@ def refine(mesh, scheme="catmull-clark", levels=1, *, params=None, boundary="edg
     ----------
     mesh : Mesh
         Polygons for a surface scheme, polylines for a curve scheme.
-    scheme : Scheme or str
+    scheme : Scheme, str or os.PathLike
         A Scheme, a built-in name, a .json path, or a sequence "A:1,B:3" (A for one level,
         then B; a name without ":N" takes the rest of ``levels``), as ``--scheme``.
     levels : int
@@ -150,7 +150,7 @@ class Evaluator:
         Polygons for a surface scheme; its faces, creases and corners (with their
         sharpness) are refined once. Its point_data, cell_data and face_varying data are not
         carried (``evaluate`` carries any per-point array).
-    scheme : Scheme or str
+    scheme : Scheme, str or os.PathLike
         A surface Scheme, a built-in name, a .json path, or a sequence "A:1,B:3", as in
         refine(). Curve schemes are refused: ``stencils(..., composed=True)`` serves polylines.
     levels : int
@@ -420,7 +420,7 @@ def interpolate(mesh, scheme="catmull-clark", *, select=None, tolerance=None, ma
         the bounding-box diagonal).
     max_iterations : int
         Iteration cap; the result says whether it converged.
-    scheme : Scheme or str
+    scheme : Scheme, str or os.PathLike
         A surface scheme or sequence such as "catmull-clark-shape:1,catmull-clark", or a
         curve scheme for polylines.
     params : dict, optional

@@ -129,6 +129,13 @@ def test_bad_options_are_refused():
         sk.interpolate(cube, select=[])
     with pytest.raises(sk.Error, match="curve scheme refines polylines only"):
         sk.refine(cube, "chaikin", 1)
+    # str(None) would be looked up as a scheme named "None"; a path object is a path.
+    for not_a_scheme in (None, 42, ["loop"]):
+        with pytest.raises(sk.Error, match="scheme: expected a subdivkit.Scheme, a name or a path"):
+            sk.refine(cube, not_a_scheme, 1)
+        with pytest.raises(sk.Error, match="scheme: expected a subdivkit.Scheme, a name or a path"):
+            sk.LimitSurface(cube, not_a_scheme)
+    assert len(sk.refine(cube, SCHEMES / "catmull-clark.json", 1).face_offsets) == 24 + 1
 
 
 @pytest.mark.parametrize("call, name", [

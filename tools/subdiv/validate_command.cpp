@@ -37,6 +37,7 @@ void add_validate_command(CLI::App& app) {
       if (r.ok()) {
         print_safe("{}: ok ({} scheme {}, {} checks{}{})\n", file, r.kind, subdiv::quoted(r.scheme_name), r.checks,
                    r.skipped.empty() ? "" : "; not checked: ", r.skipped);
+        for (const auto& note : r.notes) print_safe("  note: {}\n", note);
         continue;
       }
       ++failed;

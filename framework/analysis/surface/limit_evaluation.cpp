@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "framework/analysis/surface/rim_rules.h"
 #include "framework/analysis/curve/curve_scheme_analysis.h"
 #include "framework/analysis/surface/sparse_rows.h"
 #include "framework/analysis/surface/surface_analysis.h"
@@ -678,7 +679,8 @@ LimitResult SchemeLimits::evaluate(const Level& level, std::span<const double> p
 
 LimitResult limit_positions(const Scheme& scheme, const Level& level, std::span<const double> positions,
                             const LimitOptions& options) {
-  SchemeLimits e(scheme, options);
+  std::shared_ptr<const Scheme> with_rim;
+  SchemeLimits e(scheme_for_cut_rims(scheme, level, with_rim), options);
   return e.evaluate(level, positions);
 }
 

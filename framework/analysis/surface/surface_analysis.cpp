@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "framework/analysis/surface/dual_sector_patch.h"
+#include "framework/analysis/surface/rim_rules.h"
 #include "framework/analysis/surface/rotation_blocks.h"
 #include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
@@ -999,9 +1000,11 @@ SurfaceAnalysis analyse_crease_or_other(const Scheme& scheme, const Patch& patch
 
 }  // namespace
 
-SurfaceAnalysis analyse_configuration(const Scheme& scheme, const LocalConfig& config,
+SurfaceAnalysis analyse_configuration(const Scheme& given, const LocalConfig& config,
                                       const SurfaceAnalysisOptions& options) {
   const int rings = options.patch_rings > 0 ? options.patch_rings : options.max_ring + 3;
+  std::shared_ptr<const Scheme> with_rim;
+  const Scheme& scheme = scheme_for_patch_rim(given, config, with_rim);
   try {
     if (config.centre == CentreKind::Face) {
       if (analysis_cells(scheme) != PatchCells::Quads)

@@ -109,7 +109,20 @@ void store(vtkDataArray& array, const Range& range) {
   }
 }
 
+bool has_range(vtkDataArray& array) {
+  vtkInformation* info = array.HasInformation() ? array.GetInformation() : nullptr;
+  if (!info) return false;
+  if (array.GetNumberOfComponents() != 1) return info->Has(vtkDataArray::L2_NORM_RANGE());
+  vtkInformationVector* per_component = info->Get(vtkDataArray::PER_COMPONENT());
+  return per_component && per_component->GetNumberOfInformationObjects() > 0 &&
+         per_component->GetInformationObject(0)->Has(vtkDataArray::COMPONENT_RANGE());
+}
+
 }  // namespace
+
+void store_array_range(vtkDataArray* array, double min, double max) {
+  if (array) store(*array, {min, max});
+}
 
 void cache_array_range(vtkDataArray* array) {
   if (!array || !array->HasStandardMemoryLayout() || array->GetNumberOfTuples() == 0) return;
@@ -154,20 +167,24 @@ void cache_sparse_array_range(vtkDataArray* array, std::span<const vtkIdType> se
 
 namespace {
 
+void cache_unless_known(vtkDataArray* array) {
+  if (array && !has_range(*array)) cache_array_range(array);
+}
+
 void cache(vtkFieldData* data) {
   if (!data) return;
-  for (int i = 0; i < data->GetNumberOfArrays(); ++i) cache_array_range(data->GetArray(i));
+  for (int i = 0; i < data->GetNumberOfArrays(); ++i) cache_unless_known(data->GetArray(i));
 }
 
 }  // namespace
 
 void cache_array_ranges(vtkPolyData& poly) {
-  if (poly.GetPoints()) cache_array_range(poly.GetPoints()->GetData());
+  if (poly.GetPoints()) cache_unless_known(poly.GetPoints()->GetData());
   cache(poly.GetPointData());
   cache(poly.GetCellData());
   cache(poly.GetFieldData());
   for (vtkCellArray* cells : {poly.GetVerts(), poly.GetLines(), poly.GetStrips(), poly.GetPolys()})
-    if (cells) cache_array_range(cells->GetConnectivityArray());
+    if (cells) cache_unless_known(cells->GetConnectivityArray());
 }
 
 }  // namespace subdiv::io_detail

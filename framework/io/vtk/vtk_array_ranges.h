@@ -19,8 +19,13 @@ class vtkPolyData;
 namespace subdiv::io_detail {
 
 // For the points, point, cell and field data and the cells' connectivity of `poly`; call
-// when they are final (changing an array drops its range again).
+// when they are final (changing an array drops its range again). Arrays that hold a range
+// already (store_array_range) keep it.
 void cache_array_ranges(vtkPolyData& poly);
+
+// `min` and `max` as `array`'s range: of its values (one component) or of its tuples' norms
+// (several), known from elsewhere (validate_mesh_data's pass over the same values).
+void store_array_range(vtkDataArray* array, double min, double max);
 
 // For one array (doubles and integers of the kinds write_vtp makes; others are left to VTK).
 void cache_array_range(vtkDataArray* array);

@@ -5,8 +5,9 @@
 //
 // vtkXMLWriter::WriteBinaryData does one block at a time on one thread: compress, encode,
 // write, then the next; the cores waited for each write() and the write for the cores. Here
-// the blocks go through a pipeline (TBB's parallel_pipeline): compressed and encoded in
-// parallel, written in order, a few blocks ahead of the write. The bytes are VTK's: the same
+// the blocks go through a pipeline (TBB's parallel_pipeline): compressed in parallel, encoded
+// and written in order (straight into the file's buffer when the stream is a
+// CheckedFileStream; otherwise encoded in parallel too), a few blocks ahead of the write. The bytes are VTK's: the same
 // compressor class and level for each block (a fresh instance per slot, as
 // vtk_block_compressor.h does), the same header, the same base64 runs (the compressed
 // header in a run of its own, written first as a placeholder and again once the block sizes

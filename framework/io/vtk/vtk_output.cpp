@@ -39,15 +39,18 @@ void write_collection(const fs::path& file, const fs::path& shown, const std::ve
   out.close();
 }
 
-void check_levels(std::span<const OutputLevel> levels, std::string_view context) {
+// Each level's check, in order (io_detail::check_output_level): every level, before any file.
+std::vector<io_detail::LevelCheck> check_levels(std::span<const OutputLevel> levels, std::string_view context) {
   if (levels.empty()) throw Error(fmt::format("{}: there are no levels to write", context));
   std::set<int> seen;
+  std::vector<io_detail::LevelCheck> checks;
   for (const OutputLevel& level : levels) {
     if (!seen.insert(level.level).second)
       throw Error(fmt::format("{}: level {} appears twice; every level needs its own number",
                               context, level.level));
-    io_detail::check_output_level(level, fmt::format("{} (level {})", context, level.level));
+    checks.push_back(io_detail::check_output_level(level, fmt::format("{} (level {})", context, level.level)));
   }
+  return checks;
 }
 
 // Creates the level directory if needed; returns whether it did, so that a failed write
@@ -78,8 +81,10 @@ void remove_stale_levels(const fs::path& dir, const std::set<std::string>& writt
 }  // namespace
 
 void write_vtp(const fs::path& file, const OutputLevel& level, const VtkWriteOptions& options) {
-  io_detail::check_output_level(level, fmt::format("cannot write {}", subdiv::quoted(file.string())));
-  const auto poly = io_detail::make_polydata(level, options, io_detail::LevelMemory::Share);
+  // Integer arrays checked as make_polydata converts them: before the file is created.
+  const io_detail::LevelCheck check = io_detail::check_output_level(
+      level, fmt::format("cannot write {}", subdiv::quoted(file.string())), io_detail::IntegerValues::WhenConverted);
+  const auto poly = io_detail::make_polydata(level, options, io_detail::LevelMemory::Share, &check);
   write_file_atomically(file, [&](const fs::path& tmp) {
     io_detail::write_polydata_file(*poly, tmp, file, options);
   });
@@ -87,7 +92,7 @@ void write_vtp(const fs::path& file, const OutputLevel& level, const VtkWriteOpt
 
 void write_pvd(const fs::path& pvd, std::span<const OutputLevel> levels, const VtkWriteOptions& options) {
   const std::string context = fmt::format("cannot write {}", subdiv::quoted(pvd.string()));
-  check_levels(levels, context);
+  const std::vector<io_detail::LevelCheck> checks = check_levels(levels, context);
   const fs::path parent = pvd.parent_path().empty() ? fs::path(".") : pvd.parent_path();
   std::error_code ec;
   if (!fs::is_directory(parent, ec))
@@ -108,10 +113,11 @@ void write_pvd(const fs::path& pvd, std::span<const OutputLevel> levels, const V
     };
     for (const OutputLevel& level : levels) total += weight(level);
     VtkWriteOptions file_options = options;
-    for (const OutputLevel& level : levels) {
+    for (std::size_t k = 0; k < levels.size(); ++k) {
+      const OutputLevel& level = levels[k];
       const std::string name = fmt::format("level_{}.vtp", level.level);
       const fs::path target = dir / name;
-      const auto poly = io_detail::make_polydata(level, options, io_detail::LevelMemory::Share);
+      const auto poly = io_detail::make_polydata(level, options, io_detail::LevelMemory::Share, &checks[k]);
       const double share = weight(level) / total;
       if (options.progress)
         file_options.progress = [&, share](double done) { options.progress(before + share * done); };

@@ -83,8 +83,9 @@ void make_piece_folder(const fs::path& pvtp) {
 
 void write_piece_vtp(StagedFiles& staged, const fs::path& target, const OutputLevel& level,
                      const VtkWriteOptions& options) {
-  io_detail::check_output_level(level, fmt::format("cannot write {}", subdiv::quoted(target.string())));
-  const auto poly = io_detail::make_polydata(level, options, io_detail::LevelMemory::Share);
+  const io_detail::LevelCheck check = io_detail::check_output_level(
+      level, fmt::format("cannot write {}", subdiv::quoted(target.string())), io_detail::IntegerValues::WhenConverted);
+  const auto poly = io_detail::make_polydata(level, options, io_detail::LevelMemory::Share, &check);
   io_detail::write_polydata_file(*poly, staged.stage(target), target, options);
 }
 

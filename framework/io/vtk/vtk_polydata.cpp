@@ -66,7 +66,24 @@ CellCounts cell_counts(const MeshData& mesh) {
   return {std::size_t(mesh.face_count()), std::size_t(mesh.line_count()), mesh.creases.size()};
 }
 
-void check_array(const DataArray& a, std::size_t tuples, const char* per, std::string_view context) {
+// Whether `v` is a whole number that fits an int, as an integer array's values must be.
+bool whole_int(double v) {
+  return v == std::floor(v) && v >= std::numeric_limits<int>::min() && v <= std::numeric_limits<int>::max();
+}
+
+// The first value of `a` that whole_int refuses, named; `a` holds one.
+[[noreturn]] void refuse_integer_values(const DataArray& a, std::string_view context) {
+  std::size_t i = 0;
+  while (i + 1 < a.values.size() && whole_int(a.values[i])) ++i;
+  throw Error(fmt::format("{}: integer array {} holds {} at position {}, which is not a "
+                          "whole number that fits an int; mark the array as not integer",
+                          context, subdiv::quoted(a.name), a.values[i], i));
+}
+
+// `check_integers`: whether an integer array's values are checked here, or when to_vtk
+// converts them (IntegerValues).
+void check_array(const DataArray& a, std::size_t tuples, const char* per, bool check_integers,
+                 std::string_view context) {
   if (a.name.empty()) throw Error(fmt::format("{}: a {} data array has no name", context, per));
   require_xml_text(a.name, fmt::format("{} data array", per), context);
   if (a.components < 1)
@@ -77,32 +94,20 @@ void check_array(const DataArray& a, std::size_t tuples, const char* per, std::s
                             "components)",
                             context, subdiv::quoted(a.name), a.values.size(), tuples * a.components, tuples,
                             per, a.components));
-  if (!a.integer) return;
+  if (!a.integer || !check_integers) return;
   // On every core first; in order, for the message, only if some value is not whole.
-  const auto whole = [&](std::size_t i) {
-    const double v = a.values[i];
-    return v == std::floor(v) && v >= std::numeric_limits<int>::min() && v <= std::numeric_limits<int>::max();
-  };
   const bool all_whole = tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, a.values.size(), 1 << 14), true,
       [&](const tbb::blocked_range<std::size_t>& r, bool ok) {
-        for (std::size_t i = r.begin(); ok && i != r.end(); ++i) ok = whole(i);
+        for (std::size_t i = r.begin(); ok && i != r.end(); ++i) ok = whole_int(a.values[i]);
         return ok;
       },
       [](bool x, bool y) { return x && y; });
-  if (all_whole) return;
-  for (std::size_t i = 0; i < a.values.size(); ++i) {
-    const double v = a.values[i];
-    if (v != std::floor(v) || v < std::numeric_limits<int>::min() ||
-        v > std::numeric_limits<int>::max())
-      throw Error(fmt::format("{}: integer array {} holds {} at position {}, which is not a "
-                              "whole number that fits an int; mark the array as not integer",
-                              context, subdiv::quoted(a.name), v, i));
-  }
+  if (!all_whole) refuse_integer_values(a, context);
 }
 
 void check_arrays(const std::vector<DataArray>& arrays, const std::set<std::string>& reserved,
-                  const char* per, std::size_t tuples, std::size_t alternative_tuples,
+                  const char* per, std::size_t tuples, std::size_t alternative_tuples, bool check_integers,
                   std::string_view context) {
   std::set<std::string> names;
   for (const DataArray& a : arrays) {
@@ -114,7 +119,7 @@ void check_arrays(const std::vector<DataArray>& arrays, const std::set<std::stri
       throw Error(fmt::format("{}: two {} data arrays are named {}", context, per, subdiv::quoted(a.name)));
     const bool alternative = a.components > 0 &&
                              a.values.size() == alternative_tuples * std::size_t(a.components);
-    check_array(a, alternative ? alternative_tuples : tuples, per, context);
+    check_array(a, alternative ? alternative_tuples : tuples, per, check_integers, context);
   }
 }
 
@@ -142,25 +147,53 @@ vtkSmartPointer<Array> wrap(const std::vector<T, Allocator>& values, bool share)
 }
 
 // `values` is already in VTK's cell or point order.
-vtkSmartPointer<vtkDataArray> to_vtk(const DataArray& a, const std::vector<double>& values, bool share) {
+// An integer array's values as ints, with their range (cached for the writer's header) and
+// the check that each is whole and fits an int, all in one pass (16M faces' base_face: a
+// check, a conversion and a range were three). Throws as check_array does if one is not.
+vtkSmartPointer<vtkIntArray> to_vtk_ints(const DataArray& a, const std::vector<double>& values,
+                                         std::string_view context) {
+  auto array = new_array<vtkIntArray>(a.name, a.components, values.size() / std::size_t(a.components));
+  int* out = array->GetPointer(0);
+  struct Seen {
+    int min = std::numeric_limits<int>::max(), max = std::numeric_limits<int>::min();
+    bool whole = true;
+  };
+  const Seen seen = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, values.size(), 1 << 16), Seen{},
+      [&](const tbb::blocked_range<std::size_t>& r, Seen so_far) {
+        int lo = so_far.min, hi = so_far.max, refused = 0;
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          const double v = values[i];
+          // Outside int (or NaN) converted as 0, which then differs from v: refused.
+          const bool fits = v >= std::numeric_limits<int>::min() && v <= std::numeric_limits<int>::max();
+          const int n = int(fits ? v : 0.0);
+          out[i] = n;
+          refused |= int(double(n) != v);
+          lo = n < lo ? n : lo;
+          hi = n > hi ? n : hi;
+        }
+        return Seen{lo, hi, so_far.whole && refused == 0};
+      },
+      [](const Seen& x, const Seen& y) { return Seen{std::min(x.min, y.min), std::max(x.max, y.max), x.whole && y.whole}; });
+  if (!seen.whole) refuse_integer_values(a, context);
+  if (!values.empty()) store_array_range(array, seen.min, seen.max);
+  return array;
+}
+
+// `context` names the file in the message for an integer array's value that is not whole.
+vtkSmartPointer<vtkDataArray> to_vtk(const DataArray& a, const std::vector<double>& values, bool share,
+                                     std::string_view context) {
   const std::size_t tuples = values.size() / a.components;
   // Integer colours within 0..255 as bytes, as PLY stores them: ParaView shows byte scalars
   // as colours directly, and the reader (vtk_read.cpp role_of) knows them for colours again.
-  const auto byte = [](double x) { return x >= 0 && x <= 255; };
+  const auto byte = [](double x) { return x >= 0 && x <= 255 && x == std::floor(x); };
   if (a.integer && a.role == ArrayRole::Color && std::all_of(values.begin(), values.end(), byte)) {
     auto array = new_array<vtkUnsignedCharArray>(a.name, a.components, tuples);
     for (std::size_t i = 0; i < values.size(); ++i)
       array->SetValue(vtkIdType(i), static_cast<unsigned char>(values[i]));
     return array;
   }
-  if (a.integer) {  // checked whole and within int (check_array)
-    auto array = new_array<vtkIntArray>(a.name, a.components, tuples);
-    int* out = array->GetPointer(0);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, values.size(), 1 << 16), [&](const tbb::blocked_range<std::size_t>& r) {
-      for (std::size_t i = r.begin(); i != r.end(); ++i) out[i] = int(values[i]);
-    });
-    return array;
-  }
+  if (a.integer) return to_vtk_ints(a, values, context);
   auto array = wrap<vtkDoubleArray>(values, share);
   array->SetName(a.name.c_str());
   array->SetNumberOfComponents(a.components);
@@ -273,17 +306,20 @@ void add_level_fields(vtkPolyData& poly, int level) {
 
 }  // namespace
 
-void check_output_level(const OutputLevel& level, std::string_view context) {
+LevelCheck check_output_level(const OutputLevel& level, std::string_view context, IntegerValues integers) {
   if (!level.mesh) throw Error(fmt::format("{}: level {} has no mesh", context, level.level));
-  validate_mesh_data(*level.mesh, context);
+  LevelCheck check{{}, std::string(context)};
+  validate_mesh_data(*level.mesh, context, &check.mesh);
+  const bool now = integers == IntegerValues::Checked;
   const CellCounts cells = cell_counts(*level.mesh);
   const std::size_t vertices = std::size_t(level.mesh->vertex_count());
-  check_arrays(level.point_data, kReservedPointArrays, "point", vertices, vertices, context);
-  check_arrays(level.cell_data, kReservedCellArrays, "face", cells.faces, cells.total(), context);
+  check_arrays(level.point_data, kReservedPointArrays, "point", vertices, vertices, now, context);
+  check_arrays(level.cell_data, kReservedCellArrays, "face", cells.faces, cells.total(), now, context);
+  return check;
 }
 
 vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level, const VtkWriteOptions& options,
-                                           LevelMemory memory) {
+                                           LevelMemory memory, const LevelCheck* check) {
   const bool share = memory == LevelMemory::Share;
   const MeshData& mesh = *level.mesh;
   const CellCounts cells = cell_counts(mesh);
@@ -291,9 +327,10 @@ vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level, const VtkWr
   poly->SetPoints(points(mesh, share));
   poly->SetPolys(cell_array(mesh.face_offsets, mesh.face_vertices, share));
   poly->SetLines(lines(mesh));
+  const std::string_view context = check ? std::string_view(check->context) : "cannot convert the level";
   vtkPointData& point_data = *poly->GetPointData();
   for (const DataArray& a : level.point_data) {
-    const auto array = to_vtk(a, a.values, share);
+    const auto array = to_vtk(a, a.values, share, context);
     point_data.AddArray(array);
     // Active attributes, so that ParaView shades with the normals and textures with the UVs.
     // Only the first array of each role: setting another would drop the first from the
@@ -304,9 +341,13 @@ vtkSmartPointer<vtkPolyData> make_polydata(const OutputLevel& level, const VtkWr
     if (a.role == ArrayRole::Color && !point_data.GetScalars()) point_data.SetScalars(array);
   }
   for (const DataArray& a : level.cell_data)  // already in VTK's order without line cells
-    poly->GetCellData()->AddArray(cells.lines() == 0 ? to_vtk(a, a.values, share)
-                                                     : to_vtk(a, cell_order(a, cells), false));  // a temporary
+    poly->GetCellData()->AddArray(cells.lines() == 0 ? to_vtk(a, a.values, share, context)
+                                                     : to_vtk(a, cell_order(a, cells), false, context));  // a temporary
   add_level_fields(*poly, level.level);
+  if (check && check->mesh.point_norms_known && mesh.vertex_count() > 0)
+    store_array_range(poly->GetPoints()->GetData(), check->mesh.point_norm_min, check->mesh.point_norm_max);
+  if (check && check->mesh.face_vertices_known && !mesh.face_vertices.empty())
+    store_array_range(poly->GetPolys()->GetConnectivityArray(), check->mesh.face_vertex_min, check->mesh.face_vertex_max);
   cache_array_ranges(*poly);
   add_feature_arrays(*poly, mesh, cells, options);  // after: with ranges of their own
   return poly;

@@ -16,6 +16,7 @@
 #include "framework/io/mesh_read.h"
 #include "support/cli_checks.h"
 #include "support/cli_runner.h"
+#include "support/scheme_files.h"
 #include "support/vtk_read.h"
 
 using namespace subdiv;
@@ -103,6 +104,31 @@ TEST_CASE("--fvar-boundary is checked, and a vt number out of range is refused w
   check_refused("refine " + (dir / "grid.obj").string() + " --fvar-boundary sideways", dir / "o.obj", "--fvar-boundary");
   std::ofstream(dir / "bad.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/7\n";
   check_refused("refine " + (dir / "bad.obj").string() + " --scheme loop", dir / "o.obj", "bad.obj:5: this face uses vt number 7");
+}
+
+TEST_CASE("a scheme without boundary rules refines a closed mesh, and names the UVs when their seams need them") {
+  // Catmull-Clark's rules without a "curve": the closed cube refines; with UVs, whose seams
+  // refine as boundaries, the refusal names the array and the two ways out.
+  const auto dir = fresh_dir("cli-fvar-no-curve");
+  const auto scheme = write_scheme_file("cli-fvar-no-curve", "cc-no-curve", R"({"name": "cc-no-curve", "split": "quad",
+    "rules": {"face": [{"sum": "vertices", "w": "1/k"}],
+              "edge": [{"sum": "ends", "w": "1/4"}, {"sum": "faces", "new": "face", "w": "1/4"}],
+              "vertex": [{"at": "self", "w": "(n-2)/n"}, {"sum": "ring", "w": "1/n^2"},
+                         {"sum": "faces", "new": "face", "w": "1/n^2"}]}})");
+  std::ofstream(dir / "cube.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                                     "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+  std::ofstream(dir / "cube-uv.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                                        "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                                        "f 1/1 4/2 3/3 2/4\nf 5/1 6/2 7/3 8/4\nf 1/1 2/2 6/3 5/4\nf 2/1 3/2 7/3 6/4\n"
+                                        "f 3/1 4/2 8/3 7/4\nf 4/1 1/2 5/3 8/4\n";
+  const CliResult plain = run_subdiv("refine " + (dir / "cube.obj").string() + " -s " + scheme.string() + " -l 2 -o " +
+                              (dir / "plain.obj").string());
+  CHECK_MESSAGE(plain.exit_code == 0, plain.output);
+  check_refused("refine " + (dir / "cube-uv.obj").string() + " -s " + scheme.string() + " -l 2",
+                dir / "uv.obj", "face-varying array 'uv' (UVs: OBJ vt)");
+  const CliResult r = run_subdiv("refine " + (dir / "cube-uv.obj").string() + " -s " + scheme.string() + " -l 2 -o " +
+                          (dir / "uv.obj").string());
+  CHECK(r.output.find("give the scheme a \"curve\", or remove the array") != std::string::npos);
 }
 
 TEST_CASE("sqrt3 and mid-edge refine UVs with a seam: every vt is one side's UV map at its point") {

@@ -3,6 +3,11 @@
 // element-by-element walk names it.
 #include <cmath>
 #include <limits>
+#include <utility>
+
+#include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
 
 #include "framework/io/mesh_validate.h"
 #include "io_test_support.h"
@@ -54,4 +59,43 @@ TEST_CASE("validate_mesh_data on a large mesh: valid passes, and the first of se
   m.cell_data[0].values[190000] = 0.5;
   m.cell_data[0].values[180000] = 3e10;
   CHECK(contains(problem(m), "integer face data array 'id' holds 30000000000 at face 180000"));
+}
+
+// The ranges validate_mesh_data reports on its way are the ones VTK computes itself
+// (vtkDataArray::GetRange: the points' Euclidean norms, the connectivity's values), which
+// write_vtp puts into the file's headers.
+TEST_CASE("validate_mesh_data's value ranges are VTK's own ranges of the same arrays") {
+  MeshData m = strip(50000);
+  for (std::size_t i = 0; i < m.positions.size(); ++i) m.positions[i] = std::sin(0.37 * double(i)) * 1e3 + 0.1 * double(i % 7);
+  std::swap(m.face_vertices[7], m.face_vertices[40001]);  // extremes away from the ends
+  MeshValueRanges ranges;
+  validate_mesh_data(m, "ctx", &ranges);
+
+  vtkNew<vtkDoubleArray> points;
+  points->SetNumberOfComponents(3);
+  points->SetArray(m.positions.data(), vtkIdType(m.positions.size()), 1);
+  double norms[2];
+  points->GetRange(norms, -1);
+  REQUIRE(ranges.point_norms_known);
+  CHECK(ranges.point_norm_min == norms[0]);
+  CHECK(ranges.point_norm_max == norms[1]);
+
+  vtkNew<vtkIntArray> faces;
+  faces->SetArray(m.face_vertices.data(), vtkIdType(m.face_vertices.size()), 1);
+  double values[2];
+  faces->GetRange(values, 0);
+  REQUIRE(ranges.face_vertices_known);
+  CHECK(double(ranges.face_vertex_min) == values[0]);
+  CHECK(double(ranges.face_vertex_max) == values[1]);
+
+  // Squares that overflow (coordinates of finite 1e200): valid, the norms left to a scaled computation.
+  m.positions[4] = 1e200;
+  validate_mesh_data(m, "ctx", &ranges);
+  CHECK_FALSE(ranges.point_norms_known);
+  CHECK(ranges.face_vertices_known);
+
+  MeshData empty;
+  validate_mesh_data(empty, "ctx", &ranges);
+  CHECK_FALSE(ranges.point_norms_known);
+  CHECK_FALSE(ranges.face_vertices_known);
 }

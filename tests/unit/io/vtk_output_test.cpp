@@ -1,4 +1,6 @@
 // write_vtp and write_pvd, checked by reading the files back with VTK itself.
+#include <cmath>
+
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -208,7 +210,23 @@ TEST_CASE("write_vtp: bad arrays are refused before any file exists") {
   }
   SUBCASE("integer array holding a fraction") {
     level.point_data[1].values[2] = 0.5;
-    expected = "integer array 'origin' holds 0.5";
+    expected = "integer array 'origin' holds 0.5 at position 2";
+  }
+  SUBCASE("integer array holding a number beyond an int, and later NaN") {
+    level.point_data[1].values[6] = std::nan("");
+    level.point_data[1].values[3] = 2147483648.0;
+    expected = "integer array 'origin' holds 2147483648 at position 3";
+  }
+  SUBCASE("integer cell array holding a fraction (cells reordered: line cells first)") {
+    level.cell_data[0].values[3] = -0.25;
+    expected = "integer array 'parent_face' holds -0.25 at position 3";
+  }
+  SUBCASE("integer colours within 0..255 but one a fraction") {
+    DataArray rgb{"rgb", 3, std::vector<double>(21, 200.0), true};
+    rgb.role = ArrayRole::Color;
+    rgb.values[5] = 2.5;
+    level.point_data.push_back(rgb);
+    expected = "integer array 'rgb' holds 2.5 at position 5";
   }
   SUBCASE("reserved name") {
     level.cell_data[0].name = "sharpness";

@@ -13,7 +13,9 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <limits>
 #include <optional>
+#include <string_view>
 #include <tuple>
 
 #include "framework/features/base_tags.h"
@@ -90,16 +92,51 @@ Key key_of(Index base_face, const Uv& uv) {
 // triangles (0,0) (1,0) (0,1)), from the hierarchy's origins.
 struct UniformCorners {
   std::vector<Index> base_face;
-  std::vector<Uv> uv;  // per face corner
+  std::vector<Uv> uv;  // per face corner; NaN on a base n-gon of a quad split (it has sub-faces)
 };
 
-std::vector<UniformCorners> uniform_corners(const Hierarchy& h) {
+// Bfr's QUAD_SUBFACES (Bfr::Parameterization, OpenSubdiv 3.5): an n-gon's sub-face k (the
+// child at its vertex k) is the square [c, c + 1/2] x [r, r + 1/2], column c = k mod w and row
+// r = k / w on a grid of w = ceil(sqrt(n)) columns; its corner at vertex k is (c, r), the
+// middle of edge k (to vertex k + 1) (c + 1/2, r), the centre (c + 1/2, r + 1/2), the middle of
+// edge k - 1 (c, r + 1/2).
+std::vector<Uv> sub_face_corners(const Level& P, Index f, const Level& C, Index g, const ChildOrigins& o) {
+  const auto fv = P.face(f);
+  const int n = int(fv.size());
+  const int columns = int(std::ceil(std::sqrt(double(n)) - 1e-12));
+  int k = -1;
+  for (Index c : C.face(g))
+    if (o.kind[size_t(c)] == OriginKind::Vertex)
+      for (int i = 0; i < n; ++i)
+        if (fv[size_t(i)] == o.parent[size_t(c)]) k = i;
+  REQUIRE(k >= 0);
+  const double col = k % columns, row = k / columns;
+  const Index next = fv[size_t((k + 1) % n)];
+  std::vector<Uv> out;
+  for (Index c : C.face(g)) {
+    const Index from = o.parent[size_t(c)];
+    if (o.kind[size_t(c)] == OriginKind::Vertex) {
+      out.push_back({col, row});
+    } else if (o.kind[size_t(c)] == OriginKind::Face) {
+      out.push_back({col + 0.5, row + 0.5});
+    } else {
+      const bool towards_next =
+          P.edge_vertices[size_t(2 * from)] == next || P.edge_vertices[size_t(2 * from + 1)] == next;
+      out.push_back(towards_next ? Uv{col + 0.5, row} : Uv{col, row + 0.5});
+    }
+  }
+  return out;
+}
+
+std::vector<UniformCorners> uniform_corners(const Hierarchy& h, bool triangles) {
   std::vector<UniformCorners> out(h.levels.size());
   const Level& B = h.levels[0];
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   for (Index f = 0; f < B.face_count(); ++f) {
     out[0].base_face.push_back(f);
-    const std::vector<Uv> corners = B.face_size(f) == 3 ? std::vector<Uv>{{0, 0}, {1, 0}, {0, 1}}
-                                                        : std::vector<Uv>{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    const std::vector<Uv> corners = B.face_size(f) == 3 && triangles ? std::vector<Uv>{{0, 0}, {1, 0}, {0, 1}}
+                                    : B.face_size(f) == 4 ? std::vector<Uv>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}
+                                                          : std::vector<Uv>(size_t(B.face_size(f)), Uv{nan, nan});
     out[0].uv.insert(out[0].uv.end(), corners.begin(), corners.end());
   }
   for (size_t l = 0; l + 1 < h.levels.size(); ++l) {
@@ -108,6 +145,11 @@ std::vector<UniformCorners> uniform_corners(const Hierarchy& h) {
     for (Index g = 0; g < C.face_count(); ++g) {
       const Index f = o.parent_face[size_t(g)];
       out[l + 1].base_face.push_back(out[l].base_face[size_t(f)]);
+      if (l == 0 && std::isnan(out[0].uv[size_t(P.face_offsets[size_t(f)])][0])) {
+        const std::vector<Uv> corners = sub_face_corners(P, f, C, g, o);
+        out[1].uv.insert(out[1].uv.end(), corners.begin(), corners.end());
+        continue;
+      }
       const auto fv = P.face(f);
       const Uv* fuv = out[l].uv.data() + P.face_offsets[size_t(f)];
       auto uv_of = [&](Index v) {
@@ -151,12 +193,13 @@ Compared compare(const UvMesh& m, const char* scheme_name, FaceVaryingLinear mod
   ro.features.boundary = boundary;
   const Hierarchy h = refine_topology(std::span(&run, 1), base, ro);
   const auto uniform = refine_face_varying(std::span(&run, 1), h, {m.uv, m.indices}, 2, mode, ro);
-  const std::vector<UniformCorners> corners = uniform_corners(h);
+  const std::vector<UniformCorners> corners = uniform_corners(h, std::string_view(scheme_name) == "loop");
   std::vector<std::map<Key, Uv>> reference(h.levels.size());
   for (size_t l = 0; l < h.levels.size(); ++l)
     for (size_t c = 0; c < corners[l].uv.size(); ++c) {
       const Index f = Index(std::upper_bound(h.levels[l].face_offsets.begin(), h.levels[l].face_offsets.end(),
                                              Index(c)) - h.levels[l].face_offsets.begin()) - 1;
+      if (std::isnan(corners[l].uv[c][0])) continue;  // a base n-gon's corner: its sub-faces hold the points
       const Index value = uniform[l].indices[c];
       reference[l][key_of(corners[l].base_face[size_t(f)], corners[l].uv[c])] =
           Uv{uniform[l].values[2 * size_t(value)], uniform[l].values[2 * size_t(value) + 1]};
@@ -251,6 +294,30 @@ TEST_CASE("Adaptive Catmull-Clark carries UVs with seams in every mode: a level'
   check_every_mode(grid, "catmull-clark", 3, 0, "grid, boundary rule edges", BoundaryInterpolation::EdgesOnly);
   check_every_mode(grid, "catmull-clark", 3, 0, "grid, boundary rule none", BoundaryInterpolation::None);
   check_every_mode(torus, "catmull-clark", 2, 1e-300, "torus");
+}
+
+TEST_CASE("Adaptive Catmull-Clark carries UVs on faces other than quads (Bfr's sub-faces)") {
+  // Triangles and a hexagon under Catmull-Clark: each is split into sub-quads at level 1,
+  // whose corners the reference places by Bfr's QUAD_SUBFACES layout (sub_face_corners).
+  // The pyramid: four triangles and a quad, a seam between two islands of triangles.
+  const UvMesh pyramid = with_islands(limit_test::bumped(test::pyramid()), {0, 1, 1, 2, 2});
+  // A 5 x 4 grid with two quads merged into a hexagon (its two middle vertices interior of
+  // valence 3), cut by a seam and a dart band that runs through the hexagon.
+  test::Mesh g;
+  for (int j = 0; j <= 4; ++j)
+    for (int i = 0; i <= 5; ++i) g.add_vertex(i, j, 0);
+  auto id = [](int i, int j) { return Index(j * 6 + i); };
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 5; ++i)
+      if (j != 1 || (i != 1 && i != 2)) g.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  g.add_face({id(1, 1), id(2, 1), id(3, 1), id(3, 2), id(2, 2), id(1, 2)});
+  g = limit_test::bumped(g);
+  UvMesh hexagon = with_islands(g, grid_groups(g, 2.5, true));
+  hexagon.creases = {{id(3, 1), id(3, 2), 2.5f}};
+  check_every_mode(pyramid, "catmull-clark", 3, 0, "pyramid");
+  check_every_mode(pyramid, "catmull-clark", 2, 1e-300, "pyramid");
+  check_every_mode(hexagon, "catmull-clark", 3, 0, "grid with a hexagon");
+  check_every_mode(hexagon, "catmull-clark", 2, 1e-300, "grid with a hexagon");
 }
 
 TEST_CASE("Adaptive Catmull-Clark carries UVs with a seam at every edge where the stages fill pinches") {

@@ -37,6 +37,26 @@ TEST_CASE("validate accepts every shipped scheme") {
   }
 }
 
+TEST_CASE("validate notes a scheme without boundary or crease rules, and only that one") {
+  // Valid rules, no "curve" and no crease rule: refine refuses boundaries, creases and UV
+  // seams, so a scheme author hears it from validate (exit 0: nothing is wrong).
+  std::string no_curve = quad_with_vertex(
+      "[{\"at\": \"self\", \"w\": \"(n-2)/n\"}, {\"sum\": \"ring\", \"w\": \"1/n^2\"}, "
+      "{\"sum\": \"faces\", \"new\": \"face\", \"w\": \"1/n^2\"}]");
+  const std::string with_curve = no_curve;
+  no_curve.erase(no_curve.find("\"curve\": \"cubic-bspline\", "), std::string("\"curve\": \"cubic-bspline\", ").size());
+  const auto without = validate_scheme_file(write("no-curve", no_curve));
+  CHECK(without.ok());
+  REQUIRE(without.notes.size() == 1);
+  CHECK(without.notes[0].find("no boundary or crease rules") != std::string::npos);
+  CHECK(validate_scheme_file(write("with-curve", with_curve)).notes.empty());
+  for (const char* shipped : {"catmull-clark", "loop", "doo-sabin", "sqrt3", "mid-edge", "loop-composite"})
+    CHECK_MESSAGE(validate_scheme_file(shipped).notes.empty(), shipped);
+  const test::CliResult cli = test::run_subdiv("validate " + write("no-curve", no_curve));
+  CHECK(cli.exit_code == 0);
+  CHECK(cli.output.find("  note: no boundary or crease rules") != std::string::npos);
+}
+
 TEST_CASE("validate: a rule that is affine only at n = 4 is caught at n = 3 with its line") {
   // Catmull-Clark's vertex rule with the self weight of the regular case only.
   const auto f = write("affine", quad_with_vertex(

@@ -1,12 +1,14 @@
 // CheckedFileStream (framework/util/checked_file_stream.h) in direct mode writes the file
 // that buffered mode and a plain model of the writes (a string written at positions) give:
-// appends across its 4 MB chunks, seeks back into chunks already on their way to the disk
+// appends across its 4 MB chunks (also written in place: room and commit), seeks back into chunks already on their way to the disk
 // and into the chunk being filled, a seek past the end (zeros in the gap), single bytes.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <span>
 #include <sstream>
 #include <string>
 #include <unistd.h>
@@ -41,6 +43,24 @@ struct Both {
     stream.put(c);
     write_model(std::string(1, c));
   }
+  // Through the buffer's room() and commit(), as the .vtp writer encodes into it; a byte
+  // through sputn where there is no room (a put position before the chunk being filled).
+  void write_in_place(const std::string& bytes) {
+    auto& file = dynamic_cast<CheckedFileBuffer&>(*stream.rdbuf());
+    for (std::size_t done = 0; done < bytes.size();) {
+      const std::span<char> room = file.room();
+      if (room.empty()) {
+        file.sputn(bytes.data() + done, 1);
+        ++done;
+        continue;
+      }
+      const std::size_t n = std::min(room.size(), bytes.size() - done);
+      std::copy_n(bytes.data() + done, n, room.data());
+      file.commit(n);
+      done += n;
+    }
+    write_model(bytes);
+  }
   void write_model(const std::string& bytes) {
     if (model.size() < at + bytes.size()) model.resize(at + bytes.size(), '\0');
     model.replace(at, bytes.size(), bytes);
@@ -68,9 +88,11 @@ std::string write_sequence(const fs::path& file, FileWrite mode, unsigned seed) 
   const std::size_t header = both.at;
   both.write(std::string(40, 'h'));                // a placeholder, as VTK's compression header
   both.write(bytes_of(random, 9 * MB + 5));        // across two chunk ends
+  both.write_in_place(bytes_of(random, 5 * MB + 7));  // in place, across a chunk end
   const std::size_t end = both.at;
   both.seek(header);                               // back into a chunk written (or on its way)
-  both.write(bytes_of(random, 40));
+  both.write_in_place(bytes_of(random, 20));       // no room there in direct mode
+  both.write(bytes_of(random, 20));
   both.seek(end - 100);                            // back into the chunk being filled
   both.write(bytes_of(random, 50));
   both.seek(4 * MB - 10);                          // a patch that runs on into later bytes
