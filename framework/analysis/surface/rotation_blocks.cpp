@@ -83,18 +83,18 @@ std::optional<RotationBlocks> RotationBlocks::split(const LocalRows& s, const st
   for (int k = 0; 2 * k <= n; ++k) {
     const int off = k == 0 ? F : 0;
     Eigen::MatrixXcd B = Eigen::MatrixXcd::Zero(off + T, off + T);
-    auto add_row = [&](int row, int from_label, double scale) {
+    auto add_row = [&](int row, int from_label) {
       for (const auto& [j, w] : sorted[size_t(from_label)]) {
         if (fixed_of[size_t(j)] >= 0) {
-          if (k == 0) B(row, fixed_of[size_t(j)]) += w * scale * (row < off ? 1.0 : root);
+          if (k == 0) B(row, fixed_of[size_t(j)]) += w * (row < off ? 1.0 : root);
           continue;
         }
-        B(row, off + orbit_of[size_t(j)]) += w * scale * phase[size_t((std::int64_t(k) * shift_of[size_t(j)]) % n)];
+        B(row, off + orbit_of[size_t(j)]) += w * phase[size_t((std::int64_t(k) * shift_of[size_t(j)]) % n)];
       }
     };
     if (k == 0)
-      for (int f = 0; f < F; ++f) add_row(f, b.fixed_[size_t(f)], 1.0);
-    for (int t = 0; t < T; ++t) add_row(off + t, b.orbits_[size_t(t)][0], 1.0);
+      for (int f = 0; f < F; ++f) add_row(f, b.fixed_[size_t(f)]);
+    for (int t = 0; t < T; ++t) add_row(off + t, b.orbits_[size_t(t)][0]);
     // A fixed row against an orbit: sum over the orbit / sqrt(n) (add_row summed it with phases).
     if (k == 0)
       for (int f = 0; f < F; ++f) B.row(f).tail(T) /= root;
