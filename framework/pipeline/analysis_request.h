@@ -26,11 +26,12 @@ struct ValenceAnalysisRequest {
   bool crease = false;
 };
 
-// Valences analysed at most: the local matrix of valence n has O(n) rows per ring.
-inline constexpr int kMaxAnalysedValence = 64;
+// Valences analysed at most: the local matrix of valence n has O(n) rows per ring (above
+// kMaxDenseValence only interior centres, whose matrix splits by the sector rotation).
+inline constexpr int kMaxAnalysedValence = kMaxPatchValence;
 
 // One analysis per valence, in the request's order. Throws OptionError for an empty list, a
-// valence outside 2..64, or boundary and crease in one request. A scheme that fails the analysis at a valence is no error: the reason is in
+// valence outside 2..kMaxAnalysedValence, or boundary and crease in one request. A scheme that fails the analysis at a valence is no error: the reason is in
 // that analysis's verdict.
 std::vector<SurfaceAnalysis> analyse_valences(const ValenceAnalysisRequest& request);
 

@@ -193,7 +193,7 @@ void add_analyze_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("analyze", "Convergence and smoothness of a scheme: eigen-analysis at extraordinary "
                                             "vertices, or the symbol analysis of a curve scheme");
   cmd->add_option("scheme", args->scheme, "Scheme name (see `subdiv schemes`) or path to a .json file")->required();
-  cmd->add_option("--valence", args->valence, "Valences to analyse (2..64): a..b, n, or a list a,b,c")->capture_default_str();
+  cmd->add_option("--valence", args->valence, "Valences to analyse (2..512; boundary and crease vertices 2..64): a..b, n, or a list a,b,c")->capture_default_str();
   cmd->add_option("--vtk", args->vtk_dir, "Write each valence's characteristic map as a .vtp file into this directory");
   cmd->add_option("--json", args->json_file, "Write the report as JSON");
   cmd->add_option("--svg", args->svg_file, "Write the spectrum (eigenvalue moduli against valence) as an SVG plot");

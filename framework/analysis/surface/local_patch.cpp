@@ -206,13 +206,15 @@ bool quad_grid_labelled(Labelling& reuse, const Level& level, Index face, int ra
 Patch make_vertex_patch(PatchCells cells, const LocalConfig& c, int R) {
   const int n = c.valence;
   const bool quads = cells == PatchCells::Quads;
-  if (n < 2 || n > 64)
-    throw Error(fmt::format("valence {} cannot be analysed (use 2..64: 2 inside a quad mesh or on a boundary)", n));
+  if (n < 2 || n > kMaxPatchValence)
+    throw Error(fmt::format("valence {} cannot be analysed: valences 2..{} are (2 inside a quad mesh or on a "
+                            "boundary); split the vertex's fan with extra edges to bring it within {}",
+                            n, kMaxPatchValence, kMaxPatchValence));
   // Two triangles around an interior vertex share both its edges and then their third one
   // too: they close into a two-triangle sphere, with no regular surroundings to analyse.
   if (n == 2 && !c.boundary && !quads)
     throw Error("interior valence 2 cannot be analysed in a triangle mesh: the vertex's two triangles share all "
-                "three edges, a closed two-triangle sphere with no regular surroundings (use 3..64 inside, or 2..64 "
+                "three edges, a closed two-triangle sphere with no regular surroundings (use 3 or more inside, or 2 "
                 "on a boundary)");
   if (R < 2) throw Error("a synthetic patch needs at least 2 rings");
   const int sectors = c.boundary ? n - 1 : n;

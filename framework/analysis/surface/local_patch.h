@@ -44,6 +44,17 @@ struct Patch {
   int start = 0;           // ring edge (vertex centre) or corner (face centre) labelled first
 };
 
+// Valences a synthetic patch is built for. The local matrix grows as n (6n + 1 rows for a
+// quad vertex's 2-ring) and its eigenvalues of frequencies 1 and 2 draw together as
+// cos(2 pi/n) does cos(4 pi/n): at Catmull-Clark's valence 1024 they are 7.6e-6 apart
+// (relative), below the analysis' tolerance for equal eigenvalues (1e-5, surface_analysis.cpp),
+// at 512 3e-5.
+inline constexpr int kMaxPatchValence = 512;
+// Above this valence only a centre of n equal sectors (interior, no crease, no tag) is
+// analysed, its matrix split by the sector rotation (rotation_blocks.h); any other would
+// need a dense eigen-decomposition of a few thousand rows (minutes).
+inline constexpr int kMaxDenseValence = 64;
+
 // Synthetic patch for a vertex configuration: n sectors of a regular grid around the
 // centre, `rings` rings deep, positions a u_s + b u_{s+1} on rays u_s at equal angles
 // (2 pi/n inside; spread over at most pi on a boundary). Crease rays are tagged infinitely

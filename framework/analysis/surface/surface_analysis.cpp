@@ -5,9 +5,11 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <map>
+#include <optional>
 
 #include "framework/analysis/surface/dual_sector_patch.h"
 #include "framework/analysis/surface/rim_rules.h"
+#include "framework/analysis/surface/rotation_blocks.h"
 #include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -167,10 +169,7 @@ Matrix local_matrix(const StencilTable& t, const Labelling& parent, const Labell
 // ---------------------------------------------------------------------------------------------
 // Eigen structure.
 
-std::vector<Complex> sorted_eigenvalues(const Matrix& s) {
-  Eigen::EigenSolver<Matrix> solver(s, false);
-  if (solver.info() != Eigen::Success) throw Error("the eigenvalue solver did not converge on the local subdivision matrix");
-  std::vector<Complex> v(solver.eigenvalues().data(), solver.eigenvalues().data() + solver.eigenvalues().size());
+std::vector<Complex> sorted(std::vector<Complex> v) {
   for (auto& z : v)
     if (std::abs(z.imag()) < 1e-13) z = Complex(z.real(), 0.0);
   std::stable_sort(v.begin(), v.end(), [](Complex x, Complex y) {
@@ -180,6 +179,12 @@ std::vector<Complex> sorted_eigenvalues(const Matrix& s) {
     return x.imag() > y.imag();
   });
   return v;
+}
+
+std::vector<Complex> sorted_eigenvalues(const Matrix& s) {
+  Eigen::EigenSolver<Matrix> solver(s, false);
+  if (solver.info() != Eigen::Success) throw Error("the eigenvalue solver did not converge on the local subdivision matrix");
+  return sorted(std::vector<Complex>(solver.eigenvalues().data(), solver.eigenvalues().data() + solver.eigenvalues().size()));
 }
 
 // Orthonormal basis of the null space of a (columns), by SVD.
@@ -199,6 +204,19 @@ Matrix left_null(const Matrix& s, double lambda) {
 }
 Matrix right_null(const Matrix& s, double lambda) {
   return null_space(s - lambda * Matrix::Identity(s.rows(), s.cols()));
+}
+
+// S on the first m labels as sparse rows (rotation_blocks.h).
+LocalRows local_rows(const StencilTable& t, const Labelling& parent, const Labelling& child, int m) {
+  LocalRows rows(static_cast<size_t>(m));
+  for (int i = 0; i < m; ++i) {
+    const Index row = child.vertices[size_t(i)];
+    for (Index e = t.offsets[size_t(row)]; e < t.offsets[size_t(row) + 1]; ++e) {
+      const Index label = parent.label_of[size_t(t.indices[size_t(e)])];
+      if (label != kNone && label < m) rows[size_t(i)].emplace_back(int(label), t.weights[size_t(e)]);
+    }
+  }
+  return rows;
 }
 
 bool is_real(Complex z) { return std::abs(z.imag()) <= kRealTolerance * std::max(1.0, std::abs(z)); }
@@ -246,7 +264,50 @@ struct AnalysisRun {
   int steps = 1;
   StencilTable table;
   Labelling parent, child;
+  // Label -> the label of its image under the rotation by one sector (the same on the parent
+  // and the child labelling); empty where no rotation is used (rotation_blocks.h).
+  std::vector<int> turn;
 };
+
+// S on the first m labels, for its eigenvalues and null spaces: split into the rotation's
+// Fourier blocks where the run has a rotation and S commutes with it (checked), else dense.
+struct LocalSpectrum {
+  Matrix dense;
+  std::optional<RotationBlocks> blocks;
+
+  Eigen::Index rows() const { return blocks ? blocks->size() : dense.rows(); }
+  std::vector<Complex> eigenvalues() const { return blocks ? sorted(blocks->eigenvalues()) : sorted_eigenvalues(dense); }
+  Matrix left(double lambda) const { return blocks ? blocks->left_null(lambda, kNullTolerance) : left_null(dense, lambda); }
+  Matrix right(double lambda) const {
+    return blocks ? blocks->right_null(lambda, kNullTolerance) : right_null(dense, lambda);
+  }
+};
+
+// Above kMaxDenseValence a matrix that does not split by the rotation is refused: its dense
+// eigen-decomposition (thousands of rows) would take minutes.
+void refuse_dense(const AnalysisRun& cx, int m) {
+  const LocalConfig& c = cx.config;
+  if (c.valence <= kMaxDenseValence) return;
+  const bool symmetric = !c.boundary && c.sharp.empty() && !c.corner;
+  throw Error(fmt::format(
+      "{} cannot be analysed: above valence {} only interior vertices without creases or corner tags are, whose "
+      "local matrix splits into one small block per sector{}; this one would need a dense eigen-decomposition of {} "
+      "rows. Bring the valence within {} (split the vertex's fan with extra edges)",
+      c.describe(), kMaxDenseValence,
+      symmetric ? " (here the scheme's weights do not repeat from sector to sector)" : "", m, kMaxDenseValence));
+}
+
+// `dense`, when given, is S on those labels already built.
+LocalSpectrum spectrum_of(const AnalysisRun& cx, int m, const Matrix* dense = nullptr) {
+  LocalSpectrum sp;
+  if (!cx.turn.empty() && m <= int(cx.turn.size())) {
+    const std::vector<int> turn(cx.turn.begin(), cx.turn.begin() + m);
+    sp.blocks = RotationBlocks::split(local_rows(cx.table, cx.parent, cx.child, m), turn, cx.config.valence);
+  }
+  if (!sp.blocks) refuse_dense(cx, m);
+  if (!sp.blocks) sp.dense = dense ? *dense : local_matrix(cx.table, cx.parent, cx.child, m);
+  return sp;
+}
 
 // The subdominant eigenvectors on a ring wider than the analysed one (so that the refined
 // region near the centre is exact), fitted to the analysed ring's eigenvectors `rp`.
@@ -263,10 +324,10 @@ EigenvectorNet widen_eigenvectors(const AnalysisRun& cx, int K, const Matrix& rp
          maps_to_itself(cx.table, cx.parent, cx.child, net.ring + 1))
     ++net.ring;
   const int mb = cx.parent.count_within(net.ring);
-  const Matrix sb = local_matrix(cx.table, cx.parent, cx.child, mb);
-  Matrix basis = right_null(sb, l1);
+  const LocalSpectrum sb = spectrum_of(cx, mb);
+  Matrix basis = sb.right(l1);
   if (!equal) {
-    const Matrix n1 = basis, n2 = right_null(sb, l2);
+    const Matrix n1 = basis, n2 = sb.right(l2);
     basis.resize(mb, n1.cols() + n2.cols());
     basis << n1, n2;
   }
@@ -487,7 +548,8 @@ void finish_verdict(SurfaceAnalysis& r) {
 // d_q . P is the direction in which q's descendants approach the limit point: the sector
 // normals d_q x d_{q+1} add up to the limit normal, also at creases and corners, where the
 // eigenspace has more than two dimensions and each sector has its own tangent plane.
-void add_direction_masks(const Matrix& s, const std::vector<Complex>& ev, const AnalysisRun& cx, SurfaceAnalysis& out) {
+void add_direction_masks(const LocalSpectrum& s, const std::vector<Complex>& ev, const AnalysisRun& cx,
+                         SurfaceAnalysis& out) {
   const Eigen::Index n = s.rows();
   Matrix lb(n, 0), rb(n, 0);
   size_t i = 1;
@@ -499,7 +561,7 @@ void add_direction_masks(const Matrix& s, const std::vector<Complex>& ev, const 
     for (size_t k = i; k < j; ++k) z += ev[k];
     z /= double(j - i);
     if (!is_real(z) || z.real() <= 0) return;
-    const Matrix a = left_null(s, z.real()), b = right_null(s, z.real());
+    const Matrix a = s.left(z.real()), b = s.right(z.real());
     if (a.cols() != Eigen::Index(j - i) || b.cols() != Eigen::Index(j - i)) return;  // defective
     Matrix l2(n, lb.cols() + a.cols()), r2(n, rb.cols() + b.cols());
     l2 << lb, a;
@@ -624,15 +686,16 @@ Matrix record_local_matrix(const AnalysisRun& cx, SurfaceAnalysis& out) {
 // lambda_1 = lambda_2 real, |lambda_3| below them. Eigenvalues within kClusterTolerance of
 // each other are one (a defective eigenvalue of multiplicity k is computed only to about
 // eps^(1/k)).
-void check_eigenvalues(const Matrix& s, SurfaceAnalysis& out) {
+void check_eigenvalues(const AnalysisRun& cx, const Matrix& s, const LocalSpectrum& sp, SurfaceAnalysis& out) {
   out.max_row_error = 0;
   for (Eigen::Index i = 0; i < s.rows(); ++i) {
     const double e = s.row(i).sum() - 1.0;
     if (std::abs(e) > std::abs(out.max_row_error)) out.max_row_error = e;
   }
   out.affine = std::abs(out.max_row_error) <= 1e-9;
-  const auto& ev = out.eigenvalues = sorted_eigenvalues(s);
-  out.minimal_eigenvalues = sorted_eigenvalues(s.topLeftCorner(out.minimal_size, out.minimal_size));
+  const auto& ev = out.eigenvalues = sp.eigenvalues();
+  const Matrix minimal = s.topLeftCorner(out.minimal_size, out.minimal_size);
+  out.minimal_eigenvalues = spectrum_of(cx, out.minimal_size, &minimal).eigenvalues();
   out.lambda0_one = !ev.empty() && std::abs(ev[0] - 1.0) <= 1e-9 && (ev.size() < 2 || std::abs(ev[1]) < 1.0 - 1e-9);
   if (ev.size() < 3) return;
   auto cluster = [&](size_t first) {
@@ -671,8 +734,8 @@ void check_eigenvalues(const Matrix& s, SurfaceAnalysis& out) {
 
 // Stage 5: the limit mask, the left eigenvector of 1 scaled to sum 1 (Halstead,
 // Kass & DeRose 1993).
-void add_limit_mask(const Matrix& s, SurfaceAnalysis& out) {
-  const Matrix l0 = left_null(s, 1.0);
+void add_limit_mask(const LocalSpectrum& s, SurfaceAnalysis& out) {
+  const Matrix l0 = s.left(1.0);
   if (l0.cols() != 1 || std::abs(l0.col(0).sum()) <= 1e-12) return;
   const Vector l = l0.col(0) / l0.col(0).sum();
   out.limit_mask.assign(l.data(), l.data() + l.size());
@@ -685,15 +748,15 @@ struct SubdominantBases {
   Matrix left, right;
 };
 
-SubdominantBases subdominant_bases(const Matrix& s, const SurfaceAnalysis& out) {
+SubdominantBases subdominant_bases(const LocalSpectrum& s, const SurfaceAnalysis& out) {
   SubdominantBases b;
   const double l1 = out.lambda1, l2 = out.lambda2;
   if (out.subdominant_equal) {
     const double lambda = 0.5 * (l1 + l2);
-    b.left = left_null(s, lambda), b.right = right_null(s, lambda);
+    b.left = s.left(lambda), b.right = s.right(lambda);
     return b;
   }
-  const Matrix a = left_null(s, l1), c = left_null(s, l2), d = right_null(s, l1), e = right_null(s, l2);
+  const Matrix a = s.left(l1), c = s.left(l2), d = s.right(l1), e = s.right(l2);
   if (a.cols() == 1 && c.cols() == 1 && d.cols() == 1 && e.cols() == 1) {
     b.left.resize(s.rows(), 2), b.right.resize(s.rows(), 2);
     b.left << a, c;
@@ -756,6 +819,30 @@ Matrix add_tangent_masks(const AnalysisRun& cx, const RefinedPatch& refined, con
   return rp;
 }
 
+// The rotation by one sector as a permutation of the labels within the labelling's radius:
+// the labelling started one ring edge (corner) further labels every vertex's image alike,
+// when the neighbourhood has the same signature from there, on the parent and on the child.
+// Empty when the configuration is not rotationally symmetric (a boundary, a crease, a tag),
+// its valence is within options.fourier_above, or the labellings disagree.
+std::vector<int> sector_rotation(const AnalysisRun& cx, const RefinedPatch& refined, int radius) {
+  const LocalConfig& c = cx.config;
+  if (c.boundary || !c.sharp.empty() || c.corner || c.valence <= cx.options.fourier_above) return {};
+  const Patch& p = cx.patch;
+  const Labelling parent = label_neighbourhood(p.level, p.centre_kind, p.centre, p.start + 1, radius);
+  const Labelling child =
+      label_neighbourhood(refined.hierarchy.levels.back(), p.centre_kind, refined.centre, refined.start + 1, radius);
+  if (parent.signature != cx.parent.signature || child.signature != cx.child.signature) return {};
+  const size_t m = std::min(parent.vertices.size(), child.vertices.size());
+  std::vector<int> turn(m);
+  for (size_t j = 0; j < m; ++j) {
+    const Index a = cx.parent.label_of[size_t(parent.vertices[j])];
+    const Index b = cx.child.label_of[size_t(child.vertices[j])];
+    if (a != b || a == kNone) return {};
+    turn[j] = int(a);
+  }
+  return turn;
+}
+
 void analyse(AnalysisRun& cx, SurfaceAnalysis& out) {
   const Patch& p = cx.patch;
   const int radius = cx.options.max_ring + 2;
@@ -765,13 +852,17 @@ void analyse(AnalysisRun& cx, SurfaceAnalysis& out) {
   cx.parent = label_neighbourhood(p.level, p.centre_kind, p.centre, p.start, radius);
   cx.child = label_neighbourhood(refined.hierarchy.levels.back(), p.centre_kind, refined.centre, refined.start, radius);
 
+  cx.turn = sector_rotation(cx, refined, radius);
+
   choose_rings(cx, out);
+  if (cx.turn.empty()) refuse_dense(cx, out.size);
   const Matrix s = record_local_matrix(cx, out);
-  check_eigenvalues(s, out);
+  const LocalSpectrum sp = spectrum_of(cx, out.size, &s);
+  check_eigenvalues(cx, s, sp, out);
   if (out.eigenvalues.size() < 3 || !out.lambda0_one || !out.subdominant_real) return;
-  add_limit_mask(s, out);
-  add_direction_masks(s, out.eigenvalues, cx, out);
-  const SubdominantBases bases = subdominant_bases(s, out);
+  add_limit_mask(sp, out);
+  add_direction_masks(sp, out.eigenvalues, cx, out);
+  const SubdominantBases bases = subdominant_bases(sp, out);
   out.subdominant_semisimple = bases.left.cols() == 2 && bases.right.cols() == 2;
   if (!out.subdominant_semisimple) return;
   const Matrix rp = add_tangent_masks(cx, refined, bases, out);

@@ -43,6 +43,11 @@ struct SurfaceAnalysisOptions {
   int patch_rings = 0;                // rings of the synthetic patch; 0: max_ring + 3
   bool characteristic_map = true;     // compute and check it
   double characteristic_scale = 8.0;  // refine until the mesh is this much finer
+  // Valences above this, at a centre whose neighbourhood is n equal sectors (interior, no
+  // crease, no tag), have their eigen-structure computed from the sector rotation's Fourier
+  // blocks (rotation_blocks.h; checked to commute with S, else the dense matrix is used):
+  // n blocks of a sector's size instead of one dense matrix of n sectors.
+  int fourier_above = 64;
 };
 
 struct CharacteristicMap {

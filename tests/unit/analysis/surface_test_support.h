@@ -71,6 +71,40 @@ inline std::vector<Index> face_diagonals(const Level& L, Index v) {
   return out;
 }
 
+// Halstead, Kass & DeRose 1993 at a Catmull-Clark vertex of valence n with edge neighbours
+// e_j and face-diagonal points f_j: the limit point (n^2 v + 4 sum e_j + sum f_j)/(n (n + 5)),
+// and the unit normal C_2 x C_3 with C_2 = sum_j A_n cos(2 pi j/n) e_j + (cos(2 pi j/n) +
+// cos(2 pi (j+1)/n)) f_j, C_3 the same with e_{j+1}, f_{j+1}, and
+// A_n = 1 + cos(2 pi/n) + cos(pi/n) sqrt(2 (9 + cos(2 pi/n))).
+struct CatmullClarkLimit {
+  Vec3 point, normal;
+};
+inline CatmullClarkLimit catmull_clark_limit(const std::vector<double>& P, Index v, const std::vector<Index>& e,
+                                             const std::vector<Index>& f) {
+  const int n = int(e.size());
+  CatmullClarkLimit out{};
+  for (int i = 0; i < 3; ++i) {
+    double sum = double(n) * n * P[size_t(3 * v + i)];
+    for (int j = 0; j < n; ++j) sum += 4 * at(P, e[size_t(j)])[size_t(i)] + at(P, f[size_t(j)])[size_t(i)];
+    out.point[size_t(i)] = sum / (double(n) * (n + 5));
+  }
+  const double c = std::cos(2 * kPi / n);
+  const double A = 1 + c + std::cos(kPi / n) * std::sqrt(2 * (9 + c));
+  Vec3 c2{0, 0, 0}, c3{0, 0, 0};
+  for (int j = 0; j < n; ++j) {
+    const double ce = A * std::cos(2 * kPi * j / n);
+    const double cf = std::cos(2 * kPi * j / n) + std::cos(2 * kPi * (j + 1) / n);
+    const Vec3 ej = at(P, e[size_t(j)]), fj = at(P, f[size_t(j)]);
+    const Vec3 ej1 = at(P, e[size_t((j + 1) % n)]), fj1 = at(P, f[size_t((j + 1) % n)]);
+    for (int i = 0; i < 3; ++i) {
+      c2[size_t(i)] += ce * ej[size_t(i)] + cf * fj[size_t(i)];
+      c3[size_t(i)] += ce * ej1[size_t(i)] + cf * fj1[size_t(i)];
+    }
+  }
+  out.normal = unit(cross(c2, c3));
+  return out;
+}
+
 inline std::filesystem::path write_temp(const std::string& name, const std::string& text) {
   const auto dir = std::filesystem::temp_directory_path() / "subdivkit-analysis-tests";
   std::filesystem::create_directories(dir);

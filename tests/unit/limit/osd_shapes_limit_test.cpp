@@ -148,4 +148,43 @@ TEST_CASE("OpenSubdiv's regression shapes: the limit at (face, u, v) is Bfr's") 
                       "within {:.2g}", shapes, position, vertices, derivative));
 }
 
+TEST_CASE("OpenSubdiv's valence-360 poles: the limit at the pole is its limit mask, near it Bfr's") {
+  // catmark_pole360 (triangles round the pole, Catmull-Clark) and loop_pole360: the pole is
+  // corner 2 of face 1. Its limit is the mask from the eigen-analysis (valence 360: the
+  // sector rotation's Fourier blocks); a point 0.02 from it lies outside Bfr's level-10
+  // irregular patches, where Bfr is exact.
+  struct Pole {
+    const char* shape;
+    std::array<double, 2> at, near;  // the pole's (u, v) in face 1, and a point near it
+  };
+  for (const Pole& pole : {Pole{"catmark_pole360", {0.0, 1.0}, {0.02, 1.02}}, Pole{"loop_pole360", {0.0, 1.0}, {0.02, 0.96}}}) {
+    CAPTURE(pole.shape);
+    const std::string shape = pole.shape;
+    const MeshData mesh = read_mesh(std::filesystem::path(kShapes) / (shape + ".obj"));
+    const std::string scheme_name = scheme_of(shape);
+    const Setup setup = setup_of(mesh.options);
+    LimitSurfaceOptions lo;
+    lo.features = {setup.boundary, setup.method};
+    const auto scheme = load_scheme(scheme_name);
+    const LimitSurface surface(scheme, level_from_mesh(mesh, shape), lo);
+    const Index v = surface.base().face(1)[2];
+    REQUIRE(surface.base().valence(v) == 360);
+    LimitOptions mask_options;
+    mask_options.features = lo.features;
+    const LimitResult masks = limit_positions(*scheme, surface.base(), mesh.positions, mask_options);
+    REQUIRE(masks.exact[size_t(v)] == 1);
+    CHECK(masks.normal_exact[size_t(v)] == 1);
+    const LimitSample at = surface.evaluate(1, pole.at[0], pole.at[1], mesh.positions, 3);
+    CHECK(distance(at.position, {masks.positions[size_t(3 * v)], masks.positions[size_t(3 * v + 1)],
+                                 masks.positions[size_t(3 * v + 2)]}) < 1e-12);
+    const subdiv_test::BfrLimit bfr(to_osd(mesh), osd_options(scheme_name, setup, false), 10, 10);
+    const LimitSample near = surface.evaluate(1, pole.near[0], pole.near[1], mesh.positions, 3);
+    const auto ref = bfr.evaluate(1, pole.near[0], pole.near[1]);
+    CHECK(distance(near.position, ref.p) < 1e-12);
+    REQUIRE(near.has_derivatives);
+    CHECK(distance(near.du, ref.du) < 1e-10);
+    CHECK(distance(near.dv, ref.dv) < 1e-10);
+  }
+}
+
 #endif

@@ -44,13 +44,13 @@ TEST_CASE("valences out of range are refused in the front-end's words; dual sche
     analyse_valences(r);
     FAIL("valence 1 was accepted");
   } catch (const OptionError& e) {
-    CHECK(e.spelled({{"valences", "--valence"}}) == "--valence 1: valences must lie in 2..64");
+    CHECK(e.spelled({{"valences", "--valence"}}) == "--valence 1: valences must lie in 2..512");
   }
   // Inside a quad mesh valence 2 is two quads sharing two edges: analysed (not C1: its
   // -1/4 matches the subdominant 1/4, docs/analysis.md).
   r.valences = {2};
   CHECK_FALSE(analyse_valences(r).front().c1);
-  r.valences = {65};
+  r.valences = {513};
   CHECK_THROWS_AS(analyse_valences(r), OptionError);
   r.valences = {};
   CHECK_THROWS_AS(analyse_valences(r), OptionError);
