@@ -21,14 +21,15 @@ Every row is solved on the narrowest window of crease points that gives it (up t
 points; a distance no window gives stops the script), and the rules are then checked by
 applying them, with (1/4, 1/2, 1/4) elsewhere, to every crease of 2 .. `longest` edges
 between corners, the longest well past the largest distance with a rule. The rules must fit
-the scheme language's limits (framework/rules/rule.h): distances and |steps| up to 16, crease
-lengths up to 33 on the pass's level. Passes 1 .. 5 (d = 4 .. 12) fit: pass 5 has rules at
-distances 1 .. 16 over windows of up to 10 points and length entries up to 31. Pass 6
-(d = 14) needs distances 1 .. 19 over windows of 12 points and lengths up to 37 (the asserts
-below stop on it), so the scheme stops at d = 12.
+the scheme language's limits (framework/rules/rule.h): distances and |steps| up to 24, crease
+lengths up to 49 on the pass's level. Passes 1 .. 6 (d = 4 .. 14) fit: pass 5 has rules at
+distances 1 .. 16 over windows of up to 10 points and length entries up to 31, pass 6 at
+distances 1 .. 19 over windows of 12 points and lengths up to 37. Pass 7 (d = 16) finds no
+window of up to WIDEST points for distance 15 (the script stops there), so the scheme stops at
+d = 14.
 
     python3 docs/derivations/quad_bspline_crease_ends.py 6     # prints passes 1, 2; needs sympy
-    python3 docs/derivations/quad_bspline_crease_ends.py 12 --write schemes/quad-bspline.json
+    python3 docs/derivations/quad_bspline_crease_ends.py 14 --write schemes/quad-bspline.json
       # rewrites the scheme's even passes ("when": "even && passes >= i") with these rules
 """
 import re
@@ -38,7 +39,7 @@ from fractions import Fraction as F
 import sympy as sp
 
 WIDEST = 12  # the widest window of crease points a row may read
-REACH, LONGEST_LENGTH = 16, 33  # framework/rules/rule.h: kMaxCreaseReach, kMaxCreaseLength
+REACH, LONGEST_LENGTH = 24, 49  # framework/rules/rule.h: kMaxCreaseReach, kMaxCreaseLength
 
 
 def comb(pairs):

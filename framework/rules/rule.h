@@ -100,7 +100,7 @@ struct CreaseEndTable {
 using CreaseEndRules = CreaseEndTable<std::optional<Rule>>;
 // The largest distance and the largest |step| a crease-end rule may name, and the longest
 // crease (in edges between its corners) a rule for one length may name.
-constexpr int kMaxCreaseReach = 16;
+constexpr int kMaxCreaseReach = 24;
 constexpr int kMaxCreaseLength = 2 * kMaxCreaseReach + 1;
 
 // Roles registered at run time (plugins) take Role values from kFirstRegisteredRole up. A

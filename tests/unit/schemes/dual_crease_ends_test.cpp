@@ -26,6 +26,12 @@ using namespace subdiv;
 
 namespace {
 
+// The highest even degree quad-bspline declares, and the round-off its crease-end rows allow:
+// the rows next to a corner have weights whose sizes sum to up to 2.1 (d = 8), 8.6 (d = 10),
+// 54 (d = 12) and 737 (d = 14), and amplify round-off as much (points of size 12).
+constexpr int kHighestEvenDegree = 14;
+double round_off(int d) { return d == 14 ? 1e-10 : d == 12 ? 1e-11 : 1e-12; }
+
 using P3 = std::array<double, 3>;
 using Polygon = std::vector<P3>;
 
@@ -148,7 +154,7 @@ Polygon natural_clamped_refined(const Polygon& p, int d, int levels) {
 // A 12 x 6 grid, bent, with a crease along grid edges from boundary vertex (0, 2) to (12, 3)
 // that turns six times (crease valences 3 and 4 on both sides); its ends have three sharp
 // edges (two boundary ones), so they are corners. 15 crease edges: long enough for the rules by
-// distance alone up to d = 10 (from 14 edges; d = 12 needs 17: short_crease(17) and (18)).
+// distance alone up to d = 10 (from 14 edges; d = 12 needs 17 and d = 14 20: short_crease(17) to (21)).
 struct CreasedGrid {
   test::Mesh mesh;
   std::vector<Index> path;
@@ -268,16 +274,15 @@ CreasedGrid short_crease(int n) {
   return {m, path};
 }
 
-// The crease of `g` refined by quad-bspline with d = 2, 4, ..., 12 (every even degree the
+// The crease of `g` refined by quad-bspline with d = 2, 4, ..., 14 (every even degree the
 // scheme declares) at levels 1-4 against Boehm's knot insertion of its clamped spline
 // (natural_clamped_refined): 2N - 2 points from N, one at each corner, two per crease
-// vertex, within 1e-12 (1e-11 for d = 12: its passes' rows next to a corner have weights
-// whose sizes sum to up to 54, against 8.6 for d = 10 and 2.1 for d = 8, and amplify
-// round-off as much; measured 2.4e-12 on points of size 12); both corners stay exactly.
+// vertex, within round_off(d) (measured 2.4e-12 for d = 12 on points of size 12); both
+// corners stay exactly.
 void check_clamped_spline(const CreasedGrid& g) {
   Polygon crease;
   for (Index v : g.path) crease.push_back(point(g.mesh.positions, v));
-  for (int d = 2; d <= 12; d += 2) {
+  for (int d = 2; d <= kHighestEvenDegree; d += 2) {
     CAPTURE(d);
     const auto s = load_scheme("quad-bspline", {{"d", std::to_string(d)}});
     RefineOptions options;
@@ -290,7 +295,7 @@ void check_clamped_spline(const CreasedGrid& g) {
       REQUIRE(got.size() == expected.size());
       double worst = 0;
       for (size_t i = 0; i < got.size(); ++i) worst = std::max(worst, dist(got[i], expected[i]));
-      CHECK(worst < (d == 12 ? 1e-11 : 1e-12));
+      CHECK(worst < round_off(d));
       CHECK(dist(got.back(), crease.back()) == 0.0);
     }
   }
@@ -301,21 +306,21 @@ TEST_CASE("quad-bspline crease ends: a crease between corners is the clamped deg
   check_clamped_spline(creased_grid());
 }
 
-TEST_CASE("quad-bspline crease ends: short creases of 1-18 edges between two corners are the clamped spline with "
+TEST_CASE("quad-bspline crease ends: short creases of 1-21 edges between two corners are the clamped spline with "
           "the end condition at both ends, levels 1-4") {
-  // Up to 16 edges the passes take rules for the crease's length (up to d = 12: from 17 edges
-  // the rules by distance alone hold; 17 and 18 check that too).
-  for (int n = 1; n <= 18; ++n) {
+  // Up to 19 edges the passes take rules for the crease's length (up to d = 14: from 20 edges
+  // the rules by distance alone hold; 20 and 21 check that too).
+  for (int n = 1; n <= 21; ++n) {
     CAPTURE(n);
     check_clamped_spline(short_crease(n));
   }
 }
 
-TEST_CASE("quad-bspline crease ends: sharpness 0 on the crease is the smooth scheme, bit for bit, d = 4..12") {
+TEST_CASE("quad-bspline crease ends: sharpness 0 on the crease is the smooth scheme, bit for bit, d = 4..14") {
   // An edge of sharpness 0 is smooth: no crease, so no crease vertex finds a corner and no
   // crease-end rule applies; the untagged mesh's points at every level, exactly.
   const CreasedGrid g = creased_grid();
-  for (int d = 4; d <= 12; d += 2) {
+  for (int d = 4; d <= kHighestEvenDegree; d += 2) {
     CAPTURE(d);
     const auto s = load_scheme("quad-bspline", {{"d", std::to_string(d)}});
     RefineOptions options;
@@ -348,7 +353,7 @@ TEST_CASE("quad-bspline crease ends: a closed crease without corners keeps the u
   for (int j = 5; j > 2; --j) loop.push_back(id(3, j));
   std::vector<Index> path = loop;
   path.push_back(loop.front());
-  for (int d : {4, 6, 8, 10, 12}) {
+  for (int d : {4, 6, 8, 10, 12, 14}) {
     CAPTURE(d);
     const auto s = load_scheme("quad-bspline", {{"d", std::to_string(d)}});
     RefineOptions options;
@@ -400,7 +405,7 @@ TEST_CASE("quad-bspline crease ends: a crease from a corner to a dart (its end i
     for (int i = 0; i <= len; ++i) path.push_back(Index(3 * 13 + i));
     test::Mesh moved = m;
     for (Index v = 0; v < m.vertex_count; ++v) moved.positions[3 * v] += 5, moved.positions[3 * v + 2] -= 2;
-    for (int d : {4, 6, 8, 10, 12}) {
+    for (int d : {4, 6, 8, 10, 12, 14}) {
       CAPTURE(d);
       const auto s = load_scheme("quad-bspline", {{"d", std::to_string(d)}});
       RefineOptions options;
