@@ -39,7 +39,7 @@ expect_error(SubdivKitRefine(Input=cube, CreaseArray="NoSuchArray"), "NoSuchArra
 expect_error(SubdivKitAnalyze(Scheme="catmull-clark", SchemeFile=broken), "broken.json")  # noqa: F821
 expect_error(SubdivKitAnalyze(Scheme="chaikin"), "curve scheme")  # noqa: F821
 # Valences start at 2 (inside and on boundaries): the message gives the range.
-expect_error(SubdivKitAnalyze(Scheme="loop", Valences=[1, 4]), "Valences 1..4", "from 2 to 64")  # noqa: F821
+expect_error(SubdivKitAnalyze(Scheme="loop", Valences=[1, 4]), "Valences 1..4", "from 2 to 512")  # noqa: F821
 
 
 def fin():

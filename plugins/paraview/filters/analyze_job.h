@@ -23,7 +23,7 @@ struct AnalyzeRequest {
 
 // One analysis per valence, with its characteristic map; throws subdiv::Error (the
 // message `subdiv analyze` prints) for a scheme that does not load, a curve scheme, or an
-// empty or out-of-range valence range (3..64; 2..64 at boundary vertices). A scheme that fails the analysis at a valence is no error: the
+// empty or out-of-range valence range (2..512). A scheme that fails the analysis at a valence is no error: the
 // reason is in that analysis's verdict, as in `subdiv analyze`'s table.
 std::vector<SurfaceAnalysis> analyze_valences(const AnalyzeRequest& request, const std::string& source);
 
