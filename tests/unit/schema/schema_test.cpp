@@ -515,7 +515,7 @@ TEST_CASE("the schema refuses what the loader refuses") {
   refused("a crease-end without its rule", qb, [&](Json& s) { ends(s)[0].erase("rule"); });
   refused("crease-point without step", qb, [&](Json& s) { ends(s)[1]["rule"][0].erase("step"); });
   refused("step on self", qb, [&](Json& s) { ends(s)[0]["rule"][0]["step"] = 1; });
-  refused("a step beyond 16", qb, [&](Json& s) { ends(s)[1]["rule"][2]["step"] = 17; });
+  refused("a step beyond 24", qb, [&](Json& s) { ends(s)[1]["rule"][2]["step"] = 25; });
   refused("crease-point in a smooth rule", qb, [](Json& s) {
     s["steps"][3]["smooth"]["vertex"]["smooth"] = Json::array({{{"at", "crease-point"}, {"step", 1}, {"w", "1"}}});
   });

@@ -521,7 +521,7 @@ TEST_CASE("crease-ends: malformed rules are refused with the file and the place"
     return pass_with("{\"smooth\": [{\"at\": \"self\", \"w\": \"1\"}], \"crease-ends\": " + ends + "}");
   };
   const std::string zero = load_error(with_ends(R"([{"distance": 0, "rule": [{"at": "self", "w": "1"}]}])"));
-  CHECK(zero.rfind("ends.json:3: steps[1].smooth.vertex.crease-ends[0].distance: 0 is outside [1, 16]", 0) == 0);
+  CHECK(zero.rfind("ends.json:3: steps[1].smooth.vertex.crease-ends[0].distance: 0 is outside [1, 24]", 0) == 0);
   CHECK(load_error(with_ends(R"([{"distance": 1, "rule": [{"at": "self", "w": "1"}]},
                                  {"distance": 1, "rule": [{"at": "self", "w": "1"}]}])"))
             .find("crease-ends[1].distance: distance 1 has a rule already") != std::string::npos);
@@ -538,7 +538,7 @@ TEST_CASE("crease-ends: malformed rules are refused with the file and the place"
   CHECK(load_error(with_ends(R"([{"distance": 2, "rules": []}])")).find("unknown key \"rules\"") != std::string::npos);
   CHECK(load_error(with_ends("{}")).find("crease-ends: expected a non-empty array") != std::string::npos);
   CHECK(load_error(with_ends(R"([{"distance": 1, "length": 1, "rule": [{"at": "self", "w": "1"}]}])"))
-            .find("crease-ends[0].length: 1 is outside [2, 33]") != std::string::npos);
+            .find("crease-ends[0].length: 1 is outside [2, 49]") != std::string::npos);
   CHECK(load_error(with_ends(R"([{"distance": 3, "length": 5, "rule": [{"at": "self", "w": "1"}]}])"))
             .find("crease-ends[0].distance: 3 is outside [1, 2]") != std::string::npos);
   CHECK(load_error(with_ends(R"([{"distance": 1, "length": 3, "rule": [{"at": "crease-point", "step": 3, "w": "1"}]}])"))
