@@ -365,9 +365,9 @@ std::vector<FaceVaryingLevel> refined_face_varying(const SchemeSequence& seq, co
     const bool rules_missing = std::any_of(seq.runs.begin(), seq.runs.end(),
                                            [](const SchemeRun& run) { return !has_feature_rules(*run.scheme); });
     if (!rules_missing) throw Error(fmt::format("face-varying array {}: {}", subdiv::quoted(a.name), e.what()));
-    throw Error(fmt::format("face-varying array {} (UVs: OBJ vt): {}. Its seams refine as boundaries (with "
-                            "--fvar-boundary {}); a scheme without boundary rules cannot refine it: give the "
-                            "scheme a \"curve\", or remove the array from the input",
+    throw Error(fmt::format("face-varying array {} (UVs: OBJ vt): {}. Its seams refine as boundaries (face-varying "
+                            "interpolation {}); a scheme without boundary rules cannot refine it: give the scheme a "
+                            "\"curve\", or remove the array from the input",
                             subdiv::quoted(a.name), e.what(), face_varying_linear_name(mode)));
   }
 }
