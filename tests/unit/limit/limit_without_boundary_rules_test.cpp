@@ -45,7 +45,7 @@ TEST_CASE("a scheme without boundary rules: its limit on a closed mesh is the sh
   for (Index f = 0; f < 6; ++f)
     for (int k = 0; k < 8; ++k) {
       const double u = uv(rng), v = uv(rng);
-      const LimitSample a = ours.evaluate(f, u, v, cube.positions, 1), b = reference.evaluate(f, u, v, cube.positions, 1);
+      const LimitSample a = ours.evaluate(f, u, v, cube.positions, 3), b = reference.evaluate(f, u, v, cube.positions, 3);
       REQUIRE(a.has_derivatives);
       for (int c = 0; c < 3; ++c)
         worst = std::max({worst, std::abs(a.position[c] - b.position[c]), std::abs(a.du[c] - b.du[c]),
@@ -63,6 +63,6 @@ TEST_CASE("a scheme without boundary rules: its limit on a closed mesh is the sh
 TEST_CASE("a scheme without boundary rules: a mesh with a boundary is refused with the reason") {
   const test::Mesh grid = limit_test::bumped(test::grid(4, 4));
   const LimitSurface s(catmull_clark_without_curve(), grid.level());
-  CHECK_THROWS_WITH_AS(s.evaluate(5, 0.3, 0.4, grid.positions, 1),
+  CHECK_THROWS_WITH_AS(s.evaluate(5, 0.3, 0.4, grid.positions, 3),
                        doctest::Contains("nor a curve scheme (\"curve\")"), Error);
 }
