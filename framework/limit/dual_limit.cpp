@@ -307,17 +307,14 @@ std::string dual_limit_unsupported(const Level& base) { return dual_crease_unsup
 
 namespace {
 
-// Per base face that is not a hole: why it is not evaluated, or empty.
-std::vector<std::string> refused_faces(const Level& base) {
-  std::vector<std::string> out(size_t(base.face_count()));
+// Per base face: the vertex with other than two faces on a side of its crease at one of its
+// corners (the face is not evaluated), or kNone.
+std::vector<Index> refused_at(const Level& base) {
+  std::vector<Index> out(size_t(base.face_count()), kNone);
   for (Index v = 0; v < base.vertex_count; ++v) {
-    const std::string what = crease_sides_problem(base, v);
-    if (what.empty()) continue;
+    if (crease_sides_problem(base, v).empty()) continue;
     for (Index f : base.ring_faces(v))
-      if (out[size_t(f)].empty())
-        out[size_t(f)] = fmt::format("face {} has a corner at {}: {}; the faces without a corner at such a vertex "
-                                     "are evaluated",
-                                     f, what, crease_sides_reason(base, v));
+      if (out[size_t(f)] == kNone) out[size_t(f)] = v;
   }
   return out;
 }
@@ -325,14 +322,18 @@ std::vector<std::string> refused_faces(const Level& base) {
 }  // namespace
 
 void DualLimit::check_face(Index f) const {
-  if (f >= 0 && size_t(f) < refused_.size() && !refused_[size_t(f)].empty())
-    throw Error(fmt::format("scheme {} is a dual scheme and {}", subdiv::quoted(scheme_.name), refused_[size_t(f)]));
+  if (f < 0 || size_t(f) >= refused_at_.size() || refused_at_[size_t(f)] == kNone) return;
+  const Index v = refused_at_[size_t(f)];
+  throw Error(fmt::format("scheme {} is a dual scheme and face {} has a corner at {}: {}; the faces without a corner "
+                          "at such a vertex are evaluated",
+                          subdiv::quoted(scheme_.name), f, crease_sides_problem(base_, v),
+                          crease_sides_reason(base_, v)));
 }
 
 DualLimit::DualLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options, int radius,
                      SchemeLimits& limits)
     : scheme_(scheme), base_(base), options_(options), radius_(radius), limits_(limits),
-      refused_(refused_faces(base)) {
+      refused_at_(refused_at(base)) {
   biquadratic_ = refines_as_biquadratic(scheme, options.features);
   bool creased = false;
   for (Index f = 0; f < base.face_count() && !creased; ++f) {

@@ -83,7 +83,7 @@ private:
   bool biquadratic_ = false;
   bool chaikin_crease_ = false;  // the crease is Chaikin's: its closed form applies on it
   bool middles_kept_ = true;     // the crease keeps its edges' middles (else dual_crease_curve.h)
-  std::vector<std::string> refused_;  // per base face: why it is not evaluated, or empty
+  std::vector<Index> refused_at_;  // per base face: the vertex that keeps it from evaluation, or kNone
 };
 
 // A point of a face (face_domain.h: a quad's (u, v), or an n-gon's sub-face) after one dual
