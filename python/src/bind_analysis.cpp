@@ -40,6 +40,7 @@ py::dict surface_dict(const subdiv::SurfaceAnalysis& a) {
   d["matrix"] = matrix_array(a.matrix);
   d["eigenvalues"] = complex_array(a.eigenvalues);
   d["minimal_eigenvalues"] = complex_array(a.minimal_eigenvalues);
+  d["crease_eigenvalues"] = complex_array(a.crease_eigenvalues);
   d["lambda1"] = a.lambda1, d["lambda2"] = a.lambda2, d["lambda3"] = a.lambda3;
   py::dict checks;
   checks["affine"] = a.affine;

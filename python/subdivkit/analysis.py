@@ -24,7 +24,10 @@ class SurfaceAnalysis:
       the invariant ring grows with the valence);
     * ``matrices``: the local subdivision matrices S; ``limit_masks`` and
       ``tangent_masks`` (2 rows): left eigenvectors of 1 and of lambda_1, lambda_2;
-    * ``details``: everything else per valence, as dicts (checks, rings, curvature note).
+    * ``details``: everything else per valence, as dicts (checks, rings, curvature note;
+      ``crease_eigenvalues`` with ``crease=True``: the spectrum of the crease points' own
+      block, the crease curve's local matrix, where their rows read crease points only,
+      else empty).
     """
     scheme: str
     valences: np.ndarray

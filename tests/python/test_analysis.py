@@ -88,3 +88,14 @@ def test_crease_analysis_judges_each_side_as_a_boundary():
     assert abs(loop.subdominant[0] - 0.5) < 1e-12 and bool(loop.c1[0])
     with pytest.raises(sk.Error):
         sk.analyze("catmull-clark", [4], crease=True, boundary=True)
+
+
+def test_dual_crease_points_refine_by_chaikins_rule():
+    # Doo-Sabin's crease points follow Chaikin's curve (docs/features.md): their own local
+    # matrix has the quadratic B-spline's eigenvalues 1, 1/2, 1/4 (Chaikin 1974), then smaller.
+    a = sk.analyze("doo-sabin", [4, 6], crease=True)
+    for details in a.details:
+        crease = details["crease_eigenvalues"]
+        assert np.allclose(crease[:3], [1, 0.5, 0.25], atol=1e-9)
+        assert np.all(np.abs(crease[3:]) <= 0.25 + 1e-9)
+    assert sk.analyze("doo-sabin", [4]).details[0]["crease_eigenvalues"].size == 0

@@ -121,6 +121,7 @@ nlohmann::json surface_json(const SurfaceAnalysis& a) {
   j["size"] = a.size;
   j["eigenvalues"] = eigen_json(a.eigenvalues);
   j["minimal_eigenvalues"] = eigen_json(a.minimal_eigenvalues);
+  j["crease_eigenvalues"] = eigen_json(a.crease_eigenvalues);
   j["checks"] = {{"affine", a.affine},
                  {"lambda0_simple_one", a.lambda0_one},
                  {"subdominant_real", a.subdominant_real},

@@ -1,6 +1,7 @@
 // `subdiv analyze` and `subdiv refine --limit` end to end.
 #include <doctest/doctest.h>
 
+#include <complex>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -51,6 +52,31 @@ TEST_CASE("subdiv analyze: table, JSON, SVG and characteristic maps for a surfac
   CHECK(j["analyses"][2]["lambda1"].get<double>() == doctest::Approx((4 + A) / 16).epsilon(1e-12));
   CHECK(slurp(dir / "cc.svg").find("<svg") != std::string::npos);
   CHECK(std::filesystem::exists(dir / "maps" / "catmull-clark_characteristic_n4.vtp"));
+}
+
+TEST_CASE("subdiv analyze --json: a dual crease's own spectrum is Chaikin's") {
+  // Doo-Sabin's crease points follow Chaikin's rule (docs/features.md), whose local matrix
+  // has the eigenvalues 1, 1/2, 1/4 of the quadratic B-spline (Chaikin 1974), then smaller.
+  const auto dir = fresh_dir("analyze-cli-crease");
+  const auto r = run_subdiv("analyze doo-sabin --crease --valence 4 --json " + (dir / "ds.json").string());
+  CAPTURE(r.output);
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(slurp(dir / "ds.json"));
+  REQUIRE(j["analyses"].size() == 1);
+  REQUIRE(j["crease_analyses"].size() == 1);
+  CHECK(j["analyses"][0]["crease_eigenvalues"].empty());  // no crease at an interior face
+  const auto& crease = j["crease_analyses"][0]["crease_eigenvalues"];
+  REQUIRE(crease.size() > 3);
+  // A real eigenvalue is written as a number, a complex one as {"re", "im"}.
+  const auto value = [](const nlohmann::json& z) {
+    return z.is_number() ? std::complex<double>(z.get<double>(), 0)
+                         : std::complex<double>(z["re"].get<double>(), z["im"].get<double>());
+  };
+  for (size_t k = 0; k < 3; ++k) {
+    CHECK(value(crease[k]).real() == doctest::Approx(std::ldexp(1.0, -int(k))).epsilon(1e-9));
+    CHECK(std::abs(value(crease[k]).imag()) < 1e-9);
+  }
+  for (size_t k = 3; k < crease.size(); ++k) CHECK(std::abs(value(crease[k])) <= 0.25 + 1e-9);
 }
 
 TEST_CASE("subdiv analyze: parameters, curve schemes, user files, failures") {
