@@ -8,7 +8,8 @@
 # must hold the torus and ~2 GB of output), BEFORE (optional: another `subdiv` binary, e.g.
 # an older build, timed first with the same input), RUNS (the option sets to time, one per
 # line; default: the defaults (LZ4, base64), then no compression, raw appended data with LZ4
-# and without compression, and every array). For every run it prints wall, user and system
+# and without compression, and every array; RUNS="" runs the defaults alone), EXT (vtp: the output's extension; pvtp for
+# `--pieces` runs, whose piece files count in the file size). For every run it prints wall, user and system
 # time and peak memory (GNU time), the load average before and after, and, from
 # `subdiv refine --timings` in the same process (BEFORE too, if it has the option), the time reading the mesh, refining (topology and every level's values:
 # the refinement alone) and writing, and end to end / refinement.
@@ -19,7 +20,8 @@ NU=${NU:-1000}
 NV=${NV:-1000}
 LEVELS=${LEVELS:-2}
 WORK=${WORK:-/tmp/subdiv-bench-e2e}
-RUNS=${RUNS:-"
+EXT=${EXT:-vtp}
+RUNS=${RUNS-"
 --compression none
 --vtp-encoding raw
 --vtp-encoding raw --compression none
@@ -35,12 +37,13 @@ mesh=$WORK/torus_${NU}x${NV}.obj
 run() {
   label=$1 bin=$2
   shift 2
-  out=$WORK/out.vtp
+  out=$WORK/out.$EXT
+  rm -rf "$WORK"/out*
   load_before=$(cut -d' ' -f1-3 /proc/loadavg)
   /usr/bin/time -f "%e %U %S %M" -o "$WORK/time.txt" "$bin" refine "$mesh" -l "$LEVELS" -o "$out" "$@" \
     2> "$WORK/stderr.txt" > /dev/null || { cat "$WORK/stderr.txt" >&2; exit 1; }
   load_after=$(cut -d' ' -f1-3 /proc/loadavg)
-  size=$(stat -c %s "$out")
+  size=$(du -cb "$WORK"/out* | tail -n 1 | cut -f1)  # with a .pvtp's piece files
   read -r wall user sys peak_kb < "$WORK/time.txt"
   # --timings lines: "subdiv:   1.234 s  peak   0.22 GB  <step>"; older binaries print none.
   awk -v label="$label" -v wall="$wall" -v user="$user" -v sys="$sys" -v peak="$peak_kb" -v size="$size" \
@@ -59,10 +62,10 @@ run() {
         printf "%-28s read %6.2f s  refine %6.2f s  write %6.2f s  end to end / refine %5.2f\n", "", read, refine,
                write, wall / refine
     }' "$WORK/stderr.txt"
-  rm -f "$out"
+  rm -rf "$WORK"/out*
 }
 
-echo "subdiv refine $(basename "$mesh") ($NU x $NV quads) -l $LEVELS -o .vtp, $(nproc) cores"
+echo "subdiv refine $(basename "$mesh") ($NU x $NV quads) -l $LEVELS -o .$EXT, $(nproc) cores"
 if [ -n "${BEFORE:-}" ]; then
   libs="$(dirname "$BEFORE")${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"  # its own libraries next to it, if copied there
   timings=

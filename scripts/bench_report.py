@@ -5,7 +5,8 @@
 
 RUN_DIR holds the benchmark programs' outputs (refine.txt, update.txt, threads1.txt,
 threads2.txt, threads2-busy.txt, stages-SCHEME-LEVEL.txt, refine-nostream.txt, sizes-N.txt,
-meshlibs-full.txt, meshlibs-faces.txt, e2e.txt; any may be missing).
+meshlibs-full.txt, meshlibs-faces.txt, e2e.txt, io-write.txt, io-read.txt, big-whole.txt,
+big-pieces.txt; any may be missing).
 Each table of the page sits between `<!-- bench:NAME -->` and `<!-- /bench:NAME -->` and is
 replaced; without --page the tables are printed. The chart is a plain SVG (no plotting
 library needed): the ratio to OpenSubdiv per scheme and level, and time against mesh size.
@@ -300,6 +301,64 @@ def e2e_table(run):
                           "wall / refine", "load"], body)}
 
 
+def io_tables(run):
+    """subdiv-bench-io: the writers (io-write.txt) and the readers (io-read.txt)."""
+    out = {}
+    header, recs = parse(os.path.join(run, "io-write.txt"))
+    writes = [r for r in recs if r["_first"] == "write"]
+    if writes:
+        body = []
+        for r in writes:
+            state = "clean page cache" if r["_line"].split()[1] == "clean" else "right after the first file"
+            body.append([state, f"{num(r, 'vtp_gb'):.3f}",
+                         f"{num(r, 'subdivkit_s'):.2f} ({num(r, 'subdivkit_user_s'):.2f} + {num(r, 'subdivkit_sys_s'):.2f})",
+                         f"**{num(r, 'subdivkit_gb_per_s'):.2f}**",
+                         f"{num(r, 'vtk_s'):.2f} ({num(r, 'vtk_user_s'):.2f} + {num(r, 'vtk_sys_s'):.2f})",
+                         f"**{ratio(num(r, 'ratio'))}**", ratio(num(r, "user_ratio"))])
+        out["io-write"] = f"Load average at the start: {load_of(header)}.\n\n" + table(
+            ["writing .vtp (defaults)", "file GB", "SubdivKit s (user + sys)", "GB/s", "VTK s (user + sys)", "ratio",
+             "user ratio"], body)
+    header, recs = parse(os.path.join(run, "io-read.txt"))
+    reads = [r for r in recs if r["_first"] == "read"]
+    if reads:
+        label = {"vtp": ".vtp, defaults (inline base64, LZ4)", "vtp-raw": ".vtp, raw appended, LZ4", "obj": ".obj",
+                 "ply": ".ply (binary)"}
+        body = []
+        for r in reads:
+            kind = r["_line"].split()[1]
+            om = num(r, "openmesh_s") or 0
+            body.append([label.get(kind, kind), f"{num(r, 'gb'):.3f}",
+                         f"{num(r, 'subdivkit_s'):.2f} ({num(r, 'subdivkit_user_s'):.2f})",
+                         f"{num(r, 'vtk_s'):.2f} ({num(r, 'vtk_user_s'):.2f})", f"**{ratio(num(r, 'vtk_ratio'))}**",
+                         f"{om:.2f} ({num(r, 'openmesh_user_s'):.2f})" if om else "–",
+                         f"**{ratio(num(r, 'openmesh_ratio'))}**" if om else "–"])
+        out["io-read"] = f"Load average at the start: {load_of(header)}.\n\n" + table(
+            ["reading", "file GB", "SubdivKit s (user)", "VTK s (user)", "ratio", "OpenMesh s (user)", "ratio"], body)
+    return out
+
+
+def big_table(run):
+    """Level 3 whole and in pieces (bench-end-to-end.sh with LEVELS=3), peak against the file."""
+    pat = re.compile(r"^(.*?)\s+wall\s+([\d.]+) s\s+user\s+([\d.]+) s\s+sys\s+([\d.]+) s\s+peak\s+([\d.]+) GB\s+"
+                     r"file\s+([\d.]+) MB\s+load (.*)$")
+    body = []
+    for name, label in (("big-whole.txt", "whole, `-o OUT.vtp`"),
+                        ("big-pieces.txt", "`--pieces 8 --max-memory 4G -o OUT.pvtp`")):
+        path = os.path.join(run, name)
+        if not os.path.exists(path):
+            continue
+        for line in open(path, encoding="utf-8"):
+            m = pat.match(line.strip())
+            if not m:
+                continue
+            wall, user, sys_s, peak, size = (float(m.group(i)) for i in range(2, 7))
+            body.append([label, f"{wall:.1f}", f"{user:.1f} + {sys_s:.1f}", f"{peak:.2f}", f"{size / 1000:.2f}",
+                         f"{peak / (size / 1000):.2f}", m.group(7)])
+    if not body:
+        return {}
+    return {"big": table(["run", "wall s", "user + sys s", "peak GB", "output GB", "peak / output", "load"], body)}
+
+
 def svg_chart(run, out):
     """Two panels: ratio to OpenSubdiv (total, geometry) per scheme and level; time against faces."""
     _, recs = parse(os.path.join(run, "refine.txt"))
@@ -377,11 +436,11 @@ def svg_chart(run, out):
 def fill_page(page, tables):
     text = open(page, encoding="utf-8").read()
     for name, body in tables.items():
-        pattern = re.compile(rf"(<!-- bench:{name} -->\n).*?(\n<!-- /bench:{name} -->)", re.S)
+        pattern = re.compile(rf"(<!-- bench:{name} -->\n)(?:.*?\n)?(<!-- /bench:{name} -->)", re.S)
         if not pattern.search(text):
             print(f"bench_report: {page} has no <!-- bench:{name} --> block; table left out", file=sys.stderr)
             continue
-        text = pattern.sub(lambda m: m.group(1) + body + m.group(2), text)
+        text = pattern.sub(lambda m: m.group(1) + body + "\n" + m.group(2), text)
     with open(page, "w", encoding="utf-8") as f:
         f.write(text)
 
@@ -396,7 +455,7 @@ def main():
         sys.exit(f"bench_report: {a.run} is not a folder; give the folder scripts/benchmarks.sh wrote")
     tables = {}
     for make in (refine_tables, update_table, threads_table, stages_table, streaming_table, sizes_table,
-                 meshlibs_table, e2e_table):
+                 meshlibs_table, e2e_table, io_tables, big_table):
         tables.update(make(a.run))
     if a.page:
         fill_page(a.page, tables)

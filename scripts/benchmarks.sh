@@ -4,18 +4,19 @@
 #
 #   scripts/benchmarks.sh [BUILD_DIR] [OUT_DIR]
 #
-# Needs the Release build of subdiv-bench, subdiv-bench-meshlibs, subdiv-bench-stages and subdiv
-# (`cmake --build build --target subdiv-bench subdiv-bench-meshlibs subdiv-bench-stages subdiv_cli`). Writes each
+# Needs the Release build of subdiv-bench, subdiv-bench-meshlibs, subdiv-bench-stages,
+# subdiv-bench-io and subdiv (`cmake --build build --target subdiv-bench subdiv-bench-meshlibs
+# subdiv-bench-stages subdiv-bench-io subdiv_cli`). Writes each
 # program's output into OUT_DIR (default /tmp/subdivkit-bench-<UTC date-time>), then fills the
 # tables of docs/benchmarks.md and draws docs/images/benchmarks.svg from them (PAGE=no leaves
-# the page alone and prints the tables). On a quiet 2-core machine it should run about 25
-# minutes (an estimate from the parts' user times; QUICK=1 took 2.5 minutes at load 9).
+# the page alone and prints the tables). On a quiet 2-core machine it runs about 32 minutes
+# (QUICK=1 took 2.5 minutes at load 9).
 #
 # Environment: ROUNDS (3: worker processes per side, alternating, best of each side),
 # FACES (1000000), QUICK=1 (a smoke run: 20k faces, one round, sizes up to 160k faces, a
 # 150 x 150 torus end to end),
 # SKIP (space-separated parts to leave out: refine update threads stages streaming sizes
-# meshlibs e2e).
+# meshlibs e2e io big).
 set -eu
 BUILD=${1:-build}
 OUT=${2:-${TMPDIR:-/tmp}/subdivkit-bench-$(date -u +%Y%m%d-%H%M)}
@@ -90,6 +91,22 @@ if wants e2e && [ -x "$BUILD/tools/subdiv/subdiv" ]; then
   step "end to end"
   RUNS="
 --compression none" "$here/scripts/bench-end-to-end.sh" "$BUILD" > "$OUT/e2e.txt" || true
+fi
+if wants io && [ -x "$BENCH/subdiv-bench-io" ]; then
+  # Writers against VTK's (16M faces, clean page cache, then with the first file's pages
+  # dirty), readers against VTK's and OpenMesh's (4M faces: VTK's OBJ reader is slow).
+  step "writing .vtp"
+  "$BENCH/subdiv-bench-io" --faces "$((FACES * 16))" --rounds "$ROUNDS" --reads false > "$OUT/io-write.txt" || true
+  step "reading .vtp, .obj, .ply"
+  "$BENCH/subdiv-bench-io" --faces "$((FACES * 4))" --rounds "$ROUNDS" --writes false > "$OUT/io-read.txt" || true
+fi
+if wants big && [ -x "$BUILD/tools/subdiv/subdiv" ]; then
+  # Level 3 of the torus (64M faces at the default size), whole and in pieces within 4 GB.
+  step "a big level, whole"
+  LEVELS=3 RUNS="" "$here/scripts/bench-end-to-end.sh" "$BUILD" > "$OUT/big-whole.txt" || true
+  step "a big level, in pieces"
+  LEVELS=3 EXT=pvtp RUNS="--pieces 8 --max-memory 4G" "$here/scripts/bench-end-to-end.sh" "$BUILD" \
+    > "$OUT/big-pieces.txt" || true
 fi
 step "done: $OUT"
 if [ "${PAGE:-yes}" = no ]; then
