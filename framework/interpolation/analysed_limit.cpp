@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include "framework/analysis/surface/rim_rules.h"
 #include "framework/scheme/scheme.h"
+#include "framework/scheme/step_tables.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -12,12 +14,17 @@ AnalysedLimit::AnalysedLimit(std::shared_ptr<const Scheme> scheme, const Feature
   LimitOptions o;
   o.features = features;
   limits_ = std::make_shared<SchemeLimits>(*scheme_, o);
+  if (!has_feature_rules(*scheme_)) {
+    rim_scheme_ = with_stand_in_rim_rules(*scheme_);
+    rim_limits_ = std::make_shared<SchemeLimits>(*rim_scheme_, o);
+  }
 }
 
 std::string AnalysedLimit::name() const { return fmt::format("limit masks of {}'s eigen-analysis", scheme_->name); }
 
 StencilTable AnalysedLimit::stencils_at(const Level& level, int step) const {
-  LimitStencils s = limits_->stencils(level, step);
+  const bool stand_in_rims = rim_limits_ && needs_no_feature_rules(level);
+  LimitStencils s = (stand_in_rims ? rim_limits_ : limits_)->stencils(level, step);
   if (s.first_approximate != kNone)
     throw Error(fmt::format("{}: vertex {} has no exact limit mask ({}){}", name(), s.first_approximate,
                             s.first_reason,

@@ -27,6 +27,11 @@ protected:
 private:
   std::shared_ptr<const Scheme> scheme_;
   std::shared_ptr<SchemeLimits> limits_;  // caches masks across levels and calls; thread-safe
+  // A scheme without boundary or crease rules has limit masks on meshes that need none
+  // (closed, no sharpness): the analysis' neighbourhoods then take stand-in rim rules
+  // (analysis/surface/rim_rules.h), which never reach the masks. Null for other schemes.
+  std::shared_ptr<const Scheme> rim_scheme_;
+  std::shared_ptr<SchemeLimits> rim_limits_;
 };
 
 }  // namespace subdiv

@@ -255,6 +255,26 @@ TEST_CASE("user schemes get their masks from the analysis; divergent ones are re
   CHECK(*asked > 0);
 }
 
+TEST_CASE("a scheme without boundary rules: its masks on a closed mesh are the shipped scheme's") {
+  // Catmull-Clark's rules without a "curve" refine a closed mesh without creases exactly as
+  // the shipped scheme does, so their limit masks must be the same; the analysis' cut
+  // neighbourhoods take stand-in rim rules (analysis/surface/rim_rules.h) that never reach a
+  // mask. On a mesh with a boundary the scheme's own rules are missing, and that is said.
+  const auto dir = std::filesystem::temp_directory_path() / "subdivkit-interp-no-curve";
+  std::filesystem::create_directories(dir);
+  const auto bare = dir / "cc-no-curve.json";
+  std::ofstream(bare) << R"json({"name": "cc-no-curve", "split": "quad",
+    "rules": {"face": [{"sum": "vertices", "w": "1/k"}],
+              "edge": [{"sum": "ends", "w": "1/4"}, {"sum": "faces", "new": "face", "w": "1/4"}],
+              "vertex": [{"at": "self", "w": "(n-2)/n"}, {"sum": "ring", "w": "1/n^2"},
+                         {"sum": "faces", "new": "face", "w": "1/n^2"}]}})json";
+  for (const Mesh& m : {cube(), torus(5, 4)}) {
+    const StencilTable ours = analysed(bare.string(), m.level()), shipped = analysed("catmull-clark", m.level());
+    CHECK(max_row_difference(ours, shipped) < 1e-13);
+  }
+  CHECK_THROWS_WITH_AS(choose(bare.string(), grid(3, 2)), doctest::Contains("\"curve\""), Error);
+}
+
 TEST_CASE("refusals: missing vertices in a selection") {
   CHECK_THROWS_WITH_AS(parse_vertex_selection("0,1,40", 40, "--select"), doctest::Contains("vertex 40 does not exist"), Error);
   CHECK_THROWS_WITH_AS(parse_vertex_selection("0,-1", 40, "--select"), doctest::Contains("does not exist"), Error);
