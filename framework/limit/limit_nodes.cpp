@@ -291,19 +291,19 @@ const std::array<Index, 16>* LimitNodes::bspline_isolated(int id) {
   return n.bspline == 1 ? &n.grid : nullptr;
 }
 
-const std::vector<std::vector<double>>* LimitNodes::quartic(int id, bool& untried) {
+const PolynomialPatch* LimitNodes::quartic(int id, bool& untried) {
   std::lock_guard lock(mutex_);
   const LimitNode& n = *nodes_[size_t(id)];
   untried = n.quartic == 0;
-  return n.quartic == 1 ? &n.lattice_rows : nullptr;
+  return n.quartic == 1 ? &n.patch : nullptr;
 }
 
-void LimitNodes::set_quartic(int id, std::vector<std::vector<double>> rows) {
+void LimitNodes::set_quartic(int id, PolynomialPatch patch) {
   std::lock_guard lock(mutex_);
   LimitNode& n = *nodes_[size_t(id)];
   if (n.quartic != 0) return;
-  n.quartic = rows.empty() ? 2 : 1;
-  n.lattice_rows = std::move(rows);
+  n.quartic = patch.lattice.empty() ? 2 : 1;
+  n.patch = std::move(patch);
 }
 
 const CornerRows* LimitNodes::corner(int id, int k, std::string& error) {

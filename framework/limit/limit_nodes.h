@@ -18,6 +18,7 @@
 
 #include "framework/limit/corner_limit.h"
 #include "framework/limit/face_domain.h"
+#include "framework/limit/triangle_patch.h"
 #include "framework/limit/step_matrix.h"
 #include "framework/util/error.h"
 
@@ -51,9 +52,9 @@ struct LimitNode {
   std::array<Index, 16> grid{};
   // Polynomial patch (triangle_patch.h: quartic over a triangle; tensor_patch.h: degree 4
   // per direction over a quad): 0 not tried, 1 yes, 2 no; the limit rows at the lattice
-  // points (i/4, j/4) of the face.
+  // points (i/4, j/4) of the face, and a triangle's box spline labels when it is one.
   int quartic = 0;
-  std::vector<std::vector<double>> lattice_rows;
+  PolynomialPatch patch;
   std::vector<CornerRows> corner;  // over labels
   std::vector<std::string> corner_error;
 };
@@ -93,8 +94,8 @@ public:
 
   // The quartic triangle patch of node `id`, once decided: null when not tried yet (then
   // `try_quartic` says so, and the caller samples the rows and calls set_quartic) or not one.
-  const std::vector<std::vector<double>>* quartic(int id, bool& untried);
-  void set_quartic(int id, std::vector<std::vector<double>> rows);  // empty: not one
+  const PolynomialPatch* quartic(int id, bool& untried);
+  void set_quartic(int id, PolynomialPatch patch);  // an empty lattice: not one
 
 private:
   LimitNode& expand_locked(int id);

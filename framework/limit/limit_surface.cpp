@@ -158,7 +158,7 @@ struct LimitSurface::Impl {
     std::array<std::uint8_t, 16> grid_cell{};
     // Otherwise the node's polynomial patch (LimitNodes::quartic: a quartic over a triangle,
     // degree 4 per direction over a quad) when it has one, else null.
-    const std::vector<std::vector<double>>* lattice = nullptr;
+    const PolynomialPatch* lattice = nullptr;
 
     void set_grid(const std::array<Index, 16>* g) {
       grid = g;
@@ -178,7 +178,7 @@ struct LimitSurface::Impl {
     int node = -1;
     Index kept = 0;
     const std::array<Index, 16>* grid = nullptr;
-    const std::vector<std::vector<double>>* lattice = nullptr;
+    const PolynomialPatch* lattice = nullptr;
   };
   // The hash reads the size and at most the first kHashed values (where neighbourhoods
   // differ first: the labelling starts at the face); equal hashes are told apart by comparing the keys.
@@ -513,12 +513,33 @@ struct LimitSurface::Impl {
       }
     };
     LimitSample out;
-    apply(r.row[0].data(), out.position);
     const auto& J = p.jacobian;
     const auto& ds = r.row[1];
     const auto& dt = r.row[2];
-    if (derivatives >= 1 && r.count >= 3) {
-      std::array<double, kFixedLabels> du{}, dv{};
+    if (C == 3 && derivatives >= 1 && r.count >= 3) {
+      // Position and first derivatives in one pass over the labels: nine sums, each taking
+      // its products in the labels' order and passing over its zero weights as apply() does
+      // (a select rather than a branch: the same bits), each vertex read once.
+      std::array<double, 9> sum{};
+      const double* position = r.row[0].data();
+      for (size_t l = 0; l < L; ++l) {
+        const double w[3] = {position[l], J[0][0] * ds[l] + J[1][0] * dt[l], J[0][1] * ds[l] + J[1][1] * dt[l]};
+        const double* at = &values[size_t(vertices[l]) * 3];
+        for (size_t k = 0; k < 3; ++k)
+          for (size_t c = 0; c < 3; ++c) {
+            double& x = sum[3 * k + c];
+            x = w[k] != 0 ? x + w[k] * at[c] : x;
+          }
+      }
+      out.position = {sum[0], sum[1], sum[2]};
+      out.du = {sum[3], sum[4], sum[5]};
+      out.dv = {sum[6], sum[7], sum[8]};
+      out.has_derivatives = true;
+    } else {
+      apply(r.row[0].data(), out.position);
+    }
+    if (!out.has_derivatives && derivatives >= 1 && r.count >= 3) {
+      std::array<double, kFixedLabels> du, dv;
       for (size_t i = 0; i < L; ++i) du[i] = J[0][0] * ds[i] + J[1][0] * dt[i];
       for (size_t i = 0; i < L; ++i) dv[i] = J[0][1] * ds[i] + J[1][1] * dt[i];
       apply(du.data(), out.du);
@@ -633,7 +654,7 @@ struct LimitSurface::Impl {
         if (const auto* lattice = quartic(c, id, stack)) {
           // Only the derivative rows asked for: finish() reads no others.
           const CornerRows rows =
-              triangles ? quartic_rows(*lattice, p.st, derivatives) : tensor_rows(*lattice, p.st, derivatives);
+              triangles ? quartic_rows(*lattice, p.st, derivatives) : tensor_rows(lattice->lattice, p.st, derivatives);
           return finish(rows, p, values, channels, derivatives, path, first_values, iteration, rows_out);
         }
       }
@@ -690,7 +711,7 @@ struct LimitSurface::Impl {
   // patch's degree, so agreeing at the lattice they agree everywhere; and the limit is the
   // unique bounded solution of those equations (a zero-sum row through ever more steps of a
   // convergent scheme tends to zero), so the patch is the limit.
-  const std::vector<std::vector<double>>* quartic(Cache& c, int id, std::vector<int>& stack) const {
+  const PolynomialPatch* quartic(Cache& c, int id, std::vector<int>& stack) const {
     bool untried = false;
     if (const auto* rows = c.nodes->quartic(id, untried)) return rows;
     if (!untried) return nullptr;
@@ -698,7 +719,7 @@ struct LimitSurface::Impl {
     stack.push_back(id);
     std::vector<std::vector<double>> rows = fit_quartic(c, id, stack);
     stack.pop_back();
-    c.nodes->set_quartic(id, std::move(rows));
+    c.nodes->set_quartic(id, triangles ? triangle_patch(std::move(rows)) : PolynomialPatch{std::move(rows), {}});
     return c.nodes->quartic(id, untried);
   }
 
@@ -708,7 +729,7 @@ struct LimitSurface::Impl {
                                    const std::vector<std::vector<double>>& own) const {
     if (child == id) return own[size_t(q)];
     bool untried = false;
-    if (const auto* rows = c.nodes->quartic(child, untried)) return (*rows)[size_t(q)];
+    if (const auto* patch = c.nodes->quartic(child, untried)) return patch->lattice[size_t(q)];
     const LimitNode& C = c.nodes->node(child);
     return bspline_rows(*c.nodes->bspline(child), tensor_lattice_point(q), C.kept).position;
   }
@@ -1080,7 +1101,7 @@ LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double
       // walk()'s first step where the face's node is a polynomial patch, without the nodes' lock.
       const std::vector<double> first = gathered(e->vertices, values, channels);
       const CornerRows rows = impl_->triangles ? quartic_rows(*e->lattice, p.st, derivatives)
-                                               : tensor_rows(*e->lattice, p.st, derivatives);
+                                               : tensor_rows(e->lattice->lattice, p.st, derivatives);
       const std::vector<const StepMatrix*> path;
       return Impl::finish(rows, p, first, channels, derivatives, path, first, 0, nullptr);
     }
