@@ -186,6 +186,12 @@ public:
     index_ = index;
   }
   double next(Type type) { return format_ == Format::Ascii ? next_text(type) : next_binary(type); }
+  // How many more values of `type` the data can hold at most (2 bytes a value in text: a
+  // digit and a separator): a bound for reserving arrays that a hostile count cannot inflate.
+  std::size_t most_values(Type type) const {
+    const std::size_t bytes = format_ == Format::Ascii ? lines_.remaining().size() : bytes_.size();
+    return bytes / (format_ == Format::Ascii ? 2 : type_size(type));
+  }
   // "vertex 12": the element being read, for messages.
   std::string subject() const { return fmt::format("{} {}", element_->name, index_); }
   [[noreturn]] void fail(std::string_view message) const;
@@ -326,6 +332,8 @@ void PlyReader::read_vertices(Values& values, const Element& e) {
   for (std::size_t i = 0; i < e.properties.size(); ++i)
     not_data[i] = e.properties[i].list || int(i) == axis[0] || int(i) == axis[1] || int(i) == axis[2];
   PropertyColumns data(e, not_data);
+  // Grown once, not by doubling: each doubling of a 100 MB array copies it and faults in new pages.
+  mesh_.positions.reserve(3 * std::min(std::size_t(e.count), values.most_values(e.properties[size_t(axis[0])].type)));
   for (long long v = 0; v < e.count; ++v) {
     values.set_context(e, v);
     double xyz[3] = {0, 0, 0};
@@ -355,6 +363,9 @@ void PlyReader::read_faces(Values& values, const Element& e) {
   std::vector<bool> not_data(e.properties.size());
   for (std::size_t i = 0; i < e.properties.size(); ++i) not_data[i] = e.properties[i].list;
   PropertyColumns data(e, not_data);
+  const Property& indices = e.properties[size_t(list)];
+  mesh_.face_offsets.reserve(std::min(std::size_t(e.count), values.most_values(indices.count_type)) + 1);
+  mesh_.face_vertices.reserve(std::min(4 * std::size_t(e.count), values.most_values(indices.type)));
   for (long long f = 0; f < e.count; ++f) {
     values.set_context(e, f);
     for (std::size_t i = 0; i < e.properties.size(); ++i) {
