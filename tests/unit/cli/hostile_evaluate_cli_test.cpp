@@ -29,6 +29,27 @@ std::string read_text(const fs::path& file) {
 
 }  // namespace
 
+TEST_CASE("evaluate: a points file that is a FIFO, a link to /dev/zero or a directory is refused at once") {
+  const auto dir = fresh_dir("hostile-evaluate-points");
+  REQUIRE(::mkfifo((dir / "pipe.csv").c_str(), 0600) == 0);
+  fs::create_symlink("/dev/zero", dir / "zero.csv");
+  fs::create_directory(dir / "folder.csv");
+  struct Bad {
+    const char* name;
+    const char* message;
+  };
+  for (const Bad& b : {Bad{"pipe.csv", "it is a FIFO (named pipe); give the path of a regular points (.csv) file"},
+                       Bad{"zero.csv", "it is a character device"},
+                       Bad{"folder.csv", "it is a directory, not a points (.csv) file"}}) {
+    CAPTURE(b.name);
+    const CliResult r = run_bounded("evaluate " + kCube + " --at " + (dir / b.name).string() + " -o " +
+                                    (dir / "out.csv").string());
+    CHECK(r.exit_code == 1);
+    CHECK_MESSAGE(contains(r.output, "cannot open '" + (dir / b.name).string() + "': " + b.message), r.output);
+    CHECK_FALSE(fs::exists(dir / "out.csv"));
+  }
+}
+
 TEST_CASE("evaluate: an output that is a FIFO, a link to a device or a directory is refused and stays as it was") {
   // As root, -o /dev/null (or any device) was replaced by a plain file when the finished
   // temporary was renamed onto it; a link to /dev/null shows the refusal without touching /dev.
