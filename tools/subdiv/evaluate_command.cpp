@@ -29,6 +29,7 @@
 #include "framework/util/quoted_text.h"
 #include "progress.h"
 #include "adaptive_refine_option.h"
+#include "level_output.h"
 #include "safe_print.h"
 
 namespace subdiv::cli {
@@ -50,7 +51,18 @@ struct EvaluateArgs {
   bool limit = false;
   std::string approximate, bezier_net;  // --approximate bezier [--bezier-net OUT.vtu]
   int threads = 0;
+  bool force = false;  // --force: -o may be the input mesh or the --at points file
 };
+
+// -o naming the --at file would replace the points with their evaluation; as refine's
+// check_output_not_input does for the mesh, refused unless --force.
+void check_output_not_points(const EvaluateArgs& a) {
+  std::error_code ec;
+  if (a.at.empty() || a.force || !std::filesystem::equivalent(a.at, a.output, ec) || ec) return;
+  throw Error(fmt::format("-o {} is the points file --at {}: writing would lose the points; name another output, "
+                          "or add --force to overwrite it",
+                          subdiv::quoted(a.output), subdiv::quoted(a.at)));
+}
 
 // The positions (and derivatives), then each face-varying channel's values, per point.
 void write_csv(const std::filesystem::path& out, const SurfacePoints& queries, const EvaluatedPoints& points,
@@ -169,6 +181,8 @@ void run(const EvaluateArgs& a) {
   if (!a.approximate.empty() && a.adaptive >= 0)
     throw Error("--approximate bezier goes with --samples N or --at POINTS.csv, not --adaptive");
   if (a.approximate.empty() && !a.bezier_net.empty()) throw Error("--bezier-net goes with --approximate bezier");
+  check_output_not_input(a.mesh, a.output, a.force);
+  check_output_not_points(a);
   const std::string ext = lowercase_extension(a.output);
   if (!a.at.empty() && ext != ".csv")
     throw Error(fmt::format("-o {}: --at writes .csv (face,u,v,x,y,z[,du_*,dv_*[,duu_*,duv_*,dvv_*]])", subdiv::quoted(a.output)));
@@ -282,6 +296,7 @@ void add_evaluate_command(CLI::App& app) {
                   "Output: with --at a .csv (face,u,v,x,y,z then du_x..dv_z, duu_x..dvv_z); with --samples or "
                   "--adaptive a mesh (.vtp, .obj, ...)")
       ->required();
+  cmd->add_flag("--force", args->force, "Write -o even where it is the input mesh or the --at points file, which is then lost");
   cmd->add_option("-j,--threads", args->threads, "Worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
   cmd->footer("Parameters: quads (0,0) (1,0) (1,1) (0,1); triangles (0,0) (1,0) (0,1); other faces of quad schemes\n"
               "Bfr's QUAD_SUBFACES tiles (also for dual and mid-edge schemes); sqrt3: the triangle's, two steps a triadic\n"

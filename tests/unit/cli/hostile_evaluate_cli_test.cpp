@@ -29,6 +29,46 @@ std::string read_text(const fs::path& file) {
 
 }  // namespace
 
+TEST_CASE("evaluate and parameterize: -o naming the input mesh or the points file is refused unless --force") {
+  const auto dir = fresh_dir("hostile-evaluate-same");
+  fs::copy_file(kCube, dir / "cube.obj");
+  const std::string cube_text = read_text(dir / "cube.obj");
+  const std::string mesh = (dir / "cube.obj").string();
+  for (const std::string& how : {std::string(" --samples 2"), std::string(" --adaptive 1"), std::string(" --level-distance 1")}) {
+    CAPTURE(how);
+    const CliResult r = run_bounded("evaluate " + mesh + how + " -o " + mesh);
+    CHECK(r.exit_code == 1);
+    CHECK_MESSAGE(contains(r.output, "-o '" + mesh + "' is the input mesh '" + mesh + "': writing would lose the "
+                                     "control mesh; name another output, or add --force"),
+                  r.output);
+    CHECK(read_text(dir / "cube.obj") == cube_text);
+  }
+  const std::string points_text = "face,u,v\n0,0.5,0.5\n";
+  std::ofstream(dir / "points.csv") << points_text;
+  const std::string points = (dir / "points.csv").string();
+  const CliResult r = run_bounded("evaluate " + mesh + " --at " + points + " -o " + points);
+  CHECK(r.exit_code == 1);
+  CHECK_MESSAGE(contains(r.output, "-o '" + points + "' is the points file --at '" + points +
+                                       "': writing would lose the points; name another output, or add --force"),
+                r.output);
+  CHECK(read_text(dir / "points.csv") == points_text);
+  // --force overwrites, as refine's does; the points were read before the file is replaced.
+  const CliResult forced = run_bounded("evaluate " + mesh + " --at " + points + " --force -o " + points);
+  CHECK(forced.exit_code == 0);
+  CHECK(read_text(dir / "points.csv").rfind("face,u,v,x,y,z", 0) == 0);
+
+  // parameterize takes a topological disc: two quads side by side.
+  std::ofstream(dir / "disc.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\n";
+  const std::string disc_text = read_text(dir / "disc.obj");
+  const std::string disc = (dir / "disc.obj").string();
+  const CliResult p = run_bounded("parameterize " + disc + " -o " + disc);
+  CHECK(p.exit_code == 1);
+  CHECK_MESSAGE(contains(p.output, "is the input mesh"), p.output);
+  CHECK(read_text(dir / "disc.obj") == disc_text);
+  CHECK(run_bounded("parameterize " + disc + " -q --force -o " + disc).exit_code == 0);
+  CHECK(read_text(dir / "disc.obj") != disc_text);
+}
+
 TEST_CASE("evaluate: a points file that is a FIFO, a link to /dev/zero or a directory is refused at once") {
   const auto dir = fresh_dir("hostile-evaluate-points");
   REQUIRE(::mkfifo((dir / "pipe.csv").c_str(), 0600) == 0);
