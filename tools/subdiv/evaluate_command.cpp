@@ -3,8 +3,8 @@
 // or the limit surface sampled N x N per face as a crack-free mesh (framework/limit,
 // docs/limit.md).
 #include <cmath>
+#include <filesystem>
 #include <fmt/format.h>
-#include <fstream>
 #include <tbb/global_control.h>
 
 #include "commands.h"
@@ -24,6 +24,7 @@
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/atomic_file.h"
+#include "framework/util/checked_file_stream.h"
 #include "framework/util/error.h"
 #include "framework/util/parallel_for_all.h"
 #include "framework/util/quoted_text.h"
@@ -68,7 +69,7 @@ void check_output_not_points(const EvaluateArgs& a) {
 void write_csv(const std::filesystem::path& out, const SurfacePoints& queries, const EvaluatedPoints& points,
                int derivatives, const std::vector<std::string>& fvar_names, const std::vector<EvaluatedPoints>& fvar) {
   write_file_atomically(out, [&](const std::filesystem::path& tmp) {
-    std::ofstream f(tmp);
+    CheckedFileStream f(tmp, out);  // a full disk is an error with the fix, never a short file
     f << "face,u,v,x,y,z";
     if (derivatives > 0) f << ",du_x,du_y,du_z,dv_x,dv_y,dv_z";
     if (derivatives > 1) f << ",duu_x,duu_y,duu_z,duv_x,duv_y,duv_z,dvv_x,dvv_y,dvv_z";
@@ -88,7 +89,7 @@ void write_csv(const std::filesystem::path& out, const SurfacePoints& queries, c
         for (size_t c = 0; c < size_t(e.channels); ++c) f << ',' << number(e.position[i * size_t(e.channels) + c]);
       f << '\n';
     }
-    if (!f) throw Error(fmt::format("cannot write {}", subdiv::quoted(out.string())));
+    f.close();
   });
 }
 
@@ -123,7 +124,7 @@ EvaluateRequest evaluate_request(const EvaluateArgs& a, Progress& progress) {
 // written as --samples or --at would write the exact limit, with their distance to it.
 void write_approximation_csv(const std::filesystem::path& out, const SurfacePoints& q, const ApproximatedPoints& p) {
   write_file_atomically(out, [&](const std::filesystem::path& tmp) {
-    std::ofstream f(tmp);
+    CheckedFileStream f(tmp, out);
     f << "face,u,v,x,y,z,nx,ny,nz,limit_distance\n";
     for (size_t i = 0; i < q.size(); ++i) {
       f << fmt::format("{},{},{}", q.faces[i], q.uv[2 * i], q.uv[2 * i + 1]);
@@ -131,7 +132,7 @@ void write_approximation_csv(const std::filesystem::path& out, const SurfacePoin
         for (size_t c = 0; c < 3; ++c) f << ',' << fmt::format("{}", (*d)[3 * i + c]);
       f << ',' << fmt::format("{}", p.distances.per_point[i]) << '\n';
     }
-    if (!f) throw Error(fmt::format("cannot write {}", subdiv::quoted(out.string())));
+    f.close();
   });
 }
 
@@ -162,9 +163,9 @@ void run_approximation(const EvaluateArgs& a, Progress& progress) {
   }
   if (!a.bezier_net.empty())
     write_file_atomically(a.bezier_net, [&](const std::filesystem::path& tmp) {
-      std::ofstream f(tmp);
+      CheckedFileStream f(tmp, a.bezier_net);
       f << bezier_control_net_vtu(patches, distances.per_face);
-      if (!f) throw Error(fmt::format("cannot write {}", subdiv::quoted(a.bezier_net)));
+      f.close();
     });
 }
 

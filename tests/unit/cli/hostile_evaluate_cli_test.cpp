@@ -118,3 +118,22 @@ TEST_CASE("evaluate: an output that is a FIFO, a link to a device or a directory
   CHECK(fs::is_directory(dir / "folder.csv"));
   CHECK(fs::is_empty(dir / "folder.csv"));
 }
+
+TEST_CASE("evaluate and analyze: a file size limit (ulimit -f) is a refusal naming the fix, with no file left") {
+  // The .csv was written through an unchecked stream whose last buffer is flushed on
+  // destruction: with nothing allowed on disk an empty file was renamed into place, exit 0.
+  const auto dir = fresh_dir("hostile-evaluate-file-size");
+  std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n";
+  const std::string at = " --at " + (dir / "points.csv").string();
+  for (const std::string& args :
+       {"evaluate " + kCube + at + " -o " + (dir / "out.csv").string(),
+        "evaluate " + kCube + at + " --approximate bezier -o " + (dir / "out.csv").string(),
+        "analyze catmull-clark --valence 3 --json " + (dir / "out.json").string(),
+        "analyze catmull-clark --valence 3 --svg " + (dir / "out.svg").string()}) {
+    CAPTURE(args);
+    const CliResult r = run_subdiv_with_prefix("ulimit -f 0; ", args);
+    CHECK(r.exit_code == 1);
+    CHECK_MESSAGE(contains(r.output, "the disk is full or the file is larger than allowed"), r.output);
+  }
+  for (const auto& e : fs::directory_iterator(dir)) CHECK_MESSAGE(e.path().filename() == "points.csv", e.path());
+}
