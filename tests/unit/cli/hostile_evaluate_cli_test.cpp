@@ -119,6 +119,21 @@ TEST_CASE("evaluate: an output that is a FIFO, a link to a device or a directory
   CHECK(fs::is_empty(dir / "folder.csv"));
 }
 
+TEST_CASE("a --param given twice is refused, not decided by its order") {
+  const auto dir = fresh_dir("hostile-param-twice");
+  for (const char* command : {"refine ", "evaluate "}) {
+    CAPTURE(command);
+    const std::string args = std::string(command) + kCube + " -p triangles=smooth -p triangles=catmark" +
+                             (std::string(command) == "refine " ? " -l 1" : " --samples 2");
+    const CliResult r = run_bounded(args + " -o " + (dir / "out.obj").string());
+    CHECK(r.exit_code == 1);
+    CHECK_MESSAGE(contains(r.output, "--param 'triangles' is given twice ('triangles=smooth' and "
+                                     "'triangles=catmark'); give it once"),
+                  r.output);
+    CHECK_FALSE(fs::exists(dir / "out.obj"));
+  }
+}
+
 TEST_CASE("evaluate and analyze: a file size limit (ulimit -f) is a refusal naming the fix, with no file left") {
   // The .csv was written through an unchecked stream whose last buffer is flushed on
   // destruction: with nothing allowed on disk an empty file was renamed into place, exit 0.
