@@ -42,6 +42,7 @@ struct EvaluateArgs {
   std::string boundary = "edges-and-corners", crease_method = "uniform";
   std::string fvar_boundary = "all";
   bool boundary_given = false, crease_method_given = false, fvar_boundary_given = false;  // else the mesh's tags
+  bool derivatives_given = false;  // --derivatives: only --at writes derivatives
   std::string features;
   double feature_angle = -1;
   int derivatives = 1;
@@ -178,6 +179,9 @@ void run(const EvaluateArgs& a) {
   if (a.level_distance >= 0 && !a.approximate.empty())
     throw Error("--approximate bezier goes with --samples N or --at POINTS.csv, not --level-distance");
   if (a.limit && a.adaptive < 0) throw Error("--limit goes with --adaptive L");
+  if (a.derivatives_given && (a.at.empty() || !a.approximate.empty()))
+    throw Error("--derivatives goes with --at POINTS.csv: only its .csv has derivative columns (with --approximate "
+                "bezier, normals)");
   if (a.tolerance != 0 && a.adaptive < 0) throw Error("--tolerance goes with --adaptive L");
   if (!a.approximate.empty() && a.adaptive >= 0)
     throw Error("--approximate bezier goes with --samples N or --at POINTS.csv, not --adaptive");
@@ -260,7 +264,8 @@ void add_evaluate_command(CLI::App& app) {
                   "Feature sidecar (JSON): creases and corners, as subdiv refine --features")
       ->check(CLI::ExistingFile);
   cmd->add_option("--feature-angle", args->feature_angle,
-                  "Make every edge whose faces' normals differ by more than DEG degrees an infinitely sharp crease");
+                  "Make every edge whose faces' normals differ by more than DEG degrees an infinitely sharp crease")
+      ->check(CLI::Range(0.0, 180.0));  // as refine's: a negative angle is no angle, not "off"
   add_fvar_boundary_option(cmd, args->fvar_boundary,
                            "Face-varying data (OBJ vt: UVs with seams), evaluated at the same points (columns NAME_0, "
                            "NAME_1, ... after the others)");
@@ -306,6 +311,7 @@ void add_evaluate_command(CLI::App& app) {
     args->boundary_given = cmd->count("--boundary") > 0;
     args->crease_method_given = cmd->count("--crease-method") > 0;
     args->fvar_boundary_given = cmd->count("--fvar-boundary") > 0;
+    args->derivatives_given = cmd->count("--derivatives") > 0;
     run(*args);
   });
 }

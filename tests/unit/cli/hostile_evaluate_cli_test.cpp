@@ -119,6 +119,30 @@ TEST_CASE("evaluate: an output that is a FIFO, a link to a device or a directory
   CHECK(fs::is_empty(dir / "folder.csv"));
 }
 
+TEST_CASE("evaluate: --feature-angle -5 and --derivatives without --at are refused, not ignored") {
+  const auto dir = fresh_dir("hostile-evaluate-options");
+  std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n";
+  const std::string at = " --at " + (dir / "points.csv").string();
+  struct Bad {
+    std::string args;
+    fs::path out;
+    const char* message;
+  };
+  // --feature-angle -5 was taken as "no feature angle" (the library's < 0); refine refuses it.
+  for (const Bad& b : {Bad{at + " --feature-angle -5", dir / "a.csv", "--feature-angle: Value -5 not in range"},
+                       Bad{" --samples 2 --derivatives 2", dir / "b.vtp", "--derivatives goes with --at POINTS.csv"},
+                       Bad{" --adaptive 1 --derivatives 0", dir / "c.vtp", "--derivatives goes with --at POINTS.csv"},
+                       Bad{at + " --approximate bezier --derivatives 2", dir / "d.csv",
+                           "--derivatives goes with --at POINTS.csv"}}) {
+    CAPTURE(b.args);
+    const CliResult r = run_bounded("evaluate " + kCube + b.args + " -o " + b.out.string());
+    CHECK(r.exit_code != 0);
+    CHECK_MESSAGE(contains(r.output, b.message), r.output);
+    CHECK_FALSE(fs::exists(b.out));
+  }
+  CHECK(run_bounded("evaluate " + kCube + at + " --derivatives 0 -o " + (dir / "ok.csv").string()).exit_code == 0);
+}
+
 TEST_CASE("a --param given twice is refused, not decided by its order") {
   const auto dir = fresh_dir("hostile-param-twice");
   for (const char* command : {"refine ", "evaluate "}) {
