@@ -143,6 +143,22 @@ TEST_CASE("evaluate: --feature-angle -5 and --derivatives without --at are refus
   CHECK(run_bounded("evaluate " + kCube + at + " --derivatives 0 -o " + (dir / "ok.csv").string()).exit_code == 0);
 }
 
+TEST_CASE("evaluate: a sequence whose last scheme cannot take the faces its head makes is refused as refine refuses it") {
+  // Loop after Catmull-Clark's quads failed at the first point, as "face 0 at (u, v) = (1, 1):
+  // the scheme refines triangles", naming neither the scheme nor the fix.
+  const auto dir = fresh_dir("hostile-evaluate-sequence");
+  std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n";
+  for (const std::string& how : {" --at " + (dir / "points.csv").string() + " -o " + (dir / "out.csv").string(),
+                                 " --samples 2 -o " + (dir / "out.vtp").string()}) {
+    CAPTURE(how);
+    const CliResult r = run_bounded("evaluate " + kCube + " -s catmull-clark:1,loop" + how);
+    CHECK(r.exit_code == 1);
+    CHECK_MESSAGE(contains(r.output, "scheme 'loop' needs triangles, but face 0 of the mesh has 4 vertices"), r.output);
+  }
+  CHECK_FALSE(fs::exists(dir / "out.csv"));
+  CHECK_FALSE(fs::exists(dir / "out.vtp"));
+}
+
 TEST_CASE("a --param given twice is refused, not decided by its order") {
   const auto dir = fresh_dir("hostile-param-twice");
   for (const char* command : {"refine ", "evaluate "}) {
