@@ -289,6 +289,11 @@ EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& p, std::span<con
     if (channels < 1 || values.size() != size_t(p.request_vertex_count) * size_t(channels))
       throw Error(fmt::format("{} values for {} vertices of {} column(s); give one row per vertex of the mesh",
                               values.size(), p.request_vertex_count, channels));
+    // As the mesh's own positions are checked when read: NaN would come out as a limit point.
+    for (size_t i = 0; i < values.size(); ++i)
+      if (!std::isfinite(values[i]))
+        throw Error(fmt::format("vertex {} has a non-finite value ({}) in column {}; give finite values",
+                                i / size_t(channels), values[i], i % size_t(channels)));
     own.resize(p.request_vertex.size() * size_t(channels));
     for (size_t v = 0; v < p.request_vertex.size(); ++v)
       for (int c = 0; c < channels; ++c)

@@ -82,7 +82,8 @@ struct EvaluatedPoints {
 // Evaluates the mesh's positions, or `values` (`channels` per vertex of the request's mesh)
 // when given, at (faces[i], uv[2 i], uv[2 i + 1]). With rational weights the positions are
 // those of the rational surface (the homogeneous limit projected, derivatives by the
-// quotient rule); `values` are evaluated as given. Every point is checked first: a bad one
+// quotient rule); `values` are evaluated as given (a non-finite one is refused with its
+// vertex and column). Every point is checked first: a bad one
 // is refused as "point i (face f, u, v): why" (i from 0), before anything is evaluated.
 // Runs in parallel over the points (TBB, within the caller's thread limit).
 EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& prepared, std::span<const Index> faces,

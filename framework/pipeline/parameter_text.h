@@ -10,7 +10,8 @@
 namespace subdiv {
 
 // Each "name=value" as an override; throws subdiv::Error "<option> '<text>' must be written
-// name=value" for one that is not, `option` spelled as the caller's user knows it.
+// name=value" for one that is not, or for a name given twice, `option` spelled as the
+// caller's user knows it.
 ParameterOverrides parse_parameter_assignments(const std::vector<std::string>& assignments,
                                                std::string_view option = "parameter");
 

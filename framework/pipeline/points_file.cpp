@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "framework/util/error.h"
+#include "framework/util/input_file.h"
 #include "framework/util/quoted_text.h"
 
 namespace subdiv {
@@ -20,7 +21,9 @@ std::string_view trimmed(std::string_view s) {
 // Empty when `text` is a number of type T, else why not, for the message ("is not `kind`").
 template <class T>
 std::string parse_field(std::string_view text, T& out, std::string_view kind) {
-  const std::string_view t = trimmed(text);
+  std::string_view t = trimmed(text);
+  // from_chars takes no '+', which spreadsheets may write: "+1" is a whole number.
+  if (t.size() > 1 && t[0] == '+' && t[1] != '-' && t[1] != '+') t.remove_prefix(1);
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
   if (ec == std::errc::result_out_of_range) return "is out of range";
   if (ec != std::errc() || end != t.data() + t.size() || t.empty()) return fmt::format("is not {}", kind);
@@ -50,6 +53,11 @@ bool is_header(std::string_view line) {
 }
 
 void check_header(std::string_view line, const std::string& file) {
+  // Classic Mac OS ("CSV (Macintosh)") ends lines in CR alone: the whole file is one line.
+  if (trimmed(line).find('\r') != std::string_view::npos && !is_header(line))
+    throw Error(fmt::format("{} line 1: the lines end in a carriage return alone (CR, old Mac text); save the file "
+                            "with LF or CRLF line endings",
+                            file));
   if (!is_header(line))
     throw Error(fmt::format("{} line 1: the header is {}; it must be 'face,u,v'", file, subdiv::quoted(trimmed(line))));
 }
@@ -91,6 +99,9 @@ SurfacePoints parse_points(std::string_view text, const std::string& file, const
 
 // Line by line, so that a large file is never held whole.
 SurfacePoints read_points_file(const std::string& file, const PointCheck& check) {
+  // A FIFO would block, /dev/zero would fill memory with one endless line, and a directory
+  // would read as an empty file: each is named for what it is first.
+  check_input_file(file, "points (.csv)");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw Error(fmt::format("cannot read {}: no such file or it is not readable", subdiv::quoted(file)));
   std::string line;

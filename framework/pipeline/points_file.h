@@ -26,7 +26,8 @@ using PointCheck = std::function<std::string(Index face, double u, double v)>;
 // number, a point `check` refuses, or no point at all.
 SurfacePoints parse_points(std::string_view text, const std::string& file, const PointCheck& check);
 
-// The same, read line by line from `file`; refused naming the file when it cannot be read.
+// The same, read line by line from `file`; refused naming the file when it cannot be read
+// or is no regular file (check_input_file: a FIFO, a device, a directory).
 SurfacePoints read_points_file(const std::string& file, const PointCheck& check);
 
 }  // namespace subdiv

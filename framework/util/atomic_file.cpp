@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "framework/util/error.h"
+#include "framework/util/input_file.h"
 #include "framework/util/quoted_text.h"
 
 namespace subdiv {
@@ -80,6 +81,23 @@ void require_name_fits(const fs::path& target) {
                             subdiv::quoted(target.string()), length, limit));
 }
 
+// Renaming the finished temporary would replace whatever the target is: as root, -o /dev/null
+// or /dev/stdout (a link to a pipe) would turn the device or link into a plain file, and a
+// FIFO a reader waits on would be swapped for a file it never sees. Only a regular file (or
+// a link to one) is replaced; anything else is refused before a byte is written.
+void require_regular_or_absent(const fs::path& target) {
+  std::error_code ec;
+  const fs::file_type type = fs::status(target, ec).type();  // follows links
+  // Absent, regular, or not statable (the temporary's creation then says why).
+  if (ec || type == fs::file_type::regular) return;
+  if (type == fs::file_type::directory)
+    throw Error(fmt::format("cannot write {}: it is a directory; name a file, in it or beside it",
+                            subdiv::quoted(target.string())));
+  throw Error(fmt::format("cannot write {}: it is {}, which writing would replace by a plain file; name a regular "
+                          "file (SubdivKit writes files, not streams)",
+                          subdiv::quoted(target.string()), file_type_name(type)));
+}
+
 void rename_into_place(const fs::path& tmp, const fs::path& target) {
   std::error_code ec;
   fs::rename(tmp, target, ec);
@@ -122,6 +140,7 @@ StagedFiles::~StagedFiles() { discard(); }
 fs::path StagedFiles::stage(const fs::path& target) {
   require_directory(target);
   require_name_fits(target);
+  require_regular_or_absent(target);
   remove_stale_temporaries(target);
   const fs::path tmp = temporary_name(target);
   const int fd = create_locked(tmp, target);

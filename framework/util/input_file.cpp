@@ -13,19 +13,16 @@
 namespace subdiv {
 namespace fs = std::filesystem;
 
-namespace {
-
-const char* kind_of(fs::file_type type) {
+const char* file_type_name(fs::file_type type) {
   switch (type) {
     case fs::file_type::fifo: return "a FIFO (named pipe)";
     case fs::file_type::character: return "a character device";
     case fs::file_type::block: return "a block device";
     case fs::file_type::socket: return "a socket";
+    case fs::file_type::directory: return "a directory";
     default: return "not a regular file";
   }
 }
-
-}  // namespace
 
 void check_input_file(const fs::path& file, std::string_view what) {
   std::error_code ec;
@@ -38,7 +35,7 @@ void check_input_file(const fs::path& file, std::string_view what) {
     throw Error(fmt::format("cannot open {}: it is a directory, not a {} file", subdiv::quoted(file.string()), what));
   if (status.type() != fs::file_type::regular)
     throw Error(fmt::format("cannot open {}: it is {}; give the path of a regular {} file", subdiv::quoted(file.string()),
-                            kind_of(status.type()), what));
+                            file_type_name(status.type()), what));
   const auto size = fs::file_size(file, ec);
   if (ec) throw Error(fmt::format("cannot open {}: {}", subdiv::quoted(file.string()), ec.message()));
   // Readers hold at least the whole text; a file larger than the memory left cannot be read.

@@ -13,6 +13,10 @@ namespace subdiv {
 // expected ("mesh", "scheme", "feature") for the fix.
 void check_input_file(const std::filesystem::path& file, std::string_view what);
 
+// "a FIFO (named pipe)", "a character device", "a directory", ...: what a path that is not a
+// regular file is, for messages (the output writers refuse such targets too).
+const char* file_type_name(std::filesystem::file_type type);
+
 // The whole file, after check_input_file; throws subdiv::Error on read errors. A file of
 // more than `max_bytes` is refused with its size before a byte is read (scheme and feature
 // files are small; a 1 GB sparse file was read whole before the first check).

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <fmt/format.h>
+#include <map>
+#include <vector>
 
 #include "framework/util/error.h"
 #include "framework/util/short_text.h"
@@ -36,22 +38,46 @@ bool is_number_char(char c) {
 }  // namespace
 
 void check_json_text(std::string_view text, const std::string& label) {
-  int depth = 0;
+  // nlohmann stops at a NUL byte and takes what came before as the whole file.
+  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos)
+    fail(text, nul, label, "a NUL byte; JSON text holds none, so the file is damaged or not text");
+  // Per open object or array: the keys seen so far (an object's) and where each began.
+  // nlohmann keeps the last of two equal keys, so the first one would be ignored silently.
+  struct Open {
+    bool object = false, expect_key = false;
+    std::map<std::string_view, std::size_t> keys;
+  };
+  std::vector<Open> open;
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (c == '"') {  // skip the string, escapes included
+      const std::size_t start = i;
       for (++i; i < text.size() && text[i] != '"'; ++i)
         if (text[i] == '\\') ++i;
+      if (!open.empty() && open.back().object && open.back().expect_key) {
+        open.back().expect_key = false;
+        const std::string_view key = text.substr(start + 1, std::min(i, text.size()) - start - 1);
+        if (const auto [first, fresh] = open.back().keys.emplace(key, start); !fresh) {
+          const Place p = place_of(text, first->second);
+          fail(text, start, label,
+               fmt::format("the key \"{}\" appears twice in one object (first at line {}, column {}); a JSON "
+                           "reader keeps only one of them: remove the other",
+                           shortened(std::string(key), 40), p.line, p.column));
+        }
+      }
       continue;
     }
     if (c == '[' || c == '{') {
-      if (++depth > kMaxJsonDepth)
+      if (open.size() >= std::size_t(kMaxJsonDepth))
         fail(text, i, label,
              fmt::format("JSON nested deeper than {} levels; no scheme or feature file needs that many, so the "
                          "file is damaged or not meant for SubdivKit",
                          kMaxJsonDepth));
+      open.push_back({c == '{', c == '{', {}});
     } else if (c == ']' || c == '}') {
-      --depth;  // unbalanced brackets are the parser's to report
+      if (!open.empty()) open.pop_back();  // unbalanced brackets are the parser's to report
+    } else if (c == ',') {
+      if (!open.empty() && open.back().object) open.back().expect_key = true;
     } else if (c == '-' || (c >= '0' && c <= '9')) {
       std::size_t end = i;
       while (end < text.size() && is_number_char(text[end])) ++end;

@@ -14,10 +14,13 @@ def check_mesh(mesh, what):
 
 
 def check_whole(value, name, hint):
-    """value as an int if it is a whole number (Python's or numpy's, not bool), else an
-    Error saying `name=value: hint`."""
+    """value as an int if it is a whole number (Python's or numpy's, not bool) that fits a C
+    int, else an Error saying `name=value: hint`."""
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
         raise Error(f"{name}={value!r}: {hint}")
+    # The library takes a C int: beyond it pybind11 would raise a TypeError listing signatures.
+    if not -2**31 <= int(value) < 2**31:
+        raise Error(f"{name}={value!r}: beyond a 32-bit int; {hint}")
     return int(value)
 
 

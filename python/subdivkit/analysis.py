@@ -97,7 +97,7 @@ def _valence_list(valences):
         values = None
     if values is None or (values.size and values.dtype.kind not in "iu"):
         raise Error(f"valences={valences!r}: give whole numbers, e.g. range(3, 13)")
-    return [int(n) for n in values]
+    return [check_whole(int(n), "valences", "give whole numbers, e.g. range(3, 13)") for n in values]
 
 
 def analyze(scheme, valences=range(3, 13), *, boundary=False, crease=False, boundary_interpolation="edges-and-corners",

@@ -151,14 +151,18 @@ class LimitSurface:
         threads : worker threads, 0 for all cores.
 
         Raises subdivkit.Error naming the first bad point ("point i (face f, u, v): why") —
-        a face that does not exist, a hole, (u, v) outside the face's domain — before
-        anything is evaluated.
+        a face that does not exist, a hole, (u, v) outside the face's domain — or the first
+        non-finite value of ``points`` ("vertex i has a non-finite value"), before anything is
+        evaluated.
         """
         order = _check_order(derivatives)
         f, p = _points(faces, uv)
         values, channels = None, 3
         if points is not None:
-            values = np.ascontiguousarray(np.asarray(points, dtype=np.float64))
+            given = np.asarray(points)
+            if given.size and given.dtype.kind not in "fiu":  # as uv: strings, objects, complex
+                raise Error(f"points: give numbers, got an array of dtype {given.dtype}")
+            values = np.ascontiguousarray(given, dtype=np.float64)
             if values.ndim == 1:
                 values = values.reshape(-1, 1)
             if values.ndim != 2 or values.shape[0] != self.n_points:

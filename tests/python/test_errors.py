@@ -154,6 +154,22 @@ def test_counts_must_be_whole_numbers_not_rounded(call, name):
         call(sk.read_mesh(MESHES / "cube.obj"))
 
 
+@pytest.mark.parametrize("call, name", [
+    (lambda cube: sk.refine(cube, "catmull-clark", 10**10), "levels=10000000000"),
+    (lambda cube: sk.refine(cube, "catmull-clark", 1, threads=2**31), "threads=2147483648"),
+    (lambda cube: sk.LimitSurface(cube, "catmull-clark").evaluate([0], [[0.5, 0.5]], threads=10**12),
+     "threads=1000000000000"),
+    (lambda cube: sk.LimitSurface(cube, "catmull-clark").tessellate(-2**40), "samples=-1099511627776"),
+    (lambda cube: sk.refine_adaptive(cube, "catmull-clark", 1, threads=2**40), "threads=1099511627776"),
+    (lambda cube: sk.stencils(cube, "catmull-clark", 2**40), "levels=1099511627776"),
+    (lambda cube: sk.analyze("loop", [4, 10**12]), "valences=1000000000000"),
+])
+def test_counts_beyond_a_c_int_are_refused_by_name(call, name):
+    # pybind11 raised a TypeError listing the C++ signatures for a Python int beyond 32 bits.
+    with pytest.raises(sk.Error, match=re.escape(name) + ": beyond a 32-bit int; give"):
+        call(sk.read_mesh(MESHES / "cube.obj"))
+
+
 def test_missing_and_foreign_plugins_are_refused():
     with pytest.raises(sk.Error, match="refused"):
         sk.load_plugin("/no/such/plugin.so")

@@ -119,6 +119,14 @@ def test_bad_points_schemes_and_arguments_are_refused():
         S.evaluate([0, 1], [[0.5, 0.5]])
     with pytest.raises(sk.Error, match="one row per control point"):
         S.evaluate([0], [[0.5, 0.5]], points=np.zeros((3, 3)))
+    # NaN control values were evaluated into NaN points without a word (Evaluator refused them).
+    bad = np.zeros((8, 2))
+    bad[5, 1] = np.nan
+    with pytest.raises(sk.Error, match=r"vertex 5 has a non-finite value \(nan\) in column 1"):
+        S.evaluate([0], [[0.5, 0.5]], points=bad)
+    with pytest.raises(sk.Error, match="points: give numbers, got an array of dtype <U3"):
+        S.evaluate([0], [[0.5, 0.5]], points="abc")  # numpy's ValueError before
+    assert np.isfinite(S.evaluate([0], [[0.5, 0.5]]).points).all()  # the surface still works
     octahedron = sk.read_mesh(str(MESHES / "octahedron.obj"))
     with pytest.raises(sk.Error, match="mid-edge split and the mesh has a boundary"):
         sk.LimitSurface(sk.read_mesh(str(MESHES / "plane-with-hole.obj")), "mid-edge")

@@ -3,7 +3,6 @@
 // valences; curve schemes: the symbol analysis. Reports as a table, JSON and SVG.
 #include <filesystem>
 #include <fmt/format.h>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
@@ -18,6 +17,7 @@
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/atomic_file.h"
+#include "framework/util/checked_file_stream.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
 #include "safe_print.h"
@@ -73,9 +73,9 @@ std::vector<int> parse_valences(const std::string& text) {
 
 void write_text(const std::filesystem::path& file, const std::string& text) {
   write_file_atomically(file, [&](const std::filesystem::path& tmp) {
-    std::ofstream out(tmp, std::ios::binary);
+    CheckedFileStream out(tmp, file);  // a full disk is an error with the fix, never a short file
     out << text;
-    if (!out) throw Error(fmt::format("cannot write {}", subdiv::quoted(file.string())));
+    out.close();
   });
 }
 

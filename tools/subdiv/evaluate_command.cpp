@@ -3,8 +3,8 @@
 // or the limit surface sampled N x N per face as a crack-free mesh (framework/limit,
 // docs/limit.md).
 #include <cmath>
+#include <filesystem>
 #include <fmt/format.h>
-#include <fstream>
 #include <tbb/global_control.h>
 
 #include "commands.h"
@@ -24,11 +24,13 @@
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/atomic_file.h"
+#include "framework/util/checked_file_stream.h"
 #include "framework/util/error.h"
 #include "framework/util/parallel_for_all.h"
 #include "framework/util/quoted_text.h"
 #include "progress.h"
 #include "adaptive_refine_option.h"
+#include "level_output.h"
 #include "safe_print.h"
 
 namespace subdiv::cli {
@@ -40,6 +42,7 @@ struct EvaluateArgs {
   std::string boundary = "edges-and-corners", crease_method = "uniform";
   std::string fvar_boundary = "all";
   bool boundary_given = false, crease_method_given = false, fvar_boundary_given = false;  // else the mesh's tags
+  bool derivatives_given = false;  // --derivatives: only --at writes derivatives
   std::string features;
   double feature_angle = -1;
   int derivatives = 1;
@@ -50,13 +53,24 @@ struct EvaluateArgs {
   bool limit = false;
   std::string approximate, bezier_net;  // --approximate bezier [--bezier-net OUT.vtu]
   int threads = 0;
+  bool force = false;  // --force: -o may be the input mesh or the --at points file
 };
+
+// -o naming the --at file would replace the points with their evaluation; as refine's
+// check_output_not_input does for the mesh, refused unless --force.
+void check_output_not_points(const EvaluateArgs& a) {
+  std::error_code ec;
+  if (a.at.empty() || a.force || !std::filesystem::equivalent(a.at, a.output, ec) || ec) return;
+  throw Error(fmt::format("-o {} is the points file --at {}: writing would lose the points; name another output, "
+                          "or add --force to overwrite it",
+                          subdiv::quoted(a.output), subdiv::quoted(a.at)));
+}
 
 // The positions (and derivatives), then each face-varying channel's values, per point.
 void write_csv(const std::filesystem::path& out, const SurfacePoints& queries, const EvaluatedPoints& points,
                int derivatives, const std::vector<std::string>& fvar_names, const std::vector<EvaluatedPoints>& fvar) {
   write_file_atomically(out, [&](const std::filesystem::path& tmp) {
-    std::ofstream f(tmp);
+    CheckedFileStream f(tmp, out);  // a full disk is an error with the fix, never a short file
     f << "face,u,v,x,y,z";
     if (derivatives > 0) f << ",du_x,du_y,du_z,dv_x,dv_y,dv_z";
     if (derivatives > 1) f << ",duu_x,duu_y,duu_z,duv_x,duv_y,duv_z,dvv_x,dvv_y,dvv_z";
@@ -76,7 +90,7 @@ void write_csv(const std::filesystem::path& out, const SurfacePoints& queries, c
         for (size_t c = 0; c < size_t(e.channels); ++c) f << ',' << number(e.position[i * size_t(e.channels) + c]);
       f << '\n';
     }
-    if (!f) throw Error(fmt::format("cannot write {}", subdiv::quoted(out.string())));
+    f.close();
   });
 }
 
@@ -111,7 +125,7 @@ EvaluateRequest evaluate_request(const EvaluateArgs& a, Progress& progress) {
 // written as --samples or --at would write the exact limit, with their distance to it.
 void write_approximation_csv(const std::filesystem::path& out, const SurfacePoints& q, const ApproximatedPoints& p) {
   write_file_atomically(out, [&](const std::filesystem::path& tmp) {
-    std::ofstream f(tmp);
+    CheckedFileStream f(tmp, out);
     f << "face,u,v,x,y,z,nx,ny,nz,limit_distance\n";
     for (size_t i = 0; i < q.size(); ++i) {
       f << fmt::format("{},{},{}", q.faces[i], q.uv[2 * i], q.uv[2 * i + 1]);
@@ -119,7 +133,7 @@ void write_approximation_csv(const std::filesystem::path& out, const SurfacePoin
         for (size_t c = 0; c < 3; ++c) f << ',' << fmt::format("{}", (*d)[3 * i + c]);
       f << ',' << fmt::format("{}", p.distances.per_point[i]) << '\n';
     }
-    if (!f) throw Error(fmt::format("cannot write {}", subdiv::quoted(out.string())));
+    f.close();
   });
 }
 
@@ -150,9 +164,9 @@ void run_approximation(const EvaluateArgs& a, Progress& progress) {
   }
   if (!a.bezier_net.empty())
     write_file_atomically(a.bezier_net, [&](const std::filesystem::path& tmp) {
-      std::ofstream f(tmp);
+      CheckedFileStream f(tmp, a.bezier_net);
       f << bezier_control_net_vtu(patches, distances.per_face);
-      if (!f) throw Error(fmt::format("cannot write {}", subdiv::quoted(a.bezier_net)));
+      f.close();
     });
 }
 
@@ -165,10 +179,15 @@ void run(const EvaluateArgs& a) {
   if (a.level_distance >= 0 && !a.approximate.empty())
     throw Error("--approximate bezier goes with --samples N or --at POINTS.csv, not --level-distance");
   if (a.limit && a.adaptive < 0) throw Error("--limit goes with --adaptive L");
+  if (a.derivatives_given && (a.at.empty() || !a.approximate.empty()))
+    throw Error("--derivatives goes with --at POINTS.csv: only its .csv has derivative columns (with --approximate "
+                "bezier, normals)");
   if (a.tolerance != 0 && a.adaptive < 0) throw Error("--tolerance goes with --adaptive L");
   if (!a.approximate.empty() && a.adaptive >= 0)
     throw Error("--approximate bezier goes with --samples N or --at POINTS.csv, not --adaptive");
   if (a.approximate.empty() && !a.bezier_net.empty()) throw Error("--bezier-net goes with --approximate bezier");
+  check_output_not_input(a.mesh, a.output, a.force);
+  check_output_not_points(a);
   const std::string ext = lowercase_extension(a.output);
   if (!a.at.empty() && ext != ".csv")
     throw Error(fmt::format("-o {}: --at writes .csv (face,u,v,x,y,z[,du_*,dv_*[,duu_*,duv_*,dvv_*]])", subdiv::quoted(a.output)));
@@ -245,7 +264,8 @@ void add_evaluate_command(CLI::App& app) {
                   "Feature sidecar (JSON): creases and corners, as subdiv refine --features")
       ->check(CLI::ExistingFile);
   cmd->add_option("--feature-angle", args->feature_angle,
-                  "Make every edge whose faces' normals differ by more than DEG degrees an infinitely sharp crease");
+                  "Make every edge whose faces' normals differ by more than DEG degrees an infinitely sharp crease")
+      ->check(CLI::Range(0.0, 180.0));  // as refine's: a negative angle is no angle, not "off"
   add_fvar_boundary_option(cmd, args->fvar_boundary,
                            "Face-varying data (OBJ vt: UVs with seams), evaluated at the same points (columns NAME_0, "
                            "NAME_1, ... after the others)");
@@ -282,6 +302,7 @@ void add_evaluate_command(CLI::App& app) {
                   "Output: with --at a .csv (face,u,v,x,y,z then du_x..dv_z, duu_x..dvv_z); with --samples or "
                   "--adaptive a mesh (.vtp, .obj, ...)")
       ->required();
+  cmd->add_flag("--force", args->force, "Write -o even where it is the input mesh or the --at points file, which is then lost");
   cmd->add_option("-j,--threads", args->threads, "Worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
   cmd->footer("Parameters: quads (0,0) (1,0) (1,1) (0,1); triangles (0,0) (1,0) (0,1); other faces of quad schemes\n"
               "Bfr's QUAD_SUBFACES tiles (also for dual and mid-edge schemes); sqrt3: the triangle's, two steps a triadic\n"
@@ -290,6 +311,7 @@ void add_evaluate_command(CLI::App& app) {
     args->boundary_given = cmd->count("--boundary") > 0;
     args->crease_method_given = cmd->count("--crease-method") > 0;
     args->fvar_boundary_given = cmd->count("--fvar-boundary") > 0;
+    args->derivatives_given = cmd->count("--derivatives") > 0;
     run(*args);
   });
 }

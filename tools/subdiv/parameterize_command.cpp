@@ -12,6 +12,7 @@
 #include "framework/parameterize/parameterize_mesh.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
+#include "level_output.h"
 #include "safe_print.h"
 
 namespace subdiv::cli {
@@ -21,6 +22,7 @@ struct ParameterizeArgs {
   std::string mesh, output, boundary = "circle", weights = "uniform";
   std::vector<Index> corners;
   bool quiet = false;
+  bool force = false;  // --force: -o may be the input mesh
 };
 
 void check_output(const std::string& out) {
@@ -33,6 +35,7 @@ void check_output(const std::string& out) {
 
 void run(const ParameterizeArgs& a) {
   check_output(a.output);
+  check_output_not_input(a.mesh, a.output, a.force);
   TutteOptions o;
   o.boundary = boundary_shape_from_name(a.boundary, "--boundary-shape");
   o.weights = tutte_weights_from_name(a.weights, "--weights");
@@ -78,6 +81,7 @@ void add_parameterize_command(CLI::App& app) {
                   "(Floater 2003: keeps shapes closer); both one-to-one for a convex boundary")
       ->check(CLI::IsMember({"uniform", "mean-value"}))
       ->capture_default_str();
+  cmd->add_flag("--force", args->force, "Write -o even where it is the input mesh, which is then lost");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   cmd->footer("Example: subdiv parameterize face.obj --weights mean-value -o face-uv.obj");
   cmd->callback([args] { run(*args); });

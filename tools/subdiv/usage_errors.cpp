@@ -62,6 +62,10 @@ std::string reworded(const CLI::ParseError& e) {
       what.size() > 8 && what.compare(what.size() - 8, 8, " missing") == 0)
     return fmt::format("{} needs a value ({})", what.substr(0, colon),
                        what.substr(colon + 2, what.size() - colon - 2 - 8));
+  // CLI::NonNegativeNumber's range ends at the largest double, which CLI11 prints in full
+  // (309 digits): "--threads: Value -1 not in range 0.000000 to 1797...".
+  if (const size_t at = what.find(" not in range 0.000000 to 17976931348623157"); at != std::string::npos)
+    return what.substr(0, at) + " is negative; give 0 or more";
   return what;
 }
 

@@ -34,6 +34,9 @@ TEST_CASE("usage errors exit 2 in the tool's voice, with a suggestion where a wo
       {"validate loop --max-valence 1000000", "--max-valence: Value 1000000 not in range"},
       {"refine " + cube + out + " -l", "--levels needs a value"},
       {"refine " + cube + out + " -l 31", "--levels"},
+      // CLI11 printed the largest double in full as the upper end of "0 or more".
+      {"refine " + cube + out + " -j -1", "--threads: Value -1 is negative; give 0 or more\n"},
+      {"analyze loop --level -2", "--level: Value -2 is negative; give 0 or more\n"},
   };
   for (const Usage& u : cases) {
     CAPTURE(u.args);

@@ -294,6 +294,11 @@ TEST_CASE("feature files: deep nesting and numbers beyond double's range name th
   write_text(dir / "big.json", "{\"creases\": [\n  {\"edge\": [0, 1], \"sharpness\": 1e400}]}");
   CHECK(contains(error_of([&] { read_feature_file(dir / "big.json"); }),
                  (dir / "big.json").string() + ":2:33: the number 1e400 is out of range"));
+  // nlohmann keeps the last of two equal keys: the crease on edge 0-1 became one on 1-2 silently.
+  write_text(dir / "twice.json", "{\"creases\": [{\"edge\": [0, 1],\n  \"edge\": [1, 2]}]}");
+  CHECK(contains(error_of([&] { read_feature_file(dir / "twice.json"); }),
+                 (dir / "twice.json").string() + ":2:3: the key \"edge\" appears twice in one object (first at line 1, "
+                                                  "column 15)"));
   write_text(dir / "deep-value.json", "{\"creases\": " + std::string(90, '[') + std::string(90, ']') + "}");
   const std::string shown = error_of([&] { read_feature_file(dir / "deep-value.json"); });
   CHECK(shown.size() < 400);  // the value is quoted shortened, not dumped whole

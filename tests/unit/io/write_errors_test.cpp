@@ -1,4 +1,6 @@
 // Writers refuse bad input before creating anything, and never leave half files.
+#include <sys/stat.h>
+
 #include "framework/io/formats.h"
 #include "framework/io/mesh_read.h"
 #include "framework/io/mesh_write.h"
@@ -29,6 +31,37 @@ TEST_CASE("write_mesh: a file name longer than the file system allows is refused
   const fs::path fits = dir / (std::string(250, 'y') + ".obj");
   write_mesh(fits, cube_mesh());
   CHECK(fs::exists(fits));
+}
+
+TEST_CASE("write_mesh: a target that is a FIFO, a link to a device or a directory is refused and stays as it was") {
+  // Renaming the finished temporary would replace it: as root, -o /dev/null turned the
+  // device into a plain file. The link to /dev/null shows it without touching /dev.
+  TempDir dir;
+  REQUIRE(::mkfifo((dir / "pipe.obj").c_str(), 0600) == 0);
+  fs::create_symlink("/dev/null", dir / "null.vtp");
+  fs::create_directory(dir / "folder.obj");
+  struct Bad {
+    const char* name;
+    const char* message;
+  };
+  for (const Bad& b : {Bad{"pipe.obj", "is a FIFO (named pipe), which writing would replace by a plain file"},
+                       Bad{"null.vtp", "is a character device, which writing would replace by a plain file"},
+                       Bad{"folder.obj", "is a directory; name a file, in it or beside it"}}) {
+    CAPTURE(b.name);
+    CHECK(contains(error_of([&] { write_mesh(dir / b.name, cube_mesh()); }), b.message));
+  }
+  CHECK(fs::is_fifo(dir / "pipe.obj"));
+  CHECK(fs::is_symlink(dir / "null.vtp"));
+  CHECK(fs::is_character_file(dir / "null.vtp"));
+  CHECK(fs::is_directory(dir / "folder.obj"));
+  // No temporary left (entries() would resolve the link to /dev/null).
+  CHECK(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator()) == 3);
+  CHECK(fs::is_empty(dir / "folder.obj"));
+  // A link to a regular file is written as before (the link replaced by the new file).
+  write_text(dir / "real.obj", "old");
+  fs::create_symlink(dir / "real.obj", dir / "link.obj");
+  write_mesh(dir / "link.obj", cube_mesh());
+  CHECK(fs::is_regular_file(dir / "link.obj"));
 }
 
 TEST_CASE("write_mesh: invalid meshes are refused before any file exists") {

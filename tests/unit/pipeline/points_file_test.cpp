@@ -3,7 +3,9 @@
 // the row (counting points), and CRLF files read as LF files.
 #include <doctest/doctest.h>
 
+#include <filesystem>
 #include <string>
+#include <sys/stat.h>
 
 #include "framework/io/mesh_level.h"
 #include "framework/limit/limit_surface.h"
@@ -59,9 +61,41 @@ TEST_CASE("a spreadsheet's header: a byte-order mark and spaces around the names
                        doctest::Contains("must be 'face,u,v'"), Error);
 }
 
+TEST_CASE("a leading '+' is a sign, and a file of CR line endings is named as such") {
+  const SurfacePoints p = parse_points("face,u,v\n+3,+0.25,0.5\n", "pts.csv", unit_square_check);
+  CHECK(p.faces == std::vector<Index>{3});
+  CHECK(p.uv == std::vector<double>{0.25, 0.5});
+  CHECK_THROWS_WITH_AS(parse_points("face,u,v\n+-3,0,0\n", "pts.csv", unit_square_check),
+                       doctest::Contains("face '+-3' is not a whole number"), Error);
+  CHECK_THROWS_WITH_AS(parse_points("face,u,v\r0,0.5,0.5\r", "pts.csv", unit_square_check),
+                       doctest::Contains("pts.csv line 1: the lines end in a carriage return alone"), Error);
+}
+
 TEST_CASE("a missing file is refused with its name") {
   CHECK_THROWS_WITH_AS(read_points_file("/no/such/points.csv", unit_square_check),
-                       doctest::Contains("cannot read '/no/such/points.csv'"), Error);
+                       doctest::Contains("cannot open '/no/such/points.csv': no such file"), Error);
+}
+
+TEST_CASE("a FIFO, a link to /dev/zero and a directory are refused for what they are, without reading") {
+  // A FIFO blocked until killed; /dev/zero was read as one endless line until memory ran
+  // out ("empty file"); a directory read as an empty file.
+  const auto dir = std::filesystem::temp_directory_path() / "subdivkit-points-file-kinds";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "folder.csv");
+  REQUIRE(::mkfifo((dir / "pipe.csv").c_str(), 0600) == 0);
+  std::filesystem::create_symlink("/dev/zero", dir / "zero.csv");
+  struct Bad {
+    const char* name;
+    const char* message;
+  };
+  for (const Bad& b : {Bad{"pipe.csv", "pipe.csv': it is a FIFO (named pipe); give the path of a regular points (.csv) file"},
+                       Bad{"zero.csv", "zero.csv': it is a character device"},
+                       Bad{"folder.csv", "folder.csv': it is a directory, not a points (.csv) file"}}) {
+    CAPTURE(b.name);
+    CHECK_THROWS_WITH_AS(read_points_file((dir / b.name).string(), unit_square_check), doctest::Contains(b.message),
+                         Error);
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("a triangle under a quad scheme refuses a u far beyond its tiles (found by fuzz_points_file)") {

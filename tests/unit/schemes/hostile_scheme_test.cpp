@@ -61,6 +61,29 @@ TEST_CASE("numbers beyond double's range name the file, line and column") {
   CHECK(contains(load_error(negative), negative.string() + ":1:24: the number -2e999 is out of range"));
 }
 
+TEST_CASE("a key given twice in one object, and a NUL byte, are refused at their place") {
+  // nlohmann keeps the last of two equal keys: "split": "quad" then "split": "triangle" was
+  // read as a triangle scheme, and the message spoke of the rules; after a NUL byte the rest
+  // of the file was ignored.
+  const std::string rules = R"("rules": {"face": [{"sum": "vertices", "w": "1/k"}], "edge": [{"sum": "ends", "w": "1/2"}],
+  "vertex": [{"at": "self", "w": "1"}]})";
+  const fs::path twice = write_scheme("twice", R"({"name": "t", "split": "quad", "curve": "two-point",
+  "split": "triangle", )" + rules + "}");
+  CHECK(contains(load_error(twice), twice.string() + ":2:3: the key \"split\" appears twice in one object (first at "
+                                                      "line 1, column 15); a JSON reader keeps only one of them"));
+  // The same key in different objects is no duplicate.
+  CHECK(load_error(write_scheme("nested", R"({"name": "t", "split": "quad", "curve": "two-point",
+  "parameters": {"a": {"default": 1}, "b": {"default": 2}}, )" + rules + "}")) == "<no error>");
+  const fs::path nul = write_scheme("nul", R"({"name": "t", "split": "quad", "curve": "two-point", )" + rules + "}" +
+                                               std::string(1, '\0') + "garbage");
+  const std::string at_nul = load_error(nul);
+  CHECK(contains(at_nul, nul.string() + ":2:"));
+  CHECK(contains(at_nul, ": a NUL byte; JSON text holds none"));
+  const CliResult r = run_subdiv("validate " + twice.string());
+  CHECK(r.exit_code == 1);
+  CHECK(contains(r.output, "appears twice"));
+}
+
 TEST_CASE("definitions that refer to themselves or to each other are reported as a cycle") {
   CHECK(load_error(write_scheme("fine", loop_with_definitions(R"({"c": "3/8", "beta": "c / n"})"))) == "<no error>");
   const fs::path self = write_scheme("self", loop_with_definitions(R"({"beta": "beta + 1"})"));
