@@ -124,6 +124,7 @@ std::unique_ptr<StepPowers> lazy_step_powers(const StepMatrix& step, double fact
 }
 
 void more_powers(StepPowers& p, int count, bool second) {
+  if (!p.next) return;  // every power and form made
   StepPowers::Squares& s = *p.next;
   count = std::min(count, s.capacity);
   while (int(p.forward.size()) < count) {
@@ -139,11 +140,14 @@ void more_powers(StepPowers& p, int count, bool second) {
     p.forward[p.backward2.size() - 1].backward2 = &p.backward2.back();
     s.d2 = (s.d2 * s.d2).eval();
   }
+  // The dense squares (three matrices of the step's size squared) are not needed any more.
+  if (int(p.backward2.size()) == s.capacity) p.next.reset();
 }
 
 std::unique_ptr<StepPowers> step_powers(const StepMatrix& step, double factor, int count, bool second) {
   auto p = lazy_step_powers(step, factor, count);
   more_powers(*p, count, second);
+  p->next.reset();  // all made
   return p;
 }
 

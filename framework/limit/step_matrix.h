@@ -54,13 +54,14 @@ struct StepPowers {
   // Room for every power is reserved when made: an element's address never changes, so
   // the `backward` pointers and descents that hold a power stay valid as more are made.
   std::vector<StepMatrix> forward, backward, backward2;
-  struct Squares;  // the dense powers to square next
+  struct Squares;  // the dense powers to square next; null once all are made
   std::unique_ptr<Squares> next;
   StepPowers();
   ~StepPowers();
 };
 std::unique_ptr<StepPowers> step_powers(const StepMatrix& step, double factor, int count, bool second);
-// The same with room for `count` powers and none made yet; more_powers makes the first
+// The same with room for `count` powers and none made yet (step_powers makes them all at
+// once and keeps no room for more); more_powers makes the first
 // `count` (and with `second` their second-derivative forms) when not made already. A power
 // is the same bits whenever it is made (the same squarings from the same matrix), so a
 // descent of m levels need square only up to the highest binary digit of m: the powers of a
