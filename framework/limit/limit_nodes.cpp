@@ -187,13 +187,13 @@ LimitNode& LimitNodes::expand_locked(int id) {
   return *n;
 }
 
-const LimitNode::Powers& LimitNodes::powers(int id, int which) {
+const LimitNode::Powers& LimitNodes::powers(int id, int which, int count, bool second) {
   std::lock_guard lock(mutex_);
   LimitNode& n = *nodes_[size_t(id)];
   auto& slot = n.powers[size_t(which)];
-  if (slot) return *slot;
   // Binary steps: first-derivative rows scale by 2, second ones by 4 (step_matrix.h).
-  slot = step_powers(n.child_matrix[size_t(which)], 2, kPowers, true);
+  if (!slot) slot = lazy_step_powers(n.child_matrix[size_t(which)], 2, kPowers);
+  more_powers(*slot, count, second);
   return *slot;
 }
 

@@ -81,7 +81,9 @@ public:
   // Skipping m levels then costs one product per binary digit of m, whatever m is (powers
   // by squaring, which unlike an eigen-decomposition needs no diagonalisable matrix:
   // picking matrices have defective zero eigenvalues).
-  const LimitNode::Powers& powers(int id, int which);
+  // `count`: the powers M^(2^j), j < count, the caller reads (made on first use; `second`:
+  // with their second-derivative forms).
+  const LimitNode::Powers& powers(int id, int which, int count, bool second);
   static constexpr int kPowers = 11;  // 2^11 levels: below the smallest double
 
   // The control points' labels when the limit over the node's face is the uniform bicubic

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -180,6 +181,40 @@ struct LimitSurface::Impl {
     const std::array<Index, 16>* grid = nullptr;
     const PolynomialPatch* lattice = nullptr;
   };
+  // A point in a sub-face of an n-gon (a quad split's face of another size) starts with one
+  // step of the engine over the face's cut, after which its face is a child quad with a
+  // node. That step is the same for every point of the face; around a vertex of high
+  // valence the cut holds the whole fan, so it is made once per face, not per point.
+  struct ChildStart {
+    Index level_face = kNone;  // the child face in the refined cut
+    Index face = kNone;        // the child face in its own cut
+    int node = -1;
+    // Rows: the vertices of the child's cut that the node keeps, in the cut's order; columns:
+    // the face's cut. Then the node's labels from those rows.
+    StepMatrix step, renumber;
+    std::string error;  // why the child's cut has no node: thrown for a point that needs it
+  };
+  struct SubFaceStart {
+    std::vector<Index> original;  // the face's cut: vertex -> base vertex (what a point reads)
+    Index face = kNone;           // the face in its cut
+    std::vector<std::vector<ChildFace>> children;  // per sub-face: the face's children in its frame
+    std::vector<ChildStart> starts;                // by level_face, increasing
+    const ChildStart& child(Index level_face) const {
+      const auto at = std::lower_bound(starts.begin(), starts.end(), level_face,
+                                       [](const ChildStart& s, Index f) { return s.level_face < f; });
+      if (at == starts.end() || at->level_face != level_face) throw Error("internal: a sub-face's child has no start");
+      return *at;
+    }
+    size_t bytes() const {
+      size_t b = sizeof(*this) + original.size() * sizeof(Index);
+      for (const auto& c : children)
+        for (const ChildFace& f : c) b += sizeof(f) + f.corners.size() * sizeof(Uv);
+      for (const ChildStart& s : starts)
+        for (const StepMatrix* m : {&s.step, &s.renumber})
+          b += m->offsets.size() * sizeof(Index) + m->columns.size() * (sizeof(Index) + sizeof(double));
+      return b + starts.size() * sizeof(ChildStart);
+    }
+  };
   // The hash reads the size and at most the first kHashed values (where neighbourhoods
   // differ first: the labelling starts at the face); equal hashes are told apart by comparing the keys.
   using Key = std::vector<std::uint32_t>;
@@ -220,6 +255,12 @@ struct LimitSurface::Impl {
     // kept and their faces take the general way, as every face would without keys.
     size_t known_words = 0;
     static constexpr size_t kKnownBudget = size_t(1) << 24;  // 64 MB of keys
+    // The first steps of points in faces with sub-faces (SubFaceStart), per base face, while
+    // their size is within the budget (past it a face's start is made for each point).
+    std::mutex starts_mutex;
+    std::unordered_map<Index, std::shared_ptr<const SubFaceStart>> starts;
+    size_t starts_bytes = 0;
+    static constexpr size_t kStartsBudget = size_t(1) << 27;  // 128 MB
     ~Cache() {
       for (Index f = 0; f < entry_count; ++f) delete entries[size_t(f)].load();
       delete[] slots.load();
@@ -569,7 +610,8 @@ struct LimitSurface::Impl {
   // their values.
   std::vector<Index> reads(Cache& c, const FacePoint& p) const {
     if (p.sub_face < 0) return entry(c, p.face).vertices;
-    return cut(base, {}, 0, p, radius).original;
+    if (!options.shortcuts) return cut(base, {}, 0, p, radius).original;
+    return sub_face_start(c, p.face)->original;
   }
 
   // Runs `f(cache)` until the cache's depth suffices.
@@ -612,16 +654,20 @@ struct LimitSurface::Impl {
   // and applied to its values (and kept in `rows_out` when given).
   LimitSample descend(Cache& c, const FacePoint& p0, const std::vector<double>& first_values, int channels,
                       int derivatives, DerivativeRows* rows_out = nullptr) const {
-    std::deque<StepMatrix> owned;
     std::vector<const StepMatrix*> path;
     int id = -1;
     std::vector<double> values;
     FacePoint p = p0;
+    std::deque<StepMatrix> owned;
+    std::shared_ptr<const SubFaceStart> start;  // holds the first steps of `path`
     if (p0.sub_face < 0) {
       id = entry(c, p0.face).node;
       values = first_values;
+    } else if (!options.shortcuts) {
+      start_in_sub_face_alone(*c.nodes, p0, first_values, channels, owned, path, id, values, p);
     } else {
-      start_in_sub_face(*c.nodes, p0, first_values, channels, owned, path, id, values, p);
+      start = sub_face_start(c, p0.face);
+      start_in_sub_face(*start, p0, first_values, channels, path, id, values, p);
     }
     return walk(c, id, p, std::move(values), channels, derivatives, path, first_values, rows_out, true);
   }
@@ -678,8 +724,9 @@ struct LimitSurface::Impl {
         }
         // Worth it from about eight levels: a power is dense, a step sparse.
         if (more + 1 >= 8) {
-          const LimitNode::Powers& powers = c.nodes->powers(id, which);
           const int levels = more + 1;
+          const LimitNode::Powers& powers =
+              c.nodes->powers(id, which, int(std::bit_width(unsigned(levels))), derivatives >= 2);
           for (int j = 0; j < LimitNodes::kPowers; ++j) {
             if (!((levels >> j) & 1)) continue;
             const StepMatrix& m = powers.forward[size_t(j)];
@@ -816,10 +863,11 @@ struct LimitSurface::Impl {
     return out;
   }
 
-  // An n-gon's sub-face is not a face yet: one step with the engine makes it one.
-  void start_in_sub_face(LimitNodes& nodes, const FacePoint& p0, const std::vector<double>& first_values, int channels,
-                         std::deque<StepMatrix>& owned, std::vector<const StepMatrix*>& path, int& id,
-                         std::vector<double>& values, FacePoint& p) const {
+  // An n-gon's sub-face is not a face yet: one step with the engine over the face's cut makes
+  // it one. The general way, for each point (without the shortcuts).
+  void start_in_sub_face_alone(LimitNodes& nodes, const FacePoint& p0, const std::vector<double>& first_values,
+                               int channels, std::deque<StepMatrix>& owned, std::vector<const StepMatrix*>& path,
+                               int& id, std::vector<double>& values, FacePoint& p) const {
     Neighbourhood n = cut(base, {}, 0, p0, radius);
     n.values = first_values;
     const Hierarchy h = refine_step(n.level);
@@ -837,6 +885,105 @@ struct LimitSurface::Impl {
     path.push_back(&owned.back());
     owned.back().apply(n.values, values, channels);
     p = halved(n.point);
+  }
+
+  // With the shortcuts, that step is the face's (SubFaceStart), worked out once; here the
+  // point finds its child and takes the child's rows, summed as the step over the whole cut
+  // sums them (the same bits).
+  void start_in_sub_face(const SubFaceStart& s, const FacePoint& p0, const std::vector<double>& first_values,
+                         int channels, std::vector<const StepMatrix*>& path, int& id, std::vector<double>& values,
+                         FacePoint& p) const {
+    FacePoint at = p0;
+    at.face = s.face;
+    const std::vector<ChildFace>& children = s.children[size_t(p0.sub_face)];
+    int which = -1;
+    const auto q = locate(children, at, triangles, &which);
+    if (!q) throw Error("internal: no child face holds the point (the split is not a binary primal one)");
+    const ChildStart& child = s.child(children[size_t(which)].face);
+    if (!child.error.empty()) throw Error(child.error);
+    std::vector<double> kept(size_t(child.step.rows()) * size_t(channels));
+    child.step.apply(first_values, kept, channels);
+    path.push_back(&child.step);
+    id = child.node;
+    values.resize(size_t(child.renumber.rows()) * size_t(channels));
+    child.renumber.apply(kept, values, channels);
+    path.push_back(&child.renumber);
+    FacePoint r = *q;
+    r.face = child.face;
+    p = halved(r);
+  }
+
+  // The first step of every point in the sub-faces of `face`: its cut refined once with the
+  // engine, and per child face the child's cut, node and the step's rows for the vertices
+  // the node keeps. Rows the node does not keep only ever carry zeros (forward unread,
+  // backward skipped), so leaving them out changes no sum.
+  std::shared_ptr<const SubFaceStart> make_sub_face_start(Cache& c, Index face) const {
+    FacePoint p;
+    p.face = face;
+    const Neighbourhood n = cut(base, {}, 0, p, radius);
+    auto s = std::make_shared<SubFaceStart>();
+    s->original = n.original;
+    s->face = n.point.face;
+    const Hierarchy h = refine_step(n.level);
+    const int k = base.face_size(face);
+    std::vector<Index> child_faces_met;
+    for (int sub = 0; sub < k; ++sub) {
+      FacePoint q = n.point;
+      q.sub_face = sub;
+      s->children.push_back(child_faces(n.level, h.levels[1], h.origins[0], q, triangles));
+      for (const ChildFace& f : s->children.back()) child_faces_met.push_back(f.face);
+    }
+    std::sort(child_faces_met.begin(), child_faces_met.end());
+    child_faces_met.erase(std::unique(child_faces_met.begin(), child_faces_met.end()), child_faces_met.end());
+    for (Index g : child_faces_met) {
+      ChildStart& child = s->starts.emplace_back();
+      child.level_face = g;
+      try {
+        FacePoint q;
+        q.face = g;
+        const Neighbourhood m = cut(h.levels[1], {}, 0, q, radius);
+        child.face = m.point.face;
+        std::vector<Index> order;
+        child.node = c.nodes->intern(m.level, m.point.face, order);
+        // The kept vertices in the cut's order (the order the whole step's rows have).
+        std::vector<Index> rows = order;
+        std::sort(rows.begin(), rows.end());
+        std::vector<Index> level_rows;
+        for (Index v : rows) level_rows.push_back(m.original[size_t(v)]);
+        child.step = step_matrix(h.stencils[0], level_rows, n.level.vertex_count);
+        child.renumber.source_count = Index(rows.size());
+        child.renumber.scale = 1;
+        for (Index v : order) {
+          child.renumber.columns.push_back(Index(std::lower_bound(rows.begin(), rows.end(), v) - rows.begin()));
+          child.renumber.weights.push_back(1.0);
+          child.renumber.offsets.push_back(Index(child.renumber.columns.size()));
+        }
+      } catch (const NotClosed&) {
+        throw;
+      } catch (const Error& e) {
+        child.error = e.what();
+      }
+    }
+    return s;
+  }
+
+  // The face's SubFaceStart, kept in the cache while the starts' budget lasts.
+  std::shared_ptr<const SubFaceStart> sub_face_start(Cache& c, Index face) const {
+    {
+      std::lock_guard lock(c.starts_mutex);
+      if (const auto found = c.starts.find(face); found != c.starts.end()) return found->second;
+    }
+    std::shared_ptr<const SubFaceStart> made = make_sub_face_start(c, face);
+    std::lock_guard lock(c.starts_mutex);
+    const auto [at, inserted] = c.starts.emplace(face, made);
+    if (!inserted) return at->second;
+    const size_t bytes = made->bytes();
+    if (c.starts_bytes + bytes > Cache::kStartsBudget) {
+      c.starts.erase(at);
+      return made;
+    }
+    c.starts_bytes += bytes;
+    return made;
   }
 
   Hierarchy refine_step(const Level& level) const {

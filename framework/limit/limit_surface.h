@@ -54,8 +54,10 @@ struct LimitSurfaceOptions {
   // Faces in an untagged regular quad grid (quad_grid_labelled, local_patch.h) share one
   // node, found without cutting and signing each face's neighbourhood, and points in a face
   // whose limit is a bicubic patch are evaluated without the nodes' lock; any other face whose
-  // cut's key (limit/cut_key.h) was met already takes that cut's node without cutting. False
-  // sends every face the general way (the tests compare the two: the same bits).
+  // cut's key (limit/cut_key.h) was met already takes that cut's node without cutting; a
+  // face with sub-faces (an n-gon under a quad split) refines its cut once for all its points,
+  // not once per point. False sends every face and point the general way (the tests compare
+  // the two: the same bits).
   bool shortcuts = true;
 };
 

@@ -1,5 +1,7 @@
 #include "framework/limit/step_matrix.h"
 
+#include <algorithm>
+
 #include <Eigen/Dense>
 
 #include "framework/stencil/stencil_table.h"
@@ -91,30 +93,61 @@ StepMatrix sparse_step(const Eigen::MatrixXd& a) {
 
 }  // namespace
 
-std::unique_ptr<StepPowers> step_powers(const StepMatrix& step, double factor, int count, bool second) {
+struct StepPowers::Squares {
+  Eigen::MatrixXd m, d;  // M^(2^j) and (factor (M - 1 e_0))^(2^j), j the powers made
+  Eigen::MatrixXd d2;    // (factor^2 (M - 1 e_0))^(2^j), j the second-derivative forms made
+  int capacity = 0;
+};
+
+StepPowers::StepPowers() = default;
+StepPowers::~StepPowers() = default;
+
+std::unique_ptr<StepPowers> lazy_step_powers(const StepMatrix& step, double factor, int count) {
   const Index k = step.rows();
   if (k != step.source_count) throw Error("internal: a self-similar step is not square");
-  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(k, k);
+  auto p = std::make_unique<StepPowers>();
+  p->next = std::make_unique<StepPowers::Squares>();
+  StepPowers::Squares& s = *p->next;
+  s.capacity = count;
+  s.m = Eigen::MatrixXd::Zero(k, k);
   for (Index r = 0; r < k; ++r)
     for (Index e = step.offsets[size_t(r)]; e < step.offsets[size_t(r) + 1]; ++e)
-      m(r, step.columns[size_t(e)]) += step.weights[size_t(e)];
-  Eigen::MatrixXd d = factor * m;
-  d.col(0).array() -= factor;
-  Eigen::MatrixXd d2 = factor * factor * m;
-  d2.col(0).array() -= factor * factor;
-  auto p = std::make_unique<StepPowers>();
-  for (int j = 0; j < count; ++j) {
-    p->forward.push_back(sparse_step(m));
-    p->backward.push_back(sparse_step(d));
-    if (second) p->backward2.push_back(sparse_step(d2));
-    m = (m * m).eval();
-    d = (d * d).eval();
-    if (second) d2 = (d2 * d2).eval();
+      s.m(r, step.columns[size_t(e)]) += step.weights[size_t(e)];
+  s.d = factor * s.m;
+  s.d.col(0).array() -= factor;
+  s.d2 = factor * factor * s.m;
+  s.d2.col(0).array() -= factor * factor;
+  p->forward.reserve(size_t(count));
+  p->backward.reserve(size_t(count));
+  p->backward2.reserve(size_t(count));
+  return p;
+}
+
+void more_powers(StepPowers& p, int count, bool second) {
+  if (!p.next) return;  // every power and form made
+  StepPowers::Squares& s = *p.next;
+  count = std::min(count, s.capacity);
+  while (int(p.forward.size()) < count) {
+    p.forward.push_back(sparse_step(s.m));
+    p.backward.push_back(sparse_step(s.d));
+    p.forward.back().backward = &p.backward.back();
+    s.m = (s.m * s.m).eval();
+    s.d = (s.d * s.d).eval();
   }
-  for (int j = 0; j < count; ++j) {
-    p->forward[size_t(j)].backward = &p->backward[size_t(j)];
-    if (second) p->forward[size_t(j)].backward2 = &p->backward2[size_t(j)];
+  if (!second) return;
+  while (p.backward2.size() < p.forward.size()) {
+    p.backward2.push_back(sparse_step(s.d2));
+    p.forward[p.backward2.size() - 1].backward2 = &p.backward2.back();
+    s.d2 = (s.d2 * s.d2).eval();
   }
+  // The dense squares (three matrices of the step's size squared) are not needed any more.
+  if (int(p.backward2.size()) == s.capacity) p.next.reset();
+}
+
+std::unique_ptr<StepPowers> step_powers(const StepMatrix& step, double factor, int count, bool second) {
+  auto p = lazy_step_powers(step, factor, count);
+  more_powers(*p, count, second);
+  p->next.reset();  // all made
   return p;
 }
 

@@ -51,9 +51,23 @@ std::vector<double> pulled_back(std::vector<double> row, std::span<const StepMat
 // factor^2 (M - 1 e_0) for second-derivative rows (`backward2`). Throws subdiv::Error
 // ("internal") for a step that is not square.
 struct StepPowers {
+  // Room for every power is reserved when made: an element's address never changes, so
+  // the `backward` pointers and descents that hold a power stay valid as more are made.
   std::vector<StepMatrix> forward, backward, backward2;
+  struct Squares;  // the dense powers to square next; null once all are made
+  std::unique_ptr<Squares> next;
+  StepPowers();
+  ~StepPowers();
 };
 std::unique_ptr<StepPowers> step_powers(const StepMatrix& step, double factor, int count, bool second);
+// The same with room for `count` powers and none made yet (step_powers makes them all at
+// once and keeps no room for more); more_powers makes the first
+// `count` (and with `second` their second-derivative forms) when not made already. A power
+// is the same bits whenever it is made (the same squarings from the same matrix), so a
+// descent of m levels need square only up to the highest binary digit of m: the powers of a
+// vertex of valence n are dense matrices of about 2n rows (n^3 work each).
+std::unique_ptr<StepPowers> lazy_step_powers(const StepMatrix& step, double factor, int count);
+void more_powers(StepPowers& powers, int count, bool second);
 
 // The rows of d/du and d/dv over the first step's sources, from rows `ds`, `dt` along a
 // node's own coordinates and the point's Jacobian J (J[a][d] = d(s, t)_a / d(u, v)_d, as
