@@ -148,26 +148,31 @@ void run_approximation(const EvaluateArgs& a, Progress& progress) {
   progress.done();
   for (const std::string& w : prepared.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
   const std::vector<BezierPatch> patches = approximation_patches(prepared);
-  ApproximationDistances distances;
+  // The control nets go into a temporary that becomes --bezier-net only once -o is in place,
+  // so a failure of either write leaves neither file.
+  StagedFiles nets;
+  const auto write_nets_then = [&](const ApproximationDistances& distances, const auto& write_output) {
+    if (!a.bezier_net.empty()) {
+      CheckedFileStream f(nets.stage(a.bezier_net), a.bezier_net);
+      f << bezier_control_net_vtu(patches, distances.per_face);
+      f.close();
+    }
+    write_output();
+    nets.commit();
+  };
   if (a.samples > 0) {
+    ApproximationDistances distances;
     MeshData mesh = approximated_limit_mesh(prepared, patches, a.samples, distances);
     print_safe("subdiv: {}\n", approximation_summary(distances));
-    write_with_bar(a.output, mesh, progress);
+    write_nets_then(distances, [&] { write_with_bar(a.output, mesh, progress); });
   } else {
     const LimitSurface& surface = *prepared.surface;
     const SurfacePoints q =
         read_points_file(a.at, [&surface](Index face, double u, double v) { return surface.check(face, u, v); });
     const ApproximatedPoints points = approximate_points(prepared, patches, q.faces, q.uv);
-    distances = points.distances;
-    print_safe("subdiv: {}\n", approximation_summary(distances));
-    write_approximation_csv(a.output, q, points);
+    print_safe("subdiv: {}\n", approximation_summary(points.distances));
+    write_nets_then(points.distances, [&] { write_approximation_csv(a.output, q, points); });
   }
-  if (!a.bezier_net.empty())
-    write_file_atomically(a.bezier_net, [&](const std::filesystem::path& tmp) {
-      CheckedFileStream f(tmp, a.bezier_net);
-      f << bezier_control_net_vtu(patches, distances.per_face);
-      f.close();
-    });
 }
 
 void run(const EvaluateArgs& a) {

@@ -192,3 +192,22 @@ TEST_CASE("evaluate and analyze: a file size limit (ulimit -f) is a refusal nami
   }
   for (const auto& e : fs::directory_iterator(dir)) CHECK_MESSAGE(e.path().filename() == "points.csv", e.path());
 }
+
+TEST_CASE("evaluate --approximate bezier --bezier-net: a failed -o leaves no control nets behind") {
+  // The nets are written into a temporary that becomes the .vtu only once -o is in place.
+  const auto dir = fresh_dir("hostile-evaluate-nets");
+  fs::create_directory(dir / "folder.obj");
+  const CliResult r = run_bounded("evaluate " + kCube + " --approximate bezier --samples 2 -o " +
+                                  (dir / "folder.obj").string() + " --bezier-net " + (dir / "nets.vtu").string());
+  CHECK(r.exit_code == 1);
+  CHECK_MESSAGE(contains(r.output, "it is a directory"), r.output);
+  CHECK_FALSE(fs::exists(dir / "nets.vtu"));
+  size_t left = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) left += entry.path().filename() != "folder.obj";
+  CHECK(left == 0);  // no temporary either
+  const CliResult ok = run_bounded("evaluate " + kCube + " --approximate bezier --samples 2 -o " +
+                                   (dir / "ok.obj").string() + " --bezier-net " + (dir / "nets.vtu").string());
+  CHECK(ok.exit_code == 0);
+  CHECK(fs::exists(dir / "ok.obj"));
+  CHECK(read_text(dir / "nets.vtu").find("VTKFile") != std::string::npos);
+}
