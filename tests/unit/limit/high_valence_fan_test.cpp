@@ -10,6 +10,7 @@
 #include "framework/limit/limit_surface.h"
 #include "framework/scheme/scheme_registry.h"
 #include "support/test_meshes.h"
+#include "unit/limit/same_bits.h"
 
 using namespace subdiv;
 
@@ -63,19 +64,7 @@ void same_bits(const char* scheme, const test::Mesh& m, const std::vector<Index>
       const double u = k == 0 ? 0.0 : k == 3 ? 1 + ru : ru;
       const double v = k == 0 ? 1.0 : k == 1 ? 0.0 : k == 4 ? 1 + rv : rv;
       INFO(scheme << ", valence " << (m.vertex_count - 1) / 2 << ", face " << f << " at (" << u << ", " << v << ")");
-      const LimitSample x = a.evaluate(f, u, v, m.positions, 3, 2), y = b.evaluate(f, u, v, m.positions, 3, 2);
-      REQUIRE(x.has_derivatives == y.has_derivatives);
-      REQUIRE(x.has_second_derivatives == y.has_second_derivatives);
-      CHECK(x.position == y.position);
-      CHECK(x.du == y.du);
-      CHECK(x.dv == y.dv);
-      CHECK(x.duu == y.duu);
-      CHECK(x.dvv == y.dvv);
-      const LimitStencil s = a.stencil(f, u, v, 1), t = b.stencil(f, u, v, 1);
-      CHECK(s.vertices == t.vertices);
-      CHECK(s.position == t.position);
-      CHECK(s.du == t.du);
-      CHECK(s.dv == t.dv);
+      limit_test::check_same_bits(a, b, f, u, v, m.positions, 1);
     }
 }
 
