@@ -1,6 +1,7 @@
 #include "framework/limit/adaptive_refine.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <cstdint>
 #include <fmt/format.h>
@@ -253,24 +254,24 @@ constexpr double kBytesPerStageFace = 800;
 constexpr Index kSerialFaces = 4096;
 
 // Each face-varying channel refines a stage of its own over the same faces (`stages`).
-void check_stage_fits(Index split_count, int level, size_t stages) {
-  const double need = 4.0 * double(split_count) * kBytesPerStageFace * double(stages);
+void check_stage_fits(double split_count, int level, size_t stages, const char* fix) {
+  const double need = 4.0 * split_count * kBytesPerStageFace * double(stages);
   if (need < kUncheckedBytes) return;
   const MemoryBudget have = available_memory();
   if (need > have.bytes)
-    throw Error(fmt::format("adaptive refinement: level {} would split {} faces into about {} and need about {:.1f} "
-                            "GiB, but only {:.1f} GiB of memory is available (limited by {}); ask for fewer levels or "
-                            "a larger tolerance",
-                            level, split_count, 4 * std::int64_t(split_count), need / 1073741824.0,
-                            have.bytes / 1073741824.0, have.source));
+    throw Error(fmt::format("adaptive refinement: level {} would split {:.0f} faces into about {:.0f} and need about {:.1f} "
+                            "GiB, but only {:.1f} GiB of memory is available (limited by {}); {}",
+                            level, split_count, 4 * split_count, need / 1073741824.0,
+                            have.bytes / 1073741824.0, have.source, fix));
 }
 
-Index uniform_face_count(const Level& base, bool triangles, int levels) {
+// In double: level 12 of a large mesh has more faces than an Index counts.
+double uniform_faces(const Level& base, bool triangles, int levels) {
   double faces = 0;  // holes make none
   for (Index f = 0; f < base.face_count(); ++f)
     if (!base.is_hole(f)) faces += triangles || levels == 0 ? 1.0 : double(base.face_size(f));
   for (int l = triangles ? 0 : 1; l < levels; ++l) faces *= 4;
-  return Index(faces);
+  return faces;
 }
 
 }  // namespace
@@ -335,6 +336,8 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& input, std::span
     throw Error(fmt::format("adaptive refinement with scheme {}: the weight tables kept are scheme {}'s",
                             subdiv::quoted(scheme.name), subdiv::quoted(options.tables->scheme().name)));
   AdaptiveTables& tables = options.tables ? *options.tables : own_tables.emplace(scheme);
+  if (options.uniform && levels > 0)
+    check_stage_fits(uniform_faces(base, triangles, levels - 1), levels, 1 + channels.size(), "ask for a lower level");
   tbb::task_arena serial(1);
   for (int l = 0; l < levels; ++l) {
     AdaptiveStage& s = stages.back();
@@ -349,7 +352,7 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& input, std::span
     const Index split_count = Index(std::count(s.split.begin(), s.split.end(), 1));
     out.split_faces.push_back(split_count);
     if (split_count == 0) break;
-    check_stage_fits(split_count, l + 1, 1 + channels.size());
+    check_stage_fits(double(split_count), l + 1, 1 + channels.size(), "ask for fewer levels or a larger tolerance");
     RefineOptions ro;
     ro.levels = 1;
     ro.features = options.features;
@@ -379,7 +382,7 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& input, std::span
     const StepProgressScope moving(share);
     move_to_limit(out, *options.surface, points, C);
   }
-  out.uniform_faces = uniform_face_count(base, triangles, levels);
+  out.uniform_faces = Index(std::min(uniform_faces(base, triangles, levels), double(std::numeric_limits<Index>::max())));
   return out;
 }
 

@@ -74,6 +74,10 @@ struct AdaptiveOptions {
   // bilinear/linear patch through its corners' limit points and the limit surface, at the
   // 5 x 5 points (i/4, j/4) of the face (15 on a triangle), exceeds it (needs `surface`).
   double tolerance = 0;
+  // The caller's tolerance splits every face (the uniform level L, as --level-distance asks):
+  // the last stage's size is checked against memory before the first stage is made, not after
+  // L - 1 stages.
+  bool uniform = false;
   // The exact evaluator of the same scheme, base level and features (limit_surface.h).
   const LimitSurface* surface = nullptr;
   // Weight tables kept between calls with the same scheme, or null (compiled for this call).

@@ -153,6 +153,7 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
   o.first_step = p.options.first_step;
   o.limit = request.limit;
   o.tolerance = request.tolerance;
+  o.uniform = request.uniform;
   AdaptiveResult out;
   try {
     // With face-varying channels on the limit, the evaluation of the same mesh brings the

@@ -17,6 +17,7 @@ struct AdaptiveRequest {
   RefineRequest refine;   // the mesh, scheme, shape options; `levels` is the cap L
   double tolerance = 0;   // > 0: also split faces farther than this from the limit surface
   bool limit = false;     // every vertex on the limit surface
+  bool uniform = false;   // the tolerance splits every face: AdaptiveOptions::uniform
 };
 
 struct AdaptiveResult {

@@ -13,8 +13,9 @@ namespace subdiv {
 
 LevelDistance level_distance(const EvaluateRequest& request, int level) {
   // Split wherever the surface differs from a bilinear patch at all: the uniform level.
-  AdaptiveResult refined = refine_adaptive_request(
-      adaptive_request_from(request, level, std::numeric_limits<double>::min(), false));
+  AdaptiveRequest uniform = adaptive_request_from(request, level, std::numeric_limits<double>::min(), false);
+  uniform.uniform = true;
+  AdaptiveResult refined = refine_adaptive_request(std::move(uniform));
   AdaptiveMesh& a = refined.mesh;
   if (Index(a.face_offsets.size()) - 1 != a.uniform_faces)
     throw Error(fmt::format("--level-distance {}: {} faces are flat to round-off, so the level could not be found "

@@ -127,6 +127,19 @@ TEST_CASE("adaptive refinement that would not fit (a tolerance near 0 asks for t
 #endif
 }
 
+TEST_CASE("evaluate --level-distance that would not fit is refused before its first level") {
+#if SUBDIV_TEST_ASAN
+  MESSAGE("skipped: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");
+#else
+  // The uniform level 12 of the cube: its last stage (25 million faces split) is checked
+  // before any stage is made, so the message names level 12, not the first level past the
+  // limit (9 here, after 8 levels of work; 40 s at the machine's own limit).
+  check_refused_within_400_mb("evaluate " + kCube + " --level-distance 12 -o ",
+                              fresh_dir("hostile-level-distance-memory") / "big.vtp",
+                              {"adaptive refinement: level 12 would split 25165824 faces", "ask for a lower level"});
+#endif
+}
+
 TEST_CASE("a sampled limit surface that would not fit is refused before any sample") {
 #if SUBDIV_TEST_ASAN
   MESSAGE("skipped: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");
