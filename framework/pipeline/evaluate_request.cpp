@@ -204,6 +204,7 @@ PreparedEvaluation prepare_evaluation(EvaluateRequest request) {
   r.feature_file = request.feature_file;
   r.feature_angle = request.feature_angle;
   PreparedEvaluation out;
+  out.mesh_name = r.mesh_name;
   out.request_vertex_count = r.mesh.vertex_count();
   out.request_vertex = used_vertices(r.mesh);
   PreparedRefinement p = prepare_refinement(r);
@@ -278,8 +279,10 @@ EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& p, std::span<con
   std::vector<double> own;
   if (values.empty() && !p.weights.empty()) {  // the rational surface
     own = homogeneous_positions(p);
-    return evaluate_samples(faces.size(), 3, derivatives, [&](size_t i) {
-      return projected(p.surface->evaluate(faces[i], uv[2 * i], uv[2 * i + 1], own, 4, derivatives));
+    return naming_the_mesh(p, [&] {
+      return evaluate_samples(faces.size(), 3, derivatives, [&](size_t i) {
+        return projected(p.surface->evaluate(faces[i], uv[2 * i], uv[2 * i + 1], own, 4, derivatives));
+      });
     });
   }
   if (values.empty()) {
@@ -300,8 +303,10 @@ EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& p, std::span<con
         own[v * size_t(channels) + size_t(c)] = values[size_t(p.request_vertex[v]) * size_t(channels) + size_t(c)];
     values = own;
   }
-  return evaluate_samples(faces.size(), channels, derivatives, [&](size_t i) {
-    return p.surface->evaluate(faces[i], uv[2 * i], uv[2 * i + 1], values, channels, derivatives);
+  return naming_the_mesh(p, [&] {
+    return evaluate_samples(faces.size(), channels, derivatives, [&](size_t i) {
+      return p.surface->evaluate(faces[i], uv[2 * i], uv[2 * i + 1], values, channels, derivatives);
+    });
   });
 }
 

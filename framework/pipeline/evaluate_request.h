@@ -14,6 +14,7 @@
 #include "framework/limit/tessellation.h"
 #include "framework/pipeline/refine_request.h"
 #include "framework/primvar/face_varying.h"
+#include "framework/util/option_spelling.h"
 
 namespace subdiv {
 
@@ -50,6 +51,7 @@ struct FaceVaryingSurface {
 
 // The surface prepared once: evaluate any number of point sets with it (thread-safe).
 struct PreparedEvaluation {
+  std::string mesh_name;  // names the mesh in messages, as EvaluateRequest's
   std::string scheme_label;
   std::shared_ptr<const Scheme> scheme;
   MeshData mesh;                      // the request's mesh without unused vertices
@@ -69,6 +71,19 @@ struct PreparedEvaluation {
 // limit_surface_unsupported, a sequence head that does not nest), or subdiv::OptionError
 // naming an option. A sequence "A:k,B" is evaluated as B's limit over the mesh A's k levels make.
 PreparedEvaluation prepare_evaluation(EvaluateRequest request);
+
+// `work()`, with an Error it throws (not an OptionError) given the mesh's name in front, as
+// the preparation's errors have it: a point refused while a surface is sampled names the file.
+template <class Work>
+auto naming_the_mesh(const PreparedEvaluation& prepared, Work&& work) -> decltype(work()) {
+  try {
+    return work();
+  } catch (const OptionError&) {
+    throw;
+  } catch (const Error& e) {
+    throw Error(prepared.mesh_name + ": " + e.what());
+  }
+}
 
 // Points of the limit surface: `channels` values per point for the position and each
 // derivative up to the order asked for (0, 1 or 2), NaN where a derivative does not exist

@@ -26,7 +26,8 @@ FaceVaryingArray face_varying_samples(const PreparedEvaluation& prepared, size_t
 }  // namespace
 
 MeshData sampled_limit_mesh(const PreparedEvaluation& prepared, int segments) {
-  Tessellation t = tessellate(*prepared.surface, segments, limit_sampler(prepared));
+  Tessellation t =
+      naming_the_mesh(prepared, [&] { return tessellate(*prepared.surface, segments, limit_sampler(prepared)); });
   MeshData m;
   for (size_t c = 0; c < prepared.face_varying.size(); ++c)
     m.face_varying.push_back(face_varying_samples(prepared, c, segments));

@@ -5,8 +5,10 @@
 // fix, within a time limit (a FIFO used to block), and leave the named paths as they were.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sys/stat.h>
 
 #include "support/cli_runner.h"
@@ -210,4 +212,28 @@ TEST_CASE("evaluate --approximate bezier --bezier-net: a failed -o leaves no con
   CHECK(ok.exit_code == 0);
   CHECK(fs::exists(dir / "ok.obj"));
   CHECK(read_text(dir / "nets.vtu").find("VTKFile") != std::string::npos);
+}
+
+TEST_CASE("evaluate --samples: a point the surface refuses names the mesh file, the face and the fix") {
+  // A bipyramid whose two poles have valence 600, above the analysis' 512: its samples at the
+  // poles are refused; the message must say which file, as the preparation's messages do.
+  const auto dir = fresh_dir("hostile-evaluate-valence");
+  const fs::path mesh = dir / "bipyramid-600.obj";
+  {
+    std::ofstream out(mesh);
+    const int n = 600;
+    out << "v 0 0 1\n";
+    for (int i = 0; i < n; ++i) out << "v " << std::cos(2 * std::numbers::pi * i / n) << ' ' << std::sin(2 * std::numbers::pi * i / n) << " 0\n";
+    out << "v 0 0 -1\n";
+    for (int i = 0; i < n; ++i) {
+      const int a = i + 2, b = (i + 1) % n + 2;
+      out << "f 1 " << a << ' ' << b << "\nf " << n + 2 << ' ' << b << ' ' << a << '\n';
+    }
+  }
+  const CliResult r = run_bounded("evaluate " + mesh.string() + " -s loop --samples 2 -o " + (dir / "out.obj").string());
+  CHECK(r.exit_code == 1);
+  CHECK_MESSAGE(contains(r.output, "subdiv: error: " + mesh.string() + ": face "), r.output);
+  CHECK_MESSAGE(contains(r.output, "valence 600"), r.output);
+  CHECK_MESSAGE(contains(r.output, "bring it within 512"), r.output);
+  CHECK_FALSE(fs::exists(dir / "out.obj"));
 }
