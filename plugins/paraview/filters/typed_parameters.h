@@ -13,9 +13,10 @@ class TypedParameters {
 public:
   // `key` is "scheme:name"; returns false when the value was already that.
   bool set(const std::string& key, const std::string& value);
-  // The chosen scheme's values as "name=value ..." words, to go before the Parameters
-  // field's (whose words win).
-  std::string words_for(const std::string& scheme) const;
+  // The chosen scheme's values as "name=value ..." words, leaving out the names the
+  // Parameters field's text `overriding` assigns: the field wins over the widgets (a name
+  // given twice is refused, so both cannot go to SubdivKit).
+  std::string words_for(const std::string& scheme, const std::string& overriding) const;
 
 private:
   std::map<std::string, std::map<std::string, std::string>> values_;

@@ -41,7 +41,8 @@ std::string vtkSubdivKitSchemeAlgorithm::SchemeToRun() const {
 
 std::string vtkSubdivKitSchemeAlgorithm::ParametersToRun() const {
   // The widgets belong to the drop-down's scheme; a scheme file takes the text field only.
-  return (this->SchemeFile.empty() ? this->TypedParameters.words_for(this->Scheme) : "") + this->Parameters;
+  return (this->SchemeFile.empty() ? this->TypedParameters.words_for(this->Scheme, this->Parameters) : "") +
+         this->Parameters;
 }
 
 void vtkSubdivKitSchemeAlgorithm::PrintSelf(ostream& os, vtkIndent indent) {
