@@ -212,13 +212,7 @@ PreparedEvaluation prepare_evaluation(EvaluateRequest request) {
   LimitSurfaceOptions options;
   options.features = p.options.features;
   if (request.progress) request.progress("preparing the limit surface");
-  try {
-    out.surface = limit_surface_of(p.sequence, std::move(p.base), options);
-  } catch (const OptionError&) {
-    throw;
-  } catch (const Error& e) {
-    throw Error(fmt::format("{}: {}", r.mesh_name, e.what()));
-  }
+  out.surface = naming_the_mesh(out, [&] { return limit_surface_of(p.sequence, std::move(p.base), options); });
   out.face_varying = face_varying_surfaces(p, out.surface->base(), r.mesh_name, p.notes);
   out.scheme = p.sequence.schemes.back();  // a sequence's last scheme: the one that repeats
   for (const auto& scheme : p.sequence.schemes)
