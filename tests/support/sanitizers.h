@@ -12,3 +12,16 @@
 #ifndef SUBDIV_TEST_ASAN
 #define SUBDIV_TEST_ASAN 0
 #endif
+
+namespace subdiv_test {
+
+// Under the sanitizers the suite runs about ten times slower than in Release. Sweeps that
+// repeat one check over many like inputs (shapes' faces, crease lengths, piece counts) keep
+// every kSanitizerThinning-th input there: the same code paths, fewer repetitions, so that
+// CI's sanitizer stage stays within its time. The Release run takes every input.
+inline constexpr int kSanitizerThinning = SUBDIV_TEST_ASAN ? 3 : 1;
+
+// True when a sweep's i-th input is left out under the sanitizers.
+constexpr bool thinned_out(long i) { return i % kSanitizerThinning != 0; }
+
+}  // namespace subdiv_test

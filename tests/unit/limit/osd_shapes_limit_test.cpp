@@ -5,6 +5,7 @@
 // random points rarely fall within its level-10 patches around them.
 #include <doctest/doctest.h>
 
+#include "support/sanitizers.h"
 #include "unit/limit/bfr_surface.h"
 #include "unit/osd/osd_shapes.h"
 
@@ -72,9 +73,10 @@ ShapeResult compare_shape(const std::filesystem::path& file) {
   const bool triangles = scheme_name == "loop";
   std::mt19937 rng(3);
   ShapeResult r;
-  // At most about 100 faces of a shape (its faces evenly spread): the big ones (car, bishop,
-  // rook, pawn) would take most of the time and show nothing the others do not.
-  const Index step = std::max<Index>(1, surface.base().face_count() / 100);
+  // At most about 100 faces of a shape (its faces evenly spread; a third of that under the
+  // sanitizers): the big ones (car, bishop, rook, pawn) would take most of the time and show
+  // nothing the others do not.
+  const Index step = std::max<Index>(1, surface.base().face_count() * subdiv_test::kSanitizerThinning / 100);
   for (Index f = 0; f < surface.base().face_count(); f += step) {
     if (surface.base().is_hole(f)) continue;
     for (const auto& uv : sample_points(surface, f, triangles, rng)) {
