@@ -13,14 +13,38 @@
 
 namespace subdiv::cli {
 
+namespace {
+constexpr int kMaxAdaptiveLevel = 12;
+}
+
 void add_adaptive_options(CLI::App* cmd, AdaptiveArgs& a) {
   cmd->add_option("--adaptive", a.levels,
-                  "Feature-adaptive refinement up to level L instead of -l: only faces touching an extraordinary "
-                  "vertex, a crease, a sharp vertex or a hole (and with --tolerance faces not within it) are split; "
-                  "watertight output (coarse faces take the finer vertices along their edges), cell arrays "
-                  "face_level and base_face; with --limit every vertex on the limit surface (docs/limit.md)")
-      ->check(CLI::Range(0, 12));
+                  "Feature-adaptive refinement up to level L (--adaptive L, or --adaptive -l L): only faces "
+                  "touching an extraordinary vertex, a crease, a sharp vertex or a hole (and with --tolerance faces "
+                  "not within it) are split; watertight output (coarse faces take the finer vertices along their "
+                  "edges), cell arrays face_level and base_face; with --limit every vertex on the limit surface "
+                  "(docs/limit.md)")
+      ->expected(0, 1)
+      ->check(CLI::Range(0, kMaxAdaptiveLevel));
   add_tolerance_option(cmd, a.tolerance);
+}
+
+void resolve_adaptive_level(const CLI::App& cmd, AdaptiveArgs& a, int levels, bool levels_given) {
+  const CLI::Option* option = cmd.get_option("--adaptive");
+  if (option->count() == 0) return;
+  // CLI11 records a bare `--adaptive` (no value, or an option next) as one empty result.
+  const bool bare = option->results().empty() || option->results().front().empty();
+  if (!bare) {
+    if (levels_given && levels != a.levels)
+      throw Error(fmt::format("--adaptive {} and -l {} ask for two finest levels: give the level once "
+                              "(--adaptive {} or --adaptive -l {})",
+                              a.levels, levels, a.levels, a.levels));
+    return;
+  }
+  if (levels > kMaxAdaptiveLevel)
+    throw Error(fmt::format("--adaptive -l {}: adaptive refinement goes to level {} at most", levels,
+                            kMaxAdaptiveLevel));
+  a.levels = levels;
 }
 
 void add_tolerance_option(CLI::App* cmd, double& tolerance) {
@@ -29,10 +53,9 @@ void add_tolerance_option(CLI::App* cmd, double& tolerance) {
                   "farther than T from the limit surface (measured at 5 x 5 points per face), up to level L");
 }
 
-void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& a, bool limit, bool other_levels, bool in_pieces,
+void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& a, bool limit, bool in_pieces,
                          const std::string& output, bool quiet, Progress& progress,
                          std::chrono::steady_clock::time_point t0) {
-  if (other_levels) throw Error("--adaptive L gives the finest level: leave out -l/--levels");
   if (!(a.tolerance >= 0) || !std::isfinite(a.tolerance))
     throw Error(fmt::format("--tolerance {}: give a distance >= 0 (0: split only around features)", a.tolerance));
   if (in_pieces) throw Error("--adaptive refines whole meshes: leave out --pieces and --max-memory");

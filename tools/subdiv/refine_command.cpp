@@ -49,7 +49,7 @@ struct RefineArgs {
   bool timings = false;      // --timings
   bool force = false;        // --force: -o may be the input mesh
   std::string weights;       // --weights NAME: the point array of rational weights
-  AdaptiveArgs adaptive;     // --adaptive L, --tolerance T
+  AdaptiveArgs adaptive;     // --adaptive [L], --tolerance T
   bool in_pieces() const { return pieces_given || !max_memory.empty(); }
 };
 
@@ -173,8 +173,8 @@ void run(const RefineArgs& a) {
   Progress progress(a.timings, a.quiet);
   RefineRequest request = refine_request(a, output, progress);
   if (a.adaptive.given())
-    return run_adaptive_refine(std::move(request), a.adaptive, a.limit, a.levels_given, a.in_pieces(), a.output,
-                               a.quiet, progress, t0);
+    return run_adaptive_refine(std::move(request), a.adaptive, a.limit, a.in_pieces(), a.output, a.quiet, progress,
+                               t0);
   PreparedRefinement prepared = prepare_refinement(request);
   print_warnings(prepared.warnings);
   if (a.in_pieces()) return run_in_pieces(a, request, prepared, output, progress, t0);
@@ -271,6 +271,7 @@ void add_refine_command(CLI::App& app) {
                 "triangles=smooth; a mesh's 't smoothtriangles' tag does the same unless --param says otherwise");
   cmd->callback([args, cmd, levels] {
     args->levels_given = levels->count() > 0;
+    resolve_adaptive_level(*cmd, args->adaptive, args->levels, args->levels_given);
     args->boundary_given = cmd->count("--boundary") > 0;
     args->crease_method_given = cmd->count("--crease-method") > 0;
     args->fvar_boundary_given = cmd->count("--fvar-boundary") > 0;

@@ -133,3 +133,23 @@ TEST_CASE("--vertex-param: one value at every vertex writes what --param writes;
                 "no scheme of the run reads it per vertex");
   check_refused("refine " + cube + " --scheme catmull-clark-shape --vertex-param lambda", dir / "f.obj", "must be written name=FILE");
 }
+
+TEST_CASE("--adaptive -l L is --adaptive L; two different levels are refused") {
+  // The issue's spelling `subdiv refine --adaptive -l L` and `--adaptive L` ask for the same
+  // mesh: the two files are byte for byte the same.
+  const auto dir = fresh_dir("cli-adaptive-level");
+  const std::string cube = source_path("examples/meshes/cube.obj");
+  const fs::path by_value = dir / "value.obj", by_l = dir / "l.obj", l_first = dir / "l-first.obj";
+  REQUIRE(run_subdiv("refine " + cube + " --adaptive 3 --limit -q -o " + by_value.string()).exit_code == 0);
+  REQUIRE(run_subdiv("refine " + cube + " --adaptive -l 3 --limit -q -o " + by_l.string()).exit_code == 0);
+  REQUIRE(run_subdiv("refine " + cube + " -l 3 --adaptive --limit -q -o " + l_first.string()).exit_code == 0);
+  auto bytes = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  CHECK(!bytes(by_value).empty());
+  CHECK(bytes(by_l) == bytes(by_value));
+  CHECK(bytes(l_first) == bytes(by_value));
+  check_refused("refine " + cube + " --adaptive 3 -l 2", dir / "two.obj", "--adaptive 3 and -l 2 ask for two finest levels");
+  check_refused("refine " + cube + " --adaptive -l 13", dir / "deep.obj", "adaptive refinement goes to level 12 at most");
+}
