@@ -649,10 +649,11 @@ struct LimitSurface::Impl {
     }
     put3(out.position, &sum[0]);
   }
-  // Three values into `v`, its memory kept (element by element: no call to copy 24 bytes).
+  // Three values into `v`, its memory kept (pushed one by one: within the capacity inline,
+  // no call to resize or copy 24 bytes).
   static void put3(std::vector<double>& v, const double* x) {
-    v.resize(3);
-    v[0] = x[0], v[1] = x[1], v[2] = x[2];
+    v.clear();
+    v.push_back(x[0]), v.push_back(x[1]), v.push_back(x[2]);
   }
 
   // The base vertices an evaluation in the point's face reads, in the order descend() takes

@@ -281,7 +281,7 @@ void run(const Mesh& m, int points, int order) {
   const auto t5 = Clock::now();
   delete refiner;
   std::printf("%s, %d faces: first point per face (preparation) ours %.3g ms, Bfr %.3g ms; %d random points, "
-              "position + %s derivatives: ours %.1f us/point, Bfr %.2f us/point, ratio %.2f (checksum %g)\n",
+              "position + %s derivatives: ours %.2f us/point, Bfr %.2f us/point, ratio %.2f (checksum %g)\n",
               m.name, faces, seconds(t0, t1) * 1e3, seconds(t1, t2) * 1e3, points,
               order == 2 ? "first and second" : "first", seconds(t3, t4) / points * 1e6,
               seconds(t4, t5) / points * 1e6, seconds(t3, t4) / seconds(t4, t5), sum);
