@@ -611,8 +611,7 @@ struct LimitSurface::Impl {
   }
 
   // fixed_sample() of the quartic box spline's rows (box_spline_patch.h: Loop's regular
-  // triangles) for three channels, position and first derivatives: the twelve functions'
-  // weights taken in their labels' order, each function's vertex (Entry::box_vertices) read
+  // triangles) for three channels: the twelve functions' weights taken in their labels' order, each function's vertex (Entry::box_vertices) read
   // once, the products and sums fixed_sample takes (its other labels' rows are zero, and
   // skipped there as here) — the same bits, without placing the weights in rows over the
   // labels first.
@@ -620,7 +619,7 @@ struct LimitSurface::Impl {
                                 const FacePoint& p, std::span<const double> values, int derivatives,
                                 LimitSample& out) {
     BoxSplineWeights w;
-    box_spline_weights(p.st, derivatives >= 1 ? 3 : 1, w);
+    box_spline_weights(p.st, derivatives >= 2 ? 6 : derivatives >= 1 ? 3 : 1, w);
     const auto& J = p.jacobian;
     std::array<double, 9> sum{};
     if (derivatives >= 1) {
@@ -648,6 +647,25 @@ struct LimitSurface::Impl {
       }
     }
     put3(out.position, &sum[0]);
+    if (derivatives < 2) return;
+    // As fixed_sample's second(): each second derivative's weights, then their sums with the
+    // zero weights passed over.
+    const auto second = [&](size_t a, size_t b, std::vector<double>& to) {
+      double x[3] = {0, 0, 0};
+      for (size_t k = 0; k < size_t(kBoxSplineFunctions); ++k) {
+        const size_t f = box.by_label[k];
+        const double weight = J[0][a] * J[0][b] * w[3][f] + (J[0][a] * J[1][b] + J[1][a] * J[0][b]) * w[4][f] +
+                              J[1][a] * J[1][b] * w[5][f];
+        if (weight == 0) continue;
+        const double* at = &values[size_t(vertices[k]) * 3];
+        x[0] += weight * at[0], x[1] += weight * at[1], x[2] += weight * at[2];
+      }
+      put3(to, x);
+    };
+    second(0, 0, out.duu);
+    second(0, 1, out.duv);
+    second(1, 1, out.dvv);
+    out.has_second_derivatives = true;
   }
   // Three values into `v`, its memory kept (pushed one by one: within the capacity inline,
   // no call to resize or copy 24 bytes).
@@ -1324,7 +1342,7 @@ void LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> value
       return Impl::bspline_sample(
           e->grid_cell, [&](size_t l) { return e->vertices[l]; }, p, values, channels, derivatives, out);
     if (e->lattice && impl_->triangles) {
-      if (e->lattice->box && channels == 3 && derivatives <= 1)
+      if (e->lattice->box && channels == 3)
         return Impl::box_spline_sample(*e->lattice->box, e->box_vertices, p, values, derivatives, out);
       FixedRows rows;
       if (quartic_rows_fixed(*e->lattice, p.st, derivatives, rows))
