@@ -611,10 +611,10 @@ struct LimitSurface::Impl {
   }
 
   // fixed_sample() of the quartic box spline's rows (box_spline_patch.h: Loop's regular
-  // triangles) for three channels: the twelve functions' weights taken in their labels' order, each function's vertex (Entry::box_vertices) read
-  // once, the products and sums fixed_sample takes (its other labels' rows are zero, and
-  // skipped there as here) — the same bits, without placing the weights in rows over the
-  // labels first.
+  // triangles) for three channels: the twelve functions' weights taken in their labels'
+  // order, each function's vertex (Entry::box_vertices) read once, the products and sums
+  // fixed_sample takes (its other labels' rows are zero, and skipped there as here) — the
+  // same bits, without placing the weights in rows over the labels first.
   static void box_spline_sample(const BoxSplineLabels& box, const std::array<Index, kBoxSplineFunctions>& vertices,
                                 const FacePoint& p, std::span<const double> values, int derivatives,
                                 LimitSample& out) {
