@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <numeric>
 #include <optional>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/task_arena.h>
 
 #include "framework/analysis/surface/limit_evaluation.h"
@@ -233,10 +234,12 @@ void move_to_limit(AdaptiveMesh& out, const LimitSurface& surface, std::span<con
     for (Index k = out.face_offsets[f]; k < out.face_offsets[f + 1]; ++k)
       if (const size_t v = size_t(out.face_vertices[size_t(k)]); corner_of[v] == SIZE_MAX)
         face_of[v] = f, corner_of[v] = size_t(k);
+  tbb::enumerable_thread_specific<LimitSample> samples;  // one per thread, its memory reused
   parallel_for_all(count, [&](size_t v) {
     const Uv& uv = out.corner_uv[corner_of[v]];
-    const std::vector<double> p =
-        surface.evaluate(out.base_face[face_of[v]], uv[0], uv[1], base_points, channels, 0).position;
+    LimitSample& s = samples.local();
+    surface.evaluate_into(out.base_face[face_of[v]], uv[0], uv[1], base_points, channels, 0, s);
+    const std::vector<double>& p = s.position;
     std::copy(p.begin(), p.begin() + 3, out.positions.begin() + std::ptrdiff_t(3 * v));
     const size_t D = size_t(channels - 3);
     std::copy(p.begin() + 3, p.end(), out.data.begin() + std::ptrdiff_t(D * v));

@@ -143,22 +143,26 @@ void sum_terms(const Monomials& x, std::array<double, kBoxSplineFunctions>& w) {
 
 }  // namespace
 
-void box_spline_rows(const BoxSplineLabels& labels, const Uv& st, int count, double* const* out) {
+void box_spline_weights(const Uv& st, int count, BoxSplineWeights& w) {
   const Monomials x(st, count >= 6 ? 2 : count >= 3 ? 3 : 4);
-  std::array<double, kBoxSplineFunctions> w{};
-  const auto put = [&](int n) {
+  sum_terms<kPosition>(x, w[0]);
+  if (count < 3) return;
+  sum_terms<kDs>(x, w[1]);
+  sum_terms<kDt>(x, w[2]);
+  if (count < 6) return;
+  sum_terms<kDss>(x, w[3]);
+  sum_terms<kDst>(x, w[4]);
+  sum_terms<kDtt>(x, w[5]);
+}
+
+void box_spline_rows(const BoxSplineLabels& labels, const Uv& st, int count, double* const* out) {
+  BoxSplineWeights w;
+  box_spline_weights(st, count, w);
+  for (size_t n = 0; n < size_t(count); ++n) {
     double* o = out[n];
     std::fill(o, o + labels.labels, 0.0);
-    for (size_t f = 0; f < size_t(kBoxSplineFunctions); ++f) o[labels.label[f]] = w[f];
-  };
-  sum_terms<kPosition>(x, w), put(0);
-  if (count < 3) return;
-  sum_terms<kDs>(x, w), put(1);
-  sum_terms<kDt>(x, w), put(2);
-  if (count < 6) return;
-  sum_terms<kDss>(x, w), put(3);
-  sum_terms<kDst>(x, w), put(4);
-  sum_terms<kDtt>(x, w), put(5);
+    for (size_t f = 0; f < size_t(kBoxSplineFunctions); ++f) o[labels.label[f]] = w[n][f];
+  }
 }
 
 std::optional<BoxSplineLabels> box_spline_labels(const std::vector<std::vector<double>>& lattice) {
@@ -187,6 +191,9 @@ std::optional<BoxSplineLabels> box_spline_labels(const std::vector<std::vector<d
     out.label[f] = std::uint8_t(l);
   }
   if (std::find(taken.begin(), taken.end(), false) != taken.end()) return std::nullopt;
+  for (size_t f = 0; f < size_t(kBoxSplineFunctions); ++f) out.by_label[f] = std::uint8_t(f);
+  std::sort(out.by_label.begin(), out.by_label.end(),
+            [&](std::uint8_t a, std::uint8_t b) { return out.label[a] < out.label[b]; });
   return out;
 }
 

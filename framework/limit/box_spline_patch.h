@@ -21,6 +21,9 @@ constexpr int kBoxSplineFunctions = 12;
 struct BoxSplineLabels {
   std::array<std::uint8_t, kBoxSplineFunctions> label{};
   std::uint8_t labels = 0;  // the rows' length
+  // The functions in their labels' order (label[by_label[k]] increases with k): the order in
+  // which a sum over the rows' labels meets them.
+  std::array<std::uint8_t, kBoxSplineFunctions> by_label{};
 };
 
 // The labels of a quartic patch given by its rows at the principal lattice
@@ -32,5 +35,10 @@ std::optional<BoxSplineLabels> box_spline_labels(const std::vector<std::vector<d
 // The first `count` rows (position, d/ds, d/dt, d2/ds2, d2/dsdt, d2/dt2: 1, 3 or 6) of the
 // box spline at (s, t), written to out[n][0 .. labels) in the labels' order.
 void box_spline_rows(const BoxSplineLabels& labels, const Uv& st, int count, double* const* out);
+
+// The same first `count` rows per basis function, w[n][f], before they are placed at the
+// labels (box_spline_rows writes w[n][f] at out[n][label[f]] and zero elsewhere).
+using BoxSplineWeights = std::array<std::array<double, kBoxSplineFunctions>, 6>;
+void box_spline_weights(const Uv& st, int count, BoxSplineWeights& w);
 
 }  // namespace subdiv

@@ -148,18 +148,22 @@ struct LimitSurface::Impl {
   }
 
   // Per base face (made on first use): the node of its cut and the base vertices in the
-  // node's label order.
-  struct Entry {
-    int node = -1;
-    std::vector<Index> vertices;
+  // node's label order. What a point in a face with a closed form reads first lies in the
+  // first cache line (grid, lattice, box_vertices).
+  struct alignas(64) Entry {
     // The node's control point grid when its limit is the bicubic B-spline patch
     // (LimitNodes::bspline), else null: a point in the face is then evaluated at once.
     const std::array<Index, 16>* grid = nullptr;
-    // With a grid: per label, its cell in the grid (row by row from (-1, -1)).
-    std::array<std::uint8_t, 16> grid_cell{};
     // Otherwise the node's polynomial patch (LimitNodes::quartic: a quartic over a triangle,
     // degree 4 per direction over a quad) when it has one, else null.
     const PolynomialPatch* lattice = nullptr;
+    // With the box spline's closed form (lattice->box): its functions' vertices in their
+    // labels' order (BoxSplineLabels::by_label), read without going through `vertices`.
+    std::array<Index, kBoxSplineFunctions> box_vertices{};
+    int node = -1;
+    std::vector<Index> vertices;
+    // With a grid: per label, its cell in the grid (row by row from (-1, -1)).
+    std::array<std::uint8_t, 16> grid_cell{};
 
     void set_grid(const std::array<Index, 16>* g) {
       grid = g;
@@ -311,6 +315,11 @@ struct LimitSurface::Impl {
     if (const Entry* e = slot.load(std::memory_order_acquire)) return *e;
     bool regular = false;
     std::unique_ptr<Entry> made = make_entry(c, face, regular);
+    if (made->lattice && made->lattice->box)
+      for (size_t k = 0; k < size_t(kBoxSplineFunctions); ++k) {
+        const BoxSplineLabels& box = *made->lattice->box;
+        made->box_vertices[k] = made->vertices[box.label[box.by_label[k]]];
+      }
     Entry* found = nullptr;
     if (!slot.compare_exchange_strong(found, made.get(), std::memory_order_acq_rel)) return *found;
     const Entry* e = made.release();
@@ -472,12 +481,11 @@ struct LimitSurface::Impl {
   // bspline_rows() with nothing to pull back, the same products summed in the same order
   // (the same bits), without the rows, the copied values or the nodes' lock.
   template <class Vertex>
-  static LimitSample bspline_sample(const std::array<std::uint8_t, 16>& cell, Vertex vertex, const FacePoint& p,
-                                    std::span<const double> values, int channels, int derivatives) {
+  static void bspline_sample(const std::array<std::uint8_t, 16>& cell, Vertex vertex, const FacePoint& p,
+                             std::span<const double> values, int channels, int derivatives, LimitSample& out) {
     const BsplineWeights w = bspline_weights(p.st);
     const size_t C = size_t(channels);
     const auto& J = p.jacobian;
-    LimitSample out;
     out.position.assign(C, 0.0);
     if (derivatives >= 1) {
       // Each sum over the labels in their order, as applied() takes them; zero weights skipped
@@ -508,9 +516,9 @@ struct LimitSurface::Impl {
         for (size_t ch = 0; ch < C; ++ch) out.position[ch] += x * at[ch];
       }
     }
-    if (derivatives < 2) return out;
-    auto second = [&](size_t a, size_t b) {
-      std::vector<double> r(C, 0.0);
+    if (derivatives < 2) return;
+    auto second = [&](size_t a, size_t b, std::vector<double>& r) {
+      r.assign(C, 0.0);
       for (size_t l = 0; l < 16; ++l) {
         const size_t k = cell[l];
         const double x = J[0][a] * J[0][b] * w.dss[k] + (J[0][a] * J[1][b] + J[1][a] * J[0][b]) * w.dst[k] +
@@ -519,20 +527,18 @@ struct LimitSurface::Impl {
         const double* at = &values[size_t(vertex(l)) * C];
         for (size_t ch = 0; ch < C; ++ch) r[ch] += x * at[ch];
       }
-      return r;
     };
-    out.duu = second(0, 0);
-    out.duv = second(0, 1);
-    out.dvv = second(1, 1);
+    second(0, 0, out.duu);
+    second(0, 1, out.duv);
+    second(1, 1, out.dvv);
     out.has_second_derivatives = true;
-    return out;
   }
 
   // finish() of a polynomial patch's rows with nothing to pull back, applied to the face's
   // vertices' values where they lie: the same products summed in the same order (the same
   // bits), without the rows' or the gathered values' allocations.
-  static LimitSample fixed_sample(const FixedRows& r, const std::vector<Index>& vertices, const FacePoint& p,
-                                  std::span<const double> values, int channels, int derivatives) {
+  static void fixed_sample(const FixedRows& r, const std::vector<Index>& vertices, const FacePoint& p,
+                           std::span<const double> values, int channels, int derivatives, LimitSample& out) {
     const size_t C = size_t(channels), L = r.labels;
     // Sums kept in registers for three channels (positions), in the same order.
     auto apply = [&](const double* row, std::vector<double>& out) {
@@ -553,7 +559,6 @@ struct LimitSurface::Impl {
         for (size_t c = 0; c < C; ++c) out[c] += row[l] * at[c];
       }
     };
-    LimitSample out;
     const auto& J = p.jacobian;
     const auto& ds = r.row[1];
     const auto& dt = r.row[2];
@@ -603,7 +608,70 @@ struct LimitSurface::Impl {
       second(1, 1, out.dvv);
       out.has_second_derivatives = true;
     }
-    return out;
+  }
+
+  // fixed_sample() of the quartic box spline's rows (box_spline_patch.h: Loop's regular
+  // triangles) for three channels: the twelve functions' weights taken in their labels'
+  // order, each function's vertex (Entry::box_vertices) read once, the products and sums
+  // fixed_sample takes (its other labels' rows are zero, and skipped there as here) — the
+  // same bits, without placing the weights in rows over the labels first.
+  static void box_spline_sample(const BoxSplineLabels& box, const std::array<Index, kBoxSplineFunctions>& vertices,
+                                const FacePoint& p, std::span<const double> values, int derivatives,
+                                LimitSample& out) {
+    BoxSplineWeights w;
+    box_spline_weights(p.st, derivatives >= 2 ? 6 : derivatives >= 1 ? 3 : 1, w);
+    const auto& J = p.jacobian;
+    std::array<double, 9> sum{};
+    if (derivatives >= 1) {
+      for (size_t k = 0; k < size_t(kBoxSplineFunctions); ++k) {
+        const size_t f = box.by_label[k];
+        const double ds = w[1][f], dt = w[2][f];
+        const double x[3] = {w[0][f], J[0][0] * ds + J[1][0] * dt, J[0][1] * ds + J[1][1] * dt};
+        const double* at = &values[size_t(vertices[k]) * 3];
+        for (size_t n = 0; n < 3; ++n)
+          for (size_t c = 0; c < 3; ++c) {
+            double& s = sum[3 * n + c];
+            s = x[n] != 0 ? s + x[n] * at[c] : s;
+          }
+      }
+      put3(out.du, &sum[3]);
+      put3(out.dv, &sum[6]);
+      out.has_derivatives = true;
+    } else {
+      for (size_t k = 0; k < size_t(kBoxSplineFunctions); ++k) {
+        const size_t f = box.by_label[k];
+        const double x = w[0][f];
+        if (x == 0) continue;
+        const double* at = &values[size_t(vertices[k]) * 3];
+        sum[0] += x * at[0], sum[1] += x * at[1], sum[2] += x * at[2];
+      }
+    }
+    put3(out.position, &sum[0]);
+    if (derivatives < 2) return;
+    // As fixed_sample's second(): each second derivative's weights, then their sums with the
+    // zero weights passed over.
+    const auto second = [&](size_t a, size_t b, std::vector<double>& to) {
+      double x[3] = {0, 0, 0};
+      for (size_t k = 0; k < size_t(kBoxSplineFunctions); ++k) {
+        const size_t f = box.by_label[k];
+        const double weight = J[0][a] * J[0][b] * w[3][f] + (J[0][a] * J[1][b] + J[1][a] * J[0][b]) * w[4][f] +
+                              J[1][a] * J[1][b] * w[5][f];
+        if (weight == 0) continue;
+        const double* at = &values[size_t(vertices[k]) * 3];
+        x[0] += weight * at[0], x[1] += weight * at[1], x[2] += weight * at[2];
+      }
+      put3(to, x);
+    };
+    second(0, 0, out.duu);
+    second(0, 1, out.duv);
+    second(1, 1, out.dvv);
+    out.has_second_derivatives = true;
+  }
+  // Three values into `v`, its memory kept (pushed one by one: within the capacity inline,
+  // no call to resize or copy 24 bytes).
+  static void put3(std::vector<double>& v, const double* x) {
+    v.clear();
+    v.push_back(x[0]), v.push_back(x[1]), v.push_back(x[2]);
   }
 
   // The base vertices an evaluation in the point's face reads, in the order descend() takes
@@ -1178,35 +1246,65 @@ std::string LimitSurface::check(Index face, double u, double v) const {
   return {};
 }
 
+namespace {
+
+// A sample as a fresh one is, its vectors' memory kept.
+void clear_sample(LimitSample& s) {
+  for (std::vector<double>* v : {&s.position, &s.du, &s.dv, &s.duu, &s.duv, &s.dvv}) v->clear();
+  s.has_derivatives = s.has_second_derivatives = false;
+  s.steps = 0;
+}
+
+// `from` copied into `to`, to's vectors' memory kept.
+void copy_sample(const LimitSample& from, LimitSample& to) {
+  to.position.assign(from.position.begin(), from.position.end());
+  to.du.assign(from.du.begin(), from.du.end());
+  to.dv.assign(from.dv.begin(), from.dv.end());
+  to.duu.assign(from.duu.begin(), from.duu.end());
+  to.duv.assign(from.duv.begin(), from.duv.end());
+  to.dvv.assign(from.dvv.begin(), from.dvv.end());
+  to.has_derivatives = from.has_derivatives;
+  to.has_second_derivatives = from.has_second_derivatives;
+  to.steps = from.steps;
+}
+
+}  // namespace
+
 LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<const double> values, int channels,
                                    int derivatives) const {
+  LimitSample out;
+  evaluate_into(face, u, v, values, channels, derivatives, out);
+  return out;
+}
+
+void LimitSurface::evaluate_into(Index face, double u, double v, std::span<const double> values, int channels,
+                                 int derivatives, LimitSample& out) const {
   if (derivatives < 0 || derivatives > 2)
     throw Error(fmt::format("derivatives {}: the order must be 0, 1 or 2", derivatives));
   if (channels < 1 || values.size() < size_t(impl_->base.vertex_count) * size_t(channels))
     throw Error(fmt::format("limit evaluation needs {} values per vertex for {} vertices, got {}", channels,
                             impl_->base.vertex_count, values.size()));
+  clear_sample(out);
   if (impl_->sheets || impl_->tail) {
     // Through the stencil: a non-manifold mesh's sheets would need a copy of every vertex's
     // values per point; a sequence's head has no values of its own.
     const LimitStencil w = impl_->sheets ? stencil(face, u, v, derivatives) : sequence_stencil(face, u, v, derivatives);
-    LimitSample out;
-    auto apply = [&](const std::vector<double>& weights) {
-      std::vector<double> r(size_t(channels), 0.0);
+    auto apply = [&](const std::vector<double>& weights, std::vector<double>& r) {
+      r.assign(size_t(channels), 0.0);
       for (size_t k = 0; k < w.vertices.size(); ++k)
         for (int c = 0; c < channels; ++c)
           r[size_t(c)] += weights[k] * values[size_t(w.vertices[k]) * size_t(channels) + size_t(c)];
-      return r;
     };
-    out.position = apply(w.position);
+    apply(w.position, out.position);
     out.has_derivatives = w.has_derivatives && derivatives >= 1;
     out.has_second_derivatives = w.has_second_derivatives && derivatives >= 2;
-    if (out.has_derivatives) out.du = apply(w.du), out.dv = apply(w.dv);
-    if (out.has_second_derivatives) out.duu = apply(w.duu), out.duv = apply(w.duv), out.dvv = apply(w.dvv);
-    return out;
+    if (out.has_derivatives) apply(w.du, out.du), apply(w.dv, out.dv);
+    if (out.has_second_derivatives) apply(w.duu, out.duu), apply(w.duv, out.duv), apply(w.dvv, out.dvv);
+    return;
   }
   const FacePoint p = impl_->start(face, u, v);
   try {
-    return evaluate_at(p, values, channels, derivatives);
+    evaluate_at(p, values, channels, derivatives, out);
   } catch (const NotClosed&) {
     throw;
   } catch (const Error& e) {
@@ -1214,13 +1312,14 @@ LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<con
   }
 }
 
-LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> values, int channels,
-                                      int derivatives) const {
+void LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> values, int channels, int derivatives,
+                               LimitSample& out) const {
   // The splits with evaluators of their own (dual, plugin, mid-edge, sqrt3): the values they
   // read, then their own descent.
   const auto by = [&](const auto& evaluator) {
     const std::vector<double> first = gathered(evaluator.reads(p), values, channels);
-    return tbb::this_task_arena::isolate([&] { return evaluator.evaluate(p, first, channels, derivatives); });
+    copy_sample(tbb::this_task_arena::isolate([&] { return evaluator.evaluate(p, first, channels, derivatives); }),
+                out);
   };
   if (impl_->dual) return by(*impl_->dual);
   if (impl_->plugin) return by(*impl_->plugin);
@@ -1237,15 +1336,17 @@ LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double
       return Impl::bspline_sample(
           c->regular.load(std::memory_order_acquire)->grid_cell,
           [&](size_t l) { return slot.vertex[l].load(std::memory_order_relaxed) - 1; }, p, values, channels,
-          derivatives);
+          derivatives, out);
     }
     if (e->grid)
       return Impl::bspline_sample(
-          e->grid_cell, [&](size_t l) { return e->vertices[l]; }, p, values, channels, derivatives);
+          e->grid_cell, [&](size_t l) { return e->vertices[l]; }, p, values, channels, derivatives, out);
     if (e->lattice && impl_->triangles) {
+      if (e->lattice->box && channels == 3)
+        return Impl::box_spline_sample(*e->lattice->box, e->box_vertices, p, values, derivatives, out);
       FixedRows rows;
       if (quartic_rows_fixed(*e->lattice, p.st, derivatives, rows))
-        return Impl::fixed_sample(rows, e->vertices, p, values, channels, derivatives);
+        return Impl::fixed_sample(rows, e->vertices, p, values, channels, derivatives, out);
     }
     if (e->lattice) {
       // walk()'s first step where the face's node is a polynomial patch, without the nodes' lock.
@@ -1253,13 +1354,13 @@ LimitSample LimitSurface::evaluate_at(const FacePoint& p, std::span<const double
       const CornerRows rows = impl_->triangles ? quartic_rows(*e->lattice, p.st, derivatives)
                                                : tensor_rows(e->lattice->lattice, p.st, derivatives);
       const std::vector<const StepMatrix*> path;
-      return Impl::finish(rows, p, first, channels, derivatives, path, first, 0, nullptr);
+      return copy_sample(Impl::finish(rows, p, first, channels, derivatives, path, first, 0, nullptr), out);
     }
   }
-  return impl_->with_cache([&](Impl::Cache& cache) {
+  copy_sample(impl_->with_cache([&](Impl::Cache& cache) {
     const std::vector<double> first = gathered(impl_->reads(cache, p), values, channels);
     return impl_->descend(cache, p, first, channels, derivatives);
-  });
+  }), out);
 }
 
 LimitStencil LimitSurface::stencil(Index face, double u, double v, int derivatives) const {

@@ -6,6 +6,7 @@
 #include <initializer_list>
 #include <map>
 #include <tuple>
+#include <tbb/enumerable_thread_specific.h>
 
 #include "framework/limit/face_domain.h"
 #include "framework/util/error.h"
@@ -138,7 +139,7 @@ struct Builder {
 // The point's normal; where the derivatives do not exist (an extraordinary vertex), the
 // limit of the normals of the face's points towards it; zero where the scheme gives no
 // derivatives at all.
-std::array<double, 3> normal_at(const LimitSurface& s, const SurfaceSample& sample, LimitSample p, Index face,
+std::array<double, 3> normal_at(const LimitSurface& s, const SurfaceSample& sample, LimitSample& p, Index face,
                                 double u, double v) {
   if (!p.has_derivatives) {
     // Towards the middle of the point's face, or of its sub-face's tile (face_domain.h).
@@ -151,7 +152,7 @@ std::array<double, 3> normal_at(const LimitSurface& s, const SurfaceSample& samp
       cu = col + 0.25, cv = row + 0.25;
     }
     const double t = 1e-9;
-    p = sample(face, u + t * (cu - u), v + t * (cv - v));
+    sample(face, u + t * (cu - u), v + t * (cv - v), p);
     // No derivatives at all (a dual scheme without the biquadratic closed form, dual_limit.h).
     if (!p.has_derivatives) return {0, 0, 0};
   }
@@ -206,21 +207,24 @@ Tessellation tessellate(const LimitSurface& surface, int N, const SurfaceSample&
   Tessellation out = tessellation_grid(surface.base(), surface.base(), surface.triangles(), N);
   out.positions.assign(size_t(out.point_count()) * 3, 0.0);
   out.normals.assign(out.positions.size(), 0.0);
+  // One sample per thread, its memory reused point after point.
+  tbb::enumerable_thread_specific<LimitSample> samples;
   parallel_for_all(out.point_count(), [&](Index i) {
     const Index f = out.uv_face[size_t(i)];
     const double u = out.uv[size_t(2 * i)], v = out.uv[size_t(2 * i + 1)];
-    const LimitSample p = sample(f, u, v);
+    LimitSample& p = samples.local();
+    sample(f, u, v, p);
+    for (int c = 0; c < 3; ++c) out.positions[size_t(3 * i + c)] = p.position[size_t(c)];
     const auto n = normal_at(surface, sample, p, f, u, v);
-    for (int c = 0; c < 3; ++c) {
-      out.positions[size_t(3 * i + c)] = p.position[size_t(c)];
-      out.normals[size_t(3 * i + c)] = n[size_t(c)];
-    }
+    for (int c = 0; c < 3; ++c) out.normals[size_t(3 * i + c)] = n[size_t(c)];
   }, LoopProgress::Told);
   return out;
 }
 
 Tessellation tessellate(const LimitSurface& surface, std::span<const double> positions, int N) {
-  return tessellate(surface, N, [&](Index face, double u, double v) { return surface.evaluate(face, u, v, positions, 3); });
+  return tessellate(surface, N, [&](Index face, double u, double v, LimitSample& out) {
+    surface.evaluate_into(face, u, v, positions, 3, 1, out);
+  });
 }
 
 }  // namespace subdiv

@@ -30,9 +30,9 @@ struct Tessellation {
   Index face_count() const { return Index(face_offsets.size()) - 1; }
 };
 
-// A point of the surface to tessellate: its position (3 values) and first derivatives
-// (has_derivatives false where they do not exist).
-using SurfaceSample = std::function<LimitSample(Index face, double u, double v)>;
+// A point of the surface to tessellate, written to `out` (LimitSurface::evaluate_into): its
+// position (3 values) and first derivatives (has_derivatives false where they do not exist).
+using SurfaceSample = std::function<void(Index face, double u, double v, LimitSample& out)>;
 
 // Throws subdiv::Error for N < 1, or an odd N on a mesh with sub-faces.
 Tessellation tessellate(const LimitSurface& surface, int segments, const SurfaceSample& sample);

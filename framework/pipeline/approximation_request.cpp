@@ -122,9 +122,10 @@ ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const 
 
 MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
                                  int segments, ApproximationDistances& distances) {
-  Tessellation t = tessellate(*prepared.surface, segments, [&patches](Index face, double u, double v) {
-    return as_sample(evaluate_patch(patches[size_t(face)], u, v));
-  });
+  const auto patch_sample = [&patches](Index face, double u, double v, LimitSample& out) {
+    out = as_sample(evaluate_patch(patches[size_t(face)], u, v));
+  };
+  Tessellation t = tessellate(*prepared.surface, segments, patch_sample);
   distances = measure(prepared, t.uv_face, t.uv, t.positions);
   std::vector<double> cell_distance;
   cell_distance.reserve(t.base_face.size());

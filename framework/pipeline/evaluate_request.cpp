@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <fmt/format.h>
+#include <tbb/enumerable_thread_specific.h>
 
 #include "framework/engine/refiner.h"
 #include "framework/io/mesh_read.h"
@@ -160,8 +161,9 @@ void check_order(int derivatives) {
                                   derivatives));
 }
 
-// Runs `sample(i)` for every point in parallel and lays the samples out, NaN where a
-// derivative does not exist.
+// Runs `sample(i, s)` for every point in parallel, into one sample per thread whose memory
+// is reused point after point, and lays the samples out, NaN where a derivative does not
+// exist.
 template <class F>
 EvaluatedPoints evaluate_samples(size_t count, int channels, int derivatives, F&& sample) {
   EvaluatedPoints out;
@@ -171,8 +173,10 @@ EvaluatedPoints evaluate_samples(size_t count, int channels, int derivatives, F&
   out.position.resize(n);
   if (derivatives >= 1) out.du.resize(n), out.dv.resize(n);
   if (derivatives >= 2) out.duu.resize(n), out.duv.resize(n), out.dvv.resize(n);
+  tbb::enumerable_thread_specific<LimitSample> samples;
   parallel_for_all(count, [&](size_t i) {
-    const LimitSample s = sample(i);
+    LimitSample& s = samples.local();
+    sample(i, s);
     auto put = [&](std::vector<double>& to, const std::vector<double>& from, bool has) {
       for (size_t c = 0; c < size_t(channels); ++c) to[i * size_t(channels) + c] = has ? from[c] : kNan;
     };
@@ -232,12 +236,14 @@ namespace {
 
 // The rational surface from its homogeneous limit (X, W) (Piegl & Tiller 1997, "The NURBS
 // Book", eq. 4.8 and its derivative): P = X / W, P_u = (X_u - P W_u) / W, and
-// P_uv = (X_uv - P_u W_v - P_v W_u - P W_uv) / W.
-LimitSample projected(const LimitSample& h) {
-  LimitSample out = h;
-  auto sized = [](const std::vector<double>& from) { return std::vector<double>(from.empty() ? 0 : 3); };
-  out.position = sized(h.position), out.du = sized(h.du), out.dv = sized(h.dv);
-  out.duu = sized(h.duu), out.duv = sized(h.duv), out.dvv = sized(h.dvv);
+// P_uv = (X_uv - P_u W_v - P_v W_u - P W_uv) / W. Into `out`, its memory kept.
+void project(const LimitSample& h, LimitSample& out) {
+  out.has_derivatives = h.has_derivatives;
+  out.has_second_derivatives = h.has_second_derivatives;
+  out.steps = h.steps;
+  auto sized = [](const std::vector<double>& from, std::vector<double>& to) { to.assign(from.empty() ? 0 : 3, 0.0); };
+  sized(h.position, out.position), sized(h.du, out.du), sized(h.dv, out.dv);
+  sized(h.duu, out.duu), sized(h.duv, out.duv), sized(h.dvv, out.dvv);
   const double W = h.position[3];
   for (size_t c = 0; c < 3; ++c) {
     const double P = h.position[c] / W;
@@ -250,7 +256,6 @@ LimitSample projected(const LimitSample& h) {
     out.dvv[c] = (h.dvv[c] - 2 * Pv * h.dv[3] - P * h.dvv[3]) / W;
     out.duv[c] = (h.duv[c] - Pu * h.dv[3] - Pv * h.du[3] - P * h.duv[3]) / W;
   }
-  return out;
 }
 
 // (w·p, w) per vertex of the prepared mesh.
@@ -273,9 +278,12 @@ EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& p, std::span<con
   std::vector<double> own;
   if (values.empty() && !p.weights.empty()) {  // the rational surface
     own = homogeneous_positions(p);
+    tbb::enumerable_thread_specific<LimitSample> homogeneous;
     return naming_the_mesh(p, [&] {
-      return evaluate_samples(faces.size(), 3, derivatives, [&](size_t i) {
-        return projected(p.surface->evaluate(faces[i], uv[2 * i], uv[2 * i + 1], own, 4, derivatives));
+      return evaluate_samples(faces.size(), 3, derivatives, [&](size_t i, LimitSample& s) {
+        LimitSample& h = homogeneous.local();
+        p.surface->evaluate_into(faces[i], uv[2 * i], uv[2 * i + 1], own, 4, derivatives, h);
+        project(h, s);
       });
     });
   }
@@ -298,8 +306,8 @@ EvaluatedPoints evaluate_limit_points(const PreparedEvaluation& p, std::span<con
     values = own;
   }
   return naming_the_mesh(p, [&] {
-    return evaluate_samples(faces.size(), channels, derivatives, [&](size_t i) {
-      return p.surface->evaluate(faces[i], uv[2 * i], uv[2 * i + 1], values, channels, derivatives);
+    return evaluate_samples(faces.size(), channels, derivatives, [&](size_t i, LimitSample& s) {
+      p.surface->evaluate_into(faces[i], uv[2 * i], uv[2 * i + 1], values, channels, derivatives, s);
     });
   });
 }
@@ -308,11 +316,15 @@ SurfaceSample limit_sampler(const PreparedEvaluation& p) {
   const LimitSurface* surface = p.surface.get();
   if (p.weights.empty()) {
     std::span<const double> positions = p.mesh.positions;
-    return [surface, positions](Index face, double u, double v) { return surface->evaluate(face, u, v, positions, 3); };
+    return [surface, positions](Index face, double u, double v, LimitSample& out) {
+      surface->evaluate_into(face, u, v, positions, 3, 1, out);
+    };
   }
   auto homogeneous = std::make_shared<const std::vector<double>>(homogeneous_positions(p));
-  return [surface, homogeneous](Index face, double u, double v) {
-    return projected(surface->evaluate(face, u, v, *homogeneous, 4));
+  return [surface, homogeneous](Index face, double u, double v, LimitSample& out) {
+    thread_local LimitSample h;  // the homogeneous point, its memory reused
+    surface->evaluate_into(face, u, v, *homogeneous, 4, 1, h);
+    project(h, out);
   };
 }
 
@@ -325,10 +337,11 @@ EvaluatedPoints evaluate_face_varying(const PreparedEvaluation& p, size_t channe
   const FaceVaryingSurface& s = p.face_varying[channel];
   const Level& base = p.surface->base();
   const bool triangles = p.surface->triangles();
-  return evaluate_samples(faces.size(), s.components, derivatives, [&](size_t i) {
-    if (s.surface) return s.surface->evaluate(faces[i], uv[2 * i], uv[2 * i + 1], s.values, s.components, derivatives);
+  return evaluate_samples(faces.size(), s.components, derivatives, [&](size_t i, LimitSample& out) {
+    if (s.surface)
+      return s.surface->evaluate_into(faces[i], uv[2 * i], uv[2 * i + 1], s.values, s.components, derivatives, out);
     const char* why = "";
-    return bilinear(s, *base_face_point(base, faces[i], uv[2 * i], uv[2 * i + 1], triangles, &why), derivatives);
+    out = bilinear(s, *base_face_point(base, faces[i], uv[2 * i], uv[2 * i + 1], triangles, &why), derivatives);
   });
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 // Two prepared surfaces of one mesh (the shortcuts and the general way, say) must give the
-// same bits at (face, u, v): positions and derivatives to second order, and the stencil of
-// the given derivative order (samples and stencils alike).
+// same bits at (face, u, v): positions and derivatives of every order asked for (0, 1, 2),
+// through evaluate() and through evaluate_into() of a sample reused from point to point (and
+// from order to order), and the stencil of the given derivative order (samples and stencils
+// alike).
 #include <doctest/doctest.h>
 
 #include <span>
@@ -10,9 +12,7 @@
 
 namespace subdiv::limit_test {
 
-inline void check_same_bits(const LimitSurface& a, const LimitSurface& b, Index face, double u, double v,
-                            std::span<const double> positions, int stencil_derivatives) {
-  const LimitSample x = a.evaluate(face, u, v, positions, 3, 2), y = b.evaluate(face, u, v, positions, 3, 2);
+inline void check_same_sample(const LimitSample& x, const LimitSample& y) {
   REQUIRE(x.has_derivatives == y.has_derivatives);
   REQUIRE(x.has_second_derivatives == y.has_second_derivatives);
   CHECK(x.position == y.position);
@@ -21,6 +21,23 @@ inline void check_same_bits(const LimitSurface& a, const LimitSurface& b, Index 
   CHECK(x.duu == y.duu);
   CHECK(x.duv == y.duv);
   CHECK(x.dvv == y.dvv);
+}
+
+inline void check_same_bits(const LimitSurface& a, const LimitSurface& b, Index face, double u, double v,
+                            std::span<const double> positions, int stencil_derivatives) {
+  // Kept across calls: whatever the previous point left in it must not show.
+  static thread_local LimitSample reused;
+  for (int order = 2; order >= 0; --order) {
+    INFO("derivatives " << order);
+    const LimitSample x = a.evaluate(face, u, v, positions, 3, order), y = b.evaluate(face, u, v, positions, 3, order);
+    check_same_sample(x, y);
+    a.evaluate_into(face, u, v, positions, 3, order, reused);
+    check_same_sample(reused, x);
+    CHECK(reused.steps == x.steps);
+    b.evaluate_into(face, u, v, positions, 3, order, reused);
+    check_same_sample(reused, y);
+    CHECK(reused.steps == y.steps);
+  }
   if (stencil_derivatives < 0) return;
   const LimitStencil s = a.stencil(face, u, v, stencil_derivatives), t = b.stencil(face, u, v, stencil_derivatives);
   CHECK(s.vertices == t.vertices);
