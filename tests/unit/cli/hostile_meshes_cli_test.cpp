@@ -117,3 +117,16 @@ TEST_CASE("--select and --vertex-param files saved with a byte-order mark are re
                  (dir / "b.obj").string());
   CHECK_MESSAGE(r.exit_code == 0, r.output);
 }
+
+TEST_CASE("-l 30: refused at once with the memory in units a person reads; with --pieces, not 'ask for more pieces'") {
+  const auto dir = fresh_dir("hostile-meshes-levels");
+  const std::string octahedron = source_path("examples/meshes/octahedron.obj");
+  // 8 * 4^30 faces at ~300 bytes each: about 2.3e21 bytes, some 2e6 PiB.
+  check_refused("refine " + octahedron + " -l 30", dir / "a.vtp", "PiB, but only");
+  const CliResult r = run_subdiv("refine " + octahedron + " -l 30 -o " + (dir / "b.vtp").string());
+  CHECK_FALSE(contains(r.output, "0.0 GiB"));  // not "1932735283200.0 GiB"
+  // One face refined 30 levels fits no machine: more pieces cannot help, fewer levels can.
+  check_refused("refine " + octahedron + " -l 30 --pieces 4", dir / "c.pvtp",
+                "even one face refined 30 levels would not fit: no number of pieces helps; ask for fewer levels");
+  CHECK_FALSE(fs::exists(dir / "c_pieces"));
+}
