@@ -20,6 +20,12 @@ constexpr const char* kFormulaHelp =
     "functions such as cos, sqrt, min, max, the functions binom(a, b), floor, ceil, mod(a, b), "
     "and the constant pi";
 
+// State variables are followed level by level from l = 0 and kept for every level, so a
+// level of 2^31 would take minutes and gigabytes before the first weight. Refinement stops at
+// level 130 (30 levels after a start level of at most 100); a million levels is far past
+// where a non-stationary scheme's state has settled to round-off.
+constexpr double kMaxStateLevel = 1'000'000;
+
 bool whole(double x) { return std::isfinite(x) && x == std::floor(x); }
 
 double floor_fn(double x) { return std::floor(x); }
@@ -163,6 +169,12 @@ struct FormulaSet::Impl {
     if (state_names.empty()) return;
     if (!whole(level_value) || level_value < 0)
       throw Error(fmt::format("state variables are defined on whole levels l >= 0, not l = {}", level_value));
+    if (level_value > kMaxStateLevel)
+      throw Error(fmt::format("{}: state variable {} is followed level by level from l = 0, and level {} is beyond "
+                              "the {} levels that are followed; ask for a level up to {} (the state has settled "
+                              "long before)",
+                              state_wheres[0], subdiv::quoted(state_names[0]), level_value, kMaxStateLevel,
+                              kMaxStateLevel));
     const size_t level = size_t(level_value);
     const double saved_l = l;
     try {

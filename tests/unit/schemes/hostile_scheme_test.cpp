@@ -150,3 +150,16 @@ TEST_CASE("a first-day author's mistakes: a name never declared, a formula undef
                 v.output);
   CHECK_FALSE(contains(v.output, "nan,"));
 }
+
+TEST_CASE("a level of 2^31 for a scheme with state is refused at once, not followed level by level") {
+  // tension-bspline's alpha_k is a recurrence from l = 0; following it to 2^31 took minutes
+  // and gigabytes (it was stopped after 100 s); `timeout` turns a return of that into a failure.
+  const CliResult r = run_subdiv_with_prefix("timeout 60 ", "analyze tension-bspline --level 2147483647");
+  CHECK(r.exit_code == 1);
+  CHECK_MESSAGE(contains(r.output, "tension-bspline.json: state.alpha.initial: state variable 'alpha' is followed level "
+                                   "by level from l = 0, and level 2147483647 is beyond the 1000000 levels"),
+                r.output);
+  CHECK(contains(r.output, "ask for a level up to 1000000"));
+  // The largest level followed still works.
+  CHECK(run_subdiv("analyze tension-bspline --level 1000000").exit_code == 0);
+}
