@@ -99,14 +99,13 @@ LimitChoice surface_limit(const SchemeSequence& seq, const Level& base, const Li
                           const std::string& mesh_name) {
   try {
     return select_limit(seq, base, options);
-  } catch (const OptionError&) {
-    throw;
   } catch (const Error& e) {
     if (seq.runs.size() == 1 && declares_parameter(seq, "lambda"))
       throw OptionError(fmt::format("{}\n  {} has a shape parameter lambda: if it is a first step (Lin et al. 2015), "
                                     "make it the first run of a sequence, {{scheme}} {}:1,S, with S the scheme that "
                                     "repeats",
                                     e.what(), subdiv::quoted(seq.schemes[0]->name), seq.schemes[0]->name));
+    if (dynamic_cast<const OptionError*>(&e)) throw;  // about the request's options, not the mesh
     throw Error(fmt::format("{}: {}", mesh_name, e.what()));
   }
 }

@@ -27,7 +27,7 @@ double finest_faces(const Scheme& scheme, const Level& base, int levels) {
   return faces;
 }
 
-// MiB, GiB, then TiB and PiB, so that 30 levels of a cube read "1.76e+06 PiB", not
+// MiB, GiB, then TiB and PiB, so that 30 levels of a cube read "1.84e+06 PiB", not
 // "1932735283200.0 GiB".
 std::string size_text(double bytes) {
   constexpr double kGiB = double(1 << 30), kTiB = 1024 * kGiB, kPiB = 1024 * kTiB;

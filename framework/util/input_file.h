@@ -20,7 +20,8 @@ const char* file_type_name(std::filesystem::file_type type);
 // `text` without the UTF-8 byte-order mark (EF BB BF) that Windows editors and spreadsheets
 // ("CSV UTF-8") put at the start of text files. Left in, the mark glues itself to the first
 // word ("\xEF\xBB\xBFv", "\xEF\xBB\xBF0"), which is then skipped or refused in words that
-// show nothing wrong. Every reader of user text starts here.
+// show nothing wrong. The text readers (OBJ, OFF, PLY, per-vertex values, vertex
+// selections, the points CSV) take it off; the STL check names it.
 std::string_view without_utf8_bom(std::string_view text);
 
 // The whole file, after check_input_file; throws subdiv::Error on read errors. A file of
