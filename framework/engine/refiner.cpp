@@ -7,6 +7,7 @@
 #include "framework/engine/level_passes.h"
 #include "framework/engine/topology_steps.h"
 #include "framework/refine/primal_topology.h"
+#include "framework/topology/non_manifold_place.h"
 #include "framework/util/step_progress.h"
 #include "framework/engine/step_preparation.h"
 #include "framework/engine/vertex_parameters.h"
@@ -35,17 +36,10 @@ int needed_face_size(const Scheme& scheme) {
 // SplitterInfo::handles_non_manifold) refuse them clearly; every built-in split handles them.
 void check_manifold_for(const Scheme& scheme, const Level& level) {
   if (level.manifold() || splitter_info(scheme.split()).handles_non_manifold) return;
-  Index e = 0, v = 0;
-  while (e < level.edge_count() && !level.non_manifold_edge(e)) ++e;
-  while (v < level.vertex_count && !level.non_manifold_vertex(v)) ++v;
-  const std::string where = e < level.edge_count()
-                                ? fmt::format("edge ({}, {}) has {} faces or faces of opposite orientation",
-                                              level.edge_vertices[2 * e], level.edge_vertices[2 * e + 1],
-                                              level.edge_face_count(e))
-                                : fmt::format("the faces around vertex {} form more than one fan", v);
-  throw Error(fmt::format("{}: scheme {} uses the {} split, which needs a manifold mesh, but {}; use a scheme "
-                          "with a built-in split, which refine non-manifold meshes, or split the mesh there",
-                          scheme.path, subdiv::quoted(scheme.name), subdiv::quoted(splitter_info(scheme.split()).name), where));
+  throw Error(fmt::format("{}: scheme {} uses the {} split, which needs a manifold mesh, but {}; or use a "
+                          "scheme with a built-in split, which refine non-manifold meshes",
+                          scheme.path, subdiv::quoted(scheme.name), subdiv::quoted(splitter_info(scheme.split()).name),
+                          non_manifold_place(level)));
 }
 
 // A stage's name for EvaluationSwitches::stage_times: the level it makes, then what it does

@@ -12,6 +12,7 @@
 #include "framework/interpolation/interpolatory_limit.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
+#include "framework/topology/non_manifold_place.h"
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
 #include "framework/util/quoted_text.h"
@@ -317,6 +318,13 @@ LimitChoice select_limit(const SchemeSequence& seq, const Level& base, const Lim
     std::string list;
     for (const auto& r : refused) list += "\n  - " + r;
     const auto providers = limit_mask_provider_names();
+    // A non-manifold vertex has no limit mask at all: the eigenvalues are not the story, the
+    // place is (the first non-manifold edge or vertex, and its repair).
+    if (!level.manifold())
+      throw Error(fmt::format("scheme {} has no limit mask at the non-manifold places of this mesh, where no limit "
+                              "point is defined: {}{}",
+                              subdiv::quoted(tail.name), non_manifold_place(level),
+                              prefix.empty() ? "" : " (on the level after the sequence's first schemes)"));
     throw Error(fmt::format(
         "scheme {} has no limit mask for this mesh; every candidate was refused:{}\n  {}`subdiv analyze {}` "
         "shows the eigenvalues behind this.", subdiv::quoted(tail.name), list,

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "framework/util/error.h"
+#include "framework/util/input_file.h"
 #include "framework/util/quoted_text.h"
 
 namespace subdiv {
@@ -155,7 +156,7 @@ std::vector<std::uint8_t> parse_vertex_selection(const std::string& text, Index 
   auto flush = [&] {
     if (!cur.empty()) tokens.push_back(cur), lines.push_back(line), cur.clear();
   };
-  for (char c : text) {
+  for (char c : without_utf8_bom(text)) {
     if (c == '\n') {
       flush();
       comment = false;

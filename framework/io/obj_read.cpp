@@ -552,7 +552,8 @@ void ObjReader::check_creases_are_edges() const {
 
 MeshData read_obj(const fs::path& file) {
   const std::string text = read_whole_file(file);
-  if (std::optional<MeshData> mesh = parse_obj_fast(text, obj_chunks_for(text.size()))) return std::move(*mesh);
+  if (std::optional<MeshData> mesh = parse_obj_fast(without_utf8_bom(text), obj_chunks_for(text.size())))
+    return std::move(*mesh);
   return ObjReader(file).read(text);
 }
 

@@ -159,6 +159,11 @@ private:
 
 void check_stl_text(const fs::path& file, std::string_view bytes) {
   if (is_binary(bytes)) return check_binary(file, bytes);
+  if (without_utf8_bom(bytes).size() != bytes.size())
+    throw Error(fmt::format("{}: the file starts with a UTF-8 byte-order mark (bytes EF BB BF), which STL readers "
+                            "(OpenMesh's, ParaView's) take for a binary header; save the file without it (plain "
+                            "ASCII or UTF-8 without BOM)",
+                            escaped(file.string())));
   std::size_t start = 0;
   while (start < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[start]))) ++start;
   if (bytes.substr(start, 5) != "solid")

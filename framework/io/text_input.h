@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 
+#include "framework/util/input_file.h"
+
 namespace subdiv::io_detail {
 
 // Throws subdiv::Error "cannot open '<file>': no such file" (or: is a directory, a FIFO or
@@ -19,9 +21,10 @@ void require_readable(const std::filesystem::path& file);
 std::string read_whole_file(const std::filesystem::path& file);
 
 // Lines of a text, numbered from 1, without their line ending ("\n", "\r\n" or a lone "\r").
+// A byte-order mark at the start of the text is not part of the first line.
 class LineCursor {
 public:
-  explicit LineCursor(std::string_view text) : rest_(text), size_(text.size()) {}
+  explicit LineCursor(std::string_view text) : rest_(without_utf8_bom(text)), size_(text.size()) {}
   bool next(std::string_view& line);
   std::size_t line_number() const { return line_; }
   // The text after the current line (binary PLY data follows its text header).

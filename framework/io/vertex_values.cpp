@@ -14,7 +14,7 @@ namespace subdiv {
 std::vector<double> read_vertex_values(const std::string& file, const std::string& name, Index vertex_count) {
   const std::string text = read_input_file(file, "per-vertex values");
   std::vector<double> values;
-  std::istringstream lines(text);
+  std::istringstream lines{std::string(without_utf8_bom(text))};
   std::string line;
   for (int number = 1; std::getline(lines, line); ++number) {
     if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);

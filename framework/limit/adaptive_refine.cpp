@@ -18,6 +18,7 @@
 #include "framework/limit/adaptive_stage.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/scheme/scheme.h"
+#include "framework/topology/non_manifold_place.h"
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
 #include "framework/util/parallel_for_all.h"
@@ -307,8 +308,8 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& input, std::span
   if ((options.limit || options.tolerance > 0) && !options.surface)
     throw Error("adaptive refinement: limit positions and a tolerance need the limit surface's evaluator");
   if (!base.manifold())
-    throw Error("adaptive refinement: the mesh is not manifold (an edge with more than two faces, or a vertex "
-                "where two fans of faces meet); refine it uniformly");
+    throw Error(fmt::format("adaptive refinement needs a manifold mesh, but {}; or refine it uniformly",
+                            non_manifold_place(base)));
   const bool triangles = split == SplitKind::Triangle;
   const SchemeRun run{&scheme, 1};
   const int ghosts = ghost_rings({&run, 1});

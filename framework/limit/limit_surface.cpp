@@ -34,6 +34,7 @@
 #include "framework/limit/face_domain.h"
 #include "framework/scheme/step_tables.h"
 #include "framework/scheme/scheme.h"
+#include "framework/topology/non_manifold_place.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
 
@@ -1131,8 +1132,8 @@ LimitSurface::LimitSurface(std::vector<LimitHeadRun> head, std::shared_ptr<const
   if (!tail) throw Error("no scheme given for the limit surface");
   if (const std::string why = limit_surface_unsupported(*tail); !why.empty()) throw Error(why);
   if (!base.manifold())
-    throw Error("the mesh is non-manifold (an edge with more than two faces, or a vertex where separate fans of "
-                "faces meet): limit evaluation at (face, u, v) needs a manifold mesh; split it into manifold parts");
+    throw Error(fmt::format("limit evaluation at (face, u, v) of a scheme sequence needs a manifold mesh, but {}",
+                            non_manifold_place(base)));
   impl_->scheme = tail;
   impl_->options = options;
   impl_->head = std::make_unique<SequenceHead>(std::move(head), base, options.features);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fmt/format.h>
 
+#include "framework/topology/non_manifold_place.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -46,9 +47,8 @@ std::vector<std::vector<Index>> boundary_loops(const Level& level) {
 
 std::vector<Index> disc_boundary_loop(const Level& level, const std::string& source) {
   if (!level.manifold())
-    throw Error(fmt::format("{}: the mesh is not manifold (an edge with more than two faces, or faces meeting at a "
-                            "vertex only); Tutte's embedding needs a topological disc",
-                            source));
+    throw Error(fmt::format("{}: Tutte's embedding needs a topological disc, but the mesh is not manifold: {}",
+                            source, non_manifold_place(level)));
   for (Index v = 0; v < level.vertex_count; ++v)
     if (level.incident_face_count(v) == 0)
       throw Error(fmt::format("{}: vertex {} (counted from 0) is on no face; remove unused vertices first", source, v));

@@ -94,7 +94,9 @@ LimitSelectionOptions selection_options(const InterpolateRequest& r) {
 
 // The checked limit masks of the sequence at `base`; a one-off first step on its own (Lin
 // et al. 2015's shape step) has no limit, and the message says how to run it.
-LimitChoice surface_limit(const SchemeSequence& seq, const Level& base, const LimitSelectionOptions& options) {
+// Its other refusals name the mesh, which the masks were refused on.
+LimitChoice surface_limit(const SchemeSequence& seq, const Level& base, const LimitSelectionOptions& options,
+                          const std::string& mesh_name) {
   try {
     return select_limit(seq, base, options);
   } catch (const Error& e) {
@@ -103,7 +105,8 @@ LimitChoice surface_limit(const SchemeSequence& seq, const Level& base, const Li
                                     "make it the first run of a sequence, {{scheme}} {}:1,S, with S the scheme that "
                                     "repeats",
                                     e.what(), subdiv::quoted(seq.schemes[0]->name), seq.schemes[0]->name));
-    throw;
+    if (dynamic_cast<const OptionError*>(&e)) throw;  // about the request's options, not the mesh
+    throw Error(fmt::format("{}: {}", mesh_name, e.what()));
   }
 }
 
@@ -164,7 +167,7 @@ LimitOperator prepare_limit(const InterpolateRequest& r, InterpolateResult& out)
   out.base = level_from_mesh(r.mesh, r.mesh_name);
   out.options = selection_options(r);
   say(r, "finding the limit masks");
-  const LimitChoice choice = surface_limit(out.sequence, out.base, out.options);
+  const LimitChoice choice = surface_limit(out.sequence, out.base, out.options, r.mesh_name);
   return {choice.evaluator->limit_stencils(out.base, r.start_level), choice.description};
 }
 

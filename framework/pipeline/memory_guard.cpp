@@ -27,8 +27,14 @@ double finest_faces(const Scheme& scheme, const Level& base, int levels) {
   return faces;
 }
 
+// MiB, GiB, then TiB and PiB, so that 30 levels of a cube read "1.84e+06 PiB", not
+// "1932735283200.0 GiB".
 std::string size_text(double bytes) {
-  return bytes >= double(1 << 30) ? fmt::format("{:.1f} GiB", bytes / (1 << 30)) : fmt::format("{:.1f} MiB", bytes / (1 << 20));
+  constexpr double kGiB = double(1 << 30), kTiB = 1024 * kGiB, kPiB = 1024 * kTiB;
+  if (bytes >= 1024 * kPiB) return fmt::format("{:.3g} PiB", bytes / kPiB);
+  if (bytes >= kPiB) return fmt::format("{:.1f} PiB", bytes / kPiB);
+  if (bytes >= kTiB) return fmt::format("{:.1f} TiB", bytes / kTiB);
+  return bytes >= kGiB ? fmt::format("{:.1f} GiB", bytes / kGiB) : fmt::format("{:.1f} MiB", bytes / (1 << 20));
 }
 
 }  // namespace

@@ -41,14 +41,8 @@ std::vector<std::string_view> split(std::string_view line, char separator) {
   return fields;
 }
 
-// Spreadsheets save "CSV UTF-8" with a byte-order mark before the header; it is no field.
-std::string_view without_byte_order_mark(std::string_view line) {
-  constexpr std::string_view mark = "\xEF\xBB\xBF";
-  return line.substr(0, mark.size()) == mark ? line.substr(mark.size()) : line;
-}
-
 bool is_header(std::string_view line) {
-  const std::vector<std::string_view> fields = split(without_byte_order_mark(line), ',');
+  const std::vector<std::string_view> fields = split(without_utf8_bom(line), ',');
   return fields.size() == 3 && trimmed(fields[0]) == "face" && trimmed(fields[1]) == "u" && trimmed(fields[2]) == "v";
 }
 

@@ -27,10 +27,6 @@
 namespace subdiv {
 namespace {
 
-// Level-dependent state is computed level by level up to the start level: a bound keeps
-// that finite, and no refinement history is longer than this.
-constexpr int kMaxStartLevel = 100;
-
 void say(const RefineRequest& r, const std::string& phase) {
   if (r.progress) r.progress(phase);
 }

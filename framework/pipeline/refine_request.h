@@ -40,6 +40,10 @@ struct ShapeChoices {
   bool smooth_triangles = false;
 };
 
+// The largest start level (RefineRequest::start_level): level-dependent state is computed
+// level by level up to it, and no refinement history is longer. Every front-end's range.
+constexpr int kMaxStartLevel = 100;
+
 struct RefineRequest {
   // The mesh: read from `mesh_file` (any format io/mesh_read.h reads) when it is given, after
   // the scheme is loaded; otherwise `mesh`, with its tags and point/cell/face-varying arrays.

@@ -20,6 +20,12 @@ constexpr const char* kFormulaHelp =
     "functions such as cos, sqrt, min, max, the functions binom(a, b), floor, ceil, mod(a, b), "
     "and the constant pi";
 
+// State variables are followed level by level from l = 0 and kept for every level, so a
+// level of 2^31 would take minutes and gigabytes before the first weight. Refinement stops at
+// level 130 (30 levels after a start level of at most 100); a million levels is far past
+// where a non-stationary scheme's state has settled to round-off.
+constexpr double kMaxStateLevel = 1'000'000;
+
 bool whole(double x) { return std::isfinite(x) && x == std::floor(x); }
 
 double floor_fn(double x) { return std::floor(x); }
@@ -106,6 +112,13 @@ struct FormulaSet::Impl {
                               shortened(e.GetMsg(), 2 * kQuotedTextChars),
                               kFormulaHelp));
     }
+    // GetUsedVar lists a name nothing defines with no storage. Said here, when the scheme is
+    // loaded, rather than as muParser's "Unexpected token" at the first valence evaluated.
+    for (const auto& [name, ptr] : parser->GetUsedVar())
+      if (ptr == nullptr)
+        throw Error(fmt::format("{}: formula {} uses {}, which is not defined: declare it under \"parameters\" "
+                                "(with a default) or \"definitions\" (before this use), or correct its spelling. {}",
+                                where, subdiv::quoted(shortened(expression)), subdiv::quoted(name), kFormulaHelp));
     // State variables change with the level: a formula that reads one depends on l.
     for (const auto& [name, ptr] : parser->GetUsedVar())
       for (size_t i = 0; i < visible_state; ++i) uses.l |= state_names[i] == name;
@@ -156,6 +169,12 @@ struct FormulaSet::Impl {
     if (state_names.empty()) return;
     if (!whole(level_value) || level_value < 0)
       throw Error(fmt::format("state variables are defined on whole levels l >= 0, not l = {}", level_value));
+    if (level_value > kMaxStateLevel)
+      throw Error(fmt::format("{}: state variable {} is followed level by level from l = 0, and level {} is beyond "
+                              "the {} levels that are followed; ask for a level up to {} (the state has settled "
+                              "long before)",
+                              state_wheres[0], subdiv::quoted(state_names[0]), level_value, kMaxStateLevel,
+                              kMaxStateLevel));
     const size_t level = size_t(level_value);
     const double saved_l = l;
     try {

@@ -171,6 +171,21 @@ double corner_rule_sum(const CompiledRule& rule, const CornerConfig& c, std::str
   return sum;
 }
 
+// The refusal of a rule whose weights at `at` do not sum to 1. A sum that is not a number
+// or infinite comes from a formula outside its domain at that size, which reads nothing
+// like a wrong weight ("sum to -nan") to the scheme's author: said as such, with the fix.
+std::string not_affine(const std::string& where, double sum, const std::string& at, const std::string& at_parameters) {
+  if (!std::isfinite(sum))
+    return fmt::format("{}: the weights at {}{} are not finite numbers (they sum to {}): a formula divides by zero or "
+                       "leaves its domain there (sqrt or log of a negative number, acos beyond 1); guard that case "
+                       "in the formula (for example n == 6 ? a : b){}",
+                       where, at, at_parameters, std::isnan(sum) ? std::string("NaN") : fmt::format("{}", sum),
+                       at_parameters.empty() ? "" : ", or leave the parameter's value out of its range (\"min_exclusive\", "
+                                                    "\"max_exclusive\")");
+  return fmt::format("{}: weights sum to {} at {}{}, not 1 (every rule must be affine)", where, sum, at,
+                     at_parameters);
+}
+
 void check_corner_rule(const CompiledRule& rule, const std::string& where, int lo, int hi, ValidationReport& report,
                        const std::string& at_parameters) {
   for (const CornerConfig& c : corner_configs(lo, hi)) {
@@ -179,8 +194,7 @@ void check_corner_rule(const CompiledRule& rule, const std::string& where, int l
     const double sum = corner_rule_sum(rule, c, asymmetric);
     if (!std::isfinite(sum) || std::abs(sum - 1) > 1e-9) {
       report.errors.push_back(
-          {fmt::format("{}: weights sum to {} at {}{}, not 1 (every rule must be affine)", where, sum, c.describe(),
-                       at_parameters)});
+          {not_affine(where, sum, c.describe(), at_parameters)});
       return;
     }
     if (!asymmetric.empty()) {
@@ -261,8 +275,7 @@ void check_crease_ends(const Scheme& scheme, const StepRules& step, const Weight
       ++report.checks;
       const double sum = rule_sum(compiled, {n, 4, 0, 0}, Element::Vertex);
       if (!std::isfinite(sum) || std::abs(sum - 1) > 1e-9) {
-        report.errors.push_back({fmt::format("{}: weights sum to {} at n={}{}, not 1 (every rule must be affine)", where,
-                                             sum, n, at_parameters)});
+        report.errors.push_back({not_affine(where, sum, fmt::format("n={}", n), at_parameters)});
         break;
       }
     }
@@ -294,8 +307,7 @@ void check_step(const Scheme& scheme, const StepRules& step, const std::string& 
                                : Element(e) == Element::Vertex ? fmt::format("n={}", s.n)
                                                                : fmt::format("k={}", s.k);
         if (!std::isfinite(sum) || std::abs(sum - 1) > 1e-9) {
-          report.errors.push_back({fmt::format("{}: weights sum to {} at {}{}, not 1 (every rule must be affine)", where,
-                                               sum, at, at_parameters)});
+          report.errors.push_back({not_affine(where, sum, at, at_parameters)});
           reported = true;
         } else if (std::string why = asymmetry(rule, s, Element(e)); !why.empty()) {
           report.errors.push_back({fmt::format("{}: {} at {}{}", where, why, at, at_parameters)});

@@ -64,4 +64,8 @@ std::string read_input_file(const fs::path& file, std::string_view what, std::ui
   return std::move(bytes).str();
 }
 
+std::string_view without_utf8_bom(std::string_view text) {
+  return text.starts_with("\xEF\xBB\xBF") ? text.substr(3) : text;
+}
+
 }  // namespace subdiv

@@ -17,6 +17,13 @@ void check_input_file(const std::filesystem::path& file, std::string_view what);
 // regular file is, for messages (the output writers refuse such targets too).
 const char* file_type_name(std::filesystem::file_type type);
 
+// `text` without the UTF-8 byte-order mark (EF BB BF) that Windows editors and spreadsheets
+// ("CSV UTF-8") put at the start of text files. Left in, the mark glues itself to the first
+// word ("\xEF\xBB\xBFv", "\xEF\xBB\xBF0"), which is then skipped or refused in words that
+// show nothing wrong. The text readers (OBJ, OFF, PLY, per-vertex values, vertex
+// selections, the points CSV) take it off; the STL check names it.
+std::string_view without_utf8_bom(std::string_view text);
+
 // The whole file, after check_input_file; throws subdiv::Error on read errors. A file of
 // more than `max_bytes` is refused with its size before a byte is read (scheme and feature
 // files are small; a 1 GB sparse file was read whole before the first check).

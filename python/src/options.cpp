@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "bindings.h"
+#include "framework/pipeline/refine_request.h"
 
 namespace subdivkit {
 
@@ -45,7 +46,10 @@ void check_levels(int levels) {
 subdiv::RefineOptions refine_options(const std::string& boundary, const std::string& crease_method, int threads,
                                      int first_step) {
   if (threads < 0) throw subdiv::Error(fmt::format("threads={}: give 0 (all cores) or more", threads));
-  if (first_step < 0) throw subdiv::Error(fmt::format("start_level={}: give 0 or more", first_step));
+  // As refine's (the pipeline's) range: Evaluator and stencils build their options here, and a
+  // start level near 2^31 overflowed the step count of a split that alternates (sqrt3).
+  if (first_step < 0 || first_step > subdiv::kMaxStartLevel)
+    throw subdiv::Error(fmt::format("start_level={}: give 0 to {}", first_step, subdiv::kMaxStartLevel));
   subdiv::RefineOptions o;
   o.features.boundary = boundary_from(boundary);
   o.features.crease_method = crease_method_from(crease_method);
@@ -63,6 +67,8 @@ subdiv::SurfaceAnalysisOptions analysis_options(const std::string& boundary, int
 }
 
 subdiv::LimitOptions limit_options(const std::string& boundary, const std::string& crease_method, int first_step) {
+  if (first_step < 0 || first_step > subdiv::kMaxStartLevel)
+    throw subdiv::Error(fmt::format("start_level={}: give 0 to {}", first_step, subdiv::kMaxStartLevel));
   subdiv::LimitOptions o;
   o.features.boundary = boundary_from(boundary);
   o.features.crease_method = crease_method_from(crease_method);

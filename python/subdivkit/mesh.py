@@ -334,6 +334,8 @@ def _data_arrays(data, roles, rows, what):
     """
     arrays = []
     for key, values in (data or {}).items():
+        if not str(key):  # a .vtp array without a name cannot be written, nor told apart when read
+            raise Error(f"{what}: an array has the empty name ''; give it a name")
         a = np.asarray(values)
         if a.dtype.kind not in "fiub":
             raise Error(f"{what} {_quoted(key)}: expected numbers, got dtype {a.dtype}")

@@ -261,8 +261,11 @@ class Evaluator:
         (n_points, c), or (n_points,). Raises subdivkit.Error for other shapes and for NaN
         or infinite values (which refinement would spread to the neighbours).
         """
+        return self._evaluate(points, "Evaluator.evaluate")
+
+    def _evaluate(self, points, what):
+        """evaluate(), its refusals naming `what`: the method the user called."""
         a = np.asarray(points)
-        what = "Evaluator.evaluate"
         if a.dtype.kind not in "fiu":
             raise Error(f"{what}: expected numbers, got an array of dtype {a.dtype}")
         if a.ndim not in (1, 2) or (a.ndim == 2 and a.shape[1] == 0):
@@ -286,7 +289,7 @@ class Evaluator:
             raise Error(f"Evaluator.mesh: a Mesh needs points of shape ({self.n_base_points}, 3), got {shape}; "
                         "evaluate() carries other data")
         arrays = {key: np.array(getattr(self._finest, key)) for key in _MESH_ARRAYS if key != "points"}
-        arrays["points"] = self.evaluate(points)
+        arrays["points"] = self._evaluate(points, "Evaluator.mesh")
         return Mesh._from_arrays(arrays, name=self.name)
 
     def __repr__(self):

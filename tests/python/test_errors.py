@@ -279,3 +279,16 @@ def test_reprs_and_labels_escape_the_mesh_name(cube_path):
     with pytest.raises(sk.Error) as e:
         sk.Mesh([[0.0, 0.0]], [[0, 0, 0]], name=HOSTILE)
     _assert_no_control_bytes(str(e.value))
+
+
+def test_a_data_array_without_a_name_is_refused_before_refinement(tmp_path):
+    """An array named '' would be refined and then refused by every writer (a .vtp array needs
+    a name): refused where it is given, with no file written."""
+    cube = sk.read_mesh(MESHES / "cube.obj")
+    nameless = sk.Mesh(cube.points, cube.face_indices, face_offsets=cube.face_offsets,
+                       point_data={"": np.zeros(cube.n_points)})
+    with pytest.raises(sk.Error, match=r"^point data: an array has the empty name ''; give it a name"):
+        sk.refine(nameless, "catmull-clark", 1)
+    with pytest.raises(sk.Error, match=r"^point data: an array has the empty name ''"):
+        sk.write_mesh(tmp_path / "out.vtp", nameless)
+    assert not (tmp_path / "out.vtp").exists()

@@ -172,6 +172,9 @@ def test_bad_points_are_refused_with_the_reason():
         ev.evaluate(bad)
     with pytest.raises(sk.Error, match=r"a Mesh needs points of shape \(8, 3\), got \(8, 2\)"):
         ev.mesh(cube.points[:, :2])
+    # mesh()'s refusals name mesh(), the method called, not the evaluate() it calls.
+    with pytest.raises(sk.Error, match=r"^Evaluator\.mesh: 3 rows for a base mesh of 8 points"):
+        ev.mesh(cube.points[:3])
     # A refused call leaves the evaluator as it was.
     assert np.array_equal(ev.evaluate(cube.points), sk.refine(cube, "catmull-clark", 2).points)
 

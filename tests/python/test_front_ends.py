@@ -114,9 +114,18 @@ def test_unused_vertices_are_dropped_by_both_front_ends_with_a_warning(tmp_path)
 def test_option_errors_speak_each_front_ends_language():
     cube = sk.read_mesh(str(MESHES / "cube.obj"))
     # The pipeline refuses the start level; Python names its keyword, not the CLI's option.
-    with pytest.raises(sk.Error, match="start_level 200: give 0 to 100") as python_error:
+    with pytest.raises(sk.Error, match="start_level[ =]200: give 0 to 100") as python_error:
         sk.refine(cube, "catmull-clark", 1, start_level=200)
     assert "--" not in str(python_error.value)
+    # Evaluator, stencils and limit_positions take the same range (a start level near 2^31
+    # overflowed the step count of sqrt3's alternating boundary rule).
+    octahedron = sk.read_mesh(str(MESHES / "octahedron.obj"))
+    for call in (lambda: sk.Evaluator(octahedron, "sqrt3", 2, start_level=2**31 - 1),
+                 lambda: sk.stencils(octahedron, "sqrt3", 2, start_level=101),
+                 lambda: sk.limit_positions(octahedron, "loop", start_level=2**31 - 1)):
+        with pytest.raises(sk.Error, match=r"^start_level=\d+: give 0 to 100$"):
+            call()
+    assert sk.Evaluator(octahedron, "sqrt3", 2, start_level=100).n_faces == 72
     # A level-count mismatch of a sequence: the CLI names its options.
     message = cli_error("refine", MESHES / "cube.obj", "-s", "catmull-clark:1,loop:1", "-l", 3, "-o", "x.obj")
     assert "--scheme 'catmull-clark:1,loop:1' runs 2 level(s), but --levels asks for 3" in message

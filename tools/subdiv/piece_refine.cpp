@@ -46,10 +46,19 @@ PieceCounts refine_piece(const PieceJob& job, const SchemeSequence& seq, const M
                          const RefineOptions& options, const RefinePieceData& refine_data,
                          const std::vector<int>& owner, int piece, int rings, StagedFiles& staged) {
   const MeshPiece cut = cut_piece(base, owner, piece, rings);
+  // More pieces help only while one face's share fits: past that only fewer levels do.
+  const double budget = job.max_memory > 0 ? std::min(job.max_memory, available_memory_bytes()) : available_memory_bytes();
+  const double per_face = refinement_bytes(*seq.schemes.front(), cut.level, seq.total_levels) /
+                          std::max(1.0, double(cut.level.face_count()));
   check_fits_in_memory(*seq.schemes.front(), cut.level, seq.total_levels, job.max_memory,
-                       fmt::format("piece {} with its {} ghost ring(s) has {} faces; ask for more --pieces (or a "
-                                   "larger --max-memory) or fewer levels",
-                                   piece, rings, cut.level.face_count()));
+                       per_face > budget
+                           ? fmt::format("piece {} with its {} ghost ring(s) has {} faces, and even one face refined "
+                                         "{} levels would not fit: no number of pieces helps; ask for fewer levels{}",
+                                         piece, rings, cut.level.face_count(), seq.total_levels,
+                                         job.max_memory > 0 ? " or a larger --max-memory" : "")
+                           : fmt::format("piece {} with its {} ghost ring(s) has {} faces; ask for more --pieces (or a "
+                                         "larger --max-memory) or fewer levels",
+                                         piece, rings, cut.level.face_count()));
   const RefineOptions o = piece_options(options, cut);
   const Hierarchy h = refine_topology(seq.runs, cut.level, o);
   std::vector<LevelData> levels = refine_data(h, piece_data(mesh, cut), o);

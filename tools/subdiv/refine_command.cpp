@@ -53,8 +53,7 @@ struct RefineArgs {
   bool in_pieces() const { return pieces_given || !max_memory.empty(); }
 };
 
-// --start-level's range; the pipeline refuses the same in its own words.
-constexpr int kMaxStartLevel = 100;
+// --start-level's range is the pipeline's kMaxStartLevel, which refuses the same in its own words.
 
 // The command line's options as a pipeline request (framework/pipeline/refine_request.h).
 RefineRequest refine_request(const RefineArgs& a, const OutputChoice& output, Progress& progress) {

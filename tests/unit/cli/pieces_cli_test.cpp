@@ -169,7 +169,10 @@ TEST_CASE("bad piece options are refused by name, with no output left behind") {
       {cube + " -o " + (dir / "a.pvtp").string(), "add --pieces N"},
       {cube + " --pieces 2 --limit -o " + (dir / "a.pvtp").string(), "--limit cannot be combined"},
       {cube + " --max-memory lots -o " + (dir / "a.pvtp").string(), "--max-memory 'lots' is not a memory size"},
-      {cube + " -l 8 --pieces 2 --max-memory 1M -o " + (dir / "a.pvtp").string(), "ask for more --pieces"},
+      {cube + " -l 5 --pieces 2 --max-memory 1M -o " + (dir / "a.pvtp").string(), "ask for more --pieces"},
+      // One face refined 8 levels needs about 19 MiB: more pieces cannot help.
+      {cube + " -l 8 --pieces 2 --max-memory 1M -o " + (dir / "a.pvtp").string(),
+       "no number of pieces helps; ask for fewer levels or a larger --max-memory"},
   };
   for (const Bad& b : bad) {
     CAPTURE(b.args);

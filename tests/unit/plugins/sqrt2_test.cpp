@@ -111,6 +111,6 @@ TEST_CASE("a plugin's split that does not opt in refuses a non-manifold mesh, na
   RefineOptions options;
   options.levels = 1;
   CHECK_THROWS_WITH_AS(refine(*scheme, m.level(), options),
-                       doctest::Contains("uses the 'sqrt2' split, which needs a manifold mesh, but edge (0, 1) has 3 faces"),
+                       doctest::Contains("uses the 'sqrt2' split, which needs a manifold mesh, but edge 0-1 has 3 faces (0, 1, 2)"),
                        Error);
 }

@@ -1,6 +1,6 @@
 // Every mistake in a scheme file is reported at its place: FILE:LINE: json.path: ... —
 // references to other schemes (a "curve" name, a part of a scheme sequence), a definition
-// holding a bad token (named, with the rule that read it), JSON values of the wrong type
+// holding an unknown name (named, with the fix), JSON values of the wrong type
 // (said in words), and rules that are not affine at the valence a mesh asks for (named as
 // `subdiv validate` names them).
 #include <doctest/doctest.h>
@@ -98,15 +98,15 @@ TEST_CASE("a part of a scheme sequence that fails is named within the sequence")
   CHECK(contains(m, "scheme sequence 'loop:1,catmul-clark', part 'catmul-clark': unknown scheme 'catmul-clark'"));
 }
 
-TEST_CASE("a bad token in a definition is blamed on the definition, naming the rule that read it") {
+TEST_CASE("an unknown name in a definition is blamed on the definition, with the fix") {
   const fs::path file = write_scheme(
       "definition-typo",
       quad_scheme("\"curve\": \"cubic-bspline\",\n\"definitions\": {\n  \"c\": \"tt\",\n  \"a\": \"1 - c/n\"},\n",
                   R"([{"at": "self", "w": "a"}, {"sum": "ring", "w": "c/n^2"}])"));
   const std::string m = load_error(file);
   INFO(m);
-  CHECK(contains(m, file.string() + ":6: definitions.c: definition 'c' = 'tt' fails to evaluate"));
-  CHECK(contains(m, "while evaluating " + file.string() + ": rules.vertex[0]"));
+  CHECK(contains(m, file.string() + ":6: definitions.c: formula 'tt' uses 'tt', which is not defined: declare it "
+                   "under \"parameters\" (with a default) or \"definitions\""));
   // A typo that muParser finds while compiling is placed the same way.
   const fs::path compiled = write_scheme(
       "definition-syntax",

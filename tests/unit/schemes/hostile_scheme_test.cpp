@@ -128,3 +128,38 @@ TEST_CASE("subdiv validate: valence ranges are checked before any work") {
   CHECK_THROWS_AS(validate_scheme_file("loop", -1, 4), Error);
   CHECK_THROWS_AS(validate_scheme_file("loop", 3, 1000000), Error);
 }
+
+TEST_CASE("a first-day author's mistakes: a name never declared, a formula undefined at one valence") {
+  // A parameter used but not declared: refused when the file loads, at the formula's line, with the fix.
+  const fs::path undeclared = write_scheme("undeclared", loop_with_definitions(R"x({"beta": "3/(8*n) + tau"})x"));
+  const std::string m = load_error(undeclared);
+  CHECK(contains(m, undeclared.string() + ":2: definitions.beta: formula '3/(8*n) + tau' uses 'tau', which is not "
+                    "defined: declare it under \"parameters\" (with a default) or \"definitions\""));
+  CHECK_FALSE(contains(m, "Unexpected token"));
+  const CliResult r = run_subdiv("validate " + undeclared.string());
+  CHECK(r.exit_code == 1);
+  CHECK(contains(r.output, "uses 'tau', which is not defined"));
+
+  // 1/(n-6) - 1/(n-6) is 0 everywhere but at n = 6, where it is NaN: validate names the
+  // valence and the cause, not a weight sum of "-nan".
+  const fs::path pole = write_scheme("pole", loop_with_definitions(R"x({"beta": "3/(8*n) + 1/(n-6) - 1/(n-6)"})x"));
+  const CliResult v = run_subdiv("validate " + pole.string());
+  CHECK(v.exit_code == 1);
+  CHECK_MESSAGE(contains(v.output, pole.string() + ":4: rules.vertex (smooth): the weights at n=6 are not finite "
+                                   "numbers (they sum to NaN): a formula divides by zero or leaves its domain there"),
+                v.output);
+  CHECK_FALSE(contains(v.output, "nan,"));
+}
+
+TEST_CASE("a level of 2^31 for a scheme with state is refused at once, not followed level by level") {
+  // tension-bspline's alpha_k is a recurrence from l = 0; following it to 2^31 took minutes
+  // and gigabytes (it was stopped after 100 s); `timeout` turns a return of that into a failure.
+  const CliResult r = run_subdiv_with_prefix("timeout 60 ", "analyze tension-bspline --level 2147483647");
+  CHECK(r.exit_code == 1);
+  CHECK_MESSAGE(contains(r.output, "tension-bspline.json: state.alpha.initial: state variable 'alpha' is followed level "
+                                   "by level from l = 0, and level 2147483647 is beyond the 1000000 levels"),
+                r.output);
+  CHECK(contains(r.output, "ask for a level up to 1000000"));
+  // The largest level followed still works.
+  CHECK(run_subdiv("analyze tension-bspline --level 1000000").exit_code == 0);
+}
