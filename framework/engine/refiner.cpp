@@ -88,17 +88,18 @@ void pass_holes_down(const Level& parent, SplitResult& step) {
 
 }  // namespace
 
-void check_face_sizes(const Scheme& scheme, const Level& base) {
+void check_face_sizes(const Scheme& scheme, const Level& base, std::string_view mesh_name, int level) {
   const int needed = needed_face_size(scheme);
   if (!needed || base.all_faces_have_size(needed)) return;  // in parallel; the loop below names the first
+  const std::string of = level == 0 ? "the mesh" : fmt::format("level {} (made by the schemes before it)", level);
   for (Index f = 0; f < base.face_count(); ++f)
     if (base.face_size(f) != needed)
-      throw OptionError(fmt::format("{}: scheme {} needs {}, but face {} of the mesh has {} vertices; "
+      throw OptionError(fmt::format("{}: scheme {} needs {}, but face {} of {} has {} vertices; "
                                     "{} the mesh first or choose a scheme for any polygons ({{scheme_list}} "
                                     "lists them)",
-                              scheme.path, subdiv::quoted(scheme.name),
+                              mesh_name.empty() ? std::string_view(scheme.path) : mesh_name, subdiv::quoted(scheme.name),
                               needed == 3 ? "triangles" : needed == 4 ? "quads" : fmt::format("{}-gons", needed), f,
-                              base.face_size(f), needed == 3 ? "triangulate" : needed == 4 ? "quadrangulate" : "remesh"));
+                              of, base.face_size(f), needed == 3 ? "triangulate" : needed == 4 ? "quadrangulate" : "remesh"));
 }
 
 namespace {
@@ -127,7 +128,7 @@ bool add_level(const std::vector<const Scheme*>& per_level, Hierarchy& h, const 
   const int made = int(l) + 1;
   StageTimes* times = options.evaluation.stage_times;
   std::optional<StageTimer> timer(std::in_place, times, stage(options, made, "face and manifold checks"));
-  if (l == 0 || per_level[l - 1] != per_level[l]) check_face_sizes(scheme, h.levels.back());
+  if (l == 0 || per_level[l - 1] != per_level[l]) check_face_sizes(scheme, h.levels.back(), {}, int(l));
   check_manifold_for(scheme, h.levels.back());
   // The last level may be faces only (RefineOptions::faces_only_last_level): then it
   // has no edges to carry tags to.

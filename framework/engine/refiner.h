@@ -5,6 +5,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "framework/refine/child_origins.h"
@@ -104,8 +105,10 @@ struct Hierarchy {
 
 // Throws subdiv::OptionError naming the first face whose size the scheme cannot refine (a
 // triangle scheme on quads) and the fix; refinement checks it, and so does whatever takes a
-// mesh for a scheme without refining it first (the limit surface).
-void check_face_sizes(const Scheme& scheme, const Level& base);
+// mesh for a scheme without refining it first (the limit surface). The message starts with
+// `mesh_name` (the mesh's file or name, where the caller knows it), else with the scheme's
+// file; `level` > 0: the faces are those of that level (a sequence's later scheme).
+void check_face_sizes(const Scheme& scheme, const Level& base, std::string_view mesh_name = {}, int level = 0);
 
 // Refines topology only (levels and origins), as OpenSubdiv's RefineUniform does.
 Hierarchy refine_topology(const Scheme& scheme, Level base, const RefineOptions& options);

@@ -212,7 +212,7 @@ PreparedEvaluation prepare_evaluation(EvaluateRequest request) {
   out.request_vertex_count = r.mesh.vertex_count();
   out.request_vertex = used_vertices(r.mesh);
   PreparedRefinement p = prepare_refinement(r);
-  check_face_sizes(*p.sequence.schemes.front(), p.base);  // a triangle scheme on quads, as refinement says it
+  check_face_sizes(*p.sequence.schemes.front(), p.base, out.mesh_name);  // as refinement says it
   LimitSurfaceOptions options;
   options.features = p.options.features;
   if (request.progress) request.progress("preparing the limit surface");

@@ -329,6 +329,9 @@ PreparedRefinement prepare_refinement(RefineRequest& r) {
                                   r.mesh_name));
   find_weights(r, p);
   p.base = tagged_base(r, p.mesh, p.notes);
+  // A triangle scheme on quads: named with the mesh's file or name here (the engine checks
+  // every level again, naming the scheme's file).
+  if (!r.mesh_name.empty()) check_face_sizes(*p.sequence.schemes.front(), p.base, r.mesh_name);
   p.options.levels = p.sequence.total_levels;
   p.options.features = feature_options(r.shape, p.mesh.options);
   p.options.first_step = r.start_level;

@@ -153,3 +153,14 @@ TEST_CASE("--adaptive -l L is --adaptive L; two different levels are refused") {
   check_refused("refine " + cube + " --adaptive 3 -l 2", dir / "two.obj", "--adaptive 3 and -l 2 ask for two finest levels");
   check_refused("refine " + cube + " --adaptive -l 13", dir / "deep.obj", "adaptive refinement goes to level 12 at most");
 }
+
+TEST_CASE("a triangle scheme on quads is refused naming the mesh file, or the level a sequence's earlier scheme made") {
+  const auto dir = fresh_dir("cli-face-sizes");
+  const std::string cube = source_path("examples/meshes/cube.obj");
+  check_refused("refine " + cube + " -s loop", dir / "a.obj",
+                cube + ": scheme 'loop' needs triangles, but face 0 of the mesh has 4 vertices");
+  check_refused("evaluate " + cube + " -s loop --samples 2", dir / "b.vtp",
+                cube + ": scheme 'loop' needs triangles, but face 0 of the mesh has 4 vertices");
+  check_refused("refine " + cube + " -s catmull-clark:1,loop:1", dir / "c.obj",
+                "scheme 'loop' needs triangles, but face 0 of level 1 (made by the schemes before it) has 4 vertices");
+}

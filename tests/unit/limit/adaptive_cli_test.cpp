@@ -42,7 +42,7 @@ TEST_CASE("subdiv refine --adaptive refuses what it cannot do, leaving no file")
   const std::string mesh = test::source_path("examples/meshes/cube.obj");
   const std::string out = (dir / "x.obj").string();
   const char* bad[][2] = {
-      {"--adaptive 3 -l 3", "leave out -l"},
+      {"--adaptive 3 -l 2", "ask for two finest levels"},
       {"--adaptive 3 --tolerance -1", "--tolerance -1"},
       {"--adaptive 3 -s doo-sabin", "binary quad and triangle splits"},
       {"--adaptive 3 -s catmull-clark:1,loop", "sequence"},
