@@ -316,11 +316,11 @@ struct LimitSurface::Impl {
     if (const Entry* e = slot.load(std::memory_order_acquire)) return *e;
     bool regular = false;
     std::unique_ptr<Entry> made = make_entry(c, face, regular);
-    if (made->lattice && made->lattice->box)
-      for (size_t k = 0; k < size_t(kBoxSplineFunctions); ++k) {
-        const BoxSplineLabels& box = *made->lattice->box;
+    if (made->lattice && made->lattice->box) {
+      const BoxSplineLabels& box = *made->lattice->box;
+      for (size_t k = 0; k < size_t(kBoxSplineFunctions); ++k)
         made->box_vertices[k] = made->vertices[box.label[box.by_label[k]]];
-      }
+    }
     Entry* found = nullptr;
     if (!slot.compare_exchange_strong(found, made.get(), std::memory_order_acq_rel)) return *found;
     const Entry* e = made.release();
@@ -1256,19 +1256,6 @@ void clear_sample(LimitSample& s) {
   s.steps = 0;
 }
 
-// `from` copied into `to`, to's vectors' memory kept.
-void copy_sample(const LimitSample& from, LimitSample& to) {
-  to.position.assign(from.position.begin(), from.position.end());
-  to.du.assign(from.du.begin(), from.du.end());
-  to.dv.assign(from.dv.begin(), from.dv.end());
-  to.duu.assign(from.duu.begin(), from.duu.end());
-  to.duv.assign(from.duv.begin(), from.duv.end());
-  to.dvv.assign(from.dvv.begin(), from.dvv.end());
-  to.has_derivatives = from.has_derivatives;
-  to.has_second_derivatives = from.has_second_derivatives;
-  to.steps = from.steps;
-}
-
 }  // namespace
 
 LimitSample LimitSurface::evaluate(Index face, double u, double v, std::span<const double> values, int channels,
@@ -1319,8 +1306,8 @@ void LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> value
   // read, then their own descent.
   const auto by = [&](const auto& evaluator) {
     const std::vector<double> first = gathered(evaluator.reads(p), values, channels);
-    copy_sample(tbb::this_task_arena::isolate([&] { return evaluator.evaluate(p, first, channels, derivatives); }),
-                out);
+    // A sample made anyway: moved into `out` (its buffers taken, not copied).
+    out = tbb::this_task_arena::isolate([&] { return evaluator.evaluate(p, first, channels, derivatives); });
   };
   if (impl_->dual) return by(*impl_->dual);
   if (impl_->plugin) return by(*impl_->plugin);
@@ -1355,13 +1342,14 @@ void LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> value
       const CornerRows rows = impl_->triangles ? quartic_rows(*e->lattice, p.st, derivatives)
                                                : tensor_rows(e->lattice->lattice, p.st, derivatives);
       const std::vector<const StepMatrix*> path;
-      return copy_sample(Impl::finish(rows, p, first, channels, derivatives, path, first, 0, nullptr), out);
+      out = Impl::finish(rows, p, first, channels, derivatives, path, first, 0, nullptr);
+      return;
     }
   }
-  copy_sample(impl_->with_cache([&](Impl::Cache& cache) {
+  out = impl_->with_cache([&](Impl::Cache& cache) {
     const std::vector<double> first = gathered(impl_->reads(cache, p), values, channels);
     return impl_->descend(cache, p, first, channels, derivatives);
-  }), out);
+  });
 }
 
 LimitStencil LimitSurface::stencil(Index face, double u, double v, int derivatives) const {

@@ -18,8 +18,9 @@ namespace subdiv {
 namespace {
 
 void check_request(const AdaptiveRequest& r) {
-  if (r.refine.levels < 0 || r.refine.levels > 12)
-    throw OptionError(fmt::format("{{levels}} {}: adaptive refinement goes to level 0 to 12", r.refine.levels));
+  if (r.refine.levels < 0 || r.refine.levels > kMaxAdaptiveLevel)
+    throw OptionError(fmt::format("{{levels}} {}: adaptive refinement goes to level 0 to {}", r.refine.levels,
+                                  kMaxAdaptiveLevel));
   if (!(r.tolerance >= 0) || !std::isfinite(r.tolerance))
     throw OptionError(fmt::format("{{tolerance}} {}: give a distance >= 0 (0: split only around features)",
                                   r.tolerance));

@@ -13,6 +13,9 @@
 
 namespace subdiv {
 
+// The deepest level adaptive refinement goes to (every front-end's range).
+constexpr int kMaxAdaptiveLevel = 12;
+
 struct AdaptiveRequest {
   RefineRequest refine;   // the mesh, scheme, shape options; `levels` is the cap L
   double tolerance = 0;   // > 0: also split faces farther than this from the limit surface

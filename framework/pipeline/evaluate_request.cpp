@@ -211,8 +211,7 @@ PreparedEvaluation prepare_evaluation(EvaluateRequest request) {
   out.mesh_name = r.mesh_name;
   out.request_vertex_count = r.mesh.vertex_count();
   out.request_vertex = used_vertices(r.mesh);
-  PreparedRefinement p = prepare_refinement(r);
-  check_face_sizes(*p.sequence.schemes.front(), p.base, out.mesh_name);  // as refinement says it
+  PreparedRefinement p = prepare_refinement(r);  // refuses a triangle scheme on quads, naming the mesh
   LimitSurfaceOptions options;
   options.features = p.options.features;
   if (request.progress) request.progress("preparing the limit surface");

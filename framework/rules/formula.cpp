@@ -112,16 +112,16 @@ struct FormulaSet::Impl {
                               shortened(e.GetMsg(), 2 * kQuotedTextChars),
                               kFormulaHelp));
     }
-    // GetUsedVar lists a name nothing defines with no storage. Said here, when the scheme is
-    // loaded, rather than as muParser's "Unexpected token" at the first valence evaluated.
-    for (const auto& [name, ptr] : parser->GetUsedVar())
+    for (const auto& [name, ptr] : parser->GetUsedVar()) {
+      // GetUsedVar lists a name nothing defines with no storage. Said here, when the scheme is
+      // loaded, rather than as muParser's "Unexpected token" at the first valence evaluated.
       if (ptr == nullptr)
         throw Error(fmt::format("{}: formula {} uses {}, which is not defined: declare it under \"parameters\" "
                                 "(with a default) or \"definitions\" (before this use), or correct its spelling. {}",
                                 where, subdiv::quoted(shortened(expression)), subdiv::quoted(name), kFormulaHelp));
-    // State variables change with the level: a formula that reads one depends on l.
-    for (const auto& [name, ptr] : parser->GetUsedVar())
+      // State variables change with the level: a formula that reads one depends on l.
       for (size_t i = 0; i < visible_state; ++i) uses.l |= state_names[i] == name;
+    }
     return parser;
   }
 

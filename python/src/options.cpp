@@ -43,13 +43,22 @@ void check_levels(int levels) {
   if (levels < 0 || levels > 30) throw subdiv::Error(fmt::format("levels={}: give 0 to 30 levels", levels));
 }
 
+namespace {
+
+// As refine's (the pipeline's) range: Evaluator, stencils and limit_positions build their
+// options here, and a start level near 2^31 overflowed the step count of a split that
+// alternates (sqrt3).
+void check_start_level(int first_step) {
+  if (first_step < 0 || first_step > subdiv::kMaxStartLevel)
+    throw subdiv::Error(fmt::format("start_level={}: give 0 to {}", first_step, subdiv::kMaxStartLevel));
+}
+
+}  // namespace
+
 subdiv::RefineOptions refine_options(const std::string& boundary, const std::string& crease_method, int threads,
                                      int first_step) {
   if (threads < 0) throw subdiv::Error(fmt::format("threads={}: give 0 (all cores) or more", threads));
-  // As refine's (the pipeline's) range: Evaluator and stencils build their options here, and a
-  // start level near 2^31 overflowed the step count of a split that alternates (sqrt3).
-  if (first_step < 0 || first_step > subdiv::kMaxStartLevel)
-    throw subdiv::Error(fmt::format("start_level={}: give 0 to {}", first_step, subdiv::kMaxStartLevel));
+  check_start_level(first_step);
   subdiv::RefineOptions o;
   o.features.boundary = boundary_from(boundary);
   o.features.crease_method = crease_method_from(crease_method);
@@ -67,8 +76,7 @@ subdiv::SurfaceAnalysisOptions analysis_options(const std::string& boundary, int
 }
 
 subdiv::LimitOptions limit_options(const std::string& boundary, const std::string& crease_method, int first_step) {
-  if (first_step < 0 || first_step > subdiv::kMaxStartLevel)
-    throw subdiv::Error(fmt::format("start_level={}: give 0 to {}", first_step, subdiv::kMaxStartLevel));
+  check_start_level(first_step);
   subdiv::LimitOptions o;
   o.features.boundary = boundary_from(boundary);
   o.features.crease_method = crease_method_from(crease_method);

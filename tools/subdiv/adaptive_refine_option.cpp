@@ -13,10 +13,6 @@
 
 namespace subdiv::cli {
 
-namespace {
-constexpr int kMaxAdaptiveLevel = 12;
-}
-
 void add_adaptive_options(CLI::App* cmd, AdaptiveArgs& a) {
   cmd->add_option("--adaptive", a.levels,
                   "Feature-adaptive refinement up to level L (--adaptive L, or --adaptive -l L): only faces "

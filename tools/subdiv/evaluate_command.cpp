@@ -284,7 +284,7 @@ void add_evaluate_command(CLI::App& app) {
                   "Instead of --at: the mesh refined to level L only where it is irregular (extraordinary vertices, "
                   "creases, sharp vertices, faces of another shape), watertight (coarse faces take the finer "
                   "vertices along their edges), with cell arrays face_level and base_face")
-      ->check(CLI::Range(0, 12));
+      ->check(CLI::Range(0, kMaxAdaptiveLevel));
   add_tolerance_option(cmd, args->tolerance);
   cmd->add_flag("--limit", args->limit, "With --adaptive: every vertex on the limit surface");
   cmd->add_option("--level-distance", args->level_distance,
