@@ -15,6 +15,7 @@
 #include "framework/engine/weight_table_cache.h"
 #include "framework/features/base_tags.h"
 #include "framework/limit/adaptive_face_varying.h"
+#include "framework/limit/adaptive_progress.h"
 #include "framework/limit/adaptive_stage.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/scheme/scheme.h"
@@ -333,8 +334,9 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& input, std::span
   AdaptiveMesh out;
   out.data_channels = data_channels;
   // A front-end's bar (util/step_progress.h): per level, choosing the faces and refining
-  // them; then the limit positions.
-  const size_t parts = 2 * size_t(levels) + (options.limit ? 1 : 0);
+  // them, each level's share sized by its faces; then the limit positions. Without a
+  // tolerance only the faces near features split, a band that about doubles per level.
+  AdaptiveProgress progress(levels, options.limit, options.tolerance > 0 || options.uniform ? 4.0 : 2.0);
   std::optional<AdaptiveTables> own_tables;
   if (options.tables && &options.tables->scheme() != &scheme)
     throw Error(fmt::format("adaptive refinement with scheme {}: the weight tables kept are scheme {}'s",
@@ -347,8 +349,10 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& input, std::span
     AdaptiveStage& s = stages.back();
     // A small level runs on this thread alone: its loops are shorter than handing them out.
     const bool small = s.level.face_count() < kSerialFaces;
+    const auto [level_begin, level_end] = progress.level_span(l, double(s.level.face_count()));
+    const double level_middle = (level_begin + level_end) / 2;
     {
-      const StepProgressScope::Report share = StepProgressScope::part(2 * size_t(l), parts);
+      const StepProgressScope::Report share = StepProgressScope::span(level_begin, level_middle);
       const StepProgressScope choosing(share);
       if (small && options.tolerance == 0) serial.execute([&] { choose_splits(s, triangles, options, positions); });
       else choose_splits(s, triangles, options, positions);
@@ -362,7 +366,7 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& input, std::span
     ro.features = options.features;
     ro.first_step = options.first_step + l;
     ro.evaluation.weight_tables = &tables.cache();
-    const StepProgressScope::Report share = StepProgressScope::part(2 * size_t(l) + 1, parts);
+    const StepProgressScope::Report share = StepProgressScope::span(level_middle, level_end);
     const StepProgressScope refining(share);
     AdaptiveStage next = small ? serial.execute([&] { return refine_stage(scheme, s, rings, ghosts, ro, triangles); })
                                : refine_stage(scheme, s, rings, ghosts, ro, triangles);
@@ -382,7 +386,8 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& input, std::span
   number_vertices(stages, st, out);
   number_values(channels, options.face_varying, st, out);
   if (options.limit) {
-    const StepProgressScope::Report share = StepProgressScope::part(parts - 1, parts);
+    const auto [limit_begin, limit_end] = progress.limit_span();
+    const StepProgressScope::Report share = StepProgressScope::span(limit_begin, limit_end);
     const StepProgressScope moving(share);
     move_to_limit(out, *options.surface, points, C);
   }

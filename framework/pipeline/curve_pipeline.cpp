@@ -161,11 +161,12 @@ void check_curve_size(const CurveLevel& base, int arity, int levels, double budg
     throw OptionError(fmt::format("{} levels would make about {:.3g} points, more than the 2^31 a level can "
                                   "index; ask for fewer levels ({{levels}})",
                                   levels, points));
-  const double need = points * kBytesPerPoint, have = budget > 0 ? budget : available_memory_bytes();
-  if (need > have)
+  const double need = points * kBytesPerPoint;
+  const MemoryBudget have = refinement_budget(budget);
+  if (need > have.bytes)
     throw OptionError(fmt::format("{} levels would make about {:.3g} points and need about {:.1f} GiB, but only "
-                                  "{:.1f} GiB of memory is available; ask for fewer levels ({{levels}})",
-                                  levels, points, need / (1 << 30), have / (1 << 30)));
+                                  "{:.1f} GiB of memory is available (limited by {}); ask for fewer levels ({{levels}})",
+                                  levels, points, need / (1 << 30), have.bytes / (1 << 30), have.source));
 }
 
 CurveRefineResult refine_curve_request(CurveRefineRequest request) {

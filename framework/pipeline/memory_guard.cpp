@@ -9,7 +9,6 @@
 #include <unistd.h>
 
 #include "framework/util/error.h"
-#include "framework/util/memory_limit.h"
 #include "framework/util/quoted_text.h"
 
 namespace subdiv {
@@ -39,15 +38,17 @@ std::string size_text(double bytes) {
 
 }  // namespace
 
-double available_memory_bytes() { return available_memory().bytes; }
-
 double refinement_bytes(const Scheme& scheme, const Level& base, int levels) {
   return finest_faces(scheme, base, levels) * kBytesPerFace;
 }
 
+MemoryBudget refinement_budget(double limit) {
+  const MemoryBudget have = available_memory();
+  return limit > 0 && limit < have.bytes ? MemoryBudget{limit, "the memory budget asked for"} : have;
+}
+
 void check_fits_in_memory(const Scheme& scheme, const Level& base, int levels, double limit, const std::string& fix) {
-  MemoryBudget have = available_memory();
-  if (limit > 0 && limit < have.bytes) have = {limit, "the memory budget asked for"};
+  const MemoryBudget have = refinement_budget(limit);
   const double need = refinement_bytes(scheme, base, levels);
   if (need > have.bytes)
     throw Error(fmt::format("{} levels would make about {:.3g} faces and need about {}, but only {} of memory is "

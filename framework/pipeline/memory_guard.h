@@ -4,8 +4,14 @@
 
 #include "framework/scheme/scheme.h"
 #include "framework/topology/level.h"
+#include "framework/util/memory_limit.h"
 
 namespace subdiv {
+
+// What a refinement may take: what this process may still allocate (MemAvailable, ulimits and
+// the cgroup's limit, util/memory_limit.h; very large when unknown: never refuse then), or
+// `limit` bytes when that is positive and smaller (the request's memory budget).
+MemoryBudget refinement_budget(double limit);
 
 // About how many bytes refining `base` for `levels` levels keeps at its peak.
 double refinement_bytes(const Scheme& scheme, const Level& base, int levels);
@@ -14,10 +20,6 @@ double refinement_bytes(const Scheme& scheme, const Level& base, int levels);
 // bytes when it is positive (the request's memory budget); `fix` is the advice the message ends with.
 void check_fits_in_memory(const Scheme& scheme, const Level& base, int levels, double limit = 0,
                           const std::string& fix = "ask for fewer levels");
-
-// What this process may still allocate, in bytes: MemAvailable, ulimits and the cgroup's
-// limit (framework/util/memory_limit.h); very large when unknown: do not refuse then.
-double available_memory_bytes();
 
 // Bytes this process holds now (resident set, /proc/self/statm); 0 where unknown.
 double resident_bytes();

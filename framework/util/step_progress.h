@@ -31,9 +31,14 @@ public:
   // A report for part `index` of `count` equal parts of the work in progress: a scope
   // opened with it maps the part's own shares into the whole (empty without a scope).
   static Report part(size_t index, size_t count) {
+    return span(double(index) / double(count), double(index + 1) / double(count));
+  }
+
+  // A report for the share [begin, end] of the work in progress, for parts of unequal size.
+  static Report span(double begin, double end) {
     const Report* whole = current();
     if (!whole) return {};
-    return [whole, index, count](double done) { (*whole)((double(index) + done) / double(count)); };
+    return [whole, begin, end](double done) { (*whole)(begin + done * (end - begin)); };
   }
 
 private:

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <new>
+#include <string>
 #include <system_error>
 
 #include "framework/engine/face_partition.h"
@@ -42,23 +43,34 @@ struct PieceCounts {
   long long faces = 0;
 };
 
+// What to ask for when a piece does not fit. More pieces help only while the piece can be cut
+// smaller (it owns more than one face) and one face's share fits: past that only fewer levels do.
+std::string piece_memory_advice(const PieceJob& job, const SchemeSequence& seq, const MeshPiece& cut,
+                                const std::vector<int>& owner, int piece, int rings) {
+  const double budget = refinement_budget(job.max_memory).bytes;
+  const double per_face = refinement_bytes(*seq.schemes.front(), cut.level, seq.total_levels) /
+                          std::max(1.0, double(cut.level.face_count()));
+  const auto own_faces = std::count(owner.begin(), owner.end(), piece);
+  const std::string larger_budget = job.max_memory > 0 ? " or a larger --max-memory" : "";
+  if (per_face > budget)
+    return fmt::format("piece {} with its {} ghost ring(s) has {} faces, and even one face refined {} levels would "
+                       "not fit: no number of pieces helps; ask for fewer levels{}",
+                       piece, rings, cut.level.face_count(), seq.total_levels, larger_budget);
+  if (own_faces <= 1)
+    return fmt::format("piece {} is one face of the mesh with its {} ghost ring(s), {} faces in all: no number of "
+                       "pieces makes it smaller; ask for fewer levels{}",
+                       piece, rings, cut.level.face_count(), larger_budget);
+  return fmt::format("piece {} with its {} ghost ring(s) has {} faces; ask for more --pieces (or a larger "
+                     "--max-memory) or fewer levels",
+                     piece, rings, cut.level.face_count());
+}
+
 PieceCounts refine_piece(const PieceJob& job, const SchemeSequence& seq, const MeshData& mesh, const Level& base,
                          const RefineOptions& options, const RefinePieceData& refine_data,
                          const std::vector<int>& owner, int piece, int rings, StagedFiles& staged) {
   const MeshPiece cut = cut_piece(base, owner, piece, rings);
-  // More pieces help only while one face's share fits: past that only fewer levels do.
-  const double budget = job.max_memory > 0 ? std::min(job.max_memory, available_memory_bytes()) : available_memory_bytes();
-  const double per_face = refinement_bytes(*seq.schemes.front(), cut.level, seq.total_levels) /
-                          std::max(1.0, double(cut.level.face_count()));
   check_fits_in_memory(*seq.schemes.front(), cut.level, seq.total_levels, job.max_memory,
-                       per_face > budget
-                           ? fmt::format("piece {} with its {} ghost ring(s) has {} faces, and even one face refined "
-                                         "{} levels would not fit: no number of pieces helps; ask for fewer levels{}",
-                                         piece, rings, cut.level.face_count(), seq.total_levels,
-                                         job.max_memory > 0 ? " or a larger --max-memory" : "")
-                           : fmt::format("piece {} with its {} ghost ring(s) has {} faces; ask for more --pieces (or a "
-                                         "larger --max-memory) or fewer levels",
-                                         piece, rings, cut.level.face_count()));
+                       piece_memory_advice(job, seq, cut, owner, piece, rings));
   const RefineOptions o = piece_options(options, cut);
   const Hierarchy h = refine_topology(seq.runs, cut.level, o);
   std::vector<LevelData> levels = refine_data(h, piece_data(mesh, cut), o);

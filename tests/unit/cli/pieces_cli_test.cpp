@@ -170,6 +170,11 @@ TEST_CASE("bad piece options are refused by name, with no output left behind") {
       {cube + " --pieces 2 --limit -o " + (dir / "a.pvtp").string(), "--limit cannot be combined"},
       {cube + " --max-memory lots -o " + (dir / "a.pvtp").string(), "--max-memory 'lots' is not a memory size"},
       {cube + " -l 5 --pieces 2 --max-memory 1M -o " + (dir / "a.pvtp").string(), "ask for more --pieces"},
+      // Six pieces of the cube are one face each: a seventh piece does not exist. One face
+      // refined 5 levels fits 1 MiB (about 0.3 MiB), the face with its ghost ring (five faces,
+      // about 1.5 MiB) does not.
+      {cube + " -l 5 --pieces 6 --max-memory 1M -o " + (dir / "a.pvtp").string(),
+       "is one face of the mesh with its 1 ghost ring(s), 5 faces in all: no number of pieces makes it smaller"},
       // One face refined 8 levels needs about 19 MiB: more pieces cannot help.
       {cube + " -l 8 --pieces 2 --max-memory 1M -o " + (dir / "a.pvtp").string(),
        "no number of pieces helps; ask for fewer levels or a larger --max-memory"},
