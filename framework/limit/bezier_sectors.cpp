@@ -77,8 +77,8 @@ void QuadMesh::find_sectors() {
       if (why)
         throw Error(fmt::format("face {}: vertex {} {}: Loop & Schaefer's masks are built here for smooth vertices, "
                                 "boundaries and creases with two or more faces on each side, and corners with one "
-                                "face between feature edges; refine the mesh once (subdiv refine -l 1) and "
-                                "approximate that",
+                                "face between feature edges, and refining keeps a vertex's faces; evaluate the exact "
+                                "limit instead (without --approximate)",
                                 f, v, why));
       sectors_.push_back(s);
     }
@@ -92,8 +92,8 @@ Sector QuadMesh::find_sector(Index f, int k) const {
     features += level_.edge_on_boundary(e) || level_.edge_sharp(e) >= kInfinitelySharp;
   if (features == 1)
     throw Error(fmt::format("face {}: vertex {} ends a crease (a dart): the masks are those of smooth vertices, "
-                            "boundaries, creases passing through and corners; refine the mesh once (subdiv refine "
-                            "-l 1) and approximate that",
+                            "boundaries, creases passing through and corners, and refining keeps a dart; evaluate "
+                            "the exact limit instead (without --approximate)",
                             f, v));
   const bool boundary_corner = boundary_ == BoundaryInterpolation::EdgesAndCorners && level_.on_boundary(v) &&
                                level_.incident_face_count(v) == 1;

@@ -294,7 +294,8 @@ void add_evaluate_command(CLI::App& app) {
       ->check(CLI::Range(0, 12));
   cmd->add_option("--approximate", args->approximate,
                   "bezier: instead of the exact limit, Loop & Schaefer's (2008) bicubic patches, one per quad of a "
-                  "closed uncreased quad mesh (exact where every valence is 4), normals from their tangent patches; "
+                  "quad mesh with boundaries and sharp creases (exact where every valence is 4), normals from their "
+                  "tangent patches; "
                   "adds limit_distance (to the exact limit; --samples: per point and per face, the face's largest) "
                   "and prints the largest and mean distance");
   cmd->add_option("--bezier-net", args->bezier_net,
