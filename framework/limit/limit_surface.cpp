@@ -1137,6 +1137,7 @@ LimitSurface::LimitSurface(std::vector<LimitHeadRun> head, std::shared_ptr<const
   impl_->scheme = tail;
   impl_->options = options;
   impl_->head = std::make_unique<SequenceHead>(std::move(head), base, options.features);
+  if (const std::string why = sequence_tail_unsupported(*tail, *impl_->head); !why.empty()) throw Error(why);
   // As refinement says it (catmull-clark:1,loop: Loop on the head's quads), not at the first
   // point as a face "not a triangle" of a mesh the user never saw.
   check_face_sizes(*tail, impl_->head->refined());

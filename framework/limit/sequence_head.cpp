@@ -22,6 +22,19 @@ std::string sequence_head_unsupported(const Scheme& scheme) {
   return {};
 }
 
+std::string sequence_tail_unsupported(const Scheme& tail, const SequenceHead& head) {
+  if (tail.split() != SplitKind::Sqrt3 || head.levels() % 2 == 0) return {};
+  const Level& mesh = head.refined();
+  for (Index e = 0; e < mesh.edge_count(); ++e)
+    if (mesh.edge_on_boundary(e) || mesh.edge_sharp(e) > 0.f)
+      return fmt::format("{} repeats after {} level(s) of the sequence's head, an odd number, and the mesh they make "
+                         "has boundaries or creases: the sqrt3 split trisects those in every second step counted from "
+                         "the base mesh, so its first step here trisects, and its evaluation follows the split two "
+                         "steps at a time from a step that does not; give the head an even number of levels",
+                         subdiv::quoted(tail.name), head.levels());
+  return {};
+}
+
 SequenceHead::SequenceHead(std::vector<LimitHeadRun> runs, const Level& base, const FeatureOptions& features)
     : runs_(std::move(runs)) {
   std::vector<SchemeRun> plain;

@@ -49,4 +49,11 @@ private:
 // Why a scheme cannot be a sequence's head, or empty.
 std::string sequence_head_unsupported(const Scheme& scheme);
 
+// Why `tail` cannot be evaluated after `head`, or empty: the sqrt3 split trisects boundaries
+// and creases in every second step counted from the base mesh, across a sequence too
+// (docs/scheme-format.md), and its evaluator follows it two steps at a time from a step that
+// keeps them; after an odd head the first step of the tail trisects, and the faces it makes
+// there are not parts of the head's faces.
+std::string sequence_tail_unsupported(const Scheme& tail, const SequenceHead& head);
+
 }  // namespace subdiv

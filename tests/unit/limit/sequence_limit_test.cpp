@@ -5,7 +5,10 @@
 // across the head's child faces), and heads whose splits do not nest are refused.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <tuple>
 #include <random>
 #include <vector>
 
@@ -14,6 +17,7 @@
 #include "framework/limit/tessellation.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
+#include "support/refine_helpers.h"
 #include "support/test_meshes.h"
 
 using namespace subdiv;
@@ -137,6 +141,39 @@ TEST_CASE("A sequence whose head does not nest, or whose tail is refused, is ref
                        doctest::Contains("comes before the scheme that repeats"), Error);
   CHECK_THROWS_WITH_AS(LimitSurface({{load_scheme("catmull-clark"), 1}}, load_scheme("mid-edge"), test::grid(2, 2).level()),
                        doctest::Contains("mid-edge split and the mesh has a boundary"), Error);
+}
+
+TEST_CASE("A sqrt3 tail counts its steps from the base mesh: after an even head it is sqrt3 on the head's mesh, after "
+          "an odd head on a mesh with a boundary it is refused") {
+  // The sqrt3 split trisects boundaries in odd steps counted from the base mesh, across a
+  // sequence too (docs/scheme-format.md), so after two Loop levels its steps are those of
+  // sqrt3 run on the level-2 mesh. The interior vertex (1, 1) of the grid is next to the
+  // boundary, where the order of the two kinds of step changes the limit (by about 0.04
+  // on the bundled tube).
+  const test::Mesh grid = bumped(test::grid(4, 4, true));
+  const Index vertex = 1 * 5 + 1;
+  const auto loop = load_scheme("loop"), sqrt3 = load_scheme("sqrt3");
+  const test::Refined head = test::refine_mesh(grid, "loop", 2);
+  const Level& fine = head.hierarchy.levels.back();
+  const LimitSurface sequence({{loop, 2}}, sqrt3, grid.level());
+  const LimitSurface plain(sqrt3, fine);
+  auto corner_of = [](const Level& L, Index v) {
+    const Index f = L.ring_faces(v)[0];
+    const auto corners = L.face(f);
+    const int k = int(std::find(corners.begin(), corners.end(), v) - corners.begin());
+    const std::array<std::array<double, 2>, 3> uv{{{0, 0}, {1, 0}, {0, 1}}};
+    return std::tuple{f, uv[size_t(k)][0], uv[size_t(k)][1]};
+  };
+  const auto [f0, u0, v0] = corner_of(grid.level(), vertex);
+  const auto [f2, u2, v2] = corner_of(fine, vertex);  // vertex children keep their index
+  const LimitSample a = sequence.evaluate(f0, u0, v0, grid.positions, 3, 0);
+  const LimitSample b = plain.evaluate(f2, u2, v2, head.positions, 3, 0);
+  CHECK(distance(a.position, b.position) < 1e-13);
+
+  CHECK_THROWS_WITH_AS(LimitSurface({{loop, 1}}, sqrt3, grid.level()),
+                       doctest::Contains("an odd number, and the mesh they make has boundaries or creases"), Error);
+  // A closed mesh without creases: every sqrt3 step is the same, and an odd head is taken.
+  CHECK_NOTHROW(LimitSurface({{loop, 1}}, sqrt3, test::octahedron().level()));
 }
 
 TEST_CASE("A dual head: Doo-Sabin's own level before it changes nothing, and Doo-Sabin then Catmull-Clark is continuous") {
