@@ -87,6 +87,9 @@ std::optional<FacePoint> in_child(const std::vector<Uv>& corners, const FacePoin
     for (int k = 0; k < 2; ++k)
       q.jacobian[size_t(r)][size_t(k)] = inv[size_t(r)][0] * p.jacobian[0][size_t(k)] + inv[size_t(r)][1] * p.jacobian[1][size_t(k)];
   }
+  // On a triangle's long edge the rounding of the frame can leave u + v a few ulps above 1,
+  // outside the domain the child's evaluator accepts: back onto the edge.
+  if (const double sum = q.st[0] + q.st[1]; triangles && sum > 1) q.st = {q.st[0] / sum, q.st[1] / sum};
   return q;
 }
 

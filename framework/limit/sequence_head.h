@@ -7,8 +7,9 @@
 //
 // The head only refines, a finite number of levels, so any linear rules will do there —
 // level-dependent (non-stationary) weights included; only the repeating tail needs a fixed
-// local subdivision matrix. Its splits must nest: binary quad or triangle splits, or the
-// dual split through its quadrants (dual_limit.h) on a closed untagged mesh.
+// local subdivision matrix. Its splits must nest: binary quad or triangle splits, the dual
+// split through its quadrants (dual_limit.h) on a closed untagged mesh, or sqrt3 steps in
+// pairs, each pair the triadic split of a triangle (sqrt3_pair_children.h).
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,10 +41,15 @@ public:
   SparseRow pull_back(SparseRow row) const;
 
 private:
+  void pair_sqrt3_steps();
+
   std::vector<LimitHeadRun> runs_;
   Hierarchy hierarchy_;
   std::vector<char> triangles_;  // per level: its split makes triangles
   std::vector<char> dual_;       // per level: its split is the dual one (dual_limit.h)
+  std::vector<char> sqrt3_;      // per level: its split is sqrt3
+  // Per level: for the first of a pair of sqrt3 steps, each face's nine children two levels down.
+  std::vector<std::vector<std::vector<ChildFace>>> pair_children_;
 };
 
 // Why a scheme cannot be a sequence's head, or empty.

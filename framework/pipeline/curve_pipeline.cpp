@@ -11,6 +11,7 @@
 #include "framework/plugin/polyline_refine.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
+#include "framework/util/memory_limit.h"
 #include "framework/util/option_spelling.h"
 #include "framework/util/quoted_text.h"
 
@@ -162,7 +163,7 @@ void check_curve_size(const CurveLevel& base, int arity, int levels, double budg
                                   "index; ask for fewer levels ({{levels}})",
                                   levels, points));
   const double need = points * kBytesPerPoint;
-  const MemoryBudget have = refinement_budget(budget);
+  const MemoryBudget have = memory_budget(budget);
   if (need > have.bytes)
     throw OptionError(fmt::format("{} levels would make about {:.3g} points and need about {:.1f} GiB, but only "
                                   "{:.1f} GiB of memory is available (limited by {}); ask for fewer levels ({{levels}})",

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "framework/util/error.h"
+#include "framework/util/memory_limit.h"
 #include "framework/util/quoted_text.h"
 
 namespace subdiv {
@@ -42,13 +43,8 @@ double refinement_bytes(const Scheme& scheme, const Level& base, int levels) {
   return finest_faces(scheme, base, levels) * kBytesPerFace;
 }
 
-MemoryBudget refinement_budget(double limit) {
-  const MemoryBudget have = available_memory();
-  return limit > 0 && limit < have.bytes ? MemoryBudget{limit, "the memory budget asked for"} : have;
-}
-
 void check_fits_in_memory(const Scheme& scheme, const Level& base, int levels, double limit, const std::string& fix) {
-  const MemoryBudget have = refinement_budget(limit);
+  const MemoryBudget have = memory_budget(limit);
   const double need = refinement_bytes(scheme, base, levels);
   if (need > have.bytes)
     throw Error(fmt::format("{} levels would make about {:.3g} faces and need about {}, but only {} of memory is "

@@ -4,14 +4,8 @@
 
 #include "framework/scheme/scheme.h"
 #include "framework/topology/level.h"
-#include "framework/util/memory_limit.h"
 
 namespace subdiv {
-
-// What a refinement may take: what this process may still allocate (MemAvailable, ulimits and
-// the cgroup's limit, util/memory_limit.h; very large when unknown: never refuse then), or
-// `limit` bytes when that is positive and smaller (the request's memory budget).
-MemoryBudget refinement_budget(double limit);
 
 // About how many bytes refining `base` for `levels` levels keeps at its peak.
 double refinement_bytes(const Scheme& scheme, const Level& base, int levels);

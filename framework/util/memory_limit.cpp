@@ -140,4 +140,10 @@ std::string out_of_memory_message(const std::string& during) {
                      during, have);
 }
 
+MemoryBudget memory_budget(double limit) {
+  MemoryBudget have = available_memory();
+  if (limit > 0 && limit < have.bytes) have = {limit, "the memory budget asked for"};
+  return have;
+}
+
 }  // namespace subdiv

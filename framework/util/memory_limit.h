@@ -17,6 +17,10 @@ struct MemoryBudget {
 
 MemoryBudget available_memory();
 
+// What a request may take: available_memory(), or `limit` bytes when that is positive and
+// smaller (the request's own budget, e.g. --max-memory).
+MemoryBudget memory_budget(double limit);
+
 // Needs below this are not checked against available_memory(): reading the limits (/proc and
 // cgroup files) costs 0.2-0.3 ms, more than making something this small, and a process left
 // with less than this has failed long before.

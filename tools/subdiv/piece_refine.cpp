@@ -13,6 +13,7 @@
 #include "framework/io/vtk/vtk_pieces.h"
 #include "framework/util/atomic_file.h"
 #include "framework/util/error.h"
+#include "framework/util/memory_limit.h"
 #include "level_output.h"
 #include "framework/pipeline/memory_guard.h"
 #include "mesh_subset.h"
@@ -47,7 +48,7 @@ struct PieceCounts {
 // smaller (it owns more than one face) and one face's share fits: past that only fewer levels do.
 std::string piece_memory_advice(const PieceJob& job, const SchemeSequence& seq, const MeshPiece& cut,
                                 const std::vector<int>& owner, int piece, int rings) {
-  const double budget = refinement_budget(job.max_memory).bytes;
+  const double budget = memory_budget(job.max_memory).bytes;
   const double per_face = refinement_bytes(*seq.schemes.front(), cut.level, seq.total_levels) /
                           std::max(1.0, double(cut.level.face_count()));
   const auto own_faces = std::count(owner.begin(), owner.end(), piece);

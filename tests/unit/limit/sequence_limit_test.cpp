@@ -136,8 +136,92 @@ TEST_CASE("A bilinear head then Catmull-Clark, and Catmull-Clark then Doo-Sabin:
   }
 }
 
+TEST_CASE("sqrt3 in a sequence's head, two steps at a time: sqrt3's own levels change nothing, and sqrt3 then Loop "
+          "is continuous with stencils and derivatives") {
+  // Two routes to the same limit through different cuts: sqrt3 alone, and sqrt3 after two of
+  // its own levels (the head's pair carries the point into one of the nine children of its
+  // triadic grid), on a closed mesh and on an open one (Kobbelt's boundary trisection).
+  const auto sqrt3 = load_scheme("sqrt3"), loop = load_scheme("loop");
+  for (const test::Mesh& m : {bumped(test::octahedron()), bumped(test::grid(3, 3, true))}) {
+    const LimitSurface plain(sqrt3, m.level());
+    const LimitSurface sequence({{sqrt3, 2}}, sqrt3, m.level());
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> U(0, 1);
+    double worst = 0, worst_d = 0;
+    int with_derivatives = 0;
+    for (int k = 0; k < 40; ++k) {
+      const Index f = Index(k % m.level().face_count());
+      double u = U(rng), v = U(rng);
+      if (u + v > 1) u = 1 - u, v = 1 - v;
+      const LimitSample a = plain.evaluate(f, u, v, m.positions, 3, 1);
+      const LimitSample b = sequence.evaluate(f, u, v, m.positions, 3, 1);
+      worst = std::max(worst, distance(a.position, b.position));
+      REQUIRE(a.has_derivatives == b.has_derivatives);
+      if (a.has_derivatives) ++with_derivatives, worst_d = std::max(worst_d, distance(a.du, b.du) + distance(a.dv, b.dv));
+    }
+    CHECK(worst < 1e-13);
+    CHECK(worst_d < 1e-10);
+    CHECK(with_derivatives > 20);
+  }
+  // sqrt3 twice, then Loop, on the open grid: the same point from both faces of every interior
+  // edge, stencils equal evaluation, derivatives equal central differences.
+  const test::Mesh m = bumped(test::grid(3, 3, true));
+  const LimitSurface s({{sqrt3, 2}}, loop, m.level());
+  const Level& L = s.base();
+  constexpr double corner_uv[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+  double worst_edge = 0;
+  for (Index e = 0; e < L.edge_count(); ++e) {
+    if (L.edge_on_boundary(e)) continue;
+    for (const double t : {0.2, 0.5, 0.9}) {
+      std::vector<std::vector<double>> seen;
+      for (int side = 0; side < 2; ++side) {
+        const Index f = L.edge_faces[size_t(2 * e + side)];
+        int k = 0;
+        while (L.face_edge_list(f)[size_t(k)] != e) ++k;
+        const double a = L.face(f)[size_t(k)] == L.edge_vertices[size_t(2 * e)] ? t : 1 - t;
+        const auto& p = corner_uv[k];
+        const auto& q = corner_uv[(k + 1) % 3];
+        seen.push_back(s.evaluate(f, p[0] + a * (q[0] - p[0]), p[1] + a * (q[1] - p[1]), m.positions, 3, 0).position);
+      }
+      worst_edge = std::max(worst_edge, distance(seen[0], seen[1]));
+    }
+  }
+  CHECK(worst_edge < 1e-13);
+  double worst_fd = 0, worst_stencil = 0;
+  for (const auto& [u, v] : {std::pair{0.3, 0.3}, std::pair{1.0 / 3, 0.2}, std::pair{0.55, 0.1}}) {
+    for (Index f : {Index(0), Index(8)}) {
+      const LimitSample p = s.evaluate(f, u, v, m.positions, 3);
+      REQUIRE(p.has_derivatives);
+      const double h = 1e-6;
+      const auto P = [&](double a, double b) { return s.evaluate(f, a, b, m.positions, 3, 0).position; };
+      const auto pu = P(u + h, v), mu = P(u - h, v), pv = P(u, v + h), mv = P(u, v - h);
+      for (int i = 0; i < 3; ++i) {
+        worst_fd = std::max(worst_fd, std::fabs((pu[size_t(i)] - mu[size_t(i)]) / (2 * h) - p.du[size_t(i)]));
+        worst_fd = std::max(worst_fd, std::fabs((pv[size_t(i)] - mv[size_t(i)]) / (2 * h) - p.dv[size_t(i)]));
+      }
+      const LimitStencil w = s.stencil(f, u, v);
+      std::vector<double> x(3, 0.0), xu(3, 0.0);
+      for (size_t e = 0; e < w.vertices.size(); ++e)
+        for (int i = 0; i < 3; ++i) {
+          x[size_t(i)] += w.position[e] * m.positions[size_t(3 * w.vertices[e] + i)];
+          xu[size_t(i)] += w.du[e] * m.positions[size_t(3 * w.vertices[e] + i)];
+        }
+      worst_stencil = std::max(worst_stencil, distance(x, p.position) + distance(xu, p.du));
+    }
+  }
+  CHECK(worst_fd < 1e-7);
+  CHECK(worst_stencil < 1e-13);
+  // A pair that starts on an odd step trisects first next to the boundary: refused; on a
+  // closed untagged mesh every step is the same and it is taken.
+  CHECK_THROWS_WITH_AS(LimitSurface({{loop, 1}, {sqrt3, 2}}, loop, m.level()),
+                       doctest::Contains("starts a pair of sqrt3 steps at level 1, an odd step"), Error);
+  CHECK_NOTHROW(LimitSurface({{loop, 1}, {sqrt3, 2}}, loop, test::octahedron().level()));
+}
+
 TEST_CASE("A sequence whose head does not nest, or whose tail is refused, is refused with the reason") {
   CHECK_THROWS_WITH_AS(LimitSurface({{load_scheme("sqrt3"), 1}}, load_scheme("loop"), test::octahedron().level()),
+                       doctest::Contains("after an odd number of them"), Error);
+  CHECK_THROWS_WITH_AS(LimitSurface({{load_scheme("mid-edge"), 2}}, load_scheme("doo-sabin"), test::cube().level()),
                        doctest::Contains("comes before the scheme that repeats"), Error);
   CHECK_THROWS_WITH_AS(LimitSurface({{load_scheme("catmull-clark"), 1}}, load_scheme("mid-edge"), test::grid(2, 2).level()),
                        doctest::Contains("mid-edge split and the mesh has a boundary"), Error);
