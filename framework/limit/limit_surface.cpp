@@ -1136,8 +1136,13 @@ LimitSurface::LimitSurface(std::vector<LimitHeadRun> head, std::shared_ptr<const
                             non_manifold_place(base)));
   impl_->scheme = tail;
   impl_->options = options;
+  // The sqrt3 split trisects boundaries and creases in every second step counted from the
+  // base mesh, across a sequence too (docs/scheme-format.md), and its evaluator starts on a
+  // step that keeps them: after an odd head the tail's first step joins the head.
+  int head_levels = 0;
+  for (const LimitHeadRun& run : head) head_levels += std::max(run.levels, 0);
+  if (tail->split() == SplitKind::Sqrt3 && head_levels % 2 == 1) head.push_back({tail, 1});
   impl_->head = std::make_unique<SequenceHead>(std::move(head), base, options.features);
-  if (const std::string why = sequence_tail_unsupported(*tail, *impl_->head); !why.empty()) throw Error(why);
   // As refinement says it (catmull-clark:1,loop: Loop on the head's quads), not at the first
   // point as a face "not a triangle" of a mesh the user never saw.
   check_face_sizes(*tail, impl_->head->refined());

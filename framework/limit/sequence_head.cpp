@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "framework/limit/dual_limit.h"
-#include "framework/limit/sqrt3_pair_children.h"
+#include "framework/limit/sqrt3_step_children.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
@@ -21,29 +21,6 @@ std::string sequence_head_unsupported(const Scheme& scheme) {
                        "sqrt3 or dual split: following a point through a mid-edge or plugin split in a sequence's "
                        "head is not implemented yet",
                        subdiv::quoted(scheme.name));
-  return {};
-}
-
-namespace {
-
-bool has_feature_edges(const Level& L) {
-  for (Index e = 0; e < L.edge_count(); ++e)
-    if (L.edge_on_boundary(e) || L.edge_sharp(e) > 0.f) return true;
-  return false;
-}
-
-}  // namespace
-
-std::string sequence_tail_unsupported(const Scheme& tail, const SequenceHead& head) {
-  if (tail.split() != SplitKind::Sqrt3 || head.levels() % 2 == 0) return {};
-  const Level& mesh = head.refined();
-  for (Index e = 0; e < mesh.edge_count(); ++e)
-    if (mesh.edge_on_boundary(e) || mesh.edge_sharp(e) > 0.f)
-      return fmt::format("{} repeats after {} level(s) of the sequence's head, an odd number, and the mesh they make "
-                         "has boundaries or creases: the sqrt3 split trisects those in every second step counted from "
-                         "the base mesh, so its first step here trisects, and its evaluation follows the split two "
-                         "steps at a time from a step that does not; give the head an even number of levels",
-                         subdiv::quoted(tail.name), head.levels());
   return {};
 }
 
@@ -75,37 +52,45 @@ SequenceHead::SequenceHead(std::vector<LimitHeadRun> runs, const Level& base, co
   ro.features = features;
   hierarchy_ = refine(std::span<const SchemeRun>(plain), base, ro);
   if (!hierarchy_.linear()) throw Error("the sequence's head has non-linear steps: no limit stencil exists");
-  pair_sqrt3_steps();
+  place_sqrt3_children();
 }
 
-// sqrt3 steps are followed two at a time, a pair being the triadic split of each triangle
-// when its first step keeps the boundaries and creases (an even step counted from the base
-// mesh, as refinement counts it) or the level has none (then every step is the same).
-void SequenceHead::pair_sqrt3_steps() {
-  pair_children_.resize(sqrt3_.size());
+namespace {
+
+bool has_feature_edges(const Level& L) {
+  for (Index e = 0; e < L.edge_count(); ++e)
+    if (L.edge_on_boundary(e) || L.edge_sharp(e) > 0.f) return true;
+  return false;
+}
+
+bool split_in_nine(const Level& parent, const std::vector<std::vector<ChildFace>>& children) {
+  for (Index f = 0; f < parent.face_count(); ++f)
+    if (!parent.is_hole(f) && children[size_t(f)].size() != 9) return false;
+  return true;
+}
+
+}  // namespace
+
+// sqrt3 steps two at a time where the pair is the triadic split (its first step keeps the
+// boundaries and creases: an even step counted from the base mesh, as refinement counts it,
+// or a level without them), one at a time elsewhere (sqrt3_step_children.h).
+void SequenceHead::place_sqrt3_children() {
+  sqrt3_children_.resize(sqrt3_.size());
+  sqrt3_pair_.assign(sqrt3_.size(), 0);
   for (size_t l = 0; l < sqrt3_.size(); ++l) {
     if (!sqrt3_[l]) continue;
     const Level& parent = hierarchy_.levels[l];
-    if (l + 1 == sqrt3_.size() || !sqrt3_[l + 1])
-      throw Error(fmt::format("the sequence's head ends a run of sqrt3 steps at level {} after an odd number of them: "
-                              "one sqrt3 step flips the edges, so its triangles are not parts of the faces before it; "
-                              "a point is followed through sqrt3 two steps at a time (together the triadic 1-to-9 "
-                              "split); give the head's sqrt3 an even number of levels",
-                              l + 1));
-    if (l % 2 == 1 && has_feature_edges(parent))
-      throw Error(fmt::format("the sequence's head starts a pair of sqrt3 steps at level {}, an odd step, on a mesh "
-                              "with boundaries or creases: the sqrt3 split trisects those in every second step "
-                              "counted from the base mesh, so this pair is not the triadic split of the faces before "
-                              "it; give the schemes before the sqrt3 an even number of levels",
-                              l));
-    pair_children_[l] = sqrt3_pair_children(parent, hierarchy_.levels[l + 1], hierarchy_.levels[l + 2],
-                                            hierarchy_.origins[l], hierarchy_.origins[l + 1]);
-    for (Index f = 0; f < parent.face_count(); ++f)
-      if (!parent.is_hole(f) && pair_children_[l][size_t(f)].size() != 9)
-        throw Error(fmt::format("the sequence's head: face {} of level {} is not split into the nine triangles of its "
-                                "triadic grid by two sqrt3 steps ({} found): a point in it cannot be followed",
-                                f, l, pair_children_[l][size_t(f)].size()));
-    ++l;  // the pair's second step
+    if (l + 1 < sqrt3_.size() && sqrt3_[l + 1] && (l % 2 == 0 || !has_feature_edges(parent))) {
+      auto nine = sqrt3_pair_children(parent, hierarchy_.levels[l + 1], hierarchy_.levels[l + 2],
+                                      hierarchy_.origins[l], hierarchy_.origins[l + 1]);
+      if (split_in_nine(parent, nine)) {
+        sqrt3_children_[l] = std::move(nine);
+        sqrt3_pair_[l] = 1;
+        ++l;  // the pair's second step
+        continue;
+      }
+    }
+    sqrt3_children_[l] = sqrt3_step_children(parent, hierarchy_.levels[l + 1], hierarchy_.origins[l]);
   }
 }
 
@@ -115,8 +100,13 @@ FacePoint SequenceHead::map(const Level& base, Index face, double u, double v) c
   if (!p) throw Error(fmt::format("face {} at (u, v) = ({}, {}): {}", face, u, v, why));
   for (size_t l = 0; l < hierarchy_.origins.size(); ++l) {
     if (sqrt3_[l]) {
-      p = locate(pair_children_[l][size_t(p->face)], *p, true, nullptr);
-      ++l;  // two steps at once
+      p = locate(sqrt3_children_[l][size_t(p->face)], *p, true, nullptr);
+      if (sqrt3_pair_[l]) ++l;  // two steps at once
+      if (!p)
+        throw Error(fmt::format("the sequence's head: no triangle of its sqrt3 step to level {} holds the point (a "
+                                "face whose new triangles could not be placed in its (u, v): a degenerate "
+                                "neighbourhood)",
+                                l + 1));
     } else if (dual_[l]) {
       p = dual_child_point(hierarchy_.levels[l], hierarchy_.levels[l + 1], hierarchy_.origins[l], *p);
     } else {

@@ -8,8 +8,8 @@
 // The head only refines, a finite number of levels, so any linear rules will do there —
 // level-dependent (non-stationary) weights included; only the repeating tail needs a fixed
 // local subdivision matrix. Its splits must nest: binary quad or triangle splits, the dual
-// split through its quadrants (dual_limit.h) on a closed untagged mesh, or sqrt3 steps in
-// pairs, each pair the triadic split of a triangle (sqrt3_pair_children.h).
+// split through its quadrants (dual_limit.h) on a closed untagged mesh, or sqrt3 steps, whose
+// new triangles are affine in the (u, v) of the faces they reach over (sqrt3_step_children.h).
 #include <memory>
 #include <string>
 #include <vector>
@@ -41,25 +41,20 @@ public:
   SparseRow pull_back(SparseRow row) const;
 
 private:
-  void pair_sqrt3_steps();
+  void place_sqrt3_children();
 
   std::vector<LimitHeadRun> runs_;
   Hierarchy hierarchy_;
   std::vector<char> triangles_;  // per level: its split makes triangles
   std::vector<char> dual_;       // per level: its split is the dual one (dual_limit.h)
   std::vector<char> sqrt3_;      // per level: its split is sqrt3
-  // Per level: for the first of a pair of sqrt3 steps, each face's nine children two levels down.
-  std::vector<std::vector<std::vector<ChildFace>>> pair_children_;
+  // Per sqrt3 level: each face's children one level down, or two for the first of a pair
+  // (sqrt3_pair_ set; sqrt3_step_children.h).
+  std::vector<std::vector<std::vector<ChildFace>>> sqrt3_children_;
+  std::vector<char> sqrt3_pair_;
 };
 
 // Why a scheme cannot be a sequence's head, or empty.
 std::string sequence_head_unsupported(const Scheme& scheme);
-
-// Why `tail` cannot be evaluated after `head`, or empty: the sqrt3 split trisects boundaries
-// and creases in every second step counted from the base mesh, across a sequence too
-// (docs/scheme-format.md), and its evaluator follows it two steps at a time from a step that
-// keeps them; after an odd head the first step of the tail trisects, and the faces it makes
-// there are not parts of the head's faces.
-std::string sequence_tail_unsupported(const Scheme& tail, const SequenceHead& head);
 
 }  // namespace subdiv

@@ -127,11 +127,10 @@ def test_bad_points_schemes_and_arguments_are_refused():
     with pytest.raises(sk.Error, match="points: give numbers, got an array of dtype <U3"):
         S.evaluate([0], [[0.5, 0.5]], points="abc")  # numpy's ValueError before
     assert np.isfinite(S.evaluate([0], [[0.5, 0.5]]).points).all()  # the surface still works
-    octahedron = sk.read_mesh(str(MESHES / "octahedron.obj"))
     with pytest.raises(sk.Error, match="mid-edge split and the mesh has a boundary"):
         sk.LimitSurface(sk.read_mesh(str(MESHES / "plane-with-hole.obj")), "mid-edge")
     with pytest.raises(sk.Error, match="comes before the scheme that repeats"):
-        sk.LimitSurface(octahedron, "sqrt3:1,loop")
+        sk.LimitSurface(sk.read_mesh(str(MESHES / "cube.obj")), "mid-edge:2,doo-sabin")
     with pytest.raises(sk.Error, match="expected a subdivkit.Mesh"):
         sk.evaluate("cube.obj", "catmull-clark", [0], [[0.5, 0.5]])
 
@@ -219,6 +218,15 @@ def test_a_sequence_is_the_limit_of_its_last_scheme():
     b = sk.evaluate(cube(), "catmull-clark:2,catmull-clark", faces, uv, derivatives=2)
     for x, y in ((a.points, b.points), (a.du, b.du), (a.dv, b.dv), (a.duu, b.duu)):
         assert np.allclose(x, y, atol=1e-10, equal_nan=True)
+    # sqrt3's own levels before it, one or two, on the open tube: its new triangles straddle
+    # the old edges, and the point is followed through them (docs/limit.md, sequences).
+    tube = sk.read_mesh(str(MESHES / "textured-tube-triangles.obj"))
+    faces, uv = random_points(tube.n_faces, 12, seed=4, triangles=True)
+    a = sk.evaluate(tube, "sqrt3", faces, uv, derivatives=1)
+    for head in ("sqrt3:1,sqrt3", "sqrt3:2,sqrt3"):
+        b = sk.evaluate(tube, head, faces, uv, derivatives=1)
+        for x, y in ((a.points, b.points), (a.du, b.du), (a.dv, b.dv)):
+            assert np.allclose(x, y, atol=1e-10, equal_nan=True)
 
 
 def test_tessellate_gives_the_closed_sampled_limit_with_its_normals_and_uvs():
