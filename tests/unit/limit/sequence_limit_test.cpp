@@ -44,6 +44,38 @@ double distance(std::span<const double> a, std::span<const double> b) {
   return std::sqrt(s);
 }
 
+// At (f, u, v): the first derivatives against central differences of evaluated points
+// (h = 1e-6), and the stencil's position and du against evaluation.
+struct PointChecks {
+  double differences = 0, stencil = 0;
+  void take(const PointChecks& o) {
+    differences = std::max(differences, o.differences);
+    stencil = std::max(stencil, o.stencil);
+  }
+};
+
+PointChecks check_point(const LimitSurface& s, const test::Mesh& m, Index f, double u, double v) {
+  PointChecks out;
+  const LimitSample p = s.evaluate(f, u, v, m.positions, 3);
+  REQUIRE(p.has_derivatives);
+  const double h = 1e-6;
+  const auto P = [&](double a, double b) { return s.evaluate(f, a, b, m.positions, 3, 0).position; };
+  const auto pu = P(u + h, v), mu = P(u - h, v), pv = P(u, v + h), mv = P(u, v - h);
+  for (size_t i = 0; i < 3; ++i) {
+    out.differences = std::max(out.differences, std::fabs((pu[i] - mu[i]) / (2 * h) - p.du[i]));
+    out.differences = std::max(out.differences, std::fabs((pv[i] - mv[i]) / (2 * h) - p.dv[i]));
+  }
+  const LimitStencil w = s.stencil(f, u, v);
+  std::vector<double> x(3, 0.0), xu(3, 0.0);
+  for (size_t e = 0; e < w.vertices.size(); ++e)
+    for (size_t i = 0; i < 3; ++i) {
+      x[i] += w.position[e] * m.positions[size_t(3 * w.vertices[e]) + i];
+      xu[i] += w.du[e] * m.positions[size_t(3 * w.vertices[e]) + i];
+    }
+  out.stencil = distance(x, p.position) + distance(xu, p.du);
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("A scheme's own levels before it leave its limit unchanged, derivatives included") {
@@ -117,117 +149,84 @@ TEST_CASE("A bilinear head then Catmull-Clark, and Catmull-Clark then Doo-Sabin:
     }
     CHECK(worst_edge < 1e-13);
     // Inside the quad base face, across its children's edges (u = 1/2): stencils and differences.
-    double worst_fd = 0, worst_stencil = 0;
-    for (const auto& [u, v] : {std::pair{0.5, 0.3}, std::pair{0.21, 0.5}, std::pair{0.77, 0.64}}) {
-      const LimitSample p = s.evaluate(0, u, v, m.positions, 3);
-      REQUIRE(p.has_derivatives);
-      const double h = 1e-6;
-      const auto P = [&](double a, double b) { return s.evaluate(0, a, b, m.positions, 3, 0).position; };
-      const auto pu = P(u + h, v), mu = P(u - h, v), pv = P(u, v + h), mv = P(u, v - h);
-      for (int i = 0; i < 3; ++i) {
-        worst_fd = std::max(worst_fd, std::fabs((pu[size_t(i)] - mu[size_t(i)]) / (2 * h) - p.du[size_t(i)]));
-        worst_fd = std::max(worst_fd, std::fabs((pv[size_t(i)] - mv[size_t(i)]) / (2 * h) - p.dv[size_t(i)]));
-      }
-      const LimitStencil w = s.stencil(0, u, v);
-      std::vector<double> x(3, 0.0), xu(3, 0.0);
-      for (size_t e = 0; e < w.vertices.size(); ++e)
-        for (int i = 0; i < 3; ++i) {
-          x[size_t(i)] += w.position[e] * m.positions[size_t(3 * w.vertices[e] + i)];
-          xu[size_t(i)] += w.du[e] * m.positions[size_t(3 * w.vertices[e] + i)];
-        }
-      worst_stencil = std::max(worst_stencil, distance(x, p.position) + distance(xu, p.du));
-    }
-    CHECK(worst_fd < 1e-7);
-    CHECK(worst_stencil < 1e-13);
+    PointChecks worst;
+    for (const auto& [u, v] : {std::pair{0.5, 0.3}, std::pair{0.21, 0.5}, std::pair{0.77, 0.64}})
+      worst.take(check_point(s, m, 0, u, v));
+    CHECK(worst.differences < 1e-7);
+    CHECK(worst.stencil < 1e-13);
     // The tessellation is closed.
     const Tessellation t = tessellate(s, m.positions, 2);
     CHECK(t.face_count() == 1 * 4 + 4 * 3 * 1);
   }
 }
 
-TEST_CASE("sqrt3 in a sequence's head: sqrt3's own levels change nothing, and sqrt3 then Loop is continuous with "
-          "stencils and derivatives") {
+TEST_CASE("sqrt3's own levels in a sequence's head, one or two, change nothing") {
   // Two routes to the same limit through different cuts: sqrt3 alone, and sqrt3 after one or
   // two of its own levels (the head carries the point into the new triangle that holds it,
   // which reaches across the old edge), on closed meshes (the tetrahedron's neighbours share
   // their third corner) and on an open one (Kobbelt's boundary trisection).
-  const auto sqrt3 = load_scheme("sqrt3"), loop = load_scheme("loop");
-  for (const test::Mesh& m : {bumped(test::octahedron()), bumped(tetrahedron()), bumped(test::grid(3, 3, true))})
+  const auto sqrt3 = load_scheme("sqrt3");
+  for (const test::Mesh& m : {bumped(test::octahedron()), bumped(tetrahedron()), bumped(test::grid(3, 3, true))}) {
     for (const int head_levels : {1, 2}) {
-    CAPTURE(m.vertex_count);
-    CAPTURE(head_levels);
-    const LimitSurface plain(sqrt3, m.level());
-    const LimitSurface sequence({{sqrt3, head_levels}}, sqrt3, m.level());
-    std::mt19937 rng(9);
-    std::uniform_real_distribution<double> U(0, 1);
-    double worst = 0, worst_d = 0;
-    int with_derivatives = 0;
-    for (int k = 0; k < 40; ++k) {
-      const Index f = Index(k % m.level().face_count());
-      double u = U(rng), v = U(rng);
-      if (u + v > 1) u = 1 - u, v = 1 - v;
-      const LimitSample a = plain.evaluate(f, u, v, m.positions, 3, 1);
-      const LimitSample b = sequence.evaluate(f, u, v, m.positions, 3, 1);
-      worst = std::max(worst, distance(a.position, b.position));
-      REQUIRE(a.has_derivatives == b.has_derivatives);
-      if (a.has_derivatives) ++with_derivatives, worst_d = std::max(worst_d, distance(a.du, b.du) + distance(a.dv, b.dv));
+      CAPTURE(m.vertex_count);
+      CAPTURE(head_levels);
+      const LimitSurface plain(sqrt3, m.level());
+      const LimitSurface sequence({{sqrt3, head_levels}}, sqrt3, m.level());
+      std::mt19937 rng(9);
+      std::uniform_real_distribution<double> U(0, 1);
+      double worst = 0, worst_d = 0;
+      int with_derivatives = 0;
+      for (int k = 0; k < 40; ++k) {
+        const Index f = Index(k % m.level().face_count());
+        double u = U(rng), v = U(rng);
+        if (u + v > 1) u = 1 - u, v = 1 - v;
+        const LimitSample a = plain.evaluate(f, u, v, m.positions, 3, 1);
+        const LimitSample b = sequence.evaluate(f, u, v, m.positions, 3, 1);
+        worst = std::max(worst, distance(a.position, b.position));
+        REQUIRE(a.has_derivatives == b.has_derivatives);
+        if (!a.has_derivatives) continue;
+        ++with_derivatives;
+        worst_d = std::max(worst_d, distance(a.du, b.du) + distance(a.dv, b.dv));
+      }
+      CHECK(worst < 1e-13);
+      CHECK(worst_d < 1e-10);
+      CHECK(with_derivatives > 20);
     }
-    CHECK(worst < 1e-13);
-    CHECK(worst_d < 1e-10);
-    CHECK(with_derivatives > 20);
   }
-  // sqrt3 once or twice, then Loop, on the open grid: the same point from both faces of every
-  // interior edge, stencils equal evaluation, derivatives equal central differences.
+}
+
+TEST_CASE("sqrt3 then Loop: continuous across every edge, stencils equal evaluation, derivatives differences") {
   const test::Mesh m = bumped(test::grid(3, 3, true));
-  for (const int head_levels : {1, 2}) {
-  CAPTURE(head_levels);
-  const LimitSurface s({{sqrt3, head_levels}}, loop, m.level());
-  const Level& L = s.base();
   constexpr double corner_uv[3][2] = {{0, 0}, {1, 0}, {0, 1}};
-  double worst_edge = 0;
-  for (Index e = 0; e < L.edge_count(); ++e) {
-    if (L.edge_on_boundary(e)) continue;
-    for (const double t : {0.2, 0.5, 0.9}) {
-      std::vector<std::vector<double>> seen;
-      for (int side = 0; side < 2; ++side) {
-        const Index f = L.edge_faces[size_t(2 * e + side)];
-        int k = 0;
-        while (L.face_edge_list(f)[size_t(k)] != e) ++k;
-        const double a = L.face(f)[size_t(k)] == L.edge_vertices[size_t(2 * e)] ? t : 1 - t;
-        const auto& p = corner_uv[k];
-        const auto& q = corner_uv[(k + 1) % 3];
-        seen.push_back(s.evaluate(f, p[0] + a * (q[0] - p[0]), p[1] + a * (q[1] - p[1]), m.positions, 3, 0).position);
-      }
-      worst_edge = std::max(worst_edge, distance(seen[0], seen[1]));
-    }
-  }
-  CHECK(worst_edge < 1e-13);
-  double worst_fd = 0, worst_stencil = 0;
-  // Off the lines from the corners to the centre, where one step's pieces meet (the tail's
-  // derivatives change there) and across the triadic grid's lines, where a pair's meet.
-  for (const auto& [u, v] : {std::pair{0.2, 0.1}, std::pair{0.6, 0.15}, std::pair{0.15, 0.5}}) {
-    for (Index f : {Index(0), Index(8)}) {
-      const LimitSample p = s.evaluate(f, u, v, m.positions, 3);
-      REQUIRE(p.has_derivatives);
-      const double h = 1e-6;
-      const auto P = [&](double a, double b) { return s.evaluate(f, a, b, m.positions, 3, 0).position; };
-      const auto pu = P(u + h, v), mu = P(u - h, v), pv = P(u, v + h), mv = P(u, v - h);
-      for (int i = 0; i < 3; ++i) {
-        worst_fd = std::max(worst_fd, std::fabs((pu[size_t(i)] - mu[size_t(i)]) / (2 * h) - p.du[size_t(i)]));
-        worst_fd = std::max(worst_fd, std::fabs((pv[size_t(i)] - mv[size_t(i)]) / (2 * h) - p.dv[size_t(i)]));
-      }
-      const LimitStencil w = s.stencil(f, u, v);
-      std::vector<double> x(3, 0.0), xu(3, 0.0);
-      for (size_t e = 0; e < w.vertices.size(); ++e)
-        for (int i = 0; i < 3; ++i) {
-          x[size_t(i)] += w.position[e] * m.positions[size_t(3 * w.vertices[e] + i)];
-          xu[size_t(i)] += w.du[e] * m.positions[size_t(3 * w.vertices[e] + i)];
+  for (const int head_levels : {1, 2}) {
+    CAPTURE(head_levels);
+    const LimitSurface s({{load_scheme("sqrt3"), head_levels}}, load_scheme("loop"), m.level());
+    const Level& L = s.base();
+    double worst_edge = 0;
+    for (Index e = 0; e < L.edge_count(); ++e) {
+      if (L.edge_on_boundary(e)) continue;
+      for (const double t : {0.2, 0.5, 0.9}) {
+        std::vector<std::vector<double>> seen;
+        for (int side = 0; side < 2; ++side) {
+          const Index f = L.edge_faces[size_t(2 * e + side)];
+          int k = 0;
+          while (L.face_edge_list(f)[size_t(k)] != e) ++k;
+          const double a = L.face(f)[size_t(k)] == L.edge_vertices[size_t(2 * e)] ? t : 1 - t;
+          const auto& p = corner_uv[k];
+          const auto& q = corner_uv[(k + 1) % 3];
+          seen.push_back(s.evaluate(f, p[0] + a * (q[0] - p[0]), p[1] + a * (q[1] - p[1]), m.positions, 3, 0).position);
         }
-      worst_stencil = std::max(worst_stencil, distance(x, p.position) + distance(xu, p.du));
+        worst_edge = std::max(worst_edge, distance(seen[0], seen[1]));
+      }
     }
-  }
-  CHECK(worst_fd < 1e-7);
-  CHECK(worst_stencil < 1e-13);
+    CHECK(worst_edge < 1e-13);
+    // Off the lines from the corners to the centre, where one step's pieces meet (the tail's
+    // derivatives change there), and off the triadic grid's lines, where a pair's meet.
+    PointChecks worst;
+    for (const auto& [u, v] : {std::pair{0.2, 0.1}, std::pair{0.6, 0.15}, std::pair{0.15, 0.5}})
+      for (Index f : {Index(0), Index(8)}) worst.take(check_point(s, m, f, u, v));
+    CHECK(worst.differences < 1e-7);
+    CHECK(worst.stencil < 1e-13);
   }
 }
 
