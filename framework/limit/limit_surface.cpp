@@ -1145,7 +1145,7 @@ LimitSurface::LimitSurface(std::vector<LimitHeadRun> head, std::shared_ptr<const
   impl_->head = std::make_unique<SequenceHead>(std::move(head), base, options.features);
   // As refinement says it (catmull-clark:1,loop: Loop on the head's quads), not at the first
   // point as a face "not a triangle" of a mesh the user never saw.
-  check_face_sizes(*tail, impl_->head->refined());
+  check_face_sizes(*tail, impl_->head->refined(), {}, impl_->head->levels());
   impl_->tail = std::make_unique<LimitSurface>(std::move(tail), impl_->head->refined(), options);
   impl_->base = std::move(base);
   tag_boundary_holes(impl_->base, options.features.boundary);

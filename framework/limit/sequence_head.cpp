@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include "framework/limit/dual_limit.h"
+#include "framework/limit/mid_edge_limit.h"
+#include "framework/limit/mid_edge_pair.h"
 #include "framework/limit/sqrt3_step_children.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -15,11 +17,9 @@ std::string sequence_head_unsupported(const Scheme& scheme) {
     return fmt::format("{} has non-linear rules: the sequence's limit is no fixed combination of the control points",
                        subdiv::quoted(scheme.name));
   const SplitKind split = scheme.split();
-  if (split != SplitKind::Quad && split != SplitKind::Triangle && split != SplitKind::Dual &&
-      split != SplitKind::Sqrt3)
-    return fmt::format("{} comes before the scheme that repeats and its split is not the binary quad, triangle, "
-                       "sqrt3 or dual split: following a point through a mid-edge or plugin split in a sequence's "
-                       "head is not implemented yet",
+  if (split >= SplitKind(kFirstRegisteredSplit))
+    return fmt::format("{} comes before the scheme that repeats and its split is a plugin's: following a point "
+                       "through a plugin split in a sequence's head is not implemented yet",
                        subdiv::quoted(scheme.name));
   return {};
 }
@@ -37,14 +37,21 @@ SequenceHead::SequenceHead(std::vector<LimitHeadRun> runs, const Level& base, co
       triangles_.push_back(split == SplitKind::Triangle || split == SplitKind::Sqrt3 ? 1 : 0);
       dual_.push_back(split == SplitKind::Dual ? 1 : 0);
       sqrt3_.push_back(split == SplitKind::Sqrt3 ? 1 : 0);
+      mid_edge_.push_back(split == SplitKind::MidEdge ? 1 : 0);
     }
+    if (r.scheme->split() == SplitKind::MidEdge && r.levels % 2 == 1)
+      throw Error(fmt::format("the sequence's head has {} level(s) of {}, an odd number: one mid-edge step turns the "
+                              "faces by 45 degrees across the old edges, two nest as a dual step does; give it an "
+                              "even number of levels",
+                              r.levels, subdiv::quoted(r.scheme->name)));
   }
   if (plain.empty()) throw Error("the sequence's head has no levels");
   for (size_t l = 0; l < dual_.size(); ++l) {
-    if (!dual_[l]) continue;
+    if (!dual_[l] && !mid_edge_[l]) continue;
     if (l > 0 && triangles_[l - 1])
-      throw Error("the sequence's head has a dual split after a triangle split: following a point from a triangle's "
-                  "own (u, v) into quadrants is not implemented yet");
+      throw Error("the sequence's head has a dual or mid-edge split after a triangle split: following a point from a "
+                  "triangle's own (u, v) into quadrants is not implemented yet");
+    if (!dual_[l]) continue;
     if (const std::string why = dual_head_unsupported(base); !why.empty())
       throw Error("the sequence's head has a dual split and " + why);
   }
@@ -53,6 +60,21 @@ SequenceHead::SequenceHead(std::vector<LimitHeadRun> runs, const Level& base, co
   hierarchy_ = refine(std::span<const SchemeRun>(plain), base, ro);
   if (!hierarchy_.linear()) throw Error("the sequence's head has non-linear steps: no limit stencil exists");
   place_sqrt3_children();
+  pair_mid_edge_steps();
+}
+
+// Two mid-edge steps nest as one dual step (mid_edge_pair.h), on closed meshes without creases.
+void SequenceHead::pair_mid_edge_steps() {
+  mid_edge_origins_.resize(mid_edge_.size());
+  for (size_t l = 0; l < mid_edge_.size(); ++l) {
+    if (!mid_edge_[l]) continue;
+    if (const std::string why = mid_edge_limit_unsupported(hierarchy_.levels[l]); !why.empty())
+      throw Error(fmt::format("the sequence's head has a mid-edge split and at level {} {}", l, why));
+    mid_edge_origins_[l] = mid_edge_pair_origins(hierarchy_.levels[l], hierarchy_.levels[l + 1],
+                                                 hierarchy_.levels[l + 2], hierarchy_.origins[l],
+                                                 hierarchy_.origins[l + 1]);
+    ++l;  // the pair's second step
+  }
 }
 
 namespace {
@@ -107,6 +129,9 @@ FacePoint SequenceHead::map(const Level& base, Index face, double u, double v) c
                                 "face whose new triangles could not be placed in its (u, v): a degenerate "
                                 "neighbourhood)",
                                 l + 1));
+    } else if (mid_edge_[l]) {
+      p = dual_child_point(hierarchy_.levels[l], hierarchy_.levels[l + 2], mid_edge_origins_[l], *p);
+      ++l;  // two steps at once
     } else if (dual_[l]) {
       p = dual_child_point(hierarchy_.levels[l], hierarchy_.levels[l + 1], hierarchy_.origins[l], *p);
     } else {

@@ -8,8 +8,10 @@
 // The head only refines, a finite number of levels, so any linear rules will do there —
 // level-dependent (non-stationary) weights included; only the repeating tail needs a fixed
 // local subdivision matrix. Its splits must nest: binary quad or triangle splits, the dual
-// split through its quadrants (dual_limit.h) on a closed untagged mesh, or sqrt3 steps, whose
-// new triangles are affine in the (u, v) of the faces they reach over (sqrt3_step_children.h).
+// split through its quadrants (dual_limit.h) on a closed untagged mesh, mid-edge steps in
+// pairs, which nest as a dual step (mid_edge_pair.h), on a closed mesh without creases, or
+// sqrt3 steps, whose new triangles are affine in the (u, v) of the faces they reach over
+// (sqrt3_step_children.h).
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,6 +44,7 @@ public:
 
 private:
   void place_sqrt3_children();
+  void pair_mid_edge_steps();
 
   std::vector<LimitHeadRun> runs_;
   Hierarchy hierarchy_;
@@ -52,6 +55,9 @@ private:
   // (sqrt3_pair_ set; sqrt3_step_children.h).
   std::vector<std::vector<std::vector<ChildFace>>> sqrt3_children_;
   std::vector<char> sqrt3_pair_;
+  std::vector<char> mid_edge_;  // per level: its split is mid-edge (followed in pairs)
+  // Per level starting a pair of mid-edge steps: the grand level's origins as a dual split's.
+  std::vector<ChildOrigins> mid_edge_origins_;
 };
 
 // Why a scheme cannot be a sequence's head, or empty.

@@ -129,8 +129,8 @@ def test_bad_points_schemes_and_arguments_are_refused():
     assert np.isfinite(S.evaluate([0], [[0.5, 0.5]]).points).all()  # the surface still works
     with pytest.raises(sk.Error, match="mid-edge split and the mesh has a boundary"):
         sk.LimitSurface(sk.read_mesh(str(MESHES / "plane-with-hole.obj")), "mid-edge")
-    with pytest.raises(sk.Error, match="comes before the scheme that repeats"):
-        sk.LimitSurface(sk.read_mesh(str(MESHES / "cube.obj")), "mid-edge:2,doo-sabin")
+    with pytest.raises(sk.Error, match="an odd number: one mid-edge step turns the faces"):
+        sk.LimitSurface(sk.read_mesh(str(MESHES / "cube.obj")), "mid-edge:1,doo-sabin")
     with pytest.raises(sk.Error, match="expected a subdivkit.Mesh"):
         sk.evaluate("cube.obj", "catmull-clark", [0], [[0.5, 0.5]])
 

@@ -230,9 +230,82 @@ TEST_CASE("sqrt3 then Loop: continuous across every edge, stencils equal evaluat
   }
 }
 
+TEST_CASE("mid-edge's own levels in a sequence's head, two or four, change nothing; mid-edge then Catmull-Clark is "
+          "continuous with stencils and derivatives") {
+  // Two mid-edge steps nest as one dual step (mid_edge_pair.h), the layout mid-edge's own
+  // evaluator follows: the same limit in the same (u, v), through different cuts. The cube
+  // (quads), the pyramid (a quad and triangles: sub-faces) and the octahedron (triangles).
+  const auto mid_edge = load_scheme("mid-edge");
+  for (const test::Mesh& m : {bumped(test::cube()), bumped(test::pyramid()), bumped(test::octahedron())}) {
+    for (const int head_levels : {2, 4}) {
+      CAPTURE(m.vertex_count);
+      CAPTURE(head_levels);
+      const LimitSurface plain(mid_edge, m.level());
+      const LimitSurface sequence({{mid_edge, head_levels}}, mid_edge, m.level());
+      std::mt19937 rng(11);
+      std::uniform_real_distribution<double> U(0, 1);
+      double worst = 0, worst_d = 0;
+      for (int k = 0; k < 30; ++k) {
+        const Index f = Index(k % m.level().face_count());
+        double u = U(rng), v = U(rng);
+        if (m.level().face_size(f) != 4) u *= 0.5, v *= 0.5;  // sub-face 0
+        const LimitSample a = plain.evaluate(f, u, v, m.positions, 3, 1);
+        const LimitSample b = sequence.evaluate(f, u, v, m.positions, 3, 1);
+        worst = std::max(worst, distance(a.position, b.position));
+        REQUIRE(a.has_derivatives == b.has_derivatives);
+        if (a.has_derivatives) worst_d = std::max(worst_d, distance(a.du, b.du) + distance(a.dv, b.dv));
+      }
+      CHECK(worst < 1e-13);
+      CHECK(worst_d < 1e-10);
+    }
+  }
+  // Mid-edge twice, then Catmull-Clark on the pyramid: the same point from both faces of
+  // every base edge, and off the quadrants' lines stencils and central differences.
+  const test::Mesh m = bumped(test::pyramid());
+  const LimitSurface s({{mid_edge, 2}}, load_scheme("catmull-clark"), m.level());
+  double worst_edge = 0;
+  const Level& L = s.base();
+  for (Index e = 0; e < L.edge_count(); ++e)
+    for (const double t : {0.2, 0.45}) {
+      std::vector<std::vector<double>> seen;
+      for (int side = 0; side < 2; ++side) {
+        const Index f = L.edge_faces[size_t(2 * e + side)];
+        int k = 0;
+        while (L.face_edge_list(f)[size_t(k)] != e) ++k;
+        const bool forward = L.face(f)[size_t(k)] == L.edge_vertices[size_t(2 * e)];
+        const int n = L.face_size(f);
+        // From the edge's first end: sub-face k's u (or k + 1's v) in a sub-faced face, the
+        // quad's side otherwise.
+        double u = 0, v = 0;
+        if (n == 4) {
+          constexpr double q[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+          const double a = forward ? t : 1 - t;
+          u = q[k][0] + a * (q[(k + 1) % 4][0] - q[k][0]), v = q[k][1] + a * (q[(k + 1) % 4][1] - q[k][1]);
+        } else if (forward) {
+          u = k % 2 + t, v = k / 2;
+        } else {
+          u = (k + 1) % n % 2, v = (k + 1) % n / 2 + t;
+        }
+        seen.push_back(s.evaluate(f, u, v, m.positions, 3, 0).position);
+      }
+      worst_edge = std::max(worst_edge, distance(seen[0], seen[1]));
+    }
+  CHECK(worst_edge < 1e-13);
+  PointChecks worst;
+  for (const auto& [u, v] : {std::pair{0.3, 0.2}, std::pair{0.7, 0.85}, std::pair{0.15, 0.6}})
+    worst.take(check_point(s, m, 0, u, v));
+  CHECK(worst.differences < 1e-7);
+  CHECK(worst.stencil < 1e-13);
+}
+
 TEST_CASE("A sequence whose head does not nest, or whose tail is refused, is refused with the reason") {
-  CHECK_THROWS_WITH_AS(LimitSurface({{load_scheme("mid-edge"), 2}}, load_scheme("doo-sabin"), test::cube().level()),
-                       doctest::Contains("comes before the scheme that repeats"), Error);
+  const auto mid_edge = load_scheme("mid-edge");
+  CHECK_THROWS_WITH_AS(LimitSurface({{mid_edge, 1}}, load_scheme("doo-sabin"), test::cube().level()),
+                       doctest::Contains("an odd number: one mid-edge step turns the faces"), Error);
+  CHECK_THROWS_WITH_AS(LimitSurface({{mid_edge, 2}}, load_scheme("catmull-clark"), test::grid(2, 2).level()),
+                       doctest::Contains("has a mid-edge split and at level 0 the mesh has a boundary"), Error);
+  CHECK_THROWS_WITH_AS(LimitSurface({{load_scheme("loop"), 1}, {mid_edge, 2}}, mid_edge, test::octahedron().level()),
+                       doctest::Contains("a dual or mid-edge split after a triangle split"), Error);
   CHECK_THROWS_WITH_AS(LimitSurface({{load_scheme("catmull-clark"), 1}}, load_scheme("mid-edge"), test::grid(2, 2).level()),
                        doctest::Contains("mid-edge split and the mesh has a boundary"), Error);
 }
