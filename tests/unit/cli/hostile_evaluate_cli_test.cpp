@@ -155,7 +155,9 @@ TEST_CASE("evaluate: a sequence whose last scheme cannot take the faces its head
     CAPTURE(how);
     const CliResult r = run_bounded("evaluate " + kCube + " -s catmull-clark:1,loop" + how);
     CHECK(r.exit_code == 1);
-    CHECK_MESSAGE(contains(r.output, "scheme 'loop' needs triangles, but face 0 of the mesh has 4 vertices"), r.output);
+    CHECK_MESSAGE(contains(r.output, "scheme 'loop' needs triangles, but face 0 of level 1 (made by the schemes before "
+                                     "it) has 4 vertices"),
+                  r.output);
   }
   CHECK_FALSE(fs::exists(dir / "out.csv"));
   CHECK_FALSE(fs::exists(dir / "out.vtp"));
