@@ -29,6 +29,7 @@ bool gather_of(Element element, const CompiledTerm& t, Gather& gather) {
       if (t.role == Role::FarWings && plain) return gather = Gather::FarWings, true;
       if (t.role == Role::EndRing0 && plain) return gather = Gather::EndRing0, true;
       if (t.role == Role::EndRing1 && plain) return gather = Gather::EndRing1, true;
+      if ((t.role == Role::EndSector0 || t.role == Role::EndSector1) && plain) return gather = Gather::EndSector, true;
       return false;
     case Element::Face:
       if (t.role == Role::Vertices && plain) return gather = Gather::Corners, true;
@@ -157,6 +158,8 @@ SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGro
       if (k == int(Element::Edge) && (t.reads == Term::Reads::More || t.reads == Term::Reads::K ||
                                       (t.gather != Gather::Ends && t.gather != Gather::FacePoints)))
         edge_reads_shape_ = true;
+      if (k == int(Element::Edge) && (t.gather == Gather::EndSector || t.weights->reads_sectors()))
+        edge_reads_sectors_ = true;
       shapes[k].push_back(flat_shape(Element(k), t));
     }
   }
@@ -281,6 +284,8 @@ bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, doub
   if (L.edge_on_boundary(e) || L.non_manifold_edge(e) || !smooth_edge(step_.features, untagged_, e))
     return false;
   const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
+  if (edge_reads_sectors_ && (feature_vertex(L, step_.features, untagged_, a) || feature_vertex(L, step_.features, untagged_, b)))
+    return false;
   const Index faces[2] = {L.edge_faces[2 * e], L.edge_faces[2 * e + 1]};
   // The ends' valences and the faces' sizes only for formulas that read them: four random
   // reads an edge otherwise.
@@ -353,6 +358,7 @@ bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, doub
         }
         break;
       }
+      case Gather::EndSector: break;  // no sector at the non-feature ends taken here
       default: return false;
     }
   }
