@@ -78,12 +78,6 @@ void add_end_sector(RowBuilder& row, const Level& L, Index end, const EndSector&
     row.add(L.other_end(ring[(sector.first + j) % n], end), scale * t.edge_weight(0, j, n0, n1, k0, k1, sv));
 }
 
-// Whether a rule reads its ends' sectors (end_sectors.h), which then are found once per edge.
-bool reads_sectors(const CompiledRule& rule) {
-  for (const CompiledTerm& t : rule.terms)
-    if (t.reads_sectors() || t.role == Role::EndSector0 || t.role == Role::EndSector1) return true;
-  return false;
-}
 
 // A registered role (plugins): its points around the element, point j weighted by the term's
 // formula at (n, k, j, n0, n1).

@@ -63,6 +63,9 @@ std::vector<SmoothKernels::Term> compile_kernel(const StepContext& s, Element el
   for (const CompiledTerm& t : rule.terms) {
     Gather gather;
     if (!gather_of(element, t, gather)) return {};
+    // The kernels take no edge with an end on a boundary or crease (edge_point), where the
+    // sector roles are empty and a term of sector weights only is 0.
+    if (gather == Gather::EndSector || (t.reads_sectors() && t.zero_without_sectors)) continue;
     // Weights that read a face's corner variables (formula.h) need the generic interpreter.
     if (t.stride_ci || t.stride_cb || t.stride_ex || t.stride_fe) return {};
     // Face points are weighed by their face's size k (element_rules.cpp), so k varies too.
@@ -152,14 +155,19 @@ SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGro
       groups_(groups),
       untagged_(without_sharpness_tags(step.parent)) {
   std::vector<FlatKernels::TermShape> shapes[kElementCount];
+  edge_reads_sectors_ = reads_sectors(step.tables.rule(Element::Edge, Context::Smooth));
+  // Without sharpness tags, only a boundary or non-manifold vertex can have a sector: a closed
+  // manifold level (one scan here) needs no check per edge.
+  const Level& L = step.parent;
+  if (edge_reads_sectors_ && untagged_ && L.vertex_non_manifold.empty() &&
+      std::none_of(L.vertex_on_boundary.begin(), L.vertex_on_boundary.end(), [](std::uint8_t b) { return b != 0; }))
+    edge_reads_sectors_ = false;
   for (int k = 0; k < kElementCount; ++k) {
     kernels_[k] = compile_kernel(step, Element(k));
     for (const Term& t : kernels_[k]) {
       if (k == int(Element::Edge) && (t.reads == Term::Reads::More || t.reads == Term::Reads::K ||
                                       (t.gather != Gather::Ends && t.gather != Gather::FacePoints)))
         edge_reads_shape_ = true;
-      if (k == int(Element::Edge) && (t.gather == Gather::EndSector || t.weights->reads_sectors()))
-        edge_reads_sectors_ = true;
       shapes[k].push_back(flat_shape(Element(k), t));
     }
   }
@@ -358,7 +366,6 @@ bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, doub
         }
         break;
       }
-      case Gather::EndSector: break;  // no sector at the non-feature ends taken here
       default: return false;
     }
   }

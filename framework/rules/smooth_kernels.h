@@ -63,7 +63,7 @@ public:
     FarWings,    // edge: for each of its triangles, the vertices across the triangle's other two edges
     EndRing0,    // edge: the ring of its first end, counted CCW from the edge
     EndRing1,    // edge: likewise for its second end
-    EndSector,   // edge: an end's sector (end_sectors.h), empty at the non-feature ends the kernel takes
+    EndSector,   // edge: an end's sector (end_sectors.h): empty at the ends the kernels take, so left out
     Corners,     // face: its corners in order; face corner: its face's corners from it
   };
   struct Term {

@@ -139,6 +139,8 @@ CompiledTerm compile_term(const Term& term, FormulaSet& formulas, const std::vec
                                           end_valence(x[4]), double(x[5]), double(x[6]), double(x[7]), double(x[8]),
                                           double(x[9]), double(x[10]), double(x[11]), double(x[12]), double(x[13]),
                                           double(x[14]), double(x[15]), double(x[16])});
+    if (std::all_of(x + 11, x + kVariables, [](int v) { return v == 0; }) && out.table[i] != 0.0)
+      out.zero_without_sectors = false;
   });
   drop_constant_dimensions(out, shape.count);
   if (out.stride_n0 == 0 && out.stride_n1 == 0) out.end_slot.clear();

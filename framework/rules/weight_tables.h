@@ -31,6 +31,9 @@ struct CompiledTerm {
   size_t stride_ci = 0, stride_cb = 0, stride_ex = 0, stride_fe = 0;
   // Edge rules' sector variables b0, b1 (0 or 1), m0, m1, e0, e1 (each <= max_n).
   size_t stride_b0 = 0, stride_b1 = 0, stride_m0 = 0, stride_m1 = 0, stride_e0 = 0, stride_e1 = 0;
+  // Every weight is 0 where neither end has a sector (b0 = b1 = 0): a term of the rule next to
+  // boundaries and creases only, which the smooth kernels leave out.
+  bool zero_without_sectors = true;
   int max_j = 0;  // the largest point index j tabulated
   // When not empty, the end valences n0, n1 are tabulated only at the valences present on
   // the level (FormulaScope::valences): end_slot[n] is valence n's place in the table.
@@ -67,6 +70,13 @@ struct CompiledRule {
   std::string where;
   bool defined = false;
 };
+
+// Whether an edge rule reads its ends' sectors (variables or roles), which are then found per edge.
+inline bool reads_sectors(const CompiledRule& rule) {
+  for (const CompiledTerm& t : rule.terms)
+    if (t.reads_sectors() || t.role == Role::EndSector0 || t.role == Role::EndSector1) return true;
+  return false;
+}
 
 struct WeightTables {
   CompiledRule rules[kElementCount][kContextCount];

@@ -267,12 +267,6 @@ struct SectorEnd {
   int n, b, m, e;
 };
 
-bool reads_sectors(const CompiledRule& rule) {
-  for (const auto& t : rule.terms)
-    if (t.reads_sectors() || t.role == Role::EndSector0 || t.role == Role::EndSector1) return true;
-  return false;
-}
-
 double sector_rule_sum(const CompiledRule& rule, const SectorEnd& a, const SectorEnd& b) {
   SectorVariables sv;
   sv.b[0] = a.b, sv.m[0] = a.m, sv.e[0] = a.e, sv.b[1] = b.b, sv.m[1] = b.m, sv.e[1] = b.e;

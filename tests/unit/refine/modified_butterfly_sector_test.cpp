@@ -8,7 +8,7 @@
 // 1 - sin(e pi/k) cot(pi/(2k)) / k. An edge with one such end takes that end's stencil alone,
 // one with two the average of both. Checked here against that closed form, written out, on
 // meshes whose ring points are interior (one feature end) or on the boundary (two), on a
-// boundary and on creases of sectors (3, 3), (2, 4), (1, 5) and (4, 4); with linear
+// boundary, on creases of sectors (3, 3), (2, 4), (1, 5) and (4, 4) and at corners; with linear
 // precision on the half-disk p_i = (cos i pi/k, sin i pi/k) and on a regular grid with a
 // straight boundary; and old vertices kept.
 #include <doctest/doctest.h>
@@ -16,17 +16,14 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
-#include "support/refine_helpers.h"
+#include "unit/refine/modified_butterfly_support.h"
 
 using namespace subdiv;
 using namespace subdiv::test;
 
 namespace {
-
-using Point = std::array<double, 3>;
-
-Point at(const std::vector<double>& xyz, Index v) { return {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]}; }
 
 // The sector stencil's weight s_i for the edge to p_e in a sector of k faces.
 double sector_weight(int k, int e, int i) {
@@ -73,26 +70,6 @@ Mesh fan(int m, bool closed, bool outer, bool exact) {
   return mesh;
 }
 
-Index edge_child(const ChildOrigins& origins, Index e) {
-  for (Index c = 0; c < Index(origins.kind.size()); ++c)
-    if (origins.kind[c] == OriginKind::Edge && origins.parent[c] == e) return c;
-  FAIL("edge has no child");
-  return kNone;
-}
-
-struct OneStep {
-  Hierarchy h;
-  std::vector<double> positions;
-};
-
-OneStep refine_once(const Level& base, const std::vector<double>& positions) {
-  RefineOptions o;
-  o.levels = 1;
-  OneStep r{refine(*load_scheme("modified-butterfly"), base, o), {}};
-  r.positions = interpolate(r.h, 1, positions, 3);
-  return r;
-}
-
 void check_close(const Point& got, const Point& want) {
   for (int c = 0; c < 3; ++c) CHECK(got[c] == doctest::Approx(want[c]).epsilon(1e-13));
 }
@@ -111,7 +88,7 @@ TEST_CASE("modified butterfly: an interior edge at a boundary vertex takes the s
     CAPTURE(k);
     const Mesh mesh = fan(k + 1, false, true, false);
     const Level base = mesh.level();
-    const OneStep r = refine_once(base, mesh.positions);
+    const OneLevel r = refine_level(base, mesh.positions);
     const std::vector<Point> p = sector_of(mesh, k + 1, 0, k);
     const Point v = at(mesh.positions, 0);
     // Every interior edge at v has an interior other end: v's stencil alone.
@@ -131,7 +108,7 @@ TEST_CASE("modified butterfly: an interior edge with both ends on the boundary a
     CAPTURE(k);
     const Mesh mesh = fan(k + 1, false, false, false);
     const Level base = mesh.level();
-    const OneStep r = refine_once(base, mesh.positions);
+    const OneLevel r = refine_level(base, mesh.positions);
     const std::vector<Point> p = sector_of(mesh, k + 1, 0, k);
     const Point v = at(mesh.positions, 0);
     for (int e = 1; e < k; ++e) {
@@ -149,32 +126,36 @@ TEST_CASE("modified butterfly: an interior edge with both ends on the boundary a
   }
 }
 
-TEST_CASE("modified butterfly: at a crease vertex each side is a sector, (3, 3), (2, 4), (1, 5) and (4, 4)") {
-  struct Split {
-    int m, a;  // ring size, and the second crease edge's ring position (the first is 0)
+TEST_CASE("modified butterfly: at a crease or corner vertex each sector between feature edges has its stencil") {
+  // Crease sectors (3, 3), (2, 4), (1, 5), (4, 4); corners of three feature edges with
+  // sectors (2, 2, 2) and (1, 2, 3).
+  struct Case {
+    int m;                  // ring size
+    std::vector<int> sharp;  // ring positions of the feature edges, ascending
   };
-  for (const Split s : {Split{6, 3}, Split{6, 2}, Split{6, 1}, Split{8, 4}}) {
+  for (const Case& s : {Case{6, {0, 3}}, Case{6, {0, 2}}, Case{6, {0, 1}}, Case{8, {0, 4}}, Case{6, {0, 2, 4}},
+                        Case{6, {0, 1, 3}}}) {
     CAPTURE(s.m);
-    CAPTURE(s.a);
+    CAPTURE(s.sharp.size());
+    CAPTURE(s.sharp[1]);
     const Mesh mesh = fan(s.m, true, true, false);
     Level base = mesh.level();
-    // The crease runs q_0 - p_0 - v - p_a - q_a, through v and out to the outer boundary.
+    // Each feature line runs p_i - v and on to q_i on the outer boundary.
     base.edge_sharpness.assign(size_t(base.edge_count()), 0.f);
-    for (int i : {0, s.a}) {
+    for (int i : s.sharp) {
       base.edge_sharpness[size_t(find_edge(base, 0, Index(1 + i)))] = 10.f;
       base.edge_sharpness[size_t(find_edge(base, Index(1 + i), Index(1 + s.m + i)))] = 10.f;
     }
-    const OneStep r = refine_once(base, mesh.positions);
+    const OneLevel r = refine_level(base, mesh.positions);
     const Point v = at(mesh.positions, 0);
-    for (int i = 1; i < s.m; ++i) {
-      if (i == s.a) continue;
-      CAPTURE(i);
-      // Sector 0 holds ring points 0 .. a, sector 1 holds a .. m (= 0).
-      const bool first = i < s.a;
-      const int k = first ? s.a : s.m - s.a;
-      const Point want = sector_point(v, sector_of(mesh, s.m, first ? 0 : s.a, k), first ? i : i - s.a);
-      const Index edge = find_edge(base, 0, Index(1 + i));
-      check_close(at(r.positions, edge_child(r.h.origins[0], edge)), want);
+    for (size_t t = 0; t < s.sharp.size(); ++t) {
+      const int first = s.sharp[t], last = t + 1 < s.sharp.size() ? s.sharp[t + 1] : s.m;
+      for (int i = first + 1; i < last; ++i) {
+        CAPTURE(i);
+        const Point want = sector_point(v, sector_of(mesh, s.m, first, last - first), i - first);
+        const Index edge = find_edge(base, 0, Index(1 + i));
+        check_close(at(r.positions, edge_child(r.h.origins[0], edge)), want);
+      }
     }
   }
 }
@@ -189,7 +170,7 @@ TEST_CASE("modified butterfly: on the half-disk the sector stencil reproduces li
     for (size_t i = 0; i < mesh.positions.size(); i += 3)
       mesh.positions[i + 2] = 0.7 * mesh.positions[i] - 0.4 * mesh.positions[i + 1] + 2;  // a plane
     const Level base = mesh.level();
-    const OneStep r = refine_once(base, mesh.positions);
+    const OneLevel r = refine_level(base, mesh.positions);
     for (int e = 1; e < k; ++e) {
       CAPTURE(e);
       const Point got = at(r.positions, edge_child(r.h.origins[0], find_edge(base, 0, Index(1 + e))));
@@ -244,7 +225,7 @@ TEST_CASE("modified butterfly: a regular grid with a straight boundary refines l
 TEST_CASE("modified butterfly: old vertices stay at boundary and crease vertices of every sector size") {
   for (int k = 1; k <= 6; ++k) {
     const Mesh mesh = fan(k + 1, false, true, false);
-    const OneStep r = refine_once(mesh.level(), mesh.positions);
+    const OneLevel r = refine_level(mesh.level(), mesh.positions);
     const ChildOrigins& o = r.h.origins[0];
     for (Index c = 0; c < Index(o.kind.size()); ++c)
       if (o.kind[c] == OriginKind::Vertex) CHECK(at(r.positions, c) == at(mesh.positions, o.parent[c]));
