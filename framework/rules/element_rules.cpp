@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <fmt/format.h>
 
+#include "framework/rules/end_sectors.h"
 #include "framework/rules/feature_curve.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
@@ -58,13 +59,25 @@ void add_across(RowBuilder& row, const Level& L, Index p, Index q, Index r, doub
 
 // The ring of `end`, counted CCW from edge e (j = 0 is the edge's other end).
 void add_end_ring(RowBuilder& row, const Level& L, Index e, Index end, const CompiledTerm& t, int n0, int n1, int k0,
-                  int k1, double scale) {
+                  int k1, const SectorVariables& sv, double scale) {
   const auto ring = L.ring_edges(end);
   const int n = int(ring.size());
   int start = 0;
   while (start < n && ring[start] != e) ++start;
-  for (int j = 0; j < n; ++j) row.add(L.other_end(ring[(start + j) % n], end), scale * t.weight(2, 0, j, n0, n1, k0, k1));
+  for (int j = 0; j < n; ++j)
+    row.add(L.other_end(ring[(start + j) % n], end), scale * t.edge_weight(0, j, n0, n1, k0, k1, sv));
 }
+
+// The points p_0 .. p_m of end's sector that holds the edge (end_sectors.h); none where the
+// end is not a feature vertex.
+void add_end_sector(RowBuilder& row, const Level& L, Index end, const EndSector& sector, const CompiledTerm& t, int n0,
+                    int n1, int k0, int k1, const SectorVariables& sv, double scale) {
+  const auto ring = L.ring_edges(end);
+  const int n = int(ring.size());
+  for (int j = 0; sector.faces > 0 && j <= sector.faces; ++j)
+    row.add(L.other_end(ring[(sector.first + j) % n], end), scale * t.edge_weight(0, j, n0, n1, k0, k1, sv));
+}
+
 
 // A registered role (plugins): its points around the element, point j weighted by the term's
 // formula at (n, k, j, n0, n1).
@@ -189,32 +202,38 @@ void apply_edge_rule(RowBuilder& row, const RuleInputs& in, Index e, const Compi
   const int n0 = L.valence(a), n1 = L.valence(b);
   // Sizes of the edge's two faces (0: none), for formulas that weigh by both (k0, k1).
   const int k0 = L.face_size(faces[0]), k1 = face_count == 2 ? L.face_size(faces[1]) : 0;
+  EndSector sector_a, sector_b;
+  if (reads_sectors(rule))
+    sector_a = end_sector(L, in.features, e, a), sector_b = end_sector(L, in.features, e, b);
+  const SectorVariables sv = sector_variables(sector_a, sector_b);
   for (const CompiledTerm& t : rule.terms) {
     switch (t.role) {
       case Role::Ends:
-        row.add(a, scale * t.weight(2, 0, 0, n0, n1, k0, k1));
-        row.add(b, scale * t.weight(2, 0, 1, n0, n1, k0, k1));
+        row.add(a, scale * t.edge_weight(0, 0, n0, n1, k0, k1, sv));
+        row.add(b, scale * t.edge_weight(0, 1, n0, n1, k0, k1, sv));
         break;
       case Role::Faces:
         for (int j = 0; j < face_count; ++j)
-          add_point(row, in, t, faces[j], scale * t.weight(2, L.face_size(faces[j]), j, n0, n1, k0, k1));
+          add_point(row, in, t, faces[j], scale * t.edge_weight(L.face_size(faces[j]), j, n0, n1, k0, k1, sv));
         break;
       case Role::Opposite:
       case Role::Wings:
         for (int j = 0; j < face_count; ++j)
-          row.add(third_vertex(L, faces[j], a, b, t), scale * t.weight(2, 3, j, n0, n1, k0, k1));
+          row.add(third_vertex(L, faces[j], a, b, t), scale * t.edge_weight(3, j, n0, n1, k0, k1, sv));
         break;
       case Role::FarWings:
         // Triangle j runs (p, q, c); its far wings lie across (q, c) and (c, p).
         for (int j = 0; j < face_count; ++j) {
           const Index p = j == 0 ? a : b, q = j == 0 ? b : a;
           const Index c = third_vertex(L, faces[j], a, b, t);
-          add_across(row, L, q, c, p, scale * t.weight(2, 3, 2 * j, n0, n1, k0, k1), t);
-          add_across(row, L, c, p, q, scale * t.weight(2, 3, 2 * j + 1, n0, n1, k0, k1), t);
+          add_across(row, L, q, c, p, scale * t.edge_weight(3, 2 * j, n0, n1, k0, k1, sv), t);
+          add_across(row, L, c, p, q, scale * t.edge_weight(3, 2 * j + 1, n0, n1, k0, k1, sv), t);
         }
         break;
-      case Role::EndRing0: add_end_ring(row, L, e, a, t, n0, n1, k0, k1, scale); break;
-      case Role::EndRing1: add_end_ring(row, L, e, b, t, n0, n1, k0, k1, scale); break;
+      case Role::EndRing0: add_end_ring(row, L, e, a, t, n0, n1, k0, k1, sv, scale); break;
+      case Role::EndRing1: add_end_ring(row, L, e, b, t, n0, n1, k0, k1, sv, scale); break;
+      case Role::EndSector0: add_end_sector(row, L, a, sector_a, t, n0, n1, k0, k1, sv, scale); break;
+      case Role::EndSector1: add_end_sector(row, L, b, sector_b, t, n0, n1, k0, k1, sv, scale); break;
       case Role::Curve: {
         CompiledRule single;
         single.terms.push_back(t);
@@ -222,7 +241,7 @@ void apply_edge_rule(RowBuilder& row, const RuleInputs& in, Index e, const Compi
         break;
       }
       default:
-        if (!add_registered_role(row, in, t, e, 0, scale, [&](int j) { return t.weight(2, 0, j, n0, n1, k0, k1); }))
+        if (!add_registered_role(row, in, t, e, 0, scale, [&](int j) { return t.edge_weight(0, j, n0, n1, k0, k1, sv); }))
           wrong_role(t, Element::Edge);
     }
   }

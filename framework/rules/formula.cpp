@@ -16,7 +16,7 @@ namespace subdiv {
 namespace {
 
 constexpr const char* kFormulaHelp =
-    "Formulas may use n, k, j, l (edge rules also n0, n1, k0, k1; face rules ci, cb, ex, fe), the scheme's parameters, state and definitions, muParser "
+    "Formulas may use n, k, j, l (edge rules also n0, n1, k0, k1, b0, b1, m0, m1, e0, e1; face rules ci, cb, ex, fe), the scheme's parameters, state and definitions, muParser "
     "functions such as cos, sqrt, min, max, the functions binom(a, b), floor, ceil, mod(a, b), "
     "and the constant pi";
 
@@ -50,6 +50,7 @@ struct FormulaSet::Impl {
   // Variable storage must not move: muParser keeps pointers to it.
   double n = 0, k = 0, j = 0, l = 0, n0 = 0, n1 = 0, k0 = 0, k1 = 0;
   double ci = 0, cb = 0, ex = 0, fe = 0;
+  double b0 = 0, b1 = 0, m0 = 0, m1 = 0, e0 = 0, e1 = 0;
   std::map<std::string, double> parameters;
 
   // State variables: initial and next parsers, the storage formulas read, and the values
@@ -87,6 +88,12 @@ struct FormulaSet::Impl {
       parser->DefineVar("cb", &cb);
       parser->DefineVar("ex", &ex);
       parser->DefineVar("fe", &fe);
+      parser->DefineVar("b0", &b0);
+      parser->DefineVar("b1", &b1);
+      parser->DefineVar("m0", &m0);
+      parser->DefineVar("m1", &m1);
+      parser->DefineVar("e0", &e0);
+      parser->DefineVar("e1", &e1);
       parser->DefineConst("pi", 3.14159265358979323846);
       parser->DefineFun("binom", binom_fn);
       parser->DefineFun("floor", floor_fn);
@@ -101,6 +108,8 @@ struct FormulaSet::Impl {
         uses.n |= name == "n", uses.k |= name == "k", uses.j |= name == "j", uses.l |= name == "l";
         uses.n0 |= name == "n0", uses.n1 |= name == "n1", uses.k0 |= name == "k0", uses.k1 |= name == "k1";
         uses.ci |= name == "ci", uses.cb |= name == "cb", uses.ex |= name == "ex", uses.fe |= name == "fe";
+        uses.b0 |= name == "b0", uses.b1 |= name == "b1", uses.m0 |= name == "m0", uses.m1 |= name == "m1";
+        uses.e0 |= name == "e0", uses.e1 |= name == "e1";
         if (parameters.count(name) && !uses.reads(name)) uses.parameters.push_back(name);
         for (size_t i = 0; i < visible_definitions; ++i)
           if (definition_names[i] == name) uses.merge(definition_uses[i]);
@@ -269,6 +278,7 @@ double FormulaSet::evaluate(int id, const FormulaInputs& in) {
   impl_->n = in.n, impl_->k = in.k, impl_->j = in.j, impl_->l = in.l, impl_->n0 = in.n0, impl_->n1 = in.n1;
   impl_->k0 = in.k0, impl_->k1 = in.k1;
   impl_->ci = in.ci, impl_->cb = in.cb, impl_->ex = in.ex, impl_->fe = in.fe;
+  impl_->b0 = in.b0, impl_->b1 = in.b1, impl_->m0 = in.m0, impl_->m1 = in.m1, impl_->e0 = in.e0, impl_->e1 = in.e1;
   impl_->evaluate_definitions(impl_->wheres[id]);
   try {
     return impl_->formulas[id]->Eval();
@@ -288,6 +298,7 @@ std::vector<double> FormulaSet::state_values(int level) {
 void FormulaUses::merge(const FormulaUses& o) {
   n |= o.n, k |= o.k, j |= o.j, l |= o.l, n0 |= o.n0, n1 |= o.n1, k0 |= o.k0, k1 |= o.k1;
   ci |= o.ci, cb |= o.cb, ex |= o.ex, fe |= o.fe;
+  b0 |= o.b0, b1 |= o.b1, m0 |= o.m0, m1 |= o.m1, e0 |= o.e0, e1 |= o.e1;
   for (const std::string& p : o.parameters)
     if (!reads(p)) parameters.push_back(p);
 }

@@ -3,7 +3,8 @@
 // face the point belongs to), j (index of the point within its role), l (level), n0 and
 // n1 (valences of an edge's two ends, in edge rules), k0 and k1 (sizes of an edge's two
 // faces, 0 where there is none, in edge rules: OpenSubdiv's smooth-triangle weights), the
-// face rules' corner variables ci, cb, ex and fe (weight_tables.h), the
+// face rules' corner variables ci, cb, ex and fe (weight_tables.h), the edge rules' sector
+// variables b0, b1, m0, m1, e0, e1 (element_rules.h: EdgeSectors), the
 // scheme's numeric parameters, and the scheme's named definitions. Formulas are evaluated
 // only while weight tables are prepared, never per vertex; a FormulaSet is not thread-safe.
 #include <map>
@@ -18,12 +19,16 @@ struct FormulaInputs {
   // Face rules (the corner roles): the corner's index, whether its vertex is on a boundary
   // or crease, the face's number of extraordinary corners and of feature edges.
   double ci = 0, cb = 0, ex = 0, fe = 0;
+  // Edge rules (the end-sector roles): per end, 1 when it is a feature vertex whose sector
+  // holds the edge, that sector's number of faces, and the edge's index in it (0 elsewhere).
+  double b0 = 0, b1 = 0, m0 = 0, m1 = 0, e0 = 0, e1 = 0;
 };
 
 // Which of n, k, j, l, n0, n1, k0, k1 a formula depends on (through definitions too).
 struct FormulaUses {
   bool n = false, k = false, j = false, l = false, n0 = false, n1 = false, k0 = false, k1 = false;
   bool ci = false, cb = false, ex = false, fe = false;
+  bool b0 = false, b1 = false, m0 = false, m1 = false, e0 = false, e1 = false;
   // The scheme parameters it reads, directly or through definitions and state variables
   // (per-vertex parameters may only be read by vertex rules: scheme_loader.cpp).
   std::vector<std::string> parameters;

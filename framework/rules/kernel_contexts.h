@@ -23,6 +23,13 @@ inline bool smooth_vertex(const FeatureContexts& F, bool untagged, Index v, int 
   return vc.parent == Context::Smooth && vc.child == Context::Smooth;
 }
 
+// Vertex v may have a sector (end_sectors.h): it lies on a boundary or crease, or is a corner.
+inline bool feature_vertex(const Level& L, const FeatureContexts& F, bool untagged, Index v) {
+  if (untagged) return L.on_boundary(v) || L.non_manifold_vertex(v);
+  const Context c = F.vertices[v].parent;
+  return c == Context::Crease || c == Context::Corner;
+}
+
 // Interior edge e is not (even partly) a crease.
 inline bool smooth_edge(const FeatureContexts& F, bool untagged, Index e) {
   return untagged || F.edges[e].crease_weight == 0.f;

@@ -29,6 +29,8 @@ bool rule_inside(const CompiledRule& rule, Inside inside, const bool new_point_o
     if (!inside(t.role) || !new_point_ok[int(t.new_point)]) return false;
     // A face's corner variables (formula.h) are not part of a plan's key.
     if (t.stride_ci || t.stride_cb || t.stride_ex || t.stride_fe) return false;
+    // Nor are an edge's sector variables (end_sectors.h).
+    if (t.reads_sectors()) return false;
   }
   return true;
 }

@@ -40,6 +40,9 @@ enum class Role : std::uint8_t {
   EndRing1,  // edge rule: the ring of the edge's second end, likewise
   Corners,   // face rule: the face's vertices, each seen with its own valence n (corner variables)
   CornerRings,  // face rule: each corner's ring, CCW from the face's previous vertex to its next
+  EndSector0,  // edge rule: where end 0 is a feature vertex, the ring points p_0..p_m of its sector that
+               // holds the edge, CCW from one feature edge to the next (empty elsewhere; sector variables)
+  EndSector1,  // edge rule: the same for end 1
   Curve,     // crease and boundary rules: points along the feature curve (from the curve scheme)
   CreasePoint,  // vertex crease rule: the crease vertex Term::step crease edges along the crease
                 // (negative: towards the nearest corner; in a rule for no particular distance, the

@@ -10,7 +10,7 @@
 namespace subdiv {
 namespace {
 
-constexpr std::array<std::pair<Role, std::string_view>, 18> kRoleNames{{
+constexpr std::array<std::pair<Role, std::string_view>, 20> kRoleNames{{
     {Role::Self, "self"},
     {Role::Ring, "ring"},
     {Role::Faces, "faces"},
@@ -27,6 +27,8 @@ constexpr std::array<std::pair<Role, std::string_view>, 18> kRoleNames{{
     {Role::EndRing1, "end-ring-1"},
     {Role::Corners, "corners"},
     {Role::CornerRings, "corner-rings"},
+    {Role::EndSector0, "end-sector-0"},
+    {Role::EndSector1, "end-sector-1"},
     {Role::Curve, "curve"},
     {Role::CreasePoint, "crease-point"},
 }};
@@ -132,7 +134,7 @@ bool role_allowed(Element element, Role role) {
     case Element::Edge:
       return role == Role::Ends || role == Role::Faces || role == Role::Opposite ||
              role == Role::Wings || role == Role::FarWings || role == Role::EndRing0 ||
-             role == Role::EndRing1 || role == Role::Curve;
+             role == Role::EndRing1 || role == Role::EndSector0 || role == Role::EndSector1 || role == Role::Curve;
     case Element::Face:
       return role == Role::Vertices || role == Role::Edges || role == Role::Corners || role == Role::CornerRings;
     case Element::Corner:

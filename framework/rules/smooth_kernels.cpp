@@ -29,6 +29,7 @@ bool gather_of(Element element, const CompiledTerm& t, Gather& gather) {
       if (t.role == Role::FarWings && plain) return gather = Gather::FarWings, true;
       if (t.role == Role::EndRing0 && plain) return gather = Gather::EndRing0, true;
       if (t.role == Role::EndRing1 && plain) return gather = Gather::EndRing1, true;
+      if ((t.role == Role::EndSector0 || t.role == Role::EndSector1) && plain) return gather = Gather::EndSector, true;
       return false;
     case Element::Face:
       if (t.role == Role::Vertices && plain) return gather = Gather::Corners, true;
@@ -62,6 +63,9 @@ std::vector<SmoothKernels::Term> compile_kernel(const StepContext& s, Element el
   for (const CompiledTerm& t : rule.terms) {
     Gather gather;
     if (!gather_of(element, t, gather)) return {};
+    // The kernels take no edge with an end on a boundary or crease (edge_point), where the
+    // sector roles are empty and a term of sector weights only is 0.
+    if (gather == Gather::EndSector || (t.reads_sectors() && t.zero_without_sectors)) continue;
     // Weights that read a face's corner variables (formula.h) need the generic interpreter.
     if (t.stride_ci || t.stride_cb || t.stride_ex || t.stride_fe) return {};
     // Face points are weighed by their face's size k (element_rules.cpp), so k varies too.
@@ -151,6 +155,13 @@ SmoothKernels::SmoothKernels(const StepContext& step, const std::vector<ChildGro
       groups_(groups),
       untagged_(without_sharpness_tags(step.parent)) {
   std::vector<FlatKernels::TermShape> shapes[kElementCount];
+  edge_reads_sectors_ = reads_sectors(step.tables.rule(Element::Edge, Context::Smooth));
+  // Without sharpness tags, only a boundary or non-manifold vertex can have a sector: a closed
+  // manifold level (one scan here) needs no check per edge.
+  const Level& L = step.parent;
+  if (edge_reads_sectors_ && untagged_ && L.vertex_non_manifold.empty() &&
+      std::none_of(L.vertex_on_boundary.begin(), L.vertex_on_boundary.end(), [](std::uint8_t b) { return b != 0; }))
+    edge_reads_sectors_ = false;
   for (int k = 0; k < kElementCount; ++k) {
     kernels_[k] = compile_kernel(step, Element(k));
     for (const Term& t : kernels_[k]) {
@@ -281,6 +292,8 @@ bool SmoothKernels::edge_point(Index e, const StepSources& in, double* out, doub
   if (L.edge_on_boundary(e) || L.non_manifold_edge(e) || !smooth_edge(step_.features, untagged_, e))
     return false;
   const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
+  if (edge_reads_sectors_ && (feature_vertex(L, step_.features, untagged_, a) || feature_vertex(L, step_.features, untagged_, b)))
+    return false;
   const Index faces[2] = {L.edge_faces[2 * e], L.edge_faces[2 * e + 1]};
   // The ends' valences and the faces' sizes only for formulas that read them: four random
   // reads an edge otherwise.

@@ -63,6 +63,7 @@ public:
     FarWings,    // edge: for each of its triangles, the vertices across the triangle's other two edges
     EndRing0,    // edge: the ring of its first end, counted CCW from the edge
     EndRing1,    // edge: likewise for its second end
+    EndSector,   // edge: an end's sector (end_sectors.h): empty at the ends the kernels take, so left out
     Corners,     // face: its corners in order; face corner: its face's corners from it
   };
   struct Term {
@@ -116,6 +117,9 @@ private:
   const std::vector<ChildGroup>& groups_;
   std::vector<Term> kernels_[kElementCount];  // empty: not covered
   bool edge_reads_shape_ = false;  // an edge term reads k, n0, n1, k0, k1 or needs triangles or rings
+  // An edge term reads its ends' sectors (end_sectors.h): edges with an end on a boundary or
+  // crease are left to the interpreter, elsewhere the sector variables are 0 and the roles empty.
+  bool edge_reads_sectors_ = false;
   // The parent level has no sharpness tags: its interior vertices and edges are smooth.
   const bool untagged_;
   std::unique_ptr<FlatKernels> flat_;

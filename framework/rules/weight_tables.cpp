@@ -9,21 +9,23 @@
 namespace subdiv {
 namespace {
 
-constexpr int kVariables = 11;  // n, k, j, n0, n1, k0, k1, ci, cb, ex, fe
+constexpr int kVariables = 17;  // n, k, j, n0, n1, k0, k1, ci, cb, ex, fe, b0, b1, m0, m1, e0, e1
 
 // Sizes and strides of the dense table over the variables a formula uses.
 struct TableShape {
   size_t size = 1;
-  int count[kVariables] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+  int count[kVariables] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
   size_t stride[kVariables] = {};
 };
 
 TableShape table_shape(const FormulaUses& uses, int max_n, int max_k, int max_j, int end_count) {
   TableShape s;
   const bool used[kVariables] = {uses.n, uses.k, uses.j, uses.n0, uses.n1, uses.k0, uses.k1,
-                                 uses.ci, uses.cb, uses.ex, uses.fe};
+                                 uses.ci, uses.cb, uses.ex, uses.fe, uses.b0, uses.b1, uses.m0, uses.m1,
+                                 uses.e0, uses.e1};
   const int range[kVariables] = {max_n + 1, max_k + 1, max_j + 1, end_count, end_count, max_k + 1, max_k + 1,
-                                 std::max(max_k, 1), 2, max_k + 1, max_k + 1};
+                                 std::max(max_k, 1), 2, max_k + 1, max_k + 1, 2, 2, max_n + 1, max_n + 1,
+                                 max_n + 1, max_n + 1};
   for (int v = kVariables - 1; v >= 0; --v) {
     if (!used[v]) continue;
     s.count[v] = range[v];
@@ -69,7 +71,8 @@ void for_each_entry(const int count[kVariables], const size_t stride[kVariables]
 // on n alone as such. The values stay the same.
 void drop_constant_dimensions(CompiledTerm& t, const int count[kVariables]) {
   size_t* strides[kVariables] = {&t.stride_n,  &t.stride_k,  &t.stride_j,  &t.stride_n0, &t.stride_n1, &t.stride_k0,
-                                 &t.stride_k1, &t.stride_ci, &t.stride_cb, &t.stride_ex, &t.stride_fe};
+                                 &t.stride_k1, &t.stride_ci, &t.stride_cb, &t.stride_ex, &t.stride_fe,
+                                 &t.stride_b0, &t.stride_b1, &t.stride_m0, &t.stride_m1, &t.stride_e0, &t.stride_e1};
   size_t stride[kVariables];
   for (int v = 0; v < kVariables; ++v) stride[v] = *strides[v];
   bool constant[kVariables];
@@ -126,12 +129,18 @@ CompiledTerm compile_term(const Term& term, FormulaSet& formulas, const std::vec
   out.stride_k0 = shape.stride[5], out.stride_k1 = shape.stride[6];
   out.stride_ci = shape.stride[7], out.stride_cb = shape.stride[8];
   out.stride_ex = shape.stride[9], out.stride_fe = shape.stride[10];
+  out.stride_b0 = shape.stride[11], out.stride_b1 = shape.stride[12];
+  out.stride_m0 = shape.stride[13], out.stride_m1 = shape.stride[14];
+  out.stride_e0 = shape.stride[15], out.stride_e1 = shape.stride[16];
   check_table_fits(shape, term.where, max_n);
   out.table.resize(shape.size);
   for_each_entry(shape.count, shape.stride, [&](size_t i, const int* x) {
     out.table[i] = formulas.evaluate(id, {double(x[0]), double(x[1]), double(x[2]), double(level), end_valence(x[3]),
                                           end_valence(x[4]), double(x[5]), double(x[6]), double(x[7]), double(x[8]),
-                                          double(x[9]), double(x[10])});
+                                          double(x[9]), double(x[10]), double(x[11]), double(x[12]), double(x[13]),
+                                          double(x[14]), double(x[15]), double(x[16])});
+    if (std::all_of(x + 11, x + kVariables, [](int v) { return v == 0; }) && out.table[i] != 0.0)
+      out.zero_without_sectors = false;
   });
   drop_constant_dimensions(out, shape.count);
   if (out.stride_n0 == 0 && out.stride_n1 == 0) out.end_slot.clear();

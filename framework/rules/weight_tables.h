@@ -13,6 +13,12 @@
 
 namespace subdiv {
 
+// An edge rule's sector variables (formula.h): per end, b = 1 when the end is a feature vertex
+// whose sector holds the edge, m the sector's number of faces, e the edge's index in it.
+struct SectorVariables {
+  int b[2] = {0, 0}, m[2] = {0, 0}, e[2] = {0, 0};
+};
+
 struct CompiledTerm {
   Role role = Role::Self;
   NewPoint new_point = NewPoint::None;
@@ -23,6 +29,11 @@ struct CompiledTerm {
   // Face rules' corner variables (formula.h): corner index ci < max_k, boundary flag cb and
   // the face's counts of extraordinary corners ex and feature edges fe, each <= max_k.
   size_t stride_ci = 0, stride_cb = 0, stride_ex = 0, stride_fe = 0;
+  // Edge rules' sector variables b0, b1 (0 or 1), m0, m1, e0, e1 (each <= max_n).
+  size_t stride_b0 = 0, stride_b1 = 0, stride_m0 = 0, stride_m1 = 0, stride_e0 = 0, stride_e1 = 0;
+  // Every weight is 0 where neither end has a sector (b0 = b1 = 0): a term of the rule next to
+  // boundaries and creases only, which the smooth kernels leave out.
+  bool zero_without_sectors = true;
   int max_j = 0;  // the largest point index j tabulated
   // When not empty, the end valences n0, n1 are tabulated only at the valences present on
   // the level (FormulaScope::valences): end_slot[n] is valence n's place in the table.
@@ -37,6 +48,16 @@ struct CompiledTerm {
     return table[n * stride_n + k * stride_k + j * stride_j + n0 * stride_n0 + n1 * stride_n1 + k0 * stride_k0 +
                  k1 * stride_k1];
   }
+  bool reads_sectors() const {
+    return stride_b0 || stride_b1 || stride_m0 || stride_m1 || stride_e0 || stride_e1;
+  }
+  // An edge rule's weight with its ends' sector variables (n = 2).
+  double edge_weight(int k, int j, int n0, int n1, int k0, int k1, const SectorVariables& s) const {
+    if (!end_slot.empty()) n0 = end_slot[size_t(n0)], n1 = end_slot[size_t(n1)];
+    return table[2 * stride_n + k * stride_k + j * stride_j + n0 * stride_n0 + n1 * stride_n1 + k0 * stride_k0 +
+                 k1 * stride_k1 + s.b[0] * stride_b0 + s.b[1] * stride_b1 + s.m[0] * stride_m0 + s.m[1] * stride_m1 +
+                 s.e[0] * stride_e0 + s.e[1] * stride_e1];
+  }
   // A face rule's corner-role weight: n the corner's valence, k the face size.
   double corner_weight(int n, int k, int j, int ci, int cb, int ex, int fe) const {
     return table[n * stride_n + k * stride_k + j * stride_j + ci * stride_ci + cb * stride_cb + ex * stride_ex +
@@ -49,6 +70,13 @@ struct CompiledRule {
   std::string where;
   bool defined = false;
 };
+
+// Whether an edge rule reads its ends' sectors (variables or roles), which are then found per edge.
+inline bool reads_sectors(const CompiledRule& rule) {
+  for (const CompiledTerm& t : rule.terms)
+    if (t.reads_sectors() || t.role == Role::EndSector0 || t.role == Role::EndSector1) return true;
+  return false;
+}
 
 struct WeightTables {
   CompiledRule rules[kElementCount][kContextCount];

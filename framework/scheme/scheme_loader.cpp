@@ -106,9 +106,10 @@ double parse_number(const std::string& text, const Place& at) {
 
 // Names formulas already use for themselves.
 void check_not_reserved(const std::string& name, const Place& at) {
-  static const std::set<std::string> reserved{"n", "k", "j", "l", "n0", "n1", "k0", "k1", "ci", "cb", "ex", "fe", "pi"};
+  static const std::set<std::string> reserved{"n",  "k",  "j",  "l",  "n0", "n1", "k0", "k1", "ci", "cb",
+                                              "ex", "fe", "b0", "b1", "m0", "m1", "e0", "e1", "pi"};
   if (reserved.count(name))
-    fail(at, fmt::format("{} is a reserved name in formulas (n, k, j, l, n0, n1, k0, k1, ci, cb, ex, fe, pi); rename it",
+    fail(at, fmt::format("{} is a reserved name in formulas (n, k, j, l, n0, n1, k0, k1, ci, cb, ex, fe, b0, b1, m0, m1, e0, e1, pi); rename it",
                          subdiv::quoted(name)));
 }
 
@@ -214,7 +215,8 @@ std::vector<NamedFormula> parse_state(const Json& root, const Place& at) {
 void check_names(const std::vector<ParameterSpec>& params, const std::vector<NamedFormula>& named,
                  const Place& at) {
   std::map<std::string, std::string> seen{{"pi", "a constant"}};
-  for (const char* variable : {"n", "k", "j", "l", "n0", "n1", "k0", "k1", "ci", "cb", "ex", "fe"})
+  for (const char* variable : {"n", "k", "j", "l", "n0", "n1", "k0", "k1", "ci", "cb", "ex", "fe", "b0", "b1", "m0",
+                               "m1", "e0", "e1"})
     seen[variable] = "a formula variable";
   for (const char* function : {"binom", "floor", "ceil", "mod"}) seen[function] = "a formula function";
   auto claim = [&](const std::string& name, const std::string& what, const Place& here) {

@@ -259,6 +259,54 @@ void check_roles(const Scheme& scheme, const StepRules& step, const std::string&
     }
 }
 
+// Edge rules that read their ends' sectors (b0, b1, m0, m1, e0, e1; the end-sector roles) are
+// also checked with one or both ends on a boundary: a boundary end of valence m + 1 whose one
+// sector of m faces holds the edge at e = 1 .. m - 1, the other end inside (valence lo .. hi)
+// or on a boundary too.
+struct SectorEnd {
+  int n, b, m, e;
+};
+
+double sector_rule_sum(const CompiledRule& rule, const SectorEnd& a, const SectorEnd& b) {
+  SectorVariables sv;
+  sv.b[0] = a.b, sv.m[0] = a.m, sv.e[0] = a.e, sv.b[1] = b.b, sv.m[1] = b.m, sv.e[1] = b.e;
+  double sum = 0;
+  for (const auto& t : rule.terms) {
+    if (t.role == Role::Curve) continue;  // smooth rules only
+    int count = role_size(t.role, 2, 3, a.n, b.n);
+    if (t.role == Role::EndSector0) count = a.b ? a.m + 1 : 0;
+    if (t.role == Role::EndSector1) count = b.b ? b.m + 1 : 0;
+    for (int j = 0; j < count; ++j) sum += t.edge_weight(3, j, a.n, b.n, 3, 3, sv);
+  }
+  return sum;
+}
+
+void check_sector_rule(const CompiledRule& rule, const std::string& where, int lo, int hi, ValidationReport& report,
+                       const std::string& at_parameters) {
+  std::vector<SectorEnd> boundary, inside;
+  for (int m = 2; m + 1 <= hi; ++m)
+    for (int e = 1; e < m; ++e) boundary.push_back({m + 1, 1, m, e});
+  for (int n = lo; n <= hi; ++n) inside.push_back({n, 0, 0, 0});
+  auto describe = [](const SectorEnd& x) {
+    return x.b ? fmt::format("boundary valence {} (sector of {} faces, edge {})", x.n, x.m, x.e)
+               : fmt::format("interior valence {}", x.n);
+  };
+  for (const SectorEnd& a : boundary)
+    for (const auto* others : {&inside, &boundary})
+      for (const SectorEnd& b : *others)
+        for (int flip = 0; flip < 2; ++flip) {
+          ++report.checks;
+          const SectorEnd& end0 = flip ? b : a;
+          const SectorEnd& end1 = flip ? a : b;
+          const double sum = sector_rule_sum(rule, end0, end1);
+          if (!std::isfinite(sum) || std::abs(sum - 1) > 1e-9) {
+            report.errors.push_back({not_affine(where, sum, fmt::format("end 0 {}, end 1 {}", describe(end0), describe(end1)),
+                                                at_parameters)});
+            return;
+          }
+        }
+}
+
 // Crease-end rules are one-sided by nature (they lean towards the corner), so only their
 // weight sums are checked, at every valence.
 void check_crease_ends(const Scheme& scheme, const StepRules& step, const WeightTables& tables, const std::string& text,
@@ -298,6 +346,7 @@ void check_step(const Scheme& scheme, const StepRules& step, const std::string& 
         check_corner_rule(rule, where, lo, hi, report, at_parameters);
         continue;
       }
+      if (Element(e) == Element::Edge && reads_sectors(rule)) check_sector_rule(rule, where, lo, hi, report, at_parameters);
       bool reported = false;
       for (const Sizes& s : sizes_to_check(Element(e), lo, hi, face_size)) {
         ++report.checks;

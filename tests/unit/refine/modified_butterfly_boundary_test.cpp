@@ -8,16 +8,12 @@
 #include <array>
 #include <cmath>
 
-#include "support/refine_helpers.h"
+#include "unit/refine/modified_butterfly_support.h"
 
 using namespace subdiv;
 using namespace subdiv::test;
 
 namespace {
-
-using Point = std::array<double, 3>;
-
-Point at(const std::vector<double>& xyz, Index v) { return {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]}; }
 
 // An annulus of nu x (nv + 1) vertices, triangulated, irregular in shape: two closed
 // boundary loops (j = 0 and j = nv), every boundary vertex with 3 faces (no corners).
@@ -38,27 +34,6 @@ Mesh annulus(int nu, int nv, bool plane) {
       m.add_face({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
     }
   return m;
-}
-
-struct OneLevel {
-  Hierarchy h;
-  std::vector<double> positions;
-};
-
-OneLevel refine_level(const Level& base, const std::vector<double>& positions, int levels = 1) {
-  RefineOptions o;
-  o.levels = levels;
-  OneLevel r{refine(*load_scheme("modified-butterfly"), base, o), {}};
-  r.positions = interpolate(r.h, levels, positions, 3);
-  return r;
-}
-
-// The child of parent edge e after one step.
-Index edge_child(const ChildOrigins& origins, Index e) {
-  for (Index c = 0; c < Index(origins.kind.size()); ++c)
-    if (origins.kind[c] == OriginKind::Edge && origins.parent[c] == e) return c;
-  FAIL("edge has no child");
-  return kNone;
 }
 
 // Dyn, Levin & Gregory 1987 with w = 1/16: the new point between p1 and p2.

@@ -381,7 +381,7 @@ TEST_CASE("the schema's names are the engine's names") {
   std::set<std::string> all_roles;
   for (int r = 0; r <= int(Role::CreasePoint); ++r)
     if (Role(r) != Role::Curve) all_roles.insert(std::string(role_name(Role(r))));
-  CHECK(all_roles.size() == 17);
+  CHECK(all_roles.size() == 19);
   for (int e = 0; e < kElementCount; ++e) {
     std::set<std::string> engine_roles;
     for (const auto& name : all_roles) {

@@ -151,3 +151,20 @@ TEST_CASE("validate: rules are checked over each parameter's declared range, not
   const auto ok = validate_scheme_file(write("inside-range", text));
   CHECK_MESSAGE(ok.ok(), (ok.errors.empty() ? std::string() : ok.errors[0].message));
 }
+
+TEST_CASE("validate: an edge rule over its ends' sectors is checked with either end, or both, on a boundary") {
+  auto scheme = [](const std::string& sector1) {
+    return "{\"name\": \"s\", \"split\": \"triangle\", \"faces\": \"triangles\", \"curve\": \"four-point\", \"rules\": {\n"
+           "  \"edge\": [{\"sum\": \"ends\", \"w\": \"b0 + b1 > 0 ? 0 : 1/2\"},\n"
+           "            {\"sum\": \"end-sector-0\", \"w\": \"b0 ? (b1 ? 1/2 : 1) / (m0 + 1) : 0\"}" + sector1 + "],\n"
+           "  \"vertex\": [{\"at\": \"self\", \"w\": \"1\"}]\n}}\n";
+  };
+  // Only end 0's sector: affine while end 0 is the boundary end, not when end 1 is.
+  const auto one = validate_scheme_file(write("one-sector", scheme("")));
+  REQUIRE(one.errors.size() == 1);
+  CHECK(one.errors[0].message.find("weights sum to 0 at end 0 interior valence 3, end 1 boundary valence 3 (sector of "
+                                   "2 faces, edge 1)") != std::string::npos);
+  const auto both = validate_scheme_file(write(
+      "both-sectors", scheme(",\n            {\"sum\": \"end-sector-1\", \"w\": \"b1 ? (b0 ? 1/2 : 1) / (m1 + 1) : 0\"}")));
+  CHECK(both.ok());
+}
