@@ -1049,9 +1049,11 @@ struct LimitSurface::Impl {
         for (size_t i = 0; i < r.size(); ++i)
           r[i] = J[0][a] * J[0][b] * rows.dss[i] + (J[0][a] * J[1][b] + J[1][a] * J[0][b]) * rows.dst[i] +
                  J[1][a] * J[1][b] * rows.dtt[i];
-        return pulled_back(std::move(r), path, 2);
+        return r;
       };
       std::vector<double> uu = row(0, 0), uv = row(0, 1), vv = row(1, 1);
+      std::vector<double>* pulled[] = {&uu, &uv, &vv};
+      pull_back_rows(pulled, path, 2);
       out.duu = applied(uu, first_values, channels);
       out.duv = applied(uv, first_values, channels);
       out.dvv = applied(vv, first_values, channels);
