@@ -578,33 +578,37 @@ struct LimitSurface::Impl {
   // The first 16 labels of a face known to be in untagged regular quad grid (grid_face):
   // label_neighbourhood's breadth-first order (its corners from corner 0, then each corner's
   // faces counter-clockwise from this one, each face's corners after the vertex), without
-  // the checks that made it known or the labelling's arrays over the level.
+  // the checks that made it known or the labelling's arrays over the level. In such grid the
+  // corners met first are the same for every face: around corner q, its t-th face from this
+  // one (fi below) runs out of the corner along the edge the face before runs into it, so
+  // the face's corners c + 1 (met already) and c + 2, c + 3 (new on the second and third
+  // faces, c + 2 only on the fourth) — less those met around the corners before.
   void first_grid_labels(Index face, std::array<Index, 16>& out) const {
+    struct Met {
+      std::uint8_t t, i;
+    };
+    static constexpr Met kFirst[] = {{1, 2}, {1, 3}, {2, 2}, {2, 3}, {3, 2}};  // corner 0
+    static constexpr Met kMiddle[] = {{2, 2}, {2, 3}, {3, 2}};                // corners 1 and 2
+    static constexpr Met kLast[] = {{2, 2}};                                  // corner 3
     const auto corners = base.face(face);
     size_t count = 0;
     for (size_t i = 0; i < 4; ++i) out[count++] = corners[i];
-    auto labelled = [&](Index w) {
-      for (size_t k = 0; k < count; ++k)
-        if (out[k] == w) return true;
-      return false;
-    };
     for (size_t q = 0; q < 4; ++q) {
-      const Index v = out[q];
+      const Index v = corners[q];
       const auto faces = base.ring_faces(v);
       const Index first = base.vertex_face_offsets[v];
       size_t entry = 0;
       while (faces[entry] != face) ++entry;
-      for (size_t t = 0; t < 4; ++t) {
-        const size_t fi = (entry + t) & 3;
+      const std::span<const Met> met = q == 0 ? std::span<const Met>(kFirst)
+                                       : q == 3 ? std::span<const Met>(kLast)
+                                                : std::span<const Met>(kMiddle);
+      for (const Met m : met) {
+        const size_t fi = (entry + m.t) & 3;
         const auto fc = base.face(faces[fi]);
         const size_t c = size_t(base.vertex_face_corner[size_t(first) + fi]);
-        for (size_t i = 1; i < 4; ++i) {
-          const Index w = fc[(c + i) & 3];
-          if (!labelled(w)) out[count++] = w;
-        }
+        out[count++] = fc[(c + m.i) & 3];
       }
     }
-    if (count != 16) throw Error("internal: a face marked as regular quad grid has no 4 x 4 control points");
   }
 
   // walk()'s first step where the face's node is the bicubic patch: finish() of

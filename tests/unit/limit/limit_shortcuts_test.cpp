@@ -222,6 +222,30 @@ TEST_CASE("The shortcuts give the general way's bits on a mesh mixing grid, irre
   }
 }
 
+TEST_CASE("The shortcuts give the general way's bits on grid wide enough that faces are known grid in pieces") {
+  // A torus wider than the piece checked at once around a face (the cut's radius and a
+  // margin of 8 rings: 26 x 26 vertices), so that faces near it are marked and read their
+  // control points without labelling (first_grid_labels); a semi-sharp edge leaves some
+  // faces out.
+  const test::Mesh m = test::torus(48, 44);
+  Level base = m.level();
+  base.edge_sharpness.assign(size_t(base.edge_count()), 0.f);
+  base.edge_sharpness[size_t(find_edge(base, 10, 11))] = 1.5f;
+  LimitSurfaceOptions general;
+  general.shortcuts = false;
+  const LimitSurface a(load_scheme("catmull-clark"), base), b(load_scheme("catmull-clark"), base, general);
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (Index f = 0; f < base.face_count(); ++f) {
+    const double u = unit(rng), v = unit(rng);
+    INFO("face " << f << " at (" << u << ", " << v << ")");
+    if (f % 37 == 0)
+      limit_test::check_same_bits(a, b, f, u, v, m.positions, 1);
+    else
+      limit_test::check_same_sample(a.evaluate(f, u, v, m.positions, 3, 1), b.evaluate(f, u, v, m.positions, 3, 1));
+  }
+}
+
 TEST_CASE("The shortcuts give the general way's bits where faces take their entries from pieces met before") {
   // An extraordinary vertex in every face, in a repeating pattern: on a torus, untagged and
   // with a crease, a semi-sharp edge and a tagged corner in one corner of its parameter
