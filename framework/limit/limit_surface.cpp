@@ -343,7 +343,7 @@ struct LimitSurface::Impl {
     if (const Entry* e = slot.load(std::memory_order_acquire)) return *e;
     bool regular = false;
     std::unique_ptr<Entry> made;
-    if (options.shortcuts && !c.pieces_off.load(std::memory_order_relaxed)) made = piece_entry(c, face);
+    if (options.shortcuts && !c.pieces_off.load(std::memory_order_relaxed)) made = piece_entry(c, face, regular);
     if (!made) made = make_entry(c, face, regular);
     return publish(c, face, std::move(made), regular);
   }
@@ -366,7 +366,7 @@ struct LimitSurface::Impl {
   // A face's entry from its piece (Piece), or null when the face's wide key was not met
   // before. The second face with a wide key makes the piece: the entries of the faces whose
   // cuts lie in its wide cut, the general way; faces with that key after it take them all.
-  std::unique_ptr<Entry> piece_entry(Cache& c, Index face) const {
+  std::unique_ptr<Entry> piece_entry(Cache& c, Index face, bool& regular) const {
     thread_local CutKey wide;
     const int reach = radius + kPieceMargin;
     key_cut(wide, base, face, reach);
@@ -390,7 +390,7 @@ struct LimitSurface::Impl {
       ++c.pieces_used;
       piece = found->second;
     }
-    if (!piece) return make_piece(c, wide, reach);
+    if (!piece) return make_piece(c, wide, reach, regular);
     std::unique_ptr<Entry> own;
     for (const PieceFace& pf : piece->faces) {
       const Index g = wide.faces[size_t(pf.at)];
@@ -411,13 +411,18 @@ struct LimitSurface::Impl {
   }
   // The piece of `wide` (the key of its first face): the entries of its faces whose corners
   // lie within kPieceMargin of the first face's (so that their cuts, of the cut's radius,
-  // lie in the wide one), made and published here; the first face's own entry returned.
-  std::unique_ptr<Entry> make_piece(Cache& c, const CutKey& wide, int reach) const {
+  // lie in the wide one), made and published here; the first face's own entry returned
+  // (`own_regular` as make_entry sets it).
+  std::unique_ptr<Entry> make_piece(Cache& c, const CutKey& wide, int reach, bool& own_regular) const {
     auto piece = std::make_shared<Piece>();
     std::unique_ptr<Entry> own;
+    // Only faces a point takes an entry of (the split's own shape, not holes: other faces'
+    // points start in sub-faces or are refused).
+    const int shape = triangles ? 3 : 4;
     for (size_t i = 0; i < wide.faces.size(); ++i) {
       const Index g = wide.faces[i];
       const auto corners = base.face(g);
+      if (i > 0 && (int(corners.size()) != shape || base.is_hole(g))) continue;
       if (std::any_of(corners.begin(), corners.end(), [&](Index v) {
             const Index l = wide.label_of[size_t(v)];
             return l == kNone || wide.distance[size_t(l)] > reach - radius;
@@ -429,7 +434,7 @@ struct LimitSurface::Impl {
       std::unique_ptr<Entry> made;
       bool regular = false;
       if (i == 0) {
-        made = make_entry(c, g, regular);
+        made = make_entry(c, g, own_regular);
         e = made.get();
       } else if (!(e = c.entries[size_t(g)].load(std::memory_order_acquire))) {
         // A face around it whose cut the engine refuses is left to its own points (the error
