@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <span>
 #include <utility>
 #include <tuple>
 
@@ -135,6 +136,25 @@ test::Mesh split_into_quads(const test::Mesh& t) {
   return m;
 }
 
+// Catmull-Clark with and without the shortcuts at a random point of every face, in the
+// faces' order (so that what earlier faces prepared serves later ones): positions and first
+// derivatives alike, and every `full`-th face through check_same_bits (stencils included).
+void check_every_face(const Level& base, std::span<const double> positions, unsigned seed, Index full) {
+  LimitSurfaceOptions general;
+  general.shortcuts = false;
+  const LimitSurface a(load_scheme("catmull-clark"), base), b(load_scheme("catmull-clark"), base, general);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (Index f = 0; f < base.face_count(); ++f) {
+    const double u = unit(rng), v = unit(rng);
+    INFO("face " << f << " at (" << u << ", " << v << ")");
+    if (f % full == 0)
+      limit_test::check_same_bits(a, b, f, u, v, positions, 1);
+    else
+      limit_test::check_same_sample(a.evaluate(f, u, v, positions, 3, 1), b.evaluate(f, u, v, positions, 3, 1));
+  }
+}
+
 }  // namespace
 
 TEST_CASE("quad_grid_labelled: a torus is grid exactly when the neighbourhood does not wrap around") {
@@ -231,19 +251,7 @@ TEST_CASE("The shortcuts give the general way's bits on grid wide enough that fa
   Level base = m.level();
   base.edge_sharpness.assign(size_t(base.edge_count()), 0.f);
   base.edge_sharpness[size_t(find_edge(base, 10, 11))] = 1.5f;
-  LimitSurfaceOptions general;
-  general.shortcuts = false;
-  const LimitSurface a(load_scheme("catmull-clark"), base), b(load_scheme("catmull-clark"), base, general);
-  std::mt19937 rng(13);
-  std::uniform_real_distribution<double> unit(0, 1);
-  for (Index f = 0; f < base.face_count(); ++f) {
-    const double u = unit(rng), v = unit(rng);
-    INFO("face " << f << " at (" << u << ", " << v << ")");
-    if (f % 37 == 0)
-      limit_test::check_same_bits(a, b, f, u, v, m.positions, 1);
-    else
-      limit_test::check_same_sample(a.evaluate(f, u, v, m.positions, 3, 1), b.evaluate(f, u, v, m.positions, 3, 1));
-  }
+  check_every_face(base, m.positions, 13, 37);
 }
 
 TEST_CASE("The shortcuts give the general way's bits where faces take their entries from pieces met before") {
@@ -267,19 +275,8 @@ TEST_CASE("The shortcuts give the general way's bits where faces take their entr
       base.edge_sharpness[size_t(find_edge(base, near[1], near[2]))] = 1.5f;
       base.vertex_sharpness[size_t(base.face(40)[2])] = kInfinitelySharp;
     }
-    LimitSurfaceOptions general;
-    general.shortcuts = false;
-    const LimitSurface a(load_scheme("catmull-clark"), base), b(load_scheme("catmull-clark"), base, general);
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<double> unit(0, 1);
-    for (Index f = 0; f < base.face_count(); ++f) {
-      const double u = unit(rng), v = unit(rng);
-      INFO("variant " << variant << ", face " << f << " at (" << u << ", " << v << ")");
-      if (f % 9 == 0)
-        limit_test::check_same_bits(a, b, f, u, v, m.positions, 1);
-      else
-        limit_test::check_same_sample(a.evaluate(f, u, v, m.positions, 3, 1), b.evaluate(f, u, v, m.positions, 3, 1));
-    }
+    INFO("variant " << variant);
+    check_every_face(base, m.positions, 11, 9);
   }
 }
 
