@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <deque>
+#include <list>
 #include <mutex>
 #include <unordered_map>
 #include <fmt/format.h>
@@ -865,7 +865,7 @@ struct LimitSurface::Impl {
     int id = -1;
     std::vector<double> values;
     FacePoint p = p0;
-    std::deque<StepMatrix> owned;
+    std::list<StepMatrix> owned;  // the steps a sub-face's point makes alone (a list: no allocation when empty)
     std::shared_ptr<const SubFaceStart> start;  // holds the first steps of `path`
     if (p0.sub_face < 0) {
       id = entry(c, p0.face).node;
@@ -1075,7 +1075,7 @@ struct LimitSurface::Impl {
   // An n-gon's sub-face is not a face yet: one step with the engine over the face's cut makes
   // it one. The general way, for each point (without the shortcuts).
   void start_in_sub_face_alone(LimitNodes& nodes, const FacePoint& p0, const std::vector<double>& first_values,
-                               int channels, std::deque<StepMatrix>& owned, std::vector<const StepMatrix*>& path,
+                               int channels, std::list<StepMatrix>& owned, std::vector<const StepMatrix*>& path,
                                int& id, std::vector<double>& values, FacePoint& p) const {
     Neighbourhood n = cut(base, {}, 0, p0, radius);
     n.values = first_values;
