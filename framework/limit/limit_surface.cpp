@@ -535,12 +535,25 @@ struct LimitSurface::Impl {
   bool in_quad_grid(Labelling& lab, Index face, int depth) const {
     if (grid_face[size_t(face)].load(std::memory_order_relaxed)) return quad_grid_labelled(lab, base, face, depth);
     constexpr int kMargin = 8;
-    if (quad_grid_labelled(lab, base, face, radius + kMargin)) {
-      // A face with a corner closer than kMargin - 1 has its corners within kMargin of this
-      // face's and its cut within this piece.
+    // The piece is centred up to kMargin - 1 faces on, across edges towards higher face
+    // numbers (where a caller going through the faces in order goes next), so that it marks
+    // this face and more of the faces not met yet than a piece centred here would.
+    Index centre = face;
+    for (int step = 0; step + 1 < kMargin; ++step) {
+      Index next = centre;
+      for (Index e : base.face_edge_list(centre))
+        for (Index g : base.faces_of_edge(e)) next = std::max(next, g);
+      if (next == centre) break;
+      centre = next;
+    }
+    if (quad_grid_labelled(lab, base, centre, radius + kMargin)) {
+      // A face with a corner closer than kMargin - 1 has its corners within kMargin of the
+      // centre's and its cut within this piece; this face is one of them (each step across
+      // an edge moves a face's corners one ring at most), checked all the same.
       for (size_t q = 0; q < lab.vertices.size() && lab.distance[q] < kMargin; ++q)
         for (Index f : base.ring_faces(lab.vertices[q])) grid_face[size_t(f)].store(1, std::memory_order_relaxed);
-      return true;
+      if (centre == face) return true;
+      if (grid_face[size_t(face)].load(std::memory_order_relaxed)) return quad_grid_labelled(lab, base, face, depth);
     }
     return quad_grid_labelled(lab, base, face, radius);
   }
