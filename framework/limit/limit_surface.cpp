@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <deque>
+#include <list>
 #include <mutex>
 #include <unordered_map>
 #include <fmt/format.h>
@@ -186,6 +186,23 @@ struct LimitSurface::Impl {
     const std::array<Index, 16>* grid = nullptr;
     const PolynomialPatch* lattice = nullptr;
   };
+  // The entries of the faces around a face, as labels of the face's key at a wider radius
+  // (radius + kPieceMargin): a face whose wide key is equal has, at the same places of its
+  // key, faces whose cuts are the same (their cuts lie inside the wider one, which the key
+  // records up to the labelling), so their entries are these with the labels read through
+  // its own labelling, without keying, cutting or signing each face.
+  static constexpr int kPieceMargin = 4;
+  struct PieceFace {
+    Index at = 0;       // the face's place in the wide key's faces (CutKey::faces)
+    Index corner0 = 0;  // the label of its corner 0 (where its own labelling starts)
+    int node = -1;
+    const std::array<Index, 16>* grid = nullptr;
+    const PolynomialPatch* lattice = nullptr;
+    std::vector<Index> labels;  // the entry's vertices as labels of the wide key
+  };
+  struct Piece {
+    std::vector<PieceFace> faces;  // the first one is the face itself
+  };
   // A point in a sub-face of an n-gon (a quad split's face of another size) starts with one
   // step of the engine over the face's cut, after which its face is a child quad with a
   // node. That step is the same for every point of the face; around a vertex of high
@@ -260,6 +277,16 @@ struct LimitSurface::Impl {
     // kept and their faces take the general way, as every face would without keys.
     size_t known_words = 0;
     static constexpr size_t kKnownBudget = size_t(1) << 24;  // 64 MB of keys
+    // Pieces by their key at the wider radius (make_entry): null once met, then what a
+    // face met the second time found for the faces around it.
+    std::mutex pieces_mutex;
+    std::unordered_map<Key, std::shared_ptr<const Piece>, KeyHash> pieces;
+    size_t pieces_met = 0, pieces_used = 0;
+    size_t piece_words = 0;  // the wide keys' total length, within their own budget
+    static constexpr size_t kPieceBudget = size_t(1) << 22;  // 16 MB of wide keys
+    // Set when the wide keys hardly repeat (a mesh without a pattern): faces then read
+    // their own key only.
+    std::atomic<bool> pieces_off{false};
     // The first steps of points in faces with sub-faces (SubFaceStart), per base face, while
     // their size is within the budget (past it a face's start is made for each point).
     std::mutex starts_mutex;
@@ -315,7 +342,14 @@ struct LimitSurface::Impl {
     std::atomic<Entry*>& slot = c.entries[size_t(face)];
     if (const Entry* e = slot.load(std::memory_order_acquire)) return *e;
     bool regular = false;
-    std::unique_ptr<Entry> made = make_entry(c, face, regular);
+    std::unique_ptr<Entry> made;
+    if (options.shortcuts && !c.pieces_off.load(std::memory_order_relaxed)) made = piece_entry(c, face, regular);
+    if (!made) made = make_entry(c, face, regular);
+    return publish(c, face, std::move(made), regular);
+  }
+  // Publishes a face's entry made here unless another thread's came first; the one kept.
+  const Entry& publish(Cache& c, Index face, std::unique_ptr<Entry> made, bool regular) const {
+    std::atomic<Entry*>& slot = c.entries[size_t(face)];
     if (made->lattice && made->lattice->box) {
       const BoxSplineLabels& box = *made->lattice->box;
       for (size_t k = 0; k < size_t(kBoxSplineFunctions); ++k)
@@ -327,6 +361,106 @@ struct LimitSurface::Impl {
     const Entry* none = nullptr;
     if (regular) c.regular.compare_exchange_strong(none, e, std::memory_order_acq_rel);
     return *e;
+  }
+
+  // A face's entry from its piece (Piece), or null when the face's wide key was not met
+  // before. The second face with a wide key makes the piece: the entries of the faces whose
+  // cuts lie in its wide cut, the general way; faces with that key after it take them all.
+  std::unique_ptr<Entry> piece_entry(Cache& c, Index face, bool& regular) const {
+    thread_local CutKey wide;
+    const int reach = radius + kPieceMargin;
+    key_cut(wide, base, face, reach);
+    std::shared_ptr<const Piece> piece;
+    {
+      std::lock_guard lock(c.pieces_mutex);
+      const auto found = c.pieces.find(wide.key);
+      if (found == c.pieces.end()) {
+        // A key met once is kept (a pattern shows only when it repeats) while they repeat
+        // often enough to pay for reading them: a wide key costs a few cuts' keys, a piece
+        // spares tens of them. Faces near tags miss until the pattern is met away from them.
+        ++c.pieces_met;
+        if (c.pieces_met > std::max<size_t>(1024, size_t(c.entry_count) / 16) && c.pieces_met > 8 * c.pieces_used)
+          c.pieces_off.store(true);
+        if (c.piece_words + wide.key.size() <= Cache::kPieceBudget) {
+          c.piece_words += wide.key.size();
+          c.pieces.emplace(wide.key, nullptr);
+        }
+        return nullptr;
+      }
+      ++c.pieces_used;
+      piece = found->second;
+    }
+    if (!piece) return make_piece(c, wide, reach, regular);
+    std::unique_ptr<Entry> own;
+    for (const PieceFace& pf : piece->faces) {
+      const Index g = wide.faces[size_t(pf.at)];
+      if (wide.label_of[size_t(base.face(g)[0])] != pf.corner0) continue;
+      if (g != face && c.entries[size_t(g)].load(std::memory_order_acquire)) continue;
+      auto e = std::make_unique<Entry>();
+      e->node = pf.node;
+      e->vertices.reserve(pf.labels.size());
+      for (Index l : pf.labels) e->vertices.push_back(wide.vertices[size_t(l)]);
+      e->set_grid(pf.grid);
+      e->lattice = pf.lattice;
+      if (g == face)
+        own = std::move(e);
+      else
+        publish(c, g, std::move(e), false);
+    }
+    return own;
+  }
+  // The piece of `wide` (the key of its first face): the entries of its faces whose corners
+  // lie within kPieceMargin of the first face's (so that their cuts, of the cut's radius,
+  // lie in the wide one), made and published here; the first face's own entry returned
+  // (`own_regular` as make_entry sets it).
+  std::unique_ptr<Entry> make_piece(Cache& c, const CutKey& wide, int reach, bool& own_regular) const {
+    auto piece = std::make_shared<Piece>();
+    std::unique_ptr<Entry> own;
+    // Only faces a point takes an entry of (the split's own shape, not holes: other faces'
+    // points start in sub-faces or are refused).
+    const int shape = triangles ? 3 : 4;
+    for (size_t i = 0; i < wide.faces.size(); ++i) {
+      const Index g = wide.faces[i];
+      const auto corners = base.face(g);
+      if (i > 0 && (int(corners.size()) != shape || base.is_hole(g))) continue;
+      if (std::any_of(corners.begin(), corners.end(), [&](Index v) {
+            const Index l = wide.label_of[size_t(v)];
+            return l == kNone || wide.distance[size_t(l)] > reach - radius;
+          }))
+        continue;
+      // make_entry, not entry(): the faces around are not made from pieces (which would
+      // overwrite `wide`, the thread's).
+      const Entry* e = nullptr;
+      std::unique_ptr<Entry> made;
+      bool regular = false;
+      if (i == 0) {
+        made = make_entry(c, g, own_regular);
+        e = made.get();
+      } else if (!(e = c.entries[size_t(g)].load(std::memory_order_acquire))) {
+        // A face around it whose cut the engine refuses is left to its own points (the error
+        // belongs to them): the piece is made without it.
+        try {
+          e = &publish(c, g, make_entry(c, g, regular), regular);
+        } catch (const std::exception&) {
+          continue;
+        }
+      }
+      PieceFace pf;
+      pf.at = Index(i);
+      pf.corner0 = wide.label_of[size_t(corners[0])];
+      pf.node = e->node, pf.grid = e->grid, pf.lattice = e->lattice;
+      bool inside = true;
+      for (Index v : e->vertices) {
+        const Index l = wide.label_of[size_t(v)];
+        inside = inside && l != kNone;
+        pf.labels.push_back(l);
+      }
+      if (inside) piece->faces.push_back(std::move(pf));
+      if (i == 0) own = std::move(made);
+    }
+    std::lock_guard lock(c.pieces_mutex);
+    if (const auto found = c.pieces.find(wide.key); found != c.pieces.end() && !found->second) found->second = piece;
+    return own;
   }
 
   // A face's entry: in an untagged regular quad grid (`regular` set) the node other such
@@ -401,12 +535,25 @@ struct LimitSurface::Impl {
   bool in_quad_grid(Labelling& lab, Index face, int depth) const {
     if (grid_face[size_t(face)].load(std::memory_order_relaxed)) return quad_grid_labelled(lab, base, face, depth);
     constexpr int kMargin = 8;
-    if (quad_grid_labelled(lab, base, face, radius + kMargin)) {
-      // A face with a corner closer than kMargin - 1 has its corners within kMargin of this
-      // face's and its cut within this piece.
+    // The piece is centred up to kMargin - 1 faces on, across edges towards higher face
+    // numbers (where a caller going through the faces in order goes next), so that it marks
+    // this face and more of the faces not met yet than a piece centred here would.
+    Index centre = face;
+    for (int step = 0; step + 1 < kMargin; ++step) {
+      Index next = centre;
+      for (Index e : base.face_edge_list(centre))
+        for (Index g : base.faces_of_edge(e)) next = std::max(next, g);
+      if (next == centre) break;
+      centre = next;
+    }
+    if (quad_grid_labelled(lab, base, centre, radius + kMargin)) {
+      // A face with a corner closer than kMargin - 1 has its corners within kMargin of the
+      // centre's and its cut within this piece; this face is one of them (each step across
+      // an edge moves a face's corners one ring at most), checked all the same.
       for (size_t q = 0; q < lab.vertices.size() && lab.distance[q] < kMargin; ++q)
         for (Index f : base.ring_faces(lab.vertices[q])) grid_face[size_t(f)].store(1, std::memory_order_relaxed);
-      return true;
+      if (centre == face) return true;
+      if (grid_face[size_t(face)].load(std::memory_order_relaxed)) return quad_grid_labelled(lab, base, face, depth);
     }
     return quad_grid_labelled(lab, base, face, radius);
   }
@@ -449,33 +596,37 @@ struct LimitSurface::Impl {
   // The first 16 labels of a face known to be in untagged regular quad grid (grid_face):
   // label_neighbourhood's breadth-first order (its corners from corner 0, then each corner's
   // faces counter-clockwise from this one, each face's corners after the vertex), without
-  // the checks that made it known or the labelling's arrays over the level.
+  // the checks that made it known or the labelling's arrays over the level. In such grid the
+  // corners met first are the same for every face: around corner q, its t-th face from this
+  // one (fi below) runs out of the corner along the edge the face before runs into it, so
+  // the face's corners c + 1 (met already) and c + 2, c + 3 (new on the second and third
+  // faces, c + 2 only on the fourth) — less those met around the corners before.
   void first_grid_labels(Index face, std::array<Index, 16>& out) const {
+    struct Met {
+      std::uint8_t t, i;
+    };
+    static constexpr Met kFirst[] = {{1, 2}, {1, 3}, {2, 2}, {2, 3}, {3, 2}};  // corner 0
+    static constexpr Met kMiddle[] = {{2, 2}, {2, 3}, {3, 2}};                // corners 1 and 2
+    static constexpr Met kLast[] = {{2, 2}};                                  // corner 3
     const auto corners = base.face(face);
     size_t count = 0;
     for (size_t i = 0; i < 4; ++i) out[count++] = corners[i];
-    auto labelled = [&](Index w) {
-      for (size_t k = 0; k < count; ++k)
-        if (out[k] == w) return true;
-      return false;
-    };
     for (size_t q = 0; q < 4; ++q) {
-      const Index v = out[q];
+      const Index v = corners[q];
       const auto faces = base.ring_faces(v);
       const Index first = base.vertex_face_offsets[v];
       size_t entry = 0;
       while (faces[entry] != face) ++entry;
-      for (size_t t = 0; t < 4; ++t) {
-        const size_t fi = (entry + t) & 3;
+      const std::span<const Met> met = q == 0 ? std::span<const Met>(kFirst)
+                                       : q == 3 ? std::span<const Met>(kLast)
+                                                : std::span<const Met>(kMiddle);
+      for (const Met m : met) {
+        const size_t fi = (entry + m.t) & 3;
         const auto fc = base.face(faces[fi]);
         const size_t c = size_t(base.vertex_face_corner[size_t(first) + fi]);
-        for (size_t i = 1; i < 4; ++i) {
-          const Index w = fc[(c + i) & 3];
-          if (!labelled(w)) out[count++] = w;
-        }
+        out[count++] = fc[(c + m.i) & 3];
       }
     }
-    if (count != 16) throw Error("internal: a face marked as regular quad grid has no 4 x 4 control points");
   }
 
   // walk()'s first step where the face's node is the bicubic patch: finish() of
@@ -727,7 +878,7 @@ struct LimitSurface::Impl {
     int id = -1;
     std::vector<double> values;
     FacePoint p = p0;
-    std::deque<StepMatrix> owned;
+    std::list<StepMatrix> owned;  // the steps a sub-face's point makes alone (a list: no allocation when empty)
     std::shared_ptr<const SubFaceStart> start;  // holds the first steps of `path`
     if (p0.sub_face < 0) {
       id = entry(c, p0.face).node;
@@ -920,9 +1071,11 @@ struct LimitSurface::Impl {
         for (size_t i = 0; i < r.size(); ++i)
           r[i] = J[0][a] * J[0][b] * rows.dss[i] + (J[0][a] * J[1][b] + J[1][a] * J[0][b]) * rows.dst[i] +
                  J[1][a] * J[1][b] * rows.dtt[i];
-        return pulled_back(std::move(r), path, 2);
+        return r;
       };
       std::vector<double> uu = row(0, 0), uv = row(0, 1), vv = row(1, 1);
+      std::vector<double>* pulled[] = {&uu, &uv, &vv};
+      pull_back_rows(pulled, path, 2);
       out.duu = applied(uu, first_values, channels);
       out.duv = applied(uv, first_values, channels);
       out.dvv = applied(vv, first_values, channels);
@@ -935,7 +1088,7 @@ struct LimitSurface::Impl {
   // An n-gon's sub-face is not a face yet: one step with the engine over the face's cut makes
   // it one. The general way, for each point (without the shortcuts).
   void start_in_sub_face_alone(LimitNodes& nodes, const FacePoint& p0, const std::vector<double>& first_values,
-                               int channels, std::deque<StepMatrix>& owned, std::vector<const StepMatrix*>& path,
+                               int channels, std::list<StepMatrix>& owned, std::vector<const StepMatrix*>& path,
                                int& id, std::vector<double>& values, FacePoint& p) const {
     Neighbourhood n = cut(base, {}, 0, p0, radius);
     n.values = first_values;

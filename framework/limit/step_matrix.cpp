@@ -9,8 +9,58 @@
 
 namespace subdiv {
 
+namespace {
+
+// A row's sums kept in registers for a known channel count (the caller's values are
+// positions, 3): the same products added in the same order as the general loop.
+template <size_t C>
+void apply_rows(const StepMatrix& m, const double* in, double* out) {
+  for (Index r = 0; r < m.rows(); ++r) {
+    std::array<double, C> o{};
+    for (Index e = m.offsets[size_t(r)]; e < m.offsets[size_t(r) + 1]; ++e) {
+      const double w = m.weights[size_t(e)];
+      const double* x = in + size_t(m.columns[size_t(e)]) * C;
+      for (size_t c = 0; c < C; ++c) o[c] += w * x[c];
+    }
+    for (size_t c = 0; c < C; ++c) out[size_t(r) * C + c] = o[c];
+  }
+}
+
+// Rows `scaled` (their entries times the step's scale) pulled through m into `next`, all
+// rows in one pass over m's entries; each row's sums in the order a pass of its own takes.
+template <size_t N>
+void pull_through(const StepMatrix& m, double scale, const std::array<std::vector<double>*, 3>& rows,
+                  std::array<std::vector<double>, 3>& next) {
+  for (Index r = 0; r < m.rows(); ++r) {
+    std::array<double, N> x;
+    bool all = true, any = false;
+    for (size_t k = 0; k < N; ++k) {
+      x[k] = scale * (*rows[k])[size_t(r)];
+      all = all && x[k] != 0, any = any || x[k] != 0;
+    }
+    if (!any) continue;
+    const Index from = m.offsets[size_t(r)], to = m.offsets[size_t(r) + 1];
+    if (all) {
+      for (Index e = from; e < to; ++e) {
+        const size_t col = size_t(m.columns[size_t(e)]);
+        const double w = m.weights[size_t(e)];
+        for (size_t k = 0; k < N; ++k) next[k][col] += x[k] * w;
+      }
+      continue;
+    }
+    for (size_t k = 0; k < N; ++k) {
+      if (x[k] == 0) continue;
+      for (Index e = from; e < to; ++e) next[k][size_t(m.columns[size_t(e)])] += x[k] * m.weights[size_t(e)];
+    }
+  }
+}
+
+}  // namespace
+
 void StepMatrix::apply(std::span<const double> in, std::span<double> out, int channels) const {
   const size_t C = size_t(channels);
+  if (C == 3) return apply_rows<3>(*this, in.data(), out.data());
+  if (C == 1) return apply_rows<1>(*this, in.data(), out.data());
   for (Index r = 0; r < rows(); ++r) {
     double* o = out.data() + size_t(r) * C;
     for (size_t c = 0; c < C; ++c) o[c] = 0;
@@ -22,26 +72,43 @@ void StepMatrix::apply(std::span<const double> in, std::span<double> out, int ch
   }
 }
 
-std::vector<double> pulled_back(std::vector<double> row, std::span<const StepMatrix* const> steps, int order) {
+void pull_back_rows(std::span<std::vector<double>* const> rows, std::span<const StepMatrix* const> steps, int order) {
+  const size_t n = rows.size();
+  if (n == 0) return;
+  if (n > 3) {
+    for (std::vector<double>* row : rows) pull_back_rows({&row, 1}, steps, order);
+    return;
+  }
+  std::array<std::vector<double>*, 3> at{};
+  std::copy(rows.begin(), rows.end(), at.begin());
+  // The rows after each step, swapped with the caller's: their room is kept from step to
+  // step and from call to call.
+  thread_local std::array<std::vector<double>, 3> next;
   for (size_t j = steps.size(); j-- > 0;) {
     const StepMatrix* form = order == 2 ? steps[j]->backward2 : steps[j]->backward;
     const StepMatrix& m = form ? *form : *steps[j];
     const double scale = order == 2 ? m.scale * m.scale : m.scale;
-    std::vector<double> next(size_t(m.source_count), 0.0);
-    for (Index r = 0; r < m.rows(); ++r) {
-      const double x = scale * row[size_t(r)];
-      if (x == 0) continue;
-      for (Index e = m.offsets[size_t(r)]; e < m.offsets[size_t(r) + 1]; ++e)
-        next[size_t(m.columns[size_t(e)])] += x * m.weights[size_t(e)];
+    for (size_t k = 0; k < n; ++k) next[k].assign(size_t(m.source_count), 0.0);
+    if (n == 1) pull_through<1>(m, scale, at, next);
+    if (n == 2) pull_through<2>(m, scale, at, next);
+    if (n == 3) pull_through<3>(m, scale, at, next);
+    for (size_t k = 0; k < n; ++k) {
+      double sum = 0;
+      int used = 0;
+      for (double x : next[k]) sum += x, used += x != 0 ? 1 : 0;
+      if (used > 0) {
+        const double mean = sum / used;
+        for (double& x : next[k])
+          if (x != 0) x -= mean;
+      }
+      at[k]->swap(next[k]);
     }
-    double sum = 0;
-    int used = 0;
-    for (double x : next) sum += x, used += x != 0 ? 1 : 0;
-    if (used > 0)
-      for (double& x : next)
-        if (x != 0) x -= sum / used;
-    row = std::move(next);
   }
+}
+
+std::vector<double> pulled_back(std::vector<double> row, std::span<const StepMatrix* const> steps, int order) {
+  std::vector<double>* rows[] = {&row};
+  pull_back_rows(rows, steps, order);
   return row;
 }
 
@@ -69,12 +136,15 @@ std::vector<double> applied(const std::vector<double>& row, std::span<const doub
 FirstDerivativeRows first_derivative_rows(std::span<const double> ds, std::span<const double> dt,
                                           const std::array<std::array<double, 2>, 2>& J,
                                           std::span<const StepMatrix* const> steps) {
-  auto row = [&](size_t d) {
-    std::vector<double> r(ds.size());
-    for (size_t i = 0; i < r.size(); ++i) r[i] = J[0][d] * ds[i] + J[1][d] * dt[i];
-    return pulled_back(std::move(r), steps);
-  };
-  return {row(0), row(1)};
+  FirstDerivativeRows out;
+  out.du.resize(ds.size()), out.dv.resize(ds.size());
+  for (size_t i = 0; i < ds.size(); ++i) {
+    out.du[i] = J[0][0] * ds[i] + J[1][0] * dt[i];
+    out.dv[i] = J[0][1] * ds[i] + J[1][1] * dt[i];
+  }
+  std::vector<double>* rows[] = {&out.du, &out.dv};
+  pull_back_rows(rows, steps, 1);
+  return out;
 }
 
 namespace {

@@ -42,6 +42,8 @@ std::vector<double> applied(const std::vector<double>& row, std::span<const doub
 // derivative: rounding in the sum would otherwise double at every step. `order` 2: a row of
 // a second derivative (scaled by 4^-k), each step's factor squared.
 std::vector<double> pulled_back(std::vector<double> row, std::span<const StepMatrix* const> steps, int order = 1);
+// The same for several rows at once (each as pulled_back takes it, bit for bit), in place.
+void pull_back_rows(std::span<std::vector<double>* const> rows, std::span<const StepMatrix* const> steps, int order);
 
 // The powers M^(2^j), j < count, of a square step M — a self-similar run of steps taken one
 // binary digit at a time — each with the forms derivative rows are pulled back through

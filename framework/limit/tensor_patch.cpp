@@ -24,6 +24,17 @@ void basis(double s, std::array<double, 5>& value, std::array<double, 5>& first,
   }
 }
 
+// out[k][l] += w[k] row[l] for the rows asked for (a count known here, the row's entry read
+// once): the same products added in the same order as a loop over k.
+template <int Count>
+void add_weighted(const double* row, size_t labels, const double (&w)[6], double* const (&out)[6]) {
+  for (size_t l = 0; l < labels; ++l) {
+    const double x = row[l];
+    if (x == 0) continue;
+    for (int k = 0; k < Count; ++k) out[k][l] += w[k] * x;
+  }
+}
+
 }  // namespace
 
 Uv tensor_lattice_point(int q) { return {double(q % (kDegree + 1)) / kDegree, double(q / (kDegree + 1)) / kDegree}; }
@@ -43,10 +54,9 @@ CornerRows tensor_rows(const std::vector<std::vector<double>>& rows, const Uv& s
     const size_t i = size_t(q % (kDegree + 1)), j = size_t(q / (kDegree + 1));
     const double w[6] = {bs[i] * bt[j], ds[i] * bt[j], bs[i] * dt[j], dss[i] * bt[j], ds[i] * dt[j], bs[i] * dtt[j]};
     const double* row = rows[size_t(q)].data();
-    for (size_t l = 0; l < labels; ++l) {
-      if (row[l] == 0) continue;
-      for (int k = 0; k < count; ++k) out[k][l] += w[k] * row[l];
-    }
+    if (count == 1) add_weighted<1>(row, labels, w, out);
+    if (count == 3) add_weighted<3>(row, labels, w, out);
+    if (count == 6) add_weighted<6>(row, labels, w, out);
   }
   return r;
 }

@@ -37,6 +37,11 @@ bool label_into(Labelling& out, const Level& L, CentreKind kind, Index centre, i
     if (size_t(v) < out.label_of.size()) out.label_of[size_t(v)] = kNone;
   if (out.label_of.size() < size_t(L.vertex_count)) out.label_of.resize(size_t(L.vertex_count), kNone);
   out.vertices.clear(), out.distance.clear(), out.signature.clear();
+  // The grid check reads each face once: a face met again has all its corners labelled and
+  // its checks made (the signature, which records each face from each corner, does not skip).
+  for (Index f : out.faces_met) out.face_met[size_t(f)] = 0;
+  out.faces_met.clear();
+  if (quad_grid && out.face_met.size() < size_t(L.face_count())) out.face_met.resize(size_t(L.face_count()), 0);
   std::vector<int>& entry = out.entry;
   entry.clear();
   size_t checked = 0;
@@ -89,6 +94,11 @@ bool label_into(Labelling& out, const Level& L, CentreKind kind, Index centre, i
     for (int t = 0; t < F; ++t) {
       const int fi = below(entry[q] + t, F);
       const Index f = faces[size_t(fi)];
+      if (quad_grid) {
+        if (out.face_met[size_t(f)]) continue;
+        out.face_met[size_t(f)] = 1;
+        out.faces_met.push_back(f);
+      }
       const int c = L.vertex_face_corner[size_t(first + fi)];
       const auto corners = L.face(f);
       const auto edges = L.face_edge_list(f);

@@ -77,6 +77,9 @@ struct Labelling {
   std::vector<Index> label_of;   // vertex -> label, or kNone beyond the radius
   std::vector<double> signature; // the combinatorics and tags within the radius (see .cpp)
   std::vector<int> entry;        // workspace: per label, the ring face its scan starts with
+  // Workspace of the grid check (quad_grid_labelled): faces met, marked per face of the level.
+  std::vector<char> face_met;
+  std::vector<Index> faces_met;
 
   int count_within(int k) const;  // labels at distance <= k (labels are sorted by distance)
 };

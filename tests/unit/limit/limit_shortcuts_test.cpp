@@ -7,6 +7,8 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <span>
+#include <utility>
 #include <tuple>
 
 #include "framework/analysis/surface/local_patch.h"
@@ -105,6 +107,54 @@ Level tagged_box(int n, std::vector<Index>& ends, std::vector<Index>& corners) {
   return L;
 }
 
+// Every triangle of `t` split into three quads at its centroid and edge midpoints: on a
+// triangulated torus an extraordinary vertex in every quad (valences 3 and 6), in a pattern
+// that repeats, so that most faces take their entries from the pieces of faces met before.
+test::Mesh split_into_quads(const test::Mesh& t) {
+  test::Mesh m;
+  for (Index v = 0; v < Index(t.vertex_count); ++v)
+    m.add_vertex(t.positions[size_t(3 * v)], t.positions[size_t(3 * v + 1)], t.positions[size_t(3 * v + 2)]);
+  std::map<std::pair<Index, Index>, Index> mids;
+  auto point = [&](std::initializer_list<Index> of) {
+    double x[3] = {0, 0, 0};
+    for (Index v : of)
+      for (size_t d = 0; d < 3; ++d) x[d] += t.positions[size_t(3 * v) + d] / double(of.size());
+    m.add_vertex(x[0], x[1], x[2] + 0.03 * std::sin(2.1 * x[0] + 1.3 * x[1]));
+    return Index(m.vertex_count - 1);
+  };
+  auto mid = [&](Index a, Index b) {
+    const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+    const auto it = mids.find(key);
+    return it != mids.end() ? it->second : mids[key] = point({a, b});
+  };
+  for (size_t f = 0; f + 1 < t.offsets.size(); ++f) {
+    const Index* c = &t.corners[size_t(t.offsets[f])];
+    const Index centre = point({c[0], c[1], c[2]});
+    for (int k = 0; k < 3; ++k)
+      m.add_face({c[k], mid(c[k], c[(k + 1) % 3]), centre, mid(c[(k + 2) % 3], c[k])});
+  }
+  return m;
+}
+
+// Catmull-Clark with and without the shortcuts at a random point of every face, in the
+// faces' order (so that what earlier faces prepared serves later ones): positions and first
+// derivatives alike, and every `full`-th face through check_same_bits (stencils included).
+void check_every_face(const Level& base, std::span<const double> positions, unsigned seed, Index full) {
+  LimitSurfaceOptions general;
+  general.shortcuts = false;
+  const LimitSurface a(load_scheme("catmull-clark"), base), b(load_scheme("catmull-clark"), base, general);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (Index f = 0; f < base.face_count(); ++f) {
+    const double u = unit(rng), v = unit(rng);
+    INFO("face " << f << " at (" << u << ", " << v << ")");
+    if (f % full == 0)
+      limit_test::check_same_bits(a, b, f, u, v, positions, 1);
+    else
+      limit_test::check_same_sample(a.evaluate(f, u, v, positions, 3, 1), b.evaluate(f, u, v, positions, 3, 1));
+  }
+}
+
 }  // namespace
 
 TEST_CASE("quad_grid_labelled: a torus is grid exactly when the neighbourhood does not wrap around") {
@@ -189,6 +239,44 @@ TEST_CASE("The shortcuts give the general way's bits on a mesh mixing grid, irre
         INFO("face " << f << " at (" << u << ", " << v << ")");
         limit_test::check_same_bits(a, b, f, u, v, m.positions, 2);
       }
+  }
+}
+
+TEST_CASE("The shortcuts give the general way's bits on grid wide enough that faces are known grid in pieces") {
+  // A torus wider than the piece checked at once around a face (the cut's radius and a
+  // margin of 8 rings: 26 x 26 vertices), so that faces near it are marked and read their
+  // control points without labelling (first_grid_labels); a semi-sharp edge leaves some
+  // faces out.
+  const test::Mesh m = test::torus(48, 44);
+  Level base = m.level();
+  base.edge_sharpness.assign(size_t(base.edge_count()), 0.f);
+  base.edge_sharpness[size_t(find_edge(base, 10, 11))] = 1.5f;
+  check_every_face(base, m.positions, 13, 37);
+}
+
+TEST_CASE("The shortcuts give the general way's bits where faces take their entries from pieces met before") {
+  // An extraordinary vertex in every face, in a repeating pattern: on a torus, untagged and
+  // with a crease, a semi-sharp edge and a tagged corner in one corner of its parameter
+  // square (faces whose wide keys differ near the tags while their own cuts are the far
+  // faces'); on a grid, with its boundary.
+  const test::Mesh small = split_into_quads(test::torus(12, 10, true)), large = split_into_quads(test::torus(20, 18, true));
+  const test::Mesh grid = split_into_quads(test::grid(16, 16, true));
+  for (int variant = 0; variant < 3; ++variant) {
+    const test::Mesh& m = variant == 0 ? small : variant == 1 ? large : grid;
+    Level base = m.level();
+    if (variant == 1) {
+      base.edge_sharpness.assign(size_t(base.edge_count()), 0.f);
+      base.vertex_sharpness.assign(size_t(base.vertex_count), 0.f);
+      for (Index f = 0; f < 6; ++f) {  // a crease along the first faces' first edges
+        const auto c = base.face(f);
+        base.edge_sharpness[size_t(find_edge(base, c[0], c[1]))] = kInfinitelySharp;
+      }
+      const auto near = base.face(20);
+      base.edge_sharpness[size_t(find_edge(base, near[1], near[2]))] = 1.5f;
+      base.vertex_sharpness[size_t(base.face(40)[2])] = kInfinitelySharp;
+    }
+    INFO("variant " << variant);
+    check_every_face(base, m.positions, 11, 9);
   }
 }
 
