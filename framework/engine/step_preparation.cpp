@@ -9,6 +9,7 @@
 
 #include "framework/engine/vertex_parameters.h"
 #include "framework/engine/weight_table_cache.h"
+#include "framework/rules/end_sectors.h"
 #include "framework/rules/kernel_contexts.h"
 #include "framework/scheme/step_tables.h"
 #include "framework/util/error.h"
@@ -47,13 +48,13 @@ std::vector<int> valences_present(const Level& L) {
 
 StepInputs prepare_step(const Scheme& scheme, const StepRules& step, const Level& parent, int level,
                         const RefineOptions& options, const VertexParameters& values, bool lazy_features) {
-  const std::vector<int> valences = valences_present(parent);
-  const int max_n = valences.empty() ? 0 : valences.back(), max_k = parent.max_face_size();
-  auto tables = [&](int n, int k, const std::vector<int>& present) {
-    return step_weight_tables(scheme, step, n, k, level, nullptr, &present);
+  const LevelValences present{valences_present(parent), sector_sizes_present(parent)};
+  const int max_n = present.valences.empty() ? 0 : present.valences.back(), max_k = parent.max_face_size();
+  auto tables = [&](int n, int k, const LevelValences& p) {
+    return step_weight_tables(scheme, step, n, k, level, nullptr, &p);
   };
   WeightTableCache* cache = options.evaluation.weight_tables;
-  StepInputs inputs{cache ? cache->get(step, level, max_n, max_k, valences, tables) : tables(max_n, max_k, valences),
+  StepInputs inputs{cache ? cache->get(step, level, max_n, max_k, present, tables) : tables(max_n, max_k, present),
                     per_vertex_tables(scheme, step, parent, values, max_n, max_k, level),
                     std::make_unique<StepFeatures>()};
   StepFeatures& f = *inputs.features;

@@ -23,6 +23,12 @@ struct EndSector {
 // a feature edge (which bounds sectors rather than lying in one).
 EndSector end_sector(const Level& L, const FeatureContexts& F, Index e, Index end);
 
+// The sizes m of the level's sectors, ascending (a superset: a boundary vertex also counts the
+// gap across its boundary as a sector of one face), for the weight tables
+// (LevelValences::sector_sizes). Feature edges as classify_features finds them: boundary edges
+// and edges tagged with sharpness > 0.
+std::vector<int> sector_sizes_present(const Level& L);
+
 // The sector variables of edge e = (a, b) (weight_tables.h).
 SectorVariables sector_variables(const EndSector& at_a, const EndSector& at_b);
 

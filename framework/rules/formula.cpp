@@ -1,6 +1,6 @@
-#include <algorithm>
 #include "framework/rules/formula.h"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <fmt/format.h>
@@ -33,6 +33,12 @@ double ceil_fn(double x) { return std::ceil(x); }
 double mod_fn(double a, double b) { return a - b * std::floor(a / b); }
 double binom_fn(double a, double b) { return binomial_coefficient(a, b); }
 
+std::vector<size_t> ascending_unique(std::vector<size_t> v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
+
 }  // namespace
 
 double binomial_coefficient(double a, double b) {
@@ -64,6 +70,9 @@ struct FormulaSet::Impl {
   std::deque<double> definition_values;
   std::vector<std::unique_ptr<mu::Parser>> definitions;
   std::vector<FormulaUses> definition_uses;
+  // The definitions each definition and formula reads, directly or through another, ascending:
+  // only these are evaluated before it (a scheme's definitions may be many, with cosines).
+  std::vector<std::vector<size_t>> definition_reads, formula_reads;
   std::vector<std::string> definition_names, definition_wheres, definition_expressions;
   std::vector<std::unique_ptr<mu::Parser>> formulas;
   std::vector<FormulaUses> formula_uses;
@@ -73,7 +82,7 @@ struct FormulaSet::Impl {
   // likewise for plain definitions.
   std::unique_ptr<mu::Parser> compile(const std::string& expression, const std::string& where,
                                       size_t visible_state, size_t visible_definitions,
-                                      FormulaUses& uses) {
+                                      FormulaUses& uses, std::vector<size_t>* reads = nullptr) {
     auto parser = std::make_unique<mu::Parser>();
     try {
       parser->DefineVar("n", &n);
@@ -111,8 +120,13 @@ struct FormulaSet::Impl {
         uses.b0 |= name == "b0", uses.b1 |= name == "b1", uses.m0 |= name == "m0", uses.m1 |= name == "m1";
         uses.e0 |= name == "e0", uses.e1 |= name == "e1";
         if (parameters.count(name) && !uses.reads(name)) uses.parameters.push_back(name);
-        for (size_t i = 0; i < visible_definitions; ++i)
-          if (definition_names[i] == name) uses.merge(definition_uses[i]);
+        for (size_t i = 0; i < visible_definitions; ++i) {
+          if (definition_names[i] != name) continue;
+          uses.merge(definition_uses[i]);
+          if (!reads) continue;
+          reads->push_back(i);
+          reads->insert(reads->end(), definition_reads[i].begin(), definition_reads[i].end());
+        }
         for (size_t i = 0; i < visible_state && i < state_uses.size(); ++i)
           if (state_names[i] == name) uses.merge(state_uses[i]);
       }
@@ -224,9 +238,9 @@ struct FormulaSet::Impl {
 
   // A definition that fails is named with its own place, not only the formula reading it
   // (muParser reports a definition's syntax error when it first evaluates it).
-  void evaluate_definitions(const std::string& reader) {
+  void evaluate_definitions(const std::vector<size_t>& reads, const std::string& reader) {
     load_state(l);
-    for (size_t i = 0; i < definitions.size(); ++i) {
+    for (size_t i : reads) {
       try {
         definition_values[i] = definitions[i]->Eval();
       } catch (const mu::Parser::exception_type& e) {
@@ -251,8 +265,11 @@ FormulaSet::FormulaSet(const std::map<std::string, double>& parameters,
     }
     impl_->finish_state();
     FormulaUses uses;
-    auto parser = impl_->compile(d.expression, d.where, impl_->state_names.size(), impl_->definitions.size(), uses);
+    std::vector<size_t> reads;
+    auto parser =
+        impl_->compile(d.expression, d.where, impl_->state_names.size(), impl_->definitions.size(), uses, &reads);
     impl_->definitions.push_back(std::move(parser));
+    impl_->definition_reads.push_back(ascending_unique(std::move(reads)));
     impl_->definition_uses.push_back(uses);
     impl_->definition_names.push_back(d.name);
     impl_->definition_wheres.push_back(d.where);
@@ -266,8 +283,10 @@ FormulaSet::~FormulaSet() = default;
 
 int FormulaSet::add(const std::string& expression, const std::string& where) {
   FormulaUses uses;
-  auto parser = impl_->compile(expression, where, impl_->state_names.size(), impl_->definitions.size(), uses);
+  std::vector<size_t> reads;
+  auto parser = impl_->compile(expression, where, impl_->state_names.size(), impl_->definitions.size(), uses, &reads);
   impl_->formulas.push_back(std::move(parser));
+  impl_->formula_reads.push_back(ascending_unique(std::move(reads)));
   impl_->formula_uses.push_back(uses);
   impl_->wheres.push_back(where);
   impl_->expressions.push_back(expression);
@@ -279,7 +298,7 @@ double FormulaSet::evaluate(int id, const FormulaInputs& in) {
   impl_->k0 = in.k0, impl_->k1 = in.k1;
   impl_->ci = in.ci, impl_->cb = in.cb, impl_->ex = in.ex, impl_->fe = in.fe;
   impl_->b0 = in.b0, impl_->b1 = in.b1, impl_->m0 = in.m0, impl_->m1 = in.m1, impl_->e0 = in.e0, impl_->e1 = in.e1;
-  impl_->evaluate_definitions(impl_->wheres[id]);
+  impl_->evaluate_definitions(impl_->formula_reads[id], impl_->wheres[id]);
   try {
     return impl_->formulas[id]->Eval();
   } catch (const mu::Parser::exception_type& e) {

@@ -1,9 +1,11 @@
 #pragma once
-// Accumulates one stencil row, merging repeated sources. Rows are short (tens of entries):
-// a small open-addressing table finds a repeated source in one or two probes, and rows too
-// long for it fall back to a linear search.
+// Accumulates one stencil row, merging repeated sources. Rows are mostly short (tens of
+// entries): a small open-addressing table finds a repeated source in one or two probes. Rows
+// longer than it (a stencil over the ring of a vertex of valence 2,000) keep their further
+// sources in a hash map, so that a row of m sources costs O(m), not O(m^2).
 #include <array>
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "framework/topology/level.h"
@@ -39,9 +41,10 @@ public:
   void clear() {
     for (std::uint8_t slot : used_slots_) slots_[slot] = kEmpty;
     used_slots_.clear(), indices_.clear(), weights_.clear();
+    if (!long_row_.empty()) long_row_.clear();
   }
   void add(Index source, double weight) {
-    if (indices_.size() >= kMaxHashed) return add_linear(source, weight);
+    if (indices_.size() >= kMaxHashed) return add_beyond_table(source, weight);
     const size_t at = find_slot(source);
     std::int16_t& slot = slots_[at];
     if (slot != kEmpty) {
@@ -72,12 +75,18 @@ private:
     while (slots_[h] != kEmpty && indices_[slots_[h]] != source) h = (h + 1) & (kSlots - 1);
     return h;
   }
-  void add_linear(Index source, double weight) {
-    for (size_t i = 0; i < indices_.size(); ++i)
-      if (indices_[i] == source) {
-        weights_[i] += weight;
-        return;
-      }
+  // The first kMaxHashed sources are in the table, the rest in long_row_.
+  void add_beyond_table(Index source, double weight) {
+    const std::int16_t slot = slots_[find_slot(source)];
+    if (slot != kEmpty) {
+      weights_[size_t(slot)] += weight;
+      return;
+    }
+    const auto [it, inserted] = long_row_.try_emplace(source, indices_.size());
+    if (!inserted) {
+      weights_[it->second] += weight;
+      return;
+    }
     indices_.push_back(source);
     weights_.push_back(weight);
   }
@@ -86,6 +95,7 @@ private:
   std::vector<std::uint8_t> used_slots_;
   std::vector<Index> indices_;
   std::vector<double> weights_;
+  std::unordered_map<Index, size_t> long_row_;
 };
 
 }  // namespace subdiv

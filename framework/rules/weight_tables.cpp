@@ -9,23 +9,26 @@
 namespace subdiv {
 namespace {
 
-constexpr int kVariables = 17;  // n, k, j, n0, n1, k0, k1, ci, cb, ex, fe, b0, b1, m0, m1, e0, e1
+constexpr int kVariables = 15;  // n, k, j, n0, n1, k0, k1, ci, cb, ex, fe, b0, b1, s0, s1
+constexpr int kFirstSectorVariable = 11;
 
-// Sizes and strides of the dense table over the variables a formula uses.
+// Sizes and strides of the dense table over the variables a formula uses; end valences and
+// sector slots over the ones present (end_count, slot_count).
 struct TableShape {
   size_t size = 1;
-  int count[kVariables] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+  int count[kVariables] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
   size_t stride[kVariables] = {};
 };
 
-TableShape table_shape(const FormulaUses& uses, int max_n, int max_k, int max_j, int end_count) {
+TableShape table_shape(const FormulaUses& uses, int max_n, int max_k, int max_j, int end_count, int slot_count) {
   TableShape s;
-  const bool used[kVariables] = {uses.n, uses.k, uses.j, uses.n0, uses.n1, uses.k0, uses.k1,
-                                 uses.ci, uses.cb, uses.ex, uses.fe, uses.b0, uses.b1, uses.m0, uses.m1,
-                                 uses.e0, uses.e1};
+  // An end's flag b is m > 0 (sector_variables): with the end's sector slot tabulated, b
+  // needs no dimension of its own.
+  const bool slot0 = uses.m0 || uses.e0, slot1 = uses.m1 || uses.e1;
+  const bool used[kVariables] = {uses.n,  uses.k,  uses.j,  uses.n0,           uses.n1,           uses.k0, uses.k1, uses.ci,
+                                 uses.cb, uses.ex, uses.fe, uses.b0 && !slot0, uses.b1 && !slot1, slot0,   slot1};
   const int range[kVariables] = {max_n + 1, max_k + 1, max_j + 1, end_count, end_count, max_k + 1, max_k + 1,
-                                 std::max(max_k, 1), 2, max_k + 1, max_k + 1, 2, 2, max_n + 1, max_n + 1,
-                                 max_n + 1, max_n + 1};
+                                 std::max(max_k, 1), 2, max_k + 1, max_k + 1, 2, 2, slot_count, slot_count};
   for (int v = kVariables - 1; v >= 0; --v) {
     if (!used[v]) continue;
     s.count[v] = range[v];
@@ -33,6 +36,29 @@ TableShape table_shape(const FormulaUses& uses, int max_n, int max_k, int max_j,
     s.size *= size_t(range[v]);
   }
   return s;
+}
+
+// The (m, e) pairs of the sector sizes m present, e = 0 .. m, in slot order, and each size's
+// first slot (CompiledTerm::sector_slot).
+struct SectorSlots {
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<int> first;
+};
+
+SectorSlots sector_slots(const LevelValences* present, int max_n) {
+  std::vector<int> sizes = {0};
+  if (present) sizes.insert(sizes.end(), present->sector_sizes.begin(), present->sector_sizes.end());
+  else
+    for (int m = 1; m <= max_n; ++m) sizes.push_back(m);
+  std::sort(sizes.begin(), sizes.end());
+  sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
+  SectorSlots out;
+  out.first.assign(size_t(sizes.back()) + 1, 0);
+  for (int m : sizes) {
+    out.first[size_t(m)] = int(out.pairs.size());
+    for (int e = 0; e <= m; ++e) out.pairs.emplace_back(m, e);
+  }
+  return out;
 }
 
 // A formula of the end valences n0, n1 and the index j is tabulated over all three: cubic
@@ -49,19 +75,31 @@ void check_table_fits(const TableShape& shape, const std::string& where, int max
                             where, max_n, shape.size, bytes / (1 << 30), budget.bytes / (1 << 30), budget.source));
 }
 
-// Calls visit(index into the table, coordinates) for every entry of a table of this shape.
+// Calls visit(index into the table, coordinates) for every entry of a table of this shape,
+// the last variable fastest; the index is kept as the coordinates turn (an odometer over the
+// variables of more than one value), since tables reach millions of entries.
 template <class Visit>
 void for_each_entry(const int count[kVariables], const size_t stride[kVariables], Visit visit) {
-  for (int v = 0; v < kVariables; ++v)
+  int turning[kVariables], turning_count = 0;
+  for (int v = kVariables - 1; v >= 0; --v) {
     if (count[v] <= 0) return;
+    if (count[v] > 1) turning[turning_count++] = v;
+  }
   int x[kVariables] = {};
+  size_t i = 0;
   for (;;) {
-    size_t i = 0;
-    for (int v = 0; v < kVariables; ++v) i += stride[v] * size_t(x[v]);
     visit(i, x);
-    int v = kVariables - 1;
-    while (v >= 0 && ++x[v] == count[v]) x[v--] = 0;
-    if (v < 0) return;
+    int d = 0;
+    for (; d < turning_count; ++d) {
+      const int v = turning[d];
+      if (++x[v] < count[v]) {
+        i += stride[v];
+        break;
+      }
+      i -= stride[v] * size_t(count[v] - 1);
+      x[v] = 0;
+    }
+    if (d == turning_count) return;
   }
 }
 
@@ -70,19 +108,18 @@ void for_each_entry(const int count[kVariables], const size_t stride[kVariables]
 // dropped from the table, so that the kernels (smooth_kernels.h) see a weight that depends
 // on n alone as such. The values stay the same.
 void drop_constant_dimensions(CompiledTerm& t, const int count[kVariables]) {
-  size_t* strides[kVariables] = {&t.stride_n,  &t.stride_k,  &t.stride_j,  &t.stride_n0, &t.stride_n1, &t.stride_k0,
-                                 &t.stride_k1, &t.stride_ci, &t.stride_cb, &t.stride_ex, &t.stride_fe,
-                                 &t.stride_b0, &t.stride_b1, &t.stride_m0, &t.stride_m1, &t.stride_e0, &t.stride_e1};
+  size_t* strides[kVariables] = {&t.stride_n,  &t.stride_k,  &t.stride_j,  &t.stride_n0, &t.stride_n1,
+                                 &t.stride_k0, &t.stride_k1, &t.stride_ci, &t.stride_cb, &t.stride_ex,
+                                 &t.stride_fe, &t.stride_b0, &t.stride_b1, &t.stride_s0, &t.stride_s1};
   size_t stride[kVariables];
   for (int v = 0; v < kVariables; ++v) stride[v] = *strides[v];
+  // Constant along v: every entry equals its predecessor along v. One pass for all variables.
   bool constant[kVariables];
-  for (int v = 0; v < kVariables; ++v) {
-    constant[v] = stride[v] != 0;
-    if (!constant[v]) continue;
-    for_each_entry(count, stride, [&](size_t i, const int* x) {
-      if (x[v] != 0 && t.table[i] != t.table[i - stride[v] * size_t(x[v])]) constant[v] = false;
-    });
-  }
+  for (int v = 0; v < kVariables; ++v) constant[v] = stride[v] != 0;
+  for_each_entry(count, stride, [&](size_t i, const int* x) {
+    for (int v = 0; v < kVariables; ++v)
+      if (constant[v] && x[v] != 0 && t.table[i] != t.table[i - stride[v]]) constant[v] = false;
+  });
   if (std::none_of(constant, constant + kVariables, [](bool c) { return c; })) return;
   int kept_count[kVariables];
   size_t kept_stride[kVariables] = {}, size = 1;
@@ -102,7 +139,27 @@ void drop_constant_dimensions(CompiledTerm& t, const int count[kVariables]) {
   for (int v = 0; v < kVariables; ++v) *strides[v] = kept_stride[v];
 }
 
-CompiledTerm compile_term(const Term& term, FormulaSet& formulas, const std::vector<int>* valences, int max_n,
+bool is_end_sector(Role role) { return role == Role::EndSector0 || role == Role::EndSector1; }
+
+// The largest index j of a role's points on a level: the edge roles of fixed size have 2 or 4
+// points, an end's sector m + 1; the others at most the largest valence or face size, or a
+// plugin role's own count.
+int largest_point_index(Role role, int max_n, int max_k, int max_sector) {
+  switch (role) {
+    case Role::Ends:
+    case Role::Opposite:
+    case Role::Wings: return 1;
+    case Role::FarWings: return 3;
+    case Role::EndSector0:
+    case Role::EndSector1: return max_sector;
+    default: break;
+  }
+  int max_j = std::max(max_n, max_k);
+  if (const RoleInfo* info = registered_role(role)) max_j = std::max(max_j, info->max_points(max_n, max_k) - 1);
+  return max_j;
+}
+
+CompiledTerm compile_term(const Term& term, FormulaSet& formulas, const LevelValences* present, int max_n,
                           int max_k, int level) {
   CompiledTerm out;
   out.role = term.role;
@@ -110,49 +167,52 @@ CompiledTerm compile_term(const Term& term, FormulaSet& formulas, const std::vec
   out.where = term.where;
   out.step = term.step;
   const int id = formulas.add(term.weight, term.where);
-  int max_j = std::max(max_n, max_k);
-  if (const RoleInfo* role = registered_role(term.role)) max_j = std::max(max_j, role->max_points(max_n, max_k) - 1);
-  out.max_j = max_j;
   const FormulaUses uses = formulas.uses(id);
+  const bool reads_sectors = uses.m0 || uses.m1 || uses.e0 || uses.e1;
+  const SectorSlots slots = reads_sectors || is_end_sector(term.role) ? sector_slots(present, max_n)
+                                                                      : SectorSlots{{{0, 0}}, {0}};
+  const int max_j = largest_point_index(term.role, max_n, max_k, int(slots.first.size()) - 1);
+  out.max_j = max_j;
   // End valences: every valence up to max_n, or the ones present (valence_of[slot]).
   std::vector<int> valence_of;
-  if (valences && (uses.n0 || uses.n1)) {
+  if (present && (uses.n0 || uses.n1)) {
     out.end_slot.assign(size_t(max_n) + 1, 0);
-    for (int n : *valences)
+    for (int n : present->valences)
       if (n >= 0 && n <= max_n) out.end_slot[size_t(n)] = int(valence_of.size()), valence_of.push_back(n);
   }
   const int end_count = valence_of.empty() ? max_n + 1 : int(valence_of.size());
   auto end_valence = [&](int x) { return double(valence_of.empty() ? x : valence_of[size_t(x)]); };
-  const TableShape shape = table_shape(uses, max_n, max_k, max_j, end_count);
-  out.stride_n = shape.stride[0], out.stride_k = shape.stride[1], out.stride_j = shape.stride[2];
-  out.stride_n0 = shape.stride[3], out.stride_n1 = shape.stride[4];
-  out.stride_k0 = shape.stride[5], out.stride_k1 = shape.stride[6];
-  out.stride_ci = shape.stride[7], out.stride_cb = shape.stride[8];
-  out.stride_ex = shape.stride[9], out.stride_fe = shape.stride[10];
-  out.stride_b0 = shape.stride[11], out.stride_b1 = shape.stride[12];
-  out.stride_m0 = shape.stride[13], out.stride_m1 = shape.stride[14];
-  out.stride_e0 = shape.stride[15], out.stride_e1 = shape.stride[16];
+  const TableShape shape = table_shape(uses, max_n, max_k, max_j, end_count, int(slots.pairs.size()));
+  size_t* strides[kVariables] = {&out.stride_n,  &out.stride_k,  &out.stride_j,  &out.stride_n0, &out.stride_n1,
+                                 &out.stride_k0, &out.stride_k1, &out.stride_ci, &out.stride_cb, &out.stride_ex,
+                                 &out.stride_fe, &out.stride_b0, &out.stride_b1, &out.stride_s0, &out.stride_s1};
+  for (int v = 0; v < kVariables; ++v) *strides[v] = shape.stride[v];
   check_table_fits(shape, term.where, max_n);
   out.table.resize(shape.size);
   for_each_entry(shape.count, shape.stride, [&](size_t i, const int* x) {
+    const auto [m0, e0] = slots.pairs[size_t(x[13])];
+    const auto [m1, e1] = slots.pairs[size_t(x[14])];
+    // b from its own dimension, or from the slot's m when the slot stands for it (table_shape).
+    const double b0 = double(x[11] || m0 > 0), b1 = double(x[12] || m1 > 0);
     out.table[i] = formulas.evaluate(id, {double(x[0]), double(x[1]), double(x[2]), double(level), end_valence(x[3]),
                                           end_valence(x[4]), double(x[5]), double(x[6]), double(x[7]), double(x[8]),
-                                          double(x[9]), double(x[10]), double(x[11]), double(x[12]), double(x[13]),
-                                          double(x[14]), double(x[15]), double(x[16])});
-    if (std::all_of(x + 11, x + kVariables, [](int v) { return v == 0; }) && out.table[i] != 0.0)
+                                          double(x[9]), double(x[10]), b0, b1, double(m0), double(m1), double(e0),
+                                          double(e1)});
+    if (std::all_of(x + kFirstSectorVariable, x + kVariables, [](int v) { return v == 0; }) && out.table[i] != 0.0)
       out.zero_without_sectors = false;
   });
   drop_constant_dimensions(out, shape.count);
   if (out.stride_n0 == 0 && out.stride_n1 == 0) out.end_slot.clear();
+  if (out.stride_s0 || out.stride_s1) out.sector_slot = slots.first;
   return out;
 }
 
-CompiledRule compile_rule(const Rule& rule, FormulaSet& formulas, const std::vector<int>* valences, int max_n,
-                          int max_k, int level) {
+CompiledRule compile_rule(const Rule& rule, FormulaSet& formulas, const LevelValences* present, int max_n, int max_k,
+                          int level) {
   CompiledRule out;
   out.where = rule.where;
   out.defined = true;
-  for (const Term& term : rule.terms) out.terms.push_back(compile_term(term, formulas, valences, max_n, max_k, level));
+  for (const Term& term : rule.terms) out.terms.push_back(compile_term(term, formulas, present, max_n, max_k, level));
   return out;
 }
 
@@ -195,7 +255,7 @@ CreaseEndTable<CompiledRule> compile_crease_end_rules(const CreaseEndRules& rule
   auto compiled = [&](const std::vector<std::optional<Rule>>& slots) {
     std::vector<CompiledRule> out(slots.size());
     for (size_t d = 0; d < slots.size(); ++d)
-      if (slots[d]) out[d] = compile_rule(*slots[d], formulas, scope.valences, max_n, max_k, level);
+      if (slots[d]) out[d] = compile_rule(*slots[d], formulas, scope.present, max_n, max_k, level);
     return out;
   };
   CreaseEndTable<CompiledRule> out;
@@ -216,7 +276,7 @@ WeightTables compile_rule_table(const RuleTable& rules, const FormulaScope& scop
     const int rule_max_n = n_is_face_size ? std::max(max_n, max_k) : max_n;
     for (int c = 0; c < kContextCount; ++c)
       if (rules[e][c])
-        tables.rules[e][c] = compile_rule(*rules[e][c], formulas, scope.valences, rule_max_n, max_k, level);
+        tables.rules[e][c] = compile_rule(*rules[e][c], formulas, scope.present, rule_max_n, max_k, level);
   }
 
   for (Element e : {Element::Vertex, Element::Corner}) {

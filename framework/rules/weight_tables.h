@@ -29,14 +29,18 @@ struct CompiledTerm {
   // Face rules' corner variables (formula.h): corner index ci < max_k, boundary flag cb and
   // the face's counts of extraordinary corners ex and feature edges fe, each <= max_k.
   size_t stride_ci = 0, stride_cb = 0, stride_ex = 0, stride_fe = 0;
-  // Edge rules' sector variables b0, b1 (0 or 1), m0, m1, e0, e1 (each <= max_n).
-  size_t stride_b0 = 0, stride_b1 = 0, stride_m0 = 0, stride_m1 = 0, stride_e0 = 0, stride_e1 = 0;
+  // Edge rules' sector variables: b0, b1 (0 or 1), and per end the sector's size m and the
+  // edge's index e in it as one slot, sector_slot[m] + e (0 <= e <= m). Only the sizes present
+  // on the level get slots (LevelValences::sector_sizes): a formula of j, m and e is then
+  // quadratic in the largest sector, not cubic.
+  size_t stride_b0 = 0, stride_b1 = 0, stride_s0 = 0, stride_s1 = 0;
+  std::vector<int> sector_slot;
   // Every weight is 0 where neither end has a sector (b0 = b1 = 0): a term of the rule next to
   // boundaries and creases only, which the smooth kernels leave out.
   bool zero_without_sectors = true;
   int max_j = 0;  // the largest point index j tabulated
   // When not empty, the end valences n0, n1 are tabulated only at the valences present on
-  // the level (FormulaScope::valences): end_slot[n] is valence n's place in the table.
+  // the level (LevelValences::valences): end_slot[n] is valence n's place in the table.
   std::vector<int> end_slot;
   // Role::Curve: weights on feature-curve points at offsets curve_start, curve_start+1, ...
   int curve_start = 0;
@@ -48,15 +52,15 @@ struct CompiledTerm {
     return table[n * stride_n + k * stride_k + j * stride_j + n0 * stride_n0 + n1 * stride_n1 + k0 * stride_k0 +
                  k1 * stride_k1];
   }
-  bool reads_sectors() const {
-    return stride_b0 || stride_b1 || stride_m0 || stride_m1 || stride_e0 || stride_e1;
-  }
+  bool reads_sectors() const { return stride_b0 || stride_b1 || stride_s0 || stride_s1; }
   // An edge rule's weight with its ends' sector variables (n = 2).
   double edge_weight(int k, int j, int n0, int n1, int k0, int k1, const SectorVariables& s) const {
     if (!end_slot.empty()) n0 = end_slot[size_t(n0)], n1 = end_slot[size_t(n1)];
+    size_t sectors = s.b[0] * stride_b0 + s.b[1] * stride_b1;
+    if (stride_s0) sectors += size_t(sector_slot[size_t(s.m[0])] + s.e[0]) * stride_s0;
+    if (stride_s1) sectors += size_t(sector_slot[size_t(s.m[1])] + s.e[1]) * stride_s1;
     return table[2 * stride_n + k * stride_k + j * stride_j + n0 * stride_n0 + n1 * stride_n1 + k0 * stride_k0 +
-                 k1 * stride_k1 + s.b[0] * stride_b0 + s.b[1] * stride_b1 + s.m[0] * stride_m0 + s.m[1] * stride_m1 +
-                 s.e[0] * stride_e0 + s.e[1] * stride_e1];
+                 k1 * stride_k1 + sectors];
   }
   // A face rule's corner-role weight: n the corner's valence, k the face size.
   double corner_weight(int n, int k, int j, int ci, int cb, int ex, int fe) const {
@@ -92,15 +96,25 @@ struct WeightTables {
   const CompiledRule& rule(Element e, Context c) const { return rules[int(e)][int(c)]; }
 };
 
+// What a level asks of its tables, when known (engine/step_preparation.cpp).
+struct LevelValences {
+  // The valences present, ascending: a formula of the end valences n0, n1 is tabulated at
+  // these pairs only, not at every pair up to the largest valence (cubic in it with j: a
+  // 300-triangle fan took 24 s).
+  std::vector<int> valences;
+  // The sizes m of the sectors present (rules/end_sectors.h), ascending: the sector variables
+  // m0, m1, e0, e1 are tabulated at these sizes only, and at m = 0 (an end without a sector).
+  // Tabulated up to the largest valence, a formula of j, m and e took 109 M evaluations at a
+  // 300-valent vertex.
+  std::vector<int> sector_sizes;
+};
+
 // What formulas may refer to besides n, k, j, l, n0, n1, k0, k1: numeric parameters and named
-// definitions.
+// definitions; and the level's valences when known (otherwise every valence up to max_n).
 struct FormulaScope {
   std::map<std::string, double> parameters;
   const std::vector<NamedFormula>* definitions = nullptr;
-  // The valences present on the level, ascending, when known: a formula of the end
-  // valences n0, n1 is then tabulated at these pairs only, not at every pair up to the
-  // largest valence (cubic in it with j: a 300-triangle fan took 24 s).
-  const std::vector<int>* valences = nullptr;
+  const LevelValences* present = nullptr;
 };
 
 // A rule table's formulas evaluated for every n < max_n + 1 (the largest valence) and

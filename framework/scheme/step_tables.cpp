@@ -35,13 +35,13 @@ void default_crease_rules(WeightTables& tables, const StepRules& step) {
 }  // namespace
 
 WeightTables step_weight_tables(const Scheme& scheme, const StepRules& step, int max_n, int max_k, int level,
-                                const std::map<std::string, double>* parameters, const std::vector<int>* valences) {
+                                const std::map<std::string, double>* parameters, const LevelValences* present) {
   WeightTables tables = compile_rule_table(
-      step.rules, {parameters ? *parameters : scheme.parameter_values(), &scheme.definitions, valences}, max_n, max_k,
+      step.rules, {parameters ? *parameters : scheme.parameter_values(), &scheme.definitions, present}, max_n, max_k,
       level);
   if (!step.crease_ends.empty())
     tables.crease_ends = compile_crease_end_rules(
-        step.crease_ends, {parameters ? *parameters : scheme.parameter_values(), &scheme.definitions, valences}, max_n,
+        step.crease_ends, {parameters ? *parameters : scheme.parameter_values(), &scheme.definitions, present}, max_n,
         max_k, level);
   if (const CurveScheme* curve = feature_curve(scheme, step)) add_curve_rules(tables, *curve, level);
   if (!step.curve_rules_apply && !step.curve) default_crease_rules(tables, step);

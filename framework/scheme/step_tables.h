@@ -9,10 +9,10 @@ namespace subdiv {
 
 // max_n: the largest valence, max_k: the largest face size on the level; level: l.
 // `parameters`: the values formulas see, when not the scheme's own (per-vertex parameters).
-// `valences`: the valences present on the level, ascending, when known (FormulaScope).
+// `present`: the level's valences and sector bound, when known (LevelValences).
 WeightTables step_weight_tables(const Scheme& scheme, const StepRules& step, int max_n, int max_k, int level,
                                 const std::map<std::string, double>* parameters = nullptr,
-                                const std::vector<int>* valences = nullptr);
+                                const LevelValences* present = nullptr);
 
 // Whether the scheme can refine boundaries and creases at all: it names a curve scheme (its
 // own or a split's), states a crease rule, or has code rules that handle features. Without

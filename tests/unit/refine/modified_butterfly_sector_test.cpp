@@ -100,6 +100,23 @@ TEST_CASE("modified butterfly: an interior edge at a boundary vertex takes the s
   }
 }
 
+TEST_CASE("modified butterfly: at a 300-valent boundary hub every interior edge takes the sector stencil, k = 300") {
+  // A CAD-style fan from one boundary vertex: the weight tables hold this one large sector
+  // (rules/weight_tables.h, LevelValences::sector_sizes), not every size up to 300.
+  const int k = 300;
+  const Mesh mesh = fan(k + 1, false, true, false);
+  const Level base = mesh.level();
+  const OneLevel r = refine_level(base, mesh.positions);
+  const std::vector<Point> p = sector_of(mesh, k + 1, 0, k);
+  const Point v = at(mesh.positions, 0);
+  for (int e : {1, 2, 77, 150, 223, 298, 299}) {
+    CAPTURE(e);
+    const Index edge = find_edge(base, 0, Index(1 + e));
+    const Point got = at(r.positions, edge_child(r.h.origins[0], edge)), want = sector_point(v, p, e);
+    for (int c = 0; c < 3; ++c) CHECK(got[c] == doctest::Approx(want[c]).epsilon(1e-11));
+  }
+}
+
 TEST_CASE("modified butterfly: an interior edge with both ends on the boundary averages both ends' stencils") {
   // A fan without the outer band: every ring point is a boundary vertex whose one sector has
   // two faces, in which the edge to v is p_1: its stencil is (p_0 + p_2) cos(pi/2)/4 + p_1/2 +
