@@ -194,7 +194,22 @@ void apply_vertex_rule(RowBuilder& row, const RuleInputs& in, Index v, const Com
   }
 }
 
-void apply_edge_rule(RowBuilder& row, const RuleInputs& in, Index e, const CompiledRule& rule, double scale) {
+namespace {
+
+// How much of an end's sector stencil an edge takes: all of it while the end stays a feature
+// vertex one level down; where its features decay to smooth this level (a semi-sharp crease
+// ending), the vertex rules' fractional weight (DeRose, Kass & Truong 1998; OpenSubdiv's
+// Sdc::Crease::ComputeFractionalWeightAtVertex), so that the surface moves continuously as the
+// sharpness goes to 0 rather than jumping from the sector stencil to the smooth one.
+double sector_share(const FeatureContexts& F, Index v) {
+  const VertexContext& vc = F.vertices[v];
+  const bool sectors_end = vc.child == Context::Smooth || vc.child == Context::Dart;
+  return sectors_end && vc.child != vc.parent ? double(vc.parent_weight) : 1.0;
+}
+
+// The rule's terms for edge e = (a, b) with the given ends' sectors (none: faces = 0).
+void add_edge_terms(RowBuilder& row, const RuleInputs& in, Index e, const CompiledRule& rule,
+                    const EndSector& sector_a, const EndSector& sector_b, double scale) {
   const Level& L = in.parent;
   const Index a = L.edge_vertices[2 * e], b = L.edge_vertices[2 * e + 1];
   const Index faces[2] = {L.edge_faces[2 * e], L.edge_faces[2 * e + 1]};
@@ -202,9 +217,6 @@ void apply_edge_rule(RowBuilder& row, const RuleInputs& in, Index e, const Compi
   const int n0 = L.valence(a), n1 = L.valence(b);
   // Sizes of the edge's two faces (0: none), for formulas that weigh by both (k0, k1).
   const int k0 = L.face_size(faces[0]), k1 = face_count == 2 ? L.face_size(faces[1]) : 0;
-  EndSector sector_a, sector_b;
-  if (reads_sectors(rule))
-    sector_a = end_sector(L, in.features, e, a), sector_b = end_sector(L, in.features, e, b);
   const SectorVariables sv = sector_variables(sector_a, sector_b);
   for (const CompiledTerm& t : rule.terms) {
     switch (t.role) {
@@ -245,6 +257,25 @@ void apply_edge_rule(RowBuilder& row, const RuleInputs& in, Index e, const Compi
           wrong_role(t, Element::Edge);
     }
   }
+}
+
+}  // namespace
+
+void apply_edge_rule(RowBuilder& row, const RuleInputs& in, Index e, const CompiledRule& rule, double scale) {
+  EndSector sector_a, sector_b;
+  if (reads_sectors(rule)) {
+    const Level& L = in.parent;
+    sector_a = end_sector(L, in.features, e, L.edge_vertices[2 * e]);
+    sector_b = end_sector(L, in.features, e, L.edge_vertices[2 * e + 1]);
+  }
+  const double share_a = sector_a.faces ? sector_share(in.features, in.parent.edge_vertices[2 * e]) : 1.0;
+  const double share_b = sector_b.faces ? sector_share(in.features, in.parent.edge_vertices[2 * e + 1]) : 1.0;
+  // Each end's sector in with its share and out with the rest, bilinearly over the two ends.
+  for (const bool with_a : {true, false})
+    for (const bool with_b : {true, false}) {
+      const double w = (with_a ? share_a : 1.0 - share_a) * (with_b ? share_b : 1.0 - share_b);
+      if (w > 0.0) add_edge_terms(row, in, e, rule, with_a ? sector_a : EndSector{}, with_b ? sector_b : EndSector{}, scale * w);
+    }
 }
 
 namespace {

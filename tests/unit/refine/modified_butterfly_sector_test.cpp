@@ -177,6 +177,44 @@ TEST_CASE("modified butterfly: at a crease or corner vertex each sector between 
   }
 }
 
+TEST_CASE("modified butterfly: next to a semi-sharp crease of sharpness s < 1 the sector stencil is blended by s") {
+  // DeRose, Kass & Truong 1998's fractional sharpness, as the vertex rules blend: a crease of
+  // sharpness s <= 1 is smooth one level down, so an interior edge at its vertices takes s of
+  // the sector stencil and 1 - s of the smooth stencil. The new point is linear in s, equal to
+  // the smooth scheme's at s = 0 and to the sharp crease's at s = 1.
+  const int m = 6;
+  const Mesh mesh = fan(m, true, true, false);
+  auto refined = [&](float s) {
+    Level base = mesh.level();
+    base.edge_sharpness.assign(size_t(base.edge_count()), 0.f);
+    for (int i : {0, 3}) {
+      base.edge_sharpness[size_t(find_edge(base, 0, Index(1 + i)))] = s;
+      base.edge_sharpness[size_t(find_edge(base, Index(1 + i), Index(1 + m + i)))] = s;
+    }
+    return std::pair{base, refine_level(base, mesh.positions)};
+  };
+  const auto [base, smooth] = refined(0.f);
+  const OneLevel sharp = refined(1.f).second;
+  // Edges at the crease vertex v (index 0) and at the crease vertex p_0 (index 1).
+  std::vector<Index> edges;
+  for (int i : {1, 2, 4, 5}) edges.push_back(find_edge(base, 0, Index(1 + i)));
+  edges.push_back(find_edge(base, 1, 2));
+  edges.push_back(find_edge(base, 1, Index(1 + m + 1)));
+  double moved = 0;
+  for (Index e : edges) {
+    const Point p0 = at(smooth.positions, edge_child(smooth.h.origins[0], e));
+    const Point p1 = at(sharp.positions, edge_child(sharp.h.origins[0], e));
+    for (int c = 0; c < 3; ++c) moved = std::max(moved, std::abs(p1[c] - p0[c]));
+    for (float s : {0.25f, 0.5f, 0.9f}) {
+      CAPTURE(s);
+      const OneLevel r = refined(s).second;
+      const Point got = at(r.positions, edge_child(r.h.origins[0], e));
+      for (int c = 0; c < 3; ++c) CHECK(got[c] == doctest::Approx(s * p1[c] + (1 - s) * p0[c]).epsilon(1e-13));
+    }
+  }
+  CHECK(moved > 1e-3);  // the sector stencil differs from the smooth one here
+}
+
 TEST_CASE("modified butterfly: on the half-disk the sector stencil reproduces linear data (new point = midpoint)") {
   // p_i = (cos i pi/k, sin i pi/k), v = 0: the weights are DCT-I (cosine) and DST-I (sine)
   // coefficients, so x and y are halved exactly; the rule being affine, every linear function
