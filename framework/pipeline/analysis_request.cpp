@@ -20,8 +20,12 @@ void check_valences(const ValenceAnalysisRequest& r) {
 
 std::vector<SurfaceAnalysis> analyse_valences(const ValenceAnalysisRequest& r) {
   check_valences(r);
-  if (r.boundary && r.crease)
-    throw OptionError("a valence analysis is of boundary vertices or of crease vertices: make one request for each");
+  if (int(r.boundary) + int(r.crease) + int(r.corner) > 1)
+    throw OptionError("a valence analysis is of boundary, crease or corner vertices: make one request for each");
+  if (r.corner)
+    for (int n : r.valences)
+      if (n < 3)
+        throw OptionError(fmt::format("{{valences}} {}: a corner has three sharp ring edges, so valence 3 or more", n));
   const CentreKind centre = analysis_centre(*r.scheme);
   std::vector<SurfaceAnalysis> out;
   for (int n : r.valences) {
@@ -30,6 +34,7 @@ std::vector<SurfaceAnalysis> analyse_valences(const ValenceAnalysisRequest& r) {
     c.valence = n;
     c.boundary = r.boundary;
     if (r.crease) c.sharp = {0, n / 2};
+    if (r.corner) c.sharp = {0, n / 3, 2 * n / 3};
     c.first_step = r.level;
     out.push_back(analyse_configuration(*r.scheme, c, r.options));
   }

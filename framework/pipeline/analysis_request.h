@@ -24,6 +24,10 @@ struct ValenceAnalysisRequest {
   // interior ones; a dual scheme at the face of the first side's sector.
   // (Last, so that the front-ends' positional initialisers stay valid.)
   bool crease = false;
+  // At corner vertices (n >= 3 ring edges, infinitely sharp at ring edges 0, n / 3 and
+  // 2n / 3: three sectors), each sector judged as at a boundary. Not for dual schemes, whose
+  // corner points collapse into one.
+  bool corner = false;
 };
 
 // Valences analysed at most: the local matrix of valence n has O(n) rows per ring (above
@@ -31,7 +35,8 @@ struct ValenceAnalysisRequest {
 inline constexpr int kMaxAnalysedValence = kMaxPatchValence;
 
 // One analysis per valence, in the request's order. Throws OptionError for an empty list, a
-// valence outside 2..kMaxAnalysedValence, or boundary and crease in one request. A scheme that fails the analysis at a valence is no error: the reason is in
+// valence outside 2..kMaxAnalysedValence (3.. for corners), or more than one of boundary,
+// crease and corner in one request. A scheme that fails the analysis at a valence is no error: the reason is in
 // that analysis's verdict.
 std::vector<SurfaceAnalysis> analyse_valences(const ValenceAnalysisRequest& request);
 

@@ -85,7 +85,7 @@ py::dict curve_dict(const subdiv::CurveSchemeAnalysis& r) {
   return d;
 }
 
-py::object analyze(py::handle scheme, const std::vector<int>& valences, bool boundary, bool crease,
+py::object analyze(py::handle scheme, const std::vector<int>& valences, bool boundary, bool crease, bool corner,
                    const std::string& interpolation, int level, int max_ring, bool characteristic_map) {
   if (!py::isinstance<SchemeHandle>(scheme))
     throw subdiv::Error("analyze: expected a subdivkit.Scheme (subdivkit.analyze loads names)");
@@ -99,8 +99,8 @@ py::object analyze(py::handle scheme, const std::vector<int>& valences, bool bou
     }
     return curve_dict(r);
   }
-  const subdiv::ValenceAnalysisRequest request{h.surface, valences, boundary, level,
-                                               analysis_options(interpolation, max_ring, characteristic_map), crease};
+  const subdiv::ValenceAnalysisRequest request{
+      h.surface, valences, boundary, level, analysis_options(interpolation, max_ring, characteristic_map), crease, corner};
   std::vector<subdiv::SurfaceAnalysis> results;
   {
     py::gil_scoped_release unlocked;
@@ -115,7 +115,7 @@ py::object analyze(py::handle scheme, const std::vector<int>& valences, bool bou
 
 void bind_analysis(py::module_& m) {
   m.def("_analyze", &analyze, py::arg("scheme"), py::arg("valences"), py::arg("boundary"), py::arg("crease"),
-        py::arg("boundary_interpolation"), py::arg("level"), py::arg("max_ring"), py::arg("characteristic_map"),
+        py::arg("corner"), py::arg("boundary_interpolation"), py::arg("level"), py::arg("max_ring"), py::arg("characteristic_map"),
         "Analyses as dicts of arrays (subdivkit.analyze gathers them).");
 }
 

@@ -100,8 +100,8 @@ def _valence_list(valences):
     return [check_whole(int(n), "valences", "give whole numbers, e.g. range(3, 13)") for n in values]
 
 
-def analyze(scheme, valences=range(3, 13), *, boundary=False, crease=False, boundary_interpolation="edges-and-corners",
-            level=0, max_ring=5, characteristic_map=True):
+def analyze(scheme, valences=range(3, 13), *, boundary=False, crease=False, corner=False,
+            boundary_interpolation="edges-and-corners", level=0, max_ring=5, characteristic_map=True):
     """Analyse a scheme's convergence and smoothness.
 
     Surface schemes (returns SurfaceAnalysis): the local subdivision matrix around a vertex
@@ -111,7 +111,9 @@ def analyze(scheme, valences=range(3, 13), *, boundary=False, crease=False, boun
     characteristic map. ``boundary=True`` analyses boundary vertices instead (valences
     from 2); ``crease=True`` crease vertices (infinitely sharp ring edges 0 and n/2; a crease
     whose two sides do not read each other's points is judged as two boundaries, as
-    ``subdiv analyze --crease`` does: docs/analysis.md). Dual schemes are analysed at the
+    ``subdiv analyze --crease`` does: docs/analysis.md); ``corner=True`` corner vertices (valences
+    from 3; infinitely sharp ring edges 0, n/3 and 2n/3, each of the three sectors judged as a
+    boundary vertex tagged as a corner, as ``subdiv analyze --corner``). Dual schemes are analysed at the
     face such a vertex's faces become. ``level`` picks the weights of level-dependent schemes.
 
     Curve schemes (returns CurveAnalysis; ``valences`` is ignored): the symbol a(z),
@@ -123,7 +125,8 @@ def analyze(scheme, valences=range(3, 13), *, boundary=False, crease=False, boun
         scheme = Scheme.load(scheme)
     if not isinstance(scheme, Scheme):
         raise Error(f"analyze: expected a subdivkit.Scheme or a scheme name, got {_type_name(scheme)}")
-    result = _subdivkit._analyze(scheme, _valence_list(valences), bool(boundary), bool(crease), boundary_interpolation,
+    result = _subdivkit._analyze(scheme, _valence_list(valences), bool(boundary), bool(crease), bool(corner),
+                                 boundary_interpolation,
                                  check_whole(level, "level", "give the whole number of the level whose weights to analyse"),
                                  check_whole(max_ring, "max_ring", "give a whole number of rings"),
                                  bool(characteristic_map))

@@ -41,5 +41,6 @@ class CurveAnalysis:
     details: dict[str, Any]
 
 def analyze(scheme: Scheme | str, valences: Iterable[int] | npt.ArrayLike = ..., *, boundary: bool = False,
-            crease: bool = False, boundary_interpolation: str = "edges-and-corners", level: int = 0, max_ring: int = 5,
+            crease: bool = False, corner: bool = False, boundary_interpolation: str = "edges-and-corners",
+            level: int = 0, max_ring: int = 5,
             characteristic_map: bool = True) -> SurfaceAnalysis | CurveAnalysis: ...

@@ -90,6 +90,21 @@ def test_crease_analysis_judges_each_side_as_a_boundary():
         sk.analyze("catmull-clark", [4], crease=True, boundary=True)
 
 
+def test_corner_analysis_judges_each_sector_as_a_boundary_corner():
+    # Three sharp ring edges at 0, n/3, 2n/3: the crease points are three cubic B-spline
+    # curves ending at the kept corner (1 once, 1/2 three times); sectors of one face are the
+    # regular corner patch, C1 (docs/analysis.md, "Corners").
+    a = sk.analyze("catmull-clark", [3, 6], corner=True)
+    assert bool(a.c1[0]) and "3 sectors" in a.verdicts[0]
+    for details in a.details:
+        crease = details["crease_eigenvalues"]
+        assert np.allclose(crease[:4], [1, 0.5, 0.5, 0.5], atol=1e-9)
+    with pytest.raises(sk.Error, match="valence 3 or more"):
+        sk.analyze("catmull-clark", [2], corner=True)
+    with pytest.raises(sk.Error):
+        sk.analyze("catmull-clark", [4], corner=True, crease=True)
+
+
 def test_dual_crease_points_refine_by_chaikins_rule():
     # Doo-Sabin's crease points follow Chaikin's curve (docs/features.md): their own local
     # matrix has the quadratic B-spline's eigenvalues 1, 1/2, 1/4 (Chaikin 1974), then smaller.

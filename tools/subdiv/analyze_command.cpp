@@ -33,6 +33,7 @@ struct AnalyzeArgs {
   std::string boundary_mode = "edges-and-corners";
   bool boundary = false;
   bool crease = false;
+  bool corner = false;
   bool details = false;
   int level = 0;
   int max_ring = 5;
@@ -118,7 +119,7 @@ void run_surface(const AnalyzeArgs& a) {
   options.max_ring = a.max_ring;
   options.characteristic_map = true;
   const CentreKind centre = analysis_centre(*scheme);
-  std::vector<SurfaceAnalysis> interior, boundary, crease;
+  std::vector<SurfaceAnalysis> interior, boundary, crease, corner;
   const std::vector<int> valences = parse_valences(a.valence);
   ValenceAnalysisRequest request{scheme, {}, false, a.level, options};
   request.valences = valences;
@@ -146,8 +147,14 @@ void run_surface(const AnalyzeArgs& a) {
                centre == CentreKind::Face ? "; analysed at the face of the first side's sector" : "",
                surface_table(crease));
   }
+  if (a.corner) {
+    request.valences = valences, request.boundary = false, request.crease = false, request.corner = true;
+    corner = analyse_valences(request);
+    print_safe("\ncorner vertices (n ring edges, sharp ring edges 0, n/3 and 2n/3: three sectors):\n{}",
+               surface_table(corner));
+  }
   if (a.details) {
-    for (const auto* list : {&interior, &boundary, &crease})
+    for (const auto* list : {&interior, &boundary, &crease, &corner})
       for (const auto& r : *list) {
         print_safe("\n");
         for (const auto& line : surface_summary_lines(r)) print_safe("  {}\n", line);
@@ -171,6 +178,10 @@ void run_surface(const AnalyzeArgs& a) {
       j["crease_analyses"] = nlohmann::json::array();
       for (const auto& r : crease) j["crease_analyses"].push_back(surface_json(r));
     }
+    if (!corner.empty()) {
+      j["corner_analyses"] = nlohmann::json::array();
+      for (const auto& r : corner) j["corner_analyses"].push_back(surface_json(r));
+    }
     j["stationary"] = !level_dependent;
     j["level"] = a.level;
     j["parameters"] = nlohmann::json::object();
@@ -183,6 +194,7 @@ void run_surface(const AnalyzeArgs& a) {
     write_characteristic_maps(a.vtk_dir, scheme->name, interior, "");
     write_characteristic_maps(a.vtk_dir, scheme->name, boundary, "boundary_");
     write_characteristic_maps(a.vtk_dir, scheme->name, crease, "crease_");
+    write_characteristic_maps(a.vtk_dir, scheme->name, corner, "corner_");
   }
 }
 
@@ -193,7 +205,7 @@ void add_analyze_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("analyze", "Convergence and smoothness of a scheme: eigen-analysis at extraordinary "
                                             "vertices, or the symbol analysis of a curve scheme");
   cmd->add_option("scheme", args->scheme, "Scheme name (see `subdiv schemes`) or path to a .json file")->required();
-  cmd->add_option("--valence", args->valence, "Valences to analyse (2..512; boundary and crease vertices 2..64): a..b, n, or a list a,b,c")->capture_default_str();
+  cmd->add_option("--valence", args->valence, "Valences to analyse (2..512; boundary, crease and corner vertices 2..64): a..b, n, or a list a,b,c")->capture_default_str();
   cmd->add_option("--vtk", args->vtk_dir, "Write each valence's characteristic map as a .vtp file into this directory");
   cmd->add_option("--json", args->json_file, "Write the report as JSON");
   cmd->add_option("--svg", args->svg_file, "Write the spectrum (eigenvalue moduli against valence) as an SVG plot");
@@ -201,6 +213,9 @@ void add_analyze_command(CLI::App& app) {
   cmd->add_flag("--boundary", args->boundary, "Also analyse boundary vertices of each valence");
   cmd->add_flag("--crease", args->crease,
                 "Also analyse crease vertices of each valence (infinitely sharp ring edges 0 and n/2)");
+  cmd->add_flag("--corner", args->corner,
+                "Also analyse corner vertices of each valence from 3 (infinitely sharp ring edges 0, n/3 and 2n/3; "
+                "each of the three sectors judged as at a boundary)");
   add_boundary_option(cmd, "--boundary-interpolation", args->boundary_mode);
   cmd->add_flag("--details", args->details, "Print every valence's full analysis (eigenvalues, checks, masks)");
   cmd->add_option("--level", args->level, "Level whose weights are analysed (level-dependent schemes)")

@@ -937,12 +937,25 @@ SurfaceAnalysis analyse_patch(const Scheme& scheme, const Patch& patch, const Lo
 
 namespace {
 
-bool two_sided_crease(const LocalConfig& c) { return !c.boundary && !c.corner && c.sharp.size() == 2; }
+// A vertex inside the surface with two or more infinitely sharp ring edges: a crease (two) or
+// a corner (three or more), whose sectors lie between consecutive sharp edges.
+bool sectored_feature(const LocalConfig& c) { return !c.boundary && !c.corner && c.sharp.size() >= 2; }
 
-// Whether S is block triangular with respect to the crease: no point off the crease on one
-// side has weight on a point off the crease on the other. The sides are the components of
-// the patch without its crease vertices (those on an edge of sharpness >= 1).
-bool sides_decoupled(const Patch& p, const SurfaceAnalysis& a) {
+// The number of faces of each sector, counterclockwise from the first sharp ring edge (for a
+// dual centre, the first sector is the one whose face is analysed).
+std::vector<int> sector_faces(const LocalConfig& c) {
+  if (c.centre == CentreKind::Face) return {first_sector_faces(c), c.valence - first_sector_faces(c)};
+  std::vector<int> faces;
+  for (size_t i = 0; i < c.sharp.size(); ++i)
+    faces.push_back((i + 1 < c.sharp.size() ? c.sharp[i + 1] : c.sharp[0] + c.valence) - c.sharp[i]);
+  return faces;
+}
+
+// Whether S is block triangular with respect to the crease curves: no point off them in one
+// sector has weight on a point off them in another. The sectors are the components of the
+// patch without its crease vertices (those on an edge of sharpness >= 1); there must be
+// `sectors` of them.
+bool sides_decoupled(const Patch& p, const SurfaceAnalysis& a, int sectors) {
   const Level& L = p.level;
   std::vector<int> side(size_t(L.vertex_count), -1);  // -1 unvisited, -2 crease
   for (Index v = 0; v < L.vertex_count; ++v)
@@ -963,7 +976,7 @@ bool sides_decoupled(const Patch& p, const SurfaceAnalysis& a) {
     }
     ++sides;
   }
-  if (sides != 2) return false;
+  if (sides != sectors) return false;
   for (size_t i = 0; i < a.matrix.size(); ++i)
     for (size_t j = 0; j < a.matrix.size(); ++j) {
       const int si = side[size_t(a.label_vertices[i])], sj = side[size_t(a.label_vertices[j])];
@@ -1011,44 +1024,58 @@ std::string leading_text(const std::vector<Complex>& ev, size_t count) {
   return ev.size() > count ? s + ", ..." : s;
 }
 
-// A crease cuts the neighbourhood into two sides that, when S is block triangular (checked
-// by sides_decoupled), share only the crease points, refined by the crease curve's rule on
-// their own. Each side is then refined as a surface whose boundary is the crease — exactly
-// so where the scheme's crease rules are its boundary rules — and the smoothness across the
-// crease is each side's boundary analysis (a side of k faces: boundary valence k + 1). The
-// two-sided characteristic map is no test here: its subdominant pair mixes the two sides.
-// Along the crease, the spectrum of the crease points' own block (crease_eigenvalues).
-void judge_crease_by_sides(const Scheme& scheme, const SurfaceAnalysisOptions& options, SurfaceAnalysis& out) {
-  const int first = first_sector_faces(out.config);
-  const int sides[2] = {first, out.config.valence - first};
-  std::string failed;
-  for (int k : sides) {
+// A crease cuts the neighbourhood into two sides, a corner into one sector per pair of
+// consecutive sharp edges; when S is block triangular (checked by sides_decoupled) they share
+// only the crease points, refined by the crease curve's rule on their own. Each sector is
+// then refined as a surface whose boundary is its two crease curves — exactly so where the
+// scheme's crease rules are its boundary rules — and the smoothness up to the crease is each
+// sector's boundary analysis (a sector of k faces: boundary valence k + 1; at a corner, whose
+// point stays, a boundary vertex tagged as a corner). The whole
+// characteristic map is no test here: its subdominant eigenvalues mix the sectors (at a
+// corner, each crease curve brings its own). Along the crease curves, the spectrum of the
+// crease points' own block (crease_eigenvalues).
+void judge_by_sectors(const Scheme& scheme, const SurfaceAnalysisOptions& options, SurfaceAnalysis& out) {
+  const std::vector<int> sectors = sector_faces(out.config);
+  std::string failed, sizes;
+  for (size_t i = 0; i < sectors.size(); ++i) {
+    const int k = sectors[i];
+    sizes += fmt::format("{}{}", i == 0 ? "" : i + 1 == sectors.size() ? " and " : ", ", k);
     LocalConfig side;
     side.centre = out.config.centre;
     side.boundary = true;
     side.valence = k + 1;
+    side.corner = sectors.size() > 2;  // a corner's point stays: a boundary vertex tagged as a corner
     side.first_step = out.config.first_step;
     const SurfaceAnalysis b = analyse_configuration(scheme, side, options);
     const std::string why = b.verdict.rfind("fails: ", 0) == 0 ? b.verdict.substr(7) : b.verdict;
-    if (!b.c1 && failed.empty()) failed = fmt::format("the side of {} faces ({}): {}", k, b.config.describe(), why);
+    if (!b.c1 && failed.empty())
+      failed = fmt::format("the {} of {} faces ({}): {}", sectors.size() == 2 ? "side" : "sector", k,
+                           b.config.describe(), why);
   }
   out.c1 = failed.empty();
+  const bool crease = sectors.size() == 2;
   const std::string along =
       out.crease_eigenvalues.empty()
           ? std::string()
-          : fmt::format(" (its points refine among themselves: {})", leading_text(out.crease_eigenvalues, 4));
-  out.verdict = out.c1 ? fmt::format("C1 on both sides of the crease (sides of {} and {} faces, each as at a boundary); "
-                                     "along it the crease curve's{}",
-                                     sides[0], sides[1], along)
-                       : "fails: " + failed;
+          : fmt::format(" (its points refine among themselves: {})", leading_text(out.crease_eigenvalues, crease ? 4 : 5));
+  if (!out.c1) out.verdict = "fails: " + failed;
+  else if (crease)
+    out.verdict = fmt::format("C1 on both sides of the crease (sides of {} faces, each as at a boundary); "
+                              "along it the crease curve's{}",
+                              sizes, along);
+  else
+    out.verdict = fmt::format("C1 in each of the corner's {} sectors (sectors of {} faces, each as at a boundary corner); "
+                              "along its crease curves the curve rule's{}",
+                              sectors.size(), sizes, along);
 }
 
 SurfaceAnalysis analyse_crease_or_other(const Scheme& scheme, const Patch& patch, const LocalConfig& config,
                                         const SurfaceAnalysisOptions& options) {
   SurfaceAnalysis out = analyse_patch(scheme, patch, config, options);
-  if (two_sided_crease(config) && out.error.empty() && !out.matrix.empty() && sides_decoupled(patch, out)) {
+  if (sectored_feature(config) && out.error.empty() && !out.matrix.empty() &&
+      sides_decoupled(patch, out, int(sector_faces(config).size()))) {
     out.crease_eigenvalues = crease_spectrum(patch, out);
-    judge_crease_by_sides(scheme, options, out);
+    judge_by_sectors(scheme, options, out);
   }
   return out;
 }
