@@ -3,8 +3,6 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
 #include <tbb/task_arena.h>
 
 #include "framework/engine/vertex_parameters.h"
@@ -12,6 +10,7 @@
 #include "framework/rules/end_sectors.h"
 #include "framework/rules/kernel_contexts.h"
 #include "framework/scheme/step_tables.h"
+#include "framework/util/distinct_values.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
 
@@ -22,26 +21,7 @@ namespace {
 // n1 is tabulated at (a fan's hub and rim, not every valence up to the hub's). One parallel
 // pass, whose last entry is also the largest valence (Level::max_valence would be another).
 std::vector<int> valences_present(const Level& L) {
-  using Seen = std::vector<char>;
-  const Seen seen = tbb::parallel_reduce(
-      tbb::blocked_range<Index>(0, L.vertex_count, 1 << 16), Seen{},
-      [&L](const tbb::blocked_range<Index>& r, Seen s) {
-        for (Index v = r.begin(); v < r.end(); ++v) {
-          const size_t n = size_t(L.valence(v));
-          if (n >= s.size()) s.resize(n + 1, 0);
-          s[n] = 1;
-        }
-        return s;
-      },
-      [](Seen a, const Seen& b) {
-        if (b.size() > a.size()) a.resize(b.size(), 0);
-        for (size_t n = 0; n < b.size(); ++n) a[n] |= b[n];
-        return a;
-      });
-  std::vector<int> out;
-  for (size_t n = 0; n < seen.size(); ++n)
-    if (seen[n]) out.push_back(int(n));
-  return out;
+  return distinct_values(L.vertex_count, Index(1 << 16), [&L](Index v, auto add) { add(L.valence(v)); });
 }
 
 }  // namespace
