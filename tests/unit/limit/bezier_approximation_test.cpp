@@ -36,55 +36,14 @@ PreparedEvaluation prepared(const test::Mesh& m, const std::string& scheme = "ca
   return prepare_evaluation(std::move(r));
 }
 
-// Every face with n sides split into n quads at its centroid and edge midpoints (a bilinear
-// step): the centroids get valence n, so triangles, pentagons and hexagons make quad meshes
-// with extraordinary vertices of valence 3, 5 and 6.
-test::Mesh quad_split(const test::Mesh& m) {
-  test::Mesh q;
-  q.positions = m.positions;
-  q.vertex_count = m.vertex_count;
-  std::map<std::pair<Index, Index>, Index> mid;
-  auto edge = [&](Index a, Index b) {
-    const auto key = std::minmax(a, b);
-    auto [it, added] = mid.emplace(std::pair{key.first, key.second}, q.vertex_count);
-    if (added)
-      q.add_vertex((m.positions[3 * size_t(a)] + m.positions[3 * size_t(b)]) / 2,
-                   (m.positions[3 * size_t(a) + 1] + m.positions[3 * size_t(b) + 1]) / 2,
-                   (m.positions[3 * size_t(a) + 2] + m.positions[3 * size_t(b) + 2]) / 2);
-    return it->second;
-  };
-  for (size_t f = 0; f + 1 < m.offsets.size(); ++f) {
-    const Index first = m.offsets[f], n = m.offsets[f + 1] - first;
-    double c[3] = {0, 0, 0};
-    for (Index k = 0; k < n; ++k)
-      for (int x = 0; x < 3; ++x) c[x] += m.positions[3 * size_t(m.corners[size_t(first + k)]) + size_t(x)] / n;
-    const Index centre = q.vertex_count;
-    q.add_vertex(c[0], c[1], c[2]);
-    for (Index k = 0; k < n; ++k) {
-      const Index v = m.corners[size_t(first + k)], next = m.corners[size_t(first + (k + 1) % n)],
-                  prev = m.corners[size_t(first + (k + n - 1) % n)];
-      const Index a = edge(v, next), b = edge(prev, v);
-      q.add_face({v, a, centre, b});
-    }
-  }
-  return q;
-}
+using limit_test::angle;
+using limit_test::normal;
+using limit_test::quad_split;
 
 // Closed quad meshes with vertices of valence 3 to 6: the bipyramids' triangles split
 // (apexes of valence n, the triangles' centres 3).
 test::Mesh valences_3_to_5() { return quad_split(test::bipyramid(5)); }
 test::Mesh valences_3_to_6() { return quad_split(test::bipyramid(6)); }
-
-double angle(const Point3& a, const Point3& b) {
-  const Point3 c{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  const double s = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-  return std::atan2(s, a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
-}
-
-Point3 normal(const Point3& a, const Point3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
 
 struct EdgeSides {
   double largest_position = 0, largest_tangent_angle = 0, largest_geometry_angle = 0;

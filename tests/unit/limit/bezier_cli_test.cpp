@@ -136,7 +136,7 @@ TEST_CASE("subdiv evaluate --approximate bezier refuses what the patches do not 
   test::check_refused("evaluate " + test::source_path("examples/meshes/cube-creased.obj") +
                           " --approximate bezier --samples 4",
                       dir / "f.vtp", "vertex 0 is a corner inside the surface");
-  test::check_refused("evaluate " + cube + " --approximate spline --samples 4", dir / "g.vtp", "the one approximation is bezier");
+  test::check_refused("evaluate " + cube + " --approximate spline --samples 4", dir / "g.vtp", "the approximations are bezier");
   test::check_refused(base + " --bezier-net " + (dir / "net.vtp").string(), dir / "h.vtp", ".vtu");
   CHECK_FALSE(fs::exists(dir / "net.vtp"));
 }

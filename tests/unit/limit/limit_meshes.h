@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <utility>
 #include <span>
 
 #include <doctest/doctest.h>
@@ -78,6 +80,50 @@ inline double central_difference_error(const LimitSurface& s, Index face, double
     worst = std::max(worst, std::fabs((e.position[r] - g.position[r]) / (2 * h) - p.dv[r]));
   }
   return worst;
+}
+
+// Every face with n sides split into n quads at its centroid and edge midpoints (a bilinear
+// step): the centroids get valence n, so triangles, pentagons and hexagons make quad meshes
+// with extraordinary vertices of valence 3, 5 and 6.
+inline test::Mesh quad_split(const test::Mesh& m) {
+  test::Mesh q;
+  q.positions = m.positions;
+  q.vertex_count = m.vertex_count;
+  std::map<std::pair<Index, Index>, Index> mid;
+  auto edge = [&](Index a, Index b) {
+    const auto key = std::minmax(a, b);
+    auto [it, added] = mid.emplace(std::pair{key.first, key.second}, q.vertex_count);
+    if (added)
+      q.add_vertex((m.positions[3 * size_t(a)] + m.positions[3 * size_t(b)]) / 2,
+                   (m.positions[3 * size_t(a) + 1] + m.positions[3 * size_t(b) + 1]) / 2,
+                   (m.positions[3 * size_t(a) + 2] + m.positions[3 * size_t(b) + 2]) / 2);
+    return it->second;
+  };
+  for (size_t f = 0; f + 1 < m.offsets.size(); ++f) {
+    const Index first = m.offsets[f], n = m.offsets[f + 1] - first;
+    double c[3] = {0, 0, 0};
+    for (Index k = 0; k < n; ++k)
+      for (int x = 0; x < 3; ++x) c[x] += m.positions[3 * size_t(m.corners[size_t(first + k)]) + size_t(x)] / n;
+    const Index centre = q.vertex_count;
+    q.add_vertex(c[0], c[1], c[2]);
+    for (Index k = 0; k < n; ++k) {
+      const Index v = m.corners[size_t(first + k)], next = m.corners[size_t(first + (k + 1) % n)],
+                  prev = m.corners[size_t(first + (k + n - 1) % n)];
+      const Index a = edge(v, next), b = edge(prev, v);
+      q.add_face({v, a, centre, b});
+    }
+  }
+  return q;
+}
+
+inline double angle(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  const std::array<double, 3> c{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  const double s = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  return std::atan2(s, a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+}
+
+inline std::array<double, 3> normal(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
 }  // namespace subdiv::limit_test
