@@ -10,8 +10,10 @@
 //
 // Per corner p_0 of valence n_0 (c_0 = cos(2 pi / n_0)), on its edge to p_1 (c_1 likewise):
 // - corner point: p_0's limit position (given by the caller: the scheme's exact limit);
-// - edge point: e_0 = p_0 + t / 3, t the limit tangent along the edge (the tangent masks the
-//   Bézier mode uses: bezier_sectors.h, so the corner tangent plane is the limit's);
+// - edge point: e_0 = p_0 + 1 / (n_0 lambda) sum_i cos(2 pi (i - j) / n_0) Ê_i for p_0's j-th
+//   edge, Ê_i Loop & Schaefer's (2008) edge point on its i-th edge, lambda Catmull-Clark's
+//   subdominant eigenvalue; projected onto the plane of the exact limit normal, so that the
+//   corner tangent plane is the limit's;
 // - face point: f_0 = (c_1 p_0 + (3 - 2 c_0 - c_1) e_0 + 2 c_0 e_1 + r_0) / 3, e_1 the edge
 //   point of p_1 on the same edge, r_0 = (a - a') / 3 + (d - d') / 6 with a, d p_0's other
 //   neighbour and the opposite corner in this quad, a', d' those in the quad across the
