@@ -1,12 +1,10 @@
 #include "framework/limit/gregory_approximation.h"
 
 #include <cmath>
-#include <fmt/format.h>
 #include <numbers>
 #include <tuple>
 
 #include "framework/limit/bezier_sectors.h"
-#include "framework/util/error.h"
 
 namespace subdiv {
 namespace {
@@ -36,16 +34,24 @@ Point3 limit_position(std::span<const double> limits, Index v) {
 }
 
 // The edge point of v = corner k of face f on its edge to corner k + 1 (towards_next) or
-// k - 1 (Loop, Schaefer, Ni & Castaño 2009, section 3): with v's edges E_i in walk order
-// (E_0 the edge to k + 1), Ê_i the Bézier edge point of Loop & Schaefer (2008) along E_i
-// (the mean of the interior points either side) and lambda Catmull-Clark's subdominant
-// eigenvalue (c + 5 + sqrt((c + 9)(c + 1))) / 16, c = cos(2 pi / n),
+// k - 1. Inside the surface (Loop, Schaefer, Ni & Castaño 2009, section 3): with v's edges
+// E_i in walk order (E_0 the edge to k + 1), Ê_i the Bézier edge point of Loop & Schaefer
+// (2008) along E_i (the mean of the interior points either side) and lambda Catmull-Clark's
+// subdominant eigenvalue (c + 5 + sqrt((c + 9)(c + 1))) / 16, c = cos(2 pi / n),
 //   e_j = p + 1 / (n lambda) sum_i cos(2 pi (i - j) / n) Ê_i,
 // a tangent from the ring's first Fourier mode, which at valence 4 is the B-spline patch's.
 // Projected onto the plane of v's exact limit normal, so that the corner tangent plane is the
 // limit's (the mode mixes the subdominant eigenvector with a smaller one). The projection is
 // linear, so the tangents keep t_(j-1) + t_(j+1) = 2 c t_j, which the face points rely on.
+// Along a boundary or crease edge v-w: (2 v + w) / 3, the cubic B-spline curve's (both sides
+// of a crease compute it alike). At other edges of a boundary, crease or corner vertex: p plus
+// a third of the Bézier mode's limit tangent (bezier_sectors.h: Biermann, Levin & Zorin 2000),
+// which keeps t_(j-1) + t_(j+1) = 2 cos(pi / k) t_j inside a sector of k faces.
 Point3 edge_point(const QuadMesh& m, std::span<const double> limits, Index f, int k, bool towards_next) {
+  const Index v = m.vertex(f, k);
+  if (m.feature(f, towards_next ? k : k + 3))
+    return (1.0 / 3) * (2.0 * m.point(v) + m.point(m.vertex(f, towards_next ? k + 1 : k + 3)));
+  if (!m.sector(f, k).closed) return limit_position(limits, v) + (1.0 / 3) * m.corner_tangent(f, k, towards_next);
   const int n = m.sector(f, k).faces;
   std::vector<Point3> interior;  // F_i in face g_i of the walk, E_i between g_(i-1) and g_i
   for (auto [g, c] = std::pair{f, k}; int(interior.size()) < n; std::tie(g, c) = m.step_forward(g, c))
@@ -58,7 +64,6 @@ Point3 edge_point(const QuadMesh& m, std::span<const double> limits, Index f, in
     const Point3 edge = 0.5 * (interior[size_t(i)] + interior[size_t((i + n - 1) % n)]);
     t = t + std::cos(2 * pi * (i - j) / n) * edge;
   }
-  const Index v = m.vertex(f, k);
   return limit_position(limits, v) + m.projected(v, (1.0 / (n * lambda)) * t);
 }
 
@@ -69,6 +74,12 @@ Point3 twist(const QuadMesh& m, Index f, int k) {
   const auto [g, l] = m.face_of(m.vertex(f, k + 1), m.vertex(f, k));  // in g: l = w, l + 1 = v
   return (1.0 / 3) * (m.point(m.vertex(f, k + 3)) - m.point(m.vertex(g, l + 2))) +
          (1.0 / 6) * (m.point(m.vertex(f, k + 2)) - m.point(m.vertex(g, l + 3)));
+}
+
+// The face point next to p0 on its edge to p1 (Loop, Schaefer, Ni & Castaño 2009, section 3):
+// e0, e1 the two ends' edge points on the edge, c0, c1 their cosines, r the twist.
+Point3 face_point(double c0, double c1, const Point3& p0, const Point3& e0, const Point3& e1, const Point3& r) {
+  return (1.0 / 3) * (c1 * p0 + (3 - 2 * c0 - c1) * e0 + 2 * c0 * e1 + r);
 }
 
 GregoryPatch face_patch(const QuadMesh& m, Index f, std::span<const double> limits) {
@@ -84,23 +95,23 @@ GregoryPatch face_patch(const QuadMesh& m, Index f, std::span<const double> limi
     const int next = (k + 1) % 4, prev = (k + 3) % 4;
     const double c0 = cosine[size_t(k)];
     const Point3& p0 = p.boundary[local(k, 0, 0)];
+    // Next to a boundary or crease edge the cross derivative need match nothing: Loop &
+    // Schaefer's interior point, the B-spline patch's (with phantom points) where the
+    // corner's sector is regular.
+    if (m.feature(f, k)) p.face[size_t(2 * k)] = interior_point(m, f, k);
     // On the edge to k + 1: e_1 is corner k + 1's edge point back towards k.
-    {
-      const double c1 = cosine[size_t(next)];
-      const Point3& e0 = p.boundary[local(k, 1, 0)];
-      const Point3& e1 = p.boundary[local(next, 0, 1)];
-      p.face[size_t(2 * k)] = (1.0 / 3) * (c1 * p0 + (3 - 2 * c0 - c1) * e0 + 2 * c0 * e1 + twist(m, f, k));
-    }
+    else
+      p.face[size_t(2 * k)] = face_point(c0, cosine[size_t(next)], p0, p.boundary[local(k, 1, 0)],
+                                         p.boundary[local(next, 0, 1)], twist(m, f, k));
+    if (m.feature(f, k + 3)) p.face[size_t(2 * k + 1)] = interior_point(m, f, k);
     // On the edge to k - 1, whose twist is that of corner k in the face across it, reversed
     // (pointing into f): (a - a') / 3 + (d - d') / 6 with a = corner k + 1 here.
-    {
-      const double c1 = cosine[size_t(prev)];
-      const Point3& e0 = p.boundary[local(k, 0, 1)];
-      const Point3& e1 = p.boundary[local(prev, 1, 0)];
+    else {
       const auto [g, l] = m.face_of(m.vertex(f, k), m.vertex(f, k + 3));  // in g: l = v, l + 1 = k - 1's vertex
       const Point3 r = (1.0 / 3) * (m.point(m.vertex(f, k + 1)) - m.point(m.vertex(g, l + 3))) +
                        (1.0 / 6) * (m.point(m.vertex(f, k + 2)) - m.point(m.vertex(g, l + 2)));
-      p.face[size_t(2 * k + 1)] = (1.0 / 3) * (c1 * p0 + (3 - 2 * c0 - c1) * e0 + 2 * c0 * e1 + r);
+      p.face[size_t(2 * k + 1)] =
+          face_point(c0, cosine[size_t(prev)], p0, p.boundary[local(k, 0, 1)], p.boundary[local(prev, 1, 0)], r);
     }
   }
   return p;
@@ -119,15 +130,8 @@ std::array<double, 4> bernstein_derivative(double t) {
 }  // namespace
 
 std::vector<GregoryPatch> gregory_patches(const Level& topology, std::span<const double> positions,
-                                          const VertexLimits& limits) {
-  const QuadMesh mesh(topology, positions, BoundaryInterpolation::EdgesAndCorners, limits.normals);
-  for (Index f = 0; f < topology.face_count(); ++f)
-    for (int k = 0; k < 4; ++k)
-      if (!mesh.sector(f, k).closed)
-        throw Error(fmt::format("face {}: vertex {} is on a boundary or an infinitely sharp crease: the Gregory patches "
-                                "are built here for closed surfaces without creases; use --approximate bezier (which "
-                                "covers boundaries and creases) or the exact limit (without --approximate)",
-                                f, mesh.vertex(f, k)));
+                                          BoundaryInterpolation boundary, const VertexLimits& limits) {
+  const QuadMesh mesh(topology, positions, boundary, limits.normals);
   std::vector<GregoryPatch> patches;
   patches.reserve(size_t(topology.face_count()));
   for (Index f = 0; f < topology.face_count(); ++f) patches.push_back(face_patch(mesh, f, limits.positions));

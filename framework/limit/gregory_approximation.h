@@ -1,6 +1,6 @@
 #pragma once
-// Bicubic Gregory patches that approximate the limit surface, one per quad of a closed
-// control mesh: Loop, Schaefer, Ni & Castaño (2009), "Approximating subdivision surfaces
+// Bicubic Gregory patches that approximate the limit surface, one per quad of the control
+// mesh: Loop, Schaefer, Ni & Castaño (2009), "Approximating subdivision surfaces
 // with Gregory patches for hardware tessellation", ACM TOG 28(5). A Gregory patch is a
 // bicubic Bézier patch whose four interior control points are each a rational blend of two
 // "face points", one per edge at that corner, so that the cross-boundary derivative along
@@ -23,10 +23,17 @@
 //   point weighted by the distance to the other edge (likewise at the other corners).
 // Where every corner has valence 4 this is the bicubic B-spline patch exactly.
 //
-// Covers what the Bézier mode covers inside the surface: a scheme whose regular quad patch
-// is the bicubic B-spline (bezier_approximation_unsupported), a closed manifold quad mesh
-// without creases or sharp vertices. Boundaries and creases are refused naming the face and
-// vertex.
+// Boundaries and infinitely sharp creases as in the Bézier mode: along a boundary or crease
+// edge the cubic B-spline curve's points ((2 v + w) / 3), next to it Loop & Schaefer's
+// interior point (no other side to match), and at the other edges of a boundary, crease or
+// corner vertex the Bézier mode's limit tangents (Biermann, Levin & Zorin 2000; their
+// cosine c = cos(pi / k) for k faces on the side in the face points). So faces whose corners
+// are all regular — valence 4 inside, two faces on each side of a boundary or crease, one
+// face at a corner — get the exact limit there too, and the patches meet with G1 across
+// every edge that is not a crease.
+//
+// Only for a scheme whose regular quad patch is the bicubic B-spline
+// (bezier_approximation_unsupported; with boundaries or creases bezier_features_unsupported).
 #include <array>
 #include <span>
 #include <vector>
@@ -46,13 +53,14 @@ struct GregoryPatch {
   std::array<Point3, 8> face;
 };
 
-// The patches of every face of a closed quad mesh (one per face, in order), corners at
+// The patches of every face of a quad mesh (one per face, in order), corners at
 // `limits.positions`, corner tangents projected onto the planes of `limits.normals` as
-// bezier_patches does. Throws subdiv::Error naming the first face (and vertex) the
-// construction does not cover: a face that is not a quad, a non-manifold edge, a boundary or
-// crease edge, a sharp vertex.
+// bezier_patches does. Throws subdiv::Error naming the first face or edge the masks do not
+// cover, as bezier_patches does (a face that is not a quad, a non-manifold edge, a
+// semi-sharp edge or corner, a dart, a boundary or crease with one face on a side, a corner
+// with more than one face between feature edges, a boundary when `boundary` is None).
 std::vector<GregoryPatch> gregory_patches(const Level& topology, std::span<const double> positions,
-                                          const VertexLimits& limits);
+                                          BoundaryInterpolation boundary, const VertexLimits& limits);
 
 // Position and first derivatives of the Gregory patch (rational inside, so the derivatives
 // include the blends' own); du and dv and geometry_du and geometry_dv are the same.

@@ -98,6 +98,16 @@ void check_approximable(const PreparedEvaluation& prepared, const char* option) 
     throw Error(fmt::format("{}: the mesh has holes; the patches cover every face (drop the hole tags)", option));
 }
 
+// With boundaries or creases: whether the scheme refines them as the masks assume.
+void check_features(const PreparedEvaluation& prepared, const char* option) {
+  if (has_boundary_or_crease(prepared.surface->base()))
+    if (const std::string why = bezier_features_unsupported(prepared.scheme, prepared.surface->options().features);
+        !why.empty())
+      throw Error(fmt::format("{}: the mesh has boundaries or creases, and scheme {} does not refine them as the "
+                              "patches' masks assume: {}",
+                              option, prepared.scheme_label, why));
+}
+
 // Points of the approximation sampled by `sample(face, u, v)` at the given parameters.
 template <typename Sample>
 ApproximatedPoints sample_points(const PreparedEvaluation& prepared, const Sample& sample, std::span<const Index> faces,
@@ -145,11 +155,7 @@ std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepare
   check_approximable(prepared, "--approximate bezier");
   const Level& base = prepared.surface->base();
   const FeatureOptions& features = prepared.surface->options().features;
-  if (has_boundary_or_crease(base))
-    if (const std::string why = bezier_features_unsupported(prepared.scheme, features); !why.empty())
-      throw Error(fmt::format("--approximate bezier: the mesh has boundaries or creases, and scheme {} does not "
-                              "refine them as the patches' masks assume: {}",
-                              prepared.scheme_label, why));
+  check_features(prepared, "--approximate bezier");
   try {
     return bezier_patches(base, prepared.mesh.positions, features.boundary, vertex_limits(prepared));
   } catch (const Error& e) {
@@ -159,8 +165,11 @@ std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepare
 
 std::vector<GregoryPatch> gregory_approximation_patches(const PreparedEvaluation& prepared) {
   check_approximable(prepared, "--approximate gregory");
+  const Level& base = prepared.surface->base();
+  const FeatureOptions& features = prepared.surface->options().features;
+  check_features(prepared, "--approximate gregory");
   try {
-    return gregory_patches(prepared.surface->base(), prepared.mesh.positions, vertex_limits(prepared));
+    return gregory_patches(base, prepared.mesh.positions, features.boundary, vertex_limits(prepared));
   } catch (const Error& e) {
     throw Error(fmt::format("--approximate gregory: {}", e.what()));
   }

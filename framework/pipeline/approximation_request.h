@@ -19,8 +19,8 @@ namespace subdiv {
 std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared);
 
 // Loop, Schaefer, Ni & Castaño's Gregory patches of a prepared surface
-// (`--approximate gregory`). Throws subdiv::Error as approximation_patches does, and for
-// boundaries and creases (gregory_patches: naming the face and vertex).
+// (`--approximate gregory`). Throws subdiv::Error as approximation_patches does (the same
+// scheme, mesh and feature checks; gregory_patches naming the face or edge).
 std::vector<GregoryPatch> gregory_approximation_patches(const PreparedEvaluation& prepared);
 
 // Distances from the approximation to the exact limit.

@@ -229,11 +229,12 @@ class LimitSurface:
         """Loop, Schaefer, Ni & Castaño's (2009) bicubic Gregory patches tessellated, as
         ``subdiv evaluate --approximate gregory --samples N`` writes them (docs/limit.md).
 
-        One patch per quad of a closed manifold quad mesh, for a scheme whose limit over
-        regular quads is the bicubic B-spline (else subdivkit.Error says why); boundaries,
-        creases and sharp vertices are refused, naming the place. Exact where every corner
-        has valence 4; elsewhere the patches meet with one normal across every edge (G1) and
-        their corners are the limit's positions and tangent planes. point_data: "Normals"
+        One patch per quad of a manifold quad mesh, for a scheme whose limit over regular
+        quads is the bicubic B-spline (else subdivkit.Error says why); boundaries and
+        infinitely sharp creases as approximate_bezier covers them (semi-sharp ones, darts and
+        a crease with one face on a side are refused, naming the place). Exact where every
+        corner is regular; elsewhere the patches meet with one normal across every edge that
+        is not a crease (G1) and their corners are the limit's positions and tangent planes. point_data: "Normals"
         (the patches' own), "base_face", "uv", "limit_distance" (to the exact limit at the
         same (face, u, v)); cell_data: "base_face", "limit_distance" (the largest over the
         base face's samples).

@@ -327,9 +327,9 @@ void add_evaluate_command(CLI::App& app) {
                   "tangent patches; "
                   "adds limit_distance (to the exact limit; --samples: per point and per face, the face's largest) "
                   "and prints the largest and mean distance; "
-                  "gregory: Loop, Schaefer, Ni & Castano's (2009) bicubic Gregory patches, one per quad of a closed "
-                  "quad mesh without creases (exact where every valence is 4; normals continuous across every "
-                  "edge), normals their own, the same arrays and distances");
+                  "gregory: Loop, Schaefer, Ni & Castano's (2009) bicubic Gregory patches, one per quad of the "
+                  "same meshes (exact where every valence is 4; normals continuous across every edge but creases), "
+                  "normals their own, the same arrays and distances");
   cmd->add_option("--bezier-net", args->bezier_net,
                   "With --approximate bezier: also write the patches' control nets as VTK Bezier quadrilaterals (.vtu)");
   cmd->add_option("--derivatives", args->derivatives,
