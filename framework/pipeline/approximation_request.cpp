@@ -74,11 +74,9 @@ bool has_boundary_or_crease(const Level& level) {
   return !level.vertex_sharpness.empty();
 }
 
-}  // namespace
-
-namespace {
-
-// What neither approximation covers, refused with `option` (--approximate bezier or gregory).
+// What neither approximation covers, refused with `option` (--approximate bezier or gregory):
+// the scheme, a sequence, rational weights, holes, and with boundaries or creases a scheme
+// that does not refine them as the masks assume.
 void check_approximable(const PreparedEvaluation& prepared, const char* option) {
   const std::string why = bezier_approximation_unsupported(prepared.scheme);
   if (!why.empty())
@@ -96,10 +94,6 @@ void check_approximable(const PreparedEvaluation& prepared, const char* option) 
                             option));
   if (!prepared.mesh.holes.empty())
     throw Error(fmt::format("{}: the mesh has holes; the patches cover every face (drop the hole tags)", option));
-}
-
-// With boundaries or creases: whether the scheme refines them as the masks assume.
-void check_features(const PreparedEvaluation& prepared, const char* option) {
   if (has_boundary_or_crease(prepared.surface->base()))
     if (const std::string why = bezier_features_unsupported(prepared.scheme, prepared.surface->options().features);
         !why.empty())
@@ -155,7 +149,6 @@ std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepare
   check_approximable(prepared, "--approximate bezier");
   const Level& base = prepared.surface->base();
   const FeatureOptions& features = prepared.surface->options().features;
-  check_features(prepared, "--approximate bezier");
   try {
     return bezier_patches(base, prepared.mesh.positions, features.boundary, vertex_limits(prepared));
   } catch (const Error& e) {
@@ -167,7 +160,6 @@ std::vector<GregoryPatch> gregory_approximation_patches(const PreparedEvaluation
   check_approximable(prepared, "--approximate gregory");
   const Level& base = prepared.surface->base();
   const FeatureOptions& features = prepared.surface->options().features;
-  check_features(prepared, "--approximate gregory");
   try {
     return gregory_patches(base, prepared.mesh.positions, features.boundary, vertex_limits(prepared));
   } catch (const Error& e) {
