@@ -31,6 +31,7 @@ set(SUBDIV_PUBLIC_HEADERS
   # The limit surface at any (face, u, v): evaluation, limit stencils, tessellation.
   limit/limit_surface.h limit/tessellation.h limit/face_domain.h limit/adaptive_refine.h
   limit/bezier_approximation.h
+  limit/gregory_approximation.h
   # Texture coordinates for disc-like meshes: Tutte's embedding.
   parameterize/tutte.h parameterize/parameterize_mesh.h
   # The plugin ABI and what plugins build on (new splitters, C++ rules, mesh lines).

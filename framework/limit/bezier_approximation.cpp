@@ -15,23 +15,11 @@ namespace {
 
 using bezier::QuadMesh;
 using bezier::Sector;
+using bezier::interior_point;
+using bezier::tangent_cosine;
 using bezier::operator+;
 using bezier::operator-;
 using bezier::operator*;
-
-// The valence the interior-point mask takes at a corner: the vertex's own inside the
-// surface; twice the faces of its sector on a boundary or crease (the sector mirrored across
-// its feature edges: 4 at a regular boundary); 4 at a corner of one face (the B-spline
-// patch with phantom points 2 v - w, whose interior point is (4 v + 2 e_a + 2 e_b + d) / 9).
-double mask_valence(const Sector& s) { return s.closed ? s.faces : s.corner ? 4 : 2 * s.faces; }
-
-// Interior point next to corner k of face f: (n v + 2 e_a + 2 e_b + d) / (n + 5).
-Point3 interior_point(const QuadMesh& m, Index f, int k) {
-  const double n = mask_valence(m.sector(f, k));
-  const Point3 s = n * m.point(m.vertex(f, k)) + 2.0 * m.point(m.vertex(f, k + 1)) +
-                   2.0 * m.point(m.vertex(f, k + 3)) + m.point(m.vertex(f, k + 2));
-  return (1.0 / (n + 5)) * s;
-}
 
 // Edge point next to v on the edge v-w. Along a boundary or infinitely sharp edge the limit
 // curve is the cubic B-spline of the feature polygon (its ends kept at corners), whose
@@ -43,14 +31,6 @@ Point3 edge_point(const QuadMesh& m, Index v, Index w, bool feature) {
   const auto [f, k] = m.face_of(v, w);
   const auto [g, l] = m.face_of(w, v);
   return 0.5 * (interior_point(m, f, k) + interior_point(m, g, (l + 1) % 4));
-}
-
-// cos(2 pi / n) at an interior vertex of valence n, cos(pi / k) on a boundary or crease with
-// k faces on the side: the factor in t_(i-1) + t_(i+1) = 2 c t_i between the tangents along
-// consecutive edges of the sector (0 where the sector is regular).
-double tangent_cosine(const Sector& s) {
-  if (s.closed) return s.faces == 4 ? 0.0 : std::cos(2 * std::numbers::pi / s.faces);
-  return s.faces == 2 || s.corner ? 0.0 : std::cos(std::numbers::pi / s.faces);
 }
 
 // The two cross-boundary tangent points next to an edge from A to B, pointing into the

@@ -13,7 +13,25 @@ namespace {
 
 bool semi_sharp(float s) { return s > 0.f && s < kInfinitelySharp; }
 
+// The valence the interior-point mask takes at a corner: the vertex's own inside the
+// surface; twice the faces of its sector on a boundary or crease (the sector mirrored across
+// its feature edges: 4 at a regular boundary); 4 at a corner of one face (the B-spline
+// patch with phantom points 2 v - w, whose interior point is (4 v + 2 e_a + 2 e_b + d) / 9).
+double mask_valence(const Sector& s) { return s.closed ? s.faces : s.corner ? 4 : 2 * s.faces; }
+
 }  // namespace
+
+double tangent_cosine(const Sector& s) {
+  if (s.closed) return s.faces == 4 ? 0.0 : std::cos(2 * std::numbers::pi / s.faces);
+  return s.faces == 2 || s.corner ? 0.0 : std::cos(std::numbers::pi / s.faces);
+}
+
+Point3 interior_point(const QuadMesh& m, Index f, int k) {
+  const double n = mask_valence(m.sector(f, k));
+  const Point3 s = n * m.point(m.vertex(f, k)) + 2.0 * m.point(m.vertex(f, k + 1)) +
+                   2.0 * m.point(m.vertex(f, k + 3)) + m.point(m.vertex(f, k + 2));
+  return (1.0 / (n + 5)) * s;
+}
 
 QuadMesh::QuadMesh(const Level& level, std::span<const double> positions, BoundaryInterpolation boundary,
                    std::span<const double> normals)

@@ -33,6 +33,20 @@ struct Sector {
   bool corner = false;  // the vertex is kept as a corner (its limit is itself)
 };
 
+// cos(2 pi / n) at an interior vertex of valence n, cos(pi / k) on a boundary or crease with
+// k faces on the side: the factor in t_(i-1) + t_(i+1) = 2 c t_i between the tangents along
+// consecutive edges of the sector (0 where the sector is regular), which the tangent patches
+// (Loop & Schaefer 2008) and the Gregory patches' face points (Loop, Schaefer, Ni & Castaño
+// 2009) rely on.
+double tangent_cosine(const Sector& s);
+
+class QuadMesh;
+
+// Loop & Schaefer's (2008) interior point next to corner k of face f:
+// (n v + 2 e_a + 2 e_b + d) / (n + 5), e_a and e_b v's neighbours in the quad, d the opposite
+// corner, n v's valence inside the surface (mask_valence elsewhere).
+Point3 interior_point(const QuadMesh& m, Index f, int k);
+
 class QuadMesh {
 public:
   // Throws subdiv::Error naming the face for a face that is not a quad, a non-manifold or
@@ -62,17 +76,20 @@ public:
   // onto the vertex's tangent plane where it has one (interior and boundary vertices).
   Point3 corner_tangent(Index f, int k, bool towards_next) const;
 
+  // The face across the edge from corner k of f to corner k - 1 (one step in walk order), and
+  // the corner of the same vertex in it.
+  std::pair<Index, int> step_forward(Index f, int k) const { return face_of(vertex(f, k), vertex(f, k + 3)); }
+  // t minus its component along v's limit normal (t unchanged where there is none).
+  Point3 projected(Index v, const Point3& t) const;
+
 private:
   static std::uint64_t key(Index a, Index b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
   bool has_edge(Index a, Index b) const { return edge_.contains(key(a, b)); }
   void find_sectors();  // fills sectors_, refusing what the masks do not cover
   Sector find_sector(Index f, int k) const;
-  // The face across the edge from corner k of f to corner k - 1 (one step in walk order), and
-  // the corner of the same vertex in it; across the edge to corner k + 1 (one step back).
-  std::pair<Index, int> step_forward(Index f, int k) const { return face_of(vertex(f, k), vertex(f, k + 3)); }
+  // Across the edge to corner k + 1 (one step back in walk order).
   std::pair<Index, int> step_back(Index f, int k) const;
   Point3 mask_tangent(Index f, int k, bool towards_next, const Sector& s) const;
-  Point3 projected(Index v, const Point3& t) const;
 
   const Level& level_;
   std::span<const double> positions_;

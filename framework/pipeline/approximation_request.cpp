@@ -74,42 +74,43 @@ bool has_boundary_or_crease(const Level& level) {
   return !level.vertex_sharpness.empty();
 }
 
-}  // namespace
-
-std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared) {
+// What neither approximation covers, refused with `option` (--approximate bezier or gregory):
+// the scheme, a sequence, rational weights, holes, and with boundaries or creases a scheme
+// that does not refine them as the masks assume.
+void check_approximable(const PreparedEvaluation& prepared, const char* option) {
   const std::string why = bezier_approximation_unsupported(prepared.scheme);
   if (!why.empty())
-    throw Error(fmt::format("--approximate bezier: scheme {} cannot be approximated by Loop & Schaefer's bicubic "
-                            "patches: {}",
-                            prepared.scheme_label, why));
+    throw Error(fmt::format("{}: scheme {} cannot be approximated by bicubic patches reproducing its regular "
+                            "B-spline patch: {}",
+                            option, prepared.scheme_label, why));
   if (prepared.sequence_head)
-    throw Error("--approximate bezier: a sequence's limit is its tail's over the mesh its head makes, while the "
-                "patches' masks read the base mesh; refine the head first (subdiv refine) and approximate that mesh");
+    throw Error(fmt::format("{}: a sequence's limit is its tail's over the mesh its head makes, while the patches' "
+                            "masks read the base mesh; refine the head first (subdiv refine) and approximate that "
+                            "mesh",
+                            option));
   if (!prepared.weights.empty())
-    throw Error("--approximate bezier: the mesh has rational weights; the patches are polynomial (drop the weights)");
+    throw Error(fmt::format("{}: the mesh has rational weights; the patches are built from the polynomial "
+                            "limit's masks (drop the weights)",
+                            option));
   if (!prepared.mesh.holes.empty())
-    throw Error("--approximate bezier: the mesh has holes; the patches cover every face (drop the hole tags)");
-  const Level& base = prepared.surface->base();
-  const FeatureOptions& features = prepared.surface->options().features;
-  if (has_boundary_or_crease(base))
-    if (const std::string why = bezier_features_unsupported(prepared.scheme, features); !why.empty())
-      throw Error(fmt::format("--approximate bezier: the mesh has boundaries or creases, and scheme {} does not "
-                              "refine them as the patches' masks assume: {}",
-                              prepared.scheme_label, why));
-  try {
-    return bezier_patches(base, prepared.mesh.positions, features.boundary, vertex_limits(prepared));
-  } catch (const Error& e) {
-    throw Error(fmt::format("--approximate bezier: {}", e.what()));
-  }
+    throw Error(fmt::format("{}: the mesh has holes; the patches cover every face (drop the hole tags)", option));
+  if (has_boundary_or_crease(prepared.surface->base()))
+    if (const std::string why = bezier_features_unsupported(prepared.scheme, prepared.surface->options().features);
+        !why.empty())
+      throw Error(fmt::format("{}: the mesh has boundaries or creases, and scheme {} does not refine them as the "
+                              "patches' masks assume: {}",
+                              option, prepared.scheme_label, why));
 }
 
-ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
-                                      std::span<const Index> faces, std::span<const double> uv) {
+// Points of the approximation sampled by `sample(face, u, v)` at the given parameters.
+template <typename Sample>
+ApproximatedPoints sample_points(const PreparedEvaluation& prepared, const Sample& sample, std::span<const Index> faces,
+                                 std::span<const double> uv) {
   ApproximatedPoints out;
   out.positions.resize(3 * faces.size());
   out.normals.resize(3 * faces.size());
   for (size_t i = 0; i < faces.size(); ++i) {
-    const PatchSample s = evaluate_patch(patches[size_t(faces[i])], uv[2 * i], uv[2 * i + 1]);
+    const PatchSample s = sample(faces[i], uv[2 * i], uv[2 * i + 1]);
     const std::array<double, 3> n = unit_normal(s.du, s.dv);
     for (size_t c = 0; c < 3; ++c) {
       out.positions[3 * i + c] = s.position[c];
@@ -120,10 +121,11 @@ ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const 
   return out;
 }
 
-MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
-                                 int segments, ApproximationDistances& distances) {
-  const auto patch_sample = [&patches](Index face, double u, double v, LimitSample& out) {
-    out = as_sample(evaluate_patch(patches[size_t(face)], u, v));
+template <typename Sample>
+MeshData sampled_mesh(const PreparedEvaluation& prepared, const Sample& sample, int segments,
+                      ApproximationDistances& distances) {
+  const auto patch_sample = [&sample](Index face, double u, double v, LimitSample& out) {
+    out = as_sample(sample(face, u, v));
   };
   Tessellation t = tessellate(*prepared.surface, segments, patch_sample);
   distances = measure(prepared, t.uv_face, t.uv, t.positions);
@@ -141,9 +143,58 @@ MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::
   return m;
 }
 
-std::string approximation_summary(const ApproximationDistances& d) {
-  return fmt::format("bicubic patches (Loop & Schaefer 2008) against the exact limit: largest distance {:.3e} (face "
-                     "{}), mean {:.3e} over {} samples",
+}  // namespace
+
+std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared) {
+  check_approximable(prepared, "--approximate bezier");
+  const Level& base = prepared.surface->base();
+  const FeatureOptions& features = prepared.surface->options().features;
+  try {
+    return bezier_patches(base, prepared.mesh.positions, features.boundary, vertex_limits(prepared));
+  } catch (const Error& e) {
+    throw Error(fmt::format("--approximate bezier: {}", e.what()));
+  }
+}
+
+std::vector<GregoryPatch> gregory_approximation_patches(const PreparedEvaluation& prepared) {
+  check_approximable(prepared, "--approximate gregory");
+  const Level& base = prepared.surface->base();
+  const FeatureOptions& features = prepared.surface->options().features;
+  try {
+    return gregory_patches(base, prepared.mesh.positions, features.boundary, vertex_limits(prepared));
+  } catch (const Error& e) {
+    throw Error(fmt::format("--approximate gregory: {}", e.what()));
+  }
+}
+
+ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
+                                      std::span<const Index> faces, std::span<const double> uv) {
+  const auto sample = [&patches](Index f, double u, double v) { return evaluate_patch(patches[size_t(f)], u, v); };
+  return sample_points(prepared, sample, faces, uv);
+}
+
+ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const std::vector<GregoryPatch>& patches,
+                                      std::span<const Index> faces, std::span<const double> uv) {
+  const auto sample = [&patches](Index f, double u, double v) { return evaluate_gregory(patches[size_t(f)], u, v); };
+  return sample_points(prepared, sample, faces, uv);
+}
+
+MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
+                                 int segments, ApproximationDistances& distances) {
+  const auto sample = [&patches](Index f, double u, double v) { return evaluate_patch(patches[size_t(f)], u, v); };
+  return sampled_mesh(prepared, sample, segments, distances);
+}
+
+MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::vector<GregoryPatch>& patches,
+                                 int segments, ApproximationDistances& distances) {
+  const auto sample = [&patches](Index f, double u, double v) { return evaluate_gregory(patches[size_t(f)], u, v); };
+  return sampled_mesh(prepared, sample, segments, distances);
+}
+
+std::string approximation_summary(const ApproximationDistances& d, ApproximationKind kind) {
+  return fmt::format("{} against the exact limit: largest distance {:.3e} (face {}), mean {:.3e} over {} samples",
+                     kind == ApproximationKind::Gregory ? "Gregory patches (Loop, Schaefer, Ni & Castaño 2009)"
+                                                        : "bicubic patches (Loop & Schaefer 2008)",
                      d.largest, d.largest_face, d.mean, d.samples);
 }
 

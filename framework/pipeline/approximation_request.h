@@ -7,6 +7,7 @@
 
 #include "framework/io/mesh_data.h"
 #include "framework/limit/bezier_approximation.h"
+#include "framework/limit/gregory_approximation.h"
 #include "framework/pipeline/evaluate_request.h"
 
 namespace subdiv {
@@ -16,6 +17,11 @@ namespace subdiv {
 // bezier_features_unsupported), a sequence, rational weights, holes, or a face or edge the
 // masks do not cover (bezier_patches: naming it).
 std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared);
+
+// Loop, Schaefer, Ni & Castaño's Gregory patches of a prepared surface
+// (`--approximate gregory`). Throws subdiv::Error as approximation_patches does (the same
+// scheme, mesh and feature checks; gregory_patches naming the face or edge).
+std::vector<GregoryPatch> gregory_approximation_patches(const PreparedEvaluation& prepared);
 
 // Distances from the approximation to the exact limit.
 struct ApproximationDistances {
@@ -33,6 +39,9 @@ struct ApproximatedPoints {
 };
 ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
                                       std::span<const Index> faces, std::span<const double> uv);
+// Likewise with the Gregory patches' own unit normals.
+ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const std::vector<GregoryPatch>& patches,
+                                      std::span<const Index> faces, std::span<const double> uv);
 
 // The approximation tessellated N x N per face as limit_mesh.h tessellates the exact limit
 // (crack-free: the patches meet with C0, points on shared edges are evaluated once), with
@@ -41,9 +50,15 @@ ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const 
 // over the base face's samples).
 MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
                                  int segments, ApproximationDistances& distances);
+// Likewise with the Gregory patches (Normals: their own unit normal; crack-free, as they
+// share their boundary curves).
+MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::vector<GregoryPatch>& patches,
+                                 int segments, ApproximationDistances& distances);
 
-// "largest distance to the exact limit X (face F), mean Y over N samples".
-std::string approximation_summary(const ApproximationDistances& d);
+enum class ApproximationKind { Bezier, Gregory };
+
+// "... against the exact limit: largest distance X (face F), mean Y over N samples".
+std::string approximation_summary(const ApproximationDistances& d, ApproximationKind kind = ApproximationKind::Bezier);
 
 // The geometry patches as a VTK XML unstructured grid (.vtu, ASCII) of Bézier quadrilaterals
 // (VTK_BEZIER_QUADRILATERAL, degree 3 x 3 in the cell array HigherOrderDegrees; VTK's

@@ -155,16 +155,17 @@ py::dict tessellate(const LimitSurfaceHandle& h, int samples, int threads) {
   return d;
 }
 
-// Loop & Schaefer's bicubic patches tessellated as `subdiv evaluate --approximate bezier
-// --samples N` writes them (pipeline/approximation_request.h), with their distances to the
-// exact limit.
-py::dict approximate_bezier(const LimitSurfaceHandle& h, int samples, int threads) {
+// Patches tessellated as `subdiv evaluate --approximate bezier|gregory --samples N` writes
+// them (pipeline/approximation_request.h), with their distances to the exact limit;
+// `patches` builds them from the prepared surface.
+template <typename BuildPatches>
+py::dict approximated_mesh(const LimitSurfaceHandle& h, int samples, int threads, const BuildPatches& patches) {
   subdiv::MeshData m;
   subdiv::ApproximationDistances d;
   {
     py::gil_scoped_release unlocked;
     const subdiv::ThreadLimit limit(threads);
-    m = subdiv::approximated_limit_mesh(*h.prepared, subdiv::approximation_patches(*h.prepared), samples, d);
+    m = subdiv::approximated_limit_mesh(*h.prepared, patches(*h.prepared), samples, d);
   }
   std::vector<subdiv::DataArray> point_data = std::move(m.point_data), cell_data = std::move(m.cell_data);
   m.point_data.clear(), m.cell_data.clear();
@@ -178,6 +179,16 @@ py::dict approximate_bezier(const LimitSurfaceHandle& h, int samples, int thread
   out["mean"] = d.mean;
   out["largest_face"] = d.largest_face;
   return out;
+}
+
+// Loop & Schaefer's (2008) bicubic patches.
+py::dict approximate_bezier(const LimitSurfaceHandle& h, int samples, int threads) {
+  return approximated_mesh(h, samples, threads, subdiv::approximation_patches);
+}
+
+// Loop, Schaefer, Ni & Castaño's (2009) Gregory patches.
+py::dict approximate_gregory(const LimitSurfaceHandle& h, int samples, int threads) {
+  return approximated_mesh(h, samples, threads, subdiv::gregory_approximation_patches);
 }
 
 void bind_limit_surface(py::module_& m) {
@@ -199,6 +210,7 @@ void bind_limit_surface(py::module_& m) {
       .def("stencils", &stencils, py::arg("faces"), py::arg("uv"), py::arg("derivatives"), py::arg("threads"))
       .def("tessellate", &tessellate, py::arg("samples"), py::arg("threads"))
       .def("approximate_bezier", &approximate_bezier, py::arg("samples"), py::arg("threads"))
+      .def("approximate_gregory", &approximate_gregory, py::arg("samples"), py::arg("threads"))
       .def_property_readonly("scheme_label", [](const LimitSurfaceHandle& h) { return h.prepared->scheme_label; })
       .def_property_readonly("triangles", [](const LimitSurfaceHandle& h) { return h.prepared->surface->triangles(); })
       .def_property_readonly("vertex_count",

@@ -225,6 +225,25 @@ class LimitSurface:
                                  cell_data=_data_shapes_like(r["cell_data"], {}), face_varying=r["face_varying"],
                                  point_roles=r["point_roles"], cell_roles=r["cell_roles"])
 
+    def approximate_gregory(self, samples=4, *, threads=0):
+        """Loop, Schaefer, Ni & Castaño's (2009) bicubic Gregory patches tessellated, as
+        ``subdiv evaluate --approximate gregory --samples N`` writes them (docs/limit.md).
+
+        One patch per quad of a manifold quad mesh, for a scheme whose limit over regular
+        quads is the bicubic B-spline (else subdivkit.Error says why); boundaries and
+        infinitely sharp creases as approximate_bezier covers them (semi-sharp ones, darts and
+        a crease with one face on a side are refused, naming the place). Exact where every
+        corner is regular; elsewhere the patches meet with one normal across every edge that
+        is not a crease (G1) and their corners are the limit's positions and tangent planes. point_data: "Normals"
+        (the patches' own), "base_face", "uv", "limit_distance" (to the exact limit at the
+        same (face, u, v)); cell_data: "base_face", "limit_distance" (the largest over the
+        base face's samples).
+        """
+        r = self._prepared.approximate_gregory(check_whole(samples, "samples", "give a whole number of segments per face edge"), check_threads(threads))
+        return Mesh._from_arrays(r, name=self.name, point_data=_data_shapes_like(r["point_data"], {}),
+                                 cell_data=_data_shapes_like(r["cell_data"], {}), face_varying=r["face_varying"],
+                                 point_roles=r["point_roles"], cell_roles=r["cell_roles"])
+
     def stencils(self, faces, uv, derivatives=1, *, threads=0):
         """The same points as weights over the control points: a LimitStencils of
         scipy.sparse CSR matrices (needs SciPy), ``W.points @ P == evaluate(..., points=P).points``

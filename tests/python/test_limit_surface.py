@@ -280,6 +280,23 @@ def test_approximate_bezier_is_the_command_line_mesh_and_exact_where_every_valen
         sk.LimitSurface(cube(), "loop").approximate_bezier(2)
 
 
+def test_approximate_gregory_is_the_command_line_mesh_and_exact_where_every_valence_is_4(tmp_path):
+    """LimitSurface.approximate_gregory(N) is `subdiv evaluate --approximate gregory --samples N`'s
+    mesh; on a regular torus and a tube with regular boundaries the Gregory patches are the
+    exact limit; a triangle scheme is refused with the reason."""
+    a = sk.LimitSurface(cube(), "catmull-clark").approximate_gregory(4)
+    out = tmp_path / "g.obj"
+    run_cli("evaluate", MESHES / "cube.obj", "--approximate", "gregory", "--samples", "4", "-o", out)
+    assert np.allclose(sk.read_mesh(str(out)).points, a.points, rtol=0, atol=1e-12)
+    assert a.cell_data["limit_distance"].min() > 1e-4  # every face of the cube touches a valence-3 corner
+    torus = sk.read_mesh(str(MESHES / "torus-quads.obj"))
+    assert sk.LimitSurface(torus, "catmull-clark").approximate_gregory(3).point_data["limit_distance"].max() < 1e-12
+    tube = sk.read_mesh(str(MESHES / "textured-tube.obj"))  # two faces at every boundary vertex, valence 4 inside
+    assert sk.LimitSurface(tube, "catmull-clark").approximate_gregory(2).point_data["limit_distance"].max() < 1e-12
+    with pytest.raises(sk.Error, match="triangles"):
+        sk.LimitSurface(cube(), "loop").approximate_gregory(2)
+
+
 def test_a_non_manifold_mesh_is_evaluated_flap_by_flap():
     # Three flaps on one hinge edge (vertices 0 and 1): the hinge is infinitely sharp, so
     # every flap's limit along it is the straight hinge, and each flap is smooth.

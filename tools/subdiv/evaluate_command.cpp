@@ -137,10 +137,39 @@ void write_approximation_csv(const std::filesystem::path& out, const SurfacePoin
   });
 }
 
+// --approximate gregory: Loop, Schaefer, Ni & Castaño's patches, written as bezier's are
+// (without control nets: a Gregory patch is not a VTK cell type).
+void run_gregory(const EvaluateArgs& a, Progress& progress) {
+  const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a, progress));
+  progress.done();
+  for (const std::string& w : prepared.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
+  const std::vector<GregoryPatch> patches = gregory_approximation_patches(prepared);
+  if (a.samples > 0) {
+    ApproximationDistances distances;
+    MeshData mesh = approximated_limit_mesh(prepared, patches, a.samples, distances);
+    print_safe("subdiv: {}\n", approximation_summary(distances, ApproximationKind::Gregory));
+    write_with_bar(a.output, mesh, progress);
+  } else {
+    const LimitSurface& surface = *prepared.surface;
+    const SurfacePoints q =
+        read_points_file(a.at, [&surface](Index face, double u, double v) { return surface.check(face, u, v); });
+    const ApproximatedPoints points = approximate_points(prepared, patches, q.faces, q.uv);
+    print_safe("subdiv: {}\n", approximation_summary(points.distances, ApproximationKind::Gregory));
+    write_approximation_csv(a.output, q, points);
+  }
+}
+
 void run_approximation(const EvaluateArgs& a, Progress& progress) {
-  if (a.approximate != "bezier")
-    throw Error(fmt::format("--approximate {}: the one approximation is bezier (Loop & Schaefer's bicubic patches)",
+  if (a.approximate != "bezier" && a.approximate != "gregory")
+    throw Error(fmt::format("--approximate {}: the approximations are bezier (Loop & Schaefer's bicubic patches) "
+                            "and gregory (Loop, Schaefer, Ni & Castaño's Gregory patches)",
                             subdiv::quoted(a.approximate)));
+  if (a.approximate == "gregory") {
+    if (!a.bezier_net.empty())
+      throw Error("--bezier-net goes with --approximate bezier: Gregory patches are rational inside and have no "
+                  "Bézier control net to write");
+    return run_gregory(a, progress);
+  }
   if (!a.bezier_net.empty() && lowercase_extension(a.bezier_net) != ".vtu")
     throw Error(fmt::format("--bezier-net {}: the control nets are written as VTK Bézier quadrilaterals (.vtu)",
                             subdiv::quoted(a.bezier_net)));
@@ -182,14 +211,14 @@ void run(const EvaluateArgs& a) {
                 "--adaptive L (a mesh refined where the surface is irregular) or --level-distance L (level L's "
                 "vertices on the limit, with their distance to it)");
   if (a.level_distance >= 0 && !a.approximate.empty())
-    throw Error("--approximate bezier goes with --samples N or --at POINTS.csv, not --level-distance");
+    throw Error("--approximate goes with --samples N or --at POINTS.csv, not --level-distance");
   if (a.limit && a.adaptive < 0) throw Error("--limit goes with --adaptive L");
   if (a.derivatives_given && (a.at.empty() || !a.approximate.empty()))
     throw Error("--derivatives goes with --at POINTS.csv: only its .csv has derivative columns (with --approximate "
-                "bezier, normals)");
+                "bezier or gregory, normals)");
   if (a.tolerance != 0 && a.adaptive < 0) throw Error("--tolerance goes with --adaptive L");
   if (!a.approximate.empty() && a.adaptive >= 0)
-    throw Error("--approximate bezier goes with --samples N or --at POINTS.csv, not --adaptive");
+    throw Error("--approximate goes with --samples N or --at POINTS.csv, not --adaptive");
   if (a.approximate.empty() && !a.bezier_net.empty()) throw Error("--bezier-net goes with --approximate bezier");
   check_output_not_input(a.mesh, a.output, a.force);
   check_output_not_points(a);
@@ -297,7 +326,10 @@ void add_evaluate_command(CLI::App& app) {
                   "quad mesh with boundaries and sharp creases (exact where every valence is 4), normals from their "
                   "tangent patches; "
                   "adds limit_distance (to the exact limit; --samples: per point and per face, the face's largest) "
-                  "and prints the largest and mean distance");
+                  "and prints the largest and mean distance; "
+                  "gregory: Loop, Schaefer, Ni & Castano's (2009) bicubic Gregory patches, one per quad of the "
+                  "same meshes (exact where every valence is 4; normals continuous across every edge but creases), "
+                  "normals their own, the same arrays and distances");
   cmd->add_option("--bezier-net", args->bezier_net,
                   "With --approximate bezier: also write the patches' control nets as VTK Bezier quadrilaterals (.vtu)");
   cmd->add_option("--derivatives", args->derivatives,

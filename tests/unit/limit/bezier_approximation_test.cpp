@@ -36,55 +36,16 @@ PreparedEvaluation prepared(const test::Mesh& m, const std::string& scheme = "ca
   return prepare_evaluation(std::move(r));
 }
 
-// Every face with n sides split into n quads at its centroid and edge midpoints (a bilinear
-// step): the centroids get valence n, so triangles, pentagons and hexagons make quad meshes
-// with extraordinary vertices of valence 3, 5 and 6.
-test::Mesh quad_split(const test::Mesh& m) {
-  test::Mesh q;
-  q.positions = m.positions;
-  q.vertex_count = m.vertex_count;
-  std::map<std::pair<Index, Index>, Index> mid;
-  auto edge = [&](Index a, Index b) {
-    const auto key = std::minmax(a, b);
-    auto [it, added] = mid.emplace(std::pair{key.first, key.second}, q.vertex_count);
-    if (added)
-      q.add_vertex((m.positions[3 * size_t(a)] + m.positions[3 * size_t(b)]) / 2,
-                   (m.positions[3 * size_t(a) + 1] + m.positions[3 * size_t(b) + 1]) / 2,
-                   (m.positions[3 * size_t(a) + 2] + m.positions[3 * size_t(b) + 2]) / 2);
-    return it->second;
-  };
-  for (size_t f = 0; f + 1 < m.offsets.size(); ++f) {
-    const Index first = m.offsets[f], n = m.offsets[f + 1] - first;
-    double c[3] = {0, 0, 0};
-    for (Index k = 0; k < n; ++k)
-      for (int x = 0; x < 3; ++x) c[x] += m.positions[3 * size_t(m.corners[size_t(first + k)]) + size_t(x)] / n;
-    const Index centre = q.vertex_count;
-    q.add_vertex(c[0], c[1], c[2]);
-    for (Index k = 0; k < n; ++k) {
-      const Index v = m.corners[size_t(first + k)], next = m.corners[size_t(first + (k + 1) % n)],
-                  prev = m.corners[size_t(first + (k + n - 1) % n)];
-      const Index a = edge(v, next), b = edge(prev, v);
-      q.add_face({v, a, centre, b});
-    }
-  }
-  return q;
-}
+using limit_test::angle;
+using limit_test::bumpy;
+using limit_test::creases_along;
+using limit_test::normal;
+using limit_test::quad_split;
 
 // Closed quad meshes with vertices of valence 3 to 6: the bipyramids' triangles split
 // (apexes of valence n, the triangles' centres 3).
 test::Mesh valences_3_to_5() { return quad_split(test::bipyramid(5)); }
 test::Mesh valences_3_to_6() { return quad_split(test::bipyramid(6)); }
-
-double angle(const Point3& a, const Point3& b) {
-  const Point3 c{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  const double s = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-  return std::atan2(s, a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
-}
-
-Point3 normal(const Point3& a, const Point3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
 
 struct EdgeSides {
   double largest_position = 0, largest_tangent_angle = 0, largest_geometry_angle = 0;
@@ -111,10 +72,7 @@ bool same_boundary(const std::vector<BezierPatch>& patches, std::pair<Index, int
 
 // Along every interior edge, both faces' patches at the same points.
 EdgeSides compare_edges(const Level& level, const std::vector<BezierPatch>& patches) {
-  std::map<std::pair<Index, Index>, std::pair<Index, int>> directed;
-  for (Index f = 0; f < level.face_count(); ++f)
-    for (int k = 0; k < 4; ++k)
-      directed[{level.face_vertices[size_t(4 * f + k)], level.face_vertices[size_t(4 * f + (k + 1) % 4)]}] = {f, k};
+  const auto directed = limit_test::directed_quad_edges(level);
   EdgeSides out;
   for (const auto& [e, fk] : directed) {
     if (!directed.contains({e.second, e.first})) continue;  // a boundary edge: one side only
@@ -158,15 +116,7 @@ std::pair<double, double> against_exact(const PreparedEvaluation& p, const std::
 TEST_CASE("where every valence is 4 the patches are the exact limit (the bicubic B-spline)") {
   const PreparedEvaluation p = prepared(test::torus(6, 5));
   const std::vector<BezierPatch> patches = approximation_patches(p);
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> unit(0, 1);
-  std::vector<Index> faces;
-  std::vector<double> uv;
-  for (int i = 0; i < 200; ++i) {
-    faces.push_back(Index(rng() % 30));
-    uv.push_back(unit(rng));
-    uv.push_back(unit(rng));
-  }
+  const auto [faces, uv] = limit_test::random_face_points(200, 30, 7);
   const auto [distance, derivatives] = against_exact(p, patches, faces, uv);
   CHECK(distance < 1e-12);
   CHECK(derivatives < 1e-11);  // the tangent patches are then the patch's own derivatives: the exact ones
@@ -263,26 +213,6 @@ TEST_CASE("schemes whose regular patch is not the bicubic B-spline are refused w
 
 namespace {
 
-// A grid whose heights are not a low-degree polynomial, so that exactness means something.
-test::Mesh bumpy(test::Mesh m) {
-  for (Index v = 0; v < m.vertex_count; ++v) {
-    double* p = &m.positions[3 * size_t(v)];
-    p[2] += 0.3 * std::sin(1.7 * p[0] + 0.4 * p[1] * p[1]) + 0.1 * p[0] * p[1];
-  }
-  return m;
-}
-
-// Every edge of the mesh whose ends pass `on_crease`, as an infinitely sharp crease.
-std::vector<CreaseTag> creases_along(const test::Mesh& m, const std::function<bool(Index, Index)>& on_crease) {
-  std::vector<CreaseTag> out;
-  for (size_t f = 0; f + 1 < m.offsets.size(); ++f)
-    for (Index k = m.offsets[f]; k < m.offsets[f + 1]; ++k) {
-      const Index a = m.corners[size_t(k)];
-      const Index b = m.corners[size_t(k + 1 == m.offsets[f + 1] ? m.offsets[f] : k + 1)];
-      if (a < b && on_crease(a, b)) out.push_back({a, b, 10.0});
-    }
-  return out;
-}
 
 // The largest distance to the exact limit and of the tangent patches from the exact
 // derivatives, at random points of every face.
@@ -331,31 +261,13 @@ TEST_CASE("boundaries, infinitely sharp creases and corners: the exact limit whe
 TEST_CASE("irregular boundaries: the boundary curves exact, C0 and one normal field inside, a tangent plane per "
           "boundary vertex") {
   // The plane with a square hole, made bumpy: the hole's corners have three faces.
-  const test::Mesh holed = bumpy([] {
-    test::Mesh m = test::grid(4, 4);
-    test::Mesh out;
-    out.positions = m.positions;
-    out.vertex_count = m.vertex_count;
-    for (size_t f = 0; f + 1 < m.offsets.size(); ++f)
-      if (f != 5 && f != 6 && f != 9 && f != 10)
-        out.add_face({m.corners[4 * f], m.corners[4 * f + 1], m.corners[4 * f + 2], m.corners[4 * f + 3]});
-    return out;
-  }());
+  const test::Mesh holed = limit_test::bumpy_plane_with_hole();
   const PreparedEvaluation p = prepared(holed);
   const std::vector<BezierPatch> patches = approximation_patches(p);
   const Level& base = p.surface->base();
   // Along every boundary edge the patch is the exact limit curve (the boundary's cubic
   // B-spline), whatever the valences at its ends.
-  std::vector<Index> faces;
-  std::vector<double> uv;
-  for (Index f = 0; f < base.face_count(); ++f)
-    for (int k = 0; k < 4; ++k)
-      if (base.edge_on_boundary(base.face_edges[size_t(4 * f + k)]))
-        for (double t : {0.0, 0.2, 0.5, 0.9, 1.0}) {
-          faces.push_back(f);
-          const auto at = limit_test::quad_edge_point(k, t);
-          uv.insert(uv.end(), {at[0], at[1]});
-        }
+  const auto [faces, uv] = limit_test::boundary_edge_points(base, {0.0, 0.2, 0.5, 0.9, 1.0});
   CHECK(faces.size() == 5 * 24);  // 16 outer and 8 hole edges
   CHECK(approximate_points(p, patches, faces, uv).distances.largest < 1e-12);
   // Inside, the faces at the hole's corners only approximate.

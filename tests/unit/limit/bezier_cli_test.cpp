@@ -1,6 +1,6 @@
-// `subdiv evaluate --approximate bezier`: the written points and arrays are the library's
-// patches and distances, the control nets read back with VTK's own Bézier cells give the
-// same surface, and bad inputs are refused with the reason and no file.
+// `subdiv evaluate --approximate bezier` (and gregory's --at rows): the written points and
+// arrays are the library's patches and distances, the control nets read back with VTK's own
+// Bézier cells give the same surface, and bad inputs are refused with the reason and no file.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -90,32 +90,37 @@ TEST_CASE("subdiv evaluate --approximate bezier --samples writes the patches, th
   CHECK(net_worst < 1e-12);
 }
 
-TEST_CASE("subdiv evaluate --approximate bezier --at writes points, normals and distances") {
+TEST_CASE("subdiv evaluate --approximate bezier|gregory --at writes points, normals and distances") {
   const fs::path dir = test::fresh_dir("bezier-cli-at");
   std::ofstream(dir / "points.csv") << "face,u,v\n0,0.3,0.2\n4,0.5,0.125\n";
-  const auto r = test::run_subdiv("evaluate " + test::source_path("examples/meshes/cube.obj") +
-                                  " --approximate bezier --at " + (dir / "points.csv").string() + " -o " +
-                                  (dir / "out.csv").string());
-  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
-  std::ifstream in(dir / "out.csv");
-  std::string header, line;
-  std::getline(in, header);
-  CHECK(header == "face,u,v,x,y,z,nx,ny,nz,limit_distance");
   const PreparedEvaluation p = cube();
-  const std::vector<BezierPatch> patches = approximation_patches(p);
-  const ApproximatedPoints a = approximate_points(p, patches, std::vector<Index>{0, 4}, std::vector<double>{0.3, 0.2, 0.5, 0.125});
-  for (size_t i = 0; i < 2; ++i) {
-    REQUIRE(std::getline(in, line));
-    std::vector<double> row;
-    std::stringstream s(line);
-    for (std::string f; std::getline(s, f, ',');) row.push_back(std::stod(f));
-    REQUIRE(row.size() == 10);
-    for (size_t c = 0; c < 3; ++c) {
-      CHECK(row[3 + c] == a.positions[3 * i + c]);
-      CHECK(row[6 + c] == a.normals[3 * i + c]);
+  const std::vector<Index> faces{0, 4};
+  const std::vector<double> uv{0.3, 0.2, 0.5, 0.125};
+  for (const std::string kind : {"bezier", "gregory"}) {
+    CAPTURE(kind);
+    const auto r = test::run_subdiv("evaluate " + test::source_path("examples/meshes/cube.obj") + " --approximate " +
+                                    kind + " --at " + (dir / "points.csv").string() + " -o " +
+                                    (dir / "out.csv").string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    std::ifstream in(dir / "out.csv");
+    std::string header, line;
+    std::getline(in, header);
+    CHECK(header == "face,u,v,x,y,z,nx,ny,nz,limit_distance");
+    const ApproximatedPoints a = kind == "bezier" ? approximate_points(p, approximation_patches(p), faces, uv)
+                                                  : approximate_points(p, gregory_approximation_patches(p), faces, uv);
+    for (size_t i = 0; i < 2; ++i) {
+      REQUIRE(std::getline(in, line));
+      std::vector<double> row;
+      std::stringstream s(line);
+      for (std::string f; std::getline(s, f, ',');) row.push_back(std::stod(f));
+      REQUIRE(row.size() == 10);
+      for (size_t c = 0; c < 3; ++c) {
+        CHECK(row[3 + c] == a.positions[3 * i + c]);
+        CHECK(row[6 + c] == a.normals[3 * i + c]);
+      }
+      CHECK(row[9] == a.distances.per_point[i]);
+      CHECK(row[9] > 1e-4);  // next to the cube's valence-3 corners the patches only approximate
     }
-    CHECK(row[9] == a.distances.per_point[i]);
-    CHECK(row[9] > 1e-4);  // next to the cube's valence-3 corners the patches only approximate
   }
 }
 
@@ -136,7 +141,7 @@ TEST_CASE("subdiv evaluate --approximate bezier refuses what the patches do not 
   test::check_refused("evaluate " + test::source_path("examples/meshes/cube-creased.obj") +
                           " --approximate bezier --samples 4",
                       dir / "f.vtp", "vertex 0 is a corner inside the surface");
-  test::check_refused("evaluate " + cube + " --approximate spline --samples 4", dir / "g.vtp", "the one approximation is bezier");
+  test::check_refused("evaluate " + cube + " --approximate spline --samples 4", dir / "g.vtp", "the approximations are bezier");
   test::check_refused(base + " --bezier-net " + (dir / "net.vtp").string(), dir / "h.vtp", ".vtu");
   CHECK_FALSE(fs::exists(dir / "net.vtp"));
 }

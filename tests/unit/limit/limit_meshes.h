@@ -3,10 +3,17 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <initializer_list>
+#include <map>
+#include <random>
+#include <vector>
+#include <utility>
 #include <span>
 
 #include <doctest/doctest.h>
 
+#include "framework/io/mesh_data.h"
 #include "framework/limit/limit_surface.h"
 #include "support/test_meshes.h"
 
@@ -78,6 +85,124 @@ inline double central_difference_error(const LimitSurface& s, Index face, double
     worst = std::max(worst, std::fabs((e.position[r] - g.position[r]) / (2 * h) - p.dv[r]));
   }
   return worst;
+}
+
+// Every face with n sides split into n quads at its centroid and edge midpoints (a bilinear
+// step): the centroids get valence n, so triangles, pentagons and hexagons make quad meshes
+// with extraordinary vertices of valence 3, 5 and 6.
+inline test::Mesh quad_split(const test::Mesh& m) {
+  test::Mesh q;
+  q.positions = m.positions;
+  q.vertex_count = m.vertex_count;
+  std::map<std::pair<Index, Index>, Index> mid;
+  auto edge = [&](Index a, Index b) {
+    const auto key = std::minmax(a, b);
+    auto [it, added] = mid.emplace(std::pair{key.first, key.second}, q.vertex_count);
+    if (added)
+      q.add_vertex((m.positions[3 * size_t(a)] + m.positions[3 * size_t(b)]) / 2,
+                   (m.positions[3 * size_t(a) + 1] + m.positions[3 * size_t(b) + 1]) / 2,
+                   (m.positions[3 * size_t(a) + 2] + m.positions[3 * size_t(b) + 2]) / 2);
+    return it->second;
+  };
+  for (size_t f = 0; f + 1 < m.offsets.size(); ++f) {
+    const Index first = m.offsets[f], n = m.offsets[f + 1] - first;
+    double c[3] = {0, 0, 0};
+    for (Index k = 0; k < n; ++k)
+      for (int x = 0; x < 3; ++x) c[x] += m.positions[3 * size_t(m.corners[size_t(first + k)]) + size_t(x)] / n;
+    const Index centre = q.vertex_count;
+    q.add_vertex(c[0], c[1], c[2]);
+    for (Index k = 0; k < n; ++k) {
+      const Index v = m.corners[size_t(first + k)], next = m.corners[size_t(first + (k + 1) % n)],
+                  prev = m.corners[size_t(first + (k + n - 1) % n)];
+      const Index a = edge(v, next), b = edge(prev, v);
+      q.add_face({v, a, centre, b});
+    }
+  }
+  return q;
+}
+
+// A grid whose heights are not a low-degree polynomial, so that exactness means something.
+inline test::Mesh bumpy(test::Mesh m) {
+  for (Index v = 0; v < m.vertex_count; ++v) {
+    double* p = &m.positions[3 * size_t(v)];
+    p[2] += 0.3 * std::sin(1.7 * p[0] + 0.4 * p[1] * p[1]) + 0.1 * p[0] * p[1];
+  }
+  return m;
+}
+
+// Every edge of the mesh whose ends pass `on_crease`, as an infinitely sharp crease.
+inline std::vector<CreaseTag> creases_along(const test::Mesh& m, const std::function<bool(Index, Index)>& on_crease) {
+  std::vector<CreaseTag> out;
+  for (size_t f = 0; f + 1 < m.offsets.size(); ++f)
+    for (Index k = m.offsets[f]; k < m.offsets[f + 1]; ++k) {
+      const Index a = m.corners[size_t(k)];
+      const Index b = m.corners[size_t(k + 1 == m.offsets[f + 1] ? m.offsets[f] : k + 1)];
+      if (a < b && on_crease(a, b)) out.push_back({a, b, 10.0});
+    }
+  return out;
+}
+
+// A 4 x 4 grid without its middle 2 x 2 faces, made bumpy: the hole's corners have three faces.
+inline test::Mesh bumpy_plane_with_hole() {
+  test::Mesh m = test::grid(4, 4);
+  test::Mesh out;
+  out.positions = m.positions;
+  out.vertex_count = m.vertex_count;
+  for (size_t f = 0; f + 1 < m.offsets.size(); ++f)
+    if (f != 5 && f != 6 && f != 9 && f != 10)
+      out.add_face({m.corners[4 * f], m.corners[4 * f + 1], m.corners[4 * f + 2], m.corners[4 * f + 3]});
+  return bumpy(out);
+}
+
+// `count` points (face, u, v) drawn uniformly over faces 0 .. faces - 1.
+struct FacePoints {
+  std::vector<Index> faces;
+  std::vector<double> uv;
+};
+inline FacePoints random_face_points(int count, Index faces, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0, 1);
+  FacePoints out;
+  for (int i = 0; i < count; ++i) {
+    out.faces.push_back(Index(rng() % unsigned(faces)));
+    out.uv.push_back(unit(rng));
+    out.uv.push_back(unit(rng));
+  }
+  return out;
+}
+
+// Points (face, u, v) at parameters `ts` along every boundary edge of `level`'s quads.
+inline FacePoints boundary_edge_points(const Level& level, std::initializer_list<double> ts) {
+  FacePoints out;
+  for (Index f = 0; f < level.face_count(); ++f)
+    for (int k = 0; k < 4; ++k)
+      if (level.edge_on_boundary(level.face_edges[size_t(4 * f + k)]))
+        for (double t : ts) {
+          out.faces.push_back(f);
+          const auto at = quad_edge_point(k, t);
+          out.uv.insert(out.uv.end(), {at[0], at[1]});
+        }
+  return out;
+}
+
+// Every directed edge (a, b) of `level`'s quads: the face and corner it starts at.
+inline std::map<std::pair<Index, Index>, std::pair<Index, int>> directed_quad_edges(const Level& level) {
+  std::map<std::pair<Index, Index>, std::pair<Index, int>> directed;
+  for (Index f = 0; f < level.face_count(); ++f)
+    for (int k = 0; k < 4; ++k)
+      directed[{level.face_vertices[size_t(4 * f + k)], level.face_vertices[size_t(4 * f + (k + 1) % 4)]}] = {f, k};
+  return directed;
+}
+
+// The angle between two vectors, and their cross product.
+inline double angle(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  const std::array<double, 3> c{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  const double s = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  return std::atan2(s, a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+}
+
+inline std::array<double, 3> normal(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
 }  // namespace subdiv::limit_test
