@@ -274,7 +274,8 @@ void apply_edge_rule(RowBuilder& row, const RuleInputs& in, Index e, const Compi
   for (const bool with_a : {true, false})
     for (const bool with_b : {true, false}) {
       const double w = (with_a ? share_a : 1.0 - share_a) * (with_b ? share_b : 1.0 - share_b);
-      if (w > 0.0) add_edge_terms(row, in, e, rule, with_a ? sector_a : EndSector{}, with_b ? sector_b : EndSector{}, scale * w);
+      if (w > 0.0)
+        add_edge_terms(row, in, e, rule, with_a ? sector_a : EndSector{}, with_b ? sector_b : EndSector{}, scale * w);
     }
 }
 

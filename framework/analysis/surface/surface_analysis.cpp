@@ -1030,10 +1030,10 @@ std::string leading_text(const std::vector<Complex>& ev, size_t count) {
 // then refined as a surface whose boundary is its two crease curves — exactly so where the
 // scheme's crease rules are its boundary rules — and the smoothness up to the crease is each
 // sector's boundary analysis (a sector of k faces: boundary valence k + 1; at a corner, whose
-// point stays, a boundary vertex tagged as a corner). The whole
-// characteristic map is no test here: its subdominant eigenvalues mix the sectors (at a
-// corner, each crease curve brings its own). Along the crease curves, the spectrum of the
-// crease points' own block (crease_eigenvalues).
+// point stays, a boundary vertex tagged as a corner). The whole characteristic map is no test
+// here: its subdominant eigenvalues mix the sectors (at a corner, each crease curve brings
+// its own). Along the crease curves, the spectrum of the crease points' own block
+// (crease_eigenvalues).
 void judge_by_sectors(const Scheme& scheme, const SurfaceAnalysisOptions& options, SurfaceAnalysis& out) {
   const std::vector<int> sectors = sector_faces(out.config);
   std::string failed, sizes;
@@ -1057,15 +1057,16 @@ void judge_by_sectors(const Scheme& scheme, const SurfaceAnalysisOptions& option
   const std::string along =
       out.crease_eigenvalues.empty()
           ? std::string()
-          : fmt::format(" (its points refine among themselves: {})", leading_text(out.crease_eigenvalues, crease ? 4 : 5));
+          : fmt::format(" (its points refine among themselves: {})",
+                        leading_text(out.crease_eigenvalues, crease ? 4 : 5));
   if (!out.c1) out.verdict = "fails: " + failed;
   else if (crease)
     out.verdict = fmt::format("C1 on both sides of the crease (sides of {} faces, each as at a boundary); "
                               "along it the crease curve's{}",
                               sizes, along);
   else
-    out.verdict = fmt::format("C1 in each of the corner's {} sectors (sectors of {} faces, each as at a boundary corner); "
-                              "along its crease curves the curve rule's{}",
+    out.verdict = fmt::format("C1 in each of the corner's {} sectors (sectors of {} faces, each as at a boundary "
+                              "corner); along its crease curves the curve rule's{}",
                               sectors.size(), sizes, along);
 }
 
