@@ -28,14 +28,22 @@ std::vector<int> valences_present(const Level& L) {
 
 StepInputs prepare_step(const Scheme& scheme, const StepRules& step, const Level& parent, int level,
                         const RefineOptions& options, const VertexParameters& values, bool lazy_features) {
-  const LevelValences present{valences_present(parent), sector_sizes_present(parent)};
+  LevelValences present{valences_present(parent), {}};
   const int max_n = present.valences.empty() ? 0 : present.valences.back(), max_k = parent.max_face_size();
-  auto tables = [&](int n, int k, const LevelValences& p) {
+  auto compile = [&](int n, int k, const LevelValences& p) {
     return step_weight_tables(scheme, step, n, k, level, nullptr, &p);
   };
   WeightTableCache* cache = options.evaluation.weight_tables;
-  StepInputs inputs{cache ? cache->get(step, level, max_n, max_k, present, tables) : tables(max_n, max_k, present),
-                    per_vertex_tables(scheme, step, parent, values, max_n, max_k, level),
+  auto tables = [&] {
+    return cache ? cache->get(step, level, max_n, max_k, present, compile) : compile(max_n, max_k, present);
+  };
+  WeightTables compiled = tables();
+  // The sector sizes (a pass over every ring of a tagged level) only for rules that read them.
+  if (reads_sector_sizes(compiled)) {
+    present.sector_sizes = sector_sizes_present(parent);
+    compiled = tables();
+  }
+  StepInputs inputs{std::move(compiled), per_vertex_tables(scheme, step, parent, values, max_n, max_k, level),
                     std::make_unique<StepFeatures>()};
   StepFeatures& f = *inputs.features;
   if (!lazy_features || !without_sharpness_tags(parent)) {

@@ -173,6 +173,7 @@ CompiledTerm compile_term(const Term& term, FormulaSet& formulas, const LevelVal
                                                                       : SectorSlots{{{0, 0}}, {0}};
   const int max_j = largest_point_index(term.role, max_n, max_k, int(slots.first.size()) - 1);
   out.max_j = max_j;
+  out.reads_sector_sizes = reads_sectors || is_end_sector(term.role);
   // End valences: every valence up to max_n, or the ones present (valence_of[slot]).
   std::vector<int> valence_of;
   if (present && (uses.n0 || uses.n1)) {
@@ -262,6 +263,21 @@ CreaseEndTable<CompiledRule> compile_crease_end_rules(const CreaseEndRules& rule
   out.by_distance = compiled(rules.by_distance);
   for (const auto& entry : rules.by_length) out.by_length[entry.first] = compiled(entry.second);
   return out;
+}
+
+bool reads_sector_sizes(const WeightTables& tables) {
+  auto reads = [](const CompiledRule& rule) {
+    return std::any_of(rule.terms.begin(), rule.terms.end(), [](const CompiledTerm& t) { return t.reads_sector_sizes; });
+  };
+  for (const auto& by_context : tables.rules)
+    for (const CompiledRule& rule : by_context)
+      if (reads(rule)) return true;
+  for (const CompiledRule& rule : tables.crease_ends.by_distance)
+    if (reads(rule)) return true;
+  for (const auto& entry : tables.crease_ends.by_length)
+    for (const CompiledRule& rule : entry.second)
+      if (reads(rule)) return true;
+  return false;
 }
 
 WeightTables compile_rule_table(const RuleTable& rules, const FormulaScope& scope, int max_n, int max_k, int level) {

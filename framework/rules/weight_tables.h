@@ -35,6 +35,9 @@ struct CompiledTerm {
   // quadratic in the largest sector, not cubic.
   size_t stride_b0 = 0, stride_b1 = 0, stride_s0 = 0, stride_s1 = 0;
   std::vector<int> sector_slot;
+  // Tabulated over the level's sector sizes (it reads m or e, or is an end's sector): the
+  // table depends on LevelValences::sector_sizes.
+  bool reads_sector_sizes = false;
   // Every weight is 0 where neither end has a sector (b0 = b1 = 0): a term of the rule next to
   // boundaries and creases only, which the smooth kernels leave out.
   bool zero_without_sectors = true;
@@ -116,6 +119,11 @@ struct FormulaScope {
   const std::vector<NamedFormula>* definitions = nullptr;
   const LevelValences* present = nullptr;
 };
+
+// Whether any of the tables' terms is tabulated over the level's sector sizes, which the
+// caller then finds (rules/end_sectors.h: a pass over the rings of a tagged level) and
+// compiles with; the other schemes never pay for it.
+bool reads_sector_sizes(const WeightTables& tables);
 
 // A rule table's formulas evaluated for every n < max_n + 1 (the largest valence) and
 // k < max_k + 1 (the largest face size) at level l, with the engine's defaults for

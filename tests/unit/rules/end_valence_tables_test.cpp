@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "framework/scheme/scheme_registry.h"
 #include "framework/scheme/step_tables.h"
@@ -75,4 +76,16 @@ TEST_CASE("modified butterfly's sector weights at a 300-valent boundary hub are 
   // The rim's sector of two faces: (0, 1/2, 0) around the edge to p_1.
   CHECK(weight(1, 2, 1, false) == doctest::Approx(0.5));
   CHECK(weight(0, 2, 1, false) == doctest::Approx(0.0));
+}
+
+TEST_CASE("only rules over the ends' sectors ask for the level's sector sizes") {
+  // prepare_step finds the sector sizes (a pass over every ring of a tagged level) only for
+  // tables that read them: modified butterfly's edge rule does, Loop's and Catmull-Clark's do not.
+  for (const char* name : {"loop", "catmull-clark", "modified-butterfly"}) {
+    CAPTURE(name);
+    const auto scheme = load_scheme(name);
+    const LevelValences present{{3, 6}, {}};
+    const WeightTables t = step_weight_tables(*scheme, scheme->steps.front(), 6, 4, 0, nullptr, &present);
+    CHECK(reads_sector_sizes(t) == (std::string(name) == "modified-butterfly"));
+  }
 }
