@@ -143,52 +143,56 @@ MeshData sampled_mesh(const PreparedEvaluation& prepared, const Sample& sample, 
   return m;
 }
 
-}  // namespace
-
-std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared) {
-  check_approximable(prepared, "--approximate bezier");
-  const Level& base = prepared.surface->base();
-  const FeatureOptions& features = prepared.surface->options().features;
+// The patches `build` makes of the base mesh, after the checks both kinds share; its
+// refusals named with `option`.
+template <typename Build>
+auto built_patches(const PreparedEvaluation& prepared, const char* option, Build build) {
+  check_approximable(prepared, option);
   try {
-    return bezier_patches(base, prepared.mesh.positions, features.boundary, vertex_limits(prepared));
+    return build(prepared.surface->base(), prepared.mesh.positions, prepared.surface->options().features.boundary,
+                 vertex_limits(prepared));
   } catch (const Error& e) {
-    throw Error(fmt::format("--approximate bezier: {}", e.what()));
+    throw Error(fmt::format("{}: {}", option, e.what()));
   }
 }
 
+PatchSample sample_patch(const BezierPatch& p, double u, double v) { return evaluate_patch(p, u, v); }
+PatchSample sample_patch(const GregoryPatch& p, double u, double v) { return evaluate_gregory(p, u, v); }
+
+// sample(face, u, v) over one patch per face.
+template <typename Patch>
+auto sampler(const std::vector<Patch>& patches) {
+  return [&patches](Index f, double u, double v) { return sample_patch(patches[size_t(f)], u, v); };
+}
+
+}  // namespace
+
+std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared) {
+  return built_patches(prepared, "--approximate bezier", bezier_patches);
+}
+
 std::vector<GregoryPatch> gregory_approximation_patches(const PreparedEvaluation& prepared) {
-  check_approximable(prepared, "--approximate gregory");
-  const Level& base = prepared.surface->base();
-  const FeatureOptions& features = prepared.surface->options().features;
-  try {
-    return gregory_patches(base, prepared.mesh.positions, features.boundary, vertex_limits(prepared));
-  } catch (const Error& e) {
-    throw Error(fmt::format("--approximate gregory: {}", e.what()));
-  }
+  return built_patches(prepared, "--approximate gregory", gregory_patches);
 }
 
 ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
                                       std::span<const Index> faces, std::span<const double> uv) {
-  const auto sample = [&patches](Index f, double u, double v) { return evaluate_patch(patches[size_t(f)], u, v); };
-  return sample_points(prepared, sample, faces, uv);
+  return sample_points(prepared, sampler(patches), faces, uv);
 }
 
 ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const std::vector<GregoryPatch>& patches,
                                       std::span<const Index> faces, std::span<const double> uv) {
-  const auto sample = [&patches](Index f, double u, double v) { return evaluate_gregory(patches[size_t(f)], u, v); };
-  return sample_points(prepared, sample, faces, uv);
+  return sample_points(prepared, sampler(patches), faces, uv);
 }
 
 MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
                                  int segments, ApproximationDistances& distances) {
-  const auto sample = [&patches](Index f, double u, double v) { return evaluate_patch(patches[size_t(f)], u, v); };
-  return sampled_mesh(prepared, sample, segments, distances);
+  return sampled_mesh(prepared, sampler(patches), segments, distances);
 }
 
 MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::vector<GregoryPatch>& patches,
                                  int segments, ApproximationDistances& distances) {
-  const auto sample = [&patches](Index f, double u, double v) { return evaluate_gregory(patches[size_t(f)], u, v); };
-  return sampled_mesh(prepared, sample, segments, distances);
+  return sampled_mesh(prepared, sampler(patches), segments, distances);
 }
 
 std::string approximation_summary(const ApproximationDistances& d, ApproximationKind kind) {
