@@ -144,10 +144,17 @@ int corner_at(const FacePoint& p, int face_size, bool triangles) {
 
 std::vector<ChildFace> child_faces(const Level& parent, const Level& child, const ChildOrigins& origins,
                                    const FacePoint& p, bool triangles) {
+  std::vector<Index> candidates;
+  for (Index g = 0; g < child.face_count(); ++g)
+    if (origins.parent_face[size_t(g)] == p.face) candidates.push_back(g);
+  return child_faces(parent, child, origins, p, triangles, candidates);
+}
+
+std::vector<ChildFace> child_faces(const Level& parent, const Level& child, const ChildOrigins& origins,
+                                   const FacePoint& p, bool triangles, std::span<const Index> candidates) {
   const ParentFrame frame = parent_frame(parent, p, triangles);
   std::vector<ChildFace> out;
-  for (Index g = 0; g < child.face_count(); ++g) {
-    if (origins.parent_face[size_t(g)] != p.face) continue;
+  for (Index g : candidates) {
     ChildFace c;
     c.face = g;
     bool mapped = true;

@@ -54,6 +54,10 @@ struct ChildFace {
 };
 std::vector<ChildFace> child_faces(const Level& parent, const Level& child, const ChildOrigins& origins,
                                    const FacePoint& p, bool triangles);
+// Likewise among `candidates` only: the child faces whose parent is p.face, for a caller that
+// has them grouped (the above scans every face of `child`).
+std::vector<ChildFace> child_faces(const Level& parent, const Level& child, const ChildOrigins& origins,
+                                   const FacePoint& p, bool triangles, std::span<const Index> candidates);
 
 // The point in a child face's coordinates, or empty when the child does not hold it (up to
 // eps outside its domain; the point is then clamped to the domain).

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "framework/analysis/surface/limit_evaluation.h"
+#include "framework/limit/refined_control_mesh.h"
 #include "framework/limit/tessellation.h"
 #include "framework/limit/unit_normal.h"
 #include "framework/util/error.h"
@@ -52,11 +53,13 @@ DataArray index_array(const char* name, const std::vector<Index>& indices) {
   return a;
 }
 
-// The scheme's limit position and normal at every base vertex (its limit masks).
-VertexLimits vertex_limits(const PreparedEvaluation& prepared) {
+// The scheme's limit position and normal at every vertex of the patches' control mesh (its
+// limit masks: the refined level's limit is the base mesh's).
+VertexLimits vertex_limits(const Scheme& scheme, const RefinedControlMesh& mesh, const FeatureOptions& features) {
   LimitOptions options;
-  options.features = prepared.surface->options().features;
-  LimitResult limits = limit_positions(*prepared.scheme, prepared.surface->base(), prepared.mesh.positions, options);
+  options.features = features;
+  options.first_step = mesh.steps();
+  LimitResult limits = limit_positions(scheme, mesh.level(), mesh.positions(), options);
   for (Index v = 0; v < Index(limits.exact.size()); ++v)
     if (!limits.exact[size_t(v)])
       throw Error(fmt::format("vertex {}: its limit position is only approximated ({}); the patches' corners must "
@@ -143,56 +146,97 @@ MeshData sampled_mesh(const PreparedEvaluation& prepared, const Sample& sample, 
   return m;
 }
 
-// The patches `build` makes of the base mesh, after the checks both kinds share; its
-// refusals named with `option`.
-template <typename Build>
-auto built_patches(const PreparedEvaluation& prepared, const char* option, Build build) {
+// Where the patches' control mesh is not the base mesh, what a refusal's face and vertex
+// numbers refer to.
+std::string refined_level_prefix(int steps) {
+  if (steps == 0) return {};
+  return fmt::format("on level {} (the mesh refined {} time{} so that every face is a quad and semi-sharp tags have "
+                     "decayed; numbered as `subdiv refine -l {}` writes it): ",
+                     steps, steps, steps == 1 ? "" : "s", steps);
+}
+
+// The patches `build` makes of the base mesh, or of the level a few uniform steps make where
+// the base has faces that are not quads or semi-sharp tags, after the checks both kinds
+// share; its refusals named with `option`.
+template <typename Patch, typename Build>
+Approximation<Patch> built_patches(const PreparedEvaluation& prepared, const char* option, Build build) {
   check_approximable(prepared, option);
+  const Level& base = prepared.surface->base();
+  const FeatureOptions& features = prepared.surface->options().features;
+  Approximation<Patch> a;
+  a.steps = steps_to_quads_without_semi_sharp(base);
   try {
-    return build(prepared.surface->base(), prepared.mesh.positions, prepared.surface->options().features.boundary,
-                 vertex_limits(prepared));
+    a.mesh = std::make_shared<const RefinedControlMesh>(*prepared.scheme, base, prepared.mesh.positions, features,
+                                                        a.steps);
+    a.patches = build(a.mesh->level(), a.mesh->positions(), features.boundary,
+                      vertex_limits(*prepared.scheme, *a.mesh, features));
   } catch (const Error& e) {
-    throw Error(fmt::format("{}: {}", option, e.what()));
+    throw Error(fmt::format("{}: {}{}", option, refined_level_prefix(a.steps), e.what()));
   }
+  for (Index f = 0; f < Index(a.patches.size()); ++f) a.base_face.push_back(a.mesh->base_face(f));
+  return a;
 }
 
 PatchSample sample_patch(const BezierPatch& p, double u, double v) { return evaluate_patch(p, u, v); }
 PatchSample sample_patch(const GregoryPatch& p, double u, double v) { return evaluate_gregory(p, u, v); }
 
-// sample(face, u, v) over one patch per face.
+// Derivatives along a patch's (s, t) as derivatives along the base face's (u, v).
+Point3 along_base(const Point3& ds, const Point3& dt, double ds_dw, double dt_dw) {
+  return {ds[0] * ds_dw + dt[0] * dt_dw, ds[1] * ds_dw + dt[1] * dt_dw, ds[2] * ds_dw + dt[2] * dt_dw};
+}
+
+// sample(face, u, v) at the base mesh's (face, u, v): the patch holding the point.
 template <typename Patch>
-auto sampler(const std::vector<Patch>& patches) {
-  return [&patches](Index f, double u, double v) { return sample_patch(patches[size_t(f)], u, v); };
+auto sampler(const Approximation<Patch>& a) {
+  return [&a](Index f, double u, double v) {
+    const FacePoint p = a.mesh->locate(f, u, v);
+    PatchSample s = sample_patch(a.patches[size_t(p.face)], p.st[0], p.st[1]);
+    if (a.steps == 0) return s;
+    const Jacobian& j = p.jacobian;
+    const PatchSample st = s;
+    s.du = along_base(st.du, st.dv, j[0][0], j[1][0]);
+    s.dv = along_base(st.du, st.dv, j[0][1], j[1][1]);
+    s.geometry_du = along_base(st.geometry_du, st.geometry_dv, j[0][0], j[1][0]);
+    s.geometry_dv = along_base(st.geometry_du, st.geometry_dv, j[0][1], j[1][1]);
+    return s;
+  };
 }
 
 }  // namespace
 
-std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared) {
-  return built_patches(prepared, "--approximate bezier", bezier_patches);
+BezierApproximation approximation_patches(const PreparedEvaluation& prepared) {
+  return built_patches<BezierPatch>(prepared, "--approximate bezier", bezier_patches);
 }
 
-std::vector<GregoryPatch> gregory_approximation_patches(const PreparedEvaluation& prepared) {
-  return built_patches(prepared, "--approximate gregory", gregory_patches);
+GregoryApproximation gregory_approximation_patches(const PreparedEvaluation& prepared) {
+  return built_patches<GregoryPatch>(prepared, "--approximate gregory", gregory_patches);
 }
 
-ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
+ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const BezierApproximation& patches,
                                       std::span<const Index> faces, std::span<const double> uv) {
   return sample_points(prepared, sampler(patches), faces, uv);
 }
 
-ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const std::vector<GregoryPatch>& patches,
+ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const GregoryApproximation& patches,
                                       std::span<const Index> faces, std::span<const double> uv) {
   return sample_points(prepared, sampler(patches), faces, uv);
 }
 
-MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
+MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const BezierApproximation& patches,
                                  int segments, ApproximationDistances& distances) {
   return sampled_mesh(prepared, sampler(patches), segments, distances);
 }
 
-MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::vector<GregoryPatch>& patches,
+MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const GregoryApproximation& patches,
                                  int segments, ApproximationDistances& distances) {
   return sampled_mesh(prepared, sampler(patches), segments, distances);
+}
+
+std::string approximation_level_note(int steps, size_t patches) {
+  if (steps == 0) return {};
+  return fmt::format("the patches are built on level {} ({} uniform step{} so that every face is a quad and "
+                     "semi-sharp tags have decayed; the same limit): {} patches",
+                     steps, steps, steps == 1 ? "" : "s", patches);
 }
 
 std::string approximation_summary(const ApproximationDistances& d, ApproximationKind kind) {
@@ -202,7 +246,8 @@ std::string approximation_summary(const ApproximationDistances& d, Approximation
                      d.largest, d.largest_face, d.mean, d.samples);
 }
 
-std::string bezier_control_net_vtu(const std::vector<BezierPatch>& patches, std::span<const double> limit_distance) {
+std::string bezier_control_net_vtu(const BezierApproximation& approximation, std::span<const double> limit_distance) {
+  const std::vector<BezierPatch>& patches = approximation.patches;
   // VTK's order for a Lagrange/Bézier quadrilateral of degree (3, 3): the corners (0,0),
   // (3,0), (3,3), (0,3); the edges i = 1, 2 at j = 0, then j = 1, 2 at i = 3, then i = 1, 2
   // at j = 3, then j = 1, 2 at i = 0 (each in increasing order); then the interior, i fastest.
@@ -218,8 +263,9 @@ std::string bezier_control_net_vtu(const std::vector<BezierPatch>& patches, std:
     offsets += fmt::format("{} ", 16 * (p + 1));
     types += "77 ";  // VTK_BEZIER_QUADRILATERAL
     degrees += "3 3 0 ";
-    faces += fmt::format("{} ", p);
-    if (!limit_distance.empty()) distances += fmt::format("{} ", limit_distance[p]);
+    const Index base = approximation.base_face[p];
+    faces += fmt::format("{} ", base);
+    if (!limit_distance.empty()) distances += fmt::format("{} ", limit_distance[size_t(base)]);
   }
   std::string cells = fmt::format(
       "<DataArray type=\"Int32\" Name=\"HigherOrderDegrees\" NumberOfComponents=\"3\" format=\"ascii\">{}</DataArray>\n"

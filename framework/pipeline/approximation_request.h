@@ -2,6 +2,7 @@
 // The limit surface approximated by Loop & Schaefer's bicubic patches (limit/bezier_approximation.h),
 // as every front-end asks for it (`subdiv evaluate --approximate bezier`), measured against
 // the exact limit (limit/limit_surface.h) at the same (face, u, v): the distance no library shows.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,16 +13,34 @@
 
 namespace subdiv {
 
+class RefinedControlMesh;  // limit/refined_control_mesh.h
+
+// The patches of an approximation and the control mesh they are built on: the base mesh,
+// or where it has faces that are not quads or semi-sharp creases and corners, the mesh a
+// few uniform steps of the scheme make of it (as `subdiv refine -l steps` writes it): one
+// step makes every face a quad, ceil(s) steps let sharpness s decay, after which the
+// masks' smooth and infinitely sharp rules are the scheme's. Every front-end evaluates
+// them at the base mesh's (face, u, v), through `mesh`.
+template <typename Patch>
+struct Approximation {
+  std::vector<Patch> patches;    // one per face of the mesh they are built on
+  std::vector<Index> base_face;  // per patch: the base face it lies in
+  int steps = 0;                 // uniform steps from the base mesh to the patches' mesh
+  std::shared_ptr<const RefinedControlMesh> mesh;
+};
+using BezierApproximation = Approximation<BezierPatch>;
+using GregoryApproximation = Approximation<GregoryPatch>;
+
 // The patches of a prepared surface. Throws subdiv::Error saying why they cannot be built:
 // the scheme (bezier_approximation_unsupported; with boundaries or creases also
 // bezier_features_unsupported), a sequence, rational weights, holes, or a face or edge the
-// masks do not cover (bezier_patches: naming it).
-std::vector<BezierPatch> approximation_patches(const PreparedEvaluation& prepared);
+// masks do not cover (bezier_patches: naming it, on the refined level when steps > 0).
+BezierApproximation approximation_patches(const PreparedEvaluation& prepared);
 
 // Loop, Schaefer, Ni & Castaño's Gregory patches of a prepared surface
 // (`--approximate gregory`). Throws subdiv::Error as approximation_patches does (the same
 // scheme, mesh and feature checks; gregory_patches naming the face or edge).
-std::vector<GregoryPatch> gregory_approximation_patches(const PreparedEvaluation& prepared);
+GregoryApproximation gregory_approximation_patches(const PreparedEvaluation& prepared);
 
 // Distances from the approximation to the exact limit.
 struct ApproximationDistances {
@@ -37,10 +56,10 @@ struct ApproximatedPoints {
   std::vector<double> positions, normals;
   ApproximationDistances distances;
 };
-ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
+ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const BezierApproximation& patches,
                                       std::span<const Index> faces, std::span<const double> uv);
 // Likewise with the Gregory patches' own unit normals.
-ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const std::vector<GregoryPatch>& patches,
+ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const GregoryApproximation& patches,
                                       std::span<const Index> faces, std::span<const double> uv);
 
 // The approximation tessellated N x N per face as limit_mesh.h tessellates the exact limit
@@ -48,14 +67,18 @@ ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const 
 // the point arrays Normals (the tangent patches' unit normal), base_face, uv and
 // limit_distance, and the cell arrays base_face and limit_distance (the largest distance
 // over the base face's samples).
-MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::vector<BezierPatch>& patches,
+MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const BezierApproximation& patches,
                                  int segments, ApproximationDistances& distances);
 // Likewise with the Gregory patches (Normals: their own unit normal; crack-free, as they
 // share their boundary curves).
-MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const std::vector<GregoryPatch>& patches,
+MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const GregoryApproximation& patches,
                                  int segments, ApproximationDistances& distances);
 
 enum class ApproximationKind { Bezier, Gregory };
+
+// "the patches are built on level L, ... : P patches", or empty when they are the base
+// mesh's (steps 0).
+std::string approximation_level_note(int steps, size_t patches);
 
 // "... against the exact limit: largest distance X (face F), mean Y over N samples".
 std::string approximation_summary(const ApproximationDistances& d, ApproximationKind kind = ApproximationKind::Bezier);
@@ -63,7 +86,8 @@ std::string approximation_summary(const ApproximationDistances& d, Approximation
 // The geometry patches as a VTK XML unstructured grid (.vtu, ASCII) of Bézier quadrilaterals
 // (VTK_BEZIER_QUADRILATERAL, degree 3 x 3 in the cell array HigherOrderDegrees; VTK's
 // point order: corners, edges, interior), with the cell arrays base_face and, when given
-// (one per patch), limit_distance. ParaView (5.5+) shows them as curved patches.
-std::string bezier_control_net_vtu(const std::vector<BezierPatch>& patches, std::span<const double> limit_distance);
+// (one per base face), limit_distance, the base face's. ParaView (5.5+) shows them as
+// curved patches.
+std::string bezier_control_net_vtu(const BezierApproximation& patches, std::span<const double> limit_distance);
 
 }  // namespace subdiv

@@ -211,10 +211,12 @@ class LimitSurface:
         """Loop & Schaefer's (2008) bicubic patches tessellated, as ``subdiv evaluate
         --approximate bezier --samples N`` writes them (docs/limit.md).
 
-        One patch per quad of a manifold quad mesh, for a scheme whose limit over regular quads
-        is the bicubic B-spline (else subdivkit.Error says why); boundaries and infinitely
-        sharp creases where the scheme's are the cubic B-spline's (semi-sharp ones, darts and a
-        crease with one face on a side are refused, naming the place). Exact where every
+        One patch per quad of a manifold mesh, for a scheme whose limit over regular quads
+        is the bicubic B-spline (else subdivkit.Error says why); faces that are not quads and
+        semi-sharp creases and corners are read on the level where every face is a quad and
+        the tags have decayed (one step, or ceil(sharpness) steps), one patch per face there;
+        boundaries and infinitely sharp creases where the scheme's are the cubic B-spline's
+        (darts and a crease with one face on a side are refused, naming the place). Exact where every
         corner is regular (valence 4 inside, two faces on each side of a boundary or crease,
         a corner of one face). point_data: "Normals" (of the tangent patches: continuous across edges),
         "base_face", "uv", "limit_distance" (to the exact limit at the same (face, u, v));
@@ -229,10 +231,10 @@ class LimitSurface:
         """Loop, Schaefer, Ni & Castaño's (2009) bicubic Gregory patches tessellated, as
         ``subdiv evaluate --approximate gregory --samples N`` writes them (docs/limit.md).
 
-        One patch per quad of a manifold quad mesh, for a scheme whose limit over regular
-        quads is the bicubic B-spline (else subdivkit.Error says why); boundaries and
-        infinitely sharp creases as approximate_bezier covers them (semi-sharp ones, darts and
-        a crease with one face on a side are refused, naming the place). Exact where every
+        One patch per quad of a manifold mesh, for a scheme whose limit over regular
+        quads is the bicubic B-spline (else subdivkit.Error says why); faces that are not
+        quads, semi-sharp tags, boundaries and infinitely sharp creases as approximate_bezier
+        covers them (darts and a crease with one face on a side are refused, naming the place). Exact where every
         corner is regular; elsewhere the patches meet with one normal across every edge that
         is not a crease (G1) and their corners are the limit's positions and tangent planes. point_data: "Normals"
         (the patches' own), "base_face", "uv", "limit_distance" (to the exact limit at the

@@ -297,6 +297,22 @@ def test_approximate_gregory_is_the_command_line_mesh_and_exact_where_every_vale
         sk.LimitSurface(cube(), "loop").approximate_gregory(2)
 
 
+def test_approximations_of_triangles_are_built_on_their_sub_faces(tmp_path):
+    """A mesh with triangles is approximated on the level one step makes (every face a quad):
+    the same mesh as the command line's, and every base vertex, edge middle and face centre
+    (corners of the patches there) on the exact limit."""
+    pyramid = sk.read_mesh(str(MESHES / "pyramid.obj"))
+    S = sk.LimitSurface(pyramid, "catmull-clark")
+    for kind in ("bezier", "gregory"):
+        a = getattr(S, "approximate_" + kind)(2)
+        out = tmp_path / (kind + ".obj")
+        run_cli("evaluate", MESHES / "pyramid.obj", "--approximate", kind, "--samples", "2", "-o", out)
+        assert np.allclose(sk.read_mesh(str(out)).points, a.points, rtol=0, atol=1e-12)
+        # --samples 2: the quad's samples and the triangles' sub-face corners are the level-1 vertices.
+        assert a.point_data["limit_distance"].max() < 1e-12
+        assert set(a.cell_data["base_face"]) == set(range(5))
+
+
 def test_a_non_manifold_mesh_is_evaluated_flap_by_flap():
     # Three flaps on one hinge edge (vertices 0 and 1): the hinge is infinitely sharp, so
     # every flap's limit along it is the straight hinge, and each flap is smooth.

@@ -143,7 +143,8 @@ void run_gregory(const EvaluateArgs& a, Progress& progress) {
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a, progress));
   progress.done();
   for (const std::string& w : prepared.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
-  const std::vector<GregoryPatch> patches = gregory_approximation_patches(prepared);
+  const GregoryApproximation patches = gregory_approximation_patches(prepared);
+  if (patches.steps > 0) print_safe("subdiv: {}\n", approximation_level_note(patches.steps, patches.patches.size()));
   if (a.samples > 0) {
     ApproximationDistances distances;
     MeshData mesh = approximated_limit_mesh(prepared, patches, a.samples, distances);
@@ -176,7 +177,8 @@ void run_approximation(const EvaluateArgs& a, Progress& progress) {
   const PreparedEvaluation prepared = prepare_evaluation(evaluate_request(a, progress));
   progress.done();
   for (const std::string& w : prepared.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
-  const std::vector<BezierPatch> patches = approximation_patches(prepared);
+  const BezierApproximation patches = approximation_patches(prepared);
+  if (patches.steps > 0) print_safe("subdiv: {}\n", approximation_level_note(patches.steps, patches.patches.size()));
   // The control nets go into a temporary that becomes --bezier-net only once -o is in place,
   // so a failure of either write leaves neither file.
   StagedFiles nets;
@@ -323,8 +325,9 @@ void add_evaluate_command(CLI::App& app) {
       ->check(CLI::Range(0, 12));
   cmd->add_option("--approximate", args->approximate,
                   "bezier: instead of the exact limit, Loop & Schaefer's (2008) bicubic patches, one per quad of a "
-                  "quad mesh with boundaries and sharp creases (exact where every valence is 4), normals from their "
-                  "tangent patches; "
+                  "mesh with boundaries and sharp creases (exact where every valence is 4; other faces and "
+                  "semi-sharp tags read on the level where every face is a quad and the tags have decayed), normals "
+                  "from their tangent patches; "
                   "adds limit_distance (to the exact limit; --samples: per point and per face, the face's largest) "
                   "and prints the largest and mean distance; "
                   "gregory: Loop, Schaefer, Ni & Castano's (2009) bicubic Gregory patches, one per quad of the "

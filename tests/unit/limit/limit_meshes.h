@@ -185,13 +185,17 @@ inline FacePoints boundary_edge_points(const Level& level, std::initializer_list
   return out;
 }
 
-// Every directed edge (a, b) of `level`'s quads: the face and corner it starts at.
-inline std::map<std::pair<Index, Index>, std::pair<Index, int>> directed_quad_edges(const Level& level) {
+// Every directed edge (a, b) of `level`'s faces: the face and corner it starts at.
+inline std::map<std::pair<Index, Index>, std::pair<Index, int>> directed_edges(const Level& level) {
   std::map<std::pair<Index, Index>, std::pair<Index, int>> directed;
-  for (Index f = 0; f < level.face_count(); ++f)
-    for (int k = 0; k < 4; ++k)
-      directed[{level.face_vertices[size_t(4 * f + k)], level.face_vertices[size_t(4 * f + (k + 1) % 4)]}] = {f, k};
+  for (Index f = 0; f < level.face_count(); ++f) {
+    const auto face = level.face(f);
+    for (size_t k = 0; k < face.size(); ++k) directed[{face[k], face[(k + 1) % face.size()]}] = {f, int(k)};
+  }
   return directed;
+}
+inline std::map<std::pair<Index, Index>, std::pair<Index, int>> directed_quad_edges(const Level& level) {
+  return directed_edges(level);
 }
 
 // The angle between two vectors, and their cross product.
