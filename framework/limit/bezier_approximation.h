@@ -81,9 +81,9 @@ struct VertexLimits {
 // normal there is the scheme's own even where the masks are Catmull-Clark's approximations
 // (another scheme; a boundary vertex with three or more faces).
 // Throws subdiv::Error naming the first face or edge the masks do not cover (a face that is
-// not a quad, a non-manifold edge, a semi-sharp edge or corner, a dart, a boundary or crease
-// with one face on a side, a corner with more than one face between feature edges, a
-// boundary when `boundary` is None).
+// not a quad, a non-manifold edge, a semi-sharp edge or corner, a boundary or crease with one
+// face on a side, a corner with more than one face between feature edges, a boundary when
+// `boundary` is None). A dart takes the smooth vertex's masks, as the scheme's dart rule does.
 std::vector<BezierPatch> bezier_patches(const Level& topology, std::span<const double> positions,
                                         BoundaryInterpolation boundary, const VertexLimits& limits);
 

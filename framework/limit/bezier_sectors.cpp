@@ -108,15 +108,12 @@ Sector QuadMesh::find_sector(Index f, int k) const {
   int features = 0;
   for (Index e : level_.ring_edges(v))
     features += level_.edge_on_boundary(e) || level_.edge_sharp(e) >= kInfinitelySharp;
-  if (features == 1)
-    throw Error(fmt::format("face {}: vertex {} ends a crease (a dart): the masks are those of smooth vertices, "
-                            "boundaries, creases passing through and corners, and refining keeps a dart; evaluate "
-                            "the exact limit instead (without --approximate)",
-                            f, v));
   const bool boundary_corner = boundary_ == BoundaryInterpolation::EdgesAndCorners && level_.on_boundary(v) &&
                                level_.incident_face_count(v) == 1;
   s.corner = level_.vertex_sharp(v) >= kInfinitelySharp || features > 2 || boundary_corner;
-  if (features == 0) {
+  // A dart (one feature edge: a crease ending inside) takes the smooth vertex rule (Hoppe et
+  // al. 1994, DeRose, Kass & Truong 1998): its sector is closed, its tangent plane the limit's.
+  if (features <= 1) {
     s.closed = true;
     s.faces = level_.incident_face_count(v);
     return s;

@@ -50,9 +50,10 @@ Point3 interior_point(const QuadMesh& m, Index f, int k);
 class QuadMesh {
 public:
   // Throws subdiv::Error naming the face for a face that is not a quad, a non-manifold or
-  // inconsistently oriented edge, a semi-sharp edge or vertex, a dart (one feature edge at a
-  // vertex), a smooth feature vertex with one face on a side, or a corner with more than one
-  // face between two of its feature edges — the cases the masks do not cover.
+  // inconsistently oriented edge, a semi-sharp edge or vertex, a smooth feature vertex with
+  // one face on a side, or a corner with more than one face between two of its feature edges
+  // — the cases the masks do not cover. A dart (one feature edge at a vertex) is a smooth
+  // vertex, its sector closed.
   // `normals`: the limit's unit normal per vertex (xyz; zero where none), onto whose plane
   // the corner tangents of vertices with one tangent plane are projected; may be empty.
   QuadMesh(const Level& level, std::span<const double> positions, BoundaryInterpolation boundary,
@@ -67,6 +68,13 @@ public:
   }
   // Whether edge k of face f (corner k to k + 1) is a boundary or infinitely sharp edge.
   bool feature(Index f, int k) const;
+  // Whether the edge from corner k of f towards corner k + 1 (towards_next) or k - 1 is a
+  // feature curve at that corner: a feature edge whose corner is not a dart. (The Gregory
+  // patches take a dart's edge points as a smooth vertex's on every edge, the crease's too,
+  // so that its tangents keep the ring's relation the face points rely on.)
+  bool curve_at(Index f, int k, bool towards_next) const {
+    return feature(f, towards_next ? k : k + 3) && !sector(f, k).closed;
+  }
   // The face and corner where the directed edge a -> b starts (the edge must exist).
   std::pair<Index, int> face_of(Index a, Index b) const { return edge_.at(key(a, b)); }
   const Sector& sector(Index f, int k) const { return sectors_[4 * size_t(f) + size_t(((k % 4) + 4) % 4)]; }

@@ -49,7 +49,7 @@ Point3 limit_position(std::span<const double> limits, Index v) {
 // which keeps t_(j-1) + t_(j+1) = 2 cos(pi / k) t_j inside a sector of k faces.
 Point3 edge_point(const QuadMesh& m, std::span<const double> limits, Index f, int k, bool towards_next) {
   const Index v = m.vertex(f, k);
-  if (m.feature(f, towards_next ? k : k + 3))
+  if (m.curve_at(f, k, towards_next))
     return (1.0 / 3) * (2.0 * m.point(v) + m.point(m.vertex(f, towards_next ? k + 1 : k + 3)));
   if (!m.sector(f, k).closed) return limit_position(limits, v) + (1.0 / 3) * m.corner_tangent(f, k, towards_next);
   const int n = m.sector(f, k).faces;

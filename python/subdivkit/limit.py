@@ -216,9 +216,10 @@ class LimitSurface:
         semi-sharp creases and corners are read on the level where every face is a quad and
         the tags have decayed (one step, or ceil(sharpness) steps), one patch per face there;
         boundaries and infinitely sharp creases where the scheme's are the cubic B-spline's
-        (darts and a crease with one face on a side are refused, naming the place). Exact where every
-        corner is regular (valence 4 inside, two faces on each side of a boundary or crease,
-        a corner of one face). point_data: "Normals" (of the tangent patches: continuous across edges),
+        (a crease with one face on a side is refused, naming the place); darts take the
+        smooth vertex's masks. Exact where every corner is regular (valence 4 inside, two
+        faces on each side of a boundary or crease, a corner of one face). point_data:
+        "Normals" (of the tangent patches: continuous across edges),
         "base_face", "uv", "limit_distance" (to the exact limit at the same (face, u, v));
         cell_data: "base_face", "limit_distance" (the largest over the base face's samples).
         """
@@ -234,8 +235,8 @@ class LimitSurface:
         One patch per quad of a manifold mesh, for a scheme whose limit over regular
         quads is the bicubic B-spline (else subdivkit.Error says why); faces that are not
         quads, semi-sharp tags, boundaries and infinitely sharp creases as approximate_bezier
-        covers them (darts and a crease with one face on a side are refused, naming the place). Exact where every
-        corner is regular; elsewhere the patches meet with one normal across every edge that
+        covers them (a crease with one face on a side is refused, naming the place); darts
+        take the smooth vertex's masks. Exact where every corner is regular; elsewhere the patches meet with one normal across every edge that
         is not a crease (G1) and their corners are the limit's positions and tangent planes. point_data: "Normals"
         (the patches' own), "base_face", "uv", "limit_distance" (to the exact limit at the
         same (face, u, v)); cell_data: "base_face", "limit_distance" (the largest over the

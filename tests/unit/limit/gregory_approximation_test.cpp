@@ -11,6 +11,7 @@
 #include <vtkDataArray.h>
 #include <vtkPointData.h>
 
+#include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/pipeline/approximation_request.h"
 #include "framework/util/error.h"
 #include "support/cli_checks.h"
@@ -232,13 +233,69 @@ TEST_CASE("Gregory patches at boundaries, infinitely sharp creases and corners: 
   CHECK(e.largest_angle < 1e-12);
 }
 
+TEST_CASE("darts take the smooth vertex's masks: corners and tangent planes the limit's, C0 everywhere, G1 off the "
+          "crease") {
+  // A crease of two infinitely sharp edges ending inside a bumpy torus: vertices 0 and 2 are darts.
+  const PreparedEvaluation p = prepared(limit_test::bumpy(test::torus(8, 6)), {{0, 1, 10}, {1, 2, 10}});
+  const Level& base = p.surface->base();
+  const GregoryApproximation gregory = gregory_approximation_patches(p);
+  const BezierApproximation bezier = approximation_patches(p);
+  limit_test::FacePoints corners;
+  for (Index f = 0; f < base.face_count(); ++f)
+    for (const auto& [u, v] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}})
+      corners.faces.push_back(f), corners.uv.push_back(u), corners.uv.push_back(v);
+  CHECK(approximate_points(p, gregory, corners.faces, corners.uv).distances.largest < 1e-12);
+  CHECK(approximate_points(p, bezier, corners.faces, corners.uv).distances.largest < 1e-12);
+  const EdgeSides g = compare_edges(
+      base, [&](Index f, double u, double v) { return evaluate_gregory(gregory.patches[size_t(f)], u, v); });
+  CHECK(g.largest_position < 1e-14);
+  CHECK(g.largest_angle < 1e-12);  // across every edge but the crease's
+  // The Bézier mode's normals are its tangent patches' (compared in place of the geometry's).
+  const EdgeSides b = compare_edges(base, [&](Index f, double u, double v) {
+    PatchSample s = evaluate_patch(bezier.patches[size_t(f)], u, v);
+    s.geometry_du = s.du, s.geometry_dv = s.dv;
+    return s;
+  });
+  CHECK(b.largest_position < 1e-14);
+  CHECK(b.largest_angle < 1e-12);
+  // At the darts the patches' normal is the limit's (its limit masks' tangent plane, Halstead,
+  // Kass & DeRose 1993), from every face.
+  LimitOptions options;
+  const LimitResult limits = limit_positions(*p.scheme, base, p.mesh.positions, options);
+  int dart_corners = 0;
+  for (Index dart : {Index(0), Index(2)}) {
+    REQUIRE(limits.normal_exact[size_t(dart)]);
+    const std::array<double, 3> exact{limits.normals[3 * size_t(dart)], limits.normals[3 * size_t(dart) + 1],
+                                      limits.normals[3 * size_t(dart) + 2]};
+    for (Index f = 0; f < base.face_count(); ++f)
+      for (int k = 0; k < 4; ++k) {
+        if (base.face_vertices[size_t(4 * f + k)] != dart) continue;
+        const auto uv = limit_test::quad_edge_point(k, 0.0);
+        const PatchSample s = evaluate_gregory(gregory.patches[size_t(f)], uv[0], uv[1]);
+        CHECK(angle(normal(s.geometry_du, s.geometry_dv), exact) < 1e-10);
+        ++dart_corners;
+      }
+  }
+  CHECK(dart_corners == 8);
+  ApproximationDistances dg, db;
+  (void)approximated_limit_mesh(p, gregory, 6, dg);
+  (void)approximated_limit_mesh(p, bezier, 6, db);
+  MESSAGE("torus with a dart: largest, mean distance: Gregory ", dg.largest, ", ", dg.mean, "; Bezier ", db.largest,
+          ", ", db.mean);
+}
+
 TEST_CASE("what the Gregory patches do not cover is refused, naming the place") {
   const test::Mesh torus = test::torus(6, 5);
-  CHECK_THROWS_WITH_AS(gregory_approximation_patches(prepared(torus, {CreaseTag{0, 1, 10.0}})),
-                       doctest::Contains("ends a crease (a dart)"), Error);
-  // A dart that stays one after two steps (sharpness 10 decays by one a step): named on the refined level.
-  CHECK_THROWS_WITH_AS(gregory_approximation_patches(prepared(torus, {CreaseTag{0, 1, 10.0}, CreaseTag{1, 2, 2.5}})),
-                       doctest::Contains("on level 3 (the mesh refined 3 times"), Error);
+  // The cube's top square as an infinitely sharp crease keeps a crease vertex with one face on
+  // a side at every level; with a semi-sharp edge below, the refusal names the refined level.
+  const test::Mesh cube = test::cube();
+  std::vector<CreaseTag> creases = limit_test::creases_along(cube, [](Index a, Index b) { return a >= 4 && b >= 4; });
+  creases.push_back({0, 1, 1.5});
+  CHECK_THROWS_WITH_AS(gregory_approximation_patches(prepared(cube, creases)),
+                       doctest::Contains("on level 2 (the mesh refined 2 times"), Error);
+  CHECK_THROWS_WITH_AS(gregory_approximation_patches(prepared(cube, creases)),
+                       doctest::Contains("only one face on a side"), Error);
+  (void)torus;
 }
 
 TEST_CASE("subdiv evaluate --approximate gregory writes the patches, their normals and distances") {
