@@ -25,9 +25,11 @@
 // next to them is the B-spline patch with phantom points (bezier_features_unsupported):
 // - edge point on a boundary or crease edge v-w: (2 v + w) / 3, the cubic B-spline curve's;
 // - interior point next to v: as above with n twice the faces of v's sector (4 at a regular
-//   boundary), or 4 at a corner of one face;
+//   boundary), or 2 pi k / alpha at a corner of k faces whose sector spans alpha = pi / 2
+//   (convex) or 3 pi / 2 (concave) in the parameter plane (4 at a corner of one face);
 // - corner derivatives: the feature curve's tangent and the cross tangent of Biermann,
-//   Levin & Zorin (2000), combined along each edge of the sector.
+//   Levin & Zorin (2000), combined along each edge of the sector; at a corner the two
+//   curves' tangents, blended along the inner edges as at a corner of angle alpha.
 // So faces whose corners are all regular — valence 4 inside, two faces on each side of a
 // boundary or crease, one face at a corner — get the exact limit there too.
 #include <array>
@@ -82,8 +84,7 @@ struct VertexLimits {
 // (another scheme; a boundary vertex with three or more faces).
 // Throws subdiv::Error naming the first face or edge the masks do not cover (a face that is
 // not a quad, a non-manifold edge, a semi-sharp edge or corner, a boundary or crease with one
-// face on a side, a corner with more than one face between feature edges, a boundary when
-// `boundary` is None). A dart takes the smooth vertex's masks, as the scheme's dart rule does.
+// face on a side, a corner inside the surface, a boundary when `boundary` is None). A dart takes the smooth vertex's masks, as the scheme's dart rule does.
 std::vector<BezierPatch> bezier_patches(const Level& topology, std::span<const double> positions,
                                         BoundaryInterpolation boundary, const VertexLimits& limits);
 

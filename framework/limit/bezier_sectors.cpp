@@ -15,15 +15,30 @@ bool semi_sharp(float s) { return s > 0.f && s < kInfinitelySharp; }
 
 // The valence the interior-point mask takes at a corner: the vertex's own inside the
 // surface; twice the faces of its sector on a boundary or crease (the sector mirrored across
-// its feature edges: 4 at a regular boundary); 4 at a corner of one face (the B-spline
-// patch with phantom points 2 v - w, whose interior point is (4 v + 2 e_a + 2 e_b + d) / 9).
-double mask_valence(const Sector& s) { return s.closed ? s.faces : s.corner ? 4 : 2 * s.faces; }
+// its feature edges: 4 at a regular boundary); at a corner the faces a whole turn would hold
+// at the sector's angle per face, 2 pi k / angle: 4 at a convex corner of one face (the
+// B-spline patch with phantom points 2 v - w, whose interior point is
+// (4 v + 2 e_a + 2 e_b + d) / 9), 4 at a concave corner of three.
+double mask_valence(const Sector& s) {
+  if (s.closed) return s.faces;
+  return s.corner ? 2 * std::numbers::pi * s.faces / s.angle : 2 * s.faces;
+}
+
+// The angle at v between its edges to a and b, in the control mesh.
+double angle_at(const Point3& v, const Point3& a, const Point3& b) {
+  const Point3 x = a - v, y = b - v;
+  const double dot = x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+  const Point3 cross{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+  return std::atan2(std::hypot(cross[0], cross[1], cross[2]), dot);
+}
 
 }  // namespace
 
 double tangent_cosine(const Sector& s) {
   if (s.closed) return s.faces == 4 ? 0.0 : std::cos(2 * std::numbers::pi / s.faces);
-  return s.faces == 2 || s.corner ? 0.0 : std::cos(std::numbers::pi / s.faces);
+  if (!s.corner) return s.faces == 2 ? 0.0 : std::cos(std::numbers::pi / s.faces);
+  const double theta = s.angle / s.faces;  // pi / 2 (0 exactly) at the regular corners: 1 convex face, 3 concave
+  return std::abs(theta - std::numbers::pi / 2) < 1e-12 ? 0.0 : std::cos(theta);
 }
 
 Point3 interior_point(const QuadMesh& m, Index f, int k) {
@@ -64,8 +79,8 @@ std::pair<Index, int> QuadMesh::step_back(Index f, int k) const {
 // The masks (bezier_approximation.cpp) cover: interior vertices without tags; vertices with
 // exactly two feature edges and at least two faces between them on each side (a boundary,
 // or a crease passing through); corners (a tagged corner, a boundary vertex of one face
-// with corners kept, more than two feature edges) with one face between consecutive feature
-// edges. Each refusal names the first face where it happens.
+// with corners kept, more than two feature edges) on a boundary or crease; darts. Each
+// refusal names the first face where it happens.
 void QuadMesh::find_sectors() {
   if (boundary_ == BoundaryInterpolation::None)
     for (Index e = 0; e < level_.edge_count(); ++e)
@@ -90,13 +105,12 @@ void QuadMesh::find_sectors() {
       const Sector s = find_sector(f, k);
       const char* why = nullptr;
       if (s.closed && s.corner) why = "is a corner inside the surface (a cone point)";
-      else if (!s.closed && s.corner && s.faces > 1) why = "is a corner with more than one face between two feature edges";
       else if (!s.closed && !s.corner && s.faces < 2) why = "is on a boundary or crease with only one face on a side";
       if (why)
         throw Error(fmt::format("face {}: vertex {} {}: Loop & Schaefer's masks are built here for smooth vertices, "
-                                "boundaries and creases with two or more faces on each side, and corners with one "
-                                "face between feature edges, and refining keeps a vertex's faces; evaluate the exact "
-                                "limit instead (without --approximate)",
+                                "boundaries and creases with two or more faces on each side, and corners, and "
+                                "refining keeps a vertex's faces; evaluate the exact limit instead (without "
+                                "--approximate)",
                                 f, v, why));
       sectors_.push_back(s);
     }
@@ -124,12 +138,15 @@ Sector QuadMesh::find_sector(Index f, int k) const {
     std::tie(g, c) = step_back(g, c);
     ++s.index;
   }
-  g = f, c = k;
-  s.faces = s.index + 1;
+  s.faces = 1;
+  double mesh_angle = angle_at(point(v), point(vertex(g, c + 1)), point(vertex(g, c + 3)));
   while (!feature(g, c + 3)) {  // on to E_faces
     std::tie(g, c) = step_forward(g, c);
+    mesh_angle += angle_at(point(v), point(vertex(g, c + 1)), point(vertex(g, c + 3)));
     ++s.faces;
   }
+  const double pi = std::numbers::pi;
+  s.angle = !s.corner ? pi : mesh_angle <= pi ? pi / 2 : 3 * pi / 2;
   return s;
 }
 
@@ -152,8 +169,11 @@ Sector QuadMesh::find_sector(Index f, int k) const {
 // At k = 2 these are the B-spline patch's derivatives with phantom points across the feature
 // edges, and t_(j-1) + t_(j+1) = 2 cos(pi / k) t_j along the interior edges.
 //
-// Corners (one face between two feature edges, the corner kept): E_j - v, the B-spline
-// curve's tangent with its end interpolated (phantom point 2 v - E_j).
+// Corners (the vertex kept, k faces between two feature edges): along the feature edges
+// E_0 - v and E_k - v, the B-spline curves' tangents with their ends interpolated (phantom
+// points 2 v - E); between them t_j = (sin((k - j) theta) t_0 + sin(j theta) t_k) / sin(k theta),
+// theta = angle / k: the tangents of a corner of that angle in the parameter plane (Biermann,
+// Levin & Zorin 2000), which satisfy t_(j-1) + t_(j+1) = 2 cos(theta) t_j.
 //
 // A boundary vertex's sides: t_j is linear in T1 and T2, so the projection onto the limit's
 // tangent plane (corner_tangent) keeps t_(j-1) + t_(j+1) = 2 c t_j, and with it the normal
@@ -178,6 +198,19 @@ Point3 QuadMesh::projected(Index v, const Point3& t) const {
   return t - along * n;
 }
 
+Point3 QuadMesh::corner_sector_tangent(Index first_face, int first_corner, const Sector& s, int j) const {
+  const Index v = vertex(first_face, first_corner);
+  const Point3 first = point(vertex(first_face, first_corner + 1)) - point(v);
+  if (j == 0) return first;
+  Index g = first_face;
+  int c = first_corner;
+  for (int i = 1; i < s.faces; ++i) std::tie(g, c) = step_forward(g, c);
+  const Point3 last = point(vertex(g, c + 3)) - point(v);
+  if (j == s.faces) return last;
+  const double theta = s.angle / s.faces;
+  return (1.0 / std::sin(s.angle)) * (std::sin((s.faces - j) * theta) * first + std::sin(j * theta) * last);
+}
+
 Point3 QuadMesh::mask_tangent(Index f, int k, bool towards_next, const Sector& s) const {
   const double pi = std::numbers::pi;
   const Index v = vertex(f, k);
@@ -197,12 +230,12 @@ Point3 QuadMesh::mask_tangent(Index f, int k, bool towards_next, const Sector& s
     return t;
   }
   const int j = s.index + (towards_next ? 0 : 1);
-  if (s.corner) return point(vertex(f, towards_next ? k + 1 : k + 3)) - point(v);
   // The sector's faces f_0 .. f_(k-1) from E_0 on.
   Index g = f;
   int corner = k;
   for (int i = 0; i < s.index; ++i) std::tie(g, corner) = step_back(g, corner);
   const int faces = s.faces;
+  if (s.corner) return corner_sector_tangent(g, corner, s, j);
   const double theta = pi / faces, ct = std::cos(theta), st = std::sin(theta);
   const double denominator = faces * (3 + ct), r = (1 + ct) / st;
   Point3 first{}, last{}, cross = (4 * r * (ct - 1) / denominator) * point(v);

@@ -31,10 +31,15 @@ struct Sector {
   int index = 0;  // the corner's face is f_index: its edge to the next corner is E_index
   bool closed = false;
   bool corner = false;  // the vertex is kept as a corner (its limit is itself)
+  // The sector's angle in the patches' parameter plane: 2 pi closed, pi on a boundary or
+  // crease; at a corner pi / 2 (convex) or 3 pi / 2 (concave), as Biermann, Levin & Zorin
+  // (2000) take corners, chosen by the control mesh's angle at the vertex (the sum of its
+  // faces' angles there below or above pi).
+  double angle = 0;
 };
 
 // cos(2 pi / n) at an interior vertex of valence n, cos(pi / k) on a boundary or crease with
-// k faces on the side: the factor in t_(i-1) + t_(i+1) = 2 c t_i between the tangents along
+// k faces on the side, cos(angle / k) at a corner of k faces: the factor in t_(i-1) + t_(i+1) = 2 c t_i between the tangents along
 // consecutive edges of the sector (0 where the sector is regular), which the tangent patches
 // (Loop & Schaefer 2008) and the Gregory patches' face points (Loop, Schaefer, Ni & Castaño
 // 2009) rely on.
@@ -51,8 +56,7 @@ class QuadMesh {
 public:
   // Throws subdiv::Error naming the face for a face that is not a quad, a non-manifold or
   // inconsistently oriented edge, a semi-sharp edge or vertex, a smooth feature vertex with
-  // one face on a side, or a corner with more than one face between two of its feature edges
-  // — the cases the masks do not cover. A dart (one feature edge at a vertex) is a smooth
+  // one face on a side, or a corner inside the surface — the cases the masks do not cover. A dart (one feature edge at a vertex) is a smooth
   // vertex, its sector closed.
   // `normals`: the limit's unit normal per vertex (xyz; zero where none), onto whose plane
   // the corner tangents of vertices with one tangent plane are projected; may be empty.
@@ -98,6 +102,8 @@ private:
   // Across the edge to corner k + 1 (one step back in walk order).
   std::pair<Index, int> step_back(Index f, int k) const;
   Point3 mask_tangent(Index f, int k, bool towards_next, const Sector& s) const;
+  // The tangent along E_j of a corner's sector whose first face (f_0) has v at first_corner.
+  Point3 corner_sector_tangent(Index first_face, int first_corner, const Sector& s, int j) const;
 
   const Level& level_;
   std::span<const double> positions_;

@@ -57,8 +57,8 @@ struct GregoryPatch {
 // `limits.positions`, corner tangents projected onto the planes of `limits.normals` as
 // bezier_patches does. Throws subdiv::Error naming the first face or edge the masks do not
 // cover, as bezier_patches does (a face that is not a quad, a non-manifold edge, a
-// semi-sharp edge or corner, a boundary or crease with one face on a side, a corner with
-// more than one face between feature edges, a boundary when `boundary` is None).
+// semi-sharp edge or corner, a boundary or crease with one face on a side, a corner inside
+// the surface, a boundary when `boundary` is None).
 std::vector<GregoryPatch> gregory_patches(const Level& topology, std::span<const double> positions,
                                           BoundaryInterpolation boundary, const VertexLimits& limits);
 

@@ -284,6 +284,56 @@ TEST_CASE("darts take the smooth vertex's masks: corners and tangent planes the 
           ", ", db.mean);
 }
 
+TEST_CASE("corners of several faces: boundary curves exact, C0 everywhere, G1 across every inner edge") {
+  // The plane with a square hole, its hole's corners (three faces each, concave) and a vertex
+  // of its straight outer boundary (two faces) tagged as corners; and a triangulated grid
+  // split into quads, whose corner vertices with two quads (convex) are tagged.
+  const test::Mesh hole = limit_test::bumpy_plane_with_hole();
+  const test::Mesh split = limit_test::bumpy(quad_split(test::grid(3, 3, true)));
+  std::vector<CornerTag> hole_corners, split_corners;
+  for (Index v : {Index(6), Index(8), Index(16), Index(18), Index(5)}) hole_corners.push_back({v, 10});
+  const Level split_level = prepare_evaluation([&] {
+                              EvaluateRequest r;
+                              r.mesh = test::mesh_data(split);
+                              r.scheme.text = "catmull-clark";
+                              return r;
+                            }()).surface->base();
+  for (Index v = 0; v < split_level.vertex_count; ++v)
+    if (split_level.on_boundary(v) && split_level.incident_face_count(v) == 2 &&
+        std::abs(split.positions[3 * size_t(v)] - 1.5) == 1.5 && std::abs(split.positions[3 * size_t(v) + 1] - 1.5) == 1.5)
+      split_corners.push_back({v, 10});
+  REQUIRE(split_corners.size() == 2);  // the two grid corners the diagonals leave with two triangles
+  for (const auto& [mesh, corners] : {std::pair{hole, hole_corners}, std::pair{split, split_corners}}) {
+    EvaluateRequest r;
+    r.mesh = test::mesh_data(mesh);
+    r.mesh.corners = corners;
+    r.scheme.text = "catmull-clark";
+    const PreparedEvaluation p = prepare_evaluation(std::move(r));
+    const Level& base = p.surface->base();
+    const GregoryApproximation gregory = gregory_approximation_patches(p);
+    const BezierApproximation bezier = approximation_patches(p);
+    const auto [faces, uv] = limit_test::boundary_edge_points(base, {0.0, 0.2, 0.5, 0.9, 1.0});
+    CHECK(approximate_points(p, gregory, faces, uv).distances.largest < 1e-12);
+    CHECK(approximate_points(p, bezier, faces, uv).distances.largest < 1e-12);
+    const EdgeSides g = compare_edges(
+        base, [&](Index f, double u, double v) { return evaluate_gregory(gregory.patches[size_t(f)], u, v); });
+    CHECK(g.largest_position < 1e-14);
+    CHECK(g.largest_angle < 1e-12);
+    const EdgeSides b = compare_edges(base, [&](Index f, double u, double v) {
+      PatchSample s = evaluate_patch(bezier.patches[size_t(f)], u, v);
+      s.geometry_du = s.du, s.geometry_dv = s.dv;  // the tangent patches' normal
+      return s;
+    });
+    CHECK(b.largest_position < 1e-14);
+    CHECK(b.largest_angle < 1e-12);
+    ApproximationDistances dg, db;
+    (void)approximated_limit_mesh(p, gregory, 6, dg);
+    (void)approximated_limit_mesh(p, bezier, 6, db);
+    MESSAGE(base.vertex_count, " vertices, corners of several faces: largest, mean distance: Gregory ", dg.largest,
+            ", ", dg.mean, "; Bezier ", db.largest, ", ", db.mean);
+  }
+}
+
 TEST_CASE("what the Gregory patches do not cover is refused, naming the place") {
   const test::Mesh torus = test::torus(6, 5);
   // The cube's top square as an infinitely sharp crease keeps a crease vertex with one face on
