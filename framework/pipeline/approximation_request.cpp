@@ -78,7 +78,7 @@ bool has_boundary_or_crease(const Level& level) {
 }
 
 // What neither approximation covers, refused with `option` (--approximate bezier or gregory):
-// the scheme, a sequence, rational weights, holes, and with boundaries or creases a scheme
+// the scheme, a sequence, rational weights, and with boundaries or creases a scheme
 // that does not refine them as the masks assume.
 void check_approximable(const PreparedEvaluation& prepared, const char* option) {
   const std::string why = bezier_approximation_unsupported(prepared.scheme);
@@ -95,8 +95,6 @@ void check_approximable(const PreparedEvaluation& prepared, const char* option) 
     throw Error(fmt::format("{}: the mesh has rational weights; the patches are built from the polynomial "
                             "limit's masks (drop the weights)",
                             option));
-  if (!prepared.mesh.holes.empty())
-    throw Error(fmt::format("{}: the mesh has holes; the patches cover every face (drop the hole tags)", option));
   if (has_boundary_or_crease(prepared.surface->base()))
     if (const std::string why = bezier_features_unsupported(prepared.scheme, prepared.surface->options().features);
         !why.empty())
@@ -173,7 +171,10 @@ Approximation<Patch> built_patches(const PreparedEvaluation& prepared, const cha
   } catch (const Error& e) {
     throw Error(fmt::format("{}: {}{}", option, refined_level_prefix(a.steps), e.what()));
   }
-  for (Index f = 0; f < Index(a.patches.size()); ++f) a.base_face.push_back(a.mesh->base_face(f));
+  for (Index f = 0; f < Index(a.patches.size()); ++f) {
+    a.base_face.push_back(a.mesh->base_face(f));
+    a.in_hole.push_back(base.is_hole(a.base_face.back()));
+  }
   return a;
 }
 
@@ -254,13 +255,16 @@ std::string bezier_control_net_vtu(const BezierApproximation& approximation, std
   static constexpr int order[16][2] = {{0, 0}, {3, 0}, {3, 3}, {0, 3}, {1, 0}, {2, 0}, {3, 1}, {3, 2},
                                        {1, 3}, {2, 3}, {0, 1}, {0, 2}, {1, 1}, {2, 1}, {1, 2}, {2, 2}};
   std::string points, connectivity, offsets, types, degrees, faces, distances;
+  size_t written = 0;
   for (size_t p = 0; p < patches.size(); ++p) {
+    if (approximation.in_hole[p]) continue;
+    const size_t cell = written++;
     for (int k = 0; k < 16; ++k) {
       const Point3& b = patches[p].geometry[size_t(order[k][1] * 4 + order[k][0])];
       points += fmt::format("{} {} {}\n", b[0], b[1], b[2]);
-      connectivity += fmt::format("{} ", 16 * p + size_t(k));
+      connectivity += fmt::format("{} ", 16 * cell + size_t(k));
     }
-    offsets += fmt::format("{} ", 16 * (p + 1));
+    offsets += fmt::format("{} ", 16 * (cell + 1));
     types += "77 ";  // VTK_BEZIER_QUADRILATERAL
     degrees += "3 3 0 ";
     const Index base = approximation.base_face[p];
@@ -284,7 +288,7 @@ std::string bezier_control_net_vtu(const BezierApproximation& approximation, std
       "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">{}</DataArray>\n</Cells>\n"
       "<CellData HigherOrderDegrees=\"HigherOrderDegrees\">\n{}</CellData>\n"
       "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n",
-      16 * patches.size(), patches.size(), points, connectivity, offsets, types, cells);
+      16 * written, written, points, connectivity, offsets, types, cells);
 }
 
 }  // namespace subdiv

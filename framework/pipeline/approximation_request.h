@@ -2,6 +2,7 @@
 // The limit surface approximated by Loop & Schaefer's bicubic patches (limit/bezier_approximation.h),
 // as every front-end asks for it (`subdiv evaluate --approximate bezier`), measured against
 // the exact limit (limit/limit_surface.h) at the same (face, u, v): the distance no library shows.
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -25,6 +26,10 @@ template <typename Patch>
 struct Approximation {
   std::vector<Patch> patches;    // one per face of the mesh they are built on
   std::vector<Index> base_face;  // per patch: the base face it lies in
+  // Per patch: 1 where its base face is a hole. A hole removes faces, not rules: every patch
+  // is built as on the mesh without the tags, and a hole's patches are never sampled or
+  // written.
+  std::vector<std::uint8_t> in_hole;
   int steps = 0;                 // uniform steps from the base mesh to the patches' mesh
   std::shared_ptr<const RefinedControlMesh> mesh;
 };
@@ -33,8 +38,8 @@ using GregoryApproximation = Approximation<GregoryPatch>;
 
 // The patches of a prepared surface. Throws subdiv::Error saying why they cannot be built:
 // the scheme (bezier_approximation_unsupported; with boundaries or creases also
-// bezier_features_unsupported), a sequence, rational weights, holes, or a face or edge the
-// masks do not cover (bezier_patches: naming it, on the refined level when steps > 0).
+// bezier_features_unsupported), a sequence, rational weights, or a face or edge the masks do
+// not cover (bezier_patches: naming it, on the refined level when steps > 0).
 BezierApproximation approximation_patches(const PreparedEvaluation& prepared);
 
 // Loop, Schaefer, Ni & Castaño's Gregory patches of a prepared surface
@@ -86,7 +91,7 @@ std::string approximation_summary(const ApproximationDistances& d, Approximation
 // The geometry patches as a VTK XML unstructured grid (.vtu, ASCII) of Bézier quadrilaterals
 // (VTK_BEZIER_QUADRILATERAL, degree 3 x 3 in the cell array HigherOrderDegrees; VTK's
 // point order: corners, edges, interior), with the cell arrays base_face and, when given
-// (one per base face), limit_distance, the base face's. ParaView (5.5+) shows them as
+// (one per base face), limit_distance, the base face's; holes' patches left out. ParaView (5.5+) shows them as
 // curved patches.
 std::string bezier_control_net_vtu(const BezierApproximation& patches, std::span<const double> limit_distance);
 

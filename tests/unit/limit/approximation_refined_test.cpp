@@ -5,7 +5,8 @@
 // limit: where every vertex of the refined level is regular the patches are its bicubic
 // B-spline patches, so the approximation is the limit itself; elsewhere every patch corner is
 // a vertex of the refined level, whose limit point the corner takes (Loop & Schaefer 2008),
-// and neighbouring faces meet along their shared edges.
+// and neighbouring faces meet along their shared edges. Holes remove faces, not rules: the
+// kept faces have the patches of the mesh without the tags.
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -220,4 +221,33 @@ TEST_CASE("subdiv evaluate --approximate bezier on a mesh with triangles writes 
   for (vtkIdType c = 0; c < net->GetNumberOfCells(); ++c) CHECK(base_face->GetTuple1(c) <= 4);
   const auto g = test::run_subdiv("evaluate " + mesh + " --approximate gregory --samples 2 -o " + (dir / "g.vtp").string());
   CHECK_MESSAGE(g.exit_code == 0, g.output);
+}
+
+TEST_CASE("holes: the kept faces have the untagged mesh's patches, the hole's are neither sampled nor written") {
+  const test::Mesh cube = limit_test::bumpy(test::cube());
+  std::vector<CreaseTag> creases = {{0, 1, 1.5}};  // and a semi-sharp edge: patches two steps down
+  EvaluateRequest r;
+  r.mesh = test::mesh_data(cube);
+  r.mesh.creases = creases;
+  r.mesh.holes = {5};
+  r.scheme.text = "catmull-clark";
+  const PreparedEvaluation holed = prepare_evaluation(std::move(r));
+  const PreparedEvaluation whole = prepared(cube, creases);
+  const limit_test::FacePoints points = limit_test::random_face_points(200, 5, 3);  // faces 0-4, kept
+  for (const bool gregory : {false, true}) {
+    const auto positions = [&](const PreparedEvaluation& p) {
+      return gregory ? approximate_points(p, gregory_approximation_patches(p), points.faces, points.uv).positions
+                     : approximate_points(p, approximation_patches(p), points.faces, points.uv).positions;
+    };
+    CHECK(limit_test::distance(positions(holed), positions(whole)) == 0);
+  }
+  ApproximationDistances d;
+  const MeshData sampled = approximated_limit_mesh(holed, approximation_patches(holed), 4, d);
+  CHECK(sampled.face_count() == 5 * 16);
+  CHECK(d.per_face[5] == 0);  // no samples
+  CHECK_THROWS_AS(approximate_points(holed, approximation_patches(holed), std::vector<Index>{5},
+                                     std::vector<double>{0.5, 0.5}),
+                  Error);
+  const std::string net = bezier_control_net_vtu(approximation_patches(holed), d.per_face);
+  CHECK(net.find("NumberOfCells=\"80\"") != std::string::npos);  // 5 faces x 16 patches (two steps)
 }
