@@ -1,6 +1,8 @@
 #include "framework/limit/tensor_patch.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "framework/limit/triangle_patch.h"
 
@@ -59,6 +61,40 @@ CornerRows tensor_rows(const std::vector<std::vector<double>>& rows, const Uv& s
     if (count == 6) add_weighted<6>(row, labels, w, out);
   }
   return r;
+}
+
+std::optional<BicubicLabels> bicubic_lattice_labels(const std::vector<std::vector<double>>& lattice) {
+  if (lattice.size() != size_t(kTensorLattice)) return std::nullopt;
+  const size_t L = lattice.front().size();
+  // The B-spline functions' values at the lattice.
+  std::array<BsplineWeights, kTensorLattice> reference;
+  for (int q = 0; q < kTensorLattice; ++q) reference[size_t(q)] = bspline_weights(tensor_lattice_point(q));
+  constexpr double kTolerance = 1e-12;
+  std::array<Index, 16> grid{};
+  std::array<bool, 16> taken{};
+  for (size_t l = 0; l < L; ++l) {
+    const auto off = [&](auto value) {
+      double worst = 0;
+      for (size_t q = 0; q < size_t(kTensorLattice); ++q) worst = std::max(worst, std::fabs(lattice[q][l] - value(q)));
+      return worst;
+    };
+    if (off([](size_t) { return 0.0; }) <= kTolerance) continue;
+    size_t k = 0;
+    while (k < 16 && off([&](size_t q) { return reference[q].position[k]; }) > kTolerance) ++k;
+    if (k == 16 || taken[k]) return std::nullopt;
+    taken[k] = true;
+    grid[k] = Index(l);
+  }
+  if (std::find(taken.begin(), taken.end(), false) != taken.end()) return std::nullopt;
+  return bicubic_labels(grid);
+}
+
+PolynomialPatch tensor_patch(std::vector<std::vector<double>> lattice) {
+  PolynomialPatch p;
+  if (lattice.empty()) return p;
+  p.bicubic = bicubic_lattice_labels(lattice);
+  p.lattice = std::move(lattice);
+  return p;
 }
 
 }  // namespace subdiv
