@@ -1050,19 +1050,23 @@ struct LimitSurface::Impl {
   }
 
   // A descent's end in a bicubic B-spline patch: the patch's weights applied to the values
-  // carried down (bspline_sample) where finish() would apply its rows to them (nothing to
-  // pull back, or only first derivatives on a short path): the same products in the same
+  // carried down (bspline_sample) where finish() would apply its rows to them (forward_factor:
+  // a short path, shorter for second derivatives): the same products in the same
   // order, the same bits, without the rows over every label. Otherwise finish() of the rows.
   static LimitSample bspline_end(const BicubicLabels& b, const FacePoint& p, const std::vector<double>& values,
                                  int channels, int derivatives, const std::vector<const StepMatrix*>& path,
                                  const std::vector<double>& first_values, int iteration, DerivativeRows* rows_out) {
     const double factor = forward_factor(path);
-    if (!rows_out && (path.empty() || (derivatives <= 1 && factor > 0))) {
+    if (!rows_out && factor > 0 && (derivatives <= 1 || factor <= kSecondForwardFactor)) {
       LimitSample out;
       out.steps = iteration;
       bspline_sample(b.cell, [&](size_t l) { return b.label[l]; }, p, values, channels, derivatives, out);
-      if (out.has_derivatives && factor != 1)
-        for (size_t c = 0; c < out.du.size(); ++c) out.du[c] *= factor, out.dv[c] *= factor;
+      if (factor != 1) {
+        for (auto* r : {&out.du, &out.dv})
+          for (double& x : *r) x *= factor;
+        for (auto* r : {&out.duu, &out.duv, &out.dvv})
+          for (double& x : *r) x *= factor * factor;
+      }
       return out;
     }
     const CornerRows rows = bspline_rows(b.grid, p.st, Index(values.size() / size_t(channels)));
@@ -1074,7 +1078,13 @@ struct LimitSurface::Impl {
   // the carried values grows by that factor, at most kForwardFactor (a few bits), against
   // pulling the rows back through every step. Returns the factor, or 0 where the rows are
   // pulled back instead: a longer path, or a power of a step (whose derivative form differs).
+  // At the bicubic patch (bspline_end), whose weights are small, the second derivatives the
+  // same way, their rounding growing by the factor squared: at most kSecondForwardFactor (two
+  // binary steps). Elsewhere they are pulled back: a polynomial patch's lattice form has
+  // second-derivative weights of its Lagrange bases' size (Loop's boundary triangles lost
+  // 1e-12 against Bfr's exact patches applied forward).
   static constexpr double kForwardFactor = 16;
+  static constexpr double kSecondForwardFactor = 4;
   static double forward_factor(const std::vector<const StepMatrix*>& path) {
     double factor = 1;
     for (const StepMatrix* m : path) {
