@@ -1,9 +1,8 @@
 #include "framework/limit/tensor_patch.h"
 
-#include <algorithm>
 #include <array>
-#include <cmath>
 
+#include "framework/limit/lattice_functions.h"
 #include "framework/limit/triangle_patch.h"
 
 namespace subdiv {
@@ -65,27 +64,14 @@ CornerRows tensor_rows(const std::vector<std::vector<double>>& rows, const Uv& s
 
 std::optional<BicubicLabels> bicubic_lattice_labels(const std::vector<std::vector<double>>& lattice) {
   if (lattice.size() != size_t(kTensorLattice)) return std::nullopt;
-  const size_t L = lattice.front().size();
   // The B-spline functions' values at the lattice.
   std::array<BsplineWeights, kTensorLattice> reference;
   for (int q = 0; q < kTensorLattice; ++q) reference[size_t(q)] = bspline_weights(tensor_lattice_point(q));
-  constexpr double kTolerance = 1e-12;
+  const auto label =
+      lattice_functions<16>(lattice, [&](size_t q, size_t k) { return reference[q].position[k]; }, 1e-12);
+  if (!label) return std::nullopt;
   std::array<Index, 16> grid{};
-  std::array<bool, 16> taken{};
-  for (size_t l = 0; l < L; ++l) {
-    const auto off = [&](auto value) {
-      double worst = 0;
-      for (size_t q = 0; q < size_t(kTensorLattice); ++q) worst = std::max(worst, std::fabs(lattice[q][l] - value(q)));
-      return worst;
-    };
-    if (off([](size_t) { return 0.0; }) <= kTolerance) continue;
-    size_t k = 0;
-    while (k < 16 && off([&](size_t q) { return reference[q].position[k]; }) > kTolerance) ++k;
-    if (k == 16 || taken[k]) return std::nullopt;
-    taken[k] = true;
-    grid[k] = Index(l);
-  }
-  if (std::find(taken.begin(), taken.end(), false) != taken.end()) return std::nullopt;
+  for (size_t k = 0; k < 16; ++k) grid[k] = Index((*label)[k]);
   return bicubic_labels(grid);
 }
 
