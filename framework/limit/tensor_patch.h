@@ -28,9 +28,9 @@ CornerRows tensor_rows(const std::vector<std::vector<double>>& lattice, const Uv
 // label's lattice values are one uniform bicubic B-spline function's (bspline_patch.h) to
 // 1e-12, each function taken once, or all zero; empty otherwise. Both are polynomials of
 // degree at most 4 in each of s and t, so agreeing at the lattice they agree everywhere:
-// the patch is then the B-spline's, evaluated in closed form (where a node's own B-spline
-// check, limit_nodes.h, fails because a node it leads to is not a grid, as next to an
-// extraordinary vertex).
+// the patch is then the B-spline's, evaluated in closed form (nodes next to an
+// extraordinary vertex, which LimitNodes::bspline's check of every node they lead to does
+// not take).
 std::optional<BicubicLabels> bicubic_lattice_labels(const std::vector<std::vector<double>>& lattice);
 
 // The patch of a quad from its lattice rows, its B-spline labels found when it is one.
