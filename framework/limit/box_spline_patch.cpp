@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "framework/limit/lattice_functions.h"
 #include "framework/limit/triangle_patch.h"
 
 namespace subdiv {
@@ -173,24 +174,12 @@ std::optional<BoxSplineLabels> box_spline_labels(const std::vector<std::vector<d
   std::array<std::array<double, kBoxSplineFunctions>, kQuarticLattice> reference{};
   for (int q = 0; q < kQuarticLattice; ++q)
     sum_terms<kPosition>(Monomials(quartic_lattice_point(q), 4), reference[size_t(q)]);
-  constexpr double kTolerance = 1e-12;
+  const auto label = lattice_functions<kBoxSplineFunctions>(
+      lattice, [&](size_t q, size_t f) { return reference[q][f]; }, 1e-12);
+  if (!label) return std::nullopt;
   BoxSplineLabels out;
   out.labels = std::uint8_t(L);
-  std::array<bool, kBoxSplineFunctions> taken{};
-  for (size_t l = 0; l < L; ++l) {
-    const auto off = [&](auto value) {
-      double worst = 0;
-      for (size_t q = 0; q < size_t(kQuarticLattice); ++q) worst = std::max(worst, std::fabs(lattice[q][l] - value(q)));
-      return worst;
-    };
-    if (off([](size_t) { return 0.0; }) <= kTolerance) continue;
-    size_t f = 0;
-    while (f < size_t(kBoxSplineFunctions) && off([&](size_t q) { return reference[q][f]; }) > kTolerance) ++f;
-    if (f == size_t(kBoxSplineFunctions) || taken[f]) return std::nullopt;
-    taken[f] = true;
-    out.label[f] = std::uint8_t(l);
-  }
-  if (std::find(taken.begin(), taken.end(), false) != taken.end()) return std::nullopt;
+  for (size_t f = 0; f < size_t(kBoxSplineFunctions); ++f) out.label[f] = std::uint8_t((*label)[f]);
   for (size_t f = 0; f < size_t(kBoxSplineFunctions); ++f) out.by_label[f] = std::uint8_t(f);
   std::sort(out.by_label.begin(), out.by_label.end(),
             [&](std::uint8_t a, std::uint8_t b) { return out.label[a] < out.label[b]; });

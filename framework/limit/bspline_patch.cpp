@@ -1,5 +1,7 @@
 #include "framework/limit/bspline_patch.h"
 
+#include <algorithm>
+
 namespace subdiv {
 
 namespace {
@@ -34,6 +36,16 @@ BsplineWeights bspline_weights(const Uv& st) {
       w.dtt[k] = bs[a] * dtt[b];
     }
   return w;
+}
+
+BicubicLabels bicubic_labels(const std::array<Index, 16>& grid) {
+  BicubicLabels b;
+  b.grid = grid;
+  std::array<std::uint8_t, 16> cells;
+  for (size_t k = 0; k < 16; ++k) cells[k] = std::uint8_t(k);
+  std::sort(cells.begin(), cells.end(), [&](std::uint8_t x, std::uint8_t y) { return grid[x] < grid[y]; });
+  for (size_t l = 0; l < 16; ++l) b.cell[l] = cells[l], b.label[l] = grid[cells[l]];
+  return b;
 }
 
 CornerRows bspline_rows(const std::array<Index, 16>& grid, const Uv& st, Index labels) {

@@ -3,6 +3,7 @@
 // regular faces) of a 4 x 4 grid of control points, as rows over a node's labels: the
 // closed form limit_nodes.h finds for regular regions.
 #include <array>
+#include <cstdint>
 
 #include "framework/limit/corner_limit.h"
 
@@ -20,5 +21,14 @@ struct BsplineWeights {
   std::array<double, 16> position, ds, dt, dss, dst, dtt;
 };
 BsplineWeights bspline_weights(const Uv& st);
+
+// A patch's 16 control points among a node's labels: `grid` the label of each cell (row by
+// row from (-1, -1)); `label` the same labels in increasing order and `cell` the cell of
+// each, the order in which a sum over the node's labels meets them.
+struct BicubicLabels {
+  std::array<Index, 16> grid{}, label{};
+  std::array<std::uint8_t, 16> cell{};
+};
+BicubicLabels bicubic_labels(const std::array<Index, 16>& grid);
 
 }  // namespace subdiv

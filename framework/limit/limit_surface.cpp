@@ -911,13 +911,15 @@ struct LimitSurface::Impl {
                                   mask_error.empty() ? "" : ": ", mask_error));
       }
       if (closed_forms && !triangles)
-        if (const std::array<Index, 16>* grid = c.nodes->bspline(id)) {
-          const CornerRows rows = bspline_rows(*grid, p.st, Index(values.size() / size_t(channels)));
-          return finish(rows, p, values, channels, derivatives, path, first_values, iteration, rows_out);
-        }
+        if (const std::array<Index, 16>* grid = c.nodes->bspline(id))
+          return bspline_end(bicubic_labels(*grid), p, values, channels, derivatives, path, first_values, iteration,
+                             rows_out);
       if (closed_forms) {
         std::vector<int> stack;
         if (const auto* lattice = quartic(c, id, stack)) {
+          if (lattice->bicubic)
+            return bspline_end(*lattice->bicubic, p, values, channels, derivatives, path, first_values, iteration,
+                               rows_out);
           // Only the derivative rows asked for: finish() reads no others.
           const CornerRows rows =
               triangles ? quartic_rows(*lattice, p.st, derivatives) : tensor_rows(lattice->lattice, p.st, derivatives);
@@ -986,7 +988,7 @@ struct LimitSurface::Impl {
     stack.push_back(id);
     std::vector<std::vector<double>> rows = fit_quartic(c, id, stack);
     stack.pop_back();
-    c.nodes->set_quartic(id, triangles ? triangle_patch(std::move(rows)) : PolynomialPatch{std::move(rows), {}});
+    c.nodes->set_quartic(id, triangles ? triangle_patch(std::move(rows)) : tensor_patch(std::move(rows)));
     return c.nodes->quartic(id, untried);
   }
 
@@ -1047,6 +1049,77 @@ struct LimitSurface::Impl {
     return rows;
   }
 
+  // A descent's end in a bicubic B-spline patch: the patch's weights applied to the values
+  // carried down (bspline_sample) where finish() would apply its rows to them (forward_factor:
+  // a short path, shorter for second derivatives): the same products in the same
+  // order, the same bits, without the rows over every label. Otherwise finish() of the rows.
+  static LimitSample bspline_end(const BicubicLabels& b, const FacePoint& p, const std::vector<double>& values,
+                                 int channels, int derivatives, const std::vector<const StepMatrix*>& path,
+                                 const std::vector<double>& first_values, int iteration, DerivativeRows* rows_out) {
+    const double factor = forward_factor(path);
+    if (!rows_out && factor > 0 && (derivatives <= 1 || factor <= kSecondForwardFactor)) {
+      LimitSample out;
+      out.steps = iteration;
+      bspline_sample(b.cell, [&](size_t l) { return b.label[l]; }, p, values, channels, derivatives, out);
+      if (factor != 1) {
+        for (auto* r : {&out.du, &out.dv})
+          for (double& x : *r) x *= factor;
+        for (auto* r : {&out.duu, &out.duv, &out.dvv})
+          for (double& x : *r) x *= factor * factor;
+      }
+      return out;
+    }
+    const CornerRows rows = bspline_rows(b.grid, p.st, Index(values.size() / size_t(channels)));
+    return finish(rows, p, values, channels, derivatives, path, first_values, iteration, rows_out);
+  }
+
+  // Where the descent is short, the first derivatives are its rows applied to the values
+  // carried down, times the steps' factors (each step doubles the parameter): rounding in
+  // the carried values grows by that factor, at most kForwardFactor (a few bits), against
+  // pulling the rows back through every step. Returns the factor, or 0 where the rows are
+  // pulled back instead: a longer path, or a power of a step (whose derivative form differs).
+  // At the bicubic patch (bspline_end), whose weights are small, the second derivatives the
+  // same way, their rounding growing by the factor squared: at most kSecondForwardFactor (two
+  // binary steps). Elsewhere they are pulled back: a polynomial patch's lattice form has
+  // second-derivative weights of its Lagrange bases' size (Loop's boundary triangles lost
+  // 1e-12 against Bfr's exact patches applied forward).
+  static constexpr double kForwardFactor = 16;
+  static constexpr double kSecondForwardFactor = 4;
+  static double forward_factor(const std::vector<const StepMatrix*>& path) {
+    double factor = 1;
+    for (const StepMatrix* m : path) {
+      if (m->backward) return 0;
+      factor *= m->scale;
+    }
+    return factor <= kForwardFactor ? factor : 0;
+  }
+
+  // d/du and d/dv: the chain rule's rows (as first_derivative_rows makes them) applied to
+  // `values`, each sum over the labels in their order, zero weights skipped (as applied()
+  // does: with nothing to pull back, the same bits), then scaled by `factor` (a power of the
+  // steps' scales: exact).
+  static void forward_first_derivatives(const CornerRows& rows, const std::array<std::array<double, 2>, 2>& J,
+                                        const std::vector<double>& values, int channels, double factor,
+                                        LimitSample& out) {
+    const size_t C = size_t(channels);
+    out.du.assign(C, 0.0);
+    out.dv.assign(C, 0.0);
+    double* du = out.du.data();
+    double* dv = out.dv.data();
+    for (size_t l = 0; l < rows.ds.size(); ++l) {
+      const double a = J[0][0] * rows.ds[l] + J[1][0] * rows.dt[l];
+      const double b = J[0][1] * rows.ds[l] + J[1][1] * rows.dt[l];
+      const double* at = &values[l * C];
+      if (a != 0)
+        for (size_t c = 0; c < C; ++c) du[c] += a * at[c];
+      if (b != 0)
+        for (size_t c = 0; c < C; ++c) dv[c] += b * at[c];
+    }
+    if (factor != 1)
+      for (size_t c = 0; c < C; ++c) du[c] *= factor, dv[c] *= factor;
+    out.has_derivatives = true;
+  }
+
   // The sample from rows over the current node's labels: the position from the values
   // carried down, the derivatives pulled back to the first values. The point's Jacobian
   // d(s, t)/d(u, v) is constant within a face (every step is affine), so the chain rule
@@ -1058,7 +1131,10 @@ struct LimitSurface::Impl {
     out.steps = iteration;
     out.position = applied(rows.position, values, channels);
     const auto& J = p.jacobian;
-    if (derivatives >= 1 && !rows.ds.empty()) {
+    if (derivatives >= 1 && !rows.ds.empty() && forward_factor(path) > 0) {
+      forward_first_derivatives(rows, J, values, channels, forward_factor(path), out);
+      if (rows_out) rows_out->du = out.du, rows_out->dv = out.dv;
+    } else if (derivatives >= 1 && !rows.ds.empty()) {
       FirstDerivativeRows d = first_derivative_rows(rows.ds, rows.dt, J, path);
       out.du = applied(d.du, first_values, channels);
       out.dv = applied(d.dv, first_values, channels);
@@ -1494,6 +1570,13 @@ void LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> value
       FixedRows rows;
       if (quartic_rows_fixed(*e->lattice, p.st, derivatives, rows))
         return Impl::fixed_sample(rows, e->vertices, p, values, channels, derivatives, out);
+    }
+    if (e->lattice && e->lattice->bicubic) {
+      // walk()'s first step where the face's node is the bicubic patch (bspline_end).
+      const BicubicLabels& b = *e->lattice->bicubic;
+      out.steps = 0;
+      return Impl::bspline_sample(
+          b.cell, [&](size_t l) { return e->vertices[size_t(b.label[l])]; }, p, values, channels, derivatives, out);
     }
     if (e->lattice) {
       // walk()'s first step where the face's node is a polynomial patch, without the nodes' lock.

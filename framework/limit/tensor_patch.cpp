@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "framework/limit/lattice_functions.h"
 #include "framework/limit/triangle_patch.h"
 
 namespace subdiv {
@@ -59,6 +60,27 @@ CornerRows tensor_rows(const std::vector<std::vector<double>>& rows, const Uv& s
     if (count == 6) add_weighted<6>(row, labels, w, out);
   }
   return r;
+}
+
+std::optional<BicubicLabels> bicubic_lattice_labels(const std::vector<std::vector<double>>& lattice) {
+  if (lattice.size() != size_t(kTensorLattice)) return std::nullopt;
+  // The B-spline functions' values at the lattice.
+  std::array<BsplineWeights, kTensorLattice> reference;
+  for (int q = 0; q < kTensorLattice; ++q) reference[size_t(q)] = bspline_weights(tensor_lattice_point(q));
+  const auto label =
+      lattice_functions<16>(lattice, [&](size_t q, size_t k) { return reference[q].position[k]; }, 1e-12);
+  if (!label) return std::nullopt;
+  std::array<Index, 16> grid{};
+  for (size_t k = 0; k < 16; ++k) grid[k] = Index((*label)[k]);
+  return bicubic_labels(grid);
+}
+
+PolynomialPatch tensor_patch(std::vector<std::vector<double>> lattice) {
+  PolynomialPatch p;
+  if (lattice.empty()) return p;
+  p.bicubic = bicubic_lattice_labels(lattice);
+  p.lattice = std::move(lattice);
+  return p;
 }
 
 }  // namespace subdiv

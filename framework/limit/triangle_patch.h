@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "framework/limit/box_spline_patch.h"
+#include "framework/limit/bspline_patch.h"
 #include "framework/limit/corner_limit.h"
 
 namespace subdiv {
@@ -22,10 +23,12 @@ Uv quartic_lattice_point(int q);
 
 // A node's polynomial patch as the nodes keep it (LimitNodes::quartic): its rows at the
 // lattice (this file's for a triangle, tensor_patch.h's for a quad) and, for a triangle
-// whose patch is the quartic box spline, which label is which of the spline's functions.
+// whose patch is the quartic box spline, which label is which of the spline's functions;
+// for a quad whose patch is the bicubic B-spline (tensor_patch.h), its control points' labels.
 struct PolynomialPatch {
   std::vector<std::vector<double>> lattice;
   std::optional<BoxSplineLabels> box;
+  std::optional<BicubicLabels> bicubic;
 };
 
 // The patch of a triangle from its lattice rows, its box spline labels found when it is one.
