@@ -32,8 +32,15 @@ ApproximationDistances measure(const PreparedEvaluation& prepared, std::span<con
     double& face = d.per_face[size_t(faces[i])];
     face = std::max(face, e);
     sum += e;
-    if (d.largest_face == kNone || e > d.largest) d.largest = e, d.largest_face = faces[i];
+    d.largest = std::max(d.largest, e);
   }
+  // The first face within round-off of the largest: faces that are alike by symmetry (the
+  // cube's) report the same face whatever their last bits.
+  for (size_t f = 0; f < d.per_face.size() && !faces.empty(); ++f)
+    if (d.per_face[f] >= d.largest * (1 - 1e-9)) {
+      d.largest_face = Index(f);
+      break;
+    }
   d.mean = faces.empty() ? 0.0 : sum / double(faces.size());
   return d;
 }

@@ -52,7 +52,7 @@ struct ApproximationDistances {
   std::vector<double> per_point;  // |approximation - limit| at each sample
   std::vector<double> per_face;   // per base face: the largest over its samples (0 without samples)
   double largest = 0, mean = 0;
-  Index largest_face = kNone;
+  Index largest_face = kNone;  // the first base face within 1e-9 (relative) of the largest
   Index samples = 0;
 };
 
