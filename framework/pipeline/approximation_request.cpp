@@ -151,6 +151,22 @@ MeshData sampled_mesh(const PreparedEvaluation& prepared, const Sample& sample, 
   return m;
 }
 
+// The most patches an approximation builds: a semi-sharp tag of sharpness s puts them ceil(s)
+// levels down, 4^ceil(s) per quad, which a sharpness near 10 would make millions of.
+constexpr double kMostPatches = double(1 << 20);
+
+void check_patch_count(const Level& base, int steps, const char* option) {
+  if (steps == 0) return;
+  double patches = 0;  // after the first step one quad per corner, then four per quad and step
+  for (Index f = 0; f < base.face_count(); ++f) patches += base.face_size(f) == 4 ? 4 : base.face_size(f);
+  patches *= std::pow(4.0, steps - 1);
+  if (patches > kMostPatches)
+    throw Error(fmt::format("{}: the patches would be built on level {} (where the semi-sharp tags have decayed): "
+                            "{:.3g} patches, more than {:.3g}; make tags that sharp infinitely sharp (10), or "
+                            "evaluate the exact limit (without --approximate)",
+                            option, steps, patches, kMostPatches));
+}
+
 // Where the patches' control mesh is not the base mesh, what a refusal's face and vertex
 // numbers refer to.
 std::string refined_level_prefix(int steps) {
@@ -170,6 +186,7 @@ Approximation<Patch> built_patches(const PreparedEvaluation& prepared, const cha
   const FeatureOptions& features = prepared.surface->options().features;
   Approximation<Patch> a;
   a.steps = steps_to_quads_without_semi_sharp(base);
+  check_patch_count(base, a.steps, option);
   try {
     a.mesh = std::make_shared<const RefinedControlMesh>(*prepared.scheme, base, prepared.mesh.positions, features,
                                                         a.steps);

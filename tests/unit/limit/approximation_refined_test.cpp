@@ -251,3 +251,11 @@ TEST_CASE("holes: the kept faces have the untagged mesh's patches, the hole's ar
   const std::string net = bezier_control_net_vtu(approximation_patches(holed), d.per_face);
   CHECK(net.find("NumberOfCells=\"80\"") != std::string::npos);  // 5 faces x 16 patches (two steps)
 }
+
+TEST_CASE("a sharpness that would put the patches millions deep is refused before any work") {
+  // 9.5 decays after 10 steps: 6 x 4^10 patches on the cube.
+  CHECK_THROWS_WITH_AS(approximation_patches(prepared(test::cube(), {{0, 1, 9.5}})),
+                       doctest::Contains("would be built on level 10"), Error);
+  CHECK_THROWS_WITH_AS(gregory_approximation_patches(prepared(test::cube(), {{0, 1, 9.5}})),
+                       doctest::Contains("6.29e+06 patches"), Error);
+}
