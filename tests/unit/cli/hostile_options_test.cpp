@@ -217,3 +217,26 @@ TEST_CASE("the summary counts the faces written: hole faces are left out of both
   CHECK(faces == 4);
   CHECK(contains(r.output, " 4 faces "));
 }
+
+TEST_CASE("refine: --tolerance without --adaptive, and --adaptive with output options it does not honour, are refused") {
+  // Each was accepted and ignored: the file written was not the one asked for.
+  const auto dir = fresh_dir("hostile-adaptive-options");
+  check_refused("refine " + kCube + " --tolerance 0.1 -l 2", dir / "a.vtp", "--tolerance goes with --adaptive L");
+  for (const std::string option : {"--arrays all", "--compression none", "--compression-level 5", "--vtp-encoding raw"}) {
+    CAPTURE(option);
+    const std::string name = option.substr(0, option.find(' '));
+    check_refused("refine " + kCube + " --adaptive 2 " + option, dir / "b.vtp",
+                  name + " goes with uniform refinement");
+    check_refused("refine " + kCube + " --adaptive 2 " + option, dir / "b.vtp", "leave out " + name);
+  }
+  check_refused("refine " + kCube + " --adaptive 2 --normals", dir / "c.vtp",
+                "--normals: adaptive refinement writes no limit normals");
+  std::ofstream(dir / "lambda.txt") << "1\n1\n1\n1\n1\n1\n1\n1\n";
+  check_refused("refine " + kCube + " -s catmull-clark-shape --adaptive 2 --vertex-param lambda=" +
+                    (dir / "lambda.txt").string(),
+                dir / "d.vtp", "--vertex-param: adaptive refinement takes a scheme parameter for the whole mesh only");
+  // The defaults, given explicitly, are what --adaptive writes: taken.
+  CHECK(run_subdiv("refine " + kCube + " --adaptive 2 --compression lz4 --arrays default --tolerance 0.1 -q -o " +
+                   (dir / "ok.vtp").string())
+            .exit_code == 0);
+}
