@@ -151,6 +151,19 @@ TEST_CASE("a sampled limit surface that would not fit is refused before any samp
 #endif
 }
 
+TEST_CASE("a sampled limit surface with face-varying data counts the data's grids before any sample") {
+#if SUBDIV_TEST_ASAN
+  MESSAGE("skipped: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");
+#else
+  // 24 quads with UVs, 221 x 221 points each: 0.28 GB for the positions' grid alone, which
+  // passed the check, and 0.47 GB with the UV channel's, which ran out of memory half-way
+  // (without a process limit: killed by the kernel).
+  check_refused_within_400_mb("evaluate " + source_path("examples/meshes/textured-tube.obj") + " --samples 220 -o ",
+                              fresh_dir("hostile-samples-fvar-memory") / "big.vtp",
+                              {"--samples 220: 1.17e+06 sample points would need about", "ask for fewer samples per edge"});
+#endif
+}
+
 TEST_CASE("a file size limit (ulimit -f) is a refusal with no file left, in every output format") {
   // 8 levels of the torus: 49 MB and more in every format; the limit is 5 MB.
   const fs::path dir = fresh_dir("hostile-file-size");
