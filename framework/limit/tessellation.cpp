@@ -163,10 +163,15 @@ std::array<double, 3> normal_at(const LimitSurface& s, const SurfaceSample& samp
 // share of the faces, and the copy being written): 0.24 kB measured for --samples 300 on a
 // 48-quad torus.
 constexpr double kBytesPerSample = 240;
+// And per face-varying channel sampled on it too (its own grid, values and corner indices):
+// 0.15 kB measured for --samples 300 on examples/meshes/textured-tube.obj (one 2-component
+// channel: 0.40 kB per point against 0.24 kB with its vt lines removed).
+constexpr double kBytesPerChannelSample = 160;
 
-// Refuses, before any work, a grid that would not fit in memory (N up to 1024 per edge on a
-// large mesh asks for billions of points).
-void check_samples_fit(const Level& base, bool triangles, int N) {
+}  // namespace
+
+// N up to 1024 per edge on a large mesh asks for billions of points.
+void check_samples_fit(const Level& base, bool triangles, int N, size_t face_varying_channels) {
   double points = 0;
   const double half = double(N / 2) + 1;
   for (Index f = 0; f < base.face_count(); ++f) {
@@ -174,15 +179,13 @@ void check_samples_fit(const Level& base, bool triangles, int N) {
     const int k = base.face_size(f);
     points += triangles ? (N + 1.0) * (N + 2.0) / 2 : k == 4 ? (N + 1.0) * (N + 1.0) : k * half * half;
   }
+  const double need = points * (kBytesPerSample + kBytesPerChannelSample * double(face_varying_channels));
   const MemoryBudget have = available_memory();
-  if (points * kBytesPerSample > have.bytes)
+  if (need > have.bytes)
     throw OptionError(fmt::format("{{samples}} {}: {:.3g} sample points would need about {:.1f} GiB, but only {:.1f} "
                                   "GiB of memory is available (limited by {}); ask for fewer samples per edge",
-                                  N, points, points * kBytesPerSample / 1073741824.0, have.bytes / 1073741824.0,
-                                  have.source));
+                                  N, points, need / 1073741824.0, have.bytes / 1073741824.0, have.source));
 }
-
-}  // namespace
 
 Tessellation tessellation_grid(const Level& topology, const Level& base, bool triangles, int N) {
   if (N < 1) throw OptionError(fmt::format("{{samples}} {}: the number of segments per edge must be at least 1", N));

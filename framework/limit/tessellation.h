@@ -34,6 +34,11 @@ struct Tessellation {
 // position (3 values) and first derivatives (has_derivatives false where they do not exist).
 using SurfaceSample = std::function<void(Index face, double u, double v, LimitSample& out)>;
 
+// Refuses (OptionError naming {samples}), before any work, a grid of N segments per edge over
+// `base` that would not fit in memory with `face_varying_channels` channels sampled on it too
+// (sampled_limit_mesh); tessellation_grid checks its own grid alone.
+void check_samples_fit(const Level& base, bool triangles, int N, size_t face_varying_channels = 0);
+
 // Throws subdiv::Error for N < 1, or an odd N on a mesh with sub-faces.
 Tessellation tessellate(const LimitSurface& surface, int segments, const SurfaceSample& sample);
 // The surface of `positions` (the polynomial surface: sample is surface.evaluate).

@@ -24,6 +24,14 @@ void check_request(const AdaptiveRequest& r) {
   if (!(r.tolerance >= 0) || !std::isfinite(r.tolerance))
     throw OptionError(fmt::format("{{tolerance}} {}: give a distance >= 0 (0: split only around features)",
                                   r.tolerance));
+  // Refused rather than ignored: the adaptive stages take the scheme's parameters for the
+  // whole mesh, and write no limit normals.
+  if (!r.refine.vertex_parameters.empty() || !r.refine.vertex_parameter_files.empty())
+    throw OptionError("{vertex_param}: adaptive refinement takes a scheme parameter for the whole mesh only (not "
+                      "per vertex); give one value with {param}, or refine uniformly");
+  if (r.refine.limit_normals)
+    throw OptionError("{normals}: adaptive refinement writes no limit normals; leave out {normals} (with {limit} "
+                      "every vertex is on the limit surface), or refine uniformly");
 }
 
 std::span<const double> weights_of(const MeshData& mesh, const std::string& name) {

@@ -9,6 +9,7 @@
 #include "framework/limit/tessellation.h"
 #include "framework/limit/unit_normal.h"
 #include "framework/util/error.h"
+#include "framework/util/option_spelling.h"
 
 namespace subdiv {
 namespace {
@@ -84,28 +85,30 @@ bool has_boundary_or_crease(const Level& level) {
   return !level.vertex_sharpness.empty();
 }
 
-// What neither approximation covers, refused with `option` (--approximate bezier or gregory):
+// What neither approximation covers, refused naming `option`, a placeholder each front-end
+// spells ({approximate_bezier}: "--approximate bezier" on the command line,
+// "approximate_bezier()" in Python):
 // the scheme, a sequence, rational weights, and with boundaries or creases a scheme
 // that does not refine them as the masks assume.
 void check_approximable(const PreparedEvaluation& prepared, const char* option) {
   const std::string why = bezier_approximation_unsupported(prepared.scheme);
   if (!why.empty())
-    throw Error(fmt::format("{}: scheme {} cannot be approximated by bicubic patches reproducing its regular "
+    throw OptionError(fmt::format("{}: scheme {} cannot be approximated by bicubic patches reproducing its regular "
                             "B-spline patch: {}",
                             option, prepared.scheme_label, why));
   if (prepared.sequence_head)
-    throw Error(fmt::format("{}: a sequence's limit is its tail's over the mesh its head makes, while the patches' "
+    throw OptionError(fmt::format("{}: a sequence's limit is its tail's over the mesh its head makes, while the patches' "
                             "masks read the base mesh; refine the head first (subdiv refine) and approximate that "
                             "mesh",
                             option));
   if (!prepared.weights.empty())
-    throw Error(fmt::format("{}: the mesh has rational weights; the patches are built from the polynomial "
+    throw OptionError(fmt::format("{}: the mesh has rational weights; the patches are built from the polynomial "
                             "limit's masks (drop the weights)",
                             option));
   if (has_boundary_or_crease(prepared.surface->base()))
     if (const std::string why = bezier_features_unsupported(prepared.scheme, prepared.surface->options().features);
         !why.empty())
-      throw Error(fmt::format("{}: the mesh has boundaries or creases, and scheme {} does not refine them as the "
+      throw OptionError(fmt::format("{}: the mesh has boundaries or creases, and scheme {} does not refine them as the "
                               "patches' masks assume: {}",
                               option, prepared.scheme_label, why));
 }
@@ -193,7 +196,7 @@ Approximation<Patch> built_patches(const PreparedEvaluation& prepared, const cha
     a.patches = build(a.mesh->level(), a.mesh->positions(), features.boundary,
                       vertex_limits(*prepared.scheme, *a.mesh, features));
   } catch (const Error& e) {
-    throw Error(fmt::format("{}: {}{}", option, refined_level_prefix(a.steps), e.what()));
+    throw OptionError(fmt::format("{}: {}{}", option, refined_level_prefix(a.steps), e.what()));
   }
   for (Index f = 0; f < Index(a.patches.size()); ++f) {
     a.base_face.push_back(a.mesh->base_face(f));
@@ -230,11 +233,11 @@ auto sampler(const Approximation<Patch>& a) {
 }  // namespace
 
 BezierApproximation approximation_patches(const PreparedEvaluation& prepared) {
-  return built_patches<BezierPatch>(prepared, "--approximate bezier", bezier_patches);
+  return built_patches<BezierPatch>(prepared, "{approximate_bezier}", bezier_patches);
 }
 
 GregoryApproximation gregory_approximation_patches(const PreparedEvaluation& prepared) {
-  return built_patches<GregoryPatch>(prepared, "--approximate gregory", gregory_patches);
+  return built_patches<GregoryPatch>(prepared, "{approximate_gregory}", gregory_patches);
 }
 
 ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const BezierApproximation& patches,

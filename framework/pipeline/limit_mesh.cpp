@@ -26,6 +26,8 @@ FaceVaryingArray face_varying_samples(const PreparedEvaluation& prepared, size_t
 }  // namespace
 
 MeshData sampled_limit_mesh(const PreparedEvaluation& prepared, int segments) {
+  // The channels' grids too are counted before any sample, not one grid at a time.
+  check_samples_fit(prepared.surface->base(), prepared.surface->triangles(), segments, prepared.face_varying.size());
   Tessellation t =
       naming_the_mesh(prepared, [&] { return tessellate(*prepared.surface, segments, limit_sampler(prepared)); });
   MeshData m;

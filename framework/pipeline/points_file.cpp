@@ -8,6 +8,7 @@
 #include "framework/util/error.h"
 #include "framework/util/input_file.h"
 #include "framework/util/quoted_text.h"
+#include "framework/util/short_text.h"
 
 namespace subdiv {
 namespace {
@@ -28,6 +29,13 @@ std::string parse_field(std::string_view text, T& out, std::string_view kind) {
   if (ec == std::errc::result_out_of_range) return "is out of range";
   if (ec != std::errc() || end != t.data() + t.size() || t.empty()) return fmt::format("is not {}", kind);
   return {};
+}
+
+// A field or header in a message: quoted as it is (control bytes escaped, quoted_text.h), its
+// beginning only when it is long — a 10 MB line made a 10 MB message.
+std::string shown(std::string_view text) {
+  if (text.size() <= kQuotedTextChars) return subdiv::quoted(text);
+  return fmt::format("{}... ({} characters)", subdiv::quoted(text.substr(0, kQuotedTextChars)), text.size());
 }
 
 std::vector<std::string_view> split(std::string_view line, char separator) {
@@ -53,7 +61,7 @@ void check_header(std::string_view line, const std::string& file) {
                             "with LF or CRLF line endings",
                             file));
   if (!is_header(line))
-    throw Error(fmt::format("{} line 1: the header is {}; it must be 'face,u,v'", file, subdiv::quoted(trimmed(line))));
+    throw Error(fmt::format("{} line 1: the header is {}; it must be 'face,u,v'", file, shown(trimmed(line))));
 }
 
 // Line `number` (from 1) of the file, after the header.
@@ -66,10 +74,10 @@ void parse_row(std::string_view line, size_t number, const std::string& file, co
   Index face = 0;
   double u = 0, v = 0;
   if (const std::string why = parse_field(fields[0], face, "a whole number"); !why.empty())
-    throw Error(fmt::format("{}: face {} {}", where, subdiv::quoted(trimmed(fields[0])), why));
+    throw Error(fmt::format("{}: face {} {}", where, shown(trimmed(fields[0])), why));
   for (const auto& [name, field, value] : {std::tuple{"u", fields[1], &u}, std::tuple{"v", fields[2], &v}})
     if (const std::string why = parse_field(field, *value, "a number"); !why.empty())
-      throw Error(fmt::format("{}: {} = {} {}; u and v must be numbers", where, name, subdiv::quoted(trimmed(field)), why));
+      throw Error(fmt::format("{}: {} = {} {}; u and v must be numbers", where, name, shown(trimmed(field)), why));
   if (const std::string why = check(face, u, v); !why.empty()) throw Error(fmt::format("{}: {}", where, why));
   out.faces.push_back(face);
   out.uv.insert(out.uv.end(), {u, v});

@@ -330,3 +330,15 @@ def test_a_non_manifold_mesh_is_evaluated_flap_by_flap():
     W = S.stencils(np.array(hinge_faces), np.full((3, 2), 0.3))
     np.testing.assert_allclose(W.points @ fan.points, S.evaluate(np.array(hinge_faces), np.full((3, 2), 0.3)).points,
                                atol=1e-14)
+
+
+@pytest.mark.parametrize("kind", ["approximate_bezier", "approximate_gregory"])
+def test_an_approximation_refused_names_the_python_method_not_the_command_line_option(kind):
+    """The pipeline's refusal names the approximation as Python calls it: the command line's
+    '--approximate bezier' meant nothing to a Python user."""
+    with pytest.raises(sk.Error) as refused:
+        getattr(sk.LimitSurface(sk.read_mesh(str(MESHES / "octahedron.obj")), "loop"), kind)(2)
+    message = str(refused.value)
+    assert message.startswith(kind + "(): ")
+    assert "triangles" in message
+    assert "--approximate" not in message

@@ -113,6 +113,25 @@ void check_piece_options(const RefineArgs& a) {
                             a.limit ? "--limit" : "--normals", a.limit ? "--limit" : "--normals"));
 }
 
+// --tolerance belongs to --adaptive, and an adaptive mesh is written as write_mesh writes it
+// (adaptive_refine_option.cpp): options that would be ignored are refused instead.
+void check_adaptive_options(const RefineArgs& a) {
+  if (!a.adaptive.given()) {
+    if (a.adaptive.tolerance != 0) throw Error("--tolerance goes with --adaptive L");
+    return;
+  }
+  const OutputArgs defaults;
+  const OutputArgs& o = a.output_format;
+  for (const auto& [given, option] : {std::pair{o.arrays != defaults.arrays, "--arrays"},
+                                      std::pair{o.compression != defaults.compression, "--compression"},
+                                      std::pair{o.compression_level != defaults.compression_level, "--compression-level"},
+                                      std::pair{o.vtp_encoding != defaults.vtp_encoding, "--vtp-encoding"}})
+    if (given)
+      throw Error(fmt::format("{} goes with uniform refinement: --adaptive writes its mesh with its own arrays "
+                              "(face_level, base_face, ...), lz4 compression and base64 encoding; leave out {}",
+                              option, option));
+}
+
 // --pieces N or --max-memory SIZE: see piece_refine.h.
 void run_in_pieces(const RefineArgs& a, const RefineRequest& request, const PreparedRefinement& prepared,
                    const OutputChoice& output, Progress& progress, std::chrono::steady_clock::time_point t0) {
@@ -165,6 +184,7 @@ void run(const RefineArgs& a) {
     return refine_curves_command(
         {a.mesh, a.scheme, a.output, a.levels, parse_params(a.params), a.threads, a.quiet, a.weights});
   check_piece_options(a);
+  check_adaptive_options(a);
   if (!a.in_pieces()) check_output_path(a.output);
   const OutputChoice output = output_choice(a.output_format);  // a bad --arrays is refused before any work
   const ThreadLimit threads(a.threads, "--threads");

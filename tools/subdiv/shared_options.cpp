@@ -22,7 +22,8 @@ const OptionSpelling& cli_option_spelling() {
       {"select", "--select"},           {"max_iterations", "--max-iter"},
       {"valences", "--valence"},        {"boundary_analysis", "--boundary"},
       {"samples", "--samples"},         {"tolerance", "--tolerance"},
-      {"derivatives", "--derivatives"}};
+      {"derivatives", "--derivatives"}, {"approximate_bezier", "--approximate bezier"},
+      {"approximate_gregory", "--approximate gregory"}};
   return spelling;
 }
 

@@ -151,6 +151,19 @@ TEST_CASE("a sampled limit surface that would not fit is refused before any samp
 #endif
 }
 
+TEST_CASE("a sampled limit surface with face-varying data counts the data's grids before any sample") {
+#if SUBDIV_TEST_ASAN
+  MESSAGE("skipped: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");
+#else
+  // 24 quads with UVs, 221 x 221 points each: 0.28 GB for the positions' grid alone, which
+  // passed the check, and 0.47 GB with the UV channel's, which ran out of memory half-way
+  // (without a process limit: killed by the kernel).
+  check_refused_within_400_mb("evaluate " + source_path("examples/meshes/textured-tube.obj") + " --samples 220 -o ",
+                              fresh_dir("hostile-samples-fvar-memory") / "big.vtp",
+                              {"--samples 220: 1.17e+06 sample points would need about", "ask for fewer samples per edge"});
+#endif
+}
+
 TEST_CASE("a file size limit (ulimit -f) is a refusal with no file left, in every output format") {
   // 8 levels of the torus: 49 MB and more in every format; the limit is 5 MB.
   const fs::path dir = fresh_dir("hostile-file-size");
@@ -216,4 +229,27 @@ TEST_CASE("the summary counts the faces written: hole faces are left out of both
   for (std::string line; std::getline(written, line);) faces += line.rfind("f ", 0) == 0;
   CHECK(faces == 4);
   CHECK(contains(r.output, " 4 faces "));
+}
+
+TEST_CASE("refine: --tolerance without --adaptive, and --adaptive with output options it does not honour, are refused") {
+  // Each was accepted and ignored: the file written was not the one asked for.
+  const auto dir = fresh_dir("hostile-adaptive-options");
+  check_refused("refine " + kCube + " --tolerance 0.1 -l 2", dir / "a.vtp", "--tolerance goes with --adaptive L");
+  for (const std::string option : {"--arrays all", "--compression none", "--compression-level 5", "--vtp-encoding raw"}) {
+    CAPTURE(option);
+    const std::string name = option.substr(0, option.find(' '));
+    check_refused("refine " + kCube + " --adaptive 2 " + option, dir / "b.vtp",
+                  name + " goes with uniform refinement");
+    check_refused("refine " + kCube + " --adaptive 2 " + option, dir / "b.vtp", "leave out " + name);
+  }
+  check_refused("refine " + kCube + " --adaptive 2 --normals", dir / "c.vtp",
+                "--normals: adaptive refinement writes no limit normals");
+  std::ofstream(dir / "lambda.txt") << "1\n1\n1\n1\n1\n1\n1\n1\n";
+  check_refused("refine " + kCube + " -s catmull-clark-shape --adaptive 2 --vertex-param lambda=" +
+                    (dir / "lambda.txt").string(),
+                dir / "d.vtp", "--vertex-param: adaptive refinement takes a scheme parameter for the whole mesh only");
+  // The defaults, given explicitly, are what --adaptive writes: taken.
+  CHECK(run_subdiv("refine " + kCube + " --adaptive 2 --compression lz4 --arrays default --tolerance 0.1 -q -o " +
+                   (dir / "ok.vtp").string())
+            .exit_code == 0);
 }

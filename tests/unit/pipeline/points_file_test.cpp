@@ -71,6 +71,24 @@ TEST_CASE("a leading '+' is a sign, and a file of CR line endings is named as su
                        doctest::Contains("pts.csv line 1: the lines end in a carriage return alone"), Error);
 }
 
+TEST_CASE("a huge field or header is quoted by its beginning and its length, not echoed whole") {
+  const std::string digits(1000000, '5');
+  for (const std::string& text : {"face,u,v\n0,0.5," + digits + "\n", "face,u,v\n" + digits + ",0.5,0.5\n",
+                                  "face,u,v" + digits + "\n0,0.5,0.5\n"}) {
+    std::string message;
+    try {
+      parse_points(text, "pts.csv", unit_square_check);
+    } catch (const Error& e) {
+      message = e.what();
+    }
+    CAPTURE(message.substr(0, 300));
+    CHECK(message.find("pts.csv line ") == 0);
+    CHECK(message.find(" characters)") != std::string::npos);
+    CHECK(message.find("'... (100000") != std::string::npos);  // the field's or the header's length
+    CHECK(message.size() < 400);
+  }
+}
+
 TEST_CASE("a missing file is refused with its name") {
   CHECK_THROWS_WITH_AS(read_points_file("/no/such/points.csv", unit_square_check),
                        doctest::Contains("cannot open '/no/such/points.csv': no such file"), Error);
