@@ -312,6 +312,8 @@ struct LimitSurface::Impl {
   mutable std::vector<std::shared_ptr<Cache>> retired;
   // Faces known to be in untagged regular quad grid (in_quad_grid): 1, else 0 (not known).
   mutable std::unique_ptr<std::atomic<char>[]> grid_face;
+  // Set when a wide grid piece failed (in_quad_grid): the narrow pieces from then on.
+  mutable std::atomic<bool> narrow_pieces{false};
 
   std::shared_ptr<Cache> make_cache(int depth) const {
     auto c = std::make_shared<Cache>();
@@ -534,28 +536,47 @@ struct LimitSurface::Impl {
   // those faces then only label their own few rings.
   bool in_quad_grid(Labelling& lab, Index face, int depth) const {
     if (grid_face[size_t(face)].load(std::memory_order_relaxed)) return quad_grid_labelled(lab, base, face, depth);
-    constexpr int kMargin = 8;
-    // The piece is centred up to kMargin - 1 faces on, across edges towards higher face
-    // numbers (where a caller going through the faces in order goes next), so that it marks
-    // this face and more of the faces not met yet than a piece centred here would.
-    Index centre = face;
-    for (int step = 0; step + 1 < kMargin; ++step) {
-      Index next = centre;
-      for (Index e : base.face_edge_list(centre))
-        for (Index g : base.faces_of_edge(e)) next = std::max(next, g);
-      if (next == centre) break;
-      centre = next;
+    // A wider piece marks more faces for the vertices it labels, but fails where a narrower
+    // one passes: on a torus or tube only a little wider than the narrow piece (its paths
+    // meet again), and near any face that is not grid. After its first failure every piece
+    // is the narrow one, so such meshes pay one wide piece more than with the narrow alone.
+    constexpr int kWideMargin = 16, kMargin = 8;
+    bool centred = false, piece = false;
+    if (!narrow_pieces.load(std::memory_order_relaxed)) {
+      piece = grid_piece(lab, face, kWideMargin, centred);
+      if (!piece) narrow_pieces.store(true, std::memory_order_relaxed);
     }
-    if (quad_grid_labelled(lab, base, centre, radius + kMargin)) {
-      // A face with a corner closer than kMargin - 1 has its corners within kMargin of the
-      // centre's and its cut within this piece; this face is one of them (each step across
-      // an edge moves a face's corners one ring at most), checked all the same.
-      for (size_t q = 0; q < lab.vertices.size() && lab.distance[q] < kMargin; ++q)
-        for (Index f : base.ring_faces(lab.vertices[q])) grid_face[size_t(f)].store(1, std::memory_order_relaxed);
-      if (centre == face) return true;
+    if (!piece) piece = grid_piece(lab, face, kMargin, centred);
+    if (piece) {
+      if (centred) return true;
       if (grid_face[size_t(face)].load(std::memory_order_relaxed)) return quad_grid_labelled(lab, base, face, depth);
     }
     return quad_grid_labelled(lab, base, face, radius);
+  }
+  // Checks a piece `margin` rings wider than the cut, centred near `face`; when it is grid,
+  // marks the faces whose cuts lie inside it and returns true; `centred` when the piece was
+  // centred on `face` (whose labels are then in `lab`).
+  bool grid_piece(Labelling& lab, Index face, int margin, bool& centred) const {
+    // The piece is centred up to margin - 1 faces on, across corners towards higher face
+    // numbers (where a caller going through the faces in order goes next), so that it marks
+    // this face and more of the faces not met yet than a piece centred here would: on a grid
+    // numbered row by row the walk goes diagonally, and the face is near the piece's corner.
+    Index centre = face;
+    for (int step = 0; step + 1 < margin; ++step) {
+      Index next = centre;
+      for (Index v : base.face(centre))
+        for (Index g : base.ring_faces(v)) next = std::max(next, g);
+      if (next == centre) break;
+      centre = next;
+    }
+    if (!quad_grid_labelled(lab, base, centre, radius + margin)) return false;
+    // A face with a corner closer than margin - 1 has its corners within margin of the
+    // centre's and its cut within this piece; this face is one of them (each step across
+    // a corner moves a face's corners one ring at most), checked all the same.
+    for (size_t q = 0; q < lab.vertices.size() && lab.distance[q] < margin; ++q)
+      for (Index f : base.ring_faces(lab.vertices[q])) grid_face[size_t(f)].store(1, std::memory_order_relaxed);
+    centred = centre == face;
+    return true;
   }
 
   // prepare() of a face made already (e set when not a grid slot), without a lock; false

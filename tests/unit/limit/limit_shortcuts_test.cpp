@@ -254,6 +254,18 @@ TEST_CASE("The shortcuts give the general way's bits on grid wide enough that fa
   check_every_face(base, m.positions, 13, 37);
 }
 
+TEST_CASE("The shortcuts give the general way's bits whether grid is checked in wide or narrow pieces") {
+  // Pieces are checked 16 rings wider than the cut (42 x 42 vertices) until one fails, then
+  // 8 rings wider (26 x 26): untagged tori where every wide piece passes (48 x 44), where the
+  // wide pieces wrap round and the narrow ones pass (32 x 30), and where both wrap (20 x 20:
+  // each face checks its own cut).
+  for (const auto& size : {std::array<int, 2>{48, 44}, {32, 30}, {20, 20}}) {
+    INFO("torus " << size[0] << " x " << size[1]);
+    const test::Mesh m = test::torus(size[0], size[1]);
+    check_every_face(m.level(), m.positions, 17, 29);
+  }
+}
+
 TEST_CASE("The shortcuts give the general way's bits where faces take their entries from pieces met before") {
   // An extraordinary vertex in every face, in a repeating pattern: on a torus, untagged and
   // with a crease, a semi-sharp edge and a tagged corner in one corner of its parameter
