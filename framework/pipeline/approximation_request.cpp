@@ -164,7 +164,7 @@ void check_patch_count(const Level& base, int steps, const char* option) {
   for (Index f = 0; f < base.face_count(); ++f) patches += base.face_size(f) == 4 ? 4 : base.face_size(f);
   patches *= std::pow(4.0, steps - 1);
   if (patches > kMostPatches)
-    throw Error(fmt::format("{}: the patches would be built on level {} (where the semi-sharp tags have decayed): "
+    throw OptionError(fmt::format("{}: the patches would be built on level {} (where the semi-sharp tags have decayed): "
                             "{:.3g} patches, more than {:.3g}; make tags that sharp infinitely sharp (10), or "
                             "evaluate the exact limit (without --approximate)",
                             option, steps, patches, kMostPatches));

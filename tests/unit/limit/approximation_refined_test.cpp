@@ -10,6 +10,7 @@
 #include <doctest/doctest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkUnstructuredGrid.h>
@@ -17,6 +18,7 @@
 
 #include "framework/limit/face_domain.h"
 #include "framework/pipeline/approximation_request.h"
+#include "support/cli_checks.h"
 #include "support/cli_runner.h"
 #include "support/mesh_data_of.h"
 #include "support/test_meshes.h"
@@ -258,4 +260,11 @@ TEST_CASE("a sharpness that would put the patches millions deep is refused befor
                        doctest::Contains("would be built on level 10"), Error);
   CHECK_THROWS_WITH_AS(gregory_approximation_patches(prepared(test::cube(), {{0, 1, 9.5}})),
                        doctest::Contains("6.29e+06 patches"), Error);
+  // The command line names its option.
+  const fs::path dir = test::fresh_dir("bezier-too-deep");
+  const fs::path mesh = dir / "cube.obj";
+  std::ofstream(mesh) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+                         "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\nt crease 2/1/0 0 1 9.5\n";
+  test::check_refused("evaluate " + mesh.string() + " --approximate bezier --samples 2", dir / "out.vtp",
+                      "--approximate bezier: the patches would be built on level 10");
 }
