@@ -172,11 +172,13 @@ void check_patch_count(const Level& base, int steps, const char* option) {
 
 // Where the patches' control mesh is not the base mesh, what a refusal's face and vertex
 // numbers refer to.
+// Why the patches' control mesh is a refined level, in both messages that name it.
+constexpr const char* kWhyRefined = "so that every face is a quad and semi-sharp tags have decayed";
+
 std::string refined_level_prefix(int steps) {
   if (steps == 0) return {};
-  return fmt::format("on level {} (the mesh refined {} time{} so that every face is a quad and semi-sharp tags have "
-                     "decayed; numbered as `subdiv refine -l {}` writes it): ",
-                     steps, steps, steps == 1 ? "" : "s", steps);
+  return fmt::format("on level {} (the mesh refined {} time{} {}; numbered as `subdiv refine -l {}` writes it): ", steps,
+                     steps, steps == 1 ? "" : "s", kWhyRefined, steps);
 }
 
 // The patches `build` makes of the base mesh, or of the level a few uniform steps make where
@@ -262,9 +264,8 @@ MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const Grego
 
 std::string approximation_level_note(int steps, size_t patches) {
   if (steps == 0) return {};
-  return fmt::format("the patches are built on level {} ({} uniform step{} so that every face is a quad and "
-                     "semi-sharp tags have decayed; the same limit): {} patches",
-                     steps, steps, steps == 1 ? "" : "s", patches);
+  return fmt::format("the patches are built on level {} ({} uniform step{} {}; the same limit): {} patches", steps,
+                     steps, steps == 1 ? "" : "s", kWhyRefined, patches);
 }
 
 std::string approximation_summary(const ApproximationDistances& d, ApproximationKind kind) {
