@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <map>
 #include <fmt/format.h>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "framework/io/text_input.h"
+#include "framework/io/vtk/vtk_xml_data_reader.h"
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
 #include "framework/util/short_text.h"
@@ -26,70 +28,14 @@ double expansion_limit(std::string_view compressor) {
   return 1e5;
 }
 
-int base64_value(char c) {
-  if (c >= 'A' && c <= 'Z') return c - 'A';
-  if (c >= 'a' && c <= 'z') return c - 'a' + 26;
-  if (c >= '0' && c <= '9') return c - '0' + 52;
-  if (c == '+') return 62;
-  if (c == '/') return 63;
-  return -1;
-}
-
-// Reads the data that starts at `at`: raw bytes, or base64 text decoded on the way.
-class DataReader {
-public:
-  DataReader(std::string_view bytes, std::size_t at, bool base64) : bytes_(bytes), pos_(at), base64_(base64) {}
-
-  // The next `n` bytes of data, or nullopt if the file ends first.
-  std::optional<std::string> take(std::size_t n) {
-    std::string out;
-    while (out.size() < n) {
-      if (!base64_) {
-        if (pos_ >= bytes_.size()) return std::nullopt;
-        out.push_back(bytes_[pos_++]);
-        continue;
-      }
-      if (pending_.empty() && !decode_group()) return std::nullopt;
-      out.push_back(pending_.front());
-      pending_.erase(pending_.begin());
-    }
-    return out;
-  }
-
-  // Data bytes left in the file from here (base64: what the text decodes to, at most).
-  double remaining() const {
-    const double left = double(bytes_.size() - std::min(pos_, bytes_.size()));
-    return base64_ ? left * 3 / 4 + double(pending_.size()) : left;
-  }
-
-private:
-  bool decode_group() {
-    int values[4], n = 0;
-    while (n < 4 && pos_ < bytes_.size()) {
-      const char c = bytes_[pos_++];
-      if (c == '=') values[n++] = 0;
-      else if (const int v = base64_value(c); v >= 0) values[n++] = v;
-      else if (c == '<') return false;  // the element ended
-    }
-    if (n < 4) return false;
-    const std::uint32_t bits = (values[0] << 18) | (values[1] << 12) | (values[2] << 6) | values[3];
-    for (int i = 2; i >= 0; --i) pending_.push_back(char((bits >> (8 * i)) & 0xFF));
-    return true;
-  }
-
-  std::string_view bytes_;
-  std::size_t pos_;
-  bool base64_;
-  std::vector<char> pending_;
-};
-
 class HeaderChecker {
 public:
   HeaderChecker(const fs::path& file, std::string_view bytes) : file_(file), bytes_(bytes) {}
 
-  void run() {
+  std::map<std::size_t, XmlArrayData> run() {
+    std::map<std::size_t, XmlArrayData> out;
     const std::size_t root = bytes_.find("<VTKFile");
-    if (root == std::string_view::npos) return;  // VTK's own check reports it
+    if (root == std::string_view::npos) return out;  // VTK's own check reports it
     const std::string_view tag = tag_at(root);
     word_size_ = xml_attribute(tag, "header_type").value_or("UInt32") == "UInt64" ? 8 : 4;
     big_endian_ = xml_attribute(tag, "byte_order").value_or("LittleEndian") == "BigEndian";
@@ -117,11 +63,12 @@ public:
             std::size_t(offset) > bytes_.size() - data_start)
           fail(at, fmt::format("array {}: its offset=\"{}\" does not point into the appended data", subdiv::quoted(shortened(name)),
                                escaped(shortened(*offset_text))));
-        check_header(DataReader(bytes_, data_start + std::size_t(offset), appended_base64), at, name);
+        out.emplace(at, check_header(XmlDataReader(bytes_, data_start + std::size_t(offset), appended_base64), at, name));
       } else if (format == "binary") {
-        check_header(DataReader(bytes_, at + array.size() + 1, true), at, name);
+        out.emplace(at, check_header(XmlDataReader(bytes_, at + array.size() + 1, true), at, name));
       }
     }
+    return out;
   }
 
 private:
@@ -148,7 +95,7 @@ private:
     return bytes_.substr(at, end - at);
   }
 
-  std::uint64_t word(DataReader& data, std::size_t at, const std::string& name) const {
+  std::uint64_t word(XmlDataReader& data, std::size_t at, const std::string& name) const {
     const auto raw = data.take(word_size_);
     if (!raw) fail(at, fmt::format("array {}: the file ends inside its data header; it is cut off", subdiv::quoted(shortened(name))));
     std::uint64_t v = 0;
@@ -159,7 +106,7 @@ private:
     return v;
   }
 
-  void check_header(DataReader data, std::size_t at, const std::string& name) const {
+  XmlArrayData check_header(XmlDataReader data, std::size_t at, const std::string& name) const {
     const double budget = available_memory().bytes;
     if (compressor_.empty()) {
       const std::uint64_t size = word(data, at, name);
@@ -167,7 +114,7 @@ private:
         fail(at, fmt::format("array {} says {} bytes of data, but only {:.0f} follow; the file is cut off or its "
                              "header is damaged",
                              subdiv::quoted(shortened(name)), size, data.remaining()));
-      return;
+      return XmlArrayData{data, double(size), compressor_, 0, 0, {}};
     }
     const std::uint64_t blocks = word(data, at, name), block_size = word(data, at, name), last = word(data, at, name);
     // VTK divides by the block size, and takes the last block as no larger than the others.
@@ -187,7 +134,9 @@ private:
                            "header is damaged",
                            subdiv::quoted(shortened(name)), blocks));
     double compressed = 0;
-    for (std::uint64_t b = 0; b < blocks; ++b) compressed += double(word(data, at, name));
+    std::vector<std::uint64_t> packed(blocks);
+    for (std::uint64_t& size : packed) compressed += double(size = word(data, at, name));
+    data.end_run();
     const double expanded = blocks == 0 ? 0 : double(blocks - 1) * double(block_size) + double(last ? last : block_size);
     const double possible = compressed * expansion_limit(compressor_) + 65536;
     if (compressed > data.remaining())
@@ -203,6 +152,7 @@ private:
     if (expanded > budget)
       fail(at, fmt::format("array {} decompresses to {:.1f} GiB, more than the {:.1f} GiB of memory available",
                            subdiv::quoted(shortened(name)), expanded / (1 << 30), budget / (1 << 30)));
+    return XmlArrayData{data, expanded, compressor_, block_size, last, std::move(packed)};
   }
 
   const fs::path& file_;
@@ -246,6 +196,8 @@ std::vector<std::size_t> xml_array_elements(std::string_view head) {
   return out;
 }
 
-void check_vtp_data_headers(const fs::path& file, std::string_view bytes) { HeaderChecker(file, bytes).run(); }
+std::map<std::size_t, XmlArrayData> check_vtp_data_headers(const fs::path& file, std::string_view bytes) {
+  return HeaderChecker(file, bytes).run();
+}
 
 }  // namespace subdiv::io_detail

@@ -7,10 +7,15 @@
 // must fit in the file, and what the blocks decompress to must be possible for the
 // compressor and fit in memory. Internal to io/.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
+
+#include "framework/io/vtk/vtk_xml_data_reader.h"
 
 namespace subdiv::io_detail {
 
@@ -25,7 +30,17 @@ std::optional<std::string_view> xml_attribute(std::string_view tag, std::string_
 // (both found by fuzz_read_vtp).
 std::vector<std::size_t> xml_array_elements(std::string_view head);
 
-// Throws subdiv::Error "<file>:<line>: ..." naming the array and the problem.
-void check_vtp_data_headers(const std::filesystem::path& file, std::string_view bytes);
+// One binary array's values as VTK reads them, its header checked.
+struct XmlArrayData {
+  XmlDataReader values;  // at the first value byte, or at the first compressed block's first byte
+  double bytes = 0;      // the values' size, decompressed
+  std::string compressor;                 // the VTKFile's compressor attribute ("" for none)
+  std::uint64_t block_size = 0, last_block = 0;  // compressed: the header's sizes (last 0: a full block)
+  std::vector<std::uint64_t> packed;      // compressed: each block's compressed size
+};
+
+// Throws subdiv::Error "<file>:<line>: ..." naming the array and the problem. Returns the
+// binary arrays' data by where their element starts in `bytes`.
+std::map<std::size_t, XmlArrayData> check_vtp_data_headers(const std::filesystem::path& file, std::string_view bytes);
 
 }  // namespace subdiv::io_detail

@@ -137,7 +137,9 @@ std::optional<std::vector<std::uint64_t>> words(const Run& run, std::size_t coun
   return out;
 }
 
-vtkSmartPointer<vtkDataCompressor> make_decompressor(VtpCompressor type) {
+}  // namespace
+
+vtkSmartPointer<vtkDataCompressor> make_vtp_decompressor(VtpCompressor type) {
   vtkSmartPointer<vtkDataCompressor> c;
   if (type == VtpCompressor::ZLib) c = vtkSmartPointer<vtkZLibDataCompressor>::New();
   if (type == VtpCompressor::LZ4) c = vtkSmartPointer<vtkLZ4DataCompressor>::New();
@@ -150,6 +152,8 @@ vtkSmartPointer<vtkDataCompressor> make_decompressor(VtpCompressor type) {
   c->AddObserver(vtkCommand::WarningEvent, quiet);
   return c;
 }
+
+namespace {
 
 // Pieces of an uncompressed array: about a megabyte, whole values.
 constexpr std::size_t kPiece = 1 << 20;
@@ -218,7 +222,7 @@ bool compressed(Source& source, std::size_t expected, std::size_t w, std::size_t
   if (!data) return false;
   std::atomic<bool> ok{true};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
-    const auto decompressor = make_decompressor(type);
+    const auto decompressor = make_vtp_decompressor(type);
     thread_local std::vector<unsigned char> text, plain;
     for (std::size_t b = r.begin(); b != r.end() && ok.load(std::memory_order_relaxed); ++b) {
       const std::size_t size = b + 1 == blocks ? std::size_t(tail) : std::size_t(block);

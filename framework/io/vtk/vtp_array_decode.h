@@ -12,6 +12,9 @@
 #include <optional>
 #include <string_view>
 
+#include <vtkDataCompressor.h>
+#include <vtkSmartPointer.h>
+
 #include "framework/io/vtk/vtp_layout.h"
 
 namespace subdiv::io_detail {
@@ -45,6 +48,10 @@ struct DecodedBytes {
 // The same into memory of its own (raw uncompressed data: a view of the file).
 std::optional<DecodedBytes> decode_vtp_array(std::string_view file, const VtpArray& array, std::size_t expected,
                                              std::size_t header_bytes, VtpCompressor compressor);
+
+// VTK's decompressor of `type` (not None), its error and warning events silenced: a block
+// that does not decompress shows as a short result, not as text on the terminal.
+vtkSmartPointer<vtkDataCompressor> make_vtp_decompressor(VtpCompressor type);
 
 // Exactly `bytes` bytes from the 4 * ceil(bytes / 3) characters at `text`, with '=' padding
 // in the last group as VTK writes it; false on any other character.

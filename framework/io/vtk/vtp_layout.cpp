@@ -92,12 +92,9 @@ private:
     const auto header = root.get("header_type");
     require(!header || header == "UInt32" || header == "UInt64");
     layout_.header_bytes = header == "UInt64" ? 8 : 4;
-    const auto compressor = root.get("compressor");
-    if (!compressor) layout_.compressor = VtpCompressor::None;
-    else if (compressor == "vtkZLibDataCompressor") layout_.compressor = VtpCompressor::ZLib;
-    else if (compressor == "vtkLZ4DataCompressor") layout_.compressor = VtpCompressor::LZ4;
-    else if (compressor == "vtkLZMADataCompressor") layout_.compressor = VtpCompressor::LZMA;
-    else throw Decline{};
+    const auto compressor = vtp_compressor_named(root.get("compressor").value_or(""));
+    require(compressor.has_value());
+    layout_.compressor = *compressor;
   }
 
   void piece(const Tag& tag) {
@@ -172,16 +169,10 @@ private:
   }
 
   VtpArray array(const Tag& tag, Where where) {
-    static constexpr std::pair<std::string_view, VtpType> kTypes[] = {
-        {"Int8", VtpType::Int8},     {"UInt8", VtpType::UInt8},   {"Int16", VtpType::Int16},
-        {"UInt16", VtpType::UInt16}, {"Int32", VtpType::Int32},   {"UInt32", VtpType::UInt32},
-        {"Int64", VtpType::Int64},   {"UInt64", VtpType::UInt64}, {"Float32", VtpType::Float32},
-        {"Float64", VtpType::Float64}};
     VtpArray a;
-    const auto type = tag.get("type");
-    const auto found = std::find_if(std::begin(kTypes), std::end(kTypes), [&](const auto& t) { return t.first == type; });
-    require(found != std::end(kTypes));
-    a.type = found->second;
+    const auto type = vtp_type_named(tag.get("type").value_or(""));
+    require(type.has_value());
+    a.type = *type;
     // VTK's reader fails on some unnamed arrays: those are left to it.
     a.name = std::string(tag.get("Name").value_or(""));
     require(!a.name.empty());
@@ -364,6 +355,25 @@ std::size_t vtp_type_size(VtpType type) {
 }
 
 bool vtp_type_is_float(VtpType type) { return type == VtpType::Float32 || type == VtpType::Float64; }
+
+std::optional<VtpType> vtp_type_named(std::string_view name) {
+  static constexpr std::pair<std::string_view, VtpType> kTypes[] = {
+      {"Int8", VtpType::Int8},     {"UInt8", VtpType::UInt8},   {"Int16", VtpType::Int16},
+      {"UInt16", VtpType::UInt16}, {"Int32", VtpType::Int32},   {"UInt32", VtpType::UInt32},
+      {"Int64", VtpType::Int64},   {"UInt64", VtpType::UInt64}, {"Float32", VtpType::Float32},
+      {"Float64", VtpType::Float64}};
+  const auto found = std::find_if(std::begin(kTypes), std::end(kTypes), [&](const auto& t) { return t.first == name; });
+  if (found == std::end(kTypes)) return std::nullopt;
+  return found->second;
+}
+
+std::optional<VtpCompressor> vtp_compressor_named(std::string_view name) {
+  if (name.empty()) return VtpCompressor::None;
+  if (name == "vtkZLibDataCompressor") return VtpCompressor::ZLib;
+  if (name == "vtkLZ4DataCompressor") return VtpCompressor::LZ4;
+  if (name == "vtkLZMADataCompressor") return VtpCompressor::LZMA;
+  return std::nullopt;
+}
 
 std::optional<VtpLayout> parse_vtp_layout(std::string_view file) {
   try {

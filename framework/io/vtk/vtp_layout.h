@@ -16,8 +16,12 @@ namespace subdiv::io_detail {
 enum class VtpType : std::uint8_t { Int8, UInt8, Int16, UInt16, Int32, UInt32, Int64, UInt64, Float32, Float64 };
 std::size_t vtp_type_size(VtpType type);
 bool vtp_type_is_float(VtpType type);
+// The type of a DataArray's type="..." text (Int8 ... Float64), if numeric.
+std::optional<VtpType> vtp_type_named(std::string_view name);
 
 enum class VtpCompressor : std::uint8_t { None, ZLib, LZ4, LZMA };
+// The compressor of a VTKFile's compressor="..." ("" is None), if VTK has it.
+std::optional<VtpCompressor> vtp_compressor_named(std::string_view name);
 
 struct VtpArray {
   std::string name;  // empty when the element has no Name
