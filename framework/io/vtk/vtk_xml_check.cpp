@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "framework/io/text_input.h"
-#include "framework/io/vtk/vtk_cell_offsets_check.h"
+#include "framework/io/vtk/vtk_array_lengths_check.h"
 #include "framework/io/vtk/vtk_xml_blocks.h"
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
@@ -176,7 +176,7 @@ private:
 
 void check_vtp_text(const fs::path& file, std::string_view bytes) {
   XmlChecker(file, bytes).run();
-  check_vtp_cell_offsets(file, bytes, check_vtp_data_headers(file, bytes));
+  check_vtp_array_lengths(file, bytes, check_vtp_data_headers(file, bytes));
 }
 
 void check_vtp_file(const fs::path& file) { check_vtp_text(file, read_whole_file(file)); }

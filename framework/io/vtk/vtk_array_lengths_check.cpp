@@ -1,4 +1,4 @@
-#include "framework/io/vtk/vtk_cell_offsets_check.h"
+#include "framework/io/vtk/vtk_array_lengths_check.h"
 
 #include <algorithm>
 #include <cctype>
@@ -13,13 +13,14 @@
 #include "framework/io/vtk/vtp_layout.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
+#include "framework/util/short_text.h"
 
 namespace subdiv::io_detail {
 namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::string_view kSections[] = {"Verts", "Lines", "Strips", "Polys"};
+constexpr std::string_view kCellSections[] = {"Verts", "Lines", "Strips", "Polys"};
 
 // Ascii data as vtkXMLDataParser reads it: from the file right after the element's start
 // tag, one integer after the other as an input stream reads them (blanks skipped, a sign,
@@ -45,6 +46,15 @@ AsciiValues ascii_values(std::string_view text, std::uint64_t limit) {
     ++out.count;
   }
   return out;
+}
+
+// At most how many numbers text holds: each needs a digit of its own.
+double digit_runs(std::string_view text) {
+  double runs = 0;
+  for (std::size_t p = 0; p < text.size(); ++p)
+    if (std::isdigit(static_cast<unsigned char>(text[p])) && (p == 0 || !std::isdigit(static_cast<unsigned char>(text[p - 1]))))
+      ++runs;
+  return runs;
 }
 
 // The integer in `raw` (the file's byte order) of `type`.
@@ -88,28 +98,22 @@ std::optional<double> binary_value(const XmlArrayData& data, std::uint64_t index
   return integer_of(std::string(plain.begin() + within, plain.begin() + within + size), type, big_endian);
 }
 
-class OffsetsChecker {
+class LengthsChecker {
 public:
-  OffsetsChecker(const fs::path& file, std::string_view bytes, const std::map<std::size_t, XmlArrayData>& binary)
-      : file_(file), bytes_(bytes), binary_(binary) {}
-
-  void run() const {
-    const std::size_t root = bytes_.find("<VTKFile");
-    if (root == std::string_view::npos) return;
-    big_endian_ = xml_attribute(tag_at(root), "byte_order").value_or("") == "BigEndian";
+  LengthsChecker(const fs::path& file, std::string_view bytes, const std::map<std::size_t, XmlArrayData>& binary)
+      : file_(file), bytes_(bytes), binary_(binary) {
+    if (const std::size_t root = bytes_.find("<VTKFile"); root != std::string_view::npos)
+      big_endian_ = xml_attribute(tag_at(root), "byte_order").value_or("") == "BigEndian";
     head_ = bytes_.substr(0, bytes_.find("<AppendedData"));
     arrays_ = xml_array_elements(head_);
-    for (std::size_t piece = element(head_, "Piece", 0); piece != std::string_view::npos;
-         piece = element(head_, "Piece", piece + 1)) {
-      const std::size_t piece_end = std::min(head_.find("</Piece", piece), head_.size());
-      for (const std::string_view section : kSections) {
-        long long cells = 0;
-        const auto count = xml_attribute(tag_at(piece), fmt::format("NumberOf{}", section));
-        if (!count || !parse_integer(*count, cells) || cells <= 0) continue;
-        const std::size_t at = element(head_, section, piece);
-        if (at < piece_end) check_section(section, at, std::min(head_.find(fmt::format("</{}", section), at), piece_end), cells);
-      }
-    }
+  }
+
+  void run() const {
+    for (std::size_t at = element("FieldData", 0); at != std::string_view::npos; at = element("FieldData", at + 1))
+      for (const std::size_t a : arrays_in(at, end_of("FieldData", at, head_.size())))
+        require_values(a, count_attribute(a, "NumberOfTuples"), "NumberOfTuples");
+    for (std::size_t piece = element("Piece", 0); piece != std::string_view::npos; piece = element("Piece", piece + 1))
+      check_piece(piece, end_of("Piece", piece, head_.size()));
   }
 
 private:
@@ -122,14 +126,30 @@ private:
     return bytes_.substr(at, std::min(bytes_.find('>', at), bytes_.size()) - at);
   }
 
-  // The next start tag named `name` at or after `from`.
-  static std::size_t element(std::string_view text, std::string_view name, std::size_t from) {
+  // The next start tag named `name` in the head at or after `from`.
+  std::size_t element(std::string_view name, std::size_t from) const {
     const std::string open = fmt::format("<{}", name);
-    for (std::size_t at = text.find(open, from); at != std::string_view::npos; at = text.find(open, at + 1)) {
+    for (std::size_t at = head_.find(open, from); at != std::string_view::npos; at = head_.find(open, at + 1)) {
       const std::size_t after = at + open.size();
-      if (after < text.size() && !std::isalnum(static_cast<unsigned char>(text[after]))) return at;
+      if (after < head_.size() && !std::isalnum(static_cast<unsigned char>(head_[after]))) return at;
     }
     return std::string_view::npos;
+  }
+
+  // Where the element `name` that starts at `at` ends (its closing tag), at most `limit`.
+  std::size_t end_of(std::string_view name, std::size_t at, std::size_t limit) const {
+    return std::min(head_.find(fmt::format("</{}", name), at), limit);
+  }
+
+  std::vector<std::size_t> arrays_in(std::size_t begin, std::size_t end) const {
+    return {std::lower_bound(arrays_.begin(), arrays_.end(), begin), std::lower_bound(arrays_.begin(), arrays_.end(), end)};
+  }
+
+  // A count attribute's value; 0 when missing or not a count (vtk_xml_check.cpp refuses those).
+  long long count_attribute(std::size_t at, std::string_view name) const {
+    long long v = 0;
+    const auto text = xml_attribute(tag_at(at), name);
+    return text && parse_integer(*text, v) && v > 0 ? v : 0;
   }
 
   // The first array named `name` in [begin, end).
@@ -143,9 +163,48 @@ private:
     return vtp_type_named(xml_attribute(tag_at(array), "type").value_or("")).value_or(VtpType::Int64);
   }
 
-  void check_section(std::string_view section, std::size_t begin, std::size_t end, long long cells) const {
+  // VTK sizes these arrays from the piece's counts and allocates before it reads them.
+  void check_piece(std::size_t piece, std::size_t piece_end) const {
+    const long long points = count_attribute(piece, "NumberOfPoints");
+    long long cells = 0;
+    for (const std::string_view section : kCellSections) cells += count_attribute(piece, fmt::format("NumberOf{}", section));
+    const auto section_range = [&](std::string_view name) -> std::pair<std::size_t, std::size_t> {
+      const std::size_t at = element(name, piece);
+      if (at >= piece_end) return {piece_end, piece_end};
+      return {at, end_of(name, at, piece_end)};
+    };
+    for (const auto& [name, count] : {std::pair<std::string_view, long long>{"Points", points}, {"PointData", points},
+                                      {"CellData", cells}}) {
+      const auto [begin, end] = section_range(name);
+      for (const std::size_t a : arrays_in(begin, end))
+        require_values(a, count, name == "CellData" ? "the piece's cells" : "NumberOfPoints");
+    }
+    for (const std::string_view section : kCellSections) {
+      const long long n = count_attribute(piece, fmt::format("NumberOf{}", section));
+      if (n <= 0) continue;
+      const auto [begin, end] = section_range(section);
+      check_cells(section, begin, end, n);
+    }
+  }
+
+  // An array of `tuples` tuples must hold tuples x components values.
+  void require_values(std::size_t array, long long tuples, std::string_view counted) const {
+    if (tuples <= 0) return;
+    long long components = 1;
+    if (const auto c = xml_attribute(tag_at(array), "NumberOfComponents")) parse_integer(*c, components);
+    const double needed = double(tuples) * double(components), held = length(array);
+    if (needed > held)
+      fail(array, fmt::format("array {} needs {:.0f} values ({} = {} x {} components), but its data holds at most "
+                              "{:.0f}; the file is cut off or its sizes are wrong",
+                              subdiv::quoted(shortened(xml_attribute(tag_at(array), "Name").value_or(""))), needed,
+                              counted, tuples, components, held));
+  }
+
+  // The connectivity is sized by the last offset.
+  void check_cells(std::string_view section, std::size_t begin, std::size_t end, long long cells) const {
     const auto offsets = array_named("offsets", begin, end), connectivity = array_named("connectivity", begin, end);
     if (!offsets || !connectivity) return;  // VTK's reader refuses the section before it allocates
+    require_values(*offsets, cells, fmt::format("NumberOf{}", section));
     const std::optional<double> last = value(*offsets, std::uint64_t(cells - 1));
     if (!last) return;
     const double capacity = length(*connectivity);
@@ -162,11 +221,13 @@ private:
     return read.count == index + 1 ? std::optional<double>(read.last) : std::nullopt;
   }
 
-  // How many values VTK can read from `array` (binary: at most).
+  // At most how many values VTK can read from `array`: binary, what its header says;
+  // ascii, one per run of digits up to the element's end (a number has at least one).
   double length(std::size_t array) const {
     if (const auto data = binary_.find(array); data != binary_.end())
       return data->second.bytes / double(vtp_type_size(type_of(array)));
-    return double(ascii_values(ascii_text(array), UINT64_MAX).count);
+    const std::string_view text = ascii_text(array);
+    return digit_runs(text.substr(0, text.find('<')));
   }
 
   std::string_view ascii_text(std::size_t array) const {
@@ -177,15 +238,15 @@ private:
   const fs::path& file_;
   std::string_view bytes_;
   const std::map<std::size_t, XmlArrayData>& binary_;
-  mutable bool big_endian_ = false;
-  mutable std::string_view head_;
-  mutable std::vector<std::size_t> arrays_;
+  bool big_endian_ = false;
+  std::string_view head_;
+  std::vector<std::size_t> arrays_;
 };
 
 }  // namespace
 
-void check_vtp_cell_offsets(const fs::path& file, std::string_view bytes, const std::map<std::size_t, XmlArrayData>& binary) {
-  OffsetsChecker(file, bytes, binary).run();
+void check_vtp_array_lengths(const fs::path& file, std::string_view bytes, const std::map<std::size_t, XmlArrayData>& binary) {
+  LengthsChecker(file, bytes, binary).run();
 }
 
 }  // namespace subdiv::io_detail

@@ -5,10 +5,12 @@
 // (refused, naming the value, which shows it was decoded exactly) and 2^47 (refused).
 #include <doctest/doctest.h>
 
+#include <bit>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <vtkNew.h>
 #include <vtkZLibDataCompressor.h>
 
@@ -80,7 +82,8 @@ std::string binary_data(const Form& form, const std::vector<std::uint64_t>& valu
   return form.base64 ? base64(head) + base64(blocks) : head + blocks;
 }
 
-// Three points and `faces` copies of one triangle whose offsets end in `last`.
+// Three points and `faces` copies of one triangle whose offsets end in `last`; every array
+// (field data too) in `form`, integers as Int64, coordinates as Float64.
 std::string triangle_file(const Form& form, int faces, std::uint64_t last) {
   std::vector<std::uint64_t> connectivity, offsets;
   for (int f = 0; f < faces; ++f) {
@@ -88,27 +91,32 @@ std::string triangle_file(const Form& form, int faces, std::uint64_t last) {
     offsets.push_back(3 * std::uint64_t(f + 1));
   }
   offsets.back() = last;
+  const std::vector<double> corners = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  std::vector<std::uint64_t> coordinates;
+  for (const double x : corners) coordinates.push_back(std::bit_cast<std::uint64_t>(x));
   std::string appended;
-  const auto array = [&](const char* name, const std::vector<std::uint64_t>& values) {
-    std::string tag = std::string("<DataArray type=\"Int64\" Name=\"") + name + "\"";
+  const auto array = [&](const std::string& attributes, const std::vector<std::uint64_t>& values, bool real) {
+    const std::string tag = "<DataArray " + attributes;
     if (form.appended) {
-      tag += " format=\"appended\" offset=\"" + std::to_string(appended.size()) + "\"/>\n";
+      const std::string offset = std::to_string(appended.size());
       appended += binary_data(form, values);
-      return tag;
+      return tag + " format=\"appended\" offset=\"" + offset + "\"/>\n";
     }
     if (form.base64) return tag + " format=\"binary\">" + binary_data(form, values) + "</DataArray>\n";
     std::string text;
-    for (const std::uint64_t v : values) text += std::to_string(v) + " ";
+    for (const std::uint64_t v : values) text += (real ? fmt::format("{}", std::bit_cast<double>(v)) : std::to_string(v)) + " ";
     return tag + " format=\"ascii\">" + text + "</DataArray>\n";
   };
-  std::string cells = array("connectivity", connectivity);
-  cells += array("offsets", offsets);
+  const std::string field = array("type=\"Int64\" Name=\"label\" NumberOfTuples=\"2\"", {7, 8}, false);
+  const std::string points = array("type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\"", coordinates, true);
+  std::string cells = array("type=\"Int64\" Name=\"connectivity\"", connectivity, false);
+  cells += array("type=\"Int64\" Name=\"offsets\"", offsets, false);
   std::string file = std::string("<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"") +
                      (form.big_endian ? "BigEndian" : "LittleEndian") + "\" header_type=\"UInt64\"" +
                      (form.compressed ? " compressor=\"vtkZLibDataCompressor\"" : "") + ">\n<PolyData>\n" +
+                     "<FieldData>\n" + field + "</FieldData>\n" +
                      "<Piece NumberOfPoints=\"3\" NumberOfPolys=\"" + std::to_string(faces) + "\">\n" +
-                     "<Points><DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" format=\"ascii\">"
-                     "0 0 0 1 0 0 0 1 0</DataArray></Points>\n<Polys>\n" + cells + "</Polys>\n</Piece>\n</PolyData>\n";
+                     "<Points>\n" + points + "</Points>\n<Polys>\n" + cells + "</Polys>\n</Piece>\n</PolyData>\n";
   if (form.appended) file += "<AppendedData encoding=\"" + std::string(form.base64 ? "base64" : "raw") + "\">\n_" + appended + "\n</AppendedData>\n";
   return file + "</VTKFile>\n";
 }
@@ -140,13 +148,46 @@ TEST_CASE(".vtp ascii offsets: read up to where VTK's stream stops, as VTK does"
   const fs::path file = dir / "cells.vtp";
   std::string text = triangle_file(kForms[0], 1, 3);
   // VTK's stream reads "3" and stops at 'x': the last offset is 3, and the file reads.
-  text.replace(text.find("\">3 </DataArray>"), 16, "\">3x99999999999 </DataArray>");
+  text.replace(text.find("\">3 </DataArray>\n</Polys>"), 16, "\">3x99999999999 </DataArray>");
   write_text(file, text);
   CHECK(io_detail::read_vtk_polydata_with_vtk(file).face_count() == 1);
   // A sign is part of the number: "+140737488355328" is the offset 2^47.
   text.replace(text.find("3x99999999999"), 13, "+140737488355328");
   write_text(file, text);
   CHECK(contains(error_of([&] { read_mesh(file); }), "the last offset of <Polys> is 140737488355328"));
+}
+
+}  // namespace
+}  // namespace subdiv::test
+
+namespace subdiv::test {
+namespace {
+
+TEST_CASE(".vtp: arrays VTK sizes from a count must hold that many values, in every form") {
+  TempDir dir;
+  const fs::path file = dir / "sizes.vtp";
+  for (const Form& form : kForms) {
+    CAPTURE(form.name);
+    const std::string good = triangle_file(form, 1, 3);
+    // 4 x 10^8 points: within memory for the sizes check (19 GB), and VTK allocated 9.6 GB
+    // for the coordinates before it found them missing.
+    for (const char* points : {"4", "400000000"}) {
+      std::string text = good;
+      text.replace(text.find("NumberOfPoints=\"3\""), 18, std::string("NumberOfPoints=\"") + points + "\"");
+      write_text(file, text);
+      const std::string m = error_of([&] { read_mesh(file); });
+      CHECK_MESSAGE(contains(m, "array 'Points' needs " + std::to_string(3 * std::stoll(points)) +
+                                    " values (NumberOfPoints = " + points + " x 3 components), but its data holds at most 9"),
+                    m);
+    }
+    std::string tuples = good;
+    tuples.replace(tuples.find("NumberOfTuples=\"2\""), 18, "NumberOfTuples=\"300000000\"");
+    write_text(file, tuples);
+    const std::string m = error_of([&] { read_mesh(file); });
+    CHECK_MESSAGE(contains(m, "array 'label' needs 300000000 values (NumberOfTuples = 300000000 x 1 components), but "
+                              "its data holds at most 2"),
+                  m);
+  }
 }
 
 }  // namespace
