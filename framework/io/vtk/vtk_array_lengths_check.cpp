@@ -111,7 +111,7 @@ public:
   void run() const {
     for (std::size_t at = element("FieldData", 0); at != std::string_view::npos; at = element("FieldData", at + 1))
       for (const std::size_t a : arrays_in(at, end_of("FieldData", at, head_.size())))
-        require_values(a, count_attribute(a, "NumberOfTuples"), "NumberOfTuples");
+        require_values(a, count_attribute(a, "NumberOfTuples"), "NumberOfTuples", "FieldData");
     for (std::size_t piece = element("Piece", 0); piece != std::string_view::npos; piece = element("Piece", piece + 1))
       check_piece(piece, end_of("Piece", piece, head_.size()));
   }
@@ -177,7 +177,7 @@ private:
                                       {"CellData", cells}}) {
       const auto [begin, end] = section_range(name);
       for (const std::size_t a : arrays_in(begin, end))
-        require_values(a, count, name == "CellData" ? "the piece's cells" : "NumberOfPoints");
+        require_values(a, count, name == "CellData" ? "the piece's cells" : "NumberOfPoints", name);
     }
     for (const std::string_view section : kCellSections) {
       const long long n = count_attribute(piece, fmt::format("NumberOf{}", section));
@@ -187,24 +187,26 @@ private:
     }
   }
 
-  // An array of `tuples` tuples must hold tuples x components values.
-  void require_values(std::size_t array, long long tuples, std::string_view counted) const {
+  // An array of `tuples` tuples in <section> must hold tuples x components values.
+  void require_values(std::size_t array, long long tuples, std::string_view counted, std::string_view section) const {
     if (tuples <= 0) return;
     long long components = 1;
     if (const auto c = xml_attribute(tag_at(array), "NumberOfComponents")) parse_integer(*c, components);
     const double needed = double(tuples) * double(components), held = length(array);
+    const std::string_view name = xml_attribute(tag_at(array), "Name").value_or("");
     if (needed > held)
-      fail(array, fmt::format("array {} needs {:.0f} values ({} = {} x {} components), but its data holds at most "
-                              "{:.0f}; the file is cut off or its sizes are wrong",
-                              subdiv::quoted(shortened(xml_attribute(tag_at(array), "Name").value_or(""))), needed,
-                              counted, tuples, components, held));
+      fail(array, fmt::format("{} needs {:.0f} values ({} = {} x {} components), but its data holds at most {:.0f}; "
+                              "the file is cut off or its sizes are wrong",
+                              name.empty() ? fmt::format("the unnamed array in <{}>", section)
+                                           : fmt::format("array {}", subdiv::quoted(shortened(name))),
+                              needed, counted, tuples, components, held));
   }
 
   // The connectivity is sized by the last offset.
   void check_cells(std::string_view section, std::size_t begin, std::size_t end, long long cells) const {
     const auto offsets = array_named("offsets", begin, end), connectivity = array_named("connectivity", begin, end);
     if (!offsets || !connectivity) return;  // VTK's reader refuses the section before it allocates
-    require_values(*offsets, cells, fmt::format("NumberOf{}", section));
+    require_values(*offsets, cells, fmt::format("NumberOf{}", section), section);
     const std::optional<double> last = value(*offsets, std::uint64_t(cells - 1));
     if (!last) return;
     const double capacity = length(*connectivity);

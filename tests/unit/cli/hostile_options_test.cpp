@@ -77,9 +77,11 @@ TEST_CASE("input paths that are FIFOs or symlinks to devices are refused at once
 TEST_CASE("VTK's own output never reaches the terminal; the message is ours and names the file") {
   const auto dir = fresh_dir("hostile-vtk");
   std::ofstream(dir / "bad.vtp") << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\">\n"
-                                    "<PolyData><Piece NumberOfPoints=\"3\" NumberOfPolys=\"1\">\n<Points>"
-                                    "<DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1"
-                                    "</DataArray></Points>\n</Piece></PolyData></VTKFile>\n";
+                                    "<PolyData><Piece NumberOfPoints=\"3\" NumberOfPolys=\"2\">\n<Points>"
+                                    "<DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0"
+                                    "</DataArray></Points>\n<Polys><DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">0 1 2"
+                                    "</DataArray><DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">5 3</DataArray></Polys>\n"
+                                    "</Piece></PolyData></VTKFile>\n";  // offsets that decrease: VTK fails
   const CliResult r = run_bounded("refine " + (dir / "bad.vtp").string() + " -o " + (dir / "a.obj").string());
   INFO(r.output);
   CHECK(r.exit_code == 1);
