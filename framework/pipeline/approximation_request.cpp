@@ -68,8 +68,9 @@ VertexLimits vertex_limits(const Scheme& scheme, const RefinedControlMesh& mesh,
   options.features = features;
   options.first_step = mesh.steps();
   LimitResult limits = limit_positions(scheme, mesh.level(), mesh.positions(), options);
+  // A vertex no face uses (a polyline's) is no patch's corner: its limit does not matter.
   for (Index v = 0; v < Index(limits.exact.size()); ++v)
-    if (!limits.exact[size_t(v)])
+    if (!limits.exact[size_t(v)] && mesh.level().incident_face_count(v) > 0)
       throw Error(fmt::format("vertex {}: its limit position is only approximated ({}), while the patches' corners "
                               "must be the exact limit; mend the mesh there, or evaluate the exact limit instead",
                               v, limits.approximate_reasons.empty() ? "no mask" : limits.approximate_reasons[0]));

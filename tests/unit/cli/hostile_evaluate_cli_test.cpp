@@ -255,6 +255,30 @@ TEST_CASE("evaluate --approximate: every output path is refused before any patch
   fs::permissions(dir / "read-only", fs::perms::owner_all);
 }
 
+TEST_CASE("evaluate --approximate: a polyline beside the faces changes nothing") {
+  // The polyline's vertices are no patch's corner, but their limit ("isolated vertex") was
+  // required to be exact, and the whole mesh refused.
+  const auto dir = fresh_dir("hostile-evaluate-polyline");
+  const std::string quads = "v 0 0 0\nv 1 0 0\nv 1 1 0.5\nv 0 1 0\nv 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\n";
+  std::ofstream(dir / "faces.obj") << quads;
+  std::ofstream(dir / "with-line.obj") << quads << "v 3 3 3\nv 4 4 4\nl 7 8\n";
+  std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n1,0.25,0.75\n0,0,0\n";
+  for (const char* kind : {"bezier", "gregory"}) {
+    CAPTURE(kind);
+    std::string outputs[2];
+    for (int with_line = 0; with_line < 2; ++with_line) {
+      const fs::path out = dir / (std::string(kind) + (with_line ? "-line.csv" : ".csv"));
+      const CliResult r = run_bounded("evaluate " + (dir / (with_line ? "with-line.obj" : "faces.obj")).string() +
+                                      " --approximate " + kind + " --at " + (dir / "points.csv").string() + " -o " +
+                                      out.string());
+      CHECK_MESSAGE(r.exit_code == 0, r.output);
+      outputs[with_line] = read_text(out);
+    }
+    CHECK(outputs[0].find("face,u,v,x,y,z") == 0);
+    CHECK(outputs[0] == outputs[1]);
+  }
+}
+
 TEST_CASE("evaluate --samples: a point the surface refuses names the mesh file, the face and the fix") {
   // A bipyramid whose two poles have valence 600, above the analysis' 512: its samples at the
   // poles are refused; the message must say which file, as the preparation's messages do.
