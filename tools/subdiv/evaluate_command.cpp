@@ -230,6 +230,7 @@ void run(const EvaluateArgs& a) {
   if ((a.samples > 0 || a.adaptive >= 0 || a.level_distance >= 0) && ext == ".csv")
     throw Error(fmt::format("-o {}: --samples, --adaptive and --level-distance write a mesh (.vtp, .obj, .ply, .off, .stl)",
                             subdiv::quoted(a.output)));
+  if (a.at.empty()) check_mesh_output_format(a.output);
   // Every file this run writes, before any work: a bad path found after the patches or
   // samples are made would cost all of it.
   for (const std::string& out : {a.output, a.bezier_net})

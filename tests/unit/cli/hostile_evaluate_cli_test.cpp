@@ -218,8 +218,9 @@ TEST_CASE("evaluate --approximate bezier --bezier-net: a failed -o leaves no con
 }
 
 TEST_CASE("evaluate --approximate: every output path is refused before any patch is built") {
-  // A --bezier-net in a missing folder, in a read-only place or naming a folder was reported
-  // only after the patches, samples and distances were made (13 s on the torus, --samples 300).
+  // A --bezier-net in a missing folder, in a read-only place or naming a folder, and an -o of
+  // a format no writer has, were reported only after the patches, samples and distances were
+  // made (13 s on the torus, --samples 300).
   const auto dir = fresh_dir("hostile-evaluate-paths");
   fs::create_directory(dir / "folder.vtu");
   std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n";
@@ -242,7 +243,8 @@ TEST_CASE("evaluate --approximate: every output path is refused before any patch
                 (dir / "n.vtu").string(),
             "does not exist; create it first"},
         Bad{" --approximate gregory" + at + " -o " + (read_only / "out.csv").string(),
-            "cannot create a temporary file in its directory"}}) {
+            "cannot create a temporary file in its directory"},
+        Bad{" --approximate bezier --samples 2 -o " + (dir / "out.vtu").string(), "unknown mesh format '.vtu'"}}) {
     CAPTURE(b.args);
     const CliResult r = run_bounded("evaluate " + kCube + b.args);
     CHECK(r.exit_code == 1);
