@@ -13,12 +13,17 @@
 namespace subdiv {
 namespace fs = std::filesystem;
 
-void write_mesh(const fs::path& file, const MeshData& mesh, const std::function<void(double done)>& progress) {
+void check_mesh_output_format(const fs::path& file) {
+  if (is_supported_output(file)) return;
   const std::string ext = lowercase_extension(file);
-  if (!is_supported_output(file))
-    throw Error(fmt::format("cannot write {}: unknown mesh format {}; supported: {}{}",
-                            subdiv::quoted(file.string()), subdiv::quoted(ext.empty() ? "(no extension)" : ext),
-                            supported_output_formats(), unsupported_format_hint(file)));
+  throw Error(fmt::format("cannot write {}: unknown mesh format {}; supported: {}{}", subdiv::quoted(file.string()),
+                          subdiv::quoted(ext.empty() ? "(no extension)" : ext), supported_output_formats(),
+                          unsupported_format_hint(file)));
+}
+
+void write_mesh(const fs::path& file, const MeshData& mesh, const std::function<void(double done)>& progress) {
+  check_mesh_output_format(file);
+  const std::string ext = lowercase_extension(file);
   if (const MeshFileWriter* registered = registered_mesh_writer(ext)) return (*registered)(file, mesh);
   validate_mesh_data(mesh, fmt::format("cannot write {}", subdiv::quoted(file.string())));
   const auto writer = ext == ".obj"   ? io_detail::write_obj

@@ -23,4 +23,8 @@ namespace subdiv {
 void write_mesh(const std::filesystem::path& file, const MeshData& mesh,
                 const std::function<void(double done)>& progress = {});
 
+// The refusal write_mesh gives for an extension it cannot write, for front-ends to give
+// before any work.
+void check_mesh_output_format(const std::filesystem::path& file);
+
 }  // namespace subdiv

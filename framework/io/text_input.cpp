@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "framework/io/io_progress.h"
+#include "framework/util/decimal_number.h"
 #include "framework/util/error.h"
 #include "framework/util/input_file.h"
 #include "framework/util/quoted_text.h"
@@ -58,19 +59,9 @@ bool Tokens::next(std::string_view& token) {
 
 bool Tokens::empty() { return trim(rest_).empty(); }
 
+// Overflow becomes +-inf (reported later as non-finite), underflow 0 (decimal_number.h).
 bool parse_double(std::string_view token, double& value) {
-  // from_chars rejects a leading '+', which some exporters write.
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-  const char* end = token.data() + token.size();
-  const auto [ptr, ec] = std::from_chars(token.data(), end, value);
-  if (ptr != end || token.empty()) return false;
-  if (ec == std::errc::result_out_of_range) {
-    // Overflow becomes +-inf (reported later as non-finite), underflow becomes 0 or a
-    // denormal: strtod gives exactly that, and this rare path may copy.
-    value = std::strtod(std::string(token).c_str(), nullptr);
-    return true;
-  }
-  return ec == std::errc();
+  return parse_decimal(token, value) != DecimalParse::not_a_number;
 }
 
 bool parse_integer(std::string_view token, long long& value) {

@@ -20,6 +20,7 @@
 #include "framework/limit/limit_surface.h"
 #include "framework/scheme/scheme.h"
 #include "framework/topology/non_manifold_place.h"
+#include "framework/util/byte_size_text.h"
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
 #include "framework/util/parallel_for_all.h"
@@ -263,11 +264,12 @@ void check_stage_fits(double split_count, int level, size_t stages, const char* 
   const double need = 4.0 * split_count * kBytesPerStageFace * double(stages);
   if (need < kUncheckedBytes) return;
   const MemoryBudget have = available_memory();
-  if (need > have.bytes)
-    throw Error(fmt::format("adaptive refinement: level {} would split {:.0f} faces into about {:.0f} and need about {:.1f} "
-                            "GiB, but only {:.1f} GiB of memory is available (limited by {}); {}",
-                            level, split_count, 4 * split_count, need / 1073741824.0,
-                            have.bytes / 1073741824.0, have.source, fix));
+  if (need > have.bytes) {
+    const auto [need_text, have_text] = byte_sizes_compared(need, have.bytes);
+    throw Error(fmt::format("adaptive refinement: level {} would split {:.0f} faces into about {:.0f} and need about {}, "
+                            "but only {} of memory is available (limited by {}); {}",
+                            level, split_count, 4 * split_count, need_text, have_text, have.source, fix));
+  }
 }
 
 // In double: level 12 of a large mesh has more faces than an Index counts.

@@ -109,8 +109,7 @@ void QuadMesh::find_sectors() {
       if (why)
         throw Error(fmt::format("face {}: vertex {} {}: Loop & Schaefer's masks are built here for smooth vertices, "
                                 "boundaries and creases with two or more faces on each side, and corners, and "
-                                "refining keeps a vertex's faces; evaluate the exact limit instead (without "
-                                "--approximate)",
+                                "refining keeps a vertex's faces; evaluate the exact limit instead",
                                 f, v, why));
       sectors_.push_back(s);
     }

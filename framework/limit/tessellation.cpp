@@ -12,6 +12,7 @@
 #include "framework/util/error.h"
 #include "framework/util/option_spelling.h"
 #include "framework/limit/unit_normal.h"
+#include "framework/util/byte_size_text.h"
 #include "framework/util/memory_limit.h"
 #include "framework/util/parallel_for_all.h"
 
@@ -181,10 +182,12 @@ void check_samples_fit(const Level& base, bool triangles, int N, size_t face_var
   }
   const double need = points * (kBytesPerSample + kBytesPerChannelSample * double(face_varying_channels));
   const MemoryBudget have = available_memory();
-  if (need > have.bytes)
-    throw OptionError(fmt::format("{{samples}} {}: {:.3g} sample points would need about {:.1f} GiB, but only {:.1f} "
-                                  "GiB of memory is available (limited by {}); ask for fewer samples per edge",
-                                  N, points, need / 1073741824.0, have.bytes / 1073741824.0, have.source));
+  if (need > have.bytes) {
+    const auto [need_text, have_text] = byte_sizes_compared(need, have.bytes);
+    throw OptionError(fmt::format("{{samples}} {}: {:.3g} sample points would need about {}, but only {} of memory is "
+                                  "available (limited by {}); ask for fewer samples per edge",
+                                  N, points, need_text, have_text, have.source));
+  }
 }
 
 Tessellation tessellation_grid(const Level& topology, const Level& base, bool triangles, int N) {

@@ -68,10 +68,11 @@ VertexLimits vertex_limits(const Scheme& scheme, const RefinedControlMesh& mesh,
   options.features = features;
   options.first_step = mesh.steps();
   LimitResult limits = limit_positions(scheme, mesh.level(), mesh.positions(), options);
+  // A vertex no face uses (a polyline's) is no patch's corner: its limit does not matter.
   for (Index v = 0; v < Index(limits.exact.size()); ++v)
-    if (!limits.exact[size_t(v)])
-      throw Error(fmt::format("vertex {}: its limit position is only approximated ({}); the patches' corners must "
-                              "be the exact limit",
+    if (!limits.exact[size_t(v)] && mesh.level().incident_face_count(v) > 0)
+      throw Error(fmt::format("vertex {}: its limit position is only approximated ({}), while the patches' corners "
+                              "must be the exact limit; mend the mesh there, or evaluate the exact limit instead",
                               v, limits.approximate_reasons.empty() ? "no mask" : limits.approximate_reasons[0]));
   for (Index v = 0; v < Index(limits.normal_exact.size()); ++v)
     if (!limits.normal_exact[size_t(v)])  // estimated normals are not used: the masks' tangents stay
@@ -166,8 +167,8 @@ void check_patch_count(const Level& base, int steps, const char* option) {
   if (patches > kMostPatches)
     throw OptionError(fmt::format("{}: the patches would be built on level {} (where the semi-sharp tags have decayed): "
                             "{:.3g} patches, more than {:.3g}; make tags that sharp infinitely sharp (10), or "
-                            "evaluate the exact limit (without --approximate)",
-                            option, steps, patches, kMostPatches));
+                            "evaluate the exact limit instead of {}",
+                            option, steps, patches, kMostPatches, option));
 }
 
 // Where the patches' control mesh is not the base mesh, what a refusal's face and vertex

@@ -11,6 +11,7 @@
 #include "framework/plugin/polyline_refine.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
+#include "framework/util/byte_size_text.h"
 #include "framework/util/memory_limit.h"
 #include "framework/util/option_spelling.h"
 #include "framework/util/quoted_text.h"
@@ -164,10 +165,12 @@ void check_curve_size(const CurveLevel& base, int arity, int levels, double budg
                                   levels, points));
   const double need = points * kBytesPerPoint;
   const MemoryBudget have = memory_budget(budget);
-  if (need > have.bytes)
-    throw OptionError(fmt::format("{} levels would make about {:.3g} points and need about {:.1f} GiB, but only "
-                                  "{:.1f} GiB of memory is available (limited by {}); ask for fewer levels ({{levels}})",
-                                  levels, points, need / (1 << 30), have.bytes / (1 << 30), have.source));
+  if (need > have.bytes) {
+    const auto [need_text, have_text] = byte_sizes_compared(need, have.bytes);
+    throw OptionError(fmt::format("{} levels would make about {:.3g} points and need about {}, but only {} of memory "
+                                  "is available (limited by {}); ask for fewer levels ({{levels}})",
+                                  levels, points, need_text, have_text, have.source));
+  }
 }
 
 CurveRefineResult refine_curve_request(CurveRefineRequest request) {

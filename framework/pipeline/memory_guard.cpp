@@ -8,6 +8,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "framework/util/byte_size_text.h"
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
 #include "framework/util/quoted_text.h"
@@ -27,16 +28,6 @@ double finest_faces(const Scheme& scheme, const Level& base, int levels) {
   return faces;
 }
 
-// MiB, GiB, then TiB and PiB, so that 30 levels of a cube read "1.84e+06 PiB", not
-// "1932735283200.0 GiB".
-std::string size_text(double bytes) {
-  constexpr double kGiB = double(1 << 30), kTiB = 1024 * kGiB, kPiB = 1024 * kTiB;
-  if (bytes >= 1024 * kPiB) return fmt::format("{:.3g} PiB", bytes / kPiB);
-  if (bytes >= kPiB) return fmt::format("{:.1f} PiB", bytes / kPiB);
-  if (bytes >= kTiB) return fmt::format("{:.1f} TiB", bytes / kTiB);
-  return bytes >= kGiB ? fmt::format("{:.1f} GiB", bytes / kGiB) : fmt::format("{:.1f} MiB", bytes / (1 << 20));
-}
-
 }  // namespace
 
 double refinement_bytes(const Scheme& scheme, const Level& base, int levels) {
@@ -46,11 +37,12 @@ double refinement_bytes(const Scheme& scheme, const Level& base, int levels) {
 void check_fits_in_memory(const Scheme& scheme, const Level& base, int levels, double limit, const std::string& fix) {
   const MemoryBudget have = memory_budget(limit);
   const double need = refinement_bytes(scheme, base, levels);
-  if (need > have.bytes)
+  if (need > have.bytes) {
+    const auto [need_text, have_text] = byte_sizes_compared(need, have.bytes);
     throw Error(fmt::format("{} levels would make about {:.3g} faces and need about {}, but only {} of memory is "
                             "available (limited by {}); {}",
-                            levels, finest_faces(scheme, base, levels), size_text(need), size_text(have.bytes),
-                            have.source, fix));
+                            levels, finest_faces(scheme, base, levels), need_text, have_text, have.source, fix));
+  }
 }
 
 double resident_bytes() {

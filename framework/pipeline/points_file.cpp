@@ -5,6 +5,7 @@
 #include <fstream>
 #include <tuple>
 
+#include "framework/util/decimal_number.h"
 #include "framework/util/error.h"
 #include "framework/util/input_file.h"
 #include "framework/util/quoted_text.h"
@@ -19,16 +20,26 @@ std::string_view trimmed(std::string_view s) {
   return b == std::string_view::npos ? std::string_view() : s.substr(b, e - b + 1);
 }
 
-// Empty when `text` is a number of type T, else why not, for the message ("is not `kind`").
-template <class T>
-std::string parse_field(std::string_view text, T& out, std::string_view kind) {
+// Empty when `text` is a whole number, else why not, for the message ("is not a whole number").
+std::string parse_field(std::string_view text, Index& out) {
   std::string_view t = trimmed(text);
   // from_chars takes no '+', which spreadsheets may write: "+1" is a whole number.
   if (t.size() > 1 && t[0] == '+' && t[1] != '-' && t[1] != '+') t.remove_prefix(1);
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
   if (ec == std::errc::result_out_of_range) return "is out of range";
-  if (ec != std::errc() || end != t.data() + t.size() || t.empty()) return fmt::format("is not {}", kind);
+  if (ec != std::errc() || end != t.data() + t.size() || t.empty()) return "is not a whole number";
   return {};
+}
+
+// The same for a u or v: one too small for a double (1e-400) is 0, as a subnormal (4e-320)
+// is already close to it, and lies in the domain; one too large (1e400) is refused.
+std::string parse_field(std::string_view text, double& out) {
+  switch (parse_decimal(trimmed(text), out)) {
+    case DecimalParse::ok: return {};
+    case DecimalParse::overflow: return "is out of range: larger than a double holds (about 1.8e308)";
+    case DecimalParse::not_a_number: break;
+  }
+  return "is not a number";
 }
 
 // A field or header in a message: quoted as it is (control bytes escaped, quoted_text.h), its
@@ -73,10 +84,10 @@ void parse_row(std::string_view line, size_t number, const std::string& file, co
   if (fields.size() != 3) throw Error(fmt::format("{}: {} fields; a row is face,u,v", where, fields.size()));
   Index face = 0;
   double u = 0, v = 0;
-  if (const std::string why = parse_field(fields[0], face, "a whole number"); !why.empty())
+  if (const std::string why = parse_field(fields[0], face); !why.empty())
     throw Error(fmt::format("{}: face {} {}", where, shown(trimmed(fields[0])), why));
   for (const auto& [name, field, value] : {std::tuple{"u", fields[1], &u}, std::tuple{"v", fields[2], &v}})
-    if (const std::string why = parse_field(field, *value, "a number"); !why.empty())
+    if (const std::string why = parse_field(field, *value); !why.empty())
       throw Error(fmt::format("{}: {} = {} {}; u and v must be numbers", where, name, shown(trimmed(field)), why));
   if (const std::string why = check(face, u, v); !why.empty()) throw Error(fmt::format("{}: {}", where, why));
   out.faces.push_back(face);

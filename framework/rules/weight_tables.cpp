@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "framework/util/error.h"
+#include "framework/util/byte_size_text.h"
 #include "framework/util/memory_limit.h"
 
 namespace subdiv {
@@ -68,11 +69,12 @@ void check_table_fits(const TableShape& shape, const std::string& where, int max
   const double bytes = double(shape.size) * sizeof(double);
   if (bytes < kUncheckedBytes) return;  // every term of every step comes here
   const MemoryBudget budget = available_memory();
-  if (bytes > budget.bytes)
-    throw Error(fmt::format("{}: its weight table for valences up to {} has {} entries ({:.1f} GiB), more than the "
-                            "{:.1f} GiB of memory this process may use ({}); the mesh's largest valence is too large "
-                            "for this rule",
-                            where, max_n, shape.size, bytes / (1 << 30), budget.bytes / (1 << 30), budget.source));
+  if (bytes > budget.bytes) {
+    const auto [need_text, have_text] = byte_sizes_compared(bytes, budget.bytes);
+    throw Error(fmt::format("{}: its weight table for valences up to {} has {} entries ({}), more than the {} of "
+                            "memory this process may use ({}); the mesh's largest valence is too large for this rule",
+                            where, max_n, shape.size, need_text, have_text, budget.source));
+  }
 }
 
 // Calls visit(index into the table, coordinates) for every entry of a table of this shape,

@@ -98,6 +98,12 @@ void require_regular_or_absent(const fs::path& target) {
                           subdiv::quoted(target.string()), file_type_name(type)));
 }
 
+void require_target(const fs::path& target) {
+  require_directory(target);
+  require_name_fits(target);
+  require_regular_or_absent(target);
+}
+
 void rename_into_place(const fs::path& tmp, const fs::path& target) {
   std::error_code ec;
   fs::rename(tmp, target, ec);
@@ -137,10 +143,19 @@ int remove_stale_temporaries(const fs::path& target) {
 
 StagedFiles::~StagedFiles() { discard(); }
 
+void check_writable(const fs::path& target) {
+  require_target(target);
+  // Permissions, a read-only file system, a full inode table: only creating a file tells
+  // (access() says yes to root on a read-only folder). The probe is a temporary like
+  // stage()'s, so one left by a kill is removed as theirs are.
+  const fs::path probe = temporary_name(target);
+  ::close(create_locked(probe, target));
+  std::error_code ec;
+  fs::remove(probe, ec);
+}
+
 fs::path StagedFiles::stage(const fs::path& target) {
-  require_directory(target);
-  require_name_fits(target);
-  require_regular_or_absent(target);
+  require_target(target);
   remove_stale_temporaries(target);
   const fs::path tmp = temporary_name(target);
   const int fd = create_locked(tmp, target);

@@ -42,6 +42,11 @@ private:
   std::vector<Staged> staged_;
 };
 
+// Refuses, with the reason and the fix, a target that writing would fail on: its directory
+// missing or not writable, a name too long, a directory or device in its place. Called for
+// every output before a command does any work, so that a bad path does not cost the work.
+void check_writable(const std::filesystem::path& target);
+
 // Removes the temporaries of `target` (".<name>.<id>.tmp" beside it) that no live writer
 // holds: leftovers of a killed run. Returns how many it removed. stage() calls it.
 int remove_stale_temporaries(const std::filesystem::path& target);

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "framework/util/error.h"
+#include "framework/util/byte_size_text.h"
 #include "framework/util/memory_limit.h"
 #include "framework/util/quoted_text.h"
 
@@ -40,11 +41,12 @@ void check_input_file(const fs::path& file, std::string_view what) {
   if (ec) throw Error(fmt::format("cannot open {}: {}", subdiv::quoted(file.string()), ec.message()));
   // Readers hold at least the whole text; a file larger than the memory left cannot be read.
   const MemoryBudget budget = available_memory();
-  if (double(size) > budget.bytes)
-    throw Error(
-        fmt::format("cannot read {}: it is {:.2f} GiB, more than the {:.2f} GiB of memory this process "
-                    "may still use ({}); split the {} file or raise the limit",
-                    subdiv::quoted(file.string()), double(size) / (1 << 30), budget.bytes / (1 << 30), budget.source, what));
+  if (double(size) > budget.bytes) {
+    const auto [need_text, have_text] = byte_sizes_compared(double(size), budget.bytes);
+    throw Error(fmt::format("cannot read {}: it is {}, more than the {} of memory this process may still use ({}); "
+                            "split the {} file or raise the limit",
+                            subdiv::quoted(file.string()), need_text, have_text, budget.source, what));
+  }
   std::ifstream probe(file, std::ios::binary);
   if (!probe) throw Error(fmt::format("cannot open {}: {}", subdiv::quoted(file.string()), std::strerror(errno)));
 }

@@ -9,6 +9,8 @@
 #include <unistd.h>
 #include <vector>
 
+#include "framework/util/byte_size_text.h"
+
 namespace subdiv {
 namespace fs = std::filesystem;
 
@@ -59,7 +61,7 @@ void walk_up(const fs::path& root, const fs::path& path, const char* limit_file,
     if (const auto limit = read_number(dir / limit_file)) {
       const double used = std::max(0.0, read_number(dir / usage_file).value_or(0.0) - reclaimable_cache(dir));
       keep_least(best, *limit - used,
-                 fmt::format("the cgroup limit {} = {:.2f} GiB", (dir / limit_file).string(), *limit / (1 << 30)));
+                 fmt::format("the cgroup limit {} = {}", (dir / limit_file).string(), byte_size_text(*limit)));
     }
     if (relative.empty()) return;
   }
@@ -117,7 +119,7 @@ std::optional<MemoryBudget> rlimit_remaining() {
     rlimit r{};
     if (getrlimit(l.resource, &r) != 0 || r.rlim_cur == RLIM_INFINITY) continue;
     keep_least(best, double(r.rlim_cur) - l.used,
-               fmt::format("the process limit {} = {:.2f} GiB", l.name, double(r.rlim_cur) / (1 << 30)));
+               fmt::format("the process limit {} = {}", l.name, byte_size_text(double(r.rlim_cur))));
   }
   return best;
 }
@@ -134,8 +136,8 @@ std::string out_of_memory_message(const std::string& during) {
   const MemoryBudget budget = available_memory();
   const std::string have =
       budget.bytes >= 1e17 ? std::string("no limit is known")
-                           : fmt::format("about {:.2f} GiB was still available, limited by {}",
-                                         budget.bytes / (1 << 30), budget.source);
+                           : fmt::format("about {} was still available, limited by {}",
+                                         byte_size_text(budget.bytes), budget.source);
   return fmt::format("out of memory while {} ({}); ask for fewer levels or a smaller input, or raise the limit",
                      during, have);
 }

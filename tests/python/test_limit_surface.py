@@ -342,3 +342,25 @@ def test_an_approximation_refused_names_the_python_method_not_the_command_line_o
     assert message.startswith(kind + "(): ")
     assert "triangles" in message
     assert "--approximate" not in message
+
+
+@pytest.mark.parametrize("kind", ["approximate_bezier", "approximate_gregory"])
+@pytest.mark.parametrize("tags, why", [("t corner 1/1/0 0 10", "a cone point"),
+                                       ("t crease 2/1/0 4 5 9.5", "more than"),
+                                       (None, "non-manifold")])
+def test_every_refusal_of_an_approximation_offers_the_exact_limit_in_python_words(tmp_path, kind, tags, why):
+    """A cone point, a semi-sharp tag that would take millions of patches and a non-manifold
+    vertex are refused with the fix (the exact limit) in words a Python user can follow: the
+    command line's '(without --approximate)' was left in them."""
+    if tags is None:
+        mesh = sk.read_mesh(str(MESHES / "flap-fan.obj"))
+    else:
+        (tmp_path / "m.obj").write_text((MESHES / "cube.obj").read_text() + tags + "\n")
+        mesh = sk.read_mesh(str(tmp_path / "m.obj"))
+    with pytest.raises(sk.Error) as refused:
+        getattr(sk.LimitSurface(mesh, "catmull-clark"), kind)(2)
+    message = str(refused.value)
+    assert message.startswith(kind + "(): ")
+    assert why in message
+    assert "evaluate the exact limit instead" in message
+    assert "--approximate" not in message

@@ -230,6 +230,11 @@ void run(const EvaluateArgs& a) {
   if ((a.samples > 0 || a.adaptive >= 0 || a.level_distance >= 0) && ext == ".csv")
     throw Error(fmt::format("-o {}: --samples, --adaptive and --level-distance write a mesh (.vtp, .obj, .ply, .off, .stl)",
                             subdiv::quoted(a.output)));
+  if (a.at.empty()) check_mesh_output_format(a.output);
+  // Every file this run writes, before any work: a bad path found after the patches or
+  // samples are made would cost all of it.
+  for (const std::string& out : {a.output, a.bezier_net})
+    if (!out.empty()) check_writable(out);
   const int threads = a.threads > 0 ? a.threads : int(tbb::this_task_arena::max_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
   Progress progress;
@@ -305,7 +310,7 @@ void add_evaluate_command(CLI::App& app) {
   add_fvar_boundary_option(cmd, args->fvar_boundary,
                            "Face-varying data (OBJ vt: UVs with seams), evaluated at the same points (columns NAME_0, "
                            "NAME_1, ... after the others)");
-  cmd->add_option("--at", args->at, "Points to evaluate: a .csv with the header face,u,v");
+  cmd->add_option("--at", args->at, "Points to evaluate: a .csv with the header face,u,v, then one point per row (a u or v too small for a double, as 1e-400, is 0)");
   cmd->add_option("--samples", args->samples,
                   "Instead of --at: the surface as a crack-free mesh, N x N quads per quad, N^2 triangles per "
                   "triangle (faces with other sizes: N/2 x N/2 per sub-face, N even), with normals; face-varying "

@@ -12,6 +12,7 @@
 #include "framework/engine/mesh_pieces.h"
 #include "framework/io/vtk/vtk_pieces.h"
 #include "framework/util/atomic_file.h"
+#include "framework/util/byte_size_text.h"
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
 #include "level_output.h"
@@ -97,10 +98,13 @@ int pieces_for_memory(const SchemeSequence& seq, const Level& base, std::span<co
                       double max_memory) {
   const Scheme& scheme = *seq.schemes.front();
   // What is held already (the base mesh, its level) stays while every piece is refined.
-  const double budget = max_memory - resident_bytes();
-  if (budget <= 0)
-    throw Error(fmt::format("--max-memory {:.0f} MiB is less than the base mesh alone takes ({:.0f} MiB); allow more",
-                            max_memory / (1 << 20), resident_bytes() / (1 << 20)));
+  const double held = resident_bytes();
+  const double budget = max_memory - held;
+  if (budget <= 0) {
+    const auto [held_text, max_text] = byte_sizes_compared(held, max_memory);
+    throw Error(fmt::format("--max-memory {} is less than the base mesh alone takes ({}); allow more", max_text,
+                            held_text));
+  }
   const double whole = refinement_bytes(scheme, base, seq.total_levels) * kWriterOverhead;
   // Ghost faces make pieces larger than their share: from the share's count, double until
   // the largest piece with its ghost rings fits (or every face is a piece).

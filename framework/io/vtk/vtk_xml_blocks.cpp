@@ -11,6 +11,7 @@
 #include "framework/io/text_input.h"
 #include "framework/io/vtk/vtk_xml_data_reader.h"
 #include "framework/util/error.h"
+#include "framework/util/byte_size_text.h"
 #include "framework/util/memory_limit.h"
 #include "framework/util/short_text.h"
 #include "framework/util/quoted_text.h"
@@ -149,9 +150,11 @@ private:
       fail(at, fmt::format("array {}: its data header claims {} blocks of {} bytes from {:.0f} compressed bytes, "
                            "more than {} can produce; the header is damaged",
                            subdiv::quoted(shortened(name)), blocks, block_size, compressed, compressor_));
-    if (expanded > budget)
-      fail(at, fmt::format("array {} decompresses to {:.1f} GiB, more than the {:.1f} GiB of memory available",
-                           subdiv::quoted(shortened(name)), expanded / (1 << 30), budget / (1 << 30)));
+    if (expanded > budget) {
+      const auto [need_text, have_text] = byte_sizes_compared(expanded, budget);
+      fail(at, fmt::format("array {} decompresses to {}, more than the {} of memory available",
+                           subdiv::quoted(shortened(name)), need_text, have_text));
+    }
     return XmlArrayData{data, expanded, compressor_, block_size, last, std::move(packed)};
   }
 

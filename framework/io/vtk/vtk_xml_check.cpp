@@ -13,6 +13,7 @@
 #include "framework/io/vtk/vtk_array_lengths_check.h"
 #include "framework/io/vtk/vtk_xml_blocks.h"
 #include "framework/util/error.h"
+#include "framework/util/byte_size_text.h"
 #include "framework/util/memory_limit.h"
 #include "framework/util/short_text.h"
 #include "framework/util/quoted_text.h"
@@ -71,12 +72,13 @@ public:
     sections(head, arrays);
     const double need = points * kBytesPerPoint + cells * kBytesPerCell;
     const MemoryBudget budget = available_memory();
-    if (need > budget.bytes)
-      throw Error(fmt::format("cannot read {}: its {:.3g} points and {:.3g} cells would need about {:.1f} GiB, but "
-                              "only {:.1f} GiB of memory is available (limited by {}); the sizes in its <Piece> are "
-                              "wrong, or the mesh is too large for this machine",
-                              subdiv::quoted(file_.string()), points, cells, need / (1 << 30), budget.bytes / (1 << 30),
-                              budget.source));
+    if (need > budget.bytes) {
+      const auto [need_text, have_text] = byte_sizes_compared(need, budget.bytes);
+      throw Error(fmt::format("cannot read {}: its {:.3g} points and {:.3g} cells would need about {}, but only {} of "
+                              "memory is available (limited by {}); the sizes in its <Piece> are wrong, or the mesh is "
+                              "too large for this machine",
+                              subdiv::quoted(file_.string()), points, cells, need_text, have_text, budget.source));
+    }
   }
 
 private:

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <numbers>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "support/cli_runner.h"
 
@@ -214,6 +215,70 @@ TEST_CASE("evaluate --approximate bezier --bezier-net: a failed -o leaves no con
   CHECK(ok.exit_code == 0);
   CHECK(fs::exists(dir / "ok.obj"));
   CHECK(read_text(dir / "nets.vtu").find("VTKFile") != std::string::npos);
+}
+
+TEST_CASE("evaluate --approximate: every output path is refused before any patch is built") {
+  // A --bezier-net in a missing folder, in a read-only place or naming a folder, and an -o of
+  // a format no writer has, were reported only after the patches, samples and distances were
+  // made (13 s on the torus, --samples 300).
+  const auto dir = fresh_dir("hostile-evaluate-paths");
+  fs::create_directory(dir / "folder.vtu");
+  std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n";
+  // As root a folder without write permission is writable; /sys is not, even to root.
+  fs::path read_only = dir / "read-only";
+  fs::create_directory(read_only);
+  fs::permissions(read_only, fs::perms::owner_read | fs::perms::owner_exec);
+  if (::geteuid() == 0) read_only = "/sys";
+  const std::string at = " --at " + (dir / "points.csv").string();
+  struct Bad {
+    std::string args;
+    std::string message;
+  };
+  const std::string nets = " --approximate bezier --samples 2 -o " + (dir / "out.vtp").string() + " --bezier-net ";
+  for (const Bad& b :
+       {Bad{nets + (dir / "missing" / "n.vtu").string(), "does not exist; create it first"},
+        Bad{nets + (dir / "folder.vtu").string(), "it is a directory; name a file, in it or beside it"},
+        Bad{nets + (read_only / "n.vtu").string(), "cannot create a temporary file in its directory"},
+        Bad{" --approximate bezier" + at + " -o " + (dir / "missing" / "out.csv").string() + " --bezier-net " +
+                (dir / "n.vtu").string(),
+            "does not exist; create it first"},
+        Bad{" --approximate gregory" + at + " -o " + (read_only / "out.csv").string(),
+            "cannot create a temporary file in its directory"},
+        Bad{" --approximate bezier --samples 2 -o " + (dir / "out.vtu").string(), "unknown mesh format '.vtu'"}}) {
+    CAPTURE(b.args);
+    const CliResult r = run_bounded("evaluate " + kCube + b.args);
+    CHECK(r.exit_code == 1);
+    CHECK_MESSAGE(contains(r.output, b.message), r.output);
+    CHECK_MESSAGE(!contains(r.output, "against the exact limit"), r.output);  // the work's summary: none was done
+  }
+  size_t left = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) left += !contains("folder.vtu points.csv read-only", entry.path().filename().string());
+  CHECK(left == 0);
+  fs::permissions(dir / "read-only", fs::perms::owner_all);
+}
+
+TEST_CASE("evaluate --approximate: a polyline beside the faces changes nothing") {
+  // The polyline's vertices are no patch's corner, but their limit ("isolated vertex") was
+  // required to be exact, and the whole mesh refused.
+  const auto dir = fresh_dir("hostile-evaluate-polyline");
+  const std::string quads = "v 0 0 0\nv 1 0 0\nv 1 1 0.5\nv 0 1 0\nv 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\n";
+  std::ofstream(dir / "faces.obj") << quads;
+  std::ofstream(dir / "with-line.obj") << quads << "v 3 3 3\nv 4 4 4\nl 7 8\n";
+  std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n1,0.25,0.75\n0,0,0\n";
+  for (const char* kind : {"bezier", "gregory"}) {
+    CAPTURE(kind);
+    std::string outputs[2];
+    for (int with_line = 0; with_line < 2; ++with_line) {
+      const fs::path out = dir / (std::string(kind) + (with_line ? "-line.csv" : ".csv"));
+      const CliResult r = run_bounded("evaluate " + (dir / (with_line ? "with-line.obj" : "faces.obj")).string() +
+                                      " --approximate " + kind + " --at " + (dir / "points.csv").string() + " -o " +
+                                      out.string());
+      CHECK_MESSAGE(r.exit_code == 0, r.output);
+      outputs[with_line] = read_text(out);
+    }
+    CHECK(outputs[0].find("face,u,v,x,y,z") == 0);
+    CHECK(outputs[0] == outputs[1]);
+  }
 }
 
 TEST_CASE("evaluate --samples: a point the surface refuses names the mesh file, the face and the fix") {

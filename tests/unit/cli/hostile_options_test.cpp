@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <fstream>
+#include <regex>
 #include <sys/stat.h>
 
 #include "support/cli_checks.h"
@@ -150,6 +151,23 @@ TEST_CASE("a sampled limit surface that would not fit is refused before any samp
   check_refused_within_400_mb("evaluate " + kCube + " --samples 1024 -o ",
                               fresh_dir("hostile-samples-memory") / "big.vtp",
                               {"--samples 1024: 6.3e+06 sample points would need about", "ask for fewer samples per edge"});
+#endif
+}
+
+TEST_CASE("a memory refusal prints its two sizes so that they differ, however close") {
+#if SUBDIV_TEST_ASAN
+  MESSAGE("skipped: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");
+#else
+  // --samples 500 on the cube needs some 345 MiB, a little more than the 0.4 GB limit leaves:
+  // with one decimal in GiB it read "would need about 0.3 GiB, but only 0.3 GiB".
+  const auto out = fresh_dir("hostile-samples-close-memory") / "big.vtp";
+  const CliResult r = run_subdiv_with_prefix("ulimit -v 400000; ", "evaluate " + kCube + " --samples 500 -o " + out.string());
+  INFO(r.output);
+  CHECK(r.exit_code == 1);
+  std::smatch sizes;
+  REQUIRE(std::regex_search(r.output, sizes, std::regex("would need about ([^,]+), but only (.+) of memory is available")));
+  CHECK(sizes[1].str() != sizes[2].str());
+  CHECK_FALSE(fs::exists(out));
 #endif
 }
 

@@ -3,6 +3,7 @@
 // the row (counting points), and CRLF files read as LF files.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <sys/stat.h>
@@ -69,6 +70,26 @@ TEST_CASE("a leading '+' is a sign, and a file of CR line endings is named as su
                        doctest::Contains("face '+-3' is not a whole number"), Error);
   CHECK_THROWS_WITH_AS(parse_points("face,u,v\r0,0.5,0.5\r", "pts.csv", unit_square_check),
                        doctest::Contains("pts.csv line 1: the lines end in a carriage return alone"), Error);
+}
+
+TEST_CASE("a u or v too small for a double is 0, as a subnormal is; one too large is refused") {
+  // 4e-320 (subnormal) was accepted while 1e-400 was refused as out of range: both are 0 to
+  // double precision and lie in the face's domain, whatever the mantissa's zeros.
+  const std::string tiny_by_mantissa = "0." + std::string(500, '0') + "1e100";
+  const SurfacePoints p = parse_points("face,u,v\n0,1e-400,4e-320\n1,-1e-400,+2e-324\n2,1e-99999999999999999999,0\n3," +
+                                           tiny_by_mantissa + ",0.5\n",
+                                       "pts.csv", unit_square_check);
+  REQUIRE(p.size() == 4);
+  CHECK(p.uv == std::vector<double>{0, 4e-320, 0, 0, 0, 0, 0, 0.5});
+  CHECK(std::signbit(p.uv[2]));  // -1e-400 keeps its sign, as -0 would
+  for (const char* big : {"1e400", "-1e400", "1e+99999999999999999999", "0.001e312"}) {
+    CAPTURE(big);
+    const std::string expected = std::string("v = '") + big + "' is out of range: larger than a double holds";
+    CHECK_THROWS_WITH_AS(parse_points(std::string("face,u,v\n0,0.5,") + big + "\n", "pts.csv", unit_square_check),
+                         doctest::Contains(expected.c_str()), Error);
+  }
+  // A tiny u that is negative in a domain that starts at 0 is 0, inside: the check sees 0.
+  CHECK_NOTHROW(parse_points("face,u,v\n0,-1e-400,-1e-400\n", "pts.csv", unit_square_check));
 }
 
 TEST_CASE("a huge field or header is quoted by its beginning and its length, not echoed whole") {
