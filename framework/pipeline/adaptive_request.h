@@ -21,7 +21,14 @@ struct AdaptiveRequest {
   double tolerance = 0;   // > 0: also split faces farther than this from the limit surface
   bool limit = false;     // every vertex on the limit surface
   bool uniform = false;   // the tolerance splits every face: AdaptiveOptions::uniform
+  // Transition faces as polygons or as triangles and quads (limit/adaptive_transitions.h).
+  AdaptiveTransitions transitions = AdaptiveTransitions::Polygons;
 };
+
+// The spellings of AdaptiveTransitions every front-end takes ("polygons", "triangles"), and
+// the choice a spelling names; throws subdiv::OptionError naming {transitions} for another.
+const char* transitions_name(AdaptiveTransitions transitions);
+AdaptiveTransitions transitions_from_name(const std::string& name);
 
 struct AdaptiveResult {
   AdaptiveMesh mesh;
