@@ -100,8 +100,7 @@ std::vector<Face> zipped(const Sides& s) {
 
 }  // namespace
 
-void tessellate_transitions(AdaptiveMesh& mesh) {
-  AdaptiveMesh& m = mesh;
+void tessellate_transitions(AdaptiveMesh& m) {
   std::vector<Index> offsets{0}, vertices;
   std::vector<int> level;
   std::vector<Index> base;

@@ -7,11 +7,12 @@
 // rendering of Catmull-Clark subdivision surfaces": one pattern each for 1, 2 adjacent,
 // 2 opposite, 3 and 4 split edges of a quad, rotated).
 //
-// The tessellation adds no vertex (the paper's patterns tessellate a patch's domain, where a
-// new point costs nothing; here every new face is made of the polygon's own vertices, so the
-// points are exactly the polygon output's and the faces tile the polygon):
+// The tessellation adds no vertex (the paper's patterns tessellate a patch's parameter domain
+// on the GPU; here a new point would be a new vertex of the mesh): every new face is made of
+// the polygon's own vertices, so the points are exactly the polygon output's and the faces
+// tile the polygon:
 // - a quad or triangle with at most one finer vertex per edge: a fixed pattern (see the .cpp);
-// - a face whose edges hold more (a tolerance can make neighbours two or more levels finer):
+// - a face whose edges hold more (a neighbour two or more levels finer):
 //   triangles zipped between two chains of its boundary, each triangle with corners on two
 //   different sides of the face, so none is degenerate.
 // Every new face keeps its polygon's face_level and base_face, and each corner its (u, v),

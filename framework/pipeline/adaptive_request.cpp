@@ -234,10 +234,6 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
   return out;
 }
 
-const char* transitions_name(AdaptiveTransitions transitions) {
-  return transitions == AdaptiveTransitions::Triangles ? "triangles" : "polygons";
-}
-
 AdaptiveTransitions transitions_from_name(const std::string& name) {
   if (name == "polygons") return AdaptiveTransitions::Polygons;
   if (name == "triangles") return AdaptiveTransitions::Triangles;

@@ -25,9 +25,8 @@ struct AdaptiveRequest {
   AdaptiveTransitions transitions = AdaptiveTransitions::Polygons;
 };
 
-// The spellings of AdaptiveTransitions every front-end takes ("polygons", "triangles"), and
-// the choice a spelling names; throws subdiv::OptionError naming {transitions} for another.
-const char* transitions_name(AdaptiveTransitions transitions);
+// The choice a front-end's spelling names ("polygons", "triangles"); throws
+// subdiv::OptionError naming {transitions} for another.
 AdaptiveTransitions transitions_from_name(const std::string& name);
 
 struct AdaptiveResult {

@@ -7,7 +7,8 @@
 // every new face has a positive signed area there (none degenerate or flipped) and, base face
 // by base face, the areas add up to the polygons' — with a manifold, consistently oriented
 // mesh that is a cover of degree one. On planar meshes (a grid, with a crease) the same is
-// checked in R^3: the output's area equals the polygons' to 1e-12.
+// checked in R^3: the output's area equals the polygons' to 1e-12. Face-varying values follow
+// their corners: adaptive_face_varying_test.cpp.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -21,7 +22,6 @@
 #include "framework/pipeline/adaptive_request.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
-#include "support/mesh_data_of.h"
 #include "support/test_meshes.h"
 #include "unit/limit/limit_meshes.h"
 
@@ -195,47 +195,6 @@ TEST_CASE("Triangulated transitions of Loop: the octahedron closed, and with a t
   const LimitSurface surface(scheme, bumpy.level());
   const Pair p = adapt_both(*scheme, bumpy.level(), bumpy.positions, 5, &surface, 2e-3, true);
   check_tiles_polygons(p);
-}
-
-TEST_CASE("Face-varying channels follow the triangulated transitions: each corner's value, bilinear in the mode all") {
-  // The cube with a seamless channel (an affine image of the positions); in the mode `all`
-  // each corner's value is the bilinear interpolation of its base face's values at its (u, v).
-  for (const bool limit : {false, true}) {
-    CAPTURE(limit);
-    MeshData d = test::mesh_data(test::cube());
-    FaceVaryingArray a{"st", 2, {}, {d.face_vertices.begin(), d.face_vertices.end()}, ArrayRole::Data};
-    for (size_t v = 0; v < d.positions.size() / 3; ++v)
-      a.values.insert(a.values.end(), {d.positions[3 * v] + 2 * d.positions[3 * v + 2], d.positions[3 * v + 1] + 0.5});
-    d.face_varying.push_back(a);
-    AdaptiveRequest r;
-    r.refine.mesh = d;
-    r.refine.mesh_name = "cube";
-    r.refine.scheme.text = "catmull-clark";
-    r.refine.levels = 3;
-    r.limit = limit;
-    r.transitions = AdaptiveTransitions::Triangles;
-    const AdaptiveResult out = refine_adaptive_request(std::move(r));
-    REQUIRE(out.face_varying.size() == 1);
-    const FaceVaryingArray& st = out.face_varying.front();
-    REQUIRE(st.indices.size() == out.mesh.corner_uv.size());
-    double worst = 0;
-    int bad_size = 0;
-    for (size_t f = 0; f + 1 < out.mesh.face_offsets.size(); ++f) {
-      bad_size += out.mesh.face_offsets[f + 1] - out.mesh.face_offsets[f] > 4;
-      const Index b = out.mesh.base_face[f];
-      for (Index c = out.mesh.face_offsets[f]; c < out.mesh.face_offsets[f + 1]; ++c) {
-        const double u = out.mesh.corner_uv[size_t(c)][0], v = out.mesh.corner_uv[size_t(c)][1];
-        const double w[4] = {(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v};
-        for (size_t k = 0; k < 2; ++k) {
-          double expected = 0;
-          for (size_t i = 0; i < 4; ++i) expected += w[i] * a.values[2 * size_t(a.indices[4 * size_t(b) + i]) + k];
-          worst = std::max(worst, std::abs(st.values[2 * size_t(st.indices[size_t(c)]) + k] - expected));
-        }
-      }
-    }
-    CHECK(bad_size == 0);
-    CHECK(worst < 1e-14);
-  }
 }
 
 TEST_CASE("An unknown transitions name is refused naming the choices") {
