@@ -33,6 +33,9 @@ Sides sides_of(std::span<const std::uint8_t> is_corner) {
 // The fixed patterns, for a quad or triangle with at most one finer vertex per side: c(i) is
 // corner i, m(i) the finer vertex of side i (from corner i to i + 1), indices mod n, rotated
 // so that r is the first split side of the pattern. All faces keep the polygon's orientation.
+// On a quad, 1 split side: the midpoint joined to the opposite corners; 2 adjacent: a fan from
+// the corner opposite their common corner; 2 opposite: two quads; 3: the half along the side
+// not split a quad, the other half three triangles (OpenSubdiv 2's patterns 0, 1, 4 and 2).
 std::vector<Face> pattern(const Sides& s) {
   const size_t n = s.corner.size();
   std::vector<bool> split(n);

@@ -7,11 +7,13 @@
 // rendering of Catmull-Clark subdivision surfaces": one pattern each for 1, 2 adjacent,
 // 2 opposite, 3 and 4 split edges of a quad, rotated).
 //
-// The tessellation adds no vertex (the paper's patterns tessellate a patch's parameter domain
-// on the GPU; here a new point would be a new vertex of the mesh): every new face is made of
-// the polygon's own vertices, so the points are exactly the polygon output's and the faces
-// tile the polygon:
-// - a quad or triangle with at most one finer vertex per edge: a fixed pattern (see the .cpp);
+// The tessellation adds no vertex: every new face is made of the polygon's own vertices, so
+// the points are exactly the polygon output's and the faces tile the polygon:
+// - a quad or triangle with at most one finer vertex per edge: a fixed pattern (see the .cpp;
+//   for 1, 2 adjacent, 2 opposite and 3 split edges of a quad OpenSubdiv 2's transition
+//   patterns, OSD_TRANSITION_PATTERN0-2 and 4; for 4 split edges OpenSubdiv draws 4 quads
+//   around the face's centre, a point the mesh does not have, and here 4 corner triangles and
+//   the quad of the edges' midpoints);
 // - a face whose edges hold more (a neighbour two or more levels finer):
 //   triangles zipped between two chains of its boundary, each triangle with corners on two
 //   different sides of the face, so none is degenerate.
