@@ -17,6 +17,7 @@
 #include "framework/limit/adaptive_face_varying.h"
 #include "framework/limit/adaptive_progress.h"
 #include "framework/limit/adaptive_stage.h"
+#include "framework/limit/adaptive_transitions.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/scheme/scheme.h"
 #include "framework/topology/non_manifold_place.h"
@@ -393,6 +394,8 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& input, std::span
     const StepProgressScope moving(share);
     move_to_limit(out, *options.surface, points, C);
   }
+  // After the limit: each vertex is evaluated at the corner the polygons list first.
+  if (options.transitions == AdaptiveTransitions::Triangles) tessellate_transitions(out);
   out.uniform_faces = Index(std::min(uniform_faces(base, triangles, levels), double(std::numeric_limits<Index>::max())));
   return out;
 }

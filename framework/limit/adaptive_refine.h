@@ -65,6 +65,11 @@ private:
   std::unique_ptr<WeightTableCache> cache_;
 };
 
+// How a coarse face next to finer ones is written: one polygon with the finer vertices along
+// its edges as corners, or tessellated into triangles and quads of the same vertices
+// (adaptive_transitions.h), as OpenSubdiv's transition patterns.
+enum class AdaptiveTransitions { Polygons, Triangles };
+
 struct AdaptiveOptions {
   int levels = 0;            // the cap L, 0..12
   FeatureOptions features;   // as for refinement
@@ -85,6 +90,7 @@ struct AdaptiveOptions {
   // Face-varying channels refined with the faces (not moved to the limit by `limit`; the
   // pipeline evaluates their limit itself): AdaptiveMesh::face_varying, in this order.
   std::span<const AdaptiveValueMesh> face_varying;
+  AdaptiveTransitions transitions = AdaptiveTransitions::Polygons;
 };
 
 // A face-varying channel on the adaptive mesh: each face corner's value is the value its
@@ -110,7 +116,8 @@ struct AdaptiveMesh {
   std::vector<Index> base_face;   // per face: the base face it lies in
   // Per face corner (face_vertices' order): its (u, v) in the face's base face (Bfr's
   // parameterisation, face_domain.h), and 1 where it is a corner of the level's face, 0
-  // where it is a finer vertex along one of its edges (a transition polygon's).
+  // where it is a finer vertex along one of its edges (a transition polygon's, or with
+  // AdaptiveTransitions::Triangles one of its triangles' and quads').
   std::vector<std::array<double, 2>> corner_uv;
   std::vector<std::uint8_t> corner_is_face_corner;
   Index uniform_faces = 0;            // faces of the uniform level L, for comparison

@@ -163,6 +163,7 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
   o.limit = request.limit;
   o.tolerance = request.tolerance;
   o.uniform = request.uniform;
+  o.transitions = request.transitions;
   AdaptiveResult out;
   try {
     // With face-varying channels on the limit, the evaluation of the same mesh brings the
@@ -231,6 +232,15 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
   out.warnings = std::move(p.warnings);
   out.notes = std::move(p.notes);
   return out;
+}
+
+AdaptiveTransitions transitions_from_name(const std::string& name) {
+  if (name == "polygons") return AdaptiveTransitions::Polygons;
+  if (name == "triangles") return AdaptiveTransitions::Triangles;
+  throw OptionError(fmt::format("{{transitions}} {}: give polygons (a coarse face next to finer ones as one polygon "
+                                "with their vertices along its edges) or triangles (that polygon as triangles and "
+                                "quads)",
+                                subdiv::quoted(name)));
 }
 
 AdaptiveRequest adaptive_request_from(EvaluateRequest e, int levels, double tolerance, bool limit) {

@@ -21,7 +21,13 @@ struct AdaptiveRequest {
   double tolerance = 0;   // > 0: also split faces farther than this from the limit surface
   bool limit = false;     // every vertex on the limit surface
   bool uniform = false;   // the tolerance splits every face: AdaptiveOptions::uniform
+  // Transition faces as polygons or as triangles and quads (limit/adaptive_transitions.h).
+  AdaptiveTransitions transitions = AdaptiveTransitions::Polygons;
 };
+
+// The choice a front-end's spelling names ("polygons", "triangles"); throws
+// subdiv::OptionError naming {transitions} for another.
+AdaptiveTransitions transitions_from_name(const std::string& name);
 
 struct AdaptiveResult {
   AdaptiveMesh mesh;

@@ -9,7 +9,7 @@ namespace {
 py::dict refine_adaptive(py::handle mesh, py::handle scheme, py::handle params, int levels, double tolerance,
                          bool limit, const std::string& boundary, const std::string& crease_method,
                          double feature_angle, int threads, py::handle point_data, py::handle face_varying,
-                         const std::string& fvar_boundary, py::handle progress) {
+                         const std::string& fvar_boundary, py::handle progress, const std::string& transitions) {
   subdiv::AdaptiveRequest r;
   r.refine.mesh = mesh_from_python(mesh);
   // Point arrays are carried to the adaptive mesh like the positions.
@@ -25,6 +25,7 @@ py::dict refine_adaptive(py::handle mesh, py::handle scheme, py::handle params, 
   r.refine.levels = levels;
   r.tolerance = tolerance;
   r.limit = limit;
+  r.transitions = subdiv::transitions_from_name(transitions);
   if (!progress.is_none()) report_progress(r.refine, progress);
   subdiv::AdaptiveResult result;
   {
@@ -64,7 +65,7 @@ void bind_adaptive(py::module_& m) {
   m.def("_refine_adaptive", &refine_adaptive, py::arg("mesh"), py::arg("scheme"), py::arg("params"),
         py::arg("levels"), py::arg("tolerance"), py::arg("limit"), py::arg("boundary"), py::arg("crease_method"),
         py::arg("feature_angle"), py::arg("threads"), py::arg("point_data"), py::arg("face_varying"),
-        py::arg("fvar_boundary"), py::arg("progress"), "The work of subdivkit.refine_adaptive.");
+        py::arg("fvar_boundary"), py::arg("progress"), py::arg("transitions"), "The work of subdivkit.refine_adaptive.");
 }
 
 }  // namespace subdivkit

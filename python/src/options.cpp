@@ -18,7 +18,7 @@ const subdiv::OptionSpelling& python_option_spelling() {
       {"min_valence", "min_valence"}, {"max_valence", "max_valence"},
       {"select", "select"},           {"max_iterations", "max_iterations"},
       {"valences", "valences"},       {"boundary_analysis", "boundary=True"},
-      {"samples", "samples"},         {"approximate_bezier", "approximate_bezier()"},
+      {"samples", "samples"},         {"transitions", "transitions"},         {"approximate_bezier", "approximate_bezier()"},
       {"approximate_gregory", "approximate_gregory()"}};
   return spelling;
 }

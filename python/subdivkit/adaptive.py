@@ -26,7 +26,7 @@ class AdaptiveInfo:
 
 def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, limit=False, params=None,
                     boundary="edges-and-corners", crease_method="uniform", feature_angle=-1.0, threads=0,
-                    info=False, fvar_boundary="all", progress=None):
+                    info=False, fvar_boundary="all", progress=None, transitions="polygons"):
     """Refine only where the surface needs it, up to level ``levels``; return a Mesh.
 
     Faces touching an extraordinary vertex, a crease, a sharp or semi-sharp vertex or a hole,
@@ -68,10 +68,17 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
         ``done`` is None when a phase starts ("refining adaptively to level 6"), then the
         share done, 0 to 1 (each level's choice of faces and their refinement, then the limit
         points). An exception it raises stops the refinement and comes back from here.
+    transitions : str
+        "polygons" (the default): a coarse face next to finer ones is one polygon with the
+        finer vertices along its edges as corners. "triangles": that polygon as triangles and
+        quads of the same vertices, as OpenSubdiv's transition patterns (a fixed pattern for
+        1, 2 adjacent, 2 opposite, 3 or 4 split edges of a quad, and 1 to 3 of a triangle;
+        triangles zipped across a face whose neighbours are two or more levels finer), for
+        renderers and tools that take no n-gons; the points are the same.
 
     The result is watertight: a coarse face next to finer ones takes the finer vertices along
-    its edges as corners of its own (a transition polygon), so every interior edge is in
-    exactly two faces. Its point_data: the mesh's point arrays (not integer ones), placed like
+    its edges as corners of its own (a transition polygon; with ``transitions="triangles"``
+    its triangles and quads), so every interior edge is in exactly two faces. Its point_data: the mesh's point arrays (not integer ones), placed like
     the positions (on the limit too with ``limit``); a rational mesh (a "weight" point array)
     is refined as its homogeneous points and projected (``tolerance`` is refused then). Its cell_data: ``face_level`` (the level
     a face comes from) and
@@ -92,7 +99,7 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
     r = _subdivkit._refine_adaptive(mesh, scheme, params, int(levels), tol, bool(limit), str(boundary),
                                     str(crease_method), float(feature_angle), check_threads(threads),
                                     _data_arrays(mesh.point_data, mesh.point_roles, mesh.n_points, "point data"),
-                                    _face_varying_triples(mesh), str(fvar_boundary), progress)
+                                    _face_varying_triples(mesh), str(fvar_boundary), progress, str(transitions))
     for note in r["notes"]:  # arrays left out (normals, integers)
         warnings.warn(f"refine_adaptive: {note}", UserWarning, stacklevel=2)
     out = Mesh._from_arrays(r["mesh"], name=mesh.name, point_data=r["point_data"], point_roles=r["point_roles"],

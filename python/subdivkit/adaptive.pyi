@@ -23,10 +23,12 @@ def refine_adaptive(mesh: Mesh, scheme: _SchemeArg = "catmull-clark", levels: in
                     limit: bool = False, params: _Params = None, boundary: str = "edges-and-corners",
                     crease_method: str = "uniform", feature_angle: float = -1.0, threads: int = 0,
                     info: Literal[False] = False, fvar_boundary: str = "all",
-                    progress: Callable[[str, float | None], object] | None = None) -> Mesh: ...
+                    progress: Callable[[str, float | None], object] | None = None,
+                    transitions: Literal["polygons", "triangles"] = "polygons") -> Mesh: ...
 @overload
 def refine_adaptive(mesh: Mesh, scheme: _SchemeArg = "catmull-clark", levels: int = 1, *, tolerance: float = 0.0,
                     limit: bool = False, params: _Params = None, boundary: str = "edges-and-corners",
                     crease_method: str = "uniform", feature_angle: float = -1.0, threads: int = 0,
                     info: Literal[True], fvar_boundary: str = "all",
-                    progress: Callable[[str, float | None], object] | None = None) -> tuple[Mesh, AdaptiveInfo]: ...
+                    progress: Callable[[str, float | None], object] | None = None,
+                    transitions: Literal["polygons", "triangles"] = "polygons") -> tuple[Mesh, AdaptiveInfo]: ...

@@ -26,7 +26,9 @@ def cli_evaluate(path, name, *options):
 
 cases = [("cube", "catmull-clark", {"Mode": 0, "Samples": 4}, ["--samples", 4]),
          ("sphere", "loop", {"Mode": 0, "Samples": 3}, ["--samples", 3]),
-         ("cube", "catmull-clark", {"Mode": 1, "AdaptiveLevels": 3, "LimitPositions": 1}, ["--adaptive", 3, "--limit"])]
+         ("cube", "catmull-clark", {"Mode": 1, "AdaptiveLevels": 3, "LimitPositions": 1}, ["--adaptive", 3, "--limit"]),
+         ("cube", "catmull-clark", {"Mode": 1, "AdaptiveLevels": 3, "LimitPositions": 1, "Transitions": 1},
+          ["--adaptive", 3, "--limit", "--transitions", "triangles"])]
 for name, scheme, properties, options in cases:
     source, path = inputs[name]
     limit = SubdivKitLimit(Input=source, Scheme=scheme, **properties)  # noqa: F821

@@ -159,3 +159,32 @@ def test_face_varying_arrays_on_the_limit_and_rational_meshes():
                   - sk.refine_adaptive(c, "catmull-clark", 3).points).max() > 1e-3
     with pytest.raises(sk.Error, match="homogeneous"):
         sk.refine_adaptive(uneven, "catmull-clark", 3, tolerance=1e-3)
+
+
+def test_triangle_transitions_tile_the_polygons_with_the_same_points():
+    # transitions="triangles": every face a triangle or quad, the same points as the polygon
+    # output (with limit positions), watertight with the same Euler characteristic, each
+    # corner's (u, v) one of its polygon's, and the faces' (u, v) areas per base face the same.
+    p, pi = sk.refine_adaptive(cube(), "catmull-clark", 4, limit=True, info=True)
+    t, ti = sk.refine_adaptive(cube(), "catmull-clark", 4, limit=True, info=True, transitions="triangles")
+    assert np.array_equal(p.points, t.points)
+    sizes = np.diff(t.face_offsets)
+    assert set(sizes) == {3, 4} and np.diff(p.face_offsets).max() > 4
+    counts = edges_faces(t)
+    assert set(counts.values()) == {2}
+    assert t.n_points - len(counts) + t.n_faces == 2
+
+    def uv_areas(mesh, info):
+        areas = np.zeros(6)
+        off, uv = mesh.face_offsets, info.corner_uv
+        for f in range(mesh.n_faces):
+            c = uv[off[f]:off[f + 1]]
+            a = 0.5 * np.sum(c[:, 0] * np.roll(c[:, 1], -1) - np.roll(c[:, 0], -1) * c[:, 1])
+            assert a > 0
+            areas[mesh.cell_data["base_face"][f]] += a
+        return areas
+
+    np.testing.assert_allclose(uv_areas(t, ti), uv_areas(p, pi), atol=1e-14)
+    np.testing.assert_allclose(uv_areas(t, ti), np.ones(6), atol=1e-14)
+    with pytest.raises(sk.Error, match="transitions"):
+        sk.refine_adaptive(cube(), "catmull-clark", 2, transitions="quads")

@@ -23,6 +23,7 @@ void add_adaptive_options(CLI::App* cmd, AdaptiveArgs& a) {
       ->expected(0, 1)
       ->check(CLI::Range(0, kMaxAdaptiveLevel));
   add_tolerance_option(cmd, a.tolerance);
+  add_transitions_option(cmd, a.transitions);
 }
 
 void resolve_adaptive_level(const CLI::App& cmd, AdaptiveArgs& a, int levels, bool levels_given) {
@@ -49,6 +50,14 @@ void add_tolerance_option(CLI::App* cmd, double& tolerance) {
                   "farther than T from the limit surface (measured at 5 x 5 points per face), up to level L");
 }
 
+void add_transitions_option(CLI::App* cmd, std::string& transitions) {
+  cmd->add_option("--transitions", transitions,
+                  "With --adaptive: how a coarse face next to finer ones is written: polygons (the default: one "
+                  "polygon with the finer vertices along its edges as corners) or triangles (that polygon as "
+                  "triangles and quads of the same vertices, as OpenSubdiv's transition patterns)")
+      ->check(CLI::IsMember({"polygons", "triangles"}));
+}
+
 void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& a, bool limit, bool in_pieces,
                          const std::string& output, bool quiet, Progress& progress,
                          std::chrono::steady_clock::time_point t0) {
@@ -63,6 +72,7 @@ void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& a, bool limi
   r.refine.levels = a.levels;
   r.tolerance = a.tolerance;
   r.limit = limit;
+  r.transitions = transitions_from_name(a.transitions);
   AdaptiveResult result = refine_adaptive_request(std::move(r));
   for (const std::string& w : result.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
   const std::string summary = adaptive_summary(result);

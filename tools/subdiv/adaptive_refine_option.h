@@ -14,6 +14,7 @@ namespace subdiv::cli {
 struct AdaptiveArgs {
   int levels = -1;        // --adaptive L, or -l's L after resolve_adaptive_level; < 0: not given
   double tolerance = 0;   // --tolerance T; 0: features only
+  std::string transitions = "polygons";  // --transitions polygons|triangles
   bool given() const { return levels >= 0; }
 };
 
@@ -23,6 +24,9 @@ void add_adaptive_options(CLI::App* cmd, AdaptiveArgs& args);
 void resolve_adaptive_level(const CLI::App& cmd, AdaptiveArgs& args, int levels, bool levels_given);
 // --tolerance T alone, for commands with an --adaptive of their own (subdiv evaluate).
 void add_tolerance_option(CLI::App* cmd, double& tolerance);
+
+// --transitions polygons|triangles, for both commands' --adaptive.
+void add_transitions_option(CLI::App* cmd, std::string& transitions);
 
 // Runs the adaptive refinement of `request`'s mesh and scheme, writes `output` (a mesh file)
 // and prints a summary unless quiet.

@@ -49,6 +49,7 @@ struct EvaluateArgs {
   int samples = 0;
   int adaptive = -1;  // --adaptive L; < 0: not given
   double tolerance = 0;  // --tolerance T with --adaptive; 0: features only
+  std::string transitions = "polygons";  // --transitions with --adaptive
   int level_distance = -1;  // --level-distance L; < 0: not given
   bool limit = false;
   std::string approximate, bezier_net;  // --approximate bezier [--bezier-net OUT.vtu]
@@ -219,6 +220,7 @@ void run(const EvaluateArgs& a) {
     throw Error("--derivatives goes with --at POINTS.csv: only its .csv has derivative columns (with --approximate "
                 "bezier or gregory, normals)");
   if (a.tolerance != 0 && a.adaptive < 0) throw Error("--tolerance goes with --adaptive L");
+  if (a.transitions != EvaluateArgs{}.transitions && a.adaptive < 0) throw Error("--transitions goes with --adaptive L");
   if (!a.approximate.empty() && a.adaptive >= 0)
     throw Error("--approximate goes with --samples N or --at POINTS.csv, not --adaptive");
   if (a.approximate.empty() && !a.bezier_net.empty()) throw Error("--bezier-net goes with --approximate bezier");
@@ -247,7 +249,9 @@ void run(const EvaluateArgs& a) {
     return;
   }
   if (a.adaptive >= 0) {  // the same as subdiv refine --adaptive L (adaptive_refine_option.cpp)
-    AdaptiveResult r = refine_adaptive_request(adaptive_request_from(evaluate_request(a, progress), a.adaptive, a.tolerance, a.limit));
+    AdaptiveRequest request = adaptive_request_from(evaluate_request(a, progress), a.adaptive, a.tolerance, a.limit);
+    request.transitions = transitions_from_name(a.transitions);
+    AdaptiveResult r = refine_adaptive_request(std::move(request));
     progress.done();
     for (const std::string& w : r.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
     print_safe("subdiv: {}\n", adaptive_summary(r));
@@ -322,6 +326,7 @@ void add_evaluate_command(CLI::App& app) {
                   "vertices along their edges), with cell arrays face_level and base_face")
       ->check(CLI::Range(0, kMaxAdaptiveLevel));
   add_tolerance_option(cmd, args->tolerance);
+  add_transitions_option(cmd, args->transitions);
   cmd->add_flag("--limit", args->limit, "With --adaptive: every vertex on the limit surface");
   cmd->add_option("--level-distance", args->level_distance,
                   "Instead of --at: uniform level L's vertices moved onto the limit surface (at their own (face, u, "

@@ -118,6 +118,7 @@ void check_piece_options(const RefineArgs& a) {
 void check_adaptive_options(const RefineArgs& a) {
   if (!a.adaptive.given()) {
     if (a.adaptive.tolerance != 0) throw Error("--tolerance goes with --adaptive L");
+    if (a.adaptive.transitions != AdaptiveArgs{}.transitions) throw Error("--transitions goes with --adaptive L");
     return;
   }
   const OutputArgs defaults;

@@ -22,6 +22,7 @@ const OptionSpelling& cli_option_spelling() {
       {"select", "--select"},           {"max_iterations", "--max-iter"},
       {"valences", "--valence"},        {"boundary_analysis", "--boundary"},
       {"samples", "--samples"},         {"tolerance", "--tolerance"},
+      {"transitions", "--transitions"},
       {"derivatives", "--derivatives"}, {"approximate_bezier", "--approximate bezier"},
       {"approximate_gregory", "--approximate gregory"}};
   return spelling;

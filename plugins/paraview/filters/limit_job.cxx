@@ -15,7 +15,7 @@ namespace {
 const OptionSpelling& filter_spelling() {
   static const OptionSpelling spelling = {
       {"scheme", "Scheme"},          {"levels", "Adaptive Levels"},     {"tolerance", "Tolerance"},
-      {"samples", "Samples"},
+      {"samples", "Samples"},       {"transitions", "Transitions"},
       {"boundary", "Boundary"},      {"crease_method", "Crease Method"}, {"feature_angle", "Feature Angle"},
       {"limit", "Limit Positions"},  {"threads", "Threads"},            {"param", "Parameters"},
       {"scheme_list", "the Scheme menu"}};
@@ -37,8 +37,10 @@ EvaluateRequest evaluate_request(const MeshData& mesh, const LimitSettings& s, c
 LimitMesh run(const MeshData& mesh, const LimitSettings& s, const std::string& source) {
   LimitMesh out;
   if (s.mode == LimitMode::Adaptive) {
-    AdaptiveResult r = refine_adaptive_request(
-        adaptive_request_from(evaluate_request(mesh, s, source), s.adaptive_levels, s.tolerance, s.limit_positions));
+    AdaptiveRequest request =
+        adaptive_request_from(evaluate_request(mesh, s, source), s.adaptive_levels, s.tolerance, s.limit_positions);
+    if (s.triangle_transitions) request.transitions = AdaptiveTransitions::Triangles;
+    AdaptiveResult r = refine_adaptive_request(std::move(request));
     out.notes = std::move(r.warnings);
     out.notes.insert(out.notes.end(), r.notes.begin(), r.notes.end());
     out.mesh = adaptive_mesh_data(std::move(r.mesh), std::move(r.point_arrays), std::move(r.face_varying));

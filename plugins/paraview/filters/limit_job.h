@@ -24,6 +24,7 @@ struct LimitSettings {
   int adaptive_levels = 4;  // --adaptive L
   double tolerance = 0;     // --tolerance T (adaptive): also split faces farther than T from the limit
   bool limit_positions = true;  // --limit (adaptive): every point on the limit surface
+  bool triangle_transitions = false;  // --transitions triangles (adaptive): no transition polygons
 };
 
 struct LimitMesh {

@@ -53,6 +53,7 @@ int vtkSubdivKitLimit::RequestData(vtkInformation*, vtkInformationVector** in, v
     settings.adaptive_levels = this->AdaptiveLevels;
     settings.tolerance = this->Tolerance;
     settings.limit_positions = this->LimitPositions;
+    settings.triangle_transitions = this->Transitions == 1;
     subdiv::paraview::LimitMesh limit = subdiv::paraview::limit_mesh(
         subdiv::paraview::filter_input_mesh(*input, this->CreaseArray, kSource), settings, kSource);
     for (const std::string& note : limit.notes) vtkWarningMacro(<< kSource << ": " << subdiv::terminal_safe(note));
@@ -72,5 +73,6 @@ void vtkSubdivKitLimit::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "Mode: " << this->Mode << "\n"
      << indent << "Samples: " << this->Samples << "\n"
      << indent << "AdaptiveLevels: " << this->AdaptiveLevels << "\n"
-     << indent << "Tolerance: " << this->Tolerance << "\n";
+     << indent << "Tolerance: " << this->Tolerance << "\n"
+     << indent << "Transitions: " << this->Transitions << "\n";
 }

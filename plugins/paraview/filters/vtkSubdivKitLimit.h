@@ -27,6 +27,8 @@ public:
   vtkGetMacro(Tolerance, double);
   vtkSetMacro(LimitPositions, bool);
   vtkGetMacro(LimitPositions, bool);
+  vtkSetClampMacro(Transitions, int, 0, 1);  // 0 polygons, 1 triangles and quads
+  vtkGetMacro(Transitions, int);
   vtkSetClampMacro(BoundaryInterpolation, int, 0, 2);  // 0 edges-and-corners, 1 edges, 2 none
   vtkGetMacro(BoundaryInterpolation, int);
   vtkSetClampMacro(CreaseMethod, int, 0, 1);  // 0 uniform, 1 chaikin
@@ -55,6 +57,7 @@ private:
   int AdaptiveLevels = 4;
   double Tolerance = 0.0;
   bool LimitPositions = true;
+  int Transitions = 0;
   int BoundaryInterpolation = 0;
   int CreaseMethod = 0;
   std::string CreaseArray;

@@ -84,3 +84,45 @@ TEST_CASE("subdiv refine --adaptive carries the mesh's point arrays, placed like
     CHECK(worst < 1e-12);
   }
 }
+
+TEST_CASE("subdiv refine --adaptive --transitions triangles: triangles and quads, the same points, watertight") {
+  const fs::path dir = test::fresh_dir("refine-cli-adaptive-transitions");
+  const std::string mesh = test::source_path("examples/meshes/cube.obj");
+  const std::string polygons = (dir / "p.vtp").string(), triangles = (dir / "t.vtp").string(),
+                    evaluated = (dir / "e.vtp").string();
+  const auto p = test::run_subdiv("refine " + mesh + " --adaptive 4 --limit -o " + polygons);
+  REQUIRE_MESSAGE(p.exit_code == 0, p.output);
+  const auto t = test::run_subdiv("refine " + mesh + " --adaptive 4 --limit --transitions triangles -o " + triangles);
+  REQUIRE_MESSAGE(t.exit_code == 0, t.output);
+  const auto e = test::run_subdiv("evaluate " + mesh + " --adaptive 4 --limit --transitions triangles -o " + evaluated);
+  REQUIRE_MESSAGE(e.exit_code == 0, e.output);
+  const MeshData P = read_mesh(polygons), T = read_mesh(triangles), E = read_mesh(evaluated);
+  CHECK(T.positions == P.positions);  // the same vertices, in the same order
+  CHECK(E.positions == T.positions);
+  CHECK(E.face_vertices == T.face_vertices);
+  int big = 0, bigger = 0;
+  for (size_t f = 0; f + 1 < T.face_offsets.size(); ++f) big += T.face_offsets[f + 1] - T.face_offsets[f] > 4;
+  for (size_t f = 0; f + 1 < P.face_offsets.size(); ++f) bigger += P.face_offsets[f + 1] - P.face_offsets[f] > 4;
+  CHECK(big == 0);
+  CHECK(bigger > 0);  // the polygon output has transition polygons
+  const Level L = level_from_mesh(T, "t.vtp");
+  int open = 0;
+  for (Index f = 0; f < L.edge_count(); ++f) open += L.edge_face_count(f) != 2;
+  CHECK(open == 0);
+  CHECK(L.vertex_count - L.edge_count() + L.face_count() == 2);
+  const char* bad[][2] = {
+      {"refine MESH --adaptive 3 --transitions quads", "--transitions"},
+      {"refine MESH --transitions triangles", "--transitions goes with --adaptive"},
+      {"evaluate MESH --samples 2 --transitions triangles", "--transitions goes with --adaptive"},
+  };
+  for (const auto& b : bad) {
+    CAPTURE(b[0]);
+    std::string command = b[0];
+    command.replace(command.find("MESH"), 4, mesh);
+    const std::string out = (dir / "x.vtp").string();
+    const auto r = test::run_subdiv(command + " -o " + out);
+    CHECK(r.exit_code != 0);
+    CHECK(r.output.find(b[1]) != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+  }
+}

@@ -33,7 +33,8 @@ MeshData cube_with_channel() {
   return d;
 }
 
-AdaptiveResult adaptive(FaceVaryingLinear mode, bool limit) {
+AdaptiveResult adaptive(FaceVaryingLinear mode, bool limit,
+                        AdaptiveTransitions transitions = AdaptiveTransitions::Polygons) {
   AdaptiveRequest r;
   r.refine.mesh = cube_with_channel();
   r.refine.mesh_name = "cube";
@@ -41,6 +42,7 @@ AdaptiveResult adaptive(FaceVaryingLinear mode, bool limit) {
   r.refine.shape.face_varying = mode;
   r.refine.levels = 3;
   r.limit = limit;
+  r.transitions = transitions;
   return refine_adaptive_request(std::move(r));
 }
 
@@ -48,11 +50,16 @@ AdaptiveResult adaptive(FaceVaryingLinear mode, bool limit) {
 
 TEST_CASE("adaptive meshes carry face-varying channels: bilinear in the mode all, on the limit and at the levels") {
   // OpenSubdiv's linear-all face-varying interpolation refines each face's values
-  // bilinearly, so a level's corner has the same value as the limit there.
-  for (const bool limit : {true, false}) {
+  // bilinearly, so a level's corner has the same value as the limit there. With the
+  // transitions as triangles and quads each corner keeps its value.
+  for (const auto [limit, transitions] : {std::pair{true, AdaptiveTransitions::Polygons},
+                                          std::pair{false, AdaptiveTransitions::Polygons},
+                                          std::pair{true, AdaptiveTransitions::Triangles},
+                                          std::pair{false, AdaptiveTransitions::Triangles}}) {
     CAPTURE(limit);
+    CAPTURE(int(transitions));
     const MeshData base = cube_with_channel();
-    const AdaptiveResult a = adaptive(FaceVaryingLinear::All, limit);
+    const AdaptiveResult a = adaptive(FaceVaryingLinear::All, limit, transitions);
     REQUIRE(a.face_varying.size() == 1);
     const FaceVaryingArray& st = a.face_varying.front();
     REQUIRE(st.indices.size() == a.mesh.corner_uv.size());
