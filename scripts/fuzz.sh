@@ -30,7 +30,7 @@ fuzzers=(
   "fuzz_read_off|off|4096|@off tests/fuzz/seeds/off/*"
   "fuzz_read_ply|ply|4096|@ply tests/fuzz/seeds/ply/*"
   "fuzz_read_stl|stl|4096|@stl tests/fuzz/seeds/stl/*"
-  "fuzz_read_vtp|vtp|16384|@vtp"
+  "fuzz_read_vtp|vtp|16384|@vtp tests/fuzz/seeds/vtp/*"
   "fuzz_read_vtk|vtk|4096|tests/fuzz/seeds/vtk/*"
   "fuzz_read_om|om|4096|tests/fuzz/seeds/om/*"
   "fuzz_scheme|json|16384|schemes/*.json"
