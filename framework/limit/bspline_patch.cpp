@@ -20,10 +20,9 @@ std::array<double, 4> cubic_basis_second_derivative(double s) { return {1 - s, 3
 
 }  // namespace
 
-BsplineWeights bspline_weights(const Uv& st) {
+BsplineWeights bspline_weights(const Uv& st, int derivatives) {
   const auto bs = cubic_basis(st[0]), bt = cubic_basis(st[1]);
   const auto ds = cubic_basis_derivative(st[0]), dt = cubic_basis_derivative(st[1]);
-  const auto dss = cubic_basis_second_derivative(st[0]), dtt = cubic_basis_second_derivative(st[1]);
   BsplineWeights w;
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 4; ++i) {
@@ -31,6 +30,12 @@ BsplineWeights bspline_weights(const Uv& st) {
       w.position[k] = bs[a] * bt[b];
       w.ds[k] = ds[a] * bt[b];
       w.dt[k] = bs[a] * dt[b];
+    }
+  if (derivatives < 2) return w;
+  const auto dss = cubic_basis_second_derivative(st[0]), dtt = cubic_basis_second_derivative(st[1]);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const size_t k = size_t(j * 4 + i), a = size_t(i), b = size_t(j);
       w.dss[k] = dss[a] * bt[b];
       w.dst[k] = ds[a] * dt[b];
       w.dtt[k] = bs[a] * dtt[b];

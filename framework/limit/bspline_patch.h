@@ -16,11 +16,12 @@ CornerRows bspline_rows(const std::array<Index, 16>& grid, const Uv& st, Index l
 
 // The same weights per control point (row by row from (-1, -1)) in fixed arrays: what
 // bspline_rows places at the grid's labels, for callers that cannot afford the rows'
-// allocations (the evaluation of a point in a regular face).
+// allocations (the evaluation of a point in a regular face). With `derivatives` below 2 the
+// second-derivative arrays are left unset (a point without them does not pay for them).
 struct BsplineWeights {
   std::array<double, 16> position, ds, dt, dss, dst, dtt;
 };
-BsplineWeights bspline_weights(const Uv& st);
+BsplineWeights bspline_weights(const Uv& st, int derivatives = 2);
 
 // A patch's 16 control points among a node's labels: `grid` the label of each cell (row by
 // row from (-1, -1)); `label` the same labels in increasing order and `cell` the cell of

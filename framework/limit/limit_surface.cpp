@@ -35,6 +35,7 @@
 #include "framework/scheme/step_tables.h"
 #include "framework/scheme/scheme.h"
 #include "framework/topology/non_manifold_place.h"
+#include "framework/util/bulk_memory.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
 
@@ -174,9 +175,15 @@ struct LimitSurface::Impl {
   };
   // A face whose entry would be the regular one's (Cache::regular, a bicubic node) but for
   // its vertices: those 16 in label order, one cache line per face, each stored plus one so
-  // that zero is "not yet" (the last one written last: when it is set, all are).
+  // that zero is "not yet" (the last one written last: when it is set, all are). Plain
+  // integers read and written through std::atomic_ref, so that the array can come zeroed
+  // from the system (Cache::slot_array) instead of being written with zeros first.
   struct alignas(64) GridSlot {
-    std::array<std::atomic<Index>, 16> vertex{};
+    std::array<Index, 16> vertex;
+    Index get(size_t l, std::memory_order order) const {
+      return std::atomic_ref<Index>(const_cast<Index&>(vertex[l])).load(order);
+    }
+    void set(size_t l, Index x, std::memory_order order) { std::atomic_ref<Index>(vertex[l]).store(x, order); }
   };
   // A face's cut known by its key (key_cut, cut_key.h): the node, the labels it keeps and
   // what make_entry asks of it.
@@ -295,13 +302,18 @@ struct LimitSurface::Impl {
     static constexpr size_t kStartsBudget = size_t(1) << 27;  // 128 MB
     ~Cache() {
       for (Index f = 0; f < entry_count; ++f) delete entries[size_t(f)].load();
-      delete[] slots.load();
+      if (GridSlot* a = slots.load()) release_zeroed_bulk(a, slot_bytes());
     }
+    size_t slot_bytes() const { return std::max<size_t>(size_t(entry_count), 1) * sizeof(GridSlot); }
+    // One slot per face, zero: a million faces' slots are 64 MB, whose pages the system
+    // maps zeroed at once (allocate_zeroed_bulk) rather than page by page as they are
+    // first written, or written with zeros first.
     GridSlot* slot_array() {
       if (GridSlot* a = slots.load(std::memory_order_acquire)) return a;
-      auto made = std::make_unique<GridSlot[]>(size_t(entry_count));
+      GridSlot* made = static_cast<GridSlot*>(allocate_zeroed_bulk(slot_bytes()));
       GridSlot* none = nullptr;
-      if (slots.compare_exchange_strong(none, made.get(), std::memory_order_acq_rel)) return made.release();
+      if (slots.compare_exchange_strong(none, made, std::memory_order_acq_rel)) return made;
+      release_zeroed_bulk(made, slot_bytes());
       return none;
     }
   };
@@ -583,7 +595,7 @@ struct LimitSurface::Impl {
   // with e null when not made.
   static bool prepared(const Cache& c, Index face, const Entry*& e) {
     if (const GridSlot* a = c.slots.load(std::memory_order_acquire))
-      if (a[size_t(face)].vertex[15].load(std::memory_order_acquire) != 0) return true;
+      if (a[size_t(face)].get(15, std::memory_order_acquire) != 0) return true;
     e = c.entries[size_t(face)].load(std::memory_order_acquire);
     return false;
   }
@@ -610,7 +622,7 @@ struct LimitSurface::Impl {
     }
     GridSlot& slot = c.slot_array()[size_t(face)];
     for (size_t l = 0; l < 16; ++l)
-      slot.vertex[l].store(ring[l] + 1, l == 15 ? std::memory_order_release : std::memory_order_relaxed);
+      slot.set(l, ring[l] + 1, l == 15 ? std::memory_order_release : std::memory_order_relaxed);
     return true;
   }
 
@@ -650,17 +662,50 @@ struct LimitSurface::Impl {
     }
   }
 
+  // Position and first derivatives of three channels in one pass over `count` labels (label
+  // l: weights(l) for position, d/du and d/dv, at vertex(l)): nine sums kept in registers,
+  // each taking its products in the labels' order and passing over its zero weights as a sum
+  // that skips them does (a select rather than a branch: the same bits), each vertex read once.
+  template <class Weights, class Vertex>
+  static void first_order_sums(size_t count, Weights weights, Vertex vertex, std::span<const double> values,
+                               LimitSample& out) {
+    std::array<double, 9> sum{};
+    for (size_t l = 0; l < count; ++l) {
+      const std::array<double, 3> w = weights(l);
+      const double* at = &values[size_t(vertex(l)) * 3];
+      for (size_t k = 0; k < 3; ++k)
+        for (size_t c = 0; c < 3; ++c) {
+          double& x = sum[3 * k + c];
+          x = w[k] != 0 ? x + w[k] * at[c] : x;
+        }
+    }
+    out.position = {sum[0], sum[1], sum[2]};
+    out.du = {sum[3], sum[4], sum[5]};
+    out.dv = {sum[6], sum[7], sum[8]};
+    out.has_derivatives = true;
+  }
+
   // walk()'s first step where the face's node is the bicubic patch: finish() of
   // bspline_rows() with nothing to pull back, the same products summed in the same order
   // (the same bits), without the rows, the copied values or the nodes' lock.
   template <class Vertex>
   static void bspline_sample(const std::array<std::uint8_t, 16>& cell, Vertex vertex, const FacePoint& p,
                              std::span<const double> values, int channels, int derivatives, LimitSample& out) {
-    const BsplineWeights w = bspline_weights(p.st);
+    const BsplineWeights w = bspline_weights(p.st, derivatives);
     const size_t C = size_t(channels);
     const auto& J = p.jacobian;
-    out.position.assign(C, 0.0);
-    if (derivatives >= 1) {
+    if (C == 3 && derivatives >= 1) {
+      // Three channels (positions): the sums in registers (first_order_sums), the same bits.
+      first_order_sums(
+          16,
+          [&](size_t l) {
+            const size_t k = cell[l];
+            return std::array<double, 3>{w.position[k], J[0][0] * w.ds[k] + J[1][0] * w.dt[k],
+                                         J[0][1] * w.ds[k] + J[1][1] * w.dt[k]};
+          },
+          vertex, values, out);
+    } else if (derivatives >= 1) {
+      out.position.assign(C, 0.0);
       // Each sum over the labels in their order, as applied() takes them; zero weights skipped
       // as it skips them.
       out.du.assign(C, 0.0);
@@ -682,6 +727,7 @@ struct LimitSurface::Impl {
         }
       }
     } else {
+      out.position.assign(C, 0.0);
       for (size_t l = 0; l < 16; ++l) {
         const double x = w.position[cell[l]];
         if (x == 0) continue;
@@ -736,24 +782,13 @@ struct LimitSurface::Impl {
     const auto& ds = r.row[1];
     const auto& dt = r.row[2];
     if (C == 3 && derivatives >= 1 && r.count >= 3) {
-      // Position and first derivatives in one pass over the labels: nine sums, each taking
-      // its products in the labels' order and passing over its zero weights as apply() does
-      // (a select rather than a branch: the same bits), each vertex read once.
-      std::array<double, 9> sum{};
       const double* position = r.row[0].data();
-      for (size_t l = 0; l < L; ++l) {
-        const double w[3] = {position[l], J[0][0] * ds[l] + J[1][0] * dt[l], J[0][1] * ds[l] + J[1][1] * dt[l]};
-        const double* at = &values[size_t(vertices[l]) * 3];
-        for (size_t k = 0; k < 3; ++k)
-          for (size_t c = 0; c < 3; ++c) {
-            double& x = sum[3 * k + c];
-            x = w[k] != 0 ? x + w[k] * at[c] : x;
-          }
-      }
-      out.position = {sum[0], sum[1], sum[2]};
-      out.du = {sum[3], sum[4], sum[5]};
-      out.dv = {sum[6], sum[7], sum[8]};
-      out.has_derivatives = true;
+      first_order_sums(
+          L,
+          [&](size_t l) {
+            return std::array<double, 3>{position[l], J[0][0] * ds[l] + J[1][0] * dt[l], J[0][1] * ds[l] + J[1][1] * dt[l]};
+          },
+          [&](size_t l) { return vertices[l]; }, values, out);
     } else {
       apply(r.row[0].data(), out.position);
     }
@@ -1579,7 +1614,7 @@ void LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> value
       const Impl::GridSlot& slot = c->slots.load(std::memory_order_acquire)[size_t(p.face)];
       return Impl::bspline_sample(
           c->regular.load(std::memory_order_acquire)->grid_cell,
-          [&](size_t l) { return slot.vertex[l].load(std::memory_order_relaxed) - 1; }, p, values, channels,
+          [&](size_t l) { return slot.get(l, std::memory_order_relaxed) - 1; }, p, values, channels,
           derivatives, out);
     }
     if (e->grid)

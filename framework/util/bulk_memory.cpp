@@ -56,6 +56,19 @@ void* allocate_bulk(std::size_t bytes) {
   return data;
 }
 
+void* allocate_zeroed_bulk(std::size_t bytes) {
+#ifdef MAP_POPULATE
+  constexpr int kPopulate = MAP_POPULATE;
+#else
+  constexpr int kPopulate = 0;
+#endif
+  void* data = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | kPopulate, -1, 0);
+  if (data == MAP_FAILED) throw std::bad_alloc();
+  return data;
+}
+
+void release_zeroed_bulk(void* data, std::size_t bytes) { munmap(data, bytes); }
+
 void release_bulk(void* data, std::size_t bytes) {
   if (reuse_heap.load(std::memory_order_relaxed)) return std::free(data);
   munmap(data, bytes);

@@ -105,8 +105,10 @@ bool label_into(Labelling& out, const Level& L, CentreKind kind, Index centre, i
       const int k = int(corners.size());
       if (quad_grid) {
         if (k != 4 || L.is_hole(f)) return false;
-        for (Index e : edges)
-          if (L.edge_sharp(e) != 0.f) return false;
+        // A level without edge sharpness has none to find: its faces' edges are not read.
+        if (!L.edge_sharpness.empty())
+          for (Index e : edges)
+            if (L.edge_sharp(e) != 0.f) return false;
       }
       if (with_signature) sig.push_back(k);
       for (int i = 1; i < k; ++i) {
