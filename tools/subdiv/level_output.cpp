@@ -11,6 +11,7 @@
 #include "framework/io/vtk/vtk_output.h"
 #include "framework/io/vtk/vtk_pieces.h"
 #include "mesh_subset.h"
+#include "framework/util/atomic_file.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
 
@@ -62,9 +63,10 @@ void write_piece(StagedFiles& staged, const std::filesystem::path& target, const
 
 void check_output_path(const std::filesystem::path& out) {
   const std::string ext = lowercase_extension(out);
-  if (ext == ".vtp" || ext == ".pvd" || ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl") return;
-  throw Error(fmt::format("cannot write {}: unknown output format {}; use .vtp or .pvd (ParaView), "
-                          "or .obj, .off, .ply, .stl", subdiv::quoted(out.string()), subdiv::quoted(ext)));
+  if (ext != ".vtp" && ext != ".pvd" && ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl")
+    throw Error(fmt::format("cannot write {}: unknown output format {}; use .vtp or .pvd (ParaView), "
+                            "or .obj, .off, .ply, .stl", subdiv::quoted(out.string()), subdiv::quoted(ext)));
+  check_writable(out);  // a folder that does not exist or is read-only: said before any work
 }
 
 void check_output_not_input(const std::filesystem::path& input, const std::filesystem::path& out, bool force,

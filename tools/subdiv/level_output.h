@@ -41,7 +41,8 @@ void write_piece(StagedFiles& staged, const std::filesystem::path& target, const
                  std::vector<LevelData> data, const FeatureOptions& features, const std::vector<Index>& base_faces,
                  const std::vector<int>& finest_owner, int piece, const OutputChoice& choice = {});
 
-// The output extensions write_levels accepts, for help texts and early checks.
+// Refuses an output write_levels cannot write: an extension it has no writer for, or a
+// place no file can be created (checked by creating one), before any work.
 void check_output_path(const std::filesystem::path& out);
 
 // Refuses an output that is the input mesh, or a folder the output rewrites (a .pvd's

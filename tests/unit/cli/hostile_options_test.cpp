@@ -75,6 +75,25 @@ TEST_CASE("input paths that are FIFOs or symlinks to devices are refused at once
   CHECK(contains(features.output, "regular feature file"));
 }
 
+TEST_CASE("refine refuses an output no file can be written to before any work") {
+  // A missing folder was found only when the finished level was written. Level 13 of the
+  // cube would not fit in memory: a refusal about the place, not about memory, shows that
+  // the place was checked first.
+  const auto dir = fresh_dir("hostile-output-place");
+  fs::create_directory(dir / "folder.obj");
+  for (const auto& [out, message] :
+       {std::pair<fs::path, const char*>{dir / "missing" / "a.obj", "does not exist; create it first"},
+        {dir / "folder.obj", "it is a directory"},
+        {dir / "missing" / "a.pvd", "does not exist; create it first"}}) {
+    CAPTURE(out);
+    const CliResult r = run_bounded("refine " + kCube + " -l 13 -o " + out.string());
+    CHECK(r.exit_code == 1);
+    CHECK_MESSAGE(contains(r.output, message), r.output);
+    CHECK_MESSAGE(!contains(r.output, "GiB"), r.output);
+  }
+  CHECK_FALSE(fs::exists(dir / "missing"));
+}
+
 TEST_CASE("VTK's own output never reaches the terminal; the message is ours and names the file") {
   const auto dir = fresh_dir("hostile-vtk");
   std::ofstream(dir / "bad.vtp") << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\">\n"
