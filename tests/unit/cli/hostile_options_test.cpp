@@ -81,10 +81,12 @@ TEST_CASE("refine refuses an output no file can be written to before any work") 
   // the place was checked first.
   const auto dir = fresh_dir("hostile-output-place");
   fs::create_directory(dir / "folder.obj");
-  for (const auto& [out, message] :
+  for (const auto& bad :
        {std::pair<fs::path, const char*>{dir / "missing" / "a.obj", "does not exist; create it first"},
         {dir / "folder.obj", "it is a directory"},
         {dir / "missing" / "a.pvd", "does not exist; create it first"}}) {
+    const fs::path& out = bad.first;
+    const char* message = bad.second;
     CAPTURE(out);
     const CliResult r = run_bounded("refine " + kCube + " -l 13 -o " + out.string());
     CHECK(r.exit_code == 1);

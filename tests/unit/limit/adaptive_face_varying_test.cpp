@@ -52,10 +52,11 @@ TEST_CASE("adaptive meshes carry face-varying channels: bilinear in the mode all
   // OpenSubdiv's linear-all face-varying interpolation refines each face's values
   // bilinearly, so a level's corner has the same value as the limit there. With the
   // transitions as triangles and quads each corner keeps its value.
-  for (const auto [limit, transitions] : {std::pair{true, AdaptiveTransitions::Polygons},
-                                          std::pair{false, AdaptiveTransitions::Polygons},
-                                          std::pair{true, AdaptiveTransitions::Triangles},
-                                          std::pair{false, AdaptiveTransitions::Triangles}}) {
+  for (const auto& run : {std::pair{true, AdaptiveTransitions::Polygons}, std::pair{false, AdaptiveTransitions::Polygons},
+                          std::pair{true, AdaptiveTransitions::Triangles},
+                          std::pair{false, AdaptiveTransitions::Triangles}}) {
+    const bool limit = run.first;  // not a structured binding: clang 14 cannot capture those
+    const AdaptiveTransitions transitions = run.second;
     CAPTURE(limit);
     CAPTURE(int(transitions));
     const MeshData base = cube_with_channel();
