@@ -94,7 +94,6 @@ void check_output_not_input(const std::filesystem::path& input, const std::files
 void write_levels(const std::filesystem::path& out, Hierarchy&& h, std::vector<LevelData> data,
                   const FeatureOptions& features, const std::vector<DataArray>& finest_point_data,
                   const MeshOptions& obj_tags, const OutputChoice& choice) {
-  check_output_path(out);
   const std::string ext = lowercase_extension(out);
   const int finest = int(h.levels.size()) - 1;
   if (ext != ".vtp" && ext != ".pvd") {

@@ -16,6 +16,7 @@
 
 namespace subdiv::cli {
 
+// `out` was checked by check_output_path before the work (its format and its place).
 // data[l] holds level l's xyz and the user's point and cell arrays, written with their names
 // to every format that holds them. `features` (the refinement's boundary mode and crease
 // method) classifies each vertex for the per-point "vertex_class" array of .vtp/.pvd
