@@ -1,4 +1,6 @@
 #include "framework/io/obj_fast_parse.h"
+
+#include "framework/util/decimal_number.h"
 #include "framework/io/io_progress.h"
 
 #include <algorithm>
@@ -96,10 +98,10 @@ private:
     return p < end && *p != '#' && !declined;
   }
 
-  // parse_double's rules (text_input.cpp): one leading '+' allowed, the whole token a number.
-  // Out-of-range values, which that reader turns into infinities or denormals, decline.
+  // parse_double's rules (text_input.cpp, decimal_number.h): its leading '+', the whole token
+  // a number. Out-of-range values, which that reader turns into infinities or zeros, decline.
   static bool number(const char*& p, const char* end, double& value) {
-    const char* q = p < end && *p == '+' ? p + 1 : p;
+    const char* q = p + leading_plus(std::string_view(p, std::size_t(end - p)));
     const auto [ptr, ec] = std::from_chars(q, end, value);
     if (ec != std::errc() || !ends_token(ptr, end)) return false;
     p = ptr;

@@ -41,7 +41,7 @@ bool below_range(std::string_view t) {
 }  // namespace
 
 DecimalParse parse_decimal(std::string_view text, double& value) {
-  if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') text.remove_prefix(1);
+  text.remove_prefix(leading_plus(text));
   const char* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, value);
   if (text.empty() || ptr != end || (ec != std::errc() && ec != std::errc::result_out_of_range))

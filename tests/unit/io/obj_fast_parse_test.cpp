@@ -169,6 +169,7 @@ TEST_CASE("obj fast path: declines what only the line-by-line reader handles, wh
   check_declined("v 0 0\n");
   check_declined("v 0 nan 0\n");
   check_declined("v 0 1e999 0\n");
+  check_declined("v 0 +-1 0\n");  // a '+' before a sign: not a number to either reader
   check_declined(tri + "vt 0 0\nvt 0 0 0\nf 1/1 2/1 3/1\n");
   check_declined(tri + "vt 0 0\nf 1/2 2/1 3/1\n");
   check_declined(tri + "vt 0 0\nf 1/-2 2/1 3/1\n");
