@@ -110,8 +110,8 @@ std::string limit_surface_unsupported(const Scheme& scheme) {
     return fmt::format("scheme {} is non-stationary (its weights depend on the level l): the local subdivision "
                        "matrix changes from level to level and has no fixed eigen-structure to evaluate the limit with",
                        subdiv::quoted(scheme.name));
-  // Every split is taken here; the √3, mid-edge and plugins' splits are checked with the mesh
-  // (sqrt3_limit_unsupported, mid_edge_limit_unsupported, plugin_split_limit_unsupported).
+  // Every split is taken here; the mid-edge and plugins' splits are checked with the mesh
+  // (mid_edge_limit_unsupported, plugin_split_limit_unsupported).
   return {};
 }
 
@@ -1340,6 +1340,28 @@ struct LimitSurface::Impl {
     return made;
   }
 
+  // The limit of `tail` over the mesh `head` makes, in the base faces' (u, v)
+  // (sequence_head.h).
+  void become_sequence(std::vector<LimitHeadRun> head_runs, std::shared_ptr<const Scheme> tail_scheme, Level mesh,
+                       const LimitSurfaceOptions& o) {
+    scheme = tail_scheme;
+    options = o;
+    // The sqrt3 split trisects boundaries and creases in every second step counted from the
+    // base mesh, across a sequence too (docs/scheme-format.md), and its evaluator starts on a
+    // step that keeps them: after an odd head the tail's first step joins the head.
+    int head_levels = 0;
+    for (const LimitHeadRun& run : head_runs) head_levels += std::max(run.levels, 0);
+    if (tail_scheme->split() == SplitKind::Sqrt3 && head_levels % 2 == 1) head_runs.push_back({tail_scheme, 1});
+    head = std::make_unique<SequenceHead>(std::move(head_runs), mesh, o.features);
+    // As refinement says it (catmull-clark:1,loop: Loop on the head's quads), not at the first
+    // point as a face "not a triangle" of a mesh the user never saw.
+    check_face_sizes(*tail_scheme, head->refined(), {}, head->levels());
+    tail = std::make_unique<LimitSurface>(std::move(tail_scheme), head->refined(), o);
+    base = std::move(mesh);
+    tag_boundary_holes(base, o.features.boundary);
+    triangles = head->triangles();
+  }
+
   Hierarchy refine_step(const Level& level) const {
     RefineOptions ro;
     ro.levels = 1;
@@ -1360,6 +1382,13 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
     tag_boundary_holes(impl_->base, options.features.boundary);
     return;
   }
+  // Where a sharpness ends between the two steps of a √3 pair, the pairs do not nest until it
+  // has decayed: those first steps are the head of a sequence, followed one at a time.
+  if (scheme->split() == SplitKind::Sqrt3)
+    if (const int levels = sqrt3_single_step_levels(base); levels > 0) {
+      impl_->become_sequence({{scheme, levels}}, scheme, std::move(base), options);
+      return;
+    }
   impl_->scheme = std::move(scheme);
   impl_->base = std::move(base);
   impl_->options = options;
@@ -1369,10 +1398,6 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   if (impl_->scheme->split() == SplitKind::Dual) {
     if (const std::string why = dual_limit_unsupported(impl_->base); !why.empty())
       throw Error(fmt::format("scheme {} is a dual scheme and {}", subdiv::quoted(impl_->scheme->name), why));
-  }
-  if (impl_->scheme->split() == SplitKind::Sqrt3) {
-    if (const std::string why = sqrt3_limit_unsupported(impl_->base); !why.empty())
-      throw Error(fmt::format("scheme {} uses the sqrt3 split and {}", subdiv::quoted(impl_->scheme->name), why));
   }
   if (impl_->scheme->split() >= SplitKind(kFirstRegisteredSplit)) {
     if (const std::string why = plugin_split_limit_unsupported(*impl_->scheme, impl_->base); !why.empty())
@@ -1419,22 +1444,7 @@ LimitSurface::LimitSurface(std::vector<LimitHeadRun> head, std::shared_ptr<const
   if (!base.manifold())
     throw Error(fmt::format("limit evaluation at (face, u, v) of a scheme sequence needs a manifold mesh, but {}",
                             non_manifold_place(base)));
-  impl_->scheme = tail;
-  impl_->options = options;
-  // The sqrt3 split trisects boundaries and creases in every second step counted from the
-  // base mesh, across a sequence too (docs/scheme-format.md), and its evaluator starts on a
-  // step that keeps them: after an odd head the tail's first step joins the head.
-  int head_levels = 0;
-  for (const LimitHeadRun& run : head) head_levels += std::max(run.levels, 0);
-  if (tail->split() == SplitKind::Sqrt3 && head_levels % 2 == 1) head.push_back({tail, 1});
-  impl_->head = std::make_unique<SequenceHead>(std::move(head), base, options.features);
-  // As refinement says it (catmull-clark:1,loop: Loop on the head's quads), not at the first
-  // point as a face "not a triangle" of a mesh the user never saw.
-  check_face_sizes(*tail, impl_->head->refined(), {}, impl_->head->levels());
-  impl_->tail = std::make_unique<LimitSurface>(std::move(tail), impl_->head->refined(), options);
-  impl_->base = std::move(base);
-  tag_boundary_holes(impl_->base, options.features.boundary);
-  impl_->triangles = impl_->head->triangles();
+  impl_->become_sequence(std::move(head), std::move(tail), std::move(base), options);
 }
 
 LimitStencil LimitSurface::sequence_stencil(Index face, double u, double v, int derivatives) const {

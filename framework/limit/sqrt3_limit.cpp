@@ -47,24 +47,19 @@ struct TrianglePoint {
 
 }  // namespace
 
-std::string sqrt3_limit_unsupported(const Level& base) {
+int sqrt3_single_step_levels(const Level& base) {
   // Boundaries and sharp edges follow Kobbelt's rules (kept in the first step, trisected in
-  // the second: the triadic split, sqrt3_nodes.h). An edge sharp in the first step of a pair
-  // and smooth in the second (sharpness decays by one per step) is kept and then flipped, and
-  // the face point of the triangle kept beside it lies at (4a + 4b + c)/9, off the lattice:
-  // two such steps are no triadic split. Tagged vertices change rules only. Holes remove
-  // faces, not rules, so the cuts drop their tags (canonical_cut.h).
+  // the second: the triadic split, sqrt3_nodes.h). Sharpness decays by one per step, so an
+  // edge of sharpness s in (2k, 2k + 1] is kept in the first step of pair k and flipped in
+  // its second; after 2k + 2 steps it is smooth. Tagged vertices change rules only.
+  int levels = 0;
   for (Index e = 0; e < Index(base.edge_sharpness.size()); ++e) {
     const float s = base.edge_sharpness[size_t(e)];
     if (s <= 0 || s >= kInfinitelySharp || base.edge_on_boundary(e)) continue;
     const double parity = std::fmod(double(s), 2.0);
-    if (parity > 0 && parity <= 1)
-      return fmt::format("edge {}-{} has sharpness {}, which leaves it sharp in the first step of a pair and smooth in "
-                         "the second (two sqrt3 steps nest only where an edge is sharp for both or neither: "
-                         "sharpness 2, 4, ..., between 2k + 1 and 2k + 2, or infinitely sharp); change its sharpness",
-                         base.edge_vertices[size_t(2 * e)], base.edge_vertices[size_t(2 * e + 1)], s);
+    if (parity > 0 && parity <= 1) levels = std::max(levels, 2 * int(std::ceil(double(s) / 2)));
   }
-  return {};
+  return levels;
 }
 
 Sqrt3Limit::Sqrt3Limit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options,

@@ -43,10 +43,12 @@
 // vertex is 4 rings from it. Holes remove faces, not rules: the cuts drop the tags.
 //
 // Sharp edges are kept and trisected like a boundary (refine/sqrt3_split.cpp), so creases
-// take the same road, the cuts keeping their sharpness; no derivatives on a crease. Refused
-// (sqrt3_limit_unsupported): an edge whose sharpness ends between the two steps of a pair
-// (s mod 2 in (0, 1]): kept in the first step and flipped in the second, the triangle kept
-// beside it gets its face point at (4a + 4b + c)/9, off the triadic lattice.
+// take the same road, the cuts keeping their sharpness; no derivatives on a crease. An edge
+// whose sharpness ends between the two steps of a pair (s mod 2 in (0, 1]) is kept in the
+// first step and flipped in the second, so the triangle kept beside it gets its face point at
+// (4a + 4b + c)/9, off the triadic lattice: such a mesh is not evaluated here but as the
+// sequence of the scheme's first steps, followed one at a time (sqrt3_single_step_levels),
+// and the scheme over the mesh they make (limit_surface.cpp).
 #include <memory>
 #include <mutex>
 #include <span>
@@ -97,7 +99,10 @@ private:
   mutable std::vector<std::unique_ptr<Entry>> entries_;
 };
 
-// Why the √3 evaluation cannot take this mesh, or empty.
-std::string sqrt3_limit_unsupported(const Level& base);
+// How many steps (an even number, so that the pairs after them keep Kobbelt's boundary
+// alternation) must be followed one at a time before every pair is the triadic split: enough
+// for each edge whose sharpness ends between the two steps of a pair to have decayed; 0 when
+// there is none.
+int sqrt3_single_step_levels(const Level& base);
 
 }  // namespace subdiv
