@@ -99,7 +99,7 @@ public:
   LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, const LimitSurfaceOptions& options = {});
   // The limit of a sequence ("A:1,B:3"): `head` refines the base first, then `tail` repeats.
   // Points and stencils are still in the base faces' (u, v) and over the base vertices; the
-  // head's splits must be followed (binary quad, triangle, dual, sqrt3, mid-edge in pairs:
+  // head's splits must be followed (binary quad, triangle, dual, sqrt3, mid-edge in pairs, plugins' splits a period at a time:
   // sequence_head.h), its rules be linear (they may depend on the level), and the tail be a
   // scheme the first constructor takes.
   LimitSurface(std::vector<LimitHeadRun> head, std::shared_ptr<const Scheme> tail, Level base,

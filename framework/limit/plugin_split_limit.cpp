@@ -11,6 +11,7 @@
 #include "framework/engine/ghost_rings.h"
 #include "framework/engine/refiner.h"
 #include "framework/limit/corner_limit.h"
+#include "framework/limit/plugin_period_children.h"
 #include "framework/limit/point_cut.h"
 #include "framework/limit/step_matrix.h"
 #include "framework/limit/two_steps.h"
@@ -22,117 +23,10 @@
 namespace subdiv {
 namespace {
 
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 constexpr Uv kQuad[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 constexpr Uv kTriangle[3] = {{0, 0}, {1, 0}, {0, 1}};
 
 using Cut = PointCut;
-
-Uv mean(const std::vector<Uv>& xs) {
-  Uv s{0, 0};
-  for (const Uv& x : xs) s[0] += x[0] / double(xs.size()), s[1] += x[1] / double(xs.size());
-  return s;
-}
-
-// The position of every edge child along its parent edge: the i-th of c children at
-// (i + 1) / (c + 1) from the edge's first vertex.
-std::vector<Uv> edge_children(const Level& parent, const std::vector<Uv>& at, const ChildOrigins& o,
-                              std::vector<Uv> out) {
-  std::vector<int> count(size_t(parent.edge_count()), 0);
-  for (size_t v = 0; v < o.kind.size(); ++v)
-    if (o.kind[v] == OriginKind::Edge) ++count[size_t(o.parent[v])];
-  for (size_t v = 0; v < o.kind.size(); ++v) {
-    if (o.kind[v] != OriginKind::Edge) continue;
-    const Index e = o.parent[v];
-    const Uv a = at[size_t(parent.edge_vertices[size_t(2 * e)])], b = at[size_t(parent.edge_vertices[size_t(2 * e + 1)])];
-    const double t = double(o.local[v] + 1) / double(count[size_t(e)] + 1);
-    out[v] = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])};
-  }
-  return out;
-}
-
-// Where the first step's children lie in the frame of face f: f's corners, points of f's
-// edges along them, f's point at its centroid, and the point of each neighbour across an edge
-// of f at that neighbour's centroid with the grid unfolded affinely across the edge.
-std::vector<Uv> first_step(const Level& L, Index f, const ChildOrigins& o, bool triangles) {
-  const auto fv = L.face(f);
-  const auto fe = L.face_edge_list(f);
-  const int n = int(fv.size());
-  const Uv* frame = triangles ? kTriangle : kQuad;
-  std::vector<Uv> at(size_t(L.vertex_count), Uv{kNan, kNan});
-  for (int k = 0; k < n; ++k) at[size_t(fv[size_t(k)])] = frame[k];
-  std::vector<Uv> out(o.kind.size(), Uv{kNan, kNan});
-  for (size_t v = 0; v < o.kind.size(); ++v) {
-    if (o.kind[v] == OriginKind::Vertex) out[v] = at[size_t(o.parent[v])];
-    if (o.kind[v] != OriginKind::Face) continue;
-    const Index g = o.parent[v];
-    if (g == f) out[v] = mean(std::vector<Uv>(frame, frame + n));
-    for (int k = 0; k < n && g != f; ++k) {
-      const Index e = fe[size_t(k)];
-      if (L.edge_faces[size_t(2 * e)] != g && L.edge_faces[size_t(2 * e + 1)] != g) continue;
-      const Uv A = frame[k], B = frame[(k + 1) % n];
-      if (triangles) {
-        const Uv C = frame[(k + 2) % 3];
-        out[v] = {(2 * A[0] + 2 * B[0] - C[0]) / 3, (2 * A[1] + 2 * B[1] - C[1]) / 3};
-      } else {  // the neighbour reflected: far corners 2A - D and 2B - C
-        const Uv C = frame[(k + 2) % 4], D = frame[(k + 3) % 4];
-        out[v] = {(3 * A[0] + 3 * B[0] - C[0] - D[0]) / 4, (3 * A[1] + 3 * B[1] - C[1] - D[1]) / 4};
-      }
-    }
-  }
-  return edge_children(L, at, o, out);  // points of f's own edges
-}
-
-// Where a later step's children lie, from where their parents lie.
-std::vector<Uv> next_step(const Level& parent, const std::vector<Uv>& at, const ChildOrigins& o) {
-  std::vector<Uv> out(o.kind.size(), Uv{kNan, kNan});
-  for (size_t v = 0; v < o.kind.size(); ++v) {
-    if (o.kind[v] == OriginKind::Vertex) out[v] = at[size_t(o.parent[v])];
-    if (o.kind[v] == OriginKind::Face) {
-      std::vector<Uv> corners;
-      for (Index w : parent.face(o.parent[v])) corners.push_back(at[size_t(w)]);
-      out[v] = mean(corners);
-    }
-  }
-  return edge_children(parent, at, o, out);
-}
-
-bool inside_face(const Uv& x, bool triangles) {
-  constexpr double eps = 1e-9;
-  if (!std::isfinite(x[0]) || !std::isfinite(x[1])) return false;
-  if (x[0] < -eps || x[1] < -eps) return false;
-  return triangles ? x[0] + x[1] <= 1 + eps : x[0] <= 1 + eps && x[1] <= 1 + eps;
-}
-
-// The faces of the last level inside face f: m^2 affine copies of it, or an error saying why not.
-std::vector<ChildFace> nested_children(const Level& last, const std::vector<Uv>& at, bool triangles, int m) {
-  std::vector<ChildFace> out;
-  for (Index g = 0; g < last.face_count(); ++g) {
-    ChildFace c;
-    c.face = g;
-    bool in = true;
-    for (Index v : last.face(g)) {
-      c.corners.push_back(at[size_t(v)]);
-      in = in && inside_face(at[size_t(v)], triangles);
-    }
-    if (!in) continue;
-    if (int(c.corners.size()) != (triangles ? 3 : 4))
-      throw Error("the split's faces inside a face are not of its shape");
-    if (!triangles) {  // a parallelogram: corner 2 = corner 1 + corner 3 - corner 0
-      const Uv& a = c.corners[0];
-      const Uv& b = c.corners[1];
-      const Uv& d = c.corners[2];
-      const Uv& e = c.corners[3];
-      if (std::fabs(b[0] + e[0] - a[0] - d[0]) + std::fabs(b[1] + e[1] - a[1] - d[1]) > 1e-9)
-        throw Error("the split's faces inside a face are not parallelograms of its frame");
-    }
-    out.push_back(std::move(c));
-  }
-  if (int(out.size()) != m * m)
-    throw Error(fmt::format("the split makes {} faces inside a face after its period, not the {} of a {}-adic split",
-                            out.size(), m * m, m));
-  return out;
-}
 
 bool extraordinary_corner(const Level& L, Index face, bool triangles) {
   for (Index v : L.face(face))
@@ -244,9 +138,10 @@ LimitSample PluginSplitLimit::evaluate(const FacePoint& p0, const std::vector<do
     ro.levels = period_;
     ro.features = options_.features;
     const Hierarchy h = refine(scheme_, cut.level, ro);
-    std::vector<Uv> at = first_step(cut.level, cut.point.face, h.origins[0], triangles_);
-    for (int s = 1; s < period_; ++s) at = next_step(h.levels[size_t(s)], at, h.origins[size_t(s)]);
-    const std::vector<ChildFace> children = nested_children(h.levels[size_t(period_)], at, triangles_, factor_);
+    std::vector<ChildrenOf> children_of;
+    for (int s = 0; s < period_; ++s) children_of.emplace_back(h.levels[size_t(s)], h.origins[size_t(s)]);
+    const std::vector<ChildFace> children =
+        period_children(h, 0, period_, cut.point.face, triangles_, factor_, children_of);
     std::optional<FacePoint> q = locate(children, cut.point, triangles_, nullptr);
     if (!q) throw Error("internal: no face of the plugin's split holds the point");
     for (auto& r : q->jacobian)

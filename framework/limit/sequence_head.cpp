@@ -1,10 +1,15 @@
 #include "framework/limit/sequence_head.h"
 
+#include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 
 #include "framework/limit/dual_limit.h"
 #include "framework/limit/mid_edge_limit.h"
 #include "framework/limit/mid_edge_pair.h"
+#include "framework/limit/plugin_period_children.h"
+#include "framework/limit/plugin_split_limit.h"
+#include "framework/refine/splitter.h"
 #include "framework/limit/sqrt3_step_children.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -15,11 +20,6 @@ namespace subdiv {
 std::string sequence_head_unsupported(const Scheme& scheme) {
   if (!scheme.linear())
     return fmt::format("{} has non-linear rules: the sequence's limit is no fixed combination of the control points",
-                       subdiv::quoted(scheme.name));
-  const SplitKind split = scheme.split();
-  if (split >= SplitKind(kFirstRegisteredSplit))
-    return fmt::format("{} comes before the scheme that repeats and its split is a plugin's: following a point "
-                       "through a plugin split in a sequence's head is not implemented yet",
                        subdiv::quoted(scheme.name));
   return {};
 }
@@ -38,6 +38,15 @@ SequenceHead::SequenceHead(std::vector<LimitHeadRun> runs, const Level& base, co
       dual_.push_back(split == SplitKind::Dual ? 1 : 0);
       sqrt3_.push_back(split == SplitKind::Sqrt3 ? 1 : 0);
       mid_edge_.push_back(split == SplitKind::MidEdge ? 1 : 0);
+      plugin_.push_back(split >= SplitKind(kFirstRegisteredSplit) ? 1 : 0);
+    }
+    if (r.scheme->split() >= SplitKind(kFirstRegisteredSplit)) {
+      const SplitterInfo& info = splitter_info(r.scheme->split());
+      if (info.period > 1 && r.levels % info.period != 0)
+        throw Error(fmt::format("the sequence's head has {} level(s) of {}, whose split {} nests in the faces only "
+                                "after every {} steps; give it a multiple of {} levels",
+                                r.levels, subdiv::quoted(r.scheme->name), subdiv::quoted(info.name), info.period,
+                                info.period));
     }
     if (r.scheme->split() == SplitKind::MidEdge && r.levels % 2 == 1)
       throw Error(fmt::format("the sequence's head has {} level(s) of {}, an odd number: one mid-edge step turns the "
@@ -61,6 +70,35 @@ SequenceHead::SequenceHead(std::vector<LimitHeadRun> runs, const Level& base, co
   if (!hierarchy_.linear()) throw Error("the sequence's head has non-linear steps: no limit stencil exists");
   place_sqrt3_children();
   pair_mid_edge_steps();
+  place_plugin_children();
+}
+
+// A plugin's split one period at a time (plugin_period_children.h), on the meshes its own
+// evaluation takes (closed, all quads or all triangles, no creases: plugin_split_limit.h).
+void SequenceHead::place_plugin_children() {
+  plugin_children_.resize(plugin_.size());
+  plugin_period_.assign(plugin_.size(), 0);
+  size_t run_start = 0;
+  for (const LimitHeadRun& r : runs_) {
+    const int levels = std::max(r.levels, 0);
+    const int period = plugin_[run_start] ? splitter_info(r.scheme->split()).period : 1;
+    for (size_t l = run_start; plugin_[run_start] && l < run_start + size_t(levels); l += size_t(period)) {
+      const Level& parent = hierarchy_.levels[l];
+      if (const std::string why = plugin_split_limit_unsupported(*r.scheme, parent); !why.empty())
+        throw Error(fmt::format("the sequence's head, at level {}: {}", l, why));
+      const bool triangles = parent.all_faces_have_size(3);
+      for (int s = 0; s < period; ++s) triangles_[l + size_t(s)] = triangles ? 1 : 0;
+      const SplitterInfo& info = splitter_info(r.scheme->split());
+      const int factor = int(std::lround(std::pow(info.scale, info.period)));
+      std::vector<ChildrenOf> children_of;
+      for (int s = 0; s < period; ++s) children_of.emplace_back(hierarchy_.levels[l + size_t(s)], hierarchy_.origins[l + size_t(s)]);
+      plugin_period_[l] = period;
+      plugin_children_[l].resize(size_t(parent.face_count()));
+      for (Index f = 0; f < parent.face_count(); ++f)
+        plugin_children_[l][size_t(f)] = period_children(hierarchy_, l, period, f, triangles, factor, children_of);
+    }
+    run_start += size_t(levels);
+  }
 }
 
 // Two mid-edge steps nest as one dual step (mid_edge_pair.h), on closed meshes without creases.
@@ -129,6 +167,10 @@ FacePoint SequenceHead::map(const Level& base, Index face, double u, double v) c
                                 "face whose new triangles could not be placed in its (u, v): a degenerate "
                                 "neighbourhood)",
                                 l + 1));
+    } else if (plugin_[l]) {
+      p = locate(plugin_children_[l][size_t(p->face)], *p, triangles_[l] != 0, nullptr);
+      l += size_t(plugin_period_[l]) - 1;  // the period's other steps
+      if (!p) throw Error(fmt::format("internal: no face of the plugin's split to level {} holds the point", l + 1));
     } else if (mid_edge_[l]) {
       p = dual_child_point(hierarchy_.levels[l], hierarchy_.levels[l + 2], mid_edge_origins_[l], *p);
       ++l;  // two steps at once

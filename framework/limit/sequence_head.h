@@ -11,7 +11,8 @@
 // split through its quadrants (dual_limit.h) on a closed untagged mesh, mid-edge steps in
 // pairs, which nest as a dual step (mid_edge_pair.h), on a closed mesh without creases, or
 // sqrt3 steps, whose new triangles are affine in the (u, v) of the faces they reach over
-// (sqrt3_step_children.h).
+// (sqrt3_step_children.h), or a plugin's primal split a period at a time on the meshes its
+// own evaluation takes (plugin_period_children.h, plugin_split_limit.h).
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +46,7 @@ public:
 private:
   void place_sqrt3_children();
   void pair_mid_edge_steps();
+  void place_plugin_children();
 
   std::vector<LimitHeadRun> runs_;
   Hierarchy hierarchy_;
@@ -58,6 +60,11 @@ private:
   std::vector<char> mid_edge_;  // per level: its split is mid-edge (followed in pairs)
   // Per level starting a pair of mid-edge steps: the grand level's origins as a dual split's.
   std::vector<ChildOrigins> mid_edge_origins_;
+  std::vector<char> plugin_;  // per level: its split is a plugin's (followed a period at a time)
+  // Per level starting a plugin split's period: the period, and each face's children a period
+  // down (0 and empty at the period's other levels).
+  std::vector<int> plugin_period_;
+  std::vector<std::vector<std::vector<ChildFace>>> plugin_children_;
 };
 
 // Why a scheme cannot be a sequence's head, or empty.

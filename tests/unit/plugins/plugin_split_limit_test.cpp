@@ -154,3 +154,103 @@ TEST_CASE("A plugin's split (sqrt2): linear precision on a regular grid, and the
   CHECK_THROWS_WITH_AS(LimitSurface(load_scheme("sqrt2"), test::pyramid().level()),
                        doctest::Contains("not all quads or all triangles"), Error);
 }
+
+// A plugin's split in a sequence's head is followed one period at a time
+// (plugin_period_children.h): its own levels before it change nothing, and another scheme
+// after it is continuous across the base edges, with stencils and derivatives.
+TEST_CASE("A plugin's split in a sequence's head (sqrt2:2,sqrt2 and sqrt2:4,sqrt2 equal sqrt2)") {
+  test::load_example_plugins();
+  const auto scheme = load_scheme("sqrt2");
+  for (const test::Mesh& m : {bumped(test::cube()), bumped(test::torus(6, 5))}) {
+    const Level L = m.level();
+    const LimitSurface plain(scheme, L);
+    for (int k : {2, 4}) {
+      CAPTURE(k);
+      const LimitSurface sequence({{scheme, k}}, scheme, L);
+      std::mt19937 rng(unsigned(17 + k));
+      std::uniform_real_distribution<double> U(0, 1);
+      double worst = 0, worst_d = 0;
+      for (int i = 0; i < 30; ++i) {
+        const Index f = Index(i % L.face_count());
+        const double u = U(rng), v = U(rng);
+        const LimitSample a = plain.evaluate(f, u, v, m.positions, 3);
+        const LimitSample b = sequence.evaluate(f, u, v, m.positions, 3);
+        worst = std::max(worst, distance(a.position, b.position));
+        REQUIRE(a.has_derivatives == b.has_derivatives);
+        if (a.has_derivatives) worst_d = std::max(worst_d, distance(a.du, b.du) + distance(a.dv, b.dv));
+      }
+      CHECK(worst < 1e-13);
+      CHECK(worst_d < 1e-10);
+    }
+  }
+  CHECK_THROWS_WITH_AS(LimitSurface({{scheme, 1}}, load_scheme("catmull-clark"), test::cube().level()),
+                       doctest::Contains("multiple of 2 levels"), Error);
+  CHECK_THROWS_WITH_AS(LimitSurface({{scheme, 2}}, load_scheme("catmull-clark"), test::grid(3, 3).level()),
+                       doctest::Contains("boundary"), Error);
+}
+
+TEST_CASE("A plugin's split in a sequence's head (sqrt2:2,catmull-clark): limit masks, continuity, stencils, "
+          "derivatives") {
+  test::load_example_plugins();
+  const auto head = load_scheme("sqrt2");
+  const auto tail = load_scheme("catmull-clark");
+  const test::Mesh m = bumped(test::cube());
+  const Level L = m.level();
+  const LimitSurface s({{head, 2}}, tail, L);
+  // Two √2 steps keep the base vertices (vertex v) and add a point per face (V + f, the face's
+  // centre) and per edge (V + F + e, its middle); Catmull-Clark's limit masks on that level
+  // are the limit there.
+  RefineOptions ro;
+  ro.levels = 2;
+  const Hierarchy h = refine(*head, L, ro);
+  const std::vector<double> p2 = h.stencils[1].apply(h.stencils[0].apply(m.positions, 3), 3);
+  REQUIRE(h.levels[2].vertex_count == L.vertex_count + L.face_count() + L.edge_count());
+  const LimitResult masks = limit_positions(*tail, h.levels[2], p2);
+  auto mask = [&](Index v) { return std::span(masks.positions).subspan(size_t(3 * v), 3); };
+  double worst = 0;
+  for (Index f = 0; f < L.face_count(); ++f) {
+    for (int k = 0; k < 4; ++k) {
+      const auto uv = edge_uv(k, 0);
+      worst = std::max(worst, distance(s.evaluate(f, uv[0], uv[1], m.positions, 3, 0).position, mask(L.face(f)[size_t(k)])));
+    }
+    worst = std::max(worst, distance(s.evaluate(f, 0.5, 0.5, m.positions, 3, 0).position, mask(L.vertex_count + f)));
+  }
+  for (Index e = 0; e < L.edge_count(); ++e) {
+    const Index a = L.edge_vertices[size_t(2 * e)], b = L.edge_vertices[size_t(2 * e + 1)];
+    const Index f = L.edge_faces[size_t(2 * e)];
+    const auto uv = edge_uv(edge_in_face(L, f, a, b), 0.5);
+    worst = std::max(worst, distance(s.evaluate(f, uv[0], uv[1], m.positions, 3, 0).position,
+                                     mask(L.vertex_count + L.face_count() + e)));
+  }
+  CHECK(worst < 1e-13);
+  double seam = 0;
+  for (Index e = 0; e < L.edge_count(); ++e) {
+    const Index a = L.edge_vertices[size_t(2 * e)], b = L.edge_vertices[size_t(2 * e + 1)];
+    const Index f0 = L.edge_faces[size_t(2 * e)], f1 = L.edge_faces[size_t(2 * e + 1)];
+    for (double t : {0.3, 0.71}) {
+      const auto x = edge_uv(edge_in_face(L, f0, a, b), t), y = edge_uv(edge_in_face(L, f1, b, a), 1 - t);
+      seam = std::max(seam, distance(s.evaluate(f0, x[0], x[1], m.positions, 3, 0).position,
+                                     s.evaluate(f1, y[0], y[1], m.positions, 3, 0).position));
+    }
+  }
+  CHECK(seam < 1e-13);
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> U(0.05, 0.95);
+  double fd = 0, stencil = 0;
+  for (Index f = 0; f < L.face_count(); ++f) {
+    const double u = U(rng), v = U(rng);
+    const LimitSample p = s.evaluate(f, u, v, m.positions, 3);
+    REQUIRE(p.has_derivatives);
+    fd = std::max(fd, limit_test::central_difference_error(s, f, u, v, m.positions, 1e-6));
+    const LimitStencil w = s.stencil(f, u, v);
+    std::array<double, 3> x{}, du{};
+    for (size_t i = 0; i < w.vertices.size(); ++i)
+      for (size_t c = 0; c < 3; ++c) {
+        x[c] += w.position[i] * m.positions[size_t(3 * w.vertices[i]) + c];
+        du[c] += w.du[i] * m.positions[size_t(3 * w.vertices[i]) + c];
+      }
+    stencil = std::max({stencil, distance(x, p.position), distance(du, p.du)});
+  }
+  CHECK(fd < 1e-5);
+  CHECK(stencil < 1e-12);
+}
