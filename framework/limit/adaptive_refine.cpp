@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <numeric>
 #include <optional>
+#include <string>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/task_arena.h>
 
@@ -295,10 +296,11 @@ void check_no_repeated_corner(const Level& base) {
       for (size_t j = 0; j < i; ++j) {
         if (fv[i] != fv[j]) continue;
         const bool side = i == j + 1 || (j == 0 && i + 1 == fv.size());
+        const std::string edge = side ? fmt::format(" (its edge {0}-{0} joins the vertex to itself)", fv[i]) : "";
         throw Error(fmt::format("adaptive refinement needs faces with distinct corners, but face {} repeats vertex {}{} "
-                                "(faces and vertices counted from 0); remove the repeat from the face, or refine the "
-                                "mesh uniformly",
-                                f, fv[i], side ? fmt::format(" (its edge {0}-{0} joins the vertex to itself)", fv[i]) : ""));
+                                "(faces and vertices counted from 0); remove the repeat from the face, or refine "
+                                "the mesh uniformly",
+                                f, fv[i], edge));
       }
   }
 }

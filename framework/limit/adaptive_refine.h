@@ -132,9 +132,8 @@ struct AdaptiveMesh {
 };
 
 // Throws subdiv::Error for a split other than the binary quad and triangle splits, `tables`
-// of another scheme, levels
-// outside 0..12, a non-manifold mesh with a face that repeats a vertex, a triangle split of a mesh with other faces, and
-// `limit` or `tolerance` without a surface, and a face-varying value mesh whose faces are
+// of another scheme, levels outside 0..12, a non-manifold mesh with a face that repeats a
+// vertex, a triangle split of a mesh with other faces, and `limit` or `tolerance` without a surface, and a face-varying value mesh whose faces are
 // not the base's.
 // `data` (data_channels per base vertex): point arrays placed like the positions — refined
 // with the same stencils, and with `limit` evaluated on the limit as well.

@@ -74,10 +74,10 @@ struct Uniform {
 };
 
 Uniform uniform(const Scheme& scheme, const Level& base, const std::vector<double>& positions, int levels,
-                BoundaryInterpolation mode) {
+                const FeatureOptions& features) {
   RefineOptions o;
   o.levels = levels;
-  o.features.boundary = mode;
+  o.features = features;
   Uniform u{refine(scheme, base, o), {}};
   for (int l = 0; l <= levels; ++l) u.points.push_back(interpolate(u.h, l, positions, 3));
   return u;
@@ -91,6 +91,18 @@ std::pair<Index, double> nearest(const std::vector<double>& points, const double
   for (size_t v = 0; v < points.size() / 3; ++v)
     if (const double d = distance(points.data() + 3 * v, p); d < best.second) best = {Index(v), d};
   return best;
+}
+
+// How far the vertex farthest from every uniform level's points is: a vertex is placed where
+// the finest level that computed it puts it.
+double farthest_from_uniform_points(const AdaptiveMesh& m, const Uniform& u) {
+  double worst = 0;
+  for (size_t v = 0; v < m.positions.size() / 3; ++v) {
+    double d = 1e300;
+    for (const auto& points : u.points) d = std::min(d, nearest(points, &m.positions[3 * v]).second);
+    worst = std::max(worst, d);
+  }
+  return worst;
 }
 
 // The side of the base face's (u, v) domain both points lie on, or -1: quads (0,0) (1,0)
@@ -162,7 +174,8 @@ TEST_CASE("adaptive refinement of non-manifold meshes splitting every face is th
   for (const Case& c : cases())
     for (BoundaryInterpolation mode : kModes)
       for (int levels : {1, 3}) {
-        CAPTURE(c.name);
+        const std::string name = c.name;
+        CAPTURE(name);
         CAPTURE(int(mode));
         CAPTURE(levels);
         const auto scheme = load_scheme(c.scheme);
@@ -175,7 +188,7 @@ TEST_CASE("adaptive refinement of non-manifold meshes splitting every face is th
         o.tolerance = 1e-300;
         o.surface = &surface;
         const AdaptiveMesh m = refine_adaptive(*scheme, base, c.mesh.positions, o);
-        const Uniform u = uniform(*scheme, base, c.mesh.positions, levels, mode);
+        const Uniform u = uniform(*scheme, base, c.mesh.positions, levels, o.features);
         const Level& U = u.h.levels[size_t(levels)];
         REQUIRE(Index(face_count(m)) == U.face_count());
         REQUIRE(Index(m.positions.size() / 3) == U.vertex_count);
@@ -214,7 +227,8 @@ TEST_CASE("feature-adaptive refinement of non-manifold meshes: watertight, a hin
   for (const Case& c : cases())
     for (BoundaryInterpolation mode : kModes)
       for (AdaptiveTransitions transitions : {AdaptiveTransitions::Polygons, AdaptiveTransitions::Triangles}) {
-        CAPTURE(c.name);
+        const std::string name = c.name;
+        CAPTURE(name);
         CAPTURE(int(mode));
         CAPTURE(int(transitions));
         const auto scheme = load_scheme(c.scheme);
@@ -222,25 +236,17 @@ TEST_CASE("feature-adaptive refinement of non-manifold meshes: watertight, a hin
         AdaptiveOptions o = options(kLevels, mode);
         o.transitions = transitions;
         const AdaptiveMesh m = refine_adaptive(*scheme, base, c.mesh.positions, o);
-        const Uniform u = uniform(*scheme, base, c.mesh.positions, kLevels, mode);
+        const Uniform u = uniform(*scheme, base, c.mesh.positions, kLevels, o.features);
         check_watertight(m, base, c.triangles, u, kLevels);
         CHECK(face_count(m) < size_t(m.uniform_faces));
         CHECK(m.uniform_faces == u.h.levels[kLevels].face_count());
-        // A vertex is placed where the finest level that computed it puts it: a point of one
-        // of the uniform levels.
-        double worst = 0;
-        for (size_t v = 0; v < m.positions.size() / 3; ++v) {
-          double d = 1e300;
-          for (const auto& points : u.points) d = std::min(d, nearest(points, &m.positions[3 * v]).second);
-          worst = std::max(worst, d);
-        }
-        CHECK(worst < 1e-12);
+        CHECK(farthest_from_uniform_points(m, u) < 1e-12);
         if (transitions == AdaptiveTransitions::Triangles)
           for (size_t f = 0; f < face_count(m); ++f) {
             const Index n = m.face_offsets[f + 1] - m.face_offsets[f];
             CHECK((n == 3 || n == 4));
           }
-        MESSAGE(std::string(c.name), ": ", face_count(m), " faces against ", m.uniform_faces, " uniform");
+        MESSAGE(name, ": ", face_count(m), " faces against ", m.uniform_faces, " uniform");
       }
 }
 
@@ -248,7 +254,8 @@ TEST_CASE("adaptive refinement of non-manifold meshes with limit positions: the 
   constexpr int kLevels = 3;
   for (const Case& c : cases())
     for (BoundaryInterpolation mode : kModes) {
-      CAPTURE(c.name);
+      const std::string name = c.name;
+      CAPTURE(name);
       CAPTURE(int(mode));
       const auto scheme = load_scheme(c.scheme);
       const Level base = c.mesh.level();
@@ -259,7 +266,8 @@ TEST_CASE("adaptive refinement of non-manifold meshes with limit positions: the 
       o.limit = true;
       o.surface = &surface;
       const AdaptiveMesh m = refine_adaptive(*scheme, base, c.mesh.positions, o);
-      check_watertight(m, base, c.triangles, uniform(*scheme, base, c.mesh.positions, kLevels, mode), kLevels);
+      const Uniform u = uniform(*scheme, base, c.mesh.positions, kLevels, o.features);
+      check_watertight(m, base, c.triangles, u, kLevels);
 #ifdef SUBDIV_HAVE_OPENSUBDIV
       subdiv_test::OsdOptions oo;
       oo.scheme = c.triangles ? subdiv_test::OsdScheme::Loop : subdiv_test::OsdScheme::CatmullClark;
@@ -292,19 +300,17 @@ TEST_CASE("adaptive refinement of non-manifold meshes: a semi-sharp edge at a hi
   base.edge_sharpness.assign(size_t(base.edge_count()), 0.f);
   base.edge_sharpness[size_t(find_edge(base, 1, 4))] = 1.5f;  // from the hinge's middle vertex outwards
   const auto scheme = load_scheme("catmull-clark");
-  for (BoundaryInterpolation mode : kModes) {
-    CAPTURE(int(mode));
-    const AdaptiveMesh m = refine_adaptive(*scheme, base, mesh.positions, options(kLevels, mode));
-    const Uniform u = uniform(*scheme, base, mesh.positions, kLevels, mode);
-    check_watertight(m, base, false, u, kLevels);
-    double worst = 0;
-    for (size_t v = 0; v < m.positions.size() / 3; ++v) {
-      double d = 1e300;
-      for (const auto& points : u.points) d = std::min(d, nearest(points, &m.positions[3 * v]).second);
-      worst = std::max(worst, d);
+  for (BoundaryInterpolation mode : kModes)
+    for (CreaseMethod method : {CreaseMethod::Uniform, CreaseMethod::Chaikin}) {
+      CAPTURE(int(mode));
+      CAPTURE(int(method));
+      AdaptiveOptions o = options(kLevels, mode);
+      o.features.crease_method = method;
+      const AdaptiveMesh m = refine_adaptive(*scheme, base, mesh.positions, o);
+      const Uniform u = uniform(*scheme, base, mesh.positions, kLevels, o.features);
+      check_watertight(m, base, false, u, kLevels);
+      CHECK(farthest_from_uniform_points(m, u) < 1e-12);
     }
-    CHECK(worst < 1e-12);
-  }
   LimitSurfaceOptions lo;
   CHECK_THROWS_WITH_AS(LimitSurface(scheme, base, lo), doctest::Contains("semi-sharp edge ends at this non-manifold"),
                        Error);
@@ -313,7 +319,8 @@ TEST_CASE("adaptive refinement of non-manifold meshes: a semi-sharp edge at a hi
 TEST_CASE("adaptive refinement of non-manifold meshes refuses a face that repeats a vertex") {
   test::Mesh mesh = book(3, 1);
   mesh.add_face({2, 3, 4, 4});
-  CHECK_THROWS_WITH_AS(refine_adaptive(*load_scheme("catmull-clark"), mesh.level(), mesh.positions, options(2, BoundaryInterpolation::EdgesAndCorners)),
+  const AdaptiveOptions o = options(2, BoundaryInterpolation::EdgesAndCorners);
+  CHECK_THROWS_WITH_AS(refine_adaptive(*load_scheme("catmull-clark"), mesh.level(), mesh.positions, o),
                        doctest::Contains("face 6 repeats vertex 4"), Error);
 }
 
