@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <numeric>
 #include <optional>
+#include <string>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/task_arena.h>
 
@@ -20,7 +21,6 @@
 #include "framework/limit/adaptive_transitions.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/scheme/scheme.h"
-#include "framework/topology/non_manifold_place.h"
 #include "framework/util/byte_size_text.h"
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
@@ -282,6 +282,29 @@ double uniform_faces(const Level& base, bool triangles, int levels) {
   return faces;
 }
 
+// A non-manifold mesh is refined on its own levels, as uniform refinement refines it: its
+// non-manifold edges are infinitely sharp and its non-manifold vertices corners (or creases)
+// by the base tags every stage's refinement gives its piece (features/base_tags.h), and they
+// are features, so every face around them is split at every level and each stage holds them
+// with all their faces. A face that repeats a vertex is refused: its corners' (u, v) would
+// be ambiguous, and the limit evaluation cannot follow it either.
+void check_no_repeated_corner(const Level& base) {
+  if (base.manifold()) return;
+  for (Index f = 0; f < base.face_count(); ++f) {
+    const auto fv = base.face(f);
+    for (size_t i = 0; i < fv.size(); ++i)
+      for (size_t j = 0; j < i; ++j) {
+        if (fv[i] != fv[j]) continue;
+        const bool side = i == j + 1 || (j == 0 && i + 1 == fv.size());
+        const std::string edge = side ? fmt::format(" (its edge {0}-{0} joins the vertex to itself)", fv[i]) : "";
+        throw Error(fmt::format("adaptive refinement needs faces with distinct corners, but face {} repeats vertex {}{} "
+                                "(faces and vertices counted from 0); remove the repeat from the face, or refine "
+                                "the mesh uniformly",
+                                f, fv[i], edge));
+      }
+  }
+}
+
 }  // namespace
 
 // Pieces have the base's valences and, along their cuts and boundaries, 1 to the regular one:
@@ -311,9 +334,7 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& input, std::span
   if (levels < 0 || levels > 12) throw Error(fmt::format("adaptive refinement to level {}: give 0 to 12", levels));
   if ((options.limit || options.tolerance > 0) && !options.surface)
     throw Error("adaptive refinement: limit positions and a tolerance need the limit surface's evaluator");
-  if (!base.manifold())
-    throw Error(fmt::format("adaptive refinement needs a manifold mesh, but {}; or refine it uniformly",
-                            non_manifold_place(base)));
+  check_no_repeated_corner(base);
   const bool triangles = split == SplitKind::Triangle;
   const SchemeRun run{&scheme, 1};
   const int ghosts = ghost_rings({&run, 1});

@@ -17,6 +17,11 @@
 // another (no T-junction) and every interior edge has exactly two faces. A vertex is placed
 // where the finest level that computed it puts it (every vertex of uniform level L when all
 // faces are split), or on the limit surface with `limit`.
+//
+// A non-manifold mesh is refined on its own levels, as uniform refinement refines it: its
+// non-manifold edges are infinitely sharp and its non-manifold vertices corners (or on a
+// non-manifold crease) by the base tags (features/base_tags.h), and they are features, so
+// every face around them is split to level L and the fans share their vertices.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -127,9 +132,8 @@ struct AdaptiveMesh {
 };
 
 // Throws subdiv::Error for a split other than the binary quad and triangle splits, `tables`
-// of another scheme, levels
-// outside 0..12, a non-manifold mesh, a triangle split of a mesh with other faces, and
-// `limit` or `tolerance` without a surface, and a face-varying value mesh whose faces are
+// of another scheme, levels outside 0..12, a non-manifold mesh with a face that repeats a
+// vertex, a triangle split of a mesh with other faces, and `limit` or `tolerance` without a surface, and a face-varying value mesh whose faces are
 // not the base's.
 // `data` (data_channels per base vertex): point arrays placed like the positions — refined
 // with the same stencils, and with `limit` evaluated on the limit as well.

@@ -38,7 +38,10 @@ def refine_adaptive(mesh, scheme="catmull-clark", levels=1, *, tolerance=0.0, li
     Parameters
     ----------
     mesh : Mesh
-        Polygons (triangles for a triangle scheme); manifold.
+        Polygons (triangles for a triangle scheme). Non-manifold meshes (edges of three or
+        more faces, vertices where fans of faces meet, neighbours running an edge the same
+        way) are refined as uniform refinement refines them, their non-manifold edges and
+        vertices shared by the fans; a face that repeats a vertex is refused.
     scheme : Scheme, str or os.PathLike
         A scheme with the binary quad or triangle split (Catmull-Clark, Loop, ...).
     levels : int

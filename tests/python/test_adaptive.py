@@ -188,3 +188,23 @@ def test_triangle_transitions_tile_the_polygons_with_the_same_points():
     np.testing.assert_allclose(uv_areas(t, ti), np.ones(6), atol=1e-14)
     with pytest.raises(sk.Error, match="transitions"):
         sk.refine_adaptive(cube(), "catmull-clark", 2, transitions="quads")
+
+
+def test_non_manifold_flaps_share_their_hinge():
+    # Three flaps on one hinge edge (examples/meshes/flap-fan.obj): the hinge is isolated to
+    # level 3 in every flap, its 8 segments each in the three flaps' faces, its points one
+    # vertex each (not one per flap); the Euler characteristic is the uniform level's.
+    fan = sk.read_mesh(str(MESHES / "flap-fan.obj"))
+    m, info = sk.refine_adaptive(fan, "catmull-clark", 3, limit=True, info=True)
+    counts = edges_faces(m)
+    assert sorted(set(counts.values())) == [1, 2, 3]
+    assert sum(1 for c in counts.values() if c == 3) == 8
+    uniform = sk.refine(fan, "catmull-clark", 3)
+    uniform_edges = edges_faces(uniform)
+    assert m.n_points - len(counts) + m.n_faces == uniform.n_points - len(uniform_edges) + uniform.n_faces
+    assert m.n_faces < info.uniform_faces == uniform.n_faces
+    assert len(np.unique(np.round(m.points, 12), axis=0)) == m.n_points
+    base = m.cell_data["base_face"]
+    face_of_corner = np.repeat(base, np.diff(m.face_offsets))
+    r = sk.evaluate(fan, "catmull-clark", face_of_corner, info.corner_uv, derivatives=0)
+    assert np.abs(r.points - m.points[m.face_indices]).max() < 1e-12

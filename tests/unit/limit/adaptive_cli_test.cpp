@@ -11,6 +11,8 @@
 #include "framework/io/mesh_read.h"
 #include "framework/io/mesh_write.h"
 #include "support/cli_runner.h"
+#include "support/mesh_data_of.h"
+#include "unit/limit/non_manifold_meshes.h"
 
 using namespace subdiv;
 namespace fs = std::filesystem;
@@ -124,5 +126,31 @@ TEST_CASE("subdiv refine --adaptive --transitions triangles: triangles and quads
     CHECK(r.exit_code != 0);
     CHECK(r.output.find(b[1]) != std::string::npos);
     CHECK_FALSE(fs::exists(out));
+  }
+}
+
+TEST_CASE("subdiv refine --adaptive --limit refines a non-manifold mesh: three flaps on a hinge, welded") {
+  // Three flaps on a hinge of two edges (tests/unit/limit/non_manifold_meshes.h): the hinge is
+  // isolated to level 3 in every flap, so its 2 x 8 segments have the three flaps' faces each,
+  // every other edge one or two; three discs glued along a path: Euler characteristic 1.
+  const fs::path dir = test::fresh_dir("refine-cli-adaptive-flaps");
+  write_mesh(dir / "flaps.obj", test::mesh_data(non_manifold_test::book(3, 2)));
+  const std::string out = (dir / "x.vtp").string();
+  for (const char* transitions : {"", " --transitions triangles"}) {
+    CAPTURE(std::string(transitions));
+    const auto r = test::run_subdiv("refine " + (dir / "flaps.obj").string() + " --adaptive 3 --limit" + transitions +
+                                    " -o " + out);
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    const MeshData m = read_mesh(out);
+    const Level L = level_from_mesh(m, "x.vtp");
+    int hinge = 0, other = 0;
+    for (Index e = 0; e < L.edge_count(); ++e) {
+      hinge += L.edge_face_count(e) == 3;
+      other += L.edge_face_count(e) != 3 && L.edge_face_count(e) != 1 && L.edge_face_count(e) != 2;
+    }
+    CHECK(hinge == 16);
+    CHECK(other == 0);
+    CHECK(L.vertex_count - L.edge_count() + L.face_count() == 1);
+    CHECK(L.face_count() < 3 * 4 * 64);  // uniform level 3: 768 faces
   }
 }
