@@ -20,6 +20,7 @@
 #include "support/sanitizers.h"
 #include "support/test_meshes.h"
 #include "unit/limit/limit_meshes.h"
+#include "unit/limit/sqrt3_creased_meshes.h"
 #include "unit/limit/sqrt3_points.h"
 
 using namespace subdiv;
@@ -30,32 +31,12 @@ using limit_test::bumped;
 using limit_test::distance;
 using namespace limit_test::sqrt3;
 
-constexpr int kN = 8;
-
-// A bumped regular (valence 6) torus with the row of edges (i, 2)-(i + 1, 2) at `sharpness`:
-// a closed crease loop of regular crease vertices (two sharp edges straight across).
-struct Tagged {
-  test::Mesh mesh;
-  Level level;
-};
-
-Tagged creased_torus(float sharpness) {
-  Tagged t{bumped(test::torus(kN, kN, true), 0.2), {}};
-  t.level = t.mesh.level();
-  t.level.edge_sharpness.assign(size_t(t.level.edge_count()), 0.f);
-  for (int i = 0; i < kN; ++i)
-    t.level.edge_sharpness[size_t(find_edge(t.level, Index(2 * kN + i), Index(2 * kN + (i + 1) % kN)))] = sharpness;
-  return t;
-}
+constexpr int kN = kCreasedTorusSize;
 
 // The bumped octahedron with its equator infinitely sharp (crease vertices of valence 4) and
 // a pole tagged as a corner.
 Tagged creased_octahedron() {
-  Tagged t{bumped(limit_test::octahedron()), {}};
-  t.level = t.mesh.level();
-  t.level.edge_sharpness.assign(size_t(t.level.edge_count()), 0.f);
-  for (auto [a, b] : {std::pair<Index, Index>{0, 2}, {2, 1}, {1, 3}, {3, 0}})
-    t.level.edge_sharpness[size_t(find_edge(t.level, a, b))] = kInfinitelySharp;
+  Tagged t = octahedron_with_equator(kInfinitelySharp);
   t.level.vertex_sharpness.assign(size_t(t.level.vertex_count), 0.f);
   t.level.vertex_sharpness[4] = kInfinitelySharp;
   return t;

@@ -23,43 +23,15 @@
 #include "support/sanitizers.h"
 #include "support/test_meshes.h"
 #include "unit/limit/limit_meshes.h"
+#include "unit/limit/sqrt3_creased_meshes.h"
 #include "unit/limit/sqrt3_points.h"
 
 using namespace subdiv;
 
 namespace {
 
-using limit_test::bumped;
 using limit_test::distance;
 using namespace limit_test::sqrt3;
-
-constexpr int kN = 8;
-
-struct Tagged {
-  test::Mesh mesh;
-  Level level;
-};
-
-// A bumped regular (valence 6) torus with the row of edges (i, 2)-(i + 1, 2) at `sharpness`.
-Tagged creased_torus(float sharpness) {
-  Tagged t{bumped(test::torus(kN, kN, true), 0.2), {}};
-  t.level = t.mesh.level();
-  t.level.edge_sharpness.assign(size_t(t.level.edge_count()), 0.f);
-  for (int i = 0; i < kN; ++i)
-    t.level.edge_sharpness[size_t(find_edge(t.level, Index(2 * kN + i), Index(2 * kN + (i + 1) % kN)))] = sharpness;
-  return t;
-}
-
-// The bumped octahedron with its equator at sharpness 1: the equator's vertices keep their
-// two crease edges in the first step and become smooth vertices of valence 6 after the second.
-Tagged octahedron_with_equator(float sharpness) {
-  Tagged t{bumped(limit_test::octahedron()), {}};
-  t.level = t.mesh.level();
-  t.level.edge_sharpness.assign(size_t(t.level.edge_count()), 0.f);
-  for (auto [a, b] : {std::pair<Index, Index>{0, 2}, {2, 1}, {1, 3}, {3, 0}})
-    t.level.edge_sharpness[size_t(find_edge(t.level, a, b))] = sharpness;
-  return t;
-}
 
 // The (face, u, v) of a vertex of level 2 when the pair is not triadic: a vertex child and
 // the face points of the triangles over a base edge are where where_two_steps_put says; the

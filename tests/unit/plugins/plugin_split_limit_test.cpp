@@ -36,6 +36,15 @@ std::array<double, 2> edge_uv(int k, double t) {
   return {c[k][0] + t * (c[l][0] - c[k][0]), c[k][1] + t * (c[l][1] - c[k][1])};
 }
 
+// Stencil weights over the vertices applied to their positions.
+std::array<double, 3> applied(const std::vector<Index>& vertices, const std::vector<double>& weights,
+                              const std::vector<double>& positions) {
+  std::array<double, 3> x{};
+  for (size_t i = 0; i < vertices.size(); ++i)
+    for (size_t c = 0; c < 3; ++c) x[c] += weights[i] * positions[size_t(3 * vertices[i]) + c];
+  return x;
+}
+
 int edge_in_face(const Level& L, Index f, Index a, Index b) {
   const auto fv = L.face(f);
   for (int k = 0; k < 4; ++k)
@@ -120,14 +129,8 @@ TEST_CASE("A plugin's split (sqrt2): continuous across every edge, derivatives, 
     }
     const LimitStencil w = s.stencil(f, u, v);
     REQUIRE(w.has_derivatives);
-    std::array<double, 3> x{}, du{};
-    for (size_t i = 0; i < w.vertices.size(); ++i)
-      for (size_t c3 = 0; c3 < 3; ++c3) {
-        x[c3] += w.position[i] * m.positions[size_t(3 * w.vertices[i]) + c3];
-        du[c3] += w.du[i] * m.positions[size_t(3 * w.vertices[i]) + c3];
-      }
-    CHECK(distance(x, p.position) < 1e-13);
-    CHECK(distance(du, p.du) < 1e-12);
+    CHECK(distance(applied(w.vertices, w.position, m.positions), p.position) < 1e-13);
+    CHECK(distance(applied(w.vertices, w.du, m.positions), p.du) < 1e-12);
   }
   CHECK(fd < 1e-6);
 }
@@ -243,13 +246,8 @@ TEST_CASE("A plugin's split in a sequence's head (sqrt2:2,catmull-clark): limit 
     REQUIRE(p.has_derivatives);
     fd = std::max(fd, limit_test::central_difference_error(s, f, u, v, m.positions, 1e-6));
     const LimitStencil w = s.stencil(f, u, v);
-    std::array<double, 3> x{}, du{};
-    for (size_t i = 0; i < w.vertices.size(); ++i)
-      for (size_t c = 0; c < 3; ++c) {
-        x[c] += w.position[i] * m.positions[size_t(3 * w.vertices[i]) + c];
-        du[c] += w.du[i] * m.positions[size_t(3 * w.vertices[i]) + c];
-      }
-    stencil = std::max({stencil, distance(x, p.position), distance(du, p.du)});
+    stencil = std::max({stencil, distance(applied(w.vertices, w.position, m.positions), p.position),
+                        distance(applied(w.vertices, w.du, m.positions), p.du)});
   }
   CHECK(fd < 1e-5);
   CHECK(stencil < 1e-12);
