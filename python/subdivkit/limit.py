@@ -103,7 +103,9 @@ class LimitSurface:
     quadrants), the √3 or the mid-edge split, or a plugin's split that scales faces, where
     docs/limit.md's table "What is supported" says; or a sequence "A:k,B" (B's limit over the
     mesh A makes). Others raise subdivkit.Error saying why (non-linear and level-dependent
-    rules, a boundary, crease or non-manifold element a split does not take yet). The mesh's face-varying arrays (UVs) are evaluated with
+    rules, a boundary, crease or non-manifold element a split does not take yet). Running out
+    of memory part-way raises MemoryError naming the argument to lower (samples, the number of
+    points, derivatives). The mesh's face-varying arrays (UVs) are evaluated with
     ``evaluate_face_varying``, in the linear-interpolation mode ``fvar_boundary`` ("none",
     "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"), as refine().
 
@@ -234,6 +236,7 @@ class LimitSurface:
         "Normals" (of the tangent patches: continuous across edges),
         "base_face", "uv", "limit_distance" (to the exact limit at the same (face, u, v));
         cell_data: "base_face", "limit_distance" (the largest over the base face's samples).
+        Normals (0, 0, 0) with a UserWarning where the patches have none, as tessellate's.
         """
         r = self._prepared.approximate_bezier(check_whole(samples, "samples", "give a whole number of segments per face edge"), check_threads(threads))
         return _sampled_mesh("approximate_bezier", r, self.name)
@@ -250,7 +253,8 @@ class LimitSurface:
         is not a crease (G1) and their corners are the limit's positions and tangent planes. point_data: "Normals"
         (the patches' own), "base_face", "uv", "limit_distance" (to the exact limit at the
         same (face, u, v)); cell_data: "base_face", "limit_distance" (the largest over the
-        base face's samples).
+        base face's samples). Normals (0, 0, 0) with a UserWarning where the patches have
+        none, as tessellate's.
         """
         r = self._prepared.approximate_gregory(check_whole(samples, "samples", "give a whole number of segments per face edge"), check_threads(threads))
         return _sampled_mesh("approximate_gregory", r, self.name)
