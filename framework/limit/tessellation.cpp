@@ -137,11 +137,24 @@ struct Builder {
   }
 };
 
-// The point's normal; where the derivatives do not exist (an extraordinary vertex), the
-// limit of the normals of the face's points towards it; zero where the scheme gives no
-// derivatives at all.
-std::array<double, 3> normal_at(const LimitSurface& s, const SurfaceSample& sample, LimitSample& p, Index face,
-                                double u, double v) {
+// What sampling holds at its peak per sample point, in address space (what ulimit -v
+// counts; the writers' copies come after the peak, so every output format needs the same):
+// the grid's keys, (u, v), faces and corners, then positions, normals and the mesh made of
+// them. Measured as the least `ulimit -v` with which `subdiv evaluate --samples N` succeeds,
+// less the process's size when it checks (54 MiB): 381 B for --samples 420 on the cube
+// (1.06 M points), 371 B for 300, 355 B on the 24-quad tube without UVs, 337 B on the
+// octahedron under Loop, 307 B on the pyramid (sub-faces); 0.24 kB was counted before, and a
+// run between the two ran out of memory half-way.
+constexpr double kBytesPerSample = 400;
+// And per face-varying channel sampled on it too (its own grid, values and corner indices):
+// 270 B measured for --samples 300 on examples/meshes/textured-tube.obj (one 2-component
+// channel: 625 B per point against 355 B with its vt lines removed).
+constexpr double kBytesPerChannelSample = 300;
+
+}  // namespace
+
+std::array<double, 3> limit_normal(const LimitSurface& s, const SurfaceSample& sample, LimitSample& p, Index face,
+                                   double u, double v, double negligible) {
   if (!p.has_derivatives) {
     // Towards the middle of the point's face, or of its sub-face's tile (face_domain.h).
     const int n = s.base().face_size(face);
@@ -157,19 +170,8 @@ std::array<double, 3> normal_at(const LimitSurface& s, const SurfaceSample& samp
     // No derivatives at all (a dual scheme without the biquadratic closed form, dual_limit.h).
     if (!p.has_derivatives) return {0, 0, 0};
   }
-  return unit_normal(p.du, p.dv);
+  return unit_normal(p.du, p.dv, negligible);
 }
-
-// What the sampled mesh holds at its peak per sample point (positions, normals, (u, v), its
-// share of the faces, and the copy being written): 0.24 kB measured for --samples 300 on a
-// 48-quad torus.
-constexpr double kBytesPerSample = 240;
-// And per face-varying channel sampled on it too (its own grid, values and corner indices):
-// 0.15 kB measured for --samples 300 on examples/meshes/textured-tube.obj (one 2-component
-// channel: 0.40 kB per point against 0.24 kB with its vt lines removed).
-constexpr double kBytesPerChannelSample = 160;
-
-}  // namespace
 
 // N up to 1024 per edge on a large mesh asks for billions of points.
 void check_samples_fit(const Level& base, bool triangles, int N, size_t face_varying_channels) {
@@ -209,7 +211,7 @@ Tessellation tessellation_grid(const Level& topology, const Level& base, bool tr
   return std::move(b.out);
 }
 
-Tessellation tessellate(const LimitSurface& surface, int N, const SurfaceSample& sample) {
+Tessellation tessellate(const LimitSurface& surface, int N, const SurfaceSample& sample, double negligible) {
   Tessellation out = tessellation_grid(surface.base(), surface.base(), surface.triangles(), N);
   out.positions.assign(size_t(out.point_count()) * 3, 0.0);
   out.normals.assign(out.positions.size(), 0.0);
@@ -221,16 +223,32 @@ Tessellation tessellate(const LimitSurface& surface, int N, const SurfaceSample&
     LimitSample& p = samples.local();
     sample(f, u, v, p);
     for (int c = 0; c < 3; ++c) out.positions[size_t(3 * i + c)] = p.position[size_t(c)];
-    const auto n = normal_at(surface, sample, p, f, u, v);
+    const auto n = limit_normal(surface, sample, p, f, u, v, negligible);
     for (int c = 0; c < 3; ++c) out.normals[size_t(3 * i + c)] = n[size_t(c)];
   }, LoopProgress::Told);
   return out;
 }
 
+std::string zero_normals_warning(std::span<const double> normals, std::span<const Index> faces,
+                                 std::span<const double> uv) {
+  size_t count = 0, first = 0;
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const double* n = &normals[3 * i];
+    if (n[0] != 0 || n[1] != 0 || n[2] != 0) continue;
+    if (count++ == 0) first = i;
+  }
+  if (count == 0) return {};
+  return fmt::format("the limit surface has no normal at {} of {} points (the first at face {}, (u, v) = ({}, {})): "
+                     "its tangents are parallel or zero there (coincident control points, a surface folded flat) or "
+                     "the scheme gives no derivatives; their Normals are (0, 0, 0)",
+                     count, faces.size(), faces[first], uv[2 * first], uv[2 * first + 1]);
+}
+
 Tessellation tessellate(const LimitSurface& surface, std::span<const double> positions, int N) {
-  return tessellate(surface, N, [&](Index face, double u, double v, LimitSample& out) {
-    surface.evaluate_into(face, u, v, positions, 3, 1, out);
-  });
+  return tessellate(
+      surface, N,
+      [&](Index face, double u, double v, LimitSample& out) { surface.evaluate_into(face, u, v, positions, 3, 1, out); },
+      negligible_tangent(positions));
 }
 
 }  // namespace subdiv

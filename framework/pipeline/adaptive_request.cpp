@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <fmt/format.h>
+#include <new>
 #include <optional>
+#include <string_view>
 
 #include "framework/features/base_tags.h"
 #include "framework/io/mesh_read.h"
@@ -11,6 +13,7 @@
 #include "framework/pipeline/rational_weights.h"
 #include "framework/pipeline/refine_pipeline.h"
 #include "framework/primvar/face_varying.h"
+#include "framework/util/memory_limit.h"
 #include "framework/util/option_spelling.h"
 #include "framework/util/quoted_text.h"
 
@@ -225,7 +228,12 @@ AdaptiveResult refine_adaptive_request(AdaptiveRequest request) {
   } catch (const OptionError&) {
     throw;
   } catch (const Error& e) {
+    // The evaluation behind face-varying limits (prepare_evaluation) names the mesh itself.
+    if (std::string_view(e.what()).starts_with(r.mesh_name + ": ")) throw;
     throw Error(fmt::format("{}: {}", r.mesh_name, e.what()));
+  } catch (const std::bad_alloc&) {
+    throw OutOfMemoryError(out_of_memory_message(fmt::format("refining {} adaptively to level {}", r.mesh_name, levels),
+                                                 "ask for fewer {levels} or a larger {tolerance}"));
   }
   out.scheme_label = std::move(p.scheme_label);
   out.levels = levels;

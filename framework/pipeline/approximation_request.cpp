@@ -9,6 +9,7 @@
 #include "framework/limit/tessellation.h"
 #include "framework/limit/unit_normal.h"
 #include "framework/util/error.h"
+#include "framework/util/memory_limit.h"
 #include "framework/util/option_spelling.h"
 
 namespace subdiv {
@@ -121,9 +122,10 @@ ApproximatedPoints sample_points(const PreparedEvaluation& prepared, const Sampl
   ApproximatedPoints out;
   out.positions.resize(3 * faces.size());
   out.normals.resize(3 * faces.size());
+  const double negligible = negligible_tangent(prepared.mesh.positions);
   for (size_t i = 0; i < faces.size(); ++i) {
     const PatchSample s = sample(faces[i], uv[2 * i], uv[2 * i + 1]);
-    const std::array<double, 3> n = unit_normal(s.du, s.dv);
+    const std::array<double, 3> n = unit_normal(s.du, s.dv, negligible);
     for (size_t c = 0; c < 3; ++c) {
       out.positions[3 * i + c] = s.position[c];
       out.normals[3 * i + c] = n[c];
@@ -139,12 +141,13 @@ MeshData sampled_mesh(const PreparedEvaluation& prepared, const Sample& sample, 
   const auto patch_sample = [&sample](Index face, double u, double v, LimitSample& out) {
     out = as_sample(sample(face, u, v));
   };
-  Tessellation t = tessellate(*prepared.surface, segments, patch_sample);
+  Tessellation t = tessellate(*prepared.surface, segments, patch_sample, negligible_tangent(prepared.mesh.positions));
   distances = measure(prepared, t.uv_face, t.uv, t.positions);
   std::vector<double> cell_distance;
   cell_distance.reserve(t.base_face.size());
   for (Index f : t.base_face) cell_distance.push_back(distances.per_face[size_t(f)]);
   MeshData m;
+  if (std::string w = zero_normals_warning(t.normals, t.uv_face, t.uv); !w.empty()) m.warnings.push_back(std::move(w));
   m.point_data = {DataArray{"Normals", 3, std::move(t.normals), false, ArrayRole::Normals},
                   index_array("base_face", t.uv_face), DataArray{"uv", 2, std::move(t.uv), false},
                   DataArray{"limit_distance", 1, distances.per_point, false}};
@@ -255,12 +258,16 @@ ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const 
 
 MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const BezierApproximation& patches,
                                  int segments, ApproximationDistances& distances) {
-  return sampled_mesh(prepared, sampler(patches), segments, distances);
+  return advising_when_out_of_memory(fmt::format("sampling the patches with {} segments per face edge", segments),
+                                     kFewerSamplesAdvice,
+                                     [&] { return sampled_mesh(prepared, sampler(patches), segments, distances); });
 }
 
 MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const GregoryApproximation& patches,
                                  int segments, ApproximationDistances& distances) {
-  return sampled_mesh(prepared, sampler(patches), segments, distances);
+  return advising_when_out_of_memory(fmt::format("sampling the patches with {} segments per face edge", segments),
+                                     kFewerSamplesAdvice,
+                                     [&] { return sampled_mesh(prepared, sampler(patches), segments, distances); });
 }
 
 std::string approximation_level_note(int steps, size_t patches) {

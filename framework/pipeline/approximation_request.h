@@ -71,7 +71,8 @@ ApproximatedPoints approximate_points(const PreparedEvaluation& prepared, const 
 // (crack-free: the patches meet with C0, points on shared edges are evaluated once), with
 // the point arrays Normals (the tangent patches' unit normal), base_face, uv and
 // limit_distance, and the cell arrays base_face and limit_distance (the largest distance
-// over the base face's samples).
+// over the base face's samples); the mesh's `warnings` say where Normals are (0, 0, 0), as
+// sampled_limit_mesh's.
 MeshData approximated_limit_mesh(const PreparedEvaluation& prepared, const BezierApproximation& patches,
                                  int segments, ApproximationDistances& distances);
 // Likewise with the Gregory patches (Normals: their own unit normal; crack-free, as they

@@ -13,6 +13,7 @@
 #include "framework/pipeline/scheme_source.h"
 #include "framework/util/option_spelling.h"
 #include "framework/util/error.h"
+#include "framework/util/memory_limit.h"
 #include "framework/util/parallel_for_all.h"
 #include "framework/util/quoted_text.h"
 
@@ -165,7 +166,7 @@ void check_order(int derivatives) {
 // is reused point after point, and lays the samples out, NaN where a derivative does not
 // exist.
 template <class F>
-EvaluatedPoints evaluate_samples(size_t count, int channels, int derivatives, F&& sample) {
+EvaluatedPoints evaluate_samples_in(size_t count, int channels, int derivatives, F&& sample) {
   EvaluatedPoints out;
   out.count = Index(count);
   out.channels = channels;
@@ -189,6 +190,14 @@ EvaluatedPoints evaluate_samples(size_t count, int channels, int derivatives, F&
     }
   }, LoopProgress::Told);
   return out;
+}
+
+// The same, an allocation failure told with the fix for points (advising_when_out_of_memory).
+template <class F>
+EvaluatedPoints evaluate_samples(size_t count, int channels, int derivatives, F&& sample) {
+  return advising_when_out_of_memory(fmt::format("evaluating {} points", count),
+                                     "evaluate fewer points at a time, or ask for fewer {derivatives}",
+                                     [&] { return evaluate_samples_in(count, channels, derivatives, sample); });
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <limits>
 
+#include "framework/limit/tessellation.h"
 #include "framework/limit/unit_normal.h"
 #include "framework/pipeline/adaptive_request.h"
 #include "framework/pipeline/phase_progress.h"
@@ -40,6 +41,16 @@ LevelDistance level_distance(const EvaluateRequest& request, int level) {
   d.level = level;
   d.vertices = Index(V);
   DataArray distance{"level_distance", 1, {}, false}, normals{"Normals", 3, {}, false, ArrayRole::Normals};
+  // Where the derivatives do not exist (an extraordinary vertex of the level), the limit of
+  // the normals towards it from its face, as the sampled surface's (tessellation.h).
+  const SurfaceSample sample = limit_sampler(prepared);
+  LimitSample at_vertex;
+  const double negligible = negligible_tangent(prepared.mesh.positions);
+  const auto normal_of = [&](size_t v) {
+    if (std::isfinite(limit.du[3 * v])) return unit_normal({&limit.du[3 * v], 3}, {&limit.dv[3 * v], 3}, negligible);
+    sample(faces[v], uv[2 * v], uv[2 * v + 1], at_vertex);
+    return limit_normal(*prepared.surface, sample, at_vertex, faces[v], uv[2 * v], uv[2 * v + 1], negligible);
+  };
   double sum = 0;
   for (size_t v = 0; v < V; ++v) {
     const double* x = &a.positions[3 * v];
@@ -48,13 +59,13 @@ LevelDistance level_distance(const EvaluateRequest& request, int level) {
     distance.values.push_back(e);
     sum += e;
     if (d.largest_vertex == kNone || e > d.largest) d.largest = e, d.largest_vertex = Index(v);
-    // Zero where the limit has no derivatives (an extraordinary vertex of the level).
-    for (double c : unit_normal({&limit.du[3 * v], 3}, {&limit.dv[3 * v], 3})) normals.values.push_back(c);
+    for (double c : normal_of(v)) normals.values.push_back(c);
   }
   d.mean = V ? sum / double(V) : 0.0;
   a.positions = limit.position;
   d.mesh = adaptive_mesh_data(std::move(a));
   d.mesh.cell_data.erase(d.mesh.cell_data.begin());  // face_level: L everywhere
+  if (std::string w = zero_normals_warning(normals.values, faces, uv); !w.empty()) d.mesh.warnings.push_back(std::move(w));
   d.mesh.point_data = {std::move(distance), std::move(normals)};
   return d;
 }

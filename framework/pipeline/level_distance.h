@@ -22,8 +22,9 @@ struct LevelDistance {
 // Level L (0..12) of the request's mesh and scheme (as subdiv refine -l L makes it: found
 // here with feature-adaptive refinement split everywhere, which carries each vertex's
 // (face, u, v)), its vertices put on the limit surface, with the point arrays
-// level_distance (|level-L vertex - limit point|) and Normals (the limit normal, NaN at
-// extraordinary vertices) and the cell array base_face. Throws subdiv::Error as
+// level_distance (|level-L vertex - limit point|) and Normals (the unit limit normal; at an
+// extraordinary vertex its limit from a face, as limit_normal gives it; (0, 0, 0) where the
+// surface has none, which the mesh's `warnings` then say) and the cell array base_face. Throws subdiv::Error as
 // refine_adaptive_request and prepare_evaluation do (naming the mesh and the scheme).
 LevelDistance level_distance(const EvaluateRequest& request, int level);
 

@@ -1,6 +1,10 @@
 #include "framework/pipeline/limit_mesh.h"
 
+#include <fmt/format.h>
+
 #include "framework/limit/tessellation.h"
+#include "framework/limit/unit_normal.h"
+#include "framework/util/memory_limit.h"
 
 namespace subdiv {
 namespace {
@@ -23,14 +27,14 @@ FaceVaryingArray face_varying_samples(const PreparedEvaluation& prepared, size_t
   return {channel.name, channel.components, std::move(values.position), grid.face_vertices, channel.role};
 }
 
-}  // namespace
-
-MeshData sampled_limit_mesh(const PreparedEvaluation& prepared, int segments) {
-  // The channels' grids too are counted before any sample, not one grid at a time.
-  check_samples_fit(prepared.surface->base(), prepared.surface->triangles(), segments, prepared.face_varying.size());
+// The samples and the mesh they make, once they are known to fit.
+MeshData sample(const PreparedEvaluation& prepared, int segments) {
   Tessellation t =
-      naming_the_mesh(prepared, [&] { return tessellate(*prepared.surface, segments, limit_sampler(prepared)); });
+      naming_the_mesh(prepared, [&] {
+        return tessellate(*prepared.surface, segments, limit_sampler(prepared), negligible_tangent(prepared.mesh.positions));
+      });
   MeshData m;
+  if (std::string w = zero_normals_warning(t.normals, t.uv_face, t.uv); !w.empty()) m.warnings.push_back(std::move(w));
   for (size_t c = 0; c < prepared.face_varying.size(); ++c)
     m.face_varying.push_back(face_varying_samples(prepared, c, segments));
   m.point_data = {DataArray{"Normals", 3, std::move(t.normals), false, ArrayRole::Normals},
@@ -40,6 +44,15 @@ MeshData sampled_limit_mesh(const PreparedEvaluation& prepared, int segments) {
   m.face_offsets.assign(t.face_offsets.begin(), t.face_offsets.end());
   m.face_vertices.assign(t.face_vertices.begin(), t.face_vertices.end());
   return m;
+}
+
+}  // namespace
+
+MeshData sampled_limit_mesh(const PreparedEvaluation& prepared, int segments) {
+  // The channels' grids too are counted before any sample, not one grid at a time.
+  check_samples_fit(prepared.surface->base(), prepared.surface->triangles(), segments, prepared.face_varying.size());
+  return advising_when_out_of_memory(fmt::format("sampling the limit surface with {} segments per face edge", segments),
+                                     kFewerSamplesAdvice, [&] { return sample(prepared, segments); });
 }
 
 }  // namespace subdiv

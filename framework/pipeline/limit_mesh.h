@@ -11,8 +11,10 @@ namespace subdiv {
 // a mesh with the point arrays "Normals" (the unit limit normal, role normals), "base_face"
 // and "uv" (the face and (u, v) each point was evaluated at), the cell array "base_face"
 // (the input face each face lies in), and the mesh's face-varying channels (e.g. texture
-// coordinates) evaluated at every face corner, split where the channel has seams. Throws
-// subdiv::Error as tessellate() does (segments < 1, odd with sub-faces).
+// coordinates) evaluated at every face corner, split where the channel has seams. Where the
+// surface has no normal (tessellation.h, zero_normals_warning) "Normals" is (0, 0, 0) and
+// `warnings` says how many and where, for the front-end to show. Throws subdiv::Error as
+// tessellate() does (segments < 1, odd with sub-faces).
 MeshData sampled_limit_mesh(const PreparedEvaluation& prepared, int segments);
 
 }  // namespace subdiv

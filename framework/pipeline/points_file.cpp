@@ -1,6 +1,9 @@
 #include "framework/pipeline/points_file.h"
 
+#include <cctype>
+#include <algorithm>
 #include <charconv>
+#include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
 #include <tuple>
@@ -20,9 +23,25 @@ std::string_view trimmed(std::string_view s) {
   return b == std::string_view::npos ? std::string_view() : s.substr(b, e - b + 1);
 }
 
+// A field as written, without the blanks around it and the double quotes a spreadsheet or R's
+// write.csv puts around it ("face","u","v"; "0","0.5"): a field holds no comma, so quoting
+// changes nothing else.
+std::string_view unquoted(std::string_view s) {
+  s = trimmed(s);
+  if (s.size() >= 2 && s.front() == '"' && s.back() == '"') s = trimmed(s.substr(1, s.size() - 2));
+  return s;
+}
+
+bool same_letters(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i]))) return false;
+  return true;
+}
+
 // Empty when `text` is a whole number, else why not, for the message ("is not a whole number").
 std::string parse_field(std::string_view text, Index& out) {
-  std::string_view t = trimmed(text);
+  std::string_view t = unquoted(text);
   // from_chars takes no '+', which spreadsheets may write: "+1" is a whole number.
   if (t.size() > 1 && t[0] == '+' && t[1] != '-' && t[1] != '+') t.remove_prefix(1);
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
@@ -34,7 +53,7 @@ std::string parse_field(std::string_view text, Index& out) {
 // The same for a u or v: one too small for a double (1e-400) is 0, as a subnormal (4e-320)
 // is already close to it, and lies in the domain; one too large (1e400) is refused.
 std::string parse_field(std::string_view text, double& out) {
-  switch (parse_decimal(trimmed(text), out)) {
+  switch (parse_decimal(unquoted(text), out)) {
     case DecimalParse::ok: return {};
     case DecimalParse::overflow: return "is out of range: larger than a double holds (about 1.8e308)";
     case DecimalParse::not_a_number: break;
@@ -60,9 +79,11 @@ std::vector<std::string_view> split(std::string_view line, char separator) {
   return fields;
 }
 
+// face,u,v in any case ("Face,U,V"), each name possibly quoted.
 bool is_header(std::string_view line) {
   const std::vector<std::string_view> fields = split(without_utf8_bom(line), ',');
-  return fields.size() == 3 && trimmed(fields[0]) == "face" && trimmed(fields[1]) == "u" && trimmed(fields[2]) == "v";
+  return fields.size() == 3 && same_letters(unquoted(fields[0]), "face") && same_letters(unquoted(fields[1]), "u") &&
+         same_letters(unquoted(fields[2]), "v");
 }
 
 void check_header(std::string_view line, const std::string& file) {
@@ -71,8 +92,13 @@ void check_header(std::string_view line, const std::string& file) {
     throw Error(fmt::format("{} line 1: the lines end in a carriage return alone (CR, old Mac text); save the file "
                             "with LF or CRLF line endings",
                             file));
-  if (!is_header(line))
-    throw Error(fmt::format("{} line 1: the header is {}; it must be 'face,u,v'", file, shown(trimmed(line))));
+  if (is_header(line)) return;
+  // A spreadsheet in a locale with decimal commas separates its fields with ';'.
+  const bool semicolons = line.find(';') != std::string_view::npos && line.find(',') == std::string_view::npos;
+  throw Error(fmt::format("{} line 1: the header is {}; it must be 'face,u,v'{}", file, shown(trimmed(line)),
+                          semicolons ? " (the fields are separated by ';': save the file with ',' between fields "
+                                       "and '.' as the decimal point)"
+                                     : ""));
 }
 
 // Line `number` (from 1) of the file, after the header.
@@ -88,7 +114,7 @@ void parse_row(std::string_view line, size_t number, const std::string& file, co
     throw Error(fmt::format("{}: face {} {}", where, shown(trimmed(fields[0])), why));
   for (const auto& [name, field, value] : {std::tuple{"u", fields[1], &u}, std::tuple{"v", fields[2], &v}})
     if (const std::string why = parse_field(field, *value); !why.empty())
-      throw Error(fmt::format("{}: {} = {} {}; u and v must be numbers", where, name, shown(trimmed(field)), why));
+      throw Error(fmt::format("{}: {} = {} {}; u and v must be numbers", where, name, shown(unquoted(field)), why));
   if (const std::string why = check(face, u, v); !why.empty()) throw Error(fmt::format("{}: {}", where, why));
   out.faces.push_back(face);
   out.uv.insert(out.uv.end(), {u, v});
@@ -111,7 +137,8 @@ SurfacePoints parse_points(std::string_view text, const std::string& file, const
 }
 
 // Line by line, so that a large file is never held whole.
-SurfacePoints read_points_file(const std::string& file, const PointCheck& check) {
+SurfacePoints read_points_file(const std::string& file, const PointCheck& check,
+                               const std::function<void(double done)>& fraction) {
   // A FIFO would block, /dev/zero would fill memory with one endless line, and a directory
   // would read as an empty file: each is named for what it is first.
   check_input_file(file, "points (.csv)");
@@ -121,7 +148,13 @@ SurfacePoints read_points_file(const std::string& file, const PointCheck& check)
   if (!std::getline(in, line)) throw Error(fmt::format("{}: empty file; the first line must be 'face,u,v'", file));
   check_header(line, file);
   SurfacePoints out;
-  for (size_t number = 2; std::getline(in, line); ++number) parse_row(line, number, file, check, out);
+  std::error_code ec;
+  const double bytes = double(std::filesystem::file_size(file, ec));
+  constexpr size_t kRowsPerReport = 1 << 16;
+  for (size_t number = 2; std::getline(in, line); ++number) {
+    parse_row(line, number, file, check, out);
+    if (fraction && !ec && bytes > 0 && number % kRowsPerReport == 0) fraction(std::min(1.0, double(in.tellg()) / bytes));
+  }
   check_not_empty(out, file);
   return out;
 }

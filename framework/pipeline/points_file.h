@@ -1,5 +1,6 @@
 #pragma once
-// The points `subdiv evaluate --at POINTS.csv` evaluates: the header `face,u,v`, then one
+// The points `subdiv evaluate --at POINTS.csv` evaluates: the header `face,u,v` (any case,
+// names and fields possibly in double quotes, as spreadsheets and R write them), then one
 // point per row, each checked by the caller (LimitSurface::check: the face exists, (u, v)
 // lies in its parameter domain) before anything is evaluated, so a bad row stops the
 // command with its line. Parsed from text, so that a fuzzer can drive it without files.
@@ -27,7 +28,9 @@ using PointCheck = std::function<std::string(Index face, double u, double v)>;
 SurfacePoints parse_points(std::string_view text, const std::string& file, const PointCheck& check);
 
 // The same, read line by line from `file`; refused naming the file when it cannot be read
-// or is no regular file (check_input_file: a FIFO, a device, a directory).
-SurfacePoints read_points_file(const std::string& file, const PointCheck& check);
+// or is no regular file (check_input_file: a FIFO, a device, a directory). `fraction`, when
+// given, is told the share of the file read (0 to 1) now and then, for a front-end's bar.
+SurfacePoints read_points_file(const std::string& file, const PointCheck& check,
+                               const std::function<void(double done)>& fraction = {});
 
 }  // namespace subdiv

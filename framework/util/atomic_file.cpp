@@ -89,7 +89,17 @@ void require_regular_or_absent(const fs::path& target) {
   std::error_code ec;
   const fs::file_type type = fs::status(target, ec).type();  // follows links
   // Absent, regular, or not statable (the temporary's creation then says why).
-  if (ec || type == fs::file_type::regular) return;
+  if (ec) return;
+  if (type == fs::file_type::regular) {
+    // Renaming the finished file onto it replaces it whatever its permissions (and root may
+    // write anything): a file nobody may write is one its owner meant to keep.
+    constexpr fs::perms writable = fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write;
+    if ((fs::status(target, ec).permissions() & writable) == fs::perms::none && !ec)
+      throw Error(fmt::format("cannot write {}: it is read-only (no write permission); make it writable (chmod u+w) "
+                              "or name another output",
+                              subdiv::quoted(target.string())));
+    return;
+  }
   if (type == fs::file_type::directory)
     throw Error(fmt::format("cannot write {}: it is a directory; name a file, in it or beside it",
                             subdiv::quoted(target.string())));

@@ -38,6 +38,9 @@ std::string byte_size_text(double bytes) { return in_unit(bytes, unit_for(bytes)
 
 std::pair<std::string, std::string> byte_sizes_compared(double need, double have) {
   const Unit unit = unit_for(std::fmax(std::fabs(need), std::fabs(have)));
+  // Sizes units apart each in their own: 6e18 points would need "1.28e+06 PiB", but only
+  // "0.0 PiB" was available read as if nothing was.
+  if (std::fmin(std::fabs(need), std::fabs(have)) < unit.scale / 1024) return {byte_size_text(need), byte_size_text(have)};
   std::pair<std::string, std::string> texts;
   // 17 digits tell any two doubles apart; whole bytes are the last resort below that.
   for (int digits = 1; digits <= 17; ++digits) {

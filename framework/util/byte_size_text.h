@@ -12,7 +12,8 @@ namespace subdiv {
 std::string byte_size_text(double bytes);
 
 // `need` and `have` in one unit (that of the larger), with the fewest digits that show their
-// order: whenever need != have, the two texts differ.
+// order: whenever need != have, the two texts differ. Sizes two units apart or more (PiB
+// against GiB) each in their own, so that the smaller never reads "0.0 PiB".
 std::pair<std::string, std::string> byte_sizes_compared(double need, double have);
 
 }  // namespace subdiv

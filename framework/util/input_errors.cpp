@@ -20,7 +20,7 @@ std::string unexpected_read_failure(const std::string& file, const std::exceptio
 }
 
 std::string read_out_of_memory(const std::string& file) {
-  return fmt::format("cannot read {}: {}", subdiv::quoted(file), out_of_memory_message("reading it"));
+  return fmt::format("cannot read {}: {}", subdiv::quoted(file), out_of_memory_message("reading it", "give a smaller file"));
 }
 
 }  // namespace subdiv

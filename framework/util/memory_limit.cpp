@@ -132,14 +132,13 @@ MemoryBudget available_memory() {
   return budget;
 }
 
-std::string out_of_memory_message(const std::string& during) {
+std::string out_of_memory_message(const std::string& during, const std::string& fix) {
   const MemoryBudget budget = available_memory();
   const std::string have =
       budget.bytes >= 1e17 ? std::string("no limit is known")
                            : fmt::format("about {} was still available, limited by {}",
                                          byte_size_text(budget.bytes), budget.source);
-  return fmt::format("out of memory while {} ({}); ask for fewer levels or a smaller input, or raise the limit",
-                     during, have);
+  return fmt::format("out of memory while {} ({}); {}, or raise the limit", during, have, fix);
 }
 
 MemoryBudget memory_budget(double limit) {

@@ -5,8 +5,12 @@
 // A run that fits the machine but not its container or ulimit would otherwise end in
 // std::bad_alloc, or in the kernel's OOM killer, half-way through.
 #include <filesystem>
+#include <new>
 #include <optional>
 #include <string>
+#include <utility>
+
+#include "framework/util/option_spelling.h"
 
 namespace subdiv {
 
@@ -37,8 +41,34 @@ std::optional<MemoryBudget> cgroup_remaining(const std::filesystem::path& cgroup
 // What RLIMIT_AS and RLIMIT_DATA still allow, from the process's current sizes.
 std::optional<MemoryBudget> rlimit_remaining();
 
-// The message for a std::bad_alloc: what ran out while doing `during`, the budget and the
-// fix. Every allocation failure the tool reports says this, never "internal error".
-std::string out_of_memory_message(const std::string& during);
+// The message for a std::bad_alloc: what ran out while doing `during`, the budget and
+// `fix`, the advice for what was asked (naming the option the user gave: "ask for fewer
+// --samples", not levels for a command that has none). Every allocation failure the tool
+// reports says this, never "internal error".
+std::string out_of_memory_message(const std::string& during,
+                                  const std::string& fix = "ask for fewer levels or a smaller input");
+
+// Running out of memory, told with out_of_memory_message's words.
+class OutOfMemoryError : public OptionError {
+public:
+  using OptionError::OptionError;
+};
+
+// `work()`, with a std::bad_alloc it throws turned into an OutOfMemoryError with
+// out_of_memory_message(during, fix); `fix` may name options as the front-ends' placeholders
+// ("ask for fewer {samples}", util/option_spelling.h). The outermost call names the work and
+// the fix, as it knows what the user asked for: an OutOfMemoryError from a nested call
+// (points evaluated for a sampled mesh) is told again in its words. The memory `work` held
+// is freed by then, so the message's budget is what a retry would have.
+template <class Work>
+auto advising_when_out_of_memory(const std::string& during, const std::string& fix, Work&& work) -> decltype(work()) {
+  try {
+    return std::forward<Work>(work)();
+  } catch (const std::bad_alloc&) {
+    throw OutOfMemoryError(out_of_memory_message(during, fix));
+  } catch (const OutOfMemoryError&) {
+    throw OutOfMemoryError(out_of_memory_message(during, fix));
+  }
+}
 
 }  // namespace subdiv

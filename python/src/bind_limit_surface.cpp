@@ -146,7 +146,9 @@ py::dict tessellate(const LimitSurfaceHandle& h, int samples, int threads) {
   std::vector<subdiv::DataArray> point_data = std::move(m.point_data), cell_data = std::move(m.cell_data);
   std::vector<subdiv::FaceVaryingArray> face_varying = std::move(m.face_varying);
   m.point_data.clear(), m.cell_data.clear(), m.face_varying.clear();
+  std::vector<std::string> warnings = std::move(m.warnings);
   py::dict d = mesh_to_python(std::move(m));
+  d["warnings"] = warnings;
   d["point_roles"] = roles_to_python(point_data);
   d["cell_roles"] = roles_to_python(cell_data);
   d["point_data"] = data_arrays_to_python(std::move(point_data));
@@ -169,7 +171,9 @@ py::dict approximated_mesh(const LimitSurfaceHandle& h, int samples, int threads
   }
   std::vector<subdiv::DataArray> point_data = std::move(m.point_data), cell_data = std::move(m.cell_data);
   m.point_data.clear(), m.cell_data.clear();
+  std::vector<std::string> warnings = std::move(m.warnings);
   py::dict out = mesh_to_python(std::move(m));
+  out["warnings"] = warnings;
   out["point_roles"] = roles_to_python(point_data);
   out["cell_roles"] = roles_to_python(cell_data);
   out["point_data"] = data_arrays_to_python(std::move(point_data));

@@ -3,6 +3,7 @@
 // the Mesh class and SciPy matrices on top of what is bound here.
 #include "bindings.h"
 #include "framework/io/vtk/vtk_formats.h"
+#include "framework/util/memory_limit.h"
 #include "framework/util/quoted_text.h"
 
 PYBIND11_MODULE(_subdivkit, m) {
@@ -15,6 +16,8 @@ PYBIND11_MODULE(_subdivkit, m) {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const subdiv::OutOfMemoryError& e) {  // MemoryError, with the fix in Python's keywords
+      PyErr_SetString(PyExc_MemoryError, subdiv::terminal_safe(e.spelled(subdivkit::python_option_spelling())).c_str());
     } catch (const subdiv::OptionError& e) {  // the pipeline's words, spelled as Python's keywords
       error(subdiv::terminal_safe(e.spelled(subdivkit::python_option_spelling())).c_str());
     } catch (const subdiv::Error& e) {

@@ -6,6 +6,7 @@ extraordinary vertices), in OpenSubdiv Bfr's parameterisation, and the same poin
 stencils (weights over the control points) for cheap re-evaluation.
 """
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -43,6 +44,16 @@ def _points(faces, uv):
     if f.ndim != 1 or p.ndim != 2 or p.shape[1] != 2 or p.shape[0] != f.shape[0]:
         raise Error(f"faces {tuple(f.shape)} and uv {tuple(p.shape)}: give n faces and an (n, 2) array of (u, v)")
     return f, p
+
+
+def _sampled_mesh(method, r, name):
+    """The Mesh of a tessellation's arrays, after warning (UserWarning) where its Normals are
+    (0, 0, 0): sample points where the surface has no normal."""
+    for warning in r["warnings"]:
+        warnings.warn(f"{method}: {warning}", UserWarning, stacklevel=3)
+    return Mesh._from_arrays(r, name=name, point_data=_data_shapes_like(r["point_data"], {}),
+                             cell_data=_data_shapes_like(r["cell_data"], {}), face_varying=r["face_varying"],
+                             point_roles=r["point_roles"], cell_roles=r["cell_roles"])
 
 
 @dataclass
@@ -92,7 +103,9 @@ class LimitSurface:
     quadrants), the √3 or the mid-edge split, or a plugin's split that scales faces, where
     docs/limit.md's table "What is supported" says; or a sequence "A:k,B" (B's limit over the
     mesh A makes). Others raise subdivkit.Error saying why (non-linear and level-dependent
-    rules, a boundary, crease or non-manifold element a split does not take yet). The mesh's face-varying arrays (UVs) are evaluated with
+    rules, a boundary, crease or non-manifold element a split does not take yet). Running out
+    of memory part-way raises MemoryError naming the argument to lower (samples, the number of
+    points, derivatives). The mesh's face-varying arrays (UVs) are evaluated with
     ``evaluate_face_varying``, in the linear-interpolation mode ``fvar_boundary`` ("none",
     "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"), as refine().
 
@@ -200,12 +213,13 @@ class LimitSurface:
         "normals"), "base_face" and "uv" (the face and (u, v) each point was evaluated at);
         cell_data: "base_face". The mesh's face-varying arrays come back in face_varying,
         sampled at every corner in the mode ``fvar_boundary`` chose, split at their seams.
-        A mesh with rational weights is sampled as the rational surface.
+        A mesh with rational weights is sampled as the rational surface. Where the surface
+        has no normal (its tangents parallel or zero: coincident control points, a surface
+        folded flat) "Normals" is (0, 0, 0) and a UserWarning says how many such points
+        there are and the first one's face and (u, v).
         """
         r = self._prepared.tessellate(check_whole(samples, "samples", "give a whole number of segments per face edge"), check_threads(threads))
-        return Mesh._from_arrays(r, name=self.name, point_data=_data_shapes_like(r["point_data"], {}),
-                                 cell_data=_data_shapes_like(r["cell_data"], {}), face_varying=r["face_varying"],
-                                 point_roles=r["point_roles"], cell_roles=r["cell_roles"])
+        return _sampled_mesh("tessellate", r, self.name)
 
     def approximate_bezier(self, samples=4, *, threads=0):
         """Loop & Schaefer's (2008) bicubic patches tessellated, as ``subdiv evaluate
@@ -222,11 +236,10 @@ class LimitSurface:
         "Normals" (of the tangent patches: continuous across edges),
         "base_face", "uv", "limit_distance" (to the exact limit at the same (face, u, v));
         cell_data: "base_face", "limit_distance" (the largest over the base face's samples).
+        Normals (0, 0, 0) with a UserWarning where the patches have none, as tessellate's.
         """
         r = self._prepared.approximate_bezier(check_whole(samples, "samples", "give a whole number of segments per face edge"), check_threads(threads))
-        return Mesh._from_arrays(r, name=self.name, point_data=_data_shapes_like(r["point_data"], {}),
-                                 cell_data=_data_shapes_like(r["cell_data"], {}), face_varying=r["face_varying"],
-                                 point_roles=r["point_roles"], cell_roles=r["cell_roles"])
+        return _sampled_mesh("approximate_bezier", r, self.name)
 
     def approximate_gregory(self, samples=4, *, threads=0):
         """Loop, Schaefer, Ni & Castaño's (2009) bicubic Gregory patches tessellated, as
@@ -240,12 +253,11 @@ class LimitSurface:
         is not a crease (G1) and their corners are the limit's positions and tangent planes. point_data: "Normals"
         (the patches' own), "base_face", "uv", "limit_distance" (to the exact limit at the
         same (face, u, v)); cell_data: "base_face", "limit_distance" (the largest over the
-        base face's samples).
+        base face's samples). Normals (0, 0, 0) with a UserWarning where the patches have
+        none, as tessellate's.
         """
         r = self._prepared.approximate_gregory(check_whole(samples, "samples", "give a whole number of segments per face edge"), check_threads(threads))
-        return Mesh._from_arrays(r, name=self.name, point_data=_data_shapes_like(r["point_data"], {}),
-                                 cell_data=_data_shapes_like(r["cell_data"], {}), face_varying=r["face_varying"],
-                                 point_roles=r["point_roles"], cell_roles=r["cell_roles"])
+        return _sampled_mesh("approximate_gregory", r, self.name)
 
     def stencils(self, faces, uv, derivatives=1, *, threads=0):
         """The same points as weights over the control points: a LimitStencils of

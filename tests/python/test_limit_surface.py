@@ -6,6 +6,8 @@ points; affine invariance; second derivatives are central differences of the fir
 limit at a base vertex is the vertex's limit position (subdivkit.limit_positions); bad
 points, schemes and sequences are refused with their reasons; a sequence's limit is its
 last scheme's over the mesh its head makes."""
+import warnings
+
 import numpy as np
 import pytest
 
@@ -364,3 +366,20 @@ def test_every_refusal_of_an_approximation_offers_the_exact_limit_in_python_word
     assert why in message
     assert "evaluate the exact limit instead" in message
     assert "--approximate" not in message
+
+
+def test_sample_points_without_a_normal_are_zero_with_a_warning():
+    """A pillow (two quads back to back) folds flat along its edges, where du x dv = 0: the
+    Normals there are (0, 0, 0), said by a UserWarning with their count and the first place;
+    a surface with a normal everywhere gives unit normals and no warning."""
+    pillow = sk.Mesh(np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], dtype=float),
+                     [[0, 1, 2, 3], [3, 2, 1, 0]])
+    with pytest.warns(UserWarning, match=r"tessellate: the limit surface has no normal at \d+ of \d+ points "
+                                         r"\(the first at face \d+"):
+        m = sk.LimitSurface(pillow).tessellate(4)
+    n = np.linalg.norm(m.point_data["Normals"], axis=1)
+    assert np.any(n == 0) and np.all((n == 0) | np.isclose(n, 1.0))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        n = np.linalg.norm(sk.LimitSurface(cube()).tessellate(4).point_data["Normals"], axis=1)
+    assert np.allclose(n, 1.0)

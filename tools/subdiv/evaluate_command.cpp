@@ -16,6 +16,7 @@
 #include "framework/pipeline/approximation_request.h"
 #include "framework/pipeline/level_distance.h"
 #include "framework/limit/limit_surface.h"
+#include "framework/limit/tessellation.h"
 #include "framework/pipeline/limit_mesh.h"
 #include "framework/pipeline/phase_progress.h"
 #include "framework/pipeline/evaluate_request.h"
@@ -26,6 +27,7 @@
 #include "framework/util/atomic_file.h"
 #include "framework/util/checked_file_stream.h"
 #include "framework/util/error.h"
+#include "framework/util/memory_limit.h"
 #include "framework/util/parallel_for_all.h"
 #include "framework/util/quoted_text.h"
 #include "progress.h"
@@ -69,7 +71,8 @@ void check_output_not_points(const EvaluateArgs& a) {
 
 // The positions (and derivatives), then each face-varying channel's values, per point.
 void write_csv(const std::filesystem::path& out, const SurfacePoints& queries, const EvaluatedPoints& points,
-               int derivatives, const std::vector<std::string>& fvar_names, const std::vector<EvaluatedPoints>& fvar) {
+               int derivatives, const std::vector<std::string>& fvar_names, const std::vector<EvaluatedPoints>& fvar,
+               Progress& progress) {
   write_file_atomically(out, [&](const std::filesystem::path& tmp) {
     CheckedFileStream f(tmp, out);  // a full disk is an error with the fix, never a short file
     f << "face,u,v,x,y,z";
@@ -80,11 +83,13 @@ void write_csv(const std::filesystem::path& out, const SurfacePoints& queries, c
     f << '\n';
     // NaN (a derivative that does not exist) as "nan", every number in its shortest exact form.
     auto number = [](double x) { return std::isnan(x) ? std::string("nan") : fmt::format("{}", x); };
+    std::vector<const std::vector<double>*> columns{&points.position};
+    if (derivatives > 0) columns.insert(columns.end(), {&points.du, &points.dv});
+    if (derivatives > 1) columns.insert(columns.end(), {&points.duu, &points.duv, &points.dvv});
+    constexpr size_t kRowsPerReport = 1 << 16;
     for (size_t i = 0; i < queries.size(); ++i) {
+      if (i % kRowsPerReport == 0) progress.fraction(double(i) / double(queries.size()));
       f << fmt::format("{},{},{}", queries.faces[i], queries.uv[2 * i], queries.uv[2 * i + 1]);
-      std::vector<const std::vector<double>*> columns{&points.position};
-      if (derivatives > 0) columns.insert(columns.end(), {&points.du, &points.dv});
-      if (derivatives > 1) columns.insert(columns.end(), {&points.duu, &points.duv, &points.dvv});
       for (const auto* d : columns)
         for (size_t c = 0; c < 3; ++c) f << ',' << number((*d)[3 * i + c]);
       for (const EvaluatedPoints& e : fvar)
@@ -95,8 +100,20 @@ void write_csv(const std::filesystem::path& out, const SurfacePoints& queries, c
   });
 }
 
-// The mesh written with the bar `subdiv refine` draws while writing.
+// The points file, each point checked on the surface, with a bar while it is read.
+SurfacePoints read_points(const std::string& file, const LimitSurface& surface, Progress& progress) {
+  progress.say(fmt::format("reading {}", file));
+  SurfacePoints points = read_points_file(
+      file, [&surface](Index face, double u, double v) { return surface.check(face, u, v); },
+      [&progress](double done) { progress.fraction(done); });
+  progress.done();
+  return points;
+}
+
+// The mesh written with the bar `subdiv refine` draws while writing, after its warnings
+// (sample points without a normal, limit_mesh.h).
 void write_with_bar(const std::string& path, const MeshData& mesh, Progress& progress) {
+  for (const std::string& w : mesh.warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
   progress.say(fmt::format("writing {}", path));
   write_mesh(path, mesh, [&progress](double done) { progress.fraction(done); });
   progress.done();
@@ -154,7 +171,7 @@ void run_gregory(const EvaluateArgs& a, Progress& progress) {
   } else {
     const LimitSurface& surface = *prepared.surface;
     const SurfacePoints q =
-        read_points_file(a.at, [&surface](Index face, double u, double v) { return surface.check(face, u, v); });
+        read_points(a.at, surface, progress);
     const ApproximatedPoints points = approximate_points(prepared, patches, q.faces, q.uv);
     print_safe("subdiv: {}\n", approximation_summary(points.distances, ApproximationKind::Gregory));
     write_approximation_csv(a.output, q, points);
@@ -200,14 +217,14 @@ void run_approximation(const EvaluateArgs& a, Progress& progress) {
   } else {
     const LimitSurface& surface = *prepared.surface;
     const SurfacePoints q =
-        read_points_file(a.at, [&surface](Index face, double u, double v) { return surface.check(face, u, v); });
+        read_points(a.at, surface, progress);
     const ApproximatedPoints points = approximate_points(prepared, patches, q.faces, q.uv);
     print_safe("subdiv: {}\n", approximation_summary(points.distances));
     write_nets_then(points.distances, [&] { write_approximation_csv(a.output, q, points); });
   }
 }
 
-void run(const EvaluateArgs& a) {
+void run_mode(const EvaluateArgs& a) {
   const int modes = int(!a.at.empty()) + int(a.samples > 0) + int(a.adaptive >= 0) + int(a.level_distance >= 0);
   if (modes != 1)
     throw Error("give one of --at POINTS.csv (points at given parameters), --samples N (a mesh of the surface), "
@@ -226,6 +243,11 @@ void run(const EvaluateArgs& a) {
   if (a.approximate.empty() && !a.bezier_net.empty()) throw Error("--bezier-net goes with --approximate bezier");
   check_output_not_input(a.mesh, a.output, a.force);
   check_output_not_points(a);
+  // Every file this run writes, before any work: a bad path found after the patches or
+  // samples are made would cost all of it; and a folder is named as one, not as a name
+  // without an extension.
+  for (const std::string& out : {a.output, a.bezier_net})
+    if (!out.empty()) check_writable(out);
   const std::string ext = lowercase_extension(a.output);
   if (!a.at.empty() && ext != ".csv")
     throw Error(fmt::format("-o {}: --at writes .csv (face,u,v,x,y,z[,du_*,dv_*[,duu_*,duv_*,dvv_*]])", subdiv::quoted(a.output)));
@@ -233,10 +255,6 @@ void run(const EvaluateArgs& a) {
     throw Error(fmt::format("-o {}: --samples, --adaptive and --level-distance write a mesh (.vtp, .obj, .ply, .off, .stl)",
                             subdiv::quoted(a.output)));
   if (a.at.empty()) check_mesh_output_format(a.output);
-  // Every file this run writes, before any work: a bad path found after the patches or
-  // samples are made would cost all of it.
-  for (const std::string& out : {a.output, a.bezier_net})
-    if (!out.empty()) check_writable(out);
   const int threads = a.threads > 0 ? a.threads : int(tbb::this_task_arena::max_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
   Progress progress;
@@ -274,7 +292,7 @@ void run(const EvaluateArgs& a) {
   }
   const LimitSurface& surface = *prepared.surface;
   const SurfacePoints queries =
-      read_points_file(a.at, [&surface](Index face, double u, double v) { return surface.check(face, u, v); });
+      read_points(a.at, surface, progress);
   const std::vector<Index>& faces = queries.faces;
   const std::vector<double>& uv = queries.uv;
   std::vector<std::string> fvar_names;
@@ -289,8 +307,29 @@ void run(const EvaluateArgs& a) {
     points = evaluate_limit_points(prepared, faces, uv, a.derivatives);
   }
   progress.say(fmt::format("writing {}", a.output));
-  write_csv(a.output, queries, points, a.derivatives, fvar_names, fvar);
+  write_csv(a.output, queries, points, a.derivatives, fvar_names, fvar, progress);
   progress.done();
+}
+
+// What the run does and the fix when it runs out of memory (util/memory_limit.h), naming
+// the option the user gave: "fewer levels" means nothing to --samples.
+std::pair<std::string, std::string> memory_advice(const EvaluateArgs& a) {
+  if (a.samples > 0)
+    return {fmt::format("sampling {} with {} segments per face edge", subdiv::quoted(a.mesh), a.samples),
+            kFewerSamplesAdvice};
+  if (a.adaptive >= 0)
+    return {fmt::format("refining {} adaptively to level {}", subdiv::quoted(a.mesh), a.adaptive),
+            "ask for a lower --adaptive level or a larger --tolerance"};
+  if (a.level_distance >= 0)
+    return {fmt::format("moving level {} of {} onto the limit", a.level_distance, subdiv::quoted(a.mesh)),
+            "ask for a lower --level-distance"};
+  return {fmt::format("evaluating the points of {} on {}", subdiv::quoted(a.at), subdiv::quoted(a.mesh)),
+          "evaluate fewer points at a time (split the --at file), or ask for fewer --derivatives"};
+}
+
+void run(const EvaluateArgs& a) {
+  const auto [during, fix] = memory_advice(a);
+  advising_when_out_of_memory(during, fix, [&] { run_mode(a); });
 }
 
 }  // namespace
@@ -314,11 +353,14 @@ void add_evaluate_command(CLI::App& app) {
   add_fvar_boundary_option(cmd, args->fvar_boundary,
                            "Face-varying data (OBJ vt: UVs with seams), evaluated at the same points (columns NAME_0, "
                            "NAME_1, ... after the others)");
-  cmd->add_option("--at", args->at, "Points to evaluate: a .csv with the header face,u,v, then one point per row (a u or v too small for a double, as 1e-400, is 0)");
+  cmd->add_option("--at", args->at,
+                  "Points to evaluate: a .csv with the header face,u,v (any case, names and fields may be in double "
+                  "quotes), then one point per row (a u or v too small for a double, as 1e-400, is 0)");
   cmd->add_option("--samples", args->samples,
                   "Instead of --at: the surface as a crack-free mesh, N x N quads per quad, N^2 triangles per "
                   "triangle (faces with other sizes: N/2 x N/2 per sub-face, N even), with normals; face-varying "
-                  "data (UVs) sampled at every corner, split at its seams; rational weights honoured")
+                  "data (UVs) sampled at every corner, split at its seams; rational weights honoured; Normals "
+                  "(0,0,0), with a warning, where the surface has none")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--adaptive", args->adaptive,
                   "Instead of --at: the mesh refined to level L only where it is irregular (extraordinary vertices, "

@@ -50,6 +50,7 @@ LimitMesh run(const MeshData& mesh, const LimitSettings& s, const std::string& s
   out.notes = prepared.warnings;
   out.notes.insert(out.notes.end(), prepared.notes.begin(), prepared.notes.end());
   out.mesh = sampled_limit_mesh(prepared, s.samples);
+  out.notes.insert(out.notes.end(), out.mesh.warnings.begin(), out.mesh.warnings.end());
   return out;
 }
 

@@ -304,3 +304,24 @@ TEST_CASE("evaluate --samples: a point the surface refuses names the mesh file, 
   CHECK_MESSAGE(contains(r.output, "bring it within 512"), r.output);
   CHECK_FALSE(fs::exists(dir / "out.obj"));
 }
+
+TEST_CASE("evaluate --samples on a surface without a normal somewhere warns with the count and the first place") {
+  // A pillow (two quads back to back) folds flat along its edges: du x dv = 0 there. The
+  // Normals were written as (0, 0, 0) without a word.
+  const auto dir = fresh_dir("hostile-evaluate-normals");
+  std::ofstream(dir / "pillow.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf 4 3 2 1\n";
+  for (const char* how : {" --samples 4 -o ", " --approximate gregory --samples 4 -o "}) {
+    CAPTURE(how);
+    const fs::path out = dir / "pillow-limit.vtp";
+    const CliResult r = run_bounded("evaluate " + (dir / "pillow.obj").string() + how + out.string());
+    CHECK_MESSAGE(r.exit_code == 0, r.output);
+    CHECK_MESSAGE(contains(r.output, "subdiv: warning: the limit surface has no normal at "), r.output);
+    CHECK_MESSAGE(contains(r.output, "points (the first at face "), r.output);
+    // The file reads back, zero normals and all.
+    const CliResult back = run_bounded("refine " + out.string() + " -l 0 -o " + (dir / "back.obj").string());
+    CHECK_MESSAGE(back.exit_code == 0, back.output);
+  }
+  const CliResult cube = run_bounded("evaluate " + kCube + " --samples 4 -o " + (dir / "cube.vtp").string());
+  CHECK(cube.exit_code == 0);
+  CHECK_FALSE(contains(cube.output, "warning"));
+}

@@ -175,6 +175,50 @@ TEST_CASE("a sampled limit surface that would not fit is refused before any samp
 #endif
 }
 
+TEST_CASE("--samples counts what sampling really holds: 420 on the cube under 440 MB is refused before any sample") {
+#if SUBDIV_TEST_ASAN
+  MESSAGE("skipped: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");
+#else
+  // 1.06 million points need about 380 B each at the peak (the least ulimit -v that lets it
+  // finish); 0.24 kB were counted, so the check passed and the run ran out of memory half-way,
+  // told to "ask for fewer levels", which --samples has none of.
+  const auto out = fresh_dir("hostile-samples-honest-memory") / "big.vtp";
+  const CliResult r = run_subdiv_with_prefix("ulimit -v 440000; ", "evaluate " + kCube + " --samples 420 -o " + out.string());
+  INFO(r.output);
+  CHECK(r.exit_code == 1);
+  CHECK(contains(r.output, "--samples 420: 1.06e+06 sample points would need about"));
+  CHECK(contains(r.output, "ask for fewer samples per edge"));
+  CHECK_FALSE(contains(r.output, "levels"));
+  CHECK_FALSE(fs::exists(out));
+#endif
+}
+
+TEST_CASE("running out of memory part-way through --at names the fix for points, not levels") {
+#if SUBDIV_TEST_ASAN
+  MESSAGE("skipped: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");
+#else
+  // Nothing is checked before points are evaluated: 2 million points with second derivatives
+  // (0.29 GB of results) under a 200 MB limit run out of memory, which said "ask for fewer
+  // levels or a smaller input".
+  const auto dir = fresh_dir("hostile-at-memory");
+  {
+    std::ofstream points(dir / "points.csv");
+    points << "face,u,v\n";
+    for (int i = 0; i < 2000000; ++i) points << i % 6 << ",0.25,0.5\n";
+  }
+  const CliResult r = run_subdiv_with_prefix(
+      "ulimit -v 200000; ", "evaluate " + kCube + " --at " + (dir / "points.csv").string() + " --derivatives 2 -o " +
+                                (dir / "out.csv").string());
+  INFO(r.output);
+  CHECK(r.exit_code == 1);
+  CHECK(contains(r.output, "subdiv: error: out of memory while evaluating the points of"));
+  CHECK(contains(r.output, "evaluate fewer points at a time (split the --at file), or ask for fewer --derivatives, or "
+                           "raise the limit"));
+  CHECK_FALSE(contains(r.output, "levels"));
+  CHECK_FALSE(fs::exists(dir / "out.csv"));
+#endif
+}
+
 TEST_CASE("a memory refusal prints its two sizes so that they differ, however close") {
 #if SUBDIV_TEST_ASAN
   MESSAGE("skipped: AddressSanitizer reserves terabytes of address space, so ulimit -v cannot apply");

@@ -44,3 +44,24 @@ TEST_CASE("uniform level L: its counts, and the distance falling by 4 per level"
   CHECK(three.mean / four.mean > 3.8);
   CHECK(three.mean / four.mean < 4.2);
 }
+
+TEST_CASE("Normals at the extraordinary vertices are the limit normal from the faces, not (0, 0, 0)") {
+  // The cube's corners keep valence 3 at every level; by its symmetry the limit normal there
+  // is (±1, ±1, ±1) / sqrt(3), pointing out. Every other vertex has a unit normal too.
+  const LevelDistance d = cube(1);
+  const DataArray* normals = nullptr;
+  for (const DataArray& a : d.mesh.point_data)
+    if (a.name == "Normals") normals = &a;
+  REQUIRE(normals);
+  int corners = 0;
+  for (size_t v = 0; v < size_t(d.vertices); ++v) {
+    const double* n = &normals->values[3 * v];
+    const double* p = &d.mesh.positions[3 * v];
+    CHECK(std::hypot(n[0], n[1], n[2]) == doctest::Approx(1.0).epsilon(1e-9));
+    if (std::abs(std::abs(p[0]) - std::abs(p[1])) > 1e-12 || std::abs(std::abs(p[1]) - std::abs(p[2])) > 1e-12) continue;
+    ++corners;
+    for (int c = 0; c < 3; ++c) CHECK(n[c] == doctest::Approx(std::copysign(1 / std::sqrt(3.0), p[c])).epsilon(1e-6));
+  }
+  CHECK(corners == 8);
+  CHECK(d.mesh.warnings.empty());
+}

@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fmt/format.h>
 #include <map>
 #include <set>
 #include <vector>
@@ -150,6 +151,49 @@ TEST_CASE("texture coordinates are sampled at every corner and split exactly at 
   }
   CHECK(seam_values_left.size() == size_t(2 * N + 1));
   CHECK(seam_values_right.size() == size_t(2 * N + 1));
+}
+
+// Points of `m` whose Normals are exactly (0, 0, 0); every other one must be a unit vector.
+size_t zero_normals(const MeshData& m) {
+  const DataArray& n = m.point_data[0];
+  REQUIRE(n.name == "Normals");
+  size_t zero = 0;
+  for (size_t i = 0; i < n.values.size(); i += 3) {
+    const double length = std::hypot(n.values[i], n.values[i + 1], n.values[i + 2]);
+    if (length == 0) ++zero;
+    else CHECK(length == doctest::Approx(1.0).epsilon(1e-12));
+  }
+  return zero;
+}
+
+TEST_CASE("where the surface has no normal, Normals are (0, 0, 0) and the mesh's warnings say how many and where") {
+  // A surface without a normal there: du x dv = 0. All control points equal make every
+  // derivative 0, so every sample is such a point; the cube has a normal everywhere.
+  const MeshData fine = sampled_limit_mesh(prepared(test::mesh_data(test::cube())), 2);
+  CHECK(zero_normals(fine) == 0);
+  CHECK(fine.warnings.empty());
+  MeshData collapsed = test::mesh_data(test::cube());
+  for (size_t i = 0; i < collapsed.positions.size(); ++i) collapsed.positions[i] = double(i % 3 + 1);
+  const MeshData m = sampled_limit_mesh(prepared(collapsed), 2);
+  CHECK(zero_normals(m) == size_t(m.vertex_count()));
+  REQUIRE(m.warnings.size() == 1);
+  CHECK(m.warnings[0] == fmt::format("the limit surface has no normal at {} of {} points (the first at face 0, (u, v) "
+                                     "= (0, 0)): its tangents are parallel or zero there (coincident control points, "
+                                     "a surface folded flat) or the scheme gives no derivatives; their Normals are "
+                                     "(0, 0, 0)",
+                                     m.vertex_count(), m.vertex_count()));
+  // A pillow: two quads on the same four points, back to back. Its limit is flat and folds
+  // back along the four edges, where du x dv vanishes; inside the faces it has a normal.
+  test::Mesh pillow;
+  for (int i = 0; i < 4; ++i) pillow.add_vertex(i == 1 || i == 2, i >= 2, 0);
+  pillow.add_face({0, 1, 2, 3});
+  pillow.add_face({3, 2, 1, 0});
+  const MeshData folded = sampled_limit_mesh(prepared(test::mesh_data(pillow)), 4);
+  const size_t zero = zero_normals(folded);
+  CHECK(zero > 0);
+  CHECK(zero < size_t(folded.vertex_count()));
+  REQUIRE(folded.warnings.size() == 1);
+  CHECK(folded.warnings[0].find(fmt::format("no normal at {} of {} points", zero, folded.vertex_count())) != std::string::npos);
 }
 
 TEST_CASE("adaptive meshes carry float point arrays but not normals, as refinement does") {

@@ -62,6 +62,31 @@ TEST_CASE("a spreadsheet's header: a byte-order mark and spaces around the names
                        doctest::Contains("must be 'face,u,v'"), Error);
 }
 
+TEST_CASE("quoted fields (R's write.csv, spreadsheets) and a header in another case are read as written plain") {
+  // R writes "face","u","v"; a hand-made header says Face,U,V. Both were refused as "the
+  // header is ...", and quoted numbers as "not a number".
+  for (const char* text : {"\"face\",\"u\",\"v\"\n1,0.5,0.25\n", "Face,U,V\r\n1,0.5,0.25\r\n",
+                           "FACE, \"u\" ,V\n\"1\",\"0.5\", \"0.25\"\n"}) {
+    CAPTURE(text);
+    const SurfacePoints p = parse_points(text, "pts.csv", unit_square_check);
+    REQUIRE(p.size() == 1);
+    CHECK(p.faces[0] == 1);
+    CHECK(p.uv == std::vector<double>{0.5, 0.25});
+  }
+  // What quotes may not hide: a quote left open, or R's row-name column in front.
+  CHECK_THROWS_WITH_AS(parse_points("face,u,v\n\"1,0.5,0.25\n", "pts.csv", unit_square_check),
+                       doctest::Contains("line 2 (row 1): face '\"1' is not a whole number"), Error);
+  CHECK_THROWS_WITH_AS(parse_points("\"\",\"face\",\"u\",\"v\"\n\"1\",1,0.5,0.25\n", "pts.csv", unit_square_check),
+                       doctest::Contains("must be 'face,u,v'"), Error);
+}
+
+TEST_CASE("a header separated by semicolons (a spreadsheet with decimal commas) is named as such") {
+  CHECK_THROWS_WITH_AS(parse_points("face;u;v\n0;0,5;0,5\n", "pts.csv", unit_square_check),
+                       doctest::Contains("the fields are separated by ';': save the file with ',' between fields and "
+                                         "'.' as the decimal point"),
+                       Error);
+}
+
 TEST_CASE("a leading '+' is a sign, and a file of CR line endings is named as such") {
   const SurfacePoints p = parse_points("face,u,v\n+3,+0.25,0.5\n", "pts.csv", unit_square_check);
   CHECK(p.faces == std::vector<Index>{3});

@@ -45,4 +45,11 @@ TEST_CASE("byte_sizes_compared: whenever need > have, the two texts differ and k
     }
   std::tie(need, have) = byte_sizes_compared(2 * GiB, 2 * GiB);
   CHECK(need == have);
+  // tessellate(10**9) in Python: "would need about 1.28e+06 PiB, but only 0.0 PiB" with 20 GiB free.
+  std::tie(need, have) = byte_sizes_compared(1.28e6 * 1024 * 1024 * GiB, 20 * GiB);
+  CHECK(need == "1.28e+06 PiB");
+  CHECK(have == "20.0 GiB");
+  std::tie(need, have) = byte_sizes_compared(3 * GiB, 100 * 1024.0);
+  CHECK(need == "3.0 GiB");
+  CHECK(have == "100.0 KiB");
 }

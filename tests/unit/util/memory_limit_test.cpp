@@ -91,4 +91,29 @@ TEST_CASE("the out-of-memory message says what ran out and the fix") {
   const std::string m = out_of_memory_message("refining level 7");
   CHECK(m.find("out of memory while refining level 7") == 0);
   CHECK(m.find("ask for fewer levels") != std::string::npos);
+  const std::string s = out_of_memory_message("sampling", "ask for fewer {samples}");
+  CHECK(s.find("; ask for fewer {samples}, or raise the limit") != std::string::npos);
+  CHECK(s.find("levels") == std::string::npos);
+}
+
+TEST_CASE("an allocation failure is told with the fix for what the outermost caller asked") {
+  // --samples ran out of memory and was told to ask for fewer levels, which it has none of.
+  const auto fail = []() -> int { throw std::bad_alloc(); };
+  try {
+    advising_when_out_of_memory("sampling", "ask for fewer {samples}", fail);
+    FAIL("no exception");
+  } catch (const OutOfMemoryError& e) {
+    CHECK(std::string(e.what()).find("out of memory while sampling") == 0);
+    CHECK(e.spelled({{"samples", "--samples"}}).find("ask for fewer --samples, or raise the limit") != std::string::npos);
+  }
+  // Points evaluated for a sampled mesh: the sampling's words, not the points'.
+  try {
+    advising_when_out_of_memory("sampling", "ask for fewer {samples}",
+                                [&] { return advising_when_out_of_memory("evaluating 5 points", "evaluate fewer", fail); });
+    FAIL("no exception");
+  } catch (const OutOfMemoryError& e) {
+    CHECK(std::string(e.what()).find("out of memory while sampling") == 0);
+    CHECK(std::string(e.what()).find("evaluate fewer") == std::string::npos);
+  }
+  CHECK(advising_when_out_of_memory("x", "y", [] { return 7; }) == 7);
 }
