@@ -26,7 +26,9 @@ std::array<double, 3> basis(double s) { return {0.5 * (0.5 - s) * (0.5 - s), 0.7
 std::array<double, 3> basis_d(double s) { return {s - 0.5, -2 * s, s + 0.5}; }
 constexpr std::array<double, 3> kBasisDd{1, -2, 1};
 
-Level torus_grid(int n) {
+}  // namespace
+
+Level quad_torus(int n) {
   std::vector<Index> offsets{0}, corners;
   auto id = [n](int i, int j) { return Index(((i + n) % n) * n + (j + n) % n); };
   for (int i = 0; i < n; ++i)
@@ -36,8 +38,6 @@ Level torus_grid(int n) {
     }
   return build_level(Index(n * n), offsets, corners);
 }
-
-}  // namespace
 
 std::optional<std::array<Index, 9>> biquadratic_grid(const Level& level, Index face, int corner) {
   const auto g = level.face(face);
@@ -65,10 +65,10 @@ std::optional<std::array<Index, 9>> biquadratic_grid(const Level& level, Index f
   return P;
 }
 
-BiquadraticRows biquadratic_rows(double a, double b) {
+QuadrantRows biquadratic_rows(double a, double b) {
   const double s = 0.5 * a, t = 0.5 * b;
   const auto Bs = basis(s), Bt = basis(t), Ds = basis_d(s), Dt = basis_d(t);
-  BiquadraticRows r;
+  QuadrantRows r;
   for (int q = 0; q < 3; ++q)
     for (int p = 0; p < 3; ++p) {
       const size_t k = size_t(q * 3 + p);
@@ -84,7 +84,7 @@ BiquadraticRows biquadratic_rows(double a, double b) {
 }
 
 bool refines_as_biquadratic(const Scheme& scheme, const FeatureOptions& features) {
-  const Level grid = torus_grid(8);
+  const Level grid = quad_torus(8);
   RefineOptions ro;
   ro.levels = 1;
   ro.features = features;

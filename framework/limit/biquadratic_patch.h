@@ -26,16 +26,21 @@ struct Scheme;
 // valence 4 surrounded by quads.
 std::optional<std::array<Index, 9>> biquadratic_grid(const Level& level, Index face, int corner);
 
-// Weights over the 9 grid points of the position and its derivatives in (a, b).
-struct BiquadraticRows {
+// Weights over the 9 grid points of the position and its derivatives in (a, b) (also the
+// four-direction box spline's, four_direction_patch.h).
+struct QuadrantRows {
   std::array<double, 9> position{}, da{}, db{}, daa{}, dab{}, dbb{};
 };
-BiquadraticRows biquadratic_rows(double a, double b);
+QuadrantRows biquadratic_rows(double a, double b);
 
 // True when one step of the scheme maps every corner of a regular closed quad grid (a
 // torus) to 9/16, 3/16, 3/16, 1/16 of its face's corners — the tensor product of Chaikin's
 // 3/4, 1/4 (Lane & Riesenfeld 1980), i.e. the biquadratic B-spline's refinement — decided
 // from the engine's rows, not the scheme's name.
 bool refines_as_biquadratic(const Scheme& scheme, const FeatureOptions& features);
+
+// A closed n x n quad grid (a torus: every vertex of valence 4, every face a quad, each
+// counter-clockwise in the grid's (i, j)): the regular grid a scheme's rows are checked on.
+Level quad_torus(int n);
 
 }  // namespace subdiv
