@@ -355,3 +355,26 @@ TEST_CASE("mid-edge: no second derivatives exactly on the knot lines and at extr
     }
   }
 }
+
+TEST_CASE("mid-edge: the closed form is chosen from the double step's rows, not the scheme's name") {
+  // The same rule under another name and spelling takes the closed form; a mid-edge split
+  // followed by a smoothing pass (its double step is not the box spline's refinement) keeps the
+  // descent to face centres: positions and first derivatives, no second ones.
+  const auto renamed = load_scheme_text(R"json({"name": "middles", "split": "mid-edge", "faces": "any",
+    "rules": {"edge": [{"sum": "end-ring-0", "w": "j == 0 ? 1/2 : 0"}, {"sum": "end-ring-1", "w": "j == 0 ? 1/2 : 0"}]}})json",
+                                        "middles.json");
+  const auto smoothed = load_scheme_text(R"json({"name": "mid-edge-smoothed", "faces": "any", "steps": [
+    {"split": "mid-edge", "rules": {"edge": [{"sum": "ends", "w": "1/2"}]}},
+    {"smooth": {"vertex": [{"at": "self", "w": "1/2"}, {"sum": "ring", "w": "1/(2*n)"}]}}]})json",
+                                         "smoothed.json");
+  const test::Mesh m = bumped(test::cube());
+  const Level L = m.level();
+  SchemeLimits a(*renamed), b(*smoothed);
+  CHECK(MidEdgeLimit(*renamed, L, {}, a).closed_form());
+  CHECK(!MidEdgeLimit(*smoothed, L, {}, b).closed_form());
+  const LimitSurface s(smoothed, L);
+  const LimitSample p = s.evaluate(0, 0.3, 0.15, m.positions, 3, 2);
+  CHECK(p.has_derivatives);
+  CHECK(!p.has_second_derivatives);
+  CHECK(p.steps > 40);
+}
