@@ -11,9 +11,11 @@
 // [0, 1/2], P(a, b) = sum_{p,q in -1..1} B_p(s) B_q(t) P_pq, where B_-1(s) = (1/2 - s)^2 / 2,
 // B_0(s) = 3/4 - s^2, B_1(s) = (1/2 + s)^2 / 2.
 #include <array>
+#include <functional>
 #include <optional>
 #include <vector>
 
+#include "framework/engine/refiner.h"
 #include "framework/features/feature_options.h"
 #include "framework/topology/level.h"
 
@@ -39,8 +41,12 @@ QuadrantRows biquadratic_rows(double a, double b);
 // from the engine's rows, not the scheme's name.
 bool refines_as_biquadratic(const Scheme& scheme, const FeatureOptions& features);
 
-// A closed n x n quad grid (a torus: every vertex of valence 4, every face a quad, each
-// counter-clockwise in the grid's (i, j)): the regular grid a scheme's rows are checked on.
-Level quad_torus(int n);
+// True when `levels` steps of the scheme (linear) map every vertex they make from a closed
+// 8 x 8 quad grid (a torus: every vertex of valence 4) — each the corner (g, j) of the grid it
+// stands for, as `corners` writes the steps' origins — to weights[k] of g's corner j + k
+// (k = 0..3) and nothing else, to 1e-13: a scheme's regular rows checked on the engine's rows.
+bool refines_quad_corners_as(const Scheme& scheme, const FeatureOptions& features, int levels,
+                             const std::function<ChildOrigins(const Hierarchy&)>& corners,
+                             const std::array<double, 4>& weights);
 
 }  // namespace subdiv

@@ -1,13 +1,6 @@
 #include "framework/limit/four_direction_patch.h"
 
-#include <cmath>
-#include <utility>
-
-#include "framework/engine/refiner.h"
 #include "framework/limit/mid_edge_limit.h"
-#include "framework/scheme/scheme.h"
-#include "framework/stencil/stencil_table.h"
-#include "framework/util/error.h"
 
 namespace subdiv {
 namespace {
@@ -29,19 +22,6 @@ constexpr Piece kPieces[] = {
 };
 
 size_t grid_index(int p, int q) { return size_t((q + 1) * 3 + (p + 1)); }
-
-// One composed row of the two steps as (vertex, weight) sums, compared with the expected
-// weights to 1e-13.
-bool row_is(const StencilTable& table, size_t row, Index vertices,
-            const std::array<std::pair<Index, double>, 3>& expected) {
-  std::vector<double> w(size_t(vertices), 0.0);
-  for (Index e = table.offsets[row]; e < table.offsets[row + 1]; ++e)
-    w[size_t(table.indices[size_t(e)])] += table.weights[size_t(e)];
-  for (const auto& [v, x] : expected) w[size_t(v)] -= x;
-  for (double x : w)
-    if (std::fabs(x) > 1e-13) return false;
-  return true;
-}
 
 }  // namespace
 
@@ -70,29 +50,12 @@ QuadrantRows four_direction_rows(double a, double b) {
 bool on_four_direction_knot_line(double a, double b) { return a == b || a == 1 || b == 1; }
 
 bool refines_as_four_direction(const Scheme& scheme, const FeatureOptions& features) {
-  const Level grid = quad_torus(8);
-  RefineOptions ro;
-  ro.levels = 2;
-  ro.features = features;
-  Hierarchy h;
-  try {
-    h = refine(scheme, grid, ro);
-  } catch (const Error&) {
-    return false;
-  }
-  if (!h.linear() || h.stencils.size() != 2) return false;
-  const ChildOrigins o = mid_edge_double_origins(h.levels[0], h.levels[1], h.origins[0], h.levels[2], h.origins[1]);
-  const StencilTable table = compose(h.stencils[0], h.stencils[1]);
-  if (o.kind.size() != size_t(grid.corner_count())) return false;
-  for (size_t c = 0; c < o.kind.size(); ++c) {
-    if (o.kind[c] != OriginKind::Corner) return false;
-    const auto f = grid.face(o.parent[c]);
-    const int j = int(o.local[c]);
-    if (!row_is(table, c, grid.vertex_count,
-                {{{f[size_t(j)], 0.5}, {f[size_t((j + 1) % 4)], 0.25}, {f[size_t((j + 3) % 4)], 0.25}}}))
-      return false;
-  }
-  return true;
+  return refines_quad_corners_as(
+      scheme, features, 2,
+      [](const Hierarchy& h) {
+        return mid_edge_double_origins(h.levels[0], h.levels[1], h.origins[0], h.levels[2], h.origins[1]);
+      },
+      {0.5, 0.25, 0, 0.25});
 }
 
 }  // namespace subdiv

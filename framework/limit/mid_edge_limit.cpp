@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <optional>
 #include <span>
-#include <cmath>
 #include <fmt/format.h>
 
 #include "framework/analysis/surface/limit_evaluation.h"
@@ -220,7 +220,7 @@ LimitSample MidEdgeLimit::evaluate(const FacePoint& p0, const std::vector<double
         const std::optional<Uv> ab = in_quadrant(point.st, j, to_ab);
         const std::array<Index, 9>* grid = ab ? nodes_->quadrant_grid(id, j) : nullptr;
         if (!grid) continue;
-        // d(s, t)/d(u, v) is 2^k times a number of order one after k double steps (as below).
+        // d(a, b)/d(u, v) scaled by 2^-k after k double steps, as the tangents' below.
         Jacobian J = product(to_ab, point.jacobian);
         for (auto& r : J)
           for (double& x : r) x = std::ldexp(x, -step);
