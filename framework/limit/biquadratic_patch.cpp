@@ -4,6 +4,7 @@
 
 #include "framework/engine/refiner.h"
 #include "framework/scheme/scheme.h"
+#include "framework/stencil/stencil_table.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -26,7 +27,7 @@ std::array<double, 3> basis(double s) { return {0.5 * (0.5 - s) * (0.5 - s), 0.7
 std::array<double, 3> basis_d(double s) { return {s - 0.5, -2 * s, s + 0.5}; }
 constexpr std::array<double, 3> kBasisDd{1, -2, 1};
 
-Level torus_grid(int n) {
+Level quad_torus(int n) {
   std::vector<Index> offsets{0}, corners;
   auto id = [n](int i, int j) { return Index(((i + n) % n) * n + (j + n) % n); };
   for (int i = 0; i < n; ++i)
@@ -65,10 +66,10 @@ std::optional<std::array<Index, 9>> biquadratic_grid(const Level& level, Index f
   return P;
 }
 
-BiquadraticRows biquadratic_rows(double a, double b) {
+QuadrantRows biquadratic_rows(double a, double b) {
   const double s = 0.5 * a, t = 0.5 * b;
   const auto Bs = basis(s), Bt = basis(t), Ds = basis_d(s), Dt = basis_d(t);
-  BiquadraticRows r;
+  QuadrantRows r;
   for (int q = 0; q < 3; ++q)
     for (int p = 0; p < 3; ++p) {
       const size_t k = size_t(q * 3 + p);
@@ -83,10 +84,12 @@ BiquadraticRows biquadratic_rows(double a, double b) {
   return r;
 }
 
-bool refines_as_biquadratic(const Scheme& scheme, const FeatureOptions& features) {
-  const Level grid = torus_grid(8);
+bool refines_quad_corners_as(const Scheme& scheme, const FeatureOptions& features, int levels,
+                             const std::function<ChildOrigins(const Hierarchy&)>& corners,
+                             const std::array<double, 4>& weights) {
+  const Level grid = quad_torus(8);
   RefineOptions ro;
-  ro.levels = 1;
+  ro.levels = levels;
   ro.features = features;
   Hierarchy h;
   try {
@@ -94,26 +97,28 @@ bool refines_as_biquadratic(const Scheme& scheme, const FeatureOptions& features
   } catch (const Error&) {
     return false;
   }
-  if (!h.linear() || h.stencils.empty()) return false;
-  const ChildOrigins& o = h.origins[0];
-  const StencilTable& table = h.stencils[0];
+  if (!h.linear() || h.stencils.size() != size_t(levels)) return false;
+  const ChildOrigins o = corners(h);
+  StencilTable table = h.stencils[0];
+  for (size_t k = 1; k < h.stencils.size(); ++k) table = compose(table, h.stencils[k]);
   if (Index(o.kind.size()) != grid.corner_count()) return false;
   for (size_t c = 0; c < o.kind.size(); ++c) {
     if (o.kind[c] != OriginKind::Corner) return false;
     const auto f = grid.face(o.parent[c]);
     const int i = int(o.local[c]);
-    const std::array<std::pair<Index, double>, 4> expected{{{f[size_t(i)], 9.0 / 16},
-                                                            {f[size_t((i + 1) % 4)], 3.0 / 16},
-                                                            {f[size_t((i + 3) % 4)], 3.0 / 16},
-                                                            {f[size_t((i + 2) % 4)], 1.0 / 16}}};
     std::vector<double> row(size_t(grid.vertex_count), 0.0);
     for (Index e = table.offsets[c]; e < table.offsets[c + 1]; ++e)
       row[size_t(table.indices[size_t(e)])] += table.weights[size_t(e)];
-    for (const auto& [v, w] : expected) row[size_t(v)] -= w;
+    for (size_t k = 0; k < 4; ++k) row[size_t(f[(size_t(i) + k) % 4])] -= weights[k];
     for (double x : row)
       if (std::fabs(x) > 1e-13) return false;
   }
   return true;
+}
+
+bool refines_as_biquadratic(const Scheme& scheme, const FeatureOptions& features) {
+  return refines_quad_corners_as(scheme, features, 1, [](const Hierarchy& h) { return h.origins[0]; },
+                                 {9.0 / 16, 3.0 / 16, 1.0 / 16, 3.0 / 16});
 }
 
 }  // namespace subdiv

@@ -376,7 +376,7 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
     if (biquadratic_) {
       if (const auto grid = smooth_biquadratic_grid(cut.level, q.face, q.corner)) {
         const Uv ab = as_uv(q.ab);
-        const BiquadraticRows b = biquadratic_rows(ab[0], ab[1]);
+        const QuadrantRows b = biquadratic_rows(ab[0], ab[1]);
         const size_t n = size_t(cut.level.vertex_count);
         auto spread = [&](const std::array<double, 9>& w) {
           std::vector<double> row(n, 0.0);

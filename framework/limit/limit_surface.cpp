@@ -1687,6 +1687,7 @@ LimitStencil LimitSurface::stencil(Index face, double u, double v, int derivativ
     MidEdgeLimit::Rows r;
     LimitSample out = impl_->mid_edge->evaluate(p, unit, int(n), derivatives, &r);
     rows.du = std::move(r.du), rows.dv = std::move(r.dv);
+    rows.duu = std::move(r.duu), rows.duv = std::move(r.duv), rows.dvv = std::move(r.dvv);
     return out;
   }) : impl_->sqrt3 ? tbb::this_task_arena::isolate([&] {
     original = impl_->sqrt3->reads(p);

@@ -27,7 +27,8 @@
 // parameterisation read as nested quadrants), with regular boundaries, infinitely sharp creases
 // and corners (dual_crease_chart.h says which); the √3 split on closed untagged meshes
 // (sqrt3_limit.h: two steps are a triadic split of each base triangle); the mid-edge split
-// there (mid_edge_limit.h: two steps are a dual step of the halved grid); and plugins' splits
+// there (mid_edge_limit.h: two steps are a dual step of the halved grid; on a regular grid
+// the four-direction box spline's, evaluated in closed form); and plugins' splits
 // that scale each face into m x m affine copies (plugin_split_limit.h). Refused with the
 // reason: non-linear rules (no limit stencil exists), level-dependent weights (no fixed local
 // subdivision matrix).
@@ -69,7 +70,9 @@ struct LimitSurfaceOptions {
 // patch of degree <= 4 per direction, a quartic triangle patch) — every point of a
 // Catmull-Clark or Loop surface but an extraordinary vertex itself, a dart or a point on a
 // semi-sharp crease before its sharpness decays; at such vertices the curvature is unbounded
-// or depends on the direction (docs/limit.md), and has_second_derivatives is false.
+// or depends on the direction (docs/limit.md), and has_second_derivatives is false. A
+// mid-edge surface has them inside the pieces of its four-direction box spline and none on
+// that spline's knot lines, where it is only C1 (mid_edge_limit.h).
 struct LimitSample {
   std::vector<double> position, du, dv;
   std::vector<double> duu, duv, dvv;

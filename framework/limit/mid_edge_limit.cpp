@@ -1,13 +1,17 @@
 #include "framework/limit/mid_edge_limit.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
+#include <span>
 #include <fmt/format.h>
 
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/ghost_rings.h"
 #include "framework/limit/dual_limit.h"
+#include "framework/limit/four_direction_patch.h"
 #include "framework/limit/mid_edge_nodes.h"
 #include "framework/limit/point_cut.h"
 #include "framework/limit/step_matrix.h"
@@ -36,6 +40,77 @@ bool at_centre(const FacePoint& p) {
 FacePoint nearest_corner(FacePoint p) {
   for (double& x : p.st) x = p.sub_face < 0 ? std::round(2 * x) / 2 : std::round(x);
   return p;
+}
+
+// The point of a quad (its own (s, t) in [0, 1]^2) in the quadrant at corner j, if that
+// quadrant holds it: (s, t) = c_j + (a/2) e + (b/2) f, e towards corner j + 1, f towards j - 1
+// (dual_limit.h), so (a, b) = 2 [e; f] ((s, t) - c_j), exactly for a dyadic point.
+std::optional<Uv> in_quadrant(const Uv& st, int j, Jacobian& to_ab) {
+  constexpr Uv kCorner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const Uv& c = kCorner[j];
+  const Uv e{kCorner[(j + 1) % 4][0] - c[0], kCorner[(j + 1) % 4][1] - c[1]};
+  const Uv f{kCorner[(j + 3) % 4][0] - c[0], kCorner[(j + 3) % 4][1] - c[1]};
+  const Uv d{st[0] - c[0], st[1] - c[1]};
+  const Uv ab{2 * (e[0] * d[0] + e[1] * d[1]), 2 * (f[0] * d[0] + f[1] * d[1])};
+  if (!(ab[0] >= 0 && ab[0] <= 1 && ab[1] >= 0 && ab[1] <= 1)) return std::nullopt;
+  to_ab = {{{2 * e[0], 2 * e[1]}, {2 * f[0], 2 * f[1]}}};
+  return ab;
+}
+
+Jacobian product(const Jacobian& A, const Jacobian& B) {
+  Jacobian C{};
+  for (size_t r = 0; r < 2; ++r)
+    for (size_t c = 0; c < 2; ++c) C[r][c] = A[r][0] * B[0][c] + A[r][1] * B[1][c];
+  return C;
+}
+
+// The sample from the four-direction box spline's closed form over the quadrant (a, b) of the
+// 3 x 3 labels `grid` (four_direction_patch.h), the rows over the node's `n` labels applied to
+// `values`, the derivative rows (through J = d(a, b)/d(u, v), scaled by 2^-k after k double
+// steps) pulled back through `path` to the first node and applied to `first_values`. The
+// second derivatives: J's chain rule has no second-order term (every step is affine), and
+// there are none on a knot line.
+struct Descent {
+  std::span<const StepMatrix* const> path;
+  const std::vector<double>& values;
+  const std::vector<double>& first_values;
+  int channels = 3, derivatives = 1;
+};
+LimitSample four_direction_sample(const std::array<Index, 9>& grid, size_t n, const Uv& ab, const Jacobian& J,
+                                  const Descent& d, MidEdgeLimit::Rows* rows_out) {
+  const QuadrantRows b = four_direction_rows(ab[0], ab[1]);
+  auto spread = [&](const std::array<double, 9>& w) {
+    std::vector<double> row(n, 0.0);
+    for (size_t k = 0; k < 9; ++k) row[size_t(grid[k])] += w[k];
+    return row;
+  };
+  LimitSample out;
+  out.position = applied(spread(b.position), d.values, d.channels);
+  if (d.derivatives >= 1) {
+    FirstDerivativeRows r = first_derivative_rows(spread(b.da), spread(b.db), J, d.path);
+    out.du = applied(r.du, d.first_values, d.channels);
+    out.dv = applied(r.dv, d.first_values, d.channels);
+    out.has_derivatives = true;
+    if (rows_out) rows_out->du = std::move(r.du), rows_out->dv = std::move(r.dv);
+  }
+  if (d.derivatives >= 2 && !on_four_direction_knot_line(ab[0], ab[1])) {
+    const auto daa = spread(b.daa), dab = spread(b.dab), dbb = spread(b.dbb);
+    auto row = [&](size_t x, size_t y) {
+      std::vector<double> r(n);
+      for (size_t i = 0; i < n; ++i)
+        r[i] = J[0][x] * J[0][y] * daa[i] + (J[0][x] * J[1][y] + J[1][x] * J[0][y]) * dab[i] + J[1][x] * J[1][y] * dbb[i];
+      return r;
+    };
+    std::vector<double> uu = row(0, 0), uv = row(0, 1), vv = row(1, 1);
+    std::vector<double>* rows[] = {&uu, &uv, &vv};
+    pull_back_rows(rows, d.path, 2);
+    out.duu = applied(uu, d.first_values, d.channels);
+    out.duv = applied(uv, d.first_values, d.channels);
+    out.dvv = applied(vv, d.first_values, d.channels);
+    out.has_second_derivatives = true;
+    if (rows_out) rows_out->duu = std::move(uu), rows_out->duv = std::move(uv), rows_out->dvv = std::move(vv);
+  }
+  return out;
 }
 
 }  // namespace
@@ -93,8 +168,9 @@ std::string mid_edge_limit_unsupported(const Level& base) {
 }
 
 MidEdgeLimit::MidEdgeLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options,
-                           SchemeLimits& limits)
+                           SchemeLimits& limits, bool closed_form)
     : base_(base), options_(options) {
+  four_direction_ = closed_form && refines_as_four_direction(scheme, options.features);
   // Two steps lose `loss` rings of the cut; the next cut, `radius` rings of faces half the
   // size, must lie in what is left: radius / 2 + 1 <= radius - loss.
   const SchemeRun run{&scheme, 2};
@@ -138,6 +214,21 @@ LimitSample MidEdgeLimit::evaluate(const FacePoint& p0, const std::vector<double
     const MidEdgeNode& node = nodes_->expanded(id);
     point.face = node.face;
     if (step == options_.max_steps) point = nearest_corner(point);
+    if (four_direction_ && point.sub_face < 0 && node.level.face_size(node.face) == 4)
+      for (int j = 0; j < 4; ++j) {
+        Jacobian to_ab;
+        const std::optional<Uv> ab = in_quadrant(point.st, j, to_ab);
+        const std::array<Index, 9>* grid = ab ? nodes_->quadrant_grid(id, j) : nullptr;
+        if (!grid) continue;
+        // d(a, b)/d(u, v) scaled by 2^-k after k double steps, as the tangents' below.
+        Jacobian J = product(to_ab, point.jacobian);
+        for (auto& r : J)
+          for (double& x : r) x = std::ldexp(x, -step);
+        LimitSample out = four_direction_sample(*grid, size_t(node.level.vertex_count), *ab, J,
+                                                Descent{path, values, first_values, channels, derivatives}, rows_out);
+        out.steps = step;
+        return out;
+      }
     if (at_centre(point)) {
       std::string error;
       const MidEdgeNode* c = nodes_->centre(id, error);

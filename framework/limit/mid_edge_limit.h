@@ -15,7 +15,13 @@
 //
 // Evaluation follows the point's quadrant two steps at a time, through cuts around its face
 // refined with the scheme's own rules (the engine; each configuration once, mid_edge_nodes.h),
-// until the point is a face's centre, where the
+// until either
+// - the point's quadrant lies in a regular grid and two steps of the scheme refine a regular
+//   grid as the four-direction quadratic box spline does (Zwart 1973, Powell 1974; checked on
+//   the engine's rows, four_direction_patch.h): the box spline's closed form over the quadrant
+//   gives the position and first derivatives, and the second derivatives inside its two
+//   triangles (none on its knot lines, where it is only C1); or
+// - the point is a face's centre, where the
 // face's limit mask (the left eigenvector of 1 of its local subdivision matrix; Peters & Reif
 // 1997, analysis/surface/limit_evaluation.h) gives the limit. A double is a dyadic rational,
 // so the point becomes a quadrant corner after as many double steps as its coordinates have
@@ -50,7 +56,10 @@ class MidEdgeNodes;
 
 class MidEdgeLimit {
 public:
-  MidEdgeLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options, SchemeLimits& limits);
+  // `closed_form` false: descend to a face's centre even where the box spline applies (the
+  // tests compare the two).
+  MidEdgeLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options, SchemeLimits& limits,
+               bool closed_form = true);
   ~MidEdgeLimit();
 
   // The base vertices an evaluation at `p` (from base_face_point) reads, in the order
@@ -58,16 +67,22 @@ public:
   std::vector<Index> reads(const FacePoint& p) const;
 
   // Rows of the derivatives over those vertices (for stencils).
-  using Rows = FirstDerivativeRows;  // step_matrix.h
+  struct Rows {
+    std::vector<double> du, dv, duu, duv, dvv;
+  };
   LimitSample evaluate(const FacePoint& p, const std::vector<double>& first_values, int channels, int derivatives,
                        Rows* rows_out = nullptr) const;
 
   int radius() const { return radius_; }
+  // Two steps of the scheme refine a regular grid as the four-direction box spline does, and
+  // its closed form is used.
+  bool closed_form() const { return four_direction_; }
 
 private:
   const Level& base_;
   LimitSurfaceOptions options_;
   int radius_ = 4;
+  bool four_direction_ = false;
   std::unique_ptr<MidEdgeNodes> nodes_;  // shared by all evaluations (thread-safe)
   // Per base face (made on first use): the node of its cut and the base vertices in the node's
   // label order, which is the order reads() gives and evaluate() takes.

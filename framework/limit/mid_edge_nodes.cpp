@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <tbb/task_arena.h>
 
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/limit/canonical_cut.h"
 #include "framework/limit/corner_limit.h"
+#include "framework/limit/four_direction_patch.h"
 #include "framework/limit/mid_edge_limit.h"
 #include "framework/limit/two_steps.h"
 #include "framework/util/error.h"
@@ -54,6 +56,24 @@ bool centre_derivatives(const LimitMask& mask, const Labelling& lab, const Level
     dt[v] += (a00 * y - a10 * x) / det;
   }
   return true;
+}
+
+// The 3 x 3 points around the quadrant's corner when the double steps refine them as the
+// four-direction box spline does, given that the scheme refines a regular closed grid so
+// (refines_as_four_direction): the nine points interior, of valence 4, and every face at them
+// a quad. Then every rule behind a new point of the quadrant's support — the points of the four
+// faces at the corner, made from those faces' edges, with their ends' rings and the faces on
+// both sides — reads the regular grid that check saw, and so do the next steps' (their grids lie
+// in the F-, E- and V-faces of these faces and points).
+std::optional<std::array<Index, 9>> four_direction_grid(const Level& L, Index face, int corner) {
+  const auto grid = biquadratic_grid(L, face, corner);
+  if (!grid) return std::nullopt;
+  for (Index v : *grid) {
+    if (L.on_boundary(v) || L.valence(v) != 4 || L.incident_face_count(v) != 4) return std::nullopt;
+    for (Index f : L.ring_faces(v))
+      if (L.face_size(f) != 4) return std::nullopt;
+  }
+  return grid;
 }
 
 }  // namespace
@@ -142,6 +162,20 @@ const MidEdgeNode* MidEdgeNodes::centre(int id, std::string& error) {
       }
     }
     return n.centre_state == 1 ? &n : nullptr;
+  });
+}
+
+const std::array<Index, 9>* MidEdgeNodes::quadrant_grid(int id, int corner) {
+  return tbb::this_task_arena::isolate([&]() -> const std::array<Index, 9>* {
+    std::lock_guard lock(mutex_);
+    MidEdgeNode& n = *nodes_[size_t(id)];
+    int& state = n.grid_state[size_t(corner)];
+    if (state == 0) {
+      const auto grid = four_direction_grid(n.level, n.face, corner);
+      state = grid ? 1 : 2;
+      if (grid) n.grid[size_t(corner)] = *grid;
+    }
+    return state == 1 ? &n.grid[size_t(corner)] : nullptr;
   });
 }
 

@@ -6,6 +6,7 @@
 // into (dual_child_point) gets its node and its matrix from this node's labels on first use,
 // and the limit and tangent rows at the face's centre are computed once. A point then costs a
 // sparse product per double step.
+#include <array>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -34,6 +35,10 @@ struct MidEdgeNode {
   // The face's centre: 0 not tried, 1 its limit mask applies, 2 not yet (irregular near).
   int centre_state = 0;
   std::vector<double> position, ds, dt;  // over labels; ds, dt empty where no tangents
+  // Per corner of the face: the 3 x 3 labels around it where the four-direction box spline
+  // applies to its quadrant (four_direction_patch.h); 0 not tried, 1 it applies, 2 not.
+  std::array<int, 4> grid_state{};
+  std::array<std::array<Index, 9>, 4> grid{};
 };
 
 class MidEdgeNodes {
@@ -49,6 +54,9 @@ public:
   // The node's rows at its face's centre, or null where its neighbourhood is not yet the
   // mask's (`error` says why when the analysis has no mask).
   const MidEdgeNode* centre(int id, std::string& error);
+  // The 3 x 3 labels around corner `corner` of the node's face (a quad) when the grid there is
+  // regular enough for the four-direction box spline (mid_edge_nodes.cpp says what), or null.
+  const std::array<Index, 9>* quadrant_grid(int id, int corner);
 
 private:
   int intern_locked(const Level& cut, Index face, std::vector<Index>& order);

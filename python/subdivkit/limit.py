@@ -65,7 +65,8 @@ class LimitEvaluation:
     ``duu``, ``duv``, ``dvv`` (n, k): second derivatives (with ``derivatives`` = 2). NaN where
     a derivative does not exist: first and second at an extraordinary vertex itself (the
     parameterisation is singular there), second derivatives where the scheme is not C2
-    (everywhere for the butterflies). Unrequested orders are None.
+    (everywhere for the butterflies; for mid-edge schemes on the knot lines of their
+    four-direction box spline, docs/limit.md). Unrequested orders are None.
     """
     points: np.ndarray
     du: np.ndarray | None = None

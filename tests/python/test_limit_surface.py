@@ -81,6 +81,27 @@ def test_second_derivatives_are_differences_of_the_first_and_nan_at_an_extraordi
     assert np.isfinite(at.points).all() and np.isnan(at.du).all() and np.isnan(at.duu).all()
 
 
+def test_mid_edge_second_derivatives_are_differences_of_the_first_and_nan_where_knot_lines_cross():
+    # Two mid-edge steps refine the four-direction quadratic box spline (docs/limit.md): exact
+    # second derivatives inside its pieces (quadratics, so central differences of the first
+    # derivatives agree to rounding), none where it is only C1 or at an extraordinary point.
+    S = sk.LimitSurface(cube(), "mid-edge")
+    u, v, h = 0.3, 0.15, 1e-5
+    r = S.evaluate([0], [[u, v]], derivatives=2)
+    assert np.isfinite(r.duu).all()
+    d = S.evaluate([0, 0, 0, 0], [[u + h, v], [u - h, v], [u, v + h], [u, v - h]], derivatives=1)
+    assert np.abs((d.du[0] - d.du[1]) / (2 * h) - r.duu[0]).max() < 1e-6
+    assert np.abs((d.dv[2] - d.dv[3]) / (2 * h) - r.dvv[0]).max() < 1e-6
+    assert np.abs((d.du[2] - d.du[3]) / (2 * h) - r.duv[0]).max() < 1e-6
+    W = S.stencils([0], [[u, v]], derivatives=2)
+    assert np.abs(W.duu @ cube().points - r.duu).max() < 1e-12
+    # A face's centre, a point of u + v = 1/2 (a knot line of the halved grid the descent ends
+    # in next to the valence-3 corners), a valence-3 vertex.
+    at = S.evaluate([0, 0, 0], [[0.5, 0.5], [0.25, 0.25], [0.0, 0.0]], derivatives=2)
+    assert np.isfinite(at.du[:2]).all() and np.isnan(at.duu[:2]).all()
+    assert np.isnan(at.du[2]).all() and np.isnan(at.duu[2]).all()
+
+
 def test_at_a_vertex_the_limit_is_the_vertex_limit_position():
     mesh = sk.read_mesh(str(MESHES / "octahedron.obj"))
     S = sk.LimitSurface(mesh, "loop")

@@ -88,6 +88,40 @@ TEST_CASE("subdiv evaluate --derivatives 2 adds the second derivatives, nan at a
   CHECK(!std::isnan(rows[1][12]));
 }
 
+TEST_CASE("subdiv evaluate -s mid-edge --derivatives 2: the library's numbers, nan on a knot line and at an "
+          "extraordinary point") {
+  const fs::path dir = test::fresh_dir("evaluate-cli-mid-edge-second");
+  const std::string mesh = test::source_path("examples/meshes/cube.obj");
+  write(dir / "points.csv", "face,u,v\n0,0.3,0.15\n3,0.8125,0.40625\n1,0.5,0.5\n0,0.3,0.2\n2,0,0\n");
+  const auto r = test::run_subdiv("evaluate " + mesh + " -s mid-edge --at " + (dir / "points.csv").string() +
+                                  " --derivatives 2 -o " + (dir / "out.csv").string());
+  REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+  std::string header;
+  const auto rows = read_csv(dir / "out.csv", header);
+  REQUIRE(rows.size() == 5);
+  const MeshData m = read_mesh(mesh);
+  const LimitSurface s(load_scheme("mid-edge"), level_from_mesh(m, mesh));
+  for (size_t k = 0; k < 2; ++k) {  // inside the box spline's pieces
+    REQUIRE(rows[k].size() == 21);
+    const LimitSample p = s.evaluate(Index(rows[k][0]), rows[k][1], rows[k][2], m.positions, 3, 2);
+    REQUIRE(p.has_second_derivatives);
+    for (int c = 0; c < 3; ++c) {
+      CHECK(rows[k][size_t(12 + c)] == p.duu[size_t(c)]);
+      CHECK(rows[k][size_t(15 + c)] == p.duv[size_t(c)]);
+      CHECK(rows[k][size_t(18 + c)] == p.dvv[size_t(c)]);
+    }
+  }
+  // A quad's centre, where knot lines cross, and u + v = 1/2 (0.3 + 0.2 is 0.5 exactly), a knot
+  // line of the halved grid where the descent ends next to the valence-3 corners: first
+  // derivatives, no second; a valence-3 vertex: neither.
+  for (size_t k = 2; k < 4; ++k) {
+    CHECK(std::isfinite(rows[k][6]));
+    CHECK(std::isnan(rows[k][12]));
+  }
+  CHECK(std::isnan(rows[4][6]));
+  CHECK(std::isnan(rows[4][12]));
+}
+
 TEST_CASE("subdiv evaluate --adaptive writes a closed mesh with fewer faces than uniform refinement") {
   const fs::path dir = test::fresh_dir("evaluate-cli-adaptive");
   const std::string mesh = test::source_path("examples/meshes/cube.obj");
