@@ -158,18 +158,7 @@ TEST_CASE("sqrt3, sharpness ending inside a pair: continuous, affine invariant, 
     const Level& L = t.level;
     const std::vector<double>& P = t.mesh.positions;
     const LimitSurface s(load_scheme("sqrt3"), L);
-    double worst_edge = 0;
-    for (Index e = 0; e < L.edge_count(); ++e) {
-      if (subdiv_test::thinned_out(e)) continue;
-      const Index a = L.edge_vertices[size_t(2 * e)], b = L.edge_vertices[size_t(2 * e + 1)];
-      const Index f0 = L.edge_faces[size_t(2 * e)], f1 = L.edge_faces[size_t(2 * e + 1)];
-      for (double x : {0.2, 0.5, 0.731}) {
-        const auto u0 = on_edge(L, f0, a, b, x), u1 = on_edge(L, f1, a, b, x);
-        worst_edge = std::max(worst_edge, distance(s.evaluate(f0, u0[0], u0[1], P, 3, 0).position,
-                                                   s.evaluate(f1, u1[0], u1[1], P, 3, 0).position));
-      }
-    }
-    CHECK(worst_edge < 1e-13);
+    CHECK(worst_edge_gap(s, L, P, {0.2, 0.5, 0.731}) < 1e-13);
     std::vector<double> moved(P.size());
     for (size_t v = 0; v < moved.size() / 3; ++v)
       for (int r = 0; r < 3; ++r)

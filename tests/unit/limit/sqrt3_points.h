@@ -2,12 +2,17 @@
 // Where the vertices two √3 steps make lie in the triadic parameterisation (docs/limit.md,
 // "√3 schemes"), read from the engine's origins: the tests' independent route to the
 // (face, u, v) of a refined vertex.
+#include <algorithm>
 #include <array>
+#include <initializer_list>
 #include <vector>
 
 #include <doctest/doctest.h>
 
 #include "framework/engine/refiner.h"
+#include "framework/limit/limit_surface.h"
+#include "support/sanitizers.h"
+#include "unit/limit/limit_meshes.h"
 
 namespace subdiv::limit_test::sqrt3 {
 
@@ -76,6 +81,24 @@ inline Where where_two_steps_put(const Level& L, const Hierarchy& h, Index v) {
     if (x != a && corner_of(L, faces[1], x) >= 0) b = x;
   REQUIRE(b != kNone);
   return {faces[0], on_edge(L, faces[0], a, b, 1.0 / 3)};
+}
+
+// The largest distance between the limits two faces give at the same point of their shared
+// edge, at fractions `ts` along every (not thinned-out) interior edge.
+inline double worst_edge_gap(const LimitSurface& s, const Level& L, const std::vector<double>& P,
+                             std::initializer_list<double> ts) {
+  double worst = 0;
+  for (Index e = 0; e < L.edge_count(); ++e) {
+    if (subdiv_test::thinned_out(e) || L.edge_on_boundary(e)) continue;
+    const Index a = L.edge_vertices[size_t(2 * e)], b = L.edge_vertices[size_t(2 * e + 1)];
+    const Index f0 = L.edge_faces[size_t(2 * e)], f1 = L.edge_faces[size_t(2 * e + 1)];
+    for (double x : ts) {
+      const auto u0 = on_edge(L, f0, a, b, x), u1 = on_edge(L, f1, a, b, x);
+      worst = std::max(worst, distance(s.evaluate(f0, u0[0], u0[1], P, 3, 0).position,
+                                       s.evaluate(f1, u1[0], u1[1], P, 3, 0).position));
+    }
+  }
+  return worst;
 }
 
 }  // namespace subdiv::limit_test::sqrt3
