@@ -81,15 +81,16 @@ void SequenceHead::place_plugin_children() {
   size_t run_start = 0;
   for (const LimitHeadRun& r : runs_) {
     const int levels = std::max(r.levels, 0);
-    const int period = plugin_[run_start] ? splitter_info(r.scheme->split()).period : 1;
-    for (size_t l = run_start; plugin_[run_start] && l < run_start + size_t(levels); l += size_t(period)) {
+    const bool plugin = levels > 0 && plugin_[run_start];
+    const SplitterInfo* info = plugin ? &splitter_info(r.scheme->split()) : nullptr;
+    const int period = plugin ? info->period : 1;
+    const int factor = plugin ? int(std::lround(std::pow(info->scale, info->period))) : 1;
+    for (size_t l = run_start; plugin && l < run_start + size_t(levels); l += size_t(period)) {
       const Level& parent = hierarchy_.levels[l];
       if (const std::string why = plugin_split_limit_unsupported(*r.scheme, parent); !why.empty())
         throw Error(fmt::format("the sequence's head, at level {}: {}", l, why));
       const bool triangles = parent.all_faces_have_size(3);
       for (int s = 0; s < period; ++s) triangles_[l + size_t(s)] = triangles ? 1 : 0;
-      const SplitterInfo& info = splitter_info(r.scheme->split());
-      const int factor = int(std::lround(std::pow(info.scale, info.period)));
       std::vector<ChildrenOf> children_of;
       for (int s = 0; s < period; ++s) children_of.emplace_back(hierarchy_.levels[l + size_t(s)], hierarchy_.origins[l + size_t(s)]);
       plugin_period_[l] = period;
