@@ -9,8 +9,9 @@
 //                                      the 1M-face torus and on a 960k-quad mesh with 480k
 //                                      extraordinary vertices, in alternating rounds
 //   subdiv-limit-bench issue [points] [n]  the same on the n x n torus (and the split
-//                                      (0.4 n)^2 one); the preparation lines give the CPU time
-//                                      per face too (flat in n: local_patch.h)
+//                                      (0.4 n)^2 one); the preparation (the constructor and
+//                                      the first point of every face) in alternating rounds too,
+//                                      CPU time per face (flat in n: local_patch.h)
 //   subdiv-limit-bench issue points n torus|split  one of the two meshes (for profiling)
 //   subdiv-limit-bench loop [points] [order]  Loop's regular triangles only (for profiling)
 #include <algorithm>
@@ -21,6 +22,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -156,6 +158,30 @@ OpenSubdiv::Far::TopologyRefiner* osd_refiner(const Mesh& m) {
   return Factory::Create(desc, Factory::Options(m.loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, sdc));
 }
 
+// Bfr's side of a preparation: the refiner and its factory, kept together.
+struct BfrPrepared {
+  std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> refiner;
+  std::unique_ptr<OpenSubdiv::Bfr::RefinerSurfaceFactory<>> factory;
+};
+
+// One side's preparation, the first point of every face included, in CPU and wall seconds.
+struct PreparationTime {
+  double cpu = 0, wall = 0;
+};
+
+template <class Prepare>
+PreparationTime timed(Prepare&& prepare) {
+  const auto t0 = Clock::now();
+  const double c0 = cpu_seconds();
+  prepare();
+  return {cpu_seconds() - c0, seconds(t0, Clock::now())};
+}
+
+double median(std::vector<double> x) {
+  std::sort(x.begin(), x.end());
+  return x[x.size() / 2];
+}
+
 void run_alternating(const Mesh& m, int points, int rounds) {
   using namespace OpenSubdiv;
   const int faces = int(m.sizes.size());
@@ -163,34 +189,59 @@ void run_alternating(const Mesh& m, int points, int rounds) {
   for (int s : m.sizes) offsets.push_back(offsets.back() + s);
   const std::vector<subdiv::Index> corners(m.corners.begin(), m.corners.end());
   const double load_before = load_average();
-  const auto t0 = Clock::now();
-  const double c0 = cpu_seconds();
-  const subdiv::LimitSurface ours(subdiv::load_scheme("catmull-clark"), subdiv::build_level(m.vertices, offsets, corners));
-  for (int f = 0; f < faces; ++f) ours.evaluate(f, 0.3, 0.2, m.xyz, 3);
-  const auto t1 = Clock::now();
-  const double c1 = cpu_seconds();
-  std::printf("%s, %d faces: our preparation %.3g s (CPU %.3g s, %.3g us per face)\n", m.name, faces, seconds(t0, t1),
-              c1 - c0, (c1 - c0) / faces * 1e6);
-  std::fflush(stdout);
-  OpenSubdiv::Far::TopologyRefiner* refiner = osd_refiner(m);
-  Bfr::RefinerSurfaceFactory<> factory(*refiner);
   Bfr::Surface<double> surface;
   Bfr::Surface<double>::PointDescriptor d(3);
   std::vector<double> patch;
-  auto bfr = [&](int f, double u, double v, double* p, double* du, double* dv) {
-    factory.InitVertexSurface(f, &surface);
+  double p[3], du[3], dv[3], sum = 0;
+  std::unique_ptr<subdiv::LimitSurface> ours_ptr;
+  BfrPrepared theirs;
+  auto bfr_point = [&](int f, double u, double v, double* xyz, double* dxyz_u, double* dxyz_v) {
+    theirs.factory->InitVertexSurface(f, &surface);
     patch.resize(3 * size_t(surface.GetNumPatchPoints()));
     surface.PreparePatchPoints(m.xyz.data(), d, patch.data(), d);
     const double uv[2] = {u, v};
-    surface.Evaluate(uv, patch.data(), d, p, du, dv);
+    surface.Evaluate(uv, patch.data(), d, xyz, dxyz_u, dxyz_v);
   };
-  double p[3], du[3], dv[3], sum = 0;
-  for (int f = 0; f < faces; ++f) bfr(f, 0.3, 0.2, p, du, dv);
-  const auto t2 = Clock::now();
-  const double c2 = cpu_seconds();
-  std::printf("%s, %d faces: Bfr's preparation %.3g s (CPU %.3g s, %.3g us per face); ours / Bfr CPU %.1f\n", m.name,
-              faces, seconds(t1, t2), c2 - c1, (c2 - c1) / faces * 1e6, (c1 - c0) / (c2 - c1));
+  auto prepare_ours = [&] {
+    ours_ptr.reset();
+    ours_ptr = std::make_unique<subdiv::LimitSurface>(subdiv::load_scheme("catmull-clark"),
+                                                      subdiv::build_level(m.vertices, offsets, corners));
+    for (int f = 0; f < faces; ++f) sum += ours_ptr->evaluate(f, 0.3, 0.2, m.xyz, 3).position[0];
+  };
+  auto prepare_bfr = [&] {
+    theirs.factory.reset();  // before the refiner it reads
+    theirs.refiner.reset();
+    theirs.refiner.reset(osd_refiner(m));
+    theirs.factory = std::make_unique<Bfr::RefinerSurfaceFactory<>>(*theirs.refiner);
+    for (int f = 0; f < faces; ++f) bfr_point(f, 0.3, 0.2, p, du, dv), sum += p[0];
+  };
+  // The preparations alternate too, the order swapped every round, so that neither side
+  // always meets the fresh heap (page faults) and neither always reuses the other's memory.
+  std::vector<double> ours_cpu, bfr_cpu, ours_wall, bfr_wall;
+  const int preparation_rounds = 2 * rounds;
+  for (int r = 0; r < preparation_rounds; ++r) {
+    PreparationTime a, b;
+    if (r % 2 == 0) {
+      a = timed(prepare_ours), b = timed(prepare_bfr);
+    } else {
+      b = timed(prepare_bfr), a = timed(prepare_ours);
+    }
+    ours_cpu.push_back(a.cpu), ours_wall.push_back(a.wall), bfr_cpu.push_back(b.cpu), bfr_wall.push_back(b.wall);
+    std::printf("%s, %d faces: preparation round %d (%s first): ours CPU %.3g s (wall %.3g s), Bfr CPU %.3g s (wall "
+                "%.3g s); ours / Bfr CPU %.2f\n",
+                m.name, faces, r + 1, r % 2 == 0 ? "ours" : "Bfr's", a.cpu, a.wall, b.cpu, b.wall, a.cpu / b.cpu);
+    std::fflush(stdout);
+  }
+  const double ours_prep = median(ours_cpu), bfr_prep = median(bfr_cpu);
+  const double ours_best = *std::min_element(ours_cpu.begin(), ours_cpu.end());
+  const double bfr_best = *std::min_element(bfr_cpu.begin(), bfr_cpu.end());
+  std::printf("%s, %d faces: preparation in %d alternating rounds, CPU per face: median ours %.3g us (wall %.3g s), "
+              "Bfr %.3g us (wall %.3g s), ratio %.2f; best ours %.3g us, Bfr %.3g us, ratio %.2f\n",
+              m.name, faces, preparation_rounds, ours_prep / faces * 1e6, median(ours_wall), bfr_prep / faces * 1e6,
+              median(bfr_wall), ours_prep / bfr_prep, ours_best / faces * 1e6, bfr_best / faces * 1e6,
+              ours_best / bfr_best);
   std::fflush(stdout);
+  const subdiv::LimitSurface& ours = *ours_ptr;
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> unit(0, 1);
   std::vector<std::array<double, 3>> at;
@@ -211,7 +262,7 @@ void run_alternating(const Mesh& m, int points, int rounds) {
     }
     const auto b = Clock::now();
     for (size_t i = first; i < last; ++i) {
-      bfr(int(at[i][0]), at[i][1], at[i][2], &bfr_xyz[3 * i], du, dv);
+      bfr_point(int(at[i][0]), at[i][1], at[i][2], &bfr_xyz[3 * i], du, dv);
       sum += du[0];
     }
     const auto c = Clock::now();
@@ -220,11 +271,10 @@ void run_alternating(const Mesh& m, int points, int rounds) {
   }
   double largest = 0;
   for (size_t i = 0; i < bfr_xyz.size(); ++i) largest = std::max(largest, std::abs(ours_xyz[i] - bfr_xyz[i]));
-  delete refiner;
-  std::printf("%s, %d faces: preparation (first point per face) ours %.3g s, Bfr %.3g s; %d random points in %d "
-              "alternating rounds, position + first derivatives: ours %.2f us/point, Bfr %.2f us/point, ratio %.2f; "
-              "largest |ours - Bfr| %.3g; load average %.2f before, %.2f after (checksum %g)\n",
-              m.name, faces, seconds(t0, t1), seconds(t1, t2), points, rounds, ours_s / points * 1e6,
+  std::printf("%s, %d faces: %d random points in %d alternating rounds, position + first derivatives: ours %.2f "
+              "us/point, Bfr %.2f us/point, ratio %.2f; largest |ours - Bfr| %.3g; load average %.2f before, %.2f "
+              "after (checksum %g)\n",
+              m.name, faces, points, rounds, ours_s / points * 1e6,
               bfr_s / points * 1e6, ours_s / bfr_s, largest, load_before, load_average(), sum);
 }
 
