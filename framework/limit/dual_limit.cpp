@@ -11,6 +11,7 @@
 #include "framework/engine/refiner.h"
 #include "framework/features/sharpness.h"
 #include "framework/limit/biquadratic_patch.h"
+#include "framework/limit/cut_weight_tables.h"
 #include "framework/limit/dual_crease_chart.h"
 #include "framework/limit/dual_crease_curve.h"
 #include "framework/limit/step_matrix.h"
@@ -330,9 +331,16 @@ void DualLimit::check_face(Index f) const {
                           crease_sides_reason(base_, v)));
 }
 
+DualLimit::~DualLimit() = default;
+
 DualLimit::DualLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options, int radius,
                      SchemeLimits& limits)
-    : scheme_(scheme), base_(base), options_(options), radius_(radius), limits_(limits),
+    : scheme_(scheme),
+      base_(base),
+      options_(options),
+      radius_(radius),
+      limits_(limits),
+      tables_(cut_weight_tables(scheme)),
       refused_at_(refused_at(base)) {
   biquadratic_ = refines_as_biquadratic(scheme, options.features);
   bool creased = false;
@@ -454,6 +462,7 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
           RefineOptions ro;
           ro.levels = 1;
           ro.features = options_.features;
+          ro.evaluation.weight_tables = tables_.get();
           const auto mask =
               crease_middle_limit(cut.level, refine(scheme_, cut.level, ro), q.face, *run, crease_end_reach(scheme_));
           if (mask) weights = *mask;
@@ -492,6 +501,7 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
     RefineOptions ro;
     ro.levels = 1;
     ro.features = options_.features;
+    ro.evaluation.weight_tables = tables_.get();
     const Hierarchy h = refine(scheme_, cut.level, ro);
     const ChildStep s = child_quadrant(h.levels[1], h.origins[0], q);
     Cut next = cut_around(h.levels[1], s.face, radius_);

@@ -49,6 +49,7 @@
 namespace subdiv {
 
 class SchemeLimits;
+class WeightTableCache;
 
 class DualLimit {
 public:
@@ -56,6 +57,7 @@ public:
   // masks' labelling fit inside).
   DualLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options, int radius,
             SchemeLimits& limits);
+  ~DualLimit();
 
   // The base vertices an evaluation at `p` (from base_face_point) reads, in the order
   // `evaluate` takes their values.
@@ -80,6 +82,7 @@ private:
   LimitSurfaceOptions options_;
   int radius_;
   SchemeLimits& limits_;
+  std::unique_ptr<WeightTableCache> tables_;  // cut_weight_tables.h
   bool biquadratic_ = false;
   bool chaikin_crease_ = false;  // the crease is Chaikin's: its closed form applies on it
   bool middles_kept_ = true;     // the crease keeps its edges' middles (else dual_crease_curve.h)

@@ -10,6 +10,7 @@
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/refiner.h"
 #include "framework/limit/canonical_cut.h"
+#include "framework/limit/cut_weight_tables.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
 
@@ -79,7 +80,15 @@ Level canonical_level(const Level& cut, const Labelling& lab, Index face, Index&
 
 LimitNodes::LimitNodes(const Scheme& scheme, const FeatureOptions& features, int radius, int depth, bool triangles,
                        SchemeLimits& limits)
-    : scheme_(scheme), features_(features), radius_(radius), depth_(depth), triangles_(triangles), limits_(limits) {}
+    : scheme_(scheme),
+      features_(features),
+      radius_(radius),
+      depth_(depth),
+      triangles_(triangles),
+      limits_(limits),
+      tables_(cut_weight_tables(scheme)) {}
+
+LimitNodes::~LimitNodes() = default;
 
 // Every method that runs the engine (whose loops are parallel) under the lock isolates
 // itself: a thread waiting inside those loops must not pick up another evaluation of the
@@ -154,6 +163,7 @@ LimitNode& LimitNodes::expand_locked(int id) {
   RefineOptions ro;
   ro.levels = 1;
   ro.features = features_;
+  ro.evaluation.weight_tables = tables_.get();
   const Hierarchy h = refine(scheme_, n->level, ro);
   FacePoint p;
   p.face = n->face;

@@ -60,6 +60,7 @@ struct LimitNode {
 };
 
 struct Labelling;
+class WeightTableCache;
 
 class LimitNodes {
 public:
@@ -67,6 +68,7 @@ public:
   // of the face, which must be closed under the steps (checked as nodes are expanded).
   LimitNodes(const Scheme& scheme, const FeatureOptions& features, int radius, int depth, bool triangles,
              SchemeLimits& limits);
+  ~LimitNodes();
 
   // The node of a cut around `face`, and the cut's vertices the node keeps, in label order.
   int intern(const Level& cut, Index face, std::vector<Index>& order);
@@ -113,6 +115,7 @@ private:
   int radius_, depth_;
   bool triangles_;
   SchemeLimits& limits_;
+  std::unique_ptr<WeightTableCache> tables_;  // cut_weight_tables.h
   std::mutex mutex_;
   std::map<std::vector<double>, int> index_;
   std::vector<std::unique_ptr<LimitNode>> nodes_;

@@ -10,6 +10,7 @@
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/limit/canonical_cut.h"
 #include "framework/limit/corner_limit.h"
+#include "framework/limit/cut_weight_tables.h"
 #include "framework/limit/four_direction_patch.h"
 #include "framework/limit/mid_edge_limit.h"
 #include "framework/limit/two_steps.h"
@@ -79,7 +80,9 @@ std::optional<std::array<Index, 9>> four_direction_grid(const Level& L, Index fa
 }  // namespace
 
 MidEdgeNodes::MidEdgeNodes(const Scheme& scheme, const FeatureOptions& features, int radius, SchemeLimits& limits)
-    : scheme_(scheme), features_(features), radius_(radius), limits_(limits) {}
+    : scheme_(scheme), features_(features), radius_(radius), limits_(limits), tables_(cut_weight_tables(scheme)) {}
+
+MidEdgeNodes::~MidEdgeNodes() = default;
 
 int MidEdgeNodes::intern(const Level& cut, Index face, std::vector<Index>& order) {
   return tbb::this_task_arena::isolate([&] {
@@ -109,6 +112,7 @@ const MidEdgeNode& MidEdgeNodes::expanded(int id) {
       RefineOptions ro;
       ro.levels = 2;
       ro.features = features_;
+      ro.evaluation.weight_tables = tables_.get();
       n.steps = refine(scheme_, n.level, ro);
       n.origins = mid_edge_double_origins(n.level, n.steps.levels[1], n.steps.origins[0], n.steps.levels[2],
                                           n.steps.origins[1]);

@@ -20,6 +20,7 @@ namespace subdiv {
 
 struct Scheme;
 class SchemeLimits;
+class WeightTableCache;
 
 struct MidEdgeNode {
   Level level;  // the cut, its vertices numbered by their labels
@@ -44,6 +45,7 @@ struct MidEdgeNode {
 class MidEdgeNodes {
 public:
   MidEdgeNodes(const Scheme& scheme, const FeatureOptions& features, int radius, SchemeLimits& limits);
+  ~MidEdgeNodes();
 
   // The node of a cut around `face`, and the cut's vertices in label order.
   int intern(const Level& cut, Index face, std::vector<Index>& order);
@@ -65,6 +67,7 @@ private:
   FeatureOptions features_;
   int radius_;
   SchemeLimits& limits_;
+  std::unique_ptr<WeightTableCache> tables_;  // cut_weight_tables.h
   std::mutex mutex_;
   std::map<std::vector<double>, int> index_;
   std::vector<std::unique_ptr<MidEdgeNode>> nodes_;

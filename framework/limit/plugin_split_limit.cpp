@@ -11,6 +11,7 @@
 #include "framework/engine/ghost_rings.h"
 #include "framework/engine/refiner.h"
 #include "framework/limit/corner_limit.h"
+#include "framework/limit/cut_weight_tables.h"
 #include "framework/limit/plugin_period_children.h"
 #include "framework/limit/point_cut.h"
 #include "framework/limit/step_matrix.h"
@@ -73,9 +74,11 @@ std::string plugin_split_limit_unsupported(const Scheme& scheme, const Level& ba
   return {};
 }
 
+PluginSplitLimit::~PluginSplitLimit() = default;
+
 PluginSplitLimit::PluginSplitLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options,
                                    SchemeLimits& limits)
-    : scheme_(scheme), base_(base), options_(options), limits_(limits) {
+    : scheme_(scheme), base_(base), options_(options), limits_(limits), tables_(cut_weight_tables(scheme)) {
   const SplitterInfo& info = splitter_info(scheme.split());
   period_ = info.period;
   factor_ = int(std::lround(std::pow(info.scale, info.period)));
@@ -137,6 +140,7 @@ LimitSample PluginSplitLimit::evaluate(const FacePoint& p0, const std::vector<do
     RefineOptions ro;
     ro.levels = period_;
     ro.features = options_.features;
+    ro.evaluation.weight_tables = tables_.get();
     const Hierarchy h = refine(scheme_, cut.level, ro);
     std::vector<ChildrenOf> children_of;
     for (int s = 0; s < period_; ++s) children_of.emplace_back(h.levels[size_t(s)], h.origins[size_t(s)]);

@@ -18,6 +18,7 @@
 // round-off (m^-k < 2^-53; for m = 3, 34 steps past the last face touching an extraordinary
 // vertex, as for √3), and takes the vertex's limit and tangent masks there (corner_limit.h).
 // Each step refines the cut with the engine (no node cache), so a point costs milliseconds.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,10 +29,12 @@
 namespace subdiv {
 
 class SchemeLimits;
+class WeightTableCache;
 
 class PluginSplitLimit {
 public:
   PluginSplitLimit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options, SchemeLimits& limits);
+  ~PluginSplitLimit();
 
   bool triangles() const { return triangles_; }
   std::vector<Index> reads(const FacePoint& p) const;
@@ -45,6 +48,7 @@ private:
   const Level& base_;
   LimitSurfaceOptions options_;
   SchemeLimits& limits_;
+  std::unique_ptr<WeightTableCache> tables_;  // cut_weight_tables.h
   bool triangles_ = false;
   int period_ = 1, factor_ = 2, radius_ = 5;
 };
