@@ -79,6 +79,9 @@ public:
   const CornerRows* corner(int id, int k, std::string& error);
   const LimitNode& node(int id);
   int depth() const { return depth_; }
+  // The weight tables the nodes' refinements keep (cut_weight_tables.h), for other cut
+  // refinements of the same surface.
+  WeightTableCache* weight_tables() const { return tables_.get(); }
   // The powers of child `which`'s step of node `id`, which must lead back to the node.
   // Skipping m levels then costs one product per binary digit of m, whatever m is (powers
   // by squaring, which unlike an eigen-decomposition needs no diagonalisable matrix:

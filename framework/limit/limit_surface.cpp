@@ -1224,7 +1224,7 @@ struct LimitSurface::Impl {
                                int& id, std::vector<double>& values, FacePoint& p) const {
     Neighbourhood n = cut(base, {}, 0, p0, radius);
     n.values = first_values;
-    const Hierarchy h = refine_step(n.level);
+    const Hierarchy h = refine_step(n.level, nodes);
     const std::vector<double> child = h.stencils[0].apply(n.values, channels);
     const auto q = child_face_point(n.level, h.levels[1], h.origins[0], n.point, triangles);
     if (!q) throw Error("internal: no child face holds the point (the split is not a binary primal one)");
@@ -1278,7 +1278,7 @@ struct LimitSurface::Impl {
     auto s = std::make_shared<SubFaceStart>();
     s->original = n.original;
     s->face = n.point.face;
-    const Hierarchy h = refine_step(n.level);
+    const Hierarchy h = refine_step(n.level, *c.nodes);
     const int k = base.face_size(face);
     std::vector<Index> child_faces_met;
     for (int sub = 0; sub < k; ++sub) {
@@ -1362,10 +1362,11 @@ struct LimitSurface::Impl {
     triangles = head->triangles();
   }
 
-  Hierarchy refine_step(const Level& level) const {
+  Hierarchy refine_step(const Level& level, const LimitNodes& nodes) const {
     RefineOptions ro;
     ro.levels = 1;
     ro.features = options.features;
+    ro.evaluation.weight_tables = nodes.weight_tables();
     return refine(*scheme, level, ro);
   }
 };
