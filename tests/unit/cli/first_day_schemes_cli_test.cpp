@@ -1,0 +1,75 @@
+// Schemes as a first-day author writes them (copies of the shipped files with a mistake),
+// through `subdiv evaluate` and `subdiv refine --adaptive`: what the limit layer cannot do is
+// refused with the reason and with the nearest thing the user can run instead, naming the
+// scheme as `-s` takes it, and no output file is left.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "support/cli_runner.h"
+
+using namespace subdiv::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kCube = source_path("examples/meshes/cube.obj");
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// schemes/catmull-clark.json without its parameter, with the given edge and vertex weights.
+fs::path write_quad_scheme(const fs::path& dir, const std::string& name, const std::string& edge_ends,
+                           const std::string& vertex_self, const std::string& vertex_ring) {
+  const fs::path file = dir / (name + ".json");
+  std::ofstream(file) << R"({"name": ")" << name << R"(", "split": "quad", "faces": "any", "curve": "cubic-bspline",
+  "rules": {
+    "face": [{"sum": "vertices", "w": "1/k"}],
+    "edge": [{"sum": "ends", "w": ")" << edge_ends << R"("}, {"sum": "faces", "new": "face", "w": "1/4"}],
+    "vertex": [{"at": "self", "w": ")" << vertex_self << R"("}, {"sum": "ring", "w": ")" << vertex_ring
+                      << R"("}, {"sum": "faces", "new": "face", "w": "1/n^2"}]
+  }})";
+  return file;
+}
+
+}  // namespace
+
+TEST_CASE("evaluate: a non-stationary scheme is refused with the reason and `subdiv refine` to run instead") {
+  const auto dir = fresh_dir("first-day-nonstationary");
+  const fs::path scheme = write_quad_scheme(dir, "tension", "1/4", "(n-2)/n + 0.1/(l+1)", "1/n^2 - 0.1/(l+1)/n");
+  std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n";
+  const fs::path out = dir / "out.csv";
+  const auto r = run_subdiv("evaluate " + kCube + " -s " + scheme.string() + " --at " + (dir / "points.csv").string() +
+                            " -o " + out.string());
+  CHECK(r.exit_code == 1);
+  CHECK(contains(r.output, "is non-stationary"));
+  CHECK(contains(r.output, "`subdiv refine MESH -s " + scheme.string() + " -l L`"));
+  CHECK(contains(r.output, "-s " + scheme.string() + ":K,STATIONARY"));
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("refine and evaluate --adaptive: splits it cannot refine adaptively are refused with `subdiv refine -l`") {
+  const auto dir = fresh_dir("first-day-adaptive");
+  fs::copy_file(source_path("schemes/doo-sabin.json"), dir / "my-dual.json");
+  const std::string octahedron = source_path("examples/meshes/octahedron.obj");
+  const std::string own = (dir / "my-dual.json").string();
+  const struct {
+    std::string mesh, scheme, advice;
+  } cases[] = {{kCube, own, "`subdiv refine MESH -s " + own + " -l 3`"},
+               {octahedron, "sqrt3", "`subdiv refine MESH -s sqrt3 -l 3`"},
+               {kCube, "mid-edge", "`subdiv refine MESH -s mid-edge -l 3`"}};
+  for (const auto& c : cases) {
+    for (const std::string command : {"refine", "evaluate"}) {
+      CAPTURE(c.scheme);
+      CAPTURE(command);
+      const fs::path out = dir / "a.vtp";
+      const auto r = run_subdiv(command + " " + c.mesh + " -s " + c.scheme + " --adaptive 3 -o " + out.string());
+      CHECK(r.exit_code == 1);
+      CHECK(contains(r.output, "binary quad and triangle splits only so far"));
+      CHECK(contains(r.output, c.advice));
+      CHECK_FALSE(fs::exists(out));
+    }
+  }
+}
