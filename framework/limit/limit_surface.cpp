@@ -953,6 +953,19 @@ struct LimitSurface::Impl {
     return walk(c, id, p, std::move(values), channels, derivatives, path, first_values, rows_out, true);
   }
 
+  // Why the descent found no limit mask. The analysis's verdict "fails: ..." means the
+  // vertex's local subdivision matrix lacks the simple dominant eigenvalue 1: the scheme
+  // does not converge there, which its rules, not the mesh, must change.
+  std::string no_limit_mask(int steps, const std::string& why) const {
+    if (!why.starts_with("fails: "))
+      return fmt::format("no limit mask for the vertex reached after {} steps{}{}", steps, why.empty() ? "" : ": ", why);
+    return fmt::format("scheme {} does not converge at the vertex the point reaches after {} steps ({}), so the "
+                       "limit does not exist there; check its rules with `subdiv analyze {}` (the verdict per "
+                       "valence) and make the vertex rule's weights give the eigenvalue 1 once and the others "
+                       "smaller",
+                       subdiv::quoted(scheme->name), steps, why.substr(7), scheme_argument(*scheme));
+  }
+
   // The descent from node `id` with the point p and the node's values; `closed_forms`:
   // regular nodes' patches may end it (off while those patches are being sampled).
   LimitSample walk(Cache& c, int id, FacePoint p, std::vector<double> values, int channels, int derivatives,
@@ -967,9 +980,7 @@ struct LimitSurface::Impl {
         // The face is 2^-max_steps of the base face: its nearest corner is the point to round-off.
         p.st = {std::round(p.st[0]), std::round(p.st[1])};
         if (triangles && p.st[0] + p.st[1] > 1) p.st[1] = 0;
-        if (iteration >= options.max_steps + 16)
-          throw Error(fmt::format("no limit mask for the vertex reached after {} steps{}{}", iteration,
-                                  mask_error.empty() ? "" : ": ", mask_error));
+        if (iteration >= options.max_steps + 16) throw Error(no_limit_mask(iteration, mask_error));
       }
       if (closed_forms && !triangles)
         if (const std::array<Index, 16>* grid = c.nodes->bspline(id))

@@ -73,3 +73,24 @@ TEST_CASE("refine and evaluate --adaptive: splits it cannot refine adaptively ar
     }
   }
 }
+
+TEST_CASE("evaluate: a scheme that does not converge is refused with the reason and `subdiv analyze`") {
+  const auto dir = fresh_dir("first-day-divergent");
+  // Affine (3 - 1 - 1 = 1), so `subdiv validate` passes it; its local subdivision matrix has
+  // an eigenvalue 2.4 > 1, so the levels run away.
+  const fs::path scheme = dir / "runaway.json";
+  std::ofstream(scheme) << R"({"name": "runaway", "split": "quad", "faces": "any", "curve": "cubic-bspline",
+  "rules": {"face": [{"sum": "vertices", "w": "1/k"}],
+            "edge": [{"sum": "ends", "w": "1/4"}, {"sum": "faces", "new": "face", "w": "1/4"}],
+            "vertex": [{"at": "self", "w": "3"}, {"sum": "ring", "w": "-1/n"},
+                       {"sum": "faces", "new": "face", "w": "-1/n"}]}})";
+  std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n";
+  const fs::path out = dir / "out.csv";
+  const auto r = run_subdiv_with_prefix("timeout 120 ", "evaluate " + kCube + " -s " + scheme.string() + " --at " +
+                                                           (dir / "points.csv").string() + " -o " + out.string());
+  CHECK(r.exit_code == 1);
+  CHECK(contains(r.output, "scheme 'runaway' does not converge"));
+  CHECK(contains(r.output, "lambda_0 = 1 is not the simple dominant eigenvalue"));
+  CHECK(contains(r.output, "`subdiv analyze " + scheme.string() + "`"));
+  CHECK_FALSE(fs::exists(out));
+}
