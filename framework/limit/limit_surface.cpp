@@ -102,6 +102,16 @@ StepMatrix renumbering(const std::vector<Index>& order, Index source_count) {
 
 }  // namespace
 
+namespace {
+
+// A face number past the end or negative (a points file's row, a Python index).
+std::string no_such_face(Index face, Index count) {
+  if (count == 0) return fmt::format("face {} does not exist: the mesh has no faces", face);
+  return fmt::format("face {} does not exist: the mesh has {} faces, numbered from 0 to {}", face, count, count - 1);
+}
+
+}  // namespace
+
 std::string limit_surface_unsupported(const Scheme& scheme) {
   if (!scheme.linear())
     return fmt::format("scheme {} has non-linear rules: its limit is no fixed combination of the control points, "
@@ -917,7 +927,7 @@ struct LimitSurface::Impl {
   FacePoint start(Index face, double u, double v) const {
     const char* why = "";
     if (face < 0 || face >= base.face_count())
-      throw Error(fmt::format("face {} does not exist (the mesh has {} faces)", face, base.face_count()));
+      throw Error(no_such_face(face, base.face_count()));
     if (base.is_hole(face)) throw Error(fmt::format("face {} is a hole: it has no limit surface", face));
     const auto p = base_face_point(base, face, u, v, triangles, &why);
     if (!p) throw Error(fmt::format("face {} at (u, v) = ({}, {}): {}", face, u, v, why));
@@ -1465,7 +1475,7 @@ LimitSurface::LimitSurface(std::vector<LimitHeadRun> head, std::shared_ptr<const
 
 LimitStencil LimitSurface::sequence_stencil(Index face, double u, double v, int derivatives) const {
   if (face < 0 || face >= impl_->base.face_count())
-    throw Error(fmt::format("face {} does not exist (the mesh has {} faces)", face, impl_->base.face_count()));
+    throw Error(no_such_face(face, impl_->base.face_count()));
   if (impl_->base.is_hole(face)) throw Error(fmt::format("face {} is a hole: it has no limit surface", face));
   const FacePoint q = impl_->head->map(impl_->base, face, u, v);
   const LimitStencil w = impl_->tail->stencil(q.face, q.st[0], q.st[1], derivatives);
@@ -1552,7 +1562,7 @@ std::string LimitSurface::check(Index face, double u, double v) const {
   try {
     if (impl_->tail) {
       if (face < 0 || face >= impl_->base.face_count())
-        throw Error(fmt::format("face {} does not exist (the mesh has {} faces)", face, impl_->base.face_count()));
+        throw Error(no_such_face(face, impl_->base.face_count()));
       if (impl_->base.is_hole(face)) throw Error(fmt::format("face {} is a hole: it has no limit surface", face));
       impl_->head->map(impl_->base, face, u, v);
       return {};
