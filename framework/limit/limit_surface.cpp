@@ -1209,6 +1209,7 @@ struct LimitSurface::Impl {
   static LimitSample finish(const CornerRows& rows, const FacePoint& p, const std::vector<double>& values, int channels,
                             int derivatives, const std::vector<const StepMatrix*>& path,
                             const std::vector<double>& first_values, int iteration, DerivativeRows* rows_out) {
+    if (derivatives >= 1 && !rows.no_derivatives.empty()) throw Error(rows.no_derivatives);
     LimitSample out;
     out.steps = iteration;
     out.position = applied(rows.position, values, channels);

@@ -50,6 +50,36 @@ TEST_CASE("evaluate: a non-stationary scheme is refused with the reason and `sub
   CHECK_FALSE(fs::exists(out));
 }
 
+TEST_CASE("evaluate: a scheme that is not C1 is refused when derivatives are asked for, evaluated without them") {
+  const auto dir = fresh_dir("first-day-not-c1");
+  // A vertex rule that keeps 0.9 of the vertex: valence-4 eigenvalues 0.569 and 0.5.
+  const fs::path scheme = dir / "stiff.json";
+  std::ofstream(scheme) << R"({"name": "stiff", "split": "quad", "faces": "any", "curve": "cubic-bspline",
+  "rules": {"face": [{"sum": "vertices", "w": "1/k"}],
+            "edge": [{"sum": "ends", "w": "1/4"}, {"sum": "faces", "new": "face", "w": "1/4"}],
+            "vertex": [{"at": "self", "w": "0.9"}, {"sum": "ring", "w": "0.05/n"},
+                       {"sum": "faces", "new": "face", "w": "0.05/n"}]}})";
+  std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n0,0.3,0.7\n";
+  const fs::path out = dir / "out.csv";
+  const std::string args = "evaluate " + kCube + " -s " + scheme.string() + " --at " + (dir / "points.csv").string() +
+                           " -o " + out.string();
+  const auto r = run_subdiv(args);
+  CHECK(r.exit_code == 1);
+  CHECK(contains(r.output, "scheme 'stiff' is not C1"));
+  CHECK(std::regex_search(r.output, std::regex("subdominant eigenvalues are 0\\.569\\d*, 0\\.5")));
+  CHECK(contains(r.output, "`subdiv analyze " + scheme.string() + "`"));
+  CHECK(contains(r.output, "--derivatives 0"));
+  CHECK_FALSE(fs::exists(out));
+  const auto positions = run_subdiv(args + " --derivatives 0");
+  CHECK(positions.exit_code == 0);
+  CHECK(fs::exists(out));
+  const auto samples = run_subdiv("evaluate " + kCube + " -s " + scheme.string() + " --samples 2 -o " +
+                                  (dir / "s.vtp").string());
+  CHECK(samples.exit_code == 1);
+  CHECK(contains(samples.output, "no derivatives or normals"));
+  CHECK_FALSE(fs::exists(dir / "s.vtp"));
+}
+
 TEST_CASE("refine and evaluate --adaptive: splits it cannot refine adaptively are refused with `subdiv refine -l`") {
   const auto dir = fresh_dir("first-day-adaptive");
   fs::copy_file(source_path("schemes/doo-sabin.json"), dir / "my-dual.json");
