@@ -117,6 +117,12 @@ class LimitSurface:
     What is learnt about the mesh is kept between calls, so later calls are faster; calls
     release the GIL and may run from several Python threads at once.
 
+    The mesh is copied when the surface is made: changing the Mesh afterwards (its points,
+    faces or tags) does not change the surface. Evaluate other positions with
+    ``evaluate(points=...)``; for another topology make a new LimitSurface. It cannot be
+    pickled or copied (it holds the prepared native surface): pickle the Mesh, which can be,
+    and make the LimitSurface again where it is needed.
+
     Examples
     --------
     >>> S = sk.LimitSurface(cube, "catmull-clark")
@@ -134,6 +140,10 @@ class LimitSurface:
                                                            str(fvar_boundary))
         self.name = mesh.name
         self.scheme = scheme.name if isinstance(scheme, Scheme) else str(scheme)
+
+    def __reduce__(self):
+        raise TypeError("a LimitSurface cannot be pickled or copied: it holds the prepared native surface; "
+                        "pickle its Mesh instead and make LimitSurface(mesh, scheme) again where it is needed")
 
     @property
     def triangles(self):

@@ -425,3 +425,20 @@ def test_sample_points_without_a_normal_are_zero_with_a_warning():
         n = np.linalg.norm(sk.LimitSurface(cube()).tessellate(4).point_data["Normals"], axis=1)
     assert np.allclose(n, 1.0)
 
+
+def test_a_limit_surface_refuses_pickling_and_copies_by_saying_what_to_do_and_keeps_its_mesh():
+    """pickle and copy raised "cannot pickle '_LimitSurface' object" (the native class's name);
+    they now say what to pickle instead. The surface keeps the mesh it was made from: changing
+    the Mesh afterwards changes nothing, as the docstring says."""
+    import copy
+    import pickle
+    mesh = cube()
+    S = sk.LimitSurface(mesh, "catmull-clark")
+    for how in (pickle.dumps, copy.copy, copy.deepcopy):
+        with pytest.raises(TypeError, match="pickle its Mesh instead and make LimitSurface"):
+            how(S)
+    before = S.evaluate([0], [[0.3, 0.3]]).points
+    mesh.points[:] = mesh.points * 2
+    assert np.array_equal(S.evaluate([0], [[0.3, 0.3]]).points, before)
+    assert np.array_equal(S.evaluate([0], [[0.3, 0.3]], points=mesh.points).points, 2 * before)
+    assert pickle.loads(pickle.dumps(mesh)).n_faces == mesh.n_faces
