@@ -20,16 +20,17 @@ const std::string kCube = source_path("examples/meshes/cube.obj");
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-// schemes/catmull-clark.json without its parameter, with the given edge and vertex weights.
-fs::path write_quad_scheme(const fs::path& dir, const std::string& name, const std::string& edge_ends,
-                           const std::string& vertex_self, const std::string& vertex_ring) {
+// schemes/catmull-clark.json without its parameter, with the vertex rule's weights of the
+// vertex, each ring neighbour and each new face point.
+fs::path write_quad_scheme(const fs::path& dir, const std::string& name, const std::string& self,
+                           const std::string& ring, const std::string& faces) {
   const fs::path file = dir / (name + ".json");
   std::ofstream(file) << R"({"name": ")" << name << R"(", "split": "quad", "faces": "any", "curve": "cubic-bspline",
   "rules": {
     "face": [{"sum": "vertices", "w": "1/k"}],
-    "edge": [{"sum": "ends", "w": ")" << edge_ends << R"("}, {"sum": "faces", "new": "face", "w": "1/4"}],
-    "vertex": [{"at": "self", "w": ")" << vertex_self << R"("}, {"sum": "ring", "w": ")" << vertex_ring
-                      << R"("}, {"sum": "faces", "new": "face", "w": "1/n^2"}]
+    "edge": [{"sum": "ends", "w": "1/4"}, {"sum": "faces", "new": "face", "w": "1/4"}],
+    "vertex": [{"at": "self", "w": ")" << self << R"("}, {"sum": "ring", "w": ")" << ring
+                      << R"("}, {"sum": "faces", "new": "face", "w": ")" << faces << R"("}]
   }})";
   return file;
 }
@@ -38,7 +39,7 @@ fs::path write_quad_scheme(const fs::path& dir, const std::string& name, const s
 
 TEST_CASE("evaluate: a non-stationary scheme is refused with the reason and `subdiv refine` to run instead") {
   const auto dir = fresh_dir("first-day-nonstationary");
-  const fs::path scheme = write_quad_scheme(dir, "tension", "1/4", "(n-2)/n + 0.1/(l+1)", "1/n^2 - 0.1/(l+1)/n");
+  const fs::path scheme = write_quad_scheme(dir, "tension", "(n-2)/n + 0.1/(l+1)", "1/n^2 - 0.1/(l+1)/n", "1/n^2");
   std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n";
   const fs::path out = dir / "out.csv";
   const auto r = run_subdiv("evaluate " + kCube + " -s " + scheme.string() + " --at " + (dir / "points.csv").string() +
@@ -53,12 +54,7 @@ TEST_CASE("evaluate: a non-stationary scheme is refused with the reason and `sub
 TEST_CASE("evaluate: a scheme that is not C1 is refused when derivatives are asked for, evaluated without them") {
   const auto dir = fresh_dir("first-day-not-c1");
   // A vertex rule that keeps 0.9 of the vertex: valence-4 eigenvalues 0.569 and 0.5.
-  const fs::path scheme = dir / "stiff.json";
-  std::ofstream(scheme) << R"({"name": "stiff", "split": "quad", "faces": "any", "curve": "cubic-bspline",
-  "rules": {"face": [{"sum": "vertices", "w": "1/k"}],
-            "edge": [{"sum": "ends", "w": "1/4"}, {"sum": "faces", "new": "face", "w": "1/4"}],
-            "vertex": [{"at": "self", "w": "0.9"}, {"sum": "ring", "w": "0.05/n"},
-                       {"sum": "faces", "new": "face", "w": "0.05/n"}]}})";
+  const fs::path scheme = write_quad_scheme(dir, "stiff", "0.9", "0.05/n", "0.05/n");
   std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n0,0.3,0.7\n";
   const fs::path out = dir / "out.csv";
   const std::string args = "evaluate " + kCube + " -s " + scheme.string() + " --at " + (dir / "points.csv").string() +
@@ -108,12 +104,7 @@ TEST_CASE("evaluate: a scheme that does not converge is refused with the reason 
   const auto dir = fresh_dir("first-day-divergent");
   // Affine (3 - 1 - 1 = 1), so `subdiv validate` passes it; its local subdivision matrix has
   // an eigenvalue 2.4 > 1, so the levels run away.
-  const fs::path scheme = dir / "runaway.json";
-  std::ofstream(scheme) << R"({"name": "runaway", "split": "quad", "faces": "any", "curve": "cubic-bspline",
-  "rules": {"face": [{"sum": "vertices", "w": "1/k"}],
-            "edge": [{"sum": "ends", "w": "1/4"}, {"sum": "faces", "new": "face", "w": "1/4"}],
-            "vertex": [{"at": "self", "w": "3"}, {"sum": "ring", "w": "-1/n"},
-                       {"sum": "faces", "new": "face", "w": "-1/n"}]}})";
+  const fs::path scheme = write_quad_scheme(dir, "runaway", "3", "-1/n", "-1/n");
   std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n";
   const fs::path out = dir / "out.csv";
   const auto r = run_subdiv_with_prefix("timeout 120 ", "evaluate " + kCube + " -s " + scheme.string() + " --at " +
