@@ -35,15 +35,21 @@ fs::path write_quad_scheme(const fs::path& dir, const std::string& name, const s
   return file;
 }
 
+// `subdiv evaluate` of the cube under `scheme` at (face 0, 0.5, 0.5) into dir/out.csv.
+CliResult evaluate_centre(const fs::path& dir, const fs::path& scheme, const std::string& more = "") {
+  std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n";
+  return run_subdiv_with_prefix("timeout 120 ", "evaluate " + kCube + " -s " + scheme.string() + " --at " +
+                                                    (dir / "points.csv").string() + " -o " + (dir / "out.csv").string() +
+                                                    more);
+}
+
 }  // namespace
 
 TEST_CASE("evaluate: a non-stationary scheme is refused with the reason and `subdiv refine` to run instead") {
   const auto dir = fresh_dir("first-day-nonstationary");
   const fs::path scheme = write_quad_scheme(dir, "tension", "(n-2)/n + 0.1/(l+1)", "1/n^2 - 0.1/(l+1)/n", "1/n^2");
-  std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n";
   const fs::path out = dir / "out.csv";
-  const auto r = run_subdiv("evaluate " + kCube + " -s " + scheme.string() + " --at " + (dir / "points.csv").string() +
-                            " -o " + out.string());
+  const auto r = evaluate_centre(dir, scheme);
   CHECK(r.exit_code == 1);
   CHECK(contains(r.output, "is non-stationary"));
   CHECK(contains(r.output, "`subdiv refine MESH -s " + scheme.string() + " -l L`"));
@@ -55,18 +61,15 @@ TEST_CASE("evaluate: a scheme that is not C1 is refused when derivatives are ask
   const auto dir = fresh_dir("first-day-not-c1");
   // A vertex rule that keeps 0.9 of the vertex: valence-4 eigenvalues 0.569 and 0.5.
   const fs::path scheme = write_quad_scheme(dir, "stiff", "0.9", "0.05/n", "0.05/n");
-  std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n0,0.3,0.7\n";
   const fs::path out = dir / "out.csv";
-  const std::string args = "evaluate " + kCube + " -s " + scheme.string() + " --at " + (dir / "points.csv").string() +
-                           " -o " + out.string();
-  const auto r = run_subdiv(args);
+  const auto r = evaluate_centre(dir, scheme);
   CHECK(r.exit_code == 1);
   CHECK(contains(r.output, "scheme 'stiff' is not C1"));
   CHECK(std::regex_search(r.output, std::regex("subdominant eigenvalues are 0\\.569\\d*, 0\\.5")));
   CHECK(contains(r.output, "`subdiv analyze " + scheme.string() + "`"));
   CHECK(contains(r.output, "--derivatives 0"));
   CHECK_FALSE(fs::exists(out));
-  const auto positions = run_subdiv(args + " --derivatives 0");
+  const auto positions = evaluate_centre(dir, scheme, " --derivatives 0");
   CHECK(positions.exit_code == 0);
   CHECK(fs::exists(out));
   const auto samples = run_subdiv("evaluate " + kCube + " -s " + scheme.string() + " --samples 2 -o " +
@@ -105,10 +108,8 @@ TEST_CASE("evaluate: a scheme that does not converge is refused with the reason 
   // Affine (3 - 1 - 1 = 1), so `subdiv validate` passes it; its local subdivision matrix has
   // an eigenvalue 2.4 > 1, so the levels run away.
   const fs::path scheme = write_quad_scheme(dir, "runaway", "3", "-1/n", "-1/n");
-  std::ofstream(dir / "points.csv") << "face,u,v\n0,0.5,0.5\n";
   const fs::path out = dir / "out.csv";
-  const auto r = run_subdiv_with_prefix("timeout 120 ", "evaluate " + kCube + " -s " + scheme.string() + " --at " +
-                                                           (dir / "points.csv").string() + " -o " + out.string());
+  const auto r = evaluate_centre(dir, scheme);
   CHECK(r.exit_code == 1);
   CHECK(contains(r.output, "scheme 'runaway' does not converge"));
   CHECK(contains(r.output, "lambda_0 = 1 is not the simple dominant eigenvalue"));
