@@ -21,6 +21,7 @@
 #include "framework/limit/adaptive_transitions.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_registry.h"
 #include "framework/util/byte_size_text.h"
 #include "framework/util/error.h"
 #include "framework/util/memory_limit.h"
@@ -328,8 +329,9 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& input, std::span
   const SplitKind split = scheme.split();
   if (split != SplitKind::Quad && split != SplitKind::Triangle)
     throw Error(fmt::format("scheme {}: adaptive refinement is implemented for the binary quad and triangle splits "
-                            "only so far",
-                            subdiv::quoted(scheme.name)));
+                            "only so far; refine it uniformly instead (`subdiv refine MESH -s {} -l {}`, with "
+                            "`--limit` for the finest level on the limit surface; Python: `subdivkit.refine`)",
+                            subdiv::quoted(scheme.name), scheme_argument(scheme), options.levels));
   const int levels = options.levels;
   if (levels < 0 || levels > 12) throw Error(fmt::format("adaptive refinement to level {}: give 0 to 12", levels));
   if ((options.limit || options.tolerance > 0) && !options.surface)

@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "framework/features/sharpness.h"
 
 namespace subdiv {
@@ -84,6 +86,24 @@ void derivatives(const LimitMask& mask, const Labelling& lab, const Level& L, co
   }
 }
 
+// Near a regular vertex the parameter contracts by `scale` per step and the limit by the
+// subdominant eigenvalues (Reif 1995, "A unified approach to subdivision algorithms near
+// extraordinary vertices"): the limit is differentiable there only when they are equal to
+// it. Otherwise a difference quotient grows or decays like (eigenvalue / scale)^k, and the
+// tangent masks would give a finite number that is no derivative.
+std::string scale_mismatch(const LimitMask& mask, const Level& L, Index c, double scale) {
+  if (scale <= 0 || mask.direction_eigenvalues.empty()) return {};
+  for (double z : mask.direction_eigenvalues)
+    if (std::fabs(z - scale) > 1e-6 * scale) {
+      std::string values;
+      for (double x : mask.direction_eigenvalues) values += (values.empty() ? "" : ", ") + fmt::format("{:.6g}", x);
+      return fmt::format("at a regular {}vertex of valence {} its subdominant eigenvalues are {}, where a surface "
+                         "differentiable in the face's parameters needs {:.6g} (the parameters' scale per step)",
+                         L.on_boundary(c) ? "boundary " : "", L.valence(c), values, scale);
+    }
+  return {};
+}
+
 }  // namespace
 
 // The parameter-space coordinates of the level's vertices with `face` at its own frame,
@@ -136,7 +156,7 @@ std::vector<Uv> unfold(const Level& L, Index face, bool triangles) {
 }
 
 bool corner_rows(SchemeLimits& limits, const Level& L, const FacePoint& p, int corner, int step, bool triangles,
-                 CornerRows& rows, std::string& mask_error) {
+                 CornerRows& rows, std::string& mask_error, double scale) {
   if (p.sub_face >= 0) return false;  // an n-gon's sub-face is not a face of the level yet
   const Index c = L.face(p.face)[size_t(corner)];
   bool semi_sharp = false;
@@ -153,7 +173,10 @@ bool corner_rows(SchemeLimits& limits, const Level& L, const FacePoint& p, int c
   rows = {};
   rows.position.assign(size_t(L.vertex_count), 0.0);
   for (size_t l = 0; l < mask->position.size(); ++l) rows.position[size_t(lab.vertices[l])] += mask->position[l];
-  if (regular_vertex(L, c, triangles)) derivatives(*mask, lab, L, p, corner, start, triangles, rows);
+  if (regular_vertex(L, c, triangles)) {
+    rows.no_derivatives = scale_mismatch(*mask, L, c, scale);
+    if (rows.no_derivatives.empty()) derivatives(*mask, lab, L, p, corner, start, triangles, rows);
+  }
   return true;
 }
 

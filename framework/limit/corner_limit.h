@@ -11,6 +11,7 @@
 // a tangent mask d gives d . P = (d . S) dP/ds + (d . T) dP/dt, two equations per mask for
 // the two unknown derivatives (Stam 1998, section 4, for Catmull-Clark's regular patches).
 #include <span>
+#include <string>
 
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/limit/face_domain.h"
@@ -31,12 +32,18 @@ struct CornerRows {
   // Second derivatives d2/ds2, d2/dsdt, d2/dt2: only from the polynomial patches
   // (bspline_patch.h, triangle_patch.h), empty at a vertex reached by the descent.
   std::vector<double> dss, dst, dtt;
+  // Why a regular vertex has no derivatives, where the scheme is at fault (not C1 there):
+  // the eigenvalues against the scale. Asking for derivatives there is refused.
+  std::string no_derivatives;
 };
 
 // The rows at the face's corner `corner`. False when the vertex's neighbourhood is not yet one the masks
 // describe (a semi-sharp feature, another irregular vertex nearby): refine and try again.
 // `mask_error` receives the analysis's reason when it has no mask for the configuration.
+// `scale`: the parameterisation's contraction per step of the analysis (1/2 for binary
+// splits), which a regular vertex's subdominant eigenvalues must equal for the limit to be
+// differentiable there; 0 leaves it unchecked.
 bool corner_rows(SchemeLimits& limits, const Level& level, const FacePoint& point, int corner, int step,
-                 bool triangles, CornerRows& rows, std::string& mask_error);
+                 bool triangles, CornerRows& rows, std::string& mask_error, double scale = 0);
 
 }  // namespace subdiv

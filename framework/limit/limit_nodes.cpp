@@ -11,6 +11,7 @@
 #include "framework/engine/refiner.h"
 #include "framework/limit/canonical_cut.h"
 #include "framework/limit/cut_weight_tables.h"
+#include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
 
@@ -34,6 +35,15 @@ void append_holes(const Level& cut, const Labelling& lab, std::vector<double>& k
     key.push_back(-2);
     for (Index l : h) key.push_back(double(l));
   }
+}
+
+// A scheme whose regular vertices' eigenvalues do not match the parameterisation
+// (corner_limit.h): the refusal of derivatives, with what to do instead.
+std::string not_c1(const Scheme& scheme, const std::string& why) {
+  return fmt::format("scheme {} is not C1, so its limit has no derivatives or normals: {}; check its rules with "
+                     "`subdiv analyze {}` (the l1=l2 column), or evaluate positions only (`subdiv evaluate --at "
+                     "POINTS.csv --derivatives 0`; Python: `derivatives=0`)",
+                     subdiv::quoted(scheme.name), why, scheme_argument(scheme));
 }
 
 std::string not_closed(const Scheme& scheme, int depth) {
@@ -329,7 +339,8 @@ const CornerRows* LimitNodes::corner_isolated(int id, int k, std::string& error)
     p.face = n.face;
     CornerRows rows;
     std::string why;
-    if (corner_rows(limits_, n.level, p, k, 0, triangles_, rows, why)) {
+    // Binary splits: the parameters halve per step.
+    if (corner_rows(limits_, n.level, p, k, 0, triangles_, rows, why, 0.5)) {
       auto by_label = [&](const std::vector<double>& r) {
         std::vector<double> out(size_t(n.kept), 0.0);
         for (size_t v = 0; v < r.size(); ++v) {
@@ -340,6 +351,7 @@ const CornerRows* LimitNodes::corner_isolated(int id, int k, std::string& error)
         return out;
       };
       n.corner[size_t(k)].position = by_label(rows.position);
+      if (!rows.no_derivatives.empty()) n.corner[size_t(k)].no_derivatives = not_c1(scheme_, rows.no_derivatives);
       if (!rows.ds.empty()) n.corner[size_t(k)].ds = by_label(rows.ds), n.corner[size_t(k)].dt = by_label(rows.dt);
       n.corner_ready[size_t(k)] = 1;
     } else {

@@ -32,6 +32,7 @@
 #include "framework/limit/tensor_patch.h"
 #include "framework/limit/triangle_patch.h"
 #include "framework/limit/face_domain.h"
+#include "framework/scheme/scheme_registry.h"
 #include "framework/scheme/step_tables.h"
 #include "framework/scheme/scheme.h"
 #include "framework/topology/non_manifold_place.h"
@@ -101,15 +102,29 @@ StepMatrix renumbering(const std::vector<Index>& order, Index source_count) {
 
 }  // namespace
 
+namespace {
+
+// A face number past the end or negative (a points file's row, a Python index).
+std::string no_such_face(Index face, Index count) {
+  if (count == 0) return fmt::format("face {} does not exist: the mesh has no faces", face);
+  return fmt::format("face {} does not exist: the mesh has {} faces, numbered from 0 to {}", face, count, count - 1);
+}
+
+}  // namespace
+
 std::string limit_surface_unsupported(const Scheme& scheme) {
   if (!scheme.linear())
     return fmt::format("scheme {} has non-linear rules: its limit is no fixed combination of the control points, "
-                       "so it has no limit masks or stencils to evaluate",
-                       subdiv::quoted(scheme.name));
+                       "so it has no limit masks or stencils to evaluate; refine it uniformly instead (`subdiv "
+                       "refine MESH -s {} -l L`; Python: `subdivkit.refine`), whose finest level approaches the limit",
+                       subdiv::quoted(scheme.name), scheme_argument(scheme));
   if (scheme_is_level_dependent(scheme))
     return fmt::format("scheme {} is non-stationary (its weights depend on the level l): the local subdivision "
-                       "matrix changes from level to level and has no fixed eigen-structure to evaluate the limit with",
-                       subdiv::quoted(scheme.name));
+                       "matrix changes from level to level and has no fixed eigen-structure to evaluate the limit "
+                       "with; refine it uniformly instead (`subdiv refine MESH -s {} -l L`; Python: "
+                       "`subdivkit.refine`), or run its level-dependent levels first in a sequence whose last "
+                       "scheme is stationary (`-s {}:K,STATIONARY`: that scheme's limit over the mesh they make)",
+                       subdiv::quoted(scheme.name), scheme_argument(scheme), scheme_argument(scheme));
   // Every split is taken here; the mid-edge and plugins' splits are checked with the mesh
   // (mid_edge_limit_unsupported, plugin_split_limit_unsupported).
   return {};
@@ -912,7 +927,7 @@ struct LimitSurface::Impl {
   FacePoint start(Index face, double u, double v) const {
     const char* why = "";
     if (face < 0 || face >= base.face_count())
-      throw Error(fmt::format("face {} does not exist (the mesh has {} faces)", face, base.face_count()));
+      throw Error(no_such_face(face, base.face_count()));
     if (base.is_hole(face)) throw Error(fmt::format("face {} is a hole: it has no limit surface", face));
     const auto p = base_face_point(base, face, u, v, triangles, &why);
     if (!p) throw Error(fmt::format("face {} at (u, v) = ({}, {}): {}", face, u, v, why));
@@ -948,6 +963,19 @@ struct LimitSurface::Impl {
     return walk(c, id, p, std::move(values), channels, derivatives, path, first_values, rows_out, true);
   }
 
+  // Why the descent found no limit mask. The analysis's verdict "fails: ..." means the
+  // vertex's local subdivision matrix lacks the simple dominant eigenvalue 1: the scheme
+  // does not converge there, which its rules, not the mesh, must change.
+  std::string no_limit_mask(int steps, const std::string& why) const {
+    if (!why.starts_with("fails: "))
+      return fmt::format("no limit mask for the vertex reached after {} steps{}{}", steps, why.empty() ? "" : ": ", why);
+    return fmt::format("scheme {} does not converge at the vertex the point reaches after {} steps ({}), so the "
+                       "limit does not exist there; check its rules with `subdiv analyze {}` (the verdict per "
+                       "valence) and make the vertex rule's weights give the eigenvalue 1 once and the others "
+                       "smaller",
+                       subdiv::quoted(scheme->name), steps, why.substr(7), scheme_argument(*scheme));
+  }
+
   // The descent from node `id` with the point p and the node's values; `closed_forms`:
   // regular nodes' patches may end it (off while those patches are being sampled).
   LimitSample walk(Cache& c, int id, FacePoint p, std::vector<double> values, int channels, int derivatives,
@@ -962,9 +990,7 @@ struct LimitSurface::Impl {
         // The face is 2^-max_steps of the base face: its nearest corner is the point to round-off.
         p.st = {std::round(p.st[0]), std::round(p.st[1])};
         if (triangles && p.st[0] + p.st[1] > 1) p.st[1] = 0;
-        if (iteration >= options.max_steps + 16)
-          throw Error(fmt::format("no limit mask for the vertex reached after {} steps{}{}", iteration,
-                                  mask_error.empty() ? "" : ": ", mask_error));
+        if (iteration >= options.max_steps + 16) throw Error(no_limit_mask(iteration, mask_error));
       }
       if (closed_forms && !triangles)
         if (const std::array<Index, 16>* grid = c.nodes->bspline(id))
@@ -1183,6 +1209,7 @@ struct LimitSurface::Impl {
   static LimitSample finish(const CornerRows& rows, const FacePoint& p, const std::vector<double>& values, int channels,
                             int derivatives, const std::vector<const StepMatrix*>& path,
                             const std::vector<double>& first_values, int iteration, DerivativeRows* rows_out) {
+    if (derivatives >= 1 && !rows.no_derivatives.empty()) throw Error(rows.no_derivatives);
     LimitSample out;
     out.steps = iteration;
     out.position = applied(rows.position, values, channels);
@@ -1450,7 +1477,7 @@ LimitSurface::LimitSurface(std::vector<LimitHeadRun> head, std::shared_ptr<const
 
 LimitStencil LimitSurface::sequence_stencil(Index face, double u, double v, int derivatives) const {
   if (face < 0 || face >= impl_->base.face_count())
-    throw Error(fmt::format("face {} does not exist (the mesh has {} faces)", face, impl_->base.face_count()));
+    throw Error(no_such_face(face, impl_->base.face_count()));
   if (impl_->base.is_hole(face)) throw Error(fmt::format("face {} is a hole: it has no limit surface", face));
   const FacePoint q = impl_->head->map(impl_->base, face, u, v);
   const LimitStencil w = impl_->tail->stencil(q.face, q.st[0], q.st[1], derivatives);
@@ -1537,7 +1564,7 @@ std::string LimitSurface::check(Index face, double u, double v) const {
   try {
     if (impl_->tail) {
       if (face < 0 || face >= impl_->base.face_count())
-        throw Error(fmt::format("face {} does not exist (the mesh has {} faces)", face, impl_->base.face_count()));
+        throw Error(no_such_face(face, impl_->base.face_count()));
       if (impl_->base.is_hole(face)) throw Error(fmt::format("face {} is a hole: it has no limit surface", face));
       impl_->head->map(impl_->base, face, u, v);
       return {};

@@ -173,8 +173,14 @@ std::array<double, 3> limit_normal(const LimitSurface& s, const SurfaceSample& s
   return unit_normal(p.du, p.dv, negligible);
 }
 
+void check_segments(int N) {
+  if (N < 1 || N > kMaxSegments)
+    throw OptionError(fmt::format("{{samples}} {}: give 1 to {} segments per face edge", N, kMaxSegments));
+}
+
 // N up to 1024 per edge on a large mesh asks for billions of points.
 void check_samples_fit(const Level& base, bool triangles, int N, size_t face_varying_channels) {
+  check_segments(N);
   double points = 0;
   const double half = double(N / 2) + 1;
   for (Index f = 0; f < base.face_count(); ++f) {
@@ -193,7 +199,6 @@ void check_samples_fit(const Level& base, bool triangles, int N, size_t face_var
 }
 
 Tessellation tessellation_grid(const Level& topology, const Level& base, bool triangles, int N) {
-  if (N < 1) throw OptionError(fmt::format("{{samples}} {}: the number of segments per edge must be at least 1", N));
   check_samples_fit(base, triangles, N);
   Builder b{topology, {}, {}, {}};
   for (Index f = 0; f < base.face_count(); ++f) {

@@ -45,6 +45,12 @@ using SurfaceSample = std::function<void(Index face, double u, double v, LimitSa
 std::array<double, 3> limit_normal(const LimitSurface& surface, const SurfaceSample& sample, LimitSample& p,
                                    Index face, double u, double v, double negligible = 0);
 
+// The most segments per face edge a front-end may ask for (`subdiv evaluate --samples`,
+// Python's tessellate, ParaView's Samples): 1024 already makes a million points per quad.
+inline constexpr int kMaxSegments = 1024;
+// Refuses (OptionError naming {samples}) N outside 1 to kMaxSegments.
+void check_segments(int N);
+
 // Refuses (OptionError naming {samples}), before any work, a grid of N segments per edge over
 // `base` that would not fit in memory with `face_varying_channels` channels sampled on it too
 // (sampled_limit_mesh); tessellation_grid checks its own grid alone.

@@ -4,6 +4,7 @@
 
 #include "framework/limit/tessellation.h"
 #include "framework/limit/unit_normal.h"
+#include "framework/pipeline/phase_progress.h"
 #include "framework/util/memory_limit.h"
 
 namespace subdiv {
@@ -48,9 +49,12 @@ MeshData sample(const PreparedEvaluation& prepared, int segments) {
 
 }  // namespace
 
-MeshData sampled_limit_mesh(const PreparedEvaluation& prepared, int segments) {
+MeshData sampled_limit_mesh(const PreparedEvaluation& prepared, int segments,
+                            const std::function<void(const std::string&)>& say,
+                            const std::function<void(double)>& fraction) {
   // The channels' grids too are counted before any sample, not one grid at a time.
   check_samples_fit(prepared.surface->base(), prepared.surface->triangles(), segments, prepared.face_varying.size());
+  const PhaseProgress bar(say, fraction, fmt::format("sampling the limit surface, {} x {} per face", segments, segments));
   return advising_when_out_of_memory(fmt::format("sampling the limit surface with {} segments per face edge", segments),
                                      kFewerSamplesAdvice, [&] { return sample(prepared, segments); });
 }

@@ -1,6 +1,9 @@
 #pragma once
 // The limit surface sampled as a mesh that every front-end writes or shows the same way
 // (`subdiv evaluate --samples N`, ParaView's "SubdivKit Limit").
+#include <functional>
+#include <string>
+
 #include "framework/io/mesh_data.h"
 #include "framework/pipeline/evaluate_request.h"
 
@@ -15,6 +18,11 @@ namespace subdiv {
 // surface has no normal (tessellation.h, zero_normals_warning) "Normals" is (0, 0, 0) and
 // `warnings` says how many and where, for the front-end to show. Throws subdiv::Error as
 // tessellate() does (segments < 1, odd with sub-faces).
-MeshData sampled_limit_mesh(const PreparedEvaluation& prepared, int segments);
+// `say` hears the phase ("sampling the limit surface, 8 x 8 per face") once the request is
+// known to fit, `fraction` the share of the samples done (both may be empty); the scope that
+// carries them is opened here, in the library, whose thread-local progress the loops read.
+MeshData sampled_limit_mesh(const PreparedEvaluation& prepared, int segments,
+                            const std::function<void(const std::string&)>& say = {},
+                            const std::function<void(double)>& fraction = {});
 
 }  // namespace subdiv

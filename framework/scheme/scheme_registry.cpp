@@ -84,6 +84,16 @@ std::shared_ptr<const CurveScheme> resolve_curve(const std::string& name, const 
 
 std::string scheme_file_path(const std::string& name_or_path) { return find_scheme_file(name_or_path).string(); }
 
+std::string scheme_argument(const Scheme& scheme) {
+  if (scheme.path.empty() || find_code_scheme(scheme.name)) return scheme.name;
+  try {
+    std::error_code ec;
+    if (fs::equivalent(find_scheme_file(scheme.name), scheme.path, ec) && !ec) return scheme.name;
+  } catch (const Error&) {
+  }
+  return scheme.path;
+}
+
 std::shared_ptr<const Scheme> load_scheme(const std::string& name_or_path, const ParameterOverrides& overrides) {
   if (const CodeSchemeEntry* code = looks_like_path(name_or_path) ? nullptr : find_code_scheme(name_or_path)) {
     if (code->kind != "surface")

@@ -21,6 +21,10 @@ std::shared_ptr<const Scheme> load_scheme(const std::string& name_or_path,
 // The file a built-in name or a path stands for; throws with the known names if none.
 std::string scheme_file_path(const std::string& name_or_path);
 
+// How a message tells the user to name `scheme` with `-s`: its name where the name finds
+// it (built-in, search path, plugin), else its file.
+std::string scheme_argument(const Scheme& scheme);
+
 // A curve scheme by built-in name, plugin name or path. Overrides it has no parameter for
 // are an error, unless `used` is given: then the names it took are added there.
 std::shared_ptr<const CurveScheme> load_curve(const std::string& name_or_path, const ParameterOverrides& overrides = {},

@@ -6,6 +6,7 @@
 
 #include "bindings.h"
 #include "framework/pipeline/approximation_request.h"
+#include "framework/pipeline/limit_mesh.h"
 #include "framework/pipeline/rational_weights.h"
 #include "framework/util/quoted_text.h"
 
@@ -136,12 +137,15 @@ py::dict stencils(const LimitSurfaceHandle& h, py::handle faces, py::handle uv, 
 
 // The sampled limit surface as `subdiv evaluate --samples N` writes it (pipeline/limit_mesh.h),
 // as arrays for subdivkit.Mesh.
-py::dict tessellate(const LimitSurfaceHandle& h, int samples, int threads) {
+py::dict tessellate(const LimitSurfaceHandle& h, int samples, int threads, py::handle progress) {
   subdiv::MeshData m;
   {
+    std::function<void(const std::string&)> say;
+    std::function<void(double)> fraction;
+    if (!progress.is_none()) progress_callbacks(progress, say, fraction);
     py::gil_scoped_release unlocked;
     const subdiv::ThreadLimit limit(threads);
-    m = subdiv::sampled_limit_mesh(*h.prepared, samples);
+    m = subdiv::sampled_limit_mesh(*h.prepared, samples, say, fraction);
   }
   std::vector<subdiv::DataArray> point_data = std::move(m.point_data), cell_data = std::move(m.cell_data);
   std::vector<subdiv::FaceVaryingArray> face_varying = std::move(m.face_varying);
@@ -212,7 +216,7 @@ void bind_limit_surface(py::module_& m) {
       .def("evaluate", &evaluate, py::arg("faces"), py::arg("uv"), py::arg("derivatives"), py::arg("values"),
            py::arg("channels"), py::arg("threads"))
       .def("stencils", &stencils, py::arg("faces"), py::arg("uv"), py::arg("derivatives"), py::arg("threads"))
-      .def("tessellate", &tessellate, py::arg("samples"), py::arg("threads"))
+      .def("tessellate", &tessellate, py::arg("samples"), py::arg("threads"), py::arg("progress") = py::none())
       .def("approximate_bezier", &approximate_bezier, py::arg("samples"), py::arg("threads"))
       .def("approximate_gregory", &approximate_gregory, py::arg("samples"), py::arg("threads"))
       .def_property_readonly("scheme_label", [](const LimitSurfaceHandle& h) { return h.prepared->scheme_label; })

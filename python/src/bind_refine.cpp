@@ -218,17 +218,22 @@ py::list stencils(py::handle mesh, py::handle scheme, py::handle params, int lev
 // progress(phase, done): the phase as it starts (done None), then the share of the long
 // work done, 0 to 1. Called on the calling thread with the GIL taken; the callable outlives
 // the call, so the handle holds no reference (no refcounting without the GIL).
-void report_progress(subdiv::RefineRequest& request, py::handle progress) {
+void progress_callbacks(py::handle progress, std::function<void(const std::string&)>& say,
+                        std::function<void(double)>& fraction) {
   auto phase = std::make_shared<std::string>();
-  request.progress = [progress, phase](const std::string& now) {
+  say = [progress, phase](const std::string& now) {
     *phase = now;
     py::gil_scoped_acquire gil;
     progress(now, py::none());
   };
-  request.progress_fraction = [progress, phase](double done) {
+  fraction = [progress, phase](double done) {
     py::gil_scoped_acquire gil;
     progress(*phase, done);
   };
+}
+
+void report_progress(subdiv::RefineRequest& request, py::handle progress) {
+  progress_callbacks(progress, request.progress, request.progress_fraction);
 }
 
 void bind_refine(py::module_& m) {

@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -133,6 +134,9 @@ subdiv::Level surface_base(const subdiv::MeshData& mesh, const std::string& name
 // progress(phase, done) as the request's progress callbacks (bind_refine.cpp): the phase as
 // it starts (done None), then the share of the long work done, 0 to 1.
 void report_progress(subdiv::RefineRequest& request, py::handle progress);
+// The same two callbacks for work the front-end runs in a PhaseProgress (pipeline/phase_progress.h).
+void progress_callbacks(py::handle progress, std::function<void(const std::string&)>& say,
+                        std::function<void(double)>& fraction);
 
 void bind_schemes(py::module_& m);
 void bind_mesh_io(py::module_& m);

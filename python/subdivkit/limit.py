@@ -13,7 +13,7 @@ import numpy as np
 
 from . import _subdivkit
 from ._subdivkit import Error, Scheme
-from ._checks import check_mesh, check_threads, check_whole
+from ._checks import check_mesh, check_progress, check_threads, check_whole
 from .mesh import Mesh, _data_shapes_like, _face_varying_triples
 from .refinement import _scipy_sparse
 
@@ -117,6 +117,12 @@ class LimitSurface:
     What is learnt about the mesh is kept between calls, so later calls are faster; calls
     release the GIL and may run from several Python threads at once.
 
+    The mesh is copied when the surface is made: changing the Mesh afterwards (its points,
+    faces or tags) does not change the surface. Evaluate other positions with
+    ``evaluate(points=...)``; for another topology make a new LimitSurface. It cannot be
+    pickled or copied (it holds the prepared native surface): pickle the Mesh, which can be,
+    and make the LimitSurface again where it is needed.
+
     Examples
     --------
     >>> S = sk.LimitSurface(cube, "catmull-clark")
@@ -134,6 +140,10 @@ class LimitSurface:
                                                            str(fvar_boundary))
         self.name = mesh.name
         self.scheme = scheme.name if isinstance(scheme, Scheme) else str(scheme)
+
+    def __reduce__(self):
+        raise TypeError("a LimitSurface cannot be pickled or copied: it holds the prepared native surface; "
+                        "pickle its Mesh instead and make LimitSurface(mesh, scheme) again where it is needed")
 
     @property
     def triangles(self):
@@ -201,13 +211,19 @@ class LimitSurface:
         return LimitEvaluation(points=r["points"], du=r.get("du"), dv=r.get("dv"), duu=r.get("duu"),
                                duv=r.get("duv"), dvv=r.get("dvv"))
 
-    def tessellate(self, samples=4, *, threads=0):
+    def tessellate(self, samples=4, *, threads=0, progress=None):
         """The limit surface as a crack-free Mesh, as ``subdiv evaluate --samples N`` writes it.
 
-        samples : segments per face edge: a quad becomes samples x samples quads, a
-            triangle of a triangle scheme samples² triangles, another face of a quad scheme
-            its sub-faces of samples/2 x samples/2 (then samples must be even).
+        samples : segments per face edge, 1 to 1024 as ``--samples``: a quad becomes
+            samples x samples quads, a triangle of a triangle scheme samples² triangles,
+            another face of a quad scheme its sub-faces of samples/2 x samples/2 (then
+            samples must be even).
         threads : worker threads, 0 for all cores.
+        progress : called as ``progress(phase, done)`` on the calling thread, as for
+            refine(): ``done`` is None when the phase starts ("sampling the limit surface,
+            8 x 8 per face", the phase ``subdiv evaluate --samples`` shows a bar for), then
+            the share done, 0 to 1. An exception it raises stops the sampling and comes
+            back from here.
 
         Points on a base vertex or edge are evaluated once and shared, so a closed mesh
         gives a closed surface. point_data: "Normals" (the unit limit normal, role
@@ -219,7 +235,9 @@ class LimitSurface:
         folded flat) "Normals" is (0, 0, 0) and a UserWarning says how many such points
         there are and the first one's face and (u, v).
         """
-        r = self._prepared.tessellate(check_whole(samples, "samples", "give a whole number of segments per face edge"), check_threads(threads))
+        check_progress(progress, "tessellate")
+        r = self._prepared.tessellate(check_whole(samples, "samples", "give a whole number of segments per face edge"),
+                                      check_threads(threads), progress)
         return _sampled_mesh("tessellate", r, self.name)
 
     def approximate_bezier(self, samples=4, *, threads=0):

@@ -282,6 +282,26 @@ def test_tessellate_gives_the_closed_sampled_limit_with_its_normals_and_uvs():
         sk.LimitSurface(sk.read_mesh(str(MESHES / "pyramid.obj")), "catmull-clark").tessellate(3)
 
 
+def test_tessellate_takes_the_command_lines_cap_and_reports_its_progress():
+    """tessellate(N) refuses N beyond `subdiv evaluate --samples`'s 1024 at once, by name and with
+    the range (it used to start on 10**6 segments per edge until memory ran out), and reports the
+    phase the command line draws a bar for, then shares done from 0 to 1."""
+    S = sk.LimitSurface(cube(), "catmull-clark")
+    for n in (1025, 10**6, 0):
+        with pytest.raises(sk.Error, match=f"samples {n}: give 1 to 1024 segments per face edge"):
+            S.tessellate(n)
+    cli = run_cli("evaluate", MESHES / "cube.obj", "--samples", "1025", "-o", "never.vtp", check=False)
+    assert cli.returncode != 0 and "1 to 1024" in cli.stderr
+    calls = []
+    m = S.tessellate(8, progress=lambda phase, done: calls.append((phase, done)))
+    assert m.n_faces == 6 * 64
+    assert calls[0] == ("sampling the limit surface, 8 x 8 per face", None)
+    shares = [d for p, d in calls[1:]]
+    assert shares and all(0 <= d <= 1 for d in shares) and shares == sorted(shares)
+    with pytest.raises(sk.Error, match="progress=3"):
+        S.tessellate(2, progress=3)
+
+
 def test_approximate_bezier_is_the_command_line_mesh_and_exact_where_every_valence_is_4(tmp_path):
     """LimitSurface.approximate_bezier(N) is `subdiv evaluate --approximate bezier --samples N`'s
     mesh (one pipeline request); on a regular torus the patches are the exact limit; a
@@ -404,3 +424,21 @@ def test_sample_points_without_a_normal_are_zero_with_a_warning():
         warnings.simplefilter("error")
         n = np.linalg.norm(sk.LimitSurface(cube()).tessellate(4).point_data["Normals"], axis=1)
     assert np.allclose(n, 1.0)
+
+
+def test_a_limit_surface_refuses_pickling_and_copies_by_saying_what_to_do_and_keeps_its_mesh():
+    """pickle and copy raised "cannot pickle '_LimitSurface' object" (the native class's name);
+    they now say what to pickle instead. The surface keeps the mesh it was made from: changing
+    the Mesh afterwards changes nothing, as the docstring says."""
+    import copy
+    import pickle
+    mesh = cube()
+    S = sk.LimitSurface(mesh, "catmull-clark")
+    for how in (pickle.dumps, copy.copy, copy.deepcopy):
+        with pytest.raises(TypeError, match="pickle its Mesh instead and make LimitSurface"):
+            how(S)
+    before = S.evaluate([0], [[0.3, 0.3]]).points
+    mesh.points[:] = mesh.points * 2
+    assert np.array_equal(S.evaluate([0], [[0.3, 0.3]]).points, before)
+    assert np.array_equal(S.evaluate([0], [[0.3, 0.3]], points=mesh.points).points, 2 * before)
+    assert pickle.loads(pickle.dumps(mesh)).n_faces == mesh.n_faces

@@ -282,11 +282,7 @@ void run_mode(const EvaluateArgs& a) {
   const auto say = progress.phase_callback();
   const auto fraction = progress.fraction_callback();
   if (a.samples > 0) {
-    MeshData sampled;
-    {
-      const PhaseProgress bar(say, fraction, fmt::format("sampling the limit surface, {} x {} per face", a.samples, a.samples));
-      sampled = sampled_limit_mesh(prepared, a.samples);
-    }
+    const MeshData sampled = sampled_limit_mesh(prepared, a.samples, say, fraction);
     write_with_bar(a.output, sampled, progress);
     return;
   }
@@ -361,7 +357,7 @@ void add_evaluate_command(CLI::App& app) {
                   "triangle (faces with other sizes: N/2 x N/2 per sub-face, N even), with normals; face-varying "
                   "data (UVs) sampled at every corner, split at its seams; rational weights honoured; Normals "
                   "(0,0,0), with a warning, where the surface has none")
-      ->check(CLI::Range(1, 1024));
+      ->check(CLI::Range(1, kMaxSegments));
   cmd->add_option("--adaptive", args->adaptive,
                   "Instead of --at: the mesh refined to level L only where it is irregular (extraordinary vertices, "
                   "creases, sharp vertices, faces of another shape), watertight (coarse faces take the finer "

@@ -245,6 +245,7 @@ struct SchemeLimits::Impl {
     }
     m.position = a.limit_mask;
     m.directions = a.direction_masks;
+    m.direction_eigenvalues = a.direction_eigenvalues;
     m.cyclic = a.directions_cyclic;
     m.ok = true;
   }
@@ -341,6 +342,7 @@ struct SchemeLimits::Impl {
       return m;
     }
     store_pulled(p, pull_back_masks(face, a.label_vertices, h.stencils[0]), face.directions.size(), a.ring + 3, m);
+    m.direction_eigenvalues = face.direction_eigenvalues;
     return m;
   }
 

@@ -50,6 +50,7 @@ struct LimitMask {
   // Directions towards the ring neighbours (SurfaceAnalysis::direction_masks); the normal
   // is the sum of the sector normals. Empty: no tangent plane was found.
   std::vector<std::vector<double>> directions;
+  std::vector<double> direction_eigenvalues;  // SurfaceAnalysis::direction_eigenvalues
   bool cyclic = true;
 };
 

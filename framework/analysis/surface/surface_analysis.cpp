@@ -554,6 +554,7 @@ void add_direction_masks(const LocalSpectrum& s, const std::vector<Complex>& ev,
   Matrix lb(n, 0), rb(n, 0);
   size_t i = 1;
   double last = 0;
+  std::vector<double> clusters;
   while (lb.cols() < 2 && i < ev.size()) {
     size_t j = i + 1;
     while (j < ev.size() && std::abs(ev[j] - ev[i]) <= kClusterTolerance * std::max(1.0, std::abs(ev[i]))) ++j;
@@ -568,6 +569,7 @@ void add_direction_masks(const LocalSpectrum& s, const std::vector<Complex>& ev,
     r2 << rb, b;
     lb = l2, rb = r2;
     last = z.real();
+    clusters.push_back(last);
     i = j;
   }
   if (lb.cols() < 2) return;
@@ -598,6 +600,7 @@ void add_direction_masks(const LocalSpectrum& s, const std::vector<Complex>& ev,
   }
   out.directions_cyclic = p.centre_kind == CentreKind::Face || !p.level.on_boundary(p.centre);
   out.tangent_dimension = int(lb.cols());
+  out.direction_eigenvalues = clusters;
 }
 
 // Stage 1: refine the patch until the centre's neighbourhood repeats. A step that leaves

@@ -112,6 +112,8 @@ struct SurfaceAnalysis {
   std::vector<std::vector<double>> direction_masks;
   bool directions_cyclic = true;
   int tangent_dimension = 0;  // dimension of that eigenspace: 2 where smooth, 3 on a crease...
+  // The eigenvalues of the direction masks, one per cluster they span, largest first.
+  std::vector<double> direction_eigenvalues;
 
 };
 

@@ -179,7 +179,8 @@ TEST_CASE("subdiv evaluate refuses bad rows with their number and leaves no outp
     const char* points;
     const char* message;
   };
-  for (const Bad& b : {Bad{"face,u,v\n0,0.1,0.1\n6,0.5,0.5\n", "(row 2): face 6 does not exist"},
+  for (const Bad& b : {Bad{"face,u,v\n0,0.1,0.1\n6,0.5,0.5\n", "(row 2): face 6 does not exist: the mesh has 6 faces, numbered from 0 to 5"},
+                       Bad{"face,u,v\n-1,0.5,0.5\n", "(row 1): face -1 does not exist: the mesh has 6 faces, numbered from 0 to 5"},
                        Bad{"face,u,v\n0,1.5,0.5\n", "(row 1): face 0 at (u, v) = (1.5, 0.5): (u, v) is outside"},
                        Bad{"face,u,v\n0,x,0.5\n", "(row 1): u = 'x' is not a number"},
                        Bad{"face,u\n0,0.5\n", "must be 'face,u,v'"},

@@ -1,0 +1,83 @@
+// A scheme a student got wrong in a way `subdiv validate` cannot see: affine, symmetric and
+// convergent, but not C1 on regular quads. Its limit has no derivatives, so asking for them is
+// refused; positions are still evaluated. A scheme with other rules that is C1 there keeps its
+// derivatives (checked against difference quotients of its own limit positions).
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+#include "framework/limit/limit_surface.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/util/error.h"
+#include "support/test_meshes.h"
+
+using namespace subdiv;
+
+namespace {
+
+// Catmull-Clark's face and edge rules with the vertex rule `vertex` (its three weights: the
+// vertex, each ring neighbour, each new face point).
+std::shared_ptr<const Scheme> quad_scheme(const std::string& name, const std::string& edge_ends,
+                                          const std::string& edge_faces, const std::string vertex[3]) {
+  const std::string text = R"({"name": ")" + name + R"(", "split": "quad", "faces": "any", "curve": "cubic-bspline",
+    "rules": {"face": [{"sum": "vertices", "w": "1/k"}],
+              "edge": [{"sum": "ends", "w": ")" + edge_ends + R"("}, {"sum": "faces", "new": "face", "w": ")" +
+                           edge_faces + R"("}],
+              "vertex": [{"at": "self", "w": ")" + vertex[0] + R"("}, {"sum": "ring", "w": ")" + vertex[1] +
+                           R"("}, {"sum": "faces", "new": "face", "w": ")" + vertex[2] + R"("}]}})";
+  return load_scheme_text(text, name + ".json");
+}
+
+std::array<double, 3> position(const LimitSurface& s, const std::vector<double>& p, double u, double v) {
+  const LimitSample x = s.evaluate(0, u, v, p, 3, 0);
+  return {x.position[0], x.position[1], x.position[2]};
+}
+
+}  // namespace
+
+TEST_CASE("a scheme that is not C1 at regular vertices: derivatives refused with the reason, positions evaluated") {
+  // Vertex rule 0.9 v + 0.05/n (ring) + 0.05/n (face points): at valence 4 the subdominant
+  // eigenvalues are 0.569 and 0.5 (`subdiv analyze`), not the 1/2 twice of a surface
+  // differentiable in the halving parameters.
+  const std::string vertex[3] = {"0.9", "0.05/n", "0.05/n"};
+  const auto scheme = quad_scheme("stiff-vertices", "1/4", "1/4", vertex);
+  const test::Mesh torus = test::torus(8, 8);  // every vertex regular
+  const LimitSurface surface(scheme, torus.level());
+  const std::vector<double>& P = torus.positions;
+  // The difference quotients at the face's centre (a vertex after one step) grow without bound.
+  const auto c = position(surface, P, 0.5, 0.5);
+  double largest_coarse = 0, largest_fine = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto a = position(surface, P, 0.5 + std::ldexp(1.0, -8), 0.5);
+    const auto b = position(surface, P, 0.5 + std::ldexp(1.0, -28), 0.5);
+    largest_coarse = std::max(largest_coarse, std::fabs(a[size_t(axis)] - c[size_t(axis)]) * std::ldexp(1.0, 8));
+    largest_fine = std::max(largest_fine, std::fabs(b[size_t(axis)] - c[size_t(axis)]) * std::ldexp(1.0, 28));
+  }
+  CHECK(largest_fine > 2 * largest_coarse);
+  for (double u : {0.5, 0.3, 0.0}) {
+    CAPTURE(u);
+    CHECK_THROWS_WITH_AS(surface.evaluate(0, u, 0.5, P, 3, 1),
+                         doctest::Contains("is not C1, so its limit has no derivatives"), Error);
+    CHECK_THROWS_WITH_AS(surface.evaluate(0, u, 0.5, P, 3, 1), doctest::Contains("--derivatives 0"), Error);
+    CHECK_THROWS_WITH_AS(surface.evaluate(0, u, 0.5, P, 3, 1), doctest::Contains("stiff-vertices.json"), Error);
+  }
+}
+
+TEST_CASE("a scheme with other weights that is C1 at regular vertices keeps its derivatives") {
+  // Edge points 1/8 (ends) + 3/8 (face points): eigenvalues 1/2, 1/2 at valence 4, C1.
+  const std::string vertex[3] = {"(n-2)/n", "1/n^2", "1/n^2"};
+  const auto scheme = quad_scheme("heavy-faces", "1/8", "3/8", vertex);
+  const test::Mesh torus = test::torus(8, 8);
+  const LimitSurface surface(scheme, torus.level());
+  const std::vector<double>& P = torus.positions;
+  const double h = std::ldexp(1.0, -12);
+  for (double u : {0.5, 0.3}) {
+    CAPTURE(u);
+    const LimitSample s = surface.evaluate(0, u, 0.5, P, 3, 1);
+    REQUIRE(s.has_derivatives);
+    const auto a = position(surface, P, u + h, 0.5), b = position(surface, P, u - h, 0.5);
+    for (int axis = 0; axis < 3; ++axis)
+      CHECK(s.du[size_t(axis)] == doctest::Approx((a[size_t(axis)] - b[size_t(axis)]) / (2 * h)).epsilon(1e-3));
+  }
+}
