@@ -28,15 +28,22 @@ std::vector<Uv> unfold(const Level& level, Index face, bool triangles);
 // the face's own coordinates (empty where the vertex is not regular).
 struct CornerRows {
   std::vector<double> position, ds, dt;  // one weight per vertex of the level
-  // Second derivatives d2/ds2, d2/dsdt, d2/dt2: only from the polynomial patches
-  // (bspline_patch.h, triangle_patch.h), empty at a vertex reached by the descent.
+  // Second derivatives d2/ds2, d2/dsdt, d2/dt2: from the polynomial patches (bspline_patch.h,
+  // triangle_patch.h), or at a vertex with `second` (below); else empty.
   std::vector<double> dss, dst, dtt;
 };
 
 // The rows at the face's corner `corner`. False when the vertex's neighbourhood is not yet one the masks
 // describe (a semi-sharp feature, another irregular vertex nearby): refine and try again.
 // `mask_error` receives the analysis's reason when it has no mask for the configuration.
+// With `second`, also the second derivatives at a regular interior vertex whose analysis has
+// second-derivative masks (LimitMask::quadratic), each a combination of d2/ds2, d2/dsdt,
+// d2/dt2 whose factors follow from quadratic generation as the tangents' do from linear
+// precision: control points at the values of a quadratic q(s, t) at their unfolded (s, t)
+// have q plus an affine function as their limit, which the masks do not see, so a mask m
+// gives m . P = (m . S²/2) P_ss + (m . S T) P_st + (m . T²/2) P_tt. Only for a scheme that
+// generates quadratics there (checked by the callers' tests against central differences).
 bool corner_rows(SchemeLimits& limits, const Level& level, const FacePoint& point, int corner, int step,
-                 bool triangles, CornerRows& rows, std::string& mask_error);
+                 bool triangles, CornerRows& rows, std::string& mask_error, bool second = false);
 
 }  // namespace subdiv

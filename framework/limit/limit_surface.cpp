@@ -1697,6 +1697,7 @@ LimitStencil LimitSurface::stencil(Index face, double u, double v, int derivativ
     Sqrt3Limit::Rows r;
     LimitSample out = impl_->sqrt3->evaluate(p, unit, int(n), derivatives, &r);
     rows.du = std::move(r.du), rows.dv = std::move(r.dv);
+    rows.duu = std::move(r.duu), rows.duv = std::move(r.duv), rows.dvv = std::move(r.dvv);
     return out;
   }) : impl_->dual ? tbb::this_task_arena::isolate([&] {
     original = impl_->dual->reads(p);

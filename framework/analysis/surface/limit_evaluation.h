@@ -51,6 +51,11 @@ struct LimitMask {
   // is the sum of the sector normals. Empty: no tangent plane was found.
   std::vector<std::vector<double>> directions;
   bool cyclic = true;
+  // Second-derivative masks (SurfaceAnalysis::quadratic_masks), valid where the neighbourhood
+  // matches `quadratic_signature` up to `quadratic_radius`; empty where the analysis has none.
+  std::vector<std::vector<double>> quadratic;
+  int quadratic_radius = 0;
+  std::vector<double> quadratic_signature;
 };
 
 struct LimitResult {
