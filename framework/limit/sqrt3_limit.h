@@ -39,11 +39,13 @@
 // the trisection points, so two steps are the same triadic split with the trisection points
 // at (2a + b)/3 and (a + 2b)/3 (sqrt3_nodes.cpp), and a boundary vertex's limit is its limit
 // mask from the boundary configuration's subdivision matrix (the analysis). No derivatives
-// on the boundary itself (its vertices included): the tangent masks are
-// scaled by linear precision, which the boundary rules lack within two rings of the
-// boundary (the first step's face point of a boundary triangle has 5 neighbours and the
-// vertex rule moves it off its parameter); a point off the boundary descends until its
-// vertex is 4 rings from it. Holes remove faces, not rules: the cuts drop the tags.
+// on the boundary itself (its vertices included): across it they do not exist in this
+// parameterisation (the rows next to the boundary shrink by about 0.37 per double step
+// against the parameter's 1/3, and at a boundary vertex the directional derivatives are not
+// linear; measured, docs/limit.md). Near it the tangent masks are scaled by linear precision,
+// which the boundary rules lack within two rings of the boundary (the first step's face point
+// of a boundary triangle has 5 neighbours and the vertex rule moves it off its parameter),
+// so a point off the boundary descends until its vertex is 4 rings from it. Holes remove faces, not rules: the cuts drop the tags.
 //
 // Sharp edges are kept and trisected like a boundary (refine/sqrt3_split.cpp), so creases
 // take the same road, the cuts keeping their sharpness; no derivatives on a crease. An edge
