@@ -146,40 +146,36 @@ bool regular_corner(const Level& L, Index v) {
   return L.incident_face_count(v) == 6 && (sharp.empty() || (sharp.size() == 2 && sharp[1] - sharp[0] == 3));
 }
 
-// Whether a vertex on a feature lies within `rings` edges of v (fewer than the cut's radius,
-// so the cut's rim is not met).
-bool near_boundary(const Level& L, Index v, int rings) {
-  std::vector<Index> front{v}, seen{v};
+// Whether a vertex within `rings` edges of `from` satisfies `pred` (rings fewer than the cut's
+// radius, so the cut's rim is not met).
+template <class Pred>
+bool any_within(const Level& L, std::vector<Index> from, int rings, Pred pred) {
+  std::vector<Index> seen = from;
   for (int r = 0; r <= rings; ++r) {
     std::vector<Index> next;
-    for (Index w : front) {
-      if (on_feature(L, w)) return true;
+    for (Index w : from) {
+      if (pred(w)) return true;
       for (Index e : L.ring_edges(w)) {
         const Index x = L.other_end(e, w);
         if (std::find(seen.begin(), seen.end(), x) == seen.end()) seen.push_back(x), next.push_back(x);
       }
     }
-    front.swap(next);
+    from.swap(next);
   }
   return false;
+}
+
+// Whether a vertex on a feature lies within `rings` edges of v.
+bool near_boundary(const Level& L, Index v, int rings) {
+  return any_within(L, {v}, rings, [&](Index w) { return on_feature(L, w); });
 }
 
 // Every vertex within `rings` edges of the face's corners is interior, of valence 6 and
 // without sharpness.
 bool regular_disc(const Level& L, Index face, int rings) {
-  std::vector<Index> front(L.face(face).begin(), L.face(face).end()), seen = front;
-  for (int r = 0; r <= rings; ++r) {
-    std::vector<Index> next;
-    for (Index w : front) {
-      if (on_feature(L, w) || L.incident_face_count(w) != 6) return false;
-      for (Index e : L.ring_edges(w)) {
-        const Index x = L.other_end(e, w);
-        if (std::find(seen.begin(), seen.end(), x) == seen.end()) seen.push_back(x), next.push_back(x);
-      }
-    }
-    front.swap(next);
-  }
-  return true;
+  const auto corners = L.face(face);
+  return !any_within(L, std::vector<Index>(corners.begin(), corners.end()), rings,
+                     [&](Index w) { return on_feature(L, w) || L.incident_face_count(w) != 6; });
 }
 
 }  // namespace
