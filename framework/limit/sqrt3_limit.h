@@ -26,8 +26,9 @@
 // corner_limit.h); its second-derivative masks (left eigenvectors of 1/9, normalised by
 // quadratic generation) give the second derivatives where the scheme is C2 there (Kobbelt's
 // sqrt3 at a regular interior vertex; not the interpolating scheme, whose eigenvalue 0.180 >
-// 1/9 makes the curvature unbounded), after kSecondOrderSteps double steps. The error is at most the triangle's size times the first derivative for
-// positions and times the second for the derivatives: round-off. Next to an extraordinary
+// 1/9 makes the curvature unbounded), after kSecondOrderSteps double steps. The error is
+// at most the triangle's size times the first derivative for positions and times the second
+// for the derivatives: round-off. Next to an extraordinary
 // vertex the derivatives change on the scale of the distance to it, so the descent goes on
 // 34 double steps past the last triangle that touches the extraordinary vertex (a run of the
 // same neighbourhood and child is taken at once with the step's matrix powers,
@@ -45,7 +46,8 @@
 // linear; measured, docs/limit.md). Near it the tangent masks are scaled by linear precision,
 // which the boundary rules lack within two rings of the boundary (the first step's face point
 // of a boundary triangle has 5 neighbours and the vertex rule moves it off its parameter),
-// so a point off the boundary descends until its vertex is 4 rings from it. Holes remove faces, not rules: the cuts drop the tags.
+// so a point off the boundary descends until its vertex is 4 rings from it. Holes remove
+// faces, not rules: the cuts drop the tags.
 //
 // Sharp edges are kept and trisected like a boundary (refine/sqrt3_split.cpp), so creases
 // take the same road, the cuts keeping their sharpness; no derivatives on a crease. An edge

@@ -59,7 +59,8 @@ struct Sqrt3Node {
   std::vector<StepMatrix> child_matrix;  // rows: the child's labels; columns: this node's labels
   // Per child that is this node again (a self-similar step, towards a vertex): the step's
   // powers M^(2^j), each with its derivative forms (3 (M - 1 e_0))^(2^j) and, once asked
-  // for, (9 (M - 1 e_0))^(2^j) (limit_nodes.h).
+  // for, (9 (M - M Pi))^(2^j) where `affine` is set, else (9 (M - 1 e_0))^(2^j)
+  // (step_matrix.h).
   using Powers = StepPowers;  // step_matrix.h
   std::vector<std::unique_ptr<Powers>> powers;
   std::array<int, 3> corner_state{};     // 0 not tried, 1 ready, 2 not a known configuration
