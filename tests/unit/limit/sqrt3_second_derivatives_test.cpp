@@ -12,11 +12,13 @@
 #include <cmath>
 #include <random>
 
+#include "framework/features/sharpness.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/limit/sqrt3_limit.h"
 #include "framework/scheme/scheme_registry.h"
 #include "support/test_meshes.h"
 #include "unit/limit/limit_meshes.h"
+#include "unit/limit/sqrt3_creased_meshes.h"
 
 using namespace subdiv;
 
@@ -171,5 +173,24 @@ TEST_CASE("sqrt3 second derivatives: stencils equal evaluation") {
       CHECK(distance(stencil_applied(st.vertices, st.duv, m.positions), p.duv) < 1e-10);
       CHECK(distance(stencil_applied(st.vertices, st.dvv, m.positions), p.dvv) < 1e-10);
     }
+  }
+}
+
+TEST_CASE("sqrt3 second derivatives: next to sharp and semi-sharp creases, none on an infinitely sharp one") {
+  // Face 2 (2 n + 3) of the creased torus has the crease edge (3, 2)-(4, 2) at v = 0. Sharpness
+  // 2 is followed as triadic pairs, 1 as single steps before them (a sequence); both decay,
+  // and the surface is C2 beside the former crease. Beside an infinitely sharp one the second
+  // derivatives grow as the crease nears, so the difference step is a fraction of the distance.
+  using limit_test::sqrt3::creased_torus;
+  const Index f = Index(2 * (2 * limit_test::sqrt3::kCreasedTorusSize + 3));
+  for (const float sharpness : {kInfinitelySharp, 2.f, 1.f}) {
+    CAPTURE(sharpness);
+    const limit_test::sqrt3::Tagged t = creased_torus(sharpness);
+    const LimitSurface s(load_scheme("sqrt3"), t.level);
+    for (const double d : {0.2, 0.01}) {
+      CAPTURE(d);
+      CHECK(second_difference_error(s, f, 0.3, d, t.mesh.positions, 1e-4 * d) < 1e-3);
+    }
+    if (sharpness >= kInfinitelySharp) CHECK(!s.evaluate(f, 0.3, 0, t.mesh.positions, 3, 2).has_second_derivatives);
   }
 }
