@@ -104,6 +104,51 @@ std::string scale_mismatch(const LimitMask& mask, const Level& L, Index c, doubl
   return {};
 }
 
+// The second-derivative rows at the face's corner (corner_rows with `second`): only at an
+// interior regular vertex without sharpness, whose neighbourhood is the analysed one up to the
+// masks' own radius and unfolds without conflict over their support.
+void second_derivatives(const LimitMask& mask, const Level& L, const FacePoint& p, int corner, int start,
+                        bool triangles, CornerRows& rows) {
+  const Index c = L.face(p.face)[size_t(corner)];
+  if (mask.quadratic.size() != 3 || rows.ds.empty() || L.on_boundary(c) || L.vertex_sharp(c) > 0) return;
+  for (Index e : L.ring_edges(c))
+    if (L.edge_sharp(e) > 0) return;
+  Labelling lab;
+  if (!matches_neighbourhood(lab, L, CentreKind::Vertex, c, start, mask.quadratic_radius, mask.quadratic_signature))
+    return;
+  const std::vector<Uv> at = unfold(L, p.face, triangles);
+  const Uv o = at[size_t(c)];
+  // a(i, j): mask i applied to the j-th sampled quadratic about the vertex (S²/2, S T, T²/2).
+  double a[3][3] = {};
+  for (size_t i = 0; i < 3; ++i)
+    for (size_t l = 0; l < mask.quadratic[i].size(); ++l) {
+      const double w = mask.quadratic[i][l];
+      if (w == 0) continue;
+      const Uv x = at[size_t(lab.vertices[l])];
+      const double s = x[0] - o[0], t = x[1] - o[1];
+      if (!std::isfinite(s) || !std::isfinite(t)) return;
+      a[i][0] += w * s * s / 2, a[i][1] += w * s * t, a[i][2] += w * t * t / 2;
+    }
+  // Invert a by cofactors; refuse a nearly singular one (the masks then see no quadratics).
+  double inv[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      inv[j][i] = a[(i + 1) % 3][(j + 1) % 3] * a[(i + 2) % 3][(j + 2) % 3] -
+                  a[(i + 1) % 3][(j + 2) % 3] * a[(i + 2) % 3][(j + 1) % 3];
+  const double det = a[0][0] * inv[0][0] + a[0][1] * inv[1][0] + a[0][2] * inv[2][0];
+  double scale = 0;
+  for (const auto& r : a)
+    for (double x : r) scale = std::max(scale, std::fabs(x));
+  if (!std::isfinite(det) || std::fabs(det) < 1e-10 * scale * scale * scale) return;
+  std::vector<double>* out[3] = {&rows.dss, &rows.dst, &rows.dtt};
+  for (size_t j = 0; j < 3; ++j) {
+    out[j]->assign(size_t(L.vertex_count), 0.0);
+    for (size_t i = 0; i < 3; ++i)
+      for (size_t l = 0; l < mask.quadratic[i].size(); ++l)
+        (*out[j])[size_t(lab.vertices[l])] += inv[j][i] / det * mask.quadratic[i][l];
+  }
+}
+
 }  // namespace
 
 // The parameter-space coordinates of the level's vertices with `face` at its own frame,
@@ -156,7 +201,7 @@ std::vector<Uv> unfold(const Level& L, Index face, bool triangles) {
 }
 
 bool corner_rows(SchemeLimits& limits, const Level& L, const FacePoint& p, int corner, int step, bool triangles,
-                 CornerRows& rows, std::string& mask_error, double scale) {
+                 CornerRows& rows, std::string& mask_error, double scale, bool second) {
   if (p.sub_face >= 0) return false;  // an n-gon's sub-face is not a face of the level yet
   const Index c = L.face(p.face)[size_t(corner)];
   bool semi_sharp = false;
@@ -177,6 +222,7 @@ bool corner_rows(SchemeLimits& limits, const Level& L, const FacePoint& p, int c
     rows.no_derivatives = scale_mismatch(*mask, L, c, scale);
     if (rows.no_derivatives.empty()) derivatives(*mask, lab, L, p, corner, start, triangles, rows);
   }
+  if (second && rows.no_derivatives.empty()) second_derivatives(*mask, L, p, corner, start, triangles, rows);
   return true;
 }
 

@@ -29,8 +29,8 @@ std::vector<Uv> unfold(const Level& level, Index face, bool triangles);
 // the face's own coordinates (empty where the vertex is not regular).
 struct CornerRows {
   std::vector<double> position, ds, dt;  // one weight per vertex of the level
-  // Second derivatives d2/ds2, d2/dsdt, d2/dt2: only from the polynomial patches
-  // (bspline_patch.h, triangle_patch.h), empty at a vertex reached by the descent.
+  // Second derivatives d2/ds2, d2/dsdt, d2/dt2: from the polynomial patches (bspline_patch.h,
+  // triangle_patch.h), or at a vertex with `second` (below); else empty.
   std::vector<double> dss, dst, dtt;
   // Why a regular vertex has no derivatives, where the scheme is at fault (not C1 there):
   // the eigenvalues against the scale. Asking for derivatives there is refused.
@@ -43,7 +43,14 @@ struct CornerRows {
 // `scale`: the parameterisation's contraction per step of the analysis (1/2 for binary
 // splits), which a regular vertex's subdominant eigenvalues must equal for the limit to be
 // differentiable there; 0 leaves it unchecked.
+// With `second`, also the second derivatives at a regular interior vertex whose analysis has
+// second-derivative masks (LimitMask::quadratic), each a combination of d2/ds2, d2/dsdt,
+// d2/dt2 whose factors follow from quadratic generation as the tangents' do from linear
+// precision: control points at the values of a quadratic q(s, t) at their unfolded (s, t)
+// have q plus an affine function as their limit, which the masks do not see, so a mask m
+// gives m . P = (m . S²/2) P_ss + (m . S T) P_st + (m . T²/2) P_tt. Only for a scheme that
+// generates quadratics there (checked by the callers' tests against central differences).
 bool corner_rows(SchemeLimits& limits, const Level& level, const FacePoint& point, int corner, int step,
-                 bool triangles, CornerRows& rows, std::string& mask_error, double scale = 0);
+                 bool triangles, CornerRows& rows, std::string& mask_error, double scale = 0, bool second = false);
 
 }  // namespace subdiv

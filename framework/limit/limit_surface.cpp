@@ -1225,21 +1225,12 @@ struct LimitSurface::Impl {
       if (rows_out) rows_out->du = std::move(d.du), rows_out->dv = std::move(d.dv);
     }
     if (derivatives >= 2 && out.has_derivatives && !rows.dss.empty()) {
-      auto row = [&](size_t a, size_t b) {
-        std::vector<double> r(rows.dss.size());
-        for (size_t i = 0; i < r.size(); ++i)
-          r[i] = J[0][a] * J[0][b] * rows.dss[i] + (J[0][a] * J[1][b] + J[1][a] * J[0][b]) * rows.dst[i] +
-                 J[1][a] * J[1][b] * rows.dtt[i];
-        return r;
-      };
-      std::vector<double> uu = row(0, 0), uv = row(0, 1), vv = row(1, 1);
-      std::vector<double>* pulled[] = {&uu, &uv, &vv};
-      pull_back_rows(pulled, path, 2);
-      out.duu = applied(uu, first_values, channels);
-      out.duv = applied(uv, first_values, channels);
-      out.dvv = applied(vv, first_values, channels);
+      SecondDerivativeRows d = second_derivative_rows(rows.dss, rows.dst, rows.dtt, J, path);
+      out.duu = applied(d.duu, first_values, channels);
+      out.duv = applied(d.duv, first_values, channels);
+      out.dvv = applied(d.dvv, first_values, channels);
       out.has_second_derivatives = true;
-      if (rows_out) rows_out->duu = std::move(uu), rows_out->duv = std::move(uv), rows_out->dvv = std::move(vv);
+      if (rows_out) rows_out->duu = std::move(d.duu), rows_out->duv = std::move(d.duv), rows_out->dvv = std::move(d.dvv);
     }
     return out;
   }
@@ -1725,6 +1716,7 @@ LimitStencil LimitSurface::stencil(Index face, double u, double v, int derivativ
     Sqrt3Limit::Rows r;
     LimitSample out = impl_->sqrt3->evaluate(p, unit, int(n), derivatives, &r);
     rows.du = std::move(r.du), rows.dv = std::move(r.dv);
+    rows.duu = std::move(r.duu), rows.duv = std::move(r.duv), rows.dvv = std::move(r.dvv);
     return out;
   }) : impl_->dual ? tbb::this_task_arena::isolate([&] {
     original = impl_->dual->reads(p);

@@ -94,21 +94,12 @@ LimitSample four_direction_sample(const std::array<Index, 9>& grid, size_t n, co
     if (rows_out) rows_out->du = std::move(r.du), rows_out->dv = std::move(r.dv);
   }
   if (d.derivatives >= 2 && !on_four_direction_knot_line(ab[0], ab[1])) {
-    const auto daa = spread(b.daa), dab = spread(b.dab), dbb = spread(b.dbb);
-    auto row = [&](size_t x, size_t y) {
-      std::vector<double> r(n);
-      for (size_t i = 0; i < n; ++i)
-        r[i] = J[0][x] * J[0][y] * daa[i] + (J[0][x] * J[1][y] + J[1][x] * J[0][y]) * dab[i] + J[1][x] * J[1][y] * dbb[i];
-      return r;
-    };
-    std::vector<double> uu = row(0, 0), uv = row(0, 1), vv = row(1, 1);
-    std::vector<double>* rows[] = {&uu, &uv, &vv};
-    pull_back_rows(rows, d.path, 2);
-    out.duu = applied(uu, d.first_values, d.channels);
-    out.duv = applied(uv, d.first_values, d.channels);
-    out.dvv = applied(vv, d.first_values, d.channels);
+    SecondDerivativeRows r = second_derivative_rows(spread(b.daa), spread(b.dab), spread(b.dbb), J, d.path);
+    out.duu = applied(r.duu, d.first_values, d.channels);
+    out.duv = applied(r.duv, d.first_values, d.channels);
+    out.dvv = applied(r.dvv, d.first_values, d.channels);
     out.has_second_derivatives = true;
-    if (rows_out) rows_out->duu = std::move(uu), rows_out->duv = std::move(uv), rows_out->dvv = std::move(vv);
+    if (rows_out) rows_out->duu = std::move(r.duu), rows_out->duv = std::move(r.duv), rows_out->dvv = std::move(r.dvv);
   }
   return out;
 }

@@ -45,6 +45,25 @@ struct TrianglePoint {
 };
 
 
+// Makes a second-derivative row over a node's labels annihilate the node's sampled affine
+// functions (Sqrt3Node::affine), as it does in exact arithmetic. Pulled back with the factor
+// 9 per double step, the row's part along them grows by 9 λ₁ = 3 per double step, so its
+// rounding would grow to 3^43 ε over a descent; removed at each node, it stays at ε. The part
+// is moved onto the face's corners, at (0, 0), (1, 0), (0, 1).
+void drop_affine_part(std::vector<double>& row, const Sqrt3Node& node) {
+  if (!node.affine) return;
+  double m0 = 0, m1 = 0, m2 = 0;
+  for (size_t l = 0; l < row.size(); ++l) {
+    m0 += row[l];
+    m1 += row[l] * node.affine->at[l][0];
+    m2 += row[l] * node.affine->at[l][1];
+  }
+  const auto& c = node.affine->corners;
+  row[size_t(c[0])] -= m0 - m1 - m2;
+  row[size_t(c[1])] -= m1;
+  row[size_t(c[2])] -= m2;
+}
+
 }  // namespace
 
 int sqrt3_single_step_levels(const Level& base) {
@@ -102,14 +121,17 @@ LimitSample Sqrt3Limit::evaluate(const FacePoint& p0, const std::vector<double>&
   q.b = {1 - p0.st[0] - p0.st[1], p0.st[0], p0.st[1]};
   q.jacobian = p0.jacobian;
   std::vector<const StepMatrix*> path;
+  std::vector<const Sqrt3Node*> path_nodes;  // the node each step of the path starts from
   std::vector<double> values = first_values;
-  int stop = kRoundOffSteps;
+  // Second derivatives are Hölder continuous only: their descent goes further.
+  const int round_off = derivatives >= 2 ? kSecondOrderSteps : kRoundOffSteps;
+  int stop = round_off;
   const int give_up = 24 * kRoundOffSteps;  // past the smallest double's distance to a vertex (3^-680)
   std::string mask_error;
   int deferred = 0;  // double steps taken past a corner whose derivatives a nearby boundary took away
   for (int step = 0;; ++step) {
     const Sqrt3Node& node = nodes_->expanded(id);
-    if (node.extraordinary) stop = std::max(stop, step + kRoundOffSteps);
+    if (node.extraordinary) stop = std::max(stop, step + round_off);
     const int k = int(std::max_element(q.b.begin(), q.b.end()) - q.b.begin());
     // Exactly at a corner: the other two coordinates are 0 (the largest, 1 less them, may
     // round to 1 for a point 1e-300 away, which is not at the corner).
@@ -118,7 +140,7 @@ LimitSample Sqrt3Limit::evaluate(const FacePoint& p0, const std::vector<double>&
       const CornerRows* rows = nodes_->corner(id, k, mask_error);
       // Next to a boundary the corner's derivatives wait for a level where it is far enough
       // from it (sqrt3_nodes.cpp); a point within round-off of the boundary stops without.
-      if (rows && derivatives >= 1 && node.corner_deferred[size_t(k)] && deferred < kRoundOffSteps) {
+      if (rows && derivatives >= 1 && node.corner_deferred[size_t(k)] && deferred < round_off) {
         ++deferred;
         rows = nullptr;
       }
@@ -133,6 +155,20 @@ LimitSample Sqrt3Limit::evaluate(const FacePoint& p0, const std::vector<double>&
           out.dv = applied(d.dv, first_values, channels);
           out.has_derivatives = true;
           if (rows_out) rows_out->du = std::move(d.du), rows_out->dv = std::move(d.dv);
+        }
+        if (derivatives >= 2 && out.has_derivatives && !rows->dss.empty()) {
+          // The chain rule at the corner, then one step back at a time (drop_affine_part).
+          SecondDerivativeRows d = second_derivative_rows(rows->dss, rows->dst, rows->dtt, q.jacobian, {});
+          std::vector<double>* second[] = {&d.duu, &d.duv, &d.dvv};
+          for (size_t j = path.size(); j-- > 0;) {
+            pull_back_rows(second, std::span(&path[j], 1), 2);
+            for (std::vector<double>* r : second) drop_affine_part(*r, *path_nodes[j]);
+          }
+          out.duu = applied(d.duu, first_values, channels);
+          out.duv = applied(d.duv, first_values, channels);
+          out.dvv = applied(d.dvv, first_values, channels);
+          out.has_second_derivatives = true;
+          if (rows_out) rows_out->duu = std::move(d.duu), rows_out->duv = std::move(d.duv), rows_out->dvv = std::move(d.dvv);
         }
         return out;
       }
@@ -184,10 +220,11 @@ LimitSample Sqrt3Limit::evaluate(const FacePoint& p0, const std::vector<double>&
         ++run;
       }
     }
-    if (node.extraordinary) stop = std::max(stop, step + run - 1 + kRoundOffSteps);
+    if (node.extraordinary) stop = std::max(stop, step + run - 1 + round_off);
     if (run == 1) {
       const StepMatrix& M = node.child_matrix[best];
       path.push_back(&M);
+      path_nodes.push_back(&node);
       std::vector<double> moved(size_t(M.rows()) * size_t(channels));
       M.apply(values, moved, channels);
       values.swap(moved);
@@ -195,11 +232,12 @@ LimitSample Sqrt3Limit::evaluate(const FacePoint& p0, const std::vector<double>&
       // Applied to the values less those of label 0 (added back after): the rows of a power
       // sum to one only to round-off that grows with the power, which then multiplies the small
       // differences of a cut 3^-k across instead of the values themselves.
-      const Sqrt3Node::Powers& P = nodes_->powers(id, int(best));
+      const Sqrt3Node::Powers& P = nodes_->powers(id, int(best), derivatives >= 2);
       for (int j = 0; j < Sqrt3Nodes::kPowers; ++j) {
         if (!(run >> j & 1)) continue;
         const StepMatrix& M = P.forward[size_t(j)];
         path.push_back(&M);
+        path_nodes.push_back(&node);
         const std::vector<double> base(values.begin(), values.begin() + channels);
         for (size_t i = 0; i < values.size(); ++i) values[i] -= base[i % size_t(channels)];
         std::vector<double> moved(size_t(M.rows()) * size_t(channels));

@@ -23,8 +23,12 @@
 // is 3^-34 < 2^-53 of the base triangle, and the point is taken at its nearest corner, whose
 // limit mask (the left eigenvector of 1 of its local subdivision matrix) gives the position
 // and whose tangent masks give the derivatives (analysis/surface/limit_evaluation.h,
-// corner_limit.h). The error is at most the triangle's size times the first derivative for
-// positions and times the second for the derivatives: round-off. Next to an extraordinary
+// corner_limit.h); its second-derivative masks (left eigenvectors of 1/9, normalised by
+// quadratic generation) give the second derivatives where the scheme is C2 there (Kobbelt's
+// sqrt3 at a regular interior vertex; not the interpolating scheme, whose eigenvalue 0.180 >
+// 1/9 makes the curvature unbounded), after kSecondOrderSteps double steps. The error is
+// at most the triangle's size times the first derivative for positions and times the second
+// for the derivatives: round-off. Next to an extraordinary
 // vertex the derivatives change on the scale of the distance to it, so the descent goes on
 // 34 double steps past the last triangle that touches the extraordinary vertex (a run of the
 // same neighbourhood and child is taken at once with the step's matrix powers,
@@ -36,11 +40,14 @@
 // the trisection points, so two steps are the same triadic split with the trisection points
 // at (2a + b)/3 and (a + 2b)/3 (sqrt3_nodes.cpp), and a boundary vertex's limit is its limit
 // mask from the boundary configuration's subdivision matrix (the analysis). No derivatives
-// on the boundary itself (its vertices included): the tangent masks are
-// scaled by linear precision, which the boundary rules lack within two rings of the
-// boundary (the first step's face point of a boundary triangle has 5 neighbours and the
-// vertex rule moves it off its parameter); a point off the boundary descends until its
-// vertex is 4 rings from it. Holes remove faces, not rules: the cuts drop the tags.
+// on the boundary itself (its vertices included): across it they do not exist in this
+// parameterisation (the rows next to the boundary shrink by about 0.37 per double step
+// against the parameter's 1/3, and at a boundary vertex the directional derivatives are not
+// linear; measured, docs/limit.md). Near it the tangent masks are scaled by linear precision,
+// which the boundary rules lack within two rings of the boundary (the first step's face point
+// of a boundary triangle has 5 neighbours and the vertex rule moves it off its parameter),
+// so a point off the boundary descends until its vertex is 4 rings from it. Holes remove
+// faces, not rules: the cuts drop the tags.
 //
 // Sharp edges are kept and trisected like a boundary (refine/sqrt3_split.cpp), so creases
 // take the same road, the cuts keeping their sharpness; no derivatives on a crease. An edge
@@ -74,7 +81,9 @@ public:
   std::vector<Index> reads(const FacePoint& p) const;
 
   // Rows of the derivatives over those vertices (for stencils).
-  using Rows = FirstDerivativeRows;  // step_matrix.h
+  struct Rows {
+    std::vector<double> du, dv, duu, duv, dvv;
+  };
   LimitSample evaluate(const FacePoint& p, const std::vector<double>& first_values, int channels, int derivatives,
                        Rows* rows_out = nullptr) const;
 
@@ -83,6 +92,11 @@ public:
 
   // Double steps after which the triangle holding a point is below round-off (3^-34 < 2^-53).
   static constexpr int kRoundOffSteps = 34;
+  // The same for second derivatives, which are only Hölder continuous: the nearest vertex's are
+  // off by about (3^-k)^alpha, alpha = 0.907 for Kobbelt's sqrt3 at a regular vertex (the next
+  // eigenvalue after 1/9 is 0.0410 = 3^-2.907; measured between vertices, 0.8 to 1.2, by
+  // central differences, docs/limit.md), so 43 double steps: 3^(-0.8 * 43) < 2^-53.
+  static constexpr int kSecondOrderSteps = 43;
 
 private:
   const Level& base_;

@@ -146,22 +146,36 @@ bool regular_corner(const Level& L, Index v) {
   return L.incident_face_count(v) == 6 && (sharp.empty() || (sharp.size() == 2 && sharp[1] - sharp[0] == 3));
 }
 
-// Whether a vertex on a feature lies within `rings` edges of v (fewer than the cut's radius,
-// so the cut's rim is not met).
-bool near_boundary(const Level& L, Index v, int rings) {
-  std::vector<Index> front{v}, seen{v};
+// Whether a vertex within `rings` edges of `from` satisfies `pred` (rings fewer than the cut's
+// radius, so the cut's rim is not met).
+template <class Pred>
+bool any_within(const Level& L, std::vector<Index> from, int rings, Pred pred) {
+  std::vector<Index> seen = from;
   for (int r = 0; r <= rings; ++r) {
     std::vector<Index> next;
-    for (Index w : front) {
-      if (on_feature(L, w)) return true;
+    for (Index w : from) {
+      if (pred(w)) return true;
       for (Index e : L.ring_edges(w)) {
         const Index x = L.other_end(e, w);
         if (std::find(seen.begin(), seen.end(), x) == seen.end()) seen.push_back(x), next.push_back(x);
       }
     }
-    front.swap(next);
+    from.swap(next);
   }
   return false;
+}
+
+// Whether a vertex on a feature lies within `rings` edges of v.
+bool near_boundary(const Level& L, Index v, int rings) {
+  return any_within(L, {v}, rings, [&](Index w) { return on_feature(L, w); });
+}
+
+// Every vertex within `rings` edges of the face's corners is interior, of valence 6 and
+// without sharpness.
+bool regular_disc(const Level& L, Index face, int rings) {
+  const auto corners = L.face(face);
+  return !any_within(L, std::vector<Index>(corners.begin(), corners.end()), rings,
+                     [&](Index w) { return on_feature(L, w) || L.incident_face_count(w) != 6; });
 }
 
 }  // namespace
@@ -205,6 +219,15 @@ int Sqrt3Nodes::intern_locked(const Level& cut, Index face, std::vector<Index>& 
   // A corner is regular with 6 triangles inside, 3 on a boundary (Kobbelt's boundary rule keeps
   // that count at even levels, refine/sqrt3_split.cpp).
   for (Index v : n->level.face(n->face)) n->extraordinary = n->extraordinary || !regular_corner(n->level, v);
+  if (regular_disc(n->level, n->face, radius_ - 1)) {
+    std::vector<Uv> at = unfold(n->level, n->face, true);
+    if (std::all_of(at.begin(), at.end(), [](const Uv& x) { return std::isfinite(x[0]) && std::isfinite(x[1]); })) {
+      n->affine.emplace();
+      n->affine->at = std::move(at);
+      const auto corners = n->level.face(n->face);
+      std::copy(corners.begin(), corners.end(), n->affine->corners.begin());
+    }
+  }
   nodes_.push_back(std::move(n));
   return it->second;
 }
@@ -244,13 +267,13 @@ Sqrt3Node& Sqrt3Nodes::expand_locked(int id) {
   return *n;
 }
 
-const Sqrt3Node::Powers& Sqrt3Nodes::powers(int id, int which) {
+const Sqrt3Node::Powers& Sqrt3Nodes::powers(int id, int which, bool second) {
   std::lock_guard lock(mutex_);
   Sqrt3Node& n = *nodes_[size_t(id)];
   auto& slot = n.powers[size_t(which)];
-  if (slot) return *slot;
-  // A double sqrt3 step scales by 3; sqrt3 limits have no second derivatives.
-  slot = step_powers(n.child_matrix[size_t(which)], 3, kPowers, false);
+  // A double sqrt3 step scales by 3: first-derivative rows by 3, second ones by 9.
+  if (!slot) slot = lazy_step_powers(n.child_matrix[size_t(which)], 3, kPowers, n.affine ? &*n.affine : nullptr);
+  more_powers(*slot, kPowers, second);
   return *slot;
 }
 
@@ -262,7 +285,7 @@ const CornerRows* Sqrt3Nodes::corner(int id, int k, std::string& error) {
       FacePoint p;
       p.face = n.face;
       n.corner_state[size_t(k)] =
-          corner_rows(limits_, n.level, p, k, 0, true, n.corner[size_t(k)], n.corner_error[size_t(k)]) ? 1 : 2;
+          corner_rows(limits_, n.level, p, k, 0, true, n.corner[size_t(k)], n.corner_error[size_t(k)], 0, true) ? 1 : 2;
       // No derivatives within a few rings of a boundary: the tangent masks are scaled by
       // linear precision (corner_limit.h), which √3's boundary rules lack there (the first
       // step's face point of a boundary triangle has 5 neighbours, and the vertex rule moves it
@@ -273,8 +296,9 @@ const CornerRows* Sqrt3Nodes::corner(int id, int k, std::string& error) {
         // Off the boundary, the rings to it grow threefold per double step: derivatives a few
         // steps on (sqrt3_limit.cpp).
         n.corner_deferred[size_t(k)] = !n.corner[size_t(k)].ds.empty() && !on_feature(n.level, c);
-        n.corner[size_t(k)].ds.clear();
-        n.corner[size_t(k)].dt.clear();
+        for (auto* row : {&n.corner[size_t(k)].ds, &n.corner[size_t(k)].dt, &n.corner[size_t(k)].dss,
+                          &n.corner[size_t(k)].dst, &n.corner[size_t(k)].dtt})
+          row->clear();
       }
     }
     if (n.corner_state[size_t(k)] == 2) {

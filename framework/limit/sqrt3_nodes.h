@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,12 +47,20 @@ struct Sqrt3Node {
   Level level;  // the cut, its vertices numbered by their labels
   Index face = kNone;
   bool extraordinary = false;  // a corner of the face is not of valence 6
+  // The cut's vertices at their unfolded (s, t) (corner_limit.h) where every vertex within
+  // radius - 1 rings of the face is interior, of valence 6 and without sharpness, so that the
+  // steps from this node keep sampled affine functions affine (both shipped schemes' regular
+  // rules have linear precision); else empty. Second-derivative rows pulled back to this node
+  // are made to annihilate them again (sqrt3_limit.cpp).
+  std::optional<AffineFrame> affine;  // step_matrix.h
   bool expanded = false;
   std::vector<TriadicChild> children;
   std::vector<int> child_node;
   std::vector<StepMatrix> child_matrix;  // rows: the child's labels; columns: this node's labels
   // Per child that is this node again (a self-similar step, towards a vertex): the step's
-  // powers M^(2^j), each with its derivative form (3 (M - 1 e_0))^(2^j) (limit_nodes.h).
+  // powers M^(2^j), each with its derivative forms (3 (M - 1 e_0))^(2^j) and, once asked
+  // for, (9 (M - M Pi))^(2^j) where `affine` is set, else (9 (M - 1 e_0))^(2^j)
+  // (step_matrix.h).
   using Powers = StepPowers;  // step_matrix.h
   std::vector<std::unique_ptr<Powers>> powers;
   std::array<int, 3> corner_state{};     // 0 not tried, 1 ready, 2 not a known configuration
@@ -75,8 +84,9 @@ public:
   // configuration the masks describe (`error` then says why when the analysis failed).
   const CornerRows* corner(int id, int k, std::string& error);
   // The powers of child `which`'s step of node `id`, which must lead back to the node: m
-  // double steps then cost one product per binary digit of m.
-  const Sqrt3Node::Powers& powers(int id, int which);
+  // double steps then cost one product per binary digit of m; with `second`, with their
+  // second-derivative forms.
+  const Sqrt3Node::Powers& powers(int id, int which, bool second);
   static constexpr int kPowers = 10;  // 2^10 double steps: past the smallest double (3^-680)
 
 private:

@@ -147,6 +147,23 @@ FirstDerivativeRows first_derivative_rows(std::span<const double> ds, std::span<
   return out;
 }
 
+SecondDerivativeRows second_derivative_rows(std::span<const double> dss, std::span<const double> dst,
+                                            std::span<const double> dtt, const std::array<std::array<double, 2>, 2>& J,
+                                            std::span<const StepMatrix* const> steps) {
+  // Every step is affine, so the chain rule has no second-order term:
+  // d2/du_a du_b = sum J[i][a] J[j][b] d2/ds_i ds_j.
+  auto row = [&](size_t a, size_t b) {
+    std::vector<double> r(dss.size());
+    for (size_t i = 0; i < r.size(); ++i)
+      r[i] = J[0][a] * J[0][b] * dss[i] + (J[0][a] * J[1][b] + J[1][a] * J[0][b]) * dst[i] + J[1][a] * J[1][b] * dtt[i];
+    return r;
+  };
+  SecondDerivativeRows out{row(0, 0), row(0, 1), row(1, 1)};
+  std::vector<double>* rows[] = {&out.duu, &out.duv, &out.dvv};
+  pull_back_rows(rows, steps, 2);
+  return out;
+}
+
 namespace {
 
 StepMatrix sparse_step(const Eigen::MatrixXd& a) {
@@ -172,7 +189,7 @@ struct StepPowers::Squares {
 StepPowers::StepPowers() = default;
 StepPowers::~StepPowers() = default;
 
-std::unique_ptr<StepPowers> lazy_step_powers(const StepMatrix& step, double factor, int count) {
+std::unique_ptr<StepPowers> lazy_step_powers(const StepMatrix& step, double factor, int count, const AffineFrame* frame) {
   const Index k = step.rows();
   if (k != step.source_count) throw Error("internal: a self-similar step is not square");
   auto p = std::make_unique<StepPowers>();
@@ -186,7 +203,18 @@ std::unique_ptr<StepPowers> lazy_step_powers(const StepMatrix& step, double fact
   s.d = factor * s.m;
   s.d.col(0).array() -= factor;
   s.d2 = factor * factor * s.m;
-  s.d2.col(0).array() -= factor * factor;
+  if (frame) {
+    // M Pi = (M 1) e_c0' + (M S)(e_c1 - e_c0)' + (M T)(e_c2 - e_c0)' (AffineFrame).
+    Eigen::VectorXd S(k), T(k);
+    for (Index v = 0; v < k; ++v) S(v) = frame->at[size_t(v)][0], T(v) = frame->at[size_t(v)][1];
+    const Eigen::VectorXd one = s.m.rowwise().sum(), ms = s.m * S, mt = s.m * T;
+    const auto [c0, c1, c2] = frame->corners;
+    s.d2.col(c0) -= factor * factor * (one - ms - mt);
+    s.d2.col(c1) -= factor * factor * ms;
+    s.d2.col(c2) -= factor * factor * mt;
+  } else {
+    s.d2.col(0).array() -= factor * factor;
+  }
   p->forward.reserve(size_t(count));
   p->backward.reserve(size_t(count));
   p->backward2.reserve(size_t(count));

@@ -68,7 +68,18 @@ std::unique_ptr<StepPowers> step_powers(const StepMatrix& step, double factor, i
 // is the same bits whenever it is made (the same squarings from the same matrix), so a
 // descent of m levels need square only up to the highest binary digit of m: the powers of a
 // vertex of valence n are dense matrices of about 2n rows (n^3 work each).
-std::unique_ptr<StepPowers> lazy_step_powers(const StepMatrix& step, double factor, int count);
+// The vertices' (s, t) in a face's frame where the steps keep sampled affine functions affine
+// (linear precision), and the labels of the face's corners at (0, 0), (1, 0), (0, 1). A
+// second-derivative row annihilates those functions; pulled back with factor^2 per step its
+// rounding along them grows by factor^2 lambda_1 (3 for sqrt3's double step), so there the
+// second-derivative forms drop that part: factor^2 (M - M Pi), Pi the projector onto the
+// affine functions through the corners' values (the same on rows that annihilate them).
+struct AffineFrame {
+  std::vector<std::array<double, 2>> at;
+  std::array<Index, 3> corners{};
+};
+std::unique_ptr<StepPowers> lazy_step_powers(const StepMatrix& step, double factor, int count,
+                                             const AffineFrame* frame = nullptr);
 void more_powers(StepPowers& powers, int count, bool second);
 
 // The rows of d/du and d/dv over the first step's sources, from rows `ds`, `dt` along a
@@ -80,5 +91,13 @@ struct FirstDerivativeRows {
 FirstDerivativeRows first_derivative_rows(std::span<const double> ds, std::span<const double> dt,
                                           const std::array<std::array<double, 2>, 2>& J,
                                           std::span<const StepMatrix* const> steps);
+// The same for the second derivatives d2/du2, d2/dudv, d2/dv2 from rows d2/ds2, d2/dsdt,
+// d2/dt2 (each step's factor squared).
+struct SecondDerivativeRows {
+  std::vector<double> duu, duv, dvv;
+};
+SecondDerivativeRows second_derivative_rows(std::span<const double> dss, std::span<const double> dst,
+                                            std::span<const double> dtt, const std::array<std::array<double, 2>, 2>& J,
+                                            std::span<const StepMatrix* const> steps);
 
 }  // namespace subdiv

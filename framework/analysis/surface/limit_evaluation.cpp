@@ -260,6 +260,11 @@ struct SchemeLimits::Impl {
     if (!m.ok) return m;
     m.radius = support_ring(a, m) + 1;
     m.signature = label_neighbourhood(p.level, p.centre_kind, p.centre, p.start, m.radius).signature;
+    if (!a.quadratic_masks.empty()) {
+      m.quadratic = a.quadratic_masks;
+      m.quadratic_radius = a.distance[a.quadratic_masks[0].size() - 1] + 1;
+      m.quadratic_signature = label_neighbourhood(p.level, p.centre_kind, p.centre, p.start, m.quadratic_radius).signature;
+    }
     return m;
   }
 

@@ -52,6 +52,11 @@ struct LimitMask {
   std::vector<std::vector<double>> directions;
   std::vector<double> direction_eigenvalues;  // SurfaceAnalysis::direction_eigenvalues
   bool cyclic = true;
+  // Second-derivative masks (SurfaceAnalysis::quadratic_masks), valid where the neighbourhood
+  // matches `quadratic_signature` up to `quadratic_radius`; empty where the analysis has none.
+  std::vector<std::vector<double>> quadratic;
+  int quadratic_radius = 0;
+  std::vector<double> quadratic_signature;
 };
 
 struct LimitResult {

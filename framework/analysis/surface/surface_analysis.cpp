@@ -603,6 +603,22 @@ void add_direction_masks(const LocalSpectrum& s, const std::vector<Complex>& ev,
   out.direction_eigenvalues = clusters;
 }
 
+// Second-derivative masks (SurfaceAnalysis::quadratic_masks): the left eigenspace of
+// lambda_1^2 = lambda_3 = lambda_4 = lambda_5 > |lambda_6| with lambda_1 = lambda_2. Under
+// the double step's scaling by 1/lambda_1 about the centre a quadratic's second derivatives
+// scale by lambda_1^2, so a C2 limit's second derivatives at the centre are functionals in
+// this eigenspace (Peters & Reif 2004; Kobbelt 2000 derives sqrt3's regular weights from it).
+void add_quadratic_masks(const LocalSpectrum& s, const std::vector<Complex>& ev, SurfaceAnalysis& out) {
+  if (!out.subdominant_equal || ev.size() < 6) return;
+  const double mu = out.lambda1 * out.lambda1;
+  for (size_t k = 3; k < 6; ++k)
+    if (!is_real(ev[k]) || std::abs(ev[k].real() - mu) > kClusterTolerance * std::max(1.0, mu)) return;
+  if (ev.size() > 6 && std::abs(ev[6]) >= mu * (1 - kClusterTolerance)) return;
+  const Matrix a = s.left(mu), b = s.right(mu);
+  if (a.cols() != 3 || b.cols() != 3) return;  // defective
+  for (Eigen::Index c = 0; c < a.cols(); ++c) out.quadratic_masks.emplace_back(a.col(c).data(), a.col(c).data() + a.rows());
+}
+
 // Stage 1: refine the patch until the centre's neighbourhood repeats. A step that leaves
 // the centre's ring turned by about half a sector (sqrt3, mid-edge, plugin splits with a
 // period) is repeated; the split's own period is the first guess.
@@ -865,12 +881,36 @@ void analyse(AnalysisRun& cx, SurfaceAnalysis& out) {
   if (out.eigenvalues.size() < 3 || !out.lambda0_one || !out.subdominant_real) return;
   add_limit_mask(sp, out);
   add_direction_masks(sp, out.eigenvalues, cx, out);
+  add_quadratic_masks(sp, out.eigenvalues, out);
   const SubdominantBases bases = subdominant_bases(sp, out);
   out.subdominant_semisimple = bases.left.cols() == 2 && bases.right.cols() == 2;
   if (!out.subdominant_semisimple) return;
   const Matrix rp = add_tangent_masks(cx, refined, bases, out);
   if (rp.size() > 0 && cx.options.characteristic_map && out.subdominant_dominates)
     check_characteristic_map(cx, out.ring, rp, out.lambda1, out.lambda2, out.subdominant_equal, out);
+}
+
+// The second-derivative masks to the smallest whole ring that holds them (their own, so that
+// the other masks and the radius their signatures compare keep their size).
+void trim_quadratic_masks(SurfaceAnalysis& r) {
+  int used = 0;
+  for (const auto& q : r.quadratic_masks) {
+    double largest = 0;
+    for (double w : q) largest = std::max(largest, std::abs(w));
+    for (int i = 0; i < int(q.size()); ++i)
+      if (std::abs(q[size_t(i)]) > kMaskZero * largest) used = std::max(used, i + 1);
+  }
+  if (used == 0) return;
+  const int d = r.distance[size_t(used - 1)];
+  size_t size = 0;
+  while (size < r.distance.size() && r.distance[size] <= d) ++size;
+  for (auto& q : r.quadratic_masks) {
+    double largest = 0;
+    for (double w : q) largest = std::max(largest, std::abs(w));
+    q.resize(size);
+    for (double& w : q)
+      if (std::abs(w) <= 1e-15 * largest) w = 0.0;
+  }
 }
 
 // Masks are left eigenvectors of the K-ring matrix; they vanish beyond the minimal ring
@@ -902,6 +942,7 @@ void trim_masks(SurfaceAnalysis& r) {
   };
   cut(r.limit_mask), cut(r.tangent_u), cut(r.tangent_v);
   for (auto& d : r.direction_masks) cut(d);
+  trim_quadratic_masks(r);
 }
 
 }  // namespace

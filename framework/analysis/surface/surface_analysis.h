@@ -114,6 +114,13 @@ struct SurfaceAnalysis {
   int tangent_dimension = 0;  // dimension of that eigenspace: 2 where smooth, 3 on a crease...
   // The eigenvalues of the direction masks, one per cluster they span, largest first.
   std::vector<double> direction_eigenvalues;
+  // A basis of the left eigenspace of lambda_1^2 where lambda_1 = lambda_2 and lambda_1^2 is a
+  // triple, semi-simple eigenvalue strictly above the rest (Peters & Reif 2004's case where
+  // the curvature can be continuous): where the scheme generates quadratics, each mask applied
+  // to P is a combination of the limit's second derivatives at the centre, and
+  // limit/corner_limit.h normalises them by sampled quadratics. Empty otherwise. Over labels
+  // like the other masks, trimmed to whole rings of their own.
+  std::vector<std::vector<double>> quadratic_masks;
 
 };
 
