@@ -59,25 +59,32 @@ AdaptiveValueStage refine_value_stage(const Scheme& scheme, const AdaptiveStage&
   // whose children fill a pinch), with the value mesh's ghost rings.
   std::vector<int> owner(size_t(L.face_count()), 1);
   for (Index f : vnext.parent) owner[size_t(f)] = 0;
-  const MeshPiece piece = cut_piece(L, owner, 0, ghost_rings);
+  MeshPiece piece = cut_piece(L, owner, 0, ghost_rings);
   options.features.boundary = BoundaryInterpolation::EdgesOnly;  // the corners are tagged
-  const Hierarchy h = refine(scheme, piece.level, options);
+  // The piece's level moves into the hierarchy (its levels[0], whose edges the origins name).
+  const Hierarchy h = refine(scheme, std::move(piece.level), options);
   const Level& C = h.levels[1];
   const ChildOrigins& o = h.origins[0];
-  // Each stage face's children in the piece's refinement, in order.
-  std::vector<std::vector<Index>> children(size_t(L.face_count()));
+  // Each stage face's children in the piece's refinement: a parent's children follow each
+  // other, so its first child and their count.
+  std::vector<Index> first_child(size_t(L.face_count()), kNone), child_count(size_t(L.face_count()), 0);
   for (Index i = 0; i < C.face_count(); ++i)
-    if (const Index parent = o.parent_face[size_t(i)]; parent != kNone)
-      children[size_t(piece.base_face[size_t(parent)])].push_back(i);
+    if (const Index parent = o.parent_face[size_t(i)]; parent != kNone) {
+      const size_t f = size_t(piece.base_face[size_t(parent)]);
+      if (child_count[f]++ == 0) first_child[f] = i;
+      else if (first_child[f] + child_count[f] - 1 != i)
+        throw Error("adaptive refinement: the split gave a face's children apart from each other");
+    }
   // The vertex stage's faces, taken from the piece's children: the same parent, the same place.
   std::vector<Index> faces;
+  faces.reserve(vnext.parent.size());
   for (size_t g = 0; g < vnext.parent.size(); ++g) {
-    const auto& mine = children[size_t(vnext.parent[g])];
-    const size_t r = size_t(vnext.rank[g]);
-    if (r >= mine.size() || C.face_size(mine[r]) != vnext.level.face_size(Index(g)))
+    const size_t f = size_t(vnext.parent[g]);
+    const Index r = Index(vnext.rank[g]);
+    if (r >= child_count[f] || C.face_size(first_child[f] + r) != vnext.level.face_size(Index(g)))
       throw Error("adaptive refinement: a face-varying channel's child faces are not the mesh's (a split that "
                   "divides a face of the UV islands differently); refine uniformly instead");
-    faces.push_back(mine[r]);
+    faces.push_back(first_child[f] + r);
   }
   // Those faces as a level: vertices in the piece's order, the piece's tags.
   std::vector<Index> local(size_t(C.vertex_count), kNone), used;
@@ -106,6 +113,7 @@ AdaptiveValueStage refine_value_stage(const Scheme& scheme, const AdaptiveStage&
 
   const int components = channel.components;
   std::vector<double> piece_values;
+  piece_values.reserve(piece.base_vertex.size() * size_t(components));
   for (Index v : piece.base_vertex)
     piece_values.insert(piece_values.end(), s.values.begin() + std::ptrdiff_t(components) * v,
                         s.values.begin() + std::ptrdiff_t(components) * (v + 1));
@@ -113,7 +121,7 @@ AdaptiveValueStage refine_value_stage(const Scheme& scheme, const AdaptiveStage&
 
   s.vertex_child.assign(size_t(L.vertex_count), kNone);
   s.edge_child.assign(size_t(L.edge_count()), kNone);
-  const Level& P = piece.level;
+  const Level& P = h.levels[0];
   for (size_t c = 0; c < used.size(); ++c) {
     const Index from = o.parent[size_t(used[c])];
     if (o.kind[size_t(used[c])] == OriginKind::Vertex) {

@@ -106,19 +106,22 @@ AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, in
   std::vector<int> owner(size_t(L.face_count()), 1);
   for (Index f = 0; f < L.face_count(); ++f)
     if (computed[size_t(f)]) owner[size_t(f)] = 0;
-  const MeshPiece piece = cut_piece(L, owner, 0, ghost_rings);
-  const Hierarchy h = refine(scheme, piece.level, options);
+  MeshPiece piece = cut_piece(L, owner, 0, ghost_rings);
+  // The piece's level moves into the hierarchy (its levels[0], whose edges the origins name).
+  const Hierarchy h = refine(scheme, std::move(piece.level), options);
   std::vector<int> piece_owner;
+  piece_owner.reserve(piece.base_face.size());
   for (Index f : piece.base_face) piece_owner.push_back(owner[size_t(f)]);
   const std::vector<int> child_owner = finest_face_owners(h, piece_owner);
-  const MeshPiece kept = cut_piece(h.levels[1], child_owner, 0, 0);
+  MeshPiece kept = cut_piece(h.levels[1], child_owner, 0, 0);
   const ChildOrigins& o = h.origins[0];
-  const Level& P = piece.level;
+  const Level& P = h.levels[0];
 
   AdaptiveStage n;
-  n.level = kept.level;
+  n.level = std::move(kept.level);
   std::vector<double> piece_points;
   const int C = s.channels;
+  piece_points.reserve(piece.base_vertex.size() * size_t(C));
   for (Index v : piece.base_vertex)
     piece_points.insert(piece_points.end(), s.points.begin() + C * v, s.points.begin() + C * v + C);
   n.points = gather_tuples(h.stencils[0].apply(piece_points, C), C, kept.base_vertex);
@@ -127,7 +130,7 @@ AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, in
   // Each child vertex's parent element in the stage, and whether it is complete.
   s.vertex_child.assign(size_t(L.vertex_count), kNone);
   s.edge_child.assign(size_t(L.edge_count()), kNone);
-  s.children.assign(size_t(L.face_count()), {});
+  s.first_child.assign(size_t(L.face_count()) + 1, 0);
   auto all_computed = [&](std::span<const Index> faces) {
     for (Index f : faces)
       if (!computed[size_t(f)]) return false;
@@ -165,7 +168,9 @@ AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, in
       rank_in_parent[size_t(i)] = rank_in_parent[size_t(i - 1)] + 1;
   for (Index g = 0; g < n.level.face_count(); ++g) {
     const Index f = piece.base_face[size_t(o.parent_face[size_t(kept.base_face[size_t(g)])])];
-    s.children[size_t(f)].push_back(g);
+    if (!n.parent.empty() && f < n.parent.back())
+      throw Error("adaptive refinement: the split gave a face's children apart from each other");
+    ++s.first_child[size_t(f) + 1];
     n.parent.push_back(f);
     n.rank.push_back(rank_in_parent[size_t(kept.base_face[size_t(g)])]);
     n.base_face.push_back(s.base_face[size_t(f)]);
@@ -183,6 +188,7 @@ AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, in
       n.corner_uv.push_back(child_uv(s, f, kind, ka, kb, tile, sub_faces));
     }
   }
+  for (size_t f = 0; f < size_t(L.face_count()); ++f) s.first_child[f + 1] += s.first_child[f];
   return n;
 }
 
