@@ -52,7 +52,7 @@ AdaptiveValueStage value_base_stage(const Level& base, const AdaptiveValueMesh& 
 
 AdaptiveValueStage refine_value_stage(const Scheme& scheme, const AdaptiveStage& vs, const AdaptiveStage& vnext,
                                       AdaptiveValueStage& s, const AdaptiveValueMesh& channel, int ghost_rings,
-                                      RefineOptions options) {
+                                      RefineOptions options, bool last) {
   tag_linear(s.level, vs, channel);
   const Level& L = s.level;
   // The piece: the faces whose children the vertex stage keeps (its computed faces, and ghosts
@@ -61,6 +61,7 @@ AdaptiveValueStage refine_value_stage(const Scheme& scheme, const AdaptiveStage&
   for (Index f : vnext.parent) owner[size_t(f)] = 0;
   MeshPiece piece = cut_piece(L, owner, 0, ghost_rings);
   options.features.boundary = BoundaryInterpolation::EdgesOnly;  // the corners are tagged
+  options.faces_only_last_level = last;  // where the engine can: only its faces are read then
   // The piece's level moves into the hierarchy (its levels[0], whose edges the origins name).
   const Hierarchy h = refine(scheme, std::move(piece.level), options);
   const Level& C = h.levels[1];
@@ -98,17 +99,23 @@ AdaptiveValueStage refine_value_stage(const Scheme& scheme, const AdaptiveStage&
     offsets.push_back(Index(corners.size()));
   }
   AdaptiveValueStage n;
-  n.level = build_level(Index(used.size()), offsets, corners);
   Level& N = n.level;
-  if (!C.edge_sharpness.empty()) {
+  if (last) {
+    N.vertex_count = Index(used.size());
+    N.face_offsets.assign(offsets.begin(), offsets.end());
+    N.face_vertices.assign(corners.begin(), corners.end());
+  } else {
+    N = build_level(Index(used.size()), offsets, corners);
+  }
+  if (!last && !C.edge_sharpness.empty()) {
     N.edge_sharpness.assign(size_t(N.edge_count()), 0.f);
     for (size_t g = 0; g < faces.size(); ++g)
       for (int k = 0; k < N.face_size(Index(g)); ++k)
         N.edge_sharpness[size_t(N.face_edge_list(Index(g))[k])] = C.edge_sharp(C.face_edge_list(faces[g])[k]);
   }
-  if (!C.vertex_sharpness.empty())
+  if (!last && !C.vertex_sharpness.empty())
     for (Index u : used) N.vertex_sharpness.push_back(C.vertex_sharp(u));
-  if (!C.face_hole.empty())
+  if (!last && !C.face_hole.empty())
     for (Index i : faces) N.face_hole.push_back(C.face_hole[size_t(i)]);
 
   const int components = channel.components;

@@ -99,7 +99,7 @@ AdaptiveStage base_stage(const Level& base, std::span<const double> points, int 
 }
 
 AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, int ghost_rings,
-                           const RefineOptions& options, bool triangles) {
+                           const RefineOptions& options, bool triangles, bool last) {
   const Level& L = s.level;
   const std::vector<char> computed = grown(L, s.split, rings);
   check_inside(s, computed, ghost_rings);
@@ -113,7 +113,7 @@ AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, in
   piece_owner.reserve(piece.base_face.size());
   for (Index f : piece.base_face) piece_owner.push_back(owner[size_t(f)]);
   const std::vector<int> child_owner = finest_face_owners(h, piece_owner);
-  MeshPiece kept = cut_piece(h.levels[1], child_owner, 0, 0);
+  MeshPiece kept = cut_piece(h.levels[1], child_owner, 0, 0, last);
   const ChildOrigins& o = h.origins[0];
   const Level& P = h.levels[0];
 
