@@ -159,7 +159,7 @@ struct Stitcher {
   void emit(int l, Index f) {
     const AdaptiveStage& s = stages[size_t(l)];
     if (l < levels && s.split[size_t(f)]) {
-      for (Index c = s.first_child[size_t(f)]; c < s.first_child[size_t(f) + 1]; ++c) emit(l + 1, c);
+      for (Index c : s.children[size_t(f)]) emit(l + 1, c);
       return;
     }
     const auto fv = s.level.face(f);

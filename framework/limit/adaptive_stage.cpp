@@ -130,7 +130,7 @@ AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, in
   // Each child vertex's parent element in the stage, and whether it is complete.
   s.vertex_child.assign(size_t(L.vertex_count), kNone);
   s.edge_child.assign(size_t(L.edge_count()), kNone);
-  s.first_child.assign(size_t(L.face_count()) + 1, 0);
+  s.children.assign(size_t(L.face_count()), {});
   auto all_computed = [&](std::span<const Index> faces) {
     for (Index f : faces)
       if (!computed[size_t(f)]) return false;
@@ -168,9 +168,7 @@ AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, in
       rank_in_parent[size_t(i)] = rank_in_parent[size_t(i - 1)] + 1;
   for (Index g = 0; g < n.level.face_count(); ++g) {
     const Index f = piece.base_face[size_t(o.parent_face[size_t(kept.base_face[size_t(g)])])];
-    if (!n.parent.empty() && f < n.parent.back())
-      throw Error("adaptive refinement: the split gave a face's children apart from each other");
-    ++s.first_child[size_t(f) + 1];
+    s.children[size_t(f)].push_back(g);
     n.parent.push_back(f);
     n.rank.push_back(rank_in_parent[size_t(kept.base_face[size_t(g)])]);
     n.base_face.push_back(s.base_face[size_t(f)]);
@@ -188,7 +186,6 @@ AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, in
       n.corner_uv.push_back(child_uv(s, f, kind, ka, kb, tile, sub_faces));
     }
   }
-  for (size_t f = 0; f < size_t(L.face_count()); ++f) s.first_child[f + 1] += s.first_child[f];
   return n;
 }
 

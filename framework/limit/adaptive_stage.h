@@ -38,10 +38,7 @@ struct AdaptiveStage {
   std::vector<int> rank;
   // Filled by refine_stage: this stage's vertices, edges and faces in the next stage.
   std::vector<Index> vertex_child, edge_child;  // kNone where not computed
-  // Per face and one past the last: its first child face. The stage keeps the children of a
-  // parent next to each other, parents in order, so face f's children are
-  // first_child[f] .. first_child[f + 1] - 1.
-  std::vector<Index> first_child;
+  std::vector<std::vector<Index>> children;     // per face: its child faces
 };
 
 // The base mesh as stage 0 (every vertex complete, every face a candidate).
