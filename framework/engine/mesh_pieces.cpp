@@ -83,7 +83,7 @@ void copy_tags(const Level& base, MeshPiece& p) {
 
 }  // namespace
 
-MeshPiece cut_piece(const Level& base, std::span<const int> face_owner, int piece, int ghost_rings) {
+MeshPiece cut_piece(const Level& base, std::span<const int> face_owner, int piece, int ghost_rings, bool faces_only) {
   if (std::find(face_owner.begin(), face_owner.end(), piece) == face_owner.end())
     throw Error(fmt::format("piece {} has no faces; ask for at most as many pieces as the mesh has faces ({})", piece,
                             base.face_count()));
@@ -99,9 +99,16 @@ MeshPiece cut_piece(const Level& base, std::span<const int> face_owner, int piec
   for (Index v = 0; v < base.vertex_count; ++v)
     if (local[v] == 0) local[v] = Index(p.base_vertex.size()), p.base_vertex.push_back(v);
   std::vector<Index> offsets{0}, corners;
+  offsets.reserve(p.base_face.size() + 1);
   for (Index f : p.base_face) {
     for (Index v : base.face(f)) corners.push_back(local[v]);
     offsets.push_back(Index(corners.size()));
+  }
+  if (faces_only) {
+    p.level.vertex_count = Index(p.base_vertex.size());
+    p.level.face_offsets.assign(offsets.begin(), offsets.end());
+    p.level.face_vertices.assign(corners.begin(), corners.end());
+    return p;
   }
   p.level = build_level(Index(p.base_vertex.size()), offsets, corners);
   copy_tags(base, p);

@@ -24,7 +24,10 @@ struct MeshPiece {
 // vertex where those would form two fans (a pinch). Faces and vertices keep the
 // base mesh's relative order, so every ring starts where it starts in the whole mesh and
 // each row is summed in the same order. Throws subdiv::Error when the piece has no face.
-MeshPiece cut_piece(const Level& base, std::span<const int> face_owner, int piece, int ghost_rings);
+// With `faces_only`, the piece's level has its faces only (vertex_count, face_offsets,
+// face_vertices; no edges, rings or tags), for a level nothing refines or searches further.
+MeshPiece cut_piece(const Level& base, std::span<const int> face_owner, int piece, int ghost_rings,
+                    bool faces_only = false);
 
 // How many faces cut_piece's level would have, without building it.
 Index piece_face_count(const Level& base, std::span<const int> face_owner, int piece, int ghost_rings);

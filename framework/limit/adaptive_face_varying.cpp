@@ -52,32 +52,40 @@ AdaptiveValueStage value_base_stage(const Level& base, const AdaptiveValueMesh& 
 
 AdaptiveValueStage refine_value_stage(const Scheme& scheme, const AdaptiveStage& vs, const AdaptiveStage& vnext,
                                       AdaptiveValueStage& s, const AdaptiveValueMesh& channel, int ghost_rings,
-                                      RefineOptions options) {
+                                      RefineOptions options, bool last) {
   tag_linear(s.level, vs, channel);
   const Level& L = s.level;
   // The piece: the faces whose children the vertex stage keeps (its computed faces, and ghosts
   // whose children fill a pinch), with the value mesh's ghost rings.
   std::vector<int> owner(size_t(L.face_count()), 1);
   for (Index f : vnext.parent) owner[size_t(f)] = 0;
-  const MeshPiece piece = cut_piece(L, owner, 0, ghost_rings);
+  MeshPiece piece = cut_piece(L, owner, 0, ghost_rings);
   options.features.boundary = BoundaryInterpolation::EdgesOnly;  // the corners are tagged
-  const Hierarchy h = refine(scheme, piece.level, options);
+  options.faces_only_last_level = last;  // where the engine can: only its faces are read then
+  // The piece's level moves into the hierarchy (its levels[0], whose edges the origins name).
+  const Hierarchy h = refine(scheme, std::move(piece.level), options);
   const Level& C = h.levels[1];
   const ChildOrigins& o = h.origins[0];
-  // Each stage face's children in the piece's refinement, in order.
-  std::vector<std::vector<Index>> children(size_t(L.face_count()));
+  // Each stage face's children in the piece's refinement: a parent's children follow each
+  // other, so its first child and their count.
+  std::vector<Index> first_child(size_t(L.face_count()), kNone), child_count(size_t(L.face_count()), 0);
   for (Index i = 0; i < C.face_count(); ++i)
-    if (const Index parent = o.parent_face[size_t(i)]; parent != kNone)
-      children[size_t(piece.base_face[size_t(parent)])].push_back(i);
+    if (const Index parent = o.parent_face[size_t(i)]; parent != kNone) {
+      const size_t f = size_t(piece.base_face[size_t(parent)]);
+      if (child_count[f]++ == 0) first_child[f] = i;
+      else if (first_child[f] + child_count[f] - 1 != i)
+        throw Error("adaptive refinement: the split gave a face's children apart from each other");
+    }
   // The vertex stage's faces, taken from the piece's children: the same parent, the same place.
   std::vector<Index> faces;
+  faces.reserve(vnext.parent.size());
   for (size_t g = 0; g < vnext.parent.size(); ++g) {
-    const auto& mine = children[size_t(vnext.parent[g])];
-    const size_t r = size_t(vnext.rank[g]);
-    if (r >= mine.size() || C.face_size(mine[r]) != vnext.level.face_size(Index(g)))
+    const size_t f = size_t(vnext.parent[g]);
+    const Index r = Index(vnext.rank[g]);
+    if (r >= child_count[f] || C.face_size(first_child[f] + r) != vnext.level.face_size(Index(g)))
       throw Error("adaptive refinement: a face-varying channel's child faces are not the mesh's (a split that "
                   "divides a face of the UV islands differently); refine uniformly instead");
-    faces.push_back(mine[r]);
+    faces.push_back(first_child[f] + r);
   }
   // Those faces as a level: vertices in the piece's order, the piece's tags.
   std::vector<Index> local(size_t(C.vertex_count), kNone), used;
@@ -91,21 +99,28 @@ AdaptiveValueStage refine_value_stage(const Scheme& scheme, const AdaptiveStage&
     offsets.push_back(Index(corners.size()));
   }
   AdaptiveValueStage n;
-  n.level = build_level(Index(used.size()), offsets, corners);
   Level& N = n.level;
-  if (!C.edge_sharpness.empty()) {
+  if (last) {
+    N.vertex_count = Index(used.size());
+    N.face_offsets.assign(offsets.begin(), offsets.end());
+    N.face_vertices.assign(corners.begin(), corners.end());
+  } else {
+    N = build_level(Index(used.size()), offsets, corners);
+  }
+  if (!last && !C.edge_sharpness.empty()) {
     N.edge_sharpness.assign(size_t(N.edge_count()), 0.f);
     for (size_t g = 0; g < faces.size(); ++g)
       for (int k = 0; k < N.face_size(Index(g)); ++k)
         N.edge_sharpness[size_t(N.face_edge_list(Index(g))[k])] = C.edge_sharp(C.face_edge_list(faces[g])[k]);
   }
-  if (!C.vertex_sharpness.empty())
+  if (!last && !C.vertex_sharpness.empty())
     for (Index u : used) N.vertex_sharpness.push_back(C.vertex_sharp(u));
-  if (!C.face_hole.empty())
+  if (!last && !C.face_hole.empty())
     for (Index i : faces) N.face_hole.push_back(C.face_hole[size_t(i)]);
 
   const int components = channel.components;
   std::vector<double> piece_values;
+  piece_values.reserve(piece.base_vertex.size() * size_t(components));
   for (Index v : piece.base_vertex)
     piece_values.insert(piece_values.end(), s.values.begin() + std::ptrdiff_t(components) * v,
                         s.values.begin() + std::ptrdiff_t(components) * (v + 1));
@@ -113,7 +128,7 @@ AdaptiveValueStage refine_value_stage(const Scheme& scheme, const AdaptiveStage&
 
   s.vertex_child.assign(size_t(L.vertex_count), kNone);
   s.edge_child.assign(size_t(L.edge_count()), kNone);
-  const Level& P = piece.level;
+  const Level& P = h.levels[0];
   for (size_t c = 0; c < used.size(); ++c) {
     const Index from = o.parent[size_t(used[c])];
     if (o.kind[size_t(used[c])] == OriginKind::Vertex) {

@@ -34,8 +34,11 @@ AdaptiveValueStage value_base_stage(const Level& base, const AdaptiveValueMesh& 
 // faces' `parent` and `rank` say which children to keep; `options` as for the vertex stage
 // (the boundary rule is made EdgesOnly: the value mesh's corners are tagged). Throws
 // subdiv::Error when the value mesh's split does not give a face the vertex stage kept.
+// With `last` (nothing refines the new stage further) the new stage's level has its faces
+// only (no edges, rings or tags), all its faces and corners need.
 AdaptiveValueStage refine_value_stage(const Scheme& scheme, const AdaptiveStage& vertex_stage,
                                       const AdaptiveStage& vertex_next, AdaptiveValueStage& stage,
-                                      const AdaptiveValueMesh& channel, int ghost_rings, RefineOptions options);
+                                      const AdaptiveValueMesh& channel, int ghost_rings, RefineOptions options,
+                                      bool last = false);
 
 }  // namespace subdiv

@@ -394,11 +394,13 @@ AdaptiveMesh refine_adaptive(const Scheme& scheme, const Level& input, std::span
     ro.evaluation.weight_tables = &tables.cache();
     const StepProgressScope::Report share = StepProgressScope::span(level_middle, level_end);
     const StepProgressScope refining(share);
-    AdaptiveStage next = small ? serial.execute([&] { return refine_stage(scheme, s, rings, ghosts, ro, triangles); })
-                               : refine_stage(scheme, s, rings, ghosts, ro, triangles);
+    // The last stage is only read for its faces and corners (the stitcher splits none of it).
+    const bool last = l + 1 == levels;
+    AdaptiveStage next = small ? serial.execute([&] { return refine_stage(scheme, s, rings, ghosts, ro, triangles, last); })
+                               : refine_stage(scheme, s, rings, ghosts, ro, triangles, last);
     for (size_t k = 0; k < channels.size(); ++k) {
       auto refine_values = [&] {
-        return refine_value_stage(scheme, s, next, channels[k].back(), options.face_varying[k], ghosts, ro);
+        return refine_value_stage(scheme, s, next, channels[k].back(), options.face_varying[k], ghosts, ro, last);
       };
       channels[k].push_back(small ? serial.execute(refine_values) : refine_values());
     }

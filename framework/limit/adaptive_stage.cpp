@@ -99,26 +99,29 @@ AdaptiveStage base_stage(const Level& base, std::span<const double> points, int 
 }
 
 AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, int ghost_rings,
-                           const RefineOptions& options, bool triangles) {
+                           const RefineOptions& options, bool triangles, bool last) {
   const Level& L = s.level;
   const std::vector<char> computed = grown(L, s.split, rings);
   check_inside(s, computed, ghost_rings);
   std::vector<int> owner(size_t(L.face_count()), 1);
   for (Index f = 0; f < L.face_count(); ++f)
     if (computed[size_t(f)]) owner[size_t(f)] = 0;
-  const MeshPiece piece = cut_piece(L, owner, 0, ghost_rings);
-  const Hierarchy h = refine(scheme, piece.level, options);
+  MeshPiece piece = cut_piece(L, owner, 0, ghost_rings);
+  // The piece's level moves into the hierarchy (its levels[0], whose edges the origins name).
+  const Hierarchy h = refine(scheme, std::move(piece.level), options);
   std::vector<int> piece_owner;
+  piece_owner.reserve(piece.base_face.size());
   for (Index f : piece.base_face) piece_owner.push_back(owner[size_t(f)]);
   const std::vector<int> child_owner = finest_face_owners(h, piece_owner);
-  const MeshPiece kept = cut_piece(h.levels[1], child_owner, 0, 0);
+  MeshPiece kept = cut_piece(h.levels[1], child_owner, 0, 0, last);
   const ChildOrigins& o = h.origins[0];
-  const Level& P = piece.level;
+  const Level& P = h.levels[0];
 
   AdaptiveStage n;
-  n.level = kept.level;
+  n.level = std::move(kept.level);
   std::vector<double> piece_points;
   const int C = s.channels;
+  piece_points.reserve(piece.base_vertex.size() * size_t(C));
   for (Index v : piece.base_vertex)
     piece_points.insert(piece_points.end(), s.points.begin() + C * v, s.points.begin() + C * v + C);
   n.points = gather_tuples(h.stencils[0].apply(piece_points, C), C, kept.base_vertex);

@@ -45,8 +45,10 @@ struct AdaptiveStage {
 AdaptiveStage base_stage(const Level& base, std::span<const double> points, int channels, bool triangles);
 
 // Refines `stage` (its `split` faces set) one level: see above. `options` gives the
-// features and first_step (the stage's level counted from the original mesh).
+// features and first_step (the stage's level counted from the original mesh). With `last`
+// (nothing refines the new stage further) the new stage's level has its faces only
+// (mesh_pieces.h: no edges, rings or tags), all its faces and corners need.
 AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& stage, int rings, int ghost_rings,
-                           const RefineOptions& options, bool triangles);
+                           const RefineOptions& options, bool triangles, bool last = false);
 
 }  // namespace subdiv
