@@ -5,6 +5,9 @@
 # coverage instrumentation (cmake/Sanitizers.cmake), which serves the sanitized test suite
 # and the fuzzers alike and halves what CI compiles.
 SUBDIV_ASAN_DIR=${SUBDIV_ASAN_DIR:-build-asan}
+# Clones of the checkout share ccache's objects (paths relative to the checkout; the debug
+# info's compile directory is not hashed, so a clone elsewhere hits the same objects).
+export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
 SUBDIV_JOBS=${JOBS:-$(nproc)}
 
 configure_sanitized_build() {

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <fmt/format.h>
-#include <numeric>
 #include <optional>
 #include <string>
 #include <tbb/enumerable_thread_specific.h>
@@ -13,12 +12,12 @@
 
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/engine/ghost_rings.h"
-#include "framework/engine/weight_table_cache.h"
 #include "framework/features/base_tags.h"
 #include "framework/limit/adaptive_face_varying.h"
 #include "framework/limit/adaptive_progress.h"
 #include "framework/limit/adaptive_stage.h"
 #include "framework/limit/adaptive_transitions.h"
+#include "framework/limit/cut_weight_tables.h"
 #include "framework/limit/limit_surface.h"
 #include "framework/scheme/scheme.h"
 #include "framework/scheme/scheme_registry.h"
@@ -310,11 +309,8 @@ void check_no_repeated_corner(const Level& base) {
 
 // Pieces have the base's valences and, along their cuts and boundaries, 1 to the regular one:
 // the first table is made for all of them.
-AdaptiveTables::AdaptiveTables(const Scheme& scheme) : scheme_(&scheme) {
-  std::vector<int> seed(scheme.split() == SplitKind::Triangle ? 6 : 4);
-  std::iota(seed.begin(), seed.end(), 1);
-  cache_ = std::make_unique<WeightTableCache>(!scheme_is_level_dependent(scheme), std::move(seed));
-}
+AdaptiveTables::AdaptiveTables(const Scheme& scheme)
+    : scheme_(&scheme), cache_(cut_weight_tables(scheme, !scheme_is_level_dependent(scheme))) {}
 
 AdaptiveTables::~AdaptiveTables() = default;
 

@@ -12,7 +12,9 @@ namespace subdiv {
 
 struct Scheme;
 
-// Seeded with the valences along a cut's border (1 to the regular one), which every cut has.
-std::unique_ptr<WeightTableCache> cut_weight_tables(const Scheme& scheme);
+// Seeded with the valences along a cut's border (1 to the regular one), which every cut and
+// every piece of adaptive refinement has. `level_independent`: no formula of the scheme reads
+// the level l (then one table serves every level; the evaluator's cuts all start at level 0).
+std::unique_ptr<WeightTableCache> cut_weight_tables(const Scheme& scheme, bool level_independent = false);
 
 }  // namespace subdiv

@@ -10,6 +10,7 @@
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/refiner.h"
 #include "framework/limit/canonical_cut.h"
+#include "framework/limit/cut_weight_tables.h"
 #include "framework/limit/two_steps.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -198,7 +199,9 @@ std::array<double, 2> child_gradient(const TriadicChild& t, int m) {
 }
 
 Sqrt3Nodes::Sqrt3Nodes(const Scheme& scheme, const FeatureOptions& features, int radius, SchemeLimits& limits)
-    : scheme_(scheme), features_(features), radius_(radius), limits_(limits) {}
+    : scheme_(scheme), features_(features), radius_(radius), limits_(limits), tables_(cut_weight_tables(scheme)) {}
+
+Sqrt3Nodes::~Sqrt3Nodes() = default;
 
 int Sqrt3Nodes::intern(const Level& cut, Index face, std::vector<Index>& order) {
   return tbb::this_task_arena::isolate([&] {
@@ -245,6 +248,7 @@ Sqrt3Node& Sqrt3Nodes::expand_locked(int id) {
   RefineOptions ro;
   ro.levels = 2;
   ro.features = features_;
+  ro.evaluation.weight_tables = tables_.get();
   const Hierarchy h = refine(scheme_, n->level, ro);
   const std::vector<Bary> at1 = first_step_coordinates(n->level, n->face, h.origins[0]);
   const std::vector<Bary> at2 = child_coordinates(h.levels[1], at1, h.origins[1]);

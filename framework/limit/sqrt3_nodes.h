@@ -25,6 +25,7 @@ namespace subdiv {
 
 struct Scheme;
 class SchemeLimits;
+class WeightTableCache;
 
 using Bary = std::array<double, 3>;  // barycentric coordinates from a face's corner 0
 using Lattice = std::array<int, 3>;  // 3 b: a point of the triadic lattice (sums to 3)
@@ -75,6 +76,7 @@ class Sqrt3Nodes {
 public:
   // Cuts have `radius` face rings around their face.
   Sqrt3Nodes(const Scheme& scheme, const FeatureOptions& features, int radius, SchemeLimits& limits);
+  ~Sqrt3Nodes();
 
   // The node of a cut around `face`, and the cut's vertices in label order.
   int intern(const Level& cut, Index face, std::vector<Index>& order);
@@ -97,6 +99,7 @@ private:
   FeatureOptions features_;
   int radius_;
   SchemeLimits& limits_;
+  std::unique_ptr<WeightTableCache> tables_;  // cut_weight_tables.h
   std::mutex mutex_;
   std::map<std::vector<double>, int> index_;
   std::vector<std::unique_ptr<Sqrt3Node>> nodes_;
