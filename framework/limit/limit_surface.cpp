@@ -100,10 +100,6 @@ StepMatrix renumbering(const std::vector<Index>& order, Index source_count) {
   return m;
 }
 
-}  // namespace
-
-namespace {
-
 // A face number past the end or negative (a points file's row, a Python index).
 std::string no_such_face(Index face, Index count) {
   if (count == 0) return fmt::format("face {} does not exist: the mesh has no faces", face);
