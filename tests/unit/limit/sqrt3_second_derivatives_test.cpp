@@ -158,6 +158,23 @@ TEST_CASE("sqrt3 second derivatives: near extraordinary vertices, none at them, 
   }
 }
 
+TEST_CASE("sqrt3 second derivatives: close to vertices of valence 3, 5 and 7") {
+  // The apex of a bipyramid (corner 2 of every upper face) has valence n; the surface is C2
+  // beside it, so central differences of the first derivatives match the second derivatives
+  // at every distance d down to where the descent takes the self-similar levels' powers
+  // (d = 1e-6 is about 12 double steps in), the difference step a fraction of d.
+  for (const int n : {3, 5, 7}) {
+    CAPTURE(n);
+    const test::Mesh m = bumped(test::bipyramid(n));
+    const LimitSurface s(load_scheme("sqrt3"), m.level());
+    CHECK(!s.evaluate(0, 0, 1, m.positions, 3, 2).has_second_derivatives);
+    for (const double d : {1e-1, 1e-2, 1e-4, 1e-6}) {
+      CAPTURE(d);
+      CHECK(second_difference_error(s, 2, 0.7 * d, 1 - 1.6 * d, m.positions, 1e-4 * d) < 1e-3);
+    }
+  }
+}
+
 TEST_CASE("sqrt3 second derivatives: stencils equal evaluation") {
   for (const test::Mesh& m : {regular_torus(), bumped(test::octahedron())}) {
     const LimitSurface s(load_scheme("sqrt3"), m.level());
