@@ -9,6 +9,7 @@
 #include <cstring>
 #include <list>
 #include <mutex>
+#include <string_view>
 #include <unordered_map>
 #include <fmt/format.h>
 #include <tbb/task_arena.h>
@@ -38,6 +39,7 @@
 #include "framework/topology/non_manifold_place.h"
 #include "framework/util/bulk_memory.h"
 #include "framework/util/error.h"
+#include "framework/util/option_spelling.h"
 #include "framework/util/quoted_text.h"
 
 namespace subdiv {
@@ -98,6 +100,32 @@ StepMatrix renumbering(const std::vector<Index>& order, Index source_count) {
     m.offsets.push_back(Index(m.columns.size()));
   }
   return m;
+}
+
+// Runs `f` for the point (face, u, v) a caller asked for; an error from the neighbourhood
+// names that point. Only the outermost call names it: a non-manifold mesh's sheets and a
+// sequence's tail are surfaces of their own, whose faces are numbered their way. Errors that
+// name a face already (the point's own checks), option errors (they name the option) and
+// NotClosed (caught inside, to widen the cuts) pass unchanged.
+thread_local int point_call_depth = 0;
+
+template <class F>
+auto naming_the_point(Index face, double u, double v, F&& f) -> decltype(f()) {
+  struct Depth {
+    Depth() { ++point_call_depth; }
+    ~Depth() { --point_call_depth; }
+  } depth;
+  if (point_call_depth > 1) return f();
+  try {
+    return f();
+  } catch (const NotClosed&) {
+    throw;
+  } catch (const OptionError&) {
+    throw;
+  } catch (const Error& e) {
+    if (std::string_view(e.what()).starts_with(fmt::format("face {} ", face))) throw;
+    throw Error(fmt::format("face {} at (u, v) = ({}, {}): {}", face, u, v, e.what()));
+  }
 }
 
 // A face number past the end or negative (a points file's row, a Python index).
@@ -1588,6 +1616,11 @@ void LimitSurface::evaluate_into(Index face, double u, double v, std::span<const
   if (channels < 1 || values.size() < size_t(impl_->base.vertex_count) * size_t(channels))
     throw Error(fmt::format("limit evaluation needs {} values per vertex for {} vertices, got {}", channels,
                             impl_->base.vertex_count, values.size()));
+  naming_the_point(face, u, v, [&] { evaluate_unnamed(face, u, v, values, channels, derivatives, out); });
+}
+
+void LimitSurface::evaluate_unnamed(Index face, double u, double v, std::span<const double> values, int channels,
+                                    int derivatives, LimitSample& out) const {
   clear_sample(out);
   if (impl_->sheets || impl_->tail) {
     // Through the stencil: a non-manifold mesh's sheets would need a copy of every vertex's
@@ -1606,14 +1639,7 @@ void LimitSurface::evaluate_into(Index face, double u, double v, std::span<const
     if (out.has_second_derivatives) apply(w.duu, out.duu), apply(w.duv, out.duv), apply(w.dvv, out.dvv);
     return;
   }
-  const FacePoint p = impl_->start(face, u, v);
-  try {
-    evaluate_at(p, values, channels, derivatives, out);
-  } catch (const NotClosed&) {
-    throw;
-  } catch (const Error& e) {
-    throw Error(fmt::format("face {} at (u, v) = ({}, {}): {}", face, u, v, e.what()));
-  }
+  evaluate_at(impl_->start(face, u, v), values, channels, derivatives, out);
 }
 
 void LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> values, int channels, int derivatives,
@@ -1678,6 +1704,10 @@ void LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> value
 LimitStencil LimitSurface::stencil(Index face, double u, double v, int derivatives) const {
   if (derivatives < 0 || derivatives > 2)
     throw Error(fmt::format("derivatives {}: the order must be 0, 1 or 2", derivatives));
+  return naming_the_point(face, u, v, [&] { return stencil_unnamed(face, u, v, derivatives); });
+}
+
+LimitStencil LimitSurface::stencil_unnamed(Index face, double u, double v, int derivatives) const {
   if (impl_->sheets) return on_base_vertices(impl_->sheets->stencil(face, u, v, derivatives), impl_->sheet_origin);
   if (impl_->tail) return sequence_stencil(face, u, v, derivatives);
   const FacePoint p = impl_->start(face, u, v);

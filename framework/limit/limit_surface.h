@@ -118,7 +118,8 @@ public:
 
   // The limit of `values` (channels per base vertex) at (face, u, v) in Bfr's
   // parameterisation (face_domain.h). Throws subdiv::Error for a face that does not exist,
-  // a hole, or (u, v) outside the face's domain. Thread-safe. `derivatives` is the highest
+  // a hole, or (u, v) outside the face's domain, and where the point's neighbourhood is one
+  // the evaluation refuses (the message names the face and (u, v)). Thread-safe. `derivatives` is the highest
   // order computed: 0 the position only (about half the work), 1 also du and dv, 2 also the
   // second derivatives where they exist.
   LimitSample evaluate(Index face, double u, double v, std::span<const double> values, int channels,
@@ -141,6 +142,9 @@ private:
   void evaluate_at(const FacePoint& p, std::span<const double> values, int channels, int derivatives,
                    LimitSample& out) const;
   LimitStencil sequence_stencil(Index face, double u, double v, int derivatives) const;
+  void evaluate_unnamed(Index face, double u, double v, std::span<const double> values, int channels,
+                        int derivatives, LimitSample& out) const;
+  LimitStencil stencil_unnamed(Index face, double u, double v, int derivatives) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

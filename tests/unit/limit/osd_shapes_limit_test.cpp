@@ -150,6 +150,28 @@ TEST_CASE("OpenSubdiv's regression shapes: the limit at (face, u, v) is Bfr's") 
                       "within {:.2g}", shapes, position, vertices, derivative));
 }
 
+TEST_CASE("A point the evaluation refuses is named in the error: face and (u, v)") {
+  // loop_val2_interior is non-manifold (its first two triangles, back to back, touch two
+  // more at a vertex): its points go through the surface's manifold sheets, whose faces are
+  // numbered their own way, yet the message names the face and (u, v) the caller gave, once.
+  const std::string shape = "loop_val2_interior";
+  const MeshData mesh = read_mesh(std::filesystem::path(kShapes) / (shape + ".obj"));
+  const LimitSurface surface(load_scheme("loop"), level_from_mesh(mesh, shape));
+  const std::string named = "face 1 at (u, v) = (0.25, 0.5): the neighbourhood of this point wraps around";
+  CHECK_THROWS_WITH_AS(surface.evaluate(1, 0.25, 0.5, mesh.positions, 3), doctest::Contains(named.c_str()), Error);
+  CHECK_THROWS_WITH_AS(surface.stencil(1, 0.25, 0.5), doctest::Contains(named.c_str()), Error);
+  try {
+    (void)surface.stencil(1, 0.25, 0.5);
+  } catch (const Error& e) {
+    CHECK(std::string(e.what()).find("(u, v)", std::string(e.what()).find("(u, v)") + 1) == std::string::npos);
+  }
+  // The two triangles apart from the pillow evaluate; a face that does not exist is named by
+  // its own check, not twice.
+  CHECK_NOTHROW((void)surface.evaluate(2, 0.25, 0.5, mesh.positions, 3));
+  CHECK_THROWS_WITH_AS(surface.evaluate(10, 0.25, 0.5, mesh.positions, 3),
+                       doctest::Contains("face 10 does not exist: the mesh has 10 faces"), Error);
+}
+
 TEST_CASE("OpenSubdiv's valence-360 poles: the limit at the pole is its limit mask, near it Bfr's") {
   // catmark_pole360 (triangles round the pole, Catmull-Clark) and loop_pole360: the pole is
   // corner 2 of face 1. Its limit is the mask from the eigen-analysis (valence 360: the
