@@ -1051,6 +1051,11 @@ TEST_CASE("dual limit where a semi-sharp edge meets the boundary: the corner dec
     CHECK(off < 1e-9);
     check_edges_continuous(s, m, L, 1e-12);
   }
+  // Chaikin's decay averages the sharpness of a crease vertex's edges; the corner's one
+  // semi-sharp edge decays as under the uniform rule.
+  LimitSurfaceOptions chaikin;
+  chaikin.features.crease_method = CreaseMethod::Chaikin;
+  check_edges_continuous(LimitSurface(scheme("doo-sabin"), L, chaikin), m, L, 1e-12);
   // Off the crease and the boundary the derivatives are those of the positions.
   const LimitSurface s(scheme("doo-sabin"), L);
   double worst = 0;
