@@ -29,14 +29,7 @@ std::string vertex_problem(const Level& L, Index v) {
   const float vs = L.vertex_sharp(v);
   if (vs >= 1.f && vs < kInfinitelySharp)
     return fmt::format("vertex {} has sharpness {} (a semi-sharp corner)", v, vs);
-  if (dual_collapses(L, v)) {
-    for (Index e : L.ring_edges(v))
-      if (!infinitely_sharp(L, e))
-        return fmt::format("corner vertex {} has an edge that is not infinitely sharp (its ring of faces doubles "
-                           "every level, so no neighbourhood repeats)",
-                           v);
-    return {};
-  }
+  if (dual_collapses(L, v)) return {};  // faces_refused_at: the corners not evaluated refuse their faces only
   if (sharp == 0) return {};
   if (sharp == 1) return fmt::format("vertex {} ends a crease (a dart)", v);
   float s[2] = {0, 0};
@@ -265,36 +258,82 @@ std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& feat
 
 namespace {
 
-// The faces on the two sides of v's crease (v has two sharp edges and does not collapse).
-std::array<int, 2> crease_sides(const Level& L, Index v) {
+// The faces on the two sides of v's crease: v has two edges for which `sharp` holds.
+template <class Sharp>
+std::array<int, 2> crease_sides(const Level& L, Index v, Sharp sharp) {
   if (L.on_boundary(v)) return {L.incident_face_count(v), 0};
   const auto ring = L.ring_edges(v);
   const int n = int(ring.size());
   int first = -1, second = -1;
   for (int k = 0; k < n; ++k)
-    if (dual_sharp_edge(L, ring[size_t(k)])) (first < 0 ? first : second) = k;
+    if (sharp(ring[size_t(k)])) (first < 0 ? first : second) = k;
   return {second - first, n - (second - first)};
+}
+
+VertexRefusal sides_refusal(const Level& L, Index v, std::array<int, 2> sides, const std::string& what) {
+  if (sides[0] == 2 && (sides[1] == 2 || L.on_boundary(v))) return {};
+  VertexRefusal r;
+  r.what = L.on_boundary(v) ? fmt::format("boundary vertex {}, which has {} faces", v, sides[0])
+                            : fmt::format("crease vertex {}, which has {} and {} faces on the sides of its crease", v,
+                                          sides[0], sides[1]);
+  r.what = what.empty() ? r.what : fmt::format("{} ({})", what, r.what);
+  if (sides[0] == 1 || (sides[1] == 1 && !L.on_boundary(v)))
+    r.why = "with one face on a side, that face's corner makes two crease points in one quadrant (a layout for them "
+            "is left to do)";
+  else
+    r.why = "with three or more faces on a side, the faces between the two end faces touch the crease at the vertex "
+            "only and split their edges there differently from the end faces, so nested quadrants are not "
+            "continuous at the vertex, and every step doubles such vertices (docs/limit.md)";
+  return r;
+}
+
+// A corner of the dual split (dual_collapses) keeps its faces while it is one: all its face
+// corners are one point, a sharp edge has no E-face and a corner no V-face. Its faces are
+// evaluated when every edge there is sharp and the semi-sharp ones decay together (one
+// sharpness, no vertex sharpness): the corner then becomes the vertex its infinitely sharp
+// edges make — a smooth vertex (none), or a boundary or crease vertex (two) — with the same
+// faces, laid out by their shorter crease runs from then on (dual_limit.cpp, follow_decay).
+VertexRefusal corner_refusal(const Level& L, Index v) {
+  const float vs = L.vertex_sharp(v);
+  if (vs >= 1.f && vs < kInfinitelySharp) return {};  // a semi-sharp corner: refused for the whole mesh
+  int lasting = 0;
+  float semi = 0;
+  for (Index e : L.ring_edges(v)) {
+    if (infinitely_sharp(L, e)) {
+      ++lasting;
+      continue;
+    }
+    const float s = L.edge_sharp(e);
+    const bool grows = s < 1.f || (semi != 0 && s != semi) || vs >= kInfinitelySharp;
+    if (grows)
+      return {fmt::format("corner vertex {}", v),
+              s < 1.f || vs >= kInfinitelySharp
+                  ? "it has an edge that is not sharp (now or once its sharpness has decayed): the E-face of such an "
+                    "edge loses a corner to the corner's point, so its ring of faces grows every level and no "
+                    "neighbourhood repeats"
+                  : fmt::format("its semi-sharp edges have sharpness {} and {}, so they decay at different levels and "
+                                "its ring of faces grows once one of them is smooth",
+                                semi, s)};
+    semi = s;
+  }
+  if (semi == 0 || lasting == 0) return {};  // infinitely sharp, or smooth once its edges have decayed
+  if (lasting == 2)
+    return sides_refusal(L, v, crease_sides(L, v, [&](Index e) { return infinitely_sharp(L, e); }),
+                         fmt::format("corner vertex {} once its semi-sharp edges have decayed", v));
+  return {fmt::format("corner vertex {}", v),
+          fmt::format("{} of its edges are infinitely sharp and the others semi-sharp: once those have decayed it is "
+                      "{}",
+                      lasting,
+                      lasting == 1 ? "the end of a crease (a dart)"
+                                   : "a corner with smooth edges, whose ring of faces grows every level")};
 }
 
 }  // namespace
 
-std::string crease_sides_problem(const Level& L, Index v) {
-  if (dual_collapses(L, v) || dual_sharp_edge_count(L, v) != 2) return {};
-  const auto sides = crease_sides(L, v);
-  if (L.on_boundary(v))
-    return sides[0] == 2 ? std::string() : fmt::format("boundary vertex {}, which has {} faces", v, sides[0]);
-  if (sides[0] == 2 && sides[1] == 2) return {};
-  return fmt::format("crease vertex {}, which has {} and {} faces on the sides of its crease", v, sides[0], sides[1]);
-}
-
-std::string crease_sides_reason(const Level& L, Index v) {
-  const auto sides = crease_sides(L, v);
-  if (sides[0] == 1 || (sides[1] == 1 && !L.on_boundary(v)))
-    return "with one face on a side, that face's corner makes two crease points in one quadrant (a layout for them is "
-           "left to do)";
-  return "with three or more faces on a side, the faces between the two end faces touch the crease at the vertex "
-         "only and split their edges there differently from the end faces, so nested quadrants are not continuous "
-         "at the vertex, and every step doubles such vertices (docs/limit.md)";
+VertexRefusal faces_refused_at(const Level& L, Index v) {
+  if (dual_collapses(L, v)) return corner_refusal(L, v);
+  if (dual_sharp_edge_count(L, v) != 2) return {};
+  return sides_refusal(L, v, crease_sides(L, v, [&](Index e) { return dual_sharp_edge(L, e); }), {});
 }
 
 std::string dual_crease_unsupported(const Level& base) {
@@ -306,8 +345,13 @@ std::string dual_crease_unsupported(const Level& base) {
     if (!kept) continue;
     if (std::string why = vertex_problem(base, v); !why.empty()) return why;
   }
+  // The faces at a vertex faces_refused_at names are refused one by one.
+  std::vector<bool> refused(size_t(base.face_count()), false);
+  for (Index v = 0; v < base.vertex_count; ++v)
+    if (!faces_refused_at(base, v).what.empty())
+      for (Index f : base.ring_faces(v)) refused[size_t(f)] = true;
   for (Index f = 0; f < base.face_count(); ++f)
-    if (!base.is_hole(f))
+    if (!base.is_hole(f) && !refused[size_t(f)])
       if (std::string why = face_problem(base, f); !why.empty()) return why;
   return {};
 }

@@ -20,8 +20,9 @@
 //
 // Supported (dual_crease_unsupported says why not): boundary and crease vertices with two
 // faces on each side of the crease (a regular boundary or crease; faces at other crease
-// vertices are refused one by one, crease_sides_problem), corners (a boundary
-// vertex of one face, or a vertex whose edges are all sharp), crease edges infinitely sharp;
+// vertices are refused one by one, faces_refused_at), corners (a boundary
+// vertex of one face, or a vertex whose edges are all sharp and decay together), crease edges
+// infinitely sharp or of one sharpness along a crease;
 // half faces of the base mesh are quads. These stay so at every level: the new faces next to
 // the crease are the F-faces of half faces and the E-faces across crease vertices, quads
 // with one crease edge, or a crease run through a corner.
@@ -101,16 +102,20 @@ std::string crease_middles_kept(const Scheme& scheme, const FeatureOptions& feat
 
 // Why boundaries and creases of `base` cannot be evaluated under a dual scheme, or empty.
 // Vertices with other than two faces on a side of their crease are not among them: they
-// refuse only the faces around them (crease_sides_problem).
+// refuse only the faces around them (faces_refused_at).
 std::string dual_crease_unsupported(const Level& base);
 
-// Where a boundary or crease vertex v has other than two faces on a side of its crease (a
-// boundary vertex of 3 or more faces; a crease vertex of 1 or 3 or more faces on a side), where
-// and what it is, else empty; crease_sides_reason says why the faces with a corner there are not
-// evaluated (docs/limit.md, "Dual schemes at boundaries, creases and corners"). The faces
-// without such a corner never reach the structure it makes: the structure lives on the
-// descendants of the vertex's own corner points, inside the quadrants of its faces.
-std::string crease_sides_problem(const Level& L, Index v);
-std::string crease_sides_reason(const Level& L, Index v);
+// Where the faces with a corner at v are not evaluated, what v is and why (both empty where
+// they are; docs/limit.md, "Dual schemes at boundaries, creases and corners"): a boundary or
+// crease vertex with other than two faces on a side of its crease (a boundary vertex of 3 or
+// more faces; a crease vertex of 1 or 3 or more faces on a side), and a corner whose ring of
+// faces grows (an edge there that is smooth, or becomes smooth while the vertex stays a corner)
+// or that decays into such a crease vertex. The faces without such a corner never reach the
+// structure it makes: it lives on the descendants of the vertex's own corner points, inside
+// the quadrants of its faces.
+struct VertexRefusal {
+  std::string what, why;
+};
+VertexRefusal faces_refused_at(const Level& L, Index v);
 
 }  // namespace subdiv

@@ -65,19 +65,13 @@ Cut cut_around(const Level& L, Index face, int radius) {
   return c;
 }
 
-// The base point in its quadrant: a quad's quarter at the nearest corner, an n-gon's
-// sub-face as it is (base_face_point already gives its (a, b) and d(a, b)/d(u, v) = 2); a
-// half quad's (dual_crease_chart.h) quadrant of a corner off the crease that holds it.
-QuadrantPoint base_quadrant(const Level& base, const FacePoint& p) {
+// A point (u, v) of quad `face` of L in its quadrant: the quad's quarter at the nearest corner,
+// or for a half quad (dual_crease_chart.h) the quadrant of a corner off the crease that holds
+// it; the Jacobian is d(a, b)/d(u, v) halved once (the first step has scale 2).
+QuadrantPoint quad_quadrant(const Level& L, Index face, double u, double v) {
   QuadrantPoint q;
-  if (p.sub_face >= 0) {
-    q.corner = p.sub_face;
-    q.ab = coords(p.st);
-    q.jacobian = {{{1, 0}, {0, 1}}};  // halved once: the first step has scale 2
-    return q;
-  }
-  const double u = p.st[0], v = p.st[1];
-  if (const auto run = crease_run(base, p.face); run && run->length > 0) {
+  q.face = face;
+  if (const auto run = crease_run(L, face); run && run->length > 0) {
     double best = -1;
     for (int k = 0; k < 4; ++k) {
       if (((k - run->first + 4) % 4) < run->length) continue;
@@ -91,7 +85,6 @@ QuadrantPoint base_quadrant(const Level& base, const FacePoint& p) {
       best = inside;
       q.corner = k;
       q.ab = coords({std::clamp(a, 0.0, 1.0), std::clamp(b, 0.0, 1.0)});
-      // d(a, b)/d(u, v), halved once (the first step has scale 2).
       q.jacobian = {{{c.to_b[1] / det / 2, -c.to_b[0] / det / 2}, {-c.to_a[1] / det / 2, c.to_a[0] / det / 2}}};
     }
     return q;
@@ -102,8 +95,21 @@ QuadrantPoint base_quadrant(const Level& base, const FacePoint& p) {
   const Uv e{kCorner[(k + 1) % 4][0] - c[0], kCorner[(k + 1) % 4][1] - c[1]};
   const Uv f{kCorner[(k + 3) % 4][0] - c[0], kCorner[(k + 3) % 4][1] - c[1]};
   q.corner = k;
-  q.ab = coords({2 * (e[0] * (u - c[0]) + e[1] * (v - c[1])), 2 * (f[0] * (u - c[0]) + f[1] * (v - c[1]))});
+  q.ab = coords({std::clamp(2 * (e[0] * (u - c[0]) + e[1] * (v - c[1])), 0.0, 1.0),
+                 std::clamp(2 * (f[0] * (u - c[0]) + f[1] * (v - c[1])), 0.0, 1.0)});
   q.jacobian = {{{e[0], e[1]}, {f[0], f[1]}}};
+  return q;
+}
+
+// The base point in its quadrant: an n-gon's sub-face as it is (base_face_point already gives
+// its (a, b) and d(a, b)/d(u, v) = 2), a quad's by quad_quadrant.
+QuadrantPoint base_quadrant(const Level& base, const FacePoint& p) {
+  if (p.sub_face < 0) return quad_quadrant(base, p.face, p.st[0], p.st[1]);
+  QuadrantPoint q;
+  q.face = p.face;
+  q.corner = p.sub_face;
+  q.ab = coords(p.st);
+  q.jacobian = {{{1, 0}, {0, 1}}};  // halved once: the first step has scale 2
   return q;
 }
 
@@ -178,15 +184,16 @@ ChildStep child_quadrant(const Level& child, const ChildOrigins& o, const Quadra
 }
 
 // Where a semi-sharp crease has decayed (its edges no longer sharp for the next split), a
-// face laid out by its crease run (quadrants of the corners off it) is refined as a closed
-// face: the point is moved to the face's own quadrant at the nearest corner, through the
-// quad's (u, v), with d(a', b')/d(a, b) carried into the Jacobian.
+// face laid out by the crease run it was made with is laid out by its own run: none (a closed
+// face's quadrants), or a shorter one where a corner of the mesh stopped collapsing (a boundary
+// or crease vertex, once the semi-sharp edges that made it a corner are smooth). The point
+// moves through the quad's (u, v), with d(a', b')/d(a, b) carried into the Jacobian.
 void follow_decay(Cut& cut) {
   const auto own = crease_run(cut.level, cut.point.face);
   if (!own) throw Error("the point's face lies between two creases (its crease corners are not one run)");
   const CreaseRun was = cut.chart;
   if (own->length == was.length && (was.length == 0 || own->first == was.first)) return;
-  if (own->length != 0 || cut.level.face_size(cut.point.face) != 4)
+  if (was.length == 0 || own->length >= was.length || cut.level.face_size(cut.point.face) != 4)
     throw Error("a semi-sharp crease changes shape as it decays (its edges or corner decay at different levels): "
                 "not evaluated yet");
   QuadrantPoint& q = cut.point;
@@ -194,23 +201,19 @@ void follow_decay(Cut& cut) {
   const Uv ab = as_uv(q.ab);
   const double u = c.origin[0] + ab[0] * c.to_a[0] + ab[1] * c.to_b[0];
   const double v = c.origin[1] + ab[0] * c.to_a[1] + ab[1] * c.to_b[1];
-  constexpr Uv kCorner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  const int k = u <= 0.5 ? (v <= 0.5 ? 0 : 3) : (v <= 0.5 ? 1 : 2);
-  const Uv& o = kCorner[k];
-  const Uv e{kCorner[(k + 1) % 4][0] - o[0], kCorner[(k + 1) % 4][1] - o[1]};
-  const Uv f{kCorner[(k + 3) % 4][0] - o[0], kCorner[(k + 3) % 4][1] - o[1]};
-  // (a', b') = 2 [e; f] ((u, v) - o), and d(u, v)/d(a, b) = [to_a to_b].
-  const std::array<std::array<double, 2>, 2> D{
-      {{2 * (e[0] * c.to_a[0] + e[1] * c.to_a[1]), 2 * (e[0] * c.to_b[0] + e[1] * c.to_b[1])},
-       {2 * (f[0] * c.to_a[0] + f[1] * c.to_a[1]), 2 * (f[0] * c.to_b[0] + f[1] * c.to_b[1])}}};
+  const QuadrantPoint to = quad_quadrant(cut.level, q.face, u, v);
+  // d(a', b')/d(a, b) = 2 (to's halved Jacobian) [to_a to_b].
   Jacobian J{};
   for (size_t r = 0; r < 2; ++r)
-    for (size_t x = 0; x < 2; ++x) J[r][x] = D[r][0] * q.jacobian[0][x] + D[r][1] * q.jacobian[1][x];
-  q.corner = k;
-  q.ab = coords({std::clamp(2 * (e[0] * (u - o[0]) + e[1] * (v - o[1])), 0.0, 1.0),
-                 std::clamp(2 * (f[0] * (u - o[0]) + f[1] * (v - o[1])), 0.0, 1.0)});
+    for (size_t x = 0; x < 2; ++x) {
+      const double d0 = 2 * (to.jacobian[r][0] * c.to_a[0] + to.jacobian[r][1] * c.to_a[1]);
+      const double d1 = 2 * (to.jacobian[r][0] * c.to_b[0] + to.jacobian[r][1] * c.to_b[1]);
+      J[r][x] = d0 * q.jacobian[0][x] + d1 * q.jacobian[1][x];
+    }
+  q.corner = to.corner;
+  q.ab = to.ab;
   q.jacobian = J;
-  cut.chart = CreaseRun{};
+  cut.chart = *own;
 }
 
 Coords nearest_corner(const Coords& ab) { return {Coord{0, ab[0].high}, Coord{0, ab[1].high}}; }
@@ -297,10 +300,10 @@ std::string dual_head_unsupported(const Level& base) {
                          e, base.edge_sharp(e));
   if (std::string why = dual_limit_unsupported(base); !why.empty()) return why;
   for (Index v = 0; v < base.vertex_count; ++v)
-    if (std::string what = crease_sides_problem(base, v); !what.empty())
-      return fmt::format("{}: a dual split in a sequence's head is followed only where every boundary and crease "
-                         "vertex has two faces on each side ({})",
-                         what, crease_sides_reason(base, v));
+    if (const VertexRefusal r = faces_refused_at(base, v); !r.what.empty())
+      return fmt::format("{}: a dual split in a sequence's head is followed only where the faces at every vertex are "
+                         "evaluated ({})",
+                         r.what, r.why);
   return {};
 }
 
@@ -308,12 +311,12 @@ std::string dual_limit_unsupported(const Level& base) { return dual_crease_unsup
 
 namespace {
 
-// Per base face: the vertex with other than two faces on a side of its crease at one of its
-// corners (the face is not evaluated), or kNone.
+// Per base face: a vertex at one of its corners that keeps it from evaluation
+// (faces_refused_at), or kNone.
 std::vector<Index> refused_at(const Level& base) {
   std::vector<Index> out(size_t(base.face_count()), kNone);
   for (Index v = 0; v < base.vertex_count; ++v) {
-    if (crease_sides_problem(base, v).empty()) continue;
+    if (faces_refused_at(base, v).what.empty()) continue;
     for (Index f : base.ring_faces(v))
       if (out[size_t(f)] == kNone) out[size_t(f)] = v;
   }
@@ -324,11 +327,10 @@ std::vector<Index> refused_at(const Level& base) {
 
 void DualLimit::check_face(Index f) const {
   if (f < 0 || size_t(f) >= refused_at_.size() || refused_at_[size_t(f)] == kNone) return;
-  const Index v = refused_at_[size_t(f)];
+  const VertexRefusal r = faces_refused_at(base_, refused_at_[size_t(f)]);
   throw Error(fmt::format("scheme {} is a dual scheme and face {} has a corner at {}: {}; the faces without a corner "
                           "at such a vertex are evaluated",
-                          subdiv::quoted(scheme_.name), f, crease_sides_problem(base_, v),
-                          crease_sides_reason(base_, v)));
+                          subdiv::quoted(scheme_.name), f, r.what, r.why));
 }
 
 DualLimit::~DualLimit() = default;

@@ -73,8 +73,8 @@ public:
   bool closed_form() const { return biquadratic_; }
 
 private:
-  // Throws why base face f is not evaluated (a corner at a vertex with other than two faces
-  // on a side of its crease, dual_crease_chart.h), if it is not.
+  // Throws why base face f is not evaluated (a corner at a vertex faces_refused_at names,
+  // dual_crease_chart.h), if it is not.
   void check_face(Index f) const;
 
   const Scheme& scheme_;
@@ -97,8 +97,8 @@ std::optional<FacePoint> dual_child_point(const Level& parent, const Level& chil
                                           const FacePoint& p);
 
 // Why the dual evaluation cannot take this mesh, or empty (holes, and the boundaries and
-// creases dual_crease_chart.h does not cover yet). Faces with a corner at a vertex with other
-// than two faces on a side of a boundary or crease are refused one by one, when evaluated.
+// creases dual_crease_chart.h does not cover yet). Faces with a corner at a vertex
+// faces_refused_at names are refused one by one, when evaluated.
 std::string dual_limit_unsupported(const Level& base);
 // The same for a dual split in a sequence's head (dual_child_point), which follows closed
 // untagged meshes only, and every face there (so also no such vertex anywhere).

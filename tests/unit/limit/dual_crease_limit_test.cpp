@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "framework/engine/refiner.h"
+#include "framework/features/dual_features.h"
 #include "framework/interpolation/limit_selection.h"
 #include "framework/limit/dual_limit.h"
 #include "framework/limit/face_domain.h"
@@ -806,6 +807,65 @@ TEST_CASE("dual limit next to boundary vertices of other than two faces: derivat
   }
 }
 
+namespace {
+
+struct LevelPointCase {
+  Index face;
+  int corner;
+  Uv far;  // the quadrant's (1, 1) in the face's (u, v)
+  double rate;
+  // From level `decay` on (a semi-sharp crease has decayed), the (1, 1) of the quadrant of the
+  // chain's F-face in its own layout, in the face's (u, v).
+  int decay = 1 << 20;
+  Uv far_after{};
+};
+
+// For l = 1 ... levels: the distance between the point of corner c.corner of c.face after l
+// doo-sabin steps (the corner of the l-th F-face of the face) and the limit evaluated at its
+// parameter, (1 - 2^-l) of the way from the corner to the quadrant's (1, 1).
+std::vector<double> level_point_errors(const test::Mesh& m, const Level& base, const LevelPointCase& c, int levels) {
+  const LimitSurface s(scheme("doo-sabin"), base);
+  RefineOptions ro;
+  ro.levels = levels;
+  const Hierarchy h = refine(*scheme("doo-sabin"), base, ro);
+  std::vector<double> positions = m.positions;
+  Index face = c.face;
+  int corner = c.corner;
+  constexpr Uv kCorner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const Uv start = kCorner[c.corner];
+  std::vector<double> error;
+  for (int l = 1; l <= levels; ++l) {
+    std::vector<double> next(size_t(3 * h.levels[size_t(l)].vertex_count));
+    h.stencils[size_t(l - 1)].apply(positions, next, 3);
+    positions.swap(next);
+    // The point of `corner` of `face`, and the F-face of `face` (the child face inside it).
+    const ChildOrigins& o = h.origins[size_t(l - 1)];
+    const Level& child = h.levels[size_t(l)];
+    Index point = kNone, f_face = kNone;
+    for (size_t v = 0; v < o.kind.size(); ++v)
+      if (o.kind[v] == OriginKind::Corner && o.parent[v] == face && int(o.local[v]) == corner) point = Index(v);
+    for (Index g = 0; g < child.face_count(); ++g)
+      if (o.parent_face[size_t(g)] == face) f_face = g;
+    REQUIRE(point != kNone);
+    REQUIRE(f_face != kNone);
+    const bool after = l > c.decay;
+    const Uv from = after ? Uv{start[0] + (1 - std::ldexp(1.0, -c.decay)) * (c.far[0] - start[0]),
+                               start[1] + (1 - std::ldexp(1.0, -c.decay)) * (c.far[1] - start[1])}
+                          : start;
+    const Uv to = after ? c.far_after : c.far;
+    const double t = 1 - std::ldexp(1.0, after ? c.decay - l : -l);
+    const P3 e = at(s, m, c.face, from[0] + t * (to[0] - from[0]), from[1] + t * (to[1] - from[1]));
+    error.push_back(distance(e, P3{positions[size_t(3 * point)], positions[size_t(3 * point + 1)],
+                                   positions[size_t(3 * point + 2)]}));
+    const auto g = child.face(f_face);
+    corner = int(std::find(g.begin(), g.end(), point) - g.begin());
+    face = f_face;
+  }
+  return error;
+}
+
+}  // namespace
+
 TEST_CASE("dual limit next to boundary vertices of other than two faces: level-L points converge at the eigenvalue's rate") {
   // The point of corner j of face g after L steps (the corner of the L-th F-face of g) lies at
   // (1 - 2^-L, 1 - 2^-L) of the quadrant of (g, j) (docs/limit.md), which tends to the
@@ -818,44 +878,10 @@ TEST_CASE("dual limit next to boundary vertices of other than two faces: level-L
   // docs/analysis.md), which the parameters, halving per step, do not follow. Measured on a
   // quad of the L next to the reflex corner's faces, and on a boundary face beside them.
   const test::Mesh ell = l_shape();
-  const LimitSurface s(scheme("doo-sabin"), ell.level());
-  RefineOptions ro;
-  ro.levels = 7;
-  const Hierarchy h = refine(*scheme("doo-sabin"), ell.level(), ro);
-  struct Case {
-    Index face;
-    int corner;
-    Uv far;  // the quadrant's (1, 1) in the face's (u, v)
-    double rate;
-  };
-  for (const Case& c : {Case{l_shape_face(1, 1), 0, {0.5, 0.5}, 0.25}, Case{l_shape_face(4, 2), 0, {0.5, 1.0}, 0.75}}) {
+  for (const auto& c : {LevelPointCase{l_shape_face(1, 1), 0, {0.5, 0.5}, 0.25},
+                        LevelPointCase{l_shape_face(4, 2), 0, {0.5, 1.0}, 0.75}}) {
     CAPTURE(c.face);
-    std::vector<double> positions = ell.positions;
-    Index face = c.face;
-    int corner = c.corner;
-    std::vector<double> error;
-    for (int l = 1; l <= 7; ++l) {
-      std::vector<double> next(size_t(3 * h.levels[size_t(l)].vertex_count));
-      h.stencils[size_t(l - 1)].apply(positions, next, 3);
-      positions.swap(next);
-      // The point of `corner` of `face`, and the F-face of `face` (the child face inside it).
-      const ChildOrigins& o = h.origins[size_t(l - 1)];
-      const Level& child = h.levels[size_t(l)];
-      Index point = kNone, f_face = kNone;
-      for (size_t v = 0; v < o.kind.size(); ++v)
-        if (o.kind[v] == OriginKind::Corner && o.parent[v] == face && int(o.local[v]) == corner) point = Index(v);
-      for (Index g = 0; g < child.face_count(); ++g)
-        if (o.parent_face[size_t(g)] == face) f_face = g;
-      REQUIRE(point != kNone);
-      REQUIRE(f_face != kNone);
-      const double t = 1 - std::ldexp(1.0, -l);
-      const P3 e = at(s, ell, c.face, t * c.far[0], t * c.far[1]);
-      error.push_back(distance(e, P3{positions[size_t(3 * point)], positions[size_t(3 * point + 1)],
-                                     positions[size_t(3 * point + 2)]}));
-      const auto g = child.face(f_face);
-      corner = int(std::find(g.begin(), g.end(), point) - g.begin());
-      face = f_face;
-    }
+    const std::vector<double> error = level_point_errors(ell, ell.level(), c, 7);
     CHECK(error[0] > 1e-4);
     for (size_t l : {size_t(5), size_t(6)}) CHECK(error[l] / error[l - 1] == doctest::Approx(c.rate).epsilon(5e-3));
   }
@@ -886,4 +912,251 @@ TEST_CASE("dual limit next to a crease vertex of four faces a side: the faces wi
   CHECK(worst < 1e-12);
   check_edges_continuous(s, m, L, 1e-12, [](Index f) { return f < 8; });
   check_level_one_points(m, L, true, [](Index f) { return f < 8; }, 20);
+}
+
+namespace {
+
+// A 4 x 4 grid whose line of edges x = 2, from boundary vertex 2 to boundary vertex 22, has
+// sharpness 2: at both ends a semi-sharp edge meets the boundary, three sharp edges, so those
+// vertices are corners of the dual split while the edge is sharp (levels 0 and 1).
+Level semi_sharp_line(const test::Mesh& m) {
+  Level L = m.level();
+  L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
+  for (int j = 0; j < 4; ++j) L.edge_sharpness[size_t(find_edge(L, Index(5 * j + 2), Index(5 * j + 7)))] = 2.f;
+  return L;
+}
+
+// The unit cube with each face split into 2 x 2 quads (vertex 0 still at the origin, a cube
+// corner of three faces), bumped; its edges along the cube's edges are tagged: those on the
+// three cube edges at vertex 0 with sharpness s0 (along x), s1 (y), s2 (z), the others with
+// s_rest. Every cube corner is then a corner of three sharp edges, every other vertex on a cube
+// edge a crease vertex of two faces a side.
+test::Mesh split_cube() { return bumped(limit_test::quad_split(test::cube())); }
+Level semi_sharp_cube(float s0, float s1, float s2, float s_rest) {
+  const test::Mesh flat = limit_test::quad_split(test::cube());
+  Level L = flat.level();
+  L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
+  for (Index e = 0; e < L.edge_count(); ++e) {
+    const P3 a = point(flat, L.edge_vertices[size_t(2 * e)]), b = point(flat, L.edge_vertices[size_t(2 * e + 1)]);
+    int on_faces = 0, axis = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double x = (a[size_t(k)] + b[size_t(k)]) / 2;
+      if (x == 0 || x == 1) ++on_faces;
+      else axis = k;
+    }
+    if (on_faces != 2) continue;  // not along a cube edge
+    const bool at0 = a[size_t((axis + 1) % 3)] == 0 && a[size_t((axis + 2) % 3)] == 0;
+    L.edge_sharpness[size_t(e)] = at0 ? (axis == 0 ? s0 : axis == 1 ? s1 : s2) : s_rest;
+  }
+  return L;
+}
+
+// One step of the crease rule on an open polygon (features.md, "Creases in dual schemes"):
+// a corner stays, every other point makes two, Chaikin's 3/4 p + 1/4 q towards each
+// neighbour q, or the edge's middle where q is a corner.
+std::vector<P3> crease_step(const std::vector<P3>& p, const std::vector<bool>& corner, std::vector<bool>* child_corner) {
+  std::vector<P3> out;
+  child_corner->clear();
+  auto cut = [](const P3& a, const P3& b, double w) {
+    return P3{w * a[0] + (1 - w) * b[0], w * a[1] + (1 - w) * b[1], w * a[2] + (1 - w) * b[2]};
+  };
+  for (size_t i = 0; i < p.size(); ++i) {
+    if (corner[i]) {
+      out.push_back(p[i]);
+      child_corner->push_back(true);
+      continue;
+    }
+    out.push_back(cut(p[i], p[i - 1], corner[i - 1] ? 0.5 : 0.75));
+    out.push_back(cut(p[i], p[i + 1], corner[i + 1] ? 0.5 : 0.75));
+    child_corner->insert(child_corner->end(), 2, false);
+  }
+  return out;
+}
+
+// The distance from x to the clamped quadratic B-spline with control points `ctrl` (knots
+// 0, 0, 0, 1, ..., K, K, K): sampled, then narrowed by golden sections around the best sample.
+double distance_to_clamped_quadratic(const std::vector<P3>& ctrl, const P3& x) {
+  const int K = int(ctrl.size()) - 2;
+  std::vector<double> t{0, 0, 0};
+  for (int k = 1; k < K; ++k) t.push_back(k);
+  t.insert(t.end(), 3, double(K));
+  auto d = [&](double s) { return distance(quadratic_bspline(t, ctrl, std::clamp(s, 0.0, K - 1e-15)), x); };
+  double best = 0;
+  for (int i = 0; i <= 200 * K; ++i)
+    if (d(i / 200.0) < d(best)) best = i / 200.0;
+  double a = best - 1 / 200.0, b = best + 1 / 200.0;
+  for (int i = 0; i < 100; ++i) {
+    const double m1 = a + (b - a) * 0.382, m2 = a + (b - a) * 0.618;
+    (d(m1) < d(m2) ? b : a) = d(m1) < d(m2) ? m2 : m1;
+  }
+  return d((a + b) / 2);
+}
+
+}  // namespace
+
+TEST_CASE("dual limit where a semi-sharp edge meets the boundary: the corner decays into a boundary vertex") {
+  const test::Mesh m = bumped(test::grid(4, 4));
+  const Level L = semi_sharp_line(m);
+  // The vertex at boundary vertex 2 on the engine's levels: a corner (three sharp edges, two
+  // quads) at levels 0 and 1, its point staying at vertex 2; at level 2 a boundary vertex of
+  // the same two quads and no other sharp edge.
+  {
+    RefineOptions ro;
+    ro.levels = 2;
+    const Hierarchy h = refine(*scheme("doo-sabin"), L, ro);
+    std::vector<double> p = m.positions;
+    for (int l = 0; l <= 2; ++l) {
+      if (l > 0) {
+        std::vector<double> next(size_t(3 * h.levels[size_t(l)].vertex_count));
+        h.stencils[size_t(l - 1)].apply(p, next, 3);
+        p.swap(next);
+      }
+      const Level& Ll = h.levels[size_t(l)];
+      Index at = kNone;
+      for (Index v = 0; v < Ll.vertex_count; ++v)
+        if (distance(P3{p[size_t(3 * v)], p[size_t(3 * v + 1)], p[size_t(3 * v + 2)]}, point(m, 2)) == 0) at = v;
+      CAPTURE(l);
+      REQUIRE(at != kNone);
+      CHECK(Ll.incident_face_count(at) == 2);
+      CHECK(Ll.on_boundary(at));
+      CHECK(dual_sharp_edge_count(Ll, at) == (l < 2 ? 3 : 2));
+    }
+  }
+  // The bottom boundary: the clamped quadratic B-spline of its polygon after two steps of the
+  // crease rule with corners at both ends and at vertex 2 (Chaikin's cuts, the middle next to
+  // a corner), after which vertex 2 is no corner and the polygon refines by Chaikin's cuts.
+  std::vector<P3> polygon;
+  for (Index v = 0; v <= 4; ++v) polygon.push_back(point(m, v));
+  std::vector<bool> corner{true, false, true, false, true}, next;
+  for (int l = 0; l < 2; ++l) {
+    polygon = crease_step(polygon, corner, &next);
+    corner = next;
+  }
+  // Vertex 2's limit: at level 2 its neighbours on the crease are (3 x2 + x1)/4 and
+  // (3 x2 + x3)/4, and a boundary vertex's limit is (p + 6 v + q)/8: (x1 + 30 x2 + x3)/32.
+  P3 at_corner{};
+  for (size_t c = 0; c < 3; ++c) at_corner[c] = (point(m, 1)[c] + 30 * point(m, 2)[c] + point(m, 3)[c]) / 32;
+  for (const char* name : {"doo-sabin", "doo-sabin-centroid", "quad-bspline"}) {
+    CAPTURE(name);
+    ParameterOverrides d2;
+    d2["d"] = "2";
+    const auto sch = std::string(name) == "quad-bspline" ? load_scheme(name, d2) : scheme(name);
+    const LimitSurface s(sch, L);
+    CHECK(distance(at(s, m, 1, 1, 0), at_corner) < 1e-12);
+    CHECK(distance(at(s, m, 2, 0, 0), at_corner) < 1e-12);
+    double off = 0;
+    for (Index f = 0; f < 4; ++f)
+      for (double u : {0.0, 0.1, 0.3, 0.5, 0.77, 0.95, 1.0})
+        off = std::max(off, distance_to_clamped_quadratic(polygon, at(s, m, f, u, 0)));
+    CHECK(off < 1e-9);
+    check_edges_continuous(s, m, L, 1e-12);
+  }
+  // Chaikin's decay averages the sharpness of a crease vertex's edges; the corner's one
+  // semi-sharp edge decays as under the uniform rule.
+  LimitSurfaceOptions chaikin;
+  chaikin.features.crease_method = CreaseMethod::Chaikin;
+  check_edges_continuous(LimitSurface(scheme("doo-sabin"), L, chaikin), m, L, 1e-12);
+  // Off the crease and the boundary the derivatives are those of the positions.
+  const LimitSurface s(scheme("doo-sabin"), L);
+  double worst = 0;
+  for (Index f : {Index(1), Index(2), Index(5), Index(6), Index(13)})
+    for (const auto& uv : {std::array<double, 2>{0.3, 0.6}, {0.7, 0.2}, {0.55, 0.9}})
+      worst = std::max(worst, limit_test::central_difference_error(s, f, uv[0], uv[1], m.positions, 1e-6));
+  CHECK(worst < 1e-6);
+}
+
+TEST_CASE("dual limit where a semi-sharp edge meets the boundary: level-L points converge at the eigenvalue's rate") {
+  // Face 1 of the grid (corners 1, 2, 7, 6) has crease corners 1, 2 (the corner), 7: its one
+  // quadrant, of corner 3, has its (1, 1) at vertex 2, (u, v) = (1, 0). Its second F-face, over
+  // (u, v) in [3/4, 1] x [0, 1/4], has the corners (3/4, 1/4), (1, 1/4), (1, 0) (vertex 2's
+  // point) and (3/4, 0); once the semi-sharp edge has decayed, vertex 2's point is a boundary
+  // vertex and that face is laid out by its boundary edge: the quadrant of its corner
+  // (3/4, 1/4) has (1, 1) at the edge's middle (7/8, 0), where the points converge at the rate
+  // across a boundary, 3/4. Face 5 (corners 6, 7, 12, 11) beside the semi-sharp line: (1, 1) of
+  // its corner 0 is the middle of edge 7-12, (1, 1/2); its second F-face, a half quad over
+  // [3/4, 1] x [3/8, 5/8] (the quadrants of its corners off the crease, from corners 0 and 3 of
+  // face 5), is a closed quad once the edge has decayed, with its centre (7/8, 1/2) the
+  // quadrant's (1, 1), where the points converge at a regular quad's centre's rate, 1/4.
+  const test::Mesh m = bumped(test::grid(4, 4));
+  for (const auto& c : {LevelPointCase{1, 3, {1, 0}, 0.75, 2, {0.875, 0}},
+                        LevelPointCase{5, 0, {1, 0.5}, 0.25, 2, {0.875, 0.5}}}) {
+    CAPTURE(c.face);
+    const std::vector<double> error = level_point_errors(m, semi_sharp_line(m), c, 8);
+    CHECK(error[0] > 1e-4);
+    for (size_t l : {size_t(6), size_t(7)}) CHECK(error[l] / error[l - 1] == doctest::Approx(c.rate).epsilon(5e-3));
+  }
+}
+
+TEST_CASE("dual limit at a corner of semi-sharp edges: a smooth vertex once they have decayed") {
+  // The split cube with its cube edges of sharpness 2: vertex 0 is a corner at levels 0 and 1
+  // (its point stays), a smooth vertex of valence 3 from level 2.
+  const test::Mesh m = split_cube();
+  const Level L = semi_sharp_cube(2, 2, 2, 2);
+  RefineOptions ro;
+  ro.levels = 2;
+  const Hierarchy h = refine(*scheme("doo-sabin"), L, ro);
+  std::vector<double> p1(size_t(3 * h.levels[1].vertex_count)), p2(size_t(3 * h.levels[2].vertex_count));
+  h.stencils[0].apply(m.positions, p1, 3);
+  h.stencils[1].apply(p1, p2, 3);
+  Level L2 = h.levels[2];
+  for (float x : L2.edge_sharpness) REQUIRE(x == 0.f);
+  L2.edge_sharpness.clear();
+  Index at0 = kNone;
+  for (Index v = 0; v < L2.vertex_count; ++v)
+    if (distance(P3{p2[size_t(3 * v)], p2[size_t(3 * v + 1)], p2[size_t(3 * v + 2)]}, point(m, 0)) == 0) at0 = v;
+  REQUIRE(at0 != kNone);
+  CHECK(L2.incident_face_count(at0) == 3);
+  CHECK(!L2.on_boundary(at0));
+  // Vertex 0's limit: the V-face centroid limit of the untagged level-2 mesh (dual_limits.h,
+  // from its own next step, not this evaluator), from each of its three faces.
+  const LimitChoice c = select_limit(load_scheme_sequence("doo-sabin", 1, {}), L2);
+  std::vector<double> limits(p2.size());
+  c.evaluator->limit_points(L2, p2, limits);
+  const P3 expected{limits[size_t(3 * at0)], limits[size_t(3 * at0 + 1)], limits[size_t(3 * at0 + 2)]};
+  CHECK(distance(expected, point(m, 0)) > 1e-2);  // the corner has decayed
+  constexpr std::array<std::array<double, 2>, 4> kCorner{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  const LimitSurface s(scheme("doo-sabin"), L);
+  REQUIRE(L.ring_faces(0).size() == 3);
+  double worst = 0;
+  for (Index f : L.ring_faces(0)) {
+    const auto g = L.face(f);
+    const size_t k = size_t(std::find(g.begin(), g.end(), Index(0)) - g.begin());
+    CHECK(distance(at(s, m, f, kCorner[k][0], kCorner[k][1]), expected) < 1e-12);
+    for (const auto& uv : {std::array<double, 2>{0.3, 0.6}, {0.7, 0.2}, {0.05, 0.1}, {0.9, 0.97}})
+      worst = std::max(worst, limit_test::central_difference_error(s, f, uv[0], uv[1], m.positions, 1e-6));
+  }
+  CHECK(worst < 1e-6);
+  check_edges_continuous(s, m, L, 1e-12);
+}
+
+TEST_CASE("dual limit at corners whose ring of faces grows: the faces there are refused, the others evaluated") {
+  // A tagged corner with smooth edges: the E-face of each edge loses a corner to the corner's
+  // point, so the faces around it grow every level. And semi-sharp edges of sharpness 2 and
+  // 3 at vertex 0 (and at the other end of the edge of 3), which leave a corner with a smooth
+  // edge after two steps.
+  const test::Mesh m = split_cube();
+  Level tagged = m.level();
+  tagged.vertex_sharpness.assign(size_t(tagged.vertex_count), 0.f);
+  tagged.vertex_sharpness[0] = 10.f;
+  const Level uneven = semi_sharp_cube(2, 2, 3, 2);
+  struct Case {
+    const Level* level;
+    std::vector<Index> corners;
+    const char* why;
+  };
+  for (const Case& c : {Case{&tagged, {0}, "not sharp"}, Case{&uneven, {0, 4}, "decay at different levels"}}) {
+    CAPTURE(c.why);
+    const LimitSurface s(scheme("doo-sabin"), *c.level);
+    std::vector<Index> refused;
+    for (Index v : c.corners)
+      for (Index f : c.level->ring_faces(v)) {
+        refused.push_back(f);
+        CHECK_THROWS_WITH_AS(s.evaluate(f, 0.4, 0.7, m.positions, 3),
+                             doctest::Contains(("face " + std::to_string(f) + " has a corner at corner vertex " + std::to_string(v)).c_str()),
+                             Error);
+        CHECK_THROWS_WITH_AS(s.evaluate(f, 0.4, 0.7, m.positions, 3), doctest::Contains(c.why), Error);
+      }
+    check_edges_continuous(s, m, *c.level, 1e-12,
+                           [&](Index f) { return std::find(refused.begin(), refused.end(), f) != refused.end(); });
+  }
 }
