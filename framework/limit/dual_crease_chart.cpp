@@ -332,6 +332,10 @@ VertexRefusal corner_refusal(const Level& L, Index v) {
 
 VertexRefusal faces_refused_at(const Level& L, Index v) {
   if (dual_collapses(L, v)) return corner_refusal(L, v);
+  if (dual_sharp_edge_count(L, v) == 0 && !L.on_boundary(v) && L.incident_face_count(v) == 2)
+    return {fmt::format("interior vertex {} of valence 2", v),
+            "the dual split's face for it would have two sides, so the new points at its corners are not smooth "
+            "points of four faces, which the quadrants of its faces need"};
   if (dual_sharp_edge_count(L, v) != 2) return {};
   return sides_refusal(L, v, crease_sides(L, v, [&](Index e) { return dual_sharp_edge(L, e); }), {});
 }

@@ -110,7 +110,8 @@ std::string dual_crease_unsupported(const Level& base);
 // crease vertex with other than two faces on a side of its crease (a boundary vertex of 3 or
 // more faces; a crease vertex of 1 or 3 or more faces on a side), and a corner whose ring of
 // faces grows (an edge there that is smooth, or becomes smooth while the vertex stays a corner)
-// or that decays into such a crease vertex. The faces without such a corner never reach the
+// or that decays into such a crease vertex; an interior vertex of valence 2 (its V-face would
+// have two sides). The faces without such a corner never reach the
 // structure it makes: it lives on the descendants of the vertex's own corner points, inside
 // the quadrants of its faces.
 struct VertexRefusal {

@@ -387,3 +387,29 @@ TEST_CASE("Points very close to an extraordinary vertex keep their digits and th
   }
   CHECK(last < 1e-13);
 }
+
+TEST_CASE("Dual schemes refuse the faces at an interior vertex of valence 2, and evaluate the others") {
+  // The cube's top face (4, 5, 7, 6) as two quads (4, 5, 7, 8) and (4, 8, 7, 6) around a
+  // vertex 8 inside it: 8 has the two edges 4-8 and 8-7, so a dual split's face for it would
+  // have two sides (OpenSubdiv's catmark_val2_* shapes have such vertices). Before, a point
+  // of those faces stopped at an internal error; the faces elsewhere never reach the vertex.
+  test::Mesh m;
+  for (int i = 0; i < 8; ++i) m.add_vertex(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  m.add_vertex(0.6, 0.4, 1.1);
+  m.add_face({0, 2, 3, 1}), m.add_face({4, 5, 7, 8}), m.add_face({4, 8, 7, 6});
+  m.add_face({0, 1, 5, 4}), m.add_face({2, 6, 7, 3}), m.add_face({0, 4, 6, 2}), m.add_face({1, 3, 7, 5});
+  const LimitSurface s(load_scheme("doo-sabin"), m.level());
+  REQUIRE(s.base().valence(8) == 2);
+  for (Index f : {1, 2})
+    CHECK_THROWS_WITH_AS(s.evaluate(f, 0.3, 0.6, m.positions, 3),
+                         doctest::Contains("has a corner at interior vertex 8 of valence 2"), Error);
+  // The bottom face touches neither 8 nor its neighbours 4 and 7: its limit is continuous
+  // with its neighbours' and affine invariant.
+  const LimitSample bottom = s.evaluate(0, 0, 0.5, m.positions, 3);  // corners 3, 0 of face 0 are 1, 0
+  const LimitSample side = s.evaluate(3, 0.5, 0, m.positions, 3);  // the shared edge 0-1, from face 3
+  CHECK(distance(bottom.position, side.position) < 1e-13);
+  test::Mesh shifted = m;
+  for (size_t k = 0; k < shifted.positions.size(); k += 3) shifted.positions[k] += 2.5;
+  const LimitSample moved = s.evaluate(0, 0.3, 0.3, shifted.positions, 3);
+  CHECK(std::fabs(moved.position[0] - 2.5 - s.evaluate(0, 0.3, 0.3, m.positions, 3).position[0]) < 1e-13);
+}
