@@ -154,6 +154,11 @@ std::string mid_edge_limit_unsupported(const Level& base) {
     if (s > 0) return "the mesh has sharp or semi-sharp edges: evaluation of mid-edge schemes with creases is not done yet";
   for (float s : base.vertex_sharpness)
     if (s > 0) return "the mesh has sharp vertices: evaluation of mid-edge schemes with corners is not done yet";
+  for (Index v = 0; v < base.vertex_count; ++v)
+    if (base.incident_face_count(v) == 2)
+      return fmt::format("interior vertex {} has valence 2: the mid-edge split's face for it would have two sides, so "
+                         "the faces two steps make there are not quadrants of the base faces; not evaluated yet",
+                         v);
   // Holes remove faces, not rules: the cuts drop their tags (canonical_cut.h).
   return {};
 }

@@ -412,4 +412,8 @@ TEST_CASE("Dual schemes refuse the faces at an interior vertex of valence 2, and
   for (size_t k = 0; k < shifted.positions.size(); k += 3) shifted.positions[k] += 2.5;
   const LimitSample moved = s.evaluate(0, 0.3, 0.3, shifted.positions, 3);
   CHECK(std::fabs(moved.position[0] - 2.5 - s.evaluate(0, 0.3, 0.3, m.positions, 3).position[0]) < 1e-13);
+  // The mid-edge split makes the same two-sided face there: the mesh is refused (was an
+  // internal error at the first point).
+  CHECK_THROWS_WITH_AS(LimitSurface(load_scheme("mid-edge"), m.level()),
+                       doctest::Contains("interior vertex 8 has valence 2"), Error);
 }
