@@ -185,10 +185,11 @@ struct LimitSurface::Impl {
     }
   };
   // A face whose entry would be the regular one's (Cache::regular, a bicubic node) but for
-  // its vertices: those 16 in label order, one cache line per face, each stored plus one so
-  // that zero is "not yet" (the last one written last: when it is set, all are). Plain
-  // integers read and written through std::atomic_ref, so that the array can come zeroed
-  // from the system (Cache::slot_array) instead of being written with zeros first.
+  // its vertices: those 16 in label order, one cache line per face, read once the face's
+  // byte in Cache::slot_filled says they are written (so that an empty slot is never read:
+  // its memory is not even placed until the face's slot is written, Cache::slot_array).
+  // Plain integers read and written through std::atomic_ref: two threads may fill a slot
+  // with the same labels at once.
   struct alignas(64) GridSlot {
     std::array<Index, 16> vertex;
     Index get(size_t l, std::memory_order order) const {
@@ -285,8 +286,10 @@ struct LimitSurface::Impl {
     // been made the general way: every such face's cut has its signature, hence its node.
     std::atomic<const Entry*> regular{nullptr};
     // Per face (made with the first face that fills one), for regular faces when the
-    // regular node is a bicubic patch.
+    // regular node is a bicubic patch; a face's byte in slot_filled is set (release) once
+    // its slot is written.
     std::atomic<GridSlot*> slots{nullptr};
+    std::unique_ptr<std::atomic<char>[]> slot_filled;
     // Cuts by their key_cut (cut_key.h) at the cut's radius (make_entry).
     std::mutex known_mutex;
     std::unordered_map<Key, KnownCut, KeyHash> known;
@@ -313,18 +316,18 @@ struct LimitSurface::Impl {
     static constexpr size_t kStartsBudget = size_t(1) << 27;  // 128 MB
     ~Cache() {
       for (Index f = 0; f < entry_count; ++f) delete entries[size_t(f)].load();
-      if (GridSlot* a = slots.load()) release_zeroed_bulk(a, slot_bytes());
+      if (GridSlot* a = slots.load()) release_lazy_bulk(a, slot_bytes());
     }
     size_t slot_bytes() const { return std::max<size_t>(size_t(entry_count), 1) * sizeof(GridSlot); }
-    // One slot per face, zero: a million faces' slots are 64 MB, whose pages the system
-    // maps zeroed at once (allocate_zeroed_bulk) rather than page by page as they are
-    // first written, or written with zeros first.
+    // One slot per face: a million faces' slots are 64 MB, neither zeroed nor placed until
+    // a face's slot is written (allocate_lazy_bulk: on 2 MB pages, where a fresh 4 KB page's
+    // first touch costs about as much as a face's whole first point).
     GridSlot* slot_array() {
       if (GridSlot* a = slots.load(std::memory_order_acquire)) return a;
-      GridSlot* made = static_cast<GridSlot*>(allocate_zeroed_bulk(slot_bytes()));
+      GridSlot* made = static_cast<GridSlot*>(allocate_lazy_bulk(slot_bytes()));
       GridSlot* none = nullptr;
       if (slots.compare_exchange_strong(none, made, std::memory_order_acq_rel)) return made;
-      release_zeroed_bulk(made, slot_bytes());
+      release_lazy_bulk(made, slot_bytes());
       return none;
     }
   };
@@ -342,8 +345,9 @@ struct LimitSurface::Impl {
     auto c = std::make_shared<Cache>();
     c->nodes = std::make_unique<LimitNodes>(*scheme, options.features, radius, depth, triangles, *limits);
     c->entry_count = base.face_count();
+    // Value-initialised: every entry null, every slot not filled.
     c->entries = std::make_unique<std::atomic<Entry*>[]>(size_t(c->entry_count));
-    for (Index f = 0; f < c->entry_count; ++f) c->entries[size_t(f)].store(nullptr);
+    c->slot_filled = std::make_unique<std::atomic<char>[]>(size_t(c->entry_count));
     return c;
   }
   void set_cache(std::shared_ptr<Cache> c) const {
@@ -605,8 +609,7 @@ struct LimitSurface::Impl {
   // prepare() of a face made already (e set when not a grid slot), without a lock; false
   // with e null when not made.
   static bool prepared(const Cache& c, Index face, const Entry*& e) {
-    if (const GridSlot* a = c.slots.load(std::memory_order_acquire))
-      if (a[size_t(face)].get(15, std::memory_order_acquire) != 0) return true;
+    if (c.slot_filled[size_t(face)].load(std::memory_order_acquire)) return true;
     e = c.entries[size_t(face)].load(std::memory_order_acquire);
     return false;
   }
@@ -632,8 +635,8 @@ struct LimitSurface::Impl {
       std::copy(lab.vertices.begin(), lab.vertices.begin() + 16, ring.begin());
     }
     GridSlot& slot = c.slot_array()[size_t(face)];
-    for (size_t l = 0; l < 16; ++l)
-      slot.set(l, ring[l] + 1, l == 15 ? std::memory_order_release : std::memory_order_relaxed);
+    for (size_t l = 0; l < 16; ++l) slot.set(l, ring[l], std::memory_order_relaxed);
+    c.slot_filled[size_t(face)].store(1, std::memory_order_release);
     return true;
   }
 
@@ -1437,8 +1440,7 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   lo.features = options.features;
   impl_->limits = std::make_unique<SchemeLimits>(*impl_->scheme, lo);
   impl_->set_cache(impl_->make_cache(1));
-  impl_->grid_face = std::make_unique<std::atomic<char>[]>(size_t(impl_->base.face_count()));
-  for (Index f = 0; f < impl_->base.face_count(); ++f) impl_->grid_face[size_t(f)].store(0);
+  impl_->grid_face = std::make_unique<std::atomic<char>[]>(size_t(impl_->base.face_count()));  // zero
   if (impl_->scheme->split() == SplitKind::Dual)
     impl_->dual = std::make_unique<DualLimit>(*impl_->scheme, impl_->base, options, impl_->radius, *impl_->limits);
   if (impl_->scheme->split() == SplitKind::Sqrt3)
@@ -1639,7 +1641,7 @@ void LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> value
       const Impl::GridSlot& slot = c->slots.load(std::memory_order_acquire)[size_t(p.face)];
       return Impl::bspline_sample(
           c->regular.load(std::memory_order_acquire)->grid_cell,
-          [&](size_t l) { return slot.get(l, std::memory_order_relaxed) - 1; }, p, values, channels,
+          [&](size_t l) { return slot.get(l, std::memory_order_relaxed); }, p, values, channels,
           derivatives, out);
     }
     if (e->grid)
