@@ -102,6 +102,14 @@ struct TransientAllocator : DefaultInitAllocator<T> {
 template <class T>
 using TransientVector = std::vector<T, TransientAllocator<T>>;
 
+// grow() for a TransientVector: new elements poisoned as a ScratchVector's are.
+template <class T>
+void grow(TransientVector<T>& v, std::size_t n) {
+  const std::size_t old = v.size();
+  v.resize(n);
+  if (n > old && scratch_poison()) poison_bytes(v.data() + old, (n - old) * sizeof(T));
+}
+
 // v.resize(n), with huge pages advised before the new memory is first touched. A
 // ScratchVector's new elements are left as they come (util/scratch_vector.h: grow).
 template <class T, class A>

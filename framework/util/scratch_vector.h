@@ -68,7 +68,7 @@ template <class T, class A>
 void grow(std::vector<T, A>& v, std::size_t n) {
   const std::size_t old = v.size();
   v.resize(n);
-  if constexpr (std::is_base_of_v<DefaultInitAllocator<T>, A>)
+  if constexpr (std::is_same_v<A, DefaultInitAllocator<T>>)
     if (n > old && scratch_poison()) poison_bytes(v.data() + old, (n - old) * sizeof(T));
 }
 
