@@ -185,11 +185,10 @@ struct LimitSurface::Impl {
     }
   };
   // A face whose entry would be the regular one's (Cache::regular, a bicubic node) but for
-  // its vertices: those 16 in label order, one cache line per face, read once the face's
-  // byte in Cache::slot_filled says they are written (so that an empty slot is never read:
-  // its memory is not even placed until the face's slot is written, Cache::slot_array).
-  // Plain integers read and written through std::atomic_ref: two threads may fill a slot
-  // with the same labels at once.
+  // its vertices: those 16 in label order, one cache line per face, each stored plus one so
+  // that zero is "not yet" (the last one written last: when it is set, all are; a point
+  // reads one cache line). Plain integers read and written through std::atomic_ref, so that
+  // the array can come zeroed from the system (Cache::slot_array).
   struct alignas(64) GridSlot {
     std::array<Index, 16> vertex;
     Index get(size_t l, std::memory_order order) const {
@@ -286,10 +285,8 @@ struct LimitSurface::Impl {
     // been made the general way: every such face's cut has its signature, hence its node.
     std::atomic<const Entry*> regular{nullptr};
     // Per face (made with the first face that fills one), for regular faces when the
-    // regular node is a bicubic patch; a face's byte in slot_filled is set (release) once
-    // its slot is written.
+    // regular node is a bicubic patch.
     std::atomic<GridSlot*> slots{nullptr};
-    std::unique_ptr<std::atomic<char>[]> slot_filled;
     // Cuts by their key_cut (cut_key.h) at the cut's radius (make_entry).
     std::mutex known_mutex;
     std::unordered_map<Key, KnownCut, KeyHash> known;
@@ -319,9 +316,9 @@ struct LimitSurface::Impl {
       if (GridSlot* a = slots.load()) release_lazy_bulk(a, slot_bytes());
     }
     size_t slot_bytes() const { return std::max<size_t>(size_t(entry_count), 1) * sizeof(GridSlot); }
-    // One slot per face: a million faces' slots are 64 MB, neither zeroed nor placed until
-    // a face's slot is written (allocate_lazy_bulk: on 2 MB pages, where a fresh 4 KB page's
-    // first touch costs about as much as a face's whole first point).
+    // One slot per face, zero: a million faces' slots are 64 MB, placed as faces are met
+    // (allocate_lazy_bulk: on 2 MB pages, where a fresh 4 KB page's first touch costs about
+    // as much as a face's whole first point).
     GridSlot* slot_array() {
       if (GridSlot* a = slots.load(std::memory_order_acquire)) return a;
       GridSlot* made = static_cast<GridSlot*>(allocate_lazy_bulk(slot_bytes()));
@@ -345,9 +342,7 @@ struct LimitSurface::Impl {
     auto c = std::make_shared<Cache>();
     c->nodes = std::make_unique<LimitNodes>(*scheme, options.features, radius, depth, triangles, *limits);
     c->entry_count = base.face_count();
-    // Value-initialised: every entry null, every slot not filled.
-    c->entries = std::make_unique<std::atomic<Entry*>[]>(size_t(c->entry_count));
-    c->slot_filled = std::make_unique<std::atomic<char>[]>(size_t(c->entry_count));
+    c->entries = std::make_unique<std::atomic<Entry*>[]>(size_t(c->entry_count));  // value-initialised: null
     return c;
   }
   void set_cache(std::shared_ptr<Cache> c) const {
@@ -609,7 +604,8 @@ struct LimitSurface::Impl {
   // prepare() of a face made already (e set when not a grid slot), without a lock; false
   // with e null when not made.
   static bool prepared(const Cache& c, Index face, const Entry*& e) {
-    if (c.slot_filled[size_t(face)].load(std::memory_order_acquire)) return true;
+    if (const GridSlot* a = c.slots.load(std::memory_order_acquire))
+      if (a[size_t(face)].get(15, std::memory_order_acquire) != 0) return true;
     e = c.entries[size_t(face)].load(std::memory_order_acquire);
     return false;
   }
@@ -635,8 +631,8 @@ struct LimitSurface::Impl {
       std::copy(lab.vertices.begin(), lab.vertices.begin() + 16, ring.begin());
     }
     GridSlot& slot = c.slot_array()[size_t(face)];
-    for (size_t l = 0; l < 16; ++l) slot.set(l, ring[l], std::memory_order_relaxed);
-    c.slot_filled[size_t(face)].store(1, std::memory_order_release);
+    for (size_t l = 0; l < 16; ++l)
+      slot.set(l, ring[l] + 1, l == 15 ? std::memory_order_release : std::memory_order_relaxed);
     return true;
   }
 
@@ -1641,7 +1637,7 @@ void LimitSurface::evaluate_at(const FacePoint& p, std::span<const double> value
       const Impl::GridSlot& slot = c->slots.load(std::memory_order_acquire)[size_t(p.face)];
       return Impl::bspline_sample(
           c->regular.load(std::memory_order_acquire)->grid_cell,
-          [&](size_t l) { return slot.get(l, std::memory_order_relaxed); }, p, values, channels,
+          [&](size_t l) { return slot.get(l, std::memory_order_relaxed) - 1; }, p, values, channels,
           derivatives, out);
     }
     if (e->grid)
