@@ -33,12 +33,12 @@ void* allocate_bulk(std::size_t bytes);
 void release_bulk(void* data, std::size_t bytes);
 
 // Zeroed memory of `bytes`, page-aligned, on transparent huge pages where the kernel gives
-// them (MADV_HUGEPAGE whatever SUBDIV_HUGE_PAGES says), each page placed at its first write;
+// them (MADV_HUGEPAGE whatever SUBDIV_HUGE_PAGES says), each page placed at its first touch;
 // for an array written here and there over a long time, part of it perhaps never (a limit
-// surface's per-face slots). On a virtual machine the first touch of a fresh 4 KB page
+// surface's per-face slots), or written in full and soon dropped (TransientVector). On a virtual machine the first touch of a fresh 4 KB page
 // costs the guest's page fault and the host's: 10 MB of such pages took 30-60 ms to map and
 // first read (MAP_POPULATE, then a read per 64 bytes), 0.4-9 ms on 2 MB pages (docs/limit.md,
-// "Speed"). Back with release_lazy_bulk. Throws std::bad_alloc.
+// "Fresh pages, fewer"). Back with release_lazy_bulk. Throws std::bad_alloc.
 void* allocate_lazy_bulk(std::size_t bytes);
 void release_lazy_bulk(void* data, std::size_t bytes);
 
