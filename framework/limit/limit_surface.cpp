@@ -214,9 +214,9 @@ struct LimitSurface::Impl {
   };
   // A face whose entry would be the regular one's (Cache::regular, a bicubic node) but for
   // its vertices: those 16 in label order, one cache line per face, each stored plus one so
-  // that zero is "not yet" (the last one written last: when it is set, all are). Plain
-  // integers read and written through std::atomic_ref, so that the array can come zeroed
-  // from the system (Cache::slot_array) instead of being written with zeros first.
+  // that zero is "not yet" (the last one written last: when it is set, all are; a point
+  // reads one cache line). Plain integers read and written through std::atomic_ref, so that
+  // the array can come zeroed from the system (Cache::slot_array).
   struct alignas(64) GridSlot {
     std::array<Index, 16> vertex;
     Index get(size_t l, std::memory_order order) const {
@@ -341,18 +341,18 @@ struct LimitSurface::Impl {
     static constexpr size_t kStartsBudget = size_t(1) << 27;  // 128 MB
     ~Cache() {
       for (Index f = 0; f < entry_count; ++f) delete entries[size_t(f)].load();
-      if (GridSlot* a = slots.load()) release_zeroed_bulk(a, slot_bytes());
+      if (GridSlot* a = slots.load()) release_lazy_bulk(a, slot_bytes());
     }
     size_t slot_bytes() const { return std::max<size_t>(size_t(entry_count), 1) * sizeof(GridSlot); }
-    // One slot per face, zero: a million faces' slots are 64 MB, whose pages the system
-    // maps zeroed at once (allocate_zeroed_bulk) rather than page by page as they are
-    // first written, or written with zeros first.
+    // One slot per face, zero: a million faces' slots are 64 MB, placed as faces are met
+    // (allocate_lazy_bulk: on 2 MB pages, where a fresh 4 KB page's first touch costs about
+    // as much as a face's whole first point).
     GridSlot* slot_array() {
       if (GridSlot* a = slots.load(std::memory_order_acquire)) return a;
-      GridSlot* made = static_cast<GridSlot*>(allocate_zeroed_bulk(slot_bytes()));
+      GridSlot* made = static_cast<GridSlot*>(allocate_lazy_bulk(slot_bytes()));
       GridSlot* none = nullptr;
       if (slots.compare_exchange_strong(none, made, std::memory_order_acq_rel)) return made;
-      release_zeroed_bulk(made, slot_bytes());
+      release_lazy_bulk(made, slot_bytes());
       return none;
     }
   };
@@ -370,8 +370,7 @@ struct LimitSurface::Impl {
     auto c = std::make_shared<Cache>();
     c->nodes = std::make_unique<LimitNodes>(*scheme, options.features, radius, depth, triangles, *limits);
     c->entry_count = base.face_count();
-    c->entries = std::make_unique<std::atomic<Entry*>[]>(size_t(c->entry_count));
-    for (Index f = 0; f < c->entry_count; ++f) c->entries[size_t(f)].store(nullptr);
+    c->entries = std::make_unique<std::atomic<Entry*>[]>(size_t(c->entry_count));  // value-initialised: null
     return c;
   }
   void set_cache(std::shared_ptr<Cache> c) const {
@@ -1465,8 +1464,7 @@ LimitSurface::LimitSurface(std::shared_ptr<const Scheme> scheme, Level base, con
   lo.features = options.features;
   impl_->limits = std::make_unique<SchemeLimits>(*impl_->scheme, lo);
   impl_->set_cache(impl_->make_cache(1));
-  impl_->grid_face = std::make_unique<std::atomic<char>[]>(size_t(impl_->base.face_count()));
-  for (Index f = 0; f < impl_->base.face_count(); ++f) impl_->grid_face[size_t(f)].store(0);
+  impl_->grid_face = std::make_unique<std::atomic<char>[]>(size_t(impl_->base.face_count()));  // zero
   if (impl_->scheme->split() == SplitKind::Dual)
     impl_->dual = std::make_unique<DualLimit>(*impl_->scheme, impl_->base, options, impl_->radius, *impl_->limits);
   if (impl_->scheme->split() == SplitKind::Sqrt3)

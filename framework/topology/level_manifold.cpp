@@ -27,7 +27,7 @@ constexpr Index kGrain = 1 << 14;
 // its twin.
 struct Corners {
   CornerIndex index;
-  ScratchVector<Index> twin;  // per corner: the corner that runs its edge backwards, or kNone (boundary)
+  TransientVector<Index> twin;  // per corner: the corner that runs its edge backwards, or kNone (boundary)
   // Per vertex: its corner whose edge leaves along the boundary, or kNone (see number_edges).
   ScratchVector<Index> boundary_corner;
 };

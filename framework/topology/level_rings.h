@@ -4,19 +4,23 @@
 #include <vector>
 
 #include "framework/topology/level.h"
+#include "framework/util/bulk_memory.h"
 #include "framework/util/scratch_vector.h"
 
 namespace subdiv {
 
 // Corner arrays the builders work with: for every corner, its face; corners around each vertex.
+// The per-corner arrays live only while a level is built (TransientVector: on huge pages
+// from 2 MB, where a fresh 4 KB page's first touch is dear); vertex_offsets may become the
+// level's vertex_face_offsets.
 struct CornerIndex {
-  ScratchVector<Index> face;          // per corner
+  TransientVector<Index> face;          // per corner
   ScratchVector<Index> vertex_offsets;  // CSR: corners around each vertex (in corner order)
-  ScratchVector<Index> vertex_corners;
+  TransientVector<Index> vertex_corners;
   // Beside vertex_corners, if asked for: the vertex each corner's edge runs to (the next
   // corner's vertex). Placed with the corners, where the faces are read in order; found
   // afterwards it would take a scattered read per corner.
-  ScratchVector<Index> heads;
+  TransientVector<Index> heads;
 };
 
 inline Index next_corner(const Level& level, Index face, Index corner) {

@@ -56,18 +56,26 @@ void* allocate_bulk(std::size_t bytes) {
   return data;
 }
 
-void* allocate_zeroed_bulk(std::size_t bytes) {
-#ifdef MAP_POPULATE
-  constexpr int kPopulate = MAP_POPULATE;
-#else
-  constexpr int kPopulate = 0;
+// The mapping is made 2 MB longer and cut to a 2 MB boundary, so that every whole 2 MB of
+// the array can be one huge page.
+void* allocate_lazy_bulk(std::size_t bytes) {
+  constexpr std::uintptr_t kHuge = std::uintptr_t(2) << 20;
+  const std::size_t length = whole_pages(bytes);
+  void* raw = mmap(nullptr, length + kHuge, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (raw == MAP_FAILED) throw std::bad_alloc();
+  const auto begin = reinterpret_cast<std::uintptr_t>(raw);
+  const auto aligned = (begin + kHuge - 1) & ~(kHuge - 1);
+  if (aligned > begin) munmap(raw, aligned - begin);
+  const std::uintptr_t end = begin + length + kHuge;
+  if (end > aligned + length) munmap(reinterpret_cast<void*>(aligned + length), end - aligned - length);
+  void* data = reinterpret_cast<void*>(aligned);
+#ifdef MADV_HUGEPAGE
+  if (length >= kHuge) (void)madvise(data, length, MADV_HUGEPAGE);  // advice only
 #endif
-  void* data = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | kPopulate, -1, 0);
-  if (data == MAP_FAILED) throw std::bad_alloc();
   return data;
 }
 
-void release_zeroed_bulk(void* data, std::size_t bytes) { munmap(data, bytes); }
+void release_lazy_bulk(void* data, std::size_t bytes) { munmap(data, whole_pages(bytes)); }
 
 void release_bulk(void* data, std::size_t bytes) {
   if (reuse_heap.load(std::memory_order_relaxed)) return std::free(data);

@@ -32,12 +32,15 @@ void advise_huge_pages(void* data, std::size_t bytes);
 void* allocate_bulk(std::size_t bytes);
 void release_bulk(void* data, std::size_t bytes);
 
-// Zeroed memory of `bytes` whose pages are all mapped at once (Linux's MAP_POPULATE: the
-// kernel zeroes them in one pass rather than one page fault per 4 KB at first touch, which
-// costs several times the zeroing), page-aligned; for arrays of which every page is written
-// soon. Back with release_zeroed_bulk. Throws std::bad_alloc.
-void* allocate_zeroed_bulk(std::size_t bytes);
-void release_zeroed_bulk(void* data, std::size_t bytes);
+// Zeroed memory of `bytes`, page-aligned, on transparent huge pages where the kernel gives
+// them (MADV_HUGEPAGE whatever SUBDIV_HUGE_PAGES says), each page placed at its first touch;
+// for an array written here and there over a long time, part of it perhaps never (a limit
+// surface's per-face slots), or written in full and soon dropped (TransientVector). On a virtual machine the first touch of a fresh 4 KB page
+// costs the guest's page fault and the host's: 10 MB of such pages took 30-60 ms to map and
+// first read (MAP_POPULATE, then a read per 64 bytes), 0.4-9 ms on 2 MB pages (docs/limit.md,
+// "Fresh pages, fewer"). Back with release_lazy_bulk. Throws std::bad_alloc.
+void* allocate_lazy_bulk(std::size_t bytes);
+void release_lazy_bulk(void* data, std::size_t bytes);
 
 // For programs that refine again and again (animation, interactive editing, benchmarks):
 // with `reuse` on, bulk memory comes from the heap and goes back to it, so the next
@@ -68,6 +71,44 @@ struct BulkAllocator {
 
 template <class T>
 using BulkVector = std::vector<T, BulkAllocator<T>>;
+
+// An allocator for scratch arrays written in full and dropped within one call (a level
+// builder's corner tables): from 2 MB up, lazy bulk memory (allocate_lazy_bulk: huge pages,
+// each placed at its first write), the ordinary heap below; new elements left as they come,
+// as a ScratchVector's (util/scratch_vector.h).
+template <class T>
+struct TransientAllocator : DefaultInitAllocator<T> {
+  using value_type = T;
+  template <class U>
+  struct rebind {
+    using other = TransientAllocator<U>;
+  };
+  static constexpr std::size_t kLazyBytes = std::size_t(2) << 20;
+  TransientAllocator() = default;
+  template <class U>
+  TransientAllocator(const TransientAllocator<U>&) noexcept {}
+  T* allocate(std::size_t n) {
+    if (n * sizeof(T) < kLazyBytes) return std::allocator<T>().allocate(n);
+    return static_cast<T*>(allocate_lazy_bulk(n * sizeof(T)));
+  }
+  void deallocate(T* p, std::size_t n) {
+    if (n * sizeof(T) < kLazyBytes) return std::allocator<T>().deallocate(p, n);
+    release_lazy_bulk(p, n * sizeof(T));
+  }
+  template <class U>
+  bool operator==(const TransientAllocator<U>&) const { return true; }
+};
+
+template <class T>
+using TransientVector = std::vector<T, TransientAllocator<T>>;
+
+// grow() for a TransientVector: new elements poisoned as a ScratchVector's are.
+template <class T>
+void grow(TransientVector<T>& v, std::size_t n) {
+  const std::size_t old = v.size();
+  v.resize(n);
+  if (n > old && scratch_poison()) poison_bytes(v.data() + old, (n - old) * sizeof(T));
+}
 
 // v.resize(n), with huge pages advised before the new memory is first touched. A
 // ScratchVector's new elements are left as they come (util/scratch_vector.h: grow).
