@@ -84,10 +84,6 @@ RefineRequest refine_request(const RefineArgs& a, const OutputChoice& output, Pr
   return r;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 void print_warnings(const std::vector<std::string>& warnings) {
   for (const auto& w : warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
 }

@@ -81,3 +81,61 @@ TEST_CASE("a scheme with other weights that is C1 at regular vertices keeps its 
       CHECK(s.du[size_t(axis)] == doctest::Approx((a[size_t(axis)] - b[size_t(axis)]) / (2 * h)).epsilon(1e-3));
   }
 }
+
+namespace {
+
+// Kobbelt's √3 (schemes/sqrt3.json) with the vertex rule `self` v + `ring` (each neighbour).
+std::shared_ptr<const Scheme> sqrt3_scheme(const std::string& name, const std::string& self, const std::string& ring) {
+  const std::string text = R"({"name": ")" + name + R"(", "split": "sqrt3", "faces": "triangles",
+    "curve": "ternary-cubic-bspline",
+    "rules": {"face": [{"sum": "vertices", "w": "1/3"}],
+              "vertex": [{"at": "self", "w": ")" + self + R"("}, {"sum": "ring", "w": ")" + ring + R"("}]}})";
+  return load_scheme_text(text, name + ".json");
+}
+
+}  // namespace
+
+TEST_CASE("a √3 scheme that is not C1 at regular vertices: derivatives refused, positions evaluated") {
+  // Keeping 0.9 of the vertex: at valence 6 the double step's subdominant eigenvalues are not
+  // the 1/3 by which two √3 steps shrink the parameters, so the difference quotients at the
+  // face's centre (a vertex after one double step... and every vertex of the triadic grid)
+  // grow without bound.
+  const auto scheme = sqrt3_scheme("stiff-sqrt3", "0.9", "0.1/n");
+  const test::Mesh torus = test::torus(9, 9, true);  // every vertex of valence 6
+  const LimitSurface surface(scheme, torus.level());
+  const std::vector<double>& P = torus.positions;
+  const double u = 1.0 / 3, v = 1.0 / 3;  // the face's centre: the vertex its first step adds
+  const auto c = position(surface, P, u, v);
+  double coarse = 0, fine = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto a = position(surface, P, u + std::pow(3.0, -4), v);
+    const auto b = position(surface, P, u + std::pow(3.0, -16), v);
+    coarse = std::max(coarse, std::fabs(a[size_t(axis)] - c[size_t(axis)]) * std::pow(3.0, 4));
+    fine = std::max(fine, std::fabs(b[size_t(axis)] - c[size_t(axis)]) * std::pow(3.0, 16));
+  }
+  CAPTURE(coarse);
+  CAPTURE(fine);
+  CHECK((fine > 2 * coarse || fine < coarse / 2));  // no finite, non-zero derivative
+  for (double s : {1.0 / 3, 0.2, 0.0}) {
+    CAPTURE(s);
+    CHECK_THROWS_WITH_AS(surface.evaluate(0, s, 1.0 / 3, P, 3, 1),
+                         doctest::Contains("scheme 'stiff-sqrt3' is not C1, so its limit has no derivatives"), Error);
+    CHECK_THROWS_WITH_AS(surface.evaluate(0, s, 1.0 / 3, P, 3, 1), doctest::Contains("needs 0.333333"), Error);
+    CHECK(std::isfinite(surface.evaluate(0, s, 1.0 / 3, P, 3, 0).position[0]));
+  }
+}
+
+TEST_CASE("the shipped √3 schemes keep their derivatives (checked against central differences)") {
+  const test::Mesh torus = test::torus(9, 9, true);
+  const std::vector<double>& P = torus.positions;
+  const double h = std::pow(3.0, -9);
+  for (const char* name : {"sqrt3", "interpolating-sqrt3"}) {
+    CAPTURE(name);
+    const LimitSurface surface(load_scheme(name), torus.level());
+    const LimitSample s = surface.evaluate(0, 0.3, 0.2, P, 3, 1);
+    REQUIRE(s.has_derivatives);
+    const auto a = position(surface, P, 0.3 + h, 0.2), b = position(surface, P, 0.3 - h, 0.2);
+    for (int axis = 0; axis < 3; ++axis)
+      CHECK(s.du[size_t(axis)] == doctest::Approx((a[size_t(axis)] - b[size_t(axis)]) / (2 * h)).epsilon(1e-3));
+  }
+}

@@ -158,6 +158,38 @@ TEST_CASE("A plugin's split (sqrt2): linear precision on a regular grid, and the
                        doctest::Contains("not all quads or all triangles"), Error);
 }
 
+TEST_CASE("A plugin's split with a vertex rule that is not C1 at regular vertices: derivatives refused") {
+  // The sqrt2 plugin's scheme keeping 0.8 of the vertex (its own rule keeps 1/2): at a
+  // regular vertex the period's subdominant eigenvalues are not the 1/2 by which two √2 steps
+  // shrink the parameters, so the limit has no derivatives there; positions are evaluated.
+  test::load_example_plugins();
+  const auto stiff = load_scheme_text(R"({"name": "stiff-sqrt2", "split": "sqrt2", "curve": "cubic-bspline",
+    "rules": {"face": [{"sum": "vertices", "w": "1/k"}],
+              "vertex": [{"at": "self", "w": "0.8"}, {"sum": "faces", "new": "face", "w": "0.2/n"}],
+              "edge": [{"sum": "ends", "w": "1/2"}]}})",
+                                      "stiff-sqrt2.json");
+  const int n = 16;
+  const test::Mesh m = limit_test::unrolled_torus(n);
+  const LimitSurface s(stiff, m.level());
+  const Index f = Index(7 * n + 7);
+  CHECK_THROWS_WITH_AS(s.evaluate(f, 0.5, 0.5, m.positions, 3, 1),
+                       doctest::Contains("scheme 'stiff-sqrt2' is not C1, so its limit has no derivatives"), Error);
+  CHECK_THROWS_WITH_AS(s.evaluate(f, 0.3, 0.6, m.positions, 3, 1), doctest::Contains("needs 0.5"), Error);
+  // Positions: the difference quotients at the face's centre do not settle (no derivative),
+  // on heights that are no linear function (which a symmetric rule reproduces).
+  std::vector<double> P = m.positions;
+  for (size_t v = 0; 3 * v < P.size(); ++v) P[3 * v + 2] = 0.1 * double((v * 37) % 11);
+  const auto at = [&](double u) { return s.evaluate(f, u, 0.5, P, 3, 0).position; };
+  const auto c = at(0.5);
+  const double coarse = distance(at(0.5 + std::ldexp(1.0, -6)), c) * std::ldexp(1.0, 6);
+  const double fine = distance(at(0.5 + std::ldexp(1.0, -26)), c) * std::ldexp(1.0, 26);
+  CAPTURE(coarse);
+  CAPTURE(fine);
+  CHECK((fine > 2 * coarse || fine < coarse / 2));
+  // The plugin's own rule keeps its derivatives on the same grid (the test above).
+  CHECK(LimitSurface(load_scheme("sqrt2"), m.level()).evaluate(f, 0.3, 0.6, m.positions, 3, 1).has_derivatives);
+}
+
 // A plugin's split in a sequence's head is followed one period at a time
 // (plugin_period_children.h): its own levels before it change nothing, and another scheme
 // after it is continuous across the base edges, with stencils and derivatives.
