@@ -13,7 +13,6 @@
 #include "framework/limit/canonical_cut.h"
 #include "framework/limit/corner_limit.h"
 #include "framework/limit/cut_weight_tables.h"
-#include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
 

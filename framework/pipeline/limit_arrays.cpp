@@ -3,7 +3,7 @@
 #include "framework/analysis/surface/rim_rules.h"
 #include "framework/limit/corner_limit.h"
 #include "framework/pipeline/rational_weights.h"
-#include "framework/util/error.h"
+#include "framework/util/option_spelling.h"
 
 namespace subdiv {
 namespace {
