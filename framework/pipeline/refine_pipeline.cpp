@@ -479,6 +479,7 @@ RefineResult run_refinement(PreparedRefinement&& p, const RefineRequest& r) {
                                       p.rational ? output_weights_name(p) : std::string());
     out.finest_point_data = std::move(limits.point_data);
     out.warnings.insert(out.warnings.end(), limits.warnings.begin(), limits.warnings.end());
+    out.limit_warnings = std::move(limits.warnings);
     limits.result.positions.clear(), limits.result.normals.clear();
     out.limit_note = limit_note(r, limits.result);
     out.limit = std::move(limits.result);

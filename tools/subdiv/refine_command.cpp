@@ -196,6 +196,7 @@ void run(const RefineArgs& a) {
   if (a.in_pieces()) return run_in_pieces(a, request, prepared, output, progress, t0);
   RefineResult result = run_refinement(std::move(prepared), request);
   print_warnings(result.hierarchy.warnings);
+  print_warnings(result.limit_warnings);
   if (!result.limit_note.empty() && !a.quiet)
     print_safe(stderr, "subdiv: note: {}\n", spell_options(result.limit_note, cli_option_spelling()));
   progress.say(fmt::format("writing {}", a.output));

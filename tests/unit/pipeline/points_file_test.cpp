@@ -61,7 +61,7 @@ TEST_CASE("a face number written as a decimal with a whole value (pandas, R) is 
                            std::pair{"3.0.0", "is not a whole number"}}) {
     CAPTURE(bad.first);
     CHECK_THROWS_WITH_AS(parse_points(std::string("face,u,v\n") + bad.first + ",0,0\n", "pts.csv", unit_square_check),
-                         doctest::Contains(fmt::format("face '{}' {}", bad.first, bad.second)), Error);
+                         doctest::Contains(fmt::format("face '{}' {}", bad.first, bad.second).c_str()), Error);
   }
 }
 
