@@ -476,3 +476,9 @@ def test_a_scheme_not_c1_raises_for_derivatives_and_evaluates_positions(tmp_path
     with pytest.raises(sk.Error, match="is not C1, so its limit has no derivatives"):
         S.evaluate([0], [[0.3, 0.2]])
     assert np.isfinite(S.evaluate([0], [[0.3, 0.2]], derivatives=0).points).all()
+    # limit_positions, as refine --limit: the positions, and no normals (zero) with the reason.
+    L = sk.limit_positions(cube(), str(path))
+    assert np.isfinite(L.points).all()
+    assert not L.normals.any() and not L.normal_exact.any()
+    assert any("is not C1" in why for why in L.approximate_reasons)
+    assert sk.limit_positions(cube(), "catmull-clark").normals.any()
