@@ -304,6 +304,9 @@ const CornerRows* Sqrt3Nodes::corner(int id, int k, NoLimitMask& error) {
         // Off the boundary, the rings to it grow threefold per double step: derivatives a few
         // steps on (sqrt3_limit.cpp).
         n.corner_deferred[size_t(k)] = !n.corner[size_t(k)].ds.empty() && !on_feature(n.level, c);
+        // Nor is there a scale to compare with there: a regular boundary vertex's eigenvalues
+        // (the interpolating √3's 1/3, 0.264) say nothing about derivatives it does not give.
+        n.corner[size_t(k)].no_derivatives.clear();
         for (auto* row : {&n.corner[size_t(k)].ds, &n.corner[size_t(k)].dt, &n.corner[size_t(k)].dss,
                           &n.corner[size_t(k)].dst, &n.corner[size_t(k)].dtt})
           row->clear();
