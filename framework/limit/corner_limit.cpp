@@ -7,7 +7,11 @@
 
 #include <fmt/format.h>
 
+#include "framework/analysis/surface/surface_analysis.h"
 #include "framework/features/sharpness.h"
+#include "framework/scheme/scheme.h"
+#include "framework/scheme/scheme_registry.h"
+#include "framework/util/quoted_text.h"
 
 namespace subdiv {
 namespace {
@@ -86,22 +90,12 @@ void derivatives(const LimitMask& mask, const Labelling& lab, const Level& L, co
   }
 }
 
-// Near a regular vertex the parameter contracts by `scale` per step and the limit by the
-// subdominant eigenvalues (Reif 1995, "A unified approach to subdivision algorithms near
-// extraordinary vertices"): the limit is differentiable there only when they are equal to
-// it. Otherwise a difference quotient grows or decays like (eigenvalue / scale)^k, and the
-// tangent masks would give a finite number that is no derivative.
+// A regular vertex whose subdominant eigenvalues are not the parameters' scale
+// (eigenvalues_off_scale): the limit has no derivatives there.
 std::string scale_mismatch(const LimitMask& mask, const Level& L, Index c, double scale) {
-  if (scale <= 0 || mask.direction_eigenvalues.empty()) return {};
-  for (double z : mask.direction_eigenvalues)
-    if (std::fabs(z - scale) > 1e-6 * scale) {
-      std::string values;
-      for (double x : mask.direction_eigenvalues) values += (values.empty() ? "" : ", ") + fmt::format("{:.6g}", x);
-      return fmt::format("at a regular {}vertex of valence {} its subdominant eigenvalues are {}, where a surface "
-                         "differentiable in the face's parameters needs {:.6g} (the parameters' scale per step)",
-                         L.on_boundary(c) ? "boundary " : "", L.valence(c), values, scale);
-    }
-  return {};
+  const std::string off = eigenvalues_off_scale(mask.direction_eigenvalues, scale);
+  if (off.empty()) return {};
+  return fmt::format("at a regular {}vertex of valence {} {}", L.on_boundary(c) ? "boundary " : "", L.valence(c), off);
 }
 
 // The second-derivative rows at the face's corner (corner_rows with `second`): only at an
@@ -200,8 +194,30 @@ std::vector<Uv> unfold(const Level& L, Index face, bool triangles) {
   return at;
 }
 
+std::string not_c1(const Scheme& scheme, const std::string& why) {
+  return fmt::format("scheme {} is not C1, so its limit has no derivatives or normals: {}; check its rules with "
+                     "`subdiv analyze {}` (the l1=l2 column)",
+                     subdiv::quoted(scheme.name), why, scheme_argument(scheme));
+}
+
+std::string not_c1_derivatives(const Scheme& scheme, const std::string& why) {
+  return not_c1(scheme, why) + ", or evaluate positions only (`subdiv evaluate --at POINTS.csv --derivatives 0`; "
+                               "Python: `derivatives=0`)";
+}
+
+std::string no_limit_mask(const Scheme& scheme, int steps, const NoLimitMask& why) {
+  if (why.failure.empty())
+    return fmt::format("no limit mask for the vertex reached after {} step(s){}{}", steps, why.verdict.empty() ? "" : ": ",
+                       why.verdict);
+  return fmt::format("scheme {} does not converge at the vertex the point reaches after {} step(s) ({}), so the "
+                     "limit does not exist there; check its rules with `subdiv analyze {}` (the verdict per "
+                     "valence) and make the vertex rule's weights give the eigenvalue 1 once and the others "
+                     "smaller",
+                     subdiv::quoted(scheme.name), steps, why.failure, scheme_argument(scheme));
+}
+
 bool corner_rows(SchemeLimits& limits, const Level& L, const FacePoint& p, int corner, int step, bool triangles,
-                 CornerRows& rows, std::string& mask_error, double scale, bool second) {
+                 CornerRows& rows, NoLimitMask& mask_error, double scale, bool second) {
   if (p.sub_face >= 0) return false;  // an n-gon's sub-face is not a face of the level yet
   const Index c = L.face(p.face)[size_t(corner)];
   bool semi_sharp = false;
@@ -209,7 +225,7 @@ bool corner_rows(SchemeLimits& limits, const Level& L, const FacePoint& p, int c
   if (semi_sharp) return false;
   const auto mask = limits.mask(config);
   if (!mask->ok) {
-    mask_error = mask->error;
+    mask_error = {mask->error, mask->failure};
     return false;
   }
   const int start = conventional_start(L, c);

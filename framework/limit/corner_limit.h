@@ -37,9 +37,27 @@ struct CornerRows {
   std::string no_derivatives;
 };
 
+// Why a vertex has no limit mask: the analysis's verdict for its configuration (LimitMask).
+struct NoLimitMask {
+  std::string verdict;  // empty: no analysis has failed (the neighbourhood was not yet analysable)
+  std::string failure;  // the scheme fails a condition there (Verdict::Fails): which; else empty
+};
+
+// The refusal for a point whose descent found no limit mask after `steps` steps: where the
+// scheme fails (its local subdivision matrix lacks the simple dominant eigenvalue 1, or
+// another condition), its rules, not the mesh, must change, and the message says so.
+std::string no_limit_mask(const Scheme& scheme, int steps, const NoLimitMask& why);
+
+// A scheme whose regular vertices' eigenvalues do not match the parameterisation
+// (CornerRows::no_derivatives says how): "scheme S is not C1, so its limit has no derivatives
+// or normals: <why>; check its rules with `subdiv analyze S`". The callers add what to do instead.
+std::string not_c1(const Scheme& scheme, const std::string& why);
+// not_c1 with the way to evaluate positions only, for the evaluation's refusal of derivatives.
+std::string not_c1_derivatives(const Scheme& scheme, const std::string& why);
+
 // The rows at the face's corner `corner`. False when the vertex's neighbourhood is not yet one the masks
 // describe (a semi-sharp feature, another irregular vertex nearby): refine and try again.
-// `mask_error` receives the analysis's reason when it has no mask for the configuration.
+// `mask_error` receives the analysis's verdict when it has no mask for the configuration.
 // `scale`: the parameterisation's contraction per step of the analysis (1/2 for binary
 // splits), which a regular vertex's subdominant eigenvalues must equal for the limit to be
 // differentiable there; 0 leaves it unchecked.
@@ -51,6 +69,6 @@ struct CornerRows {
 // gives m . P = (m . S²/2) P_ss + (m . S T) P_st + (m . T²/2) P_tt. Only for a scheme that
 // generates quadratics there (checked by the callers' tests against central differences).
 bool corner_rows(SchemeLimits& limits, const Level& level, const FacePoint& point, int corner, int step,
-                 bool triangles, CornerRows& rows, std::string& mask_error, double scale = 0, bool second = false);
+                 bool triangles, CornerRows& rows, NoLimitMask& mask_error, double scale = 0, bool second = false);
 
 }  // namespace subdiv

@@ -9,9 +9,10 @@
 
 #include "framework/analysis/surface/local_patch.h"
 #include "framework/engine/refiner.h"
+#include "framework/analysis/surface/surface_analysis.h"
 #include "framework/limit/canonical_cut.h"
+#include "framework/limit/corner_limit.h"
 #include "framework/limit/cut_weight_tables.h"
-#include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
 #include "framework/util/quoted_text.h"
 
@@ -35,15 +36,6 @@ void append_holes(const Level& cut, const Labelling& lab, std::vector<double>& k
     key.push_back(-2);
     for (Index l : h) key.push_back(double(l));
   }
-}
-
-// A scheme whose regular vertices' eigenvalues do not match the parameterisation
-// (corner_limit.h): the refusal of derivatives, with what to do instead.
-std::string not_c1(const Scheme& scheme, const std::string& why) {
-  return fmt::format("scheme {} is not C1, so its limit has no derivatives or normals: {}; check its rules with "
-                     "`subdiv analyze {}` (the l1=l2 column), or evaluate positions only (`subdiv evaluate --at "
-                     "POINTS.csv --derivatives 0`; Python: `derivatives=0`)",
-                     subdiv::quoted(scheme.name), why, scheme_argument(scheme));
 }
 
 std::string not_closed(const Scheme& scheme, int depth) {
@@ -326,11 +318,11 @@ void LimitNodes::set_quartic(int id, PolynomialPatch patch) {
   n.patch = std::move(patch);
 }
 
-const CornerRows* LimitNodes::corner(int id, int k, std::string& error) {
+const CornerRows* LimitNodes::corner(int id, int k, NoLimitMask& error) {
   return tbb::this_task_arena::isolate([&] { return corner_isolated(id, k, error); });
 }
 
-const CornerRows* LimitNodes::corner_isolated(int id, int k, std::string& error) {
+const CornerRows* LimitNodes::corner_isolated(int id, int k, NoLimitMask& error) {
   std::lock_guard lock(mutex_);
   LimitNode& n = *nodes_[size_t(id)];
   if (!n.corner_tried[size_t(k)]) {
@@ -338,9 +330,8 @@ const CornerRows* LimitNodes::corner_isolated(int id, int k, std::string& error)
     FacePoint p;
     p.face = n.face;
     CornerRows rows;
-    std::string why;
-    // Binary splits: the parameters halve per step.
-    if (corner_rows(limits_, n.level, p, k, 0, triangles_, rows, why, 0.5)) {
+    NoLimitMask why;
+    if (corner_rows(limits_, n.level, p, k, 0, triangles_, rows, why, analysis_parameter_scale(scheme_))) {
       auto by_label = [&](const std::vector<double>& r) {
         std::vector<double> out(size_t(n.kept), 0.0);
         for (size_t v = 0; v < r.size(); ++v) {
@@ -351,14 +342,14 @@ const CornerRows* LimitNodes::corner_isolated(int id, int k, std::string& error)
         return out;
       };
       n.corner[size_t(k)].position = by_label(rows.position);
-      if (!rows.no_derivatives.empty()) n.corner[size_t(k)].no_derivatives = not_c1(scheme_, rows.no_derivatives);
+      if (!rows.no_derivatives.empty()) n.corner[size_t(k)].no_derivatives = not_c1_derivatives(scheme_, rows.no_derivatives);
       if (!rows.ds.empty()) n.corner[size_t(k)].ds = by_label(rows.ds), n.corner[size_t(k)].dt = by_label(rows.dt);
       n.corner_ready[size_t(k)] = 1;
     } else {
       n.corner_error[size_t(k)] = why;
     }
   }
-  if (!n.corner_ready[size_t(k)] && !n.corner_error[size_t(k)].empty()) error = n.corner_error[size_t(k)];
+  if (!n.corner_ready[size_t(k)] && !n.corner_error[size_t(k)].verdict.empty()) error = n.corner_error[size_t(k)];
   return n.corner_ready[size_t(k)] ? &n.corner[size_t(k)] : nullptr;
 }
 

@@ -56,7 +56,7 @@ struct LimitNode {
   int quartic = 0;
   PolynomialPatch patch;
   std::vector<CornerRows> corner;  // over labels
-  std::vector<std::string> corner_error;
+  std::vector<NoLimitMask> corner_error;
 };
 
 struct Labelling;
@@ -76,7 +76,7 @@ public:
   const LimitNode& expanded(int id);
   // The rows at the node face's corner k, or null when the vertex is not yet in a
   // configuration the masks describe (`error` then says why when the analysis failed).
-  const CornerRows* corner(int id, int k, std::string& error);
+  const CornerRows* corner(int id, int k, NoLimitMask& error);
   const LimitNode& node(int id);
   int depth() const { return depth_; }
   // The weight tables the nodes' refinements keep (cut_weight_tables.h), for other cut
@@ -107,7 +107,7 @@ public:
 private:
   LimitNode& expand_locked(int id);
   const std::array<Index, 16>* bspline_isolated(int id);
-  const CornerRows* corner_isolated(int id, int k, std::string& error);
+  const CornerRows* corner_isolated(int id, int k, NoLimitMask& error);
   bool grid_locked(LimitNode& n);
   bool bspline_step_locked(int id);
   int intern_locked(const Level& cut, Index face, std::vector<Index>& order);

@@ -109,7 +109,7 @@ LimitSample PluginSplitLimit::evaluate(const FacePoint& p0, const std::vector<do
   const int round_off = factor_ == 2 ? 54 : 34;
   int stop = round_off;
   const int give_up = 24 * round_off;
-  std::string mask_error;
+  NoLimitMask mask_error;
   for (int step = 0;; ++step) {
     const int size = cut.level.face_size(cut.point.face);
     if (factor_ == 3 && extraordinary_corner(cut.level, cut.point.face, triangles_))
@@ -119,7 +119,10 @@ LimitSample PluginSplitLimit::evaluate(const FacePoint& p0, const std::vector<do
     if (k >= 0) {
       CornerRows rows;
       FacePoint corner = cut.point;
-      if (corner_rows(limits_, cut.level, corner, k, 0, triangles_, rows, mask_error)) {
+      // The analysis's step is the split's period, which contracts the parameters by 1/m.
+      if (corner_rows(limits_, cut.level, corner, k, 0, triangles_, rows, mask_error, 1.0 / factor_)) {
+        if (derivatives >= 1 && !rows.no_derivatives.empty())
+          throw Error(not_c1_derivatives(scheme_, rows.no_derivatives));
         LimitSample out;
         out.steps = step;
         out.position = applied(rows.position, values, channels);
@@ -134,9 +137,10 @@ LimitSample PluginSplitLimit::evaluate(const FacePoint& p0, const std::vector<do
         return out;
       }
     }
+    if (step >= give_up && !mask_error.failure.empty()) throw Error(no_limit_mask(scheme_, period_ * step, mask_error));
     if (step >= give_up)
       throw Error(fmt::format("internal: the point's vertex has no limit mask after {} steps{}{}", step,
-                              mask_error.empty() ? "" : ": ", mask_error));
+                              mask_error.verdict.empty() ? "" : ": ", mask_error.verdict));
     RefineOptions ro;
     ro.levels = period_;
     ro.features = options_.features;

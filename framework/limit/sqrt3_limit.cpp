@@ -83,7 +83,7 @@ int sqrt3_single_step_levels(const Level& base) {
 
 Sqrt3Limit::Sqrt3Limit(const Scheme& scheme, const Level& base, const LimitSurfaceOptions& options,
                        SchemeLimits& limits)
-    : base_(base) {
+    : scheme_(scheme), base_(base) {
   // Two steps lose `loss` rings of the cut (in its own rings, an over-estimate for the second
   // step's smaller ones); the next cut, `radius` rings of triangles a third the size, must lie
   // in what is left: radius / 3 + 1 <= radius - loss.
@@ -127,7 +127,7 @@ LimitSample Sqrt3Limit::evaluate(const FacePoint& p0, const std::vector<double>&
   const int round_off = derivatives >= 2 ? kSecondOrderSteps : kRoundOffSteps;
   int stop = round_off;
   const int give_up = 24 * kRoundOffSteps;  // past the smallest double's distance to a vertex (3^-680)
-  std::string mask_error;
+  NoLimitMask mask_error;
   int deferred = 0;  // double steps taken past a corner whose derivatives a nearby boundary took away
   for (int step = 0;; ++step) {
     const Sqrt3Node& node = nodes_->expanded(id);
@@ -144,6 +144,11 @@ LimitSample Sqrt3Limit::evaluate(const FacePoint& p0, const std::vector<double>&
         ++deferred;
         rows = nullptr;
       }
+      // At the vertex itself, which keeps its configuration from double step to double step, a
+      // failed analysis fails at every level (limit_surface.cpp's descent says the same).
+      if (!rows && at_vertex && !mask_error.verdict.empty()) throw Error(no_limit_mask(scheme_, 2 * step, mask_error));
+      if (rows && derivatives >= 1 && !rows->no_derivatives.empty())
+        throw Error(not_c1_derivatives(scheme_, rows->no_derivatives));
       if (rows) {
         LimitSample out;
         out.steps = step;
@@ -173,9 +178,10 @@ LimitSample Sqrt3Limit::evaluate(const FacePoint& p0, const std::vector<double>&
         return out;
       }
     }
+    if (step >= give_up && !mask_error.failure.empty()) throw Error(no_limit_mask(scheme_, 2 * step, mask_error));
     if (step >= give_up)
       throw Error(fmt::format("internal: the point's nearest vertex has no limit mask after {} double sqrt3 steps{}{}", step,
-                              mask_error.empty() ? "" : ": ", mask_error));
+                              mask_error.verdict.empty() ? "" : ": ", mask_error.verdict));
     // The child holding the point: every coordinate >= 0, else the least outside (round-off).
     size_t best = 0;
     double best_min = -std::numeric_limits<double>::infinity();

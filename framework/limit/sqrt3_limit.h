@@ -99,6 +99,7 @@ public:
   static constexpr int kSecondOrderSteps = 43;
 
 private:
+  const Scheme& scheme_;
   const Level& base_;
   int radius_ = 5;
   std::unique_ptr<Sqrt3Nodes> nodes_;  // shared by all evaluations (thread-safe)

@@ -8,6 +8,7 @@
 #include <tbb/task_arena.h>
 
 #include "framework/analysis/surface/local_patch.h"
+#include "framework/analysis/surface/surface_analysis.h"
 #include "framework/engine/refiner.h"
 #include "framework/limit/canonical_cut.h"
 #include "framework/limit/cut_weight_tables.h"
@@ -281,7 +282,7 @@ const Sqrt3Node::Powers& Sqrt3Nodes::powers(int id, int which, bool second) {
   return *slot;
 }
 
-const CornerRows* Sqrt3Nodes::corner(int id, int k, std::string& error) {
+const CornerRows* Sqrt3Nodes::corner(int id, int k, NoLimitMask& error) {
   return tbb::this_task_arena::isolate([&]() -> const CornerRows* {
     std::lock_guard lock(mutex_);
     Sqrt3Node& n = *nodes_[size_t(id)];
@@ -289,7 +290,10 @@ const CornerRows* Sqrt3Nodes::corner(int id, int k, std::string& error) {
       FacePoint p;
       p.face = n.face;
       n.corner_state[size_t(k)] =
-          corner_rows(limits_, n.level, p, k, 0, true, n.corner[size_t(k)], n.corner_error[size_t(k)], 0, true) ? 1 : 2;
+          corner_rows(limits_, n.level, p, k, 0, true, n.corner[size_t(k)], n.corner_error[size_t(k)],
+                      analysis_parameter_scale(scheme_), true)
+              ? 1
+              : 2;
       // No derivatives within a few rings of a boundary: the tangent masks are scaled by
       // linear precision (corner_limit.h), which √3's boundary rules lack there (the first
       // step's face point of a boundary triangle has 5 neighbours, and the vertex rule moves it
@@ -300,13 +304,16 @@ const CornerRows* Sqrt3Nodes::corner(int id, int k, std::string& error) {
         // Off the boundary, the rings to it grow threefold per double step: derivatives a few
         // steps on (sqrt3_limit.cpp).
         n.corner_deferred[size_t(k)] = !n.corner[size_t(k)].ds.empty() && !on_feature(n.level, c);
+        // Nor is there a scale to compare with there: a regular boundary vertex's eigenvalues
+        // (the interpolating √3's 1/3, 0.264) say nothing about derivatives it does not give.
+        n.corner[size_t(k)].no_derivatives.clear();
         for (auto* row : {&n.corner[size_t(k)].ds, &n.corner[size_t(k)].dt, &n.corner[size_t(k)].dss,
                           &n.corner[size_t(k)].dst, &n.corner[size_t(k)].dtt})
           row->clear();
       }
     }
     if (n.corner_state[size_t(k)] == 2) {
-      if (!n.corner_error[size_t(k)].empty()) error = n.corner_error[size_t(k)];
+      if (!n.corner_error[size_t(k)].verdict.empty()) error = n.corner_error[size_t(k)];
       return nullptr;
     }
     return &n.corner[size_t(k)];

@@ -66,7 +66,7 @@ struct Sqrt3Node {
   std::vector<std::unique_ptr<Powers>> powers;
   std::array<int, 3> corner_state{};     // 0 not tried, 1 ready, 2 not a known configuration
   std::array<CornerRows, 3> corner;      // over labels
-  std::array<std::string, 3> corner_error;
+  std::array<NoLimitMask, 3> corner_error;
   // Per corner: its derivatives were taken away for a boundary a few rings off, and the
   // corner itself is not on it (a deeper level has them).
   std::array<char, 3> corner_deferred{};
@@ -84,7 +84,7 @@ public:
   const Sqrt3Node& expanded(int id);
   // The rows at the node face's corner k, or null when the vertex is not yet in a
   // configuration the masks describe (`error` then says why when the analysis failed).
-  const CornerRows* corner(int id, int k, std::string& error);
+  const CornerRows* corner(int id, int k, NoLimitMask& error);
   // The powers of child `which`'s step of node `id`, which must lead back to the node: m
   // double steps then cost one product per binary digit of m; with `second`, with their
   // second-derivative forms.

@@ -173,9 +173,17 @@ std::array<double, 3> limit_normal(const LimitSurface& s, const SurfaceSample& s
   return unit_normal(p.du, p.dv, negligible);
 }
 
+std::string segments_out_of_range(int N) {
+  if (N >= 1 && N <= kMaxSegments) return {};
+  if (N < 1) return fmt::format("give 1 to {} segments per face edge (1: each face's corners only)", kMaxSegments);
+  return fmt::format("give 1 to {} segments per face edge: {} already make a million points per quad face; for a "
+                     "finer mesh of the limit refine first (`subdiv refine MESH -l L --limit`) and sample that",
+                     kMaxSegments, kMaxSegments);
+}
+
 void check_segments(int N) {
-  if (N < 1 || N > kMaxSegments)
-    throw OptionError(fmt::format("{{samples}} {}: give 1 to {} segments per face edge", N, kMaxSegments));
+  if (const std::string why = segments_out_of_range(N); !why.empty())
+    throw OptionError(fmt::format("{{samples}} {}: {}", N, why));
 }
 
 // N up to 1024 per edge on a large mesh asks for billions of points.

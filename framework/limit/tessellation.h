@@ -48,7 +48,11 @@ std::array<double, 3> limit_normal(const LimitSurface& surface, const SurfaceSam
 // The most segments per face edge a front-end may ask for (`subdiv evaluate --samples`,
 // Python's tessellate, ParaView's Samples): 1024 already makes a million points per quad.
 inline constexpr int kMaxSegments = 1024;
-// Refuses (OptionError naming {samples}) N outside 1 to kMaxSegments.
+// Why N segments per face edge are refused (the range and the reason for the cap), or empty
+// for 1 to kMaxSegments: for the front-ends' own messages.
+std::string segments_out_of_range(int N);
+// Refuses (OptionError naming {samples}: "{samples} N: " + segments_out_of_range(N)) N
+// outside 1 to kMaxSegments.
 void check_segments(int N);
 
 // Refuses (OptionError naming {samples}), before any work, a grid of N segments per edge over

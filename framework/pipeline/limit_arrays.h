@@ -15,8 +15,12 @@ namespace subdiv {
 struct LimitArrays {
   std::vector<DataArray> point_data;  // "normal" (the role Normals), "limit_exact", "normal_exact"
   LimitResult result;                 // counts and reasons of what was approximated
+  std::vector<std::string> warnings;  // the normals left out (below)
 };
 
+// A scheme that is not C1 where the mesh is regular (SchemeLimits::regular_not_c1) has no
+// limit normals: with move_to_limit the positions are moved and the normal arrays left out
+// with a warning; without (normals alone were asked for) an OptionError naming {normals}.
 // `finest` is level h.levels.back()'s data; with move_to_limit its positions and double point
 // arrays are replaced by their limits. With `weights` (the name of finest's rational weights,
 // rational_weights.h) the limits are those of the rational surface: the masks applied to

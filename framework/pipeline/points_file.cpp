@@ -3,6 +3,8 @@
 #include <cctype>
 #include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <limits>
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
@@ -39,6 +41,17 @@ bool same_letters(std::string_view a, std::string_view b) {
   return true;
 }
 
+// A face number written as a decimal with a whole value, "3.0" or "3e0": pandas writes a
+// column of integers as floats once it holds a missing value, R's write.csv a double column.
+// Empty when it is one (then `out` holds it), else why not.
+std::string whole_decimal(std::string_view t, Index& out) {
+  double x = 0;
+  if (parse_decimal(t, x) != DecimalParse::ok || !std::isfinite(x) || x != std::floor(x)) return "is not a whole number";
+  if (std::fabs(x) > double(std::numeric_limits<Index>::max())) return "is out of range";
+  out = Index(x);
+  return {};
+}
+
 // Empty when `text` is a whole number, else why not, for the message ("is not a whole number").
 std::string parse_field(std::string_view text, Index& out) {
   std::string_view t = unquoted(text);
@@ -46,7 +59,8 @@ std::string parse_field(std::string_view text, Index& out) {
   if (t.size() > 1 && t[0] == '+' && t[1] != '-' && t[1] != '+') t.remove_prefix(1);
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
   if (ec == std::errc::result_out_of_range) return "is out of range";
-  if (ec != std::errc() || end != t.data() + t.size() || t.empty()) return "is not a whole number";
+  if (t.empty()) return "is not a whole number";
+  if (ec != std::errc() || end != t.data() + t.size()) return whole_decimal(t, out);
   return {};
 }
 

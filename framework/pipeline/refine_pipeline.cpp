@@ -478,6 +478,8 @@ RefineResult run_refinement(PreparedRefinement&& p, const RefineRequest& r) {
     LimitArrays limits = limit_arrays(p.sequence, out.hierarchy, p.options, out.levels.back(), r.limit_positions,
                                       p.rational ? output_weights_name(p) : std::string());
     out.finest_point_data = std::move(limits.point_data);
+    out.warnings.insert(out.warnings.end(), limits.warnings.begin(), limits.warnings.end());
+    out.limit_warnings = std::move(limits.warnings);
     limits.result.positions.clear(), limits.result.normals.clear();
     out.limit_note = limit_note(r, limits.result);
     out.limit = std::move(limits.result);

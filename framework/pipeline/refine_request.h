@@ -113,7 +113,9 @@ struct RefineResult {
   // (its positions and normals are in the finest level and finest_point_data).
   std::optional<LimitResult> limit;
   std::string limit_note;  // what the limits approximated and why; empty when all are exact
-  std::vector<std::string> warnings;          // the mesh's, clean-up's, the topology's
+  // Limit normals left out (a scheme that is not C1, limit_arrays.h) and why; also in `warnings`.
+  std::vector<std::string> limit_warnings;
+  std::vector<std::string> warnings;          // the mesh's, clean-up's, the topology's, the limits'
   // What was applied (feature files and angles), arrays not carried; options named with
   // placeholders (option_spelling.h).
   std::vector<std::string> notes;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "bindings.h"
+#include "framework/limit/corner_limit.h"
 #include "framework/util/quoted_text.h"
 
 namespace subdivkit {
@@ -44,11 +45,21 @@ py::dict limit_positions(py::handle mesh, py::handle scheme, py::handle params, 
                                     "of the scheme that repeats)", subdiv::quoted(c.label)));
   if (m.face_count() == 0) throw subdiv::Error(fmt::format("{}: the mesh has no faces", name));
   subdiv::LimitResult r;
+  std::string not_c1;
   {
     py::gil_scoped_release unlocked;
     const subdiv::Level level = subdiv::level_from_mesh(m, name);
-    r = subdiv::limit_positions(*c.sequence.schemes.front(), level, m.positions,
-                                limit_options(boundary, crease_method, start_level));
+    const subdiv::Scheme& s = *c.sequence.schemes.front();
+    const subdiv::LimitOptions options = limit_options(boundary, crease_method, start_level);
+    r = subdiv::limit_positions(s, level, m.positions, options);
+    // A scheme that is not C1 where the mesh is regular has no normals (refine --limit leaves
+    // them out): zero, "where none exists", with the reason.
+    if (const std::string off = subdiv::SchemeLimits(s, options).regular_not_c1(); !off.empty()) {
+      not_c1 = subdiv::not_c1(s, "at a regular vertex " + off);
+      std::fill(r.normals.begin(), r.normals.end(), 0.0);
+      std::fill(r.normal_exact.begin(), r.normal_exact.end(), std::uint8_t(0));
+      r.approximate_reasons.push_back(not_c1);
+    }
   }
   const auto n = py::ssize_t(r.positions.size() / 3);
   out["points"] = adopt(std::move(r.positions), {n, 3});

@@ -41,6 +41,8 @@ def _points(faces, uv):
     p = np.ascontiguousarray(u, dtype=np.float64)
     if p.ndim == 1 and p.shape == (2,) and f.shape == (1,):
         p = p.reshape(1, 2)
+    if f.shape == (0,) and p.shape == (0,):  # evaluate([], []): no points, as an empty (0, 2) uv
+        p = p.reshape(0, 2)
     if f.ndim != 1 or p.ndim != 2 or p.shape[1] != 2 or p.shape[0] != f.shape[0]:
         raise Error(f"faces {tuple(f.shape)} and uv {tuple(p.shape)}: give n faces and an (n, 2) array of (u, v)")
     return f, p
@@ -177,7 +179,11 @@ class LimitSurface:
         Raises subdivkit.Error naming the first bad point ("point i (face f, u, v): why") —
         a face that does not exist, a hole, (u, v) outside the face's domain — or the first
         non-finite value of ``points`` ("vertex i has a non-finite value"), before anything is
-        evaluated.
+        evaluated. A scheme that converges but is not C1 where the mesh is regular (its
+        subdominant eigenvalues there are not the parameters' scale per step: 1/2 for binary
+        splits and plugins' splits scaling by 2, 1/3 per double √3 step) has no derivatives:
+        ``derivatives`` >= 1 raises subdivkit.Error saying so (and tessellate(), whose
+        normals need them, too); ``derivatives=0`` evaluates the positions.
         """
         order = _check_order(derivatives)
         f, p = _points(faces, uv)
@@ -191,6 +197,8 @@ class LimitSurface:
                 values = values.reshape(-1, 1)
             if values.ndim != 2 or values.shape[0] != self.n_points:
                 raise Error(f"points {tuple(values.shape)}: give one row per control point ({self.n_points} rows)")
+            if values.shape[1] == 0:  # no columns: the native side would read the mesh's points instead
+                raise Error(f"points {tuple(values.shape)}: give at least one column of values per control point")
             channels = values.shape[1]
         r = self._prepared.evaluate(f, p, order, values, channels, check_threads(threads))
         return LimitEvaluation(points=r["points"], du=r.get("du"), dv=r.get("dv"), duu=r.get("duu"),

@@ -333,7 +333,9 @@ class LimitPoints:
     """Limit positions of a mesh's vertices (limit_positions' result).
 
     ``points`` (n, 3): each vertex's point on the limit surface (or curve); ``normals`` (n, 3):
-    unit limit normals (surfaces; zero where none exists, None for curves); ``exact`` (n,)
+    unit limit normals (surfaces; zero where none exists, None for curves; all zero for a scheme
+    that is not C1 where the mesh is regular, whose limit has no normals, the reason in
+    ``approximate_reasons``); ``exact`` (n,)
     bool: False where the position had to be approximated (reasons in ``approximate_reasons``).
     """
     points: np.ndarray

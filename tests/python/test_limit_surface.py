@@ -442,3 +442,43 @@ def test_a_limit_surface_refuses_pickling_and_copies_by_saying_what_to_do_and_ke
     assert np.array_equal(S.evaluate([0], [[0.3, 0.3]]).points, before)
     assert np.array_equal(S.evaluate([0], [[0.3, 0.3]], points=mesh.points).points, 2 * before)
     assert pickle.loads(pickle.dumps(mesh)).n_faces == mesh.n_faces
+
+
+def test_points_without_columns_are_refused_not_read_as_the_mesh_points():
+    # An (n_points, 0) array has no values to evaluate: the result had the mesh's positions,
+    # three columns the caller did not give.
+    S = sk.LimitSurface(cube(), "catmull-clark")
+    with pytest.raises(sk.Error, match=r"points \(8, 0\): give at least one column"):
+        S.evaluate([0], [[0.5, 0.5]], points=np.zeros((8, 0)))
+    one = S.evaluate([0], [[0.5, 0.5]], points=np.arange(8.0))  # a column: its limit, one value
+    assert one.points.shape == (1, 1)
+
+
+def test_no_points_given_as_empty_lists_evaluate_to_empty_arrays():
+    # evaluate([], []) is an empty request, as evaluate([], np.empty((0, 2))) already was.
+    S = sk.LimitSurface(cube(), "catmull-clark")
+    r = S.evaluate([], [], derivatives=2)
+    assert r.points.shape == (0, 3) and r.du.shape == (0, 3) and r.duu.shape == (0, 3)
+    assert sk.evaluate(cube(), "catmull-clark").points.shape == (0, 3)  # the defaults faces=(), uv=()
+    assert S.stencils([], []).points.shape == (0, 8)
+
+
+def test_a_scheme_not_c1_raises_for_derivatives_and_evaluates_positions(tmp_path):
+    # Catmull-Clark keeping 0.9 of the vertex: converges, but its regular vertices'
+    # subdominant eigenvalues (0.569, 0.5) are not the parameters' 1/2.
+    path = tmp_path / "stiff.json"
+    path.write_text('{"name": "stiff", "split": "quad", "faces": "any", "curve": "cubic-bspline", "rules": {'
+                    '"face": [{"sum": "vertices", "w": "1/k"}],'
+                    '"edge": [{"sum": "ends", "w": "1/4"}, {"sum": "faces", "new": "face", "w": "1/4"}],'
+                    '"vertex": [{"at": "self", "w": "0.9"}, {"sum": "ring", "w": "0.05/n"},'
+                    '{"sum": "faces", "new": "face", "w": "0.05/n"}]}}')
+    S = sk.LimitSurface(cube(), str(path))
+    with pytest.raises(sk.Error, match="is not C1, so its limit has no derivatives"):
+        S.evaluate([0], [[0.3, 0.2]])
+    assert np.isfinite(S.evaluate([0], [[0.3, 0.2]], derivatives=0).points).all()
+    # limit_positions, as refine --limit: the positions, and no normals (zero) with the reason.
+    L = sk.limit_positions(cube(), str(path))
+    assert np.isfinite(L.points).all()
+    assert not L.normals.any() and not L.normal_exact.any()
+    assert any("is not C1" in why for why in L.approximate_reasons)
+    assert sk.limit_positions(cube(), "catmull-clark").normals.any()

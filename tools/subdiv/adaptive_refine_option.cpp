@@ -84,7 +84,7 @@ void run_adaptive_refine(RefineRequest request, const AdaptiveArgs& a, bool limi
   for (const auto& note : result.notes) print_safe("{}\n", spell_options(note, cli_option_spelling()));
   print_safe("adaptive refinement of {} to level {}: {} in {:.3f} s -> {}\n", result.scheme_label, a.levels,
              summary,
-             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), output);
+             seconds_since(t0), output);
 }
 
 }  // namespace subdiv::cli

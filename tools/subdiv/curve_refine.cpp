@@ -25,10 +25,6 @@ void check_curve_output(const std::filesystem::path& out) {
                           subdiv::quoted(out.string())));
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 // .obj: the finest level's polylines; .vtp: the finest level with SubdivKit's arrays; .pvd:
 // every level.
 void write_curve_levels(const std::filesystem::path& output, std::vector<RefinedCurveLevel>& levels) {

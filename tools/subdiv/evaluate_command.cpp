@@ -224,7 +224,14 @@ void run_approximation(const EvaluateArgs& a, Progress& progress) {
   }
 }
 
+// "cube.obj: limit of catmull-clark at 3 point(s), with first derivatives in 0.020 s -> out.csv",
+// as `subdiv refine` says what it wrote.
+std::string derivatives_said(int derivatives) {
+  return derivatives == 0 ? "" : derivatives == 1 ? ", with first derivatives" : ", with first and second derivatives";
+}
+
 void run_mode(const EvaluateArgs& a) {
+  const auto t0 = std::chrono::steady_clock::now();
   const int modes = int(!a.at.empty()) + int(a.samples > 0) + int(a.adaptive >= 0) + int(a.level_distance >= 0);
   if (modes != 1)
     throw Error("give one of --at POINTS.csv (points at given parameters), --samples N (a mesh of the surface), "
@@ -284,6 +291,9 @@ void run_mode(const EvaluateArgs& a) {
   if (a.samples > 0) {
     const MeshData sampled = sampled_limit_mesh(prepared, a.samples, say, fraction);
     write_with_bar(a.output, sampled, progress);
+    print_safe("{}: limit of {}, {} segment(s) per face edge -> {} vertices, {} faces in {:.3f} s -> {}\n", a.mesh,
+               prepared.scheme_label, a.samples, sampled.positions.size() / 3, sampled.face_count(), seconds_since(t0),
+               a.output);
     return;
   }
   const LimitSurface& surface = *prepared.surface;
@@ -305,6 +315,8 @@ void run_mode(const EvaluateArgs& a) {
   progress.say(fmt::format("writing {}", a.output));
   write_csv(a.output, queries, points, a.derivatives, fvar_names, fvar, progress);
   progress.done();
+  print_safe("{}: limit of {} at {} point(s){} in {:.3f} s -> {}\n", a.mesh, prepared.scheme_label, faces.size(),
+             derivatives_said(a.derivatives), seconds_since(t0), a.output);
 }
 
 // What the run does and the fix when it runs out of memory (util/memory_limit.h), naming
@@ -321,6 +333,20 @@ std::pair<std::string, std::string> memory_advice(const EvaluateArgs& a) {
             "ask for a lower --level-distance"};
   return {fmt::format("evaluating the points of {} on {}", subdiv::quoted(a.at), subdiv::quoted(a.mesh)),
           "evaluate fewer points at a time (split the --at file), or ask for fewer --derivatives"};
+}
+
+// --samples outside 1 to kMaxSegments in the library's words (tessellation.h), where CLI11's
+// Range would say only "Value 2000 not in range 1 to 1024". A value that is no whole number is
+// left to CLI11's conversion, which names it.
+CLI::Validator samples_range() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        int n = 0;
+        if (!CLI::detail::lexical_cast(text, n)) return {};
+        const std::string why = segments_out_of_range(n);
+        return why.empty() ? why : fmt::format("{} is out of range; {}", text, why);
+      },
+      fmt::format("INT in [1 - {}]", kMaxSegments));
 }
 
 void run(const EvaluateArgs& a) {
@@ -357,7 +383,7 @@ void add_evaluate_command(CLI::App& app) {
                   "triangle (faces with other sizes: N/2 x N/2 per sub-face, N even), with normals; face-varying "
                   "data (UVs) sampled at every corner, split at its seams; rational weights honoured; Normals "
                   "(0,0,0), with a warning, where the surface has none")
-      ->check(CLI::Range(1, kMaxSegments));
+      ->check(samples_range());
   cmd->add_option("--adaptive", args->adaptive,
                   "Instead of --at: the mesh refined to level L only where it is irregular (extraordinary vertices, "
                   "creases, sharp vertices, faces of another shape), watertight (coarse faces take the finer "

@@ -9,6 +9,11 @@
 
 namespace subdiv::cli {
 
+// Wall seconds since t0, for the commands' summary lines ("... in 0.099 s -> OUT").
+inline double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 class Progress {
 public:
   explicit Progress(bool timings = false, bool quiet = false);

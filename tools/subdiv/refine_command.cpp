@@ -84,10 +84,6 @@ RefineRequest refine_request(const RefineArgs& a, const OutputChoice& output, Pr
   return r;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 void print_warnings(const std::vector<std::string>& warnings) {
   for (const auto& w : warnings) print_safe(stderr, "subdiv: warning: {}\n", w);
 }
@@ -200,6 +196,7 @@ void run(const RefineArgs& a) {
   if (a.in_pieces()) return run_in_pieces(a, request, prepared, output, progress, t0);
   RefineResult result = run_refinement(std::move(prepared), request);
   print_warnings(result.hierarchy.warnings);
+  print_warnings(result.limit_warnings);
   if (!result.limit_note.empty() && !a.quiet)
     print_safe(stderr, "subdiv: note: {}\n", spell_options(result.limit_note, cli_option_spelling()));
   progress.say(fmt::format("writing {}", a.output));
@@ -269,11 +266,11 @@ void add_refine_command(CLI::App& app) {
   cmd->add_flag("--limit", args->limit,
                 "Move the finest level's vertices, and the input's interpolated point arrays, to their limit values "
                 "and write limit normals as point data 'normal' (with --levels 0: the limits of the input's own "
-                "vertices)");
+                "vertices; a scheme that is not C1 has no normals: they are left out with a warning)");
   cmd->add_flag("--normals", args->normals,
                 "Write the exact limit normals of the finest level's vertices as point data 'normal' (the vertices "
                 "stay where refinement put them). Normals in the input are not refined: a mix of unit normals is "
-                "no normal, so they are left out with a note");
+                "no normal, so they are left out with a note. Refused for a scheme that is not C1 (no normals exist)");
   add_fvar_boundary_option(cmd, args->fvar_boundary, "Face-varying data (OBJ vt: UVs with seams)");
   cmd->add_option("--weights", args->weights,
                   "Rational subdivision: the point array holding each control point's weight w > 0; the scheme "

@@ -241,6 +241,7 @@ struct SchemeLimits::Impl {
   static void take_masks(const SurfaceAnalysis& a, LimitMask& m) {
     if (!a.error.empty() || !a.has_limit_mask) {
       m.error = a.verdict;
+      if (a.outcome == Verdict::Fails) m.failure = a.failure;
       return;
     }
     m.position = a.limit_mask;
@@ -600,6 +601,30 @@ SchemeLimits::SchemeLimits(const Scheme& scheme, const LimitOptions& options)
 SchemeLimits::~SchemeLimits() = default;
 
 std::shared_ptr<const LimitMask> SchemeLimits::mask(const LocalConfig& config) { return impl_->get(config); }
+
+std::string SchemeLimits::regular_not_c1() {
+  LocalConfig c;
+  c.centre = impl_->centre;
+  const bool quads = impl_->cells == PatchCells::Quads;
+  c.valence = c.centre == CentreKind::Face ? (quads ? 4 : 3) : (quads ? 4 : 6);
+  c.first_step = impl_->options.first_step;
+  const std::shared_ptr<const LimitMask> m = mask(c);
+  if (!m->ok) return {};
+  return eigenvalues_off_scale(m->direction_eigenvalues, analysis_parameter_scale(impl_->scheme));
+}
+
+std::string eigenvalues_off_scale(const std::vector<double>& eigenvalues, double scale) {
+  if (scale <= 0) return {};
+  for (double z : eigenvalues)
+    if (std::fabs(z - scale) > 1e-6 * scale) {
+      std::string values;
+      for (double x : eigenvalues) values += (values.empty() ? "" : ", ") + fmt::format("{:.6g}", x);
+      return fmt::format("its subdominant eigenvalues are {}, where a surface differentiable in the face's parameters "
+                         "needs {:.6g} (the parameters' scale per step)",
+                         values, scale);
+    }
+  return {};
+}
 
 LimitStencils SchemeLimits::stencils(const Level& level) { return stencils(level, impl_->options.first_step); }
 

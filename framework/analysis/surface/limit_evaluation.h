@@ -42,7 +42,8 @@ struct LimitOptions {
 // (local_patch.h), and the signature of the neighbourhood it is valid for.
 struct LimitMask {
   bool ok = false;
-  std::string error;
+  std::string error;    // no mask: the analysis's verdict in words (SurfaceAnalysis::verdict)
+  std::string failure;  // no mask because the scheme fails a condition there (Verdict::Fails): which
   CentreKind centre = CentreKind::Vertex;
   int radius = 0;                   // labelling radius of the signature
   std::vector<double> signature;
@@ -99,6 +100,11 @@ public:
   // is that of its V-face, written over the vertex's own neighbourhood.
   std::shared_ptr<const LimitMask> mask(const LocalConfig& config);
 
+  // Why the limit has no derivatives or normals where the mesh is regular, or empty: the
+  // regular interior configuration's subdominant eigenvalues against the parameters' scale
+  // (eigenvalues_off_scale; valence 4 or 6, or a face of 4 or 3 for a dual scheme).
+  std::string regular_not_c1();
+
 private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
@@ -106,6 +112,16 @@ private:
 
 LimitResult limit_positions(const Scheme& scheme, const Level& level, std::span<const double> positions,
                             const LimitOptions& options = {});
+
+// Near a regular vertex the parameters contract by `scale` per analysed step
+// (analysis_parameter_scale) and the limit by the subdominant eigenvalues (Reif 1995, "A
+// unified approach to subdivision algorithms near extraordinary vertices"): the limit is
+// differentiable there only when they equal it. Otherwise a difference quotient grows or
+// decays like (eigenvalue / scale)^k, and tangent masks give a finite number that is no
+// derivative. Says "its subdominant eigenvalues are 0.569161, 0.5, where a surface
+// differentiable in the face's parameters needs 0.5 (...)", or empty when each equals `scale`
+// (or there are none, or scale <= 0).
+std::string eigenvalues_off_scale(const std::vector<double>& eigenvalues, double scale);
 
 // True when a weight formula of the scheme (or its curve scheme) uses the level l.
 bool scheme_is_level_dependent(const Scheme& scheme);

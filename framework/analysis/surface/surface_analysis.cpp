@@ -506,39 +506,42 @@ void finish_verdict(SurfaceAnalysis& r) {
   const bool interior = !r.config.boundary && r.config.sharp.empty() && !r.config.corner;
   auto ev = [&](size_t i) { return i < r.eigenvalues.size() ? complex_text(r.eigenvalues[i]) : std::string("-"); };
   r.c1 = false;
-  if (!r.error.empty()) r.verdict = "fails: " + r.error;
-  else if (!r.affine) r.verdict = fmt::format("fails: weights not affine (a row of S sums to 1 {:+.3g})", r.max_row_error);
-  else if (!r.lambda0_one) r.verdict = fmt::format("fails: lambda_0 = 1 is not the simple dominant eigenvalue (lambda_0 = {}, lambda_1 = {})", ev(0), ev(1));
-  else if (!r.subdominant_real) r.verdict = fmt::format("fails: lambda_1, lambda_2 are not real and positive ({}, {})", ev(1), ev(2));
-  else if (interior && !r.subdominant_equal) r.verdict = fmt::format("fails: lambda_1 != lambda_2 ({} vs {})", ev(1), ev(2));
+  r.failure.clear();
+  if (!r.error.empty()) r.failure = r.error;
+  else if (!r.affine) r.failure = fmt::format("weights not affine (a row of S sums to 1 {:+.3g})", r.max_row_error);
+  else if (!r.lambda0_one) r.failure = fmt::format("lambda_0 = 1 is not the simple dominant eigenvalue (lambda_0 = {}, lambda_1 = {})", ev(0), ev(1));
+  else if (!r.subdominant_real) r.failure = fmt::format("lambda_1, lambda_2 are not real and positive ({}, {})", ev(1), ev(2));
+  else if (interior && !r.subdominant_equal) r.failure = fmt::format("lambda_1 != lambda_2 ({} vs {})", ev(1), ev(2));
   else if (!r.subdominant_dominates && r.subdominant_equal && r.subdominant_multiplicity > 2)
-    r.verdict = fmt::format("fails: lambda_1 = lambda_2 = |lambda_3| = {}: the subdominant eigenvalue has multiplicity {} (more than 2)",
+    r.failure = fmt::format("lambda_1 = lambda_2 = |lambda_3| = {}: the subdominant eigenvalue has multiplicity {} (more than 2)",
                             number(r.lambda1), r.subdominant_multiplicity);
   else if (!r.subdominant_dominates && r.subdominant_equal)
     // Another eigenvalue of the same modulus (Catmull-Clark at interior valence 2: -1/4
     // beside 1/4, 1/4): its eigenfunction shrinks as fast as the tangent pair's, so the
     // normal does not converge at the centre (Karciauskas & Peters 2009).
-    r.verdict = fmt::format("fails: |lambda_3| = lambda_1 = lambda_2 = {} (lambda_3 = {}): a third eigenvalue of the "
+    r.failure = fmt::format("|lambda_3| = lambda_1 = lambda_2 = {} (lambda_3 = {}): a third eigenvalue of the "
                             "subdominant modulus, so the limit has no tangent plane at the centre",
                             number(r.lambda1), ev(3));
-  else if (!r.subdominant_dominates) r.verdict = fmt::format("fails: |lambda_3| = {} is not below lambda_2 = {}", number(r.lambda3), number(r.lambda2));
-  else if (!r.subdominant_semisimple) r.verdict = "fails: lambda_1 = lambda_2 has one eigenvector only (Jordan block)";
+  else if (!r.subdominant_dominates) r.failure = fmt::format("|lambda_3| = {} is not below lambda_2 = {}", number(r.lambda3), number(r.lambda2));
+  else if (!r.subdominant_semisimple) r.failure = "lambda_1 = lambda_2 has one eigenvector only (Jordan block)";
   else if (r.boundary_collapses)
-    r.verdict = "fails: the boundary's tangent is not in the subdominant pair (interior eigenvalues exceed the boundary "
+    r.failure = "the boundary's tangent is not in the subdominant pair (interior eigenvalues exceed the boundary "
                 "curve's 1/2; the characteristic map collapses the boundary)";
   else if (!r.characteristic_map.computed) {
-    r.c1 = false;
+    r.outcome = Verdict::Unchecked;
     r.verdict = fmt::format("eigenvalue conditions hold at {}; characteristic map not checked{}", where,
                             r.characteristic_map.note.empty() ? "" : " (" + r.characteristic_map.note + ")");
   } else if (!r.characteristic_map.regular)
-    r.verdict = fmt::format("fails: characteristic map not regular ({} of {} faces folded)", r.characteristic_map.folded,
+    r.failure = fmt::format("characteristic map not regular ({} of {} faces folded)", r.characteristic_map.folded,
                             r.characteristic_map.faces);
   else if (!r.characteristic_map.injective)
-    r.verdict = fmt::format("fails: characteristic map not injective (winding number {})", r.characteristic_map.winding);
+    r.failure = fmt::format("characteristic map not injective (winding number {})", r.characteristic_map.winding);
   else {
     r.c1 = true;
+    r.outcome = Verdict::C1;
     r.verdict = fmt::format("C1 at {}", where);
   }
+  if (!r.failure.empty()) r.outcome = Verdict::Fails, r.verdict = "fails: " + r.failure;
 }
 
 // Direction masks: the subdominant eigenspace (lambda_1's cluster, and lambda_2's when
@@ -959,6 +962,11 @@ PatchCells analysis_cells(const Scheme& scheme) {
 
 int analysis_steps(const Scheme& scheme) { return splitter_info(scheme.split()).period; }
 
+double analysis_parameter_scale(const Scheme& scheme) {
+  const SplitterInfo& info = splitter_info(scheme.split());
+  return std::pow(info.scale, -info.period);
+}
+
 SurfaceAnalysis analyse_patch(const Scheme& scheme, const Patch& patch, const LocalConfig& config,
                               const SurfaceAnalysisOptions& options) {
   SurfaceAnalysis out;
@@ -1091,7 +1099,7 @@ void judge_by_sectors(const Scheme& scheme, const SurfaceAnalysisOptions& option
     side.corner = sectors.size() > 2;  // a corner's point stays: a boundary vertex tagged as a corner
     side.first_step = out.config.first_step;
     const SurfaceAnalysis b = analyse_configuration(scheme, side, options);
-    const std::string why = b.verdict.rfind("fails: ", 0) == 0 ? b.verdict.substr(7) : b.verdict;
+    const std::string why = b.outcome == Verdict::Fails ? b.failure : b.verdict;
     if (!b.c1 && failed.empty())
       failed = fmt::format("the {} of {} faces ({}): {}", sectors.size() == 2 ? "side" : "sector", k,
                            b.config.describe(), why);
@@ -1103,6 +1111,8 @@ void judge_by_sectors(const Scheme& scheme, const SurfaceAnalysisOptions& option
           ? std::string()
           : fmt::format(" (its points refine among themselves: {})",
                         leading_text(out.crease_eigenvalues, crease ? 4 : 5));
+  out.outcome = out.c1 ? Verdict::C1 : Verdict::Fails;
+  out.failure = failed;
   if (!out.c1) out.verdict = "fails: " + failed;
   else if (crease)
     out.verdict = fmt::format("C1 on both sides of the crease (sides of {} faces, each as at a boundary); "

@@ -64,6 +64,13 @@ struct CharacteristicMap {
   std::vector<double> ring;       // per point: face-ring distance from the centre
 };
 
+// The analysis's judgement, for code to act on; `SurfaceAnalysis::verdict` says it in words.
+enum class Verdict {
+  C1,          // every condition holds: C1 at the centre
+  Unchecked,   // the eigenvalue conditions hold, the characteristic map was not checked
+  Fails,       // the scheme fails a condition there (or the analysis could not run): `failure` says which
+};
+
 struct SurfaceAnalysis {
   std::string scheme, path;
   LocalConfig config;
@@ -97,7 +104,9 @@ struct SurfaceAnalysis {
 
   CharacteristicMap characteristic_map;
   bool c1 = false;
-  std::string verdict;                 // "C1 at valence 5", "fails: lambda_1 != lambda_2 (...)"
+  Verdict outcome = Verdict::Fails;
+  std::string failure;                 // Fails: which condition, "lambda_1 != lambda_2 (...)"; else empty
+  std::string verdict;                 // "C1 at valence 5", "fails: " + failure
 
   // Masks over labels 0 .. mask size - 1 (the labelled patch vertices, see label_vertices).
   bool has_limit_mask = false, has_tangent_masks = false;
@@ -130,6 +139,10 @@ CentreKind analysis_centre(const Scheme& scheme);
 PatchCells analysis_cells(const Scheme& scheme);
 // The split's period: 2 for splits that rotate the mesh (sqrt3, mid-edge), else 1.
 int analysis_steps(const Scheme& scheme);
+// How much the parameters around a fixed point contract per analysed step: scale^-period
+// (1/2 for binary splits, 1/3 for the double sqrt3 step). The subdominant eigenvalues of a
+// regular vertex must equal it for the limit to be differentiable in the face's parameters.
+double analysis_parameter_scale(const Scheme& scheme);
 
 // Analyses the scheme on a given patch (centre and start set in the patch).
 SurfaceAnalysis analyse_patch(const Scheme& scheme, const Patch& patch, const LocalConfig& config,

@@ -44,6 +44,34 @@ TEST_CASE("a vertex rule that keeps too much of the old vertex: lambda_1 != lamb
   }
 }
 
+TEST_CASE("the verdict as a field: Fails with the failed condition, C1, Unchecked without the characteristic map") {
+  // The limit layer acts on `outcome` and words its refusals with `failure`; `verdict` is the
+  // same judgement in words, "fails: " + failure.
+  const auto runaway = load_scheme(write_temp("runaway.json", catmull_clark_with("3", "-2/n - 1/n^2")).string());
+  const SurfaceAnalysis bad = analyse_valence(*runaway, 4);
+  CHECK(bad.outcome == Verdict::Fails);
+  CHECK(bad.failure.rfind("lambda_0 = 1 is not the simple dominant eigenvalue", 0) == 0);
+  CHECK(bad.verdict == "fails: " + bad.failure);
+  const auto heavy = load_scheme(write_temp("heavy.json", catmull_clark_with("(n-2)/n + 0.5", "1/n^2 - 0.5/n")).string());
+  const SurfaceAnalysis unequal = analyse_valence(*heavy, 5);
+  CHECK(unequal.outcome == Verdict::Fails);
+  CHECK(unequal.failure.rfind("lambda_1 != lambda_2", 0) == 0);
+  const auto cc = load_scheme("catmull-clark");
+  const SurfaceAnalysis good = analyse_valence(*cc, 5);
+  CHECK(good.outcome == Verdict::C1);
+  CHECK(good.c1);
+  CHECK(good.failure.empty());
+  SurfaceAnalysisOptions no_map;
+  no_map.characteristic_map = false;
+  LocalConfig five;
+  five.valence = 5;
+  const SurfaceAnalysis unchecked = analyse_configuration(*cc, five, no_map);
+  CHECK(unchecked.outcome == Verdict::Unchecked);
+  CHECK_FALSE(unchecked.c1);
+  CHECK(unchecked.failure.empty());
+  CHECK(unchecked.verdict.rfind("eigenvalue conditions hold", 0) == 0);
+}
+
 TEST_CASE("weights that do not sum to one are reported, not refined") {
   const auto file = write_temp("not-affine.json", catmull_clark_with("(n-2)/n + 0.1", "1/n^2"));
   const auto s = load_scheme(file.string());

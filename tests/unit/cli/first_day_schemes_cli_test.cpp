@@ -116,3 +116,45 @@ TEST_CASE("evaluate: a scheme that does not converge is refused with the reason 
   CHECK(contains(r.output, "`subdiv analyze " + scheme.string() + "`"));
   CHECK_FALSE(fs::exists(out));
 }
+
+TEST_CASE("refine --normals with a scheme that is not C1 is refused; --limit moves the points and leaves the normals out") {
+  const auto dir = fresh_dir("first-day-not-c1-refine");
+  const fs::path scheme = write_quad_scheme(dir, "stiff", "0.9", "0.05/n", "0.05/n");
+  const fs::path out = dir / "out.vtp";
+  const auto normals = run_subdiv("refine " + kCube + " -s " + scheme.string() + " -l 1 --normals -o " + out.string());
+  CHECK(normals.exit_code == 1);
+  CHECK_MESSAGE(contains(normals.output, "scheme 'stiff' is not C1, so its limit has no derivatives or normals: at a "
+                                         "regular vertex its subdominant eigenvalues are 0.569"),
+                normals.output);
+  CHECK(contains(normals.output, "`subdiv analyze " + scheme.string() + "`"));
+  CHECK(contains(normals.output, "leave out --normals (--limit alone moves the points to their limits)"));
+  CHECK_FALSE(fs::exists(out));
+  const auto limit = run_subdiv("refine " + kCube + " -s " + scheme.string() + " -l 1 --limit -o " + out.string());
+  CHECK_MESSAGE(limit.exit_code == 0, limit.output);
+  CHECK(contains(limit.output, "subdiv: warning: scheme 'stiff' is not C1"));
+  CHECK(contains(limit.output, "the point data 'normal' and 'normal_exact' are left out"));
+  std::ifstream in(out);
+  const std::string vtp{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  CHECK_FALSE(contains(vtp, "Name=\"normal\""));
+  CHECK(contains(vtp, "Name=\"limit_exact\""));
+}
+
+TEST_CASE("refine --limit and --normals with the shipped surface schemes: normals written, no warning") {
+  const auto dir = fresh_dir("first-day-shipped-normals");
+  const std::string tri = source_path("examples/meshes/octahedron.obj");
+  for (const auto& scheme_mesh : {std::pair{"catmull-clark", kCube}, std::pair{"loop", tri}, std::pair{"butterfly", tri},
+                                  std::pair{"modified-butterfly", tri}, std::pair{"doo-sabin", kCube},
+                                  std::pair{"sqrt3", tri}, std::pair{"interpolating-sqrt3", tri},
+                                  std::pair{"mid-edge", kCube}, std::pair{"bilinear", kCube},
+                                  std::pair{"quad-bspline", kCube}, std::pair{"loop-composite", tri}}) {
+    CAPTURE(scheme_mesh.first);
+    const fs::path out = dir / (std::string(scheme_mesh.first) + ".vtp");
+    const auto r = run_subdiv("refine " + scheme_mesh.second + " -s " + scheme_mesh.first + " -l 2 --limit -o " +
+                              out.string());
+    CHECK_MESSAGE(r.exit_code == 0, r.output);
+    CHECK_FALSE(contains(r.output, "not C1"));
+    std::ifstream in(out);
+    const std::string vtp{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    CHECK(contains(vtp, "Name=\"normal\""));
+  }
+}

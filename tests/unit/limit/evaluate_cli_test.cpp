@@ -307,3 +307,61 @@ TEST_CASE("subdiv evaluate --samples writes the face-varying UVs with their seam
   CHECK(m.face_varying[0].indices.size() == m.face_vertices.size());
   CHECK(m.face_varying[0].value_count() > m.vertex_count());  // the seam's points carry two UVs
 }
+
+TEST_CASE("subdiv evaluate --at and --samples end with a line saying what was written") {
+  const fs::path dir = test::fresh_dir("evaluate-cli-summary");
+  const std::string mesh = test::source_path("examples/meshes/cube.obj");
+  write(dir / "points.csv", "face,u,v\n0,0.3,0.2\n4,0.5,0.125\n");
+  const auto at = test::run_subdiv("evaluate " + mesh + " --at " + (dir / "points.csv").string() +
+                                   " --derivatives 2 -o " + (dir / "out.csv").string());
+  REQUIRE_MESSAGE(at.exit_code == 0, at.output);
+  CHECK_MESSAGE(at.output.find(mesh + ": limit of catmull-clark at 2 point(s), with first and second derivatives in ") !=
+                    std::string::npos,
+                at.output);
+  CHECK(at.output.find(" s -> " + (dir / "out.csv").string() + "\n") != std::string::npos);
+  // A closed mesh of 6 quads sampled 2 x 2 per face: 24 faces, and by Euler (V - E + F = 2,
+  // E = 2F) 26 vertices.
+  const auto samples = test::run_subdiv("evaluate " + mesh + " --samples 2 -o " + (dir / "limit.obj").string());
+  REQUIRE_MESSAGE(samples.exit_code == 0, samples.output);
+  CHECK_MESSAGE(samples.output.find(mesh + ": limit of catmull-clark, 2 segment(s) per face edge -> 26 vertices, 24 "
+                                           "faces in ") != std::string::npos,
+                samples.output);
+}
+
+TEST_CASE("subdiv evaluate --samples out of range names the option, the range and why") {
+  const fs::path dir = test::fresh_dir("evaluate-cli-samples-range");
+  const std::string mesh = test::source_path("examples/meshes/cube.obj");
+  for (const char* n : {"2000", "0", "-3"}) {
+    CAPTURE(n);
+    const auto r = test::run_subdiv("evaluate " + mesh + " --samples " + n + " -o " + (dir / "x.vtp").string());
+    CHECK(r.exit_code == 2);  // a usage error, as CLI11's range check was
+    CHECK_MESSAGE(r.output.find(std::string("--samples: ") + n + " is out of range; give 1 to 1024 segments per face "
+                                                                 "edge") != std::string::npos,
+                  r.output);
+    CHECK(!fs::exists(dir / "x.vtp"));
+  }
+  const auto big = test::run_subdiv("evaluate " + mesh + " --samples 2000 -o " + (dir / "x.vtp").string());
+  CHECK(big.output.find("a million points per quad face") != std::string::npos);
+  CHECK(big.output.find("subdiv refine MESH -l L --limit") != std::string::npos);
+}
+
+TEST_CASE("subdiv evaluate at a vertex of valence 1000 is refused at once, not after the steps to round-off") {
+  // A disc of 1000 triangles round one vertex: the analysis takes valences up to 512
+  // (kMaxPatchValence). A point at the vertex needs its mask, which no refinement changes.
+  const fs::path dir = test::fresh_dir("evaluate-cli-fan");
+  std::ofstream obj(dir / "fan.obj");
+  const int n = 1000;
+  obj << "v 0 0 0\n";
+  for (int i = 0; i < n; ++i) obj << "v " << std::cos(2 * M_PI * i / n) << " " << std::sin(2 * M_PI * i / n) << " 0\n";
+  for (int i = 0; i < n; ++i) obj << "f 1 " << i + 2 << " " << (i + 1) % n + 2 << "\n";
+  obj.close();
+  write(dir / "points.csv", "face,u,v\n0,0,0\n");
+  const auto r = test::run_subdiv("evaluate " + (dir / "fan.obj").string() + " --at " + (dir / "points.csv").string() +
+                                  " -o " + (dir / "out.csv").string());
+  CHECK(r.exit_code == 1);
+  // Refused before the first step: the point is the vertex from the start.
+  CHECK_MESSAGE(r.output.find("no limit mask for the vertex reached after 0 step(s): valence 1000 cannot be analysed: "
+                              "valences 2..512 are") != std::string::npos,
+                r.output);
+  CHECK(!fs::exists(dir / "out.csv"));
+}

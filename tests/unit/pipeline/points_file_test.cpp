@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fmt/format.h>
 #include <filesystem>
 #include <string>
 #include <sys/stat.h>
@@ -46,6 +47,21 @@ TEST_CASE("each refusal names the file, the line and the row") {
                          Bad{"face,u,v\n99999999999,0,0\n", "face '99999999999' is out of range"}}) {
     CAPTURE(bad.text);
     CHECK_THROWS_WITH_AS(parse_points(bad.text, "pts.csv", unit_square_check), doctest::Contains(bad.message), Error);
+  }
+}
+
+TEST_CASE("a face number written as a decimal with a whole value (pandas, R) is that face; others are refused") {
+  // pandas writes an integer column holding a missing value as floats ("3.0"), R's write.csv
+  // a double column; they name face 3. A fraction or a value beyond Index is still refused.
+  const SurfacePoints p = parse_points("face,u,v\n3.0,0.5,0.5\n\"1e0\",0,0\n+2.00,1,1\n-0.0,0,1\n", "pts.csv",
+                                       unit_square_check);
+  CHECK(p.faces == std::vector<Index>{3, 1, 2, 0});
+  for (const auto& bad : {std::pair{"3.5", "is not a whole number"}, std::pair{"1e30", "is out of range"},
+                           std::pair{"inf", "is not a whole number"}, std::pair{"nan", "is not a whole number"},
+                           std::pair{"3.0.0", "is not a whole number"}}) {
+    CAPTURE(bad.first);
+    CHECK_THROWS_WITH_AS(parse_points(std::string("face,u,v\n") + bad.first + ",0,0\n", "pts.csv", unit_square_check),
+                         doctest::Contains(fmt::format("face '{}' {}", bad.first, bad.second).c_str()), Error);
   }
 }
 

@@ -158,6 +158,46 @@ TEST_CASE("A plugin's split (sqrt2): linear precision on a regular grid, and the
                        doctest::Contains("not all quads or all triangles"), Error);
 }
 
+TEST_CASE("A plugin's split with a vertex rule that is not C1 at regular vertices: derivatives refused") {
+  // The sqrt2 plugin's scheme keeping 0.9 of the vertex (its own rule keeps 1/2): at a
+  // regular vertex the period's subdominant eigenvalues are 0.540, 0.5 (`subdiv analyze`),
+  // not the 1/2 by which two √2 steps shrink the parameters, so the limit has no derivatives
+  // there; positions are evaluated.
+  test::load_example_plugins();
+  const auto stiff = load_scheme_text(R"({"name": "stiff-sqrt2", "split": "sqrt2", "curve": "cubic-bspline",
+    "rules": {"face": [{"sum": "vertices", "w": "1/k"}],
+              "vertex": [{"at": "self", "w": "0.9"}, {"sum": "faces", "new": "face", "w": "0.1/n"}],
+              "edge": [{"sum": "ends", "w": "1/2"}]}})",
+                                      "stiff-sqrt2.json");
+  const int n = 16;
+  const test::Mesh m = limit_test::unrolled_torus(n);
+  const LimitSurface s(stiff, m.level());
+  const Index f = Index(7 * n + 7);
+  CHECK_THROWS_WITH_AS(s.evaluate(f, 0.5, 0.5, m.positions, 3, 1),
+                       doctest::Contains("scheme 'stiff-sqrt2' is not C1, so its limit has no derivatives"), Error);
+  CHECK_THROWS_WITH_AS(s.evaluate(f, 0.3, 0.6, m.positions, 3, 1), doctest::Contains("needs 0.5"), Error);
+  // Positions: the difference quotients at the face's centre do not settle (no derivative),
+  // on heights that are no linear function (which a symmetric rule reproduces).
+  std::vector<double> P = m.positions;
+  for (size_t v = 0; 3 * v < P.size(); ++v) P[3 * v + 2] = 0.1 * double((v * 37) % 11);
+  // At h = 2^-4, 2^-20, 2^-36 the quotients' changes grow (c h^-0.11 from the eigenvalue
+  // 0.540 against 1/2) where a derivative would make each O(h) smaller than the last.
+  const auto at = [&](double u) { return s.evaluate(f, u, 0.5, P, 3, 0).position; };
+  const auto c = at(0.5);
+  auto quotient = [&](int k) {
+    const double h = std::ldexp(1.0, -k);
+    const auto a = at(0.5 + h);
+    return std::array<double, 3>{(a[0] - c[0]) / h, (a[1] - c[1]) / h, (a[2] - c[2]) / h};
+  };
+  const auto q4 = quotient(4), q20 = quotient(20), q36 = quotient(36);
+  const double first = distance(q20, q4), second = distance(q36, q20);
+  CAPTURE(first);
+  CAPTURE(second);
+  CHECK(second > first);
+  // The plugin's own rule keeps its derivatives on the same grid (the test above).
+  CHECK(LimitSurface(load_scheme("sqrt2"), m.level()).evaluate(f, 0.3, 0.6, m.positions, 3, 1).has_derivatives);
+}
+
 // A plugin's split in a sequence's head is followed one period at a time
 // (plugin_period_children.h): its own levels before it change nothing, and another scheme
 // after it is continuous across the base edges, with stencils and derivatives.
