@@ -8,6 +8,7 @@
 
 #include "framework/analysis/surface/limit_evaluation.h"
 #include "framework/analysis/surface/local_patch.h"
+#include "framework/analysis/surface/surface_analysis.h"
 #include "framework/engine/ghost_rings.h"
 #include "framework/engine/refiner.h"
 #include "framework/limit/corner_limit.h"
@@ -119,8 +120,8 @@ LimitSample PluginSplitLimit::evaluate(const FacePoint& p0, const std::vector<do
     if (k >= 0) {
       CornerRows rows;
       FacePoint corner = cut.point;
-      // The analysis's step is the split's period, which contracts the parameters by 1/m.
-      if (corner_rows(limits_, cut.level, corner, k, 0, triangles_, rows, mask_error, 1.0 / factor_)) {
+      if (corner_rows(limits_, cut.level, corner, k, 0, triangles_, rows, mask_error,
+                      analysis_parameter_scale(scheme_))) {
         if (derivatives >= 1 && !rows.no_derivatives.empty())
           throw Error(not_c1_derivatives(scheme_, rows.no_derivatives));
         LimitSample out;
