@@ -14,6 +14,7 @@
 #include "framework/limit/cut_weight_tables.h"
 #include "framework/limit/dual_crease_chart.h"
 #include "framework/limit/dual_crease_curve.h"
+#include "framework/limit/dual_crease_strip.h"
 #include "framework/limit/step_matrix.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -235,6 +236,30 @@ std::optional<std::array<Index, 9>> smooth_biquadratic_grid(const Level& L, Inde
   return grid;
 }
 
+// A quad between two infinitely sharp creases, never refined across: the ruled surface
+// between the two crease curves (dual_crease_strip.h), with its derivatives.
+LimitSample strip_sample(const Cut& cut, CreaseStrip strip, const FacePoint& p, const std::vector<double>& values,
+                         int channels, int derivatives, DualLimit::Rows* rows_out) {
+  const auto rows = crease_strip_limit(cut.level, cut.point.face, strip, p.st[0], p.st[1]);
+  if (!rows) throw Error(fmt::format("face {} lies between two creases that end inside the surface", p.face));
+  LimitSample out;
+  out.position = applied((*rows)[0], values, channels);
+  if (derivatives >= 1) {
+    out.du = applied((*rows)[1], values, channels);
+    out.dv = applied((*rows)[2], values, channels);
+    out.has_derivatives = true;
+    if (rows_out) rows_out->du = (*rows)[1], rows_out->dv = (*rows)[2];
+  }
+  if (derivatives >= 2) {
+    out.duu = applied((*rows)[3], values, channels);
+    out.duv = applied((*rows)[4], values, channels);
+    out.dvv = applied((*rows)[5], values, channels);
+    out.has_second_derivatives = true;
+    if (rows_out) rows_out->duu = (*rows)[3], rows_out->duv = (*rows)[4], rows_out->dvv = (*rows)[5];
+  }
+  return out;
+}
+
 }  // namespace
 
 std::optional<FacePoint> dual_child_point(const Level& parent, const Level& child, const ChildOrigins& o,
@@ -299,6 +324,11 @@ std::string dual_head_unsupported(const Level& base) {
                          "and infinitely sharp creases, not semi-sharp ones",
                          e, base.edge_sharp(e));
   if (std::string why = dual_limit_unsupported(base); !why.empty()) return why;
+  for (Index f = 0; f < base.face_count(); ++f)
+    if (!crease_run(base, f))
+      return fmt::format("face {} lies between two creases: a dual split in a sequence's head follows faces with "
+                         "their crease corners in one run",
+                         f);
   for (Index v = 0; v < base.vertex_count; ++v)
     if (const VertexRefusal r = faces_refused_at(base, v); !r.what.empty())
       return fmt::format("{}: a dual split in a sequence's head is followed only where the faces at every vertex are "
@@ -372,6 +402,13 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
     const QuadrantPoint q = base_quadrant(base_, p0);
     cut.point.corner = q.corner, cut.point.ab = q.ab, cut.point.jacobian = q.jacobian;
     if (const auto run = crease_run(base_, p0.face)) cut.chart = *run;
+  }
+  if (const auto strip = crease_strip(cut.level, cut.point.face)) {
+    if (!chaikin_crease_)
+      throw Error(fmt::format("scheme {} is a dual scheme and face {} lies between two creases, which is evaluated "
+                              "for schemes whose crease is Chaikin's curve (its cuts 3/4, 1/4) only",
+                              subdiv::quoted(scheme_.name), p0.face));
+    return strip_sample(cut, *strip, p0, first_values, channels, derivatives, rows_out);
   }
   std::deque<StepMatrix> owned;
   std::vector<const StepMatrix*> path;

@@ -1,0 +1,51 @@
+#pragma once
+// Quads between two infinitely sharp creases under a dual split: the limit in closed form
+// (docs/limit.md, "Faces between two creases").
+//
+// A quad whose two opposite edges lie on infinitely sharp creases (boundaries, sharpness
+// >= 10), and whose two other edges are smooth or run between two corners of the mesh, has
+// every corner on a crease: each of its new points is made by the crease rule, and its
+// children are again such quads — its F-face, and the E-faces of its smooth edges, between
+// the same two creases (a sharp edge has no E-face, a crease vertex no V-face between the
+// creases). The face is refined along the creases only, never across: after L steps the
+// quads between the creases join the crease polygons' level-L points, so the limit is the
+// ruled surface between the two limit crease curves,
+//   S(u, v) = (1 - v) C_0(u) + v C_1(u),
+// v across (linear, as the level-L quads are bilinear across), u along, the crease curves
+// at the parameter the half faces beside them use (dual_crease_chart.h, crease_side_limit:
+// Chaikin's curve, the uniform quadratic B-spline with its control points at their Greville
+// abscissae, clamped at corners). Its derivatives exist: C_i are C1 in u, and d/dv is
+// C_1 - C_0. Requires the scheme's crease to be Chaikin's (crease_middles_kept).
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "framework/topology/level.h"
+
+namespace subdiv {
+
+// The layout of a quad between two creases: its crease edges are `low` (edge k: corner k to
+// k + 1) and `high` (edge k + 2), k = 0 (along u, across v) or k = 1 (along v, across u).
+struct CreaseStrip {
+  int k = 0;
+};
+
+// The layout of f when it is such a quad (both crease edges infinitely sharp, its other two
+// edges of sharpness 0 or infinitely sharp between two corners), else empty.
+std::optional<CreaseStrip> crease_strip(const Level& L, Index f);
+
+// The limit of the crease through edge (p, q) at u in [0, 1] from p: weights on L's vertices
+// with their first and second derivatives in u. Empty where the crease polygon stops at a
+// vertex that is not a corner (a dart, refused before).
+struct CurveWeight {
+  Index vertex = kNone;
+  double w = 0, dw = 0, ddw = 0;
+};
+std::optional<std::vector<CurveWeight>> crease_edge_limit(const Level& L, Index p, Index q, double u);
+
+// The limit of strip face f at its (u, v) as rows over L's vertices: position, d/du, d/dv,
+// d2/du2, d2/dudv, d2/dv2 (one-sided at the crease curves' knots). Empty as crease_edge_limit.
+using StripRows = std::array<std::vector<double>, 6>;
+std::optional<StripRows> crease_strip_limit(const Level& L, Index f, CreaseStrip strip, double u, double v);
+
+}  // namespace subdiv
