@@ -52,8 +52,9 @@ std::string face_problem(const Level& L, Index f) {
   const auto run = crease_run(L, f);
   if (!run) {
     if (crease_strip(L, f)) return {};
-    return fmt::format("face {} lies between two creases (its crease corners are not one run) that are not two "
-                       "infinitely sharp creases on opposite sides of a quad (only those so far)",
+    return fmt::format("face {} lies between two creases (its crease corners are not one run), and only quads "
+                       "between creases on opposite sides are evaluated so far, with smooth other edges and no corner "
+                       "of the mesh at their corners unless both creases are infinitely sharp",
                        f);
   }
   if (run->length == 0) return {};

@@ -2,6 +2,7 @@
 
 #include "framework/features/dual_features.h"
 #include "framework/limit/dual_crease_chart.h"
+#include "framework/util/error.h"
 
 namespace subdiv {
 namespace {
@@ -72,11 +73,63 @@ std::optional<std::pair<Piece, double>> piece_at(const Level& L, Index p, Index 
 
 std::optional<CreaseStrip> crease_strip(const Level& L, Index f) {
   if (L.face_size(f) != 4) return std::nullopt;
-  for (int k = 0; k < 2; ++k)
-    if (edge_infinitely_sharp(L, corner_edge(L, f, k)) && edge_infinitely_sharp(L, corner_edge(L, f, k + 2)) &&
-        strip_rung(L, corner_edge(L, f, k + 1)) && strip_rung(L, corner_edge(L, f, (k + 3) % 4)))
-      return CreaseStrip{k};
+  for (int k = 0; k < 2; ++k) {
+    const Index low = corner_edge(L, f, k), high = corner_edge(L, f, k + 2);
+    const Index r0 = corner_edge(L, f, k + 1), r1 = corner_edge(L, f, (k + 3) % 4);
+    if (!dual_sharp_edge(L, low) || !dual_sharp_edge(L, high)) continue;
+    if (edge_infinitely_sharp(L, low) && edge_infinitely_sharp(L, high)) {
+      if (strip_rung(L, r0) && strip_rung(L, r1)) return CreaseStrip{k, true};
+      continue;
+    }
+    bool corner = false;
+    for (Index x : L.face(f)) corner = corner || dual_collapses(L, x);
+    if (!corner && !dual_sharp_edge(L, r0) && L.edge_sharp(r0) == 0 && !dual_sharp_edge(L, r1) && L.edge_sharp(r1) == 0)
+      return CreaseStrip{k, false};
+  }
   return std::nullopt;
+}
+
+StripStep strip_child(const Level& child, const ChildOrigins& o, Index f, CreaseStrip strip, double u, double v) {
+  Index F = kNone;
+  for (Index g = 0; g < child.face_count() && F == kNone; ++g)
+    if (o.parent_face[size_t(g)] == f) F = g;
+  if (F == kNone || child.face_size(F) != 4) throw Error("internal: a face between two creases has no quad F-face");
+  // The F-face keeps f's corner order. Its corners 0 and 3 (k = 0) or 0 and 1 (k = 1) start
+  // the two creases' edges; the point's child is the F-face, or the E-face across the F-face's
+  // edge at along = 0 or 1, with along' measured from that edge's end on the crease at across 0.
+  const bool along_u = strip.k == 0;
+  const double along = along_u ? u : v, across = along_u ? v : u;
+  const auto Fc = child.face(F);
+  Index a = Fc[0], b = Fc[along_u ? 3 : 1];
+  double scale = 2, offset = -0.5;
+  if (along > 0.75) a = Fc[along_u ? 1 : 3], b = Fc[2], offset = -1.5;
+  if (along < 0.25) scale = -2, offset = 0.5;
+  StripStep s;
+  s.face = F;
+  if (along < 0.25 || along > 0.75) {
+    const Index e = find_edge(child, a, b);
+    if (e == kNone || child.edge_faces[size_t(2 * e + 1)] == kNone)
+      throw Error("internal: a face between two creases has no E-face across its smooth edge");
+    s.face = child.edge_faces[size_t(2 * e)] == F ? child.edge_faces[size_t(2 * e + 1)] : child.edge_faces[size_t(2 * e)];
+    if (child.face_size(s.face) != 4) throw Error("internal: the E-face between two creases is not a quad");
+  }
+  const auto g = child.face(s.face);
+  int ia = 0, ib = 0;
+  for (int k = 0; k < 4; ++k) {
+    if (g[size_t(k)] == a) ia = k;
+    if (g[size_t(k)] == b) ib = k;
+  }
+  const int id = (ia + 1) % 4 == ib ? (ia + 3) % 4 : (ia + 1) % 4;
+  constexpr double kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const double ed[2] = {kCorner[id][0] - kCorner[ia][0], kCorner[id][1] - kCorner[ia][1]};
+  const double eb[2] = {kCorner[ib][0] - kCorner[ia][0], kCorner[ib][1] - kCorner[ia][1]};
+  const double a2 = scale * along + offset;
+  const double dA[2] = {along_u ? 1.0 : 0.0, along_u ? 0.0 : 1.0}, dX[2] = {dA[1], dA[0]};
+  for (size_t r = 0; r < 2; ++r) {
+    s.uv[r] = kCorner[ia][r] + a2 * ed[r] + across * eb[r];
+    for (size_t c = 0; c < 2; ++c) s.jacobian[r][c] = scale * ed[r] * dA[c] + eb[r] * dX[c];
+  }
+  return s;
 }
 
 std::optional<std::vector<CurveWeight>> crease_edge_limit(const Level& L, Index p, Index q, double u) {

@@ -20,19 +20,37 @@
 #include <optional>
 #include <vector>
 
+#include "framework/refine/child_origins.h"
 #include "framework/topology/level.h"
 
 namespace subdiv {
 
-// The layout of a quad between two creases: its crease edges are `low` (edge k: corner k to
-// k + 1) and `high` (edge k + 2), k = 0 (along u, across v) or k = 1 (along v, across u).
+// The layout of a quad between two creases: its crease edges are edges k and k + 2, k = 0
+// (along u, across v) or k = 1 (along v, across u). `lasting`: both are infinitely sharp.
 struct CreaseStrip {
   int k = 0;
+  bool lasting = false;
 };
 
-// The layout of f when it is such a quad (both crease edges infinitely sharp, its other two
-// edges of sharpness 0 or infinitely sharp between two corners), else empty.
+// The layout of f when it is such a quad, else empty: both crease edges infinitely sharp and
+// its other two edges of sharpness 0 or infinitely sharp between two corners; or a crease edge
+// semi-sharp (sharpness >= 1; the strip lasts until it decays), the other two edges of
+// sharpness 0 and no corner of the mesh at its corners.
 std::optional<CreaseStrip> crease_strip(const Level& L, Index f);
+
+// One dual step of a point (u, v) of strip face f of `parent` (not lasting: it is followed
+// until its creases decay, dual_limit.cpp): the child face between the same creases that
+// holds it — the F-face over along in [1/4, 3/4], the E-face of the smooth edge at along = 0
+// or 1 beyond — with the point in that face's (u, v) and d(u', v')/d(u, v). The child's
+// along parameter is the parent's, doubled from the new points (a nested binary split of the
+// crease edges, as the half faces beside split them: dual_crease_chart.h); across is kept.
+struct StripStep {
+  Index face = kNone;
+  std::array<double, 2> uv{};
+  std::array<std::array<double, 2>, 2> jacobian{};
+};
+StripStep strip_child(const Level& child, const ChildOrigins& origins, Index f, CreaseStrip strip, double u,
+                      double v);
 
 // The limit of the crease through edge (p, q) at u in [0, 1] from p: weights on L's vertices
 // with their first and second derivatives in u. Empty where the crease polygon stops at a

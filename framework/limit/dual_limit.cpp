@@ -403,7 +403,13 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
     cut.point.corner = q.corner, cut.point.ab = q.ab, cut.point.jacobian = q.jacobian;
     if (const auto run = crease_run(base_, p0.face)) cut.chart = *run;
   }
-  if (const auto strip = crease_strip(cut.level, cut.point.face)) {
+  // A face between two semi-sharp creases is followed along them (strip_child) until they
+  // decay: the point is then in the face's quad (u, v), d(u, v)/d(base u, v) carried in
+  // q.jacobian scaled as the quadrants' (2^-k after k steps).
+  std::optional<CreaseStrip> strip = crease_strip(cut.level, cut.point.face);
+  Uv strip_uv = p0.st;
+  if (strip && !strip->lasting) cut.point.jacobian = {{{0.5, 0}, {0, 0.5}}};
+  if (strip && strip->lasting) {
     if (!chaikin_crease_)
       throw Error(fmt::format("scheme {} is a dual scheme and face {} lies between two creases, which is evaluated "
                               "for schemes whose crease is Chaikin's curve (its cuts 3/4, 1/4) only",
@@ -416,8 +422,54 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
   path.push_back(&owned.back());
   std::vector<double> values = first_values;
   const int limit_steps = options_.max_steps + 40;
+  // One step of the descent: the cut around `face` of the refined level, the step's matrix and
+  // the values moved.
+  auto descend = [&](const Hierarchy& h, Index face) {
+    Cut next = cut_around(h.levels[1], face, radius_);
+    owned.push_back(step_matrix(h.stencils[0], next.original, cut.level.vertex_count));
+    path.push_back(&owned.back());
+    std::vector<double> moved(size_t(owned.back().rows()) * size_t(channels));
+    owned.back().apply(values, moved, channels);
+    values.swap(moved);
+    return next;
+  };
+  auto refined = [&] {
+    RefineOptions ro;
+    ro.levels = 1;
+    ro.features = options_.features;
+    ro.evaluation.weight_tables = tables_.get();
+    return refine(scheme_, cut.level, ro);
+  };
   for (int step = 0;; ++step) {
     QuadrantPoint& q = cut.point;
+    if (strip) {
+      if (const auto run = crease_run(cut.level, q.face)) {
+        // The creases (or one of them) have decayed: the face is read in its quadrants.
+        const QuadrantPoint to = quad_quadrant(cut.level, q.face, strip_uv[0], strip_uv[1]);
+        Jacobian J{};
+        for (size_t r = 0; r < 2; ++r)
+          for (size_t c = 0; c < 2; ++c)
+            J[r][c] = 2 * (to.jacobian[r][0] * q.jacobian[0][c] + to.jacobian[r][1] * q.jacobian[1][c]);
+        q.corner = to.corner, q.ab = to.ab, q.jacobian = J;
+        cut.chart = *run;
+        strip.reset();
+      } else {
+        strip = crease_strip(cut.level, q.face);
+        if (!strip || strip->lasting || step >= limit_steps)
+          throw Error("a face between two creases changes shape as they decay: not evaluated yet");
+        const Hierarchy h = refined();
+        const StripStep s = strip_child(h.levels[1], h.origins[0], q.face, *strip, strip_uv[0], strip_uv[1]);
+        Jacobian J{};
+        for (size_t r = 0; r < 2; ++r)
+          for (size_t c = 0; c < 2; ++c)
+            J[r][c] = (s.jacobian[r][0] * q.jacobian[0][c] + s.jacobian[r][1] * q.jacobian[1][c]) / 2;
+        Cut next = descend(h, s.face);
+        next.point.jacobian = J;
+        strip_uv = s.uv;
+        cut = std::move(next);
+        continue;
+      }
+    }
     follow_decay(cut);
     if (step == options_.max_steps) q.ab = nearest_corner(q.ab);
     if (biquadratic_) {
@@ -537,21 +589,13 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
     if (step >= limit_steps)
       throw Error(fmt::format("internal: the point reached no face centre with a known neighbourhood in {} steps",
                               step));
-    RefineOptions ro;
-    ro.levels = 1;
-    ro.features = options_.features;
-    ro.evaluation.weight_tables = tables_.get();
-    const Hierarchy h = refine(scheme_, cut.level, ro);
+    const Hierarchy h = refined();
     const ChildStep s = child_quadrant(h.levels[1], h.origins[0], q);
-    Cut next = cut_around(h.levels[1], s.face, radius_);
+    const auto run = made_on_crease_run(cut.level, h.levels[1], h.origins[0], s.face);
+    if (!run) throw Error("internal: a new face has its crease points in two runs");
+    Cut next = descend(h, s.face);
     next.point.corner = s.corner, next.point.ab = s.ab, next.point.jacobian = s.jacobian;
-    if (const auto run = made_on_crease_run(cut.level, h.levels[1], h.origins[0], s.face)) next.chart = *run;
-    else throw Error("internal: a new face has its crease points in two runs");
-    owned.push_back(step_matrix(h.stencils[0], next.original, cut.level.vertex_count));
-    path.push_back(&owned.back());
-    std::vector<double> moved(size_t(owned.back().rows()) * size_t(channels));
-    owned.back().apply(values, moved, channels);
-    values.swap(moved);
+    next.chart = *run;
     cut = std::move(next);
   }
 }

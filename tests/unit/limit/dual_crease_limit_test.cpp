@@ -457,15 +457,16 @@ TEST_CASE("dual limit: boundaries and creases not covered yet are refused with t
     }
   CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), house.level()),
                        doctest::Contains("face 1 has 5 sides"), Error);
-  // Faces between two semi-sharp creases (the middle row of a 3 x 3 grid).
+  // A face between two semi-sharp creases with a corner of the mesh (the corner face of a 3 x 3
+  // grid whose rows of edges y = 1 and 2 have sharpness 3).
   const test::Mesh g3 = test::grid(3, 3);
   Level rows = g3.level();
   rows.edge_sharpness.assign(size_t(rows.edge_count()), 0.f);
   for (int j : {1, 2})
     for (int i = 0; i < 3; ++i) rows.edge_sharpness[size_t(find_edge(rows, Index(4 * j + i), Index(4 * j + i + 1)))] = 3.f;
   CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), rows),
-                       doctest::Contains("between two creases (its crease corners are not one run) that are not two "
-                                         "infinitely sharp creases"),
+                       doctest::Contains("face 0 lies between two creases (its crease corners are not one run), "
+                                         "and only quads between creases on opposite sides"),
                        Error);
 }
 
@@ -1362,4 +1363,123 @@ TEST_CASE("dual limit between two creases: derivatives against central differenc
     CHECK(worst < 1e-7);
     CHECK(worst2 < 1e-6);
   }
+}
+
+namespace {
+
+// A torus whose loops of vertices j = 0 and j = 1 have edges of sharpness s: the faces (i, 0),
+// numbered i, lie between two semi-sharp creases.
+Level two_loops(const test::Mesh& m, int nu, float s) {
+  Level L = m.level();
+  L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
+  for (int j : {0, 1})
+    for (int i = 0; i < nu; ++i)
+      L.edge_sharpness[size_t(find_edge(L, Index(j * nu + i), Index(j * nu + (i + 1) % nu)))] = s;
+  return L;
+}
+
+}  // namespace
+
+TEST_CASE("dual limit between two semi-sharp creases: the limit of the mesh after they have decayed") {
+  // Sharpness 1: one step with the crease rules, smooth after. The F-face of a face between
+  // the creases holds along in [1/4, 3/4] as along' = 2 along - 1/2, across kept
+  // (docs/limit.md); the level-1 mesh is untagged, and its limit there (the closed-face
+  // evaluation) is the reference. Sharpness 2: the level-1 mesh has sharpness 1 on the loops.
+  const int nu = 8;
+  const test::Mesh torus = bumped(test::torus(nu, 6));
+  for (float sharpness : {1.f, 2.f}) {
+    CAPTURE(sharpness);
+    const Level L = two_loops(torus, nu, sharpness);
+    const LimitSurface s(scheme("doo-sabin"), L);
+    RefineOptions ro;
+    ro.levels = 1;
+    const Hierarchy h = refine(*scheme("doo-sabin"), L, ro);
+    test::Mesh m1;
+    m1.positions.resize(size_t(3 * h.levels[1].vertex_count));
+    h.stencils[0].apply(torus.positions, m1.positions, 3);
+    const LimitSurface s1(scheme("doo-sabin"), h.levels[1]);
+    double worst = 0;
+    int checked = 0;
+    for (Index f = 0; f < nu; ++f) {
+      Index F = kNone;
+      for (Index g = 0; g < h.levels[1].face_count(); ++g)
+        if (h.origins[0].parent_face[size_t(g)] == f) F = g;
+      REQUIRE(F != kNone);
+      for (double u : {0.25, 0.3, 0.5, 0.71, 0.75})
+        for (double v : {0.0, 0.2, 0.5, 0.875, 1.0}) {
+          worst = std::max(worst, distance(at(s, torus, f, u, v), at(s1, m1, F, 2 * u - 0.5, v)));
+          ++checked;
+        }
+    }
+    CHECK(checked == 200);
+    CHECK(worst < 1e-12);
+  }
+  // Continuous across every edge: the rungs between the faces between the creases, the creases
+  // (half faces on the other side), after the decay to 0 or to a fractional sharpness.
+  for (float sharpness : {1.f, 2.f, 2.5f}) {
+    CAPTURE(sharpness);
+    const Level L = two_loops(torus, nu, sharpness);
+    check_edges_continuous(LimitSurface(scheme("doo-sabin"), L), torus, L, 1e-12);
+  }
+  // Not the lasting creases' ruled surface, nor the smooth surface (away from v = 1/2, where
+  // both are the quadratic B-spline of the mean of the two rows: the biquadratic B-spline on a
+  // knot line across is).
+  const LimitSurface semi(scheme("doo-sabin"), two_loops(torus, nu, 2.f)),
+      lasting(scheme("doo-sabin"), two_loops(torus, nu, 10.f)), smooth(scheme("doo-sabin"), torus.level());
+  for (double v : {0.0, 0.25}) {
+    const P3 a = at(smooth, torus, 2, 0.4, v), b = at(lasting, torus, 2, 0.4, v), c = at(semi, torus, 2, 0.4, v);
+    CHECK(distance(c, a) > 1e-3);
+    CHECK(distance(c, b) > 1e-3);
+  }
+}
+
+TEST_CASE("dual limit between two semi-sharp creases: derivatives, affine invariance, stencils") {
+  const int nu = 8;
+  const test::Mesh torus = bumped(test::torus(nu, 6));
+  const Level L = two_loops(torus, nu, 2.f);
+  const LimitSurface s(scheme("doo-sabin"), L);
+  const double h = 1e-6;
+  double worst = 0, stencil_worst = 0;
+  for (Index f : {Index(0), Index(3), Index(5)})
+    for (const auto& uv : {std::array<double, 2>{0.45, 0.55}, {0.3, 0.7}, {0.8, 0.4}, {0.1, 0.2}, {0.6, 0.85}}) {
+      const double u = uv[0], v = uv[1];
+      const LimitSample p = s.evaluate(f, u, v, torus.positions, 3, 1);
+      REQUIRE(p.has_derivatives);
+      const P3 up = at(s, torus, f, u + h, v), um = at(s, torus, f, u - h, v);
+      const P3 vp = at(s, torus, f, u, v + h), vm = at(s, torus, f, u, v - h);
+      for (size_t k = 0; k < 3; ++k) {
+        worst = std::max(worst, std::abs(p.du[k] - (up[k] - um[k]) / (2 * h)));
+        worst = std::max(worst, std::abs(p.dv[k] - (vp[k] - vm[k]) / (2 * h)));
+      }
+      const LimitStencil w = s.stencil(f, u, v, 1);
+      P3 y{0, 0, 0}, du{0, 0, 0};
+      for (size_t k = 0; k < w.vertices.size(); ++k)
+        for (size_t c = 0; c < 3; ++c) {
+          y[c] += w.position[k] * torus.positions[size_t(3 * w.vertices[k]) + c];
+          du[c] += w.du[k] * torus.positions[size_t(3 * w.vertices[k]) + c];
+        }
+      stencil_worst = std::max(stencil_worst, distance(P3{p.position[0], p.position[1], p.position[2]}, y));
+      stencil_worst = std::max(stencil_worst, distance(P3{p.du[0], p.du[1], p.du[2]}, du));
+    }
+  CHECK(worst < 1e-6);
+  CHECK(stencil_worst < 1e-12);
+  // Affine invariance.
+  const std::array<std::array<double, 3>, 3> A{{{0.8, -0.3, 0.1}, {0.2, 1.1, -0.4}, {0.05, 0.3, 0.9}}};
+  const P3 b{0.3, -1.2, 2.0};
+  test::Mesh moved = torus;
+  for (Index x = 0; x < torus.vertex_count; ++x)
+    for (size_t r = 0; r < 3; ++r) {
+      double y = b[r];
+      for (size_t c = 0; c < 3; ++c) y += A[r][c] * torus.positions[size_t(3 * x) + c];
+      moved.positions[size_t(3 * x) + r] = y;
+    }
+  double affine = 0;
+  for (double u : {0.05, 0.5, 0.9}) {
+    const P3 p = at(s, torus, 1, u, 0.3), q = at(s, moved, 1, u, 0.3);
+    P3 e = b;
+    for (size_t r = 0; r < 3; ++r)
+      for (size_t c = 0; c < 3; ++c) e[r] += A[r][c] * p[c];
+    affine = std::max(affine, distance(q, e));
+  }
+  CHECK(affine < 1e-12);
 }
