@@ -1,6 +1,7 @@
 #pragma once
-// Quads between two infinitely sharp creases under a dual split: the limit in closed form
-// (docs/limit.md, "Faces between two creases").
+// Quads between two creases under a dual split (docs/limit.md, "Faces between two creases"):
+// between infinitely sharp creases the limit in closed form, between semi-sharp ones the step
+// that follows a point along them until they decay.
 //
 // A quad whose two opposite edges lie on infinitely sharp creases (boundaries, sharpness
 // >= 10), and whose two other edges are smooth or run between two corners of the mesh, has
