@@ -11,6 +11,7 @@
 
 #include "framework/features/dual_features.h"
 #include "framework/features/sharpness.h"
+#include "framework/limit/dual_crease_strip.h"
 #include "framework/util/error.h"
 
 namespace subdiv {
@@ -20,9 +21,13 @@ constexpr Uv kCorner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 
 Index corner_edge(const Level& L, Index f, int corner) { return L.face_edges[size_t(L.face_offsets[f] + corner)]; }
 
-bool infinitely_sharp(const Level& L, Index e) {
+}  // namespace
+
+bool edge_infinitely_sharp(const Level& L, Index e) {
   return L.edge_on_boundary(e) || L.edge_sharp(e) >= kInfinitelySharp;
 }
+
+namespace {
 
 std::string vertex_problem(const Level& L, Index v) {
   const int sharp = dual_sharp_edge_count(L, v);
@@ -35,7 +40,7 @@ std::string vertex_problem(const Level& L, Index v) {
   float s[2] = {0, 0};
   int k = 0;
   for (Index e : L.ring_edges(v))
-    if (dual_sharp_edge(L, e)) s[k++] = infinitely_sharp(L, e) ? kInfinitelySharp : L.edge_sharp(e);
+    if (dual_sharp_edge(L, e)) s[k++] = edge_infinitely_sharp(L, e) ? kInfinitelySharp : L.edge_sharp(e);
   if (s[0] != s[1])
     return fmt::format("crease vertex {} joins sharp edges of sharpness {} and {} (a crease whose sharpness varies "
                        "along it decays unevenly, which is not evaluated yet)",
@@ -45,7 +50,13 @@ std::string vertex_problem(const Level& L, Index v) {
 
 std::string face_problem(const Level& L, Index f) {
   const auto run = crease_run(L, f);
-  if (!run) return fmt::format("face {} lies between two creases (its crease corners are not one run)", f);
+  if (!run) {
+    if (crease_strip(L, f)) return {};
+    return fmt::format("face {} lies between two creases (its crease corners are not one run), and only quads "
+                       "between creases on opposite sides are evaluated so far, with smooth other edges and no corner "
+                       "of the mesh at their corners unless both creases are infinitely sharp",
+                       f);
+  }
   if (run->length == 0) return {};
   const int n = L.face_size(f);
   if (n != 4)
@@ -118,9 +129,6 @@ std::vector<std::pair<int, double>> crease_run_middle(CreaseRun run, int face_si
   return {{(run.first + half) % face_size, 0.5}, {(run.first + half + 1) % face_size, 0.5}};
 }
 
-namespace {
-
-// The other end of x's sharp edge that does not lead to `not_to`.
 Index other_crease_neighbour(const Level& L, Index x, Index not_to) {
   for (Index e : L.ring_edges(x)) {
     if (!dual_sharp_edge(L, e)) continue;
@@ -130,6 +138,8 @@ Index other_crease_neighbour(const Level& L, Index x, Index not_to) {
   }
   return kNone;
 }
+
+namespace {
 
 // The clamped quadratic B-spline's three basis functions on its first knot interval [0, 1]
 // (knots 0, 0, 0, 1, 2): the corner's, its neighbour's, the next one's.
@@ -171,7 +181,7 @@ std::vector<std::pair<Index, double>> crease_side_limit(const Level& L, Index f,
 bool crease_run_infinitely_sharp(const Level& L, Index f, CreaseRun run) {
   const int n = L.face_size(f);
   for (int k = 0; k + 1 < run.length; ++k)
-    if (!infinitely_sharp(L, corner_edge(L, f, (run.first + k) % n))) return false;
+    if (!edge_infinitely_sharp(L, corner_edge(L, f, (run.first + k) % n))) return false;
   return true;
 }
 
@@ -299,7 +309,7 @@ VertexRefusal corner_refusal(const Level& L, Index v) {
   int lasting = 0;
   float semi = 0;
   for (Index e : L.ring_edges(v)) {
-    if (infinitely_sharp(L, e)) {
+    if (edge_infinitely_sharp(L, e)) {
       ++lasting;
       continue;
     }
@@ -318,7 +328,7 @@ VertexRefusal corner_refusal(const Level& L, Index v) {
   }
   if (semi == 0 || lasting == 0) return {};  // infinitely sharp, or smooth once its edges have decayed
   if (lasting == 2)
-    return sides_refusal(L, v, crease_sides(L, v, [&](Index e) { return infinitely_sharp(L, e); }),
+    return sides_refusal(L, v, crease_sides(L, v, [&](Index e) { return edge_infinitely_sharp(L, e); }),
                          fmt::format("corner vertex {} once its semi-sharp edges have decayed", v));
   return {fmt::format("corner vertex {}", v),
           fmt::format("{} of its edges are infinitely sharp and the others semi-sharp: once those have decayed it is "

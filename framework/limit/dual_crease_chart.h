@@ -52,6 +52,12 @@ std::optional<CreaseRun> crease_run(const Level& L, Index f);
 
 bool is_crease_corner(const Level& L, Index f, int corner);
 
+// A boundary edge, or one of sharpness >= 10: sharp at every level.
+bool edge_infinitely_sharp(const Level& L, Index e);
+
+// The other end of x's sharp edge (for the dual split) that does not lead to `not_to`, or kNone.
+Index other_crease_neighbour(const Level& L, Index x, Index not_to);
+
 // The run of the corners of `face` (of the child level of a dual step) that the step made on
 // a crease (a crease corner's point: on a sharp edge, or a corner's point): the run the face's
 // quadrants were laid out by. A semi-sharp crease that decays leaves it non-empty while the

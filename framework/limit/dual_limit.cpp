@@ -14,6 +14,7 @@
 #include "framework/limit/cut_weight_tables.h"
 #include "framework/limit/dual_crease_chart.h"
 #include "framework/limit/dual_crease_curve.h"
+#include "framework/limit/dual_crease_strip.h"
 #include "framework/limit/step_matrix.h"
 #include "framework/scheme/scheme.h"
 #include "framework/util/error.h"
@@ -235,6 +236,30 @@ std::optional<std::array<Index, 9>> smooth_biquadratic_grid(const Level& L, Inde
   return grid;
 }
 
+// A quad between two infinitely sharp creases, never refined across: the ruled surface
+// between the two crease curves (dual_crease_strip.h), with its derivatives.
+LimitSample strip_sample(const Cut& cut, CreaseStrip strip, const FacePoint& p, const std::vector<double>& values,
+                         int channels, int derivatives, DualLimit::Rows* rows_out) {
+  const auto rows = crease_strip_limit(cut.level, cut.point.face, strip, p.st[0], p.st[1]);
+  if (!rows) throw Error(fmt::format("face {} lies between two creases that end inside the surface", p.face));
+  LimitSample out;
+  out.position = applied((*rows)[0], values, channels);
+  if (derivatives >= 1) {
+    out.du = applied((*rows)[1], values, channels);
+    out.dv = applied((*rows)[2], values, channels);
+    out.has_derivatives = true;
+    if (rows_out) rows_out->du = (*rows)[1], rows_out->dv = (*rows)[2];
+  }
+  if (derivatives >= 2) {
+    out.duu = applied((*rows)[3], values, channels);
+    out.duv = applied((*rows)[4], values, channels);
+    out.dvv = applied((*rows)[5], values, channels);
+    out.has_second_derivatives = true;
+    if (rows_out) rows_out->duu = (*rows)[3], rows_out->duv = (*rows)[4], rows_out->dvv = (*rows)[5];
+  }
+  return out;
+}
+
 }  // namespace
 
 std::optional<FacePoint> dual_child_point(const Level& parent, const Level& child, const ChildOrigins& o,
@@ -299,6 +324,11 @@ std::string dual_head_unsupported(const Level& base) {
                          "and infinitely sharp creases, not semi-sharp ones",
                          e, base.edge_sharp(e));
   if (std::string why = dual_limit_unsupported(base); !why.empty()) return why;
+  for (Index f = 0; f < base.face_count(); ++f)
+    if (!crease_run(base, f))
+      return fmt::format("face {} lies between two creases: a dual split in a sequence's head follows faces with "
+                         "their crease corners in one run",
+                         f);
   for (Index v = 0; v < base.vertex_count; ++v)
     if (const VertexRefusal r = faces_refused_at(base, v); !r.what.empty())
       return fmt::format("{}: a dual split in a sequence's head is followed only where the faces at every vertex are "
@@ -373,14 +403,73 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
     cut.point.corner = q.corner, cut.point.ab = q.ab, cut.point.jacobian = q.jacobian;
     if (const auto run = crease_run(base_, p0.face)) cut.chart = *run;
   }
+  // A face between two semi-sharp creases is followed along them (strip_child) until they
+  // decay: the point is then in the face's quad (u, v), d(u, v)/d(base u, v) carried in
+  // q.jacobian scaled as the quadrants' (2^-k after k steps).
+  std::optional<CreaseStrip> strip = crease_strip(cut.level, cut.point.face);
+  Uv strip_uv = p0.st;
+  if (strip && !strip->lasting) cut.point.jacobian = {{{0.5, 0}, {0, 0.5}}};
+  if (strip && strip->lasting) {
+    if (!chaikin_crease_)
+      throw Error(fmt::format("scheme {} is a dual scheme and face {} lies between two creases, which is evaluated "
+                              "for schemes whose crease is Chaikin's curve (its cuts 3/4, 1/4) only",
+                              subdiv::quoted(scheme_.name), p0.face));
+    return strip_sample(cut, *strip, p0, first_values, channels, derivatives, rows_out);
+  }
   std::deque<StepMatrix> owned;
   std::vector<const StepMatrix*> path;
   owned.push_back(identity_step(cut.level.vertex_count));
   path.push_back(&owned.back());
   std::vector<double> values = first_values;
   const int limit_steps = options_.max_steps + 40;
+  // One step of the descent: the cut around `face` of the refined level, the step's matrix and
+  // the values moved.
+  auto descend = [&](const Hierarchy& h, Index face) {
+    Cut next = cut_around(h.levels[1], face, radius_);
+    owned.push_back(step_matrix(h.stencils[0], next.original, cut.level.vertex_count));
+    path.push_back(&owned.back());
+    std::vector<double> moved(size_t(owned.back().rows()) * size_t(channels));
+    owned.back().apply(values, moved, channels);
+    values.swap(moved);
+    return next;
+  };
+  auto refined = [&] {
+    RefineOptions ro;
+    ro.levels = 1;
+    ro.features = options_.features;
+    ro.evaluation.weight_tables = tables_.get();
+    return refine(scheme_, cut.level, ro);
+  };
   for (int step = 0;; ++step) {
     QuadrantPoint& q = cut.point;
+    if (strip) {
+      if (const auto run = crease_run(cut.level, q.face)) {
+        // The creases (or one of them) have decayed: the face is read in its quadrants.
+        const QuadrantPoint to = quad_quadrant(cut.level, q.face, strip_uv[0], strip_uv[1]);
+        Jacobian J{};
+        for (size_t r = 0; r < 2; ++r)
+          for (size_t c = 0; c < 2; ++c)
+            J[r][c] = 2 * (to.jacobian[r][0] * q.jacobian[0][c] + to.jacobian[r][1] * q.jacobian[1][c]);
+        q.corner = to.corner, q.ab = to.ab, q.jacobian = J;
+        cut.chart = *run;
+        strip.reset();
+      } else {
+        strip = crease_strip(cut.level, q.face);
+        if (!strip || strip->lasting || step >= limit_steps)
+          throw Error("a face between two creases changes shape as they decay: not evaluated yet");
+        const Hierarchy h = refined();
+        const StripStep s = strip_child(h.levels[1], h.origins[0], q.face, *strip, strip_uv[0], strip_uv[1]);
+        Jacobian J{};
+        for (size_t r = 0; r < 2; ++r)
+          for (size_t c = 0; c < 2; ++c)
+            J[r][c] = (s.jacobian[r][0] * q.jacobian[0][c] + s.jacobian[r][1] * q.jacobian[1][c]) / 2;
+        Cut next = descend(h, s.face);
+        next.point.jacobian = J;
+        strip_uv = s.uv;
+        cut = std::move(next);
+        continue;
+      }
+    }
     follow_decay(cut);
     if (step == options_.max_steps) q.ab = nearest_corner(q.ab);
     if (biquadratic_) {
@@ -500,21 +589,13 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
     if (step >= limit_steps)
       throw Error(fmt::format("internal: the point reached no face centre with a known neighbourhood in {} steps",
                               step));
-    RefineOptions ro;
-    ro.levels = 1;
-    ro.features = options_.features;
-    ro.evaluation.weight_tables = tables_.get();
-    const Hierarchy h = refine(scheme_, cut.level, ro);
+    const Hierarchy h = refined();
     const ChildStep s = child_quadrant(h.levels[1], h.origins[0], q);
-    Cut next = cut_around(h.levels[1], s.face, radius_);
+    const auto run = made_on_crease_run(cut.level, h.levels[1], h.origins[0], s.face);
+    if (!run) throw Error("internal: a new face has its crease points in two runs");
+    Cut next = descend(h, s.face);
     next.point.corner = s.corner, next.point.ab = s.ab, next.point.jacobian = s.jacobian;
-    if (const auto run = made_on_crease_run(cut.level, h.levels[1], h.origins[0], s.face)) next.chart = *run;
-    else throw Error("internal: a new face has its crease points in two runs");
-    owned.push_back(step_matrix(h.stencils[0], next.original, cut.level.vertex_count));
-    path.push_back(&owned.back());
-    std::vector<double> moved(size_t(owned.back().rows()) * size_t(channels));
-    owned.back().apply(values, moved, channels);
-    values.swap(moved);
+    next.chart = *run;
     cut = std::move(next);
   }
 }

@@ -18,7 +18,10 @@
 // Next to boundaries and sharp creases a face with corners on the crease is covered by the
 // quadrants of its other corners, which reach to the crease (dual_crease_chart.h); the
 // nesting is the same. Where a semi-sharp crease has decayed, such a face is read in its own
-// quadrants again (follow_decay).
+// quadrants again (follow_decay). A quad between two creases on opposite sides is refined
+// along them only (dual_crease_strip.h): between infinitely sharp creases its limit is the
+// ruled surface between the two crease curves, in closed form; between semi-sharp ones the
+// point is followed along (strip_child) until they decay, then read in its face's quadrants.
 //
 // Evaluation follows the point's quadrant down the refinement of its neighbourhood (the
 // engine refines a cut around the face, as for primal schemes) until either

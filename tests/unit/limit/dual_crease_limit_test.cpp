@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <tuple>
 #include <vector>
 
 #include "framework/engine/refiner.h"
@@ -456,11 +457,17 @@ TEST_CASE("dual limit: boundaries and creases not covered yet are refused with t
     }
   CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), house.level()),
                        doctest::Contains("face 1 has 5 sides"), Error);
-  // A single quad: every corner is a corner of the mesh.
-  test::Mesh quad;
-  for (int k = 0; k < 4; ++k) quad.add_vertex(k == 1 || k == 2, k >= 2, 0);
-  quad.add_face({0, 1, 2, 3});
-  CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), quad.level()), doctest::Contains("between"), Error);
+  // A face between two semi-sharp creases with a corner of the mesh (the corner face of a 3 x 3
+  // grid whose rows of edges y = 1 and 2 have sharpness 3).
+  const test::Mesh g3 = test::grid(3, 3);
+  Level rows = g3.level();
+  rows.edge_sharpness.assign(size_t(rows.edge_count()), 0.f);
+  for (int j : {1, 2})
+    for (int i = 0; i < 3; ++i) rows.edge_sharpness[size_t(find_edge(rows, Index(4 * j + i), Index(4 * j + i + 1)))] = 3.f;
+  CHECK_THROWS_WITH_AS(LimitSurface(scheme("doo-sabin"), rows),
+                       doctest::Contains("face 0 lies between two creases (its crease corners are not one run), "
+                                         "and only quads between creases on opposite sides"),
+                       Error);
 }
 
 TEST_CASE("dual limit at semi-sharp creases: Chaikin's decay; sharpness varying along a crease is refused") {
@@ -1159,4 +1166,320 @@ TEST_CASE("dual limit at corners whose ring of faces grows: the faces there are 
     check_edges_continuous(s, m, *c.level, 1e-12,
                            [&](Index f) { return std::find(refused.begin(), refused.end(), f) != refused.end(); });
   }
+}
+
+namespace {
+
+// A grid whose row of edges y = `row` is infinitely sharp: its top row of faces lies between
+// that crease and the top boundary (faces between two creases; the crease ends at the side
+// boundaries in corners, vertices of three sharp edges).
+Level crease_row(const test::Mesh& m, int nx, int row) {
+  Level L = m.level();
+  L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
+  auto id = [&](int i, int j) { return Index(j * (nx + 1) + i); };
+  for (int i = 0; i < nx; ++i) L.edge_sharpness[size_t(find_edge(L, id(i, row), id(i + 1, row)))] = 10.f;
+  return L;
+}
+
+// The clamped quadratic B-spline of row j of test::grid(nx, ...) (corners at both ends: knots
+// 0, 0, 0, 1, ..., nx - 1 three times; P_0 at Greville 0, P_i at i - 1/2, P_nx at nx - 1) at
+// u along the edge from (i, j) to (i + 1, j).
+P3 clamped_row(const test::Mesh& m, int nx, int j, int i, double u) {
+  std::vector<P3> row;
+  for (int k = 0; k <= nx; ++k) row.push_back(point(m, Index(j * (nx + 1) + k)));
+  std::vector<double> knots{0, 0, 0};
+  for (int k = 1; k < nx - 1; ++k) knots.push_back(k);
+  for (int r = 0; r < 3; ++r) knots.push_back(nx - 1);
+  auto greville = [&](int k) { return k == 0 ? 0.0 : (k == nx ? nx - 1.0 : k - 0.5); };
+  const double x = greville(i) + u * (greville(i + 1) - greville(i));
+  return quadratic_bspline(knots, row, std::min(x, nx - 1 - 1e-15));
+}
+
+P3 mix(const P3& a, const P3& b, double t) {
+  return {(1 - t) * a[0] + t * b[0], (1 - t) * a[1] + t * b[1], (1 - t) * a[2] + t * b[2]};
+}
+
+}  // namespace
+
+TEST_CASE("dual limit between two creases: the ruled surface between the two crease curves") {
+  // A face between two infinitely sharp creases is refined along them only (its children are
+  // its F-face and the E-faces of its smooth edges, again between the same creases), so the
+  // level-L quads between the creases join the level-L crease polygons bilinearly, and the
+  // limit is (1 - v) C_0(u) + v C_1(u) with C_i Chaikin's curves (docs/limit.md).
+  ParameterOverrides d2;
+  d2["d"] = "2";
+  // One face wide: a strip of five quads, two (one vertex between two corners: a quadratic
+  // Bezier curve each side), and of a crease row under the top boundary of a 5 x 3 grid.
+  struct Case {
+    int nx, ny, row;
+  };
+  for (const Case c : {Case{5, 1, 0}, Case{2, 1, 0}, Case{5, 3, 2}}) {
+    CAPTURE(c.nx);
+    CAPTURE(c.ny);
+    const test::Mesh m = bumped(test::grid(c.nx, c.ny));
+    const Level L = c.row == 0 ? m.level() : crease_row(m, c.nx, c.row);
+    for (const char* name : {"doo-sabin", "doo-sabin-centroid", "quad-bspline"}) {
+      CAPTURE(name);
+      const LimitSurface s(std::string(name) == "quad-bspline" ? load_scheme(name, d2) : scheme(name), L);
+      double worst = 0;
+      for (int i = 0; i < c.nx; ++i)
+        for (double u : {0.0, 0.125, 0.3, 0.5, 0.71, 1.0})
+          for (double v : {0.0, 0.2, 0.5, 0.875, 1.0}) {
+            const P3 e = mix(clamped_row(m, c.nx, c.row, i, u), clamped_row(m, c.nx, c.row + 1, i, u), v);
+            worst = std::max(worst, distance(at(s, m, grid_face(c.nx, i, c.row), u, v), e));
+          }
+      CHECK(worst < 1e-12);
+    }
+  }
+  // A single quad: every edge on the boundary, every corner a corner of the mesh; the face is
+  // its own F-face at every step, so the limit is the bilinear quad.
+  test::Mesh quad;
+  for (int k = 0; k < 4; ++k) quad.add_vertex(k == 1 || k == 2, k >= 2, k == 2 ? 0.7 : 0.1 * k);
+  quad.add_face({0, 1, 2, 3});
+  const LimitSurface s(scheme("doo-sabin"), quad.level());
+  for (double u : {0.0, 0.3, 0.8})
+    for (double v : {0.1, 0.5, 1.0})
+      CHECK(distance(at(s, quad, 0, u, v), mix(mix(point(quad, 0), point(quad, 1), u),
+                                               mix(point(quad, 3), point(quad, 2), u), v)) < 1e-15);
+}
+
+TEST_CASE("dual limit between two creases: continuous across every edge, affine invariant, stencils, level points") {
+  const int nx = 5;
+  const test::Mesh m = bumped(test::grid(nx, 3));
+  const Level L = crease_row(m, nx, 2);
+  const LimitSurface s(scheme("doo-sabin"), L);
+  // Across the crease the faces below (half faces, read in their quadrants) give the crease
+  // curve as the faces between the creases do.
+  check_edges_continuous(s, m, L, 1e-12);
+  const std::array<std::array<double, 3>, 3> A{{{0.8, -0.3, 0.1}, {0.2, 1.1, -0.4}, {0.05, 0.3, 0.9}}};
+  const P3 b{0.3, -1.2, 2.0};
+  test::Mesh moved = m;
+  for (Index v = 0; v < m.vertex_count; ++v)
+    for (size_t r = 0; r < 3; ++r) {
+      double x = b[r];
+      for (size_t c = 0; c < 3; ++c) x += A[r][c] * m.positions[size_t(3 * v) + c];
+      moved.positions[size_t(3 * v) + r] = x;
+    }
+  double worst = 0, stencil_worst = 0;
+  for (int i = 0; i < nx; ++i)
+    for (const auto& uv : {std::array<double, 2>{0.1, 0.05}, {0.6, 0.3}, {0.999, 0.5}, {0.25, 1}}) {
+      const Index f = grid_face(nx, i, 2);
+      const P3 p = at(s, m, f, uv[0], uv[1]), q = at(s, moved, f, uv[0], uv[1]);
+      P3 e = b;
+      for (size_t r = 0; r < 3; ++r)
+        for (size_t c = 0; c < 3; ++c) e[r] += A[r][c] * p[c];
+      worst = std::max(worst, distance(q, e));
+      const LimitStencil w = s.stencil(f, uv[0], uv[1], 2);
+      P3 y{0, 0, 0};
+      for (size_t k = 0; k < w.vertices.size(); ++k)
+        for (size_t c = 0; c < 3; ++c) y[c] += w.position[k] * m.positions[size_t(3 * w.vertices[k]) + c];
+      stencil_worst = std::max(stencil_worst, distance(p, y));
+      CHECK(w.has_second_derivatives);
+    }
+  CHECK(worst < 1e-12);
+  CHECK(stencil_worst < 1e-13);
+}
+
+TEST_CASE("dual limit between two creases: linear across, as the refined quads are; level points converge as 4^-L") {
+  // The L-th F-face of a face between the creases has its corners on the two level-L crease
+  // polygons at u = 1/2 -+ 2^-(L+1); its point (1/2, w) is the polygons' edge middles mixed
+  // by w, and an edge middle of Chaikin's polygon lies on its curve (the quadratic B-spline at
+  // a knot is the mean of the two control points beside it). So at every level it is the
+  // limit at (1/2, w) of the base face. Its corners 0 (on the crease) and 3 (on the boundary),
+  // at u = (1 - 2^-L)/2, are vertices of Chaikin's polygons, which differ from their curves by
+  // an eighth of the polygon's second difference there: 1/4 per step.
+  const int nx = 5;
+  const test::Mesh m = bumped(test::grid(nx, 3));
+  const Level L = crease_row(m, nx, 2);
+  const LimitSurface s(scheme("doo-sabin"), L);
+  RefineOptions ro;
+  ro.levels = 7;
+  const Hierarchy h = refine(*scheme("doo-sabin"), L, ro);
+  std::vector<double> positions = m.positions;
+  const Index base_face = grid_face(nx, 2, 2);
+  Index face = base_face;
+  double worst = 0;
+  std::vector<std::array<double, 2>> error;  // corners 0 and 3
+  for (int l = 1; l <= 7; ++l) {
+    std::vector<double> next(size_t(3 * h.levels[size_t(l)].vertex_count));
+    h.stencils[size_t(l - 1)].apply(positions, next, 3);
+    positions.swap(next);
+    const Level& child = h.levels[size_t(l)];
+    Index f_face = kNone;
+    for (Index g = 0; g < child.face_count(); ++g)
+      if (h.origins[size_t(l - 1)].parent_face[size_t(g)] == face) f_face = g;
+    REQUIRE(f_face != kNone);
+    face = f_face;
+    const auto g = child.face(face);
+    REQUIRE(g.size() == 4);
+    auto p = [&](size_t k) {
+      const size_t x = size_t(3 * g[k]);
+      return P3{positions[x], positions[x + 1], positions[x + 2]};
+    };
+    for (double w : {0.0, 1.0 / 3, 1.0}) {
+      // Corners 0, 1 on the crease, 3, 2 on the boundary (the F-face keeps the face's order).
+      const P3 e = mix(mix(p(0), p(1), 0.5), mix(p(3), p(2), 0.5), w);
+      worst = std::max(worst, distance(at(s, m, base_face, 0.5, w), e));
+    }
+    const double u = (1 - std::ldexp(1.0, -l)) / 2;
+    error.push_back({distance(p(0), at(s, m, base_face, u, 0)), distance(p(3), at(s, m, base_face, u, 1))});
+  }
+  CHECK(worst < 1e-12);
+  for (size_t k = 0; k < 2; ++k) {
+    CAPTURE(k);
+    CHECK(error[0][k] > 1e-4);
+    for (size_t l : {size_t(5), size_t(6)}) CHECK(error[l][k] / error[l - 1][k] == doctest::Approx(0.25).epsilon(5e-3));
+  }
+}
+
+TEST_CASE("dual limit between two creases: derivatives against central differences") {
+  const int nx = 5;
+  const test::Mesh m = bumped(test::grid(nx, 3));
+  const Level L = crease_row(m, nx, 2);
+  // The strip of one face: its faces run along v in a grid turned a quarter (k = 1 layout).
+  const test::Mesh strip = bumped(test::grid(1, 4));
+  for (const auto& [mesh, level, row] :
+       {std::tuple{&m, L, 2}, std::tuple{&strip, strip.level(), -1}}) {
+    const LimitSurface s(scheme("doo-sabin"), level);
+    const double h = 1e-6;
+    double worst = 0, worst2 = 0;
+    const int faces = row < 0 ? 4 : nx;
+    for (int i = 0; i < faces; ++i)
+      for (const auto& uv : {std::array<double, 2>{0.45, 0.55}, {0.3, 0.7}, {0.8, 0.4}, {0.1, 0.2}, {0.6, 0.85}}) {
+        const Index f = row < 0 ? Index(i) : grid_face(nx, i, row);
+        const double u = uv[0], v = uv[1];
+        const LimitSample p = s.evaluate(f, u, v, mesh->positions, 3, 2);
+        REQUIRE(p.has_second_derivatives);
+        auto d = [&](double du, double dv) { return s.evaluate(f, u + du, v + dv, mesh->positions, 3, 1); };
+        const LimitSample up = d(h, 0), um = d(-h, 0), vp = d(0, h), vm = d(0, -h);
+        for (size_t k = 0; k < 3; ++k) {
+          worst = std::max(worst, std::abs(p.du[k] - (up.position[k] - um.position[k]) / (2 * h)));
+          worst = std::max(worst, std::abs(p.dv[k] - (vp.position[k] - vm.position[k]) / (2 * h)));
+          worst2 = std::max(worst2, std::abs(p.duu[k] - (up.du[k] - um.du[k]) / (2 * h)));
+          worst2 = std::max(worst2, std::abs(p.duv[k] - (vp.du[k] - vm.du[k]) / (2 * h)));
+          worst2 = std::max(worst2, std::abs(p.dvv[k] - (vp.dv[k] - vm.dv[k]) / (2 * h)));
+        }
+      }
+    CHECK(worst < 1e-7);
+    CHECK(worst2 < 1e-6);
+  }
+}
+
+namespace {
+
+// A torus whose loops of vertices j = 0 and j = 1 have edges of sharpness s: the faces (i, 0),
+// numbered i, lie between two semi-sharp creases.
+Level two_loops(const test::Mesh& m, int nu, float s) {
+  Level L = m.level();
+  L.edge_sharpness.assign(size_t(L.edge_count()), 0.f);
+  for (int j : {0, 1})
+    for (int i = 0; i < nu; ++i)
+      L.edge_sharpness[size_t(find_edge(L, Index(j * nu + i), Index(j * nu + (i + 1) % nu)))] = s;
+  return L;
+}
+
+}  // namespace
+
+TEST_CASE("dual limit between two semi-sharp creases: the limit of the mesh after they have decayed") {
+  // Sharpness 1: one step with the crease rules, smooth after. The F-face of a face between
+  // the creases holds along in [1/4, 3/4] as along' = 2 along - 1/2, across kept
+  // (docs/limit.md); the level-1 mesh is untagged, and its limit there (the closed-face
+  // evaluation) is the reference. Sharpness 2: the level-1 mesh has sharpness 1 on the loops.
+  const int nu = 8;
+  const test::Mesh torus = bumped(test::torus(nu, 6));
+  for (float sharpness : {1.f, 2.f}) {
+    CAPTURE(sharpness);
+    const Level L = two_loops(torus, nu, sharpness);
+    const LimitSurface s(scheme("doo-sabin"), L);
+    RefineOptions ro;
+    ro.levels = 1;
+    const Hierarchy h = refine(*scheme("doo-sabin"), L, ro);
+    test::Mesh m1;
+    m1.positions.resize(size_t(3 * h.levels[1].vertex_count));
+    h.stencils[0].apply(torus.positions, m1.positions, 3);
+    const LimitSurface s1(scheme("doo-sabin"), h.levels[1]);
+    double worst = 0;
+    int checked = 0;
+    for (Index f = 0; f < nu; ++f) {
+      Index F = kNone;
+      for (Index g = 0; g < h.levels[1].face_count(); ++g)
+        if (h.origins[0].parent_face[size_t(g)] == f) F = g;
+      REQUIRE(F != kNone);
+      for (double u : {0.25, 0.3, 0.5, 0.71, 0.75})
+        for (double v : {0.0, 0.2, 0.5, 0.875, 1.0}) {
+          worst = std::max(worst, distance(at(s, torus, f, u, v), at(s1, m1, F, 2 * u - 0.5, v)));
+          ++checked;
+        }
+    }
+    CHECK(checked == 200);
+    CHECK(worst < 1e-12);
+  }
+  // Continuous across every edge: the rungs between the faces between the creases, the creases
+  // (half faces on the other side), after the decay to 0 or to a fractional sharpness.
+  for (float sharpness : {1.f, 2.f, 2.5f}) {
+    CAPTURE(sharpness);
+    const Level L = two_loops(torus, nu, sharpness);
+    check_edges_continuous(LimitSurface(scheme("doo-sabin"), L), torus, L, 1e-12);
+  }
+  // Not the lasting creases' ruled surface, nor the smooth surface (away from v = 1/2, where
+  // both are the quadratic B-spline of the mean of the two rows: the biquadratic B-spline on a
+  // knot line across is).
+  const LimitSurface semi(scheme("doo-sabin"), two_loops(torus, nu, 2.f)),
+      lasting(scheme("doo-sabin"), two_loops(torus, nu, 10.f)), smooth(scheme("doo-sabin"), torus.level());
+  for (double v : {0.0, 0.25}) {
+    const P3 a = at(smooth, torus, 2, 0.4, v), b = at(lasting, torus, 2, 0.4, v), c = at(semi, torus, 2, 0.4, v);
+    CHECK(distance(c, a) > 1e-3);
+    CHECK(distance(c, b) > 1e-3);
+  }
+}
+
+TEST_CASE("dual limit between two semi-sharp creases: derivatives, affine invariance, stencils") {
+  const int nu = 8;
+  const test::Mesh torus = bumped(test::torus(nu, 6));
+  const Level L = two_loops(torus, nu, 2.f);
+  const LimitSurface s(scheme("doo-sabin"), L);
+  const double h = 1e-6;
+  double worst = 0, stencil_worst = 0;
+  for (Index f : {Index(0), Index(3), Index(5)})
+    for (const auto& uv : {std::array<double, 2>{0.45, 0.55}, {0.3, 0.7}, {0.8, 0.4}, {0.1, 0.2}, {0.6, 0.85}}) {
+      const double u = uv[0], v = uv[1];
+      const LimitSample p = s.evaluate(f, u, v, torus.positions, 3, 1);
+      REQUIRE(p.has_derivatives);
+      const P3 up = at(s, torus, f, u + h, v), um = at(s, torus, f, u - h, v);
+      const P3 vp = at(s, torus, f, u, v + h), vm = at(s, torus, f, u, v - h);
+      for (size_t k = 0; k < 3; ++k) {
+        worst = std::max(worst, std::abs(p.du[k] - (up[k] - um[k]) / (2 * h)));
+        worst = std::max(worst, std::abs(p.dv[k] - (vp[k] - vm[k]) / (2 * h)));
+      }
+      const LimitStencil w = s.stencil(f, u, v, 1);
+      P3 y{0, 0, 0}, du{0, 0, 0};
+      for (size_t k = 0; k < w.vertices.size(); ++k)
+        for (size_t c = 0; c < 3; ++c) {
+          y[c] += w.position[k] * torus.positions[size_t(3 * w.vertices[k]) + c];
+          du[c] += w.du[k] * torus.positions[size_t(3 * w.vertices[k]) + c];
+        }
+      stencil_worst = std::max(stencil_worst, distance(P3{p.position[0], p.position[1], p.position[2]}, y));
+      stencil_worst = std::max(stencil_worst, distance(P3{p.du[0], p.du[1], p.du[2]}, du));
+    }
+  CHECK(worst < 1e-6);
+  CHECK(stencil_worst < 1e-12);
+  // Affine invariance.
+  const std::array<std::array<double, 3>, 3> A{{{0.8, -0.3, 0.1}, {0.2, 1.1, -0.4}, {0.05, 0.3, 0.9}}};
+  const P3 b{0.3, -1.2, 2.0};
+  test::Mesh moved = torus;
+  for (Index x = 0; x < torus.vertex_count; ++x)
+    for (size_t r = 0; r < 3; ++r) {
+      double y = b[r];
+      for (size_t c = 0; c < 3; ++c) y += A[r][c] * torus.positions[size_t(3 * x) + c];
+      moved.positions[size_t(3 * x) + r] = y;
+    }
+  double affine = 0;
+  for (double u : {0.05, 0.5, 0.9}) {
+    const P3 p = at(s, torus, 1, u, 0.3), q = at(s, moved, 1, u, 0.3);
+    P3 e = b;
+    for (size_t r = 0; r < 3; ++r)
+      for (size_t c = 0; c < 3; ++c) e[r] += A[r][c] * p[c];
+    affine = std::max(affine, distance(q, e));
+  }
+  CHECK(affine < 1e-12);
 }

@@ -257,7 +257,8 @@ TEST_CASE("subdiv evaluate takes dual schemes: the written numbers are the libra
     }
   }
   CHECK(std::isnan(rows[2][6]));  // the cube's corner: a valence-3 vertex, the centre of a triangular V-face
-  write(dir / "open.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+  // A lone triangle lies between creases on all sides (a lone quad is evaluated: its bilinear quad).
+  write(dir / "open.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n");
   const auto refused = test::run_subdiv("evaluate " + (dir / "open.obj").string() + " -s doo-sabin --at " +
                                         (dir / "points.csv").string() + " -o " + (dir / "refused.csv").string());
   CHECK(refused.exit_code != 0);
