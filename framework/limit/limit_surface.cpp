@@ -591,22 +591,19 @@ struct LimitSurface::Impl {
     // meet again), and near any face that is not grid. After its first failure every piece
     // is the narrow one, so such meshes pay one wide piece more than with the narrow alone.
     constexpr int kWideMargin = 16, kMargin = 8;
-    bool centred = false, piece = false;
+    bool piece = false;
     if (!narrow_pieces.load(std::memory_order_relaxed)) {
-      piece = grid_piece(lab, face, kWideMargin, centred);
+      piece = grid_piece(lab, face, kWideMargin);
       if (!piece) narrow_pieces.store(true, std::memory_order_relaxed);
     }
-    if (!piece) piece = grid_piece(lab, face, kMargin, centred);
-    if (piece) {
-      if (centred) return true;
-      if (grid_face[size_t(face)].load(std::memory_order_relaxed)) return quad_grid_labelled(lab, base, face, depth);
-    }
+    if (!piece) piece = grid_piece(lab, face, kMargin);
+    if (piece && grid_face[size_t(face)].load(std::memory_order_relaxed)) return quad_grid_labelled(lab, base, face, depth);
     return quad_grid_labelled(lab, base, face, radius);
   }
   // Checks a piece `margin` rings wider than the cut, centred near `face`; when it is grid,
-  // marks the faces whose cuts lie inside it and returns true; `centred` when the piece was
-  // centred on `face` (whose labels are then in `lab`).
-  bool grid_piece(Labelling& lab, Index face, int margin, bool& centred) const {
+  // marks the faces whose cuts lie inside it and returns true (`lab` then holds the piece's
+  // distances, not a face's labels).
+  bool grid_piece(Labelling& lab, Index face, int margin) const {
     // The piece is centred up to margin - 1 faces on, across corners towards higher face
     // numbers (where a caller going through the faces in order goes next), so that it marks
     // this face and more of the faces not met yet than a piece centred here would: on a grid
@@ -619,13 +616,12 @@ struct LimitSurface::Impl {
       if (next == centre) break;
       centre = next;
     }
-    if (!quad_grid_labelled(lab, base, centre, radius + margin)) return false;
+    if (!quad_grid_distances(lab, base, centre, radius + margin)) return false;
     // A face with a corner closer than margin - 1 has its corners within margin of the
     // centre's and its cut within this piece; this face is one of them (each step across
     // a corner moves a face's corners one ring at most), checked all the same.
     for (size_t q = 0; q < lab.vertices.size() && lab.distance[q] < margin; ++q)
       for (Index f : base.ring_faces(lab.vertices[q])) grid_face[size_t(f)].store(1, std::memory_order_relaxed);
-    centred = centre == face;
     return true;
   }
 
@@ -717,10 +713,18 @@ struct LimitSurface::Impl {
           x = w[k] != 0 ? x + w[k] * at[c] : x;
         }
     }
-    out.position = {sum[0], sum[1], sum[2]};
-    out.du = {sum[3], sum[4], sum[5]};
-    out.dv = {sum[6], sum[7], sum[8]};
+    put_three(out.position, sum[0], sum[1], sum[2]);
+    put_three(out.du, sum[3], sum[4], sum[5]);
+    put_three(out.dv, sum[6], sum[7], sum[8]);
     out.has_derivatives = true;
+  }
+  // Three values into `to`, keeping its memory: element by element, as assigning a list
+  // costs a call to memmove per vector, about a tenth of a regular face's point (by value:
+  // the sums stay in registers).
+  static void put_three(std::vector<double>& to, double x, double y, double z) {
+    to.clear();
+    to.reserve(3);
+    to.push_back(x), to.push_back(y), to.push_back(z);
   }
 
   // walk()'s first step where the face's node is the bicubic patch: finish() of

@@ -206,7 +206,9 @@ void run_alternating(const Mesh& m, int points, int rounds) {
     ours_ptr.reset();
     ours_ptr = std::make_unique<subdiv::LimitSurface>(subdiv::load_scheme("catmull-clark"),
                                                       subdiv::build_level(m.vertices, offsets, corners));
-    for (int f = 0; f < faces; ++f) sum += ours_ptr->evaluate(f, 0.3, 0.2, m.xyz, 3).position[0];
+    // Into one kept sample, as Bfr's side keeps its surface and patch points from face to face.
+    subdiv::LimitSample s;
+    for (int f = 0; f < faces; ++f) ours_ptr->evaluate_into(f, 0.3, 0.2, m.xyz, 3, 1, s), sum += s.position[0];
   };
   auto prepare_bfr = [&] {
     theirs.factory.reset();  // before the refiner it reads

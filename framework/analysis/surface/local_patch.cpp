@@ -29,8 +29,13 @@ double sig_sharpness(float s) { return s >= kInfinitelySharp ? double(kInfinitel
 // storing it and returns false at the first difference.
 // With `quad_grid`, also checks that the neighbourhood is untagged regular quad grid as it
 // goes (quad_grid_labelled) and returns false at the first vertex or face that is not.
+// With `ordered` false, each vertex's faces are scanned from its first ring face instead of
+// the face it was reached through: the same vertices at the same distances (breadth-first,
+// ring by ring) and the same checks, in another order within a ring, without looking up
+// where each new vertex's scan starts.
 bool label_into(Labelling& out, const Level& L, CentreKind kind, Index centre, int start, int radius,
-                bool with_signature, const std::vector<double>* expected = nullptr, bool quad_grid = false) {
+                bool with_signature, const std::vector<double>* expected = nullptr, bool quad_grid = false,
+                bool ordered = true) {
   // Only the entries set by the last use are cleared; the array only grows (entries past
   // this level's vertices stay kNone), so a reused labelling costs its neighbourhood only.
   for (Index v : out.vertices)
@@ -113,7 +118,7 @@ bool label_into(Labelling& out, const Level& L, CentreKind kind, Index centre, i
       if (with_signature) sig.push_back(k);
       for (int i = 1; i < k; ++i) {
         const Index w = corners[size_t(below(c + i, k))];
-        if (out.label_of[size_t(w)] == kNone) add(w, d + 1, ring_face_index(L, w, f));
+        if (out.label_of[size_t(w)] == kNone) add(w, d + 1, ordered ? ring_face_index(L, w, f) : 0);
         if (with_signature) sig.push_back(out.label_of[size_t(w)]);
       }
       if (with_signature)
@@ -205,14 +210,26 @@ bool matches_neighbourhood(Labelling& reuse, const Level& level, CentreKind kind
   return label_into(reuse, level, kind, centre, start, radius, true, &signature);
 }
 
-bool quad_grid_labelled(Labelling& reuse, const Level& level, Index face, int radius) {
+namespace {
+
+bool quad_grid_check(Labelling& reuse, const Level& level, Index face, int radius, bool ordered) {
   if (level.face_size(face) != 4 || level.is_hole(face)) return false;
-  if (!label_into(reuse, level, CentreKind::Face, face, 0, radius, false, nullptr, true)) return false;
+  if (!label_into(reuse, level, CentreKind::Face, face, 0, radius, false, nullptr, true, ordered)) return false;
   // The breadth-first search unrolls the grid from the face; it reaches as many vertices as
   // the plane's (2 radius + 2)^2 only when no two of its paths meet again (a torus or
   // cylinder narrower than the neighbourhood wraps around).
   const size_t side = size_t(2 * radius + 2);
   return reuse.vertices.size() == side * side;
+}
+
+}  // namespace
+
+bool quad_grid_labelled(Labelling& reuse, const Level& level, Index face, int radius) {
+  return quad_grid_check(reuse, level, face, radius, true);
+}
+
+bool quad_grid_distances(Labelling& reuse, const Level& level, Index face, int radius) {
+  return quad_grid_check(reuse, level, face, radius, false);
 }
 
 Patch make_vertex_patch(PatchCells cells, const LocalConfig& c, int R) {

@@ -107,6 +107,9 @@ bool matches_neighbourhood(Labelling& reuse, const Level& level, CentreKind kind
 // extract_neighbourhood at that radius is the same level as every other such face's, up to
 // the labelling (so it has the same signature), found without extracting or signing it.
 bool quad_grid_labelled(Labelling& reuse, const Level& level, Index face, int radius);
+// The same check, with the same vertices at the same distances (sorted by distance) but in
+// another order within each ring: for callers that read only the distances (faster).
+bool quad_grid_distances(Labelling& reuse, const Level& level, Index face, int radius);
 
 // Where the labelling of a vertex starts by convention: ring edge 0 on a boundary (the
 // boundary edge), the first infinitely sharp edge on a crease, dart or corner, else 0.

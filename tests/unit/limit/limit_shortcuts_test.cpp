@@ -4,6 +4,8 @@
 // gives, and be taken only where a face's whole cut is such grid (quad_grid_labelled).
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <random>
@@ -168,6 +170,39 @@ TEST_CASE("quad_grid_labelled: a torus is grid exactly when the neighbourhood do
       CHECK(quad_grid_labelled(lab, L, f, kRadius) == wide);
     }
   }
+}
+
+TEST_CASE("quad_grid_distances: quad_grid_labelled's answer, vertices and distances, in any order within a ring") {
+  // (vertex, distance) pairs of a labelling, sorted: the same set whatever the order of labels.
+  auto pairs = [](const Labelling& lab) {
+    std::vector<std::pair<Index, int>> p;
+    for (size_t q = 0; q < lab.vertices.size(); ++q) p.emplace_back(lab.vertices[q], lab.distance[q]);
+    std::sort(p.begin(), p.end());
+    return p;
+  };
+  std::vector<Index> ends, corners;
+  std::vector<Level> levels{tagged_box(14, ends, corners)};
+  for (const auto& size : {std::array<int, 2>{9, 12}, {22, 22}, {30, 41}}) levels.push_back(test::torus(size[0], size[1]).level());
+  for (int valence : {3, 5}) {
+    LocalConfig c;
+    c.valence = valence;
+    levels.push_back(make_vertex_patch(PatchCells::Quads, c, 14).level);
+  }
+  int grid = 0;
+  for (const Level& L : levels)
+    for (int radius : {kRadius, kRadius + 4}) {
+      Labelling a, b;
+      for (Index f = 0; f < L.face_count(); ++f) {
+        INFO("level of " << L.face_count() << " faces, face " << f << ", radius " << radius);
+        const bool labelled = quad_grid_labelled(a, L, f, radius);
+        REQUIRE(quad_grid_distances(b, L, f, radius) == labelled);
+        if (!labelled) continue;
+        ++grid;
+        CHECK(std::is_sorted(b.distance.begin(), b.distance.end()));
+        CHECK(pairs(a) == pairs(b));
+      }
+    }
+  CHECK(grid > 100);
 }
 
 TEST_CASE("quad_grid_labelled is never true with an irregular vertex, a boundary or a tag within the cut") {
