@@ -198,3 +198,15 @@ TEST_CASE("a triangle under a quad scheme refuses a u far beyond its tiles (foun
 
 }  // namespace
 }  // namespace subdiv
+
+TEST_CASE("u or v written -0.0 is the parameter 0: messages and outputs echo it as 0, not -0") {
+  const SurfacePoints p = parse_points("face,u,v\n0,-0.0,-0\n", "pts.csv", unit_square_check);
+  REQUIRE(p.uv.size() == 2);
+  CHECK_FALSE(std::signbit(p.uv[0]));
+  CHECK_FALSE(std::signbit(p.uv[1]));
+  CHECK_THROWS_WITH_AS(parse_points("face,u,v\n0,-0.0,1.5\n", "pts.csv",
+                                    [](Index, double u, double v) {
+                                      return u >= 0 && v <= 1 ? std::string() : fmt::format("({}, {}) is out", u, v);
+                                    }),
+                       doctest::Contains("(0, 1.5) is out"), Error);
+}
