@@ -199,6 +199,8 @@ TEST_CASE("a triangle under a quad scheme refuses a u far beyond its tiles (foun
 }  // namespace
 }  // namespace subdiv
 
+namespace subdiv {
+
 TEST_CASE("u or v written -0.0 is the parameter 0: messages and outputs echo it as 0, not -0") {
   const SurfacePoints p = parse_points("face,u,v\n0,-0.0,-0\n", "pts.csv", unit_square_check);
   REQUIRE(p.uv.size() == 2);
@@ -210,3 +212,5 @@ TEST_CASE("u or v written -0.0 is the parameter 0: messages and outputs echo it 
                                     }),
                        doctest::Contains("(0, 1.5) is out"), Error);
 }
+
+}  // namespace subdiv
