@@ -476,23 +476,26 @@ void check_curve(const CurveScheme& curve, const std::string& path, const std::s
   }
 }
 
-// Every element whose new points the split makes needs a smooth rule: the engine has defaults
-// for the other contexts only (dart, crease, corner), so refinement would refuse every mesh.
+// A split step without any rule refines no mesh (the engine's defaults cover dart, crease and
+// corner contexts only), yet nothing in it fails a weight check. Which elements need a rule
+// depends on the mesh (a plugin's split may make edge points on boundaries only), so the
+// check is for none at all; `refine` names the rule a mesh needs.
 void check_rules_present(const Scheme& scheme, const StepRules& step, const std::string& text,
                          ValidationReport& report) {
   if (!step.is_split) return;
+  ++report.checks;
+  for (const auto& by_context : step.rules)
+    for (const auto& rule : by_context)
+      if (rule) return;
   const SplitterInfo& split = splitter_info(step.split);
-  for (const OriginKind kind : split.rule_elements) {
-    const Element e = Element(int(kind));
-    ++report.checks;
-    if (step.rules[int(e)][int(Context::Smooth)]) continue;
-    const bool in_steps = step.where.rfind(scheme.path + ": ", 0) == 0;  // "FILE: steps[i]", else "FILE"
-    const std::string where = in_steps ? step.where + ".rules" : scheme.path + ": rules";
-    report.errors.push_back({fmt::format("{}: the {} split makes new {} points, and the scheme has no rule for "
-                                         "them; add rules.{} (docs/scheme-format.md)",
-                                         placed(where, scheme.path, text), split.name, element_name(e),
-                                         element_name(e))});
-  }
+  std::string elements;
+  for (const OriginKind kind : split.rule_elements)
+    elements += fmt::format("{}rules.{}", elements.empty() ? "" : ", ", element_name(Element(int(kind))));
+  const bool in_steps = step.where.rfind(scheme.path + ": ", 0) == 0;  // "FILE: steps[i]", else "FILE"
+  const std::string where = in_steps ? step.where + ".rules" : scheme.path + ": rules";
+  report.errors.push_back({fmt::format("{}: no rules, so the {} split's new points have no positions; add {} "
+                                       "(docs/scheme-format.md)",
+                                       placed(where, scheme.path, text), split.name, elements)});
 }
 
 void check_surface(const Scheme& scheme, const SchemeMaker& make, const std::string& text, int lo, int hi,
