@@ -483,7 +483,6 @@ void check_curve(const CurveScheme& curve, const std::string& path, const std::s
 void check_rules_present(const Scheme& scheme, const StepRules& step, const std::string& text,
                          ValidationReport& report) {
   if (!step.is_split) return;
-  ++report.checks;
   for (const auto& by_context : step.rules)
     for (const auto& rule : by_context)
       if (rule) return;
