@@ -166,18 +166,7 @@ FeatureTags parse_feature_json(const std::string& text, const std::string& sourc
   try {
     root = Json::parse(text);
   } catch (const Json::parse_error& e) {
-    // The byte offset as line:column, so that editors can jump there.
-    size_t line = 1, column = 1;
-    for (size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-      if (text[i] == '\n') ++line, column = 1;
-      else ++column;
-    }
-    std::string what = e.what();
-    // nlohmann's text repeats the place ("parse error at line 2, column 29: ..."); keep the rest.
-    if (const auto pos = what.find("parse error"); pos != std::string::npos) what = what.substr(pos);
-    if (const auto pos = what.find(": "); what.rfind("parse error", 0) == 0 && pos != std::string::npos)
-      what = what.substr(pos + 2);
-    throw Error(fmt::format("{}:{}:{}: malformed JSON in the feature file: {}", source, line, column, what));
+    throw Error(json_syntax_error(text, source, e.byte, e.what(), " in the feature file"));
   } catch (const Json::exception& e) {  // anything check_json_text did not foresee
     throw Error(fmt::format("{}: JSON the parser refuses in the feature file: {}", source, e.what()));
   }

@@ -196,8 +196,8 @@ std::vector<Uv> unfold(const Level& L, Index face, bool triangles) {
 
 std::string not_c1(const Scheme& scheme, const std::string& why) {
   return fmt::format("scheme {} is not C1, so its limit has no derivatives or normals: {}; check its rules with "
-                     "`subdiv analyze {}` (the l1=l2 column)",
-                     subdiv::quoted(scheme.name), why, scheme_argument(scheme));
+                     "`subdiv analyze{} {}` (the l1=l2 column)",
+                     subdiv::quoted(scheme.name), why, scheme_plugin_options(scheme), scheme_argument(scheme));
 }
 
 std::string not_c1_derivatives(const Scheme& scheme, const std::string& why) {
@@ -210,10 +210,11 @@ std::string no_limit_mask(const Scheme& scheme, int steps, const NoLimitMask& wh
     return fmt::format("no limit mask for the vertex reached after {} step(s){}{}", steps, why.verdict.empty() ? "" : ": ",
                        why.verdict);
   return fmt::format("scheme {} does not converge at the vertex the point reaches after {} step(s) ({}), so the "
-                     "limit does not exist there; check its rules with `subdiv analyze {}` (the verdict per "
+                     "limit does not exist there; check its rules with `subdiv analyze{} {}` (the verdict per "
                      "valence) and make the vertex rule's weights give the eigenvalue 1 once and the others "
                      "smaller",
-                     subdiv::quoted(scheme.name), steps, why.failure, scheme_argument(scheme));
+                     subdiv::quoted(scheme.name), steps, why.failure, scheme_plugin_options(scheme),
+                     scheme_argument(scheme));
 }
 
 bool corner_rows(SchemeLimits& limits, const Level& L, const FacePoint& p, int corner, int step, bool triangles,

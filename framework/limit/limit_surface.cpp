@@ -140,15 +140,16 @@ std::string limit_surface_unsupported(const Scheme& scheme) {
   if (!scheme.linear())
     return fmt::format("scheme {} has non-linear rules: its limit is no fixed combination of the control points, "
                        "so it has no limit masks or stencils to evaluate; refine it uniformly instead (`subdiv "
-                       "refine MESH -s {} -l L`; Python: `subdivkit.refine`), whose finest level approaches the limit",
-                       subdiv::quoted(scheme.name), scheme_argument(scheme));
+                       "refine{} MESH -s {} -l L`; Python: `subdivkit.refine`), whose finest level approaches the limit",
+                       subdiv::quoted(scheme.name), scheme_plugin_options(scheme), scheme_argument(scheme));
   if (scheme_is_level_dependent(scheme))
     return fmt::format("scheme {} is non-stationary (its weights depend on the level l): the local subdivision "
                        "matrix changes from level to level and has no fixed eigen-structure to evaluate the limit "
-                       "with; refine it uniformly instead (`subdiv refine MESH -s {} -l L`; Python: "
+                       "with; refine it uniformly instead (`subdiv refine{} MESH -s {} -l L`; Python: "
                        "`subdivkit.refine`), or run its level-dependent levels first in a sequence whose last "
                        "scheme is stationary (`-s {}:K,STATIONARY`: that scheme's limit over the mesh they make)",
-                       subdiv::quoted(scheme.name), scheme_argument(scheme), scheme_argument(scheme));
+                       subdiv::quoted(scheme.name), scheme_plugin_options(scheme), scheme_argument(scheme),
+                       scheme_argument(scheme));
   // Every split is taken here; the mid-edge and plugins' splits are checked with the mesh
   // (mid_edge_limit_unsupported, plugin_split_limit_unsupported).
   return {};

@@ -17,7 +17,8 @@ const DataArray* named(const std::vector<DataArray>& arrays, const std::string& 
 }  // namespace
 
 LimitArrays limit_arrays(const SchemeSequence& seq, const Hierarchy& h, const RefineOptions& options,
-                         LevelData& finest, bool move_to_limit, const std::string& weights) {
+                         LevelData& finest, bool move_to_limit, const std::string& mesh_name,
+                         const std::string& weights) {
   LimitOptions lo;
   lo.features = options.features;
   lo.first_step = options.first_step + seq.total_levels;
@@ -28,7 +29,7 @@ LimitArrays limit_arrays(const SchemeSequence& seq, const Hierarchy& h, const Re
   LimitArrays out;
   const std::string not_c1_why = limits.regular_not_c1();
   if (!not_c1_why.empty() && !move_to_limit)
-    throw OptionError(not_c1(scheme, "at a regular vertex " + not_c1_why) +
+    throw OptionError((mesh_name.empty() ? "" : mesh_name + ": ") + not_c1(scheme, "at a regular vertex " + not_c1_why) +
                       "; leave out {normals} ({limit} alone moves the points to their limits)");
   if (const DataArray* w = weights.empty() ? nullptr : named(finest.point_data, weights)) {
     std::vector<double> homogeneous = finest.positions;

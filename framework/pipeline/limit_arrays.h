@@ -20,12 +20,14 @@ struct LimitArrays {
 
 // A scheme that is not C1 where the mesh is regular (SchemeLimits::regular_not_c1) has no
 // limit normals: with move_to_limit the positions are moved and the normal arrays left out
-// with a warning; without (normals alone were asked for) an OptionError naming {normals}.
+// with a warning; without (normals alone were asked for) an OptionError naming {normals},
+// its message starting with `mesh_name` as the pipeline's other refusals of a mesh do.
 // `finest` is level h.levels.back()'s data; with move_to_limit its positions and double point
 // arrays are replaced by their limits. With `weights` (the name of finest's rational weights,
 // rational_weights.h) the limits are those of the rational surface: the masks applied to
 // (w·p, w), the position projected, the tangents by the quotient rule.
 LimitArrays limit_arrays(const SchemeSequence& seq, const Hierarchy& h, const RefineOptions& options,
-                         LevelData& finest, bool move_to_limit, const std::string& weights = {});
+                         LevelData& finest, bool move_to_limit, const std::string& mesh_name,
+                         const std::string& weights = {});
 
 }  // namespace subdiv

@@ -68,7 +68,9 @@ std::string parse_field(std::string_view text, Index& out) {
 // is already close to it, and lies in the domain; one too large (1e400) is refused.
 std::string parse_field(std::string_view text, double& out) {
   switch (parse_decimal(unquoted(text), out)) {
-    case DecimalParse::ok: return {};
+    case DecimalParse::ok:
+      out += 0.0;  // -0.0 is the parameter 0 (the domain has no signed zero): echoed as 0, not "-0"
+      return {};
     case DecimalParse::overflow: return "is out of range: larger than a double holds (about 1.8e308)";
     case DecimalParse::not_a_number: break;
   }

@@ -476,6 +476,7 @@ RefineResult run_refinement(PreparedRefinement&& p, const RefineRequest& r) {
   if (r.limit_positions || r.limit_normals) {
     say(r, r.limit_positions ? "limit positions and normals" : "limit normals");
     LimitArrays limits = limit_arrays(p.sequence, out.hierarchy, p.options, out.levels.back(), r.limit_positions,
+                                      r.mesh_name,
                                       p.rational ? output_weights_name(p) : std::string());
     out.finest_point_data = std::move(limits.point_data);
     out.warnings.insert(out.warnings.end(), limits.warnings.begin(), limits.warnings.end());

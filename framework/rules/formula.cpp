@@ -1,6 +1,7 @@
 #include "framework/rules/formula.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <deque>
 #include <fmt/format.h>
@@ -138,6 +139,12 @@ struct FormulaSet::Impl {
     for (const auto& [name, ptr] : parser->GetUsedVar()) {
       // GetUsedVar lists a name nothing defines with no storage. Said here, when the scheme is
       // loaded, rather than as muParser's "Unexpected token" at the first valence evaluated.
+      // muParser reads a number it cannot hold in a double (1e400) as a name.
+      if (ptr == nullptr && (std::isdigit(static_cast<unsigned char>(name[0])) || name[0] == '.'))
+        throw Error(fmt::format("{}: formula {} has the number {}, which a double cannot hold (its magnitude must be "
+                                "below about 1.8e308, and 0 or above about 2.2e-308): write the number within that "
+                                "range",
+                                where, subdiv::quoted(shortened(expression)), subdiv::quoted(name)));
       if (ptr == nullptr)
         throw Error(fmt::format("{}: formula {} uses {}, which is not defined: declare it under \"parameters\" "
                                 "(with a default) or \"definitions\" (before this use), or correct its spelling. {}",

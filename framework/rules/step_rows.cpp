@@ -413,7 +413,9 @@ void FirstBadRow::report_if_any(const StepContext& s, const RuleInputs& in, cons
   throw Error(fmt::format(
       "{}: the new point of {} {} has weights summing to {} instead of 1 ({} {}); every rule must "
       "be affine and finite: check the weight formulas of {}",
-      s.source, element_name(e), p, sum, e == Element::Vertex ? "valence" : "size", size, rule_places(s, e, p)));
+      s.source, element_name(e), p,
+      std::isnan(sum) ? std::string("NaN (a formula left its domain there)") : fmt::format("{}", sum),
+      e == Element::Vertex ? "valence" : "size", size, rule_places(s, e, p)));
 }
 
 ChunkedRows build_rows(const StepContext& s, const RuleInputs& in, const ChildGroup& group, RowPlanStore& plans) {

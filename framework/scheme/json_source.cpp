@@ -27,15 +27,7 @@ nlohmann::ordered_json parse_json_text(const std::string& text, const std::strin
   try {
     return nlohmann::ordered_json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    // Turn the byte offset into line:column so editors can jump there.
-    size_t line = 1, column = 1;
-    for (size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-      if (text[i] == '\n') ++line, column = 1;
-      else ++column;
-    }
-    std::string what = e.what();
-    if (auto pos = what.find("parse error"); pos != std::string::npos) what = what.substr(pos);
-    throw Error(fmt::format("{}:{}:{}: malformed JSON: {}", label, line, column, what));
+    throw Error(json_syntax_error(text, label, e.byte, e.what()));
   } catch (const nlohmann::json::exception& e) {  // anything check_json_text did not foresee
     throw Error(fmt::format("{}: JSON the parser refuses: {}", label, e.what()));
   }

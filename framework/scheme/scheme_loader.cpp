@@ -445,8 +445,9 @@ RuleTable parse_rules(const Json& rules, const Place& at, const std::set<std::st
 }
 
 SplitKind parse_split(const Json& value, const Place& at) {
+  const std::string name = as_string(value, at);  // its refusal names the place already
   try {
-    return split_kind_from_name(as_string(value, at));
+    return split_kind_from_name(name);
   } catch (const Error& e) {
     fail(at, e.what());
   }

@@ -94,6 +94,21 @@ std::string scheme_argument(const Scheme& scheme) {
   return scheme.path;
 }
 
+std::string scheme_plugin_options(const Scheme& scheme) {
+  std::vector<std::string> origins;
+  if (const CodeSchemeEntry* code = find_code_scheme(scheme.name)) origins.push_back(code->origin);
+  for (const StepRules& step : scheme.steps) origins.push_back(splitter_info(step.split).origin);
+  std::vector<std::string> files;
+  CodeSchemes& c = code_schemes();
+  const std::lock_guard lock(c.mutex);
+  for (const std::string& origin : origins)
+    for (const CodeSchemeEntry& e : c.entries)  // a plugin's file is known through what it registered
+      if (e.origin == origin && std::find(files.begin(), files.end(), e.path) == files.end()) files.push_back(e.path);
+  std::string out;
+  for (const std::string& f : files) out += " --plugin " + f;
+  return out;
+}
+
 std::shared_ptr<const Scheme> load_scheme(const std::string& name_or_path, const ParameterOverrides& overrides) {
   if (const CodeSchemeEntry* code = looks_like_path(name_or_path) ? nullptr : find_code_scheme(name_or_path)) {
     if (code->kind != "surface")

@@ -25,6 +25,12 @@ std::string scheme_file_path(const std::string& name_or_path);
 // it (built-in, search path, plugin), else its file.
 std::string scheme_argument(const Scheme& scheme);
 
+// The options a command line needs before `scheme_argument(scheme)` finds the scheme again:
+// " --plugin FILE" for each plugin that registered the scheme or its splits ("" for a
+// scheme of built-in parts). A plugin loaded from SUBDIV_PLUGIN_PATH or the installed folder
+// would be found without it; naming it again is harmless (each file is loaded once).
+std::string scheme_plugin_options(const Scheme& scheme);
+
 // A curve scheme by built-in name, plugin name or path. Overrides it has no parameter for
 // are an error, unless `used` is given: then the names it took are added there.
 std::shared_ptr<const CurveScheme> load_curve(const std::string& name_or_path, const ParameterOverrides& overrides = {},

@@ -12,6 +12,7 @@
 #include "framework/scheme/scheme_loader.h"
 #include "framework/scheme/scheme_registry.h"
 #include "framework/util/error.h"
+#include "framework/util/json_path_line.h"
 #include "framework/util/option_spelling.h"
 #include "framework/util/quoted_text.h"
 
@@ -27,11 +28,20 @@ std::string read_text(const std::string& path) {
   return s.str();
 }
 
-// The line where a rule's text first appears, so editors can jump to it.
+// The line where a formula's text first appears, so editors can jump to it (curve rules,
+// which carry no place of their own).
 int line_of(const std::string& text, const std::string& needle) {
   const size_t at = needle.empty() ? std::string::npos : text.find(needle);
   if (at == std::string::npos) return 0;
   return 1 + int(std::count(text.begin(), text.begin() + at, '\n'));
+}
+
+// A rule's or term's place, "FILE: rules.face[0]", as "FILE:LINE: rules.face[0]": the line of
+// its JSON path, not of the first text equal to its formula (which may be another rule's, or
+// none when the rule has no terms). Unchanged where the text has no such path (a plugin's scheme).
+std::string placed(const std::string& where, const std::string& file, const std::string& text) {
+  const std::string with_line = with_json_line(where + ": ", file, text);
+  return with_line.substr(0, with_line.size() - 2);
 }
 
 // The number of points a role has around an element of the given sizes; new points count
@@ -252,8 +262,7 @@ void check_roles(const Scheme& scheme, const StepRules& step, const std::string&
                             escaped(faces_name(needs)));
         if (why.empty()) continue;
         ++report.checks;
-        report.errors.push_back({fmt::format("{}:{}: {} ({}): role {} needs {}, but {}", scheme.path,
-                                             line_of(text, t.weight), t.where.substr(t.where.find(": ") + 2),
+        report.errors.push_back({fmt::format("{} ({}): role {} needs {}, but {}", placed(t.where, scheme.path, text),
                                              context_name(Context(c)), subdiv::quoted(role_name(t.role)), faces_name(needs), why)});
       }
     }
@@ -316,9 +325,8 @@ void check_crease_ends(const Scheme& scheme, const StepRules& step, const Weight
     const Rule& source = *slot;
     const CompiledRule& compiled =
         length == 0 ? tables.crease_ends.by_distance[size_t(d)] : tables.crease_ends.by_length.at(length)[size_t(d)];
-    const std::string where = fmt::format(
-        "{}:{}: {} (crease, distance {}{})", scheme.path, line_of(text, source.terms.empty() ? "" : source.terms[0].weight),
-        source.where.substr(source.where.find(": ") + 2), d, length == 0 ? "" : fmt::format(", length {}", length));
+    const std::string where = fmt::format("{} (crease, distance {}{})", placed(source.where, scheme.path, text), d,
+                                          length == 0 ? "" : fmt::format(", length {}", length));
     for (int n = lo; n <= hi; ++n) {
       ++report.checks;
       const double sum = rule_sum(compiled, {n, 4, 0, 0}, Element::Vertex);
@@ -339,9 +347,8 @@ void check_step(const Scheme& scheme, const StepRules& step, const std::string& 
       if (!step.rules[e][c]) continue;  // engine defaults are affine by construction
       const CompiledRule& rule = tables.rules[e][c];
       const Rule& source = *step.rules[e][c];
-      const std::string where = fmt::format("{}:{}: {} ({})", scheme.path,
-                                            line_of(text, source.terms.empty() ? "" : source.terms[0].weight),
-                                            source.where.substr(source.where.find(": ") + 2), context_name(Context(c)));
+      const std::string where =
+          fmt::format("{} ({})", placed(source.where, scheme.path, text), context_name(Context(c)));
       if (Element(e) == Element::Face && uses_corner_roles(rule)) {
         check_corner_rule(rule, where, lo, hi, report, at_parameters);
         continue;
@@ -469,6 +476,27 @@ void check_curve(const CurveScheme& curve, const std::string& path, const std::s
   }
 }
 
+// A split step without any rule refines no mesh (the engine's defaults cover dart, crease and
+// corner contexts only), yet nothing in it fails a weight check. Which elements need a rule
+// depends on the mesh (a plugin's split may make edge points on boundaries only), so the
+// check is for none at all; `refine` names the rule a mesh needs.
+void check_rules_present(const Scheme& scheme, const StepRules& step, const std::string& text,
+                         ValidationReport& report) {
+  if (!step.is_split) return;
+  for (const auto& by_context : step.rules)
+    for (const auto& rule : by_context)
+      if (rule) return;
+  const SplitterInfo& split = splitter_info(step.split);
+  std::string elements;
+  for (const OriginKind kind : split.rule_elements)
+    elements += fmt::format("{}rules.{}", elements.empty() ? "" : ", ", element_name(Element(int(kind))));
+  const bool in_steps = step.where.rfind(scheme.path + ": ", 0) == 0;  // "FILE: steps[i]", else "FILE"
+  const std::string where = in_steps ? step.where + ".rules" : scheme.path + ": rules";
+  report.errors.push_back({fmt::format("{}: no rules, so the {} split's new points have no positions; add {} "
+                                       "(docs/scheme-format.md)",
+                                       placed(where, scheme.path, text), split.name, elements)});
+}
+
 void check_surface(const Scheme& scheme, const SchemeMaker& make, const std::string& text, int lo, int hi,
                    ValidationReport& report) {
   for (const auto& step : scheme.steps) {
@@ -476,6 +504,7 @@ void check_surface(const Scheme& scheme, const SchemeMaker& make, const std::str
       report.skipped = fmt::format("{} has rules written in C++, which only a mesh can check", step.where.empty() ? scheme.name : step.where);
       continue;
     }
+    check_rules_present(scheme, step, text, report);
     check_roles(scheme, step, text, report);
     check_step(scheme, step, text, lo, hi, report);
   }

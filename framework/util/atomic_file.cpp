@@ -14,6 +14,7 @@
 
 #include "framework/util/error.h"
 #include "framework/util/input_file.h"
+#include "framework/util/interrupt_cleanup.h"
 #include "framework/util/quoted_text.h"
 
 namespace subdiv {
@@ -169,7 +170,7 @@ fs::path StagedFiles::stage(const fs::path& target) {
   remove_stale_temporaries(target);
   const fs::path tmp = temporary_name(target);
   const int fd = create_locked(tmp, target);
-  staged_.push_back({tmp, target, fd});
+  staged_.push_back({tmp, target, fd, track_temporary(tmp)});
   return tmp;
 }
 
@@ -178,6 +179,7 @@ void StagedFiles::commit() {
   // are still removed by discard(), so no stray half files stay behind.
   while (!staged_.empty()) {
     rename_into_place(staged_.front().tmp, staged_.front().target);
+    untrack_temporary(staged_.front().signal_slot);
     ::close(staged_.front().lock_fd);
     staged_.erase(staged_.begin());
   }
@@ -187,6 +189,7 @@ void StagedFiles::discard() noexcept {
   for (const Staged& s : staged_) {
     std::error_code ec;
     fs::remove(s.tmp, ec);
+    untrack_temporary(s.signal_slot);
     ::close(s.lock_fd);
   }
   staged_.clear();

@@ -4,7 +4,8 @@
 // rename() within one directory is atomic on POSIX file systems, so a target is either
 // the old file or the complete new one, never a mix. Each temporary is locked (flock) by
 // its writer while it exists; writing a target again removes the unlocked temporaries of
-// that target, which a killed run (kill -9, power loss) left behind.
+// that target, which a killed run (kill -9, power loss) left behind; Ctrl-C, SIGTERM and
+// SIGHUP remove them as they end the run (interrupt_cleanup.h).
 #include <filesystem>
 #include <functional>
 #include <utility>
@@ -38,6 +39,7 @@ private:
   struct Staged {
     std::filesystem::path tmp, target;
     int lock_fd;  // holds the temporary's lock until it is renamed or removed
+    int signal_slot;  // removal on an interrupt (interrupt_cleanup.h)
   };
   std::vector<Staged> staged_;
 };

@@ -1,5 +1,6 @@
 #include "framework/util/json_text_check.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <fmt/format.h>
@@ -35,7 +36,37 @@ bool is_number_char(char c) {
   return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E';
 }
 
+// The fix for the usual slips at the character the parser stopped at (0-based `at`); empty
+// when it is none of them.
+std::string syntax_fix(std::string_view text, std::size_t at) {
+  if (at >= text.size()) return {};
+  const char c = text[at];
+  if (c == '}' || c == ']') {
+    std::size_t before = at;
+    while (before > 0 && std::isspace(static_cast<unsigned char>(text[before - 1]))) --before;
+    if (before == 0 || text[before - 1] != ',') return {};
+    const Place comma = place_of(text, before - 1);
+    return fmt::format("; the comma at line {}, column {} follows the last {}, and JSON allows none there: remove it",
+                       comma.line, comma.column, c == '}' ? "member of the object" : "element of the array");
+  }
+  if (c == '/' || c == '#') return "; JSON has no comments: remove it (a note may go into \"description\")";
+  if (c == '\'') return "; JSON strings take double quotes (\"...\"), not single ones";
+  return {};
+}
+
 }  // namespace
+
+std::string json_syntax_error(std::string_view text, const std::string& label, std::size_t byte, std::string what,
+                              const std::string& in_what) {
+  const std::size_t at = byte > 0 ? byte - 1 : 0;
+  const Place p = place_of(text, at);
+  // nlohmann's text repeats the place ("[json.exception.parse_error.101] parse error at line 2,
+  // column 29: ..."); keep the rest.
+  if (const auto pos = what.find("parse error"); pos != std::string::npos) what = what.substr(pos);
+  if (const auto pos = what.find(": "); what.rfind("parse error", 0) == 0 && pos != std::string::npos)
+    what = what.substr(pos + 2);
+  return fmt::format("{}:{}:{}: malformed JSON{}: {}{}", label, p.line, p.column, in_what, what, syntax_fix(text, at));
+}
 
 void check_json_text(std::string_view text, const std::string& label) {
   // nlohmann stops at a NUL byte and takes what came before as the whole file.

@@ -15,4 +15,11 @@ constexpr int kMaxJsonDepth = 100;
 // Anything else malformed is left for the parser to report.
 void check_json_text(std::string_view text, const std::string& label);
 
+// The parser's syntax error as "<label>:<line>:<column>: malformed JSON<in_what>: <what>", where
+// `byte` is the 1-based offset nlohmann's parse_error gives and `what` its text (the place it
+// repeats is cut). What first-day authors write most gets its fix: a comma after the last
+// member of an object or array, a comment, a string in single quotes.
+std::string json_syntax_error(std::string_view text, const std::string& label, std::size_t byte, std::string what,
+                              const std::string& in_what = "");
+
 }  // namespace subdiv

@@ -14,7 +14,7 @@ import numpy as np
 from . import _subdivkit
 from ._subdivkit import Error, Scheme
 from ._checks import check_mesh, check_progress, check_threads, check_whole
-from .mesh import Mesh, _data_shapes_like, _face_varying_triples
+from .mesh import Mesh, _as_array, _data_shapes_like, _face_varying_triples
 from .refinement import _scipy_sparse
 
 
@@ -27,7 +27,7 @@ def _check_order(derivatives):
 def _points(faces, uv):
     """(n,) int32 faces and (n, 2) float64 parameters; a single point may be given as a
     scalar face and a pair."""
-    f = np.asarray(faces)
+    f = _as_array(faces, "faces", "an (n,) array of face numbers")
     if f.size and f.dtype.kind not in "iu":
         raise Error(f"faces: give an int array of face numbers, got dtype {f.dtype}")
     # Checked before the cast to int32, which would wrap 2**32 + 1 to face 1 without a word.
@@ -35,7 +35,7 @@ def _points(faces, uv):
         raise Error(f"faces: face number {int(f.max()) if int(f.max()) >= 2**31 else int(f.min())} is beyond "
                     "32-bit face numbers")
     f = np.ascontiguousarray(np.atleast_1d(f), dtype=np.int32)
-    u = np.asarray(uv)
+    u = _as_array(uv, "uv", "an (n, 2) array: one row (u, v) per point")
     if u.size and u.dtype.kind not in "fiu":  # complex parameters would lose their imaginary part
         raise Error(f"uv: give numbers, got an array of dtype {u.dtype}")
     p = np.ascontiguousarray(u, dtype=np.float64)
@@ -189,7 +189,7 @@ class LimitSurface:
         f, p = _points(faces, uv)
         values, channels = None, 3
         if points is not None:
-            given = np.asarray(points)
+            given = _as_array(points, "points", "one row of values per control point")
             if given.size and given.dtype.kind not in "fiu":  # as uv: strings, objects, complex
                 raise Error(f"points: give numbers, got an array of dtype {given.dtype}")
             values = np.ascontiguousarray(given, dtype=np.float64)

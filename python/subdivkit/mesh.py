@@ -44,8 +44,18 @@ INFINITELY_SHARP = 10.0
 ROLES = ("data", "normals", "texture_coordinates", "color")
 
 
+def _as_array(values, what, expected):
+    """np.asarray(values), or an Error naming the argument where numpy cannot make one array
+    of the nested lists (rows of different lengths), instead of numpy's bare ValueError."""
+    try:
+        return np.asarray(values)
+    except ValueError as e:
+        raise Error(f"{what}: the rows have different lengths, so they make no array ({e}); "
+                    f"give {expected}") from None
+
+
 def _as_points(points, what="points"):
-    a = np.asarray(points)
+    a = _as_array(points, what, "an (n, 3) array: one row (x, y, z) per point")
     if a.dtype.kind not in "fiu":
         raise Error(f"{what}: expected numbers, got an array of dtype {a.dtype}")
     if a.ndim != 2 or a.shape[1] != 3:
@@ -71,7 +81,7 @@ def _as_indices(values, what, shape_hint="a 1-d array"):
 def _as_sharpness(values, count, what):
     if values is None:
         values = INFINITELY_SHARP
-    a = np.asarray(values)
+    a = _as_array(values, what, f"one number per entry ({count})")
     if a.dtype.kind not in "fiu":
         raise Error(f"{what}: expected numbers, got dtype {a.dtype}")
     if a.ndim == 0:
@@ -114,7 +124,8 @@ def _as_cells(cells, offsets, what, offsets_name):
 
 
 def _as_pairs(creases):
-    pairs = np.zeros((0, 2), dtype=np.int32) if creases is None else np.asarray(creases)
+    pairs = np.zeros((0, 2), dtype=np.int32) if creases is None else _as_array(
+        creases, "creases", "an (m, 2) array of vertex pairs")
     if pairs.size == 0:
         pairs = np.zeros((0, 2), dtype=np.int32)
     if pairs.ndim != 2 or pairs.shape[1] != 2:
@@ -336,7 +347,7 @@ def _data_arrays(data, roles, rows, what):
     for key, values in (data or {}).items():
         if not str(key):  # a .vtp array without a name cannot be written, nor told apart when read
             raise Error(f"{what}: an array has the empty name ''; give it a name")
-        a = np.asarray(values)
+        a = _as_array(values, f"{what} {_quoted(key)}", f"{rows} rows of equal length")
         if a.dtype.kind not in "fiub":
             raise Error(f"{what} {_quoted(key)}: expected numbers, got dtype {a.dtype}")
         if a.ndim not in (1, 2) or a.shape[0] != rows:

@@ -292,3 +292,26 @@ def test_a_data_array_without_a_name_is_refused_before_refinement(tmp_path):
     with pytest.raises(sk.Error, match=r"^point data: an array has the empty name ''"):
         sk.write_mesh(tmp_path / "out.vtp", nameless)
     assert not (tmp_path / "out.vtp").exists()
+
+
+def test_ragged_lists_name_the_argument_and_the_shape_to_give():
+    """Nested lists whose rows differ in length make no NumPy array: numpy's bare ValueError
+    ("setting an array element with a sequence") named neither the argument nor the fix."""
+    cube = sk.read_mesh(MESHES / "cube.obj")
+    surface = sk.LimitSurface(cube, "catmull-clark")
+    cases = [
+        (lambda: surface.evaluate([0, 1], [[0.5, 0.5], [0.5]]), "uv", "(n, 2) array"),
+        (lambda: surface.evaluate([[0], [1, 2]], [[0.5, 0.5], [0.5, 0.5]]), "faces", "(n,) array"),
+        (lambda: sk.evaluate(cube, "catmull-clark", [0, 1], [[0.5, 0.5], [0.5]]), "uv", "(n, 2) array"),
+        (lambda: surface.evaluate([0], [[0.5, 0.5]], points=[[0, 0, 0]] * 7 + [[0, 0]]), "points",
+         "one row of values per control point"),
+        (lambda: sk.Mesh([[0, 0, 0], [1, 0, 0], [0, 1]], [[0, 1, 2]]), "mesh.points", "(n, 3) array"),
+        (lambda: sk.Mesh(np.eye(3), [[0, 1, 2]], creases=[[0, 1], [1]]), "creases", "(m, 2) array"),
+        (lambda: sk.refine(sk.Mesh(np.eye(3), [[0, 1, 2]], point_data={"t": [[1, 2], [3], [4, 5]]}), "loop", 1),
+         "point data 't'", "3 rows of equal length"),
+    ]
+    for call, name, fix in cases:
+        with pytest.raises(sk.Error) as e:
+            call()
+        assert str(e.value).startswith(f"{name}: the rows have different lengths"), str(e.value)
+        assert fix in str(e.value)

@@ -1,6 +1,7 @@
 // `subdiv analyze SCHEME`: convergence and smoothness of a scheme. Surface schemes: the
 // eigen-analysis at extraordinary vertices (faces, for dual schemes) for a range of
 // valences; curve schemes: the symbol analysis. Reports as a table, JSON and SVG.
+#include <algorithm>
 #include <filesystem>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -112,6 +113,19 @@ void run_curve(const AnalyzeArgs& a) {
   if (!a.vtk_dir.empty()) print_safe("(--vtk: curve schemes have no characteristic map to write)\n");
 }
 
+// A scheme whose rules refine no neighbourhood (weights that are not affine or not finite, a
+// rule missing) has no analysis at any valence: that is an error in the scheme, not a verdict
+// on it, and exits as one, before any report file is written.
+void refuse_unanalysable(const Scheme& scheme, const std::vector<SurfaceAnalysis>& interior) {
+  if (interior.empty() || std::any_of(interior.begin(), interior.end(),
+                                      [](const SurfaceAnalysis& r) { return r.error.empty(); }))
+    return;
+  throw Error(fmt::format("scheme {} could not be analysed at any valence: {}; check its rules with `subdiv "
+                          "validate{} {}`",
+                          subdiv::quoted(scheme.name), interior.front().error, scheme_plugin_options(scheme),
+                          scheme_argument(scheme)));
+}
+
 void run_surface(const AnalyzeArgs& a) {
   const auto scheme = load_scheme(a.scheme, parse_params(a.params));
   SurfaceAnalysisOptions options;
@@ -168,6 +182,7 @@ void run_surface(const AnalyzeArgs& a) {
   for (const auto& r : interior) c1 += r.c1;
   print_safe("\n{} of {} valences C1 (eigenvalue conditions and a regular, injective characteristic map)\n", c1,
              interior.size());
+  refuse_unanalysable(*scheme, interior);
   if (!a.json_file.empty()) {
     nlohmann::json j = surface_report_json(interior);
     if (!boundary.empty()) {

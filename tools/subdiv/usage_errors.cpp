@@ -1,6 +1,7 @@
 #include "usage_errors.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <fmt/format.h>
 #include "framework/util/quoted_text.h"
 
@@ -64,8 +65,27 @@ std::string reworded(const CLI::ParseError& e) {
                        what.substr(colon + 2, what.size() - colon - 2 - 8));
   // CLI::NonNegativeNumber's range ends at the largest double, which CLI11 prints in full
   // (309 digits): "--threads: Value -1 not in range 0.000000 to 1797...".
-  if (const size_t at = what.find(" not in range 0.000000 to 17976931348623157"); at != std::string::npos)
+  // It says the same of a value that is no number at all ("--threads: Value abc not in range").
+  if (const size_t at = what.find(" not in range 0.000000 to 17976931348623157"); at != std::string::npos) {
+    const size_t value = what.find(": Value ");
+    if (value != std::string::npos && value < at) {
+      const std::string given = what.substr(value + 8, at - value - 8);
+      char* end = nullptr;
+      std::strtod(given.c_str(), &end);
+      if (given.empty() || *end != '\0')
+        return fmt::format("{}: {} is not a number; give a whole number, 0 or more", what.substr(0, value),
+                           subdiv::quoted(given));
+    }
     return what.substr(0, at) + " is negative; give 0 or more";
+  }
+  // A value the option's type cannot hold: "Could not convert: --threads = 1e3".
+  if (const std::string prefix = "Could not convert: "; what.rfind(prefix, 0) == 0) {
+    const size_t equals = what.find(" = ", prefix.size());
+    if (equals != std::string::npos)
+      return fmt::format("{}: {} is not a value of its type (a whole number is written without a point or an "
+                         "exponent); see its type in --help",
+                         what.substr(prefix.size(), equals - prefix.size()), subdiv::quoted(what.substr(equals + 3)));
+  }
   return what;
 }
 

@@ -123,7 +123,7 @@ TEST_CASE("refine --normals with a scheme that is not C1 is refused; --limit mov
   const fs::path out = dir / "out.vtp";
   const auto normals = run_subdiv("refine " + kCube + " -s " + scheme.string() + " -l 1 --normals -o " + out.string());
   CHECK(normals.exit_code == 1);
-  CHECK_MESSAGE(contains(normals.output, "scheme 'stiff' is not C1, so its limit has no derivatives or normals: at a "
+  CHECK_MESSAGE(contains(normals.output, kCube + ": scheme 'stiff' is not C1, so its limit has no derivatives or normals: at a "
                                          "regular vertex its subdominant eigenvalues are 0.569"),
                 normals.output);
   CHECK(contains(normals.output, "`subdiv analyze " + scheme.string() + "`"));

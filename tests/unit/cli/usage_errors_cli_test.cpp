@@ -37,6 +37,10 @@ TEST_CASE("usage errors exit 2 in the tool's voice, with a suggestion where a wo
       // CLI11 printed the largest double in full as the upper end of "0 or more".
       {"refine " + cube + out + " -j -1", "--threads: Value -1 is negative; give 0 or more\n"},
       {"analyze loop --level -2", "--level: Value -2 is negative; give 0 or more\n"},
+      // A value that is no number was "negative" too; one the type cannot hold was CLI11's
+      // "Could not convert: --threads = 1e3".
+      {"refine " + cube + out + " -j abc", "--threads: 'abc' is not a number; give a whole number, 0 or more\n"},
+      {"refine " + cube + out + " -j 1e3", "--threads: '1e3' is not a value of its type"},
   };
   for (const Usage& u : cases) {
     CAPTURE(u.args);

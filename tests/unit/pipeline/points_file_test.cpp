@@ -122,7 +122,7 @@ TEST_CASE("a u or v too small for a double is 0, as a subnormal is; one too larg
                                        "pts.csv", unit_square_check);
   REQUIRE(p.size() == 4);
   CHECK(p.uv == std::vector<double>{0, 4e-320, 0, 0, 0, 0, 0, 0.5});
-  CHECK(std::signbit(p.uv[2]));  // -1e-400 keeps its sign, as -0 would
+  CHECK_FALSE(std::signbit(p.uv[2]));  // -1e-400 is the parameter 0, as -0 is (no "-0" echoed)
   for (const char* big : {"1e400", "-1e400", "1e+99999999999999999999", "0.001e312"}) {
     CAPTURE(big);
     const std::string expected = std::string("v = '") + big + "' is out of range: larger than a double holds";
@@ -197,4 +197,20 @@ TEST_CASE("a triangle under a quad scheme refuses a u far beyond its tiles (foun
 }
 
 }  // namespace
+}  // namespace subdiv
+
+namespace subdiv {
+
+TEST_CASE("u or v written -0.0 is the parameter 0: messages and outputs echo it as 0, not -0") {
+  const SurfacePoints p = parse_points("face,u,v\n0,-0.0,-0\n", "pts.csv", unit_square_check);
+  REQUIRE(p.uv.size() == 2);
+  CHECK_FALSE(std::signbit(p.uv[0]));
+  CHECK_FALSE(std::signbit(p.uv[1]));
+  CHECK_THROWS_WITH_AS(parse_points("face,u,v\n0,-0.0,1.5\n", "pts.csv",
+                                    [](Index, double u, double v) {
+                                      return u >= 0 && v <= 1 ? std::string() : fmt::format("({}, {}) is out", u, v);
+                                    }),
+                       doctest::Contains("(0, 1.5) is out"), Error);
+}
+
 }  // namespace subdiv

@@ -97,6 +97,31 @@ TEST_CASE("SUBDIV_PLUGIN_PATH: files and folders are searched") {
   CHECK(contains(r.output, "loaded   kobbelt-quad 1.0.0  " + plugin_path("subdiv_kobbelt_quad") + " (SUBDIV_PLUGIN_PATH)"));
 }
 
+TEST_CASE("refine --normals with a plugin split's scheme that is not C1: the advice names the mesh and --plugin") {
+  // The sqrt2 plugin's scheme keeping 0.9 of the vertex: not C1 at regular vertices. The
+  // refusal's `subdiv analyze` must load the plugin, or the split is unknown there.
+  const auto dir = fresh_dir("cli-plugin-not-c1");
+  const std::string torus = source_path("examples/meshes/torus-quads.obj");
+  std::ofstream(dir / "stiff-sqrt2.json") << R"({"name": "stiff-sqrt2", "split": "sqrt2", "curve": "cubic-bspline",
+    "rules": {"face": [{"sum": "vertices", "w": "1/k"}],
+              "vertex": [{"at": "self", "w": "0.9"}, {"sum": "faces", "new": "face", "w": "0.1/n"}],
+              "edge": [{"sum": "ends", "w": "1/2"}]}})";
+  const std::string json = (dir / "stiff-sqrt2.json").string();
+  const fs::path out = dir / "out.vtp";
+  const CliResult r =
+      run("refine " + torus + plugin("subdiv_sqrt2") + " -s " + json + " -l 2 --normals -o " + out.string());
+  INFO(r.output);
+  CHECK(r.exit_code == 1);
+  CHECK(contains(r.output, "subdiv: error: " + torus + ": scheme 'stiff-sqrt2' is not C1"));
+  const std::string advice = "subdiv analyze" + plugin("subdiv_sqrt2") + " " + json;
+  CHECK(contains(r.output, "`" + advice + "`"));
+  CHECK_FALSE(fs::exists(out));
+  // The advice runs as written.
+  const CliResult analyze = run(advice.substr(std::string("subdiv ").size()) + " --valence 4");
+  CHECK_MESSAGE(analyze.exit_code == 0, analyze.output);
+  CHECK(contains(analyze.output, "0 of 1 valences C1"));
+}
+
 TEST_CASE("refine with plugin schemes; a refused plugin found by search is a warning and the others work") {
   const auto dir = fresh_dir("cli-plugin-refine");
   const std::string cube = source_path("examples/meshes/cube.obj");
