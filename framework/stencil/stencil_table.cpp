@@ -14,12 +14,12 @@ namespace {
 // Rows per parallel task: large enough to amortise scheduling, small enough to balance.
 constexpr Index kGrain = 2048;
 
-// The arrays as raw pointers: the output cannot alias them, but through the vectors the
-// compiler would reload their data pointers after every store.
-// `rows` (when not null) picks the rows written to dst's places begin..end.
+// Rows begin..end into dst's places begin..end, or with `rows`, rows[begin..end]. The arrays
+// as raw pointers: the output cannot alias them, but through the vectors the compiler would
+// reload their data pointers after every store.
 template <int Channels>
 void sum_rows(const StencilTable& t, const double* __restrict src, double* __restrict dst, Index begin, Index end,
-                const Index* rows = nullptr) {
+              const Index* rows = nullptr) {
   const Index* __restrict offsets = t.offsets.data();
   const Index* __restrict indices = t.indices.data();
   const double* __restrict weights = t.weights.data();
@@ -36,7 +36,7 @@ void sum_rows(const StencilTable& t, const double* __restrict src, double* __res
 }
 
 void sum_rows_any(const StencilTable& t, const double* src, double* dst, int channels, Index begin, Index end,
-                    const Index* rows = nullptr) {
+                  const Index* rows = nullptr) {
   for (Index k = begin; k < end; ++k) {
     const Index r = rows ? rows[k] : k;
     double* out = dst + size_t(k) * channels;

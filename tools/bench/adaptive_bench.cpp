@@ -4,10 +4,9 @@
 // (the patches a renderer draws) + PrimvarRefiner::Interpolate of the points over the levels,
 // Catmull-Clark, on the same meshes, same run, one thread. Rounds alternate between the two;
 // the best round of each is reported with the ratio and the load average, by wall time and
-// by CPU time (user + system, which a shared machine's waits for a core do not inflate). Ours twice: as one
-// call pays (its weight tables compiled), and with the tables kept between calls
-// (AdaptiveTables). A program, not a
-// test; the numbers are in docs/limit.md.
+// by CPU time (user + system, which a shared machine's waits for a core do not inflate).
+// Ours twice: as one call pays (its weight tables compiled), and with the tables kept
+// between calls (AdaptiveTables). A program, not a test; the numbers are in docs/limit.md.
 //
 //   subdiv-adaptive-bench [levels] [rounds] [mesh.obj ...]   (run it under `taskset -c 0`)
 #include <algorithm>
