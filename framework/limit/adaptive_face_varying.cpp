@@ -124,7 +124,7 @@ AdaptiveValueStage refine_value_stage(const Scheme& scheme, const AdaptiveStage&
   for (Index v : piece.base_vertex)
     piece_values.insert(piece_values.end(), s.values.begin() + std::ptrdiff_t(components) * v,
                         s.values.begin() + std::ptrdiff_t(components) * (v + 1));
-  n.values = gather_tuples(h.stencils[0].apply(piece_values, components), components, used);
+  n.values = h.stencils[0].apply_rows(piece_values, used, components);
 
   s.vertex_child.assign(size_t(L.vertex_count), kNone);
   s.edge_child.assign(size_t(L.edge_count()), kNone);

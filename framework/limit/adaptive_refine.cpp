@@ -113,13 +113,14 @@ struct Stitcher {
   std::vector<std::pair<int, Index>> corner_vertex;  // per output corner: (stage, vertex)
   std::vector<std::vector<Index>> corner_value;      // per channel, per output corner: value
 
-  bool edge_split(int l, Index a, Index b) const {
-    if (l >= levels) return false;
+  // Edge (a, b) of stage l when a face beside it is split there, else kNone.
+  Index split_edge(int l, Index a, Index b) const {
+    if (l >= levels) return kNone;
     const Level& L = stages[size_t(l)].level;
     const Index e = find_edge(L, a, b);
     for (Index f : L.faces_of_edge(e))
-      if (stages[size_t(l)].split[size_t(f)]) return true;
-    return false;
+      if (stages[size_t(l)].split[size_t(f)]) return e;
+    return kNone;
   }
 
   // A value vertex's child, or the child of value edge (a, b): the face beside a split face is
@@ -137,9 +138,9 @@ struct Stitcher {
   // the values va, vb of the face's side at a and b.
   void chain(int l, Index a, Index b, const Uv& ua, const Uv& ub, bool corner, const std::vector<Index>& va,
              const std::vector<Index>& vb) {
-    if (edge_split(l, a, b)) {
+    if (const Index e = split_edge(l, a, b); e != kNone) {
       const AdaptiveStage& s = stages[size_t(l)];
-      const Index m = s.edge_child[size_t(find_edge(s.level, a, b))];
+      const Index m = s.edge_child[size_t(e)];
       const Uv um{0.5 * (ua[0] + ub[0]), 0.5 * (ua[1] + ub[1])};
       std::vector<Index> ca(va.size()), cm(va.size()), cb(va.size());
       for (size_t k = 0; k < va.size(); ++k) {

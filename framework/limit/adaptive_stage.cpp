@@ -124,7 +124,7 @@ AdaptiveStage refine_stage(const Scheme& scheme, AdaptiveStage& s, int rings, in
   piece_points.reserve(piece.base_vertex.size() * size_t(C));
   for (Index v : piece.base_vertex)
     piece_points.insert(piece_points.end(), s.points.begin() + C * v, s.points.begin() + C * v + C);
-  n.points = gather_tuples(h.stencils[0].apply(piece_points, C), C, kept.base_vertex);
+  n.points = h.stencils[0].apply_rows(piece_points, kept.base_vertex, C);
   n.channels = C;
 
   // Each child vertex's parent element in the stage, and whether it is complete.

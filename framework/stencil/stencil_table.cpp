@@ -14,28 +14,32 @@ namespace {
 // Rows per parallel task: large enough to amortise scheduling, small enough to balance.
 constexpr Index kGrain = 2048;
 
-// The arrays as raw pointers: the output cannot alias them, but through the vectors the
-// compiler would reload their data pointers after every store.
+// Rows begin..end into dst's places begin..end, or with `rows`, rows[begin..end]. The arrays
+// as raw pointers: the output cannot alias them, but through the vectors the compiler would
+// reload their data pointers after every store.
 template <int Channels>
-void apply_rows(const StencilTable& t, const double* __restrict src, double* __restrict dst, Index begin, Index end) {
+void sum_rows(const StencilTable& t, const double* __restrict src, double* __restrict dst, Index begin, Index end,
+              const Index* rows = nullptr) {
   const Index* __restrict offsets = t.offsets.data();
   const Index* __restrict indices = t.indices.data();
   const double* __restrict weights = t.weights.data();
-  for (Index r = begin; r < end; ++r) {
+  for (Index k = begin; k < end; ++k) {
+    const Index r = rows ? rows[k] : k;
     double sum[Channels] = {};
     for (Index i = offsets[r]; i < offsets[r + 1]; ++i) {
       const double w = weights[i];
       const double* s = src + size_t(indices[i]) * Channels;
       for (int c = 0; c < Channels; ++c) sum[c] += w * s[c];
     }
-    std::copy(sum, sum + Channels, dst + size_t(r) * Channels);
+    std::copy(sum, sum + Channels, dst + size_t(k) * Channels);
   }
 }
 
-void apply_rows_any(const StencilTable& t, const double* src, double* dst, int channels,
-                    Index begin, Index end) {
-  for (Index r = begin; r < end; ++r) {
-    double* out = dst + size_t(r) * channels;
+void sum_rows_any(const StencilTable& t, const double* src, double* dst, int channels, Index begin, Index end,
+                  const Index* rows = nullptr) {
+  for (Index k = begin; k < end; ++k) {
+    const Index r = rows ? rows[k] : k;
+    double* out = dst + size_t(k) * channels;
     std::fill(out, out + channels, 0.0);
     for (Index i = t.offsets[r]; i < t.offsets[r + 1]; ++i) {
       const double w = t.weights[i];
@@ -54,11 +58,30 @@ void StencilTable::apply(std::span<const double> src, std::span<double> dst, int
                             src.size(), dst.size(), source_count, row_count(), channels));
   tbb::parallel_for(tbb::blocked_range<Index>(0, row_count(), kGrain), [&](const auto& range) {
     switch (channels) {
-      case 1: apply_rows<1>(*this, src.data(), dst.data(), range.begin(), range.end()); break;
-      case 3: apply_rows<3>(*this, src.data(), dst.data(), range.begin(), range.end()); break;
-      default: apply_rows_any(*this, src.data(), dst.data(), channels, range.begin(), range.end());
+      case 1: sum_rows<1>(*this, src.data(), dst.data(), range.begin(), range.end()); break;
+      case 3: sum_rows<3>(*this, src.data(), dst.data(), range.begin(), range.end()); break;
+      default: sum_rows_any(*this, src.data(), dst.data(), channels, range.begin(), range.end());
     }
   });
+}
+
+std::vector<double> StencilTable::apply_rows(std::span<const double> src, std::span<const Index> rows,
+                                             int channels) const {
+  if (src.size() < size_t(source_count) * channels)
+    throw Error(fmt::format("stencil apply: {} values are too few for {} sources of {} channels", src.size(),
+                            source_count, channels));
+  for (Index r : rows)
+    if (r < 0 || r >= row_count()) throw Error(fmt::format("stencil apply: row {} is not in 0..{}", r, row_count() - 1));
+  std::vector<double> dst(rows.size() * size_t(channels));
+  const Index count = Index(rows.size());
+  tbb::parallel_for(tbb::blocked_range<Index>(0, count, kGrain), [&](const auto& range) {
+    switch (channels) {
+      case 1: sum_rows<1>(*this, src.data(), dst.data(), range.begin(), range.end(), rows.data()); break;
+      case 3: sum_rows<3>(*this, src.data(), dst.data(), range.begin(), range.end(), rows.data()); break;
+      default: sum_rows_any(*this, src.data(), dst.data(), channels, range.begin(), range.end(), rows.data());
+    }
+  });
+  return dst;
 }
 
 std::vector<double> StencilTable::apply(std::span<const double> src, int channels) const {

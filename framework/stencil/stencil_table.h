@@ -21,6 +21,10 @@ struct StencilTable {
   // each row is summed in its stored order, so results are the same for any thread count.
   void apply(std::span<const double> src, std::span<double> dst, int channels) const;
   std::vector<double> apply(std::span<const double> src, int channels) const;
+  // Only the rows `rows`, in that order: out[k*channels + c] is row rows[k]'s value, the same
+  // bits as apply() gives it (each row summed in its stored order), without computing or
+  // storing the rows no one reads (a piece's ghost rows, engine/mesh_pieces.h).
+  std::vector<double> apply_rows(std::span<const double> src, std::span<const Index> rows, int channels) const;
 };
 
 // Rows of `second` (over the rows of `first`) expanded into rows over first's sources:
