@@ -143,6 +143,20 @@ Level creased_torus_level(const test::Mesh& m, int nu) {
 
 // For each edge of two faces, the two faces' (u, v) at parameter t along it (quads only).
 // Faces for which `skip` holds are left out.
+// The mesh under the affine map x -> A x + b (its limit must move the same way).
+const std::array<std::array<double, 3>, 3> kA{{{0.8, -0.3, 0.1}, {0.2, 1.1, -0.4}, {0.05, 0.3, 0.9}}};
+const P3 kB{0.3, -1.2, 2.0};
+test::Mesh affinely_moved(const test::Mesh& m) {
+  test::Mesh moved = m;
+  for (Index v = 0; v < m.vertex_count; ++v)
+    for (size_t r = 0; r < 3; ++r) {
+      double x = kB[r];
+      for (size_t c = 0; c < 3; ++c) x += kA[r][c] * m.positions[size_t(3 * v) + c];
+      moved.positions[size_t(3 * v) + r] = x;
+    }
+  return moved;
+}
+
 void check_edges_continuous(const LimitSurface& s, const test::Mesh& m, const Level& L, double tolerance,
                             const std::function<bool(Index)>& skip = {}) {
   constexpr std::array<std::array<double, 2>, 4> kCorner{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
@@ -248,15 +262,9 @@ TEST_CASE("dual limit at boundaries and creases: continuous across every edge, a
   const LimitSurface on_torus(scheme("doo-sabin"), torus_level);
   check_edges_continuous(on_torus, torus, torus_level, 1e-12);
   // Affine invariance: the limit of A x + b is A (limit) + b.
-  const std::array<std::array<double, 3>, 3> A{{{0.8, -0.3, 0.1}, {0.2, 1.1, -0.4}, {0.05, 0.3, 0.9}}};
-  const P3 b{0.3, -1.2, 2.0};
-  test::Mesh moved = grid;
-  for (Index v = 0; v < grid.vertex_count; ++v)
-    for (size_t r = 0; r < 3; ++r) {
-      double x = b[r];
-      for (size_t c = 0; c < 3; ++c) x += A[r][c] * grid.positions[size_t(3 * v) + c];
-      moved.positions[size_t(3 * v) + r] = x;
-    }
+  const auto& A = kA;
+  const P3& b = kB;
+  const test::Mesh moved = affinely_moved(grid);
   double worst = 0, stencil_worst = 0;
   for (Index f = 0; f < grid.level().face_count(); ++f)
     for (const auto& uv : {std::array<double, 2>{0.1, 0.05}, {0.6, 0.3}, {0.999, 0.5}, {0.25, 0}}) {
@@ -1251,15 +1259,9 @@ TEST_CASE("dual limit between two creases: continuous across every edge, affine 
   // Across the crease the faces below (half faces, read in their quadrants) give the crease
   // curve as the faces between the creases do.
   check_edges_continuous(s, m, L, 1e-12);
-  const std::array<std::array<double, 3>, 3> A{{{0.8, -0.3, 0.1}, {0.2, 1.1, -0.4}, {0.05, 0.3, 0.9}}};
-  const P3 b{0.3, -1.2, 2.0};
-  test::Mesh moved = m;
-  for (Index v = 0; v < m.vertex_count; ++v)
-    for (size_t r = 0; r < 3; ++r) {
-      double x = b[r];
-      for (size_t c = 0; c < 3; ++c) x += A[r][c] * m.positions[size_t(3 * v) + c];
-      moved.positions[size_t(3 * v) + r] = x;
-    }
+  const auto& A = kA;
+  const P3& b = kB;
+  const test::Mesh moved = affinely_moved(m);
   double worst = 0, stencil_worst = 0;
   for (int i = 0; i < nx; ++i)
     for (const auto& uv : {std::array<double, 2>{0.1, 0.05}, {0.6, 0.3}, {0.999, 0.5}, {0.25, 1}}) {
