@@ -446,10 +446,9 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
       if (const auto run = crease_run(cut.level, q.face)) {
         // The creases (or one of them) have decayed: the face is read in its quadrants.
         const QuadrantPoint to = quad_quadrant(cut.level, q.face, strip_uv[0], strip_uv[1]);
-        Jacobian J{};
-        for (size_t r = 0; r < 2; ++r)
-          for (size_t c = 0; c < 2; ++c)
-            J[r][c] = 2 * (to.jacobian[r][0] * q.jacobian[0][c] + to.jacobian[r][1] * q.jacobian[1][c]);
+        Jacobian J = jacobian_product(to.jacobian, q.jacobian);
+        for (auto& row : J)
+          for (double& x : row) x *= 2;  // the quadrant's (a, b) over the face's (u, v)
         q.corner = to.corner, q.ab = to.ab, q.jacobian = J;
         cut.chart = *run;
         strip.reset();
@@ -459,10 +458,9 @@ LimitSample DualLimit::evaluate(const FacePoint& p0, const std::vector<double>& 
           throw Error("a face between two creases changes shape as they decay: not evaluated yet");
         const Hierarchy h = refined();
         const StripStep s = strip_child(h.levels[1], h.origins[0], q.face, *strip, strip_uv[0], strip_uv[1]);
-        Jacobian J{};
-        for (size_t r = 0; r < 2; ++r)
-          for (size_t c = 0; c < 2; ++c)
-            J[r][c] = (s.jacobian[r][0] * q.jacobian[0][c] + s.jacobian[r][1] * q.jacobian[1][c]) / 2;
+        Jacobian J = jacobian_product(s.jacobian, q.jacobian);
+        for (auto& row : J)
+          for (double& x : row) x /= 2;  // carried as the quadrants' scale, 2^-k after k steps
         Cut next = descend(h, s.face);
         next.point.jacobian = J;
         strip_uv = s.uv;

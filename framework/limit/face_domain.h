@@ -23,6 +23,15 @@ using Uv = std::array<double, 2>;
 // d(s, t) / d(u, v): row 0 is ds/du, ds/dv; row 1 dt/du, dt/dv.
 using Jacobian = std::array<std::array<double, 2>, 2>;
 
+// The chain rule for maps of the parameter square: d(x)/d(u, v) = A B for A = d(x)/d(s, t) and
+// B = d(s, t)/d(u, v), each entry summed in the same order wherever it is used.
+inline Jacobian jacobian_product(const Jacobian& A, const Jacobian& B) {
+  Jacobian C{};
+  for (size_t r = 0; r < 2; ++r)
+    for (size_t c = 0; c < 2; ++c) C[r][c] = A[r][0] * B[0][c] + A[r][1] * B[1][c];
+  return C;
+}
+
 // A point inside one face of a level, in that face's own coordinates (s, t), with the
 // derivative of those coordinates with respect to the base face's (u, v).
 struct FacePoint {

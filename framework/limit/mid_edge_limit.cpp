@@ -57,13 +57,6 @@ std::optional<Uv> in_quadrant(const Uv& st, int j, Jacobian& to_ab) {
   return ab;
 }
 
-Jacobian product(const Jacobian& A, const Jacobian& B) {
-  Jacobian C{};
-  for (size_t r = 0; r < 2; ++r)
-    for (size_t c = 0; c < 2; ++c) C[r][c] = A[r][0] * B[0][c] + A[r][1] * B[1][c];
-  return C;
-}
-
 // The sample from the four-direction box spline's closed form over the quadrant (a, b) of the
 // 3 x 3 labels `grid` (four_direction_patch.h), the rows over the node's `n` labels applied to
 // `values`, the derivative rows (through J = d(a, b)/d(u, v), scaled by 2^-k after k double
@@ -217,7 +210,7 @@ LimitSample MidEdgeLimit::evaluate(const FacePoint& p0, const std::vector<double
         const std::array<Index, 9>* grid = ab ? nodes_->quadrant_grid(id, j) : nullptr;
         if (!grid) continue;
         // d(a, b)/d(u, v) scaled by 2^-k after k double steps, as the tangents' below.
-        Jacobian J = product(to_ab, point.jacobian);
+        Jacobian J = jacobian_product(to_ab, point.jacobian);
         for (auto& r : J)
           for (double& x : r) x = std::ldexp(x, -step);
         LimitSample out = four_direction_sample(*grid, size_t(node.level.vertex_count), *ab, J,
