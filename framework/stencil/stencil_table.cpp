@@ -14,17 +14,27 @@ namespace {
 // Rows per parallel task: large enough to amortise scheduling, small enough to balance.
 constexpr Index kGrain = 2048;
 
-// Rows begin..end into dst's places begin..end, or with `rows`, rows[begin..end]. The arrays
-// as raw pointers: the output cannot alias them, but through the vectors the compiler would
-// reload their data pointers after every store.
-template <int Channels>
+// Which row goes to output place k: every row in order (apply), or the caller's list
+// (apply_rows). A type rather than a null pointer, so that apply's loop has no test in it.
+struct AllRows {
+  Index operator()(Index k) const { return k; }
+};
+struct ChosenRows {
+  const Index* rows;
+  Index operator()(Index k) const { return rows[k]; }
+};
+
+// Rows row_of(begin..end) into dst's places begin..end. The arrays as raw pointers: the
+// output cannot alias them, but through the vectors the compiler would reload their data
+// pointers after every store.
+template <int Channels, class RowOf>
 void sum_rows(const StencilTable& t, const double* __restrict src, double* __restrict dst, Index begin, Index end,
-              const Index* rows = nullptr) {
+              RowOf row_of) {
   const Index* __restrict offsets = t.offsets.data();
   const Index* __restrict indices = t.indices.data();
   const double* __restrict weights = t.weights.data();
   for (Index k = begin; k < end; ++k) {
-    const Index r = rows ? rows[k] : k;
+    const Index r = row_of(k);
     double sum[Channels] = {};
     for (Index i = offsets[r]; i < offsets[r + 1]; ++i) {
       const double w = weights[i];
@@ -35,10 +45,11 @@ void sum_rows(const StencilTable& t, const double* __restrict src, double* __res
   }
 }
 
+template <class RowOf>
 void sum_rows_any(const StencilTable& t, const double* src, double* dst, int channels, Index begin, Index end,
-                  const Index* rows = nullptr) {
+                  RowOf row_of) {
   for (Index k = begin; k < end; ++k) {
-    const Index r = rows ? rows[k] : k;
+    const Index r = row_of(k);
     double* out = dst + size_t(k) * channels;
     std::fill(out, out + channels, 0.0);
     for (Index i = t.offsets[r]; i < t.offsets[r + 1]; ++i) {
@@ -49,6 +60,19 @@ void sum_rows_any(const StencilTable& t, const double* src, double* dst, int cha
   }
 }
 
+// `count` output places in parallel, each row summed in its stored order (the same bits for
+// any thread count).
+template <class RowOf>
+void sum_all(const StencilTable& t, const double* src, double* dst, int channels, Index count, RowOf row_of) {
+  tbb::parallel_for(tbb::blocked_range<Index>(0, count, kGrain), [&](const auto& range) {
+    switch (channels) {
+      case 1: sum_rows<1>(t, src, dst, range.begin(), range.end(), row_of); break;
+      case 3: sum_rows<3>(t, src, dst, range.begin(), range.end(), row_of); break;
+      default: sum_rows_any(t, src, dst, channels, range.begin(), range.end(), row_of);
+    }
+  });
+}
+
 }  // namespace
 
 void StencilTable::apply(std::span<const double> src, std::span<double> dst, int channels) const {
@@ -56,13 +80,7 @@ void StencilTable::apply(std::span<const double> src, std::span<double> dst, int
     throw Error(fmt::format("stencil apply: buffers of {} and {} values are too small for {} "
                             "sources and {} rows of {} channels",
                             src.size(), dst.size(), source_count, row_count(), channels));
-  tbb::parallel_for(tbb::blocked_range<Index>(0, row_count(), kGrain), [&](const auto& range) {
-    switch (channels) {
-      case 1: sum_rows<1>(*this, src.data(), dst.data(), range.begin(), range.end()); break;
-      case 3: sum_rows<3>(*this, src.data(), dst.data(), range.begin(), range.end()); break;
-      default: sum_rows_any(*this, src.data(), dst.data(), channels, range.begin(), range.end());
-    }
-  });
+  sum_all(*this, src.data(), dst.data(), channels, row_count(), AllRows{});
 }
 
 std::vector<double> StencilTable::apply_rows(std::span<const double> src, std::span<const Index> rows,
@@ -73,14 +91,7 @@ std::vector<double> StencilTable::apply_rows(std::span<const double> src, std::s
   for (Index r : rows)
     if (r < 0 || r >= row_count()) throw Error(fmt::format("stencil apply: row {} is not in 0..{}", r, row_count() - 1));
   std::vector<double> dst(rows.size() * size_t(channels));
-  const Index count = Index(rows.size());
-  tbb::parallel_for(tbb::blocked_range<Index>(0, count, kGrain), [&](const auto& range) {
-    switch (channels) {
-      case 1: sum_rows<1>(*this, src.data(), dst.data(), range.begin(), range.end(), rows.data()); break;
-      case 3: sum_rows<3>(*this, src.data(), dst.data(), range.begin(), range.end(), rows.data()); break;
-      default: sum_rows_any(*this, src.data(), dst.data(), channels, range.begin(), range.end(), rows.data());
-    }
-  });
+  sum_all(*this, src.data(), dst.data(), channels, Index(rows.size()), ChosenRows{rows.data()});
   return dst;
 }
 
